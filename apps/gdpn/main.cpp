@@ -1,0 +1,160 @@
+// gdpn: the command-line program. Every rule lives in the library; this file only parses
+// arguments, calls into model and net, and prints.
+
+#include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+#include "gdpn/model/model.h"
+#include "gdpn/model/report.h"
+#include "gdpn/model/simulation.h"
+#include "gdpn/net/compile.h"
+
+namespace {
+
+using gdpn::core::Diagnostics;
+namespace model = gdpn::model;
+
+std::atomic<bool> g_interrupted{false};
+
+void onSigint(int) { g_interrupted.store(true); }
+
+/// Loads and compiles MODEL (file or folder), printing diagnostics; nullptr on error.
+std::unique_ptr<model::Simulation> open(const std::string& arg, std::optional<std::uint64_t> seed) {
+  Diagnostics diags;
+  std::unique_ptr<model::Simulation> sim;
+  if (auto path = model::resolveModelPath(arg, diags)) {
+    if (auto m = model::loadModel(*path, diags)) sim = model::Simulation::create(*m, diags, seed);
+  }
+  diags.print(std::cerr);
+  if (!sim && diags.errorCount() > 1) std::cerr << diags.errorCount() << " errors\n";
+  return sim;
+}
+
+int check(const std::string& arg) {
+  Diagnostics diags;
+  auto path = model::resolveModelPath(arg, diags);
+  std::optional<model::Model> m;
+  if (path) m = model::loadModel(*path, diags);
+  std::shared_ptr<const gdpn::net::Net> net;
+  if (m) net = gdpn::net::compile(m->net, diags);
+  diags.print(std::cerr);
+  if (diags.hasErrors()) {
+    std::cerr << diags.errorCount() << (diags.errorCount() == 1 ? " error\n" : " errors\n");
+    return 1;
+  }
+  std::cout << *path << ": ok (" << net->places().size() << " places, " << net->transitions().size()
+            << " transitions, " << net->terms().size() << " arc terms)\n";
+  return 0;
+}
+
+class ProgressBar {
+ public:
+  explicit ProgressBar(bool on) : on_(on) {}
+  void operator()(std::int64_t done, std::int64_t total) {
+    if (!on_) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_ < std::chrono::milliseconds(100) && done != total) return;
+    last_ = now;
+    if (total > 0) {
+      const int width = 30;
+      const double f = std::min(1.0, static_cast<double>(done) / static_cast<double>(total));
+      const int filled = static_cast<int>(f * width);
+      std::fprintf(stderr, "\r[%s%s] %5.1f%%  step %lld/%lld", std::string(static_cast<std::size_t>(filled), '#').c_str(),
+                   std::string(static_cast<std::size_t>(width - filled), ' ').c_str(), 100.0 * f,
+                   static_cast<long long>(done), static_cast<long long>(total));
+    } else {
+      std::fprintf(stderr, "\rstep %lld", static_cast<long long>(done));
+    }
+    drawn_ = true;
+  }
+  ~ProgressBar() {
+    if (drawn_) std::fprintf(stderr, "\r\033[K");
+  }
+
+ private:
+  bool on_;
+  bool drawn_ = false;
+  std::chrono::steady_clock::time_point last_{};
+};
+
+struct RunArgs {
+  std::string model;
+  std::optional<double> until;
+  std::optional<std::int64_t> steps;
+  std::optional<std::uint64_t> seed;
+  std::string trace;
+  std::string report;
+  bool quiet = false;
+};
+
+int run(const RunArgs& a) {
+  auto sim = open(a.model, a.seed);
+  if (!sim) return 1;
+  std::ofstream trace;
+  if (!a.trace.empty()) {
+    trace.open(a.trace, std::ios::binary | std::ios::trunc);
+    if (!trace) {
+      std::cerr << a.trace << ": error: cannot write the trace file\n";
+      return 1;
+    }
+    sim->traceTo(trace);
+  }
+  std::signal(SIGINT, onSigint);
+  model::RunOutcome outcome;
+  {
+    ProgressBar bar(!a.quiet && isatty(STDERR_FILENO));
+    outcome = sim->run({a.until, a.steps}, std::ref(bar), &g_interrupted);
+  }
+  std::signal(SIGINT, SIG_DFL);
+  trace.flush();
+  const auto report = model::makeReport(*sim, outcome);
+  if (!a.report.empty()) {
+    std::ofstream out(a.report, std::ios::binary | std::ios::trunc);
+    if (!out || !(out << model::reportJson(report))) {
+      std::cerr << a.report << ": error: cannot write the report\n";
+      return 1;
+    }
+  }
+  if (!a.quiet) model::printSummary(std::cout, report);
+  return outcome.reason == model::StopReason::Interrupted ? 130 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"gdpn: geometry-driven Petri nets. Model, run and analyse control logic against a virtual plant."};
+  app.set_version_flag("--version", std::string("gdpn ") + GDPN_VERSION);
+  app.require_subcommand(1);
+  app.failure_message([](const CLI::App* a, const CLI::Error& e) {
+    std::string msg = std::string("gdpn: error: ") + e.what() + "\n";
+    msg += "Run '" + a->get_name() + " --help' for usage.\n";
+    return msg;
+  });
+
+  std::string check_model;
+  auto* check_cmd = app.add_subcommand("check", "Check a model and print its diagnostics; exit 0 when clean");
+  check_cmd->add_option("MODEL", check_model, "a .gdpn.yaml file, or a folder holding exactly one")->required();
+
+  RunArgs run_args;
+  auto* run_cmd = app.add_subcommand("run", "Run a model headless and print a summary");
+  run_cmd->add_option("MODEL", run_args.model, "a .gdpn.yaml file, or a folder holding exactly one")->required();
+  auto* until = run_cmd->add_option("--until", run_args.until, "end time in seconds (default: the model's until)")
+                    ->check(CLI::NonNegativeNumber);
+  run_cmd->add_option("--steps", run_args.steps, "number of steps to run")->check(CLI::NonNegativeNumber)->excludes(until);
+  run_cmd->add_option("--seed", run_args.seed, "seed of the random generator (default: the model's seed)");
+  run_cmd->add_option("--trace", run_args.trace, "write every event as JSON Lines to FILE.jsonl");
+  run_cmd->add_option("--report", run_args.report, "write the figures as JSON to FILE.json");
+  run_cmd->add_flag("--quiet,-q", run_args.quiet, "print no summary and no progress");
+
+  CLI11_PARSE(app, argc, argv);
+  if (check_cmd->parsed()) return check(check_model);
+  if (run_cmd->parsed()) return run(run_args);
+  return 2;
+}

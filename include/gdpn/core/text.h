@@ -1,0 +1,49 @@
+#pragma once
+/// \file
+/// Small text helpers shared by the loaders and the reports.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace gdpn::core {
+
+/// Levenshtein distance between `a` and `b` (insertions, deletions, substitutions).
+std::size_t editDistance(std::string_view a, std::string_view b);
+
+/// The candidate closest to `word` if it is close enough to be a likely typo, else "".
+std::string closestMatch(std::string_view word, const std::vector<std::string>& candidates);
+
+/// " (did you mean 'x'?)" when a close candidate exists, else "".
+std::string didYouMean(std::string_view word, const std::vector<std::string>& candidates);
+
+/// The shortest decimal text that reads back as exactly `value` ("0.1", "4", "1e-05").
+std::string formatDouble(double value);
+
+/// True for [A-Za-z_][A-Za-z0-9_]*.
+bool isIdentifier(std::string_view s);
+
+}  // namespace gdpn::core
+
+namespace gdpn::core {
+
+/// `s` as a JSON string literal, quotes included, with control characters escaped.
+std::string jsonQuote(std::string_view s);
+
+/// 64-bit FNV-1a hash of `data` (for pinning trace bytes in tests).
+std::uint64_t fnv1a(std::string_view data);
+
+}  // namespace gdpn::core
+
+namespace gdpn::core {
+
+/// Offset of the first byte that is not valid UTF-8 (overlongs and surrogates count as
+/// invalid), or npos when all of `s` is valid.
+std::size_t firstInvalidUtf8(std::string_view s);
+
+/// 1-based line and column (in bytes) of `offset` in `text`.
+std::pair<int, int> lineColumn(std::string_view text, std::size_t offset);
+
+}  // namespace gdpn::core

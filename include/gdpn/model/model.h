@@ -1,0 +1,63 @@
+#pragma once
+/// \file
+/// A model: settings, the net (pages and page types), and the scene and scripts sections,
+/// as read from and written to a `.gdpn.yaml` file (docs/format.md).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "gdpn/core/diagnostics.h"
+#include "gdpn/net/spec.h"
+
+namespace gdpn::model {
+
+/// The `settings` section.
+struct Settings {
+  double dt = 1.0 / 60.0;            ///< step length, seconds
+  bool dt_given = false;             ///< whether the file sets dt (kept on save)
+  std::uint64_t seed = 1;            ///< seed of the model's random generator
+  bool seed_given = false;           ///< whether the file sets seed (kept on save)
+  std::optional<double> until;       ///< default end of a run, seconds
+  friend bool operator==(const Settings&, const Settings&) = default;
+};
+
+/// Everything a model file holds.
+struct Model {
+  std::string path;          ///< the file it was read from ("" when made in memory)
+  std::string description;   ///< free text
+  Settings settings;         ///< run settings
+  net::NetSpec net;          ///< pages and page types
+  std::string scene;         ///< the `scene` section, kept as YAML text ("" when absent)
+  std::string scripts;       ///< the `scripts` section, kept as YAML text ("" when absent)
+
+  /// Same content (the path and source locations are not compared).
+  friend bool operator==(const Model& a, const Model& b) {
+    return a.description == b.description && a.settings == b.settings && a.net == b.net &&
+           a.scene == b.scene && a.scripts == b.scripts;
+  }
+};
+
+/// The suffix of model files.
+inline constexpr const char* kModelSuffix = ".gdpn.yaml";
+
+/// Reads the model file at `path`; reports every problem found into `diags` (syntax, unknown
+/// keys, wrong types) and returns nullopt when there was an error. Semantic checks (names,
+/// slot kinds, balance) are compile()'s.
+std::optional<Model> loadModel(const std::string& path, core::Diagnostics& diags);
+
+/// Parses model text; `file` names it in diagnostics.
+std::optional<Model> parseModel(const std::string& text, const std::string& file, core::Diagnostics& diags);
+
+/// The canonical text of `model`: saving it and loading it back gives an equal model, and
+/// writing that again gives the same bytes.
+std::string writeModel(const Model& model);
+
+/// Writes `model` to `path` safely: a temporary file beside it, then a rename, so the old
+/// file survives any failure. Returns false (with a diagnostic) when it could not.
+bool saveModel(const Model& model, const std::string& path, core::Diagnostics& diags);
+
+/// Resolves a command-line MODEL argument: a model file, or a folder holding exactly one.
+std::optional<std::string> resolveModelPath(const std::string& arg, core::Diagnostics& diags);
+
+}  // namespace gdpn::model

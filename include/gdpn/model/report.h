@@ -1,0 +1,52 @@
+#pragma once
+/// \file
+/// The figures of a run: per transition occurrences, cycle times and utilisation; per place
+/// mean and max tokens and throughput. Printed as a table and written as JSON.
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "gdpn/model/simulation.h"
+
+namespace gdpn::model {
+
+/// One transition's line of the report.
+struct TransitionFigures {
+  std::string name;             ///< qualified name
+  std::int64_t occurrences = 0; ///< starts
+  std::int64_t cycles = 0;      ///< intervals measured between successive starts
+  double mean_cycle = 0.0;      ///< seconds (0 when no cycle)
+  double min_cycle = 0.0;       ///< seconds
+  double max_cycle = 0.0;       ///< seconds
+  double utilisation = 0.0;     ///< share of the run spent occurring, 0..1
+};
+
+/// One place's line of the report.
+struct PlaceFigures {
+  std::string name;          ///< qualified name
+  double mean_tokens = 0.0;  ///< time-weighted mean over the run
+  std::int64_t max_tokens = 0;
+  std::int64_t final_tokens = 0;
+  double throughput = 0.0;   ///< tokens deposited per second
+};
+
+/// Everything the summary shows.
+struct Report {
+  std::string model;              ///< model file
+  std::uint64_t seed = 1;
+  double dt = 0.0;                ///< seconds
+  RunOutcome outcome;
+  std::vector<TransitionFigures> transitions;
+  std::vector<PlaceFigures> places;
+};
+
+/// Gathers the report of a finished run.
+Report makeReport(const Simulation& sim, const RunOutcome& outcome);
+/// The report as pretty-printed JSON text.
+std::string reportJson(const Report& report);
+/// The summary tables, as `gdpn run` prints them.
+void printSummary(std::ostream& out, const Report& report);
+
+}  // namespace gdpn::model

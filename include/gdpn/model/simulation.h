@@ -1,0 +1,93 @@
+#pragma once
+/// \file
+/// Simulation: a compiled model and its step loop (semantics §6). The CLI, the Python module
+/// and the IDE all drive models through this one class.
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <ostream>
+
+#include "gdpn/model/model.h"
+#include "gdpn/net/kernel.h"
+#include "gdpn/net/stats.h"
+#include "gdpn/net/trace.h"
+
+namespace gdpn::model {
+
+/// When a run ends. With neither set, the model's `until` applies, and without that the run
+/// goes on until the net is dead (or it is interrupted).
+struct RunLimits {
+  std::optional<double> until;        ///< end time, seconds
+  std::optional<std::int64_t> steps;  ///< number of steps
+};
+
+/// Why a run ended.
+enum class StopReason : std::uint8_t {
+  Until,        ///< reached the end time or step count
+  Dead,         ///< nothing enabled and nothing occurring
+  Interrupted,  ///< stopped from outside (Ctrl-C)
+};
+
+/// "until", "dead" or "interrupted".
+const char* stopReasonName(StopReason reason);
+
+/// How a run ended.
+struct RunOutcome {
+  std::int64_t steps = 0;              ///< steps taken
+  double time = 0.0;                   ///< seconds simulated
+  StopReason reason = StopReason::Until;
+};
+
+/// Called now and then during a run with the steps done and the steps planned (0 if open).
+using ProgressFn = std::function<void(std::int64_t done, std::int64_t total)>;
+
+/// A model made ready to run.
+class Simulation {
+ public:
+  /// Compiles `model`; returns nullptr with diagnostics on any error. `seed` overrides the
+  /// model's seed.
+  static std::unique_ptr<Simulation> create(const Model& model, core::Diagnostics& diags,
+                                            std::optional<std::uint64_t> seed = {});
+
+  /// Writes the trace (JSON Lines) to `out` from now on; call before start().
+  void traceTo(std::ostream& out);
+  /// Runs the firing phase at time 0. run() calls it when needed.
+  void start();
+  /// One step (semantics §6).
+  void step();
+  /// Starts if needed, then steps until `limits` say stop, the net is dead, or `interrupt`
+  /// becomes true. Closes the statistics at the end.
+  RunOutcome run(const RunLimits& limits, const ProgressFn& progress = {},
+                 const std::atomic<bool>* interrupt = nullptr);
+
+  /// The model as loaded.
+  [[nodiscard]] const Model& model() const { return model_; }
+  /// The frozen net.
+  [[nodiscard]] const net::Net& net() const { return *net_; }
+  /// The kernel (markings, clock).
+  net::Kernel& kernel() { return *kernel_; }
+  [[nodiscard]] const net::Kernel& kernel() const { return *kernel_; }
+  /// Statistics so far.
+  [[nodiscard]] const net::StatsCollector& stats() const { return *stats_; }
+  /// The seed in use.
+  [[nodiscard]] std::uint64_t seed() const { return seed_; }
+  /// The name of a node token.
+  [[nodiscard]] std::string nodeName(net::NodeRef ref) const;
+  /// True once start() has run.
+  [[nodiscard]] bool started() const { return started_; }
+
+ private:
+  Simulation() = default;
+  Model model_;
+  std::shared_ptr<const net::Net> net_;
+  std::unique_ptr<net::Kernel> kernel_;
+  std::unique_ptr<net::StatsCollector> stats_;
+  std::unique_ptr<net::TraceWriter> trace_;
+  std::uint64_t seed_ = 1;
+  bool started_ = false;
+};
+
+}  // namespace gdpn::model

@@ -1,0 +1,133 @@
+#pragma once
+/// \file
+/// The frozen net: places, transitions and arcs flattened (hierarchy resolved) into
+/// contiguous arrays indexed by integers. Built once by `compile()`, shared read-only.
+
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "gdpn/core/diagnostics.h"
+#include "gdpn/net/slot.h"
+#include "gdpn/net/spec.h"
+
+namespace gdpn::net {
+
+using PlaceId = std::uint32_t;       ///< index of a place in `Net::places()`
+using TransitionId = std::uint32_t;  ///< index of a transition in `Net::transitions()`
+using PlaceSlotId = std::uint32_t;   ///< index of one (place, slot) pair
+using TermId = std::uint32_t;        ///< index of one (arc, slot) condition
+using NodeRef = std::uint64_t;       ///< an opaque reference to a scene node; the kernel never looks inside
+
+/// Capacity of a slot that has none.
+inline constexpr std::int64_t kUnbounded = std::numeric_limits<std::int64_t>::max();
+
+/// What one (arc, slot) pair asks of its place slot.
+enum class TermKind : std::uint8_t {
+  Input,      ///< normal input: needs `weight` tokens and takes them
+  Test,       ///< test input: needs `weight` tokens
+  Inhibitor,  ///< needs fewer than `weight` tokens
+  Output,     ///< needs room for `weight` tokens, deposits them on completion
+};
+
+/// One (arc, slot) pair: the unit of incremental enabling.
+struct Term {
+  TransitionId transition = 0;  ///< the arc's transition
+  PlaceSlotId place_slot = 0;   ///< the arc's place, at this slot
+  TermKind kind = TermKind::Input;
+  std::int64_t weight = 1;      ///< tokens
+  std::int64_t take = 0;        ///< for outputs: what the transition itself takes from this place slot
+  std::uint32_t arc = 0;        ///< index of the arc in declaration order (for messages)
+};
+
+/// One slot of one place.
+struct PlaceSlot {
+  PlaceId place = 0;                    ///< owning place
+  SlotId slot = kDefaultSlot;           ///< which slot
+  SlotKind kind = SlotKind::Control;    ///< control or node
+  std::int64_t capacity = kUnbounded;   ///< tokens; kUnbounded when none
+  std::int64_t initial = 0;             ///< initial marking count
+  std::uint32_t nodes_begin = 0;        ///< initial node tokens: range in Net::initialNodes()
+  std::uint32_t nodes_end = 0;          ///< end of that range
+};
+
+/// A place after flattening.
+struct Place {
+  std::string name;            ///< qualified name ("line/stationA/buffer")
+  SourceLoc loc;               ///< where it was declared
+  std::uint32_t slots_begin = 0;  ///< its place slots: range in Net::placeSlots()
+  std::uint32_t slots_end = 0;    ///< end of that range
+};
+
+/// A transition after flattening. Its terms lie in Net::terms() in the order: normal inputs,
+/// tests and inhibitors, outputs.
+struct Transition {
+  std::string name;                ///< qualified name
+  SourceLoc loc;                   ///< where it was declared
+  Duration duration;               ///< seconds
+  std::int64_t priority = 0;       ///< higher first
+  std::uint32_t priority_rank = 0; ///< 0 for the highest priority in the net, dense
+  double probability = 1.0;        ///< chance to start in a step while enabled
+  std::uint32_t terms_begin = 0;   ///< first term
+  std::uint32_t inputs_end = 0;    ///< end of the normal inputs
+  std::uint32_t conditions_end = 0;///< end of the tests and inhibitors
+  std::uint32_t terms_end = 0;     ///< end of the outputs
+  std::uint32_t node_slot_mask = 0;///< bit s set when slot s is a node slot on this transition
+};
+
+/// The frozen, flat net. Immutable after `compile()`; share it with `std::shared_ptr<const Net>`.
+class Net {
+ public:
+  /// All places, in declaration order (pages first, instances expanded in place).
+  [[nodiscard]] std::span<const Place> places() const { return places_; }
+  /// All transitions, in declaration order; this order breaks ties when firing.
+  [[nodiscard]] std::span<const Transition> transitions() const { return transitions_; }
+  /// All (place, slot) pairs.
+  [[nodiscard]] std::span<const PlaceSlot> placeSlots() const { return place_slots_; }
+  /// All (arc, slot) conditions, grouped by transition.
+  [[nodiscard]] std::span<const Term> terms() const { return terms_; }
+  /// The terms of transition `t`.
+  [[nodiscard]] std::span<const Term> termsOf(TransitionId t) const {
+    const auto& tr = transitions_[t];
+    return {terms_.data() + tr.terms_begin, tr.terms_end - tr.terms_begin};
+  }
+  /// The ids of the terms whose satisfaction depends on place slot `ps` (its watchers).
+  [[nodiscard]] std::span<const TermId> watchers(PlaceSlotId ps) const {
+    return {watchers_.data() + watch_begin_[ps], watch_begin_[ps + 1] - watch_begin_[ps]};
+  }
+  /// Names of the node tokens in initial markings; a NodeRef in a fresh kernel is an index here.
+  [[nodiscard]] std::span<const std::string> nodeNames() const { return node_names_; }
+  /// Indices into nodeNames(), referenced by PlaceSlot::nodes_begin/nodes_end.
+  [[nodiscard]] std::span<const std::uint32_t> initialNodes() const { return initial_nodes_; }
+
+  /// The place called `qualified_name`, or -1.
+  [[nodiscard]] std::int64_t findPlace(std::string_view qualified_name) const;
+  /// The transition called `qualified_name`, or -1.
+  [[nodiscard]] std::int64_t findTransition(std::string_view qualified_name) const;
+  /// The place slot of `place` at `slot`, or -1 when the place does not use that slot.
+  [[nodiscard]] std::int64_t findPlaceSlot(PlaceId place, SlotId slot) const;
+  /// The number of distinct priorities (ranks run 0..count-1).
+  [[nodiscard]] std::uint32_t priorityLevels() const { return priority_levels_; }
+  /// Approximate heap bytes held by this net.
+  [[nodiscard]] std::size_t memoryBytes() const;
+
+ private:
+  friend class NetBuilder;
+  std::vector<Place> places_;
+  std::vector<Transition> transitions_;
+  std::vector<PlaceSlot> place_slots_;
+  std::vector<Term> terms_;
+  std::vector<std::uint32_t> watch_begin_;
+  std::vector<TermId> watchers_;
+  std::vector<std::string> node_names_;
+  std::vector<std::uint32_t> initial_nodes_;
+  std::unordered_map<std::string, PlaceId> place_index_;
+  std::unordered_map<std::string, TransitionId> transition_index_;
+  std::uint32_t priority_levels_ = 1;
+};
+
+}  // namespace gdpn::net

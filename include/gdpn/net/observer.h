@@ -1,0 +1,34 @@
+#pragma once
+/// \file
+/// The kernel reports what happens through this interface; the trace, the statistics and
+/// (later) scripts subscribe. Nobody listening costs one branch per event.
+
+#include <cstdint>
+#include <span>
+
+#include "gdpn/net/net.h"
+
+namespace gdpn::net {
+
+/// Receives the kernel's events in the order they happen. Steps are the kernel's integer
+/// clock; the time in seconds is step * dt.
+class NetObserver {
+ public:
+  virtual ~NetObserver() = default;
+  /// `t` starts at `step`; its removals follow.
+  virtual void onStart(TransitionId t, std::int64_t step) { (void)t, (void)step; }
+  /// `t` completes at `step`; its deposits follow.
+  virtual void onComplete(TransitionId t, std::int64_t step) { (void)t, (void)step; }
+  /// `count` tokens left place slot `ps` (the node tokens, for a node slot).
+  virtual void onRemove(PlaceSlotId ps, std::int64_t count, std::span<const NodeRef> nodes,
+                        std::int64_t step) {
+    (void)ps, (void)count, (void)nodes, (void)step;
+  }
+  /// `count` tokens arrived on place slot `ps` (the node tokens, for a node slot).
+  virtual void onDeposit(PlaceSlotId ps, std::int64_t count, std::span<const NodeRef> nodes,
+                         std::int64_t step) {
+    (void)ps, (void)count, (void)nodes, (void)step;
+  }
+};
+
+}  // namespace gdpn::net

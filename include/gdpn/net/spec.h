@@ -1,0 +1,176 @@
+#pragma once
+/// \file
+/// The editable description of a net: pages, page types, places, transitions, arcs and
+/// instances, each with the source location it came from. Loaders (the model file, PNML)
+/// fill it; `compile()` checks it and freezes it into a flat `Net`; savers write it back.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gdpn/core/diagnostics.h"
+#include "gdpn/net/slot.h"
+
+namespace gdpn::net {
+
+using core::SourceLoc;
+
+/// A transition's duration: a constant or a distribution drawn at each start (seconds).
+struct Duration {
+  /// Which law the duration follows.
+  enum class Law : std::uint8_t {
+    Fixed,        ///< `a` seconds
+    Uniform,      ///< uniform in [a, b) seconds
+    Normal,       ///< normal with mean `a` and standard deviation `b` seconds, redrawn below 0
+    Exponential,  ///< exponential with mean `a` seconds
+  };
+  Law law = Law::Fixed;  ///< the law
+  double a = 0.0;        ///< first parameter, seconds
+  double b = 0.0;        ///< second parameter, seconds (uniform, normal)
+  SourceLoc loc;         ///< where it was written
+
+  /// True for a constant duration.
+  [[nodiscard]] bool fixed() const { return law == Law::Fixed; }
+  friend bool operator==(const Duration& x, const Duration& y) {
+    return x.law == y.law && x.a == y.a && x.b == y.b;
+  }
+};
+
+/// A per-slot integer (a marking count, a capacity or an arc weight) with its location.
+struct SlotCount {
+  SlotId slot = kDefaultSlot;  ///< which slot
+  std::int64_t value = 0;      ///< tokens
+  SourceLoc loc;               ///< where it was written
+  friend bool operator==(const SlotCount& x, const SlotCount& y) {
+    return x.slot == y.slot && x.value == y.value;
+  }
+};
+
+/// Initial node tokens of one node slot: scene paths, in FIFO order.
+struct SlotNodes {
+  SlotId slot = kDefaultSlot;      ///< which slot
+  std::vector<std::string> nodes;  ///< node paths, first to leave first
+  SourceLoc loc;                   ///< where it was written
+  friend bool operator==(const SlotNodes& x, const SlotNodes& y) {
+    return x.slot == y.slot && x.nodes == y.nodes;
+  }
+};
+
+/// An explicit slot kind declaration on a place.
+struct SlotDecl {
+  SlotId slot = kDefaultSlot;         ///< which slot
+  SlotKind kind = SlotKind::Control;  ///< declared kind
+  SourceLoc loc;                      ///< where it was written
+  friend bool operator==(const SlotDecl& x, const SlotDecl& y) {
+    return x.slot == y.slot && x.kind == y.kind;
+  }
+};
+
+/// A 2D position in the net editor (editor units, for the IDE and PNML graphics).
+using EditorPos = std::array<double, 2>;
+
+/// A place: per slot an initial marking and a capacity.
+struct PlaceSpec {
+  std::string name;                    ///< unique on its page
+  SourceLoc loc;                       ///< where the place is declared
+  std::string description;             ///< free text kept for the user
+  std::vector<SlotDecl> kinds;         ///< explicit slot kinds
+  std::vector<SlotCount> tokens;       ///< initial control tokens per slot
+  std::vector<SlotNodes> nodes;        ///< initial node tokens per slot
+  std::vector<SlotCount> capacity;     ///< capacity per slot (unbounded when absent)
+  std::optional<EditorPos> position;   ///< where the editor draws it
+  friend bool operator==(const PlaceSpec& x, const PlaceSpec& y) {
+    return x.name == y.name && x.description == y.description && x.kinds == y.kinds &&
+           x.tokens == y.tokens && x.nodes == y.nodes && x.capacity == y.capacity &&
+           x.position == y.position;
+  }
+};
+
+/// A timed transition.
+struct TransitionSpec {
+  std::string name;                   ///< unique on its page
+  SourceLoc loc;                      ///< where the transition is declared
+  std::string description;            ///< free text kept for the user
+  Duration duration;                  ///< occurrence duration, seconds
+  std::int64_t priority = 0;          ///< higher starts first
+  double probability = 1.0;           ///< chance to start in a step while enabled, in (0, 1]
+  SourceLoc probability_loc;          ///< where the probability was written
+  std::optional<EditorPos> position;  ///< where the editor draws it
+  friend bool operator==(const TransitionSpec& x, const TransitionSpec& y) {
+    return x.name == y.name && x.description == y.description && x.duration == y.duration &&
+           x.priority == y.priority && x.probability == y.probability && x.position == y.position;
+  }
+};
+
+/// How an input arc acts on its place.
+enum class ArcKind : std::uint8_t {
+  Normal,     ///< takes `w` tokens (output arcs are always normal)
+  Test,       ///< needs `w` tokens, takes none
+  Inhibitor,  ///< allows the transition only while the place holds fewer than `w`
+};
+
+/// "normal", "test" or "inhibitor".
+const char* arcKindName(ArcKind kind);
+
+/// An arc between a place (or a link `instance/reference`) and a transition, either way.
+struct ArcSpec {
+  std::string from;                ///< source: a place, link or transition name on the page
+  std::string to;                  ///< target: a transition, place or link name on the page
+  ArcKind kind = ArcKind::Normal;  ///< normal, test or inhibitor
+  std::vector<SlotCount> weights;  ///< per-slot weights; empty means a0 with weight 1
+  SourceLoc loc;                   ///< where the arc is declared
+  SourceLoc from_loc;              ///< where `from` is written
+  SourceLoc to_loc;                ///< where `to` is written
+  friend bool operator==(const ArcSpec& x, const ArcSpec& y) {
+    return x.from == y.from && x.to == y.to && x.kind == y.kind && x.weights == y.weights;
+  }
+};
+
+/// An instance of a page type on a page.
+struct InstanceSpec {
+  std::string name;                   ///< unique on its page; qualifies the names inside
+  std::string type;                   ///< the page type it instantiates
+  SourceLoc loc;                      ///< where the instance is declared
+  SourceLoc type_loc;                 ///< where the type is named
+  std::optional<EditorPos> position;  ///< where the editor draws it
+  friend bool operator==(const InstanceSpec& x, const InstanceSpec& y) {
+    return x.name == y.name && x.type == y.type && x.position == y.position;
+  }
+};
+
+/// A published place of a page type (a port), seen from outside as a link.
+struct ReferenceSpec {
+  std::string place;  ///< the referenced place, which also names the link
+  SourceLoc loc;      ///< where it was written
+  friend bool operator==(const ReferenceSpec& x, const ReferenceSpec& y) {
+    return x.place == y.place;
+  }
+};
+
+/// A page (top level) or page type: a net with optional references and instances.
+struct PageSpec {
+  std::string name;                          ///< unique among pages (or among page types)
+  SourceLoc loc;                             ///< where it is declared
+  std::string description;                   ///< free text kept for the user
+  std::vector<ReferenceSpec> references;     ///< published places (page types only)
+  std::vector<PlaceSpec> places;             ///< in declaration order
+  std::vector<TransitionSpec> transitions;   ///< in declaration order
+  std::vector<ArcSpec> arcs;                 ///< in declaration order
+  std::vector<InstanceSpec> instances;       ///< in declaration order
+  friend bool operator==(const PageSpec& x, const PageSpec& y) {
+    return x.name == y.name && x.description == y.description && x.references == y.references &&
+           x.places == y.places && x.transitions == y.transitions && x.arcs == y.arcs &&
+           x.instances == y.instances;
+  }
+};
+
+/// The whole net of a model: top-level pages and the page types they instantiate.
+struct NetSpec {
+  std::vector<PageSpec> pages;       ///< top-level pages; names qualify their constructs
+  std::vector<PageSpec> page_types;  ///< reusable pages, instantiated by name
+  friend bool operator==(const NetSpec&, const NetSpec&) = default;
+};
+
+}  // namespace gdpn::net

@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# The main job: build gdpn and run the best example headless, printing its summary.
+# Until the flagship factory example exists, that is the two-cell line of examples/basics.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh >/dev/null
+cmake --preset release >/dev/null
+cmake --build --preset release -j "$(nproc)" >/dev/null
+exec build/release/apps/gdpn/gdpn run examples/basics/two_cells "$@"

@@ -1,0 +1,47 @@
+#include "gdpn/core/diagnostics.h"
+
+#include <ostream>
+#include <sstream>
+
+namespace gdpn::core {
+
+std::string SourceLoc::str() const {
+  std::string s = file.empty() ? std::string("<input>") : file;
+  if (line > 0) {
+    s += ':' + std::to_string(line);
+    if (column > 0) s += ':' + std::to_string(column);
+  }
+  return s;
+}
+
+std::string Diagnostic::str() const {
+  const char* kind = severity == Severity::Error     ? "error"
+                     : severity == Severity::Warning ? "warning"
+                                                     : "note";
+  return loc.str() + ": " + kind + ": " + message;
+}
+
+void Diagnostics::error(SourceLoc loc, std::string message) {
+  list_.push_back({Severity::Error, std::move(loc), std::move(message)});
+  ++errors_;
+}
+
+void Diagnostics::warning(SourceLoc loc, std::string message) {
+  list_.push_back({Severity::Warning, std::move(loc), std::move(message)});
+}
+
+void Diagnostics::note(SourceLoc loc, std::string message) {
+  list_.push_back({Severity::Note, std::move(loc), std::move(message)});
+}
+
+void Diagnostics::print(std::ostream& out) const {
+  for (const auto& d : list_) out << d.str() << '\n';
+}
+
+std::string Diagnostics::str() const {
+  std::ostringstream out;
+  print(out);
+  return out.str();
+}
+
+}  // namespace gdpn::core

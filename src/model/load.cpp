@@ -1,0 +1,422 @@
+// Reading model files: YAML text -> Model, with every problem located at file:line:col.
+
+#include "model/yaml.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unordered_map>
+
+#include "gdpn/core/text.h"
+#include "gdpn/model/model.h"
+#include "model/yaml_reader.h"
+
+namespace gdpn::model {
+namespace {
+
+using core::Diagnostics;
+using core::SourceLoc;
+using detail::Entry;
+using detail::YamlReader;
+
+const std::vector<std::string> kTopKeys = {"gdpn", "description", "settings", "pages", "page_types",
+                                           "scene", "scripts"};
+const std::vector<std::string> kSettingsKeys = {"dt", "seed", "until"};
+const std::vector<std::string> kPageKeys = {"description", "places", "transitions", "arcs", "instances"};
+const std::vector<std::string> kPageTypeKeys = {"description", "references", "places", "transitions",
+                                                "arcs", "instances"};
+const std::vector<std::string> kPlaceKeys = {"description", "slots", "tokens", "capacity", "at"};
+const std::vector<std::string> kTransitionKeys = {"description", "duration", "priority", "probability", "at"};
+const std::vector<std::string> kArcKeys = {"from", "to", "kind", "weight"};
+const std::vector<std::string> kInstanceKeys = {"type", "at"};
+const std::vector<std::string> kLaws = {"uniform", "normal", "exponential"};
+const std::vector<std::string> kArcKinds = {"normal", "test", "inhibitor"};
+const std::vector<std::string> kSlotKinds = {"control", "node", "sensor"};
+
+/// A node path: identifiers joined by '/'.
+bool isNodePath(const std::string& s) {
+  std::size_t begin = 0;
+  while (true) {
+    const auto end = s.find('/', begin);
+    if (!core::isIdentifier(std::string_view(s).substr(begin, end - begin))) return false;
+    if (end == std::string::npos) return true;
+    begin = end + 1;
+  }
+}
+
+class ModelReader {
+ public:
+  ModelReader(const std::string& file, Diagnostics& diags) : r_(file, diags) {}
+
+  std::optional<Model> read(const YAML::Node& root) {
+    Model model;
+    if (root.IsNull()) return model;  // an empty file is an empty model
+    if (!r_.expectMap(root, "the model file")) return std::nullopt;
+    for (const auto& e : r_.entries(root, "model file", kTopKeys)) {
+      if (e.key == "gdpn") {
+        if (auto v = r_.integer(e.value, "gdpn"); v && *v != 1) {
+          r_.error(e.value, "this is gdpn format " + std::to_string(*v) + "; this gdpn reads format 1");
+        }
+      } else if (e.key == "description") {
+        if (auto s = r_.string(e.value, "description")) model.description = *s;
+      } else if (e.key == "settings") {
+        readSettings(e.value, model.settings);
+      } else if (e.key == "pages") {
+        readPages(e.value, model.net.pages, false);
+      } else if (e.key == "page_types") {
+        readPages(e.value, model.net.page_types, true);
+      } else if (e.key == "scene") {
+        model.scene = detail::emitYaml(e.value);
+      } else if (e.key == "scripts") {
+        model.scripts = detail::emitYaml(e.value);
+      }
+    }
+    if (r_.failed()) return std::nullopt;
+    return model;
+  }
+
+ private:
+  void readSettings(const YAML::Node& node, Settings& s) {
+    if (!r_.expectMap(node, "settings")) return;
+    for (const auto& e : r_.entries(node, "settings", kSettingsKeys)) {
+      if (e.key == "dt") {
+        if (auto v = r_.number(e.value, "dt")) {
+          if (!(*v > 0.0) || !std::isfinite(*v)) r_.error(e.value, "dt must be a positive number of seconds");
+          s.dt = *v;
+          s.dt_given = true;
+        }
+      } else if (e.key == "seed") {
+        if (auto v = r_.integer(e.value, "seed")) {
+          if (*v < 0) r_.error(e.value, "seed must not be negative");
+          s.seed = static_cast<std::uint64_t>(*v);
+          s.seed_given = true;
+        }
+      } else if (e.key == "until") {
+        if (auto v = r_.number(e.value, "until")) {
+          if (!(*v >= 0.0) || !std::isfinite(*v)) r_.error(e.value, "until must be a time of at least 0 seconds");
+          s.until = *v;
+        }
+      }
+    }
+  }
+
+  void readPages(const YAML::Node& node, std::vector<net::PageSpec>& out, bool types) {
+    const char* what = types ? "page_types" : "pages";
+    if (!r_.expectMap(node, what)) return;
+    for (const auto& e : r_.entries(node, what, {})) {
+      net::PageSpec page;
+      page.name = e.key;
+      page.loc = e.loc;
+      readPage(e, page, types);
+      out.push_back(std::move(page));
+    }
+  }
+
+  void readPage(const Entry& pe, net::PageSpec& page, bool type) {
+    const std::string what = std::string(type ? "page type '" : "page '") + page.name + "'";
+    if (pe.value.IsNull()) return;
+    if (!r_.expectMap(pe.value, what)) return;
+    for (const auto& e : r_.entries(pe.value, what, type ? kPageTypeKeys : kPageKeys)) {
+      if (e.key == "description") {
+        if (auto s = r_.string(e.value, "description")) page.description = *s;
+      } else if (e.key == "references") {
+        if (!r_.expectList(e.value, "references")) continue;
+        for (const auto& item : e.value) {
+          if (auto s = r_.string(item, "a reference")) page.references.push_back({*s, r_.loc(item, e.loc)});
+        }
+      } else if (e.key == "places") {
+        forEachNamed(e, "places", [&](const Entry& c) { page.places.push_back(readPlace(c)); });
+      } else if (e.key == "transitions") {
+        forEachNamed(e, "transitions", [&](const Entry& c) { page.transitions.push_back(readTransition(c)); });
+      } else if (e.key == "arcs") {
+        if (!r_.expectList(e.value, "arcs")) continue;
+        for (const auto& item : e.value) {
+          if (auto arc = readArc(item, e.loc)) page.arcs.push_back(std::move(*arc));
+        }
+      } else if (e.key == "instances") {
+        forEachNamed(e, "instances", [&](const Entry& c) { page.instances.push_back(readInstance(c)); });
+      }
+    }
+  }
+
+  template <class F>
+  void forEachNamed(const Entry& section, const char* what, F&& f) {
+    if (section.value.IsNull()) return;
+    if (!r_.expectMap(section.value, what)) return;
+    for (const auto& e : r_.entries(section.value, what, {})) f(e);
+  }
+
+  /// A per-slot map ("a0: 2") or a scalar for slot a0; calls `f(slot, value node, loc)`.
+  template <class F>
+  void perSlot(const Entry& e, const char* what, F&& f) {
+    if (!e.value.IsMap()) {
+      f(net::kDefaultSlot, e.value, r_.loc(e.value, e.loc));
+      return;
+    }
+    for (const auto& s : r_.entries(e.value, what, {})) {
+      auto slot = net::parseSlot(s.key);
+      if (!slot) {
+        r_.error(s.loc, "'" + s.key + "' is not a slot name (a0 ... d7)");
+        continue;
+      }
+      f(*slot, s.value, s.loc);
+    }
+  }
+
+  std::optional<net::EditorPos> readPos(const YAML::Node& node) {
+    if (!node.IsSequence() || node.size() != 2) {
+      r_.error(node, "'at' expects a position [x, y], got " + detail::describe(node));
+      return std::nullopt;
+    }
+    auto x = r_.number(node[0], "x");
+    auto y = r_.number(node[1], "y");
+    if (!x || !y) return std::nullopt;
+    return net::EditorPos{*x, *y};
+  }
+
+  std::vector<std::string> readNodeList(const YAML::Node& list, const SourceLoc& fallback) {
+    std::vector<std::string> names;
+    for (const auto& item : list) {
+      auto s = r_.string(item, "a node token");
+      if (!s) continue;
+      if (!isNodePath(*s)) {
+        r_.error(r_.loc(item, fallback), "node token '" + *s + "' is not a node path (names joined by '/')");
+        continue;
+      }
+      names.push_back(*s);
+    }
+    return names;
+  }
+
+  net::PlaceSpec readPlace(const Entry& pe) {
+    net::PlaceSpec p;
+    p.name = pe.key;
+    p.loc = pe.loc;
+    if (pe.value.IsNull()) return p;
+    if (!r_.expectMap(pe.value, "place '" + p.name + "'")) return p;
+    for (const auto& e : r_.entries(pe.value, "place", kPlaceKeys)) {
+      if (e.key == "description") {
+        if (auto s = r_.string(e.value, "description")) p.description = *s;
+      } else if (e.key == "slots") {
+        if (!r_.expectMap(e.value, "slots")) continue;
+        perSlot(e, "slots", [&](net::SlotId slot, const YAML::Node& v, const SourceLoc& loc) {
+          auto s = r_.string(v, "a slot kind");
+          if (!s) return;
+          auto kind = net::parseSlotKind(*s);
+          if (!kind) {
+            r_.error(v, "unknown slot kind '" + *s + "'" + core::didYouMean(*s, kSlotKinds) +
+                            "; expected control, node or sensor");
+            return;
+          }
+          p.kinds.push_back({slot, *kind, loc});
+        });
+      } else if (e.key == "tokens") {
+        perSlot(e, "tokens", [&](net::SlotId slot, const YAML::Node& v, const SourceLoc& loc) {
+          if (v.IsSequence()) {
+            p.nodes.push_back({slot, readNodeList(v, loc), loc});
+          } else if (auto n = r_.integer(v, "tokens")) {
+            p.tokens.push_back({slot, *n, loc});
+          }
+        });
+      } else if (e.key == "capacity") {
+        perSlot(e, "capacity", [&](net::SlotId slot, const YAML::Node& v, const SourceLoc& loc) {
+          if (auto n = r_.integer(v, "capacity")) p.capacity.push_back({slot, *n, loc});
+        });
+      } else if (e.key == "at") {
+        p.position = readPos(e.value);
+      }
+    }
+    return p;
+  }
+
+  net::Duration readDuration(const Entry& e) {
+    net::Duration d;
+    d.loc = e.loc;
+    if (!e.value.IsMap()) {
+      d.loc = r_.loc(e.value, e.loc);
+      if (auto v = r_.number(e.value, "duration")) d.a = *v;
+      return d;
+    }
+    auto laws = r_.entries(e.value, "duration", kLaws);
+    if (laws.size() != 1) {
+      r_.error(e.loc, "duration expects a number of seconds or one law: {uniform: [lo, hi]}, "
+                      "{normal: [mean, sd]} or {exponential: mean}");
+      return d;
+    }
+    const auto& law = laws[0];
+    d.loc = law.loc;
+    if (law.key == "exponential") {
+      d.law = net::Duration::Law::Exponential;
+      d.loc = r_.loc(law.value, law.loc);
+      if (auto v = r_.number(law.value, "exponential mean")) d.a = *v;
+      return d;
+    }
+    d.law = law.key == "uniform" ? net::Duration::Law::Uniform : net::Duration::Law::Normal;
+    if (!law.value.IsSequence() || law.value.size() != 2) {
+      r_.error(r_.loc(law.value, law.loc), law.key + " expects two numbers, " +
+                                               (law.key == "uniform" ? "[lo, hi]" : "[mean, sd]") + ", got " +
+                                               detail::describe(law.value));
+      return d;
+    }
+    auto a = r_.number(law.value[0], law.key);
+    auto b = r_.number(law.value[1], law.key);
+    if (a && b) {
+      d.a = *a;
+      d.b = *b;
+    }
+    return d;
+  }
+
+  net::TransitionSpec readTransition(const Entry& te) {
+    net::TransitionSpec t;
+    t.name = te.key;
+    t.loc = te.loc;
+    t.duration.loc = te.loc;
+    t.probability_loc = te.loc;
+    if (te.value.IsNull()) return t;
+    if (!r_.expectMap(te.value, "transition '" + t.name + "'")) return t;
+    for (const auto& e : r_.entries(te.value, "transition", kTransitionKeys)) {
+      if (e.key == "description") {
+        if (auto s = r_.string(e.value, "description")) t.description = *s;
+      } else if (e.key == "duration") {
+        t.duration = readDuration(e);
+      } else if (e.key == "priority") {
+        if (auto v = r_.integer(e.value, "priority")) t.priority = *v;
+      } else if (e.key == "probability") {
+        t.probability_loc = r_.loc(e.value, e.loc);
+        if (auto v = r_.number(e.value, "probability")) t.probability = *v;
+      } else if (e.key == "at") {
+        t.position = readPos(e.value);
+      }
+    }
+    return t;
+  }
+
+  std::optional<net::ArcSpec> readArc(const YAML::Node& node, const SourceLoc& fallback) {
+    net::ArcSpec a;
+    a.loc = r_.loc(node, fallback);
+    if (node.IsScalar()) {
+      // shorthand "P1 -> T1"
+      const std::string text = node.Scalar();
+      const auto arrow = text.find("->");
+      auto trim = [](std::string s) {
+        const auto b = s.find_first_not_of(' ');
+        const auto e = s.find_last_not_of(' ');
+        return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+      };
+      if (arrow == std::string::npos || trim(text.substr(0, arrow)).empty() ||
+          trim(text.substr(arrow + 2)).empty()) {
+        r_.error(node, "an arc is written 'from -> to' or {from: ..., to: ...}, got \"" + text + "\"");
+        return std::nullopt;
+      }
+      a.from = trim(text.substr(0, arrow));
+      a.to = trim(text.substr(arrow + 2));
+      a.from_loc = a.to_loc = a.loc;
+      return a;
+    }
+    if (!r_.expectMap(node, "an arc")) return std::nullopt;
+    bool has_from = false, has_to = false;
+    for (const auto& e : r_.entries(node, "arc", kArcKeys)) {
+      if (e.key == "from") {
+        if (auto s = r_.string(e.value, "from")) a.from = *s, has_from = true;
+        a.from_loc = r_.loc(e.value, e.loc);
+      } else if (e.key == "to") {
+        if (auto s = r_.string(e.value, "to")) a.to = *s, has_to = true;
+        a.to_loc = r_.loc(e.value, e.loc);
+      } else if (e.key == "kind") {
+        auto s = r_.string(e.value, "kind");
+        if (!s) continue;
+        if (*s == "normal") a.kind = net::ArcKind::Normal;
+        else if (*s == "test") a.kind = net::ArcKind::Test;
+        else if (*s == "inhibitor") a.kind = net::ArcKind::Inhibitor;
+        else r_.error(e.value, "unknown arc kind '" + *s + "'" + core::didYouMean(*s, kArcKinds) +
+                                   "; expected normal, test or inhibitor");
+      } else if (e.key == "weight") {
+        perSlot(e, "weight", [&](net::SlotId slot, const YAML::Node& v, const SourceLoc& loc) {
+          if (auto n = r_.integer(v, "weight")) a.weights.push_back({slot, *n, loc});
+        });
+      }
+    }
+    if (!has_from) r_.error(a.loc, "arc has no 'from'");
+    if (!has_to) r_.error(a.loc, "arc has no 'to'");
+    if (!has_from || !has_to) return std::nullopt;
+    return a;
+  }
+
+  net::InstanceSpec readInstance(const Entry& ie) {
+    net::InstanceSpec i;
+    i.name = ie.key;
+    i.loc = ie.loc;
+    i.type_loc = ie.loc;
+    if (ie.value.IsScalar()) {
+      // shorthand "cellA: cell"
+      i.type = ie.value.Scalar();
+      i.type_loc = r_.loc(ie.value, ie.loc);
+      return i;
+    }
+    if (!r_.expectMap(ie.value, "instance '" + i.name + "'")) return i;
+    bool has_type = false;
+    for (const auto& e : r_.entries(ie.value, "instance", kInstanceKeys)) {
+      if (e.key == "type") {
+        if (auto s = r_.string(e.value, "type")) i.type = *s, has_type = true;
+        i.type_loc = r_.loc(e.value, e.loc);
+      } else if (e.key == "at") {
+        i.position = readPos(e.value);
+      }
+    }
+    if (!has_type) r_.error(ie.loc, "instance '" + i.name + "' has no 'type'");
+    return i;
+  }
+
+  YamlReader r_;
+};
+
+}  // namespace
+
+std::optional<Model> parseModel(const std::string& text, const std::string& file, Diagnostics& diags) {
+  auto root = detail::parseYaml(text, file, diags);
+  if (!root) return std::nullopt;
+  auto model = ModelReader(file, diags).read(*root);
+  if (model) model->path = file;
+  return model;
+}
+
+std::optional<Model> loadModel(const std::string& path, Diagnostics& diags) {
+  auto text = detail::readFile(path, diags);
+  if (!text) return std::nullopt;
+  return parseModel(*text, path, diags);
+}
+
+std::optional<std::string> resolveModelPath(const std::string& arg, Diagnostics& diags) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path p(arg);
+  if (fs::is_directory(p, ec)) {
+    std::vector<std::string> found;
+    for (const auto& entry : fs::directory_iterator(p, ec)) {
+      const std::string name = entry.path().filename().string();
+      if (name.size() > std::string(kModelSuffix).size() && name.ends_with(kModelSuffix)) {
+        found.push_back(entry.path().string());
+      }
+    }
+    std::sort(found.begin(), found.end());
+    if (found.size() == 1) return found[0];
+    if (found.empty()) {
+      diags.error({arg, 0, 0}, std::string("folder holds no model file (*") + kModelSuffix + ")");
+    } else {
+      std::string list;
+      for (const auto& f : found) list += (list.empty() ? "" : ", ") + fs::path(f).filename().string();
+      diags.error({arg, 0, 0}, "folder holds " + std::to_string(found.size()) + " model files (" + list +
+                                   "); name one");
+    }
+    return std::nullopt;
+  }
+  if (!fs::exists(p, ec)) {
+    diags.error({arg, 0, 0}, "no such file or folder");
+    return std::nullopt;
+  }
+  return arg;
+}
+
+}  // namespace gdpn::model

@@ -1,0 +1,125 @@
+#include "gdpn/model/report.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "gdpn/core/text.h"
+
+namespace gdpn::model {
+
+Report makeReport(const Simulation& sim, const RunOutcome& outcome) {
+  Report r;
+  r.model = sim.model().path;
+  r.seed = sim.seed();
+  r.dt = sim.kernel().dt();
+  r.outcome = outcome;
+  const auto& net = sim.net();
+  const auto& stats = sim.stats();
+  const double dt = r.dt;
+  const auto steps = static_cast<double>(outcome.steps);
+  for (net::TransitionId t = 0; t < net.transitions().size(); ++t) {
+    const auto& s = stats.transitions()[t];
+    TransitionFigures f;
+    f.name = net.transitions()[t].name;
+    f.occurrences = s.starts;
+    f.cycles = s.cycles;
+    if (s.cycles > 0) {
+      f.mean_cycle = static_cast<double>(s.cycle_sum) * dt / static_cast<double>(s.cycles);
+      f.min_cycle = static_cast<double>(s.cycle_min) * dt;
+      f.max_cycle = static_cast<double>(s.cycle_max) * dt;
+    }
+    f.utilisation = steps > 0 ? static_cast<double>(s.busy) / steps : 0.0;
+    r.transitions.push_back(std::move(f));
+  }
+  for (net::PlaceId p = 0; p < net.places().size(); ++p) {
+    const auto& s = stats.places()[p];
+    PlaceFigures f;
+    f.name = net.places()[p].name;
+    f.mean_tokens = steps > 0 ? static_cast<double>(s.area) / steps : static_cast<double>(s.tokens);
+    f.max_tokens = s.max;
+    f.final_tokens = s.tokens;
+    f.throughput = outcome.time > 0 ? static_cast<double>(s.deposited) / outcome.time : 0.0;
+    r.places.push_back(std::move(f));
+  }
+  return r;
+}
+
+std::string reportJson(const Report& report) {
+  using nlohmann::ordered_json;
+  ordered_json j;
+  j["model"] = report.model;
+  j["seed"] = report.seed;
+  j["dt"] = report.dt;
+  j["steps"] = report.outcome.steps;
+  j["time"] = report.outcome.time;
+  j["stopped"] = stopReasonName(report.outcome.reason);
+  j["transitions"] = ordered_json::array();
+  for (const auto& t : report.transitions) {
+    j["transitions"].push_back({{"name", t.name},
+                                {"occurrences", t.occurrences},
+                                {"cycles", t.cycles},
+                                {"mean_cycle", t.mean_cycle},
+                                {"min_cycle", t.min_cycle},
+                                {"max_cycle", t.max_cycle},
+                                {"utilisation", t.utilisation}});
+  }
+  j["places"] = ordered_json::array();
+  for (const auto& p : report.places) {
+    j["places"].push_back({{"name", p.name},
+                           {"mean_tokens", p.mean_tokens},
+                           {"max_tokens", p.max_tokens},
+                           {"final_tokens", p.final_tokens},
+                           {"throughput", p.throughput}});
+  }
+  return j.dump(2) + "\n";
+}
+
+namespace {
+
+std::string fixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+std::string pad(const std::string& s, std::size_t width, bool right) {
+  if (s.size() >= width) return s;
+  const std::string fill(width - s.size(), ' ');
+  return right ? fill + s : s + fill;
+}
+
+}  // namespace
+
+void printSummary(std::ostream& out, const Report& report) {
+  out << report.model << ": " << report.outcome.steps << " steps of " << core::formatDouble(report.dt)
+      << " s, t = " << fixed(report.outcome.time, 3) << " s, seed " << report.seed;
+  if (report.outcome.reason == StopReason::Dead) out << ", stopped: the net is dead (nothing enabled or occurring)";
+  if (report.outcome.reason == StopReason::Interrupted) out << ", stopped: interrupted";
+  out << "\n\n";
+
+  std::size_t w = 10;
+  for (const auto& t : report.transitions) w = std::max(w, t.name.size());
+  for (const auto& p : report.places) w = std::max(w, p.name.size());
+  w += 2;
+
+  out << pad("transition", w, false) << pad("occurrences", 12, true) << pad("mean cycle [s]", 16, true)
+      << pad("max cycle [s]", 15, true) << pad("utilisation", 13, true) << "\n";
+  for (const auto& t : report.transitions) {
+    const bool cyc = t.cycles > 0;
+    out << pad(t.name, w, false) << pad(std::to_string(t.occurrences), 12, true)
+        << pad(cyc ? fixed(t.mean_cycle, 3) : "-", 16, true) << pad(cyc ? fixed(t.max_cycle, 3) : "-", 15, true)
+        << pad(fixed(100.0 * t.utilisation, 1) + " %", 13, true) << "\n";
+  }
+  out << "\n"
+      << pad("place", w, false) << pad("mean tokens", 12, true) << pad("max tokens", 16, true)
+      << pad("final", 15, true) << pad("thru [1/s]", 13, true) << "\n";
+  for (const auto& p : report.places) {
+    out << pad(p.name, w, false) << pad(fixed(p.mean_tokens, 3), 12, true)
+        << pad(std::to_string(p.max_tokens), 16, true) << pad(std::to_string(p.final_tokens), 15, true)
+        << pad(fixed(p.throughput, 3), 13, true) << "\n";
+  }
+}
+
+}  // namespace gdpn::model

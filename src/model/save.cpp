@@ -1,0 +1,196 @@
+// Writing model files: Model -> canonical YAML text, and a save that never loses the old file.
+
+#include "model/yaml.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "gdpn/core/text.h"
+#include "gdpn/model/model.h"
+#include "model/yaml_reader.h"
+
+namespace gdpn::model {
+namespace {
+
+using core::formatDouble;
+
+void pos(YAML::Emitter& out, const std::optional<net::EditorPos>& p) {
+  if (!p) return;
+  out << YAML::Key << "at" << YAML::Value << YAML::Flow << YAML::BeginSeq << formatDouble((*p)[0])
+      << formatDouble((*p)[1]) << YAML::EndSeq;
+}
+
+void description(YAML::Emitter& out, const std::string& text) {
+  if (!text.empty()) out << YAML::Key << "description" << YAML::Value << YAML::DoubleQuoted << text;
+}
+
+/// A per-slot integer list as a scalar (only a0) or a map.
+void perSlot(YAML::Emitter& out, const char* key, const std::vector<net::SlotCount>& values) {
+  if (values.empty()) return;
+  out << YAML::Key << key << YAML::Value;
+  if (values.size() == 1 && values[0].slot == net::kDefaultSlot) {
+    out << values[0].value;
+    return;
+  }
+  out << YAML::Flow << YAML::BeginMap;
+  for (const auto& v : values) out << YAML::Key << net::slotName(v.slot) << YAML::Value << v.value;
+  out << YAML::EndMap;
+}
+
+void writePlace(YAML::Emitter& out, const net::PlaceSpec& p) {
+  out << YAML::Key << p.name << YAML::Value << YAML::Flow << YAML::BeginMap;
+  description(out, p.description);
+  if (!p.kinds.empty()) {
+    out << YAML::Key << "slots" << YAML::Value << YAML::BeginMap;
+    for (const auto& k : p.kinds) out << YAML::Key << net::slotName(k.slot) << YAML::Value << net::slotKindName(k.kind);
+    out << YAML::EndMap;
+  }
+  if (p.nodes.empty()) {
+    perSlot(out, "tokens", p.tokens);
+  } else {
+    out << YAML::Key << "tokens" << YAML::Value << YAML::BeginMap;
+    for (const auto& t : p.tokens) out << YAML::Key << net::slotName(t.slot) << YAML::Value << t.value;
+    for (const auto& n : p.nodes) {
+      out << YAML::Key << net::slotName(n.slot) << YAML::Value << YAML::BeginSeq;
+      for (const auto& name : n.nodes) out << name;
+      out << YAML::EndSeq;
+    }
+    out << YAML::EndMap;
+  }
+  perSlot(out, "capacity", p.capacity);
+  pos(out, p.position);
+  out << YAML::EndMap;
+}
+
+void writeDuration(YAML::Emitter& out, const net::Duration& d) {
+  using Law = net::Duration::Law;
+  if (d.law == Law::Fixed && d.a == 0.0) return;
+  out << YAML::Key << "duration" << YAML::Value;
+  switch (d.law) {
+    case Law::Fixed: out << formatDouble(d.a); break;
+    case Law::Exponential:
+      out << YAML::BeginMap << YAML::Key << "exponential" << YAML::Value << formatDouble(d.a) << YAML::EndMap;
+      break;
+    case Law::Uniform:
+    case Law::Normal:
+      out << YAML::BeginMap << YAML::Key << (d.law == Law::Uniform ? "uniform" : "normal") << YAML::Value
+          << YAML::BeginSeq << formatDouble(d.a) << formatDouble(d.b) << YAML::EndSeq << YAML::EndMap;
+      break;
+  }
+}
+
+void writeTransition(YAML::Emitter& out, const net::TransitionSpec& t) {
+  out << YAML::Key << t.name << YAML::Value << YAML::Flow << YAML::BeginMap;
+  description(out, t.description);
+  writeDuration(out, t.duration);
+  if (t.priority != 0) out << YAML::Key << "priority" << YAML::Value << t.priority;
+  if (t.probability != 1.0) out << YAML::Key << "probability" << YAML::Value << formatDouble(t.probability);
+  pos(out, t.position);
+  out << YAML::EndMap;
+}
+
+void writeArc(YAML::Emitter& out, const net::ArcSpec& a) {
+  out << YAML::Flow << YAML::BeginMap << YAML::Key << "from" << YAML::Value << a.from << YAML::Key << "to"
+      << YAML::Value << a.to;
+  if (a.kind != net::ArcKind::Normal) out << YAML::Key << "kind" << YAML::Value << net::arcKindName(a.kind);
+  perSlot(out, "weight", a.weights);
+  out << YAML::EndMap;
+}
+
+void writePage(YAML::Emitter& out, const net::PageSpec& page, bool type) {
+  out << YAML::Key << page.name << YAML::Value << YAML::BeginMap;
+  description(out, page.description);
+  if (type && !page.references.empty()) {
+    out << YAML::Key << "references" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+    for (const auto& r : page.references) out << r.place;
+    out << YAML::EndSeq;
+  }
+  if (!page.places.empty()) {
+    out << YAML::Key << "places" << YAML::Value << YAML::BeginMap;
+    for (const auto& p : page.places) writePlace(out, p);
+    out << YAML::EndMap;
+  }
+  if (!page.transitions.empty()) {
+    out << YAML::Key << "transitions" << YAML::Value << YAML::BeginMap;
+    for (const auto& t : page.transitions) writeTransition(out, t);
+    out << YAML::EndMap;
+  }
+  if (!page.instances.empty()) {
+    out << YAML::Key << "instances" << YAML::Value << YAML::BeginMap;
+    for (const auto& i : page.instances) {
+      out << YAML::Key << i.name << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "type"
+          << YAML::Value << i.type;
+      pos(out, i.position);
+      out << YAML::EndMap;
+    }
+    out << YAML::EndMap;
+  }
+  if (!page.arcs.empty()) {
+    out << YAML::Key << "arcs" << YAML::Value << YAML::BeginSeq;
+    for (const auto& a : page.arcs) writeArc(out, a);
+    out << YAML::EndSeq;
+  }
+  out << YAML::EndMap;
+}
+
+void writeKept(YAML::Emitter& out, const char* key, const std::string& text) {
+  if (text.empty()) return;
+  out << YAML::Key << key << YAML::Value << YAML::Load(text);
+}
+
+}  // namespace
+
+std::string writeModel(const Model& model) {
+  YAML::Emitter out;
+  out << YAML::BeginMap;
+  out << YAML::Key << "gdpn" << YAML::Value << 1;
+  description(out, model.description);
+  const auto& s = model.settings;
+  if (s.dt_given || s.seed_given || s.until) {
+    out << YAML::Key << "settings" << YAML::Value << YAML::BeginMap;
+    if (s.dt_given) out << YAML::Key << "dt" << YAML::Value << formatDouble(s.dt);
+    if (s.seed_given) out << YAML::Key << "seed" << YAML::Value << s.seed;
+    if (s.until) out << YAML::Key << "until" << YAML::Value << formatDouble(*s.until);
+    out << YAML::EndMap;
+  }
+  if (!model.net.pages.empty()) {
+    out << YAML::Key << "pages" << YAML::Value << YAML::BeginMap;
+    for (const auto& p : model.net.pages) writePage(out, p, false);
+    out << YAML::EndMap;
+  }
+  if (!model.net.page_types.empty()) {
+    out << YAML::Key << "page_types" << YAML::Value << YAML::BeginMap;
+    for (const auto& p : model.net.page_types) writePage(out, p, true);
+    out << YAML::EndMap;
+  }
+  writeKept(out, "scene", model.scene);
+  writeKept(out, "scripts", model.scripts);
+  out << YAML::EndMap;
+  return std::string(out.c_str()) + "\n";
+}
+
+bool saveModel(const Model& model, const std::string& path, core::Diagnostics& diags) {
+  namespace fs = std::filesystem;
+  const std::string text = writeModel(model);
+  const std::string temp = path + ".saving~";
+  {
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    if (!out || !(out << text) || !out.flush()) {
+      diags.error({path, 0, 0}, "cannot write the file");
+      std::error_code ec;
+      fs::remove(temp, ec);
+      return false;
+    }
+  }
+  std::error_code ec;
+  fs::rename(temp, path, ec);
+  if (ec) {
+    diags.error({path, 0, 0}, "cannot replace the file: " + ec.message());
+    fs::remove(temp, ec);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace gdpn::model

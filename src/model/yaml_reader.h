@@ -1,0 +1,59 @@
+#pragma once
+// Internal: no promises. Typed, located access to a yaml-cpp tree for the loaders.
+
+#include "model/yaml.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gdpn/core/diagnostics.h"
+
+namespace gdpn::model::detail {
+
+/// One key of a YAML map, with its location.
+struct Entry {
+  std::string key;
+  core::SourceLoc loc;
+  YAML::Node value;
+};
+
+/// "a map", "a list", "nothing" or the quoted scalar.
+std::string describe(const YAML::Node& node);
+/// Parses YAML text; a syntax error becomes a located diagnostic and nullopt.
+std::optional<YAML::Node> parseYaml(const std::string& text, const std::string& file, core::Diagnostics& diags);
+/// Reads a whole file; an unreadable one becomes a diagnostic and nullopt.
+std::optional<std::string> readFile(const std::string& path, core::Diagnostics& diags);
+/// Canonical block-style YAML text of a node.
+std::string emitYaml(const YAML::Node& node);
+
+/// Reads typed values out of a parsed tree, reporting mistakes at their location.
+class YamlReader {
+ public:
+  YamlReader(std::string file, core::Diagnostics& diags) : file_(std::move(file)), diags_(diags) {}
+
+  /// Location of `node`, or `fallback` when yaml-cpp has none (empty values).
+  [[nodiscard]] core::SourceLoc loc(const YAML::Node& node, const core::SourceLoc& fallback = {}) const;
+  void error(const YAML::Node& node, std::string message);
+  void error(const core::SourceLoc& loc, std::string message);
+  /// True when at least one error was reported through this reader.
+  [[nodiscard]] bool failed() const { return failed_; }
+
+  bool expectMap(const YAML::Node& node, const std::string& what);
+  bool expectList(const YAML::Node& node, const std::string& what);
+  /// The keys of a map in order; reports duplicate keys, non-scalar keys and, when `allowed`
+  /// is not empty, unknown keys with a suggestion. Only accepted keys are returned.
+  std::vector<Entry> entries(const YAML::Node& map, const std::string& what,
+                             const std::vector<std::string>& allowed);
+  std::optional<double> number(const YAML::Node& node, const std::string& field);
+  std::optional<std::int64_t> integer(const YAML::Node& node, const std::string& field);
+  std::optional<std::string> string(const YAML::Node& node, const std::string& field);
+
+ private:
+  std::string file_;
+  core::Diagnostics& diags_;
+  bool failed_ = false;
+};
+
+}  // namespace gdpn::model::detail

@@ -1,0 +1,231 @@
+#include "gdpn/net/net.h"
+
+#include <algorithm>
+
+#include "gdpn/net/builder.h"
+
+namespace gdpn::net {
+
+const char* arcKindName(ArcKind kind) {
+  switch (kind) {
+    case ArcKind::Normal: return "normal";
+    case ArcKind::Test: return "test";
+    case ArcKind::Inhibitor: return "inhibitor";
+  }
+  return "?";
+}
+
+std::int64_t Net::findPlace(std::string_view qualified_name) const {
+  auto it = place_index_.find(std::string(qualified_name));
+  return it == place_index_.end() ? -1 : static_cast<std::int64_t>(it->second);
+}
+
+std::int64_t Net::findTransition(std::string_view qualified_name) const {
+  auto it = transition_index_.find(std::string(qualified_name));
+  return it == transition_index_.end() ? -1 : static_cast<std::int64_t>(it->second);
+}
+
+std::int64_t Net::findPlaceSlot(PlaceId place, SlotId slot) const {
+  const auto& p = places_[place];
+  for (auto ps = p.slots_begin; ps < p.slots_end; ++ps) {
+    if (place_slots_[ps].slot == slot) return ps;
+  }
+  return -1;
+}
+
+std::size_t Net::memoryBytes() const {
+  std::size_t bytes = places_.capacity() * sizeof(Place) +
+                      transitions_.capacity() * sizeof(Transition) +
+                      place_slots_.capacity() * sizeof(PlaceSlot) + terms_.capacity() * sizeof(Term) +
+                      watch_begin_.capacity() * sizeof(std::uint32_t) +
+                      watchers_.capacity() * sizeof(TermId) +
+                      initial_nodes_.capacity() * sizeof(std::uint32_t);
+  auto heap = [](const std::string& s) { return s.capacity() > 15 ? s.capacity() + 1 : 0; };
+  for (const auto& p : places_) bytes += heap(p.name) + heap(p.loc.file);
+  for (const auto& t : transitions_) bytes += heap(t.name) + heap(t.loc.file) + heap(t.duration.loc.file);
+  for (const auto& n : node_names_) bytes += sizeof(std::string) + heap(n);
+  // unordered_map: one node (key + value + next pointer + hash) and one bucket pointer per entry
+  const std::size_t entry = sizeof(std::string) + sizeof(std::uint32_t) + 2 * sizeof(void*) + sizeof(void*);
+  bytes += (place_index_.size() + transition_index_.size()) * entry;
+  for (const auto& [k, v] : place_index_) bytes += heap(k);
+  for (const auto& [k, v] : transition_index_) bytes += heap(k);
+  return bytes;
+}
+
+PlaceId NetBuilder::addPlace(std::string name, SourceLoc loc) {
+  places_.push_back({std::move(name), std::move(loc), {}});
+  return static_cast<PlaceId>(places_.size() - 1);
+}
+
+NetBuilder::BuildSlot& NetBuilder::slotOf(PlaceId place, SlotId slot) {
+  auto& slots = places_[place].slots;
+  for (auto& s : slots) {
+    if (s.slot == slot) return s;
+  }
+  slots.push_back({});
+  slots.back().slot = slot;
+  return slots.back();
+}
+
+void NetBuilder::setSlot(PlaceId place, SlotId slot, SlotKind kind, std::int64_t capacity,
+                         std::int64_t initial) {
+  auto& s = slotOf(place, slot);
+  s.kind = kind;
+  s.capacity = capacity;
+  s.initial = initial;
+}
+
+void NetBuilder::setNodes(PlaceId place, SlotId slot, const std::vector<std::string>& nodes) {
+  auto& s = slotOf(place, slot);
+  s.kind = SlotKind::Node;
+  s.nodes.clear();
+  for (const auto& n : nodes) {
+    auto [it, fresh] = node_index_.try_emplace(n, static_cast<std::uint32_t>(node_names_.size()));
+    if (fresh) node_names_.push_back(n);
+    s.nodes.push_back(it->second);
+  }
+  s.initial = static_cast<std::int64_t>(s.nodes.size());
+}
+
+TransitionId NetBuilder::addTransition(std::string name, Duration duration, std::int64_t priority,
+                                       double probability, SourceLoc loc) {
+  Transition t;
+  t.name = std::move(name);
+  t.loc = std::move(loc);
+  t.duration = duration;
+  t.priority = priority;
+  t.probability = probability;
+  transitions_.push_back(std::move(t));
+  return static_cast<TransitionId>(transitions_.size() - 1);
+}
+
+void NetBuilder::addInput(PlaceId place, TransitionId transition, SlotId slot, std::int64_t weight,
+                          ArcKind kind, std::uint32_t arc) {
+  slotOf(place, slot);
+  const TermKind tk = kind == ArcKind::Normal ? TermKind::Input
+                      : kind == ArcKind::Test ? TermKind::Test
+                                              : TermKind::Inhibitor;
+  arcs_.push_back({place, transition, slot, tk, weight, arc});
+}
+
+void NetBuilder::addOutput(TransitionId transition, PlaceId place, SlotId slot, std::int64_t weight,
+                           std::uint32_t arc) {
+  slotOf(place, slot);
+  arcs_.push_back({place, transition, slot, TermKind::Output, weight, arc});
+}
+
+std::shared_ptr<const Net> NetBuilder::freeze() {
+  auto net = std::make_shared<Net>();
+
+  // place slots: grouped per place, ordered by slot
+  net->places_.reserve(places_.size());
+  for (PlaceId p = 0; p < places_.size(); ++p) {
+    auto& bp = places_[p];
+    std::sort(bp.slots.begin(), bp.slots.end(),
+              [](const BuildSlot& a, const BuildSlot& b) { return a.slot < b.slot; });
+    Place place;
+    place.name = std::move(bp.name);
+    place.loc = std::move(bp.loc);
+    place.slots_begin = static_cast<std::uint32_t>(net->place_slots_.size());
+    for (auto& s : bp.slots) {
+      PlaceSlot ps;
+      ps.place = p;
+      ps.slot = s.slot;
+      ps.kind = s.kind;
+      ps.capacity = s.capacity;
+      ps.initial = s.initial;
+      ps.nodes_begin = static_cast<std::uint32_t>(net->initial_nodes_.size());
+      net->initial_nodes_.insert(net->initial_nodes_.end(), s.nodes.begin(), s.nodes.end());
+      ps.nodes_end = static_cast<std::uint32_t>(net->initial_nodes_.size());
+      net->place_slots_.push_back(ps);
+    }
+    place.slots_end = static_cast<std::uint32_t>(net->place_slots_.size());
+    net->places_.push_back(std::move(place));
+  }
+  auto psOf = [&](PlaceId p, SlotId slot) -> PlaceSlotId {
+    for (auto ps = net->places_[p].slots_begin; ps < net->places_[p].slots_end; ++ps) {
+      if (net->place_slots_[ps].slot == slot) return ps;
+    }
+    return 0;  // unreachable: addInput/addOutput made the slot
+  };
+
+  // terms grouped per transition: inputs, conditions, outputs (stable within each group)
+  std::vector<std::uint32_t> count(transitions_.size() + 1, 0);
+  for (const auto& a : arcs_) ++count[a.transition + 1];
+  for (std::size_t t = 0; t < transitions_.size(); ++t) count[t + 1] += count[t];
+  auto group = [](TermKind k) { return k == TermKind::Input ? 0 : k == TermKind::Output ? 2 : 1; };
+  std::stable_sort(arcs_.begin(), arcs_.end(), [&](const BuildArc& a, const BuildArc& b) {
+    if (a.transition != b.transition) return a.transition < b.transition;
+    return group(a.kind) < group(b.kind);
+  });
+  net->terms_.reserve(arcs_.size());
+  for (const auto& a : arcs_) {
+    Term term;
+    term.transition = a.transition;
+    term.place_slot = psOf(a.place, a.slot);
+    term.kind = a.kind;
+    term.weight = a.weight;
+    term.arc = a.arc;
+    net->terms_.push_back(term);
+  }
+
+  // transition ranges, node-slot masks, and what each output's transition takes from its place
+  std::vector<std::int64_t> priorities;
+  for (TransitionId t = 0; t < transitions_.size(); ++t) {
+    auto& tr = transitions_[t];
+    tr.terms_begin = count[t];
+    tr.terms_end = count[t + 1];
+    std::uint32_t i = tr.terms_begin;
+    while (i < tr.terms_end && net->terms_[i].kind == TermKind::Input) ++i;
+    tr.inputs_end = i;
+    while (i < tr.terms_end && net->terms_[i].kind != TermKind::Output) ++i;
+    tr.conditions_end = i;
+    for (auto k = tr.terms_begin; k < tr.terms_end; ++k) {
+      auto& term = net->terms_[k];
+      const auto& ps = net->place_slots_[term.place_slot];
+      if (ps.kind == SlotKind::Node) tr.node_slot_mask |= 1u << ps.slot;
+      if (term.kind != TermKind::Output) continue;
+      for (auto j = tr.terms_begin; j < tr.inputs_end; ++j) {
+        if (net->terms_[j].place_slot == term.place_slot) term.take += net->terms_[j].weight;
+      }
+    }
+    priorities.push_back(tr.priority);
+  }
+  std::sort(priorities.begin(), priorities.end(), std::greater<>());
+  priorities.erase(std::unique(priorities.begin(), priorities.end()), priorities.end());
+  net->priority_levels_ = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(priorities.size()));
+  for (auto& tr : transitions_) {
+    auto it = std::find(priorities.begin(), priorities.end(), tr.priority);
+    tr.priority_rank = static_cast<std::uint32_t>(it - priorities.begin());
+  }
+
+  // watchers: every term whose truth can change; outputs to unbounded slots are always true
+  const std::size_t slot_count = net->place_slots_.size();
+  net->watch_begin_.assign(slot_count + 1, 0);
+  auto watched = [&](const Term& term) {
+    return term.kind != TermKind::Output || net->place_slots_[term.place_slot].capacity != kUnbounded;
+  };
+  for (const auto& term : net->terms_) {
+    if (watched(term)) ++net->watch_begin_[term.place_slot + 1];
+  }
+  for (std::size_t ps = 0; ps < slot_count; ++ps) net->watch_begin_[ps + 1] += net->watch_begin_[ps];
+  net->watchers_.resize(net->watch_begin_[slot_count]);
+  std::vector<std::uint32_t> fill(net->watch_begin_.begin(), net->watch_begin_.end() - 1);
+  for (TermId id = 0; id < net->terms_.size(); ++id) {
+    const auto& term = net->terms_[id];
+    if (watched(term)) net->watchers_[fill[term.place_slot]++] = id;
+  }
+
+  net->transitions_ = std::move(transitions_);
+  net->node_names_ = std::move(node_names_);
+  net->place_index_.reserve(net->places_.size());
+  for (PlaceId p = 0; p < net->places_.size(); ++p) net->place_index_.emplace(net->places_[p].name, p);
+  net->transition_index_.reserve(net->transitions_.size());
+  for (TransitionId t = 0; t < net->transitions_.size(); ++t)
+    net->transition_index_.emplace(net->transitions_[t].name, t);
+
+  *this = NetBuilder{};
+  return net;
+}
+
+}  // namespace gdpn::net

@@ -1,0 +1,53 @@
+#include "gdpn/net/trace.h"
+
+#include "gdpn/core/text.h"
+
+namespace gdpn::net {
+
+TraceWriter::TraceWriter(std::ostream& out, const Net& net, double dt, NodeNamer namer)
+    : out_(out), net_(net), dt_(dt), namer_(std::move(namer)) {}
+
+void TraceWriter::head(std::int64_t step, const char* event) {
+  out_ << "{\"step\":" << step << ",\"t\":" << core::formatDouble(static_cast<double>(step) * dt_)
+       << ",\"ev\":\"" << event << '"';
+}
+
+void TraceWriter::event(std::int64_t step, const char* event, const std::string& fields) {
+  head(step, event);
+  if (!fields.empty()) out_ << ',' << fields;
+  out_ << "}\n";
+}
+
+void TraceWriter::onStart(TransitionId t, std::int64_t step) {
+  head(step, "start");
+  out_ << ",\"transition\":" << core::jsonQuote(net_.transitions()[t].name) << "}\n";
+}
+
+void TraceWriter::onComplete(TransitionId t, std::int64_t step) {
+  head(step, "complete");
+  out_ << ",\"transition\":" << core::jsonQuote(net_.transitions()[t].name) << "}\n";
+}
+
+void TraceWriter::tokens(PlaceSlotId ps, std::int64_t count, std::span<const NodeRef> nodes) {
+  const auto& slot = net_.placeSlots()[ps];
+  out_ << ",\"place\":" << core::jsonQuote(net_.places()[slot.place].name) << ",\"slot\":\""
+       << slotName(slot.slot) << "\",\"count\":" << count;
+  if (slot.kind == SlotKind::Node) {
+    out_ << ",\"tokens\":[";
+    for (std::size_t i = 0; i < nodes.size(); ++i) out_ << (i ? "," : "") << core::jsonQuote(namer_(nodes[i]));
+    out_ << ']';
+  }
+  out_ << "}\n";
+}
+
+void TraceWriter::onRemove(PlaceSlotId ps, std::int64_t count, std::span<const NodeRef> nodes, std::int64_t step) {
+  head(step, "remove");
+  tokens(ps, count, nodes);
+}
+
+void TraceWriter::onDeposit(PlaceSlotId ps, std::int64_t count, std::span<const NodeRef> nodes, std::int64_t step) {
+  head(step, "deposit");
+  tokens(ps, count, nodes);
+}
+
+}  // namespace gdpn::net

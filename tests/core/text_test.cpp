@@ -1,0 +1,74 @@
+#include "gdpn/core/text.h"
+
+#include <gtest/gtest.h>
+
+#include "gdpn/core/diagnostics.h"
+
+namespace gdpn::core {
+namespace {
+
+TEST(Text, EditDistance) {
+  EXPECT_EQ(editDistance("capacity", "capacty"), 1u);
+  EXPECT_EQ(editDistance("", "abc"), 3u);
+  EXPECT_EQ(editDistance("kitten", "sitting"), 3u);
+}
+
+TEST(Text, DidYouMeanOnlyForCloseWords) {
+  const std::vector<std::string> keys = {"tokens", "capacity", "description"};
+  EXPECT_EQ(didYouMean("capasity", keys), " (did you mean 'capacity'?)");
+  EXPECT_EQ(didYouMean("zzz", keys), "");
+}
+
+TEST(Text, FormatDoubleIsShortestExact) {
+  EXPECT_EQ(formatDouble(0.1), "0.1");
+  EXPECT_EQ(formatDouble(4.0), "4");
+  EXPECT_EQ(formatDouble(0.1 + 0.2), "0.30000000000000004");
+  EXPECT_EQ(formatDouble(-1.5), "-1.5");
+}
+
+TEST(Text, JsonQuoteEscapes) {
+  EXPECT_EQ(jsonQuote("a\"b\\c\n\x01"), "\"a\\\"b\\\\c\\n\\u0001\"");
+}
+
+TEST(Text, Identifiers) {
+  EXPECT_TRUE(isIdentifier("push_box"));
+  EXPECT_TRUE(isIdentifier("_x1"));
+  EXPECT_FALSE(isIdentifier("1st"));
+  EXPECT_FALSE(isIdentifier("a-b"));
+  EXPECT_FALSE(isIdentifier(""));
+}
+
+TEST(Diagnostics, GccForm) {
+  Diagnostics d;
+  d.error({"m.gdpn.yaml", 12, 7}, "field 'width' expects a number, got \"abc\"");
+  d.warning({"m.gdpn.yaml", 3, 0}, "w");
+  d.note({"", 0, 0}, "n");
+  EXPECT_EQ(d.str(),
+            "m.gdpn.yaml:12:7: error: field 'width' expects a number, got \"abc\"\n"
+            "m.gdpn.yaml:3: warning: w\n"
+            "<input>: note: n\n");
+  EXPECT_EQ(d.errorCount(), 1u);
+}
+
+}  // namespace
+}  // namespace gdpn::core
+
+namespace gdpn::core {
+namespace {
+
+TEST(Text, Utf8Validation) {
+  EXPECT_EQ(firstInvalidUtf8("plain ascii"), std::string_view::npos);
+  EXPECT_EQ(firstInvalidUtf8("gr\xc3\xbc\xc3\x9f \xe2\x82\xac \xf0\x9f\x98\x80"), std::string_view::npos);
+  EXPECT_EQ(firstInvalidUtf8("ab\xff"), 2u);
+  EXPECT_EQ(firstInvalidUtf8("\xc0\xaf"), 0u);          // overlong '/'
+  EXPECT_EQ(firstInvalidUtf8("x\xed\xa0\x80"), 1u);     // a surrogate
+  EXPECT_EQ(firstInvalidUtf8("\xe2\x82"), 0u);          // cut short
+}
+
+TEST(Text, LineColumn) {
+  EXPECT_EQ(lineColumn("ab\ncd", 4), (std::pair<int, int>{2, 2}));
+  EXPECT_EQ(lineColumn("", 0), (std::pair<int, int>{1, 1}));
+}
+
+}  // namespace
+}  // namespace gdpn::core

@@ -1,0 +1,161 @@
+// The gdpn program as a user runs it: exit codes, diagnostics on stderr, summary, report, trace.
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int code = -1;
+  std::string out;  // stdout and stderr together
+};
+
+Result gdpn(const std::string& args) {
+  const std::string cmd = std::string("cd '") + GDPN_SOURCE_DIR + "' && '" + GDPN_CLI + "' " + args + " 2>&1";
+  Result r;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buf{};
+  std::size_t n = 0;
+  while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
+  const int status = pclose(pipe);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string temp(const std::string& name) { return (fs::temp_directory_path() / name).string(); }
+
+TEST(Cli, CheckAcceptsEveryExample) {
+  for (const char* dir : {"examples/basics/figure31", "examples/basics/producer_consumer", "examples/basics/two_cells"}) {
+    const auto r = gdpn(std::string("check ") + dir);
+    EXPECT_EQ(r.code, 0) << dir << "\n" << r.out;
+    EXPECT_NE(r.out.find(": ok ("), std::string::npos) << r.out;
+  }
+}
+
+TEST(Cli, CheckReportsMistakesAtTheirLocationAndFails) {
+  const auto r = gdpn("check tests/data/bad/unknown_key.gdpn.yaml");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find("tests/data/bad/unknown_key.gdpn.yaml:6:23: error: unknown key 'capacty' in place "
+                       "(did you mean 'capacity'?)"),
+            std::string::npos)
+      << r.out;
+}
+
+TEST(Cli, RunPrintsTheSummary) {
+  const auto r = gdpn("run examples/basics/producer_consumer");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("6000 steps of 0.01 s, t = 60.000 s, seed 7"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("main/consume"), std::string::npos);
+  EXPECT_NE(r.out.find("utilisation"), std::string::npos);
+  EXPECT_NE(r.out.find("thru [1/s]"), std::string::npos);
+}
+
+TEST(Cli, ReportHoldsTheExactCycleTimes) {
+  const auto report = temp("gdpn_cycles_report.json");
+  const auto r = gdpn("run tests/data/good/cycles.gdpn.yaml --quiet --report " + report);
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_TRUE(r.out.empty()) << r.out;  // --quiet
+  std::ifstream in(report);
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["steps"], 320);
+  EXPECT_EQ(j["stopped"], "until");
+  std::map<std::string, double> cycle;
+  for (const auto& t : j["transitions"]) cycle[t["name"]] = t["mean_cycle"];
+  EXPECT_EQ(cycle["main/a1"], 4.0);
+  EXPECT_EQ(cycle["main/a2"], 4.0);
+  EXPECT_EQ(cycle["main/b1"], 1.0);
+  EXPECT_EQ(cycle["main/b3"], 1.0);
+  fs::remove(report);
+}
+
+TEST(Cli, TraceIsJsonLinesAndRepeatable) {
+  const auto a = temp("gdpn_trace_a.jsonl");
+  const auto b = temp("gdpn_trace_b.jsonl");
+  ASSERT_EQ(gdpn("run tests/data/good/stochastic.gdpn.yaml -q --trace " + a).code, 0);
+  ASSERT_EQ(gdpn("run tests/data/good/stochastic.gdpn.yaml -q --trace " + b).code, 0);
+  std::stringstream ta, tb;
+  ta << std::ifstream(a).rdbuf();
+  tb << std::ifstream(b).rdbuf();
+  EXPECT_EQ(ta.str(), tb.str());
+  std::istringstream lines(ta.str());
+  std::string line;
+  int n = 0;
+  while (std::getline(lines, line)) {
+    const auto j = nlohmann::json::parse(line);
+    EXPECT_TRUE(j.contains("step") && j.contains("t") && j.contains("ev")) << line;
+    ++n;
+  }
+  EXPECT_GT(n, 100);
+  fs::remove(a);
+  fs::remove(b);
+}
+
+TEST(Cli, SeedChangesTheRun) {
+  const auto a = gdpn("run tests/data/good/stochastic.gdpn.yaml --seed 1");
+  const auto b = gdpn("run tests/data/good/stochastic.gdpn.yaml --seed 2");
+  EXPECT_EQ(a.code, 0);
+  EXPECT_NE(a.out.find("seed 1"), std::string::npos);
+  EXPECT_NE(a.out, b.out);
+}
+
+TEST(Cli, HelpAndVersion) {
+  auto r = gdpn("--help");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("check"), std::string::npos);
+  EXPECT_NE(r.out.find("run"), std::string::npos);
+  r = gdpn("run --help");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("--until"), std::string::npos);
+  EXPECT_NE(r.out.find("--trace"), std::string::npos);
+  r = gdpn("check --help");
+  EXPECT_EQ(r.code, 0);
+  r = gdpn("--version");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_EQ(r.out.rfind("gdpn ", 0), 0u) << r.out;
+}
+
+TEST(Cli, BadArgumentsFailWithAMessage) {
+  for (const char* args : {"", "frobnicate", "run", "run examples/basics/figure31 --until -3",
+                           "run examples/basics/figure31 --steps many", "run examples/basics/figure31 --until 1 --steps 2",
+                           "check a b"}) {
+    const auto r = gdpn(args);
+    EXPECT_NE(r.code, 0) << args;
+    EXPECT_NE(r.out.find("gdpn: error:"), std::string::npos) << args << "\n" << r.out;
+  }
+}
+
+TEST(Cli, MissingModelFails) {
+  const auto r = gdpn("run no/such/model");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find("no/such/model: error: no such file or folder"), std::string::npos) << r.out;
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Cli, ASourceTransitionIsAWarningNotAnError) {
+  const auto r = gdpn("check tests/data/good/source_transition.gdpn.yaml");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("source_transition.gdpn.yaml:11:7: warning: transition 'tick' has no input arcs"),
+            std::string::npos) << r.out;
+}
+
+TEST(Cli, TheTwoCellLineFinishesEveryPart) {
+  const auto r = gdpn("run examples/basics/two_cells");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("stopped: the net is dead"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("line/outfeed"), std::string::npos);
+}
+
+}  // namespace

@@ -1,0 +1,93 @@
+// Load, save and load again loses nothing; saving is canonical; saving never loses the old file.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "gdpn/model/model.h"
+#include "gdpn/net/compile.h"
+
+namespace gdpn::model {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> goodModels() {
+  std::vector<std::string> files;
+  for (const char* dir : {"examples", "tests/data/good"}) {
+    for (const auto& e : fs::recursive_directory_iterator(fs::path(GDPN_SOURCE_DIR) / dir)) {
+      if (e.path().string().ends_with(kModelSuffix)) files.push_back(e.path().string());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+class RoundTrip : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(RoundTrip, SaveThenLoadGivesTheSameModelAndTheSameBytes) {
+  core::Diagnostics diags;
+  auto first = loadModel(GetParam(), diags);
+  ASSERT_TRUE(first) << diags.str();
+  ASSERT_TRUE(net::compile(first->net, diags)) << diags.str();
+  const std::string text = writeModel(*first);
+  auto second = parseModel(text, "saved.gdpn.yaml", diags);
+  ASSERT_TRUE(second) << diags.str() << "\n" << text;
+  EXPECT_EQ(*first, *second) << text;
+  EXPECT_EQ(writeModel(*second), text);
+  ASSERT_TRUE(net::compile(second->net, diags)) << diags.str();
+}
+
+INSTANTIATE_TEST_SUITE_P(Models, RoundTrip, ::testing::ValuesIn(goodModels()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           std::string name = fs::path(info.param).filename().string();
+                           return name.substr(0, name.find('.'));
+                         });
+
+TEST(RoundTrip, KeepsSceneAndScriptsSections) {
+  core::Diagnostics diags;
+  auto m = loadModel(std::string(GDPN_SOURCE_DIR) + "/tests/data/good/everything.gdpn.yaml", diags);
+  ASSERT_TRUE(m) << diags.str();
+  EXPECT_NE(m->scene.find("Cube"), std::string::npos);
+  EXPECT_NE(m->scripts.find("count = 0"), std::string::npos);
+  const std::string text = writeModel(*m);
+  EXPECT_NE(text.find("scene:"), std::string::npos);
+  EXPECT_NE(text.find("count = 0"), std::string::npos);
+}
+
+TEST(Save, WritesBesideThenRenames) {
+  const auto dir = fs::temp_directory_path() / "gdpn_save_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const auto path = (dir / "m.gdpn.yaml").string();
+  {
+    std::ofstream(path) << "old contents\n";
+  }
+  core::Diagnostics diags;
+  Model m;
+  m.description = "new";
+  ASSERT_TRUE(saveModel(m, path, diags)) << diags.str();
+  std::stringstream text;
+  text << std::ifstream(path).rdbuf();
+  EXPECT_EQ(text.str(), writeModel(m));
+  // nothing is left beside it
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}), 1);
+  fs::remove_all(dir);
+}
+
+TEST(Save, AFailedSaveLeavesTheOldFileAlone) {
+  const auto dir = fs::temp_directory_path() / "gdpn_save_fail";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "target.gdpn.yaml");  // a folder where the file should go
+  core::Diagnostics diags;
+  EXPECT_FALSE(saveModel(Model{}, (dir / "target.gdpn.yaml").string(), diags));
+  EXPECT_TRUE(diags.hasErrors());
+  EXPECT_TRUE(fs::is_directory(dir / "target.gdpn.yaml"));
+  EXPECT_FALSE(fs::exists(dir / "target.gdpn.yaml.saving~"));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace gdpn::model

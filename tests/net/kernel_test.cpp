@@ -1,0 +1,467 @@
+// The kernel against the rules of semantics.md §5-§7, one test per rule.
+
+#include "gdpn/net/kernel.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "gdpn/net/builder.h"
+#include "net/detail/sort_keys.h"
+#include "support/recorder.h"
+
+namespace gdpn::net {
+namespace {
+
+using testing::Recorder;
+
+constexpr SlotKind kControl = SlotKind::Control;
+
+Duration seconds(double s) { return Duration{Duration::Law::Fixed, s, 0.0, {}}; }
+
+/// Marking of place `name` at slot a0.
+std::int64_t tokens(const Kernel& k, const char* name) {
+  const auto p = k.net().findPlace(name);
+  EXPECT_GE(p, 0) << name;
+  const auto ps = k.net().findPlaceSlot(static_cast<PlaceId>(p), kDefaultSlot);
+  return ps < 0 ? 0 : k.marking(static_cast<PlaceSlotId>(ps));
+}
+
+bool enabled(const Kernel& k, const char* name) {
+  return k.enabled(static_cast<TransitionId>(k.net().findTransition(name)));
+}
+
+// Figure 3.1: T1 takes P1 and P2 into P3; T2 moves P3 to P4 and refills P2. All capacities 1.
+std::shared_ptr<const Net> figure31() {
+  NetBuilder b;
+  PlaceId p[4];
+  for (int i = 0; i < 4; ++i) {
+    p[i] = b.addPlace("P" + std::to_string(i + 1));
+    b.setSlot(p[i], kDefaultSlot, kControl, 1, i < 2 ? 1 : 0);
+  }
+  const auto t1 = b.addTransition("T1");
+  const auto t2 = b.addTransition("T2");
+  b.addInput(p[0], t1);
+  b.addInput(p[1], t1);
+  b.addOutput(t1, p[2]);
+  b.addInput(p[2], t2);
+  b.addOutput(t2, p[3]);
+  b.addOutput(t2, p[1]);
+  return b.freeze();
+}
+
+TEST(Figure31, GoesThroughItsThreeMarkingsThenHalts) {
+  Kernel k(figure31(), {1.0, 1});
+  // marking a: tokens on P1 and P2; only T1 is enabled
+  EXPECT_EQ((std::vector<std::int64_t>{tokens(k, "P1"), tokens(k, "P2"), tokens(k, "P3"), tokens(k, "P4")}),
+            (std::vector<std::int64_t>{1, 1, 0, 0}));
+  EXPECT_TRUE(enabled(k, "T1"));
+  EXPECT_FALSE(enabled(k, "T2"));
+  k.start();
+  k.beginStep();
+  k.completeOccurrences();
+  // marking b: T1 has put its token on P3; T2 is enabled because T1 emptied P2
+  EXPECT_EQ((std::vector<std::int64_t>{tokens(k, "P1"), tokens(k, "P2"), tokens(k, "P3"), tokens(k, "P4")}),
+            (std::vector<std::int64_t>{0, 0, 1, 0}));
+  EXPECT_FALSE(enabled(k, "T1"));
+  EXPECT_TRUE(enabled(k, "T2"));
+  k.fireEnabled();
+  k.step();
+  // marking c: nothing is enabled and nothing occurs
+  EXPECT_EQ((std::vector<std::int64_t>{tokens(k, "P1"), tokens(k, "P2"), tokens(k, "P3"), tokens(k, "P4")}),
+            (std::vector<std::int64_t>{0, 1, 0, 1}));
+  EXPECT_TRUE(k.dead());
+}
+
+TEST(Figure31, OutputPlaceAlreadyFullBlocksT2) {
+  // with P2 still marked, T2 has no room on P2 even when P3 holds a token
+  NetBuilder b;
+  const auto p2 = b.addPlace("P2");
+  const auto p3 = b.addPlace("P3");
+  b.setSlot(p2, kDefaultSlot, kControl, 1, 1);
+  b.setSlot(p3, kDefaultSlot, kControl, 1, 1);
+  const auto t2 = b.addTransition("T2");
+  b.addInput(p3, t2);
+  b.addOutput(t2, p2);
+  Kernel k(b.freeze(), {1.0, 1});
+  EXPECT_FALSE(k.enabled(t2));
+}
+
+TEST(NetKernel, NormalArcNeedsItsWeightAndTakesIt) {
+  NetBuilder b;
+  const auto p = b.addPlace("P");
+  const auto q = b.addPlace("Q");
+  b.setSlot(p, kDefaultSlot, kControl, kUnbounded, 3);
+  const auto t = b.addTransition("T", seconds(1));
+  b.addInput(p, t, kDefaultSlot, 2);
+  b.addOutput(t, q);
+  Kernel k(b.freeze(), {1.0, 1});
+  EXPECT_TRUE(k.enabled(t));
+  k.start();
+  EXPECT_EQ(tokens(k, "P"), 1);
+  EXPECT_EQ(tokens(k, "Q"), 0);  // deposited only on completion
+  k.step();
+  EXPECT_EQ(tokens(k, "Q"), 1);
+  EXPECT_FALSE(k.enabled(t));  // one token left, weight 2
+  EXPECT_TRUE(k.dead());
+}
+
+TEST(NetKernel, TestArcNeedsTokensButLeavesThem) {
+  NetBuilder b;
+  const auto p = b.addPlace("P");
+  b.setSlot(p, kDefaultSlot, kControl, kUnbounded, 2);
+  const auto t1 = b.addTransition("T1", seconds(5));
+  const auto t2 = b.addTransition("T2", seconds(5));
+  b.addInput(p, t1, kDefaultSlot, 2, ArcKind::Test);
+  b.addInput(p, t2, kDefaultSlot, 2, ArcKind::Test);
+  Kernel k(b.freeze(), {1.0, 1});
+  k.start();
+  // both start in the same step: neither takes the tokens the other needs
+  EXPECT_TRUE(k.occurring(t1));
+  EXPECT_TRUE(k.occurring(t2));
+  EXPECT_EQ(tokens(k, "P"), 2);
+}
+
+TEST(NetKernel, InhibitorArcBlocksWhileMarked) {
+  NetBuilder b;
+  const auto guard = b.addPlace("Guard");
+  const auto src = b.addPlace("Src");
+  b.setSlot(guard, kDefaultSlot, kControl, kUnbounded, 2);
+  b.setSlot(src, kDefaultSlot, kControl, kUnbounded, 5);
+  const auto drain = b.addTransition("Drain", seconds(1));
+  b.addInput(guard, drain);
+  const auto t = b.addTransition("T", seconds(1));
+  b.addInput(guard, t, kDefaultSlot, 1, ArcKind::Inhibitor);  // allowed only while Guard < 1
+  b.addInput(src, t);
+  Kernel k(b.freeze(), {1.0, 1});
+  Recorder rec(k.net());
+  k.addObserver(&rec);
+  EXPECT_FALSE(k.enabled(t));
+  k.start();  // Drain takes one of the two guard tokens
+  EXPECT_FALSE(k.enabled(t));
+  k.step();   // Drain starts again and takes the second: now T is allowed,
+  EXPECT_TRUE(k.enabled(t));  // but it became enabled during the firing phase, so it waits
+  EXPECT_TRUE(rec.startsOf("T").empty());
+  k.step();
+  EXPECT_EQ(rec.startsOf("T"), (std::vector<std::int64_t>{2}));
+}
+
+TEST(NetKernel, InhibitorWeightIsAThreshold) {
+  NetBuilder b;
+  const auto g = b.addPlace("G");
+  b.setSlot(g, kDefaultSlot, kControl, kUnbounded, 2);
+  const auto t = b.addTransition("T");
+  b.addInput(g, t, kDefaultSlot, 3, ArcKind::Inhibitor);  // 2 < 3: allowed
+  Kernel k(b.freeze(), {1.0, 1});
+  EXPECT_TRUE(k.enabled(t));
+}
+
+TEST(NetKernel, ReserveKeepsRoomForAnOccurringTransition) {
+  // A and B both feed Out (capacity 1). A starts at 0 and occurs for 3 steps, holding the only
+  // room in reserve. Feeder gives B its input at step 1: B stays disabled though Out is empty.
+  NetBuilder b;
+  const auto a_in = b.addPlace("Ain");
+  const auto b_in = b.addPlace("Bin");
+  const auto seed = b.addPlace("Seed");
+  const auto out = b.addPlace("Out");
+  b.setSlot(a_in, kDefaultSlot, kControl, kUnbounded, 1);
+  b.setSlot(seed, kDefaultSlot, kControl, kUnbounded, 1);
+  b.setSlot(out, kDefaultSlot, kControl, 1, 0);
+  const auto ta = b.addTransition("A", seconds(3));
+  const auto tb = b.addTransition("B", seconds(1));
+  const auto feeder = b.addTransition("Feeder", seconds(1));
+  b.addInput(a_in, ta);
+  b.addOutput(ta, out);
+  b.addInput(b_in, tb);
+  b.addOutput(tb, out);
+  b.addInput(seed, feeder);
+  b.addOutput(feeder, b_in);
+  auto net = b.freeze();
+  Kernel k(net, {1.0, 1});
+  Recorder rec(*net);
+  k.addObserver(&rec);
+  k.start();
+  const auto out_ps = static_cast<PlaceSlotId>(net->findPlaceSlot(out, kDefaultSlot));
+  EXPECT_EQ(k.marking(out_ps), 0);
+  EXPECT_EQ(k.reserve(out_ps), 1);
+  k.step();
+  EXPECT_EQ(tokens(k, "Bin"), 1);  // B has its input now
+  EXPECT_EQ(k.marking(out_ps), 0);
+  EXPECT_FALSE(k.enabled(tb));     // but the room is promised to A
+  k.step();
+  k.step();  // A completes at step 3: the reserve becomes a token
+  EXPECT_EQ(k.marking(out_ps), 1);
+  EXPECT_EQ(k.reserve(out_ps), 0);
+  EXPECT_FALSE(k.enabled(tb));
+  EXPECT_TRUE(rec.startsOf("B").empty());
+}
+
+TEST(NetKernel, ReserveBlocksASecondWriterThatIsOtherwiseReady) {
+  NetBuilder b;
+  const auto in = b.addPlace("In");
+  const auto out = b.addPlace("Out");
+  b.setSlot(in, kDefaultSlot, kControl, kUnbounded, 2);
+  b.setSlot(out, kDefaultSlot, kControl, 1, 0);
+  const auto ta = b.addTransition("A", seconds(3));
+  const auto tb = b.addTransition("B", seconds(3));
+  b.addInput(in, ta);
+  b.addOutput(ta, out);
+  b.addInput(in, tb);
+  b.addOutput(tb, out);
+  Kernel k(b.freeze(), {1.0, 1});
+  EXPECT_TRUE(k.enabled(ta));
+  EXPECT_TRUE(k.enabled(tb));
+  k.start();
+  // A starts first (declaration order) and reserves Out; B, still having its input, loses
+  EXPECT_TRUE(k.occurring(ta));
+  EXPECT_FALSE(k.occurring(tb));
+  EXPECT_FALSE(k.enabled(tb));
+  EXPECT_EQ(tokens(k, "In"), 1);
+}
+
+TEST(NetKernel, SelfLoopOnAFullPlaceIsAllowed) {
+  NetBuilder b;
+  const auto p = b.addPlace("P");
+  b.setSlot(p, kDefaultSlot, kControl, 1, 1);
+  const auto t = b.addTransition("T", seconds(2));
+  b.addInput(p, t);
+  b.addOutput(t, p);
+  Kernel k(b.freeze(), {1.0, 1});
+  Recorder rec(k.net());
+  k.addObserver(&rec);
+  EXPECT_TRUE(k.enabled(t));  // it takes its input before it reserves its output
+  k.start();
+  for (int i = 0; i < 6; ++i) k.step();
+  EXPECT_EQ(rec.startsOf("T"), (std::vector<std::int64_t>{0, 2, 4, 6}));
+}
+
+TEST(NetKernel, HigherPriorityWinsAConflict) {
+  NetBuilder b;
+  const auto p = b.addPlace("P");
+  b.setSlot(p, kDefaultSlot, kControl, kUnbounded, 1);
+  const auto low = b.addTransition("Low", seconds(1), 0);
+  const auto high = b.addTransition("High", seconds(1), 5);  // declared later
+  b.addInput(p, low);
+  b.addInput(p, high);
+  Kernel k(b.freeze(), {1.0, 1});
+  k.start();
+  EXPECT_TRUE(k.occurring(high));
+  EXPECT_FALSE(k.occurring(low));
+}
+
+TEST(NetKernel, EqualPrioritiesGoByDeclarationOrderWhenEnabledTogether) {
+  NetBuilder b;
+  const auto p = b.addPlace("P");
+  b.setSlot(p, kDefaultSlot, kControl, kUnbounded, 1);
+  const auto first = b.addTransition("First");
+  const auto second = b.addTransition("Second");
+  b.addInput(p, second);
+  b.addInput(p, first);
+  Kernel k(b.freeze(), {1.0, 1});
+  k.start();
+  EXPECT_TRUE(k.occurring(first));
+  EXPECT_FALSE(k.occurring(second));
+}
+
+TEST(NetKernel, FirstComeAmongEqualsEvenWhenDeclaredLater) {
+  // Shared holds one token that two transitions want. Early is declared last but became
+  // enabled one step before Late, so it goes first.
+  //  - Early needs Shared and room on Gate (capacity 1, full). Opener empties Gate at time 0,
+  //    during the firing phase, so Early becomes enabled then (it starts no earlier than step 1).
+  //  - Late needs Shared and Feed, which Feeder fills at step 1.
+  NetBuilder b;
+  const auto shared = b.addPlace("Shared");
+  const auto gate = b.addPlace("Gate");
+  const auto feed = b.addPlace("Feed");
+  const auto seed = b.addPlace("Seed");
+  const auto sink = b.addPlace("Sink");
+  b.setSlot(shared, kDefaultSlot, kControl, kUnbounded, 1);
+  b.setSlot(gate, kDefaultSlot, kControl, 1, 1);
+  b.setSlot(seed, kDefaultSlot, kControl, kUnbounded, 1);
+  const auto late = b.addTransition("Late");
+  const auto opener = b.addTransition("Opener", seconds(5));
+  const auto feeder = b.addTransition("Feeder", seconds(1));
+  const auto early = b.addTransition("Early");
+  b.addInput(shared, late);
+  b.addInput(feed, late);
+  b.addInput(gate, opener);
+  b.addOutput(opener, sink);
+  b.addInput(seed, feeder);
+  b.addOutput(feeder, feed);
+  b.addInput(shared, early);
+  b.addOutput(early, gate);
+  Kernel k(b.freeze(), {1.0, 1});
+  Recorder rec(k.net());
+  k.addObserver(&rec);
+  k.start();
+  EXPECT_TRUE(k.enabled(early));  // enabled at time 0, during firing: waits for the next step
+  k.step();
+  EXPECT_EQ(rec.startsOf("Early"), (std::vector<std::int64_t>{1}));
+  EXPECT_TRUE(rec.startsOf("Late").empty());
+}
+
+TEST(NetKernel, AtMostOneStartPerStepAndOneOccurrenceAtATime) {
+  NetBuilder b;
+  const auto p = b.addPlace("P");
+  const auto q = b.addPlace("Q");
+  b.setSlot(p, kDefaultSlot, kControl, kUnbounded, 5);
+  const auto t = b.addTransition("T", seconds(0.25));
+  b.addInput(p, t);
+  b.addOutput(t, q);
+  Kernel k(b.freeze(), {0.1, 1});
+  Recorder rec(k.net());
+  k.addObserver(&rec);
+  k.start();
+  while (!k.dead()) k.step();
+  // 0.25 s at dt 0.1 lasts ceil(2.5) = 3 steps; single server: one after the other
+  EXPECT_EQ(rec.startsOf("T"), (std::vector<std::int64_t>{0, 3, 6, 9, 12}));
+  EXPECT_EQ(tokens(k, "Q"), 5);
+  EXPECT_EQ(k.steps(), 15);
+}
+
+TEST(NetKernel, EffectiveDurationIsWholeStepsAndAtLeastOne) {
+  NetBuilder b;
+  b.addPlace("P");
+  Kernel k(b.freeze(), {0.1, 1});
+  EXPECT_EQ(k.durationSteps(0.0), 1);
+  EXPECT_EQ(k.durationSteps(0.05), 1);
+  EXPECT_EQ(k.durationSteps(0.1), 1);
+  EXPECT_EQ(k.durationSteps(0.3), 3);  // 0.3 / 0.1 is 2.9999999999999996 in doubles
+  EXPECT_EQ(k.durationSteps(0.7), 7);  // and 7.000000000000001
+  EXPECT_EQ(k.durationSteps(0.31), 4);
+  EXPECT_EQ(k.durationSteps(1e300), std::int64_t{1} << 60);
+}
+
+TEST(NetKernel, ZeroDurationStillTakesOneStep) {
+  NetBuilder b;
+  const auto p = b.addPlace("P");
+  const auto q = b.addPlace("Q");
+  b.setSlot(p, kDefaultSlot, kControl, kUnbounded, 1);
+  const auto t = b.addTransition("T", seconds(0));
+  b.addInput(p, t);
+  b.addOutput(t, q);
+  Kernel k(b.freeze(), {0.5, 1});
+  k.start();
+  EXPECT_EQ(tokens(k, "Q"), 0);
+  k.step();
+  EXPECT_EQ(tokens(k, "Q"), 1);
+  EXPECT_DOUBLE_EQ(k.now(), 0.5);
+}
+
+TEST(NetKernel, ProbabilityDrawsFromTheSeededGenerator) {
+  NetBuilder b;
+  const auto p = b.addPlace("P");
+  b.setSlot(p, kDefaultSlot, kControl, kUnbounded, 1);
+  const auto t = b.addTransition("T", seconds(1), 0, 0.3);
+  b.addInput(p, t);
+  b.addOutput(t, p);
+  Kernel k(b.freeze(), {1.0, 12345});
+  Recorder rec(k.net());
+  k.addObserver(&rec);
+  k.start();
+  for (int i = 0; i < 999; ++i) k.step();
+
+  // replay: T is enabled in every firing phase it is not occurring in; each time one draw
+  core::Random replay(12345);
+  std::vector<std::int64_t> expected;
+  std::int64_t busy_until = -1;
+  for (std::int64_t step = 0; step < 1000; ++step) {
+    if (step < busy_until) continue;
+    if (replay.uniform01() < 0.3) {
+      expected.push_back(step);
+      busy_until = step + 1;
+    }
+  }
+  EXPECT_EQ(rec.startsOf("T"), expected);
+  // T is enabled in every step (one-step duration), so it starts in a share p of them
+  const double n = static_cast<double>(expected.size());
+  EXPECT_NEAR(n / 1000.0, 0.3, 5 * std::sqrt(0.3 * 0.7 / 1000));
+}
+
+TEST(NetKernel, NodeTokensKeepTheirIdentityAndOrder) {
+  NetBuilder b;
+  const auto p = b.addPlace("P");
+  const auto q1 = b.addPlace("Q1");
+  const auto q2 = b.addPlace("Q2");
+  constexpr SlotId d0 = 24;
+  b.setNodes(p, d0, {"boxA", "boxB", "boxC", "boxD"});
+  b.setSlot(q1, d0, SlotKind::Node, kUnbounded, 0);
+  b.setSlot(q2, d0, SlotKind::Node, kUnbounded, 0);
+  const auto t = b.addTransition("T", seconds(1));
+  b.addInput(p, t, d0, 2);
+  b.addOutput(t, q1, d0, 1);
+  b.addOutput(t, q2, d0, 1);
+  auto net = b.freeze();
+  Kernel k(net, {1.0, 1});
+  Recorder rec(*net);
+  k.addObserver(&rec);
+  k.start();
+  k.step();
+  k.step();
+  k.step();
+  auto names = [&](PlaceId place) {
+    std::vector<std::string> out;
+    for (auto ref : k.nodes(static_cast<PlaceSlotId>(net->findPlaceSlot(place, d0)))) {
+      out.push_back(net->nodeNames()[ref]);
+    }
+    return out;
+  };
+  EXPECT_EQ(names(q1), (std::vector<std::string>{"boxA", "boxC"}));
+  EXPECT_EQ(names(q2), (std::vector<std::string>{"boxB", "boxD"}));
+  EXPECT_TRUE(names(p).empty());
+  EXPECT_EQ(rec.events[1], "remove P.d0 x2 [0 1] @0");
+  EXPECT_EQ(rec.events[3], "deposit Q1.d0 x1 [0] @1");
+}
+
+TEST(NetKernel, DrawnDurationsFollowTheirLaw) {
+  NetBuilder b;
+  const auto p = b.addPlace("P");
+  b.setSlot(p, kDefaultSlot, kControl, kUnbounded, 1);
+  const auto t = b.addTransition("T", Duration{Duration::Law::Uniform, 2.0, 4.0, {}});
+  b.addInput(p, t);
+  b.addOutput(t, p);
+  Kernel k(b.freeze(), {0.01, 99});
+  Recorder rec(k.net());
+  k.addObserver(&rec);
+  k.start();
+  for (int i = 0; i < 300000; ++i) k.step();
+  const auto starts = rec.startsOf("T");
+  ASSERT_GT(starts.size(), 900u);
+  double sum = 0;
+  for (std::size_t i = 1; i < starts.size(); ++i) {
+    const auto gap = starts[i] - starts[i - 1];
+    EXPECT_GE(gap, 200);
+    EXPECT_LE(gap, 400);
+    sum += static_cast<double>(gap);
+  }
+  EXPECT_NEAR(sum / static_cast<double>(starts.size() - 1), 300.5, 5.0);  // mean of U(2,4) s, whole steps
+}
+
+TEST(NetKernel, DeadWhenNothingEnabledOrOccurring) {
+  auto net = figure31();
+  Kernel k(net, {1.0, 1});
+  EXPECT_FALSE(k.dead());
+  k.start();
+  EXPECT_EQ(k.occurringCount(), 1u);
+  k.step();
+  k.step();
+  EXPECT_TRUE(k.dead());
+  EXPECT_EQ(k.enabledCount(), 0u);
+}
+
+TEST(SortKeys, SortsLargeUnsortedInputByRadix) {
+  std::mt19937_64 gen(5);
+  for (std::size_t n : {0u, 1u, 100u, 300u, 10000u}) {
+    std::vector<std::uint64_t> keys(n), scratch;
+    for (auto& k : keys) k = (gen() % 4) << 32 | (gen() % 1000000);
+    auto expected = keys;
+    std::sort(expected.begin(), expected.end());
+    detail::sortKeys(keys, scratch);
+    EXPECT_EQ(keys, expected) << n;
+  }
+}
+
+}  // namespace
+}  // namespace gdpn::net
