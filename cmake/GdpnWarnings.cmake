@@ -2,7 +2,11 @@
 function(gdpn_warnings target)
   target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow
     -Wnon-virtual-dtor -Wold-style-cast -Wcast-align -Woverloaded-virtual
-    -Wconversion -Wsign-conversion -Wnull-dereference -Wdouble-promotion)
+    -Wconversion -Wsign-conversion -Wdouble-promotion)
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
+    # GCC 12 reports -Wrestrict inside std::string's operator+ at -O3 (GCC bug 105651)
+    target_compile_options(${target} PRIVATE -Wno-restrict)
+  endif()
   if(GDPN_WERROR)
     target_compile_options(${target} PRIVATE -Werror)
   endif()

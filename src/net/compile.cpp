@@ -223,6 +223,9 @@ class Compiler {
     for (const auto& w : a.weights) {
       if (w.value < 1) {
         diags_.error(w.loc, "arc weight must be at least 1, got " + std::to_string(w.value));
+      } else if (w.value > kMaxWeight) {
+        diags_.error(w.loc, "arc weight " + std::to_string(w.value) + " is too large (at most " +
+                                std::to_string(kMaxWeight) + ")");
       }
     }
     if (!from || !to) return;
@@ -405,20 +408,18 @@ class Compiler {
       const auto& s = *ft.spec;
       builder_.addTransition(ft.name, s.duration, s.priority, s.probability, s.loc);
     }
-    std::uint32_t arc_index = 0;
     for (const auto& a : arcs_) {
       for (const auto& w : weightsOf(*a.spec)) {
         const SlotKind kind = kind_of_(placeVertex(a.place, w.slot));
         if (a.output) {
-          builder_.addOutput(a.transition, a.place, w.slot, w.value, arc_index);
+          builder_.addOutput(a.transition, a.place, w.slot, static_cast<std::int32_t>(w.value));
         } else {
-          builder_.addInput(a.place, a.transition, w.slot, w.value, a.spec->kind, arc_index);
+          builder_.addInput(a.place, a.transition, w.slot, static_cast<std::int32_t>(w.value), a.spec->kind);
         }
         // slots made by arcs take the kind of their component
         const auto place = a.place;
         builder_.setSlot(place, w.slot, kind, capacityFor(place, w.slot), initialFor(place, w.slot));
       }
-      ++arc_index;
     }
   }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "gdpn/core/assert.h"
 #include "net/detail/sort_keys.h"
@@ -24,18 +25,28 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
   const Net& n = *net_;
   terms_ = n.terms().data();
 
-  // place slots: markings, capacities and node FIFOs
+  // place slots: markings, capacities, watcher ranges and node FIFOs
   const auto slots = n.placeSlots();
-  m_.resize(slots.size());
-  r_.assign(slots.size(), 0);
-  cap_.resize(slots.size());
-  fifo_of_.assign(slots.size(), -1);
+  slots_.resize(slots.size() + 1);
   const auto initial_nodes = n.initialNodes();
   for (std::size_t ps = 0; ps < slots.size(); ++ps) {
-    m_[ps] = slots[ps].initial;
-    cap_[ps] = slots[ps].capacity;
+    auto& st = slots_[ps];
+    st.m = slots[ps].initial;
+    st.r = 0;
+    st.capacity = slots[ps].capacity;
+    st.watch_begin = static_cast<std::uint32_t>(watch_.size());
+    const auto watchers = n.watchers(static_cast<PlaceSlotId>(ps));
+    st.watch_count = static_cast<std::uint32_t>(watchers.size());
+    for (std::size_t k = 0; k < watchers.size(); ++k) {
+      const Term& term = terms_[watchers[k]];
+      const Watch watch{term.transition, term.weight, term.take, term.kind, 1};
+      if (k == 0) st.first = watch;
+      else watch_.push_back(watch);
+    }
+    slots_[ps + 1].watch_begin = static_cast<std::uint32_t>(watch_.size());
+    st.fifo = -1;
     if (slots[ps].kind != SlotKind::Node) continue;
-    fifo_of_[ps] = static_cast<std::int32_t>(fifos_.size());
+    st.fifo = static_cast<std::int32_t>(fifos_.size());
     auto& fifo = fifos_.emplace_back();
     for (auto i = slots[ps].nodes_begin; i < slots[ps].nodes_end; ++i) fifo.push_back(initial_nodes[i]);
   }
@@ -43,39 +54,40 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
   // transitions: packed firing data, and the count of terms that do not hold
   const auto transitions = n.transitions();
   const std::size_t count = transitions.size();
-  hot_.resize(count);
-  unsat_.assign(count, 0);
-  enabled_step_.assign(count, 0);
-  considered_.assign(count, -1);
-  start_step_.assign(count, -1);
-  end_step_.assign(count, -1);
+  tr_.resize(count);
   for (TransitionId t = 0; t < count; ++t) {
-    const auto& tr = transitions[t];
-    auto& h = hot_[t];
-    h.terms_begin = tr.terms_begin;
-    h.inputs_end = tr.inputs_end;
-    h.conditions_end = tr.conditions_end;
-    h.terms_end = tr.terms_end;
-    h.rank = tr.priority_rank;
-    h.held = -1;
-    if (tr.node_slot_mask != 0) {
-      h.held = static_cast<std::int32_t>(held_.size());
+    const auto& spec = transitions[t];
+    auto& st = tr_[t];
+    st.terms_begin = spec.terms_begin;
+    st.inputs_end = spec.inputs_end;
+    st.conditions_end = spec.conditions_end;
+    st.terms_end = spec.terms_end;
+    st.rank = spec.priority_rank;
+    st.held = -1;
+    if (spec.node_slot_mask != 0) {
+      st.held = static_cast<std::int32_t>(held_.size());
       held_.emplace_back();
     }
-    h.fixed_steps = tr.duration.fixed() ? durationSteps(tr.duration.a) : -1;
-    h.probability = tr.probability;
+    st.unsat = 0;
+    const std::int64_t fixed = spec.duration.fixed() ? durationSteps(spec.duration.a) : -1;
+    st.fixed_steps = fixed <= std::numeric_limits<std::int32_t>::max() ? static_cast<std::int32_t>(fixed) : -1;
+    st.probability = spec.probability;
+    st.enabled_step = 0;
+    st.start_step = -1;
+    st.end_step = -1;
   }
-  holds_.assign(n.terms().size(), 1);
   for (PlaceSlotId ps = 0; ps < slots.size(); ++ps) {
-    for (TermId id : n.watchers(ps)) {
-      if (!holds(terms_[id])) {
-        holds_[id] = 0;
-        ++unsat_[terms_[id].transition];
+    auto init = [&](Watch& watch) {
+      if (!holds(slots_[ps], watch.kind, watch.weight, watch.take)) {
+        watch.holds = 0;
+        ++tr_[watch.transition].unsat;
       }
-    }
+    };
+    if (slots_[ps].watch_count > 0) init(slots_[ps].first);
+    for (auto w = slots_[ps].watch_begin; w < slots_[ps + 1].watch_begin; ++w) init(watch_[w]);
   }
   for (TransitionId t = 0; t < count; ++t) {
-    if (unsat_[t] == 0) markEnabled(t);
+    if (tr_[t].unsat == 0) markEnabled(t);
   }
   wheel_.resize(kWheelSize);
 }
@@ -93,54 +105,63 @@ std::int64_t Kernel::durationSteps(double seconds) const {
 std::int64_t Kernel::placeTokens(PlaceId p) const {
   const auto& place = net_->places()[p];
   std::int64_t total = 0;
-  for (auto ps = place.slots_begin; ps < place.slots_end; ++ps) total += m_[ps];
+  for (auto ps = place.slots_begin; ps < place.slots_end; ++ps) total += slots_[ps].m;
   return total;
 }
 
 std::vector<NodeRef> Kernel::nodes(PlaceSlotId ps) const {
-  if (fifo_of_[ps] < 0) return {};
-  const auto& fifo = fifos_[static_cast<std::size_t>(fifo_of_[ps])];
+  if (slots_[ps].fifo < 0) return {};
+  const auto& fifo = fifos_[static_cast<std::size_t>(slots_[ps].fifo)];
   return {fifo.begin(), fifo.end()};
 }
 
-bool Kernel::holds(const Term& term) const {
-  const std::int64_t m = m_[term.place_slot];
-  switch (term.kind) {
+bool Kernel::holds(const SlotState& st, TermKind kind, std::int64_t weight, std::int64_t take) {
+  switch (kind) {
     case TermKind::Input:
-    case TermKind::Test: return m >= term.weight;
-    case TermKind::Inhibitor: return m < term.weight;
-    case TermKind::Output: {
-      const std::int64_t cap = cap_[term.place_slot];
-      return cap == kUnbounded || cap - (m - term.take) - r_[term.place_slot] >= term.weight;
-    }
+    case TermKind::Test: return st.m >= weight;
+    case TermKind::Inhibitor: return st.m < weight;
+    case TermKind::Output: return st.capacity == kUnbounded || st.capacity - (st.m - take) - st.r >= weight;
   }
   return false;
 }
 
-void Kernel::update(PlaceSlotId ps) {
-  for (TermId id : net_->watchers(ps)) {
-    const Term& term = terms_[id];
-    const bool ok = holds(term);
-    if (ok == static_cast<bool>(holds_[id])) continue;
-    holds_[id] = ok;
-    const TransitionId t = term.transition;
-    if (ok) {
-      if (--unsat_[t] == 0) markEnabled(t);
-    } else if (unsat_[t]++ == 0) {
-      --enabled_count_;
-    }
+void Kernel::examine(const SlotState& st, Watch& watch) {
+  const bool ok = holds(st, watch.kind, watch.weight, watch.take);
+  if (ok == static_cast<bool>(watch.holds)) return;
+  watch.holds = ok;
+  const TransitionId t = watch.transition;
+  if (ok) {
+    if (--tr_[t].unsat == 0) markEnabled(t);
+  } else if (tr_[t].unsat++ == 0) {
+    --enabled_count_;
   }
+}
+
+void Kernel::update(PlaceSlotId ps) {
+  SlotState& st = slots_[ps];
+  if (st.watch_count == 0) return;
+  examine(st, st.first);
+  const auto end = slots_[ps + 1].watch_begin;
+  for (auto w = st.watch_begin; w < end; ++w) examine(st, watch_[w]);
+}
+
+// For big nets: the loops over completions and candidates know the transitions ahead of
+// them, so they ask for each one's state line a few items before it is needed.
+template <class Get>
+void Kernel::prefetchAhead(std::size_t i, std::size_t n, Get get) const {
+  constexpr std::size_t kAhead = 8;
+  if (i + kAhead < n) __builtin_prefetch(&tr_[get(i + kAhead)]);
 }
 
 void Kernel::markEnabled(TransitionId t) {
   ++enabled_count_;
-  enabled_step_[t] = step_;
-  const std::uint64_t key = (std::uint64_t{hot_[t].rank} << 32) | t;
+  tr_[t].enabled_step = step_;
+  const std::uint64_t key = (std::uint64_t{tr_[t].rank} << 32) | t;
   (in_firing_ ? late_ : fresh_).push_back(key);
 }
 
 std::int64_t Kernel::drawSteps(TransitionId t) {
-  if (hot_[t].fixed_steps >= 0) return hot_[t].fixed_steps;
+  if (tr_[t].fixed_steps >= 0) return tr_[t].fixed_steps;
   const Duration& d = net_->transitions()[t].duration;
   double seconds = 0.0;
   switch (d.law) {
@@ -161,76 +182,80 @@ std::int64_t Kernel::drawSteps(TransitionId t) {
 }
 
 void Kernel::begin(TransitionId t) {
-  const Hot& h = hot_[t];
+  TransitionState& tr = tr_[t];
   // the occurrence is a virtual unsatisfied term: t cannot start again until it completes
-  ++unsat_[t];
+  ++tr.unsat;
   --enabled_count_;
   ++occurring_count_;
-  start_step_[t] = step_;
+  ++start_count_;
+  tr.start_step = step_;
   const std::int64_t end = step_ + drawSteps(t);
-  end_step_[t] = end;
+  tr.end_step = end;
   wheel_[static_cast<std::size_t>(end) & (kWheelSize - 1)].push_back(t);
   for (auto* o : observers_) o->onStart(t, step_);
 
   // take the inputs (node tokens move into the transition, FIFO), then reserve the outputs
-  for (auto i = h.terms_begin; i < h.inputs_end; ++i) {
+  for (auto i = tr.terms_begin; i < tr.inputs_end; ++i) {
     const Term& term = terms_[i];
     const PlaceSlotId ps = term.place_slot;
-    m_[ps] -= term.weight;
-    if (h.held >= 0 && fifo_of_[ps] >= 0) {
-      auto& fifo = fifos_[static_cast<std::size_t>(fifo_of_[ps])];
-      auto& held = held_[static_cast<std::size_t>(h.held)];
-      std::vector<NodeRef> moved;
+    SlotState& st = slots_[ps];
+    st.m -= term.weight;
+    if (st.fifo >= 0) {
+      auto& fifo = fifos_[static_cast<std::size_t>(st.fifo)];
+      auto& held = held_[static_cast<std::size_t>(tr.held)];
+      moved_.clear();
       for (std::int64_t k = 0; k < term.weight; ++k) {
-        moved.push_back(fifo.front());
+        moved_.push_back(fifo.front());
         held.emplace_back(net_->placeSlots()[ps].slot, fifo.front());
         fifo.pop_front();
       }
-      for (auto* o : observers_) o->onRemove(ps, term.weight, moved, step_);
+      for (auto* o : observers_) o->onRemove(ps, term.weight, moved_, step_);
     } else {
       for (auto* o : observers_) o->onRemove(ps, term.weight, {}, step_);
     }
     update(ps);
   }
-  for (auto i = h.conditions_end; i < h.terms_end; ++i) {
+  for (auto i = tr.conditions_end; i < tr.terms_end; ++i) {
     const Term& term = terms_[i];
-    r_[term.place_slot] += term.weight;
-    if (cap_[term.place_slot] != kUnbounded) update(term.place_slot);
+    SlotState& st = slots_[term.place_slot];
+    st.r += term.weight;
+    if (st.capacity != kUnbounded) update(term.place_slot);
   }
 }
 
 void Kernel::finish(TransitionId t) {
-  const Hot& h = hot_[t];
+  TransitionState& tr = tr_[t];
   for (auto* o : observers_) o->onComplete(t, step_);
-  for (auto i = h.conditions_end; i < h.terms_end; ++i) {
+  for (auto i = tr.conditions_end; i < tr.terms_end; ++i) {
     const Term& term = terms_[i];
     const PlaceSlotId ps = term.place_slot;
-    r_[ps] -= term.weight;
-    m_[ps] += term.weight;
-    if (h.held >= 0 && fifo_of_[ps] >= 0) {
+    SlotState& st = slots_[ps];
+    st.r -= term.weight;
+    st.m += term.weight;
+    if (st.fifo >= 0) {
       // node tokens leave in the order they were taken, per slot
-      auto& fifo = fifos_[static_cast<std::size_t>(fifo_of_[ps])];
-      auto& held = held_[static_cast<std::size_t>(h.held)];
+      auto& fifo = fifos_[static_cast<std::size_t>(st.fifo)];
+      auto& held = held_[static_cast<std::size_t>(tr.held)];
       const SlotId slot = net_->placeSlots()[ps].slot;
-      std::vector<NodeRef> moved;
-      for (auto it = held.begin(); it != held.end() && static_cast<std::int64_t>(moved.size()) < term.weight;) {
+      moved_.clear();
+      for (auto it = held.begin(); it != held.end() && static_cast<std::int64_t>(moved_.size()) < term.weight;) {
         if (it->first == slot) {
-          moved.push_back(it->second);
+          moved_.push_back(it->second);
           fifo.push_back(it->second);
           it = held.erase(it);
         } else {
           ++it;
         }
       }
-      for (auto* o : observers_) o->onDeposit(ps, term.weight, moved, step_);
+      for (auto* o : observers_) o->onDeposit(ps, term.weight, moved_, step_);
     } else {
       for (auto* o : observers_) o->onDeposit(ps, term.weight, {}, step_);
     }
     update(ps);
   }
-  end_step_[t] = -1;
+  tr.end_step = -1;
   --occurring_count_;
-  if (--unsat_[t] == 0) markEnabled(t);
+  if (--tr.unsat == 0) markEnabled(t);
 }
 
 void Kernel::completeOccurrences() {
@@ -239,8 +264,11 @@ void Kernel::completeOccurrences() {
   due_.swap(slot);
   slot.clear();
   // entries are in start order; ones due later (a full turn of the wheel away) stay
-  for (TransitionId t : due_) {
-    if (end_step_[t] == step_) {
+  const std::size_t n = due_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    prefetchAhead(i, n, [this](std::size_t k) { return due_[k]; });
+    const TransitionId t = due_[i];
+    if (tr_[t].end_step == step_) {
       finish(t);
     } else {
       slot.push_back(t);
@@ -267,33 +295,37 @@ void Kernel::fireEnabled() {
   in_firing_ = true;
   carry_next_.clear();
 
+  // merge the three into one ordered list of candidates: (rank, step enabled, index)
+  candidates_.clear();
   std::size_t ic = 0, il = 0, ifr = 0;
   const std::int64_t late_step = step_ - 1;
+  auto before = [](std::uint64_t k1, std::int64_t s1, std::uint64_t k2, std::int64_t s2) {
+    return rankOf(k1) != rankOf(k2) ? rankOf(k1) < rankOf(k2) : s1 != s2 ? s1 < s2 : k1 < k2;
+  };
   while (true) {
-    // pick the smallest (rank, step enabled, index) among the three heads
-    std::uint64_t key = 0;
-    std::int64_t when = 0;
+    Carry best{};
     int from = -1;
-    auto consider = [&](std::uint64_t k, std::int64_t s, int which) {
-      if (from < 0 || rankOf(k) < rankOf(key) || (rankOf(k) == rankOf(key) && (s < when || (s == when && k < key)))) {
-        key = k;
-        when = s;
-        from = which;
-      }
-    };
-    if (ic < carry_.size()) consider(carry_[ic].key, carry_[ic].step, 0);
-    if (il < late_now_.size()) consider(late_now_[il], late_step, 1);
-    if (ifr < fresh_.size()) consider(fresh_[ifr], step_, 2);
+    if (ic < carry_.size()) best = carry_[ic], from = 0;
+    if (il < late_now_.size() && (from < 0 || before(late_now_[il], late_step, best.key, best.step)))
+      best = {late_now_[il], late_step}, from = 1;
+    if (ifr < fresh_.size() && (from < 0 || before(fresh_[ifr], step_, best.key, best.step)))
+      best = {fresh_[ifr], step_}, from = 2;
     if (from < 0) break;
-    if (from == 0) ++ic;
-    else if (from == 1) ++il;
-    else ++ifr;
+    (from == 0 ? ic : from == 1 ? il : ifr)++;
+    candidates_.push_back(best);
+  }
 
+  const std::size_t n = candidates_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    prefetchAhead(i, n, [this](std::size_t k) { return indexOf(candidates_[k].key); });
+    const auto [key, when] = candidates_[i];
     const TransitionId t = indexOf(key);
-    // stale entries: disabled since, re-enabled later (a newer entry exists), or seen already
-    if (unsat_[t] != 0 || enabled_step_[t] != when || considered_[t] == step_) continue;
-    considered_[t] = step_;
-    const double p = hot_[t].probability;
+    TransitionState& tr = tr_[t];
+    // stale entries: disabled since, or re-enabled later (a newer entry exists); the same
+    // entry twice (enabled, disabled and enabled again in one phase) is adjacent in the order
+    if (tr.unsat != 0 || tr.enabled_step != when) continue;
+    if (i > 0 && candidates_[i - 1].key == key && candidates_[i - 1].step == when) continue;
+    const double p = tr.probability;
     if (p < 1.0 && !(random_.uniform01() < p)) {
       carry_next_.push_back({key, when});
       continue;
@@ -307,18 +339,15 @@ void Kernel::fireEnabled() {
 }
 
 std::size_t Kernel::memoryBytes() const {
-  std::size_t bytes = hot_.capacity() * sizeof(Hot) +
-                      (m_.capacity() + r_.capacity() + cap_.capacity()) * sizeof(std::int64_t) +
-                      fifo_of_.capacity() * sizeof(std::int32_t) + holds_.capacity() +
-                      unsat_.capacity() * sizeof(std::uint32_t) +
-                      (enabled_step_.capacity() + considered_.capacity() + start_step_.capacity() +
-                       end_step_.capacity()) * sizeof(std::int64_t) +
+  std::size_t bytes = tr_.capacity() * sizeof(TransitionState) + slots_.capacity() * sizeof(SlotState) +
+                      watch_.capacity() * sizeof(Watch) +
                       (fresh_.capacity() + late_.capacity() + late_now_.capacity() + scratch_.capacity()) *
                           sizeof(std::uint64_t) +
-                      (carry_.capacity() + carry_next_.capacity()) * sizeof(Carry) +
-                      wheel_.capacity() * sizeof(std::vector<TransitionId>);
+                      (carry_.capacity() + carry_next_.capacity() + candidates_.capacity()) * sizeof(Carry) +
+                      wheel_.capacity() * sizeof(std::vector<TransitionId>) + due_.capacity() * sizeof(TransitionId);
   for (const auto& w : wheel_) bytes += w.capacity() * sizeof(TransitionId);
   for (const auto& f : fifos_) bytes += sizeof(f) + f.size() * sizeof(NodeRef);
+  for (const auto& h : held_) bytes += sizeof(h) + h.capacity() * sizeof(h[0]);
   return bytes;
 }
 

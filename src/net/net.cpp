@@ -99,19 +99,18 @@ TransitionId NetBuilder::addTransition(std::string name, Duration duration, std:
   return static_cast<TransitionId>(transitions_.size() - 1);
 }
 
-void NetBuilder::addInput(PlaceId place, TransitionId transition, SlotId slot, std::int64_t weight,
-                          ArcKind kind, std::uint32_t arc) {
+void NetBuilder::addInput(PlaceId place, TransitionId transition, SlotId slot, std::int32_t weight,
+                          ArcKind kind) {
   slotOf(place, slot);
   const TermKind tk = kind == ArcKind::Normal ? TermKind::Input
                       : kind == ArcKind::Test ? TermKind::Test
                                               : TermKind::Inhibitor;
-  arcs_.push_back({place, transition, slot, tk, weight, arc});
+  arcs_.push_back({place, transition, slot, tk, weight});
 }
 
-void NetBuilder::addOutput(TransitionId transition, PlaceId place, SlotId slot, std::int64_t weight,
-                           std::uint32_t arc) {
+void NetBuilder::addOutput(TransitionId transition, PlaceId place, SlotId slot, std::int32_t weight) {
   slotOf(place, slot);
-  arcs_.push_back({place, transition, slot, TermKind::Output, weight, arc});
+  arcs_.push_back({place, transition, slot, TermKind::Output, weight});
 }
 
 std::shared_ptr<const Net> NetBuilder::freeze() {
@@ -165,7 +164,6 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
     term.place_slot = psOf(a.place, a.slot);
     term.kind = a.kind;
     term.weight = a.weight;
-    term.arc = a.arc;
     net->terms_.push_back(term);
   }
 

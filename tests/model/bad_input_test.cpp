@@ -50,8 +50,8 @@ TEST_P(BadModel, ReportsTheMistakeAtItsLocation) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Files, BadModel, ::testing::ValuesIn(badFiles()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                           std::string name = fs::path(info.param).filename().string();
+                         [](const ::testing::TestParamInfo<std::string>& param) {
+                           std::string name = fs::path(param.param).filename().string();
                            name = name.substr(0, name.find('.'));
                            return name;
                          });

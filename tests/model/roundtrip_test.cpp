@@ -41,8 +41,8 @@ TEST_P(RoundTrip, SaveThenLoadGivesTheSameModelAndTheSameBytes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, RoundTrip, ::testing::ValuesIn(goodModels()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                           std::string name = fs::path(info.param).filename().string();
+                         [](const ::testing::TestParamInfo<std::string>& param) {
+                           std::string name = fs::path(param.param).filename().string();
                            return name.substr(0, name.find('.'));
                          });
 

@@ -63,8 +63,12 @@ TEST(Run, ProducerConsumerSettlesToTheConsumersCycle) {
   EXPECT_DOUBLE_EQ(consume.max_cycle, 1.5);
   EXPECT_DOUBLE_EQ(consume.min_cycle, 1.5);
   for (const auto& p : r.places) {
-    if (p.name == "main/buffer") EXPECT_EQ(p.max_tokens, 3);
-    if (p.name == "main/consumed") EXPECT_EQ(p.final_tokens, 39);
+    if (p.name == "main/buffer") {
+      EXPECT_EQ(p.max_tokens, 3);
+    }
+    if (p.name == "main/consumed") {
+      EXPECT_EQ(p.final_tokens, 39);
+    }
   }
 }
 

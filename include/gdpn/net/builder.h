@@ -27,10 +27,10 @@ class NetBuilder {
                              double probability = 1.0, SourceLoc loc = {});
   /// Adds an input arc term: place -> transition at `slot`.
   void addInput(PlaceId place, TransitionId transition, SlotId slot = kDefaultSlot,
-                std::int64_t weight = 1, ArcKind kind = ArcKind::Normal, std::uint32_t arc = 0);
+                std::int32_t weight = 1, ArcKind kind = ArcKind::Normal);
   /// Adds an output arc term: transition -> place at `slot`.
   void addOutput(TransitionId transition, PlaceId place, SlotId slot = kDefaultSlot,
-                 std::int64_t weight = 1, std::uint32_t arc = 0);
+                 std::int32_t weight = 1);
   /// Number of places added so far.
   [[nodiscard]] std::size_t placeCount() const { return places_.size(); }
   /// Freezes everything into an immutable Net. The builder is left empty.
@@ -54,8 +54,7 @@ class NetBuilder {
     TransitionId transition;
     SlotId slot;
     TermKind kind;
-    std::int64_t weight;
-    std::uint32_t arc;
+    std::int32_t weight;
   };
   BuildSlot& slotOf(PlaceId place, SlotId slot);
 

@@ -53,23 +53,25 @@ class Kernel {
   [[nodiscard]] std::int64_t durationSteps(double seconds) const;
 
   /// Tokens on place slot `ps`.
-  [[nodiscard]] std::int64_t marking(PlaceSlotId ps) const { return m_[ps]; }
+  [[nodiscard]] std::int64_t marking(PlaceSlotId ps) const { return slots_[ps].m; }
   /// Capacity promised to occurring transitions on place slot `ps`.
-  [[nodiscard]] std::int64_t reserve(PlaceSlotId ps) const { return r_[ps]; }
+  [[nodiscard]] std::int64_t reserve(PlaceSlotId ps) const { return slots_[ps].r; }
   /// Tokens on all slots of place `p`.
   [[nodiscard]] std::int64_t placeTokens(PlaceId p) const;
   /// The node tokens on node slot `ps`, first to leave first (empty for control slots).
   [[nodiscard]] std::vector<NodeRef> nodes(PlaceSlotId ps) const;
   /// True when `t` may start now (all its terms hold and it is not occurring).
-  [[nodiscard]] bool enabled(TransitionId t) const { return unsat_[t] == 0; }
+  [[nodiscard]] bool enabled(TransitionId t) const { return tr_[t].unsat == 0; }
   /// True while `t` is occurring.
-  [[nodiscard]] bool occurring(TransitionId t) const { return end_step_[t] >= 0; }
+  [[nodiscard]] bool occurring(TransitionId t) const { return tr_[t].end_step >= 0; }
   /// Step at which the current occurrence of `t` started (only while occurring).
-  [[nodiscard]] std::int64_t startStep(TransitionId t) const { return start_step_[t]; }
+  [[nodiscard]] std::int64_t startStep(TransitionId t) const { return tr_[t].start_step; }
   /// Number of transitions occurring now.
   [[nodiscard]] std::size_t occurringCount() const { return occurring_count_; }
   /// Number of transitions enabled now.
   [[nodiscard]] std::size_t enabledCount() const { return enabled_count_; }
+  /// Occurrences started since construction.
+  [[nodiscard]] std::uint64_t startCount() const { return start_count_; }
   /// True when nothing occurs and nothing is enabled: without outside input the net is dead.
   [[nodiscard]] bool dead() const { return occurring_count_ == 0 && enabled_count_ == 0; }
   /// The model's random generator (all draws of a run come from it, in a fixed order).
@@ -80,20 +82,44 @@ class Kernel {
   [[nodiscard]] std::size_t memoryBytes() const;
 
  private:
-  struct Hot {  // what firing needs of a transition, packed
+  struct alignas(64) TransitionState {  // all a firing needs of one transition: one cache line
     std::uint32_t terms_begin, inputs_end, conditions_end, terms_end;
-    std::uint32_t rank;
-    std::int32_t held;         // index in held_, -1 when no node slot passes through
-    std::int64_t fixed_steps;  // -1 when the duration is drawn
+    std::uint32_t rank;           // priority rank, 0 highest
+    std::int32_t held;            // index in held_, -1 when no node slot passes through
+    std::uint32_t unsat;          // terms that do not hold, +1 while occurring
+    std::int32_t fixed_steps;     // -1 when the duration is drawn (or too long for 31 bits)
     double probability;
+    std::int64_t enabled_step;    // when unsat last became 0
+    std::int64_t start_step;      // current occurrence
+    std::int64_t end_step;        // -1 when not occurring
   };
+  static_assert(sizeof(TransitionState) == 64);
+  struct Watch {  // one term that watches a place slot
+    TransitionId transition;
+    std::int32_t weight;
+    std::int32_t take;
+    TermKind kind;
+    std::uint8_t holds;           // whether the term held when last examined
+  };
+  struct alignas(64) SlotState {  // one place slot: one cache line, with its first watcher
+    std::int64_t m, r, capacity;
+    std::uint32_t watch_begin;    // further watchers: watch_[watch_begin, next slot's watch_begin)
+    std::int32_t fifo;            // index in fifos_, -1 for control slots
+    std::uint32_t watch_count;    // all watchers, the inline one included
+    Watch first;                  // the first watcher, when watch_count > 0
+  };
+  static_assert(sizeof(SlotState) == 64);
+  static_assert(sizeof(Watch) == 16);
   struct Carry {  // an enabled transition that did not start (probability), kept in order
     std::uint64_t key;
     std::int64_t step;
   };
 
-  bool holds(const Term& term) const;
+  static bool holds(const SlotState& st, TermKind kind, std::int64_t weight, std::int64_t take);
   void update(PlaceSlotId ps);
+  void examine(const SlotState& st, Watch& watch);
+  template <class Get>
+  void prefetchAhead(std::size_t i, std::size_t n, Get get) const;
   void markEnabled(TransitionId t);
   void begin(TransitionId t);
   void finish(TransitionId t);
@@ -106,20 +132,20 @@ class Kernel {
   std::int64_t step_ = 0;
   bool in_firing_ = false;
 
-  std::vector<Hot> hot_;
-  std::vector<std::int64_t> m_, r_, cap_;
-  std::vector<std::int32_t> fifo_of_;            // place slot -> index in fifos_, -1 for control
+  std::vector<TransitionState> tr_;
+  std::vector<SlotState> slots_;                  // one more than there are slots: a sentinel
+  std::vector<Watch> watch_;                      // grouped by place slot (SlotState::watch_begin)
   std::vector<std::deque<NodeRef>> fifos_;
-  std::vector<std::uint8_t> holds_;              // per term
-  std::vector<std::uint32_t> unsat_;             // per transition; +1 while occurring
-  std::vector<std::int64_t> enabled_step_, considered_, start_step_, end_step_;
   std::vector<std::vector<std::pair<SlotId, NodeRef>>> held_;  // node tokens inside a transition
   std::size_t occurring_count_ = 0, enabled_count_ = 0;
+  std::uint64_t start_count_ = 0;
 
   std::vector<std::uint64_t> fresh_, late_, late_now_, scratch_;  // keys: rank << 32 | t
   std::vector<Carry> carry_, carry_next_;
+  std::vector<Carry> candidates_;  // one firing phase's candidates, in order
   std::vector<std::vector<TransitionId>> wheel_;  // completions, by end step modulo its size
   std::vector<TransitionId> due_;
+  std::vector<NodeRef> moved_;  // node tokens of one event, reused
   std::vector<NetObserver*> observers_;
 };
 

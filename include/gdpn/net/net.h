@@ -34,14 +34,16 @@ enum class TermKind : std::uint8_t {
   Output,     ///< needs room for `weight` tokens, deposits them on completion
 };
 
-/// One (arc, slot) pair: the unit of incremental enabling.
+/// The largest arc weight, tokens (weights are 32-bit to keep terms small).
+inline constexpr std::int64_t kMaxWeight = std::numeric_limits<std::int32_t>::max();
+
+/// One (arc, slot) pair: the unit of incremental enabling. 20 bytes.
 struct Term {
   TransitionId transition = 0;  ///< the arc's transition
   PlaceSlotId place_slot = 0;   ///< the arc's place, at this slot
-  TermKind kind = TermKind::Input;
-  std::int64_t weight = 1;      ///< tokens
-  std::int64_t take = 0;        ///< for outputs: what the transition itself takes from this place slot
-  std::uint32_t arc = 0;        ///< index of the arc in declaration order (for messages)
+  std::int32_t weight = 1;      ///< tokens, 1..kMaxWeight
+  std::int32_t take = 0;        ///< for outputs: what the transition itself takes from this place slot
+  TermKind kind = TermKind::Input;  ///< what the term asks of its place slot
 };
 
 /// One slot of one place.
