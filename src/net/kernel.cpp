@@ -200,19 +200,17 @@ void Kernel::begin(TransitionId t) {
     const PlaceSlotId ps = term.place_slot;
     SlotState& st = slots_[ps];
     st.m -= term.weight;
+    moved_.clear();
     if (st.fifo >= 0) {
       auto& fifo = fifos_[static_cast<std::size_t>(st.fifo)];
       auto& held = held_[static_cast<std::size_t>(tr.held)];
-      moved_.clear();
       for (std::int64_t k = 0; k < term.weight; ++k) {
         moved_.push_back(fifo.front());
         held.emplace_back(net_->placeSlots()[ps].slot, fifo.front());
         fifo.pop_front();
       }
-      for (auto* o : observers_) o->onRemove(ps, term.weight, moved_, step_);
-    } else {
-      for (auto* o : observers_) o->onRemove(ps, term.weight, {}, step_);
     }
+    for (auto* o : observers_) o->onRemove(ps, term.weight, moved_, step_);
     update(ps);
   }
   for (auto i = tr.conditions_end; i < tr.terms_end; ++i) {
@@ -232,12 +230,12 @@ void Kernel::finish(TransitionId t) {
     SlotState& st = slots_[ps];
     st.r -= term.weight;
     st.m += term.weight;
+    moved_.clear();
     if (st.fifo >= 0) {
       // node tokens leave in the order they were taken, per slot
       auto& fifo = fifos_[static_cast<std::size_t>(st.fifo)];
       auto& held = held_[static_cast<std::size_t>(tr.held)];
       const SlotId slot = net_->placeSlots()[ps].slot;
-      moved_.clear();
       for (auto it = held.begin(); it != held.end() && static_cast<std::int64_t>(moved_.size()) < term.weight;) {
         if (it->first == slot) {
           moved_.push_back(it->second);
@@ -247,10 +245,8 @@ void Kernel::finish(TransitionId t) {
           ++it;
         }
       }
-      for (auto* o : observers_) o->onDeposit(ps, term.weight, moved_, step_);
-    } else {
-      for (auto* o : observers_) o->onDeposit(ps, term.weight, {}, step_);
     }
+    for (auto* o : observers_) o->onDeposit(ps, term.weight, moved_, step_);
     update(ps);
   }
   tr.end_step = -1;
