@@ -2,6 +2,7 @@
 
 #include "model/yaml.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -26,9 +27,13 @@ const std::vector<std::string> kSettingsKeys = {"dt", "seed", "until"};
 const std::vector<std::string> kPageKeys = {"description", "places", "transitions", "arcs", "instances"};
 const std::vector<std::string> kPageTypeKeys = {"description", "references", "places", "transitions",
                                                 "arcs", "instances"};
-const std::vector<std::string> kPlaceKeys = {"description", "slots", "tokens", "capacity", "at"};
-const std::vector<std::string> kTransitionKeys = {"description", "duration", "priority", "probability", "at"};
-const std::vector<std::string> kArcKeys = {"from", "to", "kind", "weight"};
+const std::vector<std::string> kPlaceKeys = {"description", "slots", "tokens", "capacity", "on_deposit",
+                                             "on_remove", "at"};
+const std::vector<std::string> kTransitionKeys = {"description", "duration", "priority", "probability", "guard",
+                                                  "pre_fire", "in_fire", "post_fire", "at"};
+const std::vector<std::string> kArcKeys = {"from", "to", "kind", "weight", "predicate"};
+const std::vector<std::string> kScriptsKeys = {"globals"};
+const std::vector<std::string> kScriptFileKeys = {"file", "function"};
 const std::vector<std::string> kInstanceKeys = {"type", "at"};
 const std::vector<std::string> kLaws = {"uniform", "normal", "exponential"};
 const std::vector<std::string> kArcKinds = {"normal", "test", "inhibitor"};
@@ -47,7 +52,8 @@ bool isNodePath(const std::string& s) {
 
 class ModelReader {
  public:
-  ModelReader(const std::string& file, Diagnostics& diags) : r_(file, diags) {}
+  ModelReader(const std::string& file, const std::string& text, Diagnostics& diags)
+      : r_(file, diags), file_(file), text_(text) {}
 
   std::optional<Model> read(const YAML::Node& root) {
     Model model;
@@ -69,7 +75,10 @@ class ModelReader {
       } else if (e.key == "scene") {
         model.scene = detail::emitYaml(e.value);
       } else if (e.key == "scripts") {
-        model.scripts = detail::emitYaml(e.value);
+        if (!r_.expectMap(e.value, "scripts")) continue;
+        for (const auto& g : r_.entries(e.value, "scripts", kScriptsKeys)) {
+          model.net.globals = readScript(g, "globals");
+        }
       }
     }
     if (r_.failed()) return std::nullopt;
@@ -77,6 +86,86 @@ class ModelReader {
   }
 
  private:
+  /// The text of line `line` (1-based) of the source.
+  std::string_view sourceLine(int line) const {
+    std::size_t begin = 0;
+    for (int l = 1; l < line && begin != std::string::npos; ++l) {
+      begin = text_.find('\n', begin);
+      if (begin != std::string::npos) ++begin;
+    }
+    if (begin == std::string::npos || begin > text_.size()) return {};
+    const auto end = text_.find('\n', begin);
+    return std::string_view(text_).substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+  }
+
+  /// A script: inline code (a YAML string) or {file: x.py, function: name}.
+  net::ScriptSpec readScript(const Entry& e, const std::string& what) {
+    net::ScriptSpec script;
+    script.loc = e.loc;
+    if (e.value.IsMap()) {
+      for (const auto& k : r_.entries(e.value, what, kScriptFileKeys)) {
+        if (auto v = r_.string(k.value, k.key)) (k.key == "file" ? script.file : script.function) = *v;
+      }
+      if (script.file.empty() || script.function.empty()) {
+        r_.error(e.loc, what + " in a file needs both 'file' and 'function'");
+      }
+      return script;
+    }
+    auto code = r_.string(e.value, what);
+    if (!code) return script;
+    script.code = *code;
+    if (script.code.find_first_not_of(" \t\r\n") == std::string::npos) {
+      r_.error(r_.loc(e.value, e.loc), what + " is empty");
+      script.code.clear();
+      return script;
+    }
+    // multi-line code ends with exactly one newline (what a '|' block gives back)
+    if (script.code.find('\n') != std::string::npos) {
+      script.code.erase(script.code.find_last_not_of('\n') + 1);
+      script.code += '\n';
+    }
+    // where the code's first character stands in the model file, for Python's line numbers
+    const SourceLoc at = r_.loc(e.value, e.loc);
+    const std::string_view line = sourceLine(at.line);
+    const std::size_t col = at.column > 0 ? static_cast<std::size_t>(at.column - 1) : 0;
+    const char first = col < line.size() ? line[col] : ' ';
+    script.loc = at;
+    if (first == '|' || first == '>') {
+      int l = at.line + 1;
+      std::string_view body = sourceLine(l);
+      while (body.find_first_not_of(" \t\r") == std::string_view::npos && l < at.line + 10000 && !body.empty()) {
+        body = sourceLine(++l);
+      }
+      const auto indent = body.find_first_not_of(' ');
+      script.indent = indent == std::string_view::npos ? 0 : static_cast<int>(indent);
+      script.loc = {file_, l, script.indent + 1};
+    } else if (first == '"' || first == '\'') {
+      script.indent = static_cast<int>(col) + 1;
+      script.loc.column = at.column + 1;
+    } else {
+      script.indent = static_cast<int>(col);
+    }
+    return script;
+  }
+
+  /// Per-slot scripts: a script (for slot a0, or for `default_slot`) or a map slot -> script.
+  template <class F>
+  void perSlotScript(const Entry& e, const std::string& what, net::SlotId default_slot, F&& f) {
+    const bool file_form = e.value.IsMap() && (e.value["file"] || e.value["function"]);
+    if (!e.value.IsMap() || file_form) {
+      f(default_slot, readScript(e, what));
+      return;
+    }
+    for (const auto& s : r_.entries(e.value, what, {})) {
+      auto slot = net::parseSlot(s.key);
+      if (!slot) {
+        r_.error(s.loc, "'" + s.key + "' is not a slot name (a0 ... d7)");
+        continue;
+      }
+      f(*slot, readScript(s, what));
+    }
+  }
+
   void readSettings(const YAML::Node& node, Settings& s) {
     if (!r_.expectMap(node, "settings")) return;
     for (const auto& e : r_.entries(node, "settings", kSettingsKeys)) {
@@ -223,6 +312,13 @@ class ModelReader {
         perSlot(e, "capacity", [&](net::SlotId slot, const YAML::Node& v, const SourceLoc& loc) {
           if (auto n = r_.integer(v, "capacity")) p.capacity.push_back({slot, *n, loc});
         });
+      } else if (e.key == "on_deposit" || e.key == "on_remove") {
+        perSlotScript(e, e.key, net::kDefaultSlot, [&](net::SlotId slot, net::ScriptSpec script) {
+          auto it = std::find_if(p.scripts.begin(), p.scripts.end(),
+                                 [&](const net::SlotScripts& ss) { return ss.slot == slot; });
+          if (it == p.scripts.end()) it = p.scripts.insert(p.scripts.end(), net::SlotScripts{slot, {}, {}});
+          (e.key == "on_deposit" ? it->on_deposit : it->on_remove) = std::move(script);
+        });
       } else if (e.key == "at") {
         p.position = readPos(e.value);
       }
@@ -286,6 +382,14 @@ class ModelReader {
       } else if (e.key == "probability") {
         t.probability_loc = r_.loc(e.value, e.loc);
         if (auto v = r_.number(e.value, "probability")) t.probability = *v;
+      } else if (e.key == "guard") {
+        t.guard = readScript(e, "guard");
+      } else if (e.key == "pre_fire") {
+        t.pre_fire = readScript(e, "pre_fire");
+      } else if (e.key == "in_fire") {
+        t.in_fire = readScript(e, "in_fire");
+      } else if (e.key == "post_fire") {
+        t.post_fire = readScript(e, "post_fire");
       } else if (e.key == "at") {
         t.position = readPos(e.value);
       }
@@ -317,7 +421,9 @@ class ModelReader {
     }
     if (!r_.expectMap(node, "an arc")) return std::nullopt;
     bool has_from = false, has_to = false;
+    std::optional<Entry> predicate;
     for (const auto& e : r_.entries(node, "arc", kArcKeys)) {
+      if (e.key == "predicate") predicate = e;
       if (e.key == "from") {
         if (auto s = r_.string(e.value, "from")) a.from = *s, has_from = true;
         a.from_loc = r_.loc(e.value, e.loc);
@@ -337,6 +443,13 @@ class ModelReader {
           if (auto n = r_.integer(v, "weight")) a.weights.push_back({slot, *n, loc});
         });
       }
+    }
+    if (predicate) {
+      // a lone predicate applies to the arc's one weighted slot (a0 when it names none)
+      const net::SlotId only = a.weights.size() == 1 ? a.weights[0].slot : net::kDefaultSlot;
+      perSlotScript(*predicate, "predicate", only, [&](net::SlotId slot, net::ScriptSpec script) {
+        a.predicates.push_back({slot, std::move(script)});
+      });
     }
     if (!has_from) r_.error(a.loc, "arc has no 'from'");
     if (!has_to) r_.error(a.loc, "arc has no 'to'");
@@ -370,6 +483,8 @@ class ModelReader {
   }
 
   YamlReader r_;
+  std::string file_;
+  const std::string& text_;
 };
 
 }  // namespace
@@ -377,7 +492,7 @@ class ModelReader {
 std::optional<Model> parseModel(const std::string& text, const std::string& file, Diagnostics& diags) {
   auto root = detail::parseYaml(text, file, diags);
   if (!root) return std::nullopt;
-  auto model = ModelReader(file, diags).read(*root);
+  auto model = ModelReader(file, text, diags).read(*root);
   if (model) model->path = file;
   return model;
 }

@@ -38,27 +38,71 @@ void perSlot(YAML::Emitter& out, const char* key, const std::vector<net::SlotCou
   out << YAML::EndMap;
 }
 
+/// True when a '|' block gives `code` back byte for byte.
+bool literalSafe(const std::string& code) {
+  if (code.empty() || code.back() != '\n' || code.front() == ' ' || code.front() == '\n') return false;
+  std::size_t line_start = 0;
+  for (std::size_t i = 0; i < code.size(); ++i) {
+    const char c = code[i];
+    if (c == '\n') {
+      if (i > line_start && (code[i - 1] == ' ' || code[i - 1] == '\t')) return false;
+      line_start = i + 1;
+    } else if (static_cast<unsigned char>(c) < 0x20 && c != '\t') {
+      return false;
+    }
+  }
+  return true;
+}
+
+void writeScript(YAML::Emitter& out, const char* key, const net::ScriptSpec& script) {
+  if (script.empty()) return;
+  out << YAML::Key << key << YAML::Value;
+  if (!script.function.empty()) {
+    out << YAML::Flow << YAML::BeginMap << YAML::Key << "file" << YAML::Value << script.file << YAML::Key
+        << "function" << YAML::Value << script.function << YAML::EndMap;
+  } else if (literalSafe(script.code)) {
+    out << YAML::Literal << script.code;
+  } else {
+    out << YAML::DoubleQuoted << script.code;
+  }
+}
+
+void writeSlotScripts(YAML::Emitter& out, const char* key, const std::vector<net::SlotScripts>& scripts,
+                      net::ScriptSpec net::SlotScripts::*which) {
+  bool any = false;
+  for (const auto& s : scripts) any = any || !(s.*which).empty();
+  if (!any) return;
+  out << YAML::Key << key << YAML::Value << YAML::BeginMap;
+  for (const auto& s : scripts) writeScript(out, net::slotName(s.slot).c_str(), s.*which);
+  out << YAML::EndMap;
+}
+
+/// Constructs with scripts are written as block maps, so their code can stand in '|' blocks.
+YAML::EMITTER_MANIP styleFor(bool scripted) { return scripted ? YAML::Block : YAML::Flow; }
+
 void writePlace(YAML::Emitter& out, const net::PlaceSpec& p) {
-  out << YAML::Key << p.name << YAML::Value << YAML::Flow << YAML::BeginMap;
+  out << YAML::Key << p.name << YAML::Value << styleFor(!p.scripts.empty()) << YAML::BeginMap;
   description(out, p.description);
   if (!p.kinds.empty()) {
-    out << YAML::Key << "slots" << YAML::Value << YAML::BeginMap;
+    out << YAML::Key << "slots" << YAML::Value << YAML::Flow << YAML::BeginMap;
     for (const auto& k : p.kinds) out << YAML::Key << net::slotName(k.slot) << YAML::Value << net::slotKindName(k.kind);
     out << YAML::EndMap;
   }
   if (p.nodes.empty()) {
     perSlot(out, "tokens", p.tokens);
   } else {
-    out << YAML::Key << "tokens" << YAML::Value << YAML::BeginMap;
+    out << YAML::Key << "tokens" << YAML::Value << YAML::Flow << YAML::BeginMap;
     for (const auto& t : p.tokens) out << YAML::Key << net::slotName(t.slot) << YAML::Value << t.value;
     for (const auto& n : p.nodes) {
-      out << YAML::Key << net::slotName(n.slot) << YAML::Value << YAML::BeginSeq;
+      out << YAML::Key << net::slotName(n.slot) << YAML::Value << YAML::Flow << YAML::BeginSeq;
       for (const auto& name : n.nodes) out << name;
       out << YAML::EndSeq;
     }
     out << YAML::EndMap;
   }
   perSlot(out, "capacity", p.capacity);
+  writeSlotScripts(out, "on_deposit", p.scripts, &net::SlotScripts::on_deposit);
+  writeSlotScripts(out, "on_remove", p.scripts, &net::SlotScripts::on_remove);
   pos(out, p.position);
   out << YAML::EndMap;
 }
@@ -70,31 +114,42 @@ void writeDuration(YAML::Emitter& out, const net::Duration& d) {
   switch (d.law) {
     case Law::Fixed: out << formatDouble(d.a); break;
     case Law::Exponential:
-      out << YAML::BeginMap << YAML::Key << "exponential" << YAML::Value << formatDouble(d.a) << YAML::EndMap;
+      out << YAML::Flow << YAML::BeginMap << YAML::Key << "exponential" << YAML::Value << formatDouble(d.a)
+          << YAML::EndMap;
       break;
     case Law::Uniform:
     case Law::Normal:
-      out << YAML::BeginMap << YAML::Key << (d.law == Law::Uniform ? "uniform" : "normal") << YAML::Value
-          << YAML::BeginSeq << formatDouble(d.a) << formatDouble(d.b) << YAML::EndSeq << YAML::EndMap;
+      out << YAML::Flow << YAML::BeginMap << YAML::Key << (d.law == Law::Uniform ? "uniform" : "normal")
+          << YAML::Value << YAML::BeginSeq << formatDouble(d.a) << formatDouble(d.b) << YAML::EndSeq << YAML::EndMap;
       break;
   }
 }
 
 void writeTransition(YAML::Emitter& out, const net::TransitionSpec& t) {
-  out << YAML::Key << t.name << YAML::Value << YAML::Flow << YAML::BeginMap;
+  out << YAML::Key << t.name << YAML::Value << styleFor(t.scripted()) << YAML::BeginMap;
   description(out, t.description);
   writeDuration(out, t.duration);
   if (t.priority != 0) out << YAML::Key << "priority" << YAML::Value << t.priority;
   if (t.probability != 1.0) out << YAML::Key << "probability" << YAML::Value << formatDouble(t.probability);
+  writeScript(out, "guard", t.guard);
+  writeScript(out, "pre_fire", t.pre_fire);
+  writeScript(out, "in_fire", t.in_fire);
+  writeScript(out, "post_fire", t.post_fire);
   pos(out, t.position);
   out << YAML::EndMap;
 }
 
 void writeArc(YAML::Emitter& out, const net::ArcSpec& a) {
-  out << YAML::Flow << YAML::BeginMap << YAML::Key << "from" << YAML::Value << a.from << YAML::Key << "to"
+  out << styleFor(!a.predicates.empty()) << YAML::BeginMap << YAML::Key << "from" << YAML::Value << a.from
+      << YAML::Key << "to"
       << YAML::Value << a.to;
   if (a.kind != net::ArcKind::Normal) out << YAML::Key << "kind" << YAML::Value << net::arcKindName(a.kind);
   perSlot(out, "weight", a.weights);
+  if (!a.predicates.empty()) {
+    out << YAML::Key << "predicate" << YAML::Value << YAML::BeginMap;
+    for (const auto& p : a.predicates) writeScript(out, net::slotName(p.slot).c_str(), p.expression);
+    out << YAML::EndMap;
+  }
   out << YAML::EndMap;
 }
 
@@ -165,7 +220,11 @@ std::string writeModel(const Model& model) {
     out << YAML::EndMap;
   }
   writeKept(out, "scene", model.scene);
-  writeKept(out, "scripts", model.scripts);
+  if (!model.net.globals.empty()) {
+    out << YAML::Key << "scripts" << YAML::Value << YAML::BeginMap;
+    writeScript(out, "globals", model.net.globals);
+    out << YAML::EndMap;
+  }
   out << YAML::EndMap;
   return std::string(out.c_str()) + "\n";
 }

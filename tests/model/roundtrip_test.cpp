@@ -46,12 +46,12 @@ INSTANTIATE_TEST_SUITE_P(Models, RoundTrip, ::testing::ValuesIn(goodModels()),
                            return name.substr(0, name.find('.'));
                          });
 
-TEST(RoundTrip, KeepsSceneAndScriptsSections) {
+TEST(RoundTrip, KeepsSceneAndScripts) {
   core::Diagnostics diags;
   auto m = loadModel(std::string(GDPN_SOURCE_DIR) + "/tests/data/good/everything.gdpn.yaml", diags);
   ASSERT_TRUE(m) << diags.str();
   EXPECT_NE(m->scene.find("Cube"), std::string::npos);
-  EXPECT_NE(m->scripts.find("count = 0"), std::string::npos);
+  EXPECT_NE(m->net.globals.code.find("count = 0"), std::string::npos);
   const std::string text = writeModel(*m);
   EXPECT_NE(text.find("scene:"), std::string::npos);
   EXPECT_NE(text.find("count = 0"), std::string::npos);

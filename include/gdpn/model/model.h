@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// A model: settings, the net (pages and page types), and the scene and scripts sections,
+/// A model: settings, the net (pages, page types and their scripts), and the scene section,
 /// as read from and written to a `.gdpn.yaml` file (docs/format.md).
 
 #include <cstdint>
@@ -29,12 +29,11 @@ struct Model {
   Settings settings;         ///< run settings
   net::NetSpec net;          ///< pages and page types
   std::string scene;         ///< the `scene` section, kept as YAML text ("" when absent)
-  std::string scripts;       ///< the `scripts` section, kept as YAML text ("" when absent)
 
   /// Same content (the path and source locations are not compared).
   friend bool operator==(const Model& a, const Model& b) {
     return a.description == b.description && a.settings == b.settings && a.net == b.net &&
-           a.scene == b.scene && a.scripts == b.scripts;
+           a.scene == b.scene;
   }
 };
 

@@ -68,6 +68,37 @@ struct SlotDecl {
   }
 };
 
+/// A script attached to a construct. The net only carries it; the script layer compiles and
+/// runs it. Either inline code, or a function in a Python file beside the model.
+struct ScriptSpec {
+  std::string code;      ///< inline Python source (a statement block, or an expression for guards and predicates)
+  std::string file;      ///< a .py file, relative to the model's folder (file form)
+  std::string function;  ///< the function in that file (file form)
+  SourceLoc loc;         ///< where the code's first character is (inline) or where the script is named (file form)
+  int indent = 0;        ///< columns the code's lines are indented by in the model file (inline block form)
+
+  /// True when no script is attached.
+  [[nodiscard]] bool empty() const { return code.empty() && function.empty(); }
+  friend bool operator==(const ScriptSpec& x, const ScriptSpec& y) {
+    return x.code == y.code && x.file == y.file && x.function == y.function;
+  }
+};
+
+/// Scripts of one place slot.
+struct SlotScripts {
+  SlotId slot = kDefaultSlot;  ///< which slot
+  ScriptSpec on_deposit;       ///< runs per token deposited: `on_deposit(token)`
+  ScriptSpec on_remove;        ///< runs per token removed: `on_remove(token)`
+  friend bool operator==(const SlotScripts&, const SlotScripts&) = default;
+};
+
+/// A predicate of an arc on one node slot: which tokens are eligible.
+struct SlotPredicate {
+  SlotId slot = kDefaultSlot;  ///< which slot
+  ScriptSpec expression;       ///< a Python expression over `token` (and `self`, the transition)
+  friend bool operator==(const SlotPredicate&, const SlotPredicate&) = default;
+};
+
 /// A 2D position in the net editor (editor units, for the IDE and PNML graphics).
 using EditorPos = std::array<double, 2>;
 
@@ -80,11 +111,12 @@ struct PlaceSpec {
   std::vector<SlotCount> tokens;       ///< initial control tokens per slot
   std::vector<SlotNodes> nodes;        ///< initial node tokens per slot
   std::vector<SlotCount> capacity;     ///< capacity per slot (unbounded when absent)
+  std::vector<SlotScripts> scripts;    ///< per-slot scripts
   std::optional<EditorPos> position;   ///< where the editor draws it
   friend bool operator==(const PlaceSpec& x, const PlaceSpec& y) {
     return x.name == y.name && x.description == y.description && x.kinds == y.kinds &&
            x.tokens == y.tokens && x.nodes == y.nodes && x.capacity == y.capacity &&
-           x.position == y.position;
+           x.scripts == y.scripts && x.position == y.position;
   }
 };
 
@@ -97,10 +129,21 @@ struct TransitionSpec {
   std::int64_t priority = 0;          ///< higher starts first
   double probability = 1.0;           ///< chance to start in a step while enabled, in (0, 1]
   SourceLoc probability_loc;          ///< where the probability was written
+  ScriptSpec guard;                   ///< a Python expression; the transition may start only while it is true
+  ScriptSpec pre_fire;                ///< runs when an occurrence starts
+  ScriptSpec in_fire;                 ///< runs every step while occurring (self.elapsed, self.progress)
+  ScriptSpec post_fire;               ///< runs when an occurrence completes, before its deposits
   std::optional<EditorPos> position;  ///< where the editor draws it
+
+  /// True when any script is attached.
+  [[nodiscard]] bool scripted() const {
+    return !guard.empty() || !pre_fire.empty() || !in_fire.empty() || !post_fire.empty();
+  }
   friend bool operator==(const TransitionSpec& x, const TransitionSpec& y) {
     return x.name == y.name && x.description == y.description && x.duration == y.duration &&
-           x.priority == y.priority && x.probability == y.probability && x.position == y.position;
+           x.priority == y.priority && x.probability == y.probability && x.guard == y.guard &&
+           x.pre_fire == y.pre_fire && x.in_fire == y.in_fire && x.post_fire == y.post_fire &&
+           x.position == y.position;
   }
 };
 
@@ -120,11 +163,13 @@ struct ArcSpec {
   std::string to;                  ///< target: a transition, place or link name on the page
   ArcKind kind = ArcKind::Normal;  ///< normal, test or inhibitor
   std::vector<SlotCount> weights;  ///< per-slot weights; empty means a0 with weight 1
+  std::vector<SlotPredicate> predicates;  ///< per node slot: which tokens are eligible (input arcs)
   SourceLoc loc;                   ///< where the arc is declared
   SourceLoc from_loc;              ///< where `from` is written
   SourceLoc to_loc;                ///< where `to` is written
   friend bool operator==(const ArcSpec& x, const ArcSpec& y) {
-    return x.from == y.from && x.to == y.to && x.kind == y.kind && x.weights == y.weights;
+    return x.from == y.from && x.to == y.to && x.kind == y.kind && x.weights == y.weights &&
+           x.predicates == y.predicates;
   }
 };
 
@@ -170,6 +215,7 @@ struct PageSpec {
 struct NetSpec {
   std::vector<PageSpec> pages;       ///< top-level pages; names qualify their constructs
   std::vector<PageSpec> page_types;  ///< reusable pages, instantiated by name
+  ScriptSpec globals;                ///< model-wide script run once at load; its names are seen by every script
   friend bool operator==(const NetSpec&, const NetSpec&) = default;
 };
 
