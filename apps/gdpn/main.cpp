@@ -15,6 +15,7 @@
 #include "gdpn/model/report.h"
 #include "gdpn/model/simulation.h"
 #include "gdpn/net/compile.h"
+#include "gdpn/script/engine.h"
 
 namespace {
 
@@ -23,14 +24,18 @@ namespace model = gdpn::model;
 
 std::atomic<bool> g_interrupted{false};
 
-void onSigint(int) { g_interrupted.store(true); }
+void onSigint(int) {
+  g_interrupted.store(true);
+  gdpn::script::requestInterrupt();  // a script running now raises KeyboardInterrupt
+}
 
 /// Loads and compiles MODEL (file or folder), printing diagnostics; nullptr on error.
-std::unique_ptr<model::Simulation> open(const std::string& arg, std::optional<std::uint64_t> seed) {
+std::unique_ptr<model::Simulation> open(const std::string& arg, std::optional<std::uint64_t> seed,
+                                        double script_timeout_s) {
   Diagnostics diags;
   std::unique_ptr<model::Simulation> sim;
   if (auto path = model::resolveModelPath(arg, diags)) {
-    if (auto m = model::loadModel(*path, diags)) sim = model::Simulation::create(*m, diags, seed);
+    if (auto m = model::loadModel(*path, diags)) sim = model::Simulation::create(*m, diags, seed, script_timeout_s);
   }
   diags.print(std::cerr);
   if (!sim && diags.errorCount() > 1) std::cerr << diags.errorCount() << " errors\n";
@@ -43,7 +48,10 @@ int check(const std::string& arg) {
   std::optional<model::Model> m;
   if (path) m = model::loadModel(*path, diags);
   std::shared_ptr<const gdpn::net::Net> net;
+  std::unique_ptr<model::Simulation> sim;
   if (m) net = gdpn::net::compile(m->net, diags);
+  // scripts are checked too: compiled (syntax), their files and functions found, globals run
+  if (net && net->scripted()) sim = model::Simulation::create(*m, diags);
   diags.print(std::cerr);
   if (diags.hasErrors()) {
     std::cerr << diags.errorCount() << (diags.errorCount() == 1 ? " error\n" : " errors\n");
@@ -91,11 +99,12 @@ struct RunArgs {
   std::optional<std::uint64_t> seed;
   std::string trace;
   std::string report;
+  double script_timeout = 0.0;
   bool quiet = false;
 };
 
 int run(const RunArgs& a) {
-  auto sim = open(a.model, a.seed);
+  auto sim = open(a.model, a.seed, a.script_timeout);
   if (!sim) return 1;
   std::ofstream trace;
   if (!a.trace.empty()) {
@@ -123,7 +132,16 @@ int run(const RunArgs& a) {
     }
   }
   if (!a.quiet) model::printSummary(std::cout, report);
-  return outcome.reason == model::StopReason::Interrupted ? 130 : 0;
+  switch (outcome.reason) {
+    case model::StopReason::ScriptError:
+      std::cerr << outcome.message << (outcome.message.ends_with('\n') ? "" : "\n");
+      return 1;
+    case model::StopReason::Interrupted:
+      if (!outcome.message.empty()) std::cerr << outcome.message << '\n';
+      return 130;
+    default:
+      return 0;
+  }
 }
 
 }  // namespace
@@ -151,6 +169,9 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--seed", run_args.seed, "seed of the random generator (default: the model's seed)");
   run_cmd->add_option("--trace", run_args.trace, "write every event as JSON Lines to FILE.jsonl");
   run_cmd->add_option("--report", run_args.report, "write the figures as JSON to FILE.json");
+  run_cmd->add_option("--script-timeout", run_args.script_timeout,
+                      "stop the run when one script call runs longer than SECONDS")
+      ->check(CLI::PositiveNumber);
   run_cmd->add_flag("--quiet,-q", run_args.quiet, "print no summary and no progress");
 
   CLI11_PARSE(app, argc, argv);

@@ -101,14 +101,13 @@ class ModelReader {
   /// A script: inline code (a YAML string) or {file: x.py, function: name}.
   net::ScriptSpec readScript(const Entry& e, const std::string& what) {
     net::ScriptSpec script;
-    script.loc = e.loc;
+    script.loc = r_.loc(e.value, e.loc);
     if (e.value.IsMap()) {
       for (const auto& k : r_.entries(e.value, what, kScriptFileKeys)) {
         if (auto v = r_.string(k.value, k.key)) (k.key == "file" ? script.file : script.function) = *v;
       }
-      if (script.file.empty() || script.function.empty()) {
-        r_.error(e.loc, what + " in a file needs both 'file' and 'function'");
-      }
+      if (script.file.empty()) r_.error(e.loc, what + " in a file needs 'file'");
+      if (script.function.empty() && what != "globals") r_.error(e.loc, what + " in a file needs 'function'");
       return script;
     }
     auto code = r_.string(e.value, what);

@@ -55,6 +55,7 @@ std::string reportJson(const Report& report) {
   j["steps"] = report.outcome.steps;
   j["time"] = report.outcome.time;
   j["stopped"] = stopReasonName(report.outcome.reason);
+  if (!report.outcome.message.empty()) j["message"] = report.outcome.message;
   j["transitions"] = ordered_json::array();
   for (const auto& t : report.transitions) {
     j["transitions"].push_back({{"name", t.name},
@@ -97,6 +98,8 @@ void printSummary(std::ostream& out, const Report& report) {
       << " s, t = " << fixed(report.outcome.time, 3) << " s, seed " << report.seed;
   if (report.outcome.reason == StopReason::Dead) out << ", stopped: the net is dead (nothing enabled or occurring)";
   if (report.outcome.reason == StopReason::Interrupted) out << ", stopped: interrupted";
+  if (report.outcome.reason == StopReason::Stopped) out << ", stopped by a script: " << report.outcome.message;
+  if (report.outcome.reason == StopReason::ScriptError) out << ", stopped: a script failed";
   out << "\n\n";
 
   std::size_t w = 10;

@@ -57,9 +57,10 @@ bool literalSafe(const std::string& code) {
 void writeScript(YAML::Emitter& out, const char* key, const net::ScriptSpec& script) {
   if (script.empty()) return;
   out << YAML::Key << key << YAML::Value;
-  if (!script.function.empty()) {
-    out << YAML::Flow << YAML::BeginMap << YAML::Key << "file" << YAML::Value << script.file << YAML::Key
-        << "function" << YAML::Value << script.function << YAML::EndMap;
+  if (!script.file.empty()) {
+    out << YAML::Flow << YAML::BeginMap << YAML::Key << "file" << YAML::Value << script.file;
+    if (!script.function.empty()) out << YAML::Key << "function" << YAML::Value << script.function;
+    out << YAML::EndMap;
   } else if (literalSafe(script.code)) {
     out << YAML::Literal << script.code;
   } else {

@@ -1,6 +1,9 @@
 #include "gdpn/model/simulation.h"
 
 #include <cmath>
+#include <iostream>
+
+#include "gdpn/core/text.h"
 
 #include "gdpn/net/compile.h"
 
@@ -11,12 +14,14 @@ const char* stopReasonName(StopReason reason) {
     case StopReason::Until: return "until";
     case StopReason::Dead: return "dead";
     case StopReason::Interrupted: return "interrupted";
+    case StopReason::Stopped: return "stopped";
+    case StopReason::ScriptError: return "script error";
   }
   return "?";
 }
 
 std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnostics& diags,
-                                               std::optional<std::uint64_t> seed) {
+                                               std::optional<std::uint64_t> seed, double script_timeout_s) {
   auto net = net::compile(model.net, diags);
   if (!net) return nullptr;
   std::unique_ptr<Simulation> sim(new Simulation());
@@ -26,7 +31,40 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
   sim->kernel_ = std::make_unique<net::Kernel>(sim->net_, net::KernelSettings{model.settings.dt, sim->seed_});
   sim->stats_ = std::make_unique<net::StatsCollector>(*sim->net_);
   sim->kernel_->addObserver(sim->stats_.get());
+  if (sim->net_->scripted()) {
+    Simulation* self = sim.get();
+    script::EngineCallbacks callbacks;
+    callbacks.log = [self](const std::string& text) {
+      std::cerr << "[t=" << core::formatDouble(self->kernel_->now()) << "] " << text << '\n';
+      if (self->trace_) self->trace_->event(self->kernel_->steps(), "log", "\"text\":" + core::jsonQuote(text));
+    };
+    callbacks.node_name = [self](net::NodeRef r) { return self->nodeName(r); };
+    sim->engine_ = script::Engine::create(*sim->net_, *sim->kernel_, model.path, {script_timeout_s},
+                                          std::move(callbacks), diags);
+    if (!sim->engine_) return nullptr;
+    sim->kernel_->setHooks(sim->engine_.get());
+  }
   return sim;
+}
+
+Simulation::~Simulation() {
+  // the kernel must not call hooks of a dead engine
+  if (kernel_) kernel_->setHooks(nullptr);
+  engine_.reset();
+}
+
+std::optional<RunOutcome> Simulation::scriptHalt() const {
+  if (!engine_ || !engine_->halted()) return std::nullopt;
+  RunOutcome o;
+  o.steps = kernel_->steps();
+  o.time = kernel_->now();
+  o.message = engine_->message();
+  switch (engine_->halt()) {
+    case script::Halt::Stop: o.reason = StopReason::Stopped; break;
+    case script::Halt::Interrupted: o.reason = StopReason::Interrupted; break;
+    default: o.reason = StopReason::ScriptError; break;
+  }
+  return o;
 }
 
 std::string Simulation::nodeName(net::NodeRef ref) const {
@@ -35,6 +73,7 @@ std::string Simulation::nodeName(net::NodeRef ref) const {
 }
 
 void Simulation::traceTo(std::ostream& out) {
+  trace_out_ = &out;
   trace_ = std::make_unique<net::TraceWriter>(out, *net_, kernel_->dt(),
                                               [this](net::NodeRef r) { return nodeName(r); });
   kernel_->addObserver(trace_.get());
@@ -51,6 +90,8 @@ void Simulation::step() {
   // phases 1 and 2 (world, sensors) arrive with the plant
   kernel_->beginStep();
   kernel_->completeOccurrences();
+  // a script that failed stops the run at the end of its phase
+  if (engine_ && engine_->halted() && engine_->halt() != script::Halt::Stop) return;
   kernel_->fireEnabled();
 }
 
@@ -70,6 +111,10 @@ RunOutcome Simulation::run(const RunLimits& limits, const ProgressFn& progress,
   const std::int64_t first = kernel_->steps();
   const std::int64_t total = target >= 0 ? target - first : 0;
   while (target < 0 || kernel_->steps() < target) {
+    if (auto halt = scriptHalt()) {
+      outcome = *halt;
+      break;
+    }
     if (kernel_->dead()) {
       outcome.reason = StopReason::Dead;
       break;
@@ -81,7 +126,12 @@ RunOutcome Simulation::run(const RunLimits& limits, const ProgressFn& progress,
     step();
     if (progress && (kernel_->steps() & 4095) == 0) progress(kernel_->steps() - first, total);
   }
+  if (auto halt = scriptHalt(); halt && outcome.reason == StopReason::Until) outcome = *halt;
   if (progress) progress(kernel_->steps() - first, total);
+  if ((outcome.reason == StopReason::ScriptError || outcome.reason == StopReason::Interrupted) && trace_) {
+    trace_->event(kernel_->steps(), "error", "\"message\":" + core::jsonQuote(outcome.message));
+  }
+  if (trace_out_) trace_out_->flush();
   stats_->finish(kernel_->steps());
   outcome.steps = kernel_->steps();
   outcome.time = kernel_->now();

@@ -1,5 +1,6 @@
 #include "model/yaml_reader.h"
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <unordered_map>
@@ -35,6 +36,11 @@ std::optional<YAML::Node> parseYaml(const std::string& text, const std::string& 
 }
 
 std::optional<std::string> readFile(const std::string& path, core::Diagnostics& diags) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    diags.error({path, 0, 0}, "is a folder, not a model file");
+    return std::nullopt;
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     diags.error({path, 0, 0}, "cannot read the file");

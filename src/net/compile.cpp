@@ -47,6 +47,7 @@ class Compiler {
     if (diags_.hasErrors()) return nullptr;
     resolveKinds();
     checkBalance();
+    checkPredicates();
     if (diags_.hasErrors()) return nullptr;
     emit();
     return builder_.freeze();
@@ -228,8 +229,22 @@ class Compiler {
                                 std::to_string(kMaxWeight) + ")");
       }
     }
+    for (const auto& pred : a.predicates) {
+      bool carried = a.weights.empty() ? pred.slot == kDefaultSlot : false;
+      for (const auto& w : a.weights) carried = carried || w.slot == pred.slot;
+      if (!carried) {
+        diags_.error(pred.expression.loc, "predicate on slot " + slotName(pred.slot) +
+                                              ", which the arc does not carry");
+      }
+      if (a.kind == ArcKind::Inhibitor) {
+        diags_.error(pred.expression.loc, "a predicate belongs on a normal or test input arc, not an inhibitor");
+      }
+    }
     if (!from || !to) return;
     const bool from_t = *from == Local::What::Transition;
+    if (from_t && !a.predicates.empty()) {
+      diags_.error(a.predicates[0].expression.loc, "a predicate belongs on an input arc (place to transition)");
+    }
     const bool to_t = *to == Local::What::Transition;
     if (from_t == to_t) {
       diags_.error(a.loc, std::string("an arc joins a place and a transition, but '") + a.from + "' and '" +
@@ -360,6 +375,17 @@ class Compiler {
     };
   }
 
+  void checkPredicates() {
+    for (const auto& a : arcs_) {
+      for (const auto& pred : a.spec->predicates) {
+        if (kind_of_(placeVertex(a.place, pred.slot)) != SlotKind::Node) {
+          diags_.error(pred.expression.loc, "a predicate selects node tokens, but slot " + slotName(pred.slot) +
+                                                " of '" + places_[a.place].name + "' is a control slot");
+        }
+      }
+    }
+  }
+
   void checkBalance() {
     // per transition and node slot: tokens taken in must equal tokens put out
     std::map<std::pair<TransitionId, SlotId>, std::pair<std::int64_t, std::int64_t>> flow;
@@ -383,7 +409,15 @@ class Compiler {
 
   // ---- emit the checked, flattened net ----
 
+  /// The builder's index of `script`, added once however many instances share it.
+  std::int32_t scriptIndex(const ScriptSpec& script) {
+    auto [it, fresh] = script_ids_.try_emplace(&script, -1);
+    if (fresh) it->second = builder_.addScript(script);
+    return it->second;
+  }
+
   void emit() {
+    if (!spec_.globals.empty()) builder_.setGlobalsScript(scriptIndex(spec_.globals));
     for (PlaceId p = 0; p < places_.size(); ++p) {
       const auto& fp = places_[p];
       builder_.addPlace(fp.name, fp.spec->loc);
@@ -392,6 +426,7 @@ class Compiler {
       for (const auto& t : fp.spec->tokens) used |= 1u << t.slot;
       for (const auto& n : fp.spec->nodes) used |= 1u << n.slot;
       for (const auto& c : fp.spec->capacity) used |= 1u << c.slot;
+      for (const auto& sc : fp.spec->scripts) used |= 1u << sc.slot;
       for (int s = 0; s < kSlotCount; ++s) {
         if (!(used & (1u << s))) continue;
         const auto slot = static_cast<SlotId>(s);
@@ -402,11 +437,20 @@ class Compiler {
           for (const auto& node : n.nodes) qualified.push_back(fp.node_prefix + node);
           builder_.setNodes(p, slot, qualified);
         }
+        for (const auto& sc : fp.spec->scripts) {
+          if (sc.slot != slot) continue;
+          if (!sc.on_deposit.empty()) builder_.setSlotScript(p, slot, 0, scriptIndex(sc.on_deposit));
+          if (!sc.on_remove.empty()) builder_.setSlotScript(p, slot, 1, scriptIndex(sc.on_remove));
+        }
       }
     }
     for (const auto& ft : transitions_) {
       const auto& s = *ft.spec;
-      builder_.addTransition(ft.name, s.duration, s.priority, s.probability, s.loc);
+      const auto t = builder_.addTransition(ft.name, s.duration, s.priority, s.probability, s.loc);
+      const ScriptSpec* hooks[4] = {&s.guard, &s.pre_fire, &s.in_fire, &s.post_fire};
+      for (int k = 0; k < 4; ++k) {
+        if (!hooks[k]->empty()) builder_.setTransitionScript(t, k, scriptIndex(*hooks[k]));
+      }
     }
     for (const auto& a : arcs_) {
       for (const auto& w : weightsOf(*a.spec)) {
@@ -415,6 +459,9 @@ class Compiler {
           builder_.addOutput(a.transition, a.place, w.slot, static_cast<std::int32_t>(w.value));
         } else {
           builder_.addInput(a.place, a.transition, w.slot, static_cast<std::int32_t>(w.value), a.spec->kind);
+          for (const auto& pred : a.spec->predicates) {
+            if (pred.slot == w.slot) builder_.setLastPredicate(scriptIndex(pred.expression));
+          }
         }
         // slots made by arcs take the kind of their component
         const auto place = a.place;
@@ -444,6 +491,7 @@ class Compiler {
   std::vector<FlatArc> arcs_;
   std::vector<std::uint32_t> parent_;
   std::function<SlotKind(std::uint32_t)> kind_of_;
+  std::unordered_map<const ScriptSpec*, std::int32_t> script_ids_;
   NetBuilder builder_;
 };
 

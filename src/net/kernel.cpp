@@ -45,6 +45,8 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
     }
     slots_[ps + 1].watch_begin = static_cast<std::uint32_t>(watch_.size());
     st.fifo = -1;
+    st.scripts = slots[ps].scripts;
+    st.slot = slots[ps].slot;
     if (slots[ps].kind != SlotKind::Node) continue;
     st.fifo = static_cast<std::int32_t>(fifos_.size());
     auto& fifo = fifos_.emplace_back();
@@ -62,7 +64,10 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
     st.inputs_end = spec.inputs_end;
     st.conditions_end = spec.conditions_end;
     st.terms_end = spec.terms_end;
-    st.rank = spec.priority_rank;
+    // ranks beyond 2^24 - 1 (more distinct priorities than that) share the lowest rank
+    st.rank = std::min<std::uint32_t>(spec.priority_rank, (1u << 24) - 1) & 0xffffffu;
+    st.scripts = spec.scripts;
+    if ((spec.scripts & kInFire) && start_seq_.empty()) start_seq_.assign(count, 0);
     st.held = -1;
     if (spec.node_slot_mask != 0) {
       st.held = static_cast<std::int32_t>(held_.size());
@@ -181,6 +186,66 @@ std::int64_t Kernel::drawSteps(TransitionId t) {
   return durationSteps(seconds);
 }
 
+bool Kernel::selectTokens(TransitionId t) {
+  const TransitionState& tr = tr_[t];
+  bool any = false;
+  for (auto i = tr.terms_begin; i < tr.conditions_end; ++i) any = any || terms_[i].predicate;
+  chosen_.clear();
+  if (!any) return true;
+  if (hooks_->halted()) return false;
+  // per node input or test term, the first eligible tokens in FIFO order not already picked
+  chosen_.resize(tr.conditions_end - tr.terms_begin);
+  for (auto i = tr.terms_begin; i < tr.conditions_end; ++i) {
+    const Term& term = terms_[i];
+    const SlotState& st = slots_[term.place_slot];
+    if (term.kind == TermKind::Inhibitor || st.fifo < 0) continue;
+    const auto& fifo = fifos_[static_cast<std::size_t>(st.fifo)];
+    auto& picked = chosen_[i - tr.terms_begin];
+    for (std::size_t k = 0; k < fifo.size() && static_cast<std::int64_t>(picked.size()) < term.weight; ++k) {
+      bool taken = false;
+      for (auto j = tr.terms_begin; j < i && !taken; ++j) {
+        if (terms_[j].place_slot != term.place_slot) continue;
+        const auto& other = chosen_[j - tr.terms_begin];
+        taken = std::find(other.begin(), other.end(), k) != other.end();
+      }
+      if (taken) continue;
+      if (term.predicate && !hooks_->eligible(i, fifo[k])) {
+        if (hooks_->halted()) return false;
+        continue;
+      }
+      picked.push_back(k);
+    }
+    if (static_cast<std::int64_t>(picked.size()) < term.weight) {
+      chosen_.clear();
+      return false;
+    }
+  }
+  return true;
+}
+
+std::span<const std::pair<SlotId, NodeRef>> Kernel::held(TransitionId t) const {
+  if (tr_[t].held < 0) return {};
+  return held_[static_cast<std::size_t>(tr_[t].held)];
+}
+
+std::string Kernel::setMarking(PlaceSlotId ps, std::int64_t count) {
+  SlotState& st = slots_[ps];
+  if (st.fifo >= 0) return "a node slot's tokens are nodes, not a count";
+  if (count < 0) return "a marking cannot be negative";
+  if (st.capacity != kUnbounded && count + st.r > st.capacity) {
+    return "no room: capacity " + std::to_string(st.capacity) + ", reserved " + std::to_string(st.r);
+  }
+  const std::int64_t delta = count - st.m;
+  if (delta == 0) return {};
+  st.m = count;
+  for (auto* o : observers_) {
+    if (delta > 0) o->onDeposit(ps, delta, {}, step_);
+    else o->onRemove(ps, -delta, {}, step_);
+  }
+  update(ps);
+  return {};
+}
+
 void Kernel::begin(TransitionId t) {
   TransitionState& tr = tr_[t];
   // the occurrence is a virtual unsatisfied term: t cannot start again until it completes
@@ -192,6 +257,10 @@ void Kernel::begin(TransitionId t) {
   const std::int64_t end = step_ + drawSteps(t);
   tr.end_step = end;
   wheel_[static_cast<std::size_t>(end) & (kWheelSize - 1)].push_back(t);
+  if (tr.scripts & kInFire) {
+    start_seq_[t] = start_count_;
+    in_fire_.push_back(t);
+  }
   for (auto* o : observers_) o->onStart(t, step_);
 
   // take the inputs (node tokens move into the transition, FIFO), then reserve the outputs
@@ -204,13 +273,28 @@ void Kernel::begin(TransitionId t) {
     if (st.fifo >= 0) {
       auto& fifo = fifos_[static_cast<std::size_t>(st.fifo)];
       auto& held = held_[static_cast<std::size_t>(tr.held)];
-      for (std::int64_t k = 0; k < term.weight; ++k) {
-        moved_.push_back(fifo.front());
-        held.emplace_back(net_->placeSlots()[ps].slot, fifo.front());
-        fifo.pop_front();
+      const SlotId slot = st.slot;
+      if (!chosen_.empty()) {
+        // the tokens the predicates picked, in FIFO order
+        const auto& picked = chosen_[i - tr.terms_begin];
+        for (auto k : picked) moved_.push_back(fifo[k]);
+        for (auto k = picked.rbegin(); k != picked.rend(); ++k) fifo.erase(fifo.begin() + static_cast<std::ptrdiff_t>(*k));
+      } else {
+        for (std::int64_t k = 0; k < term.weight; ++k) {
+          moved_.push_back(fifo.front());
+          fifo.pop_front();
+        }
       }
+      for (NodeRef node : moved_) held.emplace_back(slot, node);
     }
     for (auto* o : observers_) o->onRemove(ps, term.weight, moved_, step_);
+    if ((st.scripts & kOnRemove) && hooks_) {
+      if (moved_.empty()) {
+        for (std::int64_t k = 0; k < term.weight && !hooks_->halted(); ++k) hooks_->onRemove(ps, nullptr);
+      } else {
+        for (std::size_t k = 0; k < moved_.size() && !hooks_->halted(); ++k) hooks_->onRemove(ps, &moved_[k]);
+      }
+    }
     update(ps);
   }
   for (auto i = tr.conditions_end; i < tr.terms_end; ++i) {
@@ -219,11 +303,14 @@ void Kernel::begin(TransitionId t) {
     st.r += term.weight;
     if (st.capacity != kUnbounded) update(term.place_slot);
   }
+  chosen_.clear();
+  if ((tr.scripts & kPreFire) && hooks_ && !hooks_->halted()) hooks_->preFire(t);
 }
 
 void Kernel::finish(TransitionId t) {
   TransitionState& tr = tr_[t];
   for (auto* o : observers_) o->onComplete(t, step_);
+  if ((tr.scripts & kPostFire) && hooks_ && !hooks_->halted()) hooks_->postFire(t);
   for (auto i = tr.conditions_end; i < tr.terms_end; ++i) {
     const Term& term = terms_[i];
     const PlaceSlotId ps = term.place_slot;
@@ -235,7 +322,7 @@ void Kernel::finish(TransitionId t) {
       // node tokens leave in the order they were taken, per slot
       auto& fifo = fifos_[static_cast<std::size_t>(st.fifo)];
       auto& held = held_[static_cast<std::size_t>(tr.held)];
-      const SlotId slot = net_->placeSlots()[ps].slot;
+      const SlotId slot = st.slot;
       for (auto it = held.begin(); it != held.end() && static_cast<std::int64_t>(moved_.size()) < term.weight;) {
         if (it->first == slot) {
           moved_.push_back(it->second);
@@ -247,6 +334,7 @@ void Kernel::finish(TransitionId t) {
       }
     }
     for (auto* o : observers_) o->onDeposit(ps, term.weight, moved_, step_);
+    if ((st.scripts & kOnDeposit) && hooks_) deposited(ps, st, term.weight);
     update(ps);
   }
   tr.end_step = -1;
@@ -254,23 +342,58 @@ void Kernel::finish(TransitionId t) {
   if (--tr.unsat == 0) markEnabled(t);
 }
 
+void Kernel::deposited(PlaceSlotId ps, const SlotState& st, std::int64_t count) {
+  if (st.fifo < 0) {
+    for (std::int64_t k = 0; k < count && !hooks_->halted(); ++k) hooks_->onDeposit(ps, nullptr);
+    return;
+  }
+  // moved_ is reused by nested events: copy the tokens first
+  const std::vector<NodeRef> tokens = moved_;
+  for (std::size_t k = 0; k < tokens.size() && !hooks_->halted(); ++k) hooks_->onDeposit(ps, &tokens[k]);
+}
+
 void Kernel::completeOccurrences() {
+  // the occurrences due now, in start order; ones due later (a full turn of the wheel away) stay
   auto& slot = wheel_[static_cast<std::size_t>(step_) & (kWheelSize - 1)];
-  if (slot.empty()) return;
-  due_.swap(slot);
-  slot.clear();
-  // entries are in start order; ones due later (a full turn of the wheel away) stay
-  const std::size_t n = due_.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    prefetchAhead(i, n, [this](std::size_t k) { return due_[k]; });
-    const TransitionId t = due_[i];
-    if (tr_[t].end_step == step_) {
-      finish(t);
+  due_.clear();
+  if (!slot.empty()) {
+    std::size_t kept = 0;
+    for (TransitionId t : slot) {
+      if (tr_[t].end_step == step_) due_.push_back(t);
+      else slot[kept++] = t;
+    }
+    slot.resize(kept);
+  }
+  if (in_fire_.empty()) {
+    const std::size_t n = due_.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      prefetchAhead(i, n, [this](std::size_t k) { return due_[k]; });
+      finish(due_[i]);
+    }
+    return;
+  }
+  // with in_fire scripts: every occurring transition that has one, and every one due, in the
+  // order they started; each runs in_fire, then completes if its time has come
+  in_fire_next_.clear();
+  std::size_t i = 0, j = 0;
+  while (i < due_.size() || j < in_fire_.size()) {
+    TransitionId t = 0;
+    if (j >= in_fire_.size() ||
+        (i < due_.size() && start_seq_.size() > due_[i] && start_seq_[due_[i]] < start_seq_[in_fire_[j]])) {
+      t = due_[i++];
     } else {
-      slot.push_back(t);
+      t = in_fire_[j++];
+      if (i < due_.size() && due_[i] == t) ++i;
+    }
+    const TransitionState& tr = tr_[t];
+    if ((tr.scripts & kInFire) && hooks_ && !hooks_->halted()) hooks_->inFire(t);
+    if (tr.end_step == step_) {
+      finish(t);
+    } else if (tr.scripts & kInFire) {
+      in_fire_next_.push_back(t);
     }
   }
-  due_.clear();
+  in_fire_.swap(in_fire_next_);
 }
 
 void Kernel::start() { fireEnabled(); }
@@ -321,6 +444,15 @@ void Kernel::fireEnabled() {
     // entry twice (enabled, disabled and enabled again in one phase) is adjacent in the order
     if (tr.unsat != 0 || tr.enabled_step != when) continue;
     if (i > 0 && candidates_[i - 1].key == key && candidates_[i - 1].step == when) continue;
+    // condition 5 and predicates: scripts that do not hold keep t waiting, still enabled
+    if ((tr.scripts & kGuard) && hooks_ && (hooks_->halted() || !hooks_->guard(t))) {
+      carry_next_.push_back({key, when});
+      continue;
+    }
+    if (tr.held >= 0 && hooks_ && !selectTokens(t)) {
+      carry_next_.push_back({key, when});
+      continue;
+    }
     const double p = tr.probability;
     if (p < 1.0 && !(random_.uniform01() < p)) {
       carry_next_.push_back({key, when});
@@ -344,6 +476,7 @@ std::size_t Kernel::memoryBytes() const {
   for (const auto& w : wheel_) bytes += w.capacity() * sizeof(TransitionId);
   for (const auto& f : fifos_) bytes += sizeof(f) + f.size() * sizeof(NodeRef);
   for (const auto& h : held_) bytes += sizeof(h) + h.capacity() * sizeof(h[0]);
+  bytes += start_seq_.capacity() * sizeof(std::uint64_t);
   return bytes;
 }
 

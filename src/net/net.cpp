@@ -99,6 +99,22 @@ TransitionId NetBuilder::addTransition(std::string name, Duration duration, std:
   return static_cast<TransitionId>(transitions_.size() - 1);
 }
 
+std::int32_t NetBuilder::addScript(ScriptSpec script) {
+  scripts_.push_back(std::move(script));
+  return static_cast<std::int32_t>(scripts_.size() - 1);
+}
+
+void NetBuilder::setTransitionScript(TransitionId t, int which, std::int32_t index) {
+  if (transition_scripts_.size() <= t) transition_scripts_.resize(t + 1, {-1, -1, -1, -1});
+  transition_scripts_[t][static_cast<std::size_t>(which)] = index;
+}
+
+void NetBuilder::setSlotScript(PlaceId place, SlotId slot, int which, std::int32_t index) {
+  slotOf(place, slot).scripts[static_cast<std::size_t>(which)] = index;
+}
+
+void NetBuilder::setLastPredicate(std::int32_t index) { arcs_.back().predicate = index; }
+
 void NetBuilder::addInput(PlaceId place, TransitionId transition, SlotId slot, std::int32_t weight,
                           ArcKind kind) {
   slotOf(place, slot);
@@ -136,6 +152,8 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
       ps.nodes_begin = static_cast<std::uint32_t>(net->initial_nodes_.size());
       net->initial_nodes_.insert(net->initial_nodes_.end(), s.nodes.begin(), s.nodes.end());
       ps.nodes_end = static_cast<std::uint32_t>(net->initial_nodes_.size());
+      ps.scripts = static_cast<std::uint8_t>((s.scripts[0] >= 0 ? kOnDeposit : 0) | (s.scripts[1] >= 0 ? kOnRemove : 0));
+      if (!scripts_.empty()) net->script_index_.slots.push_back(s.scripts);
       net->place_slots_.push_back(ps);
     }
     place.slots_end = static_cast<std::uint32_t>(net->place_slots_.size());
@@ -164,6 +182,8 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
     term.place_slot = psOf(a.place, a.slot);
     term.kind = a.kind;
     term.weight = a.weight;
+    term.predicate = a.predicate >= 0;
+    if (!scripts_.empty()) net->script_index_.predicates.push_back(a.predicate);
     net->terms_.push_back(term);
   }
 
@@ -188,6 +208,14 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
       }
     }
     priorities.push_back(tr.priority);
+    if (!scripts_.empty()) {
+      std::array<std::int32_t, 4> idx{-1, -1, -1, -1};
+      if (t < transition_scripts_.size()) idx = transition_scripts_[t];
+      net->script_index_.transitions.push_back(idx);
+      for (int k = 0; k < 4; ++k) {
+        if (idx[static_cast<std::size_t>(k)] >= 0) tr.scripts = static_cast<std::uint8_t>(tr.scripts | (1 << k));
+      }
+    }
   }
   std::sort(priorities.begin(), priorities.end(), std::greater<>());
   priorities.erase(std::unique(priorities.begin(), priorities.end()), priorities.end());
@@ -215,6 +243,8 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
   }
 
   net->transitions_ = std::move(transitions_);
+  net->scripts_ = std::move(scripts_);
+  net->globals_script_ = globals_script_;
   net->node_names_ = std::move(node_names_);
   net->place_index_.reserve(net->places_.size());
   for (PlaceId p = 0; p < net->places_.size(); ++p) net->place_index_.emplace(net->places_[p].name, p);

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "gdpn/model/model.h"
+#include "gdpn/model/simulation.h"
 #include "gdpn/net/compile.h"
 
 namespace gdpn::model {
@@ -24,10 +25,12 @@ std::vector<std::string> badFiles() {
   return files;
 }
 
-/// Loads and compiles `path`, returning all diagnostics.
+/// Loads and compiles `path` with its scripts, returning all diagnostics.
 core::Diagnostics diagnose(const std::string& path) {
   core::Diagnostics diags;
-  if (auto m = loadModel(path, diags)) net::compile(m->net, diags);
+  if (auto m = loadModel(path, diags)) {
+    if (auto net = net::compile(m->net, diags); net && net->scripted()) Simulation::create(*m, diags);
+  }
   return diags;
 }
 
@@ -103,6 +106,12 @@ TEST(BadInput, MissingFileIsAnErrorNotACrash) {
   core::Diagnostics diags;
   EXPECT_FALSE(loadModel("/nonexistent/x.gdpn.yaml", diags));
   EXPECT_EQ(diags.str(), "/nonexistent/x.gdpn.yaml: error: cannot read the file\n");
+}
+
+TEST(BadInput, AFolderIsNotAModelFile) {
+  core::Diagnostics diags;
+  EXPECT_FALSE(loadModel(GDPN_SOURCE_DIR, diags));
+  EXPECT_EQ(diags.str(), std::string(GDPN_SOURCE_DIR) + ": error: is a folder, not a model file\n");
 }
 
 TEST(BadInput, GarbageBytesAreAnErrorNotACrash) {

@@ -159,3 +159,47 @@ TEST(Cli, TheTwoCellLineFinishesEveryPart) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CliScripts, ScriptTimeoutStopsAnEndlessScript) {
+  const auto trace = temp("gdpn_endless_trace.jsonl");
+  const auto r = gdpn("run tests/data/good/endless_script.gdpn.yaml -q --script-timeout 0.3 --trace " + trace);
+  EXPECT_EQ(r.code, 1) << r.out;
+  // the loop is at line 11 or 12 when it is stopped
+  EXPECT_TRUE(r.out.find("endless_script.gdpn.yaml:11: error:") != std::string::npos ||
+              r.out.find("endless_script.gdpn.yaml:12: error:") != std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("error: pre_fire of transition 'main/spin' ran longer than the script timeout of 0.3 s"),
+            std::string::npos)
+      << r.out;
+  // the trace so far was flushed, with the error last
+  std::stringstream t;
+  t << std::ifstream(trace).rdbuf();
+  EXPECT_NE(t.str().find("\"ev\":\"log\",\"text\":\"spinning\""), std::string::npos) << t.str();
+  EXPECT_NE(t.str().find("\"ev\":\"error\""), std::string::npos) << t.str();
+  fs::remove(trace);
+}
+
+TEST(CliScripts, SigintStopsAnEndlessScript) {
+  // start the run in the background, interrupt it once the script is spinning
+  const std::string out = temp("gdpn_sigint.out");
+  const std::string cmd = std::string("cd '") + GDPN_SOURCE_DIR + "' && ('" + GDPN_CLI +
+                          "' run tests/data/good/endless_script.gdpn.yaml -q > '" + out +
+                          "' 2>&1 & pid=$!; sleep 1; kill -INT $pid; wait $pid; echo \"exit $?\" >> '" + out + "')";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  std::stringstream text;
+  text << std::ifstream(out).rdbuf();
+  EXPECT_NE(text.str().find("error: pre_fire of transition 'main/spin' was interrupted (Ctrl-C)"), std::string::npos)
+      << text.str();
+  EXPECT_NE(text.str().find("exit 130"), std::string::npos) << text.str();
+  fs::remove(out);
+}
+
+TEST(CliScripts, CheckReportsScriptSyntaxErrors) {
+  const auto r = gdpn("check tests/data/bad/script_syntax.gdpn.yaml");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find("script_syntax.gdpn.yaml:10:"), std::string::npos) << r.out;
+}
+
+}  // namespace

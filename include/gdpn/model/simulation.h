@@ -14,6 +14,7 @@
 #include "gdpn/net/kernel.h"
 #include "gdpn/net/stats.h"
 #include "gdpn/net/trace.h"
+#include "gdpn/script/engine.h"
 
 namespace gdpn::model {
 
@@ -29,9 +30,11 @@ enum class StopReason : std::uint8_t {
   Until,        ///< reached the end time or step count
   Dead,         ///< nothing enabled and nothing occurring
   Interrupted,  ///< stopped from outside (Ctrl-C)
+  Stopped,      ///< a script called sim.stop(reason)
+  ScriptError,  ///< a script raised an exception or ran past the script timeout
 };
 
-/// "until", "dead" or "interrupted".
+/// "until", "dead", "interrupted", "stopped" or "script error".
 const char* stopReasonName(StopReason reason);
 
 /// How a run ended.
@@ -39,6 +42,7 @@ struct RunOutcome {
   std::int64_t steps = 0;              ///< steps taken
   double time = 0.0;                   ///< seconds simulated
   StopReason reason = StopReason::Until;
+  std::string message;                 ///< for a script error: the located message and traceback; for a stop: the reason
 };
 
 /// Called now and then during a run with the steps done and the steps planned (0 if open).
@@ -47,10 +51,11 @@ using ProgressFn = std::function<void(std::int64_t done, std::int64_t total)>;
 /// A model made ready to run.
 class Simulation {
  public:
-  /// Compiles `model`; returns nullptr with diagnostics on any error. `seed` overrides the
-  /// model's seed.
+  /// Compiles `model` and its scripts; returns nullptr with diagnostics on any error. `seed`
+  /// overrides the model's seed; `script_timeout_s` (> 0) stops a script call that runs longer.
   static std::unique_ptr<Simulation> create(const Model& model, core::Diagnostics& diags,
-                                            std::optional<std::uint64_t> seed = {});
+                                            std::optional<std::uint64_t> seed = {}, double script_timeout_s = 0.0);
+  ~Simulation();
 
   /// Writes the trace (JSON Lines) to `out` from now on; call before start().
   void traceTo(std::ostream& out);
@@ -78,6 +83,9 @@ class Simulation {
   [[nodiscard]] std::string nodeName(net::NodeRef ref) const;
   /// True once start() has run.
   [[nodiscard]] bool started() const { return started_; }
+  /// Why the run must end now, if a script says so (an error, a timeout, an interrupt or
+  /// sim.stop); nullopt while scripts are content.
+  [[nodiscard]] std::optional<RunOutcome> scriptHalt() const;
 
  private:
   Simulation() = default;
@@ -86,6 +94,8 @@ class Simulation {
   std::unique_ptr<net::Kernel> kernel_;
   std::unique_ptr<net::StatsCollector> stats_;
   std::unique_ptr<net::TraceWriter> trace_;
+  std::ostream* trace_out_ = nullptr;
+  std::unique_ptr<script::Engine> engine_;
   std::uint64_t seed_ = 1;
   bool started_ = false;
 };

@@ -31,6 +31,16 @@ class NetBuilder {
   /// Adds an output arc term: transition -> place at `slot`.
   void addOutput(TransitionId transition, PlaceId place, SlotId slot = kDefaultSlot,
                  std::int32_t weight = 1);
+  /// Adds a script and returns its index for the set*Script calls.
+  std::int32_t addScript(ScriptSpec script);
+  /// Gives transition `t` script `index` as its guard (0), pre_fire (1), in_fire (2) or post_fire (3).
+  void setTransitionScript(TransitionId t, int which, std::int32_t index);
+  /// Gives slot `slot` of `place` script `index` as its on_deposit (0) or on_remove (1).
+  void setSlotScript(PlaceId place, SlotId slot, int which, std::int32_t index);
+  /// Gives the most recently added arc term a predicate, script `index`.
+  void setLastPredicate(std::int32_t index);
+  /// Marks script `index` as the model's globals.
+  void setGlobalsScript(std::int32_t index) { globals_script_ = index; }
   /// Number of places added so far.
   [[nodiscard]] std::size_t placeCount() const { return places_.size(); }
   /// Freezes everything into an immutable Net. The builder is left empty.
@@ -43,6 +53,7 @@ class NetBuilder {
     std::int64_t capacity = kUnbounded;
     std::int64_t initial = 0;
     std::vector<std::uint32_t> nodes;
+    std::array<std::int32_t, 2> scripts{-1, -1};
   };
   struct BuildPlace {
     std::string name;
@@ -55,6 +66,7 @@ class NetBuilder {
     SlotId slot;
     TermKind kind;
     std::int32_t weight;
+    std::int32_t predicate = -1;
   };
   BuildSlot& slotOf(PlaceId place, SlotId slot);
 
@@ -63,6 +75,9 @@ class NetBuilder {
   std::vector<BuildArc> arcs_;
   std::vector<std::string> node_names_;
   std::unordered_map<std::string, std::uint32_t> node_index_;
+  std::vector<ScriptSpec> scripts_;
+  std::vector<std::array<std::int32_t, 4>> transition_scripts_;
+  std::int32_t globals_script_ = -1;
 };
 
 }  // namespace gdpn::net

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "gdpn/core/random.h"
+#include "gdpn/net/hooks.h"
 #include "gdpn/net/net.h"
 #include "gdpn/net/observer.h"
 
@@ -31,6 +32,8 @@ class Kernel {
 
   /// Subscribes `observer` (not owned; it must outlive the kernel's use of it).
   void addObserver(NetObserver* observer);
+  /// Lets `hooks` run the net's scripts (not owned). Without hooks, scripts are not run.
+  void setHooks(ScriptHooks* hooks) { hooks_ = hooks; }
   /// Runs phase 4 (firing) once at time 0. Call once, before the first step().
   void start();
   /// One whole step for a net without a plant: advance the clock, complete, fire.
@@ -66,6 +69,14 @@ class Kernel {
   [[nodiscard]] bool occurring(TransitionId t) const { return tr_[t].end_step >= 0; }
   /// Step at which the current occurrence of `t` started (only while occurring).
   [[nodiscard]] std::int64_t startStep(TransitionId t) const { return tr_[t].start_step; }
+  /// Step at which the current occurrence of `t` completes (-1 when not occurring).
+  [[nodiscard]] std::int64_t endStep(TransitionId t) const { return tr_[t].end_step; }
+  /// The node tokens `t` holds while occurring, with their slots, in the order taken.
+  [[nodiscard]] std::span<const std::pair<SlotId, NodeRef>> held(TransitionId t) const;
+  /// Sets the marking of control slot `ps` to `count` (a script's `set`). Returns "" or why
+  /// not: a node slot, a negative count, or no room (count + reserve > capacity). Observers
+  /// see the change as a deposit or a removal; on_deposit/on_remove scripts do not run.
+  std::string setMarking(PlaceSlotId ps, std::int64_t count);
   /// Number of transitions occurring now.
   [[nodiscard]] std::size_t occurringCount() const { return occurring_count_; }
   /// Number of transitions enabled now.
@@ -84,7 +95,8 @@ class Kernel {
  private:
   struct alignas(64) TransitionState {  // all a firing needs of one transition: one cache line
     std::uint32_t terms_begin, inputs_end, conditions_end, terms_end;
-    std::uint32_t rank;           // priority rank, 0 highest
+    std::uint32_t rank : 24;      // priority rank, 0 highest
+    std::uint32_t scripts : 8;    // TransitionScript bits
     std::int32_t held;            // index in held_, -1 when no node slot passes through
     std::uint32_t unsat;          // terms that do not hold, +1 while occurring
     std::int32_t fixed_steps;     // -1 when the duration is drawn (or too long for 31 bits)
@@ -107,6 +119,8 @@ class Kernel {
     std::int32_t fifo;            // index in fifos_, -1 for control slots
     std::uint32_t watch_count;    // all watchers, the inline one included
     Watch first;                  // the first watcher, when watch_count > 0
+    std::uint8_t scripts;         // SlotScript bits
+    SlotId slot;                  // which slot of its place
   };
   static_assert(sizeof(SlotState) == 64);
   static_assert(sizeof(Watch) == 16);
@@ -121,7 +135,9 @@ class Kernel {
   template <class Get>
   void prefetchAhead(std::size_t i, std::size_t n, Get get) const;
   void markEnabled(TransitionId t);
+  bool selectTokens(TransitionId t);
   void begin(TransitionId t);
+  void deposited(PlaceSlotId ps, const SlotState& st, std::int64_t count);
   void finish(TransitionId t);
   std::int64_t drawSteps(TransitionId t);
 
@@ -146,6 +162,11 @@ class Kernel {
   std::vector<std::vector<TransitionId>> wheel_;  // completions, by end step modulo its size
   std::vector<TransitionId> due_;
   std::vector<NodeRef> moved_;  // node tokens of one event, reused
+  ScriptHooks* hooks_ = nullptr;
+  std::vector<std::uint64_t> start_seq_;        // per transition, when the net has in_fire scripts
+  std::vector<TransitionId> in_fire_;           // occurring transitions with in_fire, in start order
+  std::vector<TransitionId> in_fire_next_;
+  std::vector<std::vector<std::size_t>> chosen_;  // per input term of the candidate: FIFO positions picked by predicates
   std::vector<NetObserver*> observers_;
 };
 

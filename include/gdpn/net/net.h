@@ -3,6 +3,7 @@
 /// The frozen net: places, transitions and arcs flattened (hierarchy resolved) into
 /// contiguous arrays indexed by integers. Built once by `compile()`, shared read-only.
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -44,6 +45,19 @@ struct Term {
   std::int32_t weight = 1;      ///< tokens, 1..kMaxWeight
   std::int32_t take = 0;        ///< for outputs: what the transition itself takes from this place slot
   TermKind kind = TermKind::Input;  ///< what the term asks of its place slot
+  bool predicate = false;       ///< only tokens its predicate accepts count (node slots)
+};
+
+/// Bits of Transition::scripts.
+enum TransitionScript : std::uint8_t { kGuard = 1, kPreFire = 2, kInFire = 4, kPostFire = 8 };
+/// Bits of PlaceSlot::scripts.
+enum SlotScript : std::uint8_t { kOnDeposit = 1, kOnRemove = 2 };
+
+/// Where each scripted construct's scripts are, as indices into Net::scripts() (-1: none).
+struct ScriptIndex {
+  std::vector<std::array<std::int32_t, 4>> transitions;  ///< guard, pre_fire, in_fire, post_fire
+  std::vector<std::array<std::int32_t, 2>> slots;        ///< on_deposit, on_remove per place slot
+  std::vector<std::int32_t> predicates;                  ///< per term
 };
 
 /// One slot of one place.
@@ -55,6 +69,7 @@ struct PlaceSlot {
   std::int64_t initial = 0;             ///< initial marking count
   std::uint32_t nodes_begin = 0;        ///< initial node tokens: range in Net::initialNodes()
   std::uint32_t nodes_end = 0;          ///< end of that range
+  std::uint8_t scripts = 0;             ///< SlotScript bits
 };
 
 /// A place after flattening.
@@ -79,6 +94,7 @@ struct Transition {
   std::uint32_t conditions_end = 0;///< end of the tests and inhibitors
   std::uint32_t terms_end = 0;     ///< end of the outputs
   std::uint32_t node_slot_mask = 0;///< bit s set when slot s is a node slot on this transition
+  std::uint8_t scripts = 0;        ///< TransitionScript bits
 };
 
 /// The frozen, flat net. Immutable after `compile()`; share it with `std::shared_ptr<const Net>`.
@@ -114,6 +130,15 @@ class Net {
   [[nodiscard]] std::int64_t findPlaceSlot(PlaceId place, SlotId slot) const;
   /// The number of distinct priorities (ranks run 0..count-1).
   [[nodiscard]] std::uint32_t priorityLevels() const { return priority_levels_; }
+  /// The distinct scripts of the net (a page type's scripts appear once for all its instances),
+  /// followed by the model's globals script when there is one.
+  [[nodiscard]] std::span<const ScriptSpec> scripts() const { return scripts_; }
+  /// Which scripts each construct has; empty vectors when the net has no scripts.
+  [[nodiscard]] const ScriptIndex& scriptIndex() const { return script_index_; }
+  /// The index of the globals script in scripts(), or -1.
+  [[nodiscard]] std::int32_t globalsScript() const { return globals_script_; }
+  /// True when any construct has a script.
+  [[nodiscard]] bool scripted() const { return !scripts_.empty(); }
   /// Approximate heap bytes held by this net.
   [[nodiscard]] std::size_t memoryBytes() const;
 
@@ -130,6 +155,9 @@ class Net {
   std::unordered_map<std::string, PlaceId> place_index_;
   std::unordered_map<std::string, TransitionId> transition_index_;
   std::uint32_t priority_levels_ = 1;
+  std::vector<ScriptSpec> scripts_;
+  ScriptIndex script_index_;
+  std::int32_t globals_script_ = -1;
 };
 
 }  // namespace gdpn::net

@@ -73,12 +73,12 @@ struct SlotDecl {
 struct ScriptSpec {
   std::string code;      ///< inline Python source (a statement block, or an expression for guards and predicates)
   std::string file;      ///< a .py file, relative to the model's folder (file form)
-  std::string function;  ///< the function in that file (file form)
+  std::string function;  ///< the function in that file (file form; a globals file needs none)
   SourceLoc loc;         ///< where the code's first character is (inline) or where the script is named (file form)
   int indent = 0;        ///< columns the code's lines are indented by in the model file (inline block form)
 
   /// True when no script is attached.
-  [[nodiscard]] bool empty() const { return code.empty() && function.empty(); }
+  [[nodiscard]] bool empty() const { return code.empty() && file.empty(); }
   friend bool operator==(const ScriptSpec& x, const ScriptSpec& y) {
     return x.code == y.code && x.file == y.file && x.function == y.function;
   }

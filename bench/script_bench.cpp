@@ -1,0 +1,72 @@
+// Script overhead: firings per second when every transition runs a trivial pre_fire, and a
+// model whose scripts do nothing against the same model without scripts.
+// Record results in docs/performance.md.
+
+#include <benchmark/benchmark.h>
+
+#include "gdpn/model/simulation.h"
+
+namespace {
+
+using namespace gdpn;
+
+/// A ring of n places and n one-step transitions holding n/10 tokens; `pre_fire` (if not
+/// empty) on every transition, `globals` as the model's globals.
+model::Model ring(int n, const std::string& pre_fire, const std::string& globals) {
+  model::Model m;
+  m.path = "bench.gdpn.yaml";
+  m.settings.dt = 0.01;
+  net::PageSpec page;
+  page.name = "main";
+  for (int i = 0; i < n; ++i) {
+    net::PlaceSpec p;
+    p.name = "p" + std::to_string(i);
+    if (i % 10 == 0) p.tokens.push_back({net::kDefaultSlot, 1, {}});
+    page.places.push_back(p);
+    net::TransitionSpec t;
+    t.name = "t" + std::to_string(i);
+    t.pre_fire.code = pre_fire;
+    t.pre_fire.loc = {"bench.gdpn.yaml", 1, 1};
+    page.transitions.push_back(t);
+    net::ArcSpec in, out;
+    in.from = p.name;
+    in.to = t.name;
+    out.from = t.name;
+    out.to = "p" + std::to_string((i + 1) % n);
+    page.arcs.push_back(in);
+    page.arcs.push_back(out);
+  }
+  m.net.pages.push_back(page);
+  m.net.globals.code = globals;
+  m.net.globals.loc = {"bench.gdpn.yaml", 1, 1};
+  return m;
+}
+
+void runRing(benchmark::State& state, const std::string& pre_fire, const std::string& globals) {
+  core::Diagnostics diags;
+  auto sim = model::Simulation::create(ring(static_cast<int>(state.range(0)), pre_fire, globals), diags);
+  if (!sim) {
+    state.SkipWithError(diags.str().c_str());
+    return;
+  }
+  sim->start();
+  const auto before = sim->kernel().startCount();
+  for (auto _ : state) sim->step();
+  const auto firings = static_cast<double>(sim->kernel().startCount() - before);
+  state.counters["firings_per_s"] = benchmark::Counter(firings, benchmark::Counter::kIsRate);
+}
+
+// every transition's pre_fire increments a shared counter
+void BM_ScriptedFirings(benchmark::State& state) { runRing(state, "n += 1\n", "n = 0\n"); }
+BENCHMARK(BM_ScriptedFirings)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+
+// scripts that do nothing, against no scripts at all, on the same ring
+void BM_EmptyScripts(benchmark::State& state) { runRing(state, "pass\n", ""); }
+BENCHMARK(BM_EmptyScripts)->Arg(1000)->Unit(benchmark::kMicrosecond);
+
+void BM_NoScripts(benchmark::State& state) { runRing(state, "", ""); }
+BENCHMARK(BM_NoScripts)->Arg(1000)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

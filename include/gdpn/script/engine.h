@@ -1,0 +1,74 @@
+#pragma once
+/// \file
+/// The script engine: CPython 3.11, embedded through pybind11, running the Python scripts of
+/// a net's constructs (semantics §8) as the kernel's ScriptHooks. Each script is compiled
+/// once; inline code keeps its model-file line numbers, so tracebacks point into the model.
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "gdpn/core/diagnostics.h"
+#include "gdpn/net/hooks.h"
+#include "gdpn/net/kernel.h"
+
+namespace gdpn::script {
+
+/// How scripts run.
+struct EngineOptions {
+  double timeout_s = 0.0;  ///< a single script call running longer than this is stopped (0: never), seconds
+};
+
+/// What scripts reach outside the net.
+struct EngineCallbacks {
+  std::function<void(const std::string&)> log;  ///< sim.log(...) text
+  std::function<std::string(net::NodeRef)> node_name;  ///< the path of a node token
+};
+
+/// Why the engine halted.
+enum class Halt : std::uint8_t {
+  None,         ///< still running
+  Error,        ///< a script raised an exception
+  Interrupted,  ///< Ctrl-C (requestInterrupt) during a script
+  Timeout,      ///< a script ran longer than EngineOptions::timeout_s
+  Stop,         ///< a script called sim.stop(reason)
+};
+
+/// Runs one net's scripts for one kernel.
+class Engine final : public net::ScriptHooks {
+ public:
+  /// Starts the interpreter if needed, compiles every script of `net` and runs the model's
+  /// globals. Problems (syntax errors, missing files or functions, an exception in the
+  /// globals) are reported into `diags` at their file:line:col; then nullptr.
+  static std::unique_ptr<Engine> create(const net::Net& net, net::Kernel& kernel, const std::string& model_path,
+                                        EngineOptions options, EngineCallbacks callbacks, core::Diagnostics& diags);
+  ~Engine() override;
+  Engine(const Engine&) = delete;
+  Engine& operator=(const Engine&) = delete;
+
+  bool guard(net::TransitionId t) override;
+  bool eligible(net::TermId term, net::NodeRef token) override;
+  void preFire(net::TransitionId t) override;
+  void inFire(net::TransitionId t) override;
+  void postFire(net::TransitionId t) override;
+  void onDeposit(net::PlaceSlotId ps, const net::NodeRef* token) override;
+  void onRemove(net::PlaceSlotId ps, const net::NodeRef* token) override;
+  [[nodiscard]] bool halted() const override;
+
+  /// Why the engine halted (None while it has not).
+  [[nodiscard]] Halt halt() const;
+  /// The message for the halt: the located error with its traceback, or the stop reason.
+  [[nodiscard]] const std::string& message() const;
+
+ private:
+  struct Impl;
+  explicit Engine(std::shared_ptr<Impl> impl);
+  std::shared_ptr<Impl> impl_;
+};
+
+/// Asks a running script to stop as if Ctrl-C had reached it. Async-signal-safe: call it from
+/// a SIGINT handler. A script that is running raises KeyboardInterrupt at once.
+void requestInterrupt();
+
+}  // namespace gdpn::script

@@ -1,0 +1,498 @@
+// The script engine: compiles a net's scripts once and runs them as kernel hooks.
+// The hot path (one script call) uses the raw C API: set `self` (and `token`) in the model's
+// one globals dict, evaluate the code object, check the result.
+
+#include "gdpn/script/engine.h"
+
+#include <pybind11/embed.h>
+#include <pybind11/pybind11.h>
+
+#include <atomic>
+#include <csignal>
+#include <chrono>
+#include <condition_variable>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <thread>
+#include <unordered_map>
+
+#include "gdpn/core/text.h"
+#include "script/views.h"
+
+namespace py = pybind11;
+
+namespace gdpn::script {
+namespace {
+
+/// Makes the script running in the main thread raise KeyboardInterrupt soon. Safe from any
+/// thread and from a signal handler; needs Python's SIGINT entry to be default_int_handler.
+void interruptScript() {
+  if (Py_IsInitialized()) PyErr_SetInterruptEx(SIGINT);
+}
+
+const char* kKindNames[] = {"guard", "pre_fire", "in_fire", "post_fire", "on_deposit", "on_remove", "predicate",
+                            "globals"};
+
+}  // namespace
+
+void requestInterrupt() { interruptScript(); }
+
+/// One compiled script.
+struct Compiled {
+  py::object code;      // code object (inline), or none
+  py::object function;  // callable (file form), or none
+  bool expression = false;
+};
+
+/// Watches script calls from a thread of its own. A call that runs longer than the timeout
+/// gets KeyboardInterrupt raised inside it (PyThreadState_SetAsyncExc, under the GIL, which a
+/// running script gives up every few milliseconds); timedOut() tells it from a Ctrl-C.
+class Watchdog {
+ public:
+  explicit Watchdog(double timeout_s) : timeout_s_(timeout_s) {
+    if (timeout_s_ > 0) thread_ = std::thread([this] { loop(); });
+  }
+  ~Watchdog() {
+    if (!thread_.joinable()) return;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      done_ = true;
+    }
+    wake_.notify_all();
+    // the thread may be waiting for the GIL: let it have it
+    if (PyGILState_Check()) {
+      py::gil_scoped_release nogil;
+      thread_.join();
+    } else {
+      thread_.join();
+    }
+  }
+  void enter() {
+    if (!thread_.joinable()) return;
+    thread_id_.store(PyThread_get_thread_ident(), std::memory_order_relaxed);
+    generation_.fetch_add(1, std::memory_order_relaxed);
+    in_call_.store(true, std::memory_order_release);
+  }
+  void leave() { in_call_.store(false, std::memory_order_release); }
+  [[nodiscard]] bool timedOut() const { return timed_out_.load(); }
+
+ private:
+  void loop() {
+    using clock = std::chrono::steady_clock;
+    std::uint64_t seen = ~std::uint64_t{0};
+    clock::time_point since = clock::now();
+    while (true) {
+      {
+        std::unique_lock<std::mutex> lock(mutex_);
+        if (wake_.wait_for(lock, std::chrono::milliseconds(10), [this] { return done_; })) return;
+      }
+      if (!in_call_.load(std::memory_order_acquire)) {
+        seen = ~std::uint64_t{0};
+        continue;
+      }
+      const auto gen = generation_.load(std::memory_order_relaxed);
+      if (gen != seen) {
+        seen = gen;
+        since = clock::now();
+        continue;
+      }
+      if (timed_out_ || std::chrono::duration<double>(clock::now() - since).count() <= timeout_s_) continue;
+      const PyGILState_STATE state = PyGILState_Ensure();
+      // still the same call? (it may have ended while we waited for the GIL)
+      if (in_call_.load() && generation_.load() == seen) {
+        timed_out_ = true;
+        PyThreadState_SetAsyncExc(thread_id_.load(), PyExc_KeyboardInterrupt);
+      }
+      PyGILState_Release(state);
+    }
+  }
+
+  double timeout_s_;
+  std::atomic<std::uint64_t> generation_{0};
+  std::atomic<unsigned long> thread_id_{0};
+  std::atomic<bool> in_call_{false};
+  std::atomic<bool> timed_out_{false};
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool done_ = false;
+  std::thread thread_;
+};
+
+struct Engine::Impl : detail::Context {
+  const net::Net& net;
+  net::Kernel& kernel;
+  std::string model_path;
+  std::filesystem::path model_dir;
+  EngineOptions options;
+  EngineCallbacks callbacks;
+
+  py::dict globals;
+  py::object sim;
+  py::str key_self{"self"};
+  py::str key_token{"token"};
+  std::vector<Compiled> compiled;
+  std::vector<py::object> transition_views, place_views, node_views;
+  std::unique_ptr<Watchdog> watchdog;
+
+  Halt halt = Halt::None;
+  std::string message;
+
+  Impl(const net::Net& n, net::Kernel& k) : net(n), kernel(k) {}
+  ~Impl() { *alive = false; }
+
+  // ---- detail::Context: what the views ask of the engine ----
+  const net::Net& netRef() const override { return net; }
+  net::Kernel& kernelRef() override { return kernel; }
+  std::string nodeName(net::NodeRef ref) const override {
+    return callbacks.node_name ? callbacks.node_name(ref) : "#" + std::to_string(ref);
+  }
+  py::object transitionView(net::TransitionId t) override {
+    auto& v = transition_views[t];
+    if (!v) v = detail::makeTransitionView(detail::refTo(*this), t);
+    return v;
+  }
+  py::object placeView(net::PlaceId p) override {
+    auto& v = place_views[p];
+    if (!v) v = detail::makePlaceView(detail::refTo(*this), p);
+    return v;
+  }
+  py::object nodeView(net::NodeRef ref) override {
+    if (ref < node_views.size()) {
+      auto& v = node_views[ref];
+      if (!v) v = detail::makeNodeView(detail::refTo(*this), ref);
+      return v;
+    }
+    return detail::makeNodeView(detail::refTo(*this), ref);
+  }
+  void log(const std::string& text) override {
+    if (callbacks.log) callbacks.log(text);
+  }
+  void stop(const std::string& reason) override {
+    if (halt != Halt::None) return;
+    halt = Halt::Stop;
+    message = reason;
+  }
+
+  // ---- compiling ----
+
+  /// The code with blank lines before it, so Python's line numbers are the model file's.
+  static std::string padded(const net::ScriptSpec& s) {
+    const int pad = std::max(0, s.loc.line - 1);
+    return std::string(static_cast<std::size_t>(pad), '\n') + s.code;
+  }
+
+  /// Reports the pending SyntaxError at its file:line:col; `indent` shifts inline columns.
+  void syntaxError(core::Diagnostics& diags, const std::string& what, int indent) {
+    py::error_already_set e;
+    int line = 0, col = 0;
+    std::string file = model_path, msg = e.what();
+    if (e.matches(PyExc_SyntaxError)) {
+      const py::object v = e.value();
+      if (py::hasattr(v, "lineno") && !v.attr("lineno").is_none()) line = v.attr("lineno").cast<int>();
+      if (py::hasattr(v, "offset") && !v.attr("offset").is_none()) col = v.attr("offset").cast<int>() + indent;
+      if (py::hasattr(v, "filename") && !v.attr("filename").is_none()) file = py::str(v.attr("filename"));
+      msg = py::str(v.attr("msg"));
+    }
+    diags.error({file, line, col}, "syntax error in " + what + ": " + msg);
+  }
+
+  /// Runs a .py file once in the model's globals; nullopt after reporting a problem.
+  std::optional<bool> loadFile(const net::ScriptSpec& s, const std::string& what, core::Diagnostics& diags,
+                               std::unordered_map<std::string, bool>& loaded) {
+    const std::string path = (model_dir / s.file).string();
+    if (auto it = loaded.find(path); it != loaded.end()) return it->second ? std::optional<bool>(true) : std::nullopt;
+    loaded[path] = false;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+      diags.error(s.loc, "cannot read the script file '" + s.file + "' of " + what + " (looked for " + path + ")");
+      return std::nullopt;
+    }
+    std::stringstream text;
+    text << in.rdbuf();
+    PyObject* code = Py_CompileString(text.str().c_str(), path.c_str(), Py_file_input);
+    if (!code) {
+      syntaxError(diags, what, 0);
+      return std::nullopt;
+    }
+    py::object owned = py::reinterpret_steal<py::object>(code);
+    PyObject* result = PyEval_EvalCode(owned.ptr(), globals.ptr(), globals.ptr());
+    if (!result) {
+      diags.error(s.loc, "running the script file '" + s.file + "' failed:\n" + formatPending());
+      return std::nullopt;
+    }
+    Py_DECREF(result);
+    loaded[path] = true;
+    return true;
+  }
+
+  bool compile(const net::ScriptSpec& s, bool expression, const std::string& what, Compiled& out,
+               core::Diagnostics& diags, std::unordered_map<std::string, bool>& loaded) {
+    out.expression = expression;
+    if (!s.file.empty()) {
+      if (!loadFile(s, what, diags, loaded)) return false;
+      if (s.function.empty()) return true;  // a globals file: running it was the point
+      PyObject* fn = PyDict_GetItemString(globals.ptr(), s.function.c_str());
+      if (!fn || !PyCallable_Check(fn)) {
+        diags.error(s.loc, "the script file '" + s.file + "' defines no function '" + s.function + "' for " + what);
+        return false;
+      }
+      out.function = py::reinterpret_borrow<py::object>(fn);
+      return true;
+    }
+    PyObject* code = Py_CompileString(padded(s).c_str(), model_path.c_str(), expression ? Py_eval_input : Py_file_input);
+    if (!code) {
+      syntaxError(diags, what, s.indent);
+      return false;
+    }
+    out.code = py::reinterpret_steal<py::object>(code);
+    return true;
+  }
+
+  // ---- running ----
+
+  /// The pending exception as a traceback text; clears it.
+  static std::string formatPending() {
+    py::error_already_set e;
+    try {
+      py::object tb = py::module_::import("traceback");
+      py::list lines = tb.attr("format_exception")(e.type(), e.value(), e.trace());
+      std::string text;
+      for (auto line : lines) text += py::str(line).cast<std::string>();
+      return text;
+    } catch (const std::exception&) {
+      return e.what();
+    }
+  }
+
+  /// The innermost frame of the pending exception's traceback: file and line.
+  static std::pair<std::string, int> innermost() {
+    PyObject *type = nullptr, *value = nullptr, *tb = nullptr;
+    PyErr_Fetch(&type, &value, &tb);
+    PyErr_NormalizeException(&type, &value, &tb);
+    std::pair<std::string, int> where{"", 0};
+    for (PyObject* t = tb; t && t != Py_None;) {
+      auto* frame = reinterpret_cast<PyTracebackObject*>(t);
+      PyCodeObject* code = PyFrame_GetCode(frame->tb_frame);
+      where = {PyUnicode_AsUTF8(code->co_filename), frame->tb_lineno};
+      Py_DECREF(code);
+      t = reinterpret_cast<PyObject*>(frame->tb_next);
+    }
+    PyErr_Restore(type, value, tb);
+    return where;
+  }
+
+  std::string describe(int kind, std::uint32_t id) const {
+    switch (kind) {
+      case 0: case 1: case 2: case 3:
+        return "transition '" + net.transitions()[id].name + "'";
+      case 4: case 5: {
+        const auto& ps = net.placeSlots()[id];
+        return "place '" + net.places()[ps.place].name + "' slot " + net::slotName(ps.slot);
+      }
+      case 6: {
+        const auto& term = net.terms()[id];
+        const auto& ps = net.placeSlots()[term.place_slot];
+        return "arc '" + net.places()[ps.place].name + "' -> '" + net.transitions()[term.transition].name +
+               "' slot " + net::slotName(ps.slot);
+      }
+      default: return "the model";
+    }
+  }
+
+  /// Records the pending exception as the engine's halt.
+  void fail(int kind, std::uint32_t id) {
+    const auto [file, line] = innermost();
+    const bool keyboard = PyErr_ExceptionMatches(PyExc_KeyboardInterrupt);
+    const std::string where = (file.empty() ? model_path : file) + (line > 0 ? ":" + std::to_string(line) : "");
+    const std::string what = std::string(kKindNames[kind]) + " of " + describe(kind, id);
+    if (keyboard && watchdog->timedOut()) {
+      PyErr_Clear();
+      halt = Halt::Timeout;
+      message = where + ": error: " + what + " ran longer than the script timeout of " +
+                core::formatDouble(options.timeout_s) + " s";
+      return;
+    }
+    if (keyboard) {
+      PyErr_Clear();
+      halt = Halt::Interrupted;
+      message = where + ": error: " + what + " was interrupted (Ctrl-C)";
+      return;
+    }
+    halt = Halt::Error;
+    message = where + ": error: " + what + " raised an exception\n" + formatPending();
+  }
+
+  /// Runs script `index` for construct (kind, id); returns its value (expressions) or None.
+  /// On failure records the halt and returns null.
+  PyObject* call(std::int32_t index, int kind, std::uint32_t id, PyObject* self, PyObject* token) {
+    const Compiled& c = compiled[static_cast<std::size_t>(index)];
+    watchdog->enter();
+    PyObject* result = nullptr;
+    if (c.function) {
+      result = token ? PyObject_CallFunctionObjArgs(c.function.ptr(), self, token, nullptr)
+                     : PyObject_CallOneArg(c.function.ptr(), self);
+    } else {
+      PyDict_SetItem(globals.ptr(), key_self.ptr(), self);
+      if (token) PyDict_SetItem(globals.ptr(), key_token.ptr(), token);
+      result = PyEval_EvalCode(c.code.ptr(), globals.ptr(), globals.ptr());
+    }
+    watchdog->leave();
+    if (!result) fail(kind, id);
+    return result;
+  }
+
+  void run(std::int32_t index, int kind, std::uint32_t id, PyObject* self, PyObject* token) {
+    if (index < 0 || halt != Halt::None) return;
+    PyObject* r = call(index, kind, id, self, token);
+    Py_XDECREF(r);
+  }
+
+  bool test(std::int32_t index, int kind, std::uint32_t id, PyObject* self, PyObject* token) {
+    if (index < 0) return true;
+    if (halt != Halt::None) return false;
+    PyObject* r = call(index, kind, id, self, token);
+    if (!r) return false;
+    const int truth = PyObject_IsTrue(r);
+    Py_DECREF(r);
+    if (truth < 0) {
+      fail(kind, id);
+      return false;
+    }
+    return truth == 1;
+  }
+};
+
+Engine::Engine(std::shared_ptr<Impl> impl) : impl_(std::move(impl)) {}
+
+Engine::~Engine() {
+  if (!impl_) return;
+  impl_->watchdog.reset();
+  // drop Python references while the interpreter is certainly alive
+  py::gil_scoped_acquire gil;
+  impl_->compiled.clear();
+  impl_->transition_views.clear();
+  impl_->place_views.clear();
+  impl_->node_views.clear();
+  impl_->sim = py::object();
+  impl_->globals.clear();
+  impl_->globals = py::dict();
+  impl_.reset();
+}
+
+std::unique_ptr<Engine> Engine::create(const net::Net& net, net::Kernel& kernel, const std::string& model_path,
+                                       EngineOptions options, EngineCallbacks callbacks, core::Diagnostics& diags) {
+  if (!Py_IsInitialized()) {
+    // Python installs no C signal handlers; its own SIGINT entry is set to raise
+    // KeyboardInterrupt, so that requestInterrupt() and the timeout reach a running script
+    py::initialize_interpreter(false);
+    auto signal = py::module_::import("signal");
+    const auto previous = std::signal(SIGINT, SIG_DFL);
+    signal.attr("signal")(SIGINT, signal.attr("default_int_handler"));
+    std::signal(SIGINT, previous);  // the C-level handler stays the program's
+  }
+  py::gil_scoped_acquire gil;
+  detail::registerViews();
+
+  auto impl = std::make_shared<Impl>(net, kernel);
+  impl->model_path = model_path;
+  impl->model_dir = std::filesystem::path(model_path).parent_path();
+  impl->options = options;
+  impl->callbacks = std::move(callbacks);
+  impl->transition_views.resize(net.transitions().size());
+  impl->place_views.resize(net.places().size());
+  impl->node_views.resize(net.nodeNames().size());
+  impl->globals["__builtins__"] = py::reinterpret_borrow<py::object>(PyEval_GetBuiltins());
+  impl->globals["__name__"] = "gdpn_model";
+  impl->sim = detail::makeSimView(detail::refTo(*impl));
+  impl->globals["sim"] = impl->sim;
+
+  // name each script by its first user ("pre_fire of transition 'main/T'"); guards and
+  // predicates are expressions, the rest statements
+  const auto scripts = net.scripts();
+  const auto& index = net.scriptIndex();
+  std::vector<int> kind(scripts.size(), -1);
+  std::vector<std::string> names(scripts.size());
+  auto name = [&](std::int32_t i, int k, std::uint32_t id) {
+    if (i < 0 || kind[static_cast<std::size_t>(i)] >= 0) return;
+    kind[static_cast<std::size_t>(i)] = k;
+    names[static_cast<std::size_t>(i)] = std::string(kKindNames[k]) + " of " + impl->describe(k, id);
+  };
+  for (std::uint32_t t = 0; t < index.transitions.size(); ++t) {
+    for (int k = 0; k < 4; ++k) name(index.transitions[t][static_cast<std::size_t>(k)], k, t);
+  }
+  for (std::uint32_t ps = 0; ps < index.slots.size(); ++ps) {
+    for (int k = 0; k < 2; ++k) name(index.slots[ps][static_cast<std::size_t>(k)], 4 + k, ps);
+  }
+  for (std::uint32_t term = 0; term < index.predicates.size(); ++term) name(index.predicates[term], 6, term);
+  impl->compiled.resize(scripts.size());
+  std::unordered_map<std::string, bool> loaded;
+  bool ok = true;
+  const auto g = net.globalsScript();
+  if (g >= 0) {
+    auto& c = impl->compiled[static_cast<std::size_t>(g)];
+    ok = impl->compile(scripts[static_cast<std::size_t>(g)], false, "the globals script", c, diags, loaded);
+    if (ok && c.code) {
+      PyObject* r = PyEval_EvalCode(c.code.ptr(), impl->globals.ptr(), impl->globals.ptr());
+      if (!r) {
+        const auto [file, line] = Impl::innermost();
+        diags.error({file.empty() ? model_path : file, line, 0},
+                    "the globals script raised an exception\n" + Impl::formatPending());
+        ok = false;
+      }
+      Py_XDECREF(r);
+    }
+  }
+  for (std::size_t i = 0; i < scripts.size(); ++i) {
+    if (static_cast<std::int32_t>(i) == g || kind[i] < 0) continue;
+    const bool expression = kind[i] == 0 || kind[i] == 6;
+    ok = impl->compile(scripts[i], expression, names[i], impl->compiled[i], diags, loaded) && ok;
+  }
+  if (!ok) {
+    impl->compiled.clear();
+    return nullptr;
+  }
+  impl->watchdog = std::make_unique<Watchdog>(options.timeout_s);
+  return std::unique_ptr<Engine>(new Engine(std::move(impl)));
+}
+
+bool Engine::guard(net::TransitionId t) {
+  return impl_->test(impl_->net.scriptIndex().transitions[t][0], 0, t, impl_->transitionView(t).ptr(), nullptr);
+}
+
+bool Engine::eligible(net::TermId term, net::NodeRef token) {
+  const auto t = impl_->net.terms()[term].transition;
+  return impl_->test(impl_->net.scriptIndex().predicates[term], 6, term, impl_->transitionView(t).ptr(),
+                     impl_->nodeView(token).ptr());
+}
+
+void Engine::preFire(net::TransitionId t) {
+  impl_->run(impl_->net.scriptIndex().transitions[t][1], 1, t, impl_->transitionView(t).ptr(), nullptr);
+}
+
+void Engine::inFire(net::TransitionId t) {
+  impl_->run(impl_->net.scriptIndex().transitions[t][2], 2, t, impl_->transitionView(t).ptr(), nullptr);
+}
+
+void Engine::postFire(net::TransitionId t) {
+  impl_->run(impl_->net.scriptIndex().transitions[t][3], 3, t, impl_->transitionView(t).ptr(), nullptr);
+}
+
+void Engine::onDeposit(net::PlaceSlotId ps, const net::NodeRef* token) {
+  const auto place = impl_->net.placeSlots()[ps].place;
+  py::object tok = token ? impl_->nodeView(*token) : py::none();
+  impl_->run(impl_->net.scriptIndex().slots[ps][0], 4, ps, impl_->placeView(place).ptr(), tok.ptr());
+}
+
+void Engine::onRemove(net::PlaceSlotId ps, const net::NodeRef* token) {
+  const auto place = impl_->net.placeSlots()[ps].place;
+  py::object tok = token ? impl_->nodeView(*token) : py::none();
+  impl_->run(impl_->net.scriptIndex().slots[ps][1], 5, ps, impl_->placeView(place).ptr(), tok.ptr());
+}
+
+bool Engine::halted() const { return impl_->halt != Halt::None; }
+Halt Engine::halt() const { return impl_->halt; }
+const std::string& Engine::message() const { return impl_->message; }
+
+}  // namespace gdpn::script

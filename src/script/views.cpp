@@ -1,0 +1,244 @@
+// The Python classes scripts see. Each holds a Ref to its engine and reads the kernel live.
+
+#include "script/views.h"
+
+#include <pybind11/stl.h>
+
+#include <stdexcept>
+
+#include "gdpn/core/text.h"
+
+namespace py = pybind11;
+
+namespace gdpn::script::detail {
+namespace {
+
+struct TransitionView {
+  Ref r;
+  net::TransitionId t;
+};
+struct PlaceView {
+  Ref r;
+  net::PlaceId p;
+};
+struct SlotView {
+  Ref r;
+  bool of_transition;
+  std::uint32_t owner;  // transition or place
+  net::SlotId slot;
+};
+struct NodeView {
+  Ref r;
+  net::NodeRef ref;
+};
+struct SimView {
+  Ref r;
+};
+struct RandomView {
+  Ref r;
+};
+
+std::string ownerName(const SlotView& s) {
+  const auto& net = s.r.get().netRef();
+  return s.of_transition ? "transition '" + net.transitions()[s.owner].name + "'"
+                         : "place '" + net.places()[s.owner].name + "'";
+}
+
+/// The place slot of a place's slot view, or -1.
+std::int64_t placeSlot(const SlotView& s) {
+  return s.r.get().netRef().findPlaceSlot(static_cast<net::PlaceId>(s.owner), s.slot);
+}
+
+/// The node tokens in a slot: a place's FIFO, or what a transition holds.
+std::vector<net::NodeRef> tokensOf(const SlotView& s) {
+  auto& ctx = s.r.get();
+  if (!s.of_transition) {
+    const auto ps = placeSlot(s);
+    return ps < 0 ? std::vector<net::NodeRef>{} : ctx.kernelRef().nodes(static_cast<net::PlaceSlotId>(ps));
+  }
+  std::vector<net::NodeRef> out;
+  for (const auto& [slot, node] : ctx.kernelRef().held(s.owner)) {
+    if (slot == s.slot) out.push_back(node);
+  }
+  return out;
+}
+
+bool isNodeSlot(const SlotView& s) {
+  const auto& net = s.r.get().netRef();
+  if (s.of_transition) return (net.transitions()[s.owner].node_slot_mask >> s.slot) & 1u;
+  const auto ps = placeSlot(s);
+  return ps >= 0 && net.placeSlots()[static_cast<std::size_t>(ps)].kind == net::SlotKind::Node;
+}
+
+std::int64_t count(const SlotView& s) {
+  auto& ctx = s.r.get();
+  if (isNodeSlot(s)) return static_cast<std::int64_t>(tokensOf(s).size());
+  if (!s.of_transition) {
+    const auto ps = placeSlot(s);
+    return ps < 0 ? 0 : ctx.kernelRef().marking(static_cast<net::PlaceSlotId>(ps));
+  }
+  // control tokens a transition took: its normal inputs on this slot, while it occurs
+  if (!ctx.kernelRef().occurring(s.owner)) return 0;
+  std::int64_t n = 0;
+  for (const auto& term : ctx.netRef().termsOf(s.owner)) {
+    if (term.kind == net::TermKind::Input && ctx.netRef().placeSlots()[term.place_slot].slot == s.slot) {
+      n += term.weight;
+    }
+  }
+  return n;
+}
+
+py::object slotAttr(Ref r, bool of_transition, std::uint32_t owner, const std::string& name) {
+  const auto slot = net::parseSlot(name);
+  if (!slot) throw py::attribute_error("no attribute '" + name + "' (slots are a0 ... d7)");
+  return py::cast(SlotView{std::move(r), of_transition, owner, *slot});
+}
+
+}  // namespace
+
+Context& Ref::get() const {
+  if (!alive || !*alive) throw std::runtime_error("this view's model is gone");
+  return *ctx;
+}
+
+void registerViews() {
+  static bool done = false;
+  if (done) return;
+  done = true;
+  py::module_ m = py::module_::import("types").attr("ModuleType")("gdpn_script");
+  py::module_::import("sys").attr("modules")["gdpn_script"] = m;
+
+  py::class_<NodeView>(m, "Node", "A node token: a reference to a scene node")
+      .def_property_readonly("name", [](const NodeView& v) { return v.r.get().nodeName(v.ref); },
+                             "the node's path")
+      .def_property_readonly("ref", [](const NodeView& v) { return v.ref; }, "the node's handle")
+      .def("__eq__", [](const NodeView& a, const NodeView& b) { return a.ref == b.ref; })
+      .def("__hash__", [](const NodeView& v) { return std::hash<net::NodeRef>{}(v.ref); })
+      .def("__repr__", [](const NodeView& v) { return "<node " + v.r.get().nodeName(v.ref) + ">"; });
+
+  py::class_<SlotView>(m, "Slot", "One slot of a place or transition")
+      .def("get", &count, "tokens in the slot (a count; for a node slot, how many nodes)")
+      .def("set",
+           [](const SlotView& s, std::int64_t n) {
+             if (s.of_transition) throw py::type_error("a transition's slots are read-only");
+             const auto ps = placeSlot(s);
+             if (ps < 0) throw py::attribute_error(ownerName(s) + " has no slot " + net::slotName(s.slot));
+             const std::string why = s.r.get().kernelRef().setMarking(static_cast<net::PlaceSlotId>(ps), n);
+             if (!why.empty()) throw py::value_error(ownerName(s) + " slot " + net::slotName(s.slot) + ": " + why);
+           },
+           "sets a control slot's count (places only)")
+      .def("__len__", [](const SlotView& s) { return count(s); })
+      .def("__getitem__",
+           [](const SlotView& s, std::int64_t i) {
+             const auto tokens = tokensOf(s);
+             const auto n = static_cast<std::int64_t>(tokens.size());
+             if (i < 0) i += n;
+             if (i < 0 || i >= n) throw py::index_error("slot index out of range");
+             return s.r.get().nodeView(tokens[static_cast<std::size_t>(i)]);
+           })
+      .def("__iter__",
+           [](const SlotView& s) {
+             py::list out;
+             for (auto ref : tokensOf(s)) out.append(s.r.get().nodeView(ref));
+             return py::iter(out);
+           })
+      .def("__getattr__",
+           [](const SlotView& s, const std::string& name) -> py::object {
+             const auto tokens = tokensOf(s);
+             if (tokens.empty()) {
+               throw py::attribute_error(ownerName(s) + " slot " + net::slotName(s.slot) +
+                                         " holds no node token to read '" + name + "' from");
+             }
+             return s.r.get().nodeView(tokens.front()).attr(name.c_str());
+           })
+      .def("__repr__", [](const SlotView& s) {
+        return "<slot " + net::slotName(s.slot) + " of " + ownerName(s) + ": " + std::to_string(count(s)) + ">";
+      });
+
+  py::class_<TransitionView>(m, "Transition", "A transition, as its scripts see it")
+      .def_property_readonly("name", [](const TransitionView& v) { return v.r.get().netRef().transitions()[v.t].name; })
+      .def_property_readonly("elapsed",
+                             [](const TransitionView& v) {
+                               auto& k = v.r.get().kernelRef();
+                               if (!k.occurring(v.t)) return 0.0;
+                               return static_cast<double>(k.steps() - k.startStep(v.t)) * k.dt();
+                             },
+                             "seconds since the occurrence started")
+      .def_property_readonly("progress",
+                             [](const TransitionView& v) {
+                               auto& k = v.r.get().kernelRef();
+                               if (!k.occurring(v.t)) return 0.0;
+                               const auto whole = k.endStep(v.t) - k.startStep(v.t);
+                               return static_cast<double>(k.steps() - k.startStep(v.t)) / static_cast<double>(whole);
+                             },
+                             "share of the occurrence done, in (0, 1] during in_fire")
+      .def_property_readonly("start_time",
+                             [](const TransitionView& v) {
+                               auto& k = v.r.get().kernelRef();
+                               return static_cast<double>(k.startStep(v.t)) * k.dt();
+                             },
+                             "seconds; when the current or last occurrence started")
+      .def("__getattr__", [](const TransitionView& v, const std::string& name) { return slotAttr(v.r, true, v.t, name); })
+      .def("__repr__", [](const TransitionView& v) {
+        return "<transition " + v.r.get().netRef().transitions()[v.t].name + ">";
+      });
+
+  py::class_<PlaceView>(m, "Place", "A place, as scripts see it")
+      .def_property_readonly("name", [](const PlaceView& v) { return v.r.get().netRef().places()[v.p].name; })
+      .def("__getattr__", [](const PlaceView& v, const std::string& name) { return slotAttr(v.r, false, v.p, name); })
+      .def("__repr__", [](const PlaceView& v) { return "<place " + v.r.get().netRef().places()[v.p].name + ">"; });
+
+  py::class_<RandomView>(m, "Random", "The model's seeded random generator")
+      .def("random", [](const RandomView& v) { return v.r.get().kernelRef().random().uniform01(); },
+           "a float in [0, 1)")
+      .def("uniform", [](const RandomView& v, double a, double b) { return v.r.get().kernelRef().random().uniform(a, b); })
+      .def("normal", [](const RandomView& v, double mu, double sigma) {
+             return v.r.get().kernelRef().random().normal(mu, sigma);
+           }, py::arg("mu") = 0.0, py::arg("sigma") = 1.0)
+      .def("exponential", [](const RandomView& v, double mean) { return v.r.get().kernelRef().random().exponential(mean); })
+      .def("randint",
+           [](const RandomView& v, std::int64_t a, std::int64_t b) {
+             if (b < a) throw py::value_error("randint(a, b) needs a <= b");
+             const auto span = static_cast<std::uint64_t>(b - a) + 1;
+             return a + static_cast<std::int64_t>(v.r.get().kernelRef().random().below(span));
+           },
+           "an integer in [a, b]")
+      .def("choice", [](const RandomView& v, const py::sequence& seq) {
+        const auto n = py::len(seq);
+        if (n == 0) throw py::index_error("choice from an empty sequence");
+        return seq[v.r.get().kernelRef().random().below(n)];
+      });
+
+  py::class_<SimView>(m, "Sim", "The running simulation")
+      .def_property_readonly("time", [](const SimView& v) { return v.r.get().kernelRef().now(); }, "seconds")
+      .def_property_readonly("dt", [](const SimView& v) { return v.r.get().kernelRef().dt(); }, "seconds")
+      .def_property_readonly("step", [](const SimView& v) { return v.r.get().kernelRef().steps(); })
+      .def_property_readonly("random", [](const SimView& v) { return RandomView{v.r}; })
+      .def("log",
+           [](const SimView& v, const py::args& args) {
+             std::string text;
+             for (const auto& a : args) text += (text.empty() ? "" : " ") + py::str(a).cast<std::string>();
+             v.r.get().log(text);
+           },
+           "writes a line to the trace and to stderr")
+      .def("stop", [](const SimView& v, const std::string& reason) { v.r.get().stop(reason); },
+           py::arg("reason") = "stopped by a script", "ends the run after this step")
+      .def("place",
+           [](const SimView& v, const std::string& name) {
+             const auto p = v.r.get().netRef().findPlace(name);
+             if (p < 0) throw py::key_error("no place '" + name + "'");
+             return v.r.get().placeView(static_cast<net::PlaceId>(p));
+           })
+      .def("transition", [](const SimView& v, const std::string& name) {
+        const auto t = v.r.get().netRef().findTransition(name);
+        if (t < 0) throw py::key_error("no transition '" + name + "'");
+        return v.r.get().transitionView(static_cast<net::TransitionId>(t));
+      });
+}
+
+py::object makeTransitionView(Ref r, net::TransitionId t) { return py::cast(TransitionView{std::move(r), t}); }
+py::object makePlaceView(Ref r, net::PlaceId p) { return py::cast(PlaceView{std::move(r), p}); }
+py::object makeNodeView(Ref r, net::NodeRef ref) { return py::cast(NodeView{std::move(r), ref}); }
+py::object makeSimView(Ref r) { return py::cast(SimView{std::move(r)}); }
+
+}  // namespace gdpn::script::detail

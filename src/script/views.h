@@ -1,0 +1,50 @@
+#pragma once
+// Internal: no promises. The Python objects scripts see (self, sim, slots, node tokens) and
+// what they need of the engine.
+
+#include <pybind11/pybind11.h>
+
+#include <memory>
+#include <string>
+
+#include "gdpn/net/kernel.h"
+
+namespace gdpn::script::detail {
+
+/// What the views ask of the engine that made them.
+class Context {
+ public:
+  virtual ~Context() = default;
+  virtual const net::Net& netRef() const = 0;
+  virtual net::Kernel& kernelRef() = 0;
+  virtual std::string nodeName(net::NodeRef ref) const = 0;
+  virtual pybind11::object transitionView(net::TransitionId t) = 0;
+  virtual pybind11::object placeView(net::PlaceId p) = 0;
+  virtual pybind11::object nodeView(net::NodeRef ref) = 0;
+  virtual void log(const std::string& text) = 0;
+  virtual void stop(const std::string& reason) = 0;
+
+  /// False once the engine is gone; a view kept past that raises instead of crashing.
+  std::shared_ptr<bool> alive = std::make_shared<bool>(true);
+};
+
+/// A view's handle on its engine.
+struct Ref {
+  Context* ctx = nullptr;
+  std::shared_ptr<bool> alive;
+  /// The engine; raises RuntimeError when it is gone.
+  Context& get() const;
+};
+
+/// A handle on `ctx` for a new view.
+inline Ref refTo(Context& ctx) { return {&ctx, ctx.alive}; }
+
+/// Registers the view classes with Python (once per process).
+void registerViews();
+
+pybind11::object makeTransitionView(Ref r, net::TransitionId t);
+pybind11::object makePlaceView(Ref r, net::PlaceId p);
+pybind11::object makeNodeView(Ref r, net::NodeRef ref);
+pybind11::object makeSimView(Ref r);
+
+}  // namespace gdpn::script::detail

@@ -1,0 +1,394 @@
+// Scripts on transitions, places and arcs (semantics §3, §4, §6, §8), run through Simulation.
+// Scripts report through sim.log, which the tests read back from the trace.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "gdpn/core/text.h"
+#include "gdpn/model/simulation.h"
+
+namespace gdpn::model {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A model written to a temporary folder (so that script files beside it can be found).
+class ScriptModel {
+ public:
+  explicit ScriptModel(const std::string& text, const std::string& name = "m.gdpn.yaml") {
+    // unique across tests and across processes (CTest runs tests side by side)
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / ("gdpn_" + std::string(info ? info->name() : "x") + "_" +
+                                        std::to_string(getpid()) + "_" + std::to_string(counter()++));
+    fs::create_directories(dir_);
+    path_ = (dir_ / name).string();
+    std::ofstream(path_) << text;
+  }
+  ~ScriptModel() { fs::remove_all(dir_); }
+  void addFile(const std::string& name, const std::string& text) const {
+    fs::create_directories((dir_ / name).parent_path());
+    std::ofstream(dir_ / name) << text;
+  }
+  /// Loads and compiles; the diagnostics text on failure.
+  std::unique_ptr<Simulation> open(core::Diagnostics& diags, double timeout = 0) const {
+    auto m = loadModel(path_, diags);
+    return m ? Simulation::create(*m, diags, std::nullopt, timeout) : nullptr;
+  }
+  const std::string& path() const { return path_; }
+
+ private:
+  static int& counter() {
+    static int n = 0;
+    return n;
+  }
+  fs::path dir_;
+  std::string path_;
+};
+
+/// Runs the model and returns the text of its sim.log lines and the outcome.
+std::pair<std::vector<std::string>, RunOutcome> runLogs(const ScriptModel& model, RunLimits limits = {}) {
+  core::Diagnostics diags;
+  auto sim = model.open(diags);
+  EXPECT_TRUE(sim) << diags.str();
+  if (!sim) return {};
+  std::ostringstream trace;
+  sim->traceTo(trace);
+  const auto outcome = sim->run(limits);
+  std::vector<std::string> logs;
+  std::istringstream lines(trace.str());
+  std::string line;
+  while (std::getline(lines, line)) {
+    const auto at = line.find("\"ev\":\"log\",\"text\":\"");
+    if (at == std::string::npos) continue;
+    auto text = line.substr(at + 19);
+    logs.push_back(text.substr(0, text.size() - 2));
+  }
+  return {logs, outcome};
+}
+
+TEST(Scripts, HooksRunInTheOrderOfTheStep) {
+  // T takes a token from P (on_remove), starts (pre_fire), occurs for 2 steps (in_fire each
+  // step), completes (post_fire) and deposits on Q (on_deposit). U waits on its guard.
+  ScriptModel m(R"Y(gdpn: 1
+settings: {dt: 1, until: 4}
+pages:
+  main:
+    places:
+      P:
+        tokens: 1
+        on_remove: 'sim.log(sim.step, "on_remove", self.name)'
+      Q:
+        on_deposit: 'sim.log(sim.step, "on_deposit", self.name, self.a0.get())'
+    transitions:
+      T:
+        duration: 2
+        guard: 'sim.log(sim.step, "guard", self.name) or True'
+        pre_fire: 'sim.log(sim.step, "pre_fire", self.a0.get())'
+        in_fire: 'sim.log(sim.step, "in_fire", self.elapsed, self.progress)'
+        post_fire: 'sim.log(sim.step, "post_fire", self.a0.get())'
+    arcs:
+      - P -> T
+      - T -> Q
+)Y");
+  const auto [logs, outcome] = runLogs(m);
+  EXPECT_EQ(logs, (std::vector<std::string>{
+                      "0 guard main/T", "0 on_remove main/P", "0 pre_fire 1",     //
+                      "1 in_fire 1.0 0.5",                                        //
+                      "2 in_fire 2.0 1.0", "2 post_fire 1", "2 on_deposit main/Q 1"}));
+}
+
+TEST(Scripts, AGuardBlocksItsTransition) {
+  ScriptModel m(R"Y(gdpn: 1
+settings: {dt: 1, until: 10}
+pages:
+  main:
+    places:
+      P: {tokens: 5}
+    transitions:
+      T:
+        guard: "sim.time >= 3"
+        pre_fire: "sim.log(sim.step)"
+    arcs:
+      - P -> T
+)Y");
+  const auto [logs, outcome] = runLogs(m);
+  EXPECT_EQ(logs, (std::vector<std::string>{"3", "4", "5", "6", "7"}));
+  EXPECT_EQ(outcome.reason, StopReason::Dead);
+}
+
+TEST(Scripts, APredicateSelectsTokens) {
+  // boxes arrive in FIFO order; the arc takes only the painted ones, skipping the others
+  ScriptModel m(R"Y(gdpn: 1
+settings: {dt: 1, until: 10}
+pages:
+  main:
+    places:
+      line: {tokens: {d0: [plain1, painted1, plain2, painted2]}}
+      out: {}
+    transitions:
+      take:
+        pre_fire: 'sim.log(self.d0[0].name)'
+    arcs:
+      - {from: line, to: take, weight: {d0: 1}, predicate: 'token.name.startswith("painted")'}
+      - {from: take, to: out, weight: {d0: 1}}
+)Y");
+  const auto [logs, outcome] = runLogs(m);
+  EXPECT_EQ(logs, (std::vector<std::string>{"painted1", "painted2"}));
+}
+
+TEST(Scripts, TheGlobalsAreSharedByEveryScript) {
+  ScriptModel m(R"Y(gdpn: 1
+settings: {dt: 1, until: 3}
+scripts:
+  globals: |
+    counts = {"a": 0, "b": 0}
+    total = 0
+    def bump(key):
+        global total
+        counts[key] += 1
+        total += 1
+pages:
+  main:
+    places:
+      P: {tokens: 2}
+      Q: {tokens: 2}
+    transitions:
+      A: {pre_fire: 'bump("a")'}
+      B:
+        pre_fire: |
+          bump("b")
+          total += 100
+          sim.log(counts["a"], counts["b"], total)
+    arcs:
+      - P -> A
+      - Q -> B
+)Y");
+  const auto [logs, outcome] = runLogs(m);
+  // A starts before B in each step (declaration order); both see the same names
+  EXPECT_EQ(logs, (std::vector<std::string>{"1 1 102", "2 2 204"}));
+}
+
+TEST(Scripts, FunctionsInAFileBesideTheModel) {
+  ScriptModel m(R"Y(gdpn: 1
+settings: {dt: 1, until: 3}
+scripts:
+  globals: {file: scripts/common.py}
+pages:
+  main:
+    places:
+      P: {tokens: 1, on_remove: {file: scripts/cell.py, function: removed}}
+    transitions:
+      T: {pre_fire: {file: scripts/cell.py, function: start}}
+    arcs:
+      - P -> T
+)Y");
+  m.addFile("scripts/common.py", "PREFIX = 'cell'\n");
+  m.addFile("scripts/cell.py", "def start(self):\n    sim.log(PREFIX, 'start', self.name)\n\n"
+                               "def removed(self, token):\n    sim.log(PREFIX, 'removed', self.name, token)\n");
+  const auto [logs, outcome] = runLogs(m);
+  EXPECT_EQ(logs, (std::vector<std::string>{"cell removed main/P None", "cell start main/T"}));
+}
+
+TEST(Scripts, ScriptsSetMarkingsAndStopTheRun) {
+  ScriptModel m(R"Y(gdpn: 1
+settings: {dt: 1, until: 100}
+pages:
+  main:
+    places:
+      P: {tokens: 1}
+      Q: {capacity: 5}
+    transitions:
+      T:
+        pre_fire: |
+          sim.place("main/Q").a0.set(sim.step + 1)
+          if sim.step == 3:
+              sim.stop("three is enough")
+    arcs:
+      - P -> T
+      - T -> P
+)Y");
+  core::Diagnostics diags;
+  auto sim = m.open(diags);
+  ASSERT_TRUE(sim) << diags.str();
+  const auto outcome = sim->run({});
+  EXPECT_EQ(outcome.reason, StopReason::Stopped);
+  EXPECT_EQ(outcome.message, "three is enough");
+  EXPECT_EQ(outcome.steps, 3);
+  const auto q = sim->net().findPlace("main/Q");
+  EXPECT_EQ(sim->kernel().placeTokens(static_cast<net::PlaceId>(q)), 4);
+}
+
+TEST(ScriptErrors, SyntaxErrorInlineIsLocatedInTheModelFile) {
+  ScriptModel m(R"Y(gdpn: 1
+pages:
+  main:
+    places:
+      P: {tokens: 1}
+    transitions:
+      T:
+        pre_fire: |
+          x = 1
+          y = (x +
+        guard: "x >> > 1"
+    arcs:
+      - P -> T
+)Y");
+  core::Diagnostics diags;
+  EXPECT_FALSE(m.open(diags));
+  const std::string all = diags.str();
+  EXPECT_NE(all.find(m.path() + ":10:15: error: syntax error in pre_fire of transition 'main/T': '(' was never closed"), std::string::npos)
+      << all;
+  EXPECT_NE(all.find(m.path() + ":11:22: error: syntax error in guard of transition 'main/T': invalid syntax"), std::string::npos) << all;
+}
+
+TEST(ScriptErrors, SyntaxErrorInAScriptFileIsLocatedInThatFile) {
+  ScriptModel m(R"Y(gdpn: 1
+pages:
+  main:
+    places:
+      P: {tokens: 1}
+    transitions:
+      T: {pre_fire: {file: cell.py, function: start}}
+    arcs:
+      - P -> T
+)Y");
+  m.addFile("cell.py", "def start(self):\n    return 1 +\n");
+  core::Diagnostics diags;
+  EXPECT_FALSE(m.open(diags));
+  const std::string file = (fs::path(m.path()).parent_path() / "cell.py").string();
+  EXPECT_NE(diags.str().find(file + ":2:"), std::string::npos) << diags.str();
+  EXPECT_NE(diags.str().find("syntax error"), std::string::npos) << diags.str();
+}
+
+TEST(ScriptErrors, AMissingFileOrFunctionIsReportedWhereItIsNamed) {
+  ScriptModel m(R"Y(gdpn: 1
+pages:
+  main:
+    places:
+      P: {tokens: 1}
+    transitions:
+      T: {pre_fire: {file: none.py, function: start}}
+      U: {pre_fire: {file: cell.py, function: nope}}
+    arcs:
+      - P -> T
+      - P -> U
+)Y");
+  m.addFile("cell.py", "def start(self):\n    pass\n");
+  core::Diagnostics diags;
+  EXPECT_FALSE(m.open(diags));
+  EXPECT_NE(diags.str().find(m.path() + ":7:21: error: cannot read the script file 'none.py'"), std::string::npos)
+      << diags.str();
+  EXPECT_NE(diags.str().find(m.path() + ":8:21: error: the script file 'cell.py' defines no function 'nope'"),
+            std::string::npos)
+      << diags.str();
+}
+
+TEST(ScriptErrors, AnExceptionStopsTheRunAndNamesConstructKindAndLine) {
+  ScriptModel m(R"Y(gdpn: 1
+settings: {dt: 1, until: 10}
+pages:
+  main:
+    places:
+      P: {tokens: 5}
+    transitions:
+      T:
+        post_fire: |
+          sim.log("post", sim.step)
+          ratio = 1 / (3 - sim.step)
+    arcs:
+      - P -> T
+)Y");
+  core::Diagnostics diags;
+  auto sim = m.open(diags);
+  ASSERT_TRUE(sim) << diags.str();
+  std::ostringstream trace;
+  sim->traceTo(trace);
+  const auto outcome = sim->run({});
+  EXPECT_EQ(outcome.reason, StopReason::ScriptError);
+  EXPECT_EQ(outcome.steps, 3);  // the exception came in step 3's completion phase
+  EXPECT_EQ(outcome.message.rfind(m.path() + ":11: error: post_fire of transition 'main/T' raised an exception", 0), 0u)
+      << outcome.message;
+  EXPECT_NE(outcome.message.find("Traceback (most recent call last)"), std::string::npos);
+  EXPECT_NE(outcome.message.find("ZeroDivisionError: division by zero"), std::string::npos);
+  // the trace so far is kept and ends with the error
+  EXPECT_NE(trace.str().find("\"ev\":\"error\""), std::string::npos);
+  // the run stopped at the end of the completion phase: nothing started in step 3
+  EXPECT_EQ(trace.str().find("{\"step\":3,\"t\":3,\"ev\":\"start\""), std::string::npos);
+}
+
+TEST(ScriptErrors, TheTimeoutStopsAnEndlessScript) {
+  ScriptModel m(R"Y(gdpn: 1
+pages:
+  main:
+    places:
+      P: {tokens: 1}
+    transitions:
+      T:
+        pre_fire: |
+          while True:
+              pass
+    arcs:
+      - P -> T
+)Y");
+  core::Diagnostics diags;
+  auto sim = m.open(diags, 0.2);
+  ASSERT_TRUE(sim) << diags.str();
+  const auto outcome = sim->run({});
+  EXPECT_EQ(outcome.reason, StopReason::ScriptError);
+  EXPECT_NE(outcome.message.find("pre_fire of transition 'main/T' ran longer than the script timeout of 0.2 s"),
+            std::string::npos)
+      << outcome.message;
+}
+
+TEST(ScriptDeterminism, ScriptsUsingSimRandomGiveTheSameTraceBytes) {
+  const std::string text = R"Y(gdpn: 1
+settings: {dt: 0.01, seed: 99, until: 20}
+scripts:
+  globals: |
+    made = 0
+pages:
+  main:
+    places:
+      src: {tokens: 1}
+      queue: {capacity: 4}
+      done: {}
+    transitions:
+      make:
+        duration: {exponential: 0.3}
+        pre_fire: |
+          made += 1
+          if sim.random.random() < 0.2:
+              sim.log("burst", made, round(sim.random.uniform(0, 10), 6))
+      serve:
+        duration: {uniform: [0.1, 0.9]}
+        guard: "sim.random.random() < 0.5"
+        post_fire: 'sim.log("served", sim.random.randint(1, 6), sim.random.choice(["a", "b", "c"]))'
+    arcs:
+      - src -> make
+      - make -> src
+      - make -> queue
+      - queue -> serve
+      - serve -> done
+)Y";
+  auto traceOf = [&] {
+    ScriptModel m(text);
+    core::Diagnostics diags;
+    auto sim = m.open(diags);
+    EXPECT_TRUE(sim) << diags.str();
+    std::ostringstream trace;
+    sim->traceTo(trace);
+    sim->run({});
+    return trace.str();
+  };
+  const std::string first = traceOf();
+  EXPECT_EQ(first, traceOf());
+  EXPECT_GT(first.size(), 20000u);
+  EXPECT_EQ(core::fnv1a(first), 0xa8196e328a510251ULL) << std::hex << core::fnv1a(first);
+}
+
+}  // namespace
+}  // namespace gdpn::model
