@@ -155,13 +155,18 @@ class ModelReader {
       f(default_slot, readScript(e, what));
       return;
     }
-    for (const auto& s : r_.entries(e.value, what, {})) {
-      auto slot = net::parseSlot(s.key);
-      if (!slot) {
+    forEachSlot(e.value, what, [&](net::SlotId slot, const Entry& s) { f(slot, readScript(s, what)); });
+  }
+
+  /// Calls `f(slot, entry)` for each key of a map keyed by slot names, reporting other keys.
+  template <class F>
+  void forEachSlot(const YAML::Node& map, const std::string& what, F&& f) {
+    for (const auto& s : r_.entries(map, what, {})) {
+      if (auto slot = net::parseSlot(s.key)) {
+        f(*slot, s);
+      } else {
         r_.error(s.loc, "'" + s.key + "' is not a slot name (a0 ... d7)");
-        continue;
       }
-      f(*slot, readScript(s, what));
     }
   }
 
@@ -242,14 +247,7 @@ class ModelReader {
       f(net::kDefaultSlot, e.value, r_.loc(e.value, e.loc));
       return;
     }
-    for (const auto& s : r_.entries(e.value, what, {})) {
-      auto slot = net::parseSlot(s.key);
-      if (!slot) {
-        r_.error(s.loc, "'" + s.key + "' is not a slot name (a0 ... d7)");
-        continue;
-      }
-      f(*slot, s.value, s.loc);
-    }
+    forEachSlot(e.value, what, [&](net::SlotId slot, const Entry& s) { f(slot, s.value, s.loc); });
   }
 
   std::optional<net::EditorPos> readPos(const YAML::Node& node) {
