@@ -11,6 +11,7 @@
 
 #include "gdpn/core/text.h"
 #include "gdpn/model/model.h"
+#include "model/scene_io.h"
 #include "model/yaml_reader.h"
 
 namespace gdpn::model {
@@ -73,7 +74,7 @@ class ModelReader {
       } else if (e.key == "page_types") {
         readPages(e.value, model.net.page_types, true);
       } else if (e.key == "scene") {
-        model.scene = detail::emitYaml(e.value);
+        model.scene = detail::readScene(e.value, r_, e.loc);
       } else if (e.key == "scripts") {
         if (!r_.expectMap(e.value, "scripts")) continue;
         for (const auto& g : r_.entries(e.value, "scripts", kScriptsKeys)) {

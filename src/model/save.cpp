@@ -8,6 +8,7 @@
 
 #include "gdpn/core/text.h"
 #include "gdpn/model/model.h"
+#include "model/scene_io.h"
 #include "model/yaml_reader.h"
 
 namespace gdpn::model {
@@ -190,10 +191,6 @@ void writePage(YAML::Emitter& out, const net::PageSpec& page, bool type) {
   out << YAML::EndMap;
 }
 
-void writeKept(YAML::Emitter& out, const char* key, const std::string& text) {
-  if (text.empty()) return;
-  out << YAML::Key << key << YAML::Value << YAML::Load(text);
-}
 
 }  // namespace
 
@@ -220,7 +217,10 @@ std::string writeModel(const Model& model) {
     for (const auto& p : model.net.page_types) writePage(out, p, true);
     out << YAML::EndMap;
   }
-  writeKept(out, "scene", model.scene);
+  if (model.scene) {
+    out << YAML::Key << "scene" << YAML::Value;
+    detail::writeScene(out, *model.scene);
+  }
   if (!model.net.globals.empty()) {
     out << YAML::Key << "scripts" << YAML::Value << YAML::BeginMap;
     writeScript(out, "globals", model.net.globals);

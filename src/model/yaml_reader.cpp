@@ -55,12 +55,6 @@ std::optional<std::string> readFile(const std::string& path, core::Diagnostics& 
   return text.str();
 }
 
-std::string emitYaml(const YAML::Node& node) {
-  YAML::Emitter out;
-  out << node;
-  return out.c_str();
-}
-
 core::SourceLoc YamlReader::loc(const YAML::Node& node, const core::SourceLoc& fallback) const {
   const YAML::Mark mark = node.Mark();
   if (mark.is_null() || mark.line < 0) return fallback.file.empty() ? core::SourceLoc{file_, 0, 0} : fallback;

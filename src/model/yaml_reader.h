@@ -25,8 +25,6 @@ std::string describe(const YAML::Node& node);
 std::optional<YAML::Node> parseYaml(const std::string& text, const std::string& file, core::Diagnostics& diags);
 /// Reads a whole file; an unreadable one becomes a diagnostic and nullopt.
 std::optional<std::string> readFile(const std::string& path, core::Diagnostics& diags);
-/// Canonical block-style YAML text of a node.
-std::string emitYaml(const YAML::Node& node);
 
 /// Reads typed values out of a parsed tree, reporting mistakes at their location.
 class YamlReader {

@@ -50,10 +50,14 @@ TEST(RoundTrip, KeepsSceneAndScripts) {
   core::Diagnostics diags;
   auto m = loadModel(std::string(GDPN_SOURCE_DIR) + "/tests/data/good/everything.gdpn.yaml", diags);
   ASSERT_TRUE(m) << diags.str();
-  EXPECT_NE(m->scene.find("Cube"), std::string::npos);
+  ASSERT_TRUE(m->scene);
+  const auto* box = m->scene->find("cell/box");
+  ASSERT_TRUE(box);
+  EXPECT_EQ(box->type().name, "Cube");
+  EXPECT_EQ(box->vec3("size"), (core::Vec3{0.5, 0.5, 0.5}));
   EXPECT_NE(m->net.globals.code.find("count = 0"), std::string::npos);
   const std::string text = writeModel(*m);
-  EXPECT_NE(text.find("scene:"), std::string::npos);
+  EXPECT_NE(text.find("- Cube: {name: box, size: [0.5, 0.5, 0.5]}"), std::string::npos) << text;
   EXPECT_NE(text.find("count = 0"), std::string::npos);
 }
 

@@ -4,11 +4,13 @@
 /// as read from and written to a `.gdpn.yaml` file (docs/format.md).
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "gdpn/core/diagnostics.h"
 #include "gdpn/net/spec.h"
+#include "gdpn/scene/node.h"
 
 namespace gdpn::model {
 
@@ -28,12 +30,12 @@ struct Model {
   std::string description;   ///< free text
   Settings settings;         ///< run settings
   net::NetSpec net;          ///< pages and page types
-  std::string scene;         ///< the `scene` section, kept as YAML text ("" when absent)
+  std::shared_ptr<const scene::Scene> scene;  ///< the `scene` section; null when the file has none
 
   /// Same content (the path and source locations are not compared).
   friend bool operator==(const Model& a, const Model& b) {
     return a.description == b.description && a.settings == b.settings && a.net == b.net &&
-           a.scene == b.scene;
+           (a.scene == b.scene || (a.scene && b.scene && a.scene->sameAs(*b.scene)));
   }
 };
 

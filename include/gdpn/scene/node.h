@@ -1,0 +1,135 @@
+#pragma once
+/// \file
+/// The scene tree: typed nodes with field values, owned by their parents, reachable by path
+/// and by stable handles that notice when their node is gone.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "gdpn/core/diagnostics.h"
+#include "gdpn/core/math.h"
+#include "gdpn/scene/types.h"
+
+namespace gdpn::scene {
+
+/// A stable reference to a node: slot index (low 32 bits) and generation (high 32 bits).
+/// Handles of deleted nodes stop resolving. 0 is never a valid handle.
+using NodeHandle = std::uint64_t;
+
+class Scene;
+
+/// One node of the tree.
+class Node {
+ public:
+  /// Its type.
+  [[nodiscard]] const NodeType& type() const { return *type_; }
+  /// Its name ("" when unnamed); names are unique among siblings.
+  [[nodiscard]] const std::string& name() const { return name_; }
+  /// Its parent (null for the root).
+  [[nodiscard]] Node* parent() const { return parent_; }
+  /// Its children, in order.
+  [[nodiscard]] const std::vector<std::unique_ptr<Node>>& children() const { return children_; }
+  /// Its stable handle.
+  [[nodiscard]] NodeHandle handle() const { return handle_; }
+  /// Its path from the root: names joined by '/', "#i" for an unnamed node (its index among
+  /// its siblings). The root's path is "".
+  [[nodiscard]] std::string path() const;
+  /// The child called `name` (or "#i"), or null.
+  [[nodiscard]] Node* child(std::string_view name) const;
+  /// The node at `path` below this one ("a/b/#0"), or null. ".." goes up a level.
+  [[nodiscard]] Node* find(std::string_view path) const;
+  /// The sibling before or after this one, or null.
+  [[nodiscard]] Node* prev() const;
+  [[nodiscard]] Node* next() const;
+  /// This node's index among its siblings.
+  [[nodiscard]] std::size_t index() const;
+
+  /// The value of field `i` (an index into type().fields).
+  [[nodiscard]] const FieldValue& value(std::size_t i) const { return values_[i]; }
+  /// Sets field `i`; the value's alternative must match the field's kind.
+  void setValue(std::size_t i, FieldValue v) { values_[i] = std::move(v); }
+  /// A number field by name (Float or Int); the field must exist.
+  [[nodiscard]] double number(std::string_view field) const;
+  /// A Vec3 or Color field by name.
+  [[nodiscard]] core::Vec3 vec3(std::string_view field) const;
+  /// An Enum, String or File field by name.
+  [[nodiscard]] const std::string& text(std::string_view field) const;
+  /// A Bool field by name.
+  [[nodiscard]] bool flag(std::string_view field) const;
+  /// True when every field has its default.
+  [[nodiscard]] bool allDefault() const;
+
+  /// This node's own placement: a Transform's translation and rotation, identity otherwise.
+  [[nodiscard]] core::Pose localPose() const;
+  /// A Transform's scale, (1, 1, 1) otherwise.
+  [[nodiscard]] core::Vec3 localScale() const;
+
+  /// Where the node was declared in the model file.
+  core::SourceLoc loc;
+  /// Where each field was written (empty loc for fields left at their default).
+  std::vector<core::SourceLoc> field_locs;
+  /// World placement and accumulated scale, kept by updateTransforms().
+  core::Pose world;
+  core::Vec3 world_scale{1, 1, 1};
+
+ private:
+  friend class Scene;
+  Node(const NodeType& type, std::string name);
+  const NodeType* type_;
+  std::string name_;
+  Node* parent_ = nullptr;
+  std::vector<std::unique_ptr<Node>> children_;
+  std::vector<FieldValue> values_;
+  NodeHandle handle_ = 0;
+};
+
+/// A tree of nodes with a root Group.
+class Scene {
+ public:
+  /// An empty scene whose node types come from `types` (which must outlive it).
+  explicit Scene(const TypeRegistry& types = builtinTypes());
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
+
+  /// The node types.
+  [[nodiscard]] const TypeRegistry& types() const { return types_; }
+  /// The root (a Group named "").
+  [[nodiscard]] Node& root() const { return *root_; }
+  /// Adds a new node of `type` named `name` as the last child of `parent`. Returns null when
+  /// `parent` takes no children or already has a child of that name.
+  Node* create(const NodeType& type, std::string name, Node& parent);
+  /// Removes `node` and its subtree (not the root); their handles stop resolving.
+  void destroy(Node& node);
+  /// Copies the subtree at `source` (from any scene with the same types) under `parent`,
+  /// named `name` (source's own name when empty). Null on a name clash.
+  Node* copy(const Node& source, Node& parent, std::string name = {});
+  /// The node behind a handle, or null when it is gone.
+  [[nodiscard]] Node* resolve(NodeHandle handle) const;
+  /// The node at `path` from the root, or null.
+  [[nodiscard]] Node* find(std::string_view path) const { return root_->find(path); }
+  /// Number of nodes, the root included.
+  [[nodiscard]] std::size_t size() const { return live_; }
+  /// A deep copy of this scene (same types and tree; handles are the copy's own).
+  [[nodiscard]] std::unique_ptr<Scene> clone() const;
+  /// Same tree: types, names, values, in the same order (locations are not compared).
+  [[nodiscard]] bool sameAs(const Scene& other) const;
+
+ private:
+  struct Slot {
+    Node* node = nullptr;
+    std::uint32_t generation = 0;
+  };
+  NodeHandle enroll(Node& node);
+  void release(Node& node);
+
+  const TypeRegistry& types_;
+  std::unique_ptr<Node> root_;
+  std::vector<Slot> slots_;
+  std::vector<std::uint32_t> free_;
+  std::size_t live_ = 0;
+};
+
+}  // namespace gdpn::scene

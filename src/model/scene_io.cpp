@@ -1,0 +1,229 @@
+#include "model/scene_io.h"
+
+#include <cmath>
+
+#include "gdpn/core/text.h"
+
+namespace gdpn::model::detail {
+namespace {
+
+using scene::FieldDesc;
+using scene::FieldKind;
+using scene::FieldValue;
+
+class SceneReader {
+ public:
+  SceneReader(YamlReader& r, scene::Scene& s) : r_(r), scene_(s) {}
+
+  void readList(const YAML::Node& list, scene::Node& parent, const core::SourceLoc& at) {
+    if (!list.IsSequence()) {
+      r_.error(r_.loc(list, at), "a scene is a list of nodes, each written '- Type: {fields}', got " + describe(list));
+      return;
+    }
+    for (const auto& item : list) readNode(item, parent, at);
+  }
+
+ private:
+  void readNode(const YAML::Node& item, scene::Node& parent, const core::SourceLoc& at) {
+    if (!item.IsMap() || item.size() != 1) {
+      r_.error(r_.loc(item, at), "a scene node is written '- Type: {fields}' with one type, got " + describe(item));
+      return;
+    }
+    const auto entries = r_.entries(item, "a scene node", {});
+    if (entries.empty()) return;
+    const Entry& e = entries[0];
+    const scene::NodeType* type = scene_.types().find(e.key);
+    if (!type) {
+      std::vector<std::string> names;
+      for (const auto* t : scene_.types().all()) names.push_back(t->name);
+      r_.error(e.loc, "unknown node type '" + e.key + "'" + core::didYouMean(e.key, names));
+      return;
+    }
+    // the name comes first: it decides whether the node can be made
+    std::string name;
+    if (e.value.IsMap()) {
+      if (const YAML::Node n = e.value["name"]) {
+        if (auto s = r_.string(n, "name")) {
+          if (!core::isIdentifier(*s)) {
+            r_.error(n, "node name '" + *s + "' is not an identifier (letters, digits and '_')");
+          } else if (parent.child(*s)) {
+            r_.error(n, "'" + parent.path() + (parent.path().empty() ? "" : "/") + *s + "' is defined twice");
+            return;
+          } else {
+            name = *s;
+          }
+        }
+      }
+    } else if (!e.value.IsNull()) {
+      r_.error(r_.loc(e.value, e.loc), "the fields of a " + e.key + " are a map, got " + describe(e.value));
+      return;
+    }
+    if (!parent.type().has_children) return;  // reported with the parent's 'children'
+    scene::Node* node = scene_.create(*type, name, parent);
+    if (!node) return;
+    node->loc = e.loc;
+    if (!e.value.IsMap()) return;
+
+    std::vector<std::string> keys = {"name", "children"};
+    for (const auto* f : type->fields) keys.push_back(f->name);
+    for (const auto& field : r_.entries(e.value, "a " + e.key, keys)) {
+      if (field.key == "name") continue;
+      if (field.key == "children") {
+        if (!type->has_children) {
+          r_.error(field.loc, "a " + e.key + " has no children");
+        } else {
+          readList(field.value, *node, field.loc);
+        }
+        continue;
+      }
+      const auto i = static_cast<std::size_t>(type->fieldIndex(field.key));
+      if (auto v = readValue(*type->fields[i], field)) {
+        node->setValue(i, std::move(*v));
+        node->field_locs[i] = r_.loc(field.value, field.loc);
+      }
+    }
+  }
+
+  std::optional<double> number(const YAML::Node& n, const FieldDesc& f) {
+    auto v = r_.number(n, f.name);
+    if (!v) return std::nullopt;
+    if (!std::isfinite(*v) && f.max < 1e300) {
+      r_.error(n, "'" + f.name + "' must be a finite number");
+      return std::nullopt;
+    }
+    if (*v < f.min || *v > f.max) {
+      r_.error(n, "'" + f.name + "' must lie in [" + core::formatDouble(f.min) + ", " + core::formatDouble(f.max) +
+                      "], got " + core::formatDouble(*v));
+      return std::nullopt;
+    }
+    return v;
+  }
+
+  template <std::size_t N>
+  std::optional<std::array<double, N>> numbers(const YAML::Node& n, const FieldDesc& f, const char* what) {
+    if (!n.IsSequence() || n.size() != N) {
+      r_.error(n, "'" + f.name + "' expects " + what + ", got " + describe(n));
+      return std::nullopt;
+    }
+    std::array<double, N> out{};
+    for (std::size_t k = 0; k < N; ++k) {
+      auto v = number(n[k], f);
+      if (!v) return std::nullopt;
+      out[k] = *v;
+    }
+    return out;
+  }
+
+  std::optional<FieldValue> readValue(const FieldDesc& f, const Entry& e) {
+    const YAML::Node& n = e.value;
+    switch (f.kind) {
+      case FieldKind::Bool: {
+        bool b = false;
+        if (n.IsScalar() && n.Tag() != "!" && YAML::convert<bool>::decode(n, b)) return b;
+        r_.error(r_.loc(n, e.loc), "'" + f.name + "' expects true or false, got " + describe(n));
+        return std::nullopt;
+      }
+      case FieldKind::Int: {
+        auto v = r_.integer(n, f.name);
+        if (!v) return std::nullopt;
+        if (static_cast<double>(*v) < f.min || static_cast<double>(*v) > f.max) {
+          r_.error(n, "'" + f.name + "' must lie in [" + core::formatDouble(f.min) + ", " +
+                          core::formatDouble(f.max) + "], got " + std::to_string(*v));
+          return std::nullopt;
+        }
+        return *v;
+      }
+      case FieldKind::Float:
+        if (auto v = number(n, f)) return *v;
+        return std::nullopt;
+      case FieldKind::Vec3:
+      case FieldKind::Color:
+        if (auto v = numbers<3>(n, f, f.kind == FieldKind::Color ? "a colour [r, g, b]" : "[x, y, z]")) return *v;
+        return std::nullopt;
+      case FieldKind::Rotation: {
+        auto v = numbers<4>(n, f, "[axis x, axis y, axis z, angle in degrees]");
+        if (!v) return std::nullopt;
+        if ((*v)[0] == 0 && (*v)[1] == 0 && (*v)[2] == 0 && (*v)[3] != 0) {
+          r_.error(n, "'" + f.name + "' needs an axis that is not zero");
+          return std::nullopt;
+        }
+        return *v;
+      }
+      case FieldKind::Enum: {
+        auto s = r_.string(n, f.name);
+        if (!s) return std::nullopt;
+        if (std::find(f.choices.begin(), f.choices.end(), *s) == f.choices.end()) {
+          std::string list;
+          for (const auto& c : f.choices) list += (list.empty() ? "" : ", ") + c;
+          r_.error(n, "'" + f.name + "' is one of " + list + ", got \"" + *s + "\"" + core::didYouMean(*s, f.choices));
+          return std::nullopt;
+        }
+        return *s;
+      }
+      case FieldKind::String:
+      case FieldKind::File:
+        if (auto s = r_.string(n, f.name)) return *s;
+        return std::nullopt;
+    }
+    return std::nullopt;
+  }
+
+  YamlReader& r_;
+  scene::Scene& scene_;
+};
+
+void writeValue(YAML::Emitter& out, const FieldValue& v) {
+  if (const auto* b = std::get_if<bool>(&v)) {
+    out << *b;
+  } else if (const auto* i = std::get_if<std::int64_t>(&v)) {
+    out << *i;
+  } else if (const auto* d = std::get_if<double>(&v)) {
+    out << core::formatDouble(*d);
+  } else if (const auto* a3 = std::get_if<std::array<double, 3>>(&v)) {
+    out << YAML::Flow << YAML::BeginSeq;
+    for (double x : *a3) out << core::formatDouble(x);
+    out << YAML::EndSeq;
+  } else if (const auto* a4 = std::get_if<std::array<double, 4>>(&v)) {
+    out << YAML::Flow << YAML::BeginSeq;
+    for (double x : *a4) out << core::formatDouble(x);
+    out << YAML::EndSeq;
+  } else {
+    out << std::get<std::string>(v);
+  }
+}
+
+void writeNode(YAML::Emitter& out, const scene::Node& node) {
+  const bool block = !node.children().empty();
+  out << YAML::BeginMap << YAML::Key << node.type().name << YAML::Value << (block ? YAML::Block : YAML::Flow)
+      << YAML::BeginMap;
+  if (!node.name().empty()) out << YAML::Key << "name" << YAML::Value << node.name();
+  for (std::size_t i = 0; i < node.type().fields.size(); ++i) {
+    const FieldDesc& f = *node.type().fields[i];
+    if (node.value(i) == f.initial) continue;
+    out << YAML::Key << f.name << YAML::Value;
+    writeValue(out, node.value(i));
+  }
+  if (block) {
+    out << YAML::Key << "children" << YAML::Value << YAML::BeginSeq;
+    for (const auto& c : node.children()) writeNode(out, *c);
+    out << YAML::EndSeq;
+  }
+  out << YAML::EndMap << YAML::EndMap;
+}
+
+}  // namespace
+
+std::shared_ptr<scene::Scene> readScene(const YAML::Node& list, YamlReader& r, const core::SourceLoc& at) {
+  auto s = std::make_shared<scene::Scene>();
+  if (list.IsNull()) return s;
+  SceneReader(r, *s).readList(list, s->root(), at);
+  return s;
+}
+
+void writeScene(YAML::Emitter& out, const scene::Scene& scene) {
+  out << YAML::BeginSeq;
+  for (const auto& c : scene.root().children()) writeNode(out, *c);
+  out << YAML::EndSeq;
+}
+
+}  // namespace gdpn::model::detail

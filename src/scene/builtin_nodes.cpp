@@ -1,0 +1,130 @@
+// The built-in node types, each described once. Units: metres, kilograms, seconds, degrees
+// for angles in files (the physics converts). World frame: right-handed, Z up.
+
+#include "gdpn/scene/types.h"
+
+namespace gdpn::scene {
+namespace {
+
+using V3 = std::array<double, 3>;
+using V4 = std::array<double, 4>;
+
+FieldDesc f(std::string name, FieldKind kind, FieldValue initial, std::string unit, std::string doc,
+            double min = -1e300, double max = 1e300) {
+  FieldDesc d;
+  d.name = std::move(name);
+  d.kind = kind;
+  d.initial = std::move(initial);
+  d.unit = std::move(unit);
+  d.doc = std::move(doc);
+  d.min = min;
+  d.max = max;
+  return d;
+}
+
+FieldDesc choice(std::string name, std::vector<std::string> choices, std::string doc) {
+  FieldDesc d;
+  d.name = std::move(name);
+  d.kind = FieldKind::Enum;
+  d.initial = choices.front();
+  d.choices = std::move(choices);
+  d.doc = std::move(doc);
+  return d;
+}
+
+NodeType type(std::string name, Category category, bool children, std::string doc, std::vector<FieldDesc> own) {
+  NodeType t;
+  t.name = std::move(name);
+  t.category = category;
+  t.has_children = children;
+  t.doc = std::move(doc);
+  t.own = std::move(own);
+  return t;
+}
+
+constexpr double kInf = 1e300;
+
+}  // namespace
+
+void registerBuiltinNodes(TypeRegistry& r) {
+  using K = FieldKind;
+  // structure
+  r.add(type("Group", Category::Group, true, "holds child nodes", {}));
+  r.add(type("Transform", Category::Group, true, "places its children: scale, then rotate, then translate",
+             {f("translation", K::Vec3, V3{0, 0, 0}, "m", "offset from the parent"),
+              f("rotation", K::Rotation, V4{0, 0, 1, 0}, "axis, deg", "axis and angle of rotation"),
+              f("scale", K::Vec3, V3{1, 1, 1}, "", "scale factors along x, y, z", 1e-9, kInf)}),
+        "Group");
+  // looks
+  r.add(type("Material", Category::Look, false, "how the shapes after it look, and how they touch",
+             {f("ambient", K::Color, V3{0.2, 0.2, 0.2}, "", "ambient reflectance", 0, 1),
+              f("diffuse", K::Color, V3{0.8, 0.8, 0.8}, "", "diffuse colour", 0, 1),
+              f("specular", K::Color, V3{0, 0, 0}, "", "specular colour", 0, 1),
+              f("emissive", K::Color, V3{0, 0, 0}, "", "emitted colour", 0, 1),
+              f("shininess", K::Float, 0.2, "", "0 dull to 1 mirror-like", 0, 1),
+              f("transparency", K::Float, 0.0, "", "0 opaque to 1 invisible", 0, 1),
+              f("friction", K::Float, 0.8, "", "Coulomb friction coefficient", 0, kInf),
+              f("bounce", K::Float, 0.0, "", "restitution: 0 no bounce to 1 elastic", 0, 1)}));
+  r.add(type("Light", Category::Look, false, "a light, placed by its parents",
+             {choice("kind", {"directional", "point", "spot"}, "what sort of light"),
+              f("color", K::Color, V3{1, 1, 1}, "", "colour", 0, 1),
+              f("intensity", K::Float, 1.0, "", "brightness factor", 0, kInf),
+              f("direction", K::Vec3, V3{-1, -1, -2}, "", "where it shines (directional, spot)"),
+              f("location", K::Vec3, V3{0, 0, 5}, "m", "where it is (point, spot)"),
+              f("cutoff", K::Float, 30.0, "deg", "half-angle of a spot's cone", 0, 90)}));
+  r.add(type("Camera", Category::Look, false, "a viewpoint",
+             {choice("kind", {"static", "orbit"}, "static, or orbiting its target"),
+              f("position", K::Vec3, V3{5, -5, 4}, "m", "eye position"),
+              f("target", K::Vec3, V3{0, 0, 0}, "m", "the point looked at"),
+              f("up", K::Vec3, V3{0, 0, 1}, "", "which way is up"),
+              f("fov", K::Float, 45.0, "deg", "vertical field of view", 1, 179)}));
+  r.add(type("Fog", Category::Look, false, "fog over the whole scene",
+             {choice("kind", {"linear", "exponential"}, "how it thickens"),
+              f("color", K::Color, V3{0.7, 0.7, 0.7}, "", "colour", 0, 1),
+              f("visibility", K::Float, 50.0, "m", "distance at which things vanish", 0, kInf)}));
+  // shapes: the geometry of what they stand in; under a Body they are part of it
+  r.add(type("Cube", Category::Shape, false, "a box centred on its origin",
+             {f("size", K::Vec3, V3{1, 1, 1}, "m", "edge lengths along x, y, z", 0, kInf)}));
+  r.add(type("Sphere", Category::Shape, false, "a sphere centred on its origin",
+             {f("radius", K::Float, 0.5, "m", "radius", 0, kInf)}));
+  r.add(type("Cylinder", Category::Shape, false, "a cylinder along z, centred on its origin",
+             {f("radius", K::Float, 0.5, "m", "radius", 0, kInf), f("height", K::Float, 1.0, "m", "height", 0, kInf)}));
+  r.add(type("Cone", Category::Shape, false, "a cone along z, base at -height/2, tip at +height/2",
+             {f("radius", K::Float, 0.5, "m", "base radius", 0, kInf), f("height", K::Float, 1.0, "m", "height", 0, kInf)}));
+  r.add(type("Plane", Category::Shape, false, "an endless flat ground through its origin",
+             {f("normal", K::Vec3, V3{0, 0, 1}, "", "which way the plane faces")}));
+  r.add(type("Mesh", Category::Shape, false, "triangles from a file",
+             {f("file", K::File, std::string(), "", "mesh file (obj, stl, 3ds, gltf, dae, ply, wrl, iv)"),
+              f("scale", K::Vec3, V3{1, 1, 1}, "", "scale factors", 1e-9, kInf),
+              choice("collision", {"trimesh", "box", "convex"}, "what the physics collides with")}));
+  // dynamics
+  r.add(type("World", Category::Dynamics, false, "settings of the rigid-body physics",
+             {f("gravity", K::Vec3, V3{0, 0, -9.81}, "m/s^2", "gravity"),
+              f("erp", K::Float, 0.2, "", "error reduction per step", 0, 1),
+              f("cfm", K::Float, 1e-5, "", "constraint force mixing", 0, 1),
+              f("substeps", K::Int, std::int64_t{1}, "", "physics steps per net step", 1, 1000),
+              f("auto_disable", K::Bool, true, "", "let bodies at rest sleep")}));
+  r.add(type("Body", Category::Dynamics, true, "a rigid body made of the shapes below it",
+             {f("mass", K::Float, 0.0, "kg", "total mass; 0 means: from density and shapes", 0, kInf),
+              f("density", K::Float, 1000.0, "kg/m^3", "density, used when mass is 0", 0, kInf),
+              f("linear_damping", K::Float, 0.0, "", "share of linear velocity lost per second", 0, 1),
+              f("angular_damping", K::Float, 0.0, "", "share of angular velocity lost per second", 0, 1)}));
+  r.add(type("Joint", Category::Dynamics, true, "joins its parent body to its child body (or a body to the world)",
+             {choice("kind", {"hinge", "slider", "ball", "universal", "hinge2", "fixed"}, "what motion it allows"),
+              f("anchor", K::Vec3, V3{0, 0, 0}, "m", "the joint's point, in the joint's frame"),
+              f("axis1", K::Vec3, V3{0, 0, 1}, "", "first axis"),
+              f("axis2", K::Vec3, V3{1, 0, 0}, "", "second axis (universal, hinge2)"),
+              f("lo1", K::Float, -kInf, "deg or m", "lower limit on axis 1"),
+              f("hi1", K::Float, kInf, "deg or m", "upper limit on axis 1"),
+              f("lo2", K::Float, -kInf, "deg", "lower limit on axis 2"),
+              f("hi2", K::Float, kInf, "deg", "upper limit on axis 2"),
+              f("vel1", K::Float, 0.0, "deg/s or m/s", "motor target velocity on axis 1"),
+              f("fmax1", K::Float, 0.0, "N m or N", "motor's greatest force on axis 1 (0: no motor)", 0, kInf),
+              f("vel2", K::Float, 0.0, "deg/s", "motor target velocity on axis 2"),
+              f("fmax2", K::Float, 0.0, "N m", "motor's greatest force on axis 2", 0, kInf)}));
+  r.add(type("Conveyor", Category::Dynamics, false, "makes the shapes beside it move what touches them",
+             {f("speed", K::Float, 1.0, "m/s", "belt speed"),
+              f("direction", K::Vec3, V3{1, 0, 0}, "", "belt direction, in the conveyor's frame")}));
+}
+
+}  // namespace gdpn::scene

@@ -1,0 +1,213 @@
+#include "gdpn/scene/node.h"
+
+#include <algorithm>
+
+#include "gdpn/core/assert.h"
+
+namespace gdpn::scene {
+namespace {
+
+template <class T>
+const T& as(const FieldValue& v) {
+  GDPN_ASSERT(std::holds_alternative<T>(v), "field read as the kind it is declared with");
+  return std::get<T>(v);
+}
+
+}  // namespace
+
+Node::Node(const NodeType& type, std::string name) : type_(&type), name_(std::move(name)) {
+  values_.reserve(type.fields.size());
+  for (const auto* f : type.fields) values_.push_back(f->initial);
+  field_locs.resize(type.fields.size());
+}
+
+std::size_t Node::index() const {
+  if (!parent_) return 0;
+  const auto& sib = parent_->children_;
+  for (std::size_t i = 0; i < sib.size(); ++i) {
+    if (sib[i].get() == this) return i;
+  }
+  return 0;
+}
+
+std::string Node::path() const {
+  if (!parent_) return {};
+  const std::string segment = name_.empty() ? "#" + std::to_string(index()) : name_;
+  const std::string up = parent_->path();
+  return up.empty() ? segment : up + "/" + segment;
+}
+
+Node* Node::child(std::string_view name) const {
+  if (!name.empty() && name[0] == '#') {
+    std::size_t i = 0;
+    for (char c : name.substr(1)) {
+      if (c < '0' || c > '9') return nullptr;
+      i = i * 10 + static_cast<std::size_t>(c - '0');
+      if (i > children_.size()) return nullptr;
+    }
+    return i < children_.size() && name.size() > 1 ? children_[i].get() : nullptr;
+  }
+  for (const auto& c : children_) {
+    if (c->name_ == name) return c.get();
+  }
+  return nullptr;
+}
+
+Node* Node::find(std::string_view path) const {
+  Node* at = const_cast<Node*>(this);
+  while (at && !path.empty()) {
+    const auto slash = path.find('/');
+    const std::string_view segment = path.substr(0, slash);
+    at = segment == ".." ? at->parent_ : segment.empty() ? at : at->child(segment);
+    path = slash == std::string_view::npos ? std::string_view() : path.substr(slash + 1);
+  }
+  return at;
+}
+
+Node* Node::prev() const {
+  if (!parent_) return nullptr;
+  const auto i = index();
+  return i > 0 ? parent_->children_[i - 1].get() : nullptr;
+}
+
+Node* Node::next() const {
+  if (!parent_) return nullptr;
+  const auto i = index();
+  return i + 1 < parent_->children_.size() ? parent_->children_[i + 1].get() : nullptr;
+}
+
+double Node::number(std::string_view field) const {
+  const auto& v = values_[static_cast<std::size_t>(type_->fieldIndex(field))];
+  if (std::holds_alternative<std::int64_t>(v)) return static_cast<double>(std::get<std::int64_t>(v));
+  return as<double>(v);
+}
+
+core::Vec3 Node::vec3(std::string_view field) const {
+  const auto& a = as<std::array<double, 3>>(values_[static_cast<std::size_t>(type_->fieldIndex(field))]);
+  return {a[0], a[1], a[2]};
+}
+
+const std::string& Node::text(std::string_view field) const {
+  return as<std::string>(values_[static_cast<std::size_t>(type_->fieldIndex(field))]);
+}
+
+bool Node::flag(std::string_view field) const {
+  return as<bool>(values_[static_cast<std::size_t>(type_->fieldIndex(field))]);
+}
+
+bool Node::allDefault() const {
+  for (std::size_t i = 0; i < values_.size(); ++i) {
+    if (!(values_[i] == type_->fields[i]->initial)) return false;
+  }
+  return true;
+}
+
+core::Pose Node::localPose() const {
+  const int t = type_->fieldIndex("translation");
+  const int r = type_->fieldIndex("rotation");
+  if (t < 0 || r < 0) return {};
+  const auto& tr = as<std::array<double, 3>>(values_[static_cast<std::size_t>(t)]);
+  const auto& rot = as<std::array<double, 4>>(values_[static_cast<std::size_t>(r)]);
+  core::Pose p;
+  p.position = {tr[0], tr[1], tr[2]};
+  const core::Vec3 axis{rot[0], rot[1], rot[2]};
+  if (axis.length() > 0 && rot[3] != 0) p.rotation = core::Quat::axisAngle(axis, core::radians(rot[3]));
+  return p;
+}
+
+core::Vec3 Node::localScale() const {
+  const int s = type_->fieldIndex("scale");
+  if (s < 0 || type_->category != Category::Group) return {1, 1, 1};
+  const auto& a = as<std::array<double, 3>>(values_[static_cast<std::size_t>(s)]);
+  return {a[0], a[1], a[2]};
+}
+
+Scene::Scene(const TypeRegistry& types) : types_(types) {
+  const NodeType* group = types_.find("Group");
+  GDPN_ASSERT(group != nullptr, "a scene's registry has the Group type");
+  root_.reset(new Node(*group, ""));
+  enroll(*root_);
+}
+
+NodeHandle Scene::enroll(Node& node) {
+  std::uint32_t index = 0;
+  if (!free_.empty()) {
+    index = free_.back();
+    free_.pop_back();
+  } else {
+    index = static_cast<std::uint32_t>(slots_.size());
+    slots_.push_back({nullptr, 1});
+  }
+  slots_[index].node = &node;
+  node.handle_ = (NodeHandle{slots_[index].generation} << 32) | index;
+  ++live_;
+  return node.handle_;
+}
+
+void Scene::release(Node& node) {
+  for (auto& c : node.children_) release(*c);
+  const auto index = static_cast<std::uint32_t>(node.handle_);
+  slots_[index].node = nullptr;
+  ++slots_[index].generation;
+  free_.push_back(index);
+  --live_;
+}
+
+Node* Scene::create(const NodeType& type, std::string name, Node& parent) {
+  if (!parent.type_->has_children) return nullptr;
+  if (!name.empty() && parent.child(name)) return nullptr;
+  std::unique_ptr<Node> node(new Node(type, std::move(name)));
+  node->parent_ = &parent;
+  enroll(*node);
+  parent.children_.push_back(std::move(node));
+  return parent.children_.back().get();
+}
+
+void Scene::destroy(Node& node) {
+  GDPN_ASSERT(node.parent_ != nullptr, "the root is not destroyed");
+  release(node);
+  auto& sib = node.parent_->children_;
+  sib.erase(std::find_if(sib.begin(), sib.end(), [&](const auto& c) { return c.get() == &node; }));
+}
+
+Node* Scene::copy(const Node& source, Node& parent, std::string name) {
+  Node* made = create(source.type(), name.empty() ? source.name_ : std::move(name), parent);
+  if (!made) return nullptr;
+  made->values_ = source.values_;
+  made->field_locs = source.field_locs;
+  made->loc = source.loc;
+  for (const auto& c : source.children_) copy(*c, *made);
+  return made;
+}
+
+Node* Scene::resolve(NodeHandle handle) const {
+  const auto index = static_cast<std::uint32_t>(handle);
+  const auto generation = static_cast<std::uint32_t>(handle >> 32);
+  if (index >= slots_.size() || slots_[index].generation != generation) return nullptr;
+  return slots_[index].node;
+}
+
+std::unique_ptr<Scene> Scene::clone() const {
+  auto out = std::make_unique<Scene>(types_);
+  for (const auto& c : root_->children_) out->copy(*c, out->root());
+  return out;
+}
+
+namespace {
+
+bool sameTree(const Node& a, const Node& b) {
+  if (&a.type() != &b.type() || a.name() != b.name() || a.children().size() != b.children().size()) return false;
+  for (std::size_t i = 0; i < a.type().fields.size(); ++i) {
+    if (!(a.value(i) == b.value(i))) return false;
+  }
+  for (std::size_t i = 0; i < a.children().size(); ++i) {
+    if (!sameTree(*a.children()[i], *b.children()[i])) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool Scene::sameAs(const Scene& other) const { return sameTree(*root_, *other.root_); }
+
+}  // namespace gdpn::scene
