@@ -50,8 +50,9 @@ int check(const std::string& arg) {
   std::shared_ptr<const gdpn::net::Net> net;
   std::unique_ptr<model::Simulation> sim;
   if (m) net = gdpn::net::compile(m->net, diags);
-  // scripts are checked too: compiled (syntax), their files and functions found, globals run
-  if (net && net->scripted()) sim = model::Simulation::create(*m, diags);
+  // scripts and the plant are checked too: scripts compiled, their files and functions found,
+  // globals run; bodies, joints and mesh files made ready
+  if (net && (net->scripted() || m->scene)) sim = model::Simulation::create(*m, diags);
   diags.print(std::cerr);
   if (diags.hasErrors()) {
     std::cerr << diags.errorCount() << (diags.errorCount() == 1 ? " error\n" : " errors\n");

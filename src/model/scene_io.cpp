@@ -91,9 +91,8 @@ class SceneReader {
       r_.error(n, "'" + f.name + "' must be a finite number");
       return std::nullopt;
     }
-    if (*v < f.min || *v > f.max) {
-      r_.error(n, "'" + f.name + "' must lie in [" + core::formatDouble(f.min) + ", " + core::formatDouble(f.max) +
-                      "], got " + core::formatDouble(*v));
+    if (auto why = f.rangeError(*v); !why.empty()) {
+      r_.error(n, why);
       return std::nullopt;
     }
     return v;
@@ -126,9 +125,8 @@ class SceneReader {
       case FieldKind::Int: {
         auto v = r_.integer(n, f.name);
         if (!v) return std::nullopt;
-        if (static_cast<double>(*v) < f.min || static_cast<double>(*v) > f.max) {
-          r_.error(n, "'" + f.name + "' must lie in [" + core::formatDouble(f.min) + ", " +
-                          core::formatDouble(f.max) + "], got " + std::to_string(*v));
+        if (auto why = f.rangeError(static_cast<double>(*v)); !why.empty()) {
+          r_.error(n, why);
           return std::nullopt;
         }
         return *v;

@@ -1,6 +1,7 @@
 #include "gdpn/model/simulation.h"
 
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 
 #include "gdpn/core/text.h"
@@ -20,6 +21,27 @@ const char* stopReasonName(StopReason reason) {
   return "?";
 }
 
+namespace {
+
+/// Where the node token `name` is written in the model (for messages); the place's location
+/// of a page type's token stands for all its instances.
+core::SourceLoc tokenLoc(const net::NetSpec& spec, const std::string& name) {
+  for (const auto* pages : {&spec.pages, &spec.page_types}) {
+    for (const auto& page : *pages) {
+      for (const auto& place : page.places) {
+        for (const auto& slot : place.nodes) {
+          for (const auto& n : slot.nodes) {
+            if (name == n || name.ends_with("/" + n)) return slot.loc;
+          }
+        }
+      }
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
 std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnostics& diags,
                                                std::optional<std::uint64_t> seed, double script_timeout_s) {
   auto net = net::compile(model.net, diags);
@@ -28,7 +50,27 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
   sim->model_ = model;
   sim->net_ = std::move(net);
   sim->seed_ = seed.value_or(model.settings.seed);
-  sim->kernel_ = std::make_unique<net::Kernel>(sim->net_, net::KernelSettings{model.settings.dt, sim->seed_});
+  // the plant: the run's own copy of the scene, and its physics
+  if (model.scene && !model.scene->root().children().empty()) {
+    sim->scene_ = model.scene->clone();
+    const auto dir = std::filesystem::path(model.path).parent_path().string();
+    sim->physics_ = physics::World::create(*sim->scene_, dir, sim->seed_, diags);
+    if (!sim->physics_) return nullptr;
+  }
+  net::KernelSettings settings{model.settings.dt, sim->seed_, {}};
+  if (sim->scene_) {
+    // node tokens are scene nodes: each name in an initial marking is a path in the scene
+    for (const auto& name : sim->net_->nodeNames()) {
+      const scene::Node* node = sim->scene_->find(name);
+      if (!node) {
+        diags.error(tokenLoc(model.net, name), "node token '" + name + "' names no node of the scene");
+        continue;
+      }
+      settings.node_refs.push_back(node->handle());
+    }
+    if (diags.hasErrors()) return nullptr;
+  }
+  sim->kernel_ = std::make_unique<net::Kernel>(sim->net_, settings);
   sim->stats_ = std::make_unique<net::StatsCollector>(*sim->net_);
   sim->kernel_->addObserver(sim->stats_.get());
   if (sim->net_->scripted()) {
@@ -39,6 +81,8 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
       if (self->trace_) self->trace_->event(self->kernel_->steps(), "log", "\"text\":" + core::jsonQuote(text));
     };
     callbacks.node_name = [self](net::NodeRef r) { return self->nodeName(r); };
+    callbacks.plant = sim->scene_.get();
+    callbacks.physics = sim->physics_.get();
     sim->engine_ = script::Engine::create(*sim->net_, *sim->kernel_, model.path, {script_timeout_s},
                                           std::move(callbacks), diags);
     if (!sim->engine_) return nullptr;
@@ -68,6 +112,10 @@ std::optional<RunOutcome> Simulation::scriptHalt() const {
 }
 
 std::string Simulation::nodeName(net::NodeRef ref) const {
+  if (scene_) {
+    const scene::Node* node = scene_->resolve(ref);
+    return node ? node->path() : "(deleted node)";
+  }
   const auto names = net_->nodeNames();
   return ref < names.size() ? names[ref] : "#" + std::to_string(ref);
 }
@@ -87,8 +135,9 @@ void Simulation::start() {
 
 void Simulation::step() {
   if (!started_) start();
-  // phases 1 and 2 (world, sensors) arrive with the plant
   kernel_->beginStep();
+  // phase 1: the world advances; phase 2 (sensors) arrives with the sensors
+  if (physics_) physics_->step(kernel_->dt());
   kernel_->completeOccurrences();
   // a script that failed stops the run at the end of its phase
   if (engine_ && engine_->halted() && engine_->halt() != script::Halt::Stop) return;
@@ -115,7 +164,8 @@ RunOutcome Simulation::run(const RunLimits& limits, const ProgressFn& progress,
       outcome = *halt;
       break;
     }
-    if (kernel_->dead()) {
+    // a dead net ends the run unless the plant is still moving
+    if (kernel_->dead() && (!physics_ || physics_->awakeCount() == 0)) {
       outcome.reason = StopReason::Dead;
       break;
     }

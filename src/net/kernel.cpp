@@ -50,7 +50,10 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
     if (slots[ps].kind != SlotKind::Node) continue;
     st.fifo = static_cast<std::int32_t>(fifos_.size());
     auto& fifo = fifos_.emplace_back();
-    for (auto i = slots[ps].nodes_begin; i < slots[ps].nodes_end; ++i) fifo.push_back(initial_nodes[i]);
+    for (auto i = slots[ps].nodes_begin; i < slots[ps].nodes_end; ++i) {
+      const auto name = initial_nodes[i];
+      fifo.push_back(settings.node_refs.empty() ? NodeRef{name} : settings.node_refs[name]);
+    }
   }
 
   // transitions: packed firing data, and the count of terms that do not hold

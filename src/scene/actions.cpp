@@ -5,13 +5,15 @@
 namespace gdpn::scene {
 
 void traverse(Node& node, const std::function<void(Node&, const TraversalState&)>& visit, TraversalState state) {
+  // a body the physics moves is where the physics says, whatever its parents say
+  if (node.dynamic_pose) state.pose = *node.dynamic_pose;
   visit(node, state);
   if (node.children().empty()) return;
   // the node's own placement holds for its children; a Material among them holds for the
   // siblings after it
   TraversalState inner = state;
   const core::Vec3 s = node.localScale();
-  core::Pose local = node.localPose();
+  core::Pose local = node.dynamic_pose ? core::Pose{} : node.localPose();
   local.position = local.position.times(state.scale);
   inner.pose = state.pose * local;
   inner.scale = state.scale.times(s);

@@ -1,6 +1,7 @@
 #include "gdpn/scene/types.h"
 
 #include "gdpn/core/assert.h"
+#include "gdpn/core/text.h"
 
 namespace gdpn::scene {
 
@@ -17,6 +18,15 @@ const char* fieldKindName(FieldKind kind) {
     case FieldKind::File: return "file";
   }
   return "?";
+}
+
+std::string FieldDesc::rangeError(double x) const {
+  if (x >= min && x <= max) return {};
+  const bool low = min > -1e299, high = max < 1e299;
+  std::string rule = low && high ? "must lie in [" + core::formatDouble(min) + ", " + core::formatDouble(max) + "]"
+                     : low       ? "must be at least " + core::formatDouble(min)
+                                 : "must be at most " + core::formatDouble(max);
+  return "'" + name + "' " + rule + ", got " + core::formatDouble(x);
 }
 
 int NodeType::fieldIndex(std::string_view field) const {

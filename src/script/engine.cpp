@@ -169,6 +169,10 @@ struct Engine::Impl : detail::Context {
   void log(const std::string& text) override {
     if (callbacks.log) callbacks.log(text);
   }
+  scene::Node* sceneNode(net::NodeRef ref) const override {
+    return callbacks.plant ? callbacks.plant->resolve(ref) : nullptr;
+  }
+  physics::World* physicsWorld() const override { return callbacks.physics; }
   void stop(const std::string& reason) override {
     if (halt != Halt::None) return;
     halt = Halt::Stop;

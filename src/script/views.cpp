@@ -4,6 +4,8 @@
 
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "gdpn/core/text.h"
@@ -88,6 +90,101 @@ std::int64_t count(const SlotView& s) {
   return n;
 }
 
+/// The scene node behind a view; raises when there is no scene or it was deleted.
+scene::Node& sceneNode(const NodeView& v) {
+  scene::Node* n = v.r.get().sceneNode(v.ref);
+  if (!n) throw py::value_error("node " + v.r.get().nodeName(v.ref) + " is not in the scene (deleted, or no scene)");
+  return *n;
+}
+
+physics::World& world(const NodeView& v) {
+  physics::World* w = v.r.get().physicsWorld();
+  if (!w) throw py::value_error("the model has no physics");
+  if (!w->isBody(sceneNode(v)) && sceneNode(v).type().name != "Joint") {
+    // a node inside a body acts for that body; anything else is an error
+    for (const scene::Node* p = sceneNode(v).parent(); p; p = p->parent()) {
+      if (w->isBody(*p)) return *w;
+    }
+    throw py::value_error("node " + v.r.get().nodeName(v.ref) + " is not part of a body");
+  }
+  return *w;
+}
+
+py::object related(const NodeView& v, const scene::Node* n) {
+  return n ? v.r.get().nodeView(n->handle()) : py::none();
+}
+
+core::Vec3 vec(const py::sequence& s) {
+  if (py::len(s) != 3) throw py::value_error("expects three numbers (x, y, z)");
+  return {s[0].cast<double>(), s[1].cast<double>(), s[2].cast<double>()};
+}
+
+/// A field's value for Python: bool, int, float, tuple or str.
+py::object getField(const NodeView& v, const std::string& name) {
+  const scene::Node& n = sceneNode(v);
+  const int i = n.type().fieldIndex(name);
+  if (i < 0) {
+    std::vector<std::string> names;
+    for (const auto* f : n.type().fields) names.push_back(f->name);
+    throw py::attribute_error("a " + n.type().name + " has no field '" + name + "'" + core::didYouMean(name, names));
+  }
+  return std::visit(
+      [](const auto& x) -> py::object {
+        using T = std::decay_t<decltype(x)>;
+        if constexpr (std::is_same_v<T, std::array<double, 3>>) return py::make_tuple(x[0], x[1], x[2]);
+        else if constexpr (std::is_same_v<T, std::array<double, 4>>) return py::make_tuple(x[0], x[1], x[2], x[3]);
+        else return py::cast(x);
+      },
+      n.value(static_cast<std::size_t>(i)));
+}
+
+/// Sets a field from Python, with the same checks as the model file.
+void setField(const NodeView& v, const std::string& name, const py::object& value) {
+  scene::Node& n = sceneNode(v);
+  const int i = n.type().fieldIndex(name);
+  if (i < 0) {
+    std::vector<std::string> names;
+    for (const auto* f : n.type().fields) names.push_back(f->name);
+    throw py::attribute_error("a " + n.type().name + " has no field '" + name + "'" + core::didYouMean(name, names));
+  }
+  const scene::FieldDesc& f = *n.type().fields[static_cast<std::size_t>(i)];
+  auto range = [&](double x) {
+    if (auto why = f.rangeError(x); !why.empty()) throw py::value_error(why);
+    return x;
+  };
+  scene::FieldValue out;
+  switch (f.kind) {
+    case scene::FieldKind::Bool: out = value.cast<bool>(); break;
+    case scene::FieldKind::Int: out = static_cast<std::int64_t>(range(static_cast<double>(value.cast<std::int64_t>())));
+      break;
+    case scene::FieldKind::Float: out = range(value.cast<double>()); break;
+    case scene::FieldKind::Vec3:
+    case scene::FieldKind::Color: {
+      const auto p = vec(value.cast<py::sequence>());
+      out = std::array<double, 3>{range(p.x), range(p.y), range(p.z)};
+      break;
+    }
+    case scene::FieldKind::Rotation: {
+      const auto s = value.cast<py::sequence>();
+      if (py::len(s) != 4) throw py::value_error("'" + name + "' expects (axis x, axis y, axis z, degrees)");
+      out = std::array<double, 4>{s[0].cast<double>(), s[1].cast<double>(), s[2].cast<double>(), s[3].cast<double>()};
+      break;
+    }
+    case scene::FieldKind::Enum: {
+      const auto word = value.cast<std::string>();
+      if (std::find(f.choices.begin(), f.choices.end(), word) == f.choices.end()) {
+        throw py::value_error("'" + name + "' cannot be '" + word + "'" + core::didYouMean(word, f.choices));
+      }
+      out = word;
+      break;
+    }
+    case scene::FieldKind::String:
+    case scene::FieldKind::File: out = value.cast<std::string>(); break;
+  }
+  n.setValue(static_cast<std::size_t>(i), std::move(out));
+  // a joint whose motor changes wakes its bodies on the next step (the physics reads the fields)
+}
+
 py::object slotAttr(Ref r, bool of_transition, std::uint32_t owner, const std::string& name) {
   const auto slot = net::parseSlot(name);
   if (!slot) throw py::attribute_error("no attribute '" + name + "' (slots are a0 ... d7)");
@@ -108,10 +205,72 @@ void registerViews() {
   py::module_ m = py::module_::import("types").attr("ModuleType")("gdpn_script");
   py::module_::import("sys").attr("modules")["gdpn_script"] = m;
 
-  py::class_<NodeView>(m, "Node", "A node token: a reference to a scene node")
+  py::class_<NodeView>(m, "Node", "A node token: a reference to a scene node, with its fields as attributes")
       .def_property_readonly("name", [](const NodeView& v) { return v.r.get().nodeName(v.ref); },
                              "the node's path")
       .def_property_readonly("ref", [](const NodeView& v) { return v.ref; }, "the node's handle")
+      .def_property_readonly("type", [](const NodeView& v) { return sceneNode(v).type().name; })
+      .def_property_readonly("parent", [](const NodeView& v) { return related(v, sceneNode(v).parent()); })
+      .def_property_readonly("prev", [](const NodeView& v) { return related(v, sceneNode(v).prev()); })
+      .def_property_readonly("next", [](const NodeView& v) { return related(v, sceneNode(v).next()); })
+      .def_property_readonly("children",
+                             [](const NodeView& v) {
+                               py::list out;
+                               for (const auto& c : sceneNode(v).children()) out.append(related(v, c.get()));
+                               return out;
+                             })
+      .def("find", [](const NodeView& v, const std::string& path) { return related(v, sceneNode(v).find(path)); },
+           "the node at a path below this one ('..' goes up), or None")
+      .def_property_readonly("position",
+                             [](const NodeView& v) {
+                               const auto p = sceneNode(v).world.position;
+                               return py::make_tuple(p.x, p.y, p.z);
+                             },
+                             "world position, m")
+      .def_property_readonly("rotation",
+                             [](const NodeView& v) {
+                               const auto q = sceneNode(v).world.rotation;
+                               return py::make_tuple(q.w, q.x, q.y, q.z);
+                             },
+                             "world orientation as a quaternion (w, x, y, z)")
+      .def_property_readonly("velocity",
+                             [](const NodeView& v) {
+                               const auto u = world(v).velocity(sceneNode(v));
+                               return py::make_tuple(u.x, u.y, u.z);
+                             },
+                             "its body's linear velocity, m/s")
+      .def("set_velocity", [](const NodeView& v, const py::sequence& u) { world(v).setVelocity(sceneNode(v), vec(u)); },
+           "sets its body's linear velocity, m/s")
+      .def("set_force", [](const NodeView& v, const py::sequence& f) { world(v).setForce(sceneNode(v), vec(f)); },
+           "a force on its body, N, world frame, applied every step until changed")
+      .def("add_force", [](const NodeView& v, const py::sequence& f) { world(v).addForce(sceneNode(v), vec(f)); },
+           "a force on its body, N, world frame, for the next step only")
+      .def("set_torque", [](const NodeView& v, const py::sequence& t) { world(v).setTorque(sceneNode(v), vec(t)); },
+           "a torque on its body, N m, world frame, applied every step until changed")
+      .def("attach", [](const NodeView& v, const NodeView& other) {
+             return world(v).attach(sceneNode(v), sceneNode(other));
+           }, "joins this node's body to the other's with a fixed joint; False if already joined")
+      .def("detach", [](const NodeView& v, const NodeView& other) {
+             return world(v).detach(sceneNode(v), sceneNode(other));
+           }, "breaks the joint attach() made; False if there is none")
+      .def_property_readonly("angle",
+                             [](const NodeView& v) {
+                               const auto& n = sceneNode(v);
+                               const double x = world(v).jointPosition(n);
+                               return n.text("kind") == "slider" ? x : x * 180.0 / M_PI;
+                             },
+                             "a joint's position on axis 1: degrees, or metres for a slider")
+      .def_property_readonly("rate",
+                             [](const NodeView& v) {
+                               const auto& n = sceneNode(v);
+                               const double x = world(v).jointRate(n);
+                               return n.text("kind") == "slider" ? x : x * 180.0 / M_PI;
+                             },
+                             "a joint's rate on axis 1: deg/s, or m/s for a slider")
+      .def("__getattr__", [](const NodeView& v, const std::string& name) { return getField(v, name); })
+      .def("__setattr__", [](const NodeView& v, const std::string& name, const py::object& value) {
+        setField(v, name, value);
+      })
       .def("__eq__", [](const NodeView& a, const NodeView& b) { return a.ref == b.ref; })
       .def("__hash__", [](const NodeView& v) { return std::hash<net::NodeRef>{}(v.ref); })
       .def("__repr__", [](const NodeView& v) { return "<node " + v.r.get().nodeName(v.ref) + ">"; });
@@ -150,6 +309,15 @@ void registerViews() {
                                          " holds no node token to read '" + name + "' from");
              }
              return s.r.get().nodeView(tokens.front()).attr(name.c_str());
+           })
+      .def("__setattr__",
+           [](const SlotView& s, const std::string& name, const py::object& value) {
+             const auto tokens = tokensOf(s);
+             if (tokens.empty()) {
+               throw py::attribute_error(ownerName(s) + " slot " + net::slotName(s.slot) +
+                                         " holds no node token to set '" + name + "' on");
+             }
+             py::setattr(s.r.get().nodeView(tokens.front()), name.c_str(), value);
            })
       .def("__repr__", [](const SlotView& s) {
         return "<slot " + net::slotName(s.slot) + " of " + ownerName(s) + ": " + std::to_string(count(s)) + ">";

@@ -8,6 +8,8 @@
 #include <string>
 
 #include "gdpn/net/kernel.h"
+#include "gdpn/physics/world.h"
+#include "gdpn/scene/node.h"
 
 namespace gdpn::script::detail {
 
@@ -23,6 +25,10 @@ class Context {
   virtual pybind11::object nodeView(net::NodeRef ref) = 0;
   virtual void log(const std::string& text) = 0;
   virtual void stop(const std::string& reason) = 0;
+  /// The scene node behind a node token (null without a scene, or when it was deleted).
+  virtual scene::Node* sceneNode(net::NodeRef ref) const = 0;
+  /// The plant's physics, or null.
+  virtual physics::World* physicsWorld() const = 0;
 
   /// False once the engine is gone; a view kept past that raises instead of crashing.
   std::shared_ptr<bool> alive = std::make_shared<bool>(true);

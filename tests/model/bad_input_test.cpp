@@ -29,7 +29,7 @@ std::vector<std::string> badFiles() {
 core::Diagnostics diagnose(const std::string& path) {
   core::Diagnostics diags;
   if (auto m = loadModel(path, diags)) {
-    if (auto net = net::compile(m->net, diags); net && net->scripted()) Simulation::create(*m, diags);
+    if (auto net = net::compile(m->net, diags); net && (net->scripted() || m->scene)) Simulation::create(*m, diags);
   }
   return diags;
 }

@@ -34,11 +34,14 @@ Result gdpn(const std::string& args) {
 
 std::string temp(const std::string& name) { return (fs::temp_directory_path() / name).string(); }
 
-TEST(Cli, CheckAcceptsEveryExample) {
-  for (const char* dir : {"examples/basics/figure31", "examples/basics/producer_consumer", "examples/basics/two_cells"}) {
-    const auto r = gdpn(std::string("check ") + dir);
-    EXPECT_EQ(r.code, 0) << dir << "\n" << r.out;
-    EXPECT_NE(r.out.find(": ok ("), std::string::npos) << r.out;
+TEST(Cli, CheckAcceptsEveryExampleAndGoodModel) {
+  for (const char* dir : {"examples", "tests/data/good"}) {
+    for (const auto& e : fs::recursive_directory_iterator(fs::path(GDPN_SOURCE_DIR) / dir)) {
+      if (!e.path().string().ends_with(".gdpn.yaml")) continue;
+      const auto r = gdpn("check '" + e.path().string() + "'");
+      EXPECT_EQ(r.code, 0) << e.path() << "\n" << r.out;
+      EXPECT_NE(r.out.find(": ok ("), std::string::npos) << r.out;
+    }
   }
 }
 

@@ -14,6 +14,7 @@
 #include "gdpn/net/kernel.h"
 #include "gdpn/net/stats.h"
 #include "gdpn/net/trace.h"
+#include "gdpn/physics/world.h"
 #include "gdpn/script/engine.h"
 
 namespace gdpn::model {
@@ -72,6 +73,10 @@ class Simulation {
   [[nodiscard]] const Model& model() const { return model_; }
   /// The frozen net.
   [[nodiscard]] const net::Net& net() const { return *net_; }
+  /// The plant: this run's own copy of the model's scene (null when the model has none).
+  [[nodiscard]] scene::Scene* plant() const { return scene_.get(); }
+  /// The physics of the plant (null when the model has no scene).
+  [[nodiscard]] physics::World* physics() const { return physics_.get(); }
   /// The kernel (markings, clock).
   net::Kernel& kernel() { return *kernel_; }
   [[nodiscard]] const net::Kernel& kernel() const { return *kernel_; }
@@ -91,6 +96,8 @@ class Simulation {
   Simulation() = default;
   Model model_;
   std::shared_ptr<const net::Net> net_;
+  std::unique_ptr<scene::Scene> scene_;
+  std::unique_ptr<physics::World> physics_;
   std::unique_ptr<net::Kernel> kernel_;
   std::unique_ptr<net::StatsCollector> stats_;
   std::unique_ptr<net::TraceWriter> trace_;

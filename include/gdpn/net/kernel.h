@@ -20,8 +20,14 @@ namespace gdpn::net {
 
 /// How a kernel runs.
 struct KernelSettings {
+  /// Settings with step `dt_s` seconds, generator `seed_value` and node references `refs`.
+  KernelSettings(double dt_s = 1.0 / 60.0, std::uint64_t seed_value = 1, std::vector<NodeRef> refs = {})
+      : dt(dt_s), seed(seed_value), node_refs(std::move(refs)) {}
   double dt = 1.0 / 60.0;   ///< length of a step, seconds (> 0)
   std::uint64_t seed = 1;   ///< seed of the model's random generator
+  /// What each initial node token (an index into Net::nodeNames()) refers to; empty means
+  /// the index itself.
+  std::vector<NodeRef> node_refs;
 };
 
 /// The changing state of one frozen Net, and the step loop's net phases.

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -71,6 +72,9 @@ class Node {
   core::SourceLoc loc;
   /// Where each field was written (empty loc for fields left at their default).
   std::vector<core::SourceLoc> field_locs;
+  /// Set by the physics for a moving Body: its placement in the world, which then replaces
+  /// the placement its parents give it.
+  std::optional<core::Pose> dynamic_pose;
   /// World placement and accumulated scale, kept by updateTransforms().
   core::Pose world;
   core::Vec3 world_scale{1, 1, 1};

@@ -46,6 +46,9 @@ struct FieldDesc {
   std::vector<std::string> choices;   ///< the words an Enum accepts
   double min = -1e300;                ///< smallest accepted number (Int, Float, each component)
   double max = 1e300;                 ///< largest accepted number
+
+  /// "" when `x` is in range, else why not ("'bounce' must lie in [0, 1], got 1.5").
+  [[nodiscard]] std::string rangeError(double x) const;
 };
 
 /// What role a node type plays (for dispatch by actions and physics).

@@ -12,6 +12,8 @@
 #include "gdpn/core/diagnostics.h"
 #include "gdpn/net/hooks.h"
 #include "gdpn/net/kernel.h"
+#include "gdpn/physics/world.h"
+#include "gdpn/scene/node.h"
 
 namespace gdpn::script {
 
@@ -24,6 +26,8 @@ struct EngineOptions {
 struct EngineCallbacks {
   std::function<void(const std::string&)> log;  ///< sim.log(...) text
   std::function<std::string(net::NodeRef)> node_name;  ///< the path of a node token
+  scene::Scene* plant = nullptr;      ///< the run's scene, whose handles node tokens are (null: none)
+  physics::World* physics = nullptr;  ///< its physics (null: none)
 };
 
 /// Why the engine halted.

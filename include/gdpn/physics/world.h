@@ -1,0 +1,74 @@
+#pragma once
+/// \file
+/// Rigid-body physics for a scene, through ODE (whose types never leave src/physics).
+/// The tree decides the dynamics: a shape under a Body is part of that body; any other shape
+/// is static; a Joint joins the Body above it to the Body below it, or that Body to the world.
+/// Materials give contacts their friction and bounce; a Conveyor makes its sibling shapes
+/// move what touches them (a contact surface velocity, not a force field).
+
+#include <memory>
+
+#include "gdpn/core/diagnostics.h"
+#include "gdpn/core/math.h"
+#include "gdpn/scene/node.h"
+
+namespace gdpn::physics {
+
+/// The physics of one scene. It reads joint motor fields (vel1, fmax1, ...) every step, so a
+/// script that sets them drives the joint, and it writes each moving body's placement back
+/// into the scene (Node::dynamic_pose, Node::world).
+class World {
+ public:
+  /// Builds bodies, geometry, joints, conveyors and contacts from `scene` (which must outlive
+  /// the world). Problems (a joint with no body, a missing mesh file) go to `diags` at the
+  /// node's location; then null. `seed` seeds ODE's own generator (constraint order).
+  static std::unique_ptr<World> create(scene::Scene& scene, const std::string& model_dir, std::uint64_t seed,
+                                       core::Diagnostics& diags);
+  ~World();
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  /// Advances by `dt` seconds in the World node's sub-steps, then updates the scene.
+  void step(double dt);
+
+  /// True when `node` is a Body this world moves.
+  [[nodiscard]] bool isBody(const scene::Node& node) const;
+  /// A body's linear velocity, m/s (world frame).
+  [[nodiscard]] core::Vec3 velocity(const scene::Node& body) const;
+  /// A body's angular velocity, rad/s (world frame).
+  [[nodiscard]] core::Vec3 angularVelocity(const scene::Node& body) const;
+  /// Sets a body's linear velocity, m/s.
+  void setVelocity(const scene::Node& body, core::Vec3 v);
+  /// A force (N, world frame) applied at the centre of mass in every step until changed.
+  void setForce(const scene::Node& body, core::Vec3 force);
+  /// A force (N, world frame) applied in the next step only.
+  void addForce(const scene::Node& body, core::Vec3 force);
+  /// A torque (N m, world frame) applied in every step until changed.
+  void setTorque(const scene::Node& body, core::Vec3 torque);
+  /// True while the body is awake (auto-disable puts resting bodies to sleep).
+  [[nodiscard]] bool awake(const scene::Node& body) const;
+  /// Wakes a body.
+  void wake(const scene::Node& body);
+
+  /// A joint's position on axis 1 or 2: radians (hinge, universal, hinge2) or metres (slider).
+  [[nodiscard]] double jointPosition(const scene::Node& joint, int axis = 1) const;
+  /// Its rate on axis 1 or 2: rad/s or m/s.
+  [[nodiscard]] double jointRate(const scene::Node& joint, int axis = 1) const;
+
+  /// Joins two bodies (or a body and the body of a node inside another) with a fixed joint
+  /// made now, as they are. False when either is no body or they are already attached.
+  bool attach(const scene::Node& a, const scene::Node& b);
+  /// Breaks the fixed joint made by attach(). False when there is none.
+  bool detach(const scene::Node& a, const scene::Node& b);
+
+  /// Number of bodies, and of those awake.
+  [[nodiscard]] std::size_t bodyCount() const;
+  [[nodiscard]] std::size_t awakeCount() const;
+
+ private:
+  struct Impl;
+  explicit World(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace gdpn::physics

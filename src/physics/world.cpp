@@ -1,0 +1,572 @@
+// The scene's rigid-body physics through ODE. Everything ODE stays in this file.
+
+#include "gdpn/physics/world.h"
+
+#include <ode/ode.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <unordered_map>
+
+#include "gdpn/core/assert.h"
+#include "gdpn/scene/actions.h"
+
+namespace gdpn::physics {
+namespace {
+
+using core::Pose;
+using core::Quat;
+using core::Vec3;
+using scene::Node;
+
+constexpr double kHuge = 1e299;  // field values beyond this mean "no limit"
+
+void initOde() {
+  static const bool done = [] {
+    dInitODE2(0);
+    dAllocateODEDataForThread(dAllocateMaskAll);
+    return true;
+  }();
+  (void)done;
+}
+
+void setPose(dBodyID b, const Pose& p) {
+  dBodySetPosition(b, p.position.x, p.position.y, p.position.z);
+  const dQuaternion q = {p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z};
+  dBodySetQuaternion(b, q);
+}
+
+Pose bodyPose(dBodyID b) {
+  const dReal* p = dBodyGetPosition(b);
+  const dReal* q = dBodyGetQuaternion(b);
+  return {{p[0], p[1], p[2]}, {q[0], q[1], q[2], q[3]}};
+}
+
+void rotationMatrix(const Quat& q, dMatrix3 r) {
+  const dQuaternion dq = {q.w, q.x, q.y, q.z};
+  dRfromQ(r, dq);
+}
+
+Vec3 v3(const dReal* v) { return {v[0], v[1], v[2]}; }
+
+/// What a geometry brings to a contact.
+struct Surface {
+  double friction = 0.8;
+  double bounce = 0.0;
+  double conveyor_speed = 0.0;  // m/s, 0 when not a conveyor
+  Vec3 conveyor_dir;            // in the frame of the geometry's body (world frame if static)
+  bool conveyor = false;
+};
+
+}  // namespace
+
+struct World::Impl {
+  struct Body {
+    Node* node;
+    dBodyID id;
+    Vec3 com;                // centre of mass in the node's frame (the ODE body's origin)
+    Vec3 force, torque;      // applied every step
+    Vec3 pending;            // applied in the next step only
+  };
+  struct Joint {
+    Node* node;
+    dJointID id;
+    std::string kind;
+    int vel1, fmax1, vel2, fmax2;  // field indices
+  };
+
+  scene::Scene& scene;
+  dWorldID world = nullptr;
+  dSpaceID space = nullptr;
+  dJointGroupID contacts = nullptr;
+  int substeps = 1;
+  std::vector<Body> bodies;
+  std::unordered_map<scene::NodeHandle, std::size_t> body_of;  // Body node -> index
+  std::vector<Joint> joints;
+  std::unordered_map<scene::NodeHandle, std::size_t> joint_of;
+  std::vector<Surface> surfaces;  // per geometry, by dGeomGetData index
+  std::map<std::pair<dBodyID, dBodyID>, dJointID> attached;
+
+  explicit Impl(scene::Scene& s) : scene(s) {}
+  ~Impl() {
+    for (auto& [pair, j] : attached) dJointDestroy(j);
+    if (contacts) dJointGroupDestroy(contacts);
+    if (space) dSpaceDestroy(space);
+    if (world) dWorldDestroy(world);
+  }
+
+  // ---- building ----
+
+  /// The Body that owns `node` (itself, or the nearest Body above it), or null.
+  Body* owner(const Node& node) {
+    for (const Node* n = &node; n; n = n->parent()) {
+      auto it = body_of.find(n->handle());
+      if (it != body_of.end()) return &bodies[it->second];
+    }
+    return nullptr;
+  }
+  const Body* owner(const Node& node) const { return const_cast<Impl*>(this)->owner(node); }
+
+  struct Pending {
+    Node* node;
+    Body* parent;  // the body above the joint, or null (the world)
+  };
+
+  bool build(const std::string& model_dir, core::Diagnostics& diags) {
+    scene::updateTransforms(scene.root());
+    bool ok = true;
+    std::vector<Pending> pending_joints;
+    // bodies first (joints need both ends), with their shapes and masses
+    buildBodies(scene.root(), nullptr, diags, ok);
+    // static shapes and body shapes: one geometry each, with the material in effect
+    scene::traverse(scene.root(), [&](Node& n, const scene::TraversalState& st) {
+      if (n.type().category == scene::Category::Shape) ok = addGeom(n, st, model_dir, diags) && ok;
+      if (n.type().name == "Joint") pending_joints.push_back({&n, owner(*n.parent())});
+    });
+    for (const auto& p : pending_joints) ok = addJoint(*p.node, p.parent, diags) && ok;
+    return ok;
+  }
+
+  void buildBodies(Node& node, Body* enclosing, core::Diagnostics& diags, bool& ok) {
+    Body* here = enclosing;
+    if (node.type().name == "Body") {
+      dBodyID id = dBodyCreate(world);
+      bodies.push_back({&node, id, {}, {}, {}, {}});
+      body_of[node.handle()] = bodies.size() - 1;
+      here = &bodies.back();
+    }
+    for (const auto& c : node.children()) buildBodies(*c, here, diags, ok);
+    if (node.type().name == "Body") finishBody(bodies[body_of[node.handle()]]);
+  }
+
+  /// Mass from the body's own shapes (not those of bodies below it), centre of mass at the
+  /// ODE body's origin.
+  void finishBody(Body& body) {
+    Node& node = *body.node;
+    const double density = node.number("density");
+    const double total = node.number("mass");
+    dMass m;
+    dMassSetZero(&m);
+    const Pose inv = node.world.inverse();
+    scene::traverse(node, [&](Node& n, const scene::TraversalState&) {
+      if (n.type().category != scene::Category::Shape || owner(n) != &body) return;
+      const Vec3 s = n.world_scale;
+      dMass sm;
+      const auto& t = n.type().name;
+      if (t == "Cube") {
+        const Vec3 size = n.vec3("size").times(s);
+        if (size.x <= 0 || size.y <= 0 || size.z <= 0) return;
+        dMassSetBox(&sm, density, size.x, size.y, size.z);
+      } else if (t == "Sphere") {
+        const double r = n.number("radius") * std::max({s.x, s.y, s.z});
+        if (r <= 0) return;
+        dMassSetSphere(&sm, density, r);
+      } else if (t == "Cylinder" || t == "Cone") {
+        const double r = n.number("radius") * std::max(s.x, s.y) * (t == "Cone" ? 0.5 : 1.0);
+        const double h = n.number("height") * s.z;
+        if (r <= 0 || h <= 0) return;
+        dMassSetCylinder(&sm, density, 3, r, h);
+      } else {
+        return;
+      }
+      const Pose local = inv * n.world;  // the shape in the body node's frame
+      dMatrix3 r;
+      rotationMatrix(local.rotation, r);
+      dMassRotate(&sm, r);
+      dMassTranslate(&sm, local.position.x, local.position.y, local.position.z);
+      dMassAdd(&m, &sm);
+    });
+    if (m.mass <= 0) dMassSetSphereTotal(&m, total > 0 ? total : 1.0, 0.05);
+    if (total > 0) dMassAdjust(&m, total);
+    body.com = {m.c[0], m.c[1], m.c[2]};
+    dMassTranslate(&m, -m.c[0], -m.c[1], -m.c[2]);
+    dBodySetMass(body.id, &m);
+    setPose(body.id, {node.world.apply(body.com), node.world.rotation});
+    const double ld = node.number("linear_damping"), ad = node.number("angular_damping");
+    if (ld > 0) dBodySetLinearDamping(body.id, ld);
+    if (ad > 0) dBodySetAngularDamping(body.id, ad);
+    node.dynamic_pose = node.world;
+  }
+
+  bool addGeom(Node& n, const scene::TraversalState& st, const std::string& model_dir, core::Diagnostics& diags) {
+    const auto& t = n.type().name;
+    const Vec3 s = n.world_scale;
+    Body* body = owner(n);
+    dGeomID g = nullptr;
+    if (t == "Cube") {
+      const Vec3 size = n.vec3("size").times(s);
+      if (size.x <= 0 || size.y <= 0 || size.z <= 0) return true;
+      g = dCreateBox(space, size.x, size.y, size.z);
+    } else if (t == "Sphere") {
+      const double r = n.number("radius") * std::max({s.x, s.y, s.z});
+      if (r <= 0) return true;
+      g = dCreateSphere(space, r);
+    } else if (t == "Cylinder" || t == "Cone") {
+      // ODE has no cone: a cone collides as a cylinder of its height and half its radius
+      const double r = n.number("radius") * std::max(s.x, s.y) * (t == "Cone" ? 0.5 : 1.0);
+      const double h = n.number("height") * s.z;
+      if (r <= 0 || h <= 0) return true;
+      g = dCreateCylinder(space, r, h);
+    } else if (t == "Plane") {
+      if (body) {
+        diags.error(n.loc, "a Plane is endless ground and cannot be part of the Body '" + body->node->path() + "'");
+        return false;
+      }
+      const Vec3 normal = n.world.rotation.rotate(n.vec3("normal")).normalized();
+      g = dCreatePlane(space, normal.x, normal.y, normal.z, normal.dot(n.world.position));
+    } else if (t == "Mesh") {
+      const std::string file = n.text("file");
+      const auto at = n.field_locs[static_cast<std::size_t>(n.type().fieldIndex("file"))];
+      const auto path = std::filesystem::path(model_dir) / file;
+      std::error_code ec;
+      if (file.empty() || !std::filesystem::is_regular_file(path, ec)) {
+        diags.error(at.line > 0 ? at : n.loc, "cannot read the mesh file '" + file + "' (looked for " +
+                                                  path.string() + ")");
+        return false;
+      }
+      return true;  // TODO(#7): load the triangles and collide with them
+    } else {
+      return true;
+    }
+    // what the geometry brings to contacts: the material in effect, a conveyor beside it
+    Surface surface;
+    if (st.material) {
+      surface.friction = st.material->number("friction");
+      surface.bounce = st.material->number("bounce");
+    }
+    if (n.parent()) {
+      for (const auto& sib : n.parent()->children()) {
+        if (sib->type().name != "Conveyor") continue;
+        surface.conveyor = true;
+        surface.conveyor_speed = sib->number("speed");
+        const Vec3 dir_world = sib->world.rotation.rotate(sib->vec3("direction")).normalized();
+        surface.conveyor_dir = body ? bodyPose(body->id).rotation.conjugate().rotate(dir_world) : dir_world;
+      }
+    }
+    surfaces.push_back(surface);
+    dGeomSetData(g, reinterpret_cast<void*>(surfaces.size()));  // 1-based: 0 means none
+    if (t == "Plane") return true;
+    const dQuaternion q = {n.world.rotation.w, n.world.rotation.x, n.world.rotation.y, n.world.rotation.z};
+    if (body) {
+      dGeomSetBody(g, body->id);
+      dGeomSetOffsetWorldPosition(g, n.world.position.x, n.world.position.y, n.world.position.z);
+      dGeomSetOffsetWorldQuaternion(g, q);
+    } else {
+      dGeomSetPosition(g, n.world.position.x, n.world.position.y, n.world.position.z);
+      dGeomSetQuaternion(g, q);
+    }
+    return true;
+  }
+
+  bool addJoint(Node& n, Body* parent_body, core::Diagnostics& diags) {
+    // the first Body below the joint (Transforms may place it), not inside another Body
+    Body* child_body = nullptr;
+    std::vector<Node*> todo;
+    for (auto it = n.children().rbegin(); it != n.children().rend(); ++it) todo.push_back(it->get());
+    while (!todo.empty() && !child_body) {
+      Node* c = todo.back();
+      todo.pop_back();
+      if (c->type().name == "Body") {
+        child_body = &bodies[body_of[c->handle()]];
+      } else {
+        for (auto it = c->children().rbegin(); it != c->children().rend(); ++it) todo.push_back(it->get());
+      }
+    }
+    if (!child_body) {
+      diags.error(n.loc, "joint '" + n.path() + "' joins no bodies: it needs a Body among its children (joined to "
+                         "the Body above it, or to the world)");
+      return false;
+    }
+    const std::string kind = n.text("kind");
+    dJointID j = nullptr;
+    if (kind == "hinge") j = dJointCreateHinge(world, nullptr);
+    else if (kind == "slider") j = dJointCreateSlider(world, nullptr);
+    else if (kind == "ball") j = dJointCreateBall(world, nullptr);
+    else if (kind == "universal") j = dJointCreateUniversal(world, nullptr);
+    else if (kind == "hinge2") j = dJointCreateHinge2(world, nullptr);
+    else j = dJointCreateFixed(world, nullptr);
+    dJointAttach(j, child_body->id, parent_body ? parent_body->id : nullptr);
+    const Vec3 anchor = n.world.apply(n.vec3("anchor"));
+    const Vec3 a1 = n.world.rotation.rotate(n.vec3("axis1")).normalized();
+    const Vec3 a2 = n.world.rotation.rotate(n.vec3("axis2")).normalized();
+    const bool angular = kind != "slider";
+    auto limit = [&](const char* field) {
+      const double v = n.number(field);
+      return std::abs(v) >= kHuge ? (v < 0 ? -dInfinity : dInfinity) : (angular ? core::radians(v) : v);
+    };
+    if (kind == "hinge") {
+      dJointSetHingeAnchor(j, anchor.x, anchor.y, anchor.z);
+      dJointSetHingeAxis(j, a1.x, a1.y, a1.z);
+      dJointSetHingeParam(j, dParamHiStop, limit("hi1"));
+      dJointSetHingeParam(j, dParamLoStop, limit("lo1"));
+    } else if (kind == "slider") {
+      dJointSetSliderAxis(j, a1.x, a1.y, a1.z);
+      dJointSetSliderParam(j, dParamHiStop, limit("hi1"));
+      dJointSetSliderParam(j, dParamLoStop, limit("lo1"));
+    } else if (kind == "ball") {
+      dJointSetBallAnchor(j, anchor.x, anchor.y, anchor.z);
+    } else if (kind == "universal") {
+      dJointSetUniversalAnchor(j, anchor.x, anchor.y, anchor.z);
+      dJointSetUniversalAxis1(j, a1.x, a1.y, a1.z);
+      dJointSetUniversalAxis2(j, a2.x, a2.y, a2.z);
+      dJointSetUniversalParam(j, dParamHiStop, limit("hi1"));
+      dJointSetUniversalParam(j, dParamLoStop, limit("lo1"));
+      dJointSetUniversalParam(j, dParamHiStop2, limit("hi2"));
+      dJointSetUniversalParam(j, dParamLoStop2, limit("lo2"));
+    } else if (kind == "hinge2") {
+      dJointSetHinge2Anchor(j, anchor.x, anchor.y, anchor.z);
+      const dReal ax1[3] = {a1.x, a1.y, a1.z}, ax2[3] = {a2.x, a2.y, a2.z};
+      dJointSetHinge2Axes(j, ax1, ax2);
+      dJointSetHinge2Param(j, dParamHiStop, limit("hi1"));
+      dJointSetHinge2Param(j, dParamLoStop, limit("lo1"));
+    } else {
+      dJointSetFixed(j);
+    }
+    const auto& type = n.type();
+    joints.push_back({&n, j, kind, type.fieldIndex("vel1"), type.fieldIndex("fmax1"), type.fieldIndex("vel2"),
+                      type.fieldIndex("fmax2")});
+    joint_of[n.handle()] = joints.size() - 1;
+    return true;
+  }
+
+  // ---- stepping ----
+
+  static double value(const Node& n, int field) { return std::get<double>(n.value(static_cast<std::size_t>(field))); }
+
+  /// Motors follow the joint nodes' fields (a script may have set them).
+  void driveMotors() {
+    for (const auto& jt : joints) {
+      const Node& n = *jt.node;
+      const bool angular = jt.kind != "slider";
+      const double vel1 = angular ? core::radians(value(n, jt.vel1)) : value(n, jt.vel1);
+      const double fmax1 = value(n, jt.fmax1);
+      const double vel2 = core::radians(value(n, jt.vel2)), fmax2 = value(n, jt.fmax2);
+      if (jt.kind == "hinge") {
+        dJointSetHingeParam(jt.id, dParamVel, vel1);
+        dJointSetHingeParam(jt.id, dParamFMax, fmax1);
+      } else if (jt.kind == "slider") {
+        dJointSetSliderParam(jt.id, dParamVel, vel1);
+        dJointSetSliderParam(jt.id, dParamFMax, fmax1);
+      } else if (jt.kind == "universal") {
+        dJointSetUniversalParam(jt.id, dParamVel, vel1);
+        dJointSetUniversalParam(jt.id, dParamFMax, fmax1);
+        dJointSetUniversalParam(jt.id, dParamVel2, vel2);
+        dJointSetUniversalParam(jt.id, dParamFMax2, fmax2);
+      } else if (jt.kind == "hinge2") {
+        dJointSetHinge2Param(jt.id, dParamVel, vel1);
+        dJointSetHinge2Param(jt.id, dParamFMax, fmax1);
+        dJointSetHinge2Param(jt.id, dParamVel2, vel2);
+        dJointSetHinge2Param(jt.id, dParamFMax2, fmax2);
+      }
+      if (fmax1 > 0 || fmax2 > 0) {
+        // a motor that works wakes what it moves
+        for (int k = 0; k < 2; ++k) {
+          if (dBodyID b = dJointGetBody(jt.id, k)) dBodyEnable(b);
+        }
+      }
+    }
+  }
+
+  static Surface surfaceOf(dGeomID g, const Impl& self) {
+    const auto i = reinterpret_cast<std::size_t>(dGeomGetData(g));
+    return i == 0 ? Surface{} : self.surfaces[i - 1];
+  }
+
+  static void nearCallback(void* data, dGeomID o1, dGeomID o2) {
+    auto& self = *static_cast<Impl*>(data);
+    dBodyID b1 = dGeomGetBody(o1), b2 = dGeomGetBody(o2);
+    if (!b1 && !b2) return;
+    if (b1 && b2 && dAreConnectedExcluding(b1, b2, dJointTypeContact)) return;
+    constexpr int kMax = 8;
+    dContact contact[kMax];
+    const int n = dCollide(o1, o2, kMax, &contact[0].geom, sizeof(dContact));
+    if (n == 0) return;
+    const Surface s1 = surfaceOf(o1, self), s2 = surfaceOf(o2, self);
+    // a conveyor's belt velocity, seen from body 1 relative to body 2
+    const bool belt1 = s1.conveyor, belt2 = !belt1 && s2.conveyor;
+    Vec3 dir;
+    double motion = 0;
+    if (belt1 || belt2) {
+      const Surface& belt = belt1 ? s1 : s2;
+      const dBodyID belt_body = belt1 ? b1 : b2;
+      dir = belt_body ? bodyPose(belt_body).rotation.rotate(belt.conveyor_dir) : belt.conveyor_dir;
+      motion = belt1 ? -belt.conveyor_speed : belt.conveyor_speed;
+    }
+    for (int i = 0; i < n; ++i) {
+      dSurfaceParameters& sp = contact[i].surface;
+      sp.mode = dContactBounce | dContactApprox1;
+      const double mu = std::sqrt(s1.friction * s2.friction);
+      sp.mu = mu > 1e6 ? dInfinity : mu;
+      sp.bounce = std::max(s1.bounce, s2.bounce);
+      sp.bounce_vel = 0.01;
+      if (belt1 || belt2) {
+        sp.mode |= dContactFDir1 | dContactMotion1;
+        contact[i].fdir1[0] = dir.x;
+        contact[i].fdir1[1] = dir.y;
+        contact[i].fdir1[2] = dir.z;
+        sp.motion1 = motion;
+      }
+      dJointID c = dJointCreateContact(self.world, self.contacts, &contact[i]);
+      dJointAttach(c, b1, b2);
+    }
+  }
+
+  void step(double dt) {
+    const double h = dt / substeps;
+    driveMotors();
+    for (int k = 0; k < substeps; ++k) {
+      for (auto& b : bodies) {
+        const Vec3 f = b.force + b.pending;
+        if (f.x != 0 || f.y != 0 || f.z != 0) dBodyAddForce(b.id, f.x, f.y, f.z);
+        if (b.torque.x != 0 || b.torque.y != 0 || b.torque.z != 0) dBodyAddTorque(b.id, b.torque.x, b.torque.y, b.torque.z);
+      }
+      dSpaceCollide(space, this, &nearCallback);
+      dWorldQuickStep(world, h);
+      dJointGroupEmpty(contacts);
+    }
+    for (auto& b : bodies) b.pending = {};
+    writeBack();
+  }
+
+  /// Moving bodies tell the scene where they are; sleeping ones have not moved.
+  void writeBack() {
+    for (auto& b : bodies) {
+      if (!dBodyIsEnabled(b.id) && b.node->dynamic_pose) continue;
+      const Pose p = bodyPose(b.id);
+      b.node->dynamic_pose = Pose{p.position - p.rotation.rotate(b.com), p.rotation};
+      scene::updateTransforms(*b.node);
+    }
+  }
+};
+
+World::World(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+World::~World() = default;
+
+std::unique_ptr<World> World::create(scene::Scene& scene, const std::string& model_dir, std::uint64_t seed,
+                                     core::Diagnostics& diags) {
+  initOde();
+  dRandSetSeed(static_cast<unsigned long>(seed));
+  auto impl = std::make_unique<Impl>(scene);
+  impl->world = dWorldCreate();
+  impl->space = dHashSpaceCreate(nullptr);
+  impl->contacts = dJointGroupCreate(0);
+  // settings from the first World node, if any
+  const Node* settings = nullptr;
+  scene::traverse(scene.root(), [&](Node& n, const scene::TraversalState&) {
+    if (!settings && n.type().name == "World") settings = &n;
+  });
+  Vec3 g{0, 0, -9.81};
+  double erp = 0.2, cfm = 1e-5;
+  bool auto_disable = true;
+  if (settings) {
+    g = settings->vec3("gravity");
+    erp = settings->number("erp");
+    cfm = settings->number("cfm");
+    impl->substeps = static_cast<int>(settings->number("substeps"));
+    auto_disable = settings->flag("auto_disable");
+  }
+  dWorldSetGravity(impl->world, g.x, g.y, g.z);
+  dWorldSetERP(impl->world, erp);
+  dWorldSetCFM(impl->world, cfm);
+  dWorldSetQuickStepNumIterations(impl->world, 40);
+  dWorldSetAutoDisableFlag(impl->world, auto_disable ? 1 : 0);
+  dWorldSetContactSurfaceLayer(impl->world, 0.001);
+  if (!impl->build(model_dir, diags)) return nullptr;
+  return std::unique_ptr<World>(new World(std::move(impl)));
+}
+
+void World::step(double dt) { impl_->step(dt); }
+
+bool World::isBody(const scene::Node& node) const { return impl_->body_of.count(node.handle()) > 0; }
+
+namespace {
+template <class B>
+B& need(B* b) {
+  GDPN_ASSERT(b != nullptr, "the node belongs to a body of this world");
+  return *b;
+}
+}  // namespace
+
+core::Vec3 World::velocity(const scene::Node& body) const { return v3(dBodyGetLinearVel(need(impl_->owner(body)).id)); }
+core::Vec3 World::angularVelocity(const scene::Node& body) const {
+  return v3(dBodyGetAngularVel(need(impl_->owner(body)).id));
+}
+void World::setVelocity(const scene::Node& body, core::Vec3 v) {
+  auto& b = need(impl_->owner(body));
+  dBodyEnable(b.id);
+  dBodySetLinearVel(b.id, v.x, v.y, v.z);
+}
+void World::setForce(const scene::Node& body, core::Vec3 force) {
+  auto& b = need(impl_->owner(body));
+  dBodyEnable(b.id);
+  b.force = force;
+}
+void World::addForce(const scene::Node& body, core::Vec3 force) {
+  auto& b = need(impl_->owner(body));
+  dBodyEnable(b.id);
+  b.pending = b.pending + force;
+}
+void World::setTorque(const scene::Node& body, core::Vec3 torque) {
+  auto& b = need(impl_->owner(body));
+  dBodyEnable(b.id);
+  b.torque = torque;
+}
+bool World::awake(const scene::Node& body) const { return dBodyIsEnabled(need(impl_->owner(body)).id) != 0; }
+void World::wake(const scene::Node& body) { dBodyEnable(need(impl_->owner(body)).id); }
+
+double World::jointPosition(const scene::Node& joint, int axis) const {
+  const auto& j = impl_->joints[impl_->joint_of.at(joint.handle())];
+  if (j.kind == "hinge") return dJointGetHingeAngle(j.id);
+  if (j.kind == "slider") return dJointGetSliderPosition(j.id);
+  if (j.kind == "universal") return axis == 1 ? dJointGetUniversalAngle1(j.id) : dJointGetUniversalAngle2(j.id);
+  if (j.kind == "hinge2") return axis == 1 ? dJointGetHinge2Angle1(j.id) : 0.0;
+  return 0.0;
+}
+
+double World::jointRate(const scene::Node& joint, int axis) const {
+  const auto& j = impl_->joints[impl_->joint_of.at(joint.handle())];
+  if (j.kind == "hinge") return dJointGetHingeAngleRate(j.id);
+  if (j.kind == "slider") return dJointGetSliderPositionRate(j.id);
+  if (j.kind == "universal") return axis == 1 ? dJointGetUniversalAngle1Rate(j.id) : dJointGetUniversalAngle2Rate(j.id);
+  if (j.kind == "hinge2") return axis == 1 ? dJointGetHinge2Angle1Rate(j.id) : dJointGetHinge2Angle2Rate(j.id);
+  return 0.0;
+}
+
+bool World::attach(const scene::Node& a, const scene::Node& b) {
+  auto* ba = impl_->owner(a);
+  auto* bb = impl_->owner(b);
+  if (!ba || !bb || ba == bb) return false;
+  const auto key = std::minmax(ba->id, bb->id);
+  if (impl_->attached.count(key)) return false;
+  dJointID j = dJointCreateFixed(impl_->world, nullptr);
+  dJointAttach(j, ba->id, bb->id);
+  dJointSetFixed(j);
+  dBodyEnable(ba->id);
+  dBodyEnable(bb->id);
+  impl_->attached[key] = j;
+  return true;
+}
+
+bool World::detach(const scene::Node& a, const scene::Node& b) {
+  auto* ba = impl_->owner(a);
+  auto* bb = impl_->owner(b);
+  if (!ba || !bb) return false;
+  auto it = impl_->attached.find(std::minmax(ba->id, bb->id));
+  if (it == impl_->attached.end()) return false;
+  dJointDestroy(it->second);
+  impl_->attached.erase(it);
+  dBodyEnable(ba->id);
+  dBodyEnable(bb->id);
+  return true;
+}
+
+std::size_t World::bodyCount() const { return impl_->bodies.size(); }
+std::size_t World::awakeCount() const {
+  std::size_t n = 0;
+  for (const auto& b : impl_->bodies) n += dBodyIsEnabled(b.id) ? 1u : 0u;
+  return n;
+}
+
+}  // namespace gdpn::physics

@@ -1,0 +1,206 @@
+// Rigid-body physics against analytic answers, each within a stated tolerance.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gdpn/model/model.h"
+#include "gdpn/physics/world.h"
+
+namespace gdpn::physics {
+namespace {
+
+constexpr double g = 9.81;
+
+/// A scene parsed from the `scene:` section text, and its physics.
+struct Plant {
+  std::unique_ptr<scene::Scene> scene;
+  std::unique_ptr<World> world;
+  explicit Plant(const std::string& scene_text, std::uint64_t seed = 1) {
+    core::Diagnostics diags;
+    auto m = model::parseModel("gdpn: 1\nscene:\n" + scene_text, "plant.gdpn.yaml", diags);
+    EXPECT_TRUE(m) << diags.str();
+    if (!m) return;
+    scene = m->scene->clone();
+    world = World::create(*scene, ".", seed, diags);
+    EXPECT_TRUE(world) << diags.str();
+  }
+  scene::Node& node(const char* path) const {
+    auto* n = scene->find(path);
+    EXPECT_NE(n, nullptr) << path;
+    return *n;
+  }
+  void run(double seconds, double dt) {
+    const auto steps = static_cast<int>(std::lround(seconds / dt));
+    for (int i = 0; i < steps; ++i) world->step(dt);
+  }
+};
+
+TEST(Physics, FreeFallFollowsHalfGTSquared) {
+  Plant p(R"(
+  - Transform:
+      translation: [0, 0, 10]
+      children:
+        - Body: {name: ball, mass: 1, children: [{Sphere: {radius: 0.1}}]}
+)");
+  const double dt = 1.0 / 240;
+  p.run(1.0, dt);
+  const auto& ball = p.node("#0/ball");
+  // semi-implicit Euler: the velocity is exact; the position is off by at most g t dt
+  EXPECT_NEAR(p.world->velocity(ball).z, -g * 1.0, 1e-9);
+  EXPECT_NEAR(ball.world.position.z, 10 - g / 2, g * 1.0 * dt);
+  EXPECT_NEAR(ball.world.position.x, 0.0, 1e-12);
+}
+
+TEST(Physics, PendulumHasTheSmallAnglePeriod) {
+  // a 1 m pendulum released 5 degrees out: T = 2 pi sqrt(L / g) = 2.0061 s (the 5 degree
+  // amplitude lengthens it by 0.05 %); tolerance 0.5 %
+  const double L = 1.0, theta = core::radians(5);
+  const std::string x = std::to_string(L * std::sin(theta)), z = std::to_string(-L * std::cos(theta));
+  Plant p(R"(
+  - World: {auto_disable: false}
+  - Joint:
+      name: pivot
+      kind: hinge
+      axis1: [0, 1, 0]
+      children:
+        - Transform:
+            translation: [)" + x + ", 0, " + z + R"(]
+            children:
+              - Body: {name: bob, mass: 1, children: [{Sphere: {radius: 0.01}}]}
+)");
+  const double dt = 1.0 / 1000;
+  const auto& bob = p.node("pivot/#0/bob");
+  // time the upward zero crossings of x
+  std::vector<double> crossings;
+  double last = bob.world.position.x;
+  for (int i = 1; i <= 10000; ++i) {
+    p.world->step(dt);
+    const double now = bob.world.position.x;
+    if (last < 0 && now >= 0) crossings.push_back(i * dt - dt * now / (now - last));
+    last = now;
+  }
+  ASSERT_GE(crossings.size(), 4u);
+  const double period = (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+  const double expected = 2 * M_PI * std::sqrt(L / g);
+  EXPECT_NEAR(period, expected, 0.005 * expected);
+}
+
+TEST(Physics, ABlockSlidesDownAnInclineAtGTimesSinMinusMuCos) {
+  // 30 degree incline, friction 0.3 on both materials: a = g (sin 30 - 0.3 cos 30) = 2.356 m/s^2;
+  // the speed after 1 s within 3 %
+  Plant p(R"(
+  - World: {auto_disable: false}
+  - Transform:
+      rotation: [0, -1, 0, 30]
+      children:
+        - Material: {friction: 0.3}
+        - Cube: {size: [20, 2, 0.2]}
+        - Transform:
+            translation: [0, 0, 0.2]
+            children:
+              - Body: {name: block, mass: 1, children: [{Cube: {size: [0.2, 0.2, 0.2]}}]}
+)");
+  const double dt = 1.0 / 500;
+  p.run(0.2, dt);  // settle onto the surface
+  const auto& block = p.node("#1/#2/block");
+  const double v0 = p.world->velocity(block).length();
+  p.run(1.0, dt);
+  const double a = g * (0.5 - 0.3 * std::cos(core::radians(30)));
+  EXPECT_NEAR(p.world->velocity(block).length() - v0, a * 1.0, 0.03 * a);
+  // it slides down the slope: towards -x, and down
+  EXPECT_LT(p.world->velocity(block).x, 0.0);
+}
+
+TEST(Physics, ABoxOnAConveyorReachesTheBeltSpeed) {
+  // 0.1 m box of 0.5 kg dropped on a 1 m/s belt: after 2 s it moves with the belt (within 1 %)
+  Plant p(R"(
+  - Transform:
+      name: belt
+      children:
+        - Conveyor: {speed: 1, direction: [1, 0, 0]}
+        - Cube: {size: [10, 1, 0.1]}
+  - Transform:
+      translation: [-4, 0, 0.12]
+      children:
+        - Body: {name: box, mass: 0.5, children: [{Cube: {size: [0.1, 0.1, 0.1]}}]}
+)");
+  p.run(2.0, 1.0 / 500);
+  const auto& box = p.node("#1/box");
+  EXPECT_NEAR(p.world->velocity(box).x, 1.0, 0.01);
+  EXPECT_NEAR(p.world->velocity(box).y, 0.0, 0.01);
+  EXPECT_GT(box.world.position.x, -4 + 1.0);  // it has travelled along +x
+}
+
+TEST(Physics, AHingeMotorReachesItsTargetVelocity) {
+  Plant p(R"(
+  - Joint:
+      name: shoulder
+      kind: hinge
+      axis1: [0, 0, 1]
+      vel1: 90
+      fmax1: 50
+      children:
+        - Body: {name: arm, mass: 2, children: [{Transform: {translation: [0.5, 0, 0], children: [{Cube: {size: [1, 0.1, 0.1]}}]}}]}
+)");
+  p.run(1.0, 1.0 / 500);
+  const auto& shoulder = p.node("shoulder");
+  EXPECT_NEAR(p.world->jointRate(shoulder), core::radians(90), 0.01 * core::radians(90));
+  // it reached the speed almost at once: the angle is close to 90 degrees after 1 s
+  EXPECT_NEAR(p.world->jointPosition(shoulder), core::radians(90), core::radians(2));
+}
+
+TEST(Physics, AnAttachedBoxFollowsTheArmThenFallsWhenDetached) {
+  Plant p(R"(
+  - World: {auto_disable: false}
+  - Joint:
+      name: rail
+      kind: slider
+      axis1: [1, 0, 0]
+      fmax1: 1000
+      children:
+        - Transform:
+            translation: [0, 0, 1]
+            children:
+              - Body: {name: arm, mass: 1, children: [{Cube: {size: [0.2, 0.2, 0.2]}}]}
+  - Transform:
+      translation: [0, 0, 0.8]
+      children:
+        - Body: {name: box, mass: 0.2, children: [{Cube: {size: [0.1, 0.1, 0.1]}}]}
+)");
+  auto& rail = p.node("rail");
+  const auto& box = p.node("#2/box");
+  const auto& arm = p.node("rail/#0/arm");
+  ASSERT_TRUE(p.world->attach(arm, box));
+  EXPECT_FALSE(p.world->attach(arm, box));  // already
+  rail.setValue(static_cast<std::size_t>(rail.type().fieldIndex("vel1")), 0.5);  // m/s
+  p.run(1.0, 1.0 / 500);
+  // the box went along with the arm, and did not fall
+  EXPECT_NEAR(box.world.position.x, 0.5, 0.02);
+  EXPECT_NEAR(box.world.position.z, 0.8, 0.02);
+  ASSERT_TRUE(p.world->detach(arm, box));
+  EXPECT_FALSE(p.world->detach(arm, box));
+  p.run(0.3, 1.0 / 500);
+  // free now: it falls (and keeps the arm's speed for a while)
+  EXPECT_LT(box.world.position.z, 0.8 - 0.5 * g * 0.3 * 0.3 + 0.02);
+  EXPECT_GT(box.world.position.x, 0.55);
+}
+
+TEST(Physics, StaticShapesDoNotMoveAndBodiesRestOnThem) {
+  Plant p(R"(
+  - Plane: {}
+  - Transform:
+      translation: [0, 0, 0.3]
+      children:
+        - Body: {name: box, mass: 1, children: [{Cube: {size: [0.2, 0.2, 0.2]}}]}
+)");
+  p.run(3.0, 1.0 / 250);
+  const auto& box = p.node("#1/box");
+  EXPECT_NEAR(box.world.position.z, 0.1, 0.005);
+  // at rest, auto-disable put it to sleep
+  EXPECT_FALSE(p.world->awake(box));
+  EXPECT_EQ(p.world->awakeCount(), 0u);
+}
+
+}  // namespace
+}  // namespace gdpn::physics
