@@ -377,7 +377,9 @@ struct World::Impl {
   static void nearCallback(void* data, dGeomID o1, dGeomID o2) {
     auto& self = *static_cast<Impl*>(data);
     dBodyID b1 = dGeomGetBody(o1), b2 = dGeomGetBody(o2);
-    if (!b1 && !b2) return;
+    // nothing to do between static shapes, or where everything involved sleeps
+    const bool awake1 = b1 && dBodyIsEnabled(b1), awake2 = b2 && dBodyIsEnabled(b2);
+    if (!awake1 && !awake2) return;
     if (b1 && b2 && dAreConnectedExcluding(b1, b2, dJointTypeContact)) return;
     constexpr int kMax = 8;
     dContact contact[kMax];
