@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -27,7 +28,7 @@ const std::vector<std::string> kTopKeys = {"gdpn", "description", "settings", "p
 const std::vector<std::string> kSettingsKeys = {"dt", "seed", "until"};
 const std::vector<std::string> kPageKeys = {"description", "places", "transitions", "arcs", "instances"};
 const std::vector<std::string> kPageTypeKeys = {"description", "references", "places", "transitions",
-                                                "arcs", "instances"};
+                                                "arcs", "instances", "scene"};
 const std::vector<std::string> kPlaceKeys = {"description", "slots", "tokens", "capacity", "on_deposit",
                                              "on_remove", "at"};
 const std::vector<std::string> kTransitionKeys = {"description", "duration", "priority", "probability", "guard",
@@ -35,7 +36,7 @@ const std::vector<std::string> kTransitionKeys = {"description", "duration", "pr
 const std::vector<std::string> kArcKeys = {"from", "to", "kind", "weight", "predicate"};
 const std::vector<std::string> kScriptsKeys = {"globals"};
 const std::vector<std::string> kScriptFileKeys = {"file", "function"};
-const std::vector<std::string> kInstanceKeys = {"type", "at"};
+const std::vector<std::string> kInstanceKeys = {"type", "at", "translation", "rotation"};
 const std::vector<std::string> kLaws = {"uniform", "normal", "exponential"};
 const std::vector<std::string> kArcKinds = {"normal", "test", "inhibitor"};
 const std::vector<std::string> kSlotKinds = {"control", "node", "sensor"};
@@ -72,6 +73,7 @@ class ModelReader {
       } else if (e.key == "pages") {
         readPages(e.value, model.net.pages, false);
       } else if (e.key == "page_types") {
+        type_scenes_ = &model.type_scenes;
         readPages(e.value, model.net.page_types, true);
       } else if (e.key == "scene") {
         model.scene = detail::readScene(e.value, r_, e.loc);
@@ -230,6 +232,8 @@ class ModelReader {
         }
       } else if (e.key == "instances") {
         forEachNamed(e, "instances", [&](const Entry& c) { page.instances.push_back(readInstance(c)); });
+      } else if (e.key == "scene" && type_scenes_) {
+        (*type_scenes_)[page.name] = detail::readScene(e.value, r_, e.loc);
       }
     }
   }
@@ -474,6 +478,24 @@ class ModelReader {
         i.type_loc = r_.loc(e.value, e.loc);
       } else if (e.key == "at") {
         i.position = readPos(e.value);
+      } else if (e.key == "translation" || e.key == "rotation") {
+        const std::size_t n = e.key == "translation" ? 3 : 4;
+        if (!e.value.IsSequence() || e.value.size() != n) {
+          r_.error(r_.loc(e.value, e.loc), "'" + e.key + "' expects " +
+                                               (n == 3 ? "[x, y, z]" : "[axis x, axis y, axis z, degrees]") +
+                                               ", got " + detail::describe(e.value));
+          continue;
+        }
+        std::array<double, 4> v{};
+        bool ok = true;
+        for (std::size_t k = 0; k < n; ++k) {
+          auto x = r_.number(e.value[k], e.key);
+          ok = ok && x;
+          if (x) v[k] = *x;
+        }
+        if (!ok) continue;
+        if (n == 3) i.translation = {v[0], v[1], v[2]};
+        else i.rotation = v;
       }
     }
     if (!has_type) r_.error(ie.loc, "instance '" + i.name + "' has no 'type'");
@@ -481,6 +503,7 @@ class ModelReader {
   }
 
   YamlReader r_;
+  std::map<std::string, std::shared_ptr<const scene::Scene>>* type_scenes_ = nullptr;
   std::string file_;
   const std::string& text_;
 };

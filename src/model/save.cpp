@@ -155,7 +155,7 @@ void writeArc(YAML::Emitter& out, const net::ArcSpec& a) {
   out << YAML::EndMap;
 }
 
-void writePage(YAML::Emitter& out, const net::PageSpec& page, bool type) {
+void writePage(YAML::Emitter& out, const net::PageSpec& page, bool type, const scene::Scene* type_scene) {
   out << YAML::Key << page.name << YAML::Value << YAML::BeginMap;
   description(out, page.description);
   if (type && !page.references.empty()) {
@@ -179,6 +179,16 @@ void writePage(YAML::Emitter& out, const net::PageSpec& page, bool type) {
       out << YAML::Key << i.name << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "type"
           << YAML::Value << i.type;
       pos(out, i.position);
+      if (i.translation != std::array<double, 3>{0, 0, 0}) {
+        out << YAML::Key << "translation" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+        for (double x : i.translation) out << formatDouble(x);
+        out << YAML::EndSeq;
+      }
+      if (i.rotation != std::array<double, 4>{0, 0, 1, 0}) {
+        out << YAML::Key << "rotation" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+        for (double x : i.rotation) out << formatDouble(x);
+        out << YAML::EndSeq;
+      }
       out << YAML::EndMap;
     }
     out << YAML::EndMap;
@@ -187,6 +197,10 @@ void writePage(YAML::Emitter& out, const net::PageSpec& page, bool type) {
     out << YAML::Key << "arcs" << YAML::Value << YAML::BeginSeq;
     for (const auto& a : page.arcs) writeArc(out, a);
     out << YAML::EndSeq;
+  }
+  if (type_scene) {
+    out << YAML::Key << "scene" << YAML::Value;
+    detail::writeScene(out, *type_scene);
   }
   out << YAML::EndMap;
 }
@@ -209,12 +223,15 @@ std::string writeModel(const Model& model) {
   }
   if (!model.net.pages.empty()) {
     out << YAML::Key << "pages" << YAML::Value << YAML::BeginMap;
-    for (const auto& p : model.net.pages) writePage(out, p, false);
+    for (const auto& p : model.net.pages) writePage(out, p, false, nullptr);
     out << YAML::EndMap;
   }
   if (!model.net.page_types.empty()) {
     out << YAML::Key << "page_types" << YAML::Value << YAML::BeginMap;
-    for (const auto& p : model.net.page_types) writePage(out, p, true);
+    for (const auto& p : model.net.page_types) {
+      auto it = model.type_scenes.find(p.name);
+      writePage(out, p, true, it == model.type_scenes.end() ? nullptr : it->second.get());
+    }
     out << YAML::EndMap;
   }
   if (model.scene) {

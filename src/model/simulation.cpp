@@ -1,6 +1,8 @@
 #include "gdpn/model/simulation.h"
 
+#include <algorithm>
 #include <cmath>
+#include <unordered_map>
 #include <filesystem>
 #include <iostream>
 
@@ -40,6 +42,60 @@ core::SourceLoc tokenLoc(const net::NetSpec& spec, const std::string& name) {
   return {};
 }
 
+/// Copies the scene each instance's page type owns into `scene`, under a Transform named after
+/// the instance and placed by its translation and rotation; nested instances nest the same way.
+class InstancePlacer {
+ public:
+  InstancePlacer(const Model& model, scene::Scene& scene, core::Diagnostics& diags)
+      : model_(model), scene_(scene), diags_(diags) {
+    for (const auto& t : model.net.page_types) types_[t.name] = &t;
+  }
+
+  void placePage(const net::PageSpec& page, scene::Node& parent, std::vector<std::string>& stack) {
+    for (const auto& inst : page.instances) {
+      auto type = types_.find(inst.type);
+      if (type == types_.end() || std::find(stack.begin(), stack.end(), inst.type) != stack.end()) continue;
+      if (!ownsScene(*type->second)) continue;
+      scene::Node* frame = scene_.create(*scene_.types().find("Transform"), inst.name, parent);
+      if (!frame) {
+        diags_.error(inst.loc, "instance '" + inst.name + "' places its machine at '" +
+                                   (parent.path().empty() ? "" : parent.path() + "/") + inst.name +
+                                   "', but the scene already has a node there");
+        continue;
+      }
+      frame->loc = inst.loc;
+      frame->setValue(0, inst.translation);
+      frame->setValue(1, inst.rotation);
+      if (auto own = model_.type_scenes.find(inst.type); own != model_.type_scenes.end()) {
+        for (const auto& c : own->second->root().children()) scene_.copy(*c, *frame);
+      }
+      stack.push_back(inst.type);
+      placePage(*type->second, *frame, stack);
+      stack.pop_back();
+    }
+  }
+
+ private:
+  /// True when the type, or a page type it instantiates, owns scene nodes.
+  bool ownsScene(const net::PageSpec& type, int depth = 0) const {
+    if (depth > 64) return false;
+    if (auto own = model_.type_scenes.find(type.name);
+        own != model_.type_scenes.end() && !own->second->root().children().empty()) {
+      return true;
+    }
+    for (const auto& inst : type.instances) {
+      auto t = types_.find(inst.type);
+      if (t != types_.end() && ownsScene(*t->second, depth + 1)) return true;
+    }
+    return false;
+  }
+
+  const Model& model_;
+  scene::Scene& scene_;
+  core::Diagnostics& diags_;
+  std::unordered_map<std::string, const net::PageSpec*> types_;
+};
+
 }  // namespace
 
 std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnostics& diags,
@@ -50,9 +106,18 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
   sim->model_ = model;
   sim->net_ = std::move(net);
   sim->seed_ = seed.value_or(model.settings.seed);
-  // the plant: the run's own copy of the scene, and its physics
-  if (model.scene && !model.scene->root().children().empty()) {
-    sim->scene_ = model.scene->clone();
+  // the plant: the run's own copy of the scene, with each instance's copy of its page
+  // type's scene, and its physics
+  const bool typed = std::any_of(model.type_scenes.begin(), model.type_scenes.end(),
+                                 [](const auto& t) { return !t.second->root().children().empty(); });
+  if ((model.scene && !model.scene->root().children().empty()) || typed) {
+    sim->scene_ = model.scene ? model.scene->clone() : std::make_unique<scene::Scene>();
+    InstancePlacer placer(model, *sim->scene_, diags);
+    for (const auto& page : model.net.pages) {
+      std::vector<std::string> stack;
+      placer.placePage(page, sim->scene_->root(), stack);
+    }
+    if (diags.hasErrors()) return nullptr;
     const auto dir = std::filesystem::path(model.path).parent_path().string();
     sim->physics_ = physics::World::create(*sim->scene_, dir, sim->seed_, diags);
     if (!sim->physics_) return nullptr;

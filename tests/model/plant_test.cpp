@@ -180,3 +180,76 @@ TEST(Plant, TwentyFallingBoxesGiveTheSameRunBitForBit) {
 
 }  // namespace
 }  // namespace gdpn::model
+
+namespace gdpn::model {
+namespace {
+
+TEST(Plant, EachInstanceGetsItsOwnCopyOfItsPageTypesScene) {
+  // a station owns a pusher body and a box on a hinge; two instances stand 3 m apart
+  core::Diagnostics diags;
+  auto sim = open(R"Y(gdpn: 1
+settings: {dt: 0.01, until: 1}
+scene:
+  - World: {gravity: [0, 0, 0]}
+pages:
+  line:
+    instances:
+      stationA: {type: station}
+      stationB: {type: station, translation: [3, 0, 0], rotation: [0, 0, 1, 90]}
+page_types:
+  station:
+    places:
+      devices: {tokens: {d0: [rail/pusher]}}
+      pushed: {}
+    transitions:
+      push:
+        pre_fire: "self.d0.set_velocity((0, 1, 0))"
+    arcs:
+      - {from: devices, to: push, weight: {d0: 1}}
+      - {from: push, to: pushed, weight: {d0: 1}}
+    scene:
+      - Transform:
+          name: rail
+          translation: [1, 0, 0]
+          children:
+            - Body: {name: pusher, mass: 1, children: [{Cube: {size: [0.1, 0.1, 0.1]}}]}
+)Y", diags);
+  ASSERT_TRUE(sim) << diags.str();
+  const auto* a = sim->plant()->find("stationA/rail/pusher");
+  const auto* b = sim->plant()->find("stationB/rail/pusher");
+  ASSERT_NE(a, nullptr);
+  ASSERT_NE(b, nullptr);
+  // placed by the instance: B is turned a quarter about z and moved 3 m along x
+  EXPECT_NEAR(a->world.position.x, 1.0, 1e-9);
+  EXPECT_NEAR(b->world.position.x, 3.0, 1e-9);
+  EXPECT_NEAR(b->world.position.y, 1.0, 1e-9);
+  // each instance's token is its own pusher: both pushed, each its own body
+  sim->run({});
+  EXPECT_NEAR(sim->physics()->velocity(*a).y, 1.0, 1e-6);
+  EXPECT_NEAR(sim->physics()->velocity(*b).y, 1.0, 1e-6);
+  EXPECT_NEAR(a->world.position.y, 1.0, 0.02);
+  EXPECT_NE(a, b);
+}
+
+TEST(Plant, AnInstanceCannotTakeAPlaceInTheSceneThatIsTaken) {
+  core::Diagnostics diags;
+  EXPECT_FALSE(open(R"Y(gdpn: 1
+scene:
+  - Group: {name: stationA}
+pages:
+  line:
+    instances:
+      stationA: station
+page_types:
+  station:
+    scene:
+      - Cube: {}
+)Y", diags));
+  EXPECT_NE(diags.str().find("plant.gdpn.yaml:7:7: error: instance 'stationA' places its machine at 'stationA', but "
+                             "the scene already has a node there"),
+            std::string::npos)
+      << diags.str();
+}
+
+}  // namespace
+}  // namespace gdpn::model

@@ -4,6 +4,8 @@
 /// as read from and written to a `.gdpn.yaml` file (docs/format.md).
 
 #include <cstdint>
+#include <algorithm>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -31,11 +33,21 @@ struct Model {
   Settings settings;         ///< run settings
   net::NetSpec net;          ///< pages and page types
   std::shared_ptr<const scene::Scene> scene;  ///< the `scene` section; null when the file has none
+  /// The scene subtrees page types own (their `scene` sections), by page type name; each
+  /// instance gets its own copy.
+  std::map<std::string, std::shared_ptr<const scene::Scene>> type_scenes;
 
   /// Same content (the path and source locations are not compared).
   friend bool operator==(const Model& a, const Model& b) {
     return a.description == b.description && a.settings == b.settings && a.net == b.net &&
-           (a.scene == b.scene || (a.scene && b.scene && a.scene->sameAs(*b.scene)));
+           sameScene(a.scene, b.scene) && a.type_scenes.size() == b.type_scenes.size() &&
+           std::equal(a.type_scenes.begin(), a.type_scenes.end(), b.type_scenes.begin(),
+                      [](const auto& x, const auto& y) { return x.first == y.first && sameScene(x.second, y.second); });
+  }
+
+  /// Both absent, or the same tree.
+  static bool sameScene(const std::shared_ptr<const scene::Scene>& a, const std::shared_ptr<const scene::Scene>& b) {
+    return a == b || (a && b && a->sameAs(*b));
   }
 };
 

@@ -180,8 +180,11 @@ struct InstanceSpec {
   SourceLoc loc;                      ///< where the instance is declared
   SourceLoc type_loc;                 ///< where the type is named
   std::optional<EditorPos> position;  ///< where the editor draws it
+  std::array<double, 3> translation{0, 0, 0};     ///< where its copy of the type's scene stands, m
+  std::array<double, 4> rotation{0, 0, 1, 0};     ///< how it is turned: axis and degrees
   friend bool operator==(const InstanceSpec& x, const InstanceSpec& y) {
-    return x.name == y.name && x.type == y.type && x.position == y.position;
+    return x.name == y.name && x.type == y.type && x.position == y.position && x.translation == y.translation &&
+           x.rotation == y.rotation;
   }
 };
 
