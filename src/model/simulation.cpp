@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
+#include <unordered_set>
+
+#include "gdpn/scene/actions.h"
 #include <filesystem>
 #include <iostream>
 
@@ -148,6 +151,9 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
     callbacks.node_name = [self](net::NodeRef r) { return self->nodeName(r); };
     callbacks.plant = sim->scene_.get();
     callbacks.physics = sim->physics_.get();
+    callbacks.spawn = [self](const scene::Node& templ, scene::Node& parent, std::optional<core::Vec3> at,
+                             std::string& why) { return self->spawn(templ, parent, at, why); };
+    callbacks.erase = [self](scene::Node& node) { self->deleteNode(node); };
     sim->engine_ = script::Engine::create(*sim->net_, *sim->kernel_, model.path, {script_timeout_s},
                                           std::move(callbacks), diags);
     if (!sim->engine_) return nullptr;
@@ -160,6 +166,55 @@ Simulation::~Simulation() {
   // the kernel must not call hooks of a dead engine
   if (kernel_) kernel_->setHooks(nullptr);
   engine_.reset();
+}
+
+scene::Node* Simulation::spawn(const scene::Node& templ, scene::Node& parent, std::optional<core::Vec3> at,
+                               std::string& why) {
+  if (!scene_) {
+    why = "the model has no scene";
+    return nullptr;
+  }
+  if (!parent.type().has_children) {
+    why = "a " + parent.type().name + " takes no children";
+    return nullptr;
+  }
+  // a fresh name: the template's, numbered
+  const std::string base = templ.name().empty() ? "spawn" : templ.name();
+  std::string name;
+  for (int k = 1; name.empty() || parent.child(name); ++k) name = base + "_" + std::to_string(k);
+  scene::Node* home = &parent;
+  if (at) {
+    home = scene_->create(*scene_->types().find("Transform"), name, parent);
+    const core::Vec3 local = parent.world.inverse().apply(*at);
+    home->setValue(0, std::array<double, 3>{local.x, local.y, local.z});
+  }
+  scene::Node* copy = scene_->copy(templ, *home, at ? templ.name() : name);
+  scene::Node* top = at ? home : copy;
+  core::Diagnostics diags;
+  if (physics_ && !physics_->add(*top, diags)) {
+    why = diags.str();
+    physics_->remove(*top);
+    scene_->destroy(*top);
+    return nullptr;
+  }
+  if (!physics_) scene::updateTransforms(*top);
+  if (trace_) {
+    trace_->event(kernel_->steps(), "spawn", "\"node\":" + core::jsonQuote(copy->path()) + ",\"from\":" +
+                                                 core::jsonQuote(templ.path()));
+  }
+  return copy;
+}
+
+void Simulation::deleteNode(scene::Node& node) {
+  if (!scene_ || !node.parent()) return;
+  std::unordered_set<net::NodeRef> gone;
+  scene::traverse(node, [&](scene::Node& n, const scene::TraversalState&) { gone.insert(n.handle()); });
+  const std::string path = node.path();
+  if (trace_) trace_->event(kernel_->steps(), "delete", "\"node\":" + core::jsonQuote(path));
+  // tokens first (the trace names them while they still resolve), then the physics, the nodes
+  kernel_->dropNodes([&](net::NodeRef r) { return gone.count(r) > 0; });
+  if (physics_) physics_->remove(node);
+  scene_->destroy(node);
 }
 
 std::optional<RunOutcome> Simulation::scriptHalt() const {

@@ -249,6 +249,49 @@ std::string Kernel::setMarking(PlaceSlotId ps, std::int64_t count) {
   return {};
 }
 
+std::string Kernel::addNode(PlaceSlotId ps, NodeRef ref) {
+  SlotState& st = slots_[ps];
+  if (st.fifo < 0) return "a control slot holds counts, not nodes";
+  if (st.capacity != kUnbounded && st.m + st.r + 1 > st.capacity) {
+    return "no room: capacity " + std::to_string(st.capacity) + ", reserved " + std::to_string(st.r);
+  }
+  fifos_[static_cast<std::size_t>(st.fifo)].push_back(ref);
+  ++st.m;
+  const NodeRef one[1] = {ref};
+  for (auto* o : observers_) o->onDeposit(ps, 1, one, step_);
+  update(ps);
+  return {};
+}
+
+std::size_t Kernel::dropNodes(const std::function<bool(NodeRef)>& gone) {
+  std::size_t dropped = 0;
+  for (PlaceSlotId ps = 0; ps + 1 < slots_.size(); ++ps) {
+    SlotState& st = slots_[ps];
+    if (st.fifo < 0) continue;
+    auto& fifo = fifos_[static_cast<std::size_t>(st.fifo)];
+    moved_.clear();
+    for (auto it = fifo.begin(); it != fifo.end();) {
+      if (gone(*it)) {
+        moved_.push_back(*it);
+        it = fifo.erase(it);
+      } else {
+        ++it;
+      }
+    }
+    if (moved_.empty()) continue;
+    st.m -= static_cast<std::int64_t>(moved_.size());
+    dropped += moved_.size();
+    for (auto* o : observers_) o->onRemove(ps, static_cast<std::int64_t>(moved_.size()), moved_, step_);
+    update(ps);
+  }
+  for (auto& held : held_) {
+    const auto before = held.size();
+    held.erase(std::remove_if(held.begin(), held.end(), [&](const auto& h) { return gone(h.second); }), held.end());
+    dropped += before - held.size();
+  }
+  return dropped;
+}
+
 void Kernel::begin(TransitionId t) {
   TransitionState& tr = tr_[t];
   // the occurrence is a virtual unsatisfied term: t cannot start again until it completes
@@ -319,8 +362,8 @@ void Kernel::finish(TransitionId t) {
     const PlaceSlotId ps = term.place_slot;
     SlotState& st = slots_[ps];
     st.r -= term.weight;
-    st.m += term.weight;
     moved_.clear();
+    if (st.fifo < 0) st.m += term.weight;
     if (st.fifo >= 0) {
       // node tokens leave in the order they were taken, per slot
       auto& fifo = fifos_[static_cast<std::size_t>(st.fifo)];
@@ -335,9 +378,12 @@ void Kernel::finish(TransitionId t) {
           ++it;
         }
       }
+      // as many as it still holds: a deleted node is gone from the transition too
+      st.m += static_cast<std::int64_t>(moved_.size());
     }
-    for (auto* o : observers_) o->onDeposit(ps, term.weight, moved_, step_);
-    if ((st.scripts & kOnDeposit) && hooks_) deposited(ps, st, term.weight);
+    const std::int64_t count = st.fifo >= 0 ? static_cast<std::int64_t>(moved_.size()) : term.weight;
+    for (auto* o : observers_) o->onDeposit(ps, count, moved_, step_);
+    if ((st.scripts & kOnDeposit) && hooks_) deposited(ps, st, count);
     update(ps);
   }
   tr.end_step = -1;

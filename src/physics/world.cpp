@@ -5,6 +5,7 @@
 #include <ode/ode.h>
 
 #include <algorithm>
+#include <deque>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -82,11 +83,13 @@ struct World::Impl {
   dSpaceID space = nullptr;
   dJointGroupID contacts = nullptr;
   int substeps = 1;
-  std::vector<Body> bodies;
+  std::deque<Body> bodies;  // stable addresses; a removed body keeps its place with id null
   std::unordered_map<scene::NodeHandle, std::size_t> body_of;  // Body node -> index
   std::vector<Joint> joints;
   std::unordered_map<scene::NodeHandle, std::size_t> joint_of;
   std::vector<Surface> surfaces;  // per geometry, by dGeomGetData index
+  std::unordered_map<scene::NodeHandle, dGeomID> geom_of;  // shape node -> its geometry
+  std::string model_dir;
   std::map<std::pair<dBodyID, dBodyID>, dJointID> attached;
 
   explicit Impl(scene::Scene& s) : scene(s) {}
@@ -114,31 +117,70 @@ struct World::Impl {
     Body* parent;  // the body above the joint, or null (the world)
   };
 
-  bool build(const std::string& model_dir, core::Diagnostics& diags) {
-    scene::updateTransforms(scene.root());
+  /// The Material in effect at `node`: the last one among the earlier siblings of it or of
+  /// any of its ancestors, nearest first.
+  static const Node* materialAt(const Node& node) {
+    for (const Node* n = &node; n->parent(); n = n->parent()) {
+      for (const Node* sib = n->prev(); sib; sib = sib->prev()) {
+        if (sib->type().name == "Material") return sib;
+      }
+    }
+    return nullptr;
+  }
+
+  /// Builds everything in the subtree at `top`: bodies first (joints need both ends), then
+  /// one geometry per shape with the material in effect, then the joints.
+  bool addSubtree(Node& top, core::Diagnostics& diags) {
+    scene::updateTransforms(top);
     bool ok = true;
-    std::vector<Pending> pending_joints;
-    // bodies first (joints need both ends), with their shapes and masses
-    buildBodies(scene.root(), nullptr, diags, ok);
-    // static shapes and body shapes: one geometry each, with the material in effect
-    scene::traverse(scene.root(), [&](Node& n, const scene::TraversalState& st) {
+    buildBodies(top);
+    std::vector<std::pair<Node*, Body*>> pending_joints;
+    scene::TraversalState state{top.world, top.world_scale, materialAt(top)};
+    scene::traverse(top, [&](Node& n, const scene::TraversalState& st) {
       if (n.type().category == scene::Category::Shape) ok = addGeom(n, st, model_dir, diags) && ok;
-      if (n.type().name == "Joint") pending_joints.push_back({&n, owner(*n.parent())});
-    });
-    for (const auto& p : pending_joints) ok = addJoint(*p.node, p.parent, diags) && ok;
+      if (n.type().name == "Joint") pending_joints.emplace_back(&n, n.parent() ? owner(*n.parent()) : nullptr);
+    }, state);
+    for (const auto& [node, parent] : pending_joints) ok = addJoint(*node, parent, diags) && ok;
     return ok;
   }
 
-  void buildBodies(Node& node, Body* enclosing, core::Diagnostics& diags, bool& ok) {
-    Body* here = enclosing;
+  void buildBodies(Node& node) {
     if (node.type().name == "Body") {
       dBodyID id = dBodyCreate(world);
       bodies.push_back({&node, id, {}, {}, {}, {}});
       body_of[node.handle()] = bodies.size() - 1;
-      here = &bodies.back();
     }
-    for (const auto& c : node.children()) buildBodies(*c, here, diags, ok);
+    for (const auto& c : node.children()) buildBodies(*c);
     if (node.type().name == "Body") finishBody(bodies[body_of[node.handle()]]);
+  }
+
+  void removeSubtree(const Node& top) {
+    scene::traverse(const_cast<Node&>(top), [&](Node& n, const scene::TraversalState&) {
+      const auto h = n.handle();
+      if (auto g = geom_of.find(h); g != geom_of.end()) {
+        dGeomDestroy(g->second);
+        geom_of.erase(g);
+      }
+      if (auto j = joint_of.find(h); j != joint_of.end()) {
+        dJointDestroy(joints[j->second].id);
+        joints[j->second].id = nullptr;
+        joint_of.erase(j);
+      }
+      if (auto b = body_of.find(h); b != body_of.end()) {
+        Body& body = bodies[b->second];
+        for (auto it = attached.begin(); it != attached.end();) {
+          if (it->first.first == body.id || it->first.second == body.id) {
+            dJointDestroy(it->second);
+            it = attached.erase(it);
+          } else {
+            ++it;
+          }
+        }
+        dBodyDestroy(body.id);
+        body.id = nullptr;
+        body_of.erase(b);
+      }
+    });
   }
 
   /// Mass from the body's own shapes (not those of bodies below it), centre of mass at the
@@ -190,7 +232,7 @@ struct World::Impl {
     node.dynamic_pose = node.world;
   }
 
-  bool addGeom(Node& n, const scene::TraversalState& st, const std::string& model_dir, core::Diagnostics& diags) {
+  bool addGeom(Node& n, const scene::TraversalState& st, const std::string& dir, core::Diagnostics& diags) {
     const auto& t = n.type().name;
     const Vec3 s = n.world_scale;
     Body* body = owner(n);
@@ -219,7 +261,7 @@ struct World::Impl {
     } else if (t == "Mesh") {
       const std::string file = n.text("file");
       const auto at = n.field_locs[static_cast<std::size_t>(n.type().fieldIndex("file"))];
-      const auto path = std::filesystem::path(model_dir) / file;
+      const auto path = std::filesystem::path(dir) / file;
       std::error_code ec;
       if (file.empty() || !std::filesystem::is_regular_file(path, ec)) {
         diags.error(at.line > 0 ? at : n.loc, "cannot read the mesh file '" + file + "' (looked for " +
@@ -247,6 +289,7 @@ struct World::Impl {
     }
     surfaces.push_back(surface);
     dGeomSetData(g, reinterpret_cast<void*>(surfaces.size()));  // 1-based: 0 means none
+    geom_of[n.handle()] = g;
     if (t == "Plane") return true;
     const dQuaternion q = {n.world.rotation.w, n.world.rotation.x, n.world.rotation.y, n.world.rotation.z};
     if (body) {
@@ -338,6 +381,7 @@ struct World::Impl {
   /// Motors follow the joint nodes' fields (a script may have set them).
   void driveMotors() {
     for (const auto& jt : joints) {
+      if (!jt.id) continue;
       const Node& n = *jt.node;
       const bool angular = jt.kind != "slider";
       const double vel1 = angular ? core::radians(value(n, jt.vel1)) : value(n, jt.vel1);
@@ -420,6 +464,7 @@ struct World::Impl {
     driveMotors();
     for (int k = 0; k < substeps; ++k) {
       for (auto& b : bodies) {
+        if (!b.id) continue;
         const Vec3 f = b.force + b.pending;
         if (f.x != 0 || f.y != 0 || f.z != 0) dBodyAddForce(b.id, f.x, f.y, f.z);
         if (b.torque.x != 0 || b.torque.y != 0 || b.torque.z != 0) dBodyAddTorque(b.id, b.torque.x, b.torque.y, b.torque.z);
@@ -435,7 +480,7 @@ struct World::Impl {
   /// Moving bodies tell the scene where they are; sleeping ones have not moved.
   void writeBack() {
     for (auto& b : bodies) {
-      if (!dBodyIsEnabled(b.id) && b.node->dynamic_pose) continue;
+      if (!b.id || (!dBodyIsEnabled(b.id) && b.node->dynamic_pose)) continue;
       const Pose p = bodyPose(b.id);
       b.node->dynamic_pose = Pose{p.position - p.rotation.rotate(b.com), p.rotation};
       scene::updateTransforms(*b.node);
@@ -475,7 +520,8 @@ std::unique_ptr<World> World::create(scene::Scene& scene, const std::string& mod
   dWorldSetQuickStepNumIterations(impl->world, 40);
   dWorldSetAutoDisableFlag(impl->world, auto_disable ? 1 : 0);
   dWorldSetContactSurfaceLayer(impl->world, 0.001);
-  if (!impl->build(model_dir, diags)) return nullptr;
+  impl->model_dir = model_dir;
+  if (!impl->addSubtree(scene.root(), diags)) return nullptr;
   return std::unique_ptr<World>(new World(std::move(impl)));
 }
 
@@ -564,10 +610,13 @@ bool World::detach(const scene::Node& a, const scene::Node& b) {
   return true;
 }
 
-std::size_t World::bodyCount() const { return impl_->bodies.size(); }
+bool World::add(scene::Node& top, core::Diagnostics& diags) { return impl_->addSubtree(top, diags); }
+void World::remove(const scene::Node& top) { impl_->removeSubtree(top); }
+
+std::size_t World::bodyCount() const { return impl_->body_of.size(); }
 std::size_t World::awakeCount() const {
   std::size_t n = 0;
-  for (const auto& b : impl_->bodies) n += dBodyIsEnabled(b.id) ? 1u : 0u;
+  for (const auto& b : impl_->bodies) n += b.id && dBodyIsEnabled(b.id) ? 1u : 0u;
   return n;
 }
 

@@ -173,6 +173,18 @@ struct Engine::Impl : detail::Context {
     return callbacks.plant ? callbacks.plant->resolve(ref) : nullptr;
   }
   physics::World* physicsWorld() const override { return callbacks.physics; }
+  scene::Scene* plant() const override { return callbacks.plant; }
+  scene::Node* spawn(const scene::Node& templ, scene::Node& parent, std::optional<core::Vec3> at,
+                     std::string& why) override {
+    if (!callbacks.spawn) {
+      why = "spawning is not available here";
+      return nullptr;
+    }
+    return callbacks.spawn(templ, parent, at, why);
+  }
+  void erase(scene::Node& node) override {
+    if (callbacks.erase) callbacks.erase(node);
+  }
   void stop(const std::string& reason) override {
     if (halt != Halt::None) return;
     halt = Halt::Stop;

@@ -267,6 +267,28 @@ void registerViews() {
                                return n.text("kind") == "slider" ? x : x * 180.0 / M_PI;
                              },
                              "a joint's rate on axis 1: deg/s, or m/s for a slider")
+      .def("spawn",
+           [](const NodeView& v, const py::object& templ, const py::object& at) {
+             auto& ctx = v.r.get();
+             const scene::Node* source = nullptr;
+             if (py::isinstance<NodeView>(templ)) {
+               source = &sceneNode(templ.cast<const NodeView&>());
+             } else if (ctx.plant()) {
+               source = ctx.plant()->find(templ.cast<std::string>());
+             }
+             if (!source) throw py::value_error("no template node " + py::str(templ).cast<std::string>());
+             std::optional<core::Vec3> where;
+             if (!at.is_none()) where = vec(at.cast<py::sequence>());
+             std::string why;
+             scene::Node* made = ctx.spawn(*source, sceneNode(v), where, why);
+             if (!made) throw py::value_error("cannot spawn " + source->path() + ": " + why);
+             return ctx.nodeView(made->handle());
+           },
+           py::arg("template"), py::arg("at") = py::none(),
+           "copies a template node (a node or a path) as a child of this node, at a world position if given; "
+           "returns the copy")
+      .def("delete", [](const NodeView& v) { v.r.get().erase(sceneNode(v)); },
+           "deletes this node and its subtree; tokens that hold them leave the net")
       .def("__getattr__", [](const NodeView& v, const std::string& name) { return getField(v, name); })
       .def("__setattr__", [](const NodeView& v, const std::string& name, const py::object& value) {
         setField(v, name, value);
@@ -286,6 +308,15 @@ void registerViews() {
              if (!why.empty()) throw py::value_error(ownerName(s) + " slot " + net::slotName(s.slot) + ": " + why);
            },
            "sets a control slot's count (places only)")
+      .def("add",
+           [](const SlotView& s, const NodeView& node) {
+             if (s.of_transition) throw py::type_error("add node tokens to a place's slot");
+             const auto ps = placeSlot(s);
+             if (ps < 0) throw py::attribute_error(ownerName(s) + " has no slot " + net::slotName(s.slot));
+             const std::string why = s.r.get().kernelRef().addNode(static_cast<net::PlaceSlotId>(ps), node.ref);
+             if (!why.empty()) throw py::value_error(ownerName(s) + " slot " + net::slotName(s.slot) + ": " + why);
+           },
+           "puts a node token at the end of a place's node slot (a spawned node, say)")
       .def("__len__", [](const SlotView& s) { return count(s); })
       .def("__getitem__",
            [](const SlotView& s, std::int64_t i) {
@@ -397,6 +428,14 @@ void registerViews() {
              if (p < 0) throw py::key_error("no place '" + name + "'");
              return v.r.get().placeView(static_cast<net::PlaceId>(p));
            })
+      .def("node",
+           [](const SimView& v, const std::string& path) -> py::object {
+             auto& ctx = v.r.get();
+             const scene::Node* n = ctx.plant() ? ctx.plant()->find(path) : nullptr;
+             if (!n) throw py::key_error("no scene node '" + path + "'");
+             return ctx.nodeView(n->handle());
+           },
+           "the scene node at a path")
       .def("transition", [](const SimView& v, const std::string& name) {
         const auto t = v.r.get().netRef().findTransition(name);
         if (t < 0) throw py::key_error("no transition '" + name + "'");

@@ -29,6 +29,13 @@ class Context {
   virtual scene::Node* sceneNode(net::NodeRef ref) const = 0;
   /// The plant's physics, or null.
   virtual physics::World* physicsWorld() const = 0;
+  /// The run's scene, or null.
+  virtual scene::Scene* plant() const = 0;
+  /// Copies `templ` under `parent` (at a world position if given); null and `why` on failure.
+  virtual scene::Node* spawn(const scene::Node& templ, scene::Node& parent, std::optional<core::Vec3> at,
+                             std::string& why) = 0;
+  /// Deletes a node, its subtree and their tokens.
+  virtual void erase(scene::Node& node) = 0;
 
   /// False once the engine is gone; a view kept past that raises instead of crashing.
   std::shared_ptr<bool> alive = std::make_shared<bool>(true);

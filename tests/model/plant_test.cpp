@@ -253,3 +253,73 @@ page_types:
 
 }  // namespace
 }  // namespace gdpn::model
+
+namespace gdpn::model {
+namespace {
+
+TEST(Plant, ScriptsSpawnCopiesAndDeleteNodes) {
+  core::Diagnostics diags;
+  auto sim = open(R"Y(gdpn: 1
+settings: {dt: 0.01, until: 2}
+scene:
+  - Plane: {}
+  - Transform:
+      name: store
+      translation: [50, 0, 0.05]
+      children: [{Body: {name: box, mass: 0.5, children: [{Cube: {size: [0.1, 0.1, 0.1]}}]}}]
+  - Group: {name: area}
+  - Group:
+      name: pile
+      children:
+        - Transform: {name: spot1, translation: [-5, 0, 0.05], children: [{Body: {name: crate1, children: [{Cube: {size: [0.1, 0.1, 0.1]}}]}}]}
+        - Transform: {name: spot2, translation: [-6, 0, 0.05], children: [{Body: {name: crate2, children: [{Cube: {size: [0.1, 0.1, 0.1]}}]}}]}
+pages:
+  main:
+    places:
+      feed: {tokens: 3}
+      boxes: {slots: {d0: node}}
+      crates: {tokens: {d0: [pile/spot1/crate1, pile/spot2/crate2]}}
+      once: {tokens: 1}
+    transitions:
+      make:
+        duration: 0.2
+        pre_fire: |
+          box = sim.node("area").spawn("store/box", at=(sim.step * 0.01, 0, 0.5))
+          sim.place("main/boxes").d0.add(box)
+      scrap:
+        pre_fire: 'sim.place("main/crates").d0[0].delete()'
+    arcs:
+      - feed -> make
+      - once -> scrap
+)Y", diags);
+  ASSERT_TRUE(sim) << diags.str();
+  std::ostringstream trace;
+  sim->traceTo(trace);
+  const auto bodies_before = sim->physics()->bodyCount();
+  const auto outcome = sim->run({});
+  ASSERT_NE(outcome.reason, StopReason::ScriptError) << outcome.message;  // it ends dead: all asleep
+  // three copies, each a body that fell onto the ground, each a token on 'boxes'
+  const auto* area = sim->plant()->find("area");
+  ASSERT_EQ(area->children().size(), 3u);
+  const auto* first = sim->plant()->find("area/box_1/box");
+  ASSERT_NE(first, nullptr);
+  EXPECT_NEAR(first->world.position.z, 0.05, 0.01);
+  const auto boxes = sim->net().findPlace("main/boxes");
+  EXPECT_EQ(sim->kernel().placeTokens(static_cast<net::PlaceId>(boxes)), 3);
+  // the deleted crate left the scene, the physics and its place; the trace says so
+  EXPECT_EQ(sim->plant()->find("pile/spot1/crate1"), nullptr);
+  EXPECT_NE(sim->plant()->find("pile/spot1"), nullptr);
+  EXPECT_EQ(sim->physics()->bodyCount(), bodies_before + 3 - 1);
+  const auto crates = sim->net().findPlace("main/crates");
+  EXPECT_EQ(sim->kernel().placeTokens(static_cast<net::PlaceId>(crates)), 1);
+  const std::string t = trace.str();
+  EXPECT_NE(t.find("\"ev\":\"delete\",\"node\":\"pile/spot1/crate1\""), std::string::npos) << t;
+  EXPECT_NE(t.find("\"ev\":\"remove\",\"place\":\"main/crates\",\"slot\":\"d0\",\"count\":1,\"tokens\":"
+                   "[\"pile/spot1/crate1\"]"),
+            std::string::npos)
+      << t;
+  EXPECT_NE(t.find("\"ev\":\"spawn\",\"node\":\"area/box_1/box\",\"from\":\"store/box\""), std::string::npos) << t;
+}
+
+}  // namespace
+}  // namespace gdpn::model

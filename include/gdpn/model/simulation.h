@@ -88,6 +88,13 @@ class Simulation {
   [[nodiscard]] std::string nodeName(net::NodeRef ref) const;
   /// True once start() has run.
   [[nodiscard]] bool started() const { return started_; }
+  /// Copies `templ` (a node of the plant) as a new child of `parent`, named after it with a
+  /// number; with `at`, under a new Transform that puts it at that world position (m). Its
+  /// bodies join the physics; the trace records it. Returns the copy, or null and `why`.
+  scene::Node* spawn(const scene::Node& templ, scene::Node& parent, std::optional<core::Vec3> at, std::string& why);
+  /// Deletes `node` and its subtree from the plant: tokens that hold any of them leave the
+  /// net, their bodies leave the physics, and the trace records it. The root stays.
+  void deleteNode(scene::Node& node);
   /// Why the run must end now, if a script says so (an error, a timeout, an interrupt or
   /// sim.stop); nullopt while scripts are content.
   [[nodiscard]] std::optional<RunOutcome> scriptHalt() const;

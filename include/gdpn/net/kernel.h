@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -83,6 +84,12 @@ class Kernel {
   /// not: a node slot, a negative count, or no room (count + reserve > capacity). Observers
   /// see the change as a deposit or a removal; on_deposit/on_remove scripts do not run.
   std::string setMarking(PlaceSlotId ps, std::int64_t count);
+  /// Puts node token `ref` at the end of node slot `ps` (a script's `add`). Returns "" or why
+  /// not: a control slot, or no room. Observers see a deposit; on_deposit does not run.
+  std::string addNode(PlaceSlotId ps, NodeRef ref);
+  /// Removes every node token for which `gone(ref)` is true, from the places (observers see
+  /// removals) and from what occurring transitions hold (they deposit fewer). Returns how many.
+  std::size_t dropNodes(const std::function<bool(NodeRef)>& gone);
   /// Number of transitions occurring now.
   [[nodiscard]] std::size_t occurringCount() const { return occurring_count_; }
   /// Number of transitions enabled now.

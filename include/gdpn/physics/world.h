@@ -61,6 +61,13 @@ class World {
   /// Breaks the fixed joint made by attach(). False when there is none.
   bool detach(const scene::Node& a, const scene::Node& b);
 
+  /// Adds the bodies, shapes and joints of the subtree at `top`, a node just put into the
+  /// scene (spawned). False, with diagnostics, when it cannot be built.
+  bool add(scene::Node& top, core::Diagnostics& diags);
+  /// Takes the bodies, shapes and joints of the subtree at `top` out of the physics; the
+  /// scene nodes are the caller's to delete afterwards.
+  void remove(const scene::Node& top);
+
   /// Number of bodies, and of those awake.
   [[nodiscard]] std::size_t bodyCount() const;
   [[nodiscard]] std::size_t awakeCount() const;

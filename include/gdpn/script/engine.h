@@ -28,6 +28,10 @@ struct EngineCallbacks {
   std::function<std::string(net::NodeRef)> node_name;  ///< the path of a node token
   scene::Scene* plant = nullptr;      ///< the run's scene, whose handles node tokens are (null: none)
   physics::World* physics = nullptr;  ///< its physics (null: none)
+  /// node.spawn(...): copies a template under a parent, at a world position if given
+  std::function<scene::Node*(const scene::Node&, scene::Node&, std::optional<core::Vec3>, std::string&)> spawn;
+  /// node.delete(): removes a node, its subtree and their tokens
+  std::function<void(scene::Node&)> erase;
 };
 
 /// Why the engine halted.
