@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "gdpn/core/text.h"
+#include "gdpn/model/report.h"
 #include "gdpn/model/simulation.h"
 
 namespace gdpn::model {
@@ -319,6 +320,38 @@ pages:
             std::string::npos)
       << t;
   EXPECT_NE(t.find("\"ev\":\"spawn\",\"node\":\"area/box_1/box\",\"from\":\"store/box\""), std::string::npos) << t;
+}
+
+}  // namespace
+}  // namespace gdpn::model
+
+namespace gdpn::model {
+namespace {
+
+TEST(PlantExample, TheFeederFillsTheBeltAndTheArmKeepsItsCycle) {
+  core::Diagnostics diags;
+  auto m = loadModel(std::string(GDPN_SOURCE_DIR) + "/examples/plant/feeder/feeder.gdpn.yaml", diags);
+  ASSERT_TRUE(m) << diags.str();
+  auto sim = Simulation::create(*m, diags);
+  ASSERT_TRUE(sim) << diags.str();
+  const auto outcome = sim->run({});
+  ASSERT_EQ(outcome.reason, StopReason::Until) << outcome.message;
+  // ten boxes spawned; the belt carried the first to its end, where it fell off
+  EXPECT_EQ(sim->plant()->find("boxes")->children().size(), 10u);
+  const auto* first = sim->plant()->find("boxes/box_1/box");
+  ASSERT_NE(first, nullptr);
+  EXPECT_GT(first->world.position.x, 4.5);
+  EXPECT_LT(first->world.position.z, 0.3);
+  // the net's cycles are what its durations say
+  const auto r = makeReport(*sim, outcome);
+  for (const auto& t : r.transitions) {
+    if (t.name == "main/swing_out") {
+      EXPECT_DOUBLE_EQ(t.max_cycle, 2.0);
+    }
+    if (t.name == "main/feed") {
+      EXPECT_DOUBLE_EQ(t.mean_cycle, 1.5);
+    }
+  }
 }
 
 }  // namespace
