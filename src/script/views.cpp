@@ -119,15 +119,19 @@ core::Vec3 vec(const py::sequence& s) {
   return {s[0].cast<double>(), s[1].cast<double>(), s[2].cast<double>()};
 }
 
+/// The index of field `name` of `n`'s type; raises AttributeError with a suggestion.
+std::size_t fieldOf(const scene::Node& n, const std::string& name) {
+  const int i = n.type().fieldIndex(name);
+  if (i >= 0) return static_cast<std::size_t>(i);
+  std::vector<std::string> names;
+  for (const auto* f : n.type().fields) names.push_back(f->name);
+  throw py::attribute_error("a " + n.type().name + " has no field '" + name + "'" + core::didYouMean(name, names));
+}
+
 /// A field's value for Python: bool, int, float, tuple or str.
 py::object getField(const NodeView& v, const std::string& name) {
   const scene::Node& n = sceneNode(v);
-  const int i = n.type().fieldIndex(name);
-  if (i < 0) {
-    std::vector<std::string> names;
-    for (const auto* f : n.type().fields) names.push_back(f->name);
-    throw py::attribute_error("a " + n.type().name + " has no field '" + name + "'" + core::didYouMean(name, names));
-  }
+  const std::size_t i = fieldOf(n, name);
   return std::visit(
       [](const auto& x) -> py::object {
         using T = std::decay_t<decltype(x)>;
@@ -135,19 +139,14 @@ py::object getField(const NodeView& v, const std::string& name) {
         else if constexpr (std::is_same_v<T, std::array<double, 4>>) return py::make_tuple(x[0], x[1], x[2], x[3]);
         else return py::cast(x);
       },
-      n.value(static_cast<std::size_t>(i)));
+      n.value(i));
 }
 
 /// Sets a field from Python, with the same checks as the model file.
 void setField(const NodeView& v, const std::string& name, const py::object& value) {
   scene::Node& n = sceneNode(v);
-  const int i = n.type().fieldIndex(name);
-  if (i < 0) {
-    std::vector<std::string> names;
-    for (const auto* f : n.type().fields) names.push_back(f->name);
-    throw py::attribute_error("a " + n.type().name + " has no field '" + name + "'" + core::didYouMean(name, names));
-  }
-  const scene::FieldDesc& f = *n.type().fields[static_cast<std::size_t>(i)];
+  const std::size_t i = fieldOf(n, name);
+  const scene::FieldDesc& f = *n.type().fields[i];
   auto range = [&](double x) {
     if (auto why = f.rangeError(x); !why.empty()) throw py::value_error(why);
     return x;
@@ -181,7 +180,7 @@ void setField(const NodeView& v, const std::string& name, const py::object& valu
     case scene::FieldKind::String:
     case scene::FieldKind::File: out = value.cast<std::string>(); break;
   }
-  n.setValue(static_cast<std::size_t>(i), std::move(out));
+  n.setValue(i, std::move(out));
   // a joint whose motor changes wakes its bodies on the next step (the physics reads the fields)
 }
 
