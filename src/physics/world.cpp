@@ -59,6 +59,7 @@ struct Surface {
   double conveyor_speed = 0.0;  // m/s, 0 when not a conveyor
   Vec3 conveyor_dir;            // in the frame of the geometry's body (world frame if static)
   bool conveyor = false;
+  const Node* node = nullptr;   // the shape
 };
 
 }  // namespace
@@ -89,6 +90,13 @@ struct World::Impl {
   std::unordered_map<scene::NodeHandle, std::size_t> joint_of;
   std::vector<Surface> surfaces;  // per geometry, by dGeomGetData index
   std::unordered_map<scene::NodeHandle, dGeomID> geom_of;  // shape node -> its geometry
+  struct Sensor {
+    Node* node;
+    dGeomID geom;     // in sensor_space, never in contacts
+    bool ray;         // a ray: RangeFinder, or a Region of shape ray
+  };
+  dSpaceID sensor_space = nullptr;
+  std::vector<Sensor> sensors;
   std::string model_dir;
   std::map<std::pair<dBodyID, dBodyID>, dJointID> attached;
 
@@ -96,6 +104,7 @@ struct World::Impl {
   ~Impl() {
     for (auto& [pair, j] : attached) dJointDestroy(j);
     if (contacts) dJointGroupDestroy(contacts);
+    if (sensor_space) dSpaceDestroy(sensor_space);
     if (space) dSpaceDestroy(space);
     if (world) dWorldDestroy(world);
   }
@@ -139,6 +148,7 @@ struct World::Impl {
     scene::traverse(top, [&](Node& n, const scene::TraversalState& st) {
       if (n.type().category == scene::Category::Shape) ok = addGeom(n, st, model_dir, diags) && ok;
       if (n.type().name == "Joint") pending_joints.emplace_back(&n, n.parent() ? owner(*n.parent()) : nullptr);
+      if (n.type().category == scene::Category::Sensor) addSensor(n);
     }, state);
     for (const auto& [node, parent] : pending_joints) ok = addJoint(*node, parent, diags) && ok;
     return ok;
@@ -154,12 +164,126 @@ struct World::Impl {
     if (node.type().name == "Body") finishBody(bodies[body_of[node.handle()]]);
   }
 
+  void addSensor(Node& n) {
+    const auto& t = n.type().name;
+    dGeomID g = nullptr;
+    bool ray = false;
+    if (t == "RangeFinder") {
+      g = dCreateRay(sensor_space, n.number("length"));
+      ray = true;
+    } else if (t == "Region") {
+      const std::string shape = n.text("shape");
+      const Vec3 s = n.world_scale;
+      if (shape == "box") {
+        const Vec3 size = n.vec3("size").times(s);
+        g = dCreateBox(sensor_space, std::max(size.x, 1e-9), std::max(size.y, 1e-9), std::max(size.z, 1e-9));
+      } else if (shape == "sphere") {
+        g = dCreateSphere(sensor_space, std::max(n.number("radius") * std::max({s.x, s.y, s.z}), 1e-9));
+      } else if (shape == "cylinder" || shape == "cone") {
+        const double r = n.number("radius") * std::max(s.x, s.y) * (shape == "cone" ? 0.5 : 1.0);
+        g = dCreateCylinder(sensor_space, std::max(r, 1e-9), std::max(n.number("height") * s.z, 1e-9));
+      } else {
+        g = dCreateRay(sensor_space, n.number("length"));
+        ray = true;
+      }
+    } else {
+      return;  // time sensors need no geometry
+    }
+    sensors.push_back({&n, g, ray});
+  }
+
+  /// True when shape `shape` is in the scope of `sensor`.
+  static bool inScope(const Node& sensor, const Node& shape) {
+    const std::string scope = sensor.text("scope");
+    if (scope == "world") return true;
+    const Node* parent = sensor.parent();
+    for (const Node* n = &shape; n; n = n->parent()) {
+      if (scope == "parent" && n == parent) return true;
+      if (scope == "siblings" && n->parent() == parent) return n != &sensor;
+    }
+    return false;
+  }
+
+  /// The node an overlap reports: the body a shape belongs to, or the static shape itself.
+  const Node* reported(const Node& shape) const {
+    const Body* b = owner(shape);
+    return b ? b->node : &shape;
+  }
+
+  struct SenseContext {
+    Impl* self;
+    const Sensor* sensor;
+    std::vector<const Node*> items;
+    double distance;
+    const Node* hit;
+  };
+
+  static void senseCallback(void* data, dGeomID o1, dGeomID o2) {
+    auto& ctx = *static_cast<SenseContext*>(data);
+    dGeomID other = o1 == ctx.sensor->geom ? o2 : o1;
+    if (dGeomIsSpace(other)) {
+      dSpaceCollide2(ctx.sensor->geom, other, data, &senseCallback);
+      return;
+    }
+    const Surface s = surfaceOf(other, *ctx.self);
+    if (!s.node || !inScope(*ctx.sensor->node, *s.node)) return;
+    dContactGeom c;
+    if (dCollide(ctx.sensor->geom, other, 1, &c, sizeof(dContactGeom)) == 0) return;
+    if (ctx.sensor->ray) {
+      if (c.depth < ctx.distance) {
+        ctx.distance = c.depth;
+        ctx.hit = ctx.self->reported(*s.node);
+      }
+    } else {
+      ctx.items.push_back(ctx.self->reported(*s.node));
+    }
+  }
+
+  void sense(std::vector<std::pair<scene::NodeHandle, Feel>>& out) {
+    out.clear();
+    for (const auto& sensor : sensors) {
+      const Node& n = *sensor.node;
+      // sensors follow the nodes they sit in (a body moves them)
+      if (sensor.ray) {
+        const Vec3 from = n.world.position, dir = n.world.rotation.rotate({1, 0, 0});
+        dGeomRaySet(sensor.geom, from.x, from.y, from.z, dir.x, dir.y, dir.z);
+      } else {
+        dGeomSetPosition(sensor.geom, n.world.position.x, n.world.position.y, n.world.position.z);
+        const dQuaternion q = {n.world.rotation.w, n.world.rotation.x, n.world.rotation.y, n.world.rotation.z};
+        dGeomSetQuaternion(sensor.geom, q);
+      }
+      const double length = sensor.ray ? dGeomRayGetLength(sensor.geom) : 0.0;
+      SenseContext ctx{this, &sensor, {}, length, nullptr};
+      dSpaceCollide2(sensor.geom, reinterpret_cast<dGeomID>(space), &ctx, &senseCallback);
+      Feel feel;
+      if (sensor.ray) {
+        feel.distance = ctx.distance;
+        feel.hit = ctx.hit ? ctx.hit->handle() : 0;
+        if (n.type().name == "Region" && ctx.hit) feel.items.push_back(ctx.hit->handle());
+      } else {
+        std::sort(ctx.items.begin(), ctx.items.end(),
+                  [](const Node* a, const Node* b) { return a->path() < b->path(); });
+        ctx.items.erase(std::unique(ctx.items.begin(), ctx.items.end()), ctx.items.end());
+        for (const Node* item : ctx.items) feel.items.push_back(item->handle());
+      }
+      out.emplace_back(n.handle(), std::move(feel));
+    }
+  }
+
   void removeSubtree(const Node& top) {
     scene::traverse(const_cast<Node&>(top), [&](Node& n, const scene::TraversalState&) {
       const auto h = n.handle();
       if (auto g = geom_of.find(h); g != geom_of.end()) {
         dGeomDestroy(g->second);
         geom_of.erase(g);
+      }
+      for (auto it = sensors.begin(); it != sensors.end();) {
+        if (it->node == &n) {
+          dGeomDestroy(it->geom);
+          it = sensors.erase(it);
+        } else {
+          ++it;
+        }
       }
       if (auto j = joint_of.find(h); j != joint_of.end()) {
         dJointDestroy(joints[j->second].id);
@@ -274,6 +398,7 @@ struct World::Impl {
     }
     // what the geometry brings to contacts: the material in effect, a conveyor beside it
     Surface surface;
+    surface.node = &n;
     if (st.material) {
       surface.friction = st.material->number("friction");
       surface.bounce = st.material->number("bounce");
@@ -499,6 +624,7 @@ std::unique_ptr<World> World::create(scene::Scene& scene, const std::string& mod
   impl->world = dWorldCreate();
   impl->space = dHashSpaceCreate(nullptr);
   impl->contacts = dJointGroupCreate(0);
+  impl->sensor_space = dSimpleSpaceCreate(nullptr);
   // settings from the first World node, if any
   const Node* settings = nullptr;
   scene::traverse(scene.root(), [&](Node& n, const scene::TraversalState&) {
@@ -611,6 +737,7 @@ bool World::detach(const scene::Node& a, const scene::Node& b) {
 }
 
 bool World::add(scene::Node& top, core::Diagnostics& diags) { return impl_->addSubtree(top, diags); }
+void World::sense(std::vector<std::pair<scene::NodeHandle, Feel>>& out) { impl_->sense(out); }
 void World::remove(const scene::Node& top) { impl_->removeSubtree(top); }
 
 std::size_t World::bodyCount() const { return impl_->body_of.size(); }

@@ -125,6 +125,21 @@ void registerBuiltinNodes(TypeRegistry& r) {
   r.add(type("Conveyor", Category::Dynamics, false, "makes the shapes beside it move what touches them",
              {f("speed", K::Float, 1.0, "m/s", "belt speed"),
               f("direction", K::Vec3, V3{1, 0, 0}, "", "belt direction, in the conveyor's frame")}));
+  // sensors: they feel the plant and make no contact forces
+  r.add(type("Region", Category::Sensor, false, "reports the bodies and shapes inside its volume",
+             {choice("shape", {"box", "sphere", "cylinder", "cone", "ray"}, "the volume's shape"),
+              f("size", K::Vec3, V3{1, 1, 1}, "m", "edge lengths of a box"),
+              f("radius", K::Float, 0.5, "m", "radius of a sphere, cylinder or cone", 0, kInf),
+              f("height", K::Float, 1.0, "m", "height of a cylinder or cone (along z)", 0, kInf),
+              f("length", K::Float, 1.0, "m", "length of a ray (along +x)", 0, kInf),
+              choice("scope", {"siblings", "parent", "world"},
+                     "what it feels: its siblings and their subtrees, its parent's subtree, or everything")}));
+  r.add(type("RangeFinder", Category::Sensor, false, "the distance along a ray (+x) to the first thing it hits",
+             {f("length", K::Float, 10.0, "m", "how far it sees", 0, kInf),
+              choice("scope", {"world", "siblings", "parent"}, "what it sees")}));
+  r.add(type("TimeSensor", Category::Sensor, false, "ticks at a period",
+             {f("period", K::Float, 1.0, "s", "time between ticks", 1e-9, kInf),
+              f("offset", K::Float, 0.0, "s", "time of the first tick", 0, kInf)}));
 }
 
 }  // namespace gdpn::scene

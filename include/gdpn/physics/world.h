@@ -68,6 +68,16 @@ class World {
   /// scene nodes are the caller's to delete afterwards.
   void remove(const scene::Node& top);
 
+  /// What a Region or RangeFinder feels, computed from the scene as it is now.
+  struct Feel {
+    std::vector<scene::NodeHandle> items;  ///< Region: the bodies (or static shapes) inside, by path
+    double distance = 0;                   ///< RangeFinder: metres to the first hit (its length when none)
+    scene::NodeHandle hit = 0;             ///< RangeFinder: the body or shape hit (0 when none)
+  };
+  /// Evaluates every Region and RangeFinder of the scene; `out` gets one entry per sensor node
+  /// (by handle). Cost grows with the pairs that overlap, not with sensors times bodies.
+  void sense(std::vector<std::pair<scene::NodeHandle, Feel>>& out);
+
   /// Number of bodies, and of those awake.
   [[nodiscard]] std::size_t bodyCount() const;
   [[nodiscard]] std::size_t awakeCount() const;

@@ -52,7 +52,7 @@ struct FieldDesc {
 };
 
 /// What role a node type plays (for dispatch by actions and physics).
-enum class Category : std::uint8_t { Group, Look, Shape, Dynamics };
+enum class Category : std::uint8_t { Group, Look, Shape, Dynamics, Sensor };
 
 /// A node type: its own fields, its base type's fields before them.
 struct NodeType {
@@ -88,7 +88,8 @@ class TypeRegistry {
 };
 
 /// Registers the built-in types: Group, Transform, Material, Light, Camera, Fog, Cube,
-/// Sphere, Cylinder, Cone, Plane, Mesh, World, Body, Joint, Conveyor.
+/// Sphere, Cylinder, Cone, Plane, Mesh, World, Body, Joint, Conveyor, Region, RangeFinder,
+/// TimeSensor.
 void registerBuiltinNodes(TypeRegistry& registry);
 
 /// The registry with the built-in types, made once.

@@ -1,0 +1,115 @@
+// Sensors against the plant: a region feels a ball pass, a range finder measures exactly.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gdpn/model/model.h"
+#include "gdpn/sensors/hub.h"
+
+namespace gdpn::sensors {
+namespace {
+
+struct Rig {
+  std::unique_ptr<scene::Scene> scene;
+  std::unique_ptr<physics::World> world;
+  std::unique_ptr<Hub> hub;
+  explicit Rig(const std::string& scene_text) {
+    core::Diagnostics diags;
+    auto m = model::parseModel("gdpn: 1\nscene:\n" + scene_text, "rig.gdpn.yaml", diags);
+    EXPECT_TRUE(m) << diags.str();
+    scene = m->scene->clone();
+    world = physics::World::create(*scene, ".", 1, diags);
+    EXPECT_TRUE(world) << diags.str();
+    hub = std::make_unique<Hub>(*scene, world.get());
+  }
+  scene::NodeHandle handle(const char* path) const { return scene->find(path)->handle(); }
+};
+
+TEST(Sensors, ABallDroppedThroughARegionEntersOnceAndExitsOnce) {
+  Rig rig(R"(
+  - Transform:
+      translation: [0, 0, 1]
+      children: [{Region: {name: gate, shape: box, size: [0.5, 0.5, 0.2], scope: world}}]
+  - Transform:
+      translation: [0, 0, 3]
+      children: [{Body: {name: ball, mass: 0.1, children: [{Sphere: {radius: 0.05}}]}}]
+)");
+  const auto gate = rig.handle("#0/gate"), ball = rig.handle("#1/ball");
+  int entered = 0, exited = 0;
+  for (int i = 0; i < 500; ++i) {
+    rig.world->step(0.005);
+    for (const auto& c : rig.hub->update(i * 0.005)) {
+      ASSERT_EQ(c.sensor, gate);
+      for (auto h : c.entered) {
+        EXPECT_EQ(h, ball);
+        ++entered;
+      }
+      for (auto h : c.exited) {
+        EXPECT_EQ(h, ball);
+        ++exited;
+      }
+    }
+  }
+  EXPECT_EQ(entered, 1);
+  EXPECT_EQ(exited, 1);
+  EXPECT_FALSE(rig.hub->reading(gate).active);
+}
+
+TEST(Sensors, ARangeFinderMeasuresTheDistanceToAFaceExactly) {
+  // the finder at x = 0 looks along +x at a box whose near face is at x = 2.35
+  Rig rig(R"(
+  - World: {gravity: [0, 0, 0]}
+  - RangeFinder: {name: eye, length: 10}
+  - Transform:
+      translation: [2.6, 0, 0]
+      children: [{Body: {name: box, mass: 1, children: [{Cube: {size: [0.5, 0.5, 0.5]}}]}}]
+)");
+  const auto eye = rig.handle("eye");
+  auto& box = *rig.scene->find("#2/box");
+  rig.world->step(0.01);
+  rig.hub->update(0.01);
+  EXPECT_NEAR(rig.hub->reading(eye).value, 2.35, 1e-6);
+  EXPECT_EQ(rig.hub->reading(eye).hit, box.handle());
+  // the box moves away at 1 m/s: the distance follows
+  rig.world->setVelocity(box, {1, 0, 0});
+  for (int i = 0; i < 100; ++i) rig.world->step(0.01);
+  const auto& changes = rig.hub->update(1.01);
+  ASSERT_EQ(changes.size(), 1u);
+  EXPECT_NEAR(rig.hub->reading(eye).value, box.world.position.x - 0.25, 1e-6);
+  EXPECT_NEAR(rig.hub->reading(eye).value, 3.35, 1e-3);
+}
+
+TEST(Sensors, ARegionFeelsOnlyItsScope) {
+  // two boxes inside the region; with scope 'siblings' only the one beside it counts
+  Rig rig(R"(
+  - World: {gravity: [0, 0, 0]}
+  - Group:
+      name: cell
+      children:
+        - Region: {name: inside, shape: sphere, radius: 2, scope: siblings}
+        - Body: {name: mine, mass: 1, children: [{Cube: {size: [0.2, 0.2, 0.2]}}]}
+  - Body: {name: other, mass: 1, children: [{Cube: {size: [0.2, 0.2, 0.2]}}]}
+)");
+  rig.hub->update(0);
+  const auto& items = rig.hub->reading(rig.handle("cell/inside")).items;
+  ASSERT_EQ(items.size(), 1u);
+  EXPECT_EQ(items[0], rig.handle("cell/mine"));
+}
+
+TEST(Sensors, ATimeSensorTicksAtItsPeriod) {
+  Rig rig("  - TimeSensor: {name: clock, period: 0.5, offset: 0.25}\n");
+  std::vector<double> ticks;
+  for (int i = 0; i <= 150; ++i) {
+    const double now = i * 0.01;
+    if (!rig.hub->update(now).empty()) ticks.push_back(now);
+  }
+  ASSERT_EQ(ticks.size(), 3u);
+  EXPECT_NEAR(ticks[0], 0.25, 1e-9);
+  EXPECT_NEAR(ticks[1], 0.75, 1e-9);
+  EXPECT_NEAR(ticks[2], 1.25, 1e-9);
+  EXPECT_EQ(rig.hub->reading(rig.handle("clock")).value, 3.0);
+}
+
+}  // namespace
+}  // namespace gdpn::sensors
