@@ -29,11 +29,11 @@ const std::vector<std::string> kSettingsKeys = {"dt", "seed", "until"};
 const std::vector<std::string> kPageKeys = {"description", "places", "transitions", "arcs", "instances"};
 const std::vector<std::string> kPageTypeKeys = {"description", "references", "places", "transitions",
                                                 "arcs", "instances", "scene"};
-const std::vector<std::string> kPlaceKeys = {"description", "slots", "tokens", "capacity", "on_deposit",
-                                             "on_remove", "at"};
+const std::vector<std::string> kPlaceKeys = {"description", "slots", "tokens", "capacity", "sensors", "on_deposit",
+                                             "on_remove", "on_enter", "on_exit", "on_sample", "on_change", "at"};
 const std::vector<std::string> kTransitionKeys = {"description", "duration", "priority", "probability", "guard",
                                                   "pre_fire", "in_fire", "post_fire", "at"};
-const std::vector<std::string> kArcKeys = {"from", "to", "kind", "weight", "predicate"};
+const std::vector<std::string> kArcKeys = {"from", "to", "kind", "weight", "predicate", "condition"};
 const std::vector<std::string> kScriptsKeys = {"globals"};
 const std::vector<std::string> kScriptFileKeys = {"file", "function"};
 const std::vector<std::string> kInstanceKeys = {"type", "at", "translation", "rotation"};
@@ -148,6 +148,15 @@ class ModelReader {
       script.indent = static_cast<int>(col);
     }
     return script;
+  }
+
+  static net::ScriptSpec& slotScript(net::SlotScripts& s, const std::string& key) {
+    if (key == "on_deposit") return s.on_deposit;
+    if (key == "on_remove") return s.on_remove;
+    if (key == "on_enter") return s.on_enter;
+    if (key == "on_exit") return s.on_exit;
+    if (key == "on_sample") return s.on_sample;
+    return s.on_change;
   }
 
   /// Per-slot scripts: a script (for slot a0, or for `default_slot`) or a map slot -> script.
@@ -314,12 +323,27 @@ class ModelReader {
         perSlot(e, "capacity", [&](net::SlotId slot, const YAML::Node& v, const SourceLoc& loc) {
           if (auto n = r_.integer(v, "capacity")) p.capacity.push_back({slot, *n, loc});
         });
-      } else if (e.key == "on_deposit" || e.key == "on_remove") {
-        perSlotScript(e, e.key, net::kDefaultSlot, [&](net::SlotId slot, net::ScriptSpec script) {
+      } else if (e.key == "sensors") {
+        if (!r_.expectMap(e.value, "sensors")) continue;
+        forEachSlot(e.value, "sensors", [&](net::SlotId slot, const Entry& s) {
+          auto path = r_.string(s.value, "a sensor path");
+          if (!path) return;
+          if (!isNodePath(*path)) {
+            r_.error(r_.loc(s.value, s.loc), "sensor '" + *path + "' is not a node path (names joined by '/')");
+            return;
+          }
+          p.sensors.push_back({slot, *path, r_.loc(s.value, s.loc)});
+        });
+      } else if (e.key.rfind("on_", 0) == 0) {
+        // on_deposit, on_remove, on_enter, on_exit, on_sample, on_change: a script per slot
+        const net::SlotId fallback = e.key == "on_deposit" || e.key == "on_remove" || p.sensors.empty()
+                                         ? net::kDefaultSlot
+                                         : p.sensors.front().slot;
+        perSlotScript(e, e.key, fallback, [&](net::SlotId slot, net::ScriptSpec script) {
           auto it = std::find_if(p.scripts.begin(), p.scripts.end(),
                                  [&](const net::SlotScripts& ss) { return ss.slot == slot; });
-          if (it == p.scripts.end()) it = p.scripts.insert(p.scripts.end(), net::SlotScripts{slot, {}, {}});
-          (e.key == "on_deposit" ? it->on_deposit : it->on_remove) = std::move(script);
+          if (it == p.scripts.end()) it = p.scripts.insert(p.scripts.end(), net::SlotScripts{slot, {}, {}, {}, {}, {}, {}});
+          slotScript(*it, e.key) = std::move(script);
         });
       } else if (e.key == "at") {
         p.position = readPos(e.value);
@@ -423,9 +447,10 @@ class ModelReader {
     }
     if (!r_.expectMap(node, "an arc")) return std::nullopt;
     bool has_from = false, has_to = false;
-    std::optional<Entry> predicate;
+    std::optional<Entry> predicate, condition;
     for (const auto& e : r_.entries(node, "arc", kArcKeys)) {
       if (e.key == "predicate") predicate = e;
+      if (e.key == "condition") condition = e;
       if (e.key == "from") {
         if (auto s = r_.string(e.value, "from")) a.from = *s, has_from = true;
         a.from_loc = r_.loc(e.value, e.loc);
@@ -452,6 +477,11 @@ class ModelReader {
       perSlotScript(*predicate, "predicate", only, [&](net::SlotId slot, net::ScriptSpec script) {
         a.predicates.push_back({slot, std::move(script)});
       });
+    }
+    if (condition) {
+      // a lone condition reads sensor slot c0
+      perSlotScript(*condition, "condition", net::parseSlot("c0").value(),
+                    [&](net::SlotId slot, net::ScriptSpec script) { a.conditions.push_back({slot, std::move(script)}); });
     }
     if (!has_from) r_.error(a.loc, "arc has no 'from'");
     if (!has_to) r_.error(a.loc, "arc has no 'to'");

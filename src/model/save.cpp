@@ -103,8 +103,17 @@ void writePlace(YAML::Emitter& out, const net::PlaceSpec& p) {
     out << YAML::EndMap;
   }
   perSlot(out, "capacity", p.capacity);
+  if (!p.sensors.empty()) {
+    out << YAML::Key << "sensors" << YAML::Value << YAML::Flow << YAML::BeginMap;
+    for (const auto& b : p.sensors) out << YAML::Key << net::slotName(b.slot) << YAML::Value << b.path;
+    out << YAML::EndMap;
+  }
   writeSlotScripts(out, "on_deposit", p.scripts, &net::SlotScripts::on_deposit);
   writeSlotScripts(out, "on_remove", p.scripts, &net::SlotScripts::on_remove);
+  writeSlotScripts(out, "on_enter", p.scripts, &net::SlotScripts::on_enter);
+  writeSlotScripts(out, "on_exit", p.scripts, &net::SlotScripts::on_exit);
+  writeSlotScripts(out, "on_sample", p.scripts, &net::SlotScripts::on_sample);
+  writeSlotScripts(out, "on_change", p.scripts, &net::SlotScripts::on_change);
   pos(out, p.position);
   out << YAML::EndMap;
 }
@@ -142,14 +151,15 @@ void writeTransition(YAML::Emitter& out, const net::TransitionSpec& t) {
 }
 
 void writeArc(YAML::Emitter& out, const net::ArcSpec& a) {
-  out << styleFor(!a.predicates.empty()) << YAML::BeginMap << YAML::Key << "from" << YAML::Value << a.from
+  out << styleFor(!a.predicates.empty() || !a.conditions.empty()) << YAML::BeginMap << YAML::Key << "from" << YAML::Value << a.from
       << YAML::Key << "to"
       << YAML::Value << a.to;
   if (a.kind != net::ArcKind::Normal) out << YAML::Key << "kind" << YAML::Value << net::arcKindName(a.kind);
   perSlot(out, "weight", a.weights);
-  if (!a.predicates.empty()) {
-    out << YAML::Key << "predicate" << YAML::Value << YAML::BeginMap;
-    for (const auto& p : a.predicates) writeScript(out, net::slotName(p.slot).c_str(), p.expression);
+  for (const auto* list : {&a.predicates, &a.conditions}) {
+    if (list->empty()) continue;
+    out << YAML::Key << (list == &a.predicates ? "predicate" : "condition") << YAML::Value << YAML::BeginMap;
+    for (const auto& p : *list) writeScript(out, net::slotName(p.slot).c_str(), p.expression);
     out << YAML::EndMap;
   }
   out << YAML::EndMap;

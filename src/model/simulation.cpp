@@ -30,6 +30,19 @@ namespace {
 
 /// Where the node token `name` is written in the model (for messages); the place's location
 /// of a page type's token stands for all its instances.
+core::SourceLoc sensorLoc(const net::NetSpec& spec, const std::string& path) {
+  for (const auto* pages : {&spec.pages, &spec.page_types}) {
+    for (const auto& page : *pages) {
+      for (const auto& place : page.places) {
+        for (const auto& b : place.sensors) {
+          if (path == b.path || path.ends_with("/" + b.path)) return b.loc;
+        }
+      }
+    }
+  }
+  return {};
+}
+
 core::SourceLoc tokenLoc(const net::NetSpec& spec, const std::string& name) {
   for (const auto* pages : {&spec.pages, &spec.page_types}) {
     for (const auto& page : *pages) {
@@ -138,6 +151,31 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
     }
     if (diags.hasErrors()) return nullptr;
   }
+  // sensor slots read sensor nodes of the plant
+  sim->slot_sensor_.assign(sim->net_->placeSlots().size(), 0);
+  for (net::PlaceSlotId ps = 0; ps < sim->net_->placeSlots().size(); ++ps) {
+    const std::string& path = sim->net_->sensorPath(ps);
+    if (path.empty()) continue;
+    const scene::Node* sensor = sim->scene_ ? sim->scene_->find(path) : nullptr;
+    if (!sensor || sensor->type().category != scene::Category::Sensor) {
+      diags.error(sensorLoc(model.net, path), "'" + path + "' names no sensor of the scene");
+      continue;
+    }
+    sim->slot_sensor_[ps] = sensor->handle();
+    sim->sensor_slots_[sensor->handle()].push_back(ps);
+  }
+  for (net::TermId id = 0; id < sim->net_->terms().size(); ++id) {
+    const auto& term = sim->net_->terms()[id];
+    if (term.kind == net::TermKind::Condition) sim->conditions_of_[term.place_slot].push_back(id);
+  }
+  if (diags.hasErrors()) return nullptr;
+  if (sim->scene_) {
+    bool any = false;
+    scene::traverse(sim->scene_->root(), [&](scene::Node& n, const scene::TraversalState&) {
+      any = any || n.type().category == scene::Category::Sensor;
+    });
+    if (any) sim->hub_ = std::make_unique<sensors::Hub>(*sim->scene_, sim->physics_.get());
+  }
   sim->kernel_ = std::make_unique<net::Kernel>(sim->net_, settings);
   sim->stats_ = std::make_unique<net::StatsCollector>(*sim->net_);
   sim->kernel_->addObserver(sim->stats_.get());
@@ -154,6 +192,10 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
     callbacks.spawn = [self](const scene::Node& templ, scene::Node& parent, std::optional<core::Vec3> at,
                              std::string& why) { return self->spawn(templ, parent, at, why); };
     callbacks.erase = [self](scene::Node& node) { self->deleteNode(node); };
+    callbacks.reading = [self](scene::NodeHandle h) -> const sensors::Reading& {
+      static const sensors::Reading none;
+      return self->hub_ ? self->hub_->reading(h) : none;
+    };
     sim->engine_ = script::Engine::create(*sim->net_, *sim->kernel_, model.path, {script_timeout_s},
                                           std::move(callbacks), diags);
     if (!sim->engine_) return nullptr;
@@ -247,17 +289,80 @@ void Simulation::traceTo(std::ostream& out) {
   kernel_->addObserver(trace_.get());
 }
 
+void Simulation::sense() {
+  if (!hub_) return;
+  const auto& changes = hub_->update(kernel_->now());
+  const auto& scripts_of = [&](net::PlaceSlotId ps) { return net_->placeSlots()[ps].scripts; };
+  for (const auto& change : changes) {
+    const scene::Node* sensor = scene_->resolve(change.sensor);
+    const bool region = sensor && sensor->type().name == "Region";
+    if (trace_) {
+      for (auto h : change.entered) {
+        trace_->event(kernel_->steps(), "enter", "\"sensor\":" + core::jsonQuote(sensor->path()) +
+                                                     ",\"item\":" + core::jsonQuote(nodeName(h)));
+      }
+      for (auto h : change.exited) {
+        trace_->event(kernel_->steps(), "exit", "\"sensor\":" + core::jsonQuote(sensor->path()) +
+                                                    ",\"item\":" + core::jsonQuote(nodeName(h)));
+      }
+    }
+    auto it = sensor_slots_.find(change.sensor);
+    if (it == sensor_slots_.end()) continue;
+    for (auto ps : it->second) {
+      // handlers: entered before exited, each in path order; on_change for value sensors
+      if (engine_) {
+        if (scripts_of(ps) & net::kOnEnter) {
+          for (auto h : change.entered) engine_->sensorEvent(ps, 0, change.sensor, h);
+        }
+        if (scripts_of(ps) & net::kOnExit) {
+          for (auto h : change.exited) engine_->sensorEvent(ps, 1, change.sensor, h);
+        }
+        if (!region && (scripts_of(ps) & net::kOnChange)) engine_->sensorEvent(ps, 3, change.sensor);
+      }
+    }
+  }
+  // on_sample while the sensor reports anything
+  if (engine_) {
+    for (const auto& [sensor, slots] : sensor_slots_) {
+      if (!hub_->reading(sensor).active) continue;
+      for (auto ps : slots) {
+        if (scripts_of(ps) & net::kOnSample) engine_->sensorEvent(ps, 2, sensor);
+      }
+    }
+  }
+  // then the arcs that read a changed sensor
+  for (const auto& change : changes) {
+    auto it = sensor_slots_.find(change.sensor);
+    if (it == sensor_slots_.end() || !engine_) continue;
+    for (auto ps : it->second) {
+      auto c = conditions_of_.find(ps);
+      if (c == conditions_of_.end()) continue;
+      for (auto term : c->second) kernel_->setCondition(term, engine_->condition(term, change.sensor));
+    }
+  }
+}
+
 void Simulation::start() {
   if (started_) return;
   started_ = true;
+  // time 0: the sensors' first readings (every one is a change), then the first firing phase
+  sense();
+  if (engine_) {
+    for (const auto& [ps, terms] : conditions_of_) {
+      for (auto term : terms) kernel_->setCondition(term, engine_->condition(term, slot_sensor_[ps]));
+    }
+  }
+  if (engine_ && engine_->halted() && engine_->halt() != script::Halt::Stop) return;
   kernel_->start();
 }
 
 void Simulation::step() {
   if (!started_) start();
   kernel_->beginStep();
-  // phase 1: the world advances; phase 2 (sensors) arrives with the sensors
+  // phase 1: the world advances; phase 2: the sensors feel it
   if (physics_) physics_->step(kernel_->dt());
+  sense();
+  if (engine_ && engine_->halted() && engine_->halt() != script::Halt::Stop) return;
   kernel_->completeOccurrences();
   // a script that failed stops the run at the end of its phase
   if (engine_ && engine_->halted() && engine_->halt() != script::Halt::Stop) return;

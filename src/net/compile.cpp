@@ -333,7 +333,7 @@ class Compiler {
   }
 
   static std::vector<SlotCount> weightsOf(const ArcSpec& a) {
-    if (!a.weights.empty()) return a.weights;
+    if (!a.weights.empty() || !a.conditions.empty()) return a.weights;  // a condition alone moves no tokens
     return {SlotCount{kDefaultSlot, 1, a.loc}};
   }
 
@@ -363,10 +363,18 @@ class Compiler {
       for (const auto& d : spec.kinds) declare(p, d.slot, d.kind, d.loc);
       for (const auto& t : spec.tokens) declare(p, t.slot, SlotKind::Control, t.loc);
       for (const auto& n : spec.nodes) declare(p, n.slot, SlotKind::Node, n.loc);
+      for (const auto& b : spec.sensors) declare(p, b.slot, SlotKind::Sensor, b.loc);
     }
     for (const auto& [root, src] : kinds) {
-      if (src.kind == SlotKind::Sensor) {
-        diags_.error(src.loc, "sensor slots are not supported yet: they arrive with sensor nodes");
+      if (src.kind != SlotKind::Sensor) continue;
+      // a sensor slot carries no tokens: nothing may flow through it
+      for (const auto& a : arcs_) {
+        for (const auto& w : weightsOf(*a.spec)) {
+          if (find(placeVertex(a.place, w.slot)) == root) {
+            diags_.error(w.loc, "slot " + slotName(w.slot) + " of '" + places_[a.place].name +
+                                    "' reads a sensor and carries no tokens; give the arc a condition instead");
+          }
+        }
       }
     }
     kind_of_ = [this, kinds = std::move(kinds)](std::uint32_t vertex) {
@@ -377,6 +385,14 @@ class Compiler {
 
   void checkPredicates() {
     for (const auto& a : arcs_) {
+      for (const auto& c : a.spec->conditions) {
+        if (a.output) {
+          diags_.error(c.expression.loc, "a condition belongs on an arc from a place to a transition");
+        } else if (kind_of_(placeVertex(a.place, c.slot)) != SlotKind::Sensor) {
+          diags_.error(c.expression.loc, "a condition reads a sensor slot, but slot " + slotName(c.slot) + " of '" +
+                                             places_[a.place].name + "' is not one (declare it under 'sensors')");
+        }
+      }
       for (const auto& pred : a.spec->predicates) {
         if (kind_of_(placeVertex(a.place, pred.slot)) != SlotKind::Node) {
           diags_.error(pred.expression.loc, "a predicate selects node tokens, but slot " + slotName(pred.slot) +
@@ -427,6 +443,7 @@ class Compiler {
       for (const auto& n : fp.spec->nodes) used |= 1u << n.slot;
       for (const auto& c : fp.spec->capacity) used |= 1u << c.slot;
       for (const auto& sc : fp.spec->scripts) used |= 1u << sc.slot;
+      for (const auto& b : fp.spec->sensors) used |= 1u << b.slot;
       for (int s = 0; s < kSlotCount; ++s) {
         if (!(used & (1u << s))) continue;
         const auto slot = static_cast<SlotId>(s);
@@ -437,10 +454,16 @@ class Compiler {
           for (const auto& node : n.nodes) qualified.push_back(fp.node_prefix + node);
           builder_.setNodes(p, slot, qualified);
         }
+        for (const auto& b : fp.spec->sensors) {
+          if (b.slot == slot) builder_.setSensor(p, slot, fp.node_prefix + b.path);
+        }
         for (const auto& sc : fp.spec->scripts) {
           if (sc.slot != slot) continue;
-          if (!sc.on_deposit.empty()) builder_.setSlotScript(p, slot, 0, scriptIndex(sc.on_deposit));
-          if (!sc.on_remove.empty()) builder_.setSlotScript(p, slot, 1, scriptIndex(sc.on_remove));
+          const ScriptSpec* hooks[6] = {&sc.on_deposit, &sc.on_remove, &sc.on_enter,
+                                        &sc.on_exit,    &sc.on_sample, &sc.on_change};
+          for (int k = 0; k < 6; ++k) {
+            if (!hooks[k]->empty()) builder_.setSlotScript(p, slot, k, scriptIndex(*hooks[k]));
+          }
         }
       }
     }
@@ -453,6 +476,9 @@ class Compiler {
       }
     }
     for (const auto& a : arcs_) {
+      if (!a.output) {
+        for (const auto& c : a.spec->conditions) builder_.addCondition(a.place, a.transition, c.slot, scriptIndex(c.expression));
+      }
       for (const auto& w : weightsOf(*a.spec)) {
         const SlotKind kind = kind_of_(placeVertex(a.place, w.slot));
         if (a.output) {

@@ -94,6 +94,12 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
     if (slots_[ps].watch_count > 0) init(slots_[ps].first);
     for (auto w = slots_[ps].watch_begin; w < slots_[ps + 1].watch_begin; ++w) init(watch_[w]);
   }
+  // conditions do not hold until the sensor layer says they do
+  for (TermId id = 0; id < n.terms().size(); ++id) {
+    if (terms_[id].kind != TermKind::Condition) continue;
+    if (cond_.empty()) cond_.assign(n.terms().size(), 0);
+    ++tr_[terms_[id].transition].unsat;
+  }
   for (TransitionId t = 0; t < count; ++t) {
     if (tr_[t].unsat == 0) markEnabled(t);
   }
@@ -129,6 +135,7 @@ bool Kernel::holds(const SlotState& st, TermKind kind, std::int64_t weight, std:
     case TermKind::Test: return st.m >= weight;
     case TermKind::Inhibitor: return st.m < weight;
     case TermKind::Output: return st.capacity == kUnbounded || st.capacity - (st.m - take) - st.r >= weight;
+    case TermKind::Condition: return false;  // never watched: set through setCondition()
   }
   return false;
 }
@@ -247,6 +254,17 @@ std::string Kernel::setMarking(PlaceSlotId ps, std::int64_t count) {
   }
   update(ps);
   return {};
+}
+
+void Kernel::setCondition(TermId term, bool holds) {
+  if (term >= cond_.size() || static_cast<bool>(cond_[term]) == holds) return;
+  cond_[term] = holds;
+  const TransitionId t = terms_[term].transition;
+  if (holds) {
+    if (--tr_[t].unsat == 0) markEnabled(t);
+  } else if (tr_[t].unsat++ == 0) {
+    --enabled_count_;
+  }
 }
 
 std::string Kernel::addNode(PlaceSlotId ps, NodeRef ref) {

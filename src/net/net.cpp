@@ -115,6 +115,17 @@ void NetBuilder::setSlotScript(PlaceId place, SlotId slot, int which, std::int32
 
 void NetBuilder::setLastPredicate(std::int32_t index) { arcs_.back().predicate = index; }
 
+void NetBuilder::setSensor(PlaceId place, SlotId slot, std::string path) {
+  auto& s = slotOf(place, slot);
+  s.kind = SlotKind::Sensor;
+  s.sensor = std::move(path);
+}
+
+void NetBuilder::addCondition(PlaceId place, TransitionId transition, SlotId slot, std::int32_t index) {
+  slotOf(place, slot);
+  arcs_.push_back({place, transition, slot, TermKind::Condition, 0, index});
+}
+
 void NetBuilder::addInput(PlaceId place, TransitionId transition, SlotId slot, std::int32_t weight,
                           ArcKind kind) {
   slotOf(place, slot);
@@ -152,7 +163,13 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
       ps.nodes_begin = static_cast<std::uint32_t>(net->initial_nodes_.size());
       net->initial_nodes_.insert(net->initial_nodes_.end(), s.nodes.begin(), s.nodes.end());
       ps.nodes_end = static_cast<std::uint32_t>(net->initial_nodes_.size());
-      ps.scripts = static_cast<std::uint8_t>((s.scripts[0] >= 0 ? kOnDeposit : 0) | (s.scripts[1] >= 0 ? kOnRemove : 0));
+      for (int k = 0; k < 6; ++k) {
+        if (s.scripts[static_cast<std::size_t>(k)] >= 0) ps.scripts = static_cast<std::uint8_t>(ps.scripts | (1 << k));
+      }
+      if (!s.sensor.empty()) {
+        net->sensor_paths_.resize(net->place_slots_.size() + 1);
+        net->sensor_paths_.back() = s.sensor;
+      }
       if (!scripts_.empty()) net->script_index_.slots.push_back(s.scripts);
       net->place_slots_.push_back(ps);
     }
@@ -182,7 +199,7 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
     term.place_slot = psOf(a.place, a.slot);
     term.kind = a.kind;
     term.weight = a.weight;
-    term.predicate = a.predicate >= 0;
+    term.predicate = a.predicate >= 0 && a.kind != TermKind::Condition;
     if (!scripts_.empty()) net->script_index_.predicates.push_back(a.predicate);
     net->terms_.push_back(term);
   }
@@ -229,6 +246,7 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
   const std::size_t slot_count = net->place_slots_.size();
   net->watch_begin_.assign(slot_count + 1, 0);
   auto watched = [&](const Term& term) {
+    if (term.kind == TermKind::Condition) return false;  // set from outside, not by markings
     return term.kind != TermKind::Output || net->place_slots_[term.place_slot].capacity != kUnbounded;
   };
   for (const auto& term : net->terms_) {

@@ -132,7 +132,7 @@ void registerBuiltinNodes(TypeRegistry& r) {
               f("radius", K::Float, 0.5, "m", "radius of a sphere, cylinder or cone", 0, kInf),
               f("height", K::Float, 1.0, "m", "height of a cylinder or cone (along z)", 0, kInf),
               f("length", K::Float, 1.0, "m", "length of a ray (along +x)", 0, kInf),
-              choice("scope", {"siblings", "parent", "world"},
+              choice("scope", {"world", "siblings", "parent"},
                      "what it feels: its siblings and their subtrees, its parent's subtree, or everything")}));
   r.add(type("RangeFinder", Category::Sensor, false, "the distance along a ray (+x) to the first thing it hits",
              {f("length", K::Float, 10.0, "m", "how far it sees", 0, kInf),

@@ -32,8 +32,10 @@ void interruptScript() {
   if (Py_IsInitialized()) PyErr_SetInterruptEx(SIGINT);
 }
 
-const char* kKindNames[] = {"guard", "pre_fire", "in_fire", "post_fire", "on_deposit", "on_remove", "predicate",
-                            "globals"};
+const char* kKindNames[] = {"guard",    "pre_fire", "in_fire",   "post_fire", "on_deposit", "on_remove", "predicate",
+                            "globals",  "on_enter", "on_exit",   "on_sample", "on_change",  "condition"};
+// the slot scripts, in ScriptIndex::slots order, as kinds above
+constexpr int kSlotKinds[6] = {4, 5, 8, 9, 10, 11};
 
 }  // namespace
 
@@ -185,6 +187,10 @@ struct Engine::Impl : detail::Context {
   void erase(scene::Node& node) override {
     if (callbacks.erase) callbacks.erase(node);
   }
+  const sensors::Reading& reading(scene::NodeHandle sensor) const override {
+    static const sensors::Reading none;
+    return callbacks.reading ? callbacks.reading(sensor) : none;
+  }
   void stop(const std::string& reason) override {
     if (halt != Halt::None) return;
     halt = Halt::Stop;
@@ -303,11 +309,11 @@ struct Engine::Impl : detail::Context {
     switch (kind) {
       case 0: case 1: case 2: case 3:
         return "transition '" + net.transitions()[id].name + "'";
-      case 4: case 5: {
+      case 4: case 5: case 8: case 9: case 10: case 11: {
         const auto& ps = net.placeSlots()[id];
         return "place '" + net.places()[ps.place].name + "' slot " + net::slotName(ps.slot);
       }
-      case 6: {
+      case 6: case 12: {
         const auto& term = net.terms()[id];
         const auto& ps = net.placeSlots()[term.place_slot];
         return "arc '" + net.places()[ps.place].name + "' -> '" + net.transitions()[term.transition].name +
@@ -342,21 +348,38 @@ struct Engine::Impl : detail::Context {
 
   /// Runs script `index` for construct (kind, id); returns its value (expressions) or None.
   /// On failure records the halt and returns null.
-  PyObject* call(std::int32_t index, int kind, std::uint32_t id, PyObject* self, PyObject* token) {
+  /// Calls script `index`; a function gets (self), (self, token) or (self, value) / (self,
+  /// items, item); inline code sees them as names.
+  PyObject* call(std::int32_t index, int kind, std::uint32_t id, PyObject* self, PyObject* token,
+                 PyObject* value = nullptr, PyObject* items = nullptr) {
     const Compiled& c = compiled[static_cast<std::size_t>(index)];
     watchdog->enter();
     PyObject* result = nullptr;
-    if (c.function) {
+    if (c.function && items) {
+      result = PyObject_CallFunctionObjArgs(c.function.ptr(), self, items, value, nullptr);
+    } else if (c.function && value) {
+      result = PyObject_CallFunctionObjArgs(c.function.ptr(), self, value, nullptr);
+    } else if (c.function) {
       result = token ? PyObject_CallFunctionObjArgs(c.function.ptr(), self, token, nullptr)
                      : PyObject_CallOneArg(c.function.ptr(), self);
     } else {
       PyDict_SetItem(globals.ptr(), key_self.ptr(), self);
       if (token) PyDict_SetItem(globals.ptr(), key_token.ptr(), token);
+      if (items) PyDict_SetItemString(globals.ptr(), "item", value);
       result = PyEval_EvalCode(c.code.ptr(), globals.ptr(), globals.ptr());
     }
     watchdog->leave();
     if (!result) fail(kind, id);
     return result;
+  }
+
+  /// A sensor handler: on_enter/on_exit get (items, item); on_sample gets items (Region) or
+  /// the value; on_change gets the value.
+  void runSensor(std::int32_t index, int kind, std::uint32_t id, PyObject* self, bool with_item, PyObject* items,
+                 PyObject* arg) {
+    if (index < 0 || halt != Halt::None) return;
+    PyObject* r = with_item ? call(index, kind, id, self, nullptr, arg, items) : call(index, kind, id, self, nullptr, arg);
+    Py_XDECREF(r);
   }
 
   void run(std::int32_t index, int kind, std::uint32_t id, PyObject* self, PyObject* token) {
@@ -365,10 +388,10 @@ struct Engine::Impl : detail::Context {
     Py_XDECREF(r);
   }
 
-  bool test(std::int32_t index, int kind, std::uint32_t id, PyObject* self, PyObject* token) {
+  bool test(std::int32_t index, int kind, std::uint32_t id, PyObject* self, PyObject* token, PyObject* value = nullptr) {
     if (index < 0) return true;
     if (halt != Halt::None) return false;
-    PyObject* r = call(index, kind, id, self, token);
+    PyObject* r = value ? call(index, kind, id, self, nullptr, value) : call(index, kind, id, self, token);
     if (!r) return false;
     const int truth = PyObject_IsTrue(r);
     Py_DECREF(r);
@@ -439,9 +462,11 @@ std::unique_ptr<Engine> Engine::create(const net::Net& net, net::Kernel& kernel,
     for (int k = 0; k < 4; ++k) name(index.transitions[t][static_cast<std::size_t>(k)], k, t);
   }
   for (std::uint32_t ps = 0; ps < index.slots.size(); ++ps) {
-    for (int k = 0; k < 2; ++k) name(index.slots[ps][static_cast<std::size_t>(k)], 4 + k, ps);
+    for (int k = 0; k < 6; ++k) name(index.slots[ps][static_cast<std::size_t>(k)], kSlotKinds[k], ps);
   }
-  for (std::uint32_t term = 0; term < index.predicates.size(); ++term) name(index.predicates[term], 6, term);
+  for (std::uint32_t term = 0; term < index.predicates.size(); ++term) {
+    name(index.predicates[term], net.terms()[term].kind == net::TermKind::Condition ? 12 : 6, term);
+  }
   impl->compiled.resize(scripts.size());
   std::unordered_map<std::string, bool> loaded;
   bool ok = true;
@@ -462,7 +487,7 @@ std::unique_ptr<Engine> Engine::create(const net::Net& net, net::Kernel& kernel,
   }
   for (std::size_t i = 0; i < scripts.size(); ++i) {
     if (static_cast<std::int32_t>(i) == g || kind[i] < 0) continue;
-    const bool expression = kind[i] == 0 || kind[i] == 6;
+    const bool expression = kind[i] == 0 || kind[i] == 6 || kind[i] == 12;
     ok = impl->compile(scripts[i], expression, names[i], impl->compiled[i], diags, loaded) && ok;
   }
   if (!ok) {
@@ -505,6 +530,33 @@ void Engine::onRemove(net::PlaceSlotId ps, const net::NodeRef* token) {
   const auto place = impl_->net.placeSlots()[ps].place;
   py::object tok = token ? impl_->nodeView(*token) : py::none();
   impl_->run(impl_->net.scriptIndex().slots[ps][1], 5, ps, impl_->placeView(place).ptr(), tok.ptr());
+}
+
+bool Engine::condition(net::TermId term, scene::NodeHandle sensor) {
+  const auto& net = impl_->net;
+  const auto& t = net.terms()[term];
+  py::object view = detail::makeSensorView(detail::refTo(*impl_), sensor);
+  // the sensor is seen as `value` and under its slot's name ("c0")
+  impl_->globals[py::str(net::slotName(net.placeSlots()[t.place_slot].slot))] = view;
+  impl_->globals["value"] = view;
+  return impl_->test(net.scriptIndex().predicates[term], 12, term, impl_->transitionView(t.transition).ptr(),
+                     nullptr, view.ptr());
+}
+
+void Engine::sensorEvent(net::PlaceSlotId ps, int which, scene::NodeHandle sensor, scene::NodeHandle item) {
+  const auto& net = impl_->net;
+  const int slot_script = 2 + which;  // on_enter, on_exit, on_sample, on_change in ScriptIndex::slots
+  const auto index = net.scriptIndex().slots[ps][static_cast<std::size_t>(slot_script)];
+  if (index < 0) return;
+  py::object view = detail::makeSensorView(detail::refTo(*impl_), sensor);
+  const auto& r = impl_->reading(sensor);
+  py::list items;
+  for (auto h : r.items) items.append(impl_->nodeView(h));
+  impl_->globals["items"] = items;
+  impl_->globals["value"] = view;
+  py::object arg = which <= 1 ? impl_->nodeView(item) : (which == 2 && !r.items.empty() ? py::object(items) : view);
+  impl_->runSensor(index, kSlotKinds[slot_script], ps, impl_->placeView(net.placeSlots()[ps].place).ptr(), which <= 1,
+                   items.ptr(), arg.ptr());
 }
 
 bool Engine::halted() const { return impl_->halt != Halt::None; }

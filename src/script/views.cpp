@@ -36,6 +36,10 @@ struct NodeView {
 struct SimView {
   Ref r;
 };
+struct SensorView {
+  Ref r;
+  scene::NodeHandle sensor;
+};
 struct RandomView {
   Ref r;
 };
@@ -333,6 +337,15 @@ void registerViews() {
            })
       .def("__getattr__",
            [](const SlotView& s, const std::string& name) -> py::object {
+             if (!s.of_transition) {
+               const auto ps = placeSlot(s);
+               const auto& path = ps < 0 ? std::string() : s.r.get().netRef().sensorPath(static_cast<net::PlaceSlotId>(ps));
+               if (!path.empty()) {
+                 const scene::Node* sensor = s.r.get().plant() ? s.r.get().plant()->find(path) : nullptr;
+                 if (!sensor) throw py::attribute_error("sensor '" + path + "' is not in the scene");
+                 return makeSensorView(s.r, sensor->handle()).attr(name.c_str());
+               }
+             }
              const auto tokens = tokensOf(s);
              if (tokens.empty()) {
                throw py::attribute_error(ownerName(s) + " slot " + net::slotName(s.slot) +
@@ -352,6 +365,32 @@ void registerViews() {
       .def("__repr__", [](const SlotView& s) {
         return "<slot " + net::slotName(s.slot) + " of " + ownerName(s) + ": " + std::to_string(count(s)) + ">";
       });
+
+  py::class_<SensorView>(m, "Sensor", "What a sensor reports now")
+      .def_property_readonly("items",
+                             [](const SensorView& v) {
+                               py::list out;
+                               for (auto h : v.r.get().reading(v.sensor).items) out.append(v.r.get().nodeView(h));
+                               return out;
+                             },
+                             "a Region's contents: the bodies (or static shapes) inside, in path order")
+      .def_property_readonly("value", [](const SensorView& v) { return v.r.get().reading(v.sensor).value; },
+                             "a RangeFinder's distance (m), a TimeSensor's ticks, a Region's count")
+      .def_property_readonly("active", [](const SensorView& v) { return v.r.get().reading(v.sensor).active; },
+                             "something inside, something seen, or a tick now")
+      .def_property_readonly("hit",
+                             [](const SensorView& v) -> py::object {
+                               const auto h = v.r.get().reading(v.sensor).hit;
+                               return h ? v.r.get().nodeView(h) : py::none();
+                             },
+                             "what a RangeFinder sees, or None")
+      .def("__len__", [](const SensorView& v) { return v.r.get().reading(v.sensor).items.size(); })
+      .def("__contains__",
+           [](const SensorView& v, const NodeView& n) {
+             const auto& items = v.r.get().reading(v.sensor).items;
+             return std::find(items.begin(), items.end(), n.ref) != items.end();
+           })
+      .def("__repr__", [](const SensorView& v) { return "<sensor " + v.r.get().nodeName(v.sensor) + ">"; });
 
   py::class_<TransitionView>(m, "Transition", "A transition, as its scripts see it")
       .def_property_readonly("name", [](const TransitionView& v) { return v.r.get().netRef().transitions()[v.t].name; })
@@ -446,5 +485,6 @@ py::object makeTransitionView(Ref r, net::TransitionId t) { return py::cast(Tran
 py::object makePlaceView(Ref r, net::PlaceId p) { return py::cast(PlaceView{std::move(r), p}); }
 py::object makeNodeView(Ref r, net::NodeRef ref) { return py::cast(NodeView{std::move(r), ref}); }
 py::object makeSimView(Ref r) { return py::cast(SimView{std::move(r)}); }
+py::object makeSensorView(Ref r, scene::NodeHandle sensor) { return py::cast(SensorView{std::move(r), sensor}); }
 
 }  // namespace gdpn::script::detail

@@ -10,6 +10,7 @@
 #include "gdpn/net/kernel.h"
 #include "gdpn/physics/world.h"
 #include "gdpn/scene/node.h"
+#include "gdpn/sensors/hub.h"
 
 namespace gdpn::script::detail {
 
@@ -36,6 +37,8 @@ class Context {
                              std::string& why) = 0;
   /// Deletes a node, its subtree and their tokens.
   virtual void erase(scene::Node& node) = 0;
+  /// The reading of sensor node `sensor`.
+  virtual const sensors::Reading& reading(scene::NodeHandle sensor) const = 0;
 
   /// False once the engine is gone; a view kept past that raises instead of crashing.
   std::shared_ptr<bool> alive = std::make_shared<bool>(true);
@@ -59,5 +62,6 @@ pybind11::object makeTransitionView(Ref r, net::TransitionId t);
 pybind11::object makePlaceView(Ref r, net::PlaceId p);
 pybind11::object makeNodeView(Ref r, net::NodeRef ref);
 pybind11::object makeSimView(Ref r);
+pybind11::object makeSensorView(Ref r, scene::NodeHandle sensor);
 
 }  // namespace gdpn::script::detail

@@ -9,12 +9,14 @@
 #include <memory>
 #include <optional>
 #include <ostream>
+#include <unordered_map>
 
 #include "gdpn/model/model.h"
 #include "gdpn/net/kernel.h"
 #include "gdpn/net/stats.h"
 #include "gdpn/net/trace.h"
 #include "gdpn/physics/world.h"
+#include "gdpn/sensors/hub.h"
 #include "gdpn/script/engine.h"
 
 namespace gdpn::model {
@@ -105,6 +107,11 @@ class Simulation {
   std::shared_ptr<const net::Net> net_;
   std::unique_ptr<scene::Scene> scene_;
   std::unique_ptr<physics::World> physics_;
+  std::unique_ptr<sensors::Hub> hub_;
+  std::vector<scene::NodeHandle> slot_sensor_;    // per place slot: the sensor it reads (0: none)
+  std::unordered_map<scene::NodeHandle, std::vector<net::PlaceSlotId>> sensor_slots_;
+  std::unordered_map<net::PlaceSlotId, std::vector<net::TermId>> conditions_of_;
+  void sense();  // phase 2
   std::unique_ptr<net::Kernel> kernel_;
   std::unique_ptr<net::StatsCollector> stats_;
   std::unique_ptr<net::TraceWriter> trace_;

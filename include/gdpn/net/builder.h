@@ -35,8 +35,14 @@ class NetBuilder {
   std::int32_t addScript(ScriptSpec script);
   /// Gives transition `t` script `index` as its guard (0), pre_fire (1), in_fire (2) or post_fire (3).
   void setTransitionScript(TransitionId t, int which, std::int32_t index);
-  /// Gives slot `slot` of `place` script `index` as its on_deposit (0) or on_remove (1).
+  /// Gives slot `slot` of `place` script `index` as its on_deposit (0), on_remove (1),
+  /// on_enter (2), on_exit (3), on_sample (4) or on_change (5).
   void setSlotScript(PlaceId place, SlotId slot, int which, std::int32_t index);
+  /// Makes slot `slot` of `place` a sensor slot reading the sensor at `path`.
+  void setSensor(PlaceId place, SlotId slot, std::string path);
+  /// Adds a condition term: the transition may start only while script `index` (an
+  /// expression over the sensor slot `slot` of `place`) is true.
+  void addCondition(PlaceId place, TransitionId transition, SlotId slot, std::int32_t index);
   /// Gives the most recently added arc term a predicate, script `index`.
   void setLastPredicate(std::int32_t index);
   /// Marks script `index` as the model's globals.
@@ -53,7 +59,8 @@ class NetBuilder {
     std::int64_t capacity = kUnbounded;
     std::int64_t initial = 0;
     std::vector<std::uint32_t> nodes;
-    std::array<std::int32_t, 2> scripts{-1, -1};
+    std::array<std::int32_t, 6> scripts{-1, -1, -1, -1, -1, -1};
+    std::string sensor;
   };
   struct BuildPlace {
     std::string name;

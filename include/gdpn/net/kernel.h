@@ -84,6 +84,11 @@ class Kernel {
   /// not: a node slot, a negative count, or no room (count + reserve > capacity). Observers
   /// see the change as a deposit or a removal; on_deposit/on_remove scripts do not run.
   std::string setMarking(PlaceSlotId ps, std::int64_t count);
+  /// Sets whether condition term `term` holds (the sensor layer evaluates conditions when
+  /// their sensor changes). Conditions start out not holding.
+  void setCondition(TermId term, bool holds);
+  /// Whether condition term `term` holds now.
+  [[nodiscard]] bool condition(TermId term) const { return term < cond_.size() && cond_[term]; }
   /// Puts node token `ref` at the end of node slot `ps` (a script's `add`). Returns "" or why
   /// not: a control slot, or no room. Observers see a deposit; on_deposit does not run.
   std::string addNode(PlaceSlotId ps, NodeRef ref);
@@ -176,6 +181,7 @@ class Kernel {
   std::vector<TransitionId> due_;
   std::vector<NodeRef> moved_;  // node tokens of one event, reused
   ScriptHooks* hooks_ = nullptr;
+  std::vector<std::uint8_t> cond_;                // per term: a condition that holds
   std::vector<std::uint64_t> start_seq_;        // per transition, when the net has in_fire scripts
   std::vector<TransitionId> in_fire_;           // occurring transitions with in_fire, in start order
   std::vector<TransitionId> in_fire_next_;

@@ -33,6 +33,7 @@ enum class TermKind : std::uint8_t {
   Test,       ///< test input: needs `weight` tokens
   Inhibitor,  ///< needs fewer than `weight` tokens
   Output,     ///< needs room for `weight` tokens, deposits them on completion
+  Condition,  ///< a sensor condition: holds while its expression is true (set from outside)
 };
 
 /// The largest arc weight, tokens (weights are 32-bit to keep terms small).
@@ -51,13 +52,13 @@ struct Term {
 /// Bits of Transition::scripts.
 enum TransitionScript : std::uint8_t { kGuard = 1, kPreFire = 2, kInFire = 4, kPostFire = 8 };
 /// Bits of PlaceSlot::scripts.
-enum SlotScript : std::uint8_t { kOnDeposit = 1, kOnRemove = 2 };
+enum SlotScript : std::uint8_t { kOnDeposit = 1, kOnRemove = 2, kOnEnter = 4, kOnExit = 8, kOnSample = 16, kOnChange = 32 };
 
 /// Where each scripted construct's scripts are, as indices into Net::scripts() (-1: none).
 struct ScriptIndex {
   std::vector<std::array<std::int32_t, 4>> transitions;  ///< guard, pre_fire, in_fire, post_fire
-  std::vector<std::array<std::int32_t, 2>> slots;        ///< on_deposit, on_remove per place slot
-  std::vector<std::int32_t> predicates;                  ///< per term
+  std::vector<std::array<std::int32_t, 6>> slots;  ///< on_deposit, on_remove, on_enter, on_exit, on_sample, on_change
+  std::vector<std::int32_t> predicates;            ///< per term: its predicate or condition
 };
 
 /// One slot of one place.
@@ -135,6 +136,11 @@ class Net {
   [[nodiscard]] std::span<const ScriptSpec> scripts() const { return scripts_; }
   /// Which scripts each construct has; empty vectors when the net has no scripts.
   [[nodiscard]] const ScriptIndex& scriptIndex() const { return script_index_; }
+  /// The sensor path a sensor slot reads ("" for other slots), per place slot.
+  [[nodiscard]] const std::string& sensorPath(PlaceSlotId ps) const {
+    static const std::string none;
+    return ps < sensor_paths_.size() ? sensor_paths_[ps] : none;
+  }
   /// The index of the globals script in scripts(), or -1.
   [[nodiscard]] std::int32_t globalsScript() const { return globals_script_; }
   /// True when any construct has a script.
@@ -158,6 +164,7 @@ class Net {
   std::vector<ScriptSpec> scripts_;
   ScriptIndex script_index_;
   std::int32_t globals_script_ = -1;
+  std::vector<std::string> sensor_paths_;
 };
 
 }  // namespace gdpn::net

@@ -89,7 +89,21 @@ struct SlotScripts {
   SlotId slot = kDefaultSlot;  ///< which slot
   ScriptSpec on_deposit;       ///< runs per token deposited: `on_deposit(token)`
   ScriptSpec on_remove;        ///< runs per token removed: `on_remove(token)`
+  ScriptSpec on_enter;         ///< sensor slot (Region): per item that entered: `items`, `item`
+  ScriptSpec on_exit;          ///< sensor slot (Region): per item that left: `items`, `item`
+  ScriptSpec on_sample;        ///< sensor slot: every step while the sensor reports anything
+  ScriptSpec on_change;        ///< sensor slot (not a Region): when the value changes: `value`
   friend bool operator==(const SlotScripts&, const SlotScripts&) = default;
+};
+
+/// A sensor slot of a place, bound to a sensor node of the scene.
+struct SensorBinding {
+  SlotId slot = kDefaultSlot;  ///< which slot
+  std::string path;            ///< the sensor node's path (relative to the instance in a page type)
+  SourceLoc loc;               ///< where it was written
+  friend bool operator==(const SensorBinding& x, const SensorBinding& y) {
+    return x.slot == y.slot && x.path == y.path;
+  }
 };
 
 /// A predicate of an arc on one node slot: which tokens are eligible.
@@ -112,11 +126,12 @@ struct PlaceSpec {
   std::vector<SlotNodes> nodes;        ///< initial node tokens per slot
   std::vector<SlotCount> capacity;     ///< capacity per slot (unbounded when absent)
   std::vector<SlotScripts> scripts;    ///< per-slot scripts
+  std::vector<SensorBinding> sensors;  ///< sensor slots and the sensors they read
   std::optional<EditorPos> position;   ///< where the editor draws it
   friend bool operator==(const PlaceSpec& x, const PlaceSpec& y) {
     return x.name == y.name && x.description == y.description && x.kinds == y.kinds &&
            x.tokens == y.tokens && x.nodes == y.nodes && x.capacity == y.capacity &&
-           x.scripts == y.scripts && x.position == y.position;
+           x.scripts == y.scripts && x.sensors == y.sensors && x.position == y.position;
   }
 };
 
@@ -164,12 +179,13 @@ struct ArcSpec {
   ArcKind kind = ArcKind::Normal;  ///< normal, test or inhibitor
   std::vector<SlotCount> weights;  ///< per-slot weights; empty means a0 with weight 1
   std::vector<SlotPredicate> predicates;  ///< per node slot: which tokens are eligible (input arcs)
+  std::vector<SlotPredicate> conditions;  ///< per sensor slot: the arc allows its transition while true
   SourceLoc loc;                   ///< where the arc is declared
   SourceLoc from_loc;              ///< where `from` is written
   SourceLoc to_loc;                ///< where `to` is written
   friend bool operator==(const ArcSpec& x, const ArcSpec& y) {
     return x.from == y.from && x.to == y.to && x.kind == y.kind && x.weights == y.weights &&
-           x.predicates == y.predicates;
+           x.predicates == y.predicates && x.conditions == y.conditions;
   }
 };
 

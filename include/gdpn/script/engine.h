@@ -14,6 +14,7 @@
 #include "gdpn/net/kernel.h"
 #include "gdpn/physics/world.h"
 #include "gdpn/scene/node.h"
+#include "gdpn/sensors/hub.h"
 
 namespace gdpn::script {
 
@@ -32,6 +33,8 @@ struct EngineCallbacks {
   std::function<scene::Node*(const scene::Node&, scene::Node&, std::optional<core::Vec3>, std::string&)> spawn;
   /// node.delete(): removes a node, its subtree and their tokens
   std::function<void(scene::Node&)> erase;
+  /// the current reading of a sensor node
+  std::function<const sensors::Reading&(scene::NodeHandle)> reading;
 };
 
 /// Why the engine halted.
@@ -63,6 +66,13 @@ class Engine final : public net::ScriptHooks {
   void onDeposit(net::PlaceSlotId ps, const net::NodeRef* token) override;
   void onRemove(net::PlaceSlotId ps, const net::NodeRef* token) override;
   [[nodiscard]] bool halted() const override;
+
+  /// Evaluates condition term `term` (an expression over its sensor slot, seen under the
+  /// slot's name and as `value`) for sensor `sensor`. False when it fails.
+  bool condition(net::TermId term, scene::NodeHandle sensor);
+  /// Runs sensor slot `ps`'s on_enter (which = 0), on_exit (1) with `item`, on_sample (2) or
+  /// on_change (3), for sensor `sensor`.
+  void sensorEvent(net::PlaceSlotId ps, int which, scene::NodeHandle sensor, scene::NodeHandle item = 0);
 
   /// Why the engine halted (None while it has not).
   [[nodiscard]] Halt halt() const;
