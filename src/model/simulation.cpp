@@ -224,14 +224,18 @@ scene::Node* Simulation::spawn(const scene::Node& templ, scene::Node& parent, st
   const std::string base = templ.name().empty() ? "spawn" : templ.name();
   std::string name;
   for (int k = 1; name.empty() || parent.child(name); ++k) name = base + "_" + std::to_string(k);
+  // with `at`, the copy's own origin goes there: a Transform is moved itself, anything else
+  // gets a Transform of its own
+  const bool placeable = templ.type().fieldIndex("translation") >= 0;
   scene::Node* home = &parent;
+  if (at && !placeable) home = scene_->create(*scene_->types().find("Transform"), name, parent);
+  scene::Node* copy = scene_->copy(templ, *home, home == &parent ? name : templ.name());
+  scene::Node* top = home == &parent ? copy : home;
   if (at) {
-    home = scene_->create(*scene_->types().find("Transform"), name, parent);
     const core::Vec3 local = parent.world.inverse().apply(*at);
-    home->setValue(0, std::array<double, 3>{local.x, local.y, local.z});
+    top->setValue(static_cast<std::size_t>(top->type().fieldIndex("translation")),
+                  std::array<double, 3>{local.x, local.y, local.z});
   }
-  scene::Node* copy = scene_->copy(templ, *home, at ? templ.name() : name);
-  scene::Node* top = at ? home : copy;
   core::Diagnostics diags;
   if (physics_ && !physics_->add(*top, diags)) {
     why = diags.str();

@@ -149,3 +149,39 @@ pages:
 
 }  // namespace
 }  // namespace gdpn::model
+
+namespace gdpn::model {
+namespace {
+
+TEST(SortingDevice, EveryOneOfFiftyBallsEndsInItsBin) {
+  core::Diagnostics diags;
+  auto m = loadModel(std::string(GDPN_SOURCE_DIR) + "/examples/sorting/sorting.gdpn.yaml", diags);
+  ASSERT_TRUE(m) << diags.str();
+  auto sim = Simulation::create(*m, diags);
+  ASSERT_TRUE(sim) << diags.str();
+  const auto outcome = sim->run({});
+  ASSERT_NE(outcome.reason, StopReason::ScriptError) << outcome.message;
+  const auto* falling = sim->plant()->find("falling");
+  ASSERT_EQ(falling->children().size(), 50u);
+  int blue = 0, red = 0;
+  for (const auto& group : falling->children()) {
+    // the material in the ball's group says its colour; blue goes left (-y), red right
+    const bool is_blue = group->child("#0")->vec3("diffuse").z > 0.5;
+    const auto* ball = group->child("ball");
+    ASSERT_NE(ball, nullptr);
+    EXPECT_LT(ball->world.position.z, 0.3) << group->path() << " has not landed";
+    if (is_blue) {
+      EXPECT_LT(ball->world.position.y, -0.05) << group->path() << " is blue";
+      ++blue;
+    } else {
+      EXPECT_GT(ball->world.position.y, 0.05) << group->path() << " is red";
+      ++red;
+    }
+  }
+  EXPECT_EQ(blue + red, 50);
+  EXPECT_GT(blue, 10);  // both colours came (seed 7 draws about half of each)
+  EXPECT_GT(red, 10);
+}
+
+}  // namespace
+}  // namespace gdpn::model

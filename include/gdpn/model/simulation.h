@@ -91,8 +91,9 @@ class Simulation {
   /// True once start() has run.
   [[nodiscard]] bool started() const { return started_; }
   /// Copies `templ` (a node of the plant) as a new child of `parent`, named after it with a
-  /// number; with `at`, under a new Transform that puts it at that world position (m). Its
-  /// bodies join the physics; the trace records it. Returns the copy, or null and `why`.
+  /// number. With `at`, the copy's origin goes to that world position (m): a Transform copy is
+  /// moved itself, anything else is put under a new Transform. Its bodies join the physics;
+  /// the trace records it. Returns the copy, or null and `why`.
   scene::Node* spawn(const scene::Node& templ, scene::Node& parent, std::optional<core::Vec3> at, std::string& why);
   /// Deletes `node` and its subtree from the plant: tokens that hold any of them leave the
   /// net, their bodies leave the physics, and the trace records it. The root stays.
