@@ -95,8 +95,9 @@ struct World::Impl {
     dGeomID geom;     // in sensor_space, never in contacts
     bool ray;         // a ray: RangeFinder, or a Region of shape ray
   };
-  dSpaceID sensor_space = nullptr;
   std::vector<Sensor> sensors;
+  // geometry data: surfaces are 1..n; a sensor's data has this bit set over its index
+  static constexpr std::uintptr_t kSensorTag = std::uintptr_t{1} << 62;
   std::string model_dir;
   std::map<std::pair<dBodyID, dBodyID>, dJointID> attached;
 
@@ -104,7 +105,6 @@ struct World::Impl {
   ~Impl() {
     for (auto& [pair, j] : attached) dJointDestroy(j);
     if (contacts) dJointGroupDestroy(contacts);
-    if (sensor_space) dSpaceDestroy(sensor_space);
     if (space) dSpaceDestroy(space);
     if (world) dWorldDestroy(world);
   }
@@ -169,28 +169,38 @@ struct World::Impl {
     dGeomID g = nullptr;
     bool ray = false;
     if (t == "RangeFinder") {
-      g = dCreateRay(sensor_space, n.number("length"));
+      g = dCreateRay(space, n.number("length"));
       ray = true;
     } else if (t == "Region") {
       const std::string shape = n.text("shape");
       const Vec3 s = n.world_scale;
       if (shape == "box") {
         const Vec3 size = n.vec3("size").times(s);
-        g = dCreateBox(sensor_space, std::max(size.x, 1e-9), std::max(size.y, 1e-9), std::max(size.z, 1e-9));
+        g = dCreateBox(space, std::max(size.x, 1e-9), std::max(size.y, 1e-9), std::max(size.z, 1e-9));
       } else if (shape == "sphere") {
-        g = dCreateSphere(sensor_space, std::max(n.number("radius") * std::max({s.x, s.y, s.z}), 1e-9));
+        g = dCreateSphere(space, std::max(n.number("radius") * std::max({s.x, s.y, s.z}), 1e-9));
       } else if (shape == "cylinder" || shape == "cone") {
         const double r = n.number("radius") * std::max(s.x, s.y) * (shape == "cone" ? 0.5 : 1.0);
-        g = dCreateCylinder(sensor_space, std::max(r, 1e-9), std::max(n.number("height") * s.z, 1e-9));
+        g = dCreateCylinder(space, std::max(r, 1e-9), std::max(n.number("height") * s.z, 1e-9));
       } else {
-        g = dCreateRay(sensor_space, n.number("length"));
+        g = dCreateRay(space, n.number("length"));
         ray = true;
       }
     } else {
       return;  // time sensors need no geometry
     }
     sensors.push_back({&n, g, ray});
+    retagSensors();
   }
+
+  /// Each sensor geometry's data: the tag and its index in `sensors`.
+  void retagSensors() {
+    for (std::size_t i = 0; i < sensors.size(); ++i) {
+      dGeomSetData(sensors[i].geom, reinterpret_cast<void*>(kSensorTag | i));
+    }
+  }
+
+  static bool isSensor(dGeomID g) { return (reinterpret_cast<std::uintptr_t>(dGeomGetData(g)) & kSensorTag) != 0; }
 
   /// True when shape `shape` is in the scope of `sensor`.
   static bool inScope(const Node& sensor, const Node& shape) {
@@ -210,61 +220,68 @@ struct World::Impl {
     return b ? b->node : &shape;
   }
 
-  struct SenseContext {
-    Impl* self;
-    const Sensor* sensor;
+  /// What each sensor felt in one sensing pass.
+  struct Felt {
     std::vector<const Node*> items;
     double distance;
     const Node* hit;
   };
 
   static void senseCallback(void* data, dGeomID o1, dGeomID o2) {
-    auto& ctx = *static_cast<SenseContext*>(data);
-    dGeomID other = o1 == ctx.sensor->geom ? o2 : o1;
-    if (dGeomIsSpace(other)) {
-      dSpaceCollide2(ctx.sensor->geom, other, data, &senseCallback);
-      return;
-    }
-    const Surface s = surfaceOf(other, *ctx.self);
-    if (!s.node || !inScope(*ctx.sensor->node, *s.node)) return;
+    auto& self = *static_cast<Impl*>(data);
+    const bool s1 = isSensor(o1), s2 = isSensor(o2);
+    if (s1 == s2) return;  // only sensor-to-shape pairs matter here
+    dGeomID sg = s1 ? o1 : o2, other = s1 ? o2 : o1;
+    const auto index = reinterpret_cast<std::uintptr_t>(dGeomGetData(sg)) & ~kSensorTag;
+    const Sensor& sensor = self.sensors[index];
+    const Surface s = surfaceOf(other, self);
+    if (!s.node || !inScope(*sensor.node, *s.node)) return;
     dContactGeom c;
-    if (dCollide(ctx.sensor->geom, other, 1, &c, sizeof(dContactGeom)) == 0) return;
-    if (ctx.sensor->ray) {
-      if (c.depth < ctx.distance) {
-        ctx.distance = c.depth;
-        ctx.hit = ctx.self->reported(*s.node);
+    if (dCollide(sg, other, 1, &c, sizeof(dContactGeom)) == 0) return;
+    Felt& felt = self.felt[index];
+    if (sensor.ray) {
+      if (c.depth < felt.distance) {
+        felt.distance = c.depth;
+        felt.hit = self.reported(*s.node);
       }
     } else {
-      ctx.items.push_back(ctx.self->reported(*s.node));
+      felt.items.push_back(self.reported(*s.node));
     }
   }
 
+  std::vector<Felt> felt;
+
+  /// One pass of the hash space's broad phase finds every sensor-to-shape pair at once.
   void sense(std::vector<std::pair<scene::NodeHandle, Feel>>& out) {
     out.clear();
-    for (const auto& sensor : sensors) {
+    felt.assign(sensors.size(), Felt{});
+    for (std::size_t i = 0; i < sensors.size(); ++i) {
+      const Sensor& sensor = sensors[i];
       const Node& n = *sensor.node;
       // sensors follow the nodes they sit in (a body moves them)
       if (sensor.ray) {
         const Vec3 from = n.world.position, dir = n.world.rotation.rotate({1, 0, 0});
         dGeomRaySet(sensor.geom, from.x, from.y, from.z, dir.x, dir.y, dir.z);
+        felt[i].distance = dGeomRayGetLength(sensor.geom);
       } else {
         dGeomSetPosition(sensor.geom, n.world.position.x, n.world.position.y, n.world.position.z);
         const dQuaternion q = {n.world.rotation.w, n.world.rotation.x, n.world.rotation.y, n.world.rotation.z};
         dGeomSetQuaternion(sensor.geom, q);
       }
-      const double length = sensor.ray ? dGeomRayGetLength(sensor.geom) : 0.0;
-      SenseContext ctx{this, &sensor, {}, length, nullptr};
-      dSpaceCollide2(sensor.geom, reinterpret_cast<dGeomID>(space), &ctx, &senseCallback);
+    }
+    if (!sensors.empty()) dSpaceCollide(space, this, &senseCallback);
+    for (std::size_t i = 0; i < sensors.size(); ++i) {
+      const Node& n = *sensors[i].node;
+      Felt& f = felt[i];
       Feel feel;
-      if (sensor.ray) {
-        feel.distance = ctx.distance;
-        feel.hit = ctx.hit ? ctx.hit->handle() : 0;
-        if (n.type().name == "Region" && ctx.hit) feel.items.push_back(ctx.hit->handle());
+      if (sensors[i].ray) {
+        feel.distance = f.distance;
+        feel.hit = f.hit ? f.hit->handle() : 0;
+        if (n.type().name == "Region" && f.hit) feel.items.push_back(f.hit->handle());
       } else {
-        std::sort(ctx.items.begin(), ctx.items.end(),
-                  [](const Node* a, const Node* b) { return a->path() < b->path(); });
-        ctx.items.erase(std::unique(ctx.items.begin(), ctx.items.end()), ctx.items.end());
-        for (const Node* item : ctx.items) feel.items.push_back(item->handle());
+        std::sort(f.items.begin(), f.items.end(), [](const Node* a, const Node* b) { return a->path() < b->path(); });
+        f.items.erase(std::unique(f.items.begin(), f.items.end()), f.items.end());
+        for (const Node* item : f.items) feel.items.push_back(item->handle());
       }
       out.emplace_back(n.handle(), std::move(feel));
     }
@@ -281,6 +298,7 @@ struct World::Impl {
         if (it->node == &n) {
           dGeomDestroy(it->geom);
           it = sensors.erase(it);
+          retagSensors();
         } else {
           ++it;
         }
@@ -540,11 +558,12 @@ struct World::Impl {
 
   static Surface surfaceOf(dGeomID g, const Impl& self) {
     const auto i = reinterpret_cast<std::size_t>(dGeomGetData(g));
-    return i == 0 ? Surface{} : self.surfaces[i - 1];
+    return i == 0 || (i & kSensorTag) ? Surface{} : self.surfaces[i - 1];
   }
 
   static void nearCallback(void* data, dGeomID o1, dGeomID o2) {
     auto& self = *static_cast<Impl*>(data);
+    if (isSensor(o1) || isSensor(o2)) return;  // sensors feel, they do not touch
     dBodyID b1 = dGeomGetBody(o1), b2 = dGeomGetBody(o2);
     // nothing to do between static shapes, or where everything involved sleeps
     const bool awake1 = b1 && dBodyIsEnabled(b1), awake2 = b2 && dBodyIsEnabled(b2);
@@ -623,8 +642,9 @@ std::unique_ptr<World> World::create(scene::Scene& scene, const std::string& mod
   auto impl = std::make_unique<Impl>(scene);
   impl->world = dWorldCreate();
   impl->space = dHashSpaceCreate(nullptr);
+  // cells from 1/16 m to 64 m: what plants are made of; bigger things are checked apart
+  dHashSpaceSetLevels(impl->space, -4, 6);
   impl->contacts = dJointGroupCreate(0);
-  impl->sensor_space = dSimpleSpaceCreate(nullptr);
   // settings from the first World node, if any
   const Node* settings = nullptr;
   scene::traverse(scene.root(), [&](Node& n, const scene::TraversalState&) {

@@ -36,6 +36,8 @@ const Reading& Hub::reading(scene::NodeHandle sensor) const {
 const std::vector<Change>& Hub::update(double now) {
   changes_.clear();
   if (world_) world_->sense(felt_);
+  index_.clear();
+  for (std::size_t i = 0; i < felt_.size(); ++i) index_[felt_[i].first] = i;
   auto pathOf = [&](scene::NodeHandle h) {
     const scene::Node* n = scene_.resolve(h);
     return n ? n->path() : std::string();
@@ -49,11 +51,12 @@ const std::vector<Change>& Hub::update(double now) {
       next.active = ticks > e.reading.value;
       next.value = ticks;
     } else {
-      auto it = std::find_if(felt_.begin(), felt_.end(), [&](const auto& f) { return f.first == e.node->handle(); });
-      if (it == felt_.end()) continue;
-      next.items = it->second.items;
-      next.hit = it->second.hit;
-      next.value = type == "RangeFinder" ? it->second.distance : static_cast<double>(next.items.size());
+      auto at = index_.find(e.node->handle());
+      if (at == index_.end()) continue;
+      const auto& feel = felt_[at->second].second;
+      next.items = feel.items;
+      next.hit = feel.hit;
+      next.value = type == "RangeFinder" ? feel.distance : static_cast<double>(next.items.size());
       next.active = type == "RangeFinder" ? next.hit != 0 : !next.items.empty();
     }
     Change change;

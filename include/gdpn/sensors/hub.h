@@ -4,6 +4,7 @@
 /// step: items that entered or left a Region, a RangeFinder's new distance, a TimeSensor's
 /// tick. Regions and range finders are felt through the physics.
 
+#include <unordered_map>
 #include <vector>
 
 #include "gdpn/physics/world.h"
@@ -51,6 +52,7 @@ class Hub {
   physics::World* world_;
   std::vector<Entry> entries_;  // in path order
   std::vector<std::pair<scene::NodeHandle, physics::World::Feel>> felt_;
+  std::unordered_map<scene::NodeHandle, std::size_t> index_;  // sensor -> its entry in felt_
   std::vector<Change> changes_;
 };
 
