@@ -82,6 +82,21 @@ class SceneReader {
         node->field_locs[i] = r_.loc(field.value, field.loc);
       }
     }
+    check(*node);
+  }
+
+  /// Checks that span fields: a GradientField's vectors must fill its grid.
+  void check(const scene::Node& node) {
+    if (node.type().name != "GradientField") return;
+    const auto nx = static_cast<std::size_t>(node.number("nx")), ny = static_cast<std::size_t>(node.number("ny"));
+    const auto i = static_cast<std::size_t>(node.type().fieldIndex("vectors"));
+    const auto& v = std::get<std::vector<double>>(node.value(i));
+    if (v.size() != 2 * nx * ny) {
+      r_.error(node.field_locs[i].line > 0 ? node.field_locs[i] : node.loc,
+               "a GradientField of " + std::to_string(nx) + " x " + std::to_string(ny) + " points needs " +
+                   std::to_string(2 * nx * ny) + " numbers in 'vectors' (x, y per point), got " +
+                   std::to_string(v.size()));
+    }
   }
 
   std::optional<double> number(const YAML::Node& n, const FieldDesc& f) {
@@ -162,6 +177,19 @@ class SceneReader {
       case FieldKind::File:
         if (auto s = r_.string(n, f.name)) return *s;
         return std::nullopt;
+      case FieldKind::FloatList: {
+        if (!n.IsSequence()) {
+          r_.error(r_.loc(n, e.loc), "'" + f.name + "' expects a list of numbers, got " + describe(n));
+          return std::nullopt;
+        }
+        std::vector<double> out;
+        for (const auto& x : n) {
+          auto v = number(x, f);
+          if (!v) return std::nullopt;
+          out.push_back(*v);
+        }
+        return out;
+      }
     }
     return std::nullopt;
   }
@@ -184,6 +212,10 @@ void writeValue(YAML::Emitter& out, const FieldValue& v) {
   } else if (const auto* a4 = std::get_if<std::array<double, 4>>(&v)) {
     out << YAML::Flow << YAML::BeginSeq;
     for (double x : *a4) out << core::formatDouble(x);
+    out << YAML::EndSeq;
+  } else if (const auto* list = std::get_if<std::vector<double>>(&v)) {
+    out << YAML::Flow << YAML::BeginSeq;
+    for (double x : *list) out << core::formatDouble(x);
     out << YAML::EndSeq;
   } else {
     out << std::get<std::string>(v);

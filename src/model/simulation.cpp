@@ -174,7 +174,10 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
     scene::traverse(sim->scene_->root(), [&](scene::Node& n, const scene::TraversalState&) {
       any = any || n.type().category == scene::Category::Sensor;
     });
-    if (any) sim->hub_ = std::make_unique<sensors::Hub>(*sim->scene_, sim->physics_.get());
+    if (any) {
+      if (!sensors::Hub::check(*sim->scene_, diags)) return nullptr;
+      sim->hub_ = std::make_unique<sensors::Hub>(*sim->scene_, sim->physics_.get());
+    }
   }
   sim->kernel_ = std::make_unique<net::Kernel>(sim->net_, settings);
   sim->stats_ = std::make_unique<net::StatsCollector>(*sim->net_);

@@ -13,6 +13,7 @@
 
 #include "gdpn/core/assert.h"
 #include "gdpn/scene/actions.h"
+#include "gdpn/scene/terrain.h"
 
 namespace gdpn::physics {
 namespace {
@@ -96,6 +97,8 @@ struct World::Impl {
     bool ray;         // a ray: RangeFinder, or a Region of shape ray
   };
   std::vector<Sensor> sensors;
+  std::deque<std::vector<double>> heightfields;     // the heights ODE reads (it keeps pointers)
+  std::vector<dHeightfieldDataID> heightfield_data;
   // geometry data: surfaces are 1..n; a sensor's data has this bit set over its index
   static constexpr std::uintptr_t kSensorTag = std::uintptr_t{1} << 62;
   std::string model_dir;
@@ -104,6 +107,9 @@ struct World::Impl {
   explicit Impl(scene::Scene& s) : scene(s) {}
   ~Impl() {
     for (auto& [pair, j] : attached) dJointDestroy(j);
+    if (space) dSpaceDestroy(space);
+    space = nullptr;
+    for (auto d : heightfield_data) dGeomHeightfieldDataDestroy(d);
     if (contacts) dJointGroupDestroy(contacts);
     if (space) dSpaceDestroy(space);
     if (world) dWorldDestroy(world);
@@ -400,6 +406,33 @@ struct World::Impl {
       }
       const Vec3 normal = n.world.rotation.rotate(n.vec3("normal")).normalized();
       g = dCreatePlane(space, normal.x, normal.y, normal.z, normal.dot(n.world.position));
+    } else if (t == "Terrain") {
+      if (body) {
+        diags.error(n.loc, "a Terrain is ground and cannot be part of the Body '" + body->node->path() + "'");
+        return false;
+      }
+      const std::string file = n.text("file");
+      const auto at = n.field_locs[static_cast<std::size_t>(n.type().fieldIndex("file"))];
+      const auto path = (std::filesystem::path(dir) / file).string();
+      std::string why;
+      auto grid = scene::loadHeightGrid(path, why);
+      if (!grid) {
+        diags.error(at.line > 0 ? at : n.loc, "cannot read the elevation file '" + file + "': " + why);
+        return false;
+      }
+      // ODE's heightfield is Y-up: x along width, z along depth (rows), heights along +y.
+      // Turned a quarter about x, its depth runs towards -y, so row 0 (north) lands at +y.
+      heightfields.push_back(std::move(grid->height));
+      dHeightfieldDataID data = dGeomHeightfieldDataCreate();
+      dGeomHeightfieldDataBuildDouble(data, heightfields.back().data(), 0, n.number("width") * s.x,
+                                      n.number("depth") * s.y, grid->nx, grid->ny, n.number("height_scale") * s.z,
+                                      0.0, 1.0, 0);
+      heightfield_data.push_back(data);
+      g = dCreateHeightfield(space, data, 1);
+      const Pose pose = n.world * Pose{{}, Quat::axisAngle({1, 0, 0}, M_PI / 2)};
+      const dQuaternion q = {pose.rotation.w, pose.rotation.x, pose.rotation.y, pose.rotation.z};
+      dGeomSetPosition(g, pose.position.x, pose.position.y, pose.position.z);
+      dGeomSetQuaternion(g, q);
     } else if (t == "Mesh") {
       const std::string file = n.text("file");
       const auto at = n.field_locs[static_cast<std::size_t>(n.type().fieldIndex("file"))];
@@ -433,7 +466,7 @@ struct World::Impl {
     surfaces.push_back(surface);
     dGeomSetData(g, reinterpret_cast<void*>(surfaces.size()));  // 1-based: 0 means none
     geom_of[n.handle()] = g;
-    if (t == "Plane") return true;
+    if (t == "Plane" || t == "Terrain") return true;
     const dQuaternion q = {n.world.rotation.w, n.world.rotation.x, n.world.rotation.y, n.world.rotation.z};
     if (body) {
       dGeomSetBody(g, body->id);

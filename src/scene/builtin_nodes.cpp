@@ -97,6 +97,12 @@ void registerBuiltinNodes(TypeRegistry& r) {
              {f("file", K::File, std::string(), "", "mesh file (obj, stl, 3ds, gltf, dae, ply, wrl, iv)"),
               f("scale", K::Vec3, V3{1, 1, 1}, "", "scale factors", 1e-9, kInf),
               choice("collision", {"trimesh", "box", "convex"}, "what the physics collides with")}));
+  r.add(type("Terrain", Category::Shape, false,
+             "ground from an elevation file (GeoTIFF or another DEM, or a greyscale image), centred on its origin",
+             {f("file", K::File, std::string(), "", "elevation file, read through GDAL"),
+              f("width", K::Float, 100.0, "m", "extent along x", 1e-9, kInf),
+              f("depth", K::Float, 100.0, "m", "extent along y", 1e-9, kInf),
+              f("height_scale", K::Float, 1.0, "m", "metres per unit of the file's values")}));
   // dynamics
   r.add(type("World", Category::Dynamics, false, "settings of the rigid-body physics",
              {f("gravity", K::Vec3, V3{0, 0, -9.81}, "m/s^2", "gravity"),
@@ -125,6 +131,14 @@ void registerBuiltinNodes(TypeRegistry& r) {
   r.add(type("Conveyor", Category::Dynamics, false, "makes the shapes beside it move what touches them",
              {f("speed", K::Float, 1.0, "m/s", "belt speed"),
               f("direction", K::Vec3, V3{1, 0, 0}, "", "belt direction, in the conveyor's frame")}));
+  r.add(type("GradientField", Category::Field, false,
+             "a 2D grid of vectors over a region of the ground, centred on its origin",
+             {f("width", K::Float, 10.0, "m", "extent along x", 1e-9, kInf),
+              f("depth", K::Float, 10.0, "m", "extent along y", 1e-9, kInf),
+              f("nx", K::Int, std::int64_t{2}, "", "grid points along x", 2, 1e6),
+              f("ny", K::Int, std::int64_t{2}, "", "grid points along y", 2, 1e6),
+              f("vectors", K::FloatList, std::vector<double>(8, 0.0), "",
+                "nx * ny vectors (x, y), row by row from -y to +y, each row from -x to +x")}));
   // sensors: they feel the plant and make no contact forces
   r.add(type("Region", Category::Sensor, false, "reports the bodies and shapes inside its volume",
              {choice("shape", {"box", "sphere", "cylinder", "cone", "ray"}, "the volume's shape"),
@@ -137,6 +151,9 @@ void registerBuiltinNodes(TypeRegistry& r) {
   r.add(type("RangeFinder", Category::Sensor, false, "the distance along a ray (+x) to the first thing it hits",
              {f("length", K::Float, 10.0, "m", "how far it sees", 0, kInf),
               choice("scope", {"world", "siblings", "parent"}, "what it sees")}));
+  r.add(type("GradientSensor", Category::Sensor, false,
+             "the gradient field's vector where its parent body is (bilinear)",
+             {f("field", K::String, std::string(), "", "the GradientField's path (empty: the scene's first one)")}));
   r.add(type("TimeSensor", Category::Sensor, false, "ticks at a period",
              {f("period", K::Float, 1.0, "s", "time between ticks", 1e-9, kInf),
               f("offset", K::Float, 0.0, "s", "time of the first tick", 0, kInf)}));

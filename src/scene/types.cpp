@@ -16,6 +16,7 @@ const char* fieldKindName(FieldKind kind) {
     case FieldKind::Enum: return "enum";
     case FieldKind::String: return "string";
     case FieldKind::File: return "file";
+    case FieldKind::FloatList: return "list";
   }
   return "?";
 }

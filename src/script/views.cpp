@@ -141,6 +141,7 @@ py::object getField(const NodeView& v, const std::string& name) {
         using T = std::decay_t<decltype(x)>;
         if constexpr (std::is_same_v<T, std::array<double, 3>>) return py::make_tuple(x[0], x[1], x[2]);
         else if constexpr (std::is_same_v<T, std::array<double, 4>>) return py::make_tuple(x[0], x[1], x[2], x[3]);
+        else if constexpr (std::is_same_v<T, std::vector<double>>) return py::cast(x);
         else return py::cast(x);
       },
       n.value(i));
@@ -183,6 +184,12 @@ void setField(const NodeView& v, const std::string& name, const py::object& valu
     }
     case scene::FieldKind::String:
     case scene::FieldKind::File: out = value.cast<std::string>(); break;
+    case scene::FieldKind::FloatList: {
+      std::vector<double> list;
+      for (const auto& x : value.cast<py::sequence>()) list.push_back(range(x.cast<double>()));
+      out = std::move(list);
+      break;
+    }
   }
   n.setValue(i, std::move(out));
   // a joint whose motor changes wakes its bodies on the next step (the physics reads the fields)
@@ -376,6 +383,12 @@ void registerViews() {
                              "a Region's contents: the bodies (or static shapes) inside, in path order")
       .def_property_readonly("value", [](const SensorView& v) { return v.r.get().reading(v.sensor).value; },
                              "a RangeFinder's distance (m), a TimeSensor's ticks, a Region's count")
+      .def_property_readonly("vector",
+                             [](const SensorView& v) {
+                               const auto u = v.r.get().reading(v.sensor).vector;
+                               return py::make_tuple(u.x, u.y, u.z);
+                             },
+                             "a GradientSensor's vector where its body is (world frame)")
       .def_property_readonly("active", [](const SensorView& v) { return v.r.get().reading(v.sensor).active; },
                              "something inside, something seen, or a tick now")
       .def_property_readonly("hit",

@@ -5,7 +5,71 @@
 
 #include "gdpn/scene/actions.h"
 
+#include "gdpn/scene/actions.h"
+
 namespace gdpn::sensors {
+namespace {
+
+const scene::Node* bodyAbove(const scene::Node& n) {
+  for (const scene::Node* p = n.parent(); p; p = p->parent()) {
+    if (p->type().name == "Body") return p;
+  }
+  return nullptr;
+}
+
+/// The field a GradientSensor reads: the one its `field` names, or the scene's first.
+const scene::Node* fieldOf(const scene::Scene& scene, const scene::Node& sensor) {
+  const std::string& path = sensor.text("field");
+  if (!path.empty()) {
+    const scene::Node* f = scene.find(path);
+    return f && f->type().name == "GradientField" ? f : nullptr;
+  }
+  const scene::Node* first = nullptr;
+  scene::traverse(scene.root(), [&](scene::Node& n, const scene::TraversalState&) {
+    if (!first && n.type().name == "GradientField") first = &n;
+  });
+  return first;
+}
+
+/// The field's vector at world point `p`: bilinear between grid points, held at the edges.
+core::Vec3 sample(const scene::Node& field, core::Vec3 p) {
+  const core::Vec3 q = field.world.inverse().apply(p);
+  const double w = field.number("width"), d = field.number("depth");
+  const auto nx = static_cast<std::size_t>(field.number("nx")), ny = static_cast<std::size_t>(field.number("ny"));
+  const auto& v = std::get<std::vector<double>>(field.value(static_cast<std::size_t>(field.type().fieldIndex("vectors"))));
+  const double u = std::clamp((q.x + w / 2) / w, 0.0, 1.0) * static_cast<double>(nx - 1);
+  const double t = std::clamp((q.y + d / 2) / d, 0.0, 1.0) * static_cast<double>(ny - 1);
+  const auto i = std::min(static_cast<std::size_t>(u), nx - 2), j = std::min(static_cast<std::size_t>(t), ny - 2);
+  const double fu = u - static_cast<double>(i), ft = t - static_cast<double>(j);
+  auto at = [&](std::size_t a, std::size_t b, int c) { return v[(b * nx + a) * 2 + static_cast<std::size_t>(c)]; };
+  core::Vec3 out;
+  for (int c = 0; c < 2; ++c) {
+    const double value = (1 - fu) * (1 - ft) * at(i, j, c) + fu * (1 - ft) * at(i + 1, j, c) +
+                         (1 - fu) * ft * at(i, j + 1, c) + fu * ft * at(i + 1, j + 1, c);
+    (c == 0 ? out.x : out.y) = value;
+  }
+  return field.world.rotation.rotate(out);
+}
+
+}  // namespace
+
+bool Hub::check(const scene::Scene& scene, core::Diagnostics& diags) {
+  bool ok = true;
+  scene::traverse(scene.root(), [&](scene::Node& n, const scene::TraversalState&) {
+    if (n.type().name != "GradientSensor") return;
+    if (!bodyAbove(n)) {
+      diags.error(n.loc, "a GradientSensor samples the field where its body is, but '" + n.path() +
+                             "' has no Body above it");
+      ok = false;
+    }
+    if (!fieldOf(scene, n)) {
+      diags.error(n.loc, "GradientSensor '" + n.path() + "' finds no GradientField to read" +
+                             (n.text("field").empty() ? "" : " at '" + n.text("field") + "'"));
+      ok = false;
+    }
+  });
+  return ok;
+}
 
 Hub::Hub(scene::Scene& scene, physics::World* world) : scene_(scene), world_(world) {
   scene::traverse(scene_.root(), [&](scene::Node& n, const scene::TraversalState&) {
@@ -45,7 +109,14 @@ const std::vector<Change>& Hub::update(double now) {
   for (auto& e : entries_) {
     Reading next = e.reading;
     const auto& type = e.node->type().name;
-    if (type == "TimeSensor") {
+    if (type == "GradientSensor") {
+      const scene::Node* body = bodyAbove(*e.node);
+      const scene::Node* field = fieldOf(scene_, *e.node);
+      if (!body || !field) continue;
+      next.vector = sample(*field, body->world.position);
+      next.value = next.vector.length();
+      next.active = true;
+    } else if (type == "TimeSensor") {
       const double period = e.node->number("period"), offset = e.node->number("offset");
       const double ticks = now + 1e-9 < offset ? 0.0 : std::floor((now - offset) / period + 1e-9) + 1.0;
       next.active = ticks > e.reading.value;
@@ -73,7 +144,8 @@ const std::vector<Change>& Hub::update(double now) {
     std::sort(change.exited.begin(), change.exited.end(),
               [&](auto a, auto b) { return pathOf(a) < pathOf(b); });
     const bool changed = !change.entered.empty() || !change.exited.empty() || next.value != e.reading.value ||
-                         next.hit != e.reading.hit || (type == "TimeSensor" && next.active);
+                         next.hit != e.reading.hit || !(next.vector == e.reading.vector) ||
+                         (type == "TimeSensor" && next.active);
     e.reading = std::move(next);
     if (changed) changes_.push_back(std::move(change));
   }

@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 std::vector<std::string> badFiles() {
   std::vector<std::string> files;
   for (const auto& e : fs::directory_iterator(fs::path(GDPN_SOURCE_DIR) / "tests/data/bad")) {
-    files.push_back(e.path().string());
+    if (e.path().string().ends_with(kModelSuffix)) files.push_back(e.path().string());
   }
   std::sort(files.begin(), files.end());
   return files;

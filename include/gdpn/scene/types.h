@@ -27,6 +27,7 @@ enum class FieldKind : std::uint8_t {
   Enum,      ///< one word out of a fixed list
   String,    ///< text
   File,      ///< a file path, relative to the model's folder
+  FloatList, ///< a list of numbers
 };
 
 /// "bool", "int", ...
@@ -34,7 +35,8 @@ const char* fieldKindName(FieldKind kind);
 
 /// The value of a field. Vec3 and Color use the 3-array; Rotation the 4-array; Enum, String
 /// and File the string.
-using FieldValue = std::variant<bool, std::int64_t, double, std::array<double, 3>, std::array<double, 4>, std::string>;
+using FieldValue = std::variant<bool, std::int64_t, double, std::array<double, 3>, std::array<double, 4>, std::string,
+                                std::vector<double>>;
 
 /// One field of a node type.
 struct FieldDesc {
@@ -52,7 +54,7 @@ struct FieldDesc {
 };
 
 /// What role a node type plays (for dispatch by actions and physics).
-enum class Category : std::uint8_t { Group, Look, Shape, Dynamics, Sensor };
+enum class Category : std::uint8_t { Group, Look, Shape, Dynamics, Sensor, Field };
 
 /// A node type: its own fields, its base type's fields before them.
 struct NodeType {
@@ -88,8 +90,8 @@ class TypeRegistry {
 };
 
 /// Registers the built-in types: Group, Transform, Material, Light, Camera, Fog, Cube,
-/// Sphere, Cylinder, Cone, Plane, Mesh, World, Body, Joint, Conveyor, Region, RangeFinder,
-/// TimeSensor.
+/// Sphere, Cylinder, Cone, Plane, Mesh, Terrain, World, Body, Joint, Conveyor, GradientField,
+/// Region, RangeFinder, TimeSensor, GradientSensor.
 void registerBuiltinNodes(TypeRegistry& registry);
 
 /// The registry with the built-in types, made once.

@@ -7,6 +7,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "gdpn/core/diagnostics.h"
 #include "gdpn/physics/world.h"
 #include "gdpn/scene/node.h"
 
@@ -17,6 +18,7 @@ struct Reading {
   std::vector<scene::NodeHandle> items;  ///< Region: what is inside, in path order
   double value = 0;                      ///< RangeFinder: distance, m; TimeSensor: ticks so far
   scene::NodeHandle hit = 0;             ///< RangeFinder: what it sees (0: nothing)
+  core::Vec3 vector;                     ///< GradientSensor: the field's vector where its body is
   /// Region: something is inside; RangeFinder: it sees something; TimeSensor: it ticked now.
   bool active = false;
 };
@@ -34,6 +36,9 @@ class Hub {
   /// Finds the sensors of `scene`; `world` feels Regions and RangeFinders (may be null when
   /// the scene has none).
   Hub(scene::Scene& scene, physics::World* world);
+  /// Reports sensors that cannot work, at their location: a GradientSensor with no Body
+  /// above it, or with no GradientField to read. False when there was one.
+  static bool check(const scene::Scene& scene, core::Diagnostics& diags);
   /// Phase 2: reads every sensor at time `now` (seconds); returns the sensors whose reading
   /// changed, in the order of their paths.
   const std::vector<Change>& update(double now);
