@@ -101,12 +101,20 @@ struct RunArgs {
   std::string trace;
   std::string report;
   double script_timeout = 0.0;
+  std::string input;
   bool quiet = false;
 };
 
 int run(const RunArgs& a) {
   auto sim = open(a.model, a.seed, a.script_timeout);
   if (!sim) return 1;
+  if (!a.input.empty()) {
+    Diagnostics diags;
+    auto events = model::loadInput(a.input, diags);
+    diags.print(std::cerr);
+    if (!events) return 1;
+    sim->setInput(std::move(*events));
+  }
   std::ofstream trace;
   if (!a.trace.empty()) {
     trace.open(a.trace, std::ios::binary | std::ios::trunc);
@@ -173,6 +181,8 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--script-timeout", run_args.script_timeout,
                       "stop the run when one script call runs longer than SECONDS")
       ->check(CLI::PositiveNumber);
+  run_cmd->add_option("--input", run_args.input,
+                      "input events for keyboard and mouse sensors: a YAML list of {t, key | click | viewpoint}");
   run_cmd->add_flag("--quiet,-q", run_args.quiet, "print no summary and no progress");
 
   CLI11_PARSE(app, argc, argv);

@@ -554,6 +554,73 @@ std::optional<Model> loadModel(const std::string& path, Diagnostics& diags) {
   return parseModel(*text, path, diags);
 }
 
+std::optional<std::vector<sensors::InputEvent>> loadInput(const std::string& path, Diagnostics& diags) {
+  auto text = detail::readFile(path, diags);
+  if (!text) return std::nullopt;
+  auto root = detail::parseYaml(*text, path, diags);
+  if (!root) return std::nullopt;
+  YamlReader r(path, diags);
+  std::vector<sensors::InputEvent> events;
+  if (root->IsNull()) return events;
+  if (!r.expectList(*root, "an input file")) return std::nullopt;
+  auto vec3 = [&](const YAML::Node& n, const char* what) -> std::optional<core::Vec3> {
+    if (!n.IsSequence() || n.size() != 3) {
+      r.error(n, std::string("'") + what + "' expects [x, y, z], got " + detail::describe(n));
+      return std::nullopt;
+    }
+    auto x = r.number(n[0], what), y = r.number(n[1], what), z = r.number(n[2], what);
+    if (!x || !y || !z) return std::nullopt;
+    return core::Vec3{*x, *y, *z};
+  };
+  for (const auto& item : *root) {
+    if (!r.expectMap(item, "an input event")) continue;
+    sensors::InputEvent ev;
+    ev.loc = r.loc(item);
+    int kinds = 0;
+    bool has_t = false;
+    for (const auto& e : r.entries(item, "an input event", {"t", "key", "down", "click", "viewpoint"})) {
+      if (e.key == "t") {
+        if (auto t = r.number(e.value, "t")) {
+          if (*t < 0 || !std::isfinite(*t)) r.error(e.value, "'t' must be a time of at least 0 seconds");
+          ev.t = *t;
+          has_t = true;
+        }
+      } else if (e.key == "key") {
+        ++kinds;
+        ev.kind = sensors::InputEvent::Kind::Key;
+        if (auto k = r.string(e.value, "key")) ev.key = *k;
+      } else if (e.key == "down") {
+        bool b = true;
+        if (e.value.IsScalar() && YAML::convert<bool>::decode(e.value, b)) ev.down = b;
+        else r.error(e.value, "'down' expects true or false, got " + detail::describe(e.value));
+      } else if (e.key == "click") {
+        ++kinds;
+        ev.kind = sensors::InputEvent::Kind::Click;
+        if (!r.expectMap(e.value, "click")) continue;
+        std::optional<core::Vec3> from, to;
+        for (const auto& c : r.entries(e.value, "click", {"from", "to"})) {
+          (c.key == "from" ? from : to) = vec3(c.value, c.key == "from" ? "from" : "to");
+        }
+        if (!from || !to) {
+          r.error(e.loc, "a click needs 'from' and 'to' points");
+          continue;
+        }
+        ev.ray = {*from, (*to - *from).normalized()};
+      } else if (e.key == "viewpoint") {
+        ++kinds;
+        ev.kind = sensors::InputEvent::Kind::Viewpoint;
+        if (auto p = vec3(e.value, "viewpoint")) ev.position = *p;
+      }
+    }
+    if (!has_t) r.error(ev.loc, "an input event needs its time 't'");
+    if (kinds != 1) r.error(ev.loc, "an input event is one of: key, click, viewpoint");
+    events.push_back(std::move(ev));
+  }
+  if (r.failed()) return std::nullopt;
+  std::stable_sort(events.begin(), events.end(), [](const auto& a, const auto& b) { return a.t < b.t; });
+  return events;
+}
+
 std::optional<std::string> resolveModelPath(const std::string& arg, Diagnostics& diags) {
   namespace fs = std::filesystem;
   std::error_code ec;

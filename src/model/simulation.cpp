@@ -396,8 +396,8 @@ RunOutcome Simulation::run(const RunLimits& limits, const ProgressFn& progress,
       outcome = *halt;
       break;
     }
-    // a dead net ends the run unless the plant is still moving
-    if (kernel_->dead() && (!physics_ || physics_->awakeCount() == 0)) {
+    // a dead net ends the run unless the plant is still moving or a sensor may yet change
+    if (kernel_->dead() && (!physics_ || physics_->awakeCount() == 0) && (!hub_ || !hub_->mayChange())) {
       outcome.reason = StopReason::Dead;
       break;
     }

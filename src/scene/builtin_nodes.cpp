@@ -154,6 +154,9 @@ void registerBuiltinNodes(TypeRegistry& r) {
   r.add(type("GradientSensor", Category::Sensor, false,
              "the gradient field's vector where its parent body is (bilinear)",
              {f("field", K::String, std::string(), "", "the GradientField's path (empty: the scene's first one)")}));
+  r.add(type("KeyboardSensor", Category::Sensor, false,
+             "key presses, while the viewpoint is inside its parent's bounding box", {}));
+  r.add(type("MouseSensor", Category::Sensor, false, "clicks (ray picks) on its parent's subtree", {}));
   r.add(type("TimeSensor", Category::Sensor, false, "ticks at a period",
              {f("period", K::Float, 1.0, "s", "time between ticks", 1e-9, kInf),
               f("offset", K::Float, 0.0, "s", "time of the first tick", 0, kInf)}));

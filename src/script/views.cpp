@@ -389,6 +389,12 @@ void registerViews() {
                                return py::make_tuple(u.x, u.y, u.z);
                              },
                              "a GradientSensor's vector where its body is (world frame)")
+      .def_property_readonly("keys", [](const SensorView& v) { return v.r.get().reading(v.sensor).keys; },
+                             "a KeyboardSensor's keys held down now")
+      .def_property_readonly("key", [](const SensorView& v) { return v.r.get().reading(v.sensor).key; },
+                             "a KeyboardSensor's latest key")
+      .def_property_readonly("down", [](const SensorView& v) { return v.r.get().reading(v.sensor).down; },
+                             "whether the latest key event pressed its key")
       .def_property_readonly("active", [](const SensorView& v) { return v.r.get().reading(v.sensor).active; },
                              "something inside, something seen, or a tick now")
       .def_property_readonly("hit",

@@ -85,6 +85,11 @@ Hub::Entry* Hub::find(scene::NodeHandle h) {
   return nullptr;
 }
 
+bool Hub::mayChange() const {
+  if (next_input_ < input_.size()) return true;
+  return std::any_of(entries_.begin(), entries_.end(), [](const Entry& e) { return e.node->type().name == "TimeSensor"; });
+}
+
 bool Hub::isSensor(scene::NodeHandle node) const {
   return std::any_of(entries_.begin(), entries_.end(), [&](const Entry& e) { return e.node->handle() == node; });
 }
@@ -99,6 +104,18 @@ const Reading& Hub::reading(scene::NodeHandle sensor) const {
 
 const std::vector<Change>& Hub::update(double now) {
   changes_.clear();
+  // the input due now: viewpoint moves, key events, clicks
+  std::vector<const InputEvent*> due;
+  while (next_input_ < input_.size() && input_[next_input_].t <= now + 1e-9) due.push_back(&input_[next_input_++]);
+  for (const auto* ev : due) {
+    if (ev->kind == InputEvent::Kind::Viewpoint) viewpoint_ = ev->position;
+  }
+  if (!viewpoint_) {
+    // the viewer starts at the scene's first camera
+    scene::traverse(scene_.root(), [&](scene::Node& n, const scene::TraversalState& st) {
+      if (!viewpoint_ && n.type().name == "Camera") viewpoint_ = st.pose.apply(n.vec3("position"));
+    });
+  }
   if (world_) world_->sense(felt_);
   index_.clear();
   for (std::size_t i = 0; i < felt_.size(); ++i) index_[felt_[i].first] = i;
@@ -109,7 +126,42 @@ const std::vector<Change>& Hub::update(double now) {
   for (auto& e : entries_) {
     Reading next = e.reading;
     const auto& type = e.node->type().name;
-    if (type == "GradientSensor") {
+    if (type == "KeyboardSensor") {
+      // it hears keys while the viewer is inside its parent's box
+      const scene::Node* parent = e.node->parent();
+      const core::Aabb box = parent ? scene::boundingBox(*parent) : core::Aabb{};
+      const auto& v = viewpoint_ ? *viewpoint_ : core::Vec3{};
+      next.active = viewpoint_ && !box.empty() && v.x >= box.lo.x && v.x <= box.hi.x && v.y >= box.lo.y &&
+                    v.y <= box.hi.y && v.z >= box.lo.z && v.z <= box.hi.z;
+      bool heard = false;
+      for (const auto* ev : due) {
+        if (ev->kind != InputEvent::Kind::Key || !next.active) continue;
+        heard = true;
+        next.key = ev->key;
+        next.down = ev->down;
+        auto it = std::find(next.keys.begin(), next.keys.end(), ev->key);
+        if (ev->down && it == next.keys.end()) next.keys.push_back(ev->key);
+        if (!ev->down && it != next.keys.end()) next.keys.erase(it);
+        next.value += 1;
+      }
+      if (!heard && next.active == e.reading.active) continue;
+    } else if (type == "MouseSensor") {
+      // a click counts when its ray's first hit lies in the parent's subtree
+      bool clicked = false;
+      for (const auto* ev : due) {
+        if (ev->kind != InputEvent::Kind::Click) continue;
+        const scene::Pick hit = scene::pick(scene_.root(), ev->ray);
+        for (const scene::Node* n = hit.shape; n && !clicked; n = n->parent()) {
+          if (n == e.node->parent()) {
+            clicked = true;
+            next.hit = hit.shape->handle();
+            next.value += 1;
+          }
+        }
+      }
+      next.active = clicked;
+      if (!clicked && !e.reading.active) continue;
+    } else if (type == "GradientSensor") {
       const scene::Node* body = bodyAbove(*e.node);
       const scene::Node* field = fieldOf(scene_, *e.node);
       if (!body || !field) continue;
@@ -145,6 +197,7 @@ const std::vector<Change>& Hub::update(double now) {
               [&](auto a, auto b) { return pathOf(a) < pathOf(b); });
     const bool changed = !change.entered.empty() || !change.exited.empty() || next.value != e.reading.value ||
                          next.hit != e.reading.hit || !(next.vector == e.reading.vector) ||
+                         (next.active != e.reading.active && type != "TimeSensor") ||
                          (type == "TimeSensor" && next.active);
     e.reading = std::move(next);
     if (changed) changes_.push_back(std::move(change));

@@ -11,6 +11,7 @@ TEST(Text, EditDistance) {
   EXPECT_EQ(editDistance("capacity", "capacty"), 1u);
   EXPECT_EQ(editDistance("", "abc"), 3u);
   EXPECT_EQ(editDistance("kitten", "sitting"), 3u);
+  EXPECT_EQ(editDistance("kye", "key"), 1u);  // a swap of neighbours is one slip
 }
 
 TEST(Text, DidYouMeanOnlyForCloseWords) {

@@ -206,3 +206,43 @@ TEST(CliScripts, CheckReportsScriptSyntaxErrors) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CliInput, KeyboardAndMouseSensorsGetTheScriptedInput) {
+  const auto trace = temp("gdpn_console.jsonl");
+  const auto r = gdpn("run tests/data/input/console.gdpn.yaml -q --input tests/data/input/console.input.yaml --trace " +
+                      trace);
+  ASSERT_EQ(r.code, 0) << r.out;
+  std::stringstream t;
+  t << std::ifstream(trace).rdbuf();
+  std::vector<std::string> logs;
+  std::istringstream lines(t.str());
+  std::string line;
+  while (std::getline(lines, line)) {
+    const auto at = line.find("\"ev\":\"log\",\"text\":\"");
+    if (at != std::string::npos) logs.push_back(line.substr(at + 19, line.size() - at - 21));
+  }
+  EXPECT_EQ(logs, (std::vector<std::string>{
+                      "key  False [] 1.0",              // the viewer entered the booth: it listens
+                      "key g True ['g'] 2.0", "go 2.0",  // g pressed: the condition lets go start
+                      "key g False [] 2.5",
+                      "click True panel/#0/button 3.0", "click False panel/#0/button 3.1"}))
+      << t.str();
+  fs::remove(trace);
+}
+
+TEST(CliInput, MistakesInTheInputFileAreLocated) {
+  const auto bad = temp("gdpn_bad.input.yaml");
+  std::ofstream(bad) << "- {t: 1, key: a}\n- {t: -2, kye: b}\n- {click: {from: [0, 0]}}\n";
+  const auto r = gdpn("run tests/data/input/console.gdpn.yaml -q --input " + bad);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find(bad + ":2:7: error: 't' must be a time of at least 0 seconds"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(bad + ":2:11: error: unknown key 'kye' in an input event (did you mean 'key'?)"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find(bad + ":3:18: error: 'from' expects [x, y, z]"), std::string::npos) << r.out;
+  fs::remove(bad);
+}
+
+}  // namespace

@@ -13,6 +13,7 @@
 #include "gdpn/core/diagnostics.h"
 #include "gdpn/net/spec.h"
 #include "gdpn/scene/node.h"
+#include "gdpn/sensors/hub.h"
 
 namespace gdpn::model {
 
@@ -69,6 +70,11 @@ std::string writeModel(const Model& model);
 /// Writes `model` to `path` safely: a temporary file beside it, then a rename, so the old
 /// file survives any failure. Returns false (with a diagnostic) when it could not.
 bool saveModel(const Model& model, const std::string& path, core::Diagnostics& diags);
+
+/// Reads an input file for a headless run (`gdpn run --input`): a list of events
+/// `{t: seconds, key: name, down: true}`, `{t: .., click: {from: [x,y,z], to: [x,y,z]}}` or
+/// `{t: .., viewpoint: [x,y,z]}`, returned in time order. Mistakes are located in `diags`.
+std::optional<std::vector<sensors::InputEvent>> loadInput(const std::string& path, core::Diagnostics& diags);
 
 /// Resolves a command-line MODEL argument: a model file, or a folder holding exactly one.
 std::optional<std::string> resolveModelPath(const std::string& arg, core::Diagnostics& diags);

@@ -60,6 +60,10 @@ class Simulation {
                                             std::optional<std::uint64_t> seed = {}, double script_timeout_s = 0.0);
   ~Simulation();
 
+  /// Input events (keys, clicks, viewpoint moves) the sensors receive when their time comes.
+  void setInput(std::vector<sensors::InputEvent> events) {
+    if (hub_) hub_->setInput(std::move(events));
+  }
   /// Writes the trace (JSON Lines) to `out` from now on; call before start().
   void traceTo(std::ostream& out);
   /// Runs the firing phase at time 0. run() calls it when needed.

@@ -4,6 +4,8 @@
 /// step: items that entered or left a Region, a RangeFinder's new distance, a TimeSensor's
 /// tick. Regions and range finders are felt through the physics.
 
+#include <optional>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -19,8 +21,22 @@ struct Reading {
   double value = 0;                      ///< RangeFinder: distance, m; TimeSensor: ticks so far
   scene::NodeHandle hit = 0;             ///< RangeFinder: what it sees (0: nothing)
   core::Vec3 vector;                     ///< GradientSensor: the field's vector where its body is
+  std::vector<std::string> keys;         ///< KeyboardSensor: the keys held down now
+  std::string key;                       ///< KeyboardSensor: the key of the latest event
+  bool down = false;                     ///< KeyboardSensor: whether that event pressed it
   /// Region: something is inside; RangeFinder: it sees something; TimeSensor: it ticked now.
   bool active = false;
+};
+
+/// An input event of a headless run (from `gdpn run --input`; later from the IDE).
+struct InputEvent {
+  double t = 0;               ///< when, seconds
+  enum class Kind : std::uint8_t { Key, Click, Viewpoint } kind = Kind::Key;
+  std::string key;            ///< Key: which
+  bool down = true;           ///< Key: pressed or released
+  core::Ray ray;              ///< Click: the pick ray (world frame)
+  core::Vec3 position;        ///< Viewpoint: where the viewer now is (m)
+  core::SourceLoc loc;        ///< where it was written
 };
 
 /// What changed for one sensor in a step. Entered before exited, each in path order.
@@ -39,11 +55,16 @@ class Hub {
   /// Reports sensors that cannot work, at their location: a GradientSensor with no Body
   /// above it, or with no GradientField to read. False when there was one.
   static bool check(const scene::Scene& scene, core::Diagnostics& diags);
-  /// Phase 2: reads every sensor at time `now` (seconds); returns the sensors whose reading
-  /// changed, in the order of their paths.
+  /// Input events to deliver when their time comes (in time order).
+  void setInput(std::vector<InputEvent> events) { input_ = std::move(events); next_input_ = 0; }
+  /// Phase 2: reads every sensor at time `now` (seconds), delivering the input events due;
+  /// returns the sensors whose reading changed, in the order of their paths.
   const std::vector<Change>& update(double now);
   /// The current reading of sensor node `sensor` (an empty reading for others).
   [[nodiscard]] const Reading& reading(scene::NodeHandle sensor) const;
+  /// True when a reading may still change without anything moving: input events are
+  /// pending, or a TimeSensor will tick.
+  [[nodiscard]] bool mayChange() const;
   /// True when `node` is a sensor this hub reads.
   [[nodiscard]] bool isSensor(scene::NodeHandle node) const;
 
@@ -59,6 +80,9 @@ class Hub {
   std::vector<std::pair<scene::NodeHandle, physics::World::Feel>> felt_;
   std::unordered_map<scene::NodeHandle, std::size_t> index_;  // sensor -> its entry in felt_
   std::vector<Change> changes_;
+  std::vector<InputEvent> input_;
+  std::size_t next_input_ = 0;
+  std::optional<core::Vec3> viewpoint_;
 };
 
 }  // namespace gdpn::sensors
