@@ -19,6 +19,7 @@
 #include <unordered_map>
 
 #include "gdpn/core/text.h"
+#include "gdpn/scene/actions.h"
 #include "script/views.h"
 
 namespace py = pybind11;
@@ -446,6 +447,15 @@ std::unique_ptr<Engine> Engine::create(const net::Net& net, net::Kernel& kernel,
   impl->globals["__name__"] = "gdpn_model";
   impl->sim = detail::makeSimView(detail::refTo(*impl));
   impl->globals["sim"] = impl->sim;
+  // every named sensor of the plant is a variable of its name ("token in gate.items")
+  if (impl->callbacks.plant) {
+    scene::traverse(impl->callbacks.plant->root(), [&](scene::Node& n, const scene::TraversalState&) {
+      if (n.type().category == scene::Category::Sensor && core::isIdentifier(n.name()) &&
+          !impl->globals.contains(n.name().c_str())) {
+        impl->globals[py::str(n.name())] = detail::makeSensorView(detail::refTo(*impl), n.handle());
+      }
+    });
+  }
 
   // name each script by its first user ("pre_fire of transition 'main/T'"); guards and
   // predicates are expressions, the rest statements

@@ -185,3 +185,38 @@ TEST(SortingDevice, EveryOneOfFiftyBallsEndsInItsBin) {
 
 }  // namespace
 }  // namespace gdpn::model
+
+namespace gdpn::model {
+namespace {
+
+TEST(SensorNet, APredicateReadsASensorByName) {
+  // boxes queue on a place; the take transition only takes one that the region 'dock' holds
+  core::Diagnostics diags;
+  auto sim = open(R"Y(gdpn: 1
+settings: {dt: 0.01, until: 1}
+scene:
+  - World: {gravity: [0, 0, 0]}
+  - Region: {name: dock, size: [1, 1, 1]}
+  - Transform: {name: far, translation: [5, 0, 0], children: [{Body: {name: a, mass: 1, children: [{Cube: {size: [0.1, 0.1, 0.1]}}]}}]}
+  - Transform: {name: near, children: [{Body: {name: b, mass: 1, children: [{Cube: {size: [0.1, 0.1, 0.1]}}]}}]}
+pages:
+  main:
+    places:
+      queue: {tokens: {d0: [far/a, near/b]}}
+      taken: {}
+    transitions:
+      take:
+        pre_fire: 'sim.log("took", self.d0[0].name)'
+    arcs:
+      - {from: queue, to: take, weight: {d0: 1}, predicate: 'token in dock'}
+      - {from: take, to: taken, weight: {d0: 1}}
+)Y", diags);
+  ASSERT_TRUE(sim) << diags.str();
+  std::ostringstream trace;
+  sim->traceTo(trace);
+  sim->run({});
+  EXPECT_EQ(logs(trace.str()), (std::vector<std::string>{"took near/b"})) << trace.str();
+}
+
+}  // namespace
+}  // namespace gdpn::model

@@ -11,6 +11,7 @@
 
 #include "gdpn/core/text.h"
 #include "gdpn/model/simulation.h"
+#include "gdpn/scene/terrain.h"
 
 namespace gdpn::model {
 namespace {
@@ -100,6 +101,33 @@ pages:
   EXPECT_NEAR(p.y, 6.0, 1.0);
   EXPECT_LT(p.z, 1.0);  // it drove on the ground, not above it
   fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace gdpn::model
+
+namespace gdpn::model {
+namespace {
+
+TEST(Terrain, AGreyscalePngServesAsElevation) {
+  // a 4 x 3 greyscale PNG made through GDAL's MEM and PNG drivers
+  const std::string path = (fs::temp_directory_path() / ("gdpn_grey_" + std::to_string(::getpid()) + ".png")).string();
+  GDALAllRegister();
+  GDALDatasetH mem = GDALCreate(GDALGetDriverByName("MEM"), "", 4, 3, 1, GDT_Byte, nullptr);
+  std::vector<unsigned char> px = {0, 10, 20, 30, 40, 50, 60, 70, 80, 90, 100, 255};
+  ASSERT_EQ(GDALRasterIO(GDALGetRasterBand(mem, 1), GF_Write, 0, 0, 4, 3, px.data(), 4, 3, GDT_Byte, 0, 0), CE_None);
+  GDALDatasetH png = GDALCreateCopy(GDALGetDriverByName("PNG"), path.c_str(), mem, 0, nullptr, nullptr, nullptr);
+  ASSERT_NE(png, nullptr);
+  GDALClose(png);
+  GDALClose(mem);
+  std::string why;
+  const auto grid = scene::loadHeightGrid(path, why);
+  ASSERT_TRUE(grid) << why;
+  EXPECT_EQ(grid->nx, 4);
+  EXPECT_EQ(grid->ny, 3);
+  EXPECT_EQ(grid->height.front(), 0.0);
+  EXPECT_EQ(grid->height.back(), 255.0);
+  fs::remove(path);
 }
 
 }  // namespace
