@@ -8,6 +8,7 @@
 #include "gdpn/core/text.h"
 #include "gdpn/model/report.h"
 #include "gdpn/model/simulation.h"
+#include "support/sim_helpers.h"
 
 namespace gdpn::model {
 namespace {
@@ -329,11 +330,8 @@ namespace gdpn::model {
 namespace {
 
 TEST(PlantExample, TheFeederFillsTheBeltAndTheArmKeepsItsCycle) {
-  core::Diagnostics diags;
-  auto m = loadModel(std::string(GDPN_SOURCE_DIR) + "/examples/plant/feeder/feeder.gdpn.yaml", diags);
-  ASSERT_TRUE(m) << diags.str();
-  auto sim = Simulation::create(*m, diags);
-  ASSERT_TRUE(sim) << diags.str();
+  auto sim = testing::openModelFile("examples/plant/feeder/feeder.gdpn.yaml");
+  ASSERT_TRUE(sim);
   const auto outcome = sim->run({});
   ASSERT_EQ(outcome.reason, StopReason::Until) << outcome.message;
   // ten boxes spawned; the belt carried the first to its end, where it fell off

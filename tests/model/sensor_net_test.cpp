@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "gdpn/model/simulation.h"
+#include "support/sim_helpers.h"
 #include "gdpn/net/compile.h"
 
 namespace gdpn::model {
@@ -15,16 +16,8 @@ std::unique_ptr<Simulation> open(const std::string& text, core::Diagnostics& dia
   return m ? Simulation::create(*m, diags) : nullptr;
 }
 
-std::vector<std::string> logs(const std::string& trace) {
-  std::vector<std::string> out;
-  std::istringstream lines(trace);
-  std::string line;
-  while (std::getline(lines, line)) {
-    const auto at = line.find("\"ev\":\"log\",\"text\":\"");
-    if (at != std::string::npos) out.push_back(line.substr(at + 19, line.size() - at - 21));
-  }
-  return out;
-}
+using testing::logLines;
+auto logs = [](const std::string& trace) { return logLines(trace); };
 
 TEST(SensorNet, ABallThroughARegionEntersOnceAndExitsOnce) {
   core::Diagnostics diags;
@@ -154,11 +147,8 @@ namespace gdpn::model {
 namespace {
 
 TEST(SortingDevice, EveryOneOfFiftyBallsEndsInItsBin) {
-  core::Diagnostics diags;
-  auto m = loadModel(std::string(GDPN_SOURCE_DIR) + "/examples/sorting/sorting.gdpn.yaml", diags);
-  ASSERT_TRUE(m) << diags.str();
-  auto sim = Simulation::create(*m, diags);
-  ASSERT_TRUE(sim) << diags.str();
+  auto sim = testing::openModelFile("examples/sorting/sorting.gdpn.yaml");
+  ASSERT_TRUE(sim);
   const auto outcome = sim->run({});
   ASSERT_NE(outcome.reason, StopReason::ScriptError) << outcome.message;
   const auto* falling = sim->plant()->find("falling");
