@@ -1,0 +1,23 @@
+#pragma once
+/// \file
+/// PNML place/transition nets (the 2009 `ptnet` grammar) in and out.
+
+#include <optional>
+#include <string>
+
+#include "gdpn/core/diagnostics.h"
+#include "gdpn/net/spec.h"
+
+namespace gdpn::net {
+
+/// Reads the PNML text `text` (named `file` in messages) into a NetSpec with one page, "net":
+/// places with their initial markings, transitions, arcs with weights (inhibitor and test arcs
+/// as tools write them: `type="inhibitor"` or `<type value="inhibitor"/>`), names and
+/// graphics positions; nested pages are flattened; `<toolspecific>` is ignored. Mistakes
+/// (malformed XML, missing ids, arcs to unknown nodes, coloured nets) are located.
+std::optional<NetSpec> parsePnml(const std::string& text, const std::string& file, core::Diagnostics& diags);
+
+/// Reads the PNML file at `path`.
+std::optional<NetSpec> loadPnml(const std::string& path, core::Diagnostics& diags);
+
+}  // namespace gdpn::net

@@ -1,0 +1,208 @@
+#include "gdpn/net/pnml.h"
+
+#include <cctype>
+#include <fstream>
+#include <sstream>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "gdpn/core/text.h"
+#include "net/detail/xml.h"
+
+namespace gdpn::net {
+namespace {
+
+using detail::XmlElement;
+
+/// The text of <name><text>..</text></name> (or of any such pair), trimmed.
+std::string textOf(const XmlElement* el) {
+  if (!el) return {};
+  const XmlElement* t = el->child("text");
+  std::string s = t ? t->text : el->text;
+  const auto b = s.find_first_not_of(" \t\r\n"), e = s.find_last_not_of(" \t\r\n");
+  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+
+class PnmlReader {
+ public:
+  PnmlReader(const std::string& file, core::Diagnostics& diags) : file_(file), diags_(diags) {}
+
+  std::optional<NetSpec> read(const XmlElement& root) {
+    if (root.name != "pnml") {
+      diags_.error(root.loc, "a PNML file starts with <pnml>, this one with <" + root.name + ">");
+      return std::nullopt;
+    }
+    const XmlElement* net = root.child("net");
+    if (!net) {
+      diags_.error(root.loc, "the PNML file holds no <net>");
+      return std::nullopt;
+    }
+    const std::string* type = net->attr("type");
+    if (type && type->find("ptnet") == std::string::npos) {
+      diags_.error(net->loc, "only place/transition nets (ptnet) are supported; this net is '" + *type + "'" +
+                                 (type->find("symmetricnet") != std::string::npos ? " (a coloured net)" : ""));
+      return std::nullopt;
+    }
+    page_.name = "net";
+    page_.loc = net->loc;
+    collect(*net);
+    for (const auto* arc : arcs_) readArc(*arc);
+    if (diags_.hasErrors()) return std::nullopt;
+    NetSpec spec;
+    spec.pages.push_back(std::move(page_));
+    return spec;
+  }
+
+ private:
+  /// A name for PNML id `id`: the id itself when it is an identifier, else a cleaned copy.
+  std::string nameFor(const std::string& id) {
+    std::string n = core::isIdentifier(id) ? id : std::string();
+    if (n.empty()) {
+      for (char c : id) n += (std::isalnum(static_cast<unsigned char>(c)) || c == '_') ? c : '_';
+      if (n.empty() || std::isdigit(static_cast<unsigned char>(n[0]))) n = "n" + n;
+      while (used_.count(n)) n += "_";
+    }
+    used_.insert(n);
+    return n;
+  }
+
+  std::optional<std::string> idOf(const XmlElement& el) {
+    const std::string* id = el.attr("id");
+    if (!id || id->empty()) {
+      diags_.error(el.loc, "<" + el.name + "> has no id");
+      return std::nullopt;
+    }
+    if (ids_.count(*id)) {
+      diags_.error(el.loc, "id '" + *id + "' is used twice");
+      return std::nullopt;
+    }
+    return *id;
+  }
+
+  std::optional<EditorPos> position(const XmlElement& el) {
+    const XmlElement* g = el.child("graphics");
+    const XmlElement* p = g ? g->child("position") : nullptr;
+    if (!p || !p->attr("x") || !p->attr("y")) return std::nullopt;
+    try {
+      return EditorPos{std::stod(*p->attr("x")), std::stod(*p->attr("y"))};
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+  }
+
+  std::optional<std::int64_t> count(const XmlElement& el, const char* what) {
+    const std::string t = textOf(&el);
+    std::int64_t v = 0;
+    bool ok = !t.empty() && t.size() < 19;
+    for (char c : t) ok = ok && c >= '0' && c <= '9';
+    if (ok) v = std::stoll(t);
+    if (!ok) {
+      diags_.error(el.loc, std::string(what) + " expects a whole number of tokens, got \"" + t + "\"");
+      return std::nullopt;
+    }
+    return v;
+  }
+
+  void collect(const XmlElement& el) {
+    for (const auto& c : el.children) {
+      if (c->name == "page") {
+        collect(*c);
+      } else if (c->name == "place") {
+        auto id = idOf(*c);
+        if (!id) continue;
+        PlaceSpec p;
+        p.name = nameFor(*id);
+        p.loc = c->loc;
+        const std::string label = textOf(c->child("name"));
+        if (!label.empty() && label != p.name) p.description = label;
+        if (p.name != *id) p.description = "PNML id " + *id;
+        if (const XmlElement* m = c->child("initialMarking")) {
+          if (auto n = count(*m, "an initial marking"); n && *n > 0) p.tokens.push_back({kDefaultSlot, *n, m->loc});
+        }
+        p.position = position(*c);
+        ids_[*id] = {true, p.name};
+        page_.places.push_back(std::move(p));
+      } else if (c->name == "transition") {
+        auto id = idOf(*c);
+        if (!id) continue;
+        TransitionSpec t;
+        t.name = nameFor(*id);
+        t.loc = c->loc;
+        t.duration.loc = c->loc;
+        t.probability_loc = c->loc;
+        if (t.name != *id) t.description = "PNML id " + *id;
+        t.position = position(*c);
+        ids_[*id] = {false, t.name};
+        page_.transitions.push_back(std::move(t));
+      } else if (c->name == "arc") {
+        arcs_.push_back(c.get());
+      }
+    }
+  }
+
+  void readArc(const XmlElement& el) {
+    const std::string* src = el.attr("source");
+    const std::string* dst = el.attr("target");
+    if (!el.attr("id")) diags_.error(el.loc, "<arc> has no id");
+    if (!src || !dst) {
+      diags_.error(el.loc, "<arc> needs a source and a target");
+      return;
+    }
+    auto s = ids_.find(*src), t = ids_.find(*dst);
+    if (s == ids_.end()) diags_.error(el.loc, "arc source '" + *src + "' names no place or transition");
+    if (t == ids_.end()) diags_.error(el.loc, "arc target '" + *dst + "' names no place or transition");
+    if (s == ids_.end() || t == ids_.end()) return;
+    if (s->second.first == t->second.first) {
+      diags_.error(el.loc, "arc '" + *src + "' -> '" + *dst + "' joins two " +
+                               (s->second.first ? "places" : "transitions"));
+      return;
+    }
+    ArcSpec a;
+    a.from = s->second.second;
+    a.to = t->second.second;
+    a.loc = a.from_loc = a.to_loc = el.loc;
+    std::string kind = el.attr("type") ? *el.attr("type") : "";
+    if (const XmlElement* ty = el.child("type"); ty && ty->attr("value")) kind = *ty->attr("value");
+    if (kind == "inhibitor") a.kind = ArcKind::Inhibitor;
+    else if (kind == "test" || kind == "read") a.kind = ArcKind::Test;
+    if (const XmlElement* w = el.child("inscription")) {
+      if (auto n = count(*w, "an arc inscription")) {
+        if (*n != 1) a.weights.push_back({kDefaultSlot, *n, w->loc});
+      }
+    }
+    page_.arcs.push_back(std::move(a));
+  }
+
+  std::string file_;
+  core::Diagnostics& diags_;
+  PageSpec page_;
+  std::vector<const XmlElement*> arcs_;
+  std::unordered_map<std::string, std::pair<bool, std::string>> ids_;  // id -> (is place, name)
+  std::unordered_set<std::string> used_;
+};
+
+}  // namespace
+
+std::optional<NetSpec> parsePnml(const std::string& text, const std::string& file, core::Diagnostics& diags) {
+  if (const auto bad = core::firstInvalidUtf8(text); bad != std::string::npos) {
+    const auto [line, column] = core::lineColumn(text, bad);
+    diags.error({file, line, column}, "the file is not valid UTF-8 text here");
+    return std::nullopt;
+  }
+  auto root = detail::parseXml(text, file, diags);
+  if (!root) return std::nullopt;
+  return PnmlReader(file, diags).read(*root);
+}
+
+std::optional<NetSpec> loadPnml(const std::string& path, core::Diagnostics& diags) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    diags.error({path, 0, 0}, "cannot read the file");
+    return std::nullopt;
+  }
+  std::stringstream text;
+  text << in.rdbuf();
+  return parsePnml(text.str(), path, diags);
+}
+
+}  // namespace gdpn::net
