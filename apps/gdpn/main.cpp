@@ -14,7 +14,11 @@
 #include "gdpn/model/model.h"
 #include "gdpn/model/report.h"
 #include "gdpn/model/simulation.h"
+#include <nlohmann/json.hpp>
+
+#include "gdpn/net/analysis.h"
 #include "gdpn/net/compile.h"
+#include "gdpn/net/pnml.h"
 #include "gdpn/script/engine.h"
 
 namespace {
@@ -60,6 +64,72 @@ int check(const std::string& arg) {
   }
   std::cout << *path << ": ok (" << net->places().size() << " places, " << net->transitions().size()
             << " transitions, " << net->terms().size() << " arc terms)\n";
+  return 0;
+}
+
+int analyze(const std::string& arg, bool json, std::uint64_t max_states) {
+  Diagnostics diags;
+  std::optional<gdpn::net::NetSpec> spec;
+  std::string path = arg;
+  if (arg.ends_with(".pnml")) {
+    spec = gdpn::net::loadPnml(arg, diags);
+  } else if (auto resolved = model::resolveModelPath(arg, diags)) {
+    path = *resolved;
+    if (auto m = model::loadModel(path, diags)) spec = std::move(m->net);
+  }
+  std::shared_ptr<const gdpn::net::Net> net;
+  if (spec) net = gdpn::net::compile(*spec, diags);
+  diags.print(std::cerr);
+  if (!net) return 1;
+  const auto s = gdpn::net::explore(*net, {max_states});
+  const auto& tr = net->transitions();
+  auto yes = [](bool b) { return b ? "yes" : "no"; };
+  if (json) {
+    nlohmann::ordered_json j;
+    j["net"] = path;
+    j["complete"] = s.complete;
+    j["states"] = s.states;
+    j["edges"] = s.edges;
+    j["deadlock"] = s.deadlock;
+    j["deadlock_path"] = nlohmann::ordered_json::array();
+    for (auto t : s.deadlock_path) j["deadlock_path"].push_back(tr[t].name);
+    j["max_tokens_place"] = s.max_place;
+    j["max_tokens_marking"] = s.max_marking;
+    j["one_safe"] = s.one_safe;
+    j["quasi_live"] = s.quasi_live;
+    j["live"] = s.live;
+    j["reversible"] = s.reversible;
+    j["dead_transitions"] = nlohmann::ordered_json::array();
+    for (std::size_t t = 0; t < tr.size(); ++t) {
+      if (!s.fired[t]) j["dead_transitions"].push_back(tr[t].name);
+    }
+    j["constant_places"] = nlohmann::ordered_json::array();
+    for (auto p : s.constant_places) j["constant_places"].push_back(net->places()[p].name);
+    j["bounds"] = nlohmann::ordered_json::object();
+    for (std::size_t p = 0; p < net->places().size(); ++p) j["bounds"][net->places()[p].name] = s.place_bound[p];
+    std::cout << j.dump(2) << "\n";
+    return 0;
+  }
+  std::cout << path << ": " << s.states << " states, " << s.edges << " edges"
+            << (s.complete ? "" : " (partial: --max-states reached)") << "\n";
+  std::cout << "  deadlock:        " << yes(s.deadlock);
+  if (s.deadlock) {
+    std::cout << " after";
+    for (auto t : s.deadlock_path) std::cout << ' ' << tr[t].name;
+    if (s.deadlock_path.empty()) std::cout << " nothing (the initial marking is dead)";
+  }
+  std::cout << "\n  bounds:          max " << s.max_place << " in one place, " << s.max_marking
+            << " in one marking; one-safe: " << yes(s.one_safe) << "\n";
+  std::cout << "  quasi-live:      " << yes(s.quasi_live);
+  if (!s.quasi_live) {
+    std::cout << " (dead:";
+    for (std::size_t t = 0; t < tr.size(); ++t) {
+      if (!s.fired[t]) std::cout << ' ' << tr[t].name;
+    }
+    std::cout << ")";
+  }
+  std::cout << "\n  live:            " << yes(s.live) << "\n  reversible:      " << yes(s.reversible)
+            << "\n  constant places: " << s.constant_places.size() << "\n";
   return 0;
 }
 
@@ -185,7 +255,18 @@ int main(int argc, char** argv) {
                       "input events for keyboard and mouse sensors: a YAML list of {t, key | click | viewpoint}");
   run_cmd->add_flag("--quiet,-q", run_args.quiet, "print no summary and no progress");
 
+  std::string analyze_model;
+  bool analyze_json = false;
+  std::uint64_t analyze_max = 20'000'000;
+  auto* analyze_cmd = app.add_subcommand("analyze", "Explore the untimed state space: deadlocks, bounds, liveness");
+  analyze_cmd->add_option("MODEL", analyze_model, "a .gdpn.yaml file (or a folder holding one), or a .pnml net")
+      ->required();
+  analyze_cmd->add_flag("--json", analyze_json, "print the results as JSON");
+  analyze_cmd->add_option("--max-states", analyze_max, "stop after this many states (the answer is then partial)")
+      ->check(CLI::PositiveNumber);
+
   CLI11_PARSE(app, argc, argv);
+  if (analyze_cmd->parsed()) return analyze(analyze_model, analyze_json, analyze_max);
   if (check_cmd->parsed()) return check(check_model);
   if (run_cmd->parsed()) return run(run_args);
   return 2;

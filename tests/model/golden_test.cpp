@@ -246,3 +246,22 @@ TEST(CliInput, MistakesInTheInputFileAreLocated) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CliAnalyze, APnmlNetAndAModelFile) {
+  auto r = gdpn("analyze ../shared/conformance/pnml/Philosophers-PT-000005.pnml");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("243 states, 945 edges"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("deadlock:        yes after"), std::string::npos) << r.out;
+  r = gdpn("analyze examples/basics/figure31 --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["states"], 3);
+  EXPECT_EQ(j["deadlock_path"], (nlohmann::json{"main/T1", "main/T2"}));
+  EXPECT_EQ(j["one_safe"], true);
+  r = gdpn("analyze ../shared/conformance/pnml/Referendum-PT-0010.pnml --max-states 100");
+  EXPECT_NE(r.out.find("(partial: --max-states reached)"), std::string::npos) << r.out;
+}
+
+}  // namespace
