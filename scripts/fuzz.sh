@@ -1,19 +1,29 @@
 #!/usr/bin/env bash
-# Runs the model-loader fuzzer for SECONDS (default 60), seeded with every example and every
-# good and bad test model. Fails on any crash, hang, leak or sanitizer report.
+# Runs each libFuzzer target for SECONDS (default 60): the model loader, seeded with every
+# example and test model, and the PNML reader, seeded with the test nets and the conformance
+# nets. Fails on any crash, hang, leak or sanitizer report.
 # Needs the fuzz build: cmake --preset fuzz && cmake --build --preset fuzz
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
-fuzzer=build/fuzz/fuzz/model_loader_fuzz
-work=build/fuzz/run
-rm -rf "$work" && mkdir -p "$work/corpus" "$work/seeds"
-find examples tests/data -name '*.gdpn.yaml' -exec cp {} "$work/seeds/" \;
-"$fuzzer" "$work/corpus" "$work/seeds" -max_total_time="$seconds" -max_len=4096 -timeout=10 \
-  -rss_limit_mb=2048 -artifact_prefix="$work/" -print_final_stats=1 2>"$work/log" || {
-  tail -n 60 "$work/log"
-  echo "fuzz: the model loader failed; the input is in $work/" >&2
-  exit 1
+
+fuzz() {  # fuzz NAME MAX_LEN SEED_DIRS...
+  local name=$1 max_len=$2
+  shift 2
+  local work=build/fuzz/run-$name
+  rm -rf "$work" && mkdir -p "$work/corpus" "$work/seeds"
+  for dir in "$@"; do
+    [ -d "$dir" ] && find "$dir" -maxdepth 1 -type f \( -name '*.gdpn.yaml' -o -name '*.pnml' \) -exec cp {} "$work/seeds/" \;
+  done
+  "build/fuzz/fuzz/$name" "$work/corpus" "$work/seeds" -max_total_time="$seconds" -max_len="$max_len" -timeout=10 \
+    -rss_limit_mb=2048 -artifact_prefix="$work/" -print_final_stats=1 2>"$work/log" || {
+    tail -n 60 "$work/log"
+    echo "fuzz: $name failed; the input is in $work/" >&2
+    exit 1
+  }
+  grep -E "^(Done|stat::number_of_executed_units)" "$work/log" || true
+  echo "fuzz: $name survived ${seconds} s"
 }
-grep -E "^(Done|stat::number_of_executed_units)" "$work/log" || true
-echo "fuzz: model loader survived ${seconds} s"
+
+fuzz model_loader_fuzz 4096 examples/basics/* examples/plant/* examples/sorting tests/data/good tests/data/bad
+fuzz pnml_reader_fuzz 65536 tests/data/pnml ../shared/conformance/pnml

@@ -3,7 +3,8 @@
 #   1. installs the Debian packages (scripts/install-deps.sh, skipped when present);
 #   2. release build with warnings as errors; unit and golden tests (CTest);
 #   3. debug build under AddressSanitizer + UBSan; the unit tests again;
-#   4. clang build of the libFuzzer targets; 60 s of fuzzing of the model loader.
+#   4. clang build of the libFuzzer targets; 60 s of fuzzing each of the model loader and the
+#      PNML reader.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)

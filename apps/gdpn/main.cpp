@@ -8,6 +8,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 
@@ -131,6 +132,33 @@ int analyze(const std::string& arg, bool json, std::uint64_t max_states) {
   std::cout << "\n  live:            " << yes(s.live) << "\n  reversible:      " << yes(s.reversible)
             << "\n  constant places: " << s.constant_places.size() << "\n";
   return 0;
+}
+
+int convert(const std::string& in, const std::string& out) {
+  Diagnostics diags;
+  if (in.ends_with(".pnml")) {
+    auto spec = gdpn::net::loadPnml(in, diags);
+    if (spec && !gdpn::net::compile(*spec, diags)) spec.reset();
+    if (spec) {
+      model::Model m;
+      m.net = std::move(*spec);
+      m.description = "converted from " + std::filesystem::path(in).filename().string();
+      model::saveModel(m, out, diags);
+    }
+  } else if (auto path = model::resolveModelPath(in, diags)) {
+    if (auto m = model::loadModel(*path, diags); m && gdpn::net::compile(m->net, diags)) {
+      std::string why;
+      auto text = gdpn::net::writePnml(m->net, why);
+      if (!text) {
+        diags.error({*path, 0, 0}, "cannot write PNML: " + why);
+      } else {
+        std::ofstream f(out, std::ios::binary | std::ios::trunc);
+        if (!f || !(f << *text)) diags.error({out, 0, 0}, "cannot write the file");
+      }
+    }
+  }
+  diags.print(std::cerr);
+  return diags.hasErrors() ? 1 : 0;
 }
 
 class ProgressBar {
@@ -265,7 +293,13 @@ int main(int argc, char** argv) {
   analyze_cmd->add_option("--max-states", analyze_max, "stop after this many states (the answer is then partial)")
       ->check(CLI::PositiveNumber);
 
+  std::string convert_in, convert_out;
+  auto* convert_cmd = app.add_subcommand("convert", "Convert a PNML net to a model file, or a model's P/T net to PNML");
+  convert_cmd->add_option("IN", convert_in, "a .pnml file, or a .gdpn.yaml model")->required();
+  convert_cmd->add_option("OUT", convert_out, "the .gdpn.yaml or .pnml to write")->required();
+
   CLI11_PARSE(app, argc, argv);
+  if (convert_cmd->parsed()) return convert(convert_in, convert_out);
   if (analyze_cmd->parsed()) return analyze(analyze_model, analyze_json, analyze_max);
   if (check_cmd->parsed()) return check(check_model);
   if (run_cmd->parsed()) return run(run_args);

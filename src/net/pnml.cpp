@@ -1,6 +1,7 @@
 #include "gdpn/net/pnml.h"
 
 #include <cctype>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <unordered_map>
@@ -84,7 +85,9 @@ class PnmlReader {
     const XmlElement* p = g ? g->child("position") : nullptr;
     if (!p || !p->attr("x") || !p->attr("y")) return std::nullopt;
     try {
-      return EditorPos{std::stod(*p->attr("x")), std::stod(*p->attr("y"))};
+      const EditorPos pos{std::stod(*p->attr("x")), std::stod(*p->attr("y"))};
+      if (!std::isfinite(pos[0]) || !std::isfinite(pos[1])) return std::nullopt;
+      return pos;
     } catch (const std::exception&) {
       return std::nullopt;
     }
@@ -130,6 +133,8 @@ class PnmlReader {
         t.loc = c->loc;
         t.duration.loc = c->loc;
         t.probability_loc = c->loc;
+        const std::string label = textOf(c->child("name"));
+        if (!label.empty() && label != t.name) t.description = label;
         if (t.name != *id) t.description = "PNML id " + *id;
         t.position = position(*c);
         ids_[*id] = {false, t.name};
@@ -192,6 +197,103 @@ std::optional<NetSpec> parsePnml(const std::string& text, const std::string& fil
   auto root = detail::parseXml(text, file, diags);
   if (!root) return std::nullopt;
   return PnmlReader(file, diags).read(*root);
+}
+
+namespace {
+
+std::string escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '&': out += "&amp;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+/// The PNML id of a construct: its original id when it came from PNML, else its name.
+std::string pnmlId(const std::string& name, const std::string& description) {
+  const std::string prefix = "PNML id ";
+  return description.rfind(prefix, 0) == 0 ? description.substr(prefix.size()) : name;
+}
+
+/// The name label to write: the description when it holds one, else the id.
+std::string label(const std::string& id, const std::string& description) {
+  return description.empty() || description.rfind("PNML id ", 0) == 0 ? id : description;
+}
+
+std::string positionXml(const std::optional<EditorPos>& p) {
+  if (!p) return {};
+  return "<graphics><position x=\"" + core::formatDouble((*p)[0]) + "\" y=\"" + core::formatDouble((*p)[1]) +
+         "\"/></graphics>";
+}
+
+}  // namespace
+
+std::optional<std::string> writePnml(const NetSpec& spec, std::string& why) {
+  if (spec.pages.size() != 1 || !spec.page_types.empty() || !spec.pages[0].instances.empty()) {
+    why = "PNML holds one flat place/transition net: this model has several pages or instances";
+    return std::nullopt;
+  }
+  const PageSpec& page = spec.pages[0];
+  std::unordered_map<std::string, std::string> id;  // name -> PNML id
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                    "<pnml xmlns=\"http://www.pnml.org/version-2009/grammar/pnml\">\n"
+                    "  <net id=\"" + escape(page.name) + "\" type=\"http://www.pnml.org/version-2009/grammar/ptnet\">\n"
+                    "    <page id=\"page0\">\n";
+  for (const auto& p : page.places) {
+    if (!p.nodes.empty() || !p.kinds.empty() || !p.sensors.empty() || !p.capacity.empty()) {
+      why = "place '" + p.name + "' uses node slots, sensors or a capacity, which a P/T net has not";
+      return std::nullopt;
+    }
+    std::int64_t tokens = 0;
+    for (const auto& t : p.tokens) {
+      if (t.slot != kDefaultSlot) {
+        why = "place '" + p.name + "' uses slot " + slotName(t.slot) + "; a P/T net has one (a0)";
+        return std::nullopt;
+      }
+      tokens += t.value;
+    }
+    id[p.name] = pnmlId(p.name, p.description);
+    out += "      <place id=\"" + escape(id[p.name]) + "\"><name><text>" + escape(label(id[p.name], p.description)) +
+           "</text></name>" +
+           positionXml(p.position);
+    if (tokens > 0) out += "<initialMarking><text>" + std::to_string(tokens) + "</text></initialMarking>";
+    out += "</place>\n";
+  }
+  for (const auto& t : page.transitions) {
+    id[t.name] = pnmlId(t.name, t.description);
+    out += "      <transition id=\"" + escape(id[t.name]) + "\"><name><text>" +
+           escape(label(id[t.name], t.description)) + "</text></name>" + positionXml(t.position) + "</transition>\n";
+  }
+  int n = 0;
+  for (const auto& a : page.arcs) {
+    std::int64_t w = 1;
+    for (const auto& x : a.weights) {
+      if (x.slot != kDefaultSlot) {
+        why = "an arc uses slot " + slotName(x.slot) + "; a P/T net has one (a0)";
+        return std::nullopt;
+      }
+      w = x.value;
+    }
+    if (!id.count(a.from) || !id.count(a.to)) {
+      why = "arc '" + a.from + "' -> '" + a.to + "' names a link or an unknown node";
+      return std::nullopt;
+    }
+    out += "      <arc id=\"arc" + std::to_string(n++) + "\" source=\"" + escape(id[a.from]) + "\" target=\"" +
+           escape(id[a.to]) + "\"";
+    if (a.kind == ArcKind::Inhibitor) out += " type=\"inhibitor\"";
+    if (a.kind == ArcKind::Test) out += " type=\"test\"";
+    out += ">";
+    if (w != 1) out += "<inscription><text>" + std::to_string(w) + "</text></inscription>";
+    out += "</arc>\n";
+  }
+  out += "    </page>\n  </net>\n</pnml>\n";
+  return out;
 }
 
 std::optional<NetSpec> loadPnml(const std::string& path, core::Diagnostics& diags) {

@@ -20,4 +20,9 @@ std::optional<NetSpec> parsePnml(const std::string& text, const std::string& fil
 /// Reads the PNML file at `path`.
 std::optional<NetSpec> loadPnml(const std::string& path, core::Diagnostics& diags);
 
+/// Writes `spec` as a PNML place/transition net. It must be one page without instances whose
+/// places and arcs use slot a0 only (a plain P/T net); otherwise nullopt and `why`. Names
+/// that came from PNML ids go back to those ids.
+std::optional<std::string> writePnml(const NetSpec& spec, std::string& why);
+
 }  // namespace gdpn::net
