@@ -1,0 +1,43 @@
+// Full state-space exploration of the two large conformance nets (Kanban-PT-00005,
+// SwimmingPool-PT-02): states per second and bytes per state. Record results in
+// docs/performance.md.
+
+#include <benchmark/benchmark.h>
+#include <sys/resource.h>
+
+#include <filesystem>
+
+#include "gdpn/net/analysis.h"
+#include "gdpn/net/compile.h"
+#include "gdpn/net/pnml.h"
+
+namespace {
+
+using namespace gdpn;
+
+void BM_Explore(benchmark::State& state, const char* model, std::uint64_t expected) {
+  const auto path = std::filesystem::path(GDPN_SOURCE_DIR) / ".." / "shared" / "conformance" / "pnml" /
+                    (std::string(model) + ".pnml");
+  core::Diagnostics diags;
+  auto spec = net::loadPnml(path.string(), diags);
+  if (!spec) {
+    state.SkipWithError(diags.str().c_str());
+    return;
+  }
+  auto n = net::compile(*spec, diags);
+  std::uint64_t states = 0;
+  for (auto _ : state) states = net::explore(*n).states;
+  if (states != expected) state.SkipWithError("wrong number of states");
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  state.counters["states"] = static_cast<double>(states);
+  state.counters["states_per_s"] =
+      benchmark::Counter(static_cast<double>(states) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["peak_bytes_per_state"] = static_cast<double>(usage.ru_maxrss) * 1024.0 / static_cast<double>(states);
+}
+BENCHMARK_CAPTURE(BM_Explore, Kanban_PT_00005, "Kanban-PT-00005", 2546432)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_Explore, SwimmingPool_PT_02, "SwimmingPool-PT-02", 3408031)->Iterations(1)->Unit(benchmark::kSecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
