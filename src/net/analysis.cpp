@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 
 namespace gdpn::net {
 namespace {
@@ -86,11 +87,17 @@ bool enabledIn(const Net& net, TransitionId t, const Count* m) {
   return true;
 }
 
-void fire(const Net& net, TransitionId t, Count* m) {
+/// Fires `t` in `m`; false when a count would leave the 32-bit range the search stores.
+bool fire(const Net& net, TransitionId t, Count* m) {
   for (const Term& term : net.termsOf(t)) {
     if (term.kind == TermKind::Input) m[term.place_slot] -= term.weight;
-    if (term.kind == TermKind::Output) m[term.place_slot] += term.weight;
+    if (term.kind == TermKind::Output) {
+      const std::int64_t v = std::int64_t{m[term.place_slot]} + term.weight;
+      if (v > std::numeric_limits<Count>::max()) return false;
+      m[term.place_slot] = static_cast<Count>(v);
+    }
   }
+  return true;
 }
 
 }  // namespace
@@ -101,7 +108,15 @@ StateSpace explore(const Net& net, const ExploreOptions& options) {
   const std::size_t transitions = net.transitions().size();
   MarkingSet set(width);
   std::vector<Count> m(width), next(width);
-  for (std::size_t ps = 0; ps < width; ++ps) m[ps] = static_cast<Count>(net.placeSlots()[ps].initial);
+  for (std::size_t ps = 0; ps < width; ++ps) {
+    // counts beyond 32 bits are more than any exploration can hold: answer "partial"
+    if (net.placeSlots()[ps].initial > std::numeric_limits<Count>::max()) {
+      out.complete = false;
+      out.live = out.reversible = false;
+      return out;
+    }
+    m[ps] = static_cast<Count>(net.placeSlots()[ps].initial);
+  }
   bool added = false;
   set.insert(m.data(), added);
   std::vector<std::uint32_t> parent{0};
@@ -132,7 +147,10 @@ StateSpace explore(const Net& net, const ExploreOptions& options) {
       any = true;
       out.fired[t] = true;
       next = m;
-      fire(net, t, next.data());
+      if (!fire(net, t, next.data())) {
+        out.complete = false;
+        break;
+      }
       const auto target = set.insert(next.data(), added);
       if (added) {
         parent.push_back(s);
@@ -143,7 +161,7 @@ StateSpace explore(const Net& net, const ExploreOptions& options) {
     }
     first.push_back(succ.size());
     if (!any && deadlock_state < 0) deadlock_state = s;
-    if (set.size() > options.max_states) {
+    if (!out.complete || set.size() > options.max_states) {
       out.complete = false;
       break;
     }

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "gdpn/net/builder.h"
 #include "gdpn/net/compile.h"
 #include "gdpn/net/pnml.h"
 
@@ -178,6 +179,25 @@ TEST(Pnml, WritingRefusesWhatAPTNetCannotHold) {
   std::string why;
   EXPECT_FALSE(writePnml(spec, why));
   EXPECT_NE(why.find("node slots"), std::string::npos) << why;
+}
+
+}  // namespace
+}  // namespace gdpn::net
+
+namespace gdpn::net {
+namespace {
+
+TEST(Analysis, CountsBeyondWhatTheSearchHoldsGiveAPartialAnswer) {
+  // a transition that doubles tokens grows without bound: the search stops, labelled partial
+  NetBuilder b;
+  const auto p = b.addPlace("P");
+  b.setSlot(p, kDefaultSlot, SlotKind::Control, kUnbounded, 2000000000);
+  const auto t = b.addTransition("grow");
+  b.addInput(p, t, kDefaultSlot, 1);
+  b.addOutput(t, p, kDefaultSlot, 1000000000);
+  const auto s = explore(*b.freeze());
+  EXPECT_FALSE(s.complete);
+  EXPECT_FALSE(s.live);
 }
 
 }  // namespace
