@@ -10,6 +10,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "gdpn/core/file.h"
 #include "gdpn/core/text.h"
 #include "gdpn/model/model.h"
 #include "model/scene_io.h"
@@ -549,13 +550,13 @@ std::optional<Model> parseModel(const std::string& text, const std::string& file
 }
 
 std::optional<Model> loadModel(const std::string& path, Diagnostics& diags) {
-  auto text = detail::readFile(path, diags);
+  auto text = core::readFile(path, diags);
   if (!text) return std::nullopt;
   return parseModel(*text, path, diags);
 }
 
 std::optional<std::vector<sensors::InputEvent>> loadInput(const std::string& path, Diagnostics& diags) {
-  auto text = detail::readFile(path, diags);
+  auto text = core::readFile(path, diags);
   if (!text) return std::nullopt;
   auto root = detail::parseYaml(*text, path, diags);
   if (!root) return std::nullopt;

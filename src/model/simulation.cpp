@@ -28,34 +28,45 @@ const char* stopReasonName(StopReason reason) {
 
 namespace {
 
-/// Where the node token `name` is written in the model (for messages); the place's location
-/// of a page type's token stands for all its instances.
-core::SourceLoc sensorLoc(const net::NetSpec& spec, const std::string& path) {
+/// The first location `where(place)` gives for a place of any page or page type, or none.
+template <class Where>
+core::SourceLoc findInPlaces(const net::NetSpec& spec, Where where) {
   for (const auto* pages : {&spec.pages, &spec.page_types}) {
     for (const auto& page : *pages) {
       for (const auto& place : page.places) {
-        for (const auto& b : place.sensors) {
-          if (path == b.path || path.ends_with("/" + b.path)) return b.loc;
-        }
+        if (auto loc = where(place)) return *loc;
       }
     }
   }
   return {};
 }
 
+/// True when a flat path names what `written` names (in a page type it is relative).
+bool names(const std::string& path, const std::string& written) {
+  return path == written || path.ends_with("/" + written);
+}
+
+/// Where the sensor slot reading `path` is bound, for messages.
+core::SourceLoc sensorLoc(const net::NetSpec& spec, const std::string& path) {
+  return findInPlaces(spec, [&](const net::PlaceSpec& p) -> std::optional<core::SourceLoc> {
+    for (const auto& b : p.sensors) {
+      if (names(path, b.path)) return b.loc;
+    }
+    return std::nullopt;
+  });
+}
+
+/// Where the node token `name` is written, for messages; a page type's token stands for all
+/// its instances.
 core::SourceLoc tokenLoc(const net::NetSpec& spec, const std::string& name) {
-  for (const auto* pages : {&spec.pages, &spec.page_types}) {
-    for (const auto& page : *pages) {
-      for (const auto& place : page.places) {
-        for (const auto& slot : place.nodes) {
-          for (const auto& n : slot.nodes) {
-            if (name == n || name.ends_with("/" + n)) return slot.loc;
-          }
-        }
+  return findInPlaces(spec, [&](const net::PlaceSpec& p) -> std::optional<core::SourceLoc> {
+    for (const auto& slot : p.nodes) {
+      for (const auto& n : slot.nodes) {
+        if (names(name, n)) return slot.loc;
       }
     }
-  }
-  return {};
+    return std::nullopt;
+  });
 }
 
 /// Copies the scene each instance's page type owns into `scene`, under a Transform named after

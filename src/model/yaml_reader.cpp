@@ -5,6 +5,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "gdpn/core/file.h"
 #include "gdpn/core/text.h"
 
 namespace gdpn::model::detail {
@@ -20,11 +21,7 @@ std::string describe(const YAML::Node& node) {
 
 std::optional<YAML::Node> parseYaml(const std::string& text, const std::string& file, core::Diagnostics& diags) {
   // YAML is UTF-8; other bytes would not survive a save
-  if (const auto bad = core::firstInvalidUtf8(text); bad != std::string::npos) {
-    const auto [line, column] = core::lineColumn(text, bad);
-    diags.error({file, line, column}, "the file is not valid UTF-8 text here");
-    return std::nullopt;
-  }
+  if (!core::checkUtf8(text, file, diags)) return std::nullopt;
   try {
     return YAML::Load(text);
   } catch (const YAML::Exception& e) {
@@ -33,26 +30,6 @@ std::optional<YAML::Node> parseYaml(const std::string& text, const std::string& 
     diags.error({file, line, column}, "YAML syntax: " + e.msg);
   }
   return std::nullopt;
-}
-
-std::optional<std::string> readFile(const std::string& path, core::Diagnostics& diags) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    diags.error({path, 0, 0}, "is a folder, not a model file");
-    return std::nullopt;
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    diags.error({path, 0, 0}, "cannot read the file");
-    return std::nullopt;
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) {
-    diags.error({path, 0, 0}, "cannot read the file");
-    return std::nullopt;
-  }
-  return text.str();
 }
 
 core::SourceLoc YamlReader::loc(const YAML::Node& node, const core::SourceLoc& fallback) const {

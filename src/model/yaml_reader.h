@@ -23,8 +23,6 @@ struct Entry {
 std::string describe(const YAML::Node& node);
 /// Parses YAML text; a syntax error becomes a located diagnostic and nullopt.
 std::optional<YAML::Node> parseYaml(const std::string& text, const std::string& file, core::Diagnostics& diags);
-/// Reads a whole file; an unreadable one becomes a diagnostic and nullopt.
-std::optional<std::string> readFile(const std::string& path, core::Diagnostics& diags);
 
 /// Reads typed values out of a parsed tree, reporting mistakes at their location.
 class YamlReader {

@@ -7,6 +7,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "gdpn/core/file.h"
 #include "gdpn/core/text.h"
 #include "net/detail/xml.h"
 
@@ -189,11 +190,7 @@ class PnmlReader {
 }  // namespace
 
 std::optional<NetSpec> parsePnml(const std::string& text, const std::string& file, core::Diagnostics& diags) {
-  if (const auto bad = core::firstInvalidUtf8(text); bad != std::string::npos) {
-    const auto [line, column] = core::lineColumn(text, bad);
-    diags.error({file, line, column}, "the file is not valid UTF-8 text here");
-    return std::nullopt;
-  }
+  if (!core::checkUtf8(text, file, diags)) return std::nullopt;
   auto root = detail::parseXml(text, file, diags);
   if (!root) return std::nullopt;
   return PnmlReader(file, diags).read(*root);
@@ -297,14 +294,8 @@ std::optional<std::string> writePnml(const NetSpec& spec, std::string& why) {
 }
 
 std::optional<NetSpec> loadPnml(const std::string& path, core::Diagnostics& diags) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    diags.error({path, 0, 0}, "cannot read the file");
-    return std::nullopt;
-  }
-  std::stringstream text;
-  text << in.rdbuf();
-  return parsePnml(text.str(), path, diags);
+  auto text = core::readFile(path, diags);
+  return text ? parsePnml(*text, path, diags) : std::nullopt;
 }
 
 }  // namespace gdpn::net

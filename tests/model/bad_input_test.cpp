@@ -111,7 +111,7 @@ TEST(BadInput, MissingFileIsAnErrorNotACrash) {
 TEST(BadInput, AFolderIsNotAModelFile) {
   core::Diagnostics diags;
   EXPECT_FALSE(loadModel(GDPN_SOURCE_DIR, diags));
-  EXPECT_EQ(diags.str(), std::string(GDPN_SOURCE_DIR) + ": error: is a folder, not a model file\n");
+  EXPECT_EQ(diags.str(), std::string(GDPN_SOURCE_DIR) + ": error: is a folder, not a file\n");
 }
 
 TEST(BadInput, GarbageBytesAreAnErrorNotACrash) {
