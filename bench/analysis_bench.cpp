@@ -25,15 +25,20 @@ void BM_Explore(benchmark::State& state, const char* model, std::uint64_t expect
     return;
   }
   auto n = net::compile(*spec, diags);
-  std::uint64_t states = 0;
-  for (auto _ : state) states = net::explore(*n).states;
+  std::uint64_t states = 0, search_bytes = 0;
+  for (auto _ : state) {
+    const auto s = net::explore(*n);
+    states = s.states;
+    search_bytes = s.peak_bytes;
+  }
   if (states != expected) state.SkipWithError("wrong number of states");
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   state.counters["states"] = static_cast<double>(states);
   state.counters["states_per_s"] =
       benchmark::Counter(static_cast<double>(states) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
-  state.counters["peak_bytes_per_state"] = static_cast<double>(usage.ru_maxrss) * 1024.0 / static_cast<double>(states);
+  state.counters["search_bytes_per_state"] = static_cast<double>(search_bytes) / static_cast<double>(states);
+  state.counters["peak_rss_bytes_per_state"] = static_cast<double>(usage.ru_maxrss) * 1024.0 / static_cast<double>(states);
 }
 BENCHMARK_CAPTURE(BM_Explore, Kanban_PT_00005, "Kanban-PT-00005", 2546432)->Iterations(1)->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(BM_Explore, SwimmingPool_PT_02, "SwimmingPool-PT-02", 3408031)->Iterations(1)->Unit(benchmark::kSecond);

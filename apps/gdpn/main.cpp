@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "gdpn/model/analysis.h"
 #include "gdpn/model/model.h"
 #include "gdpn/model/report.h"
 #include "gdpn/model/simulation.h"
@@ -68,70 +69,58 @@ int check(const std::string& arg) {
   return 0;
 }
 
-int analyze(const std::string& arg, bool json, std::uint64_t max_states) {
+struct AnalyzeArgs {
+  std::string model;
+  bool json = false;
+  bool progress = false;
+  std::uint64_t max_states = 20'000'000;
+  double max_memory_mib = 0.0;
+};
+
+int analyze(const AnalyzeArgs& a) {
   Diagnostics diags;
   std::optional<gdpn::net::NetSpec> spec;
-  std::string path = arg;
-  if (arg.ends_with(".pnml")) {
-    spec = gdpn::net::loadPnml(arg, diags);
-  } else if (auto resolved = model::resolveModelPath(arg, diags)) {
+  std::string path = a.model;
+  model::AnalysisOptions options;
+  if (a.model.ends_with(".pnml")) {
+    spec = gdpn::net::loadPnml(a.model, diags);
+  } else if (auto resolved = model::resolveModelPath(a.model, diags)) {
     path = *resolved;
-    if (auto m = model::loadModel(path, diags)) spec = std::move(m->net);
+    if (auto m = model::loadModel(path, diags)) {
+      spec = std::move(m->net);
+      options.dt = m->settings.dt;
+    }
   }
   std::shared_ptr<const gdpn::net::Net> net;
   if (spec) net = gdpn::net::compile(*spec, diags);
   diags.print(std::cerr);
   if (!net) return 1;
-  const auto s = gdpn::net::explore(*net, {max_states});
-  const auto& tr = net->transitions();
-  auto yes = [](bool b) { return b ? "yes" : "no"; };
-  if (json) {
-    nlohmann::ordered_json j;
-    j["net"] = path;
-    j["complete"] = s.complete;
-    j["states"] = s.states;
-    j["edges"] = s.edges;
-    j["deadlock"] = s.deadlock;
-    j["deadlock_path"] = nlohmann::ordered_json::array();
-    for (auto t : s.deadlock_path) j["deadlock_path"].push_back(tr[t].name);
-    j["max_tokens_place"] = s.max_place;
-    j["max_tokens_marking"] = s.max_marking;
-    j["one_safe"] = s.one_safe;
-    j["quasi_live"] = s.quasi_live;
-    j["live"] = s.live;
-    j["reversible"] = s.reversible;
-    j["dead_transitions"] = nlohmann::ordered_json::array();
-    for (std::size_t t = 0; t < tr.size(); ++t) {
-      if (!s.fired[t]) j["dead_transitions"].push_back(tr[t].name);
-    }
-    j["constant_places"] = nlohmann::ordered_json::array();
-    for (auto p : s.constant_places) j["constant_places"].push_back(net->places()[p].name);
-    j["bounds"] = nlohmann::ordered_json::object();
-    for (std::size_t p = 0; p < net->places().size(); ++p) j["bounds"][net->places()[p].name] = s.place_bound[p];
-    std::cout << j.dump(2) << "\n";
-    return 0;
+  options.explore.max_states = a.max_states;
+  options.explore.max_bytes = static_cast<std::uint64_t>(a.max_memory_mib * 1024.0 * 1024.0);
+  // a progress line on a terminal: states, states per second, memory
+  const bool show = a.progress || isatty(STDERR_FILENO);
+  const auto start = std::chrono::steady_clock::now();
+  auto last = start - std::chrono::seconds(1);  // the first call prints
+  bool drawn = false;
+  options.explore.progress = [&](const gdpn::net::ExploreProgress& p) {
+    const auto now = std::chrono::steady_clock::now();
+    if (!show || now - last < std::chrono::milliseconds(250)) return;
+    last = now;
+    const double secs = std::max(1e-6, std::chrono::duration<double>(now - start).count());
+    std::fprintf(stderr, "%s%llu states, %llu edges, %.2fM states/s, %.1f MiB", a.progress ? "" : "\r",
+                 static_cast<unsigned long long>(p.states), static_cast<unsigned long long>(p.edges),
+                 static_cast<double>(p.states) / secs / 1e6, static_cast<double>(p.bytes) / (1024.0 * 1024.0));
+    std::fputs(a.progress ? "\n" : "", stderr);
+    drawn = !a.progress;
+  };
+  const auto result = model::analyze(*net, path, options);
+  if (drawn) std::fprintf(stderr, "\r\033[K");
+  if (a.json) {
+    std::cout << model::analysisJson(*net, result);
+  } else {
+    model::printAnalysis(std::cout, *net, result);
   }
-  std::cout << path << ": " << s.states << " states, " << s.edges << " edges"
-            << (s.complete ? "" : " (partial: --max-states reached)") << "\n";
-  std::cout << "  deadlock:        " << yes(s.deadlock);
-  if (s.deadlock) {
-    std::cout << " after";
-    for (auto t : s.deadlock_path) std::cout << ' ' << tr[t].name;
-    if (s.deadlock_path.empty()) std::cout << " nothing (the initial marking is dead)";
-  }
-  std::cout << "\n  bounds:          max " << s.max_place << " in one place, " << s.max_marking
-            << " in one marking; one-safe: " << yes(s.one_safe) << "\n";
-  std::cout << "  quasi-live:      " << yes(s.quasi_live);
-  if (!s.quasi_live) {
-    std::cout << " (dead:";
-    for (std::size_t t = 0; t < tr.size(); ++t) {
-      if (!s.fired[t]) std::cout << ' ' << tr[t].name;
-    }
-    std::cout << ")";
-  }
-  std::cout << "\n  live:            " << yes(s.live) << "\n  reversible:      " << yes(s.reversible)
-            << "\n  constant places: " << s.constant_places.size() << "\n";
-  return 0;
+  return result.space.complete ? 0 : 3;
 }
 
 int convert(const std::string& in, const std::string& out) {
@@ -283,15 +272,19 @@ int main(int argc, char** argv) {
                       "input events for keyboard and mouse sensors: a YAML list of {t, key | click | viewpoint}");
   run_cmd->add_flag("--quiet,-q", run_args.quiet, "print no summary and no progress");
 
-  std::string analyze_model;
-  bool analyze_json = false;
-  std::uint64_t analyze_max = 20'000'000;
-  auto* analyze_cmd = app.add_subcommand("analyze", "Explore the untimed state space: deadlocks, bounds, liveness");
-  analyze_cmd->add_option("MODEL", analyze_model, "a .gdpn.yaml file (or a folder holding one), or a .pnml net")
+  AnalyzeArgs analyze_args;
+  auto* analyze_cmd = app.add_subcommand(
+      "analyze", "State space (deadlocks, bounds, liveness), invariants and cycle-time bounds of the untimed net");
+  analyze_cmd->add_option("MODEL", analyze_args.model, "a .gdpn.yaml file (or a folder holding one), or a .pnml net")
       ->required();
-  analyze_cmd->add_flag("--json", analyze_json, "print the results as JSON");
-  analyze_cmd->add_option("--max-states", analyze_max, "stop after this many states (the answer is then partial)")
+  analyze_cmd->add_flag("--json", analyze_args.json, "print the results as JSON");
+  analyze_cmd->add_option("--max-states", analyze_args.max_states, "stop after this many states (the answer is then partial)")
       ->check(CLI::PositiveNumber);
+  analyze_cmd->add_option("--max-memory", analyze_args.max_memory_mib,
+                          "stop when the search holds this many MiB (the answer is then partial)")
+      ->check(CLI::PositiveNumber);
+  analyze_cmd->add_flag("--progress", analyze_args.progress,
+                        "print a progress line every 250 ms even when stderr is not a terminal");
 
   std::string convert_in, convert_out;
   auto* convert_cmd = app.add_subcommand("convert", "Convert a PNML net to a model file, or a model's P/T net to PNML");
@@ -300,7 +293,7 @@ int main(int argc, char** argv) {
 
   CLI11_PARSE(app, argc, argv);
   if (convert_cmd->parsed()) return convert(convert_in, convert_out);
-  if (analyze_cmd->parsed()) return analyze(analyze_model, analyze_json, analyze_max);
+  if (analyze_cmd->parsed()) return analyze(analyze_args);
   if (check_cmd->parsed()) return check(check_model);
   if (run_cmd->parsed()) return run(run_args);
   return 2;

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "gdpn/core/text.h"
+#include "gdpn/model/analysis.h"
 
 namespace gdpn::model {
 
@@ -43,6 +44,17 @@ Report makeReport(const Simulation& sim, const RunOutcome& outcome) {
     f.throughput = outcome.time > 0 ? static_cast<double>(s.deposited) / outcome.time : 0.0;
     r.places.push_back(std::move(f));
   }
+  // the bounds from the invariants, beside the cycles measured: where measured exceeds the
+  // bound, the net waited on something else (the plant, a guard, a shared resource)
+  const auto invariants = net::invariants(net);
+  for (const auto& c : cycleTimes(net, invariants, dt)) {
+    CycleFigures f;
+    f.invariant = invariantText(net, invariants.p[c.invariant]);
+    f.tokens = c.tokens;
+    f.bound = c.seconds;
+    for (auto t : c.transitions) f.measured = std::max(f.measured, r.transitions[t].mean_cycle);
+    r.cycles.push_back(std::move(f));
+  }
   return r;
 }
 
@@ -73,6 +85,10 @@ std::string reportJson(const Report& report) {
                            {"max_tokens", p.max_tokens},
                            {"final_tokens", p.final_tokens},
                            {"throughput", p.throughput}});
+  }
+  j["cycles"] = ordered_json::array();
+  for (const auto& c : report.cycles) {
+    j["cycles"].push_back({{"invariant", c.invariant}, {"tokens", c.tokens}, {"bound", c.bound}, {"measured", c.measured}});
   }
   return j.dump(2) + "\n";
 }
@@ -122,6 +138,19 @@ void printSummary(std::ostream& out, const Report& report) {
     out << pad(p.name, w, false) << pad(fixed(p.mean_tokens, 3), 12, true)
         << pad(std::to_string(p.max_tokens), 16, true) << pad(std::to_string(p.final_tokens), 15, true)
         << pad(fixed(p.throughput, 3), 13, true) << "\n";
+  }
+  if (report.cycles.empty()) return;
+  std::size_t cw = 10;
+  for (const auto& c : report.cycles) cw = std::max(cw, c.invariant.size());
+  cw += 2;
+  out << "\n"
+      << pad("cycle (P-invariant)", cw, false) << pad("tokens", 8, true) << pad("bound [s]", 12, true)
+      << pad("measured [s]", 14, true) << pad("waited [s]", 12, true) << "\n";
+  for (const auto& c : report.cycles) {
+    const bool m = c.measured > 0.0;
+    out << pad(c.invariant, cw, false) << pad(std::to_string(c.tokens), 8, true) << pad(fixed(c.bound, 3), 12, true)
+        << pad(m ? fixed(c.measured, 3) : "-", 14, true) << pad(m ? fixed(c.measured - c.bound, 3) : "-", 12, true)
+        << "\n";
   }
 }
 

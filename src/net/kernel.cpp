@@ -108,8 +108,10 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
 
 void Kernel::addObserver(NetObserver* observer) { observers_.push_back(observer); }
 
-std::int64_t Kernel::durationSteps(double seconds) const {
-  const double x = seconds / dt_;
+std::int64_t Kernel::durationSteps(double seconds) const { return net::durationSteps(seconds, dt_); }
+
+std::int64_t durationSteps(double seconds, double dt) {
+  const double x = seconds / dt;
   if (!(x < static_cast<double>(kMaxSteps))) return kMaxSteps;
   // a duration within a billionth of a whole number of steps counts as that number
   const auto n = static_cast<std::int64_t>(std::ceil(x - 1e-9 * std::max(1.0, x)));

@@ -261,7 +261,46 @@ TEST(CliAnalyze, APnmlNetAndAModelFile) {
   EXPECT_EQ(j["deadlock_path"], (nlohmann::json{"main/T1", "main/T2"}));
   EXPECT_EQ(j["one_safe"], true);
   r = gdpn("analyze ../shared/conformance/pnml/Referendum-PT-0010.pnml --max-states 100");
-  EXPECT_NE(r.out.find("(partial: --max-states reached)"), std::string::npos) << r.out;
+  EXPECT_EQ(r.code, 3) << r.out;
+  EXPECT_NE(r.out.find("(partial: --max-states reached;"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("live:            unknown"), std::string::npos) << r.out;
+  r = gdpn("analyze ../shared/conformance/pnml/Referendum-PT-0010.pnml --max-memory 0.5 --progress");
+  EXPECT_EQ(r.code, 3) << r.out;
+  EXPECT_NE(r.out.find("(partial: --max-memory reached;"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" states/s, "), std::string::npos) << r.out;  // the progress line
+}
+
+TEST(CliAnalyze, TwoCyclesGiveBothCycleTimesAndTheLargerAsTheBound) {
+  auto r = gdpn("analyze tests/data/good/cycles.gdpn.yaml");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("  4.000 s  main/a_ready + main/a_half (1 token)\n"
+                       "  1.000 s  main/b_ready + main/b_one + main/b_two (1 token)\n"
+                       "  the net's cycle time is at least 4.000 s"),
+            std::string::npos)
+      << r.out;
+  r = gdpn("analyze tests/data/good/cycles.gdpn.yaml --json");
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["cycle_time"], 4.0);
+  ASSERT_EQ(j["cycle_times"].size(), 2u);
+  EXPECT_EQ(j["cycle_times"][1]["seconds"], 1.0);
+  EXPECT_EQ(j["invariants"]["p"].size(), 2u);
+  EXPECT_EQ(j["invariants"]["conservative"], true);
+  // the run measures the same cycles and shows them beside the bounds
+  r = gdpn("run tests/data/good/cycles.gdpn.yaml");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("main/a_ready + main/a_half                     1       4.000         4.000       0.000"),
+            std::string::npos)
+      << r.out;
+}
+
+TEST(CliAnalyze, AnUnboundedNetNamesItsUnboundedPlaces) {
+  auto r = gdpn("analyze examples/basics/producer_consumer --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["bounded"], false);
+  EXPECT_EQ(j["unbounded_places"], (nlohmann::json{"main/consumed"}));
+  EXPECT_EQ(j["bounds"]["main/consumed"], "omega");
+  EXPECT_TRUE(j["live"].is_null());
 }
 
 }  // namespace

@@ -187,17 +187,90 @@ TEST(Pnml, WritingRefusesWhatAPTNetCannotHold) {
 namespace gdpn::net {
 namespace {
 
-TEST(Analysis, CountsBeyondWhatTheSearchHoldsGiveAPartialAnswer) {
-  // a transition that doubles tokens grows without bound: the search stops, labelled partial
+TEST(Analysis, AnUnboundedNetGivesACoverabilityGraphNamingItsPlaces) {
+  // a transition that doubles tokens: P is unbounded, Q (fed once) is not
   NetBuilder b;
   const auto p = b.addPlace("P");
+  const auto q = b.addPlace("Q");
+  const auto r = b.addPlace("R");
   b.setSlot(p, kDefaultSlot, SlotKind::Control, kUnbounded, 2000000000);
-  const auto t = b.addTransition("grow");
-  b.addInput(p, t, kDefaultSlot, 1);
-  b.addOutput(t, p, kDefaultSlot, 1000000000);
+  b.setSlot(r, kDefaultSlot, SlotKind::Control, kUnbounded, 1);
+  const auto grow = b.addTransition("grow");
+  b.addInput(p, grow, kDefaultSlot, 1);
+  b.addOutput(grow, p, kDefaultSlot, 1000000000);
+  const auto once = b.addTransition("once");
+  b.addInput(r, once);
+  b.addOutput(once, q);
+  const auto s = explore(*b.freeze());
+  EXPECT_TRUE(s.complete);
+  EXPECT_FALSE(s.bounded);
+  EXPECT_FALSE(s.decided);
+  ASSERT_EQ(s.unbounded_places.size(), 1u);
+  EXPECT_EQ(s.unbounded_places[0], p);
+  EXPECT_EQ(s.place_bound[p], kOmega);
+  EXPECT_EQ(s.place_bound[q], 1);
+  EXPECT_TRUE(s.quasi_live);
+  // (P=2e9, R=1), (ω, R=1), (P=2e9, Q=1), (ω, Q=1)
+  EXPECT_EQ(s.states, 4u);
+}
+
+TEST(Analysis, AProducerWithoutConsumerIsUnboundedOnlyWhereItProduces) {
+  // the classic unbounded producer: p0 -> produce -> p0 + buffer; consume takes buffer and
+  // a free token: the buffer is unbounded, the free place is not
+  NetBuilder b;
+  const auto p0 = b.addPlace("p0");
+  const auto buffer = b.addPlace("buffer");
+  const auto done = b.addPlace("done");
+  b.setSlot(p0, kDefaultSlot, SlotKind::Control, kUnbounded, 1);
+  const auto produce = b.addTransition("produce");
+  b.addInput(p0, produce);
+  b.addOutput(produce, p0);
+  b.addOutput(produce, buffer);
+  const auto consume = b.addTransition("consume");
+  b.addInput(buffer, consume);
+  b.addOutput(consume, done);
+  const auto s = explore(*b.freeze());
+  EXPECT_TRUE(s.complete);
+  EXPECT_FALSE(s.bounded);
+  EXPECT_EQ(s.unbounded_places, (std::vector<PlaceId>{buffer, done}));
+  EXPECT_EQ(s.place_bound[p0], 1);
+}
+
+TEST(Analysis, CountsBeyondWhatTheSearchHoldsGiveAPartialAnswer) {
+  NetBuilder b;
+  const auto p = b.addPlace("P");
+  b.setSlot(p, kDefaultSlot, SlotKind::Control, kUnbounded, 5'000'000'000);
+  const auto t = b.addTransition("t");
+  b.addInput(p, t);
   const auto s = explore(*b.freeze());
   EXPECT_FALSE(s.complete);
-  EXPECT_FALSE(s.live);
+  EXPECT_EQ(s.stop, ExploreStop::Overflow);
+  EXPECT_FALSE(s.decided);
+}
+
+TEST(Analysis, LimitsStopCleanlyWithAPartialAnswer) {
+  core::Diagnostics diags;
+  auto spec = loadPnml((kConformance / "Referendum-PT-0010.pnml").string(), diags);
+  auto net = compile(*spec, diags);
+  ExploreOptions few;
+  few.max_states = 1000;
+  const auto s = explore(*net, few);
+  EXPECT_FALSE(s.complete);
+  EXPECT_EQ(s.stop, ExploreStop::MaxStates);
+  EXPECT_FALSE(s.decided);
+  EXPECT_GE(s.states, 1000u);
+  ExploreOptions small;
+  small.max_bytes = 1;
+  std::uint64_t calls = 0;
+  small.progress = [&](const ExploreProgress& p) {
+    ++calls;
+    EXPECT_GT(p.bytes, 0u);
+  };
+  const auto m = explore(*net, small);
+  EXPECT_EQ(m.stop, ExploreStop::MaxMemory);
+  EXPECT_EQ(calls, 1u);
+  EXPECT_GE(m.states, 4096u);
+  EXPECT_LT(m.states, 4096u + net->transitions().size());
 }
 
 }  // namespace

@@ -32,6 +32,14 @@ struct PlaceFigures {
   double throughput = 0.0;   ///< tokens deposited per second
 };
 
+/// One cycle of the net (a P-invariant carrying tokens): its bound beside what the run measured.
+struct CycleFigures {
+  std::string invariant;        ///< its places, weighted: "a + b + 2*c"
+  std::int64_t tokens = 0;      ///< weighted tokens on it
+  double bound = 0.0;           ///< seconds: the sum of its durations over its tokens
+  double measured = 0.0;        ///< seconds: the slowest mean cycle among its transitions (0: none)
+};
+
 /// Everything the summary shows.
 struct Report {
   std::string model;              ///< model file
@@ -40,6 +48,7 @@ struct Report {
   RunOutcome outcome;
   std::vector<TransitionFigures> transitions;
   std::vector<PlaceFigures> places;
+  std::vector<CycleFigures> cycles;  ///< largest bound first; empty for an untimed net
 };
 
 /// Gathers the report of a finished run.

@@ -1,40 +1,75 @@
 #pragma once
 /// \file
 /// Analysis of the untimed view (semantics §11): node tokens counted per slot, scripts and
-/// durations ignored. Explicit state-space exploration: the reachability graph and the
+/// durations ignored, sensor conditions free. Explicit state-space exploration: the
+/// reachability graph (a coverability graph with ω when the net is unbounded) and the
 /// behavioural properties read off it.
 
 #include <cstdint>
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "gdpn/net/net.h"
 
 namespace gdpn::net {
 
-/// Limits of an exploration.
-struct ExploreOptions {
-  std::uint64_t max_states = 20'000'000;  ///< stop (partial answer) after this many states
+/// How far an exploration has got; passed to ExploreOptions::progress.
+struct ExploreProgress {
+  std::uint64_t states = 0;  ///< markings stored so far
+  std::uint64_t edges = 0;   ///< edges met so far
+  std::uint64_t bytes = 0;   ///< memory the search holds now, bytes
 };
 
-/// What the reachability graph says.
+/// Limits of an exploration.
+struct ExploreOptions {
+  std::uint64_t max_states = 20'000'000;  ///< stop (partial answer) past this many states
+  std::uint64_t max_bytes = 0;            ///< stop (partial answer) past this much memory, bytes; 0: none
+  /// Called every 4,096 new states; may be empty.
+  std::function<void(const ExploreProgress&)> progress;
+};
+
+/// Why an exploration ended before the whole graph was seen.
+enum class ExploreStop : std::uint8_t {
+  Done,       ///< complete
+  MaxStates,  ///< ExploreOptions::max_states reached
+  MaxMemory,  ///< ExploreOptions::max_bytes reached
+  Overflow,   ///< a count went past 2^32 - 2 tokens in a place that no invariant bounds
+};
+
+/// Marks a place bound of ω: the place is unbounded.
+inline constexpr std::int64_t kOmega = -1;
+
+/// What the reachability (or coverability) graph says.
 struct StateSpace {
-  bool complete = true;                  ///< false when max_states cut the search short
-  std::uint64_t states = 0;              ///< reachable markings
+  bool complete = true;                  ///< false when a limit cut the search short
+  ExploreStop stop = ExploreStop::Done;  ///< why it ended
+  bool bounded = true;                   ///< no place is unbounded (false: a coverability graph)
+  std::uint64_t states = 0;              ///< reachable markings (ω-markings when unbounded)
   std::uint64_t edges = 0;               ///< one per marking and enabled transition
   bool deadlock = false;                 ///< a dead marking is reachable
   std::vector<TransitionId> deadlock_path;  ///< the shortest firing sequence to the first one
-  std::vector<std::int64_t> place_bound; ///< per place: the most tokens it ever holds
-  std::int64_t max_place = 0;            ///< the most tokens in one place
-  std::int64_t max_marking = 0;          ///< the most tokens in one marking
+  std::vector<std::int64_t> place_bound; ///< per place: the most tokens it ever holds, or kOmega
+  std::vector<PlaceId> unbounded_places; ///< places that can hold any number of tokens
+  std::int64_t max_place = 0;            ///< the most tokens in one bounded place
+  std::int64_t max_marking = 0;          ///< the most tokens in one marking (bounded places)
   bool one_safe = true;                  ///< no place ever holds more than one token
   std::vector<bool> fired;               ///< per transition: it can fire at least once
   bool quasi_live = true;                ///< every transition can fire at least once
+  /// Liveness, reversibility and deadlock are decided only on a complete, bounded graph.
+  bool decided = true;
   bool live = true;                      ///< every transition can fire again from every marking
   bool reversible = true;                ///< the initial marking is reachable from every marking
   std::vector<PlaceId> constant_places;  ///< places whose token count never changes
+  std::uint64_t peak_bytes = 0;          ///< the most memory the search held, bytes
 };
 
-/// Explores the reachability graph of `net` from its initial marking.
+/// Explores the reachability graph of `net` from its initial marking. Markings are packed
+/// into bit fields sized by the invariants' bounds; strongly connected components are found
+/// during the depth-first search, so no edge is stored.
 StateSpace explore(const Net& net, const ExploreOptions& options = {});
+
+/// A word for why a search stopped ("complete", "--max-states reached", ...).
+const char* stopReason(ExploreStop stop);
 
 }  // namespace gdpn::net

@@ -31,6 +31,10 @@ struct KernelSettings {
   std::vector<NodeRef> node_refs;
 };
 
+/// Whole steps of `dt` seconds an occurrence of `seconds` lasts: max(1, ceil(seconds / dt)),
+/// a duration within a billionth of a whole number of steps counting as that number.
+std::int64_t durationSteps(double seconds, double dt);
+
 /// The changing state of one frozen Net, and the step loop's net phases.
 class Kernel {
  public:

@@ -1,0 +1,49 @@
+#pragma once
+/// \file
+/// `gdpn analyze`: the state space, the invariants and the cycle-time bounds of a net,
+/// gathered once and printed as text or JSON.
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "gdpn/net/analysis.h"
+#include "gdpn/net/invariants.h"
+
+namespace gdpn::model {
+
+/// What to compute.
+struct AnalysisOptions {
+  net::ExploreOptions explore;  ///< limits and progress of the state-space search
+  double dt = 0.0;              ///< the model's step, seconds; 0 for a net without one (PNML)
+};
+
+/// Everything `gdpn analyze` reports.
+struct Analysis {
+  std::string path;                     ///< the model or PNML file
+  net::StateSpace space;                ///< the reachability (or coverability) graph
+  net::Invariants invariants;           ///< P- and T-invariants, structural properties
+  std::vector<net::CycleBound> cycles;  ///< cycle-time bounds, largest first (timed nets only)
+};
+
+/// Each transition's duration as the simulation sees it, seconds: fixed durations rounded to
+/// whole steps of `dt` (one step at least), drawn ones by their mean. With dt = 0, as written.
+std::vector<double> effectiveDurations(const net::Net& net, double dt);
+
+/// True when some transition of `net` takes time (cycle-time bounds mean something).
+bool timed(const net::Net& net);
+
+/// Cycle-time bounds of `net` with its durations at step `dt` (empty for an untimed net).
+std::vector<net::CycleBound> cycleTimes(const net::Net& net, const net::Invariants& invariants, double dt);
+
+/// A P-invariant as text: "p1 + 2*p2 + p3".
+std::string invariantText(const net::Net& net, const net::Invariant& y);
+
+/// Runs the analysis of `net`.
+Analysis analyze(const net::Net& net, std::string path, const AnalysisOptions& options = {});
+/// The analysis as pretty-printed JSON text.
+std::string analysisJson(const net::Net& net, const Analysis& analysis);
+/// The analysis as `gdpn analyze` prints it.
+void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& analysis);
+
+}  // namespace gdpn::model

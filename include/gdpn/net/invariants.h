@@ -1,0 +1,68 @@
+#pragma once
+/// \file
+/// Structural analysis of the untimed view (semantics §11): P- and T-invariants as minimal
+/// generating sets of semi-positive invariants (the Farkas algorithm), structural
+/// boundedness and conservativeness, bounds per place slot, and cycle-time bounds for timed
+/// nets. Works on the incidence matrix; test, inhibitor and condition terms do not count.
+
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "gdpn/net/net.h"
+
+namespace gdpn::net {
+
+/// A semi-positive invariant: its non-zero weights, by place slot (P) or transition (T).
+struct Invariant {
+  std::vector<std::pair<std::uint32_t, std::int64_t>> weights;  ///< (index, weight > 0), sorted
+};
+
+/// Limits of the invariant computation.
+struct InvariantOptions {
+  std::size_t max_candidates = 20'000;  ///< give up (partial answer) past this many rows
+};
+
+/// What the incidence matrix says.
+struct Invariants {
+  bool complete = true;                ///< false when a limit or 64-bit overflow stopped it
+  std::vector<Invariant> p;            ///< minimal semi-positive P-invariants: y·C = 0
+  std::vector<Invariant> t;            ///< minimal semi-positive T-invariants: C·x = 0
+  bool conservative = false;           ///< some y > 0 on every place slot has y·C = 0
+  bool structurally_bounded = false;   ///< some y > 0 on every place slot has y·C <= 0
+  bool consistent = false;             ///< some x > 0 on every transition has C·x = 0
+  std::vector<std::int64_t> bound;     ///< per place slot: a bound from the invariants, -1 when none
+};
+
+/// The incidence of transition `t` on place slot `ps`: tokens it puts there minus tokens it takes.
+std::int64_t incidence(const Net& net, PlaceSlotId ps, TransitionId t);
+
+/// Computes the invariants of `net`.
+Invariants invariants(const Net& net, const InvariantOptions& options = {});
+
+/// True when `y` really is a P-invariant of `net` (y·C = 0, y semi-positive).
+bool isPInvariant(const Net& net, const Invariant& y);
+/// True when `x` really is a T-invariant of `net` (C·x = 0, x semi-positive).
+bool isTInvariant(const Net& net, const Invariant& x);
+
+/// The cycle time of one P-invariant of a timed net.
+struct CycleBound {
+  std::size_t invariant = 0;               ///< index into Invariants::p
+  std::vector<TransitionId> transitions;   ///< transitions taking tokens from the invariant's places
+  std::int64_t tokens = 0;                 ///< weighted tokens on it, y·M0
+  double seconds = 0.0;                    ///< sum of duration × weight taken, over tokens
+};
+
+/// Cycle-time bounds, one per P-invariant that carries tokens and feeds a transition, largest
+/// first; `seconds[t]` is the duration of transition `t` (its mean for drawn durations). The
+/// net cannot repeat faster than the first one's `seconds`.
+std::vector<CycleBound> cycleBounds(const Net& net, const Invariants& invariants, std::span<const double> seconds);
+
+/// The mean of a duration, seconds.
+double meanSeconds(const Duration& duration);
+
+/// A place slot's name for reports: the place's name, with ".slot" when not a0.
+std::string placeSlotName(const Net& net, PlaceSlotId ps);
+
+}  // namespace gdpn::net

@@ -1,0 +1,205 @@
+#include "gdpn/model/analysis.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+
+#include "gdpn/net/kernel.h"
+
+namespace gdpn::model {
+
+std::vector<double> effectiveDurations(const net::Net& net, double dt) {
+  std::vector<double> out;
+  for (const auto& t : net.transitions()) {
+    const double mean = net::meanSeconds(t.duration);
+    if (dt > 0.0 && t.duration.fixed()) {
+      out.push_back(static_cast<double>(net::durationSteps(mean, dt)) * dt);
+    } else {
+      out.push_back(mean);
+    }
+  }
+  return out;
+}
+
+bool timed(const net::Net& net) {
+  for (const auto& t : net.transitions()) {
+    if (net::meanSeconds(t.duration) > 0.0) return true;
+  }
+  return false;
+}
+
+std::vector<net::CycleBound> cycleTimes(const net::Net& net, const net::Invariants& invariants, double dt) {
+  if (!timed(net)) return {};
+  return net::cycleBounds(net, invariants, effectiveDurations(net, dt));
+}
+
+std::string invariantText(const net::Net& net, const net::Invariant& y) {
+  std::string s;
+  for (const auto& [k, w] : y.weights) {
+    if (!s.empty()) s += " + ";
+    if (w != 1) s += std::to_string(w) + "*";
+    s += net::placeSlotName(net, k);
+  }
+  return s;
+}
+
+Analysis analyze(const net::Net& net, std::string path, const AnalysisOptions& options) {
+  Analysis a;
+  a.path = std::move(path);
+  a.invariants = net::invariants(net);
+  a.cycles = cycleTimes(net, a.invariants, options.dt);
+  a.space = net::explore(net, options.explore);
+  return a;
+}
+
+namespace {
+
+std::int64_t tokensOn(const net::Net& net, const net::Invariant& y) {
+  std::int64_t n = 0;
+  for (const auto& [k, w] : y.weights) n += w * net.placeSlots()[k].initial;
+  return n;
+}
+
+std::string seconds(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.3f s", v);
+  return buf;
+}
+
+std::string megabytes(std::uint64_t bytes) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.1f MiB", static_cast<double>(bytes) / (1024.0 * 1024.0));
+  return buf;
+}
+
+}  // namespace
+
+std::string analysisJson(const net::Net& net, const Analysis& a) {
+  using nlohmann::ordered_json;
+  const auto& s = a.space;
+  const auto& tr = net.transitions();
+  const auto& places = net.places();
+  ordered_json j;
+  j["net"] = a.path;
+  j["complete"] = s.complete;
+  j["stop"] = net::stopReason(s.stop);
+  j["bounded"] = s.bounded;
+  j["states"] = s.states;
+  j["edges"] = s.edges;
+  j["deadlock"] = s.deadlock;
+  j["deadlock_path"] = ordered_json::array();
+  for (auto t : s.deadlock_path) j["deadlock_path"].push_back(tr[t].name);
+  j["max_tokens_place"] = s.max_place;
+  j["max_tokens_marking"] = s.max_marking;
+  j["one_safe"] = s.one_safe;
+  j["quasi_live"] = s.quasi_live;
+  j["live"] = s.decided ? ordered_json(s.live) : ordered_json(nullptr);
+  j["reversible"] = s.decided ? ordered_json(s.reversible) : ordered_json(nullptr);
+  j["dead_transitions"] = ordered_json::array();
+  for (std::size_t t = 0; t < tr.size(); ++t) {
+    if (!s.fired[t]) j["dead_transitions"].push_back(tr[t].name);
+  }
+  j["unbounded_places"] = ordered_json::array();
+  for (auto p : s.unbounded_places) j["unbounded_places"].push_back(places[p].name);
+  j["constant_places"] = ordered_json::array();
+  for (auto p : s.constant_places) j["constant_places"].push_back(places[p].name);
+  j["bounds"] = ordered_json::object();
+  for (std::size_t p = 0; p < places.size(); ++p) {
+    j["bounds"][places[p].name] = s.place_bound[p] == net::kOmega ? ordered_json("omega") : ordered_json(s.place_bound[p]);
+  }
+  j["peak_bytes"] = s.peak_bytes;
+
+  const auto& inv = a.invariants;
+  ordered_json ij;
+  ij["complete"] = inv.complete;
+  ij["conservative"] = inv.conservative;
+  ij["structurally_bounded"] = inv.structurally_bounded;
+  ij["consistent"] = inv.consistent;
+  ij["p"] = ordered_json::array();
+  for (const auto& y : inv.p) {
+    ordered_json w = ordered_json::object();
+    for (const auto& [k, v] : y.weights) w[net::placeSlotName(net, k)] = v;
+    ij["p"].push_back({{"weights", w}, {"tokens", tokensOn(net, y)}});
+  }
+  ij["t"] = ordered_json::array();
+  for (const auto& x : inv.t) {
+    ordered_json w = ordered_json::object();
+    for (const auto& [k, v] : x.weights) w[tr[k].name] = v;
+    ij["t"].push_back(w);
+  }
+  j["invariants"] = ij;
+  j["cycle_times"] = ordered_json::array();
+  for (const auto& c : a.cycles) {
+    ordered_json names = ordered_json::array();
+    for (auto t : c.transitions) names.push_back(tr[t].name);
+    j["cycle_times"].push_back({{"invariant", invariantText(net, inv.p[c.invariant])},
+                                {"transitions", names},
+                                {"tokens", c.tokens},
+                                {"seconds", c.seconds}});
+  }
+  j["cycle_time"] = a.cycles.empty() ? ordered_json(nullptr) : ordered_json(a.cycles.front().seconds);
+  return j.dump(2) + "\n";
+}
+
+void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
+  const auto& s = a.space;
+  const auto& tr = net.transitions();
+  auto yes = [](bool b) { return b ? "yes" : "no"; };
+  auto decided = [&](bool b) { return s.decided ? yes(b) : "unknown (the graph is partial or unbounded)"; };
+  out << a.path << ": " << s.states << " states, " << s.edges << " edges";
+  if (!s.bounded) out << " of a coverability graph";
+  out << " (" << (s.bounded ? "" : "the net is unbounded; ") << net::stopReason(s.stop) << "; the search held "
+      << megabytes(s.peak_bytes) << ")\n";
+  out << "  deadlock:        " << (s.deadlock ? "yes" : s.complete ? "no" : "none found");
+  if (s.deadlock && !s.deadlock_path.empty()) {
+    out << " after";
+    for (auto t : s.deadlock_path) out << ' ' << tr[t].name;
+  } else if (s.deadlock && s.complete && s.bounded) {
+    out << " (the initial marking is dead)";
+  }
+  out << "\n  bounds:          max " << s.max_place << " in one place, " << s.max_marking
+      << " in one marking; one-safe: " << yes(s.one_safe) << "\n";
+  if (!s.bounded) {
+    out << "  unbounded:      ";
+    for (auto p : s.unbounded_places) out << ' ' << net.places()[p].name;
+    out << "\n";
+  }
+  out << "  quasi-live:      " << yes(s.quasi_live);
+  if (!s.quasi_live) {
+    out << " (" << (s.complete ? "dead:" : "not fired yet:");
+    for (std::size_t t = 0; t < tr.size(); ++t) {
+      if (!s.fired[t]) out << ' ' << tr[t].name;
+    }
+    out << ")";
+  }
+  out << "\n  live:            " << decided(s.live) << "\n  reversible:      " << decided(s.reversible)
+      << "\n  constant places: " << s.constant_places.size() << "\n";
+
+  const auto& inv = a.invariants;
+  out << "invariants" << (inv.complete ? "" : " (partial: too many candidates)") << ":\n"
+      << "  conservative: " << yes(inv.conservative) << "; structurally bounded: " << yes(inv.structurally_bounded)
+      << "; covered by T-invariants: " << yes(inv.consistent) << "\n";
+  constexpr std::size_t kShown = 20;
+  out << "  P-invariants (" << inv.p.size() << "):" << (inv.p.empty() ? " none" : "") << "\n";
+  for (std::size_t i = 0; i < inv.p.size() && i < kShown; ++i) {
+    out << "    " << invariantText(net, inv.p[i]) << " = " << tokensOn(net, inv.p[i]) << "\n";
+  }
+  if (inv.p.size() > kShown) out << "    ... and " << inv.p.size() - kShown << " more (--json lists all)\n";
+  out << "  T-invariants (" << inv.t.size() << "):" << (inv.t.empty() ? " none" : "") << "\n";
+  for (std::size_t i = 0; i < inv.t.size() && i < kShown; ++i) {
+    out << "   ";
+    for (const auto& [k, w] : inv.t[i].weights) out << ' ' << (w != 1 ? std::to_string(w) + "*" : "") << tr[k].name;
+    out << "\n";
+  }
+  if (inv.t.size() > kShown) out << "    ... and " << inv.t.size() - kShown << " more (--json lists all)\n";
+  if (!a.cycles.empty()) {
+    out << "cycle times (sum of durations over tokens, per P-invariant):\n";
+    for (const auto& c : a.cycles) {
+      out << "  " << seconds(c.seconds) << "  " << invariantText(net, inv.p[c.invariant]) << " (" << c.tokens
+          << (c.tokens == 1 ? " token)" : " tokens)") << "\n";
+    }
+    out << "  the net's cycle time is at least " << seconds(a.cycles.front().seconds) << "\n";
+  }
+}
+
+}  // namespace gdpn::model

@@ -1,0 +1,299 @@
+#include "gdpn/net/invariants.h"
+
+#include <algorithm>
+#include <bit>
+#include <limits>
+#include <numeric>
+
+#include "gdpn/net/slot.h"
+
+namespace gdpn::net {
+namespace {
+
+using Matrix = std::vector<std::vector<std::int64_t>>;
+
+/// One row of the Farkas tableau: the combination `y` of the original rows, what it sums
+/// to (`a` = y·A over the columns not yet eliminated), and the support of `y` as bits.
+struct Row {
+  std::vector<std::int64_t> a;
+  std::vector<std::int64_t> y;
+  std::vector<std::uint64_t> support;
+};
+
+bool addMul(std::int64_t x, std::int64_t cx, std::int64_t z, std::int64_t cz, std::int64_t& out) {
+  std::int64_t p = 0, q = 0;
+  return !__builtin_mul_overflow(x, cx, &p) && !__builtin_mul_overflow(z, cz, &q) && !__builtin_add_overflow(p, q, &out);
+}
+
+void normalise(Row& r) {
+  std::int64_t g = 0;
+  for (auto v : r.y) g = std::gcd(g, v);
+  if (g <= 1) return;
+  for (auto& v : r.y) v /= g;
+  for (auto& v : r.a) v /= g;
+}
+
+bool subset(const std::vector<std::uint64_t>& x, const std::vector<std::uint64_t>& y) {
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    if ((x[k] & ~y[k]) != 0) return false;
+  }
+  return true;
+}
+
+/// Keeps the rows whose support contains no other row's support (and one of equal rows).
+void keepMinimal(std::vector<Row>& rows) {
+  std::vector<std::size_t> count(rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    for (auto w : rows[i].support) count[i] += static_cast<std::size_t>(std::popcount(w));
+  }
+  std::vector<bool> drop(rows.size(), false);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    for (std::size_t j = 0; j < rows.size() && !drop[i]; ++j) {
+      if (i == j || drop[j] || count[j] > count[i] || !subset(rows[j].support, rows[i].support)) continue;
+      // a smaller support, or the same row met earlier
+      if (count[j] < count[i] || (j < i && rows[j].y == rows[i].y)) drop[i] = true;
+    }
+  }
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (drop[i]) continue;
+    if (out != i) rows[out] = std::move(rows[i]);
+    ++out;
+  }
+  rows.resize(out);
+}
+
+/// The minimal semi-positive y with y·A = 0, where A has one row per variable.
+std::vector<Invariant> semiflows(const Matrix& a, std::size_t columns, std::size_t max_rows, bool& complete) {
+  const std::size_t n = a.size();
+  const std::size_t words = (n + 63) / 64;
+  std::vector<Row> rows(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    rows[i].a = a[i];
+    rows[i].y.assign(n, 0);
+    rows[i].y[i] = 1;
+    rows[i].support.assign(words, 0);
+    rows[i].support[i / 64] |= std::uint64_t{1} << (i % 64);
+  }
+  std::vector<bool> done(columns, false);
+  for (std::size_t round = 0; round < columns; ++round) {
+    // eliminate the column that makes the fewest new rows
+    std::size_t best = columns;
+    std::size_t best_cost = std::numeric_limits<std::size_t>::max();
+    for (std::size_t j = 0; j < columns; ++j) {
+      if (done[j]) continue;
+      std::size_t pos = 0, neg = 0;
+      for (const auto& r : rows) pos += r.a[j] > 0, neg += r.a[j] < 0;
+      const std::size_t cost = pos * neg;
+      if (cost < best_cost || best == columns) best = j, best_cost = cost;
+    }
+    const std::size_t j = best;
+    done[j] = true;
+    std::vector<Row> next;
+    std::vector<std::size_t> pos, neg;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      if (rows[i].a[j] > 0) pos.push_back(i);
+      if (rows[i].a[j] < 0) neg.push_back(i);
+    }
+    for (auto& r : rows) {
+      if (r.a[j] == 0) next.push_back(std::move(r));
+    }
+    for (auto p : pos) {
+      for (auto q : neg) {
+        const Row& x = rows[p];
+        const Row& z = rows[q];
+        std::int64_t cx = -z.a[j], cz = x.a[j];
+        const std::int64_t g = std::gcd(cx, cz);
+        cx /= g, cz /= g;
+        Row r;
+        r.a.resize(columns);
+        r.y.resize(n);
+        bool ok = true;
+        for (std::size_t k = 0; k < columns && ok; ++k) ok = addMul(x.a[k], cx, z.a[k], cz, r.a[k]);
+        for (std::size_t k = 0; k < n && ok; ++k) ok = addMul(x.y[k], cx, z.y[k], cz, r.y[k]);
+        if (!ok) {
+          complete = false;
+          return {};
+        }
+        r.support.resize(words);
+        for (std::size_t k = 0; k < words; ++k) r.support[k] = x.support[k] | z.support[k];
+        normalise(r);
+        next.push_back(std::move(r));
+      }
+    }
+    keepMinimal(next);
+    if (next.size() > max_rows) {
+      complete = false;
+      return {};
+    }
+    rows = std::move(next);
+  }
+  std::vector<Invariant> out;
+  for (const auto& r : rows) {
+    Invariant inv;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (r.y[k] != 0) inv.weights.emplace_back(static_cast<std::uint32_t>(k), r.y[k]);
+    }
+    out.push_back(std::move(inv));
+  }
+  std::sort(out.begin(), out.end(), [](const Invariant& x, const Invariant& y) { return x.weights < y.weights; });
+  return out;
+}
+
+Matrix incidenceMatrix(const Net& net) {
+  Matrix c(net.placeSlots().size(), std::vector<std::int64_t>(net.transitions().size(), 0));
+  for (const Term& term : net.terms()) {
+    if (term.kind == TermKind::Input) c[term.place_slot][term.transition] -= term.weight;
+    if (term.kind == TermKind::Output) c[term.place_slot][term.transition] += term.weight;
+  }
+  return c;
+}
+
+/// True when the union of the supports covers every index below `n`.
+bool covers(const std::vector<Invariant>& invs, std::size_t n) {
+  std::vector<bool> seen(n, false);
+  for (const auto& inv : invs) {
+    for (const auto& [k, w] : inv.weights) {
+      if (k < n) seen[k] = true;
+    }
+  }
+  return std::all_of(seen.begin(), seen.end(), [](bool b) { return b; });
+}
+
+}  // namespace
+
+std::int64_t incidence(const Net& net, PlaceSlotId ps, TransitionId t) {
+  std::int64_t c = 0;
+  for (const Term& term : net.termsOf(t)) {
+    if (term.place_slot != ps) continue;
+    if (term.kind == TermKind::Input) c -= term.weight;
+    if (term.kind == TermKind::Output) c += term.weight;
+  }
+  return c;
+}
+
+Invariants invariants(const Net& net, const InvariantOptions& options) {
+  Invariants out;
+  const std::size_t places = net.placeSlots().size();
+  const std::size_t transitions = net.transitions().size();
+  const Matrix c = incidenceMatrix(net);
+  out.p = semiflows(c, transitions, options.max_candidates, out.complete);
+  Matrix ct(transitions, std::vector<std::int64_t>(places, 0));
+  for (std::size_t ps = 0; ps < places; ++ps) {
+    for (std::size_t t = 0; t < transitions; ++t) ct[t][ps] = c[ps][t];
+  }
+  out.t = semiflows(ct, places, options.max_candidates, out.complete);
+  out.conservative = covers(out.p, places);
+  out.consistent = covers(out.t, transitions);
+
+  // y·C <= 0: the semiflows of C with one slack row per transition
+  std::vector<Invariant> bounding = out.p;
+  if (!out.conservative) {
+    Matrix slack = c;
+    for (std::size_t t = 0; t < transitions; ++t) {
+      slack.emplace_back(transitions, 0);
+      slack.back()[t] = 1;
+    }
+    bool ok = true;
+    bounding = semiflows(slack, transitions, options.max_candidates, ok);
+    out.complete = out.complete && ok;
+    out.structurally_bounded = ok && covers(bounding, places);
+  } else {
+    out.structurally_bounded = true;
+  }
+  // y·M <= y·M0 in every reachable marking M, so M(p) <= y·M0 / y(p)
+  out.bound.assign(places, -1);
+  for (const auto& inv : bounding) {
+    std::int64_t total = 0;
+    bool ok = true;
+    for (const auto& [k, w] : inv.weights) {
+      if (k >= places) continue;
+      std::int64_t term = 0;
+      ok = ok && !__builtin_mul_overflow(w, net.placeSlots()[k].initial, &term) && !__builtin_add_overflow(total, term, &total);
+    }
+    if (!ok) continue;
+    for (const auto& [k, w] : inv.weights) {
+      if (k >= places) continue;
+      const std::int64_t b = total / w;
+      if (out.bound[k] < 0 || b < out.bound[k]) out.bound[k] = b;
+    }
+  }
+  return out;
+}
+
+bool isPInvariant(const Net& net, const Invariant& y) {
+  std::vector<std::int64_t> sum(net.transitions().size(), 0);
+  for (const auto& [k, w] : y.weights) {
+    if (w <= 0 || k >= net.placeSlots().size()) return false;
+  }
+  for (const Term& term : net.terms()) {
+    for (const auto& [k, w] : y.weights) {
+      if (k != term.place_slot) continue;
+      if (term.kind == TermKind::Input) sum[term.transition] -= w * term.weight;
+      if (term.kind == TermKind::Output) sum[term.transition] += w * term.weight;
+    }
+  }
+  return !y.weights.empty() && std::all_of(sum.begin(), sum.end(), [](std::int64_t v) { return v == 0; });
+}
+
+bool isTInvariant(const Net& net, const Invariant& x) {
+  std::vector<std::int64_t> sum(net.placeSlots().size(), 0);
+  for (const auto& [k, w] : x.weights) {
+    if (w <= 0 || k >= net.transitions().size()) return false;
+    for (const Term& term : net.termsOf(k)) {
+      if (term.kind == TermKind::Input) sum[term.place_slot] -= w * term.weight;
+      if (term.kind == TermKind::Output) sum[term.place_slot] += w * term.weight;
+    }
+  }
+  return !x.weights.empty() && std::all_of(sum.begin(), sum.end(), [](std::int64_t v) { return v == 0; });
+}
+
+std::vector<CycleBound> cycleBounds(const Net& net, const Invariants& invariants, std::span<const double> seconds) {
+  std::vector<CycleBound> out;
+  std::vector<std::int64_t> y(net.placeSlots().size());
+  for (std::size_t i = 0; i < invariants.p.size(); ++i) {
+    std::fill(y.begin(), y.end(), 0);
+    CycleBound b;
+    b.invariant = i;
+    for (const auto& [k, w] : invariants.p[i].weights) {
+      y[k] = w;
+      b.tokens += w * net.placeSlots()[k].initial;
+    }
+    if (b.tokens <= 0) continue;
+    double work = 0.0;
+    for (TransitionId t = 0; t < net.transitions().size(); ++t) {
+      std::int64_t taken = 0;
+      for (const Term& term : net.termsOf(t)) {
+        if (term.kind == TermKind::Input) taken += y[term.place_slot] * term.weight;
+      }
+      if (taken == 0) continue;
+      b.transitions.push_back(t);
+      work += (t < seconds.size() ? seconds[t] : 0.0) * static_cast<double>(taken);
+    }
+    if (b.transitions.empty()) continue;
+    b.seconds = work / static_cast<double>(b.tokens);
+    out.push_back(std::move(b));
+  }
+  std::stable_sort(out.begin(), out.end(), [](const CycleBound& x, const CycleBound& z) { return x.seconds > z.seconds; });
+  return out;
+}
+
+double meanSeconds(const Duration& duration) {
+  switch (duration.law) {
+    case Duration::Law::Uniform:
+      return 0.5 * (duration.a + duration.b);
+    case Duration::Law::Fixed:
+    case Duration::Law::Normal:
+    case Duration::Law::Exponential:
+      break;
+  }
+  return duration.a;
+}
+
+std::string placeSlotName(const Net& net, PlaceSlotId ps) {
+  const PlaceSlot& s = net.placeSlots()[ps];
+  const std::string& name = net.places()[s.place].name;
+  return s.slot == kDefaultSlot ? name : name + "." + slotName(s.slot);
+}
+
+}  // namespace gdpn::net

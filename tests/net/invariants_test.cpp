@@ -1,0 +1,203 @@
+// P- and T-invariants against nets whose invariants are known in closed form; every
+// invariant reported is checked to really be one; structural properties and cycle-time bounds.
+
+#include "gdpn/net/invariants.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "gdpn/net/analysis.h"
+#include "gdpn/net/builder.h"
+#include "gdpn/net/compile.h"
+#include "gdpn/net/pnml.h"
+
+namespace gdpn::net {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kConformance = fs::path(GDPN_SOURCE_DIR) / ".." / "shared" / "conformance" / "pnml";
+
+std::shared_ptr<const Net> loadNet(const std::string& model) {
+  core::Diagnostics diags;
+  auto spec = loadPnml((kConformance / (model + ".pnml")).string(), diags);
+  EXPECT_TRUE(spec) << diags.str();
+  if (!spec) return nullptr;
+  auto net = compile(*spec, diags);
+  EXPECT_TRUE(net) << diags.str();
+  return net;
+}
+
+/// The invariant's support as place (or transition) names, without the page prefix.
+std::set<std::string> support(const Net& net, const Invariant& inv, bool places) {
+  std::set<std::string> out;
+  for (const auto& [k, w] : inv.weights) {
+    std::string n = places ? placeSlotName(net, k) : net.transitions()[k].name;
+    out.insert(n.substr(n.find('/') + 1));
+  }
+  return out;
+}
+
+void expectAllReal(const Net& net, const Invariants& inv) {
+  for (const auto& y : inv.p) EXPECT_TRUE(isPInvariant(net, y));
+  for (const auto& x : inv.t) EXPECT_TRUE(isTInvariant(net, x));
+  // minimal: no support contains another
+  for (std::size_t i = 0; i < inv.p.size(); ++i) {
+    for (std::size_t j = 0; j < inv.p.size(); ++j) {
+      if (i == j) continue;
+      std::set<std::uint32_t> a, b;
+      for (auto [k, w] : inv.p[i].weights) a.insert(k);
+      for (auto [k, w] : inv.p[j].weights) b.insert(k);
+      EXPECT_FALSE(std::includes(a.begin(), a.end(), b.begin(), b.end())) << i << " contains " << j;
+    }
+  }
+}
+
+TEST(Invariants, DiningPhilosophersHaveOnePerForkAndOnePerPhilosopher) {
+  // Philosophers-PT-000005: each philosopher's states sum to one, and each fork is either on
+  // the table or in one of its two neighbours' hands: 2N minimal P-invariants of weight 1
+  auto net = loadNet("Philosophers-PT-000005");
+  ASSERT_TRUE(net);
+  const Invariants inv = invariants(*net);
+  ASSERT_TRUE(inv.complete);
+  expectAllReal(*net, inv);
+  EXPECT_EQ(inv.p.size(), 10u);
+  for (const auto& y : inv.p) {
+    for (auto [k, w] : y.weights) EXPECT_EQ(w, 1);
+  }
+  EXPECT_TRUE(inv.conservative);
+  EXPECT_TRUE(inv.structurally_bounded);
+  // every place bounded by one, as the state space confirms
+  for (auto b : inv.bound) EXPECT_EQ(b, 1);
+  // T-invariants: each philosopher's eating cycle
+  // T-invariants: each philosopher's meal, taking the left fork first or the right one
+  EXPECT_EQ(inv.t.size(), 10u);
+  for (const auto& x : inv.t) EXPECT_EQ(x.weights.size(), 3u);
+  EXPECT_TRUE(inv.consistent);
+}
+
+TEST(Invariants, AStateMachineHasOneInvariantAndItsCycles) {
+  // a ring of three places with a chord: P-invariant p1+p2+p3; T-invariants: both cycles
+  NetBuilder b;
+  const auto p1 = b.addPlace("p1"), p2 = b.addPlace("p2"), p3 = b.addPlace("p3");
+  b.setSlot(p1, kDefaultSlot, SlotKind::Control, kUnbounded, 2);
+  const auto t1 = b.addTransition("t1"), t2 = b.addTransition("t2"), t3 = b.addTransition("t3"),
+             t4 = b.addTransition("t4");
+  b.addInput(p1, t1), b.addOutput(t1, p2);
+  b.addInput(p2, t2), b.addOutput(t2, p3);
+  b.addInput(p3, t3), b.addOutput(t3, p1);
+  b.addInput(p2, t4), b.addOutput(t4, p1);
+  auto net = b.freeze();
+  const Invariants inv = invariants(*net);
+  expectAllReal(*net, inv);
+  ASSERT_EQ(inv.p.size(), 1u);
+  EXPECT_EQ(support(*net, inv.p[0], true), (std::set<std::string>{"p1", "p2", "p3"}));
+  ASSERT_EQ(inv.t.size(), 2u);
+  EXPECT_EQ(support(*net, inv.t[0], false), (std::set<std::string>{"t1", "t2", "t3"}));
+  EXPECT_EQ(support(*net, inv.t[1], false), (std::set<std::string>{"t1", "t4"}));
+  EXPECT_EQ(inv.bound, (std::vector<std::int64_t>{2, 2, 2}));
+}
+
+TEST(Invariants, WeightsAreFoundWhereArcsCarryThem) {
+  // t: 2 a -> b; u: b -> 2 a. Invariant a + 2 b.
+  NetBuilder b;
+  const auto a = b.addPlace("a"), c = b.addPlace("b");
+  b.setSlot(a, kDefaultSlot, SlotKind::Control, kUnbounded, 4);
+  const auto t = b.addTransition("t"), u = b.addTransition("u");
+  b.addInput(a, t, kDefaultSlot, 2), b.addOutput(t, c);
+  b.addInput(c, u), b.addOutput(u, a, kDefaultSlot, 2);
+  auto net = b.freeze();
+  const Invariants inv = invariants(*net);
+  expectAllReal(*net, inv);
+  ASSERT_EQ(inv.p.size(), 1u);
+  EXPECT_EQ(inv.p[0].weights, (std::vector<std::pair<std::uint32_t, std::int64_t>>{{0, 1}, {1, 2}}));
+  EXPECT_EQ(inv.bound, (std::vector<std::int64_t>{4, 2}));
+  ASSERT_EQ(inv.t.size(), 1u);
+  EXPECT_EQ(inv.t[0].weights, (std::vector<std::pair<std::uint32_t, std::int64_t>>{{0, 1}, {1, 1}}));
+}
+
+TEST(Invariants, AConsumingNetIsStructurallyBoundedButNotConservative) {
+  // t: a -> b + c; u: b + c -> (nothing). No P-invariant covers a, yet a + b (and a + c)
+  // never grow: structurally bounded, not conservative. A producer is neither.
+  NetBuilder b;
+  const auto a = b.addPlace("a"), x = b.addPlace("b"), y = b.addPlace("c");
+  b.setSlot(a, kDefaultSlot, SlotKind::Control, kUnbounded, 3);
+  const auto t = b.addTransition("t"), u = b.addTransition("u");
+  b.addInput(a, t), b.addOutput(t, x), b.addOutput(t, y);
+  b.addInput(x, u), b.addInput(y, u);
+  auto net = b.freeze();
+  const Invariants inv = invariants(*net);
+  EXPECT_FALSE(inv.conservative);
+  EXPECT_TRUE(inv.structurally_bounded);
+  EXPECT_EQ(inv.bound, (std::vector<std::int64_t>{3, 3, 3}));
+  EXPECT_TRUE(inv.t.empty());
+
+  NetBuilder g;
+  const auto p = g.addPlace("p");
+  const auto q = g.addPlace("q");
+  const auto grow = g.addTransition("grow");
+  g.addInput(p, grow), g.addOutput(grow, p), g.addOutput(grow, q);
+  auto producer = g.freeze();
+  const Invariants pi = invariants(*producer);
+  EXPECT_FALSE(pi.structurally_bounded);
+  EXPECT_EQ(pi.bound, (std::vector<std::int64_t>{0, -1}));
+}
+
+TEST(Invariants, EveryReportedInvariantIsRealOnTheConformanceNets) {
+  for (const char* model : {"Philosophers-PT-000010", "Dekker-PT-010", "FMS-PT-00002", "Kanban-PT-00005",
+                            "SwimmingPool-PT-02", "RobotManipulation-PT-00002", "TokenRing-PT-005",
+                            "CircularTrains-PT-012", "ERK-PT-000001", "ResAllocation-PT-R002C002"}) {
+    auto net = loadNet(model);
+    ASSERT_TRUE(net);
+    const Invariants inv = invariants(*net);
+    EXPECT_TRUE(inv.complete) << model;
+    expectAllReal(*net, inv);
+    // the bounds from invariants hold in the state space (the two largest are for benchmarks)
+    if (std::string(model).starts_with("Kanban") || std::string(model).starts_with("Swimming")) continue;
+    const StateSpace s = explore(*net);
+    ASSERT_TRUE(s.complete) << model;
+    for (PlaceSlotId ps = 0; ps < net->placeSlots().size(); ++ps) {
+      const PlaceId place = net->placeSlots()[ps].place;
+      if (inv.bound[ps] >= 0) {
+        EXPECT_LE(s.place_bound[place], inv.bound[ps]) << model << " " << placeSlotName(*net, ps);
+      }
+    }
+  }
+}
+
+TEST(CycleBounds, TwoCyclesGiveBothTimesAndTheLargerBounds) {
+  // A: 1.5 + 2.5 s on one token = 4 s; B: 0.25 + 0.5 + 0.25 s on one token = 1 s; C: three
+  // transitions of 1 s sharing two tokens = 1.5 s
+  NetBuilder b;
+  auto ring = [&](const std::string& name, std::vector<double> seconds, std::int64_t tokens) {
+    std::vector<PlaceId> places;
+    for (std::size_t i = 0; i < seconds.size(); ++i) places.push_back(b.addPlace(name + "p" + std::to_string(i)));
+    b.setSlot(places[0], kDefaultSlot, SlotKind::Control, kUnbounded, tokens);
+    for (std::size_t i = 0; i < seconds.size(); ++i) {
+      Duration d;
+      d.a = seconds[i];
+      const auto t = b.addTransition(name + "t" + std::to_string(i), d);
+      b.addInput(places[i], t);
+      b.addOutput(t, places[(i + 1) % places.size()]);
+    }
+  };
+  ring("a", {1.5, 2.5}, 1);
+  ring("b", {0.25, 0.5, 0.25}, 1);
+  ring("c", {1.0, 1.0, 1.0}, 2);
+  auto net = b.freeze();
+  const Invariants inv = invariants(*net);
+  std::vector<double> seconds;
+  for (const auto& t : net->transitions()) seconds.push_back(meanSeconds(t.duration));
+  const auto bounds = cycleBounds(*net, inv, seconds);
+  ASSERT_EQ(bounds.size(), 3u);
+  EXPECT_DOUBLE_EQ(bounds[0].seconds, 4.0);
+  EXPECT_DOUBLE_EQ(bounds[1].seconds, 1.5);
+  EXPECT_EQ(bounds[1].tokens, 2);
+  EXPECT_DOUBLE_EQ(bounds[2].seconds, 1.0);
+  EXPECT_EQ(bounds[2].transitions.size(), 3u);
+}
+
+}  // namespace
+}  // namespace gdpn::net
