@@ -21,6 +21,8 @@
 #include "gdpn/net/analysis.h"
 #include "gdpn/net/compile.h"
 #include "gdpn/net/pnml.h"
+#include "gdpn/render/capture.h"
+#include "gdpn/scene/mesh.h"
 #include "gdpn/script/engine.h"
 
 namespace {
@@ -34,6 +36,36 @@ void onSigint(int) {
   g_interrupted.store(true);
   gdpn::script::requestInterrupt();  // a script running now raises KeyboardInterrupt
 }
+
+class ProgressBar {
+ public:
+  explicit ProgressBar(bool on) : on_(on) {}
+  void operator()(std::int64_t done, std::int64_t total) {
+    if (!on_) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_ < std::chrono::milliseconds(100) && done != total) return;
+    last_ = now;
+    if (total > 0) {
+      const int width = 30;
+      const double f = std::min(1.0, static_cast<double>(done) / static_cast<double>(total));
+      const int filled = static_cast<int>(f * width);
+      std::fprintf(stderr, "\r[%s%s] %5.1f%%  step %lld/%lld", std::string(static_cast<std::size_t>(filled), '#').c_str(),
+                   std::string(static_cast<std::size_t>(width - filled), ' ').c_str(), 100.0 * f,
+                   static_cast<long long>(done), static_cast<long long>(total));
+    } else {
+      std::fprintf(stderr, "\rstep %lld", static_cast<long long>(done));
+    }
+    drawn_ = true;
+  }
+  ~ProgressBar() {
+    if (drawn_) std::fprintf(stderr, "\r\033[K");
+  }
+
+ private:
+  bool on_;
+  bool drawn_ = false;
+  std::chrono::steady_clock::time_point last_{};
+};
 
 /// Loads and compiles MODEL (file or folder), printing diagnostics; nullptr on error.
 std::unique_ptr<model::Simulation> open(const std::string& arg, std::optional<std::uint64_t> seed,
@@ -66,6 +98,58 @@ int check(const std::string& arg) {
   }
   std::cout << *path << ": ok (" << net->places().size() << " places, " << net->transitions().size()
             << " transitions, " << net->terms().size() << " arc terms)\n";
+  return 0;
+}
+
+struct CaptureArgs {
+  std::string model;
+  std::string out;
+  std::string size = "1280x720";
+  double at = 0.0;
+  double until = 10.0;
+  std::optional<std::uint64_t> seed;
+  gdpn::render::CaptureOptions options;
+};
+
+/// `gdpn render` (movie = false) and `gdpn record` (movie = true).
+int capture(CaptureArgs a, bool movie) {
+  const auto size = gdpn::render::parseSize(a.size);
+  if (!size) {
+    std::cerr << "error: --size '" << a.size << "' is not WIDTHxHEIGHT (for example 1280x720)\n";
+    return 2;
+  }
+  a.options.width = size->first;
+  a.options.height = size->second;
+  if (movie && (a.options.width % 2 != 0 || a.options.height % 2 != 0)) {
+    std::cerr << "error: a movie needs an even width and height, not " << a.size << "\n";
+    return 2;
+  }
+  auto sim = open(a.model, a.seed, 0.0);
+  if (!sim) return 1;
+  std::string error;
+  bool ok = false;
+  if (!movie) {
+    ok = gdpn::render::renderAt(*sim, a.at, a.options, a.out, error);
+    if (ok) std::cout << a.out << ": " << a.options.width << "x" << a.options.height << " at t = " << sim->kernel().now() << " s\n";
+  } else {
+    std::signal(SIGINT, onSigint);
+    gdpn::render::RecordResult result;
+    {
+      ProgressBar bar(isatty(STDERR_FILENO));
+      ok = gdpn::render::record(*sim, a.until, a.options, a.out, std::ref(bar), &g_interrupted, result, error);
+    }
+    std::signal(SIGINT, SIG_DFL);
+    if (ok) {
+      std::cout << a.out << ": " << result.frames << " frames of " << a.options.width << "x" << a.options.height
+                << " at " << a.options.fps << " fps (" << result.outcome.steps << " steps, "
+                << model::stopReasonName(result.outcome.reason) << ")\n";
+    }
+  }
+  if (!ok) {
+    std::cerr << (error.find(": error: ") != std::string::npos ? "" : a.out + ": error: ") << error
+              << (error.ends_with('\n') ? "" : "\n");
+    return 1;
+  }
   return 0;
 }
 
@@ -123,9 +207,18 @@ int analyze(const AnalyzeArgs& a) {
   return result.space.complete ? 0 : 3;
 }
 
+bool isMeshFile(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const auto& known = gdpn::scene::meshExtensions();
+  return std::find(known.begin(), known.end(), ext) != known.end();
+}
+
 int convert(const std::string& in, const std::string& out) {
   Diagnostics diags;
-  if (in.ends_with(".pnml")) {
+  if (isMeshFile(in)) {
+    if (auto m = model::meshModel(in, out, diags)) model::saveModel(*m, out, diags);
+  } else if (in.ends_with(".pnml")) {
     auto spec = gdpn::net::loadPnml(in, diags);
     if (spec && !gdpn::net::compile(*spec, diags)) spec.reset();
     if (spec) {
@@ -149,36 +242,6 @@ int convert(const std::string& in, const std::string& out) {
   diags.print(std::cerr);
   return diags.hasErrors() ? 1 : 0;
 }
-
-class ProgressBar {
- public:
-  explicit ProgressBar(bool on) : on_(on) {}
-  void operator()(std::int64_t done, std::int64_t total) {
-    if (!on_) return;
-    const auto now = std::chrono::steady_clock::now();
-    if (now - last_ < std::chrono::milliseconds(100) && done != total) return;
-    last_ = now;
-    if (total > 0) {
-      const int width = 30;
-      const double f = std::min(1.0, static_cast<double>(done) / static_cast<double>(total));
-      const int filled = static_cast<int>(f * width);
-      std::fprintf(stderr, "\r[%s%s] %5.1f%%  step %lld/%lld", std::string(static_cast<std::size_t>(filled), '#').c_str(),
-                   std::string(static_cast<std::size_t>(width - filled), ' ').c_str(), 100.0 * f,
-                   static_cast<long long>(done), static_cast<long long>(total));
-    } else {
-      std::fprintf(stderr, "\rstep %lld", static_cast<long long>(done));
-    }
-    drawn_ = true;
-  }
-  ~ProgressBar() {
-    if (drawn_) std::fprintf(stderr, "\r\033[K");
-  }
-
- private:
-  bool on_;
-  bool drawn_ = false;
-  std::chrono::steady_clock::time_point last_{};
-};
 
 struct RunArgs {
   std::string model;
@@ -286,14 +349,41 @@ int main(int argc, char** argv) {
   analyze_cmd->add_flag("--progress", analyze_args.progress,
                         "print a progress line every 250 ms even when stderr is not a terminal");
 
+  CaptureArgs render_args;
+  auto* render_cmd = app.add_subcommand("render", "Run a model headless to a time and save a picture of its plant");
+  render_cmd->add_option("MODEL", render_args.model, "a .gdpn.yaml file, or a folder holding one")->required();
+  render_cmd->add_option("--at", render_args.at, "model time of the picture, seconds")->check(CLI::NonNegativeNumber);
+  auto add_look = [](CLI::App* cmd, CaptureArgs& args) {
+    cmd->add_option("--camera", args.options.camera, "path of the Camera node (default: the scene's first, or a framing view)");
+    cmd->add_option("--size", args.size, "WIDTHxHEIGHT in pixels (default 1280x720)");
+    cmd->add_option("--samples", args.options.samples, "samples per pixel for anti-aliasing (default 4)")->check(CLI::Range(1, 16));
+    cmd->add_flag("--sensors", args.options.sensors, "draw sensor volumes and rays");
+    cmd->add_flag("--joints", args.options.joints, "draw joint axes");
+    cmd->add_option("--seed", args.seed, "the random seed (default: the model's)");
+    cmd->add_option("-o,--output", args.out, "the file to write")->required();
+  };
+  add_look(render_cmd, render_args);
+  CaptureArgs record_args;
+  auto* record_cmd = app.add_subcommand("record", "Run a model headless and encode a movie of its plant (through ffmpeg)");
+  record_cmd->add_option("MODEL", record_args.model, "a .gdpn.yaml file, or a folder holding one")->required();
+  record_cmd->add_option("--until", record_args.until, "model time at which the movie ends, seconds (default 10)")
+      ->check(CLI::PositiveNumber);
+  record_cmd->add_option("--fps", record_args.options.fps, "frames per second of model time (default 30)")
+      ->check(CLI::Range(0.1, 1000.0));
+  add_look(record_cmd, record_args);
+
   std::string convert_in, convert_out;
-  auto* convert_cmd = app.add_subcommand("convert", "Convert a PNML net to a model file, or a model's P/T net to PNML");
-  convert_cmd->add_option("IN", convert_in, "a .pnml file, or a .gdpn.yaml model")->required();
+  auto* convert_cmd = app.add_subcommand(
+      "convert", "Convert a PNML net to a model file (and back), or a mesh file to a model holding it as a subtree");
+  convert_cmd->add_option("IN", convert_in, "a .pnml file, a .gdpn.yaml model, or a mesh (obj stl 3ds gltf glb dae ply wrl iv)")
+      ->required();
   convert_cmd->add_option("OUT", convert_out, "the .gdpn.yaml or .pnml to write")->required();
 
   CLI11_PARSE(app, argc, argv);
   if (convert_cmd->parsed()) return convert(convert_in, convert_out);
   if (analyze_cmd->parsed()) return analyze(analyze_args);
+  if (render_cmd->parsed()) return capture(render_args, false);
+  if (record_cmd->parsed()) return capture(record_args, true);
   if (check_cmd->parsed()) return check(check_model);
   if (run_cmd->parsed()) return run(run_args);
   return 2;

@@ -417,6 +417,7 @@ RunOutcome Simulation::run(const RunLimits& limits, const ProgressFn& progress,
       break;
     }
     step();
+    if (step_hook_) step_hook_();
     if (progress && (kernel_->steps() & 4095) == 0) progress(kernel_->steps() - first, total);
   }
   if (auto halt = scriptHalt(); halt && outcome.reason == StopReason::Until) outcome = *halt;

@@ -13,6 +13,7 @@
 
 #include "gdpn/core/assert.h"
 #include "gdpn/scene/actions.h"
+#include "gdpn/scene/mesh.h"
 #include "gdpn/scene/terrain.h"
 
 namespace gdpn::physics {
@@ -22,6 +23,95 @@ using core::Pose;
 using core::Quat;
 using core::Vec3;
 using scene::Node;
+
+/// The convex hull of `points` (x y z each) as ODE's convex geometry wants it: planes
+/// (a b c d with unit normals, outward), the hull's points, and polygons (3 i j k per face).
+/// Incremental: each point outside the hull so far replaces the faces it sees. Empty when
+/// the points are flat.
+void convexHull(const std::vector<double>& points, std::vector<double>& planes, std::vector<double>& out_points,
+                std::vector<unsigned>& polygons) {
+  const std::size_t n = points.size() / 3;
+  auto P = [&](std::size_t i) { return Vec3{points[3 * i], points[3 * i + 1], points[3 * i + 2]}; };
+  if (n < 4) return;
+  core::Aabb box;
+  for (std::size_t i = 0; i < n; ++i) box.add(P(i));
+  const Vec3 extent = box.hi - box.lo;
+  const double eps = 1e-9 * std::max({extent.x, extent.y, extent.z, 1e-12});
+  // a first tetrahedron: two far points, the farthest from their line, the farthest from their plane
+  std::size_t a = 0, b = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (P(i).x < P(a).x) a = i;
+    if (P(i).x > P(b).x) b = i;
+  }
+  if ((P(b) - P(a)).length() <= eps) {
+    for (std::size_t i = 0; i < n; ++i) {
+      if ((P(i) - P(a)).length() > (P(b) - P(a)).length()) b = i;
+    }
+  }
+  std::size_t c = a, d = a;
+  double best = eps;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double dist = (P(i) - P(a)).cross(P(b) - P(a)).length();
+    if (dist > best) best = dist, c = i;
+  }
+  if (c == a) return;
+  Vec3 normal = (P(b) - P(a)).cross(P(c) - P(a)).normalized();
+  best = eps;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double dist = std::abs(normal.dot(P(i) - P(a)));
+    if (dist > best) best = dist, d = i;
+  }
+  if (d == a) return;
+  struct Face {
+    std::size_t v[3];
+    Vec3 normal;
+    double offset;
+    bool alive = true;
+  };
+  std::vector<Face> faces;
+  const Vec3 inside = (P(a) + P(b) + P(c) + P(d)) * 0.25;
+  auto add = [&](std::size_t i, std::size_t j, std::size_t k) {
+    Face f{{i, j, k}, (P(j) - P(i)).cross(P(k) - P(i)).normalized(), 0.0};
+    if (f.normal.dot(inside - P(i)) > 0) {  // face the outside
+      std::swap(f.v[1], f.v[2]);
+      f.normal = -f.normal;
+    }
+    f.offset = f.normal.dot(P(f.v[0]));
+    faces.push_back(f);
+  };
+  add(a, b, c), add(a, b, d), add(a, c, d), add(b, c, d);
+  for (std::size_t p = 0; p < n; ++p) {
+    const Vec3 x = P(p);
+    std::vector<std::size_t> seen;
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      if (faces[f].alive && faces[f].normal.dot(x) - faces[f].offset > eps) seen.push_back(f);
+    }
+    if (seen.empty()) continue;
+    // the horizon: edges of seen faces whose reverse is not an edge of another seen face
+    std::map<std::pair<std::size_t, std::size_t>, int> edges;
+    for (auto f : seen) {
+      for (int e = 0; e < 3; ++e) edges[{faces[f].v[e], faces[f].v[(e + 1) % 3]}] += 1;
+      faces[f].alive = false;
+    }
+    for (const auto& [edge, count] : edges) {
+      if (edges.count({edge.second, edge.first}) != 0) continue;
+      Face f{{edge.first, edge.second, p}, (P(edge.second) - P(edge.first)).cross(x - P(edge.first)).normalized(), 0.0};
+      f.offset = f.normal.dot(P(edge.first));
+      faces.push_back(f);
+    }
+  }
+  std::map<std::size_t, unsigned> index;
+  for (const auto& f : faces) {
+    if (!f.alive) continue;
+    planes.insert(planes.end(), {f.normal.x, f.normal.y, f.normal.z, f.offset});
+    polygons.push_back(3);
+    for (auto v : f.v) {
+      auto [it, added] = index.emplace(v, static_cast<unsigned>(index.size()));
+      if (added) out_points.insert(out_points.end(), {P(v).x, P(v).y, P(v).z});
+      polygons.push_back(it->second);
+    }
+  }
+}
 
 constexpr double kHuge = 1e299;  // field values beyond this mean "no limit"
 
@@ -99,6 +189,17 @@ struct World::Impl {
   std::vector<Sensor> sensors;
   std::deque<std::vector<double>> heightfields;     // the heights ODE reads (it keeps pointers)
   std::vector<dHeightfieldDataID> heightfield_data;
+  /// A Mesh node's geometry as ODE reads it (ODE keeps pointers into these arrays).
+  struct MeshGeometry {
+    std::vector<double> points;        // scaled vertices, x y z
+    std::vector<dTriIndex> indices;    // three per triangle
+    core::Aabb box;                    // around the points
+    std::vector<double> planes;        // convex hull: a b c d per face
+    std::vector<double> hull_points;   // its vertices
+    std::vector<unsigned> polygons;    // 3 i j k per face
+  };
+  std::unordered_map<scene::NodeHandle, MeshGeometry> meshes;
+  std::vector<dTriMeshDataID> trimesh_data;
   // geometry data: surfaces are 1..n; a sensor's data has this bit set over its index
   static constexpr std::uintptr_t kSensorTag = std::uintptr_t{1} << 62;
   std::string model_dir;
@@ -110,6 +211,7 @@ struct World::Impl {
     if (space) dSpaceDestroy(space);
     space = nullptr;
     for (auto d : heightfield_data) dGeomHeightfieldDataDestroy(d);
+    for (auto d : trimesh_data) dGeomTriMeshDataDestroy(d);
     if (contacts) dJointGroupDestroy(contacts);
     if (space) dSpaceDestroy(space);
     if (world) dWorldDestroy(world);
@@ -331,6 +433,42 @@ struct World::Impl {
     });
   }
 
+  /// The geometry of Mesh node `n` (its file read, its part chosen, scaled), made once.
+  const MeshGeometry* meshOf(Node& n, const std::string& dir, core::Diagnostics& diags) {
+    if (auto it = meshes.find(n.handle()); it != meshes.end()) return &it->second;
+    const std::string file = n.text("file");
+    const auto at = n.field_locs[static_cast<std::size_t>(n.type().fieldIndex("file"))];
+    const auto path = (std::filesystem::path(dir) / file).string();
+    std::string why;
+    auto data = file.empty() ? nullptr : scene::loadMesh(path, why);
+    if (!data) {
+      diags.error(at.line > 0 ? at : n.loc, "cannot read the mesh file '" + file + "': " + (file.empty() ? "no file given" : why));
+      return nullptr;
+    }
+    const auto part = n.number("part");
+    if (part >= static_cast<double>(data->parts.size())) {
+      const auto ploc = n.field_locs[static_cast<std::size_t>(n.type().fieldIndex("part"))];
+      diags.error(ploc.line > 0 ? ploc : n.loc, "the mesh file '" + file + "' has " + std::to_string(data->parts.size()) +
+                                                    " parts: 'part' must be below that, or -1 for all");
+      return nullptr;
+    }
+    MeshGeometry geo;
+    const Vec3 s = n.vec3("scale").times(n.world_scale);
+    for (std::size_t i = 0; i < data->parts.size(); ++i) {
+      if (part >= 0 && static_cast<std::size_t>(part) != i) continue;
+      const auto& p = data->parts[i];
+      const auto base = static_cast<dTriIndex>(geo.points.size() / 3);
+      for (std::size_t k = 0; k + 2 < p.positions.size(); k += 3) {
+        const Vec3 v = Vec3{p.positions[k], p.positions[k + 1], p.positions[k + 2]}.times(s);
+        geo.points.insert(geo.points.end(), {v.x, v.y, v.z});
+        geo.box.add(v);
+      }
+      for (auto idx : p.indices) geo.indices.push_back(base + static_cast<dTriIndex>(idx));
+    }
+    convexHull(geo.points, geo.planes, geo.hull_points, geo.polygons);
+    return &(meshes[n.handle()] = std::move(geo));
+  }
+
   /// Mass from the body's own shapes (not those of bodies below it), centre of mass at the
   /// ODE body's origin.
   void finishBody(Body& body) {
@@ -358,6 +496,17 @@ struct World::Impl {
         const double h = n.number("height") * s.z;
         if (r <= 0 || h <= 0) return;
         dMassSetCylinder(&sm, density, 3, r, h);
+      } else if (t == "Mesh") {
+        // a mesh weighs as its bounding box (open meshes have no volume of their own); a
+        // mesh that cannot be read is reported when its geometry is made
+        core::Diagnostics later;
+        const MeshGeometry* mesh = meshOf(n, model_dir, later);
+        if (mesh == nullptr) return;
+        const Vec3 size = mesh->box.hi - mesh->box.lo;
+        if (size.x <= 0 || size.y <= 0 || size.z <= 0) return;
+        dMassSetBox(&sm, density, size.x, size.y, size.z);
+        const Vec3 c = (mesh->box.lo + mesh->box.hi) * 0.5;
+        dMassTranslate(&sm, c.x, c.y, c.z);
       } else {
         return;
       }
@@ -385,6 +534,7 @@ struct World::Impl {
     const Vec3 s = n.world_scale;
     Body* body = owner(n);
     dGeomID g = nullptr;
+    Pose geom_pose = n.world;  // where the geometry goes (a mesh's box sits on the mesh's centre)
     if (t == "Cube") {
       const Vec3 size = n.vec3("size").times(s);
       if (size.x <= 0 || size.y <= 0 || size.z <= 0) return true;
@@ -434,16 +584,27 @@ struct World::Impl {
       dGeomSetPosition(g, pose.position.x, pose.position.y, pose.position.z);
       dGeomSetQuaternion(g, q);
     } else if (t == "Mesh") {
-      const std::string file = n.text("file");
-      const auto at = n.field_locs[static_cast<std::size_t>(n.type().fieldIndex("file"))];
-      const auto path = std::filesystem::path(dir) / file;
-      std::error_code ec;
-      if (file.empty() || !std::filesystem::is_regular_file(path, ec)) {
-        diags.error(at.line > 0 ? at : n.loc, "cannot read the mesh file '" + file + "' (looked for " +
-                                                  path.string() + ")");
-        return false;
+      const auto mesh = meshOf(n, dir, diags);
+      if (!mesh) return false;
+      const std::string& kind = n.text("collision");
+      if (kind == "box" || mesh->points.size() < 12 || (kind == "convex" && mesh->planes.empty())) {
+        const Vec3 size = mesh->box.hi - mesh->box.lo;
+        if (size.x <= 0 || size.y <= 0 || size.z <= 0) return true;
+        g = dCreateBox(space, size.x, size.y, size.z);
+        geom_pose = n.world * Pose{(mesh->box.lo + mesh->box.hi) * 0.5, {}};
+      } else if (kind == "convex") {
+        g = dCreateConvex(space, mesh->planes.data(), static_cast<unsigned>(mesh->planes.size() / 4),
+                          mesh->hull_points.data(), static_cast<unsigned>(mesh->hull_points.size() / 3),
+                          mesh->polygons.data());
+      } else {
+        dTriMeshDataID data = dGeomTriMeshDataCreate();
+        dGeomTriMeshDataBuildDouble(data, mesh->points.data(), 3 * sizeof(double),
+                                    static_cast<int>(mesh->points.size() / 3), mesh->indices.data(),
+                                    static_cast<int>(mesh->indices.size()), 3 * sizeof(dTriIndex));
+        dGeomTriMeshDataPreprocess2(data, 1U << dTRIDATAPREPROCESS_BUILD_FACE_ANGLES, nullptr);
+        trimesh_data.push_back(data);
+        g = dCreateTriMesh(space, data, nullptr, nullptr, nullptr);
       }
-      return true;  // TODO(#7): load the triangles and collide with them
     } else {
       return true;
     }
@@ -467,13 +628,14 @@ struct World::Impl {
     dGeomSetData(g, reinterpret_cast<void*>(surfaces.size()));  // 1-based: 0 means none
     geom_of[n.handle()] = g;
     if (t == "Plane" || t == "Terrain") return true;
-    const dQuaternion q = {n.world.rotation.w, n.world.rotation.x, n.world.rotation.y, n.world.rotation.z};
+    const Pose& at = geom_pose;
+    const dQuaternion q = {at.rotation.w, at.rotation.x, at.rotation.y, at.rotation.z};
     if (body) {
       dGeomSetBody(g, body->id);
-      dGeomSetOffsetWorldPosition(g, n.world.position.x, n.world.position.y, n.world.position.z);
+      dGeomSetOffsetWorldPosition(g, at.position.x, at.position.y, at.position.z);
       dGeomSetOffsetWorldQuaternion(g, q);
     } else {
-      dGeomSetPosition(g, n.world.position.x, n.world.position.y, n.world.position.z);
+      dGeomSetPosition(g, at.position.x, at.position.y, at.position.z);
       dGeomSetQuaternion(g, q);
     }
     return true;
@@ -717,6 +879,11 @@ B& need(B* b) {
 }  // namespace
 
 core::Vec3 World::velocity(const scene::Node& body) const { return v3(dBodyGetLinearVel(need(impl_->owner(body)).id)); }
+double World::mass(const scene::Node& body) const {
+  dMass m;
+  dBodyGetMass(need(impl_->owner(body)).id, &m);
+  return m.mass;
+}
 core::Vec3 World::angularVelocity(const scene::Node& body) const {
   return v3(dBodyGetAngularVel(need(impl_->owner(body)).id));
 }

@@ -77,7 +77,8 @@ void registerBuiltinNodes(TypeRegistry& r) {
               f("position", K::Vec3, V3{5, -5, 4}, "m", "eye position"),
               f("target", K::Vec3, V3{0, 0, 0}, "m", "the point looked at"),
               f("up", K::Vec3, V3{0, 0, 1}, "", "which way is up"),
-              f("fov", K::Float, 45.0, "deg", "vertical field of view", 1, 179)}));
+              f("fov", K::Float, 45.0, "deg", "vertical field of view", 1, 179),
+              f("speed", K::Float, 10.0, "deg/s", "how fast an orbit camera turns about its target")}));
   r.add(type("Fog", Category::Look, false, "fog over the whole scene",
              {choice("kind", {"linear", "exponential"}, "how it thickens"),
               f("color", K::Color, V3{0.7, 0.7, 0.7}, "", "colour", 0, 1),
@@ -95,8 +96,10 @@ void registerBuiltinNodes(TypeRegistry& r) {
              {f("normal", K::Vec3, V3{0, 0, 1}, "", "which way the plane faces")}));
   r.add(type("Mesh", Category::Shape, false, "triangles from a file",
              {f("file", K::File, std::string(), "", "mesh file (obj, stl, 3ds, gltf, dae, ply, wrl, iv)"),
+              f("part", K::Int, std::int64_t{-1}, "", "which part of the file (-1: all of them)", -1, 1e9),
               f("scale", K::Vec3, V3{1, 1, 1}, "", "scale factors", 1e-9, kInf),
-              choice("collision", {"trimesh", "box", "convex"}, "what the physics collides with")}));
+              choice("collision", {"trimesh", "box", "convex"}, "what the physics collides with: the triangles, "
+                     "their bounding box, or their convex hull")}));
   r.add(type("Terrain", Category::Shape, false,
              "ground from an elevation file (GeoTIFF or another DEM, or a greyscale image), centred on its origin",
              {f("file", K::File, std::string(), "", "elevation file, read through GDAL"),

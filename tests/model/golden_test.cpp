@@ -304,3 +304,60 @@ TEST(CliAnalyze, AnUnboundedNetNamesItsUnboundedPlaces) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CliRender, APictureAMovieAndTheirMistakes) {
+  const std::string png = (fs::temp_directory_path() / "gdpn_cli_render.png").string();
+  auto r = gdpn("render tests/data/render/cube_lit.gdpn.yaml --at 0.5 --size 64x48 -o " + png);
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find(": 64x48 at t = 0.5 s"), std::string::npos) << r.out;
+  EXPECT_TRUE(fs::exists(png));
+  fs::remove(png);
+  r = gdpn("render tests/data/render/cube_lit.gdpn.yaml --size 64by48 -o " + png);
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("error: --size '64by48' is not WIDTHxHEIGHT"), std::string::npos) << r.out;
+  r = gdpn("render tests/data/render/cube_lit.gdpn.yaml --camera nowhere -o " + png);
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("error: no Camera node at 'nowhere'"), std::string::npos) << r.out;
+  r = gdpn("render examples/basics/figure31 -o " + png);
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("error: the model has no scene to draw"), std::string::npos) << r.out;
+  r = gdpn("render tests/data/bad/mesh_corrupt.gdpn.yaml -o " + png);
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("mesh_corrupt.gdpn.yaml:4:18: error: cannot read the mesh file 'files/corrupt.ply'"),
+            std::string::npos)
+      << r.out;
+  EXPECT_FALSE(fs::exists(png));
+
+  const std::string mp4 = (fs::temp_directory_path() / "gdpn_cli_record.mp4").string();
+  r = gdpn("record tests/data/render/cube_lit.gdpn.yaml --until 1 --fps 10 --size 64x48 -o " + mp4);
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find(": 10 frames of 64x48 at 10 fps"), std::string::npos) << r.out;
+  fs::remove(mp4);
+  r = gdpn("record tests/data/render/cube_lit.gdpn.yaml --size 63x48 -o " + mp4);
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("error: a movie needs an even width and height"), std::string::npos) << r.out;
+}
+
+TEST(CliConvert, AMeshBecomesAModelWithItsSubtree) {
+  const auto dir = fs::temp_directory_path() / "gdpn_cli_convert";
+  fs::create_directories(dir);
+  std::ofstream((dir / "part.iv").string()) << "#Inventor V2.1 ascii\nSeparator { Material { diffuseColor 1 0 0 } Cube {} "
+                                               "Material { diffuseColor 0 0 1 } Sphere {} }\n";
+  auto r = gdpn("convert " + (dir / "part.iv").string() + " " + (dir / "part.gdpn.yaml").string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  std::ifstream in(dir / "part.gdpn.yaml");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("file: part.iv"), std::string::npos) << text;
+  EXPECT_NE(text.find("part: 1"), std::string::npos) << text;
+  EXPECT_NE(text.find("diffuse: [0, 0, 1]"), std::string::npos) << text;
+  r = gdpn("check " + (dir / "part.gdpn.yaml").string());
+  EXPECT_EQ(r.code, 0) << r.out;
+  r = gdpn("convert " + (dir / "missing.obj").string() + " " + (dir / "x.gdpn.yaml").string());
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("missing.obj: error: cannot read the mesh file: no such file"), std::string::npos) << r.out;
+  fs::remove_all(dir);
+}
+
+}  // namespace

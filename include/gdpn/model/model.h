@@ -71,6 +71,12 @@ std::string writeModel(const Model& model);
 /// file survives any failure. Returns false (with a diagnostic) when it could not.
 bool saveModel(const Model& model, const std::string& path, core::Diagnostics& diags);
 
+/// A model whose scene is the mesh file at `mesh` as a subtree (a Group named after the file,
+/// holding a Material and a Mesh node per part), to be saved at `out`: the Mesh nodes refer
+/// to the file relative to `out`'s folder. Nullopt with a diagnostic when the mesh cannot be
+/// read.
+std::optional<Model> meshModel(const std::string& mesh, const std::string& out, core::Diagnostics& diags);
+
 /// Reads an input file for a headless run (`gdpn run --input`): a list of events
 /// `{t: seconds, key: name, down: true}`, `{t: .., click: {from: [x,y,z], to: [x,y,z]}}` or
 /// `{t: .., viewpoint: [x,y,z]}`, returned in time order. Mistakes are located in `diags`.

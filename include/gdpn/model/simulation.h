@@ -102,12 +102,15 @@ class Simulation {
   /// Deletes `node` and its subtree from the plant: tokens that hold any of them leave the
   /// net, their bodies leave the physics, and the trace records it. The root stays.
   void deleteNode(scene::Node& node);
+  /// Calls `hook` after every step that run() takes (a recorder takes its frames there).
+  void setStepHook(std::function<void()> hook) { step_hook_ = std::move(hook); }
   /// Why the run must end now, if a script says so (an error, a timeout, an interrupt or
   /// sim.stop); nullopt while scripts are content.
   [[nodiscard]] std::optional<RunOutcome> scriptHalt() const;
 
  private:
   Simulation() = default;
+  std::function<void()> step_hook_;
   Model model_;
   std::shared_ptr<const net::Net> net_;
   std::unique_ptr<scene::Scene> scene_;

@@ -35,6 +35,8 @@ class World {
   [[nodiscard]] bool isBody(const scene::Node& node) const;
   /// A body's linear velocity, m/s (world frame).
   [[nodiscard]] core::Vec3 velocity(const scene::Node& body) const;
+  /// The mass of the body `body` belongs to, kg.
+  [[nodiscard]] double mass(const scene::Node& body) const;
   /// A body's angular velocity, rad/s (world frame).
   [[nodiscard]] core::Vec3 angularVelocity(const scene::Node& body) const;
   /// Sets a body's linear velocity, m/s.

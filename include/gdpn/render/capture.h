@@ -1,0 +1,47 @@
+#pragma once
+/// \file
+/// Pictures and movies of a running model, headless: `gdpn render` and `gdpn record`.
+
+#include <atomic>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "gdpn/model/simulation.h"
+#include "gdpn/render/renderer.h"
+
+namespace gdpn::render {
+
+/// How pictures are taken.
+struct CaptureOptions {
+  int width = 1280;         ///< pixels
+  int height = 720;         ///< pixels
+  int samples = 4;          ///< samples per pixel (anti-aliasing); 1 for none
+  std::string camera;       ///< path of the Camera node ("" : the scene's first, or a framing view)
+  bool sensors = false;     ///< draw sensor overlays
+  bool joints = false;      ///< draw joint axes
+  double fps = 30.0;        ///< movie frames per second
+};
+
+/// "1280x720" as width and height; nullopt when it is not two positive numbers.
+std::optional<std::pair<int, int>> parseSize(const std::string& text);
+
+/// What a recording made.
+struct RecordResult {
+  std::int64_t frames = 0;          ///< frames written
+  std::size_t triangles = 0;        ///< triangles drawn in the last frame
+  model::RunOutcome outcome;        ///< how the run ended
+};
+
+/// Runs `sim` to `at` seconds and writes the picture to `png`. False with `error` on failure.
+bool renderAt(model::Simulation& sim, double at, const CaptureOptions& options, const std::string& png,
+              std::string& error);
+
+/// Runs `sim` to `until` seconds at its own dt, taking a frame each 1/fps seconds of model
+/// time (the first at 0), and encodes them into `movie` through ffmpeg. False with `error` on
+/// failure (the run's own outcome is in `result`).
+bool record(model::Simulation& sim, double until, const CaptureOptions& options, const std::string& movie,
+            const model::ProgressFn& progress, const std::atomic<bool>* interrupt, RecordResult& result,
+            std::string& error);
+
+}  // namespace gdpn::render

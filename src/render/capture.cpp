@@ -1,0 +1,147 @@
+#include "gdpn/render/capture.h"
+
+#include <cmath>
+#include <functional>
+#include <filesystem>
+
+#include "gdpn/render/context.h"
+#include "gdpn/render/movie.h"
+
+namespace gdpn::render {
+
+std::optional<std::pair<int, int>> parseSize(const std::string& text) {
+  const auto x = text.find('x');
+  if (x == std::string::npos || x == 0 || x + 1 >= text.size()) return std::nullopt;
+  try {
+    std::size_t used = 0;
+    const int w = std::stoi(text.substr(0, x), &used);
+    if (used != x) return std::nullopt;
+    const int h = std::stoi(text.substr(x + 1), &used);
+    if (used != text.size() - x - 1 || w <= 0 || h <= 0 || w > 16384 || h > 16384) return std::nullopt;
+    return std::pair{w, h};
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+namespace {
+
+/// A headless context, a target and a renderer for one model.
+struct Studio {
+  std::unique_ptr<GlContext> context;
+  std::unique_ptr<Target> target;
+  std::unique_ptr<Renderer> renderer;
+  DrawOptions draw;
+
+  bool open(const model::Simulation& sim, const CaptureOptions& o, std::string& error) {
+    if (sim.plant() == nullptr) {
+      error = "the model has no scene to draw";
+      return false;
+    }
+    context = GlContext::createHeadless(error);
+    if (!context) return false;
+    target = std::make_unique<Target>(o.width, o.height, o.samples);
+    renderer = std::make_unique<Renderer>(std::filesystem::path(sim.model().path).parent_path().string());
+    draw.width = o.width;
+    draw.height = o.height;
+    draw.sensors = o.sensors;
+    draw.joints = o.joints;
+    return true;
+  }
+
+  bool shoot(const model::Simulation& sim, const CaptureOptions& o, std::vector<std::uint8_t>& rgb, DrawStats& stats,
+             std::string& error) {
+    const Camera camera = chooseCamera(*sim.plant(), o.camera, sim.kernel().now(), error);
+    if (!error.empty()) return false;
+    target->bind();
+    stats = renderer->draw(*sim.plant(), camera, draw);
+    if (!renderer->problems().empty()) {
+      error = renderer->problems().front();
+      return false;
+    }
+    rgb = target->readRgb();
+    return true;
+  }
+};
+
+/// Runs `sim` to `until` seconds. A picture's time is the time asked for: a net that goes
+/// dead does not stop the clock (an orbiting camera still turns, a falling box still falls).
+model::RunOutcome advance(model::Simulation& sim, double until, const model::ProgressFn& progress,
+                          const std::atomic<bool>* interrupt, const std::function<void()>& after_step) {
+  auto outcome = sim.run({until, std::nullopt}, progress, interrupt);
+  if (outcome.reason != model::StopReason::Dead) return outcome;
+  while (sim.kernel().now() + 1e-9 * std::max(1.0, until) < until) {
+    sim.step();
+    if (after_step) after_step();
+  }
+  outcome.steps = sim.kernel().steps();
+  outcome.time = sim.kernel().now();
+  return outcome;
+}
+
+}  // namespace
+
+bool renderAt(model::Simulation& sim, double at, const CaptureOptions& options, const std::string& png,
+              std::string& error) {
+  Studio studio;
+  if (!studio.open(sim, options, error)) return false;
+  const auto outcome = advance(sim, at, {}, nullptr, {});
+  if (outcome.reason == model::StopReason::ScriptError) {
+    error = outcome.message;
+    return false;
+  }
+  std::vector<std::uint8_t> rgb;
+  DrawStats stats;
+  if (!studio.shoot(sim, options, rgb, stats, error)) return false;
+  return writePng(png, options.width, options.height, rgb, error);
+}
+
+bool record(model::Simulation& sim, double until, const CaptureOptions& options, const std::string& movie,
+            const model::ProgressFn& progress, const std::atomic<bool>* interrupt, RecordResult& result,
+            std::string& error) {
+  Studio studio;
+  if (!studio.open(sim, options, error)) return false;
+  if (options.fps <= 0) {
+    error = "--fps must be above 0";
+    return false;
+  }
+  MovieWriter writer;
+  if (!writer.open(movie, options.width, options.height, options.fps, error)) return false;
+  // frame k shows the model at k / fps seconds; a frame is taken at the first step that reaches it
+  const auto frames = static_cast<std::int64_t>(std::ceil(until * options.fps - 1e-9));
+  std::int64_t next = 0;
+  std::vector<std::uint8_t> rgb;
+  DrawStats stats;
+  bool ok = true;
+  auto take = [&] {
+    while (ok && next < frames && sim.kernel().now() + 1e-9 >= static_cast<double>(next) / options.fps) {
+      ok = studio.shoot(sim, options, rgb, stats, error) && writer.write(rgb);
+      if (ok) ++next;
+      result.triangles = stats.triangles;
+    }
+  };
+  sim.start();
+  take();
+  sim.setStepHook(take);
+  result.outcome = advance(sim, until, progress, interrupt, take);
+  sim.setStepHook({});
+  // a run stopped early (by a script, or Ctrl-C) still fills the movie with its last picture
+  while (ok && next < frames) {
+    ok = writer.write(rgb);
+    ++next;
+  }
+  result.frames = writer.frames();
+  std::string why;
+  const bool closed = writer.close(why);
+  if (!ok) {
+    if (error.empty()) error = "ffmpeg stopped taking frames";
+    return false;
+  }
+  if (!closed) {
+    error = why;
+    return false;
+  }
+  return true;
+}
+
+}  // namespace gdpn::render

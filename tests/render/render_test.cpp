@@ -1,0 +1,229 @@
+// Headless rendering (EGL surfaceless, Mesa's llvmpipe): golden images compared with a
+// tolerance, what each picture must show whatever the golden says, terrain level of detail,
+// and a movie through ffmpeg. GDPN_UPDATE_GOLDEN=1 rewrites the golden pictures.
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+
+#include "gdpn/model/model.h"
+#include "gdpn/render/capture.h"
+#include "gdpn/render/context.h"
+#include "gdpn/render/renderer.h"
+
+namespace gdpn::render {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kData = fs::path(GDPN_SOURCE_DIR) / "tests" / "data";
+
+std::unique_ptr<model::Simulation> open(const std::string& name) {
+  core::Diagnostics diags;
+  auto m = model::loadModel((kData / "render" / (name + ".gdpn.yaml")).string(), diags);
+  std::unique_ptr<model::Simulation> sim;
+  if (m) sim = model::Simulation::create(*m, diags);
+  EXPECT_TRUE(sim) << diags.str();
+  return sim;
+}
+
+struct Picture {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgb;
+  std::array<int, 3> at(int x, int y) const {
+    const auto i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * 3;
+    return {rgb[i], rgb[i + 1], rgb[i + 2]};
+  }
+};
+
+/// Renders model `name` at t = 0, 320 x 240, and compares it with its golden picture.
+Picture renderAndCompare(const std::string& name) {
+  auto sim = open(name);
+  if (!sim) return {};
+  CaptureOptions o;
+  o.width = 320;
+  o.height = 240;
+  const auto out = (fs::temp_directory_path() / ("gdpn_render_" + name + ".png")).string();
+  std::string error;
+  EXPECT_TRUE(renderAt(*sim, 0.0, o, out, error)) << error;
+  Picture p;
+  EXPECT_TRUE(readPng(out, p.width, p.height, p.rgb, error)) << error;
+  fs::remove(out);
+  const auto golden = (kData / "golden" / (name + ".png")).string();
+  if (std::getenv("GDPN_UPDATE_GOLDEN") != nullptr) {
+    EXPECT_TRUE(writePng(golden, p.width, p.height, p.rgb, error)) << error;
+    return p;
+  }
+  Picture g;
+  EXPECT_TRUE(readPng(golden, g.width, g.height, g.rgb, error)) << golden << ": " << error;
+  EXPECT_EQ(g.width, p.width);
+  EXPECT_EQ(g.height, p.height);
+  if (g.rgb.size() != p.rgb.size()) return p;
+  // a tolerance for rasteriser differences: at most 0.5 % of pixels off by more than 24 in a
+  // channel, and a mean difference under 1.5
+  std::size_t off = 0;
+  double total = 0;
+  for (std::size_t i = 0; i < p.rgb.size(); i += 3) {
+    int worst = 0;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const int d = std::abs(int{p.rgb[i + c]} - int{g.rgb[i + c]});
+      worst = std::max(worst, d);
+      total += d;
+    }
+    off += worst > 24 ? 1 : 0;
+  }
+  const double pixels = static_cast<double>(p.rgb.size() / 3);
+  EXPECT_LE(static_cast<double>(off) / pixels, 0.005) << name << ": " << off << " pixels differ";
+  EXPECT_LE(total / static_cast<double>(p.rgb.size()), 1.5) << name;
+  return p;
+}
+
+int brightness(std::array<int, 3> c) { return c[0] + c[1] + c[2]; }
+
+TEST(Render, ACubeLitFromOneSide) {
+  const Picture p = renderAndCompare("cube_lit");
+  ASSERT_EQ(p.width, 320);
+  // the cube is turned 45 degrees: the face towards +x (right in the picture) takes the
+  // light, the face towards -x stays dark but not black (ambient), the corner is at x = 160
+  const auto lit = p.at(200, 130), unlit = p.at(120, 130);
+  EXPECT_GT(brightness(lit), brightness(unlit) + 150);
+  EXPECT_GT(brightness(unlit), 0);
+  EXPECT_EQ(lit[0], lit[1]);  // a grey material under a white light
+}
+
+TEST(Render, ATransparentSphereInFrontOfABox) {
+  const Picture p = renderAndCompare("transparent");
+  ASSERT_EQ(p.width, 320);
+  // through the sphere's middle, both the blue sphere and the red box behind it show
+  const auto mid = p.at(160, 120);
+  EXPECT_GT(mid[0], 60);
+  EXPECT_GT(mid[2], 60);
+  // beside the sphere, only the box: red
+  const auto box = p.at(160 + 70, 120);
+  EXPECT_GT(box[0], 2 * box[2]);
+}
+
+TEST(Render, FogHidesTheFarCubeMoreThanTheNearOne) {
+  const Picture p = renderAndCompare("fog");
+  ASSERT_EQ(p.width, 320);
+  const std::array<int, 3> fog = {230, 230, 242};
+  auto distance = [&](std::array<int, 3> c) {
+    return std::abs(c[0] - fog[0]) + std::abs(c[1] - fog[1]) + std::abs(c[2] - fog[2]);
+  };
+  const auto near = p.at(95, 120), far = p.at(185, 110);
+  EXPECT_LT(distance(far), distance(near) / 2) << far[0] << " " << near[0];
+  EXPECT_LT(distance(p.at(5, 5)), 6);  // the background is the fog's colour
+}
+
+TEST(Render, ATerrain) {
+  const Picture p = renderAndCompare("terrain");
+  ASSERT_EQ(p.width, 320);
+  const auto ground = p.at(160, 150);
+  EXPECT_GT(ground[1], ground[2]);  // green hills
+}
+
+TEST(Render, TerrainLevelOfDetailDropsTrianglesWithDistance) {
+  auto sim = open("terrain");
+  ASSERT_TRUE(sim);
+  std::string why;
+  auto context = GlContext::createHeadless(why);
+  ASSERT_TRUE(context) << why;
+  Target target(320, 240, 1);
+  Renderer renderer((kData / "render").string());
+  DrawOptions o;
+  o.width = 320;
+  o.height = 240;
+  Camera near;
+  near.eye = {0, -120, 40};
+  Camera far = near;
+  far.eye = {0, -1200, 400};
+  far.far = 5000;
+  const auto full = 2u * 128u * 128u;  // every cell, two triangles
+  const auto n = renderer.draw(*sim->plant(), near, o).triangles;
+  const auto f = renderer.draw(*sim->plant(), far, o).triangles;
+  EXPECT_GT(n, 0u);
+  EXPECT_LT(f, n / 4) << "far " << f << ", near " << n;
+  EXPECT_LT(f, full / 8);
+  // looking away, nothing of it is drawn
+  Camera away = near;
+  away.target = {0, -1000, 40};
+  EXPECT_EQ(renderer.draw(*sim->plant(), away, o).triangles, 0u);
+  EXPECT_TRUE(renderer.problems().empty());
+}
+
+TEST(Render, SensorsJointsAndTheSelectionAreDrawnOnlyWhenAsked) {
+  core::Diagnostics diags;
+  auto m = model::parseModel(R"(gdpn: 1
+scene:
+  - Camera: {position: [0, -4, 0], target: [0, 0, 0]}
+  - Region: {name: r, shape: box, size: [1, 1, 1]}
+  - Joint:
+      kind: hinge
+      children: [{Body: {name: b, children: [{Sphere: {radius: 0.2}}]}}]
+)", "overlay.gdpn.yaml", diags);
+  ASSERT_TRUE(m) << diags.str();
+  auto sim = model::Simulation::create(*m, diags);
+  ASSERT_TRUE(sim) << diags.str();
+  std::string why;
+  auto context = GlContext::createHeadless(why);
+  ASSERT_TRUE(context) << why;
+  Target target(160, 120, 1);
+  Renderer renderer(".");
+  DrawOptions o;
+  o.width = 160;
+  o.height = 120;
+  const Camera cam = chooseCamera(*sim->plant(), "", 0, why);
+  const auto plain = renderer.draw(*sim->plant(), cam, o);
+  o.sensors = true;
+  const auto sensors = renderer.draw(*sim->plant(), cam, o);
+  o.joints = true;
+  const auto joints = renderer.draw(*sim->plant(), cam, o);
+  o.selection = sim->plant()->find("#2/b")->handle();
+  const auto selected = renderer.draw(*sim->plant(), cam, o);
+  EXPECT_EQ(sensors.triangles, plain.triangles + 2 * 12);  // the region's box: far side, then near side
+  EXPECT_GT(joints.triangles, sensors.triangles);      // an axis and an anchor
+  EXPECT_GT(selected.draw_calls, joints.draw_calls);   // the sphere outlined again
+  // the renderer reads the scene and changes nothing
+  auto copy = sim->plant()->clone();
+  renderer.draw(*sim->plant(), cam, o);
+  EXPECT_TRUE(copy->sameAs(*sim->plant()));
+}
+
+TEST(Render, AMovieOfTwoSecondsHasItsFrames) {
+  auto sim = open("cube_lit");
+  ASSERT_TRUE(sim);
+  CaptureOptions o;
+  o.width = 160;
+  o.height = 120;
+  o.samples = 1;
+  o.fps = 30;
+  const auto out = (fs::temp_directory_path() / "gdpn_movie_test.mp4").string();
+  RecordResult result;
+  std::string error;
+  ASSERT_TRUE(record(*sim, 2.0, o, out, {}, nullptr, result, error)) << error;
+  EXPECT_EQ(result.frames, 60);
+  // ffprobe decodes the whole file: a playable movie with the right number of frames
+  const std::string cmd = "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                          "stream=nb_read_frames,width,height,codec_name -of csv=p=0 '" + out + "'";
+  std::FILE* probe = ::popen(cmd.c_str(), "r");
+  ASSERT_NE(probe, nullptr);
+  char buf[256] = {};
+  const std::string text = std::fgets(buf, sizeof buf, probe) != nullptr ? buf : "";
+  EXPECT_EQ(::pclose(probe), 0);
+  EXPECT_EQ(text, "h264,160,120,60\n");
+  fs::remove(out);
+}
+
+TEST(Render, SizesAreParsed) {
+  EXPECT_EQ(parseSize("1280x720"), (std::pair{1280, 720}));
+  EXPECT_FALSE(parseSize("1280"));
+  EXPECT_FALSE(parseSize("x720"));
+  EXPECT_FALSE(parseSize("12a0x720"));
+  EXPECT_FALSE(parseSize("0x720"));
+  EXPECT_FALSE(parseSize("1280x720x3"));
+}
+
+}  // namespace
+}  // namespace gdpn::render
