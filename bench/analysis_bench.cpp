@@ -15,7 +15,7 @@ namespace {
 
 using namespace gdpn;
 
-void BM_Explore(benchmark::State& state, const char* model, std::uint64_t expected) {
+void BM_Explore(benchmark::State& state, const char* model, std::uint64_t expected, unsigned threads) {
   const auto path = std::filesystem::path(GDPN_SOURCE_DIR) / ".." / "shared" / "conformance" / "pnml" /
                     (std::string(model) + ".pnml");
   core::Diagnostics diags;
@@ -27,7 +27,9 @@ void BM_Explore(benchmark::State& state, const char* model, std::uint64_t expect
   auto n = net::compile(*spec, diags);
   std::uint64_t states = 0, search_bytes = 0;
   for (auto _ : state) {
-    const auto s = net::explore(*n);
+    net::ExploreOptions o;
+    o.threads = threads;
+    const auto s = net::explore(*n, o);
     states = s.states;
     search_bytes = s.peak_bytes;
   }
@@ -40,8 +42,10 @@ void BM_Explore(benchmark::State& state, const char* model, std::uint64_t expect
   state.counters["search_bytes_per_state"] = static_cast<double>(search_bytes) / static_cast<double>(states);
   state.counters["peak_rss_bytes_per_state"] = static_cast<double>(usage.ru_maxrss) * 1024.0 / static_cast<double>(states);
 }
-BENCHMARK_CAPTURE(BM_Explore, Kanban_PT_00005, "Kanban-PT-00005", 2546432)->Iterations(1)->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(BM_Explore, SwimmingPool_PT_02, "SwimmingPool-PT-02", 3408031)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_Explore, Kanban_PT_00005, "Kanban-PT-00005", 2546432, 1)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Explore, SwimmingPool_PT_02, "SwimmingPool-PT-02", 3408031, 1)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Explore, Kanban_PT_00005_2threads, "Kanban-PT-00005", 2546432, 2)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Explore, SwimmingPool_PT_02_2threads, "SwimmingPool-PT-02", 3408031, 2)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 
 }  // namespace
 

@@ -159,6 +159,7 @@ struct AnalyzeArgs {
   bool progress = false;
   std::uint64_t max_states = 20'000'000;
   double max_memory_mib = 0.0;
+  unsigned threads = 1;
 };
 
 int analyze(const AnalyzeArgs& a) {
@@ -181,6 +182,7 @@ int analyze(const AnalyzeArgs& a) {
   if (!net) return 1;
   options.explore.max_states = a.max_states;
   options.explore.max_bytes = static_cast<std::uint64_t>(a.max_memory_mib * 1024.0 * 1024.0);
+  options.explore.threads = a.threads;
   // a progress line on a terminal: states, states per second, memory
   const bool show = a.progress || isatty(STDERR_FILENO);
   const auto start = std::chrono::steady_clock::now();
@@ -346,6 +348,9 @@ int main(int argc, char** argv) {
   analyze_cmd->add_option("--max-memory", analyze_args.max_memory_mib,
                           "stop when the search holds this many MiB (the answer is then partial)")
       ->check(CLI::PositiveNumber);
+  analyze_cmd->add_option("--threads", analyze_args.threads,
+                          "threads for the search (1: one depth-first walk, the least memory)")
+      ->check(CLI::Range(1, 256));
   analyze_cmd->add_flag("--progress", analyze_args.progress,
                         "print a progress line every 250 ms even when stderr is not a terminal");
 

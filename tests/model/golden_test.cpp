@@ -260,6 +260,9 @@ TEST(CliAnalyze, APnmlNetAndAModelFile) {
   EXPECT_EQ(j["states"], 3);
   EXPECT_EQ(j["deadlock_path"], (nlohmann::json{"main/T1", "main/T2"}));
   EXPECT_EQ(j["one_safe"], true);
+  r = gdpn("analyze ../shared/conformance/pnml/Philosophers-PT-000005.pnml --threads 2");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("243 states, 945 edges"), std::string::npos) << r.out;
   r = gdpn("analyze ../shared/conformance/pnml/Referendum-PT-0010.pnml --max-states 100");
   EXPECT_EQ(r.code, 3) << r.out;
   EXPECT_NE(r.out.find("(partial: --max-states reached;"), std::string::npos) << r.out;

@@ -45,15 +45,22 @@ std::vector<Reference> references() {
   return out;
 }
 
+/// A conformance net, compiled; null after a failed expectation.
+std::shared_ptr<const Net> conformanceNet(const std::string& model) {
+  core::Diagnostics diags;
+  auto spec = loadPnml((kConformance / (model + ".pnml")).string(), diags);
+  std::shared_ptr<const Net> net;
+  if (spec) net = compile(*spec, diags);
+  EXPECT_TRUE(net) << diags.str();
+  return net;
+}
+
 class Conformance : public ::testing::TestWithParam<Reference> {};
 
 TEST_P(Conformance, MatchesTheReferenceExactly) {
   const Reference& ref = GetParam();
-  core::Diagnostics diags;
-  auto spec = loadPnml((kConformance / (ref.model + ".pnml")).string(), diags);
-  ASSERT_TRUE(spec) << diags.str();
-  auto net = compile(*spec, diags);
-  ASSERT_TRUE(net) << diags.str();
+  auto net = conformanceNet(ref.model);
+  ASSERT_TRUE(net);
   const StateSpace s = explore(*net);
   ASSERT_TRUE(s.complete);
   EXPECT_EQ(s.states, ref.states);
@@ -65,6 +72,31 @@ TEST_P(Conformance, MatchesTheReferenceExactly) {
   EXPECT_EQ(s.live, ref.l);
   EXPECT_EQ(s.quasi_live, ref.ql);
   EXPECT_EQ(!s.constant_places.empty(), ref.sm);
+}
+
+TEST_P(Conformance, ThreadsGiveTheSameAnswers) {
+  const Reference& ref = GetParam();
+  auto net = conformanceNet(ref.model);
+  ASSERT_TRUE(net);
+  const StateSpace one = explore(*net);
+  for (unsigned threads : {2u, 3u}) {
+    ExploreOptions o;
+    o.threads = threads;
+    const StateSpace s = explore(*net, o);
+    ASSERT_TRUE(s.complete) << threads;
+    EXPECT_EQ(s.states, ref.states) << threads;
+    EXPECT_EQ(s.edges, ref.edges) << threads;
+    EXPECT_EQ(s.max_place, ref.max_place) << threads;
+    EXPECT_EQ(s.max_marking, ref.max_marking) << threads;
+    EXPECT_EQ(s.deadlock, ref.rd) << threads;
+    EXPECT_EQ(s.one_safe, ref.os) << threads;
+    EXPECT_EQ(s.live, ref.l) << threads;
+    EXPECT_EQ(s.quasi_live, ref.ql) << threads;
+    EXPECT_EQ(s.reversible, one.reversible) << threads;
+    EXPECT_EQ(s.deadlock_path, one.deadlock_path) << threads;
+    EXPECT_EQ(s.place_bound, one.place_bound) << threads;
+    EXPECT_EQ(s.constant_places, one.constant_places) << threads;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Mcc, Conformance, ::testing::ValuesIn(references()),
@@ -246,6 +278,24 @@ TEST(Analysis, CountsBeyondWhatTheSearchHoldsGiveAPartialAnswer) {
   EXPECT_FALSE(s.complete);
   EXPECT_EQ(s.stop, ExploreStop::Overflow);
   EXPECT_FALSE(s.decided);
+}
+
+TEST(Analysis, ThreadsFindTheSameShortestPathToADeadlock) {
+  // two philosophers' worth of choices before the dead end: many equal paths, one answer
+  core::Diagnostics diags;
+  auto spec = loadPnml((kConformance / "Philosophers-PT-000005.pnml").string(), diags);
+  auto net = compile(*spec, diags);
+  const auto one = explore(*net);
+  ExploreOptions o;
+  o.threads = 2;
+  const auto two = explore(*net, o);
+  ASSERT_TRUE(one.deadlock);
+  EXPECT_EQ(one.deadlock_path.size(), 5u);
+  EXPECT_EQ(two.deadlock_path, one.deadlock_path);
+  o.max_states = 50;
+  const auto cut = explore(*net, o);
+  EXPECT_EQ(cut.stop, ExploreStop::MaxStates);
+  EXPECT_FALSE(cut.decided);
 }
 
 TEST(Analysis, LimitsStopCleanlyWithAPartialAnswer) {

@@ -25,6 +25,10 @@ struct ExploreProgress {
 struct ExploreOptions {
   std::uint64_t max_states = 20'000'000;  ///< stop (partial answer) past this many states
   std::uint64_t max_bytes = 0;            ///< stop (partial answer) past this much memory, bytes; 0: none
+  /// Worker threads. Above 1, markings are shared out among the threads by hash and the
+  /// graph is kept as arrays for a sequential pass over its components (more memory); a net
+  /// with a place that no invariant or capacity bounds is searched by one thread.
+  unsigned threads = 1;
   /// Called every 4,096 new states; may be empty.
   std::function<void(const ExploreProgress&)> progress;
 };
