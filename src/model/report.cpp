@@ -10,7 +10,7 @@
 
 namespace gdpn::model {
 
-Report makeReport(const Simulation& sim, const RunOutcome& outcome) {
+Report makeReport(Simulation& sim, const RunOutcome& outcome) {
   Report r;
   r.model = sim.model().path;
   r.seed = sim.seed();
@@ -47,7 +47,18 @@ Report makeReport(const Simulation& sim, const RunOutcome& outcome) {
   // the bounds from the invariants, beside the cycles measured: where measured exceeds the
   // bound, the net waited on something else (the plant, a guard, a shared resource)
   const auto invariants = net::invariants(net);
+  std::vector<std::vector<net::TransitionId>> seen;  // one line per set of transitions (slots of one
+                                                     // place moving together make one cycle each)
   for (const auto& c : cycleTimes(net, invariants, dt)) {
+    bool merged = false;
+    for (std::size_t i = 0; i < seen.size() && !merged; ++i) {
+      if (seen[i] == c.transitions && r.cycles[i].tokens == c.tokens && r.cycles[i].bound == c.seconds) {
+        ++r.cycles[i].alike;
+        merged = true;
+      }
+    }
+    if (merged) continue;
+    seen.push_back(c.transitions);
     CycleFigures f;
     f.invariant = invariantText(net, invariants.p[c.invariant]);
     f.tokens = c.tokens;
@@ -55,6 +66,7 @@ Report makeReport(const Simulation& sim, const RunOutcome& outcome) {
     for (auto t : c.transitions) f.measured = std::max(f.measured, r.transitions[t].mean_cycle);
     r.cycles.push_back(std::move(f));
   }
+  r.figures = sim.modelFigures(r.figures_error);
   return r;
 }
 
@@ -88,8 +100,15 @@ std::string reportJson(const Report& report) {
   }
   j["cycles"] = ordered_json::array();
   for (const auto& c : report.cycles) {
-    j["cycles"].push_back({{"invariant", c.invariant}, {"tokens", c.tokens}, {"bound", c.bound}, {"measured", c.measured}});
+    j["cycles"].push_back({{"invariant", c.invariant},
+                           {"tokens", c.tokens},
+                           {"bound", c.bound},
+                           {"measured", c.measured},
+                           {"alike", c.alike}});
   }
+  j["figures"] = ordered_json::object();
+  for (const auto& [k, v] : report.figures) j["figures"][k] = v;
+  if (!report.figures_error.empty()) j["figures_error"] = report.figures_error;
   return j.dump(2) + "\n";
 }
 
@@ -139,18 +158,29 @@ void printSummary(std::ostream& out, const Report& report) {
         << pad(std::to_string(p.max_tokens), 16, true) << pad(std::to_string(p.final_tokens), 15, true)
         << pad(fixed(p.throughput, 3), 13, true) << "\n";
   }
-  if (report.cycles.empty()) return;
-  std::size_t cw = 10;
-  for (const auto& c : report.cycles) cw = std::max(cw, c.invariant.size());
-  cw += 2;
-  out << "\n"
-      << pad("cycle (P-invariant)", cw, false) << pad("tokens", 8, true) << pad("bound [s]", 12, true)
-      << pad("measured [s]", 14, true) << pad("waited [s]", 12, true) << "\n";
-  for (const auto& c : report.cycles) {
-    const bool m = c.measured > 0.0;
-    out << pad(c.invariant, cw, false) << pad(std::to_string(c.tokens), 8, true) << pad(fixed(c.bound, 3), 12, true)
-        << pad(m ? fixed(c.measured, 3) : "-", 14, true) << pad(m ? fixed(c.measured - c.bound, 3) : "-", 12, true)
-        << "\n";
+  if (!report.cycles.empty()) {
+    std::size_t cw = 10;
+    auto label = [](const CycleFigures& c) {
+      return c.invariant + (c.alike > 0 ? " (+" + std::to_string(c.alike) + " alike)" : "");
+    };
+    for (const auto& c : report.cycles) cw = std::max(cw, label(c).size());
+    cw += 2;
+    out << "\n"
+        << pad("cycle (P-invariant)", cw, false) << pad("tokens", 8, true) << pad("bound [s]", 12, true)
+        << pad("measured [s]", 14, true) << pad("waited [s]", 12, true) << "\n";
+    for (const auto& c : report.cycles) {
+      const bool m = c.measured > 0.0;
+      out << pad(label(c), cw, false) << pad(std::to_string(c.tokens), 8, true) << pad(fixed(c.bound, 3), 12, true)
+          << pad(m ? fixed(c.measured, 3) : "-", 14, true) << pad(m ? fixed(c.measured - c.bound, 3) : "-", 12, true)
+          << "\n";
+    }
+  }
+  if (!report.figures.empty() || !report.figures_error.empty()) {
+    out << "\nthe model's figures:\n";
+    std::size_t fw = 0;
+    for (const auto& [k, v] : report.figures) fw = std::max(fw, k.size());
+    for (const auto& [k, v] : report.figures) out << "  " << pad(k + ":", fw + 2, false) << v << "\n";
+    if (!report.figures_error.empty()) out << "  " << report.figures_error << "\n";
   }
 }
 

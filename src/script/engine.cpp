@@ -570,6 +570,26 @@ void Engine::sensorEvent(net::PlaceSlotId ps, int which, scene::NodeHandle senso
 }
 
 bool Engine::halted() const { return impl_->halt != Halt::None; }
+std::vector<std::pair<std::string, std::string>> Engine::summary(std::string& error) {
+  std::vector<std::pair<std::string, std::string>> out;
+  try {
+    if (!impl_->globals.contains("summary")) return out;
+    py::object f = impl_->globals["summary"];
+    if (!PyCallable_Check(f.ptr())) return out;
+    py::object result = f();
+    if (!py::isinstance<py::dict>(result)) {
+      error = "summary() must return a dict of figures, not " + std::string(py::str(py::type::of(result).attr("__name__")));
+      return out;
+    }
+    for (auto item : py::reinterpret_borrow<py::dict>(result)) {
+      out.emplace_back(py::str(item.first), py::str(item.second));
+    }
+  } catch (const py::error_already_set& e) {
+    error = std::string("summary() failed: ") + e.what();
+  }
+  return out;
+}
+
 Halt Engine::halt() const { return impl_->halt; }
 const std::string& Engine::message() const { return impl_->message; }
 

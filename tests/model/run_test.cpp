@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "gdpn/core/text.h"
+#include "gdpn/model/model.h"
 #include "gdpn/model/report.h"
 #include "gdpn/model/simulation.h"
 
@@ -51,6 +52,41 @@ TEST(Run, CycleTimesAreExactlyTheSumsOfDurations) {
   EXPECT_EQ(figures(r, "main/a1").occurrences, 11);
   EXPECT_EQ(figures(r, "main/a1").utilisation, 0.375);
   EXPECT_EQ(figures(r, "main/b2").utilisation, 0.5);
+}
+
+TEST(Run, TheModelsOwnFiguresComeFromItsSummaryFunction) {
+  core::Diagnostics diags;
+  auto m = parseModel(R"(gdpn: 1
+settings: {dt: 0.5, until: 5}
+scripts:
+  globals: |
+    made = 0
+    def summary():
+        return {"parts made": made, "rate [1/s]": f"{made / sim.time:.1f}"}
+pages:
+  main:
+    places: {p: {tokens: 1}}
+    transitions:
+      t: {duration: 1, post_fire: 'made += 1'}
+    arcs: [p -> t, t -> p]
+)", "figures.gdpn.yaml", diags);
+  ASSERT_TRUE(m) << diags.str();
+  auto sim = Simulation::create(*m, diags);
+  ASSERT_TRUE(sim) << diags.str();
+  const auto r = makeReport(*sim, sim->run({}));
+  ASSERT_EQ(r.figures.size(), 2u);
+  EXPECT_EQ(r.figures[0], (std::pair<std::string, std::string>{"parts made", "5"}));
+  EXPECT_EQ(r.figures[1], (std::pair<std::string, std::string>{"rate [1/s]", "1.0"}));
+  std::ostringstream text;
+  printSummary(text, r);
+  EXPECT_NE(text.str().find("the model's figures:\n  parts made: 5\n  rate [1/s]: 1.0\n"), std::string::npos) << text.str();
+  // one that fails says so, and the run's report stands
+  auto bad = parseModel("gdpn: 1\nscripts:\n  globals: |\n    def summary():\n        return 3\n", "bad.gdpn.yaml", diags);
+  ASSERT_TRUE(bad) << diags.str();
+  auto sim2 = Simulation::create(*bad, diags);
+  ASSERT_TRUE(sim2) << diags.str();
+  const auto r2 = makeReport(*sim2, sim2->run({}));
+  EXPECT_EQ(r2.figures_error, "summary() must return a dict of figures, not int");
 }
 
 TEST(Run, ProducerConsumerSettlesToTheConsumersCycle) {

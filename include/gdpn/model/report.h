@@ -38,6 +38,7 @@ struct CycleFigures {
   std::int64_t tokens = 0;      ///< weighted tokens on it
   double bound = 0.0;           ///< seconds: the sum of its durations over its tokens
   double measured = 0.0;        ///< seconds: the slowest mean cycle among its transitions (0: none)
+  int alike = 0;                ///< further invariants with the same transitions, tokens and bound (not listed)
 };
 
 /// Everything the summary shows.
@@ -49,10 +50,12 @@ struct Report {
   std::vector<TransitionFigures> transitions;
   std::vector<PlaceFigures> places;
   std::vector<CycleFigures> cycles;  ///< largest bound first; empty for an untimed net
+  std::vector<std::pair<std::string, std::string>> figures;  ///< the model's own, from its summary()
+  std::string figures_error;         ///< why summary() failed ("" when it did not)
 };
 
 /// Gathers the report of a finished run.
-Report makeReport(const Simulation& sim, const RunOutcome& outcome);
+Report makeReport(Simulation& sim, const RunOutcome& outcome);
 /// The report as pretty-printed JSON text.
 std::string reportJson(const Report& report);
 /// The summary tables, as `gdpn run` prints them.

@@ -102,6 +102,10 @@ class Simulation {
   /// Deletes `node` and its subtree from the plant: tokens that hold any of them leave the
   /// net, their bodies leave the physics, and the trace records it. The root stays.
   void deleteNode(scene::Node& node);
+  /// The model's own figures: what its globals' `summary()` returns (empty without one).
+  std::vector<std::pair<std::string, std::string>> modelFigures(std::string& error) {
+    return engine_ ? engine_->summary(error) : std::vector<std::pair<std::string, std::string>>{};
+  }
   /// Calls `hook` after every step that run() takes (a recorder takes its frames there).
   void setStepHook(std::function<void()> hook) { step_hook_ = std::move(hook); }
   /// Why the run must end now, if a script says so (an error, a timeout, an interrupt or

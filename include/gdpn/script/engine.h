@@ -8,6 +8,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "gdpn/core/diagnostics.h"
 #include "gdpn/net/hooks.h"
@@ -73,6 +75,11 @@ class Engine final : public net::ScriptHooks {
   /// Runs sensor slot `ps`'s on_enter (which = 0), on_exit (1) with `item`, on_sample (2) or
   /// on_change (3), for sensor `sensor`.
   void sensorEvent(net::PlaceSlotId ps, int which, scene::NodeHandle sensor, scene::NodeHandle item = 0);
+
+  /// The model's own figures for the summary: when the globals define a function
+  /// `summary()`, the dict it returns as (label, text) pairs in its order; empty otherwise.
+  /// An exception (or a result that is not a dict) leaves `error` set.
+  std::vector<std::pair<std::string, std::string>> summary(std::string& error);
 
   /// Why the engine halted (None while it has not).
   [[nodiscard]] Halt halt() const;
