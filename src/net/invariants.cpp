@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <limits>
+#include <map>
 #include <numeric>
 
 #include "gdpn/net/slot.h"
@@ -95,6 +96,11 @@ std::vector<Invariant> semiflows(const Matrix& a, std::size_t columns, std::size
       if (rows[i].a[j] > 0) pos.push_back(i);
       if (rows[i].a[j] < 0) neg.push_back(i);
     }
+    // too many candidates: give up before making them (the answer is then partial)
+    if (rows.size() - pos.size() - neg.size() + pos.size() * neg.size() > 4 * max_rows) {
+      complete = false;
+      return {};
+    }
     for (auto& r : rows) {
       if (r.a[j] == 0) next.push_back(std::move(r));
     }
@@ -160,6 +166,40 @@ bool covers(const std::vector<Invariant>& invs, std::size_t n) {
   return std::all_of(seen.begin(), seen.end(), [](bool b) { return b; });
 }
 
+/// The semiflows of C (rows: place slots; with `slack`, one more row per transition with a 1
+/// in its column, for y·C <= 0), computed slot by slot: a token of slot b0 stays a b0 token,
+/// so the place slots of one slot are a system of their own. Slack rows are numbered after
+/// the place slots.
+std::vector<Invariant> slotwise(const Net& net, const Matrix& c, bool slack, std::size_t max_rows, bool& complete) {
+  const std::size_t places = net.placeSlots().size();
+  const std::size_t transitions = net.transitions().size();
+  std::map<SlotId, std::vector<std::uint32_t>> groups;
+  for (std::uint32_t ps = 0; ps < places; ++ps) groups[net.placeSlots()[ps].slot].push_back(ps);
+  std::vector<Invariant> out;
+  for (const auto& [slot, members] : groups) {
+    Matrix a;
+    for (auto ps : members) a.push_back(c[ps]);
+    if (slack) {
+      for (std::size_t t = 0; t < transitions; ++t) {
+        a.emplace_back(transitions, 0);
+        a.back()[t] = 1;
+      }
+    }
+    for (Invariant inv : semiflows(a, transitions, max_rows, complete)) {
+      for (auto& [k, w] : inv.weights) {
+        k = k < members.size() ? members[k] : static_cast<std::uint32_t>(places + (k - members.size()));
+      }
+      std::sort(inv.weights.begin(), inv.weights.end());
+      // a slack-only row (a transition that changes no place of this slot) says nothing
+      if (inv.weights.front().first < places) out.push_back(std::move(inv));
+    }
+  }
+  std::sort(out.begin(), out.end(), [](const Invariant& x, const Invariant& y) { return x.weights < y.weights; });
+  out.erase(std::unique(out.begin(), out.end(), [](const Invariant& x, const Invariant& y) { return x.weights == y.weights; }),
+            out.end());
+  return out;
+}
+
 }  // namespace
 
 std::int64_t incidence(const Net& net, PlaceSlotId ps, TransitionId t) {
@@ -177,7 +217,7 @@ Invariants invariants(const Net& net, const InvariantOptions& options) {
   const std::size_t places = net.placeSlots().size();
   const std::size_t transitions = net.transitions().size();
   const Matrix c = incidenceMatrix(net);
-  out.p = semiflows(c, transitions, options.max_candidates, out.complete);
+  out.p = slotwise(net, c, false, options.max_candidates, out.complete);
   Matrix ct(transitions, std::vector<std::int64_t>(places, 0));
   for (std::size_t ps = 0; ps < places; ++ps) {
     for (std::size_t t = 0; t < transitions; ++t) ct[t][ps] = c[ps][t];
@@ -189,13 +229,8 @@ Invariants invariants(const Net& net, const InvariantOptions& options) {
   // y·C <= 0: the semiflows of C with one slack row per transition
   std::vector<Invariant> bounding = out.p;
   if (!out.conservative) {
-    Matrix slack = c;
-    for (std::size_t t = 0; t < transitions; ++t) {
-      slack.emplace_back(transitions, 0);
-      slack.back()[t] = 1;
-    }
     bool ok = true;
-    bounding = semiflows(slack, transitions, options.max_candidates, ok);
+    bounding = slotwise(net, c, true, options.max_candidates, ok);
     out.complete = out.complete && ok;
     out.structurally_bounded = ok && covers(bounding, places);
   } else {

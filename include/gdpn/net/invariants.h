@@ -4,6 +4,8 @@
 /// generating sets of semi-positive invariants (the Farkas algorithm), structural
 /// boundedness and conservativeness, bounds per place slot, and cycle-time bounds for timed
 /// nets. Works on the incidence matrix; test, inhibitor and condition terms do not count.
+/// P-invariants are found slot by slot (a b0 token stays a b0 token): for a net with one slot
+/// per place they are all the minimal ones; invariants that mix slots are not listed.
 
 #include <cstdint>
 #include <span>
