@@ -50,11 +50,13 @@ void BM_Example(benchmark::State& state, const char* relative, int samples) {
     state.SkipWithError(diags.str().c_str());
     return;
   }
-  sim->run({2.0, std::nullopt});  // things on the move
+  sim->run({20.0, std::nullopt});  // things on the move
   std::string why;
   frames(state, *sim->plant(), fs::path(*path).parent_path().string(), render::chooseCamera(*sim->plant(), "", 2.0, why),
          samples);
 }
+BENCHMARK_CAPTURE(BM_Example, Factory_4x, "examples/factory", 4)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Example, Factory_1x, "examples/factory", 1)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Example, Feeder_4x, "examples/plant/feeder", 4)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Example, Sorting_4x, "examples/sorting", 4)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Example, Sorting_1x, "examples/sorting", 1)->Unit(benchmark::kMillisecond)->UseRealTime();

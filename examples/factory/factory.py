@@ -34,6 +34,8 @@ def delivered(t, box):
     gripper(t).detach(box)
     boxes_delivered += 1
     drop_times.append(sim.time)
+    x, y, z = box.position
+    sim.log(f"released {box.name} at ({x:.2f}, {y:.2f}, {z:.2f})")
 
 
 def eye_position(t):

@@ -147,7 +147,8 @@ Vec3 v3(const dReal* v) { return {v[0], v[1], v[2]}; }
 struct Surface {
   double friction = 0.8;
   double bounce = 0.0;
-  double conveyor_speed = 0.0;  // m/s, 0 when not a conveyor
+  double conveyor_speed = 0.0;  // m/s, 0 when not a conveyor (as built; see conveyor_node)
+  const Node* conveyor_node = nullptr;  // the Conveyor: its speed is read at each contact
   Vec3 conveyor_dir;            // in the frame of the geometry's body (world frame if static)
   bool conveyor = false;
   const Node* node = nullptr;   // the shape
@@ -620,6 +621,7 @@ struct World::Impl {
         if (sib->type().name != "Conveyor") continue;
         surface.conveyor = true;
         surface.conveyor_speed = sib->number("speed");
+        surface.conveyor_node = sib.get();
         const Vec3 dir_world = sib->world.rotation.rotate(sib->vec3("direction")).normalized();
         surface.conveyor_dir = body ? bodyPose(body->id).rotation.conjugate().rotate(dir_world) : dir_world;
       }
@@ -756,13 +758,24 @@ struct World::Impl {
     return i == 0 || (i & kSensorTag) ? Surface{} : self.surfaces[i - 1];
   }
 
+  /// A running belt wakes a sleeping body lying on it (a script may have just started it).
+  bool beltWakes(dGeomID belt, dBodyID other) const {
+    if (other == nullptr || dBodyIsEnabled(other)) return false;
+    const auto i = reinterpret_cast<std::size_t>(dGeomGetData(belt));
+    if (i == 0 || (i & kSensorTag) != 0) return false;
+    const Surface& s = surfaces[i - 1];
+    if (!s.conveyor || s.conveyor_node == nullptr || s.conveyor_node->number("speed") == 0.0) return false;
+    dBodyEnable(other);
+    return true;
+  }
+
   static void nearCallback(void* data, dGeomID o1, dGeomID o2) {
     auto& self = *static_cast<Impl*>(data);
     if (isSensor(o1) || isSensor(o2)) return;  // sensors feel, they do not touch
     dBodyID b1 = dGeomGetBody(o1), b2 = dGeomGetBody(o2);
     // nothing to do between static shapes, or where everything involved sleeps
     const bool awake1 = b1 && dBodyIsEnabled(b1), awake2 = b2 && dBodyIsEnabled(b2);
-    if (!awake1 && !awake2) return;
+    if (!awake1 && !awake2 && !self.beltWakes(o1, b2) && !self.beltWakes(o2, b1)) return;
     if (b1 && b2 && dAreConnectedExcluding(b1, b2, dJointTypeContact)) return;
     constexpr int kMax = 8;
     dContact contact[kMax];
@@ -777,7 +790,9 @@ struct World::Impl {
       const Surface& belt = belt1 ? s1 : s2;
       const dBodyID belt_body = belt1 ? b1 : b2;
       dir = belt_body ? bodyPose(belt_body).rotation.rotate(belt.conveyor_dir) : belt.conveyor_dir;
-      motion = belt1 ? -belt.conveyor_speed : belt.conveyor_speed;
+      // the speed now: a script may start and stop a belt
+      const double speed = belt.conveyor_node ? belt.conveyor_node->number("speed") : belt.conveyor_speed;
+      motion = belt1 ? -speed : speed;
     }
     for (int i = 0; i < n; ++i) {
       dSurfaceParameters& sp = contact[i].surface;

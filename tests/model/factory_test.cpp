@@ -1,0 +1,61 @@
+// The factory case study (examples/factory), shortened: what it must show whatever the
+// stations' mechanics do.
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <sstream>
+
+#include "gdpn/model/report.h"
+#include "support/sim_helpers.h"
+
+namespace gdpn::model {
+namespace {
+
+TEST(Factory, TheArmDeliversOneBoxPerFourSecondCycle) {
+  auto sim = testing::openModelFile("examples/factory/factory.gdpn.yaml");
+  ASSERT_TRUE(sim);
+  std::ostringstream trace;
+  sim->traceTo(trace);
+  const auto outcome = sim->run({40.0, std::nullopt});
+  ASSERT_EQ(outcome.reason, StopReason::Until) << outcome.message;
+  const auto report = makeReport(*sim, outcome);
+  // drops start at 3, 7, ..., 39 s: ten boxes in ten cycles
+  for (const auto& t : report.transitions) {
+    if (t.name == "factory/drop") {
+      EXPECT_EQ(t.occurrences, 10);
+      EXPECT_NEAR(t.mean_cycle, 4.0, 0.05);
+    }
+  }
+  // the arm's cycle, measured beside its bound from the P-invariant P1 + P2 + P3
+  bool found = false;
+  for (const auto& c : report.cycles) {
+    if (c.invariant != "factory/P1.b0 + factory/P2.b0 + factory/P3.b0") continue;
+    found = true;
+    EXPECT_EQ(c.bound, 4.0);
+    EXPECT_NEAR(c.measured, 4.0, 0.05);
+    EXPECT_EQ(c.alike, 2);  // the three joints move together
+  }
+  EXPECT_TRUE(found);
+  // each box was let go of just above the first conveyor's belt (y = 1.6 m, belt top 0.5 m,
+  // box centre 0.7 m when resting): in the boxes' order, one per cycle
+  const auto lines = testing::logLines(trace.str());
+  int released = 0;
+  for (const auto& line : lines) {
+    char name[64] = {};
+    double x = 0, y = 0, z = 0;
+    if (std::sscanf(line.c_str(), "released %63s at (%lf, %lf, %lf)", name, &x, &y, &z) != 4) continue;
+    char expected[32];
+    std::snprintf(expected, sizeof expected, "boxes/b%02d/box", released);
+    EXPECT_STREQ(name, expected);
+    EXPECT_NEAR(x, -8.0, 0.3) << name;  // the belt starts at x = -8.6 m, the box is 0.4 m wide
+    EXPECT_GT(x, -8.4) << name;
+    EXPECT_NEAR(y, 1.6, 0.15) << name;
+    EXPECT_NEAR(z, 0.8, 0.12) << name;
+    ++released;
+  }
+  EXPECT_EQ(released, 10);
+}
+
+}  // namespace
+}  // namespace gdpn::model
