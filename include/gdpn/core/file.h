@@ -12,7 +12,8 @@ namespace gdpn::core {
 /// The whole file at `path`; a missing, unreadable or folder path gives a diagnostic and nullopt.
 std::optional<std::string> readFile(const std::string& path, Diagnostics& diags);
 
-/// True when `text` is valid UTF-8; otherwise reports where it stops being so (in `file`).
+/// True when `text` is valid UTF-8 without control characters (tab, line feed and carriage
+/// return allowed); otherwise reports the first offending place (in `file`).
 bool checkUtf8(const std::string& text, const std::string& file, Diagnostics& diags);
 
 }  // namespace gdpn::core
