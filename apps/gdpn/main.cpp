@@ -209,16 +209,9 @@ int analyze(const AnalyzeArgs& a) {
   return result.space.complete ? 0 : 3;
 }
 
-bool isMeshFile(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  const auto& known = gdpn::scene::meshExtensions();
-  return std::find(known.begin(), known.end(), ext) != known.end();
-}
-
 int convert(const std::string& in, const std::string& out) {
   Diagnostics diags;
-  if (isMeshFile(in)) {
+  if (gdpn::scene::isMeshFile(in)) {
     if (auto m = model::meshModel(in, out, diags)) model::saveModel(*m, out, diags);
   } else if (in.ends_with(".pnml")) {
     auto spec = gdpn::net::loadPnml(in, diags);

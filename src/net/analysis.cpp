@@ -37,7 +37,6 @@ class Search {
   void finishComponent(StateId v);
   void shortestPathToDeadlock(StateSpace& out);
   std::uint64_t bytes() const;
-  bool enabledIn(TransitionId t, const std::uint64_t* m) const;
 
   /// A state on the search path. Its successors not yet visited when it was expanded lie
   /// in edges_ from the previous frame's `end` to its own.
@@ -87,10 +86,6 @@ class Search {
   bool root_bottom_ = false;
   std::uint64_t peak_ = 0;
 };
-
-bool Search::enabledIn(TransitionId t, const std::uint64_t* m) const {
-  return detail::enabledIn(net_, store_->layout(), t, m);
-}
 
 Search::Expand Search::fire(TransitionId t, const std::uint64_t* m, std::uint64_t* out, bool& enabled) {
   std::size_t field = 0;
@@ -201,14 +196,9 @@ void Search::finishComponent(StateId v) {
     ++bottoms_;
     if (live_) {
       union_.assign(net_.transitions().size(), false);
-      auto mark = [&](StateId s) {
-        for (TransitionId t = 0; t < union_.size(); ++t) {
-          if (!union_[t] && enabledIn(t, store_->at(s))) union_[t] = true;
-        }
-      };
-      mark(v);
-      for (std::size_t i = first; i < size; ++i) mark(stack_[i]);
-      live_ = std::all_of(union_.begin(), union_.end(), [](bool b) { return b; });
+      std::size_t fire = markEnabled(net_, store_->layout(), store_->at(v), union_);
+      for (std::size_t i = first; i < size; ++i) fire += markEnabled(net_, store_->layout(), store_->at(stack_[i]), union_);
+      live_ = fire == union_.size();
     }
   }
   root_bottom_ = !leaves;

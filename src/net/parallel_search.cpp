@@ -280,14 +280,9 @@ class Parallel {
           ++bottoms;
           if (live) {
             std::fill(fires.begin(), fires.end(), false);
-            auto mark = [&](std::uint32_t x) {
-              for (TransitionId t = 0; t < transitions; ++t) {
-                if (!fires[t] && enabledIn(net_, layout_, t, marking(x))) fires[t] = true;
-              }
-            };
-            mark(v);
-            for (std::size_t i = first; i < stack.size(); ++i) mark(stack[i]);
-            live = std::all_of(fires.begin(), fires.end(), [](bool b) { return b; });
+            std::size_t fire = markEnabled(net_, layout_, marking(v), fires);
+            for (std::size_t i = first; i < stack.size(); ++i) fire += markEnabled(net_, layout_, marking(stack[i]), fires);
+            live = fire == transitions;
           }
         }
         root_bottom = !leaving;

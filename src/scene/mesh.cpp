@@ -46,10 +46,22 @@ const std::vector<std::string>& meshExtensions() {
 
 namespace {
 
-std::string lower(std::string s) {
-  for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
+/// The file's extension in lower case, with the dot.
+std::string extensionOf(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
 }
+
+}  // namespace
+
+bool isMeshFile(const std::string& path) {
+  const std::string ext = extensionOf(path);
+  const auto& known = meshExtensions();
+  return std::find(known.begin(), known.end(), ext) != known.end();
+}
+
+namespace {
 
 /// Adds the part only when it has triangles.
 void keep(MeshData& mesh, MeshPart part) {
@@ -221,12 +233,12 @@ std::shared_ptr<const MeshData> loadMesh(const std::string& path, std::string& w
     why = "no such file";
     return nullptr;
   }
-  const std::string ext = lower(fs::path(path).extension().string());
-  const auto& known = meshExtensions();
-  if (std::find(known.begin(), known.end(), ext) == known.end()) {
+  const std::string ext = extensionOf(path);
+  if (!isMeshFile(path)) {
     why = "unsupported mesh format '" + ext + "' (gdpn reads obj, stl, 3ds, gltf, glb, dae, ply, wrl, iv)";
     return nullptr;
   }
+  const bool coin = ext == ".wrl" || ext == ".iv";
   const auto time = fs::last_write_time(path, ec);
   const auto size = fs::file_size(path, ec);
   std::lock_guard lock(mutex);
@@ -235,7 +247,7 @@ std::shared_ptr<const MeshData> loadMesh(const std::string& path, std::string& w
   }
   auto mesh = std::make_shared<MeshData>();
   mesh->path = path;
-  const bool ok = (ext == ".wrl" || ext == ".iv") ? readWithCoin(path, *mesh, why) : readWithAssimp(path, *mesh, why);
+  const bool ok = coin ? readWithCoin(path, *mesh, why) : readWithAssimp(path, *mesh, why);
   if (!ok) return nullptr;
   if (mesh->parts.empty()) {
     why = "it holds no triangles";

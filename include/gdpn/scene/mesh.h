@@ -53,6 +53,8 @@ struct MeshData {
 
 /// The file extensions gdpn reads meshes from, lower case with the dot.
 const std::vector<std::string>& meshExtensions();
+/// True when `path` ends in one of meshExtensions() (in any case).
+bool isMeshFile(const std::string& path);
 
 /// Reads the mesh at `path` (cached: the same file is read once while it is unchanged). On
 /// failure, null and `why` gives the importer's reason.

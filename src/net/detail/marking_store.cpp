@@ -27,6 +27,14 @@ bool enabledIn(const Net& net, const Layout& layout, TransitionId t, const std::
   return true;
 }
 
+std::size_t markEnabled(const Net& net, const Layout& layout, const std::uint64_t* m, std::vector<bool>& seen) {
+  std::size_t added = 0;
+  for (TransitionId t = 0; t < seen.size(); ++t) {
+    if (!seen[t] && enabledIn(net, layout, t, m)) seen[t] = true, ++added;
+  }
+  return added;
+}
+
 Fired fireInto(const Net& net, const Layout& layout, TransitionId t, const std::uint64_t* m, std::uint64_t* out,
                std::size_t& field) {
   if (!enabledIn(net, layout, t, m)) return Fired::NotEnabled;

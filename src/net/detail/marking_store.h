@@ -210,6 +210,10 @@ enum class Fired : std::uint8_t { Ok, NotEnabled, TooBig };
 /// True when `t` is enabled in the packed marking `m` (sensor conditions count as true).
 bool enabledIn(const Net& net, const Layout& layout, TransitionId t, const std::uint64_t* m);
 
+/// Marks in `seen` the transitions enabled in `m`; returns how many were not marked before.
+/// Over the states of a bottom component it gives the transitions that fire inside it.
+std::size_t markEnabled(const Net& net, const Layout& layout, const std::uint64_t* m, std::vector<bool>& seen);
+
 /// Fires `t` on `m` into `out`. TooBig (with the field in `field`) when a count does not fit.
 Fired fireInto(const Net& net, const Layout& layout, TransitionId t, const std::uint64_t* m, std::uint64_t* out,
                std::size_t& field);
