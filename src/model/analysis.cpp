@@ -135,6 +135,7 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
     j["cycle_times"].push_back({{"invariant", invariantText(net, inv.p[c.invariant])},
                                 {"transitions", names},
                                 {"tokens", c.tokens},
+                                {"circuit", c.circuit},
                                 {"seconds", c.seconds}});
   }
   j["cycle_time"] = a.cycles.empty() ? ordered_json(nullptr) : ordered_json(a.cycles.front().seconds);
@@ -193,10 +194,15 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
   }
   if (inv.t.size() > kShown) out << "    ... and " << inv.t.size() - kShown << " more (--json lists all)\n";
   if (!a.cycles.empty()) {
-    out << "cycle times (sum of durations over tokens, per P-invariant):\n";
+    out << "cycle times (per P-invariant: the longest circuit of one token, else durations summed over tokens):\n";
     for (const auto& c : a.cycles) {
       out << "  " << seconds(c.seconds) << "  " << invariantText(net, inv.p[c.invariant]) << " (" << c.tokens
-          << (c.tokens == 1 ? " token)" : " tokens)") << "\n";
+          << (c.tokens == 1 ? " token" : " tokens");
+      if (c.circuit) {
+        out << "; circuit";
+        for (std::size_t i = 0; i < c.transitions.size(); ++i) out << (i ? " -> " : " ") << tr[c.transitions[i]].name;
+      }
+      out << ")\n";
     }
     out << "  the net's cycle time is at least " << seconds(a.cycles.front().seconds) << "\n";
   }

@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 
 #include "gdpn/net/slot.h"
 
@@ -283,6 +284,73 @@ bool isTInvariant(const Net& net, const Invariant& x) {
   return !x.weights.empty() && std::all_of(sum.begin(), sum.end(), [](std::int64_t v) { return v == 0; });
 }
 
+namespace {
+
+/// For a P-invariant that carries one token through a state machine (every transition that
+/// takes from it takes one token from one of its slots and puts one into one), the token's
+/// round trips are its elementary circuits: finds the longest (seconds), or nothing when the
+/// invariant is not such a state machine or the circuits are too many to list.
+std::optional<std::pair<double, std::vector<TransitionId>>> longestCircuit(const Net& net, std::span<const std::int64_t> y,
+                                                                        std::span<const TransitionId> transitions,
+                                                                        std::span<const double> seconds) {
+  struct Edge {
+    PlaceSlotId from, to;
+    TransitionId t;
+  };
+  std::vector<Edge> edges;
+  for (TransitionId t : transitions) {
+    std::optional<PlaceSlotId> from, to;
+    for (const Term& term : net.termsOf(t)) {
+      if (y[term.place_slot] == 0 || (term.kind != TermKind::Input && term.kind != TermKind::Output)) continue;
+      auto& end = term.kind == TermKind::Input ? from : to;
+      if (y[term.place_slot] != 1 || term.weight != 1 || end) return std::nullopt;
+      end = term.place_slot;
+    }
+    if (!from || !to) return std::nullopt;
+    edges.push_back({*from, *to, t});
+  }
+  // depth-first enumeration of elementary circuits, each found once from its smallest slot
+  constexpr std::size_t kMaxSteps = 200'000;
+  std::size_t steps = 0;
+  double best = -1.0;
+  std::vector<TransitionId> best_path, path;
+  std::vector<PlaceSlotId> on_path;
+  bool gave_up = false;
+  auto dfs = [&](auto&& self, PlaceSlotId start, PlaceSlotId at, double sum) -> void {
+    for (const Edge& e : edges) {
+      if (gave_up) return;
+      if (e.from != at) continue;
+      if (++steps > kMaxSteps) {
+        gave_up = true;
+        return;
+      }
+      const double d = e.t < seconds.size() ? seconds[e.t] : 0.0;
+      path.push_back(e.t);
+      if (e.to == start) {
+        if (sum + d > best) {
+          best = sum + d;
+          best_path = path;
+        }
+      } else if (e.to > start && std::find(on_path.begin(), on_path.end(), e.to) == on_path.end()) {
+        on_path.push_back(e.to);
+        self(self, start, e.to, sum + d);
+        on_path.pop_back();
+      }
+      path.pop_back();
+    }
+  };
+  for (const Edge& e : edges) {
+    if (std::find(on_path.begin(), on_path.end(), e.from) != on_path.end()) continue;
+    on_path = {e.from};
+    dfs(dfs, e.from, e.from, 0.0);
+    if (gave_up) return std::nullopt;
+  }
+  if (best < 0.0) return std::nullopt;
+  return std::make_pair(best, std::move(best_path));
+}
+
+}  // namespace
+
 std::vector<CycleBound> cycleBounds(const Net& net, const Invariants& invariants, std::span<const double> seconds) {
   std::vector<CycleBound> out;
   std::vector<std::int64_t> y(net.placeSlots().size());
@@ -307,6 +375,13 @@ std::vector<CycleBound> cycleBounds(const Net& net, const Invariants& invariants
     }
     if (b.transitions.empty()) continue;
     b.seconds = work / static_cast<double>(b.tokens);
+    if (b.tokens == 1) {
+      if (auto circuit = longestCircuit(net, y, b.transitions, seconds)) {
+        b.seconds = circuit->first;
+        b.transitions = std::move(circuit->second);
+        b.circuit = true;
+      }
+    }
     out.push_back(std::move(b));
   }
   std::stable_sort(out.begin(), out.end(), [](const CycleBound& x, const CycleBound& z) { return x.seconds > z.seconds; });

@@ -1,5 +1,5 @@
-// The factory case study (examples/factory), shortened: what it must show whatever the
-// stations' mechanics do.
+// The factory case study (examples/factory): the arm's cycle, and the line's figures from a
+// whole run.
 
 #include <gtest/gtest.h>
 
@@ -55,6 +55,47 @@ TEST(Factory, TheArmDeliversOneBoxPerFourSecondCycle) {
     ++released;
   }
   EXPECT_EQ(released, 10);
+}
+
+std::string figure(const Report& report, const std::string& name) {
+  for (const auto& [k, v] : report.figures) {
+    if (k == name) return v;
+  }
+  ADD_FAILURE() << "no figure '" << name << "'";
+  return {};
+}
+
+TEST(Factory, TheLinePaintsBoxesOnceAndTheRodsStrikeNone) {
+  auto sim = testing::openModelFile("examples/factory/factory.gdpn.yaml");
+  ASSERT_TRUE(sim);
+  const auto outcome = sim->run({120.0, std::nullopt});
+  ASSERT_EQ(outcome.reason, StopReason::Until) << outcome.message;
+  const auto report = makeReport(*sim, outcome);
+  ASSERT_EQ(report.figures_error, "");
+  // every box the arm delivered; each station inserts boxes and works 15 s on each
+  EXPECT_EQ(figure(report, "boxes delivered by the arm"), "24");
+  for (const char* station : {"stationA", "stationB"}) {
+    const std::string cycle = figure(report, std::string(station) + " cycle, measured");
+    EXPECT_NE(cycle.find("15.00 s working"), std::string::npos) << cycle;
+    EXPECT_GE(std::stoi(figure(report, std::string("painted by ") + station)), 3);
+  }
+  // the safety checks: no box painted twice, no box struck by a rod
+  EXPECT_EQ(figure(report, "boxes painted twice"), "0");
+  EXPECT_EQ(figure(report, "rod strikes"), "0");
+  // the line's figures, pinned (the run is deterministic): 18 boxes at the end, 6 painted
+  EXPECT_EQ(figure(report, "boxes at the end of the line"), "18");
+  EXPECT_EQ(figure(report, "painted among them"), "6");
+  EXPECT_EQ(figure(report, "unpainted among them"), "12");
+  // the cells' bound is their 15 s circuit (push box, pull rod, push rod, pull box, wait);
+  // the skip is a circuit of its own
+  int cells = 0;
+  for (const auto& c : report.cycles) {
+    if (c.invariant.rfind("factory/station", 0) != 0) continue;
+    ++cells;
+    EXPECT_EQ(c.bound, 15.0) << c.invariant;
+    EXPECT_GE(c.measured, 15.0) << c.invariant;
+  }
+  EXPECT_EQ(cells, 2);
 }
 
 }  // namespace

@@ -276,8 +276,8 @@ TEST(CliAnalyze, APnmlNetAndAModelFile) {
 TEST(CliAnalyze, TwoCyclesGiveBothCycleTimesAndTheLargerAsTheBound) {
   auto r = gdpn("analyze tests/data/good/cycles.gdpn.yaml");
   ASSERT_EQ(r.code, 0) << r.out;
-  EXPECT_NE(r.out.find("  4.000 s  main/a_ready + main/a_half (1 token)\n"
-                       "  1.000 s  main/b_ready + main/b_one + main/b_two (1 token)\n"
+  EXPECT_NE(r.out.find("  4.000 s  main/a_ready + main/a_half (1 token; circuit main/a1 -> main/a2)\n"
+                       "  1.000 s  main/b_ready + main/b_one + main/b_two (1 token; circuit main/b1 -> main/b2 -> main/b3)\n"
                        "  the net's cycle time is at least 4.000 s"),
             std::string::npos)
       << r.out;
@@ -286,6 +286,7 @@ TEST(CliAnalyze, TwoCyclesGiveBothCycleTimesAndTheLargerAsTheBound) {
   EXPECT_EQ(j["cycle_time"], 4.0);
   ASSERT_EQ(j["cycle_times"].size(), 2u);
   EXPECT_EQ(j["cycle_times"][1]["seconds"], 1.0);
+  EXPECT_EQ(j["cycle_times"][1]["circuit"], true);
   EXPECT_EQ(j["invariants"]["p"].size(), 2u);
   EXPECT_EQ(j["invariants"]["conservative"], true);
   // the run measures the same cycles and shows them beside the bounds

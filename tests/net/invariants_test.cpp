@@ -199,5 +199,50 @@ TEST(CycleBounds, TwoCyclesGiveBothTimesAndTheLargerBounds) {
   EXPECT_EQ(bounds[2].transitions.size(), 3u);
 }
 
+TEST(CycleBounds, AChoiceIsACircuitOfItsOwnAndTheLongestBounds) {
+  // one token: ready -> work (3 s) -> busy -> finish (12 s) -> ready, or ready -> skip (2 s)
+  // -> ready. Summing every transition would say 17 s; the token's longest round trip is 15 s.
+  NetBuilder b;
+  const auto ready = b.addPlace("ready");
+  const auto busy = b.addPlace("busy");
+  b.setSlot(ready, kDefaultSlot, SlotKind::Control, kUnbounded, 1);
+  auto timed = [&](const std::string& name, double seconds, PlaceId from, PlaceId to) {
+    Duration d;
+    d.a = seconds;
+    const auto t = b.addTransition(name, d);
+    b.addInput(from, t);
+    b.addOutput(t, to);
+    return t;
+  };
+  const auto work = timed("work", 3.0, ready, busy);
+  const auto finish = timed("finish", 12.0, busy, ready);
+  timed("skip", 2.0, ready, ready);
+  auto net = b.freeze();
+  const Invariants inv = invariants(*net);
+  std::vector<double> seconds;
+  for (const auto& t : net->transitions()) seconds.push_back(meanSeconds(t.duration));
+  const auto bounds = cycleBounds(*net, inv, seconds);
+  ASSERT_EQ(bounds.size(), 1u);
+  EXPECT_TRUE(bounds[0].circuit);
+  EXPECT_DOUBLE_EQ(bounds[0].seconds, 15.0);
+  EXPECT_EQ(bounds[0].transitions, (std::vector<TransitionId>{work, finish}));
+}
+
+TEST(CycleBounds, TwoTokensKeepTheSum) {
+  NetBuilder b;
+  const auto p = b.addPlace("p");
+  b.setSlot(p, kDefaultSlot, SlotKind::Control, kUnbounded, 2);
+  Duration d;
+  d.a = 3.0;
+  const auto t = b.addTransition("t", d);
+  b.addInput(p, t);
+  b.addOutput(t, p);
+  auto net = b.freeze();
+  const auto bounds = cycleBounds(*net, invariants(*net), std::vector<double>{3.0});
+  ASSERT_EQ(bounds.size(), 1u);
+  EXPECT_FALSE(bounds[0].circuit);
+  EXPECT_DOUBLE_EQ(bounds[0].seconds, 1.5);
+}
+
 }  // namespace
 }  // namespace gdpn::net

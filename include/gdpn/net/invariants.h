@@ -51,14 +51,17 @@ bool isTInvariant(const Net& net, const Invariant& x);
 /// The cycle time of one P-invariant of a timed net.
 struct CycleBound {
   std::size_t invariant = 0;               ///< index into Invariants::p
-  std::vector<TransitionId> transitions;   ///< transitions taking tokens from the invariant's places
+  std::vector<TransitionId> transitions;   ///< transitions taking tokens from the invariant's places (the circuit's, in order, when `circuit`)
   std::int64_t tokens = 0;                 ///< weighted tokens on it, y·M0
-  double seconds = 0.0;                    ///< sum of duration × weight taken, over tokens
+  double seconds = 0.0;                    ///< sum of duration × weight taken, over tokens; or the longest circuit's duration
+  bool circuit = false;                    ///< one token through a state machine: `seconds` is its longest elementary circuit
 };
 
 /// Cycle-time bounds, one per P-invariant that carries tokens and feeds a transition, largest
 /// first; `seconds[t]` is the duration of transition `t` (its mean for drawn durations). The
-/// net cannot repeat faster than the first one's `seconds`.
+/// net cannot repeat faster than the first one's `seconds`. Where one token runs through a
+/// state machine with choices (a cell that either skips a box or works on it), each choice
+/// is a conflict-free circuit of its own and the bound is the longest circuit's duration.
 std::vector<CycleBound> cycleBounds(const Net& net, const Invariants& invariants, std::span<const double> seconds);
 
 /// The mean of a duration, seconds.
