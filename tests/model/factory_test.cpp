@@ -98,5 +98,32 @@ TEST(Factory, TheLinePaintsBoxesOnceAndTheRodsStrikeNone) {
   EXPECT_EQ(cells, 2);
 }
 
+TEST(Vehicles, EveryVehicleReachesTheDepotWithoutTouchingARock) {
+  auto sim = testing::openModelFile("examples/vehicles/vehicles.gdpn.yaml");
+  ASSERT_TRUE(sim);
+  std::ostringstream trace;
+  sim->traceTo(trace);
+  const auto outcome = sim->run({});
+  ASSERT_EQ(outcome.reason, StopReason::Stopped) << outcome.message;
+  EXPECT_EQ(outcome.message, "all 4 vehicles reached the depot");
+  EXPECT_LT(outcome.time, 40.0);
+  int arrived = 0;
+  for (const auto& line : testing::logLines(trace.str())) {
+    char name[16] = {};
+    double at = 0, metres = 0;
+    if (std::sscanf(line.c_str(), "%15s reached the depot at %lf s after %lf m", name, &at, &metres) != 3) continue;
+    ++arrived;
+    EXPECT_GT(metres, 20.0) << name;  // every start is over 20 m from the depot
+    // each car stands in the depot: its 3 x 3 m region holds some part of the 0.8 m car
+    const auto p = sim->plant()->find(std::string(name) + "/body")->world.position;
+    EXPECT_NEAR(p.x, 12.0, 2.0) << name;
+    EXPECT_NEAR(p.y, 10.0, 2.0) << name;
+  }
+  EXPECT_EQ(arrived, 4);
+  const auto report = makeReport(*sim, outcome);
+  const double closest = std::stod(figure(report, "closest approach to a rock"));
+  EXPECT_GT(closest, 0.47);  // the car's half-diagonal: it never touched a rock
+}
+
 }  // namespace
 }  // namespace gdpn::model
