@@ -56,6 +56,10 @@ class PnmlReader {
   }
 
  private:
+  /// A name label kept as the description: not empty, and not one that starts the way the
+  /// description of a renamed id does ("PNML id X"), which a save would read as an id.
+  static bool usableLabel(const std::string& label) { return !label.empty() && label.rfind("PNML id ", 0) != 0; }
+
   /// A name for PNML id `id`: the id itself when it is an identifier, else a cleaned copy.
   std::string nameFor(const std::string& id) {
     std::string n = core::isIdentifier(id) ? id : std::string();
@@ -118,7 +122,7 @@ class PnmlReader {
         p.name = nameFor(*id);
         p.loc = c->loc;
         const std::string label = textOf(c->child("name"));
-        if (!label.empty() && label != p.name) p.description = label;
+        if (usableLabel(label) && label != p.name) p.description = label;
         if (p.name != *id) p.description = "PNML id " + *id;
         if (const XmlElement* m = c->child("initialMarking")) {
           if (auto n = count(*m, "an initial marking"); n && *n > 0) p.tokens.push_back({kDefaultSlot, *n, m->loc});
@@ -135,7 +139,7 @@ class PnmlReader {
         t.duration.loc = c->loc;
         t.probability_loc = c->loc;
         const std::string label = textOf(c->child("name"));
-        if (!label.empty() && label != t.name) t.description = label;
+        if (usableLabel(label) && label != t.name) t.description = label;
         if (t.name != *id) t.description = "PNML id " + *id;
         t.position = position(*c);
         ids_[*id] = {false, t.name};

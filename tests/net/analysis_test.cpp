@@ -199,6 +199,28 @@ TEST(Pnml, RoundTripKeepsTheNet) {
   }
 }
 
+TEST(Pnml, ALabelThatLooksLikeARenamedIdIsNotTakenForOne) {
+  // found by the PNML fuzzer: a name label "PNML id X" was kept as the description, which a
+  // save reads as the original id of a renamed construct, so the place came back as "X"
+  const std::string pnml = R"(<pnml><net id="n"><page id="g">
+    <place id="a"><name><text>PNML id b</text></name><initialMarking><text>1</text></initialMarking></place>
+    <transition id="t"><name><text>PNML id u</text></name></transition>
+    <arc id="e" source="a" target="t"/>
+  </page></net></pnml>)";
+  core::Diagnostics diags;
+  auto first = parsePnml(pnml, "label.pnml", diags);
+  ASSERT_TRUE(first) << diags.str();
+  EXPECT_EQ(first->pages[0].places[0].name, "a");
+  EXPECT_EQ(first->pages[0].places[0].description, "");
+  std::string why;
+  const auto text = writePnml(*first, why);
+  ASSERT_TRUE(text) << why;
+  auto second = parsePnml(*text, "again.pnml", diags);
+  ASSERT_TRUE(second) << diags.str() << *text;
+  EXPECT_EQ(*first, *second);
+  EXPECT_EQ(second->pages[0].transitions[0].name, "t");
+}
+
 TEST(Pnml, WritingRefusesWhatAPTNetCannotHold) {
   NetSpec spec;
   PageSpec page;
