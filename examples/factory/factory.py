@@ -118,7 +118,7 @@ def stop_region_clear(s, which):
 def crowded(t):
     """A second box presses on the one in front of the rod: the left stop could not rise
     between them, so the station lets both pass."""
-    return not no_box(sim.place(f"factory/{station(t)}/over_left").c0)
+    return not stop_region_clear(station(t), "left")
 
 
 def rise(t, which):

@@ -339,10 +339,13 @@ std::optional<std::pair<double, std::vector<TransitionId>>> longestCircuit(const
       path.pop_back();
     }
   };
-  for (const Edge& e : edges) {
-    if (std::find(on_path.begin(), on_path.end(), e.from) != on_path.end()) continue;
-    on_path = {e.from};
-    dfs(dfs, e.from, e.from, 0.0);
+  std::vector<PlaceSlotId> starts;
+  for (const Edge& e : edges) starts.push_back(e.from);
+  std::sort(starts.begin(), starts.end());
+  starts.erase(std::unique(starts.begin(), starts.end()), starts.end());
+  for (PlaceSlotId start : starts) {
+    on_path = {start};
+    dfs(dfs, start, start, 0.0);
     if (gave_up) return std::nullopt;
   }
   if (best < 0.0) return std::nullopt;

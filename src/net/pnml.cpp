@@ -14,6 +14,12 @@
 namespace gdpn::net {
 namespace {
 
+/// How the description of a construct renamed on reading keeps its PNML id: "PNML id X".
+const std::string kIdNote = "PNML id ";
+
+/// True when `description` is such a note rather than a label.
+bool isIdNote(const std::string& description) { return description.rfind(kIdNote, 0) == 0; }
+
 using detail::XmlElement;
 
 /// The text of <name><text>..</text></name> (or of any such pair), trimmed.
@@ -56,9 +62,14 @@ class PnmlReader {
   }
 
  private:
-  /// A name label kept as the description: not empty, and not one that starts the way the
-  /// description of a renamed id does ("PNML id X"), which a save would read as an id.
-  static bool usableLabel(const std::string& label) { return !label.empty() && label.rfind("PNML id ", 0) != 0; }
+  /// The description of a place or transition read as `name` from PNML id `id`: the id note
+  /// when it was renamed, else its name label when that differs from the name. A label that
+  /// reads like an id note is dropped, since a save would take it for one.
+  std::string describe(const XmlElement& el, const std::string& name, const std::string& id) const {
+    if (name != id) return kIdNote + id;
+    const std::string label = textOf(el.child("name"));
+    return label == name || isIdNote(label) ? std::string() : label;
+  }
 
   /// A name for PNML id `id`: the id itself when it is an identifier, else a cleaned copy.
   std::string nameFor(const std::string& id) {
@@ -121,9 +132,7 @@ class PnmlReader {
         PlaceSpec p;
         p.name = nameFor(*id);
         p.loc = c->loc;
-        const std::string label = textOf(c->child("name"));
-        if (usableLabel(label) && label != p.name) p.description = label;
-        if (p.name != *id) p.description = "PNML id " + *id;
+        p.description = describe(*c, p.name, *id);
         if (const XmlElement* m = c->child("initialMarking")) {
           if (auto n = count(*m, "an initial marking"); n && *n > 0) p.tokens.push_back({kDefaultSlot, *n, m->loc});
         }
@@ -138,9 +147,7 @@ class PnmlReader {
         t.loc = c->loc;
         t.duration.loc = c->loc;
         t.probability_loc = c->loc;
-        const std::string label = textOf(c->child("name"));
-        if (usableLabel(label) && label != t.name) t.description = label;
-        if (t.name != *id) t.description = "PNML id " + *id;
+        t.description = describe(*c, t.name, *id);
         t.position = position(*c);
         ids_[*id] = {false, t.name};
         page_.transitions.push_back(std::move(t));
@@ -218,13 +225,12 @@ std::string escape(const std::string& s) {
 
 /// The PNML id of a construct: its original id when it came from PNML, else its name.
 std::string pnmlId(const std::string& name, const std::string& description) {
-  const std::string prefix = "PNML id ";
-  return description.rfind(prefix, 0) == 0 ? description.substr(prefix.size()) : name;
+  return isIdNote(description) ? description.substr(kIdNote.size()) : name;
 }
 
 /// The name label to write: the description when it holds one, else the id.
 std::string label(const std::string& id, const std::string& description) {
-  return description.empty() || description.rfind("PNML id ", 0) == 0 ? id : description;
+  return description.empty() || isIdNote(description) ? id : description;
 }
 
 std::string positionXml(const std::optional<EditorPos>& p) {

@@ -167,6 +167,13 @@ TEST(Invariants, EveryReportedInvariantIsRealOnTheConformanceNets) {
   }
 }
 
+/// Each transition's mean duration, seconds, in transition order.
+std::vector<double> meanDurations(const Net& net) {
+  std::vector<double> seconds;
+  for (const auto& t : net.transitions()) seconds.push_back(meanSeconds(t.duration));
+  return seconds;
+}
+
 TEST(CycleBounds, TwoCyclesGiveBothTimesAndTheLargerBounds) {
   // A: 1.5 + 2.5 s on one token = 4 s; B: 0.25 + 0.5 + 0.25 s on one token = 1 s; C: three
   // transitions of 1 s sharing two tokens = 1.5 s
@@ -188,9 +195,7 @@ TEST(CycleBounds, TwoCyclesGiveBothTimesAndTheLargerBounds) {
   ring("c", {1.0, 1.0, 1.0}, 2);
   auto net = b.freeze();
   const Invariants inv = invariants(*net);
-  std::vector<double> seconds;
-  for (const auto& t : net->transitions()) seconds.push_back(meanSeconds(t.duration));
-  const auto bounds = cycleBounds(*net, inv, seconds);
+  const auto bounds = cycleBounds(*net, inv, meanDurations(*net));
   ASSERT_EQ(bounds.size(), 3u);
   EXPECT_DOUBLE_EQ(bounds[0].seconds, 4.0);
   EXPECT_DOUBLE_EQ(bounds[1].seconds, 1.5);
@@ -219,9 +224,7 @@ TEST(CycleBounds, AChoiceIsACircuitOfItsOwnAndTheLongestBounds) {
   timed("skip", 2.0, ready, ready);
   auto net = b.freeze();
   const Invariants inv = invariants(*net);
-  std::vector<double> seconds;
-  for (const auto& t : net->transitions()) seconds.push_back(meanSeconds(t.duration));
-  const auto bounds = cycleBounds(*net, inv, seconds);
+  const auto bounds = cycleBounds(*net, inv, meanDurations(*net));
   ASSERT_EQ(bounds.size(), 1u);
   EXPECT_TRUE(bounds[0].circuit);
   EXPECT_DOUBLE_EQ(bounds[0].seconds, 15.0);
