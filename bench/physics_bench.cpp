@@ -1,5 +1,6 @@
 // Physics cost: 100 boxes on a conveyor through gdpn against the same scene in raw ODE (same
-// settings), and 1,000 resting boxes with auto-disable on and off.
+// settings), 1,000 resting boxes with auto-disable on and off, and 20 boxes on a belt among
+// 100 to 10,000 static pillars (the broad phase: the step should not grow with them).
 // Record results in docs/performance.md.
 
 #include <benchmark/benchmark.h>
@@ -135,6 +136,23 @@ void BM_RestingBoxes(benchmark::State& state) {
   state.counters["awake"] = static_cast<double>(p.world->awakeCount());
 }
 BENCHMARK(BM_RestingBoxes)->Arg(1)->Arg(0)->Unit(benchmark::kMicrosecond);
+
+// 20 boxes riding a belt through a hall of `n` static pillars (0.2 m, 1 m apart, beside the
+// belt): the pillars never move, so the step's cost should not grow with their number
+void BM_StaticPillars(benchmark::State& state) {
+  const auto n = static_cast<int>(state.range(0));
+  std::string t = boxes(20, true, true);
+  const int side = static_cast<int>(std::ceil(std::sqrt(n)));
+  for (int i = 0; i < n; ++i) {
+    const double x = (i % side) * 1.0, y = 25.0 + (i / side) * 1.0;
+    t += "  - Transform: {translation: [" + core::formatDouble(x) + ", " + core::formatDouble(y) +
+         ", 1], children: [{Cube: {size: [0.2, 0.2, 2]}}]}\n";
+  }
+  GdpnPlant p(t);
+  for (auto _ : state) p.world->step(kDt);
+  state.counters["steps_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_StaticPillars)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

@@ -23,6 +23,12 @@ def station(t):
     return t.name.split("/")[-2]
 
 
+def yard_eye(place):
+    """The yard's belt runs while a box lies at the chute's foot, to make room for the next;
+    stopped, the boxes on it come to rest (and sleep, costing the solver nothing)."""
+    sim.node("line/yard/drive").speed = 0.0 if no_box(place.c0) else 0.6
+
+
 def lane_drive():
     """The feed lane's belt: it runs only while a box moves up to the pickup place."""
     return sim.node("feed/lane/drive")
@@ -49,7 +55,7 @@ def at_eye(t, box):
     """The box stands still against the right stop, in front of the rod."""
     ex, ey, _ = eye_position(t)
     bx, by, _ = box.position
-    return -0.03 < bx - ex < 0.1 and abs(by - ey) < 0.15 and abs(box.velocity[0]) < 0.05
+    return -0.12 < bx - ex < 0.1 and abs(by - ey) < 0.15 and abs(box.velocity[0]) < 0.05
 
 
 def past(t, box):

@@ -12,6 +12,7 @@
 #include <unordered_map>
 
 #include "gdpn/core/assert.h"
+#include "gdpn/core/broad_phase.h"
 #include "gdpn/scene/actions.h"
 #include "gdpn/scene/mesh.h"
 #include "gdpn/scene/terrain.h"
@@ -169,11 +170,12 @@ struct World::Impl {
     dJointID id;
     std::string kind;
     int vel1, fmax1, vel2, fmax2;  // field indices
+    int control, target1, servo_time;
   };
 
   scene::Scene& scene;
   dWorldID world = nullptr;
-  dSpaceID space = nullptr;
+  dSpaceID space = nullptr;  // holds every geometry; never collided (see the broad phase below)
   dJointGroupID contacts = nullptr;
   int substeps = 1;
   std::deque<Body> bodies;  // stable addresses; a removed body keeps its place with id null
@@ -184,7 +186,7 @@ struct World::Impl {
   std::unordered_map<scene::NodeHandle, dGeomID> geom_of;  // shape node -> its geometry
   struct Sensor {
     Node* node;
-    dGeomID geom;     // in sensor_space, never in contacts
+    dGeomID geom;     // never in contacts
     bool ray;         // a ray: RangeFinder, or a Region of shape ray
   };
   std::vector<Sensor> sensors;
@@ -205,6 +207,20 @@ struct World::Impl {
   static constexpr std::uintptr_t kSensorTag = std::uintptr_t{1} << 62;
   std::string model_dir;
   std::map<std::pair<dBodyID, dBodyID>, dJointID> attached;
+
+  // ---- broad phase ----
+  // Shapes on bodies are swept against each other and looked up in a tree of the shapes
+  // without one, which never move; planes and other endless shapes meet everything.
+  std::vector<dGeomID> shapes;     // every shape's geometry, in the order made
+  bool shapes_changed = true;      // the lists and the tree below are to be remade
+  std::vector<dGeomID> moving;     // shapes on bodies
+  std::vector<dGeomID> fixed;      // shapes on no body, bounded: in fixed_tree
+  std::vector<dGeomID> endless;    // shapes on no body whose box is unbounded
+  std::vector<core::Aabb> moving_boxes;
+  core::AabbTree fixed_tree;
+  core::SweepAndPrune sweep;
+  std::vector<core::Aabb> sense_boxes;  // the moving shapes', then the sensors'
+  core::SweepAndPrune sense_sweep;
 
   explicit Impl(scene::Scene& s) : scene(s) {}
   ~Impl() {
@@ -309,7 +325,6 @@ struct World::Impl {
     }
   }
 
-  static bool isSensor(dGeomID g) { return (reinterpret_cast<std::uintptr_t>(dGeomGetData(g)) & kSensorTag) != 0; }
 
   /// True when shape `shape` is in the scope of `sensor`.
   static bool inScope(const Node& sensor, const Node& shape) {
@@ -336,31 +351,27 @@ struct World::Impl {
     const Node* hit;
   };
 
-  static void senseCallback(void* data, dGeomID o1, dGeomID o2) {
-    auto& self = *static_cast<Impl*>(data);
-    const bool s1 = isSensor(o1), s2 = isSensor(o2);
-    if (s1 == s2) return;  // only sensor-to-shape pairs matter here
-    dGeomID sg = s1 ? o1 : o2, other = s1 ? o2 : o1;
-    const auto index = reinterpret_cast<std::uintptr_t>(dGeomGetData(sg)) & ~kSensorTag;
-    const Sensor& sensor = self.sensors[index];
-    const Surface s = surfaceOf(other, self);
+  /// Sensor `index` and shape `other`, whose boxes overlap: what the sensor feels of it.
+  void feel(std::size_t index, dGeomID other) {
+    const Sensor& sensor = sensors[index];
+    const Surface s = surfaceOf(other, *this);
     if (!s.node || !inScope(*sensor.node, *s.node)) return;
     dContactGeom c;
-    if (dCollide(sg, other, 1, &c, sizeof(dContactGeom)) == 0) return;
-    Felt& felt = self.felt[index];
+    if (dCollide(sensor.geom, other, 1, &c, sizeof(dContactGeom)) == 0) return;
+    Felt& f = felt[index];
     if (sensor.ray) {
-      if (c.depth < felt.distance) {
-        felt.distance = c.depth;
-        felt.hit = self.reported(*s.node);
+      if (c.depth < f.distance) {
+        f.distance = c.depth;
+        f.hit = reported(*s.node);
       }
     } else {
-      felt.items.push_back(self.reported(*s.node));
+      f.items.push_back(reported(*s.node));
     }
   }
 
   std::vector<Felt> felt;
 
-  /// One pass of the hash space's broad phase finds every sensor-to-shape pair at once.
+  /// Each sensor is placed where its node is, then meets the shapes its box overlaps.
   void sense(std::vector<std::pair<scene::NodeHandle, Feel>>& out) {
     out.clear();
     felt.assign(sensors.size(), Felt{});
@@ -378,7 +389,22 @@ struct World::Impl {
         dGeomSetQuaternion(sensor.geom, q);
       }
     }
-    if (!sensors.empty()) dSpaceCollide(space, this, &senseCallback);
+    if (!sensors.empty()) {
+      // one sweep over the moving shapes' boxes and the sensors' finds the sensor-to-body
+      // pairs; each sensor looks up the fixed shapes in their tree
+      refreshMoving();
+      const std::size_t m = moving.size();
+      sense_boxes.assign(moving_boxes.begin(), moving_boxes.end());
+      for (const auto& sensor : sensors) sense_boxes.push_back(aabbOf(sensor.geom));
+      sense_sweep.pairs(sense_boxes, [&](std::size_t i, std::size_t j) {
+        if ((i < m) == (j < m)) return;  // two shapes, or two sensors
+        feel(std::max(i, j) - m, moving[std::min(i, j)]);
+      });
+      for (std::size_t i = 0; i < sensors.size(); ++i) {
+        fixed_tree.query(sense_boxes[m + i], [&](std::size_t k) { feel(i, fixed[k]); });
+        for (dGeomID g : endless) feel(i, g);
+      }
+    }
     for (std::size_t i = 0; i < sensors.size(); ++i) {
       const Node& n = *sensors[i].node;
       Felt& f = felt[i];
@@ -400,6 +426,8 @@ struct World::Impl {
     scene::traverse(const_cast<Node&>(top), [&](Node& n, const scene::TraversalState&) {
       const auto h = n.handle();
       if (auto g = geom_of.find(h); g != geom_of.end()) {
+        shapes.erase(std::find(shapes.begin(), shapes.end(), g->second));
+        shapes_changed = true;
         dGeomDestroy(g->second);
         geom_of.erase(g);
       }
@@ -629,6 +657,8 @@ struct World::Impl {
     surfaces.push_back(surface);
     dGeomSetData(g, reinterpret_cast<void*>(surfaces.size()));  // 1-based: 0 means none
     geom_of[n.handle()] = g;
+    shapes.push_back(g);
+    shapes_changed = true;
     if (t == "Plane" || t == "Terrain") return true;
     const Pose& at = geom_pose;
     const dQuaternion q = {at.rotation.w, at.rotation.x, at.rotation.y, at.rotation.z};
@@ -709,7 +739,8 @@ struct World::Impl {
     }
     const auto& type = n.type();
     joints.push_back({&n, j, kind, type.fieldIndex("vel1"), type.fieldIndex("fmax1"), type.fieldIndex("vel2"),
-                      type.fieldIndex("fmax2")});
+                      type.fieldIndex("fmax2"), type.fieldIndex("control"), type.fieldIndex("target1"),
+                      type.fieldIndex("servo_time")});
     joint_of[n.handle()] = joints.size() - 1;
     return true;
   }
@@ -718,13 +749,28 @@ struct World::Impl {
 
   static double value(const Node& n, int field) { return std::get<double>(n.value(static_cast<std::size_t>(field))); }
 
+  /// Where joint `j` stands on `axis` (1 or 2): radians, or metres for a slider.
+  static double position(const Joint& j, int axis) {
+    if (j.kind == "hinge") return dJointGetHingeAngle(j.id);
+    if (j.kind == "slider") return dJointGetSliderPosition(j.id);
+    if (j.kind == "universal") return axis == 1 ? dJointGetUniversalAngle1(j.id) : dJointGetUniversalAngle2(j.id);
+    if (j.kind == "hinge2") return axis == 1 ? dJointGetHinge2Angle1(j.id) : 0.0;
+    return 0.0;
+  }
+
   /// Motors follow the joint nodes' fields (a script may have set them).
   void driveMotors() {
     for (const auto& jt : joints) {
       if (!jt.id) continue;
       const Node& n = *jt.node;
       const bool angular = jt.kind != "slider";
-      const double vel1 = angular ? core::radians(value(n, jt.vel1)) : value(n, jt.vel1);
+      double vel1 = angular ? core::radians(value(n, jt.vel1)) : value(n, jt.vel1);
+      if (std::get<std::string>(n.value(static_cast<std::size_t>(jt.control))) == "position") {
+        // a proportional servo: the speed closes the error in servo_time, capped at |vel1|
+        const double target = angular ? core::radians(value(n, jt.target1)) : value(n, jt.target1);
+        const double speed = (target - position(jt, 1)) / value(n, jt.servo_time);
+        vel1 = vel1 == 0 ? speed : std::clamp(speed, -std::abs(vel1), std::abs(vel1));
+      }
       const double fmax1 = value(n, jt.fmax1);
       const double vel2 = core::radians(value(n, jt.vel2)), fmax2 = value(n, jt.fmax2);
       if (jt.kind == "hinge") {
@@ -771,7 +817,7 @@ struct World::Impl {
 
   static void nearCallback(void* data, dGeomID o1, dGeomID o2) {
     auto& self = *static_cast<Impl*>(data);
-    if (isSensor(o1) || isSensor(o2)) return;  // sensors feel, they do not touch
+    // sensors never get here: the broad phase pairs shapes only (sense() pairs the sensors)
     dBodyID b1 = dGeomGetBody(o1), b2 = dGeomGetBody(o2);
     // nothing to do between static shapes, or where everything involved sleeps
     const bool awake1 = b1 && dBodyIsEnabled(b1), awake2 = b2 && dBodyIsEnabled(b2);
@@ -813,6 +859,57 @@ struct World::Impl {
     }
   }
 
+  static core::Aabb aabbOf(dGeomID g) {
+    dReal a[6];
+    dGeomGetAABB(g, a);
+    return {{a[0], a[2], a[4]}, {a[1], a[3], a[5]}};
+  }
+
+  /// Sorts the shapes into moving, fixed and endless, and rebuilds the fixed shapes' tree,
+  /// when shapes have come or gone since the last time.
+  void refreshShapes() {
+    if (!shapes_changed) return;
+    moving.clear();
+    fixed.clear();
+    endless.clear();
+    std::vector<core::Aabb> boxes;
+    for (dGeomID g : shapes) {
+      if (dGeomGetBody(g)) {
+        moving.push_back(g);
+        continue;
+      }
+      dReal a[6];
+      dGeomGetAABB(g, a);
+      if (std::all_of(a, a + 6, [](dReal v) { return std::isfinite(v) && std::abs(v) < 1e12; })) {
+        fixed.push_back(g);
+        boxes.push_back(aabbOf(g));
+      } else {
+        endless.push_back(g);
+      }
+    }
+    fixed_tree.build(boxes);
+    shapes_changed = false;
+  }
+
+  /// The moving shapes' boxes where their bodies are now.
+  void refreshMoving() {
+    refreshShapes();
+    moving_boxes.resize(moving.size());
+    for (std::size_t i = 0; i < moving.size(); ++i) moving_boxes[i] = aabbOf(moving[i]);
+  }
+
+  /// Contacts for every pair of shapes whose boxes overlap, at least one of them moving.
+  void collide() {
+    refreshMoving();
+    sweep.pairs(moving_boxes, [&](std::size_t i, std::size_t j) {
+      if (dGeomGetBody(moving[i]) != dGeomGetBody(moving[j])) nearCallback(this, moving[i], moving[j]);
+    });
+    for (std::size_t i = 0; i < moving.size(); ++i) {
+      fixed_tree.query(moving_boxes[i], [&](std::size_t k) { nearCallback(this, moving[i], fixed[k]); });
+      for (dGeomID g : endless) nearCallback(this, moving[i], g);
+    }
+  }
+
   void step(double dt) {
     const double h = dt / substeps;
     driveMotors();
@@ -823,7 +920,7 @@ struct World::Impl {
         if (f.x != 0 || f.y != 0 || f.z != 0) dBodyAddForce(b.id, f.x, f.y, f.z);
         if (b.torque.x != 0 || b.torque.y != 0 || b.torque.z != 0) dBodyAddTorque(b.id, b.torque.x, b.torque.y, b.torque.z);
       }
-      dSpaceCollide(space, this, &nearCallback);
+      collide();
       dWorldQuickStep(world, h);
       dJointGroupEmpty(contacts);
     }
@@ -851,9 +948,7 @@ std::unique_ptr<World> World::create(scene::Scene& scene, const std::string& mod
   dRandSetSeed(static_cast<unsigned long>(seed));
   auto impl = std::make_unique<Impl>(scene);
   impl->world = dWorldCreate();
-  impl->space = dHashSpaceCreate(nullptr);
-  // cells from 1/16 m to 64 m: what plants are made of; bigger things are checked apart
-  dHashSpaceSetLevels(impl->space, -4, 6);
+  impl->space = dSimpleSpaceCreate(nullptr);
   impl->contacts = dJointGroupCreate(0);
   // settings from the first World node, if any
   const Node* settings = nullptr;
@@ -863,7 +958,9 @@ std::unique_ptr<World> World::create(scene::Scene& scene, const std::string& mod
   Vec3 g{0, 0, -9.81};
   double erp = 0.2, cfm = 1e-5;
   bool auto_disable = true;
+  int iterations = 40;
   if (settings) {
+    iterations = static_cast<int>(settings->number("iterations"));
     g = settings->vec3("gravity");
     erp = settings->number("erp");
     cfm = settings->number("cfm");
@@ -873,7 +970,7 @@ std::unique_ptr<World> World::create(scene::Scene& scene, const std::string& mod
   dWorldSetGravity(impl->world, g.x, g.y, g.z);
   dWorldSetERP(impl->world, erp);
   dWorldSetCFM(impl->world, cfm);
-  dWorldSetQuickStepNumIterations(impl->world, 40);
+  dWorldSetQuickStepNumIterations(impl->world, iterations);
   dWorldSetAutoDisableFlag(impl->world, auto_disable ? 1 : 0);
   dWorldSetContactSurfaceLayer(impl->world, 0.001);
   impl->model_dir = model_dir;
@@ -926,12 +1023,7 @@ bool World::awake(const scene::Node& body) const { return dBodyIsEnabled(need(im
 void World::wake(const scene::Node& body) { dBodyEnable(need(impl_->owner(body)).id); }
 
 double World::jointPosition(const scene::Node& joint, int axis) const {
-  const auto& j = impl_->joints[impl_->joint_of.at(joint.handle())];
-  if (j.kind == "hinge") return dJointGetHingeAngle(j.id);
-  if (j.kind == "slider") return dJointGetSliderPosition(j.id);
-  if (j.kind == "universal") return axis == 1 ? dJointGetUniversalAngle1(j.id) : dJointGetUniversalAngle2(j.id);
-  if (j.kind == "hinge2") return axis == 1 ? dJointGetHinge2Angle1(j.id) : 0.0;
-  return 0.0;
+  return Impl::position(impl_->joints[impl_->joint_of.at(joint.handle())], axis);
 }
 
 double World::jointRate(const scene::Node& joint, int axis) const {

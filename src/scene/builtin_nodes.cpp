@@ -112,6 +112,7 @@ void registerBuiltinNodes(TypeRegistry& r) {
               f("erp", K::Float, 0.2, "", "error reduction per step", 0, 1),
               f("cfm", K::Float, 1e-5, "", "constraint force mixing", 0, 1),
               f("substeps", K::Int, std::int64_t{1}, "", "physics steps per net step", 1, 1000),
+              f("iterations", K::Int, std::int64_t{40}, "", "solver iterations per physics step: fewer is faster and softer", 1, 1000),
               f("auto_disable", K::Bool, true, "", "let bodies at rest sleep")}));
   r.add(type("Body", Category::Dynamics, true, "a rigid body made of the shapes below it",
              {f("mass", K::Float, 0.0, "kg", "total mass; 0 means: from density and shapes", 0, kInf),
@@ -130,7 +131,13 @@ void registerBuiltinNodes(TypeRegistry& r) {
               f("vel1", K::Float, 0.0, "deg/s or m/s", "motor target velocity on axis 1"),
               f("fmax1", K::Float, 0.0, "N m or N", "motor's greatest force on axis 1 (0: no motor)", 0, kInf),
               f("vel2", K::Float, 0.0, "deg/s", "motor target velocity on axis 2"),
-              f("fmax2", K::Float, 0.0, "N m", "motor's greatest force on axis 2", 0, kInf)}));
+              f("fmax2", K::Float, 0.0, "N m", "motor's greatest force on axis 2", 0, kInf),
+              choice("control", {"velocity", "position"},
+                     "what the motor on axis 1 follows: vel1, or target1 (at most |vel1| fast when vel1 is not 0)"),
+              f("target1", K::Float, 0.0, "deg or m", "position the motor drives axis 1 to, in position control"),
+              f("servo_time", K::Float, 0.1, "s",
+                "position control: the motor's speed is the error over this time, so an error shrinks by e in it", 1e-3,
+                kInf)}));
   r.add(type("Conveyor", Category::Dynamics, false, "makes the shapes beside it move what touches them",
              {f("speed", K::Float, 1.0, "m/s", "belt speed"),
               f("direction", K::Vec3, V3{1, 0, 0}, "", "belt direction, in the conveyor's frame")}));

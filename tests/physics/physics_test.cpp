@@ -184,6 +184,57 @@ TEST(Physics, AHingeMotorReachesItsTargetVelocity) {
   EXPECT_NEAR(p.world->jointPosition(shoulder), core::radians(90), core::radians(2));
 }
 
+TEST(Physics, APositionControlledHingeClosesItsErrorExponentiallyAndHoldsAgainstGravity) {
+  // a horizontal arm about a horizontal axis, so gravity pulls it off its target; a strong
+  // motor, no speed cap: the error shrinks as exp(-t / servo_time) (less a small sag)
+  Plant p(R"(
+  - Joint:
+      name: shoulder
+      kind: hinge
+      axis1: [0, 1, 0]
+      control: position
+      target1: -30
+      servo_time: 0.2
+      fmax1: 500
+      children:
+        - Body: {name: arm, mass: 2, children: [{Transform: {translation: [0.5, 0, 0], children: [{Cube: {size: [1, 0.1, 0.1]}}]}}]}
+)");
+  const auto& shoulder = p.node("shoulder");
+  p.run(0.2, 1.0 / 500);
+  // after one servo time: e^-1 of the 30 degrees left
+  EXPECT_NEAR(p.world->jointPosition(shoulder), core::radians(-30 * (1 - std::exp(-1.0))), core::radians(1.5));
+  p.run(0.4, 1.0 / 500);
+  EXPECT_NEAR(p.world->jointPosition(shoulder), core::radians(-30 * (1 - std::exp(-3.0))), core::radians(1.5));
+  p.run(2.0, 1.0 / 500);
+  // it holds: gravity's torque (2 kg at 0.5 m, about 10 N m) leaves it within a degree
+  EXPECT_NEAR(p.world->jointPosition(shoulder), core::radians(-30), core::radians(1));
+  EXPECT_NEAR(p.world->jointRate(shoulder), 0.0, 0.01);
+}
+
+TEST(Physics, APositionControlledSliderMovesNoFasterThanVel1AndStopsAtItsTarget) {
+  Plant p(R"(
+  - World: {gravity: [0, 0, 0]}
+  - Joint:
+      name: rail
+      kind: slider
+      axis1: [1, 0, 0]
+      control: position
+      target1: 0.8
+      vel1: 0.5
+      fmax1: 1000
+      children:
+        - Body: {name: cart, mass: 5, children: [{Cube: {size: [0.2, 0.2, 0.2]}}]}
+)");
+  const auto& rail = p.node("rail");
+  p.run(1.0, 1.0 / 500);
+  // far from the target the cap holds it to 0.5 m/s: 0.5 m in the first second
+  EXPECT_NEAR(p.world->jointRate(rail), 0.5, 0.01);
+  EXPECT_NEAR(p.world->jointPosition(rail), 0.5, 0.02);
+  p.run(2.0, 1.0 / 500);
+  EXPECT_NEAR(p.world->jointPosition(rail), 0.8, 0.002);
+  EXPECT_NEAR(p.world->jointRate(rail), 0.0, 0.01);
+}
+
 TEST(Physics, AnAttachedBoxFollowsTheArmThenFallsWhenDetached) {
   Plant p(R"(
   - World: {auto_disable: false}

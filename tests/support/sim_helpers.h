@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -14,11 +16,12 @@ namespace gdpn::testing {
 
 /// The model at `relative` (from the source tree), made ready to run; null after a failed
 /// expectation that shows the diagnostics.
-inline std::unique_ptr<model::Simulation> openModelFile(const std::string& relative) {
+inline std::unique_ptr<model::Simulation> openModelFile(const std::string& relative,
+                                                      std::optional<std::uint64_t> seed = {}) {
   core::Diagnostics diags;
   auto m = model::loadModel(std::string(GDPN_SOURCE_DIR) + "/" + relative, diags);
   std::unique_ptr<model::Simulation> sim;
-  if (m) sim = model::Simulation::create(*m, diags);
+  if (m) sim = model::Simulation::create(*m, diags, seed);
   EXPECT_TRUE(sim) << diags.str();
   return sim;
 }
