@@ -325,7 +325,6 @@ struct World::Impl {
     }
   }
 
-
   /// True when shape `shape` is in the scope of `sensor`.
   static bool inScope(const Node& sensor, const Node& shape) {
     const std::string scope = sensor.text("scope");
@@ -878,11 +877,11 @@ struct World::Impl {
         moving.push_back(g);
         continue;
       }
-      dReal a[6];
-      dGeomGetAABB(g, a);
-      if (std::all_of(a, a + 6, [](dReal v) { return std::isfinite(v) && std::abs(v) < 1e12; })) {
+      const core::Aabb box = aabbOf(g);
+      const double bounds[6] = {box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z};
+      if (std::all_of(bounds, bounds + 6, [](double v) { return std::isfinite(v) && std::abs(v) < 1e12; })) {
         fixed.push_back(g);
-        boxes.push_back(aabbOf(g));
+        boxes.push_back(box);
       } else {
         endless.push_back(g);
       }

@@ -23,7 +23,7 @@ inline bool overlaps(const Aabb& a, const Aabb& b) {
 /// boxes given to build(); a query reports them in an order fixed by the build.
 class AabbTree {
  public:
-  /// Builds the tree over `boxes` (finite, not empty), replacing what was there.
+  /// Builds the tree over `boxes` (finite ones), replacing what was there.
   void build(const std::vector<Aabb>& boxes);
   /// Calls `visit(index)` for every box that overlaps `box`.
   template <class Visit>
