@@ -2,6 +2,8 @@
 
 #include <array>
 
+#include "gdpn/scene/fields.h"
+
 namespace gdpn::scene {
 
 void traverse(Node& node, const std::function<void(Node&, const TraversalState&)>& visit, TraversalState state) {
@@ -18,7 +20,7 @@ void traverse(Node& node, const std::function<void(Node&, const TraversalState&)
   inner.pose = state.pose * local;
   inner.scale = state.scale.times(s);
   for (const auto& child : node.children()) {
-    if (child->type().name == "Material") inner.material = child.get();
+    if (child->kind() == NodeKind::Material) inner.material = child.get();
     traverse(*child, visit, inner);
   }
 }
@@ -31,22 +33,64 @@ void updateTransforms(Node& root) {
       root.parent() ? root.parent()->world_scale : core::Vec3{1, 1, 1}, nullptr});
 }
 
+namespace {
+
+/// A ball's or a round prism's extent from its radius and height (m).
+core::Vec3 round(double radius, double height) { return {2 * radius, 2 * radius, height}; }
+
+}  // namespace
+
+core::Vec3 shapeExtent(const Node& node) {
+  switch (node.kind()) {
+    case NodeKind::Cube: return node.vec3(field::Cube::Size);
+    case NodeKind::Sphere: {
+      const double d = 2 * node.number(field::Sphere::Radius);
+      return {d, d, d};
+    }
+    case NodeKind::Cylinder: return round(node.number(field::Cylinder::Radius), node.number(field::Cylinder::Height));
+    case NodeKind::Cone: return round(node.number(field::Cone::Radius), node.number(field::Cone::Height));
+    case NodeKind::Region: {
+      const double r = node.number(field::Region::Radius), h = node.number(field::Region::Height);
+      switch (node.choice<RegionShape>(field::Region::Shape)) {
+        case RegionShape::Box: return node.vec3(field::Region::Size);
+        case RegionShape::Sphere: return {2 * r, 2 * r, 2 * r};
+        case RegionShape::Cylinder:
+        case RegionShape::Cone: return round(r, h);
+        case RegionShape::Ray: return {};
+      }
+      return {};
+    }
+    case NodeKind::Group:
+    case NodeKind::Transform:
+    case NodeKind::Material:
+    case NodeKind::Light:
+    case NodeKind::Camera:
+    case NodeKind::Fog:
+    case NodeKind::Plane:
+    case NodeKind::Mesh:
+    case NodeKind::Terrain:
+    case NodeKind::World:
+    case NodeKind::Body:
+    case NodeKind::Joint:
+    case NodeKind::Conveyor:
+    case NodeKind::GradientField:
+    case NodeKind::RangeFinder:
+    case NodeKind::GradientSensor:
+    case NodeKind::KeyboardSensor:
+    case NodeKind::MouseSensor:
+    case NodeKind::TimeSensor: return {};
+  }
+  return {};
+}
+
 core::Aabb shapeBounds(const Node& shape) {
   core::Aabb box;
-  const auto& name = shape.type().name;
-  if (name == "Cube") {
-    const core::Vec3 h = shape.vec3("size") * 0.5;
-    box.add(-h);
-    box.add(h);
-  } else if (name == "Sphere") {
-    const double r = shape.number("radius");
-    box.add(core::Vec3{-r, -r, -r});
-    box.add(core::Vec3{r, r, r});
-  } else if (name == "Cylinder" || name == "Cone") {
-    const double r = shape.number("radius"), h = shape.number("height") / 2;
-    box.add(core::Vec3{-r, -r, -h});
-    box.add(core::Vec3{r, r, h});
-  }
+  // planes, meshes and terrain have no extent of their own here
+  const NodeKind k = shape.kind();
+  if (k != NodeKind::Cube && k != NodeKind::Sphere && k != NodeKind::Cylinder && k != NodeKind::Cone) return box;
+  const core::Vec3 h = shapeExtent(shape) * 0.5;
+  box.add(-h);
+  box.add(h);
   return box;
 }
 

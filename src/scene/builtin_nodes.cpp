@@ -1,6 +1,7 @@
 // The built-in node types, each described once. Units: metres, kilograms, seconds, degrees
 // for angles in files (the physics converts). World frame: right-handed, Z up.
 
+#include "gdpn/scene/fields.h"
 #include "gdpn/scene/types.h"
 
 namespace gdpn::scene {
@@ -9,9 +10,13 @@ namespace {
 using V3 = std::array<double, 3>;
 using V4 = std::array<double, 4>;
 
-FieldDesc f(std::string name, FieldKind kind, FieldValue initial, std::string unit, std::string doc,
+/// The description of field `id`: its id binds the description to the enum in fields.h.
+template <FieldId F>
+FieldDesc f(F id, std::string name, FieldKind kind, FieldValue initial, std::string unit, std::string doc,
             double min = -1e300, double max = 1e300) {
   FieldDesc d;
+  d.owner = field::ownerOf(id);
+  d.index = static_cast<std::uint8_t>(id);
   d.name = std::move(name);
   d.kind = kind;
   d.initial = std::move(initial);
@@ -22,8 +27,12 @@ FieldDesc f(std::string name, FieldKind kind, FieldValue initial, std::string un
   return d;
 }
 
-FieldDesc choice(std::string name, std::vector<std::string> choices, std::string doc) {
+/// An Enum field: its words in the order of the matching enum in fields.h.
+template <FieldId F>
+FieldDesc choice(F id, std::string name, std::vector<std::string> choices, std::string doc) {
   FieldDesc d;
+  d.owner = field::ownerOf(id);
+  d.index = static_cast<std::uint8_t>(id);
   d.name = std::move(name);
   d.kind = FieldKind::Enum;
   d.initial = choices.front();
@@ -32,8 +41,10 @@ FieldDesc choice(std::string name, std::vector<std::string> choices, std::string
   return d;
 }
 
-NodeType type(std::string name, Category category, bool children, std::string doc, std::vector<FieldDesc> own) {
+NodeType type(NodeKind kind, std::string name, Category category, bool children, std::string doc,
+              std::vector<FieldDesc> own) {
   NodeType t;
+  t.kind = kind;
   t.name = std::move(name);
   t.category = category;
   t.has_children = children;
@@ -49,127 +60,127 @@ constexpr double kInf = 1e300;
 void registerBuiltinNodes(TypeRegistry& r) {
   using K = FieldKind;
   // structure
-  r.add(type("Group", Category::Group, true, "holds child nodes", {}));
-  r.add(type("Transform", Category::Group, true, "places its children: scale, then rotate, then translate",
-             {f("translation", K::Vec3, V3{0, 0, 0}, "m", "offset from the parent"),
-              f("rotation", K::Rotation, V4{0, 0, 1, 0}, "axis, deg", "axis and angle of rotation"),
-              f("scale", K::Vec3, V3{1, 1, 1}, "", "scale factors along x, y, z", 1e-9, kInf)}),
+  r.add(type(NodeKind::Group, "Group", Category::Group, true, "holds child nodes", {}));
+  r.add(type(NodeKind::Transform, "Transform", Category::Group, true, "places its children: scale, then rotate, then translate",
+             {f(field::Transform::Translation, "translation", K::Vec3, V3{0, 0, 0}, "m", "offset from the parent"),
+              f(field::Transform::Rotation, "rotation", K::Rotation, V4{0, 0, 1, 0}, "axis, deg", "axis and angle of rotation"),
+              f(field::Transform::Scale, "scale", K::Vec3, V3{1, 1, 1}, "", "scale factors along x, y, z", 1e-9, kInf)}),
         "Group");
   // looks
-  r.add(type("Material", Category::Look, false, "how the shapes after it look, and how they touch",
-             {f("ambient", K::Color, V3{0.2, 0.2, 0.2}, "", "ambient reflectance", 0, 1),
-              f("diffuse", K::Color, V3{0.8, 0.8, 0.8}, "", "diffuse colour", 0, 1),
-              f("specular", K::Color, V3{0, 0, 0}, "", "specular colour", 0, 1),
-              f("emissive", K::Color, V3{0, 0, 0}, "", "emitted colour", 0, 1),
-              f("shininess", K::Float, 0.2, "", "0 dull to 1 mirror-like", 0, 1),
-              f("transparency", K::Float, 0.0, "", "0 opaque to 1 invisible", 0, 1),
-              f("friction", K::Float, 0.8, "", "Coulomb friction coefficient", 0, kInf),
-              f("bounce", K::Float, 0.0, "", "restitution: 0 no bounce to 1 elastic", 0, 1)}));
-  r.add(type("Light", Category::Look, false, "a light, placed by its parents",
-             {choice("kind", {"directional", "point", "spot"}, "what sort of light"),
-              f("color", K::Color, V3{1, 1, 1}, "", "colour", 0, 1),
-              f("intensity", K::Float, 1.0, "", "brightness factor", 0, kInf),
-              f("direction", K::Vec3, V3{-1, -1, -2}, "", "where it shines (directional, spot)"),
-              f("location", K::Vec3, V3{0, 0, 5}, "m", "where it is (point, spot)"),
-              f("cutoff", K::Float, 30.0, "deg", "half-angle of a spot's cone", 0, 90)}));
-  r.add(type("Camera", Category::Look, false, "a viewpoint",
-             {choice("kind", {"static", "orbit"}, "static, or orbiting its target"),
-              f("position", K::Vec3, V3{5, -5, 4}, "m", "eye position"),
-              f("target", K::Vec3, V3{0, 0, 0}, "m", "the point looked at"),
-              f("up", K::Vec3, V3{0, 0, 1}, "", "which way is up"),
-              f("fov", K::Float, 45.0, "deg", "vertical field of view", 1, 179),
-              f("speed", K::Float, 10.0, "deg/s", "how fast an orbit camera turns about its target")}));
-  r.add(type("Fog", Category::Look, false, "fog over the whole scene",
-             {choice("kind", {"linear", "exponential"}, "how it thickens"),
-              f("color", K::Color, V3{0.7, 0.7, 0.7}, "", "colour", 0, 1),
-              f("visibility", K::Float, 50.0, "m", "distance at which things vanish", 0, kInf)}));
+  r.add(type(NodeKind::Material, "Material", Category::Look, false, "how the shapes after it look, and how they touch",
+             {f(field::Material::Ambient, "ambient", K::Color, V3{0.2, 0.2, 0.2}, "", "ambient reflectance", 0, 1),
+              f(field::Material::Diffuse, "diffuse", K::Color, V3{0.8, 0.8, 0.8}, "", "diffuse colour", 0, 1),
+              f(field::Material::Specular, "specular", K::Color, V3{0, 0, 0}, "", "specular colour", 0, 1),
+              f(field::Material::Emissive, "emissive", K::Color, V3{0, 0, 0}, "", "emitted colour", 0, 1),
+              f(field::Material::Shininess, "shininess", K::Float, 0.2, "", "0 dull to 1 mirror-like", 0, 1),
+              f(field::Material::Transparency, "transparency", K::Float, 0.0, "", "0 opaque to 1 invisible", 0, 1),
+              f(field::Material::Friction, "friction", K::Float, 0.8, "", "Coulomb friction coefficient", 0, kInf),
+              f(field::Material::Bounce, "bounce", K::Float, 0.0, "", "restitution: 0 no bounce to 1 elastic", 0, 1)}));
+  r.add(type(NodeKind::Light, "Light", Category::Look, false, "a light, placed by its parents",
+             {choice(field::Light::Kind, "kind", {"directional", "point", "spot"}, "what sort of light"),
+              f(field::Light::Color, "color", K::Color, V3{1, 1, 1}, "", "colour", 0, 1),
+              f(field::Light::Intensity, "intensity", K::Float, 1.0, "", "brightness factor", 0, kInf),
+              f(field::Light::Direction, "direction", K::Vec3, V3{-1, -1, -2}, "", "where it shines (directional, spot)"),
+              f(field::Light::Location, "location", K::Vec3, V3{0, 0, 5}, "m", "where it is (point, spot)"),
+              f(field::Light::Cutoff, "cutoff", K::Float, 30.0, "deg", "half-angle of a spot's cone", 0, 90)}));
+  r.add(type(NodeKind::Camera, "Camera", Category::Look, false, "a viewpoint",
+             {choice(field::Camera::Kind, "kind", {"static", "orbit"}, "static, or orbiting its target"),
+              f(field::Camera::Position, "position", K::Vec3, V3{5, -5, 4}, "m", "eye position"),
+              f(field::Camera::Target, "target", K::Vec3, V3{0, 0, 0}, "m", "the point looked at"),
+              f(field::Camera::Up, "up", K::Vec3, V3{0, 0, 1}, "", "which way is up"),
+              f(field::Camera::Fov, "fov", K::Float, 45.0, "deg", "vertical field of view", 1, 179),
+              f(field::Camera::Speed, "speed", K::Float, 10.0, "deg/s", "how fast an orbit camera turns about its target")}));
+  r.add(type(NodeKind::Fog, "Fog", Category::Look, false, "fog over the whole scene",
+             {choice(field::Fog::Kind, "kind", {"linear", "exponential"}, "how it thickens"),
+              f(field::Fog::Color, "color", K::Color, V3{0.7, 0.7, 0.7}, "", "colour", 0, 1),
+              f(field::Fog::Visibility, "visibility", K::Float, 50.0, "m", "distance at which things vanish", 0, kInf)}));
   // shapes: the geometry of what they stand in; under a Body they are part of it
-  r.add(type("Cube", Category::Shape, false, "a box centred on its origin",
-             {f("size", K::Vec3, V3{1, 1, 1}, "m", "edge lengths along x, y, z", 0, kInf)}));
-  r.add(type("Sphere", Category::Shape, false, "a sphere centred on its origin",
-             {f("radius", K::Float, 0.5, "m", "radius", 0, kInf)}));
-  r.add(type("Cylinder", Category::Shape, false, "a cylinder along z, centred on its origin",
-             {f("radius", K::Float, 0.5, "m", "radius", 0, kInf), f("height", K::Float, 1.0, "m", "height", 0, kInf)}));
-  r.add(type("Cone", Category::Shape, false, "a cone along z, base at -height/2, tip at +height/2",
-             {f("radius", K::Float, 0.5, "m", "base radius", 0, kInf), f("height", K::Float, 1.0, "m", "height", 0, kInf)}));
-  r.add(type("Plane", Category::Shape, false, "an endless flat ground through its origin",
-             {f("normal", K::Vec3, V3{0, 0, 1}, "", "which way the plane faces")}));
-  r.add(type("Mesh", Category::Shape, false, "triangles from a file",
-             {f("file", K::File, std::string(), "", "mesh file (obj, stl, 3ds, gltf, dae, ply, wrl, iv)"),
-              f("part", K::Int, std::int64_t{-1}, "", "which part of the file (-1: all of them)", -1, 1e9),
-              f("scale", K::Vec3, V3{1, 1, 1}, "", "scale factors", 1e-9, kInf),
-              choice("collision", {"trimesh", "box", "convex"}, "what the physics collides with: the triangles, "
+  r.add(type(NodeKind::Cube, "Cube", Category::Shape, false, "a box centred on its origin",
+             {f(field::Cube::Size, "size", K::Vec3, V3{1, 1, 1}, "m", "edge lengths along x, y, z", 0, kInf)}));
+  r.add(type(NodeKind::Sphere, "Sphere", Category::Shape, false, "a sphere centred on its origin",
+             {f(field::Sphere::Radius, "radius", K::Float, 0.5, "m", "radius", 0, kInf)}));
+  r.add(type(NodeKind::Cylinder, "Cylinder", Category::Shape, false, "a cylinder along z, centred on its origin",
+             {f(field::Cylinder::Radius, "radius", K::Float, 0.5, "m", "radius", 0, kInf), f(field::Cylinder::Height, "height", K::Float, 1.0, "m", "height", 0, kInf)}));
+  r.add(type(NodeKind::Cone, "Cone", Category::Shape, false, "a cone along z, base at -height/2, tip at +height/2",
+             {f(field::Cone::Radius, "radius", K::Float, 0.5, "m", "base radius", 0, kInf), f(field::Cone::Height, "height", K::Float, 1.0, "m", "height", 0, kInf)}));
+  r.add(type(NodeKind::Plane, "Plane", Category::Shape, false, "an endless flat ground through its origin",
+             {f(field::Plane::Normal, "normal", K::Vec3, V3{0, 0, 1}, "", "which way the plane faces")}));
+  r.add(type(NodeKind::Mesh, "Mesh", Category::Shape, false, "triangles from a file",
+             {f(field::Mesh::File, "file", K::File, std::string(), "", "mesh file (obj, stl, 3ds, gltf, dae, ply, wrl, iv)"),
+              f(field::Mesh::Part, "part", K::Int, std::int64_t{-1}, "", "which part of the file (-1: all of them)", -1, 1e9),
+              f(field::Mesh::Scale, "scale", K::Vec3, V3{1, 1, 1}, "", "scale factors", 1e-9, kInf),
+              choice(field::Mesh::Collision, "collision", {"trimesh", "box", "convex"}, "what the physics collides with: the triangles, "
                      "their bounding box, or their convex hull")}));
-  r.add(type("Terrain", Category::Shape, false,
+  r.add(type(NodeKind::Terrain, "Terrain", Category::Shape, false,
              "ground from an elevation file (GeoTIFF or another DEM, or a greyscale image), centred on its origin",
-             {f("file", K::File, std::string(), "", "elevation file, read through GDAL"),
-              f("width", K::Float, 100.0, "m", "extent along x", 1e-9, kInf),
-              f("depth", K::Float, 100.0, "m", "extent along y", 1e-9, kInf),
-              f("height_scale", K::Float, 1.0, "m", "metres per unit of the file's values")}));
+             {f(field::Terrain::File, "file", K::File, std::string(), "", "elevation file, read through GDAL"),
+              f(field::Terrain::Width, "width", K::Float, 100.0, "m", "extent along x", 1e-9, kInf),
+              f(field::Terrain::Depth, "depth", K::Float, 100.0, "m", "extent along y", 1e-9, kInf),
+              f(field::Terrain::HeightScale, "height_scale", K::Float, 1.0, "m", "metres per unit of the file's values")}));
   // dynamics
-  r.add(type("World", Category::Dynamics, false, "settings of the rigid-body physics",
-             {f("gravity", K::Vec3, V3{0, 0, -9.81}, "m/s^2", "gravity"),
-              f("erp", K::Float, 0.2, "", "error reduction per step", 0, 1),
-              f("cfm", K::Float, 1e-5, "", "constraint force mixing", 0, 1),
-              f("substeps", K::Int, std::int64_t{1}, "", "physics steps per net step", 1, 1000),
-              f("iterations", K::Int, std::int64_t{40}, "", "solver iterations per physics step: fewer is faster and softer", 1, 1000),
-              f("auto_disable", K::Bool, true, "", "let bodies at rest sleep")}));
-  r.add(type("Body", Category::Dynamics, true, "a rigid body made of the shapes below it",
-             {f("mass", K::Float, 0.0, "kg", "total mass; 0 means: from density and shapes", 0, kInf),
-              f("density", K::Float, 1000.0, "kg/m^3", "density, used when mass is 0", 0, kInf),
-              f("linear_damping", K::Float, 0.0, "", "share of linear velocity lost per second", 0, 1),
-              f("angular_damping", K::Float, 0.0, "", "share of angular velocity lost per second", 0, 1)}));
-  r.add(type("Joint", Category::Dynamics, true, "joins its parent body to its child body (or a body to the world)",
-             {choice("kind", {"hinge", "slider", "ball", "universal", "hinge2", "fixed"}, "what motion it allows"),
-              f("anchor", K::Vec3, V3{0, 0, 0}, "m", "the joint's point, in the joint's frame"),
-              f("axis1", K::Vec3, V3{0, 0, 1}, "", "first axis"),
-              f("axis2", K::Vec3, V3{1, 0, 0}, "", "second axis (universal, hinge2)"),
-              f("lo1", K::Float, -kInf, "deg or m", "lower limit on axis 1"),
-              f("hi1", K::Float, kInf, "deg or m", "upper limit on axis 1"),
-              f("lo2", K::Float, -kInf, "deg", "lower limit on axis 2"),
-              f("hi2", K::Float, kInf, "deg", "upper limit on axis 2"),
-              f("vel1", K::Float, 0.0, "deg/s or m/s", "motor target velocity on axis 1"),
-              f("fmax1", K::Float, 0.0, "N m or N", "motor's greatest force on axis 1 (0: no motor)", 0, kInf),
-              f("vel2", K::Float, 0.0, "deg/s", "motor target velocity on axis 2"),
-              f("fmax2", K::Float, 0.0, "N m", "motor's greatest force on axis 2", 0, kInf),
-              choice("control", {"velocity", "position"},
+  r.add(type(NodeKind::World, "World", Category::Dynamics, false, "settings of the rigid-body physics",
+             {f(field::World::Gravity, "gravity", K::Vec3, V3{0, 0, -9.81}, "m/s^2", "gravity"),
+              f(field::World::Erp, "erp", K::Float, 0.2, "", "error reduction per step", 0, 1),
+              f(field::World::Cfm, "cfm", K::Float, 1e-5, "", "constraint force mixing", 0, 1),
+              f(field::World::Substeps, "substeps", K::Int, std::int64_t{1}, "", "physics steps per net step", 1, 1000),
+              f(field::World::Iterations, "iterations", K::Int, std::int64_t{40}, "", "solver iterations per physics step: fewer is faster and softer", 1, 1000),
+              f(field::World::AutoDisable, "auto_disable", K::Bool, true, "", "let bodies at rest sleep")}));
+  r.add(type(NodeKind::Body, "Body", Category::Dynamics, true, "a rigid body made of the shapes below it",
+             {f(field::Body::Mass, "mass", K::Float, 0.0, "kg", "total mass; 0 means: from density and shapes", 0, kInf),
+              f(field::Body::Density, "density", K::Float, 1000.0, "kg/m^3", "density, used when mass is 0", 0, kInf),
+              f(field::Body::LinearDamping, "linear_damping", K::Float, 0.0, "", "share of linear velocity lost per second", 0, 1),
+              f(field::Body::AngularDamping, "angular_damping", K::Float, 0.0, "", "share of angular velocity lost per second", 0, 1)}));
+  r.add(type(NodeKind::Joint, "Joint", Category::Dynamics, true, "joins its parent body to its child body (or a body to the world)",
+             {choice(field::Joint::Kind, "kind", {"hinge", "slider", "ball", "universal", "hinge2", "fixed"}, "what motion it allows"),
+              f(field::Joint::Anchor, "anchor", K::Vec3, V3{0, 0, 0}, "m", "the joint's point, in the joint's frame"),
+              f(field::Joint::Axis1, "axis1", K::Vec3, V3{0, 0, 1}, "", "first axis"),
+              f(field::Joint::Axis2, "axis2", K::Vec3, V3{1, 0, 0}, "", "second axis (universal, hinge2)"),
+              f(field::Joint::Lo1, "lo1", K::Float, -kInf, "deg or m", "lower limit on axis 1"),
+              f(field::Joint::Hi1, "hi1", K::Float, kInf, "deg or m", "upper limit on axis 1"),
+              f(field::Joint::Lo2, "lo2", K::Float, -kInf, "deg", "lower limit on axis 2"),
+              f(field::Joint::Hi2, "hi2", K::Float, kInf, "deg", "upper limit on axis 2"),
+              f(field::Joint::Vel1, "vel1", K::Float, 0.0, "deg/s or m/s", "motor target velocity on axis 1"),
+              f(field::Joint::Fmax1, "fmax1", K::Float, 0.0, "N m or N", "motor's greatest force on axis 1 (0: no motor)", 0, kInf),
+              f(field::Joint::Vel2, "vel2", K::Float, 0.0, "deg/s", "motor target velocity on axis 2"),
+              f(field::Joint::Fmax2, "fmax2", K::Float, 0.0, "N m", "motor's greatest force on axis 2", 0, kInf),
+              choice(field::Joint::Control, "control", {"velocity", "position"},
                      "what the motor on axis 1 follows: vel1, or target1 (at most |vel1| fast when vel1 is not 0)"),
-              f("target1", K::Float, 0.0, "deg or m", "position the motor drives axis 1 to, in position control"),
-              f("servo_time", K::Float, 0.1, "s",
+              f(field::Joint::Target1, "target1", K::Float, 0.0, "deg or m", "position the motor drives axis 1 to, in position control"),
+              f(field::Joint::ServoTime, "servo_time", K::Float, 0.1, "s",
                 "position control: the motor's speed is the error over this time, so an error shrinks by e in it", 1e-3,
                 kInf)}));
-  r.add(type("Conveyor", Category::Dynamics, false, "makes the shapes beside it move what touches them",
-             {f("speed", K::Float, 1.0, "m/s", "belt speed"),
-              f("direction", K::Vec3, V3{1, 0, 0}, "", "belt direction, in the conveyor's frame")}));
-  r.add(type("GradientField", Category::Field, false,
+  r.add(type(NodeKind::Conveyor, "Conveyor", Category::Dynamics, false, "makes the shapes beside it move what touches them",
+             {f(field::Conveyor::Speed, "speed", K::Float, 1.0, "m/s", "belt speed"),
+              f(field::Conveyor::Direction, "direction", K::Vec3, V3{1, 0, 0}, "", "belt direction, in the conveyor's frame")}));
+  r.add(type(NodeKind::GradientField, "GradientField", Category::Field, false,
              "a 2D grid of vectors over a region of the ground, centred on its origin",
-             {f("width", K::Float, 10.0, "m", "extent along x", 1e-9, kInf),
-              f("depth", K::Float, 10.0, "m", "extent along y", 1e-9, kInf),
-              f("nx", K::Int, std::int64_t{2}, "", "grid points along x", 2, 1e6),
-              f("ny", K::Int, std::int64_t{2}, "", "grid points along y", 2, 1e6),
-              f("vectors", K::FloatList, std::vector<double>(8, 0.0), "",
+             {f(field::GradientField::Width, "width", K::Float, 10.0, "m", "extent along x", 1e-9, kInf),
+              f(field::GradientField::Depth, "depth", K::Float, 10.0, "m", "extent along y", 1e-9, kInf),
+              f(field::GradientField::Nx, "nx", K::Int, std::int64_t{2}, "", "grid points along x", 2, 1e6),
+              f(field::GradientField::Ny, "ny", K::Int, std::int64_t{2}, "", "grid points along y", 2, 1e6),
+              f(field::GradientField::Vectors, "vectors", K::FloatList, std::vector<double>(8, 0.0), "",
                 "nx * ny vectors (x, y), row by row from -y to +y, each row from -x to +x")}));
   // sensors: they feel the plant and make no contact forces
-  r.add(type("Region", Category::Sensor, false, "reports the bodies and shapes inside its volume",
-             {choice("shape", {"box", "sphere", "cylinder", "cone", "ray"}, "the volume's shape"),
-              f("size", K::Vec3, V3{1, 1, 1}, "m", "edge lengths of a box"),
-              f("radius", K::Float, 0.5, "m", "radius of a sphere, cylinder or cone", 0, kInf),
-              f("height", K::Float, 1.0, "m", "height of a cylinder or cone (along z)", 0, kInf),
-              f("length", K::Float, 1.0, "m", "length of a ray (along +x)", 0, kInf),
-              choice("scope", {"world", "siblings", "parent"},
+  r.add(type(NodeKind::Region, "Region", Category::Sensor, false, "reports the bodies and shapes inside its volume",
+             {choice(field::Region::Shape, "shape", {"box", "sphere", "cylinder", "cone", "ray"}, "the volume's shape"),
+              f(field::Region::Size, "size", K::Vec3, V3{1, 1, 1}, "m", "edge lengths of a box"),
+              f(field::Region::Radius, "radius", K::Float, 0.5, "m", "radius of a sphere, cylinder or cone", 0, kInf),
+              f(field::Region::Height, "height", K::Float, 1.0, "m", "height of a cylinder or cone (along z)", 0, kInf),
+              f(field::Region::Length, "length", K::Float, 1.0, "m", "length of a ray (along +x)", 0, kInf),
+              choice(field::Region::Scope, "scope", {"world", "siblings", "parent"},
                      "what it feels: its siblings and their subtrees, its parent's subtree, or everything")}));
-  r.add(type("RangeFinder", Category::Sensor, false, "the distance along a ray (+x) to the first thing it hits",
-             {f("length", K::Float, 10.0, "m", "how far it sees", 0, kInf),
-              choice("scope", {"world", "siblings", "parent"}, "what it sees")}));
-  r.add(type("GradientSensor", Category::Sensor, false,
+  r.add(type(NodeKind::RangeFinder, "RangeFinder", Category::Sensor, false, "the distance along a ray (+x) to the first thing it hits",
+             {f(field::RangeFinder::Length, "length", K::Float, 10.0, "m", "how far it sees", 0, kInf),
+              choice(field::RangeFinder::Scope, "scope", {"world", "siblings", "parent"}, "what it sees")}));
+  r.add(type(NodeKind::GradientSensor, "GradientSensor", Category::Sensor, false,
              "the gradient field's vector where its parent body is (bilinear)",
-             {f("field", K::String, std::string(), "", "the GradientField's path (empty: the scene's first one)")}));
-  r.add(type("KeyboardSensor", Category::Sensor, false,
+             {f(field::GradientSensor::Field, "field", K::String, std::string(), "", "the GradientField's path (empty: the scene's first one)")}));
+  r.add(type(NodeKind::KeyboardSensor, "KeyboardSensor", Category::Sensor, false,
              "key presses, while the viewpoint is inside its parent's bounding box", {}));
-  r.add(type("MouseSensor", Category::Sensor, false, "clicks (ray picks) on its parent's subtree", {}));
-  r.add(type("TimeSensor", Category::Sensor, false, "ticks at a period",
-             {f("period", K::Float, 1.0, "s", "time between ticks", 1e-9, kInf),
-              f("offset", K::Float, 0.0, "s", "time of the first tick", 0, kInf)}));
+  r.add(type(NodeKind::MouseSensor, "MouseSensor", Category::Sensor, false, "clicks (ray picks) on its parent's subtree", {}));
+  r.add(type(NodeKind::TimeSensor, "TimeSensor", Category::Sensor, false, "ticks at a period",
+             {f(field::TimeSensor::Period, "period", K::Float, 1.0, "s", "time between ticks", 1e-9, kInf),
+              f(field::TimeSensor::Offset, "offset", K::Float, 0.0, "s", "time of the first tick", 0, kInf)}));
 }
 
 }  // namespace gdpn::scene

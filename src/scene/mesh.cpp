@@ -270,31 +270,28 @@ Node* importMesh(Scene& scene, Node& parent, const std::string& name, const std:
   auto mesh = loadMesh(path, why);
   if (!mesh) return nullptr;
   const auto& types = scene.types();
-  Node* group = scene.create(*types.find("Group"), name, parent);
+  Node* group = scene.create(*types.find(NodeKind::Group), name, parent);
   if (group == nullptr) {
     why = "the name '" + name + "' is taken";
     return nullptr;
   }
-  const NodeType& material_type = *types.find("Material");
-  const NodeType& mesh_type = *types.find("Mesh");
-  auto set = [](Node& n, const char* field, FieldValue v) {
-    n.setValue(static_cast<std::size_t>(n.type().fieldIndex(field)), std::move(v));
-  };
+  const NodeType& material_type = *types.find(NodeKind::Material);
+  const NodeType& mesh_type = *types.find(NodeKind::Mesh);
   for (std::size_t i = 0; i < mesh->parts.size(); ++i) {
     const auto& part = mesh->parts[i];
     if (part.material >= 0 && static_cast<std::size_t>(part.material) < mesh->materials.size()) {
       const MeshMaterial& m = mesh->materials[static_cast<std::size_t>(part.material)];
       Node* look = scene.create(material_type, "material" + std::to_string(i), *group);
-      set(*look, "ambient", m.ambient);
-      set(*look, "diffuse", m.diffuse);
-      set(*look, "specular", m.specular);
-      set(*look, "emissive", m.emissive);
-      set(*look, "shininess", m.shininess);
-      set(*look, "transparency", m.transparency);
+      look->setValue(field::Material::Ambient, m.ambient);
+      look->setValue(field::Material::Diffuse, m.diffuse);
+      look->setValue(field::Material::Specular, m.specular);
+      look->setValue(field::Material::Emissive, m.emissive);
+      look->setValue(field::Material::Shininess, m.shininess);
+      look->setValue(field::Material::Transparency, m.transparency);
     }
     Node* shape = scene.create(mesh_type, "part" + std::to_string(i), *group);
-    set(*shape, "file", file);
-    set(*shape, "part", static_cast<std::int64_t>(i));
+    shape->setValue(field::Mesh::File, file);
+    shape->setValue(field::Mesh::Part, static_cast<std::int64_t>(i));
   }
   return group;
 }

@@ -76,23 +76,50 @@ Node* Node::next() const {
   return i + 1 < parent_->children_.size() ? parent_->children_[i + 1].get() : nullptr;
 }
 
-double Node::number(std::string_view field) const {
-  const auto& v = values_[static_cast<std::size_t>(type_->fieldIndex(field))];
+bool Node::is(NodeKind kind) const {
+  for (const NodeType* t = type_; t; t = t->base) {
+    if (t->kind == kind) return true;
+  }
+  return false;
+}
+
+void Node::setValue(std::size_t i, FieldValue v) {
+  GDPN_ASSERT(i < values_.size() && v.index() == valueIndex(type_->fields[i]->kind),
+              "a field is set to a value of its own kind");
+  values_[i] = std::move(v);
+}
+
+std::size_t Node::slotOf(NodeKind owner, std::size_t index) const {
+  // the owner's own fields follow those of its bases
+  for (const NodeType* t = type_; t; t = t->base) {
+    if (t->kind != owner) continue;
+    GDPN_ASSERT(index < t->own.size(), "a field id is one of its kind's fields");
+    return (t->base ? t->base->fields.size() : 0) + index;
+  }
+  GDPN_ASSERT(false, "a field is read from a node of the kind that declares it");
+  return 0;
+}
+
+double Node::numberAt(std::size_t i) const {
+  const auto& v = values_[i];
   if (std::holds_alternative<std::int64_t>(v)) return static_cast<double>(std::get<std::int64_t>(v));
   return as<double>(v);
 }
 
-core::Vec3 Node::vec3(std::string_view field) const {
-  const auto& a = as<std::array<double, 3>>(values_[static_cast<std::size_t>(type_->fieldIndex(field))]);
+core::Vec3 Node::vec3At(std::size_t i) const {
+  const auto& a = as<std::array<double, 3>>(values_[i]);
   return {a[0], a[1], a[2]};
 }
 
-const std::string& Node::text(std::string_view field) const {
-  return as<std::string>(values_[static_cast<std::size_t>(type_->fieldIndex(field))]);
-}
+const std::string& Node::textAt(std::size_t i) const { return as<std::string>(values_[i]); }
 
-bool Node::flag(std::string_view field) const {
-  return as<bool>(values_[static_cast<std::size_t>(type_->fieldIndex(field))]);
+bool Node::flagAt(std::size_t i) const { return as<bool>(values_[i]); }
+
+std::size_t Node::choiceAt(std::size_t i) const {
+  const auto& choices = type_->fields[i]->choices;
+  const auto it = std::find(choices.begin(), choices.end(), as<std::string>(values_[i]));
+  GDPN_ASSERT(it != choices.end(), "an Enum field holds one of its words");
+  return static_cast<std::size_t>(it - choices.begin());
 }
 
 bool Node::allDefault() const {
@@ -103,11 +130,9 @@ bool Node::allDefault() const {
 }
 
 core::Pose Node::localPose() const {
-  const int t = type_->fieldIndex("translation");
-  const int r = type_->fieldIndex("rotation");
-  if (t < 0 || r < 0) return {};
-  const auto& tr = as<std::array<double, 3>>(values_[static_cast<std::size_t>(t)]);
-  const auto& rot = as<std::array<double, 4>>(values_[static_cast<std::size_t>(r)]);
+  if (!is(NodeKind::Transform)) return {};
+  const auto& tr = as<std::array<double, 3>>(value(field::Transform::Translation));
+  const auto& rot = as<std::array<double, 4>>(value(field::Transform::Rotation));
   core::Pose p;
   p.position = {tr[0], tr[1], tr[2]};
   const core::Vec3 axis{rot[0], rot[1], rot[2]};
@@ -116,14 +141,12 @@ core::Pose Node::localPose() const {
 }
 
 core::Vec3 Node::localScale() const {
-  const int s = type_->fieldIndex("scale");
-  if (s < 0 || type_->category != Category::Group) return {1, 1, 1};
-  const auto& a = as<std::array<double, 3>>(values_[static_cast<std::size_t>(s)]);
-  return {a[0], a[1], a[2]};
+  if (!is(NodeKind::Transform)) return {1, 1, 1};
+  return vec3(field::Transform::Scale);
 }
 
 Scene::Scene(const TypeRegistry& types) : types_(types) {
-  const NodeType* group = types_.find("Group");
+  const NodeType* group = types_.find(NodeKind::Group);
   GDPN_ASSERT(group != nullptr, "a scene's registry has the Group type");
   root_.reset(new Node(*group, ""));
   enroll(*root_);

@@ -1,5 +1,8 @@
 #include "gdpn/scene/types.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "gdpn/core/assert.h"
 #include "gdpn/core/text.h"
 
@@ -22,12 +25,74 @@ const char* fieldKindName(FieldKind kind) {
 }
 
 std::string FieldDesc::rangeError(double x) const {
+  if (!std::isfinite(x)) return "'" + name + "' must be a finite number, got " + core::formatDouble(x);
   if (x >= min && x <= max) return {};
   const bool low = min > -1e299, high = max < 1e299;
   std::string rule = low && high ? "must lie in [" + core::formatDouble(min) + ", " + core::formatDouble(max) + "]"
                      : low       ? "must be at least " + core::formatDouble(min)
                                  : "must be at most " + core::formatDouble(max);
   return "'" + name + "' " + rule + ", got " + core::formatDouble(x);
+}
+
+std::size_t valueIndex(FieldKind kind) {
+  switch (kind) {
+    case FieldKind::Bool: return 0;
+    case FieldKind::Int: return 1;
+    case FieldKind::Float: return 2;
+    case FieldKind::Vec3:
+    case FieldKind::Color: return 3;
+    case FieldKind::Rotation: return 4;
+    case FieldKind::Enum:
+    case FieldKind::String:
+    case FieldKind::File: return 5;
+    case FieldKind::FloatList: return 6;
+  }
+  return 0;
+}
+
+std::optional<FieldError> FieldDesc::check(const FieldValue& value) const {
+  if (value.index() != valueIndex(kind)) {
+    return FieldError{"'" + name + "' expects a " + std::string(fieldKindName(kind)) + " value", -1};
+  }
+  // every number in range, each located by its place in the value
+  auto numbers = [&](const double* x, std::size_t n, bool whole) -> std::optional<FieldError> {
+    for (std::size_t k = 0; k < n; ++k) {
+      if (auto why = rangeError(x[k]); !why.empty()) return FieldError{why, whole ? -1 : static_cast<int>(k)};
+    }
+    return std::nullopt;
+  };
+  switch (kind) {
+    case FieldKind::Bool:
+    case FieldKind::String:
+    case FieldKind::File: return std::nullopt;
+    case FieldKind::Int: {
+      const double x = static_cast<double>(std::get<std::int64_t>(value));
+      return numbers(&x, 1, true);
+    }
+    case FieldKind::Float: return numbers(&std::get<double>(value), 1, true);
+    case FieldKind::Vec3:
+    case FieldKind::Color: return numbers(std::get<std::array<double, 3>>(value).data(), 3, false);
+    case FieldKind::Rotation: {
+      const auto& r = std::get<std::array<double, 4>>(value);
+      if (auto bad = numbers(r.data(), 4, false)) return bad;
+      if (r[0] == 0 && r[1] == 0 && r[2] == 0 && r[3] != 0) {
+        return FieldError{"'" + name + "' needs an axis that is not zero", -1};
+      }
+      return std::nullopt;
+    }
+    case FieldKind::Enum: {
+      const auto& word = std::get<std::string>(value);
+      if (std::find(choices.begin(), choices.end(), word) != choices.end()) return std::nullopt;
+      std::string list;
+      for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
+      return FieldError{"'" + name + "' is one of " + list + ", got \"" + word + "\"" + core::didYouMean(word, choices), -1};
+    }
+    case FieldKind::FloatList: {
+      const auto& list = std::get<std::vector<double>>(value);
+      return numbers(list.data(), list.size(), false);
+    }
+  }
+  return std::nullopt;
 }
 
 int NodeType::fieldIndex(std::string_view field) const {
@@ -49,12 +114,18 @@ const NodeType& TypeRegistry::add(NodeType type, std::string_view base) {
     type.base = find(base);
     GDPN_ASSERT(type.base != nullptr, "a base type is registered before the types that derive from it");
   }
+  GDPN_ASSERT(find(type.kind) == nullptr, "each node kind is registered once");
+  for (std::size_t i = 0; i < type.own.size(); ++i) {
+    GDPN_ASSERT(type.own[i].owner == type.kind && type.own[i].index == i,
+                "a type declares its own fields in the order of their ids (fields.h)");
+  }
   auto stored = std::make_unique<NodeType>(std::move(type));
   if (stored->base) stored->fields = stored->base->fields;
   for (const auto& f : stored->own) stored->fields.push_back(&f);
   stored->id = static_cast<std::uint32_t>(types_.size());
   const NodeType& ref = *stored;
   by_name_[ref.name] = &ref;
+  by_kind_[static_cast<std::size_t>(ref.kind)] = &ref;
   types_.push_back(std::move(stored));
   return ref;
 }

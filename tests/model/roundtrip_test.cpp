@@ -54,7 +54,7 @@ TEST(RoundTrip, KeepsSceneAndScripts) {
   const auto* box = m->scene->find("cell/box");
   ASSERT_TRUE(box);
   EXPECT_EQ(box->type().name, "Cube");
-  EXPECT_EQ(box->vec3("size"), (core::Vec3{0.5, 0.5, 0.5}));
+  EXPECT_EQ(box->vec3(scene::field::Cube::Size), (core::Vec3{0.5, 0.5, 0.5}));
   EXPECT_NE(m->net.globals.code.find("count = 0"), std::string::npos);
   const std::string text = writeModel(*m);
   EXPECT_NE(text.find("- Cube: {name: box, size: [0.5, 0.5, 0.5]}"), std::string::npos) << text;

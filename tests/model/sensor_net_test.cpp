@@ -156,7 +156,7 @@ TEST(SortingDevice, EveryOneOfFiftyBallsEndsInItsBin) {
   int blue = 0, red = 0;
   for (const auto& group : falling->children()) {
     // the material in the ball's group says its colour; blue goes left (-y), red right
-    const bool is_blue = group->child("#0")->vec3("diffuse").z > 0.5;
+    const bool is_blue = group->child("#0")->vec3(scene::field::Material::Diffuse).z > 0.5;
     const auto* ball = group->child("ball");
     ASSERT_NE(ball, nullptr);
     EXPECT_LT(ball->world.position.z, 0.3) << group->path() << " has not landed";

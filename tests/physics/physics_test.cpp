@@ -258,7 +258,7 @@ TEST(Physics, AnAttachedBoxFollowsTheArmThenFallsWhenDetached) {
   const auto& arm = p.node("rail/#0/arm");
   ASSERT_TRUE(p.world->attach(arm, box));
   EXPECT_FALSE(p.world->attach(arm, box));  // already
-  rail.setValue(static_cast<std::size_t>(rail.type().fieldIndex("vel1")), 0.5);  // m/s
+  rail.setValue(scene::field::Joint::Vel1, 0.5);  // m/s
   p.run(1.0, 1.0 / 500);
   // the box went along with the arm, and did not fall
   EXPECT_NEAR(box.world.position.x, 0.5, 0.02);

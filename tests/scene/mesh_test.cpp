@@ -221,11 +221,11 @@ Shape { appearance Appearance { material Material { diffuseColor 0 1 0 } } geome
   ASSERT_TRUE(group) << why;
   ASSERT_EQ(group->children().size(), 4u);
   EXPECT_EQ(group->children()[0]->type().name, "Material");
-  const auto d = group->children()[2]->vec3("diffuse");
+  const auto d = group->children()[2]->vec3(field::Material::Diffuse);
   EXPECT_EQ(d, (core::Vec3{0, 1, 0}));
   EXPECT_EQ(group->children()[3]->type().name, "Mesh");
-  EXPECT_EQ(group->children()[3]->text("file"), "two.wrl");
-  EXPECT_EQ(group->children()[3]->number("part"), 1.0);
+  EXPECT_EQ(group->children()[3]->text(field::Mesh::File), "two.wrl");
+  EXPECT_EQ(group->children()[3]->number(field::Mesh::Part), 1.0);
   EXPECT_FALSE(importMesh(scene, scene.root(), "part", "two.wrl", path, why));
   EXPECT_EQ(why, "the name 'part' is taken");
 }

@@ -82,7 +82,7 @@ TEST(SceneTree, CopyAndCloneKeepTheSubtree) {
   s.create(T("Cube"), "box", *cell);
   Node* copy = s.copy(*cell, s.root(), "cell2");
   ASSERT_NE(copy, nullptr);
-  EXPECT_EQ(copy->vec3("translation"), (core::Vec3{1, 2, 3}));
+  EXPECT_EQ(copy->vec3(field::Transform::Translation), (core::Vec3{1, 2, 3}));
   EXPECT_NE(s.find("cell2/box"), nullptr);
   EXPECT_EQ(s.copy(*cell, s.root(), "cell2"), nullptr);  // name taken
   auto clone = s.clone();

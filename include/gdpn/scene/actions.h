@@ -26,6 +26,13 @@ void traverse(Node& node, const std::function<void(Node&, const TraversalState&)
 /// Sets Node::world and Node::world_scale of every node below `root` (itself included).
 void updateTransforms(Node& root);
 
+/// The size of a primitive volume in its own frame, centred on its origin, in metres along
+/// x, y, z, before any scale: a Cube's edges; a Sphere's diameter three times; a Cylinder's
+/// or Cone's diameter, diameter and height. A Region's volume by its `shape` the same way
+/// (a ray has none). Zero for every other node. The physics, the renderer and picking all
+/// take a shape's size from here.
+core::Vec3 shapeExtent(const Node& node);
+
 /// The box a shape takes up in its own frame, before scale (empty for planes and meshes not
 /// yet loaded).
 core::Aabb shapeBounds(const Node& shape);

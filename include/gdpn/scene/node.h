@@ -12,6 +12,7 @@
 
 #include "gdpn/core/diagnostics.h"
 #include "gdpn/core/math.h"
+#include "gdpn/scene/fields.h"
 #include "gdpn/scene/types.h"
 
 namespace gdpn::scene {
@@ -48,18 +49,45 @@ class Node {
   /// This node's index among its siblings.
   [[nodiscard]] std::size_t index() const;
 
+  /// Its kind (its type's).
+  [[nodiscard]] NodeKind kind() const { return type_->kind; }
+  /// True when its type is `kind` or derives from it.
+  [[nodiscard]] bool is(NodeKind kind) const;
+
   /// The value of field `i` (an index into type().fields).
   [[nodiscard]] const FieldValue& value(std::size_t i) const { return values_[i]; }
-  /// Sets field `i`; the value's alternative must match the field's kind.
-  void setValue(std::size_t i, FieldValue v) { values_[i] = std::move(v); }
-  /// A number field by name (Float or Int); the field must exist.
-  [[nodiscard]] double number(std::string_view field) const;
-  /// A Vec3 or Color field by name.
-  [[nodiscard]] core::Vec3 vec3(std::string_view field) const;
-  /// An Enum, String or File field by name.
-  [[nodiscard]] const std::string& text(std::string_view field) const;
-  /// A Bool field by name.
-  [[nodiscard]] bool flag(std::string_view field) const;
+  /// Sets field `i`; the value's alternative must match the field's kind (asserted).
+  void setValue(std::size_t i, FieldValue v);
+  /// The index in type().fields of field `id`; the node must be of the kind that declares it
+  /// (asserted: a field read from a node of another kind is a programming error).
+  template <FieldId F>
+  [[nodiscard]] std::size_t slot(F id) const {
+    return slotOf(field::ownerOf(id), static_cast<std::size_t>(id));
+  }
+  /// The value of field `id`.
+  template <FieldId F>
+  [[nodiscard]] const FieldValue& value(F id) const { return values_[slot(id)]; }
+  /// Sets field `id` (the value's alternative must match its kind).
+  template <FieldId F>
+  void setValue(F id, FieldValue v) { setValue(slot(id), std::move(v)); }
+  /// Where field `id` was written (an empty location when it was left at its default).
+  template <FieldId F>
+  [[nodiscard]] const core::SourceLoc& fieldLoc(F id) const { return field_locs[slot(id)]; }
+  /// A number field (Float or Int).
+  template <FieldId F>
+  [[nodiscard]] double number(F id) const { return numberAt(slot(id)); }
+  /// A Vec3 or Color field.
+  template <FieldId F>
+  [[nodiscard]] core::Vec3 vec3(F id) const { return vec3At(slot(id)); }
+  /// An Enum, String or File field.
+  template <FieldId F>
+  [[nodiscard]] const std::string& text(F id) const { return textAt(slot(id)); }
+  /// A Bool field.
+  template <FieldId F>
+  [[nodiscard]] bool flag(F id) const { return flagAt(slot(id)); }
+  /// An Enum field as the C++ enum `E` whose values list its words in order (fields.h).
+  template <class E, FieldId F>
+  [[nodiscard]] E choice(F id) const { return static_cast<E>(choiceAt(slot(id))); }
   /// True when every field has its default.
   [[nodiscard]] bool allDefault() const;
 
@@ -82,6 +110,12 @@ class Node {
  private:
   friend class Scene;
   Node(const NodeType& type, std::string name);
+  std::size_t slotOf(NodeKind owner, std::size_t index) const;
+  double numberAt(std::size_t i) const;
+  core::Vec3 vec3At(std::size_t i) const;
+  const std::string& textAt(std::size_t i) const;
+  bool flagAt(std::size_t i) const;
+  std::size_t choiceAt(std::size_t i) const;
   const NodeType* type_;
   std::string name_;
   Node* parent_ = nullptr;

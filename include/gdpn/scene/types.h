@@ -14,6 +14,8 @@
 #include <variant>
 #include <vector>
 
+#include "gdpn/scene/kind.h"
+
 namespace gdpn::scene {
 
 /// What a field holds.
@@ -38,6 +40,12 @@ const char* fieldKindName(FieldKind kind);
 using FieldValue = std::variant<bool, std::int64_t, double, std::array<double, 3>, std::array<double, 4>, std::string,
                                 std::vector<double>>;
 
+/// Why a value does not fit a field.
+struct FieldError {
+  std::string message;  ///< "'bounce' must lie in [0, 1], got 1.5"
+  int component = -1;   ///< which number of a vector or list is wrong (-1: the whole value)
+};
+
 /// One field of a node type.
 struct FieldDesc {
   std::string name;                   ///< as written in files and seen from Python
@@ -48,16 +56,28 @@ struct FieldDesc {
   std::vector<std::string> choices;   ///< the words an Enum accepts
   double min = -1e300;                ///< smallest accepted number (Int, Float, each component)
   double max = 1e300;                 ///< largest accepted number
+  NodeKind owner = NodeKind::Group;   ///< the node kind that declares it
+  std::uint8_t index = 0;             ///< its place among its owner's own fields (its id)
 
-  /// "" when `x` is in range, else why not ("'bounce' must lie in [0, 1], got 1.5").
+  /// "" when the number `x` is finite and in range, else why not ("'bounce' must lie in
+  /// [0, 1], got 1.5").
   [[nodiscard]] std::string rangeError(double x) const;
+  /// Why `value` cannot be this field's value, or nullopt when it can: the alternative must
+  /// match the kind, numbers must be finite and in range, an Enum's word one of its choices,
+  /// a Rotation's axis not zero unless its angle is. The one check that the model loader,
+  /// scripts assigning fields and the inspector share.
+  [[nodiscard]] std::optional<FieldError> check(const FieldValue& value) const;
 };
+
+/// The FieldValue alternative that holds values of `kind` (its index in the variant).
+std::size_t valueIndex(FieldKind kind);
 
 /// What role a node type plays (for dispatch by actions and physics).
 enum class Category : std::uint8_t { Group, Look, Shape, Dynamics, Sensor, Field };
 
 /// A node type: its own fields, its base type's fields before them.
 struct NodeType {
+  NodeKind kind = NodeKind::Group;  ///< which type it is, for `switch`
   std::string name;                 ///< "Cube", "Body", ...
   const NodeType* base = nullptr;   ///< inherited fields come first
   Category category = Category::Group;
@@ -77,16 +97,20 @@ struct NodeType {
 /// initialisers.
 class TypeRegistry {
  public:
-  /// Adds a type; its base (if any) must be added already. Returns the stored type.
+  /// Adds a type; its base (if any) must be added already, its kind not. Its own fields must
+  /// be declared in the order of their ids (fields.h). Returns the stored type.
   const NodeType& add(NodeType type, std::string_view base = {});
   /// The type called `name`, or null.
   [[nodiscard]] const NodeType* find(std::string_view name) const;
+  /// The type of kind `kind`, or null when it is not registered.
+  [[nodiscard]] const NodeType* find(NodeKind kind) const { return by_kind_[static_cast<std::size_t>(kind)]; }
   /// Every type, in the order added.
   [[nodiscard]] std::vector<const NodeType*> all() const;
 
  private:
   std::vector<std::unique_ptr<NodeType>> types_;
   std::map<std::string, const NodeType*, std::less<>> by_name_;
+  std::array<const NodeType*, kNodeKinds> by_kind_{};
 };
 
 /// Registers the built-in types: Group, Transform, Material, Light, Camera, Fog, Cube,

@@ -74,6 +74,8 @@ class Hub {
     Reading reading;
   };
   Entry* find(scene::NodeHandle h);
+  // the new reading of sensor `e` into `next`; false when it cannot have changed
+  bool read(const Entry& e, double now, const std::vector<const InputEvent*>& due, Reading& next) const;
   scene::Scene& scene_;
   physics::World* world_;
   std::vector<Entry> entries_;  // in path order
