@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "gdpn/model/report.h"
-#include "gdpn/model/simulation.h"
+#include "gdpn/session/session.h"
 
 namespace py = pybind11;
 using namespace gdpn;
@@ -38,23 +38,20 @@ py::module_& module() {
 
 class Model {
  public:
-  Model(std::string path, std::optional<std::uint64_t> seed, double script_timeout)
-      : path_(std::move(path)), timeout_(script_timeout) {
+  Model(std::string path, std::optional<std::uint64_t> seed, double script_timeout) : path_(std::move(path)) {
     core::Diagnostics diags;
     auto resolved = model::resolveModelPath(path_, diags);
     if (!resolved) raiseModelError(diags);
     path_ = *resolved;
     auto m = model::loadModel(path_, diags);
     if (!m) raiseModelError(diags);
-    model_ = std::move(*m);
-    restart(seed, diags);
+    session_ = session::Session::create(std::move(*m), diags, {seed, script_timeout});
+    if (!session_) raiseModelError(diags);
+    session_->traceTo(trace_);
   }
 
   py::dict run(std::optional<double> until, std::optional<std::int64_t> steps, std::optional<std::uint64_t> seed) {
-    if (seed) {
-      core::Diagnostics diags;
-      restart(seed, diags);
-    }
+    if (seed) reset(seed);
     std::atomic<bool> interrupted{false};
     // Ctrl-C between steps: Python's handler runs here and the run stops cleanly
     auto check = [&](std::int64_t, std::int64_t) {
@@ -63,20 +60,80 @@ class Model {
         interrupted = true;
       }
     };
-    outcome_ = sim_->run({until, steps}, check, &interrupted);
+    outcome_ = session_->run({until, steps, {}}, check, &interrupted);
     raiseIfFailed();
     return report();
   }
 
   void step() {
-    sim_->step();
-    if (auto halt = sim_->scriptHalt()) {
-      outcome_ = *halt;
-      raiseIfFailed();
+    session_->step();
+    raiseIfHalted();
+  }
+
+  void stepPlant() { session_->stepPlant(); }
+
+  void fire(const std::string& transition) {
+    const std::string why = session_->fire(transition);
+    raiseIfHalted();
+    if (!why.empty()) {
+      py::object err = module().attr("FireError")(why);
+      PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(err.ptr())), err.ptr());
+      throw py::error_already_set();
     }
   }
 
+  void reset(std::optional<std::uint64_t> seed) {
+    trace_.str("");
+    trace_.clear();
+    session_->reset(seed);
+    outcome_ = {};
+  }
+
+  int addBreakpoint(std::optional<std::string> starts, std::optional<std::string> completes,
+                    std::optional<std::string> place, const std::string& compare, std::int64_t value,
+                    std::optional<std::string> predicate) {
+    const int given = static_cast<int>(starts.has_value()) + static_cast<int>(completes.has_value()) +
+                      static_cast<int>(place.has_value()) + static_cast<int>(predicate.has_value());
+    if (given != 1) throw py::value_error("a breakpoint watches one thing: starts=, completes=, place= or predicate=");
+    session::Breakpoint bp;
+    bp.kind = starts      ? session::BreakKind::Starts
+              : completes ? session::BreakKind::Completes
+              : place     ? session::BreakKind::Marking
+                          : session::BreakKind::Predicate;
+    bp.target = starts ? *starts : completes ? *completes : place ? *place : "";
+    bp.expression = predicate.value_or("");
+    if (place) {
+      const auto how = session::parseCompare(compare);
+      if (!how) throw py::value_error("compare is one of <, <=, ==, !=, >=, >; got '" + compare + "'");
+      bp.compare = *how;
+      bp.value = value;
+    }
+    std::string why;
+    const auto id = session_->addBreakpoint(bp, why);
+    if (!id) throw py::value_error(why);
+    return *id;
+  }
+
+  void removeBreakpoint(int id) {
+    if (!session_->removeBreakpoint(id)) throw py::key_error("no breakpoint " + std::to_string(id));
+  }
+
+  py::list breakpoints() const {
+    py::list out;
+    for (const auto& [id, bp] : session_->breakpoints()) {
+      py::dict d;
+      d["id"] = id;
+      d["watches"] = bp.describe();
+      d["enabled"] = bp.enabled;
+      out.append(d);
+    }
+    return out;
+  }
+
+  [[nodiscard]] std::optional<int> hit() const { return session_->hit(); }
+
   py::object marking(const std::string& place) const {
+    const model::Simulation* sim_ = &session_->simulation();
     const auto& net = sim_->net();
     const auto p = net.findPlace(place);
     if (p < 0) throw py::key_error("no place '" + place + "'");
@@ -110,26 +167,24 @@ class Model {
   }
 
   py::dict report() const {
+    const model::Simulation* sim_ = &session_->simulation();
     auto outcome = outcome_;
     outcome.steps = sim_->kernel().steps();
     outcome.time = sim_->kernel().now();
     return py::module_::import("json").attr("loads")(model::reportJson(model::makeReport(*sim_, outcome)));
   }
 
-  [[nodiscard]] double time() const { return sim_->kernel().now(); }
-  [[nodiscard]] std::int64_t steps() const { return sim_->kernel().steps(); }
-  [[nodiscard]] std::uint64_t seed() const { return sim_->seed(); }
+  [[nodiscard]] double time() const { return session_->simulation().kernel().now(); }
+  [[nodiscard]] std::int64_t steps() const { return session_->simulation().kernel().steps(); }
+  [[nodiscard]] std::uint64_t seed() const { return session_->seed(); }
   [[nodiscard]] const std::string& path() const { return path_; }
 
  private:
-  void restart(std::optional<std::uint64_t> seed, core::Diagnostics& diags) {
-    sim_.reset();
-    sim_ = model::Simulation::create(model_, diags, seed, timeout_);
-    if (!sim_) raiseModelError(diags);
-    trace_.str("");
-    trace_.clear();
-    sim_->traceTo(trace_);
-    outcome_ = {};
+  void raiseIfHalted() {
+    if (auto halt = session_->simulation().scriptHalt()) {
+      outcome_ = *halt;
+      raiseIfFailed();
+    }
   }
 
   void raiseIfFailed() const {
@@ -148,10 +203,8 @@ class Model {
   }
 
   std::string path_;
-  double timeout_;
-  model::Model model_;
-  std::unique_ptr<model::Simulation> sim_;
-  std::ostringstream trace_;
+  std::ostringstream trace_;  // before the session, which writes into it
+  std::unique_ptr<session::Session> session_;
   model::RunOutcome outcome_;
 };
 
@@ -173,6 +226,9 @@ class ModelError(Exception):
 
 class ScriptError(Exception):
     """A script raised an exception, or ran past the script timeout, during a run."""
+
+class FireError(ValueError):
+    """Model.fire() refused: the transition is not enabled, is occurring, or its guard is false."""
 )py",
            m.attr("__dict__"));
 
@@ -182,6 +238,20 @@ class ScriptError(Exception):
            "Runs until `until` seconds or for `steps` steps (default: the model's until, else until the net is "
            "dead). A seed restarts the model from its initial marking. Returns the report.")
       .def("step", &Model::step, "Runs one step")
+      .def("step_plant", &Model::stepPlant,
+           "One step of the plant alone, the net switched off: physics and sensors move, the marking stays")
+      .def("fire", &Model::fire, py::arg("transition"),
+           "Starts the named transition now; raises gdpn.FireError with the reason when it cannot start")
+      .def("reset", &Model::reset, py::arg("seed") = py::none(),
+           "Back to the initial state: the same run again, byte for byte (with a seed: that seed's run)")
+      .def("add_breakpoint", &Model::addBreakpoint, py::kw_only(), py::arg("starts") = py::none(),
+           py::arg("completes") = py::none(), py::arg("place") = py::none(), py::arg("compare") = ">=",
+           py::arg("value") = 0, py::arg("predicate") = py::none(),
+           "Stops run() at the end of the step where a transition starts or completes, a place's tokens "
+           "compare with `value`, or a Python expression over the model's globals is true. Returns its id.")
+      .def("remove_breakpoint", &Model::removeBreakpoint, py::arg("id"))
+      .def_property_readonly("breakpoints", &Model::breakpoints, "[{id, watches, enabled}]")
+      .def_property_readonly("hit", &Model::hit, "the id of the breakpoint that ended the last run, or None")
       .def("marking", &Model::marking, py::arg("place"),
            "Tokens on a place: a count for a plain place, else {slot: count or [node names]}")
       .def("trace", &Model::trace, "Every event so far, as dicts")

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <charconv>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -24,6 +25,7 @@
 #include "gdpn/render/capture.h"
 #include "gdpn/scene/mesh.h"
 #include "gdpn/script/engine.h"
+#include "gdpn/session/session.h"
 
 namespace {
 
@@ -68,12 +70,12 @@ class ProgressBar {
 };
 
 /// Loads and compiles MODEL (file or folder), printing diagnostics; nullptr on error.
-std::unique_ptr<model::Simulation> open(const std::string& arg, std::optional<std::uint64_t> seed,
-                                        double script_timeout_s) {
+std::unique_ptr<gdpn::session::Session> open(const std::string& arg, std::optional<std::uint64_t> seed,
+                                             double script_timeout_s) {
   Diagnostics diags;
-  std::unique_ptr<model::Simulation> sim;
+  std::unique_ptr<gdpn::session::Session> sim;
   if (auto path = model::resolveModelPath(arg, diags)) {
-    if (auto m = model::loadModel(*path, diags)) sim = model::Simulation::create(*m, diags, seed, script_timeout_s);
+    if (auto m = model::loadModel(*path, diags)) sim = gdpn::session::Session::create(*m, diags, {seed, script_timeout_s});
   }
   diags.print(std::cerr);
   if (!sim && diags.errorCount() > 1) std::cerr << diags.errorCount() << " errors\n";
@@ -124,8 +126,9 @@ int capture(CaptureArgs a, bool movie) {
     std::cerr << "error: a movie needs an even width and height, not " << a.size << "\n";
     return 2;
   }
-  auto sim = open(a.model, a.seed, 0.0);
-  if (!sim) return 1;
+  auto session = open(a.model, a.seed, 0.0);
+  if (!session) return 1;
+  model::Simulation* sim = &session->simulation();
   std::string error;
   bool ok = false;
   if (!movie) {
@@ -247,12 +250,56 @@ struct RunArgs {
   std::string report;
   double script_timeout = 0.0;
   std::string input;
+  std::vector<std::string> breaks;
   bool quiet = false;
 };
+
+/// A breakpoint written on the command line: "start:T", "complete:T", "PLACE OP N" (OP one
+/// of < <= == != >= >) or "when:EXPRESSION". Nullopt with `why` when it is none of these.
+std::optional<gdpn::session::Breakpoint> parseBreakpoint(const std::string& spec, std::string& why) {
+  using gdpn::session::BreakKind;
+  gdpn::session::Breakpoint bp;
+  auto after = [&](std::string_view head) { return spec.substr(head.size()); };
+  if (spec.starts_with("start:")) {
+    bp.kind = BreakKind::Starts;
+    bp.target = after("start:");
+  } else if (spec.starts_with("complete:")) {
+    bp.kind = BreakKind::Completes;
+    bp.target = after("complete:");
+  } else if (spec.starts_with("when:")) {
+    bp.kind = BreakKind::Predicate;
+    bp.expression = after("when:");
+  } else {
+    // PLACE OP N: the operator is the first run of <, =, !, >
+    const auto op = spec.find_first_of("<=!>");
+    const auto end = spec.find_first_not_of("<=!>", op);
+    const auto how = op == std::string::npos ? std::nullopt : gdpn::session::parseCompare(spec.substr(op, end - op));
+    std::int64_t value = 0;
+    const std::string number = end == std::string::npos ? "" : spec.substr(end);
+    const auto [ptr, ec] = std::from_chars(number.data(), number.data() + number.size(), value);
+    if (!how || number.empty() || ec != std::errc() || ptr != number.data() + number.size()) {
+      why = "expected start:TRANSITION, complete:TRANSITION, PLACE>=N (or <, <=, ==, !=, >) or when:EXPRESSION";
+      return std::nullopt;
+    }
+    bp.kind = BreakKind::Marking;
+    bp.target = spec.substr(0, op);
+    bp.compare = *how;
+    bp.value = value;
+  }
+  return bp;
+}
 
 int run(const RunArgs& a) {
   auto sim = open(a.model, a.seed, a.script_timeout);
   if (!sim) return 1;
+  for (const auto& spec : a.breaks) {
+    std::string why;
+    const auto bp = parseBreakpoint(spec, why);
+    if (!bp || !sim->addBreakpoint(*bp, why)) {
+      std::cerr << "error: --break '" << spec << "': " << why << "\n";
+      return 2;
+    }
+  }
   if (!a.input.empty()) {
     Diagnostics diags;
     auto events = model::loadInput(a.input, diags);
@@ -273,11 +320,12 @@ int run(const RunArgs& a) {
   model::RunOutcome outcome;
   {
     ProgressBar bar(!a.quiet && isatty(STDERR_FILENO));
-    outcome = sim->run({a.until, a.steps}, std::ref(bar), &g_interrupted);
+    outcome = sim->run({a.until, a.steps, {}}, std::ref(bar), &g_interrupted);
   }
   std::signal(SIGINT, SIG_DFL);
   trace.flush();
-  const auto report = model::makeReport(*sim, outcome);
+  if (outcome.reason == model::StopReason::Breakpoint) std::cerr << "stopped at " << outcome.message << "\n";
+  const auto report = model::makeReport(sim->simulation(), outcome);
   if (!a.report.empty()) {
     std::ofstream out(a.report, std::ios::binary | std::ios::trunc);
     if (!out || !(out << model::reportJson(report))) {
@@ -328,6 +376,9 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   run_cmd->add_option("--input", run_args.input,
                       "input events for keyboard and mouse sensors: a YAML list of {t, key | click | viewpoint}");
+  run_cmd->add_option("--break", run_args.breaks,
+                      "stop the run at the end of the step where start:TRANSITION or complete:TRANSITION "
+                      "happens, PLACE>=N holds (or <, <=, ==, !=, >), or when:PYTHON is true (repeatable)");
   run_cmd->add_flag("--quiet,-q", run_args.quiet, "print no summary and no progress");
 
   AnalyzeArgs analyze_args;

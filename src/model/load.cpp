@@ -30,10 +30,18 @@ const std::vector<std::string> kSettingsKeys = {"dt", "seed", "until"};
 const std::vector<std::string> kPageKeys = {"description", "places", "transitions", "arcs", "instances"};
 const std::vector<std::string> kPageTypeKeys = {"description", "references", "places", "transitions",
                                                 "arcs", "instances", "scene"};
-const std::vector<std::string> kPlaceKeys = {"description", "slots", "tokens", "capacity", "sensors", "on_deposit",
-                                             "on_remove", "on_enter", "on_exit", "on_sample", "on_change", "at"};
-const std::vector<std::string> kTransitionKeys = {"description", "duration", "priority", "probability", "guard",
-                                                  "pre_fire", "in_fire", "post_fire", "at"};
+/// `keys`, then the keys of the scripts of `owner` (net::kScriptKinds).
+std::vector<std::string> withScripts(std::vector<std::string> keys, net::ScriptOwner owner) {
+  for (const auto& k : net::kScriptKinds) {
+    if (k.owner == owner) keys.emplace_back(k.key);
+  }
+  return keys;
+}
+
+const std::vector<std::string> kPlaceKeys =
+    withScripts({"description", "slots", "tokens", "capacity", "sensors", "at"}, net::ScriptOwner::PlaceSlot);
+const std::vector<std::string> kTransitionKeys =
+    withScripts({"description", "duration", "priority", "probability", "at"}, net::ScriptOwner::Transition);
 const std::vector<std::string> kArcKeys = {"from", "to", "kind", "weight", "predicate", "condition"};
 const std::vector<std::string> kScriptsKeys = {"globals"};
 const std::vector<std::string> kScriptFileKeys = {"file", "function"};
@@ -149,15 +157,6 @@ class ModelReader {
       script.indent = static_cast<int>(col);
     }
     return script;
-  }
-
-  static net::ScriptSpec& slotScript(net::SlotScripts& s, const std::string& key) {
-    if (key == "on_deposit") return s.on_deposit;
-    if (key == "on_remove") return s.on_remove;
-    if (key == "on_enter") return s.on_enter;
-    if (key == "on_exit") return s.on_exit;
-    if (key == "on_sample") return s.on_sample;
-    return s.on_change;
   }
 
   /// Per-slot scripts: a script (for slot a0, or for `default_slot`) or a map slot -> script.
@@ -335,16 +334,16 @@ class ModelReader {
           }
           p.sensors.push_back({slot, *path, r_.loc(s.value, s.loc)});
         });
-      } else if (e.key.rfind("on_", 0) == 0) {
-        // on_deposit, on_remove, on_enter, on_exit, on_sample, on_change: a script per slot
-        const net::SlotId fallback = e.key == "on_deposit" || e.key == "on_remove" || p.sensors.empty()
-                                         ? net::kDefaultSlot
-                                         : p.sensors.front().slot;
+      } else if (const auto kind = net::parseScriptKind(e.key, net::ScriptOwner::PlaceSlot)) {
+        // on_deposit, on_remove, on_enter, on_exit, on_sample, on_change: a script per slot;
+        // a sensor's scripts go to the first sensor slot unless they name one
+        const bool any_slot = *kind == net::ScriptKind::OnDeposit || *kind == net::ScriptKind::OnRemove;
+        const net::SlotId fallback = any_slot || p.sensors.empty() ? net::kDefaultSlot : p.sensors.front().slot;
         perSlotScript(e, e.key, fallback, [&](net::SlotId slot, net::ScriptSpec script) {
           auto it = std::find_if(p.scripts.begin(), p.scripts.end(),
                                  [&](const net::SlotScripts& ss) { return ss.slot == slot; });
           if (it == p.scripts.end()) it = p.scripts.insert(p.scripts.end(), net::SlotScripts{slot, {}, {}, {}, {}, {}, {}});
-          slotScript(*it, e.key) = std::move(script);
+          net::scriptOf(*it, *kind) = std::move(script);
         });
       } else if (e.key == "at") {
         p.position = readPos(e.value);
@@ -409,14 +408,8 @@ class ModelReader {
       } else if (e.key == "probability") {
         t.probability_loc = r_.loc(e.value, e.loc);
         if (auto v = r_.number(e.value, "probability")) t.probability = *v;
-      } else if (e.key == "guard") {
-        t.guard = readScript(e, "guard");
-      } else if (e.key == "pre_fire") {
-        t.pre_fire = readScript(e, "pre_fire");
-      } else if (e.key == "in_fire") {
-        t.in_fire = readScript(e, "in_fire");
-      } else if (e.key == "post_fire") {
-        t.post_fire = readScript(e, "post_fire");
+      } else if (const auto kind = net::parseScriptKind(e.key, net::ScriptOwner::Transition)) {
+        net::scriptOf(t, *kind) = readScript(e, e.key);
       } else if (e.key == "at") {
         t.position = readPos(e.value);
       }

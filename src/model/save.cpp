@@ -55,9 +55,9 @@ bool literalSafe(const std::string& code) {
   return true;
 }
 
-void writeScript(YAML::Emitter& out, const char* key, const net::ScriptSpec& script) {
+void writeScript(YAML::Emitter& out, std::string_view key, const net::ScriptSpec& script) {
   if (script.empty()) return;
-  out << YAML::Key << key << YAML::Value;
+  out << YAML::Key << std::string(key) << YAML::Value;
   if (!script.file.empty()) {
     out << YAML::Flow << YAML::BeginMap << YAML::Key << "file" << YAML::Value << script.file;
     if (!script.function.empty()) out << YAML::Key << "function" << YAML::Value << script.function;
@@ -69,13 +69,12 @@ void writeScript(YAML::Emitter& out, const char* key, const net::ScriptSpec& scr
   }
 }
 
-void writeSlotScripts(YAML::Emitter& out, const char* key, const std::vector<net::SlotScripts>& scripts,
-                      net::ScriptSpec net::SlotScripts::*which) {
+void writeSlotScripts(YAML::Emitter& out, net::ScriptKind kind, const std::vector<net::SlotScripts>& scripts) {
   bool any = false;
-  for (const auto& s : scripts) any = any || !(s.*which).empty();
+  for (const auto& s : scripts) any = any || !net::scriptOf(s, kind).empty();
   if (!any) return;
-  out << YAML::Key << key << YAML::Value << YAML::BeginMap;
-  for (const auto& s : scripts) writeScript(out, net::slotName(s.slot).c_str(), s.*which);
+  out << YAML::Key << std::string(net::info(kind).key) << YAML::Value << YAML::BeginMap;
+  for (const auto& s : scripts) writeScript(out, net::slotName(s.slot), net::scriptOf(s, kind));
   out << YAML::EndMap;
 }
 
@@ -108,12 +107,7 @@ void writePlace(YAML::Emitter& out, const net::PlaceSpec& p) {
     for (const auto& b : p.sensors) out << YAML::Key << net::slotName(b.slot) << YAML::Value << b.path;
     out << YAML::EndMap;
   }
-  writeSlotScripts(out, "on_deposit", p.scripts, &net::SlotScripts::on_deposit);
-  writeSlotScripts(out, "on_remove", p.scripts, &net::SlotScripts::on_remove);
-  writeSlotScripts(out, "on_enter", p.scripts, &net::SlotScripts::on_enter);
-  writeSlotScripts(out, "on_exit", p.scripts, &net::SlotScripts::on_exit);
-  writeSlotScripts(out, "on_sample", p.scripts, &net::SlotScripts::on_sample);
-  writeSlotScripts(out, "on_change", p.scripts, &net::SlotScripts::on_change);
+  for (const net::ScriptKind k : net::kSlotScripts) writeSlotScripts(out, k, p.scripts);
   pos(out, p.position);
   out << YAML::EndMap;
 }
@@ -142,10 +136,7 @@ void writeTransition(YAML::Emitter& out, const net::TransitionSpec& t) {
   writeDuration(out, t.duration);
   if (t.priority != 0) out << YAML::Key << "priority" << YAML::Value << t.priority;
   if (t.probability != 1.0) out << YAML::Key << "probability" << YAML::Value << formatDouble(t.probability);
-  writeScript(out, "guard", t.guard);
-  writeScript(out, "pre_fire", t.pre_fire);
-  writeScript(out, "in_fire", t.in_fire);
-  writeScript(out, "post_fire", t.post_fire);
+  for (const net::ScriptKind k : net::kTransitionScripts) writeScript(out, net::info(k).key, net::scriptOf(t, k));
   pos(out, t.position);
   out << YAML::EndMap;
 }

@@ -1,6 +1,5 @@
 #include "model/scene_io.h"
 
-#include <cmath>
 
 #include "gdpn/core/text.h"
 
@@ -76,7 +75,7 @@ class SceneReader {
         }
         continue;
       }
-      const auto i = static_cast<std::size_t>(type->fieldIndex(field.key));
+      const auto i = static_cast<std::size_t>(type->fieldIndex(field.key));  // a key entries() accepted
       if (auto v = readValue(*type->fields[i], field)) {
         node->setValue(i, std::move(*v));
         node->field_locs[i] = r_.loc(field.value, field.loc);
@@ -87,27 +86,27 @@ class SceneReader {
 
   /// Checks that span fields: a GradientField's vectors must fill its grid.
   void check(const scene::Node& node) {
-    if (node.type().name != "GradientField") return;
-    const auto nx = static_cast<std::size_t>(node.number("nx")), ny = static_cast<std::size_t>(node.number("ny"));
-    const auto i = static_cast<std::size_t>(node.type().fieldIndex("vectors"));
-    const auto& v = std::get<std::vector<double>>(node.value(i));
+    if (node.kind() != scene::NodeKind::GradientField) return;
+    using F = scene::field::GradientField;
+    const auto nx = static_cast<std::size_t>(node.number(F::Nx)), ny = static_cast<std::size_t>(node.number(F::Ny));
+    const auto& v = std::get<std::vector<double>>(node.value(F::Vectors));
     if (v.size() != 2 * nx * ny) {
-      r_.error(node.field_locs[i].line > 0 ? node.field_locs[i] : node.loc,
+      r_.error(node.fieldLoc(F::Vectors).line > 0 ? node.fieldLoc(F::Vectors) : node.loc,
                "a GradientField of " + std::to_string(nx) + " x " + std::to_string(ny) + " points needs " +
                    std::to_string(2 * nx * ny) + " numbers in 'vectors' (x, y per point), got " +
                    std::to_string(v.size()));
     }
   }
 
-  std::optional<double> number(const YAML::Node& n, const FieldDesc& f) {
-    auto v = r_.number(n, f.name);
+  /// The value written for field `f`, as its kind reads it, then checked by the field's
+  /// own rules (FieldDesc::check, shared with scripts and the inspector).
+  std::optional<FieldValue> readValue(const FieldDesc& f, const Entry& e) {
+    std::optional<FieldValue> v = parse(f, e);
     if (!v) return std::nullopt;
-    if (!std::isfinite(*v) && f.max < 1e300) {
-      r_.error(n, "'" + f.name + "' must be a finite number");
-      return std::nullopt;
-    }
-    if (auto why = f.rangeError(*v); !why.empty()) {
-      r_.error(n, why);
+    if (auto bad = f.check(*v)) {
+      const YAML::Node& n = e.value;
+      const bool part = bad->component >= 0 && n.IsSequence() && static_cast<std::size_t>(bad->component) < n.size();
+      r_.error(part ? r_.loc(n[static_cast<std::size_t>(bad->component)], e.loc) : r_.loc(n, e.loc), bad->message);
       return std::nullopt;
     }
     return v;
@@ -121,14 +120,15 @@ class SceneReader {
     }
     std::array<double, N> out{};
     for (std::size_t k = 0; k < N; ++k) {
-      auto v = number(n[k], f);
+      auto v = r_.number(n[k], f.name);
       if (!v) return std::nullopt;
       out[k] = *v;
     }
     return out;
   }
 
-  std::optional<FieldValue> readValue(const FieldDesc& f, const Entry& e) {
+  /// The value as written, read as the field's kind (its syntax only).
+  std::optional<FieldValue> parse(const FieldDesc& f, const Entry& e) {
     const YAML::Node& n = e.value;
     switch (f.kind) {
       case FieldKind::Bool: {
@@ -137,42 +137,20 @@ class SceneReader {
         r_.error(r_.loc(n, e.loc), "'" + f.name + "' expects true or false, got " + describe(n));
         return std::nullopt;
       }
-      case FieldKind::Int: {
-        auto v = r_.integer(n, f.name);
-        if (!v) return std::nullopt;
-        if (auto why = f.rangeError(static_cast<double>(*v)); !why.empty()) {
-          r_.error(n, why);
-          return std::nullopt;
-        }
-        return *v;
-      }
+      case FieldKind::Int:
+        if (auto v = r_.integer(n, f.name)) return *v;
+        return std::nullopt;
       case FieldKind::Float:
-        if (auto v = number(n, f)) return *v;
+        if (auto v = r_.number(n, f.name)) return *v;
         return std::nullopt;
       case FieldKind::Vec3:
       case FieldKind::Color:
         if (auto v = numbers<3>(n, f, f.kind == FieldKind::Color ? "a colour [r, g, b]" : "[x, y, z]")) return *v;
         return std::nullopt;
-      case FieldKind::Rotation: {
-        auto v = numbers<4>(n, f, "[axis x, axis y, axis z, angle in degrees]");
-        if (!v) return std::nullopt;
-        if ((*v)[0] == 0 && (*v)[1] == 0 && (*v)[2] == 0 && (*v)[3] != 0) {
-          r_.error(n, "'" + f.name + "' needs an axis that is not zero");
-          return std::nullopt;
-        }
-        return *v;
-      }
-      case FieldKind::Enum: {
-        auto s = r_.string(n, f.name);
-        if (!s) return std::nullopt;
-        if (std::find(f.choices.begin(), f.choices.end(), *s) == f.choices.end()) {
-          std::string list;
-          for (const auto& c : f.choices) list += (list.empty() ? "" : ", ") + c;
-          r_.error(n, "'" + f.name + "' is one of " + list + ", got \"" + *s + "\"" + core::didYouMean(*s, f.choices));
-          return std::nullopt;
-        }
-        return *s;
-      }
+      case FieldKind::Rotation:
+        if (auto v = numbers<4>(n, f, "[axis x, axis y, axis z, angle in degrees]")) return *v;
+        return std::nullopt;
+      case FieldKind::Enum:
       case FieldKind::String:
       case FieldKind::File:
         if (auto s = r_.string(n, f.name)) return *s;
@@ -184,7 +162,7 @@ class SceneReader {
         }
         std::vector<double> out;
         for (const auto& x : n) {
-          auto v = number(x, f);
+          auto v = r_.number(x, f.name);
           if (!v) return std::nullopt;
           out.push_back(*v);
         }

@@ -22,6 +22,7 @@ const char* stopReasonName(StopReason reason) {
     case StopReason::Interrupted: return "interrupted";
     case StopReason::Stopped: return "stopped";
     case StopReason::ScriptError: return "script error";
+    case StopReason::Breakpoint: return "breakpoint";
   }
   return "?";
 }
@@ -83,7 +84,7 @@ class InstancePlacer {
       auto type = types_.find(inst.type);
       if (type == types_.end() || std::find(stack.begin(), stack.end(), inst.type) != stack.end()) continue;
       if (!ownsScene(*type->second)) continue;
-      scene::Node* frame = scene_.create(*scene_.types().find("Transform"), inst.name, parent);
+      scene::Node* frame = scene_.create(*scene_.types().find(scene::NodeKind::Transform), inst.name, parent);
       if (!frame) {
         diags_.error(inst.loc, "instance '" + inst.name + "' places its machine at '" +
                                    (parent.path().empty() ? "" : parent.path() + "/") + inst.name +
@@ -193,29 +194,42 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
   sim->kernel_ = std::make_unique<net::Kernel>(sim->net_, settings);
   sim->stats_ = std::make_unique<net::StatsCollector>(*sim->net_);
   sim->kernel_->addObserver(sim->stats_.get());
-  if (sim->net_->scripted()) {
-    Simulation* self = sim.get();
-    script::EngineCallbacks callbacks;
-    callbacks.log = [self](const std::string& text) {
-      std::cerr << "[t=" << core::formatDouble(self->kernel_->now()) << "] " << text << '\n';
-      if (self->trace_) self->trace_->event(self->kernel_->steps(), "log", "\"text\":" + core::jsonQuote(text));
-    };
-    callbacks.node_name = [self](net::NodeRef r) { return self->nodeName(r); };
-    callbacks.plant = sim->scene_.get();
-    callbacks.physics = sim->physics_.get();
-    callbacks.spawn = [self](const scene::Node& templ, scene::Node& parent, std::optional<core::Vec3> at,
-                             std::string& why) { return self->spawn(templ, parent, at, why); };
-    callbacks.erase = [self](scene::Node& node) { self->deleteNode(node); };
-    callbacks.reading = [self](scene::NodeHandle h) -> const sensors::Reading& {
-      static const sensors::Reading none;
-      return self->hub_ ? self->hub_->reading(h) : none;
-    };
-    sim->engine_ = script::Engine::create(*sim->net_, *sim->kernel_, model.path, {script_timeout_s},
-                                          std::move(callbacks), diags);
-    if (!sim->engine_) return nullptr;
-    sim->kernel_->setHooks(sim->engine_.get());
-  }
+  sim->script_timeout_s_ = script_timeout_s;
+  if (sim->net_->scripted() && !sim->makeEngine(diags)) return nullptr;
   return sim;
+}
+
+bool Simulation::makeEngine(core::Diagnostics& diags) {
+  script::EngineCallbacks callbacks;
+  callbacks.log = [this](const std::string& text) {
+    std::cerr << "[t=" << core::formatDouble(kernel_->now()) << "] " << text << '\n';
+    if (trace_) trace_->event(kernel_->steps(), "log", "\"text\":" + core::jsonQuote(text));
+  };
+  callbacks.node_name = [this](net::NodeRef r) { return nodeName(r); };
+  callbacks.plant = scene_.get();
+  callbacks.physics = physics_.get();
+  callbacks.spawn = [this](const scene::Node& templ, scene::Node& parent, std::optional<core::Vec3> at,
+                           std::string& why) { return spawn(templ, parent, at, why); };
+  callbacks.erase = [this](scene::Node& node) { deleteNode(node); };
+  callbacks.reading = [this](scene::NodeHandle h) -> const sensors::Reading& {
+    static const sensors::Reading none;
+    return hub_ ? hub_->reading(h) : none;
+  };
+  engine_ = script::Engine::create(*net_, *kernel_, model_.path, {script_timeout_s_}, std::move(callbacks), diags);
+  if (!engine_) return false;
+  kernel_->setHooks(engine_.get());
+  return true;
+}
+
+std::optional<bool> Simulation::evaluate(const std::string& expression, std::string& error) {
+  if (!engine_) {
+    core::Diagnostics diags;
+    if (!makeEngine(diags)) {
+      error = diags.str();
+      return std::nullopt;
+    }
+  }
+  return engine_->evaluate(expression, error);
 }
 
 Simulation::~Simulation() {
@@ -240,15 +254,14 @@ scene::Node* Simulation::spawn(const scene::Node& templ, scene::Node& parent, st
   for (int k = 1; name.empty() || parent.child(name); ++k) name = base + "_" + std::to_string(k);
   // with `at`, the copy's own origin goes there: a Transform is moved itself, anything else
   // gets a Transform of its own
-  const bool placeable = templ.type().fieldIndex("translation") >= 0;
+  const bool placeable = templ.is(scene::NodeKind::Transform);
   scene::Node* home = &parent;
-  if (at && !placeable) home = scene_->create(*scene_->types().find("Transform"), name, parent);
+  if (at && !placeable) home = scene_->create(*scene_->types().find(scene::NodeKind::Transform), name, parent);
   scene::Node* copy = scene_->copy(templ, *home, home == &parent ? name : templ.name());
   scene::Node* top = home == &parent ? copy : home;
   if (at) {
     const core::Vec3 local = parent.world.inverse().apply(*at);
-    top->setValue(static_cast<std::size_t>(top->type().fieldIndex("translation")),
-                  std::array<double, 3>{local.x, local.y, local.z});
+    top->setValue(scene::field::Transform::Translation, std::array<double, 3>{local.x, local.y, local.z});
   }
   core::Diagnostics diags;
   if (physics_ && !physics_->add(*top, diags)) {
@@ -307,35 +320,56 @@ void Simulation::traceTo(std::ostream& out) {
   kernel_->addObserver(trace_.get());
 }
 
-void Simulation::sense() {
+void Simulation::traceSensor(const sensors::Change& change) {
+  if (!trace_) return;
+  const scene::Node* sensor = scene_->resolve(change.sensor);
+  if (!sensor) return;
+  for (auto h : change.entered) {
+    trace_->event(kernel_->steps(), "enter",
+                  "\"sensor\":" + core::jsonQuote(sensor->path()) + ",\"item\":" + core::jsonQuote(nodeName(h)));
+  }
+  for (auto h : change.exited) {
+    trace_->event(kernel_->steps(), "exit",
+                  "\"sensor\":" + core::jsonQuote(sensor->path()) + ",\"item\":" + core::jsonQuote(nodeName(h)));
+  }
+}
+
+void Simulation::readConditions() {
+  if (!engine_) return;
+  for (const auto& [ps, terms] : conditions_of_) {
+    for (auto term : terms) kernel_->setCondition(term, engine_->condition(term, slot_sensor_[ps]));
+  }
+  stale_conditions_ = false;
+}
+
+void Simulation::sense(bool net_on) {
   if (!hub_) return;
   const auto& changes = hub_->update(kernel_->now());
+  if (!net_on) {
+    // the readings move on without the net: its conditions are read again when it is back
+    stale_conditions_ = !conditions_of_.empty();
+    for (const auto& change : changes) traceSensor(change);
+    return;
+  }
   const auto& scripts_of = [&](net::PlaceSlotId ps) { return net_->placeSlots()[ps].scripts; };
   for (const auto& change : changes) {
     const scene::Node* sensor = scene_->resolve(change.sensor);
-    const bool region = sensor && sensor->type().name == "Region";
-    if (trace_) {
-      for (auto h : change.entered) {
-        trace_->event(kernel_->steps(), "enter", "\"sensor\":" + core::jsonQuote(sensor->path()) +
-                                                     ",\"item\":" + core::jsonQuote(nodeName(h)));
-      }
-      for (auto h : change.exited) {
-        trace_->event(kernel_->steps(), "exit", "\"sensor\":" + core::jsonQuote(sensor->path()) +
-                                                    ",\"item\":" + core::jsonQuote(nodeName(h)));
-      }
-    }
+    const bool region = sensor && sensor->kind() == scene::NodeKind::Region;
+    traceSensor(change);
     auto it = sensor_slots_.find(change.sensor);
     if (it == sensor_slots_.end()) continue;
     for (auto ps : it->second) {
       // handlers: entered before exited, each in path order; on_change for value sensors
       if (engine_) {
         if (scripts_of(ps) & net::kOnEnter) {
-          for (auto h : change.entered) engine_->sensorEvent(ps, 0, change.sensor, h);
+          for (auto h : change.entered) engine_->sensorEvent(ps, net::ScriptKind::OnEnter, change.sensor, h);
         }
         if (scripts_of(ps) & net::kOnExit) {
-          for (auto h : change.exited) engine_->sensorEvent(ps, 1, change.sensor, h);
+          for (auto h : change.exited) engine_->sensorEvent(ps, net::ScriptKind::OnExit, change.sensor, h);
         }
-        if (!region && (scripts_of(ps) & net::kOnChange)) engine_->sensorEvent(ps, 3, change.sensor);
+        if (!region && (scripts_of(ps) & net::kOnChange)) {
+          engine_->sensorEvent(ps, net::ScriptKind::OnChange, change.sensor);
+        }
       }
     }
   }
@@ -344,7 +378,7 @@ void Simulation::sense() {
     for (const auto& [sensor, slots] : sensor_slots_) {
       if (!hub_->reading(sensor).active) continue;
       for (auto ps : slots) {
-        if (scripts_of(ps) & net::kOnSample) engine_->sensorEvent(ps, 2, sensor);
+        if (scripts_of(ps) & net::kOnSample) engine_->sensorEvent(ps, net::ScriptKind::OnSample, sensor);
       }
     }
   }
@@ -364,12 +398,8 @@ void Simulation::start() {
   if (started_) return;
   started_ = true;
   // time 0: the sensors' first readings (every one is a change), then the first firing phase
-  sense();
-  if (engine_) {
-    for (const auto& [ps, terms] : conditions_of_) {
-      for (auto term : terms) kernel_->setCondition(term, engine_->condition(term, slot_sensor_[ps]));
-    }
-  }
+  sense(true);
+  readConditions();
   if (engine_ && engine_->halted() && engine_->halt() != script::Halt::Stop) return;
   kernel_->start();
 }
@@ -379,12 +409,20 @@ void Simulation::step() {
   kernel_->beginStep();
   // phase 1: the world advances; phase 2: the sensors feel it
   if (physics_) physics_->step(kernel_->dt());
-  sense();
+  sense(true);
+  // back from steps with the net off: the sensors' conditions as they are now
+  if (stale_conditions_) readConditions();
   if (engine_ && engine_->halted() && engine_->halt() != script::Halt::Stop) return;
   kernel_->completeOccurrences();
   // a script that failed stops the run at the end of its phase
   if (engine_ && engine_->halted() && engine_->halt() != script::Halt::Stop) return;
   kernel_->fireEnabled();
+}
+
+void Simulation::stepPlant() {
+  kernel_->idleStep();
+  if (physics_) physics_->step(kernel_->dt());
+  sense(false);
 }
 
 RunOutcome Simulation::run(const RunLimits& limits, const ProgressFn& progress,
@@ -418,6 +456,10 @@ RunOutcome Simulation::run(const RunLimits& limits, const ProgressFn& progress,
     }
     step();
     if (step_hook_) step_hook_();
+    if (limits.stop_when && limits.stop_when()) {
+      outcome.reason = StopReason::Breakpoint;
+      break;
+    }
     if (progress && (kernel_->steps() & 4095) == 0) progress(kernel_->steps() - first, total);
   }
   if (auto halt = scriptHalt(); halt && outcome.reason == StopReason::Until) outcome = *halt;

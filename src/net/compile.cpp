@@ -459,10 +459,8 @@ class Compiler {
         }
         for (const auto& sc : fp.spec->scripts) {
           if (sc.slot != slot) continue;
-          const ScriptSpec* hooks[6] = {&sc.on_deposit, &sc.on_remove, &sc.on_enter,
-                                        &sc.on_exit,    &sc.on_sample, &sc.on_change};
-          for (int k = 0; k < 6; ++k) {
-            if (!hooks[k]->empty()) builder_.setSlotScript(p, slot, k, scriptIndex(*hooks[k]));
+          for (const ScriptKind k : kSlotScripts) {
+            if (!scriptOf(sc, k).empty()) builder_.setSlotScript(p, slot, k, scriptIndex(scriptOf(sc, k)));
           }
         }
       }
@@ -470,9 +468,8 @@ class Compiler {
     for (const auto& ft : transitions_) {
       const auto& s = *ft.spec;
       const auto t = builder_.addTransition(ft.name, s.duration, s.priority, s.probability, s.loc);
-      const ScriptSpec* hooks[4] = {&s.guard, &s.pre_fire, &s.in_fire, &s.post_fire};
-      for (int k = 0; k < 4; ++k) {
-        if (!hooks[k]->empty()) builder_.setTransitionScript(t, k, scriptIndex(*hooks[k]));
+      for (const ScriptKind k : kTransitionScripts) {
+        if (!scriptOf(s, k).empty()) builder_.setTransitionScript(t, k, scriptIndex(scriptOf(s, k)));
       }
     }
     for (const auto& a : arcs_) {

@@ -251,8 +251,8 @@ std::string Kernel::setMarking(PlaceSlotId ps, std::int64_t count) {
   if (delta == 0) return {};
   st.m = count;
   for (auto* o : observers_) {
-    if (delta > 0) o->onDeposit(ps, delta, {}, step_);
-    else o->onRemove(ps, -delta, {}, step_);
+    if (delta > 0) o->onDeposit(ps, delta, {}, steps());
+    else o->onRemove(ps, -delta, {}, steps());
   }
   update(ps);
   return {};
@@ -278,7 +278,7 @@ std::string Kernel::addNode(PlaceSlotId ps, NodeRef ref) {
   fifos_[static_cast<std::size_t>(st.fifo)].push_back(ref);
   ++st.m;
   const NodeRef one[1] = {ref};
-  for (auto* o : observers_) o->onDeposit(ps, 1, one, step_);
+  for (auto* o : observers_) o->onDeposit(ps, 1, one, steps());
   update(ps);
   return {};
 }
@@ -301,7 +301,7 @@ std::size_t Kernel::dropNodes(const std::function<bool(NodeRef)>& gone) {
     if (moved_.empty()) continue;
     st.m -= static_cast<std::int64_t>(moved_.size());
     dropped += moved_.size();
-    for (auto* o : observers_) o->onRemove(ps, static_cast<std::int64_t>(moved_.size()), moved_, step_);
+    for (auto* o : observers_) o->onRemove(ps, static_cast<std::int64_t>(moved_.size()), moved_, steps());
     update(ps);
   }
   for (auto& held : held_) {
@@ -327,7 +327,7 @@ void Kernel::begin(TransitionId t) {
     start_seq_[t] = start_count_;
     in_fire_.push_back(t);
   }
-  for (auto* o : observers_) o->onStart(t, step_);
+  for (auto* o : observers_) o->onStart(t, steps());
 
   // take the inputs (node tokens move into the transition, FIFO), then reserve the outputs
   for (auto i = tr.terms_begin; i < tr.inputs_end; ++i) {
@@ -353,7 +353,7 @@ void Kernel::begin(TransitionId t) {
       }
       for (NodeRef node : moved_) held.emplace_back(slot, node);
     }
-    for (auto* o : observers_) o->onRemove(ps, term.weight, moved_, step_);
+    for (auto* o : observers_) o->onRemove(ps, term.weight, moved_, steps());
     if ((st.scripts & kOnRemove) && hooks_) {
       if (moved_.empty()) {
         for (std::int64_t k = 0; k < term.weight && !hooks_->halted(); ++k) hooks_->onRemove(ps, nullptr);
@@ -375,7 +375,7 @@ void Kernel::begin(TransitionId t) {
 
 void Kernel::finish(TransitionId t) {
   TransitionState& tr = tr_[t];
-  for (auto* o : observers_) o->onComplete(t, step_);
+  for (auto* o : observers_) o->onComplete(t, steps());
   if ((tr.scripts & kPostFire) && hooks_ && !hooks_->halted()) hooks_->postFire(t);
   for (auto i = tr.conditions_end; i < tr.terms_end; ++i) {
     const Term& term = terms_[i];
@@ -402,7 +402,7 @@ void Kernel::finish(TransitionId t) {
       st.m += static_cast<std::int64_t>(moved_.size());
     }
     const std::int64_t count = st.fifo >= 0 ? static_cast<std::int64_t>(moved_.size()) : term.weight;
-    for (auto* o : observers_) o->onDeposit(ps, count, moved_, step_);
+    for (auto* o : observers_) o->onDeposit(ps, count, moved_, steps());
     if ((st.scripts & kOnDeposit) && hooks_) deposited(ps, st, count);
     update(ps);
   }
@@ -533,6 +533,40 @@ void Kernel::fireEnabled() {
   late_now_.clear();
   carry_.swap(carry_next_);
   in_firing_ = false;
+}
+
+std::string Kernel::fire(TransitionId t) {
+  const Net& net = *net_;
+  const std::string name = "'" + net.transitions()[t].name + "'";
+  TransitionState& tr = tr_[t];
+  if (occurring(t)) return name + " is occurring";
+  if (tr.unsat != 0) {
+    // name the first term that does not hold
+    for (std::uint32_t i = tr.terms_begin; i < tr.terms_end; ++i) {
+      const Term& term = terms_[i];
+      const SlotState& st = slots_[term.place_slot];
+      if (term.kind == TermKind::Condition ? condition(i) : holds(st, term.kind, term.weight, term.take)) continue;
+      const auto& ps = net.placeSlots()[term.place_slot];
+      const std::string place = "'" + net.places()[ps.place].name + "' " + slotName(ps.slot);
+      const std::string has = std::to_string(st.m), w = std::to_string(term.weight);
+      switch (term.kind) {
+        case TermKind::Input:
+        case TermKind::Test: return name + " is not enabled: " + place + " holds " + has + " of the " + w + " it needs";
+        case TermKind::Inhibitor:
+          return name + " is not enabled: " + place + " holds " + has + ", its inhibitor arc allows fewer than " + w;
+        case TermKind::Output: return name + " is not enabled: " + place + " has no room for " + w + " more";
+        case TermKind::Condition: return name + " is not enabled: the condition on " + place + " does not hold";
+      }
+    }
+    return name + " is not enabled";
+  }
+  if ((tr.scripts & kGuard) && hooks_ && (hooks_->halted() || !hooks_->guard(t))) return name + "'s guard is false";
+  if (tr.held >= 0 && hooks_ && !selectTokens(t)) return "no node token satisfies the predicates of " + name;
+  // what the start enables waits for the next firing phase, as if enabled in this one
+  in_firing_ = true;
+  begin(t);
+  in_firing_ = false;
+  return {};
 }
 
 std::size_t Kernel::memoryBytes() const {

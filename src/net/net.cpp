@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "gdpn/core/assert.h"
 #include "gdpn/net/builder.h"
 
 namespace gdpn::net {
@@ -104,13 +105,15 @@ std::int32_t NetBuilder::addScript(ScriptSpec script) {
   return static_cast<std::int32_t>(scripts_.size() - 1);
 }
 
-void NetBuilder::setTransitionScript(TransitionId t, int which, std::int32_t index) {
+void NetBuilder::setTransitionScript(TransitionId t, ScriptKind kind, std::int32_t index) {
+  GDPN_ASSERT(info(kind).owner == ScriptOwner::Transition, "a transition gets a transition's script");
   if (transition_scripts_.size() <= t) transition_scripts_.resize(t + 1, {-1, -1, -1, -1});
-  transition_scripts_[t][static_cast<std::size_t>(which)] = index;
+  transition_scripts_[t][info(kind).position] = index;
 }
 
-void NetBuilder::setSlotScript(PlaceId place, SlotId slot, int which, std::int32_t index) {
-  slotOf(place, slot).scripts[static_cast<std::size_t>(which)] = index;
+void NetBuilder::setSlotScript(PlaceId place, SlotId slot, ScriptKind kind, std::int32_t index) {
+  GDPN_ASSERT(info(kind).owner == ScriptOwner::PlaceSlot, "a slot gets a slot's script");
+  slotOf(place, slot).scripts[info(kind).position] = index;
 }
 
 void NetBuilder::setLastPredicate(std::int32_t index) { arcs_.back().predicate = index; }

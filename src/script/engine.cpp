@@ -33,10 +33,19 @@ void interruptScript() {
   if (Py_IsInitialized()) PyErr_SetInterruptEx(SIGINT);
 }
 
-const char* kKindNames[] = {"guard",    "pre_fire", "in_fire",   "post_fire", "on_deposit", "on_remove", "predicate",
-                            "globals",  "on_enter", "on_exit",   "on_sample", "on_change",  "condition"};
-// the slot scripts, in ScriptIndex::slots order, as kinds above
-constexpr int kSlotKinds[6] = {4, 5, 8, 9, 10, 11};
+using net::ScriptKind;
+
+/// The index in Net::scripts() of script `kind` of construct `id` (-1: none).
+std::int32_t indexOf(const net::Net& net, ScriptKind kind, std::uint32_t id) {
+  const auto& index = net.scriptIndex();
+  switch (net::info(kind).owner) {
+    case net::ScriptOwner::Transition: return index.transitions[id][net::info(kind).position];
+    case net::ScriptOwner::PlaceSlot: return index.slots[id][net::info(kind).position];
+    case net::ScriptOwner::Arc: return index.predicates[id];
+    case net::ScriptOwner::Model: return net.globalsScript();
+  }
+  return -1;
+}
 
 }  // namespace
 
@@ -136,6 +145,7 @@ struct Engine::Impl : detail::Context {
   py::str key_self{"self"};
   py::str key_token{"token"};
   std::vector<Compiled> compiled;
+  std::unordered_map<std::string, py::object> expressions;  // breakpoint predicates, compiled
   std::vector<py::object> transition_views, place_views, node_views;
   std::unique_ptr<Watchdog> watchdog;
 
@@ -306,30 +316,30 @@ struct Engine::Impl : detail::Context {
     return where;
   }
 
-  std::string describe(int kind, std::uint32_t id) const {
-    switch (kind) {
-      case 0: case 1: case 2: case 3:
-        return "transition '" + net.transitions()[id].name + "'";
-      case 4: case 5: case 8: case 9: case 10: case 11: {
+  std::string describe(ScriptKind kind, std::uint32_t id) const {
+    switch (net::info(kind).owner) {
+      case net::ScriptOwner::Transition: return "transition '" + net.transitions()[id].name + "'";
+      case net::ScriptOwner::PlaceSlot: {
         const auto& ps = net.placeSlots()[id];
         return "place '" + net.places()[ps.place].name + "' slot " + net::slotName(ps.slot);
       }
-      case 6: case 12: {
+      case net::ScriptOwner::Arc: {
         const auto& term = net.terms()[id];
         const auto& ps = net.placeSlots()[term.place_slot];
         return "arc '" + net.places()[ps.place].name + "' -> '" + net.transitions()[term.transition].name +
                "' slot " + net::slotName(ps.slot);
       }
-      default: return "the model";
+      case net::ScriptOwner::Model: return "the model";
     }
+    return "the model";
   }
 
   /// Records the pending exception as the engine's halt.
-  void fail(int kind, std::uint32_t id) {
+  void fail(ScriptKind kind, std::uint32_t id) {
     const auto [file, line] = innermost();
     const bool keyboard = PyErr_ExceptionMatches(PyExc_KeyboardInterrupt);
     const std::string where = (file.empty() ? model_path : file) + (line > 0 ? ":" + std::to_string(line) : "");
-    const std::string what = std::string(kKindNames[kind]) + " of " + describe(kind, id);
+    const std::string what = std::string(net::info(kind).key) + " of " + describe(kind, id);
     if (keyboard && watchdog->timedOut()) {
       PyErr_Clear();
       halt = Halt::Timeout;
@@ -351,7 +361,7 @@ struct Engine::Impl : detail::Context {
   /// On failure records the halt and returns null.
   /// Calls script `index`; a function gets (self), (self, token) or (self, value) / (self,
   /// items, item); inline code sees them as names.
-  PyObject* call(std::int32_t index, int kind, std::uint32_t id, PyObject* self, PyObject* token,
+  PyObject* call(std::int32_t index, ScriptKind kind, std::uint32_t id, PyObject* self, PyObject* token,
                  PyObject* value = nullptr, PyObject* items = nullptr) {
     const Compiled& c = compiled[static_cast<std::size_t>(index)];
     watchdog->enter();
@@ -376,20 +386,22 @@ struct Engine::Impl : detail::Context {
 
   /// A sensor handler: on_enter/on_exit get (items, item); on_sample gets items (Region) or
   /// the value; on_change gets the value.
-  void runSensor(std::int32_t index, int kind, std::uint32_t id, PyObject* self, bool with_item, PyObject* items,
+  void runSensor(std::int32_t index, ScriptKind kind, std::uint32_t id, PyObject* self, bool with_item, PyObject* items,
                  PyObject* arg) {
     if (index < 0 || halt != Halt::None) return;
     PyObject* r = with_item ? call(index, kind, id, self, nullptr, arg, items) : call(index, kind, id, self, nullptr, arg);
     Py_XDECREF(r);
   }
 
-  void run(std::int32_t index, int kind, std::uint32_t id, PyObject* self, PyObject* token) {
+  void run(ScriptKind kind, std::uint32_t id, PyObject* self, PyObject* token) {
+    const std::int32_t index = indexOf(net, kind, id);
     if (index < 0 || halt != Halt::None) return;
     PyObject* r = call(index, kind, id, self, token);
     Py_XDECREF(r);
   }
 
-  bool test(std::int32_t index, int kind, std::uint32_t id, PyObject* self, PyObject* token, PyObject* value = nullptr) {
+  bool test(ScriptKind kind, std::uint32_t id, PyObject* self, PyObject* token, PyObject* value = nullptr) {
+    const std::int32_t index = indexOf(net, kind, id);
     if (index < 0) return true;
     if (halt != Halt::None) return false;
     PyObject* r = value ? call(index, kind, id, self, nullptr, value) : call(index, kind, id, self, token);
@@ -412,6 +424,7 @@ Engine::~Engine() {
   // drop Python references while the interpreter is certainly alive
   py::gil_scoped_acquire gil;
   impl_->compiled.clear();
+  impl_->expressions.clear();
   impl_->transition_views.clear();
   impl_->place_views.clear();
   impl_->node_views.clear();
@@ -461,21 +474,22 @@ std::unique_ptr<Engine> Engine::create(const net::Net& net, net::Kernel& kernel,
   // predicates are expressions, the rest statements
   const auto scripts = net.scripts();
   const auto& index = net.scriptIndex();
-  std::vector<int> kind(scripts.size(), -1);
+  std::vector<std::optional<ScriptKind>> kind(scripts.size());
   std::vector<std::string> names(scripts.size());
-  auto name = [&](std::int32_t i, int k, std::uint32_t id) {
-    if (i < 0 || kind[static_cast<std::size_t>(i)] >= 0) return;
+  auto name = [&](ScriptKind k, std::uint32_t id) {
+    const std::int32_t i = indexOf(net, k, id);
+    if (i < 0 || kind[static_cast<std::size_t>(i)]) return;
     kind[static_cast<std::size_t>(i)] = k;
-    names[static_cast<std::size_t>(i)] = std::string(kKindNames[k]) + " of " + impl->describe(k, id);
+    names[static_cast<std::size_t>(i)] = std::string(net::info(k).key) + " of " + impl->describe(k, id);
   };
   for (std::uint32_t t = 0; t < index.transitions.size(); ++t) {
-    for (int k = 0; k < 4; ++k) name(index.transitions[t][static_cast<std::size_t>(k)], k, t);
+    for (const ScriptKind k : net::kTransitionScripts) name(k, t);
   }
   for (std::uint32_t ps = 0; ps < index.slots.size(); ++ps) {
-    for (int k = 0; k < 6; ++k) name(index.slots[ps][static_cast<std::size_t>(k)], kSlotKinds[k], ps);
+    for (const ScriptKind k : net::kSlotScripts) name(k, ps);
   }
   for (std::uint32_t term = 0; term < index.predicates.size(); ++term) {
-    name(index.predicates[term], net.terms()[term].kind == net::TermKind::Condition ? 12 : 6, term);
+    name(net.terms()[term].kind == net::TermKind::Condition ? ScriptKind::Condition : ScriptKind::Predicate, term);
   }
   impl->compiled.resize(scripts.size());
   std::unordered_map<std::string, bool> loaded;
@@ -496,9 +510,8 @@ std::unique_ptr<Engine> Engine::create(const net::Net& net, net::Kernel& kernel,
     }
   }
   for (std::size_t i = 0; i < scripts.size(); ++i) {
-    if (static_cast<std::int32_t>(i) == g || kind[i] < 0) continue;
-    const bool expression = kind[i] == 0 || kind[i] == 6 || kind[i] == 12;
-    ok = impl->compile(scripts[i], expression, names[i], impl->compiled[i], diags, loaded) && ok;
+    if (static_cast<std::int32_t>(i) == g || !kind[i]) continue;
+    ok = impl->compile(scripts[i], net::info(*kind[i]).expression, names[i], impl->compiled[i], diags, loaded) && ok;
   }
   if (!ok) {
     impl->compiled.clear();
@@ -509,37 +522,36 @@ std::unique_ptr<Engine> Engine::create(const net::Net& net, net::Kernel& kernel,
 }
 
 bool Engine::guard(net::TransitionId t) {
-  return impl_->test(impl_->net.scriptIndex().transitions[t][0], 0, t, impl_->transitionView(t).ptr(), nullptr);
+  return impl_->test(ScriptKind::Guard, t, impl_->transitionView(t).ptr(), nullptr);
 }
 
 bool Engine::eligible(net::TermId term, net::NodeRef token) {
   const auto t = impl_->net.terms()[term].transition;
-  return impl_->test(impl_->net.scriptIndex().predicates[term], 6, term, impl_->transitionView(t).ptr(),
-                     impl_->nodeView(token).ptr());
+  return impl_->test(ScriptKind::Predicate, term, impl_->transitionView(t).ptr(), impl_->nodeView(token).ptr());
 }
 
 void Engine::preFire(net::TransitionId t) {
-  impl_->run(impl_->net.scriptIndex().transitions[t][1], 1, t, impl_->transitionView(t).ptr(), nullptr);
+  impl_->run(ScriptKind::PreFire, t, impl_->transitionView(t).ptr(), nullptr);
 }
 
 void Engine::inFire(net::TransitionId t) {
-  impl_->run(impl_->net.scriptIndex().transitions[t][2], 2, t, impl_->transitionView(t).ptr(), nullptr);
+  impl_->run(ScriptKind::InFire, t, impl_->transitionView(t).ptr(), nullptr);
 }
 
 void Engine::postFire(net::TransitionId t) {
-  impl_->run(impl_->net.scriptIndex().transitions[t][3], 3, t, impl_->transitionView(t).ptr(), nullptr);
+  impl_->run(ScriptKind::PostFire, t, impl_->transitionView(t).ptr(), nullptr);
 }
 
 void Engine::onDeposit(net::PlaceSlotId ps, const net::NodeRef* token) {
   const auto place = impl_->net.placeSlots()[ps].place;
   py::object tok = token ? impl_->nodeView(*token) : py::none();
-  impl_->run(impl_->net.scriptIndex().slots[ps][0], 4, ps, impl_->placeView(place).ptr(), tok.ptr());
+  impl_->run(ScriptKind::OnDeposit, ps, impl_->placeView(place).ptr(), tok.ptr());
 }
 
 void Engine::onRemove(net::PlaceSlotId ps, const net::NodeRef* token) {
   const auto place = impl_->net.placeSlots()[ps].place;
   py::object tok = token ? impl_->nodeView(*token) : py::none();
-  impl_->run(impl_->net.scriptIndex().slots[ps][1], 5, ps, impl_->placeView(place).ptr(), tok.ptr());
+  impl_->run(ScriptKind::OnRemove, ps, impl_->placeView(place).ptr(), tok.ptr());
 }
 
 bool Engine::condition(net::TermId term, scene::NodeHandle sensor) {
@@ -549,14 +561,12 @@ bool Engine::condition(net::TermId term, scene::NodeHandle sensor) {
   // the sensor is seen as `value` and under its slot's name ("c0")
   impl_->globals[py::str(net::slotName(net.placeSlots()[t.place_slot].slot))] = view;
   impl_->globals["value"] = view;
-  return impl_->test(net.scriptIndex().predicates[term], 12, term, impl_->transitionView(t.transition).ptr(),
-                     nullptr, view.ptr());
+  return impl_->test(ScriptKind::Condition, term, impl_->transitionView(t.transition).ptr(), nullptr, view.ptr());
 }
 
-void Engine::sensorEvent(net::PlaceSlotId ps, int which, scene::NodeHandle sensor, scene::NodeHandle item) {
+void Engine::sensorEvent(net::PlaceSlotId ps, ScriptKind kind, scene::NodeHandle sensor, scene::NodeHandle item) {
   const auto& net = impl_->net;
-  const int slot_script = 2 + which;  // on_enter, on_exit, on_sample, on_change in ScriptIndex::slots
-  const auto index = net.scriptIndex().slots[ps][static_cast<std::size_t>(slot_script)];
+  const auto index = indexOf(net, kind, ps);
   if (index < 0) return;
   py::object view = detail::makeSensorView(detail::refTo(*impl_), sensor);
   const auto& r = impl_->reading(sensor);
@@ -564,9 +574,11 @@ void Engine::sensorEvent(net::PlaceSlotId ps, int which, scene::NodeHandle senso
   for (auto h : r.items) items.append(impl_->nodeView(h));
   impl_->globals["items"] = items;
   impl_->globals["value"] = view;
-  py::object arg = which <= 1 ? impl_->nodeView(item) : (which == 2 && !r.items.empty() ? py::object(items) : view);
-  impl_->runSensor(index, kSlotKinds[slot_script], ps, impl_->placeView(net.placeSlots()[ps].place).ptr(), which <= 1,
-                   items.ptr(), arg.ptr());
+  const bool with_item = kind == ScriptKind::OnEnter || kind == ScriptKind::OnExit;
+  py::object arg = with_item ? impl_->nodeView(item)
+                             : (kind == ScriptKind::OnSample && !r.items.empty() ? py::object(items) : view);
+  impl_->runSensor(index, kind, ps, impl_->placeView(net.placeSlots()[ps].place).ptr(), with_item, items.ptr(),
+                   arg.ptr());
 }
 
 bool Engine::halted() const { return impl_->halt != Halt::None; }
@@ -588,6 +600,28 @@ std::vector<std::pair<std::string, std::string>> Engine::summary(std::string& er
     error = std::string("summary() failed: ") + e.what();
   }
   return out;
+}
+
+std::optional<bool> Engine::evaluate(const std::string& expression, std::string& error) {
+  // each expression is compiled once
+  auto& code = impl_->expressions[expression];
+  if (!code) {
+    PyObject* c = Py_CompileString(expression.c_str(), "<breakpoint>", Py_eval_input);
+    if (!c) {
+      error = Impl::formatPending();
+      impl_->expressions.erase(expression);
+      return std::nullopt;
+    }
+    code = py::reinterpret_steal<py::object>(c);
+  }
+  PyObject* r = PyEval_EvalCode(code.ptr(), impl_->globals.ptr(), impl_->globals.ptr());
+  const int truth = r ? PyObject_IsTrue(r) : -1;
+  Py_XDECREF(r);
+  if (truth < 0) {
+    error = Impl::formatPending();
+    return std::nullopt;
+  }
+  return truth == 1;
 }
 
 Halt Engine::halt() const { return impl_->halt; }

@@ -104,7 +104,7 @@ scene::Node& sceneNode(const NodeView& v) {
 physics::World& world(const NodeView& v) {
   physics::World* w = v.r.get().physicsWorld();
   if (!w) throw py::value_error("the model has no physics");
-  if (!w->isBody(sceneNode(v)) && sceneNode(v).type().name != "Joint") {
+  if (!w->isBody(sceneNode(v)) && sceneNode(v).kind() != scene::NodeKind::Joint) {
     // a node inside a body acts for that body; anything else is an error
     for (const scene::Node* p = sceneNode(v).parent(); p; p = p->parent()) {
       if (w->isBody(*p)) return *w;
@@ -112,6 +112,21 @@ physics::World& world(const NodeView& v) {
     throw py::value_error("node " + v.r.get().nodeName(v.ref) + " is not part of a body");
   }
   return *w;
+}
+
+/// The joint behind a view; raises when it is another kind of node.
+const scene::Node& joint(const NodeView& v) {
+  const scene::Node& n = sceneNode(v);
+  if (n.kind() != scene::NodeKind::Joint) {
+    throw py::value_error("node " + v.r.get().nodeName(v.ref) + " is a " + n.type().name + ", not a Joint");
+  }
+  return n;
+}
+
+/// A joint's position or rate on axis 1 in the units of the model file: metres for a slider,
+/// degrees otherwise (the physics works in radians).
+double inFileUnits(const scene::Node& joint, double x) {
+  return joint.choice<scene::JointKind>(scene::field::Joint::Kind) == scene::JointKind::Slider ? x : x * 180.0 / M_PI;
 }
 
 py::object related(const NodeView& v, const scene::Node* n) {
@@ -152,20 +167,16 @@ void setField(const NodeView& v, const std::string& name, const py::object& valu
   scene::Node& n = sceneNode(v);
   const std::size_t i = fieldOf(n, name);
   const scene::FieldDesc& f = *n.type().fields[i];
-  auto range = [&](double x) {
-    if (auto why = f.rangeError(x); !why.empty()) throw py::value_error(why);
-    return x;
-  };
+  // Python's value as the field's kind, then the field's own rules (as the model file has them)
   scene::FieldValue out;
   switch (f.kind) {
     case scene::FieldKind::Bool: out = value.cast<bool>(); break;
-    case scene::FieldKind::Int: out = static_cast<std::int64_t>(range(static_cast<double>(value.cast<std::int64_t>())));
-      break;
-    case scene::FieldKind::Float: out = range(value.cast<double>()); break;
+    case scene::FieldKind::Int: out = value.cast<std::int64_t>(); break;
+    case scene::FieldKind::Float: out = value.cast<double>(); break;
     case scene::FieldKind::Vec3:
     case scene::FieldKind::Color: {
       const auto p = vec(value.cast<py::sequence>());
-      out = std::array<double, 3>{range(p.x), range(p.y), range(p.z)};
+      out = std::array<double, 3>{p.x, p.y, p.z};
       break;
     }
     case scene::FieldKind::Rotation: {
@@ -174,25 +185,20 @@ void setField(const NodeView& v, const std::string& name, const py::object& valu
       out = std::array<double, 4>{s[0].cast<double>(), s[1].cast<double>(), s[2].cast<double>(), s[3].cast<double>()};
       break;
     }
-    case scene::FieldKind::Enum: {
-      const auto word = value.cast<std::string>();
-      if (std::find(f.choices.begin(), f.choices.end(), word) == f.choices.end()) {
-        throw py::value_error("'" + name + "' cannot be '" + word + "'" + core::didYouMean(word, f.choices));
-      }
-      out = word;
-      break;
-    }
+    case scene::FieldKind::Enum:
     case scene::FieldKind::String:
     case scene::FieldKind::File: out = value.cast<std::string>(); break;
     case scene::FieldKind::FloatList: {
       std::vector<double> list;
-      for (const auto& x : value.cast<py::sequence>()) list.push_back(range(x.cast<double>()));
+      for (const auto& x : value.cast<py::sequence>()) list.push_back(x.cast<double>());
       out = std::move(list);
       break;
     }
   }
+  if (auto bad = f.check(out)) throw py::value_error(bad->message);
   n.setValue(i, std::move(out));
-  // a joint whose motor changes wakes its bodies on the next step (the physics reads the fields)
+  // the physics keeps some fields of its own (a joint's kind and control, a sensor's scope)
+  if (physics::World* w = v.r.get().physicsWorld()) w->fieldChanged(n);
 }
 
 py::object slotAttr(Ref r, bool of_transition, std::uint32_t owner, const std::string& name) {
@@ -265,16 +271,14 @@ void registerViews() {
            }, "breaks the joint attach() made; False if there is none")
       .def_property_readonly("angle",
                              [](const NodeView& v) {
-                               const auto& n = sceneNode(v);
-                               const double x = world(v).jointPosition(n);
-                               return n.text("kind") == "slider" ? x : x * 180.0 / M_PI;
+                               const auto& n = joint(v);
+                               return inFileUnits(n, world(v).jointPosition(n));
                              },
                              "a joint's position on axis 1: degrees, or metres for a slider")
       .def_property_readonly("rate",
                              [](const NodeView& v) {
-                               const auto& n = sceneNode(v);
-                               const double x = world(v).jointRate(n);
-                               return n.text("kind") == "slider" ? x : x * 180.0 / M_PI;
+                               const auto& n = joint(v);
+                               return inFileUnits(n, world(v).jointRate(n));
                              },
                              "a joint's rate on axis 1: deg/s, or m/s for a slider")
       .def("spawn",

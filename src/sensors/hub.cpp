@@ -86,6 +86,15 @@ Hub::Entry* Hub::find(scene::NodeHandle h) {
   return nullptr;
 }
 
+void Hub::push(InputEvent event) {
+  // the events delivered are done with; among the pending, after those not later than it
+  input_.erase(input_.begin(), input_.begin() + static_cast<std::ptrdiff_t>(next_input_));
+  next_input_ = 0;
+  const auto at = std::upper_bound(input_.begin(), input_.end(), event.t,
+                                   [](double t, const InputEvent& e) { return t < e.t; });
+  input_.insert(at, std::move(event));
+}
+
 bool Hub::mayChange() const {
   if (next_input_ < input_.size()) return true;
   return std::any_of(entries_.begin(), entries_.end(), [](const Entry& e) { return e.node->kind() == scene::NodeKind::TimeSensor; });

@@ -26,6 +26,8 @@ namespace gdpn::model {
 struct RunLimits {
   std::optional<double> until;        ///< end time, seconds
   std::optional<std::int64_t> steps;  ///< number of steps
+  /// Asked after each step; true ends the run there (StopReason::Breakpoint).
+  std::function<bool()> stop_when;
 };
 
 /// Why a run ended.
@@ -35,9 +37,10 @@ enum class StopReason : std::uint8_t {
   Interrupted,  ///< stopped from outside (Ctrl-C)
   Stopped,      ///< a script called sim.stop(reason)
   ScriptError,  ///< a script raised an exception or ran past the script timeout
+  Breakpoint,   ///< a breakpoint held (session::Session)
 };
 
-/// "until", "dead", "interrupted", "stopped" or "script error".
+/// "until", "dead", "interrupted", "stopped", "script error" or "breakpoint".
 const char* stopReasonName(StopReason reason);
 
 /// How a run ended.
@@ -64,12 +67,23 @@ class Simulation {
   void setInput(std::vector<sensors::InputEvent> events) {
     if (hub_) hub_->setInput(std::move(events));
   }
+  /// One more input event, live: the sensors receive it at the next step at or after its time.
+  void push(sensors::InputEvent event) {
+    if (hub_) hub_->push(std::move(event));
+  }
   /// Writes the trace (JSON Lines) to `out` from now on; call before start().
   void traceTo(std::ostream& out);
   /// Runs the firing phase at time 0. run() calls it when needed.
   void start();
   /// One step (semantics §6).
   void step();
+  /// One step of the plant alone, the net switched off: physics and sensors advance, the
+  /// marking stays, occurrences pause, no script runs. When the net is on again, conditions
+  /// are read anew from the sensors.
+  void stepPlant();
+  /// Evaluates a Python expression in the model's globals (a breakpoint's predicate). Starts
+  /// the interpreter for a model without scripts. Nullopt with `error` when it fails.
+  std::optional<bool> evaluate(const std::string& expression, std::string& error);
   /// Starts if needed, then steps until `limits` say stop, the net is dead, or `interrupt`
   /// becomes true. Closes the statistics at the end.
   RunOutcome run(const RunLimits& limits, const ProgressFn& progress = {},
@@ -123,7 +137,12 @@ class Simulation {
   std::vector<scene::NodeHandle> slot_sensor_;    // per place slot: the sensor it reads (0: none)
   std::unordered_map<scene::NodeHandle, std::vector<net::PlaceSlotId>> sensor_slots_;
   std::unordered_map<net::PlaceSlotId, std::vector<net::TermId>> conditions_of_;
-  void sense();  // phase 2
+  void sense(bool net_on);  // phase 2
+  void traceSensor(const sensors::Change& change);
+  void readConditions();    // every condition term from its sensor's reading
+  bool makeEngine(core::Diagnostics& diags);
+  double script_timeout_s_ = 0.0;
+  bool stale_conditions_ = false;
   std::unique_ptr<net::Kernel> kernel_;
   std::unique_ptr<net::StatsCollector> stats_;
   std::unique_ptr<net::TraceWriter> trace_;

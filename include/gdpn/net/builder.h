@@ -33,11 +33,10 @@ class NetBuilder {
                  std::int32_t weight = 1);
   /// Adds a script and returns its index for the set*Script calls.
   std::int32_t addScript(ScriptSpec script);
-  /// Gives transition `t` script `index` as its guard (0), pre_fire (1), in_fire (2) or post_fire (3).
-  void setTransitionScript(TransitionId t, int which, std::int32_t index);
-  /// Gives slot `slot` of `place` script `index` as its on_deposit (0), on_remove (1),
-  /// on_enter (2), on_exit (3), on_sample (4) or on_change (5).
-  void setSlotScript(PlaceId place, SlotId slot, int which, std::int32_t index);
+  /// Gives transition `t` script `index` as its script of kind `kind` (one of kTransitionScripts).
+  void setTransitionScript(TransitionId t, ScriptKind kind, std::int32_t index);
+  /// Gives slot `slot` of `place` script `index` as its script of kind `kind` (one of kSlotScripts).
+  void setSlotScript(PlaceId place, SlotId slot, ScriptKind kind, std::int32_t index);
   /// Makes slot `slot` of `place` a sensor slot reading the sensor at `path`.
   void setSensor(PlaceId place, SlotId slot, std::string path);
   /// Adds a condition term: the transition may start only while script `index` (an

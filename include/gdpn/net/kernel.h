@@ -52,15 +52,23 @@ class Kernel {
 
   /// Phase 0: the clock moves to the end of the next step.
   void beginStep() { ++step_; }
+  /// A step with the net switched off: the clock moves on and nothing in the net changes.
+  /// Occurrences are paused: their start and end move with the clock.
+  void idleStep() { ++idle_; }
   /// Phase 3: occurring transitions whose duration has elapsed complete, in start order.
   void completeOccurrences();
   /// Phase 4: enabled transitions start, by priority, then time enabled, then declaration.
   void fireEnabled();
 
-  /// Steps taken since start; now() == steps() * dt.
-  [[nodiscard]] std::int64_t steps() const { return step_; }
+  /// Starts `t` now, outside the firing phase: the user's "fire the selected transition".
+  /// Returns "" when it started, or why not: it is occurring, a term does not hold (the first
+  /// such is named), its guard is false, or no node token satisfies its predicates. Its
+  /// probability is not drawn: the user chose it.
+  std::string fire(TransitionId t);
+  /// Steps taken since start, with the net on or off; now() == steps() * dt.
+  [[nodiscard]] std::int64_t steps() const { return step_ + idle_; }
   /// The time at the end of the current step, seconds.
-  [[nodiscard]] double now() const { return static_cast<double>(step_) * dt_; }
+  [[nodiscard]] double now() const { return static_cast<double>(steps()) * dt_; }
   /// The step length, seconds.
   [[nodiscard]] double dt() const { return dt_; }
   /// Whole steps an occurrence of `seconds` lasts: max(1, ceil(seconds / dt)).
@@ -79,9 +87,10 @@ class Kernel {
   /// True while `t` is occurring.
   [[nodiscard]] bool occurring(TransitionId t) const { return tr_[t].end_step >= 0; }
   /// Step at which the current occurrence of `t` started (only while occurring).
-  [[nodiscard]] std::int64_t startStep(TransitionId t) const { return tr_[t].start_step; }
+  /// (Steps with the net off before now count as if the occurrence had started after them.)
+  [[nodiscard]] std::int64_t startStep(TransitionId t) const { return tr_[t].start_step + idle_; }
   /// Step at which the current occurrence of `t` completes (-1 when not occurring).
-  [[nodiscard]] std::int64_t endStep(TransitionId t) const { return tr_[t].end_step; }
+  [[nodiscard]] std::int64_t endStep(TransitionId t) const { return tr_[t].end_step < 0 ? -1 : tr_[t].end_step + idle_; }
   /// The node tokens `t` holds while occurring, with their slots, in the order taken.
   [[nodiscard]] std::span<const std::pair<SlotId, NodeRef>> held(TransitionId t) const;
   /// Sets the marking of control slot `ps` to `count` (a script's `set`). Returns "" or why
@@ -167,7 +176,8 @@ class Kernel {
   const Term* terms_ = nullptr;
   double dt_;
   core::Random random_;
-  std::int64_t step_ = 0;
+  std::int64_t step_ = 0;  // steps with the net on: the clock of occurrences and enabling
+  std::int64_t idle_ = 0;  // steps with the net off
   bool in_firing_ = false;
 
   std::vector<TransitionState> tr_;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "gdpn/core/diagnostics.h"
+#include "gdpn/net/script_kind.h"
 #include "gdpn/net/slot.h"
 
 namespace gdpn::net {
@@ -96,6 +97,13 @@ struct SlotScripts {
   friend bool operator==(const SlotScripts&, const SlotScripts&) = default;
 };
 
+/// The script of kind `kind` (one of kSlotScripts) of a place slot.
+const ScriptSpec& scriptOf(const SlotScripts& s, ScriptKind kind);
+/// The same, to change.
+inline ScriptSpec& scriptOf(SlotScripts& s, ScriptKind kind) {
+  return const_cast<ScriptSpec&>(scriptOf(static_cast<const SlotScripts&>(s), kind));
+}
+
 /// A sensor slot of a place, bound to a sensor node of the scene.
 struct SensorBinding {
   SlotId slot = kDefaultSlot;  ///< which slot
@@ -161,6 +169,13 @@ struct TransitionSpec {
            x.position == y.position;
   }
 };
+
+/// The script of kind `kind` (one of kTransitionScripts) of a transition.
+const ScriptSpec& scriptOf(const TransitionSpec& t, ScriptKind kind);
+/// The same, to change.
+inline ScriptSpec& scriptOf(TransitionSpec& t, ScriptKind kind) {
+  return const_cast<ScriptSpec&>(scriptOf(static_cast<const TransitionSpec&>(t), kind));
+}
 
 /// How an input arc acts on its place.
 enum class ArcKind : std::uint8_t {

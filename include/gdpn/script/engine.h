@@ -72,14 +72,20 @@ class Engine final : public net::ScriptHooks {
   /// Evaluates condition term `term` (an expression over its sensor slot, seen under the
   /// slot's name and as `value`) for sensor `sensor`. False when it fails.
   bool condition(net::TermId term, scene::NodeHandle sensor);
-  /// Runs sensor slot `ps`'s on_enter (which = 0), on_exit (1) with `item`, on_sample (2) or
-  /// on_change (3), for sensor `sensor`.
-  void sensorEvent(net::PlaceSlotId ps, int which, scene::NodeHandle sensor, scene::NodeHandle item = 0);
+  /// Runs sensor slot `ps`'s script of kind `kind` (on_enter or on_exit with `item`,
+  /// on_sample, on_change) for sensor `sensor`.
+  void sensorEvent(net::PlaceSlotId ps, net::ScriptKind kind, scene::NodeHandle sensor, scene::NodeHandle item = 0);
 
   /// The model's own figures for the summary: when the globals define a function
   /// `summary()`, the dict it returns as (label, text) pairs in its order; empty otherwise.
   /// An exception (or a result that is not a dict) leaves `error` set.
   std::vector<std::pair<std::string, std::string>> summary(std::string& error);
+
+  /// Evaluates the Python expression `expression` in the model's globals (what its scripts
+  /// see: `sim`, the sensors by name, the globals script's names) for its truth: a
+  /// breakpoint's predicate. Nullopt with `error` (the exception, or a syntax error) when it
+  /// fails; a failure does not halt the engine.
+  std::optional<bool> evaluate(const std::string& expression, std::string& error);
 
   /// Why the engine halted (None while it has not).
   [[nodiscard]] Halt halt() const;

@@ -57,6 +57,8 @@ class Hub {
   static bool check(const scene::Scene& scene, core::Diagnostics& diags);
   /// Input events to deliver when their time comes (in time order).
   void setInput(std::vector<InputEvent> events) { input_ = std::move(events); next_input_ = 0; }
+  /// One more input event, after the pending ones of the same or an earlier time.
+  void push(InputEvent event);
   /// Phase 2: reads every sensor at time `now` (seconds), delivering the input events due;
   /// returns the sensors whose reading changed, in the order of their paths.
   const std::vector<Change>& update(double now);

@@ -1,0 +1,137 @@
+#pragma once
+/// \file
+/// A Session: a model, the run made from it, and the controls an editor needs (the
+/// dissertation's chapter 5): reset, step, run, fire one chosen transition, step the plant
+/// with the net switched off, breakpoints, live input, and taking an edited model. The IDE,
+/// the command line and the Python module are faces over this one class; none holds rules of
+/// its own.
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "gdpn/core/diagnostics.h"
+#include "gdpn/model/model.h"
+#include "gdpn/model/simulation.h"
+
+namespace gdpn::session {
+
+/// How a session's runs are made.
+struct SessionOptions {
+  std::optional<std::uint64_t> seed;  ///< overrides the model's seed
+  double script_timeout_s = 0.0;      ///< a script call running longer is stopped (0: never), seconds
+};
+
+/// What a breakpoint watches.
+enum class BreakKind : std::uint8_t {
+  Starts,     ///< a transition starts an occurrence
+  Completes,  ///< a transition completes an occurrence
+  Marking,    ///< a place's tokens (all its slots) compare with a number
+  Predicate,  ///< a Python expression in the model's globals is true
+};
+
+/// How a Marking breakpoint compares.
+enum class Compare : std::uint8_t { Less, LessEqual, Equal, NotEqual, GreaterEqual, Greater };
+
+/// A condition that stops a run at the end of the step in which it holds.
+struct Breakpoint {
+  BreakKind kind = BreakKind::Starts;  ///< what it watches
+  std::string target;                  ///< Starts, Completes: the transition; Marking: the place (qualified names)
+  Compare compare = Compare::GreaterEqual;  ///< Marking: how the tokens compare with `value`
+  std::int64_t value = 0;              ///< Marking: tokens
+  std::string expression;              ///< Predicate: a Python expression
+  bool enabled = true;                 ///< a disabled breakpoint is kept but never holds
+
+  /// "starts main/T", "main/buffer >= 3", "sim.time > 2", for messages.
+  [[nodiscard]] std::string describe() const;
+};
+
+/// "<", "<=", "==", "!=", ">=", ">".
+const char* compareName(Compare compare);
+/// The comparison written `text` ("<", "<=", "==", "!=", ">=", ">"), or nullopt.
+std::optional<Compare> parseCompare(std::string_view text);
+
+/// A model and its run, with an editor's controls.
+class Session {
+ public:
+  /// A session over `model` (compiled and made ready to run). Null with located diagnostics
+  /// when the model does not compile.
+  static std::unique_ptr<Session> create(model::Model model, core::Diagnostics& diags, SessionOptions options = {});
+  ~Session();
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+
+  /// Back to the initial state exactly: a run after reset gives the same trace, byte for
+  /// byte, as a run of a freshly loaded model with the same seed. Breakpoints and the trace
+  /// output stay; input events pushed so far are dropped. With `seed`, the run (and later
+  /// resets) use that seed.
+  void reset(std::optional<std::uint64_t> seed = {});
+  /// One step (semantics §6); starts the run first when needed.
+  void step();
+  /// Steps until `limits` say stop, the net is dead, a script halts, `interrupt` becomes true,
+  /// or a breakpoint holds (StopReason::Breakpoint, then hit() says which).
+  model::RunOutcome run(const model::RunLimits& limits, const model::ProgressFn& progress = {},
+                        const std::atomic<bool>* interrupt = nullptr);
+  /// Starts the transition named `transition` now (its qualified name). "" when it started,
+  /// else why not: no such transition, it is occurring, not enabled (naming the arc that
+  /// does not hold), its guard is false, or no node token satisfies its predicates.
+  std::string fire(const std::string& transition);
+  /// One step with the net switched off: the plant moves and the sensors read it, the
+  /// marking stays and occurrences pause.
+  void stepPlant();
+  /// One live input event (a key, a click, a viewpoint move) for the sensors, delivered at
+  /// the next step at or after its time (`event.t`, seconds; a time in the past means now).
+  void push(sensors::InputEvent event);
+  /// Takes an edited model: on success the run starts again from the new model's initial
+  /// state; on error the old model and its run stay as they were, and the located
+  /// diagnostics are in `diags`. False on error.
+  bool rebuild(const model::Model& model, core::Diagnostics& diags);
+
+  /// Adds a breakpoint; returns its id (ids are never reused). Nullopt with `why` when its
+  /// target names no transition or place of the net, or its expression is empty.
+  std::optional<int> addBreakpoint(Breakpoint breakpoint, std::string& why);
+  /// Removes breakpoint `id`; false when there is none.
+  bool removeBreakpoint(int id);
+  /// Enables or disables breakpoint `id`; false when there is none.
+  bool enableBreakpoint(int id, bool enabled);
+  /// The breakpoints, by id, in the order added.
+  [[nodiscard]] const std::vector<std::pair<int, Breakpoint>>& breakpoints() const { return breakpoints_; }
+  /// The breakpoint that stopped the last run (nullopt when none did).
+  [[nodiscard]] std::optional<int> hit() const { return hit_; }
+
+  /// Writes the trace (JSON Lines) to `out` from the start of the run, and again from the
+  /// start after each reset or rebuild (the caller keeps `out` alive).
+  void traceTo(std::ostream& out);
+  /// Input events (a whole list, in time order) the sensors receive; they come back on reset.
+  void setInput(std::vector<sensors::InputEvent> events);
+
+  /// The model.
+  [[nodiscard]] const model::Model& model() const { return model_; }
+  /// The run.
+  [[nodiscard]] model::Simulation& simulation() { return *sim_; }
+  [[nodiscard]] const model::Simulation& simulation() const { return *sim_; }
+  /// The seed in use.
+  [[nodiscard]] std::uint64_t seed() const { return sim_->seed(); }
+
+ private:
+  class Watcher;
+  Session() = default;
+  std::unique_ptr<model::Simulation> make(const model::Model& model, core::Diagnostics& diags);
+  void adopt(std::unique_ptr<model::Simulation> sim);
+  std::optional<int> holding();  // the first breakpoint that holds after a step
+  model::Model model_;
+  SessionOptions options_;
+  std::unique_ptr<model::Simulation> sim_;
+  std::unique_ptr<Watcher> watcher_;
+  std::vector<std::pair<int, Breakpoint>> breakpoints_;
+  int next_id_ = 1;
+  std::optional<int> hit_;
+  std::ostream* trace_out_ = nullptr;
+  std::vector<sensors::InputEvent> input_;
+};
+
+}  // namespace gdpn::session

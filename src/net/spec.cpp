@@ -1,0 +1,47 @@
+#include "gdpn/net/spec.h"
+
+#include "gdpn/core/assert.h"
+
+namespace gdpn::net {
+
+const ScriptSpec& scriptOf(const SlotScripts& s, ScriptKind kind) {
+  switch (kind) {
+    case ScriptKind::OnDeposit: return s.on_deposit;
+    case ScriptKind::OnRemove: return s.on_remove;
+    case ScriptKind::OnEnter: return s.on_enter;
+    case ScriptKind::OnExit: return s.on_exit;
+    case ScriptKind::OnSample: return s.on_sample;
+    case ScriptKind::OnChange: return s.on_change;
+    case ScriptKind::Guard:
+    case ScriptKind::PreFire:
+    case ScriptKind::InFire:
+    case ScriptKind::PostFire:
+    case ScriptKind::Predicate:
+    case ScriptKind::Condition:
+    case ScriptKind::Globals: break;
+  }
+  GDPN_ASSERT(false, "a slot's script is asked for by a slot script kind");
+  return s.on_deposit;
+}
+
+const ScriptSpec& scriptOf(const TransitionSpec& t, ScriptKind kind) {
+  switch (kind) {
+    case ScriptKind::Guard: return t.guard;
+    case ScriptKind::PreFire: return t.pre_fire;
+    case ScriptKind::InFire: return t.in_fire;
+    case ScriptKind::PostFire: return t.post_fire;
+    case ScriptKind::OnDeposit:
+    case ScriptKind::OnRemove:
+    case ScriptKind::OnEnter:
+    case ScriptKind::OnExit:
+    case ScriptKind::OnSample:
+    case ScriptKind::OnChange:
+    case ScriptKind::Predicate:
+    case ScriptKind::Condition:
+    case ScriptKind::Globals: break;
+  }
+  GDPN_ASSERT(false, "a transition's script is asked for by a transition script kind");
+  return t.guard;
+}
+
+}  // namespace gdpn::net

@@ -1,0 +1,243 @@
+#include "gdpn/session/session.h"
+
+#include <algorithm>
+
+#include "gdpn/net/observer.h"
+
+namespace gdpn::session {
+
+const char* compareName(Compare compare) {
+  switch (compare) {
+    case Compare::Less: return "<";
+    case Compare::LessEqual: return "<=";
+    case Compare::Equal: return "==";
+    case Compare::NotEqual: return "!=";
+    case Compare::GreaterEqual: return ">=";
+    case Compare::Greater: return ">";
+  }
+  return "?";
+}
+
+std::optional<Compare> parseCompare(std::string_view text) {
+  for (const Compare c : {Compare::Less, Compare::LessEqual, Compare::Equal, Compare::NotEqual, Compare::GreaterEqual,
+                          Compare::Greater}) {
+    if (text == compareName(c)) return c;
+  }
+  return std::nullopt;
+}
+
+std::string Breakpoint::describe() const {
+  switch (kind) {
+    case BreakKind::Starts: return "starts " + target;
+    case BreakKind::Completes: return "completes " + target;
+    case BreakKind::Marking: return target + " " + compareName(compare) + " " + std::to_string(value);
+    case BreakKind::Predicate: return expression;
+  }
+  return {};
+}
+
+namespace {
+
+bool compare(std::int64_t a, Compare how, std::int64_t b) {
+  switch (how) {
+    case Compare::Less: return a < b;
+    case Compare::LessEqual: return a <= b;
+    case Compare::Equal: return a == b;
+    case Compare::NotEqual: return a != b;
+    case Compare::GreaterEqual: return a >= b;
+    case Compare::Greater: return a > b;
+  }
+  return false;
+}
+
+}  // namespace
+
+/// Notes which transitions started and completed in the current step.
+class Session::Watcher final : public net::NetObserver {
+ public:
+  void onStart(net::TransitionId t, std::int64_t) override { started.push_back(t); }
+  void onComplete(net::TransitionId t, std::int64_t) override { completed.push_back(t); }
+  void clear() {
+    started.clear();
+    completed.clear();
+  }
+  std::vector<net::TransitionId> started, completed;
+};
+
+Session::~Session() = default;
+
+std::unique_ptr<Session> Session::create(model::Model model, core::Diagnostics& diags, SessionOptions options) {
+  std::unique_ptr<Session> s(new Session());
+  s->options_ = options;
+  auto sim = s->make(model, diags);
+  if (!sim) return nullptr;
+  s->model_ = std::move(model);
+  s->adopt(std::move(sim));
+  return s;
+}
+
+std::unique_ptr<model::Simulation> Session::make(const model::Model& model, core::Diagnostics& diags) {
+  return model::Simulation::create(model, diags, options_.seed, options_.script_timeout_s);
+}
+
+void Session::adopt(std::unique_ptr<model::Simulation> sim) {
+  sim_ = std::move(sim);
+  hit_.reset();
+  if (trace_out_) sim_->traceTo(*trace_out_);
+  if (!input_.empty()) sim_->setInput(input_);
+  // the watcher listens only while some breakpoint needs it
+  const bool watch = std::any_of(breakpoints_.begin(), breakpoints_.end(), [](const auto& b) {
+    return b.second.kind == BreakKind::Starts || b.second.kind == BreakKind::Completes;
+  });
+  watcher_.reset();
+  if (watch) {
+    watcher_ = std::make_unique<Watcher>();
+    sim_->kernel().addObserver(watcher_.get());
+  }
+}
+
+void Session::reset(std::optional<std::uint64_t> seed) {
+  if (seed) options_.seed = seed;
+  core::Diagnostics diags;
+  auto sim = make(model_, diags);
+  // the model made a run before, so it makes one again (the same net, scene and scripts)
+  if (sim) adopt(std::move(sim));
+}
+
+bool Session::rebuild(const model::Model& model, core::Diagnostics& diags) {
+  auto sim = make(model, diags);
+  if (!sim) return false;
+  // breakpoints whose target the edit removed are dropped
+  std::erase_if(breakpoints_, [&](const auto& b) {
+    const auto& bp = b.second;
+    if (bp.kind == BreakKind::Starts || bp.kind == BreakKind::Completes) return sim->net().findTransition(bp.target) < 0;
+    if (bp.kind == BreakKind::Marking) return sim->net().findPlace(bp.target) < 0;
+    return false;
+  });
+  model_ = model;
+  adopt(std::move(sim));
+  return true;
+}
+
+void Session::traceTo(std::ostream& out) {
+  trace_out_ = &out;
+  if (!sim_->started()) sim_->traceTo(out);
+}
+
+void Session::setInput(std::vector<sensors::InputEvent> events) {
+  input_ = events;
+  sim_->setInput(std::move(events));
+}
+
+void Session::step() {
+  if (watcher_) watcher_->clear();
+  sim_->step();
+}
+
+void Session::stepPlant() { sim_->stepPlant(); }
+
+void Session::push(sensors::InputEvent event) { sim_->push(std::move(event)); }
+
+std::string Session::fire(const std::string& transition) {
+  const auto t = sim_->net().findTransition(transition);
+  if (t < 0) return "no transition '" + transition + "' in the net";
+  if (!sim_->started()) sim_->start();
+  if (watcher_) watcher_->clear();
+  return sim_->kernel().fire(static_cast<net::TransitionId>(t));
+}
+
+std::optional<int> Session::addBreakpoint(Breakpoint breakpoint, std::string& why) {
+  const net::Net& net = sim_->net();
+  switch (breakpoint.kind) {
+    case BreakKind::Starts:
+    case BreakKind::Completes:
+      if (net.findTransition(breakpoint.target) < 0) {
+        why = "no transition '" + breakpoint.target + "' in the net";
+        return std::nullopt;
+      }
+      if (!watcher_) {
+        watcher_ = std::make_unique<Watcher>();
+        sim_->kernel().addObserver(watcher_.get());
+      }
+      break;
+    case BreakKind::Marking:
+      if (net.findPlace(breakpoint.target) < 0) {
+        why = "no place '" + breakpoint.target + "' in the net";
+        return std::nullopt;
+      }
+      break;
+    case BreakKind::Predicate:
+      if (breakpoint.expression.find_first_not_of(" \t\n") == std::string::npos) {
+        why = "a predicate breakpoint needs an expression";
+        return std::nullopt;
+      }
+      break;
+  }
+  const int id = next_id_++;
+  breakpoints_.emplace_back(id, std::move(breakpoint));
+  return id;
+}
+
+bool Session::removeBreakpoint(int id) {
+  return std::erase_if(breakpoints_, [&](const auto& b) { return b.first == id; }) > 0;
+}
+
+bool Session::enableBreakpoint(int id, bool enabled) {
+  for (auto& [key, bp] : breakpoints_) {
+    if (key != id) continue;
+    bp.enabled = enabled;
+    return true;
+  }
+  return false;
+}
+
+std::optional<int> Session::holding() {
+  const net::Net& net = sim_->net();
+  for (const auto& [id, bp] : breakpoints_) {
+    if (!bp.enabled) continue;
+    switch (bp.kind) {
+      case BreakKind::Starts:
+      case BreakKind::Completes: {
+        const auto t = static_cast<net::TransitionId>(net.findTransition(bp.target));
+        const auto& seen = bp.kind == BreakKind::Starts ? watcher_->started : watcher_->completed;
+        if (std::find(seen.begin(), seen.end(), t) != seen.end()) return id;
+        break;
+      }
+      case BreakKind::Marking: {
+        const auto p = static_cast<net::PlaceId>(net.findPlace(bp.target));
+        if (compare(sim_->kernel().placeTokens(p), bp.compare, bp.value)) return id;
+        break;
+      }
+      case BreakKind::Predicate: {
+        std::string error;
+        const auto holds = sim_->evaluate(bp.expression, error);
+        // a predicate that fails stops the run too: the user learns why at once
+        if (!holds || *holds) return id;
+        break;
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+model::RunOutcome Session::run(const model::RunLimits& limits, const model::ProgressFn& progress,
+                               const std::atomic<bool>* interrupt) {
+  hit_.reset();
+  if (breakpoints_.empty()) return sim_->run(limits, progress, interrupt);
+  // with breakpoints: each step is checked after it, and one that holds ends the run there
+  model::RunLimits checked = limits;
+  checked.stop_when = [this] {
+    hit_ = holding();
+    if (watcher_) watcher_->clear();
+    return hit_.has_value();
+  };
+  if (watcher_) watcher_->clear();
+  model::RunOutcome outcome = sim_->run(checked, progress, interrupt);
+  if (hit_) {
+    const auto it = std::find_if(breakpoints_.begin(), breakpoints_.end(), [&](const auto& b) { return b.first == *hit_; });
+    outcome.message = "breakpoint " + std::to_string(*hit_) + ": " + it->second.describe();
+  }
+  return outcome;
+}
+
+}  // namespace gdpn::session
