@@ -23,6 +23,8 @@ namespace gdpn::render {
 
 using core::Vec3;
 using scene::Node;
+using scene::NodeKind;
+namespace field = scene::field;
 
 namespace {
 
@@ -136,6 +138,17 @@ struct Gpu {
   }
 };
 
+/// A mesh of one size and that size: what primitive shapes are drawn from, stretched to each
+/// node's extent.
+struct UnitShape {
+  Gpu gpu;
+  Vec3 extent;  // the mesh's size along x, y, z
+  /// `at` scaled so that the mesh takes up `size` (m along x, y, z, as scene::shapeExtent gives it).
+  [[nodiscard]] glm::mat4 fit(const glm::mat4& at, Vec3 size) const {
+    return glm::scale(at, gv(Vec3{size.x / extent.x, size.y / extent.y, size.z / extent.z}));
+  }
+};
+
 /// Builds interleaved vertices for the unit shapes.
 struct ShapeBuilder {
   std::vector<float> v;
@@ -147,7 +160,8 @@ struct ShapeBuilder {
   void quad(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) { i.insert(i.end(), {a, b, c, a, c, d}); }
 };
 
-Gpu unitCube() {
+/// A cube of edge 1.
+UnitShape unitCube() {
   ShapeBuilder b;
   for (int axis = 0; axis < 3; ++axis) {
     for (int sign = -1; sign <= 1; sign += 2) {
@@ -165,10 +179,11 @@ Gpu unitCube() {
   }
   Gpu g;
   g.upload(b.v, b.i);
-  return g;
+  return {g, {1, 1, 1}};
 }
 
-Gpu unitSphere() {
+/// A sphere of radius 1.
+UnitShape unitSphere() {
   ShapeBuilder b;
   constexpr int kSlices = 48, kStacks = 24;
   for (int s = 0; s <= kStacks; ++s) {
@@ -189,11 +204,11 @@ Gpu unitSphere() {
   }
   Gpu g;
   g.upload(b.v, b.i);
-  return g;
+  return {g, {2, 2, 2}};
 }
 
 /// A cylinder (top radius 1) or cone (top radius 0) of radius 1 and height 1 along z.
-Gpu unitRound(bool cone) {
+UnitShape unitRound(bool cone) {
   ShapeBuilder b;
   constexpr int kSlices = 48;
   const float top = cone ? 0.0f : 1.0f;
@@ -218,7 +233,7 @@ Gpu unitRound(bool cone) {
   }
   Gpu g;
   g.upload(b.v, b.i);
-  return g;
+  return {g, {2, 2, 1}};
 }
 
 Gpu unitPlane() {
@@ -242,12 +257,12 @@ struct Look {
 Look lookOf(const Node* m) {
   Look l;
   if (m == nullptr) return l;
-  l.ambient = gv(m->vec3("ambient"));
-  l.diffuse = gv(m->vec3("diffuse"));
-  l.specular = gv(m->vec3("specular"));
-  l.emissive = gv(m->vec3("emissive"));
-  l.shininess = static_cast<float>(m->number("shininess"));
-  l.alpha = static_cast<float>(1.0 - m->number("transparency"));
+  l.ambient = gv(m->vec3(field::Material::Ambient));
+  l.diffuse = gv(m->vec3(field::Material::Diffuse));
+  l.specular = gv(m->vec3(field::Material::Specular));
+  l.emissive = gv(m->vec3(field::Material::Emissive));
+  l.shininess = static_cast<float>(m->number(field::Material::Shininess));
+  l.alpha = static_cast<float>(1.0 - m->number(field::Material::Transparency));
   return l;
 }
 
@@ -437,13 +452,46 @@ glm::mat4 alongZ(glm::vec3 dir) {
   return glm::rotate(glm::mat4(1.0f), std::acos(c), glm::normalize(glm::cross(z, dir)));
 }
 
+/// How many of its axes a joint of `kind` uses (axis1, then axis2).
+int axesOf(scene::JointKind kind) {
+  switch (kind) {
+    case scene::JointKind::Ball:
+    case scene::JointKind::Fixed: return 0;
+    case scene::JointKind::Hinge:
+    case scene::JointKind::Slider: return 1;
+    case scene::JointKind::Universal:
+    case scene::JointKind::Hinge2: return 2;
+  }
+  return 0;
+}
+
+/// The shader's number for a light of `kind` (u_kind).
+int shaderKind(scene::LightKind kind) {
+  switch (kind) {
+    case scene::LightKind::Directional: return 0;
+    case scene::LightKind::Point: return 1;
+    case scene::LightKind::Spot: return 2;
+  }
+  return 0;
+}
+
+/// The shader's number for fog of `kind` (u_fog; 0 is none).
+int shaderKind(scene::FogKind kind) {
+  switch (kind) {
+    case scene::FogKind::Linear: return 1;
+    case scene::FogKind::Exponential: return 2;
+  }
+  return 0;
+}
+
 }  // namespace
 
 struct Renderer::Impl {
   std::string dir;
   GLuint program = 0;
   std::map<std::string, GLint> uniforms;
-  Gpu cube, sphere, cylinder, cone, plane;
+  UnitShape cube, sphere, cylinder, cone;
+  Gpu plane;
   struct MeshGpu {
     std::vector<Gpu> parts;
     std::vector<int> materials;
@@ -475,7 +523,7 @@ struct Renderer::Impl {
     plane = unitPlane();
   }
   ~Impl() {
-    for (Gpu* g : {&cube, &sphere, &cylinder, &cone, &plane}) g->release();
+    for (Gpu* g : {&cube.gpu, &sphere.gpu, &cylinder.gpu, &cone.gpu, &plane}) g->release();
     for (auto& [k, m] : meshes) {
       for (auto& p : m.parts) p.release();
     }
@@ -488,7 +536,7 @@ struct Renderer::Impl {
   }
 
   const MeshGpu* mesh(const Node& n) {
-    const std::string file = n.text("file");
+    const std::string file = n.text(field::Mesh::File);
     const std::string path = (std::filesystem::path(dir) / file).string();
     if (auto it = meshes.find(path); it != meshes.end()) return &it->second;
     if (failed.count(path) != 0) return nullptr;
@@ -515,16 +563,18 @@ struct Renderer::Impl {
   }
 
   const TerrainGpu* terrain(const Node& n) {
-    const std::string file = n.text("file");
+    const std::string file = n.text(field::Terrain::File);
     const std::string path = (std::filesystem::path(dir) / file).string();
-    const std::string key = path + "|" + std::to_string(n.number("width")) + "|" + std::to_string(n.number("depth")) +
-                            "|" + std::to_string(n.number("height_scale"));
+    const double width = n.number(field::Terrain::Width), depth = n.number(field::Terrain::Depth),
+                 height_scale = n.number(field::Terrain::HeightScale);
+    const std::string key =
+        path + "|" + std::to_string(width) + "|" + std::to_string(depth) + "|" + std::to_string(height_scale);
     if (auto it = terrains.find(key); it != terrains.end()) return &it->second;
     if (failed.count(key) != 0) return nullptr;
     std::string why;
     auto grid = scene::loadHeightGrid(path, why);
     TerrainGpu t;
-    if (!grid || !t.build(*grid, n.number("width"), n.number("depth"), n.number("height_scale"))) {
+    if (!grid || !t.build(*grid, width, depth, height_scale)) {
       problem(key, "cannot read the elevation file '" + file + "': " + (grid ? "too few samples" : why));
       return nullptr;
     }
@@ -533,70 +583,100 @@ struct Renderer::Impl {
 
   /// Collects what to draw below `n`, with `material` in effect.
   void collect(const Node& n, const Node* material, const DrawOptions& opt, std::vector<Item>& items) {
-    const auto& t = n.type().name;
     const glm::mat4 at = placement(n.world, n.world_scale);
     auto add = [&](const Gpu& g, glm::mat4 model, Look look) { items.push_back({&g, nullptr, model, look, &n, 0}); };
-    if (t == "Cube") {
-      add(cube, glm::scale(at, gv(n.vec3("size"))), lookOf(material));
-    } else if (t == "Sphere") {
-      add(sphere, glm::scale(at, glm::vec3(static_cast<float>(n.number("radius")))), lookOf(material));
-    } else if (t == "Cylinder" || t == "Cone") {
-      const auto r = static_cast<float>(n.number("radius")), h = static_cast<float>(n.number("height"));
-      add(t == "Cone" ? cone : cylinder, glm::scale(at, glm::vec3(r, r, h)), lookOf(material));
-    } else if (t == "Plane") {
-      add(plane, at * alongZ(gv(n.vec3("normal"))), lookOf(material));
-    } else if (t == "Mesh") {
-      if (const MeshGpu* m = mesh(n)) {
-        const auto part = static_cast<long>(n.number("part"));
-        for (std::size_t i = 0; i < m->parts.size(); ++i) {
-          if (part >= 0 && static_cast<std::size_t>(part) != i) continue;
-          // a Material in the scene wins; otherwise the file's own
-          Look look = lookOf(material);
-          const int mi = m->materials[i];
-          if (material == nullptr && mi >= 0 && static_cast<std::size_t>(mi) < m->data->materials.size()) {
-            look = lookOf(m->data->materials[static_cast<std::size_t>(mi)]);
+    // a primitive: its unit mesh stretched to the node's extent
+    auto primitive = [&](const UnitShape& shape, Look look) { add(shape.gpu, shape.fit(at, scene::shapeExtent(n)), look); };
+    switch (n.kind()) {
+      case NodeKind::Cube: primitive(cube, lookOf(material)); break;
+      case NodeKind::Sphere: primitive(sphere, lookOf(material)); break;
+      case NodeKind::Cylinder: primitive(cylinder, lookOf(material)); break;
+      case NodeKind::Cone: primitive(cone, lookOf(material)); break;
+      case NodeKind::Plane: add(plane, at * alongZ(gv(n.vec3(field::Plane::Normal))), lookOf(material)); break;
+      case NodeKind::Mesh:
+        if (const MeshGpu* m = mesh(n)) {
+          const auto part = static_cast<long>(n.number(field::Mesh::Part));
+          for (std::size_t i = 0; i < m->parts.size(); ++i) {
+            if (part >= 0 && static_cast<std::size_t>(part) != i) continue;
+            // a Material in the scene wins; otherwise the file's own
+            Look look = lookOf(material);
+            const int mi = m->materials[i];
+            if (material == nullptr && mi >= 0 && static_cast<std::size_t>(mi) < m->data->materials.size()) {
+              look = lookOf(m->data->materials[static_cast<std::size_t>(mi)]);
+            }
+            add(m->parts[i], glm::scale(at, gv(n.vec3(field::Mesh::Scale))), look);
           }
-          add(m->parts[i], glm::scale(at, gv(n.vec3("scale"))), look);
         }
-      }
-    } else if (t == "Terrain") {
-      if (const TerrainGpu* g = terrain(n)) items.push_back({nullptr, g, at, lookOf(material), &n, 0});
-    } else if (t == "Region" && opt.sensors) {
-      const Look look = overlay({1.0f, 0.85f, 0.1f}, 0.3f);
-      const auto& shape = n.text("shape");
-      const auto r = static_cast<float>(n.number("radius")), h = static_cast<float>(n.number("height"));
-      if (shape == "box") add(cube, glm::scale(at, gv(n.vec3("size"))), look);
-      if (shape == "sphere") add(sphere, glm::scale(at, glm::vec3(r)), look);
-      if (shape == "cylinder") add(cylinder, glm::scale(at, glm::vec3(r, r, h)), look);
-      if (shape == "cone") add(cone, glm::scale(at, glm::vec3(r, r, h)), look);
-      if (shape == "ray") ray(at, static_cast<float>(n.number("length")), look, n, items);
-    } else if (t == "RangeFinder" && opt.sensors) {
-      ray(at, static_cast<float>(n.number("length")), overlay({1.0f, 0.2f, 0.2f}, 0.8f), n, items);
-    } else if (t == "Joint" && opt.joints) {
-      const glm::mat4 anchor = glm::translate(at, gv(n.vec3("anchor")));
-      const auto& kind = n.text("kind");
-      if (kind != "fixed" && kind != "ball") {
-        add(cylinder, anchor * alongZ(gv(n.vec3("axis1"))) * glm::scale(glm::mat4(1.0f), glm::vec3(0.01f, 0.01f, 0.6f)),
-            overlay({0.1f, 0.9f, 0.3f}, 1.0f));
-      }
-      if (kind == "universal" || kind == "hinge2") {
-        add(cylinder, anchor * alongZ(gv(n.vec3("axis2"))) * glm::scale(glm::mat4(1.0f), glm::vec3(0.01f, 0.01f, 0.6f)),
-            overlay({0.2f, 0.5f, 1.0f}, 1.0f));
-      }
-      add(sphere, glm::scale(anchor, glm::vec3(0.03f)), overlay({0.1f, 0.9f, 0.3f}, 1.0f));
+        break;
+      case NodeKind::Terrain:
+        if (const TerrainGpu* g = terrain(n)) items.push_back({nullptr, g, at, lookOf(material), &n, 0});
+        break;
+      case NodeKind::Region:
+        if (!opt.sensors) break;
+        {
+          const Look look = overlay({1.0f, 0.85f, 0.1f}, 0.3f);
+          switch (n.choice<scene::RegionShape>(field::Region::Shape)) {
+            case scene::RegionShape::Box: primitive(cube, look); break;
+            case scene::RegionShape::Sphere: primitive(sphere, look); break;
+            case scene::RegionShape::Cylinder: primitive(cylinder, look); break;
+            case scene::RegionShape::Cone: primitive(cone, look); break;
+            case scene::RegionShape::Ray: ray(at, static_cast<float>(n.number(field::Region::Length)), look, n, items); break;
+          }
+        }
+        break;
+      case NodeKind::RangeFinder:
+        if (opt.sensors) {
+          ray(at, static_cast<float>(n.number(field::RangeFinder::Length)), overlay({1.0f, 0.2f, 0.2f}, 0.8f), n, items);
+        }
+        break;
+      case NodeKind::Joint:
+        if (opt.joints) joint(n, at, items);
+        break;
+      // nothing of their own to draw: lights and fog are gathered before, a Material colours
+      // the shapes after it, the rest is physics, sensing and grouping
+      case NodeKind::Group:
+      case NodeKind::Transform:
+      case NodeKind::Material:
+      case NodeKind::Light:
+      case NodeKind::Camera:
+      case NodeKind::Fog:
+      case NodeKind::World:
+      case NodeKind::Body:
+      case NodeKind::Conveyor:
+      case NodeKind::GradientField:
+      case NodeKind::GradientSensor:
+      case NodeKind::KeyboardSensor:
+      case NodeKind::MouseSensor:
+      case NodeKind::TimeSensor: break;
     }
     const Node* inner = material;
     for (const auto& child : n.children()) {
-      if (child->type().name == "Material") inner = child.get();
+      if (child->kind() == NodeKind::Material) inner = child.get();
       collect(*child, inner, opt, items);
     }
+  }
+
+  /// A joint's axes (as many as its kind has) and its anchor.
+  void joint(const Node& n, const glm::mat4& at, std::vector<Item>& items) {
+    const glm::mat4 anchor = glm::translate(at, gv(n.vec3(field::Joint::Anchor)));
+    const glm::mat4 axis = glm::scale(glm::mat4(1.0f), glm::vec3(0.01f, 0.01f, 0.6f));
+    const int axes = axesOf(n.choice<scene::JointKind>(field::Joint::Kind));
+    if (axes >= 1) {
+      items.push_back({&cylinder.gpu, nullptr, anchor * alongZ(gv(n.vec3(field::Joint::Axis1))) * axis,
+                       overlay({0.1f, 0.9f, 0.3f}, 1.0f), &n, 0});
+    }
+    if (axes >= 2) {
+      items.push_back({&cylinder.gpu, nullptr, anchor * alongZ(gv(n.vec3(field::Joint::Axis2))) * axis,
+                       overlay({0.2f, 0.5f, 1.0f}, 1.0f), &n, 0});
+    }
+    items.push_back({&sphere.gpu, nullptr, glm::scale(anchor, glm::vec3(0.03f)), overlay({0.1f, 0.9f, 0.3f}, 1.0f), &n, 0});
   }
 
   void ray(const glm::mat4& at, float length, const Look& look, const Node& n, std::vector<Item>& items) {
     // along +x from the sensor's origin: a thin cylinder turned from z to x
     const glm::mat4 m = at * alongZ({1, 0, 0}) * glm::translate(glm::mat4(1.0f), {0, 0, length / 2}) *
                         glm::scale(glm::mat4(1.0f), glm::vec3(0.005f, 0.005f, length));
-    items.push_back({&cylinder, nullptr, m, look, &n, 0});
+    items.push_back({&cylinder.gpu, nullptr, m, look, &n, 0});
   }
 
   void setLook(const Look& l) {
@@ -695,25 +775,23 @@ DrawStats Renderer::draw(const scene::Scene& scene, const Camera& cam, const Dra
   while (!todo.empty()) {
     const Node* n = todo.back();
     todo.pop_back();
-    const auto& t = n->type().name;
-    if (t == "Light" && lights.size() < static_cast<std::size_t>(kMaxLights)) {
-      const auto& kind = n->text("kind");
+    if (n->kind() == NodeKind::Light && lights.size() < static_cast<std::size_t>(kMaxLights)) {
       Light l;
-      l.kind = kind == "directional" ? 0 : kind == "point" ? 1 : 2;
-      l.colour = gv(n->vec3("color")) * static_cast<float>(n->number("intensity"));
-      l.pos = glm::vec3(view * glm::vec4(gv(n->world.apply(n->vec3("location"))), 1.0f));
-      l.dir = glm::mat3(view) * gv(n->world.rotation.rotate(n->vec3("direction")));
-      l.cos = static_cast<float>(std::cos(n->number("cutoff") * std::numbers::pi / 180.0));
+      l.kind = shaderKind(n->choice<scene::LightKind>(field::Light::Kind));
+      l.colour = gv(n->vec3(field::Light::Color)) * static_cast<float>(n->number(field::Light::Intensity));
+      l.pos = glm::vec3(view * glm::vec4(gv(n->world.apply(n->vec3(field::Light::Location))), 1.0f));
+      l.dir = glm::mat3(view) * gv(n->world.rotation.rotate(n->vec3(field::Light::Direction)));
+      l.cos = static_cast<float>(std::cos(n->number(field::Light::Cutoff) * std::numbers::pi / 180.0));
       lights.push_back(l);
     }
-    if (t == "Fog" && fog == nullptr) fog = n;
+    if (n->kind() == NodeKind::Fog && fog == nullptr) fog = n;
     for (auto it = n->children().rbegin(); it != n->children().rend(); ++it) todo.push_back(it->get());
   }
   if (lights.empty()) {
     // no light in the scene: a headlight, as viewers do
     lights.push_back({0, glm::vec3(1.0f), glm::vec3(0.0f), glm::vec3(0, 0, -1), 0.0f});
   }
-  const glm::vec3 background = fog != nullptr ? gv(fog->vec3("color")) : gv(opt.background);
+  const glm::vec3 background = fog != nullptr ? gv(fog->vec3(field::Fog::Color)) : gv(opt.background);
   glClearColor(background.r, background.g, background.b, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
@@ -731,9 +809,10 @@ DrawStats Renderer::draw(const scene::Scene& scene, const Camera& cam, const Dra
     glUniform3fv(r.u("u_ldir" + k), 1, glm::value_ptr(lights[i].dir));
     glUniform1f(r.u("u_lcos" + k), lights[i].cos);
   }
-  glUniform1i(r.u("u_fog"), fog == nullptr ? 0 : fog->text("kind") == "linear" ? 1 : 2);
+  glUniform1i(r.u("u_fog"), fog == nullptr ? 0 : shaderKind(fog->choice<scene::FogKind>(field::Fog::Kind)));
   glUniform3fv(r.u("u_fog_color"), 1, glm::value_ptr(background));
-  glUniform1f(r.u("u_fog_visibility"), fog != nullptr ? static_cast<float>(std::max(1e-6, fog->number("visibility"))) : 1.0f);
+  glUniform1f(r.u("u_fog_visibility"),
+              fog != nullptr ? static_cast<float>(std::max(1e-6, fog->number(field::Fog::Visibility))) : 1.0f);
 
   std::vector<Item> items;
   r.collect(root, nullptr, opt, items);
@@ -791,12 +870,12 @@ DrawStats Renderer::draw(const scene::Scene& scene, const Camera& cam, const Dra
 
 Camera cameraOf(const Node& camera, double t) {
   Camera c;
-  c.eye = camera.world.apply(camera.vec3("position"));
-  c.target = camera.world.apply(camera.vec3("target"));
-  c.up = camera.world.rotation.rotate(camera.vec3("up"));
-  c.fov = camera.number("fov");
-  if (camera.text("kind") == "orbit") {
-    const double angle = camera.number("speed") * t * std::numbers::pi / 180.0;
+  c.eye = camera.world.apply(camera.vec3(field::Camera::Position));
+  c.target = camera.world.apply(camera.vec3(field::Camera::Target));
+  c.up = camera.world.rotation.rotate(camera.vec3(field::Camera::Up));
+  c.fov = camera.number(field::Camera::Fov);
+  if (camera.choice<scene::CameraKind>(field::Camera::Kind) == scene::CameraKind::Orbit) {
+    const double angle = camera.number(field::Camera::Speed) * t * std::numbers::pi / 180.0;
     c.eye = c.target + core::Quat::axisAngle(c.up.normalized(), angle).rotate(c.eye - c.target);
   }
   const double distance = (c.eye - c.target).length();
@@ -821,7 +900,7 @@ Camera chooseCamera(const scene::Scene& scene, const std::string& path, double t
   error.clear();
   if (!path.empty()) {
     const Node* n = scene.find(path);
-    if (n == nullptr || n->type().name != "Camera") {
+    if (n == nullptr || n->kind() != NodeKind::Camera) {
       error = "no Camera node at '" + path + "'";
       return framing(scene);
     }
@@ -831,7 +910,7 @@ Camera chooseCamera(const scene::Scene& scene, const std::string& path, double t
   while (!todo.empty()) {
     const Node* n = todo.back();
     todo.pop_back();
-    if (n->type().name == "Camera") return cameraOf(*n, t);
+    if (n->kind() == NodeKind::Camera) return cameraOf(*n, t);
     for (auto it = n->children().rbegin(); it != n->children().rend(); ++it) todo.push_back(it->get());
   }
   return framing(scene);
