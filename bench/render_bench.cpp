@@ -9,7 +9,9 @@
 
 #include "gdpn/model/model.h"
 #include "gdpn/model/simulation.h"
-#include "gdpn/render/context.h"
+#include "gdpn/platform/headless_context.h"
+#include "gdpn/platform/png.h"
+#include "gdpn/platform/target.h"
 #include "gdpn/render/renderer.h"
 
 namespace {
@@ -20,12 +22,12 @@ namespace fs = std::filesystem;
 void frames(benchmark::State& state, const scene::Scene& scene, const std::string& dir, const render::Camera& camera,
             int samples) {
   std::string why;
-  auto context = render::GlContext::createHeadless(why);
+  auto context = platform::createHeadlessContext(why);
   if (!context) {
     state.SkipWithError(why.c_str());
     return;
   }
-  render::Target target(1280, 720, samples);
+  platform::Target target(1280, 720, samples);
   render::Renderer renderer(dir);
   render::DrawOptions o;
   render::DrawStats stats = renderer.draw(scene, camera, o);  // uploads shapes, meshes and terrains once
@@ -80,7 +82,7 @@ void BM_Terrain2049(benchmark::State& state, double distance) {
       }
     }
     std::string why;
-    render::writePng(png, n, n, rgb, why);
+    platform::writePng(png, n, n, rgb, why);
   }
   core::Diagnostics diags;
   auto m = model::parseModel(

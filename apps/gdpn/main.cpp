@@ -22,7 +22,7 @@
 #include "gdpn/net/analysis.h"
 #include "gdpn/net/compile.h"
 #include "gdpn/net/pnml.h"
-#include "gdpn/render/capture.h"
+#include "gdpn/capture/capture.h"
 #include "gdpn/scene/mesh.h"
 #include "gdpn/script/engine.h"
 #include "gdpn/session/session.h"
@@ -110,12 +110,12 @@ struct CaptureArgs {
   double at = 0.0;
   double until = 10.0;
   std::optional<std::uint64_t> seed;
-  gdpn::render::CaptureOptions options;
+  gdpn::capture::CaptureOptions options;
 };
 
 /// `gdpn render` (movie = false) and `gdpn record` (movie = true).
 int capture(CaptureArgs a, bool movie) {
-  const auto size = gdpn::render::parseSize(a.size);
+  const auto size = gdpn::capture::parseSize(a.size);
   if (!size) {
     std::cerr << "error: --size '" << a.size << "' is not WIDTHxHEIGHT (for example 1280x720)\n";
     return 2;
@@ -132,14 +132,14 @@ int capture(CaptureArgs a, bool movie) {
   std::string error;
   bool ok = false;
   if (!movie) {
-    ok = gdpn::render::renderAt(*sim, a.at, a.options, a.out, error);
+    ok = gdpn::capture::renderAt(*sim, a.at, a.options, a.out, error);
     if (ok) std::cout << a.out << ": " << a.options.width << "x" << a.options.height << " at t = " << sim->kernel().now() << " s\n";
   } else {
     std::signal(SIGINT, onSigint);
-    gdpn::render::RecordResult result;
+    gdpn::capture::RecordResult result;
     {
       ProgressBar bar(isatty(STDERR_FILENO));
-      ok = gdpn::render::record(*sim, a.until, a.options, a.out, std::ref(bar), &g_interrupted, result, error);
+      ok = gdpn::capture::record(*sim, a.until, a.options, a.out, std::ref(bar), &g_interrupted, result, error);
     }
     std::signal(SIGINT, SIG_DFL);
     if (ok) {

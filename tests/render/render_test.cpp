@@ -9,13 +9,25 @@
 #include <filesystem>
 #include <memory>
 
+#include "gdpn/capture/capture.h"
 #include "gdpn/model/model.h"
-#include "gdpn/render/capture.h"
-#include "gdpn/render/context.h"
+#include "gdpn/platform/headless_context.h"
+#include "gdpn/platform/png.h"
+#include "gdpn/platform/target.h"
 #include "gdpn/render/renderer.h"
 
 namespace gdpn::render {
 namespace {
+
+using capture::CaptureOptions;
+using capture::parseSize;
+using capture::record;
+using capture::RecordResult;
+using capture::renderAt;
+using platform::createHeadlessContext;
+using platform::readPng;
+using platform::Target;
+using platform::writePng;
 
 namespace fs = std::filesystem;
 const fs::path kData = fs::path(GDPN_SOURCE_DIR) / "tests" / "data";
@@ -128,7 +140,7 @@ TEST(Render, TerrainLevelOfDetailDropsTrianglesWithDistance) {
   auto sim = open("terrain");
   ASSERT_TRUE(sim);
   std::string why;
-  auto context = GlContext::createHeadless(why);
+  auto context = createHeadlessContext(why);
   ASSERT_TRUE(context) << why;
   Target target(320, 240, 1);
   Renderer renderer((kData / "render").string());
@@ -167,7 +179,7 @@ scene:
   auto sim = model::Simulation::create(*m, diags);
   ASSERT_TRUE(sim) << diags.str();
   std::string why;
-  auto context = GlContext::createHeadless(why);
+  auto context = createHeadlessContext(why);
   ASSERT_TRUE(context) << why;
   Target target(160, 120, 1);
   Renderer renderer(".");

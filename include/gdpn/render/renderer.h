@@ -4,37 +4,20 @@
 /// shininess, transparency, transparent shapes back to front), directional, point and spot
 /// lights (all gathered before anything is drawn), fog, every shape type, meshes from files,
 /// terrain with view-dependent level of detail, overlays for sensors and joints, and a
-/// highlight on a selection. The renderer only reads the scene.
+/// highlight on a selection. The renderer only reads the scene, draws into whatever
+/// framebuffer is bound (gdpn::platform makes contexts and offscreen targets), and knows
+/// nothing of models, simulations or the IDE.
 
-#include <cstdint>
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "gdpn/core/math.h"
+#include "gdpn/render/camera.h"
 #include "gdpn/scene/node.h"
 
 namespace gdpn::render {
-
-/// Where the picture is seen from.
-struct Camera {
-  core::Vec3 eye{5, -5, 4};     ///< eye position, m (world)
-  core::Vec3 target{0, 0, 0};   ///< the point looked at, m (world)
-  core::Vec3 up{0, 0, 1};       ///< which way is up
-  double fov = 45.0;            ///< vertical field of view, degrees
-  double near = 0.05;           ///< near clipping distance, m
-  double far = 2000.0;          ///< far clipping distance, m
-};
-
-/// The view of Camera node `camera` at time `t` seconds: its position and target in its
-/// parent's frame; an orbit camera turns about its target at its speed.
-Camera cameraOf(const scene::Node& camera, double t = 0.0);
-/// A view from the south-east and above that frames every shape of `scene`.
-Camera framing(const scene::Scene& scene);
-/// The camera a picture uses: the Camera node at `path` (or the scene's first Camera when
-/// `path` is empty, or a framing view when it has none). Null `error` means found; otherwise
-/// it says what is wrong.
-Camera chooseCamera(const scene::Scene& scene, const std::string& path, double t, std::string& error);
 
 /// What to draw besides the scene.
 struct DrawOptions {

@@ -1,13 +1,16 @@
-#include "gdpn/render/capture.h"
+#include "gdpn/capture/capture.h"
 
 #include <cmath>
 #include <functional>
 #include <filesystem>
 
-#include "gdpn/render/context.h"
-#include "gdpn/render/movie.h"
+#include "gdpn/capture/movie.h"
+#include "gdpn/platform/headless_context.h"
+#include "gdpn/platform/png.h"
+#include "gdpn/platform/target.h"
+#include "gdpn/render/renderer.h"
 
-namespace gdpn::render {
+namespace gdpn::capture {
 
 std::optional<std::pair<int, int>> parseSize(const std::string& text) {
   const auto x = text.find('x');
@@ -28,20 +31,20 @@ namespace {
 
 /// A headless context, a target and a renderer for one model.
 struct Studio {
-  std::unique_ptr<GlContext> context;
-  std::unique_ptr<Target> target;
-  std::unique_ptr<Renderer> renderer;
-  DrawOptions draw;
+  std::unique_ptr<platform::GlContext> context;
+  std::unique_ptr<platform::Target> target;
+  std::unique_ptr<render::Renderer> renderer;
+  render::DrawOptions draw;
 
   bool open(const model::Simulation& sim, const CaptureOptions& o, std::string& error) {
     if (sim.plant() == nullptr) {
       error = "the model has no scene to draw";
       return false;
     }
-    context = GlContext::createHeadless(error);
+    context = platform::createHeadlessContext(error);
     if (!context) return false;
-    target = std::make_unique<Target>(o.width, o.height, o.samples);
-    renderer = std::make_unique<Renderer>(std::filesystem::path(sim.model().path).parent_path().string());
+    target = std::make_unique<platform::Target>(o.width, o.height, o.samples);
+    renderer = std::make_unique<render::Renderer>(std::filesystem::path(sim.model().path).parent_path().string());
     draw.width = o.width;
     draw.height = o.height;
     draw.sensors = o.sensors;
@@ -49,9 +52,9 @@ struct Studio {
     return true;
   }
 
-  bool shoot(const model::Simulation& sim, const CaptureOptions& o, std::vector<std::uint8_t>& rgb, DrawStats& stats,
-             std::string& error) {
-    const Camera camera = chooseCamera(*sim.plant(), o.camera, sim.kernel().now(), error);
+  bool shoot(const model::Simulation& sim, const CaptureOptions& o, std::vector<std::uint8_t>& rgb,
+             render::DrawStats& stats, std::string& error) {
+    const render::Camera camera = render::chooseCamera(*sim.plant(), o.camera, sim.kernel().now(), error);
     if (!error.empty()) return false;
     target->bind();
     stats = renderer->draw(*sim.plant(), camera, draw);
@@ -91,9 +94,9 @@ bool renderAt(model::Simulation& sim, double at, const CaptureOptions& options, 
     return false;
   }
   std::vector<std::uint8_t> rgb;
-  DrawStats stats;
+  render::DrawStats stats;
   if (!studio.shoot(sim, options, rgb, stats, error)) return false;
-  return writePng(png, options.width, options.height, rgb, error);
+  return platform::writePng(png, options.width, options.height, rgb, error);
 }
 
 bool record(model::Simulation& sim, double until, const CaptureOptions& options, const std::string& movie,
@@ -111,7 +114,7 @@ bool record(model::Simulation& sim, double until, const CaptureOptions& options,
   const auto frames = static_cast<std::int64_t>(std::ceil(until * options.fps - 1e-9));
   std::int64_t next = 0;
   std::vector<std::uint8_t> rgb;
-  DrawStats stats;
+  render::DrawStats stats;
   bool ok = true;
   auto take = [&] {
     while (ok && next < frames && sim.kernel().now() + 1e-9 >= static_cast<double>(next) / options.fps) {
@@ -144,4 +147,4 @@ bool record(model::Simulation& sim, double until, const CaptureOptions& options,
   return true;
 }
 
-}  // namespace gdpn::render
+}  // namespace gdpn::capture

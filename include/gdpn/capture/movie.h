@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace gdpn::render {
+namespace gdpn::capture {
 
 /// Writes frames of one size into a movie through an ffmpeg process.
 class MovieWriter {
@@ -33,4 +33,4 @@ class MovieWriter {
   std::size_t frame_bytes_ = 0;
 };
 
-}  // namespace gdpn::render
+}  // namespace gdpn::capture

@@ -8,9 +8,8 @@
 #include <string>
 
 #include "gdpn/model/simulation.h"
-#include "gdpn/render/renderer.h"
 
-namespace gdpn::render {
+namespace gdpn::capture {
 
 /// How pictures are taken.
 struct CaptureOptions {
@@ -44,4 +43,4 @@ bool record(model::Simulation& sim, double until, const CaptureOptions& options,
             const model::ProgressFn& progress, const std::atomic<bool>* interrupt, RecordResult& result,
             std::string& error);
 
-}  // namespace gdpn::render
+}  // namespace gdpn::capture

@@ -1,4 +1,4 @@
-#include "gdpn/render/movie.h"
+#include "gdpn/capture/movie.h"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-namespace gdpn::render {
+namespace gdpn::capture {
 
 namespace {
 
@@ -70,4 +70,4 @@ bool MovieWriter::close(std::string& why) {
   return true;
 }
 
-}  // namespace gdpn::render
+}  // namespace gdpn::capture

@@ -1,0 +1,55 @@
+#include "gdpn/platform/headless_context.h"
+
+#include <epoxy/egl.h>
+
+namespace gdpn::platform {
+
+namespace {
+
+/// An EGL context with no surface; owns its display connection.
+class HeadlessContext final : public GlContext {
+ public:
+  HeadlessContext(EGLDisplay display, EGLContext context) : display_(display), context_(context) {}
+  ~HeadlessContext() override {
+    eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    eglDestroyContext(display_, context_);
+    eglTerminate(display_);
+  }
+  HeadlessContext(const HeadlessContext&) = delete;
+  HeadlessContext& operator=(const HeadlessContext&) = delete;
+  void makeCurrent() override { eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_); }
+
+ private:
+  EGLDisplay display_;
+  EGLContext context_;
+};
+
+}  // namespace
+
+std::unique_ptr<GlContext> createHeadlessContext(std::string& why) {
+  // surfaceless: the default display needs an X or Wayland server, this one needs nothing
+  EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+  EGLint major = 0, minor = 0;
+  if (display == EGL_NO_DISPLAY || eglInitialize(display, &major, &minor) == EGL_FALSE) {
+    why = "EGL has no surfaceless display (is Mesa's libegl1 installed?)";
+    return nullptr;
+  }
+  if (eglBindAPI(EGL_OPENGL_API) == EGL_FALSE) {
+    why = "EGL cannot bind desktop OpenGL";
+    eglTerminate(display);
+    return nullptr;
+  }
+  const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+                            EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+  EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs);
+  if (context == EGL_NO_CONTEXT) {
+    why = "EGL gives no OpenGL 3.3 core context";
+    eglTerminate(display);
+    return nullptr;
+  }
+  auto out = std::make_unique<HeadlessContext>(display, context);
+  out->makeCurrent();
+  return out;
+}
+
+}  // namespace gdpn::platform

@@ -1,0 +1,104 @@
+#include "render/detail/shader_program.h"
+
+namespace gdpn::render::detail {
+
+namespace {
+
+constexpr const char* kVertex = R"(#version 330 core
+layout(location = 0) in vec3 a_pos;
+layout(location = 1) in vec3 a_normal;
+uniform mat4 u_model_view;
+uniform mat4 u_proj;
+uniform mat3 u_normal;
+out vec3 v_pos;
+out vec3 v_normal;
+void main() {
+  vec4 p = u_model_view * vec4(a_pos, 1.0);
+  v_pos = p.xyz;
+  v_normal = u_normal * a_normal;
+  gl_Position = u_proj * p;
+}
+)";
+
+constexpr const char* kFragment = R"(#version 330 core
+in vec3 v_pos;
+in vec3 v_normal;
+out vec4 o_color;
+uniform vec3 u_ambient, u_diffuse, u_specular, u_emissive;
+uniform float u_shininess, u_alpha;
+uniform int u_unlit;
+uniform int u_two_sided;    // light the back of a face as its front
+uniform int u_lights;
+uniform int u_kind[8];      // 0 directional, 1 point, 2 spot
+uniform vec3 u_lcolor[8];   // colour times intensity
+uniform vec3 u_lpos[8];     // view space
+uniform vec3 u_ldir[8];     // view space, where it shines
+uniform float u_lcos[8];    // cosine of a spot's half-angle
+uniform int u_fog;          // 0 none, 1 linear, 2 exponential
+uniform vec3 u_fog_color;
+uniform float u_fog_visibility;
+void main() {
+  vec3 c = u_emissive;
+  if (u_unlit == 0) {
+    vec3 n = normalize(v_normal);
+    if (!gl_FrontFacing && u_two_sided != 0) n = -n;
+    vec3 v = normalize(-v_pos);
+    c += 0.25 * u_ambient;
+    float exponent = max(1.0, 128.0 * u_shininess);
+    for (int i = 0; i < u_lights; ++i) {
+      vec3 l;
+      float k = 1.0;
+      if (u_kind[i] == 0) {
+        l = normalize(-u_ldir[i]);
+      } else {
+        l = normalize(u_lpos[i] - v_pos);
+        if (u_kind[i] == 2) {
+          float s = dot(-l, normalize(u_ldir[i]));
+          k = smoothstep(u_lcos[i], u_lcos[i] + 0.02, s);
+        }
+      }
+      float nl = max(dot(n, l), 0.0);
+      vec3 h = normalize(l + v);
+      float spec = nl > 0.0 ? pow(max(dot(n, h), 0.0), exponent) : 0.0;
+      c += k * u_lcolor[i] * (u_diffuse * nl + u_specular * spec);
+    }
+  }
+  if (u_fog != 0) {
+    float d = length(v_pos);
+    float f = u_fog == 1 ? clamp(1.0 - d / u_fog_visibility, 0.0, 1.0) : exp(-4.605 * d / u_fog_visibility);
+    c = mix(u_fog_color, c, f);
+  }
+  o_color = vec4(clamp(c, 0.0, 1.0), u_alpha);
+}
+)";
+
+GLuint compile(GLenum kind, const char* text) {
+  const GLuint s = glCreateShader(kind);
+  glShaderSource(s, 1, &text, nullptr);
+  glCompileShader(s);
+  return s;
+}
+
+}  // namespace
+
+ShaderProgram::ShaderProgram() {
+  const GLuint vs = compile(GL_VERTEX_SHADER, kVertex), fs = compile(GL_FRAGMENT_SHADER, kFragment);
+  id_ = glCreateProgram();
+  glAttachShader(id_, vs);
+  glAttachShader(id_, fs);
+  glLinkProgram(id_);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
+}
+
+ShaderProgram::~ShaderProgram() { glDeleteProgram(id_); }
+
+void ShaderProgram::use() const { glUseProgram(id_); }
+
+GLint ShaderProgram::uniform(const std::string& name) {
+  auto it = uniforms_.find(name);
+  if (it == uniforms_.end()) it = uniforms_.emplace(name, glGetUniformLocation(id_, name.c_str())).first;
+  return it->second;
+}
+
+}  // namespace gdpn::render::detail
