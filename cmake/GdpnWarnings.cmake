@@ -12,13 +12,14 @@ function(gdpn_warnings target)
   endif()
 endfunction()
 
-# gdpn_module(name sources...): one library target gdpn_<name> with alias gdpn::<name>.
+# gdpn_module(name sources...): one library target gdpn_<name> with alias gdpn::<name>. Only
+# the public headers (include/) are on the include path: a module's private headers stay in
+# its src/<name>/ folder and are included relative to the file that needs them, so no other
+# module can reach them.
 function(gdpn_module name)
   add_library(gdpn_${name} STATIC ${ARGN})
   add_library(gdpn::${name} ALIAS gdpn_${name})
-  target_include_directories(gdpn_${name} PUBLIC
-    $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
-    $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/src>)
+  target_include_directories(gdpn_${name} PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>)
   set_target_properties(gdpn_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
   gdpn_warnings(gdpn_${name})
 endfunction()

@@ -1,6 +1,6 @@
 // Reading model files: YAML text -> Model, with every problem located at file:line:col.
 
-#include "model/yaml.h"
+#include "yaml.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,8 +13,8 @@
 #include "gdpn/core/file.h"
 #include "gdpn/core/text.h"
 #include "gdpn/model/model.h"
-#include "model/scene_io.h"
-#include "model/yaml_reader.h"
+#include "scene_io.h"
+#include "yaml_reader.h"
 
 namespace gdpn::model {
 namespace {

@@ -1,6 +1,6 @@
 // Writing model files: Model -> canonical YAML text, and a save that never loses the old file.
 
-#include "model/yaml.h"
+#include "yaml.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -8,8 +8,8 @@
 
 #include "gdpn/core/text.h"
 #include "gdpn/model/model.h"
-#include "model/scene_io.h"
-#include "model/yaml_reader.h"
+#include "scene_io.h"
+#include "yaml_reader.h"
 
 namespace gdpn::model {
 namespace {

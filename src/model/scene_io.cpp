@@ -1,4 +1,4 @@
-#include "model/scene_io.h"
+#include "scene_io.h"
 
 
 #include "gdpn/core/text.h"

@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "gdpn/scene/node.h"
-#include "model/yaml_reader.h"
+#include "yaml_reader.h"
 
 namespace gdpn::model::detail {
 

@@ -1,4 +1,4 @@
-#include "model/yaml_reader.h"
+#include "yaml_reader.h"
 
 #include <filesystem>
 #include <fstream>

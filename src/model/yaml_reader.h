@@ -1,7 +1,7 @@
 #pragma once
 // Internal: no promises. Typed, located access to a yaml-cpp tree for the loaders.
 
-#include "model/yaml.h"
+#include "yaml.h"
 
 #include <cstdint>
 #include <optional>

@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "gdpn/net/invariants.h"
-#include "net/detail/marking_store.h"
+#include "detail/marking_store.h"
 
 namespace gdpn::net {
 namespace {

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "gdpn/core/assert.h"
-#include "net/detail/sort_keys.h"
+#include "detail/sort_keys.h"
 
 namespace gdpn::net {
 namespace {

@@ -9,7 +9,7 @@
 #include <mutex>
 #include <thread>
 
-#include "net/detail/marking_store.h"
+#include "detail/marking_store.h"
 
 namespace gdpn::net::detail {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "gdpn/core/file.h"
 #include "gdpn/core/text.h"
-#include "net/detail/xml.h"
+#include "detail/xml.h"
 
 namespace gdpn::net {
 namespace {

@@ -12,12 +12,12 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gdpn/scene/actions.h"
-#include "render/detail/gl_math.h"
-#include "render/detail/gpu_cache.h"
-#include "render/detail/look.h"
-#include "render/detail/shader_program.h"
-#include "render/detail/terrain_gpu.h"
-#include "render/detail/unit_shapes.h"
+#include "detail/gl_math.h"
+#include "detail/gpu_cache.h"
+#include "detail/look.h"
+#include "detail/shader_program.h"
+#include "detail/terrain_gpu.h"
+#include "detail/unit_shapes.h"
 
 namespace gdpn::render {
 

@@ -20,7 +20,7 @@
 
 #include "gdpn/core/text.h"
 #include "gdpn/scene/actions.h"
-#include "script/views.h"
+#include "views.h"
 
 namespace py = pybind11;
 

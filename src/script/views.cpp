@@ -1,6 +1,6 @@
 // The Python classes scripts see. Each holds a Ref to its engine and reads the kernel live.
 
-#include "script/views.h"
+#include "views.h"
 
 #include <pybind11/stl.h>
 

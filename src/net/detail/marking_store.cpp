@@ -1,4 +1,4 @@
-#include "net/detail/marking_store.h"
+#include "marking_store.h"
 
 #include "gdpn/net/invariants.h"
 

@@ -1,4 +1,4 @@
-#include "net/detail/sort_keys.h"
+#include "sort_keys.h"
 
 #include <algorithm>
 #include <array>

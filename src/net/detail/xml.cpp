@@ -1,4 +1,4 @@
-#include "net/detail/xml.h"
+#include "xml.h"
 
 #include <cstdint>
 

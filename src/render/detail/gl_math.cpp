@@ -1,4 +1,4 @@
-#include "render/detail/gl_math.h"
+#include "gl_math.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "render/detail/gpu_cache.h"
+#include "gpu_cache.h"
 
 #include <filesystem>
 #include <utility>

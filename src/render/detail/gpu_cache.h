@@ -11,8 +11,8 @@
 
 #include "gdpn/scene/mesh.h"
 #include "gdpn/scene/node.h"
-#include "render/detail/gpu_mesh.h"
-#include "render/detail/terrain_gpu.h"
+#include "gpu_mesh.h"
+#include "terrain_gpu.h"
 
 namespace gdpn::render::detail {
 

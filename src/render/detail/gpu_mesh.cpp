@@ -1,4 +1,4 @@
-#include "render/detail/gpu_mesh.h"
+#include "gpu_mesh.h"
 
 namespace gdpn::render::detail {
 

@@ -1,6 +1,6 @@
-#include "render/detail/look.h"
+#include "look.h"
 
-#include "render/detail/gl_math.h"
+#include "gl_math.h"
 
 namespace gdpn::render::detail {
 

@@ -1,4 +1,4 @@
-#include "render/detail/shader_program.h"
+#include "shader_program.h"
 
 namespace gdpn::render::detail {
 

@@ -1,11 +1,11 @@
-#include "render/detail/terrain_gpu.h"
+#include "terrain_gpu.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <utility>
 
-#include "render/detail/gpu_mesh.h"
+#include "gpu_mesh.h"
 
 namespace gdpn::render::detail {
 

@@ -1,4 +1,4 @@
-#include "render/detail/unit_shapes.h"
+#include "unit_shapes.h"
 
 #include <cmath>
 #include <numbers>
@@ -6,7 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/detail/gl_math.h"
+#include "gl_math.h"
 
 namespace gdpn::render::detail {
 

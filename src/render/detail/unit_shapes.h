@@ -6,7 +6,7 @@
 #include <glm/glm.hpp>
 
 #include "gdpn/core/math.h"
-#include "render/detail/gpu_mesh.h"
+#include "gpu_mesh.h"
 
 namespace gdpn::render::detail {
 
