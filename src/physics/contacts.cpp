@@ -17,6 +17,7 @@ Surface World::Impl::surfaceFor(const Node& n, const scene::TraversalState& st, 
   Surface surface;
   surface.node = &n;
   // the material in effect
+  surface.material = st.material;
   if (st.material) {
     surface.friction = st.material->number(scene::field::Material::Friction);
     surface.bounce = st.material->number(scene::field::Material::Bounce);
@@ -27,6 +28,7 @@ Surface World::Impl::surfaceFor(const Node& n, const scene::TraversalState& st, 
       if (sib->kind() != NodeKind::Conveyor) continue;
       surface.conveyor = true;
       surface.conveyor_node = sib.get();
+      surface.conveyor_field = sib->vec3(scene::field::Conveyor::Direction);
       surface.conveyor_dir = conveyorDirection(*sib, body);
     }
   }
@@ -37,6 +39,22 @@ Vec3 World::Impl::conveyorDirection(const Node& conveyor, const Body* body) {
   // the belt's direction in the world, then in the frame of the body that carries the belt
   const Vec3 dir_world = conveyor.world.rotation.rotate(conveyor.vec3(scene::field::Conveyor::Direction)).normalized();
   return body ? bodyPose(body->id).rotation.conjugate().rotate(dir_world) : dir_world;
+}
+
+void World::Impl::refreshSurfaces(const Node& n) {
+  // the surfaces of the shapes there are now that take something from `n`
+  for (dGeomID g : shapes) {
+    Surface& s = surfaces[reinterpret_cast<std::size_t>(dGeomGetData(g)) - 1];
+    if (s.material == &n) {
+      s.friction = n.number(scene::field::Material::Friction);
+      s.bounce = n.number(scene::field::Material::Bounce);
+    }
+    // a belt turned: its direction made again (a belt's speed is read at each contact)
+    if (s.conveyor_node == &n && n.vec3(scene::field::Conveyor::Direction) != s.conveyor_field) {
+      s.conveyor_field = n.vec3(scene::field::Conveyor::Direction);
+      s.conveyor_dir = conveyorDirection(n, owner(*s.node));
+    }
+  }
 }
 
 Surface World::Impl::surfaceOf(dGeomID g, const Impl& self) {

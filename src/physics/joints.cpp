@@ -118,6 +118,22 @@ dJointID World::Impl::makeJoint(const Node& n, JointKind kind, dBodyID child, dB
   return j;
 }
 
+void World::Impl::refreshJoint(const Node& n) {
+  const auto it = joint_of.find(n.handle());
+  if (it == joint_of.end()) return;
+  Joint& jt = joints[it->second];
+  jt.control = n.choice<JointControl>(F::Control);
+  const auto kind = n.choice<JointKind>(F::Kind);
+  if (kind == jt.kind) return;
+  // a joint of another kind: made again between the same bodies, where they are now
+  dBodyID child = dJointGetBody(jt.id, 0), parent = dJointGetBody(jt.id, 1);
+  dJointDestroy(jt.id);
+  jt.id = makeJoint(n, kind, child, parent);
+  jt.kind = kind;
+  if (child) dBodyEnable(child);
+  if (parent) dBodyEnable(parent);
+}
+
 double World::Impl::position(const Joint& j, int axis) {
   switch (j.kind) {
     case JointKind::Hinge: return dJointGetHingeAngle(j.id);

@@ -98,6 +98,21 @@ void World::Impl::addSensor(Node& n) {
   retagSensors();
 }
 
+void World::Impl::refreshSensor(const Node& n) {
+  for (std::size_t i = 0; i < sensors.size(); ++i) {
+    Sensor& sensor = sensors[i];
+    if (sensor.node != &n) continue;
+    const SensorSpec spec = sensorSpec(n);
+    sensor.scope = spec.scope;
+    if (spec.volume == sensor.volume) continue;
+    // a new shape or size: a new geometry in the same place in the list
+    dGeomDestroy(sensor.geom);
+    sensor.geom = sensorGeom(space, spec.volume);
+    sensor.volume = spec.volume;
+    dGeomSetData(sensor.geom, reinterpret_cast<void*>(kSensorTag | i));
+  }
+}
+
 void World::Impl::retagSensors() {
   for (std::size_t i = 0; i < sensors.size(); ++i) {
     dGeomSetData(sensors[i].geom, reinterpret_cast<void*>(kSensorTag | i));

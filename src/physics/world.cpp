@@ -1,5 +1,5 @@
-// The World façade: making the ODE world from the scene's settings, stepping it, and writing
-// the bodies' placements back into the scene.
+// The World façade: making the ODE world from the scene's settings, stepping it, writing
+// the bodies' placements back into the scene, and hearing of fields a script changed.
 
 #include "gdpn/physics/world.h"
 
@@ -104,6 +104,37 @@ std::unique_ptr<World> World::create(scene::Scene& scene, const std::string& mod
 }
 
 void World::step(double dt) { impl_->step(dt); }
+
+void World::fieldChanged(const scene::Node& node) {
+  switch (node.kind()) {
+    // what the world keeps of a node, read again
+    case NodeKind::Joint: impl_->refreshJoint(node); return;
+    case NodeKind::Region:
+    case NodeKind::RangeFinder: impl_->refreshSensor(node); return;
+    case NodeKind::Material:
+    case NodeKind::Conveyor: impl_->refreshSurfaces(node); return;
+    // the rest holds as built, or is read every step
+    case NodeKind::Group:
+    case NodeKind::Transform:
+    case NodeKind::Light:
+    case NodeKind::Camera:
+    case NodeKind::Fog:
+    case NodeKind::Cube:
+    case NodeKind::Sphere:
+    case NodeKind::Cylinder:
+    case NodeKind::Cone:
+    case NodeKind::Plane:
+    case NodeKind::Mesh:
+    case NodeKind::Terrain:
+    case NodeKind::World:
+    case NodeKind::Body:
+    case NodeKind::GradientField:
+    case NodeKind::GradientSensor:
+    case NodeKind::KeyboardSensor:
+    case NodeKind::MouseSensor:
+    case NodeKind::TimeSensor: return;
+  }
+}
 
 bool World::add(scene::Node& top, core::Diagnostics& diags) { return impl_->addSubtree(top, diags); }
 void World::remove(const scene::Node& top) { impl_->removeSubtree(top); }

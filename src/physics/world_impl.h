@@ -36,6 +36,8 @@ struct Primitive {
   double radius = 0;       ///< Sphere, Cylinder: m
   double height = 0;       ///< Cylinder: m, along z
   double length = 0;       ///< Ray: m, along +x
+  /// Same form and sizes.
+  bool operator==(const Primitive&) const = default;
 };
 
 /// A box of `extent` (scene::shapeExtent, m) with each edge scaled by `scale`.
@@ -55,8 +57,10 @@ Primitive shapePrimitive(const scene::Node& n);
 struct Surface {
   double friction = 0.8;                  ///< the Material's, or the default
   double bounce = 0.0;                    ///< restitution, 0 to 1
+  const scene::Node* material = nullptr;  ///< the Material in effect, or null
   const scene::Node* conveyor_node = nullptr;  ///< the Conveyor beside the shape: its speed is read at each contact
   core::Vec3 conveyor_dir;                ///< belt direction, unit, in the frame of the geometry's body (world frame if static)
+  core::Vec3 conveyor_field;              ///< the Conveyor's `direction` as conveyor_dir was made from
   bool conveyor = false;                  ///< a Conveyor is beside the shape
   const scene::Node* node = nullptr;      ///< the shape
 };
@@ -183,6 +187,8 @@ struct World::Impl {
   static double position(const Joint& j, int axis);
   /// Sets every joint's motors from its node's fields (a script may have set them).
   void driveMotors();
+  /// Reads a Joint node's kind and control again (World::fieldChanged).
+  void refreshJoint(const scene::Node& n);
 
   // contacts.cpp
   /// What shape `n`, on `body` (null: static), brings to contacts: the material in effect in
@@ -190,6 +196,8 @@ struct World::Impl {
   Surface surfaceFor(const scene::Node& n, const scene::TraversalState& st, const Body* body) const;
   /// A Conveyor's belt direction, unit, in the frame of `body` (the world's when null).
   static core::Vec3 conveyorDirection(const scene::Node& conveyor, const Body* body);
+  /// Reads again what the surfaces take from Material or Conveyor `n` (World::fieldChanged).
+  void refreshSurfaces(const scene::Node& n);
   /// The surface of geometry `g` (the default one for a sensor or an unknown geometry).
   static Surface surfaceOf(dGeomID g, const Impl& self);
   /// True when `belt` is a running belt and wakes `other`, a sleeping body lying on it (a
@@ -220,6 +228,8 @@ struct World::Impl {
   void feel(std::size_t index, dGeomID other);
   /// Places each sensor where its node is, then meets it with the shapes its box overlaps.
   void sense(std::vector<std::pair<scene::NodeHandle, Feel>>& out);
+  /// Reads a sensor node's scope and volume again (World::fieldChanged).
+  void refreshSensor(const scene::Node& n);
 
   // world.cpp: stepping
   /// Advances `dt` seconds: motors, then per sub-step forces, contacts and ODE's step.
