@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "gdpn/model/model.h"
 #include "gdpn/physics/world.h"
@@ -166,17 +169,16 @@ TEST(Physics, ABoxOnAConveyorReachesTheBeltSpeed) {
   EXPECT_GT(box.world.position.x, -4 + 1.0);  // it has travelled along +x
 }
 
+/// A scene of one hinge, "shoulder", at the origin with the joint fields `fields` (YAML, flow
+/// style), turning a 1 m arm of 2 kg that reaches out along +x.
+std::string armOnAHinge(const std::string& fields) {
+  return "  - Joint: {name: shoulder, kind: hinge, " + fields +
+         ", children: [{Body: {name: arm, mass: 2, children: [{Transform: {translation: [0.5, 0, 0], "
+         "children: [{Cube: {size: [1, 0.1, 0.1]}}]}}]}}]}\n";
+}
+
 TEST(Physics, AHingeMotorReachesItsTargetVelocity) {
-  Plant p(R"(
-  - Joint:
-      name: shoulder
-      kind: hinge
-      axis1: [0, 0, 1]
-      vel1: 90
-      fmax1: 50
-      children:
-        - Body: {name: arm, mass: 2, children: [{Transform: {translation: [0.5, 0, 0], children: [{Cube: {size: [1, 0.1, 0.1]}}]}}]}
-)");
+  Plant p(armOnAHinge("axis1: [0, 0, 1], vel1: 90, fmax1: 50"));
   p.run(1.0, 1.0 / 500);
   const auto& shoulder = p.node("shoulder");
   EXPECT_NEAR(p.world->jointRate(shoulder), core::radians(90), 0.01 * core::radians(90));
@@ -187,18 +189,7 @@ TEST(Physics, AHingeMotorReachesItsTargetVelocity) {
 TEST(Physics, APositionControlledHingeClosesItsErrorExponentiallyAndHoldsAgainstGravity) {
   // a horizontal arm about a horizontal axis, so gravity pulls it off its target; a strong
   // motor, no speed cap: the error shrinks as exp(-t / servo_time) (less a small sag)
-  Plant p(R"(
-  - Joint:
-      name: shoulder
-      kind: hinge
-      axis1: [0, 1, 0]
-      control: position
-      target1: -30
-      servo_time: 0.2
-      fmax1: 500
-      children:
-        - Body: {name: arm, mass: 2, children: [{Transform: {translation: [0.5, 0, 0], children: [{Cube: {size: [1, 0.1, 0.1]}}]}}]}
-)");
+  Plant p(armOnAHinge("axis1: [0, 1, 0], control: position, target1: -30, servo_time: 0.2, fmax1: 500"));
   const auto& shoulder = p.node("shoulder");
   p.run(0.2, 1.0 / 500);
   // after one servo time: e^-1 of the 30 degrees left
@@ -233,6 +224,66 @@ TEST(Physics, APositionControlledSliderMovesNoFasterThanVel1AndStopsAtItsTarget)
   p.run(2.0, 1.0 / 500);
   EXPECT_NEAR(p.world->jointPosition(rail), 0.8, 0.002);
   EXPECT_NEAR(p.world->jointRate(rail), 0.0, 0.01);
+}
+
+TEST(Physics, AJointSwitchedToPositionControlByAScriptServoesToItsTarget) {
+  // a hinge about the vertical axis runs at vel1 (90 deg/s) past its target (30 degrees) in
+  // velocity control; switched to position control (as a script does: set the field, then
+  // tell the world), it turns back to the target and holds there, vel1 now capping its speed
+  Plant p(armOnAHinge("axis1: [0, 0, 1], vel1: 90, fmax1: 50, target1: 30, servo_time: 0.1"));
+  auto& shoulder = p.node("shoulder");
+  p.run(0.6, 1.0 / 500);
+  // velocity control: it ignores the target
+  EXPECT_NEAR(p.world->jointRate(shoulder), core::radians(90), 0.01 * core::radians(90));
+  EXPECT_GT(p.world->jointPosition(shoulder), core::radians(45));
+  shoulder.setValue(scene::field::Joint::Control, std::string("position"));
+  p.world->fieldChanged(shoulder);
+  p.run(0.2, 1.0 / 500);
+  // on its way back, no faster than vel1
+  EXPECT_LT(p.world->jointRate(shoulder), 0.0);
+  EXPECT_GE(p.world->jointRate(shoulder), -core::radians(90) * 1.01);
+  p.run(1.5, 1.0 / 500);
+  EXPECT_NEAR(p.world->jointPosition(shoulder), core::radians(30), core::radians(0.5));
+  EXPECT_NEAR(p.world->jointRate(shoulder), 0.0, 0.01);
+}
+
+/// The bodies a sensor feels now, by name.
+std::vector<std::string> felt(World& world, const scene::Scene& scene, const scene::Node& sensor) {
+  std::vector<std::pair<scene::NodeHandle, World::Feel>> out;
+  world.sense(out);
+  std::vector<std::string> names;
+  for (const auto& [handle, feel] : out) {
+    if (handle != sensor.handle()) continue;
+    for (auto item : feel.items) names.push_back(scene.resolve(item)->name());
+  }
+  return names;
+}
+
+TEST(Physics, ARegionWhoseScopeOrSizeAScriptChangesFeelsWhatItSaysAfterwards) {
+  // two boxes float inside a 1 m region: one beside it in its cell, one from elsewhere
+  Plant p(R"(
+  - World: {gravity: [0, 0, 0]}
+  - Transform:
+      name: cell
+      children:
+        - Region: {name: eye, size: [1, 1, 1], scope: siblings}
+        - Transform: {translation: [-0.2, 0, 0], children: [{Body: {name: mine, mass: 1, children: [{Cube: {size: [0.1, 0.1, 0.1]}}]}}]}
+  - Transform:
+      translation: [0.3, 0, 0]
+      children:
+        - Body: {name: stranger, mass: 1, children: [{Cube: {size: [0.1, 0.1, 0.1]}}]}
+)");
+  auto& eye = p.node("cell/eye");
+  p.run(0.1, 1.0 / 500);
+  EXPECT_EQ(felt(*p.world, *p.scene, eye), std::vector<std::string>{"mine"});
+  // the whole world in scope: the stranger is felt too
+  eye.setValue(scene::field::Region::Scope, std::string("world"));
+  p.world->fieldChanged(eye);
+  EXPECT_EQ(felt(*p.world, *p.scene, eye), (std::vector<std::string>{"stranger", "mine"}));  // by path
+  // a volume 0.2 m across, which neither box reaches
+  eye.setValue(scene::field::Region::Size, std::array<double, 3>{0.2, 0.2, 0.2});
+  p.world->fieldChanged(eye);
+  EXPECT_TRUE(felt(*p.world, *p.scene, eye).empty());
 }
 
 TEST(Physics, AnAttachedBoxFollowsTheArmThenFallsWhenDetached) {

@@ -14,9 +14,10 @@
 
 namespace gdpn::physics {
 
-/// The physics of one scene. It reads joint motor fields (vel1, fmax1, ...) every step, so a
-/// script that sets them drives the joint, and it writes each moving body's placement back
-/// into the scene (Node::dynamic_pose, Node::world).
+/// The physics of one scene. It reads joint motor fields (vel1, fmax1, ...) and conveyor
+/// speeds every step, so a script that sets them drives the joint or the belt; what else it
+/// keeps of a node it reads again when told through fieldChanged(). It writes each moving
+/// body's placement back into the scene (Node::dynamic_pose, Node::world).
 class World {
  public:
   /// Builds bodies, geometry, joints, conveyors and contacts from `scene` (which must outlive
@@ -30,6 +31,20 @@ class World {
 
   /// Advances by `dt` seconds in the World node's sub-steps, then updates the scene.
   void step(double dt);
+
+  /// Tells the world that fields of `node` were assigned; the scripting layer calls it after
+  /// every assignment of a field. The world reads again what it keeps of that node:
+  /// - a Joint's `kind` and `control` (a new kind makes the joint again between the same
+  ///   bodies, where they are now: its positions count from there);
+  /// - a Region's or RangeFinder's `scope`, and its volume (`shape`, `size`, `radius`,
+  ///   `height`, `length`; a changed volume gets a new geometry);
+  /// - a Conveyor's `direction` (its `speed` is read at every contact anyway);
+  /// - a Material's `friction` and `bounce`, for the shapes it colours.
+  /// Motor fields (vel1, fmax1, vel2, fmax2, target1, servo_time) are read every step and need
+  /// no call. Everything else holds as built: a body's mass and damping, a shape's size, a
+  /// joint's anchor, axes and limits, the World settings. Nodes of other kinds, and nodes
+  /// this world does not hold, are ignored.
+  void fieldChanged(const scene::Node& node);
 
   /// True when `node` is a Body this world moves.
   [[nodiscard]] bool isBody(const scene::Node& node) const;

@@ -1,0 +1,149 @@
+// Bodies: one ODE body per Body node, its mass from its own shapes, and what the World
+// tells and takes of a body (velocity, forces, sleep).
+
+#include "gdpn/core/assert.h"
+#include "physics/ode_convert.h"
+#include "physics/world_impl.h"
+
+namespace gdpn::physics {
+namespace {
+
+using core::Pose;
+using core::Vec3;
+using scene::Node;
+using scene::NodeKind;
+using Form = Primitive::Form;
+
+template <class B>
+B& need(B* b) {
+  GDPN_ASSERT(b != nullptr, "the node belongs to a body of this world");
+  return *b;
+}
+
+}  // namespace
+
+World::Impl::Body* World::Impl::owner(const Node& node) {
+  for (const Node* n = &node; n; n = n->parent()) {
+    auto it = body_of.find(n->handle());
+    if (it != body_of.end()) return &bodies[it->second];
+  }
+  return nullptr;
+}
+
+void World::Impl::buildBodies(Node& node) {
+  // bodies below a body are made before its mass is summed, so its shapes know their owner
+  const bool body = node.kind() == NodeKind::Body;
+  if (body) {
+    dBodyID id = dBodyCreate(world);
+    bodies.push_back({&node, id, {}, {}, {}, {}});
+    body_of[node.handle()] = bodies.size() - 1;
+  }
+  for (const auto& c : node.children()) buildBodies(*c);
+  if (body) finishBody(bodies[body_of[node.handle()]]);
+}
+
+void World::Impl::finishBody(Body& body) {
+  Node& node = *body.node;
+  using F = scene::field::Body;
+  const double density = node.number(F::Density);
+  const double total = node.number(F::Mass);
+  dMass m;
+  dMassSetZero(&m);
+  const Pose inv = node.world.inverse();
+  scene::traverse(node, [&](Node& n, const scene::TraversalState&) {
+    const Primitive p = shapePrimitive(n);
+    if (p.form == Form::None || owner(n) != &body) return;
+    dMass sm;
+    switch (p.form) {
+      case Form::Box:
+        if (p.box.x <= 0 || p.box.y <= 0 || p.box.z <= 0) return;
+        dMassSetBox(&sm, density, p.box.x, p.box.y, p.box.z);
+        break;
+      case Form::Sphere:
+        if (p.radius <= 0) return;
+        dMassSetSphere(&sm, density, p.radius);
+        break;
+      case Form::Cylinder:
+        if (p.radius <= 0 || p.height <= 0) return;
+        dMassSetCylinder(&sm, density, 3, p.radius, p.height);
+        break;
+      case Form::Mesh: {
+        // a mesh weighs as its bounding box (open meshes have no volume of their own); a
+        // mesh that cannot be read is reported when its geometry is made
+        core::Diagnostics later;
+        const MeshGeometry* mesh = meshOf(n, model_dir, later);
+        if (mesh == nullptr) return;
+        const Vec3 size = mesh->box.hi - mesh->box.lo;
+        if (size.x <= 0 || size.y <= 0 || size.z <= 0) return;
+        dMassSetBox(&sm, density, size.x, size.y, size.z);
+        const Vec3 c = (mesh->box.lo + mesh->box.hi) * 0.5;
+        dMassTranslate(&sm, c.x, c.y, c.z);
+        break;
+      }
+      // ground has no mass (and cannot be part of a body: see addGeom)
+      case Form::None:
+      case Form::Ray:
+      case Form::Plane:
+      case Form::Terrain: return;
+    }
+    const Pose local = inv * n.world;  // the shape in the body node's frame
+    dMatrix3 r;
+    rotationMatrix(local.rotation, r);
+    dMassRotate(&sm, r);
+    dMassTranslate(&sm, local.position.x, local.position.y, local.position.z);
+    dMassAdd(&m, &sm);
+  });
+  if (m.mass <= 0) dMassSetSphereTotal(&m, total > 0 ? total : 1.0, 0.05);
+  if (total > 0) dMassAdjust(&m, total);
+  body.com = {m.c[0], m.c[1], m.c[2]};
+  dMassTranslate(&m, -m.c[0], -m.c[1], -m.c[2]);
+  dBodySetMass(body.id, &m);
+  setPose(body.id, {node.world.apply(body.com), node.world.rotation});
+  const double ld = node.number(F::LinearDamping), ad = node.number(F::AngularDamping);
+  if (ld > 0) dBodySetLinearDamping(body.id, ld);
+  if (ad > 0) dBodySetAngularDamping(body.id, ad);
+  node.dynamic_pose = node.world;
+}
+
+bool World::isBody(const scene::Node& node) const { return impl_->body_of.count(node.handle()) > 0; }
+
+core::Vec3 World::velocity(const scene::Node& body) const { return v3(dBodyGetLinearVel(need(impl_->owner(body)).id)); }
+double World::mass(const scene::Node& body) const {
+  dMass m;
+  dBodyGetMass(need(impl_->owner(body)).id, &m);
+  return m.mass;
+}
+core::Vec3 World::angularVelocity(const scene::Node& body) const {
+  return v3(dBodyGetAngularVel(need(impl_->owner(body)).id));
+}
+void World::setVelocity(const scene::Node& body, core::Vec3 v) {
+  auto& b = need(impl_->owner(body));
+  dBodyEnable(b.id);
+  dBodySetLinearVel(b.id, v.x, v.y, v.z);
+}
+void World::setForce(const scene::Node& body, core::Vec3 force) {
+  auto& b = need(impl_->owner(body));
+  dBodyEnable(b.id);
+  b.force = force;
+}
+void World::addForce(const scene::Node& body, core::Vec3 force) {
+  auto& b = need(impl_->owner(body));
+  dBodyEnable(b.id);
+  b.pending = b.pending + force;
+}
+void World::setTorque(const scene::Node& body, core::Vec3 torque) {
+  auto& b = need(impl_->owner(body));
+  dBodyEnable(b.id);
+  b.torque = torque;
+}
+bool World::awake(const scene::Node& body) const { return dBodyIsEnabled(need(impl_->owner(body)).id) != 0; }
+void World::wake(const scene::Node& body) { dBodyEnable(need(impl_->owner(body)).id); }
+
+std::size_t World::bodyCount() const { return impl_->body_of.size(); }
+std::size_t World::awakeCount() const {
+  std::size_t n = 0;
+  for (const auto& b : impl_->bodies) n += b.id && dBodyIsEnabled(b.id) ? 1u : 0u;
+  return n;
+}
+
+}  // namespace gdpn::physics

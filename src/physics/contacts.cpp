@@ -1,0 +1,119 @@
+// Contacts: what each shape brings to a contact (its material's friction and bounce, the
+// belt of a conveyor beside it), and the contact joints made where two shapes touch.
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/ode_convert.h"
+#include "physics/world_impl.h"
+
+namespace gdpn::physics {
+
+using core::Vec3;
+using scene::Node;
+using scene::NodeKind;
+
+Surface World::Impl::surfaceFor(const Node& n, const scene::TraversalState& st, const Body* body) const {
+  Surface surface;
+  surface.node = &n;
+  // the material in effect
+  surface.material = st.material;
+  if (st.material) {
+    surface.friction = st.material->number(scene::field::Material::Friction);
+    surface.bounce = st.material->number(scene::field::Material::Bounce);
+  }
+  // a conveyor among the shape's siblings (the last one, if several)
+  if (n.parent()) {
+    for (const auto& sib : n.parent()->children()) {
+      if (sib->kind() != NodeKind::Conveyor) continue;
+      surface.conveyor = true;
+      surface.conveyor_node = sib.get();
+      surface.conveyor_field = sib->vec3(scene::field::Conveyor::Direction);
+      surface.conveyor_dir = conveyorDirection(*sib, body);
+    }
+  }
+  return surface;
+}
+
+Vec3 World::Impl::conveyorDirection(const Node& conveyor, const Body* body) {
+  // the belt's direction in the world, then in the frame of the body that carries the belt
+  const Vec3 dir_world = conveyor.world.rotation.rotate(conveyor.vec3(scene::field::Conveyor::Direction)).normalized();
+  return body ? bodyPose(body->id).rotation.conjugate().rotate(dir_world) : dir_world;
+}
+
+void World::Impl::refreshSurfaces(const Node& n) {
+  // the surfaces of the shapes there are now that take something from `n`
+  for (dGeomID g : shapes) {
+    Surface& s = surfaces[reinterpret_cast<std::size_t>(dGeomGetData(g)) - 1];
+    if (s.material == &n) {
+      s.friction = n.number(scene::field::Material::Friction);
+      s.bounce = n.number(scene::field::Material::Bounce);
+    }
+    // a belt turned: its direction made again (a belt's speed is read at each contact)
+    if (s.conveyor_node == &n && n.vec3(scene::field::Conveyor::Direction) != s.conveyor_field) {
+      s.conveyor_field = n.vec3(scene::field::Conveyor::Direction);
+      s.conveyor_dir = conveyorDirection(n, owner(*s.node));
+    }
+  }
+}
+
+Surface World::Impl::surfaceOf(dGeomID g, const Impl& self) {
+  const auto i = reinterpret_cast<std::size_t>(dGeomGetData(g));
+  return i == 0 || (i & kSensorTag) ? Surface{} : self.surfaces[i - 1];
+}
+
+bool World::Impl::beltWakes(dGeomID belt, dBodyID other) const {
+  if (other == nullptr || dBodyIsEnabled(other)) return false;
+  const auto i = reinterpret_cast<std::size_t>(dGeomGetData(belt));
+  if (i == 0 || (i & kSensorTag) != 0) return false;
+  const Surface& s = surfaces[i - 1];
+  if (!s.conveyor || s.conveyor_node->number(scene::field::Conveyor::Speed) == 0.0) return false;
+  dBodyEnable(other);
+  return true;
+}
+
+void World::Impl::nearCallback(void* data, dGeomID o1, dGeomID o2) {
+  auto& self = *static_cast<Impl*>(data);
+  // sensors never get here: the broad phase pairs shapes only (sense() pairs the sensors)
+  dBodyID b1 = dGeomGetBody(o1), b2 = dGeomGetBody(o2);
+  // nothing to do between static shapes, or where everything involved sleeps
+  const bool awake1 = b1 && dBodyIsEnabled(b1), awake2 = b2 && dBodyIsEnabled(b2);
+  if (!awake1 && !awake2 && !self.beltWakes(o1, b2) && !self.beltWakes(o2, b1)) return;
+  if (b1 && b2 && dAreConnectedExcluding(b1, b2, dJointTypeContact)) return;
+  constexpr int kMax = 8;
+  dContact contact[kMax];
+  const int n = dCollide(o1, o2, kMax, &contact[0].geom, sizeof(dContact));
+  if (n == 0) return;
+  const Surface s1 = surfaceOf(o1, self), s2 = surfaceOf(o2, self);
+  // a conveyor's belt velocity, seen from body 1 relative to body 2
+  const bool belt1 = s1.conveyor, belt2 = !belt1 && s2.conveyor;
+  Vec3 dir;
+  double motion = 0;
+  if (belt1 || belt2) {
+    const Surface& belt = belt1 ? s1 : s2;
+    const dBodyID belt_body = belt1 ? b1 : b2;
+    dir = belt_body ? bodyPose(belt_body).rotation.rotate(belt.conveyor_dir) : belt.conveyor_dir;
+    // the speed now: a script may start and stop a belt
+    const double speed = belt.conveyor_node->number(scene::field::Conveyor::Speed);
+    motion = belt1 ? -speed : speed;
+  }
+  for (int i = 0; i < n; ++i) {
+    dSurfaceParameters& sp = contact[i].surface;
+    sp.mode = dContactBounce | dContactApprox1;
+    const double mu = std::sqrt(s1.friction * s2.friction);
+    sp.mu = mu > 1e6 ? dInfinity : mu;
+    sp.bounce = std::max(s1.bounce, s2.bounce);
+    sp.bounce_vel = 0.01;
+    if (belt1 || belt2) {
+      sp.mode |= dContactFDir1 | dContactMotion1;
+      contact[i].fdir1[0] = dir.x;
+      contact[i].fdir1[1] = dir.y;
+      contact[i].fdir1[2] = dir.z;
+      sp.motion1 = motion;
+    }
+    dJointID c = dJointCreateContact(self.world, self.contacts, &contact[i]);
+    dJointAttach(c, b1, b2);
+  }
+}
+
+}  // namespace gdpn::physics

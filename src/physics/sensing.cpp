@@ -1,0 +1,207 @@
+// Sensing: a geometry for each Region and RangeFinder, never in contacts, placed where its
+// node is at each pass and met with the shapes whose boxes it overlaps.
+
+#include <algorithm>
+
+#include "physics/ode_convert.h"
+#include "physics/world_impl.h"
+
+namespace gdpn::physics {
+namespace {
+
+using core::Vec3;
+using scene::Node;
+using scene::NodeKind;
+using Form = Primitive::Form;
+
+/// What a sensor node is made as: its volume and what it feels.
+struct SensorSpec {
+  Primitive volume;                         // None: no geometry (a time sensor, or no sensor)
+  scene::Scope scope = scene::Scope::World;
+};
+
+Primitive rayPrimitive(double length) {
+  Primitive p;
+  p.form = Form::Ray;
+  p.length = length;
+  return p;
+}
+
+SensorSpec sensorSpec(const Node& n) {
+  switch (n.kind()) {
+    case NodeKind::RangeFinder:
+      return {rayPrimitive(n.number(scene::field::RangeFinder::Length)),
+              n.choice<scene::Scope>(scene::field::RangeFinder::Scope)};
+    case NodeKind::Region: {
+      using F = scene::field::Region;
+      const Vec3 e = scene::shapeExtent(n), s = n.world_scale;
+      const auto scope = n.choice<scene::Scope>(F::Scope);
+      switch (n.choice<scene::RegionShape>(F::Shape)) {
+        case scene::RegionShape::Box: return {boxPrimitive(e, s), scope};
+        case scene::RegionShape::Sphere: return {spherePrimitive(e, s), scope};
+        case scene::RegionShape::Cylinder: return {cylinderPrimitive(e, s, false), scope};
+        case scene::RegionShape::Cone: return {cylinderPrimitive(e, s, true), scope};
+        case scene::RegionShape::Ray: return {rayPrimitive(n.number(F::Length)), scope};
+      }
+      return {};
+    }
+    // other sensors need no geometry; the rest are no sensors
+    case NodeKind::Group:
+    case NodeKind::Transform:
+    case NodeKind::Material:
+    case NodeKind::Light:
+    case NodeKind::Camera:
+    case NodeKind::Fog:
+    case NodeKind::Cube:
+    case NodeKind::Sphere:
+    case NodeKind::Cylinder:
+    case NodeKind::Cone:
+    case NodeKind::Plane:
+    case NodeKind::Mesh:
+    case NodeKind::Terrain:
+    case NodeKind::World:
+    case NodeKind::Body:
+    case NodeKind::Joint:
+    case NodeKind::Conveyor:
+    case NodeKind::GradientField:
+    case NodeKind::GradientSensor:
+    case NodeKind::KeyboardSensor:
+    case NodeKind::MouseSensor:
+    case NodeKind::TimeSensor: return {};
+  }
+  return {};
+}
+
+/// A sensor's geometry in `space`; a volume's sizes are taken as at least 1e-9 m.
+dGeomID sensorGeom(dSpaceID space, const Primitive& v) {
+  constexpr double kLeast = 1e-9;
+  switch (v.form) {
+    case Form::Box:
+      return dCreateBox(space, std::max(v.box.x, kLeast), std::max(v.box.y, kLeast), std::max(v.box.z, kLeast));
+    case Form::Sphere: return dCreateSphere(space, std::max(v.radius, kLeast));
+    case Form::Cylinder: return dCreateCylinder(space, std::max(v.radius, kLeast), std::max(v.height, kLeast));
+    case Form::Ray: return dCreateRay(space, v.length);
+    case Form::None:
+    case Form::Mesh:
+    case Form::Plane:
+    case Form::Terrain: return nullptr;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+void World::Impl::addSensor(Node& n) {
+  const SensorSpec spec = sensorSpec(n);
+  if (spec.volume.form == Form::None) return;
+  sensors.push_back({&n, sensorGeom(space, spec.volume), spec.scope, spec.volume});
+  retagSensors();
+}
+
+void World::Impl::refreshSensor(const Node& n) {
+  for (std::size_t i = 0; i < sensors.size(); ++i) {
+    Sensor& sensor = sensors[i];
+    if (sensor.node != &n) continue;
+    const SensorSpec spec = sensorSpec(n);
+    sensor.scope = spec.scope;
+    if (spec.volume == sensor.volume) continue;
+    // a new shape or size: a new geometry in the same place in the list
+    dGeomDestroy(sensor.geom);
+    sensor.geom = sensorGeom(space, spec.volume);
+    sensor.volume = spec.volume;
+    dGeomSetData(sensor.geom, reinterpret_cast<void*>(kSensorTag | i));
+  }
+}
+
+void World::Impl::retagSensors() {
+  for (std::size_t i = 0; i < sensors.size(); ++i) {
+    dGeomSetData(sensors[i].geom, reinterpret_cast<void*>(kSensorTag | i));
+  }
+}
+
+bool World::Impl::inScope(const Sensor& sensor, const Node& shape) {
+  if (sensor.scope == scene::Scope::World) return true;
+  const Node* parent = sensor.node->parent();
+  for (const Node* n = &shape; n; n = n->parent()) {
+    if (sensor.scope == scene::Scope::Parent && n == parent) return true;
+    if (sensor.scope == scene::Scope::Siblings && n->parent() == parent) return n != sensor.node;
+  }
+  return false;
+}
+
+const Node* World::Impl::reported(const Node& shape) const {
+  const Body* b = owner(shape);
+  return b ? b->node : &shape;
+}
+
+void World::Impl::feel(std::size_t index, dGeomID other) {
+  const Sensor& sensor = sensors[index];
+  const Surface s = surfaceOf(other, *this);
+  if (!s.node || !inScope(sensor, *s.node)) return;
+  dContactGeom c;
+  if (dCollide(sensor.geom, other, 1, &c, sizeof(dContactGeom)) == 0) return;
+  Felt& f = felt[index];
+  if (sensor.ray()) {
+    if (c.depth < f.distance) {
+      f.distance = c.depth;
+      f.hit = reported(*s.node);
+    }
+  } else {
+    f.items.push_back(reported(*s.node));
+  }
+}
+
+void World::Impl::sense(std::vector<std::pair<scene::NodeHandle, Feel>>& out) {
+  out.clear();
+  felt.assign(sensors.size(), Felt{});
+  for (std::size_t i = 0; i < sensors.size(); ++i) {
+    const Sensor& sensor = sensors[i];
+    const Node& n = *sensor.node;
+    // sensors follow the nodes they sit in (a body moves them)
+    if (sensor.ray()) {
+      const Vec3 from = n.world.position, dir = n.world.rotation.rotate({1, 0, 0});
+      dGeomRaySet(sensor.geom, from.x, from.y, from.z, dir.x, dir.y, dir.z);
+      felt[i].distance = dGeomRayGetLength(sensor.geom);
+    } else {
+      dGeomSetPosition(sensor.geom, n.world.position.x, n.world.position.y, n.world.position.z);
+      const dQuaternion q = {n.world.rotation.w, n.world.rotation.x, n.world.rotation.y, n.world.rotation.z};
+      dGeomSetQuaternion(sensor.geom, q);
+    }
+  }
+  if (!sensors.empty()) {
+    // one sweep over the moving shapes' boxes and the sensors' finds the sensor-to-body
+    // pairs; each sensor looks up the fixed shapes in their tree
+    refreshMoving();
+    const std::size_t m = moving.size();
+    sense_boxes.assign(moving_boxes.begin(), moving_boxes.end());
+    for (const auto& sensor : sensors) sense_boxes.push_back(aabbOf(sensor.geom));
+    sense_sweep.pairs(sense_boxes, [&](std::size_t i, std::size_t j) {
+      if ((i < m) == (j < m)) return;  // two shapes, or two sensors
+      feel(std::max(i, j) - m, moving[std::min(i, j)]);
+    });
+    for (std::size_t i = 0; i < sensors.size(); ++i) {
+      fixed_tree.query(sense_boxes[m + i], [&](std::size_t k) { feel(i, fixed[k]); });
+      for (dGeomID g : endless) feel(i, g);
+    }
+  }
+  // what each felt: a ray its nearest hit; a volume what lies in it, once each, by path
+  for (std::size_t i = 0; i < sensors.size(); ++i) {
+    const Node& n = *sensors[i].node;
+    Felt& f = felt[i];
+    Feel feel;
+    if (sensors[i].ray()) {
+      feel.distance = f.distance;
+      feel.hit = f.hit ? f.hit->handle() : 0;
+      if (n.kind() == NodeKind::Region && f.hit) feel.items.push_back(f.hit->handle());
+    } else {
+      std::sort(f.items.begin(), f.items.end(), [](const Node* a, const Node* b) { return a->path() < b->path(); });
+      f.items.erase(std::unique(f.items.begin(), f.items.end()), f.items.end());
+      for (const Node* item : f.items) feel.items.push_back(item->handle());
+    }
+    out.emplace_back(n.handle(), std::move(feel));
+  }
+}
+
+void World::sense(std::vector<std::pair<scene::NodeHandle, Feel>>& out) { impl_->sense(out); }
+
+}  // namespace gdpn::physics
