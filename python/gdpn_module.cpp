@@ -60,7 +60,7 @@ class Model {
         interrupted = true;
       }
     };
-    outcome_ = session_->run({until, steps, {}}, check, &interrupted);
+    outcome_ = session_->run({until, steps}, check, &interrupted);
     raiseIfFailed();
     return report();
   }
@@ -167,7 +167,7 @@ class Model {
   }
 
   py::dict report() const {
-    const model::Simulation* sim_ = &session_->simulation();
+    model::Simulation* sim_ = &session_->simulation();
     auto outcome = outcome_;
     outcome.steps = sim_->kernel().steps();
     outcome.time = sim_->kernel().now();

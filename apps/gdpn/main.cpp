@@ -320,7 +320,7 @@ int run(const RunArgs& a) {
   model::RunOutcome outcome;
   {
     ProgressBar bar(!a.quiet && isatty(STDERR_FILENO));
-    outcome = sim->run({a.until, a.steps, {}}, std::ref(bar), &g_interrupted);
+    outcome = sim->run({a.until, a.steps}, std::ref(bar), &g_interrupted);
   }
   std::signal(SIGINT, SIG_DFL);
   trace.flush();

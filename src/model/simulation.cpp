@@ -456,7 +456,7 @@ RunOutcome Simulation::run(const RunLimits& limits, const ProgressFn& progress,
     }
     step();
     if (step_hook_) step_hook_();
-    if (limits.stop_when && limits.stop_when()) {
+    if (stop_check_ && stop_check_()) {
       outcome.reason = StopReason::Breakpoint;
       break;
     }

@@ -2,8 +2,8 @@
 // tells and takes of a body (velocity, forces, sleep).
 
 #include "gdpn/core/assert.h"
-#include "physics/ode_convert.h"
-#include "physics/world_impl.h"
+#include "ode_convert.h"
+#include "world_impl.h"
 
 namespace gdpn::physics {
 namespace {

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "physics/ode_convert.h"
-#include "physics/world_impl.h"
+#include "ode_convert.h"
+#include "world_impl.h"
 
 namespace gdpn::physics {
 

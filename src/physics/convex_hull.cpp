@@ -1,6 +1,6 @@
 // The convex hull of a point cloud, for convex collision meshes.
 
-#include "physics/convex_hull.h"
+#include "convex_hull.h"
 
 #include <algorithm>
 #include <cmath>

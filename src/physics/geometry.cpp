@@ -8,9 +8,9 @@
 
 #include "gdpn/scene/mesh.h"
 #include "gdpn/scene/terrain.h"
-#include "physics/convex_hull.h"
-#include "physics/ode_convert.h"
-#include "physics/world_impl.h"
+#include "convex_hull.h"
+#include "ode_convert.h"
+#include "world_impl.h"
 
 namespace gdpn::physics {
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "physics/world_impl.h"
+#include "world_impl.h"
 
 namespace gdpn::physics {
 

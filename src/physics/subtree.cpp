@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "physics/world_impl.h"
+#include "world_impl.h"
 
 namespace gdpn::physics {
 

@@ -225,14 +225,14 @@ model::RunOutcome Session::run(const model::RunLimits& limits, const model::Prog
   hit_.reset();
   if (breakpoints_.empty()) return sim_->run(limits, progress, interrupt);
   // with breakpoints: each step is checked after it, and one that holds ends the run there
-  model::RunLimits checked = limits;
-  checked.stop_when = [this] {
+  sim_->setStopCheck([this] {
     hit_ = holding();
     if (watcher_) watcher_->clear();
     return hit_.has_value();
-  };
+  });
   if (watcher_) watcher_->clear();
-  model::RunOutcome outcome = sim_->run(checked, progress, interrupt);
+  model::RunOutcome outcome = sim_->run(limits, progress, interrupt);
+  sim_->setStopCheck({});
   if (hit_) {
     const auto it = std::find_if(breakpoints_.begin(), breakpoints_.end(), [&](const auto& b) { return b.first == *hit_; });
     outcome.message = "breakpoint " + std::to_string(*hit_) + ": " + it->second.describe();

@@ -68,7 +68,7 @@ TEST(Session, ResetGivesTheTraceOfAFreshModelByteForByte) {
   ASSERT_TRUE(fresh) << diags.str();
   std::ostringstream expected;
   fresh->traceTo(expected);
-  fresh->run({3.0, {}, {}});
+  fresh->run({3.0, {}});
   ASSERT_NE(expected.str().find("\"see\""), std::string::npos) << "the box lands in the bin";
 
   // a session that ran, fired, stepped the plant and had breakpoints, then reset
@@ -76,7 +76,7 @@ TEST(Session, ResetGivesTheTraceOfAFreshModelByteForByte) {
   ASSERT_TRUE(s);
   std::ostringstream first;
   s->traceTo(first);
-  s->run({1.0, {}, {}});
+  s->run({1.0, {}});
   s->stepPlant();
   (void)s->fire("main/rest");
   std::string why;
@@ -86,19 +86,19 @@ TEST(Session, ResetGivesTheTraceOfAFreshModelByteForByte) {
   s->reset();
   EXPECT_EQ(s->simulation().kernel().steps(), 0);
   EXPECT_EQ(tokens(*s, "main/idle"), 2);
-  s->run({3.0, {}, {}});
+  s->run({3.0, {}});
   EXPECT_EQ(again.str(), expected.str());
 
   // another seed gives another run, and resetting with the first seed gives the first again
   std::ostringstream other;
   s->traceTo(other);
   s->reset(11);
-  s->run({3.0, {}, {}});
+  s->run({3.0, {}});
   EXPECT_NE(other.str(), expected.str());
   std::ostringstream back;
   s->traceTo(back);
   s->reset(3);
-  s->run({3.0, {}, {}});
+  s->run({3.0, {}});
   EXPECT_EQ(back.str(), expected.str());
 }
 
@@ -132,14 +132,14 @@ TEST(Session, FireStartsTheChosenTransitionNow) {
   core::Diagnostics diags;
   auto s = open(kChoice, diags);
   ASSERT_TRUE(s) << diags.str();
-  s->run({{}, 5, {}});
+  s->run({{}, 5});
   ASSERT_EQ(tokens(*s, "main/ready"), 1) << "the net did not start 'rare' by itself";
   EXPECT_EQ(s->fire("main/rare"), "");
   const auto rare = static_cast<net::TransitionId>(s->simulation().net().findTransition("main/rare"));
   EXPECT_TRUE(s->simulation().kernel().occurring(rare));
   EXPECT_EQ(tokens(*s, "main/ready"), 0);
   // it completes a second (10 steps) later
-  s->run({{}, 10, {}});
+  s->run({{}, 10});
   EXPECT_EQ(tokens(*s, "main/done"), 1);
 }
 
@@ -205,7 +205,7 @@ model::RunOutcome runTo(Session& s, Breakpoint bp) {
   std::string why;
   const auto id = s.addBreakpoint(std::move(bp), why);
   EXPECT_TRUE(id) << why;
-  auto outcome = s.run({{}, 100000, {}});
+  auto outcome = s.run({{}, 100000});
   EXPECT_EQ(outcome.reason, model::StopReason::Breakpoint);
   EXPECT_EQ(s.hit(), id);
   return outcome;
@@ -220,7 +220,7 @@ TEST(Session, ABreakpointOnAStartStopsAtTheStepItStarts) {
   EXPECT_EQ(outcome.message, "breakpoint 1: starts main/consume");
   // running on stops at the next start: the first item is consumed at 2.5 s, the second
   // waits in the buffer since 2 s, so the consumer starts again at 2.5 s
-  EXPECT_EQ(s->run({{}, 100000, {}}).steps, 250);
+  EXPECT_EQ(s->run({{}, 100000}).steps, 250);
 }
 
 TEST(Session, ABreakpointOnACompletionStopsAtTheStepItCompletes) {
@@ -237,7 +237,7 @@ TEST(Session, AMarkingBreakpointStopsAtTheFirstStepItsConditionHolds) {
   EXPECT_EQ(tokens(*s, "main/buffer"), 3);
   // one step earlier it did not hold
   auto before = openFile(kProducerConsumer);
-  before->run({{}, outcome.steps - 1, {}});
+  before->run({{}, outcome.steps - 1});
   EXPECT_LT(tokens(*before, "main/buffer"), 3);
 }
 
@@ -249,7 +249,7 @@ TEST(Session, APredicateBreakpointStopsWhenItsExpressionHolds) {
   EXPECT_EQ(outcome.steps, 400);  // the second item is consumed at 4 s
   // a disabled breakpoint never holds; a removed one is gone
   ASSERT_TRUE(s->enableBreakpoint(1, false));
-  EXPECT_EQ(s->run({{}, 100, {}}).reason, model::StopReason::Until);
+  EXPECT_EQ(s->run({{}, 100}).reason, model::StopReason::Until);
   EXPECT_TRUE(s->removeBreakpoint(1));
   EXPECT_FALSE(s->removeBreakpoint(1));
   EXPECT_TRUE(s->breakpoints().empty());
@@ -272,7 +272,7 @@ TEST(Session, LiveInputReachesTheSensorsAtItsTime) {
   std::string why;
   ASSERT_TRUE(s->addBreakpoint({BreakKind::Starts, "main/go", Compare::Equal, 0, "", true}, why));
   // nothing happens without input
-  EXPECT_EQ(s->run({2.0, {}, {}}).reason, model::StopReason::Until);
+  EXPECT_EQ(s->run({2.0, {}}).reason, model::StopReason::Until);
   // the viewer steps into the booth, then presses g: 'go' starts at the step the key arrives
   sensors::InputEvent walk;
   walk.kind = sensors::InputEvent::Kind::Viewpoint;
@@ -284,7 +284,7 @@ TEST(Session, LiveInputReachesTheSensorsAtItsTime) {
   key.key = "g";
   s->push(key);
   s->push(walk);  // pushed later, delivered earlier: events go in time order
-  const auto outcome = s->run({5.0, {}, {}});
+  const auto outcome = s->run({5.0, {}});
   EXPECT_EQ(outcome.reason, model::StopReason::Breakpoint);
   EXPECT_EQ(outcome.steps, 30);
 }
@@ -293,7 +293,7 @@ TEST(Session, RebuildTakesAnEditedModelOrKeepsTheOldOne) {
   core::Diagnostics diags;
   auto s = open(kFall, diags);
   ASSERT_TRUE(s) << diags.str();
-  s->run({{}, 20, {}});
+  s->run({{}, 20});
   // an edit with a mistake: diagnostics at their place, the old run untouched
   auto bad = model::parseModel(kFall, "session.gdpn.yaml", diags);
   ASSERT_TRUE(bad);
@@ -310,7 +310,7 @@ TEST(Session, RebuildTakesAnEditedModelOrKeepsTheOldOne) {
   good->net.pages[0].transitions[0].duration.a = 0.5;
   ASSERT_TRUE(s->rebuild(*good, errors)) << errors.str();
   EXPECT_EQ(s->simulation().kernel().steps(), 0);
-  s->run({{}, 60, {}});
+  s->run({{}, 60});
   EXPECT_EQ(tokens(*s, "main/b"), 1);
 }
 

@@ -26,8 +26,6 @@ namespace gdpn::model {
 struct RunLimits {
   std::optional<double> until;        ///< end time, seconds
   std::optional<std::int64_t> steps;  ///< number of steps
-  /// Asked after each step; true ends the run there (StopReason::Breakpoint).
-  std::function<bool()> stop_when;
 };
 
 /// Why a run ended.
@@ -120,6 +118,9 @@ class Simulation {
   std::vector<std::pair<std::string, std::string>> modelFigures(std::string& error) {
     return engine_ ? engine_->summary(error) : std::vector<std::pair<std::string, std::string>>{};
   }
+  /// Asks `check` after every step that run() takes; true ends the run there
+  /// (StopReason::Breakpoint). An empty function asks nothing.
+  void setStopCheck(std::function<bool()> check) { stop_check_ = std::move(check); }
   /// Calls `hook` after every step that run() takes (a recorder takes its frames there).
   void setStepHook(std::function<void()> hook) { step_hook_ = std::move(hook); }
   /// Why the run must end now, if a script says so (an error, a timeout, an interrupt or
@@ -129,6 +130,7 @@ class Simulation {
  private:
   Simulation() = default;
   std::function<void()> step_hook_;
+  std::function<bool()> stop_check_;
   Model model_;
   std::shared_ptr<const net::Net> net_;
   std::unique_ptr<scene::Scene> scene_;
