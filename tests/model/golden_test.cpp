@@ -54,6 +54,15 @@ TEST(Cli, CheckReportsMistakesAtTheirLocationAndFails) {
       << r.out;
 }
 
+TEST(Cli, CheckRefusesAnEmptyModelFileAtItsFirstLine) {
+  const std::string empty = temp("gdpn_empty.gdpn.yaml");
+  std::ofstream(empty).close();
+  const auto r = gdpn("check '" + empty + "'");
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find(empty + ":1:1: error: the model file is empty"), std::string::npos) << r.out;
+  fs::remove(empty);
+}
+
 TEST(Cli, RunPrintsTheSummary) {
   const auto r = gdpn("run examples/basics/producer_consumer");
   EXPECT_EQ(r.code, 0) << r.out;
