@@ -235,6 +235,23 @@ TEST(Pnml, AMissingConformanceNetFailsTheTestInsteadOfCrashingIt) {
   EXPECT_NONFATAL_FAILURE(EXPECT_EQ(conformanceNet("NoSuchNet"), nullptr), "conformance net NoSuchNet could not be read");
 }
 
+TEST(Pnml, ASecondArcBetweenTheSameNodesIsRefusedWhereItIs) {
+  // two output arcs to a place of capacity 1 each found room for one token, and the
+  // transition put two there (two inputs likewise took tokens the place did not hold)
+  core::Diagnostics diags;
+  auto spec = parsePnml(R"(<pnml><net id="n" type="ptnet"><page id="g">
+  <place id="P"><initialMarking><text>1</text></initialMarking></place><place id="Q"/>
+  <transition id="T"/>
+  <arc id="a1" source="P" target="T"/>
+  <arc id="a2" source="T" target="Q"/>
+  <arc id="a3" source="T" target="Q"/>
+</page></net></pnml>)", "par.pnml", diags);
+  ASSERT_TRUE(spec) << diags.str();
+  EXPECT_FALSE(compile(*spec, diags));
+  EXPECT_EQ(diags.str(), "par.pnml:6:3: error: a second arc from 'net/T' to 'net/Q' on slot a0: give one arc the sum "
+                         "of their weights\npar.pnml:5:3: note: the first arc is here\n");
+}
+
 TEST(Pnml, WritingRefusesWhatAPTNetCannotHold) {
   NetSpec spec;
   PageSpec page;
