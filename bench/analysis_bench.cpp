@@ -16,7 +16,7 @@ namespace {
 using namespace gdpn;
 
 void BM_Explore(benchmark::State& state, const char* model, std::uint64_t expected, unsigned threads) {
-  const auto path = std::filesystem::path(GDPN_SOURCE_DIR) / ".." / "shared" / "conformance" / "pnml" /
+  const auto path = std::filesystem::path(GDPN_SOURCE_DIR) / "tests" / "data" / "conformance" /
                     (std::string(model) + ".pnml");
   core::Diagnostics diags;
   auto spec = net::loadPnml(path.string(), diags);

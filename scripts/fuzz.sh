@@ -26,4 +26,4 @@ fuzz() {  # fuzz NAME MAX_LEN SEED_DIRS...
 }
 
 fuzz model_loader_fuzz 4096 examples/basics/* examples/plant/* examples/sorting tests/data/good tests/data/bad
-fuzz pnml_reader_fuzz 65536 tests/data/pnml ../shared/conformance/pnml
+fuzz pnml_reader_fuzz 65536 tests/data/pnml tests/data/conformance

@@ -68,7 +68,11 @@ class ModelReader {
 
   std::optional<Model> read(const YAML::Node& root) {
     Model model;
-    if (root.IsNull()) return model;  // an empty file is an empty model
+    // an empty file (or one of only comments) is more likely a mistake than a model
+    if (root.IsNull()) {
+      r_.error({file_, 1, 1}, "the model file is empty");
+      return std::nullopt;
+    }
     if (!r_.expectMap(root, "the model file")) return std::nullopt;
     for (const auto& e : r_.entries(root, "model file", kTopKeys)) {
       if (e.key == "gdpn") {

@@ -5,6 +5,8 @@
 #include <functional>
 #include <map>
 #include <numeric>
+#include <set>
+#include <tuple>
 #include <unordered_map>
 
 #include "gdpn/core/text.h"
@@ -46,6 +48,7 @@ class Compiler {
     }
     if (diags_.hasErrors()) return nullptr;
     resolveKinds();
+    checkParallelArcs();
     checkBalance();
     checkPredicates();
     if (diags_.hasErrors()) return nullptr;
@@ -398,6 +401,26 @@ class Compiler {
           diags_.error(pred.expression.loc, "a predicate selects node tokens, but slot " + slotName(pred.slot) +
                                                 " of '" + places_[a.place].name + "' is a control slot");
         }
+      }
+    }
+  }
+
+  void checkParallelArcs() {
+    // one arc that moves tokens each way between a place slot and a transition: two would
+    // each find the tokens (two outputs: the room) that only their sum needs
+    std::map<std::tuple<PlaceId, TransitionId, bool, SlotId>, const ArcSpec*> first;
+    std::set<std::pair<const ArcSpec*, const ArcSpec*>> reported;  // a page type's arcs once, not per instance
+    for (const auto& a : arcs_) {
+      if (!a.output && a.spec->kind != ArcKind::Normal) continue;
+      for (const auto& w : weightsOf(*a.spec)) {
+        const auto [it, fresh] = first.try_emplace({a.place, a.transition, a.output, w.slot}, a.spec);
+        if (fresh || !reported.insert({it->second, a.spec}).second) continue;
+        const std::string& place = places_[a.place].name;
+        const std::string& transition = transitions_[a.transition].name;
+        diags_.error(a.spec->loc, "a second arc from '" + (a.output ? transition : place) + "' to '" +
+                                      (a.output ? place : transition) + "' on slot " + slotName(w.slot) +
+                                      ": give one arc the sum of their weights");
+        diags_.note(it->second->loc, "the first arc is here");
       }
     }
   }

@@ -329,7 +329,10 @@ void Kernel::begin(TransitionId t) {
   }
   for (auto* o : observers_) o->onStart(t, steps());
 
-  // take the inputs (node tokens move into the transition, FIFO), then reserve the outputs
+  // take the inputs (node tokens move into the transition, FIFO), then reserve the outputs;
+  // scripts run only once the start is complete, so that what they do to the net (delete a
+  // node, add or remove tokens) meets a consistent kernel and cannot undo a take half-way
+  std::vector<RemoveCall> calls;
   for (auto i = tr.terms_begin; i < tr.inputs_end; ++i) {
     const Term& term = terms_[i];
     const PlaceSlotId ps = term.place_slot;
@@ -355,11 +358,8 @@ void Kernel::begin(TransitionId t) {
     }
     for (auto* o : observers_) o->onRemove(ps, term.weight, moved_, steps());
     if ((st.scripts & kOnRemove) && hooks_) {
-      if (moved_.empty()) {
-        for (std::int64_t k = 0; k < term.weight && !hooks_->halted(); ++k) hooks_->onRemove(ps, nullptr);
-      } else {
-        for (std::size_t k = 0; k < moved_.size() && !hooks_->halted(); ++k) hooks_->onRemove(ps, &moved_[k]);
-      }
+      if (moved_.empty()) calls.push_back({ps, term.weight, false, 0});
+      for (NodeRef node : moved_) calls.push_back({ps, 1, true, node});
     }
     update(ps);
   }
@@ -370,6 +370,13 @@ void Kernel::begin(TransitionId t) {
     if (st.capacity != kUnbounded) update(term.place_slot);
   }
   chosen_.clear();
+
+  // on_remove per token taken, in the order taken, then pre_fire
+  for (const RemoveCall& call : calls) {
+    for (std::int64_t k = 0; k < call.count && !hooks_->halted(); ++k) {
+      hooks_->onRemove(call.ps, call.node ? &call.token : nullptr);
+    }
+  }
   if ((tr.scripts & kPreFire) && hooks_ && !hooks_->halted()) hooks_->preFire(t);
 }
 
@@ -403,8 +410,8 @@ void Kernel::finish(TransitionId t) {
     }
     const std::int64_t count = st.fifo >= 0 ? static_cast<std::int64_t>(moved_.size()) : term.weight;
     for (auto* o : observers_) o->onDeposit(ps, count, moved_, steps());
-    if ((st.scripts & kOnDeposit) && hooks_) deposited(ps, st, count);
     update(ps);
+    if ((st.scripts & kOnDeposit) && hooks_) deposited(ps, st, count);
   }
   tr.end_step = -1;
   --occurring_count_;

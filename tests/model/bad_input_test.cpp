@@ -108,6 +108,15 @@ TEST(BadInput, MissingFileIsAnErrorNotACrash) {
   EXPECT_EQ(diags.str(), "/nonexistent/x.gdpn.yaml: error: cannot read the file\n");
 }
 
+TEST(BadInput, AnEmptyFileIsRefusedAtItsFirstLine) {
+  // nothing, blanks, or only comments: more likely a mistake than a model
+  for (const std::string text : {"", "  \n\n\t\n", "# a comment\n\n# another\n"}) {
+    core::Diagnostics diags;
+    EXPECT_FALSE(parseModel(text, "empty.gdpn.yaml", diags)) << '"' << text << '"';
+    EXPECT_EQ(diags.str(), "empty.gdpn.yaml:1:1: error: the model file is empty\n") << '"' << text << '"';
+  }
+}
+
 TEST(BadInput, AFolderIsNotAModelFile) {
   core::Diagnostics diags;
   EXPECT_FALSE(loadModel(GDPN_SOURCE_DIR, diags));

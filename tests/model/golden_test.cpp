@@ -54,6 +54,15 @@ TEST(Cli, CheckReportsMistakesAtTheirLocationAndFails) {
       << r.out;
 }
 
+TEST(Cli, CheckRefusesAnEmptyModelFileAtItsFirstLine) {
+  const std::string empty = temp("gdpn_empty.gdpn.yaml");
+  std::ofstream(empty).close();
+  const auto r = gdpn("check '" + empty + "'");
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find(empty + ":1:1: error: the model file is empty"), std::string::npos) << r.out;
+  fs::remove(empty);
+}
+
 TEST(Cli, RunPrintsTheSummary) {
   const auto r = gdpn("run examples/basics/producer_consumer");
   EXPECT_EQ(r.code, 0) << r.out;
@@ -250,7 +259,7 @@ TEST(CliInput, MistakesInTheInputFileAreLocated) {
 namespace {
 
 TEST(CliAnalyze, APnmlNetAndAModelFile) {
-  auto r = gdpn("analyze ../shared/conformance/pnml/Philosophers-PT-000005.pnml");
+  auto r = gdpn("analyze tests/data/conformance/Philosophers-PT-000005.pnml");
   EXPECT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("243 states, 945 edges"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("deadlock:        yes after"), std::string::npos) << r.out;
@@ -260,14 +269,14 @@ TEST(CliAnalyze, APnmlNetAndAModelFile) {
   EXPECT_EQ(j["states"], 3);
   EXPECT_EQ(j["deadlock_path"], (nlohmann::json{"main/T1", "main/T2"}));
   EXPECT_EQ(j["one_safe"], true);
-  r = gdpn("analyze ../shared/conformance/pnml/Philosophers-PT-000005.pnml --threads 2");
+  r = gdpn("analyze tests/data/conformance/Philosophers-PT-000005.pnml --threads 2");
   EXPECT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("243 states, 945 edges"), std::string::npos) << r.out;
-  r = gdpn("analyze ../shared/conformance/pnml/Referendum-PT-0010.pnml --max-states 100");
+  r = gdpn("analyze tests/data/conformance/Referendum-PT-0010.pnml --max-states 100");
   EXPECT_EQ(r.code, 3) << r.out;
   EXPECT_NE(r.out.find("(partial: --max-states reached;"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("live:            unknown"), std::string::npos) << r.out;
-  r = gdpn("analyze ../shared/conformance/pnml/Referendum-PT-0010.pnml --max-memory 0.5 --progress");
+  r = gdpn("analyze tests/data/conformance/Referendum-PT-0010.pnml --max-memory 0.5 --progress");
   EXPECT_EQ(r.code, 3) << r.out;
   EXPECT_NE(r.out.find("(partial: --max-memory reached;"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find(" states/s, "), std::string::npos) << r.out;  // the progress line

@@ -15,8 +15,9 @@ Model parse(const std::string& text) {
   return m.value_or(Model{});
 }
 
-TEST(Load, EmptyFileIsAnEmptyModelWithDefaults) {
-  const Model m = parse("");
+TEST(Load, AModelWithNoSectionsTakesTheDefaults) {
+  // (an empty file is refused: see BadInput.AnEmptyFileIsRefusedAtItsFirstLine)
+  const Model m = parse("gdpn: 1\n");
   EXPECT_TRUE(m.net.pages.empty());
   EXPECT_DOUBLE_EQ(m.settings.dt, 1.0 / 60.0);
   EXPECT_EQ(m.settings.seed, 1u);

@@ -3,6 +3,7 @@
 
 #include "gdpn/net/analysis.h"
 
+#include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -12,13 +13,15 @@
 #include "gdpn/net/builder.h"
 #include "gdpn/net/compile.h"
 #include "gdpn/net/pnml.h"
+#include "support/conformance.h"
 
 namespace gdpn::net {
 namespace {
 
 namespace fs = std::filesystem;
-
-const fs::path kConformance = fs::path(GDPN_SOURCE_DIR) / ".." / "shared" / "conformance" / "pnml";
+using testing::conformanceNet;
+using testing::conformanceSpec;
+using testing::kConformanceDir;
 
 struct Reference {
   std::string model;
@@ -29,7 +32,7 @@ struct Reference {
 
 std::vector<Reference> references() {
   std::vector<Reference> out;
-  std::ifstream in(kConformance / "reference.tsv");
+  std::ifstream in(kConformanceDir / "reference.tsv");
   std::string line;
   std::getline(in, line);  // header
   auto flag = [](const std::string& s) { return s == "TRUE"; };
@@ -43,16 +46,6 @@ std::vector<Reference> references() {
     if (r.model != "Kanban-PT-00005" && r.model != "SwimmingPool-PT-02") out.push_back(r);
   }
   return out;
-}
-
-/// A conformance net, compiled; null after a failed expectation.
-std::shared_ptr<const Net> conformanceNet(const std::string& model) {
-  core::Diagnostics diags;
-  auto spec = loadPnml((kConformance / (model + ".pnml")).string(), diags);
-  std::shared_ptr<const Net> net;
-  if (spec) net = compile(*spec, diags);
-  EXPECT_TRUE(net) << diags.str();
-  return net;
 }
 
 class Conformance : public ::testing::TestWithParam<Reference> {};
@@ -107,15 +100,15 @@ INSTANTIATE_TEST_SUITE_P(Mcc, Conformance, ::testing::ValuesIn(references()),
                          });
 
 TEST(Conformance, TheReferenceListIsThere) {
-  EXPECT_EQ(references().size(), 12u) << "looked in " << kConformance;
+  ASSERT_TRUE(fs::is_regular_file(kConformanceDir / "reference.tsv")) << "missing: " << kConformanceDir / "reference.tsv";
+  EXPECT_EQ(references().size(), 12u) << "looked in " << kConformanceDir;
 }
 
 TEST(Analysis, ClosedFormsOfThePhilosophersAndReferendum) {
   for (const auto& [model, states] : std::vector<std::pair<std::string, std::uint64_t>>{
            {"Philosophers-PT-000005", 243}, {"Referendum-PT-0010", 59050}}) {
-    core::Diagnostics diags;
-    auto spec = loadPnml((kConformance / (model + ".pnml")).string(), diags);
-    auto net = compile(*spec, diags);
+    auto net = conformanceNet(model);
+    ASSERT_TRUE(net);
     EXPECT_EQ(explore(*net).states, states) << model;  // 3^N, 3^N + 1
   }
 }
@@ -186,8 +179,8 @@ TEST(Pnml, RoundTripKeepsTheNet) {
   // PNML -> spec -> PNML -> spec: the same places, transitions, arcs, weights and marking
   for (const char* model : {"Philosophers-PT-000005", "CircularTrains-PT-012", "RobotManipulation-PT-00002"}) {
     core::Diagnostics diags;
-    auto first = loadPnml((kConformance / (std::string(model) + ".pnml")).string(), diags);
-    ASSERT_TRUE(first) << diags.str();
+    auto first = conformanceSpec(model);
+    ASSERT_TRUE(first);
     std::string why;
     const auto text = writePnml(*first, why);
     ASSERT_TRUE(text) << why;
@@ -219,6 +212,44 @@ TEST(Pnml, ALabelThatLooksLikeARenamedIdIsNotTakenForOne) {
   ASSERT_TRUE(second) << diags.str() << *text;
   EXPECT_EQ(*first, *second);
   EXPECT_EQ(second->pages[0].transitions[0].name, "t");
+}
+
+TEST(Pnml, AMissingFileGivesADiagnosticNamingItRatherThanACrash) {
+  core::Diagnostics diags;
+  const std::string path = (kConformanceDir / "NoSuchNet.pnml").string();
+  EXPECT_FALSE(loadPnml(path, diags));
+  EXPECT_EQ(diags.str(), path + ": error: cannot read the file\n");
+}
+
+TEST(Pnml, AnEmptyFileIsRefusedAtItsFirstLine) {
+  const fs::path path = fs::temp_directory_path() / "gdpn_empty_test.pnml";
+  std::ofstream(path).close();
+  core::Diagnostics diags;
+  EXPECT_FALSE(loadPnml(path.string(), diags));
+  EXPECT_EQ(diags.str(), path.string() + ":1:1: error: malformed XML: the file holds no XML element\n");
+  fs::remove(path);
+}
+
+TEST(Pnml, AMissingConformanceNetFailsTheTestInsteadOfCrashingIt) {
+  // the helpers once dereferenced the empty result: a bus error took the test binary down
+  EXPECT_NONFATAL_FAILURE(EXPECT_EQ(conformanceNet("NoSuchNet"), nullptr), "conformance net NoSuchNet could not be read");
+}
+
+TEST(Pnml, ASecondArcBetweenTheSameNodesIsRefusedWhereItIs) {
+  // two output arcs to a place of capacity 1 each found room for one token, and the
+  // transition put two there (two inputs likewise took tokens the place did not hold)
+  core::Diagnostics diags;
+  auto spec = parsePnml(R"(<pnml><net id="n" type="ptnet"><page id="g">
+  <place id="P"><initialMarking><text>1</text></initialMarking></place><place id="Q"/>
+  <transition id="T"/>
+  <arc id="a1" source="P" target="T"/>
+  <arc id="a2" source="T" target="Q"/>
+  <arc id="a3" source="T" target="Q"/>
+</page></net></pnml>)", "par.pnml", diags);
+  ASSERT_TRUE(spec) << diags.str();
+  EXPECT_FALSE(compile(*spec, diags));
+  EXPECT_EQ(diags.str(), "par.pnml:6:3: error: a second arc from 'net/T' to 'net/Q' on slot a0: give one arc the sum "
+                         "of their weights\npar.pnml:5:3: note: the first arc is here\n");
 }
 
 TEST(Pnml, WritingRefusesWhatAPTNetCannotHold) {
@@ -304,9 +335,8 @@ TEST(Analysis, CountsBeyondWhatTheSearchHoldsGiveAPartialAnswer) {
 
 TEST(Analysis, ThreadsFindTheSameShortestPathToADeadlock) {
   // two philosophers' worth of choices before the dead end: many equal paths, one answer
-  core::Diagnostics diags;
-  auto spec = loadPnml((kConformance / "Philosophers-PT-000005.pnml").string(), diags);
-  auto net = compile(*spec, diags);
+  auto net = conformanceNet("Philosophers-PT-000005");
+  ASSERT_TRUE(net);
   const auto one = explore(*net);
   ExploreOptions o;
   o.threads = 2;
@@ -321,9 +351,8 @@ TEST(Analysis, ThreadsFindTheSameShortestPathToADeadlock) {
 }
 
 TEST(Analysis, LimitsStopCleanlyWithAPartialAnswer) {
-  core::Diagnostics diags;
-  auto spec = loadPnml((kConformance / "Referendum-PT-0010.pnml").string(), diags);
-  auto net = compile(*spec, diags);
+  auto net = conformanceNet("Referendum-PT-0010");
+  ASSERT_TRUE(net);
   ExploreOptions few;
   few.max_states = 1000;
   const auto s = explore(*net, few);

@@ -5,30 +5,17 @@
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <map>
 #include <set>
 
 #include "gdpn/net/analysis.h"
 #include "gdpn/net/builder.h"
-#include "gdpn/net/compile.h"
-#include "gdpn/net/pnml.h"
+#include "support/conformance.h"
 
 namespace gdpn::net {
 namespace {
 
-namespace fs = std::filesystem;
-const fs::path kConformance = fs::path(GDPN_SOURCE_DIR) / ".." / "shared" / "conformance" / "pnml";
-
-std::shared_ptr<const Net> loadNet(const std::string& model) {
-  core::Diagnostics diags;
-  auto spec = loadPnml((kConformance / (model + ".pnml")).string(), diags);
-  EXPECT_TRUE(spec) << diags.str();
-  if (!spec) return nullptr;
-  auto net = compile(*spec, diags);
-  EXPECT_TRUE(net) << diags.str();
-  return net;
-}
+using testing::conformanceNet;
 
 /// The invariant's support as place (or transition) names, without the page prefix.
 std::set<std::string> support(const Net& net, const Invariant& inv, bool places) {
@@ -58,7 +45,7 @@ void expectAllReal(const Net& net, const Invariants& inv) {
 TEST(Invariants, DiningPhilosophersHaveOnePerForkAndOnePerPhilosopher) {
   // Philosophers-PT-000005: each philosopher's states sum to one, and each fork is either on
   // the table or in one of its two neighbours' hands: 2N minimal P-invariants of weight 1
-  auto net = loadNet("Philosophers-PT-000005");
+  auto net = conformanceNet("Philosophers-PT-000005");
   ASSERT_TRUE(net);
   const Invariants inv = invariants(*net);
   ASSERT_TRUE(inv.complete);
@@ -149,7 +136,7 @@ TEST(Invariants, EveryReportedInvariantIsRealOnTheConformanceNets) {
   for (const char* model : {"Philosophers-PT-000010", "Dekker-PT-010", "FMS-PT-00002", "Kanban-PT-00005",
                             "SwimmingPool-PT-02", "RobotManipulation-PT-00002", "TokenRing-PT-005",
                             "CircularTrains-PT-012", "ERK-PT-000001", "ResAllocation-PT-R002C002"}) {
-    auto net = loadNet(model);
+    auto net = conformanceNet(model);
     ASSERT_TRUE(net);
     const Invariants inv = invariants(*net);
     EXPECT_TRUE(inv.complete) << model;

@@ -10,6 +10,7 @@
 
 #include "gdpn/core/text.h"
 #include "gdpn/model/simulation.h"
+#include "support/sim_helpers.h"
 
 namespace gdpn::model {
 namespace {
@@ -49,25 +50,21 @@ class ScriptModel {
   std::string path_;
 };
 
+/// Runs `sim` and returns the text of its sim.log lines and the outcome.
+std::pair<std::vector<std::string>, RunOutcome> runLogs(Simulation& sim, RunLimits limits = {}) {
+  std::ostringstream trace;
+  sim.traceTo(trace);
+  const auto outcome = sim.run(limits);
+  return {testing::logLines(trace.str()), outcome};
+}
+
 /// Runs the model and returns the text of its sim.log lines and the outcome.
 std::pair<std::vector<std::string>, RunOutcome> runLogs(const ScriptModel& model, RunLimits limits = {}) {
   core::Diagnostics diags;
   auto sim = model.open(diags);
   EXPECT_TRUE(sim) << diags.str();
   if (!sim) return {};
-  std::ostringstream trace;
-  sim->traceTo(trace);
-  const auto outcome = sim->run(limits);
-  std::vector<std::string> logs;
-  std::istringstream lines(trace.str());
-  std::string line;
-  while (std::getline(lines, line)) {
-    const auto at = line.find("\"ev\":\"log\",\"text\":\"");
-    if (at == std::string::npos) continue;
-    auto text = line.substr(at + 19);
-    logs.push_back(text.substr(0, text.size() - 2));
-  }
-  return {logs, outcome};
+  return runLogs(*sim, limits);
 }
 
 TEST(Scripts, HooksRunInTheOrderOfTheStep) {
@@ -220,6 +217,21 @@ pages:
   EXPECT_EQ(outcome.steps, 3);
   const auto q = sim->net().findPlace("main/Q");
   EXPECT_EQ(sim->kernel().placeTokens(static_cast<net::PlaceId>(q)), 4);
+}
+
+TEST(Scripts, DeletingANodeInOnRemoveLeavesTheOtherTokensOfTheRemovalTheirCalls) {
+  // issue 14: box1's on_remove deletes box1; its token left the net re-entrantly and the
+  // kernel lost the rest of the removal, so box2 and box3 never got on_remove
+  auto sim = testing::openModelFile("tests/data/good/delete_on_remove.gdpn.yaml");
+  ASSERT_TRUE(sim);
+  const auto [logs, outcome] = runLogs(*sim);
+  ASSERT_EQ(outcome.reason, StopReason::Dead) << outcome.message;  // once the two are in the bin
+  EXPECT_EQ(logs, (std::vector<std::string>{"0 on_remove boxes/box1", "0 on_remove boxes/box2",
+                                            "0 on_remove boxes/box3", "1 on_deposit boxes/box2",
+                                            "1 on_deposit boxes/box3"}));
+  EXPECT_EQ(sim->plant()->find("boxes/box1"), nullptr);
+  const auto bin = sim->net().findPlace("main/bin");
+  EXPECT_EQ(sim->kernel().placeTokens(static_cast<net::PlaceId>(bin)), 2);
 }
 
 TEST(ScriptErrors, SyntaxErrorInlineIsLocatedInTheModelFile) {

@@ -10,7 +10,9 @@ namespace gdpn::net {
 
 /// Script hooks, called by the kernel. A hook that fails records its error and makes
 /// halted() true; the kernel then calls no more hooks, and its owner stops the run at the end
-/// of the phase.
+/// of the phase. Every hook but guard() and eligible() may re-enter the kernel through
+/// Kernel::setMarking(), addNode() and dropNodes() (never a phase): the kernel calls hooks
+/// only between complete changes of its state.
 class ScriptHooks {
  public:
   virtual ~ScriptHooks() = default;

@@ -155,6 +155,12 @@ class Kernel {
   };
   static_assert(sizeof(SlotState) == 64);
   static_assert(sizeof(Watch) == 16);
+  struct RemoveCall {  // on_remove calls owed by a start: `count` times, for one node token or control
+    PlaceSlotId ps;
+    std::int64_t count;
+    bool node;
+    NodeRef token;
+  };
   struct Carry {  // an enabled transition that did not start (probability), kept in order
     std::uint64_t key;
     std::int64_t step;
