@@ -146,3 +146,90 @@ pages:
     model.run()
     logs = [e["text"] for e in model.trace() if e["ev"] == "log"]
     assert logs == ["seen 1", "seen 2"]
+
+
+PRODUCER_CONSUMER = "examples/basics/producer_consumer"
+
+
+def test_breakpoints_stop_runs_where_they_hold(source):
+    model = gdpn.load(str(source / PRODUCER_CONSUMER))
+    first = model.add_breakpoint(starts="main/consume")
+    report = model.run()
+    assert (report["stopped"], report["steps"], model.hit) == ("breakpoint", 100, first)
+    model.remove_breakpoint(first)
+    full = model.add_breakpoint(place="main/buffer", compare=">=", value=3)
+    model.run()
+    assert model.marking("main/buffer") == 3 and model.hit == full
+    model.remove_breakpoint(full)
+    late = model.add_breakpoint(predicate="sim.time >= 20")
+    assert model.run()["steps"] == 2000 and model.hit == late
+    assert model.breakpoints == [{"id": late, "watches": "sim.time >= 20", "enabled": True}]
+    with pytest.raises(ValueError, match="no transition 'main/nope'"):
+        model.add_breakpoint(completes="main/nope")
+    with pytest.raises(ValueError, match="one thing"):
+        model.add_breakpoint(starts="main/consume", place="main/buffer")
+    with pytest.raises(KeyError):
+        model.remove_breakpoint(first)
+
+
+def test_reset_gives_the_same_run_again(source):
+    model = gdpn.load(str(source / "tests/data/good/stochastic.gdpn.yaml"))
+    model.run(until=20)
+    first = model.trace()
+    model.reset()
+    assert (model.time, model.trace()) == (0.0, [])
+    model.run(until=20)
+    assert model.trace() == first
+
+
+def test_fire_starts_a_transition_or_says_why_not(write_model):
+    path = write_model("""gdpn: 1
+settings: {dt: 0.5}
+pages:
+  main:
+    places:
+      ready: {tokens: 1}
+      empty: {}
+      done: {}
+    transitions:
+      rare: {duration: 1, probability: 0.000001}
+      starved: {}
+    arcs:
+      - ready -> rare
+      - rare -> done
+      - empty -> starved
+""")
+    model = gdpn.load(str(path))
+    with pytest.raises(gdpn.FireError, match="'main/empty' a0 holds 0 of the 1 it needs"):
+        model.fire("main/starved")
+    model.fire("main/rare")
+    assert model.marking("main/ready") == 0
+    model.step()
+    model.step()
+    assert model.marking("main/done") == 1
+
+
+def test_step_plant_moves_the_plant_and_keeps_the_marking(write_model):
+    path = write_model("""gdpn: 1
+settings: {dt: 0.01}
+scene:
+  - Body: {name: ball, mass: 1, children: [{Sphere: {radius: 0.1}}]}
+pages:
+  main:
+    places:
+      a: {tokens: {d0: [ball]}}
+      b: {}
+    transitions:
+      t: {duration: 1}
+    arcs:
+      - {from: a, to: t, weight: {d0: 1}}
+      - {from: t, to: b, weight: {d0: 1}}
+""")
+    model = gdpn.load(str(path))
+    model.step()
+    for _ in range(100):
+        model.step_plant()
+    assert model.time == pytest.approx(1.01)
+    assert model.marking("main/b") == {"d0": []}
+    model.run(until=2.0)
+    assert model.marking("main/b") == {"d0": ["ball"]}

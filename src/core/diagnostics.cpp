@@ -44,4 +44,11 @@ std::string Diagnostics::str() const {
   return out.str();
 }
 
+void Diagnostics::append(const Diagnostics& other) {
+  for (const auto& d : other.list_) {
+    list_.push_back(d);
+    if (d.severity == Severity::Error) ++errors_;
+  }
+}
+
 }  // namespace gdpn::core

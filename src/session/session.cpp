@@ -105,7 +105,10 @@ void Session::reset(std::optional<std::uint64_t> seed) {
 }
 
 bool Session::rebuild(const model::Model& model, core::Diagnostics& diags) {
-  auto sim = make(model, diags);
+  // the edit is judged on its own, whatever `diags` held before
+  core::Diagnostics own;
+  auto sim = make(model, own);
+  diags.append(own);
   if (!sim) return false;
   // breakpoints whose target the edit removed are dropped
   std::erase_if(breakpoints_, [&](const auto& b) {
@@ -212,6 +215,7 @@ std::optional<int> Session::holding() {
         std::string error;
         const auto holds = sim_->evaluate(bp.expression, error);
         // a predicate that fails stops the run too: the user learns why at once
+        if (!holds) predicate_error_ = "breakpoint " + std::to_string(id) + " (" + bp.expression + ") failed: " + error;
         if (!holds || *holds) return id;
         break;
       }
@@ -223,6 +227,7 @@ std::optional<int> Session::holding() {
 model::RunOutcome Session::run(const model::RunLimits& limits, const model::ProgressFn& progress,
                                const std::atomic<bool>* interrupt) {
   hit_.reset();
+  predicate_error_.clear();
   if (breakpoints_.empty()) return sim_->run(limits, progress, interrupt);
   // with breakpoints: each step is checked after it, and one that holds ends the run there
   sim_->setStopCheck([this] {
@@ -233,7 +238,10 @@ model::RunOutcome Session::run(const model::RunLimits& limits, const model::Prog
   if (watcher_) watcher_->clear();
   model::RunOutcome outcome = sim_->run(limits, progress, interrupt);
   sim_->setStopCheck({});
-  if (hit_) {
+  if (!predicate_error_.empty()) {
+    outcome.reason = model::StopReason::ScriptError;
+    outcome.message = predicate_error_;
+  } else if (hit_) {
     const auto it = std::find_if(breakpoints_.begin(), breakpoints_.end(), [&](const auto& b) { return b.first == *hit_; });
     outcome.message = "breakpoint " + std::to_string(*hit_) + ": " + it->second.describe();
   }

@@ -18,8 +18,6 @@ namespace {
 using testing::Recorder;
 
 constexpr SlotId kD0 = 24;  // "d0", a node slot
-constexpr int kPreFireScript = 1, kInFireScript = 2, kPostFireScript = 3;  // setTransitionScript's `which`
-constexpr int kOnDepositScript = 0, kOnRemoveScript = 1;  // setSlotScript's `which`
 
 Duration seconds(double s) { return Duration{Duration::Law::Fixed, s, 0.0, {}}; }
 
@@ -147,7 +145,7 @@ TEST(KernelReentry, DeletingATakenNodeInOnRemoveLeavesTheOtherTokensTheirCalls) 
   const auto q = b.addPlace("Q");
   b.setNodes(p, kD0, {"n0", "n1", "n2"});
   b.setSlot(q, kD0, SlotKind::Node, kUnbounded, 0);
-  b.setSlotScript(p, kD0, kOnRemoveScript, b.addScript(pass()));
+  b.setSlotScript(p, kD0, ScriptKind::OnRemove, b.addScript(pass()));
   const auto t = b.addTransition("T", seconds(1));
   b.addInput(p, t, kD0, 3);
   b.addOutput(t, q, kD0, 3);
@@ -182,8 +180,8 @@ TEST(KernelReentry, DeletingSeveralNodesInOnRemoveMeetsAStartThatTookAllItsInput
   b.setSlot(q, kD0, SlotKind::Node, kUnbounded, 0);
   b.setSlot(s, kD0, SlotKind::Node, kUnbounded, 0);
   const auto script = b.addScript(pass());
-  b.setSlotScript(p, kD0, kOnRemoveScript, script);
-  b.setSlotScript(r, kD0, kOnRemoveScript, script);
+  b.setSlotScript(p, kD0, ScriptKind::OnRemove, script);
+  b.setSlotScript(r, kD0, ScriptKind::OnRemove, script);
   const auto t = b.addTransition("T", seconds(1));
   b.addInput(p, t, kD0, 1);
   b.addInput(r, t, kD0, 2);
@@ -224,7 +222,7 @@ TEST(KernelReentry, SettingMarkingsInOnRemoveCannotUndoATakeOrOverfillAnOutput) 
   b.setSlot(a, kDefaultSlot, SlotKind::Control, kUnbounded, 2);
   b.setSlot(bp, kDefaultSlot, SlotKind::Control, kUnbounded, 5);
   b.setSlot(c, kDefaultSlot, SlotKind::Control, 3, 0);
-  b.setSlotScript(a, kDefaultSlot, kOnRemoveScript, b.addScript(pass()));
+  b.setSlotScript(a, kDefaultSlot, ScriptKind::OnRemove, b.addScript(pass()));
   const auto t = b.addTransition("T", seconds(1));
   b.addInput(a, t, kDefaultSlot, 2);
   b.addInput(bp, t, kDefaultSlot, 2);
@@ -266,7 +264,7 @@ TEST(KernelReentry, PreInAndPostFireMayAddAndDeleteTokens) {
   b.setSlot(q, kD0, SlotKind::Node, 3, 0);
   const auto t = b.addTransition("T", seconds(2));
   const auto script = b.addScript(pass());
-  for (int which : {kPreFireScript, kInFireScript, kPostFireScript}) b.setTransitionScript(t, which, script);
+  for (ScriptKind which : {ScriptKind::PreFire, ScriptKind::InFire, ScriptKind::PostFire}) b.setTransitionScript(t, which, script);
   b.addInput(p, t, kD0, 2);
   b.addOutput(t, q, kD0, 2);
   Harness h(b.freeze());
@@ -321,9 +319,9 @@ TEST(KernelReentry, OnDepositMayDeleteTokensStillToBeDepositedAndEmptyItsPlace) 
   b.setSlot(s, kD0, SlotKind::Node, kUnbounded, 0);
   b.setSlot(c, kDefaultSlot, SlotKind::Control, 3, 0);
   const auto script = b.addScript(pass());
-  b.setSlotScript(q, kD0, kOnDepositScript, script);
-  b.setSlotScript(s, kD0, kOnDepositScript, script);
-  b.setSlotScript(c, kDefaultSlot, kOnDepositScript, script);
+  b.setSlotScript(q, kD0, ScriptKind::OnDeposit, script);
+  b.setSlotScript(s, kD0, ScriptKind::OnDeposit, script);
+  b.setSlotScript(c, kDefaultSlot, ScriptKind::OnDeposit, script);
   const auto t = b.addTransition("T", seconds(1));
   b.addInput(p, t, kD0, 2);
   b.addInput(a, t, kDefaultSlot, 3);

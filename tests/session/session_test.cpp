@@ -69,7 +69,7 @@ TEST(Session, ResetGivesTheTraceOfAFreshModelByteForByte) {
   std::ostringstream expected;
   fresh->traceTo(expected);
   fresh->run({3.0, {}});
-  ASSERT_NE(expected.str().find("\"see\""), std::string::npos) << "the box lands in the bin";
+  ASSERT_NE(expected.str().find("\"main/see\""), std::string::npos) << "the box lands in the bin";
 
   // a session that ran, fired, stepped the plant and had breakpoints, then reset
   auto s = open(kBin, diags);
@@ -139,7 +139,9 @@ TEST(Session, FireStartsTheChosenTransitionNow) {
   EXPECT_TRUE(s->simulation().kernel().occurring(rare));
   EXPECT_EQ(tokens(*s, "main/ready"), 0);
   // it completes a second (10 steps) later
-  s->run({{}, 10});
+  s->run({{}, 14});
+  EXPECT_EQ(tokens(*s, "main/done"), 0);
+  s->run({{}, 15});
   EXPECT_EQ(tokens(*s, "main/done"), 1);
 }
 
@@ -245,7 +247,9 @@ TEST(Session, APredicateBreakpointStopsWhenItsExpressionHolds) {
   auto s = openFile(kProducerConsumer);
   ASSERT_TRUE(s);
   // the model has no scripts: the interpreter starts for the predicate
-  const auto outcome = runTo(*s, {BreakKind::Predicate, "", Compare::Equal, 0, "sim.place('main/consumed').a0 >= 2", true});
+  const auto outcome =
+      runTo(*s, {BreakKind::Predicate, "", Compare::Equal, 0, "len(sim.place('main/consumed').a0) >= 2", true});
+  ASSERT_EQ(outcome.message, "breakpoint 1: len(sim.place('main/consumed').a0) >= 2");
   EXPECT_EQ(outcome.steps, 400);  // the second item is consumed at 4 s
   // a disabled breakpoint never holds; a removed one is gone
   ASSERT_TRUE(s->enableBreakpoint(1, false));
@@ -253,6 +257,18 @@ TEST(Session, APredicateBreakpointStopsWhenItsExpressionHolds) {
   EXPECT_TRUE(s->removeBreakpoint(1));
   EXPECT_FALSE(s->removeBreakpoint(1));
   EXPECT_TRUE(s->breakpoints().empty());
+}
+
+TEST(Session, APredicateThatRaisesEndsTheRunAsAScriptErrorNamingIt) {
+  auto s = openFile(kProducerConsumer);
+  ASSERT_TRUE(s);
+  std::string why;
+  ASSERT_TRUE(s->addBreakpoint({BreakKind::Predicate, "", Compare::Equal, 0, "sim.time > undefined_name", true}, why));
+  const auto outcome = s->run({{}, 100});
+  EXPECT_EQ(outcome.reason, model::StopReason::ScriptError);
+  EXPECT_EQ(outcome.steps, 1);
+  EXPECT_NE(outcome.message.find("breakpoint 1 (sim.time > undefined_name) failed"), std::string::npos) << outcome.message;
+  EXPECT_NE(outcome.message.find("NameError: name 'undefined_name' is not defined"), std::string::npos);
 }
 
 TEST(Session, ABreakpointOnSomethingTheNetLacksIsRefused) {
@@ -271,8 +287,8 @@ TEST(Session, LiveInputReachesTheSensorsAtItsTime) {
   ASSERT_TRUE(s);
   std::string why;
   ASSERT_TRUE(s->addBreakpoint({BreakKind::Starts, "main/go", Compare::Equal, 0, "", true}, why));
-  // nothing happens without input
-  EXPECT_EQ(s->run({2.0, {}}).reason, model::StopReason::Until);
+  // without input the net is dead at once
+  EXPECT_EQ(s->run({2.0, {}}).reason, model::StopReason::Dead);
   // the viewer steps into the booth, then presses g: 'go' starts at the step the key arrives
   sensors::InputEvent walk;
   walk.kind = sensors::InputEvent::Kind::Viewpoint;

@@ -42,6 +42,8 @@ class Diagnostics {
   void warning(SourceLoc loc, std::string message);
   /// Appends a note at `loc` (it explains the diagnostic before it).
   void note(SourceLoc loc, std::string message);
+  /// Appends every diagnostic of `other`, in order.
+  void append(const Diagnostics& other);
 
   /// True when at least one error was reported.
   [[nodiscard]] bool hasErrors() const { return errors_ > 0; }

@@ -73,7 +73,8 @@ class Session {
   /// One step (semantics §6); starts the run first when needed.
   void step();
   /// Steps until `limits` say stop, the net is dead, a script halts, `interrupt` becomes true,
-  /// or a breakpoint holds (StopReason::Breakpoint, then hit() says which).
+  /// or a breakpoint holds (StopReason::Breakpoint, then hit() says which). A predicate that
+  /// raises ends the run as a script error naming the breakpoint.
   model::RunOutcome run(const model::RunLimits& limits, const model::ProgressFn& progress = {},
                         const std::atomic<bool>* interrupt = nullptr);
   /// Starts the transition named `transition` now (its qualified name). "" when it started,
@@ -130,6 +131,7 @@ class Session {
   std::vector<std::pair<int, Breakpoint>> breakpoints_;
   int next_id_ = 1;
   std::optional<int> hit_;
+  std::string predicate_error_;  // why a predicate of the last run failed
   std::ostream* trace_out_ = nullptr;
   std::vector<sensors::InputEvent> input_;
 };
