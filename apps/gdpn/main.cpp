@@ -75,7 +75,9 @@ std::unique_ptr<gdpn::session::Session> open(const std::string& arg, std::option
   Diagnostics diags;
   std::unique_ptr<gdpn::session::Session> sim;
   if (auto path = model::resolveModelPath(arg, diags)) {
-    if (auto m = model::loadModel(*path, diags)) sim = gdpn::session::Session::create(*m, diags, {seed, script_timeout_s});
+    if (auto m = model::loadModel(*path, diags)) {
+      sim = gdpn::session::Session::create(*m, diags, {seed, script_timeout_s});
+    }
   }
   diags.print(std::cerr);
   if (!sim && diags.errorCount() > 1) std::cerr << diags.errorCount() << " errors\n";

@@ -374,3 +374,27 @@ TEST(CliConvert, AMeshBecomesAModelWithItsSubtree) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Cli, RunStopsAtABreakpointAndSaysWhich) {
+  const std::string model = "run examples/basics/producer_consumer --report /dev/stdout -q ";
+  auto r = gdpn(model + "--break start:main/consume");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("stopped at breakpoint 1: starts main/consume"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"steps\": 100"), std::string::npos) << r.out;
+  r = gdpn(model + "--break 'main/consumed>=2' --break 'when:sim.time >= 3'");
+  EXPECT_NE(r.out.find("stopped at breakpoint 2: sim.time >= 3"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"stopped\": \"breakpoint\""), std::string::npos) << r.out;
+  // a breakpoint the net cannot have, or one not written as one, is refused before the run
+  r = gdpn(model + "--break complete:main/nope");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("error: --break 'complete:main/nope': no transition 'main/nope' in the net"),
+            std::string::npos)
+      << r.out;
+  r = gdpn(model + "--break 'main/buffer=>3'");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("expected start:TRANSITION"), std::string::npos) << r.out;
+}
+
+}  // namespace

@@ -90,7 +90,9 @@ class Kernel {
   /// (Steps with the net off before now count as if the occurrence had started after them.)
   [[nodiscard]] std::int64_t startStep(TransitionId t) const { return tr_[t].start_step + idle_; }
   /// Step at which the current occurrence of `t` completes (-1 when not occurring).
-  [[nodiscard]] std::int64_t endStep(TransitionId t) const { return tr_[t].end_step < 0 ? -1 : tr_[t].end_step + idle_; }
+  [[nodiscard]] std::int64_t endStep(TransitionId t) const {
+    return tr_[t].end_step < 0 ? -1 : tr_[t].end_step + idle_;
+  }
   /// The node tokens `t` holds while occurring, with their slots, in the order taken.
   [[nodiscard]] std::span<const std::pair<SlotId, NodeRef>> held(TransitionId t) const;
   /// Sets the marking of control slot `ps` to `count` (a script's `set`). Returns "" or why
