@@ -4,7 +4,9 @@
 #include <pybind11/eval.h>
 #include <pybind11/stl.h>
 
+#include <array>
 #include <atomic>
+#include <cmath>
 #include <sstream>
 
 #include "gdpn/model/report.h"
@@ -83,17 +85,18 @@ class Model {
   }
 
   void reset(std::optional<std::uint64_t> seed) {
+    core::Diagnostics diags;
     trace_.str("");
     trace_.clear();
-    session_->reset(seed);
+    if (!session_->reset(diags, seed)) raiseModelError(diags);
     outcome_ = {};
   }
 
   int addBreakpoint(std::optional<std::string> starts, std::optional<std::string> completes,
                     std::optional<std::string> place, const std::string& compare, std::int64_t value,
-                    std::optional<std::string> predicate) {
+                    const py::object& predicate) {
     const int given = static_cast<int>(starts.has_value()) + static_cast<int>(completes.has_value()) +
-                      static_cast<int>(place.has_value()) + static_cast<int>(predicate.has_value());
+                      static_cast<int>(place.has_value()) + static_cast<int>(!predicate.is_none());
     if (given != 1) throw py::value_error("a breakpoint watches one thing: starts=, completes=, place= or predicate=");
     session::Breakpoint bp;
     bp.kind = starts      ? session::BreakKind::Starts
@@ -101,7 +104,13 @@ class Model {
               : place     ? session::BreakKind::Marking
                           : session::BreakKind::Predicate;
     bp.target = starts ? *starts : completes ? *completes : place ? *place : "";
-    bp.expression = predicate.value_or("");
+    if (py::isinstance<py::str>(predicate)) {
+      bp.expression = predicate.cast<std::string>();
+    } else if (!predicate.is_none()) {
+      if (!PyCallable_Check(predicate.ptr())) throw py::type_error("predicate is a Python expression or a callable");
+      // a callable is asked after each step, in this interpreter (the GIL is held by run())
+      bp.test = [predicate] { return py::bool_(predicate()).cast<bool>(); };
+    }
     if (place) {
       const auto how = session::parseCompare(compare);
       if (!how) throw py::value_error("compare is one of <, <=, ==, !=, >=, >; got '" + compare + "'");
@@ -112,6 +121,35 @@ class Model {
     const auto id = session_->addBreakpoint(bp, why);
     if (!id) throw py::value_error(why);
     return *id;
+  }
+
+  void enableBreakpoint(int id, bool enabled) {
+    if (!session_->enableBreakpoint(id, enabled)) throw py::key_error("no breakpoint " + std::to_string(id));
+  }
+
+  void push(std::optional<std::string> key, bool down, std::optional<std::array<double, 3>> viewpoint,
+            std::optional<std::pair<std::array<double, 3>, std::array<double, 3>>> click, std::optional<double> at) {
+    const int given = static_cast<int>(key.has_value()) + static_cast<int>(viewpoint.has_value()) +
+                      static_cast<int>(click.has_value());
+    if (given != 1) throw py::value_error("an input event is one of key=, viewpoint= or click=");
+    auto vec = [](const std::array<double, 3>& a) { return core::Vec3{a[0], a[1], a[2]}; };
+    sensors::InputEvent ev;
+    ev.t = at.value_or(time());
+    if (!std::isfinite(ev.t)) throw py::value_error("at must be a finite time, seconds");
+    if (key) {
+      ev.kind = sensors::InputEvent::Kind::Key;
+      ev.key = *key;
+      ev.down = down;
+    } else if (viewpoint) {
+      ev.kind = sensors::InputEvent::Kind::Viewpoint;
+      ev.position = vec(*viewpoint);
+    } else {
+      const core::Vec3 from = vec(click->first), to = vec(click->second);
+      if ((to - from).length() <= 0) throw py::value_error("a click goes from one point to another");
+      ev.kind = sensors::InputEvent::Kind::Click;
+      ev.ray = {from, (to - from).normalized()};
+    }
+    session_->push(std::move(ev));
   }
 
   void removeBreakpoint(int id) {
@@ -248,8 +286,16 @@ class FireError(ValueError):
            py::arg("completes") = py::none(), py::arg("place") = py::none(), py::arg("compare") = ">=",
            py::arg("value") = 0, py::arg("predicate") = py::none(),
            "Stops run() at the end of the step where a transition starts or completes, a place's tokens "
-           "compare with `value`, or a Python expression over the model's globals is true. Returns its id.")
+           "compare with `value`, or a predicate holds: a Python expression over the model's globals, or a "
+           "callable taking no arguments. Returns its id.")
       .def("remove_breakpoint", &Model::removeBreakpoint, py::arg("id"))
+      .def("enable_breakpoint", &Model::enableBreakpoint, py::arg("id"), py::arg("enabled") = true,
+           "Enables or disables a breakpoint (a disabled one is kept but never stops a run)")
+      .def("push", &Model::push, py::kw_only(), py::arg("key") = py::none(), py::arg("down") = true,
+           py::arg("viewpoint") = py::none(), py::arg("click") = py::none(), py::arg("at") = py::none(),
+           "One live input event for the sensors: a key pressed (or released, down=False), the viewer "
+           "moved to a point (m), or a click along a ray ((from), (to)); delivered at the first step at "
+           "or after `at` seconds (default: now)")
       .def_property_readonly("breakpoints", &Model::breakpoints, "[{id, watches, enabled}]")
       .def_property_readonly("hit", &Model::hit, "the id of the breakpoint that ended the last run, or None")
       .def("marking", &Model::marking, py::arg("place"),

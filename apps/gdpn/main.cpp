@@ -259,36 +259,22 @@ struct RunArgs {
 /// A breakpoint written on the command line: "start:T", "complete:T", "PLACE OP N" (OP one
 /// of < <= == != >= >) or "when:EXPRESSION". Nullopt with `why` when it is none of these.
 std::optional<gdpn::session::Breakpoint> parseBreakpoint(const std::string& spec, std::string& why) {
-  using gdpn::session::BreakKind;
-  gdpn::session::Breakpoint bp;
-  auto after = [&](std::string_view head) { return spec.substr(head.size()); };
-  if (spec.starts_with("start:")) {
-    bp.kind = BreakKind::Starts;
-    bp.target = after("start:");
-  } else if (spec.starts_with("complete:")) {
-    bp.kind = BreakKind::Completes;
-    bp.target = after("complete:");
-  } else if (spec.starts_with("when:")) {
-    bp.kind = BreakKind::Predicate;
-    bp.expression = after("when:");
-  } else {
-    // PLACE OP N: the operator is the first run of <, =, !, >
-    const auto op = spec.find_first_of("<=!>");
-    const auto end = spec.find_first_not_of("<=!>", op);
-    const auto how = op == std::string::npos ? std::nullopt : gdpn::session::parseCompare(spec.substr(op, end - op));
-    std::int64_t value = 0;
-    const std::string number = end == std::string::npos ? "" : spec.substr(end);
-    const auto [ptr, ec] = std::from_chars(number.data(), number.data() + number.size(), value);
-    if (!how || number.empty() || ec != std::errc() || ptr != number.data() + number.size()) {
-      why = "expected start:TRANSITION, complete:TRANSITION, PLACE>=N (or <, <=, ==, !=, >) or when:EXPRESSION";
-      return std::nullopt;
-    }
-    bp.kind = BreakKind::Marking;
-    bp.target = spec.substr(0, op);
-    bp.compare = *how;
-    bp.value = value;
+  using gdpn::session::Breakpoint;
+  if (spec.starts_with("start:")) return Breakpoint::starts(spec.substr(6));
+  if (spec.starts_with("complete:")) return Breakpoint::completes(spec.substr(9));
+  if (spec.starts_with("when:")) return Breakpoint::predicate(spec.substr(5));
+  // PLACE OP N: the operator is the first run of <, =, !, >
+  const auto op = spec.find_first_of("<=!>");
+  const auto end = spec.find_first_not_of("<=!>", op);
+  const auto how = op == std::string::npos ? std::nullopt : gdpn::session::parseCompare(spec.substr(op, end - op));
+  std::int64_t value = 0;
+  const std::string number = end == std::string::npos ? "" : spec.substr(end);
+  const auto [ptr, ec] = std::from_chars(number.data(), number.data() + number.size(), value);
+  if (!how || number.empty() || ec != std::errc() || ptr != number.data() + number.size()) {
+    why = "expected start:TRANSITION, complete:TRANSITION, PLACE>=N (or <, <=, ==, !=, >) or when:EXPRESSION";
+    return std::nullopt;
   }
-  return bp;
+  return Breakpoint::marking(spec.substr(0, op), *how, value);
 }
 
 int run(const RunArgs& a) {

@@ -233,3 +233,23 @@ pages:
     assert model.marking("main/b") == {"d0": []}
     model.run(until=2.0)
     assert model.marking("main/b") == {"d0": ["ball"]}
+
+
+def test_a_callable_predicate_and_live_input(source):
+    model = gdpn.load(str(source / "tests/data/input/console.gdpn.yaml"))
+    model.add_breakpoint(starts="main/go")
+    assert model.run()["stopped"] == "dead"  # nobody at the console
+    model.push(viewpoint=(0, 0, 0), at=1.0)
+    model.push(key="g", at=1.5)
+    report = model.run(until=5)
+    assert (report["stopped"], report["steps"]) == ("breakpoint", 15)
+    seen = []
+    model.reset()
+    late = model.add_breakpoint(predicate=lambda: seen.append(model.time) or model.time >= 0.3)
+    model.enable_breakpoint(1, False)
+    model.push(viewpoint=(0, 0, 0))
+    model.push(key="x", at=1.0)  # pending input keeps the run going
+    assert model.run(until=5)["steps"] == 3 and model.hit == late
+    assert seen[-1] == pytest.approx(0.3)
+    with pytest.raises(ValueError, match="one of key=, viewpoint= or click="):
+        model.push()

@@ -427,7 +427,15 @@ void Simulation::stepPlant() {
 
 RunOutcome Simulation::run(const RunLimits& limits, const ProgressFn& progress,
                            const std::atomic<bool>* interrupt) {
+  const bool fresh = !started_;
   start();
+  // a breakpoint may already hold after time 0's firing phase
+  if (fresh && stop_check_ && !scriptHalt() && stop_check_()) {
+    RunOutcome at_start;
+    at_start.reason = StopReason::Breakpoint;
+    if (trace_out_) trace_out_->flush();
+    return at_start;
+  }
   std::int64_t target = -1;
   if (limits.steps) {
     target = *limits.steps;
@@ -456,7 +464,7 @@ RunOutcome Simulation::run(const RunLimits& limits, const ProgressFn& progress,
     }
     step();
     if (step_hook_) step_hook_();
-    if (stop_check_ && stop_check_()) {
+    if (stop_check_ && !scriptHalt() && stop_check_()) {
       outcome.reason = StopReason::Breakpoint;
       break;
     }

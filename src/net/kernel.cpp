@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "gdpn/core/assert.h"
 #include "detail/sort_keys.h"
@@ -107,6 +108,8 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
 }
 
 void Kernel::addObserver(NetObserver* observer) { observers_.push_back(observer); }
+
+void Kernel::removeObserver(NetObserver* observer) { std::erase(observers_, observer); }
 
 std::int64_t Kernel::durationSteps(double seconds) const { return net::durationSteps(seconds, dt_); }
 
@@ -570,9 +573,9 @@ std::string Kernel::fire(TransitionId t) {
   if ((tr.scripts & kGuard) && hooks_ && (hooks_->halted() || !hooks_->guard(t))) return name + "'s guard is false";
   if (tr.held >= 0 && hooks_ && !selectTokens(t)) return "no node token satisfies the predicates of " + name;
   // what the start enables waits for the next firing phase, as if enabled in this one
-  in_firing_ = true;
+  const bool was = std::exchange(in_firing_, true);
   begin(t);
-  in_firing_ = false;
+  in_firing_ = was;
   return {};
 }
 

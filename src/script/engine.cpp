@@ -614,10 +614,20 @@ std::optional<bool> Engine::evaluate(const std::string& expression, std::string&
     }
     code = py::reinterpret_steal<py::object>(c);
   }
+  // the script timeout and Ctrl-C reach a predicate as they reach any script
+  impl_->watchdog->enter();
   PyObject* r = PyEval_EvalCode(code.ptr(), impl_->globals.ptr(), impl_->globals.ptr());
   const int truth = r ? PyObject_IsTrue(r) : -1;
+  impl_->watchdog->leave();
   Py_XDECREF(r);
   if (truth < 0) {
+    if (PyErr_ExceptionMatches(PyExc_KeyboardInterrupt)) {
+      const bool late = impl_->watchdog->timedOut();
+      PyErr_Clear();
+      error = late ? "it ran longer than the script timeout of " + core::formatDouble(impl_->options.timeout_s) + " s"
+                   : "it was interrupted (Ctrl-C)";
+      return std::nullopt;
+    }
     error = Impl::formatPending();
     return std::nullopt;
   }

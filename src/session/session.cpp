@@ -26,12 +26,41 @@ std::optional<Compare> parseCompare(std::string_view text) {
   return std::nullopt;
 }
 
+Breakpoint Breakpoint::starts(std::string transition) {
+  Breakpoint b;
+  b.kind = BreakKind::Starts;
+  b.target = std::move(transition);
+  return b;
+}
+
+Breakpoint Breakpoint::completes(std::string transition) {
+  Breakpoint b = starts(std::move(transition));
+  b.kind = BreakKind::Completes;
+  return b;
+}
+
+Breakpoint Breakpoint::marking(std::string place, Compare how, std::int64_t value) {
+  Breakpoint b;
+  b.kind = BreakKind::Marking;
+  b.target = std::move(place);
+  b.compare = how;
+  b.value = value;
+  return b;
+}
+
+Breakpoint Breakpoint::predicate(std::string expression) {
+  Breakpoint b;
+  b.kind = BreakKind::Predicate;
+  b.expression = std::move(expression);
+  return b;
+}
+
 std::string Breakpoint::describe() const {
   switch (kind) {
     case BreakKind::Starts: return "starts " + target;
     case BreakKind::Completes: return "completes " + target;
     case BreakKind::Marking: return target + " " + compareName(compare) + " " + std::to_string(value);
-    case BreakKind::Predicate: return expression;
+    case BreakKind::Predicate: return expression.empty() ? "a test of the caller's" : expression;
   }
   return {};
 }
@@ -81,27 +110,62 @@ std::unique_ptr<model::Simulation> Session::make(const model::Model& model, core
 }
 
 void Session::adopt(std::unique_ptr<model::Simulation> sim) {
+  if (watcher_ && sim_) sim_->kernel().removeObserver(watcher_.get());
   sim_ = std::move(sim);
   hit_.reset();
   if (trace_out_) sim_->traceTo(*trace_out_);
   if (!input_.empty()) sim_->setInput(input_);
-  // the watcher listens only while some breakpoint needs it
-  const bool watch = std::any_of(breakpoints_.begin(), breakpoints_.end(), [](const auto& b) {
+  // breakpoints whose transition or place the net lacks (after an edit) are dropped
+  targets_.clear();
+  for (auto it = breakpoints_.begin(); it != breakpoints_.end();) {
+    const std::int64_t target = targetOf(it->second);
+    const bool named = it->second.kind != BreakKind::Predicate;
+    if (named && target < 0) {
+      it = breakpoints_.erase(it);
+      continue;
+    }
+    targets_.push_back(target);
+    ++it;
+  }
+  watcher_.reset();
+  watch();
+}
+
+void Session::watch() {
+  const bool needed = std::any_of(breakpoints_.begin(), breakpoints_.end(), [](const auto& b) {
     return b.second.kind == BreakKind::Starts || b.second.kind == BreakKind::Completes;
   });
-  watcher_.reset();
-  if (watch) {
+  if (needed && !watcher_) {
     watcher_ = std::make_unique<Watcher>();
     sim_->kernel().addObserver(watcher_.get());
+  } else if (!needed && watcher_) {
+    sim_->kernel().removeObserver(watcher_.get());
+    watcher_.reset();
   }
 }
 
-void Session::reset(std::optional<std::uint64_t> seed) {
+std::int64_t Session::targetOf(const Breakpoint& bp) const {
+  switch (bp.kind) {
+    case BreakKind::Starts:
+    case BreakKind::Completes: return sim_->net().findTransition(bp.target);
+    case BreakKind::Marking: return sim_->net().findPlace(bp.target);
+    case BreakKind::Predicate: return -1;
+  }
+  return -1;
+}
+
+bool Session::reset(core::Diagnostics& diags, std::optional<std::uint64_t> seed) {
+  const auto previous = options_.seed;
   if (seed) options_.seed = seed;
-  core::Diagnostics diags;
-  auto sim = make(model_, diags);
-  // the model made a run before, so it makes one again (the same net, scene and scripts)
-  if (sim) adopt(std::move(sim));
+  core::Diagnostics own;
+  auto sim = make(model_, own);
+  diags.append(own);
+  if (!sim) {
+    options_.seed = previous;
+    return false;
+  }
+  adopt(std::move(sim));
+  return true;
 }
 
 bool Session::rebuild(const model::Model& model, core::Diagnostics& diags) {
@@ -110,13 +174,6 @@ bool Session::rebuild(const model::Model& model, core::Diagnostics& diags) {
   auto sim = make(model, own);
   diags.append(own);
   if (!sim) return false;
-  // breakpoints whose target the edit removed are dropped
-  std::erase_if(breakpoints_, [&](const auto& b) {
-    const auto& bp = b.second;
-    if (bp.kind == BreakKind::Starts || bp.kind == BreakKind::Completes) return sim->net().findTransition(bp.target) < 0;
-    if (bp.kind == BreakKind::Marking) return sim->net().findPlace(bp.target) < 0;
-    return false;
-  });
   model_ = model;
   adopt(std::move(sim));
   return true;
@@ -137,7 +194,10 @@ void Session::step() {
   sim_->step();
 }
 
-void Session::stepPlant() { sim_->stepPlant(); }
+void Session::stepPlant() {
+  if (!sim_->started()) sim_->start();
+  sim_->stepPlant();
+}
 
 void Session::push(sensors::InputEvent event) { sim_->push(std::move(event)); }
 
@@ -150,27 +210,23 @@ std::string Session::fire(const std::string& transition) {
 }
 
 std::optional<int> Session::addBreakpoint(Breakpoint breakpoint, std::string& why) {
-  const net::Net& net = sim_->net();
+  const std::int64_t target = targetOf(breakpoint);
   switch (breakpoint.kind) {
     case BreakKind::Starts:
     case BreakKind::Completes:
-      if (net.findTransition(breakpoint.target) < 0) {
+      if (target < 0) {
         why = "no transition '" + breakpoint.target + "' in the net";
         return std::nullopt;
       }
-      if (!watcher_) {
-        watcher_ = std::make_unique<Watcher>();
-        sim_->kernel().addObserver(watcher_.get());
-      }
       break;
     case BreakKind::Marking:
-      if (net.findPlace(breakpoint.target) < 0) {
+      if (target < 0) {
         why = "no place '" + breakpoint.target + "' in the net";
         return std::nullopt;
       }
       break;
     case BreakKind::Predicate:
-      if (breakpoint.expression.find_first_not_of(" \t\n") == std::string::npos) {
+      if (!breakpoint.test && breakpoint.expression.find_first_not_of(" \t\n") == std::string::npos) {
         why = "a predicate breakpoint needs an expression";
         return std::nullopt;
       }
@@ -178,11 +234,18 @@ std::optional<int> Session::addBreakpoint(Breakpoint breakpoint, std::string& wh
   }
   const int id = next_id_++;
   breakpoints_.emplace_back(id, std::move(breakpoint));
+  targets_.push_back(target);
+  watch();
   return id;
 }
 
 bool Session::removeBreakpoint(int id) {
-  return std::erase_if(breakpoints_, [&](const auto& b) { return b.first == id; }) > 0;
+  const auto it = std::find_if(breakpoints_.begin(), breakpoints_.end(), [&](const auto& b) { return b.first == id; });
+  if (it == breakpoints_.end()) return false;
+  targets_.erase(targets_.begin() + (it - breakpoints_.begin()));
+  breakpoints_.erase(it);
+  watch();
+  return true;
 }
 
 bool Session::enableBreakpoint(int id, bool enabled) {
@@ -195,27 +258,36 @@ bool Session::enableBreakpoint(int id, bool enabled) {
 }
 
 std::optional<int> Session::holding() {
-  const net::Net& net = sim_->net();
-  for (const auto& [id, bp] : breakpoints_) {
+  for (std::size_t i = 0; i < breakpoints_.size(); ++i) {
+    const auto& [id, bp] = breakpoints_[i];
     if (!bp.enabled) continue;
     switch (bp.kind) {
       case BreakKind::Starts:
       case BreakKind::Completes: {
-        const auto t = static_cast<net::TransitionId>(net.findTransition(bp.target));
+        const auto t = static_cast<net::TransitionId>(targets_[i]);
         const auto& seen = bp.kind == BreakKind::Starts ? watcher_->started : watcher_->completed;
         if (std::find(seen.begin(), seen.end(), t) != seen.end()) return id;
         break;
       }
       case BreakKind::Marking: {
-        const auto p = static_cast<net::PlaceId>(net.findPlace(bp.target));
+        const auto p = static_cast<net::PlaceId>(targets_[i]);
         if (compare(sim_->kernel().placeTokens(p), bp.compare, bp.value)) return id;
         break;
       }
       case BreakKind::Predicate: {
         std::string error;
-        const auto holds = sim_->evaluate(bp.expression, error);
+        std::optional<bool> holds;
+        if (bp.expression.empty() && bp.test) {
+          try {
+            holds = bp.test();
+          } catch (const std::exception& e) {
+            error = e.what();
+          }
+        } else {
+          holds = sim_->evaluate(bp.expression, error);
+        }
         // a predicate that fails stops the run too: the user learns why at once
-        if (!holds) predicate_error_ = "breakpoint " + std::to_string(id) + " (" + bp.expression + ") failed: " + error;
+        if (!holds) predicate_error_ = "breakpoint " + std::to_string(id) + " (" + bp.describe() + ") failed: " + error;
         if (!holds || *holds) return id;
         break;
       }

@@ -25,6 +25,9 @@ std::unique_ptr<Session> openFile(const std::string& relative) {
   return s;
 }
 
+// the producer makes an item each second, the consumer takes 1.5 s per item (dt 0.01)
+const char* kProducerConsumer = "examples/basics/producer_consumer/producer_consumer.gdpn.yaml";
+
 std::int64_t tokens(const Session& s, const std::string& place) {
   const auto p = s.simulation().net().findPlace(place);
   EXPECT_GE(p, 0) << place;
@@ -35,8 +38,8 @@ std::int64_t tokens(const Session& s, const std::string& place) {
 const std::string kBin = R"Y(gdpn: 1
 settings: {dt: 0.01, seed: 3}
 scene:
-  - Plane: {}
-  - Region: {name: bin, size: [4, 4, 1], scope: world}
+  - Transform: {translation: [0, 0, -0.1], children: [{Plane: {}}]}
+  - Transform: {name: high, translation: [0, 0, 0.5], children: [{Region: {name: bin, size: [4, 4, 1], scope: world}}]}
   - Transform:
       name: drop
       translation: [0, 0, 3]
@@ -46,7 +49,7 @@ pages:
   main:
     places:
       idle: {tokens: 2}
-      watching: {sensors: {c0: bin}}
+      watching: {sensors: {c0: high/bin}}
       landed: {}
       busy: {}
     transitions:
@@ -80,10 +83,10 @@ TEST(Session, ResetGivesTheTraceOfAFreshModelByteForByte) {
   s->stepPlant();
   (void)s->fire("main/rest");
   std::string why;
-  ASSERT_TRUE(s->addBreakpoint({BreakKind::Predicate, "", Compare::Equal, 0, "sim.time > 100", true}, why));
+  ASSERT_TRUE(s->addBreakpoint(Breakpoint::predicate("sim.time > 100"), why));
   std::ostringstream again;
   s->traceTo(again);
-  s->reset();
+  ASSERT_TRUE(s->reset(diags));
   EXPECT_EQ(s->simulation().kernel().steps(), 0);
   EXPECT_EQ(tokens(*s, "main/idle"), 2);
   s->run({3.0, {}});
@@ -92,12 +95,12 @@ TEST(Session, ResetGivesTheTraceOfAFreshModelByteForByte) {
   // another seed gives another run, and resetting with the first seed gives the first again
   std::ostringstream other;
   s->traceTo(other);
-  s->reset(11);
+  ASSERT_TRUE(s->reset(diags, 11));
   s->run({3.0, {}});
   EXPECT_NE(other.str(), expected.str());
   std::ostringstream back;
   s->traceTo(back);
-  s->reset(3);
+  ASSERT_TRUE(s->reset(diags, 3));
   s->run({3.0, {}});
   EXPECT_EQ(back.str(), expected.str());
 }
@@ -158,6 +161,69 @@ TEST(Session, FireOfATransitionThatCannotStartIsRefusedWithTheReason) {
   EXPECT_EQ(s->fire("main/rare"), "'main/rare' is occurring");
 }
 
+TEST(Session, WhatAFireEnablesStartsAtTheNextStep) {
+  core::Diagnostics diags;
+  auto s = open(R"Y(gdpn: 1
+settings: {dt: 0.1}
+pages:
+  main:
+    places:
+      gate: {tokens: 1}
+      opened: {}
+      waited: {}
+    transitions:
+      open: {duration: 1, probability: 0.000001}
+      wait: {}
+    arcs:
+      - gate -> open
+      - open -> opened
+      - {from: gate, to: wait, kind: inhibitor}
+      - wait -> waited
+)Y",
+                diags);
+  ASSERT_TRUE(s) << diags.str();
+  s->run({{}, 3});
+  ASSERT_EQ(s->fire("main/open"), "");
+  // the emptied gate enables 'wait' (its inhibitor arc): the next step's firing phase starts it
+  std::string why;
+  ASSERT_TRUE(s->addBreakpoint(Breakpoint::starts("main/wait"), why));
+  const auto outcome = s->run({{}, 20});
+  EXPECT_EQ(outcome.reason, model::StopReason::Breakpoint);
+  EXPECT_EQ(outcome.steps, 4);
+}
+
+TEST(Session, SensorConditionsAreReadAgainWhenTheNetIsBackOn) {
+  core::Diagnostics diags;
+  auto s = open(kBin, diags);
+  ASSERT_TRUE(s) << diags.str();
+  const auto see = static_cast<net::TransitionId>(s->simulation().net().findTransition("main/see"));
+  // the box falls into the bin while the net is off: nothing sees it
+  for (int i = 0; i < 150; ++i) s->stepPlant();
+  ASSERT_LT(s->simulation().plant()->find("drop/box")->world.position.z, 0.5) << "the box lies in the bin";
+  ASSERT_GT(s->simulation().plant()->find("drop/box")->world.position.z, -0.05) << "on the floor";
+  EXPECT_FALSE(s->simulation().kernel().occurring(see));
+  EXPECT_EQ(tokens(*s, "main/landed"), 0);
+  // the first step with the net on reads the bin's condition as it is now
+  s->step();
+  EXPECT_TRUE(s->simulation().kernel().occurring(see));
+}
+
+TEST(Session, APredicateOnAModelWithoutScriptsLeavesItsTraceAsItWas) {
+  auto plain = openFile(kProducerConsumer);
+  ASSERT_TRUE(plain);
+  std::ostringstream expected;
+  plain->traceTo(expected);
+  plain->run({{}, 600});
+  auto s = openFile(kProducerConsumer);
+  ASSERT_TRUE(s);
+  std::ostringstream trace;
+  s->traceTo(trace);
+  std::string why;
+  ASSERT_TRUE(s->addBreakpoint(Breakpoint::predicate("sim.time > 1000"), why));
+  EXPECT_EQ(s->run({{}, 600}).reason, model::StopReason::Until);
+  EXPECT_EQ(trace.str(), expected.str());
+}
+
 const std::string kFall = R"Y(gdpn: 1
 settings: {dt: 0.01}
 scene:
@@ -193,15 +259,13 @@ TEST(Session, StepPlantMovesThePlantWhileTheNetWaits) {
   EXPECT_EQ(tokens(*s, "main/b"), 0);
   EXPECT_TRUE(s->simulation().kernel().occurring(t));
   std::string why;
-  ASSERT_TRUE(s->addBreakpoint({BreakKind::Completes, "main/t", Compare::Equal, 0, "", true}, why)) << why;
+  ASSERT_TRUE(s->addBreakpoint(Breakpoint::completes("main/t"), why)) << why;
   const auto outcome = s->run({});
   EXPECT_EQ(outcome.reason, model::StopReason::Breakpoint);
   EXPECT_EQ(outcome.steps, 150);
   EXPECT_EQ(tokens(*s, "main/b"), 1);
 }
 
-// the producer makes an item each second, the consumer takes 1.5 s per item (dt 0.01)
-const char* kProducerConsumer = "examples/basics/producer_consumer/producer_consumer.gdpn.yaml";
 
 model::RunOutcome runTo(Session& s, Breakpoint bp) {
   std::string why;
@@ -217,7 +281,7 @@ TEST(Session, ABreakpointOnAStartStopsAtTheStepItStarts) {
   auto s = openFile(kProducerConsumer);
   ASSERT_TRUE(s);
   // the first item is made at 1 s; the consumer starts on it in the same step
-  const auto outcome = runTo(*s, {BreakKind::Starts, "main/consume", Compare::Equal, 0, "", true});
+  const auto outcome = runTo(*s, Breakpoint::starts("main/consume"));
   EXPECT_EQ(outcome.steps, 100);
   EXPECT_EQ(outcome.message, "breakpoint 1: starts main/consume");
   // running on stops at the next start: the first item is consumed at 2.5 s, the second
@@ -228,14 +292,14 @@ TEST(Session, ABreakpointOnAStartStopsAtTheStepItStarts) {
 TEST(Session, ABreakpointOnACompletionStopsAtTheStepItCompletes) {
   auto s = openFile(kProducerConsumer);
   ASSERT_TRUE(s);
-  EXPECT_EQ(runTo(*s, {BreakKind::Completes, "main/consume", Compare::Equal, 0, "", true}).steps, 250);
+  EXPECT_EQ(runTo(*s, Breakpoint::completes("main/consume")).steps, 250);
   EXPECT_EQ(tokens(*s, "main/consumed"), 1);
 }
 
 TEST(Session, AMarkingBreakpointStopsAtTheFirstStepItsConditionHolds) {
   auto s = openFile(kProducerConsumer);
   ASSERT_TRUE(s);
-  const auto outcome = runTo(*s, {BreakKind::Marking, "main/buffer", Compare::GreaterEqual, 3, "", true});
+  const auto outcome = runTo(*s, Breakpoint::marking("main/buffer", Compare::GreaterEqual, 3));
   EXPECT_EQ(tokens(*s, "main/buffer"), 3);
   // one step earlier it did not hold
   auto before = openFile(kProducerConsumer);
@@ -248,12 +312,14 @@ TEST(Session, APredicateBreakpointStopsWhenItsExpressionHolds) {
   ASSERT_TRUE(s);
   // the model has no scripts: the interpreter starts for the predicate
   const auto outcome =
-      runTo(*s, {BreakKind::Predicate, "", Compare::Equal, 0, "len(sim.place('main/consumed').a0) >= 2", true});
+      runTo(*s, Breakpoint::predicate("len(sim.place('main/consumed').a0) >= 2"));
   ASSERT_EQ(outcome.message, "breakpoint 1: len(sim.place('main/consumed').a0) >= 2");
   EXPECT_EQ(outcome.steps, 400);  // the second item is consumed at 4 s
   // a disabled breakpoint never holds; a removed one is gone
   ASSERT_TRUE(s->enableBreakpoint(1, false));
-  EXPECT_EQ(s->run({{}, 100}).reason, model::StopReason::Until);
+  const auto on = s->run({{}, 500});
+  EXPECT_EQ(on.reason, model::StopReason::Until);
+  EXPECT_EQ(on.steps, 500);
   EXPECT_TRUE(s->removeBreakpoint(1));
   EXPECT_FALSE(s->removeBreakpoint(1));
   EXPECT_TRUE(s->breakpoints().empty());
@@ -263,10 +329,10 @@ TEST(Session, APredicateThatRaisesEndsTheRunAsAScriptErrorNamingIt) {
   auto s = openFile(kProducerConsumer);
   ASSERT_TRUE(s);
   std::string why;
-  ASSERT_TRUE(s->addBreakpoint({BreakKind::Predicate, "", Compare::Equal, 0, "sim.time > undefined_name", true}, why));
+  ASSERT_TRUE(s->addBreakpoint(Breakpoint::predicate("sim.time > undefined_name"), why));
   const auto outcome = s->run({{}, 100});
   EXPECT_EQ(outcome.reason, model::StopReason::ScriptError);
-  EXPECT_EQ(outcome.steps, 1);
+  EXPECT_EQ(outcome.steps, 0);  // checked first after time 0's firing phase
   EXPECT_NE(outcome.message.find("breakpoint 1 (sim.time > undefined_name) failed"), std::string::npos) << outcome.message;
   EXPECT_NE(outcome.message.find("NameError: name 'undefined_name' is not defined"), std::string::npos);
 }
@@ -275,18 +341,18 @@ TEST(Session, ABreakpointOnSomethingTheNetLacksIsRefused) {
   auto s = openFile(kProducerConsumer);
   ASSERT_TRUE(s);
   std::string why;
-  EXPECT_FALSE(s->addBreakpoint({BreakKind::Starts, "main/nope", Compare::Equal, 0, "", true}, why));
+  EXPECT_FALSE(s->addBreakpoint(Breakpoint::starts("main/nope"), why));
   EXPECT_EQ(why, "no transition 'main/nope' in the net");
-  EXPECT_FALSE(s->addBreakpoint({BreakKind::Marking, "buffer", Compare::Equal, 0, "", true}, why));
+  EXPECT_FALSE(s->addBreakpoint(Breakpoint::marking("buffer", Compare::Equal, 0), why));
   EXPECT_EQ(why, "no place 'buffer' in the net");
-  EXPECT_FALSE(s->addBreakpoint({BreakKind::Predicate, "", Compare::Equal, 0, "  ", true}, why));
+  EXPECT_FALSE(s->addBreakpoint(Breakpoint::predicate("  "), why));
 }
 
 TEST(Session, LiveInputReachesTheSensorsAtItsTime) {
   auto s = openFile("tests/data/input/console.gdpn.yaml");
   ASSERT_TRUE(s);
   std::string why;
-  ASSERT_TRUE(s->addBreakpoint({BreakKind::Starts, "main/go", Compare::Equal, 0, "", true}, why));
+  ASSERT_TRUE(s->addBreakpoint(Breakpoint::starts("main/go"), why));
   // without input the net is dead at once
   EXPECT_EQ(s->run({2.0, {}}).reason, model::StopReason::Dead);
   // the viewer steps into the booth, then presses g: 'go' starts at the step the key arrives
@@ -321,10 +387,20 @@ TEST(Session, RebuildTakesAnEditedModelOrKeepsTheOldOne) {
   EXPECT_NE(errors.str().find("nowhere"), std::string::npos) << errors.str();
   EXPECT_EQ(s->simulation().kernel().steps(), 20);
   EXPECT_EQ(s->model().net.pages[0].arcs[0].from, "a");
-  // a good edit: the run starts again from the new model
+  // a good edit: the run starts again from the new model; a breakpoint on what the edit
+  // removed goes with it
+  std::string why;
+  ASSERT_TRUE(s->addBreakpoint(Breakpoint::marking("main/b", Compare::Greater, 5), why));
+  ASSERT_TRUE(s->addBreakpoint(Breakpoint::starts("main/t"), why));
   auto good = model::parseModel(kFall, "session.gdpn.yaml", diags);
   good->net.pages[0].transitions[0].duration.a = 0.5;
-  ASSERT_TRUE(s->rebuild(*good, errors)) << errors.str();
+  good->net.pages[0].transitions[0].name = "quick";
+  good->net.pages[0].arcs[0].to = "quick";
+  good->net.pages[0].arcs[1].from = "quick";
+  core::Diagnostics fine;
+  ASSERT_TRUE(s->rebuild(*good, fine)) << fine.str();
+  ASSERT_EQ(s->breakpoints().size(), 1u);
+  EXPECT_EQ(s->breakpoints()[0].second.target, "main/b");
   EXPECT_EQ(s->simulation().kernel().steps(), 0);
   s->run({{}, 60});
   EXPECT_EQ(tokens(*s, "main/b"), 1);

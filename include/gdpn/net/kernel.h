@@ -43,6 +43,8 @@ class Kernel {
 
   /// Subscribes `observer` (not owned; it must outlive the kernel's use of it).
   void addObserver(NetObserver* observer);
+  /// Unsubscribes `observer` (nothing happens when it is not subscribed).
+  void removeObserver(NetObserver* observer);
   /// Lets `hooks` run the net's scripts (not owned). Without hooks, scripts are not run.
   void setHooks(ScriptHooks* hooks) { hooks_ = hooks; }
   /// Runs phase 4 (firing) once at time 0. Call once, before the first step().

@@ -8,10 +8,12 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "gdpn/core/diagnostics.h"
@@ -43,17 +45,29 @@ struct Breakpoint {
   std::string target;                  ///< Starts, Completes: the transition; Marking: the place (qualified names)
   Compare compare = Compare::GreaterEqual;  ///< Marking: how the tokens compare with `value`
   std::int64_t value = 0;              ///< Marking: tokens
-  std::string expression;              ///< Predicate: a Python expression
+  std::string expression;              ///< Predicate: a Python expression over the model's globals
+  /// Predicate, when `expression` is empty: a test of the caller's own (the Python module
+  /// passes a callable); it may throw, which ends the run as a script error.
+  std::function<bool()> test;
   bool enabled = true;                 ///< a disabled breakpoint is kept but never holds
+
+  /// Holds when transition `transition` starts.
+  static Breakpoint starts(std::string transition);
+  /// Holds when transition `transition` completes.
+  static Breakpoint completes(std::string transition);
+  /// Holds while place `place`'s tokens compare with `value` as `how` says.
+  static Breakpoint marking(std::string place, Compare how, std::int64_t value);
+  /// Holds while the Python expression `expression` is true.
+  static Breakpoint predicate(std::string expression);
 
   /// "starts main/T", "main/buffer >= 3", "sim.time > 2", for messages.
   [[nodiscard]] std::string describe() const;
 };
 
 /// "<", "<=", "==", "!=", ">=", ">".
-const char* compareName(Compare compare);
+[[nodiscard]] const char* compareName(Compare compare);
 /// The comparison written `text` ("<", "<=", "==", "!=", ">=", ">"), or nullopt.
-std::optional<Compare> parseCompare(std::string_view text);
+[[nodiscard]] std::optional<Compare> parseCompare(std::string_view text);
 
 /// A model and its run, with an editor's controls.
 class Session {
@@ -68,8 +82,9 @@ class Session {
   /// Back to the initial state exactly: a run after reset gives the same trace, byte for
   /// byte, as a run of a freshly loaded model with the same seed. Breakpoints and the trace
   /// output stay; input events pushed so far are dropped. With `seed`, the run (and later
-  /// resets) use that seed.
-  void reset(std::optional<std::uint64_t> seed = {});
+  /// resets) use that seed. The model's script files are read again: when one no longer
+  /// compiles, the old run stays, `diags` says why, and the result is false.
+  bool reset(core::Diagnostics& diags, std::optional<std::uint64_t> seed = {});
   /// One step (semantics §6); starts the run first when needed.
   void step();
   /// Steps until `limits` say stop, the net is dead, a script halts, `interrupt` becomes true,
@@ -82,7 +97,8 @@ class Session {
   /// does not hold), its guard is false, or no node token satisfies its predicates.
   std::string fire(const std::string& transition);
   /// One step with the net switched off: the plant moves and the sensors read it, the
-  /// marking stays and occurrences pause.
+  /// marking stays and occurrences pause. A run that has not begun begins first (time 0's
+  /// sensing and firing phase).
   void stepPlant();
   /// One live input event (a key, a click, a viewpoint move) for the sensors, delivered at
   /// the next step at or after its time (`event.t`, seconds; a time in the past means now).
@@ -114,6 +130,7 @@ class Session {
   [[nodiscard]] const model::Model& model() const { return model_; }
   /// The run.
   [[nodiscard]] model::Simulation& simulation() { return *sim_; }
+  /// The run, to read.
   [[nodiscard]] const model::Simulation& simulation() const { return *sim_; }
   /// The seed in use.
   [[nodiscard]] std::uint64_t seed() const { return sim_->seed(); }
@@ -123,12 +140,15 @@ class Session {
   Session() = default;
   std::unique_ptr<model::Simulation> make(const model::Model& model, core::Diagnostics& diags);
   void adopt(std::unique_ptr<model::Simulation> sim);
+  void watch();                  // the watcher listens exactly while a breakpoint needs it
+  std::int64_t targetOf(const Breakpoint& bp) const;  // its transition or place, -1 when none
   std::optional<int> holding();  // the first breakpoint that holds after a step
   model::Model model_;
   SessionOptions options_;
+  std::unique_ptr<Watcher> watcher_;  // before the run it listens to: it outlives the kernel
   std::unique_ptr<model::Simulation> sim_;
-  std::unique_ptr<Watcher> watcher_;
   std::vector<std::pair<int, Breakpoint>> breakpoints_;
+  std::vector<std::int64_t> targets_;  // per breakpoint: its transition or place in the net
   int next_id_ = 1;
   std::optional<int> hit_;
   std::string predicate_error_;  // why a predicate of the last run failed
