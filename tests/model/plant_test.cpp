@@ -66,6 +66,36 @@ TEST(Plant, ANetDrivesAJoint) {
             std::string::npos);
 }
 
+TEST(Plant, AScriptSwitchingAJointToPositionControlTakesEffect) {
+  // the physics keeps a joint's control mode; a script that changes it is heard at once:
+  // turning at 90 deg/s for 1 s, then switched to hold 30 deg, the arm comes back to 30
+  std::string text = kArm;
+  const std::string old_post = R"(        post_fire: |
+          self.d0.vel1 = 0
+)";
+  const std::string new_post = R"(        post_fire: |
+          self.d0.control = "position"
+          self.d0.target1 = 30
+)";
+  text.replace(text.find(old_post), old_post.size(), new_post);
+  text.replace(text.find("until: 2"), 8, "until: 4");
+  core::Diagnostics diags;
+  auto sim = open(text, diags);
+  ASSERT_TRUE(sim) << diags.str();
+  sim->run({});
+  const auto* shoulder = sim->plant()->find("shoulder");
+  EXPECT_NEAR(sim->physics()->jointPosition(*shoulder), core::radians(30), core::radians(1));
+  // a word the field does not take is refused where the script wrote it
+  text.replace(text.find("\"position\""), 10, "\"positon\"");
+  auto bad = open(text, diags);
+  ASSERT_TRUE(bad) << diags.str();
+  const auto outcome = bad->run({});
+  EXPECT_EQ(outcome.reason, StopReason::ScriptError);
+  EXPECT_NE(outcome.message.find("'control' is one of velocity, position, got \"positon\" (did you mean 'position'?)"),
+            std::string::npos)
+      << outcome.message;
+}
+
 TEST(Plant, ScriptsSeeNodeFieldsTreeAndBodies) {
   core::Diagnostics diags;
   auto sim = open(R"Y(gdpn: 1
