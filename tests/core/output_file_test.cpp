@@ -1,0 +1,135 @@
+#include "gdpn/core/output_file.h"
+
+#include <gtest/gtest.h>
+#include <sys/resource.h>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace gdpn::core {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A fresh folder for one test, removed at its end.
+struct Folder {
+  fs::path dir;
+  explicit Folder(const std::string& name) : dir(fs::temp_directory_path() / name) {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  ~Folder() { fs::remove_all(dir); }
+  [[nodiscard]] std::string file(const std::string& name) const { return (dir / name).string(); }
+  [[nodiscard]] std::size_t entries() const {
+    return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
+  }
+};
+
+std::string contents(const std::string& path) {
+  std::stringstream s;
+  s << std::ifstream(path, std::ios::binary).rdbuf();
+  return s.str();
+}
+
+TEST(OutputFile, ACommittedFileReplacesTheOldOneAndLeavesNoTemporary) {
+  Folder folder("gdpn_output_commit");
+  const auto path = folder.file("out.txt");
+  std::ofstream(path) << "old";
+  OutputFile out(path);
+  std::string why;
+  ASSERT_TRUE(out.open(why)) << why;
+  out.stream() << "new text";
+  EXPECT_EQ(contents(path), "old");  // nothing replaced before the commit
+  EXPECT_EQ(fs::path(out.tempPath()).parent_path(), folder.dir);
+  EXPECT_TRUE(fs::path(out.tempPath()).filename().string().starts_with(".out.txt.tmp-"));
+  ASSERT_TRUE(out.commit(why)) << why;
+  EXPECT_EQ(contents(path), "new text");
+  EXPECT_EQ(folder.entries(), 1u);
+}
+
+TEST(OutputFile, AFileNotCommittedLeavesTheOldOneByteForByte) {
+  Folder folder("gdpn_output_abandon");
+  const auto path = folder.file("out.txt");
+  std::ofstream(path) << "old bytes";
+  {
+    OutputFile out(path);
+    std::string why;
+    ASSERT_TRUE(out.open(why)) << why;
+    out.stream() << "half of it";
+  }
+  EXPECT_EQ(contents(path), "old bytes");
+  EXPECT_EQ(folder.entries(), 1u);
+}
+
+TEST(OutputFile, AWriteThatHitsTheFileSizeLimitFailsAndKeepsTheOldFile) {
+  // a limit on file size stands for a full disk: the write fails with EFBIG
+  Folder folder("gdpn_output_full");
+  const auto path = folder.file("out.txt");
+  std::ofstream(path) << "old";
+  rlimit old_limit{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &old_limit), 0);
+  const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit limit = old_limit;
+  limit.rlim_cur = 1000;
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &limit), 0);
+  std::string why;
+  const bool ok = writeOutput(path, std::string(100'000, 'x'), why);
+  setrlimit(RLIMIT_FSIZE, &old_limit);
+  std::signal(SIGXFSZ, old_handler);
+  EXPECT_FALSE(ok);
+  EXPECT_NE(why.find("cannot write the file"), std::string::npos) << why;
+  EXPECT_EQ(contents(path), "old");
+  EXPECT_EQ(folder.entries(), 1u);
+}
+
+TEST(OutputFile, AFullDeviceIsReportedAsAFailedWrite) {
+  std::string why;
+  EXPECT_FALSE(writeOutput("/dev/full", std::string(100'000, 'x'), why));
+  EXPECT_NE(why.find("cannot write the file"), std::string::npos) << why;
+}
+
+TEST(OutputFile, AMissingFolderOrAFolderTargetIsRefused) {
+  Folder folder("gdpn_output_folders");
+  std::string why;
+  EXPECT_FALSE(writeOutput(folder.file("no/such/out.txt"), "x", why));
+  EXPECT_NE(why.find("cannot create a file in the folder"), std::string::npos) << why;
+  EXPECT_FALSE(writeOutput(folder.dir.string(), "x", why));
+  EXPECT_EQ(why, "is a folder, not a file");
+}
+
+TEST(OutputFile, ANewFileTakesTheOldFilesPermissions) {
+  Folder folder("gdpn_output_mode");
+  const auto path = folder.file("out.sh");
+  std::ofstream(path) << "old";
+  fs::permissions(path, fs::perms::owner_all);
+  std::string why;
+  ASSERT_TRUE(writeOutput(path, "new", why)) << why;
+  EXPECT_EQ(fs::status(path).permissions() & fs::perms::all, fs::perms::owner_all);
+}
+
+TEST(OutputFile, ALinkKeepsPointingAtTheReplacedFile) {
+  Folder folder("gdpn_output_link");
+  const auto real = folder.file("real.txt");
+  const auto link = folder.file("link.txt");
+  std::ofstream(real) << "old";
+  fs::create_symlink(real, link);
+  std::string why;
+  ASSERT_TRUE(writeOutput(link, "new", why)) << why;
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_EQ(contents(real), "new");
+}
+
+TEST(OutputFile, SameFileSeesThroughDotsAndLinks) {
+  Folder folder("gdpn_output_same");
+  const auto path = folder.file("a.txt");
+  std::ofstream(path) << "a";
+  fs::create_symlink(path, folder.file("b.txt"));
+  EXPECT_TRUE(sameFile(path, (folder.dir / "." / "a.txt").string()));
+  EXPECT_TRUE(sameFile(path, folder.file("b.txt")));
+  EXPECT_FALSE(sameFile(path, folder.file("missing.txt")));
+}
+
+}  // namespace
+}  // namespace gdpn::core
