@@ -134,17 +134,14 @@ bool record(model::Simulation& sim, double until, const CaptureOptions& options,
     ++next;
   }
   result.frames = writer.frames();
-  std::string why;
-  const bool closed = writer.close(why);
+  // a movie with a missing frame is not kept: the old file stays
   if (!ok) {
+    std::string why;
+    if (!writer.close(why, false) && error.empty()) error = why;
     if (error.empty()) error = "ffmpeg stopped taking frames";
     return false;
   }
-  if (!closed) {
-    error = why;
-    return false;
-  }
-  return true;
+  return writer.close(error);
 }
 
 }  // namespace gdpn::capture

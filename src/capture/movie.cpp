@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -20,9 +21,18 @@ std::string quote(const std::string& s) {
 
 }  // namespace
 
-MovieWriter::~MovieWriter() {
-  std::string why;
-  if (pipe_ != nullptr) close(why);
+MovieWriter::~MovieWriter() { cancel(); }
+
+void MovieWriter::cancel() {
+  if (pipe_ != nullptr) ::pclose(pipe_);
+  pipe_ = nullptr;
+  out_.reset();  // removes the temporary file
+  restoreSigpipe();
+}
+
+void MovieWriter::restoreSigpipe() {
+  if (sigpipe_ignored_) std::signal(SIGPIPE, previous_sigpipe_);
+  sigpipe_ignored_ = false;
 }
 
 bool MovieWriter::open(const std::string& path, int width, int height, double fps, std::string& why) {
@@ -30,14 +40,23 @@ bool MovieWriter::open(const std::string& path, int width, int height, double fp
     why = "a movie needs an even width and height";
     return false;
   }
+  // ffmpeg writes a temporary file beside the movie, renamed over it once ffmpeg succeeded
+  out_ = std::make_unique<core::OutputFile>(path);
+  if (!out_->open(why)) return false;
+  out_->closeStream();
   log_ = (std::filesystem::temp_directory_path() / ("gdpn-ffmpeg-" + std::to_string(::getpid()) + ".log")).string();
   std::ostringstream cmd;
   cmd << "ffmpeg -hide_banner -loglevel error -y -f rawvideo -pix_fmt rgb24 -s " << width << "x" << height
-      << " -r " << fps << " -i - -c:v libx264 -preset veryfast -pix_fmt yuv420p -movflags +faststart " << quote(path)
+      << " -r " << fps << " -i - -c:v libx264 -preset veryfast -pix_fmt yuv420p -movflags +faststart -f mp4 "
+      << quote(out_->tempPath())
       << " 2> " << quote(log_);
+  // an encoder that dies makes a write fail, not a SIGPIPE that kills gdpn with the file half made
+  if (!sigpipe_ignored_) previous_sigpipe_ = std::signal(SIGPIPE, SIG_IGN);
+  sigpipe_ignored_ = true;
   pipe_ = ::popen(cmd.str().c_str(), "w");
   if (pipe_ == nullptr) {
     why = "cannot start ffmpeg";
+    cancel();
     return false;
   }
   frame_bytes_ = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3;
@@ -52,10 +71,11 @@ bool MovieWriter::write(const std::vector<std::uint8_t>& rgb) {
   return true;
 }
 
-bool MovieWriter::close(std::string& why) {
+bool MovieWriter::close(std::string& why, bool keep) {
   if (pipe_ == nullptr) return true;
   const int status = ::pclose(pipe_);
   pipe_ = nullptr;
+  restoreSigpipe();
   std::ifstream log(log_);
   std::string last, line;
   while (std::getline(log, line)) {
@@ -63,11 +83,19 @@ bool MovieWriter::close(std::string& why) {
   }
   std::error_code ec;
   std::filesystem::remove(log_, ec);
+  auto out = std::move(out_);
   if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    why = "ffmpeg failed" + (last.empty() ? std::string() : ": " + last);
+    why = WIFSIGNALED(status) ? "ffmpeg was killed by signal " + std::to_string(WTERMSIG(status))
+                              : "ffmpeg failed" + (last.empty() ? std::string() : ": " + last);
+    return false;  // the temporary file goes with `out`, the old movie stays
+  }
+  if (!keep) return true;
+  std::error_code size_ec;
+  if (!out->direct() && std::filesystem::file_size(out->tempPath(), size_ec) == 0) {
+    why = "ffmpeg wrote an empty movie";
     return false;
   }
-  return true;
+  return out->commit(why);
 }
 
 }  // namespace gdpn::capture

@@ -2,10 +2,7 @@
 
 #include "yaml.h"
 
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-
+#include "gdpn/core/output_file.h"
 #include "gdpn/core/text.h"
 #include "gdpn/model/model.h"
 #include "scene_io.h"
@@ -249,26 +246,10 @@ std::string writeModel(const Model& model) {
 }
 
 bool saveModel(const Model& model, const std::string& path, core::Diagnostics& diags) {
-  namespace fs = std::filesystem;
-  const std::string text = writeModel(model);
-  const std::string temp = path + ".saving~";
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out || !(out << text) || !out.flush()) {
-      diags.error({path, 0, 0}, "cannot write the file");
-      std::error_code ec;
-      fs::remove(temp, ec);
-      return false;
-    }
-  }
-  std::error_code ec;
-  fs::rename(temp, path, ec);
-  if (ec) {
-    diags.error({path, 0, 0}, "cannot replace the file: " + ec.message());
-    fs::remove(temp, ec);
-    return false;
-  }
-  return true;
+  std::string why;
+  if (core::writeOutput(path, writeModel(model), why)) return true;
+  diags.error({path, 0, 0}, why);
+  return false;
 }
 
 }  // namespace gdpn::model

@@ -3,24 +3,22 @@
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
-#include <filesystem>
+#include "gdpn/core/output_file.h"
 
 namespace gdpn::platform {
 
 bool writePng(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb, std::string& why) {
-  // beside the old file, then renamed: a failed write loses nothing
-  const std::string tmp = path + ".part";
-  if (stbi_write_png(tmp.c_str(), width, height, 3, rgb.data(), width * 3) == 0) {
-    why = "cannot write the file";
+  // encoded in memory, then written beside the old file and renamed: a failed write loses nothing
+  std::string png;
+  auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
+  };
+  if (width <= 0 || height <= 0 || rgb.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3 ||
+      stbi_write_png_to_func(append, &png, width, height, 3, rgb.data(), width * 3) == 0) {
+    why = "cannot encode the picture as PNG";
     return false;
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    why = ec.message();
-    return false;
-  }
-  return true;
+  return core::writeOutput(path, png, why);
 }
 
 bool readPng(const std::string& path, int& width, int& height, std::vector<std::uint8_t>& rgb, std::string& why) {

@@ -31,6 +31,8 @@ class OutputFile {
   /// The path being written now: the temporary file, or the target itself when it is not a
   /// regular file. For a program that writes the file itself (the stream is closed first).
   [[nodiscard]] const std::string& tempPath() const { return temp_; }
+  /// True when the target is not a regular file and is written in place.
+  [[nodiscard]] bool direct() const { return direct_; }
   /// The target path.
   [[nodiscard]] const std::string& path() const { return path_; }
   /// Closes the stream without writing; the file at `tempPath()` stays for another writer.
