@@ -6,12 +6,15 @@
 
 #include <atomic>
 #include <charconv>
+#include <cmath>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <string_view>
+#include <type_traits>
 
 #include "gdpn/model/analysis.h"
 #include "gdpn/model/model.h"
@@ -38,6 +41,35 @@ void onSigint(int) {
   g_interrupted.store(true);
   gdpn::script::requestInterrupt();  // a script running now raises KeyboardInterrupt
 }
+
+/// `text` in quotes for a message, cut to about 40 characters (a pasted 300-digit number
+/// stays readable).
+std::string quoteArg(const std::string& text) {
+  constexpr std::size_t kMax = 40;
+  if (text.size() <= kMax) return "'" + text + "'";
+  return "'" + text.substr(0, kMax - 3) + "...' (" + std::to_string(text.size()) + " characters)";
+}
+
+/// A number on the command line: a whole number (integral T) or a finite decimal (floating
+/// T) from `low` to `high`, above `low` when `above_low`. NaN, infinities, overflow, trailing
+/// text and values out of range are refused before CLI11 converts the text; `what` names
+/// the unit and range, in --help and in the message.
+template <typename T>
+CLI::Validator number(T low, T high, const std::string& what, bool above_low = false) {
+  auto check = [=](std::string& text) -> std::string {
+    const std::string_view digits = text.starts_with('+') ? std::string_view(text).substr(1) : std::string_view(text);
+    T value{};
+    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    bool ok = !digits.empty() && ec == std::errc() && end == digits.data() + digits.size();
+    if constexpr (std::is_floating_point_v<T>) ok = ok && std::isfinite(value);
+    ok = ok && (above_low ? value > low : value >= low) && value <= high;
+    return ok ? std::string() : "expected " + what + ", got " + quoteArg(text);
+  };
+  return CLI::Validator(check, what, "");
+}
+
+/// Longest model time a run, picture or movie may ask for, seconds (about 31 years).
+constexpr double kMaxTime = 1e9;
 
 class ProgressBar {
  public:
@@ -119,13 +151,14 @@ struct CaptureArgs {
 int capture(CaptureArgs a, bool movie) {
   const auto size = gdpn::capture::parseSize(a.size);
   if (!size) {
-    std::cerr << "error: --size '" << a.size << "' is not WIDTHxHEIGHT (for example 1280x720)\n";
+    std::cerr << "error: --size " << quoteArg(a.size) << " is not WIDTHxHEIGHT (for example 1280x720), each side "
+              << gdpn::capture::kMinSide << " to " << gdpn::capture::kMaxSide << " pixels\n";
     return 2;
   }
   a.options.width = size->first;
   a.options.height = size->second;
   if (movie && (a.options.width % 2 != 0 || a.options.height % 2 != 0)) {
-    std::cerr << "error: a movie needs an even width and height, not " << a.size << "\n";
+    std::cerr << "error: a movie needs an even width and height, not " << quoteArg(a.size) << "\n";
     return 2;
   }
   auto session = open(a.model, a.seed, 0.0);
@@ -284,7 +317,7 @@ int run(const RunArgs& a) {
     std::string why;
     const auto bp = parseBreakpoint(spec, why);
     if (!bp || !sim->addBreakpoint(*bp, why)) {
-      std::cerr << "error: --break '" << spec << "': " << why << "\n";
+      std::cerr << "error: --break " << quoteArg(spec) << ": " << why << "\n";
       return 2;
     }
   }
@@ -350,18 +383,22 @@ int main(int argc, char** argv) {
   auto* check_cmd = app.add_subcommand("check", "Check a model and print its diagnostics; exit 0 when clean");
   check_cmd->add_option("MODEL", check_model, "a .gdpn.yaml file, or a folder holding exactly one")->required();
 
+  const auto kSeed = number<std::uint64_t>(0, UINT64_MAX, "a whole number from 0 to 2^64-1");
   RunArgs run_args;
   auto* run_cmd = app.add_subcommand("run", "Run a model headless and print a summary");
   run_cmd->add_option("MODEL", run_args.model, "a .gdpn.yaml file, or a folder holding exactly one")->required();
   auto* until = run_cmd->add_option("--until", run_args.until, "end time in seconds (default: the model's until)")
-                    ->check(CLI::NonNegativeNumber);
-  run_cmd->add_option("--steps", run_args.steps, "number of steps to run")->check(CLI::NonNegativeNumber)->excludes(until);
-  run_cmd->add_option("--seed", run_args.seed, "seed of the random generator (default: the model's seed)");
+                    ->check(number(0.0, kMaxTime, "seconds from 0 to 1e9"));
+  run_cmd->add_option("--steps", run_args.steps, "number of steps to run")
+      ->check(number<std::int64_t>(0, 1'000'000'000'000, "a whole number of steps from 0 to 10^12"))
+      ->excludes(until);
+  run_cmd->add_option("--seed", run_args.seed, "seed of the random generator (default: the model's seed)")
+      ->check(kSeed);
   run_cmd->add_option("--trace", run_args.trace, "write every event as JSON Lines to FILE.jsonl");
   run_cmd->add_option("--report", run_args.report, "write the figures as JSON to FILE.json");
   run_cmd->add_option("--script-timeout", run_args.script_timeout,
                       "stop the run when one script call runs longer than SECONDS")
-      ->check(CLI::PositiveNumber);
+      ->check(number(0.0, 1e6, "seconds above 0, at most 1e6", true));
   run_cmd->add_option("--input", run_args.input,
                       "input events for keyboard and mouse sensors: a YAML list of {t, key | click | viewpoint}");
   run_cmd->add_option("--break", run_args.breaks,
@@ -376,27 +413,29 @@ int main(int argc, char** argv) {
       ->required();
   analyze_cmd->add_flag("--json", analyze_args.json, "print the results as JSON");
   analyze_cmd->add_option("--max-states", analyze_args.max_states, "stop after this many states (the answer is then partial)")
-      ->check(CLI::PositiveNumber);
+      ->check(number<std::uint64_t>(1, 1'000'000'000'000, "a whole number of states from 1 to 10^12"));
   analyze_cmd->add_option("--max-memory", analyze_args.max_memory_mib,
                           "stop when the search holds this many MiB (the answer is then partial)")
-      ->check(CLI::PositiveNumber);
+      ->check(number(0.0, 1e9, "MiB above 0, at most 1e9", true));
   analyze_cmd->add_option("--threads", analyze_args.threads,
                           "threads for the search (1: one depth-first walk, the least memory)")
-      ->check(CLI::Range(1, 256));
+      ->check(number(1u, 256u, "a whole number of threads from 1 to 256"));
   analyze_cmd->add_flag("--progress", analyze_args.progress,
                         "print a progress line every 250 ms even when stderr is not a terminal");
 
   CaptureArgs render_args;
   auto* render_cmd = app.add_subcommand("render", "Run a model headless to a time and save a picture of its plant");
   render_cmd->add_option("MODEL", render_args.model, "a .gdpn.yaml file, or a folder holding one")->required();
-  render_cmd->add_option("--at", render_args.at, "model time of the picture, seconds")->check(CLI::NonNegativeNumber);
-  auto add_look = [](CLI::App* cmd, CaptureArgs& args) {
+  render_cmd->add_option("--at", render_args.at, "model time of the picture, seconds")
+      ->check(number(0.0, kMaxTime, "seconds from 0 to 1e9"));
+  auto add_look = [&kSeed](CLI::App* cmd, CaptureArgs& args) {
     cmd->add_option("--camera", args.options.camera, "path of the Camera node (default: the scene's first, or a framing view)");
-    cmd->add_option("--size", args.size, "WIDTHxHEIGHT in pixels (default 1280x720)");
-    cmd->add_option("--samples", args.options.samples, "samples per pixel for anti-aliasing (default 4)")->check(CLI::Range(1, 16));
+    cmd->add_option("--size", args.size, "WIDTHxHEIGHT in pixels, each side 16 to 16384 (default 1280x720)");
+    cmd->add_option("--samples", args.options.samples, "samples per pixel for anti-aliasing (default 4)")
+        ->check(number(1, 16, "a whole number of samples from 1 to 16"));
     cmd->add_flag("--sensors", args.options.sensors, "draw sensor volumes and rays");
     cmd->add_flag("--joints", args.options.joints, "draw joint axes");
-    cmd->add_option("--seed", args.seed, "the random seed (default: the model's)");
+    cmd->add_option("--seed", args.seed, "the random seed (default: the model's)")->check(kSeed);
     cmd->add_option("-o,--output", args.out, "the file to write")->required();
   };
   add_look(render_cmd, render_args);
@@ -404,9 +443,9 @@ int main(int argc, char** argv) {
   auto* record_cmd = app.add_subcommand("record", "Run a model headless and encode a movie of its plant (through ffmpeg)");
   record_cmd->add_option("MODEL", record_args.model, "a .gdpn.yaml file, or a folder holding one")->required();
   record_cmd->add_option("--until", record_args.until, "model time at which the movie ends, seconds (default 10)")
-      ->check(CLI::PositiveNumber);
+      ->check(number(0.0, kMaxTime, "seconds above 0, at most 1e9", true));
   record_cmd->add_option("--fps", record_args.options.fps, "frames per second of model time (default 30)")
-      ->check(CLI::Range(0.1, 1000.0));
+      ->check(number(0.0, 1000.0, "frames per second above 0, at most 1000", true));
   add_look(record_cmd, record_args);
 
   std::string convert_in, convert_out;
@@ -416,7 +455,12 @@ int main(int argc, char** argv) {
       ->required();
   convert_cmd->add_option("OUT", convert_out, "the .gdpn.yaml or .pnml to write")->required();
 
-  CLI11_PARSE(app, argc, argv);
+  // every mistake on the command line exits 2, after CLI11's message (help and version exit 0)
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
   if (convert_cmd->parsed()) return convert(convert_in, convert_out);
   if (analyze_cmd->parsed()) return analyze(analyze_args);
   if (render_cmd->parsed()) return capture(render_args, false);

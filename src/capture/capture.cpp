@@ -1,8 +1,10 @@
 #include "gdpn/capture/capture.h"
 
+#include <charconv>
 #include <cmath>
 #include <functional>
 #include <filesystem>
+#include <string_view>
 
 #include "gdpn/capture/movie.h"
 #include "gdpn/platform/headless_context.h"
@@ -13,18 +15,20 @@
 namespace gdpn::capture {
 
 std::optional<std::pair<int, int>> parseSize(const std::string& text) {
+  // two whole numbers around an 'x', nothing else, each side within the limits
+  const auto side = [](std::string_view digits) -> std::optional<int> {
+    int value = 0;
+    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    if (digits.empty() || ec != std::errc() || end != digits.data() + digits.size()) return std::nullopt;
+    if (value < kMinSide || value > kMaxSide) return std::nullopt;
+    return value;
+  };
   const auto x = text.find('x');
-  if (x == std::string::npos || x == 0 || x + 1 >= text.size()) return std::nullopt;
-  try {
-    std::size_t used = 0;
-    const int w = std::stoi(text.substr(0, x), &used);
-    if (used != x) return std::nullopt;
-    const int h = std::stoi(text.substr(x + 1), &used);
-    if (used != text.size() - x - 1 || w <= 0 || h <= 0 || w > 16384 || h > 16384) return std::nullopt;
-    return std::pair{w, h};
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
+  if (x == std::string::npos) return std::nullopt;
+  const auto w = side(std::string_view(text).substr(0, x));
+  const auto h = side(std::string_view(text).substr(x + 1));
+  if (!w || !h) return std::nullopt;
+  return std::pair{*w, *h};
 }
 
 namespace {

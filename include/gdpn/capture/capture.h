@@ -22,7 +22,13 @@ struct CaptureOptions {
   double fps = 30.0;        ///< movie frames per second
 };
 
-/// "1280x720" as width and height; nullopt when it is not two positive numbers.
+/// Smallest width or height of a picture or movie, pixels.
+inline constexpr int kMinSide = 16;
+/// Largest width or height of a picture or movie, pixels.
+inline constexpr int kMaxSide = 16384;
+
+/// "1280x720" as width and height in pixels; nullopt when it is not two whole numbers from
+/// kMinSide to kMaxSide around an 'x'.
 std::optional<std::pair<int, int>> parseSize(const std::string& text);
 
 /// What a recording made.
