@@ -11,11 +11,11 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <string_view>
 #include <type_traits>
 
+#include "gdpn/core/output_file.h"
 #include "gdpn/model/analysis.h"
 #include "gdpn/model/model.h"
 #include "gdpn/model/report.h"
@@ -66,6 +66,27 @@ CLI::Validator number(T low, T high, const std::string& what, bool above_low = f
     return ok ? std::string() : "expected " + what + ", got " + quoteArg(text);
   };
   return CLI::Validator(check, what, "");
+}
+
+/// The model file that MODEL names (a file, or the one in a folder); MODEL when there is none.
+std::string modelFile(const std::string& arg) {
+  Diagnostics ignored;  // the run itself reports a missing model
+  return model::resolveModelPath(arg, ignored).value_or(arg);
+}
+
+/// True (after saying so) when the output `out`, given as `option`, would write over one of
+/// `inputs` (what each is, and its path), before anything is written. A device or a pipe
+/// (/dev/stdout) is never refused.
+bool overwritesInput(const std::string& option, const std::string& out,
+                     const std::vector<std::pair<std::string, std::string>>& inputs) {
+  std::error_code ec;
+  if (out.empty() || (std::filesystem::exists(out, ec) && !std::filesystem::is_regular_file(out, ec))) return false;
+  for (const auto& [what, path] : inputs) {
+    if (path.empty() || !gdpn::core::sameFile(out, path)) continue;
+    std::cerr << "error: " << option << " '" << out << "' is " << what << "; gdpn writes no output over it\n";
+    return true;
+  }
+  return false;
 }
 
 /// Longest model time a run, picture or movie may ask for, seconds (about 31 years).
@@ -161,6 +182,7 @@ int capture(CaptureArgs a, bool movie) {
     std::cerr << "error: a movie needs an even width and height, not " << quoteArg(a.size) << "\n";
     return 2;
   }
+  if (overwritesInput("-o", a.out, {{"the model file", modelFile(a.model)}})) return 2;
   auto session = open(a.model, a.seed, 0.0);
   if (!session) return 1;
   model::Simulation* sim = &session->simulation();
@@ -248,29 +270,50 @@ int analyze(const AnalyzeArgs& a) {
 }
 
 int convert(const std::string& in, const std::string& out) {
+  // the format follows the output's extension; an input is never written over
+  const bool to_pnml = out.ends_with(".pnml");
+  if (!to_pnml && !out.ends_with(model::kModelSuffix)) {
+    std::cerr << "error: OUT '" << out << "' must end in .pnml (a PNML net) or " << model::kModelSuffix
+              << " (a model)\n";
+    return 2;
+  }
+  const bool mesh = gdpn::scene::isMeshFile(in);
+  if (mesh && to_pnml) {
+    std::cerr << "error: a mesh converts to a model (" << model::kModelSuffix << "), not to PNML\n";
+    return 2;
+  }
+  const std::string in_file = mesh || in.ends_with(".pnml") ? in : modelFile(in);
+  if (overwritesInput("OUT", out, {{"the input file", in_file}})) return 2;
   Diagnostics diags;
-  if (gdpn::scene::isMeshFile(in)) {
-    if (auto m = model::meshModel(in, out, diags)) model::saveModel(*m, out, diags);
+  std::optional<model::Model> m;
+  if (mesh) {
+    m = model::meshModel(in, out, diags);
   } else if (in.ends_with(".pnml")) {
-    auto spec = gdpn::net::loadPnml(in, diags);
-    if (spec && !gdpn::net::compile(*spec, diags)) spec.reset();
-    if (spec) {
-      model::Model m;
-      m.net = std::move(*spec);
-      m.description = "converted from " + std::filesystem::path(in).filename().string();
-      model::saveModel(m, out, diags);
+    if (auto spec = gdpn::net::loadPnml(in, diags); spec && gdpn::net::compile(*spec, diags)) {
+      m.emplace();
+      m->net = std::move(*spec);
+      m->description = "converted from " + std::filesystem::path(in).filename().string();
     }
   } else if (auto path = model::resolveModelPath(in, diags)) {
-    if (auto m = model::loadModel(*path, diags); m && gdpn::net::compile(m->net, diags)) {
-      std::string why;
-      auto text = gdpn::net::writePnml(m->net, why);
-      if (!text) {
-        diags.error({*path, 0, 0}, "cannot write PNML: " + why);
-      } else {
-        std::ofstream f(out, std::ios::binary | std::ios::trunc);
-        if (!f || !(f << *text)) diags.error({out, 0, 0}, "cannot write the file");
-      }
+    m = model::loadModel(*path, diags);
+    if (m && !gdpn::net::compile(m->net, diags)) m.reset();
+    // a model's files (scripts, meshes) are named relative to its folder
+    const auto folder = [](const std::string& file) { return std::filesystem::absolute(file).parent_path().string(); };
+    if (m && !to_pnml && !gdpn::core::sameFile(folder(*path), folder(out))) {
+      diags.error({out, 0, 0}, "a model is rewritten only in its own folder (its files are named relative to it)");
+      m.reset();
     }
+  }
+  if (m && to_pnml) {
+    std::string why;
+    auto text = gdpn::net::writePnml(m->net, why);
+    if (!text) {
+      diags.error({in, 0, 0}, "cannot write PNML: " + why);
+    } else if (!gdpn::core::writeOutput(out, *text, why)) {
+      diags.error({out, 0, 0}, why);
+    }
+  } else if (m) {
+    model::saveModel(*m, out, diags);
   }
   diags.print(std::cerr);
   return diags.hasErrors() ? 1 : 0;
@@ -311,6 +354,11 @@ std::optional<gdpn::session::Breakpoint> parseBreakpoint(const std::string& spec
 }
 
 int run(const RunArgs& a) {
+  const std::vector<std::pair<std::string, std::string>> inputs = {{"the model file", modelFile(a.model)},
+                                                                    {"the --input file", a.input}};
+  auto with_trace = inputs;
+  with_trace.emplace_back("the --trace file", a.trace);
+  if (overwritesInput("--trace", a.trace, inputs) || overwritesInput("--report", a.report, with_trace)) return 2;
   auto sim = open(a.model, a.seed, a.script_timeout);
   if (!sim) return 1;
   for (const auto& spec : a.breaks) {
@@ -328,14 +376,16 @@ int run(const RunArgs& a) {
     if (!events) return 1;
     sim->setInput(std::move(*events));
   }
-  std::ofstream trace;
+  // the trace is written beside its file and renamed into place when the run ends
+  std::unique_ptr<gdpn::core::OutputFile> trace;
+  std::string why;
   if (!a.trace.empty()) {
-    trace.open(a.trace, std::ios::binary | std::ios::trunc);
-    if (!trace) {
-      std::cerr << a.trace << ": error: cannot write the trace file\n";
+    trace = std::make_unique<gdpn::core::OutputFile>(a.trace);
+    if (!trace->open(why)) {
+      std::cerr << a.trace << ": error: " << why << "\n";
       return 1;
     }
-    sim->traceTo(trace);
+    sim->traceTo(trace->stream());
   }
   std::signal(SIGINT, onSigint);
   model::RunOutcome outcome;
@@ -344,15 +394,15 @@ int run(const RunArgs& a) {
     outcome = sim->run({a.until, a.steps}, std::ref(bar), &g_interrupted);
   }
   std::signal(SIGINT, SIG_DFL);
-  trace.flush();
+  if (trace && !trace->commit(why)) {
+    std::cerr << a.trace << ": error: " << why << "\n";
+    return 1;
+  }
   if (outcome.reason == model::StopReason::Breakpoint) std::cerr << "stopped at " << outcome.message << "\n";
   const auto report = model::makeReport(sim->simulation(), outcome);
-  if (!a.report.empty()) {
-    std::ofstream out(a.report, std::ios::binary | std::ios::trunc);
-    if (!out || !(out << model::reportJson(report))) {
-      std::cerr << a.report << ": error: cannot write the report\n";
-      return 1;
-    }
+  if (!a.report.empty() && !gdpn::core::writeOutput(a.report, model::reportJson(report), why)) {
+    std::cerr << a.report << ": error: " << why << "\n";
+    return 1;
   }
   if (!a.quiet) model::printSummary(std::cout, report);
   switch (outcome.reason) {

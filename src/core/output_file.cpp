@@ -42,10 +42,7 @@ OutputFile::~OutputFile() { discard(); }
 
 bool OutputFile::open(std::string& why) {
   std::error_code ec;
-  // a link is followed: the file it names is replaced, the link stays
-  fs::path target = path_;
-  if (fs::is_symlink(target, ec) && fs::exists(target, ec)) target = fs::canonical(target, ec);
-  const auto status = fs::status(target, ec);
+  const auto status = fs::status(path_, ec);  // of what a link names
   if (fs::is_directory(status)) {
     why = "is a folder, not a file";
     return false;
@@ -57,6 +54,11 @@ bool OutputFile::open(std::string& why) {
     stream_.open(temp_, std::ios::binary | std::ios::trunc);
     if (!stream_) why = "cannot write the file: " + errnoText(errno);
     return static_cast<bool>(stream_);
+  }
+  // a link is followed: the file it names is replaced, the link stays
+  fs::path target = path_;
+  if (fs::is_symlink(target, ec) && fs::exists(status)) {
+    if (auto real = fs::canonical(target, ec); !ec) target = real;
   }
   if (target.filename().empty()) {
     why = "is not a file name";
@@ -96,7 +98,6 @@ void OutputFile::closeStream() {
 
 bool OutputFile::commit(std::string& why) {
   // every byte out: a full disk shows here, at the latest when the buffer is flushed
-  errno = 0;
   bool written = true;
   if (stream_.is_open()) {
     written = static_cast<bool>(stream_.flush());
@@ -104,7 +105,10 @@ bool OutputFile::commit(std::string& why) {
     written = written && !stream_.fail();
   }
   if (!written) {
-    why = "cannot write the file" + (errno != 0 ? ": " + errnoText(errno) : std::string());
+    // the stream keeps no error code: name the cause when errno holds a write error
+    const int error = errno;
+    const bool known = error == ENOSPC || error == EFBIG || error == EDQUOT || error == EIO || error == EPIPE;
+    why = "cannot write the file" + (known ? ": " + errnoText(error) : std::string());
     discard();
     return false;
   }
@@ -145,7 +149,11 @@ bool writeOutput(const std::string& path, const std::string& text, std::string& 
 
 bool sameFile(const std::string& a, const std::string& b) {
   std::error_code ec;
-  return fs::equivalent(a, b, ec) && !ec;
+  if (fs::equivalent(a, b, ec) && !ec) return true;
+  std::error_code ec_a, ec_b;
+  const auto path_a = fs::weakly_canonical(fs::absolute(a), ec_a);
+  const auto path_b = fs::weakly_canonical(fs::absolute(b), ec_b);
+  return !ec_a && !ec_b && path_a == path_b;
 }
 
 }  // namespace gdpn::core

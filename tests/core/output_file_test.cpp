@@ -6,32 +6,16 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
+
+#include "support/scratch.h"
 
 namespace gdpn::core {
 namespace {
 
 namespace fs = std::filesystem;
 
-/// A fresh folder for one test, removed at its end.
-struct Folder {
-  fs::path dir;
-  explicit Folder(const std::string& name) : dir(fs::temp_directory_path() / name) {
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-  }
-  ~Folder() { fs::remove_all(dir); }
-  [[nodiscard]] std::string file(const std::string& name) const { return (dir / name).string(); }
-  [[nodiscard]] std::size_t entries() const {
-    return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
-  }
-};
-
-std::string contents(const std::string& path) {
-  std::stringstream s;
-  s << std::ifstream(path, std::ios::binary).rdbuf();
-  return s.str();
-}
+using gdpn::testing::fileBytes;
+using Folder = gdpn::testing::ScratchFolder;
 
 TEST(OutputFile, ACommittedFileReplacesTheOldOneAndLeavesNoTemporary) {
   Folder folder("gdpn_output_commit");
@@ -41,12 +25,12 @@ TEST(OutputFile, ACommittedFileReplacesTheOldOneAndLeavesNoTemporary) {
   std::string why;
   ASSERT_TRUE(out.open(why)) << why;
   out.stream() << "new text";
-  EXPECT_EQ(contents(path), "old");  // nothing replaced before the commit
-  EXPECT_EQ(fs::path(out.tempPath()).parent_path(), folder.dir);
+  EXPECT_EQ(fileBytes(path), "old");  // nothing replaced before the commit
+  EXPECT_EQ(fs::path(out.tempPath()).parent_path(), folder.dir());
   EXPECT_TRUE(fs::path(out.tempPath()).filename().string().starts_with(".out.txt.tmp-"));
   ASSERT_TRUE(out.commit(why)) << why;
-  EXPECT_EQ(contents(path), "new text");
-  EXPECT_EQ(folder.entries(), 1u);
+  EXPECT_EQ(fileBytes(path), "new text");
+  EXPECT_EQ(folder.names().size(), 1u);
 }
 
 TEST(OutputFile, AFileNotCommittedLeavesTheOldOneByteForByte) {
@@ -59,8 +43,8 @@ TEST(OutputFile, AFileNotCommittedLeavesTheOldOneByteForByte) {
     ASSERT_TRUE(out.open(why)) << why;
     out.stream() << "half of it";
   }
-  EXPECT_EQ(contents(path), "old bytes");
-  EXPECT_EQ(folder.entries(), 1u);
+  EXPECT_EQ(fileBytes(path), "old bytes");
+  EXPECT_EQ(folder.names().size(), 1u);
 }
 
 TEST(OutputFile, AWriteThatHitsTheFileSizeLimitFailsAndKeepsTheOldFile) {
@@ -80,8 +64,8 @@ TEST(OutputFile, AWriteThatHitsTheFileSizeLimitFailsAndKeepsTheOldFile) {
   std::signal(SIGXFSZ, old_handler);
   EXPECT_FALSE(ok);
   EXPECT_NE(why.find("cannot write the file"), std::string::npos) << why;
-  EXPECT_EQ(contents(path), "old");
-  EXPECT_EQ(folder.entries(), 1u);
+  EXPECT_EQ(fileBytes(path), "old");
+  EXPECT_EQ(folder.names().size(), 1u);
 }
 
 TEST(OutputFile, AFullDeviceIsReportedAsAFailedWrite) {
@@ -95,7 +79,7 @@ TEST(OutputFile, AMissingFolderOrAFolderTargetIsRefused) {
   std::string why;
   EXPECT_FALSE(writeOutput(folder.file("no/such/out.txt"), "x", why));
   EXPECT_NE(why.find("cannot create a file in the folder"), std::string::npos) << why;
-  EXPECT_FALSE(writeOutput(folder.dir.string(), "x", why));
+  EXPECT_FALSE(writeOutput(folder.dir().string(), "x", why));
   EXPECT_EQ(why, "is a folder, not a file");
 }
 
@@ -118,7 +102,7 @@ TEST(OutputFile, ALinkKeepsPointingAtTheReplacedFile) {
   std::string why;
   ASSERT_TRUE(writeOutput(link, "new", why)) << why;
   EXPECT_TRUE(fs::is_symlink(link));
-  EXPECT_EQ(contents(real), "new");
+  EXPECT_EQ(fileBytes(real), "new");
 }
 
 TEST(OutputFile, SameFileSeesThroughDotsAndLinks) {
@@ -126,9 +110,10 @@ TEST(OutputFile, SameFileSeesThroughDotsAndLinks) {
   const auto path = folder.file("a.txt");
   std::ofstream(path) << "a";
   fs::create_symlink(path, folder.file("b.txt"));
-  EXPECT_TRUE(sameFile(path, (folder.dir / "." / "a.txt").string()));
+  EXPECT_TRUE(sameFile(path, (folder.dir() / "." / "a.txt").string()));
   EXPECT_TRUE(sameFile(path, folder.file("b.txt")));
   EXPECT_FALSE(sameFile(path, folder.file("missing.txt")));
+  EXPECT_TRUE(sameFile(folder.file("new.txt"), (folder.dir() / "x" / ".." / "new.txt").string()));
 }
 
 }  // namespace

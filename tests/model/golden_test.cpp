@@ -10,6 +10,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "support/scratch.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -19,8 +21,10 @@ struct Result {
   std::string out;  // stdout and stderr together
 };
 
-Result gdpn(const std::string& args) {
-  const std::string cmd = std::string("cd '") + GDPN_SOURCE_DIR + "' && '" + GDPN_CLI + "' " + args + " 2>&1";
+/// Runs `commands` (a shell line that calls "$GDPN") in the source folder.
+Result shell(const std::string& commands) {
+  const std::string cmd = std::string("cd '") + GDPN_SOURCE_DIR + "' && GDPN='" + GDPN_CLI + "' && { " + commands +
+                          "; } 2>&1";
   Result r;
   FILE* pipe = popen(cmd.c_str(), "r");
   if (!pipe) return r;
@@ -31,6 +35,9 @@ Result gdpn(const std::string& args) {
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
 }
+
+/// Runs gdpn with `args` (shell words) in the source folder.
+Result gdpn(const std::string& args) { return shell("\"$GDPN\" " + args); }
 
 std::string temp(const std::string& name) { return (fs::temp_directory_path() / name).string(); }
 
@@ -395,6 +402,215 @@ TEST(Cli, RunStopsAtABreakpointAndSaysWhich) {
   r = gdpn(model + "--break 'main/buffer=>3'");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.out.find("expected start:TRANSITION"), std::string::npos) << r.out;
+}
+
+}  // namespace
+
+namespace {
+
+using gdpn::testing::fileBytes;
+using gdpn::testing::ScratchFolder;
+
+/// What `gdpn(args)` said about one bad number: exit 2, the option named, the text quoted.
+void expectRefused(const std::string& args, const std::string& message) {
+  const auto r = gdpn(args);
+  EXPECT_EQ(r.code, 2) << args << "\n" << r.out;
+  EXPECT_NE(r.out.find("gdpn: error: " + message), std::string::npos) << args << "\n" << r.out;
+}
+
+TEST(CliNumbers, NotANumberInfinityAndOutOfRangeAreRefusedNamingTheOption) {
+  const std::string run = "run examples/basics/figure31 ";
+  for (const char* bad : {"nan", "inf", "-inf", "-1", "1e400", "2e9", "5s", ""}) {
+    expectRefused(run + "--until '" + bad + "'", std::string("--until: expected seconds from 0 to 1e9, got '") + bad + "'");
+  }
+  for (const char* bad : {"1e3", "-1", "2.5", "1000000000001"}) {
+    expectRefused(run + "--steps " + bad, std::string("--steps: expected a whole number of steps from 0 to 10^12, got '") +
+                                              bad + "'");
+  }
+  for (const char* bad : {"-1", "1.5", "18446744073709551616", "nan"}) {
+    expectRefused(run + "--seed " + bad, std::string("--seed: expected a whole number from 0 to 2^64-1, got '") + bad + "'");
+  }
+  for (const char* bad : {"0", "-0.5", "nan", "inf", "1e7"}) {
+    expectRefused(run + "--script-timeout " + bad,
+                  std::string("--script-timeout: expected seconds above 0, at most 1e6, got '") + bad + "'");
+  }
+  const std::string analyze = "analyze examples/basics/figure31 ";
+  expectRefused(analyze + "--max-states 0", "--max-states: expected a whole number of states from 1 to 10^12, got '0'");
+  expectRefused(analyze + "--max-states nan", "--max-states: expected a whole number of states from 1 to 10^12, got 'nan'");
+  expectRefused(analyze + "--max-memory nan", "--max-memory: expected MiB above 0, at most 1e9, got 'nan'");
+  expectRefused(analyze + "--max-memory=-inf", "--max-memory: expected MiB above 0, at most 1e9, got '-inf'");
+  expectRefused(analyze + "--max-memory 1e300", "--max-memory: expected MiB above 0, at most 1e9, got '1e300'");
+  expectRefused(analyze + "--threads 0", "--threads: expected a whole number of threads from 1 to 256, got '0'");
+  expectRefused(analyze + "--threads 257", "--threads: expected a whole number of threads from 1 to 256, got '257'");
+  const std::string render = "render tests/data/render/cube_lit.gdpn.yaml -o /tmp/gdpn_never.png ";
+  expectRefused(render + "--at nan", "--at: expected seconds from 0 to 1e9, got 'nan'");
+  expectRefused(render + "--at=-1", "--at: expected seconds from 0 to 1e9, got '-1'");
+  expectRefused(render + "--samples 0", "--samples: expected a whole number of samples from 1 to 16, got '0'");
+  const std::string record = "record tests/data/render/cube_lit.gdpn.yaml -o /tmp/gdpn_never.mp4 ";
+  for (const char* bad : {"0", "nan", "inf", "1000.5", "-30"}) {
+    expectRefused(record + "--fps " + bad,
+                  std::string("--fps: expected frames per second above 0, at most 1000, got '") + bad + "'");
+  }
+  expectRefused(record + "--until 0", "--until: expected seconds above 0, at most 1e9, got '0'");
+  expectRefused(record + "--until inf", "--until: expected seconds above 0, at most 1e9, got 'inf'");
+  EXPECT_FALSE(fs::exists("/tmp/gdpn_never.png"));
+  EXPECT_FALSE(fs::exists("/tmp/gdpn_never.mp4"));
+}
+
+TEST(CliNumbers, AHugeNumberIsQuotedShort) {
+  const std::string digits(300, '9');
+  const auto r = gdpn("run examples/basics/figure31 --until " + digits);
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("gdpn: error: --until: expected seconds from 0 to 1e9, got '" + std::string(37, '9') +
+                       "...' (300 characters)"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find(std::string(38, '9')), std::string::npos) << r.out;
+}
+
+TEST(CliNumbers, SizesOutsideSixteenTo16384AreRefused) {
+  for (const char* bad : {"8x8", "16385x16", "0x720", "-64x48", "nanxnan", "64x48x2", std::string(200, '1').c_str()}) {
+    const auto r = gdpn(std::string("render tests/data/render/cube_lit.gdpn.yaml -o /tmp/gdpn_never.png --size=") + bad);
+    EXPECT_EQ(r.code, 2) << bad << "\n" << r.out;
+    EXPECT_NE(r.out.find("error: --size '"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("is not WIDTHxHEIGHT (for example 1280x720), each side 16 to 16384 pixels"), std::string::npos)
+        << r.out;
+    EXPECT_LT(r.out.size(), 200u) << r.out;
+  }
+  EXPECT_FALSE(fs::exists("/tmp/gdpn_never.png"));
+}
+
+TEST(CliNumbers, TheEdgesOfEachRangeAreAccepted) {
+  EXPECT_EQ(gdpn("run examples/basics/figure31 -q --until 0").code, 0);
+  EXPECT_EQ(gdpn("run examples/basics/figure31 -q --steps 0").code, 0);
+  EXPECT_EQ(gdpn("run examples/basics/figure31 -q --seed 18446744073709551615").code, 0);
+  EXPECT_EQ(gdpn("run examples/basics/figure31 -q --until +2.5e0 --script-timeout 1e6").code, 0);
+  EXPECT_EQ(gdpn("analyze examples/basics/figure31 --threads 256 --max-states 1 --max-memory 1e9").code, 3);
+}
+
+/// A PNML net copied into `folder` as `name`.
+std::string copyNet(const ScratchFolder& folder, const std::string& name) {
+  const auto path = folder.file(name);
+  fs::copy_file(fs::path(GDPN_SOURCE_DIR) / "tests/data/conformance/Philosophers-PT-000005.pnml", path);
+  return path;
+}
+
+TEST(CliOutputs, ConvertWritesTheFormatOfTheOutputsExtension) {
+  ScratchFolder folder("gdpn_cli_convert_formats");
+  const auto net = copyNet(folder, "net.pnml");
+  auto r = gdpn("convert " + net + " " + folder.file("copy.pnml"));
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_TRUE(fileBytes(folder.file("copy.pnml")).starts_with("<?xml")) << fileBytes(folder.file("copy.pnml"));
+  r = gdpn("convert " + net + " " + folder.file("net.gdpn.yaml"));
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(fileBytes(folder.file("net.gdpn.yaml")).find("description: \"converted from net.pnml\""), std::string::npos);
+  r = gdpn("convert " + folder.file("net.gdpn.yaml") + " " + folder.file("back.pnml"));
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_TRUE(fileBytes(folder.file("back.pnml")).starts_with("<?xml"));
+  // an extension that names no format is refused before anything is read or written
+  r = gdpn("convert " + net + " " + folder.file("net.txt"));
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("error: OUT '" + folder.file("net.txt") + "' must end in .pnml (a PNML net) or .gdpn.yaml (a model)"),
+            std::string::npos)
+      << r.out;
+  r = gdpn("convert " + folder.file("part.obj") + " " + folder.file("part.pnml"));
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("error: a mesh converts to a model (.gdpn.yaml), not to PNML"), std::string::npos) << r.out;
+  EXPECT_EQ(folder.names(), (std::vector<std::string>{"back.pnml", "copy.pnml", "net.gdpn.yaml", "net.pnml"}));
+}
+
+TEST(CliOutputs, AnOutputOverAnInputIsRefusedBeforeAnythingIsWritten) {
+  ScratchFolder folder("gdpn_cli_same_file");
+  const auto net = copyNet(folder, "net.pnml");
+  const auto before = fileBytes(net);
+  auto r = gdpn("convert " + net + " " + net);
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("error: OUT '" + net + "' is the input file; gdpn writes no output over it"), std::string::npos)
+      << r.out;
+  const auto dotted = (folder.dir() / "." / "net.pnml").string();
+  r = gdpn("convert " + net + " " + dotted);
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("error: OUT '" + dotted + "' is the input file"), std::string::npos) << r.out;
+  EXPECT_EQ(fileBytes(net), before);
+
+  ASSERT_EQ(gdpn("convert " + net + " " + folder.file("m.gdpn.yaml")).code, 0);
+  const auto model = fileBytes(folder.file("m.gdpn.yaml"));
+  r = gdpn("run " + folder.dir().string() + " -q --report " + folder.file("m.gdpn.yaml"));
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("error: --report '" + folder.file("m.gdpn.yaml") + "' is the model file"), std::string::npos)
+      << r.out;
+  r = gdpn("run " + folder.file("m.gdpn.yaml") + " -q --trace " + folder.file("m.gdpn.yaml"));
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("error: --trace '" + folder.file("m.gdpn.yaml") + "' is the model file"), std::string::npos)
+      << r.out;
+  r = gdpn("run " + folder.file("m.gdpn.yaml") + " -q --trace " + folder.file("t.jsonl") + " --report " +
+           folder.file("t.jsonl"));
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("error: --report '" + folder.file("t.jsonl") + "' is the --trace file"), std::string::npos)
+      << r.out;
+  EXPECT_EQ(fileBytes(folder.file("m.gdpn.yaml")), model);
+  r = gdpn("render tests/data/render/cube_lit.gdpn.yaml -o tests/data/render/../../data/render/cube_lit.gdpn.yaml");
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("error: -o 'tests/data/render/../../data/render/cube_lit.gdpn.yaml' is the model file"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(folder.names(), (std::vector<std::string>{"m.gdpn.yaml", "net.pnml"}));
+}
+
+/// `gdpn(args)` with files limited to about 1 KiB, as on a disk that is full.
+Result gdpnOnAFullDisk(const std::string& args) {
+  return shell("trap '' XFSZ; ulimit -f 2; \"$GDPN\" " + args); }
+
+TEST(CliOutputs, AFailedWriteKeepsTheOldFileByteForByteAndLeavesNoTemporary) {
+  ScratchFolder folder("gdpn_cli_full_disk");
+  const auto net = copyNet(folder, "net.pnml");
+  const std::string old = "the old file\n";
+  for (const char* name : {"out.pnml", "out.gdpn.yaml", "trace.jsonl", "picture.png"}) std::ofstream(folder.file(name)) << old;
+  const auto expectFailed = [&](const std::string& args, const std::string& file) {
+    const auto r = gdpnOnAFullDisk(args);
+    EXPECT_EQ(r.code, 1) << args << "\n" << r.out;
+    EXPECT_NE(r.out.find(folder.file(file) + ": error: cannot write the file: File too large"), std::string::npos)
+        << args << "\n" << r.out;
+    EXPECT_EQ(fileBytes(folder.file(file)), old) << file;
+  };
+  expectFailed("convert " + net + " " + folder.file("out.pnml"), "out.pnml");
+  expectFailed("convert " + net + " " + folder.file("out.gdpn.yaml"), "out.gdpn.yaml");
+  expectFailed("run tests/data/good/stochastic.gdpn.yaml -q --trace " + folder.file("trace.jsonl"), "trace.jsonl");
+  expectFailed("render tests/data/render/cube_lit.gdpn.yaml --size 256x256 -o " + folder.file("picture.png"),
+               "picture.png");
+  // a stream that cannot take the bytes is a failed write too
+  const auto r = gdpn("run examples/basics/figure31 -q --report /dev/full");
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("/dev/full: error: cannot write the file: No space left on device"), std::string::npos) << r.out;
+  EXPECT_EQ(folder.names(),
+            (std::vector<std::string>{"net.pnml", "out.gdpn.yaml", "out.pnml", "picture.png", "trace.jsonl"}));
+}
+
+TEST(CliOutputs, AKilledEncoderKeepsTheOldMovie) {
+  ScratchFolder folder("gdpn_cli_killed_ffmpeg");
+  // an ffmpeg that writes a little of its output, then dies
+  fs::create_directories(folder.dir() / "bin");
+  const auto fake = folder.file("bin/ffmpeg");
+  std::ofstream(fake) << "#!/bin/sh\nfor a in \"$@\"; do out=\"$a\"; done\nprintf partial > \"$out\"\nkill -9 $$\n";
+  fs::permissions(fake, fs::perms::owner_all);
+  const auto movie = folder.file("movie.mp4");
+  std::ofstream(movie) << "the old movie\n";
+  const auto r = shell("PATH='" + folder.file("bin") + "':\"$PATH\" \"$GDPN\" record tests/data/render/cube_lit.gdpn.yaml "
+                       "--until 1 --fps 10 --size 64x48 -o " + movie);
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find(movie + ": error: ffmpeg "), std::string::npos) << r.out;
+  EXPECT_EQ(fileBytes(movie), "the old movie\n");
+  EXPECT_EQ(folder.names(), (std::vector<std::string>{"bin", "movie.mp4"}));
+}
+
+TEST(CliOutputs, ARecordedMovieReplacesTheOldOne) {
+  ScratchFolder folder("gdpn_cli_movie_replaced");
+  const auto movie = folder.file("movie.mp4");
+  std::ofstream(movie) << "the old movie\n";
+  const auto r = gdpn("record tests/data/render/cube_lit.gdpn.yaml --until 0.5 --fps 10 --size 64x48 -o " + movie);
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_GT(fs::file_size(movie), 100u);
+  EXPECT_EQ(folder.names(), (std::vector<std::string>{"movie.mp4"}));
 }
 
 }  // namespace

@@ -55,7 +55,8 @@ class OutputFile {
 /// unchanged).
 [[nodiscard]] bool writeOutput(const std::string& path, const std::string& text, std::string& why);
 
-/// True when `a` and `b` name the same existing file (after links, `..` and the like).
+/// True when `a` and `b` name the same file: one existing file, or one path once links, `.`
+/// and `..` are resolved (for files not yet made).
 [[nodiscard]] bool sameFile(const std::string& a, const std::string& b);
 
 }  // namespace gdpn::core
