@@ -17,34 +17,41 @@ namespace fs = std::filesystem;
 using gdpn::testing::fileBytes;
 using Folder = gdpn::testing::ScratchFolder;
 
+/// A folder holding out.txt ("old"), and an output for it with `text` written, not committed.
+struct Started {
+  Folder folder;
+  std::string path = folder.file("out.txt");
+  OutputFile out{path};
+  Started(const std::string& name, const std::string& text) : folder(name) {
+    std::ofstream(path) << "old";
+    std::string why;
+    EXPECT_TRUE(out.open(why)) << why;
+    out.stream() << text;
+  }
+};
+
 TEST(OutputFile, ACommittedFileReplacesTheOldOneAndLeavesNoTemporary) {
-  Folder folder("gdpn_output_commit");
-  const auto path = folder.file("out.txt");
-  std::ofstream(path) << "old";
-  OutputFile out(path);
+  Started s("gdpn_output_commit", "new text");
+  EXPECT_EQ(fileBytes(s.path), "old");  // nothing replaced before the commit
+  EXPECT_EQ(fs::path(s.out.tempPath()).parent_path(), s.folder.dir());
+  EXPECT_TRUE(fs::path(s.out.tempPath()).filename().string().starts_with(".out.txt.tmp-"));
   std::string why;
-  ASSERT_TRUE(out.open(why)) << why;
-  out.stream() << "new text";
-  EXPECT_EQ(fileBytes(path), "old");  // nothing replaced before the commit
-  EXPECT_EQ(fs::path(out.tempPath()).parent_path(), folder.dir());
-  EXPECT_TRUE(fs::path(out.tempPath()).filename().string().starts_with(".out.txt.tmp-"));
-  ASSERT_TRUE(out.commit(why)) << why;
-  EXPECT_EQ(fileBytes(path), "new text");
-  EXPECT_EQ(folder.names().size(), 1u);
+  ASSERT_TRUE(s.out.commit(why)) << why;
+  EXPECT_EQ(fileBytes(s.path), "new text");
+  EXPECT_EQ(s.folder.names().size(), 1u);
 }
 
 TEST(OutputFile, AFileNotCommittedLeavesTheOldOneByteForByte) {
-  Folder folder("gdpn_output_abandon");
-  const auto path = folder.file("out.txt");
-  std::ofstream(path) << "old bytes";
+  Started s("gdpn_output_abandon", "half of it");
   {
-    OutputFile out(path);
+    OutputFile other(s.path);
     std::string why;
-    ASSERT_TRUE(out.open(why)) << why;
-    out.stream() << "half of it";
-  }
-  EXPECT_EQ(fileBytes(path), "old bytes");
-  EXPECT_EQ(folder.names().size(), 1u);
+    ASSERT_TRUE(other.open(why)) << why;
+  }  // dies uncommitted: its temporary file goes with it
+  EXPECT_EQ(s.folder.names().size(), 2u);  // out.txt and the temporary file of s.out
+  s.out.discard();
+  EXPECT_EQ(fileBytes(s.path), "old");
+  EXPECT_EQ(s.folder.names(), std::vector<std::string>{"out.txt"});
 }
 
 TEST(OutputFile, AWriteThatHitsTheFileSizeLimitFailsAndKeepsTheOldFile) {
