@@ -237,7 +237,7 @@ TEST(Physics, AJointSwitchedToPositionControlByAScriptServoesToItsTarget) {
   EXPECT_NEAR(p.world->jointRate(shoulder), core::radians(90), 0.01 * core::radians(90));
   EXPECT_GT(p.world->jointPosition(shoulder), core::radians(45));
   shoulder.setValue(scene::field::Joint::Control, std::string("position"));
-  p.world->fieldChanged(shoulder);
+  EXPECT_EQ(p.world->fieldChanged(shoulder), "");
   p.run(0.2, 1.0 / 500);
   // on its way back, no faster than vel1
   EXPECT_LT(p.world->jointRate(shoulder), 0.0);
@@ -278,11 +278,11 @@ TEST(Physics, ARegionWhoseScopeOrSizeAScriptChangesFeelsWhatItSaysAfterwards) {
   EXPECT_EQ(felt(*p.world, *p.scene, eye), std::vector<std::string>{"mine"});
   // the whole world in scope: the stranger is felt too
   eye.setValue(scene::field::Region::Scope, std::string("world"));
-  p.world->fieldChanged(eye);
+  EXPECT_EQ(p.world->fieldChanged(eye), "");
   EXPECT_EQ(felt(*p.world, *p.scene, eye), (std::vector<std::string>{"stranger", "mine"}));  // by path
   // a volume 0.2 m across, which neither box reaches
   eye.setValue(scene::field::Region::Size, std::array<double, 3>{0.2, 0.2, 0.2});
-  p.world->fieldChanged(eye);
+  EXPECT_EQ(p.world->fieldChanged(eye), "");
   EXPECT_TRUE(felt(*p.world, *p.scene, eye).empty());
 }
 
