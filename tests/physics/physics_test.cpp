@@ -338,5 +338,27 @@ TEST(Physics, StaticShapesDoNotMoveAndBodiesRestOnThem) {
   EXPECT_EQ(p.world->awakeCount(), 0u);
 }
 
+TEST(Physics, ABodyThatRunsAwayFaultsTheWorldWhichThenKeepsItsLastGoodPlacement) {
+  // the largest force a script may apply, on 1 kg: beyond 1e12 m/s in the first step
+  Plant p(R"(
+  - Transform:
+      translation: [0, 0, 1]
+      children:
+        - Body: {name: rocket, mass: 1, children: [{Sphere: {radius: 0.1}}]}
+)");
+  auto& rocket = p.node("#0/rocket");
+  p.world->step(0.01);
+  EXPECT_EQ(p.world->fault(), "");
+  const core::Pose good = rocket.world;
+  p.world->setForce(rocket, {kMaxForce, 0, 0});
+  p.world->step(0.01);
+  EXPECT_EQ(p.world->fault().rfind("body '#0/rocket' ran away: its position became (", 0), 0u) << p.world->fault();
+  // the scene keeps the placement of the last good step, and the world steps no more
+  EXPECT_EQ(rocket.world.position.x, good.position.x);
+  EXPECT_TRUE(std::isfinite(rocket.world.position.z));
+  p.world->step(0.01);
+  EXPECT_EQ(rocket.world.position.x, good.position.x);
+}
+
 }  // namespace
 }  // namespace gdpn::physics
