@@ -45,6 +45,35 @@ pages:
 )Y";
 }
 
+/// A hinge 'shoulder' (its `axes`, as fields) holding an arm whose cube is 1 m out along x;
+/// transition `move` runs `script` (lines of Python on the joint `j`) once.
+std::string jointed(const std::string& axes, const std::string& script) {
+  std::string text = R"Y(gdpn: 1
+settings: {dt: 0.01, until: 0.5}
+scene:
+  - Joint:
+      name: shoulder
+      kind: hinge
+      )Y" + axes + R"Y(
+      children: [{Body: {name: arm, mass: 1, children: [{Transform: {translation: [1, 0, 0], children: [{Cube: {}}]}}]}}]
+pages:
+  main:
+    places:
+      p: {tokens: {d0: [shoulder]}}
+      q: {}
+    transitions:
+      move:
+        pre_fire: |
+          j = self.d0[0]
+)Y";
+  std::istringstream lines(script);
+  for (std::string line; std::getline(lines, line);) text += "          " + line + "\n";
+  return text + R"Y(    arcs:
+      - {from: p, to: move, weight: {d0: 1}}
+      - {from: move, to: q, weight: {d0: 1}}
+)Y";
+}
+
 /// The run of `text` to its end, with its trace in `trace`.
 RunOutcome runOf(const std::string& text, std::string& trace) {
   core::Diagnostics diags;
@@ -95,32 +124,10 @@ TEST(PhysicsFault, ASpawnPlaceThatIsNoNumberIsRefused) {
 TEST(PhysicsFault, AJointKindAScriptCannotHaveIsRefusedAndTheJointStaysAsItWas) {
   // a hinge about z, its axis2 along z too: as a universal joint its axes would be parallel
   std::string trace;
-  const auto outcome = runOf(R"Y(gdpn: 1
-settings: {dt: 0.01, until: 0.5}
-scene:
-  - Joint:
-      name: shoulder
-      kind: hinge
-      axis1: [0, 0, 1]
-      axis2: [0, 0, 1]
-      children: [{Body: {name: arm, mass: 1, children: [{Cube: {}}]}}]
-pages:
-  main:
-    places:
-      p: {tokens: {d0: [shoulder]}}
-      q: {}
-    transitions:
-      bend:
-        pre_fire: |
-          j = self.d0[0]
-          try:
-              j.kind = "universal"
-          except ValueError as e:
-              sim.log("refused:", e, "kind is", j.kind)
-    arcs:
-      - {from: p, to: bend, weight: {d0: 1}}
-      - {from: bend, to: q, weight: {d0: 1}}
-)Y", trace);
+  const auto outcome = runOf(jointed("axis1: [0, 0, 1]\n      axis2: [0, 0, 1]",
+                                     "try:\n    j.kind = \"universal\"\nexcept ValueError as e:\n"
+                                     "    sim.log(\"refused:\", e, \"kind is\", j.kind)"),
+                             trace);
   EXPECT_EQ(outcome.reason, StopReason::Dead) << outcome.message;
   EXPECT_TRUE(has(trace, "refused: 'kind': universal joint 'shoulder' has axis2 parallel to axis1: its two axes need "
                          "different directions kind is hinge"))
@@ -150,27 +157,7 @@ TEST(PhysicsFault, AMotorAtTheLargestNumbersAFieldTakesStopsTheRunAsAPhysicsErro
   // vel1 and fmax1 as large as a field takes (1e300): the arm is flung away in the first
   // step, and the run ends there, never with a crash or a flood of ODE's warnings
   std::string trace;
-  const auto outcome = runOf(R"Y(gdpn: 1
-settings: {dt: 0.01, until: 0.5}
-scene:
-  - Joint:
-      name: shoulder
-      kind: hinge
-      children: [{Body: {name: arm, mass: 1, children: [{Transform: {translation: [1, 0, 0], children: [{Cube: {}}]}}]}}]
-pages:
-  main:
-    places:
-      p: {tokens: {d0: [shoulder]}}
-      q: {}
-    transitions:
-      spin:
-        pre_fire: |
-          self.d0.vel1 = 1e300
-          self.d0.fmax1 = 1e300
-    arcs:
-      - {from: p, to: spin, weight: {d0: 1}}
-      - {from: spin, to: q, weight: {d0: 1}}
-)Y", trace);
+  const auto outcome = runOf(jointed("axis1: [0, 0, 1]", "j.vel1 = 1e300\nj.fmax1 = 1e300"), trace);
   EXPECT_EQ(outcome.reason, StopReason::PhysicsError) << outcome.message;
   EXPECT_TRUE(has(outcome.message, "physics error at t = 0.01 s: body 'shoulder/arm' ran away: its position became ("))
       << outcome.message;
