@@ -407,6 +407,7 @@ int run(const RunArgs& a) {
   if (!a.quiet) model::printSummary(std::cout, report);
   switch (outcome.reason) {
     case model::StopReason::ScriptError:
+    case model::StopReason::PhysicsError:
       std::cerr << outcome.message << (outcome.message.ends_with('\n') ? "" : "\n");
       return 1;
     case model::StopReason::Interrupted:

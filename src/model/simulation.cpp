@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -23,6 +24,7 @@ const char* stopReasonName(StopReason reason) {
     case StopReason::Stopped: return "stopped";
     case StopReason::ScriptError: return "script error";
     case StopReason::Breakpoint: return "breakpoint";
+    case StopReason::PhysicsError: return "physics error";
   }
   return "?";
 }
@@ -304,6 +306,24 @@ std::optional<RunOutcome> Simulation::scriptHalt() const {
   return o;
 }
 
+std::optional<RunOutcome> Simulation::physicsHalt() const {
+  if (!physics_fault_at_) return std::nullopt;
+  RunOutcome o;
+  o.steps = kernel_->steps();
+  o.time = kernel_->now();
+  o.reason = StopReason::PhysicsError;
+  char at[64];
+  std::snprintf(at, sizeof at, "%.9g", *physics_fault_at_);
+  o.message = std::string("physics error at t = ") + at + " s: " + physics_->fault();
+  return o;
+}
+
+void Simulation::stepPhysics() {
+  if (!physics_ || physics_fault_at_) return;
+  physics_->step(kernel_->dt());
+  if (!physics_->fault().empty()) physics_fault_at_ = kernel_->now();
+}
+
 std::string Simulation::nodeName(net::NodeRef ref) const {
   if (scene_) {
     const scene::Node* node = scene_->resolve(ref);
@@ -407,8 +427,9 @@ void Simulation::start() {
 void Simulation::step() {
   if (!started_) start();
   kernel_->beginStep();
-  // phase 1: the world advances; phase 2: the sensors feel it
-  if (physics_) physics_->step(kernel_->dt());
+  // phase 1: the world advances; phase 2: the sensors feel it (not a world that failed)
+  stepPhysics();
+  if (physics_fault_at_) return;
   sense(true);
   // back from steps with the net off: the sensors' conditions as they are now
   if (stale_conditions_) readConditions();
@@ -421,7 +442,8 @@ void Simulation::step() {
 
 void Simulation::stepPlant() {
   kernel_->idleStep();
-  if (physics_) physics_->step(kernel_->dt());
+  stepPhysics();
+  if (physics_fault_at_) return;
   sense(false);
 }
 
@@ -453,6 +475,10 @@ RunOutcome Simulation::run(const RunLimits& limits, const ProgressFn& progress,
       outcome = *halt;
       break;
     }
+    if (auto halt = physicsHalt()) {
+      outcome = *halt;
+      break;
+    }
     // a dead net ends the run unless the plant is still moving or a sensor may yet change
     if (kernel_->dead() && (!physics_ || physics_->awakeCount() == 0) && (!hub_ || !hub_->mayChange())) {
       outcome.reason = StopReason::Dead;
@@ -463,6 +489,10 @@ RunOutcome Simulation::run(const RunLimits& limits, const ProgressFn& progress,
       break;
     }
     step();
+    if (auto halt = physicsHalt()) {
+      outcome = *halt;
+      break;
+    }
     if (step_hook_) step_hook_();
     if (stop_check_ && !scriptHalt() && stop_check_()) {
       outcome.reason = StopReason::Breakpoint;
@@ -472,7 +502,9 @@ RunOutcome Simulation::run(const RunLimits& limits, const ProgressFn& progress,
   }
   if (auto halt = scriptHalt(); halt && outcome.reason == StopReason::Until) outcome = *halt;
   if (progress) progress(kernel_->steps() - first, total);
-  if ((outcome.reason == StopReason::ScriptError || outcome.reason == StopReason::Interrupted) && trace_) {
+  if ((outcome.reason == StopReason::ScriptError || outcome.reason == StopReason::Interrupted ||
+       outcome.reason == StopReason::PhysicsError) &&
+      trace_) {
     trace_->event(kernel_->steps(), "error", "\"message\":" + core::jsonQuote(outcome.message));
   }
   if (trace_out_) trace_out_->flush();

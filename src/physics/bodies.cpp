@@ -30,7 +30,7 @@ World::Impl::Body* World::Impl::owner(const Node& node) {
   return nullptr;
 }
 
-void World::Impl::buildBodies(Node& node) {
+bool World::Impl::buildBodies(Node& node, core::Diagnostics& diags) {
   // bodies below a body are made before its mass is summed, so its shapes know their owner
   const bool body = node.kind() == NodeKind::Body;
   if (body) {
@@ -38,11 +38,13 @@ void World::Impl::buildBodies(Node& node) {
     bodies.push_back({&node, id, {}, {}, {}, {}});
     body_of[node.handle()] = bodies.size() - 1;
   }
-  for (const auto& c : node.children()) buildBodies(*c);
-  if (body) finishBody(bodies[body_of[node.handle()]]);
+  bool ok = true;
+  for (const auto& c : node.children()) ok = buildBodies(*c, diags) && ok;
+  if (body) ok = finishBody(bodies[body_of[node.handle()]], diags) && ok;
+  return ok;
 }
 
-void World::Impl::finishBody(Body& body) {
+bool World::Impl::finishBody(Body& body, core::Diagnostics& diags) {
   Node& node = *body.node;
   using F = scene::field::Body;
   const double density = node.number(F::Density);
@@ -50,6 +52,7 @@ void World::Impl::finishBody(Body& body) {
   dMass m;
   dMassSetZero(&m);
   const Pose inv = node.world.inverse();
+  bool unread_mesh = false;  // reported when its geometry is made
   scene::traverse(node, [&](Node& n, const scene::TraversalState&) {
     const Primitive p = shapePrimitive(n);
     if (p.form == Form::None || owner(n) != &body) return;
@@ -72,7 +75,10 @@ void World::Impl::finishBody(Body& body) {
         // mesh that cannot be read is reported when its geometry is made
         core::Diagnostics later;
         const MeshGeometry* mesh = meshOf(n, model_dir, later);
-        if (mesh == nullptr) return;
+        if (mesh == nullptr) {
+          unread_mesh = true;
+          return;
+        }
         const Vec3 size = mesh->box.hi - mesh->box.lo;
         if (size.x <= 0 || size.y <= 0 || size.z <= 0) return;
         dMassSetBox(&sm, density, size.x, size.y, size.z);
@@ -93,6 +99,16 @@ void World::Impl::finishBody(Body& body) {
     dMassTranslate(&sm, local.position.x, local.position.y, local.position.z);
     dMassAdd(&m, &sm);
   });
+  if (m.mass <= 0 && total <= 0 && !unread_mesh) {
+    // ODE cannot move a body that weighs nothing (its mass check fails)
+    const auto& at = node.fieldLoc(F::Mass).line > 0      ? node.fieldLoc(F::Mass)
+                     : node.fieldLoc(F::Density).line > 0 ? node.fieldLoc(F::Density)
+                                                          : node.loc;
+    diags.error(at, "body '" + node.path() + "' weighs nothing: its mass is 0 and " +
+                        (density > 0 ? "it has no shapes of its own with a volume" : "its density is 0") +
+                        "; give it a mass above 0, or shapes and a density above 0");
+    return false;
+  }
   if (m.mass <= 0) dMassSetSphereTotal(&m, total > 0 ? total : 1.0, 0.05);
   if (total > 0) dMassAdjust(&m, total);
   body.com = {m.c[0], m.c[1], m.c[2]};
@@ -103,6 +119,7 @@ void World::Impl::finishBody(Body& body) {
   if (ld > 0) dBodySetLinearDamping(body.id, ld);
   if (ad > 0) dBodySetAngularDamping(body.id, ad);
   node.dynamic_pose = node.world;
+  return true;
 }
 
 bool World::isBody(const scene::Node& node) const { return impl_->body_of.count(node.handle()) > 0; }

@@ -35,7 +35,47 @@ Motors motorsOf(JointKind kind) {
   return {};
 }
 
+/// The kind's word in the model file.
+const char* kindName(JointKind kind) {
+  switch (kind) {
+    case JointKind::Hinge: return "hinge";
+    case JointKind::Slider: return "slider";
+    case JointKind::Ball: return "ball";
+    case JointKind::Universal: return "universal";
+    case JointKind::Hinge2: return "hinge2";
+    case JointKind::Fixed: return "fixed";
+  }
+  return "?";
+}
+
+/// The field's location, or the node's when the field was left at its default.
+core::SourceLoc at(const Node& n, F field) { return n.fieldLoc(field).line > 0 ? n.fieldLoc(field) : n.loc; }
+
 }  // namespace
+
+std::optional<core::Diagnostic> World::Impl::axesProblem(const Node& n, JointKind kind) {
+  // ODE normalises the axes it is given: a zero one (or a cross product of parallel ones)
+  // stops the process there, so they are refused before ODE sees them
+  const bool one = kind == JointKind::Hinge || kind == JointKind::Slider || kind == JointKind::Universal ||
+                   kind == JointKind::Hinge2;
+  const bool two = kind == JointKind::Universal || kind == JointKind::Hinge2;
+  const Vec3 a1 = n.vec3(F::Axis1), a2 = n.vec3(F::Axis2);
+  const std::string joint = std::string(kindName(kind)) + " joint '" + n.path() + "'";
+  constexpr double kTiny = 1e-9;  // shorter than this, or closer to parallel (sine), is degenerate
+  if (one && a1.length() < kTiny) {
+    return core::Diagnostic{core::Severity::Error, at(n, F::Axis1),
+                            joint + " has a zero axis1: it needs a direction, such as [0, 0, 1]"};
+  }
+  if (two && a2.length() < kTiny) {
+    return core::Diagnostic{core::Severity::Error, at(n, F::Axis2),
+                            joint + " has a zero axis2: it needs a direction, such as [1, 0, 0]"};
+  }
+  if (two && a1.normalized().cross(a2.normalized()).length() < kTiny) {
+    return core::Diagnostic{core::Severity::Error, at(n, F::Axis2),
+                            joint + " has axis2 parallel to axis1: its two axes need different directions"};
+  }
+  return std::nullopt;
+}
 
 bool World::Impl::addJoint(Node& n, Body* parent_body, core::Diagnostics& diags) {
   // the first Body below the joint (Transforms may place it), not inside another Body
@@ -57,6 +97,10 @@ bool World::Impl::addJoint(Node& n, Body* parent_body, core::Diagnostics& diags)
     return false;
   }
   const auto kind = n.choice<JointKind>(F::Kind);
+  if (auto bad = axesProblem(n, kind)) {
+    diags.error(bad->loc, bad->message);
+    return false;
+  }
   dJointID j = makeJoint(n, kind, child_body->id, parent_body ? parent_body->id : nullptr);
   joints.push_back({&n, j, kind, n.choice<JointControl>(F::Control)});
   joint_of[n.handle()] = joints.size() - 1;
@@ -118,13 +162,14 @@ dJointID World::Impl::makeJoint(const Node& n, JointKind kind, dBodyID child, dB
   return j;
 }
 
-void World::Impl::refreshJoint(const Node& n) {
+std::string World::Impl::refreshJoint(const Node& n) {
   const auto it = joint_of.find(n.handle());
-  if (it == joint_of.end()) return;
+  if (it == joint_of.end()) return {};
   Joint& jt = joints[it->second];
   jt.control = n.choice<JointControl>(F::Control);
   const auto kind = n.choice<JointKind>(F::Kind);
-  if (kind == jt.kind) return;
+  if (kind == jt.kind) return {};
+  if (auto bad = axesProblem(n, kind)) return bad->message;
   // a joint of another kind: made again between the same bodies, where they are now
   dBodyID child = dJointGetBody(jt.id, 0), parent = dJointGetBody(jt.id, 1);
   dJointDestroy(jt.id);
@@ -132,6 +177,7 @@ void World::Impl::refreshJoint(const Node& n) {
   jt.kind = kind;
   if (child) dBodyEnable(child);
   if (parent) dBodyEnable(parent);
+  return {};
 }
 
 double World::Impl::position(const Joint& j, int axis) {

@@ -21,9 +21,8 @@ const Node* World::Impl::materialAt(const Node& node) {
 
 bool World::Impl::addSubtree(Node& top, core::Diagnostics& diags) {
   scene::updateTransforms(top);
-  bool ok = true;
   // bodies first: joints need both ends
-  buildBodies(top);
+  bool ok = buildBodies(top, diags);
   // a geometry per shape with the material in effect, and the sensors
   std::vector<std::pair<Node*, Body*>> pending_joints;
   scene::TraversalState state{top.world, top.world_scale, materialAt(top)};

@@ -3,6 +3,11 @@
 
 #include "gdpn/physics/world.h"
 
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <string>
+
 #include "ode_convert.h"
 #include "world_impl.h"
 
@@ -14,8 +19,35 @@ using core::Vec3;
 using scene::Node;
 using scene::NodeKind;
 
+/// An error ODE reported, thrown out of its handler: ODE exits or aborts when an error or
+/// debug handler returns, so the handler leaves by this instead, to the world's call.
+struct OdeFault {
+  std::string message;
+};
+
+/// ODE's message, its printf arguments formatted.
+std::string odeText(const char* kind, int num, const char* msg, va_list ap) {
+  char text[512];
+  std::vsnprintf(text, sizeof text, msg, ap);
+  return std::string(kind) + " " + std::to_string(num) + ": " + text;
+}
+
+// the last warning ODE gave (it repeats some in every step): kept quiet, told with a fault
+thread_local std::string last_ode_message;
+
+[[noreturn]] void throwOdeError(int num, const char* msg, va_list ap) {
+  throw OdeFault{odeText("ODE error", num, msg, ap)};
+}
+[[noreturn]] void throwOdeDebug(int num, const char* msg, va_list ap) {
+  throw OdeFault{odeText("ODE internal error", num, msg, ap)};
+}
+void keepOdeMessage(int num, const char* msg, va_list ap) { last_ode_message = odeText("ODE message", num, msg, ap); }
+
 void initOde() {
   static const bool done = [] {
+    dSetErrorHandler(throwOdeError);
+    dSetDebugHandler(throwOdeDebug);
+    dSetMessageHandler(keepOdeMessage);
     dInitODE2(0);
     dAllocateODEDataForThread(dAllocateMaskAll);
     return true;
@@ -36,7 +68,34 @@ World::Impl::~Impl() {
   if (world) dWorldDestroy(world);
 }
 
+bool World::Impl::bodiesSane() {
+  const auto bad = [](const dReal* v, int n, double bound) {
+    double sum = 0;
+    for (int i = 0; i < n; ++i) sum += v[i] * v[i];
+    return !std::isfinite(sum) || sum > bound * bound;
+  };
+  for (const auto& b : bodies) {
+    if (!b.id) continue;
+    const char* what = nullptr;
+    const dReal* v = nullptr;
+    if (bad(v = dBodyGetPosition(b.id), 3, kMaxDistance)) what = "its position";
+    else if (bad(v = dBodyGetQuaternion(b.id), 4, 2.0)) what = "its rotation";
+    else if (bad(v = dBodyGetLinearVel(b.id), 3, kMaxSpeed)) what = "its velocity";
+    else if (bad(v = dBodyGetAngularVel(b.id), 3, kMaxSpeed)) what = "its angular velocity";
+    if (!what) continue;
+    char numbers[160];
+    std::snprintf(numbers, sizeof numbers, "(%.6g, %.6g, %.6g)", v[0], v[1], v[2]);
+    fault = "body '" + b.node->path() + "' ran away: " + what + " became " + numbers +
+            ", not finite or beyond 1e12 (m, m/s, rad/s)";
+    if (!last_ode_message.empty()) fault += " (last " + last_ode_message + ")";
+    return false;
+  }
+  return true;
+}
+
 void World::Impl::step(double dt) {
+  if (!fault.empty()) return;
+  last_ode_message.clear();
   const double h = dt / substeps;
   driveMotors();
   for (int k = 0; k < substeps; ++k) {
@@ -49,6 +108,8 @@ void World::Impl::step(double dt) {
     collide();
     dWorldQuickStep(world, h);
     dJointGroupEmpty(contacts);
+    // a body that ran away stops the physics before ODE or the broad phase meet its numbers
+    if (!bodiesSane()) return;
   }
   for (auto& b : bodies) b.pending = {};
   writeBack();
@@ -99,20 +160,34 @@ std::unique_ptr<World> World::create(scene::Scene& scene, const std::string& mod
   dWorldSetAutoDisableFlag(impl->world, auto_disable ? 1 : 0);
   dWorldSetContactSurfaceLayer(impl->world, 0.001);
   impl->model_dir = model_dir;
-  if (!impl->addSubtree(scene.root(), diags)) return nullptr;
+  try {
+    if (!impl->addSubtree(scene.root(), diags)) return nullptr;
+  } catch (const OdeFault& e) {
+    diags.error(scene.root().loc, "the physics cannot be built: " + e.message);
+    return nullptr;
+  }
   return std::unique_ptr<World>(new World(std::move(impl)));
 }
 
-void World::step(double dt) { impl_->step(dt); }
+void World::step(double dt) {
+  try {
+    impl_->step(dt);
+  } catch (const OdeFault& e) {
+    // what ODE was doing is left half done: the world steps no more
+    impl_->fault = e.message;
+  }
+}
 
-void World::fieldChanged(const scene::Node& node) {
+const std::string& World::fault() const { return impl_->fault; }
+
+std::string World::fieldChanged(const scene::Node& node) {
   switch (node.kind()) {
     // what the world keeps of a node, read again
-    case NodeKind::Joint: impl_->refreshJoint(node); return;
+    case NodeKind::Joint: return impl_->refreshJoint(node);
     case NodeKind::Region:
-    case NodeKind::RangeFinder: impl_->refreshSensor(node); return;
+    case NodeKind::RangeFinder: impl_->refreshSensor(node); return {};
     case NodeKind::Material:
-    case NodeKind::Conveyor: impl_->refreshSurfaces(node); return;
+    case NodeKind::Conveyor: impl_->refreshSurfaces(node); return {};
     // the rest holds as built, or is read every step
     case NodeKind::Group:
     case NodeKind::Transform:
@@ -132,11 +207,19 @@ void World::fieldChanged(const scene::Node& node) {
     case NodeKind::GradientSensor:
     case NodeKind::KeyboardSensor:
     case NodeKind::MouseSensor:
-    case NodeKind::TimeSensor: return;
+    case NodeKind::TimeSensor: return {};
   }
+  return {};
 }
 
-bool World::add(scene::Node& top, core::Diagnostics& diags) { return impl_->addSubtree(top, diags); }
+bool World::add(scene::Node& top, core::Diagnostics& diags) {
+  try {
+    return impl_->addSubtree(top, diags);
+  } catch (const OdeFault& e) {
+    diags.error(top.loc, "the physics of '" + top.path() + "' cannot be built: " + e.message);
+    return false;
+  }
+}
 void World::remove(const scene::Node& top) { impl_->removeSubtree(top); }
 
 }  // namespace gdpn::physics

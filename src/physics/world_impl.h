@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <deque>
 #include <map>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -127,6 +128,7 @@ struct World::Impl {
   static constexpr std::uintptr_t kSensorTag = std::uintptr_t{1} << 62;
   std::string model_dir;
   std::map<std::pair<dBodyID, dBodyID>, dJointID> attached;
+  std::string fault;  // why the physics stopped (World::fault); empty while all is well
 
   // the broad phase: shapes on bodies are swept against each other and looked up in a tree
   // of the shapes without one, which never move; planes and other endless shapes meet
@@ -159,11 +161,13 @@ struct World::Impl {
   /// The Body that owns `node` (itself, or the nearest Body above it), or null.
   Body* owner(const scene::Node& node);
   const Body* owner(const scene::Node& node) const { return const_cast<Impl*>(this)->owner(node); }
-  /// An ODE body for every Body node in the subtree at `node`, each with its mass.
-  void buildBodies(scene::Node& node);
+  /// An ODE body for every Body node in the subtree at `node`, each with its mass. False,
+  /// with diagnostics, when a body weighs nothing.
+  bool buildBodies(scene::Node& node, core::Diagnostics& diags);
   /// A body's mass from its own shapes (not those of bodies below it), its centre of mass at
-  /// the ODE body's origin; its placement and damping.
-  void finishBody(Body& body);
+  /// the ODE body's origin; its placement and damping. False, with a diagnostic at its `mass`
+  /// (or `density`, or the node), when its mass is 0 and its shapes weigh nothing.
+  bool finishBody(Body& body, core::Diagnostics& diags);
 
   // geometry.cpp
   /// The geometry of Mesh node `n` (its file read from `dir`, its part chosen, scaled), made
@@ -187,8 +191,13 @@ struct World::Impl {
   static double position(const Joint& j, int axis);
   /// Sets every joint's motors from its node's fields (a script may have set them).
   void driveMotors();
-  /// Reads a Joint node's kind and control again (World::fieldChanged).
-  void refreshJoint(const scene::Node& n);
+  /// Why joint node `n` cannot be a joint of `kind` (ODE would normalise a zero vector): a
+  /// zero axis1 (every kind with an axis), a zero axis2 or one parallel to axis1 (universal,
+  /// hinge2); located at the field. Nullopt when it can.
+  static std::optional<core::Diagnostic> axesProblem(const scene::Node& n, scene::JointKind kind);
+  /// Reads a Joint node's kind and control again (World::fieldChanged); why it cannot take
+  /// the new kind (the joint then stays as it was), or empty.
+  std::string refreshJoint(const scene::Node& n);
 
   // contacts.cpp
   /// What shape `n`, on `body` (null: static), brings to contacts: the material in effect in
@@ -236,6 +245,9 @@ struct World::Impl {
   void step(double dt);
   /// Moving bodies tell the scene where they are; sleeping ones have not moved.
   void writeBack();
+  /// False, with `fault` set, when a body's position, rotation or velocity is no longer
+  /// finite or beyond kMaxDistance or kMaxSpeed.
+  bool bodiesSane();
 };
 
 }  // namespace gdpn::physics

@@ -2,6 +2,8 @@
 
 #include <gdal.h>
 
+#include <algorithm>
+#include <cmath>
 #include <mutex>
 
 namespace gdpn::scene {
@@ -31,8 +33,15 @@ std::optional<HeightGrid> loadHeightGrid(const std::string& path, std::string& w
     g.height.resize(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
     GDALRasterBandH band = GDALGetRasterBand(ds, 1);
     const CPLErr err = GDALRasterIO(band, GF_Read, 0, 0, nx, ny, g.height.data(), nx, ny, GDT_Float64, 0, 0);
+    // a height that is no number would reach the physics as one (NaN or infinite contacts)
+    const auto bad = std::find_if(g.height.begin(), g.height.end(), [](double h) { return !std::isfinite(h); });
     if (err != CE_None) {
       why = CPLGetLastErrorMsg()[0] ? CPLGetLastErrorMsg() : "reading the raster failed";
+    } else if (bad != g.height.end()) {
+      const auto at = static_cast<std::size_t>(bad - g.height.begin());
+      why = "the height at column " + std::to_string(at % static_cast<std::size_t>(nx)) + ", row " +
+            std::to_string(at / static_cast<std::size_t>(nx)) + " (from 0) is " + (std::isnan(*bad) ? "NaN" : "infinite") +
+            "; every sample must be a finite number";
     } else {
       grid = std::move(g);
     }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "gdpn/core/text.h"
@@ -138,6 +139,20 @@ core::Vec3 vec(const py::sequence& s) {
   return {s[0].cast<double>(), s[1].cast<double>(), s[2].cast<double>()};
 }
 
+/// Three numbers for the physics method `method`: each finite and at most `bound` in size
+/// (the units'), or a ValueError that names the method and the value.
+core::Vec3 physicsVec(const py::sequence& s, const char* method, double bound, const char* unit) {
+  const core::Vec3 u = vec(s);
+  for (double x : {u.x, u.y, u.z}) {
+    if (std::isfinite(x) && std::abs(x) <= bound) continue;
+    char text[200];
+    std::snprintf(text, sizeof text, "%s(%.6g, %.6g, %.6g): each number must be finite and at most %g %s", method,
+                  u.x, u.y, u.z, bound, unit);
+    throw py::value_error(text);
+  }
+  return u;
+}
+
 /// The index of field `name` of `n`'s type; raises AttributeError with a suggestion.
 std::size_t fieldOf(const scene::Node& n, const std::string& name) {
   const int i = n.type().fieldIndex(name);
@@ -196,9 +211,16 @@ void setField(const NodeView& v, const std::string& name, const py::object& valu
     }
   }
   if (auto bad = f.check(out)) throw py::value_error(bad->message);
+  scene::FieldValue before = n.value(i);
   n.setValue(i, std::move(out));
-  // the physics keeps some fields of its own (a joint's kind and control, a sensor's scope)
-  if (physics::World* w = v.r.get().physicsWorld()) w->fieldChanged(n);
+  // the physics keeps some fields of its own (a joint's kind and control, a sensor's scope);
+  // what it cannot follow (a joint kind with a zero axis) is refused, the field as it was
+  if (physics::World* w = v.r.get().physicsWorld()) {
+    if (auto why = w->fieldChanged(n); !why.empty()) {
+      n.setValue(i, std::move(before));
+      throw py::value_error("'" + name + "': " + why);
+    }
+  }
 }
 
 py::object slotAttr(Ref r, bool of_transition, std::uint32_t owner, const std::string& name) {
@@ -255,13 +277,13 @@ void registerViews() {
                                return py::make_tuple(u.x, u.y, u.z);
                              },
                              "its body's linear velocity, m/s")
-      .def("set_velocity", [](const NodeView& v, const py::sequence& u) { world(v).setVelocity(sceneNode(v), vec(u)); },
+      .def("set_velocity", [](const NodeView& v, const py::sequence& u) { world(v).setVelocity(sceneNode(v), physicsVec(u, "set_velocity", physics::kMaxSpeed, "m/s")); },
            "sets its body's linear velocity, m/s")
-      .def("set_force", [](const NodeView& v, const py::sequence& f) { world(v).setForce(sceneNode(v), vec(f)); },
+      .def("set_force", [](const NodeView& v, const py::sequence& f) { world(v).setForce(sceneNode(v), physicsVec(f, "set_force", physics::kMaxForce, "N")); },
            "a force on its body, N, world frame, applied every step until changed")
-      .def("add_force", [](const NodeView& v, const py::sequence& f) { world(v).addForce(sceneNode(v), vec(f)); },
+      .def("add_force", [](const NodeView& v, const py::sequence& f) { world(v).addForce(sceneNode(v), physicsVec(f, "add_force", physics::kMaxForce, "N")); },
            "a force on its body, N, world frame, for the next step only")
-      .def("set_torque", [](const NodeView& v, const py::sequence& t) { world(v).setTorque(sceneNode(v), vec(t)); },
+      .def("set_torque", [](const NodeView& v, const py::sequence& t) { world(v).setTorque(sceneNode(v), physicsVec(t, "set_torque", physics::kMaxForce, "N m")); },
            "a torque on its body, N m, world frame, applied every step until changed")
       .def("attach", [](const NodeView& v, const NodeView& other) {
              return world(v).attach(sceneNode(v), sceneNode(other));
@@ -292,7 +314,7 @@ void registerViews() {
              }
              if (!source) throw py::value_error("no template node " + py::str(templ).cast<std::string>());
              std::optional<core::Vec3> where;
-             if (!at.is_none()) where = vec(at.cast<py::sequence>());
+             if (!at.is_none()) where = physicsVec(at.cast<py::sequence>(), "spawn", physics::kMaxDistance, "m");
              std::string why;
              scene::Node* made = ctx.spawn(*source, sceneNode(v), where, why);
              if (!made) throw py::value_error("cannot spawn " + source->path() + ": " + why);

@@ -237,7 +237,7 @@ TEST(Physics, AJointSwitchedToPositionControlByAScriptServoesToItsTarget) {
   EXPECT_NEAR(p.world->jointRate(shoulder), core::radians(90), 0.01 * core::radians(90));
   EXPECT_GT(p.world->jointPosition(shoulder), core::radians(45));
   shoulder.setValue(scene::field::Joint::Control, std::string("position"));
-  p.world->fieldChanged(shoulder);
+  EXPECT_EQ(p.world->fieldChanged(shoulder), "");
   p.run(0.2, 1.0 / 500);
   // on its way back, no faster than vel1
   EXPECT_LT(p.world->jointRate(shoulder), 0.0);
@@ -278,11 +278,11 @@ TEST(Physics, ARegionWhoseScopeOrSizeAScriptChangesFeelsWhatItSaysAfterwards) {
   EXPECT_EQ(felt(*p.world, *p.scene, eye), std::vector<std::string>{"mine"});
   // the whole world in scope: the stranger is felt too
   eye.setValue(scene::field::Region::Scope, std::string("world"));
-  p.world->fieldChanged(eye);
+  EXPECT_EQ(p.world->fieldChanged(eye), "");
   EXPECT_EQ(felt(*p.world, *p.scene, eye), (std::vector<std::string>{"stranger", "mine"}));  // by path
   // a volume 0.2 m across, which neither box reaches
   eye.setValue(scene::field::Region::Size, std::array<double, 3>{0.2, 0.2, 0.2});
-  p.world->fieldChanged(eye);
+  EXPECT_EQ(p.world->fieldChanged(eye), "");
   EXPECT_TRUE(felt(*p.world, *p.scene, eye).empty());
 }
 
@@ -336,6 +336,28 @@ TEST(Physics, StaticShapesDoNotMoveAndBodiesRestOnThem) {
   // at rest, auto-disable put it to sleep
   EXPECT_FALSE(p.world->awake(box));
   EXPECT_EQ(p.world->awakeCount(), 0u);
+}
+
+TEST(Physics, ABodyThatRunsAwayFaultsTheWorldWhichThenKeepsItsLastGoodPlacement) {
+  // the largest force a script may apply, on 1 kg: beyond 1e12 m/s in the first step
+  Plant p(R"(
+  - Transform:
+      translation: [0, 0, 1]
+      children:
+        - Body: {name: rocket, mass: 1, children: [{Sphere: {radius: 0.1}}]}
+)");
+  auto& rocket = p.node("#0/rocket");
+  p.world->step(0.01);
+  EXPECT_EQ(p.world->fault(), "");
+  const core::Pose good = rocket.world;
+  p.world->setForce(rocket, {kMaxForce, 0, 0});
+  p.world->step(0.01);
+  EXPECT_EQ(p.world->fault().rfind("body '#0/rocket' ran away: its position became (", 0), 0u) << p.world->fault();
+  // the scene keeps the placement of the last good step, and the world steps no more
+  EXPECT_EQ(rocket.world.position.x, good.position.x);
+  EXPECT_TRUE(std::isfinite(rocket.world.position.z));
+  p.world->step(0.01);
+  EXPECT_EQ(rocket.world.position.x, good.position.x);
 }
 
 }  // namespace

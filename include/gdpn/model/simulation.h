@@ -36,9 +36,10 @@ enum class StopReason : std::uint8_t {
   Stopped,      ///< a script called sim.stop(reason)
   ScriptError,  ///< a script raised an exception or ran past the script timeout
   Breakpoint,   ///< a breakpoint held (session::Session)
+  PhysicsError, ///< a body ran away (non-finite or beyond physics::kMaxDistance, kMaxSpeed) or ODE failed
 };
 
-/// "until", "dead", "interrupted", "stopped", "script error" or "breakpoint".
+/// "until", "dead", "interrupted", "stopped", "script error", "breakpoint" or "physics error".
 const char* stopReasonName(StopReason reason);
 
 /// How a run ended.
@@ -46,7 +47,7 @@ struct RunOutcome {
   std::int64_t steps = 0;              ///< steps taken
   double time = 0.0;                   ///< seconds simulated
   StopReason reason = StopReason::Until;
-  std::string message;                 ///< for a script error: the located message and traceback; for a stop: the reason
+  std::string message;                 ///< for a script error: the located message and traceback; for a stop: the reason; for a physics error: the body, the time and what went wrong
 };
 
 /// Called now and then during a run with the steps done and the steps planned (0 if open).
@@ -126,6 +127,9 @@ class Simulation {
   /// Why the run must end now, if a script says so (an error, a timeout, an interrupt or
   /// sim.stop); nullopt while scripts are content.
   [[nodiscard]] std::optional<RunOutcome> scriptHalt() const;
+  /// Why the run must end now because the physics failed (StopReason::PhysicsError, its
+  /// message naming the body and the model time, s); nullopt while the physics is sound.
+  [[nodiscard]] std::optional<RunOutcome> physicsHalt() const;
 
  private:
   Simulation() = default;
@@ -145,6 +149,8 @@ class Simulation {
   bool makeEngine(core::Diagnostics& diags);
   double script_timeout_s_ = 0.0;
   bool stale_conditions_ = false;
+  std::optional<double> physics_fault_at_;  // model time (s) of the step whose physics failed
+  void stepPhysics();                       // phase 1, and the time of a fault
   std::unique_ptr<net::Kernel> kernel_;
   std::unique_ptr<net::StatsCollector> stats_;
   std::unique_ptr<net::TraceWriter> trace_;

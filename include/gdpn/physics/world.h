@@ -7,12 +7,21 @@
 /// move what touches them (a contact surface velocity, not a force field).
 
 #include <memory>
+#include <string>
 
 #include "gdpn/core/diagnostics.h"
 #include "gdpn/core/math.h"
 #include "gdpn/scene/node.h"
 
 namespace gdpn::physics {
+
+/// The farthest a body may be from the origin, m, and the fastest it may move, m/s (or turn,
+/// rad/s); a body beyond either, or one whose placement or velocity is no longer finite, is a
+/// physics fault (World::fault).
+inline constexpr double kMaxDistance = 1e12;
+inline constexpr double kMaxSpeed = 1e12;
+/// The largest force (N) or torque (N m) a script may apply, each component.
+inline constexpr double kMaxForce = 1e18;
 
 /// The physics of one scene. It reads joint motor fields (vel1, fmax1, ...) and conveyor
 /// speeds every step, so a script that sets them drives the joint or the belt; what else it
@@ -29,11 +38,19 @@ class World {
   World(const World&) = delete;
   World& operator=(const World&) = delete;
 
-  /// Advances by `dt` seconds in the World node's sub-steps, then updates the scene.
+  /// Advances by `dt` seconds in the World node's sub-steps, then updates the scene. After a
+  /// fault (see fault()) it does nothing: the scene keeps the last good placements.
   void step(double dt);
 
+  /// Why the physics cannot go on, empty while all is well: a body whose position, rotation
+  /// or velocity went non-finite or beyond kMaxDistance or kMaxSpeed in a sub-step (named by
+  /// its path, with what went wrong), or an error ODE reported.
+  [[nodiscard]] const std::string& fault() const;
+
   /// Tells the world that fields of `node` were assigned; the scripting layer calls it after
-  /// every assignment of a field. The world reads again what it keeps of that node:
+  /// every assignment of a field. Returns why the world cannot follow (a joint's new kind
+  /// with a zero axis, or two parallel axes: the joint stays as it was), empty when it can.
+  /// The world reads again what it keeps of that node:
   /// - a Joint's `kind` and `control` (a new kind makes the joint again between the same
   ///   bodies, where they are now: its positions count from there);
   /// - a Region's or RangeFinder's `scope`, and its volume (`shape`, `size`, `radius`,
@@ -44,7 +61,7 @@ class World {
   /// no call. Everything else holds as built: a body's mass and damping, a shape's size, a
   /// joint's anchor, axes and limits, the World settings. Nodes of other kinds, and nodes
   /// this world does not hold, are ignored.
-  void fieldChanged(const scene::Node& node);
+  [[nodiscard]] std::string fieldChanged(const scene::Node& node);
 
   /// True when `node` is a Body this world moves.
   [[nodiscard]] bool isBody(const scene::Node& node) const;
@@ -54,7 +71,8 @@ class World {
   [[nodiscard]] double mass(const scene::Node& body) const;
   /// A body's angular velocity, rad/s (world frame).
   [[nodiscard]] core::Vec3 angularVelocity(const scene::Node& body) const;
-  /// Sets a body's linear velocity, m/s.
+  /// Sets a body's linear velocity, m/s. The vectors given to this and the three below must
+  /// be finite and within kMaxSpeed or kMaxForce (the scripting layer refuses others).
   void setVelocity(const scene::Node& body, core::Vec3 v);
   /// A force (N, world frame) applied at the centre of mass in every step until changed.
   void setForce(const scene::Node& body, core::Vec3 force);

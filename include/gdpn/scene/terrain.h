@@ -17,7 +17,8 @@ struct HeightGrid {
   std::vector<double> height;  ///< nx * ny values, row by row
 };
 
-/// Reads band 1 of the raster at `path`. On failure, nullopt and `why` says what went wrong.
+/// Reads band 1 of the raster at `path`. On failure, nullopt and `why` says what went wrong
+/// (a sample that is NaN or infinite is one: `why` names its column and row, from 0).
 std::optional<HeightGrid> loadHeightGrid(const std::string& path, std::string& why);
 
 }  // namespace gdpn::scene
