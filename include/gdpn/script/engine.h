@@ -22,7 +22,12 @@ namespace gdpn::script {
 
 /// How scripts run.
 struct EngineOptions {
-  double timeout_s = 0.0;  ///< a single script call running longer than this is stopped (0: never), seconds
+  /// a single script call (the globals script, a script file's top level, a hook, a
+  /// breakpoint's predicate) running longer than this is stopped (0: never), seconds
+  double timeout_s = 0.0;
+  /// how long a call that does not stop when told (stuck in C code) is given after its
+  /// timeout before the process ends with the message on stderr (0: never), seconds
+  double grace_s = 2.0;
 };
 
 /// What scripts reach outside the net.
