@@ -12,6 +12,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <sys/wait.h>
+#include <utility>
 #include <vector>
 
 #include "gdpn/model/simulation.h"
@@ -207,6 +209,46 @@ TEST(ScriptTimeout, ScriptsThatReturnInTimeRunToTheEndAndLeaveNoTracer) {
   EXPECT_EQ(t.outcome.reason, StopReason::Dead) << t.outcome.message;
   EXPECT_EQ(testing::logLines(t.trace), expected);
 }
+
+#ifdef GDPN_CLI
+/// Runs the gdpn program with `args`: its exit code, and its stdout and stderr together.
+std::pair<int, std::string> cli(const std::string& args, const ScriptModel& m) {
+  const std::string out = m.path() + ".out";
+  const int status = std::system(("'" + std::string(GDPN_CLI) + "' " + args + " > '" + out + "' 2>&1").c_str());
+  std::ifstream in(out);
+  std::stringstream text;
+  text << in.rdbuf();
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+}
+
+TEST(ScriptTimeout, CheckStopsASleepingGlobalsScriptAndSaysWhere) {
+  ScriptModel m("gdpn: 1\nscripts:\n  globals: |\n    import time\n    time.sleep(100)\n"
+                "pages:\n  main:\n    places:\n      P: {tokens: 1}\n");
+  const auto start = clock::now();
+  const auto [code, out] = cli("check --script-timeout 0.5 '" + m.path() + "'", m);
+  EXPECT_LT(since(start), 4.0);
+  EXPECT_EQ(code, 1);
+  EXPECT_EQ(out, m.path() + ":5: error: the globals script ran longer than the script timeout of 0.5 s\n1 error\n");
+}
+
+TEST(ScriptTimeout, RunStopsASwallowingScriptAndKeepsTheTrace) {
+  ScriptModel m(hooks("sim.log('start')\nimport time\nwhile True:\n  try: time.sleep(1)\n  except BaseException: pass"));
+  const std::string trace = m.path() + ".jsonl";
+  const auto start = clock::now();
+  // located where the stop came last: in the except clause that swallowed the first
+  const auto [code, out] = cli("run -q --script-timeout 0.3 --trace '" + trace + "' '" + m.path() + "'", m);
+  EXPECT_LT(since(start), 4.0);
+  EXPECT_EQ(code, 1);
+  EXPECT_NE(out.find(m.path() + ":13: error: pre_fire of transition 'main/T' ran longer than the script timeout of 0.3 s"),
+            std::string::npos)
+      << out;
+  std::ifstream in(trace);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(testing::logLines(text.str()), std::vector<std::string>{"start"});
+  EXPECT_NE(text.str().find("\"ev\":\"error\""), std::string::npos) << text.str();
+}
+#endif
 
 TEST(ScriptTimeoutDeathTest, ACallStuckWhereNoSignalReachesItEndsTheProcessAfterTheGrace) {
   GTEST_FLAG_SET(death_test_style, "threadsafe");
