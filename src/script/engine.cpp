@@ -114,9 +114,10 @@ class Watchdog {
   Watchdog(const Watchdog&) = delete;
   Watchdog& operator=(const Watchdog&) = delete;
 
-  /// A script call starts in this thread (under the GIL).
+  /// A script call starts in this thread (under the GIL). A call made from inside another
+  /// (a hook run by what a script did) is part of it: the outer call's clock runs on.
   void enter() {
-    if (!thread_.joinable()) return;
+    if (!thread_.joinable() || depth_++ > 0) return;
     const unsigned long ident = PyThread_get_thread_ident();
     {
       std::lock_guard<std::mutex> lock(call_mutex_);
@@ -131,7 +132,7 @@ class Watchdog {
   }
   /// The call has returned (under the GIL): the stop's trace function goes.
   void leave() {
-    if (!thread_.joinable()) return;
+    if (!thread_.joinable() || --depth_ > 0) return;
     {
       std::lock_guard<std::mutex> lock(call_mutex_);
       in_call_.store(false, std::memory_order_release);
@@ -217,6 +218,7 @@ class Watchdog {
   bool by_signal_ = false;
   // the script's thread only
   Watchdog* previous_ = nullptr;
+  int depth_ = 0;  // calls inside calls
   bool tracing_ = false;
   Py_tracefunc saved_trace_ = nullptr;
   PyObject* saved_trace_obj_ = nullptr;
