@@ -229,6 +229,18 @@ class Watchdog {
   std::thread thread_;
 };
 
+/// Watches one call for as long as it lives.
+class Watched {
+ public:
+  explicit Watched(Watchdog& watchdog) : watchdog_(watchdog) { watchdog_.enter(); }
+  ~Watched() { watchdog_.leave(); }
+  Watched(const Watched&) = delete;
+  Watched& operator=(const Watched&) = delete;
+
+ private:
+  Watchdog& watchdog_;
+};
+
 /// Python-level handler of stopSignal(): raises KeyboardInterrupt in a call that ran out of
 /// time, and makes every later line of it raise too; does nothing otherwise (a late signal).
 PyObject* onStopSignal(PyObject*, PyObject*) {
@@ -755,6 +767,8 @@ std::vector<std::pair<std::string, std::string>> Engine::summary(std::string& er
     if (!impl_->globals.contains("summary")) return out;
     py::object f = impl_->globals["summary"];
     if (!PyCallable_Check(f.ptr())) return out;
+    // watched like any script: the guard leaves before the exception is formatted
+    const Watched watched(*impl_->watchdog);
     py::object result = f();
     if (!py::isinstance<py::dict>(result)) {
       error = "summary() must return a dict of figures, not " + std::string(py::str(py::type::of(result).attr("__name__")));
@@ -764,7 +778,8 @@ std::vector<std::pair<std::string, std::string>> Engine::summary(std::string& er
       out.emplace_back(py::str(item.first), py::str(item.second));
     }
   } catch (const py::error_already_set& e) {
-    error = std::string("summary() failed: ") + e.what();
+    const bool late = e.matches(PyExc_KeyboardInterrupt) && impl_->watchdog->timedOut();
+    error = late ? "summary() " + impl_->lateText() : std::string("summary() failed: ") + e.what();
   }
   return out;
 }

@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "gdpn/model/report.h"
 #include "gdpn/model/simulation.h"
 #include "gdpn/session/session.h"
 #include "script/script_model.h"
@@ -165,6 +166,20 @@ TEST(ScriptTimeout, StopsTheTopLevelOfAScriptFile) {
                              "timeout of 0.3 s"),
             std::string::npos)
       << diags.str();
+}
+
+TEST(ScriptTimeout, ASleepingSummaryGivesAFiguresErrorAndTheReport) {
+  ScriptModel m("gdpn: 1\nscripts:\n  globals: |\n    def summary():\n        import time\n        time.sleep(100)\n"
+                "pages:\n  main:\n    places:\n      P: {tokens: 1}\n");
+  core::Diagnostics diags;
+  auto sim = m.open(diags, 0.3);
+  ASSERT_TRUE(sim) << diags.str();
+  const auto outcome = sim->run({});
+  const auto start = clock::now();
+  const auto report = makeReport(*sim, outcome);
+  EXPECT_LT(since(start), 4.0);
+  EXPECT_TRUE(report.figures.empty());
+  EXPECT_EQ(report.figures_error, "summary() ran longer than the script timeout of 0.3 s");
 }
 
 TEST(ScriptTimeout, APredicateBreakpointThatSleepsEndsTheRunNamingIt) {

@@ -58,7 +58,8 @@ class Engine final : public net::ScriptHooks {
  public:
   /// Starts the interpreter if needed, compiles every script of `net` and runs the model's
   /// globals. Problems (syntax errors, missing files or functions, an exception in the
-  /// globals) are reported into `diags` at their file:line:col; then nullptr.
+  /// globals, globals running past the timeout) are reported into `diags` at their
+  /// file:line:col; then nullptr.
   static std::unique_ptr<Engine> create(const net::Net& net, net::Kernel& kernel, const std::string& model_path,
                                         EngineOptions options, EngineCallbacks callbacks, core::Diagnostics& diags);
   ~Engine() override;
@@ -83,7 +84,7 @@ class Engine final : public net::ScriptHooks {
 
   /// The model's own figures for the summary: when the globals define a function
   /// `summary()`, the dict it returns as (label, text) pairs in its order; empty otherwise.
-  /// An exception (or a result that is not a dict) leaves `error` set.
+  /// An exception, the timeout (or a result that is not a dict) leaves `error` set.
   std::vector<std::pair<std::string, std::string>> summary(std::string& error);
 
   /// Evaluates the Python expression `expression` in the model's globals (what its scripts
