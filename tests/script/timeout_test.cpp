@@ -3,6 +3,7 @@
 // file, a breakpoint's predicate) and even when it catches the stop; the run ends as a script
 // error located at the script's line, its trace kept.
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,6 +26,7 @@
 namespace gdpn::model {
 namespace {
 
+using ::testing::HasSubstr;
 using testing::ScriptModel;
 using clock = std::chrono::steady_clock;
 
@@ -78,13 +80,18 @@ Timed runTimed(const ScriptModel& m, double timeout_s) {
   return t;
 }
 
+/// How a stop for running too long is told: "`what` ran longer than ... `timeout` s".
+std::string late(const std::string& what, const std::string& timeout) {
+  return what + " ran longer than the script timeout of " + timeout + " s";
+}
+
 /// Expects the run to have ended within a few seconds as a timeout of `what`, located at
 /// `file:line`, with the trace ending in the error.
 void expectTimedOut(const Timed& t, const std::string& where, const std::string& what, const std::string& timeout) {
   EXPECT_EQ(t.outcome.reason, StopReason::ScriptError);
-  EXPECT_EQ(t.outcome.message, where + ": error: " + what + " ran longer than the script timeout of " + timeout + " s");
+  EXPECT_EQ(t.outcome.message, where + ": error: " + late(what, timeout));
   EXPECT_LT(t.seconds, 4.0);
-  EXPECT_NE(t.trace.find("\"ev\":\"error\""), std::string::npos) << t.trace;
+  EXPECT_THAT(t.trace, HasSubstr("\"ev\":\"error\""));
 }
 
 TEST(ScriptTimeout, StopsAPreFireSleepingInACall) {
@@ -108,11 +115,8 @@ TEST(ScriptTimeout, StopsAnOnDepositBlockedReadingOrWaiting) {
     const std::string where = call.find("Event") != std::string::npos ? "" : m.path() + ":" + std::to_string(last);
     if (where.empty()) {
       // the wait is inside threading.py: the stop is located there
-      EXPECT_NE(t.outcome.message.find("threading.py:"), std::string::npos) << t.outcome.message;
-      EXPECT_NE(t.outcome.message.find(": error: on_deposit of place 'main/Q' slot a0 ran longer than the script "
-                                       "timeout of 0.3 s"),
-                std::string::npos)
-          << t.outcome.message;
+      EXPECT_THAT(t.outcome.message, HasSubstr("threading.py:"));
+      EXPECT_THAT(t.outcome.message, HasSubstr(": error: " + late("on_deposit of place 'main/Q' slot a0", "0.3")));
       EXPECT_LT(t.seconds, 4.0);
     } else {
       expectTimedOut(t, where, "on_deposit of place 'main/Q' slot a0", "0.3");
@@ -133,12 +137,9 @@ TEST(ScriptTimeout, StopsAScriptThatSwallowsTheStop) {
     const auto t = runTimed(m, 0.3);
     EXPECT_EQ(t.outcome.reason, StopReason::ScriptError);
     EXPECT_EQ(t.outcome.message.rfind(m.path() + ":", 0), 0u) << t.outcome.message;
-    EXPECT_NE(
-        t.outcome.message.find(": error: pre_fire of transition 'main/T' ran longer than the script timeout of 0.3 s"),
-        std::string::npos)
-        << t.outcome.message;
+    EXPECT_THAT(t.outcome.message, HasSubstr(": error: " + late("pre_fire of transition 'main/T'", "0.3")));
     EXPECT_LT(t.seconds, 4.0);
-    EXPECT_NE(t.trace.find("\"ev\":\"error\""), std::string::npos);
+    EXPECT_THAT(t.trace, HasSubstr("\"ev\":\"error\""));
   }
 }
 
@@ -149,7 +150,7 @@ TEST(ScriptTimeout, StopsTheGlobalsScriptAndLocatesIt) {
   const auto start = clock::now();
   EXPECT_FALSE(m.open(diags, 0.5));
   EXPECT_LT(since(start), 4.0);
-  EXPECT_EQ(diags.str(), m.path() + ":5: error: the globals script ran longer than the script timeout of 0.5 s\n");
+  EXPECT_EQ(diags.str(), m.path() + ":5: error: " + late("the globals script", "0.5") + "\n");
 }
 
 TEST(ScriptTimeout, StopsTheTopLevelOfAScriptFile) {
@@ -162,10 +163,7 @@ TEST(ScriptTimeout, StopsTheTopLevelOfAScriptFile) {
   EXPECT_LT(since(start), 4.0);
   const std::string file = (std::filesystem::path(m.path()).parent_path() / "cell.py").string();
   EXPECT_EQ(diags.str().rfind(file + ":", 0), 0u) << diags.str();
-  EXPECT_NE(diags.str().find(": error: the script file 'cell.py' of the globals script ran longer than the script "
-                             "timeout of 0.3 s"),
-            std::string::npos)
-      << diags.str();
+  EXPECT_THAT(diags.str(), HasSubstr(": error: " + late("the script file 'cell.py' of the globals script", "0.3")));
 }
 
 TEST(ScriptTimeout, ASleepingSummaryGivesAFiguresErrorAndTheReport) {
@@ -179,13 +177,13 @@ TEST(ScriptTimeout, ASleepingSummaryGivesAFiguresErrorAndTheReport) {
   const auto report = makeReport(*sim, outcome);
   EXPECT_LT(since(start), 4.0);
   EXPECT_TRUE(report.figures.empty());
-  EXPECT_EQ(report.figures_error, "summary() ran longer than the script timeout of 0.3 s");
+  EXPECT_EQ(report.figures_error, late("summary()", "0.3"));
 }
 
 TEST(ScriptTimeout, APredicateBreakpointThatSleepsEndsTheRunNamingIt) {
   core::Diagnostics diags;
-  auto model = loadModel(std::string(GDPN_SOURCE_DIR) + "/examples/basics/producer_consumer/producer_consumer.gdpn.yaml",
-                         diags);
+  const std::string path = "/examples/basics/producer_consumer/producer_consumer.gdpn.yaml";
+  auto model = loadModel(std::string(GDPN_SOURCE_DIR) + path, diags);
   ASSERT_TRUE(model) << diags.str();
   auto s = session::Session::create(std::move(*model), diags, {std::nullopt, 0.3});
   ASSERT_TRUE(s) << diags.str();
@@ -196,10 +194,7 @@ TEST(ScriptTimeout, APredicateBreakpointThatSleepsEndsTheRunNamingIt) {
   EXPECT_LT(since(start), 4.0);
   EXPECT_EQ(outcome.reason, StopReason::ScriptError);
   EXPECT_EQ(outcome.steps, 0);
-  EXPECT_NE(outcome.message.find("breakpoint 1 (__import__('time').sleep(100)) failed: it ran longer than the script "
-                                 "timeout of 0.3 s"),
-            std::string::npos)
-      << outcome.message;
+  EXPECT_THAT(outcome.message, HasSubstr("breakpoint 1 (__import__('time').sleep(100)) failed: " + late("it", "0.3")));
 }
 
 TEST(ScriptTimeout, ScriptsThatReturnInTimeRunToTheEndAndLeaveNoTracer) {
@@ -243,25 +238,24 @@ TEST(ScriptTimeout, CheckStopsASleepingGlobalsScriptAndSaysWhere) {
   const auto [code, out] = cli("check --script-timeout 0.5 '" + m.path() + "'", m);
   EXPECT_LT(since(start), 4.0);
   EXPECT_EQ(code, 1);
-  EXPECT_EQ(out, m.path() + ":5: error: the globals script ran longer than the script timeout of 0.5 s\n1 error\n");
+  EXPECT_EQ(out, m.path() + ":5: error: " + late("the globals script", "0.5") + "\n1 error\n");
 }
 
 TEST(ScriptTimeout, RunStopsASwallowingScriptAndKeepsTheTrace) {
-  ScriptModel m(hooks("sim.log('start')\nimport time\nwhile True:\n  try: time.sleep(1)\n  except BaseException: pass"));
+  ScriptModel m(
+      hooks("sim.log('start')\nimport time\nwhile True:\n  try: time.sleep(1)\n  except BaseException: pass"));
   const std::string trace = m.path() + ".jsonl";
   const auto start = clock::now();
   // located where the stop came last: in the except clause that swallowed the first
   const auto [code, out] = cli("run -q --script-timeout 0.3 --trace '" + trace + "' '" + m.path() + "'", m);
   EXPECT_LT(since(start), 4.0);
   EXPECT_EQ(code, 1);
-  EXPECT_NE(out.find(m.path() + ":13: error: pre_fire of transition 'main/T' ran longer than the script timeout of 0.3 s"),
-            std::string::npos)
-      << out;
+  EXPECT_THAT(out, HasSubstr(m.path() + ":13: error: " + late("pre_fire of transition 'main/T'", "0.3")));
   std::ifstream in(trace);
   std::stringstream text;
   text << in.rdbuf();
   EXPECT_EQ(testing::logLines(text.str()), std::vector<std::string>{"start"});
-  EXPECT_NE(text.str().find("\"ev\":\"error\""), std::string::npos) << text.str();
+  EXPECT_THAT(text.str(), HasSubstr("\"ev\":\"error\""));
 }
 #endif
 
