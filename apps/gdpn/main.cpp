@@ -137,7 +137,7 @@ std::unique_ptr<gdpn::session::Session> open(const std::string& arg, std::option
   return sim;
 }
 
-int check(const std::string& arg) {
+int check(const std::string& arg, double script_timeout_s) {
   Diagnostics diags;
   auto path = model::resolveModelPath(arg, diags);
   std::optional<model::Model> m;
@@ -146,8 +146,8 @@ int check(const std::string& arg) {
   std::unique_ptr<model::Simulation> sim;
   if (m) net = gdpn::net::compile(m->net, diags);
   // scripts and the plant are checked too: scripts compiled, their files and functions found,
-  // globals run; bodies, joints and mesh files made ready
-  if (net && (net->scripted() || m->scene)) sim = model::Simulation::create(*m, diags);
+  // globals run (under the script timeout); bodies, joints and mesh files made ready
+  if (net && (net->scripted() || m->scene)) sim = model::Simulation::create(*m, diags, std::nullopt, script_timeout_s);
   diags.print(std::cerr);
   if (diags.hasErrors()) {
     std::cerr << diags.errorCount() << (diags.errorCount() == 1 ? " error\n" : " errors\n");
@@ -431,8 +431,12 @@ int main(int argc, char** argv) {
   });
 
   std::string check_model;
+  double check_timeout = 0.0;
   auto* check_cmd = app.add_subcommand("check", "Check a model and print its diagnostics; exit 0 when clean");
   check_cmd->add_option("MODEL", check_model, "a .gdpn.yaml file, or a folder holding exactly one")->required();
+  check_cmd->add_option("--script-timeout", check_timeout,
+                        "report an error when the globals script (or a script file's top level) runs longer than SECONDS")
+      ->check(CLI::PositiveNumber);
 
   const auto kSeed = number<std::uint64_t>(0, UINT64_MAX, "a whole number from 0 to 2^64-1");
   RunArgs run_args;
@@ -516,7 +520,7 @@ int main(int argc, char** argv) {
   if (analyze_cmd->parsed()) return analyze(analyze_args);
   if (render_cmd->parsed()) return capture(render_args, false);
   if (record_cmd->parsed()) return capture(record_args, true);
-  if (check_cmd->parsed()) return check(check_model);
+  if (check_cmd->parsed()) return check(check_model, check_timeout);
   if (run_cmd->parsed()) return run(run_args);
   return 2;
 }

@@ -11,9 +11,12 @@
 #include <csignal>
 #include <chrono>
 #include <condition_variable>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <pthread.h>
 #include <sstream>
 #include <thread>
 #include <unordered_map>
@@ -58,12 +61,39 @@ struct Compiled {
   bool expression = false;
 };
 
-/// Watches script calls from a thread of its own. A call that runs longer than the timeout
-/// gets KeyboardInterrupt raised inside it (PyThreadState_SetAsyncExc, under the GIL, which a
-/// running script gives up every few milliseconds); timedOut() tells it from a Ctrl-C.
+namespace {
+
+/// The signal that breaks a script's blocking call when its time is up: a real-time signal
+/// that nothing else sends. Python's C-level handler for it (installed with signal.signal,
+/// without SA_RESTART) makes the blocked system call return EINTR, and the call then runs
+/// the Python-level handler, onStopSignal, which raises.
+int stopSignal() { return SIGRTMAX - 4; }
+
+/// Python's thread ident of the thread whose signal handlers Python runs (0: the handler for
+/// stopSignal() is not installed, and the watchdog falls back on an asynchronous exception).
+std::atomic<unsigned long> g_signal_thread{0};
+
+class Watchdog;
+/// The watchdog of the script call running in this thread (null: none).
+thread_local Watchdog* t_watched = nullptr;
+
+PyObject* onStopSignal(PyObject* self, PyObject* args);
+int traceStop(PyObject* obj, PyFrameObject* frame, int what, PyObject* arg);
+
+/// Watches script calls from a thread of its own. When a call runs longer than the timeout,
+/// it is stopped in three rising steps:
+/// - stopSignal() is sent to the script's thread every 100 ms: a blocking call returns, and
+///   the handler raises KeyboardInterrupt and installs a C-level trace function;
+/// - that trace function raises again on every line and call event, so a script that
+///   catches the stop cannot go on; it is removed when the call returns;
+/// - a call still running `grace_s` after its timeout (stuck inside C code that never
+///   looks at signals) ends the process, with the message on stderr.
+/// timedOut() tells a stop from a Ctrl-C. A script on a thread that is not Python's main
+/// thread gets the stop as an asynchronous exception instead (busy loops only).
 class Watchdog {
  public:
-  explicit Watchdog(double timeout_s) : timeout_s_(timeout_s) {
+  Watchdog(double timeout_s, double grace_s, std::function<void()> hard_stop)
+      : timeout_s_(timeout_s), grace_s_(grace_s), hard_stop_(std::move(hard_stop)) {
     if (timeout_s_ > 0) thread_ = std::thread([this] { loop(); });
   }
   ~Watchdog() {
@@ -81,56 +111,168 @@ class Watchdog {
       thread_.join();
     }
   }
+  Watchdog(const Watchdog&) = delete;
+  Watchdog& operator=(const Watchdog&) = delete;
+
+  /// A script call starts in this thread (under the GIL). A call made from inside another
+  /// (a hook run by what a script did) is part of it: the outer call's clock runs on.
   void enter() {
-    if (!thread_.joinable()) return;
-    thread_id_.store(PyThread_get_thread_ident(), std::memory_order_relaxed);
-    generation_.fetch_add(1, std::memory_order_relaxed);
-    in_call_.store(true, std::memory_order_release);
+    if (!thread_.joinable() || depth_++ > 0) return;
+    const unsigned long ident = PyThread_get_thread_ident();
+    {
+      std::lock_guard<std::mutex> lock(call_mutex_);
+      thread_id_ = ident;
+      target_ = pthread_self();
+      by_signal_ = ident == g_signal_thread.load();
+      generation_.fetch_add(1, std::memory_order_relaxed);
+      in_call_.store(true, std::memory_order_release);
+    }
+    previous_ = t_watched;
+    t_watched = this;
   }
-  void leave() { in_call_.store(false, std::memory_order_release); }
-  [[nodiscard]] bool timedOut() const { return timed_out_.load(); }
+  /// The call has returned (under the GIL): the stop's trace function goes.
+  void leave() {
+    if (!thread_.joinable() || --depth_ > 0) return;
+    {
+      std::lock_guard<std::mutex> lock(call_mutex_);
+      in_call_.store(false, std::memory_order_release);
+    }
+    t_watched = previous_;
+    if (tracing_) {
+      tracing_ = false;
+      PyEval_SetTrace(saved_trace_, saved_trace_obj_);  // whatever tracer ran before (a debugger)
+      Py_XDECREF(saved_trace_obj_);
+      saved_trace_obj_ = nullptr;
+    }
+  }
+  /// Whether the current (or last) call was stopped for running too long.
+  [[nodiscard]] bool timedOut() const {
+    const auto stopped = stopped_.load();
+    return stopped != 0 && stopped == generation_.load();
+  }
+  /// Installs the trace function that raises on every event, once per call (under the GIL).
+  void traceUntilReturn() {
+    if (tracing_) return;
+    PyThreadState* state = PyThreadState_Get();
+    saved_trace_ = state->c_tracefunc;
+    saved_trace_obj_ = state->c_traceobj;
+    Py_XINCREF(saved_trace_obj_);
+    PyEval_SetTrace(traceStop, nullptr);
+    tracing_ = true;
+  }
 
  private:
   void loop() {
+    // signals sent to the process (Ctrl-C) are for the main thread, not this one
+    sigset_t all;
+    sigfillset(&all);
+    pthread_sigmask(SIG_BLOCK, &all, nullptr);
     using clock = std::chrono::steady_clock;
-    std::uint64_t seen = ~std::uint64_t{0};
-    clock::time_point since = clock::now();
+    std::uint64_t seen = 0;
+    clock::time_point since = clock::now(), kicked{};
     while (true) {
       {
         std::unique_lock<std::mutex> lock(mutex_);
         if (wake_.wait_for(lock, std::chrono::milliseconds(10), [this] { return done_; })) return;
       }
+      std::unique_lock<std::mutex> call(call_mutex_);
       if (!in_call_.load(std::memory_order_acquire)) {
-        seen = ~std::uint64_t{0};
+        seen = 0;
         continue;
       }
       const auto gen = generation_.load(std::memory_order_relaxed);
+      const auto now = clock::now();
       if (gen != seen) {
         seen = gen;
-        since = clock::now();
+        since = now;
         continue;
       }
-      if (timed_out_ || std::chrono::duration<double>(clock::now() - since).count() <= timeout_s_) continue;
-      const PyGILState_STATE state = PyGILState_Ensure();
-      // still the same call? (it may have ended while we waited for the GIL)
-      if (in_call_.load() && generation_.load() == seen) {
-        timed_out_ = true;
-        PyThreadState_SetAsyncExc(thread_id_.load(), PyExc_KeyboardInterrupt);
+      const double late = std::chrono::duration<double>(now - since).count() - timeout_s_;
+      if (late <= 0) continue;
+      const bool first = stopped_.exchange(gen) != gen;
+      if (grace_s_ > 0 && late > grace_s_) hard_stop_();
+      if (by_signal_ && (first || now - kicked >= std::chrono::milliseconds(100))) {
+        // while the call certainly runs (leave() waits for call_mutex_)
+        kicked = now;
+        pthread_kill(target_, stopSignal());
+      } else if (!by_signal_ && first) {
+        const unsigned long ident = thread_id_;
+        call.unlock();  // leave() runs under the GIL: never wait for the GIL holding its mutex
+        const PyGILState_STATE state = PyGILState_Ensure();
+        if (in_call_.load() && generation_.load() == gen) PyThreadState_SetAsyncExc(ident, PyExc_KeyboardInterrupt);
+        PyGILState_Release(state);
       }
-      PyGILState_Release(state);
     }
   }
 
   double timeout_s_;
+  double grace_s_;
+  std::function<void()> hard_stop_;
+  // the call: written by enter() under call_mutex_, read by the thread under it
+  std::mutex call_mutex_;
   std::atomic<std::uint64_t> generation_{0};
-  std::atomic<unsigned long> thread_id_{0};
+  std::atomic<std::uint64_t> stopped_{0};  // the generation that was stopped (0: none)
   std::atomic<bool> in_call_{false};
-  std::atomic<bool> timed_out_{false};
+  unsigned long thread_id_ = 0;
+  pthread_t target_{};
+  bool by_signal_ = false;
+  // the script's thread only
+  Watchdog* previous_ = nullptr;
+  int depth_ = 0;  // calls inside calls
+  bool tracing_ = false;
+  Py_tracefunc saved_trace_ = nullptr;
+  PyObject* saved_trace_obj_ = nullptr;
+  // the watchdog thread's life
   std::mutex mutex_;
   std::condition_variable wake_;
   bool done_ = false;
   std::thread thread_;
 };
+
+/// Watches one call for as long as it lives.
+class Watched {
+ public:
+  explicit Watched(Watchdog& watchdog) : watchdog_(watchdog) { watchdog_.enter(); }
+  ~Watched() { watchdog_.leave(); }
+  Watched(const Watched&) = delete;
+  Watched& operator=(const Watched&) = delete;
+
+ private:
+  Watchdog& watchdog_;
+};
+
+/// Python-level handler of stopSignal(): raises KeyboardInterrupt in a call that ran out of
+/// time, and makes every later line of it raise too; does nothing otherwise (a late signal).
+PyObject* onStopSignal(PyObject*, PyObject*) {
+  Watchdog* w = t_watched;
+  if (!w || !w->timedOut()) Py_RETURN_NONE;
+  w->traceUntilReturn();
+  PyErr_SetNone(PyExc_KeyboardInterrupt);
+  return nullptr;
+}
+
+/// The trace function of a stopped call: every new line and every call raises again.
+int traceStop(PyObject*, PyFrameObject*, int what, PyObject*) {
+  if (what != PyTrace_LINE && what != PyTrace_CALL) return 0;
+  PyErr_SetNone(PyExc_KeyboardInterrupt);
+  return -1;
+}
+
+/// Installs onStopSignal for stopSignal(), once, from Python's main thread (elsewhere
+/// signal.signal refuses, and the watchdog falls back on asynchronous exceptions).
+void installStopHandler() {
+  if (g_signal_thread.load() != 0) return;
+  static PyMethodDef def{"gdpn_script_stop", onStopSignal, METH_VARARGS, "stops a script that ran out of time"};
+  try {
+    auto handler = py::reinterpret_steal<py::object>(PyCFunction_New(&def, nullptr));
+    if (!handler) throw py::error_already_set();
+    py::module_::import("signal").attr("signal")(stopSignal(), handler);
+    g_signal_thread.store(PyThread_get_thread_ident());
+  } catch (const py::error_already_set&) {
+  }
+}
+
+}  // namespace
 
 struct Engine::Impl : detail::Context {
   const net::Net& net;
@@ -250,9 +392,14 @@ struct Engine::Impl : detail::Context {
       return std::nullopt;
     }
     py::object owned = py::reinterpret_steal<py::object>(code);
-    PyObject* result = PyEval_EvalCode(owned.ptr(), globals.ptr(), globals.ptr());
+    PyObject* result = evalWatched(owned.ptr());
     if (!result) {
-      diags.error(s.loc, "running the script file '" + s.file + "' failed:\n" + formatPending());
+      const auto where = located(innermost());  // before the exception is cleared
+      if (stoppedLate()) {
+        diags.error(where, "the script file '" + s.file + "' of " + what + " " + lateText());
+      } else {
+        diags.error(s.loc, "running the script file '" + s.file + "' failed:\n" + formatPending());
+      }
       return std::nullopt;
     }
     Py_DECREF(result);
@@ -284,6 +431,31 @@ struct Engine::Impl : detail::Context {
   }
 
   // ---- running ----
+
+  /// Runs module-level code (the globals, a script file) in the globals, under the watchdog.
+  PyObject* evalWatched(PyObject* code) {
+    watchdog->enter();
+    PyObject* result = PyEval_EvalCode(code, globals.ptr(), globals.ptr());
+    watchdog->leave();
+    return result;
+  }
+
+  /// Whether the pending exception is the watchdog's stop; then clears it.
+  bool stoppedLate() const {
+    if (!PyErr_ExceptionMatches(PyExc_KeyboardInterrupt) || !watchdog->timedOut()) return false;
+    PyErr_Clear();
+    return true;
+  }
+
+  /// How a script that was stopped for running too long is told.
+  std::string lateText() const {
+    return "ran longer than the script timeout of " + core::formatDouble(options.timeout_s) + " s";
+  }
+
+  /// A place a traceback reached (innermost()), as a diagnostic location.
+  core::SourceLoc located(const std::pair<std::string, int>& where) const {
+    return {where.first.empty() ? model_path : where.first, where.second, 0};
+  }
 
   /// The pending exception as a traceback text; clears it.
   static std::string formatPending() {
@@ -337,17 +509,14 @@ struct Engine::Impl : detail::Context {
   /// Records the pending exception as the engine's halt.
   void fail(ScriptKind kind, std::uint32_t id) {
     const auto [file, line] = innermost();
-    const bool keyboard = PyErr_ExceptionMatches(PyExc_KeyboardInterrupt);
     const std::string where = (file.empty() ? model_path : file) + (line > 0 ? ":" + std::to_string(line) : "");
     const std::string what = std::string(net::info(kind).key) + " of " + describe(kind, id);
-    if (keyboard && watchdog->timedOut()) {
-      PyErr_Clear();
+    if (stoppedLate()) {
       halt = Halt::Timeout;
-      message = where + ": error: " + what + " ran longer than the script timeout of " +
-                core::formatDouble(options.timeout_s) + " s";
+      message = where + ": error: " + what + " " + lateText();
       return;
     }
-    if (keyboard) {
+    if (PyErr_ExceptionMatches(PyExc_KeyboardInterrupt)) {
       PyErr_Clear();
       halt = Halt::Interrupted;
       message = where + ": error: " + what + " was interrupted (Ctrl-C)";
@@ -447,12 +616,20 @@ std::unique_ptr<Engine> Engine::create(const net::Net& net, net::Kernel& kernel,
   }
   py::gil_scoped_acquire gil;
   detail::registerViews();
+  if (options.timeout_s > 0) installStopHandler();
 
   auto impl = std::make_shared<Impl>(net, kernel);
   impl->model_path = model_path;
   impl->model_dir = std::filesystem::path(model_path).parent_path();
   impl->options = options;
   impl->callbacks = std::move(callbacks);
+  // the watchdog is there before the first script runs: the globals are watched too
+  impl->watchdog = std::make_unique<Watchdog>(options.timeout_s, options.grace_s, [impl = impl.get()] {
+    std::fprintf(stderr, "%s: error: a script %s and did not stop within %s s more; the process ends\n",
+                 impl->model_path.c_str(), impl->lateText().c_str(), core::formatDouble(impl->options.grace_s).c_str());
+    std::fflush(stderr);
+    std::_Exit(1);
+  });
   impl->transition_views.resize(net.transitions().size());
   impl->place_views.resize(net.places().size());
   impl->node_views.resize(net.nodeNames().size());
@@ -499,11 +676,14 @@ std::unique_ptr<Engine> Engine::create(const net::Net& net, net::Kernel& kernel,
     auto& c = impl->compiled[static_cast<std::size_t>(g)];
     ok = impl->compile(scripts[static_cast<std::size_t>(g)], false, "the globals script", c, diags, loaded);
     if (ok && c.code) {
-      PyObject* r = PyEval_EvalCode(c.code.ptr(), impl->globals.ptr(), impl->globals.ptr());
+      PyObject* r = impl->evalWatched(c.code.ptr());
       if (!r) {
-        const auto [file, line] = Impl::innermost();
-        diags.error({file.empty() ? model_path : file, line, 0},
-                    "the globals script raised an exception\n" + Impl::formatPending());
+        const auto where = impl->located(Impl::innermost());
+        if (impl->stoppedLate()) {
+          diags.error(where, "the globals script " + impl->lateText());
+        } else {
+          diags.error(where, "the globals script raised an exception\n" + Impl::formatPending());
+        }
         ok = false;
       }
       Py_XDECREF(r);
@@ -517,7 +697,6 @@ std::unique_ptr<Engine> Engine::create(const net::Net& net, net::Kernel& kernel,
     impl->compiled.clear();
     return nullptr;
   }
-  impl->watchdog = std::make_unique<Watchdog>(options.timeout_s);
   return std::unique_ptr<Engine>(new Engine(std::move(impl)));
 }
 
@@ -588,6 +767,8 @@ std::vector<std::pair<std::string, std::string>> Engine::summary(std::string& er
     if (!impl_->globals.contains("summary")) return out;
     py::object f = impl_->globals["summary"];
     if (!PyCallable_Check(f.ptr())) return out;
+    // watched like any script: the guard leaves before the exception is formatted
+    const Watched watched(*impl_->watchdog);
     py::object result = f();
     if (!py::isinstance<py::dict>(result)) {
       error = "summary() must return a dict of figures, not " + std::string(py::str(py::type::of(result).attr("__name__")));
@@ -597,7 +778,8 @@ std::vector<std::pair<std::string, std::string>> Engine::summary(std::string& er
       out.emplace_back(py::str(item.first), py::str(item.second));
     }
   } catch (const py::error_already_set& e) {
-    error = std::string("summary() failed: ") + e.what();
+    const bool late = e.matches(PyExc_KeyboardInterrupt) && impl_->watchdog->timedOut();
+    error = late ? "summary() " + impl_->lateText() : std::string("summary() failed: ") + e.what();
   }
   return out;
 }
@@ -621,11 +803,13 @@ std::optional<bool> Engine::evaluate(const std::string& expression, std::string&
   impl_->watchdog->leave();
   Py_XDECREF(r);
   if (truth < 0) {
+    if (impl_->stoppedLate()) {
+      error = "it " + impl_->lateText();
+      return std::nullopt;
+    }
     if (PyErr_ExceptionMatches(PyExc_KeyboardInterrupt)) {
-      const bool late = impl_->watchdog->timedOut();
       PyErr_Clear();
-      error = late ? "it ran longer than the script timeout of " + core::formatDouble(impl_->options.timeout_s) + " s"
-                   : "it was interrupted (Ctrl-C)";
+      error = "it was interrupted (Ctrl-C)";
       return std::nullopt;
     }
     error = Impl::formatPending();

@@ -10,45 +10,14 @@
 
 #include "gdpn/core/text.h"
 #include "gdpn/model/simulation.h"
+#include "script/script_model.h"
 #include "support/sim_helpers.h"
 
 namespace gdpn::model {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// A model written to a temporary folder (so that script files beside it can be found).
-class ScriptModel {
- public:
-  explicit ScriptModel(const std::string& text, const std::string& name = "m.gdpn.yaml") {
-    // unique across tests and across processes (CTest runs tests side by side)
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("gdpn_" + std::string(info ? info->name() : "x") + "_" +
-                                        std::to_string(getpid()) + "_" + std::to_string(counter()++));
-    fs::create_directories(dir_);
-    path_ = (dir_ / name).string();
-    std::ofstream(path_) << text;
-  }
-  ~ScriptModel() { fs::remove_all(dir_); }
-  void addFile(const std::string& name, const std::string& text) const {
-    fs::create_directories((dir_ / name).parent_path());
-    std::ofstream(dir_ / name) << text;
-  }
-  /// Loads and compiles; the diagnostics text on failure.
-  std::unique_ptr<Simulation> open(core::Diagnostics& diags, double timeout = 0) const {
-    auto m = loadModel(path_, diags);
-    return m ? Simulation::create(*m, diags, std::nullopt, timeout) : nullptr;
-  }
-  const std::string& path() const { return path_; }
-
- private:
-  static int& counter() {
-    static int n = 0;
-    return n;
-  }
-  fs::path dir_;
-  std::string path_;
-};
+using testing::ScriptModel;
 
 /// Runs `sim` and returns the text of its sim.log lines and the outcome.
 std::pair<std::vector<std::string>, RunOutcome> runLogs(Simulation& sim, RunLimits limits = {}) {

@@ -22,7 +22,12 @@ namespace gdpn::script {
 
 /// How scripts run.
 struct EngineOptions {
-  double timeout_s = 0.0;  ///< a single script call running longer than this is stopped (0: never), seconds
+  /// a single script call (the globals script, a script file's top level, a hook, a
+  /// breakpoint's predicate) running longer than this is stopped (0: never), seconds
+  double timeout_s = 0.0;
+  /// how long a call that does not stop when told (stuck in C code) is given after its
+  /// timeout before the process ends with the message on stderr (0: never), seconds
+  double grace_s = 2.0;
 };
 
 /// What scripts reach outside the net.
@@ -53,7 +58,8 @@ class Engine final : public net::ScriptHooks {
  public:
   /// Starts the interpreter if needed, compiles every script of `net` and runs the model's
   /// globals. Problems (syntax errors, missing files or functions, an exception in the
-  /// globals) are reported into `diags` at their file:line:col; then nullptr.
+  /// globals, globals running past the timeout) are reported into `diags` at their
+  /// file:line:col; then nullptr.
   static std::unique_ptr<Engine> create(const net::Net& net, net::Kernel& kernel, const std::string& model_path,
                                         EngineOptions options, EngineCallbacks callbacks, core::Diagnostics& diags);
   ~Engine() override;
@@ -78,7 +84,7 @@ class Engine final : public net::ScriptHooks {
 
   /// The model's own figures for the summary: when the globals define a function
   /// `summary()`, the dict it returns as (label, text) pairs in its order; empty otherwise.
-  /// An exception (or a result that is not a dict) leaves `error` set.
+  /// An exception, the timeout (or a result that is not a dict) leaves `error` set.
   std::vector<std::pair<std::string, std::string>> summary(std::string& error);
 
   /// Evaluates the Python expression `expression` in the model's globals (what its scripts
