@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -201,11 +202,14 @@ TEST(CliScripts, ScriptTimeoutStopsAnEndlessScript) {
 }
 
 TEST(CliScripts, SigintStopsAnEndlessScript) {
-  // start the run in the background, interrupt it once the script is spinning
-  const std::string out = temp("gdpn_sigint.out");
+  // start the run in the background and interrupt it once the script says it is spinning:
+  // by then gdpn has its handler (a background job starts with SIGINT ignored, so a signal
+  // sent earlier would be lost); the output file is this process's own
+  const std::string out = temp("gdpn_sigint_" + std::to_string(::getpid()) + ".out");
   const std::string cmd = std::string("cd '") + GDPN_SOURCE_DIR + "' && ('" + GDPN_CLI +
                           "' run tests/data/good/endless_script.gdpn.yaml -q > '" + out +
-                          "' 2>&1 & pid=$!; sleep 1; kill -INT $pid; wait $pid; echo \"exit $?\" >> '" + out + "')";
+                          "' 2>&1 & pid=$!; for i in $(seq 600); do grep -q spinning '" + out +
+                          "' && break; sleep 0.1; done; kill -INT $pid; wait $pid; echo \"exit $?\" >> '" + out + "')";
   ASSERT_EQ(std::system(cmd.c_str()), 0);
   std::stringstream text;
   text << std::ifstream(out).rdbuf();
