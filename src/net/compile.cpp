@@ -416,7 +416,21 @@ class Compiler {
   void checkParallelArcs() {
     // one arc that moves tokens each way between a place slot and a transition: two would
     // each find the tokens (two outputs: the room) that only their sum needs
-    std::map<std::tuple<PlaceId, TransitionId, bool, SlotId>, const ArcSpec*> first;
+    struct Key {
+      PlaceId place;
+      TransitionId transition;
+      bool output;
+      SlotId slot;
+      bool operator==(const Key&) const = default;
+    };
+    struct Hash {
+      std::size_t operator()(const Key& k) const {
+        const std::uint64_t ends = (std::uint64_t{k.place} << 32) | k.transition;
+        return std::hash<std::uint64_t>()(ends * 0x9e3779b97f4a7c15ull + std::uint64_t{k.slot} * 2 + (k.output ? 1 : 0));
+      }
+    };
+    std::unordered_map<Key, const ArcSpec*, Hash> first;  // hashed: a tree of millions of arcs is slow
+    first.reserve(arcs_.size());
     std::set<std::pair<const ArcSpec*, const ArcSpec*>> reported;  // a page type's arcs once, not per instance
     for (const auto& a : arcs_) {
       if (!a.output && a.spec->kind != ArcKind::Normal) continue;
