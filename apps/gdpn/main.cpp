@@ -195,20 +195,22 @@ int analyze(const AnalyzeArgs& a) {
   const auto start = std::chrono::steady_clock::now();
   auto last = start - std::chrono::seconds(1);  // the first call prints
   bool drawn = false;
-  auto due = [&] {
+  std::string shown_phase;  // a new phase prints at once
+  auto due = [&](const char* phase) {
     const auto now = std::chrono::steady_clock::now();
-    if (!show || now - last < std::chrono::milliseconds(250)) return false;
+    if (!show || (phase == shown_phase && now - last < std::chrono::milliseconds(250))) return false;
     last = now;
+    shown_phase = phase;
     drawn = !a.progress;
     return true;
   };
   options.progress = [&](const char* phase, const gdpn::net::InvariantProgress& p) {
-    if (!due()) return;
+    if (!due(phase)) return;
     std::fprintf(stderr, "%s%s: column %zu of %zu, %zu candidate rows, %.1f MiB%s", a.progress ? "" : "\r\033[K", phase,
                  p.round, p.columns, p.rows, static_cast<double>(p.bytes) / (1024.0 * 1024.0), a.progress ? "\n" : "");
   };
   options.explore.progress = [&](const gdpn::net::ExploreProgress& p) {
-    if (!due()) return;
+    if (!due("state space")) return;
     const auto now = std::chrono::steady_clock::now();
     const double secs = std::max(1e-6, std::chrono::duration<double>(now - start).count());
     std::fprintf(stderr, "%s%llu states, %llu edges, %.2fM states/s, %.1f MiB", a.progress ? "" : "\r",

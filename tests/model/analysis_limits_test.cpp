@@ -3,34 +3,17 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <sys/wait.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
+
+#include "support/cli.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int code = -1;
-  std::string out;  // stdout and stderr together
-};
-
-Result gdpn(const std::string& args) {
-  const std::string cmd = std::string("'") + GDPN_CLI + "' " + args + " 2>&1";
-  Result r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf{};
-  std::size_t n = 0;
-  while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
-  const int status = pclose(pipe);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using gdpn::testing::runGdpn;
 
 /// A model whose one transition empties k places into k others: its k^2 minimal P-invariants
 /// p_i + q_j appear in one elimination step, and sorting out the minimal ones is quadratic in
@@ -47,12 +30,12 @@ std::string fanModel(int k) {
 
 TEST(AnalyzeLimits, ExplodingInvariantsStopAtTheTimeLimitWithALabelledPartialAnswer) {
   const std::string model = fanModel(280);
-  auto r = gdpn("analyze '" + model + "' --time-limit 1 --progress");
+  auto r = runGdpn("analyze '" + model + "' --time-limit 1 --progress");
   EXPECT_EQ(r.code, 3) << r.out;
   EXPECT_NE(r.out.find("stopped early: invariants (partial: --time-limit reached)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("invariants (partial: --time-limit reached):"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("invariants: column "), std::string::npos) << r.out;  // the progress line
-  r = gdpn("analyze '" + model + "' --time-limit 1 --json");
+  r = runGdpn("analyze '" + model + "' --time-limit 1 --json");
   ASSERT_EQ(r.code, 3) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_FALSE(j["partial"].empty()) << r.out;
@@ -64,10 +47,10 @@ TEST(AnalyzeLimits, ExplodingInvariantsStopAtTheTimeLimitWithALabelledPartialAns
 
 TEST(AnalyzeLimits, MaxStatesAndMaxMemoryBoundTheInvariantsToo) {
   const std::string model = fanModel(280);
-  auto r = gdpn("analyze '" + model + "' --max-memory 1");
+  auto r = runGdpn("analyze '" + model + "' --max-memory 1");
   EXPECT_EQ(r.code, 3) << r.out;
   EXPECT_NE(r.out.find("stopped early: invariants (partial: --max-memory reached)"), std::string::npos) << r.out;
-  r = gdpn("analyze '" + model + "' --max-states 50");
+  r = runGdpn("analyze '" + model + "' --max-states 50");
   EXPECT_EQ(r.code, 3) << r.out;
   EXPECT_NE(r.out.find("stopped early: invariants (partial: too many candidates)"), std::string::npos) << r.out;
   fs::remove(model);
@@ -75,7 +58,7 @@ TEST(AnalyzeLimits, MaxStatesAndMaxMemoryBoundTheInvariantsToo) {
 
 TEST(AnalyzeLimits, ASmallNetIsCompleteUnderTheLimits) {
   const std::string model = fanModel(4);
-  const auto r = gdpn("analyze '" + model + "' --time-limit 60 --max-memory 64");
+  const auto r = runGdpn("analyze '" + model + "' --time-limit 60 --max-memory 64");
   EXPECT_EQ(r.code, 0) << r.out;
   EXPECT_EQ(r.out.find("stopped early"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("P-invariants (16)"), std::string::npos) << r.out;
