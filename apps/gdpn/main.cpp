@@ -219,6 +219,7 @@ struct AnalyzeArgs {
   bool progress = false;
   std::uint64_t max_states = 20'000'000;
   double max_memory_mib = 0.0;
+  double time_limit_s = 0.0;
   unsigned threads = 1;
 };
 
@@ -243,21 +244,34 @@ int analyze(const AnalyzeArgs& a) {
   options.explore.max_states = a.max_states;
   options.explore.max_bytes = static_cast<std::uint64_t>(a.max_memory_mib * 1024.0 * 1024.0);
   options.explore.threads = a.threads;
-  // a progress line on a terminal: states, states per second, memory
+  options.time_limit_s = a.time_limit_s;
+  // a progress line on a terminal: states, states per second, memory (the invariants: rows)
   const bool show = a.progress || isatty(STDERR_FILENO);
   const auto start = std::chrono::steady_clock::now();
   auto last = start - std::chrono::seconds(1);  // the first call prints
   bool drawn = false;
-  options.explore.progress = [&](const gdpn::net::ExploreProgress& p) {
+  std::string shown_phase;  // a new phase prints at once
+  auto due = [&](const char* phase) {
     const auto now = std::chrono::steady_clock::now();
-    if (!show || now - last < std::chrono::milliseconds(250)) return;
+    if (!show || (phase == shown_phase && now - last < std::chrono::milliseconds(250))) return false;
     last = now;
+    shown_phase = phase;
+    drawn = !a.progress;
+    return true;
+  };
+  options.progress = [&](const char* phase, const gdpn::net::InvariantProgress& p) {
+    if (!due(phase)) return;
+    std::fprintf(stderr, "%s%s: column %zu of %zu, %zu candidate rows, %.1f MiB%s", a.progress ? "" : "\r\033[K", phase,
+                 p.round, p.columns, p.rows, static_cast<double>(p.bytes) / (1024.0 * 1024.0), a.progress ? "\n" : "");
+  };
+  options.explore.progress = [&](const gdpn::net::ExploreProgress& p) {
+    if (!due("state space")) return;
+    const auto now = std::chrono::steady_clock::now();
     const double secs = std::max(1e-6, std::chrono::duration<double>(now - start).count());
     std::fprintf(stderr, "%s%llu states, %llu edges, %.2fM states/s, %.1f MiB", a.progress ? "" : "\r",
                  static_cast<unsigned long long>(p.states), static_cast<unsigned long long>(p.edges),
                  static_cast<double>(p.states) / secs / 1e6, static_cast<double>(p.bytes) / (1024.0 * 1024.0));
     std::fputs(a.progress ? "\n" : "", stderr);
-    drawn = !a.progress;
   };
   const auto result = model::analyze(*net, path, options);
   if (drawn) std::fprintf(stderr, "\r\033[K");
@@ -266,7 +280,7 @@ int analyze(const AnalyzeArgs& a) {
   } else {
     model::printAnalysis(std::cout, *net, result);
   }
-  return result.space.complete ? 0 : 3;
+  return result.complete() ? 0 : 3;
 }
 
 int convert(const std::string& in, const std::string& out) {
@@ -472,6 +486,9 @@ int main(int argc, char** argv) {
   analyze_cmd->add_option("--max-memory", analyze_args.max_memory_mib,
                           "stop when the search holds this many MiB (the answer is then partial)")
       ->check(number(0.0, 1e9, "MiB above 0, at most 1e9", true));
+  analyze_cmd->add_option("--time-limit", analyze_args.time_limit_s,
+                          "stop every phase after this many seconds in all (the answer is then partial)")
+      ->check(number(0.0, 1e9, "seconds above 0, at most 1e9", true));
   analyze_cmd->add_option("--threads", analyze_args.threads,
                           "threads for the search (1: one depth-first walk, the least memory)")
       ->check(number(1u, 256u, "a whole number of threads from 1 to 256"));

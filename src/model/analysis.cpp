@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 
 #include "gdpn/net/kernel.h"
@@ -46,10 +48,34 @@ std::string invariantText(const net::Net& net, const net::Invariant& y) {
 Analysis analyze(const net::Net& net, std::string path, const AnalysisOptions& options) {
   Analysis a;
   a.path = std::move(path);
-  a.invariants = net::invariants(net);
-  a.cycles = cycleTimes(net, a.invariants, options.dt);
-  a.space = net::explore(net, options.explore);
+  // one deadline for all phases; the state space's limits bound the invariants too
+  net::ExploreOptions explore = options.explore;
+  if (options.time_limit_s > 0.0) {
+    explore.deadline = std::chrono::steady_clock::now() +
+                       std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                           std::chrono::duration<double>(std::min(options.time_limit_s, 1e9)));
+  }
+  net::InvariantOptions limits;
+  limits.max_candidates = static_cast<std::size_t>(std::min<std::uint64_t>(limits.max_candidates, explore.max_states));
+  limits.max_bytes = explore.max_bytes;
+  limits.deadline = explore.deadline;
+  auto phase = [&](const char* name) {
+    if (options.progress) limits.progress = [&options, name](const net::InvariantProgress& p) { options.progress(name, p); };
+  };
+  phase("invariants");
+  a.invariants = net::invariants(net, limits);
+  phase("cycle times");
+  if (timed(net)) a.cycles = net::cycleBounds(net, a.invariants, effectiveDurations(net, options.dt), limits, &a.cycles_stop);
+  a.space = net::explore(net, explore);
   return a;
+}
+
+std::vector<std::pair<std::string, net::ExploreStop>> stoppedPhases(const Analysis& a) {
+  std::vector<std::pair<std::string, net::ExploreStop>> out;
+  if (!a.invariants.complete) out.emplace_back("invariants", a.invariants.stop);
+  if (a.cycles_stop != net::ExploreStop::Done) out.emplace_back("cycle times", a.cycles_stop);
+  if (!a.space.complete) out.emplace_back("state space", a.space.stop);
+  return out;
 }
 
 namespace {
@@ -82,6 +108,8 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
   ordered_json j;
   j["net"] = a.path;
   j["complete"] = s.complete;
+  j["partial"] = ordered_json::array();
+  for (const auto& [phase, stop] : stoppedPhases(a)) j["partial"].push_back({{"phase", phase}, {"stop", net::stopReason(stop)}});
   j["stop"] = net::stopReason(s.stop);
   j["bounded"] = s.bounded;
   j["states"] = s.states;
@@ -112,6 +140,7 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
   const auto& inv = a.invariants;
   ordered_json ij;
   ij["complete"] = inv.complete;
+  ij["stop"] = net::stopReason(inv.stop);
   ij["conservative"] = inv.conservative;
   ij["structurally_bounded"] = inv.structurally_bounded;
   ij["consistent"] = inv.consistent;
@@ -147,6 +176,7 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
   const auto& tr = net.transitions();
   auto yes = [](bool b) { return b ? "yes" : "no"; };
   auto decided = [&](bool b) { return s.decided ? yes(b) : "unknown (the graph is partial or unbounded)"; };
+  for (const auto& [phase, stop] : stoppedPhases(a)) out << "stopped early: " << phase << " (" << net::stopReason(stop) << ")\n";
   out << a.path << ": " << s.states << " states, " << s.edges << " edges";
   if (!s.bounded) out << " of a coverability graph";
   out << " (" << (s.bounded ? "" : "the net is unbounded; ") << net::stopReason(s.stop) << "; the search held "
@@ -177,7 +207,7 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
       << "\n  constant places: " << s.constant_places.size() << "\n";
 
   const auto& inv = a.invariants;
-  out << "invariants" << (inv.complete ? "" : " (partial: too many candidates)") << ":\n"
+  out << "invariants" << (inv.complete ? "" : std::string(" (") + net::stopReason(inv.stop) + ")") << ":\n"
       << "  conservative: " << yes(inv.conservative) << "; structurally bounded: " << yes(inv.structurally_bounded)
       << "; covered by T-invariants: " << yes(inv.consistent) << "\n";
   constexpr std::size_t kShown = 20;

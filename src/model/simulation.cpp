@@ -252,8 +252,7 @@ scene::Node* Simulation::spawn(const scene::Node& templ, scene::Node& parent, st
   }
   // a fresh name: the template's, numbered
   const std::string base = templ.name().empty() ? "spawn" : templ.name();
-  std::string name;
-  for (int k = 1; name.empty() || parent.child(name); ++k) name = base + "_" + std::to_string(k);
+  const std::string name = scene_->freshName(parent, base);
   // with `at`, the copy's own origin goes there: a Transform is moved itself, anything else
   // gets a Transform of its own
   const bool placeable = templ.is(scene::NodeKind::Transform);

@@ -260,7 +260,7 @@ StateSpace Search::run() {
   const std::size_t width = net_.placeSlots().size();
   const std::size_t transitions = net_.transitions().size();
 
-  const Plan p = plan(net_);
+  const Plan p = plan(net_, options_);
   if (p.overflow) return overflowAnswer(net_);
   if (options_.threads > 1 && !p.cover) return exploreParallel(net_, options_, p);
   cover_ = p.cover;
@@ -313,6 +313,9 @@ StateSpace Search::run() {
         peak_ = std::max(peak_, b);
         if (options_.progress) options_.progress({store_->size(), edges_count_, b});
         if (options_.max_bytes != 0 && b > options_.max_bytes) stop_ = ExploreStop::MaxMemory, running = false;
+        if (options_.deadline && std::chrono::steady_clock::now() >= *options_.deadline) {
+          stop_ = ExploreStop::TimeLimit, running = false;
+        }
       }
       // ids keep their top bit free (Frame::v_root)
       if (store_->size() > std::min<std::uint64_t>(options_.max_states, 0x7ffffff0u)) stop_ = ExploreStop::MaxStates, running = false;
@@ -360,6 +363,10 @@ const char* stopReason(ExploreStop stop) {
       return "partial: --max-memory reached";
     case ExploreStop::Overflow:
       return "partial: a place went past 2^32 - 2 tokens";
+    case ExploreStop::TimeLimit:
+      return "partial: --time-limit reached";
+    case ExploreStop::Candidates:
+      return "partial: too many candidates";
     case ExploreStop::Done:
       break;
   }

@@ -5,9 +5,11 @@
 #include <functional>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <tuple>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "gdpn/core/text.h"
 #include "gdpn/net/builder.h"
@@ -108,22 +110,25 @@ class Compiler {
 
   void checkPage(const PageSpec& page, bool is_type) {
     checkName(page.name, page.loc, is_type ? "page type" : "page");
-    // places, transitions and instances share the page's namespace
-    std::unordered_map<std::string, SourceLoc> names;
-    auto claim = [&](const std::string& name, const SourceLoc& loc, const char* what) {
+    // places, transitions and instances share the page's namespace; the first of a name is
+    // what arcs that name reach
+    names_.clear();
+    names_.reserve(page.places.size() + page.transitions.size() + page.instances.size());
+    auto claim = [&](const std::string& name, const SourceLoc& loc, const char* what, Named named) {
       checkName(name, loc, what);
-      auto [it, fresh] = names.emplace(name, loc);
+      named.loc = &loc;
+      auto [it, fresh] = names_.emplace(name, named);
       if (!fresh) {
         diags_.error(loc, std::string("name '") + name + "' is used twice on page '" + page.name + "'");
-        diags_.note(it->second, "first used here");
+        diags_.note(*it->second.loc, "first used here");
       }
     };
     for (const auto& p : page.places) {
-      claim(p.name, p.loc, "place");
+      claim(p.name, p.loc, "place", {nullptr, Local::What::Place, nullptr});
       checkPlaceValues(p);
     }
     for (const auto& t : page.transitions) {
-      claim(t.name, t.loc, "transition");
+      claim(t.name, t.loc, "transition", {nullptr, Local::What::Transition, nullptr});
       checkDuration(t.duration, t.name);
       if (!(t.probability > 0.0 && t.probability <= 1.0)) {
         diags_.error(t.probability_loc, "probability of transition '" + t.name +
@@ -131,7 +136,7 @@ class Compiler {
       }
     }
     for (const auto& i : page.instances) {
-      claim(i.name, i.loc, "instance");
+      claim(i.name, i.loc, "instance", {nullptr, std::nullopt, &i});
       if (!types_.count(i.type)) {
         std::vector<std::string> known;
         for (const auto& [name, type] : types_) known.push_back(name);
@@ -140,18 +145,18 @@ class Compiler {
       }
     }
     for (const auto& r : page.references) {
-      bool found = false;
-      for (const auto& p : page.places) found = found || p.name == r.place;
-      if (!found) {
+      const auto named = names_.find(r.place);
+      if (named == names_.end() || named->second.end != Local::What::Place) {
         diags_.error(r.loc, "reference '" + r.place + "' names no place of page type '" + page.name + "'" +
                                 core::didYouMean(r.place, placeNames(page)));
       }
     }
     for (const auto& a : page.arcs) checkArc(page, a);
+    // one pass over the arcs, not one per transition
+    std::unordered_set<std::string_view> targets;
+    for (const auto& a : page.arcs) targets.insert(a.to);
     for (const auto& t : page.transitions) {
-      bool has_input = false;
-      for (const auto& a : page.arcs) has_input = has_input || a.to == t.name;
-      if (!has_input) {
+      if (!targets.count(t.name)) {
         diags_.warning(t.loc, "transition '" + t.name + "' has no input arcs: it starts again in every "
                               "step it is not occurring");
       }
@@ -190,18 +195,13 @@ class Compiler {
 
   /// Resolves an arc end on `page` to what it names, reporting unknown names.
   std::optional<Local::What> endKind(const PageSpec& page, const std::string& name, const SourceLoc& loc) {
-    for (const auto& p : page.places) {
-      if (p.name == name) return Local::What::Place;
-    }
-    for (const auto& t : page.transitions) {
-      if (t.name == name) return Local::What::Transition;
-    }
+    if (auto named = names_.find(name); named != names_.end() && named->second.end) return named->second.end;
     const auto slash = name.find('/');
     if (slash != std::string::npos) {
       const std::string inst = name.substr(0, slash);
       const std::string ref = name.substr(slash + 1);
-      for (const auto& i : page.instances) {
-        if (i.name != inst) continue;
+      if (auto found = names_.find(inst); found != names_.end() && found->second.instance) {
+        const InstanceSpec& i = *found->second.instance;
         auto type = types_.find(i.type);
         if (type == types_.end()) return std::nullopt;  // reported with the instance
         std::vector<std::string> refs;
@@ -280,7 +280,10 @@ class Compiler {
   std::vector<PlaceId> instantiate(const PageSpec& page, const std::string& prefix,
                                    const std::string& node_prefix, std::vector<std::string>& stack) {
     std::vector<PlaceId> place_ids;
-    std::unordered_map<std::string, Local> scope;
+    place_ids.reserve(page.places.size());
+    std::unordered_map<std::string_view, Local> scope;  // places and transitions
+    std::unordered_map<std::string, Local> links;       // "instance/reference"
+    scope.reserve(page.places.size() + page.transitions.size());
     for (std::uint32_t i = 0; i < page.places.size(); ++i) {
       const auto& p = page.places[i];
       const auto id = static_cast<PlaceId>(places_.size());
@@ -299,11 +302,11 @@ class Compiler {
       stack.push_back(inst.type);
       auto inner = instantiate(*type, prefix + "/" + inst.name, node_prefix + inst.name + "/", stack);
       stack.pop_back();
-      for (const auto& r : type->references) {
-        for (std::size_t k = 0; k < type->places.size(); ++k) {
-          if (type->places[k].name == r.place) {
-            scope.emplace(inst.name + "/" + r.place, Local{Local::What::Link, inner[k]});
-          }
+      std::unordered_set<std::string_view> published;
+      for (const auto& r : type->references) published.insert(r.place);
+      for (std::size_t k = 0; k < type->places.size() && !published.empty(); ++k) {
+        if (published.count(type->places[k].name)) {
+          links.emplace(inst.name + "/" + type->places[k].name, Local{Local::What::Link, inner[k]});
         }
       }
     }
@@ -312,13 +315,19 @@ class Compiler {
       transitions_.push_back({&t, prefix + "/" + t.name});
       scope.emplace(t.name, Local{Local::What::Transition, id});
     }
+    auto resolve = [&](const std::string& name) -> const Local* {
+      if (auto it = scope.find(name); it != scope.end()) return &it->second;
+      if (auto it = links.find(name); it != links.end()) return &it->second;
+      return nullptr;
+    };
+    arcs_.reserve(arcs_.size() + page.arcs.size());
     for (const auto& a : page.arcs) {
-      auto from = scope.find(a.from);
-      auto to = scope.find(a.to);
-      if (from == scope.end() || to == scope.end()) continue;  // only after a cycle error
-      const bool output = from->second.what == Local::What::Transition;
-      const PlaceId place = output ? to->second.index : from->second.index;
-      const TransitionId transition = output ? from->second.index : to->second.index;
+      const Local* from = resolve(a.from);
+      const Local* to = resolve(a.to);
+      if (!from || !to) continue;  // only after a cycle error
+      const bool output = from->what == Local::What::Transition;
+      const PlaceId place = output ? to->index : from->index;
+      const TransitionId transition = output ? from->index : to->index;
       arcs_.push_back({place, transition, output, &a});
     }
     return place_ids;
@@ -368,15 +377,14 @@ class Compiler {
       for (const auto& n : spec.nodes) declare(p, n.slot, SlotKind::Node, n.loc);
       for (const auto& b : spec.sensors) declare(p, b.slot, SlotKind::Sensor, b.loc);
     }
-    for (const auto& [root, src] : kinds) {
-      if (src.kind != SlotKind::Sensor) continue;
-      // a sensor slot carries no tokens: nothing may flow through it
-      for (const auto& a : arcs_) {
-        for (const auto& w : weightsOf(*a.spec)) {
-          if (find(placeVertex(a.place, w.slot)) == root) {
-            diags_.error(w.loc, "slot " + slotName(w.slot) + " of '" + places_[a.place].name +
-                                    "' reads a sensor and carries no tokens; give the arc a condition instead");
-          }
+    // a sensor slot carries no tokens: nothing may flow through it (one pass over the arcs)
+    const bool sensors = std::any_of(kinds.begin(), kinds.end(), [](const auto& k) { return k.second.kind == SlotKind::Sensor; });
+    for (const auto& a : arcs_) {
+      if (!sensors) break;
+      for (const auto& w : weightsOf(*a.spec)) {
+        if (auto k = kinds.find(find(placeVertex(a.place, w.slot))); k != kinds.end() && k->second.kind == SlotKind::Sensor) {
+          diags_.error(w.loc, "slot " + slotName(w.slot) + " of '" + places_[a.place].name +
+                                  "' reads a sensor and carries no tokens; give the arc a condition instead");
         }
       }
     }
@@ -408,7 +416,21 @@ class Compiler {
   void checkParallelArcs() {
     // one arc that moves tokens each way between a place slot and a transition: two would
     // each find the tokens (two outputs: the room) that only their sum needs
-    std::map<std::tuple<PlaceId, TransitionId, bool, SlotId>, const ArcSpec*> first;
+    struct Key {
+      PlaceId place;
+      TransitionId transition;
+      bool output;
+      SlotId slot;
+      bool operator==(const Key&) const = default;
+    };
+    struct Hash {
+      std::size_t operator()(const Key& k) const {
+        const std::uint64_t ends = (std::uint64_t{k.place} << 32) | k.transition;
+        return std::hash<std::uint64_t>()(ends * 0x9e3779b97f4a7c15ull + std::uint64_t{k.slot} * 2 + (k.output ? 1 : 0));
+      }
+    };
+    std::unordered_map<Key, const ArcSpec*, Hash> first;  // hashed: a tree of millions of arcs is slow
+    first.reserve(arcs_.size());
     std::set<std::pair<const ArcSpec*, const ArcSpec*>> reported;  // a page type's arcs once, not per instance
     for (const auto& a : arcs_) {
       if (!a.output && a.spec->kind != ArcKind::Normal) continue;
@@ -532,6 +554,13 @@ class Compiler {
   const NetSpec& spec_;
   Diagnostics& diags_;
   std::unordered_map<std::string, const PageSpec*> types_;
+  // the page being checked: what each name names
+  struct Named {
+    const SourceLoc* loc;               // where it is declared
+    std::optional<Local::What> end;     // a place or transition: what an arc reaches
+    const InstanceSpec* instance;       // an instance
+  };
+  std::unordered_map<std::string_view, Named> names_;
   std::vector<FlatPlace> places_;
   std::vector<FlatTransition> transitions_;
   std::vector<FlatArc> arcs_;

@@ -22,6 +22,38 @@ struct Row {
   std::vector<std::uint64_t> support;
 };
 
+/// The limits of one invariant computation, looked at as the work goes: the first limit
+/// reached stops it for good (a time or memory limit stops every system after it too).
+class Budget {
+ public:
+  explicit Budget(const InvariantOptions& options) : options_(options) {}
+
+  /// Records why the work stops (the first reason stays); returns false.
+  bool halt(ExploreStop why) {
+    if (stop_ == ExploreStop::Done) stop_ = why;
+    return false;
+  }
+  /// True while no limit is reached; looks at the clock and memory and reports progress
+  /// every 256 calls.
+  bool check(const InvariantProgress& now) {
+    if (stop_ != ExploreStop::Done) return false;
+    if ((++calls_ & 255u) != 0) return true;
+    if (options_.max_bytes != 0 && now.bytes > options_.max_bytes) return halt(ExploreStop::MaxMemory);
+    if (options_.deadline && std::chrono::steady_clock::now() >= *options_.deadline) return halt(ExploreStop::TimeLimit);
+    if (options_.progress) options_.progress(now);
+    return true;
+  }
+  /// True when a time or memory limit has stopped the work.
+  [[nodiscard]] bool exhausted() const { return stop_ == ExploreStop::MaxMemory || stop_ == ExploreStop::TimeLimit; }
+  [[nodiscard]] ExploreStop stop() const { return stop_; }
+  [[nodiscard]] std::size_t maxRows() const { return options_.max_candidates; }
+
+ private:
+  const InvariantOptions& options_;
+  ExploreStop stop_ = ExploreStop::Done;
+  std::uint32_t calls_ = 0;
+};
+
 bool addMul(std::int64_t x, std::int64_t cx, std::int64_t z, std::int64_t cz, std::int64_t& out) {
   std::int64_t p = 0, q = 0;
   return !__builtin_mul_overflow(x, cx, &p) && !__builtin_mul_overflow(z, cz, &q) && !__builtin_add_overflow(p, q, &out);
@@ -43,13 +75,16 @@ bool subset(const std::vector<std::uint64_t>& x, const std::vector<std::uint64_t
 }
 
 /// Keeps the rows whose support contains no other row's support (and one of equal rows).
-void keepMinimal(std::vector<Row>& rows) {
+/// False when `budget` stopped it (the rows are then left as they were).
+bool keepMinimal(std::vector<Row>& rows, Budget& budget, InvariantProgress progress) {
   std::vector<std::size_t> count(rows.size());
   for (std::size_t i = 0; i < rows.size(); ++i) {
     for (auto w : rows[i].support) count[i] += static_cast<std::size_t>(std::popcount(w));
   }
   std::vector<bool> drop(rows.size(), false);
+  progress.rows = rows.size();
   for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (!budget.check(progress)) return false;
     for (std::size_t j = 0; j < rows.size() && !drop[i]; ++j) {
       if (i == j || drop[j] || count[j] > count[i] || !subset(rows[j].support, rows[i].support)) continue;
       // a smaller support, or the same row met earlier
@@ -63,12 +98,17 @@ void keepMinimal(std::vector<Row>& rows) {
     ++out;
   }
   rows.resize(out);
+  return true;
 }
 
 /// The minimal semi-positive y with y·A = 0, where A has one row per variable.
-std::vector<Invariant> semiflows(const Matrix& a, std::size_t columns, std::size_t max_rows, bool& complete) {
+std::vector<Invariant> semiflows(const Matrix& a, std::size_t columns, Budget& budget) {
+  if (budget.exhausted()) return {};
   const std::size_t n = a.size();
   const std::size_t words = (n + 63) / 64;
+  const std::size_t max_rows = budget.maxRows();
+  const std::uint64_t row_bytes = (columns + n + words) * sizeof(std::int64_t) + sizeof(Row);
+  InvariantProgress progress{0, columns, n, n * row_bytes};
   std::vector<Row> rows(n);
   for (std::size_t i = 0; i < n; ++i) {
     rows[i].a = a[i];
@@ -91,6 +131,7 @@ std::vector<Invariant> semiflows(const Matrix& a, std::size_t columns, std::size
     }
     const std::size_t j = best;
     done[j] = true;
+    progress.round = round;
     std::vector<Row> next;
     std::vector<std::size_t> pos, neg;
     for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -99,7 +140,7 @@ std::vector<Invariant> semiflows(const Matrix& a, std::size_t columns, std::size
     }
     // too many candidates: give up before making them (the answer is then partial)
     if (rows.size() - pos.size() - neg.size() + pos.size() * neg.size() > 4 * max_rows) {
-      complete = false;
+      budget.halt(ExploreStop::Candidates);
       return {};
     }
     for (auto& r : rows) {
@@ -119,18 +160,21 @@ std::vector<Invariant> semiflows(const Matrix& a, std::size_t columns, std::size
         for (std::size_t k = 0; k < columns && ok; ++k) ok = addMul(x.a[k], cx, z.a[k], cz, r.a[k]);
         for (std::size_t k = 0; k < n && ok; ++k) ok = addMul(x.y[k], cx, z.y[k], cz, r.y[k]);
         if (!ok) {
-          complete = false;
+          budget.halt(ExploreStop::Overflow);
           return {};
         }
         r.support.resize(words);
         for (std::size_t k = 0; k < words; ++k) r.support[k] = x.support[k] | z.support[k];
         normalise(r);
         next.push_back(std::move(r));
+        progress.rows = rows.size() + next.size();
+        progress.bytes = progress.rows * row_bytes;
+        if (!budget.check(progress)) return {};
       }
     }
-    keepMinimal(next);
+    if (!keepMinimal(next, budget, progress)) return {};
     if (next.size() > max_rows) {
-      complete = false;
+      budget.halt(ExploreStop::Candidates);
       return {};
     }
     rows = std::move(next);
@@ -171,7 +215,7 @@ bool covers(const std::vector<Invariant>& invs, std::size_t n) {
 /// in its column, for y·C <= 0), computed slot by slot: a token of slot b0 stays a b0 token,
 /// so the place slots of one slot are a system of their own. Slack rows are numbered after
 /// the place slots.
-std::vector<Invariant> slotwise(const Net& net, const Matrix& c, bool slack, std::size_t max_rows, bool& complete) {
+std::vector<Invariant> slotwise(const Net& net, const Matrix& c, bool slack, Budget& budget) {
   const std::size_t places = net.placeSlots().size();
   const std::size_t transitions = net.transitions().size();
   std::map<SlotId, std::vector<std::uint32_t>> groups;
@@ -186,7 +230,7 @@ std::vector<Invariant> slotwise(const Net& net, const Matrix& c, bool slack, std
         a.back()[t] = 1;
       }
     }
-    for (Invariant inv : semiflows(a, transitions, max_rows, complete)) {
+    for (Invariant inv : semiflows(a, transitions, budget)) {
       for (auto& [k, w] : inv.weights) {
         k = k < members.size() ? members[k] : static_cast<std::uint32_t>(places + (k - members.size()));
       }
@@ -217,28 +261,37 @@ Invariants invariants(const Net& net, const InvariantOptions& options) {
   Invariants out;
   const std::size_t places = net.placeSlots().size();
   const std::size_t transitions = net.transitions().size();
+  out.bound.assign(places, -1);
+  Budget budget(options);
+  // the dense incidence matrix and its transpose, within the memory limit
+  const std::uint64_t matrix_bytes = 2 * static_cast<std::uint64_t>(places) * transitions * sizeof(std::int64_t);
+  if (options.max_bytes != 0 && matrix_bytes > options.max_bytes) {
+    out.complete = false;
+    out.stop = ExploreStop::MaxMemory;
+    return out;
+  }
   const Matrix c = incidenceMatrix(net);
-  out.p = slotwise(net, c, false, options.max_candidates, out.complete);
+  out.p = slotwise(net, c, false, budget);
   Matrix ct(transitions, std::vector<std::int64_t>(places, 0));
   for (std::size_t ps = 0; ps < places; ++ps) {
     for (std::size_t t = 0; t < transitions; ++t) ct[t][ps] = c[ps][t];
   }
-  out.t = semiflows(ct, places, options.max_candidates, out.complete);
+  out.t = semiflows(ct, places, budget);
   out.conservative = covers(out.p, places);
   out.consistent = covers(out.t, transitions);
 
   // y·C <= 0: the semiflows of C with one slack row per transition
   std::vector<Invariant> bounding = out.p;
   if (!out.conservative) {
-    bool ok = true;
-    bounding = slotwise(net, c, true, options.max_candidates, ok);
-    out.complete = out.complete && ok;
-    out.structurally_bounded = ok && covers(bounding, places);
+    const ExploreStop before = budget.stop();
+    bounding = slotwise(net, c, true, budget);
+    out.structurally_bounded = budget.stop() == before && covers(bounding, places);
   } else {
     out.structurally_bounded = true;
   }
+  out.stop = budget.stop();
+  out.complete = out.stop == ExploreStop::Done;
   // y·M <= y·M0 in every reachable marking M, so M(p) <= y·M0 / y(p)
-  out.bound.assign(places, -1);
   for (const auto& inv : bounding) {
     std::int64_t total = 0;
     bool ok = true;
@@ -354,10 +407,13 @@ std::optional<std::pair<double, std::vector<TransitionId>>> longestCircuit(const
 
 }  // namespace
 
-std::vector<CycleBound> cycleBounds(const Net& net, const Invariants& invariants, std::span<const double> seconds) {
+std::vector<CycleBound> cycleBounds(const Net& net, const Invariants& invariants, std::span<const double> seconds,
+                                    const InvariantOptions& options, ExploreStop* stop) {
   std::vector<CycleBound> out;
   std::vector<std::int64_t> y(net.placeSlots().size());
+  Budget budget(options);
   for (std::size_t i = 0; i < invariants.p.size(); ++i) {
+    if (!budget.check({i, invariants.p.size(), out.size(), 0})) break;
     std::fill(y.begin(), y.end(), 0);
     CycleBound b;
     b.invariant = i;
@@ -388,6 +444,7 @@ std::vector<CycleBound> cycleBounds(const Net& net, const Invariants& invariants
     out.push_back(std::move(b));
   }
   std::stable_sort(out.begin(), out.end(), [](const CycleBound& x, const CycleBound& z) { return x.seconds > z.seconds; });
+  if (stop) *stop = budget.stop();
   return out;
 }
 

@@ -178,6 +178,7 @@ class Parallel {
           options_.progress({states, edges, b});
         }
         if (options_.max_bytes != 0 && b > options_.max_bytes) halt(ExploreStop::MaxMemory);
+        if (options_.deadline && std::chrono::steady_clock::now() >= *options_.deadline) halt(ExploreStop::TimeLimit);
       }
       if (s.work.empty() && batch.empty()) {
         for (unsigned to = 0; to < threads_; ++to) flush(to);

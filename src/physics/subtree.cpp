@@ -12,9 +12,7 @@ using scene::NodeKind;
 
 const Node* World::Impl::materialAt(const Node& node) {
   for (const Node* n = &node; n->parent(); n = n->parent()) {
-    for (const Node* sib = n->prev(); sib; sib = sib->prev()) {
-      if (sib->kind() == NodeKind::Material) return sib;
-    }
+    if (const Node* sib = n->previous(NodeKind::Material)) return sib;
   }
   return nullptr;
 }

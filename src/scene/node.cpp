@@ -1,6 +1,7 @@
 #include "gdpn/scene/node.h"
 
 #include <algorithm>
+#include <charconv>
 
 #include "gdpn/core/assert.h"
 
@@ -21,14 +22,7 @@ Node::Node(const NodeType& type, std::string name) : type_(&type), name_(std::mo
   field_locs.resize(type.fields.size());
 }
 
-std::size_t Node::index() const {
-  if (!parent_) return 0;
-  const auto& sib = parent_->children_;
-  for (std::size_t i = 0; i < sib.size(); ++i) {
-    if (sib[i].get() == this) return i;
-  }
-  return 0;
-}
+std::size_t Node::index() const { return parent_ ? index_ : 0; }
 
 std::string Node::path() const {
   if (!parent_) return {};
@@ -47,10 +41,8 @@ Node* Node::child(std::string_view name) const {
     }
     return i < children_.size() && name.size() > 1 ? children_[i].get() : nullptr;
   }
-  for (const auto& c : children_) {
-    if (c->name_ == name) return c.get();
-  }
-  return nullptr;
+  const auto it = by_name_.find(name);
+  return it == by_name_.end() ? nullptr : it->second;
 }
 
 Node* Node::find(std::string_view path) const {
@@ -74,6 +66,17 @@ Node* Node::next() const {
   if (!parent_) return nullptr;
   const auto i = index();
   return i + 1 < parent_->children_.size() ? parent_->children_[i + 1].get() : nullptr;
+}
+
+Node* Node::previous(NodeKind kind) const {
+  if (!parent_) return nullptr;
+  for (const auto& [k, nodes] : parent_->by_kind_) {
+    if (k != kind) continue;
+    // the last of that kind with a smaller index
+    auto it = std::lower_bound(nodes.begin(), nodes.end(), index_, [](const Node* n, std::size_t i) { return n->index_ < i; });
+    return it == nodes.begin() ? nullptr : *std::prev(it);
+  }
+  return nullptr;
 }
 
 bool Node::is(NodeKind kind) const {
@@ -181,16 +184,50 @@ Node* Scene::create(const NodeType& type, std::string name, Node& parent) {
   if (!name.empty() && parent.child(name)) return nullptr;
   std::unique_ptr<Node> node(new Node(type, std::move(name)));
   node->parent_ = &parent;
+  node->index_ = parent.children_.size();
   enroll(*node);
+  if (!node->name_.empty()) parent.by_name_.emplace(node->name_, node.get());
+  auto kind = std::find_if(parent.by_kind_.begin(), parent.by_kind_.end(), [&](const auto& k) { return k.first == type.kind; });
+  if (kind == parent.by_kind_.end()) kind = parent.by_kind_.insert(kind, {type.kind, {}});
+  kind->second.push_back(node.get());
   parent.children_.push_back(std::move(node));
   return parent.children_.back().get();
+}
+
+std::string Scene::freshName(Node& parent, std::string_view base) {
+  const auto hint = parent.next_number_.try_emplace(std::string(base), 1).first;
+  std::string name;
+  for (;; ++hint->second) {
+    name.assign(base);
+    name += '_';
+    name += std::to_string(hint->second);
+    if (!parent.child(name)) return name;
+  }
 }
 
 void Scene::destroy(Node& node) {
   GDPN_ASSERT(node.parent_ != nullptr, "the root is not destroyed");
   release(node);
-  auto& sib = node.parent_->children_;
-  sib.erase(std::find_if(sib.begin(), sib.end(), [&](const auto& c) { return c.get() == &node; }));
+  Node& parent = *node.parent_;
+  // a freed "base_k" lowers base's next number to k
+  const auto us = node.name_.rfind('_');
+  if (us != std::string::npos && us + 1 < node.name_.size()) {
+    if (auto hint = parent.next_number_.find(node.name_.substr(0, us)); hint != parent.next_number_.end()) {
+      std::uint64_t k = 0;
+      const char* last = node.name_.data() + node.name_.size();
+      const auto [end, error] = std::from_chars(node.name_.data() + us + 1, last, k);
+      if (error == std::errc() && end == last && k >= 1) hint->second = std::min(hint->second, k);
+    }
+  }
+  if (!node.name_.empty()) parent.by_name_.erase(node.name_);
+  for (auto& [kind, nodes] : parent.by_kind_) {
+    if (kind == node.kind()) nodes.erase(std::find(nodes.begin(), nodes.end(), &node));
+  }
+  auto& sib = parent.children_;
+  const std::size_t at = node.index_;
+  GDPN_ASSERT(at < sib.size() && sib[at].get() == &node, "a node knows its index among its siblings");
+  sib.erase(sib.begin() + static_cast<std::ptrdiff_t>(at));
+  for (std::size_t i = at; i < sib.size(); ++i) sib[i]->index_ = i;
 }
 
 Node* Scene::copy(const Node& source, Node& parent, std::string name) {

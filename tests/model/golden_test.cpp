@@ -11,34 +11,20 @@
 #include <fstream>
 #include <sstream>
 
+#include "support/cli.h"
 #include "support/scratch.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int code = -1;
-  std::string out;  // stdout and stderr together
-};
+using Result = gdpn::testing::CliResult;
 
 /// Runs `commands` (a shell line that calls "$GDPN") in the source folder.
-Result shell(const std::string& commands) {
-  const std::string cmd = std::string("cd '") + GDPN_SOURCE_DIR + "' && GDPN='" + GDPN_CLI + "' && { " + commands +
-                          "; } 2>&1";
-  Result r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf{};
-  std::size_t n = 0;
-  while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
-  const int status = pclose(pipe);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+Result shell(const std::string& commands) { return gdpn::testing::runShell(commands); }
 
 /// Runs gdpn with `args` (shell words) in the source folder.
-Result gdpn(const std::string& args) { return shell("\"$GDPN\" " + args); }
+Result gdpn(const std::string& args) { return gdpn::testing::runGdpn(args); }
 
 std::string temp(const std::string& name) { return (fs::temp_directory_path() / name).string(); }
 

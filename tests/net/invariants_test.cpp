@@ -236,3 +236,79 @@ TEST(CycleBounds, TwoTokensKeepTheSum) {
 
 }  // namespace
 }  // namespace gdpn::net
+
+namespace gdpn::net {
+namespace {
+
+/// k places p_i emptied into k places q_j by one transition: the k^2 minimal P-invariants
+/// p_i + q_j all appear in one elimination step, and keeping the minimal ones among them is
+/// quadratic in k^2 (for k = 280, minutes without a limit).
+std::shared_ptr<const Net> fan(int k) {
+  NetBuilder b;
+  const auto t = b.addTransition("t");
+  for (int i = 0; i < k; ++i) {
+    const auto p = b.addPlace("p" + std::to_string(i));
+    b.setSlot(p, kDefaultSlot, SlotKind::Control, kUnbounded, 1);
+    b.addInput(p, t);
+  }
+  for (int i = 0; i < k; ++i) {
+    const auto q = b.addPlace("q" + std::to_string(i));
+    b.setSlot(q, kDefaultSlot, SlotKind::Control, kUnbounded, 0);
+    b.addOutput(t, q);
+  }
+  return b.freeze();
+}
+
+TEST(InvariantLimits, AnExplodingComputationStopsAtItsDeadlineAndSaysSo) {
+  const auto net = fan(280);
+  InvariantOptions options;
+  options.deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(200);
+  std::size_t reports = 0;
+  options.progress = [&](const InvariantProgress& p) {
+    ++reports;
+    EXPECT_LE(p.rows, 4 * options.max_candidates);
+  };
+  const Invariants inv = invariants(*net, options);
+  EXPECT_FALSE(inv.complete);
+  EXPECT_EQ(inv.stop, ExploreStop::TimeLimit);
+  EXPECT_STREQ(stopReason(inv.stop), "partial: --time-limit reached");
+  EXPECT_GT(reports, 0u);
+}
+
+TEST(InvariantLimits, MemoryAndCandidateLimitsStopItToo) {
+  const auto net = fan(280);
+  InvariantOptions options;
+  options.max_bytes = 1 << 20;
+  Invariants inv = invariants(*net, options);
+  EXPECT_FALSE(inv.complete);
+  EXPECT_EQ(inv.stop, ExploreStop::MaxMemory);
+  options = {};
+  options.max_candidates = 100;
+  inv = invariants(*net, options);
+  EXPECT_FALSE(inv.complete);
+  EXPECT_EQ(inv.stop, ExploreStop::Candidates);
+  // small enough: all k^2 of them
+  inv = invariants(*fan(6));
+  EXPECT_TRUE(inv.complete);
+  EXPECT_EQ(inv.stop, ExploreStop::Done);
+  EXPECT_EQ(inv.p.size(), 36u);
+}
+
+TEST(InvariantLimits, TheStateSpaceStopsAtItsDeadline) {
+  // a ring of 40 places, 20 tokens: far too many markings to list in no time
+  NetBuilder b;
+  for (int i = 0; i < 40; ++i) b.setSlot(b.addPlace("p" + std::to_string(i)), kDefaultSlot, SlotKind::Control, kUnbounded, i % 2);
+  for (int i = 0; i < 40; ++i) {
+    const auto t = b.addTransition("t" + std::to_string(i));
+    b.addInput(static_cast<PlaceId>(i), t);
+    b.addOutput(t, static_cast<PlaceId>((i + 1) % 40));
+  }
+  ExploreOptions options;
+  options.deadline = std::chrono::steady_clock::now();
+  const StateSpace s = explore(*b.freeze(), options);
+  EXPECT_FALSE(s.complete);
+  EXPECT_EQ(s.stop, ExploreStop::TimeLimit);
+}
+
+}  // namespace
+}  // namespace gdpn::net

@@ -3,8 +3,10 @@
 /// `gdpn analyze`: the state space, the invariants and the cycle-time bounds of a net,
 /// gathered once and printed as text or JSON.
 
+#include <functional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gdpn/net/analysis.h"
@@ -12,10 +14,15 @@
 
 namespace gdpn::model {
 
-/// What to compute.
+/// What to compute. The state space's limits bound every phase: max_states also caps the
+/// invariants' candidate rows, max_bytes their memory, and the time limit runs over all of
+/// them together.
 struct AnalysisOptions {
   net::ExploreOptions explore;  ///< limits and progress of the state-space search
   double dt = 0.0;              ///< the model's step, seconds; 0 for a net without one (PNML)
+  double time_limit_s = 0.0;    ///< stop every phase this many seconds after the start (partial answer); 0: none
+  /// Progress of the invariants and cycle-time phases: the phase's name and how far it is.
+  std::function<void(const char* phase, const net::InvariantProgress&)> progress;
 };
 
 /// Everything `gdpn analyze` reports.
@@ -24,7 +31,16 @@ struct Analysis {
   net::StateSpace space;                ///< the reachability (or coverability) graph
   net::Invariants invariants;           ///< P- and T-invariants, structural properties
   std::vector<net::CycleBound> cycles;  ///< cycle-time bounds, largest first (timed nets only)
+  net::ExploreStop cycles_stop = net::ExploreStop::Done;  ///< why the cycle-time bounds stopped early
+  /// True when every phase finished.
+  [[nodiscard]] bool complete() const {
+    return space.complete && invariants.complete && cycles_stop == net::ExploreStop::Done;
+  }
 };
+
+/// The phases that a limit stopped ("invariants", "cycle times", "state space") and why, in
+/// the order they ran; empty when the analysis is complete.
+std::vector<std::pair<std::string, net::ExploreStop>> stoppedPhases(const Analysis& analysis);
 
 /// Each transition's duration as the simulation sees it, seconds: fixed durations rounded to
 /// whole steps of `dt` (one step at least), drawn ones by their mean. With dt = 0, as written.

@@ -5,8 +5,10 @@
 /// reachability graph (a coverability graph with ω when the net is unbounded) and the
 /// behavioural properties read off it.
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,14 +33,20 @@ struct ExploreOptions {
   unsigned threads = 1;
   /// Called every 4,096 new states; may be empty.
   std::function<void(const ExploreProgress&)> progress;
+  /// Stop (partial answer) at this moment; none when empty. The invariants that size the
+  /// markings are computed under the same limit.
+  std::optional<std::chrono::steady_clock::time_point> deadline;
 };
 
-/// Why an exploration ended before the whole graph was seen.
+/// Why a phase of analysis (the exploration, the invariants, the cycle-time bounds) ended
+/// before its whole answer was found.
 enum class ExploreStop : std::uint8_t {
-  Done,       ///< complete
-  MaxStates,  ///< ExploreOptions::max_states reached
-  MaxMemory,  ///< ExploreOptions::max_bytes reached
-  Overflow,   ///< a count went past 2^32 - 2 tokens in a place that no invariant bounds
+  Done,        ///< complete
+  MaxStates,   ///< ExploreOptions::max_states reached
+  MaxMemory,   ///< ExploreOptions::max_bytes reached
+  Overflow,    ///< a count went past 2^32 - 2 tokens in a place that no invariant bounds (invariants: past 2^63)
+  TimeLimit,   ///< the deadline passed
+  Candidates,  ///< invariants: too many candidate rows (InvariantOptions::max_candidates)
 };
 
 /// Marks a place bound of ω: the place is unbounded.
@@ -73,7 +81,7 @@ struct StateSpace {
 /// during the depth-first search, so no edge is stored.
 StateSpace explore(const Net& net, const ExploreOptions& options = {});
 
-/// A word for why a search stopped ("complete", "--max-states reached", ...).
+/// A word for why a phase stopped ("complete", "partial: --max-states reached", ...).
 const char* stopReason(ExploreStop stop);
 
 }  // namespace gdpn::net

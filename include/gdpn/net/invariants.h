@@ -8,10 +8,12 @@
 /// per place they are all the minimal ones; invariants that mix slots are not listed.
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <utility>
 #include <vector>
 
+#include "gdpn/net/analysis.h"
 #include "gdpn/net/net.h"
 
 namespace gdpn::net {
@@ -21,14 +23,28 @@ struct Invariant {
   std::vector<std::pair<std::uint32_t, std::int64_t>> weights;  ///< (index, weight > 0), sorted
 };
 
-/// Limits of the invariant computation.
+/// How far the invariant computation has got; passed to InvariantOptions::progress.
+struct InvariantProgress {
+  std::size_t round = 0;    ///< columns eliminated so far in the current system
+  std::size_t columns = 0;  ///< columns the current system has
+  std::size_t rows = 0;     ///< candidate rows now
+  std::uint64_t bytes = 0;  ///< memory the rows hold now, bytes
+};
+
+/// Limits of the invariant computation (and of the cycle-time bounds).
 struct InvariantOptions {
   std::size_t max_candidates = 20'000;  ///< give up (partial answer) past this many rows
+  std::uint64_t max_bytes = 0;          ///< give up (partial answer) past this much memory, bytes; 0: none
+  /// Give up (partial answer) at this moment; none when empty.
+  std::optional<std::chrono::steady_clock::time_point> deadline;
+  /// Called now and then (at least every few thousand candidate rows); may be empty.
+  std::function<void(const InvariantProgress&)> progress;
 };
 
 /// What the incidence matrix says.
 struct Invariants {
   bool complete = true;                ///< false when a limit or 64-bit overflow stopped it
+  ExploreStop stop = ExploreStop::Done;  ///< why it stopped (Candidates, MaxMemory, TimeLimit, Overflow)
   std::vector<Invariant> p;            ///< minimal semi-positive P-invariants: y·C = 0
   std::vector<Invariant> t;            ///< minimal semi-positive T-invariants: C·x = 0
   bool conservative = false;           ///< some y > 0 on every place slot has y·C = 0
@@ -62,7 +78,10 @@ struct CycleBound {
 /// net cannot repeat faster than the first one's `seconds`. Where one token runs through a
 /// state machine with choices (a cell that either skips a box or works on it), each choice
 /// is a conflict-free circuit of its own and the bound is the longest circuit's duration.
-std::vector<CycleBound> cycleBounds(const Net& net, const Invariants& invariants, std::span<const double> seconds);
+/// With `options`, it gives up at the deadline and says so in `stop` (when given); the bounds
+/// found so far are returned.
+std::vector<CycleBound> cycleBounds(const Net& net, const Invariants& invariants, std::span<const double> seconds,
+                                    const InvariantOptions& options = {}, ExploreStop* stop = nullptr);
 
 /// The mean of a duration, seconds.
 double meanSeconds(const Duration& duration);

@@ -8,6 +8,8 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "gdpn/core/diagnostics.h"
@@ -39,14 +41,17 @@ class Node {
   /// Its path from the root: names joined by '/', "#i" for an unnamed node (its index among
   /// its siblings). The root's path is "".
   [[nodiscard]] std::string path() const;
-  /// The child called `name` (or "#i"), or null.
+  /// The child called `name` (or "#i"), or null. Constant time.
   [[nodiscard]] Node* child(std::string_view name) const;
   /// The node at `path` below this one ("a/b/#0"), or null. ".." goes up a level.
   [[nodiscard]] Node* find(std::string_view path) const;
   /// The sibling before or after this one, or null.
   [[nodiscard]] Node* prev() const;
   [[nodiscard]] Node* next() const;
-  /// This node's index among its siblings.
+  /// The nearest sibling before this one whose kind is exactly `kind`, or null. Logarithmic
+  /// in the number of such siblings.
+  [[nodiscard]] Node* previous(NodeKind kind) const;
+  /// This node's index among its siblings. Constant time.
   [[nodiscard]] std::size_t index() const;
 
   /// Its kind (its type's).
@@ -122,6 +127,13 @@ class Node {
   std::vector<std::unique_ptr<Node>> children_;
   std::vector<FieldValue> values_;
   NodeHandle handle_ = 0;
+  std::size_t index_ = 0;  // among the parent's children
+  // the named children by name (the keys view the children's own names)
+  std::unordered_map<std::string_view, Node*> by_name_;
+  // the children of each kind present, in order (previous())
+  std::vector<std::pair<NodeKind, std::vector<Node*>>> by_kind_;
+  // per base name: no child is free among base_1 .. base_(k-1) (Scene::freshName)
+  std::unordered_map<std::string, std::uint64_t> next_number_;
 };
 
 /// A tree of nodes with a root Group.
@@ -139,6 +151,9 @@ class Scene {
   /// Adds a new node of `type` named `name` as the last child of `parent`. Returns null when
   /// `parent` takes no children or already has a child of that name.
   Node* create(const NodeType& type, std::string name, Node& parent);
+  /// "base_k" with the smallest k >= 1 that no child of `parent` is called; amortised
+  /// constant time over a run of calls, each followed by the creation of that child.
+  [[nodiscard]] std::string freshName(Node& parent, std::string_view base);
   /// Removes `node` and its subtree (not the root); their handles stop resolving.
   void destroy(Node& node);
   /// Copies the subtree at `source` (from any scene with the same types) under `parent`,

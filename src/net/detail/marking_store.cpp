@@ -57,10 +57,15 @@ Fired fireInto(const Net& net, const Layout& layout, TransitionId t, const std::
   return Fired::Ok;
 }
 
-Plan plan(const Net& net) {
-  // field sizes from the invariants' bounds; the others start small and widen when needed
+Plan plan(const Net& net, const ExploreOptions& options) {
+  // field sizes from the invariants' bounds (under the search's limits); the others start
+  // small and widen when needed
   const std::size_t width = net.placeSlots().size();
-  const Invariants inv = invariants(net, {2'000});
+  InvariantOptions limits;
+  limits.max_candidates = 2'000;
+  limits.max_bytes = options.max_bytes;
+  limits.deadline = options.deadline;
+  const Invariants inv = invariants(net, limits);
   Plan p;
   p.bits.assign(width, 1);
   p.omega.assign(width, false);

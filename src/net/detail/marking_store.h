@@ -227,7 +227,7 @@ struct Plan {
   bool cover = false;                ///< some place slot has no bound: watch for ω
   bool overflow = false;             ///< an initial count is beyond what a field holds
 };
-Plan plan(const Net& net);
+Plan plan(const Net& net, const ExploreOptions& options);
 
 /// The lowest and highest count of each place slot, and the largest marking, over the
 /// markings noted.
