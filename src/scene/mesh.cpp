@@ -141,18 +141,27 @@ std::size_t plyTypeBytes(const std::string& type) {
   return it == kBytes.end() ? 0 : it->second;
 }
 
-/// True when every element a PLY header declares fits in the bytes after the header: a count
-/// of two billion with a few bytes of data is refused before the importer allocates for it.
-bool plyCountsFit(const std::string& text, std::string& why) {
+/// A PLY file's layout as its header gives it.
+struct PlyLayout {
+  struct Property {
+    std::size_t bytes = 0;        // of a scalar, or of each list entry (binary; 0 when unknown)
+    std::size_t count_bytes = 0;  // of a list's count (binary), 0 for a scalar
+    bool list = false;
+  };
   struct Element {
     std::string name;
     std::uintmax_t count = 0;
-    std::uintmax_t bytes = 0;  // the least one item takes
-    std::size_t at = 0;
+    std::size_t at = 0;  // where the header declares it
+    std::vector<Property> properties;
   };
   std::vector<Element> elements;
-  bool ascii = true;
-  std::size_t pos = 0, body = std::string::npos;
+  enum class Format { Ascii, Little, Big } format = Format::Ascii;
+  std::size_t body = std::string::npos;  // where the data begin, npos without end_header
+};
+
+PlyLayout plyLayout(const std::string& text) {
+  PlyLayout ply;
+  std::size_t pos = 0;
   // a header is short: look no further than its first MiB
   while (pos < std::min<std::size_t>(text.size(), std::size_t{1} << 20)) {
     auto end = text.find('\n', pos);
@@ -162,35 +171,98 @@ bool plyCountsFit(const std::string& text, std::string& why) {
     line >> word;
     if (word == "format") {
       line >> word;
-      ascii = word == "ascii";
+      ply.format = word == "binary_little_endian" ? PlyLayout::Format::Little
+                   : word == "binary_big_endian"  ? PlyLayout::Format::Big
+                                                  : PlyLayout::Format::Ascii;
     } else if (word == "element") {
-      Element e;
+      PlyLayout::Element e;
       e.at = pos;
       line >> e.name >> e.count;
-      elements.push_back(e);
-    } else if (word == "property" && !elements.empty()) {
-      std::string type, count_type;
+      ply.elements.push_back(e);
+    } else if (word == "property" && !ply.elements.empty()) {
+      PlyLayout::Property p;
+      std::string type;
       line >> type;
-      // a list takes at least its count; a scalar its size; text at least a digit and a space
-      if (type == "list") line >> count_type;
-      elements.back().bytes += ascii ? 2 : std::max<std::size_t>(1, plyTypeBytes(type == "list" ? count_type : type));
+      if (type == "list") {
+        std::string count_type;
+        line >> count_type >> type;
+        p.list = true;
+        p.count_bytes = plyTypeBytes(count_type);
+      }
+      p.bytes = plyTypeBytes(type);
+      ply.elements.back().properties.push_back(p);
     } else if (word == "end_header") {
-      body = end + 1;
+      ply.body = end + 1;
       break;
     }
     pos = end + 1;
   }
-  if (body == std::string::npos) return true;  // the importer says what is wrong
-  const std::uintmax_t have = text.size() > body ? text.size() - body : 0;
-  std::uintmax_t need = 0;
-  for (const auto& e : elements) {
-    const std::uintmax_t item = std::max<std::uintmax_t>(1, e.bytes);
-    if (e.count > have / item || need + e.count * item > have) {
+  return ply;
+}
+
+/// True when the data of a PLY file hold what its header and its list counts declare: a count
+/// of two billion with a few bytes of data is refused before the importer allocates for it.
+/// Walks the data once without keeping them.
+bool plyCountsFit(const std::string& text, std::string& why) {
+  const PlyLayout ply = plyLayout(text);
+  if (ply.body == std::string::npos || ply.body > text.size()) return true;  // the importer says what is wrong
+  const bool ascii = ply.format == PlyLayout::Format::Ascii;
+  const std::size_t have = text.size() - ply.body;
+  // each element first: it takes at least a byte per property (two as text)
+  std::uintmax_t least = 0;
+  for (const auto& e : ply.elements) {
+    const std::uintmax_t item = std::max<std::uintmax_t>(1, e.properties.size() * (ascii ? 2 : 1));
+    if (e.count > have / item || least + e.count * item > have) {
       why = placeIn(text, e.at) + ": element '" + e.name + "' declares " + std::to_string(e.count) +
             " items, more than the " + std::to_string(have) + " bytes after the header can hold";
       return false;
     }
-    need += e.count * item;
+    least += e.count * item;
+  }
+  // then every list: its count must fit in what is left
+  std::size_t pos = ply.body;
+  auto skipSpace = [&] {
+    while (pos < text.size() && std::isspace(static_cast<unsigned char>(text[pos]))) ++pos;
+  };
+  auto listTooLong = [&](std::size_t at, std::uintmax_t count, const PlyLayout::Element& e) {
+    why = (ascii ? placeIn(text, at) : "byte " + std::to_string(at)) + ": a list of element '" + e.name +
+          "' declares " + std::to_string(count) + " entries, more than the rest of the file holds";
+    return false;
+  };
+  for (const auto& e : ply.elements) {
+    for (std::uintmax_t i = 0; i < e.count; ++i) {
+      for (const auto& p : e.properties) {
+        if (ascii) {
+          skipSpace();
+          const std::size_t at = pos;
+          while (pos < text.size() && !std::isspace(static_cast<unsigned char>(text[pos]))) ++pos;
+          if (!p.list) continue;
+          const std::uintmax_t count = std::strtoull(text.substr(at, pos - at).c_str(), nullptr, 10);
+          if (count > (text.size() - pos) / 2) return listTooLong(at, count, e);
+          for (std::uintmax_t k = 0; k < count; ++k) {
+            skipSpace();
+            while (pos < text.size() && !std::isspace(static_cast<unsigned char>(text[pos]))) ++pos;
+          }
+          continue;
+        }
+        if (p.bytes == 0 || (p.list && p.count_bytes == 0)) return true;  // an unknown type: the importer says
+        if (!p.list) {
+          pos += p.bytes;
+          continue;
+        }
+        if (text.size() - std::min(pos, text.size()) < p.count_bytes) return true;  // truncated: the importer says
+        std::uintmax_t count = 0;
+        for (std::size_t k = 0; k < p.count_bytes; ++k) {
+          const std::size_t byte = ply.format == PlyLayout::Format::Little ? p.count_bytes - 1 - k : k;
+          count = (count << 8) | static_cast<unsigned char>(text[pos + byte]);
+        }
+        const std::size_t at = pos;
+        pos += p.count_bytes;
+        if (count > (text.size() - pos) / p.bytes) return listTooLong(at, count, e);
+        pos += static_cast<std::size_t>(count) * p.bytes;
+      }
+      if (pos > text.size()) return true;  // truncated: the importer says
+    }
   }
   return true;
 }
