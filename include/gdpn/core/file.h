@@ -17,6 +17,19 @@ std::uintmax_t maxInputBytes();
 /// Sets the largest input file gdpn reads, in bytes (tests lower it); returns the one before.
 std::uintmax_t setMaxInputBytes(std::uintmax_t bytes);
 
+/// Lowers (or raises) maxInputBytes() while it lives, then puts the one before back.
+class InputLimit {
+ public:
+  /// Sets the limit to `bytes`.
+  explicit InputLimit(std::uintmax_t bytes) : before_(setMaxInputBytes(bytes)) {}
+  InputLimit(const InputLimit&) = delete;
+  InputLimit& operator=(const InputLimit&) = delete;
+  ~InputLimit() { setMaxInputBytes(before_); }
+
+ private:
+  std::uintmax_t before_;
+};
+
 /// The size in bytes of the regular file at `path` when it is one of at most maxInputBytes();
 /// otherwise nullopt and `why` says what it is instead ("no such file", "is a FIFO, not a
 /// regular file", "is 300 MiB; gdpn reads input files of at most 256 MiB").
