@@ -486,30 +486,17 @@ bool readWithCoin(const std::string& path, MeshData& mesh, std::string& why) {
 
 }  // namespace
 
-std::shared_ptr<const MeshData> loadMesh(const std::string& path, std::string& why) {
-  namespace fs = std::filesystem;
+std::shared_ptr<const MeshData> readMesh(const std::string& path, std::string& why) {
+  // Coin reports through globals and neither library promises to be reentrant: one read at a time
   static std::mutex mutex;
-  struct Entry {
-    fs::file_time_type time;
-    std::uintmax_t size = 0;
-    std::shared_ptr<const MeshData> mesh;
-  };
-  static std::map<std::string, Entry> cache;
-
-  const auto size = core::inputFileSize(path, why);
-  if (!size) return nullptr;
+  if (!core::inputFileSize(path, why)) return nullptr;
   const std::string ext = extensionOf(path);
   if (!isMeshFile(path)) {
     why = "unsupported mesh format '" + ext + "' (gdpn reads obj, stl, 3ds, gltf, glb, dae, ply, wrl, iv)";
     return nullptr;
   }
   const bool coin = ext == ".wrl" || ext == ".iv";
-  std::error_code ec;
-  const auto time = fs::last_write_time(path, ec);
   std::lock_guard lock(mutex);
-  if (auto it = cache.find(path); it != cache.end() && it->second.time == time && it->second.size == *size) {
-    return it->second.mesh;
-  }
   if (!precheck(path, ext, why)) return nullptr;
   auto mesh = std::make_shared<MeshData>();
   mesh->path = path;
@@ -528,7 +515,29 @@ std::shared_ptr<const MeshData> loadMesh(const std::string& path, std::string& w
       }
     }
   }
-  cache[path] = {time, *size, mesh};
+  return mesh;
+}
+
+std::shared_ptr<const MeshData> loadMesh(const std::string& path, std::string& why) {
+  namespace fs = std::filesystem;
+  static std::mutex mutex;
+  struct Entry {
+    fs::file_time_type time;
+    std::uintmax_t size = 0;
+    std::shared_ptr<const MeshData> mesh;
+  };
+  static std::map<std::string, Entry> cache;
+
+  const auto size = core::inputFileSize(path, why);
+  if (!size) return nullptr;
+  std::error_code ec;
+  const auto time = fs::last_write_time(path, ec);
+  std::lock_guard lock(mutex);
+  if (auto it = cache.find(path); it != cache.end() && it->second.time == time && it->second.size == *size) {
+    return it->second.mesh;
+  }
+  auto mesh = readMesh(path, why);
+  if (mesh) cache[path] = {time, *size, mesh};
   return mesh;
 }
 

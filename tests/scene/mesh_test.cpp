@@ -248,6 +248,19 @@ TEST_F(MeshImport, BadFilesGiveTheImportersReason) {
   EXPECT_FALSE(why.empty());
 }
 
+TEST(MeshSeeds, EveryFormatReadsOneTriangle) {
+  // the fuzzer's seeds: one triangle in each format gdpn reads
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(fs::path(GDPN_SOURCE_DIR) / "tests/data/meshes")) {
+    std::string why;
+    auto m = readMesh(e.path().string(), why);
+    ASSERT_TRUE(m) << e.path() << ": " << why;
+    EXPECT_EQ(m->triangles(), 1u) << e.path();
+    ++files;
+  }
+  EXPECT_EQ(files, 11);
+}
+
 // --- hostile files: each is refused with the place in the file, quickly, without a crash ---
 
 /// Loads `path`, expecting a refusal within a few seconds; returns the reason.
