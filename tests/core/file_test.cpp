@@ -6,9 +6,9 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
-#include <chrono>
 #include <filesystem>
-#include <fstream>
+
+#include "support/temp_files.h"
 
 namespace gdpn::core {
 namespace {
@@ -17,29 +17,13 @@ namespace fs = std::filesystem;
 
 /// Reads `path` expecting a refusal within a few seconds; the one diagnostic as printed.
 std::string refusal(const std::string& path) {
-  const auto start = std::chrono::steady_clock::now();
   Diagnostics diags;
-  EXPECT_FALSE(readFile(path, diags)) << path;
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0) << path;
+  EXPECT_LT(testing::secondsFor([&] { EXPECT_FALSE(readFile(path, diags)) << path; }), 5.0) << path;
   EXPECT_EQ(diags.errorCount(), 1u) << diags.str();
   return diags.str();
 }
 
-class FileRead : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("gdpn_file_test_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string write(const std::string& name, const std::string& bytes) {
-    const auto path = (dir_ / name).string();
-    std::ofstream(path, std::ios::binary) << bytes;
-    return path;
-  }
-  fs::path dir_;
-};
+class FileRead : public testing::TempDirTest {};
 
 TEST_F(FileRead, ARegularFileIsReadWhole) {
   Diagnostics diags;

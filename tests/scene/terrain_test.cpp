@@ -5,39 +5,34 @@
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
-#include <chrono>
 #include <filesystem>
-#include <fstream>
 
 #include "gdpn/core/file.h"
+#include "support/temp_files.h"
 
 namespace gdpn::scene {
 namespace {
 
 namespace fs = std::filesystem;
 
+class TerrainFile : public testing::TempDirTest {};
+
+/// The reason loadHeightGrid refuses `path` for, which it must give within seconds.
 std::string refusal(const std::string& path) {
-  const auto start = std::chrono::steady_clock::now();
   std::string why;
-  EXPECT_FALSE(loadHeightGrid(path, why)) << path;
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0) << path;
+  EXPECT_LT(testing::secondsFor([&] { EXPECT_FALSE(loadHeightGrid(path, why)) << path; }), 5.0) << path;
   return why;
 }
 
-TEST(TerrainFile, OnlyRegularFilesWithinTheLimitReachGdal) {
+TEST_F(TerrainFile, OnlyRegularFilesWithinTheLimitReachGdal) {
   EXPECT_EQ(refusal("/dev/zero"), "is a character device, not a regular file");
-  const auto dir = fs::temp_directory_path() / ("gdpn_terrain_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const auto fifo = (dir / "pipe.tif").string();
+  const auto fifo = (dir_ / "pipe.tif").string();
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   EXPECT_EQ(refusal(fifo), "is a FIFO, not a regular file");
-  const auto big = (dir / "big.tif").string();
-  std::ofstream{big};
+  const auto big = write("big.tif", "");
   fs::resize_file(big, std::uintmax_t{1} << 30);
   EXPECT_EQ(refusal(big), "the file is 1024 MiB; gdpn reads input files of at most 256 MiB");
-  fs::remove_all(dir);
 }
 
 }  // namespace
