@@ -91,7 +91,7 @@ std::optional<std::uintmax_t> inputFileSize(const std::string& path, std::string
 std::optional<std::string> readFile(const std::string& path, Diagnostics& diags) {
   std::string why;
   Fd file(path);
-  if (file.fd < 0) why = openError(errno);
+  if (file.fd < 0) why = "cannot read the file";
   const auto size = file.fd < 0 ? std::nullopt : checkedSize(file.fd, why);
   if (!size) {
     diags.error({path, 0, 0}, why);

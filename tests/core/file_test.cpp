@@ -39,7 +39,7 @@ TEST_F(FileRead, WhatIsNotARegularFileIsRefusedAtOnce) {
   // nobody writes to it: opening must not wait for a writer
   EXPECT_EQ(refusal(fifo), fifo + ": error: is a FIFO, not a regular file\n");
   EXPECT_EQ(refusal(dir_.string()), dir_.string() + ": error: is a folder, not a file\n");
-  EXPECT_EQ(refusal((dir_ / "none").string()), (dir_ / "none").string() + ": error: no such file\n");
+  EXPECT_EQ(refusal((dir_ / "none").string()), (dir_ / "none").string() + ": error: cannot read the file\n");
 }
 
 TEST_F(FileRead, AFileOverTheLimitIsRefusedNamingTheLimit) {

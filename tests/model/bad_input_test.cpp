@@ -111,7 +111,7 @@ TEST(BadInput, SemanticErrorsAreAllReportedToo) {
 TEST(BadInput, MissingFileIsAnErrorNotACrash) {
   core::Diagnostics diags;
   EXPECT_FALSE(loadModel("/nonexistent/x.gdpn.yaml", diags));
-  EXPECT_EQ(diags.str(), "/nonexistent/x.gdpn.yaml: error: no such file\n");
+  EXPECT_EQ(diags.str(), "/nonexistent/x.gdpn.yaml: error: cannot read the file\n");
 }
 
 TEST(BadInput, AnEmptyFileIsRefusedAtItsFirstLine) {
