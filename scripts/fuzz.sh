@@ -1,19 +1,26 @@
 #!/usr/bin/env bash
 # Runs each libFuzzer target for SECONDS (default 60): the model loader, seeded with every
-# example and test model, and the PNML reader, seeded with the test nets and the conformance
-# nets. Fails on any crash, hang, leak or sanitizer report.
+# example and test model; the PNML reader, seeded with the test nets and the conformance nets;
+# the mesh loader, seeded with the test meshes; the input-event reader, seeded with the test
+# input files. Four targets: about four times SECONDS in all. Fails on any crash, hang, leak
+# or sanitizer report.
 # Needs the fuzz build: cmake --preset fuzz && cmake --build --preset fuzz
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 
-fuzz() {  # fuzz NAME MAX_LEN SEED_DIRS...
-  local name=$1 max_len=$2
-  shift 2
+fuzz() {  # fuzz NAME MAX_LEN 'NAME PATTERNS' SEED_DIRS...
+  local name=$1 max_len=$2 patterns=$3
+  shift 3
   local work=build/fuzz/run-$name
   rm -rf "$work" && mkdir -p "$work/corpus" "$work/seeds"
+  local find_names=() list pattern
+  read -ra list <<<"$patterns"
+  for pattern in "${list[@]}"; do
+    find_names+=(${find_names[@]:+-o} -name "$pattern")
+  done
   for dir in "$@"; do
-    [ -d "$dir" ] && find "$dir" -maxdepth 1 -type f \( -name '*.gdpn.yaml' -o -name '*.pnml' \) -exec cp {} "$work/seeds/" \;
+    [ -d "$dir" ] && find "$dir" -maxdepth 1 -type f \( "${find_names[@]}" \) -exec cp {} "$work/seeds/" \;
   done
   "build/fuzz/fuzz/$name" "$work/corpus" "$work/seeds" -max_total_time="$seconds" -max_len="$max_len" -timeout=10 \
     -rss_limit_mb=2048 -artifact_prefix="$work/" -print_final_stats=1 2>"$work/log" || {
@@ -25,5 +32,8 @@ fuzz() {  # fuzz NAME MAX_LEN SEED_DIRS...
   echo "fuzz: $name survived ${seconds} s"
 }
 
-fuzz model_loader_fuzz 4096 examples/basics/* examples/plant/* examples/sorting tests/data/good tests/data/bad
-fuzz pnml_reader_fuzz 65536 tests/data/pnml tests/data/conformance
+meshes='*.obj *.stl *.ply *.gltf *.glb *.dae *.3ds *.wrl *.iv'
+fuzz model_loader_fuzz 4096 '*.gdpn.yaml' examples/basics/* examples/plant/* examples/sorting tests/data/good tests/data/bad
+fuzz pnml_reader_fuzz 65536 '*.pnml' tests/data/pnml tests/data/conformance
+fuzz mesh_loader_fuzz 32768 "$meshes" tests/data/meshes tests/data/bad/files tests/data/physics tests/data/good/parts
+fuzz input_events_fuzz 4096 '*.input.yaml' tests/data/input

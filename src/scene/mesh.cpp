@@ -14,13 +14,20 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <pthread.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <mutex>
+#include <sstream>
 
+#include "gdpn/core/file.h"
+#include "gdpn/core/text.h"
 #include "gdpn/scene/node.h"
 
 namespace gdpn::scene {
@@ -68,6 +75,267 @@ void keep(MeshData& mesh, MeshPart part) {
   if (part.indices.empty()) return;
   if (part.normals.size() != part.positions.size()) part.normals.assign(part.positions.size(), 0.0f);
   mesh.parts.push_back(std::move(part));
+}
+
+// --- checks before a library sees the file -------------------------------------------------
+
+/// Deepest nesting of groups (VRML/Inventor braces, COLLADA elements, glTF JSON) gdpn hands a
+/// library: deeper files are refused before parsing, as the libraries recurse once per level.
+constexpr int kMaxNesting = 10000;
+/// The stack the libraries parse on: deep but legal files recurse far.
+constexpr std::size_t kParseStackBytes = std::size_t{256} << 20;
+
+/// "line L column C" of byte `at` in `text`.
+std::string placeIn(const std::string& text, std::size_t at) {
+  const auto [line, column] = core::lineColumn(text, at);
+  return "line " + std::to_string(line) + " column " + std::to_string(column);
+}
+
+/// Where `text` first nests deeper than kMaxNesting, or npos. Brackets (`{[` for VRML, Inventor
+/// and JSON) or XML elements (`xml`) open a level; strings and comments are skipped.
+std::size_t tooDeep(std::string_view text, bool xml) {
+  int depth = 0;
+  const std::size_t n = text.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const char c = text[i];
+    if (xml) {
+      if (c != '<' || i + 1 >= n) continue;
+      const char next = text[i + 1];
+      if (next == '/') {
+        --depth;
+      } else if (next == '!' || next == '?') {
+        // comments, declarations and CDATA open nothing; skip a comment whole
+        if (text.substr(i, 4) == "<!--") {
+          const auto end = text.find("-->", i + 4);
+          i = end == std::string::npos ? n : end + 2;
+        }
+      } else {
+        const auto end = text.find('>', i);
+        if (end == std::string::npos) break;
+        if (text[end - 1] != '/' && ++depth > kMaxNesting) return i;
+        i = end;
+      }
+    } else if (c == '"') {
+      // a string, with backslash escapes
+      for (++i; i < n && text[i] != '"'; ++i) {
+        if (text[i] == '\\') ++i;
+      }
+    } else if (c == '#') {
+      while (i < n && text[i] != '\n') ++i;
+    } else if (c == '{' || c == '[') {
+      if (++depth > kMaxNesting) return i;
+    } else if (c == '}' || c == ']') {
+      --depth;
+    }
+  }
+  return std::string::npos;
+}
+
+/// Bytes one value of a PLY scalar type takes in binary ("float" 4), 0 when unknown.
+std::size_t plyTypeBytes(const std::string& type) {
+  static const std::map<std::string, std::size_t> kBytes = {
+      {"char", 1},  {"uchar", 1},  {"int8", 1},   {"uint8", 1},   {"short", 2},   {"ushort", 2},  {"int16", 2},
+      {"uint16", 2}, {"int", 4},   {"uint", 4},   {"int32", 4},   {"uint32", 4},  {"float", 4},   {"float32", 4},
+      {"double", 8}, {"float64", 8}};
+  const auto it = kBytes.find(type);
+  return it == kBytes.end() ? 0 : it->second;
+}
+
+/// A PLY file's layout as its header gives it.
+struct PlyLayout {
+  struct Property {
+    std::size_t bytes = 0;        // of a scalar, or of each list entry (binary; 0 when unknown)
+    std::size_t count_bytes = 0;  // of a list's count (binary), 0 for a scalar
+    bool list = false;
+  };
+  struct Element {
+    std::string name;
+    std::uintmax_t count = 0;
+    std::size_t at = 0;  // where the header declares it
+    std::vector<Property> properties;
+  };
+  std::vector<Element> elements;
+  enum class Format { Ascii, Little, Big } format = Format::Ascii;
+  std::size_t body = std::string::npos;  // where the data begin, npos without end_header
+};
+
+PlyLayout plyLayout(const std::string& text) {
+  PlyLayout ply;
+  std::size_t pos = 0;
+  // a header is short: look no further than its first MiB
+  while (pos < std::min<std::size_t>(text.size(), std::size_t{1} << 20)) {
+    auto end = text.find('\n', pos);
+    if (end == std::string::npos) end = text.size();
+    std::istringstream line(text.substr(pos, end - pos));
+    std::string word;
+    line >> word;
+    if (word == "format") {
+      line >> word;
+      ply.format = word == "binary_little_endian" ? PlyLayout::Format::Little
+                   : word == "binary_big_endian"  ? PlyLayout::Format::Big
+                                                  : PlyLayout::Format::Ascii;
+    } else if (word == "element") {
+      PlyLayout::Element e;
+      e.at = pos;
+      line >> e.name >> e.count;
+      ply.elements.push_back(e);
+    } else if (word == "property" && !ply.elements.empty()) {
+      PlyLayout::Property p;
+      std::string type;
+      line >> type;
+      if (type == "list") {
+        std::string count_type;
+        line >> count_type >> type;
+        p.list = true;
+        p.count_bytes = plyTypeBytes(count_type);
+      }
+      p.bytes = plyTypeBytes(type);
+      ply.elements.back().properties.push_back(p);
+    } else if (word == "end_header") {
+      ply.body = end + 1;
+      break;
+    }
+    pos = end + 1;
+  }
+  return ply;
+}
+
+/// True when the data of a PLY file hold what its header and its list counts declare: a count
+/// of two billion with a few bytes of data is refused before the importer allocates for it.
+/// Walks the data once without keeping them.
+bool plyCountsFit(const std::string& text, std::string& why) {
+  const PlyLayout ply = plyLayout(text);
+  if (ply.body == std::string::npos || ply.body > text.size()) return true;  // the importer says what is wrong
+  const bool ascii = ply.format == PlyLayout::Format::Ascii;
+  const std::size_t have = text.size() - ply.body;
+  // each element first: it takes at least a byte per property (two as text)
+  std::uintmax_t least = 0;
+  for (const auto& e : ply.elements) {
+    const std::uintmax_t item = std::max<std::uintmax_t>(1, e.properties.size() * (ascii ? 2 : 1));
+    if (e.count > have / item || least + e.count * item > have) {
+      why = placeIn(text, e.at) + ": element '" + e.name + "' declares " + std::to_string(e.count) +
+            " items, more than the " + std::to_string(have) + " bytes after the header can hold";
+      return false;
+    }
+    least += e.count * item;
+  }
+  // then every list: its count must fit in what is left
+  std::size_t pos = ply.body;
+  auto skipSpace = [&] {
+    while (pos < text.size() && std::isspace(static_cast<unsigned char>(text[pos]))) ++pos;
+  };
+  auto listTooLong = [&](std::size_t at, std::uintmax_t count, const PlyLayout::Element& e) {
+    why = (ascii ? placeIn(text, at) : "byte " + std::to_string(at)) + ": a list of element '" + e.name +
+          "' declares " + std::to_string(count) + " entries, more than the rest of the file holds";
+    return false;
+  };
+  for (const auto& e : ply.elements) {
+    for (std::uintmax_t i = 0; i < e.count; ++i) {
+      for (const auto& p : e.properties) {
+        if (ascii) {
+          skipSpace();
+          const std::size_t at = pos;
+          while (pos < text.size() && !std::isspace(static_cast<unsigned char>(text[pos]))) ++pos;
+          if (!p.list) continue;
+          const std::uintmax_t count = std::strtoull(text.substr(at, pos - at).c_str(), nullptr, 10);
+          if (count > (text.size() - pos) / 2) return listTooLong(at, count, e);
+          for (std::uintmax_t k = 0; k < count; ++k) {
+            skipSpace();
+            while (pos < text.size() && !std::isspace(static_cast<unsigned char>(text[pos]))) ++pos;
+          }
+          continue;
+        }
+        if (p.bytes == 0 || (p.list && p.count_bytes == 0)) return true;  // an unknown type: the importer says
+        if (!p.list) {
+          pos += p.bytes;
+          continue;
+        }
+        if (text.size() - std::min(pos, text.size()) < p.count_bytes) return true;  // truncated: the importer says
+        std::uintmax_t count = 0;
+        for (std::size_t k = 0; k < p.count_bytes; ++k) {
+          const std::size_t byte = ply.format == PlyLayout::Format::Little ? p.count_bytes - 1 - k : k;
+          count = (count << 8) | static_cast<unsigned char>(text[pos + byte]);
+        }
+        const std::size_t at = pos;
+        pos += p.count_bytes;
+        if (count > (text.size() - pos) / p.bytes) return listTooLong(at, count, e);
+        pos += static_cast<std::size_t>(count) * p.bytes;
+      }
+      if (pos > text.size()) return true;  // truncated: the importer says
+    }
+  }
+  return true;
+}
+
+/// Checks what the file declares against what it holds, before any library reads it: a size
+/// within core::maxInputBytes(), nesting within kMaxNesting, PLY counts within the bytes.
+bool precheck(const std::string& path, const std::string& ext, std::string& why) {
+  core::Diagnostics diags;
+  auto text = core::readFile(path, diags);
+  if (!text) {
+    why = diags.all().empty() ? "cannot read the file" : diags.all().front().message;
+    return false;
+  }
+  if (ext == ".ply") return plyCountsFit(*text, why);
+  // a glb holds its JSON in the first chunk, after a 12-byte header and an 8-byte chunk header
+  std::string_view scan = *text;
+  if (ext == ".glb") {
+    // the header's total length and the chunk's must lie within the file
+    std::uint32_t total = 0, length = 0;
+    if (text->size() >= 20) {
+      std::memcpy(&total, text->data() + 8, sizeof total);
+      std::memcpy(&length, text->data() + 12, sizeof length);
+    }
+    if (text->size() < 20 || total > text->size() || length > text->size() - 20) {
+      why = "its header declares " + std::to_string(std::max(total, length)) + " bytes, but the file holds " +
+            std::to_string(text->size());
+      return false;
+    }
+    scan = scan.substr(20, length);
+  }
+  const bool text_form = ext == ".wrl" || ext == ".gltf" || ext == ".glb" || ext == ".dae" ||
+                         (ext == ".iv" && text->find("binary") > text->find('\n'));
+  if (!text_form) return true;
+  if (const auto at = tooDeep(scan, ext == ".dae"); at != std::string::npos) {
+    why = placeIn(*text, at + static_cast<std::size_t>(scan.data() - text->data())) + ": nested more than " +
+          std::to_string(kMaxNesting) + " levels deep, the most gdpn reads";
+    return false;
+  }
+  return true;
+}
+
+/// Runs `work` on a thread of its own with a kParseStackBytes stack and waits for it; false
+/// with `why` when no such thread can be made or `work` throws.
+bool onLargeStack(const std::function<bool()>& work, std::string& why) {
+  struct Job {
+    const std::function<bool()>* work;
+    bool ok = false;
+    std::string error;
+  } job{&work, false, {}};
+  auto run = [](void* arg) -> void* {
+    auto* j = static_cast<Job*>(arg);
+    try {
+      j->ok = (*j->work)();
+    } catch (const std::exception& e) {
+      j->error = e.what();
+    } catch (...) {
+      j->error = "the importer failed";
+    }
+    return nullptr;
+  };
+  pthread_attr_t attr;
+  pthread_t thread;
+  bool started = pthread_attr_init(&attr) == 0;
+  started = started && pthread_attr_setstacksize(&attr, kParseStackBytes) == 0 &&
+            pthread_create(&thread, &attr, run, &job) == 0;
+  pthread_attr_destroy(&attr);
+  if (!started) {
+    why = "cannot start a thread to read it";
+    return false;
+  }
+  pthread_join(thread, nullptr);
+  if (!job.error.empty()) why = job.error;
+  return job.ok && job.error.empty();
 }
 
 // --- Assimp ------------------------------------------------------------------------------
@@ -218,36 +486,22 @@ bool readWithCoin(const std::string& path, MeshData& mesh, std::string& why) {
 
 }  // namespace
 
-std::shared_ptr<const MeshData> loadMesh(const std::string& path, std::string& why) {
-  namespace fs = std::filesystem;
+std::shared_ptr<const MeshData> readMesh(const std::string& path, std::string& why) {
+  // Coin reports through globals and neither library promises to be reentrant: one read at a time
   static std::mutex mutex;
-  struct Entry {
-    fs::file_time_type time;
-    std::uintmax_t size = 0;
-    std::shared_ptr<const MeshData> mesh;
-  };
-  static std::map<std::string, Entry> cache;
-
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) {
-    why = "no such file";
-    return nullptr;
-  }
+  if (!core::inputFileSize(path, why)) return nullptr;
   const std::string ext = extensionOf(path);
   if (!isMeshFile(path)) {
     why = "unsupported mesh format '" + ext + "' (gdpn reads obj, stl, 3ds, gltf, glb, dae, ply, wrl, iv)";
     return nullptr;
   }
   const bool coin = ext == ".wrl" || ext == ".iv";
-  const auto time = fs::last_write_time(path, ec);
-  const auto size = fs::file_size(path, ec);
   std::lock_guard lock(mutex);
-  if (auto it = cache.find(path); it != cache.end() && it->second.time == time && it->second.size == size) {
-    return it->second.mesh;
-  }
+  if (!precheck(path, ext, why)) return nullptr;
   auto mesh = std::make_shared<MeshData>();
   mesh->path = path;
-  const bool ok = coin ? readWithCoin(path, *mesh, why) : readWithAssimp(path, *mesh, why);
+  // the libraries recurse per level of nesting: give them a stack of our choosing
+  const bool ok = onLargeStack([&] { return coin ? readWithCoin(path, *mesh, why) : readWithAssimp(path, *mesh, why); }, why);
   if (!ok) return nullptr;
   if (mesh->parts.empty()) {
     why = "it holds no triangles";
@@ -261,7 +515,29 @@ std::shared_ptr<const MeshData> loadMesh(const std::string& path, std::string& w
       }
     }
   }
-  cache[path] = {time, size, mesh};
+  return mesh;
+}
+
+std::shared_ptr<const MeshData> loadMesh(const std::string& path, std::string& why) {
+  namespace fs = std::filesystem;
+  static std::mutex mutex;
+  struct Entry {
+    fs::file_time_type time;
+    std::uintmax_t size = 0;
+    std::shared_ptr<const MeshData> mesh;
+  };
+  static std::map<std::string, Entry> cache;
+
+  const auto size = core::inputFileSize(path, why);
+  if (!size) return nullptr;
+  std::error_code ec;
+  const auto time = fs::last_write_time(path, ec);
+  std::lock_guard lock(mutex);
+  if (auto it = cache.find(path); it != cache.end() && it->second.time == time && it->second.size == *size) {
+    return it->second.mesh;
+  }
+  auto mesh = readMesh(path, why);
+  if (mesh) cache[path] = {time, *size, mesh};
   return mesh;
 }
 

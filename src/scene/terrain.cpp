@@ -6,9 +6,13 @@
 #include <cmath>
 #include <mutex>
 
+#include "gdpn/core/file.h"
+
 namespace gdpn::scene {
 
 std::optional<HeightGrid> loadHeightGrid(const std::string& path, std::string& why) {
+  // a regular file within the input limit: GDAL would read a FIFO or /dev/zero forever
+  if (!core::inputFileSize(path, why)) return std::nullopt;
   static std::once_flag once;
   std::call_once(once, [] { GDALAllRegister(); });
   // GDAL reports through a handler; keep its last message for ours

@@ -3,13 +3,19 @@
 // there, and never crash.
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <filesystem>
+#include <functional>
 #include <fstream>
 
+#include "gdpn/core/file.h"
 #include "gdpn/model/model.h"
 #include "gdpn/model/simulation.h"
 #include "gdpn/net/compile.h"
+#include "gdpn/net/pnml.h"
+#include "support/temp_files.h"
 
 namespace gdpn::model {
 namespace {
@@ -150,6 +156,76 @@ TEST(ModelPath, AFolderMustHoldExactlyOneModel) {
   core::Diagnostics none;
   EXPECT_FALSE(resolveModelPath((fs::path(GDPN_SOURCE_DIR) / "docs").string(), none));
   EXPECT_NE(none.str().find("holds no model file"), std::string::npos);
+}
+
+// --- every reader is bounded by the file's real size ---------------------------------------
+
+/// The three readers of whole files: a model, input events, a PNML net; each gives a result or
+/// diagnostics.
+const std::vector<std::pair<std::string, std::function<bool(const std::string&, core::Diagnostics&)>>>& readers() {
+  static const std::vector<std::pair<std::string, std::function<bool(const std::string&, core::Diagnostics&)>>> kReaders = {
+      {"model", [](const std::string& p, core::Diagnostics& d) { return loadModel(p, d).has_value(); }},
+      {"input", [](const std::string& p, core::Diagnostics& d) { return loadInput(p, d).has_value(); }},
+      {"pnml", [](const std::string& p, core::Diagnostics& d) { return net::loadPnml(p, d).has_value(); }}};
+  return kReaders;
+}
+
+/// Each reader refuses `path` within a few seconds with exactly `expected` as its diagnostics.
+void expectRefused(const std::string& path, const std::string& expected) {
+  for (const auto& [name, read] : readers()) {
+    core::Diagnostics diags;
+    EXPECT_LT(testing::secondsFor([&] { EXPECT_FALSE(read(path, diags)) << name << " " << path; }), 5.0) << name;
+    EXPECT_EQ(diags.str(), expected) << name;
+  }
+}
+
+TEST(ReadingLimits, EndlessAndNonRegularFilesAreRefusedAtOnce) {
+  expectRefused("/dev/zero", "/dev/zero: error: is a character device, not a regular file\n");
+  expectRefused("/dev/urandom", "/dev/urandom: error: is a character device, not a regular file\n");
+  const auto dir = fs::temp_directory_path() / ("gdpn_limits_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const auto fifo = (dir / "pipe.gdpn.yaml").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  expectRefused(fifo, fifo + ": error: is a FIFO, not a regular file\n");
+  fs::remove_all(dir);
+}
+
+TEST(ReadingLimits, AGigabyteIsRefusedNamingTheLimit) {
+  const auto dir = fs::temp_directory_path() / ("gdpn_limits_big_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  // sparse: a gigabyte that takes no disk
+  const auto big = (dir / "big.gdpn.yaml").string();
+  std::ofstream{big};
+  fs::resize_file(big, std::uintmax_t{1} << 30);
+  expectRefused(big, big + ": error: the file is 1024 MiB; gdpn reads input files of at most 256 MiB\n");
+  // garbage over a lowered limit; under it, garbage is a located error
+  std::string garbage;
+  for (int i = 0; i < 5000; ++i) garbage += static_cast<char>((i * 7919) % 251);
+  const auto junk = (dir / "junk.yaml").string();
+  std::ofstream(junk, std::ios::binary) << garbage;
+  {
+    core::InputLimit limit(4096);
+    expectRefused(junk, junk + ": error: the file is 5000 bytes; gdpn reads input files of at most 4 KiB\n");
+  }
+  for (const auto& [name, read] : readers()) {
+    core::Diagnostics diags;
+    EXPECT_FALSE(read(junk, diags)) << name;
+    ASSERT_TRUE(diags.hasErrors()) << name;
+    EXPECT_EQ(diags.all()[0].loc.file, junk) << name;
+    EXPECT_GT(diags.all()[0].loc.line, 0) << name << ": " << diags.str();
+  }
+  fs::remove_all(dir);
+}
+
+TEST(ReadingLimits, InputEventsReportTheirPlace) {
+  const auto path = (fs::temp_directory_path() / ("gdpn_input_" + std::to_string(::getpid()) + ".yaml")).string();
+  std::ofstream(path) << "- {t: 1, key: a}\n- {t: -2, key: b}\n- " + std::string(100000, '[') + "\n";
+  core::Diagnostics diags;
+  EXPECT_FALSE(loadInput(path, diags));
+  ASSERT_TRUE(diags.hasErrors());
+  EXPECT_EQ(diags.all()[0].loc.file, path);
+  EXPECT_GT(diags.all()[0].loc.line, 0) << diags.str();
+  fs::remove(path);
 }
 
 }  // namespace

@@ -5,38 +5,30 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "gdpn/core/file.h"
 #include "gdpn/scene/node.h"
+#include "support/temp_files.h"
 
 namespace gdpn::scene {
 namespace {
 
 namespace fs = std::filesystem;
 
-class MeshImport : public ::testing::Test {
+class MeshImport : public testing::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("gdpn_mesh_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                                        "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string write(const std::string& name, const std::string& bytes) {
-    const auto path = (dir_ / name).string();
-    std::ofstream(path, std::ios::binary) << bytes;
-    return path;
-  }
   std::shared_ptr<const MeshData> load(const std::string& path) {
     std::string why;
     auto mesh = loadMesh(path, why);
     EXPECT_TRUE(mesh) << why;
     return mesh;
   }
-  fs::path dir_;
 };
 
 void expectColour(const std::array<double, 3>& c, double r, double g, double b) {
@@ -242,6 +234,105 @@ TEST_F(MeshImport, BadFilesGiveTheImportersReason) {
   EXPECT_FALSE(why.empty());
   EXPECT_FALSE(loadMesh(write("bad.gltf", "{\"asset\": "), why));
   EXPECT_FALSE(why.empty());
+}
+
+TEST(MeshSeeds, EveryFormatReadsOneTriangle) {
+  // the fuzzer's seeds: one triangle in each format gdpn reads
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(fs::path(GDPN_SOURCE_DIR) / "tests/data/meshes")) {
+    std::string why;
+    auto m = readMesh(e.path().string(), why);
+    ASSERT_TRUE(m) << e.path() << ": " << why;
+    EXPECT_EQ(m->triangles(), 1u) << e.path();
+    ++files;
+  }
+  EXPECT_EQ(files, 11);
+}
+
+// --- hostile files: each is refused with the place in the file, quickly, without a crash ---
+
+/// Loads `path`, expecting a refusal within a few seconds; returns the reason.
+std::string refusal(const std::string& path) {
+  std::string why;
+  EXPECT_LT(testing::secondsFor([&] { EXPECT_FALSE(loadMesh(path, why)) << path; }), 5.0) << path;
+  return why;
+}
+
+std::string repeat(const std::string& s, int n) {
+  std::string out;
+  for (int i = 0; i < n; ++i) out += s;
+  return out;
+}
+
+TEST_F(MeshImport, DeepNestingIsRefusedWhereItGoesTooDeep) {
+  // VRML: two levels per Group (its braces and its children's brackets); the 10001st bracket
+  // is the 5001st group's '{', at column 15 * 5000 + 6 of line 2
+  const std::string group = "Group{children[";  // 15 characters
+  EXPECT_EQ(refusal(write("deep.wrl", "#VRML V2.0 utf8\n" + repeat(group, 200000) + "\n")),
+            "line 2 column " + std::to_string(15 * 5000 + 6) + ": nested more than 10000 levels deep, the most gdpn reads");
+  EXPECT_EQ(refusal(write("deep.iv", "#Inventor V2.1 ascii\n" + repeat("Separator { ", 100000))),
+            "line 2 column " + std::to_string(12 * 10000 + 11) + ": nested more than 10000 levels deep, the most gdpn reads");
+  EXPECT_EQ(refusal(write("deep.dae", "<?xml version=\"1.0\"?>\n<COLLADA>\n" + repeat("<node>", 100000))),
+            "line 3 column " + std::to_string(6 * 9999 + 1) + ": nested more than 10000 levels deep, the most gdpn reads");
+  EXPECT_EQ(refusal(write("deep.gltf", "{\"asset\":" + repeat("[", 100000))),
+            "line 1 column " + std::to_string(10 + 9999) + ": nested more than 10000 levels deep, the most gdpn reads");
+  // brackets inside strings and comments do not count
+  EXPECT_NE(refusal(write("strings.wrl", "#VRML V2.0 utf8\n# " + repeat("[", 20000) + "\nWorldInfo { title \"" +
+                                             repeat("{", 20000) + "\" }\n")),
+            std::string("nested"));
+}
+
+TEST_F(MeshImport, DeepButLegalNestingReads) {
+  // deeper than a default thread's stack carries Coin and Assimp: read on a stack of our own
+  auto wrl = load(write("deep.wrl", "#VRML V2.0 utf8\n" + repeat("Group { children [ ", 4990) +
+                                        "Shape { geometry Box {} }" + repeat(" ] }", 4990) + "\n"));
+  ASSERT_TRUE(wrl);
+  EXPECT_EQ(wrl->triangles(), 12u);
+  auto iv = load(write("deep.iv", "#Inventor V2.1 ascii\n" + repeat("Separator { ", 9990) + "Cube {}" + repeat("}", 9990)));
+  ASSERT_TRUE(iv);
+  EXPECT_EQ(iv->triangles(), 12u);
+}
+
+TEST_F(MeshImport, DeclaredCountsMustFitTheBytesPresent) {
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 2000000000\nproperty float x\nproperty float y\n"
+                             "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  EXPECT_EQ(refusal(write("huge.ply", header + "0 0 0\n")),
+            "line 3 column 1: element 'vertex' declares 2000000000 items, more than the 6 bytes after the header can hold");
+  std::string binary = header;
+  binary.replace(binary.find("ascii"), 5, "binary_little_endian");
+  EXPECT_EQ(refusal(write("hugeb.ply", binary + std::string(20, '\0'))),
+            "line 3 column 1: element 'vertex' declares 2000000000 items, more than the 20 bytes after the header can hold");
+  // a face whose index list claims four billion entries
+  const std::string one = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                          "element face 1\nproperty list uint int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
+  EXPECT_EQ(refusal(write("list.ply", one + "4000000000 0 1 2\n")),
+            "line 13 column 1: a list of element 'face' declares 4000000000 entries, more than the rest of the file holds");
+  std::string listb = "ply\nformat binary_little_endian 1.0\nelement face 1\nproperty list uint int vertex_indices\nend_header\n";
+  const auto at = listb.size();
+  listb += std::string("\xff\xff\xff\x7f", 4) + std::string(12, '\0');
+  EXPECT_EQ(refusal(write("listb.ply", listb)), "byte " + std::to_string(at) +
+                                                    ": a list of element 'face' declares 2147483647 entries, more than the rest of the file holds");
+  // a binary STL claiming two billion triangles, a glb whose header claims a gigabyte
+  std::string stl(80, '\0');
+  stl += std::string("\x00\x94\x35\x77", 4) + std::string(50, '\0');
+  EXPECT_NE(refusal(write("huge.stl", stl)).find("STL"), std::string::npos);
+  std::string glb = "glTF";
+  glb += std::string("\x02\0\0\0\x00\xca\x9a\x3b\x00\x94\x35\x77", 12) + "JSON{";
+  EXPECT_EQ(refusal(write("huge.glb", glb)), "its header declares 2000000000 bytes, but the file holds 21");
+}
+
+TEST_F(MeshImport, OnlyRegularFilesWithinTheLimitAreRead) {
+  EXPECT_EQ(refusal("/dev/zero"), "is a character device, not a regular file");
+  const auto fifo = (dir_ / "pipe.obj").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_EQ(refusal(fifo), "is a FIFO, not a regular file");  // no writer: it must not wait for one
+  // a gigabyte of nothing, sparse on disk
+  const auto big = write("big.obj", "");
+  fs::resize_file(big, std::uintmax_t{1} << 30);
+  EXPECT_EQ(refusal(big), "the file is 1024 MiB; gdpn reads input files of at most 256 MiB");
+  // garbage over a lowered limit
+  core::InputLimit limit(4096);
+  EXPECT_EQ(refusal(write("garbage.dae", std::string(5000, '<'))), "the file is 5000 bytes; gdpn reads input files of at most 4 KiB");
 }
 
 }  // namespace

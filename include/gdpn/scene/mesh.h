@@ -56,7 +56,13 @@ const std::vector<std::string>& meshExtensions();
 /// True when `path` ends in one of meshExtensions() (in any case).
 bool isMeshFile(const std::string& path);
 
-/// Reads the mesh at `path` (cached: the same file is read once while it is unchanged). On
+/// Reads the mesh at `path` afresh. Only a regular file within core::maxInputBytes() is read;
+/// its declared counts must fit its bytes and its nesting stay within 10,000 levels before a
+/// library sees it, and the library parses on a 256 MiB stack of its own. On failure, null and
+/// `why` gives the reason, with the place in the file where there is one.
+std::shared_ptr<const MeshData> readMesh(const std::string& path, std::string& why);
+
+/// Reads the mesh at `path` through readMesh (cached: the same file is read once while it is unchanged). On
 /// failure, null and `why` gives the importer's reason.
 std::shared_ptr<const MeshData> loadMesh(const std::string& path, std::string& why);
 
