@@ -347,12 +347,30 @@ std::array<double, 3> color(const aiMaterial& m, const char* key, unsigned type,
   return {std::clamp<double>(c.r, 0, 1), std::clamp<double>(c.g, 0, 1), std::clamp<double>(c.b, 0, 1)};
 }
 
+/// Sets `mesh`'s primitive types from its faces (points, lines, triangles, polygons).
+void countPrimitiveTypes(aiMesh& mesh) {
+  unsigned types = 0;
+  for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+    const unsigned n = mesh.mFaces[f].mNumIndices;
+    types |= n == 1 ? aiPrimitiveType_POINT : n == 2 ? aiPrimitiveType_LINE : n == 3 ? aiPrimitiveType_TRIANGLE
+                                                                                     : aiPrimitiveType_POLYGON;
+  }
+  mesh.mPrimitiveTypes = types;
+}
+
 bool readWithAssimp(const std::string& path, MeshData& mesh, std::string& why) {
   Assimp::Importer importer;
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* s = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                                 aiProcess_GenSmoothNormals | aiProcess_PreTransformVertices |
-                                                 aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+  // read and check the file's structure first; the steps after it trust each mesh's
+  // primitive types, which some loaders (PLY) get wrong on malformed files: Triangulate then
+  // aborts the process (an ai_assert), so the types are counted again from the faces
+  const aiScene* s = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+  if (s != nullptr && (s->mFlags & AI_SCENE_FLAGS_INCOMPLETE) == 0) {
+    for (unsigned i = 0; i < s->mNumMeshes; ++i) countPrimitiveTypes(*s->mMeshes[i]);
+    s = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                     aiProcess_GenSmoothNormals | aiProcess_PreTransformVertices |
+                                     aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+  }
   if (s == nullptr || (s->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0 || s->mRootNode == nullptr) {
     why = importer.GetErrorString();
     if (why.empty()) why = "the importer found no scene in it";

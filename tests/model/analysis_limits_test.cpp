@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -18,8 +19,11 @@ using gdpn::testing::runGdpn;
 /// A model whose one transition empties k places into k others: its k^2 minimal P-invariants
 /// p_i + q_j appear in one elimination step, and sorting out the minimal ones is quadratic in
 /// k^2 (for k = 280, minutes without a limit). Its state space has two markings.
+/// (Each test process writes its own file: tests run side by side.)
 std::string fanModel(int k) {
-  const std::string path = (fs::temp_directory_path() / ("gdpn_fan_" + std::to_string(k) + ".gdpn.yaml")).string();
+  const std::string path =
+      (fs::temp_directory_path() / ("gdpn_fan_" + std::to_string(k) + "_" + std::to_string(::getpid()) + ".gdpn.yaml"))
+          .string();
   std::ofstream f(path);
   f << "gdpn: 1\npages:\n  main:\n    places:\n";
   for (int i = 0; i < k; ++i) f << "      p" << i << ": {tokens: 1}\n      q" << i << ": {}\n";

@@ -26,7 +26,10 @@ Result shell(const std::string& commands) { return gdpn::testing::runShell(comma
 /// Runs gdpn with `args` (shell words) in the source folder.
 Result gdpn(const std::string& args) { return gdpn::testing::runGdpn(args); }
 
-std::string temp(const std::string& name) { return (fs::temp_directory_path() / name).string(); }
+/// A path in the temporary folder, this test process's own.
+std::string temp(const std::string& name) {
+  return (fs::temp_directory_path() / (std::to_string(::getpid()) + "_" + name)).string();
+}
 
 TEST(Cli, CheckAcceptsEveryExampleAndGoodModel) {
   for (const char* dir : {"examples", "tests/data/good"}) {
