@@ -205,7 +205,11 @@ PlyLayout plyLayout(const std::string& text) {
 /// Walks the data once without keeping them.
 bool plyCountsFit(const std::string& text, std::string& why) {
   const PlyLayout ply = plyLayout(text);
-  if (ply.body == std::string::npos || ply.body > text.size()) return true;  // the importer says what is wrong
+  // without its end_header line Assimp's reader searches for ever
+  if (ply.body == std::string::npos || ply.body > text.size()) {
+    why = "the PLY header has no 'end_header' line of its own within its first MiB";
+    return false;
+  }
   const bool ascii = ply.format == PlyLayout::Format::Ascii;
   const std::size_t have = text.size() - ply.body;
   // each element first: it takes at least a byte per property (two as text)
