@@ -157,7 +157,7 @@ struct PlyLayout {
   std::vector<Element> elements;
   enum class Format { Ascii, Little, Big } format = Format::Ascii;
   std::size_t body = std::string::npos;  // where the data begin, npos without end_header
-  std::size_t bad_type = std::string::npos;  // the first property of no PLY type
+  std::size_t bad_type = std::string::npos;  // the first header line or property type PLY lacks
 };
 
 PlyLayout plyLayout(const std::string& text) {
@@ -196,6 +196,8 @@ PlyLayout plyLayout(const std::string& text) {
     } else if (word == "end_header") {
       ply.body = end + 1;
       break;
+    } else if (word != "ply" && word != "comment" && word != "obj_info" && !word.empty()) {
+      ply.bad_type = std::min(ply.bad_type, pos);  // a line PLY does not have
     }
     pos = end + 1;
   }
@@ -214,7 +216,7 @@ bool plyCountsFit(const std::string& text, std::string& why) {
   }
   // Assimp aborts in its post-processing on some properties of no known type
   if (ply.bad_type != std::string::npos) {
-    why = placeIn(text, ply.bad_type) + ": a property of a type PLY does not have";
+    why = placeIn(text, ply.bad_type) + ": a header line or property type PLY does not have";
     return false;
   }
   const bool ascii = ply.format == PlyLayout::Format::Ascii;
