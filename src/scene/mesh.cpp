@@ -157,6 +157,7 @@ struct PlyLayout {
   std::vector<Element> elements;
   enum class Format { Ascii, Little, Big } format = Format::Ascii;
   std::size_t body = std::string::npos;  // where the data begin, npos without end_header
+  std::size_t bad_type = std::string::npos;  // the first header line or property type PLY lacks
 };
 
 PlyLayout plyLayout(const std::string& text) {
@@ -190,10 +191,13 @@ PlyLayout plyLayout(const std::string& text) {
         p.count_bytes = plyTypeBytes(count_type);
       }
       p.bytes = plyTypeBytes(type);
+      if (p.bytes == 0 || (p.list && p.count_bytes == 0)) ply.bad_type = std::min(ply.bad_type, pos);
       ply.elements.back().properties.push_back(p);
     } else if (word == "end_header") {
       ply.body = end + 1;
       break;
+    } else if (word != "ply" && word != "comment" && word != "obj_info" && !word.empty()) {
+      ply.bad_type = std::min(ply.bad_type, pos);  // a line PLY does not have
     }
     pos = end + 1;
   }
@@ -205,7 +209,16 @@ PlyLayout plyLayout(const std::string& text) {
 /// Walks the data once without keeping them.
 bool plyCountsFit(const std::string& text, std::string& why) {
   const PlyLayout ply = plyLayout(text);
-  if (ply.body == std::string::npos || ply.body > text.size()) return true;  // the importer says what is wrong
+  // without its end_header line Assimp's reader searches for ever
+  if (ply.body == std::string::npos || ply.body > text.size()) {
+    why = "the PLY header has no 'end_header' line of its own within its first MiB";
+    return false;
+  }
+  // Assimp aborts in its post-processing on some properties of no known type
+  if (ply.bad_type != std::string::npos) {
+    why = placeIn(text, ply.bad_type) + ": a header line or property type PLY does not have";
+    return false;
+  }
   const bool ascii = ply.format == PlyLayout::Format::Ascii;
   const std::size_t have = text.size() - ply.body;
   // each element first: it takes at least a byte per property (two as text)

@@ -312,6 +312,14 @@ TEST_F(MeshImport, DeclaredCountsMustFitTheBytesPresent) {
   listb += std::string("\xff\xff\xff\x7f", 4) + std::string(12, '\0');
   EXPECT_EQ(refusal(write("listb.ply", listb)), "byte " + std::to_string(at) +
                                                     ": a list of element 'face' declares 2147483647 entries, more than the rest of the file holds");
+  // a header whose end_header is not a line of its own (Assimp hung on it)
+  EXPECT_EQ(refusal(write("noend.ply", "ply\nformat ascii 1.0\nelement vertex 0\nx\x05end_header\n")),
+            "the PLY header has no 'end_header' line of its own within its first MiB");
+  // a property of no PLY type (Assimp aborted on it; found by the mesh fuzzer)
+  EXPECT_EQ(refusal(write("type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty \xff\xff x\nend_header\n0\n")),
+            "line 4 column 1: a header line or property type PLY does not have");
+  EXPECT_EQ(refusal(write("line.ply", "ply\nformat ascii 1.0\nelement vertex 1\npro\xbb" "erty float x\nend_header\n0\n")),
+            "line 4 column 1: a header line or property type PLY does not have");
   // a binary STL claiming two billion triangles, a glb whose header claims a gigabyte
   std::string stl(80, '\0');
   stl += std::string("\x00\x94\x35\x77", 4) + std::string(50, '\0');
