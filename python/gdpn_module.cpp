@@ -227,8 +227,10 @@ class Model {
 
   void raiseIfFailed() const {
     switch (outcome_.reason) {
-      case model::StopReason::ScriptError: {
-        py::object err = module().attr("ScriptError")(outcome_.message);
+      case model::StopReason::ScriptError:
+      case model::StopReason::PhysicsError: {
+        const char* kind = outcome_.reason == model::StopReason::ScriptError ? "ScriptError" : "PhysicsError";
+        py::object err = module().attr(kind)(outcome_.message);
         PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(err.ptr())), err.ptr());
         throw py::error_already_set();
       }
@@ -264,6 +266,9 @@ class ModelError(Exception):
 
 class ScriptError(Exception):
     """A script raised an exception, or ran past the script timeout, during a run."""
+
+class PhysicsError(Exception):
+    """A body ran away (its position or speed went non-finite or beyond 1e12), or ODE failed, during a run."""
 
 class FireError(ValueError):
     """Model.fire() refused: the transition is not enabled, is occurring, or its guard is false."""

@@ -253,3 +253,26 @@ def test_a_callable_predicate_and_live_input(source):
     assert seen[-1] == pytest.approx(0.3)
     with pytest.raises(ValueError, match="one of key=, viewpoint= or click="):
         model.push()
+
+
+def test_a_body_that_runs_away_raises_physics_error(write_model):
+    path = write_model("""gdpn: 1
+settings: {dt: 0.01}
+scene:
+  - Body: {name: box, mass: 1, children: [{Cube: {size: [0.1, 0.1, 0.1]}}]}
+pages:
+  main:
+    places:
+      a: {tokens: {d0: [box]}}
+      b: {}
+    transitions:
+      push:
+        duration: 1
+        pre_fire: 'self.d0[0].set_force((1e17, 0, 0))'
+    arcs:
+      - {from: a, to: push, weight: {d0: 1}}
+      - {from: push, to: b, weight: {d0: 1}}
+""")
+    model = gdpn.load(str(path))
+    with pytest.raises(gdpn.PhysicsError, match="body 'box' ran away"):
+        model.run(until=1)
