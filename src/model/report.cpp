@@ -159,20 +159,18 @@ void printSummary(std::ostream& out, const Report& report) {
         << pad(fixed(p.throughput, 3), 13, true) << "\n";
   }
   if (!report.cycles.empty()) {
-    std::size_t cw = 10;
+    // the figures first, in aligned columns; the invariant, often long, last on its line
     auto label = [](const CycleFigures& c) {
       return c.invariant + (c.alike > 0 ? " (+" + std::to_string(c.alike) + " alike)" : "");
     };
-    for (const auto& c : report.cycles) cw = std::max(cw, label(c).size());
-    cw += 2;
     out << "\n"
-        << pad("cycle (P-invariant)", cw, false) << pad("tokens", 8, true) << pad("bound [s]", 12, true)
-        << pad("measured [s]", 14, true) << pad("waited [s]", 12, true) << "\n";
+        << pad("tokens", 8, true) << pad("bound [s]", 12, true) << pad("measured [s]", 14, true)
+        << pad("waited [s]", 12, true) << "  cycle (P-invariant)\n";
     for (const auto& c : report.cycles) {
       const bool m = c.measured > 0.0;
-      out << pad(label(c), cw, false) << pad(std::to_string(c.tokens), 8, true) << pad(fixed(c.bound, 3), 12, true)
+      out << pad(std::to_string(c.tokens), 8, true) << pad(fixed(c.bound, 3), 12, true)
           << pad(m ? fixed(c.measured, 3) : "-", 14, true) << pad(m ? fixed(c.measured - c.bound, 3) : "-", 12, true)
-          << "\n";
+          << "  " << label(c) << "\n";
     }
   }
   if (!report.figures.empty() || !report.figures_error.empty()) {
