@@ -570,7 +570,8 @@ std::string Kernel::fire(TransitionId t) {
     }
     return name + " is not enabled";
   }
-  if ((tr.scripts & kGuard) && hooks_ && (hooks_->halted() || !hooks_->guard(t))) return name + "'s guard is false";
+  if (hooks_ && hooks_->halted()) return name + " cannot start: the model's scripts have stopped";
+  if ((tr.scripts & kGuard) && hooks_ && !hooks_->guard(t)) return name + "'s guard is false";
   if (tr.held >= 0 && hooks_ && !selectTokens(t)) return "no node token satisfies the predicates of " + name;
   // what the start enables waits for the next firing phase, as if enabled in this one
   const bool was = std::exchange(in_firing_, true);

@@ -161,6 +161,31 @@ TEST(Session, FireOfATransitionThatCannotStartIsRefusedWithTheReason) {
   EXPECT_EQ(s->fire("main/rare"), "'main/rare' is occurring");
 }
 
+TEST(Session, FireAfterAScriptErrorSaysTheScriptsHaveStopped) {
+  core::Diagnostics diags;
+  auto s = open(R"Y(gdpn: 1
+settings: {dt: 0.1}
+pages:
+  main:
+    places:
+      a: {tokens: 2}
+      b: {}
+    transitions:
+      broken: {probability: 0.000001, pre_fire: '1 / 0'}
+      fine: {probability: 0.000001}
+    arcs:
+      - a -> broken
+      - broken -> b
+      - a -> fine
+      - fine -> b
+)Y",
+                diags);
+  ASSERT_TRUE(s) << diags.str();
+  EXPECT_EQ(s->fire("main/broken"), "");  // it starts; its pre_fire raises
+  ASSERT_TRUE(s->simulation().scriptHalt());
+  EXPECT_EQ(s->fire("main/fine"), "'main/fine' cannot start: the model's scripts have stopped");
+}
+
 TEST(Session, WhatAFireEnablesStartsAtTheNextStep) {
   core::Diagnostics diags;
   auto s = open(R"Y(gdpn: 1

@@ -64,8 +64,8 @@ class Kernel {
 
   /// Starts `t` now, outside the firing phase: the user's "fire the selected transition".
   /// Returns "" when it started, or why not: it is occurring, a term does not hold (the first
-  /// such is named), its guard is false, or no node token satisfies its predicates. Its
-  /// probability is not drawn: the user chose it.
+  /// such is named), the scripts have stopped (an error, a timeout), its guard is false, or
+  /// no node token satisfies its predicates. Its probability is not drawn: the user chose it.
   std::string fire(TransitionId t);
   /// Steps taken since start, with the net on or off; now() == steps() * dt.
   [[nodiscard]] std::int64_t steps() const { return step_ + idle_; }
