@@ -11,6 +11,8 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "gdpn/core/memory.h"
+#include "gdpn/core/name_table.h"
 #include "gdpn/core/text.h"
 #include "gdpn/net/builder.h"
 
@@ -19,18 +21,29 @@ namespace {
 
 using core::Diagnostics;
 
-/// What a name on a page stands for.
-struct Local {
-  enum class What : std::uint8_t { Place, Transition, Link };
-  What what;
-  std::uint32_t index;  // page-local index of the place/transition, or flat PlaceId for links
+/// One end of an arc, resolved on its page.
+struct End {
+  enum class What : std::uint8_t { None, Place, Transition, Link };
+  What what = What::None;     // None: the name reaches nothing (reported)
+  std::uint32_t index = 0;     // page-local place or transition; for a link, the reference's index in its type
+  std::uint32_t instance = 0;  // for a link: the page-local instance
 };
+
+/// What checking a page found, kept to instantiate the page as often as it is used without
+/// looking a name up again.
+struct PageIndex {
+  std::vector<std::pair<End, End>> arcs;        // per arc: from, to
+  std::vector<const PageSpec*> instance_types;  // per instance; nullptr when its type is unknown
+  std::vector<std::uint32_t> reference_places;  // per reference: the page-local place it publishes
+};
+
+constexpr std::uint32_t kNone = 0xffffffffu;
 
 /// One (construct, slot) vertex of the slot-kind graph, with the declaration that fixed it.
 struct KindSource {
   SlotKind kind = SlotKind::Control;
-  SourceLoc loc;
-  std::string place;  // qualified place name that declared it
+  const SourceLoc* loc = nullptr;  // in the spec
+  PlaceId place = 0;               // the flat place that declared it
 };
 
 class Compiler {
@@ -43,14 +56,13 @@ class Compiler {
     for (const auto& page : spec_.pages) checkPage(page, false);
     for (const auto& type : spec_.page_types) checkPage(type, true);
     if (diags_.hasErrors()) return nullptr;
-
+    reserveFlat();
     for (const auto& page : spec_.pages) {
-      std::vector<std::string> stack;
+      std::vector<const PageSpec*> stack;
       instantiate(page, page.name, "", stack);
     }
     if (diags_.hasErrors()) return nullptr;
     resolveKinds();
-    checkParallelArcs();
     checkBalance();
     checkPredicates();
     if (diags_.hasErrors()) return nullptr;
@@ -110,58 +122,81 @@ class Compiler {
 
   void checkPage(const PageSpec& page, bool is_type) {
     checkName(page.name, page.loc, is_type ? "page type" : "page");
-    // places, transitions and instances share the page's namespace; the first of a name is
-    // what arcs that name reach
+    PageIndex& index = indexes_[&page];
+    const auto n_places = static_cast<std::uint32_t>(page.places.size());
+    const auto n_named = n_places + static_cast<std::uint32_t>(page.transitions.size());
+    // places, transitions and instances share the page's namespace (ids in that order); the
+    // first of a name is what arcs that name reach
+    const NameOf name_of{page};
     names_.clear();
-    names_.reserve(page.places.size() + page.transitions.size() + page.instances.size());
-    auto claim = [&](const std::string& name, const SourceLoc& loc, const char* what, Named named) {
-      checkName(name, loc, what);
-      named.loc = &loc;
-      auto [it, fresh] = names_.emplace(name, named);
-      if (!fresh) {
-        diags_.error(loc, std::string("name '") + name + "' is used twice on page '" + page.name + "'");
-        diags_.note(*it->second.loc, "first used here");
-      }
-    };
-    for (const auto& p : page.places) {
-      claim(p.name, p.loc, "place", {nullptr, Local::What::Place, nullptr});
-      checkPlaceValues(p);
+    names_.insertAll(n_named + static_cast<std::uint32_t>(page.instances.size()), name_of,
+                     [&](std::uint32_t id, std::uint32_t first) {
+                       diags_.error(name_of.loc(id), "name '" + std::string(name_of(id)) +
+                                                         "' is used twice on page '" + page.name + "'");
+                       diags_.note(name_of.loc(first), "first used here");
+                     });
+    for (std::uint32_t i = 0; i < n_places; ++i) {
+      checkName(page.places[i].name, page.places[i].loc, "place");
+      checkPlaceValues(page.places[i]);
     }
-    for (const auto& t : page.transitions) {
-      claim(t.name, t.loc, "transition", {nullptr, Local::What::Transition, nullptr});
+    for (std::uint32_t i = 0; i < page.transitions.size(); ++i) {
+      const auto& t = page.transitions[i];
+      checkName(t.name, t.loc, "transition");
       checkDuration(t.duration, t.name);
       if (!(t.probability > 0.0 && t.probability <= 1.0)) {
         diags_.error(t.probability_loc, "probability of transition '" + t.name +
                                             "' must lie in (0, 1], got " + core::formatDouble(t.probability));
       }
     }
-    for (const auto& i : page.instances) {
-      claim(i.name, i.loc, "instance", {nullptr, std::nullopt, &i});
-      if (!types_.count(i.type)) {
+    for (std::uint32_t i = 0; i < page.instances.size(); ++i) {
+      const auto& inst = page.instances[i];
+      checkName(inst.name, inst.loc, "instance");
+      const auto type = types_.find(inst.type);
+      index.instance_types.push_back(type == types_.end() ? nullptr : type->second);
+      if (type == types_.end()) {
         std::vector<std::string> known;
-        for (const auto& [name, type] : types_) known.push_back(name);
+        for (const auto& [name, t] : types_) known.push_back(name);
         std::sort(known.begin(), known.end());
-        diags_.error(i.type_loc, "unknown page type '" + i.type + "'" + core::didYouMean(i.type, known));
+        diags_.error(inst.type_loc, "unknown page type '" + inst.type + "'" + core::didYouMean(inst.type, known));
       }
     }
     for (const auto& r : page.references) {
-      const auto named = names_.find(r.place);
-      if (named == names_.end() || named->second.end != Local::What::Place) {
+      const auto id = names_.find(r.place, name_of);
+      index.reference_places.push_back(id && *id < n_places ? *id : kNone);
+      if (!id || *id >= n_places) {
         diags_.error(r.loc, "reference '" + r.place + "' names no place of page type '" + page.name + "'" +
                                 core::didYouMean(r.place, placeNames(page)));
       }
     }
-    for (const auto& a : page.arcs) checkArc(page, a);
-    // one pass over the arcs, not one per transition
-    std::unordered_set<std::string_view> targets;
-    for (const auto& a : page.arcs) targets.insert(a.to);
-    for (const auto& t : page.transitions) {
-      if (!targets.count(t.name)) {
-        diags_.warning(t.loc, "transition '" + t.name + "' has no input arcs: it starts again in every "
-                              "step it is not occurring");
+    index.arcs.reserve(page.arcs.size());
+    std::vector<bool> has_input(page.transitions.size(), false);  // one pass over the arcs
+    for (const auto& a : page.arcs) {
+      index.arcs.push_back(checkArc(page, a, name_of));
+      if (index.arcs.back().second.what == End::What::Transition) has_input[index.arcs.back().second.index] = true;
+    }
+    for (std::uint32_t i = 0; i < page.transitions.size(); ++i) {
+      if (!has_input[i]) {
+        diags_.warning(page.transitions[i].loc, "transition '" + page.transitions[i].name +
+                                                    "' has no input arcs: it starts again in every step it is "
+                                                    "not occurring");
       }
     }
+    checkParallelArcs(page, index);
   }
+
+  /// The name and declaration of each id of a page's namespace (see checkPage).
+  struct NameOf {
+    const PageSpec& page;
+    std::string_view operator()(std::uint32_t id) const { return item(id).first; }
+    const SourceLoc& loc(std::uint32_t id) const { return *item(id).second; }
+    std::pair<std::string_view, const SourceLoc*> item(std::uint32_t id) const {
+      if (id < page.places.size()) return {page.places[id].name, &page.places[id].loc};
+      id -= static_cast<std::uint32_t>(page.places.size());
+      if (id < page.transitions.size()) return {page.transitions[id].name, &page.transitions[id].loc};
+      id -= static_cast<std::uint32_t>(page.transitions.size());
+      return {page.instances[id].name, &page.instances[id].loc};
+    }
+  };
 
   static std::vector<std::string> placeNames(const PageSpec& page) {
     std::vector<std::string> out;
@@ -194,36 +229,41 @@ class Compiler {
   }
 
   /// Resolves an arc end on `page` to what it names, reporting unknown names.
-  std::optional<Local::What> endKind(const PageSpec& page, const std::string& name, const SourceLoc& loc) {
-    if (auto named = names_.find(name); named != names_.end() && named->second.end) return named->second.end;
+  End endOf(const PageSpec& page, const std::string& name, const SourceLoc& loc, const NameOf& name_of) {
+    const auto n_places = static_cast<std::uint32_t>(page.places.size());
+    const auto n_named = n_places + static_cast<std::uint32_t>(page.transitions.size());
+    if (const auto id = names_.find(name, name_of); id && *id < n_named) {
+      return *id < n_places ? End{End::What::Place, *id, 0} : End{End::What::Transition, *id - n_places, 0};
+    }
     const auto slash = name.find('/');
     if (slash != std::string::npos) {
-      const std::string inst = name.substr(0, slash);
-      const std::string ref = name.substr(slash + 1);
-      if (auto found = names_.find(inst); found != names_.end() && found->second.instance) {
-        const InstanceSpec& i = *found->second.instance;
+      const std::string_view inst = std::string_view(name).substr(0, slash);
+      const std::string_view ref = std::string_view(name).substr(slash + 1);
+      if (const auto id = names_.find(inst, name_of); id && *id >= n_named) {
+        const InstanceSpec& i = page.instances[*id - n_named];
         auto type = types_.find(i.type);
-        if (type == types_.end()) return std::nullopt;  // reported with the instance
+        if (type == types_.end()) return {};  // reported with the instance
         std::vector<std::string> refs;
-        for (const auto& r : type->second->references) {
-          if (r.place == ref) return Local::What::Link;
-          refs.push_back(r.place);
+        const auto& references = type->second->references;
+        for (std::uint32_t k = 0; k < references.size(); ++k) {
+          if (references[k].place == ref) return {End::What::Link, k, *id - n_named};
+          refs.push_back(references[k].place);
         }
-        diags_.error(loc, "instance '" + inst + "' of page type '" + i.type + "' has no reference '" + ref +
-                              "'" + core::didYouMean(ref, refs));
-        return std::nullopt;
+        diags_.error(loc, "instance '" + std::string(inst) + "' of page type '" + i.type + "' has no reference '" +
+                              std::string(ref) + "'" + core::didYouMean(std::string(ref), refs));
+        return {};
       }
     }
     std::vector<std::string> known = placeNames(page);
     for (const auto& t : page.transitions) known.push_back(t.name);
     diags_.error(loc, "'" + name + "' names no place, transition or link on page '" + page.name + "'" +
                           core::didYouMean(name, known));
-    return std::nullopt;
+    return {};
   }
 
-  void checkArc(const PageSpec& page, const ArcSpec& a) {
-    const auto from = endKind(page, a.from, a.from_loc);
-    const auto to = endKind(page, a.to, a.to_loc);
+  std::pair<End, End> checkArc(const PageSpec& page, const ArcSpec& a, const NameOf& name_of) {
+    const End from = endOf(page, a.from, a.from_loc, name_of);
+    const End to = endOf(page, a.to, a.to_loc, name_of);
     for (const auto& w : a.weights) {
       if (w.value < 1) {
         diags_.error(w.loc, "arc weight must be at least 1, got " + std::to_string(w.value));
@@ -243,18 +283,82 @@ class Compiler {
         diags_.error(pred.expression.loc, "a predicate belongs on a normal or test input arc, not an inhibitor");
       }
     }
-    if (!from || !to) return;
-    const bool from_t = *from == Local::What::Transition;
+    if (from.what == End::What::None || to.what == End::What::None) return {from, to};
+    const bool from_t = from.what == End::What::Transition;
     if (from_t && !a.predicates.empty()) {
       diags_.error(a.predicates[0].expression.loc, "a predicate belongs on an input arc (place to transition)");
     }
-    const bool to_t = *to == Local::What::Transition;
+    const bool to_t = to.what == End::What::Transition;
     if (from_t == to_t) {
       diags_.error(a.loc, std::string("an arc joins a place and a transition, but '") + a.from + "' and '" +
                               a.to + "' are both " + (from_t ? "transitions" : "places"));
-    } else if (from_t && a.kind != ArcKind::Normal) {
+      return {};
+    }
+    if (from_t && a.kind != ArcKind::Normal) {
       diags_.error(a.loc, std::string(a.kind == ArcKind::Inhibitor ? "an " : "a ") + arcKindName(a.kind) +
                               " arc must run from a place to a transition");
+    }
+    return {from, to};
+  }
+
+  /// One arc that moves tokens each way between a place slot and a transition: two would each
+  /// find the tokens (two outputs: the room) that only their sum needs. Checked on the page,
+  /// once however many instances it has: a transition and its arcs always share a page.
+  void checkParallelArcs(const PageSpec& page, const PageIndex& index) {
+    struct Use {
+      std::uint64_t place;  // page-local place, or (instance + 1) << 32 | reference
+      std::uint32_t arc;
+      SlotId slot;
+      bool output;
+      auto key() const { return std::tuple(output, slot, place, arc); }
+    };
+    std::vector<std::uint32_t> begin(page.transitions.size() + 1, 0);
+    std::vector<std::pair<std::uint32_t, Use>> uses;  // transition, use
+    for (std::uint32_t i = 0; i < page.arcs.size(); ++i) {
+      const auto& [from, to] = index.arcs[i];
+      if (from.what == End::What::None || to.what == End::What::None) continue;
+      const bool output = from.what == End::What::Transition;
+      const auto& a = page.arcs[i];
+      if (!output && a.kind != ArcKind::Normal) continue;
+      const End& place = output ? to : from;
+      const std::uint64_t key = place.what == End::What::Place
+                                    ? place.index
+                                    : (std::uint64_t{place.instance} + 1) << 32 | place.index;
+      forEachWeight(a, [&](SlotId slot, std::int64_t, const SourceLoc&) {
+        uses.push_back({(output ? from : to).index, Use{key, i, slot, output}});
+        ++begin[uses.back().first + 1];
+      });
+    }
+    if (uses.size() < 2) return;
+    // group by transition (counting sort), then sort each group, which is small
+    for (std::size_t t = 0; t + 1 < begin.size(); ++t) begin[t + 1] += begin[t];
+    std::vector<Use> grouped(uses.size());
+    std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
+    for (const auto& [t, use] : uses) grouped[fill[t]++] = use;
+    std::vector<std::tuple<std::uint32_t, std::uint32_t, SlotId>> found;  // second arc, first arc, slot
+    for (std::size_t t = 0; t + 1 < begin.size(); ++t) {
+      const auto first = grouped.begin() + begin[t], last = grouped.begin() + begin[t + 1];
+      if (last - first < 2) continue;
+      auto same = [](const Use& x, const Use& y) { return x.output == y.output && x.slot == y.slot && x.place == y.place; };
+      if (last - first <= 8) {  // the usual transition: a few arcs, compared pairwise in arc order
+        for (auto u = first + 1; u != last; ++u) {
+          const auto head = std::find_if(first, u, [&](const Use& x) { return same(x, *u); });
+          if (head != u) found.emplace_back(u->arc, head->arc, u->slot);
+        }
+        continue;
+      }
+      std::sort(first, last, [](const Use& x, const Use& y) { return x.key() < y.key(); });
+      for (auto u = first + 1, head = first; u != last; ++u) {
+        if (same(*u, *head)) found.emplace_back(u->arc, head->arc, u->slot);
+        else head = u;
+      }
+    }
+    std::sort(found.begin(), found.end());
+    for (const auto& [second, first, slot] : found) {
+      const auto& a = page.arcs[second];
+      diags_.error(a.loc, "a second arc from '" + page.name + "/" + a.from + "' to '" + page.name + "/" + a.to +
+                              "' on slot " + slotName(slot) + ": give one arc the sum of their weights");
+      diags_.note(page.arcs[first].loc, "the first arc is here");
     }
   }
 
@@ -276,99 +380,148 @@ class Compiler {
     const ArcSpec* spec;
   };
 
-  /// Expands `page` under `prefix`; returns the flat PlaceIds of its places (by local index).
-  std::vector<PlaceId> instantiate(const PageSpec& page, const std::string& prefix,
-                                   const std::string& node_prefix, std::vector<std::string>& stack) {
-    std::vector<PlaceId> place_ids;
-    place_ids.reserve(page.places.size());
-    std::unordered_map<std::string_view, Local> scope;  // places and transitions
-    std::unordered_map<std::string, Local> links;       // "instance/reference"
-    scope.reserve(page.places.size() + page.transitions.size());
-    for (std::uint32_t i = 0; i < page.places.size(); ++i) {
-      const auto& p = page.places[i];
-      const auto id = static_cast<PlaceId>(places_.size());
-      places_.push_back({&p, prefix + "/" + p.name, node_prefix});
-      place_ids.push_back(id);
-      scope.emplace(p.name, Local{Local::What::Place, id});
+  /// Flat places, transitions and arcs of `page` with its instances expanded (a cycle counts
+  /// nothing: it is reported by instantiate()).
+  std::array<std::size_t, 3> flatSize(const PageSpec& page, std::unordered_map<const PageSpec*, std::array<std::size_t, 3>>& memo) {
+    if (auto it = memo.find(&page); it != memo.end()) return it->second;
+    memo[&page] = {0, 0, 0};  // in progress
+    std::array<std::size_t, 3> n{page.places.size(), page.transitions.size(), page.arcs.size()};
+    const auto& index = indexes_.at(&page);
+    for (const PageSpec* type : index.instance_types) {
+      const auto inner = flatSize(*type, memo);
+      for (std::size_t k = 0; k < 3; ++k) n[k] += inner[k];
     }
-    for (const auto& inst : page.instances) {
-      const PageSpec* type = types_.at(inst.type);
-      if (std::find(stack.begin(), stack.end(), inst.type) != stack.end()) {
+    return memo[&page] = n;
+  }
+
+  void reserveFlat() {
+    std::unordered_map<const PageSpec*, std::array<std::size_t, 3>> memo;
+    std::array<std::size_t, 3> n{0, 0, 0};
+    for (const auto& page : spec_.pages) {
+      const auto size = flatSize(page, memo);
+      for (std::size_t k = 0; k < 3; ++k) n[k] += size[k];
+    }
+    core::reserveLarge(places_, n[0]);
+    core::reserveLarge(transitions_, n[1]);
+    core::reserveLarge(arcs_, n[2]);
+  }
+
+  /// Expands `page` under `prefix`: its places first (so an instance's own places are
+  /// consecutive from the first), then its instances, its transitions and its arcs.
+  void instantiate(const PageSpec& page, const std::string& prefix, const std::string& node_prefix,
+                   std::vector<const PageSpec*>& stack) {
+    const PageIndex& index = indexes_.at(&page);
+    const auto base = static_cast<PlaceId>(places_.size());
+    for (const auto& p : page.places) places_.push_back({&p, prefix + "/" + p.name, node_prefix});
+    std::vector<PlaceId> inner(page.instances.size(), kNone);  // the first place of each instance
+    for (std::size_t k = 0; k < page.instances.size(); ++k) {
+      const auto& inst = page.instances[k];
+      const PageSpec* type = index.instance_types[k];
+      if (std::find(stack.begin(), stack.end(), type) != stack.end()) {
         std::string chain;
-        for (const auto& s : stack) chain += s + " -> ";
+        for (const auto* s : stack) chain += s->name + " -> ";
         diags_.error(inst.loc, "page type '" + inst.type + "' contains itself (" + chain + inst.type + ")");
         continue;
       }
-      stack.push_back(inst.type);
-      auto inner = instantiate(*type, prefix + "/" + inst.name, node_prefix + inst.name + "/", stack);
+      inner[k] = static_cast<PlaceId>(places_.size());
+      stack.push_back(type);
+      instantiate(*type, prefix + "/" + inst.name, node_prefix + inst.name + "/", stack);
       stack.pop_back();
-      std::unordered_set<std::string_view> published;
-      for (const auto& r : type->references) published.insert(r.place);
-      for (std::size_t k = 0; k < type->places.size() && !published.empty(); ++k) {
-        if (published.count(type->places[k].name)) {
-          links.emplace(inst.name + "/" + type->places[k].name, Local{Local::What::Link, inner[k]});
-        }
-      }
     }
-    for (const auto& t : page.transitions) {
-      const auto id = static_cast<TransitionId>(transitions_.size());
-      transitions_.push_back({&t, prefix + "/" + t.name});
-      scope.emplace(t.name, Local{Local::What::Transition, id});
-    }
-    auto resolve = [&](const std::string& name) -> const Local* {
-      if (auto it = scope.find(name); it != scope.end()) return &it->second;
-      if (auto it = links.find(name); it != links.end()) return &it->second;
-      return nullptr;
+    const auto tbase = static_cast<TransitionId>(transitions_.size());
+    for (const auto& t : page.transitions) transitions_.push_back({&t, prefix + "/" + t.name});
+    auto placeOf = [&](const End& end) -> PlaceId {
+      if (end.what == End::What::Place) return base + end.index;
+      if (inner[end.instance] == kNone) return kNone;  // only after a cycle error
+      const PageIndex& type = indexes_.at(index.instance_types[end.instance]);
+      return inner[end.instance] + type.reference_places[end.index];
     };
-    arcs_.reserve(arcs_.size() + page.arcs.size());
-    for (const auto& a : page.arcs) {
-      const Local* from = resolve(a.from);
-      const Local* to = resolve(a.to);
-      if (!from || !to) continue;  // only after a cycle error
-      const bool output = from->what == Local::What::Transition;
-      const PlaceId place = output ? to->index : from->index;
-      const TransitionId transition = output ? from->index : to->index;
-      arcs_.push_back({place, transition, output, &a});
+    for (std::size_t i = 0; i < page.arcs.size(); ++i) {
+      const auto& [from, to] = index.arcs[i];
+      if (from.what == End::What::None || to.what == End::What::None) continue;  // reported
+      const bool output = from.what == End::What::Transition;
+      const PlaceId place = placeOf(output ? to : from);
+      if (place == kNone) continue;
+      arcs_.push_back({place, tbase + (output ? from : to).index, output, &page.arcs[i]});
     }
-    return place_ids;
   }
 
-  // ---- slot kinds: union-find over (place, slot) and (transition, slot) ----
+  // ---- slot kinds: union-find over (place, slot) and (transition, slot), for the slots the
+  // net uses (most nets use one or two of the 32) ----
 
-  std::uint32_t placeVertex(PlaceId p, SlotId s) const { return p * kSlotCount + s; }
+  std::uint32_t placeVertex(PlaceId p, SlotId s) const { return p * slots_used_ + dense_slot_[s]; }
   std::uint32_t transitionVertex(TransitionId t, SlotId s) const {
-    return static_cast<std::uint32_t>(places_.size() + t) * kSlotCount + s;
+    return static_cast<std::uint32_t>(places_.size() + t) * slots_used_ + dense_slot_[s];
   }
   std::uint32_t find(std::uint32_t v) {
     while (parent_[v] != v) v = parent_[v] = parent_[parent_[v]];
     return v;
   }
+  /// The kind of the component of `vertex`: what its first declaration says, else control.
+  SlotKind kindOf(std::uint32_t vertex) { return root_kind_[find(vertex)]; }
 
-  static std::vector<SlotCount> weightsOf(const ArcSpec& a) {
-    if (!a.weights.empty() || !a.conditions.empty()) return a.weights;  // a condition alone moves no tokens
-    return {SlotCount{kDefaultSlot, 1, a.loc}};
+  /// Calls `f(slot, tokens, loc)` for each slot arc `a` moves tokens on: its weights, or one
+  /// token on the default slot when it names none (a condition alone moves no tokens).
+  template <class F>
+  static void forEachWeight(const ArcSpec& a, F&& f) {
+    if (!a.weights.empty() || !a.conditions.empty()) {
+      for (const auto& w : a.weights) f(w.slot, w.value, w.loc);
+    } else {
+      f(kDefaultSlot, std::int64_t{1}, a.loc);
+    }
+  }
+
+  /// Numbers the slots that any arc or place names, densely.
+  void numberSlots() {
+    std::uint32_t used = 1u << kDefaultSlot;
+    auto use = [&](SlotId s) { used |= 1u << s; };
+    for (const auto& a : arcs_) {
+      for (const auto& w : a.spec->weights) use(w.slot);
+      for (const auto& c : a.spec->conditions) use(c.slot);
+      for (const auto& p : a.spec->predicates) use(p.slot);
+    }
+    const PlaceSpec* last = nullptr;
+    for (const auto& fp : places_) {
+      if (fp.spec == last) continue;  // instances of one type follow one another
+      last = fp.spec;
+      for (const auto& d : fp.spec->kinds) use(d.slot);
+      for (const auto& t : fp.spec->tokens) use(t.slot);
+      for (const auto& n : fp.spec->nodes) use(n.slot);
+      for (const auto& c : fp.spec->capacity) use(c.slot);
+      for (const auto& sc : fp.spec->scripts) use(sc.slot);
+      for (const auto& b : fp.spec->sensors) use(b.slot);
+    }
+    slots_used_ = 0;
+    for (int s = 0; s < kSlotCount; ++s) dense_slot_[static_cast<std::size_t>(s)] = (used >> s & 1u) ? slots_used_++ : 0;
   }
 
   void resolveKinds() {
-    parent_.resize((places_.size() + transitions_.size()) * kSlotCount);
+    numberSlots();
+    parent_.resize((places_.size() + transitions_.size()) * slots_used_);
     std::iota(parent_.begin(), parent_.end(), 0u);
     for (const auto& a : arcs_) {
-      for (const auto& w : weightsOf(*a.spec)) {
-        parent_[find(placeVertex(a.place, w.slot))] = find(transitionVertex(a.transition, w.slot));
-      }
+      forEachWeight(*a.spec, [&](SlotId slot, std::int64_t, const SourceLoc&) {
+        parent_[find(placeVertex(a.place, slot))] = find(transitionVertex(a.transition, slot));
+      });
     }
     // declarations in declaration order: the first one fixes the kind of its component
-    std::unordered_map<std::uint32_t, KindSource> kinds;
+    root_kind_.assign(parent_.size(), SlotKind::Control);
+    std::vector<KindSource> sources;
+    std::vector<std::uint32_t> source_of(parent_.size(), kNone);  // per root: its entry in sources
     auto declare = [&](PlaceId p, SlotId slot, SlotKind kind, const SourceLoc& loc) {
       const auto root = find(placeVertex(p, slot));
-      auto [it, fresh] = kinds.try_emplace(root, KindSource{kind, loc, places_[p].name});
-      if (!fresh && it->second.kind != kind) {
-        diags_.error(loc, "slot " + slotName(slot) + " is " + slotKindName(kind) + " on place '" +
-                              places_[p].name + "' but " + slotKindName(it->second.kind) + " on place '" +
-                              it->second.place + "', and arcs join the two");
-        diags_.note(it->second.loc, "slot " + slotName(slot) + " of '" + it->second.place + "' is " +
-                                        slotKindName(it->second.kind) + " here");
+      if (source_of[root] == kNone) {
+        source_of[root] = static_cast<std::uint32_t>(sources.size());
+        sources.push_back({kind, &loc, p});
+        root_kind_[root] = kind;
+        return;
       }
+      const KindSource& first = sources[source_of[root]];
+      if (first.kind == kind) return;
+      const std::string& other = places_[first.place].name;
+      diags_.error(loc, "slot " + slotName(slot) + " is " + slotKindName(kind) + " on place '" + places_[p].name +
+                            "' but " + slotKindName(first.kind) + " on place '" + other + "', and arcs join the two");
+      diags_.note(*first.loc, "slot " + slotName(slot) + " of '" + other + "' is " + slotKindName(first.kind) + " here");
     };
     for (PlaceId p = 0; p < places_.size(); ++p) {
       const auto& spec = *places_[p].spec;
@@ -378,20 +531,16 @@ class Compiler {
       for (const auto& b : spec.sensors) declare(p, b.slot, SlotKind::Sensor, b.loc);
     }
     // a sensor slot carries no tokens: nothing may flow through it (one pass over the arcs)
-    const bool sensors = std::any_of(kinds.begin(), kinds.end(), [](const auto& k) { return k.second.kind == SlotKind::Sensor; });
+    const bool sensors = std::any_of(sources.begin(), sources.end(), [](const auto& k) { return k.kind == SlotKind::Sensor; });
     for (const auto& a : arcs_) {
       if (!sensors) break;
-      for (const auto& w : weightsOf(*a.spec)) {
-        if (auto k = kinds.find(find(placeVertex(a.place, w.slot))); k != kinds.end() && k->second.kind == SlotKind::Sensor) {
-          diags_.error(w.loc, "slot " + slotName(w.slot) + " of '" + places_[a.place].name +
-                                  "' reads a sensor and carries no tokens; give the arc a condition instead");
+      forEachWeight(*a.spec, [&](SlotId slot, std::int64_t, const SourceLoc& loc) {
+        if (kindOf(placeVertex(a.place, slot)) == SlotKind::Sensor) {
+          diags_.error(loc, "slot " + slotName(slot) + " of '" + places_[a.place].name +
+                                "' reads a sensor and carries no tokens; give the arc a condition instead");
         }
-      }
+      });
     }
-    kind_of_ = [this, kinds = std::move(kinds)](std::uint32_t vertex) {
-      auto it = kinds.find(find(vertex));
-      return it == kinds.end() ? SlotKind::Control : it->second.kind;
-    };
   }
 
   void checkPredicates() {
@@ -399,50 +548,16 @@ class Compiler {
       for (const auto& c : a.spec->conditions) {
         if (a.output) {
           diags_.error(c.expression.loc, "a condition belongs on an arc from a place to a transition");
-        } else if (kind_of_(placeVertex(a.place, c.slot)) != SlotKind::Sensor) {
+        } else if (kindOf(placeVertex(a.place, c.slot)) != SlotKind::Sensor) {
           diags_.error(c.expression.loc, "a condition reads a sensor slot, but slot " + slotName(c.slot) + " of '" +
                                              places_[a.place].name + "' is not one (declare it under 'sensors')");
         }
       }
       for (const auto& pred : a.spec->predicates) {
-        if (kind_of_(placeVertex(a.place, pred.slot)) != SlotKind::Node) {
+        if (kindOf(placeVertex(a.place, pred.slot)) != SlotKind::Node) {
           diags_.error(pred.expression.loc, "a predicate selects node tokens, but slot " + slotName(pred.slot) +
                                                 " of '" + places_[a.place].name + "' is a control slot");
         }
-      }
-    }
-  }
-
-  void checkParallelArcs() {
-    // one arc that moves tokens each way between a place slot and a transition: two would
-    // each find the tokens (two outputs: the room) that only their sum needs
-    struct Key {
-      PlaceId place;
-      TransitionId transition;
-      bool output;
-      SlotId slot;
-      bool operator==(const Key&) const = default;
-    };
-    struct Hash {
-      std::size_t operator()(const Key& k) const {
-        const std::uint64_t ends = (std::uint64_t{k.place} << 32) | k.transition;
-        return std::hash<std::uint64_t>()(ends * 0x9e3779b97f4a7c15ull + std::uint64_t{k.slot} * 2 + (k.output ? 1 : 0));
-      }
-    };
-    std::unordered_map<Key, const ArcSpec*, Hash> first;  // hashed: a tree of millions of arcs is slow
-    first.reserve(arcs_.size());
-    std::set<std::pair<const ArcSpec*, const ArcSpec*>> reported;  // a page type's arcs once, not per instance
-    for (const auto& a : arcs_) {
-      if (!a.output && a.spec->kind != ArcKind::Normal) continue;
-      for (const auto& w : weightsOf(*a.spec)) {
-        const auto [it, fresh] = first.try_emplace({a.place, a.transition, a.output, w.slot}, a.spec);
-        if (fresh || !reported.insert({it->second, a.spec}).second) continue;
-        const std::string& place = places_[a.place].name;
-        const std::string& transition = transitions_[a.transition].name;
-        diags_.error(a.spec->loc, "a second arc from '" + (a.output ? transition : place) + "' to '" +
-                                      (a.output ? place : transition) + "' on slot " + slotName(w.slot) +
-                                      ": give one arc the sum of their weights");
-        diags_.note(it->second->loc, "the first arc is here");
       }
     }
   }
@@ -452,11 +567,11 @@ class Compiler {
     std::map<std::pair<TransitionId, SlotId>, std::pair<std::int64_t, std::int64_t>> flow;
     for (const auto& a : arcs_) {
       if (!a.output && a.spec->kind != ArcKind::Normal) continue;
-      for (const auto& w : weightsOf(*a.spec)) {
-        if (kind_of_(transitionVertex(a.transition, w.slot)) != SlotKind::Node) continue;
-        auto& [in, out] = flow[{a.transition, w.slot}];
-        (a.output ? out : in) += w.value;
-      }
+      forEachWeight(*a.spec, [&](SlotId slot, std::int64_t value, const SourceLoc&) {
+        if (kindOf(transitionVertex(a.transition, slot)) != SlotKind::Node) return;
+        auto& [in, out] = flow[{a.transition, slot}];
+        (a.output ? out : in) += value;
+      });
     }
     for (const auto& [key, io] : flow) {
       if (io.first == io.second) continue;
@@ -478,10 +593,11 @@ class Compiler {
   }
 
   void emit() {
+    builder_.reserve(places_.size(), transitions_.size(), arcs_.size());
     if (!spec_.globals.empty()) builder_.setGlobalsScript(scriptIndex(spec_.globals));
     for (PlaceId p = 0; p < places_.size(); ++p) {
-      const auto& fp = places_[p];
-      builder_.addPlace(fp.name, fp.spec->loc);
+      auto& fp = places_[p];
+      builder_.addPlace(std::move(fp.name), fp.spec->loc);  // names are not needed after this
       std::uint32_t used = 0;
       for (const auto& d : fp.spec->kinds) used |= 1u << d.slot;
       for (const auto& t : fp.spec->tokens) used |= 1u << t.slot;
@@ -492,7 +608,7 @@ class Compiler {
       for (int s = 0; s < kSlotCount; ++s) {
         if (!(used & (1u << s))) continue;
         const auto slot = static_cast<SlotId>(s);
-        builder_.setSlot(p, slot, kind_of_(placeVertex(p, slot)), capacityFor(p, slot), initialFor(p, slot));
+        builder_.setSlot(p, slot, kindOf(placeVertex(p, slot)), capacityFor(p, slot), initialFor(p, slot));
         for (const auto& n : fp.spec->nodes) {
           if (n.slot != slot) continue;
           std::vector<std::string> qualified;
@@ -510,9 +626,9 @@ class Compiler {
         }
       }
     }
-    for (const auto& ft : transitions_) {
+    for (auto& ft : transitions_) {
       const auto& s = *ft.spec;
-      const auto t = builder_.addTransition(ft.name, s.duration, s.priority, s.probability, s.loc);
+      const auto t = builder_.addTransition(std::move(ft.name), s.duration, s.priority, s.probability, s.loc);
       for (const ScriptKind k : kTransitionScripts) {
         if (!scriptOf(s, k).empty()) builder_.setTransitionScript(t, k, scriptIndex(scriptOf(s, k)));
       }
@@ -521,20 +637,19 @@ class Compiler {
       if (!a.output) {
         for (const auto& c : a.spec->conditions) builder_.addCondition(a.place, a.transition, c.slot, scriptIndex(c.expression));
       }
-      for (const auto& w : weightsOf(*a.spec)) {
-        const SlotKind kind = kind_of_(placeVertex(a.place, w.slot));
+      forEachWeight(*a.spec, [&](SlotId slot, std::int64_t value, const SourceLoc&) {
+        const SlotKind kind = kindOf(placeVertex(a.place, slot));
         if (a.output) {
-          builder_.addOutput(a.transition, a.place, w.slot, static_cast<std::int32_t>(w.value));
+          builder_.addOutput(a.transition, a.place, slot, static_cast<std::int32_t>(value));
         } else {
-          builder_.addInput(a.place, a.transition, w.slot, static_cast<std::int32_t>(w.value), a.spec->kind);
+          builder_.addInput(a.place, a.transition, slot, static_cast<std::int32_t>(value), a.spec->kind);
           for (const auto& pred : a.spec->predicates) {
-            if (pred.slot == w.slot) builder_.setLastPredicate(scriptIndex(pred.expression));
+            if (pred.slot == slot) builder_.setLastPredicate(scriptIndex(pred.expression));
           }
         }
         // slots made by arcs take the kind of their component
-        const auto place = a.place;
-        builder_.setSlot(place, w.slot, kind, capacityFor(place, w.slot), initialFor(place, w.slot));
-      }
+        builder_.setSlot(a.place, slot, kind, capacityFor(a.place, slot), initialFor(a.place, slot));
+      });
     }
   }
 
@@ -554,18 +669,15 @@ class Compiler {
   const NetSpec& spec_;
   Diagnostics& diags_;
   std::unordered_map<std::string, const PageSpec*> types_;
-  // the page being checked: what each name names
-  struct Named {
-    const SourceLoc* loc;               // where it is declared
-    std::optional<Local::What> end;     // a place or transition: what an arc reaches
-    const InstanceSpec* instance;       // an instance
-  };
-  std::unordered_map<std::string_view, Named> names_;
+  core::NameTable names_;  // the page being checked: its namespace (see checkPage)
+  std::unordered_map<const PageSpec*, PageIndex> indexes_;
   std::vector<FlatPlace> places_;
   std::vector<FlatTransition> transitions_;
   std::vector<FlatArc> arcs_;
+  std::array<std::uint32_t, kSlotCount> dense_slot_{};  // slot -> its number among the used ones
+  std::uint32_t slots_used_ = 1;
   std::vector<std::uint32_t> parent_;
-  std::function<SlotKind(std::uint32_t)> kind_of_;
+  std::vector<SlotKind> root_kind_;
   std::unordered_map<const ScriptSpec*, std::int32_t> script_ids_;
   NetBuilder builder_;
 };

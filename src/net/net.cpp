@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "gdpn/core/assert.h"
+#include "gdpn/core/memory.h"
 #include "gdpn/net/builder.h"
 
 namespace gdpn::net {
@@ -17,13 +18,14 @@ const char* arcKindName(ArcKind kind) {
 }
 
 std::int64_t Net::findPlace(std::string_view qualified_name) const {
-  auto it = place_index_.find(std::string(qualified_name));
-  return it == place_index_.end() ? -1 : static_cast<std::int64_t>(it->second);
+  const auto id = place_index_.find(qualified_name, [this](std::uint32_t p) -> std::string_view { return places_[p].name; });
+  return id ? static_cast<std::int64_t>(*id) : -1;
 }
 
 std::int64_t Net::findTransition(std::string_view qualified_name) const {
-  auto it = transition_index_.find(std::string(qualified_name));
-  return it == transition_index_.end() ? -1 : static_cast<std::int64_t>(it->second);
+  const auto id = transition_index_.find(
+      qualified_name, [this](std::uint32_t t) -> std::string_view { return transitions_[t].name; });
+  return id ? static_cast<std::int64_t>(*id) : -1;
 }
 
 std::int64_t Net::findPlaceSlot(PlaceId place, SlotId slot) const {
@@ -45,27 +47,31 @@ std::size_t Net::memoryBytes() const {
   for (const auto& p : places_) bytes += heap(p.name) + heap(p.loc.file);
   for (const auto& t : transitions_) bytes += heap(t.name) + heap(t.loc.file) + heap(t.duration.loc.file);
   for (const auto& n : node_names_) bytes += sizeof(std::string) + heap(n);
-  // unordered_map: one node (key + value + next pointer + hash) and one bucket pointer per entry
-  const std::size_t entry = sizeof(std::string) + sizeof(std::uint32_t) + 2 * sizeof(void*) + sizeof(void*);
-  bytes += (place_index_.size() + transition_index_.size()) * entry;
-  for (const auto& [k, v] : place_index_) bytes += heap(k);
-  for (const auto& [k, v] : transition_index_) bytes += heap(k);
+  bytes += place_index_.memoryBytes() + transition_index_.memoryBytes();
   return bytes;
 }
 
+void NetBuilder::reserve(std::size_t places, std::size_t transitions, std::size_t terms) {
+  core::reserveLarge(places_, places);
+  core::reserveLarge(slots_, places);
+  core::reserveLarge(transitions_, transitions);
+  core::reserveLarge(arcs_, terms);
+}
+
 PlaceId NetBuilder::addPlace(std::string name, SourceLoc loc) {
-  places_.push_back({std::move(name), std::move(loc), {}});
+  places_.push_back({std::move(name), std::move(loc), kNoSlot});
   return static_cast<PlaceId>(places_.size() - 1);
 }
 
 NetBuilder::BuildSlot& NetBuilder::slotOf(PlaceId place, SlotId slot) {
-  auto& slots = places_[place].slots;
-  for (auto& s : slots) {
-    if (s.slot == slot) return s;
+  std::uint32_t* link = &places_[place].first;
+  while (*link != kNoSlot) {
+    if (slots_[*link].slot == slot) return slots_[*link];
+    link = &slots_[*link].next;
   }
-  slots.push_back({});
-  slots.back().slot = slot;
-  return slots.back();
+  *link = static_cast<std::uint32_t>(slots_.size());
+  slots_.emplace_back().slot = slot;
+  return slots_.back();
 }
 
 void NetBuilder::setSlot(PlaceId place, SlotId slot, SlotKind kind, std::int64_t capacity,
@@ -147,16 +153,20 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
   auto net = std::make_shared<Net>();
 
   // place slots: grouped per place, ordered by slot
-  net->places_.reserve(places_.size());
+  core::reserveLarge(net->places_, places_.size());
+  core::reserveLarge(net->place_slots_, slots_.size());
+  std::vector<std::uint32_t> chain;
   for (PlaceId p = 0; p < places_.size(); ++p) {
     auto& bp = places_[p];
-    std::sort(bp.slots.begin(), bp.slots.end(),
-              [](const BuildSlot& a, const BuildSlot& b) { return a.slot < b.slot; });
+    chain.clear();
+    for (auto i = bp.first; i != kNoSlot; i = slots_[i].next) chain.push_back(i);
+    std::sort(chain.begin(), chain.end(), [&](std::uint32_t a, std::uint32_t b) { return slots_[a].slot < slots_[b].slot; });
     Place place;
     place.name = std::move(bp.name);
     place.loc = std::move(bp.loc);
     place.slots_begin = static_cast<std::uint32_t>(net->place_slots_.size());
-    for (auto& s : bp.slots) {
+    for (const auto i : chain) {
+      auto& s = slots_[i];
       PlaceSlot ps;
       ps.place = p;
       ps.slot = s.slot;
@@ -190,13 +200,18 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
   std::vector<std::uint32_t> count(transitions_.size() + 1, 0);
   for (const auto& a : arcs_) ++count[a.transition + 1];
   for (std::size_t t = 0; t < transitions_.size(); ++t) count[t + 1] += count[t];
-  auto group = [](TermKind k) { return k == TermKind::Input ? 0 : k == TermKind::Output ? 2 : 1; };
-  std::stable_sort(arcs_.begin(), arcs_.end(), [&](const BuildArc& a, const BuildArc& b) {
-    if (a.transition != b.transition) return a.transition < b.transition;
-    return group(a.kind) < group(b.kind);
-  });
-  net->terms_.reserve(arcs_.size());
-  for (const auto& a : arcs_) {
+  // a stable counting sort by (transition, group): linear in the number of terms
+  auto group = [](TermKind k) -> std::uint32_t { return k == TermKind::Input ? 0 : k == TermKind::Output ? 2 : 1; };
+  std::vector<std::uint32_t> order(arcs_.size());
+  {
+    std::vector<std::uint32_t> next(transitions_.size() * 3 + 1, 0);
+    for (const auto& a : arcs_) ++next[a.transition * 3 + group(a.kind) + 1];
+    for (std::size_t k = 1; k < next.size(); ++k) next[k] += next[k - 1];
+    for (std::uint32_t i = 0; i < arcs_.size(); ++i) order[next[arcs_[i].transition * 3 + group(arcs_[i].kind)]++] = i;
+  }
+  core::reserveLarge(net->terms_, arcs_.size());
+  for (const auto i : order) {
+    const auto& a = arcs_[i];
     Term term;
     term.transition = a.transition;
     term.place_slot = psOf(a.place, a.slot);
@@ -241,7 +256,7 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
   priorities.erase(std::unique(priorities.begin(), priorities.end()), priorities.end());
   net->priority_levels_ = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(priorities.size()));
   for (auto& tr : transitions_) {
-    auto it = std::find(priorities.begin(), priorities.end(), tr.priority);
+    auto it = std::lower_bound(priorities.begin(), priorities.end(), tr.priority, std::greater<>());
     tr.priority_rank = static_cast<std::uint32_t>(it - priorities.begin());
   }
 
@@ -267,11 +282,13 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
   net->scripts_ = std::move(scripts_);
   net->globals_script_ = globals_script_;
   net->node_names_ = std::move(node_names_);
-  net->place_index_.reserve(net->places_.size());
-  for (PlaceId p = 0; p < net->places_.size(); ++p) net->place_index_.emplace(net->places_[p].name, p);
-  net->transition_index_.reserve(net->transitions_.size());
-  for (TransitionId t = 0; t < net->transitions_.size(); ++t)
-    net->transition_index_.emplace(net->transitions_[t].name, t);
+  const Net& frozen = *net;
+  auto ignore = [](std::uint32_t, std::uint32_t) {};  // the first of a name is found (compile() refuses twins)
+  net->place_index_.insertAll(static_cast<std::uint32_t>(frozen.places_.size()),
+                              [&](std::uint32_t p) -> std::string_view { return frozen.places_[p].name; }, ignore);
+  net->transition_index_.insertAll(static_cast<std::uint32_t>(frozen.transitions_.size()),
+                                   [&](std::uint32_t t) -> std::string_view { return frozen.transitions_[t].name; },
+                                   ignore);
 
   *this = NetBuilder{};
   return net;

@@ -128,5 +128,53 @@ TEST(Hierarchy, NodeTokensInAPageTypeAreQualifiedByTheInstance) {
   EXPECT_EQ(names, (std::vector<std::string>{"stationA/rod", "stationA/door", "stationB/rod", "stationB/door"}));
 }
 
+TEST(Hierarchy, ParallelArcsInAPageTypeAreReportedOnceAndArcsToALinkCount) {
+  NetSpec spec;
+  PageSpec cell = cellType();
+  cell.arcs.push_back(arc("enter", "work"));  // a second arc enter -> work
+  spec.page_types = {cell};
+  PageSpec line;
+  line.name = "line";
+  line.places = {place("parts", 2)};
+  line.instances = {{"cellA", "cell", {}, {}, {}}, {"cellB", "cell", {}, {}, {}}};
+  line.transitions = {transition("feed")};
+  // feed puts a part into both cells (not parallel: two places), and twice into cell A (parallel)
+  line.arcs = {arc("parts", "feed"), arc("feed", "cellA/enter"), arc("feed", "cellB/enter"), arc("feed", "cellA/enter")};
+  spec.pages = {line};
+  core::Diagnostics diags;
+  EXPECT_FALSE(compile(spec, diags));
+  const std::string all = diags.str();
+  const std::string in_type = "error: a second arc from 'cell/enter' to 'cell/work' on slot a0";
+  const std::string to_link = "error: a second arc from 'line/feed' to 'line/cellA/enter' on slot a0";
+  EXPECT_NE(all.find(in_type), std::string::npos) << all;
+  EXPECT_EQ(all.find(in_type), all.rfind(in_type)) << "once for the type, not per instance\n" << all;
+  EXPECT_NE(all.find(to_link), std::string::npos) << all;
+  EXPECT_EQ(all.find("cellB/enter' on slot"), std::string::npos) << all;
+}
+
+TEST(Hierarchy, LinksReachTheReferencedPlaceOfEachInstance) {
+  NetSpec spec;
+  PageSpec cell = cellType();
+  cell.references = {{"exit", {}}, {"enter", {}}};  // references in another order than the places
+  spec.page_types = {cell};
+  PageSpec line;
+  line.name = "line";
+  line.places = {place("parts", 1), place("done")};
+  line.instances = {{"a", "cell", {}, {}, {}}, {"b", "cell", {}, {}, {}}};
+  line.transitions = {transition("feed"), transition("move"), transition("take")};
+  line.arcs = {arc("parts", "feed"), arc("feed", "a/enter"), arc("a/exit", "move"), arc("move", "b/enter"),
+               arc("b/exit", "take"), arc("take", "done")};
+  spec.pages = {line};
+  core::Diagnostics diags;
+  auto net = compile(spec, diags);
+  ASSERT_TRUE(net) << diags.str();
+  Kernel k(net, {1.0, 1});
+  k.start();
+  for (int i = 0; i < 12; ++i) k.step();
+  EXPECT_EQ(marking(k, "line/done"), 1);  // through a's cell and then b's
+  EXPECT_EQ(marking(k, "line/a/exit"), 0);
+  EXPECT_EQ(marking(k, "line/b/machine"), 1);
+}
+
 }  // namespace
 }  // namespace gdpn::net

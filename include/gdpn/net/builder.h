@@ -15,6 +15,9 @@ namespace gdpn::net {
 /// Collects places, transitions and arcs, then freezes them into a Net.
 class NetBuilder {
  public:
+  /// Makes room for `places` places (with about one slot each), `transitions` transitions and
+  /// `terms` arc terms, so that building a large net does not move what it has built.
+  void reserve(std::size_t places, std::size_t transitions, std::size_t terms);
   /// Adds a place; its slots are made by setSlot() or by arcs.
   PlaceId addPlace(std::string name, SourceLoc loc = {});
   /// Sets the kind, capacity and initial marking of one slot of `place`.
@@ -60,11 +63,13 @@ class NetBuilder {
     std::vector<std::uint32_t> nodes;
     std::array<std::int32_t, 6> scripts{-1, -1, -1, -1, -1, -1};
     std::string sensor;
+    std::uint32_t next = kNoSlot;  // the place's next slot in slots_
   };
+  static constexpr std::uint32_t kNoSlot = 0xffffffffu;
   struct BuildPlace {
     std::string name;
     SourceLoc loc;
-    std::vector<BuildSlot> slots;
+    std::uint32_t first = kNoSlot;  // the place's first slot in slots_ (a chain: no vector per place)
   };
   struct BuildArc {
     PlaceId place;
@@ -77,6 +82,7 @@ class NetBuilder {
   BuildSlot& slotOf(PlaceId place, SlotId slot);
 
   std::vector<BuildPlace> places_;
+  std::vector<BuildSlot> slots_;
   std::vector<Transition> transitions_;
   std::vector<BuildArc> arcs_;
   std::vector<std::string> node_names_;

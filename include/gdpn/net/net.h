@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "gdpn/core/diagnostics.h"
+#include "gdpn/core/name_table.h"
 #include "gdpn/net/slot.h"
 #include "gdpn/net/spec.h"
 
@@ -158,8 +159,8 @@ class Net {
   std::vector<TermId> watchers_;
   std::vector<std::string> node_names_;
   std::vector<std::uint32_t> initial_nodes_;
-  std::unordered_map<std::string, PlaceId> place_index_;
-  std::unordered_map<std::string, TransitionId> transition_index_;
+  core::NameTable place_index_;       // qualified name -> PlaceId (names in places_)
+  core::NameTable transition_index_;  // qualified name -> TransitionId (names in transitions_)
   std::uint32_t priority_levels_ = 1;
   std::vector<ScriptSpec> scripts_;
   ScriptIndex script_index_;

@@ -1,0 +1,24 @@
+#pragma once
+/// \file
+/// Large arrays: the first touch of each 4 KiB page costs a page fault, which on a virtual
+/// machine can cost more than filling the page. Arrays of many megabytes (a net of a million
+/// places) ask the kernel for 2 MiB pages instead where it allows them (Linux transparent
+/// huge pages in "madvise" mode); elsewhere this is a plain reserve.
+
+#include <cstddef>
+#include <vector>
+
+namespace gdpn::core {
+
+/// Asks for huge pages for the whole 2 MiB pages inside [data, data + bytes); a hint only,
+/// ignored below a few megabytes and where the system does not offer them.
+void adviseHugePages(const void* data, std::size_t bytes);
+
+/// `v.reserve(n)`, then adviseHugePages() over the reserved storage.
+template <class T>
+void reserveLarge(std::vector<T>& v, std::size_t n) {
+  v.reserve(n);
+  adviseHugePages(v.data(), v.capacity() * sizeof(T));
+}
+
+}  // namespace gdpn::core
