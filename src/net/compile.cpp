@@ -170,7 +170,13 @@ class Compiler {
     }
     index.arcs.reserve(page.arcs.size());
     std::vector<bool> has_input(page.transitions.size(), false);  // one pass over the arcs
-    for (const auto& a : page.arcs) {
+    constexpr std::size_t kAhead = 8;  // arcs whose ends are fetched ahead (see NameTable::prefetch)
+    for (std::size_t i = 0; i < page.arcs.size(); ++i) {
+      if (i + kAhead < page.arcs.size()) {
+        names_.prefetch(page.arcs[i + kAhead].from);
+        names_.prefetch(page.arcs[i + kAhead].to);
+      }
+      const auto& a = page.arcs[i];
       index.arcs.push_back(checkArc(page, a, name_of));
       if (index.arcs.back().second.what == End::What::Transition) has_input[index.arcs.back().second.index] = true;
     }
