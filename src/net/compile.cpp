@@ -373,7 +373,7 @@ class Compiler {
   struct FlatPlace {
     const PlaceSpec* spec;
     std::string name;
-    std::string node_prefix;
+    std::uint32_t node_prefix;  // in node_prefixes_: what qualifies its scene paths ("cellA/")
   };
   struct FlatTransition {
     const TransitionSpec* spec;
@@ -418,7 +418,9 @@ class Compiler {
                    std::vector<const PageSpec*>& stack) {
     const PageIndex& index = indexes_.at(&page);
     const auto base = static_cast<PlaceId>(places_.size());
-    for (const auto& p : page.places) places_.push_back({&p, prefix + "/" + p.name, node_prefix});
+    const auto prefix_index = static_cast<std::uint32_t>(node_prefixes_.size());
+    if (!page.places.empty()) node_prefixes_.push_back(node_prefix);
+    for (const auto& p : page.places) places_.push_back({&p, prefix + "/" + p.name, prefix_index});
     std::vector<PlaceId> inner(page.instances.size(), kNone);  // the first place of each instance
     for (std::size_t k = 0; k < page.instances.size(); ++k) {
       const auto& inst = page.instances[k];
@@ -618,11 +620,11 @@ class Compiler {
         for (const auto& n : fp.spec->nodes) {
           if (n.slot != slot) continue;
           std::vector<std::string> qualified;
-          for (const auto& node : n.nodes) qualified.push_back(fp.node_prefix + node);
+          for (const auto& node : n.nodes) qualified.push_back(node_prefixes_[fp.node_prefix] + node);
           builder_.setNodes(p, slot, qualified);
         }
         for (const auto& b : fp.spec->sensors) {
-          if (b.slot == slot) builder_.setSensor(p, slot, fp.node_prefix + b.path);
+          if (b.slot == slot) builder_.setSensor(p, slot, node_prefixes_[fp.node_prefix] + b.path);
         }
         for (const auto& sc : fp.spec->scripts) {
           if (sc.slot != slot) continue;
@@ -678,6 +680,7 @@ class Compiler {
   core::NameTable names_;  // the page being checked: its namespace (see checkPage)
   std::unordered_map<const PageSpec*, PageIndex> indexes_;
   std::vector<FlatPlace> places_;
+  std::vector<std::string> node_prefixes_;  // one per instantiated page that has places
   std::vector<FlatTransition> transitions_;
   std::vector<FlatArc> arcs_;
   std::array<std::uint32_t, kSlotCount> dense_slot_{};  // slot -> its number among the used ones

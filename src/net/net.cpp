@@ -53,18 +53,20 @@ std::size_t Net::memoryBytes() const {
 
 void NetBuilder::reserve(std::size_t places, std::size_t transitions, std::size_t terms) {
   core::reserveLarge(places_, places);
+  core::reserveLarge(first_slot_, places);
   core::reserveLarge(slots_, places);
   core::reserveLarge(transitions_, transitions);
   core::reserveLarge(arcs_, terms);
 }
 
 PlaceId NetBuilder::addPlace(std::string name, SourceLoc loc) {
-  places_.push_back({std::move(name), std::move(loc), kNoSlot});
+  places_.push_back({std::move(name), std::move(loc), 0, 0});
+  first_slot_.push_back(kNoSlot);
   return static_cast<PlaceId>(places_.size() - 1);
 }
 
 NetBuilder::BuildSlot& NetBuilder::slotOf(PlaceId place, SlotId slot) {
-  std::uint32_t* link = &places_[place].first;
+  std::uint32_t* link = &first_slot_[place];
   while (*link != kNoSlot) {
     if (slots_[*link].slot == slot) return slots_[*link];
     link = &slots_[*link].next;
@@ -85,13 +87,18 @@ void NetBuilder::setSlot(PlaceId place, SlotId slot, SlotKind kind, std::int64_t
 void NetBuilder::setNodes(PlaceId place, SlotId slot, const std::vector<std::string>& nodes) {
   auto& s = slotOf(place, slot);
   s.kind = SlotKind::Node;
-  s.nodes.clear();
+  if (s.nodes < 0) {
+    s.nodes = static_cast<std::int32_t>(nodes_.size());
+    nodes_.emplace_back();
+  }
+  auto& tokens = nodes_[static_cast<std::size_t>(s.nodes)];
+  tokens.clear();
   for (const auto& n : nodes) {
     auto [it, fresh] = node_index_.try_emplace(n, static_cast<std::uint32_t>(node_names_.size()));
     if (fresh) node_names_.push_back(n);
-    s.nodes.push_back(it->second);
+    tokens.push_back(it->second);
   }
-  s.initial = static_cast<std::int64_t>(s.nodes.size());
+  s.initial = static_cast<std::int64_t>(tokens.size());
 }
 
 TransitionId NetBuilder::addTransition(std::string name, Duration duration, std::int64_t priority,
@@ -127,7 +134,11 @@ void NetBuilder::setLastPredicate(std::int32_t index) { arcs_.back().predicate =
 void NetBuilder::setSensor(PlaceId place, SlotId slot, std::string path) {
   auto& s = slotOf(place, slot);
   s.kind = SlotKind::Sensor;
-  s.sensor = std::move(path);
+  if (s.sensor < 0) {
+    s.sensor = static_cast<std::int32_t>(sensors_.size());
+    sensors_.emplace_back();
+  }
+  sensors_[static_cast<std::size_t>(s.sensor)] = std::move(path);
 }
 
 void NetBuilder::addCondition(PlaceId place, TransitionId transition, SlotId slot, std::int32_t index) {
@@ -153,17 +164,13 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
   auto net = std::make_shared<Net>();
 
   // place slots: grouped per place, ordered by slot
-  core::reserveLarge(net->places_, places_.size());
   core::reserveLarge(net->place_slots_, slots_.size());
   std::vector<std::uint32_t> chain;
   for (PlaceId p = 0; p < places_.size(); ++p) {
-    auto& bp = places_[p];
+    Place& place = places_[p];
     chain.clear();
-    for (auto i = bp.first; i != kNoSlot; i = slots_[i].next) chain.push_back(i);
+    for (auto i = first_slot_[p]; i != kNoSlot; i = slots_[i].next) chain.push_back(i);
     std::sort(chain.begin(), chain.end(), [&](std::uint32_t a, std::uint32_t b) { return slots_[a].slot < slots_[b].slot; });
-    Place place;
-    place.name = std::move(bp.name);
-    place.loc = std::move(bp.loc);
     place.slots_begin = static_cast<std::uint32_t>(net->place_slots_.size());
     for (const auto i : chain) {
       auto& s = slots_[i];
@@ -174,21 +181,24 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
       ps.capacity = s.capacity;
       ps.initial = s.initial;
       ps.nodes_begin = static_cast<std::uint32_t>(net->initial_nodes_.size());
-      net->initial_nodes_.insert(net->initial_nodes_.end(), s.nodes.begin(), s.nodes.end());
+      if (s.nodes >= 0) {
+        const auto& tokens = nodes_[static_cast<std::size_t>(s.nodes)];
+        net->initial_nodes_.insert(net->initial_nodes_.end(), tokens.begin(), tokens.end());
+      }
       ps.nodes_end = static_cast<std::uint32_t>(net->initial_nodes_.size());
       for (int k = 0; k < 6; ++k) {
         if (s.scripts[static_cast<std::size_t>(k)] >= 0) ps.scripts = static_cast<std::uint8_t>(ps.scripts | (1 << k));
       }
-      if (!s.sensor.empty()) {
+      if (s.sensor >= 0 && !sensors_[static_cast<std::size_t>(s.sensor)].empty()) {
         net->sensor_paths_.resize(net->place_slots_.size() + 1);
-        net->sensor_paths_.back() = s.sensor;
+        net->sensor_paths_.back() = std::move(sensors_[static_cast<std::size_t>(s.sensor)]);
       }
       if (!scripts_.empty()) net->script_index_.slots.push_back(s.scripts);
       net->place_slots_.push_back(ps);
     }
     place.slots_end = static_cast<std::uint32_t>(net->place_slots_.size());
-    net->places_.push_back(std::move(place));
   }
+  net->places_ = std::move(places_);
   auto psOf = [&](PlaceId p, SlotId slot) -> PlaceSlotId {
     for (auto ps = net->places_[p].slots_begin; ps < net->places_[p].slots_end; ++ps) {
       if (net->place_slots_[ps].slot == slot) return ps;

@@ -60,17 +60,12 @@ class NetBuilder {
     SlotKind kind = SlotKind::Control;
     std::int64_t capacity = kUnbounded;
     std::int64_t initial = 0;
-    std::vector<std::uint32_t> nodes;
     std::array<std::int32_t, 6> scripts{-1, -1, -1, -1, -1, -1};
-    std::string sensor;
+    std::int32_t nodes = -1;       // its initial node tokens in nodes_, if it has any
+    std::int32_t sensor = -1;      // its sensor's path in sensors_, if it reads one
     std::uint32_t next = kNoSlot;  // the place's next slot in slots_
   };
   static constexpr std::uint32_t kNoSlot = 0xffffffffu;
-  struct BuildPlace {
-    std::string name;
-    SourceLoc loc;
-    std::uint32_t first = kNoSlot;  // the place's first slot in slots_ (a chain: no vector per place)
-  };
   struct BuildArc {
     PlaceId place;
     TransitionId transition;
@@ -81,8 +76,11 @@ class NetBuilder {
   };
   BuildSlot& slotOf(PlaceId place, SlotId slot);
 
-  std::vector<BuildPlace> places_;
+  std::vector<Place> places_;               // moved into the Net as they are
+  std::vector<std::uint32_t> first_slot_;  // per place: its first slot in slots_ (a chain, no vector per place)
   std::vector<BuildSlot> slots_;
+  std::vector<std::vector<std::uint32_t>> nodes_;  // node slots' initial tokens (few slots have them)
+  std::vector<std::string> sensors_;               // sensor slots' paths
   std::vector<Transition> transitions_;
   std::vector<BuildArc> arcs_;
   std::vector<std::string> node_names_;
