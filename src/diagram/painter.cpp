@@ -42,11 +42,11 @@ Point unit(Point d) {
   return len > 1e-12 ? d * (1.0 / len) : Point{1, 0};
 }
 
-// the point half way along a polyline, and the direction there
-std::pair<Point, Point> middleOf(const std::vector<Point>& pts) {
+// the point `share` of the way along a polyline, and the direction there
+std::pair<Point, Point> pointAlong(const std::vector<Point>& pts, double share) {
   double total = 0;
   for (std::size_t i = 1; i < pts.size(); ++i) total += std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
-  double left = total / 2;
+  double left = total * share;
   for (std::size_t i = 1; i < pts.size(); ++i) {
     const Point d = pts[i] - pts[i - 1];
     const double len = std::hypot(d.x, d.y);
@@ -66,6 +66,24 @@ std::vector<Point> dotPattern(std::int64_t count, double r) {
     case 4: return {{-s, -s}, {s, -s}, {-s, s}, {s, s}};
     default: return {{-s, -s}, {s, -s}, {-s, s}, {s, s}, {0, 0}};
   }
+}
+
+// a piece of text waiting for the label pass: where it may stand, first choice first
+struct Label {
+  std::string text;
+  double size = 0;
+  HAlign h = HAlign::Centre;
+  VAlign v = VAlign::Middle;
+  Rgba colour;
+  std::vector<Point> anchors;  // candidates; names have one
+};
+
+// the box `text` covers at `anchor`, pixels
+Box labelBox(const Canvas& c, const Label& l, Point anchor) {
+  const double w = c.textWidth(l.text, l.size), h = 1.17 * l.size;
+  const double x = l.h == HAlign::Left ? anchor.x : l.h == HAlign::Centre ? anchor.x - w / 2 : anchor.x - w;
+  const double y = l.v == VAlign::Top ? anchor.y : l.v == VAlign::Middle ? anchor.y - 0.5 * h : anchor.y - h;
+  return {{x - 1, y}, {x + w + 1, y + h}};
 }
 
 class Painter {
@@ -99,24 +117,52 @@ class Painter {
     }
     c_.polyline(pts, w, colour, a.kind == net::ArcKind::Test);
     if (!labels_) return;
-    // the weight at the middle, on a white patch, beside the line
+    // the weight beside the line: at its middle, else a third of the way from either end
     if (a.weight > 1) {
-      const auto [mid, d] = middleOf(pts);
-      const std::string text = std::to_string(a.weight);
-      const Point at = mid + Point{d.y, -d.x} * (font_ * 0.8);
-      const double tw = c_.textWidth(text, font_);
-      c_.fillRect(Box::around(at, tw / 2 + 2, font_ * 0.6), colours::kBackground);
-      c_.text(at, text, font_, HAlign::Centre, VAlign::Middle, colours::kOutline);
+      Label l{std::to_string(a.weight), font_, HAlign::Centre, VAlign::Middle, colours::kOutline, {}};
+      const double gap = font_ * 0.75;
+      for (const double share : {0.5, 0.3, 0.7}) {
+        const auto [at, d] = pointAlong(pts, share);
+        const Point normal{d.y, -d.x};
+        l.anchors.push_back(at + normal * gap);
+        l.anchors.push_back(at - normal * gap);
+      }
+      pending_.push_back(std::move(l));
     }
     // the reference's name where the arc meets an instance box
     if (!a.link.empty()) {
       const bool to_box = a.to.kind == ItemKind::Instance;
-      const Point at = to_box ? a.points.back() : a.points.front();
-      const Point s = v_.toScreen(at);
-      const double small = std::max(font_ * 0.85, kMinFontPx);
+      const Point s = v_.toScreen(to_box ? a.points.back() : a.points.front());
       const bool left = (to_box ? dir.x : -unit(pts[1] - pts[0]).x) > 0;
-      c_.text({s.x + (left ? -3.0 : 3.0), s.y - 2}, a.link, small, left ? HAlign::Right : HAlign::Left, VAlign::Bottom,
-              colours::kInstanceLine);
+      Label l{a.link, std::max(font_ * 0.85, kMinFontPx), left ? HAlign::Right : HAlign::Left, VAlign::Bottom,
+              colours::kInstanceLine, {}};
+      l.anchors = {{s.x + (left ? -3.0 : 3.0), s.y - 2}, {s.x + (left ? -3.0 : 3.0), s.y + 2 + 1.17 * l.size}};
+      pending_.push_back(std::move(l));
+    }
+  }
+
+  /// Draws the names where they belong, then each weight and link name at its first free place.
+  void finish() {
+    for (const auto& [l, at] : names_) {
+      c_.fillRect(labelBox(c_, l, at), kPatch);
+      c_.text(at, l.text, l.size, l.h, l.v, l.colour);
+    }
+    for (const auto& l : pending_) {
+      Point best = l.anchors.front();
+      for (const Point& at : l.anchors) {
+        // a few pixels apart, so that a weight never reads as part of a name
+        Box b = labelBox(c_, l, at);
+        b.min = b.min - Point{4, 2};
+        b.max = b.max + Point{4, 2};
+        if (std::none_of(taken_.begin(), taken_.end(), [&](const Box& o) { return o.overlaps(b); })) {
+          best = at;
+          break;
+        }
+      }
+      const Box b = labelBox(c_, l, best);
+      taken_.push_back(b);
+      c_.fillRect(b, kPatch);
+      c_.text(best, l.text, l.size, l.h, l.v, l.colour);
     }
   }
 
@@ -124,6 +170,7 @@ class Painter {
     const Box b{v_.toScreen(i.box.min), v_.toScreen(i.box.max)};
     c_.fillRect(b, colours::kInstanceFill);
     c_.strokeRect(b, std::max(kOutlineWidth * v_.zoom, 1.0), colours::kInstanceLine);
+    taken_.push_back(b);
     if (!labels_) return;
     const Point c = v_.toScreen(i.centre);
     c_.text({c.x, c.y - 1}, i.name, font_, HAlign::Centre, VAlign::Bottom, colours::kOutline);
@@ -137,10 +184,8 @@ class Painter {
     // a bar at least a pixel and a half wide, so that it shows when zoomed out
     const double grow = std::max(0.0, (1.5 - b.width()) / 2);
     c_.fillRect({{b.min.x - grow, b.min.y}, {b.max.x + grow, b.max.y}}, activityColour(a));
-    if (labels_) {
-      c_.text({(b.min.x + b.max.x) / 2, b.min.y - kLabelGap * v_.zoom}, t.name, font_, HAlign::Centre, VAlign::Bottom,
-              colours::kOutline);
-    }
+    taken_.push_back(b);
+    if (labels_) name({(b.min.x + b.max.x) / 2, b.min.y - kLabelGap * v_.zoom}, t.name, VAlign::Bottom);
   }
 
   void place(std::size_t k) {
@@ -150,10 +195,18 @@ class Painter {
     c_.fillCircle(c, r, colours::kBackground);
     c_.strokeCircle(c, r, std::max(kOutlineWidth * v_.zoom, 1.0), colours::kOutline);
     if (s_ != nullptr && k < s_->places.size()) tokens(s_->places[k], c, r);
-    if (labels_) c_.text({c.x, c.y + r + kLabelGap * v_.zoom}, p.name, font_, HAlign::Centre, VAlign::Top, colours::kOutline);
+    taken_.push_back(Box::around(c, r, r));
+    if (labels_) name({c.x, c.y + r + kLabelGap * v_.zoom}, p.name, VAlign::Top);
   }
 
  private:
+  // a construct's name: drawn in the label pass, over the arcs, on a white patch
+  void name(Point at, const std::string& text, VAlign v) {
+    Label l{text, font_, HAlign::Centre, v, colours::kOutline, {at}};
+    taken_.push_back(labelBox(c_, l, at));
+    names_.emplace_back(std::move(l), at);
+  }
+
   void tokens(const std::vector<SlotMarking>& slots, Point c, double r) {
     // tokens per kind: control, node, sensor
     std::array<std::int64_t, 3> per_kind{0, 0, 0};
@@ -191,6 +244,10 @@ class Painter {
   Canvas& c_;
   double font_ = kLabelSize;
   bool labels_ = true;
+  std::vector<std::pair<Label, Point>> names_;  // names, where they stand
+  std::vector<Label> pending_;                  // weights and link names, placed last
+  std::vector<Box> taken_;                      // what labels should not cover: shapes and placed labels, pixels
+  static constexpr Rgba kPatch{255, 255, 255, 200};
 };
 
 }  // namespace
@@ -243,6 +300,7 @@ std::size_t paintNet(const NetLayout& layout, const SpatialIndex& index, const N
       case ItemKind::Place: painter.place(r.index); break;
     }
   }
+  painter.finish();
   return items.size();
 }
 
