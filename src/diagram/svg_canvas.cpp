@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "gdpn/core/text.h"
+
 namespace gdpn::diagram {
 namespace {
 
@@ -13,20 +15,6 @@ std::string num(double v) {
   while (s.back() == '0') s.pop_back();
   if (s.back() == '.') s.pop_back();
   return s == "-0" ? "0" : s;
-}
-
-std::string escape(std::string_view text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
 }
 
 // fill="#rrggbb" with fill-opacity when not opaque (or the same for stroke)
@@ -88,7 +76,7 @@ void SvgCanvas::text(Point anchor, std::string_view text, double size, HAlign h,
   // the baseline from the anchor: DejaVu Sans' ascent is 0.93 em, descent 0.24 em, capitals 0.73 em
   const double dy = v == VAlign::Top ? 0.93 * size : v == VAlign::Middle ? 0.365 * size : -0.24 * size;
   body_ += "<text x=\"" + num(anchor.x) + "\" y=\"" + num(anchor.y + dy) + "\" font-size=\"" + num(size) +
-           "\" text-anchor=\"" + anchor_name + "\"" + paint("fill", colour) + ">" + escape(text) + "</text>\n";
+           "\" text-anchor=\"" + anchor_name + "\"" + paint("fill", colour) + ">" + core::xmlEscape(text) + "</text>\n";
 }
 
 std::string SvgCanvas::svg() const {
