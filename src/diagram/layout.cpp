@@ -178,6 +178,7 @@ NetLayout layoutPage(const net::PageSpec& page, core::Diagnostics& diags) {
     arc.weight = 0;
     for (const auto& w : a.weights) arc.weight += w.value;
     if (a.weights.empty()) arc.weight = 1;
+    arc.inscription = inscription(a.weights);
     l.arcs.push_back(std::move(arc));
   }
   // positions: the spec's, or Graphviz's for a page with any construct lacking one
@@ -214,6 +215,29 @@ NetLayout layoutPage(const net::PageSpec& page, core::Diagnostics& diags) {
   for (const auto& t : l.transitions) grow(t.box);
   for (const auto& i : l.instances) grow(i.box);
   return l;
+}
+
+std::string inscription(const std::vector<net::SlotCount>& weights) {
+  if (weights.empty()) return "";
+  if (weights.size() == 1 && weights[0].slot == net::kDefaultSlot)
+    return weights[0].value == 1 ? "" : std::to_string(weights[0].value);
+  // by slot; a run of three or more neighbours in one row with one weight reads "b0..b4"
+  auto sorted = weights;
+  std::sort(sorted.begin(), sorted.end(), [](const auto& x, const auto& y) { return x.slot < y.slot; });
+  std::string out;
+  for (std::size_t i = 0; i < sorted.size();) {
+    std::size_t j = i;
+    while (j + 1 < sorted.size() && sorted[j + 1].slot == sorted[j].slot + 1 && sorted[j + 1].slot / 8 == sorted[i].slot / 8 &&
+           sorted[j + 1].value == sorted[i].value)
+      ++j;
+    if (j < i + 2) j = i;  // two neighbours read better apart: "a0+a1"
+    out += out.empty() ? "" : "+";
+    if (sorted[i].value != 1) out += std::to_string(sorted[i].value) + "\xc2\xb7";
+    out += net::slotName(sorted[i].slot);
+    if (j > i) out += ".." + net::slotName(sorted[j].slot);
+    i = j + 1;
+  }
+  return out;
 }
 
 PageView findView(const net::NetSpec& spec, const std::string& path, core::Diagnostics& diags,

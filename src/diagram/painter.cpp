@@ -118,10 +118,10 @@ class Painter {
     c_.polyline(pts, w, colour, a.kind == net::ArcKind::Test);
     if (!labels_) return;
     // the weight beside the line: at its middle, else a third of the way from either end
-    if (a.weight > 1) {
-      Label l{std::to_string(a.weight), font_, HAlign::Centre, VAlign::Middle, colours::kOutline, {}};
-      const double gap = font_ * 0.75;
-      for (const double share : {0.5, 0.3, 0.7}) {
+    if (!a.inscription.empty()) {
+      Label l{a.inscription, std::max(font_ * 0.9, kMinFontPx), HAlign::Centre, VAlign::Middle, colours::kInscription, {}};
+      const double gap = l.size * 0.75;
+      for (const double share : {0.5, 0.35, 0.65, 0.2, 0.8}) {
         const auto [at, d] = pointAlong(pts, share);
         const Point normal{d.y, -d.x};
         l.anchors.push_back(at + normal * gap);
@@ -148,16 +148,24 @@ class Painter {
       c_.text(at, l.text, l.size, l.h, l.v, l.colour);
     }
     for (const auto& l : pending_) {
+      // the first place that covers nothing, else the one that covers least
       Point best = l.anchors.front();
+      double least = 1e300;
       for (const Point& at : l.anchors) {
-        // a few pixels apart, so that a weight never reads as part of a name
+        // a few pixels apart, so that an inscription never reads as part of a name
         Box b = labelBox(c_, l, at);
         b.min = b.min - Point{4, 2};
         b.max = b.max + Point{4, 2};
-        if (std::none_of(taken_.begin(), taken_.end(), [&](const Box& o) { return o.overlaps(b); })) {
-          best = at;
-          break;
+        double covered = 0;
+        for (const Box& o : taken_) {
+          if (!o.overlaps(b)) continue;
+          covered += (std::min(b.max.x, o.max.x) - std::max(b.min.x, o.min.x)) * (std::min(b.max.y, o.max.y) - std::max(b.min.y, o.min.y));
         }
+        if (covered < least) {
+          least = covered;
+          best = at;
+        }
+        if (covered == 0) break;
       }
       const Box b = labelBox(c_, l, best);
       taken_.push_back(b);

@@ -160,6 +160,18 @@ TEST(DiagramLayout, ArcsToLinksEndAtTheInstanceBox) {
   EXPECT_FALSE(diags.hasErrors()) << diags.str();
 }
 
+TEST(DiagramLayout, InscriptionsNameSlotsOnlyWhenTheyMatter) {
+  using net::SlotCount;
+  EXPECT_EQ(inscription({}), "");
+  EXPECT_EQ(inscription({SlotCount{0, 1, {}}}), "");
+  EXPECT_EQ(inscription({SlotCount{0, 3, {}}}), "3");
+  EXPECT_EQ(inscription({SlotCount{12, 1, {}}, SlotCount{8, 1, {}}, SlotCount{9, 1, {}}, SlotCount{10, 1, {}},
+                         SlotCount{11, 1, {}}}),
+            "b0..b4");
+  EXPECT_EQ(inscription({SlotCount{0, 1, {}}, SlotCount{1, 1, {}}}), "a0+a1");
+  EXPECT_EQ(inscription({SlotCount{1, 2, {}}, SlotCount{16, 1, {}}}), "2\u00b7a1+c0");
+}
+
 TEST(DiagramLayout, UnknownPageIsALocatedErrorListingThePages) {
   core::Diagnostics diags;
   const auto spec = smallNet(true);

@@ -63,6 +63,7 @@ struct ArcLayout {
   std::string link;              ///< for an arc to or from an instance: the reference's name, else ""
   net::ArcKind kind = net::ArcKind::Normal;  ///< normal, test or inhibitor
   std::int64_t weight = 1;       ///< total weight over its slots, tokens
+  std::string inscription;       ///< what the arc's label says: "" for weight 1 on a0, "3" for weight 3 on a0, else its slots ("b0..b4", "2·a1+c0")
   std::uint32_t spec_index = 0;  ///< the arc's index in PageSpec::arcs (NetState::arcs is indexed by it)
   std::vector<Point> points;     ///< at least two points: start, bends, end (the end touches the target)
   Box box;                       ///< the polyline's bounding box
@@ -86,6 +87,9 @@ struct NetLayout {
 /// has one; otherwise Graphviz places everything. A page Graphviz cannot lay out gives an
 /// error at the page's location in `diags` and an empty layout.
 NetLayout layoutPage(const net::PageSpec& page, core::Diagnostics& diags);
+
+/// The label of an arc with these weights (see ArcLayout::inscription).
+[[nodiscard]] std::string inscription(const std::vector<net::SlotCount>& weights);
 
 /// A page to draw, and the prefix that qualifies its constructs' names in the frozen net.
 struct PageView {

@@ -7,7 +7,8 @@
 /// - transitions are bars: enabled green, occurring red, idle dark grey;
 /// - normal arcs end in an arrowhead, inhibitor arcs in a small circle; test arcs are dashed
 ///   with no arrowhead (they take nothing); an arc is green while its condition holds and
-///   grey while not; weights above 1 stand at the arc's middle;
+///   grey while not; inscriptions (weights above 1, or the slots: "b0..b4") stand beside
+///   the arc's middle;
 /// - names stand under places and above transitions; instance boxes show the instance's
 ///   name and its type, and arcs to them the reference's name.
 /// Text is never drawn below kMinFontPx: when zoomed out that far, names are left out.
@@ -40,7 +41,8 @@ inline constexpr Rgba kControl{20, 20, 20, 255};        ///< control tokens
 inline constexpr Rgba kNode{31, 119, 180, 255};         ///< node tokens
 inline constexpr Rgba kSensor{255, 127, 14, 255};       ///< sensor variables
 inline constexpr Rgba kInstanceFill{232, 238, 246, 255};  ///< instance boxes
-inline constexpr Rgba kInstanceLine{80, 96, 128, 255};    ///< instance boxes' outlines
+inline constexpr Rgba kInstanceLine{80, 96, 128, 255};    ///< instance boxes' outlines, link names
+inline constexpr Rgba kInscription{70, 70, 110, 255};     ///< arc inscriptions (weights, slots)
 }  // namespace colours
 
 /// How layout units map to the canvas: screen = (layout - origin) * zoom.
