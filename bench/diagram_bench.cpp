@@ -99,32 +99,25 @@ const BigPage& bigPage() {
   return page;
 }
 
-void BM_PaintVisibleOf10kTransitions_Calls(benchmark::State& state) {
+// painting `view` of the big page onto the counting canvas
+void paintCounted(benchmark::State& state, bool whole) {
   const auto& big = bigPage();
   const SpatialIndex index(big.layout);
   CountingCanvas canvas;
+  const Viewport view = whole ? fitViewport(big.layout, canvas.width(), canvas.height()) : big.view();
   std::size_t items = 0;
   for (auto _ : state) {
-    items = paintNet(big.layout, index, &big.state, big.view(), canvas);
+    items = paintNet(big.layout, index, &big.state, view, canvas);
     benchmark::DoNotOptimize(canvas.calls);
   }
   state.counters["items"] = static_cast<double>(items);
 }
+
+void BM_PaintVisibleOf10kTransitions_Calls(benchmark::State& state) { paintCounted(state, false); }
 BENCHMARK(BM_PaintVisibleOf10kTransitions_Calls)->Unit(benchmark::kMicrosecond);
 
 // zoomed out to show the whole page: every item passes the painter (no names at this zoom)
-void BM_PaintWholeOf10kTransitions_Calls(benchmark::State& state) {
-  const auto& big = bigPage();
-  const SpatialIndex index(big.layout);
-  CountingCanvas canvas;
-  const Viewport all = fitViewport(big.layout, canvas.width(), canvas.height());
-  std::size_t items = 0;
-  for (auto _ : state) {
-    items = paintNet(big.layout, index, &big.state, all, canvas);
-    benchmark::DoNotOptimize(canvas.calls);
-  }
-  state.counters["items"] = static_cast<double>(items);
-}
+void BM_PaintWholeOf10kTransitions_Calls(benchmark::State& state) { paintCounted(state, true); }
 BENCHMARK(BM_PaintWholeOf10kTransitions_Calls)->Unit(benchmark::kMillisecond);
 
 void BM_PaintVisibleOf10kTransitions_Raster(benchmark::State& state) {

@@ -17,15 +17,6 @@ constexpr int kSubpixels = 4;    // horizontal glyph positions per pixel
 
 double clamp01(double v) { return v < 0 ? 0 : v > 1 ? 1 : v; }
 
-// distance from p to the segment a-b
-double segmentDistance(Point p, Point a, Point b) {
-  const Point ab = b - a, ap = p - a;
-  const double len2 = ab.x * ab.x + ab.y * ab.y;
-  const double t = len2 > 0 ? std::clamp((ap.x * ab.x + ap.y * ab.y) / len2, 0.0, 1.0) : 0.0;
-  const Point q = a + ab * t;
-  return std::hypot(p.x - q.x, p.y - q.y);
-}
-
 // the next code point of UTF-8 `s` from `i` (a bad byte reads as U+FFFD)
 std::uint32_t nextCodePoint(std::string_view s, std::size_t& i) {
   const auto c = static_cast<unsigned char>(s[i++]);
@@ -147,7 +138,7 @@ void RasterCanvas::segment(Point a, Point b, double w, Rgba colour) {
   Box box{a, a};
   box.add(b);
   forPixels(box, ww, width_, height_, [&](int x, int y, Point p) {
-    blend(x, y, colour, fade * clamp01(ww / 2 + 0.5 - segmentDistance(p, a, b)));
+    blend(x, y, colour, fade * clamp01(ww / 2 + 0.5 - distanceToSegment(p, a, b)));
   });
 }
 

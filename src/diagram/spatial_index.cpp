@@ -83,4 +83,29 @@ std::vector<ItemRef> SpatialIndex::query(const Box& view) const {
   return out;
 }
 
+std::optional<ItemRef> SpatialIndex::pick(Point p, double tolerance) const {
+  const Box near = Box::around(p, tolerance, tolerance);
+  const auto items = query(near);
+  // drawn last is on top: walk the drawing order backwards
+  for (auto it = items.rbegin(); it != items.rend(); ++it) {
+    const ItemRef r = *it;
+    switch (r.kind) {
+      case ItemKind::Place: {
+        const Point c = layout_->places[r.index].centre;
+        if (std::hypot(p.x - c.x, p.y - c.y) <= kPlaceRadius + tolerance) return r;
+        break;
+      }
+      case ItemKind::Transition:
+      case ItemKind::Instance: return r;  // the box overlaps the grown point: a hit
+      case ItemKind::Arc: {
+        const auto& pts = layout_->arcs[r.index].points;
+        for (std::size_t i = 1; i < pts.size(); ++i)
+          if (distanceToSegment(p, pts[i - 1], pts[i]) <= tolerance) return r;
+        break;
+      }
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace gdpn::diagram

@@ -209,6 +209,33 @@ TEST(DiagramCulling, ViewportReturnsOnlyTheVisibleItems) {
   EXPECT_EQ(index.query(layout.bounds).size(), layout.places.size() + layout.transitions.size() + layout.arcs.size());
 }
 
+TEST(DiagramCulling, PickFindsWhatIsUnderTheMouse) {
+  Drawn d;
+  const SpatialIndex index(d.layout);
+  const auto& l = d.layout;
+  EXPECT_EQ(index.pick(l.places[1].centre, 2), (ItemRef{ItemKind::Place, 1}));
+  EXPECT_EQ(index.pick(l.transitions[0].centre + Point{0, kBarHeight / 2 - 1}, 2), (ItemRef{ItemKind::Transition, 0}));
+  // half way along src -> go: the arc
+  const Point mid = (l.arcs[0].points.front() + l.arcs[0].points.back()) * 0.5;
+  EXPECT_EQ(index.pick(mid + Point{0, 1.5}, 2), (ItemRef{ItemKind::Arc, 0}));
+  // inside a place's square but outside its circle, and far from everything: nothing
+  EXPECT_FALSE(index.pick(l.places[1].box.min + Point{1, 1}, 1));
+  EXPECT_FALSE(index.pick({-500, -500}, 2));
+}
+
+TEST(DiagramPicture, EmptyPageGivesAnEmptyPicture) {
+  net::PageSpec page;
+  page.name = "empty";
+  core::Diagnostics diags;
+  const auto layout = layoutPage(page, diags);
+  EXPECT_FALSE(diags.hasErrors());
+  std::string why;
+  const auto out = tempFile("empty.png");
+  EXPECT_TRUE(writeNetPicture(layout, nullptr, 100, 60, out, why)) << why;
+  fs::remove(out);
+  EXPECT_TRUE(SpatialIndex(layout).query({{-1e9, -1e9}, {1e9, 1e9}}).empty());
+}
+
 TEST(DiagramPicture, BadOutputIsReportedAndLeavesNothing) {
   Drawn d;
   const auto s = d.state();

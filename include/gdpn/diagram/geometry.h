@@ -4,6 +4,7 @@
 /// caller says (layout units or screen pixels).
 
 #include <algorithm>
+#include <cmath>
 
 namespace gdpn::diagram {
 
@@ -40,5 +41,14 @@ struct Box {
   }
   friend bool operator==(const Box&, const Box&) = default;
 };
+
+/// The distance from `p` to the segment from `a` to `b`, in the points' unit.
+inline double distanceToSegment(Point p, Point a, Point b) {
+  const Point ab = b - a, ap = p - a;
+  const double len2 = ab.x * ab.x + ab.y * ab.y;
+  const double t = len2 > 0 ? std::clamp((ap.x * ab.x + ap.y * ab.y) / len2, 0.0, 1.0) : 0.0;
+  const Point q = a + ab * t;
+  return std::hypot(p.x - q.x, p.y - q.y);
+}
 
 }  // namespace gdpn::diagram

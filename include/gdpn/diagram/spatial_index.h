@@ -4,6 +4,7 @@
 /// query costs about the number of items in the cells it touches, not the size of the page.
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "gdpn/diagram/layout.h"
@@ -20,6 +21,12 @@ class SpatialIndex {
   /// The items whose boxes overlap `view` (layout units), each once, in a fixed order: arcs
   /// first, then instances, transitions and places, each by index (the order they are drawn). Not safe to call from two threads at once.
   [[nodiscard]] std::vector<ItemRef> query(const Box& view) const;
+
+  /// The item under `p` (layout units), for clicks: a place within its circle, a transition
+  /// or instance within its box grown by `tolerance`, an arc within `tolerance` of its
+  /// polyline (layout units). Places and transitions win over instances, and those over arcs;
+  /// nullopt over empty paper.
+  [[nodiscard]] std::optional<ItemRef> pick(Point p, double tolerance) const;
 
  private:
   const NetLayout* layout_;
