@@ -56,6 +56,21 @@ std::pair<Point, Point> pointAlong(const std::vector<Point>& pts, double share) 
   return {pts.front(), Point{1, 0}};
 }
 
+// cuts `length` off the end of a polyline (it keeps at least its first point and one more)
+void trimEnd(std::vector<Point>& pts, double length) {
+  while (pts.size() >= 2) {
+    const Point a = pts[pts.size() - 2], b = pts.back();
+    const double seg = std::hypot(b.x - a.x, b.y - a.y);
+    if (seg > length) {
+      pts.back() = b + (a - b) * (length / seg);
+      return;
+    }
+    length -= seg;
+    pts.pop_back();
+  }
+  pts.push_back(pts.front());
+}
+
 // where `count` token dots sit in a place of radius r (offsets from its centre)
 std::vector<Point> dotPattern(std::int64_t count, double r) {
   const double s = 0.42 * r;
@@ -103,18 +118,22 @@ class Painter {
     const double w = std::max(kLineWidth * v_.zoom, 1.0);
     // the end: an arrowhead (normal), a small circle (inhibitor) or nothing (test)
     const Point end = pts.back();
-    const Point dir = unit(end - pts[pts.size() - 2]);
     if (a.kind == net::ArcKind::Normal) {
+      // the line stops inside the head; the head points along the last stretch of its length
       const double len = std::max(kArrowLength * v_.zoom, 6.0), half = std::max(kArrowHalfWidth * v_.zoom, 3.0);
+      trimEnd(pts, len);
+      const Point dir = unit(end - pts.back());
       const Point base = end - dir * len, side{-dir.y * half, dir.x * half};
-      pts.back() = end - dir * (len * 0.8);
+      pts.push_back(end - dir * (len * 0.8));
       const std::array<Point, 3> head{end, base + side, base - side};
       c_.fillPolygon(head, colour);
     } else if (a.kind == net::ArcKind::Inhibitor) {
       const double r = std::max(kInhibitorRadius * v_.zoom, 2.5);
-      pts.back() = end - dir * (2 * r);
+      trimEnd(pts, 2 * r);
+      const Point dir = unit(end - pts.back());
       c_.strokeCircle(end - dir * r, r, w, colour);
     }
+    const Point dir = unit(end - pts[pts.size() - 2]);
     c_.polyline(pts, w, colour, a.kind == net::ArcKind::Test);
     if (!labels_) return;
     // the weight beside the line: at its middle, else a third of the way from either end
