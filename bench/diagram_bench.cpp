@@ -152,7 +152,7 @@ void BM_GraphvizLayout(benchmark::State& state) {
   }
   state.counters["nodes"] = static_cast<double>(page.places.size() + page.transitions.size());
 }
-BENCHMARK(BM_GraphvizLayout)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GraphvizLayout)->Arg(100)->Arg(1000)->Arg(4000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -103,6 +103,48 @@ void routeStraight(NetLayout& l) {
   }
 }
 
+// a page too large for Graphviz: each node in the column of its breadth-first distance from
+// the nodes no arc enters (then from the first node not yet reached), in spec order down it
+void layoutInColumns(NetLayout& l) {
+  const std::size_t places = l.places.size(), transitions = l.transitions.size();
+  const std::size_t n = places + transitions + l.instances.size();
+  auto flat = [&](ItemRef r) -> std::size_t {
+    return r.kind == ItemKind::Place ? r.index : r.kind == ItemKind::Transition ? places + r.index : places + transitions + r.index;
+  };
+  std::vector<std::vector<std::size_t>> next(n);
+  std::vector<bool> entered(n, false);
+  for (const auto& a : l.arcs) {
+    next[flat(a.from)].push_back(flat(a.to));
+    entered[flat(a.to)] = true;
+  }
+  std::vector<std::int64_t> rank(n, -1);
+  std::vector<std::size_t> queue;
+  auto visit = [&](std::size_t start) {
+    rank[start] = 0;
+    queue.assign(1, start);
+    for (std::size_t q = 0; q < queue.size(); ++q)
+      for (std::size_t m : next[queue[q]])
+        if (rank[m] < 0) {
+          rank[m] = rank[queue[q]] + 1;
+          queue.push_back(m);
+        }
+  };
+  for (std::size_t i = 0; i < n; ++i)
+    if (!entered[i] && rank[i] < 0) visit(i);
+  for (std::size_t i = 0; i < n; ++i)
+    if (rank[i] < 0) visit(i);
+  std::vector<std::size_t> rows;
+  auto centre = [&](std::size_t i) -> Point& {
+    return i < places ? l.places[i].centre : i < places + transitions ? l.transitions[i - places].centre
+                                                                      : l.instances[i - places - transitions].centre;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto r = static_cast<std::size_t>(rank[i]);
+    if (rows.size() <= r) rows.resize(r + 1, 0);
+    centre(i) = Point{kEditorUnit * (0.5 + 1.5 * static_cast<double>(r)), kEditorUnit * (0.5 + static_cast<double>(rows[r]++))};
+  }
+}
+
 bool layoutWithGraphviz(NetLayout& l, const std::vector<double>& instance_widths, std::string& why) {
   std::vector<detail::GvNode> nodes;
   for (std::size_t i = 0; i < l.places.size(); ++i) nodes.push_back({2 * kPlaceRadius, 2 * kPlaceRadius, true});
@@ -183,7 +225,14 @@ NetLayout layoutPage(const net::PageSpec& page, core::Diagnostics& diags) {
   }
   // positions: the spec's, or Graphviz's for a page with any construct lacking one
   std::string why;
-  if (!allPositioned(page)) {
+  const std::size_t constructs = page.places.size() + page.transitions.size() + page.instances.size();
+  const bool columns = !allPositioned(page) && constructs > kGraphvizLimit;
+  if (columns) {
+    diags.warning(page.loc, "page '" + page.name + "' has " + std::to_string(constructs) +
+                                " constructs and some lack a position: laid out in columns (Graphviz lays out pages of up to " +
+                                std::to_string(kGraphvizLimit) + ")");
+    layoutInColumns(l);
+  } else if (!allPositioned(page)) {
     l.from_graphviz = true;
     if (!layoutWithGraphviz(l, widths, why)) {
       diags.error(page.loc, "page '" + page.name + "': " + why);

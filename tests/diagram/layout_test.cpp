@@ -124,6 +124,33 @@ TEST(DiagramLayout, GraphvizPutsEveryNodeApart) {
   }
 }
 
+TEST(DiagramLayout, PagesTooLargeForGraphvizGoInColumns) {
+  net::PageSpec page;
+  page.name = "big";
+  const int n = static_cast<int>(kGraphvizLimit) / 2 + 1;
+  for (int i = 0; i < n; ++i) {
+    page.places.push_back(testing::place("p" + std::to_string(i)));
+    page.transitions.push_back(testing::transition("t" + std::to_string(i)));
+    page.arcs.push_back(testing::arc("p" + std::to_string(i), "t" + std::to_string(i)));
+    page.arcs.push_back(testing::arc("t" + std::to_string(i), "p" + std::to_string((i + 1) % n)));
+  }
+  core::Diagnostics diags;
+  const auto l = layoutPage(page, diags);
+  EXPECT_FALSE(diags.hasErrors());
+  ASSERT_EQ(diags.all().size(), 1u);
+  EXPECT_NE(diags.all()[0].message.find("laid out in columns"), std::string::npos) << diags.str();
+  EXPECT_FALSE(l.from_graphviz);
+  std::set<std::pair<double, double>> centres;
+  for (const auto& p : l.places) centres.insert({p.centre.x, p.centre.y});
+  for (const auto& t : l.transitions) centres.insert({t.centre.x, t.centre.y});
+  EXPECT_EQ(centres.size(), 2u * static_cast<std::size_t>(n));
+  // a ring: each step one column further right
+  EXPECT_LT(l.places[0].centre.x, l.transitions[0].centre.x);
+  EXPECT_LT(l.transitions[0].centre.x, l.places[1].centre.x);
+  core::Diagnostics again;
+  EXPECT_EQ(dump(l), dump(layoutPage(page, again)));
+}
+
 TEST(DiagramLayout, ArcsToLinksEndAtTheInstanceBox) {
   core::Diagnostics diags;
   net::NetSpec spec;
