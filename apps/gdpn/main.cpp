@@ -196,7 +196,10 @@ int renderNet(const CaptureArgs& a) {
   auto session = open(a.model, a.seed, 0.0);
   if (!session) return 1;
   std::string error;
-  if (!gdpn::capture::renderNetAt(session->simulation(), o, a.out, error)) {
+  Diagnostics warnings;
+  const bool ok = gdpn::capture::renderNetAt(session->simulation(), o, a.out, warnings, error);
+  warnings.print(std::cerr);
+  if (!ok) {
     std::cerr << (error.starts_with("--page") || error.find(": error: ") != std::string::npos ? "error: " : a.out + ": error: ")
               << error << (error.ends_with('\n') ? "" : "\n");
     return 1;

@@ -106,7 +106,8 @@ bool renderAt(model::Simulation& sim, double at, const CaptureOptions& options, 
   return platform::writePng(png, options.width, options.height, rgb, error);
 }
 
-bool renderNetAt(model::Simulation& sim, const NetPictureOptions& options, const std::string& out, std::string& error) {
+bool renderNetAt(model::Simulation& sim, const NetPictureOptions& options, const std::string& out,
+                 core::Diagnostics& warnings, std::string& error) {
   // the page first, so that a wrong name costs no run
   core::Diagnostics diags;
   const auto view = diagram::findView(sim.model().net, options.page, diags);
@@ -115,6 +116,7 @@ bool renderNetAt(model::Simulation& sim, const NetPictureOptions& options, const
     error = (options.page.empty() ? "" : "--page '" + options.page + "': ") + diags.all().front().message;
     return false;
   }
+  warnings.append(diags);
   if (options.at) {
     const auto outcome = advance(sim, *options.at, {}, nullptr, {});
     if (outcome.reason == model::StopReason::ScriptError) {

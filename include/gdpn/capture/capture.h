@@ -52,8 +52,9 @@ struct NetPictureOptions {
 
 /// Runs `sim` to `options.at` (when given) and writes a picture of the net of one page with
 /// its marking to `out` (.svg or .png). False with `error` on failure; an unknown page's
-/// error lists the pages.
-bool renderNetAt(model::Simulation& sim, const NetPictureOptions& options, const std::string& out, std::string& error);
+/// error lists the pages. Warnings (a page too large for Graphviz) go to `warnings`.
+bool renderNetAt(model::Simulation& sim, const NetPictureOptions& options, const std::string& out,
+                 core::Diagnostics& warnings, std::string& error);
 
 /// Runs `sim` to `until` seconds at its own dt, taking a frame each 1/fps seconds of model
 /// time (the first at 0), and encodes them into `movie` through ffmpeg. False with `error` on
