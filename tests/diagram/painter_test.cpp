@@ -223,6 +223,27 @@ TEST(DiagramCulling, PickFindsWhatIsUnderTheMouse) {
   EXPECT_FALSE(index.pick({-500, -500}, 2));
 }
 
+TEST(DiagramViewport, ZoomKeepsThePointUnderTheMouseAndPanFollowsTheDrag) {
+  Viewport v{{100, 50}, 1.5};
+  const Point mouse{320, 200};
+  const Point under = v.toLayout(mouse);
+  const Viewport in = v.zoomedAbout(mouse, 2.0);
+  EXPECT_DOUBLE_EQ(in.zoom, 3.0);
+  EXPECT_NEAR(in.toLayout(mouse).x, under.x, 1e-9);
+  EXPECT_NEAR(in.toLayout(mouse).y, under.y, 1e-9);
+  const Viewport moved = v.panned({30, -12});
+  EXPECT_NEAR(moved.toScreen(under).x, mouse.x + 30, 1e-9);
+  EXPECT_NEAR(moved.toScreen(under).y, mouse.y - 12, 1e-9);
+  // fitting shows every shape and name inside the canvas
+  Drawn d;
+  const Viewport fit = fitViewport(d.layout, 400, 160);
+  const Box b = drawnBounds(d.layout);
+  EXPECT_GE(fit.toScreen(b.min).x, 0.0);
+  EXPECT_GE(fit.toScreen(b.min).y, 0.0);
+  EXPECT_LE(fit.toScreen(b.max).x, 400.0);
+  EXPECT_LE(fit.toScreen(b.max).y, 160.0);
+}
+
 TEST(DiagramPicture, EmptyPageGivesAnEmptyPicture) {
   net::PageSpec page;
   page.name = "empty";

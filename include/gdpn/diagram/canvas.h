@@ -30,7 +30,10 @@ enum class VAlign : std::uint8_t {
   Bottom,  ///< the anchor is at the bottom of the text (below descenders)
 };
 
-/// A surface to draw on, in pixels. Shapes are anti-aliased where the canvas can.
+/// A surface to draw on, in pixels. Shapes are anti-aliased where the canvas can. Each call
+/// maps to one ImDrawList call in the IDE's adapter (AddCircleFilled, AddCircle, AddRectFilled,
+/// AddRect, AddPolyline, AddConvexPolyFilled, AddText with the font size), offset by the view's
+/// top-left corner.
 class Canvas {
  public:
   virtual ~Canvas() = default;

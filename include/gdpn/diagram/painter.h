@@ -54,6 +54,15 @@ struct Viewport {
   [[nodiscard]] Point toScreen(Point p) const { return (p - origin) * zoom; }
   /// A canvas point in the layout, layout units.
   [[nodiscard]] Point toLayout(Point s) const { return origin + s * (1.0 / zoom); }
+  /// The viewport zoomed by `factor` (> 0) about canvas point `anchor` (pixels): the layout
+  /// point under the anchor stays under it (a mouse wheel over the net view).
+  [[nodiscard]] Viewport zoomedAbout(Point anchor, double factor) const {
+    const Point fixed = toLayout(anchor);
+    const double zoomed = zoom * factor;
+    return {fixed - anchor * (1.0 / zoomed), zoomed};
+  }
+  /// The viewport moved so that the picture follows a drag of `delta` pixels.
+  [[nodiscard]] Viewport panned(Point delta) const { return {origin - delta * (1.0 / zoom), zoom}; }
   /// What a canvas of `width` x `height` pixels shows, layout units.
   [[nodiscard]] Box visible(int width, int height) const {
     return {origin, toLayout({static_cast<double>(width), static_cast<double>(height)})};
