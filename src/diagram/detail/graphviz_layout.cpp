@@ -13,6 +13,13 @@ namespace {
 // Graphviz keeps global state: one layout at a time
 std::mutex g_graphviz;
 
+// one context for the process, made at the first layout and kept (Graphviz 2.43 loses part of
+// each context it frees, and loading its plugins each time costs more than a small layout)
+GVC_t* context() {
+  static GVC_t* gvc = gvContext();
+  return gvc;
+}
+
 constexpr int kBezierSamples = 8;  // points per cubic piece of an edge's spline
 
 std::string inches(double layout_units) {
@@ -35,7 +42,7 @@ struct GraphDeleter {
 
 std::optional<GvResult> dotLayout(const std::vector<GvNode>& nodes, const std::vector<GvEdge>& edges, std::string& why) {
   std::lock_guard lock(g_graphviz);
-  GVC_t* gvc = gvContext();
+  GVC_t* gvc = context();
   if (gvc == nullptr) {
     why = "cannot start Graphviz";
     return std::nullopt;
@@ -71,7 +78,6 @@ std::optional<GvResult> dotLayout(const std::vector<GvNode>& nodes, const std::v
   }
   if (gvLayout(gvc, g, "dot") != 0) {
     why = "Graphviz could not lay out the page";
-    gvFreeContext(gvc);
     return std::nullopt;
   }
   // read back: Graphviz has y up, in points; the picture wants y down from the top
@@ -98,8 +104,6 @@ std::optional<GvResult> dotLayout(const std::vector<GvNode>& nodes, const std::v
     result.edges.push_back(std::move(line));
   }
   gvFreeLayout(gvc, g);
-  graph.reset();
-  gvFreeContext(gvc);
   return result;
 }
 
