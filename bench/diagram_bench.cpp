@@ -142,7 +142,8 @@ void BM_IndexOf10kTransitions(benchmark::State& state) {
 }
 BENCHMARK(BM_IndexOf10kTransitions)->Unit(benchmark::kMillisecond);
 
-// Graphviz: a page of `nodes` nodes (half places, half transitions) with no positions
+// Graphviz: a page of `nodes` nodes (half places, half transitions) with no positions (above
+// kGraphvizLimit, 2,000, this measures the column layout that replaces Graphviz)
 void BM_GraphvizLayout(benchmark::State& state) {
   const int nodes = static_cast<int>(state.range(0));
   const auto page = gridPage(10, nodes / 20, false);
