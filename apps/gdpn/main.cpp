@@ -580,6 +580,19 @@ int main(int argc, char** argv) {
   }
   if (convert_cmd->parsed()) return convert(convert_in, convert_out);
   if (analyze_cmd->parsed()) return analyze(analyze_args);
+  if (render_cmd->parsed()) {
+    // the plant's options and the net's do not mix
+    for (const char* plant_only : {"--camera", "--samples", "--sensors", "--joints"}) {
+      if (render_args.net && render_cmd->get_option(plant_only)->count() > 0) {
+        std::cerr << "error: " << plant_only << " draws the plant; it does not go with --net\n";
+        return 2;
+      }
+    }
+    if (!render_args.net && render_cmd->get_option("--page")->count() > 0) {
+      std::cerr << "error: --page chooses the page of the net: add --net\n";
+      return 2;
+    }
+  }
   if (render_cmd->parsed() && render_args.net) {
     render_args.at_given = render_cmd->get_option("--at")->count() > 0;
     render_args.size_given = render_cmd->get_option("--size")->count() > 0;

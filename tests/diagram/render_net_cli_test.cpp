@@ -56,6 +56,12 @@ TEST(RenderNetCli, BadOutputsAreRefused) {
   r = runGdpn("render examples/basics/figure31 --net -o /nonexistent_dir_gdpn/net.png");
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.out.find("/nonexistent_dir_gdpn/net.png: error: cannot create a file in the folder"), std::string::npos) << r.out;
+  r = runGdpn("render examples/basics/figure31 --net --camera cam -o " + tempFile("cam.png"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("error: --camera draws the plant; it does not go with --net"), std::string::npos) << r.out;
+  r = runGdpn("render examples/basics/figure31 --page main -o " + tempFile("page.png"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("error: --page chooses the page of the net: add --net"), std::string::npos) << r.out;
   r = runGdpn("render examples/basics/figure31 --net --size 10x10 -o " + tempFile("small.png"));
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.out.find("--size '10x10'"), std::string::npos) << r.out;
