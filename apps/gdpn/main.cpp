@@ -553,7 +553,7 @@ int main(int argc, char** argv) {
     cmd->add_option("-o,--output", args.out, "the file to write")->required();
   };
   add_look(render_cmd, render_args);
-  render_cmd->add_flag("--net", render_args.net, "draw the net of a page with its marking (.svg or .png) instead of the plant");
+  render_cmd->add_flag("--net", render_args.net, "draw the net of a page with its marking (.svg or .png) instead of the plant; without --size, as large as the page needs");
   render_cmd->add_option("--page", render_args.page,
                          "with --net: the page, page type or instance path (page/instance/...) to draw (default: the first page)");
   CaptureArgs record_args;
