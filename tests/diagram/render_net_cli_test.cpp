@@ -39,6 +39,17 @@ TEST(RenderNetCli, DrawsThePageAtTheTimeAsked) {
   std::filesystem::remove(inner);
 }
 
+TEST(RenderNetCli, TwoRunsGiveTheSameBytes) {
+  // two_cells has no positions on its page: Graphviz lays it out, in two processes
+  const auto a = tempFile("run1.svg"), b = tempFile("run2.svg");
+  ASSERT_EQ(runGdpn("render examples/basics/two_cells --net --at 2 -o " + a).code, 0);
+  ASSERT_EQ(runGdpn("render examples/basics/two_cells --net --at 2 -o " + b).code, 0);
+  EXPECT_EQ(slurp(a), slurp(b));
+  EXPECT_FALSE(slurp(a).empty());
+  std::filesystem::remove(a);
+  std::filesystem::remove(b);
+}
+
 TEST(RenderNetCli, UnknownPageListsThePages) {
   const auto out = tempFile("nope.svg");
   const auto r = runGdpn("render examples/factory --net --page nope -o " + out);
