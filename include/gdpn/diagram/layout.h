@@ -22,7 +22,7 @@ namespace gdpn::diagram {
 inline constexpr double kEditorUnit = 72.0;
 /// Radius of a place's circle, layout units.
 inline constexpr double kPlaceRadius = 18.0;
-/// Width and height of a transition's bar, layout units.
+/// Width of a transition's bar, layout units.
 inline constexpr double kBarWidth = 8.0;
 /// Height of a transition's bar, layout units.
 inline constexpr double kBarHeight = 36.0;
