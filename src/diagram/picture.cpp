@@ -12,6 +12,7 @@ namespace gdpn::diagram {
 namespace {
 
 constexpr double kNaturalZoom = 1.5;  // pixels per layout unit
+constexpr double kMaxZoom = 3.0;      // a picture larger than the page needs: drawn larger, up to this
 constexpr double kMargin = 16.0;      // pixels
 
 }  // namespace
@@ -27,7 +28,7 @@ std::pair<int, int> naturalSize(const NetLayout& layout) {
 bool writeNetPicture(const NetLayout& layout, const NetState* state, int width, int height, const std::string& path,
                      std::string& why) {
   const SpatialIndex index(layout);
-  const Viewport view = fitViewport(layout, width, height, kMargin, kNaturalZoom);
+  const Viewport view = fitViewport(layout, width, height, kMargin, kMaxZoom);
   if (path.ends_with(".svg")) {
     SvgCanvas svg(width, height);
     paintNet(layout, index, state, view, svg);

@@ -133,18 +133,43 @@ void RasterCanvas::strokeRect(const Box& b, double w, Rgba colour) {
   fillRect({{b.max.x - h, b.min.y + h}, {b.max.x + h, b.max.y - h}}, colour);
 }
 
-void RasterCanvas::segment(Point a, Point b, double w, Rgba colour) {
+void RasterCanvas::segments(std::span<const std::pair<Point, Point>> pieces, double w, Rgba colour) {
+  if (pieces.empty()) return;
   const double ww = std::max(w, 1.0), fade = w / ww;
-  Box box{a, a};
-  box.add(b);
-  forPixels(box, ww, width_, height_, [&](int x, int y, Point p) {
-    blend(x, y, colour, fade * clamp01(ww / 2 + 0.5 - distanceToSegment(p, a, b)));
-  });
+  // each pixel's coverage is the most any piece gives it, blended once: no darker dots where
+  // pieces meet
+  Box box{pieces[0].first, pieces[0].first};
+  for (const auto& [a, b] : pieces) {
+    box.add(a);
+    box.add(b);
+  }
+  const int x0 = std::max(0, static_cast<int>(std::floor(box.min.x - ww - 1)));
+  const int y0 = std::max(0, static_cast<int>(std::floor(box.min.y - ww - 1)));
+  const int x1 = std::min(width_ - 1, static_cast<int>(std::ceil(box.max.x + ww + 1)));
+  const int y1 = std::min(height_ - 1, static_cast<int>(std::ceil(box.max.y + ww + 1)));
+  if (x1 < x0 || y1 < y0) return;
+  const auto cols = static_cast<std::size_t>(x1 - x0 + 1);
+  coverage_.assign(cols * static_cast<std::size_t>(y1 - y0 + 1), 0.0f);
+  for (const auto& [a, b] : pieces) {
+    Box piece{a, a};
+    piece.add(b);
+    forPixels(piece, ww, width_, height_, [&](int x, int y, Point p) {
+      auto& c = coverage_[static_cast<std::size_t>(y - y0) * cols + static_cast<std::size_t>(x - x0)];
+      c = std::max(c, static_cast<float>(clamp01(ww / 2 + 0.5 - distanceToSegment(p, a, b))));
+    });
+  }
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) {
+      const float c = coverage_[static_cast<std::size_t>(y - y0) * cols + static_cast<std::size_t>(x - x0)];
+      if (c > 0) blend(x, y, colour, fade * static_cast<double>(c));
+    }
 }
 
 void RasterCanvas::polyline(std::span<const Point> points, double w, Rgba colour, bool dashed) {
+  std::vector<std::pair<Point, Point>> pieces;
   if (!dashed) {
-    for (std::size_t i = 1; i < points.size(); ++i) segment(points[i - 1], points[i], w, colour);
+    for (std::size_t i = 1; i < points.size(); ++i) pieces.emplace_back(points[i - 1], points[i]);
+    segments(pieces, w, colour);
     return;
   }
   // dashes 3 line widths long, gaps 2 wide, continued across bends
@@ -157,11 +182,12 @@ void RasterCanvas::polyline(std::span<const Point> points, double w, Rgba colour
     while (s < len) {
       const bool in_dash = phase < on;
       const double step = std::min(len - s, in_dash ? on - phase : on + off - phase);
-      if (in_dash) segment(a + d * (s / len), a + d * ((s + step) / len), w, colour);
+      if (in_dash) pieces.emplace_back(a + d * (s / len), a + d * ((s + step) / len));
       s += step;
       phase = std::fmod(phase + step, on + off);
     }
   }
+  segments(pieces, w, colour);
 }
 
 void RasterCanvas::fillPolygon(std::span<const Point> points, Rgba colour) {

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "gdpn/diagram/canvas.h"
@@ -54,12 +55,13 @@ class RasterCanvas final : public Canvas {
   };
   RasterCanvas(int width, int height, std::unique_ptr<Font> font);
   void blend(int x, int y, Rgba colour, double coverage);
-  void segment(Point a, Point b, double line_width, Rgba colour);
+  void segments(std::span<const std::pair<Point, Point>> pieces, double line_width, Rgba colour);
   const Glyph& glyph(std::uint32_t code_point, double size, int subpixel) const;
 
   int width_, height_;
   std::vector<std::uint8_t> pixels_;
   std::unique_ptr<Font> font_;
+  std::vector<float> coverage_;  // scratch: a polyline's coverage over its box
   mutable std::unordered_map<std::uint64_t, Glyph> glyphs_;  // by code point, size and subpixel shift
 };
 
