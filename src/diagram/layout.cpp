@@ -159,9 +159,14 @@ bool layoutWithGraphviz(NetLayout& l, const std::vector<double>& instance_widths
     }
     return 0;
   };
+  // ranks far enough apart for the longest inscription to stand beside its arc
   std::vector<detail::GvEdge> edges;
-  for (const auto& arc : l.arcs) edges.push_back({index(arc.from), index(arc.to)});
-  auto result = detail::dotLayout(nodes, edges, why);
+  double gap = 54.0;
+  for (const auto& arc : l.arcs) {
+    edges.push_back({index(arc.from), index(arc.to)});
+    gap = std::max(gap, 7.0 * static_cast<double>(arc.inscription.size()) + 24.0);
+  }
+  auto result = detail::dotLayout(nodes, edges, std::min(gap, 120.0), why);
   if (!result) return false;
   // a margin around the drawing, for the names under the places
   const Point margin{kEditorUnit / 2, kEditorUnit / 2};

@@ -40,7 +40,8 @@ struct GraphDeleter {
 
 }  // namespace
 
-std::optional<GvResult> dotLayout(const std::vector<GvNode>& nodes, const std::vector<GvEdge>& edges, std::string& why) {
+std::optional<GvResult> dotLayout(const std::vector<GvNode>& nodes, const std::vector<GvEdge>& edges, double rank_gap,
+                                  std::string& why) {
   std::lock_guard lock(g_graphviz);
   GVC_t* gvc = context();
   if (gvc == nullptr) {
@@ -52,7 +53,8 @@ std::optional<GvResult> dotLayout(const std::vector<GvNode>& nodes, const std::v
   // the graph's look: left to right, nodes of fixed size with no labels, edges ending on the outline
   agattr(g, AGRAPH, const_cast<char*>("rankdir"), const_cast<char*>("LR"));
   agattr(g, AGRAPH, const_cast<char*>("nodesep"), const_cast<char*>("0.5"));
-  agattr(g, AGRAPH, const_cast<char*>("ranksep"), const_cast<char*>("0.75"));
+  std::string ranksep = inches(rank_gap);
+  agattr(g, AGRAPH, const_cast<char*>("ranksep"), ranksep.data());
   agattr(g, AGNODE, const_cast<char*>("shape"), const_cast<char*>("box"));
   agattr(g, AGNODE, const_cast<char*>("fixedsize"), const_cast<char*>("true"));
   agattr(g, AGNODE, const_cast<char*>("label"), const_cast<char*>(""));

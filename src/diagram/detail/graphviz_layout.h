@@ -30,7 +30,9 @@ struct GvResult {
   std::vector<std::vector<Point>> edges;
 };
 
-/// Runs dot (rankdir LR) on the graph; nullopt with `why` when Graphviz fails.
-std::optional<GvResult> dotLayout(const std::vector<GvNode>& nodes, const std::vector<GvEdge>& edges, std::string& why);
+/// Runs dot (rankdir LR, ranks `rank_gap` layout units apart) on the graph; nullopt with
+/// `why` when Graphviz fails.
+std::optional<GvResult> dotLayout(const std::vector<GvNode>& nodes, const std::vector<GvEdge>& edges, double rank_gap,
+                                  std::string& why);
 
 }  // namespace gdpn::diagram::detail
