@@ -16,6 +16,8 @@ packages=(
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libeigen3-dev libglm-dev
   # tests, benchmarks, movies
   libgtest-dev libgmock-dev libbenchmark-dev ffmpeg
+  # net pictures: Graphviz lays out nets without positions; DejaVu Sans draws their text
+  libgraphviz-dev fonts-dejavu-core
 )
 
 missing=()

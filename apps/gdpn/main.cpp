@@ -166,7 +166,48 @@ struct CaptureArgs {
   double until = 10.0;
   std::optional<std::uint64_t> seed;
   gdpn::capture::CaptureOptions options;
+  bool net = false;         // render --net: the net of a page rather than the plant
+  std::string page;         // render --net --page
+  bool at_given = false;    // --at was on the command line
+  bool size_given = false;  // --size was on the command line
 };
+
+/// `gdpn render --net`: the net of one page with its marking at --at (the initial marking
+/// without it), as SVG or PNG.
+int renderNet(const CaptureArgs& a) {
+  gdpn::capture::NetPictureOptions o;
+  o.page = a.page;
+  if (a.at_given) o.at = a.at;
+  if (a.size_given) {
+    const auto size = gdpn::capture::parseSize(a.size);
+    if (!size) {
+      std::cerr << "error: --size " << quoteArg(a.size) << " is not WIDTHxHEIGHT (for example 1280x720), each side "
+                << gdpn::capture::kMinSide << " to " << gdpn::capture::kMaxSide << " pixels\n";
+      return 2;
+    }
+    o.width = size->first;
+    o.height = size->second;
+  }
+  if (!a.out.ends_with(".svg") && !a.out.ends_with(".png")) {
+    std::cerr << "error: -o " << quoteArg(a.out) << ": a net picture is written as .svg or .png\n";
+    return 2;
+  }
+  if (overwritesInput("-o", a.out, {{"the model file", modelFile(a.model)}})) return 2;
+  auto session = open(a.model, a.seed, 0.0);
+  if (!session) return 1;
+  std::string error;
+  Diagnostics warnings;
+  const bool ok = gdpn::capture::renderNetAt(session->simulation(), o, a.out, warnings, error);
+  warnings.print(std::cerr);
+  if (!ok) {
+    std::cerr << (error.starts_with("--page") || error.find(": error: ") != std::string::npos ? "error: " : a.out + ": error: ")
+              << error << (error.ends_with('\n') ? "" : "\n");
+    return 1;
+  }
+  std::cout << a.out << ": the net of " << (a.page.empty() ? "the first page" : "'" + a.page + "'") << " at t = "
+            << session->simulation().kernel().now() << " s\n";
+  return 0;
+}
 
 /// `gdpn render` (movie = false) and `gdpn record` (movie = true).
 int capture(CaptureArgs a, bool movie) {
@@ -496,7 +537,8 @@ int main(int argc, char** argv) {
                         "print a progress line every 250 ms even when stderr is not a terminal");
 
   CaptureArgs render_args;
-  auto* render_cmd = app.add_subcommand("render", "Run a model headless to a time and save a picture of its plant");
+  auto* render_cmd =
+      app.add_subcommand("render", "Run a model headless to a time and save a picture of its plant (or, with --net, of its net)");
   render_cmd->add_option("MODEL", render_args.model, "a .gdpn.yaml file, or a folder holding one")->required();
   render_cmd->add_option("--at", render_args.at, "model time of the picture, seconds")
       ->check(number(0.0, kMaxTime, "seconds from 0 to 1e9"));
@@ -511,6 +553,9 @@ int main(int argc, char** argv) {
     cmd->add_option("-o,--output", args.out, "the file to write")->required();
   };
   add_look(render_cmd, render_args);
+  render_cmd->add_flag("--net", render_args.net, "draw the net of a page with its marking (.svg or .png) instead of the plant; without --size, as large as the page needs");
+  render_cmd->add_option("--page", render_args.page,
+                         "with --net: the page, page type or instance path (page/instance/...) to draw (default: the first page)");
   CaptureArgs record_args;
   auto* record_cmd = app.add_subcommand("record", "Run a model headless and encode a movie of its plant (through ffmpeg)");
   record_cmd->add_option("MODEL", record_args.model, "a .gdpn.yaml file, or a folder holding one")->required();
@@ -535,6 +580,24 @@ int main(int argc, char** argv) {
   }
   if (convert_cmd->parsed()) return convert(convert_in, convert_out);
   if (analyze_cmd->parsed()) return analyze(analyze_args);
+  if (render_cmd->parsed()) {
+    // the plant's options and the net's do not mix
+    for (const char* plant_only : {"--camera", "--samples", "--sensors", "--joints"}) {
+      if (render_args.net && render_cmd->get_option(plant_only)->count() > 0) {
+        std::cerr << "error: " << plant_only << " draws the plant; it does not go with --net\n";
+        return 2;
+      }
+    }
+    if (!render_args.net && render_cmd->get_option("--page")->count() > 0) {
+      std::cerr << "error: --page chooses the page of the net: add --net\n";
+      return 2;
+    }
+  }
+  if (render_cmd->parsed() && render_args.net) {
+    render_args.at_given = render_cmd->get_option("--at")->count() > 0;
+    render_args.size_given = render_cmd->get_option("--size")->count() > 0;
+    return renderNet(render_args);
+  }
   if (render_cmd->parsed()) return capture(render_args, false);
   if (record_cmd->parsed()) return capture(record_args, true);
   if (check_cmd->parsed()) return check(check_model, check_timeout);

@@ -7,6 +7,9 @@
 #include <string_view>
 
 #include "gdpn/capture/movie.h"
+#include "gdpn/diagram/layout.h"
+#include "gdpn/diagram/net_state.h"
+#include "gdpn/diagram/picture.h"
 #include "gdpn/platform/headless_context.h"
 #include "gdpn/platform/png.h"
 #include "gdpn/platform/target.h"
@@ -101,6 +104,33 @@ bool renderAt(model::Simulation& sim, double at, const CaptureOptions& options, 
   render::DrawStats stats;
   if (!studio.shoot(sim, options, rgb, stats, error)) return false;
   return platform::writePng(png, options.width, options.height, rgb, error);
+}
+
+bool renderNetAt(model::Simulation& sim, const NetPictureOptions& options, const std::string& out,
+                 core::Diagnostics& warnings, std::string& error) {
+  // the page first, so that a wrong name costs no run
+  core::Diagnostics diags;
+  const auto view = diagram::findView(sim.model().net, options.page, diags);
+  const auto layout = view.page != nullptr ? diagram::layoutPage(*view.page, diags) : diagram::NetLayout{};
+  if (diags.hasErrors()) {
+    error = (options.page.empty() ? "" : "--page '" + options.page + "': ") + diags.all().front().message;
+    return false;
+  }
+  warnings.append(diags);
+  if (options.at) {
+    const auto outcome = advance(sim, *options.at, {}, nullptr, {});
+    if (outcome.reason == model::StopReason::ScriptError) {
+      error = outcome.message;
+      return false;
+    }
+  }
+  const auto state = diagram::netStateOf(sim.kernel(), view, [&](net::NodeRef ref) { return sim.nodeName(ref); });
+  auto [width, height] = diagram::naturalSize(layout);
+  if (options.width > 0 && options.height > 0) {
+    width = options.width;
+    height = options.height;
+  }
+  return diagram::writeNetPicture(layout, &state, width, height, out, error);
 }
 
 bool record(model::Simulation& sim, double until, const CaptureOptions& options, const std::string& movie,

@@ -209,20 +209,6 @@ std::optional<NetSpec> parsePnml(const std::string& text, const std::string& fil
 
 namespace {
 
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 /// The PNML id of a construct: its original id when it came from PNML, else its name.
 std::string pnmlId(const std::string& name, const std::string& description) {
   return isIdNote(description) ? description.substr(kIdNote.size()) : name;
@@ -250,7 +236,7 @@ std::optional<std::string> writePnml(const NetSpec& spec, std::string& why) {
   std::unordered_map<std::string, std::string> id;  // name -> PNML id
   std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                     "<pnml xmlns=\"http://www.pnml.org/version-2009/grammar/pnml\">\n"
-                    "  <net id=\"" + escape(page.name) + "\" type=\"http://www.pnml.org/version-2009/grammar/ptnet\">\n"
+                    "  <net id=\"" + core::xmlEscape(page.name) + "\" type=\"http://www.pnml.org/version-2009/grammar/ptnet\">\n"
                     "    <page id=\"page0\">\n";
   for (const auto& p : page.places) {
     if (!p.nodes.empty() || !p.kinds.empty() || !p.sensors.empty() || !p.capacity.empty()) {
@@ -266,7 +252,7 @@ std::optional<std::string> writePnml(const NetSpec& spec, std::string& why) {
       tokens += t.value;
     }
     id[p.name] = pnmlId(p.name, p.description);
-    out += "      <place id=\"" + escape(id[p.name]) + "\"><name><text>" + escape(label(id[p.name], p.description)) +
+    out += "      <place id=\"" + core::xmlEscape(id[p.name]) + "\"><name><text>" + core::xmlEscape(label(id[p.name], p.description)) +
            "</text></name>" +
            positionXml(p.position);
     if (tokens > 0) out += "<initialMarking><text>" + std::to_string(tokens) + "</text></initialMarking>";
@@ -274,8 +260,8 @@ std::optional<std::string> writePnml(const NetSpec& spec, std::string& why) {
   }
   for (const auto& t : page.transitions) {
     id[t.name] = pnmlId(t.name, t.description);
-    out += "      <transition id=\"" + escape(id[t.name]) + "\"><name><text>" +
-           escape(label(id[t.name], t.description)) + "</text></name>" + positionXml(t.position) + "</transition>\n";
+    out += "      <transition id=\"" + core::xmlEscape(id[t.name]) + "\"><name><text>" +
+           core::xmlEscape(label(id[t.name], t.description)) + "</text></name>" + positionXml(t.position) + "</transition>\n";
   }
   int n = 0;
   for (const auto& a : page.arcs) {
@@ -291,8 +277,8 @@ std::optional<std::string> writePnml(const NetSpec& spec, std::string& why) {
       why = "arc '" + a.from + "' -> '" + a.to + "' names a link or an unknown node";
       return std::nullopt;
     }
-    out += "      <arc id=\"arc" + std::to_string(n++) + "\" source=\"" + escape(id[a.from]) + "\" target=\"" +
-           escape(id[a.to]) + "\"";
+    out += "      <arc id=\"arc" + std::to_string(n++) + "\" source=\"" + core::xmlEscape(id[a.from]) + "\" target=\"" +
+           core::xmlEscape(id[a.to]) + "\"";
     if (a.kind == ArcKind::Inhibitor) out += " type=\"inhibitor\"";
     if (a.kind == ArcKind::Test) out += " type=\"test\"";
     out += ">";

@@ -462,8 +462,11 @@ TEST(CliNumbers, AHugeNumberIsQuotedShort) {
 }
 
 TEST(CliNumbers, SizesOutsideSixteenTo16384AreRefused) {
-  for (const char* bad : {"8x8", "16385x16", "0x720", "-64x48", "nanxnan", "64x48x2", std::string(200, '1').c_str()}) {
-    const auto r = gdpn(std::string("render tests/data/render/cube_lit.gdpn.yaml -o /tmp/gdpn_never.png --size=") + bad);
+  // (the long one is a named string: a temporary's c_str() would dangle by the time the loop reads it)
+  const std::string long_size(200, '1');
+  for (const std::string& bad : {std::string("8x8"), std::string("16385x16"), std::string("0x720"), std::string("-64x48"),
+                                 std::string("nanxnan"), std::string("64x48x2"), long_size}) {
+    const auto r = gdpn("render tests/data/render/cube_lit.gdpn.yaml -o /tmp/gdpn_never.png --size=" + bad);
     EXPECT_EQ(r.code, 2) << bad << "\n" << r.out;
     EXPECT_NE(r.out.find("error: --size '"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("is not WIDTHxHEIGHT (for example 1280x720), each side 16 to 16384 pixels"), std::string::npos)

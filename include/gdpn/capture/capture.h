@@ -42,6 +42,20 @@ struct RecordResult {
 bool renderAt(model::Simulation& sim, double at, const CaptureOptions& options, const std::string& png,
               std::string& error);
 
+/// What `gdpn render --net` draws.
+struct NetPictureOptions {
+  std::string page;          ///< the page, page type or instance path ("line/cellA"); "" the first page
+  std::optional<double> at;  ///< model time, seconds; none: the initial marking, before time 0 fires
+  int width = 0;             ///< pixels; 0 (with height 0): a size that fits the page
+  int height = 0;            ///< pixels
+};
+
+/// Runs `sim` to `options.at` (when given) and writes a picture of the net of one page with
+/// its marking to `out` (.svg or .png). False with `error` on failure; an unknown page's
+/// error lists the pages. Warnings (a page too large for Graphviz) go to `warnings`.
+bool renderNetAt(model::Simulation& sim, const NetPictureOptions& options, const std::string& out,
+                 core::Diagnostics& warnings, std::string& error);
+
 /// Runs `sim` to `until` seconds at its own dt, taking a frame each 1/fps seconds of model
 /// time (the first at 0), and encodes them into `movie` through ffmpeg. False with `error` on
 /// failure (the run's own outcome is in `result`).

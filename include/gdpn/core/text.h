@@ -29,6 +29,10 @@ bool isIdentifier(std::string_view s);
 
 namespace gdpn::core {
 
+/// `s` with the characters XML reserves (< > & ") written as entities, for text and
+/// attribute values.
+std::string xmlEscape(std::string_view s);
+
 /// `s` as a JSON string literal, quotes included, with control characters escaped.
 std::string jsonQuote(std::string_view s);
 

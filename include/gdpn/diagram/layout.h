@@ -1,0 +1,111 @@
+#pragma once
+/// \file
+/// Where each construct of one page (or page type) is drawn: places, transitions, instance
+/// boxes and the polyline of each arc, in layout units. A page whose constructs all carry an
+/// editor position (`at:` in the model file, PNML graphics) is drawn where they say; a page
+/// with any construct lacking one is laid out by Graphviz (`dot`, left to right).
+///
+/// Layout units: 1 layout unit = 1 point (1/72 inch), x right and y down. One editor unit
+/// (`at: [1, 0]`) is kEditorUnit layout units. The same spec always gives the same layout.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "gdpn/core/diagnostics.h"
+#include "gdpn/diagram/geometry.h"
+#include "gdpn/net/spec.h"
+
+namespace gdpn::diagram {
+
+/// Layout units per editor unit: neighbours one editor unit apart stand an inch apart.
+inline constexpr double kEditorUnit = 72.0;
+/// Radius of a place's circle, layout units.
+inline constexpr double kPlaceRadius = 18.0;
+/// Width of a transition's bar, layout units.
+inline constexpr double kBarWidth = 8.0;
+/// Height of a transition's bar, layout units.
+inline constexpr double kBarHeight = 36.0;
+/// Height of an instance box, layout units (its width follows its name).
+inline constexpr double kInstanceHeight = 40.0;
+/// The most constructs Graphviz lays out on one page (about 1.5 s at 4,000 on one core); a
+/// larger page without positions is put in columns by distance from its sources instead.
+inline constexpr std::size_t kGraphvizLimit = 2000;
+
+/// What a laid-out item is.
+enum class ItemKind : std::uint8_t {
+  Place,       ///< a place (index into NetLayout::places)
+  Transition,  ///< a transition (index into NetLayout::transitions)
+  Instance,    ///< an instance box (index into NetLayout::instances)
+  Arc,         ///< an arc (index into NetLayout::arcs)
+};
+
+/// One item of a layout: what it is and its index in the vector of its kind.
+struct ItemRef {
+  ItemKind kind = ItemKind::Place;  ///< which vector
+  std::uint32_t index = 0;          ///< position in it
+  friend auto operator<=>(const ItemRef&, const ItemRef&) = default;
+};
+
+/// A place, a transition or an instance box: its centre and its box, layout units.
+struct NodeLayout {
+  std::string name;  ///< the construct's name on the page
+  Point centre;      ///< centre, layout units
+  Box box;           ///< what it covers, layout units (the circle's square for a place)
+};
+
+/// An instance box: the instance's name and its page type.
+struct InstanceLayout : NodeLayout {
+  std::string type;  ///< the page type it instantiates
+};
+
+/// An arc: its polyline from the source's outline to the target's outline, layout units.
+struct ArcLayout {
+  ItemRef from;                  ///< the source item (a place, transition or instance)
+  ItemRef to;                    ///< the target item
+  std::string link;              ///< for an arc to or from an instance: the reference's name, else ""
+  net::ArcKind kind = net::ArcKind::Normal;  ///< normal, test or inhibitor
+  std::int64_t weight = 1;       ///< total weight over its slots, tokens
+  std::string inscription;       ///< what the arc's label says: "" for weight 1 on a0, "3" for weight 3 on a0, else its slots ("b0..b4", "2·a1+c0")
+  std::uint32_t spec_index = 0;  ///< the arc's index in PageSpec::arcs (NetState::arcs is indexed by it)
+  std::vector<Point> points;     ///< at least two points: start, bends, end (the end touches the target)
+  Box box;                       ///< the polyline's bounding box
+};
+
+/// A page drawn on the plane. Items keep the spec's order: places[i] is the page's i-th place.
+struct NetLayout {
+  std::string page;                         ///< the page's name
+  std::vector<NodeLayout> places;           ///< in the spec's order
+  std::vector<NodeLayout> transitions;      ///< in the spec's order
+  std::vector<InstanceLayout> instances;    ///< in the spec's order
+  std::vector<ArcLayout> arcs;              ///< in the spec's order (arcs naming nothing on the page are left out)
+  Box bounds;                               ///< everything, layout units
+  bool from_graphviz = false;               ///< true when Graphviz placed the nodes
+
+  /// The box of item `item`, layout units.
+  [[nodiscard]] const Box& boxOf(ItemRef item) const;
+};
+
+/// Lays out `page`. Positions come from the spec when every place, transition and instance
+/// has one; otherwise Graphviz places everything (above kGraphvizLimit constructs, columns
+/// by breadth-first distance from the sources, with a warning). A page Graphviz cannot lay
+/// out gives an error at the page's location in `diags` and an empty layout.
+NetLayout layoutPage(const net::PageSpec& page, core::Diagnostics& diags);
+
+/// The label of an arc with these weights (see ArcLayout::inscription).
+[[nodiscard]] std::string inscription(const std::vector<net::SlotCount>& weights);
+
+/// A page to draw, and the prefix that qualifies its constructs' names in the frozen net.
+struct PageView {
+  const net::PageSpec* page = nullptr;  ///< the page or page type
+  std::string prefix;  ///< "line" for page `line`, "line/cellA" inside its instance cellA; "" for a page type alone
+};
+
+/// The page a view `path` names: "" is the first page; "line" the page (or else the page
+/// type) of that name; "line/cellA/arm" the page type of instance arm inside instance cellA
+/// of page line. A path naming nothing gives an error (at `where`) listing the pages and
+/// page types, and a view with no page.
+PageView findView(const net::NetSpec& spec, const std::string& path, core::Diagnostics& diags,
+                  const core::SourceLoc& where = {});
+
+}  // namespace gdpn::diagram

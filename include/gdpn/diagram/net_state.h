@@ -1,0 +1,52 @@
+#pragma once
+/// \file
+/// What the net view shows of a running net: per place slot its kind, tokens and token
+/// names; per transition whether it is idle, enabled or occurring; per arc whether its
+/// condition holds. Made from the kernel at its current time; plain data, so the IDE and the
+/// CLI draw the same thing.
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gdpn/diagram/layout.h"
+#include "gdpn/net/kernel.h"
+
+namespace gdpn::diagram {
+
+/// The marking of one place slot.
+struct SlotMarking {
+  net::SlotId slot = net::kDefaultSlot;        ///< which slot
+  net::SlotKind kind = net::SlotKind::Control; ///< control, node or sensor
+  std::int64_t count = 0;                      ///< tokens (a sensor slot: 1, its variable)
+  std::vector<std::string> names;              ///< node tokens' names, first to leave first
+};
+
+/// What a transition is doing.
+enum class Activity : std::uint8_t {
+  Idle,       ///< neither enabled nor occurring
+  Enabled,    ///< may start now
+  Occurring,  ///< started, not yet completed
+};
+
+/// The state of one page's constructs, indexed as the PageSpec's vectors are.
+struct NetState {
+  double time = 0.0;                              ///< model time, seconds
+  std::vector<std::vector<SlotMarking>> places;   ///< per place: its slots in use (empty slots left out)
+  std::vector<Activity> transitions;              ///< per transition
+  std::vector<std::optional<bool>> arcs;          ///< per arc of PageSpec::arcs: whether it holds (nullopt: unknown)
+};
+
+/// Names a node token (the kernel knows only references).
+using NodeNamer = std::function<std::string(net::NodeRef)>;
+
+/// The state of `view`'s constructs in `kernel` now. Constructs are found by their qualified
+/// names (`view.prefix` + "/" + name); those the net lacks (a page type seen alone) stay
+/// empty and idle. An arc holds when every term it makes holds: inputs and tests have their
+/// tokens, inhibitors are below their weight, outputs have room, conditions are true. Node
+/// tokens are named by `names`, or by the net's initial node names when it is empty.
+NetState netStateOf(const net::Kernel& kernel, const PageView& view, const NodeNamer& names = {});
+
+}  // namespace gdpn::diagram

@@ -1,0 +1,93 @@
+#include "gdpn/diagram/net_state.h"
+
+namespace gdpn::diagram {
+namespace {
+
+// whether term `id` of the kernel's net holds now
+bool termHolds(const net::Kernel& k, net::TermId id) {
+  const net::Term& term = k.net().terms()[id];
+  const std::int64_t m = k.marking(term.place_slot);
+  switch (term.kind) {
+    case net::TermKind::Input:
+    case net::TermKind::Test: return m >= term.weight;
+    case net::TermKind::Inhibitor: return m < term.weight;
+    case net::TermKind::Output: {
+      const std::int64_t cap = k.net().placeSlots()[term.place_slot].capacity;
+      return cap == net::kUnbounded || m + k.reserve(term.place_slot) + term.weight - term.take <= cap;
+    }
+    case net::TermKind::Condition: return k.condition(id);
+  }
+  return false;
+}
+
+std::string qualify(const PageView& view, const std::string& name) {
+  return view.prefix.empty() ? std::string() : view.prefix + "/" + name;
+}
+
+}  // namespace
+
+NetState netStateOf(const net::Kernel& kernel, const PageView& view, const NodeNamer& names) {
+  NetState s;
+  s.time = kernel.now();
+  if (view.page == nullptr) return s;
+  const net::PageSpec& page = *view.page;
+  const net::Net& net = kernel.net();
+  auto nameOf = [&](net::NodeRef ref) -> std::string {
+    if (names) return names(ref);
+    return ref < net.nodeNames().size() ? net.nodeNames()[ref] : "#" + std::to_string(ref);
+  };
+  // places: each slot in use, with its tokens
+  s.places.resize(page.places.size());
+  for (std::size_t i = 0; i < page.places.size(); ++i) {
+    const auto p = view.prefix.empty() ? -1 : net.findPlace(qualify(view, page.places[i].name));
+    if (p < 0) continue;
+    const net::Place& place = net.places()[static_cast<std::size_t>(p)];
+    for (auto ps = place.slots_begin; ps < place.slots_end; ++ps) {
+      const net::PlaceSlot& slot = net.placeSlots()[ps];
+      SlotMarking m{slot.slot, slot.kind, kernel.marking(ps), {}};
+      if (!net.sensorPath(ps).empty()) {
+        m.kind = net::SlotKind::Sensor;
+        m.count = 1;
+      }
+      if (m.kind == net::SlotKind::Node)
+        for (net::NodeRef ref : kernel.nodes(ps)) m.names.push_back(nameOf(ref));
+      if (m.count > 0) s.places[i].push_back(std::move(m));
+    }
+  }
+  // transitions: idle, enabled or occurring
+  s.transitions.assign(page.transitions.size(), Activity::Idle);
+  std::vector<std::int64_t> ids(page.transitions.size(), -1);
+  for (std::size_t i = 0; i < page.transitions.size(); ++i) {
+    ids[i] = view.prefix.empty() ? -1 : net.findTransition(qualify(view, page.transitions[i].name));
+    if (ids[i] < 0) continue;
+    const auto t = static_cast<net::TransitionId>(ids[i]);
+    s.transitions[i] = kernel.occurring(t) ? Activity::Occurring : kernel.enabled(t) ? Activity::Enabled : Activity::Idle;
+  }
+  // arcs: the terms of the arc's transition on the arc's place, inputs or outputs by its direction
+  s.arcs.assign(page.arcs.size(), std::nullopt);
+  for (std::size_t a = 0; a < page.arcs.size() && !view.prefix.empty(); ++a) {
+    const auto& arc = page.arcs[a];
+    std::int64_t t = -1, p = -1;
+    bool output = false;
+    if ((t = net.findTransition(qualify(view, arc.to))) >= 0) {
+      p = net.findPlace(qualify(view, arc.from));
+    } else if ((t = net.findTransition(qualify(view, arc.from))) >= 0) {
+      p = net.findPlace(qualify(view, arc.to));
+      output = true;
+    }
+    if (t < 0 || p < 0) continue;
+    const auto first = net.transitions()[static_cast<std::size_t>(t)].terms_begin;
+    bool any = false, all = true;
+    const auto terms = net.termsOf(static_cast<net::TransitionId>(t));
+    for (std::size_t k = 0; k < terms.size(); ++k) {
+      if (net.placeSlots()[terms[k].place_slot].place != static_cast<net::PlaceId>(p)) continue;
+      if ((terms[k].kind == net::TermKind::Output) != output) continue;
+      any = true;
+      all = all && termHolds(kernel, static_cast<net::TermId>(first + k));
+    }
+    if (any) s.arcs[a] = all;
+  }
+  return s;
+}
+
+}  // namespace gdpn::diagram

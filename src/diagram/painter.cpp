@@ -1,0 +1,334 @@
+#include "gdpn/diagram/painter.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+namespace gdpn::diagram {
+namespace {
+
+// sizes in layout units, scaled by the zoom when drawn
+constexpr double kLabelSize = 11.0;     // names
+constexpr double kLabelGap = 3.0;       // between a shape and its name
+constexpr double kLineWidth = 1.2;      // arcs
+constexpr double kOutlineWidth = 1.6;   // places, instance boxes
+constexpr double kArrowLength = 9.0;
+constexpr double kArrowHalfWidth = 4.0;
+constexpr double kInhibitorRadius = 3.5;
+constexpr double kDotRadius = 3.2;
+constexpr double kNameRoom = 18.0;      // names under places and above transitions
+
+Rgba kindColour(net::SlotKind kind) {
+  switch (kind) {
+    case net::SlotKind::Control: return colours::kControl;
+    case net::SlotKind::Node: return colours::kNode;
+    case net::SlotKind::Sensor: return colours::kSensor;
+  }
+  return colours::kControl;
+}
+
+Rgba activityColour(Activity a) {
+  switch (a) {
+    case Activity::Idle: return colours::kIdle;
+    case Activity::Enabled: return colours::kEnabled;
+    case Activity::Occurring: return colours::kOccurring;
+  }
+  return colours::kIdle;
+}
+
+Point unit(Point d) {
+  const double len = std::hypot(d.x, d.y);
+  return len > 1e-12 ? d * (1.0 / len) : Point{1, 0};
+}
+
+// the point `share` of the way along a polyline, and the direction there
+std::pair<Point, Point> pointAlong(const std::vector<Point>& pts, double share) {
+  double total = 0;
+  for (std::size_t i = 1; i < pts.size(); ++i) total += std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
+  double left = total * share;
+  for (std::size_t i = 1; i < pts.size(); ++i) {
+    const Point d = pts[i] - pts[i - 1];
+    const double len = std::hypot(d.x, d.y);
+    if (left <= len && len > 0) return {pts[i - 1] + d * (left / len), unit(d)};
+    left -= len;
+  }
+  return {pts.front(), Point{1, 0}};
+}
+
+// cuts `length` off the end of a polyline (it keeps at least its first point and one more)
+void trimEnd(std::vector<Point>& pts, double length) {
+  while (pts.size() >= 2) {
+    const Point a = pts[pts.size() - 2], b = pts.back();
+    const double seg = std::hypot(b.x - a.x, b.y - a.y);
+    if (seg > length) {
+      pts.back() = b + (a - b) * (length / seg);
+      return;
+    }
+    length -= seg;
+    pts.pop_back();
+  }
+  pts.push_back(pts.front());
+}
+
+// where `count` token dots sit in a place of radius r (offsets from its centre)
+std::vector<Point> dotPattern(std::int64_t count, double r) {
+  const double s = 0.42 * r;
+  switch (count) {
+    case 1: return {{0, 0}};
+    case 2: return {{-s, 0}, {s, 0}};
+    case 3: return {{-s, s * 0.6}, {s, s * 0.6}, {0, -s * 0.8}};
+    case 4: return {{-s, -s}, {s, -s}, {-s, s}, {s, s}};
+    default: return {{-s, -s}, {s, -s}, {-s, s}, {s, s}, {0, 0}};
+  }
+}
+
+// a piece of text waiting for the label pass: where it may stand, first choice first
+struct Label {
+  std::string text;
+  double size = 0;
+  HAlign h = HAlign::Centre;
+  VAlign v = VAlign::Middle;
+  Rgba colour;
+  std::vector<Point> anchors;  // candidates; names have one
+};
+
+// the box `text` covers at `anchor`, pixels
+Box labelBox(const Canvas& c, const Label& l, Point anchor) {
+  const double w = c.textWidth(l.text, l.size), h = 1.17 * l.size;
+  const double x = l.h == HAlign::Left ? anchor.x : l.h == HAlign::Centre ? anchor.x - w / 2 : anchor.x - w;
+  const double y = l.v == VAlign::Top ? anchor.y : l.v == VAlign::Middle ? anchor.y - 0.5 * h : anchor.y - h;
+  return {{x - 1, y}, {x + w + 1, y + h}};
+}
+
+class Painter {
+ public:
+  Painter(const NetLayout& l, const NetState* s, const Viewport& v, Canvas& c) : l_(l), s_(s), v_(v), c_(c) {
+    font_ = std::min(kLabelSize * v.zoom, kMaxFontPx);
+    labels_ = font_ >= kMinFontPx;
+  }
+
+  void arc(const ArcLayout& a) {
+    std::vector<Point> pts;
+    for (const Point& p : a.points) pts.push_back(v_.toScreen(p));
+    if (pts.size() < 2) return;
+    std::optional<bool> holds;
+    if (s_ != nullptr && a.spec_index < s_->arcs.size()) holds = s_->arcs[a.spec_index];
+    const Rgba colour = !holds ? colours::kIdle : *holds ? colours::kEnabled : colours::kArcOff;
+    const double w = std::max(kLineWidth * v_.zoom, 1.0);
+    // the end: an arrowhead (normal), a small circle (inhibitor) or nothing (test)
+    const Point end = pts.back();
+    if (a.kind == net::ArcKind::Normal) {
+      // the line stops inside the head; the head points along the last stretch of its length
+      const double len = std::max(kArrowLength * v_.zoom, 6.0), half = std::max(kArrowHalfWidth * v_.zoom, 3.0);
+      trimEnd(pts, len);
+      const Point dir = unit(end - pts.back());
+      const Point base = end - dir * len, side{-dir.y * half, dir.x * half};
+      pts.push_back(end - dir * (len * 0.8));
+      const std::array<Point, 3> head{end, base + side, base - side};
+      c_.fillPolygon(head, colour);
+    } else if (a.kind == net::ArcKind::Inhibitor) {
+      const double r = std::max(kInhibitorRadius * v_.zoom, 2.5);
+      trimEnd(pts, 2 * r);
+      const Point dir = unit(end - pts.back());
+      c_.strokeCircle(end - dir * r, r, w, colour);
+    }
+    const Point dir = unit(end - pts[pts.size() - 2]);
+    c_.polyline(pts, w, colour, a.kind == net::ArcKind::Test);
+    if (!labels_) return;
+    // the weight beside the line: at its middle, else a third of the way from either end
+    if (!a.inscription.empty()) {
+      Label l{a.inscription, std::max(font_ * 0.9, kMinFontPx), HAlign::Centre, VAlign::Middle, colours::kInscription, {}};
+      const double gap = l.size * 0.75;
+      for (const double share : {0.5, 0.35, 0.65, 0.2, 0.8}) {
+        const auto [at, d] = pointAlong(pts, share);
+        const Point normal{d.y, -d.x};
+        l.anchors.push_back(at + normal * gap);
+        l.anchors.push_back(at - normal * gap);
+      }
+      pending_.push_back(std::move(l));
+    }
+    // the reference's name where the arc meets an instance box
+    if (!a.link.empty()) {
+      const bool to_box = a.to.kind == ItemKind::Instance;
+      const Point s = v_.toScreen(to_box ? a.points.back() : a.points.front());
+      const bool left = (to_box ? dir.x : -unit(pts[1] - pts[0]).x) > 0;
+      Label l{a.link, std::max(font_ * 0.85, kMinFontPx), left ? HAlign::Right : HAlign::Left, VAlign::Bottom,
+              colours::kInstanceLine, {}};
+      l.anchors = {{s.x + (left ? -3.0 : 3.0), s.y - 2}, {s.x + (left ? -3.0 : 3.0), s.y + 2 + 1.17 * l.size}};
+      pending_.push_back(std::move(l));
+    }
+  }
+
+  /// Draws the names where they belong, then each weight and link name at its first free place.
+  void finish() {
+    for (const auto& [l, at] : names_) {
+      c_.fillRect(labelBox(c_, l, at), kPatch);
+      c_.text(at, l.text, l.size, l.h, l.v, l.colour);
+    }
+    for (const auto& l : pending_) {
+      // the first place that covers nothing, else the one that covers least
+      Point best = l.anchors.front();
+      double least = 1e300;
+      for (const Point& at : l.anchors) {
+        // a few pixels apart, so that an inscription never reads as part of a name
+        Box b = labelBox(c_, l, at);
+        b.min = b.min - Point{4, 2};
+        b.max = b.max + Point{4, 2};
+        double covered = 0;
+        for (const Box& o : taken_) {
+          if (!o.overlaps(b)) continue;
+          covered += (std::min(b.max.x, o.max.x) - std::max(b.min.x, o.min.x)) * (std::min(b.max.y, o.max.y) - std::max(b.min.y, o.min.y));
+        }
+        if (covered < least) {
+          least = covered;
+          best = at;
+        }
+        if (covered == 0) break;
+      }
+      const Box b = labelBox(c_, l, best);
+      taken_.push_back(b);
+      c_.fillRect(b, kPatch);
+      c_.text(best, l.text, l.size, l.h, l.v, l.colour);
+    }
+  }
+
+  void instance(const InstanceLayout& i) {
+    const Box b{v_.toScreen(i.box.min), v_.toScreen(i.box.max)};
+    c_.fillRect(b, colours::kInstanceFill);
+    c_.strokeRect(b, std::max(kOutlineWidth * v_.zoom, 1.0), colours::kInstanceLine);
+    taken_.push_back(b);
+    if (!labels_) return;
+    const Point c = v_.toScreen(i.centre);
+    c_.text({c.x, c.y - 1}, i.name, font_, HAlign::Centre, VAlign::Bottom, colours::kOutline);
+    c_.text({c.x, c.y + 1}, ": " + i.type, font_ * 0.9, HAlign::Centre, VAlign::Top, colours::kInstanceLine);
+  }
+
+  void transition(std::size_t k) {
+    const NodeLayout& t = l_.transitions[k];
+    const Activity a = s_ != nullptr && k < s_->transitions.size() ? s_->transitions[k] : Activity::Idle;
+    const Box b{v_.toScreen(t.box.min), v_.toScreen(t.box.max)};
+    // a bar at least a pixel and a half wide, so that it shows when zoomed out
+    const double grow = std::max(0.0, (1.5 - b.width()) / 2);
+    c_.fillRect({{b.min.x - grow, b.min.y}, {b.max.x + grow, b.max.y}}, activityColour(a));
+    taken_.push_back(b);
+    if (labels_) name({(b.min.x + b.max.x) / 2, b.min.y - kLabelGap * v_.zoom}, t.name, VAlign::Bottom);
+  }
+
+  void place(std::size_t k) {
+    const NodeLayout& p = l_.places[k];
+    const Point c = v_.toScreen(p.centre);
+    const double r = kPlaceRadius * v_.zoom;
+    c_.fillCircle(c, r, colours::kBackground);
+    c_.strokeCircle(c, r, std::max(kOutlineWidth * v_.zoom, 1.0), colours::kOutline);
+    if (s_ != nullptr && k < s_->places.size()) tokens(s_->places[k], c, r);
+    taken_.push_back(Box::around(c, r, r));
+    if (labels_) name({c.x, c.y + r + kLabelGap * v_.zoom}, p.name, VAlign::Top);
+  }
+
+ private:
+  // a construct's name: drawn in the label pass, over the arcs, on a white patch
+  void name(Point at, const std::string& text, VAlign v) {
+    Label l{text, font_, HAlign::Centre, v, colours::kOutline, {at}};
+    taken_.push_back(labelBox(c_, l, at));
+    names_.emplace_back(std::move(l), at);
+  }
+
+  void tokens(const std::vector<SlotMarking>& slots, Point c, double r) {
+    // tokens per kind: control, node, sensor
+    std::array<std::int64_t, 3> per_kind{0, 0, 0};
+    for (const auto& s : slots) per_kind[static_cast<std::size_t>(s.kind)] += s.count;
+    const std::int64_t total = per_kind[0] + per_kind[1] + per_kind[2];
+    if (total == 0) return;
+    if (total <= kMaxDots) {
+      // dots: control tokens first, then node tokens, then sensor variables
+      const auto offsets = dotPattern(total, r);
+      const double dot = std::max(kDotRadius * v_.zoom, 1.0);
+      std::size_t i = 0;
+      for (std::size_t kind = 0; kind < 3; ++kind)
+        for (std::int64_t n = 0; n < per_kind[kind]; ++n)
+          c_.fillCircle(c + offsets[i++], dot, kindColour(static_cast<net::SlotKind>(kind)));
+      return;
+    }
+    // numbers, one line per kind present, in the kind's colour
+    std::vector<std::pair<std::string, Rgba>> lines;
+    for (std::size_t kind = 0; kind < 3; ++kind)
+      if (per_kind[kind] > 0) lines.emplace_back(std::to_string(per_kind[kind]), kindColour(static_cast<net::SlotKind>(kind)));
+    const double size = std::min(1.6 * r / static_cast<double>(lines.size()), kMaxFontPx);
+    if (size < kMinFontPx * 0.75) {
+      c_.fillCircle(c, std::max(r * 0.4, 1.0), lines.front().second);  // too small to read: one dot says "marked"
+      return;
+    }
+    const double top = c.y - size * static_cast<double>(lines.size()) / 2;
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      c_.text({c.x, top + size * (static_cast<double>(i) + 0.5)}, lines[i].first, size, HAlign::Centre, VAlign::Middle,
+              lines[i].second);
+  }
+
+  const NetLayout& l_;
+  const NetState* s_;
+  const Viewport& v_;
+  Canvas& c_;
+  double font_ = kLabelSize;
+  bool labels_ = true;
+  std::vector<std::pair<Label, Point>> names_;  // names, where they stand
+  std::vector<Label> pending_;                  // weights and link names, placed last
+  std::vector<Box> taken_;                      // what labels should not cover: shapes and placed labels, pixels
+  static constexpr Rgba kPatch{255, 255, 255, 200};
+};
+
+}  // namespace
+
+Box drawnBounds(const NetLayout& layout) {
+  Box b = layout.bounds;
+  b.min = b.min - Point{kNameRoom, kNameRoom};
+  b.max = b.max + Point{kNameRoom, kNameRoom};
+  // names wider than their shapes
+  for (const auto& p : layout.places) {
+    const double half = 0.6 * kLabelSize * static_cast<double>(codePoints(p.name)) / 2;
+    b.add({p.centre.x - half, p.centre.y});
+    b.add({p.centre.x + half, p.centre.y});
+  }
+  for (const auto& t : layout.transitions) {
+    const double half = 0.6 * kLabelSize * static_cast<double>(codePoints(t.name)) / 2;
+    b.add({t.centre.x - half, t.centre.y});
+    b.add({t.centre.x + half, t.centre.y});
+  }
+  return b;
+}
+
+Viewport fitViewport(const NetLayout& layout, int width, int height, double margin, double max_zoom) {
+  const Box b = drawnBounds(layout);
+  const double w = std::max(b.width(), 1.0), h = std::max(b.height(), 1.0);
+  const double zoom = std::min({(width - 2 * margin) / w, (height - 2 * margin) / h, max_zoom});
+  Viewport v;
+  v.zoom = std::max(zoom, 1e-6);
+  // centred: the drawing's middle at the canvas' middle
+  const Point mid{(b.min.x + b.max.x) / 2, (b.min.y + b.max.y) / 2};
+  v.origin = mid - Point{width / 2.0, height / 2.0} * (1.0 / v.zoom);
+  return v;
+}
+
+std::size_t paintNet(const NetLayout& layout, const SpatialIndex& index, const NetState* state, const Viewport& view,
+                     Canvas& canvas) {
+  canvas.clear(colours::kBackground);
+  // what the viewport shows, grown by the room names and arrowheads take beyond the shapes
+  Box visible = view.visible(canvas.width(), canvas.height());
+  const double room = kNameRoom + kMaxFontPx / view.zoom * 4;
+  visible.min = visible.min - Point{room, room};
+  visible.max = visible.max + Point{room, room};
+  const auto items = index.query(visible);
+  Painter painter(layout, state, view, canvas);
+  for (const ItemRef r : items) {
+    switch (r.kind) {
+      case ItemKind::Arc: painter.arc(layout.arcs[r.index]); break;
+      case ItemKind::Instance: painter.instance(layout.instances[r.index]); break;
+      case ItemKind::Transition: painter.transition(r.index); break;
+      case ItemKind::Place: painter.place(r.index); break;
+    }
+  }
+  painter.finish();
+  return items.size();
+}
+
+}  // namespace gdpn::diagram
