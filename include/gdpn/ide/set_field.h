@@ -1,0 +1,33 @@
+#pragma once
+/// \file
+/// The first command: set one field of one scene node, checked by the field's own
+/// description (the check the model loader uses).
+
+#include <cstdint>
+#include <string>
+
+#include "gdpn/ide/command.h"
+#include "gdpn/scene/types.h"
+
+namespace gdpn::ide {
+
+/// Sets field `field` of the node at `path` to `value`.
+class SetFieldCommand final : public Command {
+ public:
+  /// `drag`: the id of the drag this edit belongs to (edits of one drag of one field merge into
+  /// one step); 0 for a single edit.
+  SetFieldCommand(std::string path, std::string field, scene::FieldValue value, std::uint64_t drag = 0);
+  std::string apply(Document& doc) override;
+  void revert(Document& doc) override;
+  [[nodiscard]] std::string label() const override;
+  [[nodiscard]] std::uint64_t mergeKey() const override;
+  void absorb(const Command& next) override;
+
+ private:
+  std::string path_;   // the node
+  std::string field_;  // the field's name
+  scene::FieldValue value_, old_;
+  std::uint64_t drag_;
+};
+
+}  // namespace gdpn::ide
