@@ -43,3 +43,82 @@ void SetFieldCommand::absorb(const Command& next) {
 }
 
 }  // namespace gdpn::ide
+
+namespace gdpn::ide {
+
+namespace {
+
+bool toNumber(const std::string& word, double& x) {
+  try {
+    std::size_t used = 0;
+    x = std::stod(word, &used);
+    return used == word.size();
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+}  // namespace
+
+std::optional<scene::FieldValue> fieldValueFromWords(const scene::FieldDesc& desc, const std::vector<std::string>& words,
+                                                     bool list, std::string& why) {
+  using K = scene::FieldKind;
+  const auto numbers = [&](std::size_t n, std::vector<double>& out) {
+    if (n != 0 && words.size() != n) {
+      why = "'" + desc.name + "' expects " + std::to_string(n) + " numbers";
+      return false;
+    }
+    for (const auto& w : words) {
+      double x = 0;
+      if (!toNumber(w, x)) {
+        why = "'" + desc.name + "' expects numbers, got \"" + w + "\"";
+        return false;
+      }
+      out.push_back(x);
+    }
+    return true;
+  };
+  std::vector<double> xs;
+  switch (desc.kind) {
+    case K::Bool:
+      if (!list && words.size() == 1 && (words[0] == "true" || words[0] == "false")) return words[0] == "true";
+      why = "'" + desc.name + "' expects true or false";
+      return std::nullopt;
+    case K::Int:
+    case K::Float:
+      if (list || !numbers(1, xs)) {
+        if (why.empty()) why = "'" + desc.name + "' expects a number";
+        return std::nullopt;
+      }
+      if (desc.kind == K::Int) {
+        if (xs[0] != static_cast<double>(static_cast<std::int64_t>(xs[0]))) {
+          why = "'" + desc.name + "' expects a whole number";
+          return std::nullopt;
+        }
+        return static_cast<std::int64_t>(xs[0]);
+      }
+      return xs[0];
+    case K::Vec3:
+    case K::Color:
+      if (!numbers(3, xs)) return std::nullopt;
+      return std::array<double, 3>{xs[0], xs[1], xs[2]};
+    case K::Rotation:
+      if (!numbers(4, xs)) return std::nullopt;
+      return std::array<double, 4>{xs[0], xs[1], xs[2], xs[3]};
+    case K::FloatList:
+      if (!numbers(0, xs)) return std::nullopt;
+      return xs;
+    case K::Enum:
+    case K::String:
+    case K::File:
+      if (list || words.size() != 1) {
+        why = "'" + desc.name + "' expects a word";
+        return std::nullopt;
+      }
+      return words[0];
+  }
+  why = "unknown field kind";
+  return std::nullopt;
+}
+
+}  // namespace gdpn::ide

@@ -4,7 +4,9 @@
 /// description (the check the model loader uses).
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "gdpn/ide/command.h"
 #include "gdpn/scene/types.h"
@@ -29,5 +31,11 @@ class SetFieldCommand final : public Command {
   scene::FieldValue value_, old_;
   std::uint64_t drag_;
 };
+
+/// The value of field `desc` written as `words` (one word for a scalar, one a number for a
+/// vector or list; `list` when written as a list), or nullopt with `why`. The range and the
+/// other checks are the command's (FieldDesc::check).
+std::optional<scene::FieldValue> fieldValueFromWords(const scene::FieldDesc& desc, const std::vector<std::string>& words,
+                                                     bool list, std::string& why);
 
 }  // namespace gdpn::ide
