@@ -130,15 +130,16 @@ void nodeInspector(App& app, const std::string& path, nlohmann::json& report) {
   }
   ImGui::TableSetupScrollFreeze(0, 1);
   ImGui::TableSetupColumn("field", ImGuiTableColumnFlags_WidthFixed, 110);
-  ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
-  ImGui::TableSetupColumn("unit", ImGuiTableColumnFlags_WidthFixed, 50);
-  ImGui::TableSetupColumn("range", ImGuiTableColumnFlags_WidthFixed, 150);
+  ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch, 2.0F);
+  ImGui::TableSetupColumn("unit", ImGuiTableColumnFlags_WidthFixed, 80);
+  ImGui::TableSetupColumn("range", ImGuiTableColumnFlags_WidthStretch, 1.0F);
   ImGui::TableHeadersRow();
   for (std::size_t i = 0; i < types.size(); ++i) {
     const auto& d = *types[i];
     ImGui::PushID(static_cast<int>(i));
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
+    ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted(d.name.c_str());
     if (ImGui::IsItemHovered() && !d.doc.empty()) ImGui::SetTooltip("%s", d.doc.c_str());
     ImGui::TableNextColumn();
@@ -153,10 +154,13 @@ void nodeInspector(App& app, const std::string& path, nlohmann::json& report) {
     }
     if (ImGui::IsItemDeactivated()) app.document().history().seal();
     ImGui::TableNextColumn();
+    ImGui::AlignTextToFramePadding();
     ImGui::TextDisabled("%s", d.unit.c_str());
     ImGui::TableNextColumn();
     const auto range = rangeText(d);
+    ImGui::AlignTextToFramePadding();
     ImGui::TextDisabled("%s", range.c_str());
+    if (ImGui::IsItemHovered() && !range.empty()) ImGui::SetTooltip("%s", range.c_str());
     ImGui::PopID();
     fields.push_back({{"name", d.name}, {"unit", d.unit}, {"range", range}, {"kind", scene::fieldKindName(d.kind)}});
   }

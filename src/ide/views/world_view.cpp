@@ -42,23 +42,30 @@ scene::NodeHandle highlighted(App& app, scene::Scene& s) {
 
 /// The world view's own row: frame, standard views, the scene's cameras, overlays.
 void drawViewBar(App& app, scene::Scene* s) {
+  ImGui::AlignTextToFramePadding();
   ImGui::TextColored({0.62F, 0.72F, 0.86F, 1.0F}, "World view");
-  ImGui::SameLine(0, 16);
-  if (ImGui::SmallButton("Frame") && s != nullptr) {
+  ImGui::SameLine(0, 12);
+  if (ImGui::Button("Frame") && s != nullptr) {
     const auto& sel = app.document().selection();
     auto* node = sel.kind == SelectionKind::Node ? s->find(sel.name) : nullptr;
     app.orbit.frame(scene::boundingBox(node != nullptr ? *node : s->root()));
     app.camera_node.clear();
   }
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Frame the selection (the whole scene when none)");
-  for (auto v : {StandardView::Front, StandardView::Top, StandardView::Left, StandardView::Right, StandardView::Iso}) {
-    ImGui::SameLine();
-    if (ImGui::SmallButton(standardViewName(v))) {
-      app.orbit.look(v);
-      app.camera_node.clear();
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(70);
+  if (ImGui::BeginCombo("##views", "view", ImGuiComboFlags_HeightLarge)) {
+    for (auto v : {StandardView::Front, StandardView::Back, StandardView::Left, StandardView::Right, StandardView::Top,
+                   StandardView::Iso}) {
+      if (ImGui::Selectable(standardViewName(v))) {
+        app.orbit.look(v);
+        app.camera_node.clear();
+      }
     }
+    ImGui::EndCombo();
   }
-  ImGui::SameLine(0, 16);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Standard views");
+  ImGui::SameLine();
   ImGui::SetNextItemWidth(130);
   if (ImGui::BeginCombo("##camera", app.camera_node.empty() ? "free camera" : app.camera_node.c_str())) {
     if (ImGui::Selectable("free camera", app.camera_node.empty())) app.camera_node.clear();

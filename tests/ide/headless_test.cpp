@@ -1,0 +1,159 @@
+// The headless IDE (EGL surfaceless) on the factory: replayed actions, asserting on what the
+// views report and on the picture; replay mistakes located; splitters remembered.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "gdpn/platform/png.h"
+#include "support/cli.h"
+#include "support/golden.h"
+#include "support/temp_files.h"
+
+namespace gdpn::ide {
+namespace {
+
+using gdpn::testing::runShell;
+
+class HeadlessIde : public gdpn::testing::TempDirTest {
+ protected:
+  /// Runs the headless IDE on the factory with `actions` (a replay file's text); the report.
+  nlohmann::json replay(const std::string& actions, const std::string& extra = {}, int expect = 0) {
+    const auto file = write("actions.yaml", actions);
+    const auto report = (dir_ / "report.json").string();
+    std::filesystem::remove(report);
+    last_ = runShell("XDG_CONFIG_HOME='" + (dir_ / "config").string() + "' \"$GDPN\" ide examples/factory --headless " +
+                     "--size 1280x720 --replay '" + file + "' --report '" + report + "' " + extra);
+    EXPECT_EQ(last_.code, expect) << last_.out;
+    if (last_.code != 0) return {};
+    std::ifstream in(report);
+    return nlohmann::json::parse(in, nullptr, false);
+  }
+  gdpn::testing::CliResult last_;
+};
+
+TEST_F(HeadlessIde, OpensTheFactoryInEditModeWithEveryView) {
+  const auto r = replay("[]");
+  EXPECT_EQ(r["run"]["mode"], "edit");
+  EXPECT_EQ(r["run"]["steps"], 0);
+  EXPECT_EQ(r["net_view"]["placeholder"], true);
+  EXPECT_GT(r["world"]["triangles"].get<int>(), 100);
+  EXPECT_GT(r["tree"]["nodes_shown"].get<int>(), 10);
+  EXPECT_EQ(r["toolbar"]["transitions"].get<int>(), 23);
+  EXPECT_TRUE(r["diagnostics"].empty());
+}
+
+TEST_F(HeadlessIde, StepAdvancesOneStep) {
+  const auto r = replay("- press: step\n");
+  EXPECT_EQ(r["run"]["steps"], 1);
+  EXPECT_EQ(r["run"]["mode"], "paused");
+  EXPECT_EQ(r["status"]["steps"], 1);
+}
+
+TEST_F(HeadlessIde, RunForTenSecondsShowsTheArmAtWork) {
+  const auto r = replay("- run: 10\n- select: arm/turn\n");
+  EXPECT_DOUBLE_EQ(r["run"]["time"].get<double>(), 10.0);
+  EXPECT_EQ(r["selection"]["kind"], "node");
+  EXPECT_EQ(r["tree"]["selected"], "arm/turn");
+  EXPECT_EQ(r["inspector"]["type"], "Joint");
+  EXPECT_EQ(r["world"]["highlighted"], true);
+  // the joint is a node token: bold in the tree
+  const auto& bold = r["tree"]["bold"];
+  EXPECT_NE(std::find(bold.begin(), bold.end(), "arm/turn"), bold.end());
+}
+
+TEST_F(HeadlessIde, FiringADisabledTransitionShowsWhyNot) {
+  const auto r = replay("- fire: factory/drop\n");
+  const auto msg = r["status"]["message"].get<std::string>();
+  EXPECT_NE(msg.find("cannot fire factory/drop: "), std::string::npos) << msg;
+  EXPECT_NE(msg.find("not enabled"), std::string::npos) << msg;
+}
+
+TEST_F(HeadlessIde, RunningInRealTimeTakesOneFramesStepsPerFrame) {
+  // a headless frame stands for 1/60 s: 60 frames of real time are 1 s of model time
+  const auto r = replay("- press: run\n- frames: 60\n- press: pause\n");
+  EXPECT_NEAR(r["run"]["time"].get<double>(), 1.0, 0.05);
+  EXPECT_EQ(r["run"]["mode"], "paused");
+}
+
+TEST_F(HeadlessIde, ResetGoesBackToEditMode) {
+  const auto r = replay("- run: 2\n- press: reset\n");
+  EXPECT_EQ(r["run"]["mode"], "edit");
+  EXPECT_EQ(r["run"]["steps"], 0);
+}
+
+TEST_F(HeadlessIde, SelectionIsOneThingAcrossTheViews) {
+  // a click on the arm's pedestal in the world view selects it in the tree and the inspector
+  auto r = replay("- click: [348, 280]\n");
+  const auto picked = r["selection"]["name"].get<std::string>();
+  EXPECT_EQ(r["selection"]["kind"], "node");
+  EXPECT_TRUE(picked.starts_with("arm/")) << picked;
+  EXPECT_EQ(r["tree"]["selected"], picked);
+  EXPECT_EQ(r["inspector"]["node"], picked);
+  // a place selected by name
+  r = replay("- select: factory/P1\n");
+  EXPECT_EQ(r["selection"]["kind"], "place");
+  EXPECT_EQ(r["inspector"]["tokens"], 3);
+}
+
+TEST_F(HeadlessIde, AFieldEditIsUndoneAndRedone) {
+  auto r = replay("- set: {node: arm/turn, field: vel1, value: 200}\n");
+  EXPECT_EQ(r["undo"]["depth"], 1);
+  EXPECT_EQ(r["undo"]["label"], "set arm/turn.vel1");
+  r = replay("- set: {node: arm/turn, field: vel1, value: 200}\n- press: undo\n");
+  EXPECT_EQ(r["undo"]["depth"], 0);
+  EXPECT_EQ(r["undo"]["can_redo"], true);
+  r = replay("- set: {node: arm/turn, field: vel1, value: 200}\n- press: undo\n- press: redo\n");
+  EXPECT_EQ(r["undo"]["depth"], 1);
+}
+
+TEST_F(HeadlessIde, AnInvalidFieldValueIsALocatedError) {
+  replay("- press: step\n- set: {node: feed/#0, field: bounce, value: 3}\n", {}, 1);
+  EXPECT_NE(last_.out.find("actions.yaml:2:3: error: 'bounce' must lie in [0, 1], got 3"), std::string::npos)
+      << last_.out;
+}
+
+TEST_F(HeadlessIde, MistakesInTheReplayFileAreLocated) {
+  replay("- press: step\n- jump: 3\n", {}, 1);
+  EXPECT_NE(last_.out.find("actions.yaml:2:3: error: unknown action 'jump'"), std::string::npos) << last_.out;
+  replay("- press: fly\n", {}, 1);
+  EXPECT_NE(last_.out.find("actions.yaml:1:10: error: unknown control 'fly'"), std::string::npos) << last_.out;
+  replay("- select: nowhere\n", {}, 1);
+  EXPECT_NE(last_.out.find("actions.yaml:1:3: error: nothing is called 'nowhere'"), std::string::npos) << last_.out;
+  replay("- key: f13\n", {}, 1);
+  EXPECT_NE(last_.out.find("actions.yaml:1:3: error: unknown key 'f13'"), std::string::npos) << last_.out;
+}
+
+TEST_F(HeadlessIde, ADraggedSplitterIsRememberedInTheNextSession) {
+  // the tree view's right edge starts at 260 px; drag it 100 px to the right
+  auto r = replay("- drag: {from: [263, 400], to: [363, 400]}\n");
+  EXPECT_NEAR(r["splitters"]["tree_width"].get<double>(), 360.0, 1.0);
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "config" / "gdpn" / "ide.ini"));
+  r = replay("[]");
+  EXPECT_NEAR(r["splitters"]["tree_width"].get<double>(), 360.0, 1.0);
+  EXPECT_NEAR(r["layout"]["world"][0].get<double>(), 366.0, 1.0);
+}
+
+TEST_F(HeadlessIde, KeysTypedInTheWorldViewReachTheSensors) {
+  const auto r = replay("- key: g\n- key: space\n");
+  EXPECT_EQ(r["world"]["keys"], nlohmann::json::array({"g", "space"}));
+}
+
+TEST_F(HeadlessIde, TheFactoryAfterTwoSecondsLooksLikeItsGolden) {
+  // golden: tests/data/golden/ide_factory.png, made by this test with GDPN_UPDATE_GOLDEN=1
+  const auto shot = (dir_ / "shot.png").string();
+  replay("- run: 2\n- select: arm/turn\n", "--screenshot '" + shot + "'");
+  int w = 0, h = 0;
+  std::vector<std::uint8_t> rgb;
+  std::string why;
+  ASSERT_TRUE(platform::readPng(shot, w, h, rgb, why)) << why;
+  EXPECT_EQ(w, 1280);
+  EXPECT_EQ(h, 720);
+  gdpn::testing::expectLikeGolden(w, h, rgb, std::string(GDPN_SOURCE_DIR) + "/tests/data/golden/ide_factory.png");
+}
+
+}  // namespace
+}  // namespace gdpn::ide
