@@ -21,7 +21,7 @@ void drawToolbar(App& app, const Rect& at, nlohmann::json& report) {
   // run at a speed, pause, step, run N steps
   static const RunSpeed kSpeeds[] = {RunSpeed::RealTime, RunSpeed::Faster, RunSpeed::Fastest};
   static int speed = 0;
-  if (ImGui::Button(running ? "Running" : "Run")) run.run(kSpeeds[speed]);
+  if (ImGui::Button(running ? "Running" : "Run", {70, 0})) run.run(kSpeeds[speed]);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Run the model at the chosen speed");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(150);
