@@ -4,6 +4,7 @@
 // feeds ImGui its input, calls frame() between ImGui::NewFrame() and ImGui::Render(), and
 // draws ImGui's output. Private to the ide module.
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -86,6 +87,8 @@ class App {
   double fps = 0;                   ///< frames per second, smoothed
   bool reveal_selection = false;    ///< the tree opens and scrolls to the selection once
   std::vector<std::string> pressed_keys;  ///< keys the world view delivered (report)
+  std::array<bool, 512> key_was_down{};   ///< the world view's keys last frame, by GLFW code
+  core::Vec3 last_eye{1e300, 0, 0};        ///< the viewpoint last sent to the sensors, m
   std::unique_ptr<render::Renderer> renderer;  ///< the world view's renderer
   std::unique_ptr<WorldTexture> world_texture; ///< where the world view draws
 

@@ -142,6 +142,35 @@ TEST_F(HeadlessIde, KeysTypedInTheWorldViewReachTheSensors) {
   EXPECT_EQ(r["world"]["keys"], nlohmann::json::array({"g", "space"}));
 }
 
+TEST_F(HeadlessIde, AModelThatDoesNotCompileShowsItsErrorsAndAClickSelectsTheConstruct) {
+  const auto model = write("bad.gdpn.yaml", R"Y(gdpn: 1
+scene:
+  - Cube: {name: c, size: [1, 1, 1]}
+pages:
+  main:
+    places:
+      a: {tokens: 1}
+    transitions:
+      t: {}
+    arcs:
+      - a -> t
+      - t -> nowhere
+)Y");
+  const auto actions = write("actions.yaml", "- click: [900, 502]\n");
+  const auto report = (dir_ / "report.json").string();
+  const auto r = runShell("XDG_CONFIG_HOME='" + (dir_ / "config").string() + "' \"$GDPN\" ide '" + model +
+                          "' --headless --size 1280x720 --replay '" + actions + "' --report '" + report + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  std::ifstream in(report);
+  const auto j = nlohmann::json::parse(in, nullptr, false);
+  ASSERT_EQ(j["diagnostics"].size(), 1U);
+  EXPECT_NE(j["diagnostics"][0].get<std::string>().find("bad.gdpn.yaml:12:9: error: 'nowhere'"), std::string::npos);
+  EXPECT_EQ(j["toolbar"]["ready"], false);
+  // the arc at line 12 belongs to the transition declared before it
+  EXPECT_EQ(j["selection"]["kind"], "transition");
+  EXPECT_EQ(j["selection"]["name"], "main/t");
+}
+
 TEST_F(HeadlessIde, TheFactoryAfterTwoSecondsLooksLikeItsGolden) {
   // golden: tests/data/golden/ide_factory.png, made by this test with GDPN_UPDATE_GOLDEN=1
   const auto shot = (dir_ / "shot.png").string();

@@ -12,6 +12,7 @@ namespace {
 
 /// Selects the node, place or transition declared at `loc` (the nearest line at or before it).
 void selectAt(App& app, const core::SourceLoc& loc) {
+  if (loc.line == 0) return;
   std::string best;
   int best_line = 0;
   SelectionKind kind = SelectionKind::None;
@@ -24,22 +25,18 @@ void selectAt(App& app, const core::SourceLoc& loc) {
       }
     });
   }
-  if (auto* session = app.run().session()) {
-    const auto& net = session->simulation().net();
-    for (const auto& p : net.places()) {
-      if (p.loc.line <= loc.line && p.loc.line > best_line) {
-        best_line = p.loc.line;
-        best = p.name;
-        kind = SelectionKind::Place;
-      }
+  // the net as written (so that a net that does not compile is found too): top-level pages
+  const auto consider = [&](const core::SourceLoc& at, SelectionKind k, std::string name) {
+    if (at.line <= loc.line && at.line > best_line) {
+      best_line = at.line;
+      best = std::move(name);
+      kind = k;
     }
-    for (const auto& t : net.transitions()) {
-      if (t.loc.line <= loc.line && t.loc.line > best_line) {
-        best_line = t.loc.line;
-        best = t.name;
-        kind = SelectionKind::Transition;
-      }
-    }
+  };
+  for (const auto& page : app.document().model().net.pages) {
+    for (const auto& p : page.places) consider(p.loc, SelectionKind::Place, page.name + "/" + p.name);
+    for (const auto& t : page.transitions) consider(t.loc, SelectionKind::Transition, page.name + "/" + t.name);
+    for (const auto& i : page.instances) consider(i.loc, SelectionKind::Instance, page.name + "/" + i.name);
   }
   if (kind == SelectionKind::Node) app.selectNode(best);
   else if (kind != SelectionKind::None) app.document().select({kind, best});
@@ -58,8 +55,18 @@ void drawDiagnostics(App& app, const Rect& at, nlohmann::json& report) {
                                                                     : ImVec4{0.7F, 0.7F, 0.7F, 1};
       ImGui::PushID(i++);
       ImGui::PushStyleColor(ImGuiCol_Text, colour);
+      // the whole message, wrapped, is one clickable row
       const auto text = d.str();
-      if (ImGui::Selectable(text.c_str())) selectAt(app, d.loc);
+      const float wrap = ImGui::GetContentRegionAvail().x;
+      const auto size = ImGui::CalcTextSize(text.c_str(), nullptr, false, wrap);
+      const auto top = ImGui::GetCursorPos();
+      if (ImGui::Selectable("##row", false, 0, {0, size.y})) selectAt(app, d.loc);
+      const auto after = ImGui::GetCursorPos();
+      ImGui::SetCursorPos(top);
+      ImGui::PushTextWrapPos(top.x + wrap);
+      ImGui::TextUnformatted(text.c_str());
+      ImGui::PopTextWrapPos();
+      ImGui::SetCursorPos(after);
       ImGui::PopStyleColor();
       ImGui::PopID();
       report.push_back(text);

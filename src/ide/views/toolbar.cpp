@@ -8,6 +8,18 @@
 
 namespace gdpn::ide {
 
+namespace {
+
+/// A button drawn faded, and deaf to clicks, while `enabled` is false.
+bool toolButton(const char* label, bool enabled) {
+  ImGui::PushStyleVar(ImGuiStyleVar_Alpha, enabled ? 1.0F : 0.5F);
+  const bool pressed = ImGui::Button(label);
+  ImGui::PopStyleVar();
+  return pressed && enabled;
+}
+
+}  // namespace
+
 void drawToolbar(App& app, const Rect& at, nlohmann::json& report) {
   auto& run = app.run();
   ImGui::SetCursorScreenPos({at.x, at.y});
@@ -71,13 +83,9 @@ void drawToolbar(App& app, const Rect& at, nlohmann::json& report) {
   // the document's history
   ImGui::SameLine(0, 18);
   auto& history = app.document().history();
-  if (!history.canUndo()) ImGui::BeginDisabled();
-  if (ImGui::Button("Undo")) app.undo();
-  if (!history.canUndo()) ImGui::EndDisabled();
+  if (toolButton("Undo", history.canUndo())) app.undo();
   ImGui::SameLine();
-  if (!history.canRedo()) ImGui::BeginDisabled();
-  if (ImGui::Button("Redo")) app.redo();
-  if (!history.canRedo()) ImGui::EndDisabled();
+  if (toolButton("Redo", history.canRedo())) app.redo();
   ImGui::EndChild();
 
   report = {{"ready", ready},

@@ -170,8 +170,8 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
   }
 
   // keys typed over the world view go to the keyboard sensors, with where the viewer is
-  static std::array<bool, 512> was_down{};
-  static core::Vec3 last_eye{1e300, 0, 0};
+  auto& was_down = app.key_was_down;
+  auto& last_eye = app.last_eye;
   if (hovered && (camera.eye - last_eye).length() > 1e-9) {
     sensors::InputEvent view;
     view.t = app.run().time();
