@@ -110,6 +110,16 @@ TEST_F(HeadlessIde, AFieldEditIsUndoneAndRedone) {
   EXPECT_EQ(r["undo"]["depth"], 1);
 }
 
+TEST_F(HeadlessIde, ADragOfAnInspectorSliderIsOneUndoStep) {
+  // the feed's first Material: its shininess slider is the fifth row of the inspector at 1280 x 720
+  auto r = replay("- select: feed/#0\n- drag: {from: [500, 644], to: [560, 644]}\n");
+  EXPECT_EQ(r["inspector"]["type"], "Material");
+  EXPECT_EQ(r["undo"]["depth"], 1);
+  EXPECT_EQ(r["undo"]["label"], "set feed/#0.shininess");
+  r = replay("- select: feed/#0\n- drag: {from: [500, 644], to: [560, 644]}\n- press: undo\n");
+  EXPECT_EQ(r["undo"]["depth"], 0);
+}
+
 TEST_F(HeadlessIde, AnInvalidFieldValueIsALocatedError) {
   replay("- press: step\n- set: {node: feed/#0, field: bounce, value: 3}\n", {}, 1);
   EXPECT_NE(last_.out.find("actions.yaml:2:3: error: 'bounce' must lie in [0, 1], got 3"), std::string::npos)

@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include "gdpn/ide/document.h"
@@ -159,6 +163,32 @@ TEST_F(RunControlTest, ResetThenRunGivesTheSameTraceAsGdpnRun) {
   ASSERT_TRUE(run_.reset(diags));
   run_.runFor(2.0);
   EXPECT_EQ(ide.str(), cli.str());
+}
+
+TEST(RunControlFactory, ResetThenRunGivesTheSameTraceAsGdpnRun) {
+  const auto dir = std::filesystem::temp_directory_path() / ("gdpn_ide_factory_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto trace = (dir / "cli.jsonl").string();
+  const auto r = gdpn::testing::runGdpn("run examples/factory --until 3 -q --trace '" + trace + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  std::ifstream in(trace);
+  std::stringstream cli;
+  cli << in.rdbuf();
+  ASSERT_GT(cli.str().size(), 100U);
+
+  core::Diagnostics diags;
+  auto doc = Document::open(std::string(GDPN_SOURCE_DIR) + "/examples/factory/factory.gdpn.yaml", diags);
+  ASSERT_TRUE(doc) << diags.str();
+  RunControl run;
+  ASSERT_TRUE(run.open(*doc, diags)) << diags.str();
+  run.runFor(1.5);
+  (void)run.fire("factory/stationA/skip");
+  std::ostringstream ide;
+  run.session()->traceTo(ide);
+  ASSERT_TRUE(run.reset(diags)) << diags.str();
+  run.runFor(3.0);
+  EXPECT_EQ(ide.str(), cli.str());
+  std::filesystem::remove_all(dir);
 }
 #endif
 
