@@ -198,6 +198,16 @@ bool App::perform(const Action& a, std::string& error) {
       }
       break;
     }
+    case ActionKind::Break: {
+      session::Breakpoint bp;
+      if (a.field == "starts") bp = session::Breakpoint::starts(a.text);
+      else if (a.field == "completes") bp = session::Breakpoint::completes(a.text);
+      else if (a.field == "place")
+        bp = session::Breakpoint::marking(a.text, session::Compare::GreaterEqual, static_cast<std::int64_t>(a.number));
+      else bp = session::Breakpoint::predicate(a.text);
+      error = run_.addBreakpoint(std::move(bp));
+      break;
+    }
     case ActionKind::Key:
     case ActionKind::Click:
     case ActionKind::Drag:
@@ -274,6 +284,7 @@ void App::frame(float width, float height, double wall_seconds) {
                    {"time", run_.time()},
                    {"steps", run_.steps()},
                    {"plant_only", run_.plantOnly()},
+                   {"breakpoints", run_.breakpoints()},
                    {"message", run_.message()}};
   report["undo"] = {{"depth", doc_->history().depth()}, {"can_redo", doc_->history().canRedo()},
                     {"label", doc_->history().undoLabel()}};

@@ -81,6 +81,7 @@ class App {
   bool show_joints = false;         ///< the world view draws joint axes
   std::string fire_target;          ///< the toolbar's chosen transition
   int run_n = 100;                  ///< the toolbar's N for Run N steps
+  int break_tokens = 1;             ///< the inspector's token count for a place's breakpoint
   std::uint64_t drag_id = 0;        ///< the inspector's current drag (merge key)
   std::string inspector_error;      ///< why the last edit was refused
   std::string message;              ///< the status bar's message line

@@ -23,9 +23,12 @@ class ActionReader {
 
   bool read(const YAML::Node& item, Action& a) {
     if (!item.IsMap() || item.size() != 1) return fail(item, "an action is a map with one key, such as 'press: step'");
-    const auto key = item.begin()->first.as<std::string>();
-    const auto& v = item.begin()->second;
-    a.loc = locOf(item.begin()->first, file_);
+    // copies: the iterator's pair dies with it
+    const auto entry = *item.begin();
+    const YAML::Node name = entry.first;
+    const YAML::Node v = entry.second;
+    const auto key = name.as<std::string>();
+    a.loc = locOf(name, file_);
     if (key == "select") return word(v, a, ActionKind::Select);
     if (key == "fire") return word(v, a, ActionKind::Fire);
     if (key == "key") return word(v, a, ActionKind::Key);
@@ -48,7 +51,8 @@ class ActionReader {
     }
     if (key == "drag") return drag(v, a);
     if (key == "set") return set(v, a);
-    return fail(item.begin()->first, "unknown action '" + key +
+    if (key == "break") return breakpoint(v, a);
+    return fail(name, "unknown action '" + key +
                                          "' (select, press, fire, run, steps, frames, key, click, drag, set, view, "
                                          "screenshot)");
   }
@@ -114,6 +118,26 @@ class ActionReader {
     } else {
       return fail(value, "a value is a number, a word or a list of numbers");
     }
+    return true;
+  }
+  bool breakpoint(const YAML::Node& v, Action& a) {
+    a.kind = ActionKind::Break;
+    const char* kUsage = "expects {starts: T}, {completes: T}, {place: P, at_least: N} or {when: PYTHON}";
+    if (!v.IsMap()) return fail(v, kUsage);
+    bool counted = false;
+    for (const auto& kv : v) {
+      const auto key = kv.first.Scalar();
+      if (key == "at_least") {
+        counted = YAML::convert<double>::decode(kv.second, a.number);
+      } else if ((key == "starts" || key == "completes" || key == "place" || key == "when") && kv.second.IsScalar()) {
+        a.field = key;
+        a.text = kv.second.Scalar();
+      } else {
+        return fail(kv.first, kUsage);
+      }
+    }
+    if (a.field.empty()) return fail(v, kUsage);
+    if (a.field == "place" && !counted) return fail(v, "a place's breakpoint expects at_least: N tokens");
     return true;
   }
   const std::string& file_;

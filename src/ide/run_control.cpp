@@ -59,7 +59,13 @@ void RunControl::takeSteps(std::int64_t n) {
   if (outcome.reason != model::StopReason::Until) {
     mode_ = RunMode::Paused;
     message_ = std::string("stopped: ") + model::stopReasonName(outcome.reason);
-    if (!outcome.message.empty()) message_ += ": " + outcome.message;
+    if (outcome.reason == model::StopReason::Breakpoint && session_->hit()) {
+      for (const auto& [id, bp] : session_->breakpoints()) {
+        if (id == *session_->hit()) message_ = "stopped at breakpoint: " + bp.describe();
+      }
+    } else if (!outcome.message.empty()) {
+      message_ += ": " + outcome.message;
+    }
   }
 }
 
@@ -122,6 +128,28 @@ void RunControl::advance(double wall_seconds) {
     takeSteps(n);
   }
   if (wall_seconds > 0) rtf_ = 0.8 * rtf_ + 0.2 * ((time() - before) / wall_seconds);
+}
+
+std::string RunControl::addBreakpoint(session::Breakpoint breakpoint) {
+  if (!session_) return "the model does not compile";
+  std::string why;
+  if (!session_->addBreakpoint(std::move(breakpoint), why)) return why;
+  return {};
+}
+
+bool RunControl::removeBreakpoint(const std::string& description) {
+  if (!session_) return false;
+  for (const auto& [id, bp] : session_->breakpoints()) {
+    if (bp.describe() == description) return session_->removeBreakpoint(id);
+  }
+  return false;
+}
+
+std::vector<std::string> RunControl::breakpoints() const {
+  std::vector<std::string> out;
+  if (!session_) return out;
+  for (const auto& [id, bp] : session_->breakpoints()) out.push_back(bp.describe());
+  return out;
 }
 
 void RunControl::push(sensors::InputEvent event) {

@@ -79,6 +79,13 @@ TEST_F(HeadlessIde, RunningInRealTimeTakesOneFramesStepsPerFrame) {
   EXPECT_EQ(r["run"]["mode"], "paused");
 }
 
+TEST_F(HeadlessIde, ABreakpointStopsTheRunAndTheStatusBarSaysWhich) {
+  const auto r = replay("- break: {starts: factory/pickup}\n- run: 30\n");
+  EXPECT_LT(r["run"]["time"].get<double>(), 30.0);
+  EXPECT_EQ(r["run"]["breakpoints"], nlohmann::json::array({"starts factory/pickup"}));
+  EXPECT_EQ(r["status"]["message"], "stopped at breakpoint: starts factory/pickup");
+}
+
 TEST_F(HeadlessIde, ResetGoesBackToEditMode) {
   const auto r = replay("- run: 2\n- press: reset\n");
   EXPECT_EQ(r["run"]["mode"], "edit");

@@ -27,9 +27,13 @@ TEST(Replay, ReadsEveryAction) {
 - set: {node: arm/turn, field: axis1, value: [0, 0, 1]}
 - view: top
 - screenshot: out.png
+- break: {place: main/buffer, at_least: 3}
 )Y", diags);
   ASSERT_TRUE(a) << diags.str();
-  ASSERT_EQ(a->size(), 12U);
+  ASSERT_EQ(a->size(), 13U);
+  EXPECT_EQ((*a)[12].kind, ActionKind::Break);
+  EXPECT_EQ((*a)[12].field, "place");
+  EXPECT_EQ((*a)[12].number, 3);
   EXPECT_EQ((*a)[0].kind, ActionKind::Select);
   EXPECT_EQ((*a)[0].text, "arm/turn");
   EXPECT_EQ((*a)[3].number, 2.5);
@@ -52,6 +56,7 @@ TEST(Replay, MistakesAreLocated) {
       {"- drag: {from: [1, 2], to: [3, 4], button: thumb}\n", "a.yaml:1:44: error: expects a button"},
       {"- set: {node: a}\n", "a.yaml:1:8: error: expects {node: PATH, field: NAME, value: VALUE}"},
       {"select: a\n", "a.yaml:1:1: error: a replay file is a list of actions"},
+      {"- break: {place: p}\n", "a.yaml:1:10: error: a place's breakpoint expects at_least: N tokens"},
       {"- [a, b]\n", "a.yaml:1:3: error: an action is a map with one key"},
   };
   for (const auto& [text, expected] : cases) {

@@ -90,6 +90,23 @@ TEST_F(RunControlTest, TheTransitionsListIsTheNets) {
   EXPECT_EQ(names.front(), "main/work");
 }
 
+TEST_F(RunControlTest, ABreakpointStopsTheRunAndSaysWhich) {
+  ASSERT_EQ(run_.addBreakpoint(session::Breakpoint::starts("main/rest")), "");
+  EXPECT_NE(run_.addBreakpoint(session::Breakpoint::starts("main/nothing")), "");
+  EXPECT_EQ(run_.breakpoints(), std::vector<std::string>{"starts main/rest"});
+  run_.runFor(2.0);
+  EXPECT_LT(run_.steps(), 200);
+  EXPECT_EQ(run_.mode(), RunMode::Paused);
+  EXPECT_EQ(run_.message(), "stopped at breakpoint: starts main/rest");
+  // kept across a reset; removed by its description
+  core::Diagnostics diags;
+  ASSERT_TRUE(run_.reset(diags));
+  EXPECT_EQ(run_.breakpoints().size(), 1U);
+  EXPECT_TRUE(run_.removeBreakpoint("starts main/rest"));
+  run_.runFor(2.0);
+  EXPECT_EQ(run_.steps(), 200);
+}
+
 TEST_F(RunControlTest, PlantOnlyMovesThePlantAndKeepsTheMarking) {
   run_.step();  // the net starts: both tokens go into work
   const auto idle = tokens("main/idle"), busy = tokens("main/busy");

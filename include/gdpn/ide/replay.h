@@ -27,16 +27,17 @@ enum class ActionKind : std::uint8_t {
   Set,         ///< `set: {node: PATH, field: NAME, value: V}` through the inspector's command
   View,        ///< `view: front|back|left|right|top|iso|frame` or a Camera node's path
   Screenshot,  ///< `screenshot: FILE.png` of the whole window
+  Break,       ///< `break: {starts: T}`, `{completes: T}`, `{place: P, at_least: N}` or `{when: PYTHON}`
 };
 
 /// One action, where it was written.
 struct Action {
   ActionKind kind = ActionKind::Select;  ///< what it does
   std::string text;            ///< the name, control, key, file, node path or view
-  std::string field;           ///< Set: the field
+  std::string field;           ///< Set: the field; Break: starts, completes, place or when
   std::vector<std::string> value;  ///< Set: the value's words (one for a scalar, more for a list)
   bool list = false;           ///< Set: the value was a list
-  double number = 0;           ///< RunFor: seconds; Steps, Frames: the count
+  double number = 0;           ///< RunFor: seconds; Steps, Frames: the count; Break: at_least
   double x = 0, y = 0;         ///< Click, Drag: the point (Drag: where it starts), pixels
   double x2 = 0, y2 = 0;       ///< Drag: where it ends, pixels
   int button = 0;              ///< Drag: 0 left, 1 right, 2 middle

@@ -63,6 +63,14 @@ class RunControl {
   /// made); edit mode. False with diagnostics when the edited model does not compile.
   bool reset(core::Diagnostics& diags);
 
+  /// Adds a breakpoint (kept across resets): "" or why not (no such transition or place).
+  std::string addBreakpoint(session::Breakpoint breakpoint);
+  /// Removes the breakpoint described as `description` (Breakpoint::describe()); false when
+  /// there is none.
+  bool removeBreakpoint(const std::string& description);
+  /// The breakpoints, described ("starts main/T", "main/buffer >= 3"), in the order added.
+  [[nodiscard]] std::vector<std::string> breakpoints() const;
+
   /// Called once a frame with the real seconds since the last: takes the steps Run owes
   /// (none when not running). A run ends on its own when the net is dead, a script halts or
   /// a breakpoint holds; outcome() says why.

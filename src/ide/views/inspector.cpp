@@ -4,6 +4,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -167,6 +168,18 @@ void nodeInspector(App& app, const std::string& path, nlohmann::json& report) {
   ImGui::EndTable();
 }
 
+/// A checkbox that adds or removes breakpoint `bp` of the run.
+void breakpointBox(App& app, const char* label, session::Breakpoint bp, nlohmann::json& report) {
+  const auto description = bp.describe();
+  const auto list = app.run().breakpoints();
+  bool on = std::find(list.begin(), list.end(), description) != list.end();
+  if (ImGui::Checkbox(label, &on)) {
+    if (on) app.message = app.run().addBreakpoint(std::move(bp));
+    else (void)app.run().removeBreakpoint(description);
+  }
+  if (on) report["breakpoints"].push_back(description);
+}
+
 void netInspector(App& app, const Selection& sel, nlohmann::json& report) {
   auto* session = app.run().session();
   report["name"] = sel.name;
@@ -181,6 +194,11 @@ void netInspector(App& app, const Selection& sel, nlohmann::json& report) {
     const auto& place = sim.net().places()[static_cast<std::size_t>(p)];
     ImGui::TextDisabled("declared at %s", place.loc.str().c_str());
     report["tokens"] = tokens;
+    ImGui::SetNextItemWidth(90);
+    ImGui::InputInt("##at_least", &app.break_tokens);
+    ImGui::SameLine();
+    breakpointBox(app, "break when it holds at least this many tokens",
+                  session::Breakpoint::marking(sel.name, session::Compare::GreaterEqual, app.break_tokens), report);
   } else if (sel.kind == SelectionKind::Transition) {
     const auto t = sim.net().findTransition(sel.name);
     if (t < 0) return;
@@ -191,6 +209,9 @@ void netInspector(App& app, const Selection& sel, nlohmann::json& report) {
     ImGui::Text("priority %lld, probability %g", static_cast<long long>(tr.priority), tr.probability);
     ImGui::TextDisabled("declared at %s", tr.loc.str().c_str());
     report["state"] = state;
+    breakpointBox(app, "break when it starts", session::Breakpoint::starts(sel.name), report);
+    ImGui::SameLine();
+    breakpointBox(app, "break when it completes", session::Breakpoint::completes(sel.name), report);
   }
 }
 
