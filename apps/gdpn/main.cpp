@@ -171,12 +171,20 @@ struct CaptureArgs {
   gdpn::capture::CaptureOptions options;
 };
 
+/// The --size argument as width and height in pixels; nullopt after saying what is wrong.
+std::optional<std::pair<int, int>> sizeArg(const std::string& text) {
+  auto size = gdpn::capture::parseSize(text);
+  if (!size) {
+    std::cerr << "error: --size " << quoteArg(text) << " is not WIDTHxHEIGHT (for example 1280x720), each side "
+              << gdpn::capture::kMinSide << " to " << gdpn::capture::kMaxSide << " pixels\n";
+  }
+  return size;
+}
+
 /// `gdpn render` (movie = false) and `gdpn record` (movie = true).
 int capture(CaptureArgs a, bool movie) {
-  const auto size = gdpn::capture::parseSize(a.size);
+  const auto size = sizeArg(a.size);
   if (!size) {
-    std::cerr << "error: --size " << quoteArg(a.size) << " is not WIDTHxHEIGHT (for example 1280x720), each side "
-              << gdpn::capture::kMinSide << " to " << gdpn::capture::kMaxSide << " pixels\n";
     return 2;
   }
   a.options.width = size->first;
@@ -445,14 +453,10 @@ struct IdeArgs {
 /// `gdpn ide`: the IDE when it was built in (GDPN_IDE), else a message.
 int ide(const IdeArgs& a) {
 #ifdef GDPN_WITH_IDE
-  const auto size = gdpn::capture::parseSize(a.size);
-  if (!size) {
-    std::cerr << "gdpn: error: --size expects WIDTHxHEIGHT, each side " << gdpn::capture::kMinSide << " to "
-              << gdpn::capture::kMaxSide << " pixels\n";
-    return 2;
-  }
+  const auto size = sizeArg(a.size);
+  if (!size) return 2;
   if (!a.headless && !a.replay.empty()) {
-    std::cerr << "gdpn: error: --replay needs --headless\n";
+    std::cerr << "error: --replay needs --headless\n";
     return 2;
   }
   gdpn::ide::IdeOptions o;
@@ -467,7 +471,7 @@ int ide(const IdeArgs& a) {
   return gdpn::ide::runIde(o);
 #else
   (void)a;
-  std::cerr << "gdpn: error: this gdpn was built without the IDE (configure with -DGDPN_IDE=ON)\n";
+  std::cerr << "error: this gdpn was built without the IDE (configure with -DGDPN_IDE=ON)\n";
   return 1;
 #endif
 }

@@ -118,7 +118,15 @@ void App::reset() {
 }
 
 void App::checkReload() {
-  if (!doc_->changedOnDisk()) return;
+  // twice a second at 60 frames a second is enough
+  if (++frames_ % 30 != 0) return;
+  if (!doc_->changedOnDisk()) {
+    if (doc_->scriptsChanged()) {
+      reset();
+      if (run_diags_.all().empty()) message = "a script changed: the run was reset with it";
+    }
+    return;
+  }
   if (!doc_->reload()) {
     message = "the model file changed and has errors: the old model stays";
     return;

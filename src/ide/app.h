@@ -100,7 +100,7 @@ class App {
   core::Diagnostics run_diags_;
   Splitters splitters_;
   nlohmann::json report_;
-  int dragging_ = -1;  // the splitter being dragged
+  std::uint64_t frames_ = 0;  // frames drawn
 };
 
 /// Loads DejaVu Sans (regular and bold) into ImGui's font atlas; the defaults when missing.

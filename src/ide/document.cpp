@@ -34,7 +34,27 @@ void Document::adopt(model::Model model) {
   if (model_.scene) scene_ = std::shared_ptr<scene::Scene>(model_.scene->clone());
   model_.scene = scene_;
   stamp_ = model_.path.empty() ? std::nullopt : stampOf(model_.path);
+  script_stamps_ = scriptStamps();
   ++revision_;
+}
+
+std::map<std::string, std::filesystem::file_time_type> Document::scriptStamps() const {
+  std::map<std::string, std::filesystem::file_time_type> stamps;
+  if (model_.path.empty()) return stamps;
+  std::error_code ec;
+  const auto dir = std::filesystem::path(model_.path).parent_path();
+  for (std::filesystem::directory_iterator it(dir.empty() ? "." : dir, ec), end; !ec && it != end; it.increment(ec)) {
+    if (it->path().extension() != ".py") continue;
+    if (auto t = stampOf(it->path().string())) stamps[it->path().string()] = *t;
+  }
+  return stamps;
+}
+
+bool Document::scriptsChanged() {
+  auto now = scriptStamps();
+  if (now == script_stamps_) return false;
+  script_stamps_ = std::move(now);
+  return true;
 }
 
 model::Model Document::snapshot() const {

@@ -156,6 +156,19 @@ TEST_F(DocumentTest, ReloadTakesTheNewFileOrKeepsTheOldModelAndShowsTheErrors) {
   EXPECT_FALSE(doc->diagnostics().hasErrors());
 }
 
+TEST_F(DocumentTest, AChangedScriptBesideTheModelIsNoticedOnce) {
+  const auto py = write("helpers.py", "x = 1\n");
+  auto doc = openBin();
+  ASSERT_TRUE(doc);
+  EXPECT_FALSE(doc->scriptsChanged());
+  std::filesystem::last_write_time(py, std::filesystem::file_time_type::clock::now() + std::chrono::seconds(2));
+  EXPECT_TRUE(doc->scriptsChanged());
+  EXPECT_FALSE(doc->scriptsChanged());
+  write("more.py", "y = 2\n");
+  EXPECT_TRUE(doc->scriptsChanged());
+  EXPECT_FALSE(doc->changedOnDisk());
+}
+
 TEST(Selection, KindsHaveNames) {
   EXPECT_STREQ(selectionKindName(SelectionKind::Transition), "transition");
   EXPECT_FALSE(Selection{}.any());

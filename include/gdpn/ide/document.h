@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -61,6 +62,10 @@ class Document {
   void setDiagnostics(core::Diagnostics diags) { diagnostics_ = std::move(diags); }
   /// True when the model file changed on disk since it was read.
   [[nodiscard]] bool changedOnDisk() const;
+  /// True when a Python file in the model's folder changed, appeared or went since the last
+  /// call (or since the model was read): its scripts should be read again (a run's reset
+  /// does). The first call after opening answers false.
+  bool scriptsChanged();
   /// Reads the model file again. On success the model is replaced, the history cleared and the
   /// selection kept when it still names something; on error the old model stays and the
   /// diagnostics say why. False on error.
@@ -75,6 +80,8 @@ class Document {
   std::uint64_t revision_ = 0;
   core::Diagnostics diagnostics_;
   std::optional<std::filesystem::file_time_type> stamp_;  // the file's time when read
+  std::map<std::string, std::filesystem::file_time_type> script_stamps_;  // *.py beside the model
+  [[nodiscard]] std::map<std::string, std::filesystem::file_time_type> scriptStamps() const;
 };
 
 }  // namespace gdpn::ide
