@@ -86,6 +86,8 @@ class App {
   std::string inspector_error;      ///< why the last edit was refused
   std::string message;              ///< the status bar's message line
   double fps = 0;                   ///< frames per second, smoothed
+  bool screenshot_requested = false;  ///< the toolbar asked for a picture of the next frame
+  int screenshots = 0;              ///< pictures taken so far (their names count up)
   bool reveal_selection = false;    ///< the tree opens and scrolls to the selection once
   std::vector<std::string> pressed_keys;  ///< keys the world view delivered (report)
   std::array<bool, 512> key_was_down{};   ///< the world view's keys last frame, by GLFW code

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <string>
 
 #include "../app.h"
 #include "gdpn/platform/png.h"
@@ -38,14 +39,24 @@ void tearDownImGui() {
   ImGui::DestroyContext();
 }
 
-void drawFrame(App& app, int width, int height, double wall_seconds) {
+void drawFrame(App& app, int fb_width, int fb_height, double wall_seconds) {
   ImGui::NewFrame();
-  app.frame(static_cast<float>(width), static_cast<float>(height), wall_seconds);
+  const auto display = ImGui::GetIO().DisplaySize;
+  app.frame(display.x, display.y, wall_seconds);
   ImGui::Render();
-  glViewport(0, 0, width, height);
+  glViewport(0, 0, fb_width, fb_height);
   glClearColor(0.13F, 0.14F, 0.16F, 1.0F);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  // the toolbar's Screenshot: the frame just drawn
+  if (app.screenshot_requested) {
+    app.screenshot_requested = false;
+    const auto name = "gdpn-ide-" + std::to_string(++app.screenshots) + ".png";
+    std::string why;
+    app.message = platform::writePng(name, fb_width, fb_height, readFramebuffer(fb_width, fb_height), why)
+                      ? "saved " + name
+                      : name + ": " + why;
+  }
 }
 
 std::vector<std::uint8_t> readFramebuffer(int width, int height) {

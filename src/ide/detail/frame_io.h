@@ -15,9 +15,11 @@ class App;
 void setUpImGui(App& app);
 /// Shuts the OpenGL 3 backend down and destroys ImGui's context.
 void tearDownImGui();
-/// Draws one frame of `app` (`width` x `height` pixels, `wall_seconds` after the last) into the
-/// bound framebuffer; the platform has set ImGui's input and called its own NewFrame.
-void drawFrame(App& app, int width, int height, double wall_seconds);
+/// Draws one frame of `app` into the bound framebuffer (`fb_width` x `fb_height` pixels), laid
+/// out in ImGui's display size (io.DisplaySize: smaller on a high-density screen),
+/// `wall_seconds` after the last; the platform has set ImGui's input and called its own
+/// NewFrame. A screenshot the toolbar asked for is written after the frame.
+void drawFrame(App& app, int fb_width, int fb_height, double wall_seconds);
 /// The bound framebuffer's picture, RGB, top row first.
 std::vector<std::uint8_t> readFramebuffer(int width, int height);
 /// Writes the picture and the report files asked for; false (with a message on stderr) on error.

@@ -86,6 +86,9 @@ void drawToolbar(App& app, const Rect& at, nlohmann::json& report) {
   if (toolButton("Undo", history.canUndo())) app.undo();
   ImGui::SameLine();
   if (toolButton("Redo", history.canRedo())) app.redo();
+  ImGui::SameLine(0, 18);
+  if (ImGui::Button("Screenshot")) app.screenshot_requested = true;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Save the window as gdpn-ide-N.png in the current folder");
   ImGui::EndChild();
 
   report = {{"ready", ready},
