@@ -25,6 +25,26 @@ namespace gdpn::ide {
 
 class WorldTexture;
 
+/// What the world view's last picture showed: when nothing of it changes, the picture is
+/// shown again without drawing.
+struct WorldKey {
+  std::int64_t steps = -1;                 ///< the run's steps
+  RunMode mode = RunMode::Edit;            ///< edit, running, paused
+  std::uint64_t revision = 0;              ///< the document's revision
+  core::Vec3 eye, target;                  ///< the camera, m
+  double fov = 0;                          ///< degrees
+  scene::NodeHandle selection = 0;         ///< the highlighted node
+  int width = 0, height = 0;               ///< pixels
+  bool sensors = false, joints = false;    ///< overlays
+  const void* session = nullptr;           ///< the run drawn
+  friend bool operator==(const WorldKey& a, const WorldKey& b) {
+    return a.steps == b.steps && a.mode == b.mode && a.revision == b.revision && a.eye.x == b.eye.x &&
+           a.eye.y == b.eye.y && a.eye.z == b.eye.z && a.target.x == b.target.x && a.target.y == b.target.y &&
+           a.target.z == b.target.z && a.fov == b.fov && a.selection == b.selection && a.width == b.width &&
+           a.height == b.height && a.sensors == b.sensors && a.joints == b.joints && a.session == b.session;
+  }
+};
+
 /// Fonts the views use (null: ImGui's default).
 struct Fonts {
   ImFont* regular = nullptr;  ///< DejaVu Sans
@@ -94,6 +114,8 @@ class App {
   core::Vec3 last_eye{1e300, 0, 0};        ///< the viewpoint last sent to the sensors, m
   std::unique_ptr<render::Renderer> renderer;  ///< the world view's renderer
   std::unique_ptr<WorldTexture> world_texture; ///< where the world view draws
+  WorldKey world_key;                          ///< what the world view's picture shows
+  render::DrawStats world_stats;               ///< what drawing it took
 
  private:
   void checkReload();

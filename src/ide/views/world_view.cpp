@@ -116,9 +116,16 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
   options.sensors = app.show_sensors;
   options.joints = app.show_joints;
   options.selection = highlighted(app, *s);
-  app.world_texture->begin(w, h);
-  const auto stats = app.renderer->draw(*s, camera, options);
-  app.world_texture->end();
+  // draw only when something seen changed: the run, the model, the camera, the selection
+  const WorldKey seen{app.run().steps(), app.run().mode(), app.document().revision(), camera.eye, camera.target,
+                     camera.fov, options.selection, w, h, options.sensors, options.joints, app.run().session()};
+  if (!(seen == app.world_key) || app.world_stats.draw_calls == 0) {
+    app.world_texture->begin(w, h);
+    app.world_stats = app.renderer->draw(*s, camera, options);
+    app.world_texture->end();
+    app.world_key = seen;
+  }
+  const auto& stats = app.world_stats;
   ImGui::Image(reinterpret_cast<ImTextureID>(app.world_texture->texture()), {static_cast<float>(w), static_cast<float>(h)},
                {0, 1}, {1, 0});
   ImGui::SetCursorScreenPos(origin);
