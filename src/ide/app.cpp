@@ -96,6 +96,16 @@ bool App::selectByName(const std::string& name) {
   return false;
 }
 
+void App::frameSelection() {
+  auto* s = shownScene();
+  if (s == nullptr) return;
+  scene::updateTransforms(s->root());
+  const auto& sel = doc_->selection();
+  auto* node = sel.kind == SelectionKind::Node ? s->find(sel.name) : nullptr;
+  orbit.frame(scene::boundingBox(node != nullptr ? *node : s->root()));
+  camera_node.clear();
+}
+
 void App::undo() {
   if (!doc_->undo()) message = "nothing to undo";
   else message = "undone";
@@ -188,13 +198,7 @@ bool App::perform(const Action& a, std::string& error) {
         orbit.look(*v);
         camera_node.clear();
       } else if (a.text == "frame") {
-        auto* s = shownScene();
-        auto* node = (s && doc_->selection().kind == SelectionKind::Node) ? s->find(doc_->selection().name) : nullptr;
-        if (node != nullptr) {
-          scene::updateTransforms(s->root());
-          orbit.frame(scene::boundingBox(*node));
-        }
-        camera_node.clear();
+        frameSelection();
       } else {
         auto* s = shownScene();
         auto* node = s ? s->find(a.text) : nullptr;

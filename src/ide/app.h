@@ -86,6 +86,9 @@ class App {
   /// Selects what `name` names: a node path, else a place, transition or instance. False
   /// when nothing has that name.
   bool selectByName(const std::string& name);
+  /// Points the world view's free camera at the selected node so that it fills the view (the
+  /// whole scene when no node is selected).
+  void frameSelection();
   /// Undo or redo through the document, then the world shows the result.
   void undo();
   void redo();

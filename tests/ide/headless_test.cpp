@@ -154,6 +154,19 @@ TEST_F(HeadlessIde, ADraggedSplitterIsRememberedInTheNextSession) {
   EXPECT_NEAR(r["layout"]["world"][0].get<double>(), 366.0, 1.0);
 }
 
+TEST_F(HeadlessIde, TheWorldViewFramesTheSelectionTakesStandardViewsAndSceneCameras) {
+  auto r = replay("- select: arm/turn\n- view: frame\n");
+  EXPECT_NEAR(r["world"]["target"][0].get<double>(), -8.0, 1.0);  // the arm stands at x = -8 m
+  r = replay("- view: top\n");
+  EXPECT_GT(r["world"]["eye"][2].get<double>(), r["world"]["target"][2].get<double>() + 1.0);
+  EXPECT_NEAR(r["world"]["eye"][0].get<double>(), r["world"]["target"][0].get<double>(), 0.5);
+  r = replay("- view: armview\n");
+  EXPECT_EQ(r["world"]["camera"], "armview");
+  EXPECT_NEAR(r["world"]["eye"][0].get<double>(), -4.0, 1e-6);
+  replay("- view: sideways\n", {}, 1);
+  EXPECT_NE(last_.out.find("actions.yaml:1:3: error: 'sideways' is no standard view"), std::string::npos) << last_.out;
+}
+
 TEST_F(HeadlessIde, KeysTypedInTheWorldViewReachTheSensors) {
   const auto r = replay("- key: g\n- key: space\n");
   EXPECT_EQ(r["world"]["keys"], nlohmann::json::array({"g", "space"}));

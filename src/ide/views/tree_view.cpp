@@ -76,6 +76,8 @@ void drawNode(TreeState& st, scene::Node& node) {
   ++st.shown;
   if (path == st.selected && st.app.reveal_selection) ImGui::SetScrollHereY();
   if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) st.app.document().select(Selection::node(path));
+  // a double click also frames it in the world view
+  if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) st.app.frameSelection();
   if (ImGui::IsItemHovered() && !node.type().doc.empty()) ImGui::SetTooltip("%s", node.type().doc.c_str());
   if (!leaf && open) {
     for (const auto& child : node.children()) drawNode(st, *child);

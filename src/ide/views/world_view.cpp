@@ -45,12 +45,7 @@ void drawViewBar(App& app, scene::Scene* s) {
   ImGui::AlignTextToFramePadding();
   ImGui::TextColored({0.62F, 0.72F, 0.86F, 1.0F}, "World view");
   ImGui::SameLine(0, 12);
-  if (ImGui::Button("Frame") && s != nullptr) {
-    const auto& sel = app.document().selection();
-    auto* node = sel.kind == SelectionKind::Node ? s->find(sel.name) : nullptr;
-    app.orbit.frame(scene::boundingBox(node != nullptr ? *node : s->root()));
-    app.camera_node.clear();
-  }
+  if (ImGui::Button("Frame")) app.frameSelection();
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Frame the selection (the whole scene when none)");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(70);
