@@ -117,6 +117,7 @@ void nodeInspector(App& app, const std::string& path, nlohmann::json& report) {
   ImGui::SameLine();
   ImGui::TextDisabled("%s", node->type().doc.c_str());
   if (!app.inspector_error.empty()) ImGui::TextColored({1.0F, 0.4F, 0.35F, 1.0F}, "%s", app.inspector_error.c_str());
+  if (app.run().mode() != RunMode::Edit) ImGui::TextDisabled("The model as edited: the run takes edits at Reset.");
   report["node"] = path;
   report["type"] = node->type().name;
   auto& fields = report["fields"] = nlohmann::json::array();
