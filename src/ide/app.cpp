@@ -116,6 +116,11 @@ void App::redo() {
   else message = "redone";
 }
 
+void App::save() {
+  core::Diagnostics diags;
+  message = doc_->save(diags) ? "saved " + doc_->model().path : diags.str();
+}
+
 void App::reset() {
   core::Diagnostics diags;
   if (!run_.reset(diags)) {
@@ -161,6 +166,7 @@ bool App::perform(const Action& a, std::string& error) {
       else if (a.text == "plant-only") run_.setPlantOnly(!run_.plantOnly());
       else if (a.text == "undo") undo();
       else if (a.text == "redo") redo();
+      else if (a.text == "save") save();
       break;
     case ActionKind::Fire: {
       const auto names = run_.transitions();
@@ -241,6 +247,7 @@ void App::frame(float width, float height, double wall_seconds) {
   if (io.KeyCtrl && !io.WantTextInput) {
     if (ImGui::IsKeyPressed(GLFW_KEY_Z, false)) undo();
     if (ImGui::IsKeyPressed(GLFW_KEY_Y, false)) redo();
+    if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) save();
   }
 
   const auto layout = Layout::of(splitters_, width, height);

@@ -92,6 +92,8 @@ class App {
   /// Undo or redo through the document, then the world shows the result.
   void undo();
   void redo();
+  /// Saves the model to its file (the message says how it went).
+  void save();
   /// Reset of the run (errors to the Diagnostics view).
   void reset();
   /// The compile errors of the run, if it failed to build.

@@ -6,9 +6,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "gdpn/platform/png.h"
+#include "ide/ide_model.h"
 #include "support/cli.h"
 #include "support/golden.h"
 #include "support/temp_files.h"
@@ -199,6 +201,19 @@ pages:
   // the arc at line 12 belongs to the transition declared before it
   EXPECT_EQ(j["selection"]["kind"], "transition");
   EXPECT_EQ(j["selection"]["name"], "main/t");
+}
+
+TEST_F(HeadlessIde, SaveWritesTheEditedModel) {
+  const auto model = write("bin.gdpn.yaml", ide::testing::kBinModel);
+  const auto actions = write("actions.yaml", "- set: {node: drop/paint, field: bounce, value: 0.5}\n- press: save\n");
+  const auto r = runShell("XDG_CONFIG_HOME='" + (dir_ / "config").string() + "' \"$GDPN\" ide '" + model +
+                          "' --headless --size 640x480 --replay '" + actions + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  std::ifstream in(model);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("bounce: 0.5"), std::string::npos) << text.str();
+  EXPECT_EQ(gdpn::testing::runGdpn("check '" + model + "'").code, 0);
 }
 
 TEST_F(HeadlessIde, TheFactoryAfterTwoSecondsLooksLikeItsGolden) {

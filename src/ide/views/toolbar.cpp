@@ -83,6 +83,9 @@ void drawToolbar(App& app, const Rect& at, nlohmann::json& report) {
   // the document's history
   ImGui::SameLine(0, 18);
   auto& history = app.document().history();
+  if (ImGui::Button("Save")) app.save();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Save the model to its file (Ctrl+S)");
+  ImGui::SameLine();
   if (toolButton("Undo", history.canUndo())) app.undo();
   ImGui::SameLine();
   if (toolButton("Redo", history.canRedo())) app.redo();

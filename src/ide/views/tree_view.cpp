@@ -109,6 +109,16 @@ void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
   // the net's places and transitions (the net view shows them later)
   int places = 0, transitions = 0;
   if (session != nullptr && ImGui::CollapsingHeader("Net")) {
+    // the instances of page types, as written
+    for (const auto& page : app.document().model().net.pages) {
+      for (const auto& inst : page.instances) {
+        const auto name = page.name + "/" + inst.name;
+        const auto label = "instance  " + name + "  (" + inst.type + ")";
+        if (ImGui::Selectable(label.c_str(), sel.kind == SelectionKind::Instance && sel.name == name)) {
+          app.document().select({SelectionKind::Instance, name});
+        }
+      }
+    }
     const auto& net = session->simulation().net();
     const auto& kernel = session->simulation().kernel();
     for (std::size_t i = 0; i < net.places().size(); ++i) {
