@@ -67,6 +67,13 @@ TEST_F(HeadlessIde, RunForTenSecondsShowsTheArmAtWork) {
   EXPECT_NE(std::find(bold.begin(), bold.end(), "arm/turn"), bold.end());
 }
 
+TEST_F(HeadlessIde, TheInspectorSaysWhereAMovingBodyIsInTheRun) {
+  const auto r = replay("- run: 1\n- select: arm/turn/column\n");
+  EXPECT_EQ(r["inspector"]["type"], "Body");
+  ASSERT_EQ(r["inspector"]["live_position"].size(), 3U);
+  EXPECT_NEAR(r["inspector"]["live_position"][0].get<double>(), -8.0, 0.5);  // the arm's column stands at x = -8 m
+}
+
 TEST_F(HeadlessIde, FiringADisabledTransitionShowsWhyNot) {
   const auto r = replay("- fire: factory/drop\n");
   const auto msg = r["status"]["message"].get<std::string>();

@@ -12,6 +12,7 @@
 #include "../views.h"
 #include "gdpn/core/text.h"
 #include "gdpn/ide/set_field.h"
+#include "gdpn/scene/actions.h"
 
 namespace gdpn::ide {
 
@@ -117,7 +118,18 @@ void nodeInspector(App& app, const std::string& path, nlohmann::json& report) {
   ImGui::SameLine();
   ImGui::TextDisabled("%s", node->type().doc.c_str());
   if (!app.inspector_error.empty()) ImGui::TextColored({1.0F, 0.4F, 0.35F, 1.0F}, "%s", app.inspector_error.c_str());
-  if (app.run().mode() != RunMode::Edit) ImGui::TextDisabled("The model as edited: the run takes edits at Reset.");
+  if (app.run().mode() != RunMode::Edit) {
+    ImGui::TextDisabled("The model as edited: the run takes edits at Reset.");
+    // where a moving body is in the run now (world frame)
+    auto* plant = app.run().session() != nullptr ? app.run().session()->simulation().plant() : nullptr;
+    const auto* live = plant != nullptr ? plant->find(path) : nullptr;
+    const auto box = live != nullptr && live->dynamic_pose ? scene::boundingBox(*live) : core::Aabb{};
+    if (!box.empty()) {
+      const auto p = (box.lo + box.hi) * 0.5;
+      ImGui::Text("In the run its shapes' centre is at (%.3f, %.3f, %.3f) m.", p.x, p.y, p.z);
+      report["live_position"] = {p.x, p.y, p.z};
+    }
+  }
   report["node"] = path;
   report["type"] = node->type().name;
   auto& fields = report["fields"] = nlohmann::json::array();
