@@ -44,14 +44,12 @@ class Driver {
     down_[b] = down;
     frame();
   }
-  void key(int code) {
+  /// Presses (`down`) or releases key `code` over the world view.
+  void key(int code, bool down) {
     // keys reach the world view while the mouse is over it
     const auto& world = app_.report()["layout"]["world"];
     if (world.is_array()) move(world[0].get<double>() + world[2].get<double>() / 2, world[1].get<double>() + world[3].get<double>() / 2);
-    auto& io = ImGui::GetIO();
-    io.KeysDown[code] = true;
-    frame();
-    io.KeysDown[code] = false;
+    ImGui::GetIO().KeysDown[code] = down;
     frame();
   }
 
@@ -70,7 +68,12 @@ bool perform(App& app, Driver& d, const Action& a, const IdeOptions& o, int w, i
     case ActionKind::Key: {
       const int code = keyCode(a.text);
       if (code < 0) error = "unknown key '" + a.text + "' (a-z, 0-9, space, enter, escape, tab, left, right, up, down)";
-      else d.key(code);
+      else if (a.field == "hold") d.key(code, true);
+      else if (a.field == "release") d.key(code, false);
+      else {
+        d.key(code, true);
+        d.key(code, false);
+      }
       break;
     }
     case ActionKind::Click:

@@ -32,6 +32,10 @@ class ActionReader {
     if (key == "select") return word(v, a, ActionKind::Select);
     if (key == "fire") return word(v, a, ActionKind::Fire);
     if (key == "key") return word(v, a, ActionKind::Key);
+    if (key == "hold" || key == "release") {
+      a.field = key;
+      return word(v, a, ActionKind::Key);
+    }
     if (key == "view") return word(v, a, ActionKind::View);
     if (key == "screenshot") return word(v, a, ActionKind::Screenshot);
     if (key == "press") {
@@ -53,7 +57,7 @@ class ActionReader {
     if (key == "set") return set(v, a);
     if (key == "break") return breakpoint(v, a);
     return fail(name, "unknown action '" + key +
-                                         "' (select, press, fire, run, steps, frames, key, click, drag, set, view, "
+                                         "' (select, press, fire, run, steps, frames, key, hold, release, click, drag, set, view, "
                                          "screenshot)");
   }
 

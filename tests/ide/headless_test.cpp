@@ -223,6 +223,32 @@ TEST_F(HeadlessIde, SaveWritesTheEditedModel) {
   EXPECT_EQ(gdpn::testing::runGdpn("check '" + model + "'").code, 0);
 }
 
+TEST_F(HeadlessIde, AKeyboardSensorHearsTheWorldViewsKeysWhileTheViewerIsInside) {
+  // tests/data/input/console.gdpn.yaml with a camera inside the booth: 'go' waits for the g key
+  std::ifstream source(std::string(GDPN_SOURCE_DIR) + "/tests/data/input/console.gdpn.yaml");
+  std::stringstream text;
+  text << source.rdbuf();
+  auto console = text.str();
+  console.replace(console.find("  - Camera: {position: [10, 0, 1]}"), 34,
+                  "  - Camera: {position: [10, 0, 1]}\n  - Camera: {name: inside, position: [0, 0, 0.5], target: [0, 5, 0.5]}");
+  const auto model = write("console.gdpn.yaml", console);
+  const auto run = [&](const std::string& actions) {
+    const auto file = write("actions.yaml", actions);
+    const auto report = (dir_ / "report.json").string();
+    const auto r = runShell("XDG_CONFIG_HOME='" + (dir_ / "config").string() + "' \"$GDPN\" ide '" + model +
+                            "' --headless --size 1280x720 --replay '" + file + "' --report '" + report + "'");
+    EXPECT_EQ(r.code, 0) << r.out;
+    std::ifstream in(report);
+    return nlohmann::json::parse(in, nullptr, false);
+  };
+  // inside the booth, g held for a step: go fires
+  auto j = run("- view: inside\n- hold: g\n- steps: 2\n- release: g\n- select: main/done\n");
+  EXPECT_EQ(j["inspector"]["tokens"], 1);
+  // outside, the same key is not heard
+  j = run("- hold: g\n- steps: 2\n- release: g\n- select: main/done\n");
+  EXPECT_EQ(j["inspector"]["tokens"], 0);
+}
+
 TEST_F(HeadlessIde, TheFactoryAfterTwoSecondsLooksLikeItsGolden) {
   // golden: tests/data/golden/ide_factory.png, made by this test with GDPN_UPDATE_GOLDEN=1
   const auto shot = (dir_ / "shot.png").string();

@@ -21,7 +21,8 @@ enum class ActionKind : std::uint8_t {
   RunFor,      ///< `run: SECONDS` of model time (whole steps)
   Steps,       ///< `steps: N` steps
   Frames,      ///< `frames: N` frames drawn (the run advancing as Run says, 1/60 s a frame)
-  Key,         ///< `key: NAME` typed in the world view (pressed, then released)
+  Key,         ///< `key: NAME` typed in the world view (pressed, then released); `hold: NAME`
+               ///< presses it and keeps it down, `release: NAME` lets it go (field: hold, release)
   Click,       ///< `click: [X, Y]` window pixels, left button
   Drag,        ///< `drag: {from: [X, Y], to: [X, Y], button: left|right|middle}`
   Set,         ///< `set: {node: PATH, field: NAME, value: V}` through the inspector's command
