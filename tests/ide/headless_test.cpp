@@ -22,13 +22,19 @@ using gdpn::testing::runShell;
 
 class HeadlessIde : public gdpn::testing::TempDirTest {
  protected:
-  /// Runs the headless IDE on the factory with `actions` (a replay file's text); the report.
+  /// Runs the headless IDE (1280 x 720) on the factory with `actions` (a replay file's text);
+  /// the report.
   nlohmann::json replay(const std::string& actions, const std::string& extra = {}, int expect = 0) {
+    return replayOn("examples/factory", actions, extra, expect);
+  }
+  /// The same on the model at `model`.
+  nlohmann::json replayOn(const std::string& model, const std::string& actions, const std::string& extra = {},
+                          int expect = 0) {
     const auto file = write("actions.yaml", actions);
     const auto report = (dir_ / "report.json").string();
     std::filesystem::remove(report);
-    last_ = runShell("XDG_CONFIG_HOME='" + (dir_ / "config").string() + "' \"$GDPN\" ide examples/factory --headless " +
-                     "--size 1280x720 --replay '" + file + "' --report '" + report + "' " + extra);
+    last_ = runShell("XDG_CONFIG_HOME='" + (dir_ / "config").string() + "' \"$GDPN\" ide '" + model +
+                     "' --headless --size 1280x720 --replay '" + file + "' --report '" + report + "' " + extra);
     EXPECT_EQ(last_.code, expect) << last_.out;
     if (last_.code != 0) return {};
     std::ifstream in(report);
@@ -195,13 +201,7 @@ pages:
       - a -> t
       - t -> nowhere
 )Y");
-  const auto actions = write("actions.yaml", "- click: [900, 502]\n");
-  const auto report = (dir_ / "report.json").string();
-  const auto r = runShell("XDG_CONFIG_HOME='" + (dir_ / "config").string() + "' \"$GDPN\" ide '" + model +
-                          "' --headless --size 1280x720 --replay '" + actions + "' --report '" + report + "'");
-  ASSERT_EQ(r.code, 0) << r.out;
-  std::ifstream in(report);
-  const auto j = nlohmann::json::parse(in, nullptr, false);
+  const auto j = replayOn(model, "- click: [900, 502]\n");
   ASSERT_EQ(j["diagnostics"].size(), 1U);
   EXPECT_NE(j["diagnostics"][0].get<std::string>().find("bad.gdpn.yaml:12:9: error: 'nowhere'"), std::string::npos);
   EXPECT_EQ(j["toolbar"]["ready"], false);
@@ -212,10 +212,7 @@ pages:
 
 TEST_F(HeadlessIde, SaveWritesTheEditedModel) {
   const auto model = write("bin.gdpn.yaml", ide::testing::kBinModel);
-  const auto actions = write("actions.yaml", "- set: {node: drop/paint, field: bounce, value: 0.5}\n- press: save\n");
-  const auto r = runShell("XDG_CONFIG_HOME='" + (dir_ / "config").string() + "' \"$GDPN\" ide '" + model +
-                          "' --headless --size 640x480 --replay '" + actions + "'");
-  ASSERT_EQ(r.code, 0) << r.out;
+  replayOn(model, "- set: {node: drop/paint, field: bounce, value: 0.5}\n- press: save\n");
   std::ifstream in(model);
   std::stringstream text;
   text << in.rdbuf();
@@ -232,20 +229,11 @@ TEST_F(HeadlessIde, AKeyboardSensorHearsTheWorldViewsKeysWhileTheViewerIsInside)
   console.replace(console.find("  - Camera: {position: [10, 0, 1]}"), 34,
                   "  - Camera: {position: [10, 0, 1]}\n  - Camera: {name: inside, position: [0, 0, 0.5], target: [0, 5, 0.5]}");
   const auto model = write("console.gdpn.yaml", console);
-  const auto run = [&](const std::string& actions) {
-    const auto file = write("actions.yaml", actions);
-    const auto report = (dir_ / "report.json").string();
-    const auto r = runShell("XDG_CONFIG_HOME='" + (dir_ / "config").string() + "' \"$GDPN\" ide '" + model +
-                            "' --headless --size 1280x720 --replay '" + file + "' --report '" + report + "'");
-    EXPECT_EQ(r.code, 0) << r.out;
-    std::ifstream in(report);
-    return nlohmann::json::parse(in, nullptr, false);
-  };
   // inside the booth, g held for a step: go fires
-  auto j = run("- view: inside\n- hold: g\n- steps: 2\n- release: g\n- select: main/done\n");
+  auto j = replayOn(model, "- view: inside\n- hold: g\n- steps: 2\n- release: g\n- select: main/done\n");
   EXPECT_EQ(j["inspector"]["tokens"], 1);
   // outside, the same key is not heard
-  j = run("- hold: g\n- steps: 2\n- release: g\n- select: main/done\n");
+  j = replayOn(model, "- hold: g\n- steps: 2\n- release: g\n- select: main/done\n");
   EXPECT_EQ(j["inspector"]["tokens"], 0);
 }
 
