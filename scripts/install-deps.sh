@@ -10,7 +10,7 @@ packages=(
   # physics and scripting
   libode-dev pybind11-dev python3-dev python3-pytest python3-numpy
   # graphics and GUI
-  libglfw3-dev libimgui-dev libepoxy-dev libegl-dev libgl-dev libgl1-mesa-dri xvfb xauth
+  libglfw3-dev libimgui-dev libepoxy-dev libegl-dev libgl-dev libgl1-mesa-dri xvfb xauth fonts-dejavu-core
   # file formats
   libassimp-dev libcoin-dev libgdal-dev libstb-dev libtinygltf-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libeigen3-dev libglm-dev

@@ -26,6 +26,9 @@
 #include "gdpn/net/compile.h"
 #include "gdpn/net/pnml.h"
 #include "gdpn/capture/capture.h"
+#ifdef GDPN_WITH_IDE
+#include "gdpn/ide/ide.h"
+#endif
 #include "gdpn/scene/mesh.h"
 #include "gdpn/script/engine.h"
 #include "gdpn/session/session.h"
@@ -172,6 +175,16 @@ struct CaptureArgs {
   bool size_given = false;  // --size was on the command line
 };
 
+/// The --size argument as width and height in pixels; nullopt after saying what is wrong.
+std::optional<std::pair<int, int>> sizeArg(const std::string& text) {
+  auto size = gdpn::capture::parseSize(text);
+  if (!size) {
+    std::cerr << "error: --size " << quoteArg(text) << " is not WIDTHxHEIGHT (for example 1280x720), each side "
+              << gdpn::capture::kMinSide << " to " << gdpn::capture::kMaxSide << " pixels\n";
+  }
+  return size;
+}
+
 /// `gdpn render --net`: the net of one page with its marking at --at (the initial marking
 /// without it), as SVG or PNG.
 int renderNet(const CaptureArgs& a) {
@@ -179,12 +192,8 @@ int renderNet(const CaptureArgs& a) {
   o.page = a.page;
   if (a.at_given) o.at = a.at;
   if (a.size_given) {
-    const auto size = gdpn::capture::parseSize(a.size);
-    if (!size) {
-      std::cerr << "error: --size " << quoteArg(a.size) << " is not WIDTHxHEIGHT (for example 1280x720), each side "
-                << gdpn::capture::kMinSide << " to " << gdpn::capture::kMaxSide << " pixels\n";
-      return 2;
-    }
+    const auto size = sizeArg(a.size);
+    if (!size) return 2;
     o.width = size->first;
     o.height = size->second;
   }
@@ -211,10 +220,8 @@ int renderNet(const CaptureArgs& a) {
 
 /// `gdpn render` (movie = false) and `gdpn record` (movie = true).
 int capture(CaptureArgs a, bool movie) {
-  const auto size = gdpn::capture::parseSize(a.size);
+  const auto size = sizeArg(a.size);
   if (!size) {
-    std::cerr << "error: --size " << quoteArg(a.size) << " is not WIDTHxHEIGHT (for example 1280x720), each side "
-              << gdpn::capture::kMinSide << " to " << gdpn::capture::kMaxSide << " pixels\n";
     return 2;
   }
   a.options.width = size->first;
@@ -473,6 +480,39 @@ int run(const RunArgs& a) {
   }
 }
 
+/// `gdpn ide`'s arguments.
+struct IdeArgs {
+  std::string model, size = "1600x900", replay, screenshot, report;
+  bool headless = false;
+  double quit_after = 0;
+};
+
+/// `gdpn ide`: the IDE when it was built in (GDPN_IDE), else a message.
+int ide(const IdeArgs& a) {
+#ifdef GDPN_WITH_IDE
+  const auto size = sizeArg(a.size);
+  if (!size) return 2;
+  if (!a.headless && !a.replay.empty()) {
+    std::cerr << "error: --replay needs --headless\n";
+    return 2;
+  }
+  gdpn::ide::IdeOptions o;
+  o.model = a.model;
+  o.headless = a.headless;
+  o.width = size->first;
+  o.height = size->second;
+  o.replay = a.replay;
+  o.screenshot = a.screenshot;
+  o.report = a.report;
+  o.quit_after = a.quit_after;
+  return gdpn::ide::runIde(o);
+#else
+  (void)a;
+  std::cerr << "error: this gdpn was built without the IDE (configure with -DGDPN_IDE=ON)\n";
+  return 1;
+#endif
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -572,6 +612,18 @@ int main(int argc, char** argv) {
       ->required();
   convert_cmd->add_option("OUT", convert_out, "the .gdpn.yaml or .pnml to write")->required();
 
+  IdeArgs ide_args;
+  auto* ide_cmd = app.add_subcommand("ide", "Open a model in the IDE (a window; --headless for none)");
+  ide_cmd->add_option("MODEL", ide_args.model, "a .gdpn.yaml file, or a folder holding one")->required();
+  ide_cmd->add_flag("--headless", ide_args.headless, "no window: draw on an EGL surfaceless context");
+  ide_cmd->add_option("--size", ide_args.size, "WIDTHxHEIGHT of the window or frame in pixels (default 1600x900)");
+  ide_cmd->add_option("--replay", ide_args.replay, "headless: perform the actions in ACTIONS.yaml (docs/ide.md)");
+  ide_cmd->add_option("--screenshot", ide_args.screenshot, "save the last frame as a PNG");
+  ide_cmd->add_option("--report", ide_args.report, "save what the views showed in the last frame as JSON");
+  ide_cmd->add_option("--quit-after", ide_args.quit_after,
+                      "window: run in real time and quit after SECONDS (with the screenshot and report)")
+      ->check(number(0.0, 1e6, "seconds above 0, at most 1e6", true));
+
   // every mistake on the command line exits 2, after CLI11's message (help and version exit 0)
   try {
     app.parse(argc, argv);
@@ -602,5 +654,6 @@ int main(int argc, char** argv) {
   if (record_cmd->parsed()) return capture(record_args, true);
   if (check_cmd->parsed()) return check(check_model, check_timeout);
   if (run_cmd->parsed()) return run(run_args);
+  if (ide_cmd->parsed()) return ide(ide_args);
   return 2;
 }

@@ -15,6 +15,7 @@
 #include "gdpn/platform/png.h"
 #include "gdpn/platform/target.h"
 #include "gdpn/render/renderer.h"
+#include "support/golden.h"
 
 namespace gdpn::render {
 namespace {
@@ -63,32 +64,7 @@ Picture renderAndCompare(const std::string& name) {
   Picture p;
   EXPECT_TRUE(readPng(out, p.width, p.height, p.rgb, error)) << error;
   fs::remove(out);
-  const auto golden = (kData / "golden" / (name + ".png")).string();
-  if (std::getenv("GDPN_UPDATE_GOLDEN") != nullptr) {
-    EXPECT_TRUE(writePng(golden, p.width, p.height, p.rgb, error)) << error;
-    return p;
-  }
-  Picture g;
-  EXPECT_TRUE(readPng(golden, g.width, g.height, g.rgb, error)) << golden << ": " << error;
-  EXPECT_EQ(g.width, p.width);
-  EXPECT_EQ(g.height, p.height);
-  if (g.rgb.size() != p.rgb.size()) return p;
-  // a tolerance for rasteriser differences: at most 0.5 % of pixels off by more than 24 in a
-  // channel, and a mean difference under 1.5
-  std::size_t off = 0;
-  double total = 0;
-  for (std::size_t i = 0; i < p.rgb.size(); i += 3) {
-    int worst = 0;
-    for (std::size_t c = 0; c < 3; ++c) {
-      const int d = std::abs(int{p.rgb[i + c]} - int{g.rgb[i + c]});
-      worst = std::max(worst, d);
-      total += d;
-    }
-    off += worst > 24 ? 1 : 0;
-  }
-  const double pixels = static_cast<double>(p.rgb.size() / 3);
-  EXPECT_LE(static_cast<double>(off) / pixels, 0.005) << name << ": " << off << " pixels differ";
-  EXPECT_LE(total / static_cast<double>(p.rgb.size()), 1.5) << name;
+  gdpn::testing::expectLikeGolden(p.width, p.height, p.rgb, (kData / "golden" / (name + ".png")).string());
   return p;
 }
 

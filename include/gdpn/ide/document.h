@@ -1,0 +1,87 @@
+#pragma once
+/// \file
+/// The document the IDE edits: the model (its scene and net spec), the selection shared by
+/// every view, and the undo stack. No ImGui, no OpenGL: testable without a window. Running
+/// never changes it; a run is made from a snapshot (run_control.h).
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "gdpn/core/diagnostics.h"
+#include "gdpn/ide/command.h"
+#include "gdpn/ide/selection.h"
+#include "gdpn/model/model.h"
+
+namespace gdpn::ide {
+
+/// A model being edited.
+class Document {
+ public:
+  /// The model file at `path`; null with the located diagnostics when it cannot be read.
+  static std::unique_ptr<Document> open(const std::string& path, core::Diagnostics& diags);
+  /// A document over `model` (already loaded).
+  explicit Document(model::Model model);
+
+  /// The model as edited.
+  [[nodiscard]] const model::Model& model() const { return model_; }
+  /// The editable scene (null when the model has none).
+  [[nodiscard]] scene::Scene* scene() const { return scene_.get(); }
+  /// The model with a scene of its own, for a run: nothing the run does reaches the document.
+  [[nodiscard]] model::Model snapshot() const;
+  /// The canonical text of the model (what saving writes).
+  [[nodiscard]] std::string text() const { return model::writeModel(model_); }
+  /// Writes the model to its file (or `path`); false with a diagnostic when it could not.
+  bool save(core::Diagnostics& diags, const std::string& path = {});
+
+  /// The selection.
+  [[nodiscard]] const Selection& selection() const { return selection_; }
+  /// Selects `selection` (every view follows).
+  void select(Selection selection) { selection_ = std::move(selection); }
+
+  /// Applies `command` and keeps it for undo; "" or why it was refused.
+  std::string execute(std::unique_ptr<Command> command);
+  /// Undoes the last step; false when there is none.
+  bool undo() { return undo_.undo(*this); }
+  /// Redoes the last undone step; false when there is none.
+  bool redo() { return undo_.redo(*this); }
+  /// The undo stack.
+  [[nodiscard]] UndoStack& history() { return undo_; }
+
+  /// Counts changes: it grows with every applied, undone or redone command and reload.
+  [[nodiscard]] std::uint64_t revision() const { return revision_; }
+  /// Commands call this after each change they make.
+  void touched() { ++revision_; }
+
+  /// The problems found when the model was last read or checked (every one located).
+  [[nodiscard]] const core::Diagnostics& diagnostics() const { return diagnostics_; }
+  /// Replaces the diagnostics shown (a compile of the model adds its own).
+  void setDiagnostics(core::Diagnostics diags) { diagnostics_ = std::move(diags); }
+  /// True when the model file changed on disk since it was read.
+  [[nodiscard]] bool changedOnDisk() const;
+  /// True when a Python file in the model's folder changed, appeared or went since the last
+  /// call (or since the model was read): its scripts should be read again (a run's reset
+  /// does). The first call after opening answers false.
+  bool scriptsChanged();
+  /// Reads the model file again. On success the model is replaced, the history cleared and the
+  /// selection kept when it still names something; on error the old model stays and the
+  /// diagnostics say why. False on error.
+  bool reload();
+
+ private:
+  void adopt(model::Model model);
+  model::Model model_;
+  std::shared_ptr<scene::Scene> scene_;  // the same object as model_.scene, editable
+  Selection selection_;
+  UndoStack undo_;
+  std::uint64_t revision_ = 0;
+  core::Diagnostics diagnostics_;
+  std::optional<std::filesystem::file_time_type> stamp_;  // the file's time when read
+  std::map<std::string, std::filesystem::file_time_type> script_stamps_;  // *.py beside the model
+  [[nodiscard]] std::map<std::string, std::filesystem::file_time_type> scriptStamps() const;
+};
+
+}  // namespace gdpn::ide

@@ -1,0 +1,54 @@
+#pragma once
+/// \file
+/// Replay files: the actions a headless IDE performs, one a list item in YAML (docs/ide.md):
+/// select, press a control, fire, run for a time, type a key, click or drag at a point, set a
+/// field, undo, redo, choose a view, take a screenshot. Reading only; the IDE performs them.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gdpn/core/diagnostics.h"
+
+namespace gdpn::ide {
+
+/// What an action does.
+enum class ActionKind : std::uint8_t {
+  Select,      ///< `select: NAME`: a node path, else a place, transition or instance name
+  Press,       ///< `press: run|faster|fastest|pause|step|reset|plant-only|undo|redo|save`
+  Fire,        ///< `fire: TRANSITION`
+  RunFor,      ///< `run: SECONDS` of model time (whole steps)
+  Steps,       ///< `steps: N` steps
+  Frames,      ///< `frames: N` frames drawn (the run advancing as Run says, 1/60 s a frame)
+  Key,         ///< `key: NAME` typed in the world view (pressed, then released); `hold: NAME`
+               ///< presses it and keeps it down, `release: NAME` lets it go (field: hold, release)
+  Click,       ///< `click: [X, Y]` window pixels, left button
+  Drag,        ///< `drag: {from: [X, Y], to: [X, Y], button: left|right|middle}`
+  Set,         ///< `set: {node: PATH, field: NAME, value: V}` through the inspector's command
+  View,        ///< `view: front|back|left|right|top|iso|frame` or a Camera node's path
+  Screenshot,  ///< `screenshot: FILE.png` of the whole window
+  Break,       ///< `break: {starts: T}`, `{completes: T}`, `{place: P, at_least: N}` or `{when: PYTHON}`
+};
+
+/// One action, where it was written.
+struct Action {
+  ActionKind kind = ActionKind::Select;  ///< what it does
+  std::string text;            ///< the name, control, key, file, node path or view
+  std::string field;           ///< Set: the field; Break: starts, completes, place or when
+  std::vector<std::string> value;  ///< Set: the value's words (one for a scalar, more for a list)
+  bool list = false;           ///< Set: the value was a list
+  double number = 0;           ///< RunFor: seconds; Steps, Frames: the count; Break: at_least
+  double x = 0, y = 0;         ///< Click, Drag: the point (Drag: where it starts), pixels
+  double x2 = 0, y2 = 0;       ///< Drag: where it ends, pixels
+  int button = 0;              ///< Drag: 0 left, 1 right, 2 middle
+  core::SourceLoc loc;         ///< where it was written
+};
+
+/// The actions in the replay file at `path`; nullopt with located errors when it has mistakes.
+std::optional<std::vector<Action>> loadReplay(const std::string& path, core::Diagnostics& diags);
+/// The same from text; `file` names it in diagnostics.
+std::optional<std::vector<Action>> parseReplay(const std::string& text, const std::string& file,
+                                               core::Diagnostics& diags);
+
+}  // namespace gdpn::ide

@@ -1,0 +1,111 @@
+#pragma once
+/// \file
+/// The toolbar's run controls over a Session made from the document: run (real time, faster,
+/// as fast as possible), pause, step, run N steps, fire a transition, plant only, reset. The
+/// run never changes the document; reset goes back to the document's state exactly. No
+/// ImGui: the toolbar calls these, and so do the tests.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gdpn/core/diagnostics.h"
+#include "gdpn/session/session.h"
+
+namespace gdpn::ide {
+
+class Document;
+
+/// How fast Run goes.
+enum class RunSpeed : std::uint8_t {
+  RealTime,  ///< one second of model time per second
+  Faster,    ///< kFasterFactor seconds of model time per second
+  Fastest,   ///< as many steps as fit in a frame
+};
+
+/// Model seconds per real second at RunSpeed::Faster.
+inline constexpr double kFasterFactor = 8.0;
+
+/// "real time", "faster", "as fast as possible".
+[[nodiscard]] const char* runSpeedName(RunSpeed speed);
+
+/// Edit mode (nothing has run since the last reset), running, or paused.
+enum class RunMode : std::uint8_t { Edit, Running, Paused };
+
+/// "edit", "running", "paused".
+[[nodiscard]] const char* runModeName(RunMode mode);
+
+/// The run of a document and its controls.
+class RunControl {
+ public:
+  /// Makes the session from `doc` (which must outlive this). False with diagnostics when the
+  /// model does not compile; the controls then do nothing until a later rebuild() works.
+  bool open(Document& doc, core::Diagnostics& diags);
+
+  /// Starts running at `speed` (advance() takes the steps).
+  void run(RunSpeed speed);
+  /// Stops running.
+  void pause();
+  /// Exactly one step (or one plant step when plant only is on); pauses.
+  void step();
+  /// `n` steps now; pauses.
+  void runSteps(std::int64_t n);
+  /// Runs until model time has advanced by `seconds` (rounded to whole steps); pauses.
+  void runFor(double seconds);
+  /// Starts transition `name` now: "" when it started, else why not (the Session's words).
+  std::string fire(const std::string& name);
+  /// Plant only: the net switched off, the plant and sensors go on.
+  void setPlantOnly(bool on) { plant_only_ = on; }
+  /// True while plant only is on.
+  [[nodiscard]] bool plantOnly() const { return plant_only_; }
+  /// Back to the document's state exactly (rebuilt from it when it changed since the run was
+  /// made); edit mode. False with diagnostics when the edited model does not compile.
+  bool reset(core::Diagnostics& diags);
+
+  /// Adds a breakpoint (kept across resets): "" or why not (no such transition or place).
+  std::string addBreakpoint(session::Breakpoint breakpoint);
+  /// Removes the breakpoint described as `description` (Breakpoint::describe()); false when
+  /// there is none.
+  bool removeBreakpoint(const std::string& description);
+  /// The breakpoints, described ("starts main/T", "main/buffer >= 3"), in the order added.
+  [[nodiscard]] std::vector<std::string> breakpoints() const;
+
+  /// Called once a frame with the real seconds since the last: takes the steps Run owes
+  /// (none when not running). A run ends on its own when the net is dead, a script halts or
+  /// a breakpoint holds; outcome() says why.
+  void advance(double wall_seconds);
+  /// Delivers a live input event (a key or a click of the world view) to the sensors.
+  void push(sensors::InputEvent event);
+
+  /// The session (null when the model never compiled).
+  [[nodiscard]] session::Session* session() const { return session_.get(); }
+  /// Edit, running or paused.
+  [[nodiscard]] RunMode mode() const { return mode_; }
+  /// The speed Run uses.
+  [[nodiscard]] RunSpeed speed() const { return speed_; }
+  /// Model time, seconds.
+  [[nodiscard]] double time() const;
+  /// Steps taken since the start of the run.
+  [[nodiscard]] std::int64_t steps() const;
+  /// Model seconds per real second over the last frames (0 when not running).
+  [[nodiscard]] double realTimeFactor() const { return rtf_; }
+  /// The transitions of the net (qualified names, in declaration order).
+  [[nodiscard]] std::vector<std::string> transitions() const;
+  /// The last message for the user (why a fire was refused, why a run ended); "" when none.
+  [[nodiscard]] const std::string& message() const { return message_; }
+
+ private:
+  void takeSteps(std::int64_t n);  // n steps (or plant steps), stopping on a halt
+  Document* doc_ = nullptr;
+  std::unique_ptr<session::Session> session_;
+  std::uint64_t revision_ = 0;  // the document's revision the session was made from
+  RunMode mode_ = RunMode::Edit;
+  RunSpeed speed_ = RunSpeed::RealTime;
+  bool plant_only_ = false;
+  double owed_ = 0.0;  // model seconds Run owes
+  double rtf_ = 0.0;
+  std::string message_;
+};
+
+}  // namespace gdpn::ide

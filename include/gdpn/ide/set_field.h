@@ -1,0 +1,41 @@
+#pragma once
+/// \file
+/// The first command: set one field of one scene node, checked by the field's own
+/// description (the check the model loader uses).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gdpn/ide/command.h"
+#include "gdpn/scene/types.h"
+
+namespace gdpn::ide {
+
+/// Sets field `field` of the node at `path` to `value`.
+class SetFieldCommand final : public Command {
+ public:
+  /// `drag`: the id of the drag this edit belongs to (edits of one drag of one field merge into
+  /// one step); 0 for a single edit.
+  SetFieldCommand(std::string path, std::string field, scene::FieldValue value, std::uint64_t drag = 0);
+  std::string apply(Document& doc) override;
+  void revert(Document& doc) override;
+  [[nodiscard]] std::string label() const override;
+  [[nodiscard]] std::uint64_t mergeKey() const override;
+  void absorb(const Command& next) override;
+
+ private:
+  std::string path_;   // the node
+  std::string field_;  // the field's name
+  scene::FieldValue value_, old_;
+  std::uint64_t drag_;
+};
+
+/// The value of field `desc` written as `words` (one word for a scalar, one a number for a
+/// vector or list; `list` when written as a list), or nullopt with `why`. The range and the
+/// other checks are the command's (FieldDesc::check).
+std::optional<scene::FieldValue> fieldValueFromWords(const scene::FieldDesc& desc, const std::vector<std::string>& words,
+                                                     bool list, std::string& why);
+
+}  // namespace gdpn::ide

@@ -1,0 +1,336 @@
+// The IDE's frame: the run advances, the views draw in their places, the splitters move, and
+// replay actions are performed through the same document and run controls the views use.
+
+#include "app.h"
+
+#include <imgui.h>
+
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "detail/world_texture.h"
+#include "gdpn/ide/set_field.h"
+#include "gdpn/scene/actions.h"
+#include "views.h"
+#include "views/net_view_state.h"
+
+namespace gdpn::ide {
+
+namespace {
+
+constexpr const char* kRegularFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+constexpr const char* kBoldFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf";
+constexpr float kFontSize = 15.0F;
+
+nlohmann::json rectJson(const Rect& r) { return {r.x, r.y, r.w, r.h}; }
+
+}  // namespace
+
+Fonts loadFonts() {
+  auto& io = ImGui::GetIO();
+  Fonts f;
+  if (std::filesystem::exists(kRegularFont)) f.regular = io.Fonts->AddFontFromFileTTF(kRegularFont, kFontSize);
+  if (f.regular == nullptr) f.regular = io.Fonts->AddFontDefault();
+  if (std::filesystem::exists(kBoldFont)) f.bold = io.Fonts->AddFontFromFileTTF(kBoldFont, kFontSize);
+  if (f.bold == nullptr) f.bold = f.regular;
+  return f;
+}
+
+App::App(std::unique_ptr<Document> doc) : doc_(std::move(doc)), net_view_(std::make_unique<NetViewState>()) {
+  (void)run_.open(*doc_, run_diags_);
+  // the world view starts where the scene's first Camera looks (or a view that frames it)
+  if (auto* s = doc_->scene()) {
+    scene::updateTransforms(s->root());
+    std::string error;
+    orbit = OrbitCamera::from(render::chooseCamera(*s, "", 0.0, error));
+  }
+  const auto names = run_.transitions();
+  if (!names.empty()) fire_target = names.front();
+}
+
+App::~App() = default;
+
+void App::initGraphics(Fonts f) {
+  fonts = f;
+  const auto dir = std::filesystem::path(doc_->model().path).parent_path().string();
+  renderer = std::make_unique<render::Renderer>(dir);
+  world_texture = std::make_unique<WorldTexture>();
+}
+
+scene::Scene* App::shownScene() const {
+  if (run_.mode() != RunMode::Edit && run_.session() != nullptr) return run_.session()->simulation().plant();
+  return doc_->scene();
+}
+
+void App::selectNode(const std::string& path) {
+  doc_->select(Selection::node(path));
+  reveal_selection = true;
+}
+
+bool App::selectByName(const std::string& name) {
+  auto* s = shownScene();
+  if (s != nullptr && s->find(name) != nullptr) {
+    selectNode(name);
+    return true;
+  }
+  if (run_.session() == nullptr) return false;
+  const auto& net = run_.session()->simulation().net();
+  if (net.findPlace(name) >= 0) {
+    doc_->select({SelectionKind::Place, name});
+    return true;
+  }
+  if (net.findTransition(name) >= 0) {
+    doc_->select({SelectionKind::Transition, name});
+    fire_target = name;
+    return true;
+  }
+  // an instance: a prefix of qualified names
+  const auto prefix = name + "/";
+  for (const auto& p : net.places()) {
+    if (p.name.starts_with(prefix)) {
+      doc_->select({SelectionKind::Instance, name});
+      return true;
+    }
+  }
+  return false;
+}
+
+void App::frameSelection() {
+  auto* s = shownScene();
+  if (s == nullptr) return;
+  scene::updateTransforms(s->root());
+  const auto& sel = doc_->selection();
+  auto* node = sel.kind == SelectionKind::Node ? s->find(sel.name) : nullptr;
+  orbit.frame(scene::boundingBox(node != nullptr ? *node : s->root()));
+  camera_node.clear();
+}
+
+void App::undo() {
+  if (!doc_->undo()) message = "nothing to undo";
+  else message = "undone";
+}
+
+void App::redo() {
+  if (!doc_->redo()) message = "nothing to redo";
+  else message = "redone";
+}
+
+void App::save() {
+  core::Diagnostics diags;
+  message = doc_->save(diags) ? "saved " + doc_->model().path : diags.str();
+}
+
+void App::reset() {
+  core::Diagnostics diags;
+  if (!run_.reset(diags)) {
+    run_diags_ = std::move(diags);
+    message = "the edited model does not compile: see Diagnostics";
+    return;
+  }
+  run_diags_ = {};
+  message = "reset";
+}
+
+void App::checkReload() {
+  // twice a second at 60 frames a second is enough
+  if (++frames_ % 30 != 0) return;
+  if (!doc_->changedOnDisk()) {
+    if (doc_->scriptsChanged()) {
+      reset();
+      if (run_diags_.all().empty()) message = "a script changed: the run was reset with it";
+    }
+    return;
+  }
+  if (!doc_->reload()) {
+    message = "the model file changed and has errors: the old model stays";
+    return;
+  }
+  message = "reloaded " + std::filesystem::path(doc_->model().path).filename().string();
+  // the run takes the new model at once
+  reset();
+}
+
+bool App::perform(const Action& a, std::string& error) {
+  switch (a.kind) {
+    case ActionKind::Select:
+      if (!selectByName(a.text)) error = "nothing is called '" + a.text + "'";
+      break;
+    case ActionKind::Press:
+      if (a.text == "run") run_.run(RunSpeed::RealTime);
+      else if (a.text == "faster") run_.run(RunSpeed::Faster);
+      else if (a.text == "fastest") run_.run(RunSpeed::Fastest);
+      else if (a.text == "pause") run_.pause();
+      else if (a.text == "step") run_.step();
+      else if (a.text == "reset") reset();
+      else if (a.text == "plant-only") run_.setPlantOnly(!run_.plantOnly());
+      else if (a.text == "undo") undo();
+      else if (a.text == "redo") redo();
+      else if (a.text == "save") save();
+      break;
+    case ActionKind::Fire: {
+      const auto names = run_.transitions();
+      if (std::find(names.begin(), names.end(), a.text) == names.end()) {
+        error = "the net has no transition '" + a.text + "'";
+        break;
+      }
+      fire_target = a.text;
+      (void)run_.fire(a.text);
+      message = run_.message();
+      break;
+    }
+    case ActionKind::RunFor: run_.runFor(a.number); break;
+    case ActionKind::Steps: run_.runSteps(static_cast<std::int64_t>(a.number)); break;
+    case ActionKind::Set: {
+      auto* s = doc_->scene();
+      const auto* node = s ? s->find(a.text) : nullptr;
+      if (node == nullptr) {
+        error = "no node '" + a.text + "'";
+        break;
+      }
+      const int i = node->type().fieldIndex(a.field);
+      if (i < 0) {
+        error = "a " + node->type().name + " has no field '" + a.field + "'";
+        break;
+      }
+      auto value = fieldValueFromWords(*node->type().fields[static_cast<std::size_t>(i)], a.value, a.list, error);
+      if (!value) break;
+      error = doc_->execute(std::make_unique<SetFieldCommand>(a.text, a.field, std::move(*value)));
+      inspector_error = error;
+      break;
+    }
+    case ActionKind::View: {
+      if (auto v = parseStandardView(a.text)) {
+        orbit.look(*v);
+        camera_node.clear();
+      } else if (a.text == "frame") {
+        frameSelection();
+      } else {
+        auto* s = shownScene();
+        auto* node = s ? s->find(a.text) : nullptr;
+        if (node == nullptr || node->kind() != scene::NodeKind::Camera) {
+          error = "'" + a.text + "' is no standard view (front, back, left, right, top, iso, frame) and no Camera node";
+          break;
+        }
+        camera_node = a.text;
+      }
+      break;
+    }
+    case ActionKind::Break: {
+      session::Breakpoint bp;
+      if (a.field == "starts") bp = session::Breakpoint::starts(a.text);
+      else if (a.field == "completes") bp = session::Breakpoint::completes(a.text);
+      else if (a.field == "place")
+        bp = session::Breakpoint::marking(a.text, session::Compare::GreaterEqual, static_cast<std::int64_t>(a.number));
+      else bp = session::Breakpoint::predicate(a.text);
+      error = run_.addBreakpoint(std::move(bp));
+      break;
+    }
+    case ActionKind::Key:
+    case ActionKind::Click:
+    case ActionKind::Drag:
+    case ActionKind::Frames:
+    case ActionKind::Screenshot:
+      error = "this action needs the platform";
+      break;
+  }
+  return error.empty();
+}
+
+void App::frame(float width, float height, double wall_seconds) {
+  if (wall_seconds > 0) fps = fps == 0 ? 1.0 / wall_seconds : 0.9 * fps + 0.1 / wall_seconds;
+  checkReload();
+  run_.advance(wall_seconds);
+
+  // the keys that work everywhere
+  auto& io = ImGui::GetIO();
+  if (io.KeyCtrl && !io.WantTextInput) {
+    if (ImGui::IsKeyPressed(GLFW_KEY_Z, false)) undo();
+    if (ImGui::IsKeyPressed(GLFW_KEY_Y, false)) redo();
+    if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) save();
+  }
+
+  const auto layout = Layout::of(splitters_, width, height);
+  ImGui::SetNextWindowPos({0, 0});
+  ImGui::SetNextWindowSize({width, height});
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {0, 0});
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0);
+  ImGui::Begin("gdpn ide", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollWithMouse);
+  ImGui::PopStyleVar(3);
+
+  nlohmann::json report;
+  drawToolbar(*this, layout.toolbar, report["toolbar"]);
+  drawTreeView(*this, layout.tree, report["tree"]);
+  drawWorldView(*this, layout.world, report["world"]);
+  drawNetView(*this, layout.net, report["net_view"]);
+  drawInspector(*this, layout.inspector, report["inspector"]);
+  drawDiagnostics(*this, layout.diagnostics, report["diagnostics"]);
+  drawStatusBar(*this, layout.status, report["status"]);
+
+  // the splitters: drag a handle to move it
+  for (int i = 0; i < 4; ++i) {
+    const auto& h = layout.handles[i];
+    ImGui::SetCursorScreenPos({h.x, h.y});
+    ImGui::PushID(i);
+    ImGui::InvisibleButton("##splitter", {std::max(h.w, 1.0F), std::max(h.h, 1.0F)});
+    ImGui::PopID();
+    const bool vertical = h.w < h.h;
+    if (ImGui::IsItemHovered() || ImGui::IsItemActive()) {
+      ImGui::SetMouseCursor(vertical ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
+      ImGui::GetWindowDrawList()->AddRectFilled({h.x, h.y}, {h.x + h.w, h.y + h.h},
+                                                ImGui::GetColorU32(ImGuiCol_SeparatorHovered));
+    }
+    if (ImGui::IsItemActive()) {
+      const auto d = io.MouseDelta;
+      switch (static_cast<Splitter>(i)) {
+        case Splitter::Tree: splitters_.tree_width += d.x; break;
+        case Splitter::Bottom: splitters_.bottom_height -= d.y; break;
+        case Splitter::Net: splitters_.net_width -= d.x; break;
+        case Splitter::Diagnostics: splitters_.diagnostics_width -= d.x; break;
+      }
+    }
+  }
+  ImGui::End();
+
+  // what the frame showed, for tests and scripts
+  const auto& sel = doc_->selection();
+  report["selection"] = {{"kind", selectionKindName(sel.kind)}, {"name", sel.name}};
+  report["run"] = {{"mode", runModeName(run_.mode())},
+                   {"speed", runSpeedName(run_.speed())},
+                   {"time", run_.time()},
+                   {"steps", run_.steps()},
+                   {"plant_only", run_.plantOnly()},
+                   {"breakpoints", run_.breakpoints()},
+                   {"message", run_.message()}};
+  report["undo"] = {{"depth", doc_->history().depth()}, {"can_redo", doc_->history().canRedo()},
+                    {"label", doc_->history().undoLabel()}};
+  report["layout"] = {{"toolbar", rectJson(layout.toolbar)}, {"tree", rectJson(layout.tree)},
+                      {"world", rectJson(layout.world)},     {"net", rectJson(layout.net)},
+                      {"inspector", rectJson(layout.inspector)}, {"diagnostics", rectJson(layout.diagnostics)},
+                      {"status", rectJson(layout.status)}};
+  report["splitters"] = {{"tree_width", splitters_.tree_width},
+                         {"bottom_height", splitters_.bottom_height},
+                         {"net_width", splitters_.net_width},
+                         {"diagnostics_width", splitters_.diagnostics_width}};
+  report["message"] = message;
+  report_ = std::move(report);
+}
+
+void beginPanel(const char* id, const Rect& at, const char* heading) {
+  ImGui::SetCursorScreenPos({at.x, at.y});
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {6, 4});
+  ImGui::BeginChild(id, {at.w, at.h}, true, ImGuiWindowFlags_AlwaysUseWindowPadding);
+  ImGui::PopStyleVar();
+  if (heading != nullptr && *heading != '\0') {
+    ImGui::TextColored({0.62F, 0.72F, 0.86F, 1.0F}, "%s", heading);
+    ImGui::Separator();
+  }
+}
+
+void endPanel() { ImGui::EndChild(); }
+
+}  // namespace gdpn::ide

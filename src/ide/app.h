@@ -1,0 +1,142 @@
+#pragma once
+// The IDE's frame: the views over the document and the run, laid out by the splitters. One
+// App serves the window and the headless IDE alike; the platform (window.cpp, headless.cpp)
+// feeds ImGui its input, calls frame() between ImGui::NewFrame() and ImGui::Render(), and
+// draws ImGui's output. Private to the ide module.
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "gdpn/ide/document.h"
+#include "gdpn/ide/layout.h"
+#include "gdpn/ide/orbit.h"
+#include "gdpn/ide/replay.h"
+#include "gdpn/ide/run_control.h"
+#include "gdpn/render/renderer.h"
+
+struct ImFont;
+
+namespace gdpn::ide {
+
+class WorldTexture;
+struct NetViewState;
+
+/// What the world view's last picture showed: when nothing of it changes, the picture is
+/// shown again without drawing.
+struct WorldKey {
+  std::int64_t steps = -1;                 ///< the run's steps
+  RunMode mode = RunMode::Edit;            ///< edit, running, paused
+  std::uint64_t revision = 0;              ///< the document's revision
+  core::Vec3 eye, target;                  ///< the camera, m
+  double fov = 0;                          ///< degrees
+  scene::NodeHandle selection = 0;         ///< the highlighted node
+  int width = 0, height = 0;               ///< pixels
+  bool sensors = false, joints = false;    ///< overlays
+  const void* session = nullptr;           ///< the run drawn
+  friend bool operator==(const WorldKey& a, const WorldKey& b) {
+    return a.steps == b.steps && a.mode == b.mode && a.revision == b.revision && a.eye.x == b.eye.x &&
+           a.eye.y == b.eye.y && a.eye.z == b.eye.z && a.target.x == b.target.x && a.target.y == b.target.y &&
+           a.target.z == b.target.z && a.fov == b.fov && a.selection == b.selection && a.width == b.width &&
+           a.height == b.height && a.sensors == b.sensors && a.joints == b.joints && a.session == b.session;
+  }
+};
+
+/// Fonts the views use (null: ImGui's default).
+struct Fonts {
+  ImFont* regular = nullptr;  ///< DejaVu Sans
+  ImFont* bold = nullptr;     ///< DejaVu Sans Bold: node tokens and sensors in the tree
+};
+
+/// The IDE: the document, its run, the views' own state, and what they showed last frame.
+class App {
+ public:
+  /// An IDE over `doc`; the run is made from it (compile errors go to the Diagnostics view).
+  explicit App(std::unique_ptr<Document> doc);
+  ~App();
+  App(const App&) = delete;
+  App& operator=(const App&) = delete;
+
+  /// Needs a current OpenGL 3.3 context: makes the renderer. `fonts` from loadFonts().
+  void initGraphics(Fonts fonts);
+  /// Draws one frame of every view into ImGui (between NewFrame and Render) for a window of
+  /// `width` x `height` pixels, `wall_seconds` after the last; Run takes its steps first.
+  void frame(float width, float height, double wall_seconds);
+  /// Performs a replay action that needs no synthetic input (not Key, Click, Drag, Frames,
+  /// Screenshot). False with `error` when it cannot be done.
+  bool perform(const Action& action, std::string& error);
+  /// What the views showed in the last frame (JSON: one object per view).
+  [[nodiscard]] const nlohmann::json& report() const { return report_; }
+  /// The document.
+  [[nodiscard]] Document& document() { return *doc_; }
+  /// The run.
+  [[nodiscard]] RunControl& run() { return run_; }
+  /// The splitters (loaded from and saved to the settings file by the platform).
+  [[nodiscard]] Splitters& splitters() { return splitters_; }
+
+  // the views' shared state, read and written by the view files (views/*.cpp)
+  /// The scene the world and tree views show: the run's plant once it has run, else the
+  /// document's scene.
+  [[nodiscard]] scene::Scene* shownScene() const;
+  /// Selects `path` of the shown scene, and says so in the message line.
+  void selectNode(const std::string& path);
+  /// Selects what `name` names: a node path, else a place, transition or instance. False
+  /// when nothing has that name.
+  bool selectByName(const std::string& name);
+  /// Points the world view's free camera at the selected node so that it fills the view (the
+  /// whole scene when no node is selected).
+  void frameSelection();
+  /// Undo or redo through the document, then the world shows the result.
+  void undo();
+  void redo();
+  /// Saves the model to its file (the message says how it went).
+  void save();
+  /// Reset of the run (errors to the Diagnostics view).
+  void reset();
+  /// The net view's page, layout and viewport (views/net_view.cpp).
+  [[nodiscard]] NetViewState& netView() { return *net_view_; }
+  /// The compile errors of the run, if it failed to build.
+  [[nodiscard]] const core::Diagnostics& runDiagnostics() const { return run_diags_; }
+
+  Fonts fonts;                      ///< the fonts
+  OrbitCamera orbit;                ///< the world view's camera
+  std::string camera_node;          ///< the scene Camera node in use ("" : the orbit camera)
+  bool show_sensors = false;        ///< the world view draws sensor volumes
+  bool show_joints = false;         ///< the world view draws joint axes
+  std::string fire_target;          ///< the toolbar's chosen transition
+  int run_n = 100;                  ///< the toolbar's N for Run N steps
+  int break_tokens = 1;             ///< the inspector's token count for a place's breakpoint
+  std::uint64_t drag_id = 0;        ///< the inspector's current drag (merge key)
+  std::string inspector_error;      ///< why the last edit was refused
+  std::string message;              ///< the status bar's message line
+  double fps = 0;                   ///< frames per second, smoothed
+  bool screenshot_requested = false;  ///< the toolbar asked for a picture of the next frame
+  int screenshots = 0;              ///< pictures taken so far (their names count up)
+  bool reveal_selection = false;    ///< the tree opens and scrolls to the selection once
+  std::vector<std::string> pressed_keys;  ///< keys the world view delivered (report)
+  std::array<bool, 512> key_was_down{};   ///< the world view's keys last frame, by GLFW code
+  core::Vec3 last_eye{1e300, 0, 0};        ///< the viewpoint last sent to the sensors, m
+  std::unique_ptr<render::Renderer> renderer;  ///< the world view's renderer
+  std::unique_ptr<WorldTexture> world_texture; ///< where the world view draws
+  WorldKey world_key;                          ///< what the world view's picture shows
+  render::DrawStats world_stats;               ///< what drawing it took
+
+ private:
+  void checkReload();
+  std::unique_ptr<Document> doc_;
+  std::unique_ptr<NetViewState> net_view_;
+  RunControl run_;
+  core::Diagnostics run_diags_;
+  Splitters splitters_;
+  nlohmann::json report_;
+  std::uint64_t frames_ = 0;  // frames drawn
+};
+
+/// Loads DejaVu Sans (regular and bold) into ImGui's font atlas; the defaults when missing.
+Fonts loadFonts();
+
+}  // namespace gdpn::ide

@@ -1,0 +1,34 @@
+// Key names for keyboard sensors.
+
+#include "keys.h"
+
+#include <GLFW/glfw3.h>
+
+namespace gdpn::ide {
+
+const std::vector<std::pair<int, std::string>>& sensorKeys() {
+  static const auto keys = [] {
+    std::vector<std::pair<int, std::string>> k;
+    for (int c = GLFW_KEY_A; c <= GLFW_KEY_Z; ++c) k.emplace_back(c, std::string(1, static_cast<char>('a' + c - GLFW_KEY_A)));
+    for (int c = GLFW_KEY_0; c <= GLFW_KEY_9; ++c) k.emplace_back(c, std::string(1, static_cast<char>('0' + c - GLFW_KEY_0)));
+    k.emplace_back(GLFW_KEY_SPACE, "space");
+    k.emplace_back(GLFW_KEY_ENTER, "enter");
+    k.emplace_back(GLFW_KEY_ESCAPE, "escape");
+    k.emplace_back(GLFW_KEY_TAB, "tab");
+    k.emplace_back(GLFW_KEY_LEFT, "left");
+    k.emplace_back(GLFW_KEY_RIGHT, "right");
+    k.emplace_back(GLFW_KEY_UP, "up");
+    k.emplace_back(GLFW_KEY_DOWN, "down");
+    return k;
+  }();
+  return keys;
+}
+
+int keyCode(std::string_view name) {
+  for (const auto& [code, n] : sensorKeys()) {
+    if (n == name) return code;
+  }
+  return -1;
+}
+
+}  // namespace gdpn::ide

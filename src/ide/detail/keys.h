@@ -1,0 +1,17 @@
+#pragma once
+// The keys the world view passes to keyboard sensors: their GLFW codes (the index into
+// ImGui's io.KeysDown in 1.86) and the names sensors hear ("a", "7", "space", "left").
+
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace gdpn::ide {
+
+/// Every key the sensors hear: GLFW key code and name.
+const std::vector<std::pair<int, std::string>>& sensorKeys();
+/// The GLFW code of the key called `name`, or -1.
+int keyCode(std::string_view name);
+
+}  // namespace gdpn::ide

@@ -1,0 +1,145 @@
+// The headless IDE: the same frames on an EGL surfaceless context with no window, driven by
+// replayed actions; synthetic mouse and keys go through ImGui's input like a user's.
+
+#include "detail/platforms.h"
+
+#include <epoxy/gl.h>
+#include <imgui.h>
+#include <imgui_impl_opengl3.h>
+
+#include <iostream>
+
+#include "app.h"
+#include "detail/frame_io.h"
+#include "detail/keys.h"
+#include "gdpn/platform/headless_context.h"
+#include "gdpn/platform/target.h"
+
+namespace gdpn::ide {
+
+namespace {
+
+constexpr double kFrame = 1.0 / 60.0;  // seconds a headless frame stands for
+
+/// Frames with synthetic input.
+class Driver {
+ public:
+  Driver(App& app, int w, int h, platform::Target& target) : app_(app), w_(w), h_(h), target_(target) {}
+
+  void frame() {
+    auto& io = ImGui::GetIO();
+    io.DisplaySize = {static_cast<float>(w_), static_cast<float>(h_)};
+    io.DeltaTime = static_cast<float>(kFrame);
+    io.MousePos = mouse_;
+    for (int b = 0; b < 3; ++b) io.MouseDown[b] = down_[b];
+    ImGui_ImplOpenGL3_NewFrame();
+    target_.bind();
+    drawFrame(app_, w_, h_, kFrame);
+  }
+  void move(double x, double y) {
+    mouse_ = {static_cast<float>(x), static_cast<float>(y)};
+    frame();
+  }
+  void button(int b, bool down) {
+    down_[b] = down;
+    frame();
+  }
+  /// Presses (`down`) or releases key `code` over the world view.
+  void key(int code, bool down) {
+    // keys reach the world view while the mouse is over it
+    const auto& world = app_.report()["layout"]["world"];
+    if (world.is_array()) move(world[0].get<double>() + world[2].get<double>() / 2, world[1].get<double>() + world[3].get<double>() / 2);
+    ImGui::GetIO().KeysDown[code] = down;
+    frame();
+  }
+
+ private:
+  App& app_;
+  int w_, h_;
+  platform::Target& target_;
+  ImVec2 mouse_{-1, -1};
+  bool down_[3] = {false, false, false};
+};
+
+/// Performs `a`; false after printing a located error.
+bool perform(App& app, Driver& d, const Action& a, const IdeOptions& o, int w, int h) {
+  std::string error;
+  switch (a.kind) {
+    case ActionKind::Key: {
+      const int code = keyCode(a.text);
+      if (code < 0) error = "unknown key '" + a.text + "' (a-z, 0-9, space, enter, escape, tab, left, right, up, down)";
+      else if (a.field == "hold") d.key(code, true);
+      else if (a.field == "release") d.key(code, false);
+      else {
+        d.key(code, true);
+        d.key(code, false);
+      }
+      break;
+    }
+    case ActionKind::Click:
+      d.move(a.x, a.y);
+      d.button(0, true);
+      d.button(0, false);
+      break;
+    case ActionKind::Drag: {
+      d.move(a.x, a.y);
+      d.button(a.button, true);
+      constexpr int kSteps = 8;
+      for (int i = 1; i <= kSteps; ++i) d.move(a.x + (a.x2 - a.x) * i / kSteps, a.y + (a.y2 - a.y) * i / kSteps);
+      d.button(a.button, false);
+      break;
+    }
+    case ActionKind::Frames:
+      for (int i = 0; i < static_cast<int>(a.number); ++i) d.frame();
+      break;
+    case ActionKind::Screenshot:
+      d.frame();
+      if (!writeOutputs(app, w, h, a.text, "")) return false;
+      break;
+    default:
+      if (!app.perform(a, error)) break;
+      d.frame();
+      break;
+  }
+  (void)o;
+  if (!error.empty()) {
+    std::cerr << a.loc.str() << ": error: " << error << "\n";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int runHeadless(const IdeOptions& o, std::unique_ptr<Document> doc, const std::vector<Action>& actions) {
+  std::string why;
+  auto context = platform::createHeadlessContext(why);
+  if (!context) {
+    std::cerr << "gdpn ide: error: no headless OpenGL context: " << why << "\n";
+    return 1;
+  }
+  platform::Target target(o.width, o.height, 1);
+  App app(std::move(doc));
+  setUpImGui(app);
+  loadSettings(app);
+  Driver d(app, o.width, o.height, target);
+  // two frames so that every view has its size
+  d.frame();
+  d.frame();
+  int code = 0;
+  for (const auto& a : actions) {
+    if (!perform(app, d, a, o, o.width, o.height)) {
+      code = 1;
+      break;
+    }
+  }
+  if (code == 0) {
+    d.frame();
+    if (!writeOutputs(app, o.width, o.height, o.screenshot, o.report)) code = 1;
+  }
+  saveSettings(app);
+  tearDownImGui();
+  return code;
+}
+
+}  // namespace gdpn::ide

@@ -1,0 +1,190 @@
+// Reading replay files: a YAML list of one-key maps, each an action, located for messages.
+
+#include "gdpn/ide/replay.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace gdpn::ide {
+
+namespace {
+
+core::SourceLoc locOf(const YAML::Node& node, const std::string& file) {
+  const auto m = node.Mark();
+  return {file, m.line + 1, m.column + 1};
+}
+
+/// Reads one action; false after an error.
+class ActionReader {
+ public:
+  ActionReader(const std::string& file, core::Diagnostics& diags) : file_(file), diags_(diags) {}
+
+  bool read(const YAML::Node& item, Action& a) {
+    if (!item.IsMap() || item.size() != 1) return fail(item, "an action is a map with one key, such as 'press: step'");
+    // copies: the iterator's pair dies with it
+    const auto entry = *item.begin();
+    const YAML::Node name = entry.first;
+    const YAML::Node v = entry.second;
+    const auto key = name.as<std::string>();
+    a.loc = locOf(name, file_);
+    if (key == "select") return word(v, a, ActionKind::Select);
+    if (key == "fire") return word(v, a, ActionKind::Fire);
+    if (key == "key") return word(v, a, ActionKind::Key);
+    if (key == "hold" || key == "release") {
+      a.field = key;
+      return word(v, a, ActionKind::Key);
+    }
+    if (key == "view") return word(v, a, ActionKind::View);
+    if (key == "screenshot") return word(v, a, ActionKind::Screenshot);
+    if (key == "press") {
+      if (!word(v, a, ActionKind::Press)) return false;
+      for (const char* c : {"run", "faster", "fastest", "pause", "step", "reset", "plant-only", "undo", "redo", "save"}) {
+        if (a.text == c) return true;
+      }
+      return fail(v, "unknown control '" + a.text +
+                         "' (run, faster, fastest, pause, step, reset, plant-only, undo, redo, save)");
+    }
+    if (key == "run") return number(v, a, ActionKind::RunFor, false);
+    if (key == "steps") return number(v, a, ActionKind::Steps, true);
+    if (key == "frames") return number(v, a, ActionKind::Frames, true);
+    if (key == "click") {
+      a.kind = ActionKind::Click;
+      return point(v, a.x, a.y);
+    }
+    if (key == "drag") return drag(v, a);
+    if (key == "set") return set(v, a);
+    if (key == "break") return breakpoint(v, a);
+    return fail(name, "unknown action '" + key +
+                                         "' (select, press, fire, run, steps, frames, key, hold, release, click, drag, set, view, "
+                                         "screenshot)");
+  }
+
+ private:
+  bool fail(const YAML::Node& at, const std::string& message) {
+    diags_.error(locOf(at, file_), message);
+    return false;
+  }
+  bool word(const YAML::Node& v, Action& a, ActionKind kind) {
+    a.kind = kind;
+    if (!v.IsScalar() || v.Scalar().empty()) return fail(v, "expects a name");
+    a.text = v.Scalar();
+    return true;
+  }
+  bool number(const YAML::Node& v, Action& a, ActionKind kind, bool whole) {
+    a.kind = kind;
+    double x = 0;
+    if (!v.IsScalar() || !YAML::convert<double>::decode(v, x) || !(x >= 0 && x <= 1e7)) {
+      return fail(v, whole ? "expects a whole number from 0 to 10^7" : "expects seconds from 0 to 10^7");
+    }
+    if (whole && x != static_cast<double>(static_cast<long long>(x))) return fail(v, "expects a whole number");
+    a.number = x;
+    return true;
+  }
+  bool point(const YAML::Node& v, double& x, double& y) {
+    if (!v.IsSequence() || v.size() != 2 || !YAML::convert<double>::decode(v[0], x) ||
+        !YAML::convert<double>::decode(v[1], y)) {
+      return fail(v, "expects a point [X, Y] in window pixels");
+    }
+    return true;
+  }
+  bool drag(const YAML::Node& v, Action& a) {
+    a.kind = ActionKind::Drag;
+    if (!v.IsMap() || !v["from"] || !v["to"]) return fail(v, "expects {from: [X, Y], to: [X, Y]}");
+    if (!point(v["from"], a.x, a.y) || !point(v["to"], a.x2, a.y2)) return false;
+    if (const auto b = v["button"]) {
+      const auto name = b.IsScalar() ? b.Scalar() : std::string();
+      if (name == "left") a.button = 0;
+      else if (name == "right") a.button = 1;
+      else if (name == "middle") a.button = 2;
+      else return fail(b, "expects a button: left, right or middle");
+    }
+    return true;
+  }
+  bool set(const YAML::Node& v, Action& a) {
+    a.kind = ActionKind::Set;
+    if (!v.IsMap() || !v["node"] || !v["field"] || !v["value"]) {
+      return fail(v, "expects {node: PATH, field: NAME, value: VALUE}");
+    }
+    if (!v["node"].IsScalar() || !v["field"].IsScalar()) return fail(v, "node and field are names");
+    a.text = v["node"].Scalar();
+    a.field = v["field"].Scalar();
+    const auto value = v["value"];
+    if (value.IsScalar()) {
+      a.value = {value.Scalar()};
+    } else if (value.IsSequence()) {
+      a.list = true;
+      for (const auto& x : value) {
+        if (!x.IsScalar()) return fail(x, "a value's list holds numbers");
+        a.value.push_back(x.Scalar());
+      }
+    } else {
+      return fail(value, "a value is a number, a word or a list of numbers");
+    }
+    return true;
+  }
+  bool breakpoint(const YAML::Node& v, Action& a) {
+    a.kind = ActionKind::Break;
+    const char* kUsage = "expects {starts: T}, {completes: T}, {place: P, at_least: N} or {when: PYTHON}";
+    if (!v.IsMap()) return fail(v, kUsage);
+    bool counted = false;
+    for (const auto& kv : v) {
+      const auto key = kv.first.Scalar();
+      if (key == "at_least") {
+        counted = YAML::convert<double>::decode(kv.second, a.number);
+      } else if ((key == "starts" || key == "completes" || key == "place" || key == "when") && kv.second.IsScalar()) {
+        a.field = key;
+        a.text = kv.second.Scalar();
+      } else {
+        return fail(kv.first, kUsage);
+      }
+    }
+    if (a.field.empty()) return fail(v, kUsage);
+    if (a.field == "place" && !counted) return fail(v, "a place's breakpoint expects at_least: N tokens");
+    return true;
+  }
+  const std::string& file_;
+  core::Diagnostics& diags_;
+};
+
+}  // namespace
+
+std::optional<std::vector<Action>> parseReplay(const std::string& text, const std::string& file,
+                                               core::Diagnostics& diags) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    diags.error({file, e.mark.line + 1, e.mark.column + 1}, e.msg);
+    return std::nullopt;
+  }
+  std::vector<Action> actions;
+  if (root.IsNull()) return actions;
+  if (!root.IsSequence()) {
+    diags.error(locOf(root, file), "a replay file is a list of actions");
+    return std::nullopt;
+  }
+  ActionReader reader(file, diags);
+  bool ok = true;
+  for (const auto& item : root) {
+    Action a;
+    if (reader.read(item, a)) actions.push_back(std::move(a));
+    else ok = false;
+  }
+  if (!ok) return std::nullopt;
+  return actions;
+}
+
+std::optional<std::vector<Action>> loadReplay(const std::string& path, core::Diagnostics& diags) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    diags.error({path, 0, 0}, "cannot read the replay file");
+    return std::nullopt;
+  }
+  std::stringstream text;
+  text << in.rdbuf();
+  return parseReplay(text.str(), path, diags);
+}
+
+}  // namespace gdpn::ide

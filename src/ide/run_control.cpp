@@ -1,0 +1,170 @@
+// The run controls over a Session made from the document's snapshot.
+
+#include "gdpn/ide/run_control.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "gdpn/ide/document.h"
+
+namespace gdpn::ide {
+
+const char* runSpeedName(RunSpeed speed) {
+  switch (speed) {
+    case RunSpeed::RealTime: return "real time";
+    case RunSpeed::Faster: return "faster";
+    case RunSpeed::Fastest: return "as fast as possible";
+  }
+  return "real time";
+}
+
+const char* runModeName(RunMode mode) {
+  switch (mode) {
+    case RunMode::Edit: return "edit";
+    case RunMode::Running: return "running";
+    case RunMode::Paused: return "paused";
+  }
+  return "edit";
+}
+
+bool RunControl::open(Document& doc, core::Diagnostics& diags) {
+  doc_ = &doc;
+  revision_ = doc.revision();
+  mode_ = RunMode::Edit;
+  session_ = session::Session::create(doc.snapshot(), diags);
+  return session_ != nullptr;
+}
+
+void RunControl::run(RunSpeed speed) {
+  if (!session_) return;
+  speed_ = speed;
+  mode_ = RunMode::Running;
+  owed_ = 0.0;
+  message_.clear();
+}
+
+void RunControl::pause() {
+  if (mode_ == RunMode::Running) mode_ = RunMode::Paused;
+  rtf_ = 0.0;
+}
+
+void RunControl::takeSteps(std::int64_t n) {
+  if (!session_ || n <= 0) return;
+  if (plant_only_) {
+    for (std::int64_t i = 0; i < n; ++i) session_->stepPlant();
+    return;
+  }
+  const auto outcome = session_->run(model::RunLimits{.until = {}, .steps = steps() + n});
+  if (outcome.reason != model::StopReason::Until) {
+    mode_ = RunMode::Paused;
+    message_ = std::string("stopped: ") + model::stopReasonName(outcome.reason);
+    if (outcome.reason == model::StopReason::Breakpoint && session_->hit()) {
+      for (const auto& [id, bp] : session_->breakpoints()) {
+        if (id == *session_->hit()) message_ = "stopped at breakpoint: " + bp.describe();
+      }
+    } else if (!outcome.message.empty()) {
+      message_ += ": " + outcome.message;
+    }
+  }
+}
+
+void RunControl::step() { runSteps(1); }
+
+void RunControl::runSteps(std::int64_t n) {
+  if (!session_) return;
+  mode_ = RunMode::Paused;
+  message_.clear();
+  takeSteps(n);
+}
+
+void RunControl::runFor(double seconds) {
+  if (!session_) return;
+  const double dt = session_->model().settings.dt;
+  runSteps(static_cast<std::int64_t>(std::llround(seconds / dt)));
+}
+
+std::string RunControl::fire(const std::string& name) {
+  if (!session_) return message_ = "the model does not compile";
+  auto why = session_->fire(name);
+  message_ = why.empty() ? "fired " + name : "cannot fire " + name + ": " + why;
+  if (mode_ == RunMode::Edit) mode_ = RunMode::Paused;
+  return why;
+}
+
+bool RunControl::reset(core::Diagnostics& diags) {
+  if (doc_ == nullptr) return false;
+  mode_ = RunMode::Edit;
+  rtf_ = 0.0;
+  owed_ = 0.0;
+  message_.clear();
+  if (!session_) return open(*doc_, diags);
+  // the document changed since the run was made: the run takes the edited model
+  if (doc_->revision() != revision_) {
+    if (!session_->rebuild(doc_->snapshot(), diags)) return false;
+    revision_ = doc_->revision();
+    return true;
+  }
+  return session_->reset(diags);
+}
+
+void RunControl::advance(double wall_seconds) {
+  if (!session_ || mode_ != RunMode::Running) return;
+  const double dt = session_->model().settings.dt;
+  const double before = time();
+  if (speed_ == RunSpeed::Fastest) {
+    // as many steps as fit in about 20 ms of this frame
+    const auto start = std::chrono::steady_clock::now();
+    while (mode_ == RunMode::Running &&
+           std::chrono::steady_clock::now() - start < std::chrono::milliseconds(20)) {
+      takeSteps(10);
+    }
+  } else {
+    // real time or faster: the steps the clock owes, at most a quarter of a second's worth a frame
+    const double factor = speed_ == RunSpeed::Faster ? kFasterFactor : 1.0;
+    owed_ = std::min(owed_ + wall_seconds * factor, 0.25 * factor);
+    const auto n = static_cast<std::int64_t>(std::floor(owed_ / dt + 1e-9));
+    owed_ -= static_cast<double>(n) * dt;
+    takeSteps(n);
+  }
+  if (wall_seconds > 0) rtf_ = 0.8 * rtf_ + 0.2 * ((time() - before) / wall_seconds);
+}
+
+std::string RunControl::addBreakpoint(session::Breakpoint breakpoint) {
+  if (!session_) return "the model does not compile";
+  std::string why;
+  if (!session_->addBreakpoint(std::move(breakpoint), why)) return why;
+  return {};
+}
+
+bool RunControl::removeBreakpoint(const std::string& description) {
+  if (!session_) return false;
+  for (const auto& [id, bp] : session_->breakpoints()) {
+    if (bp.describe() == description) return session_->removeBreakpoint(id);
+  }
+  return false;
+}
+
+std::vector<std::string> RunControl::breakpoints() const {
+  std::vector<std::string> out;
+  if (!session_) return out;
+  for (const auto& [id, bp] : session_->breakpoints()) out.push_back(bp.describe());
+  return out;
+}
+
+void RunControl::push(sensors::InputEvent event) {
+  if (session_) session_->push(std::move(event));
+}
+
+double RunControl::time() const { return session_ ? session_->simulation().kernel().now() : 0.0; }
+
+std::int64_t RunControl::steps() const { return session_ ? session_->simulation().kernel().steps() : 0; }
+
+std::vector<std::string> RunControl::transitions() const {
+  std::vector<std::string> names;
+  if (!session_) return names;
+  for (const auto& t : session_->simulation().net().transitions()) names.push_back(t.name);
+  return names;
+}
+
+}  // namespace gdpn::ide

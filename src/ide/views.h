@@ -1,0 +1,35 @@
+#pragma once
+// The views, each a function of the App (the document and the run) that draws into the
+// rectangle it is given, pushes commands, and writes what it showed into `report`.
+
+#include <nlohmann/json.hpp>
+
+#include "app.h"
+#include "gdpn/ide/layout.h"
+
+namespace gdpn::ide {
+
+/// Run, Pause, Step, Run N, Fire, Plant only, Reset, Undo, Redo.
+void drawToolbar(App& app, const Rect& at, nlohmann::json& report);
+/// The scene tree (node tokens and sensors in bold, colours by category) and the net's
+/// places and transitions.
+void drawTreeView(App& app, const Rect& at, nlohmann::json& report);
+/// The plant in 3D: orbit, pan, zoom, pick, standard views, the scene's cameras, live input.
+void drawWorldView(App& app, const Rect& at, nlohmann::json& report);
+/// The net of the page or instance chosen, with the run's marking: zoom, pan, fit, pick, go
+/// into an instance.
+void drawNetView(App& app, const Rect& at, nlohmann::json& report);
+/// The selected node's fields, edited through commands; a place's or transition's state.
+void drawInspector(App& app, const Rect& at, nlohmann::json& report);
+/// Every error and warning at file:line:col; a click selects the construct.
+void drawDiagnostics(App& app, const Rect& at, nlohmann::json& report);
+/// Model time, steps, real-time factor, frames per second, the message.
+void drawStatusBar(App& app, const Rect& at, nlohmann::json& report);
+
+/// Begins a borderless child window filling `at` (in window pixels) with a heading; the view
+/// draws inside and then calls endPanel().
+void beginPanel(const char* id, const Rect& at, const char* heading);
+/// Ends a panel begun by beginPanel().
+void endPanel();
+
+}  // namespace gdpn::ide

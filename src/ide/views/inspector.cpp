@@ -1,0 +1,247 @@
+// The inspector: the selected node's fields from its type's one description (units, ranges,
+// documentation), each edit a command (a drag is one step); a place's or transition's state.
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "../views.h"
+#include "gdpn/core/text.h"
+#include "gdpn/ide/set_field.h"
+#include "gdpn/scene/actions.h"
+
+namespace gdpn::ide {
+
+namespace {
+
+using scene::FieldKind;
+using scene::FieldValue;
+
+std::string rangeText(const scene::FieldDesc& d) {
+  if (d.kind == FieldKind::Enum) {
+    std::string s;
+    for (const auto& c : d.choices) s += (s.empty() ? "" : " | ") + c;
+    return s;
+  }
+  if (d.min <= -1e299 && d.max >= 1e299) return "";
+  const auto bound = [](double x) { return std::abs(x) >= 1e299 ? std::string(x < 0 ? "-inf" : "inf") : core::formatDouble(x); };
+  return "[" + bound(d.min) + ", " + bound(d.max) + "]";
+}
+
+/// One field's widget; true with `out` when the user changed the value this frame.
+bool fieldWidget(const scene::FieldDesc& d, const FieldValue& v, FieldValue& out) {
+  const double lo = d.min <= -1e299 ? -1e9 : d.min;
+  const double hi = d.max >= 1e299 ? 1e9 : d.max;
+  const float speed = static_cast<float>(d.max < 1e299 && d.min > -1e299 ? (hi - lo) / 300.0 : 0.01);
+  switch (d.kind) {
+    case FieldKind::Bool: {
+      bool b = std::get<bool>(v);
+      if (!ImGui::Checkbox("##v", &b)) return false;
+      out = b;
+      return true;
+    }
+    case FieldKind::Int: {
+      auto i = std::get<std::int64_t>(v);
+      const auto ilo = static_cast<std::int64_t>(std::max(lo, -1e15)), ihi = static_cast<std::int64_t>(std::min(hi, 1e15));
+      if (!ImGui::DragScalar("##v", ImGuiDataType_S64, &i, 0.2F, &ilo, &ihi)) return false;
+      out = i;
+      return true;
+    }
+    case FieldKind::Float: {
+      double x = std::get<double>(v);
+      if (!ImGui::DragScalar("##v", ImGuiDataType_Double, &x, speed, &lo, &hi, "%.4g")) return false;
+      out = x;
+      return true;
+    }
+    case FieldKind::Color: {
+      const auto c = std::get<std::array<double, 3>>(v);
+      float f[3] = {static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2])};
+      if (!ImGui::ColorEdit3("##v", f, ImGuiColorEditFlags_Float)) return false;
+      out = std::array<double, 3>{f[0], f[1], f[2]};
+      return true;
+    }
+    case FieldKind::Vec3: {
+      auto a = std::get<std::array<double, 3>>(v);
+      if (!ImGui::DragScalarN("##v", ImGuiDataType_Double, a.data(), 3, speed, &lo, &hi, "%.4g")) return false;
+      out = a;
+      return true;
+    }
+    case FieldKind::Rotation: {
+      auto a = std::get<std::array<double, 4>>(v);
+      if (!ImGui::DragScalarN("##v", ImGuiDataType_Double, a.data(), 4, 0.01F, nullptr, nullptr, "%.4g")) return false;
+      out = a;
+      return true;
+    }
+    case FieldKind::Enum: {
+      const auto& cur = std::get<std::string>(v);
+      bool changed = false;
+      if (ImGui::BeginCombo("##v", cur.c_str())) {
+        for (const auto& c : d.choices) {
+          if (ImGui::Selectable(c.c_str(), c == cur) && c != cur) {
+            out = c;
+            changed = true;
+          }
+        }
+        ImGui::EndCombo();
+      }
+      return changed;
+    }
+    case FieldKind::String:
+    case FieldKind::File: {
+      auto s = std::get<std::string>(v);
+      if (!ImGui::InputText("##v", &s, ImGuiInputTextFlags_EnterReturnsTrue)) return false;
+      out = s;
+      return true;
+    }
+    case FieldKind::FloatList: {
+      const auto& xs = std::get<std::vector<double>>(v);
+      ImGui::TextDisabled("%zu numbers", xs.size());
+      return false;
+    }
+  }
+  return false;
+}
+
+void nodeInspector(App& app, const std::string& path, nlohmann::json& report) {
+  auto* s = app.document().scene();
+  auto* node = s != nullptr ? s->find(path) : nullptr;
+  if (node == nullptr) {
+    ImGui::TextDisabled("%s is not in the model (made by the run)", path.c_str());
+    report["node"] = path;
+    return;
+  }
+  ImGui::Text("%s  %s", node->type().name.c_str(), path.c_str());
+  ImGui::SameLine();
+  ImGui::TextDisabled("%s", node->type().doc.c_str());
+  if (!app.inspector_error.empty()) ImGui::TextColored({1.0F, 0.4F, 0.35F, 1.0F}, "%s", app.inspector_error.c_str());
+  if (app.run().mode() != RunMode::Edit) {
+    ImGui::TextDisabled("The model as edited: the run takes edits at Reset.");
+    // where a moving body is in the run now (world frame)
+    auto* plant = app.run().session() != nullptr ? app.run().session()->simulation().plant() : nullptr;
+    const auto* live = plant != nullptr ? plant->find(path) : nullptr;
+    const auto box = live != nullptr && live->dynamic_pose ? scene::boundingBox(*live) : core::Aabb{};
+    if (!box.empty()) {
+      const auto p = (box.lo + box.hi) * 0.5;
+      ImGui::Text("In the run its shapes' centre is at (%.3f, %.3f, %.3f) m.", p.x, p.y, p.z);
+      report["live_position"] = {p.x, p.y, p.z};
+    }
+  }
+  report["node"] = path;
+  report["type"] = node->type().name;
+  auto& fields = report["fields"] = nlohmann::json::array();
+  const auto& types = node->type().fields;
+  if (types.empty()) {
+    ImGui::TextDisabled("(no fields)");
+    return;
+  }
+  if (!ImGui::BeginTable("##fields", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
+                                            ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchProp)) {
+    return;
+  }
+  ImGui::TableSetupScrollFreeze(0, 1);
+  ImGui::TableSetupColumn("field", ImGuiTableColumnFlags_WidthFixed, 110);
+  ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch, 2.0F);
+  ImGui::TableSetupColumn("unit", ImGuiTableColumnFlags_WidthFixed, 80);
+  ImGui::TableSetupColumn("range", ImGuiTableColumnFlags_WidthStretch, 1.0F);
+  ImGui::TableHeadersRow();
+  for (std::size_t i = 0; i < types.size(); ++i) {
+    const auto& d = *types[i];
+    ImGui::PushID(static_cast<int>(i));
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted(d.name.c_str());
+    if (ImGui::IsItemHovered() && !d.doc.empty()) ImGui::SetTooltip("%s", d.doc.c_str());
+    ImGui::TableNextColumn();
+    ImGui::SetNextItemWidth(-1);
+    FieldValue next;
+    const bool changed = fieldWidget(d, node->value(i), next);
+    // a drag of one widget is one step: a new drag id when it becomes active
+    if (ImGui::IsItemActivated()) ++app.drag_id;
+    if (changed) {
+      auto why = app.document().execute(std::make_unique<SetFieldCommand>(path, d.name, std::move(next), app.drag_id));
+      app.inspector_error = why;
+    }
+    if (ImGui::IsItemDeactivated()) app.document().history().seal();
+    ImGui::TableNextColumn();
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextDisabled("%s", d.unit.c_str());
+    ImGui::TableNextColumn();
+    const auto range = rangeText(d);
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextDisabled("%s", range.c_str());
+    if (ImGui::IsItemHovered() && !range.empty()) ImGui::SetTooltip("%s", range.c_str());
+    ImGui::PopID();
+    fields.push_back({{"name", d.name}, {"unit", d.unit}, {"range", range}, {"kind", scene::fieldKindName(d.kind)}});
+  }
+  ImGui::EndTable();
+}
+
+/// A checkbox that adds or removes breakpoint `bp` of the run.
+void breakpointBox(App& app, const char* label, session::Breakpoint bp, nlohmann::json& report) {
+  const auto description = bp.describe();
+  const auto list = app.run().breakpoints();
+  bool on = std::find(list.begin(), list.end(), description) != list.end();
+  if (ImGui::Checkbox(label, &on)) {
+    if (on) app.message = app.run().addBreakpoint(std::move(bp));
+    else (void)app.run().removeBreakpoint(description);
+  }
+  if (on) report["breakpoints"].push_back(description);
+}
+
+void netInspector(App& app, const Selection& sel, nlohmann::json& report) {
+  auto* session = app.run().session();
+  report["name"] = sel.name;
+  ImGui::Text("%s  %s", selectionKindName(sel.kind), sel.name.c_str());
+  if (session == nullptr) return;
+  const auto& sim = session->simulation();
+  if (sel.kind == SelectionKind::Place) {
+    const auto p = sim.net().findPlace(sel.name);
+    if (p < 0) return;
+    const auto tokens = sim.kernel().placeTokens(static_cast<net::PlaceId>(p));
+    ImGui::Text("tokens: %lld", static_cast<long long>(tokens));
+    const auto& place = sim.net().places()[static_cast<std::size_t>(p)];
+    ImGui::TextDisabled("declared at %s", place.loc.str().c_str());
+    report["tokens"] = tokens;
+    ImGui::SetNextItemWidth(90);
+    ImGui::InputInt("##at_least", &app.break_tokens);
+    ImGui::SameLine();
+    breakpointBox(app, "break when it holds at least this many tokens",
+                  session::Breakpoint::marking(sel.name, session::Compare::GreaterEqual, app.break_tokens), report);
+  } else if (sel.kind == SelectionKind::Transition) {
+    const auto t = sim.net().findTransition(sel.name);
+    if (t < 0) return;
+    const auto id = static_cast<net::TransitionId>(t);
+    const auto& tr = sim.net().transitions()[static_cast<std::size_t>(t)];
+    const char* state = sim.kernel().occurring(id) ? "occurring" : sim.kernel().enabled(id) ? "enabled" : "not enabled";
+    ImGui::Text("%s", state);
+    ImGui::Text("priority %lld, probability %g", static_cast<long long>(tr.priority), tr.probability);
+    ImGui::TextDisabled("declared at %s", tr.loc.str().c_str());
+    report["state"] = state;
+    breakpointBox(app, "break when it starts", session::Breakpoint::starts(sel.name), report);
+    ImGui::SameLine();
+    breakpointBox(app, "break when it completes", session::Breakpoint::completes(sel.name), report);
+  }
+}
+
+}  // namespace
+
+void drawInspector(App& app, const Rect& at, nlohmann::json& report) {
+  beginPanel("##inspector", at, "Inspector");
+  const auto sel = app.document().selection();
+  report = {{"kind", selectionKindName(sel.kind)}, {"error", app.inspector_error}};
+  switch (sel.kind) {
+    case SelectionKind::None: ImGui::TextDisabled("Select a node in the tree or the world view."); break;
+    case SelectionKind::Node: nodeInspector(app, sel.name, report); break;
+    case SelectionKind::Place:
+    case SelectionKind::Transition:
+    case SelectionKind::Instance: netInspector(app, sel, report); break;
+  }
+  endPanel();
+}
+
+}  // namespace gdpn::ide

@@ -1,0 +1,211 @@
+// The net view: the page (or instance) chosen, drawn by the diagram module's painter with the
+// run's marking; zoom at the cursor, pan by dragging, fit; a click selects a construct, a
+// double click on an instance goes into it.
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "../views.h"
+#include "gdpn/diagram/net_state.h"
+#include "imgui_canvas.h"
+#include "net_view_state.h"
+
+namespace gdpn::ide {
+namespace {
+
+/// Lays out the page the view shows again when the page or the document changed.
+void ensureLayout(App& app, NetViewState& s) {
+  const auto revision = app.document().revision();
+  if (s.laid_out_path == s.path && s.laid_out_revision == revision) return;
+  core::Diagnostics diags;
+  s.view = diagram::findView(app.document().model().net, s.path, diags);
+  s.layout = s.view.page ? diagram::layoutPage(*s.view.page, diags) : diagram::NetLayout{};
+  s.index = std::make_unique<diagram::SpatialIndex>(s.layout);
+  s.error = diags.hasErrors() ? diags.str() : "";
+  if (s.laid_out_path != s.path) s.fit = true;
+  s.laid_out_path = s.path;
+  s.laid_out_revision = revision;
+}
+
+/// The qualified name of a laid-out construct in the frozen net ("" for arcs).
+std::string qualified(const NetViewState& s, diagram::ItemRef item) {
+  const std::string& prefix = s.view.prefix.empty() ? s.layout.page : s.view.prefix;
+  switch (item.kind) {
+    case diagram::ItemKind::Place: return prefix + "/" + s.layout.places[item.index].name;
+    case diagram::ItemKind::Transition: return prefix + "/" + s.layout.transitions[item.index].name;
+    case diagram::ItemKind::Instance: return prefix + "/" + s.layout.instances[item.index].name;
+    case diagram::ItemKind::Arc: return {};
+  }
+  return {};
+}
+
+/// The selection a click on `item` makes.
+Selection selectionOf(const NetViewState& s, diagram::ItemRef item) {
+  switch (item.kind) {
+    case diagram::ItemKind::Place: return {SelectionKind::Place, qualified(s, item)};
+    case diagram::ItemKind::Transition: return {SelectionKind::Transition, qualified(s, item)};
+    case diagram::ItemKind::Instance: return {SelectionKind::Instance, qualified(s, item)};
+    case diagram::ItemKind::Arc: return {};
+  }
+  return {};
+}
+
+/// The laid-out item the selection names on this page, if it is here.
+std::optional<diagram::ItemRef> selectedItem(const NetViewState& s, const Selection& sel) {
+  auto find = [&](const auto& items, diagram::ItemKind kind) -> std::optional<diagram::ItemRef> {
+    for (std::uint32_t i = 0; i < items.size(); ++i) {
+      if (qualified(s, {kind, i}) == sel.name) return diagram::ItemRef{kind, i};
+    }
+    return std::nullopt;
+  };
+  switch (sel.kind) {
+    case SelectionKind::Place: return find(s.layout.places, diagram::ItemKind::Place);
+    case SelectionKind::Transition: return find(s.layout.transitions, diagram::ItemKind::Transition);
+    case SelectionKind::Instance: return find(s.layout.instances, diagram::ItemKind::Instance);
+    default: return std::nullopt;
+  }
+}
+
+const char* activityName(diagram::Activity a) {
+  switch (a) {
+    case diagram::Activity::Idle: return "idle";
+    case diagram::Activity::Enabled: return "enabled";
+    case diagram::Activity::Occurring: return "occurring";
+  }
+  return "?";
+}
+
+/// The page choice: the model's pages, then its page types; "Up" leaves an instance.
+void drawPageBar(App& app, NetViewState& s) {
+  const auto& net = app.document().model().net;
+  const std::string shown = s.path.empty() ? (net.pages.empty() ? std::string() : net.pages.front().name) : s.path;
+  ImGui::SetNextItemWidth(std::min(260.0f, ImGui::GetContentRegionAvail().x * 0.5f));
+  if (ImGui::BeginCombo("##page", shown.c_str())) {
+    for (const auto& page : net.pages) {
+      if (ImGui::Selectable(page.name.c_str(), page.name == shown)) s.path = page.name;
+    }
+    if (!net.page_types.empty()) ImGui::Separator();
+    for (const auto& type : net.page_types) {
+      const std::string label = type.name + "  (page type)";
+      if (ImGui::Selectable(label.c_str(), type.name == shown)) s.path = type.name;
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::SameLine();
+  const auto slash = shown.rfind('/');
+  ImGui::BeginDisabled(slash == std::string::npos);
+  if (ImGui::Button("Up")) s.path = shown.substr(0, slash);
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  if (ImGui::Button("Fit")) s.fit = true;
+}
+
+}  // namespace
+
+void drawNetView(App& app, const Rect& at, nlohmann::json& report) {
+  beginPanel("##net", at, "Net view");
+  NetViewState& s = app.netView();
+  drawPageBar(app, s);
+  ensureLayout(app, s);
+  report = {{"path", s.path}, {"page", s.layout.page}};
+  if (!s.error.empty()) {
+    ImGui::TextWrapped("%s", s.error.c_str());
+    report["error"] = s.error;
+    endPanel();
+    return;
+  }
+
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  const int width = std::max(1, static_cast<int>(avail.x));
+  const int height = std::max(1, static_cast<int>(avail.y));
+  ImGui::InvisibleButton("##netcanvas", {static_cast<float>(width), static_cast<float>(height)},
+                         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle);
+  if (s.fit) {
+    s.viewport = diagram::fitViewport(s.layout, width, height);
+    s.fit = false;
+  }
+  const ImGuiIO& io = ImGui::GetIO();
+  const diagram::Point mouse{io.MousePos.x - origin.x, io.MousePos.y - origin.y};
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
+    s.viewport = s.viewport.zoomedAbout(mouse, std::pow(1.15, static_cast<double>(io.MouseWheel)));
+  }
+  if (ImGui::IsItemActive() && (ImGui::IsMouseDragging(ImGuiMouseButton_Left) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle))) {
+    s.viewport = s.viewport.panned({io.MouseDelta.x, io.MouseDelta.y});
+  }
+  const auto under = s.index->pick(s.viewport.toLayout(mouse), 4.0 / s.viewport.zoom);
+  if (ImGui::IsItemHovered() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+      ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f).x == 0.0f &&
+      ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f).y == 0.0f) {
+    // a click, not the end of a drag
+    if (under) app.document().select(selectionOf(s, *under));
+    else app.document().select({});
+    if (under && under->kind == diagram::ItemKind::Transition) app.fire_target = qualified(s, *under);
+  }
+  if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && under &&
+      under->kind == diagram::ItemKind::Instance) {
+    s.path = (s.path.empty() ? s.layout.page : s.path) + "/" + s.layout.instances[under->index].name;
+  }
+
+  // the run's marking, when there is a run of this model
+  std::optional<diagram::NetState> state;
+  if (auto* session = app.run().session()) {
+    auto& sim = session->simulation();
+    state = diagram::netStateOf(sim.kernel(), s.view, [&](net::NodeRef ref) { return sim.nodeName(ref); });
+  }
+  ImDrawList* list = ImGui::GetWindowDrawList();
+  list->PushClipRect(origin, {origin.x + static_cast<float>(width), origin.y + static_cast<float>(height)}, true);
+  ImGuiCanvas canvas(list, origin.x, origin.y, width, height, app.fonts.regular);
+  const std::size_t drawn = diagram::paintNet(s.layout, *s.index, state ? &*state : nullptr, s.viewport, canvas);
+  // the selection: a frame around it in the IDE's highlight colour
+  if (const auto sel = selectedItem(s, app.document().selection())) {
+    const diagram::Box& box = s.layout.boxOf(*sel);
+    const diagram::Point lo = s.viewport.toScreen(box.min), hi = s.viewport.toScreen(box.max);
+    list->AddRect({origin.x + static_cast<float>(lo.x) - 4, origin.y + static_cast<float>(lo.y) - 4},
+                  {origin.x + static_cast<float>(hi.x) + 4, origin.y + static_cast<float>(hi.y) + 4},
+                  IM_COL32(255, 170, 0, 255), 3.0f, 0, 2.0f);
+  }
+  list->PopClipRect();
+  if (under && ImGui::IsItemHovered() && under->kind != diagram::ItemKind::Arc) {
+    ImGui::SetTooltip("%s", qualified(s, *under).c_str());
+  }
+
+  report["drawn"] = drawn;
+  // where the constructs stand in the window (for replay files and tests), on small pages
+  if (s.layout.places.size() + s.layout.transitions.size() + s.layout.instances.size() <= 500) {
+    nlohmann::json at_px = nlohmann::json::object();
+    auto put = [&](diagram::ItemKind kind, std::size_t count) {
+      for (std::uint32_t i = 0; i < count; ++i) {
+        const diagram::Box& box = s.layout.boxOf({kind, i});
+        const diagram::Point p = s.viewport.toScreen((box.min + box.max) * 0.5);
+        at_px[qualified(s, {kind, i})] = {std::lround(static_cast<double>(origin.x) + p.x), std::lround(static_cast<double>(origin.y) + p.y)};
+      }
+    };
+    put(diagram::ItemKind::Place, s.layout.places.size());
+    put(diagram::ItemKind::Transition, s.layout.transitions.size());
+    put(diagram::ItemKind::Instance, s.layout.instances.size());
+    report["at"] = at_px;
+  }
+  report["zoom"] = s.viewport.zoom;
+  report["places"] = s.layout.places.size();
+  report["transitions"] = s.layout.transitions.size();
+  if (state) {
+    nlohmann::json activity = nlohmann::json::object();
+    for (std::uint32_t t = 0; t < s.layout.transitions.size() && t < state->transitions.size(); ++t) {
+      activity[qualified(s, {diagram::ItemKind::Transition, t})] = activityName(state->transitions[t]);
+    }
+    report["activity"] = activity;
+    nlohmann::json tokens = nlohmann::json::object();
+    for (std::uint32_t p = 0; p < s.layout.places.size() && p < state->places.size(); ++p) {
+      std::int64_t n = 0;
+      for (const auto& slot : state->places[p]) n += slot.kind == net::SlotKind::Sensor ? 0 : slot.count;
+      tokens[qualified(s, {diagram::ItemKind::Place, p})] = n;
+    }
+    report["tokens"] = tokens;
+  }
+  endPanel();
+}
+
+}  // namespace gdpn::ide

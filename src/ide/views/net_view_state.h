@@ -1,0 +1,28 @@
+#pragma once
+// What the net view keeps between frames: the page shown, its layout and index (made again
+// only when the page or the document changes), and the viewport. Private to the ide module.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "gdpn/diagram/layout.h"
+#include "gdpn/diagram/painter.h"
+#include "gdpn/diagram/spatial_index.h"
+
+namespace gdpn::ide {
+
+/// The net view's own state.
+struct NetViewState {
+  std::string path;                  ///< the page or instance shown (diagram::findView's path; "" the first page)
+  diagram::PageView view;            ///< what `path` named when laid out
+  diagram::NetLayout layout;         ///< the page laid out
+  std::unique_ptr<diagram::SpatialIndex> index;  ///< over `layout`
+  diagram::Viewport viewport;        ///< pan and zoom
+  bool fit = true;                   ///< fit the page into the view at the next frame
+  std::string error;                 ///< why the page cannot be shown ("" when it can)
+  std::string laid_out_path = "\x01";  ///< `path` when the layout was made
+  std::uint64_t laid_out_revision = ~std::uint64_t{0};  ///< the document's revision then
+};
+
+}  // namespace gdpn::ide

@@ -1,0 +1,34 @@
+// The status bar: model time, steps, real-time factor, frames per second, the last message.
+
+#include <imgui.h>
+
+#include "../views.h"
+
+namespace gdpn::ide {
+
+void drawStatusBar(App& app, const Rect& at, nlohmann::json& report) {
+  auto& run = app.run();
+  ImGui::SetCursorScreenPos({at.x, at.y});
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {8, 4});
+  ImGui::PushStyleColor(ImGuiCol_ChildBg, ImVec4{0.10F, 0.11F, 0.13F, 1.0F});
+  ImGui::BeginChild("##status", {at.w, at.h}, false, ImGuiWindowFlags_AlwaysUseWindowPadding);
+  const auto& msg = run.message().empty() ? app.message : run.message();
+  ImGui::Text("t = %.3f s", run.time());
+  ImGui::SameLine(150);
+  ImGui::Text("steps %lld", static_cast<long long>(run.steps()));
+  ImGui::SameLine(270);
+  ImGui::Text("x%.2f real time", run.realTimeFactor());
+  ImGui::SameLine(410);
+  ImGui::Text("%.0f fps", app.fps);
+  ImGui::SameLine(490);
+  ImGui::Text("%s%s", runModeName(run.mode()), run.plantOnly() ? ", plant only" : "");
+  ImGui::SameLine(620);
+  ImGui::TextUnformatted(msg.c_str());
+  ImGui::EndChild();
+  ImGui::PopStyleColor();
+  ImGui::PopStyleVar();
+  report = {{"time", run.time()},          {"steps", run.steps()}, {"real_time_factor", run.realTimeFactor()},
+            {"fps", app.fps},              {"mode", runModeName(run.mode())}, {"message", msg}};
+}
+
+}  // namespace gdpn::ide

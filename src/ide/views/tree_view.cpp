@@ -1,0 +1,159 @@
+// The tree view: the scene tree (node tokens and sensors in bold, a colour per category) and
+// the net's places and transitions; a click selects.
+
+#include <imgui.h>
+
+#include <set>
+#include <string>
+
+#include "../views.h"
+
+namespace gdpn::ide {
+
+namespace {
+
+/// A colour per category of node (shape, material, body, joint, sensor, light, camera).
+ImVec4 colourOf(scene::NodeKind kind) {
+  using K = scene::NodeKind;
+  switch (kind) {
+    case K::Group:
+    case K::Transform: return {0.85F, 0.86F, 0.88F, 1.0F};
+    case K::Material:
+    case K::Fog: return {0.95F, 0.62F, 0.30F, 1.0F};
+    case K::Light: return {0.98F, 0.88F, 0.35F, 1.0F};
+    case K::Camera: return {0.55F, 0.80F, 0.98F, 1.0F};
+    case K::Cube:
+    case K::Sphere:
+    case K::Cylinder:
+    case K::Cone:
+    case K::Plane:
+    case K::Mesh:
+    case K::Terrain: return {0.60F, 0.88F, 0.55F, 1.0F};
+    case K::World:
+    case K::Body:
+    case K::Conveyor:
+    case K::GradientField: return {0.85F, 0.60F, 0.95F, 1.0F};
+    case K::Joint: return {0.95F, 0.50F, 0.60F, 1.0F};
+    case K::Region:
+    case K::RangeFinder:
+    case K::GradientSensor:
+    case K::KeyboardSensor:
+    case K::MouseSensor:
+    case K::TimeSensor: return {0.40F, 0.92F, 0.90F, 1.0F};
+  }
+  return {1, 1, 1, 1};
+}
+
+struct TreeState {
+  App& app;
+  std::set<std::string> tokens;  // paths of the nodes that are node tokens
+  std::string selected;          // the selected node's path
+  nlohmann::json bold = nlohmann::json::array();
+  int shown = 0;
+};
+
+void drawNode(TreeState& st, scene::Node& node) {
+  const auto path = node.path();
+  const bool is_token = st.tokens.count(path) > 0;
+  const bool is_sensor = node.type().category == scene::Category::Sensor;
+  const bool leaf = node.children().empty();
+  ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_SpanAvailWidth;
+  if (leaf) flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
+  if (path == st.selected) flags |= ImGuiTreeNodeFlags_Selected;
+  // open the parents of a selection made elsewhere
+  if (st.app.reveal_selection && !st.selected.empty() && st.selected.starts_with(path + "/")) {
+    ImGui::SetNextItemOpen(true);
+  }
+  const auto label = node.type().name + (node.name().empty() ? std::string() : "  " + node.name());
+  if (is_token || is_sensor) {
+    ImGui::PushFont(st.app.fonts.bold);
+    st.bold.push_back(path);
+  }
+  ImGui::PushStyleColor(ImGuiCol_Text, colourOf(node.kind()));
+  const bool open = ImGui::TreeNodeEx(path.c_str(), flags, "%s", label.c_str());
+  ImGui::PopStyleColor();
+  if (is_token || is_sensor) ImGui::PopFont();
+  ++st.shown;
+  if (path == st.selected && st.app.reveal_selection) ImGui::SetScrollHereY();
+  if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) st.app.document().select(Selection::node(path));
+  // a double click also frames it in the world view
+  if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) st.app.frameSelection();
+  if (ImGui::IsItemHovered() && !node.type().doc.empty()) ImGui::SetTooltip("%s", node.type().doc.c_str());
+  if (!leaf && open) {
+    for (const auto& child : node.children()) drawNode(st, *child);
+    ImGui::TreePop();
+  }
+}
+
+}  // namespace
+
+void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
+  beginPanel("##tree", at, "Tree view");
+  TreeState st{app, {}, {}, nlohmann::json::array(), 0};
+  const auto& sel = app.document().selection();
+  if (sel.kind == SelectionKind::Node) st.selected = sel.name;
+  auto* session = app.run().session();
+  if (session != nullptr) {
+    for (const auto& name : session->simulation().net().nodeNames()) st.tokens.insert(name);
+  }
+
+  // the scene
+  ImGui::BeginChild("##tree_scroll", {0, 0}, false);
+  auto* s = app.shownScene();
+  if (s == nullptr) {
+    ImGui::TextDisabled("(the model has no scene)");
+  } else if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) {
+    for (const auto& child : s->root().children()) drawNode(st, *child);
+  }
+
+  // the net's places and transitions (the net view shows them later)
+  int places = 0, transitions = 0;
+  if (session != nullptr && ImGui::CollapsingHeader("Net")) {
+    // the instances of page types, as written
+    for (const auto& page : app.document().model().net.pages) {
+      for (const auto& inst : page.instances) {
+        const auto name = page.name + "/" + inst.name;
+        const auto label = "instance  " + name + "  (" + inst.type + ")";
+        if (ImGui::Selectable(label.c_str(), sel.kind == SelectionKind::Instance && sel.name == name)) {
+          app.document().select({SelectionKind::Instance, name});
+        }
+      }
+    }
+    const auto& net = session->simulation().net();
+    const auto& kernel = session->simulation().kernel();
+    for (std::size_t i = 0; i < net.places().size(); ++i) {
+      const auto& p = net.places()[i];
+      const auto label = "place  " + p.name + "  (" +
+                         std::to_string(kernel.placeTokens(static_cast<net::PlaceId>(i))) + ")";
+      const bool is_sel = sel.kind == SelectionKind::Place && sel.name == p.name;
+      if (ImGui::Selectable(label.c_str(), is_sel)) app.document().select({SelectionKind::Place, p.name});
+      ++places;
+    }
+    for (std::size_t i = 0; i < net.transitions().size(); ++i) {
+      const auto& t = net.transitions()[i];
+      const auto id = static_cast<net::TransitionId>(i);
+      const char* state = kernel.occurring(id) ? "occurring" : kernel.enabled(id) ? "enabled" : "";
+      const auto label = "transition  " + t.name + (*state != '\0' ? std::string("  [") + state + "]" : "");
+      const bool is_sel = sel.kind == SelectionKind::Transition && sel.name == t.name;
+      ImGui::PushStyleColor(ImGuiCol_Text, kernel.occurring(id) ? ImVec4{1.0F, 0.45F, 0.4F, 1}
+                                           : kernel.enabled(id) ? ImVec4{0.45F, 0.95F, 0.45F, 1}
+                                                                : ImGui::GetStyleColorVec4(ImGuiCol_Text));
+      if (ImGui::Selectable(label.c_str(), is_sel)) {
+        app.document().select({SelectionKind::Transition, t.name});
+        app.fire_target = t.name;
+      }
+      ImGui::PopStyleColor();
+      ++transitions;
+    }
+  }
+  ImGui::EndChild();
+  endPanel();
+  app.reveal_selection = false;
+  report = {{"nodes_shown", st.shown},
+            {"bold", st.bold},
+            {"selected", st.selected},
+            {"places_shown", places},
+            {"transitions_shown", transitions}};
+}
+
+}  // namespace gdpn::ide

@@ -1,0 +1,210 @@
+// The world view: the plant through the renderer into an offscreen texture shown as an image;
+// orbit (left drag), pan (right or middle drag), zoom (wheel), pick (click), standard views,
+// the scene's cameras; keys and clicks go to the keyboard and mouse sensors.
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "../detail/keys.h"
+#include "../detail/world_texture.h"
+#include "../views.h"
+#include "gdpn/scene/actions.h"
+
+namespace gdpn::ide {
+
+namespace {
+
+/// The highlighted node: the selected node, or the first node token of a selected place.
+scene::NodeHandle highlighted(App& app, scene::Scene& s) {
+  const auto& sel = app.document().selection();
+  if (sel.kind == SelectionKind::Node) {
+    const auto* node = s.find(sel.name);
+    return node != nullptr ? node->handle() : 0;
+  }
+  auto* session = app.run().session();
+  if (sel.kind != SelectionKind::Place || session == nullptr || app.run().mode() == RunMode::Edit) return 0;
+  const auto& sim = session->simulation();
+  const auto p = sim.net().findPlace(sel.name);
+  if (p < 0) return 0;
+  const auto& place = sim.net().places()[static_cast<std::size_t>(p)];
+  for (auto ps = place.slots_begin; ps < place.slots_end; ++ps) {
+    const auto nodes = sim.kernel().nodes(ps);
+    if (!nodes.empty()) return nodes.front();
+  }
+  return 0;
+}
+
+/// The world view's own row: frame, standard views, the scene's cameras, overlays.
+void drawViewBar(App& app, scene::Scene* s) {
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextColored({0.62F, 0.72F, 0.86F, 1.0F}, "World view");
+  ImGui::SameLine(0, 12);
+  if (ImGui::Button("Frame")) app.frameSelection();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Frame the selection (the whole scene when none)");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(70);
+  if (ImGui::BeginCombo("##views", "view", ImGuiComboFlags_HeightLarge)) {
+    for (auto v : {StandardView::Front, StandardView::Back, StandardView::Left, StandardView::Right, StandardView::Top,
+                   StandardView::Iso}) {
+      if (ImGui::Selectable(standardViewName(v))) {
+        app.orbit.look(v);
+        app.camera_node.clear();
+      }
+    }
+    ImGui::EndCombo();
+  }
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Standard views");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(130);
+  if (ImGui::BeginCombo("##camera", app.camera_node.empty() ? "free camera" : app.camera_node.c_str())) {
+    if (ImGui::Selectable("free camera", app.camera_node.empty())) app.camera_node.clear();
+    if (s != nullptr) {
+      scene::traverse(s->root(), [&](scene::Node& n, const scene::TraversalState&) {
+        if (n.kind() != scene::NodeKind::Camera) return;
+        const auto path = n.path();
+        if (ImGui::Selectable(path.c_str(), path == app.camera_node)) app.camera_node = path;
+      });
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::SameLine();
+  ImGui::Checkbox("sensors", &app.show_sensors);
+  ImGui::SameLine();
+  ImGui::Checkbox("joints", &app.show_joints);
+}
+
+}  // namespace
+
+void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
+  beginPanel("##world", at, nullptr);
+  auto* s = app.shownScene();
+  drawViewBar(app, s);
+  const auto size = ImGui::GetContentRegionAvail();
+  const int w = std::max(16, static_cast<int>(size.x));
+  const int h = std::max(16, static_cast<int>(size.y));
+  const auto origin = ImGui::GetCursorScreenPos();
+  report = {{"size", {w, h}}, {"camera", app.camera_node.empty() ? "free" : app.camera_node}};
+  if (s == nullptr || !app.renderer) {
+    ImGui::TextDisabled("(nothing to draw)");
+    endPanel();
+    return;
+  }
+  if (app.run().mode() == RunMode::Edit) scene::updateTransforms(s->root());
+
+  // the camera: a Camera node of the scene, or the orbit camera the mouse moves
+  render::Camera camera = app.orbit.camera();
+  if (!app.camera_node.empty()) {
+    const auto* node = s->find(app.camera_node);
+    if (node != nullptr && node->kind() == scene::NodeKind::Camera) camera = render::cameraOf(*node, app.run().time());
+  }
+
+  // draw the plant into the texture and show it
+  render::DrawOptions options;
+  options.width = w;
+  options.height = h;
+  options.sensors = app.show_sensors;
+  options.joints = app.show_joints;
+  options.selection = highlighted(app, *s);
+  // draw only when something seen changed: the run, the model, the camera, the selection
+  const WorldKey seen{app.run().steps(), app.run().mode(), app.document().revision(), camera.eye, camera.target,
+                     camera.fov, options.selection, w, h, options.sensors, options.joints, app.run().session()};
+  if (!(seen == app.world_key) || app.world_stats.draw_calls == 0) {
+    app.world_texture->begin(w, h);
+    app.world_stats = app.renderer->draw(*s, camera, options);
+    app.world_texture->end();
+    app.world_key = seen;
+  }
+  const auto& stats = app.world_stats;
+  ImGui::Image(reinterpret_cast<ImTextureID>(app.world_texture->texture()), {static_cast<float>(w), static_cast<float>(h)},
+               {0, 1}, {1, 0});
+  ImGui::SetCursorScreenPos(origin);
+  ImGui::InvisibleButton("##world_input", {static_cast<float>(w), static_cast<float>(h)},
+                         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                             ImGuiButtonFlags_MouseButtonMiddle);
+  const bool hovered = ImGui::IsItemHovered();
+  const bool active = ImGui::IsItemActive();
+  auto& io = ImGui::GetIO();
+  const auto take_camera = [&] {
+    // moving the view leaves a scene camera for the orbit camera at the same place
+    if (!app.camera_node.empty()) {
+      app.orbit = OrbitCamera::from(camera);
+      app.camera_node.clear();
+    }
+  };
+
+  // orbit, pan, zoom
+  if (active && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
+    if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
+      take_camera();
+      app.orbit.orbit(io.MouseDelta.x, io.MouseDelta.y);
+    } else if (ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle)) {
+      take_camera();
+      app.orbit.pan(io.MouseDelta.x, io.MouseDelta.y, h);
+    }
+  }
+  if (hovered && io.MouseWheel != 0) {
+    take_camera();
+    app.orbit.zoom(io.MouseWheel);
+  }
+
+  // a click (no drag) picks a shape and tells the mouse sensors
+  if (hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 16) {
+    const auto ray = OrbitCamera::from(camera).ray(io.MousePos.x - origin.x, io.MousePos.y - origin.y, w, h);
+    const auto hit = scene::pick(s->root(), ray);
+    if (hit.shape != nullptr) {
+      app.selectNode(hit.shape->path());
+      app.message = "picked " + hit.shape->path();
+    } else {
+      app.document().select({});
+    }
+    sensors::InputEvent click;
+    click.t = app.run().time();
+    click.kind = sensors::InputEvent::Kind::Click;
+    click.ray = ray;
+    app.run().push(click);
+    report["picked"] = hit.shape != nullptr ? hit.shape->path() : "";
+  }
+
+  // keys typed over the world view go to the keyboard sensors, with where the viewer is
+  auto& was_down = app.key_was_down;
+  auto& last_eye = app.last_eye;
+  if (hovered && (camera.eye - last_eye).length() > 1e-9) {
+    sensors::InputEvent view;
+    view.t = app.run().time();
+    view.kind = sensors::InputEvent::Kind::Viewpoint;
+    view.position = camera.eye;
+    app.run().push(view);
+    last_eye = camera.eye;
+  }
+  for (const auto& [code, name] : sensorKeys()) {
+    const bool down = io.KeysDown[code];
+    if (down != was_down[static_cast<std::size_t>(code)] && (hovered || !down) && !io.WantTextInput) {
+      sensors::InputEvent key;
+      key.t = app.run().time();
+      key.kind = sensors::InputEvent::Kind::Key;
+      key.key = name;
+      key.down = down;
+      app.run().push(key);
+      if (down) app.pressed_keys.push_back(name);
+    }
+    was_down[static_cast<std::size_t>(code)] = down;
+  }
+  endPanel();
+
+  const auto eye = camera.eye;
+  report["eye"] = {eye.x, eye.y, eye.z};
+  report["target"] = {camera.target.x, camera.target.y, camera.target.z};
+  report["triangles"] = stats.triangles;
+  report["highlighted"] = options.selection != 0;
+  report["keys"] = app.pressed_keys;
+  report["sensors"] = app.show_sensors;
+  report["joints"] = app.show_joints;
+}
+
+}  // namespace gdpn::ide

@@ -1,0 +1,179 @@
+// The IDE's document: field edits through commands, undo and redo giving back byte-identical
+// saves, a drag merged into one step, the selection, and reloading from disk.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "gdpn/ide/document.h"
+#include "gdpn/ide/set_field.h"
+#include "ide/ide_model.h"
+#include "support/temp_files.h"
+
+namespace gdpn::ide {
+namespace {
+
+using gdpn::testing::TempDirTest;
+using ide::testing::kBinModel;
+using scene::FieldValue;
+
+class DocumentTest : public TempDirTest {
+ protected:
+  std::unique_ptr<Document> openBin() {
+    core::Diagnostics diags;
+    auto doc = Document::open(write("bin.gdpn.yaml", kBinModel), diags);
+    EXPECT_TRUE(doc) << diags.str();
+    return doc;
+  }
+  static double bounce(const Document& doc) {
+    const auto* node = doc.scene()->find("drop/paint");
+    return std::get<double>(node->value(static_cast<std::size_t>(node->type().fieldIndex("bounce"))));
+  }
+};
+
+TEST_F(DocumentTest, SetFieldChangesTheNodeAndUndoRedoGiveBackTheSameBytes) {
+  auto doc = openBin();
+  ASSERT_TRUE(doc);
+  const auto before = doc->text();
+  ASSERT_EQ(doc->execute(std::make_unique<SetFieldCommand>("drop/paint", "bounce", FieldValue{0.7})), "");
+  EXPECT_DOUBLE_EQ(bounce(*doc), 0.7);
+  const auto after = doc->text();
+  EXPECT_NE(after, before);
+  EXPECT_NE(after.find("bounce: 0.7"), std::string::npos) << after;
+  ASSERT_TRUE(doc->undo());
+  EXPECT_EQ(doc->text(), before);
+  ASSERT_TRUE(doc->redo());
+  EXPECT_EQ(doc->text(), after);
+  EXPECT_FALSE(doc->redo());
+  ASSERT_TRUE(doc->undo());
+  EXPECT_FALSE(doc->undo());
+  EXPECT_EQ(doc->text(), before);
+}
+
+TEST_F(DocumentTest, SavedEditsReadBackAsTheSameModel) {
+  auto doc = openBin();
+  ASSERT_TRUE(doc);
+  ASSERT_EQ(doc->execute(std::make_unique<SetFieldCommand>("drop/box/shape", "size", FieldValue{std::array{0.3, 0.2, 0.1}})), "");
+  core::Diagnostics diags;
+  const auto out = (dir_ / "saved.gdpn.yaml").string();
+  ASSERT_TRUE(doc->save(diags, out)) << diags.str();
+  auto again = Document::open(out, diags);
+  ASSERT_TRUE(again) << diags.str();
+  EXPECT_EQ(again->text(), doc->text());
+}
+
+TEST_F(DocumentTest, AnInvalidValueIsRefusedWithTheLoadersMessage) {
+  auto doc = openBin();
+  ASSERT_TRUE(doc);
+  const auto before = doc->text();
+  const auto why = doc->execute(std::make_unique<SetFieldCommand>("drop/paint", "bounce", FieldValue{1.5}));
+  EXPECT_EQ(why, "'bounce' must lie in [0, 1], got 1.5");
+  EXPECT_EQ(doc->text(), before);
+  EXPECT_FALSE(doc->history().canUndo());
+  // the wrong kind of value, an unknown field, a missing node
+  EXPECT_NE(doc->execute(std::make_unique<SetFieldCommand>("drop/paint", "bounce", FieldValue{std::string("x")})), "");
+  EXPECT_EQ(doc->execute(std::make_unique<SetFieldCommand>("drop/paint", "colour", FieldValue{1.0})),
+            "a Material has no field 'colour'");
+  EXPECT_EQ(doc->execute(std::make_unique<SetFieldCommand>("nowhere", "bounce", FieldValue{0.1})), "no node 'nowhere'");
+  EXPECT_EQ(doc->text(), before);
+}
+
+TEST_F(DocumentTest, ADragOfASliderIsOneStep) {
+  auto doc = openBin();
+  ASSERT_TRUE(doc);
+  const auto before = doc->text();
+  for (double v : {0.3, 0.4, 0.5, 0.6}) {
+    ASSERT_EQ(doc->execute(std::make_unique<SetFieldCommand>("drop/paint", "bounce", FieldValue{v}, 7)), "");
+  }
+  EXPECT_EQ(doc->history().depth(), 1U);
+  EXPECT_DOUBLE_EQ(bounce(*doc), 0.6);
+  // the drag ends; a new drag of the same field is a step of its own
+  doc->history().seal();
+  ASSERT_EQ(doc->execute(std::make_unique<SetFieldCommand>("drop/paint", "bounce", FieldValue{0.9}, 7)), "");
+  EXPECT_EQ(doc->history().depth(), 2U);
+  ASSERT_TRUE(doc->undo());
+  EXPECT_DOUBLE_EQ(bounce(*doc), 0.6);
+  ASSERT_TRUE(doc->undo());
+  EXPECT_EQ(doc->text(), before);
+}
+
+TEST_F(DocumentTest, EditsOfDifferentFieldsAreSeparateSteps) {
+  auto doc = openBin();
+  ASSERT_TRUE(doc);
+  ASSERT_EQ(doc->execute(std::make_unique<SetFieldCommand>("drop/paint", "bounce", FieldValue{0.3}, 1)), "");
+  ASSERT_EQ(doc->execute(std::make_unique<SetFieldCommand>("drop/paint", "friction", FieldValue{0.3}, 1)), "");
+  EXPECT_EQ(doc->history().depth(), 2U);
+  EXPECT_EQ(doc->history().undoLabel(), "set drop/paint.friction");
+}
+
+TEST_F(DocumentTest, ANewEditClearsTheRedoList) {
+  auto doc = openBin();
+  ASSERT_TRUE(doc);
+  ASSERT_EQ(doc->execute(std::make_unique<SetFieldCommand>("drop/paint", "bounce", FieldValue{0.3})), "");
+  ASSERT_TRUE(doc->undo());
+  ASSERT_TRUE(doc->history().canRedo());
+  ASSERT_EQ(doc->execute(std::make_unique<SetFieldCommand>("drop/paint", "bounce", FieldValue{0.4})), "");
+  EXPECT_FALSE(doc->history().canRedo());
+}
+
+TEST_F(DocumentTest, TheSnapshotForARunIsACopy) {
+  auto doc = openBin();
+  ASSERT_TRUE(doc);
+  auto snap = doc->snapshot();
+  ASSERT_EQ(doc->execute(std::make_unique<SetFieldCommand>("drop/paint", "bounce", FieldValue{0.3})), "");
+  EXPECT_NE(snap.scene.get(), doc->model().scene.get());
+  EXPECT_FALSE(model::Model::sameScene(snap.scene, doc->model().scene));
+}
+
+TEST_F(DocumentTest, ReloadTakesTheNewFileOrKeepsTheOldModelAndShowsTheErrors) {
+  auto doc = openBin();
+  ASSERT_TRUE(doc);
+  doc->select(Selection::node("drop/paint"));
+  const auto before = doc->text();
+  EXPECT_FALSE(doc->changedOnDisk());
+
+  // a broken file: the old model stays, the diagnostics are located
+  write("bin.gdpn.yaml", "gdpn: 1\nscene:\n  - Cube: {size: oops}\n");
+  std::filesystem::last_write_time(dir_ / "bin.gdpn.yaml",
+                                   std::filesystem::file_time_type::clock::now() - std::chrono::hours(1));
+  EXPECT_TRUE(doc->changedOnDisk());
+  EXPECT_FALSE(doc->reload());
+  EXPECT_EQ(doc->text(), before);
+  ASSERT_TRUE(doc->diagnostics().hasErrors());
+  EXPECT_NE(doc->diagnostics().all().front().str().find("bin.gdpn.yaml:3:"), std::string::npos)
+      << doc->diagnostics().str();
+  EXPECT_FALSE(doc->changedOnDisk());
+
+  // a good file: taken, the selection kept since the node is still there
+  auto edited = kBinModel;
+  edited.replace(edited.find("bounce: 0.2"), 11, "bounce: 0.4");
+  write("bin.gdpn.yaml", edited);
+  std::filesystem::last_write_time(dir_ / "bin.gdpn.yaml",
+                                   std::filesystem::file_time_type::clock::now() + std::chrono::seconds(1));
+  EXPECT_TRUE(doc->reload()) << doc->diagnostics().str();
+  EXPECT_DOUBLE_EQ(bounce(*doc), 0.4);
+  EXPECT_EQ(doc->selection(), Selection::node("drop/paint"));
+  EXPECT_FALSE(doc->diagnostics().hasErrors());
+}
+
+TEST_F(DocumentTest, AChangedScriptBesideTheModelIsNoticedOnce) {
+  const auto py = write("helpers.py", "x = 1\n");
+  auto doc = openBin();
+  ASSERT_TRUE(doc);
+  EXPECT_FALSE(doc->scriptsChanged());
+  std::filesystem::last_write_time(py, std::filesystem::file_time_type::clock::now() + std::chrono::seconds(2));
+  EXPECT_TRUE(doc->scriptsChanged());
+  EXPECT_FALSE(doc->scriptsChanged());
+  write("more.py", "y = 2\n");
+  EXPECT_TRUE(doc->scriptsChanged());
+  EXPECT_FALSE(doc->changedOnDisk());
+}
+
+TEST(Selection, KindsHaveNames) {
+  EXPECT_STREQ(selectionKindName(SelectionKind::Transition), "transition");
+  EXPECT_FALSE(Selection{}.any());
+  EXPECT_TRUE(Selection::node("a").any());
+}
+
+}  // namespace
+}  // namespace gdpn::ide

@@ -1,0 +1,283 @@
+// The headless IDE (EGL surfaceless) on the factory: replayed actions, asserting on what the
+// views report and on the picture; replay mistakes located; splitters remembered.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <nlohmann/json.hpp>
+
+#include "gdpn/platform/png.h"
+#include "ide/ide_model.h"
+#include "support/cli.h"
+#include "support/golden.h"
+#include "support/temp_files.h"
+
+namespace gdpn::ide {
+namespace {
+
+using gdpn::testing::runShell;
+
+class HeadlessIde : public gdpn::testing::TempDirTest {
+ protected:
+  /// Runs the headless IDE (1280 x 720) on the factory with `actions` (a replay file's text);
+  /// the report.
+  nlohmann::json replay(const std::string& actions, const std::string& extra = {}, int expect = 0) {
+    return replayOn("examples/factory", actions, extra, expect);
+  }
+  /// The same on the model at `model`.
+  nlohmann::json replayOn(const std::string& model, const std::string& actions, const std::string& extra = {},
+                          int expect = 0) {
+    const auto file = write("actions.yaml", actions);
+    const auto report = (dir_ / "report.json").string();
+    std::filesystem::remove(report);
+    last_ = runShell("XDG_CONFIG_HOME='" + (dir_ / "config").string() + "' \"$GDPN\" ide '" + model +
+                     "' --headless --size 1280x720 --replay '" + file + "' --report '" + report + "' " + extra);
+    EXPECT_EQ(last_.code, expect) << last_.out;
+    if (last_.code != 0) return {};
+    std::ifstream in(report);
+    return nlohmann::json::parse(in, nullptr, false);
+  }
+  gdpn::testing::CliResult last_;
+};
+
+TEST_F(HeadlessIde, OpensTheFactoryInEditModeWithEveryView) {
+  const auto r = replay("[]");
+  EXPECT_EQ(r["run"]["mode"], "edit");
+  EXPECT_EQ(r["run"]["steps"], 0);
+  EXPECT_EQ(r["net_view"]["page"], "factory");
+  EXPECT_EQ(r["net_view"]["places"], 9);
+  EXPECT_EQ(r["net_view"]["transitions"], 9);
+  EXPECT_GE(r["net_view"]["drawn"].get<int>(), 9 + 9 + 2);  // and the arcs
+  EXPECT_EQ(r["net_view"]["tokens"]["factory/buffer"], 23);  // the initial marking: boxes b01 to b23
+  EXPECT_GT(r["world"]["triangles"].get<int>(), 100);
+  EXPECT_GT(r["tree"]["nodes_shown"].get<int>(), 10);
+  EXPECT_EQ(r["toolbar"]["transitions"].get<int>(), 23);
+  EXPECT_TRUE(r["diagnostics"].empty());
+}
+
+TEST_F(HeadlessIde, StepAdvancesOneStep) {
+  const auto r = replay("- press: step\n");
+  EXPECT_EQ(r["run"]["steps"], 1);
+  EXPECT_EQ(r["run"]["mode"], "paused");
+  EXPECT_EQ(r["status"]["steps"], 1);
+}
+
+TEST_F(HeadlessIde, RunForTenSecondsShowsTheArmAtWork) {
+  const auto r = replay("- run: 10\n- select: arm/turn\n");
+  EXPECT_DOUBLE_EQ(r["run"]["time"].get<double>(), 10.0);
+  EXPECT_EQ(r["selection"]["kind"], "node");
+  EXPECT_EQ(r["tree"]["selected"], "arm/turn");
+  EXPECT_EQ(r["inspector"]["type"], "Joint");
+  EXPECT_EQ(r["world"]["highlighted"], true);
+  // the joint is a node token: bold in the tree
+  const auto& bold = r["tree"]["bold"];
+  EXPECT_NE(std::find(bold.begin(), bold.end(), "arm/turn"), bold.end());
+}
+
+TEST_F(HeadlessIde, TheInspectorSaysWhereAMovingBodyIsInTheRun) {
+  const auto r = replay("- run: 1\n- select: arm/turn/column\n");
+  EXPECT_EQ(r["inspector"]["type"], "Body");
+  ASSERT_EQ(r["inspector"]["live_position"].size(), 3U);
+  EXPECT_NEAR(r["inspector"]["live_position"][0].get<double>(), -8.0, 0.5);  // the arm's column stands at x = -8 m
+}
+
+TEST_F(HeadlessIde, FiringADisabledTransitionShowsWhyNot) {
+  const auto r = replay("- fire: factory/drop\n");
+  const auto msg = r["status"]["message"].get<std::string>();
+  EXPECT_NE(msg.find("cannot fire factory/drop: "), std::string::npos) << msg;
+  EXPECT_NE(msg.find("not enabled"), std::string::npos) << msg;
+}
+
+TEST_F(HeadlessIde, RunningInRealTimeTakesOneFramesStepsPerFrame) {
+  // a headless frame stands for 1/60 s: 60 frames of real time are 1 s of model time
+  const auto r = replay("- press: run\n- frames: 60\n- press: pause\n");
+  EXPECT_NEAR(r["run"]["time"].get<double>(), 1.0, 0.05);
+  EXPECT_EQ(r["run"]["mode"], "paused");
+}
+
+TEST_F(HeadlessIde, ABreakpointStopsTheRunAndTheStatusBarSaysWhich) {
+  const auto r = replay("- break: {starts: factory/pickup}\n- run: 30\n");
+  EXPECT_LT(r["run"]["time"].get<double>(), 30.0);
+  EXPECT_EQ(r["run"]["breakpoints"], nlohmann::json::array({"starts factory/pickup"}));
+  EXPECT_EQ(r["status"]["message"], "stopped at breakpoint: starts factory/pickup");
+}
+
+TEST_F(HeadlessIde, ResetGoesBackToEditMode) {
+  const auto r = replay("- run: 2\n- press: reset\n");
+  EXPECT_EQ(r["run"]["mode"], "edit");
+  EXPECT_EQ(r["run"]["steps"], 0);
+}
+
+TEST_F(HeadlessIde, SelectionIsOneThingAcrossTheViews) {
+  // a click on the arm's pedestal in the world view selects it in the tree and the inspector
+  auto r = replay("- click: [348, 280]\n");
+  const auto picked = r["selection"]["name"].get<std::string>();
+  EXPECT_EQ(r["selection"]["kind"], "node");
+  EXPECT_TRUE(picked.starts_with("arm/")) << picked;
+  EXPECT_EQ(r["tree"]["selected"], picked);
+  EXPECT_EQ(r["inspector"]["node"], picked);
+  // a place selected by name
+  r = replay("- select: factory/P1\n");
+  EXPECT_EQ(r["selection"]["kind"], "place");
+  EXPECT_EQ(r["inspector"]["tokens"], 3);
+}
+
+TEST_F(HeadlessIde, AFieldEditIsUndoneAndRedone) {
+  auto r = replay("- set: {node: arm/turn, field: vel1, value: 200}\n");
+  EXPECT_EQ(r["undo"]["depth"], 1);
+  EXPECT_EQ(r["undo"]["label"], "set arm/turn.vel1");
+  r = replay("- set: {node: arm/turn, field: vel1, value: 200}\n- press: undo\n");
+  EXPECT_EQ(r["undo"]["depth"], 0);
+  EXPECT_EQ(r["undo"]["can_redo"], true);
+  r = replay("- set: {node: arm/turn, field: vel1, value: 200}\n- press: undo\n- press: redo\n");
+  EXPECT_EQ(r["undo"]["depth"], 1);
+}
+
+TEST_F(HeadlessIde, ADragOfAnInspectorSliderIsOneUndoStep) {
+  // the feed's first Material: its shininess slider is the fifth row of the inspector at 1280 x 720
+  auto r = replay("- select: feed/#0\n- drag: {from: [500, 644], to: [560, 644]}\n");
+  EXPECT_EQ(r["inspector"]["type"], "Material");
+  EXPECT_EQ(r["undo"]["depth"], 1);
+  EXPECT_EQ(r["undo"]["label"], "set feed/#0.shininess");
+  r = replay("- select: feed/#0\n- drag: {from: [500, 644], to: [560, 644]}\n- press: undo\n");
+  EXPECT_EQ(r["undo"]["depth"], 0);
+}
+
+TEST_F(HeadlessIde, AnInvalidFieldValueIsALocatedError) {
+  replay("- press: step\n- set: {node: feed/#0, field: bounce, value: 3}\n", {}, 1);
+  EXPECT_NE(last_.out.find("actions.yaml:2:3: error: 'bounce' must lie in [0, 1], got 3"), std::string::npos)
+      << last_.out;
+}
+
+TEST_F(HeadlessIde, MistakesInTheReplayFileAreLocated) {
+  replay("- press: step\n- jump: 3\n", {}, 1);
+  EXPECT_NE(last_.out.find("actions.yaml:2:3: error: unknown action 'jump'"), std::string::npos) << last_.out;
+  replay("- press: fly\n", {}, 1);
+  EXPECT_NE(last_.out.find("actions.yaml:1:10: error: unknown control 'fly'"), std::string::npos) << last_.out;
+  replay("- select: nowhere\n", {}, 1);
+  EXPECT_NE(last_.out.find("actions.yaml:1:3: error: nothing is called 'nowhere'"), std::string::npos) << last_.out;
+  replay("- key: f13\n", {}, 1);
+  EXPECT_NE(last_.out.find("actions.yaml:1:3: error: unknown key 'f13'"), std::string::npos) << last_.out;
+}
+
+TEST_F(HeadlessIde, ADraggedSplitterIsRememberedInTheNextSession) {
+  // the tree view's right edge starts at 260 px; drag it 100 px to the right
+  auto r = replay("- drag: {from: [263, 400], to: [363, 400]}\n");
+  EXPECT_NEAR(r["splitters"]["tree_width"].get<double>(), 360.0, 1.0);
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "config" / "gdpn" / "ide.ini"));
+  r = replay("[]");
+  EXPECT_NEAR(r["splitters"]["tree_width"].get<double>(), 360.0, 1.0);
+  EXPECT_NEAR(r["layout"]["world"][0].get<double>(), 366.0, 1.0);
+}
+
+TEST_F(HeadlessIde, TheWorldViewFramesTheSelectionTakesStandardViewsAndSceneCameras) {
+  auto r = replay("- select: arm/turn\n- view: frame\n");
+  EXPECT_NEAR(r["world"]["target"][0].get<double>(), -8.0, 1.0);  // the arm stands at x = -8 m
+  r = replay("- view: top\n");
+  EXPECT_GT(r["world"]["eye"][2].get<double>(), r["world"]["target"][2].get<double>() + 1.0);
+  EXPECT_NEAR(r["world"]["eye"][0].get<double>(), r["world"]["target"][0].get<double>(), 0.5);
+  r = replay("- view: armview\n");
+  EXPECT_EQ(r["world"]["camera"], "armview");
+  EXPECT_NEAR(r["world"]["eye"][0].get<double>(), -4.0, 1e-6);
+  replay("- view: sideways\n", {}, 1);
+  EXPECT_NE(last_.out.find("actions.yaml:1:3: error: 'sideways' is no standard view"), std::string::npos) << last_.out;
+}
+
+TEST_F(HeadlessIde, KeysTypedInTheWorldViewReachTheSensors) {
+  const auto r = replay("- key: g\n- key: space\n");
+  EXPECT_EQ(r["world"]["keys"], nlohmann::json::array({"g", "space"}));
+}
+
+TEST_F(HeadlessIde, AModelThatDoesNotCompileShowsItsErrorsAndAClickSelectsTheConstruct) {
+  const auto model = write("bad.gdpn.yaml", R"Y(gdpn: 1
+scene:
+  - Cube: {name: c, size: [1, 1, 1]}
+pages:
+  main:
+    places:
+      a: {tokens: 1}
+    transitions:
+      t: {}
+    arcs:
+      - a -> t
+      - t -> nowhere
+)Y");
+  const auto j = replayOn(model, "- click: [900, 502]\n");
+  ASSERT_EQ(j["diagnostics"].size(), 1U);
+  EXPECT_NE(j["diagnostics"][0].get<std::string>().find("bad.gdpn.yaml:12:9: error: 'nowhere'"), std::string::npos);
+  EXPECT_EQ(j["toolbar"]["ready"], false);
+  // the arc at line 12 belongs to the transition declared before it
+  EXPECT_EQ(j["selection"]["kind"], "transition");
+  EXPECT_EQ(j["selection"]["name"], "main/t");
+}
+
+TEST_F(HeadlessIde, SaveWritesTheEditedModel) {
+  const auto model = write("bin.gdpn.yaml", ide::testing::kBinModel);
+  replayOn(model, "- set: {node: drop/paint, field: bounce, value: 0.5}\n- press: save\n");
+  std::ifstream in(model);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("bounce: 0.5"), std::string::npos) << text.str();
+  EXPECT_EQ(gdpn::testing::runGdpn("check '" + model + "'").code, 0);
+}
+
+TEST_F(HeadlessIde, AKeyboardSensorHearsTheWorldViewsKeysWhileTheViewerIsInside) {
+  // tests/data/input/console.gdpn.yaml with a camera inside the booth: 'go' waits for the g key
+  std::ifstream source(std::string(GDPN_SOURCE_DIR) + "/tests/data/input/console.gdpn.yaml");
+  std::stringstream text;
+  text << source.rdbuf();
+  auto console = text.str();
+  console.replace(console.find("  - Camera: {position: [10, 0, 1]}"), 34,
+                  "  - Camera: {position: [10, 0, 1]}\n  - Camera: {name: inside, position: [0, 0, 0.5], target: [0, 5, 0.5]}");
+  const auto model = write("console.gdpn.yaml", console);
+  // inside the booth, g held for a step: go fires
+  auto j = replayOn(model, "- view: inside\n- hold: g\n- steps: 2\n- release: g\n- select: main/done\n");
+  EXPECT_EQ(j["inspector"]["tokens"], 1);
+  // outside, the same key is not heard
+  j = replayOn(model, "- hold: g\n- steps: 2\n- release: g\n- select: main/done\n");
+  EXPECT_EQ(j["inspector"]["tokens"], 0);
+}
+
+TEST_F(HeadlessIde, TheNetViewShowsPickupRedWhileItOccursAndTheMarkingOfTheRun) {
+  auto r = replay("- break: {starts: factory/pickup}\n- press: fastest\n- frames: 5\n");
+  EXPECT_EQ(r["run"]["message"], "stopped at breakpoint: starts factory/pickup");
+  EXPECT_EQ(r["net_view"]["activity"]["factory/pickup"], "occurring");
+  EXPECT_EQ(r["net_view"]["activity"]["factory/leave"], "idle");
+  EXPECT_EQ(r["net_view"]["tokens"]["factory/P1"], 0);  // pickup took the arm's joints
+  r = replay("- run: 30\n");
+  EXPECT_LT(r["net_view"]["tokens"]["factory/buffer"].get<int>(), 23);  // boxes have been fed
+}
+
+TEST_F(HeadlessIde, AClickInTheNetViewSelectsAndADoubleClickGoesIntoAnInstance) {
+  const auto at = replay("[]")["net_view"]["at"];
+  const auto p3 = at["factory/P3"], station = at["factory/stationA"];
+  auto r = replay("- click: [" + std::to_string(p3[0].get<int>()) + ", " + std::to_string(p3[1].get<int>()) + "]\n");
+  EXPECT_EQ(r["selection"]["kind"], "place");
+  EXPECT_EQ(r["selection"]["name"], "factory/P3");
+  EXPECT_EQ(r["inspector"]["kind"], "place");
+  const std::string click = "- click: [" + std::to_string(station[0].get<int>()) + ", " +
+                            std::to_string(station[1].get<int>()) + "]\n";
+  r = replay(click + click);
+  EXPECT_EQ(r["net_view"]["path"], "factory/stationA");
+  EXPECT_EQ(r["net_view"]["page"], "station");
+  EXPECT_GT(r["net_view"]["places"].get<int>(), 0);
+}
+
+TEST_F(HeadlessIde, TheFactoryAfterTwoSecondsLooksLikeItsGolden) {
+  // golden: tests/data/golden/ide_factory.png, made by this test with GDPN_UPDATE_GOLDEN=1
+  const auto shot = (dir_ / "shot.png").string();
+  replay("- run: 2\n- select: arm/turn\n", "--screenshot '" + shot + "'");
+  int w = 0, h = 0;
+  std::vector<std::uint8_t> rgb;
+  std::string why;
+  ASSERT_TRUE(platform::readPng(shot, w, h, rgb, why)) << why;
+  EXPECT_EQ(w, 1280);
+  EXPECT_EQ(h, 720);
+  gdpn::testing::expectLikeGolden(w, h, rgb, std::string(GDPN_SOURCE_DIR) + "/tests/data/golden/ide_factory.png");
+}
+
+}  // namespace
+}  // namespace gdpn::ide
