@@ -19,6 +19,9 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report);
 /// The net of the page or instance chosen, with the run's marking: zoom, pan, fit, pick, go
 /// into an instance.
 void drawNetView(App& app, const Rect& at, nlohmann::json& report);
+/// The selected place's 8 x 4 slot grid (kinds, tokens, names) or transition's duration, and
+/// the construct's scripts, highlighted; read-only. Drawn inside the inspector.
+void drawContents(App& app, const Selection& sel, nlohmann::json& report);
 /// The selected node's fields, edited through commands; a place's or transition's state.
 void drawInspector(App& app, const Rect& at, nlohmann::json& report);
 /// Every error and warning at file:line:col; a click selects the construct.

@@ -266,6 +266,23 @@ TEST_F(HeadlessIde, AClickInTheNetViewSelectsAndADoubleClickGoesIntoAnInstance) 
   EXPECT_GT(r["net_view"]["places"].get<int>(), 0);
 }
 
+TEST_F(HeadlessIde, TheContentsOfP1AreItsThreeJointTokensAndDeliverShowsItsScripts) {
+  auto r = replay("- select: factory/P1\n");
+  const auto slots = r["inspector"]["contents"]["slots"];
+  ASSERT_EQ(slots.size(), 3u) << slots.dump();
+  EXPECT_EQ(slots["b0"]["kind"], "node");
+  EXPECT_EQ(slots["b0"]["names"], nlohmann::json::array({"arm/turn"}));
+  EXPECT_EQ(slots["b2"]["names"], nlohmann::json::array({"arm/turn/column/lift/boom/wrist"}));
+  EXPECT_EQ(r["inspector"]["tokens"], 3);
+  r = replay("- select: factory/deliver\n");
+  const auto contents = r["inspector"]["contents"];
+  EXPECT_EQ(contents["duration"], "2 s");
+  ASSERT_EQ(contents["scripts"].size(), 2u) << contents.dump();
+  EXPECT_EQ(contents["scripts"][0]["what"], "pre_fire");
+  EXPECT_EQ(contents["scripts"][0]["lines"], 3);
+  EXPECT_EQ(contents["scripts"][1]["what"], "in_fire");
+}
+
 TEST_F(HeadlessIde, TheFactoryAfterTwoSecondsLooksLikeItsGolden) {
   // golden: tests/data/golden/ide_factory.png, made by this test with GDPN_UPDATE_GOLDEN=1
   const auto shot = (dir_ / "shot.png").string();

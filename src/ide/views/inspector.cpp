@@ -226,6 +226,7 @@ void netInspector(App& app, const Selection& sel, nlohmann::json& report) {
     ImGui::SameLine();
     breakpointBox(app, "break when it completes", session::Breakpoint::completes(sel.name), report);
   }
+  drawContents(app, sel, report["contents"]);
 }
 
 }  // namespace
