@@ -26,15 +26,6 @@ ImVec4 slotColour(net::SlotKind kind, bool marked) {
   return {0.3f, 0.3f, 0.3f, a};
 }
 
-const char* kindName(net::SlotKind kind) {
-  switch (kind) {
-    case net::SlotKind::Control: return "control";
-    case net::SlotKind::Node: return "node";
-    case net::SlotKind::Sensor: return "sensor";
-  }
-  return "?";
-}
-
 std::string durationText(const net::Duration& d) {
   switch (d.law) {
     case net::Duration::Law::Fixed: return core::formatDouble(d.a) + " s";
@@ -87,14 +78,14 @@ void placeContents(const session::Session& session, net::PlaceId p, nlohmann::js
       ImGui::PopStyleColor();
       if (ImGui::IsItemHovered()) {
         ImGui::BeginTooltip();
-        ImGui::Text("%s: %s slot", name.c_str(), kindName(kind));
+        ImGui::Text("%s: %s slot", name.c_str(), net::slotKindName(kind));
         if (sensor) ImGui::Text("reads %s", net.sensorPath(static_cast<net::PlaceSlotId>(ps)).c_str());
         else ImGui::Text("%lld token(s)%s", static_cast<long long>(tokens),
                          info.capacity == net::kUnbounded ? "" : (", capacity " + std::to_string(info.capacity)).c_str());
         for (const auto& n : names) ImGui::BulletText("%s", n.c_str());
         ImGui::EndTooltip();
       }
-      slots[name] = {{"kind", kindName(kind)}, {"tokens", tokens}, {"names", names}};
+      slots[name] = {{"kind", net::slotKindName(kind)}, {"tokens", tokens}, {"names", names}};
     }
     ImGui::EndTable();
   }
