@@ -165,6 +165,7 @@ bool App::perform(const Action& a, std::string& error) {
       else if (a.text == "step") run_.step();
       else if (a.text == "reset") reset();
       else if (a.text == "plant-only") run_.setPlantOnly(!run_.plantOnly());
+      else if (a.text == "mini-view") show_mini = !show_mini;
       else if (a.text == "undo") undo();
       else if (a.text == "redo") redo();
       else if (a.text == "save") save();
@@ -295,6 +296,8 @@ void App::frame(float width, float height, double wall_seconds) {
     }
   }
   ImGui::End();
+  // over the world view, in a window of its own so that it stays on top and can be moved
+  drawMiniView(*this, layout.world, report["mini_view"]);
 
   // what the frame showed, for tests and scripts
   const auto& sel = doc_->selection();

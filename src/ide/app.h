@@ -107,6 +107,7 @@ class App {
   std::string camera_node;          ///< the scene Camera node in use ("" : the orbit camera)
   bool show_sensors = false;        ///< the world view draws sensor volumes
   bool show_joints = false;         ///< the world view draws joint axes
+  bool show_mini = false;           ///< the mini view (the net over the world view) is open
   std::string fire_target;          ///< the toolbar's chosen transition
   int run_n = 100;                  ///< the toolbar's N for Run N steps
   int break_tokens = 1;             ///< the inspector's token count for a place's breakpoint

@@ -22,6 +22,9 @@ void drawNetView(App& app, const Rect& at, nlohmann::json& report);
 /// The selected place's 8 x 4 slot grid (kinds, tokens, names) or transition's duration, and
 /// the construct's scripts, highlighted; read-only. Drawn inside the inspector.
 void drawContents(App& app, const Selection& sel, nlohmann::json& report);
+/// The mini view: the net view's page, fitted, in a small movable window over the world view
+/// (`world`), when App::show_mini; a click selects as in the net view.
+void drawMiniView(App& app, const Rect& world, nlohmann::json& report);
 /// The selected node's fields, edited through commands; a place's or transition's state.
 void drawInspector(App& app, const Rect& at, nlohmann::json& report);
 /// Every error and warning at file:line:col; a click selects the construct.

@@ -283,6 +283,21 @@ TEST_F(HeadlessIde, TheContentsOfP1AreItsThreeJointTokensAndDeliverShowsItsScrip
   EXPECT_EQ(contents["scripts"][1]["what"], "in_fire");
 }
 
+TEST_F(HeadlessIde, TheMiniViewShowsTheNetOverTheWorldAndAClickThereSelects) {
+  EXPECT_EQ(replay("[]")["mini_view"]["shown"], false);  // closed until asked for
+  const auto r = replay("- press: mini-view\n");
+  ASSERT_EQ(r["mini_view"]["shown"], true);
+  EXPECT_GE(r["mini_view"]["drawn"].get<int>(), 9 + 9 + 2);
+  const auto p1 = r["mini_view"]["at"]["factory/P1"];
+  const auto world = r["layout"]["world"];  // x, y, w, h
+  EXPECT_GT(p1[0].get<double>(), world[0].get<double>());
+  EXPECT_LT(p1[1].get<double>(), world[1].get<double>() + world[3].get<double>());
+  const auto clicked = replay("- press: mini-view\n- click: [" + std::to_string(p1[0].get<int>()) + ", " +
+                              std::to_string(p1[1].get<int>()) + "]\n");
+  EXPECT_EQ(clicked["selection"]["name"], "factory/P1");
+  EXPECT_EQ(clicked["inspector"]["contents"]["slots"].size(), 3u);
+}
+
 TEST_F(HeadlessIde, TheFactoryAfterTwoSecondsLooksLikeItsGolden) {
   // golden: tests/data/golden/ide_factory.png, made by this test with GDPN_UPDATE_GOLDEN=1
   const auto shot = (dir_ / "shot.png").string();

@@ -1,6 +1,7 @@
 // The net view: the page (or instance) chosen, drawn by the diagram module's painter with the
 // run's marking; zoom at the cursor, pan by dragging, fit; a click selects a construct, a
-// double click on an instance goes into it.
+// double click on an instance goes into it. The mini view: the same page, fitted, in a small
+// window over the world view.
 
 #include <imgui.h>
 
@@ -102,53 +103,40 @@ void drawPageBar(App& app, NetViewState& s) {
   if (ImGui::Button("Fit")) s.fit = true;
 }
 
-}  // namespace
+/// The free region of the current window as a canvas, taken by an invisible button (so the
+/// window does not move under a drag), and the mouse in its pixels.
+struct Region {
+  ImVec2 origin;            // window pixels of its top-left corner
+  int width = 1, height = 1;  // pixels
+  diagram::Point mouse;     // the mouse, pixels from the corner
+};
 
-void drawNetView(App& app, const Rect& at, nlohmann::json& report) {
-  beginPanel("##net", at, "Net view");
-  NetViewState& s = app.netView();
-  drawPageBar(app, s);
-  ensureLayout(app, s);
-  report = {{"path", s.path}, {"page", s.layout.page}};
-  if (!s.error.empty()) {
-    ImGui::TextWrapped("%s", s.error.c_str());
-    report["error"] = s.error;
-    endPanel();
-    return;
-  }
-
-  const ImVec2 origin = ImGui::GetCursorScreenPos();
+Region regionHere(const char* id) {
+  Region r;
+  r.origin = ImGui::GetCursorScreenPos();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
-  const int width = std::max(1, static_cast<int>(avail.x));
-  const int height = std::max(1, static_cast<int>(avail.y));
-  ImGui::InvisibleButton("##netcanvas", {static_cast<float>(width), static_cast<float>(height)},
+  r.width = std::max(1, static_cast<int>(avail.x));
+  r.height = std::max(1, static_cast<int>(avail.y));
+  ImGui::InvisibleButton(id, {static_cast<float>(r.width), static_cast<float>(r.height)},
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle);
-  if (s.fit) {
-    s.viewport = diagram::fitViewport(s.layout, width, height);
-    s.fit = false;
-  }
   const ImGuiIO& io = ImGui::GetIO();
-  const diagram::Point mouse{io.MousePos.x - origin.x, io.MousePos.y - origin.y};
-  if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
-    s.viewport = s.viewport.zoomedAbout(mouse, std::pow(1.15, static_cast<double>(io.MouseWheel)));
-  }
-  if (ImGui::IsItemActive() && (ImGui::IsMouseDragging(ImGuiMouseButton_Left) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle))) {
-    s.viewport = s.viewport.panned({io.MouseDelta.x, io.MouseDelta.y});
-  }
-  const auto under = s.index->pick(s.viewport.toLayout(mouse), 4.0 / s.viewport.zoom);
+  r.mouse = {static_cast<double>(io.MousePos.x - r.origin.x), static_cast<double>(io.MousePos.y - r.origin.y)};
+  return r;
+}
+
+/// Selects what a click (not the end of a drag) on the region's button hits, then paints the
+/// page with the run's marking in `viewport` and frames the selection. Returns the item under
+/// the mouse; writes what it drew into `report`.
+std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const Region& r,
+                                              const diagram::Viewport& viewport, nlohmann::json& report) {
+  const auto under = s.index->pick(viewport.toLayout(r.mouse), 4.0 / viewport.zoom);
   if (ImGui::IsItemHovered() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
       ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f).x == 0.0f &&
       ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f).y == 0.0f) {
-    // a click, not the end of a drag
     if (under) app.document().select(selectionOf(s, *under));
     else app.document().select({});
     if (under && under->kind == diagram::ItemKind::Transition) app.fire_target = qualified(s, *under);
   }
-  if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && under &&
-      under->kind == diagram::ItemKind::Instance) {
-    s.path = (s.path.empty() ? s.layout.page : s.path) + "/" + s.layout.instances[under->index].name;
-  }
-
   // the run's marking, when there is a run of this model
   std::optional<diagram::NetState> state;
   if (auto* session = app.run().session()) {
@@ -156,31 +144,33 @@ void drawNetView(App& app, const Rect& at, nlohmann::json& report) {
     state = diagram::netStateOf(sim.kernel(), s.view, [&](net::NodeRef ref) { return sim.nodeName(ref); });
   }
   ImDrawList* list = ImGui::GetWindowDrawList();
-  list->PushClipRect(origin, {origin.x + static_cast<float>(width), origin.y + static_cast<float>(height)}, true);
-  ImGuiCanvas canvas(list, origin.x, origin.y, width, height, app.fonts.regular);
-  const std::size_t drawn = diagram::paintNet(s.layout, *s.index, state ? &*state : nullptr, s.viewport, canvas);
+  const ImVec2 far{r.origin.x + static_cast<float>(r.width), r.origin.y + static_cast<float>(r.height)};
+  list->PushClipRect(r.origin, far, true);
+  ImGuiCanvas canvas(list, r.origin.x, r.origin.y, r.width, r.height, app.fonts.regular);
+  const std::size_t drawn = diagram::paintNet(s.layout, *s.index, state ? &*state : nullptr, viewport, canvas);
   // the selection: a frame around it in the IDE's highlight colour
   if (const auto sel = selectedItem(s, app.document().selection())) {
     const diagram::Box& box = s.layout.boxOf(*sel);
-    const diagram::Point lo = s.viewport.toScreen(box.min), hi = s.viewport.toScreen(box.max);
-    list->AddRect({origin.x + static_cast<float>(lo.x) - 4, origin.y + static_cast<float>(lo.y) - 4},
-                  {origin.x + static_cast<float>(hi.x) + 4, origin.y + static_cast<float>(hi.y) + 4},
+    const diagram::Point lo = viewport.toScreen(box.min), hi = viewport.toScreen(box.max);
+    list->AddRect({r.origin.x + static_cast<float>(lo.x) - 4, r.origin.y + static_cast<float>(lo.y) - 4},
+                  {r.origin.x + static_cast<float>(hi.x) + 4, r.origin.y + static_cast<float>(hi.y) + 4},
                   IM_COL32(255, 170, 0, 255), 3.0f, 0, 2.0f);
   }
   list->PopClipRect();
   if (under && ImGui::IsItemHovered() && under->kind != diagram::ItemKind::Arc) {
     ImGui::SetTooltip("%s", qualified(s, *under).c_str());
   }
-
   report["drawn"] = drawn;
+  report["zoom"] = viewport.zoom;
   // where the constructs stand in the window (for replay files and tests), on small pages
   if (s.layout.places.size() + s.layout.transitions.size() + s.layout.instances.size() <= 500) {
     nlohmann::json at_px = nlohmann::json::object();
     auto put = [&](diagram::ItemKind kind, std::size_t count) {
       for (std::uint32_t i = 0; i < count; ++i) {
         const diagram::Box& box = s.layout.boxOf({kind, i});
-        const diagram::Point p = s.viewport.toScreen((box.min + box.max) * 0.5);
-        at_px[qualified(s, {kind, i})] = {std::lround(static_cast<double>(origin.x) + p.x), std::lround(static_cast<double>(origin.y) + p.y)};
+        const diagram::Point p = viewport.toScreen((box.min + box.max) * 0.5);
+        at_px[qualified(s, {kind, i})] = {std::lround(static_cast<double>(r.origin.x) + p.x),
+                                          std::lround(static_cast<double>(r.origin.y) + p.y)};
       }
     };
     put(diagram::ItemKind::Place, s.layout.places.size());
@@ -188,9 +178,6 @@ void drawNetView(App& app, const Rect& at, nlohmann::json& report) {
     put(diagram::ItemKind::Instance, s.layout.instances.size());
     report["at"] = at_px;
   }
-  report["zoom"] = s.viewport.zoom;
-  report["places"] = s.layout.places.size();
-  report["transitions"] = s.layout.transitions.size();
   if (state) {
     nlohmann::json activity = nlohmann::json::object();
     for (std::uint32_t t = 0; t < s.layout.transitions.size() && t < state->transitions.size(); ++t) {
@@ -205,7 +192,62 @@ void drawNetView(App& app, const Rect& at, nlohmann::json& report) {
     }
     report["tokens"] = tokens;
   }
+  return under;
+}
+
+}  // namespace
+
+void drawNetView(App& app, const Rect& at, nlohmann::json& report) {
+  beginPanel("##net", at, "Net view");
+  NetViewState& s = app.netView();
+  drawPageBar(app, s);
+  ensureLayout(app, s);
+  report = {{"path", s.path}, {"page", s.layout.page}, {"places", s.layout.places.size()},
+            {"transitions", s.layout.transitions.size()}};
+  if (!s.error.empty()) {
+    ImGui::TextWrapped("%s", s.error.c_str());
+    report["error"] = s.error;
+    endPanel();
+    return;
+  }
+  const Region r = regionHere("##netcanvas");
+  if (s.fit) {
+    s.viewport = diagram::fitViewport(s.layout, r.width, r.height);
+    s.fit = false;
+  }
+  const ImGuiIO& io = ImGui::GetIO();
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
+    s.viewport = s.viewport.zoomedAbout(r.mouse, std::pow(1.15, static_cast<double>(io.MouseWheel)));
+  }
+  if (ImGui::IsItemActive() &&
+      (ImGui::IsMouseDragging(ImGuiMouseButton_Left) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle))) {
+    s.viewport = s.viewport.panned({io.MouseDelta.x, io.MouseDelta.y});
+  }
+  const auto under = clickAndPaint(app, s, r, s.viewport, report);
+  if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && under &&
+      under->kind == diagram::ItemKind::Instance) {
+    s.path = (s.path.empty() ? s.layout.page : s.path) + "/" + s.layout.instances[under->index].name;
+  }
   endPanel();
+}
+
+void drawMiniView(App& app, const Rect& world, nlohmann::json& report) {
+  report = {{"shown", app.show_mini}};
+  if (!app.show_mini) return;
+  NetViewState& s = app.netView();
+  ensureLayout(app, s);
+  const float w = std::max(160.0f, world.w * 0.45f), h = std::max(90.0f, world.h * 0.32f);
+  ImGui::SetNextWindowPos({world.x + world.w - w - 8, world.y + world.h - h - 8}, ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize({w, h}, ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowBgAlpha(0.92f);
+  const bool open = ImGui::Begin("Mini view", &app.show_mini,
+                                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                                     ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoFocusOnAppearing);
+  if (open && s.error.empty()) {
+    const Region r = regionHere("##minicanvas");
+    clickAndPaint(app, s, r, diagram::fitViewport(s.layout, r.width, r.height, 6.0), report);
+  }
+  ImGui::End();
 }
 
 }  // namespace gdpn::ide

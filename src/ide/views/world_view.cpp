@@ -77,6 +77,8 @@ void drawViewBar(App& app, scene::Scene* s) {
   ImGui::Checkbox("sensors", &app.show_sensors);
   ImGui::SameLine();
   ImGui::Checkbox("joints", &app.show_joints);
+  ImGui::SameLine();
+  ImGui::Checkbox("mini", &app.show_mini);
 }
 
 }  // namespace
