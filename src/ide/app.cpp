@@ -269,7 +269,7 @@ void App::frame(float width, float height, double wall_seconds) {
   drawWorldView(*this, layout.world, report["world"]);
   drawNetView(*this, layout.net, report["net_view"]);
   drawInspector(*this, layout.inspector, report["inspector"]);
-  drawDiagnostics(*this, layout.diagnostics, report["diagnostics"]);
+  drawDiagnostics(*this, layout.diagnostics, report["diagnostics"], report["breakpoints"]);
   drawStatusBar(*this, layout.status, report["status"]);
 
   // the splitters: drag a handle to move it

@@ -111,6 +111,7 @@ class App {
   std::string fire_target;          ///< the toolbar's chosen transition
   int run_n = 100;                  ///< the toolbar's N for Run N steps
   int break_tokens = 1;             ///< the inspector's token count for a place's breakpoint
+  std::string break_condition;      ///< the breakpoints' field: a Python condition being typed
   std::uint64_t drag_id = 0;        ///< the inspector's current drag (merge key)
   std::string inspector_error;      ///< why the last edit was refused
   std::string message;              ///< the status bar's message line

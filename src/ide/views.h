@@ -28,7 +28,10 @@ void drawMiniView(App& app, const Rect& world, nlohmann::json& report);
 /// The selected node's fields, edited through commands; a place's or transition's state.
 void drawInspector(App& app, const Rect& at, nlohmann::json& report);
 /// Every error and warning at file:line:col; a click selects the construct.
-void drawDiagnostics(App& app, const Rect& at, nlohmann::json& report);
+void drawDiagnostics(App& app, const Rect& at, nlohmann::json& report, nlohmann::json& breakpoints);
+/// The run's breakpoints (each with a button that removes it) and a field that adds one on a
+/// Python condition; drawn under the diagnostics.
+void drawBreakpoints(App& app, nlohmann::json& report);
 /// Model time, steps, real-time factor, frames per second, the message.
 void drawStatusBar(App& app, const Rect& at, nlohmann::json& report);
 

@@ -298,6 +298,12 @@ TEST_F(HeadlessIde, TheMiniViewShowsTheNetOverTheWorldAndAClickThereSelects) {
   EXPECT_EQ(clicked["inspector"]["contents"]["slots"].size(), 3u);
 }
 
+TEST_F(HeadlessIde, TheBreakpointsAreListedUnderTheDiagnostics) {
+  EXPECT_TRUE(replay("[]")["breakpoints"].empty());
+  const auto r = replay("- break: {starts: factory/pickup}\n- break: {when: 'sim.time > 20'}\n");
+  EXPECT_EQ(r["breakpoints"], nlohmann::json::array({"starts factory/pickup", "sim.time > 20"}));
+}
+
 TEST_F(HeadlessIde, TheFactoryAfterTwoSecondsLooksLikeItsGolden) {
   // golden: tests/data/golden/ide_factory.png, made by this test with GDPN_UPDATE_GOLDEN=1
   const auto shot = (dir_ / "shot.png").string();

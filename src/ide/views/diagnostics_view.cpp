@@ -2,6 +2,9 @@
 // file:line:col; a click selects the construct declared there.
 
 #include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
 
 #include "../views.h"
 #include "gdpn/scene/actions.h"
@@ -44,7 +47,7 @@ void selectAt(App& app, const core::SourceLoc& loc) {
 
 }  // namespace
 
-void drawDiagnostics(App& app, const Rect& at, nlohmann::json& report) {
+void drawDiagnostics(App& app, const Rect& at, nlohmann::json& report, nlohmann::json& breakpoints) {
   beginPanel("##diagnostics", at, "Diagnostics");
   report = nlohmann::json::array();
   int i = 0;
@@ -73,7 +76,38 @@ void drawDiagnostics(App& app, const Rect& at, nlohmann::json& report) {
     }
   }
   if (i == 0) ImGui::TextDisabled("No errors or warnings.");
+  drawBreakpoints(app, breakpoints);
   endPanel();
+}
+
+void drawBreakpoints(App& app, nlohmann::json& report) {
+  ImGui::Spacing();
+  ImGui::Separator();
+  ImGui::TextDisabled("Breakpoints");
+  report = nlohmann::json::array();
+  int i = 0;
+  for (const auto& description : app.run().breakpoints()) {
+    ImGui::PushID(i++);
+    if (ImGui::SmallButton("x")) (void)app.run().removeBreakpoint(description);
+    ImGui::PopID();
+    ImGui::SameLine();
+    ImGui::TextUnformatted(description.c_str());
+    report.push_back(description);
+  }
+  if (i == 0) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("None. Set them on a selected place or transition (inspector), or on a condition:");
+    ImGui::PopTextWrapPos();
+  }
+  // a Python condition, checked after every step (the run's globals and sim are in scope)
+  ImGui::SetNextItemWidth(std::max(80.0f, ImGui::GetContentRegionAvail().x - 60.0f));
+  const bool entered = ImGui::InputTextWithHint("##when", "when (Python), e.g. sim.time > 20", &app.break_condition,
+                                                ImGuiInputTextFlags_EnterReturnsTrue);
+  ImGui::SameLine();
+  if ((ImGui::Button("Add") || entered) && !app.break_condition.empty()) {
+    app.message = app.run().addBreakpoint(session::Breakpoint::predicate(app.break_condition));
+    if (app.message.empty()) app.break_condition.clear();
+  }
 }
 
 }  // namespace gdpn::ide
