@@ -8,6 +8,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include "detail/world_texture.h"
@@ -50,7 +51,46 @@ App::App(std::unique_ptr<Document> doc) : doc_(std::move(doc)), net_view_(std::m
   if (!names.empty()) fire_target = names.front();
 }
 
-App::~App() = default;
+App::~App() {
+  std::string why;
+  if (movie) (void)movie->close(why);  // a movie being filmed when the IDE closes is kept
+}
+
+void App::toggleMovie() {
+  if (!movie) {
+    movie = std::make_unique<capture::MovieWriter>();  // opened by filmFrame, which knows the size
+    movie_path = "gdpn-ide-" + std::to_string(++movies) + ".mp4";
+    message = "filming " + movie_path;
+    return;
+  }
+  std::string why;
+  const auto frames = movie->frames();
+  message = movie->frames() == 0 ? "no frames filmed"
+            : movie->close(why)  ? "saved " + movie_path + " (" + std::to_string(frames) + " frames)"
+                                 : movie_path + ": " + why;
+  movie.reset();
+}
+
+void App::filmFrame(int width, int height, const std::vector<std::uint8_t>& rgb) {
+  if (!movie) return;
+  const int w = width & ~1, h = height & ~1;
+  std::string why;
+  if (movie->frames() == 0 && !movie->open(movie_path, w, h, std::clamp(std::round(fps), 10.0, 60.0), why)) {
+    message = movie_path + ": " + why;
+    movie.reset();
+    return;
+  }
+  std::vector<std::uint8_t> even(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 3);
+  for (int y = 0; y < h; ++y) {
+    std::copy_n(rgb.begin() + static_cast<std::ptrdiff_t>(y) * width * 3, static_cast<std::size_t>(w) * 3,
+                even.begin() + static_cast<std::ptrdiff_t>(y) * w * 3);
+  }
+  if (!movie->write(even)) {
+    (void)movie->close(why);
+    message = movie_path + ": " + why;
+    movie.reset();
+  }
+}
 
 void App::initGraphics(Fonts f) {
   fonts = f;
@@ -166,6 +206,7 @@ bool App::perform(const Action& a, std::string& error) {
       else if (a.text == "reset") reset();
       else if (a.text == "plant-only") run_.setPlantOnly(!run_.plantOnly());
       else if (a.text == "mini-view") show_mini = !show_mini;
+      else if (a.text == "movie") toggleMovie();
       else if (a.text == "undo") undo();
       else if (a.text == "redo") redo();
       else if (a.text == "save") save();

@@ -17,6 +17,7 @@
 #include "gdpn/ide/orbit.h"
 #include "gdpn/ide/replay.h"
 #include "gdpn/ide/run_control.h"
+#include "gdpn/capture/movie.h"
 #include "gdpn/render/renderer.h"
 
 struct ImFont;
@@ -118,6 +119,14 @@ class App {
   double fps = 0;                   ///< frames per second, smoothed
   bool screenshot_requested = false;  ///< the toolbar asked for a picture of the next frame
   int screenshots = 0;              ///< pictures taken so far (their names count up)
+  std::unique_ptr<capture::MovieWriter> movie;  ///< the movie being filmed (null when none)
+  std::string movie_path;           ///< its file
+  int movies = 0;                   ///< movies started so far (their names count up)
+  /// Starts filming the window (its size taken at the next frame) or finishes the movie.
+  void toggleMovie();
+  /// Adds the frame just drawn (`width` x `height` pixels, RGB, top row first) to the movie;
+  /// an odd last row or column is left out (H.264 wants even sizes).
+  void filmFrame(int width, int height, const std::vector<std::uint8_t>& rgb);
   bool reveal_selection = false;    ///< the tree opens and scrolls to the selection once
   std::vector<std::string> pressed_keys;  ///< keys the world view delivered (report)
   std::array<bool, 512> key_was_down{};   ///< the world view's keys last frame, by GLFW code

@@ -40,11 +40,11 @@ class ActionReader {
     if (key == "screenshot") return word(v, a, ActionKind::Screenshot);
     if (key == "press") {
       if (!word(v, a, ActionKind::Press)) return false;
-      for (const char* c : {"run", "faster", "fastest", "pause", "step", "reset", "plant-only", "mini-view", "undo", "redo", "save"}) {
+      for (const char* c : {"run", "faster", "fastest", "pause", "step", "reset", "plant-only", "mini-view", "movie", "undo", "redo", "save"}) {
         if (a.text == c) return true;
       }
       return fail(v, "unknown control '" + a.text +
-                         "' (run, faster, fastest, pause, step, reset, plant-only, mini-view, undo, redo, save)");
+                         "' (run, faster, fastest, pause, step, reset, plant-only, mini-view, movie, undo, redo, save)");
     }
     if (key == "run") return number(v, a, ActionKind::RunFor, false);
     if (key == "steps") return number(v, a, ActionKind::Steps, true);

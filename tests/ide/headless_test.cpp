@@ -304,6 +304,27 @@ TEST_F(HeadlessIde, TheBreakpointsAreListedUnderTheDiagnostics) {
   EXPECT_EQ(r["breakpoints"], nlohmann::json::array({"starts factory/pickup", "sim.time > 20"}));
 }
 
+TEST_F(HeadlessIde, AMovieFilmsTheWindowIntoTheCurrentFolder) {
+  const auto file = write("movie.yaml", "- press: movie\n- press: run\n- frames: 12\n- press: movie\n");
+  const auto report = (dir_ / "report.json").string();
+  const auto model = std::filesystem::absolute("examples/factory").string();
+  // an odd size: the movie leaves the last row and column out
+  const auto r = runShell("cd '" + dir_.string() + "' && XDG_CONFIG_HOME='" + (dir_ / "config").string() +
+                          "' \"$GDPN\" ide '" + model + "' --headless --size 641x361 --replay '" + file +
+                          "' --report '" + report + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  std::ifstream in(report);
+  const auto j = nlohmann::json::parse(in, nullptr, false);
+  EXPECT_EQ(j["toolbar"]["filming"], false);
+  const std::string message = j["status"]["message"];
+  EXPECT_EQ(message.rfind("saved gdpn-ide-1.mp4 (", 0), 0u) << message;
+  ASSERT_TRUE(std::filesystem::exists(dir_ / "gdpn-ide-1.mp4"));
+  EXPECT_GT(std::filesystem::file_size(dir_ / "gdpn-ide-1.mp4"), 1000u);
+  const auto probe = runShell("ffprobe -v error -select_streams v:0 -show_entries stream=width,height -of csv=p=0 '" +
+                              (dir_ / "gdpn-ide-1.mp4").string() + "'");
+  EXPECT_EQ(probe.out.substr(0, 7), "640,360") << probe.out;
+}
+
 TEST_F(HeadlessIde, TheFactoryAfterTwoSecondsLooksLikeItsGolden) {
   // golden: tests/data/golden/ide_factory.png, made by this test with GDPN_UPDATE_GOLDEN=1
   const auto shot = (dir_ / "shot.png").string();

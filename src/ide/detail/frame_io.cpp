@@ -48,6 +48,8 @@ void drawFrame(App& app, int fb_width, int fb_height, double wall_seconds) {
   glClearColor(0.13F, 0.14F, 0.16F, 1.0F);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  // a movie being filmed takes every frame
+  if (app.movie) app.filmFrame(fb_width, fb_height, readFramebuffer(fb_width, fb_height));
   // the toolbar's Screenshot: the frame just drawn
   if (app.screenshot_requested) {
     app.screenshot_requested = false;

@@ -92,6 +92,12 @@ void drawToolbar(App& app, const Rect& at, nlohmann::json& report) {
   ImGui::SameLine(0, 18);
   if (ImGui::Button("Screenshot")) app.screenshot_requested = true;
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Save the window as gdpn-ide-N.png in the current folder");
+  ImGui::SameLine();
+  if (ImGui::Button(app.movie ? "Stop movie" : "Movie")) app.toggleMovie();
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("Film the window into gdpn-ide-N.mp4 in the current folder (through ffmpeg), one movie frame "
+                      "a drawn frame at the frame rate when filming began");
+  }
   ImGui::EndChild();
 
   report = {{"ready", ready},
@@ -100,7 +106,8 @@ void drawToolbar(App& app, const Rect& at, nlohmann::json& report) {
             {"transitions", names.size()},
             {"run_n", app.run_n},
             {"can_undo", history.canUndo()},
-            {"can_redo", history.canRedo()}};
+            {"can_redo", history.canRedo()},
+            {"filming", app.movie != nullptr}};
 }
 
 }  // namespace gdpn::ide
