@@ -56,6 +56,7 @@ struct Studio {
     draw.height = o.height;
     draw.sensors = o.sensors;
     draw.joints = o.joints;
+    draw.shadows = o.shadows;
     return true;
   }
 

@@ -150,7 +150,8 @@ void RasterCanvas::segments(std::span<const std::pair<Point, Point>> pieces, dou
   if (x1 < x0 || y1 < y0) return;
   const auto cols = static_cast<std::size_t>(x1 - x0 + 1);
   coverage_.assign(cols * static_cast<std::size_t>(y1 - y0 + 1), 0.0f);
-  for (const auto& [a, b] : pieces) {
+  for (const auto& ends : pieces) {
+    const Point a = ends.first, b = ends.second;  // not a structured binding: the lambda takes them
     Box piece{a, a};
     piece.add(b);
     forPixels(piece, ww, width_, height_, [&](int x, int y, Point p) {

@@ -39,11 +39,13 @@ struct WorldKey {
   int width = 0, height = 0;               ///< pixels
   bool sensors = false, joints = false;    ///< overlays
   const void* session = nullptr;           ///< the run drawn
+  bool shadows = true;                     ///< the main light's shadows
   friend bool operator==(const WorldKey& a, const WorldKey& b) {
     return a.steps == b.steps && a.mode == b.mode && a.revision == b.revision && a.eye.x == b.eye.x &&
            a.eye.y == b.eye.y && a.eye.z == b.eye.z && a.target.x == b.target.x && a.target.y == b.target.y &&
            a.target.z == b.target.z && a.fov == b.fov && a.selection == b.selection && a.width == b.width &&
-           a.height == b.height && a.sensors == b.sensors && a.joints == b.joints && a.session == b.session;
+           a.height == b.height && a.sensors == b.sensors && a.joints == b.joints && a.session == b.session &&
+           a.shadows == b.shadows;
   }
 };
 
@@ -108,6 +110,7 @@ class App {
   std::string camera_node;          ///< the scene Camera node in use ("" : the orbit camera)
   bool show_sensors = false;        ///< the world view draws sensor volumes
   bool show_joints = false;         ///< the world view draws joint axes
+  bool show_shadows = true;         ///< the world view's main light casts shadows
   bool show_mini = false;           ///< the mini view (the net over the world view) is open
   std::string fire_target;          ///< the toolbar's chosen transition
   int run_n = 100;                  ///< the toolbar's N for Run N steps

@@ -321,7 +321,8 @@ class Compiler {
     std::vector<std::uint32_t> begin(page.transitions.size() + 1, 0);
     std::vector<std::pair<std::uint32_t, Use>> uses;  // transition, use
     for (std::uint32_t i = 0; i < page.arcs.size(); ++i) {
-      const auto& [from, to] = index.arcs[i];
+      const End& from = index.arcs[i].first;  // not a structured binding: the lambda below takes it
+      const End& to = index.arcs[i].second;
       if (from.what == End::What::None || to.what == End::What::None) continue;
       const bool output = from.what == End::What::Transition;
       const auto& a = page.arcs[i];

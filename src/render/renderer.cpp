@@ -87,8 +87,38 @@ int shaderKind(scene::FogKind kind) {
 
 }  // namespace
 
+/// The depth texture the shadowing light sees, and the framebuffer that draws into it.
+struct ShadowMap {
+  static constexpr int kSize = 1024;  ///< texels on a side
+  GLuint fbo = 0, texture = 0;
+  /// Makes the texture and framebuffer the first time (needs a current context).
+  void ensure() {
+    if (fbo != 0) return;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, kSize, kSize, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, texture, 0);
+    glDrawBuffer(GL_NONE);
+    glReadBuffer(GL_NONE);
+  }
+  void release() {
+    if (fbo != 0) glDeleteFramebuffers(1, &fbo);
+    if (texture != 0) glDeleteTextures(1, &texture);
+    fbo = texture = 0;
+  }
+};
+
 struct Renderer::Impl {
   ShaderProgram program;
+  ShadowMap shadow;
   UnitShape cube = unitCube(), sphere = unitSphere(), cylinder = unitRound(false), cone = unitRound(true);
   GpuMesh plane = unitPlane();
   GpuCache files;
@@ -96,6 +126,7 @@ struct Renderer::Impl {
   explicit Impl(std::string model_dir) : files(std::move(model_dir)) {}
   ~Impl() {
     for (GpuMesh* g : {&cube.gpu, &sphere.gpu, &cylinder.gpu, &cone.gpu, &plane}) g->release();
+    shadow.release();
   }
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;
@@ -302,6 +333,7 @@ DrawStats Renderer::draw(const scene::Scene& scene, const Camera& cam, const Dra
     int kind;
     glm::vec3 colour, pos, dir;
     float cos;
+    glm::vec3 world_dir{0.0f};  // where it shines, world frame
   };
   std::vector<Light> lights;
   const Node* fog = nullptr;
@@ -320,6 +352,7 @@ DrawStats Renderer::draw(const scene::Scene& scene, const Camera& cam, const Dra
       l.pos = glm::vec3(view * glm::vec4(gv(n->world.apply(n->vec3(field::Light::Location))), 1.0f));
       l.dir = glm::mat3(view) * gv(n->world.rotation.rotate(n->vec3(field::Light::Direction)));
       l.cos = static_cast<float>(std::cos(n->number(field::Light::Cutoff) * std::numbers::pi / 180.0));
+      l.world_dir = gv(n->world.rotation.rotate(n->vec3(field::Light::Direction)));
       lights.push_back(l);
     }
     if (n->kind() == NodeKind::Fog && fog == nullptr) fog = n;
@@ -354,6 +387,58 @@ DrawStats Renderer::draw(const scene::Scene& scene, const Camera& cam, const Dra
 
   std::vector<Item> items;
   r.collect(root, nullptr, opt, items);
+  // shadows of the first directional light: the scene drawn from it into a depth map that
+  // covers a square about the camera's target, as wide as the target is far from the eye
+  int shadowing = -1;
+  for (std::size_t i = 0; i < lights.size() && opt.shadows; ++i) {
+    if (lights[i].kind == 0 && glm::length(lights[i].world_dir) > 0.0f) {
+      shadowing = static_cast<int>(i);
+      break;
+    }
+  }
+  glUniform1i(r.u("u_shadow_light"), shadowing);
+  glUniform1i(r.u("u_shadow_map"), 1);
+  if (shadowing >= 0) {
+    const glm::vec3 centre = gv(cam.target);
+    const float reach = std::clamp(1.5f * glm::length(gv(cam.eye) - centre), 2.0f, 400.0f);
+    const glm::vec3 dir = glm::normalize(lights[static_cast<std::size_t>(shadowing)].world_dir);
+    const glm::vec3 up = std::abs(dir.z) > 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1);
+    const glm::mat4 light_view = glm::lookAt(centre - dir * (2.0f * reach), centre, up);
+    const glm::mat4 light_proj = glm::ortho(-reach, reach, -reach, reach, 0.0f, 4.0f * reach);
+    GLint framebuffer = 0, viewport[4] = {0, 0, 0, 0};
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    r.shadow.ensure();
+    glBindFramebuffer(GL_FRAMEBUFFER, r.shadow.fbo);
+    glViewport(0, 0, ShadowMap::kSize, ShadowMap::kSize);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(2.0f, 4.0f);  // against shadow acne: surfaces do not shadow themselves
+    glUniformMatrix4fv(r.u("u_proj"), 1, GL_FALSE, glm::value_ptr(light_proj));
+    glUniform1i(r.u("u_shadow_light"), -1);
+    DrawStats depth_pass;
+    for (const auto& it : items) {
+      // planes bound the world below: they take shadows and cast none worth a full-map fill
+      const bool plane = it.node != nullptr && it.node->kind() == NodeKind::Plane;
+      if (it.look.alpha >= 1.0f && !it.look.unlit && !plane) r.drawItem(it, light_view, light_proj, cam, opt, depth_pass);
+    }
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
+    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    glUniformMatrix4fv(r.u("u_proj"), 1, GL_FALSE, glm::value_ptr(proj));
+    glUniform1i(r.u("u_shadow_light"), shadowing);
+    // view space -> light clip space -> the map's [0, 1] cube
+    const glm::mat4 bias = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+    const glm::mat4 to_map = bias * light_proj * light_view * glm::inverse(view);
+    glUniformMatrix4fv(r.u("u_shadow"), 1, GL_FALSE, glm::value_ptr(to_map));
+    // two texels along the normal: the 3 x 3 samples of a sloped surface stay in front of it
+    glUniform1f(r.u("u_shadow_offset"), 2.0f * (2.0f * reach / static_cast<float>(ShadowMap::kSize)));
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, r.shadow.texture);
+    glActiveTexture(GL_TEXTURE0);
+  }
   // opaque first, then the transparent ones from the farthest to the nearest, not writing depth
   std::vector<Item*> clear;
   for (auto& it : items) {

@@ -141,28 +141,50 @@ TEST(Render, TerrainLevelOfDetailDropsTrianglesWithDistance) {
   EXPECT_TRUE(renderer.problems().empty());
 }
 
+/// A model given as text, with a headless context, a `width` x `height` target and a renderer
+/// to draw it on: the set-up of the tests that call the renderer directly.
+struct DirectDraw {
+  std::unique_ptr<model::Simulation> sim;
+  std::unique_ptr<platform::GlContext> context;
+  std::unique_ptr<Target> target;
+  std::unique_ptr<Renderer> renderer;
+  DrawOptions options;
+  Camera camera;
+
+  DirectDraw(const std::string& yaml, const std::string& name, int width, int height) {
+    core::Diagnostics diags;
+    auto m = model::parseModel(yaml, name, diags);
+    EXPECT_TRUE(m) << diags.str();
+    if (m) sim = model::Simulation::create(*m, diags);
+    EXPECT_TRUE(sim) << diags.str();
+    std::string why;
+    context = createHeadlessContext(why);
+    EXPECT_TRUE(context) << why;
+    if (!sim || !context) return;
+    target = std::make_unique<Target>(width, height, 1);
+    renderer = std::make_unique<Renderer>(".");
+    options.width = width;
+    options.height = height;
+    camera = chooseCamera(*sim->plant(), "", 0, why);
+  }
+  [[nodiscard]] bool ready() const { return renderer != nullptr; }
+  DrawStats draw() { return renderer->draw(*sim->plant(), camera, options); }
+};
+
 TEST(Render, SensorsJointsAndTheSelectionAreDrawnOnlyWhenAsked) {
-  core::Diagnostics diags;
-  auto m = model::parseModel(R"(gdpn: 1
+  DirectDraw d(R"(gdpn: 1
 scene:
   - Camera: {position: [0, -4, 0], target: [0, 0, 0]}
   - Region: {name: r, shape: box, size: [1, 1, 1]}
   - Joint:
       kind: hinge
       children: [{Body: {name: b, children: [{Sphere: {radius: 0.2}}]}}]
-)", "overlay.gdpn.yaml", diags);
-  ASSERT_TRUE(m) << diags.str();
-  auto sim = model::Simulation::create(*m, diags);
-  ASSERT_TRUE(sim) << diags.str();
-  std::string why;
-  auto context = createHeadlessContext(why);
-  ASSERT_TRUE(context) << why;
-  Target target(160, 120, 1);
-  Renderer renderer(".");
-  DrawOptions o;
-  o.width = 160;
-  o.height = 120;
-  const Camera cam = chooseCamera(*sim->plant(), "", 0, why);
+)", "overlay.gdpn.yaml", 160, 120);
+  ASSERT_TRUE(d.ready());
+  auto& sim = d.sim;
+  auto& renderer = *d.renderer;
+  auto& o = d.options;
+  const Camera cam = d.camera;
   const auto plain = renderer.draw(*sim->plant(), cam, o);
   o.sensors = true;
   const auto sensors = renderer.draw(*sim->plant(), cam, o);
@@ -177,6 +199,42 @@ scene:
   auto copy = sim->plant()->clone();
   renderer.draw(*sim->plant(), cam, o);
   EXPECT_TRUE(copy->sameAs(*sim->plant()));
+}
+
+TEST(Render, TheDirectionalLightCastsAShadowOnTheSideItShinesTowards) {
+  // a cube 1 m above a plane, the light shining down and towards +x: its shadow falls on the
+  // plane at x = +1 (right of the cube in the picture), and nowhere else
+  DirectDraw d(R"(gdpn: 1
+scene:
+  - Camera: {position: [0, -6, 5], target: [0.5, 0, 0], fov: 40}
+  - Light: {kind: directional, direction: [1, 0, -1]}
+  - Material: {diffuse: [0.8, 0.8, 0.8], ambient: [0.2, 0.2, 0.2]}
+  - Plane: {}
+  - Transform: {translation: [0, 0, 1.2], children: [{Cube: {size: [0.6, 0.6, 0.6]}}]}
+)", "shadow.gdpn.yaml", 320, 240);
+  ASSERT_TRUE(d.ready());
+  d.options.shadows = false;
+  d.draw();
+  const auto plain = d.target->readRgb();
+  d.options.shadows = true;
+  d.draw();
+  const auto shaded = d.target->readRgb();
+  ASSERT_EQ(plain.size(), shaded.size());
+  // pixels the shadow darkens, and where they are
+  int darker = 0, brighter = 0;
+  double x_sum = 0;
+  for (std::size_t i = 0; i < plain.size(); i += 3) {
+    const int before = plain[i] + plain[i + 1] + plain[i + 2], after = shaded[i] + shaded[i + 1] + shaded[i + 2];
+    if (after < before - 60) {
+      ++darker;
+      x_sum += static_cast<double>((i / 3) % 320);
+    }
+    if (after > before + 3) ++brighter;
+  }
+  EXPECT_GT(darker, 400) << "a shadow about the cube's size";
+  EXPECT_LT(darker, 320 * 240 / 8) << "and not the whole plane";
+  EXPECT_EQ(brighter, 0) << "a shadow only takes light away";
+  EXPECT_GT(x_sum / darker, 160.0) << "the shadow lies towards +x, right of the middle";
 }
 
 TEST(Render, AMovieOfTwoSecondsHasItsFrames) {

@@ -19,6 +19,7 @@ struct CaptureOptions {
   std::string camera;       ///< path of the Camera node ("" : the scene's first, or a framing view)
   bool sensors = false;     ///< draw sensor overlays
   bool joints = false;      ///< draw joint axes
+  bool shadows = true;      ///< the first directional light casts shadows
   double fps = 30.0;        ///< movie frames per second
 };
 

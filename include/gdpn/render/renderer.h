@@ -27,6 +27,7 @@ struct DrawOptions {
   bool sensors = false;                ///< translucent sensor volumes and rays
   bool joints = false;                 ///< joint axes
   scene::NodeHandle selection = 0;     ///< a node whose shapes get outlined (0: none)
+  bool shadows = true;                 ///< the first directional light casts shadows (near the camera's target)
   double lod_error = 2.0;              ///< terrain: the most a simplification may move a vertex on screen, pixels
 };
 

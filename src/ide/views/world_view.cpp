@@ -78,6 +78,8 @@ void drawViewBar(App& app, scene::Scene* s) {
   ImGui::SameLine();
   ImGui::Checkbox("joints", &app.show_joints);
   ImGui::SameLine();
+  ImGui::Checkbox("shadows", &app.show_shadows);
+  ImGui::SameLine();
   ImGui::Checkbox("mini", &app.show_mini);
 }
 
@@ -111,11 +113,13 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
   options.width = w;
   options.height = h;
   options.sensors = app.show_sensors;
+  options.shadows = app.show_shadows;
   options.joints = app.show_joints;
   options.selection = highlighted(app, *s);
   // draw only when something seen changed: the run, the model, the camera, the selection
   const WorldKey seen{app.run().steps(), app.run().mode(), app.document().revision(), camera.eye, camera.target,
-                     camera.fov, options.selection, w, h, options.sensors, options.joints, app.run().session()};
+                     camera.fov, options.selection, w, h, options.sensors, options.joints, app.run().session(),
+                     options.shadows};
   if (!(seen == app.world_key) || app.world_stats.draw_calls == 0) {
     app.world_texture->begin(w, h);
     app.world_stats = app.renderer->draw(*s, camera, options);

@@ -10,12 +10,17 @@ layout(location = 1) in vec3 a_normal;
 uniform mat4 u_model_view;
 uniform mat4 u_proj;
 uniform mat3 u_normal;
+uniform mat4 u_shadow;      // view space to the shadow map's [0, 1] cube
+uniform float u_shadow_offset;  // m along the normal: a surface does not shadow itself
 out vec3 v_pos;
 out vec3 v_normal;
+out vec4 v_shadow;
 void main() {
   vec4 p = u_model_view * vec4(a_pos, 1.0);
   v_pos = p.xyz;
   v_normal = u_normal * a_normal;
+  float ln = length(v_normal);
+  v_shadow = u_shadow * vec4(p.xyz + (ln > 0.0 ? v_normal / ln : vec3(0.0)) * u_shadow_offset, 1.0);
   gl_Position = u_proj * p;
 }
 )";
@@ -23,6 +28,7 @@ void main() {
 constexpr const char* kFragment = R"(#version 330 core
 in vec3 v_pos;
 in vec3 v_normal;
+in vec4 v_shadow;
 out vec4 o_color;
 uniform vec3 u_ambient, u_diffuse, u_specular, u_emissive;
 uniform float u_shininess, u_alpha;
@@ -37,6 +43,14 @@ uniform float u_lcos[8];    // cosine of a spot's half-angle
 uniform int u_fog;          // 0 none, 1 linear, 2 exponential
 uniform vec3 u_fog_color;
 uniform float u_fog_visibility;
+uniform int u_shadow_light;         // the light that casts shadows, -1 none
+uniform sampler2DShadow u_shadow_map;
+// how much of the shadowing light reaches this point: 0 in full shadow, 1 in full light
+float lit() {
+  vec3 s = v_shadow.xyz / v_shadow.w;
+  if (s.x <= 0.0 || s.x >= 1.0 || s.y <= 0.0 || s.y >= 1.0 || s.z >= 1.0) return 1.0;
+  return texture(u_shadow_map, s);  // linear filtering compares 2 x 2 texels: soft edges
+}
 void main() {
   vec3 c = u_emissive;
   if (u_unlit == 0) {
@@ -57,6 +71,7 @@ void main() {
           k = smoothstep(u_lcos[i], u_lcos[i] + 0.02, s);
         }
       }
+      if (i == u_shadow_light) k *= lit();
       float nl = max(dot(n, l), 0.0);
       vec3 h = normalize(l + v);
       float spec = nl > 0.0 ? pow(max(dot(n, h), 0.0), exponent) : 0.0;
