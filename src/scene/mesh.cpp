@@ -91,6 +91,57 @@ std::string placeIn(const std::string& text, std::size_t at) {
   return "line " + std::to_string(line) + " column " + std::to_string(column);
 }
 
+/// Where a COLLADA file's numbers that Assimp trusts are wrong, or npos: a `count`, `stride`,
+/// `offset` or `set` attribute that is not a whole number below a billion, or an array
+/// (`float_array`, `int_array`, ...) holding another number of values than its `count` says.
+/// Assimp sizes its buffers by these and then reads past them. `what` says which.
+std::size_t badColladaNumber(std::string_view text, std::string& what) {
+  for (std::size_t at = text.find('='); at != std::string_view::npos; at = text.find('=', at + 1)) {
+    std::size_t name_end = at;
+    while (name_end > 0 && text[name_end - 1] == ' ') --name_end;
+    std::size_t name_begin = name_end;
+    while (name_begin > 0 && (std::isalnum(static_cast<unsigned char>(text[name_begin - 1])) != 0 ||
+                              text[name_begin - 1] == '_')) {
+      --name_begin;
+    }
+    const auto name = text.substr(name_begin, name_end - name_begin);
+    if (name != "count" && name != "stride" && name != "offset" && name != "set") continue;
+    std::size_t v = at + 1;
+    while (v < text.size() && text[v] == ' ') ++v;
+    if (v >= text.size() || (text[v] != '"' && text[v] != '\'')) continue;
+    const auto close = text.find(text[v], v + 1);
+    if (close == std::string_view::npos) continue;
+    const auto value = text.substr(v + 1, close - v - 1);
+    const bool whole = !value.empty() && value.size() <= 9 &&
+                       std::all_of(value.begin(), value.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (!whole) {
+      what = "its " + std::string(name) + " is not a whole number below a billion";
+      return v;
+    }
+    // an array's values must be as many as its count: <float_array ... count="N">v v v</float_array>
+    if (name != "count") continue;
+    const auto open = text.rfind('<', name_begin);
+    if (open == std::string_view::npos) continue;
+    const auto element = text.substr(open + 1, text.find_first_of(" \t\r\n>", open + 1) - open - 1);
+    if (!element.ends_with("_array")) continue;
+    const auto body = text.find('>', close);
+    const auto end = body == std::string_view::npos ? body : text.find('<', body);
+    if (end == std::string_view::npos) continue;
+    std::size_t values = 0;
+    bool in_value = false;
+    for (std::size_t i = body + 1; i < end; ++i) {
+      const bool space = text[i] == ' ' || text[i] == '\t' || text[i] == '\r' || text[i] == '\n';
+      if (!space && !in_value) ++values;
+      in_value = !space;
+    }
+    if (values != std::stoull(std::string(value))) {
+      what = "its " + std::string(element) + " says " + std::string(value) + " values but holds " + std::to_string(values);
+      return v;
+    }
+  }
+  return std::string_view::npos;
+}
+
 /// Where `text` first nests deeper than kMaxNesting, or npos. Brackets (`{[` for VRML, Inventor
 /// and JSON) or XML elements (`xml`) open a level; strings and comments are skipped.
 std::size_t tooDeep(std::string_view text, bool xml) {
@@ -313,6 +364,13 @@ bool precheck(const std::string& path, const std::string& ext, std::string& why)
     why = placeIn(*text, at + static_cast<std::size_t>(scan.data() - text->data())) + ": nested more than " +
           std::to_string(kMaxNesting) + " levels deep, the most gdpn reads";
     return false;
+  }
+  if (ext == ".dae") {
+    std::string what;
+    if (const auto at = badColladaNumber(scan, what); at != std::string::npos) {
+      why = placeIn(*text, at + static_cast<std::size_t>(scan.data() - text->data())) + ": " + what;
+      return false;
+    }
   }
   return true;
 }
