@@ -60,8 +60,12 @@ void placeContents(const session::Session& session, net::PlaceId p, nlohmann::js
       const auto slot = static_cast<net::SlotId>(s);
       const std::string name = net::slotName(slot);
       const auto ps = net.findPlaceSlot(p, slot);
-      if (ps < 0) {
-        ImGui::TextDisabled("%s", name.c_str());
+      if (ps < 0) {  // a slot the place does not use: a faint cell, so that the rows line up
+        ImGui::BeginDisabled();
+        ImGui::PushStyleColor(ImGuiCol_Button, {0.2f, 0.21f, 0.23f, 1.0f});
+        ImGui::Button(name.c_str(), {56, 0});
+        ImGui::PopStyleColor();
+        ImGui::EndDisabled();
         continue;
       }
       const auto& info = net.placeSlots()[static_cast<std::size_t>(ps)];
