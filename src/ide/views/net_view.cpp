@@ -55,9 +55,14 @@ Selection selectionOf(const NetViewState& s, diagram::ItemRef item) {
 
 /// The laid-out item the selection names on this page, if it is here.
 std::optional<diagram::ItemRef> selectedItem(const NetViewState& s, const Selection& sel) {
+  // the selection's page-local name, when it lies on this page: no string is built per item
+  const std::string& prefix = s.view.prefix.empty() ? s.layout.page : s.view.prefix;
+  const std::string_view name(sel.name);
+  if (!name.starts_with(prefix) || name.size() <= prefix.size() || name[prefix.size()] != '/') return std::nullopt;
+  const std::string_view local = name.substr(prefix.size() + 1);
   auto find = [&](const auto& items, diagram::ItemKind kind) -> std::optional<diagram::ItemRef> {
     for (std::uint32_t i = 0; i < items.size(); ++i) {
-      if (qualified(s, {kind, i}) == sel.name) return diagram::ItemRef{kind, i};
+      if (items[i].name == local) return diagram::ItemRef{kind, i};
     }
     return std::nullopt;
   };
@@ -68,6 +73,10 @@ std::optional<diagram::ItemRef> selectedItem(const NetViewState& s, const Select
     default: return std::nullopt;
   }
 }
+
+/// Pages of at most this many constructs report each one (positions, activity, tokens); the
+/// report is made every frame, and a large page would cost a string per construct.
+constexpr std::size_t kReportedItems = 500;
 
 const char* activityName(diagram::Activity a) {
   switch (a) {
@@ -163,7 +172,7 @@ std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const R
   report["drawn"] = drawn;
   report["zoom"] = viewport.zoom;
   // where the constructs stand in the window (for replay files and tests), on small pages
-  if (s.layout.places.size() + s.layout.transitions.size() + s.layout.instances.size() <= 500) {
+  if (s.layout.places.size() + s.layout.transitions.size() + s.layout.instances.size() <= kReportedItems) {
     nlohmann::json at_px = nlohmann::json::object();
     auto put = [&](diagram::ItemKind kind, std::size_t count) {
       for (std::uint32_t i = 0; i < count; ++i) {
@@ -178,7 +187,8 @@ std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const R
     put(diagram::ItemKind::Instance, s.layout.instances.size());
     report["at"] = at_px;
   }
-  if (state) {
+  // what each construct shows, on small pages (the report is made every frame)
+  if (state && s.layout.places.size() + s.layout.transitions.size() <= kReportedItems) {
     nlohmann::json activity = nlohmann::json::object();
     for (std::uint32_t t = 0; t < s.layout.transitions.size() && t < state->transitions.size(); ++t) {
       activity[qualified(s, {diagram::ItemKind::Transition, t})] = activityName(state->transitions[t]);
