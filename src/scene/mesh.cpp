@@ -26,6 +26,7 @@
 #include <mutex>
 #include <sstream>
 
+#include "gdpn/core/child_process.h"
 #include "gdpn/core/file.h"
 #include "gdpn/core/text.h"
 #include "gdpn/scene/node.h"
@@ -41,7 +42,10 @@ std::size_t MeshData::triangles() const {
 core::Aabb MeshData::bounds() const {
   core::Aabb box;
   for (const auto& p : parts) {
-    for (std::size_t i = 0; i + 2 < p.positions.size(); i += 3) box.add(core::Vec3{p.positions[i], p.positions[i + 1], p.positions[i + 2]});
+    for (std::size_t i = 0; i + 2 < p.positions.size(); i += 3) {
+      box.add(core::Vec3{static_cast<double>(p.positions[i]), static_cast<double>(p.positions[i + 1]),
+                         static_cast<double>(p.positions[i + 2])});
+    }
   }
   return box;
 }
@@ -93,7 +97,8 @@ std::string placeIn(const std::string& text, std::size_t at) {
 
 /// Where a COLLADA file's numbers that Assimp trusts are wrong, or npos: a `count`, `stride`,
 /// `offset` or `set` attribute that is not a whole number below a billion, or an array
-/// (`float_array`, `int_array`, ...) holding another number of values than its `count` says.
+/// (`float_array`, `int_array`, ...) holding another number of values than its `count` says,
+/// or an index list (`p`, `v`, `vcount`) holding anything but whole numbers below a billion.
 /// Assimp sizes its buffers by these and then reads past them. `what` says which.
 std::size_t badColladaNumber(std::string_view text, std::string& what) {
   for (std::size_t at = text.find('='); at != std::string_view::npos; at = text.find('=', at + 1)) {
@@ -137,6 +142,26 @@ std::size_t badColladaNumber(std::string_view text, std::string& what) {
     if (values != std::stoull(std::string(value))) {
       what = "its " + std::string(element) + " says " + std::string(value) + " values but holds " + std::to_string(values);
       return v;
+    }
+  }
+  // index lists: <p>, <v> and <vcount> hold whole numbers only
+  for (const std::string_view tag : {"<p", "<v", "<vcount"}) {
+    for (std::size_t at = text.find(tag); at != std::string_view::npos; at = text.find(tag, at + 1)) {
+      const std::size_t after = at + tag.size();
+      if (after >= text.size() || (text[after] != '>' && text[after] != ' ')) continue;
+      const auto body = text.find('>', after);
+      const auto end = body == std::string_view::npos ? body : text.find('<', body);
+      if (end == std::string_view::npos) continue;
+      std::size_t digits = 0;
+      for (std::size_t i = body + 1; i < end; ++i) {
+        const char c = text[i];
+        const bool space = c == ' ' || c == '\t' || c == '\r' || c == '\n';
+        digits = space ? 0 : digits + 1;
+        if ((!space && (c < '0' || c > '9')) || digits > 9) {
+          what = "its <" + std::string(tag.substr(1)) + "> holds something other than whole numbers below a billion";
+          return i - digits + 1;
+        }
+      }
     }
   }
   return std::string_view::npos;
@@ -409,13 +434,116 @@ bool onLargeStack(const std::function<bool()>& work, std::string& why) {
   return job.ok && job.error.empty();
 }
 
+// --- across the process boundary ---------------------------------------------------------
+
+/// A MeshData as bytes, for the child that reads the file to hand it to the parent.
+class MeshWriter {
+ public:
+  std::string bytes;
+  void count(std::size_t n) { raw(&n, sizeof n); }
+  void text(const std::string& s) {
+    count(s.size());
+    bytes += s;
+  }
+  template <typename T>
+  void array(const std::vector<T>& v) {
+    count(v.size());
+    raw(v.data(), v.size() * sizeof(T));
+  }
+  template <typename T>
+  void value(const T& v) { raw(&v, sizeof v); }
+  void raw(const void* data, std::size_t size) { bytes.append(static_cast<const char*>(data), size); }
+};
+
+/// Reads what MeshWriter wrote; every read checks that the bytes hold it.
+class MeshReader {
+ public:
+  explicit MeshReader(std::string_view bytes) : rest_(bytes) {}
+  bool count(std::size_t& n) { return raw(&n, sizeof n); }
+  bool text(std::string& s) {
+    std::size_t n = 0;
+    if (!count(n) || n > rest_.size()) return false;
+    s.assign(rest_.substr(0, n));
+    rest_.remove_prefix(n);
+    return true;
+  }
+  template <typename T>
+  bool array(std::vector<T>& v) {
+    std::size_t n = 0;
+    if (!count(n) || n > rest_.size() / sizeof(T)) return false;
+    v.resize(n);
+    return raw(v.data(), n * sizeof(T));
+  }
+  template <typename T>
+  bool value(T& v) { return raw(&v, sizeof v); }
+  bool raw(void* data, std::size_t size) {
+    if (size > rest_.size()) return false;
+    if (size > 0) std::memcpy(data, rest_.data(), size);
+    rest_.remove_prefix(size);
+    return true;
+  }
+  [[nodiscard]] bool done() const { return rest_.empty(); }
+
+ private:
+  std::string_view rest_;
+};
+
+std::string encode(const MeshData& mesh) {
+  MeshWriter w;
+  w.count(mesh.materials.size());
+  for (const auto& m : mesh.materials) {
+    w.text(m.name);
+    for (const auto* c : {&m.ambient, &m.diffuse, &m.specular, &m.emissive}) w.value(*c);
+    w.value(m.shininess);
+    w.value(m.transparency);
+  }
+  w.count(mesh.parts.size());
+  for (const auto& p : mesh.parts) {
+    w.text(p.name);
+    w.array(p.positions);
+    w.array(p.normals);
+    w.array(p.indices);
+    w.value(p.material);
+  }
+  return std::move(w.bytes);
+}
+
+bool decode(std::string_view bytes, MeshData& mesh) {
+  MeshReader r(bytes);
+  std::size_t n = 0;
+  if (!r.count(n) || n > bytes.size()) return false;
+  mesh.materials.resize(n);
+  for (auto& m : mesh.materials) {
+    if (!r.text(m.name)) return false;
+    for (auto* c : {&m.ambient, &m.diffuse, &m.specular, &m.emissive}) {
+      if (!r.value(*c)) return false;
+    }
+    if (!r.value(m.shininess) || !r.value(m.transparency)) return false;
+  }
+  if (!r.count(n) || n > bytes.size()) return false;
+  mesh.parts.resize(n);
+  for (auto& p : mesh.parts) {
+    if (!r.text(p.name) || !r.array(p.positions) || !r.array(p.normals) || !r.array(p.indices) || !r.value(p.material)) {
+      return false;
+    }
+  }
+  return r.done();
+}
+
+/// How long a library may take over a file of `bytes` (s): 5 s and 1 s per MiB begun.
+double readSeconds(std::uintmax_t bytes) { return 5.0 + std::ceil(static_cast<double>(bytes) / (1 << 20)); }
+
+/// How much memory a library may take over a file of `bytes`: 2 GiB and 64 times the file.
+std::size_t readMemory(std::uintmax_t bytes) { return (std::size_t{2} << 30) + 64 * static_cast<std::size_t>(bytes); }
+
 // --- Assimp ------------------------------------------------------------------------------
 
 std::array<double, 3> color(const aiMaterial& m, const char* key, unsigned type, unsigned index,
                             std::array<double, 3> fallback) {
   aiColor3D c;
   if (m.Get(key, type, index, c) != AI_SUCCESS) return fallback;
-  return {std::clamp<double>(c.r, 0, 1), std::clamp<double>(c.g, 0, 1), std::clamp<double>(c.b, 0, 1)};
+  return {std::clamp(static_cast<double>(c.r), 0.0, 1.0), std::clamp(static_cast<double>(c.g), 0.0, 1.0),
+          std::clamp(static_cast<double>(c.b), 0.0, 1.0)};
 }
 
 /// Sets `mesh`'s primitive types from its faces (points, lines, triangles, polygons).
@@ -518,12 +646,15 @@ SoCallbackAction::Response coinShape(void* data, SoCallbackAction* action, const
   float shininess = 0, transparency = 0;
   action->getMaterial(ambient, diffuse, specular, emission, shininess, transparency);
   MeshMaterial m;
-  m.ambient = {ambient[0], ambient[1], ambient[2]};
-  m.diffuse = {diffuse[0], diffuse[1], diffuse[2]};
-  m.specular = {specular[0], specular[1], specular[2]};
-  m.emissive = {emission[0], emission[1], emission[2]};
-  m.shininess = shininess;
-  m.transparency = transparency;
+  const auto rgb = [](const SbColor& c) {
+    return std::array<double, 3>{static_cast<double>(c[0]), static_cast<double>(c[1]), static_cast<double>(c[2])};
+  };
+  m.ambient = rgb(ambient);
+  m.diffuse = rgb(diffuse);
+  m.specular = rgb(specular);
+  m.emissive = rgb(emission);
+  m.shininess = static_cast<double>(shininess);
+  m.transparency = static_cast<double>(transparency);
   read->mesh->materials.push_back(m);
   read->part.material = static_cast<int>(read->mesh->materials.size() - 1);
   return SoCallbackAction::CONTINUE;
@@ -544,13 +675,18 @@ void coinTriangle(void* data, SoCallbackAction* action, const SoPrimitiveVertex*
   }
 }
 
-bool readWithCoin(const std::string& path, MeshData& mesh, std::string& why) {
+/// Starts Coin and routes its messages to coinError (once).
+void initCoin() {
   static std::once_flag once;
   std::call_once(once, [] {
     SoDB::init();
     SoReadError::setHandlerCallback(coinError, nullptr);
     SoDebugError::setHandlerCallback(coinError, nullptr);
   });
+}
+
+bool readWithCoin(const std::string& path, MeshData& mesh, std::string& why) {
+  initCoin();
   CoinRead read;
   read.mesh = &mesh;
   g_coin = &read;
@@ -578,7 +714,8 @@ bool readWithCoin(const std::string& path, MeshData& mesh, std::string& why) {
 std::shared_ptr<const MeshData> readMesh(const std::string& path, std::string& why) {
   // Coin reports through globals and neither library promises to be reentrant: one read at a time
   static std::mutex mutex;
-  if (!core::inputFileSize(path, why)) return nullptr;
+  const auto size = core::inputFileSize(path, why);
+  if (!size) return nullptr;
   const std::string ext = extensionOf(path);
   if (!isMeshFile(path)) {
     why = "unsupported mesh format '" + ext + "' (gdpn reads obj, stl, 3ds, gltf, glb, dae, ply, wrl, iv)";
@@ -587,11 +724,30 @@ std::shared_ptr<const MeshData> readMesh(const std::string& path, std::string& w
   const bool coin = ext == ".wrl" || ext == ".iv";
   std::lock_guard lock(mutex);
   if (!precheck(path, ext, why)) return nullptr;
+  if (coin) initCoin();  // once, here, so that no child pays for it
+  // The libraries crash, abort and loop on some malformed files the checks above let through:
+  // they read in a child process, bounded in time and memory, and hand back the mesh as bytes.
+  // They recurse per level of nesting, so they get a stack of our choosing there.
+  std::string bytes;
+  const auto end = core::runInChild(
+      [&](std::string& out, std::string& error) {
+        MeshData read;
+        if (!onLargeStack([&] { return coin ? readWithCoin(path, read, error) : readWithAssimp(path, read, error); },
+                          error)) {
+          return false;
+        }
+        out = encode(read);
+        return true;
+      },
+      readSeconds(*size), readMemory(*size), bytes, why);
+  if (end == core::ChildEnd::lost) why = std::string(coin ? "Coin3D" : "Assimp") + " " + why + " reading it";
+  if (end != core::ChildEnd::done) return nullptr;
   auto mesh = std::make_shared<MeshData>();
+  if (!decode(bytes, *mesh)) {
+    why = "the reading process sent back a mesh that does not decode";
+    return nullptr;
+  }
   mesh->path = path;
-  // the libraries recurse per level of nesting: give them a stack of our choosing
-  const bool ok = onLargeStack([&] { return coin ? readWithCoin(path, *mesh, why) : readWithAssimp(path, *mesh, why); }, why);
-  if (!ok) return nullptr;
   if (mesh->parts.empty()) {
     why = "it holds no triangles";
     return nullptr;
