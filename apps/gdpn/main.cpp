@@ -590,6 +590,7 @@ int main(int argc, char** argv) {
     cmd->add_flag("--sensors", args.options.sensors, "draw sensor volumes and rays");
     cmd->add_flag("--joints", args.options.joints, "draw joint axes");
     cmd->add_flag("!--no-shadows", args.options.shadows, "no shadows (they cost about half a frame more on a software renderer)");
+    cmd->add_flag("!--no-ground", args.options.ground, "no sky and no ground grid: the background in one colour");
     cmd->add_option("--seed", args.seed, "the random seed (default: the model's)")->check(kSeed);
     cmd->add_option("-o,--output", args.out, "the file to write")->required();
   };
@@ -635,7 +636,7 @@ int main(int argc, char** argv) {
   if (analyze_cmd->parsed()) return analyze(analyze_args);
   if (render_cmd->parsed()) {
     // the plant's options and the net's do not mix
-    for (const char* plant_only : {"--camera", "--samples", "--sensors", "--joints", "--no-shadows"}) {
+    for (const char* plant_only : {"--camera", "--samples", "--sensors", "--joints", "--no-shadows", "--no-ground"}) {
       if (render_args.net && render_cmd->get_option(plant_only)->count() > 0) {
         std::cerr << "error: " << plant_only << " draws the plant; it does not go with --net\n";
         return 2;

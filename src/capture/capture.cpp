@@ -57,6 +57,7 @@ struct Studio {
     draw.sensors = o.sensors;
     draw.joints = o.joints;
     draw.shadows = o.shadows;
+    draw.sky = draw.grid = o.ground;
     return true;
   }
 

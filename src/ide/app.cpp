@@ -206,6 +206,11 @@ bool App::perform(const Action& a, std::string& error) {
       else if (a.text == "reset") reset();
       else if (a.text == "plant-only") run_.setPlantOnly(!run_.plantOnly());
       else if (a.text == "mini-view") show_mini = !show_mini;
+      else if (a.text == "sensors") show_sensors = !show_sensors;
+      else if (a.text == "joints") show_joints = !show_joints;
+      else if (a.text == "contacts") show_contacts = !show_contacts;
+      else if (a.text == "shadows") show_shadows = !show_shadows;
+      else if (a.text == "grid") show_grid = !show_grid;
       else if (a.text == "movie") toggleMovie();
       else if (a.text == "undo") undo();
       else if (a.text == "redo") redo();

@@ -35,17 +35,15 @@ struct WorldKey {
   std::uint64_t revision = 0;              ///< the document's revision
   core::Vec3 eye, target;                  ///< the camera, m
   double fov = 0;                          ///< degrees
-  scene::NodeHandle selection = 0;         ///< the highlighted node
+  std::vector<scene::NodeHandle> selection;  ///< the highlighted nodes
   int width = 0, height = 0;               ///< pixels
-  bool sensors = false, joints = false;    ///< overlays
+  unsigned shown = 0;                      ///< the overlays and looks on (App::Show bits)
   const void* session = nullptr;           ///< the run drawn
-  bool shadows = true;                     ///< the main light's shadows
   friend bool operator==(const WorldKey& a, const WorldKey& b) {
     return a.steps == b.steps && a.mode == b.mode && a.revision == b.revision && a.eye.x == b.eye.x &&
            a.eye.y == b.eye.y && a.eye.z == b.eye.z && a.target.x == b.target.x && a.target.y == b.target.y &&
            a.target.z == b.target.z && a.fov == b.fov && a.selection == b.selection && a.width == b.width &&
-           a.height == b.height && a.sensors == b.sensors && a.joints == b.joints && a.session == b.session &&
-           a.shadows == b.shadows;
+           a.height == b.height && a.shown == b.shown && a.session == b.session;
   }
 };
 
@@ -110,7 +108,9 @@ class App {
   std::string camera_node;          ///< the scene Camera node in use ("" : the orbit camera)
   bool show_sensors = false;        ///< the world view draws sensor volumes
   bool show_joints = false;         ///< the world view draws joint axes
+  bool show_contacts = false;       ///< the world view marks the contact points of the last step
   bool show_shadows = true;         ///< the world view's main light casts shadows
+  bool show_grid = true;            ///< the world view draws the ground grid
   bool show_mini = false;           ///< the mini view (the net over the world view) is open
   std::string fire_target;          ///< the toolbar's chosen transition
   int run_n = 100;                  ///< the toolbar's N for Run N steps

@@ -40,11 +40,15 @@ class ActionReader {
     if (key == "screenshot") return word(v, a, ActionKind::Screenshot);
     if (key == "press") {
       if (!word(v, a, ActionKind::Press)) return false;
-      for (const char* c : {"run", "faster", "fastest", "pause", "step", "reset", "plant-only", "mini-view", "movie", "undo", "redo", "save"}) {
+      static constexpr const char* kControls[] = {"run",    "faster",  "fastest",  "pause",   "step",    "reset",
+                                                  "plant-only", "mini-view", "sensors", "joints", "contacts",
+                                                  "shadows", "grid",    "movie",    "undo",    "redo",    "save"};
+      std::string known;
+      for (const char* c : kControls) {
         if (a.text == c) return true;
+        known += (known.empty() ? "" : ", ") + std::string(c);
       }
-      return fail(v, "unknown control '" + a.text +
-                         "' (run, faster, fastest, pause, step, reset, plant-only, mini-view, movie, undo, redo, save)");
+      return fail(v, "unknown control '" + a.text + "' (" + known + ")");
     }
     if (key == "run") return number(v, a, ActionKind::RunFor, false);
     if (key == "steps") return number(v, a, ActionKind::Steps, true);

@@ -113,7 +113,22 @@ void World::Impl::nearCallback(void* data, dGeomID o1, dGeomID o2) {
     }
     dJointID c = dJointCreateContact(self.world, self.contacts, &contact[i]);
     dJointAttach(c, b1, b2);
+    if (self.record_contacts) {
+      const dContactGeom& g = contact[i].geom;
+      self.touching.push_back({Vec3{g.pos[0], g.pos[1], g.pos[2]}, Vec3{g.normal[0], g.normal[1], g.normal[2]}, g.depth});
+    }
   }
 }
+
+}  // namespace gdpn::physics
+
+namespace gdpn::physics {
+
+void World::recordContacts(bool on) {
+  impl_->record_contacts = on;
+  if (!on) impl_->touching.clear();
+}
+
+const std::vector<World::Contact>& World::contacts() const { return impl_->touching; }
 
 }  // namespace gdpn::physics

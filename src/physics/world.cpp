@@ -105,6 +105,7 @@ void World::Impl::step(double dt) {
       if (f.x != 0 || f.y != 0 || f.z != 0) dBodyAddForce(b.id, f.x, f.y, f.z);
       if (b.torque.x != 0 || b.torque.y != 0 || b.torque.z != 0) dBodyAddTorque(b.id, b.torque.x, b.torque.y, b.torque.z);
     }
+    touching.clear();
     collide();
     dWorldQuickStep(world, h);
     dJointGroupEmpty(contacts);

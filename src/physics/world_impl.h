@@ -111,6 +111,8 @@ struct World::Impl {
   dWorldID world = nullptr;
   dSpaceID space = nullptr;  // holds every geometry; never collided (see the broad phase below)
   dJointGroupID contacts = nullptr;
+  bool record_contacts = false;          ///< keep the contact points of each sub-step (World::recordContacts)
+  std::vector<World::Contact> touching;  ///< those of the last sub-step, while recording
   int substeps = 1;
   std::deque<Body> bodies;  // stable addresses; a removed body keeps its place with id null
   std::unordered_map<scene::NodeHandle, std::size_t> body_of;  // Body node -> index

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <utility>
 
 #include <glm/glm.hpp>
@@ -117,22 +118,31 @@ struct ShadowMap {
 };
 
 struct Renderer::Impl {
-  ShaderProgram program;
+  ShaderProgram program{detail::ProgramKind::surface}, depth{detail::ProgramKind::depth};
+  ShaderProgram sky{detail::ProgramKind::sky}, grid{detail::ProgramKind::grid};
+  ShaderProgram* active = &program;  // the one in use, whose uniforms u() finds
+  GLuint empty_vao = 0;              // for the sky's triangle, which has no vertex buffer
   ShadowMap shadow;
   UnitShape cube = unitCube(), sphere = unitSphere(), cylinder = unitRound(false), cone = unitRound(true);
   GpuMesh plane = unitPlane();
   GpuCache files;
 
-  explicit Impl(std::string model_dir) : files(std::move(model_dir)) {}
+  explicit Impl(std::string model_dir) : files(std::move(model_dir)) { glGenVertexArrays(1, &empty_vao); }
   ~Impl() {
     for (GpuMesh* g : {&cube.gpu, &sphere.gpu, &cylinder.gpu, &cone.gpu, &plane}) g->release();
     shadow.release();
+    glDeleteVertexArrays(1, &empty_vao);
   }
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;
 
-  /// The location of the program's uniform `name`.
-  GLint u(const std::string& name) { return program.uniform(name); }
+  /// Makes `p` the program in use.
+  void use(ShaderProgram& p) {
+    p.use();
+    active = &p;
+  }
+  /// The location of the program's uniform `name` (-1, which GL ignores, when it has none).
+  GLint u(const std::string& name) { return active->uniform(name); }
 
   /// Collects what to draw below `n`, with `material` in effect.
   void collect(const Node& n, const Node* material, const DrawOptions& opt, std::vector<Item>& items) {
@@ -237,6 +247,16 @@ struct Renderer::Impl {
         {&sphere.gpu, nullptr, glm::scale(anchor, glm::vec3(0.03f)), overlay({0.1f, 0.9f, 0.3f}, 1.0f), &n, 0});
   }
 
+  /// A contact point: a red dot 3 cm across and its normal, 20 cm long.
+  void contact(const ContactMark& c, std::vector<Item>& items) {
+    const Look look = overlay({0.95f, 0.1f, 0.1f}, 1.0f);
+    const glm::mat4 at = glm::translate(glm::mat4(1.0f), gv(c.position));
+    items.push_back({&sphere.gpu, nullptr, glm::scale(at, glm::vec3(0.015f)), look, nullptr, 0});
+    const glm::mat4 along = at * alongZ(gv(c.normal)) * glm::translate(glm::mat4(1.0f), {0, 0, 0.1f}) *
+                            glm::scale(glm::mat4(1.0f), glm::vec3(0.004f, 0.004f, 0.2f));
+    items.push_back({&cylinder.gpu, nullptr, along, look, nullptr, 0});
+  }
+
   /// Sensor `n`'s ray, `length` m along its +x.
   void ray(const Node& n, const glm::mat4& at, float length, const Look& look, std::vector<Item>& items) {
     // along +x from the sensor's origin: a thin cylinder turned from z to x
@@ -262,6 +282,47 @@ struct Renderer::Impl {
     const glm::mat3 normal = glm::transpose(glm::inverse(glm::mat3(mv)));
     glUniformMatrix4fv(u("u_model_view"), 1, GL_FALSE, glm::value_ptr(mv));
     glUniformMatrix3fv(u("u_normal"), 1, GL_FALSE, glm::value_ptr(normal));
+  }
+
+  /// Where nothing opaque was drawn, the sky (`sky`: no fog hides it); then, when `height` is
+  /// set (m), the ground grid on the level plane there, over the ground and under what stands
+  /// on it. Leaves another program in use.
+  void ground(const Camera& cam, const glm::mat4& view, const glm::mat4& proj, const DrawOptions& opt, bool with_sky,
+              std::optional<double> height) {
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+    if (with_sky && opt.sky) {
+      use(sky);
+      const glm::mat4 inverse = glm::inverse(proj * view);
+      glUniformMatrix4fv(u("u_inverse"), 1, GL_FALSE, glm::value_ptr(inverse));
+      glUniform3f(u("u_zenith"), 0.36f, 0.52f, 0.76f);
+      glUniform3f(u("u_horizon"), 0.80f, 0.85f, 0.90f);
+      glUniform3f(u("u_below"), 0.50f, 0.52f, 0.55f);
+      glBindVertexArray(empty_vao);
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    if (height && opt.grid) {
+      use(grid);
+      const glm::vec3 eye = gv(cam.eye);
+      // the unit plane (a 2 km square) under the eye: the lines come from world positions
+      const glm::mat4 model =
+          glm::translate(glm::mat4(1.0f), glm::vec3(std::floor(eye.x), std::floor(eye.y), static_cast<float>(*height)));
+      const float above = std::abs(eye.z - static_cast<float>(*height));
+      glUniformMatrix4fv(u("u_model"), 1, GL_FALSE, glm::value_ptr(model));
+      glUniformMatrix4fv(u("u_view_proj"), 1, GL_FALSE, glm::value_ptr(proj * view));
+      glUniform3fv(u("u_eye"), 1, glm::value_ptr(eye));
+      glUniform1f(u("u_fade"), std::min(950.0f, 40.0f + 20.0f * above));
+      glEnable(GL_BLEND);
+      glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+      glEnable(GL_POLYGON_OFFSET_FILL);
+      glPolygonOffset(-1.0f, -4.0f);  // over the ground plane it lies on
+      glBindVertexArray(plane.vao);
+      glDrawElements(GL_TRIANGLES, plane.count, GL_UNSIGNED_INT, nullptr);
+      glDisable(GL_POLYGON_OFFSET_FILL);
+      glDisable(GL_BLEND);
+    }
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
   }
 
   /// Draws `it` (a terrain chunk by chunk, each at its level of detail), counting into `stats`.
@@ -337,6 +398,8 @@ DrawStats Renderer::draw(const scene::Scene& scene, const Camera& cam, const Dra
   };
   std::vector<Light> lights;
   const Node* fog = nullptr;
+  bool terrain = false;           // the scene has its own ground: no grid
+  std::optional<double> ground;   // the height of the first level ground plane, m
   const glm::mat4 view = glm::lookAt(gv(cam.eye), gv(cam.target), gv(cam.up));
   const glm::mat4 proj = glm::perspective(static_cast<float>(cam.fov * std::numbers::pi / 180.0),
                                           static_cast<float>(opt.width) / static_cast<float>(std::max(1, opt.height)),
@@ -356,6 +419,11 @@ DrawStats Renderer::draw(const scene::Scene& scene, const Camera& cam, const Dra
       lights.push_back(l);
     }
     if (n->kind() == NodeKind::Fog && fog == nullptr) fog = n;
+    if (n->kind() == NodeKind::Terrain) terrain = true;
+    if (n->kind() == NodeKind::Plane && !ground) {
+      const core::Vec3 up = n->world.rotation.rotate(n->vec3(field::Plane::Normal));
+      if (up.z > 0.999 * std::sqrt(up.x * up.x + up.y * up.y + up.z * up.z)) ground = n->world.apply({0, 0, 0}).z;
+    }
     for (auto it = n->children().rbegin(); it != n->children().rend(); ++it) todo.push_back(it->get());
   }
   if (lights.empty()) {
@@ -369,7 +437,7 @@ DrawStats Renderer::draw(const scene::Scene& scene, const Camera& cam, const Dra
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
 
-  r.program.use();
+  r.use(r.program);
   glUniformMatrix4fv(r.u("u_proj"), 1, GL_FALSE, glm::value_ptr(proj));
   glUniform1i(r.u("u_lights"), static_cast<GLint>(lights.size()));
   for (std::size_t i = 0; i < lights.size(); ++i) {
@@ -415,8 +483,8 @@ DrawStats Renderer::draw(const scene::Scene& scene, const Camera& cam, const Dra
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(2.0f, 4.0f);  // against shadow acne: surfaces do not shadow themselves
+    r.use(r.depth);
     glUniformMatrix4fv(r.u("u_proj"), 1, GL_FALSE, glm::value_ptr(light_proj));
-    glUniform1i(r.u("u_shadow_light"), -1);
     DrawStats depth_pass;
     for (const auto& it : items) {
       // planes bound the world below: they take shadows and cast none worth a full-map fill
@@ -427,8 +495,7 @@ DrawStats Renderer::draw(const scene::Scene& scene, const Camera& cam, const Dra
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
     glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-    glUniformMatrix4fv(r.u("u_proj"), 1, GL_FALSE, glm::value_ptr(proj));
-    glUniform1i(r.u("u_shadow_light"), shadowing);
+    r.use(r.program);
     // view space -> light clip space -> the map's [0, 1] cube
     const glm::mat4 bias = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
     const glm::mat4 to_map = bias * light_proj * light_view * glm::inverse(view);
@@ -439,17 +506,27 @@ DrawStats Renderer::draw(const scene::Scene& scene, const Camera& cam, const Dra
     glBindTexture(GL_TEXTURE_2D, r.shadow.texture);
     glActiveTexture(GL_TEXTURE0);
   }
-  // opaque first, then the transparent ones from the farthest to the nearest, not writing depth
-  std::vector<Item*> clear;
+  // opaque first, from the nearest to the farthest so that hidden pixels fail the depth test
+  // before they are shaded, planes and terrains (which fill the screen behind everything) last;
+  // then the transparent ones from the farthest to the nearest, not writing depth
+  std::vector<Item*> solid, clear;
   for (auto& it : items) {
-    if (it.look.alpha < 1.0f) {
-      it.depth = -(view * it.model * glm::vec4(0, 0, 0, 1)).z;
-      clear.push_back(&it);
-      continue;
-    }
-    r.setLook(it.look);
-    r.drawItem(it, view, proj, cam, opt, stats);
+    it.depth = -(view * it.model * glm::vec4(0, 0, 0, 1)).z;
+    (it.look.alpha < 1.0f ? clear : solid).push_back(&it);
   }
+  const auto behind = [](const Item* it) {
+    return it->terrain != nullptr || (it->node != nullptr && it->node->kind() == NodeKind::Plane);
+  };
+  std::stable_sort(solid.begin(), solid.end(), [&](const Item* a, const Item* b) {
+    const bool ba = behind(a), bb = behind(b);
+    return ba != bb ? bb : a->depth < b->depth;
+  });
+  for (const Item* it : solid) {
+    r.setLook(it->look);
+    r.drawItem(*it, view, proj, cam, opt, stats);
+  }
+  r.ground(cam, view, proj, opt, fog == nullptr, terrain ? std::nullopt : ground.has_value() ? ground : 0.0);
+  r.use(r.program);
   std::stable_sort(clear.begin(), clear.end(), [](const Item* a, const Item* b) { return a->depth > b->depth; });
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -468,24 +545,37 @@ DrawStats Renderer::draw(const scene::Scene& scene, const Camera& cam, const Dra
   glDisable(GL_BLEND);
 
   // the selection: its shapes outlined over everything else drawn
-  if (opt.selection != 0) {
-    if (const Node* sel = scene.resolve(opt.selection)) {
-      glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-      glDepthFunc(GL_LEQUAL);
-      glEnable(GL_POLYGON_OFFSET_LINE);
-      glPolygonOffset(-1.0f, -1.0f);
-      r.setLook(overlay({1.0f, 0.55f, 0.0f}, 1.0f));
-      for (const auto& it : items) {
-        for (const Node* p = it.node; p != nullptr; p = p->parent()) {
-          if (p != sel) continue;
-          r.drawItem(it, view, proj, cam, opt, stats);
-          break;
-        }
+  std::vector<const Node*> selected;
+  for (const auto h : opt.selection) {
+    if (const Node* n = scene.resolve(h)) selected.push_back(n);
+  }
+  if (!selected.empty()) {
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    glDepthFunc(GL_LEQUAL);
+    glEnable(GL_POLYGON_OFFSET_LINE);
+    glPolygonOffset(-1.0f, -1.0f);
+    r.setLook(overlay({1.0f, 0.55f, 0.0f}, 1.0f));
+    for (const auto& it : items) {
+      for (const Node* p = it.node; p != nullptr; p = p->parent()) {
+        if (std::find(selected.begin(), selected.end(), p) == selected.end()) continue;
+        r.drawItem(it, view, proj, cam, opt, stats);
+        break;
       }
-      glDisable(GL_POLYGON_OFFSET_LINE);
-      glDepthFunc(GL_LESS);
-      glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     }
+    glDisable(GL_POLYGON_OFFSET_LINE);
+    glDepthFunc(GL_LESS);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  }
+  // contact points last, seen through what hides them (most lie under the bodies they hold)
+  if (!opt.contacts.empty()) {
+    std::vector<Item> marks;
+    for (const auto& c : opt.contacts) r.contact(c, marks);
+    glDisable(GL_DEPTH_TEST);
+    for (const auto& it : marks) {
+      r.setLook(it.look);
+      r.drawItem(it, view, proj, cam, opt, stats);
+    }
+    glEnable(GL_DEPTH_TEST);
   }
   glBindVertexArray(0);
   return stats;

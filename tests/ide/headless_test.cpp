@@ -77,6 +77,24 @@ TEST_F(HeadlessIde, RunForTenSecondsShowsTheArmAtWork) {
   EXPECT_NE(std::find(bold.begin(), bold.end(), "arm/turn"), bold.end());
 }
 
+TEST_F(HeadlessIde, SelectingAPlaceHighlightsEveryNodeTokenItHolds) {
+  // P1 holds the arm's three joints as the model starts
+  const auto r = replay("- select: factory/P1\n");
+  EXPECT_EQ(r["selection"]["kind"], "place");
+  EXPECT_EQ(r["inspector"]["tokens"], 3);
+  EXPECT_EQ(r["world"]["highlighted_nodes"], 3);
+}
+
+TEST_F(HeadlessIde, ContactsAreMarkedOnlyWhileShown) {
+  // the boxes lie on the feed belt: a step's contacts are there to mark once they are asked for
+  auto r = replay("- run: 2\n- steps: 1\n");
+  EXPECT_EQ(r["world"]["contacts"], 0);
+  r = replay("- press: contacts\n- run: 2\n- steps: 1\n");
+  EXPECT_GT(r["world"]["contacts"].get<int>(), 8);
+  r = replay("- press: contacts\n- run: 2\n- press: contacts\n- steps: 1\n");
+  EXPECT_EQ(r["world"]["contacts"], 0);
+}
+
 TEST_F(HeadlessIde, TheInspectorSaysWhereAMovingBodyIsInTheRun) {
   const auto r = replay("- run: 1\n- select: arm/turn/column\n");
   EXPECT_EQ(r["inspector"]["type"], "Body");

@@ -55,6 +55,38 @@ TEST(Physics, ABallComesToRestOnATriangleMeshGround) {
   EXPECT_NEAR(ball.world.position.x, 1.5, 1e-6);
 }
 
+TEST(Physics, ASlidingBoxTouchesTheGroundAtItsCornersWhenAsked) {
+  const char* scene = R"(
+  - Plane: {}
+  - Transform:
+      translation: [2, 3, 0.25]
+      children:
+        - Body: {name: box, mass: 1, children: [{Cube: {size: [1, 1, 0.5]}}]}
+)";
+  // pushed along x, it slides (and stays awake: a resting body sleeps and makes no contacts)
+  Plant unasked(scene);
+  unasked.world->setVelocity(unasked.node("#1/box"), {2, 0, 0});
+  unasked.run(0.1, 1.0 / 240);
+  EXPECT_TRUE(unasked.world->contacts().empty());  // not recorded until asked for
+  Plant p(scene);
+  const auto& box = p.node("#1/box");
+  p.world->setVelocity(box, {2, 0, 0});
+  p.world->recordContacts(true);
+  p.run(0.1, 1.0 / 240);
+  const auto& touching = p.world->contacts();
+  ASSERT_EQ(touching.size(), 4u);  // a box on a plane: its four lower corners
+  for (const auto& c : touching) {
+    EXPECT_NEAR(std::abs(c.position.x - box.world.position.x), 0.5, 0.01);
+    EXPECT_NEAR(std::abs(c.position.y - 3), 0.5, 1e-3);
+    EXPECT_NEAR(c.position.z, 0.0, 5e-3);
+    EXPECT_NEAR(std::abs(c.normal.z), 1.0, 1e-9);
+    EXPECT_GE(c.depth, 0.0);
+    EXPECT_LT(c.depth, 5e-3);
+  }
+  p.world->recordContacts(false);
+  EXPECT_TRUE(p.world->contacts().empty());
+}
+
 TEST(Physics, AMeshBodyRestsOnItsHullItsBoxOrItsTriangles) {
   // a unit cube from a file, dropped on the ground: its centre comes to rest 0.5 m up whatever
   // the model chooses to collide with; its mass is its box's (density 1000: 1000 kg)

@@ -190,7 +190,7 @@ scene:
   const auto sensors = renderer.draw(*sim->plant(), cam, o);
   o.joints = true;
   const auto joints = renderer.draw(*sim->plant(), cam, o);
-  o.selection = sim->plant()->find("#2/b")->handle();
+  o.selection = {sim->plant()->find("#2/b")->handle()};
   const auto selected = renderer.draw(*sim->plant(), cam, o);
   EXPECT_EQ(sensors.triangles, plain.triangles + 2 * 12);  // the region's box: far side, then near side
   EXPECT_GT(joints.triangles, sensors.triangles);      // an axis and an anchor

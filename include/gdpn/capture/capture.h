@@ -20,6 +20,7 @@ struct CaptureOptions {
   bool sensors = false;     ///< draw sensor overlays
   bool joints = false;      ///< draw joint axes
   bool shadows = true;      ///< the first directional light casts shadows
+  bool ground = true;       ///< the sky down to the horizon and the ground grid
   double fps = 30.0;        ///< movie frames per second
 };
 

@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "gdpn/core/diagnostics.h"
 #include "gdpn/core/math.h"
@@ -112,6 +113,18 @@ class World {
   /// Evaluates every Region and RangeFinder of the scene; `out` gets one entry per sensor node
   /// (by handle). Cost grows with the pairs that overlap, not with sensors times bodies.
   void sense(std::vector<std::pair<scene::NodeHandle, Feel>>& out);
+
+  /// A point where two shapes touch.
+  struct Contact {
+    core::Vec3 position;  ///< world frame, m
+    core::Vec3 normal;    ///< unit, world frame: the way the first shape is pushed
+    double depth = 0;     ///< how far they overlap, m
+  };
+  /// Keeps the contact points of every sub-step from now on (`on`), or no longer. Off at
+  /// first: a world nobody looks at pays nothing for them.
+  void recordContacts(bool on);
+  /// The contact points of the last sub-step while recording (empty otherwise).
+  [[nodiscard]] const std::vector<Contact>& contacts() const;
 
   /// Number of bodies, and of those awake.
   [[nodiscard]] std::size_t bodyCount() const;

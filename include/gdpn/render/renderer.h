@@ -20,21 +20,30 @@
 namespace gdpn::render {
 
 /// What to draw besides the scene.
+/// A point where two shapes touch, to be marked (a red dot with its normal).
+struct ContactMark {
+  core::Vec3 position;  ///< world frame, m
+  core::Vec3 normal;    ///< unit, world frame
+};
+
 struct DrawOptions {
   int width = 1280;                    ///< pixels
   int height = 720;                    ///< pixels
   core::Vec3 background{0.62, 0.70, 0.80};  ///< colour where nothing is (fog colour when fogged)
   bool sensors = false;                ///< translucent sensor volumes and rays
   bool joints = false;                 ///< joint axes
-  scene::NodeHandle selection = 0;     ///< a node whose shapes get outlined (0: none)
+  std::vector<ContactMark> contacts;   ///< contact points to mark, over everything: a dot 3 cm across and its normal, 20 cm long
+  std::vector<scene::NodeHandle> selection;  ///< nodes whose shapes get outlined
   bool shadows = true;                 ///< the first directional light casts shadows (near the camera's target)
+  bool sky = true;                     ///< a sky down to the horizon where nothing is drawn (not in fog)
+  bool grid = true;                    ///< a grid on the ground (the first level Plane, else z = 0; none over a Terrain): lines every 1 m and 10 m
   double lod_error = 2.0;              ///< terrain: the most a simplification may move a vertex on screen, pixels
 };
 
 /// What one draw did.
 struct DrawStats {
-  std::size_t triangles = 0;   ///< triangles sent to the GPU
-  std::size_t draw_calls = 0;  ///< draw calls made
+  std::size_t triangles = 0;   ///< the scene's triangles sent to the GPU (not the sky's, the grid's or the shadow pass's)
+  std::size_t draw_calls = 0;  ///< draw calls made for the scene (likewise)
 };
 
 /// Draws scenes into the current framebuffer. Needs a current OpenGL 3.3 core context for its

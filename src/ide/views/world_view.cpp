@@ -14,30 +14,41 @@
 #include "../detail/keys.h"
 #include "../detail/world_texture.h"
 #include "../views.h"
+#include "gdpn/physics/world.h"
 #include "gdpn/scene/actions.h"
 
 namespace gdpn::ide {
 
 namespace {
 
-/// The highlighted node: the selected node, or the first node token of a selected place.
-scene::NodeHandle highlighted(App& app, scene::Scene& s) {
+/// The highlighted nodes: the selected node, or the node tokens of a selected place.
+std::vector<scene::NodeHandle> highlighted(App& app, scene::Scene& s) {
   const auto& sel = app.document().selection();
   if (sel.kind == SelectionKind::Node) {
     const auto* node = s.find(sel.name);
-    return node != nullptr ? node->handle() : 0;
+    if (node != nullptr) return {node->handle()};
+    return {};
   }
   auto* session = app.run().session();
-  if (sel.kind != SelectionKind::Place || session == nullptr || app.run().mode() == RunMode::Edit) return 0;
+  if (sel.kind != SelectionKind::Place || session == nullptr) return {};
   const auto& sim = session->simulation();
   const auto p = sim.net().findPlace(sel.name);
-  if (p < 0) return 0;
+  if (p < 0) return {};
   const auto& place = sim.net().places()[static_cast<std::size_t>(p)];
+  // the run's tokens are nodes of the run's plant; before a run, the model's scene is shown:
+  // the same nodes found there by path
+  const bool same = &s == sim.plant();
+  std::vector<scene::NodeHandle> out;
   for (auto ps = place.slots_begin; ps < place.slots_end; ++ps) {
-    const auto nodes = sim.kernel().nodes(ps);
-    if (!nodes.empty()) return nodes.front();
+    for (const auto h : sim.kernel().nodes(ps)) {
+      if (same) {
+        out.push_back(h);
+      } else if (const auto* token = sim.plant()->resolve(h)) {
+        if (const auto* node = s.find(token->path())) out.push_back(node->handle());
+      }
+    }
   }
-  return 0;
+  return out;
 }
 
 /// The world view's own row: frame, standard views, the scene's cameras, overlays.
@@ -73,14 +84,26 @@ void drawViewBar(App& app, scene::Scene* s) {
     }
     ImGui::EndCombo();
   }
+  // what to show: one list, so that the row fits a narrow view
   ImGui::SameLine();
-  ImGui::Checkbox("sensors", &app.show_sensors);
-  ImGui::SameLine();
-  ImGui::Checkbox("joints", &app.show_joints);
-  ImGui::SameLine();
-  ImGui::Checkbox("shadows", &app.show_shadows);
-  ImGui::SameLine();
-  ImGui::Checkbox("mini", &app.show_mini);
+  ImGui::SetNextItemWidth(70);
+  if (ImGui::BeginCombo("##show", "show", ImGuiComboFlags_HeightLarge)) {
+    ImGui::Checkbox("sensor volumes", &app.show_sensors);
+    ImGui::Checkbox("joint axes", &app.show_joints);
+    ImGui::Checkbox("contacts", &app.show_contacts);
+    ImGui::Checkbox("shadows", &app.show_shadows);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Off makes each frame about a third cheaper on a software renderer");
+    ImGui::Checkbox("ground grid", &app.show_grid);
+    ImGui::Checkbox("mini view", &app.show_mini);
+    ImGui::EndCombo();
+  }
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Overlays: sensors, joints, contacts; shadows, grid; the mini view");
+}
+
+/// The App::show_* switches as bits, for WorldKey.
+unsigned shownBits(const App& app) {
+  return (app.show_sensors ? 1U : 0U) | (app.show_joints ? 2U : 0U) | (app.show_contacts ? 4U : 0U) |
+         (app.show_shadows ? 8U : 0U) | (app.show_grid ? 16U : 0U);
 }
 
 }  // namespace
@@ -115,16 +138,24 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
   options.sensors = app.show_sensors;
   options.shadows = app.show_shadows;
   options.joints = app.show_joints;
+  options.grid = app.show_grid;
   options.selection = highlighted(app, *s);
+  // contact points are recorded by the run's physics only while they are shown
+  physics::World* physics = app.run().session() != nullptr && app.run().mode() != RunMode::Edit
+                                ? app.run().session()->simulation().physics()
+                                : nullptr;
+  if (physics != nullptr) {
+    physics->recordContacts(app.show_contacts);
+    for (const auto& c : physics->contacts()) options.contacts.push_back({c.position, c.normal});
+  }
   // draw only when something seen changed: the run, the model, the camera, the selection
-  const WorldKey seen{app.run().steps(), app.run().mode(), app.document().revision(), camera.eye, camera.target,
-                     camera.fov, options.selection, w, h, options.sensors, options.joints, app.run().session(),
-                     options.shadows};
+  WorldKey seen{app.run().steps(), app.run().mode(), app.document().revision(), camera.eye, camera.target,
+                camera.fov, options.selection, w, h, shownBits(app), app.run().session()};
   if (!(seen == app.world_key) || app.world_stats.draw_calls == 0) {
     app.world_texture->begin(w, h);
     app.world_stats = app.renderer->draw(*s, camera, options);
     app.world_texture->end();
-    app.world_key = seen;
+    app.world_key = std::move(seen);
   }
   const auto& stats = app.world_stats;
   ImGui::Image(reinterpret_cast<ImTextureID>(app.world_texture->texture()), {static_cast<float>(w), static_cast<float>(h)},
@@ -207,10 +238,14 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
   report["eye"] = {eye.x, eye.y, eye.z};
   report["target"] = {camera.target.x, camera.target.y, camera.target.z};
   report["triangles"] = stats.triangles;
-  report["highlighted"] = options.selection != 0;
+  report["highlighted"] = !options.selection.empty();
+  report["highlighted_nodes"] = options.selection.size();
   report["keys"] = app.pressed_keys;
   report["sensors"] = app.show_sensors;
   report["joints"] = app.show_joints;
+  report["contacts"] = options.contacts.size();
+  report["shadows"] = app.show_shadows;
+  report["grid"] = app.show_grid;
 }
 
 }  // namespace gdpn::ide

@@ -87,6 +87,79 @@ void main() {
 }
 )";
 
+constexpr const char* kDepthVertex = R"(#version 330 core
+layout(location = 0) in vec3 a_pos;
+uniform mat4 u_model_view;
+uniform mat4 u_proj;
+void main() { gl_Position = u_proj * (u_model_view * vec4(a_pos, 1.0)); }
+)";
+
+constexpr const char* kDepthFragment = R"(#version 330 core
+void main() {}
+)";
+
+// the sky: a triangle covering the screen at the far plane, drawn after the opaque items where
+// nothing is (depth test LEQUAL); each pixel's ray gives its elevation above the horizon
+constexpr const char* kSkyVertex = R"(#version 330 core
+uniform mat4 u_inverse;     // clip space to world space
+out vec3 v_ray;
+void main() {
+  vec2 p = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);
+  vec4 far = u_inverse * vec4(p, 1.0, 1.0);
+  vec4 near = u_inverse * vec4(p, -1.0, 1.0);
+  v_ray = far.xyz / far.w - near.xyz / near.w;
+  gl_Position = vec4(p, 1.0, 1.0);
+}
+)";
+
+constexpr const char* kSkyFragment = R"(#version 330 core
+in vec3 v_ray;
+out vec4 o_color;
+uniform vec3 u_zenith, u_horizon, u_below;
+void main() {
+  float e = normalize(v_ray).z;  // sine of the elevation (z is up)
+  vec3 c = e >= 0.0 ? mix(u_horizon, u_zenith, pow(clamp(e, 0.0, 1.0), 0.6))
+                    : mix(u_horizon, u_below, clamp(-e * 6.0, 0.0, 1.0));
+  o_color = vec4(c, 1.0);
+}
+)";
+
+// the grid: lines every metre, stronger every ten, anti-aliased by their screen width and
+// faded where they would crowd into a grey haze (and with distance)
+constexpr const char* kGridVertex = R"(#version 330 core
+layout(location = 0) in vec3 a_pos;
+uniform mat4 u_model;       // the unit plane to the world
+uniform mat4 u_view_proj;
+out vec3 v_world;
+void main() {
+  vec4 w = u_model * vec4(a_pos, 1.0);
+  v_world = w.xyz;
+  gl_Position = u_view_proj * w;
+}
+)";
+
+constexpr const char* kGridFragment = R"(#version 330 core
+in vec3 v_world;
+out vec4 o_color;
+uniform vec3 u_eye;         // world frame, m
+uniform float u_fade;       // m: the distance at which the grid is gone
+float lines(vec2 p, float spacing) {
+  vec2 q = p / spacing;
+  vec2 w = fwidth(q);
+  vec2 g = abs(fract(q - 0.5) - 0.5) / max(w, vec2(1e-6));
+  float line = 1.0 - min(min(g.x, g.y), 1.0);
+  // a line narrower than a pixel apart from the next turns to haze: fade it out
+  return line * (1.0 - smoothstep(0.15, 0.5, max(w.x, w.y)));
+}
+void main() {
+  float minor = lines(v_world.xy, 1.0), major = lines(v_world.xy, 10.0);
+  float d = length(v_world - u_eye);
+  float a = max(0.10 * minor, 0.30 * major) * (1.0 - smoothstep(0.3 * u_fade, u_fade, d));
+  if (a <= 0.003) discard;
+  o_color = vec4(vec3(0.12), a);
+}
+)";
+
 GLuint compile(GLenum kind, const char* text) {
   const GLuint s = glCreateShader(kind);
   glShaderSource(s, 1, &text, nullptr);
@@ -96,8 +169,25 @@ GLuint compile(GLenum kind, const char* text) {
 
 }  // namespace
 
-ShaderProgram::ShaderProgram() {
-  const GLuint vs = compile(GL_VERTEX_SHADER, kVertex), fs = compile(GL_FRAGMENT_SHADER, kFragment);
+ShaderProgram::ShaderProgram(ProgramKind kind) {
+  const char* vertex = kVertex;
+  const char* fragment = kFragment;
+  switch (kind) {
+    case ProgramKind::surface: break;
+    case ProgramKind::depth:
+      vertex = kDepthVertex;
+      fragment = kDepthFragment;
+      break;
+    case ProgramKind::sky:
+      vertex = kSkyVertex;
+      fragment = kSkyFragment;
+      break;
+    case ProgramKind::grid:
+      vertex = kGridVertex;
+      fragment = kGridFragment;
+      break;
+  }
+  const GLuint vs = compile(GL_VERTEX_SHADER, vertex), fs = compile(GL_FRAGMENT_SHADER, fragment);
   id_ = glCreateProgram();
   glAttachShader(id_, vs);
   glAttachShader(id_, fs);
