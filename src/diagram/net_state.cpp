@@ -26,20 +26,48 @@ std::string qualify(const PageView& view, const std::string& name) {
 
 }  // namespace
 
+PageBinding bindPage(const net::Net& net, const PageView& view) {
+  PageBinding b;
+  if (view.page == nullptr) return b;
+  const net::PageSpec& page = *view.page;
+  const bool alone = view.prefix.empty();
+  b.places.assign(page.places.size(), -1);
+  b.transitions.assign(page.transitions.size(), -1);
+  b.arcs.assign(page.arcs.size(), {});
+  if (alone) return b;
+  for (std::size_t i = 0; i < page.places.size(); ++i) b.places[i] = net.findPlace(qualify(view, page.places[i].name));
+  for (std::size_t i = 0; i < page.transitions.size(); ++i) {
+    b.transitions[i] = net.findTransition(qualify(view, page.transitions[i].name));
+  }
+  for (std::size_t a = 0; a < page.arcs.size(); ++a) {
+    const auto& arc = page.arcs[a];
+    auto& out = b.arcs[a];
+    if ((out.transition = net.findTransition(qualify(view, arc.to))) >= 0) {
+      out.place = net.findPlace(qualify(view, arc.from));
+    } else if ((out.transition = net.findTransition(qualify(view, arc.from))) >= 0) {
+      out.place = net.findPlace(qualify(view, arc.to));
+      out.output = true;
+    }
+  }
+  return b;
+}
+
 NetState netStateOf(const net::Kernel& kernel, const PageView& view, const NodeNamer& names) {
+  return netStateOf(kernel, bindPage(kernel.net(), view), names);
+}
+
+NetState netStateOf(const net::Kernel& kernel, const PageBinding& binding, const NodeNamer& names) {
   NetState s;
   s.time = kernel.now();
-  if (view.page == nullptr) return s;
-  const net::PageSpec& page = *view.page;
   const net::Net& net = kernel.net();
   auto nameOf = [&](net::NodeRef ref) -> std::string {
     if (names) return names(ref);
     return ref < net.nodeNames().size() ? net.nodeNames()[ref] : "#" + std::to_string(ref);
   };
   // places: each slot in use, with its tokens
-  s.places.resize(page.places.size());
-  for (std::size_t i = 0; i < page.places.size(); ++i) {
-    const auto p = view.prefix.empty() ? -1 : net.findPlace(qualify(view, page.places[i].name));
+  s.places.resize(binding.places.size());
+  for (std::size_t i = 0; i < binding.places.size(); ++i) {
+    const auto p = binding.places[i];
     if (p < 0) continue;
     const net::Place& place = net.places()[static_cast<std::size_t>(p)];
     for (auto ps = place.slots_begin; ps < place.slots_end; ++ps) {
@@ -55,26 +83,16 @@ NetState netStateOf(const net::Kernel& kernel, const PageView& view, const NodeN
     }
   }
   // transitions: idle, enabled or occurring
-  s.transitions.assign(page.transitions.size(), Activity::Idle);
-  std::vector<std::int64_t> ids(page.transitions.size(), -1);
-  for (std::size_t i = 0; i < page.transitions.size(); ++i) {
-    ids[i] = view.prefix.empty() ? -1 : net.findTransition(qualify(view, page.transitions[i].name));
-    if (ids[i] < 0) continue;
-    const auto t = static_cast<net::TransitionId>(ids[i]);
+  s.transitions.assign(binding.transitions.size(), Activity::Idle);
+  for (std::size_t i = 0; i < binding.transitions.size(); ++i) {
+    if (binding.transitions[i] < 0) continue;
+    const auto t = static_cast<net::TransitionId>(binding.transitions[i]);
     s.transitions[i] = kernel.occurring(t) ? Activity::Occurring : kernel.enabled(t) ? Activity::Enabled : Activity::Idle;
   }
   // arcs: the terms of the arc's transition on the arc's place, inputs or outputs by its direction
-  s.arcs.assign(page.arcs.size(), std::nullopt);
-  for (std::size_t a = 0; a < page.arcs.size() && !view.prefix.empty(); ++a) {
-    const auto& arc = page.arcs[a];
-    std::int64_t t = -1, p = -1;
-    bool output = false;
-    if ((t = net.findTransition(qualify(view, arc.to))) >= 0) {
-      p = net.findPlace(qualify(view, arc.from));
-    } else if ((t = net.findTransition(qualify(view, arc.from))) >= 0) {
-      p = net.findPlace(qualify(view, arc.to));
-      output = true;
-    }
+  s.arcs.assign(binding.arcs.size(), std::nullopt);
+  for (std::size_t a = 0; a < binding.arcs.size(); ++a) {
+    const auto [t, p, output] = binding.arcs[a];
     if (t < 0 || p < 0) continue;
     const auto first = net.transitions()[static_cast<std::size_t>(t)].terms_begin;
     bool any = false, all = true;

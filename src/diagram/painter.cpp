@@ -18,6 +18,8 @@ constexpr double kArrowHalfWidth = 4.0;
 constexpr double kInhibitorRadius = 3.5;
 constexpr double kDotRadius = 3.2;
 constexpr double kNameRoom = 18.0;      // names under places and above transitions
+// pixels: a place drawn smaller than this radius makes the picture coarse (squares, hairlines)
+constexpr double kCoarseRadiusPx = 2.5;
 
 Rgba kindColour(net::SlotKind kind) {
   switch (kind) {
@@ -106,6 +108,7 @@ class Painter {
   Painter(const NetLayout& l, const NetState* s, const Viewport& v, Canvas& c) : l_(l), s_(s), v_(v), c_(c) {
     font_ = std::min(kLabelSize * v.zoom, kMaxFontPx);
     labels_ = font_ >= kMinFontPx;
+    coarse_ = kPlaceRadius * v.zoom < kCoarseRadiusPx;
   }
 
   void arc(const ArcLayout& a) {
@@ -115,6 +118,11 @@ class Painter {
     std::optional<bool> holds;
     if (s_ != nullptr && a.spec_index < s_->arcs.size()) holds = s_->arcs[a.spec_index];
     const Rgba colour = !holds ? colours::kIdle : *holds ? colours::kEnabled : colours::kArcOff;
+    if (coarse_) {
+      // zoomed far out: a hairline, no head (a head would be larger than the places it joins)
+      c_.polyline(pts, 1.0, colour, false);
+      return;
+    }
     const double w = std::max(kLineWidth * v_.zoom, 1.0);
     // the end: an arrowhead (normal), a small circle (inhibitor) or nothing (test)
     const Point end = pts.back();
@@ -219,6 +227,22 @@ class Painter {
     const NodeLayout& p = l_.places[k];
     const Point c = v_.toScreen(p.centre);
     const double r = kPlaceRadius * v_.zoom;
+    if (coarse_) {
+      // zoomed far out: a square the place's size (a pixel at least), in its tokens' colour
+      // when it holds any, so that the marking still shows
+      Rgba colour = colours::kOutline;
+      if (s_ != nullptr && k < s_->places.size()) {
+        for (const auto& slot : s_->places[k]) {
+          if (slot.count > 0) {
+            colour = kindColour(slot.kind);
+            break;
+          }
+        }
+      }
+      const double half = std::max(r, 0.75);
+      c_.fillRect(Box::around(c, half, half), colour);
+      return;
+    }
     c_.fillCircle(c, r, colours::kBackground);
     c_.strokeCircle(c, r, std::max(kOutlineWidth * v_.zoom, 1.0), colours::kOutline);
     if (s_ != nullptr && k < s_->places.size()) tokens(s_->places[k], c, r);
@@ -271,6 +295,7 @@ class Painter {
   Canvas& c_;
   double font_ = kLabelSize;
   bool labels_ = true;
+  bool coarse_ = false;  // places under kCoarseRadiusPx: squares and hairlines, no heads or labels
   std::vector<std::pair<Label, Point>> names_;  // names, where they stand
   std::vector<Label> pending_;                  // weights and link names, placed last
   std::vector<Box> taken_;                      // what labels should not cover: shapes and placed labels, pixels

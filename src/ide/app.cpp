@@ -8,6 +8,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <iterator>
 #include <cmath>
 #include <filesystem>
 
@@ -285,8 +286,29 @@ bool App::perform(const Action& a, std::string& error) {
   return error.empty();
 }
 
+namespace {
+/// The world view's resolution steps while running (share of each side).
+constexpr double kWorldScales[] = {1.0, 0.85, 0.7, 0.6, 0.5};
+constexpr int kWorldLevels = static_cast<int>(std::size(kWorldScales));
+}  // namespace
+
+double App::worldScale() const { return run_.mode() == RunMode::Running ? kWorldScales[world_level] : 1.0; }
+
 void App::frame(float width, float height, double wall_seconds) {
   if (wall_seconds > 0) fps = fps == 0 ? 1.0 / wall_seconds : 0.9 * fps + 0.1 / wall_seconds;
+  // a software renderer cannot fill a large world view 30 times a second: while running, its
+  // resolution follows the frame rate, a step every half second at most (a headless frame
+  // stands for 1/60 s and never lowers it)
+  world_level_age += wall_seconds;
+  if (run_.mode() == RunMode::Running && world_level_age >= 0.5) {
+    if (fps < 30 && world_level + 1 < kWorldLevels) {
+      ++world_level;
+      world_level_age = 0;
+    } else if (fps > 45 && world_level > 0) {
+      --world_level;
+      world_level_age = 0;
+    }
+  }
   checkReload();
   run_.advance(wall_seconds);
 

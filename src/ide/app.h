@@ -120,6 +120,11 @@ class App {
   std::string inspector_error;      ///< why the last edit was refused
   std::string message;              ///< the status bar's message line
   double fps = 0;                   ///< frames per second, smoothed
+  int world_level = 0;              ///< how far the world view's resolution is lowered while running (kWorldScales)
+  double world_level_age = 0;       ///< wall seconds since world_level last changed
+  /// The share of its pixels (per side) the world view is drawn at: 1 unless running, where a
+  /// frame rate under 30 fps lowers it in steps to 0.5 and one over 45 raises it again.
+  [[nodiscard]] double worldScale() const;
   bool screenshot_requested = false;  ///< the toolbar asked for a picture of the next frame
   int screenshots = 0;              ///< pictures taken so far (their names count up)
   std::unique_ptr<capture::MovieWriter> movie;  ///< the movie being filmed (null when none)

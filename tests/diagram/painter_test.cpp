@@ -100,6 +100,44 @@ TEST(DiagramSvg, SmallNetHasItsShapesNamesAndColours) {
   EXPECT_EQ(d.svg(), later) << "the same state must give the same bytes";
 }
 
+TEST(DiagramNetState, ABindingMadeOnceReadsTheSameStateAsTheNames) {
+  Drawn d;
+  const auto binding = bindPage(*d.net, d.findViewOrDie());
+  ASSERT_EQ(binding.places.size(), 5u);
+  for (const auto id : binding.places) EXPECT_GE(id, 0);
+  const auto same = [&] {
+    const auto a = d.state(), b = netStateOf(*d.kernel, binding);
+    EXPECT_EQ(a.transitions, b.transitions);
+    EXPECT_EQ(a.arcs, b.arcs);
+    ASSERT_EQ(a.places.size(), b.places.size());
+    for (std::size_t i = 0; i < a.places.size(); ++i) {
+      ASSERT_EQ(a.places[i].size(), b.places[i].size());
+      for (std::size_t k = 0; k < a.places[i].size(); ++k) EXPECT_EQ(a.places[i][k].count, b.places[i][k].count);
+    }
+  };
+  same();
+  d.kernel->start();  // the binding holds as the marking moves
+  same();
+}
+
+TEST(DiagramSvg, ZoomedFarOutPlacesAreSquaresInTheirTokensColourAndArcsHairlines) {
+  Drawn d;
+  const auto s = d.state();
+  SvgCanvas canvas(400, 160);
+  const SpatialIndex index(d.layout);
+  Viewport far = fitViewport(d.layout, 400, 160);
+  far.zoom = 2.0 / kPlaceRadius;  // a place 2 pixels in radius
+  paintNet(d.layout, index, &s, far, canvas);
+  const std::string svg = canvas.svg();
+  // no discs, no arrowheads, no names: five squares among the rects, src's and gate's in the
+  // control tokens' colour
+  EXPECT_EQ(count(svg, "<circle"), 0u) << svg;
+  EXPECT_EQ(count(svg, "<polygon"), 0u);
+  EXPECT_EQ(svg.find(">src<"), std::string::npos);
+  EXPECT_EQ(count(svg, "fill=\"" + svgColour(colours::kControl) + "\""), 2u) << svg;
+  EXPECT_EQ(count(svg, "fill=\"" + svgColour(colours::kOutline) + "\""), 3u) << svg;
+}
+
 TEST(DiagramSvg, TextIsEscapedAndNeverTooSmall) {
   Drawn d;
   d.layout.places[0].name = "a<b&c";

@@ -42,6 +42,27 @@ struct NetState {
 /// Names a node token (the kernel knows only references).
 using NodeNamer = std::function<std::string(net::NodeRef)>;
 
+/// Where a page view's constructs are in a compiled net, found once by their qualified names
+/// (`view.prefix` + "/" + name), so that their state can be read at every frame without a
+/// name lookup. -1 where the net lacks one (a page type seen alone).
+struct PageBinding {
+  std::vector<std::int64_t> places;       ///< per place of the page: its PlaceId
+  std::vector<std::int64_t> transitions;  ///< per transition: its TransitionId
+  /// An arc's transition and place, and which way it runs.
+  struct Arc {
+    std::int64_t transition = -1;  ///< TransitionId
+    std::int64_t place = -1;       ///< PlaceId
+    bool output = false;           ///< from the transition to the place
+  };
+  std::vector<Arc> arcs;  ///< per arc of PageSpec::arcs
+};
+
+/// Finds `view`'s constructs in `net`.
+PageBinding bindPage(const net::Net& net, const PageView& view);
+
+/// The state in `kernel` now of the constructs `binding` found (bindPage on kernel's net).
+NetState netStateOf(const net::Kernel& kernel, const PageBinding& binding, const NodeNamer& names = {});
+
 /// The state of `view`'s constructs in `kernel` now. Constructs are found by their qualified
 /// names (`view.prefix` + "/" + name); those the net lacks (a page type seen alone) stay
 /// empty and idle. An arc holds when every term it makes holds: inputs and tests have their

@@ -6,10 +6,6 @@
 
 namespace gdpn::ide {
 
-namespace {
-constexpr int kSamples = 4;  // anti-aliasing
-}
-
 WorldTexture::~WorldTexture() { release(); }
 
 void WorldTexture::release() {
@@ -23,23 +19,24 @@ void WorldTexture::release() {
   fbo_ = color_ = depth_ = resolve_fbo_ = texture_ = 0;
 }
 
-void WorldTexture::begin(int width, int height) {
+void WorldTexture::begin(int width, int height, int samples) {
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_fbo_);
   glGetIntegerv(GL_VIEWPORT, previous_viewport_);
-  if (width != width_ || height != height_ || fbo_ == 0) {
+  if (width != width_ || height != height_ || samples != samples_ || fbo_ == 0) {
     release();
     width_ = width;
     height_ = height;
+    samples_ = samples;
     // the multisampled picture
     glGenFramebuffers(1, &fbo_);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
     glGenRenderbuffers(1, &color_);
     glBindRenderbuffer(GL_RENDERBUFFER, color_);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, kSamples, GL_RGBA8, width, height);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples > 1 ? samples : 0, GL_RGBA8, width, height);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_);
     glGenRenderbuffers(1, &depth_);
     glBindRenderbuffer(GL_RENDERBUFFER, depth_);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, kSamples, GL_DEPTH_COMPONENT24, width, height);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples > 1 ? samples : 0, GL_DEPTH_COMPONENT24, width, height);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
     // the texture it resolves into
     glGenTextures(1, &texture_);

@@ -13,9 +13,9 @@ class WorldTexture {
   ~WorldTexture();
   WorldTexture(const WorldTexture&) = delete;
   WorldTexture& operator=(const WorldTexture&) = delete;
-  /// Makes it `width` x `height` pixels (kept when already that size) and binds it for
-  /// drawing, remembering the framebuffer and viewport that were bound.
-  void begin(int width, int height);
+  /// Makes it `width` x `height` pixels with `samples` samples each (kept when already so) and
+  /// binds it for drawing, remembering the framebuffer and viewport that were bound.
+  void begin(int width, int height, int samples);
   /// Resolves the picture into the texture and binds back what begin() found.
   void end();
   /// The texture, for ImGui::Image.
@@ -23,7 +23,7 @@ class WorldTexture {
 
  private:
   void release();
-  int width_ = 0, height_ = 0;
+  int width_ = 0, height_ = 0, samples_ = 0;
   unsigned fbo_ = 0, color_ = 0, depth_ = 0, resolve_fbo_ = 0, texture_ = 0;
   int previous_fbo_ = 0;
   int previous_viewport_[4] = {0, 0, 0, 0};

@@ -146,11 +146,28 @@ std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const R
     else app.document().select({});
     if (under && under->kind == diagram::ItemKind::Transition) app.fire_target = qualified(s, *under);
   }
-  // the run's marking, when there is a run of this model
-  std::optional<diagram::NetState> state;
+  // the run's marking, when there is a run of this model: the page's constructs found in its
+  // net once, their state read again only after a step or a start (not for a pan or a zoom)
+  std::optional<diagram::NetState>& state = s.state;
   if (auto* session = app.run().session()) {
     auto& sim = session->simulation();
-    state = diagram::netStateOf(sim.kernel(), s.view, [&](net::NodeRef ref) { return sim.nodeName(ref); });
+    const net::Net* net = &sim.kernel().net();
+    if (s.bound_net != net || s.bound_path != s.laid_out_path) {
+      s.binding = diagram::bindPage(*net, s.view);
+      s.bound_net = net;
+      s.bound_path = s.laid_out_path;
+      s.state_kernel = nullptr;
+    }
+    const auto& kernel = sim.kernel();
+    const auto moved = static_cast<std::int64_t>(kernel.startCount()) + kernel.steps();  // a step or a start
+    if (s.state_kernel != &kernel || s.state_steps != moved) {
+      state = diagram::netStateOf(kernel, s.binding, [&](net::NodeRef ref) { return sim.nodeName(ref); });
+      s.state_kernel = &kernel;
+      s.state_steps = moved;
+    }
+  } else {
+    state.reset();
+    s.bound_net = nullptr;
   }
   ImDrawList* list = ImGui::GetWindowDrawList();
   const ImVec2 far{r.origin.x + static_cast<float>(r.width), r.origin.y + static_cast<float>(r.height)};

@@ -4,9 +4,11 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "gdpn/diagram/layout.h"
+#include "gdpn/diagram/net_state.h"
 #include "gdpn/diagram/painter.h"
 #include "gdpn/diagram/spatial_index.h"
 
@@ -23,6 +25,12 @@ struct NetViewState {
   std::string error;                 ///< why the page cannot be shown ("" when it can)
   std::string laid_out_path = "\x01";  ///< `path` when the layout was made
   std::uint64_t laid_out_revision = ~std::uint64_t{0};  ///< the document's revision then
+  diagram::PageBinding binding;      ///< where `view`'s constructs are in the run's net
+  const void* bound_net = nullptr;   ///< the net `binding` was made for (null: none yet)
+  std::string bound_path = "\x01";  ///< `path` then
+  std::optional<diagram::NetState> state;  ///< the run's marking as last read
+  std::int64_t state_steps = -1;     ///< the kernel's steps plus starts then
+  const void* state_kernel = nullptr;  ///< and its kernel
 };
 
 }  // namespace gdpn::ide

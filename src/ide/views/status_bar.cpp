@@ -19,16 +19,26 @@ void drawStatusBar(App& app, const Rect& at, nlohmann::json& report) {
   ImGui::SameLine(270);
   ImGui::Text("x%.2f real time", run.realTimeFactor());
   ImGui::SameLine(410);
-  ImGui::Text("%.0f fps", app.fps);
-  ImGui::SameLine(490);
+  const double scale = app.worldScale();
+  if (scale < 1) {
+    ImGui::Text("%.0f fps, world at %.0f %%", app.fps, 100 * scale);
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("While running, the world view is drawn at fewer pixels to keep the frame rate; "
+                        "paused, it is drawn in full");
+    }
+  } else {
+    ImGui::Text("%.0f fps", app.fps);
+  }
+  ImGui::SameLine(scale < 1 ? 560 : 490);
   ImGui::Text("%s%s", runModeName(run.mode()), run.plantOnly() ? ", plant only" : "");
-  ImGui::SameLine(620);
+  ImGui::SameLine(scale < 1 ? 690 : 620);
   ImGui::TextUnformatted(msg.c_str());
   ImGui::EndChild();
   ImGui::PopStyleColor();
   ImGui::PopStyleVar();
   report = {{"time", run.time()},          {"steps", run.steps()}, {"real_time_factor", run.realTimeFactor()},
-            {"fps", app.fps},              {"mode", runModeName(run.mode())}, {"message", msg}};
+            {"fps", app.fps},              {"mode", runModeName(run.mode())}, {"message", msg},
+            {"world_scale", scale}};
 }
 
 }  // namespace gdpn::ide

@@ -131,10 +131,14 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
     if (node != nullptr && node->kind() == scene::NodeKind::Camera) camera = render::cameraOf(*node, app.run().time());
   }
 
-  // draw the plant into the texture and show it
+  // draw the plant into the texture and show it (at a lower resolution while a slow renderer
+  // runs the model: App::worldScale)
+  const double scale = app.worldScale();
+  const int rw = std::max(16, static_cast<int>(std::lround(w * scale)));
+  const int rh = std::max(16, static_cast<int>(std::lround(h * scale)));
   render::DrawOptions options;
-  options.width = w;
-  options.height = h;
+  options.width = rw;
+  options.height = rh;
   options.sensors = app.show_sensors;
   options.shadows = app.show_shadows;
   options.joints = app.show_joints;
@@ -150,9 +154,10 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
   }
   // draw only when something seen changed: the run, the model, the camera, the selection
   WorldKey seen{app.run().steps(), app.run().mode(), app.document().revision(), camera.eye, camera.target,
-                camera.fov, options.selection, w, h, shownBits(app), app.run().session()};
+                camera.fov, options.selection, rw, rh, shownBits(app), app.run().session()};
   if (!(seen == app.world_key) || app.world_stats.draw_calls == 0) {
-    app.world_texture->begin(w, h);
+    // four samples a pixel against jagged edges; none in a lowered picture, already soft
+    app.world_texture->begin(rw, rh, scale < 1 ? 1 : 4);
     app.world_stats = app.renderer->draw(*s, camera, options);
     app.world_texture->end();
     app.world_key = std::move(seen);
@@ -246,6 +251,7 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
   report["contacts"] = options.contacts.size();
   report["shadows"] = app.show_shadows;
   report["grid"] = app.show_grid;
+  report["scale"] = scale;
 }
 
 }  // namespace gdpn::ide
