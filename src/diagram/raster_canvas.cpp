@@ -238,7 +238,7 @@ const RasterCanvas::Glyph& RasterCanvas::glyph(std::uint32_t cp, double size, in
 }
 
 double RasterCanvas::textWidth(std::string_view text, double size) const {
-  const double scale = stbtt_ScaleForMappingEmToPixels(&font_->info, static_cast<float>(size));
+  const double scale = static_cast<double>(stbtt_ScaleForMappingEmToPixels(&font_->info, static_cast<float>(size)));
   double width = 0;
   std::uint32_t previous = 0;
   for (std::size_t i = 0; i < text.size();) {
@@ -254,7 +254,7 @@ double RasterCanvas::textWidth(std::string_view text, double size) const {
 
 void RasterCanvas::text(Point anchor, std::string_view text, double size, HAlign h, VAlign v, Rgba colour) {
   if (text.empty() || size <= 0) return;
-  const double scale = stbtt_ScaleForMappingEmToPixels(&font_->info, static_cast<float>(size));
+  const double scale = static_cast<double>(stbtt_ScaleForMappingEmToPixels(&font_->info, static_cast<float>(size)));
   const double w = textWidth(text, size);
   double x = h == HAlign::Left ? anchor.x : h == HAlign::Centre ? anchor.x - w / 2 : anchor.x - w;
   // the baseline, on a whole pixel so that glyphs stay crisp (capitals are 0.73 em tall)

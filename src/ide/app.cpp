@@ -278,6 +278,7 @@ bool App::perform(const Action& a, std::string& error) {
     case ActionKind::Key:
     case ActionKind::Click:
     case ActionKind::Drag:
+    case ActionKind::Wheel:
     case ActionKind::Frames:
     case ActionKind::Screenshot:
       error = "this action needs the platform";

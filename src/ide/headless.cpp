@@ -40,6 +40,12 @@ class Driver {
     mouse_ = {static_cast<float>(x), static_cast<float>(y)};
     frame();
   }
+  /// Turns the mouse wheel `clicks` clicks at (`x`, `y`).
+  void wheel(double x, double y, double clicks) {
+    move(x, y);
+    ImGui::GetIO().MouseWheel = static_cast<float>(clicks);
+    frame();
+  }
   void button(int b, bool down) {
     down_[b] = down;
     frame();
@@ -89,6 +95,9 @@ bool perform(App& app, Driver& d, const Action& a, const IdeOptions& o, int w, i
       d.button(a.button, false);
       break;
     }
+    case ActionKind::Wheel:
+      d.wheel(a.x, a.y, a.number);
+      break;
     case ActionKind::Frames:
       for (int i = 0; i < static_cast<int>(a.number); ++i) d.frame();
       break;

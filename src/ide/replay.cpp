@@ -4,6 +4,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -58,10 +59,11 @@ class ActionReader {
       return point(v, a.x, a.y);
     }
     if (key == "drag") return drag(v, a);
+    if (key == "wheel") return wheel(v, a);
     if (key == "set") return set(v, a);
     if (key == "break") return breakpoint(v, a);
     return fail(name, "unknown action '" + key +
-                                         "' (select, press, fire, run, steps, frames, key, hold, release, click, drag, set, view, "
+                                         "' (select, press, fire, run, steps, frames, key, hold, release, click, drag, wheel, set, view, "
                                          "screenshot)");
   }
 
@@ -103,6 +105,16 @@ class ActionReader {
       else if (name == "right") a.button = 1;
       else if (name == "middle") a.button = 2;
       else return fail(b, "expects a button: left, right or middle");
+    }
+    return true;
+  }
+  bool wheel(const YAML::Node& v, Action& a) {
+    a.kind = ActionKind::Wheel;
+    if (!v.IsMap() || !v["at"] || !v["clicks"]) return fail(v, "expects {at: [X, Y], clicks: N}");
+    if (!point(v["at"], a.x, a.y)) return false;
+    const auto c = v["clicks"];
+    if (!c.IsScalar() || !YAML::convert<double>::decode(c, a.number) || !(std::abs(a.number) <= 100)) {
+      return fail(c, "expects clicks from -100 to 100");
     }
     return true;
   }

@@ -101,7 +101,9 @@ const World::Impl::MeshGeometry* World::Impl::meshOf(Node& n, const std::string&
     const auto& p = data->parts[i];
     const auto base = static_cast<dTriIndex>(geo.points.size() / 3);
     for (std::size_t k = 0; k + 2 < p.positions.size(); k += 3) {
-      const Vec3 v = Vec3{p.positions[k], p.positions[k + 1], p.positions[k + 2]}.times(s);
+      const Vec3 v = Vec3{static_cast<double>(p.positions[k]), static_cast<double>(p.positions[k + 1]),
+                           static_cast<double>(p.positions[k + 2])}
+                          .times(s);
       geo.points.insert(geo.points.end(), {v.x, v.y, v.z});
       geo.box.add(v);
     }

@@ -49,7 +49,7 @@ void initOde() {
     dSetDebugHandler(throwOdeDebug);
     dSetMessageHandler(keepOdeMessage);
     dInitODE2(0);
-    dAllocateODEDataForThread(dAllocateMaskAll);
+    dAllocateODEDataForThread(static_cast<unsigned>(dAllocateMaskAll));
     return true;
   }();
   (void)done;

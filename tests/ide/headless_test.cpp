@@ -95,6 +95,14 @@ TEST_F(HeadlessIde, ContactsAreMarkedOnlyWhileShown) {
   EXPECT_EQ(r["world"]["contacts"], 0);
 }
 
+TEST_F(HeadlessIde, TheWheelZoomsTheNetViewAboutTheMouse) {
+  const auto fitted = replay("[]")["net_view"]["zoom"].get<double>();
+  const auto closer = replay("- wheel: {at: [1070, 300], clicks: 3}\n")["net_view"]["zoom"].get<double>();
+  const auto farther = replay("- wheel: {at: [1070, 300], clicks: -3}\n")["net_view"]["zoom"].get<double>();
+  EXPECT_GT(closer, fitted * 1.5);
+  EXPECT_LT(farther, fitted / 1.5);
+}
+
 TEST_F(HeadlessIde, TheInspectorSaysWhereAMovingBodyIsInTheRun) {
   const auto r = replay("- run: 1\n- select: arm/turn/column\n");
   EXPECT_EQ(r["inspector"]["type"], "Body");

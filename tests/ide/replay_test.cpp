@@ -55,6 +55,8 @@ TEST(Replay, MistakesAreLocated) {
       {"- click: [1]\n", "a.yaml:1:10: error: expects a point [X, Y] in window pixels"},
       {"- drag: {from: [1, 2], to: [3, 4], button: thumb}\n", "a.yaml:1:44: error: expects a button"},
       {"- set: {node: a}\n", "a.yaml:1:8: error: expects {node: PATH, field: NAME, value: VALUE}"},
+      {"- wheel: {at: [1, 2]}\n", "a.yaml:1:10: error: expects {at: [X, Y], clicks: N}"},
+      {"- wheel: {at: [1, 2], clicks: 1e9}\n", "a.yaml:1:31: error: expects clicks from -100 to 100"},
       {"select: a\n", "a.yaml:1:1: error: a replay file is a list of actions"},
       {"- break: {place: p}\n", "a.yaml:1:10: error: a place's breakpoint expects at_least: N tokens"},
       {"- [a, b]\n", "a.yaml:1:3: error: an action is a map with one key"},

@@ -39,7 +39,7 @@ class SpatialIndex {
   mutable std::uint32_t query_ = 0;
   std::vector<std::uint32_t> offsets_;    // flat number of each kind's first item
 
-  [[nodiscard]] std::uint32_t flat(ItemRef r) const { return offsets_[static_cast<int>(r.kind)] + r.index; }
+  [[nodiscard]] std::uint32_t flat(ItemRef r) const { return offsets_[static_cast<std::size_t>(r.kind)] + r.index; }
 };
 
 }  // namespace gdpn::diagram

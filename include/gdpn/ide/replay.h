@@ -25,6 +25,7 @@ enum class ActionKind : std::uint8_t {
                ///< presses it and keeps it down, `release: NAME` lets it go (field: hold, release)
   Click,       ///< `click: [X, Y]` window pixels, left button
   Drag,        ///< `drag: {from: [X, Y], to: [X, Y], button: left|right|middle}`
+  Wheel,       ///< `wheel: {at: [X, Y], clicks: N}`: the mouse wheel turned N clicks (negative: back) there
   Set,         ///< `set: {node: PATH, field: NAME, value: V}` through the inspector's command
   View,        ///< `view: front|back|left|right|top|iso|frame` or a Camera node's path
   Screenshot,  ///< `screenshot: FILE.png` of the whole window
@@ -38,8 +39,8 @@ struct Action {
   std::string field;           ///< Set: the field; Break: starts, completes, place or when
   std::vector<std::string> value;  ///< Set: the value's words (one for a scalar, more for a list)
   bool list = false;           ///< Set: the value was a list
-  double number = 0;           ///< RunFor: seconds; Steps, Frames: the count; Break: at_least
-  double x = 0, y = 0;         ///< Click, Drag: the point (Drag: where it starts), pixels
+  double number = 0;           ///< RunFor: seconds; Steps, Frames: the count; Break: at_least; Wheel: clicks
+  double x = 0, y = 0;         ///< Click, Drag, Wheel: the point (Drag: where it starts), pixels
   double x2 = 0, y2 = 0;       ///< Drag: where it ends, pixels
   int button = 0;              ///< Drag: 0 left, 1 right, 2 middle
   core::SourceLoc loc;         ///< where it was written

@@ -61,7 +61,7 @@ bool fieldWidget(const scene::FieldDesc& d, const FieldValue& v, FieldValue& out
       const auto c = std::get<std::array<double, 3>>(v);
       float f[3] = {static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2])};
       if (!ImGui::ColorEdit3("##v", f, ImGuiColorEditFlags_Float)) return false;
-      out = std::array<double, 3>{f[0], f[1], f[2]};
+      out = std::array<double, 3>{static_cast<double>(f[0]), static_cast<double>(f[1]), static_cast<double>(f[2])};
       return true;
     }
     case FieldKind::Vec3: {

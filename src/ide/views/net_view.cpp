@@ -248,7 +248,7 @@ void drawNetView(App& app, const Rect& at, nlohmann::json& report) {
   }
   if (ImGui::IsItemActive() &&
       (ImGui::IsMouseDragging(ImGuiMouseButton_Left) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle))) {
-    s.viewport = s.viewport.panned({io.MouseDelta.x, io.MouseDelta.y});
+    s.viewport = s.viewport.panned({static_cast<double>(io.MouseDelta.x), static_cast<double>(io.MouseDelta.y)});
   }
   const auto under = clickAndPaint(app, s, r, s.viewport, report);
   if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && under &&

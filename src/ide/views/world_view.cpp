@@ -184,20 +184,21 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
   if (active && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
     if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
       take_camera();
-      app.orbit.orbit(io.MouseDelta.x, io.MouseDelta.y);
+      app.orbit.orbit(static_cast<double>(io.MouseDelta.x), static_cast<double>(io.MouseDelta.y));
     } else if (ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle)) {
       take_camera();
-      app.orbit.pan(io.MouseDelta.x, io.MouseDelta.y, h);
+      app.orbit.pan(static_cast<double>(io.MouseDelta.x), static_cast<double>(io.MouseDelta.y), h);
     }
   }
   if (hovered && io.MouseWheel != 0) {
     take_camera();
-    app.orbit.zoom(io.MouseWheel);
+    app.orbit.zoom(static_cast<double>(io.MouseWheel));
   }
 
   // a click (no drag) picks a shape and tells the mouse sensors
   if (hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 16) {
-    const auto ray = OrbitCamera::from(camera).ray(io.MousePos.x - origin.x, io.MousePos.y - origin.y, w, h);
+    const auto ray = OrbitCamera::from(camera).ray(static_cast<double>(io.MousePos.x - origin.x),
+                                                   static_cast<double>(io.MousePos.y - origin.y), w, h);
     const auto hit = scene::pick(s->root(), ray);
     if (hit.shape != nullptr) {
       app.selectNode(hit.shape->path());
