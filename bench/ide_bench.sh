@@ -9,6 +9,8 @@
 #             status bar shows at the end, and the share of the world view drawn
 #   net-fit   240 headless frames of a generated page of 10,000 transitions and 10,000 places,
 #             fitted into the net view (per frame)
+#   net-pan   the same page zoomed in (the wheel, 20 clicks) and panned by 30 drags of 11
+#             frames each (per frame)
 # Needs a Release build (cmake --preset ci && cmake --build build/ci) and, for `window`,
 # xvfb-run. Usage: bench/ide_bench.sh [BUILD_DIR] [REPEATS]
 set -euo pipefail
@@ -36,6 +38,10 @@ factory=examples/factory
 printf -- '- frames: 1\n' >"$work/one.yaml"
 printf -- '- frames: 241\n' >"$work/idle.yaml"
 printf -- '- press: run\n- frames: 240\n' >"$work/run.yaml"
+{
+  printf -- '- wheel: {at: [1390, 340], clicks: 20}\n- frames: 19\n'
+  for i in $(seq 30); do printf -- '- drag: {from: [%d, 340], to: [%d, 360]}\n' $((1300 + i % 2 * 60)) $((1320 + i % 2 * 60)); done
+} >"$work/pan.yaml"
 python3 - "$work/big.gdpn.yaml" <<'EOF'
 import sys
 n, cols = 10000, 100
@@ -59,11 +65,13 @@ idle=$(each ide $factory "$work/idle.yaml")
 running=$(each ide $factory "$work/run.yaml")
 big_open=$(each ide "$work/big.gdpn.yaml" "$work/one.yaml")
 big=$(each ide "$work/big.gdpn.yaml" "$work/idle.yaml")
-per_frame() { echo "($1 - $2) * 1000 / 240" | bc -l | xargs printf '%.1f'; }
+big_pan=$(each ide "$work/big.gdpn.yaml" "$work/pan.yaml")
+per_frame() { echo "($1 - $2) * 1000 / ${3:-240}" | bc -l | xargs printf '%.1f'; }
 printf 'open the factory (first frame)      %.2f s\n' "$open"
 printf 'idle frame                          %s ms\n' "$(per_frame "$idle" "$open")"
 printf 'running frame (world in full)       %s ms\n' "$(per_frame "$running" "$open")"
 printf 'net view, 10,000 transitions fitted %s ms a frame (opening it: %.2f s)\n' "$(per_frame "$big" "$big_open")" "$big_open"
+printf 'net view, zoomed in and panned      %s ms a frame\n' "$(per_frame "$big_pan" "$big_open" 350)"
 
 if command -v xvfb-run >/dev/null; then
   for _ in $(seq "$repeats"); do
