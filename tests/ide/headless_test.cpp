@@ -95,6 +95,18 @@ TEST_F(HeadlessIde, ContactsAreMarkedOnlyWhileShown) {
   EXPECT_EQ(r["world"]["contacts"], 0);
 }
 
+TEST_F(HeadlessIde, ASelectedNodeShowsThePlaceOrTheOccurringTransitionHoldingIt) {
+  // the arm's joint waits in P1 as the model starts; pickup holds it while it occurs
+  auto r = replay("- select: arm/turn\n");
+  EXPECT_EQ(r["net_view"]["holding"], nlohmann::json::array({"factory/P1"})) << r["net_view"].dump();
+  r = replay("- break: {starts: factory/pickup}\n- run: 30\n- select: arm/turn\n");
+  ASSERT_EQ(r["net_view"]["activity"]["factory/pickup"], "occurring");
+  EXPECT_EQ(r["net_view"]["holding"], nlohmann::json::array({"factory/pickup"})) << r["net_view"].dump();
+  // a node that is no token: nothing
+  r = replay("- select: line\n");
+  EXPECT_EQ(r["net_view"]["holding"], nlohmann::json::array());
+}
+
 TEST_F(HeadlessIde, TheWheelZoomsTheNetViewAboutTheMouse) {
   const auto fitted = replay("[]")["net_view"]["zoom"].get<double>();
   const auto closer = replay("- wheel: {at: [1070, 300], clicks: 3}\n")["net_view"]["zoom"].get<double>();

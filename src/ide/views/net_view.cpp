@@ -133,6 +133,31 @@ Region regionHere(const char* id) {
   return r;
 }
 
+/// The page's places whose marking holds node `path` as a token and its transitions holding it
+/// while they occur (needs s.state and s.binding for the run).
+std::vector<diagram::ItemRef> holdersOf(App& app, const NetViewState& s, const std::string& path) {
+  std::vector<diagram::ItemRef> out;
+  const auto& places = s.state->places;
+  for (std::uint32_t i = 0; i < places.size(); ++i) {
+    for (const auto& slot : places[i]) {
+      if (std::find(slot.names.begin(), slot.names.end(), path) == slot.names.end()) continue;
+      out.push_back({diagram::ItemKind::Place, i});
+      break;
+    }
+  }
+  const auto& sim = app.run().session()->simulation();
+  for (std::uint32_t i = 0; i < s.binding.transitions.size(); ++i) {
+    const auto t = s.binding.transitions[i];
+    if (t < 0) continue;
+    for (const auto& [slot, ref] : sim.kernel().held(static_cast<net::TransitionId>(t))) {
+      if (sim.nodeName(ref) != path) continue;
+      out.push_back({diagram::ItemKind::Transition, i});
+      break;
+    }
+  }
+  return out;
+}
+
 /// Selects what a click (not the end of a drag) on the region's button hits, then paints the
 /// page with the run's marking in `viewport` and frames the selection. Returns the item under
 /// the mouse; writes what it drew into `report`.
@@ -169,19 +194,35 @@ std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const R
     state.reset();
     s.bound_net = nullptr;
   }
+  // a selected node: the places and transitions that hold it as a token (found again after a
+  // step or a start, or when another node is selected)
+  const auto& selection = app.document().selection();
+  const std::string node = selection.kind == SelectionKind::Node && state ? selection.name : std::string();
+  if (node != s.holding_node || s.holding_steps != s.state_steps) {
+    s.holding = node.empty() ? std::vector<diagram::ItemRef>{} : holdersOf(app, s, node);
+    s.holding_node = node;
+    s.holding_steps = s.state_steps;
+  }
   ImDrawList* list = ImGui::GetWindowDrawList();
   const ImVec2 far{r.origin.x + static_cast<float>(r.width), r.origin.y + static_cast<float>(r.height)};
   list->PushClipRect(r.origin, far, true);
   ImGuiCanvas canvas(list, r.origin.x, r.origin.y, r.width, r.height, app.fonts.regular);
   const std::size_t drawn = diagram::paintNet(s.layout, *s.index, state ? &*state : nullptr, viewport, canvas);
-  // the selection: a frame around it in the IDE's highlight colour
-  if (const auto sel = selectedItem(s, app.document().selection())) {
-    const diagram::Box& box = s.layout.boxOf(*sel);
+  // the selection, and what holds a selected node: a frame around each in the highlight colour
+  const auto frame = [&](diagram::ItemRef item, float thickness) {
+    const diagram::Box& box = s.layout.boxOf(item);
     const diagram::Point lo = viewport.toScreen(box.min), hi = viewport.toScreen(box.max);
     list->AddRect({r.origin.x + static_cast<float>(lo.x) - 4, r.origin.y + static_cast<float>(lo.y) - 4},
                   {r.origin.x + static_cast<float>(hi.x) + 4, r.origin.y + static_cast<float>(hi.y) + 4},
-                  IM_COL32(255, 170, 0, 255), 3.0f, 0, 2.0f);
+                  IM_COL32(255, 170, 0, 255), 3.0f, 0, thickness);
+  };
+  if (const auto sel = selectedItem(s, selection)) frame(*sel, 2.0f);
+  nlohmann::json holding = nlohmann::json::array();
+  for (const auto item : s.holding) {
+    frame(item, 2.0f);
+    holding.push_back(qualified(s, item));
   }
+  report["holding"] = holding;
   list->PopClipRect();
   if (under && ImGui::IsItemHovered() && under->kind != diagram::ItemKind::Arc) {
     ImGui::SetTooltip("%s", qualified(s, *under).c_str());

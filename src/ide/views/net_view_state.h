@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "gdpn/diagram/layout.h"
 #include "gdpn/diagram/net_state.h"
@@ -31,6 +32,9 @@ struct NetViewState {
   std::optional<diagram::NetState> state;  ///< the run's marking as last read
   std::int64_t state_steps = -1;     ///< the kernel's steps plus starts then
   const void* state_kernel = nullptr;  ///< and its kernel
+  std::vector<diagram::ItemRef> holding;  ///< the places and transitions holding the selected node as a token
+  std::string holding_node;          ///< that node's path ("" : none)
+  std::int64_t holding_steps = -1;   ///< state_steps when `holding` was found
 };
 
 }  // namespace gdpn::ide
