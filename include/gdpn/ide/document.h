@@ -28,6 +28,8 @@ class Document {
 
   /// The model as edited.
   [[nodiscard]] const model::Model& model() const { return model_; }
+  /// The net, for the commands that edit it (net_edit.h); everything else reads model().net.
+  [[nodiscard]] net::NetSpec& editableNet() { return model_.net; }
   /// The editable scene (null when the model has none).
   [[nodiscard]] scene::Scene* scene() const { return scene_.get(); }
   /// The model with a scene of its own, for a run: nothing the run does reaches the document.

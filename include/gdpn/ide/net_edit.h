@@ -1,0 +1,61 @@
+#pragma once
+/// \file
+/// Commands that edit the net of a document: add, move, rename and delete places and
+/// transitions; add and delete arcs and set their kind and weight. Each checks what it is asked
+/// (names are identifiers, unique on their page; an arc joins a place and a transition of its
+/// page) and refuses with a reason, leaving the document as it was. Each keeps the page as it
+/// was before, so that undo gives it back exactly, declaration order included.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "gdpn/ide/command.h"
+#include "gdpn/net/spec.h"
+
+namespace gdpn::ide {
+
+/// What a net edit does to its page.
+enum class NetEditKind {
+  AddPlace,       ///< a place `name` at `at`
+  AddTransition,  ///< a transition `name` at `at`
+  Move,           ///< place or transition `name` to `at` (a drag's moves merge into one step)
+  Rename,         ///< place or transition `name` to `new_name`, its arcs following
+  Delete,         ///< place or transition `name` and every arc that touches it
+  AddArc,         ///< an arc from `name` to `new_name` of kind `arc_kind` and weight `weight`
+  DeleteArc,      ///< the arc from `name` to `new_name` of kind `arc_kind`
+  SetArcWeight,   ///< that arc's weight on its first slot (a0 when it has none)
+};
+
+/// One edit of one page's net (a top-level page or a page type, by name).
+struct NetEdit {
+  NetEditKind kind = NetEditKind::AddPlace;  ///< what to do
+  std::string page;                          ///< the page or page type
+  std::string name;                          ///< the construct (AddArc, DeleteArc, SetArcWeight: the arc's source)
+  std::string new_name;                      ///< Rename: the new name; arcs: the arc's target
+  net::EditorPos at{0, 0};                   ///< AddPlace, AddTransition, Move: editor units
+  net::ArcKind arc_kind = net::ArcKind::Normal;  ///< arcs: normal, test or inhibitor
+  std::int64_t weight = 1;                   ///< AddArc, SetArcWeight: tokens, 1 to 10^9
+  std::uint64_t drag = 0;                    ///< Move: the drag it belongs to (0: a single move)
+};
+
+/// The command that performs a NetEdit.
+class NetEditCommand final : public Command {
+ public:
+  explicit NetEditCommand(NetEdit edit);
+  std::string apply(Document& doc) override;
+  void revert(Document& doc) override;
+  [[nodiscard]] std::string label() const override;
+  [[nodiscard]] std::uint64_t mergeKey() const override;
+  void absorb(const Command& next) override;
+
+ private:
+  NetEdit edit_;
+  std::optional<net::PageSpec> before_;  // the page as it was, for revert
+  bool type_ = false;                    // the page is a page type
+};
+
+/// The page or page type `name` of `net`; null when there is none.
+net::PageSpec* findPage(net::NetSpec& net, const std::string& name, bool* is_type = nullptr);
+
+}  // namespace gdpn::ide

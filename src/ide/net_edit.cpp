@@ -1,0 +1,228 @@
+// Editing a page's net: each edit works on a copy of the page and replaces it when every check
+// passes; the page as it was is kept for undo.
+
+#include "gdpn/ide/net_edit.h"
+
+#include <algorithm>
+#include <functional>
+
+#include "gdpn/core/text.h"
+#include "gdpn/ide/document.h"
+
+namespace gdpn::ide {
+
+namespace {
+
+constexpr std::int64_t kMaxWeight = 1'000'000'000;
+
+const char* kindName(net::ArcKind k) {
+  switch (k) {
+    case net::ArcKind::Normal: return "arc";
+    case net::ArcKind::Test: return "test arc";
+    case net::ArcKind::Inhibitor: return "inhibitor arc";
+  }
+  return "arc";
+}
+
+template <typename T>
+auto byName(std::vector<T>& list, const std::string& name) {
+  return std::find_if(list.begin(), list.end(), [&](const T& x) { return x.name == name; });
+}
+
+bool hasPlace(net::PageSpec& p, const std::string& n) { return byName(p.places, n) != p.places.end(); }
+bool hasTransition(net::PageSpec& p, const std::string& n) { return byName(p.transitions, n) != p.transitions.end(); }
+
+/// True when `n` names something on the page already (places, transitions and instances share
+/// one namespace).
+bool taken(net::PageSpec& p, const std::string& n) {
+  return hasPlace(p, n) || hasTransition(p, n) || byName(p.instances, n) != p.instances.end();
+}
+
+/// "" when `n` can name a new construct of `p`, else why not.
+std::string newNameProblem(net::PageSpec& p, const std::string& n) {
+  if (!core::isIdentifier(n)) return "'" + n + "' is not a name (letters, digits and _, not starting with a digit)";
+  if (taken(p, n)) return "'" + n + "' is taken on page '" + p.name + "'";
+  return {};
+}
+
+/// True when place `n` of `p` is published as a reference (other pages' arcs reach it).
+bool published(const net::PageSpec& p, const std::string& n) {
+  return std::any_of(p.references.begin(), p.references.end(), [&](const auto& r) { return r.place == n; });
+}
+
+/// True when `n` is a link on `p`: `instance/reference` of an instance on it.
+bool isLink(net::NetSpec& net, net::PageSpec& p, const std::string& n) {
+  const auto slash = n.find('/');
+  if (slash == std::string::npos) return false;
+  const auto instance = byName(p.instances, n.substr(0, slash));
+  if (instance == p.instances.end()) return false;
+  const auto* type = findPage(net, instance->type);
+  return type != nullptr && published(*type, n.substr(slash + 1));
+}
+
+auto findArc(net::PageSpec& p, const NetEdit& e) {
+  return std::find_if(p.arcs.begin(), p.arcs.end(),
+                      [&](const net::ArcSpec& a) { return a.from == e.name && a.to == e.new_name && a.kind == e.arc_kind; });
+}
+
+void setWeight(net::ArcSpec& a, std::int64_t w) {
+  if (a.weights.empty()) a.weights.push_back({net::kDefaultSlot, 1, {}});
+  a.weights.front().value = w;
+  // a0 with weight 1 is what an arc without weights means: written the short way
+  if (a.weights.size() == 1 && a.weights.front().slot == net::kDefaultSlot && w == 1) a.weights.clear();
+}
+
+/// Adds a place or transition named e.name at e.at to `list`, one of `p`'s; "" or why not.
+template <typename Spec>
+std::string addNamed(net::PageSpec& p, std::vector<Spec>& list, const NetEdit& e) {
+  if (auto why = newNameProblem(p, e.name); !why.empty()) return why;
+  Spec added;
+  added.name = e.name;
+  added.position = e.at;
+  list.push_back(std::move(added));
+  return {};
+}
+
+/// Performs `e` on `p` (a copy of the page in `net`); "" or why not.
+std::string edit(net::NetSpec& net, net::PageSpec& p, const NetEdit& e) {
+  switch (e.kind) {
+    case NetEditKind::AddPlace: return addNamed(p, p.places, e);
+    case NetEditKind::AddTransition: return addNamed(p, p.transitions, e);
+    case NetEditKind::Move: {
+      if (auto it = byName(p.places, e.name); it != p.places.end()) it->position = e.at;
+      else if (auto t = byName(p.transitions, e.name); t != p.transitions.end()) t->position = e.at;
+      else if (auto i = byName(p.instances, e.name); i != p.instances.end()) i->position = e.at;
+      else return "no place, transition or instance '" + e.name + "' on page '" + p.name + "'";
+      return {};
+    }
+    case NetEditKind::Rename: {
+      const bool place = hasPlace(p, e.name);
+      if (!place && !hasTransition(p, e.name)) return "no place or transition '" + e.name + "' on page '" + p.name + "'";
+      if (place && published(p, e.name)) {
+        return "'" + e.name + "' is published as a reference of '" + p.name + "': arcs of other pages reach it";
+      }
+      if (auto why = newNameProblem(p, e.new_name); !why.empty()) return why;
+      if (place) byName(p.places, e.name)->name = e.new_name;
+      else byName(p.transitions, e.name)->name = e.new_name;
+      for (auto& a : p.arcs) {
+        if (a.from == e.name) a.from = e.new_name;
+        if (a.to == e.name) a.to = e.new_name;
+      }
+      return {};
+    }
+    case NetEditKind::Delete: {
+      const bool place = hasPlace(p, e.name);
+      if (!place && !hasTransition(p, e.name)) return "no place or transition '" + e.name + "' on page '" + p.name + "'";
+      if (place && published(p, e.name)) {
+        return "'" + e.name + "' is published as a reference of '" + p.name + "': arcs of other pages reach it";
+      }
+      if (place) p.places.erase(byName(p.places, e.name));
+      else p.transitions.erase(byName(p.transitions, e.name));
+      std::erase_if(p.arcs, [&](const net::ArcSpec& a) { return a.from == e.name || a.to == e.name; });
+      return {};
+    }
+    case NetEditKind::AddArc: {
+      const auto placeLike = [&](const std::string& n) { return hasPlace(p, n) || isLink(net, p, n); };
+      const bool in = placeLike(e.name) && hasTransition(p, e.new_name);
+      const bool out = hasTransition(p, e.name) && placeLike(e.new_name);
+      if (!in && !out) {
+        return "an arc joins a place (or a link) and a transition of page '" + p.name + "': '" + e.name + "' to '" +
+               e.new_name + "' does not";
+      }
+      if (out && e.arc_kind != net::ArcKind::Normal) {
+        return std::string(e.arc_kind == net::ArcKind::Test ? "a " : "an ") + kindName(e.arc_kind) +
+               " runs from a place to a transition";
+      }
+      if (e.weight < 1 || e.weight > kMaxWeight) return "an arc's weight is a whole number from 1 to 10^9";
+      if (findArc(p, e) != p.arcs.end()) {
+        return std::string("there is already ") + (e.arc_kind == net::ArcKind::Test ? "a " : "an ") + kindName(e.arc_kind) +
+               " from '" + e.name + "' to '" + e.new_name + "'";
+      }
+      net::ArcSpec a;
+      a.from = e.name;
+      a.to = e.new_name;
+      a.kind = e.arc_kind;
+      setWeight(a, e.weight);
+      p.arcs.push_back(std::move(a));
+      return {};
+    }
+    case NetEditKind::DeleteArc:
+    case NetEditKind::SetArcWeight: {
+      const auto a = findArc(p, e);
+      if (a == p.arcs.end()) {
+        return std::string("no ") + kindName(e.arc_kind) + " from '" + e.name + "' to '" + e.new_name + "' on page '" +
+               p.name + "'";
+      }
+      if (e.kind == NetEditKind::DeleteArc) {
+        p.arcs.erase(a);
+        return {};
+      }
+      if (e.weight < 1 || e.weight > kMaxWeight) return "an arc's weight is a whole number from 1 to 10^9";
+      setWeight(*a, e.weight);
+      return {};
+    }
+  }
+  return "unknown edit";
+}
+
+}  // namespace
+
+net::PageSpec* findPage(net::NetSpec& net, const std::string& name, bool* is_type) {
+  for (auto* list : {&net.pages, &net.page_types}) {
+    for (auto& p : *list) {
+      if (p.name != name) continue;
+      if (is_type != nullptr) *is_type = list == &net.page_types;
+      return &p;
+    }
+  }
+  return nullptr;
+}
+
+NetEditCommand::NetEditCommand(NetEdit edit) : edit_(std::move(edit)) {}
+
+std::string NetEditCommand::apply(Document& doc) {
+  net::NetSpec& net = doc.editableNet();
+  net::PageSpec* page = findPage(net, edit_.page, &type_);
+  if (page == nullptr) return "no page or page type '" + edit_.page + "'";
+  net::PageSpec changed = *page;
+  if (auto why = edit(net, changed, edit_); !why.empty()) return why;
+  before_ = std::move(*page);
+  *page = std::move(changed);
+  doc.touched();
+  return {};
+}
+
+void NetEditCommand::revert(Document& doc) {
+  net::PageSpec* page = findPage(doc.editableNet(), edit_.page);
+  if (page == nullptr || !before_) return;
+  *page = *before_;
+  doc.touched();
+}
+
+std::string NetEditCommand::label() const {
+  switch (edit_.kind) {
+    case NetEditKind::AddPlace: return "add place " + edit_.page + "/" + edit_.name;
+    case NetEditKind::AddTransition: return "add transition " + edit_.page + "/" + edit_.name;
+    case NetEditKind::Move: return "move " + edit_.page + "/" + edit_.name;
+    case NetEditKind::Rename: return "rename " + edit_.page + "/" + edit_.name + " to " + edit_.new_name;
+    case NetEditKind::Delete: return "delete " + edit_.page + "/" + edit_.name;
+    case NetEditKind::AddArc: return std::string("add ") + kindName(edit_.arc_kind) + " " + edit_.name + " -> " + edit_.new_name;
+    case NetEditKind::DeleteArc:
+      return std::string("delete ") + kindName(edit_.arc_kind) + " " + edit_.name + " -> " + edit_.new_name;
+    case NetEditKind::SetArcWeight: return "set the weight of " + edit_.name + " -> " + edit_.new_name;
+  }
+  return "edit the net";
+}
+
+std::uint64_t NetEditCommand::mergeKey() const {
+  if (edit_.kind != NetEditKind::Move || edit_.drag == 0) return 0;
+  const auto h = std::hash<std::string>{}(edit_.page + '\n' + edit_.name);
+  return (h ^ (edit_.drag * 0x9E3779B97F4A7C15ULL)) | 1U;
+}
+
+void NetEditCommand::absorb(const Command& next) {
+  // the step keeps the page as it was before the drag and takes the last position
+  edit_.at = static_cast<const NetEditCommand&>(next).edit_.at;
+}
+
+}  // namespace gdpn::ide

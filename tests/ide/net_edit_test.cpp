@@ -1,0 +1,193 @@
+// Editing the net through commands, on the factory example: each edit's effect on the saved
+// text, its refusals (which change nothing), a drag merged into one step, and the property
+// that any sequence of edits undone gives back the save it started from, byte for byte, and
+// redone gives back the save it ended with.
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "gdpn/ide/document.h"
+#include "gdpn/ide/net_edit.h"
+#include "gdpn/model/model.h"
+
+namespace gdpn::ide {
+namespace {
+
+std::unique_ptr<Document> openFactory() {
+  core::Diagnostics diags;
+  auto doc = Document::open(std::string(GDPN_SOURCE_DIR) + "/examples/factory/factory.gdpn.yaml", diags);
+  EXPECT_TRUE(doc) << diags.str();
+  return doc;
+}
+
+std::string run(Document& doc, NetEdit e) { return doc.execute(std::make_unique<NetEditCommand>(std::move(e))); }
+
+NetEdit make(NetEditKind kind, std::string page, std::string name, std::string second = {}) {
+  NetEdit e;
+  e.kind = kind;
+  e.page = std::move(page);
+  e.name = std::move(name);
+  e.new_name = std::move(second);
+  return e;
+}
+
+/// The text parses back into a model with no error.
+void readsBack(const std::string& text) {
+  core::Diagnostics diags;
+  EXPECT_TRUE(model::parseModel(text, "edited.gdpn.yaml", diags)) << diags.str() << "\n" << text;
+  EXPECT_FALSE(diags.hasErrors()) << diags.str();
+}
+
+TEST(NetEdit, APlaceATransitionAndAnArcAreAddedWhereAsked) {
+  auto doc = openFactory();
+  ASSERT_TRUE(doc);
+  const auto before = doc->text();
+  auto place = make(NetEditKind::AddPlace, "factory", "waiting");
+  place.at = {3, -2};
+  ASSERT_EQ(run(*doc, place), "");
+  auto t = make(NetEditKind::AddTransition, "factory", "depart");
+  t.at = {4, -2};
+  ASSERT_EQ(run(*doc, t), "");
+  auto arc = make(NetEditKind::AddArc, "factory", "waiting", "depart");
+  arc.weight = 2;
+  ASSERT_EQ(run(*doc, arc), "");
+  const auto after = doc->text();
+  EXPECT_NE(after.find("waiting: {at: [3, -2]}"), std::string::npos) << after;
+  EXPECT_NE(after.find("depart: {at: [4, -2]}"), std::string::npos) << after;
+  EXPECT_NE(after.find("{from: waiting, to: depart, weight: 2}"), std::string::npos) << after;
+  readsBack(after);
+  EXPECT_EQ(doc->history().undoLabel(), "add arc waiting -> depart");
+  ASSERT_TRUE(doc->undo() && doc->undo() && doc->undo());
+  EXPECT_EQ(doc->text(), before);
+}
+
+TEST(NetEdit, ARenameCarriesTheArcsAndADeleteTakesThemAway) {
+  auto doc = openFactory();
+  ASSERT_TRUE(doc);
+  const auto* page = findPage(doc->editableNet(), "factory");
+  ASSERT_NE(page, nullptr);
+  const auto arcsOf = [&](const std::string& n) {
+    return std::count_if(page->arcs.begin(), page->arcs.end(), [&](const auto& a) { return a.from == n || a.to == n; });
+  };
+  const auto touching = arcsOf("P1");
+  ASSERT_GT(touching, 0);
+  ASSERT_EQ(run(*doc, make(NetEditKind::Rename, "factory", "P1", "arm_idle")), "");
+  EXPECT_EQ(arcsOf("P1"), 0);
+  EXPECT_EQ(arcsOf("arm_idle"), touching);
+  const auto arcs = page->arcs.size();
+  ASSERT_EQ(run(*doc, make(NetEditKind::Delete, "factory", "arm_idle")), "");
+  EXPECT_EQ(page->arcs.size(), arcs - static_cast<std::size_t>(touching));
+  readsBack(doc->text());
+}
+
+TEST(NetEdit, RefusedEditsSayWhyAndChangeNothing) {
+  auto doc = openFactory();
+  ASSERT_TRUE(doc);
+  const auto before = doc->text();
+  const std::pair<NetEdit, std::string> cases[] = {
+      {make(NetEditKind::AddPlace, "nowhere", "p"), "no page or page type 'nowhere'"},
+      {make(NetEditKind::AddPlace, "factory", "2nd"), "'2nd' is not a name (letters, digits and _, not starting with a digit)"},
+      {make(NetEditKind::AddTransition, "factory", "P1"), "'P1' is taken on page 'factory'"},
+      {make(NetEditKind::Rename, "factory", "P1", "P2"), "'P2' is taken on page 'factory'"},
+      {make(NetEditKind::Delete, "factory", "ghost"), "no place or transition 'ghost' on page 'factory'"},
+      {make(NetEditKind::AddArc, "factory", "P1", "P2"),
+       "an arc joins a place (or a link) and a transition of page 'factory': 'P1' to 'P2' does not"},
+      {make(NetEditKind::AddArc, "factory", "P1", "pickup"), "there is already an arc from 'P1' to 'pickup'"},
+      {make(NetEditKind::DeleteArc, "factory", "pickup", "P1"), "no arc from 'pickup' to 'P1' on page 'factory'"},
+  };
+  for (const auto& [edit, why] : cases) {
+    EXPECT_EQ(run(*doc, edit), why);
+    EXPECT_EQ(doc->text(), before);
+  }
+  auto inhibitor = make(NetEditKind::AddArc, "factory", "pickup", "P1");
+  inhibitor.arc_kind = net::ArcKind::Inhibitor;
+  EXPECT_EQ(run(*doc, inhibitor), "an inhibitor arc runs from a place to a transition");
+  auto heavy = make(NetEditKind::SetArcWeight, "factory", "P1", "pickup");
+  heavy.weight = 0;
+  EXPECT_EQ(run(*doc, heavy), "an arc's weight is a whole number from 1 to 10^9");
+  EXPECT_EQ(doc->text(), before);
+  EXPECT_FALSE(doc->history().canUndo());
+}
+
+TEST(NetEdit, ADragIsOneStep) {
+  auto doc = openFactory();
+  ASSERT_TRUE(doc);
+  const auto before = doc->text();
+  for (int i = 1; i <= 10; ++i) {
+    auto move = make(NetEditKind::Move, "factory", "pickup");
+    move.at = {0.5 * i, 1};
+    move.drag = 7;
+    ASSERT_EQ(run(*doc, move), "");
+  }
+  EXPECT_EQ(doc->history().depth(), 1u);
+  EXPECT_NE(doc->text().find("pickup:"), std::string::npos);
+  const auto after = doc->text();
+  ASSERT_TRUE(doc->undo());
+  EXPECT_EQ(doc->text(), before);
+  ASSERT_TRUE(doc->redo());
+  EXPECT_EQ(doc->text(), after);
+}
+
+/// Random edits, good and bad, on every page and page type of the factory.
+class RandomEdits {
+ public:
+  RandomEdits(Document& doc, std::uint32_t seed) : doc_(doc), rng_(seed) {
+    for (const auto* list : {&doc.model().net.pages, &doc.model().net.page_types}) {
+      for (const auto& p : *list) pages_.push_back(p.name);
+    }
+  }
+  NetEdit next() {
+    const net::PageSpec& page = *findPage(doc_.editableNet(), pick(pages_));
+    std::vector<std::string> names{"x" + std::to_string(pick(10)), "y" + std::to_string(pick(10)), "bad name"};
+    for (const auto& p : page.places) names.push_back(p.name);
+    for (const auto& t : page.transitions) names.push_back(t.name);
+    NetEdit e;
+    e.kind = static_cast<NetEditKind>(pick(8));
+    e.page = page.name;
+    e.name = pick(names);
+    e.new_name = pick(names);
+    e.at = {static_cast<double>(pick(20)) - 10, static_cast<double>(pick(20)) - 10};
+    e.arc_kind = static_cast<net::ArcKind>(pick(3));
+    e.weight = static_cast<std::int64_t>(pick(4));  // 0 is refused
+    e.drag = pick(2) == 0 ? 0 : 1 + pick(2);
+    return e;
+  }
+
+ private:
+  std::size_t pick(std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng_); }
+  const std::string& pick(const std::vector<std::string>& v) { return v[pick(v.size())]; }
+  Document& doc_;
+  std::mt19937 rng_;
+  std::vector<std::string> pages_;
+};
+
+TEST(NetEdit, AnySequenceUndoneGivesBackTheStartAndRedoneTheEndByteForByte) {
+  for (std::uint32_t seed = 1; seed <= 6; ++seed) {
+    auto doc = openFactory();
+    ASSERT_TRUE(doc);
+    const auto start = doc->text();
+    RandomEdits edits(*doc, seed);
+    int applied = 0;
+    for (int i = 0; i < 150; ++i) {
+      const net::NetSpec before = doc->model().net;
+      if (run(*doc, edits.next()).empty()) {
+        ++applied;
+      } else {
+        ASSERT_TRUE(doc->model().net == before) << "a refused edit changed the net (seed " << seed << ", edit " << i << ")";
+      }
+    }
+    EXPECT_GT(applied, 30) << "seed " << seed;
+    const auto end = doc->text();
+    readsBack(end);
+    while (doc->undo()) {
+    }
+    EXPECT_EQ(doc->text(), start) << "seed " << seed;
+    while (doc->redo()) {
+    }
+    EXPECT_EQ(doc->text(), end) << "seed " << seed;
+  }
+}
+
+}  // namespace
+}  // namespace gdpn::ide
