@@ -89,6 +89,17 @@ std::string edit(net::NetSpec& net, net::PageSpec& p, const NetEdit& e) {
     case NetEditKind::AddPlace: return addNamed(p, p.places, e);
     case NetEditKind::AddTransition: return addNamed(p, p.transitions, e);
     case NetEditKind::Move: {
+      // a page Graphviz lays out: every construct pinned where it is drawn, then one moved
+      const auto pin = [&](auto& list) {
+        for (auto& x : list) {
+          if (x.position) continue;
+          const auto at = std::find_if(e.pins.begin(), e.pins.end(), [&](const auto& q) { return q.first == x.name; });
+          if (at != e.pins.end()) x.position = at->second;
+        }
+      };
+      pin(p.places);
+      pin(p.transitions);
+      pin(p.instances);
       if (auto it = byName(p.places, e.name); it != p.places.end()) it->position = e.at;
       else if (auto t = byName(p.transitions, e.name); t != p.transitions.end()) t->position = e.at;
       else if (auto i = byName(p.instances, e.name); i != p.instances.end()) i->position = e.at;
@@ -176,6 +187,16 @@ net::PageSpec* findPage(net::NetSpec& net, const std::string& name, bool* is_typ
     }
   }
   return nullptr;
+}
+
+NetEdit makeNetEdit(NetEditKind kind, std::string page, std::string name, std::string second, net::EditorPos at) {
+  NetEdit e;
+  e.kind = kind;
+  e.page = std::move(page);
+  e.name = std::move(name);
+  e.new_name = std::move(second);
+  e.at = at;
+  return e;
 }
 
 NetEditCommand::NetEditCommand(NetEdit edit) : edit_(std::move(edit)) {}

@@ -107,6 +107,53 @@ TEST_F(HeadlessIde, ASelectedNodeShowsThePlaceOrTheOccurringTransitionHoldingIt)
   EXPECT_EQ(r["net_view"]["holding"], nlohmann::json::array());
 }
 
+/// "- click: [X, Y]" at a point of a report.
+std::string clickAt(const nlohmann::json& point) {
+  return "- click: [" + std::to_string(point[0].get<int>()) + ", " + std::to_string(point[1].get<int>()) + "]\n";
+}
+
+/// "- drag: ..." with the right button at a point of a report, without moving: a right click.
+std::string rightClickAt(const nlohmann::json& point) {
+  const auto p = "[" + std::to_string(point[0].get<int>()) + ", " + std::to_string(point[1].get<int>()) + "]";
+  return "- drag: {from: " + p + ", to: " + p + ", button: right}\n";
+}
+
+TEST_F(HeadlessIde, TheNetIsEditedByHandInTheNetView) {
+  const std::string model = std::string(GDPN_SOURCE_DIR) + "/examples/basics/figure31";
+  auto r = replayOn(model, "[]");
+  ASSERT_EQ(r["net_view"]["places"], 4);
+  const auto at = r["net_view"]["at"];
+  const auto p1 = at["main/P1"], t2 = at["main/T2"];
+  // a right click on paper, below P1, offers a place there; choosing it adds P5
+  const nlohmann::json paper = {p1[0].get<int>(), p1[1].get<int>() + 80};
+  r = replayOn(model, rightClickAt(paper));
+  ASSERT_TRUE(r["net_view"]["menu"].contains("Place here")) << r["net_view"].dump();
+  const auto place_here = r["net_view"]["menu"]["Place here"];
+  r = replayOn(model, rightClickAt(paper) + clickAt(place_here));
+  EXPECT_EQ(r["net_view"]["places"], 5);
+  EXPECT_EQ(r["undo"]["label"], "add place main/P5") << r["undo"].dump();
+  ASSERT_TRUE(r["net_view"]["at"].contains("main/P5"));
+  EXPECT_NEAR(r["net_view"]["at"]["main/P5"][1].get<double>(), paper[1].get<double>(), 20);
+  // a right click on T2 offers an arc from it; a click on P1 ends it
+  const std::string arc_menu = rightClickAt(t2);
+  r = replayOn(model, arc_menu);
+  ASSERT_TRUE(r["net_view"]["menu"].contains("Arc from here")) << r["net_view"].dump();
+  const auto arcs = r["net_view"]["arcs"].get<int>();
+  r = replayOn(model, arc_menu + clickAt(r["net_view"]["menu"]["Arc from here"]) + clickAt(p1));
+  EXPECT_EQ(r["net_view"]["arcs"], arcs + 1);
+  EXPECT_EQ(r["undo"]["label"], "add arc T2 -> P1");
+  // a left drag on P1 moves it, one step of undo; Ctrl+Z puts it back
+  const nlohmann::json right = {p1[0].get<int>() + 60, p1[1].get<int>()};
+  const std::string drag = "- drag: {from: [" + std::to_string(p1[0].get<int>()) + ", " + std::to_string(p1[1].get<int>()) +
+                           "], to: [" + std::to_string(right[0].get<int>()) + ", " + std::to_string(right[1].get<int>()) + "]}\n";
+  r = replayOn(model, drag);
+  EXPECT_NEAR(r["net_view"]["at"]["main/P1"][0].get<double>(), right[0].get<double>(), 12) << r["net_view"].dump();
+  EXPECT_EQ(r["undo"]["depth"], 1);
+  EXPECT_EQ(r["undo"]["label"], "move main/P1");
+  r = replayOn(model, drag + "- press: undo\n");
+  EXPECT_EQ(r["net_view"]["at"]["main/P1"], p1);
+}
+
 TEST_F(HeadlessIde, TheWheelZoomsTheNetViewAboutTheMouse) {
   const auto fitted = replay("[]")["net_view"]["zoom"].get<double>();
   const auto closer = replay("- wheel: {at: [1070, 300], clicks: 3}\n")["net_view"]["zoom"].get<double>();

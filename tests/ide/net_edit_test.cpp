@@ -23,15 +23,6 @@ std::unique_ptr<Document> openFactory() {
 
 std::string run(Document& doc, NetEdit e) { return doc.execute(std::make_unique<NetEditCommand>(std::move(e))); }
 
-NetEdit make(NetEditKind kind, std::string page, std::string name, std::string second = {}) {
-  NetEdit e;
-  e.kind = kind;
-  e.page = std::move(page);
-  e.name = std::move(name);
-  e.new_name = std::move(second);
-  return e;
-}
-
 /// The text parses back into a model with no error.
 void readsBack(const std::string& text) {
   core::Diagnostics diags;
@@ -43,13 +34,13 @@ TEST(NetEdit, APlaceATransitionAndAnArcAreAddedWhereAsked) {
   auto doc = openFactory();
   ASSERT_TRUE(doc);
   const auto before = doc->text();
-  auto place = make(NetEditKind::AddPlace, "factory", "waiting");
+  auto place = makeNetEdit(NetEditKind::AddPlace, "factory", "waiting");
   place.at = {3, -2};
   ASSERT_EQ(run(*doc, place), "");
-  auto t = make(NetEditKind::AddTransition, "factory", "depart");
+  auto t = makeNetEdit(NetEditKind::AddTransition, "factory", "depart");
   t.at = {4, -2};
   ASSERT_EQ(run(*doc, t), "");
-  auto arc = make(NetEditKind::AddArc, "factory", "waiting", "depart");
+  auto arc = makeNetEdit(NetEditKind::AddArc, "factory", "waiting", "depart");
   arc.weight = 2;
   ASSERT_EQ(run(*doc, arc), "");
   const auto after = doc->text();
@@ -72,11 +63,11 @@ TEST(NetEdit, ARenameCarriesTheArcsAndADeleteTakesThemAway) {
   };
   const auto touching = arcsOf("P1");
   ASSERT_GT(touching, 0);
-  ASSERT_EQ(run(*doc, make(NetEditKind::Rename, "factory", "P1", "arm_idle")), "");
+  ASSERT_EQ(run(*doc, makeNetEdit(NetEditKind::Rename, "factory", "P1", "arm_idle")), "");
   EXPECT_EQ(arcsOf("P1"), 0);
   EXPECT_EQ(arcsOf("arm_idle"), touching);
   const auto arcs = page->arcs.size();
-  ASSERT_EQ(run(*doc, make(NetEditKind::Delete, "factory", "arm_idle")), "");
+  ASSERT_EQ(run(*doc, makeNetEdit(NetEditKind::Delete, "factory", "arm_idle")), "");
   EXPECT_EQ(page->arcs.size(), arcs - static_cast<std::size_t>(touching));
   readsBack(doc->text());
 }
@@ -86,24 +77,24 @@ TEST(NetEdit, RefusedEditsSayWhyAndChangeNothing) {
   ASSERT_TRUE(doc);
   const auto before = doc->text();
   const std::pair<NetEdit, std::string> cases[] = {
-      {make(NetEditKind::AddPlace, "nowhere", "p"), "no page or page type 'nowhere'"},
-      {make(NetEditKind::AddPlace, "factory", "2nd"), "'2nd' is not a name (letters, digits and _, not starting with a digit)"},
-      {make(NetEditKind::AddTransition, "factory", "P1"), "'P1' is taken on page 'factory'"},
-      {make(NetEditKind::Rename, "factory", "P1", "P2"), "'P2' is taken on page 'factory'"},
-      {make(NetEditKind::Delete, "factory", "ghost"), "no place or transition 'ghost' on page 'factory'"},
-      {make(NetEditKind::AddArc, "factory", "P1", "P2"),
+      {makeNetEdit(NetEditKind::AddPlace, "nowhere", "p"), "no page or page type 'nowhere'"},
+      {makeNetEdit(NetEditKind::AddPlace, "factory", "2nd"), "'2nd' is not a name (letters, digits and _, not starting with a digit)"},
+      {makeNetEdit(NetEditKind::AddTransition, "factory", "P1"), "'P1' is taken on page 'factory'"},
+      {makeNetEdit(NetEditKind::Rename, "factory", "P1", "P2"), "'P2' is taken on page 'factory'"},
+      {makeNetEdit(NetEditKind::Delete, "factory", "ghost"), "no place or transition 'ghost' on page 'factory'"},
+      {makeNetEdit(NetEditKind::AddArc, "factory", "P1", "P2"),
        "an arc joins a place (or a link) and a transition of page 'factory': 'P1' to 'P2' does not"},
-      {make(NetEditKind::AddArc, "factory", "P1", "pickup"), "there is already an arc from 'P1' to 'pickup'"},
-      {make(NetEditKind::DeleteArc, "factory", "pickup", "P1"), "no arc from 'pickup' to 'P1' on page 'factory'"},
+      {makeNetEdit(NetEditKind::AddArc, "factory", "P1", "pickup"), "there is already an arc from 'P1' to 'pickup'"},
+      {makeNetEdit(NetEditKind::DeleteArc, "factory", "pickup", "P1"), "no arc from 'pickup' to 'P1' on page 'factory'"},
   };
   for (const auto& [edit, why] : cases) {
     EXPECT_EQ(run(*doc, edit), why);
     EXPECT_EQ(doc->text(), before);
   }
-  auto inhibitor = make(NetEditKind::AddArc, "factory", "pickup", "P1");
+  auto inhibitor = makeNetEdit(NetEditKind::AddArc, "factory", "pickup", "P1");
   inhibitor.arc_kind = net::ArcKind::Inhibitor;
   EXPECT_EQ(run(*doc, inhibitor), "an inhibitor arc runs from a place to a transition");
-  auto heavy = make(NetEditKind::SetArcWeight, "factory", "P1", "pickup");
+  auto heavy = makeNetEdit(NetEditKind::SetArcWeight, "factory", "P1", "pickup");
   heavy.weight = 0;
   EXPECT_EQ(run(*doc, heavy), "an arc's weight is a whole number from 1 to 10^9");
   EXPECT_EQ(doc->text(), before);
@@ -115,7 +106,7 @@ TEST(NetEdit, ADragIsOneStep) {
   ASSERT_TRUE(doc);
   const auto before = doc->text();
   for (int i = 1; i <= 10; ++i) {
-    auto move = make(NetEditKind::Move, "factory", "pickup");
+    auto move = makeNetEdit(NetEditKind::Move, "factory", "pickup");
     move.at = {0.5 * i, 1};
     move.drag = 7;
     ASSERT_EQ(run(*doc, move), "");

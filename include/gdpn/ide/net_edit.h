@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "gdpn/ide/command.h"
 #include "gdpn/net/spec.h"
@@ -37,7 +39,15 @@ struct NetEdit {
   net::ArcKind arc_kind = net::ArcKind::Normal;  ///< arcs: normal, test or inhibitor
   std::int64_t weight = 1;                   ///< AddArc, SetArcWeight: tokens, 1 to 10^9
   std::uint64_t drag = 0;                    ///< Move: the drag it belongs to (0: a single move)
+  /// Move on a page laid out by Graphviz (some construct without a position): where each
+  /// construct is drawn now, by name, so that the page keeps its look with one node moved.
+  std::vector<std::pair<std::string, net::EditorPos>> pins;
 };
+
+/// A NetEdit of `kind` on `page`: construct `name` (and `second`: a new name, or an arc's
+/// target), at `at`; the other members as they start.
+NetEdit makeNetEdit(NetEditKind kind, std::string page, std::string name, std::string second = {},
+                    net::EditorPos at = {0, 0});
 
 /// The command that performs a NetEdit.
 class NetEditCommand final : public Command {

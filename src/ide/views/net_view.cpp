@@ -4,12 +4,14 @@
 // window over the world view.
 
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <cmath>
 
 #include "../views.h"
 #include "gdpn/diagram/net_state.h"
+#include "gdpn/ide/net_edit.h"
 #include "imgui_canvas.h"
 #include "net_view_state.h"
 
@@ -118,6 +120,7 @@ struct Region {
   ImVec2 origin;            // window pixels of its top-left corner
   int width = 1, height = 1;  // pixels
   diagram::Point mouse;     // the mouse, pixels from the corner
+  bool hovered = false, active = false, activated = false;  // the region's button, as it was taken
 };
 
 Region regionHere(const char* id) {
@@ -128,6 +131,9 @@ Region regionHere(const char* id) {
   r.height = std::max(1, static_cast<int>(avail.y));
   ImGui::InvisibleButton(id, {static_cast<float>(r.width), static_cast<float>(r.height)},
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle);
+  r.hovered = ImGui::IsItemHovered();
+  r.active = ImGui::IsItemActive();
+  r.activated = ImGui::IsItemActivated();
   const ImGuiIO& io = ImGui::GetIO();
   r.mouse = {static_cast<double>(io.MousePos.x - r.origin.x), static_cast<double>(io.MousePos.y - r.origin.y)};
   return r;
@@ -164,7 +170,7 @@ std::vector<diagram::ItemRef> holdersOf(App& app, const NetViewState& s, const s
 std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const Region& r,
                                               const diagram::Viewport& viewport, nlohmann::json& report) {
   const auto under = s.index->pick(viewport.toLayout(r.mouse), 4.0 / viewport.zoom);
-  if (ImGui::IsItemHovered() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+  if (r.hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
       ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f).x == 0.0f &&
       ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f).y == 0.0f) {
     if (under) app.document().select(selectionOf(s, *under));
@@ -224,7 +230,7 @@ std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const R
   }
   report["holding"] = holding;
   list->PopClipRect();
-  if (under && ImGui::IsItemHovered() && under->kind != diagram::ItemKind::Arc) {
+  if (under && r.hovered && under->kind != diagram::ItemKind::Arc) {
     ImGui::SetTooltip("%s", qualified(s, *under).c_str());
   }
   report["drawn"] = drawn;
@@ -263,6 +269,135 @@ std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const R
   return under;
 }
 
+/// A layout point in editor units (`at:`), on a grid of a quarter unit.
+net::EditorPos editorAt(diagram::Point p) {
+  const auto snap = [](double v) { return std::round(v / diagram::kEditorUnit * 4.0) / 4.0; };
+  return {snap(p.x), snap(p.y)};
+}
+
+/// The page the view edits: the page shown, or the page type of the instance shown.
+const std::string& editedPage(const NetViewState& s) { return s.layout.page; }
+
+/// "" when `e` was done, else the reason, which the status bar shows.
+std::string perform(App& app, NetEdit e) {
+  auto why = app.document().execute(std::make_unique<NetEditCommand>(std::move(e)));
+  if (!why.empty()) app.message = why;
+  return why;
+}
+
+/// A free name for a new construct: P1, P2, ... or T1, T2, ...
+std::string freshName(const NetViewState& s, char letter) {
+  for (std::size_t n = 1;; ++n) {
+    const std::string name = letter + std::to_string(n);
+    const auto used = [&](const auto& list) {
+      return std::any_of(list.begin(), list.end(), [&](const auto& x) { return x.name == name; });
+    };
+    if (!used(s.layout.places) && !used(s.layout.transitions) && !used(s.layout.instances)) return name;
+  }
+}
+
+/// The name of a place, transition or instance item ("" for an arc).
+std::string localName(const NetViewState& s, diagram::ItemRef item) {
+  switch (item.kind) {
+    case diagram::ItemKind::Place: return s.layout.places[item.index].name;
+    case diagram::ItemKind::Transition: return s.layout.transitions[item.index].name;
+    case diagram::ItemKind::Instance: return s.layout.instances[item.index].name;
+    case diagram::ItemKind::Arc: return {};
+  }
+  return {};
+}
+
+/// Editing by hand. A left drag on a place, transition or instance moves it, on a grid of a
+/// quarter unit (one undo step). The right button opens a menu: on paper, a new place or
+/// transition there; on a place or transition, rename, delete, or an arc from it (normal, test,
+/// inhibitor) that a click on its other end finishes (Escape or a click on paper drops it).
+/// Returns true while a drag moves a construct (the view does not pan then).
+bool editGestures(App& app, NetViewState& s, const Region& r, const diagram::Viewport& viewport,
+                  std::optional<diagram::ItemRef> under, nlohmann::json& report) {
+  const diagram::Point mouse = viewport.toLayout(r.mouse);
+  const bool node = under && under->kind != diagram::ItemKind::Arc;
+  // a drag on a construct moves it
+  if (r.activated && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && node && s.arc_from.empty()) {
+    s.moving = localName(s, *under);
+    ++app.drag_id;
+  }
+  if (!r.active) s.moving.clear();
+  const bool moving = !s.moving.empty() && ImGui::IsMouseDragging(ImGuiMouseButton_Left);
+  if (moving) {
+    auto e = makeNetEdit(NetEditKind::Move, editedPage(s), s.moving);
+    e.at = editorAt(mouse);
+    e.drag = app.drag_id;
+    if (s.layout.from_graphviz) {
+      for (const auto& p : s.layout.places) e.pins.emplace_back(p.name, editorAt(p.centre));
+      for (const auto& t : s.layout.transitions) e.pins.emplace_back(t.name, editorAt(t.centre));
+      for (const auto& i : s.layout.instances) e.pins.emplace_back(i.name, editorAt(i.centre));
+    }
+    (void)perform(app, std::move(e));
+  }
+  // an arc begun: a click on its other end makes it
+  if (!s.arc_from.empty()) {
+    app.message = "click where the arc from " + s.arc_from + " ends (Escape: no arc)";
+    const bool clicked = r.hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+                         ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f).x == 0.0f &&
+                         ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f).y == 0.0f;
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+      s.arc_from.clear();
+      app.message.clear();
+    } else if (clicked) {
+      auto e = makeNetEdit(NetEditKind::AddArc, editedPage(s), s.arc_from);
+      e.new_name = node ? localName(s, *under) : std::string();
+      e.arc_kind = s.arc_kind;
+      s.arc_from.clear();
+      app.message.clear();
+      if (node) (void)perform(app, std::move(e));
+    }
+  }
+  // the menu
+  if (r.hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Right)) {
+    s.menu_item = node ? under : std::nullopt;
+    s.menu_at = mouse;
+    s.rename = node ? localName(s, *under) : std::string();
+    ImGui::OpenPopup("##net_menu");
+  }
+  nlohmann::json items = nlohmann::json::object();
+  const auto item = [&](const char* label) {
+    const bool chosen = ImGui::MenuItem(label);
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    items[label] = {std::lround((lo.x + hi.x) / 2), std::lround((lo.y + hi.y) / 2)};
+    return chosen;
+  };
+  if (ImGui::BeginPopup("##net_menu")) {
+    if (!s.menu_item) {
+      if (item("Place here")) (void)perform(app, makeNetEdit(NetEditKind::AddPlace, editedPage(s), freshName(s, 'P'), {}, editorAt(s.menu_at)));
+      if (item("Transition here")) {
+        (void)perform(app, makeNetEdit(NetEditKind::AddTransition, editedPage(s), freshName(s, 'T'), {}, editorAt(s.menu_at)));
+      }
+    } else if (s.menu_item->kind != diagram::ItemKind::Instance) {
+      const std::string name = localName(s, *s.menu_item);
+      ImGui::TextDisabled("%s %s", s.menu_item->kind == diagram::ItemKind::Place ? "place" : "transition", name.c_str());
+      ImGui::SetNextItemWidth(140);
+      if (ImGui::InputText("name", &s.rename, ImGuiInputTextFlags_EnterReturnsTrue) && s.rename != name) {
+        if (perform(app, makeNetEdit(NetEditKind::Rename, editedPage(s), name, s.rename)).empty()) ImGui::CloseCurrentPopup();
+      }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("A new name, then Enter");
+      if (item("Delete")) (void)perform(app, makeNetEdit(NetEditKind::Delete, editedPage(s), name));
+      for (const auto& [label, kind] : {std::pair{"Arc from here", net::ArcKind::Normal},
+                                        std::pair{"Test arc from here", net::ArcKind::Test},
+                                        std::pair{"Inhibitor arc from here", net::ArcKind::Inhibitor}}) {
+        if (item(label)) {
+          s.arc_from = name;
+          s.arc_kind = kind;
+        }
+      }
+    }
+    ImGui::EndPopup();
+  }
+  report["menu"] = items;
+  report["moving"] = s.moving;
+  report["arc_from"] = s.arc_from;
+  return moving;
+}
+
 }  // namespace
 
 void drawNetView(App& app, const Rect& at, nlohmann::json& report) {
@@ -271,7 +406,7 @@ void drawNetView(App& app, const Rect& at, nlohmann::json& report) {
   drawPageBar(app, s);
   ensureLayout(app, s);
   report = {{"path", s.path}, {"page", s.layout.page}, {"places", s.layout.places.size()},
-            {"transitions", s.layout.transitions.size()}};
+            {"transitions", s.layout.transitions.size()}, {"arcs", s.layout.arcs.size()}};
   if (!s.error.empty()) {
     ImGui::TextWrapped("%s", s.error.c_str());
     report["error"] = s.error;
@@ -284,15 +419,18 @@ void drawNetView(App& app, const Rect& at, nlohmann::json& report) {
     s.fit = false;
   }
   const ImGuiIO& io = ImGui::GetIO();
-  if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
+  if (r.hovered && io.MouseWheel != 0.0f) {
     s.viewport = s.viewport.zoomedAbout(r.mouse, std::pow(1.15, static_cast<double>(io.MouseWheel)));
   }
-  if (ImGui::IsItemActive() &&
+  // what is under the mouse as the frame begins: a drag that starts on a construct moves it
+  const auto pointed = s.index->pick(s.viewport.toLayout(r.mouse), 4.0 / s.viewport.zoom);
+  const bool moving = editGestures(app, s, r, s.viewport, pointed, report);
+  if (r.active && !moving && s.moving.empty() &&
       (ImGui::IsMouseDragging(ImGuiMouseButton_Left) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle))) {
     s.viewport = s.viewport.panned({static_cast<double>(io.MouseDelta.x), static_cast<double>(io.MouseDelta.y)});
   }
   const auto under = clickAndPaint(app, s, r, s.viewport, report);
-  if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && under &&
+  if (r.hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && under &&
       under->kind == diagram::ItemKind::Instance) {
     s.path = (s.path.empty() ? s.layout.page : s.path) + "/" + s.layout.instances[under->index].name;
   }

@@ -35,6 +35,12 @@ struct NetViewState {
   std::vector<diagram::ItemRef> holding;  ///< the places and transitions holding the selected node as a token
   std::string holding_node;          ///< that node's path ("" : none)
   std::int64_t holding_steps = -1;   ///< state_steps when `holding` was found
+  std::string moving;                ///< the construct a left drag is moving ("" : none)
+  std::string arc_from;              ///< an arc begun from this construct, waiting for its other end
+  net::ArcKind arc_kind = net::ArcKind::Normal;  ///< that arc's kind
+  std::optional<diagram::ItemRef> menu_item;     ///< what the open menu is about (none: the paper)
+  diagram::Point menu_at;            ///< where it was opened, layout units
+  std::string rename;                ///< the menu's rename field
 };
 
 }  // namespace gdpn::ide
