@@ -405,4 +405,11 @@ void beginPanel(const char* id, const Rect& at, const char* heading) {
 
 void endPanel() { ImGui::EndChild(); }
 
+bool menuItem(const char* label, nlohmann::json& positions) {
+  const bool chosen = ImGui::MenuItem(label);
+  const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+  positions[label] = {std::lround((lo.x + hi.x) / 2), std::lround((lo.y + hi.y) / 2)};
+  return chosen;
+}
+
 }  // namespace gdpn::ide

@@ -116,6 +116,7 @@ class App {
   int run_n = 100;                  ///< the toolbar's N for Run N steps
   int break_tokens = 1;             ///< the inspector's token count for a place's breakpoint
   std::string break_condition;      ///< the breakpoints' field: a Python condition being typed
+  std::string tree_rename;          ///< the tree view's menu: the node's name being typed
   std::uint64_t drag_id = 0;        ///< the inspector's current drag (merge key)
   std::string inspector_error;      ///< why the last edit was refused
   std::string message;              ///< the status bar's message line

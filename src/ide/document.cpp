@@ -27,6 +27,13 @@ std::unique_ptr<Document> Document::open(const std::string& path, core::Diagnost
 
 Document::Document(model::Model model) { adopt(std::move(model)); }
 
+std::shared_ptr<scene::Scene> Document::swapScene(std::shared_ptr<scene::Scene> scene) {
+  auto old = std::move(scene_);
+  scene_ = std::move(scene);
+  model_.scene = scene_;
+  return old;
+}
+
 void Document::adopt(model::Model model) {
   model_ = std::move(model);
   // an editable copy of the scene, which the model then shares

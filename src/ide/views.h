@@ -41,4 +41,8 @@ void beginPanel(const char* id, const Rect& at, const char* heading);
 /// Ends a panel begun by beginPanel().
 void endPanel();
 
+/// A menu item `label`; its centre, in window pixels, goes into `positions` under its label (so
+/// that replay files and tests can click it). True when chosen.
+bool menuItem(const char* label, nlohmann::json& positions);
+
 }  // namespace gdpn::ide

@@ -205,6 +205,17 @@ std::string Scene::freshName(Node& parent, std::string_view base) {
   }
 }
 
+bool Scene::rename(Node& node, std::string name) {
+  Node* parent = node.parent_;
+  if (parent == nullptr) return false;
+  if (name == node.name_) return true;
+  if (!name.empty() && parent->child(name)) return false;
+  if (!node.name_.empty()) parent->by_name_.erase(node.name_);
+  node.name_ = std::move(name);
+  if (!node.name_.empty()) parent->by_name_.emplace(node.name_, &node);
+  return true;
+}
+
 void Scene::destroy(Node& node) {
   GDPN_ASSERT(node.parent_ != nullptr, "the root is not destroyed");
   release(node);

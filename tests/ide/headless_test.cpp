@@ -154,6 +154,23 @@ TEST_F(HeadlessIde, TheNetIsEditedByHandInTheNetView) {
   EXPECT_EQ(r["net_view"]["at"]["main/P1"], p1);
 }
 
+TEST_F(HeadlessIde, TheSceneIsEditedFromTheTreeViewsMenu) {
+  // "Group arm" is the tree's 13th row at 1280 x 720: a right click there opens its menu
+  const std::string menu = rightClickAt(nlohmann::json{70, 338});
+  auto r = replay(menu);
+  ASSERT_TRUE(r["tree"]["menu"].contains("Duplicate")) << r["tree"].dump();
+  const auto items = r["tree"]["menu"];
+  EXPECT_TRUE(items.contains("Delete, and from the marking"));  // the net holds the arm's joints
+  EXPECT_FALSE(items.contains("Delete"));
+  r = replay(menu + clickAt(items["Duplicate"]));
+  EXPECT_EQ(r["undo"]["label"], "duplicate arm");
+  EXPECT_GT(r["tree"]["nodes_shown"].get<int>(), 0);
+  r = replay(menu + clickAt(items["Delete, and from the marking"]));
+  EXPECT_EQ(r["undo"]["label"], "delete arm");
+  r = replay(menu + clickAt(items["Delete, and from the marking"]) + "- press: undo\n");
+  EXPECT_EQ(r["undo"]["depth"], 0);
+}
+
 TEST_F(HeadlessIde, TheWheelZoomsTheNetViewAboutTheMouse) {
   const auto fitted = replay("[]")["net_view"]["zoom"].get<double>();
   const auto closer = replay("- wheel: {at: [1070, 300], clicks: 3}\n")["net_view"]["zoom"].get<double>();

@@ -58,6 +58,21 @@ TEST(SceneTree, PathsNamesAndSiblings) {
   EXPECT_EQ(s.size(), 6u);
 }
 
+TEST(SceneTree, ARenameKeepsTheNodesPlaceAndItsSubtree) {
+  Scene s;
+  Node* line = s.create(T("Transform"), "line", s.root());
+  Node* a = s.create(T("Group"), "a", *line);
+  Node* b = s.create(T("Group"), "b", *line);
+  s.create(T("Body"), "rod", *a);
+  ASSERT_TRUE(s.rename(*a, "first"));
+  EXPECT_EQ(s.find("line/first/rod")->parent(), a);
+  EXPECT_EQ(s.find("line/a"), nullptr);
+  EXPECT_EQ(a->next(), b);  // still before b
+  EXPECT_FALSE(s.rename(*b, "first"));
+  EXPECT_EQ(b->name(), "b");
+  EXPECT_FALSE(s.rename(s.root(), "top"));
+}
+
 TEST(SceneTree, HandlesStopResolvingWhenTheirNodeIsDeleted) {
   Scene s;
   Node* a = s.create(T("Group"), "a", s.root());

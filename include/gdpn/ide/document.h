@@ -30,6 +30,9 @@ class Document {
   [[nodiscard]] const model::Model& model() const { return model_; }
   /// The net, for the commands that edit it (net_edit.h); everything else reads model().net.
   [[nodiscard]] net::NetSpec& editableNet() { return model_.net; }
+  /// Puts `scene` in place of the model's scene (for the commands that edit the tree,
+  /// scene_edit.h); returns the one it replaces.
+  std::shared_ptr<scene::Scene> swapScene(std::shared_ptr<scene::Scene> scene);
   /// The editable scene (null when the model has none).
   [[nodiscard]] scene::Scene* scene() const { return scene_.get(); }
   /// The model with a scene of its own, for a run: nothing the run does reaches the document.

@@ -154,6 +154,9 @@ class Scene {
   /// "base_k" with the smallest k >= 1 that no child of `parent` is called; amortised
   /// constant time over a run of calls, each followed by the creation of that child.
   [[nodiscard]] std::string freshName(Node& parent, std::string_view base);
+  /// Renames `node` (not the root) to `name`, keeping its place among its siblings. False when
+  /// a sibling has that name already.
+  bool rename(Node& node, std::string name);
   /// Removes `node` and its subtree (not the root); their handles stop resolving.
   void destroy(Node& node);
   /// Copies the subtree at `source` (from any scene with the same types) under `parent`,

@@ -104,7 +104,8 @@ void ImGuiCanvas::text(diagram::Point anchor, std::string_view text, double size
 }
 
 double ImGuiCanvas::textWidth(std::string_view text, double size) const {
-  return font_->CalcTextSizeA(static_cast<float>(size), FLT_MAX, 0.0f, text.data(), text.data() + text.size()).x;
+  return static_cast<double>(
+      font_->CalcTextSizeA(static_cast<float>(size), FLT_MAX, 0.0f, text.data(), text.data() + text.size()).x);
 }
 
 }  // namespace gdpn::ide

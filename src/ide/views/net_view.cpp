@@ -360,12 +360,7 @@ bool editGestures(App& app, NetViewState& s, const Region& r, const diagram::Vie
     ImGui::OpenPopup("##net_menu");
   }
   nlohmann::json items = nlohmann::json::object();
-  const auto item = [&](const char* label) {
-    const bool chosen = ImGui::MenuItem(label);
-    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
-    items[label] = {std::lround((lo.x + hi.x) / 2), std::lround((lo.y + hi.y) / 2)};
-    return chosen;
-  };
+  const auto item = [&](const char* label) { return menuItem(label, items); };
   if (ImGui::BeginPopup("##net_menu")) {
     if (!s.menu_item) {
       if (item("Place here")) (void)perform(app, makeNetEdit(NetEditKind::AddPlace, editedPage(s), freshName(s, 'P'), {}, editorAt(s.menu_at)));

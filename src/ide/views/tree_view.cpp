@@ -2,11 +2,15 @@
 // the net's places and transitions; a click selects.
 
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
+#include <cmath>
+#include <optional>
 #include <set>
 #include <string>
 
 #include "../views.h"
+#include "gdpn/ide/scene_edit.h"
 
 namespace gdpn::ide {
 
@@ -50,7 +54,56 @@ struct TreeState {
   std::string selected;          // the selected node's path
   nlohmann::json bold = nlohmann::json::array();
   int shown = 0;
+  std::optional<SceneEdit> request;  // an edit asked for in a menu, made once the tree is drawn
+  nlohmann::json menu = nlohmann::json::object();  // the open menu's items, where they stand
 };
+
+/// The menu "Add": a node of any type under `parent` ("" the root).
+void addMenu(TreeState& st, const scene::Scene& s, const std::string& parent) {
+  const bool open = ImGui::BeginMenu("Add");
+  const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+  st.menu["Add"] = {std::lround((lo.x + hi.x) / 2), std::lround((lo.y + hi.y) / 2)};
+  if (!open) return;
+  for (const scene::NodeType* type : s.types().all()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, colourOf(type->kind));
+    if (menuItem(type->name.c_str(), st.menu)) st.request = SceneEdit{SceneEditKind::Add, parent, type->name, {}, false};
+    ImGui::PopStyleColor();
+    if (ImGui::IsItemHovered() && !type->doc.empty()) ImGui::SetTooltip("%s", type->doc.c_str());
+  }
+  ImGui::EndMenu();
+}
+
+/// A node's menu (right click): its name, Add, Duplicate, Delete. The model is edited only as
+/// edited, not while a run is shown.
+void nodeMenu(TreeState& st, const scene::Scene& s, const scene::Node& node, const std::string& path) {
+  if (!ImGui::BeginPopupContextItem()) return;
+  App& app = st.app;
+  if (app.run().mode() != RunMode::Edit) {
+    ImGui::TextDisabled("The run's plant: Reset to edit the model");
+  } else {
+    if (ImGui::IsWindowAppearing()) app.tree_rename = node.name();
+    ImGui::TextDisabled("%s %s", node.type().name.c_str(), path.c_str());
+    ImGui::SetNextItemWidth(160);
+    if (ImGui::InputText("name", &app.tree_rename, ImGuiInputTextFlags_EnterReturnsTrue) && app.tree_rename != node.name()) {
+      st.request = SceneEdit{SceneEditKind::Rename, path, {}, app.tree_rename, false};
+      ImGui::CloseCurrentPopup();
+    }
+    if (node.type().has_children) addMenu(st, s, path);
+    if (menuItem("Duplicate", st.menu)) st.request = SceneEdit{SceneEditKind::Duplicate, path, {}, {}, false};
+    const auto uses = usesOf(app.document().model().net, path);
+    if (uses.empty()) {
+      if (menuItem("Delete", st.menu)) st.request = SceneEdit{SceneEditKind::Delete, path, {}, {}, false};
+    } else {
+      if (menuItem("Delete, and from the marking", st.menu)) st.request = SceneEdit{SceneEditKind::Delete, path, {}, {}, true};
+      if (ImGui::IsItemHovered()) {
+        std::string list;
+        for (const auto& u : uses) list += "\n  " + u;
+        ImGui::SetTooltip("The net holds it:%s", list.c_str());
+      }
+    }
+  }
+  ImGui::EndPopup();
+}
 
 void drawNode(TreeState& st, scene::Node& node) {
   const auto path = node.path();
@@ -73,6 +126,7 @@ void drawNode(TreeState& st, scene::Node& node) {
   const bool open = ImGui::TreeNodeEx(path.c_str(), flags, "%s", label.c_str());
   ImGui::PopStyleColor();
   if (is_token || is_sensor) ImGui::PopFont();
+  if (const auto* s = st.app.shownScene()) nodeMenu(st, *s, node, path);
   ++st.shown;
   if (path == st.selected && st.app.reveal_selection) ImGui::SetScrollHereY();
   if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) st.app.document().select(Selection::node(path));
@@ -89,7 +143,7 @@ void drawNode(TreeState& st, scene::Node& node) {
 
 void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
   beginPanel("##tree", at, "Tree view");
-  TreeState st{app, {}, {}, nlohmann::json::array(), 0};
+  TreeState st{app, {}, {}, nlohmann::json::array(), 0, std::nullopt, nlohmann::json::object()};
   const auto& sel = app.document().selection();
   if (sel.kind == SelectionKind::Node) st.selected = sel.name;
   auto* session = app.run().session();
@@ -102,8 +156,15 @@ void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
   auto* s = app.shownScene();
   if (s == nullptr) {
     ImGui::TextDisabled("(the model has no scene)");
-  } else if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) {
-    for (const auto& child : s->root().children()) drawNode(st, *child);
+  } else {
+    const bool open = ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen);
+    if (app.run().mode() == RunMode::Edit && ImGui::BeginPopupContextItem("##scene_menu")) {
+      addMenu(st, *s, "");
+      ImGui::EndPopup();
+    }
+    if (open) {
+      for (const auto& child : s->root().children()) drawNode(st, *child);
+    }
   }
 
   // the net's places and transitions (the net view shows them later)
@@ -149,11 +210,18 @@ void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
   ImGui::EndChild();
   endPanel();
   app.reveal_selection = false;
+  // the edit a menu asked for, now that nothing iterates the tree
+  if (st.request) {
+    const auto why = app.document().execute(std::make_unique<SceneEditCommand>(*st.request));
+    app.message = why;
+    if (why.empty() && st.request->kind == SceneEditKind::Delete) app.document().select({});
+  }
   report = {{"nodes_shown", st.shown},
             {"bold", st.bold},
             {"selected", st.selected},
             {"places_shown", places},
-            {"transitions_shown", transitions}};
+            {"transitions_shown", transitions},
+            {"menu", st.menu}};
 }
 
 }  // namespace gdpn::ide
