@@ -2,7 +2,9 @@
 
 #include "gdpn/ide/document.h"
 
+#include <algorithm>
 #include <system_error>
+#include <vector>
 
 namespace gdpn::ide {
 
@@ -70,8 +72,43 @@ model::Model Document::snapshot() const {
   return copy;
 }
 
+namespace {
+
+/// Keeps the file at `path` as `path.~N~` (N one more than the highest kept, the oldest beyond
+/// kBackups removed) before it is written over. "" or why it could not.
+std::string keepBackup(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) return {};
+  const fs::path file(path);
+  const std::string stem = file.filename().string() + ".~";
+  std::vector<std::pair<long, fs::path>> kept;
+  for (const auto& entry : fs::directory_iterator(file.parent_path().empty() ? fs::path(".") : file.parent_path(), ec)) {
+    const std::string name = entry.path().filename().string();
+    if (!name.starts_with(stem) || !name.ends_with("~") || name.size() <= stem.size() + 1) continue;
+    const std::string digits = name.substr(stem.size(), name.size() - stem.size() - 1);
+    if (!std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }) || digits.size() > 9) continue;
+    kept.emplace_back(std::stol(digits), entry.path());
+  }
+  std::sort(kept.begin(), kept.end());
+  const long next = kept.empty() ? 1 : kept.back().first + 1;
+  const fs::path backup = file.parent_path() / (stem + std::to_string(next) + "~");
+  fs::copy_file(file, backup, fs::copy_options::overwrite_existing, ec);
+  if (ec) return "cannot keep a backup as " + backup.string() + ": " + ec.message();
+  // the newest kBackups stay (the one just made among them)
+  kept.emplace_back(next, backup);
+  for (std::size_t i = 0; i + Document::kBackups < kept.size(); ++i) fs::remove(kept[i].second, ec);
+  return {};
+}
+
+}  // namespace
+
 bool Document::save(core::Diagnostics& diags, const std::string& path) {
   const auto& to = path.empty() ? model_.path : path;
+  if (auto why = keepBackup(to); !why.empty()) {
+    diags.error(core::SourceLoc{to, 0, 0}, why);
+    return false;
+  }
   if (!model::saveModel(model_, to, diags)) return false;
   if (to == model_.path) stamp_ = stampOf(to);
   return true;

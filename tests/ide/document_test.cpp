@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "gdpn/ide/document.h"
 #include "gdpn/ide/set_field.h"
@@ -60,6 +62,32 @@ TEST_F(DocumentTest, SavedEditsReadBackAsTheSameModel) {
   auto again = Document::open(out, diags);
   ASSERT_TRUE(again) << diags.str();
   EXPECT_EQ(again->text(), doc->text());
+}
+
+TEST_F(DocumentTest, EachSaveKeepsTheFileItReplacesAsANumberedBackupTheNewestFive) {
+  auto doc = openBin();
+  ASSERT_TRUE(doc);
+  const auto path = doc->model().path;
+  std::string previous;
+  {
+    std::ifstream in(path);
+    previous.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  for (int i = 1; i <= 7; ++i) {
+    ASSERT_EQ(doc->execute(std::make_unique<SetFieldCommand>("drop/paint", "bounce", FieldValue{0.1 * i})), "");
+    core::Diagnostics diags;
+    ASSERT_TRUE(doc->save(diags)) << diags.str();
+    // the file just replaced is the newest backup, byte for byte
+    std::ifstream kept(path + ".~" + std::to_string(i) + "~");
+    ASSERT_TRUE(kept.good()) << i;
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(kept), {}), previous);
+    std::ifstream now(path);
+    previous.assign(std::istreambuf_iterator<char>(now), {});
+  }
+  for (int i = 1; i <= 7; ++i) {
+    EXPECT_EQ(std::filesystem::exists(path + ".~" + std::to_string(i) + "~"), i > 2) << i;
+  }
+  EXPECT_EQ(previous, doc->text());
 }
 
 TEST_F(DocumentTest, AnInvalidValueIsRefusedWithTheLoadersMessage) {

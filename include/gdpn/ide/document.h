@@ -39,7 +39,11 @@ class Document {
   [[nodiscard]] model::Model snapshot() const;
   /// The canonical text of the model (what saving writes).
   [[nodiscard]] std::string text() const { return model::writeModel(model_); }
-  /// Writes the model to its file (or `path`); false with a diagnostic when it could not.
+  /// How many numbered backups of a model file saving keeps.
+  static constexpr std::size_t kBackups = 5;
+  /// Writes the model to its file (or `path`), atomically; a file there is first kept as
+  /// `NAME.~N~` (N counting up; the newest kBackups kept). False with a diagnostic when it could
+  /// not.
   bool save(core::Diagnostics& diags, const std::string& path = {});
 
   /// The selection.
