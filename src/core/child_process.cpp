@@ -12,6 +12,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 #include "gdpn/core/text.h"
@@ -30,6 +31,16 @@ constexpr bool kSanitized = false;
 #else
 constexpr bool kSanitized = false;
 #endif
+
+/// The bytes of address space this process maps now (/proc/self/statm's first field).
+std::size_t mappedBytes() {
+  std::size_t pages = 0;
+  if (FILE* f = std::fopen("/proc/self/statm", "r")) {
+    if (std::fscanf(f, "%zu", &pages) != 1) pages = 0;
+    std::fclose(f);
+  }
+  return pages * static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+}
 
 /// Writes every byte of `data` to `fd`; false when the pipe is gone.
 bool writeAll(int fd, const char* data, std::size_t size) {
@@ -55,7 +66,9 @@ bool writeAll(int fd, const char* data, std::size_t size) {
   }
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (memoryBytes != 0 && !kSanitized) {
-    const rlimit cap{memoryBytes, memoryBytes};
+    // the cap counts from what the fork already maps (a large process maps gigabytes)
+    const std::size_t limit = mappedBytes() + memoryBytes;
+    const rlimit cap{limit, limit};
     ::setrlimit(RLIMIT_AS, &cap);
   }
   std::string out, why;

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -103,6 +104,26 @@ TEST(ChildProcess, AnAllocationPastTheCapFails) {
       30, std::size_t{1} << 30, out, why))
       << why;
   EXPECT_EQ(out, "refused");
+}
+
+TEST(ChildProcess, TheCapCountsFromWhatAProcessAlreadyMaps) {
+  if (!childMemoryCapped()) GTEST_SKIP() << "sanitizer builds cap no memory";
+  // a large process (an IDE with a software renderer maps gigabytes): 3 GiB reserved here
+  const std::size_t reserved = std::size_t{3} << 30;
+  void* big = ::mmap(nullptr, reserved, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+  ASSERT_NE(big, MAP_FAILED);
+  std::string out, why;
+  const auto end = runInChild(
+      [](std::string& o, std::string&) {
+        void* half = ::operator new(std::size_t{512} << 20);  // within a 1 GiB cap
+        ::operator delete(half);
+        o = "allocated";
+        return true;
+      },
+      30, std::size_t{1} << 30, out, why);
+  ::munmap(big, reserved);
+  ASSERT_EQ(end, ChildEnd::done) << why;
+  EXPECT_EQ(out, "allocated");
 }
 
 TEST(ChildProcess, AHangIsKilledAtTheTimeLimit) {

@@ -25,8 +25,9 @@ enum class ChildEnd {
 bool childMemoryCapped();
 
 /// Runs `work` in a child process and waits for it at most `timeoutSeconds` (s); when
-/// `memoryBytes` is not 0 the child's address space is capped there (not in sanitizer builds,
-/// whose shadow memory needs more), so that an allocation past it fails. On `done`, `out` holds
+/// `memoryBytes` is not 0 the child may map that many bytes more than the fork already maps (not
+/// capped in sanitizer builds, whose shadow memory needs more), so that an allocation past it
+/// fails. On `done`, `out` holds
 /// the work's output; on `failed`, `why` its reason (or an exception's text); on `lost`, `why`
 /// says what became of the child, to follow its name: "crashed (signal 11, Segmentation
 /// fault)", "took longer than 10 s" (it is killed), "stopped with exit status 3", "could not be

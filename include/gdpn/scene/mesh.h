@@ -59,7 +59,8 @@ bool isMeshFile(const std::string& path);
 /// Reads the mesh at `path` afresh. Only a regular file within core::maxInputBytes() is read;
 /// its declared counts must fit its bytes and its nesting stay within 10,000 levels before a
 /// library sees it. The library then parses in a child process (core::runInChild) on a 256 MiB
-/// stack, within 5 s plus 1 s per MiB and 2 GiB plus 64 times the file's size, so that its
+/// stack, within 5 s plus 1 s per MiB and 2 GiB plus 64 times the file's size more than gdpn
+/// maps already, so that its
 /// crash or hang on a malformed file is a reason here. On failure, null and `why` gives the
 /// reason, with the place in the file where there is one.
 std::shared_ptr<const MeshData> readMesh(const std::string& path, std::string& why);
