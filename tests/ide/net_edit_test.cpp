@@ -8,27 +8,18 @@
 #include <random>
 
 #include "gdpn/ide/document.h"
+#include "ide/edit_support.h"
 #include "gdpn/ide/net_edit.h"
 #include "gdpn/model/model.h"
 
 namespace gdpn::ide {
 namespace {
 
-std::unique_ptr<Document> openFactory() {
-  core::Diagnostics diags;
-  auto doc = Document::open(std::string(GDPN_SOURCE_DIR) + "/examples/factory/factory.gdpn.yaml", diags);
-  EXPECT_TRUE(doc) << diags.str();
-  return doc;
-}
+using testing::openFactory;
+using testing::readsBack;
+using testing::undoesToStartAndRedoesToEnd;
 
 std::string run(Document& doc, NetEdit e) { return doc.execute(std::make_unique<NetEditCommand>(std::move(e))); }
-
-/// The text parses back into a model with no error.
-void readsBack(const std::string& text) {
-  core::Diagnostics diags;
-  EXPECT_TRUE(model::parseModel(text, "edited.gdpn.yaml", diags)) << diags.str() << "\n" << text;
-  EXPECT_FALSE(diags.hasErrors()) << diags.str();
-}
 
 TEST(NetEdit, APlaceATransitionAndAnArcAreAddedWhereAsked) {
   auto doc = openFactory();
@@ -169,14 +160,7 @@ TEST(NetEdit, AnySequenceUndoneGivesBackTheStartAndRedoneTheEndByteForByte) {
       }
     }
     EXPECT_GT(applied, 30) << "seed " << seed;
-    const auto end = doc->text();
-    readsBack(end);
-    while (doc->undo()) {
-    }
-    EXPECT_EQ(doc->text(), start) << "seed " << seed;
-    while (doc->redo()) {
-    }
-    EXPECT_EQ(doc->text(), end) << "seed " << seed;
+    undoesToStartAndRedoesToEnd(*doc, start, "seed " + std::to_string(seed));
   }
 }
 

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "gdpn/ide/document.h"
+#include "ide/edit_support.h"
 #include "gdpn/ide/net_edit.h"
 #include "gdpn/ide/scene_edit.h"
 #include "gdpn/model/model.h"
@@ -16,12 +17,9 @@
 namespace gdpn::ide {
 namespace {
 
-std::unique_ptr<Document> openFactory() {
-  core::Diagnostics diags;
-  auto doc = Document::open(std::string(GDPN_SOURCE_DIR) + "/examples/factory/factory.gdpn.yaml", diags);
-  EXPECT_TRUE(doc) << diags.str();
-  return doc;
-}
+using testing::openFactory;
+using testing::readsBack;
+using testing::undoesToStartAndRedoesToEnd;
 
 SceneEdit edit(SceneEditKind kind, std::string path, std::string name = {}, std::string type = {}) {
   SceneEdit e;
@@ -33,12 +31,6 @@ SceneEdit edit(SceneEditKind kind, std::string path, std::string name = {}, std:
 }
 
 std::string run(Document& doc, SceneEdit e) { return doc.execute(std::make_unique<SceneEditCommand>(std::move(e))); }
-
-void readsBack(const std::string& text) {
-  core::Diagnostics diags;
-  EXPECT_TRUE(model::parseModel(text, "edited.gdpn.yaml", diags)) << diags.str();
-  EXPECT_FALSE(diags.hasErrors()) << diags.str();
-}
 
 TEST(SceneEdit, ANodeIsAddedUnderItsParentWithAFreshName) {
   auto doc = openFactory();
@@ -130,14 +122,7 @@ TEST(SceneEdit, AnySequenceOfSceneAndNetEditsUndoesToTheStartAndRedoesToTheEnd) 
       applied += why.empty() ? 1 : 0;
     }
     EXPECT_GT(applied, 20) << "seed " << seed;
-    const auto end = doc->text();
-    readsBack(end);
-    while (doc->undo()) {
-    }
-    EXPECT_EQ(doc->text(), start) << "seed " << seed;
-    while (doc->redo()) {
-    }
-    EXPECT_EQ(doc->text(), end) << "seed " << seed;
+    undoesToStartAndRedoesToEnd(*doc, start, "seed " + std::to_string(seed));
   }
 }
 
