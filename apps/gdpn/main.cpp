@@ -485,6 +485,7 @@ struct IdeArgs {
   std::string model, size = "1600x900", replay, screenshot, report;
   bool headless = false;
   double quit_after = 0;
+  double autosave = 60;
 };
 
 /// `gdpn ide`: the IDE when it was built in (GDPN_IDE), else a message.
@@ -505,6 +506,7 @@ int ide(const IdeArgs& a) {
   o.screenshot = a.screenshot;
   o.report = a.report;
   o.quit_after = a.quit_after;
+  o.autosave = a.autosave;
   return gdpn::ide::runIde(o);
 #else
   (void)a;
@@ -616,7 +618,9 @@ int main(int argc, char** argv) {
 
   IdeArgs ide_args;
   auto* ide_cmd = app.add_subcommand("ide", "Open a model in the IDE (a window; --headless for none)");
-  ide_cmd->add_option("MODEL", ide_args.model, "a .gdpn.yaml file, or a folder holding one")->required();
+  ide_cmd->add_option("MODEL", ide_args.model,
+                      "a .gdpn.yaml file, or a folder holding one; a new or empty .gdpn.yaml starts a new model")
+      ->required();
   ide_cmd->add_flag("--headless", ide_args.headless, "no window: draw on an EGL surfaceless context");
   ide_cmd->add_option("--size", ide_args.size, "WIDTHxHEIGHT of the window or frame in pixels (default 1600x900)");
   ide_cmd->add_option("--replay", ide_args.replay, "headless: perform the actions in ACTIONS.yaml (docs/ide.md)");
@@ -625,6 +629,9 @@ int main(int argc, char** argv) {
   ide_cmd->add_option("--quit-after", ide_args.quit_after,
                       "window: run in real time and quit after SECONDS (with the screenshot and report)")
       ->check(number(0.0, 1e6, "seconds above 0, at most 1e6", true));
+  ide_cmd->add_option("--autosave", ide_args.autosave,
+                      "save unsaved edits into the user's state folder after SECONDS (default 60; 0: never)")
+      ->check(number(0.0, 1e6, "seconds from 0 to 1e6", false));
 
   // every mistake on the command line exits 2, after CLI11's message (help and version exit 0)
   try {

@@ -50,6 +50,8 @@ App::App(std::unique_ptr<Document> doc) : doc_(std::move(doc)), net_view_(std::m
   }
   const auto names = run_.transitions();
   if (!names.empty()) fire_target = names.front();
+  restore_offered = doc_->autosavePending();
+  autosaved_revision = doc_->revision();
 }
 
 App::~App() {
@@ -163,6 +165,66 @@ void App::save() {
   message = doc_->save(diags) ? "saved " + doc_->model().path : diags.str();
 }
 
+void App::saveAs(const std::string& path) {
+  core::Diagnostics diags;
+  message = doc_->saveAs(path, diags) ? "saved as " + path : diags.str();
+}
+
+void App::restoreAutosave() {
+  restore_offered = false;
+  const auto why = doc_->restoreAutosave();
+  message = why.empty() ? "restored the edits of the autosave: Save keeps them, Undo drops them" : why;
+}
+
+void App::discardAutosave() {
+  restore_offered = false;
+  doc_->discardAutosave();
+  message = "the autosave was removed";
+}
+
+void App::checkAutosave(double wall_seconds) {
+  // edits wait autosave_seconds before they are written; each new edit does not restart the wait
+  if (autosave_seconds <= 0 || !doc_->modified() || doc_->revision() == autosaved_revision) {
+    autosave_clock = 0;
+    return;
+  }
+  autosave_clock += wall_seconds;
+  if (autosave_clock < autosave_seconds) return;
+  autosave_clock = 0;
+  autosaved_revision = doc_->revision();
+  core::Diagnostics diags;
+  if (!doc_->autosave(diags)) message = "autosave failed: " + diags.str();
+}
+
+void App::drawRestoreOffer(nlohmann::json& report) {
+  constexpr const char* kTitle = "Unsaved edits found";
+  report = {{"offered", restore_offered}};
+  if (!restore_offered) return;
+  if (!ImGui::IsPopupOpen(kTitle)) ImGui::OpenPopup(kTitle);
+  const auto& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos({io.DisplaySize.x / 2, io.DisplaySize.y / 2}, ImGuiCond_Always, {0.5F, 0.5F});
+  if (!ImGui::BeginPopupModal(kTitle, nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove)) return;
+  const auto autosave = doc_->autosavePath();
+  ImGui::TextUnformatted("The IDE ended without saving edits to this model. An autosave of them is newer than");
+  ImGui::TextUnformatted("the model file:");
+  ImGui::TextDisabled("%s", autosave.c_str());
+  ImGui::Spacing();
+  nlohmann::json buttons;
+  const auto button = [&](const char* label) {
+    const bool pressed = ImGui::Button(label, {200, 0});
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    buttons[label] = {std::lround((lo.x + hi.x) / 2), std::lround((lo.y + hi.y) / 2)};
+    return pressed;
+  };
+  if (button("Restore the edits")) restoreAutosave();
+  ImGui::SameLine();
+  if (button("Discard the autosave")) discardAutosave();
+  if (!restore_offered) ImGui::CloseCurrentPopup();
+  ImGui::EndPopup();
+  report["autosave"] = autosave;
+  report["buttons"] = buttons;
+}
+
 void App::reset() {
   core::Diagnostics diags;
   if (!run_.reset(diags)) {
@@ -216,6 +278,11 @@ bool App::perform(const Action& a, std::string& error) {
       else if (a.text == "undo") undo();
       else if (a.text == "redo") redo();
       else if (a.text == "save") save();
+      else if (a.text == "restore" || a.text == "discard") {
+        if (!restore_offered) error = "no autosave is offered";
+        else if (a.text == "restore") restoreAutosave();
+        else discardAutosave();
+      }
       break;
     case ActionKind::Fire: {
       const auto names = run_.transitions();
@@ -276,6 +343,7 @@ bool App::perform(const Action& a, std::string& error) {
       break;
     }
     case ActionKind::Key:
+    case ActionKind::Type:
     case ActionKind::Click:
     case ActionKind::Drag:
     case ActionKind::Wheel:
@@ -311,6 +379,7 @@ void App::frame(float width, float height, double wall_seconds) {
     }
   }
   checkReload();
+  checkAutosave(wall_seconds);
   run_.advance(wall_seconds);
 
   // the keys that work everywhere
@@ -318,7 +387,10 @@ void App::frame(float width, float height, double wall_seconds) {
   if (io.KeyCtrl && !io.WantTextInput) {
     if (ImGui::IsKeyPressed(GLFW_KEY_Z, false)) undo();
     if (ImGui::IsKeyPressed(GLFW_KEY_Y, false)) redo();
-    if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) save();
+    if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) {
+      if (io.KeyShift) save_as_open = true;
+      else save();
+    }
   }
 
   const auto layout = Layout::of(splitters_, width, height);
@@ -367,6 +439,7 @@ void App::frame(float width, float height, double wall_seconds) {
   ImGui::End();
   // over the world view, in a window of its own so that it stays on top and can be moved
   drawMiniView(*this, layout.world, report["mini_view"]);
+  drawRestoreOffer(report["restore"]);
 
   // what the frame showed, for tests and scripts
   const auto& sel = doc_->selection();
@@ -380,6 +453,8 @@ void App::frame(float width, float height, double wall_seconds) {
                    {"message", run_.message()}};
   report["undo"] = {{"depth", doc_->history().depth()}, {"can_redo", doc_->history().canRedo()},
                     {"label", doc_->history().undoLabel()}};
+  report["document"] = {{"path", doc_->model().path}, {"modified", doc_->modified()},
+                        {"autosaved_revision", autosaved_revision}, {"revision", doc_->revision()}};
   report["layout"] = {{"toolbar", rectJson(layout.toolbar)}, {"tree", rectJson(layout.tree)},
                       {"world", rectJson(layout.world)},     {"net", rectJson(layout.net)},
                       {"inspector", rectJson(layout.inspector)}, {"diagnostics", rectJson(layout.diagnostics)},

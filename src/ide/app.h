@@ -96,6 +96,12 @@ class App {
   void redo();
   /// Saves the model to its file (the message says how it went).
   void save();
+  /// Saves the model as `path`, which it is from then on (the message says how it went).
+  void saveAs(const std::string& path);
+  /// Puts the newer autosave offered at the start in place of the model (one undoable step).
+  void restoreAutosave();
+  /// Declines the autosave offered at the start and removes it.
+  void discardAutosave();
   /// Reset of the run (errors to the Diagnostics view).
   void reset();
   /// The net view's page, layout and viewport (views/net_view.cpp).
@@ -119,6 +125,12 @@ class App {
   std::string tree_rename;          ///< the tree view's menu: the node's name being typed
   std::uint64_t drag_id = 0;        ///< the inspector's current drag (merge key)
   std::string inspector_error;      ///< why the last edit was refused
+  double autosave_seconds = 60;     ///< how long unsaved edits wait before they are autosaved, s (0: never)
+  double autosave_clock = 0;        ///< seconds the edits not yet autosaved have waited
+  std::uint64_t autosaved_revision = 0;  ///< the document's revision last autosaved
+  bool restore_offered = false;     ///< the start found a newer autosave: the IDE asks what to do
+  bool save_as_open = false;        ///< the Save As field is shown
+  std::string save_as_path;         ///< the file name typed into it
   std::string message;              ///< the status bar's message line
   double fps = 0;                   ///< frames per second, smoothed
   int world_level = 0;              ///< how far the world view's resolution is lowered while running (kWorldScales)
@@ -147,6 +159,8 @@ class App {
 
  private:
   void checkReload();
+  void checkAutosave(double wall_seconds);
+  void drawRestoreOffer(nlohmann::json& report);
   std::unique_ptr<Document> doc_;
   std::unique_ptr<NetViewState> net_view_;
   RunControl run_;

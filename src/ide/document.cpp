@@ -3,8 +3,15 @@
 #include "gdpn/ide/document.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <system_error>
 #include <vector>
+
+#include "gdpn/core/output_file.h"
+#include "gdpn/core/text.h"
 
 namespace gdpn::ide {
 
@@ -29,6 +36,52 @@ std::unique_ptr<Document> Document::open(const std::string& path, core::Diagnost
 
 Document::Document(model::Model model) { adopt(std::move(model)); }
 
+std::unique_ptr<Document> Document::create(const std::string& path) {
+  model::Model model;
+  model.path = path;
+  net::PageSpec main;
+  main.name = "main";
+  model.net.pages.push_back(std::move(main));
+  model.scene = std::make_shared<scene::Scene>();
+  return std::make_unique<Document>(std::move(model));
+}
+
+model::Model Document::exchange(model::Model model) {
+  model::Model old;
+  old.path = model_.path;
+  old.description = std::move(model_.description);
+  old.settings = model_.settings;
+  old.net = std::move(model_.net);
+  old.type_scenes = std::move(model_.type_scenes);
+  old.scene = scene_;
+  model_.description = std::move(model.description);
+  model_.settings = model.settings;
+  model_.net = std::move(model.net);
+  model_.type_scenes = std::move(model.type_scenes);
+  scene_ = model.scene ? std::shared_ptr<scene::Scene>(model.scene->clone()) : nullptr;
+  model_.scene = scene_;
+  touched();
+  return old;
+}
+
+/// Puts another model's content in place of the document's (a restored autosave); undo puts
+/// the old one back.
+class ReplaceModelCommand final : public Command {
+ public:
+  ReplaceModelCommand(model::Model model, std::string label) : model_(std::move(model)), label_(std::move(label)) {}
+  std::string apply(Document& doc) override {
+    model_ = doc.exchange(std::move(model_));
+    return {};
+  }
+  void revert(Document& doc) override { model_ = doc.exchange(std::move(model_)); }
+  [[nodiscard]] std::string label() const override { return label_; }
+  void absorb(const Command&) override {}
+
+ private:
+  model::Model model_;  // the content not in the document now
+  std::string label_;
+};
+
 std::shared_ptr<scene::Scene> Document::swapScene(std::shared_ptr<scene::Scene> scene) {
   auto old = std::move(scene_);
   scene_ = std::move(scene);
@@ -45,6 +98,7 @@ void Document::adopt(model::Model model) {
   stamp_ = model_.path.empty() ? std::nullopt : stampOf(model_.path);
   script_stamps_ = scriptStamps();
   ++revision_;
+  saved_revision_ = revision_;
 }
 
 std::map<std::string, std::filesystem::file_time_type> Document::scriptStamps() const {
@@ -110,8 +164,102 @@ bool Document::save(core::Diagnostics& diags, const std::string& path) {
     return false;
   }
   if (!model::saveModel(model_, to, diags)) return false;
-  if (to == model_.path) stamp_ = stampOf(to);
+  if (to == model_.path) {
+    stamp_ = stampOf(to);
+    saved_revision_ = revision_;
+    discardAutosave();
+  }
   return true;
+}
+
+bool Document::saveAs(const std::string& path, core::Diagnostics& diags) {
+  if (path.empty()) {
+    diags.error({}, "Save As needs a file name");
+    return false;
+  }
+  if (!path.ends_with(model::kModelSuffix)) {
+    diags.error({path, 0, 0}, std::string("a model file's name ends in ") + model::kModelSuffix);
+    return false;
+  }
+  if (!save(diags, path)) return false;
+  discardAutosave();  // the old file's: its edits are in the new file
+  model_.path = path;
+  stamp_ = stampOf(path);
+  saved_revision_ = revision_;
+  script_stamps_ = scriptStamps();
+  return true;
+}
+
+namespace {
+
+/// The user's state folder for gdpn ($XDG_STATE_HOME/gdpn, else ~/.local/state/gdpn).
+std::filesystem::path stateFolder() {
+  if (const char* xdg = std::getenv("XDG_STATE_HOME"); xdg != nullptr && *xdg != '\0') {
+    return std::filesystem::path(xdg) / "gdpn";
+  }
+  if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0') {
+    return std::filesystem::path(home) / ".local" / "state" / "gdpn";
+  }
+  return std::filesystem::temp_directory_path() / "gdpn-state";
+}
+
+std::optional<std::string> readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+std::string Document::autosavePath() const {
+  std::error_code ec;
+  auto absolute = std::filesystem::absolute(model_.path.empty() ? "untitled" : model_.path, ec).lexically_normal();
+  const auto name = absolute.filename().string();
+  char hash[17];
+  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(core::fnv1a(absolute.string())));
+  return (stateFolder() / "autosave" / (name + "." + hash)).string();
+}
+
+bool Document::autosave(core::Diagnostics& diags) {
+  const auto path = autosavePath();
+  std::error_code ec;
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
+  if (ec) {
+    diags.error({path, 0, 0}, "cannot make the autosave folder: " + ec.message());
+    return false;
+  }
+  return model::saveModel(model_, path, diags);
+}
+
+bool Document::autosavePending() const {
+  const auto path = autosavePath();
+  const auto saved = stampOf(path);
+  if (!saved) return false;
+  const auto file = model_.path.empty() ? std::nullopt : stampOf(model_.path);
+  if (file && *file > *saved) return false;
+  const auto text = readText(path);
+  return text && *text != this->text();
+}
+
+std::string Document::restoreAutosave() {
+  const auto path = autosavePath();
+  const auto text = readText(path);
+  if (!text) return "there is no autosave of this model (" + path + ")";
+  core::Diagnostics diags;
+  // read as the model file itself, so that its relative files are found beside the model
+  auto model = model::parseModel(*text, model_.path, diags);
+  if (!model) {
+    diagnostics_ = std::move(diags);
+    return "the autosave " + path + " has errors";
+  }
+  return execute(std::make_unique<ReplaceModelCommand>(std::move(*model), "restore the autosave"));
+}
+
+void Document::discardAutosave() const {
+  std::error_code ec;
+  std::filesystem::remove(autosavePath(), ec);
 }
 
 std::string Document::execute(std::unique_ptr<Command> command) { return undo_.push(std::move(command), *this); }

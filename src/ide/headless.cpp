@@ -50,6 +50,11 @@ class Driver {
     down_[b] = down;
     frame();
   }
+  /// Types `text` into the field that has the keyboard (one frame).
+  void type(const std::string& text) {
+    ImGui::GetIO().AddInputCharactersUTF8(text.c_str());
+    frame();
+  }
   /// Presses (`down`) or releases key `code` over the world view.
   void key(int code, bool down) {
     // keys reach the world view while the mouse is over it
@@ -82,6 +87,9 @@ bool perform(App& app, Driver& d, const Action& a, const IdeOptions& o, int w, i
       }
       break;
     }
+    case ActionKind::Type:
+      d.type(a.text);
+      break;
     case ActionKind::Click:
       d.move(a.x, a.y);
       d.button(0, true);
@@ -129,6 +137,7 @@ int runHeadless(const IdeOptions& o, std::unique_ptr<Document> doc, const std::v
   }
   platform::Target target(o.width, o.height, 1);
   App app(std::move(doc));
+  app.autosave_seconds = o.autosave;
   setUpImGui(app);
   loadSettings(app);
   Driver d(app, o.width, o.height, target);

@@ -2,6 +2,8 @@
 
 #include "gdpn/ide/ide.h"
 
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 
 #include "detail/platforms.h"
@@ -9,11 +11,33 @@
 
 namespace gdpn::ide {
 
+namespace {
+
+/// True when `path` names a model file that is not there yet, or one that holds nothing but
+/// blanks: the IDE starts a new model that saving writes there.
+bool newModel(const std::string& path) {
+  if (!path.ends_with(model::kModelSuffix)) return false;
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return !ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return false;
+  std::ifstream in(path, std::ios::binary);
+  char c = 0;
+  while (in.get(c)) {
+    if (c != ' ' && c != '\n' && c != '\r' && c != '\t') return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 int runIde(const IdeOptions& o) {
   core::Diagnostics diags;
-  const auto path = model::resolveModelPath(o.model, diags);
   std::unique_ptr<Document> doc;
-  if (path) doc = Document::open(*path, diags);
+  if (newModel(o.model)) {
+    doc = Document::create(o.model);
+  } else if (const auto path = model::resolveModelPath(o.model, diags)) {
+    doc = Document::open(*path, diags);
+  }
   if (!doc) {
     diags.print(std::cerr);
     return 1;

@@ -33,6 +33,7 @@ class ActionReader {
     if (key == "select") return word(v, a, ActionKind::Select);
     if (key == "fire") return word(v, a, ActionKind::Fire);
     if (key == "key") return word(v, a, ActionKind::Key);
+    if (key == "type") return word(v, a, ActionKind::Type);
     if (key == "hold" || key == "release") {
       a.field = key;
       return word(v, a, ActionKind::Key);
@@ -43,7 +44,8 @@ class ActionReader {
       if (!word(v, a, ActionKind::Press)) return false;
       static constexpr const char* kControls[] = {"run",    "faster",  "fastest",  "pause",   "step",    "reset",
                                                   "plant-only", "mini-view", "sensors", "joints", "contacts",
-                                                  "shadows", "grid",    "movie",    "undo",    "redo",    "save"};
+                                                  "shadows", "grid",    "movie",    "undo",    "redo",    "save",
+                                                  "restore", "discard"};
       std::string known;
       for (const char* c : kControls) {
         if (a.text == c) return true;
@@ -63,7 +65,7 @@ class ActionReader {
     if (key == "set") return set(v, a);
     if (key == "break") return breakpoint(v, a);
     return fail(name, "unknown action '" + key +
-                                         "' (select, press, fire, run, steps, frames, key, hold, release, click, drag, wheel, set, view, "
+                                         "' (select, press, fire, run, steps, frames, key, hold, release, type, click, drag, wheel, set, view, "
                                          "screenshot)");
   }
 

@@ -44,6 +44,7 @@ int runWindow(const IdeOptions& o, std::unique_ptr<Document> doc) {
   int code = 0;
   {
     App app(std::move(doc));
+    app.autosave_seconds = o.autosave;
     setUpImGui(app);
     ImGui_ImplGlfw_InitForOpenGL(window, true);
     loadSettings(app);

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -10,6 +12,7 @@
 #include "gdpn/ide/document.h"
 #include "gdpn/ide/set_field.h"
 #include "ide/ide_model.h"
+#include "support/scratch.h"
 #include "support/temp_files.h"
 
 namespace gdpn::ide {
@@ -195,6 +198,77 @@ TEST_F(DocumentTest, AChangedScriptBesideTheModelIsNoticedOnce) {
   write("more.py", "y = 2\n");
   EXPECT_TRUE(doc->scriptsChanged());
   EXPECT_FALSE(doc->changedOnDisk());
+}
+
+TEST_F(DocumentTest, ANewModelHasAnEmptyPageAndSceneAndSavesAsAModelFile) {
+  const auto path = (dir_ / "new.gdpn.yaml").string();
+  auto doc = Document::create(path);
+  ASSERT_NE(doc->scene(), nullptr);
+  ASSERT_EQ(doc->model().net.pages.size(), 1U);
+  EXPECT_EQ(doc->model().net.pages.front().name, "main");
+  EXPECT_FALSE(doc->modified());
+  core::Diagnostics diags;
+  ASSERT_TRUE(doc->save(diags)) << diags.str();
+  auto again = Document::open(path, diags);
+  ASSERT_TRUE(again) << diags.str();
+  EXPECT_EQ(again->text(), doc->text());
+}
+
+TEST_F(DocumentTest, ModifiedUntilSaved) {
+  auto doc = openBin();
+  EXPECT_FALSE(doc->modified());
+  ASSERT_EQ(doc->execute(std::make_unique<SetFieldCommand>("drop/paint", "bounce", FieldValue{0.7})), "");
+  EXPECT_TRUE(doc->modified());
+  core::Diagnostics diags;
+  ASSERT_TRUE(doc->save(diags));
+  EXPECT_FALSE(doc->modified());
+}
+
+TEST_F(DocumentTest, SaveAsMakesTheNewFileTheDocumentsAndRefusesOtherSuffixes) {
+  auto doc = openBin();
+  ASSERT_EQ(doc->execute(std::make_unique<SetFieldCommand>("drop/paint", "bounce", FieldValue{0.7})), "");
+  const auto other = (dir_ / "other.gdpn.yaml").string();
+  core::Diagnostics diags;
+  EXPECT_FALSE(doc->saveAs((dir_ / "other.yaml").string(), diags));
+  EXPECT_NE(diags.str().find("ends in .gdpn.yaml"), std::string::npos) << diags.str();
+  ASSERT_TRUE(doc->saveAs(other, diags)) << diags.str();
+  EXPECT_EQ(doc->model().path, other);
+  EXPECT_FALSE(doc->modified());
+  EXPECT_EQ(gdpn::testing::fileBytes(other), doc->text());
+  // the original file is as it was read
+  EXPECT_EQ(gdpn::testing::fileBytes((dir_ / "bin.gdpn.yaml").string()), kBinModel);
+}
+
+TEST_F(DocumentTest, AnAutosaveIsOfferedOnlyWhenNewerThanTheFileAndDifferent) {
+  setenv("XDG_STATE_HOME", (dir_ / "state").c_str(), 1);
+  auto doc = openBin();
+  EXPECT_TRUE(doc->autosavePath().starts_with((dir_ / "state" / "gdpn" / "autosave").string()));
+  EXPECT_FALSE(doc->autosavePending());
+  core::Diagnostics diags;
+  ASSERT_TRUE(doc->autosave(diags)) << diags.str();
+  EXPECT_FALSE(doc->autosavePending()) << "the same model is nothing to restore";
+  ASSERT_EQ(doc->execute(std::make_unique<SetFieldCommand>("drop/paint", "bounce", FieldValue{0.7})), "");
+  ASSERT_TRUE(doc->autosave(diags)) << diags.str();
+  const auto edited = doc->text();
+
+  // a new session on the same file: offered, restored as one step, undone back to the file
+  auto next = Document::open(doc->model().path, diags);
+  ASSERT_TRUE(next) << diags.str();
+  ASSERT_TRUE(next->autosavePending());
+  const auto file = next->text();
+  ASSERT_EQ(next->restoreAutosave(), "");
+  EXPECT_EQ(next->text(), edited);
+  EXPECT_TRUE(next->modified());
+  ASSERT_TRUE(next->undo());
+  EXPECT_EQ(next->text(), file);
+
+  // a file written after the autosave wins: nothing offered
+  std::filesystem::last_write_time(next->autosavePath(),
+                                   std::filesystem::last_write_time(next->model().path) - std::chrono::seconds(10));
+  EXPECT_FALSE(next->autosavePending());
+  next->discardAutosave();
+  EXPECT_FALSE(std::filesystem::exists(next->autosavePath()));
+  unsetenv("XDG_STATE_HOME");
 }
 
 TEST(Selection, KindsHaveNames) {

@@ -2,7 +2,10 @@
 // views report and on the picture; replay mistakes located; splitters remembered.
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <filesystem>
 #include <fstream>
@@ -13,6 +16,7 @@
 #include "ide/ide_model.h"
 #include "support/cli.h"
 #include "support/golden.h"
+#include "support/scratch.h"
 #include "support/temp_files.h"
 
 namespace gdpn::ide {
@@ -33,12 +37,25 @@ class HeadlessIde : public gdpn::testing::TempDirTest {
     const auto file = write("actions.yaml", actions);
     const auto report = (dir_ / "report.json").string();
     std::filesystem::remove(report);
-    last_ = runShell("XDG_CONFIG_HOME='" + (dir_ / "config").string() + "' \"$GDPN\" ide '" + model +
+    last_ = runShell(env() + " \"$GDPN\" ide '" + model +
                      "' --headless --size 1280x720 --replay '" + file + "' --report '" + report + "' " + extra);
     EXPECT_EQ(last_.code, expect) << last_.out;
     if (last_.code != 0) return {};
     std::ifstream in(report);
     return nlohmann::json::parse(in, nullptr, false);
+  }
+  /// The settings and state folders of the IDEs these tests start: inside the test's folder.
+  [[nodiscard]] std::string env() const {
+    return "XDG_CONFIG_HOME='" + (dir_ / "config").string() + "' XDG_STATE_HOME='" + (dir_ / "state").string() + "'";
+  }
+  /// The autosaves in the state folder.
+  [[nodiscard]] std::vector<std::filesystem::path> autosaves() const {
+    std::vector<std::filesystem::path> found;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(dir_ / "state" / "gdpn" / "autosave", ec)) {
+      if (e.path().filename().string().front() != '.') found.push_back(e.path());
+    }
+    return found;
   }
   gdpn::testing::CliResult last_;
 };
@@ -324,6 +341,50 @@ TEST_F(HeadlessIde, SaveWritesTheEditedModel) {
   text << in.rdbuf();
   EXPECT_NE(text.str().find("bounce: 0.5"), std::string::npos) << text.str();
   EXPECT_EQ(gdpn::testing::runGdpn("check '" + model + "'").code, 0);
+}
+
+TEST_F(HeadlessIde, AfterTheIdeIsKilledTheNextStartOffersTheAutosaveAndRestoresEveryEdit) {
+  const auto model = write("bin.gdpn.yaml", ide::testing::kBinModel);
+  const auto before = gdpn::testing::fileBytes(model);
+  // two edits, an autosave one second (60 frames) later, then frames until the IDE is killed
+  const auto actions = write("edits.yaml",
+                             "- set: {node: drop/paint, field: bounce, value: 0.5}\n"
+                             "- set: {node: drop/box, field: mass, value: 2.5}\n"
+                             "- frames: 80\n"
+                             "- frames: 1000000\n");
+  const std::string command = env() + " exec \"" + std::string(GDPN_CLI) + "\" ide '" + model +
+                              "' --headless --size 640x360 --autosave 1 --replay '" + actions + "' >/dev/null 2>&1";
+  const pid_t ide = fork();
+  ASSERT_GE(ide, 0);
+  if (ide == 0) {
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // wait for the autosave (at most two minutes: a slow machine draws slowly), then kill
+  for (int i = 0; i < 1200 && autosaves().empty(); ++i) usleep(100'000);
+  usleep(200'000);  // the file is renamed into place complete; give the IDE a moment past it
+  kill(ide, SIGKILL);
+  int status = 0;
+  waitpid(ide, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << "the IDE ended before it was killed";
+  ASSERT_EQ(autosaves().size(), 1U);
+  EXPECT_EQ(gdpn::testing::fileBytes(model), before) << "the autosave went over the model";
+
+  // the next start offers the restore; restoring brings both edits back, one undo step
+  auto r = replayOn(model, "- frames: 1\n");
+  EXPECT_EQ(r["restore"]["offered"], true);
+  r = replayOn(model, "- press: restore\n");
+  EXPECT_EQ(r["restore"]["offered"], false);
+  EXPECT_EQ(r["undo"]["label"], "restore the autosave");
+  EXPECT_EQ(r["document"]["modified"], true);
+  r = replayOn(model, "- press: restore\n- press: save\n");
+  const auto saved = gdpn::testing::fileBytes(model);
+  EXPECT_NE(saved.find("bounce: 0.5"), std::string::npos) << saved;
+  EXPECT_NE(saved.find("mass: 2.5"), std::string::npos) << saved;
+  // saving removed the autosave: nothing is offered any more
+  EXPECT_TRUE(autosaves().empty());
+  r = replayOn(model, "- frames: 1\n");
+  EXPECT_EQ(r["restore"]["offered"], false);
 }
 
 TEST_F(HeadlessIde, AKeyboardSensorHearsTheWorldViewsKeysWhileTheViewerIsInside) {

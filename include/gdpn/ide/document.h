@@ -23,6 +23,8 @@ class Document {
  public:
   /// The model file at `path`; null with the located diagnostics when it cannot be read.
   static std::unique_ptr<Document> open(const std::string& path, core::Diagnostics& diags);
+  /// A new model to be saved at `path`: one empty page `main` and an empty scene.
+  static std::unique_ptr<Document> create(const std::string& path);
   /// A document over `model` (already loaded).
   explicit Document(model::Model model);
 
@@ -45,6 +47,28 @@ class Document {
   /// `NAME.~N~` (N counting up; the newest kBackups kept). False with a diagnostic when it could
   /// not.
   bool save(core::Diagnostics& diags, const std::string& path = {});
+  /// Save As: writes the model to `path` as save() does, and from then on the document is
+  /// that file (relative script and mesh files are read from its folder). False with a
+  /// diagnostic when it could not.
+  bool saveAs(const std::string& path, core::Diagnostics& diags);
+  /// True when there are edits since the model was read or last saved.
+  [[nodiscard]] bool modified() const { return revision_ != saved_revision_; }
+
+  /// The file autosave() writes: in the user's state folder ($XDG_STATE_HOME, else
+  /// ~/.local/state) under gdpn/autosave/, named for the model file and a hash of its
+  /// absolute path, never beside the model.
+  [[nodiscard]] std::string autosavePath() const;
+  /// Writes the model as saving would, but to autosavePath() (atomically). False with a
+  /// diagnostic when it could not.
+  bool autosave(core::Diagnostics& diags);
+  /// True when an autosave of this model is newer than its file and holds something else:
+  /// the edits of a session that ended without saving them.
+  [[nodiscard]] bool autosavePending() const;
+  /// Puts the autosave's model in place of the document's, as one step that can be undone;
+  /// "" or why not (the autosave has errors: they go to diagnostics()).
+  std::string restoreAutosave();
+  /// Removes the autosave (saving does this too).
+  void discardAutosave() const;
 
   /// The selection.
   [[nodiscard]] const Selection& selection() const { return selection_; }
@@ -82,11 +106,15 @@ class Document {
 
  private:
   void adopt(model::Model model);
+  friend class ReplaceModelCommand;
+  /// Puts `model`'s content (not its path) in place of the document's; returns the old content.
+  model::Model exchange(model::Model model);
   model::Model model_;
   std::shared_ptr<scene::Scene> scene_;  // the same object as model_.scene, editable
   Selection selection_;
   UndoStack undo_;
   std::uint64_t revision_ = 0;
+  std::uint64_t saved_revision_ = 0;  // the revision last read or saved
   core::Diagnostics diagnostics_;
   std::optional<std::filesystem::file_time_type> stamp_;  // the file's time when read
   std::map<std::string, std::filesystem::file_time_type> script_stamps_;  // *.py beside the model

@@ -17,6 +17,7 @@ struct IdeOptions {
   std::string screenshot;  ///< PNG of the last frame; "" for none
   std::string report;      ///< JSON of what the views showed in the last frame; "" for none
   double quit_after = 0;   ///< window: quit after this many real seconds, running (0: never)
+  double autosave = 60;    ///< unsaved edits are autosaved after this many seconds (0: never)
 };
 
 /// Runs the IDE; the process's exit code (0 when it ended well, 1 on an error it printed).

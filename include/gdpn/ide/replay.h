@@ -16,13 +16,14 @@ namespace gdpn::ide {
 /// What an action does.
 enum class ActionKind : std::uint8_t {
   Select,      ///< `select: NAME`: a node path, else a place, transition or instance name
-  Press,       ///< `press: run|faster|fastest|pause|step|reset|plant-only|mini-view|movie|undo|redo|save`
+  Press,       ///< `press: run|faster|fastest|pause|step|reset|plant-only|mini-view|movie|undo|redo|save|restore|discard`
   Fire,        ///< `fire: TRANSITION`
   RunFor,      ///< `run: SECONDS` of model time (whole steps)
   Steps,       ///< `steps: N` steps
   Frames,      ///< `frames: N` frames drawn (the run advancing as Run says, 1/60 s a frame)
   Key,         ///< `key: NAME` typed in the world view (pressed, then released); `hold: NAME`
                ///< presses it and keeps it down, `release: NAME` lets it go (field: hold, release)
+  Type,        ///< `type: TEXT`: the characters typed into the field that has the keyboard
   Click,       ///< `click: [X, Y]` window pixels, left button
   Drag,        ///< `drag: {from: [X, Y], to: [X, Y], button: left|right|middle}`
   Wheel,       ///< `wheel: {at: [X, Y], clicks: N}`: the mouse wheel turned N clicks (negative: back) there

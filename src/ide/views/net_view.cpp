@@ -229,6 +229,12 @@ std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const R
     holding.push_back(qualified(s, item));
   }
   report["holding"] = holding;
+  if (s.layout.places.empty() && s.layout.transitions.empty() && s.layout.instances.empty()) {
+    constexpr const char* kHint = "An empty page: right-click to add a place or a transition";
+    const ImVec2 size = ImGui::CalcTextSize(kHint);
+    list->AddText({r.origin.x + (static_cast<float>(r.width) - size.x) / 2, r.origin.y + static_cast<float>(r.height) / 2},
+                  IM_COL32(120, 120, 120, 255), kHint);
+  }
   list->PopClipRect();
   if (under && r.hovered && under->kind != diagram::ItemKind::Arc) {
     ImGui::SetTooltip("%s", qualified(s, *under).c_str());

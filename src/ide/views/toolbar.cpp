@@ -3,6 +3,9 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
+
+#include <imgui_stdlib.h>
 
 #include "../views.h"
 
@@ -36,7 +39,7 @@ void drawToolbar(App& app, const Rect& at, nlohmann::json& report) {
   if (ImGui::Button(running ? "Running" : "Run", {70, 0})) run.run(kSpeeds[speed]);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Run the model at the chosen speed");
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(150);
+  ImGui::SetNextItemWidth(130);
   if (ImGui::Combo("##speed", &speed, "real time\0faster (x8)\0as fast as possible\0") && running) {
     run.run(kSpeeds[speed]);
   }
@@ -48,14 +51,14 @@ void drawToolbar(App& app, const Rect& at, nlohmann::json& report) {
   ImGui::SameLine();
   if (ImGui::Button("Run N")) run.runSteps(app.run_n);
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(80);
+  ImGui::SetNextItemWidth(64);
   ImGui::InputInt("##n", &app.run_n, 0, 0);
   app.run_n = std::clamp(app.run_n, 1, 10'000'000);
 
   // fire a transition chosen from the net's (the net view picks it later)
   ImGui::SameLine(0, 18);
   const auto names = run.transitions();
-  ImGui::SetNextItemWidth(200);
+  ImGui::SetNextItemWidth(170);
   if (ImGui::BeginCombo("##fire", app.fire_target.empty() ? "(transition)" : app.fire_target.c_str())) {
     for (const auto& n : names) {
       if (ImGui::Selectable(n.c_str(), n == app.fire_target)) {
@@ -86,6 +89,34 @@ void drawToolbar(App& app, const Rect& at, nlohmann::json& report) {
   if (ImGui::Button("Save")) app.save();
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Save the model to its file (Ctrl+S)");
   ImGui::SameLine();
+  if (ImGui::Button("Save As")) app.save_as_open = true;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Save the model under another name, which it keeps (Ctrl+Shift+S)");
+  nlohmann::json save_as = {{"open", false}};
+  if (app.save_as_open) {
+    if (!ImGui::IsPopupOpen("##save_as")) {
+      ImGui::OpenPopup("##save_as");
+      app.save_as_path = app.document().model().path;
+    }
+  }
+  if (ImGui::BeginPopup("##save_as")) {
+    ImGui::TextUnformatted("Save the model as");
+    ImGui::SetNextItemWidth(420);
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    const bool entered = ImGui::InputText("##path", &app.save_as_path, ImGuiInputTextFlags_EnterReturnsTrue);
+    save_as = {{"open", true}, {"path", app.save_as_path}};
+    ImGui::SameLine();
+    if (ImGui::Button("Save") || entered) {
+      app.saveAs(app.save_as_path);
+      app.save_as_open = false;
+      ImGui::CloseCurrentPopup();
+    }
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    save_as["save"] = {std::lround((lo.x + hi.x) / 2), std::lround((lo.y + hi.y) / 2)};
+    ImGui::EndPopup();
+  } else {
+    app.save_as_open = false;
+  }
+  ImGui::SameLine();
   if (toolButton("Undo", history.canUndo())) app.undo();
   ImGui::SameLine();
   if (toolButton("Redo", history.canRedo())) app.redo();
@@ -107,7 +138,8 @@ void drawToolbar(App& app, const Rect& at, nlohmann::json& report) {
             {"run_n", app.run_n},
             {"can_undo", history.canUndo()},
             {"can_redo", history.canRedo()},
-            {"filming", app.movie != nullptr}};
+            {"filming", app.movie != nullptr},
+            {"save_as", save_as}};
 }
 
 }  // namespace gdpn::ide

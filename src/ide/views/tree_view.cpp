@@ -164,6 +164,7 @@ void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
     }
     if (open) {
       for (const auto& child : s->root().children()) drawNode(st, *child);
+      if (s->root().children().empty()) ImGui::TextDisabled("Empty: right-click Scene to add a node");
     }
   }
 
