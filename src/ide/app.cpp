@@ -212,8 +212,7 @@ void App::drawRestoreOffer(nlohmann::json& report) {
   nlohmann::json buttons;
   const auto button = [&](const char* label) {
     const bool pressed = ImGui::Button(label, {200, 0});
-    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
-    buttons[label] = {std::lround((lo.x + hi.x) / 2), std::lround((lo.y + hi.y) / 2)};
+    noteItem(label, buttons);
     return pressed;
   };
   if (button("Restore the edits")) restoreAutosave();
@@ -480,10 +479,14 @@ void beginPanel(const char* id, const Rect& at, const char* heading) {
 
 void endPanel() { ImGui::EndChild(); }
 
-bool menuItem(const char* label, nlohmann::json& positions) {
-  const bool chosen = ImGui::MenuItem(label);
+void noteItem(const std::string& label, nlohmann::json& positions) {
   const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
   positions[label] = {std::lround((lo.x + hi.x) / 2), std::lround((lo.y + hi.y) / 2)};
+}
+
+bool menuItem(const char* label, nlohmann::json& positions) {
+  const bool chosen = ImGui::MenuItem(label);
+  noteItem(label, positions);
   return chosen;
 }
 

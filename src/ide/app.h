@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -19,6 +20,7 @@
 #include "gdpn/ide/run_control.h"
 #include "gdpn/capture/movie.h"
 #include "gdpn/render/renderer.h"
+#include "gdpn/script/syntax.h"
 
 struct ImFont;
 
@@ -45,6 +47,15 @@ struct WorldKey {
            a.target.z == b.target.z && a.fov == b.fov && a.selection == b.selection && a.width == b.width &&
            a.height == b.height && a.shown == b.shown && a.session == b.session;
   }
+};
+
+/// The contents view's script editor: the script open for typing, its text, and the syntax
+/// problems found when scripts were last compiled (each kept until its script changes).
+struct ScriptEditing {
+  std::string key;     ///< the script being typed ("" when none): construct, kind and slot
+  std::string buffer;  ///< its text as typed
+  bool focus = false;  ///< the field takes the keyboard in the next frame
+  std::map<std::string, script::SyntaxProblem> problems;  ///< by key
 };
 
 /// Fonts the views use (null: ImGui's default).
@@ -123,6 +134,8 @@ class App {
   int break_tokens = 1;             ///< the inspector's token count for a place's breakpoint
   std::string break_condition;      ///< the breakpoints' field: a Python condition being typed
   std::string tree_rename;          ///< the tree view's menu: the node's name being typed
+  ScriptEditing scripts;            ///< the contents view's script editor
+  net::SlotId contents_slot = net::kDefaultSlot;  ///< the slot the contents view edits
   std::uint64_t drag_id = 0;        ///< the inspector's current drag (merge key)
   std::string inspector_error;      ///< why the last edit was refused
   double autosave_seconds = 60;     ///< how long unsaved edits wait before they are autosaved, s (0: never)

@@ -5,6 +5,7 @@
 
 #include <epoxy/gl.h>
 #include <imgui.h>
+#include <GLFW/glfw3.h>
 #include <imgui_impl_opengl3.h>
 
 #include <iostream>
@@ -50,8 +51,12 @@ class Driver {
     down_[b] = down;
     frame();
   }
-  /// Types `text` into the field that has the keyboard (one frame).
+  /// Types `text` into the field that has the keyboard: two frames for a field that was just
+  /// asked to take the keyboard to take it (ImGui gives it the focus a frame later, and the
+  /// keyboard the frame after), then the text.
   void type(const std::string& text) {
+    frame();
+    frame();
     ImGui::GetIO().AddInputCharactersUTF8(text.c_str());
     frame();
   }
@@ -139,6 +144,17 @@ int runHeadless(const IdeOptions& o, std::unique_ptr<Document> doc, const std::v
   App app(std::move(doc));
   app.autosave_seconds = o.autosave;
   setUpImGui(app);
+  // ImGui's own keys (Enter ends a field, Tab moves on, the arrows move the cursor) by the
+  // codes the replay's keys use, as the window's GLFW backend maps them
+  auto& io = ImGui::GetIO();
+  io.KeyMap[ImGuiKey_Tab] = GLFW_KEY_TAB;
+  io.KeyMap[ImGuiKey_LeftArrow] = GLFW_KEY_LEFT;
+  io.KeyMap[ImGuiKey_RightArrow] = GLFW_KEY_RIGHT;
+  io.KeyMap[ImGuiKey_UpArrow] = GLFW_KEY_UP;
+  io.KeyMap[ImGuiKey_DownArrow] = GLFW_KEY_DOWN;
+  io.KeyMap[ImGuiKey_Enter] = GLFW_KEY_ENTER;
+  io.KeyMap[ImGuiKey_Escape] = GLFW_KEY_ESCAPE;
+  io.KeyMap[ImGuiKey_Space] = GLFW_KEY_SPACE;
   loadSettings(app);
   Driver d(app, o.width, o.height, target);
   // two frames so that every view has its size

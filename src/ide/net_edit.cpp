@@ -4,6 +4,7 @@
 #include "gdpn/ide/net_edit.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 
 #include "gdpn/core/text.h"
@@ -80,6 +81,52 @@ std::string addNamed(net::PageSpec& p, std::vector<Spec>& list, const NetEdit& e
   added.name = e.name;
   added.position = e.at;
   list.push_back(std::move(added));
+  return {};
+}
+
+/// "" when `d` is a duration a transition can have, else why not.
+std::string durationProblem(const net::Duration& d) {
+  using Law = net::Duration::Law;
+  if (!std::isfinite(d.a) || !std::isfinite(d.b)) return "a duration is a finite number of seconds";
+  switch (d.law) {
+    case Law::Fixed:
+    case Law::Exponential:
+      if (d.a < 0) return "a duration is 0 s or more";
+      break;
+    case Law::Uniform:
+      if (d.a < 0 || d.b < d.a) return "a uniform duration's bounds are 0 <= low <= high";
+      break;
+    case Law::Normal:
+      if (d.a < 0 || d.b < 0) return "a normal duration's mean and standard deviation are 0 s or more";
+      break;
+  }
+  return {};
+}
+
+/// "" when `p` can stand in place of a place of the same name, else why not.
+std::string placeProblem(const net::PlaceSpec& p) {
+  for (const auto& t : p.tokens) {
+    if (t.value < 0 || t.value > kMaxWeight) return "a slot holds 0 to 10^9 tokens";
+  }
+  for (const auto& c : p.capacity) {
+    if (c.value < 0 || c.value > kMaxWeight) return "a capacity is 0 to 10^9 tokens";
+  }
+  for (const auto& s : p.sensors) {
+    if (s.path.empty()) return "a sensor slot names its sensor node";
+  }
+  return {};
+}
+
+/// Replaces the construct named `name` in `list` with `spec` (keeping its position); "" or why not.
+template <typename Spec>
+std::string replaceNamed(net::PageSpec& p, std::vector<Spec>& list, const std::string& name, const Spec& spec,
+                         const char* what) {
+  const auto it = byName(list, name);
+  if (it == list.end()) return std::string("no ") + what + " '" + name + "' on page '" + p.name + "'";
+  if (spec.name != name) return "a rename is an edit of its own";
+  const auto position = it->position;
+  *it = spec;
+  it->position = position;
   return {};
 }
 
@@ -172,6 +219,18 @@ std::string edit(net::NetSpec& net, net::PageSpec& p, const NetEdit& e) {
       setWeight(*a, e.weight);
       return {};
     }
+    case NetEditKind::SetPlace: {
+      if (!e.place) return "no place given";
+      if (auto why = placeProblem(*e.place); !why.empty()) return why;
+      return replaceNamed(p, p.places, e.name, *e.place, "place");
+    }
+    case NetEditKind::SetTransition: {
+      if (!e.transition) return "no transition given";
+      const auto& t = *e.transition;
+      if (auto why = durationProblem(t.duration); !why.empty()) return why;
+      if (!(t.probability > 0.0 && t.probability <= 1.0)) return "a probability lies in (0, 1]";
+      return replaceNamed(p, p.transitions, e.name, t, "transition");
+    }
   }
   return "unknown edit";
 }
@@ -187,6 +246,123 @@ net::PageSpec* findPage(net::NetSpec& net, const std::string& name, bool* is_typ
     }
   }
   return nullptr;
+}
+
+namespace {
+
+template <typename T>
+auto bySlot(std::vector<T>& list, net::SlotId slot) {
+  return std::find_if(list.begin(), list.end(), [&](const T& x) { return x.slot == slot; });
+}
+
+template <typename T>
+void dropSlot(std::vector<T>& list, net::SlotId slot) {
+  std::erase_if(list, [&](const T& x) { return x.slot == slot; });
+}
+
+}  // namespace
+
+net::SlotKind slotKindOf(const net::PlaceSpec& p, net::SlotId slot) {
+  const auto has = [&](const auto& list) {
+    return std::any_of(list.begin(), list.end(), [&](const auto& x) { return x.slot == slot; });
+  };
+  if (has(p.sensors)) return net::SlotKind::Sensor;
+  for (const auto& k : p.kinds) {
+    if (k.slot == slot) return k.kind;
+  }
+  return has(p.nodes) ? net::SlotKind::Node : net::SlotKind::Control;
+}
+
+void setSlotKind(net::PlaceSpec& p, net::SlotId slot, net::SlotKind kind, const std::string& sensor) {
+  const auto was = slotKindOf(p, slot);
+  dropSlot(p.kinds, slot);
+  if (kind != net::SlotKind::Node) dropSlot(p.nodes, slot);
+  if (kind != net::SlotKind::Control) dropSlot(p.tokens, slot);
+  if (kind == net::SlotKind::Sensor) dropSlot(p.capacity, slot);
+  if (kind != net::SlotKind::Sensor) dropSlot(p.sensors, slot);
+  // the scripts only a sensor slot has, or only the others have
+  if (was != kind && (was == net::SlotKind::Sensor || kind == net::SlotKind::Sensor)) dropSlot(p.scripts, slot);
+  switch (kind) {
+    case net::SlotKind::Control: break;  // what a slot is unless said otherwise
+    case net::SlotKind::Node: p.kinds.push_back({slot, kind, {}}); break;
+    case net::SlotKind::Sensor: p.sensors.push_back({slot, sensor, {}}); break;
+  }
+}
+
+void setSlotCount(std::vector<net::SlotCount>& counts, net::SlotId slot, std::optional<std::int64_t> value) {
+  const auto it = bySlot(counts, slot);
+  if (!value) {
+    if (it != counts.end()) counts.erase(it);
+  } else if (it != counts.end()) {
+    it->value = *value;
+  } else {
+    counts.push_back({slot, *value, {}});
+  }
+}
+
+std::optional<std::int64_t> slotCount(const std::vector<net::SlotCount>& counts, net::SlotId slot) {
+  for (const auto& c : counts) {
+    if (c.slot == slot) return c.value;
+  }
+  return std::nullopt;
+}
+
+void addNodeToken(net::PlaceSpec& p, net::SlotId slot, const std::string& path) {
+  if (slotKindOf(p, slot) != net::SlotKind::Node) setSlotKind(p, slot, net::SlotKind::Node);
+  auto it = bySlot(p.nodes, slot);
+  if (it == p.nodes.end()) {
+    p.nodes.push_back({slot, {}, {}});
+    it = std::prev(p.nodes.end());
+  }
+  it->nodes.push_back(path);
+}
+
+bool removeNodeToken(net::PlaceSpec& p, net::SlotId slot, const std::string& path) {
+  const auto it = bySlot(p.nodes, slot);
+  if (it == p.nodes.end()) return false;
+  const auto n = std::find(it->nodes.begin(), it->nodes.end(), path);
+  if (n == it->nodes.end()) return false;
+  it->nodes.erase(n);
+  if (it->nodes.empty()) p.nodes.erase(it);
+  return true;
+}
+
+void setSlotScript(net::PlaceSpec& p, net::SlotId slot, net::ScriptKind kind, const std::string& code) {
+  auto it = bySlot(p.scripts, slot);
+  if (it == p.scripts.end()) {
+    if (code.empty()) return;
+    p.scripts.push_back({});
+    it = std::prev(p.scripts.end());
+    it->slot = slot;
+  }
+  net::ScriptSpec& script = net::scriptOf(*it, kind);
+  script = {};
+  script.code = code;
+  net::SlotScripts none;
+  none.slot = slot;
+  if (*it == none) p.scripts.erase(it);
+}
+
+std::optional<ConstructAt> locateConstruct(const net::NetSpec& net, const std::string& qualified) {
+  std::vector<std::string> parts;
+  for (std::size_t start = 0;;) {
+    const auto slash = qualified.find('/', start);
+    parts.push_back(qualified.substr(start, slash == std::string::npos ? std::string::npos : slash - start));
+    if (slash == std::string::npos) break;
+    start = slash + 1;
+  }
+  if (parts.size() < 2) return std::nullopt;
+  const auto page = std::find_if(net.pages.begin(), net.pages.end(), [&](const auto& x) { return x.name == parts[0]; });
+  if (page == net.pages.end()) return std::nullopt;
+  const net::PageSpec* at = &*page;
+  for (std::size_t i = 1; i + 1 < parts.size(); ++i) {
+    const auto inst = std::find_if(at->instances.begin(), at->instances.end(), [&](const auto& x) { return x.name == parts[i]; });
+    if (inst == at->instances.end()) return std::nullopt;
+    const auto type = std::find_if(net.page_types.begin(), net.page_types.end(), [&](const auto& x) { return x.name == inst->type; });
+    if (type == net.page_types.end()) return std::nullopt;
+    at = &*type;
+  }
+  return ConstructAt{at->name, parts.back()};
 }
 
 NetEdit makeNetEdit(NetEditKind kind, std::string page, std::string name, std::string second, net::EditorPos at) {
@@ -231,6 +407,8 @@ std::string NetEditCommand::label() const {
     case NetEditKind::DeleteArc:
       return std::string("delete ") + kindName(edit_.arc_kind) + " " + edit_.name + " -> " + edit_.new_name;
     case NetEditKind::SetArcWeight: return "set the weight of " + edit_.name + " -> " + edit_.new_name;
+    case NetEditKind::SetPlace: return "edit place " + edit_.page + "/" + edit_.name;
+    case NetEditKind::SetTransition: return "edit transition " + edit_.page + "/" + edit_.name;
   }
   return "edit the net";
 }

@@ -9,6 +9,9 @@
 
 namespace gdpn::ide {
 
+/// The drag-and-drop payload of a scene node dragged from the tree view: its path.
+inline constexpr const char* kNodePayload = "GDPN_NODE";
+
 /// Run, Pause, Step, Run N, Fire, Plant only, Reset, Undo, Redo.
 void drawToolbar(App& app, const Rect& at, nlohmann::json& report);
 /// The scene tree (node tokens and sensors in bold, colours by category) and the net's
@@ -40,6 +43,10 @@ void drawStatusBar(App& app, const Rect& at, nlohmann::json& report);
 void beginPanel(const char* id, const Rect& at, const char* heading);
 /// Ends a panel begun by beginPanel().
 void endPanel();
+
+/// Notes the centre of the last item drawn, in window pixels, in `positions` under `label` (so
+/// that replay files and tests can click it).
+void noteItem(const std::string& label, nlohmann::json& positions);
 
 /// A menu item `label`; its centre, in window pixels, goes into `positions` under its label (so
 /// that replay files and tests can click it). True when chosen.

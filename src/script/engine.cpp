@@ -3,6 +3,7 @@
 // one globals dict, evaluate the code object, check the result.
 
 #include "gdpn/script/engine.h"
+#include "gdpn/script/syntax.h"
 
 #include <pybind11/embed.h>
 #include <pybind11/pybind11.h>
@@ -605,15 +606,7 @@ Engine::~Engine() {
 
 std::unique_ptr<Engine> Engine::create(const net::Net& net, net::Kernel& kernel, const std::string& model_path,
                                        EngineOptions options, EngineCallbacks callbacks, core::Diagnostics& diags) {
-  if (!Py_IsInitialized()) {
-    // Python installs no C signal handlers; its own SIGINT entry is set to raise
-    // KeyboardInterrupt, so that requestInterrupt() and the timeout reach a running script
-    py::initialize_interpreter(false);
-    auto signal = py::module_::import("signal");
-    const auto previous = std::signal(SIGINT, SIG_DFL);
-    signal.attr("signal")(SIGINT, signal.attr("default_int_handler"));
-    std::signal(SIGINT, previous);  // the C-level handler stays the program's
-  }
+  startInterpreter();
   py::gil_scoped_acquire gil;
   detail::registerViews();
   if (options.timeout_s > 0) installStopHandler();

@@ -38,7 +38,7 @@ class HeadlessIde : public gdpn::testing::TempDirTest {
     const auto report = (dir_ / "report.json").string();
     std::filesystem::remove(report);
     last_ = runShell(env() + " \"$GDPN\" ide '" + model +
-                     "' --headless --size 1280x720 --replay '" + file + "' --report '" + report + "' " + extra);
+                     "' --headless --size " + size_ + " --replay '" + file + "' --report '" + report + "' " + extra);
     EXPECT_EQ(last_.code, expect) << last_.out;
     if (last_.code != 0) return {};
     std::ifstream in(report);
@@ -58,6 +58,7 @@ class HeadlessIde : public gdpn::testing::TempDirTest {
     return found;
   }
   gdpn::testing::CliResult last_;
+  std::string size_ = "1280x720";  // the window of the IDEs started
 };
 
 TEST_F(HeadlessIde, OpensTheFactoryInEditModeWithEveryView) {
@@ -385,6 +386,93 @@ TEST_F(HeadlessIde, AfterTheIdeIsKilledTheNextStartOffersTheAutosaveAndRestoresE
   EXPECT_TRUE(autosaves().empty());
   r = replayOn(model, "- frames: 1\n");
   EXPECT_EQ(r["restore"]["offered"], false);
+}
+
+/// "[X, Y]" of a position a report gave.
+std::string at(const nlohmann::json& position) {
+  return "[" + std::to_string(position[0].get<int>()) + ", " + std::to_string(position[1].get<int>()) + "]";
+}
+
+// the inspector made tall (its splitter dragged up) so that the contents view shows whole
+constexpr const char* kTallInspector = "- drag: {from: [560, 460], to: [560, 160]}\n";
+
+TEST_F(HeadlessIde, ScriptsAreTypedInTheContentsViewCompiledWhenLeftAndASyntaxErrorIsMarkedOnItsLine) {
+  const auto model = write("bin.gdpn.yaml", ide::testing::kBinModel);
+  const std::string start = std::string(kTallInspector) + "- select: main/work\n";
+  const auto editors = replayOn(model, start)["inspector"]["contents"]["editors"];
+  ASSERT_EQ(editors["pre_fire"]["lines"], 0);  // none yet: an Add button
+  auto r = replayOn(model, start + "- click: " + at(editors["pre_fire"]["edit"]) +
+                               "\n- type: \"box = sim.node('drop/box')\\nbox.mass = 2\\n\"\n- click: [1100, 700]\n"
+                               "- click: " + at(editors["guard"]["edit"]) +
+                               "\n- type: 'len(bin.items) >'\n- click: [1100, 700]\n- press: save\n");
+  const auto contents = r["inspector"]["contents"];
+  EXPECT_EQ(r["undo"]["depth"], 2);
+  EXPECT_EQ(r["undo"]["label"], "edit transition main/work");
+  EXPECT_EQ(contents["editors"]["pre_fire"]["lines"], 2);
+  EXPECT_FALSE(contents["editors"]["pre_fire"].contains("error"));
+  // the guard is kept as typed, and marked: Python's message on its line
+  EXPECT_EQ(contents["editors"]["guard"]["error"]["line"], 1);
+  EXPECT_EQ(contents["editors"]["guard"]["error"]["message"], "invalid syntax");
+  const auto saved = gdpn::testing::fileBytes(model);
+  EXPECT_NE(saved.find("box.mass = 2"), std::string::npos) << saved;
+  EXPECT_NE(saved.find("len(bin.items) >"), std::string::npos) << saved;
+  // the run refuses the model at the guard's line in the file
+  const auto check = gdpn::testing::runGdpn("check '" + model + "'");
+  EXPECT_NE(check.code, 0);
+  EXPECT_NE(check.out.find("syntax error in guard of transition 'main/work'"), std::string::npos) << check.out;
+}
+
+TEST_F(HeadlessIde, ANodeDraggedFromTheTreeOntoASlotBecomesATokenAndTheSlotMenuBindsASensor) {
+  const auto model = write("bin.gdpn.yaml", ide::testing::kBinModel);
+  const std::string start = std::string(kTallInspector) + "- select: main/landed\n";
+  auto r = replayOn(model, start);
+  const auto grid = r["inspector"]["contents"]["grid"];
+  const auto drop = r["tree"]["rows"]["drop"];
+  ASSERT_TRUE(drop.is_array()) << r["tree"].dump();
+  // the Transform drop onto b0: a node slot holding it, one step
+  const std::string dragged = start + "- drag: {from: " + at(drop) + ", to: " + at(grid["b0"]) + "}\n";
+  r = replayOn(model, dragged);
+  EXPECT_EQ(r["selection"]["name"], "main/landed") << "a drag from the tree does not select";
+  EXPECT_EQ(r["undo"]["label"], "edit place main/landed");
+  EXPECT_EQ(r["inspector"]["contents"]["slots"]["b0"]["kind"], "node");
+  EXPECT_EQ(r["inspector"]["contents"]["slots"]["b0"]["names"], nlohmann::json::array({"drop"}));
+  // c0's menu: a sensor slot reading the region high/bin
+  const std::string menu = dragged + "- drag: {from: " + at(grid["c0"]) + ", to: " + at(grid["c0"]) + ", button: right}\n";
+  r = replayOn(model, menu);
+  const auto items = r["inspector"]["contents"]["menu"];
+  ASSERT_TRUE(items.contains("Sensor slot")) << r["inspector"]["contents"].dump();
+  r = replayOn(model, menu + "- click: " + at(items["Sensor slot"]) + "\n");
+  const auto sensors = r["inspector"]["contents"]["menu"];
+  ASSERT_TRUE(sensors.contains("high/bin")) << sensors.dump();
+  r = replayOn(model, menu + "- click: " + at(items["Sensor slot"]) + "\n- click: " + at(sensors["high/bin"]) +
+                          "\n- press: save\n");
+  EXPECT_EQ(r["inspector"]["contents"]["slots"]["c0"]["kind"], "sensor");
+  EXPECT_EQ(r["undo"]["depth"], 2);
+  const auto saved = gdpn::testing::fileBytes(model);
+  EXPECT_NE(saved.find("sensors: {c0: high/bin}"), std::string::npos) << saved;
+  EXPECT_EQ(gdpn::testing::runGdpn("check '" + model + "'").code, 0) << saved;
+}
+
+TEST_F(HeadlessIde, ATransitionsDurationPriorityAndProbabilityAreSetInTheContentsView) {
+  const auto model = write("bin.gdpn.yaml", ide::testing::kBinModel);
+  const std::string start = std::string(kTallInspector) + "- select: main/rest\n";
+  const auto fields = replayOn(model, start)["inspector"]["contents"]["fields"];
+  // a click selects the field's text, which the typing replaces
+  const auto set = [&](const char* field, const std::string& text) {
+    return "- click: " + at(fields[field]) + "\n- type: '" + text +
+           "'\n- key: enter\n";
+  };
+  auto r = replayOn(model, start + set("duration", "1.25") + set("priority", "3") + set("probability", "0.5"));
+  EXPECT_EQ(r["inspector"]["contents"]["duration"], "1.25 s");
+  EXPECT_EQ(r["undo"]["depth"], 3);
+  r = replayOn(model, start + set("duration", "1.25") + set("priority", "3") + set("probability", "0.5") +
+                          "- press: save\n");
+  const auto saved = gdpn::testing::fileBytes(model);
+  EXPECT_NE(saved.find("rest: {duration: 1.25, priority: 3, probability: 0.5}"), std::string::npos) << saved;
+  // a probability outside (0, 1] is refused with the reason
+  r = replayOn(model, start + set("probability", "2"));
+  EXPECT_EQ(r["undo"]["depth"], 0);
+  EXPECT_EQ(r["message"], "a probability lies in (0, 1]");
 }
 
 TEST_F(HeadlessIde, AKeyboardSensorHearsTheWorldViewsKeysWhileTheViewerIsInside) {

@@ -111,6 +111,68 @@ TEST(NetEdit, ADragIsOneStep) {
   EXPECT_EQ(doc->text(), after);
 }
 
+TEST(NetEdit, ASlotsKindTokensCapacityNodesAndScriptsAreSetAndTheEmptyOnesLeaveNoTrace) {
+  net::PlaceSpec p;
+  p.name = "p";
+  const net::PlaceSpec bare = p;
+  const auto b0 = *net::parseSlot("b0");
+  const auto c0 = *net::parseSlot("c0");
+  EXPECT_EQ(slotKindOf(p, b0), net::SlotKind::Control);
+  addNodeToken(p, b0, "arm/turn");
+  addNodeToken(p, b0, "arm/lift");
+  EXPECT_EQ(slotKindOf(p, b0), net::SlotKind::Node);
+  ASSERT_EQ(p.nodes.size(), 1u);
+  EXPECT_EQ(p.nodes[0].nodes, (std::vector<std::string>{"arm/turn", "arm/lift"}));
+  EXPECT_TRUE(removeNodeToken(p, b0, "arm/turn"));
+  EXPECT_FALSE(removeNodeToken(p, b0, "arm/turn"));
+  // a sensor slot drops what the node slot held, and its scripts
+  setSlotScript(p, b0, net::ScriptKind::OnDeposit, "print(token)\n");
+  setSlotKind(p, b0, net::SlotKind::Sensor, "eye");
+  EXPECT_EQ(slotKindOf(p, b0), net::SlotKind::Sensor);
+  EXPECT_TRUE(p.nodes.empty());
+  EXPECT_TRUE(p.scripts.empty());
+  ASSERT_EQ(p.sensors.size(), 1u);
+  EXPECT_EQ(p.sensors[0].path, "eye");
+  // back to control: nothing is left over
+  setSlotKind(p, b0, net::SlotKind::Control);
+  EXPECT_EQ(p, bare);
+  setSlotCount(p.tokens, c0, 3);
+  setSlotCount(p.capacity, c0, 5);
+  EXPECT_EQ(slotCount(p.tokens, c0), 3);
+  EXPECT_EQ(slotCount(p.capacity, c0), 5);
+  setSlotCount(p.tokens, c0, std::nullopt);
+  setSlotCount(p.capacity, c0, std::nullopt);
+  setSlotScript(p, c0, net::ScriptKind::OnRemove, "x = 1\n");
+  setSlotScript(p, c0, net::ScriptKind::OnRemove, "");
+  EXPECT_EQ(p, bare);
+}
+
+TEST(NetEdit, APlaceOrTransitionIsSetWholeAndBadValuesAreRefused) {
+  auto doc = openFactory();
+  ASSERT_TRUE(doc);
+  const auto at = locateConstruct(doc->model().net, "factory/stationA/skip");
+  ASSERT_TRUE(at);
+  EXPECT_EQ(at->page, "station");
+  EXPECT_EQ(at->name, "skip");
+  EXPECT_FALSE(locateConstruct(doc->model().net, "factory/nobody/skip"));
+  auto t = *std::find_if(findPage(doc->editableNet(), "station")->transitions.begin(),
+                         findPage(doc->editableNet(), "station")->transitions.end(), [](const auto& x) { return x.name == "skip"; });
+  auto e = makeNetEdit(NetEditKind::SetTransition, "station", "skip");
+  t.probability = 0;
+  e.transition = t;
+  EXPECT_EQ(run(*doc, e), "a probability lies in (0, 1]");
+  t.probability = 1;
+  t.duration = {net::Duration::Law::Uniform, 2, 1, {}};
+  e.transition = t;
+  EXPECT_EQ(run(*doc, e), "a uniform duration's bounds are 0 <= low <= high");
+  t.duration = {net::Duration::Law::Normal, 2, 0.5, {}};
+  t.priority = 4;
+  e.transition = t;
+  EXPECT_EQ(run(*doc, e), "");
+  EXPECT_NE(doc->text().find("skip:\n        duration: {normal: [2, 0.5]}\n        priority: 4\n"), std::string::npos) << doc->text();
+  EXPECT_EQ(doc->history().undoLabel(), "edit transition station/skip");
+}
+
 /// Random edits, good and bad, on every page and page type of the factory.
 class RandomEdits {
  public:
@@ -125,7 +187,7 @@ class RandomEdits {
     for (const auto& p : page.places) names.push_back(p.name);
     for (const auto& t : page.transitions) names.push_back(t.name);
     NetEdit e;
-    e.kind = static_cast<NetEditKind>(pick(8));
+    e.kind = static_cast<NetEditKind>(pick(10));
     e.page = page.name;
     e.name = pick(names);
     e.new_name = pick(names);
@@ -133,6 +195,32 @@ class RandomEdits {
     e.arc_kind = static_cast<net::ArcKind>(pick(3));
     e.weight = static_cast<std::int64_t>(pick(4));  // 0 is refused
     e.drag = pick(2) == 0 ? 0 : 1 + pick(2);
+    const auto slot = static_cast<net::SlotId>(pick(net::kSlotCount));
+    if (e.kind == NetEditKind::SetPlace && !page.places.empty()) {
+      // what the contents view does to a place: a slot's kind, tokens, capacity, nodes, a script
+      net::PlaceSpec p = page.places[pick(page.places.size())];
+      e.name = p.name;
+      switch (pick(6)) {
+        case 0: setSlotKind(p, slot, static_cast<net::SlotKind>(pick(3)), "line/landing_at/landing"); break;
+        case 1: setSlotCount(p.tokens, slot, static_cast<std::int64_t>(pick(4)) - 1); break;
+        case 2: setSlotCount(p.capacity, slot, pick(2) == 0 ? std::nullopt : std::optional<std::int64_t>(pick(5))); break;
+        case 3: addNodeToken(p, slot, "boxes/b0" + std::to_string(pick(10)) + "/box"); break;
+        case 4: setSlotScript(p, slot, net::kSlotScripts[pick(6)], pick(2) == 0 ? "" : "print('x')\n"); break;
+        default: p.name = "renamed"; break;  // refused: a rename is its own edit
+      }
+      e.place = p;
+    } else if (e.kind == NetEditKind::SetTransition && !page.transitions.empty()) {
+      net::TransitionSpec t = page.transitions[pick(page.transitions.size())];
+      e.name = t.name;
+      switch (pick(5)) {
+        case 0: t.duration = {static_cast<net::Duration::Law>(pick(4)), static_cast<double>(pick(5)) - 1, 2.0, {}}; break;
+        case 1: t.priority = static_cast<std::int64_t>(pick(5)); break;
+        case 2: t.probability = static_cast<double>(pick(4)) / 2.0; break;  // 0 and 1.5 are refused
+        case 3: net::scriptOf(t, net::kTransitionScripts[pick(4)]).code = pick(2) == 0 ? "" : "x = 1\n"; break;
+        default: break;
+      }
+      e.transition = t;
+    }
     return e;
   }
 

@@ -27,6 +27,8 @@ enum class NetEditKind {
   AddArc,         ///< an arc from `name` to `new_name` of kind `arc_kind` and weight `weight`
   DeleteArc,      ///< the arc from `name` to `new_name` of kind `arc_kind`
   SetArcWeight,   ///< that arc's weight on its first slot (a0 when it has none)
+  SetPlace,       ///< place `name` becomes `place` (its slots, marking, capacities, sensors, scripts)
+  SetTransition,  ///< transition `name` becomes `transition` (duration, priority, probability, scripts)
 };
 
 /// One edit of one page's net (a top-level page or a page type, by name).
@@ -42,6 +44,10 @@ struct NetEdit {
   /// Move on a page laid out by Graphviz (some construct without a position): where each
   /// construct is drawn now, by name, so that the page keeps its look with one node moved.
   std::vector<std::pair<std::string, net::EditorPos>> pins;
+  /// SetPlace: the place as it is to be (same name; its position is kept from the page).
+  std::optional<net::PlaceSpec> place;
+  /// SetTransition: the transition as it is to be (same name; its position is kept).
+  std::optional<net::TransitionSpec> transition;
 };
 
 /// A NetEdit of `kind` on `page`: construct `name` (and `second`: a new name, or an arc's
@@ -67,5 +73,36 @@ class NetEditCommand final : public Command {
 
 /// The page or page type `name` of `net`; null when there is none.
 net::PageSpec* findPage(net::NetSpec& net, const std::string& name, bool* is_type = nullptr);
+
+// Changes to a place's slots, for the contents view: each keeps the place in the form the
+// model file would have read (empty entries dropped), so that a save reads back the same.
+
+/// What slot `slot` of `p` is: sensor when bound to a sensor, else as declared, else node
+/// when it holds node tokens, else control.
+net::SlotKind slotKindOf(const net::PlaceSpec& p, net::SlotId slot);
+/// Makes slot `slot` of `p` a slot of `kind` (a sensor slot reading the node at `sensor`):
+/// what the old kind held there (tokens, nodes, capacity, the binding) goes.
+void setSlotKind(net::PlaceSpec& p, net::SlotId slot, net::SlotKind kind, const std::string& sensor = {});
+/// Sets the count of `slot` in `counts` (a place's tokens or capacities); nullopt removes it.
+void setSlotCount(std::vector<net::SlotCount>& counts, net::SlotId slot, std::optional<std::int64_t> value);
+/// The count of `slot` in `counts`; nullopt when it has none.
+std::optional<std::int64_t> slotCount(const std::vector<net::SlotCount>& counts, net::SlotId slot);
+/// Puts the node at `path` last into node slot `slot` of `p` (the slot becomes a node slot).
+void addNodeToken(net::PlaceSpec& p, net::SlotId slot, const std::string& path);
+/// Takes the node at `path` out of slot `slot` of `p`; false when it was not there.
+bool removeNodeToken(net::PlaceSpec& p, net::SlotId slot, const std::string& path);
+/// Sets the inline script of kind `kind` of slot `slot` of `p` to `code` ("" removes it).
+void setSlotScript(net::PlaceSpec& p, net::SlotId slot, net::ScriptKind kind, const std::string& code);
+
+/// Where a construct of the compiled net is written: the page (or page type) and its name there.
+struct ConstructAt {
+  std::string page;  ///< the page or page type
+  std::string name;  ///< the place's or transition's name on it
+};
+
+/// The page and name behind the qualified name `qualified` ("main/buffer", or
+/// "main/cell1/buffer" inside instance cell1, which is written in cell1's page type);
+/// nullopt when no page or instance leads there.
+std::optional<ConstructAt> locateConstruct(const net::NetSpec& net, const std::string& qualified);
 
 }  // namespace gdpn::ide

@@ -24,7 +24,8 @@ struct PySpan {
 std::vector<PySpan> highlightPython(std::string_view line, char& in_string);
 
 /// Draws `code` in the current ImGui window, one numbered line per source line, numbered from
-/// `first_line` (the model file's line; 1 when unknown). Returns the number of lines.
-int drawPython(std::string_view code, int first_line);
+/// `first_line` (the model file's line; 1 when unknown). Line `error_line` of the code (1 its
+/// first; 0 for none) is marked as the one with a syntax error. Returns the number of lines.
+int drawPython(std::string_view code, int first_line, int error_line = 0);
 
 }  // namespace gdpn::ide

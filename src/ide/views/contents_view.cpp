@@ -1,16 +1,25 @@
-// The contents view (read-only in this part): the selected place's 8 x 4 slot grid, each slot
+// The contents view. While a run is shown: the selected place's 8 x 4 slot grid, each slot
 // coloured by kind and marked when it holds tokens, with its tokens' names; the selected
-// transition's duration; and the construct's scripts with Python highlighting.
+// transition's duration; and the construct's scripts with Python highlighting. In edit mode
+// the same, from the model as written and editable: slot kinds (a menu; a node dragged from
+// the tree makes a node slot holding it), tokens, capacities, durations, priorities,
+// probabilities, and every script in an editor compiled when it loses focus.
 
 #include <imgui.h>
 
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <functional>
 #include <string_view>
 
 #include "../views.h"
 #include "gdpn/core/text.h"
 #include "gdpn/net/script_kind.h"
 #include "gdpn/net/slot.h"
+#include "gdpn/ide/net_edit.h"
 #include "gdpn/ide/python_text.h"
+#include "gdpn/scene/node.h"
 
 namespace gdpn::ide {
 namespace {
@@ -127,13 +136,359 @@ void transitionContents(const session::Session& session, net::TransitionId t, nl
   }
 }
 
+
+// ---- edit mode: the model as written ----
+
+/// Applies a SetPlace or SetTransition edit; the message line says why when refused.
+void commit(App& app, NetEdit edit) {
+  const auto why = app.document().execute(std::make_unique<NetEditCommand>(std::move(edit)));
+  if (!why.empty()) app.message = why;
+}
+
+void commitPlace(App& app, const ConstructAt& at, net::PlaceSpec place) {
+  auto e = makeNetEdit(NetEditKind::SetPlace, at.page, at.name);
+  e.place = std::move(place);
+  commit(app, std::move(e));
+}
+
+void commitTransition(App& app, const ConstructAt& at, net::TransitionSpec t) {
+  auto e = makeNetEdit(NetEditKind::SetTransition, at.page, at.name);
+  e.transition = std::move(t);
+  commit(app, std::move(e));
+}
+
+/// One script in the editor: highlighted with its line numbers and its syntax error marked,
+/// or, after "Edit", a field that takes the typing and is compiled when it loses focus. A
+/// script in a .py file is shown, not edited here. Calls `store` with the new code when the
+/// field was changed.
+void scriptEditor(App& app, const std::string& key, const std::string& heading, const net::ScriptSpec& script,
+                  bool expression, const std::function<void(const std::string&)>& store, nlohmann::json& report) {
+  auto& ed = app.scripts;
+  ImGui::PushID(key.c_str());
+  ImGui::Separator();
+  ImGui::TextColored({0.6f, 0.75f, 1.0f, 1.0f}, "%s", heading.c_str());
+  nlohmann::json entry = {{"what", heading}, {"file", script.file}};
+  if (!script.file.empty()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s%s%s (edit the file)", script.file.c_str(), script.function.empty() ? "" : ": ",
+                        script.function.c_str());
+    entry["lines"] = drawPython(script.code, script.loc.line);
+  } else if (ed.key == key) {
+    ImGui::SameLine();
+    ImGui::TextDisabled(expression ? "an expression; compiled when you leave it" : "compiled when you leave it");
+    if (ed.focus) {
+      ImGui::SetKeyboardFocusHere();
+      ed.focus = false;
+    }
+    const int lines = 1 + static_cast<int>(std::count(ed.buffer.begin(), ed.buffer.end(), '\n'));
+    ImGui::InputTextMultiline("##code", &ed.buffer,
+                              {-1, ImGui::GetTextLineHeight() * static_cast<float>(std::clamp(lines + 1, 3, 16)) + 8},
+                              ImGuiInputTextFlags_AllowTabInput);
+    noteItem("field", entry);
+    entry["editing"] = true;
+    entry["lines"] = lines;
+    if (ImGui::IsItemDeactivated()) {
+      // compiled now; a syntax error is kept and marked, the text is never thrown away
+      std::string code = ed.buffer;
+      while (!code.empty() && (code.back() == '\n' || code.back() == ' ')) code.pop_back();
+      if (!code.empty() && !expression) code += '\n';
+      ed.problems.erase(key);
+      if (!code.empty()) {
+        if (auto problem = script::syntaxProblem(code, expression)) ed.problems[key] = *problem;
+      }
+      ed.key.clear();
+      if (code != script.code) store(code);
+    }
+  } else {
+    const auto problem = ed.problems.find(key);
+    const int error_line = problem == ed.problems.end() ? 0 : std::max(1, problem->second.line);
+    ImGui::SameLine();
+    if (ImGui::SmallButton(script.empty() ? "Add" : "Edit")) {
+      ed.key = key;
+      ed.buffer = script.code;
+      ed.focus = true;
+    }
+    noteItem("edit", entry);
+    entry["lines"] = script.empty() ? 0 : drawPython(script.code, 1, error_line);
+    if (problem != ed.problems.end()) {
+      const auto& p = problem->second;
+      const std::string where = "line " + std::to_string(p.line) + (p.column > 0 ? ", column " + std::to_string(p.column) : "");
+      ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s: %s", where.c_str(), p.message.c_str());
+      entry["error"] = {{"line", p.line}, {"column", p.column}, {"message", p.message}};
+    }
+  }
+  if (!script.empty() || entry.contains("editing")) report["scripts"].push_back(entry);
+  report["editors"][heading] = entry;
+  ImGui::PopID();
+}
+
+/// The sensor nodes of the document's scene, by path.
+void sensorPaths(const scene::Node& node, std::vector<std::string>& out) {
+  for (const auto& c : node.children()) {
+    if (c->type().category == scene::Category::Sensor) out.push_back(c->path());
+    sensorPaths(*c, out);
+  }
+}
+
+/// The menu of a slot (right click): make it a control, node or sensor slot.
+void slotMenu(App& app, const ConstructAt& at, const net::PlaceSpec& place, net::SlotId slot, nlohmann::json& report) {
+  if (!ImGui::BeginPopupContextItem()) return;
+  nlohmann::json& menu = report["menu"];
+  const auto kind = slotKindOf(place, slot);
+  if (menuItem("Control slot", menu) && kind != net::SlotKind::Control) {
+    auto p = place;
+    setSlotKind(p, slot, net::SlotKind::Control);
+    commitPlace(app, at, std::move(p));
+  }
+  if (menuItem("Node slot", menu) && kind != net::SlotKind::Node) {
+    auto p = place;
+    setSlotKind(p, slot, net::SlotKind::Node);
+    commitPlace(app, at, std::move(p));
+  }
+  const bool open = ImGui::BeginMenu("Sensor slot");
+  noteItem("Sensor slot", menu);
+  if (open) {
+    std::vector<std::string> sensors;
+    if (const auto* s = app.document().scene()) sensorPaths(s->root(), sensors);
+    if (sensors.empty()) ImGui::TextDisabled("The scene has no sensor node");
+    for (const auto& path : sensors) {
+      if (menuItem(path.c_str(), menu)) {
+        auto p = place;
+        setSlotKind(p, slot, net::SlotKind::Sensor, path);
+        commitPlace(app, at, std::move(p));
+      }
+    }
+    ImGui::EndMenu();
+  }
+  ImGui::EndPopup();
+}
+
+/// The chosen slot's own fields: tokens and capacity, or its node tokens, or its sensor.
+void slotFields(App& app, const ConstructAt& at, const net::PlaceSpec& place, net::SlotId slot, nlohmann::json& report) {
+  const auto kind = slotKindOf(place, slot);
+  const std::string name = net::slotName(slot);
+  ImGui::Text("Slot %s: %s", name.c_str(), net::slotKindName(kind));
+  nlohmann::json fields;
+  if (kind == net::SlotKind::Sensor) {
+    for (const auto& b : place.sensors) {
+      if (b.slot == slot) ImGui::TextWrapped("reads the sensor %s", b.path.c_str());
+    }
+  } else {
+    if (kind == net::SlotKind::Control) {
+      int tokens = static_cast<int>(slotCount(place.tokens, slot).value_or(0));
+      ImGui::SetNextItemWidth(110);
+      ImGui::InputInt("tokens", &tokens);
+      noteItem("tokens", fields);
+      if (ImGui::IsItemDeactivatedAfterEdit() && tokens >= 0) {
+        auto p = place;
+        setSlotCount(p.tokens, slot, tokens > 0 ? std::optional<std::int64_t>(tokens) : std::nullopt);
+        commitPlace(app, at, std::move(p));
+      }
+      ImGui::SameLine();
+    }
+    int capacity = static_cast<int>(slotCount(place.capacity, slot).value_or(-1));
+    ImGui::SetNextItemWidth(110);
+    ImGui::InputInt("capacity (-1: none)", &capacity);
+    noteItem("capacity", fields);
+    if (ImGui::IsItemDeactivatedAfterEdit() && capacity >= -1) {
+      auto p = place;
+      setSlotCount(p.capacity, slot, capacity >= 0 ? std::optional<std::int64_t>(capacity) : std::nullopt);
+      commitPlace(app, at, std::move(p));
+    }
+    if (kind == net::SlotKind::Node) {
+      for (const auto& n : place.nodes) {
+        if (n.slot != slot) continue;
+        for (const auto& path : n.nodes) {
+          ImGui::PushID(path.c_str());
+          if (ImGui::SmallButton("x")) {
+            auto p = place;
+            removeNodeToken(p, slot, path);
+            commitPlace(app, at, std::move(p));
+          }
+          ImGui::SameLine();
+          ImGui::TextUnformatted(path.c_str());
+          ImGui::PopID();
+        }
+      }
+      ImGui::TextDisabled("Drag a node from the tree onto the slot to add it as a token.");
+    }
+  }
+  report["slot"] = {{"name", name}, {"kind", net::slotKindName(kind)}, {"fields", fields}};
+}
+
+void editPlace(App& app, const ConstructAt& at, const net::PlaceSpec& place, nlohmann::json& report) {
+  const std::string construct = at.page + "/" + at.name;
+  nlohmann::json slots = nlohmann::json::object();
+  nlohmann::json grid = nlohmann::json::object();
+  if (ImGui::BeginTable("##slots", 8, ImGuiTableFlags_SizingFixedSame)) {
+    for (int i = 0; i < net::kSlotCount; ++i) {
+      ImGui::TableNextColumn();
+      const auto slot = static_cast<net::SlotId>(i);
+      const std::string name = net::slotName(slot);
+      const auto kind = slotKindOf(place, slot);
+      const std::int64_t tokens = slotCount(place.tokens, slot).value_or(0);
+      std::vector<std::string> names;
+      for (const auto& n : place.nodes) {
+        if (n.slot == slot) names = n.nodes;
+      }
+      const bool used = kind != net::SlotKind::Control || tokens > 0 || slotCount(place.capacity, slot) ||
+                        std::any_of(place.scripts.begin(), place.scripts.end(), [&](const auto& x) { return x.slot == slot; });
+      const auto count = kind == net::SlotKind::Node ? static_cast<std::int64_t>(names.size()) : tokens;
+      const std::string label = kind == net::SlotKind::Sensor ? name : name + " " + std::to_string(count);
+      const bool chosen = app.contents_slot == slot;
+      ImGui::PushStyleColor(ImGuiCol_Button, slotColour(kind, used));
+      if (chosen) ImGui::PushStyleVar(ImGuiStyleVar_FrameBorderSize, 2.0f);
+      if (ImGui::Button(label.c_str(), {56, 0})) app.contents_slot = slot;
+      if (chosen) ImGui::PopStyleVar();
+      ImGui::PopStyleColor();
+      noteItem(name, grid);
+      if (ImGui::BeginDragDropTarget()) {
+        if (const ImGuiPayload* payload = ImGui::AcceptDragDropPayload(kNodePayload)) {
+          auto p = place;
+          addNodeToken(p, slot, std::string(static_cast<const char*>(payload->Data), static_cast<std::size_t>(payload->DataSize)));
+          app.contents_slot = slot;
+          commitPlace(app, at, std::move(p));
+        }
+        ImGui::EndDragDropTarget();
+      }
+      slotMenu(app, at, place, slot, report);
+      if (used) slots[name] = {{"kind", net::slotKindName(kind)}, {"tokens", count}, {"names", names}};
+    }
+    ImGui::EndTable();
+  }
+  report["slots"] = slots;
+  report["grid"] = grid;
+  report["editable"] = true;
+  slotFields(app, at, place, app.contents_slot, report);
+
+  // the chosen slot's scripts, then every other script of the place: side by side
+  const auto kind = slotKindOf(place, app.contents_slot);
+  const auto scriptsOf = [&](net::SlotId slot) {
+    const auto it = std::find_if(place.scripts.begin(), place.scripts.end(), [&](const auto& x) { return x.slot == slot; });
+    net::SlotScripts none;
+    none.slot = slot;
+    return it == place.scripts.end() ? none : *it;
+  };
+  const auto chosen = scriptsOf(app.contents_slot);
+  for (const auto k : net::kSlotScripts) {
+    const bool sensor_only = k != net::ScriptKind::OnDeposit && k != net::ScriptKind::OnRemove;
+    if (sensor_only != (kind == net::SlotKind::Sensor)) continue;
+    const std::string heading = std::string(net::info(k).key) + " (" + net::slotName(app.contents_slot) + ")";
+    const auto slot = app.contents_slot;
+    scriptEditor(app, construct + "#" + heading, heading, net::scriptOf(chosen, k), false,
+                 [&app, at, place, slot, k](const std::string& code) {
+                   auto p = place;
+                   setSlotScript(p, slot, k, code);
+                   commitPlace(app, at, std::move(p));
+                 }, report);
+  }
+  for (const auto& s : place.scripts) {
+    if (s.slot == app.contents_slot) continue;
+    for (const auto k : net::kSlotScripts) {
+      const auto& script = net::scriptOf(s, k);
+      if (script.empty()) continue;
+      const std::string heading = std::string(net::info(k).key) + " (" + net::slotName(s.slot) + ")";
+      const auto slot = s.slot;
+      scriptEditor(app, construct + "#" + heading, heading, script, false,
+                   [&app, at, place, slot, k](const std::string& code) {
+                     auto p = place;
+                     setSlotScript(p, slot, k, code);
+                     commitPlace(app, at, std::move(p));
+                   }, report);
+    }
+  }
+}
+
+void editTransition(App& app, const ConstructAt& at, const net::TransitionSpec& t, nlohmann::json& report) {
+  const std::string construct = at.page + "/" + at.name;
+  nlohmann::json fields;
+  // the duration: a law and its parameters, committed when a field is left
+  int law = static_cast<int>(t.duration.law);
+  net::Duration d = t.duration;
+  bool changed = false;
+  ImGui::SetNextItemWidth(130);
+  if (ImGui::Combo("##law", &law, "fixed\0uniform\0normal\0exponential\0")) {
+    d.law = static_cast<net::Duration::Law>(law);
+    if (d.law == net::Duration::Law::Uniform && d.b < d.a) d.b = d.a;
+    changed = true;
+  }
+  noteItem("law", fields);
+  const bool two = d.law == net::Duration::Law::Uniform || d.law == net::Duration::Law::Normal;
+  const char* first = d.law == net::Duration::Law::Fixed ? "s" : d.law == net::Duration::Law::Uniform ? "low, s" : "mean, s";
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(90);
+  ImGui::InputDouble(first, &d.a, 0, 0, "%g");
+  noteItem("duration", fields);
+  changed = changed || ImGui::IsItemDeactivatedAfterEdit();
+  if (two) {
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(90);
+    ImGui::InputDouble(d.law == net::Duration::Law::Uniform ? "high, s" : "sd, s", &d.b, 0, 0, "%g");
+    noteItem("duration2", fields);
+    changed = changed || ImGui::IsItemDeactivatedAfterEdit();
+  }
+  int priority = static_cast<int>(t.priority);
+  ImGui::SetNextItemWidth(90);
+  ImGui::InputInt("priority", &priority, 0, 0);
+  noteItem("priority", fields);
+  const bool priority_changed = ImGui::IsItemDeactivatedAfterEdit();
+  ImGui::SameLine();
+  double probability = t.probability;
+  ImGui::SetNextItemWidth(90);
+  ImGui::InputDouble("probability", &probability, 0, 0, "%g");
+  noteItem("probability", fields);
+  const bool probability_changed = ImGui::IsItemDeactivatedAfterEdit();
+  if (changed || priority_changed || probability_changed) {
+    auto next = t;
+    next.duration = d;
+    next.priority = priority;
+    next.probability = probability;
+    commitTransition(app, at, std::move(next));
+  }
+  report["duration"] = durationText(t.duration);
+  report["fields"] = fields;
+  report["editable"] = true;
+  for (const auto k : net::kTransitionScripts) {
+    const std::string heading(net::info(k).key);
+    scriptEditor(app, construct + "#" + heading, heading, net::scriptOf(t, k), net::info(k).expression,
+                 [&app, at, t, k](const std::string& code) {
+                   auto next = t;
+                   net::scriptOf(next, k) = {};
+                   net::scriptOf(next, k).code = code;
+                   commitTransition(app, at, std::move(next));
+                 }, report);
+  }
+}
+
+/// Draws the edit-mode contents of the selected place or transition; false when the selection
+/// is not one written in the model.
+bool editContents(App& app, const Selection& sel, nlohmann::json& report) {
+  auto& net = app.document().editableNet();
+  const auto at = locateConstruct(net, sel.name);
+  if (!at) return false;
+  const net::PageSpec* page = findPage(net, at->page);
+  if (page == nullptr) return false;
+  if (sel.kind == SelectionKind::Place) {
+    const auto it = std::find_if(page->places.begin(), page->places.end(), [&](const auto& p) { return p.name == at->name; });
+    if (it == page->places.end()) return false;
+    editPlace(app, *at, net::PlaceSpec(*it), report);
+    return true;
+  }
+  const auto it = std::find_if(page->transitions.begin(), page->transitions.end(), [&](const auto& t) { return t.name == at->name; });
+  if (it == page->transitions.end()) return false;
+  editTransition(app, *at, net::TransitionSpec(*it), report);
+  return true;
+}
+
 }  // namespace
 
 void drawContents(App& app, const Selection& sel, nlohmann::json& report) {
+  report["scripts"] = nlohmann::json::array();
+  const bool construct = sel.kind == SelectionKind::Place || sel.kind == SelectionKind::Transition;
+  if (construct && app.run().mode() == RunMode::Edit && editContents(app, sel, report)) return;
   const auto* session = app.run().session();
   if (session == nullptr) return;
   const auto& net = session->simulation().net();
-  report["scripts"] = nlohmann::json::array();
   if (sel.kind == SelectionKind::Place) {
     if (const auto p = net.findPlace(sel.name); p >= 0) placeContents(*session, static_cast<net::PlaceId>(p), report);
   } else if (sel.kind == SelectionKind::Transition) {

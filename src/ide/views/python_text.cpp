@@ -98,7 +98,7 @@ std::vector<PySpan> highlightPython(std::string_view line, char& in_string) {
   return out;
 }
 
-int drawPython(std::string_view code, int first_line) {
+int drawPython(std::string_view code, int first_line, int error_line) {
   char in_string = 0;
   int n = 0;
   std::size_t start = 0;
@@ -107,7 +107,15 @@ int drawPython(std::string_view code, int first_line) {
     const auto nl = code.find('\n', start);
     const auto line = code.substr(start, nl == std::string_view::npos ? std::string_view::npos : nl - start);
     if (nl == std::string_view::npos && line.empty() && n > 0) break;  // no empty last line after a final newline
-    ImGui::TextDisabled("%4d", base + n);
+    if (n + 1 == error_line) {
+      // the line Python could not read: a red band behind it and a red number
+      const ImVec2 at = ImGui::GetCursorScreenPos();
+      ImGui::GetWindowDrawList()->AddRectFilled(at, {at.x + ImGui::GetContentRegionAvail().x, at.y + ImGui::GetTextLineHeight()},
+                                                IM_COL32(120, 30, 30, 255));
+      ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%4d", base + n);
+    } else {
+      ImGui::TextDisabled("%4d", base + n);
+    }
     float gap = 10.0f;  // between the number and the code, then none between pieces
     for (const auto& span : highlightPython(line, in_string)) {
       ImGui::SameLine(0.0f, gap);

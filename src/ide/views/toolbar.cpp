@@ -110,8 +110,7 @@ void drawToolbar(App& app, const Rect& at, nlohmann::json& report) {
       app.save_as_open = false;
       ImGui::CloseCurrentPopup();
     }
-    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
-    save_as["save"] = {std::lround((lo.x + hi.x) / 2), std::lround((lo.y + hi.y) / 2)};
+    noteItem("save", save_as);
     ImGui::EndPopup();
   } else {
     app.save_as_open = false;

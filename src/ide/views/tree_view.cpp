@@ -54,6 +54,7 @@ struct TreeState {
   std::string selected;          // the selected node's path
   nlohmann::json bold = nlohmann::json::array();
   int shown = 0;
+  nlohmann::json rows = nlohmann::json::object();  // where the first rows stand, by path
   std::optional<SceneEdit> request;  // an edit asked for in a menu, made once the tree is drawn
   nlohmann::json menu = nlohmann::json::object();  // the open menu's items, where they stand
 };
@@ -126,10 +127,21 @@ void drawNode(TreeState& st, scene::Node& node) {
   const bool open = ImGui::TreeNodeEx(path.c_str(), flags, "%s", label.c_str());
   ImGui::PopStyleColor();
   if (is_token || is_sensor) ImGui::PopFont();
+  // dragged onto a slot of the contents view, a node becomes a token there
+  if (ImGui::BeginDragDropSource()) {
+    ImGui::SetDragDropPayload(kNodePayload, path.data(), path.size());
+    ImGui::Text("%s", path.c_str());
+    ImGui::EndDragDropSource();
+  }
   if (const auto* s = st.app.shownScene()) nodeMenu(st, *s, node, path);
+  if (st.shown < 200) noteItem(path, st.rows);
   ++st.shown;
   if (path == st.selected && st.app.reveal_selection) ImGui::SetScrollHereY();
-  if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) st.app.document().select(Selection::node(path));
+  // selected when the button comes up without a drag (a drag carries the node elsewhere)
+  if (ImGui::IsItemHovered() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+      ImGui::GetMouseDragDelta(ImGuiMouseButton_Left).x == 0.0F && ImGui::GetMouseDragDelta(ImGuiMouseButton_Left).y == 0.0F) {
+    st.app.document().select(Selection::node(path));
+  }
   // a double click also frames it in the world view
   if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) st.app.frameSelection();
   if (ImGui::IsItemHovered() && !node.type().doc.empty()) ImGui::SetTooltip("%s", node.type().doc.c_str());
@@ -143,7 +155,7 @@ void drawNode(TreeState& st, scene::Node& node) {
 
 void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
   beginPanel("##tree", at, "Tree view");
-  TreeState st{app, {}, {}, nlohmann::json::array(), 0, std::nullopt, nlohmann::json::object()};
+  TreeState st{app, {}, {}, nlohmann::json::array(), 0, nlohmann::json::object(), std::nullopt, nlohmann::json::object()};
   const auto& sel = app.document().selection();
   if (sel.kind == SelectionKind::Node) st.selected = sel.name;
   auto* session = app.run().session();
@@ -222,7 +234,8 @@ void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
             {"selected", st.selected},
             {"places_shown", places},
             {"transitions_shown", transitions},
-            {"menu", st.menu}};
+            {"menu", st.menu},
+            {"rows", st.rows}};
 }
 
 }  // namespace gdpn::ide
