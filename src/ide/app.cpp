@@ -41,7 +41,8 @@ Fonts loadFonts() {
 }
 
 App::App(std::unique_ptr<Document> doc) : doc_(std::move(doc)), net_view_(std::make_unique<NetViewState>()) {
-  (void)run_.open(*doc_, run_diags_);
+  core::Diagnostics diags;
+  (void)run_.open(*doc_, diags);
   // the world view starts where the scene's first Camera looks (or a view that frames it)
   if (auto* s = doc_->scene()) {
     scene::updateTransforms(s->root());
@@ -227,11 +228,9 @@ void App::drawRestoreOffer(nlohmann::json& report) {
 void App::reset() {
   core::Diagnostics diags;
   if (!run_.reset(diags)) {
-    run_diags_ = std::move(diags);
     message = "the edited model does not compile: see Diagnostics";
     return;
   }
-  run_diags_ = {};
   message = "reset";
 }
 
@@ -241,7 +240,7 @@ void App::checkReload() {
   if (!doc_->changedOnDisk()) {
     if (doc_->scriptsChanged()) {
       reset();
-      if (run_diags_.all().empty()) message = "a script changed: the run was reset with it";
+      if (run_.buildDiagnostics().all().empty()) message = "a script changed: the run was reset with it";
     }
     return;
   }
@@ -482,6 +481,13 @@ void endPanel() { ImGui::EndChild(); }
 void noteItem(const std::string& label, nlohmann::json& positions) {
   const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
   positions[label] = {std::lround((lo.x + hi.x) / 2), std::lround((lo.y + hi.y) / 2)};
+}
+
+bool beginMenu(const char* label, nlohmann::json& positions) {
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  const float w = ImGui::GetContentRegionAvail().x, h = ImGui::GetTextLineHeight();
+  positions[label] = {std::lround(at.x + w / 2), std::lround(at.y + h / 2)};
+  return ImGui::BeginMenu(label);
 }
 
 bool menuItem(const char* label, nlohmann::json& positions) {

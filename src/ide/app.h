@@ -118,7 +118,7 @@ class App {
   /// The net view's page, layout and viewport (views/net_view.cpp).
   [[nodiscard]] NetViewState& netView() { return *net_view_; }
   /// The compile errors of the run, if it failed to build.
-  [[nodiscard]] const core::Diagnostics& runDiagnostics() const { return run_diags_; }
+  [[nodiscard]] const core::Diagnostics& runDiagnostics() const { return run_.buildDiagnostics(); }
 
   Fonts fonts;                      ///< the fonts
   OrbitCamera orbit;                ///< the world view's camera
@@ -177,7 +177,6 @@ class App {
   std::unique_ptr<Document> doc_;
   std::unique_ptr<NetViewState> net_view_;
   RunControl run_;
-  core::Diagnostics run_diags_;
   Splitters splitters_;
   nlohmann::json report_;
   std::uint64_t frames_ = 0;  // frames drawn

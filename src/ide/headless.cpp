@@ -77,9 +77,37 @@ class Driver {
   bool down_[3] = {false, false, false};
 };
 
+/// Where the last frame's report placed the item the keys `keys` lead to; false with `error`.
+bool placed(const App& app, const std::vector<std::string>& keys, double& x, double& y, std::string& error) {
+  const nlohmann::json* at = &app.report();
+  std::string path;
+  for (const auto& k : keys) {
+    path += (path.empty() ? "" : ", ") + k;
+    if (!at->is_object() || !at->contains(k)) {
+      error = "the last frame showed no [" + path + "]";
+      return false;
+    }
+    at = &(*at)[k];
+  }
+  if (!at->is_array() || at->size() != 2 || !(*at)[0].is_number() || !(*at)[1].is_number()) {
+    error = "[" + path + "] is not where an item stands";
+    return false;
+  }
+  x = (*at)[0].get<double>();
+  y = (*at)[1].get<double>();
+  return true;
+}
+
 /// Performs `a`; false after printing a located error.
-bool perform(App& app, Driver& d, const Action& a, const IdeOptions& o, int w, int h) {
+bool perform(App& app, Driver& d, const Action& given, const IdeOptions& o, int w, int h) {
   std::string error;
+  Action a = given;
+  // an item named by the report is looked up after a frame that shows what the last action did
+  if (!a.on.empty()) d.frame();
+  if ((!a.on.empty() && !placed(app, a.on, a.x, a.y, error)) || (!a.on2.empty() && !placed(app, a.on2, a.x2, a.y2, error))) {
+    std::cerr << a.loc.str() << ": error: " << error << "\n";
+    return false;
+  }
   switch (a.kind) {
     case ActionKind::Key: {
       const int code = keyCode(a.text);
@@ -97,8 +125,8 @@ bool perform(App& app, Driver& d, const Action& a, const IdeOptions& o, int w, i
       break;
     case ActionKind::Click:
       d.move(a.x, a.y);
-      d.button(0, true);
-      d.button(0, false);
+      d.button(a.button, true);
+      d.button(a.button, false);
       break;
     case ActionKind::Drag: {
       d.move(a.x, a.y);

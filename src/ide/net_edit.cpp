@@ -375,6 +375,20 @@ NetEdit makeNetEdit(NetEditKind kind, std::string page, std::string name, std::s
   return e;
 }
 
+std::string SetGlobalsCommand::apply(Document& doc) {
+  net::ScriptSpec& globals = doc.editableNet().globals;
+  before_ = globals;
+  globals = {};
+  globals.code = code_;
+  doc.touched();
+  return {};
+}
+
+void SetGlobalsCommand::revert(Document& doc) {
+  doc.editableNet().globals = before_;
+  doc.touched();
+}
+
 NetEditCommand::NetEditCommand(NetEdit edit) : edit_(std::move(edit)) {}
 
 std::string NetEditCommand::apply(Document& doc) {

@@ -58,7 +58,11 @@ class ActionReader {
     if (key == "frames") return number(v, a, ActionKind::Frames, true);
     if (key == "click") {
       a.kind = ActionKind::Click;
-      return point(v, a.x, a.y);
+      if (v.IsMap()) {
+        if (!v["at"]) return fail(v, "expects {at: [X, Y] or [VIEW, KEY, ...], button: left|right|middle}");
+        return target(v["at"], a.x, a.y, a.on) && button(v, a);
+      }
+      return target(v, a.x, a.y, a.on);
     }
     if (key == "drag") return drag(v, a);
     if (key == "wheel") return wheel(v, a);
@@ -97,10 +101,29 @@ class ActionReader {
     }
     return true;
   }
+  /// A point [X, Y] in window pixels, or where the last frame's report says an item stands:
+  /// the keys that lead to it ([tree, rows, belt]).
+  bool target(const YAML::Node& v, double& x, double& y, std::vector<std::string>& keys) {
+    if (v.IsSequence() && v.size() >= 2 && v[0].IsScalar() && !YAML::convert<double>::decode(v[0], x)) {
+      for (const auto& k : v) {
+        if (!k.IsScalar()) return fail(k, "an item is named by the report's keys that lead to it");
+        keys.push_back(k.Scalar());
+      }
+      return true;
+    }
+    if (!v.IsSequence() || v.size() != 2 || !YAML::convert<double>::decode(v[0], x) ||
+        !YAML::convert<double>::decode(v[1], y)) {
+      return fail(v, "expects a point [X, Y] in window pixels, or an item as the report's keys [VIEW, KEY, ...]");
+    }
+    return true;
+  }
   bool drag(const YAML::Node& v, Action& a) {
     a.kind = ActionKind::Drag;
     if (!v.IsMap() || !v["from"] || !v["to"]) return fail(v, "expects {from: [X, Y], to: [X, Y]}");
-    if (!point(v["from"], a.x, a.y) || !point(v["to"], a.x2, a.y2)) return false;
+    if (!target(v["from"], a.x, a.y, a.on) || !target(v["to"], a.x2, a.y2, a.on2)) return false;
+    return button(v, a);
+  }
+  bool button(const YAML::Node& v, Action& a) {
     if (const auto b = v["button"]) {
       const auto name = b.IsScalar() ? b.Scalar() : std::string();
       if (name == "left") a.button = 0;

@@ -33,11 +33,24 @@ bool RunControl::open(Document& doc, core::Diagnostics& diags) {
   revision_ = doc.revision();
   mode_ = RunMode::Edit;
   session_ = session::Session::create(doc.snapshot(), diags);
+  diags_ = diags;
+  return session_ != nullptr;
+}
+
+bool RunControl::prepare() {
+  if (doc_ == nullptr) return false;
+  if (mode_ == RunMode::Edit && (!session_ || doc_->revision() != revision_)) {
+    core::Diagnostics diags;
+    if (!reset(diags)) {
+      message_ = "the edited model does not compile: see Diagnostics";
+      return false;
+    }
+  }
   return session_ != nullptr;
 }
 
 void RunControl::run(RunSpeed speed) {
-  if (!session_) return;
+  if (!prepare()) return;
   speed_ = speed;
   mode_ = RunMode::Running;
   owed_ = 0.0;
@@ -72,20 +85,20 @@ void RunControl::takeSteps(std::int64_t n) {
 void RunControl::step() { runSteps(1); }
 
 void RunControl::runSteps(std::int64_t n) {
-  if (!session_) return;
+  if (!prepare()) return;
   mode_ = RunMode::Paused;
   message_.clear();
   takeSteps(n);
 }
 
 void RunControl::runFor(double seconds) {
-  if (!session_) return;
+  if (!prepare()) return;
   const double dt = session_->model().settings.dt;
   runSteps(static_cast<std::int64_t>(std::llround(seconds / dt)));
 }
 
 std::string RunControl::fire(const std::string& name) {
-  if (!session_) return message_ = "the model does not compile";
+  if (!prepare()) return message_ = "the model does not compile";
   auto why = session_->fire(name);
   message_ = why.empty() ? "fired " + name : "cannot fire " + name + ": " + why;
   if (mode_ == RunMode::Edit) mode_ = RunMode::Paused;
@@ -99,13 +112,16 @@ bool RunControl::reset(core::Diagnostics& diags) {
   owed_ = 0.0;
   message_.clear();
   if (!session_) return open(*doc_, diags);
-  // the document changed since the run was made: the run takes the edited model
+  bool ok = false;
   if (doc_->revision() != revision_) {
-    if (!session_->rebuild(doc_->snapshot(), diags)) return false;
-    revision_ = doc_->revision();
-    return true;
+    // the document changed since the run was made: the run takes the edited model
+    ok = session_->rebuild(doc_->snapshot(), diags);
+    if (ok) revision_ = doc_->revision();
+  } else {
+    ok = session_->reset(diags);
   }
-  return session_->reset(diags);
+  diags_ = diags;
+  return ok;
 }
 
 void RunControl::advance(double wall_seconds) {

@@ -70,10 +70,12 @@ std::string SceneEditCommand::apply(Document& doc) {
         name = edited->freshName(*node, base);
       }
       if (auto why = nameProblem(name); !why.empty()) return why;
-      if (edited->create(*type, name, *node) == nullptr) {
+      const scene::Node* made = edited->create(*type, name, *node);
+      if (made == nullptr) {
         return node->child(name) != nullptr ? "'" + edit_.path + "' has a child '" + name + "' already"
                                             : "a " + node->type().name + " holds no other nodes";
       }
+      made_ = made->path();
       break;
     }
     case SceneEditKind::Delete: {
@@ -103,6 +105,7 @@ std::string SceneEditCommand::apply(Document& doc) {
       const std::string parent = node->parent() == &edited->root() ? std::string() : node->parent()->path();
       const std::string renamed = parent.empty() ? edit_.name : parent + "/" + edit_.name;
       if (!edited->rename(*node, edit_.name)) return "'" + edit_.name + "' is taken beside it";
+      made_ = renamed;
       // the marking follows the nodes
       eachPath(net, [&](auto&, auto&, const std::string&, std::string& p) {
         if (!within(p, edit_.path)) return;
@@ -114,7 +117,9 @@ std::string SceneEditCommand::apply(Document& doc) {
     case SceneEditKind::Duplicate: {
       if (root) return "the scene's root cannot be copied beside itself";
       scene::Node& parent = *node->parent();
-      if (edited->copy(*node, parent, edited->freshName(parent, node->name())) == nullptr) return "it cannot be copied";
+      const scene::Node* copy = edited->copy(*node, parent, edited->freshName(parent, node->name()));
+      if (copy == nullptr) return "it cannot be copied";
+      made_ = copy->path();
       break;
     }
   }

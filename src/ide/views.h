@@ -25,6 +25,9 @@ void drawNetView(App& app, const Rect& at, nlohmann::json& report);
 /// The selected place's 8 x 4 slot grid (kinds, tokens, names) or transition's duration, and
 /// the construct's scripts, highlighted; read-only. Drawn inside the inspector.
 void drawContents(App& app, const Selection& sel, nlohmann::json& report);
+/// What the inspector shows when nothing is selected: the model's globals script, editable in
+/// edit mode.
+void drawModelContents(App& app, nlohmann::json& report);
 /// The mini view: the net view's page, fitted, in a small movable window over the world view
 /// (`world`), when App::show_mini; a click selects as in the net view.
 void drawMiniView(App& app, const Rect& world, nlohmann::json& report);
@@ -47,6 +50,10 @@ void endPanel();
 /// Notes the centre of the last item drawn, in window pixels, in `positions` under `label` (so
 /// that replay files and tests can click it).
 void noteItem(const std::string& label, nlohmann::json& positions);
+
+/// ImGui::BeginMenu(`label`), its centre noted in `positions` as noteItem() does (taken
+/// before the submenu opens: after, the last item is the submenu's).
+bool beginMenu(const char* label, nlohmann::json& positions);
 
 /// A menu item `label`; its centre, in window pixels, goes into `positions` under its label (so
 /// that replay files and tests can click it). True when chosen.

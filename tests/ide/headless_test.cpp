@@ -475,6 +475,27 @@ TEST_F(HeadlessIde, ATransitionsDurationPriorityAndProbabilityAreSetInTheContent
   EXPECT_EQ(r["message"], "a probability lies in (0, 1]");
 }
 
+TEST_F(HeadlessIde, TheTutorialBuildsFromAnEmptyFileAModelWhoseRunPushesTheBoxOff) {
+  // examples/tutorial/build.yaml: the scene, the net and its scripts through the IDE alone
+  const auto model = (dir_ / "pusher.gdpn.yaml").string();
+  const auto built = runShell(env() + " \"$GDPN\" ide '" + model +
+                              "' --headless --size 1600x1000 --replay examples/tutorial/build.yaml --report '" +
+                              (dir_ / "report.json").string() + "'");
+  ASSERT_EQ(built.code, 0) << built.out;
+  std::ifstream in(dir_ / "report.json");
+  const auto r = nlohmann::json::parse(in, nullptr, false);
+  EXPECT_EQ(r["message"], "saved " + model);
+  EXPECT_EQ(r["run"]["time"], 6.0);
+  // the saved model, run headless: the eye stopped the belt, the slider pushed the box off
+  const auto run = gdpn::testing::runGdpn("run '" + model + "' --until 8");
+  ASSERT_EQ(run.code, 0) << run.out;
+  EXPECT_NE(run.out.find("main/stop                1"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("main/push                1"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("main/pushed          0.202               1              1"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("box: at (0.56, 0.67, 0.16) m, off the belt"), std::string::npos) << run.out;
+  EXPECT_EQ(gdpn::testing::runGdpn("check '" + model + "'").code, 0);
+}
+
 TEST_F(HeadlessIde, AKeyboardSensorHearsTheWorldViewsKeysWhileTheViewerIsInside) {
   // tests/data/input/console.gdpn.yaml with a camera inside the booth: 'go' waits for the g key
   std::ifstream source(std::string(GDPN_SOURCE_DIR) + "/tests/data/input/console.gdpn.yaml");

@@ -71,6 +71,21 @@ class NetEditCommand final : public Command {
   bool type_ = false;                    // the page is a page type
 };
 
+/// Sets the model's globals script (run once at load; every script sees its names) to inline
+/// `code` ("" removes it).
+class SetGlobalsCommand final : public Command {
+ public:
+  explicit SetGlobalsCommand(std::string code) : code_(std::move(code)) {}
+  std::string apply(Document& doc) override;
+  void revert(Document& doc) override;
+  [[nodiscard]] std::string label() const override { return "edit the model's globals"; }
+  void absorb(const Command&) override {}
+
+ private:
+  std::string code_;
+  net::ScriptSpec before_;
+};
+
 /// The page or page type `name` of `net`; null when there is none.
 net::PageSpec* findPage(net::NetSpec& net, const std::string& name, bool* is_type = nullptr);
 

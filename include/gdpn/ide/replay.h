@@ -24,8 +24,10 @@ enum class ActionKind : std::uint8_t {
   Key,         ///< `key: NAME` typed in the world view (pressed, then released); `hold: NAME`
                ///< presses it and keeps it down, `release: NAME` lets it go (field: hold, release)
   Type,        ///< `type: TEXT`: the characters typed into the field that has the keyboard
-  Click,       ///< `click: [X, Y]` window pixels, left button
+  Click,       ///< `click: [X, Y]` window pixels, left button; `click: {at: [X, Y], button: right}`
   Drag,        ///< `drag: {from: [X, Y], to: [X, Y], button: left|right|middle}`
+               ///< (a point of Click and Drag may also be an item the last frame's report placed,
+               ///< named by the keys that lead to it: `click: [tree, rows, belt]`)
   Wheel,       ///< `wheel: {at: [X, Y], clicks: N}`: the mouse wheel turned N clicks (negative: back) there
   Set,         ///< `set: {node: PATH, field: NAME, value: V}` through the inspector's command
   View,        ///< `view: front|back|left|right|top|iso|frame` or a Camera node's path
@@ -43,7 +45,9 @@ struct Action {
   double number = 0;           ///< RunFor: seconds; Steps, Frames: the count; Break: at_least; Wheel: clicks
   double x = 0, y = 0;         ///< Click, Drag, Wheel: the point (Drag: where it starts), pixels
   double x2 = 0, y2 = 0;       ///< Drag: where it ends, pixels
-  int button = 0;              ///< Drag: 0 left, 1 right, 2 middle
+  int button = 0;              ///< Click, Drag: 0 left, 1 right, 2 middle
+  std::vector<std::string> on;   ///< Click, Drag: the report's keys to the item at (x, y), when named so
+  std::vector<std::string> on2;  ///< Drag: the report's keys to the item at (x2, y2), when named so
   core::SourceLoc loc;         ///< where it was written
 };
 

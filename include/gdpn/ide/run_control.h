@@ -43,7 +43,9 @@ class RunControl {
   /// model does not compile; the controls then do nothing until a later rebuild() works.
   bool open(Document& doc, core::Diagnostics& diags);
 
-  /// Starts running at `speed` (advance() takes the steps).
+  /// Starts running at `speed` (advance() takes the steps). In edit mode, a document edited since
+  /// the run was made is compiled first (as by reset()); this and the controls below do nothing
+  /// when it does not compile (buildDiagnostics() says why).
   void run(RunSpeed speed);
   /// Stops running.
   void pause();
@@ -78,6 +80,9 @@ class RunControl {
   /// Delivers a live input event (a key or a click of the world view) to the sensors.
   void push(sensors::InputEvent event);
 
+  /// The problems found when the run was last made from the document (empty when it compiled).
+  [[nodiscard]] const core::Diagnostics& buildDiagnostics() const { return diags_; }
+
   /// The session (null when the model never compiled).
   [[nodiscard]] session::Session* session() const { return session_.get(); }
   /// Edit, running or paused.
@@ -97,6 +102,8 @@ class RunControl {
 
  private:
   void takeSteps(std::int64_t n);  // n steps (or plant steps), stopping on a halt
+  bool prepare();  // in edit mode, the run made again from an edited document; false when it fails
+  core::Diagnostics diags_;  // what the last build of the run found
   Document* doc_ = nullptr;
   std::unique_ptr<session::Session> session_;
   std::uint64_t revision_ = 0;  // the document's revision the session was made from

@@ -47,9 +47,12 @@ class SceneEditCommand final : public Command {
   void revert(Document& doc) override;
   [[nodiscard]] std::string label() const override;
   void absorb(const Command&) override {}
+  /// After apply(): the path of the node added, copied or renamed ("" for a delete).
+  [[nodiscard]] const std::string& made() const { return made_; }
 
  private:
   SceneEdit edit_;
+  std::string made_;
   std::shared_ptr<scene::Scene> before_;   // the scene as it was (null: the model had none)
   std::optional<net::NetSpec> net_before_;  // the net as it was, when the edit changed it
 };

@@ -245,9 +245,7 @@ void slotMenu(App& app, const ConstructAt& at, const net::PlaceSpec& place, net:
     setSlotKind(p, slot, net::SlotKind::Node);
     commitPlace(app, at, std::move(p));
   }
-  const bool open = ImGui::BeginMenu("Sensor slot");
-  noteItem("Sensor slot", menu);
-  if (open) {
+  if (beginMenu("Sensor slot", menu)) {
     std::vector<std::string> sensors;
     if (const auto* s = app.document().scene()) sensorPaths(s->root(), sensors);
     if (sensors.empty()) ImGui::TextDisabled("The scene has no sensor node");
@@ -277,7 +275,7 @@ void slotFields(App& app, const ConstructAt& at, const net::PlaceSpec& place, ne
     if (kind == net::SlotKind::Control) {
       int tokens = static_cast<int>(slotCount(place.tokens, slot).value_or(0));
       ImGui::SetNextItemWidth(110);
-      ImGui::InputInt("tokens", &tokens);
+      ImGui::InputInt("tokens", &tokens, 0, 0);
       noteItem("tokens", fields);
       if (ImGui::IsItemDeactivatedAfterEdit() && tokens >= 0) {
         auto p = place;
@@ -288,7 +286,7 @@ void slotFields(App& app, const ConstructAt& at, const net::PlaceSpec& place, ne
     }
     int capacity = static_cast<int>(slotCount(place.capacity, slot).value_or(-1));
     ImGui::SetNextItemWidth(110);
-    ImGui::InputInt("capacity (-1: none)", &capacity);
+    ImGui::InputInt("capacity (-1: none)", &capacity, 0, 0);
     noteItem("capacity", fields);
     if (ImGui::IsItemDeactivatedAfterEdit() && capacity >= -1) {
       auto p = place;
@@ -481,6 +479,23 @@ bool editContents(App& app, const Selection& sel, nlohmann::json& report) {
 }
 
 }  // namespace
+
+void drawModelContents(App& app, nlohmann::json& report) {
+  report["scripts"] = nlohmann::json::array();
+  ImGui::Spacing();
+  ImGui::TextUnformatted("The model's globals: run once at the start; every script sees their names, and a");
+  ImGui::TextUnformatted("function summary() returning a dict adds the model's own figures to a run's summary.");
+  const auto& globals = app.document().model().net.globals;
+  if (app.run().mode() != RunMode::Edit) {
+    scriptBlock(globals, "globals", report);
+    return;
+  }
+  scriptEditor(app, "#globals", "globals", globals, false,
+               [&app](const std::string& code) {
+                 const auto why = app.document().execute(std::make_unique<SetGlobalsCommand>(code));
+                 if (!why.empty()) app.message = why;
+               }, report);
+}
 
 void drawContents(App& app, const Selection& sel, nlohmann::json& report) {
   report["scripts"] = nlohmann::json::array();

@@ -193,12 +193,20 @@ void breakpointBox(App& app, const char* label, session::Breakpoint bp, nlohmann
   if (on) report["breakpoints"].push_back(description);
 }
 
+void runState(App& app, const session::Session& session, const Selection& sel, nlohmann::json& report);
+
 void netInspector(App& app, const Selection& sel, nlohmann::json& report) {
   auto* session = app.run().session();
   report["name"] = sel.name;
   ImGui::Text("%s  %s", selectionKindName(sel.kind), sel.name.c_str());
-  if (session == nullptr) return;
-  const auto& sim = session->simulation();
+  if (session != nullptr) runState(app, *session, sel, report);
+  drawContents(app, sel, report["contents"]);
+}
+
+/// What the run says of the selected place or transition, and its breakpoints; nothing for one
+/// the run does not have yet (added since it was made).
+void runState(App& app, const session::Session& session, const Selection& sel, nlohmann::json& report) {
+  const auto& sim = session.simulation();
   if (sel.kind == SelectionKind::Place) {
     const auto p = sim.net().findPlace(sel.name);
     if (p < 0) return;
@@ -226,7 +234,6 @@ void netInspector(App& app, const Selection& sel, nlohmann::json& report) {
     ImGui::SameLine();
     breakpointBox(app, "break when it completes", session::Breakpoint::completes(sel.name), report);
   }
-  drawContents(app, sel, report["contents"]);
 }
 
 }  // namespace
@@ -236,7 +243,10 @@ void drawInspector(App& app, const Rect& at, nlohmann::json& report) {
   const auto sel = app.document().selection();
   report = {{"kind", selectionKindName(sel.kind)}, {"error", app.inspector_error}};
   switch (sel.kind) {
-    case SelectionKind::None: ImGui::TextDisabled("Select a node in the tree or the world view."); break;
+    case SelectionKind::None:
+      ImGui::TextDisabled("Select a node in the tree or the world view, or a place or transition in the net view.");
+      drawModelContents(app, report["contents"]);
+      break;
     case SelectionKind::Node: nodeInspector(app, sel.name, report); break;
     case SelectionKind::Place:
     case SelectionKind::Transition:

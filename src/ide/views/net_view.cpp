@@ -369,16 +369,31 @@ bool editGestures(App& app, NetViewState& s, const Region& r, const diagram::Vie
   const auto item = [&](const char* label) { return menuItem(label, items); };
   if (ImGui::BeginPopup("##net_menu")) {
     if (!s.menu_item) {
-      if (item("Place here")) (void)perform(app, makeNetEdit(NetEditKind::AddPlace, editedPage(s), freshName(s, 'P'), {}, editorAt(s.menu_at)));
-      if (item("Transition here")) {
-        (void)perform(app, makeNetEdit(NetEditKind::AddTransition, editedPage(s), freshName(s, 'T'), {}, editorAt(s.menu_at)));
-      }
+      // the new place or transition is selected: the contents view shows it
+      const std::string& prefix = s.view.prefix.empty() ? s.layout.page : s.view.prefix;
+      const auto add = [&](NetEditKind kind, char letter, SelectionKind selected) {
+        const auto name = freshName(s, letter);
+        if (perform(app, makeNetEdit(kind, editedPage(s), name, {}, editorAt(s.menu_at))).empty()) {
+          app.document().select({selected, prefix + "/" + name});
+        }
+      };
+      if (item("Place here")) add(NetEditKind::AddPlace, 'P', SelectionKind::Place);
+      if (item("Transition here")) add(NetEditKind::AddTransition, 'T', SelectionKind::Transition);
     } else if (s.menu_item->kind != diagram::ItemKind::Instance) {
       const std::string name = localName(s, *s.menu_item);
       ImGui::TextDisabled("%s %s", s.menu_item->kind == diagram::ItemKind::Place ? "place" : "transition", name.c_str());
       ImGui::SetNextItemWidth(140);
-      if (ImGui::InputText("name", &s.rename, ImGuiInputTextFlags_EnterReturnsTrue) && s.rename != name) {
-        if (perform(app, makeNetEdit(NetEditKind::Rename, editedPage(s), name, s.rename)).empty()) ImGui::CloseCurrentPopup();
+      // the name field takes the keyboard with its text selected: typing replaces it
+      if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+      if (ImGui::InputText("name", &s.rename, ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll) &&
+          s.rename != name) {
+        if (perform(app, makeNetEdit(NetEditKind::Rename, editedPage(s), name, s.rename)).empty()) {
+          // the selection follows the new name
+          const std::string& prefix = s.view.prefix.empty() ? s.layout.page : s.view.prefix;
+          const bool place = s.menu_item->kind == diagram::ItemKind::Place;
+          app.document().select({place ? SelectionKind::Place : SelectionKind::Transition, prefix + "/" + s.rename});
+          ImGui::CloseCurrentPopup();
+        }
       }
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("A new name, then Enter");
       if (item("Delete")) (void)perform(app, makeNetEdit(NetEditKind::Delete, editedPage(s), name));

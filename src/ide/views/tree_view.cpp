@@ -57,14 +57,12 @@ struct TreeState {
   nlohmann::json rows = nlohmann::json::object();  // where the first rows stand, by path
   std::optional<SceneEdit> request;  // an edit asked for in a menu, made once the tree is drawn
   nlohmann::json menu = nlohmann::json::object();  // the open menu's items, where they stand
+  nlohmann::json menu_at = nlohmann::json::object();  // the Scene header, where it stands
 };
 
 /// The menu "Add": a node of any type under `parent` ("" the root).
 void addMenu(TreeState& st, const scene::Scene& s, const std::string& parent) {
-  const bool open = ImGui::BeginMenu("Add");
-  const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
-  st.menu["Add"] = {std::lround((lo.x + hi.x) / 2), std::lround((lo.y + hi.y) / 2)};
-  if (!open) return;
+  if (!beginMenu("Add", st.menu)) return;
   for (const scene::NodeType* type : s.types().all()) {
     ImGui::PushStyleColor(ImGuiCol_Text, colourOf(type->kind));
     if (menuItem(type->name.c_str(), st.menu)) st.request = SceneEdit{SceneEditKind::Add, parent, type->name, {}, false};
@@ -82,10 +80,15 @@ void nodeMenu(TreeState& st, const scene::Scene& s, const scene::Node& node, con
   if (app.run().mode() != RunMode::Edit) {
     ImGui::TextDisabled("The run's plant: Reset to edit the model");
   } else {
-    if (ImGui::IsWindowAppearing()) app.tree_rename = node.name();
     ImGui::TextDisabled("%s %s", node.type().name.c_str(), path.c_str());
     ImGui::SetNextItemWidth(160);
-    if (ImGui::InputText("name", &app.tree_rename, ImGuiInputTextFlags_EnterReturnsTrue) && app.tree_rename != node.name()) {
+    // the name field takes the keyboard with its text selected: typing replaces it
+    if (ImGui::IsWindowAppearing()) {
+      app.tree_rename = node.name();
+      ImGui::SetKeyboardFocusHere();
+    }
+    if (ImGui::InputText("name", &app.tree_rename, ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll) &&
+        app.tree_rename != node.name()) {
       st.request = SceneEdit{SceneEditKind::Rename, path, {}, app.tree_rename, false};
       ImGui::CloseCurrentPopup();
     }
@@ -155,7 +158,8 @@ void drawNode(TreeState& st, scene::Node& node) {
 
 void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
   beginPanel("##tree", at, "Tree view");
-  TreeState st{app, {}, {}, nlohmann::json::array(), 0, nlohmann::json::object(), std::nullopt, nlohmann::json::object()};
+  TreeState st{app, {}, {}, nlohmann::json::array(), 0, nlohmann::json::object(), std::nullopt, nlohmann::json::object(),
+               nlohmann::json::object()};
   const auto& sel = app.document().selection();
   if (sel.kind == SelectionKind::Node) st.selected = sel.name;
   auto* session = app.run().session();
@@ -170,6 +174,7 @@ void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
     ImGui::TextDisabled("(the model has no scene)");
   } else {
     const bool open = ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen);
+    noteItem("header", st.menu_at);
     if (app.run().mode() == RunMode::Edit && ImGui::BeginPopupContextItem("##scene_menu")) {
       addMenu(st, *s, "");
       ImGui::EndPopup();
@@ -225,9 +230,17 @@ void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
   app.reveal_selection = false;
   // the edit a menu asked for, now that nothing iterates the tree
   if (st.request) {
-    const auto why = app.document().execute(std::make_unique<SceneEditCommand>(*st.request));
+    auto command = std::make_unique<SceneEditCommand>(*st.request);
+    const auto* edit = command.get();  // kept on the undo stack when it succeeds
+    const auto why = app.document().execute(std::move(command));
+    const std::string made = why.empty() ? edit->made() : std::string();
     app.message = why;
     if (why.empty() && st.request->kind == SceneEditKind::Delete) app.document().select({});
+    // the node added, copied or renamed is selected, and the tree opens to it
+    if (why.empty() && !made.empty()) {
+      app.document().select(Selection::node(made));
+      app.reveal_selection = true;
+    }
   }
   report = {{"nodes_shown", st.shown},
             {"bold", st.bold},
@@ -235,7 +248,8 @@ void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
             {"places_shown", places},
             {"transitions_shown", transitions},
             {"menu", st.menu},
-            {"rows", st.rows}};
+            {"rows", st.rows},
+            {"scene", st.menu_at["header"]}};
 }
 
 }  // namespace gdpn::ide
