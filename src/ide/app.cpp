@@ -272,6 +272,11 @@ bool App::perform(const Action& a, std::string& error) {
       else if (a.text == "contacts") show_contacts = !show_contacts;
       else if (a.text == "shadows") show_shadows = !show_shadows;
       else if (a.text == "grid") show_grid = !show_grid;
+      else if (a.text == "select-tool") tool = Tool::Select;
+      else if (a.text == "move-tool") tool = Tool::Move;
+      else if (a.text == "turn-tool") tool = Tool::Turn;
+      else if (a.text == "snap") snap = !snap;
+      else if (a.text == "local-axes") local_axes = !local_axes;
       else if (a.text == "movie") toggleMovie();
       else if (a.text == "undo") undo();
       else if (a.text == "redo") redo();

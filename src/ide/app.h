@@ -15,6 +15,7 @@
 
 #include "gdpn/ide/document.h"
 #include "gdpn/ide/layout.h"
+#include "gdpn/ide/manipulator.h"
 #include "gdpn/ide/orbit.h"
 #include "gdpn/ide/replay.h"
 #include "gdpn/ide/run_control.h"
@@ -56,6 +57,25 @@ struct ScriptEditing {
   std::string buffer;  ///< its text as typed
   bool focus = false;  ///< the field takes the keyboard in the next frame
   std::map<std::string, script::SyntaxProblem> problems;  ///< by key
+};
+
+/// What a left drag over the selected node does in the world view (edit mode).
+enum class Tool : std::uint8_t {
+  Select,  ///< nothing: the drag turns the view
+  Move,    ///< handles along three axes move a Transform
+  Turn,    ///< rings about three axes turn a Transform
+};
+
+/// A manipulator drag under way.
+struct ManipulatorDrag {
+  Handle handle = Handle::None;  ///< what is dragged (None: no drag)
+  std::string path;              ///< the node
+  std::string field;             ///< the field it edits
+  core::Vec3 origin, axis, reference;  ///< the handle's point and axis (world), angles' zero
+  core::Vec3 parent_axis;        ///< the axis in the node's parent's frame (moves, turns)
+  double start = 0;              ///< where the drag began: along the axis (m) or the angle (deg)
+  scene::FieldValue value;       ///< the field's value when the drag began
+  std::uint64_t id = 0;          ///< its merge key: the drag is one step
 };
 
 /// Fonts the views use (null: ImGui's default).
@@ -129,6 +149,12 @@ class App {
   bool show_shadows = true;         ///< the world view's main light casts shadows
   bool show_grid = true;            ///< the world view draws the ground grid
   bool show_mini = false;           ///< the mini view (the net over the world view) is open
+  Tool tool = Tool::Move;           ///< the world view's manipulator
+  bool snap = true;                 ///< manipulators move and turn in steps
+  double move_step = 0.05;          ///< a step of a move, m
+  double turn_step = 5.0;           ///< a step of a turn, degrees
+  bool local_axes = false;          ///< the move and turn handles follow the node's own axes
+  ManipulatorDrag manipulating;     ///< the manipulator drag under way
   std::string fire_target;          ///< the toolbar's chosen transition
   int run_n = 100;                  ///< the toolbar's N for Run N steps
   int break_tokens = 1;             ///< the inspector's token count for a place's breakpoint

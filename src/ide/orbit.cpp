@@ -97,6 +97,19 @@ void OrbitCamera::look(StandardView view) {
   }
 }
 
+std::optional<std::array<double, 2>> OrbitCamera::project(const core::Vec3& p, double width, double height) const {
+  const auto forward = backward(yaw, pitch) * -1.0;
+  const auto right = forward.cross(core::Vec3{0, 0, 1}).normalized();
+  const auto up = right.cross(forward).normalized();
+  const auto d = p - eye();
+  const double depth = d.dot(forward);
+  if (depth <= 1e-9) return std::nullopt;
+  const double half_h = std::tan(fov * kRad / 2);
+  const double half_w = half_h * width / std::max(height, 1.0);
+  const double u = d.dot(right) / depth / half_w, v = d.dot(up) / depth / half_h;
+  return std::array<double, 2>{(u + 1.0) / 2.0 * width, (1.0 - v) / 2.0 * height};
+}
+
 core::Ray OrbitCamera::ray(double x, double y, double width, double height) const {
   const auto back = backward(yaw, pitch);
   const auto forward = back * -1.0;

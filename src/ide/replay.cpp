@@ -45,7 +45,8 @@ class ActionReader {
       static constexpr const char* kControls[] = {"run",    "faster",  "fastest",  "pause",   "step",    "reset",
                                                   "plant-only", "mini-view", "sensors", "joints", "contacts",
                                                   "shadows", "grid",    "movie",    "undo",    "redo",    "save",
-                                                  "restore", "discard"};
+                                                  "restore", "discard", "select-tool", "move-tool",
+                                                  "turn-tool", "snap", "local-axes"};
       std::string known;
       for (const char* c : kControls) {
         if (a.text == c) return true;

@@ -2,6 +2,7 @@
 // The views, each a function of the App (the document and the run) that draws into the
 // rectangle it is given, pushes commands, and writes what it showed into `report`.
 
+#include <imgui.h>
 #include <nlohmann/json.hpp>
 
 #include "app.h"
@@ -28,6 +29,11 @@ void drawContents(App& app, const Selection& sel, nlohmann::json& report);
 /// What the inspector shows when nothing is selected: the model's globals script, editable in
 /// edit mode.
 void drawModelContents(App& app, nlohmann::json& report);
+/// The manipulators of the selected node over the world view's picture (at `at`, `w` x `h`
+/// pixels, seen by `view`), in edit mode; a press on a handle (the world view's button was just
+/// pressed) starts a drag that edits the node's field. True while a drag takes the mouse.
+bool drawManipulators(App& app, scene::Scene& scene, const OrbitCamera& view, ImVec2 at, float w, float h,
+                      nlohmann::json& report);
 /// The mini view: the net view's page, fitted, in a small movable window over the world view
 /// (`world`), when App::show_mini; a click selects as in the net view.
 void drawMiniView(App& app, const Rect& world, nlohmann::json& report);

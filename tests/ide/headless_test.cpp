@@ -496,6 +496,71 @@ TEST_F(HeadlessIde, TheTutorialBuildsFromAnEmptyFileAModelWhoseRunPushesTheBoxOf
   EXPECT_EQ(gdpn::testing::runGdpn("check '" + model + "'").code, 0);
 }
 
+/// The value of field `name` in the inspector's report.
+nlohmann::json fieldValue(const nlohmann::json& report, const std::string& name) {
+  for (const auto& f : report["inspector"]["fields"]) {
+    if (f["name"] == name) return f["value"];
+  }
+  return {};
+}
+
+TEST_F(HeadlessIde, DraggingAMoveHandleMovesTheTransformAlongItsAxisInSnappedSteps) {
+  // the bin model's Transform `high` stands at (0, 0, 0.5), where the view looks; its x handle
+  // is 0.16 of the eye's distance long (0.99 m). Dragged from its tip back to the pivot, it
+  // moves the node by that length back: -1.00 m in steps of 0.05 m, -0.99 m without them
+  const auto model = write("bin.gdpn.yaml", ide::testing::kBinModel);
+  auto r = replayOn(model, "- select: high\n");
+  ASSERT_EQ(r["world"]["tool"], "move");
+  ASSERT_TRUE(r["world"]["handles"].contains("move x")) << r["world"].dump();
+  const std::string drag = "- select: high\n- drag: {from: [world, handles, move x], to: [world, pivot]}\n";
+  r = replayOn(model, drag);
+  EXPECT_EQ(fieldValue(r, "translation"), nlohmann::json::array({-1.0, 0.0, 0.5}));
+  EXPECT_EQ(r["undo"]["depth"], 1) << "a drag is one step";
+  EXPECT_EQ(r["undo"]["label"], "set high.translation");
+  r = replayOn(model, "- press: snap\n" + drag);
+  const double x = fieldValue(r, "translation")[0].get<double>();
+  EXPECT_NEAR(x, -0.99, 0.02);
+  EXPECT_GT(std::abs(x / 0.05 - std::round(x / 0.05)), 1e-6) << "not snapped: " << x;
+  // the z handle lifts it; undo puts it back
+  r = replayOn(model, "- select: high\n- drag: {from: [world, handles, move z], to: [world, pivot]}\n- press: undo\n");
+  EXPECT_EQ(fieldValue(r, "translation"), nlohmann::json::array({0.0, 0.0, 0.5}));
+  // a turn ring: dragging its grab point (45 degrees round) to the pivot's side turns the node
+  r = replayOn(model, "- press: turn-tool\n- select: high\n- drag: {from: [world, handles, turn z], to: [world, handles, turn x]}\n");
+  const auto rotation = fieldValue(r, "rotation");
+  EXPECT_NE(rotation, nlohmann::json::array({0.0, 0.0, 1.0, 0.0})) << r["world"].dump();
+  const double angle = rotation[3].get<double>();
+  EXPECT_NEAR(angle / 5.0, std::round(angle / 5.0), 1e-9) << "turned in 5 degree steps: " << angle;
+}
+
+TEST_F(HeadlessIde, AJointLimitDraggedInTheWorldViewAppearsInTheInspector) {
+  // a slider along x whose limits stand at -0.5 and +0.5 m about its anchor (0, 0, 0.5)
+  const auto model = write("slider.gdpn.yaml", R"Y(gdpn: 1
+scene:
+  - Camera: {name: view, position: [4, -4, 3], target: [0, 0, 0.5]}
+  - Joint:
+      name: slide
+      kind: slider
+      anchor: [0, 0, 0.5]
+      axis1: [1, 0, 0]
+      lo1: -0.5
+      hi1: 0.5
+      children: [{Body: {name: cart, mass: 1, children: [{Transform: {translation: [0, 0, 0.5], children: [{Cube: {size: [0.2, 0.2, 0.2]}}]}}]}}]
+pages:
+  main: {}
+)Y");
+  auto r = replayOn(model, "- select: slide\n");
+  ASSERT_TRUE(r["world"]["handles"].contains("hi1")) << r["world"].dump();
+  ASSERT_TRUE(r["world"]["handles"].contains("lo1"));
+  EXPECT_EQ(fieldValue(r, "hi1"), 0.5);
+  // hi1 dragged to the anchor: 0 m, in the inspector and in the saved model
+  r = replayOn(model, "- select: slide\n- drag: {from: [world, handles, hi1], to: [world, pivot]}\n- press: save\n");
+  EXPECT_EQ(fieldValue(r, "hi1"), 0.0);
+  EXPECT_EQ(fieldValue(r, "lo1"), -0.5);
+  EXPECT_EQ(r["undo"]["label"], "set slide.hi1");
+  const auto saved = gdpn::testing::fileBytes(model);
+  EXPECT_NE(saved.find("hi1: 0\n"), std::string::npos) << saved;
+}
+
 TEST_F(HeadlessIde, AKeyboardSensorHearsTheWorldViewsKeysWhileTheViewerIsInside) {
   // tests/data/input/console.gdpn.yaml with a camera inside the booth: 'go' waits for the g key
   std::ifstream source(std::string(GDPN_SOURCE_DIR) + "/tests/data/input/console.gdpn.yaml");

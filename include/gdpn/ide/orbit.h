@@ -4,6 +4,7 @@
 /// the pick ray under a pixel. Pure math, no OpenGL.
 
 #include <cstdint>
+#include <array>
 #include <optional>
 #include <string_view>
 
@@ -47,6 +48,9 @@ struct OrbitCamera {
   void look(StandardView view);
   /// The ray through pixel (`x`, `y`) of a `width` x `height` view (top-left origin).
   [[nodiscard]] core::Ray ray(double x, double y, double width, double height) const;
+  /// Where world point `p` appears in a `width` x `height` view (pixels, top-left origin);
+  /// nullopt when it lies behind the eye. The inverse of ray().
+  [[nodiscard]] std::optional<std::array<double, 2>> project(const core::Vec3& p, double width, double height) const;
 };
 
 }  // namespace gdpn::ide

@@ -2,6 +2,8 @@
 // documentation), each edit a command (a drag is one step); a place's or transition's state.
 
 #include <imgui.h>
+
+#include <variant>
 #include <imgui_stdlib.h>
 
 #include <algorithm>
@@ -176,7 +178,10 @@ void nodeInspector(App& app, const std::string& path, nlohmann::json& report) {
     ImGui::TextDisabled("%s", range.c_str());
     if (ImGui::IsItemHovered() && !range.empty()) ImGui::SetTooltip("%s", range.c_str());
     ImGui::PopID();
-    fields.push_back({{"name", d.name}, {"unit", d.unit}, {"range", range}, {"kind", scene::fieldKindName(d.kind)}});
+    nlohmann::json value;
+    std::visit([&](const auto& v) { value = v; }, node->value(i));
+    fields.push_back({{"name", d.name}, {"unit", d.unit}, {"range", range}, {"kind", scene::fieldKindName(d.kind)},
+                      {"value", value}});
   }
   ImGui::EndTable();
 }

@@ -84,6 +84,29 @@ void drawViewBar(App& app, scene::Scene* s) {
     }
     ImGui::EndCombo();
   }
+  // the manipulator of the selected node, and its steps
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(80);
+  const char* tools[] = {"select", "move", "turn"};
+  if (ImGui::BeginCombo("##tool", tools[static_cast<int>(app.tool)], ImGuiComboFlags_HeightLarge)) {
+    for (int i = 0; i < 3; ++i) {
+      if (ImGui::Selectable(tools[i], static_cast<int>(app.tool) == i)) app.tool = static_cast<Tool>(i);
+    }
+    ImGui::Separator();
+    ImGui::Checkbox("snap", &app.snap);
+    ImGui::SetNextItemWidth(70);
+    ImGui::InputDouble("m a step", &app.move_step, 0, 0, "%g");
+    ImGui::SetNextItemWidth(70);
+    ImGui::InputDouble("degrees a step", &app.turn_step, 0, 0, "%g");
+    app.move_step = std::clamp(app.move_step, 1e-6, 1e6);
+    app.turn_step = std::clamp(app.turn_step, 1e-6, 360.0);
+    ImGui::Checkbox("the node's own axes", &app.local_axes);
+    ImGui::EndCombo();
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("What a drag on the selected node's handles does: move along or turn about an axis (a joint's "
+                      "limits always have handles)");
+  }
   // what to show: one list, so that the row fits a narrow view
   ImGui::SameLine();
   ImGui::SetNextItemWidth(70);
@@ -116,7 +139,7 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
   const int w = std::max(16, static_cast<int>(size.x));
   const int h = std::max(16, static_cast<int>(size.y));
   const auto origin = ImGui::GetCursorScreenPos();
-  report = {{"size", {w, h}}, {"camera", app.camera_node.empty() ? "free" : app.camera_node}};
+  report = {{"size", {w, h}}, {"camera", app.camera_node.empty() ? "free" : app.camera_node}, {"origin", {origin.x, origin.y}}};
   if (s == nullptr || !app.renderer) {
     ImGui::TextDisabled("(nothing to draw)");
     endPanel();
@@ -180,8 +203,12 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
     }
   };
 
+  // the manipulators of the selected node: a drag that starts on a handle edits the node
+  const bool manipulating =
+      drawManipulators(app, *s, OrbitCamera::from(camera), origin, static_cast<float>(w), static_cast<float>(h), report);
+
   // orbit, pan, zoom
-  if (active && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
+  if (active && !manipulating && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
     if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
       take_camera();
       app.orbit.orbit(static_cast<double>(io.MouseDelta.x), static_cast<double>(io.MouseDelta.y));
@@ -196,7 +223,7 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
   }
 
   // a click (no drag) picks a shape and tells the mouse sensors
-  if (hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 16) {
+  if (hovered && !manipulating && ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 16) {
     const auto ray = OrbitCamera::from(camera).ray(static_cast<double>(io.MousePos.x - origin.x),
                                                    static_cast<double>(io.MousePos.y - origin.y), w, h);
     const auto hit = scene::pick(s->root(), ray);
