@@ -9,8 +9,12 @@
 #             status bar shows at the end, and the share of the world view drawn
 #   net-fit   240 headless frames of a generated page of 10,000 transitions and 10,000 places,
 #             fitted into the net view (per frame)
-#   net-pan   the same page zoomed in (the wheel, 20 clicks) and panned by 30 drags of 11
+#   net-pan   the same page zoomed in (the wheel, 20 clicks) and panned by 30 middle-button drags of 11
 #             frames each (per frame)
+#   net-edit  the factory's place P3 dragged in the net view 24 times (10 frames each, each a
+#             move edit; per frame)
+#   set-edit  240 field edits of the factory (`set`, one a frame: the world view draws again
+#             each time; per frame)
 # Needs a Release build (cmake --preset ci && cmake --build build/ci) and, for `window`,
 # xvfb-run. Usage: bench/ide_bench.sh [BUILD_DIR] [REPEATS]
 set -euo pipefail
@@ -40,7 +44,7 @@ printf -- '- frames: 241\n' >"$work/idle.yaml"
 printf -- '- press: run\n- frames: 240\n' >"$work/run.yaml"
 {
   printf -- '- wheel: {at: [1390, 340], clicks: 20}\n- frames: 19\n'
-  for i in $(seq 30); do printf -- '- drag: {from: [%d, 340], to: [%d, 360]}\n' $((1300 + i % 2 * 60)) $((1320 + i % 2 * 60)); done
+  for i in $(seq 30); do printf -- '- drag: {from: [%d, 340], to: [%d, 360], button: middle}\n' $((1300 + i % 2 * 60)) $((1320 + i % 2 * 60)); done
 } >"$work/pan.yaml"
 python3 - "$work/big.gdpn.yaml" <<'EOF'
 import sys
@@ -59,6 +63,11 @@ for i in range(n):
 open(sys.argv[1], "w").write("\n".join(lines) + "\n")
 EOF
 
+for i in $(seq 24); do
+  printf -- '- drag: {from: [1304, %d], to: [1304, %d]}\n' $((366 + i % 2 * 20)) $((366 + (i + 1) % 2 * 20))
+done >"$work/netdrag.yaml"
+for i in $(seq 240); do printf -- '- set: {node: arm/turn, field: vel1, value: %d}\n' $((100 + i)); done >"$work/sets.yaml"
+
 ide() { "$gdpn" ide "$1" --headless --size 1600x900 --replay "$2"; }
 open=$(each ide $factory "$work/one.yaml")
 idle=$(each ide $factory "$work/idle.yaml")
@@ -72,6 +81,10 @@ printf 'idle frame                          %s ms\n' "$(per_frame "$idle" "$open
 printf 'running frame (world in full)       %s ms\n' "$(per_frame "$running" "$open")"
 printf 'net view, 10,000 transitions fitted %s ms a frame (opening it: %.2f s)\n' "$(per_frame "$big" "$big_open")" "$big_open"
 printf 'net view, zoomed in and panned      %s ms a frame\n' "$(per_frame "$big_pan" "$big_open" 350)"
+net_edit=$(each ide $factory "$work/netdrag.yaml")
+set_edit=$(each ide $factory "$work/sets.yaml")
+printf 'net edits (a place dragged)         %s ms a frame\n' "$(per_frame "$net_edit" "$open")"
+printf 'field edits (the world drawn again) %s ms a frame\n' "$(per_frame "$set_edit" "$open")"
 
 if command -v xvfb-run >/dev/null; then
   for _ in $(seq "$repeats"); do

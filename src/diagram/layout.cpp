@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <string_view>
+#include <unordered_map>
 #include <optional>
 
 #include "detail/graphviz_layout.h"
@@ -51,29 +53,41 @@ struct Ends {
   std::string link;
 };
 
-std::optional<Ends> resolve(const net::PageSpec& page, const net::ArcSpec& arc) {
-  std::string link;
-  auto find = [&](const std::string& name) -> std::optional<ItemRef> {
-    for (std::size_t i = 0; i < page.places.size(); ++i)
-      if (page.places[i].name == name) return ItemRef{ItemKind::Place, static_cast<std::uint32_t>(i)};
+/// The page's places, transitions and instances by name: an arc's ends found in constant time
+/// (a page of 20,000 arcs would otherwise compare names 10^8 times).
+class PageNames {
+ public:
+  explicit PageNames(const net::PageSpec& page) {
+    names_.reserve(page.places.size() + page.transitions.size() + page.instances.size());
+    for (std::size_t i = 0; i < page.places.size(); ++i) names_.emplace(page.places[i].name, ItemRef{ItemKind::Place, static_cast<std::uint32_t>(i)});
     for (std::size_t i = 0; i < page.transitions.size(); ++i)
-      if (page.transitions[i].name == name) return ItemRef{ItemKind::Transition, static_cast<std::uint32_t>(i)};
-    // a link `instance/reference` ends at the instance's box
-    const auto slash = name.find('/');
-    if (slash == std::string::npos) return std::nullopt;
-    for (std::size_t i = 0; i < page.instances.size(); ++i) {
-      if (page.instances[i].name == name.substr(0, slash)) {
-        link = name.substr(slash + 1);
-        return ItemRef{ItemKind::Instance, static_cast<std::uint32_t>(i)};
-      }
-    }
-    return std::nullopt;
-  };
-  const auto from = find(arc.from);
-  const auto to = find(arc.to);
-  if (!from || !to) return std::nullopt;
-  return Ends{*from, *to, link};
-}
+      names_.emplace(page.transitions[i].name, ItemRef{ItemKind::Transition, static_cast<std::uint32_t>(i)});
+    for (std::size_t i = 0; i < page.instances.size(); ++i)
+      instances_.emplace(page.instances[i].name, ItemRef{ItemKind::Instance, static_cast<std::uint32_t>(i)});
+  }
+
+  /// The ends of `arc`; nullopt when one names nothing on the page.
+  [[nodiscard]] std::optional<Ends> resolve(const net::ArcSpec& arc) const {
+    std::string link;
+    const auto find = [&](const std::string& name) -> std::optional<ItemRef> {
+      if (const auto it = names_.find(name); it != names_.end()) return it->second;
+      // a link `instance/reference` ends at the instance's box
+      const auto slash = name.find('/');
+      if (slash == std::string::npos) return std::nullopt;
+      const auto it = instances_.find(std::string_view(name).substr(0, slash));
+      if (it == instances_.end()) return std::nullopt;
+      link = name.substr(slash + 1);
+      return it->second;
+    };
+    const auto from = find(arc.from);
+    const auto to = find(arc.to);
+    if (!from || !to) return std::nullopt;
+    return Ends{*from, *to, link};
+  }
+
+ private:
+  std::unordered_map<std::string_view, ItemRef> names_, instances_;
+};
 
 bool allPositioned(const net::PageSpec& page) {
   return std::all_of(page.places.begin(), page.places.end(), [](const auto& p) { return p.position.has_value(); }) &&
@@ -212,9 +226,10 @@ NetLayout layoutPage(const net::PageSpec& page, core::Diagnostics& diags) {
     widths.push_back(instanceWidth(i));
   }
   // arcs between constructs of this page (a dangling arc is the compiler's to report)
+  const PageNames names(page);
   for (std::size_t k = 0; k < page.arcs.size(); ++k) {
     const auto& a = page.arcs[k];
-    const auto ends = resolve(page, a);
+    const auto ends = names.resolve(a);
     if (!ends) continue;
     ArcLayout arc;
     arc.spec_index = static_cast<std::uint32_t>(k);

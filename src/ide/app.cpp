@@ -364,7 +364,11 @@ constexpr double kWorldScales[] = {1.0, 0.85, 0.7, 0.6, 0.5};
 constexpr int kWorldLevels = static_cast<int>(std::size(kWorldScales));
 }  // namespace
 
-double App::worldScale() const { return run_.mode() == RunMode::Running ? kWorldScales[world_level] : 1.0; }
+bool App::busy() const {
+  return run_.mode() == RunMode::Running || manipulating.handle != Handle::None || ImGui::IsAnyItemActive();
+}
+
+double App::worldScale() const { return busy() ? kWorldScales[world_level] : 1.0; }
 
 void App::frame(float width, float height, double wall_seconds) {
   if (wall_seconds > 0) fps = fps == 0 ? 1.0 / wall_seconds : 0.9 * fps + 0.1 / wall_seconds;
@@ -372,7 +376,7 @@ void App::frame(float width, float height, double wall_seconds) {
   // resolution follows the frame rate, a step every half second at most (a headless frame
   // stands for 1/60 s and never lowers it)
   world_level_age += wall_seconds;
-  if (run_.mode() == RunMode::Running && world_level_age >= 0.5) {
+  if (busy() && world_level_age >= 0.5) {
     if (fps < 30 && world_level + 1 < kWorldLevels) {
       ++world_level;
       world_level_age = 0;

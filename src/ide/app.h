@@ -35,7 +35,7 @@ struct NetViewState;
 struct WorldKey {
   std::int64_t steps = -1;                 ///< the run's steps
   RunMode mode = RunMode::Edit;            ///< edit, running, paused
-  std::uint64_t revision = 0;              ///< the document's revision
+  std::uint64_t revision = 0;              ///< the document's scene revision
   core::Vec3 eye, target;                  ///< the camera, m
   double fov = 0;                          ///< degrees
   std::vector<scene::NodeHandle> selection;  ///< the highlighted nodes
@@ -174,9 +174,13 @@ class App {
   double fps = 0;                   ///< frames per second, smoothed
   int world_level = 0;              ///< how far the world view's resolution is lowered while running (kWorldScales)
   double world_level_age = 0;       ///< wall seconds since world_level last changed
-  /// The share of its pixels (per side) the world view is drawn at: 1 unless running, where a
-  /// frame rate under 30 fps lowers it in steps to 0.5 and one over 45 raises it again.
+  /// The share of its pixels (per side) the world view is drawn at: 1 unless busy (running, or a
+  /// drag of a manipulator or a field), where a frame rate under 30 fps lowers it in steps to
+  /// 0.5 and one over 45 raises it again.
   [[nodiscard]] double worldScale() const;
+  /// True while the model runs or a manipulator or a field is dragged: the world view may be
+  /// drawn at a lower resolution to keep the frame rate.
+  [[nodiscard]] bool busy() const;
   bool screenshot_requested = false;  ///< the toolbar asked for a picture of the next frame
   int screenshots = 0;              ///< pictures taken so far (their names count up)
   std::unique_ptr<capture::MovieWriter> movie;  ///< the movie being filmed (null when none)

@@ -8,7 +8,7 @@ namespace gdpn::ide {
 
 std::string UndoStack::push(std::unique_ptr<Command> command, Document& doc) {
   if (auto why = command->apply(doc); !why.empty()) return why;
-  doc.touched();
+  doc.touched(command->changesScene());
   undone_.clear();
   // a drag: the new edit joins the step it continues
   const auto key = command->mergeKey();
@@ -24,7 +24,7 @@ std::string UndoStack::push(std::unique_ptr<Command> command, Document& doc) {
 bool UndoStack::undo(Document& doc) {
   if (done_.empty()) return false;
   done_.back()->revert(doc);
-  doc.touched();
+  doc.touched(done_.back()->changesScene());
   undone_.push_back(std::move(done_.back()));
   done_.pop_back();
   sealed_ = true;
@@ -35,7 +35,7 @@ bool UndoStack::redo(Document& doc) {
   if (undone_.empty()) return false;
   // a command that applied once applies again on the state it was undone to
   (void)undone_.back()->apply(doc);
-  doc.touched();
+  doc.touched(undone_.back()->changesScene());
   done_.push_back(std::move(undone_.back()));
   undone_.pop_back();
   sealed_ = true;

@@ -97,7 +97,7 @@ void Document::adopt(model::Model model) {
   model_.scene = scene_;
   stamp_ = model_.path.empty() ? std::nullopt : stampOf(model_.path);
   script_stamps_ = scriptStamps();
-  ++revision_;
+  touched();
   saved_revision_ = revision_;
 }
 

@@ -380,13 +380,13 @@ std::string SetGlobalsCommand::apply(Document& doc) {
   before_ = globals;
   globals = {};
   globals.code = code_;
-  doc.touched();
+  doc.touched(false);
   return {};
 }
 
 void SetGlobalsCommand::revert(Document& doc) {
   doc.editableNet().globals = before_;
-  doc.touched();
+  doc.touched(false);
 }
 
 NetEditCommand::NetEditCommand(NetEdit edit) : edit_(std::move(edit)) {}
@@ -399,7 +399,7 @@ std::string NetEditCommand::apply(Document& doc) {
   if (auto why = edit(net, changed, edit_); !why.empty()) return why;
   before_ = std::move(*page);
   *page = std::move(changed);
-  doc.touched();
+  doc.touched(false);
   return {};
 }
 
@@ -407,7 +407,7 @@ void NetEditCommand::revert(Document& doc) {
   net::PageSpec* page = findPage(doc.editableNet(), edit_.page);
   if (page == nullptr || !before_) return;
   *page = *before_;
-  doc.touched();
+  doc.touched(false);
 }
 
 std::string NetEditCommand::label() const {

@@ -26,6 +26,8 @@ class Command {
   [[nodiscard]] virtual std::uint64_t mergeKey() const { return 0; }
   /// Takes in `next` (already applied, same merge key) so that reverting this one undoes both.
   virtual void absorb(const Command& next) = 0;
+  /// False for a command that leaves the scene as it is (the world view need not be drawn again).
+  [[nodiscard]] virtual bool changesScene() const { return true; }
 };
 
 /// Done and undone commands.

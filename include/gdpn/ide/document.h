@@ -86,8 +86,13 @@ class Document {
 
   /// Counts changes: it grows with every applied, undone or redone command and reload.
   [[nodiscard]] std::uint64_t revision() const { return revision_; }
-  /// Commands call this after each change they make.
-  void touched() { ++revision_; }
+  /// Counts the changes to the scene alone (the world view draws again when it grows).
+  [[nodiscard]] std::uint64_t sceneRevision() const { return scene_revision_; }
+  /// Commands call this after each change they make; `scene`: the scene may have changed.
+  void touched(bool scene = true) {
+    ++revision_;
+    if (scene) ++scene_revision_;
+  }
 
   /// The problems found when the model was last read or checked (every one located).
   [[nodiscard]] const core::Diagnostics& diagnostics() const { return diagnostics_; }
@@ -115,6 +120,7 @@ class Document {
   UndoStack undo_;
   std::uint64_t revision_ = 0;
   std::uint64_t saved_revision_ = 0;  // the revision last read or saved
+  std::uint64_t scene_revision_ = 0;  // changes to the scene
   core::Diagnostics diagnostics_;
   std::optional<std::filesystem::file_time_type> stamp_;  // the file's time when read
   std::map<std::string, std::filesystem::file_time_type> script_stamps_;  // *.py beside the model

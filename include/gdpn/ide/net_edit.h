@@ -64,6 +64,7 @@ class NetEditCommand final : public Command {
   [[nodiscard]] std::string label() const override;
   [[nodiscard]] std::uint64_t mergeKey() const override;
   void absorb(const Command& next) override;
+  [[nodiscard]] bool changesScene() const override { return false; }
 
  private:
   NetEdit edit_;
@@ -80,6 +81,7 @@ class SetGlobalsCommand final : public Command {
   void revert(Document& doc) override;
   [[nodiscard]] std::string label() const override { return "edit the model's globals"; }
   void absorb(const Command&) override {}
+  [[nodiscard]] bool changesScene() const override { return false; }
 
  private:
   std::string code_;

@@ -176,7 +176,7 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
     for (const auto& c : physics->contacts()) options.contacts.push_back({c.position, c.normal});
   }
   // draw only when something seen changed: the run, the model, the camera, the selection
-  WorldKey seen{app.run().steps(), app.run().mode(), app.document().revision(), camera.eye, camera.target,
+  WorldKey seen{app.run().steps(), app.run().mode(), app.document().sceneRevision(), camera.eye, camera.target,
                 camera.fov, options.selection, rw, rh, shownBits(app), app.run().session()};
   if (!(seen == app.world_key) || app.world_stats.draw_calls == 0) {
     // four samples a pixel against jagged edges; none in a lowered picture, already soft
