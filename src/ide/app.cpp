@@ -197,6 +197,23 @@ void App::checkAutosave(double wall_seconds) {
   if (!doc_->autosave(diags)) message = "autosave failed: " + diags.str();
 }
 
+void App::followEdits(double wall_seconds) {
+  // in edit mode the run follows the edited model a quarter of a second after the edits stop
+  // (not while a field or a handle is held): the net view shows the marking as edited and the
+  // Diagnostics view what the compiler says of it
+  if (doc_->revision() != quiet_revision) {
+    quiet_revision = doc_->revision();
+    edit_quiet = 0;
+  }
+  edit_quiet += wall_seconds;
+  if (run_.mode() != RunMode::Edit || run_.revision() == doc_->revision() || edit_quiet < 0.25) return;
+  if (ImGui::IsAnyItemActive() || manipulating.handle != Handle::None) return;
+  if (followed_revision == doc_->revision()) return;  // tried already: it did not compile
+  followed_revision = doc_->revision();
+  core::Diagnostics diags;
+  (void)run_.reset(diags);
+}
+
 void App::drawRestoreOffer(nlohmann::json& report) {
   constexpr const char* kTitle = "Unsaved edits found";
   report = {{"offered", restore_offered}};
@@ -324,11 +341,17 @@ bool App::perform(const Action& a, std::string& error) {
         camera_node.clear();
       } else if (a.text == "frame") {
         frameSelection();
+      } else if (a.text == "all") {
+        if (auto* s = shownScene()) {
+          scene::updateTransforms(s->root());
+          orbit.frame(scene::boundingBox(s->root()));
+          camera_node.clear();
+        }
       } else {
         auto* s = shownScene();
         auto* node = s ? s->find(a.text) : nullptr;
         if (node == nullptr || node->kind() != scene::NodeKind::Camera) {
-          error = "'" + a.text + "' is no standard view (front, back, left, right, top, iso, frame) and no Camera node";
+          error = "'" + a.text + "' is no standard view (front, back, left, right, top, iso, frame, all) and no Camera node";
           break;
         }
         camera_node = a.text;
@@ -387,6 +410,7 @@ void App::frame(float width, float height, double wall_seconds) {
   }
   checkReload();
   checkAutosave(wall_seconds);
+  followEdits(wall_seconds);
   run_.advance(wall_seconds);
 
   // the keys that work everywhere

@@ -164,6 +164,9 @@ class App {
   net::SlotId contents_slot = net::kDefaultSlot;  ///< the slot the contents view edits
   std::uint64_t drag_id = 0;        ///< the inspector's current drag (merge key)
   std::string inspector_error;      ///< why the last edit was refused
+  double edit_quiet = 0;            ///< seconds since the document last changed (edit mode)
+  std::uint64_t quiet_revision = 0; ///< the revision edit_quiet counts from
+  std::uint64_t followed_revision = 0;  ///< the revision the run last tried to follow
   double autosave_seconds = 60;     ///< how long unsaved edits wait before they are autosaved, s (0: never)
   double autosave_clock = 0;        ///< seconds the edits not yet autosaved have waited
   std::uint64_t autosaved_revision = 0;  ///< the document's revision last autosaved
@@ -203,6 +206,7 @@ class App {
  private:
   void checkReload();
   void checkAutosave(double wall_seconds);
+  void followEdits(double wall_seconds);
   void drawRestoreOffer(nlohmann::json& report);
   std::unique_ptr<Document> doc_;
   std::unique_ptr<NetViewState> net_view_;

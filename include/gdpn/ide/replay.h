@@ -30,7 +30,7 @@ enum class ActionKind : std::uint8_t {
                ///< named by the keys that lead to it: `click: [tree, rows, belt]`)
   Wheel,       ///< `wheel: {at: [X, Y], clicks: N}`: the mouse wheel turned N clicks (negative: back) there
   Set,         ///< `set: {node: PATH, field: NAME, value: V}` through the inspector's command
-  View,        ///< `view: front|back|left|right|top|iso|frame` or a Camera node's path
+  View,        ///< `view: front|back|left|right|top|iso|frame|all` or a Camera node's path
   Screenshot,  ///< `screenshot: FILE.png` of the whole window
   Break,       ///< `break: {starts: T}`, `{completes: T}`, `{place: P, at_least: N}` or `{when: PYTHON}`
 };

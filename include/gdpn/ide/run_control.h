@@ -83,6 +83,9 @@ class RunControl {
   /// The problems found when the run was last made from the document (empty when it compiled).
   [[nodiscard]] const core::Diagnostics& buildDiagnostics() const { return diags_; }
 
+  /// The document's revision the run was last made from.
+  [[nodiscard]] std::uint64_t revision() const { return revision_; }
+
   /// The session (null when the model never compiled).
   [[nodiscard]] session::Session* session() const { return session_.get(); }
   /// Edit, running or paused.

@@ -218,7 +218,7 @@ void runState(App& app, const session::Session& session, const Selection& sel, n
     const auto tokens = sim.kernel().placeTokens(static_cast<net::PlaceId>(p));
     ImGui::Text("tokens: %lld", static_cast<long long>(tokens));
     const auto& place = sim.net().places()[static_cast<std::size_t>(p)];
-    ImGui::TextDisabled("declared at %s", place.loc.str().c_str());
+    if (place.loc.line > 0) ImGui::TextDisabled("declared at %s", place.loc.str().c_str());
     report["tokens"] = tokens;
     ImGui::SetNextItemWidth(90);
     ImGui::InputInt("##at_least", &app.break_tokens);
@@ -232,8 +232,11 @@ void runState(App& app, const session::Session& session, const Selection& sel, n
     const auto& tr = sim.net().transitions()[static_cast<std::size_t>(t)];
     const char* state = sim.kernel().occurring(id) ? "occurring" : sim.kernel().enabled(id) ? "enabled" : "not enabled";
     ImGui::Text("%s", state);
-    ImGui::Text("priority %lld, probability %g", static_cast<long long>(tr.priority), tr.probability);
-    ImGui::TextDisabled("declared at %s", tr.loc.str().c_str());
+    // in edit mode the contents view below has them as fields
+    if (app.run().mode() != RunMode::Edit) {
+      ImGui::Text("priority %lld, probability %g", static_cast<long long>(tr.priority), tr.probability);
+    }
+    if (tr.loc.line > 0) ImGui::TextDisabled("declared at %s", tr.loc.str().c_str());
     report["state"] = state;
     breakpointBox(app, "break when it starts", session::Breakpoint::starts(sel.name), report);
     ImGui::SameLine();
