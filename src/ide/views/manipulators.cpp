@@ -41,7 +41,7 @@ const std::array<ImU32, 3> kAxisColours = {IM_COL32(230, 60, 60, 255), IM_COL32(
 std::vector<HandleShape> handlesOf(App& app, scene::Node& node, const OrbitCamera& view, ImVec2 at, float w, float h) {
   std::vector<HandleShape> out;
   const auto screen = [&](const core::Vec3& p) -> std::optional<ImVec2> {
-    const auto q = view.project(p, w, h);
+    const auto q = view.project(p, static_cast<double>(w), static_cast<double>(h));
     if (!q) return std::nullopt;
     return ImVec2{at.x + static_cast<float>((*q)[0]), at.y + static_cast<float>((*q)[1])};
   };
@@ -151,7 +151,8 @@ bool drawManipulators(App& app, scene::Scene& scene, const OrbitCamera& view, Im
   }
   const auto shapes = handlesOf(app, *node, view, at, w, h);
   const ImVec2 mouse = ImGui::GetIO().MousePos;
-  const auto ray = view.ray(static_cast<double>(mouse.x - at.x), static_cast<double>(mouse.y - at.y), w, h);
+  const auto ray = view.ray(static_cast<double>(mouse.x - at.x), static_cast<double>(mouse.y - at.y), static_cast<double>(w),
+                            static_cast<double>(h));
   const bool slider = isSlider(*node);
 
   // a press on a handle starts a drag (the world view's button was just pressed)
@@ -245,7 +246,7 @@ bool drawManipulators(App& app, scene::Scene& scene, const OrbitCamera& view, Im
   report["handles"] = grabs;
   // the point the handles act about, where a replay can drag one back to
   if (!shapes.empty()) {
-    if (const auto q = view.project(shapes.front().origin, w, h)) {
+    if (const auto q = view.project(shapes.front().origin, static_cast<double>(w), static_cast<double>(h))) {
       report["pivot"] = {std::lround(at.x + static_cast<float>((*q)[0])), std::lround(at.y + static_cast<float>((*q)[1]))};
     }
   }
