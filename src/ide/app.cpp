@@ -13,6 +13,8 @@
 #include <filesystem>
 
 #include "detail/world_texture.h"
+#include "gdpn/ide/net_edit.h"
+#include "gdpn/ide/scene_edit.h"
 #include "gdpn/ide/set_field.h"
 #include "gdpn/scene/actions.h"
 #include "views.h"
@@ -164,6 +166,26 @@ void App::redo() {
 void App::save() {
   core::Diagnostics diags;
   message = doc_->save(diags) ? "saved " + doc_->model().path : diags.str();
+}
+
+void App::deleteSelection() {
+  if (run_.mode() != RunMode::Edit) {
+    message = "the run's plant and net are not edited: Reset to edit the model";
+    return;
+  }
+  const auto sel = doc_->selection();
+  std::string why;
+  if (sel.kind == SelectionKind::Node) {
+    why = doc_->execute(std::make_unique<SceneEditCommand>(SceneEdit{SceneEditKind::Delete, sel.name, {}, {}, false}));
+  } else if (sel.kind == SelectionKind::Place || sel.kind == SelectionKind::Transition) {
+    const auto at = locateConstruct(doc_->model().net, sel.name);
+    why = at ? doc_->execute(std::make_unique<NetEditCommand>(makeNetEdit(NetEditKind::Delete, at->page, at->name)))
+             : "'" + sel.name + "' is not written on a page";
+  } else {
+    return;
+  }
+  message = why.empty() ? "deleted " + sel.name : why;
+  if (why.empty()) doc_->select({});
 }
 
 void App::saveAs(const std::string& path) {
@@ -415,6 +437,7 @@ void App::frame(float width, float height, double wall_seconds) {
 
   // the keys that work everywhere
   auto& io = ImGui::GetIO();
+  if (!io.KeyCtrl && !io.WantTextInput && ImGui::IsKeyPressed(GLFW_KEY_DELETE, false)) deleteSelection();
   if (io.KeyCtrl && !io.WantTextInput) {
     if (ImGui::IsKeyPressed(GLFW_KEY_Z, false)) undo();
     if (ImGui::IsKeyPressed(GLFW_KEY_Y, false)) redo();

@@ -127,6 +127,9 @@ class App {
   void redo();
   /// Saves the model to its file (the message says how it went).
   void save();
+  /// Deletes the selected node (refused, with where, when the net holds it: the tree's menu
+  /// offers to take it out of the marking too) or place or transition (with its arcs); edit mode.
+  void deleteSelection();
   /// Saves the model as `path`, which it is from then on (the message says how it went).
   void saveAs(const std::string& path);
   /// Puts the newer autosave offered at the start in place of the model (one undoable step).

@@ -114,6 +114,29 @@ std::string SceneEditCommand::apply(Document& doc) {
       });
       break;
     }
+    case SceneEditKind::Reparent: {
+      if (root) return "the scene's root has no parent";
+      scene::Node* parent = edit_.name.empty() ? &edited->root() : edited->find(edit_.name);
+      if (parent == nullptr) return "no node '" + edit_.name + "'";
+      if (parent != &edited->root() && within(edit_.name, edit_.path)) return "a node cannot go under itself";
+      if (parent == node->parent()) return "'" + edit_.path + "' is there already";
+      if (parent != &edited->root() && !parent->type().has_children) return "a " + parent->type().name + " holds no other nodes";
+      if (parent->child(node->name()) != nullptr) {
+        return "'" + (edit_.name.empty() ? std::string("the scene") : edit_.name) + "' has a child '" + node->name() + "' already";
+      }
+      const scene::Node* moved = edited->copy(*node, *parent);
+      if (moved == nullptr) return "it cannot be moved there";
+      const std::string to = moved->path();
+      edited->destroy(*node);
+      // the marking follows the nodes
+      eachPath(net, [&](auto&, auto&, const std::string&, std::string& p) {
+        if (!within(p, edit_.path)) return;
+        p = to + p.substr(edit_.path.size());
+        net_changed = true;
+      });
+      made_ = to;
+      break;
+    }
     case SceneEditKind::Duplicate: {
       if (root) return "the scene's root cannot be copied beside itself";
       scene::Node& parent = *node->parent();
@@ -145,6 +168,7 @@ std::string SceneEditCommand::label() const {
     case SceneEditKind::Delete: return "delete " + edit_.path;
     case SceneEditKind::Rename: return "rename " + edit_.path + " to " + edit_.name;
     case SceneEditKind::Duplicate: return "duplicate " + edit_.path;
+    case SceneEditKind::Reparent: return "move " + edit_.path + " under " + (edit_.name.empty() ? "the scene" : edit_.name);
   }
   return "edit the scene";
 }

@@ -561,6 +561,24 @@ pages:
   EXPECT_NE(saved.find("hi1: 0\n"), std::string::npos) << saved;
 }
 
+TEST_F(HeadlessIde, ANodeDroppedOnAnotherRowMovesUnderItAndDeleteRemovesTheSelection) {
+  const auto model = write("bin.gdpn.yaml", ide::testing::kBinModel);
+  auto r = replayOn(model, "- drag: {from: [tree, rows, drop], to: [tree, rows, high]}\n");
+  EXPECT_EQ(r["undo"]["label"], "move drop under high");
+  EXPECT_TRUE(r["tree"]["rows"].contains("high/drop")) << r["tree"]["rows"].dump();
+  EXPECT_EQ(r["selection"]["name"], "high/drop");
+  // Delete: a place with its arcs; a node; a node the net reads is refused, with where
+  r = replayOn(model, "- select: main/never\n- key: delete\n");
+  EXPECT_EQ(r["undo"]["label"], "delete main/never");
+  EXPECT_EQ(r["selection"]["kind"], "none");
+  r = replayOn(model, "- select: drop/paint\n- key: delete\n");
+  EXPECT_EQ(r["undo"]["label"], "delete drop/paint");
+  r = replayOn(model, "- select: high\n- key: delete\n");
+  EXPECT_EQ(r["undo"]["depth"], 0);
+  EXPECT_NE(r["message"].get<std::string>().find("'high' is used by the net: main/watching (c0)"), std::string::npos)
+      << r["message"];
+}
+
 TEST_F(HeadlessIde, AKeyboardSensorHearsTheWorldViewsKeysWhileTheViewerIsInside) {
   // tests/data/input/console.gdpn.yaml with a camera inside the booth: 'go' waits for the g key
   std::ifstream source(std::string(GDPN_SOURCE_DIR) + "/tests/data/input/console.gdpn.yaml");

@@ -90,6 +90,30 @@ TEST(SceneEdit, ARenameCarriesTheMarkingAndADuplicateStandsBesideItsSource) {
   EXPECT_TRUE(sim) << diags.str();
 }
 
+TEST(SceneEdit, AReparentedSubtreeKeepsItsFieldsAndTheMarkingFollowsIt) {
+  auto doc = openFactory();
+  ASSERT_TRUE(doc);
+  const auto before = doc->text();
+  // the box b05 (a token of factory/buffer) under the line group
+  ASSERT_EQ(run(*doc, edit(SceneEditKind::Reparent, "boxes/b05", "line")), "");
+  EXPECT_EQ(doc->scene()->find("boxes/b05"), nullptr);
+  ASSERT_NE(doc->scene()->find("line/b05/box"), nullptr);
+  EXPECT_NE(doc->text().find("line/b05/box"), std::string::npos) << "the marking follows";
+  EXPECT_EQ(doc->text().find("boxes/b05/box"), std::string::npos);
+  // and to the top of the scene
+  ASSERT_EQ(run(*doc, edit(SceneEditKind::Reparent, "line/b05", "")), "");
+  EXPECT_NE(doc->scene()->find("b05/box"), nullptr);
+  // refused: under itself, under a node that takes no children, where a sibling has its name
+  EXPECT_EQ(run(*doc, edit(SceneEditKind::Reparent, "arm", "arm/turn")), "a node cannot go under itself");
+  EXPECT_EQ(run(*doc, edit(SceneEditKind::Reparent, "b05", "line/belt1/#0")), "a Cube holds no other nodes");
+  ASSERT_EQ(run(*doc, edit(SceneEditKind::Add, "line", "arm", "Group")), "");
+  EXPECT_EQ(run(*doc, edit(SceneEditKind::Reparent, "line/arm", "")), "'the scene' has a child 'arm' already");
+  EXPECT_EQ(run(*doc, edit(SceneEditKind::Reparent, "arm", "")), "'arm' is there already");
+  while (doc->undo()) {
+  }
+  EXPECT_EQ(doc->text(), before);
+}
+
 TEST(SceneEdit, AnySequenceOfSceneAndNetEditsUndoesToTheStartAndRedoesToTheEnd) {
   static const char* kTypes[] = {"Cube", "Sphere", "Group", "Transform", "Body", "Region", "Light"};
   for (std::uint32_t seed = 1; seed <= 4; ++seed) {
@@ -112,10 +136,11 @@ TEST(SceneEdit, AnySequenceOfSceneAndNetEditsUndoesToTheStartAndRedoesToTheEnd) 
         why = doc->execute(std::make_unique<NetEditCommand>(e));
       } else {
         SceneEdit e;
-        e.kind = static_cast<SceneEditKind>(pick(4));
+        e.kind = static_cast<SceneEditKind>(pick(5));
         e.path = paths[pick(paths.size())];
         e.type = kTypes[pick(std::size(kTypes))];
         e.name = pick(3) == 0 ? std::string() : "n" + std::to_string(pick(5));
+        if (e.kind == SceneEditKind::Reparent) e.name = paths[pick(paths.size())];  // under another node of the walk
         e.with_marking = pick(2) == 0;
         why = run(*doc, e);
       }

@@ -24,6 +24,8 @@ enum class SceneEditKind {
   Delete,     ///< the node at `path` and its subtree
   Rename,     ///< the node at `path` to `name`
   Duplicate,  ///< a copy of the subtree at `path` beside it, named freshly after it
+  Reparent,   ///< the subtree at `path` moved under the node at `name` ("" the root), last among its
+              ///< children, its own fields kept; the net's marking follows
 };
 
 /// One edit of the scene.
@@ -31,7 +33,7 @@ struct SceneEdit {
   SceneEditKind kind = SceneEditKind::Add;  ///< what to do
   std::string path;                         ///< Add: the parent ("" the root); else the node
   std::string type;                         ///< Add: the node type's name ("Cube", "Body", ...)
-  std::string name;                         ///< Add: the new node's name; Rename: the new name
+  std::string name;                         ///< Add: the new node's name; Rename: the new name; Reparent: the new parent
   bool with_marking = false;                ///< Delete: also take its nodes out of the net's markings
 };
 

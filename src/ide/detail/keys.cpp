@@ -19,6 +19,7 @@ const std::vector<std::pair<int, std::string>>& sensorKeys() {
     k.emplace_back(GLFW_KEY_RIGHT, "right");
     k.emplace_back(GLFW_KEY_UP, "up");
     k.emplace_back(GLFW_KEY_DOWN, "down");
+    k.emplace_back(GLFW_KEY_DELETE, "delete");
     return k;
   }();
   return keys;

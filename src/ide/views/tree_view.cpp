@@ -109,6 +109,17 @@ void nodeMenu(TreeState& st, const scene::Scene& s, const scene::Node& node, con
   ImGui::EndPopup();
 }
 
+/// A row (or the Scene heading, `parent` "") that takes a node dragged from the tree: the node
+/// moves under it (edit mode only).
+void dropTarget(TreeState& st, const std::string& parent) {
+  if (st.app.run().mode() != RunMode::Edit || !ImGui::BeginDragDropTarget()) return;
+  if (const ImGuiPayload* payload = ImGui::AcceptDragDropPayload(kNodePayload)) {
+    const std::string dragged(static_cast<const char*>(payload->Data), static_cast<std::size_t>(payload->DataSize));
+    if (dragged != parent) st.request = SceneEdit{SceneEditKind::Reparent, dragged, {}, parent, false};
+  }
+  ImGui::EndDragDropTarget();
+}
+
 void drawNode(TreeState& st, scene::Node& node) {
   const auto path = node.path();
   const bool is_token = st.tokens.count(path) > 0;
@@ -136,6 +147,8 @@ void drawNode(TreeState& st, scene::Node& node) {
     ImGui::Text("%s", path.c_str());
     ImGui::EndDragDropSource();
   }
+  // dropped onto another row, a node moves under it
+  dropTarget(st, path);
   if (const auto* s = st.app.shownScene()) nodeMenu(st, *s, node, path);
   if (st.shown < 200) noteItem(path, st.rows);
   ++st.shown;
@@ -175,6 +188,7 @@ void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
   } else {
     const bool open = ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen);
     noteItem("header", st.menu_at);
+    dropTarget(st, "");
     if (app.run().mode() == RunMode::Edit && ImGui::BeginPopupContextItem("##scene_menu")) {
       addMenu(st, *s, "");
       ImGui::EndPopup();
