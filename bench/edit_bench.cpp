@@ -84,17 +84,17 @@ void SetTransition(benchmark::State& state) {
 }
 
 void AddNode(benchmark::State& state) {
-  timeCommand(state, [] { return std::make_unique<SceneEditCommand>(SceneEdit{SceneEditKind::Add, "line", "Cube", {}, false}); });
+  timeCommand(state, [] { return std::make_unique<SceneEditCommand>(SceneEdit{SceneEditKind::Add, "line", "Cube", {}, false, {}}); });
 }
 
 void DuplicateSubtree(benchmark::State& state) {
-  timeCommand(state, [] { return std::make_unique<SceneEditCommand>(SceneEdit{SceneEditKind::Duplicate, "arm", {}, {}, false}); });
+  timeCommand(state, [] { return std::make_unique<SceneEditCommand>(SceneEdit{SceneEditKind::Duplicate, "arm", {}, {}, false, {}}); });
 }
 
 void DeleteTokenNode(benchmark::State& state) {
   // a node the marking holds: the scene and the net both change
   timeCommand(state, [] {
-    return std::make_unique<SceneEditCommand>(SceneEdit{SceneEditKind::Delete, "boxes/b05", {}, {}, true});
+    return std::make_unique<SceneEditCommand>(SceneEdit{SceneEditKind::Delete, "boxes/b05", {}, {}, true, {}});
   });
 }
 

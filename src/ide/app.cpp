@@ -176,7 +176,7 @@ void App::deleteSelection() {
   const auto sel = doc_->selection();
   std::string why;
   if (sel.kind == SelectionKind::Node) {
-    why = doc_->execute(std::make_unique<SceneEditCommand>(SceneEdit{SceneEditKind::Delete, sel.name, {}, {}, false}));
+    why = doc_->execute(std::make_unique<SceneEditCommand>(SceneEdit{SceneEditKind::Delete, sel.name, {}, {}, false, {}}));
   } else if (sel.kind == SelectionKind::Place || sel.kind == SelectionKind::Transition) {
     const auto at = locateConstruct(doc_->model().net, sel.name);
     why = at ? doc_->execute(std::make_unique<NetEditCommand>(makeNetEdit(NetEditKind::Delete, at->page, at->name)))
@@ -186,6 +186,54 @@ void App::deleteSelection() {
   }
   message = why.empty() ? "deleted " + sel.name : why;
   if (why.empty()) doc_->select({});
+}
+
+void App::copySelection() {
+  const auto& sel = doc_->selection();
+  const auto* s = doc_->scene();
+  const auto* node = sel.kind == SelectionKind::Node && s != nullptr ? s->find(sel.name) : nullptr;
+  if (node == nullptr) {
+    message = "select a node of the scene to copy";
+    return;
+  }
+  // the clipboard holds a model file whose scene is the subtree: it pastes into any model, and
+  // reads as text anywhere else
+  auto fragment = std::make_shared<scene::Scene>(s->types());
+  fragment->copy(*node, fragment->root());
+  model::Model m;
+  m.scene = fragment;
+  copied = model::writeModel(m);
+  ImGui::SetClipboardText(copied.c_str());
+  message = "copied " + sel.name + " (as a model file)";
+}
+
+void App::paste() {
+  if (run_.mode() != RunMode::Edit) {
+    message = "the run's plant is not edited: Reset to edit the model";
+    return;
+  }
+  const char* text = ImGui::GetClipboardText();
+  core::Diagnostics diags;
+  auto m = text != nullptr ? model::parseModel(text, "<clipboard>", diags) : std::nullopt;
+  if (!m || !m->scene || m->scene->root().children().empty()) {
+    message = "the clipboard holds no scene nodes of a model file";
+    return;
+  }
+  // under the selected node when it takes children, else beside it, else at the top
+  const auto& sel = doc_->selection();
+  const auto* s = doc_->scene();
+  const auto* node = sel.kind == SelectionKind::Node && s != nullptr ? s->find(sel.name) : nullptr;
+  std::string parent;
+  if (node != nullptr) parent = node->type().has_children ? sel.name : (node->parent() == &s->root() ? "" : node->parent()->path());
+  SceneEdit e{SceneEditKind::Paste, parent, {}, {}, false, m->scene};
+  auto command = std::make_unique<SceneEditCommand>(std::move(e));
+  const auto* edit = command.get();  // kept on the undo stack when it succeeds
+  const auto why = doc_->execute(std::move(command));
+  message = why.empty() ? "pasted " + edit->made() : why;
+  if (why.empty()) {
+    doc_->select(Selection::node(edit->made()));
+    reveal_selection = true;
+  }
 }
 
 void App::saveAs(const std::string& path) {
@@ -320,6 +368,11 @@ bool App::perform(const Action& a, std::string& error) {
       else if (a.text == "undo") undo();
       else if (a.text == "redo") redo();
       else if (a.text == "save") save();
+      else if (a.text == "copy") copySelection();
+      else if (a.text == "cut") {
+        copySelection();
+        deleteSelection();
+      } else if (a.text == "paste") paste();
       else if (a.text == "restore" || a.text == "discard") {
         if (!restore_offered) error = "no autosave is offered";
         else if (a.text == "restore") restoreAutosave();
@@ -441,6 +494,12 @@ void App::frame(float width, float height, double wall_seconds) {
   if (io.KeyCtrl && !io.WantTextInput) {
     if (ImGui::IsKeyPressed(GLFW_KEY_Z, false)) undo();
     if (ImGui::IsKeyPressed(GLFW_KEY_Y, false)) redo();
+    if (ImGui::IsKeyPressed(GLFW_KEY_C, false)) copySelection();
+    if (ImGui::IsKeyPressed(GLFW_KEY_X, false)) {
+      copySelection();
+      deleteSelection();
+    }
+    if (ImGui::IsKeyPressed(GLFW_KEY_V, false)) paste();
     if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) {
       if (io.KeyShift) save_as_open = true;
       else save();
@@ -518,6 +577,7 @@ void App::frame(float width, float height, double wall_seconds) {
                          {"net_width", splitters_.net_width},
                          {"diagnostics_width", splitters_.diagnostics_width}};
   report["message"] = message;
+  report["copied"] = copied;
   report_ = std::move(report);
 }
 

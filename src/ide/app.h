@@ -130,6 +130,11 @@ class App {
   /// Deletes the selected node (refused, with where, when the net holds it: the tree's menu
   /// offers to take it out of the marking too) or place or transition (with its arcs); edit mode.
   void deleteSelection();
+  /// Puts the selected node's subtree on the clipboard as a model file holding it (Ctrl+C).
+  void copySelection();
+  /// Pastes the clipboard's scene nodes (a model file's) under the selected node, or beside it
+  /// when it takes no children, or at the top; names taken there get a number (Ctrl+V).
+  void paste();
   /// Saves the model as `path`, which it is from then on (the message says how it went).
   void saveAs(const std::string& path);
   /// Puts the newer autosave offered at the start in place of the model (one undoable step).
@@ -177,6 +182,7 @@ class App {
   bool save_as_open = false;        ///< the Save As field is shown
   std::string save_as_path;         ///< the file name typed into it
   std::string message;              ///< the status bar's message line
+  std::string copied;               ///< what the last copy put on the clipboard (a model file)
   double fps = 0;                   ///< frames per second, smoothed
   int world_level = 0;              ///< how far the world view's resolution is lowered while running (kWorldScales)
   double world_level_age = 0;       ///< wall seconds since world_level last changed

@@ -50,13 +50,17 @@ std::vector<std::string> usesOf(const net::NetSpec& net, const std::string& path
 SceneEditCommand::SceneEditCommand(SceneEdit edit) : edit_(std::move(edit)) {}
 
 std::string SceneEditCommand::apply(Document& doc) {
+  made_.clear();
   const scene::Scene* current = doc.scene();
-  if (current == nullptr && !(edit_.kind == SceneEditKind::Add && edit_.path.empty())) return "the model has no scene";
+  if (current == nullptr && !((edit_.kind == SceneEditKind::Add || edit_.kind == SceneEditKind::Paste) && edit_.path.empty())) {
+    return "the model has no scene";
+  }
   std::shared_ptr<scene::Scene> edited = current ? std::shared_ptr<scene::Scene>(current->clone())
                                                  : std::make_shared<scene::Scene>();
   net::NetSpec net = doc.model().net;
   bool net_changed = false;
-  scene::Node* node = edit_.kind == SceneEditKind::Add && edit_.path.empty() ? &edited->root() : edited->find(edit_.path);
+  const bool at_root = (edit_.kind == SceneEditKind::Add || edit_.kind == SceneEditKind::Paste) && edit_.path.empty();
+  scene::Node* node = at_root ? &edited->root() : edited->find(edit_.path);
   if (node == nullptr) return "no node '" + edit_.path + "'";
   const bool root = node == &edited->root();
   switch (edit_.kind) {
@@ -114,6 +118,19 @@ std::string SceneEditCommand::apply(Document& doc) {
       });
       break;
     }
+    case SceneEditKind::Paste: {
+      if (!edit_.fragment || edit_.fragment->root().children().empty()) return "nothing to paste";
+      if (!root && !node->type().has_children) return "a " + node->type().name + " holds no other nodes";
+      for (const auto& top : edit_.fragment->root().children()) {
+        // an unnamed node stays unnamed; a name taken there gets a number
+        const bool free = top->name().empty() || node->child(top->name()) == nullptr;
+        const std::string name = free ? top->name() : edited->freshName(*node, top->name());
+        const scene::Node* copy = edited->copy(*top, *node, name);
+        if (copy == nullptr) return "'" + top->name() + "' cannot be pasted there";
+        if (made_.empty()) made_ = copy->path();
+      }
+      break;
+    }
     case SceneEditKind::Reparent: {
       if (root) return "the scene's root has no parent";
       scene::Node* parent = edit_.name.empty() ? &edited->root() : edited->find(edit_.name);
@@ -168,6 +185,7 @@ std::string SceneEditCommand::label() const {
     case SceneEditKind::Delete: return "delete " + edit_.path;
     case SceneEditKind::Rename: return "rename " + edit_.path + " to " + edit_.name;
     case SceneEditKind::Duplicate: return "duplicate " + edit_.path;
+    case SceneEditKind::Paste: return "paste under " + (edit_.path.empty() ? std::string("the scene") : edit_.path);
     case SceneEditKind::Reparent: return "move " + edit_.path + " under " + (edit_.name.empty() ? "the scene" : edit_.name);
   }
   return "edit the scene";

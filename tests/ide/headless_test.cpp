@@ -579,6 +579,27 @@ TEST_F(HeadlessIde, ANodeDroppedOnAnotherRowMovesUnderItAndDeleteRemovesTheSelec
       << r["message"];
 }
 
+TEST_F(HeadlessIde, ASubtreeIsCopiedAsAModelFileAndPastedUnderTheSelection) {
+  const auto model = write("bin.gdpn.yaml", ide::testing::kBinModel);
+  auto r = replayOn(model, "- select: drop\n- press: copy\n- select: high\n- press: paste\n");
+  EXPECT_EQ(r["undo"]["label"], "paste under high");
+  EXPECT_EQ(r["selection"]["name"], "high/drop");
+  EXPECT_TRUE(r["tree"]["rows"].contains("high/drop")) << r["tree"]["rows"].dump();
+  // the clipboard holds a model file: another model reads it, and its scene is the subtree
+  const auto copied = write("copied.gdpn.yaml", r["copied"].get<std::string>());
+  EXPECT_EQ(gdpn::testing::runGdpn("check '" + copied + "'").code, 0) << r["copied"];
+  EXPECT_NE(r["copied"].get<std::string>().find("name: drop"), std::string::npos) << r["copied"];
+  EXPECT_NE(r["copied"].get<std::string>().find("name: box"), std::string::npos) << r["copied"];
+  // pasted twice at the top: the second copy gets a number; cut takes the source away
+  r = replayOn(model, "- select: drop\n- press: copy\n- select: view\n- press: paste\n");
+  EXPECT_EQ(r["selection"]["name"], "drop_1") << "a Camera takes no children: beside it, renamed";
+  r = replayOn(model, "- select: drop/paint\n- press: cut\n- select: high\n- press: paste\n");
+  EXPECT_TRUE(r["tree"]["rows"].contains("high/paint")) << r["tree"]["rows"].dump();
+  EXPECT_EQ(r["undo"]["depth"], 2);
+  r = replayOn(model, "- select: main/idle\n- press: paste\n");
+  EXPECT_EQ(r["message"], "the clipboard holds no scene nodes of a model file");
+}
+
 TEST_F(HeadlessIde, AKeyboardSensorHearsTheWorldViewsKeysWhileTheViewerIsInside) {
   // tests/data/input/console.gdpn.yaml with a camera inside the booth: 'go' waits for the g key
   std::ifstream source(std::string(GDPN_SOURCE_DIR) + "/tests/data/input/console.gdpn.yaml");

@@ -136,11 +136,17 @@ TEST(SceneEdit, AnySequenceOfSceneAndNetEditsUndoesToTheStartAndRedoesToTheEnd) 
         why = doc->execute(std::make_unique<NetEditCommand>(e));
       } else {
         SceneEdit e;
-        e.kind = static_cast<SceneEditKind>(pick(5));
+        e.kind = static_cast<SceneEditKind>(pick(6));
         e.path = paths[pick(paths.size())];
         e.type = kTypes[pick(std::size(kTypes))];
         e.name = pick(3) == 0 ? std::string() : "n" + std::to_string(pick(5));
         if (e.kind == SceneEditKind::Reparent) e.name = paths[pick(paths.size())];  // under another node of the walk
+        if (e.kind == SceneEditKind::Paste && paths.size() > 1) {
+          // a copy of a node of the walk, as the clipboard would hold it
+          auto fragment = std::make_shared<scene::Scene>(doc->scene()->types());
+          fragment->copy(*doc->scene()->find(paths[1 + pick(paths.size() - 1)]), fragment->root());
+          e.fragment = fragment;
+        }
         e.with_marking = pick(2) == 0;
         why = run(*doc, e);
       }

@@ -26,6 +26,8 @@ enum class SceneEditKind {
   Duplicate,  ///< a copy of the subtree at `path` beside it, named freshly after it
   Reparent,   ///< the subtree at `path` moved under the node at `name` ("" the root), last among its
               ///< children, its own fields kept; the net's marking follows
+  Paste,      ///< copies of the top nodes of `fragment` under `path` ("" the root), renamed freshly
+              ///< where a name is taken
 };
 
 /// One edit of the scene.
@@ -35,6 +37,7 @@ struct SceneEdit {
   std::string type;                         ///< Add: the node type's name ("Cube", "Body", ...)
   std::string name;                         ///< Add: the new node's name; Rename: the new name; Reparent: the new parent
   bool with_marking = false;                ///< Delete: also take its nodes out of the net's markings
+  std::shared_ptr<const scene::Scene> fragment;  ///< Paste: what to paste (a model file's scene, read)
 };
 
 /// Where the net's top-level pages use the subtree at `path`: "factory/P1 (b0)", one entry a

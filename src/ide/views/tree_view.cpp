@@ -65,7 +65,7 @@ void addMenu(TreeState& st, const scene::Scene& s, const std::string& parent) {
   if (!beginMenu("Add", st.menu)) return;
   for (const scene::NodeType* type : s.types().all()) {
     ImGui::PushStyleColor(ImGuiCol_Text, colourOf(type->kind));
-    if (menuItem(type->name.c_str(), st.menu)) st.request = SceneEdit{SceneEditKind::Add, parent, type->name, {}, false};
+    if (menuItem(type->name.c_str(), st.menu)) st.request = SceneEdit{SceneEditKind::Add, parent, type->name, {}, false, {}};
     ImGui::PopStyleColor();
     if (ImGui::IsItemHovered() && !type->doc.empty()) ImGui::SetTooltip("%s", type->doc.c_str());
   }
@@ -89,16 +89,16 @@ void nodeMenu(TreeState& st, const scene::Scene& s, const scene::Node& node, con
     }
     if (ImGui::InputText("name", &app.tree_rename, ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll) &&
         app.tree_rename != node.name()) {
-      st.request = SceneEdit{SceneEditKind::Rename, path, {}, app.tree_rename, false};
+      st.request = SceneEdit{SceneEditKind::Rename, path, {}, app.tree_rename, false, {}};
       ImGui::CloseCurrentPopup();
     }
     if (node.type().has_children) addMenu(st, s, path);
-    if (menuItem("Duplicate", st.menu)) st.request = SceneEdit{SceneEditKind::Duplicate, path, {}, {}, false};
+    if (menuItem("Duplicate", st.menu)) st.request = SceneEdit{SceneEditKind::Duplicate, path, {}, {}, false, {}};
     const auto uses = usesOf(app.document().model().net, path);
     if (uses.empty()) {
-      if (menuItem("Delete", st.menu)) st.request = SceneEdit{SceneEditKind::Delete, path, {}, {}, false};
+      if (menuItem("Delete", st.menu)) st.request = SceneEdit{SceneEditKind::Delete, path, {}, {}, false, {}};
     } else {
-      if (menuItem("Delete, and from the marking", st.menu)) st.request = SceneEdit{SceneEditKind::Delete, path, {}, {}, true};
+      if (menuItem("Delete, and from the marking", st.menu)) st.request = SceneEdit{SceneEditKind::Delete, path, {}, {}, true, {}};
       if (ImGui::IsItemHovered()) {
         std::string list;
         for (const auto& u : uses) list += "\n  " + u;
@@ -115,7 +115,7 @@ void dropTarget(TreeState& st, const std::string& parent) {
   if (st.app.run().mode() != RunMode::Edit || !ImGui::BeginDragDropTarget()) return;
   if (const ImGuiPayload* payload = ImGui::AcceptDragDropPayload(kNodePayload)) {
     const std::string dragged(static_cast<const char*>(payload->Data), static_cast<std::size_t>(payload->DataSize));
-    if (dragged != parent) st.request = SceneEdit{SceneEditKind::Reparent, dragged, {}, parent, false};
+    if (dragged != parent) st.request = SceneEdit{SceneEditKind::Reparent, dragged, {}, parent, false, {}};
   }
   ImGui::EndDragDropTarget();
 }
