@@ -189,19 +189,34 @@ void App::deleteSelection() {
 }
 
 void App::copySelection() {
+  // the clipboard holds a model file: the node's subtree as its scene, or the place or
+  // transition on a page; it pastes into any model, and reads as text anywhere else
   const auto& sel = doc_->selection();
-  const auto* s = doc_->scene();
-  const auto* node = sel.kind == SelectionKind::Node && s != nullptr ? s->find(sel.name) : nullptr;
-  if (node == nullptr) {
-    message = "select a node of the scene to copy";
+  model::Model m;
+  if (sel.kind == SelectionKind::Node) {
+    const auto* s = doc_->scene();
+    const auto* node = s != nullptr ? s->find(sel.name) : nullptr;
+    if (node == nullptr) return;
+    auto fragment = std::make_shared<scene::Scene>(s->types());
+    fragment->copy(*node, fragment->root());
+    m.scene = fragment;
+  } else if (sel.kind == SelectionKind::Place || sel.kind == SelectionKind::Transition) {
+    const auto at = locateConstruct(doc_->model().net, sel.name);
+    auto* page = at ? findPage(doc_->editableNet(), at->page) : nullptr;
+    if (page == nullptr) return;
+    net::PageSpec fragment;
+    fragment.name = at->page;
+    for (const auto& p : page->places) {
+      if (p.name == at->name) fragment.places.push_back(p);
+    }
+    for (const auto& t : page->transitions) {
+      if (t.name == at->name) fragment.transitions.push_back(t);
+    }
+    m.net.pages.push_back(std::move(fragment));
+  } else {
+    message = "select a node, a place or a transition to copy";
     return;
   }
-  // the clipboard holds a model file whose scene is the subtree: it pastes into any model, and
-  // reads as text anywhere else
-  auto fragment = std::make_shared<scene::Scene>(s->types());
-  fragment->copy(*node, fragment->root());
-  model::Model m;
-  m.scene = fragment;
   copied = model::writeModel(m);
   ImGui::SetClipboardText(copied.c_str());
   message = "copied " + sel.name + " (as a model file)";
@@ -215,8 +230,29 @@ void App::paste() {
   const char* text = ImGui::GetClipboardText();
   core::Diagnostics diags;
   auto m = text != nullptr ? model::parseModel(text, "<clipboard>", diags) : std::nullopt;
+  // a model file's places and transitions go into the net view's page
+  const net::PageSpec* constructs = nullptr;
+  if (m) {
+    for (const auto& page : m->net.pages) {
+      if (!page.places.empty() || !page.transitions.empty()) constructs = &page;
+    }
+  }
+  if (constructs != nullptr) {
+    auto e = makeNetEdit(NetEditKind::Paste, net_view_->layout.page, {});
+    e.fragment = *constructs;
+    auto command = std::make_unique<NetEditCommand>(std::move(e));
+    const auto* edit = command.get();  // kept on the undo stack when it succeeds
+    const auto why = doc_->execute(std::move(command));
+    message = why.empty() ? "pasted " + edit->made() + " into " + net_view_->layout.page : why;
+    if (why.empty()) {
+      const auto& prefix = net_view_->view.prefix.empty() ? net_view_->layout.page : net_view_->view.prefix;
+      const bool place = !constructs->places.empty();
+      doc_->select({place ? SelectionKind::Place : SelectionKind::Transition, prefix + "/" + edit->made()});
+    }
+    return;
+  }
   if (!m || !m->scene || m->scene->root().children().empty()) {
-    message = "the clipboard holds no scene nodes of a model file";
+    message = "the clipboard holds no scene nodes, places or transitions of a model file";
     return;
   }
   // under the selected node when it takes children, else beside it, else at the top

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
 
 #include "gdpn/core/text.h"
 #include "gdpn/ide/document.h"
@@ -130,8 +131,43 @@ std::string replaceNamed(net::PageSpec& p, std::vector<Spec>& list, const std::s
   return {};
 }
 
+/// Adds `fragment`'s constructs to `p`, renamed where taken; the first one's name into `made`.
+std::string paste(net::PageSpec& p, const net::PageSpec& fragment, std::string& made) {
+  if (fragment.places.empty() && fragment.transitions.empty()) return "nothing to paste";
+  std::map<std::string, std::string> renamed;
+  const auto fresh = [&](const std::string& name) {
+    std::string n = name;
+    for (int k = 1; taken(p, n); ++k) n = name + "_" + std::to_string(k);
+    renamed[name] = n;
+    if (made.empty()) made = n;
+    return n;
+  };
+  const auto shifted = [](std::optional<net::EditorPos> at) {
+    if (at) at = net::EditorPos{(*at)[0] + 0.5, (*at)[1] + 0.5};
+    return at;
+  };
+  for (auto place : fragment.places) {
+    place.name = fresh(place.name);
+    place.position = shifted(place.position);
+    p.places.push_back(std::move(place));
+  }
+  for (auto t : fragment.transitions) {
+    t.name = fresh(t.name);
+    t.position = shifted(t.position);
+    p.transitions.push_back(std::move(t));
+  }
+  for (auto a : fragment.arcs) {
+    const auto from = renamed.find(a.from), to = renamed.find(a.to);
+    if (from == renamed.end() || to == renamed.end()) continue;
+    a.from = from->second;
+    a.to = to->second;
+    p.arcs.push_back(std::move(a));
+  }
+  return {};
+}
+
 /// Performs `e` on `p` (a copy of the page in `net`); "" or why not.
-std::string edit(net::NetSpec& net, net::PageSpec& p, const NetEdit& e) {
+std::string edit(net::NetSpec& net, net::PageSpec& p, const NetEdit& e, std::string& made) {
   switch (e.kind) {
     case NetEditKind::AddPlace: return addNamed(p, p.places, e);
     case NetEditKind::AddTransition: return addNamed(p, p.transitions, e);
@@ -224,6 +260,7 @@ std::string edit(net::NetSpec& net, net::PageSpec& p, const NetEdit& e) {
       if (auto why = placeProblem(*e.place); !why.empty()) return why;
       return replaceNamed(p, p.places, e.name, *e.place, "place");
     }
+    case NetEditKind::Paste: return e.fragment ? paste(p, *e.fragment, made) : "nothing to paste";
     case NetEditKind::SetTransition: {
       if (!e.transition) return "no transition given";
       const auto& t = *e.transition;
@@ -396,7 +433,8 @@ std::string NetEditCommand::apply(Document& doc) {
   net::PageSpec* page = findPage(net, edit_.page, &type_);
   if (page == nullptr) return "no page or page type '" + edit_.page + "'";
   net::PageSpec changed = *page;
-  if (auto why = edit(net, changed, edit_); !why.empty()) return why;
+  made_.clear();
+  if (auto why = edit(net, changed, edit_, made_); !why.empty()) return why;
   before_ = std::move(*page);
   *page = std::move(changed);
   doc.touched(false);
@@ -423,6 +461,7 @@ std::string NetEditCommand::label() const {
     case NetEditKind::SetArcWeight: return "set the weight of " + edit_.name + " -> " + edit_.new_name;
     case NetEditKind::SetPlace: return "edit place " + edit_.page + "/" + edit_.name;
     case NetEditKind::SetTransition: return "edit transition " + edit_.page + "/" + edit_.name;
+    case NetEditKind::Paste: return "paste into " + edit_.page;
   }
   return "edit the net";
 }

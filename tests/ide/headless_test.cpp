@@ -597,7 +597,22 @@ TEST_F(HeadlessIde, ASubtreeIsCopiedAsAModelFileAndPastedUnderTheSelection) {
   EXPECT_TRUE(r["tree"]["rows"].contains("high/paint")) << r["tree"]["rows"].dump();
   EXPECT_EQ(r["undo"]["depth"], 2);
   r = replayOn(model, "- select: main/idle\n- press: paste\n");
-  EXPECT_EQ(r["message"], "the clipboard holds no scene nodes of a model file");
+  EXPECT_EQ(r["message"], "the clipboard holds no scene nodes, places or transitions of a model file");
+}
+
+TEST_F(HeadlessIde, APlaceOrTransitionIsCopiedAsAModelFileAndPastedIntoTheNetViewsPage) {
+  const auto model = write("bin.gdpn.yaml", ide::testing::kBinModel);
+  // idle holds 2 tokens; its copy keeps them and gets a free name
+  auto r = replayOn(model, "- select: main/idle\n- press: copy\n- press: paste\n- press: save\n");
+  EXPECT_EQ(r["undo"]["label"], "paste into main");
+  EXPECT_EQ(r["selection"]["name"], "main/idle_1");
+  EXPECT_NE(r["copied"].get<std::string>().find("idle: {tokens: 2}"), std::string::npos) << r["copied"];
+  const auto saved = gdpn::testing::fileBytes(model);
+  EXPECT_NE(saved.find("idle_1: {tokens: 2"), std::string::npos) << saved;
+  EXPECT_EQ(gdpn::testing::runGdpn("check '" + model + "'").code, 0) << saved;
+  r = replayOn(model, "- select: main/work\n- press: cut\n- press: paste\n");
+  EXPECT_EQ(r["selection"]["name"], "main/work") << "cut frees the name";
+  EXPECT_EQ(r["undo"]["depth"], 2);
 }
 
 TEST_F(HeadlessIde, AKeyboardSensorHearsTheWorldViewsKeysWhileTheViewerIsInside) {

@@ -187,7 +187,7 @@ class RandomEdits {
     for (const auto& p : page.places) names.push_back(p.name);
     for (const auto& t : page.transitions) names.push_back(t.name);
     NetEdit e;
-    e.kind = static_cast<NetEditKind>(pick(10));
+    e.kind = static_cast<NetEditKind>(pick(11));
     e.page = page.name;
     e.name = pick(names);
     e.new_name = pick(names);
@@ -209,6 +209,13 @@ class RandomEdits {
         default: p.name = "renamed"; break;  // refused: a rename is its own edit
       }
       e.place = p;
+    } else if (e.kind == NetEditKind::Paste) {
+      // what a copy puts on the clipboard: a construct of this page, or of another
+      const net::PageSpec& from = *findPage(doc_.editableNet(), pick(pages_));
+      net::PageSpec fragment;
+      if (!from.places.empty() && pick(2) == 0) fragment.places.push_back(from.places[pick(from.places.size())]);
+      if (!from.transitions.empty() && pick(2) == 0) fragment.transitions.push_back(from.transitions[pick(from.transitions.size())]);
+      e.fragment = fragment;  // empty now and then: refused
     } else if (e.kind == NetEditKind::SetTransition && !page.transitions.empty()) {
       net::TransitionSpec t = page.transitions[pick(page.transitions.size())];
       e.name = t.name;

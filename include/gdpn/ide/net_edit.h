@@ -29,6 +29,8 @@ enum class NetEditKind {
   SetArcWeight,   ///< that arc's weight on its first slot (a0 when it has none)
   SetPlace,       ///< place `name` becomes `place` (its slots, marking, capacities, sensors, scripts)
   SetTransition,  ///< transition `name` becomes `transition` (duration, priority, probability, scripts)
+  Paste,          ///< the places, transitions and arcs of `fragment` added (a name taken gets a number;
+                  ///< arcs kept where both ends come along; positions half a unit down and right)
 };
 
 /// One edit of one page's net (a top-level page or a page type, by name).
@@ -48,6 +50,8 @@ struct NetEdit {
   std::optional<net::PlaceSpec> place;
   /// SetTransition: the transition as it is to be (same name; its position is kept).
   std::optional<net::TransitionSpec> transition;
+  /// Paste: what to paste (a page of a model file, read).
+  std::optional<net::PageSpec> fragment;
 };
 
 /// A NetEdit of `kind` on `page`: construct `name` (and `second`: a new name, or an arc's
@@ -65,9 +69,12 @@ class NetEditCommand final : public Command {
   [[nodiscard]] std::uint64_t mergeKey() const override;
   void absorb(const Command& next) override;
   [[nodiscard]] bool changesScene() const override { return false; }
+  /// After apply(): the name of the first construct a Paste added ("" otherwise).
+  [[nodiscard]] const std::string& made() const { return made_; }
 
  private:
   NetEdit edit_;
+  std::string made_;
   std::optional<net::PageSpec> before_;  // the page as it was, for revert
   bool type_ = false;                    // the page is a page type
 };
