@@ -188,6 +188,19 @@ void App::deleteSelection() {
   if (why.empty()) doc_->select({});
 }
 
+const TokenTypes& App::tokenTypes() {
+  if (token_types_revision_ == doc_->revision()) return token_types_;
+  const auto& m = doc_->model();
+  token_types_ = propagateTokenTypes(m.net, [&](const std::string& page, const std::string& path) -> const scene::NodeType* {
+    const auto it = m.type_scenes.find(page);
+    const scene::Scene* s = it != m.type_scenes.end() ? it->second.get() : doc_->scene();
+    const auto* node = s != nullptr ? s->find(path) : nullptr;
+    return node != nullptr ? &node->type() : nullptr;
+  });
+  token_types_revision_ = doc_->revision();
+  return token_types_;
+}
+
 void App::copySelection() {
   // the clipboard holds a model file: the node's subtree as its scene, or the place or
   // transition on a page; it pastes into any model, and reads as text anywhere else

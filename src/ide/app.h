@@ -16,6 +16,7 @@
 #include "gdpn/ide/document.h"
 #include "gdpn/ide/layout.h"
 #include "gdpn/ide/manipulator.h"
+#include "gdpn/ide/token_types.h"
 #include "gdpn/ide/orbit.h"
 #include "gdpn/ide/replay.h"
 #include "gdpn/ide/run_control.h"
@@ -143,6 +144,9 @@ class App {
   void discardAutosave();
   /// Reset of the run (errors to the Diagnostics view).
   void reset();
+  /// The node types propagated through the edited net and what they flag (token_types.h), found
+  /// again when the document changed.
+  [[nodiscard]] const TokenTypes& tokenTypes();
   /// The net view's page, layout and viewport (views/net_view.cpp).
   [[nodiscard]] NetViewState& netView() { return *net_view_; }
   /// The compile errors of the run, if it failed to build.
@@ -219,6 +223,8 @@ class App {
   void drawRestoreOffer(nlohmann::json& report);
   std::unique_ptr<Document> doc_;
   std::unique_ptr<NetViewState> net_view_;
+  TokenTypes token_types_;
+  std::uint64_t token_types_revision_ = ~std::uint64_t{0};
   RunControl run_;
   Splitters splitters_;
   nlohmann::json report_;

@@ -615,6 +615,30 @@ TEST_F(HeadlessIde, APlaceOrTransitionIsCopiedAsAModelFileAndPastedIntoTheNetVie
   EXPECT_EQ(r["undo"]["depth"], 2);
 }
 
+TEST_F(HeadlessIde, TheContentsViewShowsEachSlotsNodeTypeAndTheScriptsAlongATokensPath) {
+  // the factory's P1: three joints; the path of b0's joint runs through the arm's transitions
+  const std::string start = std::string(kTallInspector) + "- select: factory/P1\n";
+  auto r = replay(start + "- click: [inspector, contents, grid, b0]\n");
+  auto contents = r["inspector"]["contents"];
+  EXPECT_EQ(contents["types"]["b0"], nlohmann::json::array({"Joint"}));
+  EXPECT_TRUE(contents["conflicts"].empty());
+  EXPECT_TRUE(contents["unknown"].empty());
+  const auto path = contents["path"];
+  ASSERT_GE(path.size(), 3u) << path.dump();
+  EXPECT_EQ(path[0], "P1");
+  EXPECT_EQ(path[1], "pickup");
+  r = replay(start + "- click: [inspector, contents, grid, b0]\n- click: [inspector, contents, path_header]\n");
+  contents = r["inspector"]["contents"];
+  ASSERT_TRUE(contents["path_scripts"].is_array()) << contents.dump();
+  EXPECT_EQ(contents["path_scripts"][0]["what"], "pickup pre_fire");
+  // a script reading a field a Joint lacks is flagged before any run
+  r = replay(std::string(kTallInspector) + "- select: factory/pickup\n- click: [inspector, contents, editors, pre_fire, edit]\n"
+             "- type: \"\\nself.b0.taget1 = 5\"\n- click: [1100, 700]\n");
+  contents = r["inspector"]["contents"];
+  ASSERT_EQ(contents["unknown"].size(), 1u) << contents.dump();
+  EXPECT_EQ(contents["unknown"][0], "pre_fire, line 2: self.b0.taget1: a Joint has no field or method 'taget1'");
+}
+
 TEST_F(HeadlessIde, AKeyboardSensorHearsTheWorldViewsKeysWhileTheViewerIsInside) {
   // tests/data/input/console.gdpn.yaml with a camera inside the booth: 'go' waits for the g key
   std::ifstream source(std::string(GDPN_SOURCE_DIR) + "/tests/data/input/console.gdpn.yaml");

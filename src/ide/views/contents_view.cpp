@@ -19,6 +19,7 @@
 #include "gdpn/net/slot.h"
 #include "gdpn/ide/net_edit.h"
 #include "gdpn/ide/python_text.h"
+#include "gdpn/ide/token_types.h"
 #include "gdpn/scene/node.h"
 
 namespace gdpn::ide {
@@ -314,7 +315,78 @@ void slotFields(App& app, const ConstructAt& at, const net::PlaceSpec& place, ne
   report["slot"] = {{"name", name}, {"kind", net::slotKindName(kind)}, {"fields", fields}};
 }
 
-void editPlace(App& app, const ConstructAt& at, const net::PlaceSpec& place, nlohmann::json& report) {
+/// What type propagation says of `construct`: the node types of its slots, the conflicts that
+/// arise there, and its scripts' reads of fields the slot's nodes lack.
+void typeFindings(App& app, const std::string& construct, nlohmann::json& report) {
+  const auto& found = app.tokenTypes();
+  nlohmann::json types = nlohmann::json::object();
+  std::string line;
+  for (int i = 0; i < net::kSlotCount; ++i) {
+    const auto slot = static_cast<net::SlotId>(i);
+    const auto it = found.types.find({construct, slot});
+    if (it == found.types.end() || it->second.empty()) continue;
+    std::string names;
+    for (const auto& t : it->second) names += (names.empty() ? "" : " or ") + t;
+    types[net::slotName(slot)] = it->second;
+    line += (line.empty() ? "" : "; ") + net::slotName(slot) + " holds a " + names;
+  }
+  if (!line.empty()) ImGui::TextDisabled("%s", line.c_str());
+  nlohmann::json conflicts = nlohmann::json::array();
+  for (const auto& c : found.conflicts) {
+    if (c.slot.first != construct) continue;
+    std::string names, from;
+    for (const auto& t : c.types) names += (names.empty() ? "" : " and ") + t;
+    for (const auto& f : c.from) from += (from.empty() ? "" : ", ") + f;
+    const auto text = net::slotName(c.slot.second) + ": a " + names + " meet here (brought by " + from + ")";
+    ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", text.c_str());
+    conflicts.push_back(text);
+  }
+  nlohmann::json unknown = nlohmann::json::array();
+  for (const auto& u : found.unknown) {
+    if (u.construct != construct) continue;
+    const auto text = u.script + ", line " + std::to_string(u.line) + ": " + u.use + ": " + u.message;
+    ImGui::TextColored({1.0f, 0.8f, 0.3f, 1.0f}, "%s", text.c_str());
+    unknown.push_back(text);
+  }
+  report["types"] = types;
+  report["conflicts"] = conflicts;
+  report["unknown"] = unknown;
+}
+
+/// The scripts along the path of slot `slot`'s tokens from `place` (token_types.h), read-only.
+void pathScripts(const net::PageSpec& page, const std::string& place, net::SlotId slot, nlohmann::json& report) {
+  const auto path = tokenPath(page, place, slot);
+  report["path"] = path;
+  const std::string title = "Scripts along the path of " + net::slotName(slot) + "'s tokens (" +
+                            std::to_string(path.size()) + (path.size() == 1 ? " construct)" : " constructs)");
+  const bool open = ImGui::CollapsingHeader(title.c_str());
+  noteItem("path_header", report);
+  if (!open) return;
+  nlohmann::json shown;
+  for (const auto& name : path) {
+    for (const auto& p : page.places) {
+      if (p.name != name) continue;
+      for (const auto& ss : p.scripts) {
+        if (ss.slot != slot) continue;
+        for (const auto k : {net::ScriptKind::OnDeposit, net::ScriptKind::OnRemove}) {
+          if (!net::scriptOf(ss, k).empty()) {
+            scriptBlock(net::scriptOf(ss, k), name + " " + std::string(net::info(k).key) + " (" + net::slotName(slot) + ")", shown);
+          }
+        }
+      }
+    }
+    for (const auto& t : page.transitions) {
+      if (t.name != name) continue;
+      for (const auto k : net::kTransitionScripts) {
+        if (!net::scriptOf(t, k).empty()) scriptBlock(net::scriptOf(t, k), name + " " + std::string(net::info(k).key), shown);
+      }
+    }
+  }
+  report["path_scripts"] = shown["scripts"];
+}
+
+void editPlace(App& app, const ConstructAt& at, const net::PlaceSpec& place, const net::PageSpec& page,
+               nlohmann::json& report) {
   const std::string construct = at.page + "/" + at.name;
   nlohmann::json slots = nlohmann::json::object();
   nlohmann::json grid = nlohmann::json::object();
@@ -358,6 +430,8 @@ void editPlace(App& app, const ConstructAt& at, const net::PlaceSpec& place, nlo
   report["grid"] = grid;
   report["editable"] = true;
   slotFields(app, at, place, app.contents_slot, report);
+  typeFindings(app, construct, report);
+  pathScripts(page, at.name, app.contents_slot, report);
 
   // the chosen slot's scripts, then every other script of the place: side by side
   const auto kind = slotKindOf(place, app.contents_slot);
@@ -446,6 +520,7 @@ void editTransition(App& app, const ConstructAt& at, const net::TransitionSpec& 
   report["duration"] = durationText(t.duration);
   report["fields"] = fields;
   report["editable"] = true;
+  typeFindings(app, construct, report);
   for (const auto k : net::kTransitionScripts) {
     const std::string heading(net::info(k).key);
     scriptEditor(app, construct + "#" + heading, heading, net::scriptOf(t, k), net::info(k).expression,
@@ -469,7 +544,7 @@ bool editContents(App& app, const Selection& sel, nlohmann::json& report) {
   if (sel.kind == SelectionKind::Place) {
     const auto it = std::find_if(page->places.begin(), page->places.end(), [&](const auto& p) { return p.name == at->name; });
     if (it == page->places.end()) return false;
-    editPlace(app, *at, net::PlaceSpec(*it), report);
+    editPlace(app, *at, net::PlaceSpec(*it), *page, report);
     return true;
   }
   const auto it = std::find_if(page->transitions.begin(), page->transitions.end(), [&](const auto& t) { return t.name == at->name; });
