@@ -268,21 +268,76 @@ void App::paste() {
     message = "the clipboard holds no scene nodes, places or transitions of a model file";
     return;
   }
+  std::string made;
+  const auto why = pasteScene(m->scene, made);
+  message = why.empty() ? "pasted " + made : why;
+}
+
+std::string App::pasteScene(std::shared_ptr<const scene::Scene> fragment, std::string& made) {
   // under the selected node when it takes children, else beside it, else at the top
   const auto& sel = doc_->selection();
   const auto* s = doc_->scene();
   const auto* node = sel.kind == SelectionKind::Node && s != nullptr ? s->find(sel.name) : nullptr;
   std::string parent;
   if (node != nullptr) parent = node->type().has_children ? sel.name : (node->parent() == &s->root() ? "" : node->parent()->path());
-  SceneEdit e{SceneEditKind::Paste, parent, {}, {}, false, m->scene};
-  auto command = std::make_unique<SceneEditCommand>(std::move(e));
+  auto command = std::make_unique<SceneEditCommand>(SceneEdit{SceneEditKind::Paste, parent, {}, {}, false, std::move(fragment)});
   const auto* edit = command.get();  // kept on the undo stack when it succeeds
   const auto why = doc_->execute(std::move(command));
-  message = why.empty() ? "pasted " + edit->made() : why;
   if (why.empty()) {
-    doc_->select(Selection::node(edit->made()));
+    made = edit->made();
+    doc_->select(Selection::node(made));
     reveal_selection = true;
   }
+  return why;
+}
+
+void App::importMeshes(const std::string& files) {
+  if (run_.mode() != RunMode::Edit) {
+    message = "the run's plant is not edited: Reset to edit the model";
+    return;
+  }
+  // the files, separated by ';' or new lines; a relative name is looked for beside the model
+  // first, then in the current folder
+  namespace fs = std::filesystem;
+  const auto& model_path = doc_->model().path;
+  const fs::path folder = fs::path(model_path).parent_path();
+  auto fragment = std::make_shared<scene::Scene>(doc_->scene() != nullptr ? doc_->scene()->types() : scene::builtinTypes());
+  std::string errors;
+  int read = 0;
+  std::size_t start = 0;
+  while (start <= files.size()) {
+    auto end = files.find_first_of(";\n", start);
+    if (end == std::string::npos) end = files.size();
+    std::string name = files.substr(start, end - start);
+    start = end + 1;
+    name.erase(0, name.find_first_not_of(" \t"));
+    name.erase(name.find_last_not_of(" \t") + 1);
+    if (name.empty()) continue;
+    std::error_code ec;
+    const fs::path beside = folder / name;
+    const std::string path = fs::path(name).is_relative() && fs::exists(beside, ec) ? beside.string() : name;
+    core::Diagnostics diags;
+    const auto m = model::meshModel(path, model_path.empty() ? "untitled.gdpn.yaml" : model_path, diags);
+    if (!m || !m->scene) {
+      errors += (errors.empty() ? "" : "; ") + diags.str();
+      continue;
+    }
+    for (const auto& top : m->scene->root().children()) {
+      const bool free = fragment->root().child(top->name()) == nullptr;
+      fragment->copy(*top, fragment->root(), free ? std::string() : fragment->freshName(fragment->root(), top->name()));
+    }
+    ++read;
+  }
+  if (read == 0) {
+    message = errors.empty() ? "no mesh files named" : errors;
+    return;
+  }
+  // one step for all of them, under the selected node (beside it, or at the top)
+  std::string made;
+  const auto why = pasteScene(fragment, made);
+  message = !why.empty() ? why
+                         : "imported " + std::to_string(read) + (read == 1 ? " mesh file" : " mesh files") +
+                               (errors.empty() ? std::string() : "; not read: " + errors);
 }
 
 void App::saveAs(const std::string& path) {

@@ -136,6 +136,11 @@ class App {
   /// Pastes the clipboard's scene nodes (a model file's) under the selected node, or beside it
   /// when it takes no children, or at the top; names taken there get a number (Ctrl+V).
   void paste();
+  /// Imports the mesh files named in `files` (separated by ';' or new lines; a relative name is
+  /// looked for beside the model, then in the current folder) through the mesh importers, each
+  /// a Group of Materials and Meshes, under the selected node (beside it, or at the top): one
+  /// step for all of them.
+  void importMeshes(const std::string& files);
   /// Saves the model as `path`, which it is from then on (the message says how it went).
   void saveAs(const std::string& path);
   /// Puts the newer autosave offered at the start in place of the model (one undoable step).
@@ -172,6 +177,7 @@ class App {
   int break_tokens = 1;             ///< the inspector's token count for a place's breakpoint
   std::string break_condition;      ///< the breakpoints' field: a Python condition being typed
   std::string tree_rename;          ///< the tree view's menu: the node's name being typed
+  std::string import_files;         ///< the tree view's menu: the mesh files to import
   ScriptEditing scripts;            ///< the contents view's script editor
   net::SlotId contents_slot = net::kDefaultSlot;  ///< the slot the contents view edits
   std::uint64_t drag_id = 0;        ///< the inspector's current drag (merge key)
@@ -219,6 +225,9 @@ class App {
  private:
   void checkReload();
   void checkAutosave(double wall_seconds);
+  // pastes `fragment`'s top nodes under the selection (beside it, or at the top) as one step and
+  // selects the first; "" or why not, the first node's path into `made`
+  std::string pasteScene(std::shared_ptr<const scene::Scene> fragment, std::string& made);
   void followEdits(double wall_seconds);
   void drawRestoreOffer(nlohmann::json& report);
   std::unique_ptr<Document> doc_;

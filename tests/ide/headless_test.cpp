@@ -639,6 +639,30 @@ TEST_F(HeadlessIde, TheContentsViewShowsEachSlotsNodeTypeAndTheScriptsAlongAToke
   EXPECT_EQ(contents["unknown"][0], "pre_fire, line 2: self.b0.taget1: a Joint has no field or method 'taget1'");
 }
 
+TEST_F(HeadlessIde, SeveralMeshFilesAreImportedAtOnceThroughTheTreesMenu) {
+  // two of tests/data/meshes beside the model, imported by the Scene heading's menu: one step
+  const auto model = write("bin.gdpn.yaml", ide::testing::kBinModel);
+  for (const char* f : {"tri.obj", "tri.stl"}) {
+    std::filesystem::copy_file(std::string(GDPN_SOURCE_DIR) + "/tests/data/meshes/" + f, dir_ / f);
+  }
+  const std::string menu = "- click: {at: [tree, scene], button: right}\n- click: [tree, menu, Import meshes]\n";
+  auto r = replayOn(model, menu + "- click: [tree, menu, files]\n- type: 'tri.obj; tri.stl'\n- click: [tree, menu, Import]\n"
+                                  "- press: save\n");
+  EXPECT_EQ(r["message"], "saved " + model) << r["message"];
+  EXPECT_EQ(r["undo"]["depth"], 1);
+  EXPECT_EQ(r["undo"]["label"], "paste under the scene");
+  EXPECT_TRUE(r["tree"]["rows"].contains("tri")) << r["tree"]["rows"].dump();
+  EXPECT_TRUE(r["tree"]["rows"].contains("tri_1")) << r["tree"]["rows"].dump();
+  const auto saved = gdpn::testing::fileBytes(model);
+  EXPECT_NE(saved.find("file: tri.obj"), std::string::npos) << saved;
+  EXPECT_NE(saved.find("file: tri.stl"), std::string::npos) << saved;
+  EXPECT_EQ(gdpn::testing::runGdpn("check '" + model + "'").code, 0) << saved;
+  // a file that is not there is named in the message; nothing changes
+  r = replayOn(model, menu + "- click: [tree, menu, files]\n- type: 'nothere.obj'\n- click: [tree, menu, Import]\n");
+  EXPECT_EQ(r["undo"]["depth"], 0);
+  EXPECT_NE(r["message"].get<std::string>().find("nothere.obj"), std::string::npos) << r["message"];
+}
+
 TEST_F(HeadlessIde, AKeyboardSensorHearsTheWorldViewsKeysWhileTheViewerIsInside) {
   // tests/data/input/console.gdpn.yaml with a camera inside the booth: 'go' waits for the g key
   std::ifstream source(std::string(GDPN_SOURCE_DIR) + "/tests/data/input/console.gdpn.yaml");

@@ -56,9 +56,24 @@ struct TreeState {
   int shown = 0;
   nlohmann::json rows = nlohmann::json::object();  // where the first rows stand, by path
   std::optional<SceneEdit> request;  // an edit asked for in a menu, made once the tree is drawn
+  bool import = false;               // the import menu asked for its files, read once the tree is drawn
   nlohmann::json menu = nlohmann::json::object();  // the open menu's items, where they stand
   nlohmann::json menu_at = nlohmann::json::object();  // the Scene header, where it stands
 };
+
+/// The menu "Import meshes": mesh files (';' between them) read through the importers.
+void importMenu(TreeState& st) {
+  if (!beginMenu("Import meshes", st.menu)) return;
+  ImGui::TextDisabled("Mesh files (obj, stl, 3ds, gltf, dae, ply, wrl, iv), ';' between them:");
+  ImGui::SetNextItemWidth(360);
+  const bool entered = ImGui::InputText("##files", &st.app.import_files, ImGuiInputTextFlags_EnterReturnsTrue);
+  noteItem("files", st.menu);
+  if (menuItem("Import", st.menu) || entered) {
+    st.import = true;  // once the tree is drawn
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndMenu();
+}
 
 /// The menu "Add": a node of any type under `parent` ("" the root).
 void addMenu(TreeState& st, const scene::Scene& s, const std::string& parent) {
@@ -92,7 +107,10 @@ void nodeMenu(TreeState& st, const scene::Scene& s, const scene::Node& node, con
       st.request = SceneEdit{SceneEditKind::Rename, path, {}, app.tree_rename, false, {}};
       ImGui::CloseCurrentPopup();
     }
-    if (node.type().has_children) addMenu(st, s, path);
+    if (node.type().has_children) {
+      addMenu(st, s, path);
+      importMenu(st);
+    }
     if (menuItem("Duplicate", st.menu)) st.request = SceneEdit{SceneEditKind::Duplicate, path, {}, {}, false, {}};
     const auto uses = usesOf(app.document().model().net, path);
     if (uses.empty()) {
@@ -171,8 +189,8 @@ void drawNode(TreeState& st, scene::Node& node) {
 
 void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
   beginPanel("##tree", at, "Tree view");
-  TreeState st{app, {}, {}, nlohmann::json::array(), 0, nlohmann::json::object(), std::nullopt, nlohmann::json::object(),
-               nlohmann::json::object()};
+  TreeState st{app, {}, {}, nlohmann::json::array(), 0, nlohmann::json::object(), std::nullopt, false,
+               nlohmann::json::object(), nlohmann::json::object()};
   const auto& sel = app.document().selection();
   if (sel.kind == SelectionKind::Node) st.selected = sel.name;
   auto* session = app.run().session();
@@ -191,6 +209,7 @@ void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
     dropTarget(st, "");
     if (app.run().mode() == RunMode::Edit && ImGui::BeginPopupContextItem("##scene_menu")) {
       addMenu(st, *s, "");
+      importMenu(st);
       ImGui::EndPopup();
     }
     if (open) {
@@ -243,6 +262,7 @@ void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
   endPanel();
   app.reveal_selection = false;
   // the edit a menu asked for, now that nothing iterates the tree
+  if (st.import) app.importMeshes(app.import_files);
   if (st.request) {
     auto command = std::make_unique<SceneEditCommand>(*st.request);
     const auto* edit = command.get();  // kept on the undo stack when it succeeds
