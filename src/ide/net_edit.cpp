@@ -344,6 +344,15 @@ std::optional<std::int64_t> slotCount(const std::vector<net::SlotCount>& counts,
   return std::nullopt;
 }
 
+void setInlineCode(net::ScriptSpec& script, const std::string& code, const core::SourceLoc& owner) {
+  // a compile error in the edited text is reported where the script stood in the file (or at
+  // its construct, for a new one), its line counted from there
+  const core::SourceLoc loc = script.loc.line > 0 ? script.loc : owner;
+  script = {};
+  script.code = code;
+  if (!code.empty()) script.loc = loc;
+}
+
 void addNodeToken(net::PlaceSpec& p, net::SlotId slot, const std::string& path) {
   if (slotKindOf(p, slot) != net::SlotKind::Node) setSlotKind(p, slot, net::SlotKind::Node);
   auto it = bySlot(p.nodes, slot);
@@ -372,9 +381,7 @@ void setSlotScript(net::PlaceSpec& p, net::SlotId slot, net::ScriptKind kind, co
     it = std::prev(p.scripts.end());
     it->slot = slot;
   }
-  net::ScriptSpec& script = net::scriptOf(*it, kind);
-  script = {};
-  script.code = code;
+  setInlineCode(net::scriptOf(*it, kind), code, p.loc);
   net::SlotScripts none;
   none.slot = slot;
   if (*it == none) p.scripts.erase(it);
@@ -415,8 +422,7 @@ NetEdit makeNetEdit(NetEditKind kind, std::string page, std::string name, std::s
 std::string SetGlobalsCommand::apply(Document& doc) {
   net::ScriptSpec& globals = doc.editableNet().globals;
   before_ = globals;
-  globals = {};
-  globals.code = code_;
+  setInlineCode(globals, code_, core::SourceLoc{doc.model().path, 1, 1});
   doc.touched(false);
   return {};
 }

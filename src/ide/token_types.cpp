@@ -75,21 +75,30 @@ TokenTypes propagateTokenTypes(const net::NetSpec& net, const NodeTypeOf& typeOf
           }
         }
       }
-      // along the arcs, to a fixed point: input place slot -> transition slot -> output place slot
-      std::map<SlotKey, std::set<std::string>> from;  // place slot <- depositing transitions
-      for (bool grew = true; grew;) {
-        grew = false;
-        for (const auto& a : page.arcs) {
-          if (a.kind != net::ArcKind::Normal) continue;  // a test or inhibitor arc moves no token
-          for (const auto s : slotsOf(a)) {
-            const auto src = key(a.from, s), dst = key(a.to, s);
-            const auto it = out.types.find(src);
-            if (it == out.types.end()) continue;
-            auto& into = out.types[dst];
-            const auto before = into.size();
-            into.insert(it->second.begin(), it->second.end());
-            grew = grew || into.size() != before;
-          }
+      // along the arcs: input place slot -> transition slot -> output place slot; a slot goes
+      // back on the work list only when its set grew, so the cost is arcs times types, not
+      // arcs times the length of the longest path
+      std::map<SlotKey, std::vector<SlotKey>> next;
+      for (const auto& a : page.arcs) {
+        if (a.kind != net::ArcKind::Normal) continue;  // a test or inhibitor arc moves no token
+        for (const auto s : slotsOf(a)) next[key(a.from, s)].push_back(key(a.to, s));
+      }
+      std::deque<SlotKey> work;
+      for (const auto& [slot, types] : out.types) {
+        if (slot.first.starts_with(page.name + "/")) work.push_back(slot);
+      }
+      while (!work.empty()) {
+        const SlotKey at = work.front();
+        work.pop_front();
+        const auto edges = next.find(at);
+        if (edges == next.end()) continue;
+        const auto& types = out.types[at];  // a map's elements stay where they are as it grows
+        for (const auto& to : edges->second) {
+          if (to == at) continue;
+          auto& into = out.types[to];
+          const auto before = into.size();
+          into.insert(types.begin(), types.end());
+          if (into.size() != before) work.push_back(to);
         }
       }
       // conflicts: a place slot two types reach

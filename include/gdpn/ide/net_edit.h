@@ -115,6 +115,9 @@ std::optional<std::int64_t> slotCount(const std::vector<net::SlotCount>& counts,
 void addNodeToken(net::PlaceSpec& p, net::SlotId slot, const std::string& path);
 /// Takes the node at `path` out of slot `slot` of `p`; false when it was not there.
 bool removeNodeToken(net::PlaceSpec& p, net::SlotId slot, const std::string& path);
+/// Makes `script` the inline code `code` ("" none), keeping where it stood in the model file (or
+/// taking `owner`, its construct's place, for a new one) so that a compile error stays located.
+void setInlineCode(net::ScriptSpec& script, const std::string& code, const core::SourceLoc& owner);
 /// Sets the inline script of kind `kind` of slot `slot` of `p` to `code` ("" removes it).
 void setSlotScript(net::PlaceSpec& p, net::SlotId slot, net::ScriptKind kind, const std::string& code);
 

@@ -526,8 +526,7 @@ void editTransition(App& app, const ConstructAt& at, const net::TransitionSpec& 
     scriptEditor(app, construct + "#" + heading, heading, net::scriptOf(t, k), net::info(k).expression,
                  [&app, at, t, k](const std::string& code) {
                    auto next = t;
-                   net::scriptOf(next, k) = {};
-                   net::scriptOf(next, k).code = code;
+                   setInlineCode(net::scriptOf(next, k), code, t.loc);
                    commitTransition(app, at, std::move(next));
                  }, report);
   }
