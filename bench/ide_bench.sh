@@ -19,14 +19,9 @@
 # xvfb-run. Usage: bench/ide_bench.sh [BUILD_DIR] [REPEATS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-build=${1:-build/ci}
-repeats=${2:-3}
-gdpn="$PWD/$build/apps/gdpn/gdpn"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source bench/common.sh "$@"
 export XDG_CONFIG_HOME="$work/config"  # the default layout, not the user's
 
-median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
 seconds() {  # seconds COMMAND...: wall-clock seconds of one run
   local start end
   start=$(date +%s.%N)

@@ -18,6 +18,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev ffmpeg
   # net pictures: Graphviz lays out nets without positions; DejaVu Sans draws their text
   libgraphviz-dev fonts-dejavu-core
+  # linear programs: bounds from the state equation
+  libglpk-dev
 )
 
 missing=()

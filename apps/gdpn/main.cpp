@@ -461,12 +461,15 @@ int run(const RunArgs& a) {
     return 1;
   }
   if (outcome.reason == model::StopReason::Breakpoint) std::cerr << "stopped at " << outcome.message << "\n";
-  const auto report = model::makeReport(sim->simulation(), outcome);
-  if (!a.report.empty() && !gdpn::core::writeOutput(a.report, model::reportJson(report), why)) {
-    std::cerr << a.report << ": error: " << why << "\n";
-    return 1;
+  // the report only when it is shown or written (it works out the cycle bounds)
+  if (!a.quiet || !a.report.empty()) {
+    const auto report = model::makeReport(sim->simulation(), outcome);
+    if (!a.report.empty() && !gdpn::core::writeOutput(a.report, model::reportJson(report), why)) {
+      std::cerr << a.report << ": error: " << why << "\n";
+      return 1;
+    }
+    if (!a.quiet) model::printSummary(std::cout, report);
   }
-  if (!a.quiet) model::printSummary(std::cout, report);
   switch (outcome.reason) {
     case model::StopReason::ScriptError:
     case model::StopReason::PhysicsError:

@@ -30,11 +30,6 @@ bool timed(const net::Net& net) {
   return false;
 }
 
-std::vector<net::CycleBound> cycleTimes(const net::Net& net, const net::Invariants& invariants, double dt) {
-  if (!timed(net)) return {};
-  return net::cycleBounds(net, invariants, effectiveDurations(net, dt));
-}
-
 std::string invariantText(const net::Net& net, const net::Invariant& y) {
   std::string s;
   for (const auto& [k, w] : y.weights) {
@@ -66,6 +61,7 @@ Analysis analyze(const net::Net& net, std::string path, const AnalysisOptions& o
   a.invariants = net::invariants(net, limits);
   phase("cycle times");
   if (timed(net)) a.cycles = net::cycleBounds(net, a.invariants, effectiveDurations(net, options.dt), limits, &a.cycles_stop);
+  explore.invariants = &a.invariants;  // their bounds size the markings
   a.space = net::explore(net, explore);
   return a;
 }

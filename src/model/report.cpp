@@ -4,13 +4,15 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <map>
+#include <tuple>
 
 #include "gdpn/core/text.h"
 #include "gdpn/model/analysis.h"
 
 namespace gdpn::model {
 
-Report makeReport(Simulation& sim, const RunOutcome& outcome) {
+Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_seconds) {
   Report r;
   r.model = sim.model().path;
   r.seed = sim.seed();
@@ -46,25 +48,30 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome) {
   }
   // the bounds from the invariants, beside the cycles measured: where measured exceeds the
   // bound, the net waited on something else (the plant, a guard, a shared resource)
-  const auto invariants = net::invariants(net);
-  std::vector<std::vector<net::TransitionId>> seen;  // one line per set of transitions (slots of one
-                                                     // place moving together make one cycle each)
-  for (const auto& c : cycleTimes(net, invariants, dt)) {
-    bool merged = false;
-    for (std::size_t i = 0; i < seen.size() && !merged; ++i) {
-      if (seen[i] == c.transitions && r.cycles[i].tokens == c.tokens && r.cycles[i].bound == c.seconds) {
-        ++r.cycles[i].alike;
-        merged = true;
+  if (timed(net)) {
+    net::InvariantOptions budget;
+    budget.deadline = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                              std::chrono::duration<double>(std::max(0.0, cycle_seconds)));
+    const auto invariants = net::invariants(net, budget);
+    r.cycles_stop = invariants.stop;
+    // one line per set of transitions (slots of one place moving together make one cycle each)
+    std::map<std::tuple<std::vector<net::TransitionId>, std::int64_t, double>, std::size_t> seen;
+    net::ExploreStop bounds_stop = net::ExploreStop::Done;
+    auto bounds = net::cycleBounds(net, invariants, effectiveDurations(net, dt), budget, &bounds_stop);
+    if (r.cycles_stop == net::ExploreStop::Done) r.cycles_stop = bounds_stop;
+    for (auto& c : bounds) {
+      const auto [it, added] = seen.try_emplace({std::move(c.transitions), c.tokens, c.seconds}, r.cycles.size());
+      if (!added) {
+        ++r.cycles[it->second].alike;
+        continue;
       }
+      CycleFigures f;
+      f.invariant = invariantText(net, invariants.p[c.invariant]);
+      f.tokens = c.tokens;
+      f.bound = c.seconds;
+      for (auto t : std::get<0>(it->first)) f.measured = std::max(f.measured, r.transitions[t].mean_cycle);
+      r.cycles.push_back(std::move(f));
     }
-    if (merged) continue;
-    seen.push_back(c.transitions);
-    CycleFigures f;
-    f.invariant = invariantText(net, invariants.p[c.invariant]);
-    f.tokens = c.tokens;
-    f.bound = c.seconds;
-    for (auto t : c.transitions) f.measured = std::max(f.measured, r.transitions[t].mean_cycle);
-    r.cycles.push_back(std::move(f));
   }
   r.figures = sim.modelFigures(r.figures_error);
   return r;
@@ -106,6 +113,7 @@ std::string reportJson(const Report& report) {
                            {"measured", c.measured},
                            {"alike", c.alike}});
   }
+  j["cycles_complete"] = report.cycles_stop == net::ExploreStop::Done;
   j["figures"] = ordered_json::object();
   for (const auto& [k, v] : report.figures) j["figures"][k] = v;
   if (!report.figures_error.empty()) j["figures_error"] = report.figures_error;
@@ -172,6 +180,12 @@ void printSummary(std::ostream& out, const Report& report) {
           << pad(m ? fixed(c.measured, 3) : "-", 14, true) << pad(m ? fixed(c.measured - c.bound, 3) : "-", 12, true)
           << "  " << label(c) << "\n";
     }
+  }
+  if (report.cycles_stop != net::ExploreStop::Done) {
+    out << "\ncycle bounds cut short ("
+        << (report.cycles_stop == net::ExploreStop::TimeLimit ? "their time budget ran out"
+                                                              : std::string(net::stopReason(report.cycles_stop)))
+        << "): " << (report.cycles.empty() ? "none found" : "the ones found are listed") << "\n";
   }
   if (!report.figures.empty() || !report.figures_error.empty()) {
     out << "\nthe model's figures:\n";

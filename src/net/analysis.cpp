@@ -5,6 +5,7 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <unordered_map>
 
 #include "gdpn/net/invariants.h"
 #include "detail/marking_store.h"
@@ -18,7 +19,7 @@ using namespace detail;
 /// (Pearce's single-index variant of Tarjan's algorithm), so that no edge is stored.
 class Search {
  public:
-  Search(const Net& net, const ExploreOptions& options) : net_(net), options_(options) {}
+  Search(const Net& net, const ExploreOptions& options) : net_(net), options_(options), candidates_(net) {}
 
   StateSpace run();
 
@@ -31,9 +32,16 @@ class Search {
   /// does not fit. False in `enabled` when `t` is not enabled.
   Expand fire(TransitionId t, const std::uint64_t* m, std::uint64_t* out, bool& enabled);
   bool widen(std::size_t k);
-  /// Karp-Miller acceleration of `m` against the markings on the search path.
-  void accelerate(std::vector<std::int64_t>& m) const;
-  void noteNew(StateId s);
+  /// Karp-Miller acceleration of the packed marking `key` against the markings on the
+  /// search path: true when some count became ω (`key` is then changed).
+  bool accelerate(std::uint64_t* key);
+  /// A hash of the packed counts of the slots that are never accelerated.
+  std::uint64_t boundedHash(const std::uint64_t* m) const;
+  /// The bits of each word that hold slots never accelerated, for the current layout; and
+  /// the path's hashes again after the layout changed.
+  void boundedParts();
+  /// Notes the new state `s`, reached from `from` by `t` (from == s: the initial state).
+  void noteNew(StateId s, StateId from, TransitionId t);
   void finishComponent(StateId v);
   void shortestPathToDeadlock(StateSpace& out);
   std::uint64_t bytes() const;
@@ -48,22 +56,31 @@ class Search {
   };
   /// The edge from `f`'s state to a visited state whose rindex is `rw`.
   void settle(Frame& f, std::uint32_t rw) {
-    std::uint32_t& rv = *rindex_.at(f.state());
-    if (rw < rv) rv = rw, f.v_root &= 0x7fffffffu;
+    if (rw < rindex(f.state())) setRindex(f.state(), rw), f.v_root &= 0x7fffffffu;
     if (rw > next_comp_) leaves_[f.state()] = true;  // w's component is finished: an edge leaves
   }
 
   const Net& net_;
   const ExploreOptions& options_;
   std::unique_ptr<Store> store_;
+  Candidates candidates_;
   std::vector<bool> accel_;   // per place slot: may be accelerated to ω
+  std::vector<std::size_t> accel_slots_;  // those place slots
   bool cover_ = false;        // some place slot has no structural bound
-  std::vector<std::int64_t> path_;  // unpacked markings on the search path (cover_ only)
+  std::vector<std::uint64_t> path_;  // packed markings on the search path (cover_ only)
+  std::vector<std::uint64_t> path_hash_;  // their boundedHash
+  std::vector<std::uint64_t> bounded_mask_;  // per word: the bits of slots never accelerated
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> on_path_;  // boundedHash: positions on the path
   std::uint64_t edges_count_ = 0;
   ExploreStop stop_ = ExploreStop::Done;
 
   // per state
-  Chunked<std::uint32_t> rindex_;
+  // a state's index (Pearce's rindex) lies beside its marking in the store: read once per edge
+  // (the upper half holds the marking's tokens, kUnknownTotal when not kept)
+  std::uint32_t rindex(StateId s) const { return static_cast<std::uint32_t>(store_->extra(s)); }
+  void setRindex(StateId s, std::uint32_t v) { store_->extra(s) = (store_->extra(s) & ~std::uint64_t{0xffffffffu}) | v; }
+  static constexpr std::uint64_t kUnknownTotal = 0xffffffffu;
+  std::vector<std::int64_t> token_delta_;  // per transition: tokens it adds minus tokens it takes
   std::vector<bool> leaves_;
   // the walk
   Chunked<Frame> frames_;
@@ -75,12 +92,14 @@ class Search {
   std::vector<std::uint64_t> keys_;
   std::vector<std::uint64_t> hashes_;
   std::vector<TransitionId> succ_t_;
+  std::vector<TransitionId> candidates_now_;
   std::vector<std::int64_t> unpacked_;
   std::vector<bool> union_;
   // answers
   std::unique_ptr<Observed> seen_;
   std::vector<bool> fired_;
   bool deadlock_ = false;
+  std::vector<StateId> dead_states_;
   bool live_ = true;
   std::uint32_t bottoms_ = 0;
   bool root_bottom_ = false;
@@ -101,29 +120,87 @@ bool Search::widen(std::size_t k) {
   std::vector<std::uint32_t> bits(L.width());
   std::vector<bool> omega(L.width());
   for (std::size_t j = 0; j < L.width(); ++j) bits[j] = L.bits(j), omega[j] = L.field(j).omega;
-  bits[k] = std::min(kMaxBits, bits[k] * 2);
+  // four times the bits, for every field that may become ω and is no wider: a count that
+  // outgrows its field tends to go on growing, the others like it too, and each widening
+  // re-packs every marking stored
+  const std::uint32_t from = bits[k];
+  for (std::size_t j = 0; j < L.width(); ++j) {
+    if (j == k || (omega[j] && bits[j] <= from)) bits[j] = std::min(kMaxBits, bits[j] * 4);
+  }
+  const Layout before = L;
   store_->relayout(Layout(bits, omega));
+  seen_->relayout(before, store_->layout());
+  candidates_.use(store_->layout());
+  if (cover_) {
+    // the path's markings in the new layout, and their hashes
+    const Layout& after = store_->layout();
+    std::vector<std::uint64_t> path(path_hash_.size() * after.words());
+    std::vector<std::int64_t> m(after.width());
+    for (std::size_t i = 0; i < path_hash_.size(); ++i) {
+      before.unpack(path_.data() + i * before.words(), m.data());
+      std::size_t bad = 0;
+      after.pack(m.data(), path.data() + i * after.words(), bad);
+    }
+    path_ = std::move(path);
+    boundedParts();
+  }
   return true;
 }
 
-void Search::accelerate(std::vector<std::int64_t>& m) const {
-  const std::size_t width = m.size();
-  for (std::size_t at = 0; at < path_.size(); at += width) {
-    const std::int64_t* a = path_.data() + at;
+void Search::boundedParts() {
+  const Layout& L = store_->layout();
+  bounded_mask_.assign(L.words(), 0);
+  for (std::size_t k = 0; k < L.width(); ++k) {
+    if (!accel_[k]) bounded_mask_[L.field(k).word] |= L.field(k).mask << L.field(k).shift;
+  }
+  on_path_.clear();
+  for (std::size_t i = 0; i < path_hash_.size(); ++i) {
+    path_hash_[i] = boundedHash(path_.data() + i * L.words());
+    on_path_[path_hash_[i]].push_back(static_cast<std::uint32_t>(i));
+  }
+}
+
+std::uint64_t Search::boundedHash(const std::uint64_t* m) const {
+  std::uint64_t h = 0x243f6a8885a308d3ULL;
+  for (std::size_t w = 0; w < bounded_mask_.size(); ++w) {
+    h = (h ^ (m[w] & bounded_mask_[w])) * 0x9e3779b97f4a7c15ULL;
+    h ^= h >> 29;
+  }
+  return h;
+}
+
+bool Search::accelerate(std::uint64_t* key) {
+  // a marking on the path can be below the key only where it agrees with it on every slot
+  // that is never accelerated: only those with the same such part are compared, on the
+  // slots that may be accelerated
+  const auto bucket = on_path_.find(boundedHash(key));
+  if (bucket == on_path_.end()) return false;
+  const Layout& L = store_->layout();
+  const std::size_t words = L.words();
+  unpacked_.resize(L.width());
+  L.unpack(key, unpacked_.data());
+  std::vector<std::int64_t>& m = unpacked_;
+  bool changed = false;
+  for (const std::uint32_t at : bucket->second) {
+    const std::uint64_t* a = path_.data() + static_cast<std::size_t>(at) * words;
     bool ge = true, gt = false;
-    for (std::size_t k = 0; k < width && ge; ++k) {
-      if (m[k] < a[k]) ge = false;
-      if (m[k] > a[k]) {
-        // only where the firing sequence surely repeats: no inhibitor or capacity reads it
-        if (!accel_[k]) ge = false;
-        gt = true;
-      }
+    for (std::size_t i = 0; i < accel_slots_.size() && ge; ++i) {
+      const std::size_t k = accel_slots_[i];
+      const std::int64_t ak = L.value(a, k);
+      ge = m[k] >= ak;
+      gt = gt || m[k] > ak;
     }
     if (!ge || !gt) continue;
-    for (std::size_t k = 0; k < width; ++k) {
-      if (m[k] > a[k]) m[k] = kW;
+    for (std::size_t w = 0; w < words && ge; ++w) ge = ((a[w] ^ key[w]) & bounded_mask_[w]) == 0;
+    if (!ge) continue;
+    for (const std::size_t k : accel_slots_) {
+      if (m[k] > L.value(a, k)) m[k] = kW, changed = true;
     }
   }
+  if (!changed) return false;
+  std::size_t bad = 0;
+  L.pack(m.data(), key, bad);  // ω always fits
+  return true;
 }
 
 Search::Expand Search::expand(StateId v) {
@@ -134,7 +211,8 @@ Search::Expand Search::expand(StateId v) {
   hashes_.clear();
   succ_t_.clear();
   const std::uint64_t* m = store_->at(v);
-  for (TransitionId t = 0; t < transitions; ++t) {
+  candidates_.find(m, candidates_now_);
+  for (TransitionId t : candidates_now_) {
     bool enabled = false;
     std::uint64_t* out = keys_.data() + succ_t_.size() * words;
     const Expand e = fire(t, m, out, enabled);
@@ -145,25 +223,21 @@ Search::Expand Search::expand(StateId v) {
     hashes_.push_back(h);
     store_->prefetch(h);
   }
-  std::uint32_t& rv = *rindex_.at(v);
+  // the markings the successors likely are (and their index beside them) fetched into the
+  // cache while the others are looked up
+  for (std::size_t i = 0; i < succ_t_.size(); ++i) store_->peek(hashes_[i]);
+  std::uint32_t rv = rindex(v);
   bool root = true;
   for (std::size_t i = 0; i < succ_t_.size(); ++i) {
     std::uint64_t* key = keys_.data() + i * words;
     std::uint64_t h = hashes_[i];
-    if (cover_ && store_->find(key, h) == kNone) {
-      unpacked_.resize(L.width());
-      L.unpack(key, unpacked_.data());
-      accelerate(unpacked_);
-      std::size_t bad = 0;
-      L.pack(unpacked_.data(), key, bad);  // ω always fits
-      h = store_->hash(key);
-    }
+    if (cover_ && store_->find(key, h) == kNone && accelerate(key)) h = store_->hash(key);
     bool added = false;
     const StateId w = store_->insert(key, h, added);
-    if (added) noteNew(w);
+    if (added) noteNew(w, v, succ_t_[i]);
     fired_[succ_t_[i]] = true;
     // an edge to a state already visited is settled now; the others wait in edges_
-    const std::uint32_t rw = *rindex_.at(w);
+    const std::uint32_t rw = rindex(w);
     if (rw == 0) {
       edges_.push(w);
       continue;
@@ -171,22 +245,34 @@ Search::Expand Search::expand(StateId v) {
     if (rw < rv) rv = rw, root = false;
     if (rw > next_comp_) leaves_[v] = true;  // w's component is finished: an edge leaves
   }
+  setRindex(v, rv);
   edges_count_ += succ_t_.size();
-  if (succ_t_.empty()) deadlock_ = true;
+  if (succ_t_.empty()) deadlock_ = true, dead_states_.push_back(v);
   frames_.push({v | (root ? 0x80000000u : 0u), static_cast<std::uint32_t>(edges_.size())});
   return Expand::Ok;
 }
 
-void Search::noteNew(StateId s) {
-  seen_->note(store_->layout(), store_->at(s));
-  *rindex_.append() = 0;
+void Search::noteNew(StateId s, StateId from, TransitionId t) {
+  // the tokens in a marking lie beside it (the upper half of its extra word), so that a
+  // successor's are its parent's and what the transition changes, and only the slots it
+  // touches need noting; where acceleration or a large count stands in the way, every slot
+  const Layout& L = store_->layout();
+  const std::uint64_t parent = store_->extra(from) >> 32;
+  if (from != s && !cover_ && parent != kUnknownTotal) {
+    const std::int64_t total = static_cast<std::int64_t>(parent) + token_delta_[t];
+    seen_->noteChange(L, store_->at(s), net_.termsOf(t), total);
+    store_->extra(s) = static_cast<std::uint64_t>(std::min<std::int64_t>(total, kUnknownTotal)) << 32;
+  } else {
+    const std::int64_t total = seen_->note(L, store_->at(s));
+    store_->extra(s) = (cover_ ? kUnknownTotal : static_cast<std::uint64_t>(std::min<std::int64_t>(total, kUnknownTotal))) << 32;
+  }
   leaves_.push_back(false);
 }
 
 void Search::finishComponent(StateId v) {
   // the component: v and the states above it on the stack
   std::size_t first = stack_.size();
-  while (first > 0 && *rindex_.at(stack_[first - 1]) >= *rindex_.at(v)) --first;
+  while (first > 0 && rindex(stack_[first - 1]) >= rindex(v)) --first;
   const std::size_t size = stack_.size();
   bool leaves = leaves_[v];
   for (std::size_t i = first; i < size; ++i) leaves = leaves || leaves_[stack_[i]];
@@ -196,90 +282,100 @@ void Search::finishComponent(StateId v) {
     ++bottoms_;
     if (live_) {
       union_.assign(net_.transitions().size(), false);
-      std::size_t fire = markEnabled(net_, store_->layout(), store_->at(v), union_);
-      for (std::size_t i = first; i < size; ++i) fire += markEnabled(net_, store_->layout(), store_->at(stack_[i]), union_);
+      const Layout& L = store_->layout();
+      std::size_t fire = markEnabled(net_, L, candidates_, store_->at(v), union_, candidates_now_);
+      for (std::size_t i = first; i < size; ++i) {
+        fire += markEnabled(net_, L, candidates_, store_->at(stack_[i]), union_, candidates_now_);
+      }
       live_ = fire == union_.size();
     }
   }
   root_bottom_ = !leaves;
-  for (std::size_t i = first; i < size; ++i) *rindex_.at(stack_[i]) = next_comp_;
-  *rindex_.at(v) = next_comp_;
+  for (std::size_t i = first; i < size; ++i) setRindex(stack_[i], next_comp_);
+  setRindex(v, next_comp_);
   --next_comp_;
   stack_.shrink(first);
 }
 
 std::uint64_t Search::bytes() const {
-  return store_->bytes() + rindex_.bytes() + leaves_.capacity() / 8 + frames_.bytes() + edges_.bytes() +
-         stack_.bytes() + path_.capacity() * sizeof(std::int64_t);
+  return store_->bytes() + leaves_.capacity() / 8 + frames_.bytes() + edges_.bytes() +
+         stack_.bytes() + path_.capacity() * sizeof(std::uint64_t);
 }
 
 void Search::shortestPathToDeadlock(StateSpace& out) {
-  // breadth first over the known states; the first dead one met is "the first"
+  // breadth first over the known states, ending at the first dead state it meets (the search
+  // noted which ones are dead)
   const std::size_t n = store_->size();
-  rindex_.clear();
+  std::vector<bool> dead(n, false);
+  for (StateId s : dead_states_) dead[s] = true;
   std::vector<StateId> parent(n, kNone);
   std::vector<TransitionId> via(n, 0);
   std::vector<StateId> queue{0};
   parent[0] = 0;
   const std::size_t words = store_->words();
   std::vector<std::uint64_t> next(words);
+  auto pathTo = [&](StateId x) {
+    for (; x != 0; x = parent[x]) out.deadlock_path.push_back(via[x]);
+    std::reverse(out.deadlock_path.begin(), out.deadlock_path.end());
+  };
+  if (dead[0]) return;
   for (std::size_t head = 0; head < queue.size(); ++head) {
     const StateId s = queue[head];
-    bool any = false;
-    for (TransitionId t = 0; t < net_.transitions().size(); ++t) {
+    candidates_.find(store_->at(s), candidates_now_);
+    for (TransitionId t : candidates_now_) {
       bool enabled = false;
       fire(t, store_->at(s), next.data(), enabled);
       if (!enabled) continue;
-      any = true;
-      if (cover_) {
-        // the search stored the accelerated form
-        std::vector<std::int64_t> m(store_->layout().width());
-        store_->layout().unpack(next.data(), m.data());
-        std::size_t bad = 0;
-        if (store_->find(next.data(), store_->hash(next.data())) == kNone) {
-          accelerate(m);
-          store_->layout().pack(m.data(), next.data(), bad);
-        }
-      }
+      // the search stored the accelerated form (against the path it had then: gone now)
+      if (cover_ && store_->find(next.data(), store_->hash(next.data())) == kNone) accelerate(next.data());
       const StateId w = store_->find(next.data(), store_->hash(next.data()));
       if (w == kNone || parent[w] != kNone) continue;
       parent[w] = s;
       via[w] = t;
+      if (dead[w]) return pathTo(w);
       queue.push_back(w);
-    }
-    if (!any) {
-      for (StateId x = s; x != 0; x = parent[x]) out.deadlock_path.push_back(via[x]);
-      std::reverse(out.deadlock_path.begin(), out.deadlock_path.end());
-      return;
     }
   }
 }
 
 StateSpace Search::run() {
   StateSpace out;
-  const std::size_t width = net_.placeSlots().size();
   const std::size_t transitions = net_.transitions().size();
 
   const Plan p = plan(net_, options_);
   if (p.overflow) return overflowAnswer(net_);
   if (options_.threads > 1 && !p.cover) return exploreParallel(net_, options_, p);
   cover_ = p.cover;
+  token_delta_.assign(transitions, 0);
+  for (TransitionId t = 0; t < transitions; ++t) {
+    for (const Term& term : net_.termsOf(t)) {
+      if (term.kind == TermKind::Input) token_delta_[t] -= term.weight;
+      if (term.kind == TermKind::Output) token_delta_[t] += term.weight;
+    }
+  }
   accel_ = p.accel;
-  store_ = std::make_unique<Store>(Layout(p.bits, p.omega));
+  for (std::size_t k = 0; k < accel_.size(); ++k) {
+    if (accel_[k]) accel_slots_.push_back(k);
+  }
+  store_ = std::make_unique<Store>(Layout(p.bits, p.omega), true);
+  candidates_.use(store_->layout());
+  if (cover_) boundedParts();
   std::vector<std::uint64_t> key(store_->words());
   std::size_t bad = 0;
   store_->layout().pack(p.m0.data(), key.data(), bad);
-  seen_ = std::make_unique<Observed>(width);
+  seen_ = std::make_unique<Observed>(store_->layout());
   fired_.assign(transitions, false);
   bool added = false;
   store_->insert(key.data(), store_->hash(key.data()), added);
-  noteNew(0);
+  noteNew(0, 0, 0);
 
   auto visit = [&](StateId v) -> bool {
-    *rindex_.at(v) = next_index_++;
+    setRindex(v, next_index_++);
     if (cover_) {
-      path_.resize(path_.size() + width);
-      store_->layout().unpack(store_->at(v), path_.data() + path_.size() - width);
+      const std::size_t words = store_->words();
+      path_.insert(path_.end(), store_->at(v), store_->at(v) + words);
+      path_hash_.push_back(boundedHash(path_.data() + path_.size() - words));
+      on_path_[path_hash_.back()].push_back(static_cast<std::uint32_t>(path_hash_.size() - 1));
     }
     for (;;) {
       const Expand e = expand(v);
@@ -301,7 +397,7 @@ StateSpace Search::run() {
       // the next pending successor, taken from the top
       const StateId w = edges_[--f.end];
       edges_.shrink(f.end);
-      const std::uint32_t rw = *rindex_.at(w);
+      const std::uint32_t rw = rindex(w);
       if (rw != 0) {
         settle(f, rw);
         continue;
@@ -324,14 +420,20 @@ StateSpace Search::run() {
     const StateId v = f.state();
     const bool root = f.root();
     frames_.shrink(frames_.size() - 1);
-    if (cover_) path_.resize(path_.size() - width);
+    if (cover_) {
+      path_.resize(path_.size() - store_->words());
+      const auto bucket = on_path_.find(path_hash_.back());
+      bucket->second.pop_back();
+      if (bucket->second.empty()) on_path_.erase(bucket);
+      path_hash_.pop_back();
+    }
     if (root) {
       finishComponent(v);
     } else {
       stack_.push(v);
     }
     // the edge from the parent to v is settled now that v is done
-    if (!frames_.empty()) settle(frames_.back(), *rindex_.at(v));
+    if (!frames_.empty()) settle(frames_.back(), rindex(v));
   }
   peak_ = std::max(peak_, bytes());
 
@@ -340,6 +442,7 @@ StateSpace Search::run() {
   out.states = store_->size();
   out.edges = edges_count_;
   out.fired = fired_;
+  seen_->settle(store_->layout());
   summarise(net_, *seen_, out);
   out.deadlock = deadlock_;
   if (out.decided) {

@@ -6,21 +6,14 @@
 #include <map>
 #include <numeric>
 #include <optional>
+#include <queue>
+#include <set>
+#include <span>
 
 #include "gdpn/net/slot.h"
 
 namespace gdpn::net {
 namespace {
-
-using Matrix = std::vector<std::vector<std::int64_t>>;
-
-/// One row of the Farkas tableau: the combination `y` of the original rows, what it sums
-/// to (`a` = y·A over the columns not yet eliminated), and the support of `y` as bits.
-struct Row {
-  std::vector<std::int64_t> a;
-  std::vector<std::int64_t> y;
-  std::vector<std::uint64_t> support;
-};
 
 /// The limits of one invariant computation, looked at as the work goes: the first limit
 /// reached stops it for good (a time or memory limit stops every system after it too).
@@ -28,15 +21,17 @@ class Budget {
  public:
   explicit Budget(const InvariantOptions& options) : options_(options) {}
 
-  /// Records why the work stops (the first reason stays); returns false.
+  /// Records why the work stops (the first reason stays); returns false. Too many candidates
+  /// or an overflow stop one system; a time or memory limit stops them all.
   bool halt(ExploreStop why) {
     if (stop_ == ExploreStop::Done) stop_ = why;
+    ++halts_;
     return false;
   }
-  /// True while no limit is reached; looks at the clock and memory and reports progress
-  /// every 256 calls.
+  /// True while no time or memory limit is reached; looks at the clock and memory and reports
+  /// progress every 256 calls.
   bool check(const InvariantProgress& now) {
-    if (stop_ != ExploreStop::Done) return false;
+    if (exhausted()) return false;
     if ((++calls_ & 255u) != 0) return true;
     if (options_.max_bytes != 0 && now.bytes > options_.max_bytes) return halt(ExploreStop::MaxMemory);
     if (options_.deadline && std::chrono::steady_clock::now() >= *options_.deadline) return halt(ExploreStop::TimeLimit);
@@ -46,156 +41,330 @@ class Budget {
   /// True when a time or memory limit has stopped the work.
   [[nodiscard]] bool exhausted() const { return stop_ == ExploreStop::MaxMemory || stop_ == ExploreStop::TimeLimit; }
   [[nodiscard]] ExploreStop stop() const { return stop_; }
+  /// How many systems were stopped so far.
+  [[nodiscard]] std::size_t halts() const { return halts_; }
   [[nodiscard]] std::size_t maxRows() const { return options_.max_candidates; }
+  [[nodiscard]] bool reuseAlike() const { return options_.reuse_alike; }
 
  private:
   const InvariantOptions& options_;
   ExploreStop stop_ = ExploreStop::Done;
+  std::size_t halts_ = 0;
   std::uint32_t calls_ = 0;
 };
+
+/// A sparse vector: (index, value) pairs, sorted by index, no zero values.
+using Sparse = std::vector<std::pair<std::uint32_t, std::int64_t>>;
+
+/// One row of the Farkas tableau: the combination `y` of the original rows (its indices are
+/// its support) and what it sums to over the columns (`a` = y·A).
+struct Row {
+  Sparse a;
+  Sparse y;
+  bool alive = true;
+  std::uint64_t signature = 0;  ///< bit i % 64 for each i in the support: a quick subset test
+};
+
+std::uint64_t signatureOf(const Sparse& y) {
+  std::uint64_t s = 0;
+  for (const auto& [i, v] : y) s |= std::uint64_t{1} << (i % 64);
+  return s;
+}
 
 bool addMul(std::int64_t x, std::int64_t cx, std::int64_t z, std::int64_t cz, std::int64_t& out) {
   std::int64_t p = 0, q = 0;
   return !__builtin_mul_overflow(x, cx, &p) && !__builtin_mul_overflow(z, cz, &q) && !__builtin_add_overflow(p, q, &out);
 }
 
+/// cx·x + cz·z into `out`, zeros dropped; false on 64-bit overflow.
+bool combine(const Sparse& x, std::int64_t cx, const Sparse& z, std::int64_t cz, Sparse& out) {
+  out.clear();
+  out.reserve(x.size() + z.size());
+  std::size_t i = 0, k = 0;
+  while (i < x.size() || k < z.size()) {
+    std::uint32_t index = 0;
+    std::int64_t v = 0;
+    if (k == z.size() || (i < x.size() && x[i].first < z[k].first)) {
+      index = x[i].first;
+      if (!addMul(x[i++].second, cx, 0, 0, v)) return false;
+    } else if (i == x.size() || z[k].first < x[i].first) {
+      index = z[k].first;
+      if (!addMul(0, 0, z[k++].second, cz, v)) return false;
+    } else {
+      index = x[i].first;
+      if (!addMul(x[i++].second, cx, z[k++].second, cz, v)) return false;
+    }
+    if (v != 0) out.emplace_back(index, v);
+  }
+  return true;
+}
+
+std::int64_t valueAt(const Sparse& v, std::uint32_t index) {
+  const auto it = std::lower_bound(v.begin(), v.end(), std::make_pair(index, std::numeric_limits<std::int64_t>::min()));
+  return it != v.end() && it->first == index ? it->second : 0;
+}
+
+/// True when the indices of `x` all occur in the sorted `set`.
+bool within(const Sparse& x, std::span<const std::uint32_t> set) {
+  std::size_t k = 0;
+  for (const auto& [i, v] : x) {
+    while (k < set.size() && set[k] < i) ++k;
+    if (k == set.size() || set[k] != i) return false;
+  }
+  return true;
+}
+
 void normalise(Row& r) {
   std::int64_t g = 0;
-  for (auto v : r.y) g = std::gcd(g, v);
+  for (const auto& [i, v] : r.y) g = std::gcd(g, v);
   if (g <= 1) return;
-  for (auto& v : r.y) v /= g;
-  for (auto& v : r.a) v /= g;
+  for (auto& [i, v] : r.y) v /= g;
+  for (auto& [i, v] : r.a) v /= g;
 }
 
-bool subset(const std::vector<std::uint64_t>& x, const std::vector<std::uint64_t>& y) {
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    if ((x[k] & ~y[k]) != 0) return false;
-  }
-  return true;
-}
-
-/// Keeps the rows whose support contains no other row's support (and one of equal rows).
-/// False when `budget` stopped it (the rows are then left as they were).
-bool keepMinimal(std::vector<Row>& rows, Budget& budget, InvariantProgress progress) {
-  std::vector<std::size_t> count(rows.size());
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    for (auto w : rows[i].support) count[i] += static_cast<std::size_t>(std::popcount(w));
-  }
-  std::vector<bool> drop(rows.size(), false);
-  progress.rows = rows.size();
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (!budget.check(progress)) return false;
-    for (std::size_t j = 0; j < rows.size() && !drop[i]; ++j) {
-      if (i == j || drop[j] || count[j] > count[i] || !subset(rows[j].support, rows[i].support)) continue;
-      // a smaller support, or the same row met earlier
-      if (count[j] < count[i] || (j < i && rows[j].y == rows[i].y)) drop[i] = true;
-    }
-  }
-  std::size_t out = 0;
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (drop[i]) continue;
-    if (out != i) rows[out] = std::move(rows[i]);
-    ++out;
-  }
-  rows.resize(out);
-  return true;
-}
-
-/// The minimal semi-positive y with y·A = 0, where A has one row per variable.
-std::vector<Invariant> semiflows(const Matrix& a, std::size_t columns, Budget& budget) {
-  if (budget.exhausted()) return {};
+/// The minimal semi-positive y with y·A = 0 for one connected system: `a` has one sparse row
+/// per variable over `columns` columns. The Farkas algorithm on sparse rows: it eliminates
+/// the column that makes the fewest new rows first (the counts kept as rows come and go),
+/// and combines a positive and a negative row only when no other row's support lies within
+/// the union of theirs (the combinatorial adjacency test), so every row it makes is minimal.
+/// Empty, with the reason in `budget`, when a limit stopped it; `held` is the memory the
+/// invariants found before hold, bytes (counted against the limit too).
+std::vector<Sparse> farkas(const std::vector<Sparse>& a, std::size_t columns, Budget& budget, InvariantProgress& progress,
+                           std::uint64_t held) {
   const std::size_t n = a.size();
-  const std::size_t words = (n + 63) / 64;
-  const std::size_t max_rows = budget.maxRows();
-  const std::uint64_t row_bytes = (columns + n + words) * sizeof(std::int64_t) + sizeof(Row);
-  InvariantProgress progress{0, columns, n, n * row_bytes};
   std::vector<Row> rows(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    rows[i].a = a[i];
-    rows[i].y.assign(n, 0);
-    rows[i].y[i] = 1;
-    rows[i].support.assign(words, 0);
-    rows[i].support[i / 64] |= std::uint64_t{1} << (i % 64);
-  }
+  std::vector<std::vector<std::uint32_t>> by_column(columns);  // rows with an entry in the column (dead ones too)
+  std::vector<std::vector<std::uint32_t>> by_first(n);         // rows by the first index of their support
+  std::vector<std::uint64_t> pos(columns, 0), neg(columns, 0);
   std::vector<bool> done(columns, false);
-  for (std::size_t round = 0; round < columns; ++round) {
-    // eliminate the column that makes the fewest new rows
-    std::size_t best = columns;
-    std::size_t best_cost = std::numeric_limits<std::size_t>::max();
-    for (std::size_t j = 0; j < columns; ++j) {
-      if (done[j]) continue;
-      std::size_t pos = 0, neg = 0;
-      for (const auto& r : rows) pos += r.a[j] > 0, neg += r.a[j] < 0;
-      const std::size_t cost = pos * neg;
-      if (cost < best_cost || best == columns) best = j, best_cost = cost;
+  // (new rows it would make, column), smallest first; an entry whose cost is out of date is
+  // skipped when it comes up (the counts change as rows come and go; the columns they
+  // touched are queued again once per round)
+  using Entry = std::pair<std::uint64_t, std::uint32_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+  std::vector<std::uint32_t> touched;
+  std::vector<bool> is_touched(columns, false);
+  std::size_t live = 0;
+  std::uint64_t bytes = 0;
+  auto rowBytes = [](const Row& r) { return sizeof(Row) + (r.a.size() + r.y.size()) * sizeof(Sparse::value_type); };
+  // adds (+1) or removes (-1) a row's entries from the counts
+  auto count = [&](const Row& r, int sign) {
+    for (const auto& [c, v] : r.a) {
+      if (done[c]) continue;
+      auto& side = v > 0 ? pos[c] : neg[c];
+      side = sign > 0 ? side + 1 : side - 1;
+      if (!is_touched[c]) is_touched[c] = true, touched.push_back(c);
     }
-    const std::size_t j = best;
+  };
+  auto requeue = [&] {
+    for (auto c : touched) {
+      is_touched[c] = false;
+      if (!done[c] && pos[c] + neg[c] > 0) queue.push({pos[c] * neg[c], c});
+    }
+    touched.clear();
+  };
+  auto add = [&](Row r) {
+    const auto id = static_cast<std::uint32_t>(rows.size());
+    r.signature = signatureOf(r.y);
+    for (const auto& [c, v] : r.a) {
+      if (!done[c]) by_column[c].push_back(id);
+    }
+    by_first[r.y.front().first].push_back(id);
+    bytes += rowBytes(r);
+    ++live;
+    count(r, +1);
+    rows.push_back(std::move(r));
+  };
+  rows.clear();
+  rows.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) add(Row{a[i], {{static_cast<std::uint32_t>(i), 1}}, true});
+  requeue();
+
+  std::vector<std::uint32_t> p_rows, n_rows, support;
+  std::vector<Row> made;
+  for (std::size_t round = 0; !queue.empty();) {
+    const auto [cost, j] = queue.top();
+    queue.pop();
+    if (done[j] || cost != pos[j] * neg[j] || pos[j] + neg[j] == 0) continue;
+    p_rows.clear();
+    n_rows.clear();
+    for (auto id : by_column[j]) {
+      if (!rows[id].alive) continue;
+      (valueAt(rows[id].a, j) > 0 ? p_rows : n_rows).push_back(id);
+    }
     done[j] = true;
-    progress.round = round;
-    std::vector<Row> next;
-    std::vector<std::size_t> pos, neg;
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-      if (rows[i].a[j] > 0) pos.push_back(i);
-      if (rows[i].a[j] < 0) neg.push_back(i);
-    }
+    by_column[j] = {};
+    progress.round = round++;
     // too many candidates: give up before making them (the answer is then partial)
-    if (rows.size() - pos.size() - neg.size() + pos.size() * neg.size() > 4 * max_rows) {
+    if (live - p_rows.size() - n_rows.size() + p_rows.size() * n_rows.size() > 4 * budget.maxRows()) {
       budget.halt(ExploreStop::Candidates);
       return {};
     }
-    for (auto& r : rows) {
-      if (r.a[j] == 0) next.push_back(std::move(r));
-    }
-    for (auto p : pos) {
-      for (auto q : neg) {
+    made.clear();
+    for (auto p : p_rows) {
+      for (auto q : n_rows) {
         const Row& x = rows[p];
         const Row& z = rows[q];
-        std::int64_t cx = -z.a[j], cz = x.a[j];
+        support.clear();
+        for (const auto& [i, v] : x.y) support.push_back(i);
+        for (const auto& [i, v] : z.y) support.push_back(i);
+        std::sort(support.begin(), support.end());
+        support.erase(std::unique(support.begin(), support.end()), support.end());
+        const std::uint64_t outside = ~(x.signature | z.signature);
+        bool adjacent = true;
+        for (std::size_t s = 0; s < support.size() && adjacent; ++s) {
+          auto& bucket = by_first[support[s]];
+          std::erase_if(bucket, [&](std::uint32_t w) { return !rows[w].alive; });
+          for (auto w : bucket) {
+            if (w == p || w == q || (rows[w].signature & outside) != 0 || !within(rows[w].y, std::span(support).subspan(s))) {
+              continue;
+            }
+            adjacent = false;
+            break;
+          }
+        }
+        progress.rows = live + made.size();
+        progress.bytes = held + bytes;
+        if (!budget.check(progress)) return {};
+        if (!adjacent) continue;
+        std::int64_t cx = -valueAt(z.a, j), cz = valueAt(x.a, j);
         const std::int64_t g = std::gcd(cx, cz);
         cx /= g, cz /= g;
         Row r;
-        r.a.resize(columns);
-        r.y.resize(n);
-        bool ok = true;
-        for (std::size_t k = 0; k < columns && ok; ++k) ok = addMul(x.a[k], cx, z.a[k], cz, r.a[k]);
-        for (std::size_t k = 0; k < n && ok; ++k) ok = addMul(x.y[k], cx, z.y[k], cz, r.y[k]);
-        if (!ok) {
+        if (!combine(x.a, cx, z.a, cz, r.a) || !combine(x.y, cx, z.y, cz, r.y)) {
           budget.halt(ExploreStop::Overflow);
           return {};
         }
-        r.support.resize(words);
-        for (std::size_t k = 0; k < words; ++k) r.support[k] = x.support[k] | z.support[k];
         normalise(r);
-        next.push_back(std::move(r));
-        progress.rows = rows.size() + next.size();
-        progress.bytes = progress.rows * row_bytes;
-        if (!budget.check(progress)) return {};
+        bytes += rowBytes(r);
+        made.push_back(std::move(r));
       }
     }
-    if (!keepMinimal(next, budget, progress)) return {};
-    if (next.size() > max_rows) {
+    for (auto id : p_rows) rows[id].alive = false;
+    for (auto id : n_rows) rows[id].alive = false;
+    for (auto ids : {&p_rows, &n_rows}) {
+      for (auto id : *ids) {
+        count(rows[id], -1);
+        bytes -= rowBytes(rows[id]);
+        --live;
+        rows[id] = Row{{}, {}, false};
+      }
+    }
+    for (auto& r : made) add(std::move(r));
+    requeue();
+    if (live > budget.maxRows()) {
       budget.halt(ExploreStop::Candidates);
       return {};
     }
-    rows = std::move(next);
   }
-  std::vector<Invariant> out;
-  for (const auto& r : rows) {
-    Invariant inv;
-    for (std::size_t k = 0; k < n; ++k) {
-      if (r.y[k] != 0) inv.weights.emplace_back(static_cast<std::uint32_t>(k), r.y[k]);
+  std::vector<Sparse> out;
+  for (auto& r : rows) {
+    if (r.alive) out.push_back(std::move(r.y));
+  }
+  return out;
+}
+
+/// The minimal semiflows of y·A = 0 for `a` (one sparse row per variable over `columns`
+/// columns), solved per connected component of the variables and columns that share an
+/// entry: the minimal semiflows of a sum of independent systems are those of its parts.
+/// Components alike (the same entries, their variables and columns in the same order, as
+/// in the instances of one page type) are solved once. A part with too many candidates is
+/// left out and the others solved; a time or memory limit stops all. Invariants found are
+/// kept (the answer is then partial).
+std::vector<Invariant> semiflows(const std::vector<Sparse>& a, std::size_t columns, Budget& budget) {
+  const std::size_t n = a.size();
+  std::vector<std::uint32_t> parent(n + columns);
+  std::iota(parent.begin(), parent.end(), 0u);
+  auto find = [&](std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    for (const auto& [c, v] : a[i]) {
+      const auto x = find(static_cast<std::uint32_t>(i)), y = find(static_cast<std::uint32_t>(n + c));
+      if (x != y) parent[std::max(x, y)] = std::min(x, y);
     }
-    out.push_back(std::move(inv));
+  }
+  // the components, each listing its variables in order (a component is named by its first)
+  std::vector<std::vector<std::uint32_t>> members(n);
+  for (std::uint32_t i = 0; i < n; ++i) members[find(i)].push_back(i);
+  std::map<std::vector<std::int64_t>, std::vector<Sparse>> solved;  // by the component's entries, local indices
+  std::vector<Invariant> out;
+  std::vector<std::uint32_t> cols;
+  std::vector<std::uint32_t> local(columns, 0);
+  InvariantProgress progress{0, columns, n, 0};
+  std::uint64_t held = 0;  // what the invariants found so far hold, bytes
+  for (std::uint32_t root = 0; root < n && !budget.exhausted(); ++root) {
+    const auto& vars = members[root];
+    if (vars.empty()) continue;
+    cols.clear();
+    for (auto i : vars) {
+      for (const auto& [c, v] : a[i]) cols.push_back(c);
+    }
+    std::sort(cols.begin(), cols.end());
+    cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
+    for (std::uint32_t k = 0; k < cols.size(); ++k) local[cols[k]] = k;
+    std::vector<std::int64_t> key{static_cast<std::int64_t>(vars.size()), static_cast<std::int64_t>(cols.size())};
+    std::vector<Sparse> system;
+    system.reserve(vars.size());
+    for (auto i : vars) {
+      key.push_back(static_cast<std::int64_t>(a[i].size()));
+      Sparse row;
+      for (const auto& [c, v] : a[i]) {
+        row.emplace_back(local[c], v);
+        key.push_back(local[c]);
+        key.push_back(v);
+      }
+      system.push_back(std::move(row));
+    }
+    auto it = budget.reuseAlike() ? solved.find(key) : solved.end();
+    if (it == solved.end()) {
+      if (!budget.reuseAlike()) solved.clear();
+      const std::size_t halts = budget.halts();
+      auto found = farkas(system, cols.size(), budget, progress, held);
+      if (budget.halts() != halts) continue;  // this part is left out: the answer is partial
+      it = solved.emplace(std::move(key), std::move(found)).first;
+    }
+    for (const Sparse& y : it->second) {
+      Invariant inv;
+      for (const auto& [k, w] : y) inv.weights.emplace_back(vars[k], w);
+      held += sizeof(Invariant) + inv.weights.size() * sizeof(inv.weights[0]);
+      out.push_back(std::move(inv));
+    }
   }
   std::sort(out.begin(), out.end(), [](const Invariant& x, const Invariant& y) { return x.weights < y.weights; });
   return out;
 }
 
-Matrix incidenceMatrix(const Net& net) {
-  Matrix c(net.placeSlots().size(), std::vector<std::int64_t>(net.transitions().size(), 0));
-  for (const Term& term : net.terms()) {
-    if (term.kind == TermKind::Input) c[term.place_slot][term.transition] -= term.weight;
-    if (term.kind == TermKind::Output) c[term.place_slot][term.transition] += term.weight;
+/// The incidence matrix, sparse: one row per place slot over the transitions, and its
+/// transpose, one row per transition over the place slots.
+struct Incidence {
+  std::vector<Sparse> by_place;
+  std::vector<Sparse> by_transition;
+};
+
+Incidence incidenceMatrix(const Net& net) {
+  Incidence c;
+  c.by_place.resize(net.placeSlots().size());
+  c.by_transition.resize(net.transitions().size());
+  for (TransitionId t = 0; t < net.transitions().size(); ++t) {
+    Sparse& row = c.by_transition[t];
+    for (const Term& term : net.termsOf(t)) {
+      if (term.kind == TermKind::Input) row.emplace_back(term.place_slot, -std::int64_t{term.weight});
+      if (term.kind == TermKind::Output) row.emplace_back(term.place_slot, term.weight);
+    }
+    std::sort(row.begin(), row.end());
+    Sparse merged;
+    for (const auto& [ps, v] : row) {
+      if (!merged.empty() && merged.back().first == ps) {
+        merged.back().second += v;
+      } else {
+        merged.emplace_back(ps, v);
+      }
+    }
+    std::erase_if(merged, [](const auto& e) { return e.second == 0; });
+    row = std::move(merged);
+    for (const auto& [ps, v] : row) c.by_place[ps].emplace_back(t, v);
   }
   return c;
 }
@@ -214,25 +383,28 @@ bool covers(const std::vector<Invariant>& invs, std::size_t n) {
 /// The semiflows of C (rows: place slots; with `slack`, one more row per transition with a 1
 /// in its column, for y·C <= 0), computed slot by slot: a token of slot b0 stays a b0 token,
 /// so the place slots of one slot are a system of their own. Slack rows are numbered after
-/// the place slots.
-std::vector<Invariant> slotwise(const Net& net, const Matrix& c, bool slack, Budget& budget) {
+/// the place slots, by transition.
+std::vector<Invariant> slotwise(const Net& net, const Incidence& c, bool slack, Budget& budget) {
   const std::size_t places = net.placeSlots().size();
   const std::size_t transitions = net.transitions().size();
   std::map<SlotId, std::vector<std::uint32_t>> groups;
   for (std::uint32_t ps = 0; ps < places; ++ps) groups[net.placeSlots()[ps].slot].push_back(ps);
   std::vector<Invariant> out;
   for (const auto& [slot, members] : groups) {
-    Matrix a;
-    for (auto ps : members) a.push_back(c[ps]);
-    if (slack) {
-      for (std::size_t t = 0; t < transitions; ++t) {
-        a.emplace_back(transitions, 0);
-        a.back()[t] = 1;
+    std::vector<Sparse> a;
+    std::vector<std::uint32_t> slacks;  // the transitions of the slack rows, in order
+    for (auto ps : members) {
+      a.push_back(c.by_place[ps]);
+      if (slack) {
+        for (const auto& [t, v] : c.by_place[ps]) slacks.push_back(t);
       }
     }
+    std::sort(slacks.begin(), slacks.end());
+    slacks.erase(std::unique(slacks.begin(), slacks.end()), slacks.end());
+    for (auto t : slacks) a.push_back({{t, 1}});
     for (Invariant inv : semiflows(a, transitions, budget)) {
       for (auto& [k, w] : inv.weights) {
-        k = k < members.size() ? members[k] : static_cast<std::uint32_t>(places + (k - members.size()));
+        k = k < members.size() ? members[k] : static_cast<std::uint32_t>(places + slacks[k - members.size()]);
       }
       std::sort(inv.weights.begin(), inv.weights.end());
       // a slack-only row (a transition that changes no place of this slot) says nothing
@@ -263,29 +435,19 @@ Invariants invariants(const Net& net, const InvariantOptions& options) {
   const std::size_t transitions = net.transitions().size();
   out.bound.assign(places, -1);
   Budget budget(options);
-  // the dense incidence matrix and its transpose, within the memory limit
-  const std::uint64_t matrix_bytes = 2 * static_cast<std::uint64_t>(places) * transitions * sizeof(std::int64_t);
-  if (options.max_bytes != 0 && matrix_bytes > options.max_bytes) {
-    out.complete = false;
-    out.stop = ExploreStop::MaxMemory;
-    return out;
-  }
-  const Matrix c = incidenceMatrix(net);
+  const Incidence c = incidenceMatrix(net);
   out.p = slotwise(net, c, false, budget);
-  Matrix ct(transitions, std::vector<std::int64_t>(places, 0));
-  for (std::size_t ps = 0; ps < places; ++ps) {
-    for (std::size_t t = 0; t < transitions; ++t) ct[t][ps] = c[ps][t];
-  }
-  out.t = semiflows(ct, places, budget);
+  out.t = semiflows(c.by_transition, places, budget);
   out.conservative = covers(out.p, places);
   out.consistent = covers(out.t, transitions);
 
   // y·C <= 0: the semiflows of C with one slack row per transition
   std::vector<Invariant> bounding = out.p;
   if (!out.conservative) {
-    const ExploreStop before = budget.stop();
-    bounding = slotwise(net, c, true, budget);
-    out.structurally_bounded = budget.stop() == before && covers(bounding, places);
+    const std::size_t halts = budget.halts();
+    auto slack = slotwise(net, c, true, budget);
+    out.structurally_bounded = budget.halts() == halts && covers(slack, places);
+    bounding.insert(bounding.end(), std::make_move_iterator(slack.begin()), std::make_move_iterator(slack.end()));
   } else {
     out.structurally_bounded = true;
   }
@@ -362,44 +524,59 @@ std::optional<std::pair<double, std::vector<TransitionId>>> longestCircuit(const
     if (!from || !to) return std::nullopt;
     edges.push_back({*from, *to, t});
   }
-  // depth-first enumeration of elementary circuits, each found once from its smallest slot
+  // depth-first enumeration of elementary circuits, each found once from its smallest slot;
+  // the edges out of a slot in transition order, the path on an explicit stack (a circuit
+  // may run through a hundred thousand places)
+  std::stable_sort(edges.begin(), edges.end(), [](const Edge& x, const Edge& z) { return x.from < z.from; });
+  auto outOf = [&](PlaceSlotId at) {
+    const auto first = std::lower_bound(edges.begin(), edges.end(), at, [](const Edge& e, PlaceSlotId v) { return e.from < v; });
+    const auto last = std::upper_bound(first, edges.end(), at, [](PlaceSlotId v, const Edge& e) { return v < e.from; });
+    return std::make_pair(static_cast<std::size_t>(first - edges.begin()), static_cast<std::size_t>(last - edges.begin()));
+  };
   constexpr std::size_t kMaxSteps = 200'000;
   std::size_t steps = 0;
   double best = -1.0;
   std::vector<TransitionId> best_path, path;
-  std::vector<PlaceSlotId> on_path;
-  bool gave_up = false;
-  auto dfs = [&](auto&& self, PlaceSlotId start, PlaceSlotId at, double sum) -> void {
-    for (const Edge& e : edges) {
-      if (gave_up) return;
-      if (e.from != at) continue;
-      if (++steps > kMaxSteps) {
-        gave_up = true;
-        return;
-      }
-      const double d = e.t < seconds.size() ? seconds[e.t] : 0.0;
-      path.push_back(e.t);
-      if (e.to == start) {
-        if (sum + d > best) {
-          best = sum + d;
-          best_path = path;
-        }
-      } else if (e.to > start && std::find(on_path.begin(), on_path.end(), e.to) == on_path.end()) {
-        on_path.push_back(e.to);
-        self(self, start, e.to, sum + d);
-        on_path.pop_back();
-      }
-      path.pop_back();
-    }
+  std::set<PlaceSlotId> on_path;
+  struct Frame {
+    PlaceSlotId at;         // the slot
+    std::size_t next, end;  // the edges still to follow out of it
+    double sum;             // seconds from the start to this slot
   };
+  std::vector<Frame> stack;
   std::vector<PlaceSlotId> starts;
   for (const Edge& e : edges) starts.push_back(e.from);
-  std::sort(starts.begin(), starts.end());
   starts.erase(std::unique(starts.begin(), starts.end()), starts.end());
   for (PlaceSlotId start : starts) {
     on_path = {start};
-    dfs(dfs, start, start, 0.0);
-    if (gave_up) return std::nullopt;
+    const auto [first, last] = outOf(start);
+    stack = {{start, first, last, 0.0}};
+    while (!stack.empty()) {
+      Frame& top = stack.back();
+      if (top.next == top.end) {
+        if (stack.size() > 1) {
+          on_path.erase(top.at);
+          path.pop_back();
+        }
+        stack.pop_back();
+        continue;
+      }
+      const Edge& e = edges[top.next++];
+      if (++steps > kMaxSteps) return std::nullopt;
+      const double sum = top.sum + (e.t < seconds.size() ? seconds[e.t] : 0.0);
+      if (e.to == start) {
+        if (sum > best) {
+          best = sum;
+          best_path = path;
+          best_path.push_back(e.t);
+        }
+      } else if (e.to > start && !on_path.contains(e.to)) {
+        on_path.insert(e.to);
+        path.push_back(e.t);
+        const auto [f, l] = outOf(e.to);
+        stack.push_back({e.to, f, l, sum});
+      }
+    }
   }
   if (best < 0.0) return std::nullopt;
   return std::make_pair(best, std::move(best_path));
@@ -410,38 +587,50 @@ std::optional<std::pair<double, std::vector<TransitionId>>> longestCircuit(const
 std::vector<CycleBound> cycleBounds(const Net& net, const Invariants& invariants, std::span<const double> seconds,
                                     const InvariantOptions& options, ExploreStop* stop) {
   std::vector<CycleBound> out;
-  std::vector<std::int64_t> y(net.placeSlots().size());
+  const std::size_t places = net.placeSlots().size();
+  // what each place slot's tokens feed: (transition, tokens taken), so that an invariant's
+  // transitions are found from its places, not by looking at every transition
+  std::vector<std::vector<std::pair<TransitionId, std::int64_t>>> takers(places);
+  for (TransitionId t = 0; t < net.transitions().size(); ++t) {
+    for (const Term& term : net.termsOf(t)) {
+      if (term.kind == TermKind::Input) takers[term.place_slot].emplace_back(t, term.weight);
+    }
+  }
+  std::vector<std::int64_t> y(places, 0);
+  std::vector<std::int64_t> taken(net.transitions().size(), 0);
   Budget budget(options);
   for (std::size_t i = 0; i < invariants.p.size(); ++i) {
     if (!budget.check({i, invariants.p.size(), out.size(), 0})) break;
-    std::fill(y.begin(), y.end(), 0);
+    const auto& weights = invariants.p[i].weights;
     CycleBound b;
     b.invariant = i;
-    for (const auto& [k, w] : invariants.p[i].weights) {
-      y[k] = w;
-      b.tokens += w * net.placeSlots()[k].initial;
-    }
+    for (const auto& [k, w] : weights) b.tokens += w * net.placeSlots()[k].initial;
     if (b.tokens <= 0) continue;
+    for (const auto& [k, w] : weights) {
+      y[k] = w;
+      for (const auto& [t, n] : takers[k]) {
+        if (taken[t] == 0) b.transitions.push_back(t);
+        taken[t] += w * n;
+      }
+    }
+    std::sort(b.transitions.begin(), b.transitions.end());
     double work = 0.0;
-    for (TransitionId t = 0; t < net.transitions().size(); ++t) {
-      std::int64_t taken = 0;
-      for (const Term& term : net.termsOf(t)) {
-        if (term.kind == TermKind::Input) taken += y[term.place_slot] * term.weight;
-      }
-      if (taken == 0) continue;
-      b.transitions.push_back(t);
-      work += (t < seconds.size() ? seconds[t] : 0.0) * static_cast<double>(taken);
+    for (TransitionId t : b.transitions) {
+      work += (t < seconds.size() ? seconds[t] : 0.0) * static_cast<double>(taken[t]);
+      taken[t] = 0;
     }
-    if (b.transitions.empty()) continue;
-    b.seconds = work / static_cast<double>(b.tokens);
-    if (b.tokens == 1) {
-      if (auto circuit = longestCircuit(net, y, b.transitions, seconds)) {
-        b.seconds = circuit->first;
-        b.transitions = std::move(circuit->second);
-        b.circuit = true;
+    if (!b.transitions.empty()) {
+      b.seconds = work / static_cast<double>(b.tokens);
+      if (b.tokens == 1) {
+        if (auto circuit = longestCircuit(net, y, b.transitions, seconds)) {
+          b.seconds = circuit->first;
+          b.transitions = std::move(circuit->second);
+          b.circuit = true;
+        }
       }
+      out.push_back(std::move(b));
     }
-    out.push_back(std::move(b));
+    for (const auto& [k, w] : weights) y[k] = 0;
   }
   std::stable_sort(out.begin(), out.end(), [](const CycleBound& x, const CycleBound& z) { return x.seconds > z.seconds; });
   if (stop) *stop = budget.stop();

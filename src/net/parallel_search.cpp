@@ -32,10 +32,16 @@ struct Shard {
 class Parallel {
  public:
   Parallel(const Net& net, const ExploreOptions& options, const Plan& plan)
-      : net_(net), options_(options), layout_(plan.bits, plan.omega), threads_(options.threads), shards_(options.threads) {
+      : net_(net),
+        options_(options),
+        layout_(plan.bits, plan.omega),
+        candidates_(net),
+        threads_(options.threads),
+        shards_(options.threads) {
+    candidates_.use(layout_);
     for (auto& s : shards_) {
       s.store = std::make_unique<Store>(layout_);
-      s.seen = std::make_unique<Observed>(layout_.width());
+      s.seen = std::make_unique<Observed>(layout_);
       s.fired.assign(net.transitions().size(), false);
     }
     std::vector<std::uint64_t> key(layout_.words());
@@ -54,7 +60,7 @@ class Parallel {
     for (unsigned s = 0; s < threads_; ++s) pool.emplace_back([this, s] { explore(s); });
     for (auto& t : pool) t.join();
     out.fired.assign(net_.transitions().size(), false);
-    Observed seen(layout_.width());
+    Observed seen(layout_);
     std::uint64_t largest = 0;
     for (auto& s : shards_) {
       out.states += s.store->size();
@@ -72,6 +78,7 @@ class Parallel {
       for (auto& t : pool) t.join();
       components(out, largest * threads_);
     }
+    seen.settle(layout_);
     summarise(net_, seen, out);
     out.peak_bytes = std::max(peak_, bytes());
     return out;
@@ -112,6 +119,7 @@ class Parallel {
     const std::size_t transitions = net_.transitions().size();
     std::vector<std::vector<std::uint64_t>> outbox(threads_);
     std::vector<std::uint64_t> batch, keys(transitions * words), hashes(transitions);
+    std::vector<TransitionId> candidates;
     auto flush = [&](unsigned to) {
       if (outbox[to].empty()) return;
       outstanding_.fetch_add(static_cast<std::int64_t>(outbox[to].size() / words));
@@ -138,7 +146,8 @@ class Parallel {
         s.work.pop_back();
         // all successors first, their table slots fetched while the next are made
         std::size_t count = 0;
-        for (TransitionId t = 0; t < transitions; ++t) {
+        candidates_.find(s.store->at(v), candidates);
+        for (TransitionId t : candidates) {
           std::size_t field = 0;
           std::uint64_t* out = keys.data() + count * words;
           const Fired f = fireInto(net_, layout_, t, s.store->at(v), out, field);
@@ -200,12 +209,14 @@ class Parallel {
     const std::size_t words = layout_.words();
     const std::size_t transitions = net_.transitions().size();
     std::vector<std::uint64_t> keys(transitions * words), hashes(transitions);
+    std::vector<TransitionId> candidates;
     s.first.reserve(s.store->size() + 1);
     s.succ.reserve(s.edges.load());
     for (StateId v = 0; v < s.store->size(); ++v) {
       s.first.push_back(s.succ.size());
       std::size_t count = 0;
-      for (TransitionId t = 0; t < transitions; ++t) {
+      candidates_.find(s.store->at(v), candidates);
+      for (TransitionId t : candidates) {
         std::size_t field = 0;
         std::uint64_t* out = keys.data() + count * words;
         if (fireInto(net_, layout_, t, s.store->at(v), out, field) != Fired::Ok) continue;
@@ -249,6 +260,7 @@ class Parallel {
     std::uint32_t index = 1, comp = 0xfffffffeu, bottoms = 0;
     bool live = true, root_bottom = false, deadlock = false;
     std::vector<bool> fires(transitions);
+    std::vector<TransitionId> candidates;
     const std::uint32_t s0 = global(start_, 0);
     auto visit = [&](std::uint32_t v) {
       rindex[v] = index++;
@@ -281,8 +293,10 @@ class Parallel {
           ++bottoms;
           if (live) {
             std::fill(fires.begin(), fires.end(), false);
-            std::size_t fire = markEnabled(net_, layout_, marking(v), fires);
-            for (std::size_t i = first; i < stack.size(); ++i) fire += markEnabled(net_, layout_, marking(stack[i]), fires);
+            std::size_t fire = markEnabled(net_, layout_, candidates_, marking(v), fires, candidates);
+            for (std::size_t i = first; i < stack.size(); ++i) {
+              fire += markEnabled(net_, layout_, candidates_, marking(stack[i]), fires, candidates);
+            }
             live = fire == transitions;
           }
         }
@@ -317,7 +331,8 @@ class Parallel {
         for (std::uint32_t x = v; x != s0; x = parent[x]) {
           // the k-th successor comes from the k-th enabled transition
           std::uint32_t k = via[x];
-          for (TransitionId t = 0; t < transitions; ++t) {
+          candidates_.find(marking(parent[x]), candidates);
+          for (TransitionId t : candidates) {
             if (!enabledIn(net_, layout_, t, marking(parent[x]))) continue;
             if (k-- == 0) {
               out.deadlock_path.push_back(t);
@@ -340,6 +355,7 @@ class Parallel {
   const Net& net_;
   const ExploreOptions& options_;
   Layout layout_;
+  Candidates candidates_;  // shared: read only once made
   unsigned threads_;
   std::vector<Shard> shards_;
   unsigned start_ = 0;

@@ -16,30 +16,48 @@ namespace fs = std::filesystem;
 
 using gdpn::testing::runGdpn;
 
-/// A model whose one transition empties k places into k others: its k^2 minimal P-invariants
-/// p_i + q_j appear in one elimination step, and sorting out the minimal ones is quadratic in
-/// k^2 (for k = 280, minutes without a limit). Its state space has two markings.
-/// (Each test process writes its own file: tests run side by side.)
-std::string fanModel(int k) {
-  const std::string path =
-      (fs::temp_directory_path() / ("gdpn_fan_" + std::to_string(k) + "_" + std::to_string(::getpid()) + ".gdpn.yaml"))
-          .string();
+/// A model of fans: each transition t<k>_<c> empties k places into k others (c tokens into
+/// each), for k from `from` to `to` and c from 1 to `copies`: fan k has k^2 minimal
+/// P-invariants, all made in one elimination step, and no two fans are alike (so each is
+/// worked out). Fan 280 alone has two markings and more invariants than the candidate limit;
+/// fans 40 to 70 twice over, each under that limit, take a good part of a second together and
+/// hold many megabytes. (Each test process writes its own file: tests run side by side.)
+std::string fanModel(int from, int to, int copies = 1) {
+  const std::string path = (fs::temp_directory_path() / ("gdpn_fan_" + std::to_string(from) + "_" + std::to_string(to) +
+                                                         "_" + std::to_string(::getpid()) + ".gdpn.yaml"))
+                               .string();
   std::ofstream f(path);
   f << "gdpn: 1\npages:\n  main:\n    places:\n";
-  for (int i = 0; i < k; ++i) f << "      p" << i << ": {tokens: 1}\n      q" << i << ": {}\n";
-  f << "    transitions:\n      t: {duration: 1}\n    arcs:\n";
-  for (int i = 0; i < k; ++i) f << "      - p" << i << " -> t\n      - t -> q" << i << "\n";
+  for (int c = 1; c <= copies; ++c) {
+    for (int k = from; k <= to; ++k) {
+      for (int i = 0; i < k; ++i) f << "      p" << k << "_" << c << "_" << i << ": {tokens: 1}\n      q" << k << "_" << c << "_" << i << ": {}\n";
+    }
+  }
+  f << "    transitions:\n";
+  for (int c = 1; c <= copies; ++c) {
+    for (int k = from; k <= to; ++k) f << "      t" << k << "_" << c << ": {duration: 1}\n";
+  }
+  f << "    arcs:\n";
+  for (int c = 1; c <= copies; ++c) {
+    for (int k = from; k <= to; ++k) {
+      const std::string t = "t" + std::to_string(k) + "_" + std::to_string(c);
+      for (int i = 0; i < k; ++i) {
+        f << "      - p" << k << "_" << c << "_" << i << " -> " << t << "\n      - {from: " << t << ", to: q" << k << "_" << c << "_"
+          << i << ", weight: " << c << "}\n";
+      }
+    }
+  }
   return path;
 }
 
 TEST(AnalyzeLimits, ExplodingInvariantsStopAtTheTimeLimitWithALabelledPartialAnswer) {
-  const std::string model = fanModel(280);
-  auto r = runGdpn("analyze '" + model + "' --time-limit 1 --progress");
+  const std::string model = fanModel(40, 70, 2);
+  auto r = runGdpn("analyze '" + model + "' --time-limit 0.02 --progress");
   EXPECT_EQ(r.code, 3) << r.out;
   EXPECT_NE(r.out.find("stopped early: invariants (partial: --time-limit reached)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("invariants (partial: --time-limit reached):"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("invariants: column "), std::string::npos) << r.out;  // the progress line
-  r = runGdpn("analyze '" + model + "' --time-limit 1 --json");
+  r = runGdpn("analyze '" + model + "' --time-limit 0.02 --json");
   ASSERT_EQ(r.code, 3) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_FALSE(j["partial"].empty()) << r.out;
@@ -50,10 +68,12 @@ TEST(AnalyzeLimits, ExplodingInvariantsStopAtTheTimeLimitWithALabelledPartialAns
 }
 
 TEST(AnalyzeLimits, MaxStatesAndMaxMemoryBoundTheInvariantsToo) {
-  const std::string model = fanModel(280);
-  auto r = runGdpn("analyze '" + model + "' --max-memory 1");
+  std::string model = fanModel(40, 70, 2);
+  auto r = runGdpn("analyze '" + model + "' --max-memory 1 --time-limit 60");
   EXPECT_EQ(r.code, 3) << r.out;
   EXPECT_NE(r.out.find("stopped early: invariants (partial: --max-memory reached)"), std::string::npos) << r.out;
+  fs::remove(model);
+  model = fanModel(280, 280);
   r = runGdpn("analyze '" + model + "' --max-states 50");
   EXPECT_EQ(r.code, 3) << r.out;
   EXPECT_NE(r.out.find("stopped early: invariants (partial: too many candidates)"), std::string::npos) << r.out;
@@ -61,7 +81,7 @@ TEST(AnalyzeLimits, MaxStatesAndMaxMemoryBoundTheInvariantsToo) {
 }
 
 TEST(AnalyzeLimits, ASmallNetIsCompleteUnderTheLimits) {
-  const std::string model = fanModel(4);
+  const std::string model = fanModel(4, 4);
   const auto r = runGdpn("analyze '" + model + "' --time-limit 60 --max-memory 64");
   EXPECT_EQ(r.code, 0) << r.out;
   EXPECT_EQ(r.out.find("stopped early"), std::string::npos) << r.out;

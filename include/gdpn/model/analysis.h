@@ -49,9 +49,6 @@ std::vector<double> effectiveDurations(const net::Net& net, double dt);
 /// True when some transition of `net` takes time (cycle-time bounds mean something).
 bool timed(const net::Net& net);
 
-/// Cycle-time bounds of `net` with its durations at step `dt` (empty for an untimed net).
-std::vector<net::CycleBound> cycleTimes(const net::Net& net, const net::Invariants& invariants, double dt);
-
 /// A P-invariant as text: "p1 + 2*p2 + p3".
 std::string invariantText(const net::Net& net, const net::Invariant& y);
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "gdpn/model/simulation.h"
+#include "gdpn/net/analysis.h"
 
 namespace gdpn::model {
 
@@ -50,12 +51,17 @@ struct Report {
   std::vector<TransitionFigures> transitions;
   std::vector<PlaceFigures> places;
   std::vector<CycleFigures> cycles;  ///< largest bound first; empty for an untimed net
+  net::ExploreStop cycles_stop = net::ExploreStop::Done;  ///< why the cycle bounds were cut short (Done: not)
   std::vector<std::pair<std::string, std::string>> figures;  ///< the model's own, from its summary()
   std::string figures_error;         ///< why summary() failed ("" when it did not)
 };
 
-/// Gathers the report of a finished run.
-Report makeReport(Simulation& sim, const RunOutcome& outcome);
+/// The cycle bounds' budget by default, seconds of wall-clock time.
+inline constexpr double kCycleBoundSeconds = 10.0;
+
+/// Gathers the report of a finished run. The cycle bounds (from the P-invariants) stop after
+/// `cycle_seconds` of wall-clock time, and the report says so.
+Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_seconds = kCycleBoundSeconds);
 /// The report as pretty-printed JSON text.
 std::string reportJson(const Report& report);
 /// The summary tables, as `gdpn run` prints them.

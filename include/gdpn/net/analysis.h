@@ -24,6 +24,8 @@ struct ExploreProgress {
 };
 
 /// Limits of an exploration.
+struct Invariants;
+
 struct ExploreOptions {
   std::uint64_t max_states = 20'000'000;  ///< stop (partial answer) past this many states
   std::uint64_t max_bytes = 0;            ///< stop (partial answer) past this much memory, bytes; 0: none
@@ -36,6 +38,9 @@ struct ExploreOptions {
   /// Stop (partial answer) at this moment; none when empty. The invariants that size the
   /// markings are computed under the same limit.
   std::optional<std::chrono::steady_clock::time_point> deadline;
+  /// The net's invariants when already computed (their bounds size the markings); when
+  /// empty they are computed again, under a small candidate limit.
+  const Invariants* invariants = nullptr;
 };
 
 /// Why a phase of analysis (the exploration, the invariants, the cycle-time bounds) ended

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// Structural analysis of the untimed view (semantics §11): P- and T-invariants as minimal
-/// generating sets of semi-positive invariants (the Farkas algorithm), structural
+/// generating sets of semi-positive invariants (the Farkas algorithm on sparse rows, one
+/// connected part of the net at a time, parts alike solved once), structural
 /// boundedness and conservativeness, bounds per place slot, and cycle-time bounds for timed
 /// nets. Works on the incidence matrix; test, inhibitor and condition terms do not count.
 /// P-invariants are found slot by slot (a b0 token stays a b0 token): for a net with one slot
@@ -33,12 +34,17 @@ struct InvariantProgress {
 
 /// Limits of the invariant computation (and of the cycle-time bounds).
 struct InvariantOptions {
-  std::size_t max_candidates = 20'000;  ///< give up (partial answer) past this many rows
+  /// Give up on a part of the net (partial answer) past this many candidate rows at once: the
+  /// Farkas algorithm's rows can grow exponentially, and past a few thousand they rarely end.
+  std::size_t max_candidates = 5'000;
   std::uint64_t max_bytes = 0;          ///< give up (partial answer) past this much memory, bytes; 0: none
   /// Give up (partial answer) at this moment; none when empty.
   std::optional<std::chrono::steady_clock::time_point> deadline;
   /// Called now and then (at least every few thousand candidate rows); may be empty.
   std::function<void(const InvariantProgress&)> progress;
+  /// Solve parts of the net that are alike (the instances of a page type) once; false solves
+  /// every part on its own (the same answer, slower: for tests).
+  bool reuse_alike = true;
 };
 
 /// What the incidence matrix says.

@@ -1,6 +1,7 @@
 #include "marking_store.h"
 
 #include "gdpn/net/invariants.h"
+#include "gdpn/net/state_equation.h"
 
 namespace gdpn::net::detail {
 
@@ -27,12 +28,94 @@ bool enabledIn(const Net& net, const Layout& layout, TransitionId t, const std::
   return true;
 }
 
-std::size_t markEnabled(const Net& net, const Layout& layout, const std::uint64_t* m, std::vector<bool>& seen) {
+std::size_t markEnabled(const Net& net, const Layout& layout, const Candidates& candidates, const std::uint64_t* m,
+                        std::vector<bool>& seen, std::vector<TransitionId>& scratch) {
   std::size_t added = 0;
-  for (TransitionId t = 0; t < seen.size(); ++t) {
+  candidates.find(m, scratch);
+  for (TransitionId t : scratch) {
     if (!seen[t] && enabledIn(net, layout, t, m)) seen[t] = true, ++added;
   }
   return added;
+}
+
+Candidates::Candidates(const Net& net) {
+  const std::size_t places = net.placeSlots().size();
+  std::vector<std::uint32_t> takers(places, 0);
+  for (const Term& term : net.terms()) {
+    if (term.kind == TermKind::Input || term.kind == TermKind::Test) ++takers[term.place_slot];
+  }
+  std::vector<std::uint32_t> sentinel(net.transitions().size(), kNone);
+  std::vector<std::uint32_t> count(places + 1, 0);
+  for (TransitionId t = 0; t < net.transitions().size(); ++t) {
+    for (const Term& term : net.termsOf(t)) {
+      if (term.kind != TermKind::Input && term.kind != TermKind::Test) continue;
+      if (sentinel[t] == kNone || takers[term.place_slot] < takers[sentinel[t]]) sentinel[t] = term.place_slot;
+    }
+    if (sentinel[t] == kNone) {
+      always_.push_back(t);
+    } else {
+      ++count[sentinel[t] + 1];
+    }
+  }
+  for (std::size_t k = 0; k < places; ++k) count[k + 1] += count[k];
+  begin_ = count;
+  watchers_.resize(count[places]);
+  for (TransitionId t = 0; t < net.transitions().size(); ++t) {
+    if (sentinel[t] != kNone) watchers_[count[sentinel[t]]++] = t;
+  }
+  needs_.resize(net.transitions().size());
+  for (TransitionId t = 0; t < net.transitions().size(); ++t) {
+    for (const Term& term : net.termsOf(t)) {
+      if (term.kind == TermKind::Input || term.kind == TermKind::Test) needs_[t].emplace_back(term.place_slot, term.weight);
+    }
+  }
+}
+
+void Candidates::use(const Layout& layout) {
+  field_at_.assign(layout.words() * 64, 0);
+  watched_.assign(layout.words(), 0);
+  masks_.resize(layout.width());
+  for (std::size_t k = 0; k < layout.width(); ++k) {
+    const auto& f = layout.field(k);
+    masks_[k] = f.mask << f.shift;
+    for (std::uint32_t b = 0; b < layout.bits(k); ++b) field_at_[f.word * 64 + f.shift + b] = static_cast<std::uint32_t>(k);
+    if (begin_[k + 1] > begin_[k]) watched_[f.word] |= masks_[k];
+  }
+  // one token from a one-bit field: that bit must be set (an ω field is never one bit)
+  quick_begin_.assign(needs_.size() + 1, 0);
+  quick_.clear();
+  for (std::size_t t = 0; t < needs_.size(); ++t) {
+    quick_begin_[t] = static_cast<std::uint32_t>(quick_.size());
+    for (const auto& [k, weight] : needs_[t]) {
+      if (weight != 1 || layout.bits(k) != 1 || layout.field(k).omega) continue;
+      const auto& f = layout.field(k);
+      if (!quick_.empty() && quick_.size() > quick_begin_[t] && quick_.back().first == f.word) {
+        quick_.back().second |= masks_[k];
+      } else {
+        quick_.emplace_back(f.word, masks_[k]);
+      }
+    }
+  }
+  quick_begin_[needs_.size()] = static_cast<std::uint32_t>(quick_.size());
+}
+
+void Candidates::find(const std::uint64_t* m, std::vector<TransitionId>& out) const {
+  out.assign(always_.begin(), always_.end());
+  for (std::size_t w = 0; w < watched_.size(); ++w) {
+    std::uint64_t x = m[w] & watched_[w];
+    while (x != 0) {
+      const std::uint32_t k = field_at_[w * 64 + static_cast<std::size_t>(std::countr_zero(x))];
+      x &= ~masks_[k];
+      for (std::uint32_t i = begin_[k]; i < begin_[k + 1]; ++i) {
+        const TransitionId t = watchers_[i];
+        bool ok = true;
+        for (std::uint32_t q = quick_begin_[t]; q < quick_begin_[t + 1] && ok; ++q) {
+          ok = (m[quick_[q].first] & quick_[q].second) == quick_[q].second;
+        }
+        if (ok) out.push_back(t);
+      }
+    }
+  }
 }
 
 Fired fireInto(const Net& net, const Layout& layout, TransitionId t, const std::uint64_t* m, std::uint64_t* out,
@@ -65,7 +148,17 @@ Plan plan(const Net& net, const ExploreOptions& options) {
   limits.max_candidates = 2'000;
   limits.max_bytes = options.max_bytes;
   limits.deadline = options.deadline;
-  const Invariants inv = invariants(net, limits);
+  const Invariants inv = options.invariants ? *options.invariants : invariants(net, limits);
+  // where the invariants leave a slot without a bound (cut short, or none exists), the state
+  // equation may still bound it
+  std::vector<bool> open(width, false);
+  bool any = false;
+  for (std::size_t k = 0; k < width; ++k) {
+    open[k] = inv.bound[k] < 0 && net.placeSlots()[k].capacity == kUnbounded;
+    any = any || open[k];
+  }
+  std::vector<std::int64_t> lp(width, -1);
+  if (any) lp = stateEquationBounds(net, open, limits);
   Plan p;
   p.bits.assign(width, 1);
   p.omega.assign(width, false);
@@ -75,6 +168,7 @@ Plan plan(const Net& net, const ExploreOptions& options) {
     const PlaceSlot& ps = net.placeSlots()[k];
     std::int64_t bound = inv.bound[k];
     if (ps.capacity != kUnbounded && (bound < 0 || ps.capacity < bound)) bound = ps.capacity;
+    if (lp[k] >= 0 && (bound < 0 || lp[k] < bound)) bound = lp[k];
     p.m0[k] = ps.initial;
     if (bound >= 0) {
       p.bits[k] = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(std::bit_width(static_cast<std::uint64_t>(bound))));
@@ -95,18 +189,84 @@ Plan plan(const Net& net, const ExploreOptions& options) {
   return p;
 }
 
-void Observed::note(const Layout& layout, const std::uint64_t* m) {
-  std::int64_t total = 0;
+Observed::Observed(const Layout& layout)
+    : low(layout.width(), kW), high(layout.width(), 0), any(layout.words(), 0), all(layout.words(), ~std::uint64_t{0}) {
+  // a word whose fields all hold one token at most is noted as a whole: its bits OR-ed and
+  // AND-ed over the markings give each field's highest and lowest count
+  single.assign(layout.words(), true);
   for (std::size_t k = 0; k < layout.width(); ++k) {
+    if (layout.bits(k) != 1 || layout.field(k).omega) single[layout.field(k).word] = false;
+  }
+  for (std::size_t k = 0; k < layout.width(); ++k) {
+    if (!single[layout.field(k).word]) fields.push_back(static_cast<std::uint32_t>(k));
+  }
+}
+
+std::int64_t Observed::note(const Layout& layout, const std::uint64_t* m) {
+  std::int64_t total = 0;
+  for (std::size_t w = 0; w < any.size(); ++w) {
+    if (!single[w]) continue;
+    any[w] |= m[w];
+    all[w] &= m[w];
+    total += std::popcount(m[w]);
+  }
+  for (const std::uint32_t k : fields) {
     const std::int64_t v = layout.value(m, k);
     low[k] = std::min(low[k], v);
     high[k] = std::max(high[k], v);
     if (v != kW) total += v;
   }
   max_marking = std::max(max_marking, total);
+  return total;
+}
+
+void Observed::noteChange(const Layout& layout, const std::uint64_t* m, std::span<const Term> terms, std::int64_t total) {
+  for (const Term& term : terms) {
+    if (term.kind != TermKind::Input && term.kind != TermKind::Output) continue;
+    const std::size_t k = term.place_slot;
+    const auto& f = layout.field(k);
+    if (single[f.word]) {
+      const std::uint64_t bit = std::uint64_t{1} << f.shift;
+      if ((m[f.word] & bit) != 0) {
+        any[f.word] |= bit;
+      } else {
+        all[f.word] &= ~bit;
+      }
+      continue;
+    }
+    const std::int64_t v = layout.value(m, k);
+    low[k] = std::min(low[k], v);
+    high[k] = std::max(high[k], v);
+  }
+  max_marking = std::max(max_marking, total);
+}
+
+void Observed::settle(const Layout& layout) {
+  for (std::size_t k = 0; k < layout.width(); ++k) {
+    const auto& f = layout.field(k);
+    if (!single[f.word]) continue;
+    high[k] = static_cast<std::int64_t>((any[f.word] >> f.shift) & 1u);
+    low[k] = static_cast<std::int64_t>((all[f.word] >> f.shift) & 1u);
+  }
+}
+
+void Observed::relayout(const Layout& before, const Layout& after) {
+  settle(before);
+  Observed next(after);
+  next.low = std::move(low);
+  next.high = std::move(high);
+  next.max_marking = max_marking;
+  for (std::size_t k = 0; k < after.width(); ++k) {
+    const auto& f = after.field(k);
+    if (!next.single[f.word]) continue;
+    if (next.high[k] > 0) next.any[f.word] |= std::uint64_t{1} << f.shift;
+    if (next.low[k] == 0) next.all[f.word] &= ~(std::uint64_t{1} << f.shift);
+  }
+  *this = std::move(next);
 }
 
 void Observed::merge(const Observed& other) {
+  for (std::size_t w = 0; w < any.size(); ++w) any[w] |= other.any[w], all[w] &= other.all[w];
   for (std::size_t k = 0; k < low.size(); ++k) {
     low[k] = std::min(low[k], other.low[k]);
     high[k] = std::max(high[k], other.high[k]);

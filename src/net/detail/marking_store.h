@@ -7,9 +7,14 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <cstdlib>
 #include <memory>
+#include <span>
+#include <new>
+#include <type_traits>
 #include <vector>
 
+#include "gdpn/core/memory.h"
 #include "gdpn/net/analysis.h"
 #include "gdpn/net/net.h"
 
@@ -88,15 +93,17 @@ class Layout {
   std::size_t words_ = 0;
 };
 
-/// Fixed-size chunks, so that growing never copies and never holds twice the memory.
-template <typename T>
+/// Fixed-size chunks of 2^Shift elements, so that growing never copies and never holds twice
+/// the memory. Chunks of 2 MiB or more lie on huge pages where the system offers them (what is
+/// read at random, a state's marking or its index, then costs no TLB miss).
+template <typename T, std::size_t Shift = 16>
 class Chunked {
  public:
   explicit Chunked(std::size_t stride = 1) : stride_(stride) {}
   T* at(std::size_t i) { return chunks_[i >> kShift].get() + (i & kMask) * stride_; }
   const T* at(std::size_t i) const { return chunks_[i >> kShift].get() + (i & kMask) * stride_; }
   T* append() {
-    if ((size_ >> kShift) >= chunks_.size()) chunks_.push_back(std::make_unique<T[]>((kMask + 1) * stride_));
+    if ((size_ >> kShift) >= chunks_.size()) chunks_.push_back(allocate());
     return at(size_++);
   }
   void push(const T& x) { *append() = x; }
@@ -106,30 +113,55 @@ class Chunked {
   /// Drops the elements from `n` on; the chunks stay for reuse.
   void shrink(std::size_t n) { size_ = std::min(size_, n); }
   std::size_t size() const { return size_; }
-  std::size_t bytes() const { return chunks_.size() * (kMask + 1) * stride_ * sizeof(T); }
+  std::size_t bytes() const { return chunks_.size() * chunkBytes(); }
   void clear() {
     chunks_.clear();
     size_ = 0;
   }
 
  private:
-  static constexpr std::size_t kShift = 16;
+  static_assert(std::is_trivially_destructible_v<T>);
+  static constexpr std::size_t kShift = Shift;
   static constexpr std::size_t kMask = (std::size_t{1} << kShift) - 1;
+  static constexpr std::size_t kHuge = std::size_t{2} << 20;
+  struct Free {
+    void operator()(T* p) const { std::free(p); }
+  };
+  std::size_t chunkBytes() const { return (kMask + 1) * stride_ * sizeof(T); }
+  std::unique_ptr<T[], Free> allocate() const {
+    const std::size_t bytes = chunkBytes();
+    const bool huge = bytes >= kHuge;
+    void* p = huge ? std::aligned_alloc(kHuge, (bytes + kHuge - 1) / kHuge * kHuge) : std::malloc(bytes);
+    if (p == nullptr) throw std::bad_alloc();
+    if (huge) core::adviseHugePages(p, bytes);
+    std::uninitialized_default_construct_n(static_cast<T*>(p), (kMask + 1) * stride_);
+    return std::unique_ptr<T[], Free>(static_cast<T*>(p));
+  }
   std::size_t stride_;
   std::size_t size_ = 0;
-  std::vector<std::unique_ptr<T[]>> chunks_;
+  std::vector<std::unique_ptr<T[], Free>> chunks_;
 };
 
 /// The packed markings met so far and an open-addressing table over them. A table entry
 /// holds the state's id and 32 bits of its hash, so most probes never touch the markings.
 class Store {
  public:
-  explicit Store(Layout layout) : layout_(std::move(layout)), arena_(layout_.words()) { table_.assign(1024, kEmpty); }
+  /// Markings per chunk of the arena: 2^18, 2 MiB and more.
+  static constexpr std::size_t kArenaShift = 18;
+  /// With `extra`, each marking has one more 64-bit word beside it (zero when stored): what a
+  /// search keeps per state, read in the same cache line as the marking.
+  explicit Store(Layout layout, bool extra = false)
+      : layout_(std::move(layout)), extra_(extra ? 1 : 0), arena_(layout_.words() + extra_) {
+    table_.assign(1024, kEmpty);
+  }
 
   const Layout& layout() const { return layout_; }
   std::size_t words() const { return layout_.words(); }
   std::size_t size() const { return arena_.size(); }
   const std::uint64_t* at(StateId s) const { return arena_.at(s); }
+  /// The word kept beside state `s`'s marking (Store made with `extra`).
+  std::uint64_t& extra(StateId s) { return arena_.at(s)[layout_.words()]; }
+  std::uint64_t extra(StateId s) const { return arena_.at(s)[layout_.words()]; }
   std::size_t bytes() const { return arena_.bytes() + table_.size() * sizeof(std::uint64_t); }
 
   std::uint64_t hash(const std::uint64_t* m) const {
@@ -142,6 +174,19 @@ class Store {
     return h ^ (h >> 29);
   }
   void prefetch(std::uint64_t h) const { __builtin_prefetch(&table_[h & (table_.size() - 1)]); }
+  /// The first state whose hash tag matches `h` (likely the marking itself), or kNone; its
+  /// marking is fetched into the cache, so that a find or insert that follows waits less.
+  StateId peek(std::uint64_t h) const {
+    const std::uint64_t tag = h >> 32;
+    for (std::size_t i = h & (table_.size() - 1);; i = (i + 1) & (table_.size() - 1)) {
+      const std::uint64_t e = table_[i];
+      if (e == kEmpty) return kNone;
+      if ((e >> 32) == tag) {
+        __builtin_prefetch(at(static_cast<StateId>(e)));
+        return static_cast<StateId>(e);
+      }
+    }
+  }
 
   /// The id of `m`, or kNone.
   StateId find(const std::uint64_t* m, std::uint64_t h) const {
@@ -150,7 +195,7 @@ class Store {
       const std::uint64_t e = table_[i];
       if (e == kEmpty) return kNone;
       const auto s = static_cast<StateId>(e);
-      if ((e >> 32) == tag && std::memcmp(at(s), m, words() * sizeof(std::uint64_t)) == 0) return s;
+      if ((e >> 32) == tag && same(at(s), m)) return s;
     }
   }
   /// The id of `m`, adding it when new (`added` says which).
@@ -161,13 +206,15 @@ class Store {
       const std::uint64_t e = table_[i];
       if (e == kEmpty) {
         const auto s = static_cast<StateId>(size());
-        std::memcpy(arena_.append(), m, words() * sizeof(std::uint64_t));
+        std::uint64_t* slot = arena_.append();
+        std::memcpy(slot, m, words() * sizeof(std::uint64_t));
+        if (extra_ != 0) slot[words()] = 0;
         table_[i] = (tag << 32) | s;
         added = true;
         return s;
       }
       const auto s = static_cast<StateId>(e);
-      if ((e >> 32) == tag && std::memcmp(at(s), m, words() * sizeof(std::uint64_t)) == 0) {
+      if ((e >> 32) == tag && same(at(s), m)) {
         added = false;
         return s;
       }
@@ -175,12 +222,14 @@ class Store {
   }
   /// Re-packs every marking into `layout` (wider fields), keeping the ids.
   void relayout(Layout layout) {
-    Chunked<std::uint64_t> next(layout.words());
+    Chunked<std::uint64_t, kArenaShift> next(layout.words() + extra_);
     std::vector<std::int64_t> m(layout_.width());
     for (std::size_t s = 0; s < size(); ++s) {
       layout_.unpack(at(static_cast<StateId>(s)), m.data());
       std::size_t bad = 0;
-      layout.pack(m.data(), next.append(), bad);
+      std::uint64_t* slot = next.append();
+      layout.pack(m.data(), slot, bad);
+      if (extra_ != 0) slot[layout.words()] = at(static_cast<StateId>(s))[layout_.words()];
     }
     layout_ = std::move(layout);
     arena_ = std::move(next);
@@ -189,8 +238,17 @@ class Store {
 
  private:
   static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+  bool same(const std::uint64_t* a, const std::uint64_t* b) const {
+    for (std::size_t k = 0; k < words(); ++k) {
+      if (a[k] != b[k]) return false;
+    }
+    return true;
+  }
   void grow() { rehash(table_.size() * 2); }
   void rehash(std::size_t capacity) {
+    // a table of many megabytes is probed at random: huge pages spare a TLB miss per probe
+    table_ = {};
+    core::reserveLarge(table_, capacity);
     table_.assign(capacity, kEmpty);
     for (std::size_t s = 0; s < size(); ++s) {
       const std::uint64_t h = hash(at(static_cast<StateId>(s)));
@@ -200,8 +258,37 @@ class Store {
     }
   }
   Layout layout_;
-  Chunked<std::uint64_t> arena_;
+  std::size_t extra_ = 0;  // words kept beside each marking
+  Chunked<std::uint64_t, kArenaShift> arena_;
   std::vector<std::uint64_t> table_;
+};
+
+/// The transitions that may be enabled in a packed marking, found from its marked place
+/// slots rather than by trying every transition: each transition is watched through one
+/// place slot it takes from or tests (the one the fewest transitions take from: a local
+/// state rather than a shared resource) and can be enabled only while that slot holds tokens;
+/// a transition that takes from and tests nothing is always a candidate.
+class Candidates {
+ public:
+  explicit Candidates(const Net& net);
+  /// Reads where the fields lie; call again after the layout changes.
+  void use(const Layout& layout);
+  /// The candidates in `m`, in an order fixed by `m` (the order every search fires them in),
+  /// into `out`.
+  void find(const std::uint64_t* m, std::vector<TransitionId>& out) const;
+
+ private:
+  std::vector<std::uint32_t> begin_;    // per place slot: its watchers in watchers_ from here
+  std::vector<TransitionId> watchers_;
+  std::vector<TransitionId> always_;
+  std::vector<std::uint32_t> field_at_;  // per bit of a packed marking: the field it lies in
+  std::vector<std::uint64_t> watched_;   // per word: the bits of fields some transition watches
+  std::vector<std::uint64_t> masks_;     // per field: its bits in place in its word
+  // per transition, the (word, bits) its one-token inputs and tests need set, in quick_ from
+  // quick_begin_[t]: a transition missing one is dropped without looking at its terms
+  std::vector<std::uint32_t> quick_begin_;
+  std::vector<std::pair<std::uint32_t, std::uint64_t>> quick_;
+  std::vector<std::vector<std::pair<PlaceSlotId, std::int32_t>>> needs_;  // per transition: (slot, weight) taken or tested
 };
 
 /// What firing a transition on a packed marking gave.
@@ -212,7 +299,9 @@ bool enabledIn(const Net& net, const Layout& layout, TransitionId t, const std::
 
 /// Marks in `seen` the transitions enabled in `m`; returns how many were not marked before.
 /// Over the states of a bottom component it gives the transitions that fire inside it.
-std::size_t markEnabled(const Net& net, const Layout& layout, const std::uint64_t* m, std::vector<bool>& seen);
+/// `scratch` holds the candidates.
+std::size_t markEnabled(const Net& net, const Layout& layout, const Candidates& candidates, const std::uint64_t* m,
+                        std::vector<bool>& seen, std::vector<TransitionId>& scratch);
 
 /// Fires `t` on `m` into `out`. TooBig (with the field in `field`) when a count does not fit.
 Fired fireInto(const Net& net, const Layout& layout, TransitionId t, const std::uint64_t* m, std::uint64_t* out,
@@ -230,13 +319,24 @@ struct Plan {
 Plan plan(const Net& net, const ExploreOptions& options);
 
 /// The lowest and highest count of each place slot, and the largest marking, over the
-/// markings noted.
+/// markings noted (in `layout`, which must not change between them).
 struct Observed {
-  std::vector<std::int64_t> low, high;
+  std::vector<std::int64_t> low, high;  ///< per place slot, once settled
   std::int64_t max_marking = 0;
-  explicit Observed(std::size_t width) : low(width, kW), high(width, 0) {}
-  void note(const Layout& layout, const std::uint64_t* m);
+  std::vector<std::uint64_t> any, all;  ///< per word of one-token fields: OR and AND of the markings
+  std::vector<bool> single;             ///< per word: all its fields hold one token at most
+  std::vector<std::uint32_t> fields;    ///< the fields noted one by one (the others' words whole)
+  explicit Observed(const Layout& layout);
+  /// Notes every slot of `m`; returns its tokens (ω not counted).
+  std::int64_t note(const Layout& layout, const std::uint64_t* m);
+  /// Notes the slots `terms` touch in `m`, whose tokens are `total` (the others were noted in
+  /// the marking it was reached from).
+  void noteChange(const Layout& layout, const std::uint64_t* m, std::span<const Term> terms, std::int64_t total);
   void merge(const Observed& other);
+  /// Fills `low` and `high` for the fields noted by word; call once all are noted.
+  void settle(const Layout& layout);
+  /// Goes on in `after` from what was noted in `before` (the markings were re-packed).
+  void relayout(const Layout& before, const Layout& after);
 };
 
 /// Fills the answers read off the observations: place bounds, unbounded and constant places,

@@ -1,0 +1,25 @@
+#pragma once
+/// \file
+/// Bounds from the state equation (semantics §11): every reachable marking M satisfies
+/// M = M0 + C·x for some firing count vector x >= 0, so the most tokens a place slot can hold
+/// is at most the optimum of a linear program over x. The program is a relaxation (it ignores
+/// the order of firings, test and inhibitor arcs), so its bound is sound but may be above the
+/// true one; where the invariants were cut short it still bounds what they could not.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "gdpn/net/invariants.h"
+#include "gdpn/net/net.h"
+
+namespace gdpn::net {
+
+/// Per place slot, a bound from the state equation, tokens: for the slots where `wanted` is
+/// true, the largest M(p) with M = M0 + C·x, 0 <= M <= capacity, x >= 0 (GLPK's simplex, one
+/// program per slot, each starting from the last one's basis), rounded down; -1 where the
+/// program is unbounded, where it was not wanted, or once `options`' deadline has passed.
+std::vector<std::int64_t> stateEquationBounds(const Net& net, const std::vector<bool>& wanted,
+                                              const InvariantOptions& options = {});
+
+}  // namespace gdpn::net
