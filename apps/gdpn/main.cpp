@@ -269,6 +269,7 @@ struct AnalyzeArgs {
   double max_memory_mib = 0.0;
   double time_limit_s = 0.0;
   unsigned threads = 1;
+  bool shortest_path = false;
 };
 
 int analyze(const AnalyzeArgs& a) {
@@ -292,6 +293,7 @@ int analyze(const AnalyzeArgs& a) {
   options.explore.max_states = a.max_states;
   options.explore.max_bytes = static_cast<std::uint64_t>(a.max_memory_mib * 1024.0 * 1024.0);
   options.explore.threads = a.threads;
+  options.explore.shortest_path = a.shortest_path;
   options.time_limit_s = a.time_limit_s;
   // a progress line on a terminal: states, states per second, memory (the invariants: rows)
   const bool show = a.progress || isatty(STDERR_FILENO);
@@ -578,6 +580,8 @@ int main(int argc, char** argv) {
   analyze_cmd->add_option("--threads", analyze_args.threads,
                           "threads for the search (1: one depth-first walk, the least memory)")
       ->check(number(1u, 256u, "a whole number of threads from 1 to 256"));
+  analyze_cmd->add_flag("--shortest-path", analyze_args.shortest_path,
+                        "give a shortest path to a deadlock (a second pass over the states)");
   analyze_cmd->add_flag("--progress", analyze_args.progress,
                         "print a progress line every 250 ms even when stderr is not a terminal");
 

@@ -43,7 +43,12 @@ class Search {
   /// Notes the new state `s`, reached from `from` by `t` (from == s: the initial state).
   void noteNew(StateId s, StateId from, TransitionId t);
   void finishComponent(StateId v);
+  /// A shortest firing sequence to a dead state: breadth first over the states stored,
+  /// ending at the first dead one it generates.
   void shortestPathToDeadlock(StateSpace& out);
+  /// The path to the first dead state the search met, from the search path it had then:
+  /// each step the transition to the furthest state of that path one firing reaches.
+  void deadlockPath(StateSpace& out);
   std::uint64_t bytes() const;
 
   /// A state on the search path. Its successors not yet visited when it was expanded lie
@@ -99,7 +104,8 @@ class Search {
   std::unique_ptr<Observed> seen_;
   std::vector<bool> fired_;
   bool deadlock_ = false;
-  std::vector<StateId> dead_states_;
+  std::vector<StateId> dead_path_;  // the search path to the first dead state
+  std::vector<StateId> dead_states_;  // every dead state (for a shortest path only)
   bool live_ = true;
   std::uint32_t bottoms_ = 0;
   bool root_bottom_ = false;
@@ -247,7 +253,13 @@ Search::Expand Search::expand(StateId v) {
   }
   setRindex(v, rv);
   edges_count_ += succ_t_.size();
-  if (succ_t_.empty()) deadlock_ = true, dead_states_.push_back(v);
+  if (succ_t_.empty() && options_.shortest_path) dead_states_.push_back(v);
+  if (succ_t_.empty() && !deadlock_) {
+    // the first dead state: the search path to it (the frames' states, then v)
+    deadlock_ = true;
+    for (std::size_t i = 0; i < frames_.size(); ++i) dead_path_.push_back(frames_[i].state());
+    dead_path_.push_back(v);
+  }
   frames_.push({v | (root ? 0x80000000u : 0u), static_cast<std::uint32_t>(edges_.size())});
   return Expand::Ok;
 }
@@ -300,6 +312,48 @@ void Search::finishComponent(StateId v) {
 std::uint64_t Search::bytes() const {
   return store_->bytes() + leaves_.capacity() / 8 + frames_.bytes() + edges_.bytes() +
          stack_.bytes() + path_.capacity() * sizeof(std::uint64_t);
+}
+
+void Search::deadlockPath(StateSpace& out) {
+  const std::vector<StateId>& path = dead_path_;
+  if (path.size() < 2) return;
+  std::unordered_map<StateId, std::size_t> position;
+  for (std::size_t i = 0; i < path.size(); ++i) position.emplace(path[i], i);
+  const Layout& L = store_->layout();
+  std::vector<std::uint64_t> next(store_->words());
+  // in a coverability graph a stored successor may be the accelerated form: ω where the
+  // firing gave a number
+  auto covers = [&](StateId s, const std::uint64_t* m) {
+    for (std::size_t k = 0; k < L.width(); ++k) {
+      const std::int64_t v = L.value(store_->at(s), k);
+      if (v != kW && v != L.value(m, k)) return false;
+    }
+    return true;
+  };
+  for (std::size_t i = 0; i + 1 < path.size();) {
+    std::size_t best = i;
+    TransitionId via = 0;
+    candidates_.find(store_->at(path[i]), candidates_now_);
+    for (TransitionId t : candidates_now_) {
+      bool enabled = false;
+      if (fire(t, store_->at(path[i]), next.data(), enabled) != Expand::Ok || !enabled) continue;
+      const StateId w = store_->find(next.data(), store_->hash(next.data()));
+      std::size_t j = i;
+      if (w != kNone) {
+        const auto at = position.find(w);
+        if (at != position.end()) j = at->second;
+      } else if (cover_ && covers(path[i + 1], next.data())) {
+        j = i + 1;
+      }
+      if (j > best) best = j, via = t;
+    }
+    if (best == i) {  // cannot happen: the next state on the path is a successor
+      out.deadlock_path.clear();
+      return;
+    }
+    out.deadlock_path.push_back(via);
+    i = best;
+  }
 }
 
 void Search::shortestPathToDeadlock(StateSpace& out) {
@@ -449,7 +503,11 @@ StateSpace Search::run() {
     out.live = live_;
     out.reversible = bottoms_ == 1 && root_bottom_;
   }
-  if (deadlock_ && out.complete) shortestPathToDeadlock(out);
+  if (deadlock_ && options_.shortest_path && out.complete) {
+    shortestPathToDeadlock(out);
+  } else if (deadlock_) {
+    deadlockPath(out);
+  }
   out.peak_bytes = peak_;
   return out;
 }
