@@ -272,6 +272,10 @@ TEST(CliAnalyze, APnmlNetAndAModelFile) {
   r = gdpn("analyze tests/data/conformance/Philosophers-PT-000005.pnml --threads 2");
   EXPECT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("243 states, 945 edges"), std::string::npos) << r.out;
+  // ten philosophers: the search's own path is long; asked for, a shortest one (each takes a fork)
+  r = gdpn("analyze tests/data/conformance/Philosophers-PT-000010.pnml --shortest-path --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["deadlock_path"].size(), 10u) << r.out;
   r = gdpn("analyze tests/data/conformance/Referendum-PT-0010.pnml --max-states 100");
   EXPECT_EQ(r.code, 3) << r.out;
   EXPECT_NE(r.out.find("(partial: --max-states reached;"), std::string::npos) << r.out;
