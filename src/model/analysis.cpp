@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <limits>
+#include <string_view>
 
 #include "gdpn/net/kernel.h"
 
@@ -167,6 +169,31 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
   return j.dump(2) + "\n";
 }
 
+namespace {
+
+/// Writes `names` after text that ends at `column`, a space before each, wrapping lines at
+/// 100 columns with `indent` spaces before the continuation; past `most` names, how many more.
+void nameList(std::ostream& out, std::size_t column, const std::vector<std::string_view>& names, std::size_t indent,
+              std::size_t most = std::numeric_limits<std::size_t>::max()) {
+  constexpr std::size_t kWidth = 100;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    std::string word(names[i]);
+    if (i == most) word = "... and " + std::to_string(names.size() - most) + " more (--json lists all)";
+    if (column + 1 + word.size() > kWidth && column > indent) {
+      out << "\n" << std::string(indent, ' ');
+      column = indent;
+    } else {
+      out << ' ';
+      ++column;
+    }
+    out << word;
+    column += word.size();
+    if (i == most) break;
+  }
+}
+
+}  // namespace
+
 void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
   const auto& s = a.space;
   const auto& tr = net.transitions();
@@ -177,27 +204,38 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
   if (!s.bounded) out << " of a coverability graph";
   out << " (" << (s.bounded ? "" : "the net is unbounded; ") << net::stopReason(s.stop) << "; the search held "
       << megabytes(s.peak_bytes) << ")\n";
+  // lists of names wrap at 100 columns, under the first value
+  constexpr std::size_t kValue = 19;
   out << "  deadlock:        " << (s.deadlock ? "yes" : s.complete ? "no" : "none found");
   if (s.deadlock && !s.deadlock_path.empty()) {
-    out << " after";
-    for (auto t : s.deadlock_path) out << ' ' << tr[t].name;
+    const std::string head =
+        " after " + std::to_string(s.deadlock_path.size()) + (s.deadlock_path.size() == 1 ? " firing:" : " firings:");
+    out << head;
+    std::vector<std::string_view> names;
+    for (auto t : s.deadlock_path) names.emplace_back(tr[t].name);
+    nameList(out, kValue + 3 + head.size(), names, kValue);
   } else if (s.deadlock && s.complete && s.bounded) {
     out << " (the initial marking is dead)";
   }
   out << "\n  bounds:          max " << s.max_place << " in one place, " << s.max_marking
       << " in one marking; one-safe: " << yes(s.one_safe) << "\n";
+  constexpr std::size_t kShownNames = 20;
   if (!s.bounded) {
     out << "  unbounded:      ";
-    for (auto p : s.unbounded_places) out << ' ' << net.places()[p].name;
+    std::vector<std::string_view> names;
+    for (auto p : s.unbounded_places) names.emplace_back(net.places()[p].name);
+    nameList(out, kValue - 1, names, kValue, kShownNames);
     out << "\n";
   }
   out << "  quasi-live:      " << yes(s.quasi_live);
   if (!s.quasi_live) {
-    out << " (" << (s.complete ? "dead:" : "not fired yet:");
+    std::vector<std::string_view> names;
     for (std::size_t t = 0; t < tr.size(); ++t) {
-      if (!s.fired[t]) out << ' ' << tr[t].name;
+      if (!s.fired[t]) names.emplace_back(tr[t].name);
     }
-    out << ")";
+    const std::string head = s.complete ? "dead (" : "not fired yet (";
+    out << ", " << head << names.size() << "):";
+    nameList(out, kValue + 2 + 2 + head.size() + std::to_string(names.size()).size() + 2, names, kValue, kShownNames);
   }
   out << "\n  live:            " << decided(s.live) << "\n  reversible:      " << decided(s.reversible)
       << "\n  constant places: " << s.constant_places.size() << "\n";

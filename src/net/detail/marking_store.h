@@ -113,7 +113,11 @@ class Chunked {
   /// Drops the elements from `n` on; the chunks stay for reuse.
   void shrink(std::size_t n) { size_ = std::min(size_, n); }
   std::size_t size() const { return size_; }
-  std::size_t bytes() const { return chunks_.size() * chunkBytes(); }
+  /// Memory held, bytes: a chunk on huge pages only as far as it is used (its pages are
+  /// touched, and so taken from the system, only then).
+  std::size_t bytes() const {
+    return chunkBytes() >= kHuge ? size_ * stride_ * sizeof(T) : chunks_.size() * chunkBytes();
+  }
   void clear() {
     chunks_.clear();
     size_ = 0;
