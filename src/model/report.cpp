@@ -77,47 +77,100 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
   return r;
 }
 
+namespace {
+
+/// The text of a JSON document as `ordered_json::dump(2)` writes it, written piece by piece:
+/// the large arrays one element at a time, so that no tree of the whole report is held (at
+/// 100,000 instances it would hold several times the text).
+class JsonText {
+ public:
+  explicit JsonText(std::string& out) : out_(out) { out_ += "{\n"; }
+  /// A member whose value is small enough to build whole.
+  void member(const std::string& key, const nlohmann::ordered_json& value) {
+    open(key);
+    indented(value.dump(2), 2);
+  }
+  /// A member holding an array: `element(i)` makes element i of `count`.
+  template <class Element>
+  void array(const std::string& key, std::size_t count, Element&& element) {
+    open(key);
+    if (count == 0) {
+      out_ += "[]";
+      return;
+    }
+    out_ += "[\n";
+    for (std::size_t i = 0; i < count; ++i) {
+      out_ += "    ";
+      indented(element(i).dump(2), 4);
+      out_ += i + 1 < count ? ",\n" : "\n";
+    }
+    out_ += "  ]";
+  }
+  void close() { out_ += "\n}\n"; }
+
+ private:
+  void open(const std::string& key) {
+    if (!first_) out_ += ",\n";
+    first_ = false;
+    out_ += "  " + nlohmann::ordered_json(key).dump() + ": ";
+  }
+  /// `text` with `by` more spaces after each line break (strings in it never hold one).
+  void indented(const std::string& text, std::size_t by) {
+    for (const char c : text) {
+      out_ += c;
+      if (c == '\n') out_.append(by, ' ');
+    }
+  }
+  std::string& out_;
+  bool first_ = true;
+};
+
+}  // namespace
+
 std::string reportJson(const Report& report) {
   using nlohmann::ordered_json;
-  ordered_json j;
-  j["model"] = report.model;
-  j["seed"] = report.seed;
-  j["dt"] = report.dt;
-  j["steps"] = report.outcome.steps;
-  j["time"] = report.outcome.time;
-  j["stopped"] = stopReasonName(report.outcome.reason);
-  if (!report.outcome.message.empty()) j["message"] = report.outcome.message;
-  j["transitions"] = ordered_json::array();
-  for (const auto& t : report.transitions) {
-    j["transitions"].push_back({{"name", t.name},
-                                {"occurrences", t.occurrences},
-                                {"cycles", t.cycles},
-                                {"mean_cycle", t.mean_cycle},
-                                {"min_cycle", t.min_cycle},
-                                {"max_cycle", t.max_cycle},
-                                {"utilisation", t.utilisation}});
-  }
-  j["places"] = ordered_json::array();
-  for (const auto& p : report.places) {
-    j["places"].push_back({{"name", p.name},
-                           {"mean_tokens", p.mean_tokens},
-                           {"max_tokens", p.max_tokens},
-                           {"final_tokens", p.final_tokens},
-                           {"throughput", p.throughput}});
-  }
-  j["cycles"] = ordered_json::array();
-  for (const auto& c : report.cycles) {
-    j["cycles"].push_back({{"invariant", c.invariant},
-                           {"tokens", c.tokens},
-                           {"bound", c.bound},
-                           {"measured", c.measured},
-                           {"alike", c.alike}});
-  }
-  j["cycles_complete"] = report.cycles_stop == net::ExploreStop::Done;
-  j["figures"] = ordered_json::object();
-  for (const auto& [k, v] : report.figures) j["figures"][k] = v;
-  if (!report.figures_error.empty()) j["figures_error"] = report.figures_error;
-  return j.dump(2) + "\n";
+  std::string out;
+  JsonText j(out);
+  j.member("model", report.model);
+  j.member("seed", report.seed);
+  j.member("dt", report.dt);
+  j.member("steps", report.outcome.steps);
+  j.member("time", report.outcome.time);
+  j.member("stopped", stopReasonName(report.outcome.reason));
+  if (!report.outcome.message.empty()) j.member("message", report.outcome.message);
+  j.array("transitions", report.transitions.size(), [&](std::size_t i) {
+    const auto& t = report.transitions[i];
+    return ordered_json{{"name", t.name},
+                        {"occurrences", t.occurrences},
+                        {"cycles", t.cycles},
+                        {"mean_cycle", t.mean_cycle},
+                        {"min_cycle", t.min_cycle},
+                        {"max_cycle", t.max_cycle},
+                        {"utilisation", t.utilisation}};
+  });
+  j.array("places", report.places.size(), [&](std::size_t i) {
+    const auto& p = report.places[i];
+    return ordered_json{{"name", p.name},
+                        {"mean_tokens", p.mean_tokens},
+                        {"max_tokens", p.max_tokens},
+                        {"final_tokens", p.final_tokens},
+                        {"throughput", p.throughput}};
+  });
+  j.array("cycles", report.cycles.size(), [&](std::size_t i) {
+    const auto& c = report.cycles[i];
+    return ordered_json{{"invariant", c.invariant},
+                        {"tokens", c.tokens},
+                        {"bound", c.bound},
+                        {"measured", c.measured},
+                        {"alike", c.alike}};
+  });
+  j.member("cycles_complete", report.cycles_stop == net::ExploreStop::Done);
+  ordered_json figures = ordered_json::object();
+  for (const auto& [k, v] : report.figures) figures[k] = v;
+  j.member("figures", figures);
+  if (!report.figures_error.empty()) j.member("figures_error", report.figures_error);
+  j.close();
+  return out;
 }
 
 namespace {

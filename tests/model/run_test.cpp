@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <sstream>
 
 #include "gdpn/core/text.h"
@@ -87,6 +89,63 @@ pages:
   ASSERT_TRUE(sim2) << diags.str();
   const auto r2 = makeReport(*sim2, sim2->run({}));
   EXPECT_EQ(r2.figures_error, "summary() must return a dict of figures, not int");
+}
+
+/// The report as a whole JSON tree dumped at once: what `reportJson` writes piece by piece.
+std::string reportAsTree(const Report& report) {
+  using nlohmann::ordered_json;
+  ordered_json j;
+  j["model"] = report.model;
+  j["seed"] = report.seed;
+  j["dt"] = report.dt;
+  j["steps"] = report.outcome.steps;
+  j["time"] = report.outcome.time;
+  j["stopped"] = stopReasonName(report.outcome.reason);
+  if (!report.outcome.message.empty()) j["message"] = report.outcome.message;
+  j["transitions"] = ordered_json::array();
+  for (const auto& t : report.transitions) {
+    j["transitions"].push_back({{"name", t.name}, {"occurrences", t.occurrences}, {"cycles", t.cycles},
+                                {"mean_cycle", t.mean_cycle}, {"min_cycle", t.min_cycle}, {"max_cycle", t.max_cycle},
+                                {"utilisation", t.utilisation}});
+  }
+  j["places"] = ordered_json::array();
+  for (const auto& p : report.places) {
+    j["places"].push_back({{"name", p.name}, {"mean_tokens", p.mean_tokens}, {"max_tokens", p.max_tokens},
+                           {"final_tokens", p.final_tokens}, {"throughput", p.throughput}});
+  }
+  j["cycles"] = ordered_json::array();
+  for (const auto& c : report.cycles) {
+    j["cycles"].push_back({{"invariant", c.invariant}, {"tokens", c.tokens}, {"bound", c.bound},
+                           {"measured", c.measured}, {"alike", c.alike}});
+  }
+  j["cycles_complete"] = report.cycles_stop == net::ExploreStop::Done;
+  j["figures"] = ordered_json::object();
+  for (const auto& [k, v] : report.figures) j["figures"][k] = v;
+  if (!report.figures_error.empty()) j["figures_error"] = report.figures_error;
+  return j.dump(2) + "\n";
+}
+
+TEST(Report, TheJsonWrittenPieceByPieceIsTheWholeTreesText) {
+  for (const char* model : {"examples/basics/two_cells", "tests/data/good/cycles.gdpn.yaml", "examples/basics/figure31"}) {
+    SCOPED_TRACE(model);
+    core::Diagnostics diags;
+    const auto path = resolveModelPath(std::string(GDPN_SOURCE_DIR) + "/" + model, diags);
+    ASSERT_TRUE(path) << diags.str();
+    auto m = loadModel(*path, diags);
+    ASSERT_TRUE(m) << diags.str();
+    auto sim = Simulation::create(*m, diags);
+    ASSERT_TRUE(sim) << diags.str();
+    auto report = makeReport(*sim, sim->run({20.0, {}}));
+    EXPECT_EQ(reportJson(report), reportAsTree(report));
+    // the other members: a message, figures and their error, nothing in the arrays
+    report.outcome.message = "stopped by \"a\" script\nline two";
+    report.figures = {{"boxes", "3"}, {"share", "75 %"}};
+    report.figures_error = "summary() failed";
+    report.cycles.clear();
+    report.places.clear();
+    report.cycles_stop = net::ExploreStop::TimeLimit;
+    EXPECT_EQ(reportJson(report), reportAsTree(report));
+  }
 }
 
 TEST(Run, ProducerConsumerSettlesToTheConsumersCycle) {
