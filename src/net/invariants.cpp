@@ -336,39 +336,6 @@ std::vector<Invariant> semiflows(const std::vector<Sparse>& a, std::size_t colum
   return out;
 }
 
-/// The incidence matrix, sparse: one row per place slot over the transitions, and its
-/// transpose, one row per transition over the place slots.
-struct Incidence {
-  std::vector<Sparse> by_place;
-  std::vector<Sparse> by_transition;
-};
-
-Incidence incidenceMatrix(const Net& net) {
-  Incidence c;
-  c.by_place.resize(net.placeSlots().size());
-  c.by_transition.resize(net.transitions().size());
-  for (TransitionId t = 0; t < net.transitions().size(); ++t) {
-    Sparse& row = c.by_transition[t];
-    for (const Term& term : net.termsOf(t)) {
-      if (term.kind == TermKind::Input) row.emplace_back(term.place_slot, -std::int64_t{term.weight});
-      if (term.kind == TermKind::Output) row.emplace_back(term.place_slot, term.weight);
-    }
-    std::sort(row.begin(), row.end());
-    Sparse merged;
-    for (const auto& [ps, v] : row) {
-      if (!merged.empty() && merged.back().first == ps) {
-        merged.back().second += v;
-      } else {
-        merged.emplace_back(ps, v);
-      }
-    }
-    std::erase_if(merged, [](const auto& e) { return e.second == 0; });
-    row = std::move(merged);
-    for (const auto& [ps, v] : row) c.by_place[ps].emplace_back(t, v);
-  }
-  return c;
-}
-
 /// True when the union of the supports covers every index below `n`.
 bool covers(const std::vector<Invariant>& invs, std::size_t n) {
   std::vector<bool> seen(n, false);
@@ -418,6 +385,32 @@ std::vector<Invariant> slotwise(const Net& net, const Incidence& c, bool slack, 
 }
 
 }  // namespace
+
+Incidence incidenceMatrix(const Net& net) {
+  Incidence c;
+  c.by_place.resize(net.placeSlots().size());
+  c.by_transition.resize(net.transitions().size());
+  for (TransitionId t = 0; t < net.transitions().size(); ++t) {
+    Sparse& row = c.by_transition[t];
+    for (const Term& term : net.termsOf(t)) {
+      if (term.kind == TermKind::Input) row.emplace_back(term.place_slot, -std::int64_t{term.weight});
+      if (term.kind == TermKind::Output) row.emplace_back(term.place_slot, term.weight);
+    }
+    std::sort(row.begin(), row.end());
+    Sparse merged;
+    for (const auto& [ps, v] : row) {
+      if (!merged.empty() && merged.back().first == ps) {
+        merged.back().second += v;
+      } else {
+        merged.emplace_back(ps, v);
+      }
+    }
+    std::erase_if(merged, [](const auto& e) { return e.second == 0; });
+    row = std::move(merged);
+    for (const auto& [ps, v] : row) c.by_place[ps].emplace_back(t, v);
+  }
+  return c;
+}
 
 std::int64_t incidence(const Net& net, PlaceSlotId ps, TransitionId t) {
   std::int64_t c = 0;

@@ -50,25 +50,14 @@ std::vector<std::int64_t> stateEquationBounds(const Net& net, const std::vector<
   }
   for (std::size_t t = 0; t < transitions; ++t) glp_set_col_bnds(lp.get(), static_cast<int>(t + 1), GLP_LO, 0.0, 0.0);
   // the incidence, one entry per (place slot, transition) that changes the slot
+  const Incidence c = incidenceMatrix(net);
   std::vector<int> ia{0}, ja{0};
   std::vector<double> ar{0.0};
-  std::vector<std::vector<std::pair<int, double>>> row(places);
   for (TransitionId t = 0; t < transitions; ++t) {
-    std::vector<std::pair<PlaceSlotId, std::int64_t>> c;
-    for (const Term& term : net.termsOf(t)) {
-      if (term.kind == TermKind::Input) c.emplace_back(term.place_slot, -std::int64_t{term.weight});
-      if (term.kind == TermKind::Output) c.emplace_back(term.place_slot, term.weight);
-    }
-    std::sort(c.begin(), c.end());
-    for (std::size_t i = 0; i < c.size();) {
-      std::int64_t v = 0;
-      const PlaceSlotId ps = c[i].first;
-      for (; i < c.size() && c[i].first == ps; ++i) v += c[i].second;
-      if (v == 0) continue;
+    for (const auto& [ps, v] : c.by_transition[t]) {
       ia.push_back(static_cast<int>(ps + 1));
       ja.push_back(static_cast<int>(t + 1));
       ar.push_back(static_cast<double>(v));
-      row[ps].emplace_back(static_cast<int>(t + 1), static_cast<double>(v));
     }
   }
   glp_load_matrix(lp.get(), static_cast<int>(ar.size() - 1), ia.data(), ja.data(), ar.data());
@@ -81,13 +70,13 @@ std::vector<std::int64_t> stateEquationBounds(const Net& net, const std::vector<
     if (!wanted[k]) continue;
     if (options.deadline && std::chrono::steady_clock::now() >= *options.deadline) break;
     if (previous < places) {
-      for (const auto& [j, v] : row[previous]) glp_set_obj_coef(lp.get(), j, 0.0);
+      for (const auto& [t, v] : c.by_place[previous]) glp_set_obj_coef(lp.get(), static_cast<int>(t + 1), 0.0);
     }
     previous = k;
     // maximise C_k · x; M(k) = M0(k) + that
-    for (const auto& [j, v] : row[k]) glp_set_obj_coef(lp.get(), j, v);
+    for (const auto& [t, v] : c.by_place[k]) glp_set_obj_coef(lp.get(), static_cast<int>(t + 1), static_cast<double>(v));
     const std::int64_t m0 = net.placeSlots()[k].initial;
-    if (row[k].empty()) {
+    if (c.by_place[k].empty()) {
       out[k] = m0;
       continue;
     }

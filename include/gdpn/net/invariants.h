@@ -62,6 +62,16 @@ struct Invariants {
 /// The incidence of transition `t` on place slot `ps`: tokens it puts there minus tokens it takes.
 std::int64_t incidence(const Net& net, PlaceSlotId ps, TransitionId t);
 
+/// The incidence matrix C (tokens put minus tokens taken), sparse: its non-zero entries by
+/// place slot and, the same entries, by transition; each list sorted by index.
+struct Incidence {
+  std::vector<std::vector<std::pair<TransitionId, std::int64_t>>> by_place;       ///< per place slot: (t, C[p][t])
+  std::vector<std::vector<std::pair<PlaceSlotId, std::int64_t>>> by_transition;  ///< per transition: (p, C[p][t])
+};
+
+/// The incidence matrix of `net`.
+Incidence incidenceMatrix(const Net& net);
+
 /// Computes the invariants of `net`.
 Invariants invariants(const Net& net, const InvariantOptions& options = {});
 

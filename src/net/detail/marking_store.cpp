@@ -38,7 +38,7 @@ std::size_t markEnabled(const Net& net, const Layout& layout, const Candidates& 
   return added;
 }
 
-Candidates::Candidates(const Net& net) {
+Candidates::Candidates(const Net& net) : net_(net) {
   const std::size_t places = net.placeSlots().size();
   std::vector<std::uint32_t> takers(places, 0);
   for (const Term& term : net.terms()) {
@@ -63,12 +63,6 @@ Candidates::Candidates(const Net& net) {
   for (TransitionId t = 0; t < net.transitions().size(); ++t) {
     if (sentinel[t] != kNone) watchers_[count[sentinel[t]]++] = t;
   }
-  needs_.resize(net.transitions().size());
-  for (TransitionId t = 0; t < net.transitions().size(); ++t) {
-    for (const Term& term : net.termsOf(t)) {
-      if (term.kind == TermKind::Input || term.kind == TermKind::Test) needs_[t].emplace_back(term.place_slot, term.weight);
-    }
-  }
 }
 
 void Candidates::use(const Layout& layout) {
@@ -82,21 +76,26 @@ void Candidates::use(const Layout& layout) {
     if (begin_[k + 1] > begin_[k]) watched_[f.word] |= masks_[k];
   }
   // one token from a one-bit field: that bit must be set (an ω field is never one bit)
-  quick_begin_.assign(needs_.size() + 1, 0);
+  const std::size_t transitions = net_.transitions().size();
+  quick_begin_.assign(transitions + 1, 0);
   quick_.clear();
-  for (std::size_t t = 0; t < needs_.size(); ++t) {
+  for (TransitionId t = 0; t < transitions; ++t) {
     quick_begin_[t] = static_cast<std::uint32_t>(quick_.size());
-    for (const auto& [k, weight] : needs_[t]) {
-      if (weight != 1 || layout.bits(k) != 1 || layout.field(k).omega) continue;
+    for (const Term& term : net_.termsOf(t)) {
+      const std::size_t k = term.place_slot;
+      if ((term.kind != TermKind::Input && term.kind != TermKind::Test) || term.weight != 1 || layout.bits(k) != 1 ||
+          layout.field(k).omega) {
+        continue;
+      }
       const auto& f = layout.field(k);
-      if (!quick_.empty() && quick_.size() > quick_begin_[t] && quick_.back().first == f.word) {
+      if (quick_.size() > quick_begin_[t] && quick_.back().first == f.word) {
         quick_.back().second |= masks_[k];
       } else {
         quick_.emplace_back(f.word, masks_[k]);
       }
     }
   }
-  quick_begin_[needs_.size()] = static_cast<std::uint32_t>(quick_.size());
+  quick_begin_[transitions] = static_cast<std::uint32_t>(quick_.size());
 }
 
 void Candidates::find(const std::uint64_t* m, std::vector<TransitionId>& out) const {

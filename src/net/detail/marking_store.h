@@ -292,7 +292,7 @@ class Candidates {
   // quick_begin_[t]: a transition missing one is dropped without looking at its terms
   std::vector<std::uint32_t> quick_begin_;
   std::vector<std::pair<std::uint32_t, std::uint64_t>> quick_;
-  std::vector<std::vector<std::pair<PlaceSlotId, std::int32_t>>> needs_;  // per transition: (slot, weight) taken or tested
+  const Net& net_;
 };
 
 /// What firing a transition on a packed marking gave.
