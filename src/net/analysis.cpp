@@ -19,7 +19,7 @@ using namespace detail;
 /// (Pearce's single-index variant of Tarjan's algorithm), so that no edge is stored.
 class Search {
  public:
-  Search(const Net& net, const ExploreOptions& options) : net_(net), options_(options), candidates_(net) {}
+  Search(const Net& net, const ExploreOptions& options) : net_(net), options_(options), candidates_(net), firing_(net) {}
 
   StateSpace run();
 
@@ -69,6 +69,7 @@ class Search {
   const ExploreOptions& options_;
   std::unique_ptr<Store> store_;
   Candidates candidates_;
+  Firing firing_;
   std::vector<bool> accel_;   // per place slot: may be accelerated to ω
   std::vector<std::size_t> accel_slots_;  // those place slots
   bool cover_ = false;        // some place slot has no structural bound
@@ -114,7 +115,7 @@ class Search {
 
 Search::Expand Search::fire(TransitionId t, const std::uint64_t* m, std::uint64_t* out, bool& enabled) {
   std::size_t field = 0;
-  const Fired f = fireInto(net_, store_->layout(), t, m, out, field);
+  const Fired f = firing_.fire(t, m, out, field);
   enabled = f != Fired::NotEnabled;
   if (f != Fired::TooBig) return Expand::Ok;
   return widen(field) ? Expand::Widened : Expand::Overflow;
@@ -137,6 +138,7 @@ bool Search::widen(std::size_t k) {
   store_->relayout(Layout(bits, omega));
   seen_->relayout(before, store_->layout());
   candidates_.use(store_->layout());
+  firing_.use(store_->layout());
   if (cover_) {
     // the path's markings in the new layout, and their hashes
     const Layout& after = store_->layout();
@@ -294,10 +296,9 @@ void Search::finishComponent(StateId v) {
     ++bottoms_;
     if (live_) {
       union_.assign(net_.transitions().size(), false);
-      const Layout& L = store_->layout();
-      std::size_t fire = markEnabled(net_, L, candidates_, store_->at(v), union_, candidates_now_);
+      std::size_t fire = markEnabled(firing_, candidates_, store_->at(v), union_, candidates_now_);
       for (std::size_t i = first; i < size; ++i) {
-        fire += markEnabled(net_, L, candidates_, store_->at(stack_[i]), union_, candidates_now_);
+        fire += markEnabled(firing_, candidates_, store_->at(stack_[i]), union_, candidates_now_);
       }
       live_ = fire == union_.size();
     }
@@ -413,6 +414,7 @@ StateSpace Search::run() {
   }
   store_ = std::make_unique<Store>(Layout(p.bits, p.omega), true);
   candidates_.use(store_->layout());
+  firing_.use(store_->layout());
   if (cover_) boundedParts();
   std::vector<std::uint64_t> key(store_->words());
   std::size_t bad = 0;

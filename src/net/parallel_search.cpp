@@ -36,9 +36,11 @@ class Parallel {
         options_(options),
         layout_(plan.bits, plan.omega),
         candidates_(net),
+        firing_(net),
         threads_(options.threads),
         shards_(options.threads) {
     candidates_.use(layout_);
+    firing_.use(layout_);
     for (auto& s : shards_) {
       s.store = std::make_unique<Store>(layout_);
       s.seen = std::make_unique<Observed>(layout_);
@@ -150,7 +152,7 @@ class Parallel {
         for (TransitionId t : candidates) {
           std::size_t field = 0;
           std::uint64_t* out = keys.data() + count * words;
-          const Fired f = fireInto(net_, layout_, t, s.store->at(v), out, field);
+          const Fired f = firing_.fire(t, s.store->at(v), out, field);
           if (f == Fired::NotEnabled) continue;
           if (f == Fired::TooBig) {
             halt(ExploreStop::Overflow);
@@ -219,7 +221,7 @@ class Parallel {
       for (TransitionId t : candidates) {
         std::size_t field = 0;
         std::uint64_t* out = keys.data() + count * words;
-        if (fireInto(net_, layout_, t, s.store->at(v), out, field) != Fired::Ok) continue;
+        if (firing_.fire(t, s.store->at(v), out, field) != Fired::Ok) continue;
         hashes[count] = s.store->hash(out);
         shards_[owner(hashes[count])].store->prefetch(hashes[count]);
         ++count;
@@ -293,9 +295,9 @@ class Parallel {
           ++bottoms;
           if (live) {
             std::fill(fires.begin(), fires.end(), false);
-            std::size_t fire = markEnabled(net_, layout_, candidates_, marking(v), fires, candidates);
+            std::size_t fire = markEnabled(firing_, candidates_, marking(v), fires, candidates);
             for (std::size_t i = first; i < stack.size(); ++i) {
-              fire += markEnabled(net_, layout_, candidates_, marking(stack[i]), fires, candidates);
+              fire += markEnabled(firing_, candidates_, marking(stack[i]), fires, candidates);
             }
             live = fire == transitions;
           }
@@ -333,7 +335,7 @@ class Parallel {
           std::uint32_t k = via[x];
           candidates_.find(marking(parent[x]), candidates);
           for (TransitionId t : candidates) {
-            if (!enabledIn(net_, layout_, t, marking(parent[x]))) continue;
+            if (!firing_.enabled(t, marking(parent[x]))) continue;
             if (k-- == 0) {
               out.deadlock_path.push_back(t);
               break;
@@ -356,6 +358,7 @@ class Parallel {
   const ExploreOptions& options_;
   Layout layout_;
   Candidates candidates_;  // shared: read only once made
+  Firing firing_;          // likewise
   unsigned threads_;
   std::vector<Shard> shards_;
   unsigned start_ = 0;

@@ -118,8 +118,12 @@ std::string str(const Marking& m) {
 class Generator {
  public:
   explicit Generator(const Net& net)
-      : net_(net), layout_(std::vector<std::uint32_t>(net.placeSlots().size(), 20),
-                           std::vector<bool>(net.placeSlots().size(), false)) {}
+      : net_(net),
+        layout_(std::vector<std::uint32_t>(net.placeSlots().size(), 20),
+                std::vector<bool>(net.placeSlots().size(), false)),
+        firing_(net) {
+    firing_.use(layout_);
+  }
 
   Marking initial() const {
     Marking m;
@@ -131,7 +135,7 @@ class Generator {
     const auto packed = pack(m);
     std::vector<bool> out;
     for (TransitionId t = 0; t < net_.transitions().size(); ++t) {
-      out.push_back(detail::enabledIn(net_, layout_, t, packed.data()));
+      out.push_back(firing_.enabled(t, packed.data()));
     }
     return out;
   }
@@ -141,7 +145,7 @@ class Generator {
     const auto packed = pack(m);
     std::vector<std::uint64_t> next(layout_.words());
     std::size_t field = 0;
-    if (detail::fireInto(net_, layout_, t, packed.data(), next.data(), field) != detail::Fired::Ok) return std::nullopt;
+    if (firing_.fire(t, packed.data(), next.data(), field) != detail::Fired::Ok) return std::nullopt;
     Marking out(m.size());
     layout_.unpack(next.data(), out.data());
     return out;
@@ -156,6 +160,7 @@ class Generator {
   }
   const Net& net_;
   detail::Layout layout_;
+  detail::Firing firing_;
 };
 
 /// Per transition: the kernel says it is enabled.

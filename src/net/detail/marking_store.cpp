@@ -5,35 +5,71 @@
 
 namespace gdpn::net::detail {
 
-bool enabledIn(const Net& net, const Layout& layout, TransitionId t, const std::uint64_t* m) {
-  for (const Term& term : net.termsOf(t)) {
-    const std::int64_t v = layout.value(m, term.place_slot);
-    switch (term.kind) {
-      case TermKind::Input:
-      case TermKind::Test:
-        if (v < term.weight) return false;
-        break;
-      case TermKind::Inhibitor:
-        if (v >= term.weight) return false;
-        break;
-      case TermKind::Output: {
-        const auto cap = net.placeSlots()[term.place_slot].capacity;
-        if (cap != kUnbounded && v != kW && v - term.take + term.weight > cap) return false;
-        break;
+void Firing::use(const Layout& layout) {
+  words_ = layout.words();
+  const std::size_t transitions = net_.transitions().size();
+  test_begin_.assign(transitions + 1, 0);
+  change_begin_.assign(transitions + 1, 0);
+  tests_.clear();
+  changes_.clear();
+  for (TransitionId t = 0; t < transitions; ++t) {
+    test_begin_[t] = static_cast<std::uint32_t>(tests_.size());
+    change_begin_[t] = static_cast<std::uint32_t>(changes_.size());
+    for (const Term& term : net_.termsOf(t)) {
+      const std::size_t k = term.place_slot;
+      const Layout::Field& f = layout.field(k);
+      const auto weight = static_cast<std::uint64_t>(term.weight);
+      Test x{f.word, f.shift, f.mask, 0, f.mask, false};
+      switch (term.kind) {
+        case TermKind::Input:
+        case TermKind::Test:
+          x.lo = weight;  // ω holds any number of tokens
+          x.omega = f.omega;
+          break;
+        case TermKind::Inhibitor:
+          // fewer than `weight`, and never ω
+          x.hi = std::min(weight - 1, layout.maxCount(k));
+          break;
+        case TermKind::Output: {
+          const auto cap = net_.placeSlots()[k].capacity;
+          if (cap == kUnbounded) break;
+          // at most the capacity once fired, unless ω
+          const std::int64_t most = cap + term.take - term.weight;
+          if (most < 0) {
+            x.lo = 1, x.hi = 0;
+          } else {
+            x.hi = std::min<std::uint64_t>(static_cast<std::uint64_t>(most), f.mask);
+          }
+          x.omega = f.omega;
+          break;
+        }
+        case TermKind::Condition:
+          continue;  // sensor conditions are free to be either: explore as if true
       }
-      case TermKind::Condition:
-        break;  // sensor conditions are free to be either: explore as if true
+      tests_.push_back(x);
+      if (term.kind != TermKind::Input && term.kind != TermKind::Output) continue;
+      // inputs come before outputs among a transition's terms: a slot's change is noted
+      // where its first term is, and the sum of its terms checked against the field
+      const std::int64_t delta = term.kind == TermKind::Input ? -term.weight : term.weight;
+      auto at = std::find_if(changes_.begin() + change_begin_[t], changes_.end(),
+                             [&](const Change& c) { return c.field == k; });
+      if (at == changes_.end()) {
+        changes_.push_back({f.word, f.shift, static_cast<std::uint32_t>(k), f.omega, f.mask, layout.maxCount(k), 0});
+        at = changes_.end() - 1;
+      }
+      at->delta += delta;
     }
   }
-  return true;
+  test_begin_[transitions] = static_cast<std::uint32_t>(tests_.size());
+  change_begin_[transitions] = static_cast<std::uint32_t>(changes_.size());
 }
 
-std::size_t markEnabled(const Net& net, const Layout& layout, const Candidates& candidates, const std::uint64_t* m,
+std::size_t markEnabled(const Firing& firing, const Candidates& candidates, const std::uint64_t* m,
                         std::vector<bool>& seen, std::vector<TransitionId>& scratch) {
   std::size_t added = 0;
   candidates.find(m, scratch);
   for (TransitionId t : scratch) {
-    if (!seen[t] && enabledIn(net, layout, t, m)) seen[t] = true, ++added;
+    if (!seen[t] && firing.enabled(t, m)) seen[t] = true, ++added;
   }
   return added;
 }
@@ -117,27 +153,6 @@ void Candidates::find(const std::uint64_t* m, std::vector<TransitionId>& out) co
   }
 }
 
-Fired fireInto(const Net& net, const Layout& layout, TransitionId t, const std::uint64_t* m, std::uint64_t* out,
-               std::size_t& field) {
-  if (!enabledIn(net, layout, t, m)) return Fired::NotEnabled;
-  std::memcpy(out, m, layout.words() * sizeof(std::uint64_t));
-  // inputs come before outputs among a transition's terms
-  for (const Term& term : net.termsOf(t)) {
-    const std::size_t k = term.place_slot;
-    const std::uint64_t c = layout.code(out, k);
-    if (layout.isOmega(k, c)) continue;
-    if (term.kind == TermKind::Input) layout.setCode(out, k, c - static_cast<std::uint64_t>(term.weight));
-    if (term.kind == TermKind::Output) {
-      const std::uint64_t next = c + static_cast<std::uint64_t>(term.weight);
-      if (next > layout.maxCount(k)) {
-        field = k;
-        return Fired::TooBig;
-      }
-      layout.setCode(out, k, next);
-    }
-  }
-  return Fired::Ok;
-}
 
 Plan plan(const Net& net, const ExploreOptions& options) {
   // field sizes from the invariants' bounds (under the search's limits); the others start

@@ -298,18 +298,66 @@ class Candidates {
 /// What firing a transition on a packed marking gave.
 enum class Fired : std::uint8_t { Ok, NotEnabled, TooBig };
 
-/// True when `t` is enabled in the packed marking `m` (sensor conditions count as true).
-bool enabledIn(const Net& net, const Layout& layout, TransitionId t, const std::uint64_t* m);
+/// Each transition's arcs compiled for one layout: the bit-field tests its enabling makes
+/// and the changes its firing makes, read from two flat arrays rather than through the net.
+class Firing {
+ public:
+  explicit Firing(const Net& net) : net_(net) {}
+  /// Compiles the arcs for `layout`; call again after the layout changes.
+  void use(const Layout& layout);
+  /// True when `t` is enabled in the packed marking `m` (sensor conditions count as true).
+  bool enabled(TransitionId t, const std::uint64_t* m) const {
+    for (std::uint32_t i = test_begin_[t]; i < test_begin_[t + 1]; ++i) {
+      const Test& x = tests_[i];
+      const std::uint64_t c = (m[x.word] >> x.shift) & x.mask;
+      if ((c < x.lo || c > x.hi) && !(x.omega && c == x.mask)) return false;
+    }
+    return true;
+  }
+  /// Fires `t` on `m` into `out`. TooBig (with the field in `field`) when a count does not fit.
+  Fired fire(TransitionId t, const std::uint64_t* m, std::uint64_t* out, std::size_t& field) const {
+    if (!enabled(t, m)) return Fired::NotEnabled;
+    std::memcpy(out, m, words_ * sizeof(std::uint64_t));
+    for (std::uint32_t i = change_begin_[t]; i < change_begin_[t + 1]; ++i) {
+      const Change& x = changes_[i];
+      const std::uint64_t c = (out[x.word] >> x.shift) & x.mask;
+      if (x.omega && c == x.mask) continue;  // ω stays ω
+      const std::uint64_t next = c + static_cast<std::uint64_t>(x.delta);
+      if (next > x.max) {
+        field = x.field;
+        return Fired::TooBig;
+      }
+      out[x.word] = (out[x.word] & ~(x.mask << x.shift)) | (next << x.shift);
+    }
+    return Fired::Ok;
+  }
+
+ private:
+  // enabled only if lo <= code <= hi, or the code is ω where `omega` says ω passes
+  struct Test {
+    std::uint32_t word = 0, shift = 0;
+    std::uint64_t mask = 0, lo = 0, hi = 0;
+    bool omega = false;
+  };
+  // a place slot's count changes by delta (what the outputs add less what the inputs take)
+  struct Change {
+    std::uint32_t word = 0, shift = 0, field = 0;
+    bool omega = false;  // the field may hold ω
+    std::uint64_t mask = 0, max = 0;
+    std::int64_t delta = 0;
+  };
+  const Net& net_;
+  std::size_t words_ = 0;
+  std::vector<std::uint32_t> test_begin_, change_begin_;  // per transition, then one past the last
+  std::vector<Test> tests_;
+  std::vector<Change> changes_;
+};
 
 /// Marks in `seen` the transitions enabled in `m`; returns how many were not marked before.
 /// Over the states of a bottom component it gives the transitions that fire inside it.
 /// `scratch` holds the candidates.
-std::size_t markEnabled(const Net& net, const Layout& layout, const Candidates& candidates, const std::uint64_t* m,
+std::size_t markEnabled(const Firing& firing, const Candidates& candidates, const std::uint64_t* m,
                         std::vector<bool>& seen, std::vector<TransitionId>& scratch);
-
-/// Fires `t` on `m` into `out`. TooBig (with the field in `field`) when a count does not fit.
-Fired fireInto(const Net& net, const Layout& layout, TransitionId t, const std::uint64_t* m, std::uint64_t* out,
-               std::size_t& field);
 
 /// How a search packs markings: field sizes from the invariants' bounds and capacities.
 struct Plan {
