@@ -2,8 +2,8 @@
 # Runs each libFuzzer target for SECONDS (default 60): the model loader, seeded with every
 # example and test model; the PNML reader, seeded with the test nets and the conformance nets;
 # the mesh loader, seeded with the test meshes; the input-event reader, seeded with the test
-# input files. Four targets: about four times SECONDS in all. Fails on any crash, hang, leak
-# or sanitizer report.
+# input files; the query reader, seeded with the test queries. Five targets: about five times
+# SECONDS in all. Fails on any crash, hang, leak or sanitizer report.
 # Needs the fuzz build: cmake --preset fuzz && cmake --build --preset fuzz
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -39,3 +39,4 @@ fuzz model_loader_fuzz 4096 '*.gdpn.yaml' examples/basics/* examples/plant/* exa
 fuzz pnml_reader_fuzz 65536 '*.pnml' tests/data/pnml tests/data/conformance
 fuzz mesh_loader_fuzz 32768 "$meshes" tests/data/meshes tests/data/bad/files tests/data/physics tests/data/good/parts
 fuzz input_events_fuzz 4096 '*.input.yaml' tests/data/input
+fuzz query_parser_fuzz 1024 '*.query' tests/data/queries

@@ -3,8 +3,8 @@
 #   1. installs the Debian packages (scripts/install-deps.sh, skipped when present);
 #   2. release build with warnings as errors; unit and golden tests (CTest);
 #   3. debug build under AddressSanitizer + UBSan; the unit tests again;
-#   4. clang build of the libFuzzer targets; 60 s of fuzzing each of the model loader and the
-#      PNML reader.
+#   4. clang build of the libFuzzer targets; 60 s of fuzzing each loader (scripts/fuzz.sh:
+#      models, PNML, meshes, input events, queries).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)

@@ -11,6 +11,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <string_view>
 #include <type_traits>
@@ -270,7 +271,49 @@ struct AnalyzeArgs {
   double time_limit_s = 0.0;
   unsigned threads = 1;
   bool shortest_path = false;
+  std::vector<std::string> queries;  // formulas, or files of them
 };
+
+/// Reads the --query arguments: each is a file of formulas (one per line; blank lines and
+/// lines starting with # skipped) when such a file exists, else a formula itself. Mistakes
+/// go to `err` located (file:line:col, or the argument's number and column) with the line
+/// and a caret; nullopt when there was one.
+std::optional<std::vector<model::QueryResult>> readQueries(const gdpn::net::Net& net,
+                                                          const std::vector<std::string>& args, std::ostream& err) {
+  std::vector<model::QueryResult> out;
+  bool ok = true;
+  auto read = [&](const std::string& where, const std::string& text) {
+    gdpn::net::QueryError e;
+    if (auto f = gdpn::net::parseQuery(net, text, e)) {
+      out.push_back({text, std::move(*f), {}});
+      return;
+    }
+    ok = false;
+    err << where << ":" << e.column << ": error: " << e.message << "\n  " << text << "\n  "
+        << std::string(e.column - 1, ' ') << "^\n";
+  };
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(args[i], ec)) {
+      read("--query " + std::to_string(i + 1) + ":1", args[i]);
+      continue;
+    }
+    std::ifstream in(args[i]);
+    std::string line;
+    for (std::size_t n = 1; std::getline(in, line); ++n) {
+      const auto first = line.find_first_not_of(" \t\r");
+      if (first == std::string::npos || line[first] == '#') continue;
+      if (line.back() == '\r') line.pop_back();
+      read(args[i] + ":" + std::to_string(n), line);
+    }
+    if (in.bad()) {
+      err << args[i] << ": error: cannot read the file\n";
+      ok = false;
+    }
+  }
+  if (!ok) return std::nullopt;
+  return out;
+}
 
 int analyze(const AnalyzeArgs& a) {
   Diagnostics diags;
@@ -295,6 +338,27 @@ int analyze(const AnalyzeArgs& a) {
   options.explore.threads = a.threads;
   options.explore.shortest_path = a.shortest_path;
   options.time_limit_s = a.time_limit_s;
+  if (!a.queries.empty()) {
+    // only the questions asked, each answered as soon as a search decides it
+    auto queries = readQueries(*net, a.queries, std::cerr);
+    if (!queries) return 1;
+    gdpn::net::ExploreOptions limits = options.explore;
+    if (a.time_limit_s > 0.0) {
+      limits.deadline = std::chrono::steady_clock::now() +
+                        std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(a.time_limit_s));
+    }
+    bool decided = true;
+    for (auto& q : *queries) {
+      q.answer = gdpn::net::answerQuery(*net, q.formula, limits);
+      decided = decided && q.answer.verdict != gdpn::net::Verdict::Unknown;
+    }
+    if (a.json) {
+      std::cout << model::queriesJson(*net, *queries);
+    } else {
+      model::printQueries(std::cout, *net, *queries);
+    }
+    return decided ? 0 : 3;
+  }
   // a progress line on a terminal: states, states per second, memory (the invariants: rows)
   const bool show = a.progress || isatty(STDERR_FILENO);
   const auto start = std::chrono::steady_clock::now();
@@ -580,6 +644,9 @@ int main(int argc, char** argv) {
   analyze_cmd->add_option("--threads", analyze_args.threads,
                           "threads for the search (1: one depth-first walk, the least memory)")
       ->check(number(1u, 256u, "a whole number of threads from 1 to 256"));
+  analyze_cmd->add_option("--query", analyze_args.queries,
+                          "answer this formula instead (repeatable), or each line of this file: 'EF (buffer >= 3 and "
+                          "fireable(consume))', 'AG not deadlock' (docs/queries.md)");
   analyze_cmd->add_flag("--shortest-path", analyze_args.shortest_path,
                         "give a shortest path to a deadlock (a second pass over the states)");
   analyze_cmd->add_flag("--progress", analyze_args.progress,

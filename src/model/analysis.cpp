@@ -273,3 +273,81 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
 }
 
 }  // namespace gdpn::model
+
+namespace gdpn::model {
+namespace {
+
+/// The places that hold tokens in `marking` (per place slot) and how many, in place order.
+std::vector<std::pair<std::string_view, std::int64_t>> markedPlaces(const net::Net& net,
+                                                                     const std::vector<std::int64_t>& marking) {
+  std::vector<std::pair<std::string_view, std::int64_t>> out;
+  for (const net::Place& p : net.places()) {
+    std::int64_t n = 0;
+    for (auto k = p.slots_begin; k < p.slots_end; ++k) n += marking[k];
+    if (n != 0) out.emplace_back(p.name, n);
+  }
+  return out;
+}
+
+const char* verdictWord(net::Verdict v) {
+  return v == net::Verdict::True ? "true" : v == net::Verdict::False ? "false" : "unknown";
+}
+
+}  // namespace
+
+void printQueries(std::ostream& out, const net::Net& net, const std::vector<QueryResult>& results) {
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const auto& [text, formula, a] = results[i];
+    const std::string head = "query " + std::to_string(i + 1) + ":";
+    out << head;
+    nameList(out, head.size(), {net::formulaText(net, formula)}, 2);
+    out << "\n  " << verdictWord(a.verdict);
+    if (a.verdict == net::Verdict::Unknown) {
+      out << ": " << (a.unsupported.empty() ? net::stopReason(a.stop) : a.unsupported);
+      if (a.unsupported.empty()) out << " (" << a.states << " markings explored)";
+      out << "\n";
+      continue;
+    }
+    out << " (" << a.states << (a.states == 1 ? " marking" : " markings") << " explored)\n";
+    if (!a.has_marking) continue;
+    const std::string lead = std::string("  shown by ") +
+                             (a.path.empty() ? "the initial marking" : "the marking after " + std::to_string(a.path.size()) +
+                                                                          (a.path.size() == 1 ? " firing:" : " firings:"));
+    out << lead;
+    std::vector<std::string_view> names;
+    for (auto t : a.path) names.push_back(net.transitions()[t].name);
+    nameList(out, lead.size(), names, 4);
+    std::vector<std::string> marked;
+    for (const auto& [place, n] : markedPlaces(net, a.marking)) marked.push_back(std::string(place) + " = " + std::to_string(n));
+    if (marked.empty()) marked.push_back("none");
+    const std::string what = "  tokens there:";
+    out << "\n" << what;
+    nameList(out, what.size(), std::vector<std::string_view>(marked.begin(), marked.end()), 4);
+    out << "\n";
+  }
+}
+
+std::string queriesJson(const net::Net& net, const std::vector<QueryResult>& results) {
+  using nlohmann::ordered_json;
+  ordered_json j = ordered_json::array();
+  for (const auto& [text, formula, a] : results) {
+    ordered_json q;
+    q["query"] = text;
+    q["formula"] = net::formulaText(net, formula);
+    q["answer"] = verdictWord(a.verdict);
+    if (a.verdict == net::Verdict::Unknown) q["why"] = a.unsupported.empty() ? net::stopReason(a.stop) : a.unsupported;
+    q["states"] = a.states;
+    q["technique"] = a.technique;
+    if (a.has_marking) {
+      q["path"] = ordered_json::array();
+      for (auto t : a.path) q["path"].push_back(net.transitions()[t].name);
+      ordered_json m = ordered_json::object();
+      for (const auto& [place, n] : markedPlaces(net, a.marking)) m[std::string(place)] = n;
+      q["marking"] = m;
+    }
+    j.push_back(q);
+  }
+  return ordered_json{{"queries", j}}.dump(2) + "\n";
+}
+
+}  // namespace gdpn::model

@@ -286,6 +286,41 @@ TEST(CliAnalyze, APnmlNetAndAModelFile) {
   EXPECT_NE(r.out.find(" states/s, "), std::string::npos) << r.out;  // the progress line
 }
 
+TEST(CliAnalyze, QueriesAreAnsweredWithTheirWitnessesAndMistakesLocated) {
+  // the example of figure 3.1: T1 then T2 ends in a dead marking
+  auto r = gdpn("analyze examples/basics/figure31 --query 'EF deadlock' --query 'AG not fireable(T1)'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("query 1: EF deadlock\n  true (3 markings explored)\n"
+                       "  shown by the marking after 2 firings: main/T1 main/T2\n  tokens there:"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("query 2: AG not fireable(main/T1)\n  false (1 marking explored)\n"
+                       "  shown by the initial marking\n"),
+            std::string::npos)
+      << r.out;
+  r = gdpn("analyze tests/data/conformance/Philosophers-PT-000005.pnml --json --query 'EF Think_1 + Think_2 = 0'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto q = nlohmann::json::parse(r.out)["queries"][0];
+  EXPECT_EQ(q["answer"], "true");
+  EXPECT_EQ(q["path"].size(), 2u);
+  EXPECT_FALSE(q["marking"].contains("net/Think_1"));
+  // undecided within the limits: said, and exit 3
+  r = gdpn("analyze tests/data/conformance/Referendum-PT-0010.pnml --max-states 100 --query 'EF deadlock'");
+  EXPECT_EQ(r.code, 3) << r.out;
+  EXPECT_NE(r.out.find("  unknown: partial: --max-states reached"), std::string::npos) << r.out;
+  // a file of queries: each mistake at its line and column
+  const auto file = temp("gdpn_bad.queries");
+  std::ofstream(file) << "# the philosophers\nEF deadlock\n\nAG Think_1 <= 1 and fireable(FF9)\nEF (Eat_1 >= 1\n";
+  r = gdpn("analyze tests/data/conformance/Philosophers-PT-000005.pnml --query " + file);
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find(file + ":4:30: error: no transition is called 'FF9'\n  AG Think_1 <= 1 and fireable(FF9)\n" +
+                       std::string(31, ' ') + "^\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find(file + ":5:15: error: expected ')', found the end"), std::string::npos) << r.out;
+  fs::remove(file);
+}
+
 TEST(CliAnalyze, TwoCyclesGiveBothCycleTimesAndTheLargerAsTheBound) {
   auto r = gdpn("analyze tests/data/good/cycles.gdpn.yaml");
   ASSERT_EQ(r.code, 0) << r.out;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "gdpn/net/analysis.h"
+#include "gdpn/net/query.h"
 #include "gdpn/net/invariants.h"
 
 namespace gdpn::model {
@@ -58,5 +59,18 @@ Analysis analyze(const net::Net& net, std::string path, const AnalysisOptions& o
 std::string analysisJson(const net::Net& net, const Analysis& analysis);
 /// The analysis as `gdpn analyze` prints it.
 void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& analysis);
+
+/// One query of `gdpn analyze --query`: its text as given, where it came from (a file's line
+/// or the command line), the formula read from it and the answer.
+struct QueryResult {
+  std::string text;
+  net::Formula formula;
+  net::QueryAnswer answer;
+};
+/// The answers as `gdpn analyze --query` prints them: per query its formula, the answer, and
+/// the path and marking that show it, wrapped at 100 columns.
+void printQueries(std::ostream& out, const net::Net& net, const std::vector<QueryResult>& results);
+/// The answers as pretty-printed JSON text.
+std::string queriesJson(const net::Net& net, const std::vector<QueryResult>& results);
 
 }  // namespace gdpn::model

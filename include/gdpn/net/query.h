@@ -1,0 +1,104 @@
+#pragma once
+// Questions about a net's reachable markings: CTL and LTL formulas in a text form for people,
+// parsed against the net's own place and transition names, and the answers to them.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "gdpn/net/analysis.h"
+#include "gdpn/net/net.h"
+
+namespace gdpn::net {
+
+/// The integer side of a comparison: the tokens on some place slots, summed, plus a constant.
+struct TokenSum {
+  std::vector<PlaceSlotId> slots;  ///< their tokens are added (a slot named twice counts twice)
+  std::int64_t constant = 0;       ///< added to them
+};
+
+/// What a formula node is. State formulas: the atoms and the boolean operators. Path
+/// formulas: Next, Future, Globally and Until, each under a path quantifier (All, Exists):
+/// `EF p` is Exists(Future(p)), and an LTL formula `A (G F p)` is All(Globally(Future(p))).
+enum class FormulaKind : std::uint8_t {
+  True,
+  False,
+  Deadlock,  ///< no transition is enabled
+  Fireable,  ///< one of `transitions` is enabled
+  Compare,   ///< left `compare` right
+  Not,
+  And,
+  Or,
+  All,       ///< on every path from here
+  Exists,    ///< on some path from here
+  Next,
+  Future,
+  Globally,
+  Until,     ///< operands: what holds until, and what then holds
+};
+
+/// How a comparison compares.
+enum class Comparison : std::uint8_t { Less, LessEqual, Equal, NotEqual, GreaterEqual, Greater };
+
+/// A formula: a tree of nodes.
+struct Formula {
+  FormulaKind kind = FormulaKind::True;
+  Comparison compare = Comparison::Equal;  ///< Compare
+  TokenSum left, right;                    ///< Compare
+  std::vector<TransitionId> transitions;   ///< Fireable
+  std::vector<Formula> operands;           ///< And, Or: two or more; Until: two; the others with operands: one
+  std::size_t column = 1;                  ///< where the node starts in the text, counted from 1
+};
+
+/// A mistake in a query's text, and where it lies.
+struct QueryError {
+  std::size_t column = 1;  ///< counted from 1
+  std::string message;
+};
+
+/// Reads a formula in the text form (docs/queries.md):
+/// `EF (buffer >= 3 and fireable(consume))`, `AG not deadlock`, `A (G F fireable(t1))`,
+/// `E [ idle = 1 U busy + done > 2 ]`. Places and transitions are named as in the net
+/// (quoted with "..." where a name is a keyword or holds other characters); a place stands for
+/// the tokens on all its slots. Formulas nest at most 100 levels deep. Nullopt on a mistake,
+/// described in `error`.
+std::optional<Formula> parseQuery(const Net& net, std::string_view text, QueryError& error);
+
+/// The formula in the text form, names as in the net.
+std::string formulaText(const Net& net, const Formula& f);
+
+/// True when no path quantifier or path operator lies inside `f`.
+bool isStateFormula(const Formula& f);
+
+/// How a question was answered.
+enum class Verdict : std::uint8_t { True, False, Unknown };
+
+/// The answer to one formula.
+struct QueryAnswer {
+  Verdict verdict = Verdict::Unknown;
+  /// Why Unknown: a limit cut the search short (stop), or the formula is of a kind not
+  /// answered yet (`unsupported` says which).
+  ExploreStop stop = ExploreStop::Done;
+  std::string unsupported;
+  /// A shortest firing sequence from the initial marking to a marking that shows the answer
+  /// (EF p: one where p holds; AG p: one where p fails), and that marking, per place slot
+  /// (has_marking). None where the answer rests on every reachable marking.
+  std::vector<TransitionId> path;
+  std::vector<std::int64_t> marking;
+  bool has_marking = false;
+  std::uint64_t states = 0;  ///< markings explored to answer
+  std::string technique;     ///< in the contest's words: EXPLICIT, INITIAL_STATE, ...
+};
+
+/// Answers `f` on the reachable markings of `net`. Reachability (EF of a state formula, AG of
+/// one, their negations, and a state formula at the initial marking) is answered by a
+/// breadth-first search that stops at the first marking deciding it, under `limits`
+/// (max_states, max_bytes, deadline); other formulas are Unknown for now, saying so.
+QueryAnswer answerQuery(const Net& net, const Formula& f, const ExploreOptions& limits = {});
+
+/// True when `f` (a state formula) holds in `marking` (per place slot).
+bool holdsIn(const Net& net, const Formula& f, const std::vector<std::int64_t>& marking);
+
+}  // namespace gdpn::net
