@@ -39,4 +39,4 @@ fuzz model_loader_fuzz 4096 '*.gdpn.yaml' examples/basics/* examples/plant/* exa
 fuzz pnml_reader_fuzz 65536 '*.pnml' tests/data/pnml tests/data/conformance
 fuzz mesh_loader_fuzz 32768 "$meshes" tests/data/meshes tests/data/bad/files tests/data/physics tests/data/good/parts
 fuzz input_events_fuzz 4096 '*.input.yaml' tests/data/input
-fuzz query_parser_fuzz 1024 '*.query' tests/data/queries
+fuzz query_parser_fuzz 8192 '*.query *.xml' tests/data/queries

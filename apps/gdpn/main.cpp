@@ -16,6 +16,7 @@
 #include <string_view>
 #include <type_traits>
 
+#include "gdpn/core/file.h"
 #include "gdpn/core/output_file.h"
 #include "gdpn/model/analysis.h"
 #include "gdpn/model/model.h"
@@ -285,7 +286,10 @@ std::optional<std::vector<model::QueryResult>> readQueries(const gdpn::net::Net&
   auto read = [&](const std::string& where, const std::string& text) {
     gdpn::net::QueryError e;
     if (auto f = gdpn::net::parseQuery(net, text, e)) {
-      out.push_back({text, std::move(*f), {}});
+      model::QueryResult r;
+      r.text = text;
+      r.formula = std::move(*f);
+      out.push_back(std::move(r));
       return;
     }
     ok = false;
@@ -296,6 +300,25 @@ std::optional<std::vector<model::QueryResult>> readQueries(const gdpn::net::Net&
     std::error_code ec;
     if (!std::filesystem::is_regular_file(args[i], ec)) {
       read("--query " + std::to_string(i + 1) + ":1", args[i]);
+      continue;
+    }
+    if (args[i].ends_with(".xml")) {
+      // the Model Checking Contest's property file
+      Diagnostics diags;
+      const auto text = gdpn::core::readFile(args[i], diags);
+      auto properties = text ? gdpn::net::readMccProperties(net, *text, args[i], diags) : std::nullopt;
+      diags.print(err);
+      if (!properties) {
+        ok = false;
+        continue;
+      }
+      for (auto& p : *properties) {
+        model::QueryResult r;
+        r.text = gdpn::net::formulaText(net, p.formula);
+        r.formula = std::move(p.formula);
+        r.id = p.id;
+        out.push_back(std::move(r));
+      }
       continue;
     }
     std::ifstream in(args[i]);
@@ -347,10 +370,13 @@ int analyze(const AnalyzeArgs& a) {
       limits.deadline = std::chrono::steady_clock::now() +
                         std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(a.time_limit_s));
     }
+    std::vector<gdpn::net::Formula> formulas;
+    for (const auto& q : *queries) formulas.push_back(q.formula);
+    const auto answers = gdpn::net::answerQueries(*net, formulas, limits);
     bool decided = true;
-    for (auto& q : *queries) {
-      q.answer = gdpn::net::answerQuery(*net, q.formula, limits);
-      decided = decided && q.answer.verdict != gdpn::net::Verdict::Unknown;
+    for (std::size_t i = 0; i < answers.size(); ++i) {
+      (*queries)[i].answer = answers[i];
+      decided = decided && answers[i].verdict != gdpn::net::Verdict::Unknown;
     }
     if (a.json) {
       std::cout << model::queriesJson(*net, *queries);

@@ -289,19 +289,35 @@ std::vector<std::pair<std::string_view, std::int64_t>> markedPlaces(const net::N
   return out;
 }
 
-const char* verdictWord(net::Verdict v) {
-  return v == net::Verdict::True ? "true" : v == net::Verdict::False ? "false" : "unknown";
+std::string verdictWord(const net::QueryAnswer& a) {
+  switch (a.verdict) {
+    case net::Verdict::True: return "true";
+    case net::Verdict::False: return "false";
+    case net::Verdict::Value: return std::to_string(a.value);
+    case net::Verdict::Unknown: break;
+  }
+  return "unknown";
 }
 
 }  // namespace
 
 void printQueries(std::ostream& out, const net::Net& net, const std::vector<QueryResult>& results) {
   for (std::size_t i = 0; i < results.size(); ++i) {
-    const auto& [text, formula, a] = results[i];
+    const auto& [text, formula, a, id] = results[i];
+    if (!id.empty()) {
+      std::string word = verdictWord(a);
+      for (char& c : word) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      if (a.verdict == net::Verdict::Unknown) {
+        out << "FORMULA " << id << " CANNOT_COMPUTE (" << (a.unsupported.empty() ? net::stopReason(a.stop) : a.unsupported) << ")\n";
+      } else {
+        out << "FORMULA " << id << " " << word << " TECHNIQUES " << a.technique << "\n";
+      }
+      continue;
+    }
     const std::string head = "query " + std::to_string(i + 1) + ":";
     out << head;
     nameList(out, head.size(), {net::formulaText(net, formula)}, 2);
-    out << "\n  " << verdictWord(a.verdict);
+    out << "\n  " << verdictWord(a);
     if (a.verdict == net::Verdict::Unknown) {
       out << ": " << (a.unsupported.empty() ? net::stopReason(a.stop) : a.unsupported);
       if (a.unsupported.empty()) out << " (" << a.states << " markings explored)";
@@ -330,11 +346,16 @@ void printQueries(std::ostream& out, const net::Net& net, const std::vector<Quer
 std::string queriesJson(const net::Net& net, const std::vector<QueryResult>& results) {
   using nlohmann::ordered_json;
   ordered_json j = ordered_json::array();
-  for (const auto& [text, formula, a] : results) {
+  for (const auto& [text, formula, a, id] : results) {
     ordered_json q;
+    if (!id.empty()) q["id"] = id;
     q["query"] = text;
     q["formula"] = net::formulaText(net, formula);
-    q["answer"] = verdictWord(a.verdict);
+    if (a.verdict == net::Verdict::Value) {
+      q["answer"] = a.value;
+    } else {
+      q["answer"] = verdictWord(a);
+    }
     if (a.verdict == net::Verdict::Unknown) q["why"] = a.unsupported.empty() ? net::stopReason(a.stop) : a.unsupported;
     q["states"] = a.states;
     q["technique"] = a.technique;

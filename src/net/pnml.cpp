@@ -31,6 +31,18 @@ std::string textOf(const XmlElement* el) {
   return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
 }
 
+}  // namespace
+
+std::string pnmlName(const std::string& id) {
+  if (core::isIdentifier(id)) return id;
+  std::string n;
+  for (char c : id) n += (std::isalnum(static_cast<unsigned char>(c)) || c == '_') ? c : '_';
+  if (n.empty() || std::isdigit(static_cast<unsigned char>(n[0]))) n = "n" + n;
+  return n;
+}
+
+namespace {
+
 class PnmlReader {
  public:
   PnmlReader(const std::string& file, core::Diagnostics& diags) : file_(file), diags_(diags) {}
@@ -73,10 +85,8 @@ class PnmlReader {
 
   /// A name for PNML id `id`: the id itself when it is an identifier, else a cleaned copy.
   std::string nameFor(const std::string& id) {
-    std::string n = core::isIdentifier(id) ? id : std::string();
-    if (n.empty()) {
-      for (char c : id) n += (std::isalnum(static_cast<unsigned char>(c)) || c == '_') ? c : '_';
-      if (n.empty() || std::isdigit(static_cast<unsigned char>(n[0]))) n = "n" + n;
+    std::string n = pnmlName(id);
+    if (n != id) {
       while (used_.count(n)) n += "_";
     }
     used_.insert(n);

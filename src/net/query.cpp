@@ -4,77 +4,15 @@
 #include "gdpn/net/query.h"
 
 #include <algorithm>
+#include <optional>
 
-#include "detail/marking_store.h"
+#include "detail/query_graph.h"
+#include "detail/state_check.h"
 
 namespace gdpn::net {
 namespace {
 
 using namespace detail;
-
-/// Evaluates state formulas on packed markings.
-class StateCheck {
- public:
-  StateCheck(const Net& net, const Layout& layout) : layout_(layout), candidates_(net), firing_(net) {
-    candidates_.use(layout_);
-    firing_.use(layout_);
-  }
-  const Firing& firing() const { return firing_; }
-  const Candidates& candidates() const { return candidates_; }
-
-  bool holds(const Formula& f, const std::uint64_t* m) {
-    switch (f.kind) {
-      case FormulaKind::True: return true;
-      case FormulaKind::False: return false;
-      case FormulaKind::Deadlock: {
-        candidates_.find(m, scratch_);
-        return std::none_of(scratch_.begin(), scratch_.end(), [&](TransitionId t) { return firing_.enabled(t, m); });
-      }
-      case FormulaKind::Fireable:
-        return std::any_of(f.transitions.begin(), f.transitions.end(),
-                           [&](TransitionId t) { return firing_.enabled(t, m); });
-      case FormulaKind::Compare: {
-        const std::int64_t a = sum(f.left, m), b = sum(f.right, m);
-        switch (f.compare) {
-          case Comparison::Less: return a < b;
-          case Comparison::LessEqual: return a <= b;
-          case Comparison::Equal: return a == b;
-          case Comparison::NotEqual: return a != b;
-          case Comparison::GreaterEqual: return a >= b;
-          case Comparison::Greater: return a > b;
-        }
-        return false;
-      }
-      case FormulaKind::Not: return !holds(f.operands[0], m);
-      case FormulaKind::And:
-        return std::all_of(f.operands.begin(), f.operands.end(), [&](const Formula& o) { return holds(o, m); });
-      case FormulaKind::Or:
-        return std::any_of(f.operands.begin(), f.operands.end(), [&](const Formula& o) { return holds(o, m); });
-      default: return false;  // not a state formula: never asked
-    }
-  }
-
- private:
-  std::int64_t sum(const TokenSum& s, const std::uint64_t* m) const {
-    std::int64_t total = s.constant;
-    for (PlaceSlotId k : s.slots) total += layout_.value(m, k);
-    return total;
-  }
-  const Layout& layout_;
-  Candidates candidates_;
-  Firing firing_;
-  std::vector<TransitionId> scratch_;
-};
-
-/// Field sizes for concrete markings: the bounds the invariants and the state equation give,
-/// and 32 bits where there is none (a count past that stops the search).
-Layout concreteLayout(const Plan& p) {
-  std::vector<std::uint32_t> bits = p.bits;
-  for (std::size_t k = 0; k < bits.size(); ++k) {
-    if (p.omega[k]) bits[k] = kMaxBits;
-  }
-  return Layout(bits, std::vector<bool>(bits.size(), false));
-}
 
 std::vector<std::int64_t> unpacked(const Layout& layout, const std::uint64_t* m) {
   std::vector<std::int64_t> out(layout.width());
@@ -165,34 +103,41 @@ Formula negation(const Formula& f) {
 
 }  // namespace
 
-QueryAnswer answerQuery(const Net& net, const Formula& f, const ExploreOptions& limits) {
+namespace {
+
+/// The formula under its negations, and how many there are.
+const Formula& unnegated(const Formula& f, bool& odd) {
+  const Formula* x = &f;
+  odd = false;
+  while (x->kind == FormulaKind::Not) x = &x->operands[0], odd = !odd;
+  return *x;
+}
+
+/// EF or AG of a formula without path operators: a search on the fly can answer it.
+bool reachability(const Formula& f) {
+  if ((f.kind != FormulaKind::Exists && f.kind != FormulaKind::All) || f.operands.empty()) return false;
+  const Formula& path = f.operands[0];
+  const FormulaKind want = f.kind == FormulaKind::Exists ? FormulaKind::Future : FormulaKind::Globally;
+  return path.kind == want && isStateFormula(path.operands[0]);
+}
+
+QueryAnswer atInitialMarking(const Net& net, const Formula& f) {
   QueryAnswer a;
-  if (isStateFormula(f)) {
-    std::vector<std::int64_t> m0;
-    for (const PlaceSlot& ps : net.placeSlots()) m0.push_back(ps.initial);
-    a.verdict = holdsIn(net, f, m0) ? Verdict::True : Verdict::False;
-    a.states = 1;
-    a.technique = "INITIAL_STATE";
-    return a;
-  }
-  if (f.kind == FormulaKind::Not) {
-    // the answer to what is negated, turned over: its marking shows this answer too
-    QueryAnswer inner = answerQuery(net, f.operands[0], limits);
-    if (inner.verdict != Verdict::Unknown) inner.verdict = inner.verdict == Verdict::True ? Verdict::False : Verdict::True;
-    return inner;
-  }
-  const bool quantified = (f.kind == FormulaKind::Exists || f.kind == FormulaKind::All) && f.operands.size() == 1;
-  const Formula* path = quantified ? &f.operands[0] : nullptr;
-  const bool ef = path && f.kind == FormulaKind::Exists && path->kind == FormulaKind::Future &&
-                  isStateFormula(path->operands[0]);
-  const bool ag = path && f.kind == FormulaKind::All && path->kind == FormulaKind::Globally &&
-                  isStateFormula(path->operands[0]);
-  if (!ef && !ag) {
-    a.unsupported = "only reachability is answered so far: EF or AG of a formula without path operators, or its negation";
-    return a;
-  }
+  std::vector<std::int64_t> m0;
+  for (const PlaceSlot& ps : net.placeSlots()) m0.push_back(ps.initial);
+  a.verdict = holdsIn(net, f, m0) ? Verdict::True : Verdict::False;
+  a.states = 1;
+  a.technique = "INITIAL_STATE";
+  return a;
+}
+
+/// EF p or AG p by a breadth-first search that stops at the first marking deciding it.
+QueryAnswer onTheFly(const Net& net, const Formula& f, const ExploreOptions& limits) {
+  QueryAnswer a;
+  const bool ef = f.kind == FormulaKind::Exists;
+  const Formula& p = f.operands[0].operands[0];
   // EF p: a marking where p holds; AG p: none where it fails
-  const Reach r = reach(net, ef ? path->operands[0] : negation(path->operands[0]), limits);
+  const Reach r = reach(net, ef ? p : negation(p), limits);
   a.states = r.states;
   a.technique = "EXPLICIT BREADTH_FIRST_SEARCH";
   if (r.found) {
@@ -206,6 +151,52 @@ QueryAnswer answerQuery(const Net& net, const Formula& f, const ExploreOptions& 
     a.stop = r.stop;
   }
   return a;
+}
+
+}  // namespace
+
+QueryAnswer answerQuery(const Net& net, const Formula& f, const ExploreOptions& limits) {
+  return answerQueries(net, {f}, limits)[0];
+}
+
+std::vector<QueryAnswer> answerQueries(const Net& net, const std::vector<Formula>& formulas,
+                                       const ExploreOptions& limits) {
+  // the whole graph once where it pays: a formula needs it, or two need a search
+  std::size_t searches = 0;
+  bool whole = false;
+  for (const Formula& f : formulas) {
+    bool odd = false;
+    const Formula& x = unnegated(f, odd);
+    if (isStateFormula(x)) continue;
+    ++searches;
+    whole = whole || x.kind == FormulaKind::Bound || (!reachability(x) && isCtl(x));
+  }
+  std::optional<StateGraph> graph;
+  if (whole || searches >= 2) graph = buildGraph(net, limits);
+  std::vector<QueryAnswer> out;
+  for (const Formula& f : formulas) {
+    bool odd = false;
+    const Formula& x = unnegated(f, odd);
+    QueryAnswer a;
+    if (isStateFormula(x)) {
+      a = atInitialMarking(net, x);
+    } else if (x.kind != FormulaKind::Bound && !isCtl(x)) {
+      a.unsupported = "LTL formulas are not answered yet (CTL and reachability are)";
+    } else if (graph && graph->stop == ExploreStop::Done) {
+      a = answerOnGraph(net, *graph, x);
+    } else if (reachability(x)) {
+      a = onTheFly(net, x, limits);
+    } else {
+      a.stop = graph->stop;  // a limit stopped the graph that this formula needs
+      a.states = graph->size();
+    }
+    // a negation turns the answer over; the marking that shows it shows this one too
+    if (odd && (a.verdict == Verdict::True || a.verdict == Verdict::False)) {
+      a.verdict = a.verdict == Verdict::True ? Verdict::False : Verdict::True;
+    }
+    out.push_back(std::move(a));
+  }
+  return out;
 }
 
 bool holdsIn(const Net& net, const Formula& f, const std::vector<std::int64_t>& marking) {

@@ -20,7 +20,7 @@ struct Token {
 // words that are operators, never names (a place so called is written in quotes)
 bool keyword(std::string_view w) {
   for (std::string_view k : {"A", "E", "X", "F", "G", "U", "EX", "AX", "EF", "AF", "EG", "AG", "and", "or", "not",
-                             "true", "false", "deadlock", "fireable"}) {
+                             "true", "false", "deadlock", "fireable", "bound"}) {
     if (w == k) return true;
   }
   return false;
@@ -84,8 +84,7 @@ std::vector<Token> tokenize(std::string_view s) {
   return out;
 }
 
-/// The id `find` gives `name`, or else that of the one name among `names` ending in
-/// "/" + name (a name given without its page's path); -1 when none or several.
+// the id `find` gives `name`, or else that of the one name among `names` ending in "/" + name
 template <class Find, class Names>
 std::int64_t lookup(std::string_view name, Find find, const Names& names) {
   if (const std::int64_t id = find(name); id >= 0) return id;
@@ -106,7 +105,15 @@ class Parser {
 
   std::optional<Formula> whole() {
     if (t_.back().kind == Tok::Bad) return fail(t_.back(), t_.back().text);
-    auto f = disjunction();
+    std::optional<Formula> f;
+    if (word("bound")) {
+      // bound(a + b): a number, the query on its own
+      f = node(FormulaKind::Bound, peek().column);
+      take();
+      if (!expect(Tok::LParen, "'(' after bound") || !sum(f->left) || !expect(Tok::RParen, "')'")) return std::nullopt;
+    } else {
+      f = disjunction();
+    }
     if (f && peek().kind != Tok::End) return fail(peek(), "expected the end of the query, found " + describe(peek()));
     if (!f) return f;
     // the tree's depth, walked without recursion: everything that reads a formula recurses
@@ -256,6 +263,7 @@ class Parser {
       const std::string w = take().text;
       return node(w == "true" ? FormulaKind::True : w == "false" ? FormulaKind::False : FormulaKind::Deadlock, col);
     }
+    if (word("bound")) return fail(peek(), "bound(...) is a number: it is a query of its own, not part of a formula");
     if (word("fireable")) {
       take();
       if (!expect(Tok::LParen, "'(' after fireable")) return std::nullopt;
@@ -314,12 +322,8 @@ class Parser {
     return true;
   }
 
-  std::int64_t place(std::string_view n) const {
-    return lookup(n, [&](std::string_view x) { return net_.findPlace(x); }, net_.places());
-  }
-  std::int64_t transition(std::string_view n) const {
-    return lookup(n, [&](std::string_view x) { return net_.findTransition(x); }, net_.transitions());
-  }
+  std::int64_t place(std::string_view n) const { return findPlaceNamed(net_, n); }
+  std::int64_t transition(std::string_view n) const { return findTransitionNamed(net_, n); }
 
   static constexpr std::size_t kMaxDepth = 100;  // levels of the formula's tree
   static constexpr const char* kTooDeep = "the formula is nested more than 100 levels deep";
@@ -349,6 +353,14 @@ std::string sumText(const Net& net, const TokenSum& s) {
 }
 
 }  // namespace
+
+std::int64_t findPlaceNamed(const Net& net, std::string_view name) {
+  return lookup(name, [&](std::string_view x) { return net.findPlace(x); }, net.places());
+}
+
+std::int64_t findTransitionNamed(const Net& net, std::string_view name) {
+  return lookup(name, [&](std::string_view x) { return net.findTransition(x); }, net.transitions());
+}
 
 std::optional<Formula> parseQuery(const Net& net, std::string_view text, QueryError& error) {
   Parser p(net, tokenize(text));
@@ -405,12 +417,14 @@ std::string formulaText(const Net& net, const Formula& f) {
     case FormulaKind::Future: return "F " + wrap(f.operands[0]);
     case FormulaKind::Globally: return "G " + wrap(f.operands[0]);
     case FormulaKind::Until: return "(" + until(f) + ")";
+    case FormulaKind::Bound: return "bound(" + sumText(net, f.left) + ")";
   }
   return {};
 }
 
 bool isStateFormula(const Formula& f) {
   switch (f.kind) {
+    case FormulaKind::Bound:  // over every reachable marking
     case FormulaKind::All:
     case FormulaKind::Exists:
     case FormulaKind::Next:

@@ -294,7 +294,7 @@ TEST(CliAnalyze, QueriesAreAnsweredWithTheirWitnessesAndMistakesLocated) {
                        "  shown by the marking after 2 firings: main/T1 main/T2\n  tokens there:"),
             std::string::npos)
       << r.out;
-  EXPECT_NE(r.out.find("query 2: AG not fireable(main/T1)\n  false (1 marking explored)\n"
+  EXPECT_NE(r.out.find("query 2: AG not fireable(main/T1)\n  false (3 markings explored)\n"
                        "  shown by the initial marking\n"),
             std::string::npos)
       << r.out;
@@ -308,6 +308,19 @@ TEST(CliAnalyze, QueriesAreAnsweredWithTheirWitnessesAndMistakesLocated) {
   r = gdpn("analyze tests/data/conformance/Referendum-PT-0010.pnml --max-states 100 --query 'EF deadlock'");
   EXPECT_EQ(r.code, 3) << r.out;
   EXPECT_NE(r.out.find("  unknown: partial: --max-states reached"), std::string::npos) << r.out;
+  // a contest property file: the contest's lines
+  r = gdpn("analyze tests/data/conformance/Philosophers-PT-000005.pnml --query "
+           "tests/data/conformance/queries/Philosophers-PT-000005/UpperBounds.xml --query 'bound(Eat_1 + Eat_2)'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("FORMULA Philosophers-PT-000005-UpperBounds-00 5 TECHNIQUES EXPLICIT\n"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("FORMULA Philosophers-PT-000005-UpperBounds-15 "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("query 17: bound(net/Eat_1 + net/Eat_2)\n  1 (243 markings explored)\n"), std::string::npos)
+      << r.out;
+  r = gdpn("analyze tests/data/conformance/Philosophers-PT-000005.pnml --query "
+           "tests/data/conformance/queries/Philosophers-PT-000005/LTLFireability.xml");
+  EXPECT_EQ(r.code, 3) << r.out;
+  EXPECT_NE(r.out.find(" CANNOT_COMPUTE (LTL formulas are not answered yet"), std::string::npos) << r.out;
   // a file of queries: each mistake at its line and column
   const auto file = temp("gdpn_bad.queries");
   std::ofstream(file) << "# the philosophers\nEF deadlock\n\nAG Think_1 <= 1 and fireable(FF9)\nEF (Eat_1 >= 1\n";

@@ -66,9 +66,12 @@ struct QueryResult {
   std::string text;
   net::Formula formula;
   net::QueryAnswer answer;
+  std::string id;  ///< from a contest property file: printed as its FORMULA line
 };
 /// The answers as `gdpn analyze --query` prints them: per query its formula, the answer, and
-/// the path and marking that show it, wrapped at 100 columns.
+/// the path and marking that show it, wrapped at 100 columns; a contest property as the
+/// contest's line, `FORMULA <id> TRUE|FALSE|<number> TECHNIQUES <words>` (or `FORMULA <id>
+/// CANNOT_COMPUTE` and why).
 void printQueries(std::ostream& out, const net::Net& net, const std::vector<QueryResult>& results);
 /// The answers as pretty-printed JSON text.
 std::string queriesJson(const net::Net& net, const std::vector<QueryResult>& results);

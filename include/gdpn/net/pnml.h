@@ -10,6 +10,11 @@
 
 namespace gdpn::net {
 
+/// The name a place or transition gets from PNML id `id`: the id itself when it is an
+/// identifier, else the id with every other character made '_' (and "n" before a leading
+/// digit). Where two ids give one name, the later gets '_' appended.
+std::string pnmlName(const std::string& id);
+
 /// Reads the PNML text `text` (named `file` in messages) into a NetSpec with one page, "net":
 /// places with their initial markings, transitions, arcs with weights (inhibitor and test arcs
 /// as tools write them: `type="inhibitor"` or `<type value="inhibitor"/>`), names and

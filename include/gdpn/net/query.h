@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "gdpn/core/diagnostics.h"
 #include "gdpn/net/analysis.h"
 #include "gdpn/net/net.h"
 
@@ -37,6 +38,7 @@ enum class FormulaKind : std::uint8_t {
   Future,
   Globally,
   Until,     ///< operands: what holds until, and what then holds
+  Bound,     ///< a number, a query of its own: the most tokens `left` ever counts
 };
 
 /// How a comparison compares.
@@ -46,7 +48,7 @@ enum class Comparison : std::uint8_t { Less, LessEqual, Equal, NotEqual, Greater
 struct Formula {
   FormulaKind kind = FormulaKind::True;
   Comparison compare = Comparison::Equal;  ///< Compare
-  TokenSum left, right;                    ///< Compare
+  TokenSum left, right;                    ///< Compare; Bound: left
   std::vector<TransitionId> transitions;   ///< Fireable
   std::vector<Formula> operands;           ///< And, Or: two or more; Until: two; the others with operands: one
   std::size_t column = 1;                  ///< where the node starts in the text, counted from 1
@@ -60,11 +62,30 @@ struct QueryError {
 
 /// Reads a formula in the text form (docs/queries.md):
 /// `EF (buffer >= 3 and fireable(consume))`, `AG not deadlock`, `A (G F fireable(t1))`,
-/// `E [ idle = 1 U busy + done > 2 ]`. Places and transitions are named as in the net
+/// `E [ idle = 1 U busy + done > 2 ]`, `bound(buffer + done)`. Places and transitions are named as in the net
 /// (quoted with "..." where a name is a keyword or holds other characters); a place stands for
 /// the tokens on all its slots. Formulas nest at most 100 levels deep. Nullopt on a mistake,
 /// described in `error`.
 std::optional<Formula> parseQuery(const Net& net, std::string_view text, QueryError& error);
+
+/// The place called `name`, or else the one place whose name ends in "/" + `name` (a name
+/// given without its page's path, or a PNML id); -1 when none or several.
+std::int64_t findPlaceNamed(const Net& net, std::string_view name);
+/// The same for transitions.
+std::int64_t findTransitionNamed(const Net& net, std::string_view name);
+
+/// One property of a Model Checking Contest property file.
+struct Property {
+  std::string id;   ///< the contest's id of the formula
+  Formula formula;
+};
+
+/// Reads a property file of the Model Checking Contest (its XML property language: CTL, LTL,
+/// reachability formulas and place bounds over the PNML ids of the net's places and
+/// transitions). Mistakes go to `diags` located at their element (file:line:col); nullopt
+/// when there was one.
+std::optional<std::vector<Property>> readMccProperties(const Net& net, const std::string& text,
+                                                       const std::string& file, core::Diagnostics& diags);
 
 /// The formula in the text form, names as in the net.
 std::string formulaText(const Net& net, const Formula& f);
@@ -73,7 +94,7 @@ std::string formulaText(const Net& net, const Formula& f);
 bool isStateFormula(const Formula& f);
 
 /// How a question was answered.
-enum class Verdict : std::uint8_t { True, False, Unknown };
+enum class Verdict : std::uint8_t { True, False, Unknown, Value /* a number: QueryAnswer::value */ };
 
 /// The answer to one formula.
 struct QueryAnswer {
@@ -88,15 +109,25 @@ struct QueryAnswer {
   std::vector<TransitionId> path;
   std::vector<std::int64_t> marking;
   bool has_marking = false;
+  std::int64_t value = 0;    ///< Value: the bound asked for
   std::uint64_t states = 0;  ///< markings explored to answer
   std::string technique;     ///< in the contest's words: EXPLICIT, INITIAL_STATE, ...
 };
 
-/// Answers `f` on the reachable markings of `net`. Reachability (EF of a state formula, AG of
-/// one, their negations, and a state formula at the initial marking) is answered by a
-/// breadth-first search that stops at the first marking deciding it, under `limits`
-/// (max_states, max_bytes, deadline); other formulas are Unknown for now, saying so.
+/// Answers `f` on the reachable markings of `net`, under `limits` (max_states, max_bytes,
+/// deadline). A state formula: at the initial marking. Reachability (EF or AG of a state
+/// formula, and their negations): by a breadth-first search that stops at the first marking
+/// deciding it, with its shortest path. A bound, and other CTL formulas: on the whole
+/// reachability graph, CTL by fixed points (paths are maximal: a dead marking ends them).
+/// LTL formulas are Unknown for now, saying so.
 QueryAnswer answerQuery(const Net& net, const Formula& f, const ExploreOptions& limits = {});
+
+/// Answers several formulas: where two or more need a search, or one needs the whole graph
+/// (CTL, a bound), the reachability graph is stored once (12 bytes per edge) and every
+/// answer read from it; where a limit stops that, reachability is searched for formula by
+/// formula as answerQuery does.
+std::vector<QueryAnswer> answerQueries(const Net& net, const std::vector<Formula>& formulas,
+                                       const ExploreOptions& limits = {});
 
 /// True when `f` (a state formula) holds in `marking` (per place slot).
 bool holdsIn(const Net& net, const Formula& f, const std::vector<std::int64_t>& marking);

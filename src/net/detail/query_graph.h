@@ -1,0 +1,40 @@
+#pragma once
+// Internal to the net module: the whole reachability graph, stored once for many queries,
+// and the answers read from it (CTL by fixed points, reachability and bounds by a
+// breadth-first walk over its edges).
+
+#include <memory>
+
+#include "gdpn/net/query.h"
+#include "marking_store.h"
+
+namespace gdpn::net::detail {
+
+/// True when every path operator of `f` stands right under a path quantifier and every
+/// quantifier right over one: a CTL formula.
+bool isCtl(const Formula& f);
+
+/// The reachable markings (ids in breadth-first order, 0 the initial one) and their edges,
+/// 12 bytes per edge (the successor, the transition, the predecessor).
+struct StateGraph {
+  std::unique_ptr<Store> store;
+  std::vector<std::uint64_t> first;   ///< successors of s: succ[first[s] .. first[s + 1])
+  std::vector<StateId> succ;
+  std::vector<TransitionId> via;      ///< per edge: the transition that fires
+  std::vector<std::uint64_t> pfirst;  ///< predecessors of s, one per edge: pred[pfirst[s] .. pfirst[s + 1])
+  std::vector<StateId> pred;
+  ExploreStop stop = ExploreStop::Done;  ///< why the graph is not whole (Done: it is)
+  std::size_t size() const { return first.empty() ? 0 : first.size() - 1; }
+  std::size_t outDegree(StateId s) const { return first[s + 1] - first[s]; }
+};
+
+/// Stores the reachability graph of `net` under `limits` (max_states, max_bytes, deadline).
+StateGraph buildGraph(const Net& net, const ExploreOptions& limits);
+
+/// Answers `f` on the whole graph `g` (g.stop == Done): a bound (and a shortest path to a
+/// marking holding it), EF or AG of a state formula (with a shortest path to the marking that
+/// decides it), or any CTL formula. Paths are maximal: a dead marking ends its paths (EX p
+/// fails there, AX p holds, EG p holds where p does). LTL formulas: Unknown.
+QueryAnswer answerOnGraph(const Net& net, const StateGraph& g, const Formula& f);
+
+}  // namespace gdpn::net::detail
