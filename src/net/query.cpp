@@ -169,7 +169,7 @@ std::vector<QueryAnswer> answerQueries(const Net& net, const std::vector<Formula
     const Formula& x = unnegated(f, odd);
     if (isStateFormula(x)) continue;
     ++searches;
-    whole = whole || x.kind == FormulaKind::Bound || (!reachability(x) && isCtl(x));
+    whole = whole || !reachability(x);
   }
   std::optional<StateGraph> graph;
   if (whole || searches >= 2) graph = buildGraph(net, limits);
@@ -180,10 +180,8 @@ std::vector<QueryAnswer> answerQueries(const Net& net, const std::vector<Formula
     QueryAnswer a;
     if (isStateFormula(x)) {
       a = atInitialMarking(net, x);
-    } else if (x.kind != FormulaKind::Bound && !isCtl(x)) {
-      a.unsupported = "LTL formulas are not answered yet (CTL and reachability are)";
     } else if (graph && graph->stop == ExploreStop::Done) {
-      a = answerOnGraph(net, *graph, x);
+      a = answerOnGraph(net, *graph, x, limits);
     } else if (reachability(x)) {
       a = onTheFly(net, x, limits);
     } else {

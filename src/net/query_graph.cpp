@@ -247,7 +247,7 @@ bool shortestPath(const StateGraph& g, const Set& target, QueryAnswer& a) {
 
 }  // namespace
 
-QueryAnswer answerOnGraph(const Net& net, const StateGraph& g, const Formula& f) {
+QueryAnswer answerOnGraph(const Net& net, const StateGraph& g, const Formula& f, const ExploreOptions& limits) {
   QueryAnswer a;
   a.states = g.size();
   Checker checker(net, g);
@@ -278,10 +278,7 @@ QueryAnswer answerOnGraph(const Net& net, const StateGraph& g, const Formula& f)
     a.technique = "EXPLICIT";
     return a;
   }
-  if (!isCtl(f)) {
-    a.unsupported = "LTL formulas are not answered yet (CTL and reachability are)";
-    return a;
-  }
+  if (!isCtl(f)) return answerLtl(net, g, f, limits);
   a.verdict = checker.eval(f)[0] ? Verdict::True : Verdict::False;
   a.technique = "EXPLICIT CTL_FIXED_POINTS";
   return a;

@@ -1,7 +1,7 @@
 // The Model Checking Contest's 2021 formulas on the conformance nets against the contest's
-// reference answers (tests/data/conformance/queries, oracle.tsv): every formula of the
-// reachability, upper-bound and CTL categories must be answered, and answered as the oracle
-// says; the LTL categories must be read, and left unknown rather than guessed.
+// reference answers (tests/data/conformance/queries, oracle.tsv): every formula of all seven
+// categories must be answered, and answered as the oracle says (the LTL categories of the two
+// largest nets left out for their time).
 
 #include <gtest/gtest.h>
 
@@ -46,9 +46,13 @@ TEST_P(ContestFormulas, EveryAnswerIsTheOracles) {
   const auto expected = oracle();
   ASSERT_EQ(expected.size(), 1568u);
   std::vector<Property> asked;
-  std::vector<bool> ltl;
+  std::vector<bool> ltl;  // per formula: from an LTL category
+  // the two nets of millions of markings: LTL's product with their graph takes minutes per
+  // formula as yet (issue 19), so their LTL categories are left out here
+  const bool big = model == "Kanban-PT-00005" || model == "SwimmingPool-PT-02";
   for (const char* category : {"ReachabilityCardinality", "ReachabilityFireability", "UpperBounds", "CTLCardinality",
                                "CTLFireability", "LTLCardinality", "LTLFireability"}) {
+    if (big && std::string(category).starts_with("LTL")) continue;
     const auto file = (kConformanceDir / "queries" / model / (std::string(category) + ".xml")).string();
     core::Diagnostics diags;
     const auto text = core::readFile(file, diags);
@@ -63,20 +67,13 @@ TEST_P(ContestFormulas, EveryAnswerIsTheOracles) {
   std::vector<Formula> formulas;
   for (const auto& p : asked) formulas.push_back(p.formula);
   const auto answers = answerQueries(*net, formulas);
-  std::size_t answered = 0;
   for (std::size_t i = 0; i < asked.size(); ++i) {
     const auto at = expected.find(asked[i].id);
     ASSERT_NE(at, expected.end()) << asked[i].id;
-    // an LTL formula that is also CTL (A G p is AG p) is answered, and must be right; the
-    // others are unknown until LTL is checked
-    if (ltl[i] && answers[i].verdict == Verdict::Unknown) {
-      EXPECT_NE(answers[i].unsupported.find("LTL"), std::string::npos) << asked[i].id;
-      continue;
-    }
-    ++answered;
-    EXPECT_EQ(word(answers[i]), at->second) << asked[i].id << ": " << formulaText(*net, asked[i].formula);
+    EXPECT_EQ(word(answers[i]), at->second)
+        << asked[i].id << (ltl[i] ? " (LTL)" : "") << ": " << formulaText(*net, asked[i].formula) << " "
+        << answers[i].unsupported;
   }
-  EXPECT_GE(answered, 80u);  // every formula of the five other categories
 }
 
 INSTANTIATE_TEST_SUITE_P(Nets, ContestFormulas,

@@ -33,8 +33,15 @@ StateGraph buildGraph(const Net& net, const ExploreOptions& limits);
 
 /// Answers `f` on the whole graph `g` (g.stop == Done): a bound (and a shortest path to a
 /// marking holding it), EF or AG of a state formula (with a shortest path to the marking that
-/// decides it), or any CTL formula. Paths are maximal: a dead marking ends its paths (EX p
-/// fails there, AX p holds, EG p holds where p does). LTL formulas: Unknown.
-QueryAnswer answerOnGraph(const Net& net, const StateGraph& g, const Formula& f);
+/// decides it), any CTL formula (paths are maximal: a dead marking ends its paths, so EX p
+/// fails there, AX p holds, EG p holds where p does), or an LTL formula (answerLtl).
+QueryAnswer answerOnGraph(const Net& net, const StateGraph& g, const Formula& f, const ExploreOptions& limits);
+
+/// Answers the LTL formula `f` (A or E over a path formula) on the whole graph `g`: a
+/// generalized Büchi automaton of the path formula (negated for A) by the tableau method, and
+/// its product with the graph searched for an accepting cycle. A dead marking's paths stutter
+/// there forever. `limits` bound the product (max_states product states, max_bytes, the
+/// deadline): past them the answer is Unknown.
+QueryAnswer answerLtl(const Net& net, const StateGraph& g, const Formula& f, const ExploreOptions& limits);
 
 }  // namespace gdpn::net::detail
