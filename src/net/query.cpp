@@ -1,5 +1,6 @@
-// Answers to queries: a state formula at the initial marking, and reachability (EF, AG) by a
-// breadth-first search over packed markings that stops at the first marking deciding it.
+// Answers to queries: which technique each formula gets (a state formula at the initial
+// marking; reachability, EF and AG, by a breadth-first search over packed markings that stops
+// at the first marking deciding it; the rest on the stored graph), and the search itself.
 
 #include "gdpn/net/query.h"
 
