@@ -1,5 +1,6 @@
 #include "gdpn/model/analysis.h"
 
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -173,6 +174,18 @@ namespace {
 
 /// Writes `names` after text that ends at `column`, a space before each, wrapping lines at
 /// 100 columns with `indent` spaces before the continuation; past `most` names, how many more.
+/// The places that hold tokens in `marking` (per place slot) and how many, in place order.
+std::vector<std::pair<std::string_view, std::int64_t>> markedPlaces(const net::Net& net,
+                                                                     const std::vector<std::int64_t>& marking) {
+  std::vector<std::pair<std::string_view, std::int64_t>> out;
+  for (const net::Place& p : net.places()) {
+    std::int64_t n = 0;
+    for (auto k = p.slots_begin; k < p.slots_end; ++k) n += marking[k];
+    if (n != 0) out.emplace_back(p.name, n);
+  }
+  return out;
+}
+
 void nameList(std::ostream& out, std::size_t column, const std::vector<std::string_view>& names, std::size_t indent,
               std::size_t most = std::numeric_limits<std::size_t>::max()) {
   constexpr std::size_t kWidth = 100;
@@ -217,9 +230,36 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
   } else if (s.deadlock && s.complete && s.bounded) {
     out << " (the initial marking is dead)";
   }
+  constexpr std::size_t kShownNames = 20;
+  if (s.deadlock && (!s.deadlock_path.empty() || (s.complete && s.bounded))) {
+    // the dead marking itself: the path fired from the initial marking
+    std::vector<std::int64_t> m;
+    for (const auto& ps : net.placeSlots()) m.push_back(ps.initial);
+    for (auto t : s.deadlock_path) {
+      for (const auto& term : net.termsOf(t)) {
+        if (term.kind == net::TermKind::Input) m[term.place_slot] -= term.weight;
+        if (term.kind == net::TermKind::Output) m[term.place_slot] += term.weight;
+      }
+    }
+    std::vector<std::string> marked;
+    for (const auto& [place, n] : markedPlaces(net, m)) marked.push_back(std::string(place) + " = " + std::to_string(n));
+    if (marked.empty()) marked.emplace_back("no tokens");
+    out << "\n  dead marking:   ";
+    nameList(out, kValue - 1, std::vector<std::string_view>(marked.begin(), marked.end()), kValue, kShownNames);
+  }
   out << "\n  bounds:          max " << s.max_place << " in one place, " << s.max_marking
       << " in one marking; one-safe: " << yes(s.one_safe) << "\n";
-  constexpr std::size_t kShownNames = 20;
+  if (s.complete && s.bounded && !s.place_bound.empty()) {
+    // each place's bound, places of equal bound together
+    std::map<std::int64_t, std::vector<std::string_view>> by_bound;
+    for (std::size_t p = 0; p < s.place_bound.size(); ++p) by_bound[s.place_bound[p]].emplace_back(net.places()[p].name);
+    for (auto it = by_bound.rbegin(); it != by_bound.rend(); ++it) {
+      const std::string head = std::string(kValue, ' ') + "at most " + std::to_string(it->first) + ":";
+      out << head;
+      nameList(out, head.size(), it->second, kValue + 2, kShownNames);
+      out << "\n";
+    }
+  }
   if (!s.bounded) {
     out << "  unbounded:      ";
     std::vector<std::string_view> names;
@@ -238,7 +278,14 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
     nameList(out, kValue + 2 + 2 + head.size() + std::to_string(names.size()).size() + 2, names, kValue, kShownNames);
   }
   out << "\n  live:            " << decided(s.live) << "\n  reversible:      " << decided(s.reversible)
-      << "\n  constant places: " << s.constant_places.size() << "\n";
+      << "\n  constant places: " << s.constant_places.size();
+  if (!s.constant_places.empty()) {
+    std::vector<std::string_view> names;
+    for (auto p : s.constant_places) names.emplace_back(net.places()[p].name);
+    out << ":";
+    nameList(out, kValue + std::to_string(s.constant_places.size()).size() + 1, names, kValue, kShownNames);
+  }
+  out << "\n";
 
   const auto& inv = a.invariants;
   out << "invariants" << (inv.complete ? "" : std::string(" (") + net::stopReason(inv.stop) + ")") << ":\n"
@@ -276,18 +323,6 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
 
 namespace gdpn::model {
 namespace {
-
-/// The places that hold tokens in `marking` (per place slot) and how many, in place order.
-std::vector<std::pair<std::string_view, std::int64_t>> markedPlaces(const net::Net& net,
-                                                                     const std::vector<std::int64_t>& marking) {
-  std::vector<std::pair<std::string_view, std::int64_t>> out;
-  for (const net::Place& p : net.places()) {
-    std::int64_t n = 0;
-    for (auto k = p.slots_begin; k < p.slots_end; ++k) n += marking[k];
-    if (n != 0) out.emplace_back(p.name, n);
-  }
-  return out;
-}
 
 std::string verdictWord(const net::QueryAnswer& a) {
   switch (a.verdict) {

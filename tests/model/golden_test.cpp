@@ -263,6 +263,16 @@ TEST(CliAnalyze, APnmlNetAndAModelFile) {
   EXPECT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("243 states, 945 edges"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("deadlock:        yes after"), std::string::npos) << r.out;
+  // the dead marking itself, each place's bound, the constant places by name
+  r = gdpn("analyze examples/basics/figure31");
+  EXPECT_NE(r.out.find("  deadlock:        yes after 2 firings: main/T1 main/T2\n"
+                       "  dead marking:    main/P2 = 1 main/P4 = 1\n"
+                       "  bounds:          max 1 in one place, 2 in one marking; one-safe: yes\n"
+                       "                   at most 1: main/P1 main/P2 main/P3 main/P4\n"),
+            std::string::npos)
+      << r.out;
+  r = gdpn("analyze tests/data/conformance/Eratosthenes-PT-010.pnml");
+  EXPECT_NE(r.out.find("  constant places: 4: net/p2 net/p3 net/p7 net/p5\n"), std::string::npos) << r.out;
   r = gdpn("analyze examples/basics/figure31 --json");
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
