@@ -11,7 +11,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <iostream>
 #include <string_view>
 #include <type_traits>
@@ -297,16 +297,23 @@ std::optional<std::vector<model::QueryResult>> readQueries(const gdpn::net::Net&
         << std::string(e.column - 1, ' ') << "^\n";
   };
   for (std::size_t i = 0; i < args.size(); ++i) {
+    // a path that exists is a file of queries (readFile says what is wrong with one that is
+    // not a regular file); anything else is a formula
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(args[i], ec)) {
+    if (!std::filesystem::exists(args[i], ec)) {
       read("--query " + std::to_string(i + 1) + ":1", args[i]);
+      continue;
+    }
+    Diagnostics diags;
+    const auto text = gdpn::core::readFile(args[i], diags);
+    if (!text) {
+      diags.print(err);
+      ok = false;
       continue;
     }
     if (args[i].ends_with(".xml")) {
       // the Model Checking Contest's property file
-      Diagnostics diags;
-      const auto text = gdpn::core::readFile(args[i], diags);
-      auto properties = text ? gdpn::net::readMccProperties(net, *text, args[i], diags) : std::nullopt;
+      auto properties = gdpn::net::readMccProperties(net, *text, args[i], diags);
       diags.print(err);
       if (!properties) {
         ok = false;
@@ -321,17 +328,14 @@ std::optional<std::vector<model::QueryResult>> readQueries(const gdpn::net::Net&
       }
       continue;
     }
-    std::ifstream in(args[i]);
+    // one formula per line; blank lines and # comments skipped
+    std::istringstream in(*text);
     std::string line;
     for (std::size_t n = 1; std::getline(in, line); ++n) {
-      const auto first = line.find_first_not_of(" \t\r");
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      const auto first = line.find_first_not_of(" \t");
       if (first == std::string::npos || line[first] == '#') continue;
-      if (line.back() == '\r') line.pop_back();
       read(args[i] + ":" + std::to_string(n), line);
-    }
-    if (in.bad()) {
-      err << args[i] << ": error: cannot read the file\n";
-      ok = false;
     }
   }
   if (!ok) return std::nullopt;

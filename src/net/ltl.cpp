@@ -226,9 +226,7 @@ Search nonEmpty(const StateGraph& g, const Automaton& a, const std::vector<std::
     const auto v = static_cast<std::uint32_t>(low.size());
     if ((v & 0xfff) == 0) {
       // about 80 bytes per product state: the map's entry, the index, the stacks
-      if (v > limits.max_states) stop = ExploreStop::MaxStates;
-      if (limits.max_bytes != 0 && std::uint64_t{v} * 80 > limits.max_bytes) stop = ExploreStop::MaxMemory;
-      if (limits.deadline && std::chrono::steady_clock::now() >= *limits.deadline) stop = ExploreStop::TimeLimit;
+      stop = v > limits.max_states ? ExploreStop::MaxStates : passedLimit(limits, std::uint64_t{v} * 80);
     }
     index.emplace(key, v);
     low.push_back(v);

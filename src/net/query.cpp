@@ -33,62 +33,38 @@ struct Reach {
 
 Reach reach(const Net& net, const Formula& target, const ExploreOptions& limits) {
   Reach out;
-  const Plan p = plan(net, limits);
-  if (p.overflow) {
+  ConcreteStates states(net, limits);
+  if (!states.ok()) {
     out.stop = ExploreStop::Overflow;
     return out;
   }
-  Store store(concreteLayout(p));
-  const Layout& L = store.layout();
-  StateCheck check(net, L);
-  std::vector<std::uint64_t> key(L.words()), next(L.words());
-  std::size_t bad = 0;
-  L.pack(p.m0.data(), key.data(), bad);
-  bool added = false;
-  store.insert(key.data(), store.hash(key.data()), added);
+  Store& store = states.store();
   std::vector<StateId> parent{0};
   std::vector<TransitionId> via{0};
-  auto finish = [&](StateId s) {
+  auto found = [&](StateId s) {
+    if (!states.check().holds(target, store.at(s))) return false;
     out.found = true;
     for (StateId x = s; x != 0; x = parent[x]) out.path.push_back(via[x]);
     std::reverse(out.path.begin(), out.path.end());
-    out.marking = unpacked(L, store.at(s));
-    out.states = store.size();
+    out.marking = unpacked(store.layout(), store.at(s));
+    return true;
   };
-  if (check.holds(target, store.at(0))) {
-    finish(0);
+  if (found(0)) {
+    out.states = 1;
     return out;
   }
-  std::vector<TransitionId> candidates;
-  for (StateId s = 0; s < store.size(); ++s) {
-    if ((s & 0xfff) == 0) {
-      if (limits.max_bytes != 0 && store.bytes() + parent.capacity() * 8 > limits.max_bytes) out.stop = ExploreStop::MaxMemory;
-      if (limits.deadline && std::chrono::steady_clock::now() >= *limits.deadline) out.stop = ExploreStop::TimeLimit;
-      if (out.stop != ExploreStop::Done) break;
-    }
-    check.candidates().find(store.at(s), candidates);
-    for (TransitionId t : candidates) {
-      std::size_t field = 0;
-      const Fired f = check.firing().fire(t, store.at(s), next.data(), field);
-      if (f == Fired::NotEnabled) continue;
-      if (f == Fired::TooBig) {
-        out.stop = ExploreStop::Overflow;
-        break;
-      }
-      const StateId w = store.insert(next.data(), store.hash(next.data()), added);
-      if (!added) continue;
+  for (StateId s = 0; s < store.size() && !out.found && out.stop == ExploreStop::Done; ++s) {
+    if ((s & 0xfff) == 0) out.stop = passedLimit(limits, store.bytes() + parent.capacity() * 8);
+    if (out.stop != ExploreStop::Done) break;
+    const bool fits = states.successors(s, [&](TransitionId t, StateId w, bool added) {
+      if (!added) return true;
       parent.push_back(s);
       via.push_back(t);
-      if (check.holds(target, store.at(w))) {
-        finish(w);
-        return out;
-      }
-      if (store.size() > std::min<std::uint64_t>(limits.max_states, 0xfffffff0u)) {
-        out.stop = ExploreStop::MaxStates;
-        break;
-      }
-    }
-    if (out.stop != ExploreStop::Done) break;
+      if (found(w)) return false;
+      if (store.size() > std::min<std::uint64_t>(limits.max_states, 0xfffffff0u)) out.stop = ExploreStop::MaxStates;
+      return out.stop == ExploreStop::Done;
+    });
+    if (!fits) out.stop = ExploreStop::Overflow;
   }
   out.states = store.size();
   return out;

@@ -20,45 +20,27 @@ bool pathOperator(FormulaKind k) {
 
 StateGraph buildGraph(const Net& net, const ExploreOptions& limits) {
   StateGraph g;
-  const Plan p = plan(net, limits);
-  g.first.push_back(0);
-  if (p.overflow) {
+  ConcreteStates states(net, limits);
+  if (!states.ok()) {
     g.stop = ExploreStop::Overflow;
     return g;
   }
-  g.store = std::make_unique<Store>(concreteLayout(p));
-  Store& store = *g.store;
-  const Layout& L = store.layout();
-  StateCheck check(net, L);
-  std::vector<std::uint64_t> key(L.words());
-  std::size_t bad = 0;
-  L.pack(p.m0.data(), key.data(), bad);
-  bool added = false;
-  store.insert(key.data(), store.hash(key.data()), added);
-  std::vector<TransitionId> candidates;
-  g.first.clear();
+  const Store& store = states.store();
   for (StateId s = 0; s < store.size() && g.stop == ExploreStop::Done; ++s) {
     if ((s & 0xfff) == 0) {
-      const std::uint64_t bytes = store.bytes() + g.succ.capacity() * 8 + g.first.capacity() * 8;
-      if (limits.max_bytes != 0 && bytes > limits.max_bytes) g.stop = ExploreStop::MaxMemory;
-      if (limits.deadline && std::chrono::steady_clock::now() >= *limits.deadline) g.stop = ExploreStop::TimeLimit;
+      g.stop = passedLimit(limits, store.bytes() + g.succ.capacity() * 8 + g.first.capacity() * 8);
     }
     g.first.push_back(g.succ.size());
-    check.candidates().find(store.at(s), candidates);
-    for (TransitionId t : candidates) {
-      std::size_t field = 0;
-      const Fired f = check.firing().fire(t, store.at(s), key.data(), field);
-      if (f == Fired::NotEnabled) continue;
-      if (f == Fired::TooBig) {
-        g.stop = ExploreStop::Overflow;
-        break;
-      }
-      g.succ.push_back(store.insert(key.data(), store.hash(key.data()), added));
+    const bool fits = states.successors(s, [&](TransitionId t, StateId w, bool) {
+      g.succ.push_back(w);
       g.via.push_back(t);
       if (store.size() > std::min<std::uint64_t>(limits.max_states, 0xfffffff0u)) g.stop = ExploreStop::MaxStates;
-    }
+      return true;
+    });
+    if (!fits) g.stop = ExploreStop::Overflow;
   }
   g.first.push_back(g.succ.size());
+  g.store = states.releaseStore();
   if (g.stop != ExploreStop::Done) return g;
   // the edges backwards
   const std::size_t n = g.size();
@@ -254,10 +236,11 @@ QueryAnswer answerOnGraph(const Net& net, const StateGraph& g, const Formula& f,
   if (f.kind == FormulaKind::Bound) {
     // the most tokens, and a shortest way to a marking that holds them
     StateCheck check(net, g.store->layout());
-    std::int64_t most = std::numeric_limits<std::int64_t>::min();
-    for (StateId s = 0; s < g.size(); ++s) most = std::max(most, check.sum(f.left, g.store->at(s)));
+    std::vector<std::int64_t> sums(g.size());
+    for (StateId s = 0; s < g.size(); ++s) sums[s] = check.sum(f.left, g.store->at(s));
+    const std::int64_t most = *std::max_element(sums.begin(), sums.end());
     Set at(g.size());
-    for (StateId s = 0; s < g.size(); ++s) at[s] = check.sum(f.left, g.store->at(s)) == most;
+    for (StateId s = 0; s < g.size(); ++s) at[s] = sums[s] == most;
     shortestPath(g, at, a);
     a.verdict = Verdict::Value;
     a.value = most;

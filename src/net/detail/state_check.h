@@ -3,6 +3,8 @@
 // searches (reachability on the fly, CTL over the whole graph).
 
 #include <algorithm>
+#include <chrono>
+#include <memory>
 
 #include "gdpn/net/query.h"
 #include "marking_store.h"
@@ -66,14 +68,62 @@ class StateCheck {
   std::vector<TransitionId> scratch_;
 };
 
-/// Field sizes for concrete markings: the bounds the invariants and the state equation give,
-/// and 32 bits where there is none (a count past that stops the search).
-inline Layout concreteLayout(const Plan& p) {
-  std::vector<std::uint32_t> bits = p.bits;
-  for (std::size_t k = 0; k < bits.size(); ++k) {
-    if (p.omega[k]) bits[k] = kMaxBits;
-  }
-  return Layout(bits, std::vector<bool>(bits.size(), false));
+/// The limit of `limits` passed now, memory against `bytes` held and the deadline, or Done.
+inline ExploreStop passedLimit(const ExploreOptions& limits, std::uint64_t bytes) {
+  if (limits.max_bytes != 0 && bytes > limits.max_bytes) return ExploreStop::MaxMemory;
+  if (limits.deadline && std::chrono::steady_clock::now() >= *limits.deadline) return ExploreStop::TimeLimit;
+  return ExploreStop::Done;
 }
+
+/// The concrete markings of a net met so far (no ω: fields sized by the invariants' and the
+/// state equation's bounds, 32 bits where there is none), id 0 the initial one, and their
+/// successors: what the queries' breadth-first searches share.
+class ConcreteStates {
+ public:
+  ConcreteStates(const Net& net, const ExploreOptions& limits) {
+    const Plan p = plan(net, limits);
+    if (p.overflow) return;
+    std::vector<std::uint32_t> bits = p.bits;
+    for (std::size_t k = 0; k < bits.size(); ++k) {
+      if (p.omega[k]) bits[k] = kMaxBits;
+    }
+    store_ = std::make_unique<Store>(Layout(bits, std::vector<bool>(bits.size(), false)));
+    check_ = std::make_unique<StateCheck>(net, store_->layout());
+    next_.resize(store_->words());
+    std::size_t bad = 0;
+    store_->layout().pack(p.m0.data(), next_.data(), bad);
+    bool added = false;
+    store_->insert(next_.data(), store_->hash(next_.data()), added);
+  }
+  /// False when the initial marking does not fit the fields (then nothing else may be used).
+  bool ok() const { return store_ != nullptr; }
+  Store& store() { return *store_; }
+  std::unique_ptr<Store> releaseStore() { return std::move(store_); }
+  StateCheck& check() { return *check_; }
+
+  /// Calls `f(t, w, added)` for each transition t enabled in state `s`, w being the id of its
+  /// successor (`added`: new to the store), until f returns false. False when a count did not
+  /// fit its field (the search must stop: Overflow).
+  template <class F>
+  bool successors(StateId s, F f) {
+    check_->candidates().find(store_->at(s), candidates_);
+    for (TransitionId t : candidates_) {
+      std::size_t field = 0;
+      const Fired fired = check_->firing().fire(t, store_->at(s), next_.data(), field);
+      if (fired == Fired::NotEnabled) continue;
+      if (fired == Fired::TooBig) return false;
+      bool added = false;
+      const StateId w = store_->insert(next_.data(), store_->hash(next_.data()), added);
+      if (!f(t, w, added)) break;
+    }
+    return true;
+  }
+
+ private:
+  std::unique_ptr<Store> store_;
+  std::unique_ptr<StateCheck> check_;
+  std::vector<std::uint64_t> next_;
+  std::vector<TransitionId> candidates_;
+};
 
 }  // namespace gdpn::net::detail
