@@ -7,7 +7,8 @@
 #include <algorithm>
 #include <map>
 #include <set>
-#include <unordered_map>
+#include <tuple>
+#include <utility>
 
 #include "detail/query_graph.h"
 #include "detail/state_check.h"
@@ -60,7 +61,52 @@ class Nnf {
   }
 
  private:
+  // interns `n`, rewritten first by identities of LTL on infinite paths that keep the
+  // automaton small: X moved outward (F X p = X F p, X p and X q = X (p and q)), F F p = F p,
+  // G G p = G p, and G F p, F G p the same at every position (so X, F, G over them vanish)
   std::uint32_t add(Node n) {
+    const auto is = [&](std::uint32_t x, Node::Kind k) { return nodes[x].kind == k; };
+    const auto future = [&](std::uint32_t x) { return is(x, Node::Until) && is(nodes[x].a, Node::True); };
+    const auto globally = [&](std::uint32_t x) { return is(x, Node::Release) && is(nodes[x].a, Node::False); };
+    const auto recurrent = [&](std::uint32_t x) {
+      return (globally(x) && future(nodes[x].b)) || (future(x) && globally(nodes[x].b));
+    };
+    switch (n.kind) {
+      case Node::Next:
+        if (recurrent(n.a) || is(n.a, Node::True) || is(n.a, Node::False)) return n.a;
+        break;
+      case Node::And:
+      case Node::Or: {
+        const Node::Kind unit = n.kind == Node::And ? Node::True : Node::False;
+        if (n.a == n.b || is(n.b, unit)) return n.a;
+        if (is(n.a, unit)) return n.b;
+        if (is(n.a, Node::True) || is(n.a, Node::False)) return n.a;  // the other constant absorbs
+        if (is(n.b, Node::True) || is(n.b, Node::False)) return n.b;
+        if (is(n.a, Node::Next) && is(n.b, Node::Next)) {
+          const Node x{n.kind, nodes[n.a].a, nodes[n.b].a};
+          return add({Node::Next, add(x), 0});
+        }
+        break;
+      }
+      case Node::Until:
+      case Node::Release: {
+        if (is(n.b, Node::True) || is(n.b, Node::False)) return n.b;  // p U true, p R false, ...
+        if (is(n.a, Node::Next) && is(n.b, Node::Next)) {
+          const Node x{n.kind, nodes[n.a].a, nodes[n.b].a};
+          return add({Node::Next, add(x), 0});
+        }
+        const bool f = n.kind == Node::Until && is(n.a, Node::True);
+        const bool g = n.kind == Node::Release && is(n.a, Node::False);
+        if (!f && !g) break;
+        if (recurrent(n.b) || (f && future(n.b)) || (g && globally(n.b))) return n.b;
+        if (is(n.b, Node::Next)) {
+          const Node x{n.kind, n.a, nodes[n.b].a};
+          return add({Node::Next, add(x), 0});
+        }
+        break;
+      }
+      default: break;
+    }
     const auto [at, added] = index_.emplace(n, static_cast<std::uint32_t>(nodes.size()));
     if (added) nodes.push_back(n);
     return at->second;
@@ -86,6 +132,8 @@ struct Automaton {
 };
 
 /// The tableau (Gerth, Peled, Vardi, Wolper 1995): nodes of (old, next) formula sets.
+Automaton merged(Automaton a);
+
 Automaton tableau(const Nnf& nnf, std::uint32_t root) {
   struct Tab {
     std::set<std::uint32_t> incoming;  // kInit for the initial
@@ -189,115 +237,290 @@ Automaton tableau(const Nnf& nnf, std::uint32_t root) {
       }
     }
   }
+  return merged(std::move(a));
+}
+
+/// `a` with states that read the same, accept the same and lead to the same states merged,
+/// until none are left to merge.
+Automaton merged(Automaton a) {
+  while (true) {
+    std::map<std::tuple<std::vector<std::uint32_t>, std::vector<std::uint32_t>, std::uint64_t, std::vector<std::uint32_t>>,
+             std::uint32_t>
+        classes;
+    std::vector<std::uint32_t> to(a.states.size());
+    for (std::uint32_t i = 0; i < a.states.size(); ++i) {
+      auto& st = a.states[i];
+      std::sort(st.next.begin(), st.next.end());
+      st.next.erase(std::unique(st.next.begin(), st.next.end()), st.next.end());
+      to[i] = classes.emplace(std::make_tuple(st.atoms, st.not_atoms, st.accepting, st.next), i).first->second;
+    }
+    if (classes.size() == a.states.size()) break;
+    for (auto& st : a.states) {
+      for (auto& n : st.next) n = to[n];
+    }
+    for (auto& i : a.initial) i = to[i];
+    // renumbered: the representatives only
+    std::vector<std::uint32_t> number(a.states.size(), 0xffffffffu);
+    Automaton b;
+    b.sets = a.sets;
+    for (std::uint32_t i = 0; i < a.states.size(); ++i) {
+      if (to[i] != i) continue;
+      number[i] = static_cast<std::uint32_t>(b.states.size());
+      b.states.push_back(std::move(a.states[i]));
+    }
+    for (auto& st : b.states) {
+      for (auto& n : st.next) n = number[n];
+    }
+    for (std::uint32_t i : a.initial) b.initial.push_back(number[i]);
+    std::sort(b.initial.begin(), b.initial.end());
+    b.initial.erase(std::unique(b.initial.begin(), b.initial.end()), b.initial.end());
+    a = std::move(b);
+  }
   return a;
 }
 
-/// Whether some path of the product of `g` and `a` from the initial marking meets every
-/// acceptance set infinitely often: Found, or None, or the limit that stopped the search.
-enum class Search : std::uint8_t { Found, None, Stopped };
-Search nonEmpty(const StateGraph& g, const Automaton& a, const std::vector<std::vector<std::uint8_t>>& atom,
-                const ExploreOptions& limits, ExploreStop& stop) {
-  const std::size_t q = a.states.size();
-  auto reads = [&](StateId s, std::uint32_t state) {
-    const auto& st = a.states[state];
-    for (std::uint32_t x : st.atoms) {
-      if (!atom[x][s]) return false;
-    }
-    for (std::uint32_t x : st.not_atoms) {
-      if (atom[x][s]) return false;
-    }
-    return true;
-  };
-  const std::uint64_t all = a.sets >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << a.sets) - 1;
-  // product states by (marking, automaton state); Tarjan's algorithm on explicit frames
-  std::unordered_map<std::uint64_t, std::uint32_t> index;  // product key -> its DFS index
-  std::vector<std::uint32_t> low;
-  std::vector<std::uint64_t> key_of;
-  std::vector<bool> on_stack;
-  std::vector<std::uint32_t> stack;
-  struct Frame {
-    std::uint32_t v;
-    std::uint64_t edge;   // next graph edge (or the stutter loop: first == last)
-    std::uint32_t next;   // next automaton successor for that edge
-  };
-  std::vector<Frame> frames;
-  auto keyOf = [&](StateId s, std::uint32_t state) { return std::uint64_t{s} * q + state; };
-  auto visit = [&](std::uint64_t key) {
-    const auto v = static_cast<std::uint32_t>(low.size());
-    if ((v & 0xfff) == 0) {
-      // about 80 bytes per product state: the map's entry, the index, the stacks
-      stop = v > limits.max_states ? ExploreStop::MaxStates : passedLimit(limits, std::uint64_t{v} * 80);
-    }
-    index.emplace(key, v);
-    low.push_back(v);
-    key_of.push_back(key);
-    on_stack.push_back(true);
-    stack.push_back(v);
-    frames.push_back({v, g.first[key / q], 0});
-  };
-  for (std::uint32_t init : a.initial) {
-    if (!reads(0, init) || index.contains(keyOf(0, init))) continue;
-    visit(keyOf(0, init));
-    while (!frames.empty()) {
-      if (stop != ExploreStop::Done) return Search::Stopped;
-      Frame& f = frames.back();
-      const auto s = static_cast<StateId>(key_of[f.v] / q);
-      const auto state = static_cast<std::uint32_t>(key_of[f.v] % q);
-      const bool dead = g.outDegree(s) == 0;
-      const std::uint64_t end = dead ? g.first[s] + 1 : g.first[s + 1];  // a dead marking loops
-      if (f.edge < end) {
-        const StateId w = dead ? s : g.succ[f.edge];
-        const auto& nexts = a.states[state].next;
-        if (f.next >= nexts.size()) {
-          ++f.edge;
-          f.next = 0;
-          continue;
-        }
-        const std::uint32_t to = nexts[f.next++];
-        if (!reads(w, to)) continue;
-        const std::uint64_t key = keyOf(w, to);
-        const auto at = index.find(key);
-        if (at == index.end()) {
-          visit(key);
-        } else if (on_stack[at->second]) {
-          low[f.v] = std::min(low[f.v], at->second);
-        }
-        continue;
-      }
-      const std::uint32_t v = f.v;
-      frames.pop_back();
-      if (!frames.empty()) low[frames.back().v] = std::min(low[frames.back().v], low[v]);
-      if (low[v] != v) continue;
-      // a component: v and what lies above it on the stack
-      std::uint64_t met = 0;
-      std::size_t size = 0;
-      for (std::size_t i = stack.size(); i-- > 0;) {
-        met |= a.states[key_of[stack[i]] % q].accepting;
-        ++size;
-        if (stack[i] == v) break;
-      }
-      bool cycle = size > 1;
-      if (!cycle) {
-        // one product state: a cycle only through an edge to itself
-        const auto s1 = static_cast<StateId>(key_of[v] / q);
-        const auto st1 = static_cast<std::uint32_t>(key_of[v] % q);
-        const auto& nexts = a.states[st1].next;
-        const bool loops = std::find(nexts.begin(), nexts.end(), st1) != nexts.end();
-        bool self = g.outDegree(s1) == 0;
-        for (auto e = g.first[s1]; e < g.first[s1 + 1] && !self; ++e) self = g.succ[e] == s1;
-        cycle = loops && self;
-      }
-      if (cycle && (met & all) == all) return Search::Found;
-      while (true) {
-        const std::uint32_t x = stack.back();
-        stack.pop_back();
-        on_stack[x] = false;
-        if (x == v) break;
-      }
+/// Product states' keys (marking id times automaton size plus automaton state) to their
+/// depth-first numbers: open addressing, 12 bytes a slot, at most half full.
+class KeyIndex {
+ public:
+  static constexpr std::uint32_t kNone = 0xffffffffu;
+  KeyIndex() { grow(1u << 12); }
+  /// The number stored for `key`, or kNone.
+  std::uint32_t find(std::uint64_t key) const {
+    for (std::size_t i = slot(key);; i = (i + 1) & mask_) {
+      if (values_[i] == kNone) return kNone;
+      if (keys_[i] == key) return values_[i];
     }
   }
-  return Search::None;
-}
+  /// Stores `value` for `key` (not stored yet).
+  void insert(std::uint64_t key, std::uint32_t value) {
+    if (2 * (size_ + 1) > keys_.size()) grow(keys_.size() * 2);
+    place(key, value);
+    ++size_;
+  }
+  std::uint64_t bytes() const { return keys_.size() * 12; }
+
+ private:
+  std::size_t slot(std::uint64_t key) const {
+    key ^= key >> 31;
+    key *= 0x9e3779b97f4a7c15ull;
+    return (key >> 20) & mask_;
+  }
+  void place(std::uint64_t key, std::uint32_t value) {
+    std::size_t i = slot(key);
+    while (values_[i] != kNone) i = (i + 1) & mask_;
+    keys_[i] = key;
+    values_[i] = value;
+  }
+  void grow(std::size_t n) {
+    std::vector<std::uint64_t> keys(n);
+    std::vector<std::uint32_t> values(n, kNone);
+    keys.swap(keys_);
+    values.swap(values_);
+    mask_ = n - 1;
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+      if (values[i] != kNone) place(keys[i], values[i]);
+    }
+  }
+  std::vector<std::uint64_t> keys_;
+  std::vector<std::uint32_t> values_;
+  std::size_t mask_ = 0, size_ = 0;
+};
+
+/// The product of the graph and the automaton, searched depth first for a reachable cycle
+/// that meets every acceptance set, by Couvreur's algorithm (1999): components are merged as
+/// back edges close them, so an accepting cycle is seen as soon as its last edge is, not when
+/// its whole component is done. Then the lasso: the depth-first path to the component's root
+/// and a cycle from the root through every acceptance set back to it.
+class Product {
+ public:
+  /// Whether a lasso was found, none exists, or a limit stopped the search.
+  enum class Search : std::uint8_t { Found, None, Stopped };
+  static constexpr std::uint32_t kNone = KeyIndex::kNone;
+
+  Product(const StateGraph& g, const Automaton& a, const std::vector<std::vector<std::uint8_t>>& atom,
+          const ExploreOptions& limits)
+      : g_(g), a_(a), atom_(atom), limits_(limits), q_(a.states.size()),
+        all_(a.sets >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << a.sets) - 1) {}
+
+  Search search(ExploreStop& stop) {
+    for (std::uint32_t init : a_.initial) {
+      if (!reads(0, init) || index_.find(keyOf(0, init)) != KeyIndex::kNone) continue;
+      starts_.push_back(static_cast<std::uint32_t>(key_of_.size()));
+      visit(keyOf(0, init));
+      while (!frames_.empty()) {
+        if (stop_ != ExploreStop::Done) {
+          stop = stop_;
+          return Search::Stopped;
+        }
+        Frame& f = frames_.back();
+        const StateId s = markingOf(f.v);
+        const std::uint64_t end = endOf(s);
+        if (f.edge < end) {
+          const auto& nexts = a_.states[stateOf(f.v)].next;
+          if (f.next >= nexts.size()) {
+            ++f.edge;
+            f.next = 0;
+            continue;
+          }
+          const std::uint32_t to = nexts[f.next++];
+          const StateId w = target(s, f.edge);
+          if (!reads(w, to)) continue;
+          const std::uint64_t key = keyOf(w, to);
+          const std::uint32_t at = index_.find(key);
+          if (at == KeyIndex::kNone) {
+            visit(key);  // the frame keeps its edge while the new state is searched: the lasso's prefix
+            continue;
+          }
+          if (dead_[at]) continue;
+          // a cycle: every component on the stack above the one holding `at` joins it
+          std::uint64_t marks = 0;
+          while (roots_.back().v > at) {
+            marks |= roots_.back().marks;
+            roots_.pop_back();
+          }
+          roots_.back().marks |= marks;
+          if ((roots_.back().marks & all_) == all_) return Search::Found;
+          continue;
+        }
+        const std::uint32_t v = f.v;
+        frames_.pop_back();
+        if (roots_.back().v != v) continue;
+        roots_.pop_back();  // v's component is done: no accepting cycle in it
+        while (true) {
+          const std::uint32_t x = live_.back();
+          live_.pop_back();
+          dead_[x] = true;
+          if (x == v) break;
+        }
+      }
+    }
+    return Search::None;
+  }
+
+  /// After Found: a shortest firing sequence from the initial marking into the accepting
+  /// component, then a cycle inside it through every acceptance set back to where it entered
+  /// (empty where that is a dead marking repeating itself), and the marking the cycle starts
+  /// from.
+  void lasso(std::vector<TransitionId>& prefix, std::vector<TransitionId>& cycle, StateId& at) const {
+    const std::uint32_t root = roots_.back().v;
+    auto inside = [&](std::uint32_t x) { return x >= root && !dead_[x]; };
+    std::uint32_t entry = kNone;
+    for (std::uint32_t v : starts_) {
+      if (inside(v)) entry = v;
+    }
+    if (entry == kNone) entry = walk(starts_, [](std::uint32_t) { return true; }, inside, prefix);
+    at = markingOf(entry);
+    // greedily to the nearest state meeting a set not met yet, then home
+    std::uint64_t need = all_ & ~a_.states[stateOf(entry)].accepting;
+    std::uint32_t from = entry;
+    while (need != 0) {
+      from = walk({from}, inside, [&](std::uint32_t x) { return (a_.states[stateOf(x)].accepting & need) != 0; }, cycle);
+      need &= ~a_.states[stateOf(from)].accepting;
+    }
+    walk({from}, inside, [&](std::uint32_t x) { return x == entry; }, cycle);
+  }
+
+ private:
+  struct Frame {
+    std::uint32_t v;       // the product state's depth-first number
+    std::uint64_t edge;    // the graph edge tried now (a dead marking: its one stutter step)
+    std::uint32_t next;    // the automaton successor tried next for it
+  };
+  struct Root {
+    std::uint32_t v;       // the depth-first number of a component's first state
+    std::uint64_t marks;   // the acceptance sets its states meet
+  };
+
+  std::uint64_t keyOf(StateId s, std::uint32_t state) const { return std::uint64_t{s} * q_ + state; }
+  StateId markingOf(std::uint32_t v) const { return static_cast<StateId>(key_of_[v] / q_); }
+  std::uint32_t stateOf(std::uint32_t v) const { return static_cast<std::uint32_t>(key_of_[v] % q_); }
+  // a dead marking has one step, to itself
+  std::uint64_t endOf(StateId s) const { return g_.outDegree(s) == 0 ? g_.first[s] + 1 : g_.first[s + 1]; }
+  StateId target(StateId s, std::uint64_t edge) const { return g_.outDegree(s) == 0 ? s : g_.succ[edge]; }
+
+  bool reads(StateId s, std::uint32_t state) const {
+    const auto& st = a_.states[state];
+    return std::all_of(st.atoms.begin(), st.atoms.end(), [&](std::uint32_t x) { return atom_[x][s] != 0; }) &&
+           std::none_of(st.not_atoms.begin(), st.not_atoms.end(), [&](std::uint32_t x) { return atom_[x][s] != 0; });
+  }
+
+  void visit(std::uint64_t key) {
+    const auto v = static_cast<std::uint32_t>(key_of_.size());
+    if ((v & 0xfff) == 0) {
+      const std::uint64_t bytes = index_.bytes() + key_of_.capacity() * 9 + (live_.capacity() + frames_.capacity() * 4) * 4;
+      stop_ = v >= limits_.max_states ? ExploreStop::MaxStates : passedLimit(limits_, bytes);
+    }
+    index_.insert(key, v);
+    key_of_.push_back(key);
+    dead_.push_back(false);
+    live_.push_back(v);
+    roots_.push_back({v, a_.states[key % q_].accepting});
+    frames_.push_back({v, g_.first[key / q_], 0});
+  }
+
+  /// Breadth first from `sources` (at least one step) through states where `allowed` holds to
+  /// the nearest one where `goal` holds; appends the transitions on the way and returns it.
+  template <class Allowed, class Goal>
+  std::uint32_t walk(const std::vector<std::uint32_t>& sources, Allowed allowed, Goal goal,
+                     std::vector<TransitionId>& out) const {
+    std::vector<std::uint32_t> parent(key_of_.size(), kNone);
+    std::vector<std::uint32_t> queue = sources;
+    auto step = [&](std::uint32_t x, auto visit) {
+      const StateId s = markingOf(x);
+      for (std::uint64_t e = g_.first[s]; e < endOf(s); ++e) {
+        for (std::uint32_t to : a_.states[stateOf(x)].next) {
+          const StateId w = target(s, e);
+          if (!reads(w, to)) continue;
+          const std::uint32_t y = index_.find(keyOf(w, to));
+          if (y != KeyIndex::kNone && !visit(y, e)) return;
+        }
+      }
+    };
+    std::uint32_t reached = kNone;
+    for (std::size_t i = 0; i < queue.size() && reached == kNone; ++i) {
+      step(queue[i], [&](std::uint32_t y, std::uint64_t) {
+        if (parent[y] != kNone || !allowed(y)) return true;
+        parent[y] = queue[i];
+        if (goal(y)) {
+          reached = y;
+          return false;
+        }
+        queue.push_back(y);
+        return true;
+      });
+    }
+    // back from where it arrived, each step's transition found again among its parent's edges
+    std::vector<TransitionId> way;
+    for (std::uint32_t z = reached;;) {
+      const std::uint32_t before = parent[z];
+      step(before, [&](std::uint32_t y, std::uint64_t e) {
+        if (y != z) return true;
+        if (g_.outDegree(markingOf(before)) != 0) way.push_back(g_.via[e]);
+        return false;
+      });
+      z = before;
+      if (std::find(sources.begin(), sources.end(), z) != sources.end()) break;
+    }
+    out.insert(out.end(), way.rbegin(), way.rend());
+    return reached;
+  }
+
+  const StateGraph& g_;
+  const Automaton& a_;
+  const std::vector<std::vector<std::uint8_t>>& atom_;
+  const ExploreOptions& limits_;
+  const std::size_t q_;
+  const std::uint64_t all_;
+  ExploreStop stop_ = ExploreStop::Done;
+  KeyIndex index_;
+  std::vector<std::uint64_t> key_of_;  // by depth-first number
+  std::vector<bool> dead_;             // its component is done
+  std::vector<std::uint32_t> live_;    // states of components not done, in visiting order
+  std::vector<Root> roots_;
+  std::vector<Frame> frames_;
+  std::vector<std::uint32_t> starts_;  // the initial product states
+};
 
 }  // namespace
 
@@ -327,9 +550,19 @@ QueryAnswer answerLtl(const Net& net, const StateGraph& g, const Formula& f, con
     for (StateId s = 0; s < g.size(); ++s) atom[k][s] = check.holds(*nnf.atoms[k], g.store->at(s));
   }
   out.technique = "EXPLICIT LTL_TABLEAU";
-  const Search found = nonEmpty(g, a, atom, limits, out.stop);
-  if (found == Search::Stopped) return out;
-  out.verdict = (found == Search::Found) == all ? Verdict::False : Verdict::True;
+  Product product(g, a, atom, limits);
+  const Product::Search found = product.search(out.stop);
+  if (found == Product::Search::Stopped) return out;
+  out.verdict = (found == Product::Search::Found) == all ? Verdict::False : Verdict::True;
+  if (found == Product::Search::Found) {
+    // the path that shows it: for A, one that breaks the formula; for E, one that keeps it
+    StateId at = 0;
+    product.lasso(out.path, out.cycle, at);
+    out.lasso = true;
+    out.marking.resize(g.store->layout().width());
+    g.store->layout().unpack(g.store->at(at), out.marking.data());
+    out.has_marking = true;
+  }
   return out;
 }
 

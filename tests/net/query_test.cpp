@@ -9,6 +9,7 @@
 #include "gdpn/core/diagnostics.h"
 #include "gdpn/net/builder.h"
 #include "support/conformance.h"
+#include "support/firing.h"
 
 namespace gdpn::net {
 namespace {
@@ -28,20 +29,12 @@ Formula parsed(const Net& net, const std::string& text) {
   return f ? *f : Formula{};
 }
 
-/// Fires `path` from the initial marking, checking each transition enabled on the way (by
-/// the query's own fireable atom); the marking reached, or nullopt.
+/// Fires `path` from the initial marking, checking each transition enabled on the way; the
+/// marking reached, or nullopt.
 std::optional<std::vector<std::int64_t>> replay(const Net& net, const std::vector<TransitionId>& path) {
-  std::vector<std::int64_t> m;
-  for (const PlaceSlot& ps : net.placeSlots()) m.push_back(ps.initial);
+  auto m = testing::initialMarking(net);
   for (TransitionId t : path) {
-    Formula fireable;
-    fireable.kind = FormulaKind::Fireable;
-    fireable.transitions = {t};
-    if (!holdsIn(net, fireable, m)) return std::nullopt;
-    for (const Term& term : net.termsOf(t)) {
-      if (term.kind == TermKind::Input) m[term.place_slot] -= term.weight;
-      if (term.kind == TermKind::Output) m[term.place_slot] += term.weight;
-    }
+    if (!testing::fire(net, t, m)) return std::nullopt;
   }
   return m;
 }

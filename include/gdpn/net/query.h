@@ -109,6 +109,11 @@ struct QueryAnswer {
   std::vector<TransitionId> path;
   std::vector<std::int64_t> marking;
   bool has_marking = false;
+  /// An LTL answer shown by an infinite path (for A, one breaking the formula; for E, one
+  /// keeping it): `path` leads to `marking`, from which `cycle` fires forever (empty: the
+  /// marking is dead and the path stays in it).
+  bool lasso = false;
+  std::vector<TransitionId> cycle;
   std::int64_t value = 0;    ///< Value: the bound asked for
   std::uint64_t states = 0;  ///< markings explored to answer
   std::string technique;     ///< in the contest's words: EXPLICIT, INITIAL_STATE, ...
