@@ -6,9 +6,11 @@
 
 #include <array>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 
+#include "gdpn/model/analysis.h"
 #include "gdpn/model/report.h"
 #include "gdpn/session/session.h"
 
@@ -212,6 +214,53 @@ class Model {
     return py::module_::import("json").attr("loads")(model::reportJson(model::makeReport(*sim_, outcome)));
   }
 
+  /// The untimed analysis: without `query`, everything `gdpn analyze --json` reports; with a
+  /// formula, its answer; with a list of them, their answers (as `gdpn analyze --query --json`).
+  py::object analyze(const py::object& query, std::uint64_t max_states, double max_memory_mib, double time_limit) {
+    const net::Net& net = session_->simulation().net();
+    net::ExploreOptions limits;
+    limits.max_states = max_states;
+    limits.max_bytes = static_cast<std::uint64_t>(max_memory_mib * 1024.0 * 1024.0);
+    auto loads = py::module_::import("json").attr("loads");
+    if (query.is_none()) {
+      model::AnalysisOptions options;
+      options.explore = limits;
+      options.dt = session_->simulation().model().settings.dt;
+      options.time_limit_s = time_limit;
+      py::gil_scoped_release unlocked;
+      const auto analysis = model::analyze(net, path_, options);
+      py::gil_scoped_acquire locked;
+      return loads(model::analysisJson(net, analysis));
+    }
+    const bool one = py::isinstance<py::str>(query);
+    const auto texts = one ? std::vector<std::string>{query.cast<std::string>()} : query.cast<std::vector<std::string>>();
+    std::vector<model::QueryResult> results;
+    std::vector<net::Formula> formulas;
+    for (std::size_t i = 0; i < texts.size(); ++i) {
+      net::QueryError error;
+      auto f = net::parseQuery(net, texts[i], error);
+      if (!f) {
+        core::Diagnostics diags;
+        diags.error({"query " + std::to_string(i + 1), 1, static_cast<int>(error.column)}, error.message);
+        raiseModelError(diags);
+      }
+      formulas.push_back(*f);
+      results.push_back({texts[i], std::move(*f), {}, {}});
+    }
+    if (time_limit > 0.0) {
+      limits.deadline = std::chrono::steady_clock::now() +
+                        std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(time_limit));
+    }
+    std::vector<net::QueryAnswer> answers;
+    {
+      py::gil_scoped_release unlocked;
+      answers = net::answerQueries(net, formulas, limits);
+    }
+    for (std::size_t i = 0; i < answers.size(); ++i) results[i].answer = std::move(answers[i]);
+    py::list out = loads(model::queriesJson(net, results))["queries"];
+    return one ? out[0] : py::object(out);
+  }
+
   [[nodiscard]] double time() const { return session_->simulation().kernel().now(); }
   [[nodiscard]] std::int64_t steps() const { return session_->simulation().kernel().steps(); }
   [[nodiscard]] std::uint64_t seed() const { return session_->seed(); }
@@ -305,6 +354,12 @@ class FireError(ValueError):
       .def_property_readonly("hit", &Model::hit, "the id of the breakpoint that ended the last run, or None")
       .def("marking", &Model::marking, py::arg("place"),
            "Tokens on a place: a count for a plain place, else {slot: count or [node names]}")
+      .def("analyze", &Model::analyze, py::arg("query") = py::none(), py::kw_only(),
+           py::arg("max_states") = 20'000'000, py::arg("max_memory_mib") = 0.0, py::arg("time_limit") = 0.0,
+           "The untimed net's analysis as data: without `query`, what `gdpn analyze --json` reports; with a "
+           "formula (docs/queries.md), its answer as a dict (answer, states, technique, and the path, cycle "
+           "and marking that show it); with a list of formulas, a list of answers. Raises gdpn.ModelError, "
+           "located by column, for a mistake in a formula; an answer a limit stops is 'unknown' with 'why'.")
       .def("trace", &Model::trace, "Every event so far, as dicts")
       .def("report", &Model::report, "Figures of the run so far")
       .def_property_readonly("time", &Model::time, "seconds simulated")

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <charconv>
 #include <chrono>
@@ -22,6 +23,7 @@
 #include "gdpn/model/model.h"
 #include "gdpn/model/report.h"
 #include "gdpn/model/simulation.h"
+#include "gdpn/model/witness.h"
 #include <nlohmann/json.hpp>
 
 #include "gdpn/net/analysis.h"
@@ -273,6 +275,7 @@ struct AnalyzeArgs {
   unsigned threads = 1;
   bool shortest_path = false;
   std::vector<std::string> queries;  // formulas, or files of them
+  std::string witness;               // where to write the first answer's witness
 };
 
 /// Reads the --query arguments: each is a file of formulas (one per line; blank lines and
@@ -387,6 +390,20 @@ int analyze(const AnalyzeArgs& a) {
     } else {
       model::printQueries(std::cout, *net, *queries);
     }
+    if (!a.witness.empty()) {
+      const auto shown = std::find_if(queries->begin(), queries->end(), [](const auto& q) { return q.answer.has_marking; });
+      std::string why;
+      if (shown == queries->end()) {
+        std::cerr << "error: --witness " << quoteArg(a.witness)
+                  << ": no answer here is shown by a firing sequence (an answer that rests on every reachable "
+                     "marking has none); nothing written\n";
+        return 1;
+      }
+      if (!gdpn::core::writeOutput(a.witness, model::witnessJson(*net, *shown, path), why)) {
+        std::cerr << a.witness << ": error: " << why << "\n";
+        return 1;
+      }
+    }
     return decided ? 0 : 3;
   }
   // a progress line on a terminal: states, states per second, memory (the invariants: rows)
@@ -487,6 +504,7 @@ struct RunArgs {
   double script_timeout = 0.0;
   std::string input;
   std::vector<std::string> breaks;
+  std::string replay;  // a witness file to play
   bool quiet = false;
 };
 
@@ -509,6 +527,34 @@ std::optional<gdpn::session::Breakpoint> parseBreakpoint(const std::string& spec
     return std::nullopt;
   }
   return Breakpoint::marking(spec.substr(0, op), *how, value);
+}
+
+/// Says how far a replay got: every firing started and the witness' marking reached (0), or
+/// where it stopped and why, or how the marking differs (1).
+int reportReplay(const model::Witness& w, const model::Simulation& sim, const std::string& file) {
+  const std::size_t total = w.path.size() + w.cycle.size();
+  const std::string loop = w.lasso ? " (its cycle once)" : "";
+  const std::string all = total == 1 ? "the 1 firing" : "all " + std::to_string(total) + " firings";
+  if (sim.replayed() < total) {
+    std::cerr << file << ": error: replay stopped after " << sim.replayed() << " of " << total << " firings" << loop
+              << " at t = " << sim.kernel().now() << " s: "
+              << (sim.replayBlocked().empty() ? "the run ended first" : sim.replayBlocked()) << "\n";
+    return 1;
+  }
+  if (sim.kernel().occurringCount() != 0) {
+    std::cerr << file << ": error: replay: " << all << " started" << loop << ", but "
+              << sim.kernel().occurringCount() << " still occur at t = " << sim.kernel().now()
+              << " s (a later --until lets them complete)\n";
+    return 1;
+  }
+  if (const std::string differs = model::witnessMismatch(sim.net(), sim.kernel(), w); !differs.empty()) {
+    std::cerr << file << ": error: replay: " << all << " done" << loop
+              << ", but the marking is not the witness': " << differs << "\n";
+    return 1;
+  }
+  std::cerr << "replay: " << all << " done" << loop << " by t = " << sim.kernel().now()
+            << " s; the marking is the witness'" << (w.query.empty() ? "" : " (" + w.query + ")") << "\n";
+  return 0;
 }
 
 int run(const RunArgs& a) {
@@ -534,6 +580,16 @@ int run(const RunArgs& a) {
     if (!events) return 1;
     sim->setInput(std::move(*events));
   }
+  std::optional<model::Witness> witness;
+  if (!a.replay.empty()) {
+    Diagnostics diags;
+    witness = model::loadWitness(sim->simulation().net(), a.replay, diags);
+    diags.print(std::cerr);
+    if (!witness) return 1;
+    auto sequence = witness->path;
+    sequence.insert(sequence.end(), witness->cycle.begin(), witness->cycle.end());
+    sim->simulation().replay(std::move(sequence));
+  }
   // the trace is written beside its file and renamed into place when the run ends
   std::unique_ptr<gdpn::core::OutputFile> trace;
   std::string why;
@@ -557,6 +613,8 @@ int run(const RunArgs& a) {
     return 1;
   }
   if (outcome.reason == model::StopReason::Breakpoint) std::cerr << "stopped at " << outcome.message << "\n";
+  int replay_failed = 0;
+  if (witness) replay_failed = reportReplay(*witness, sim->simulation(), a.replay);
   // the report only when it is shown or written (it works out the cycle bounds)
   if (!a.quiet || !a.report.empty()) {
     const auto report = model::makeReport(sim->simulation(), outcome);
@@ -575,7 +633,7 @@ int run(const RunArgs& a) {
       if (!outcome.message.empty()) std::cerr << outcome.message << '\n';
       return 130;
     default:
-      return 0;
+      return replay_failed;
   }
 }
 
@@ -655,6 +713,9 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--break", run_args.breaks,
                       "stop the run at the end of the step where start:TRANSITION or complete:TRANSITION "
                       "happens, PLACE>=N holds (or <, <=, ==, !=, >), or when:PYTHON is true (repeatable)");
+  run_cmd->add_option("--replay", run_args.replay,
+                      "play the firing sequence of a witness (gdpn analyze --witness): only its transitions "
+                      "start, in its order, each as soon as it can");
   run_cmd->add_flag("--quiet,-q", run_args.quiet, "print no summary and no progress");
 
   AnalyzeArgs analyze_args;
@@ -677,6 +738,9 @@ int main(int argc, char** argv) {
   analyze_cmd->add_option("--query", analyze_args.queries,
                           "answer this formula instead (repeatable), or each line of this file: 'EF (buffer >= 3 and "
                           "fireable(consume))', 'AG not deadlock' (docs/queries.md)");
+  analyze_cmd->add_option("--witness", analyze_args.witness,
+                          "with --query: write the firing sequence that shows the first answer shown by one "
+                          "(and its marking) as JSON, for gdpn run --replay");
   analyze_cmd->add_flag("--shortest-path", analyze_args.shortest_path,
                         "give a shortest path to a deadlock (a second pass over the states)");
   analyze_cmd->add_flag("--progress", analyze_args.progress,

@@ -276,3 +276,26 @@ pages:
     model = gdpn.load(str(path))
     with pytest.raises(gdpn.PhysicsError, match="body 'box' ran away"):
         model.run(until=1)
+
+
+def test_analyze_answers_queries_as_data_with_their_witnesses(source):
+    model = gdpn.load(str(source / "examples/basics/figure31"))
+    # figure 3.1: T1 then T2 end in a dead marking
+    answer = model.analyze("EF deadlock")
+    assert answer["answer"] == "true"
+    assert answer["path"] == ["main/T1", "main/T2"]
+    assert answer["marking"] == {"main/P2": 1, "main/P4": 1}
+    answers = model.analyze(["AG P1 + P3 + P4 <= 1", "A (G F fireable(T1))", "bound(P3)"])
+    assert [a["answer"] for a in answers] == ["true", "false", 1]
+    assert answers[1]["cycle"] == []  # the counterexample stays in the dead marking
+    assert "path" not in answers[0]  # an invariant rests on every marking: no path shows it
+    # the whole analysis without a query
+    whole = model.analyze()
+    assert whole["states"] == 3 and whole["deadlock_path"] == ["main/T1", "main/T2"]
+    # a mistake is located by its column
+    with pytest.raises(gdpn.ModelError) as e:
+        model.analyze(["EF deadlock", "EF (P1 >= 1"])
+    assert e.value.file == "query 2" and e.value.line == 1 and e.value.column == 12
+    # a limit leaves the answer unknown, and says why
+    limited = model.analyze("EF P4 = 1", max_states=1)
+    assert limited["answer"] == "unknown" and "--max-states" in limited["why"]

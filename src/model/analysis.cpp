@@ -170,11 +170,6 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
   return j.dump(2) + "\n";
 }
 
-namespace {
-
-/// Writes `names` after text that ends at `column`, a space before each, wrapping lines at
-/// 100 columns with `indent` spaces before the continuation; past `most` names, how many more.
-/// The places that hold tokens in `marking` (per place slot) and how many, in place order.
 std::vector<std::pair<std::string_view, std::int64_t>> markedPlaces(const net::Net& net,
                                                                      const std::vector<std::int64_t>& marking) {
   std::vector<std::pair<std::string_view, std::int64_t>> out;
@@ -186,6 +181,10 @@ std::vector<std::pair<std::string_view, std::int64_t>> markedPlaces(const net::N
   return out;
 }
 
+namespace {
+
+/// Writes `names` after text that ends at `column`, a space before each, wrapping lines at
+/// 100 columns with `indent` spaces before the continuation; past `most` names, how many more.
 void nameList(std::ostream& out, std::size_t column, const std::vector<std::string_view>& names, std::size_t indent,
               std::size_t most = std::numeric_limits<std::size_t>::max()) {
   constexpr std::size_t kWidth = 100;
@@ -375,35 +374,65 @@ void printQueries(std::ostream& out, const net::Net& net, const std::vector<Quer
     out << "\n" << what;
     nameList(out, what.size(), std::vector<std::string_view>(marked.begin(), marked.end()), 4);
     out << "\n";
+    if (!a.lasso) continue;
+    if (a.cycle.empty()) {
+      out << "  and stays there forever: the marking is dead\n";
+      continue;
+    }
+    const std::string loop = "  then forever, " + std::to_string(a.cycle.size()) + (a.cycle.size() == 1 ? " firing:" : " firings:");
+    out << loop;
+    std::vector<std::string_view> cycle;
+    for (auto t : a.cycle) cycle.push_back(net.transitions()[t].name);
+    nameList(out, loop.size(), cycle, 4);
+    out << "\n";
   }
 }
 
-std::string queriesJson(const net::Net& net, const std::vector<QueryResult>& results) {
+namespace {
+
+/// One answer as JSON: the query, the answer, and the firing sequence and marking that show it.
+nlohmann::ordered_json queryObject(const net::Net& net, const QueryResult& r) {
   using nlohmann::ordered_json;
-  ordered_json j = ordered_json::array();
-  for (const auto& [text, formula, a, id] : results) {
-    ordered_json q;
-    if (!id.empty()) q["id"] = id;
-    q["query"] = text;
-    q["formula"] = net::formulaText(net, formula);
-    if (a.verdict == net::Verdict::Value) {
-      q["answer"] = a.value;
-    } else {
-      q["answer"] = verdictWord(a);
-    }
-    if (a.verdict == net::Verdict::Unknown) q["why"] = a.unsupported.empty() ? net::stopReason(a.stop) : a.unsupported;
-    q["states"] = a.states;
-    q["technique"] = a.technique;
-    if (a.has_marking) {
-      q["path"] = ordered_json::array();
-      for (auto t : a.path) q["path"].push_back(net.transitions()[t].name);
-      ordered_json m = ordered_json::object();
-      for (const auto& [place, n] : markedPlaces(net, a.marking)) m[std::string(place)] = n;
-      q["marking"] = m;
-    }
-    j.push_back(q);
+  const auto& [text, formula, a, id] = r;
+  ordered_json q;
+  if (!id.empty()) q["id"] = id;
+  q["query"] = text;
+  q["formula"] = net::formulaText(net, formula);
+  if (a.verdict == net::Verdict::Value) {
+    q["answer"] = a.value;
+  } else {
+    q["answer"] = verdictWord(a);
   }
-  return ordered_json{{"queries", j}}.dump(2) + "\n";
+  if (a.verdict == net::Verdict::Unknown) q["why"] = a.unsupported.empty() ? net::stopReason(a.stop) : a.unsupported;
+  q["states"] = a.states;
+  q["technique"] = a.technique;
+  if (a.has_marking) {
+    auto names = [&](const std::vector<net::TransitionId>& ts) {
+      ordered_json list = ordered_json::array();
+      for (auto t : ts) list.push_back(net.transitions()[t].name);
+      return list;
+    };
+    q["path"] = names(a.path);
+    if (a.lasso) q["cycle"] = names(a.cycle);
+    ordered_json m = ordered_json::object();
+    for (const auto& [place, n] : markedPlaces(net, a.marking)) m[std::string(place)] = n;
+    q["marking"] = m;
+  }
+  return q;
+}
+
+}  // namespace
+
+std::string queriesJson(const net::Net& net, const std::vector<QueryResult>& results) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::array();
+  for (const auto& r : results) j.push_back(queryObject(net, r));
+  return nlohmann::ordered_json{{"queries", j}}.dump(2) + "\n";
+}
+
+std::string witnessJson(const net::Net& net, const QueryResult& result, const std::string& model_file) {
+  nlohmann::ordered_json j{{"model", model_file}};
+  j.update(queryObject(net, result));
+  return j.dump(2) + "\n";
 }
 
 }  // namespace gdpn::model

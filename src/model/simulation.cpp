@@ -420,7 +420,32 @@ void Simulation::start() {
   sense(true);
   readConditions();
   if (engine_ && engine_->halted() && engine_->halt() != script::Halt::Stop) return;
-  kernel_->start();
+  firePhase();
+}
+
+void Simulation::replay(std::vector<net::TransitionId> sequence) {
+  replay_ = std::move(sequence);
+  replayed_ = 0;
+  replay_blocked_.clear();
+}
+
+void Simulation::firePhase() {
+  if (!replay_) {
+    kernel_->fireEnabled();
+    return;
+  }
+  replay_blocked_.clear();
+  while (replayed_ < replay_->size()) {
+    replay_blocked_ = kernel_->fire((*replay_)[replayed_]);
+    if (!replay_blocked_.empty()) break;
+    ++replayed_;
+  }
+}
+
+bool Simulation::dead() const {
+  const bool net_dead = replay_ ? kernel_->occurringCount() == 0 && (replayed_ == replay_->size() || !replay_blocked_.empty())
+                                : kernel_->dead();
+  return net_dead && (!physics_ || physics_->awakeCount() == 0) && (!hub_ || !hub_->mayChange());
 }
 
 void Simulation::step() {
@@ -436,7 +461,7 @@ void Simulation::step() {
   kernel_->completeOccurrences();
   // a script that failed stops the run at the end of its phase
   if (engine_ && engine_->halted() && engine_->halt() != script::Halt::Stop) return;
-  kernel_->fireEnabled();
+  firePhase();
 }
 
 void Simulation::stepPlant() {
@@ -479,7 +504,7 @@ RunOutcome Simulation::run(const RunLimits& limits, const ProgressFn& progress,
       break;
     }
     // a dead net ends the run unless the plant is still moving or a sensor may yet change
-    if (kernel_->dead() && (!physics_ || physics_->awakeCount() == 0) && (!hub_ || !hub_->mayChange())) {
+    if (dead()) {
       outcome.reason = StopReason::Dead;
       break;
     }

@@ -296,6 +296,63 @@ TEST(CliAnalyze, APnmlNetAndAModelFile) {
   EXPECT_NE(r.out.find(" states/s, "), std::string::npos) << r.out;  // the progress line
 }
 
+TEST(CliAnalyze, AWitnessWrittenByAnalyzeIsReplayedByRunAndABadOneIsLocated) {
+  const gdpn::testing::ScratchFolder dir("gdpn_witness");
+  // a reachability witness: T1 then T2 reach P4
+  const std::string w = dir.file("w.json");
+  auto r = gdpn("analyze examples/basics/figure31 --query 'EF P4 = 1' --witness " + w);
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(gdpn::testing::fileBytes(w));
+  EXPECT_EQ(j["path"], nlohmann::json({"main/T1", "main/T2"}));
+  EXPECT_EQ(j["marking"], nlohmann::json({{"main/P2", 1}, {"main/P4", 1}}));
+  r = gdpn("run examples/basics/figure31 --replay " + w + " --quiet");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("replay: all 2 firings done by t = 2 s; the marking is the witness' (EF P4 = 1)"),
+            std::string::npos)
+      << r.out;
+  // an LTL counterexample: a lasso, its cycle played once and back at its marking
+  const std::string ring = dir.file("ring.gdpn.yaml");
+  std::ofstream(ring) << "gdpn: 1\npages:\n  main:\n    places:\n      a: {tokens: 1}\n      b: {}\n      c: {}\n"
+                         "    transitions:\n      go: {}\n      back: {}\n      leave: {}\n"
+                         "    arcs: [a -> go, go -> b, b -> back, back -> a, a -> leave, leave -> c]\n";
+  r = gdpn("analyze " + ring + " --query 'A (F c = 1)' --witness " + w);
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("  false ("), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  then forever, 2 firings: main/go main/back\n"), std::string::npos) << r.out;
+  EXPECT_EQ(nlohmann::json::parse(gdpn::testing::fileBytes(w))["cycle"], nlohmann::json({"main/go", "main/back"}));
+  r = gdpn("run " + ring + " --replay " + w + " --quiet");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("replay: all 2 firings done (its cycle once)"), std::string::npos) << r.out;
+  // what cannot be replayed says why, where
+  const std::string bad = dir.file("bad.json");
+  std::ofstream(bad) << "{\"path\": [\"main/T1\", \"main/T9\"]}";
+  r = gdpn("run examples/basics/figure31 --replay " + bad + " --quiet");
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find(bad + ":1:22: error: the net has no transition 'main/T9'"), std::string::npos) << r.out;
+  std::ofstream(bad) << "{\"path\": [\n \"main/T1\",, ]}";
+  r = gdpn("run examples/basics/figure31 --replay " + bad + " --quiet");
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find(bad + ":2:12: error: not JSON: "), std::string::npos) << r.out;
+  std::ofstream(bad) << "{\"path\": [\"main/T2\"]}";
+  r = gdpn("run examples/basics/figure31 --replay " + bad + " --quiet");
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("error: replay stopped after 0 of 1 firings at t = 0 s: 'main/T2' is not enabled"),
+            std::string::npos)
+      << r.out;
+  std::ofstream(bad) << "{\"path\": [\"main/T1\"], \"marking\": {\"main/P4\": 1}}";
+  r = gdpn("run examples/basics/figure31 --replay " + bad + " --quiet");
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("the marking is not the witness': 'main/P3' holds 1, the witness says 0; 'main/P4' holds 0, "
+                       "the witness says 1"),
+            std::string::npos)
+      << r.out;
+  // no answer shown by a path: nothing written, and said
+  r = gdpn("analyze examples/basics/figure31 --query 'AG P1 + P3 + P4 <= 1' --witness " + dir.file("none.json"));
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("no answer here is shown by a firing sequence"), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("none.json")));
+}
+
 TEST(CliAnalyze, QueriesAreAnsweredWithTheirWitnessesAndMistakesLocated) {
   // the example of figure 3.1: T1 then T2 ends in a dead marking
   auto r = gdpn("analyze examples/basics/figure31 --query 'EF deadlock' --query 'AG not fireable(T1)'");

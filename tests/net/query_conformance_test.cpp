@@ -154,6 +154,7 @@ TEST_P(ContestFormulas, EveryAnswerIsTheOracles) {
   std::vector<Formula> formulas;
   for (const auto& p : asked) formulas.push_back(p.formula);
   const auto answers = answerQueries(*net, formulas);
+  std::size_t lassos = 0;
   for (std::size_t i = 0; i < asked.size(); ++i) {
     const auto at = expected.find(asked[i].id);
     ASSERT_NE(at, expected.end()) << asked[i].id;
@@ -161,10 +162,15 @@ TEST_P(ContestFormulas, EveryAnswerIsTheOracles) {
         << asked[i].id << (ltl[i] ? " (LTL)" : "") << ": " << formulaText(*net, asked[i].formula) << " "
         << answers[i].unsupported;
     if (answers[i].lasso) {
-      const Formula& f = asked[i].formula;
-      EXPECT_EQ(holdsOnLasso(*net, f.operands[0], answers[i]), f.kind == FormulaKind::Exists) << asked[i].id;
+      // under its negations, A p or E p: the lasso breaks p for A, keeps it for E
+      const Formula* f = &asked[i].formula;
+      while (f->kind == FormulaKind::Not) f = &f->operands[0];
+      EXPECT_EQ(holdsOnLasso(*net, f->operands[0], answers[i]), f->kind == FormulaKind::Exists) << asked[i].id;
+      ++lassos;
     }
   }
+  // most of the contest's LTL formulas fail on these nets: their counterexamples were checked
+  EXPECT_GE(lassos, 8u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Nets, ContestFormulas,

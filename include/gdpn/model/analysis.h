@@ -75,5 +75,11 @@ struct QueryResult {
 void printQueries(std::ostream& out, const net::Net& net, const std::vector<QueryResult>& results);
 /// The answers as pretty-printed JSON text.
 std::string queriesJson(const net::Net& net, const std::vector<QueryResult>& results);
+/// A witness file: the answer of `result` as queriesJson gives it (with the firing sequence
+/// that shows it, a lasso's cycle and the marking reached), and the model it is for.
+std::string witnessJson(const net::Net& net, const QueryResult& result, const std::string& model_file);
+/// The places that hold tokens in `marking` (per place slot) and how many, in place order.
+std::vector<std::pair<std::string_view, std::int64_t>> markedPlaces(const net::Net& net,
+                                                                     const std::vector<std::int64_t>& marking);
 
 }  // namespace gdpn::model

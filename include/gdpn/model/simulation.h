@@ -119,6 +119,16 @@ class Simulation {
   std::vector<std::pair<std::string, std::string>> modelFigures(std::string& error) {
     return engine_ ? engine_->summary(error) : std::vector<std::pair<std::string, std::string>>{};
   }
+  /// Replays a firing sequence (one the analysis found): from now on the firing phase starts
+  /// only the transitions of `sequence`, in its order, each as soon as it may start, and
+  /// nothing else. A run ends as dead once the next one cannot start, nothing occurs and the
+  /// plant is still (or the sequence is done).
+  void replay(std::vector<net::TransitionId> sequence);
+  /// How many transitions of the replayed sequence have started.
+  [[nodiscard]] std::size_t replayed() const { return replayed_; }
+  /// Why the next transition of the replayed sequence could not start at the last firing phase
+  /// ("" when it started, or when the sequence is done or none is replayed).
+  [[nodiscard]] const std::string& replayBlocked() const { return replay_blocked_; }
   /// Asks `check` after every step that run() takes; true ends the run there
   /// (StopReason::Breakpoint). An empty function asks nothing.
   void setStopCheck(std::function<bool()> check) { stop_check_ = std::move(check); }
@@ -133,6 +143,13 @@ class Simulation {
 
  private:
   Simulation() = default;
+  // phase 4: the enabled transitions start, or, replaying, the sequence's next ones
+  void firePhase();
+  // nothing more can happen without outside input
+  [[nodiscard]] bool dead() const;
+  std::optional<std::vector<net::TransitionId>> replay_;
+  std::size_t replayed_ = 0;
+  std::string replay_blocked_;
   std::function<void()> step_hook_;
   std::function<bool()> stop_check_;
   Model model_;
