@@ -8,33 +8,13 @@
 #include <string>
 #include <vector>
 
-#include "gdpn/net/builder.h"
 #include "gdpn/core/diagnostics.h"
 #include "gdpn/net/query.h"
+#include "small_net.h"
 
-namespace {
-
-// three places, two transitions and a page path: a cycle of one token, and a producer
-std::shared_ptr<const gdpn::net::Net> smallNet() {
-  gdpn::net::NetBuilder b;
-  const auto idle = b.addPlace("cell/idle");
-  const auto busy = b.addPlace("cell/busy");
-  const auto out = b.addPlace("U");
-  b.setSlot(idle, gdpn::net::kDefaultSlot, gdpn::net::SlotKind::Control, gdpn::net::kUnbounded, 1);
-  const auto start = b.addTransition("cell/start");
-  const auto done = b.addTransition("cell/done");
-  b.addInput(idle, start);
-  b.addOutput(start, busy);
-  b.addInput(busy, done);
-  b.addOutput(done, idle);
-  b.addOutput(done, out);
-  return b.freeze();
-}
-
-}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const auto net = smallNet();
+  static const auto net = gdpn::fuzz::smallNet();
   const std::string text(reinterpret_cast<const char*>(data), size);
   std::vector<gdpn::net::Formula> formulas;
   gdpn::net::QueryError error;

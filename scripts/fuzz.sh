@@ -40,3 +40,4 @@ fuzz pnml_reader_fuzz 65536 '*.pnml' tests/data/pnml tests/data/conformance
 fuzz mesh_loader_fuzz 32768 "$meshes" tests/data/meshes tests/data/bad/files tests/data/physics tests/data/good/parts
 fuzz input_events_fuzz 4096 '*.input.yaml' tests/data/input
 fuzz query_parser_fuzz 8192 '*.query *.xml' tests/data/queries
+fuzz witness_fuzz 4096 '*.json' tests/data/witnesses

@@ -38,6 +38,12 @@ std::optional<Witness> loadWitness(const net::Net& net, const std::string& file,
     if (const auto colon = why.find(": ", why.find("parse error")); colon != std::string::npos) why = why.substr(colon + 2);
     diags.error(locationOf(file, *text, e.byte == 0 ? 0 : e.byte - 1), "not JSON: " + why);
     return std::nullopt;
+  } catch (const nlohmann::json::exception& e) {
+    // a number past what a double holds, and the like: no place in the file is known
+    std::string why = e.what();
+    if (const auto bracket = why.find("] "); bracket != std::string::npos) why = why.substr(bracket + 2);
+    diags.error({file, 0, 0}, "not JSON gdpn can read: " + why);
+    return std::nullopt;
   }
   // a name's place in the file: its first quoted occurrence after `key`
   auto where = [&](const std::string& key, const std::string& name) {
