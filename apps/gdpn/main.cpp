@@ -276,6 +276,7 @@ struct AnalyzeArgs {
   bool shortest_path = false;
   std::vector<std::string> queries;  // formulas, or files of them
   std::string witness;               // where to write the first answer's witness
+  bool reduction = true;             // stubborn sets in the searches on the fly
 };
 
 /// Reads the --query arguments: each is a file of formulas (one per line; blank lines and
@@ -367,6 +368,7 @@ int analyze(const AnalyzeArgs& a) {
   options.explore.max_bytes = static_cast<std::uint64_t>(a.max_memory_mib * 1024.0 * 1024.0);
   options.explore.threads = a.threads;
   options.explore.shortest_path = a.shortest_path;
+  options.explore.reduction = a.reduction;
   options.time_limit_s = a.time_limit_s;
   if (!a.queries.empty()) {
     // only the questions asked, each answered as soon as a search decides it
@@ -741,6 +743,8 @@ int main(int argc, char** argv) {
   analyze_cmd->add_option("--witness", analyze_args.witness,
                           "with --query: write the firing sequence that shows the first answer shown by one "
                           "(and its marking) as JSON, for gdpn run --replay");
+  analyze_cmd->add_flag("!--no-reduction", analyze_args.reduction,
+                        "with --query: search reachability without stubborn sets (every enabled transition fires)");
   analyze_cmd->add_flag("--shortest-path", analyze_args.shortest_path,
                         "give a shortest path to a deadlock (a second pass over the states)");
   analyze_cmd->add_flag("--progress", analyze_args.progress,

@@ -9,6 +9,7 @@
 
 #include "detail/query_graph.h"
 #include "detail/state_check.h"
+#include "detail/stubborn.h"
 
 namespace gdpn::net {
 namespace {
@@ -39,6 +40,9 @@ Reach reach(const Net& net, const Formula& target, const ExploreOptions& limits)
     return out;
   }
   Store& store = states.store();
+  std::optional<Stubborn> stubborn;
+  if (limits.reduction) stubborn.emplace(net, store.layout());
+  std::vector<TransitionId> chosen;
   std::vector<StateId> parent{0};
   std::vector<TransitionId> via{0};
   auto found = [&](StateId s) {
@@ -56,14 +60,21 @@ Reach reach(const Net& net, const Formula& target, const ExploreOptions& limits)
   for (StateId s = 0; s < store.size() && !out.found && out.stop == ExploreStop::Done; ++s) {
     if ((s & 0xfff) == 0) out.stop = passedLimit(limits, store.bytes() + parent.capacity() * 8);
     if (out.stop != ExploreStop::Done) break;
-    const bool fits = states.successors(s, [&](TransitionId t, StateId w, bool added) {
+    auto each = [&](TransitionId t, StateId w, bool added) {
       if (!added) return true;
       parent.push_back(s);
       via.push_back(t);
       if (found(w)) return false;
       if (store.size() > std::min<std::uint64_t>(limits.max_states, 0xfffffff0u)) out.stop = ExploreStop::MaxStates;
       return out.stop == ExploreStop::Done;
-    });
+    };
+    bool fits = true;
+    if (stubborn) {
+      stubborn->select(target, store.at(s), states.check(), chosen);
+      fits = states.fire(s, chosen, each);
+    } else {
+      fits = states.successors(s, each);
+    }
     if (!fits) out.stop = ExploreStop::Overflow;
   }
   out.states = store.size();
@@ -116,7 +127,7 @@ QueryAnswer onTheFly(const Net& net, const Formula& f, const ExploreOptions& lim
   // EF p: a marking where p holds; AG p: none where it fails
   const Reach r = reach(net, ef ? p : negation(p), limits);
   a.states = r.states;
-  a.technique = "EXPLICIT BREADTH_FIRST_SEARCH";
+  a.technique = limits.reduction ? "EXPLICIT BREADTH_FIRST_SEARCH STUBBORN_SETS" : "EXPLICIT BREADTH_FIRST_SEARCH";
   if (r.found) {
     a.verdict = ef ? Verdict::True : Verdict::False;
     a.path = r.path;
@@ -148,8 +159,10 @@ std::vector<QueryAnswer> answerQueries(const Net& net, const std::vector<Formula
     ++searches;
     whole = whole || !reachability(x);
   }
+  // with stubborn sets, a reachability search on the fly usually sees a small part of the
+  // graph: the graph is stored only when a formula needs it
   std::optional<StateGraph> graph;
-  if (whole || searches >= 2) graph = buildGraph(net, limits);
+  if (whole || (searches >= 2 && !limits.reduction)) graph = buildGraph(net, limits);
   std::vector<QueryAnswer> out;
   for (const Formula& f : formulas) {
     bool odd = false;

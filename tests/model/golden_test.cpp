@@ -361,7 +361,8 @@ TEST(CliAnalyze, QueriesAreAnsweredWithTheirWitnessesAndMistakesLocated) {
                        "  shown by the marking after 2 firings: main/T1 main/T2\n  tokens there:"),
             std::string::npos)
       << r.out;
-  EXPECT_NE(r.out.find("query 2: AG not fireable(main/T1)\n  false (3 markings explored)\n"
+  // each searched on its own (with stubborn sets no graph is stored): the initial marking decides it
+  EXPECT_NE(r.out.find("query 2: AG not fireable(main/T1)\n  false (1 marking explored)\n"
                        "  shown by the initial marking\n"),
             std::string::npos)
       << r.out;

@@ -206,11 +206,16 @@ TEST(QueryAnswers, ReachabilityAgreesWithTheWholeStateSpaceAndEveryWitnessReplay
     };
     const Formula dead = parsed(*net, "deadlock");
     const QueryAnswer d = check("EF deadlock", space.deadlock ? Verdict::True : Verdict::False, &dead);
+    ExploreOptions unreduced;
+    unreduced.reduction = false;
+    const QueryAnswer full = answerQuery(*net, parsed(*net, "EF deadlock"), unreduced);
+    EXPECT_EQ(full.verdict, d.verdict);
     if (space.deadlock) {
-      // breadth first: as short as the analysis's shortest path
-      EXPECT_EQ(d.path.size(), space.deadlock_path.size());
+      // breadth first over every transition: as short as the analysis's shortest path
+      EXPECT_EQ(full.path.size(), space.deadlock_path.size());
     } else {
-      EXPECT_EQ(d.states, space.states);  // every marking looked at
+      EXPECT_EQ(full.states, space.states);  // every marking looked at
+      EXPECT_LE(d.states, full.states);      // the stubborn sets' markings are some of them
     }
     check("AG not deadlock", space.deadlock ? Verdict::False : Verdict::True, &dead);
     // each place's bound: reached, never passed
@@ -384,6 +389,64 @@ TEST(QueryAnswers, AnUnboundedPlaceIsSearchedByItsCounts) {
   ExploreOptions small;
   small.max_states = 100;
   EXPECT_EQ(answerQuery(*net, parsed(*net, "AG p < 1000"), small).verdict, Verdict::Unknown);
+}
+
+}  // namespace
+}  // namespace gdpn::net
+
+namespace gdpn::net {
+namespace {
+
+/// `rings` independent rings of `length` places, one token each at its place 0: length^rings
+/// reachable markings, every transition independent of the other rings'.
+std::shared_ptr<const Net> rings(int count, int length) {
+  NetBuilder b;
+  for (int r = 0; r < count; ++r) {
+    std::vector<PlaceId> ps;
+    for (int i = 0; i < length; ++i) ps.push_back(b.addPlace("r" + std::to_string(r) + "/p" + std::to_string(i)));
+    b.setSlot(ps[0], kDefaultSlot, SlotKind::Control, kUnbounded, 1);
+    for (int i = 0; i < length; ++i) {
+      const auto t = b.addTransition("r" + std::to_string(r) + "/t" + std::to_string(i));
+      b.addInput(ps[static_cast<std::size_t>(i)], t);
+      b.addOutput(t, ps[static_cast<std::size_t>((i + 1) % length)]);
+    }
+  }
+  return b.freeze();
+}
+
+TEST(QueryAnswers, StubbornSetsFindAWitnessNineStepsDeepAmongTenMillionMarkingsFromAFewStates) {
+  const auto net = rings(7, 10);  // 10^7 markings
+  // the token of ring 0 at its last place: nine firings of ring 0, the other rings left alone
+  QueryAnswer a = answerQuery(*net, parsed(*net, "EF r0/p9 = 1"));
+  EXPECT_EQ(a.verdict, Verdict::True);
+  EXPECT_EQ(a.path.size(), 9u);
+  EXPECT_LE(a.states, 10u);
+  EXPECT_NE(a.technique.find("STUBBORN_SETS"), std::string::npos);
+  const auto reached = replay(*net, a.path);
+  ASSERT_TRUE(reached);
+  EXPECT_EQ((*reached)[9], 1);
+  // never two tokens in one ring: refuted after ring 0's ten markings, not 10^7
+  a = answerQuery(*net, parsed(*net, "EF (r0/p0 = 1 and r0/p5 = 1)"));
+  EXPECT_EQ(a.verdict, Verdict::False);
+  EXPECT_LE(a.states, 10u);
+  a = answerQuery(*net, parsed(*net, "AG r3/p0 + r3/p1 + r3/p2 + r3/p3 + r3/p4 + r3/p5 + r3/p6 + r3/p7 + r3/p8 + r3/p9 = 1"));
+  EXPECT_EQ(a.verdict, Verdict::True);
+  EXPECT_LE(a.states, 10u);
+  // a deadlock: none, and said after few markings (each ring cycles by itself)
+  a = answerQuery(*net, parsed(*net, "EF deadlock"));
+  EXPECT_EQ(a.verdict, Verdict::False);
+  EXPECT_LE(a.states, 10u);
+  // without the reduction, the same answers from many more markings (a smaller net: 10^4)
+  const auto small = rings(4, 10);
+  ExploreOptions full;
+  full.reduction = false;
+  for (const char* text : {"EF (r0/p0 = 1 and r0/p5 = 1)", "EF deadlock", "EF (r0/p9 = 1 and r3/p9 = 1)"}) {
+    SCOPED_TRACE(text);
+    const QueryAnswer reduced = answerQuery(*small, parsed(*small, text));
+    const QueryAnswer all = answerQuery(*small, parsed(*small, text), full);
+    EXPECT_EQ(reduced.verdict, all.verdict);
+    EXPECT_LT(reduced.states * 10, all.states) << reduced.states << " against " << all.states;
+  }
 }
 
 }  // namespace

@@ -41,6 +41,10 @@ struct ExploreOptions {
   /// The net's invariants when already computed (their bounds size the markings); when
   /// empty they are computed again, under a small candidate limit.
   const Invariants* invariants = nullptr;
+  /// Queries: search reachability (EF, AG, deadlock) on the fly with stubborn sets, a
+  /// partial-order reduction that fires only some of the enabled transitions where the
+  /// answer cannot depend on the others.
+  bool reduction = true;
   /// Give a shortest firing sequence to a dead marking: a breadth-first pass over the states
   /// after the search (one thread: time and 12 bytes per state). Without it, one thread gives
   /// the path its search walked to the first dead marking, cut short wherever one firing

@@ -120,17 +120,18 @@ struct QueryAnswer {
 };
 
 /// Answers `f` on the reachable markings of `net`, under `limits` (max_states, max_bytes,
-/// deadline). A state formula: at the initial marking. Reachability (EF or AG of a state
-/// formula, and their negations): by a breadth-first search that stops at the first marking
-/// deciding it, with its shortest path. A bound, and other CTL formulas: on the whole
-/// reachability graph, CTL by fixed points (paths are maximal: a dead marking ends them).
-/// LTL formulas are Unknown for now, saying so.
+/// deadline, reduction). A state formula: at the initial marking. Reachability (EF or AG of a
+/// state formula, and their negations): by a breadth-first search that stops at the first
+/// marking deciding it, with its path (with limits.reduction, over the transitions of stubborn
+/// sets: shortest among those; without, shortest of all). A bound, other CTL formulas and LTL:
+/// on the whole reachability graph, CTL by fixed points (paths are maximal: a dead marking ends
+/// them), LTL by a Büchi automaton's product with the graph (detail/query_graph.h).
 QueryAnswer answerQuery(const Net& net, const Formula& f, const ExploreOptions& limits = {});
 
-/// Answers several formulas: where two or more need a search, or one needs the whole graph
-/// (CTL, a bound), the reachability graph is stored once (12 bytes per edge) and every
-/// answer read from it; where a limit stops that, reachability is searched for formula by
-/// formula as answerQuery does.
+/// Answers several formulas. Where one needs the whole graph (CTL, LTL, a bound), or two or
+/// more need a search and limits.reduction is off, the reachability graph is stored once (12
+/// bytes per edge) and every answer read from it; otherwise (and where a limit stops the
+/// graph) reachability is searched for formula by formula as answerQuery does.
 std::vector<QueryAnswer> answerQueries(const Net& net, const std::vector<Formula>& formulas,
                                        const ExploreOptions& limits = {});
 

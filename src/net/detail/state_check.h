@@ -107,7 +107,13 @@ class ConcreteStates {
   template <class F>
   bool successors(StateId s, F f) {
     check_->candidates().find(store_->at(s), candidates_);
-    for (TransitionId t : candidates_) {
+    return fire(s, candidates_, f);
+  }
+
+  /// The same for the transitions `ts` only (those not enabled are passed over).
+  template <class F>
+  bool fire(StateId s, const std::vector<TransitionId>& ts, F f) {
+    for (TransitionId t : ts) {
       std::size_t field = 0;
       const Fired fired = check_->firing().fire(t, store_->at(s), next_.data(), field);
       if (fired == Fired::NotEnabled) continue;
