@@ -99,6 +99,57 @@ std::string megabytes(std::uint64_t bytes) {
 
 }  // namespace
 
+std::vector<std::string> untimedCaveats(const net::Net& net) {
+  std::vector<std::string> out;
+  const auto& index = net.scriptIndex();
+  auto names = [](std::vector<std::string_view> list) {
+    std::string text;
+    for (std::size_t i = 0; i < list.size() && i < 3; ++i) text += (i ? ", " : "") + std::string(list[i]);
+    if (list.size() > 3) text += " and " + std::to_string(list.size() - 3) + " more";
+    return text;
+  };
+  auto count = [](std::size_t n, const std::string& what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); };
+  std::vector<std::string_view> guarded, scripted, handled;
+  for (net::TransitionId t = 0; t < index.transitions.size(); ++t) {
+    const auto& s = index.transitions[t];
+    if (s[0] >= 0) guarded.push_back(net.transitions()[t].name);
+    if (s[1] >= 0 || s[2] >= 0 || s[3] >= 0) scripted.push_back(net.transitions()[t].name);
+  }
+  for (net::PlaceSlotId k = 0; k < index.slots.size(); ++k) {
+    const auto& s = index.slots[k];
+    const auto name = std::string_view(net.places()[net.placeSlots()[k].place].name);
+    if (std::any_of(s.begin(), s.end(), [](std::int32_t x) { return x >= 0; }) &&
+        (handled.empty() || handled.back() != name)) {
+      handled.push_back(name);
+    }
+  }
+  std::size_t conditions = 0, predicates = 0;
+  for (const net::Term& term : net.terms()) {
+    conditions += term.kind == net::TermKind::Condition;
+    predicates += term.predicate;
+  }
+  if (!guarded.empty()) {
+    out.push_back("the guards of " + count(guarded.size(), "transition") + " (" + names(guarded) +
+                  ") are taken to hold: the analysis may show firings the run never makes");
+  }
+  if (conditions != 0 || predicates != 0) {
+    out.push_back(count(conditions, "sensor condition") + " and " + count(predicates, "token predicate") +
+                  " on arcs are taken to hold: the plant is not simulated");
+  }
+  if (!scripted.empty() || !handled.empty() || net.globalsScript() >= 0) {
+    std::string what;
+    if (!scripted.empty()) what += "the firing scripts of " + count(scripted.size(), "transition") + " (" + names(scripted) + ")";
+    if (!handled.empty()) {
+      what += std::string(what.empty() ? "" : " and ") + "the token and sensor handlers of " +
+              count(handled.size(), "place") + " (" + names(handled) + ")";
+    }
+    if (what.empty()) what = "the model's globals script";
+    out.push_back(what + " are not run: tokens they add or remove (sim.set, add, spawn) are not among the markings "
+                         "explored");
+  }
+  return out;
+}
+
 std::string analysisJson(const net::Net& net, const Analysis& a) {
   using nlohmann::ordered_json;
   const auto& s = a.space;
@@ -106,6 +157,7 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
   const auto& places = net.places();
   ordered_json j;
   j["net"] = a.path;
+  j["left_out"] = untimedCaveats(net);
   j["complete"] = s.complete;
   j["partial"] = ordered_json::array();
   for (const auto& [phase, stop] : stoppedPhases(a)) j["partial"].push_back({{"phase", phase}, {"stop", net::stopReason(stop)}});
@@ -204,6 +256,21 @@ void nameList(std::ostream& out, std::size_t column, const std::vector<std::stri
   }
 }
 
+/// What the untimed analysis leaves out, as notes wrapped at 100 columns.
+void printCaveats(std::ostream& out, const net::Net& net) {
+  for (const std::string& line : untimedCaveats(net)) {
+    std::vector<std::string_view> words;
+    for (std::size_t at = 0; at < line.size();) {
+      const std::size_t end = std::min(line.find(' ', at), line.size());
+      words.push_back(std::string_view(line).substr(at, end - at));
+      at = end + 1;
+    }
+    out << "note:";
+    nameList(out, 5, words, 6);
+    out << "\n";
+  }
+}
+
 }  // namespace
 
 void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
@@ -212,6 +279,7 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
   auto yes = [](bool b) { return b ? "yes" : "no"; };
   auto decided = [&](bool b) { return s.decided ? yes(b) : "unknown (the graph is partial or unbounded)"; };
   for (const auto& [phase, stop] : stoppedPhases(a)) out << "stopped early: " << phase << " (" << net::stopReason(stop) << ")\n";
+  printCaveats(out, net);
   out << a.path << ": " << s.states << " states, " << s.edges << " edges";
   if (!s.bounded) out << " of a coverability graph";
   out << " (" << (s.bounded ? "" : "the net is unbounded; ") << net::stopReason(s.stop) << "; the search held "
@@ -336,6 +404,7 @@ std::string verdictWord(const net::QueryAnswer& a) {
 }  // namespace
 
 void printQueries(std::ostream& out, const net::Net& net, const std::vector<QueryResult>& results) {
+  printCaveats(out, net);
   for (std::size_t i = 0; i < results.size(); ++i) {
     const auto& [text, formula, a, id] = results[i];
     if (!id.empty()) {

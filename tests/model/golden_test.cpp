@@ -296,6 +296,23 @@ TEST(CliAnalyze, APnmlNetAndAModelFile) {
   EXPECT_NE(r.out.find(" states/s, "), std::string::npos) << r.out;  // the progress line
 }
 
+TEST(CliAnalyze, WhatTheUntimedAnalysisLeavesOutIsSaid) {
+  // the sorting example's drop script and gate handler: not run by the analysis, and said so
+  auto r = gdpn("analyze examples/sorting --query 'EF deadlock'");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("note: the firing scripts of 1 transition (main/drop) and the token and sensor handlers of 1 "
+                       "place\n      (main/gate) are not run"),
+            std::string::npos)
+      << r.out;
+  r = gdpn("analyze examples/factory --max-states 1000 --json");
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["left_out"].size(), 2u) << r.out;
+  EXPECT_NE(j["left_out"][0].get<std::string>().find("sensor conditions"), std::string::npos);
+  // a net without scripts or sensors: nothing to say
+  r = gdpn("analyze examples/basics/figure31");
+  EXPECT_EQ(r.out.find("note:"), std::string::npos) << r.out;
+}
+
 TEST(CliAnalyze, AWitnessWrittenByAnalyzeIsReplayedByRunAndABadOneIsLocated) {
   const gdpn::testing::ScratchFolder dir("gdpn_witness");
   // a reachability witness: T1 then T2 reach P4

@@ -53,6 +53,10 @@ bool timed(const net::Net& net);
 /// A P-invariant as text: "p1 + 2*p2 + p3".
 std::string invariantText(const net::Net& net, const net::Invariant& y);
 
+/// What the untimed analysis of `net` leaves out, one sentence each: guards, sensor
+/// conditions and predicates taken to hold, scripts not run. Empty for a net without them.
+std::vector<std::string> untimedCaveats(const net::Net& net);
+
 /// Runs the analysis of `net`.
 Analysis analyze(const net::Net& net, std::string path, const AnalysisOptions& options = {});
 /// The analysis as pretty-printed JSON text.
