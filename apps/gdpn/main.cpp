@@ -28,6 +28,7 @@
 
 #include "gdpn/net/analysis.h"
 #include "gdpn/net/compile.h"
+#include "gdpn/net/graph_export.h"
 #include "gdpn/net/pnml.h"
 #include "gdpn/capture/capture.h"
 #ifdef GDPN_WITH_IDE
@@ -277,6 +278,7 @@ struct AnalyzeArgs {
   std::vector<std::string> queries;  // formulas, or files of them
   std::string witness;               // where to write the first answer's witness
   bool reduction = true;             // stubborn sets in the searches on the fly
+  std::string graph;                 // write the reachability graph here (.dot or .aut) instead
 };
 
 /// Reads the --query arguments: each is a file of formulas (one per line; blank lines and
@@ -370,6 +372,37 @@ int analyze(const AnalyzeArgs& a) {
   options.explore.shortest_path = a.shortest_path;
   options.explore.reduction = a.reduction;
   options.time_limit_s = a.time_limit_s;
+  if (!a.graph.empty()) {
+    // the graph alone, written beside its file and renamed into place when complete
+    const bool dot = a.graph.ends_with(".dot"), aut = a.graph.ends_with(".aut");
+    if (!dot && !aut) {
+      std::cerr << "error: --graph " << quoteArg(a.graph) << ": the file must end in .dot or .aut\n";
+      return 2;
+    }
+    if (overwritesInput("--graph", a.graph, {{"the model file", path}})) return 2;
+    gdpn::core::OutputFile file(a.graph);
+    std::string why;
+    if (!file.open(why)) {
+      std::cerr << a.graph << ": error: " << why << "\n";
+      return 1;
+    }
+    gdpn::net::ExploreOptions limits = options.explore;
+    if (a.time_limit_s > 0.0) {
+      limits.deadline = std::chrono::steady_clock::now() +
+                        std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(a.time_limit_s));
+    }
+    const auto stop = gdpn::net::writeStateGraph(*net, dot ? gdpn::net::GraphFormat::Dot : gdpn::net::GraphFormat::Aldebaran,
+                                                 file.stream(), limits);
+    if (stop != gdpn::net::ExploreStop::Done) {
+      std::cerr << a.graph << ": error: nothing written: the graph is not whole (" << gdpn::net::stopReason(stop) << ")\n";
+      return 3;
+    }
+    if (!file.commit(why)) {
+      std::cerr << a.graph << ": error: " << why << "\n";
+      return 1;
+    }
+    return 0;
+  }
   if (!a.queries.empty()) {
     // only the questions asked, each answered as soon as a search decides it
     auto queries = readQueries(*net, a.queries, std::cerr);
@@ -743,6 +776,9 @@ int main(int argc, char** argv) {
   analyze_cmd->add_option("--witness", analyze_args.witness,
                           "with --query: write the firing sequence that shows the first answer shown by one "
                           "(and its marking) as JSON, for gdpn run --replay");
+  analyze_cmd->add_option("--graph", analyze_args.graph,
+                          "write the reachability graph to FILE.dot (Graphviz: markings on the nodes) or FILE.aut "
+                          "(Aldebaran, for CADP and mCRL2) instead of the analysis");
   analyze_cmd->add_flag("!--no-reduction", analyze_args.reduction,
                         "with --query: search reachability without stubborn sets (every enabled transition fires)");
   analyze_cmd->add_flag("--shortest-path", analyze_args.shortest_path,

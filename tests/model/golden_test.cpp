@@ -296,6 +296,34 @@ TEST(CliAnalyze, APnmlNetAndAModelFile) {
   EXPECT_NE(r.out.find(" states/s, "), std::string::npos) << r.out;  // the progress line
 }
 
+TEST(CliAnalyze, TheReachabilityGraphIsWrittenAsDotAndAldebaran) {
+  const gdpn::testing::ScratchFolder dir("gdpn_graph");
+  // figure 3.1: three markings in a row, the last dead
+  auto r = gdpn("analyze examples/basics/figure31 --graph " + dir.file("f.dot"));
+  ASSERT_EQ(r.code, 0) << r.out;
+  const std::string dot = gdpn::testing::fileBytes(dir.file("f.dot"));
+  EXPECT_NE(dot.find("  s0 [label=\"main/P1\\nmain/P2\", penwidth=2];\n"), std::string::npos) << dot;
+  EXPECT_NE(dot.find("  s2 [label=\"main/P2\\nmain/P4\", style=filled"), std::string::npos) << dot;
+  EXPECT_NE(dot.find("  s1 -> s2 [label=\"main/T2\"];\n"), std::string::npos) << dot;
+  // Aldebaran: the header counts what the analysis counts (Philosophers-PT-000005: 243, 945)
+  r = gdpn("analyze tests/data/conformance/Philosophers-PT-000005.pnml --graph " + dir.file("p.aut"));
+  ASSERT_EQ(r.code, 0) << r.out;
+  std::istringstream aut(gdpn::testing::fileBytes(dir.file("p.aut")));
+  std::string line;
+  std::getline(aut, line);
+  EXPECT_EQ(line, "des (0, 945, 243)");
+  std::size_t edges = 0;
+  while (std::getline(aut, line)) edges += line.starts_with('(') && line.find(", \"net/") != std::string::npos;
+  EXPECT_EQ(edges, 945u);
+  // a graph a limit cuts short is not written; an unknown format is refused
+  r = gdpn("analyze examples/basics/producer_consumer --max-states 100 --graph " + dir.file("pc.aut"));
+  EXPECT_EQ(r.code, 3) << r.out;
+  EXPECT_NE(r.out.find("nothing written: the graph is not whole (partial: --max-states reached)"), std::string::npos);
+  r = gdpn("analyze examples/basics/figure31 --graph " + dir.file("f.txt"));
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_EQ(dir.names(), (std::vector<std::string>{"f.dot", "p.aut"}));
+}
+
 TEST(CliAnalyze, WhatTheUntimedAnalysisLeavesOutIsSaid) {
   // the sorting example's drop script and gate handler: not run by the analysis, and said so
   auto r = gdpn("analyze examples/sorting --query 'EF deadlock'");
