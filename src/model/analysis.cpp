@@ -168,6 +168,13 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
   j["deadlock"] = s.deadlock;
   j["deadlock_path"] = ordered_json::array();
   for (auto t : s.deadlock_path) j["deadlock_path"].push_back(tr[t].name);
+  j["dead_markings"] = s.dead_markings;
+  j["more_dead_paths"] = ordered_json::array();
+  for (const auto& path : s.more_dead_paths) {
+    ordered_json names = ordered_json::array();
+    for (auto t : path) names.push_back(tr[t].name);
+    j["more_dead_paths"].push_back(names);
+  }
   j["max_tokens_place"] = s.max_place;
   j["max_tokens_marking"] = s.max_marking;
   j["one_safe"] = s.one_safe;
@@ -298,11 +305,11 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
     out << " (the initial marking is dead)";
   }
   constexpr std::size_t kShownNames = 20;
-  if (s.deadlock && (!s.deadlock_path.empty() || (s.complete && s.bounded))) {
-    // the dead marking itself: the path fired from the initial marking
+  // a dead marking itself: its path fired from the initial marking
+  auto deadMarking = [&](const std::vector<net::TransitionId>& path) {
     std::vector<std::int64_t> m;
     for (const auto& ps : net.placeSlots()) m.push_back(ps.initial);
-    for (auto t : s.deadlock_path) {
+    for (auto t : path) {
       for (const auto& term : net.termsOf(t)) {
         if (term.kind == net::TermKind::Input) m[term.place_slot] -= term.weight;
         if (term.kind == net::TermKind::Output) m[term.place_slot] += term.weight;
@@ -313,6 +320,20 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
     if (marked.empty()) marked.emplace_back("no tokens");
     out << "\n  dead marking:   ";
     nameList(out, kValue - 1, std::vector<std::string_view>(marked.begin(), marked.end()), kValue, kShownNames);
+  };
+  if (s.deadlock && (!s.deadlock_path.empty() || (s.complete && s.bounded))) deadMarking(s.deadlock_path);
+  // the next ones the search met, each with its path
+  for (const auto& path : s.more_dead_paths) {
+    if (path.empty() || !s.bounded) continue;
+    const std::string head = "after " + std::to_string(path.size()) + (path.size() == 1 ? " firing:" : " firings:");
+    out << "\n  also dead:       " << head;
+    std::vector<std::string_view> names;
+    for (auto t : path) names.emplace_back(tr[t].name);
+    nameList(out, kValue + head.size(), names, kValue, kShownNames);
+    deadMarking(path);
+  }
+  if (s.dead_markings > 1 + s.more_dead_paths.size()) {
+    out << "\n  dead markings:   " << s.dead_markings << (s.complete ? "" : " found") << " in all";
   }
   out << "\n  bounds:          max " << s.max_place << " in one place, " << s.max_marking
       << " in one marking; one-safe: " << yes(s.one_safe) << "\n";

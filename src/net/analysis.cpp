@@ -48,7 +48,9 @@ class Search {
   void shortestPathToDeadlock(StateSpace& out);
   /// The path to the first dead state the search met, from the search path it had then:
   /// each step the transition to the furthest state of that path one firing reaches.
-  void deadlockPath(StateSpace& out);
+  // the transitions that lead along `path`, a search path of states (skipping ahead where a
+  // later state of it is a successor); empty when it cannot be followed
+  std::vector<TransitionId> firingsAlong(const std::vector<StateId>& path);
   std::uint64_t bytes() const;
 
   /// A state on the search path. Its successors not yet visited when it was expanded lie
@@ -105,7 +107,8 @@ class Search {
   std::unique_ptr<Observed> seen_;
   std::vector<bool> fired_;
   bool deadlock_ = false;
-  std::vector<StateId> dead_path_;  // the search path to the first dead state
+  std::vector<std::vector<StateId>> dead_paths_;  // the search paths to the first kDeadPaths dead states
+  std::uint64_t dead_count_ = 0;
   std::vector<StateId> dead_states_;  // every dead state (for a shortest path only)
   bool live_ = true;
   std::uint32_t bottoms_ = 0;
@@ -256,11 +259,15 @@ Search::Expand Search::expand(StateId v) {
   setRindex(v, rv);
   edges_count_ += succ_t_.size();
   if (succ_t_.empty() && options_.shortest_path) dead_states_.push_back(v);
-  if (succ_t_.empty() && !deadlock_) {
-    // the first dead state: the search path to it (the frames' states, then v)
+  if (succ_t_.empty()) {
+    // the first few dead states: the search path to each (the frames' states, then v)
     deadlock_ = true;
-    for (std::size_t i = 0; i < frames_.size(); ++i) dead_path_.push_back(frames_[i].state());
-    dead_path_.push_back(v);
+    ++dead_count_;
+    if (dead_paths_.size() < kDeadPaths) {
+      auto& path = dead_paths_.emplace_back();
+      for (std::size_t i = 0; i < frames_.size(); ++i) path.push_back(frames_[i].state());
+      path.push_back(v);
+    }
   }
   frames_.push({v | (root ? 0x80000000u : 0u), static_cast<std::uint32_t>(edges_.size())});
   return Expand::Ok;
@@ -315,9 +322,9 @@ std::uint64_t Search::bytes() const {
          stack_.bytes() + path_.capacity() * sizeof(std::uint64_t);
 }
 
-void Search::deadlockPath(StateSpace& out) {
-  const std::vector<StateId>& path = dead_path_;
-  if (path.size() < 2) return;
+std::vector<TransitionId> Search::firingsAlong(const std::vector<StateId>& path) {
+  std::vector<TransitionId> out;
+  if (path.size() < 2) return out;
   std::unordered_map<StateId, std::size_t> position;
   for (std::size_t i = 0; i < path.size(); ++i) position.emplace(path[i], i);
   const Layout& L = store_->layout();
@@ -348,13 +355,11 @@ void Search::deadlockPath(StateSpace& out) {
       }
       if (j > best) best = j, via = t;
     }
-    if (best == i) {  // cannot happen: the next state on the path is a successor
-      out.deadlock_path.clear();
-      return;
-    }
-    out.deadlock_path.push_back(via);
+    if (best == i) return {};  // cannot happen: the next state on the path is a successor
+    out.push_back(via);
     i = best;
   }
+  return out;
 }
 
 void Search::shortestPathToDeadlock(StateSpace& out) {
@@ -505,11 +510,13 @@ StateSpace Search::run() {
     out.live = live_;
     out.reversible = bottoms_ == 1 && root_bottom_;
   }
+  out.dead_markings = dead_count_;
   if (deadlock_ && options_.shortest_path && out.complete) {
     shortestPathToDeadlock(out);
   } else if (deadlock_) {
-    deadlockPath(out);
+    out.deadlock_path = firingsAlong(dead_paths_[0]);
   }
+  for (std::size_t i = 1; i < dead_paths_.size(); ++i) out.more_dead_paths.push_back(firingsAlong(dead_paths_[i]));
   out.peak_bytes = peak_;
   return out;
 }

@@ -296,6 +296,29 @@ TEST(CliAnalyze, APnmlNetAndAModelFile) {
   EXPECT_NE(r.out.find(" states/s, "), std::string::npos) << r.out;  // the progress line
 }
 
+TEST(CliAnalyze, TheFirstDeadMarkingsAreShownWithTheirPathsAndAllAreCounted) {
+  // Referendum-PT-0010: each of the 10 voters votes yes or no, then nothing moves: 2^10 dead markings
+  auto r = gdpn("analyze tests/data/conformance/Referendum-PT-0010.pnml");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("\n  dead markings:   1024 in all\n"), std::string::npos) << r.out;
+  std::size_t also = 0, markings = 0;
+  for (auto at = r.out.find("\n  also dead:       after 11 firings: net/start_0 "); at != std::string::npos;
+       at = r.out.find("\n  also dead:       after 11 firings: net/start_0 ", at + 1)) {
+    ++also;
+  }
+  for (auto at = r.out.find("\n  dead marking:    "); at != std::string::npos; at = r.out.find("\n  dead marking:    ", at + 1)) {
+    ++markings;
+  }
+  EXPECT_EQ(also, 2u) << r.out;
+  EXPECT_EQ(markings, 3u) << r.out;
+  r = gdpn("analyze tests/data/conformance/Referendum-PT-0010.pnml --json");
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["dead_markings"], 1024);
+  ASSERT_EQ(j["more_dead_paths"].size(), 2u);
+  EXPECT_EQ(j["more_dead_paths"][0].size(), 11u);
+  EXPECT_NE(j["more_dead_paths"][0], j["deadlock_path"]);
+}
+
 TEST(CliAnalyze, TheReachabilityGraphIsWrittenAsDotAndAldebaran) {
   const gdpn::testing::ScratchFolder dir("gdpn_graph");
   // figure 3.1: three markings in a row, the last dead

@@ -23,9 +23,12 @@ struct ExploreProgress {
   std::uint64_t bytes = 0;   ///< memory the search holds now, bytes
 };
 
-/// Limits of an exploration.
 struct Invariants;
 
+/// How many dead markings a search gives a path to (the first it meets).
+inline constexpr std::size_t kDeadPaths = 3;
+
+/// Limits of an exploration.
 struct ExploreOptions {
   std::uint64_t max_states = 20'000'000;  ///< stop (partial answer) past this many states
   std::uint64_t max_bytes = 0;            ///< stop (partial answer) past this much memory, bytes; 0: none
@@ -75,6 +78,12 @@ struct StateSpace {
   std::uint64_t edges = 0;               ///< one per marking and enabled transition
   bool deadlock = false;                 ///< a dead marking is reachable
   std::vector<TransitionId> deadlock_path;  ///< a firing sequence to one (ExploreOptions::shortest_path: a shortest)
+  /// Dead markings met (every one when the search is complete); 0 from a search of several
+  /// threads, which does not count them.
+  std::uint64_t dead_markings = 0;
+  /// Firing sequences to the next dead markings the search met after the first, at most
+  /// kDeadPaths - 1 of them (one thread).
+  std::vector<std::vector<TransitionId>> more_dead_paths;
   std::vector<std::int64_t> place_bound; ///< per place: the most tokens it ever holds, or kOmega
   std::vector<PlaceId> unbounded_places; ///< places that can hold any number of tokens
   std::int64_t max_place = 0;            ///< the most tokens in one bounded place
