@@ -448,7 +448,11 @@ void printQueries(std::ostream& out, const net::Net& net, const std::vector<Quer
       out << "\n";
       continue;
     }
-    out << " (" << a.states << (a.states == 1 ? " marking" : " markings") << " explored)\n";
+    if (a.technique == "STATE_EQUATION") {
+      out << " (by the state equation: no solution of it holds the formula; no marking explored)\n";
+    } else {
+      out << " (" << a.states << (a.states == 1 ? " marking" : " markings") << " explored)\n";
+    }
     if (!a.has_marking) continue;
     const std::string lead = std::string("  shown by ") +
                              (a.path.empty() ? "the initial marking" : "the marking after " + std::to_string(a.path.size()) +

@@ -10,6 +10,7 @@
 #include "detail/query_graph.h"
 #include "detail/state_check.h"
 #include "detail/stubborn.h"
+#include "gdpn/net/state_equation.h"
 
 namespace gdpn::net {
 namespace {
@@ -125,7 +126,15 @@ QueryAnswer onTheFly(const Net& net, const Formula& f, const ExploreOptions& lim
   const bool ef = f.kind == FormulaKind::Exists;
   const Formula& p = f.operands[0].operands[0];
   // EF p: a marking where p holds; AG p: none where it fails
-  const Reach r = reach(net, ef ? p : negation(p), limits);
+  const Formula target = ef ? p : negation(p);
+  if (limits.state_equation && stateEquationExcludes(net, target)) {
+    // no solution of the state equation holds the target: no reachable marking does
+    a.verdict = ef ? Verdict::False : Verdict::True;
+    a.states = 0;
+    a.technique = "STATE_EQUATION";
+    return a;
+  }
+  const Reach r = reach(net, target, limits);
   a.states = r.states;
   a.technique = limits.reduction ? "EXPLICIT BREADTH_FIRST_SEARCH STUBBORN_SETS" : "EXPLICIT BREADTH_FIRST_SEARCH";
   if (r.found) {

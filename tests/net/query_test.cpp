@@ -3,6 +3,7 @@
 // witness replayed from the initial marking.
 
 #include "gdpn/net/query.h"
+#include "gdpn/net/state_equation.h"
 
 #include <gtest/gtest.h>
 
@@ -206,8 +207,9 @@ TEST(QueryAnswers, ReachabilityAgreesWithTheWholeStateSpaceAndEveryWitnessReplay
     };
     const Formula dead = parsed(*net, "deadlock");
     const QueryAnswer d = check("EF deadlock", space.deadlock ? Verdict::True : Verdict::False, &dead);
-    ExploreOptions unreduced;
+    ExploreOptions unreduced;  // every enabled transition fired, every marking searched
     unreduced.reduction = false;
+    unreduced.state_equation = false;
     const QueryAnswer full = answerQuery(*net, parsed(*net, "EF deadlock"), unreduced);
     EXPECT_EQ(full.verdict, d.verdict);
     if (space.deadlock) {
@@ -416,8 +418,10 @@ std::shared_ptr<const Net> rings(int count, int length) {
 
 TEST(QueryAnswers, StubbornSetsFindAWitnessNineStepsDeepAmongTenMillionMarkingsFromAFewStates) {
   const auto net = rings(7, 10);  // 10^7 markings
+  ExploreOptions searched;  // the searches themselves, not the state equation's refutations
+  searched.state_equation = false;
   // the token of ring 0 at its last place: nine firings of ring 0, the other rings left alone
-  QueryAnswer a = answerQuery(*net, parsed(*net, "EF r0/p9 = 1"));
+  QueryAnswer a = answerQuery(*net, parsed(*net, "EF r0/p9 = 1"), searched);
   EXPECT_EQ(a.verdict, Verdict::True);
   EXPECT_EQ(a.path.size(), 9u);
   EXPECT_LE(a.states, 10u);
@@ -426,26 +430,50 @@ TEST(QueryAnswers, StubbornSetsFindAWitnessNineStepsDeepAmongTenMillionMarkingsF
   ASSERT_TRUE(reached);
   EXPECT_EQ((*reached)[9], 1);
   // never two tokens in one ring: refuted after ring 0's ten markings, not 10^7
-  a = answerQuery(*net, parsed(*net, "EF (r0/p0 = 1 and r0/p5 = 1)"));
+  a = answerQuery(*net, parsed(*net, "EF (r0/p0 = 1 and r0/p5 = 1)"), searched);
   EXPECT_EQ(a.verdict, Verdict::False);
   EXPECT_LE(a.states, 10u);
-  a = answerQuery(*net, parsed(*net, "AG r3/p0 + r3/p1 + r3/p2 + r3/p3 + r3/p4 + r3/p5 + r3/p6 + r3/p7 + r3/p8 + r3/p9 = 1"));
+  a = answerQuery(*net, parsed(*net, "AG r3/p0 + r3/p1 + r3/p2 + r3/p3 + r3/p4 + r3/p5 + r3/p6 + r3/p7 + r3/p8 + r3/p9 = 1"),
+                  searched);
   EXPECT_EQ(a.verdict, Verdict::True);
   EXPECT_LE(a.states, 10u);
   // a deadlock: none, and said after few markings (each ring cycles by itself)
-  a = answerQuery(*net, parsed(*net, "EF deadlock"));
+  a = answerQuery(*net, parsed(*net, "EF deadlock"), searched);
   EXPECT_EQ(a.verdict, Verdict::False);
   EXPECT_LE(a.states, 10u);
   // without the reduction, the same answers from many more markings (a smaller net: 10^4)
   const auto small = rings(4, 10);
-  ExploreOptions full;
+  ExploreOptions full = searched;
   full.reduction = false;
   for (const char* text : {"EF (r0/p0 = 1 and r0/p5 = 1)", "EF deadlock", "EF (r0/p9 = 1 and r3/p9 = 1)"}) {
     SCOPED_TRACE(text);
-    const QueryAnswer reduced = answerQuery(*small, parsed(*small, text));
+    const QueryAnswer reduced = answerQuery(*small, parsed(*small, text), searched);
     const QueryAnswer all = answerQuery(*small, parsed(*small, text), full);
     EXPECT_EQ(reduced.verdict, all.verdict);
     EXPECT_LT(reduced.states * 10, all.states) << reduced.states << " against " << all.states;
+  }
+}
+
+TEST(QueryAnswers, TheStateEquationRefutesWhatItsInvariantsForbidAndNothingReachable) {
+  const auto net = rings(3, 4);
+  ExploreOptions limits;
+  // one token per ring for ever: two in a ring, or none anywhere, has no solution
+  for (const char* text : {"EF r0/p0 + r0/p2 = 2", "EF deadlock", "AG r1/p0 + r1/p1 + r1/p2 + r1/p3 = 1",
+                           "EF (fireable(r0/t0) and fireable(r0/t1))"}) {
+    SCOPED_TRACE(text);
+    const QueryAnswer a = answerQuery(*net, parsed(*net, text), limits);
+    EXPECT_EQ(a.technique, "STATE_EQUATION");
+    EXPECT_EQ(a.verdict, std::string(text).starts_with("AG") ? Verdict::True : Verdict::False);
+    EXPECT_EQ(a.states, 0u);
+  }
+  // what is reachable is never refuted: searched, and found
+  for (const char* text : {"EF (r0/p3 = 1 and r2/p2 = 1)", "EF fireable(r0/t3)", "AG r1/p0 = 1"}) {
+    SCOPED_TRACE(text);
+    const Formula f = parsed(*net, text);
+    EXPECT_FALSE(stateEquationExcludes(*net, f.operands[0].operands[0]));
+    const QueryAnswer a = answerQuery(*net, f, limits);
+    EXPECT_NE(a.technique, "STATE_EQUATION");
+    EXPECT_TRUE(a.has_marking);
   }
 }
 

@@ -48,6 +48,9 @@ struct ExploreOptions {
   /// partial-order reduction that fires only some of the enabled transitions where the
   /// answer cannot depend on the others.
   bool reduction = true;
+  /// Queries: before a reachability search, try to refute the formula by the state equation
+  /// (a linear program; no search when it is infeasible).
+  bool state_equation = true;
   /// Give a shortest firing sequence to a dead marking: a breadth-first pass over the states
   /// after the search (one thread: time and 12 bytes per state). Without it, one thread gives
   /// the path its search walked to the first dead marking, cut short wherever one firing

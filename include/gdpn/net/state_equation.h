@@ -12,6 +12,7 @@
 
 #include "gdpn/net/invariants.h"
 #include "gdpn/net/net.h"
+#include "gdpn/net/query.h"
 
 namespace gdpn::net {
 
@@ -21,5 +22,13 @@ namespace gdpn::net {
 /// program is unbounded, where it was not wanted, or once `options`' deadline has passed.
 std::vector<std::int64_t> stateEquationBounds(const Net& net, const std::vector<bool>& wanted,
                                               const InvariantOptions& options = {});
+
+/// True when no solution of the state equation (M = M0 + C·x, x >= 0, 0 <= M <= capacity,
+/// over the reals) satisfies the state formula `f`: then no reachable marking does, and `EF f`
+/// is false without a search. `f` is put in disjunctive normal form over linear constraints
+/// (a transition enabled: its inputs, tests, inhibitors and capacities; sensor conditions free)
+/// and each disjunct tried as a linear program (GLPK). False when one may hold, or when the
+/// form grows past 256 disjuncts (`deadlock` in a net of many transitions).
+bool stateEquationExcludes(const Net& net, const Formula& f);
 
 }  // namespace gdpn::net
