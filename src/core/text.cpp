@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <charconv>
 
 namespace gdpn::core {
@@ -54,6 +55,12 @@ std::string formatDouble(double value) {
   std::array<char, 32> buf{};
   const auto result = std::to_chars(buf.data(), buf.data() + buf.size(), value);
   return std::string(buf.data(), result.ptr);
+}
+
+std::string formatTime(double seconds) {
+  // whole nanoseconds, then the shortest text of that (past 2^53 ns, about 104 days, as is)
+  const double ns = std::round(seconds * 1e9);
+  return formatDouble(std::fabs(ns) < 9007199254740992.0 ? ns / 1e9 : seconds);
 }
 
 bool isIdentifier(std::string_view s) {

@@ -8,7 +8,7 @@ TraceWriter::TraceWriter(std::ostream& out, const Net& net, double dt, NodeNamer
     : out_(out), net_(net), dt_(dt), namer_(std::move(namer)) {}
 
 void TraceWriter::head(std::int64_t step, const char* event) {
-  out_ << "{\"step\":" << step << ",\"t\":" << core::formatDouble(static_cast<double>(step) * dt_)
+  out_ << "{\"step\":" << step << ",\"t\":" << core::formatTime(static_cast<double>(step) * dt_)
        << ",\"ev\":\"" << event << '"';
 }
 

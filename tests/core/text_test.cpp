@@ -27,6 +27,16 @@ TEST(Text, FormatDoubleIsShortestExact) {
   EXPECT_EQ(formatDouble(-1.5), "-1.5");
 }
 
+TEST(Text, ModelTimesPrintWithoutTheNoiseOfSummedSteps) {
+  EXPECT_EQ(formatDouble(781 * 0.01), "7.8100000000000005");  // what a step count times dt gives
+  EXPECT_EQ(formatTime(781 * 0.01), "7.81");
+  EXPECT_EQ(formatTime(560 * 0.01), "5.6");
+  EXPECT_EQ(formatTime(0.0), "0");
+  EXPECT_EQ(formatTime(1.0 / 60.0), "0.016666667");  // to the nanosecond
+  EXPECT_EQ(formatTime(1e-9), "1e-09");
+  EXPECT_EQ(formatTime(-2.5), "-2.5");
+}
+
 TEST(Text, JsonQuoteEscapes) {
   EXPECT_EQ(jsonQuote("a\"b\\c\n\x01"), "\"a\\\"b\\\\c\\n\\u0001\"");
 }

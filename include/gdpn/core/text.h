@@ -22,6 +22,10 @@ std::string didYouMean(std::string_view word, const std::vector<std::string>& ca
 /// The shortest decimal text that reads back as exactly `value` ("0.1", "4", "1e-05").
 std::string formatDouble(double value);
 
+/// A model time in seconds as text, to the nanosecond and without the noise of its sum of
+/// steps: 781 steps of 0.01 s print as "7.81", not "7.8100000000000005".
+std::string formatTime(double seconds);
+
 /// True for [A-Za-z_][A-Za-z0-9_]*.
 bool isIdentifier(std::string_view s);
 
