@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <charconv>
+#include <ostream>
 
 namespace gdpn::core {
 
@@ -61,6 +62,35 @@ std::string formatTime(double seconds) {
   // whole nanoseconds, then the shortest text of that (past 2^53 ns, about 104 days, as is)
   const double ns = std::round(seconds * 1e9);
   return formatDouble(std::fabs(ns) < 9007199254740992.0 ? ns / 1e9 : seconds);
+}
+
+void writeWrapped(std::ostream& out, std::size_t column, const std::vector<std::string_view>& names, std::size_t indent,
+                  std::size_t most) {
+  constexpr std::size_t kWidth = 100;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    std::string word(names[i]);
+    if (i == most) word = "... and " + std::to_string(names.size() - most) + " more (--json lists all)";
+    if (column + 1 + word.size() > kWidth && column > indent) {
+      out << "\n" << std::string(indent, ' ');
+      column = indent;
+    } else {
+      out << ' ';
+      ++column;
+    }
+    out << word;
+    column += word.size();
+    if (i == most) break;
+  }
+}
+
+std::vector<std::string_view> words(std::string_view text) {
+  std::vector<std::string_view> out;
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t end = std::min(text.find(' ', at), text.size());
+    if (end > at) out.push_back(text.substr(at, end - at));
+    at = end + 1;
+  }
+  return out;
 }
 
 bool isIdentifier(std::string_view s) {

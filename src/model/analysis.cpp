@@ -9,6 +9,7 @@
 #include <limits>
 #include <string_view>
 
+#include "gdpn/core/text.h"
 #include "gdpn/net/kernel.h"
 
 namespace gdpn::model {
@@ -242,38 +243,12 @@ std::vector<std::pair<std::string_view, std::int64_t>> markedPlaces(const net::N
 
 namespace {
 
-/// Writes `names` after text that ends at `column`, a space before each, wrapping lines at
-/// 100 columns with `indent` spaces before the continuation; past `most` names, how many more.
-void nameList(std::ostream& out, std::size_t column, const std::vector<std::string_view>& names, std::size_t indent,
-              std::size_t most = std::numeric_limits<std::size_t>::max()) {
-  constexpr std::size_t kWidth = 100;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    std::string word(names[i]);
-    if (i == most) word = "... and " + std::to_string(names.size() - most) + " more (--json lists all)";
-    if (column + 1 + word.size() > kWidth && column > indent) {
-      out << "\n" << std::string(indent, ' ');
-      column = indent;
-    } else {
-      out << ' ';
-      ++column;
-    }
-    out << word;
-    column += word.size();
-    if (i == most) break;
-  }
-}
 
 /// What the untimed analysis leaves out, as notes wrapped at 100 columns.
 void printCaveats(std::ostream& out, const net::Net& net) {
   for (const std::string& line : untimedCaveats(net)) {
-    std::vector<std::string_view> words;
-    for (std::size_t at = 0; at < line.size();) {
-      const std::size_t end = std::min(line.find(' ', at), line.size());
-      words.push_back(std::string_view(line).substr(at, end - at));
-      at = end + 1;
-    }
     out << "note:";
-    nameList(out, 5, words, 6);
+    core::writeWrapped(out, 5, core::words(line), 6);
     out << "\n";
   }
 }
@@ -300,7 +275,7 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
     out << head;
     std::vector<std::string_view> names;
     for (auto t : s.deadlock_path) names.emplace_back(tr[t].name);
-    nameList(out, kValue + 3 + head.size(), names, kValue);
+    core::writeWrapped(out, kValue + 3 + head.size(), names, kValue);
   } else if (s.deadlock && s.complete && s.bounded) {
     out << " (the initial marking is dead)";
   }
@@ -319,7 +294,7 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
     for (const auto& [place, n] : markedPlaces(net, m)) marked.push_back(std::string(place) + " = " + std::to_string(n));
     if (marked.empty()) marked.emplace_back("no tokens");
     out << "\n  dead marking:   ";
-    nameList(out, kValue - 1, std::vector<std::string_view>(marked.begin(), marked.end()), kValue, kShownNames);
+    core::writeWrapped(out, kValue - 1, std::vector<std::string_view>(marked.begin(), marked.end()), kValue, kShownNames);
   };
   if (s.deadlock && (!s.deadlock_path.empty() || (s.complete && s.bounded))) deadMarking(s.deadlock_path);
   // the next ones the search met, each with its path
@@ -329,7 +304,7 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
     out << "\n  also dead:       " << head;
     std::vector<std::string_view> names;
     for (auto t : path) names.emplace_back(tr[t].name);
-    nameList(out, kValue + head.size(), names, kValue, kShownNames);
+    core::writeWrapped(out, kValue + head.size(), names, kValue, kShownNames);
     deadMarking(path);
   }
   if (s.dead_markings > 1 + s.more_dead_paths.size()) {
@@ -344,7 +319,7 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
     for (auto it = by_bound.rbegin(); it != by_bound.rend(); ++it) {
       const std::string head = std::string(kValue, ' ') + "at most " + std::to_string(it->first) + ":";
       out << head;
-      nameList(out, head.size(), it->second, kValue + 2, kShownNames);
+      core::writeWrapped(out, head.size(), it->second, kValue + 2, kShownNames);
       out << "\n";
     }
   }
@@ -352,7 +327,7 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
     out << "  unbounded:      ";
     std::vector<std::string_view> names;
     for (auto p : s.unbounded_places) names.emplace_back(net.places()[p].name);
-    nameList(out, kValue - 1, names, kValue, kShownNames);
+    core::writeWrapped(out, kValue - 1, names, kValue, kShownNames);
     out << "\n";
   }
   out << "  quasi-live:      " << yes(s.quasi_live);
@@ -363,7 +338,7 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
     }
     const std::string head = s.complete ? "dead (" : "not fired yet (";
     out << ", " << head << names.size() << "):";
-    nameList(out, kValue + 2 + 2 + head.size() + std::to_string(names.size()).size() + 2, names, kValue, kShownNames);
+    core::writeWrapped(out, kValue + 2 + 2 + head.size() + std::to_string(names.size()).size() + 2, names, kValue, kShownNames);
   }
   out << "\n  live:            " << decided(s.live) << "\n  reversible:      " << decided(s.reversible)
       << "\n  constant places: " << s.constant_places.size();
@@ -371,7 +346,7 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
     std::vector<std::string_view> names;
     for (auto p : s.constant_places) names.emplace_back(net.places()[p].name);
     out << ":";
-    nameList(out, kValue + std::to_string(s.constant_places.size()).size() + 1, names, kValue, kShownNames);
+    core::writeWrapped(out, kValue + std::to_string(s.constant_places.size()).size() + 1, names, kValue, kShownNames);
   }
   out << "\n";
 
@@ -440,7 +415,7 @@ void printQueries(std::ostream& out, const net::Net& net, const std::vector<Quer
     }
     const std::string head = "query " + std::to_string(i + 1) + ":";
     out << head;
-    nameList(out, head.size(), {net::formulaText(net, formula)}, 2);
+    core::writeWrapped(out, head.size(), {net::formulaText(net, formula)}, 2);
     out << "\n  " << verdictWord(a);
     if (a.verdict == net::Verdict::Unknown) {
       out << ": " << (a.unsupported.empty() ? net::stopReason(a.stop) : a.unsupported);
@@ -460,13 +435,13 @@ void printQueries(std::ostream& out, const net::Net& net, const std::vector<Quer
     out << lead;
     std::vector<std::string_view> names;
     for (auto t : a.path) names.push_back(net.transitions()[t].name);
-    nameList(out, lead.size(), names, 4);
+    core::writeWrapped(out, lead.size(), names, 4);
     std::vector<std::string> marked;
     for (const auto& [place, n] : markedPlaces(net, a.marking)) marked.push_back(std::string(place) + " = " + std::to_string(n));
     if (marked.empty()) marked.push_back("none");
     const std::string what = "  tokens there:";
     out << "\n" << what;
-    nameList(out, what.size(), std::vector<std::string_view>(marked.begin(), marked.end()), 4);
+    core::writeWrapped(out, what.size(), std::vector<std::string_view>(marked.begin(), marked.end()), 4);
     out << "\n";
     if (!a.lasso) continue;
     if (a.cycle.empty()) {
@@ -477,7 +452,7 @@ void printQueries(std::ostream& out, const net::Net& net, const std::vector<Quer
     out << loop;
     std::vector<std::string_view> cycle;
     for (auto t : a.cycle) cycle.push_back(net.transitions()[t].name);
-    nameList(out, loop.size(), cycle, 4);
+    core::writeWrapped(out, loop.size(), cycle, 4);
     out << "\n";
   }
 }

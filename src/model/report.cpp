@@ -220,18 +220,38 @@ void printSummary(std::ostream& out, const Report& report) {
         << pad(fixed(p.throughput, 3), 13, true) << "\n";
   }
   if (!report.cycles.empty()) {
-    // the figures first, in aligned columns; the invariant, often long, last on its line
-    auto label = [](const CycleFigures& c) {
-      return c.invariant + (c.alike > 0 ? " (+" + std::to_string(c.alike) + " alike)" : "");
-    };
+    // the figures first, in aligned columns; the invariant last, wrapped at 100 columns under
+    // its heading and cut after a few lines (--report has it whole)
+    constexpr std::size_t kFigures = 46, kMostPlaces = 6;
     out << "\n"
         << pad("tokens", 8, true) << pad("bound [s]", 12, true) << pad("measured [s]", 14, true)
         << pad("waited [s]", 12, true) << "  cycle (P-invariant)\n";
+    bool alike = false;
     for (const auto& c : report.cycles) {
       const bool m = c.measured > 0.0;
       out << pad(std::to_string(c.tokens), 8, true) << pad(fixed(c.bound, 3), 12, true)
           << pad(m ? fixed(c.measured, 3) : "-", 14, true) << pad(m ? fixed(c.measured - c.bound, 3) : "-", 12, true)
-          << "  " << label(c) << "\n";
+          << " ";
+      // its places (with their weights) as words, " + " between them
+      std::vector<std::string> terms;
+      for (std::string_view term : core::words(c.invariant)) {
+        if (term != "+") terms.emplace_back(term);
+      }
+      for (std::size_t i = 0; i + 1 < terms.size(); ++i) terms[i] += " +";
+      if (terms.size() > kMostPlaces) {
+        const std::size_t more = terms.size() - kMostPlaces;
+        terms.resize(kMostPlaces);
+        const std::string rest = "... and " + std::to_string(more) + " more (--report has all)";
+        for (std::string_view x : core::words(rest)) terms.emplace_back(x);
+      }
+      if (c.alike > 0) terms.push_back("(+" + std::to_string(c.alike) + " alike)");
+      alike = alike || c.alike > 0;
+      core::writeWrapped(out, kFigures + 1, std::vector<std::string_view>(terms.begin(), terms.end()), kFigures + 2);
+      out << "\n";
+    }
+    if (alike) {
+      out << "(+N alike): N more invariants with the same transitions, tokens and bound, not listed (the same\n"
+             "cycle through the other slots of its places, or the same places with other weights)\n";
     }
   }
   if (report.cycles_stop != net::ExploreStop::Done) {
@@ -244,7 +264,12 @@ void printSummary(std::ostream& out, const Report& report) {
     out << "\nthe model's figures:\n";
     std::size_t fw = 0;
     for (const auto& [k, v] : report.figures) fw = std::max(fw, k.size());
-    for (const auto& [k, v] : report.figures) out << "  " << pad(k + ":", fw + 2, false) << v << "\n";
+    for (const auto& [k, v] : report.figures) {
+      // the value wrapped at 100 columns, under itself
+      out << "  " << pad(k + ":", fw + 1, false);
+      core::writeWrapped(out, fw + 3, core::words(v), fw + 4);
+      out << "\n";
+    }
     if (!report.figures_error.empty()) out << "  " << report.figures_error << "\n";
   }
 }

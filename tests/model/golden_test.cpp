@@ -296,6 +296,33 @@ TEST(CliAnalyze, APnmlNetAndAModelFile) {
   EXPECT_NE(r.out.find(" states/s, "), std::string::npos) << r.out;  // the progress line
 }
 
+TEST(CliRun, TheFactorysSummaryFitsAHundredColumns) {
+  // its long cycle invariants wrapped under their heading and cut after six places, "(+N
+  // alike)" explained, the model's own figures wrapped under themselves
+  const auto r = gdpn("run examples/factory");
+  ASSERT_EQ(r.code, 0) << r.out;
+  std::istringstream lines(r.out);
+  std::string line;
+  std::size_t n = 0;
+  while (std::getline(lines, line)) {
+    ++n;
+    EXPECT_LE(line.size(), 100u) << "line " << n << ": " << line;
+  }
+  EXPECT_GT(n, 60u);
+  EXPECT_NE(r.out.find("... and 9 more (--report has all)\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\n(+N alike): N more invariants with the same transitions, tokens and bound"), std::string::npos);
+  EXPECT_NE(r.out.find("(push box to end of wait): 15.00 s working,\n" + std::string(36, ' ') + "2.95 s waiting"),
+            std::string::npos)
+      << r.out;
+  // the figures in --report keep the invariants whole
+  const gdpn::testing::ScratchFolder dir("gdpn_factory_report");
+  ASSERT_EQ(gdpn("run examples/factory --quiet --report " + dir.file("r.json")).code, 0);
+  const auto j = nlohmann::json::parse(gdpn::testing::fileBytes(dir.file("r.json")));
+  bool whole = false;
+  for (const auto& c : j["cycles"]) whole = whole || c["invariant"].get<std::string>().find("factory/stationB/out.d0") != std::string::npos;
+  EXPECT_TRUE(whole);
+}
+
 TEST(CliAnalyze, TheFirstDeadMarkingsAreShownWithTheirPathsAndAllAreCounted) {
   // Referendum-PT-0010: each of the 10 voters votes yes or no, then nothing moves: 2^10 dead markings
   auto r = gdpn("analyze tests/data/conformance/Referendum-PT-0010.pnml");

@@ -3,6 +3,7 @@
 /// Small text helpers shared by the loaders and the reports.
 
 #include <cstdint>
+#include <ostream>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -25,6 +26,15 @@ std::string formatDouble(double value);
 /// A model time in seconds as text, to the nanosecond and without the noise of its sum of
 /// steps: 781 steps of 0.01 s print as "7.81", not "7.8100000000000005".
 std::string formatTime(double seconds);
+
+/// Writes `words` after text that ends at `column`, a space before each, wrapping lines at
+/// 100 columns with `indent` spaces before the continuation; past `most` words, how many more
+/// ("... and N more (--json lists all)").
+void writeWrapped(std::ostream& out, std::size_t column, const std::vector<std::string_view>& words, std::size_t indent,
+                  std::size_t most = static_cast<std::size_t>(-1));
+
+/// `text` split at its spaces.
+std::vector<std::string_view> words(std::string_view text);
 
 /// True for [A-Za-z_][A-Za-z0-9_]*.
 bool isIdentifier(std::string_view s);
