@@ -235,6 +235,16 @@ int capture(CaptureArgs a, bool movie) {
     std::cerr << "error: a movie needs an even width and height, not " << quoteArg(a.size) << "\n";
     return 2;
   }
+  if (!movie && !a.out.ends_with(".png")) {
+    std::cerr << "error: -o " << quoteArg(a.out) << ": a picture of the plant is written as .png (PNG data in a file "
+              << "named otherwise would mislead)\n";
+    return 2;
+  }
+  if (!movie && !a.out.ends_with(".png")) {
+    std::cerr << "error: -o " << quoteArg(a.out) << ": a picture of the plant is written as .png (PNG data in a file "
+              << "named otherwise would mislead)\n";
+    return 2;
+  }
   if (overwritesInput("-o", a.out, {{"the model file", modelFile(a.model)}})) return 2;
   auto session = open(a.model, a.seed, 0.0);
   if (!session) return 1;
@@ -600,6 +610,7 @@ int run(const RunArgs& a) {
   if (overwritesInput("--trace", a.trace, inputs) || overwritesInput("--report", a.report, with_trace)) return 2;
   auto sim = open(a.model, a.seed, a.script_timeout);
   if (!sim) return 1;
+  if (a.quiet) sim->simulation().setLogEcho(false);  // sim.log still goes to the trace
   for (const auto& spec : a.breaks) {
     std::string why;
     const auto bp = parseBreakpoint(spec, why);
@@ -751,7 +762,8 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--replay", run_args.replay,
                       "play the firing sequence of a witness (gdpn analyze --witness): only its transitions "
                       "start, in its order, each as soon as it can");
-  run_cmd->add_flag("--quiet,-q", run_args.quiet, "print no summary and no progress");
+  run_cmd->add_flag("--quiet,-q", run_args.quiet,
+                    "print no summary, no progress and no sim.log lines (they still go to the --trace)");
 
   AnalyzeArgs analyze_args;
   auto* analyze_cmd = app.add_subcommand(

@@ -204,7 +204,7 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
 bool Simulation::makeEngine(core::Diagnostics& diags) {
   script::EngineCallbacks callbacks;
   callbacks.log = [this](const std::string& text) {
-    std::cerr << "[t=" << core::formatTime(kernel_->now()) << "] " << text << '\n';
+    if (log_echo_) std::cerr << "[t=" << core::formatTime(kernel_->now()) << "] " << text << '\n';
     if (trace_) trace_->event(kernel_->steps(), "log", "\"text\":" + core::jsonQuote(text));
   };
   callbacks.node_name = [this](net::NodeRef r) { return nodeName(r); };

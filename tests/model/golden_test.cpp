@@ -296,6 +296,23 @@ TEST(CliAnalyze, APnmlNetAndAModelFile) {
   EXPECT_NE(r.out.find(" states/s, "), std::string::npos) << r.out;  // the progress line
 }
 
+TEST(CliRun, QuietSilencesSimLogButTheTraceKeepsItAndAPictureIsOnlyWrittenAsPng) {
+  const gdpn::testing::ScratchFolder dir("gdpn_quiet");
+  // the factory logs each box it releases
+  auto r = gdpn("run examples/factory --until 10");
+  EXPECT_NE(r.out.find("[t=4] released boxes/b00/box"), std::string::npos) << r.out;
+  r = gdpn("run examples/factory --until 10 --quiet --trace " + dir.file("t.jsonl"));
+  EXPECT_EQ(r.code, 0);
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(gdpn::testing::fileBytes(dir.file("t.jsonl")).find("\"ev\":\"log\",\"text\":\"released boxes/b00/box"),
+            std::string::npos);
+  // PNG data under another name would mislead
+  r = gdpn("render examples/factory -o " + dir.file("a.jpg"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("a picture of the plant is written as .png"), std::string::npos) << r.out;
+  EXPECT_TRUE(dir.names().size() == 1);
+}
+
 TEST(CliRun, TheFactorysSummaryFitsAHundredColumns) {
   // its long cycle invariants wrapped under their heading and cut after six places, "(+N
   // alike)" explained, the model's own figures wrapped under themselves

@@ -119,6 +119,9 @@ class Simulation {
   std::vector<std::pair<std::string, std::string>> modelFigures(std::string& error) {
     return engine_ ? engine_->summary(error) : std::vector<std::pair<std::string, std::string>>{};
   }
+  /// Whether sim.log writes its lines to stderr (`[t=1.5] text`; on by default). They go to
+  /// the trace either way.
+  void setLogEcho(bool echo) { log_echo_ = echo; }
   /// Replays a firing sequence (one the analysis found): from now on the firing phase starts
   /// only the transitions of `sequence`, in its order, each as soon as it may start, and
   /// nothing else. A run ends as dead once the next one cannot start, nothing occurs and the
@@ -147,6 +150,7 @@ class Simulation {
   void firePhase();
   // nothing more can happen without outside input
   [[nodiscard]] bool dead() const;
+  bool log_echo_ = true;
   std::optional<std::vector<net::TransitionId>> replay_;
   std::size_t replayed_ = 0;
   std::string replay_blocked_;
