@@ -235,17 +235,12 @@ int capture(CaptureArgs a, bool movie) {
     std::cerr << "error: a movie needs an even width and height, not " << quoteArg(a.size) << "\n";
     return 2;
   }
-  if (!movie && !a.out.ends_with(".png")) {
-    std::cerr << "error: -o " << quoteArg(a.out) << ": a picture of the plant is written as .png (PNG data in a file "
-              << "named otherwise would mislead)\n";
-    return 2;
-  }
-  if (!movie && !a.out.ends_with(".png")) {
-    std::cerr << "error: -o " << quoteArg(a.out) << ": a picture of the plant is written as .png (PNG data in a file "
-              << "named otherwise would mislead)\n";
-    return 2;
-  }
   if (overwritesInput("-o", a.out, {{"the model file", modelFile(a.model)}})) return 2;
+  if (!movie && !a.out.ends_with(".png")) {
+    std::cerr << "error: -o " << quoteArg(a.out) << ": a picture of the plant is written as .png (PNG data in a file "
+              << "named otherwise would mislead)\n";
+    return 2;
+  }
   auto session = open(a.model, a.seed, 0.0);
   if (!session) return 1;
   model::Simulation* sim = &session->simulation();

@@ -490,6 +490,7 @@ class Product {
         return true;
       });
     }
+    if (reached == kNone) return sources.front();  // cannot happen: the component is strongly connected
     // back from where it arrived, each step's transition found again among its parent's edges
     std::vector<TransitionId> way;
     for (std::uint32_t z = reached;;) {

@@ -23,8 +23,9 @@ std::vector<std::int64_t> unpacked(const Layout& layout, const std::uint64_t* m)
   return out;
 }
 
-/// Breadth first from the initial marking to the first marking where `target` holds: its
-/// shortest path and the marking, or, when there is none, every reachable marking seen.
+/// Breadth first from the initial marking to the first marking where `target` holds: its path
+/// and the marking (shortest among the transitions searched: with stubborn sets, those of the
+/// sets), or, when there is none, every marking of the (reduced) graph seen.
 struct Reach {
   bool found = false;
   ExploreStop stop = ExploreStop::Done;
