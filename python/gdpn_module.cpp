@@ -248,8 +248,7 @@ class Model {
       results.push_back({texts[i], std::move(*f), {}, {}});
     }
     if (time_limit > 0.0) {
-      limits.deadline = std::chrono::steady_clock::now() +
-                        std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(time_limit));
+      limits.deadline = net::deadlineAfter(time_limit);
     }
     std::vector<net::QueryAnswer> answers;
     {

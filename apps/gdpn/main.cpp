@@ -393,8 +393,7 @@ int analyze(const AnalyzeArgs& a) {
     }
     gdpn::net::ExploreOptions limits = options.explore;
     if (a.time_limit_s > 0.0) {
-      limits.deadline = std::chrono::steady_clock::now() +
-                        std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(a.time_limit_s));
+      limits.deadline = gdpn::net::deadlineAfter(a.time_limit_s);
     }
     const auto stop = gdpn::net::writeStateGraph(*net, dot ? gdpn::net::GraphFormat::Dot : gdpn::net::GraphFormat::Aldebaran,
                                                  file.stream(), limits);
@@ -414,8 +413,7 @@ int analyze(const AnalyzeArgs& a) {
     if (!queries) return 1;
     gdpn::net::ExploreOptions limits = options.explore;
     if (a.time_limit_s > 0.0) {
-      limits.deadline = std::chrono::steady_clock::now() +
-                        std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(a.time_limit_s));
+      limits.deadline = gdpn::net::deadlineAfter(a.time_limit_s);
     }
     std::vector<gdpn::net::Formula> formulas;
     for (const auto& q : *queries) formulas.push_back(q.formula);

@@ -50,9 +50,7 @@ Analysis analyze(const net::Net& net, std::string path, const AnalysisOptions& o
   // one deadline for all phases; the state space's limits bound the invariants too
   net::ExploreOptions explore = options.explore;
   if (options.time_limit_s > 0.0) {
-    explore.deadline = std::chrono::steady_clock::now() +
-                       std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                           std::chrono::duration<double>(std::min(options.time_limit_s, 1e9)));
+    explore.deadline = net::deadlineAfter(options.time_limit_s);
   }
   net::InvariantOptions limits;
   limits.max_candidates = static_cast<std::size_t>(std::min<std::uint64_t>(limits.max_candidates, explore.max_states));

@@ -50,8 +50,7 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
   // bound, the net waited on something else (the plant, a guard, a shared resource)
   if (timed(net)) {
     net::InvariantOptions budget;
-    budget.deadline = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                                              std::chrono::duration<double>(std::max(0.0, cycle_seconds)));
+    budget.deadline = net::deadlineAfter(std::max(0.0, cycle_seconds));
     const auto invariants = net::invariants(net, budget);
     r.cycles_stop = invariants.stop;
     // one line per set of transitions (slots of one place moving together make one cycle each)

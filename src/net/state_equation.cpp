@@ -186,9 +186,7 @@ std::optional<Dnf> dnf(const Net& net, const Formula& f, bool positive) {
       const std::int64_t c = f.right.constant - f.left.constant;
       Comparison op = f.compare;
       if (!positive) {
-        constexpr Comparison flipped[] = {Comparison::GreaterEqual, Comparison::Greater, Comparison::NotEqual,
-                                          Comparison::Equal,        Comparison::Less,    Comparison::LessEqual};
-        op = flipped[static_cast<int>(op)];
+        op = negated(op);
       }
       auto with = [&](std::int64_t bound, bool at_least) {
         Linear y = x;

@@ -25,6 +25,14 @@ struct ExploreProgress {
 
 struct Invariants;
 
+/// The moment `seconds` from now (a limit's deadline); past 10^9 s (31 years), 10^9 s, so that
+/// any number given stays within the clock's range.
+inline std::chrono::steady_clock::time_point deadlineAfter(double seconds) {
+  const double s = seconds < 1e9 ? seconds : 1e9;
+  return std::chrono::steady_clock::now() +
+         std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(s));
+}
+
 /// How many dead markings a search gives a path to (the first it meets).
 inline constexpr std::size_t kDeadPaths = 3;
 

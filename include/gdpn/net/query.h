@@ -44,6 +44,13 @@ enum class FormulaKind : std::uint8_t {
 /// How a comparison compares.
 enum class Comparison : std::uint8_t { Less, LessEqual, Equal, NotEqual, GreaterEqual, Greater };
 
+/// The comparison that holds exactly where `c` fails (`<` for `>=`, `!=` for `=`).
+inline Comparison negated(Comparison c) {
+  constexpr Comparison opposite[] = {Comparison::GreaterEqual, Comparison::Greater, Comparison::NotEqual,
+                                     Comparison::Equal,        Comparison::Less,    Comparison::LessEqual};
+  return opposite[static_cast<int>(c)];
+}
+
 /// A formula: a tree of nodes.
 struct Formula {
   FormulaKind kind = FormulaKind::True;

@@ -135,9 +135,7 @@ void Stubborn::addUpSet(const Formula& f, bool positive, const std::uint64_t* m,
       const std::int64_t d = check.sum(f.left, m) - check.sum(f.right, m);
       Comparison c = f.compare;
       if (!positive) {
-        constexpr Comparison flipped[] = {Comparison::GreaterEqual, Comparison::Greater, Comparison::NotEqual,
-                                          Comparison::Equal,        Comparison::Less,    Comparison::LessEqual};
-        c = flipped[static_cast<int>(c)];
+        c = negated(c);
       }
       const bool raise = c == Comparison::Greater || c == Comparison::GreaterEqual || (c == Comparison::Equal && d < 0);
       const bool lower = c == Comparison::Less || c == Comparison::LessEqual || (c == Comparison::Equal && d > 0);
