@@ -48,6 +48,9 @@ struct Studio {
       error = "the model has no scene to draw";
       return false;
     }
+    // a wrong camera is told now, not after the run to the picture's time
+    error = render::cameraProblem(*sim.plant(), o.camera);
+    if (!error.empty()) return false;
     context = platform::createHeadlessContext(error);
     if (!context) return false;
     target = std::make_unique<platform::Target>(o.width, o.height, o.samples);

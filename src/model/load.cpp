@@ -26,7 +26,7 @@ using detail::YamlReader;
 
 const std::vector<std::string> kTopKeys = {"gdpn", "description", "settings", "pages", "page_types",
                                            "scene", "scripts"};
-const std::vector<std::string> kSettingsKeys = {"dt", "seed", "until"};
+const std::vector<std::string> kSettingsKeys = {"dt", "seed", "until", "angles"};
 const std::vector<std::string> kPageKeys = {"description", "places", "transitions", "arcs", "instances"};
 const std::vector<std::string> kPageTypeKeys = {"description", "references", "places", "transitions",
                                                 "arcs", "instances", "scene"};
@@ -74,6 +74,9 @@ class ModelReader {
       return std::nullopt;
     }
     if (!r_.expectMap(root, "the model file")) return std::nullopt;
+    // the settings first: they say in what unit the scene's angles are written
+    if (const YAML::Node s = root["settings"]) readSettings(s, model.settings);
+    angles_ = model.settings.angles;
     for (const auto& e : r_.entries(root, "model file", kTopKeys)) {
       if (e.key == "gdpn") {
         if (auto v = r_.integer(e.value, "gdpn"); v && *v != 1) {
@@ -82,14 +85,14 @@ class ModelReader {
       } else if (e.key == "description") {
         if (auto s = r_.string(e.value, "description")) model.description = *s;
       } else if (e.key == "settings") {
-        readSettings(e.value, model.settings);
+        continue;  // read above
       } else if (e.key == "pages") {
         readPages(e.value, model.net.pages, false);
       } else if (e.key == "page_types") {
         type_scenes_ = &model.type_scenes;
         readPages(e.value, model.net.page_types, true);
       } else if (e.key == "scene") {
-        model.scene = detail::readScene(e.value, r_, e.loc);
+        model.scene = detail::readScene(e.value, r_, e.loc, angles_);
       } else if (e.key == "scripts") {
         if (!r_.expectMap(e.value, "scripts")) continue;
         for (const auto& g : r_.entries(e.value, "scripts", kScriptsKeys)) {
@@ -206,6 +209,14 @@ class ModelReader {
           if (!(*v >= 0.0) || !std::isfinite(*v)) r_.error(e.value, "until must be a time of at least 0 seconds");
           s.until = *v;
         }
+      } else if (e.key == "angles") {
+        if (auto v = r_.string(e.value, "angles")) {
+          if (*v == "radians" || *v == "degrees") {
+            s.angles = *v == "radians" ? scene::AngleUnit::Radians : scene::AngleUnit::Degrees;
+          } else {
+            r_.error(e.value, "angles are 'radians' or 'degrees', got '" + *v + "'");
+          }
+        }
       }
     }
   }
@@ -246,7 +257,7 @@ class ModelReader {
       } else if (e.key == "instances") {
         forEachNamed(e, "instances", [&](const Entry& c) { page.instances.push_back(readInstance(c)); });
       } else if (e.key == "scene" && type_scenes_) {
-        (*type_scenes_)[page.name] = detail::readScene(e.value, r_, e.loc);
+        (*type_scenes_)[page.name] = detail::readScene(e.value, r_, e.loc, angles_);
       }
     }
   }
@@ -532,6 +543,7 @@ class ModelReader {
 
   YamlReader r_;
   std::map<std::string, std::shared_ptr<const scene::Scene>>* type_scenes_ = nullptr;
+  scene::AngleUnit angles_ = scene::AngleUnit::Degrees;  // the unit the file writes angles in
   std::string file_;
   const std::string& text_;
 };

@@ -153,7 +153,8 @@ void writeArc(YAML::Emitter& out, const net::ArcSpec& a) {
   out << YAML::EndMap;
 }
 
-void writePage(YAML::Emitter& out, const net::PageSpec& page, bool type, const scene::Scene* type_scene) {
+void writePage(YAML::Emitter& out, const net::PageSpec& page, bool type, const scene::Scene* type_scene,
+               scene::AngleUnit angles) {
   out << YAML::Key << page.name << YAML::Value << YAML::BeginMap;
   description(out, page.description);
   if (type && !page.references.empty()) {
@@ -198,7 +199,7 @@ void writePage(YAML::Emitter& out, const net::PageSpec& page, bool type, const s
   }
   if (type_scene) {
     out << YAML::Key << "scene" << YAML::Value;
-    detail::writeScene(out, *type_scene);
+    detail::writeScene(out, *type_scene, angles);
   }
   out << YAML::EndMap;
 }
@@ -212,29 +213,31 @@ std::string writeModel(const Model& model) {
   out << YAML::Key << "gdpn" << YAML::Value << 1;
   description(out, model.description);
   const auto& s = model.settings;
-  if (s.dt_given || s.seed_given || s.until) {
+  const bool radians = s.angles == scene::AngleUnit::Radians;
+  if (s.dt_given || s.seed_given || s.until || radians) {
     out << YAML::Key << "settings" << YAML::Value << YAML::BeginMap;
     if (s.dt_given) out << YAML::Key << "dt" << YAML::Value << formatDouble(s.dt);
     if (s.seed_given) out << YAML::Key << "seed" << YAML::Value << s.seed;
     if (s.until) out << YAML::Key << "until" << YAML::Value << formatDouble(*s.until);
+    if (radians) out << YAML::Key << "angles" << YAML::Value << "radians";
     out << YAML::EndMap;
   }
   if (!model.net.pages.empty()) {
     out << YAML::Key << "pages" << YAML::Value << YAML::BeginMap;
-    for (const auto& p : model.net.pages) writePage(out, p, false, nullptr);
+    for (const auto& p : model.net.pages) writePage(out, p, false, nullptr, s.angles);
     out << YAML::EndMap;
   }
   if (!model.net.page_types.empty()) {
     out << YAML::Key << "page_types" << YAML::Value << YAML::BeginMap;
     for (const auto& p : model.net.page_types) {
       auto it = model.type_scenes.find(p.name);
-      writePage(out, p, true, it == model.type_scenes.end() ? nullptr : it->second.get());
+      writePage(out, p, true, it == model.type_scenes.end() ? nullptr : it->second.get(), s.angles);
     }
     out << YAML::EndMap;
   }
   if (model.scene) {
     out << YAML::Key << "scene" << YAML::Value;
-    detail::writeScene(out, *model.scene);
+    detail::writeScene(out, *model.scene, s.angles);
   }
   if (!model.net.globals.empty()) {
     out << YAML::Key << "scripts" << YAML::Value << YAML::BeginMap;

@@ -12,7 +12,7 @@ using scene::FieldValue;
 
 class SceneReader {
  public:
-  SceneReader(YamlReader& r, scene::Scene& s) : r_(r), scene_(s) {}
+  SceneReader(YamlReader& r, scene::Scene& s, scene::AngleUnit angles) : r_(r), scene_(s), angles_(angles) {}
 
   void readList(const YAML::Node& list, scene::Node& parent, const core::SourceLoc& at) {
     if (!list.IsSequence()) {
@@ -64,8 +64,15 @@ class SceneReader {
     if (!e.value.IsMap()) return;
 
     std::vector<std::string> keys = {"name", "children"};
+    std::vector<std::pair<std::size_t, Entry>> read;  // fields read, in the file's order
     for (const auto* f : type->fields) keys.push_back(f->name);
-    for (const auto& field : r_.entries(e.value, "a " + e.key, keys)) {
+    // a node placed by a field it does not have: Transforms place what is below them
+    auto hint = [&](const std::string& key) -> std::string {
+      if (key != "translation" && key != "rotation" && key != "scale" && key != "position") return {};
+      return "; a " + e.key + " is placed by a Transform above it: `- Transform: {" +
+             (key == "position" ? std::string("translation") : key) + ": [...], children: [{" + e.key + ": {...}}]}`";
+    };
+    for (const auto& field : r_.entries(e.value, "a " + e.key, keys, hint)) {
       if (field.key == "name") continue;
       if (field.key == "children") {
         if (!type->has_children) {
@@ -76,9 +83,24 @@ class SceneReader {
         continue;
       }
       const auto i = static_cast<std::size_t>(type->fieldIndex(field.key));  // a key entries() accepted
-      if (auto v = readValue(*type->fields[i], field)) {
+      if (auto v = parse(*type->fields[i], field)) {
         node->setValue(i, std::move(*v));
         node->field_locs[i] = r_.loc(field.value, field.loc);
+        read.emplace_back(i, field);
+      }
+    }
+    // with every field read (a joint's kind decides whether its limits are angles), each value
+    // in the stored units, then checked by the field's own rules (FieldDesc::check, shared
+    // with scripts and the inspector); a value that fails goes back to its default
+    for (const auto& [i, field] : read) {
+      node->setValue(i, scene::convertAngle(*node, i, node->value(i), angles_, true));
+      if (auto bad = type->fields[i]->check(node->value(i))) {
+        const YAML::Node& n = field.value;
+        const bool part = bad->component >= 0 && n.IsSequence() && static_cast<std::size_t>(bad->component) < n.size();
+        const bool radians = angles_ == scene::AngleUnit::Radians && scene::isAngular(*node, i);
+        r_.error(part ? r_.loc(n[static_cast<std::size_t>(bad->component)], field.loc) : r_.loc(n, field.loc),
+                 bad->message + (radians ? " (in degrees; the model writes angles in radians)" : ""));
+        node->setValue(i, type->fields[i]->initial);
       }
     }
     check(*node);
@@ -96,20 +118,6 @@ class SceneReader {
                    std::to_string(2 * nx * ny) + " numbers in 'vectors' (x, y per point), got " +
                    std::to_string(v.size()));
     }
-  }
-
-  /// The value written for field `f`, as its kind reads it, then checked by the field's
-  /// own rules (FieldDesc::check, shared with scripts and the inspector).
-  std::optional<FieldValue> readValue(const FieldDesc& f, const Entry& e) {
-    std::optional<FieldValue> v = parse(f, e);
-    if (!v) return std::nullopt;
-    if (auto bad = f.check(*v)) {
-      const YAML::Node& n = e.value;
-      const bool part = bad->component >= 0 && n.IsSequence() && static_cast<std::size_t>(bad->component) < n.size();
-      r_.error(part ? r_.loc(n[static_cast<std::size_t>(bad->component)], e.loc) : r_.loc(n, e.loc), bad->message);
-      return std::nullopt;
-    }
-    return v;
   }
 
   template <std::size_t N>
@@ -174,6 +182,7 @@ class SceneReader {
 
   YamlReader& r_;
   scene::Scene& scene_;
+  scene::AngleUnit angles_;
 };
 
 void writeValue(YAML::Emitter& out, const FieldValue& v) {
@@ -200,7 +209,7 @@ void writeValue(YAML::Emitter& out, const FieldValue& v) {
   }
 }
 
-void writeNode(YAML::Emitter& out, const scene::Node& node) {
+void writeNode(YAML::Emitter& out, const scene::Node& node, scene::AngleUnit angles) {
   const bool block = !node.children().empty();
   out << YAML::BeginMap << YAML::Key << node.type().name << YAML::Value << (block ? YAML::Block : YAML::Flow)
       << YAML::BeginMap;
@@ -209,11 +218,11 @@ void writeNode(YAML::Emitter& out, const scene::Node& node) {
     const FieldDesc& f = *node.type().fields[i];
     if (node.value(i) == f.initial) continue;
     out << YAML::Key << f.name << YAML::Value;
-    writeValue(out, node.value(i));
+    writeValue(out, scene::convertAngle(node, i, node.value(i), angles, false));
   }
   if (block) {
     out << YAML::Key << "children" << YAML::Value << YAML::BeginSeq;
-    for (const auto& c : node.children()) writeNode(out, *c);
+    for (const auto& c : node.children()) writeNode(out, *c, angles);
     out << YAML::EndSeq;
   }
   out << YAML::EndMap << YAML::EndMap;
@@ -221,16 +230,17 @@ void writeNode(YAML::Emitter& out, const scene::Node& node) {
 
 }  // namespace
 
-std::shared_ptr<scene::Scene> readScene(const YAML::Node& list, YamlReader& r, const core::SourceLoc& at) {
+std::shared_ptr<scene::Scene> readScene(const YAML::Node& list, YamlReader& r, const core::SourceLoc& at,
+                                        scene::AngleUnit angles) {
   auto s = std::make_shared<scene::Scene>();
   if (list.IsNull()) return s;
-  SceneReader(r, *s).readList(list, s->root(), at);
+  SceneReader(r, *s, angles).readList(list, s->root(), at);
   return s;
 }
 
-void writeScene(YAML::Emitter& out, const scene::Scene& scene) {
+void writeScene(YAML::Emitter& out, const scene::Scene& scene, scene::AngleUnit angles) {
   out << YAML::BeginSeq;
-  for (const auto& c : scene.root().children()) writeNode(out, *c);
+  for (const auto& c : scene.root().children()) writeNode(out, *c, angles);
   out << YAML::EndSeq;
 }
 

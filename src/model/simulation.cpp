@@ -217,7 +217,11 @@ bool Simulation::makeEngine(core::Diagnostics& diags) {
     static const sensors::Reading none;
     return hub_ ? hub_->reading(h) : none;
   };
-  engine_ = script::Engine::create(*net_, *kernel_, model_.path, {script_timeout_s_}, std::move(callbacks), diags);
+  script::EngineOptions options;
+  options.timeout_s = script_timeout_s_;
+  options.angles = model_.settings.angles;
+  engine_ = script::Engine::create(*net_, *kernel_, model_.path, options,
+                                   std::move(callbacks), diags);
   if (!engine_) return false;
   kernel_->setHooks(engine_.get());
   return true;

@@ -19,15 +19,122 @@ std::string describe(const YAML::Node& node) {
   }
 }
 
+namespace {
+
+/// Where a quoted scalar opens.
+struct Quote {
+  int line = 0;
+  int column = 0;
+  char mark = '"';
+};
+
+/// The quote of a quoted scalar that is never closed, if any. YAML reads everything after
+/// such a quote as its text: to the end of the file (which yaml-cpp accepts without a word)
+/// or to a syntax error far below. Quotes count only where a value begins (at a line's start,
+/// after `: `, `- `, `[`, `{` or `,`); comments and block scalars (`|`, `>`) are skipped.
+std::optional<Quote> unclosedQuote(std::string_view text) {
+  enum class State { Plain, Double, Single } state = State::Plain;
+  Quote open;
+  int block = -1;  // inside a block scalar: lines indented more than this are its text
+  int flow = 0;    // depth of [ ] and { }: `,` begins a value only inside them
+  int number = 0;
+  for (std::size_t begin = 0; begin <= text.size();) {
+    std::size_t end = text.find('\n', begin);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view line = text.substr(begin, end - begin);
+    begin = end + 1;
+    ++number;
+    const std::size_t first = line.find_first_not_of(" \t\r");
+    if (state == State::Plain && block >= 0) {
+      if (first == std::string_view::npos || static_cast<int>(first) > block) continue;
+      block = -1;
+    }
+    // the column of the line's key: past the indentation and any "- " of list items
+    std::size_t key = first == std::string_view::npos ? 0 : first;
+    while (key + 1 < line.size() && line[key] == '-' && line[key + 1] == ' ') {
+      key = line.find_first_not_of(' ', key + 1);
+      if (key == std::string_view::npos) key = line.size();
+    }
+    bool value_start = true;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      const char c = line[i];
+      if (state == State::Double) {
+        if (c == '\\') ++i;
+        else if (c == '"') state = State::Plain;
+        continue;
+      }
+      if (state == State::Single) {
+        if (c == '\'' && i + 1 < line.size() && line[i + 1] == '\'') ++i;
+        else if (c == '\'') state = State::Plain;
+        continue;
+      }
+      if (c == ' ' || c == '\t' || c == '\r') continue;
+      if (c == '#' && (i == 0 || line[i - 1] == ' ' || line[i - 1] == '\t')) break;
+      if (value_start && (c == '"' || c == '\'')) {
+        state = c == '"' ? State::Double : State::Single;
+        open = {number, static_cast<int>(i) + 1, c};
+        continue;
+      }
+      if (value_start && (c == '|' || c == '>')) {
+        // a block scalar when only indicators (and a comment) follow
+        const std::size_t rest = line.find_first_not_of("0123456789+- \t\r", i + 1);
+        if (rest == std::string_view::npos || line[rest] == '#') {
+          block = static_cast<int>(key);
+          break;
+        }
+      }
+      // inside a plain scalar (`x - 'y`, `a, "b`, `a [ 'b`) nothing but `: ` begins a value
+      const bool colon = c == ':' && (i + 1 == line.size() || line[i + 1] == ' ' || line[i + 1] == '\t');
+      const bool dash = c == '-' && i < key && (i + 1 == line.size() || line[i + 1] == ' ');
+      const bool opens = value_start && (c == '[' || c == '{');
+      if (opens) ++flow;
+      if (flow > 0 && (c == ']' || c == '}')) --flow;
+      value_start = colon || dash || opens || (c == ',' && flow > 0) || (c == '?' && value_start);
+    }
+  }
+  if (state == State::Plain) return std::nullopt;
+  return open;
+}
+
+/// Whether `node` holds a quoted scalar (yaml-cpp tags those "!") that begins at `q`.
+bool quotedScalarAt(const YAML::Node& node, const Quote& q) {
+  if (node.IsScalar()) {
+    return node.Tag() == "!" && node.Mark().line + 1 == q.line && node.Mark().column + 1 == q.column;
+  }
+  if (!node.IsMap() && !node.IsSequence()) return false;
+  for (auto it = node.begin(); it != node.end(); ++it) {
+    if (node.IsMap() ? quotedScalarAt(it->first, q) || quotedScalarAt(it->second, q) : quotedScalarAt(*it, q)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
 std::optional<YAML::Node> parseYaml(const std::string& text, const std::string& file, core::Diagnostics& diags) {
   // YAML is UTF-8; other bytes would not survive a save
   if (!core::checkUtf8(text, file, diags)) return std::nullopt;
+  const auto quote = unclosedQuote(text);
+  auto unclosed = [&] {
+    diags.error({file, quote->line, quote->column}, std::string("YAML syntax: this quote (") + quote->mark +
+                                                        ") is never closed, so the rest of the file would be its text");
+  };
   try {
-    return YAML::Load(text);
+    YAML::Node root = YAML::Load(text);
+    // a file that reads is refused only when the quote really opens a scalar (which then runs
+    // to the end of the file), never for a quote inside plain text the scan misjudged
+    if (!quote || !quotedScalarAt(root, *quote)) return root;
+    unclosed();
   } catch (const YAML::Exception& e) {
     const int line = e.mark.is_null() ? 0 : e.mark.line + 1;
     const int column = e.mark.is_null() ? 0 : e.mark.column + 1;
-    diags.error({file, line, column}, "YAML syntax: " + e.msg);
+    // the quote is the cause when it opens before the place the parser gave up
+    if (quote && (line == 0 || quote->line <= line)) {
+      unclosed();
+    } else {
+      diags.error({file, line, column}, "YAML syntax: " + e.msg);
+    }
   }
   return std::nullopt;
 }
@@ -58,7 +165,8 @@ bool YamlReader::expectList(const YAML::Node& node, const std::string& what) {
 }
 
 std::vector<Entry> YamlReader::entries(const YAML::Node& map, const std::string& what,
-                                       const std::vector<std::string>& allowed) {
+                                       const std::vector<std::string>& allowed,
+                                       const std::function<std::string(const std::string&)>& hint) {
   std::vector<Entry> out;
   std::unordered_map<std::string, core::SourceLoc> seen;
   for (auto it = map.begin(); it != map.end(); ++it) {
@@ -70,7 +178,8 @@ std::vector<Entry> YamlReader::entries(const YAML::Node& map, const std::string&
     }
     Entry e{key.Scalar(), loc(key), it->second};
     if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), e.key) == allowed.end()) {
-      error(e.loc, "unknown key '" + e.key + "' in " + what + core::didYouMean(e.key, allowed));
+      const std::string why = hint ? hint(e.key) : std::string();
+      error(e.loc, "unknown key '" + e.key + "' in " + what + (why.empty() ? core::didYouMean(e.key, allowed) : why));
       continue;
     }
     auto [prev, fresh] = seen.emplace(e.key, e.loc);

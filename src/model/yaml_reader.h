@@ -4,6 +4,7 @@
 #include "yaml.h"
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,9 +40,10 @@ class YamlReader {
   bool expectMap(const YAML::Node& node, const std::string& what);
   bool expectList(const YAML::Node& node, const std::string& what);
   /// The keys of a map in order; reports duplicate keys, non-scalar keys and, when `allowed`
-  /// is not empty, unknown keys with a suggestion. Only accepted keys are returned.
-  std::vector<Entry> entries(const YAML::Node& map, const std::string& what,
-                             const std::vector<std::string>& allowed);
+  /// is not empty, unknown keys with a suggestion (what `hint` says of the key, when given,
+  /// else the closest allowed key). Only accepted keys are returned.
+  std::vector<Entry> entries(const YAML::Node& map, const std::string& what, const std::vector<std::string>& allowed,
+                             const std::function<std::string(const std::string&)>& hint = {});
   std::optional<double> number(const YAML::Node& node, const std::string& field);
   std::optional<std::int64_t> integer(const YAML::Node& node, const std::string& field);
   std::optional<std::string> string(const YAML::Node& node, const std::string& field);

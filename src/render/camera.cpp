@@ -5,6 +5,7 @@
 #include <numbers>
 #include <vector>
 
+#include "gdpn/core/text.h"
 #include "gdpn/scene/actions.h"
 
 namespace gdpn::render {
@@ -42,24 +43,44 @@ Camera framing(const scene::Scene& scene) {
   return c;
 }
 
-Camera chooseCamera(const scene::Scene& scene, const std::string& path, double t, std::string& error) {
-  error.clear();
-  if (!path.empty()) {
-    const Node* n = scene.find(path);
-    if (n == nullptr || n->kind() != NodeKind::Camera) {
-      error = "no Camera node at '" + path + "'";
-      return framing(scene);
-    }
-    return cameraOf(*n, t);
-  }
-  std::vector<const Node*> todo{&scene.root()};
+namespace {
+
+/// The scene's Camera nodes, in tree order (depth first, children in order).
+std::vector<const Node*> cameraNodes(const scene::Scene& scene) {
+  std::vector<const Node*> out, todo{&scene.root()};
   while (!todo.empty()) {
     const Node* n = todo.back();
     todo.pop_back();
-    if (n->kind() == NodeKind::Camera) return cameraOf(*n, t);
+    if (n->kind() == NodeKind::Camera) out.push_back(n);
     for (auto it = n->children().rbegin(); it != n->children().rend(); ++it) todo.push_back(it->get());
   }
-  return framing(scene);
+  return out;
+}
+
+}  // namespace
+
+std::string cameraProblem(const scene::Scene& scene, const std::string& path) {
+  if (path.empty()) return {};
+  const Node* n = scene.find(path);
+  if (n != nullptr && n->kind() == NodeKind::Camera) return {};
+  std::vector<std::string> cameras;
+  for (const Node* c : cameraNodes(scene)) cameras.push_back(c->path());
+  std::string why = n == nullptr ? "no node at '" + path + "'" : "'" + path + "' is a " + n->type().name + ", not a Camera";
+  if (cameras.empty()) return why + "; the scene has no Camera node (leave --camera out for a framing view)";
+  std::string list;
+  for (const auto& c : cameras) list += (list.empty() ? "" : ", ") + c;
+  return why + core::didYouMean(path, cameras) + "; the scene's cameras: " + list;
+}
+
+Camera chooseCamera(const scene::Scene& scene, const std::string& path, double t, std::string& error) {
+  error.clear();
+  if (!path.empty()) {
+    error = cameraProblem(scene, path);
+    if (!error.empty()) return framing(scene);
+    return cameraOf(*scene.find(path), t);
+  }
+  const auto cameras = cameraNodes(scene);
+  return cameras.empty() ? framing(scene) : cameraOf(*cameras.front(), t);
 }
 
 }  // namespace gdpn::render

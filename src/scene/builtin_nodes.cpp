@@ -168,7 +168,9 @@ void registerBuiltinNodes(TypeRegistry& r) {
               f(field::Region::Height, "height", K::Float, 1.0, "m", "height of a cylinder or cone (along z)", 0, kInf),
               f(field::Region::Length, "length", K::Float, 1.0, "m", "length of a ray (along +x)", 0, kInf),
               choice(field::Region::Scope, "scope", {"world", "siblings", "parent"},
-                     "what it feels: its siblings and their subtrees, its parent's subtree, or everything")}));
+                     "what it feels: its siblings and their subtrees, its parent's subtree, or everything"),
+              choice(field::Region::Report, "report", {"all", "bodies"},
+                     "what it reports: bodies and static shapes, or bodies only")}));
   r.add(type(NodeKind::RangeFinder, "RangeFinder", Category::Sensor, false, "the distance along a ray (+x) to the first thing it hits",
              {f(field::RangeFinder::Length, "length", K::Float, 10.0, "m", "how far it sees", 0, kInf),
               choice(field::RangeFinder::Scope, "scope", {"world", "siblings", "parent"}, "what it sees")}));

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 #include "gdpn/core/assert.h"
 
@@ -280,5 +283,49 @@ bool sameTree(const Node& a, const Node& b) {
 }  // namespace
 
 bool Scene::sameAs(const Scene& other) const { return sameTree(*root_, *other.root_); }
+
+bool isAngular(const Node& n, std::size_t i) {
+  const FieldDesc& f = *n.type().fields[i];
+  if (f.kind == FieldKind::Rotation) return true;
+  if (f.kind != FieldKind::Float) return false;
+  if (f.unit == "deg" || f.unit == "deg/s") return true;
+  if (f.unit != "deg or m" && f.unit != "deg/s or m/s") return false;
+  return n.kind() != NodeKind::Joint || n.choice<JointKind>(field::Joint::Kind) != JointKind::Slider;
+}
+
+namespace {
+
+/// Radians to write for the stored `degrees`: the shortest decimal that converts back to
+/// exactly those degrees, so that 0.1 rad written is 0.1 read and saved (not
+/// 0.10000000000000002), and a file's radians read and saved read back to the same degrees.
+double radiansOf(double degrees) {
+  constexpr double k = 180.0 / M_PI;
+  const double x = degrees * (M_PI / 180.0);
+  for (int digits = 1; digits <= 17; ++digits) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.*g", digits, x);
+    const double y = std::strtod(text, nullptr);
+    if (y * k == degrees) return y;
+  }
+  // no short decimal: the nearest double that does (degrees read from radians always have one)
+  double below = x, above = x;
+  for (int step = 0; step < 8; ++step) {
+    below = std::nextafter(below, -INFINITY);
+    above = std::nextafter(above, INFINITY);
+    if (below * k == degrees) return below;
+    if (above * k == degrees) return above;
+  }
+  return x;
+}
+
+}  // namespace
+
+FieldValue convertAngle(const Node& n, std::size_t i, FieldValue v, AngleUnit unit, bool to_stored) {
+  if (unit == AngleUnit::Degrees || !isAngular(n, i)) return v;
+  auto convert = [to_stored](double& x) { x = to_stored ? x * (180.0 / M_PI) : radiansOf(x); };
+  if (auto* x = std::get_if<double>(&v)) convert(*x);
+  if (auto* r = std::get_if<std::array<double, 4>>(&v)) convert((*r)[3]);
+  return v;
+}
 
 }  // namespace gdpn::scene

@@ -64,7 +64,7 @@ scripts:
   globals: |
     made = 0
     def summary():
-        return {"parts made": made, "rate [1/s]": f"{made / sim.time:.1f}"}
+        return {"parts made": made, "rate [1/s]": f"{made / sim.time:.1f}", "note": "a long figure " * 10}
 pages:
   main:
     places: {p: {tokens: 1}}
@@ -76,12 +76,17 @@ pages:
   auto sim = Simulation::create(*m, diags);
   ASSERT_TRUE(sim) << diags.str();
   const auto r = makeReport(*sim, sim->run({}));
-  ASSERT_EQ(r.figures.size(), 2u);
+  ASSERT_EQ(r.figures.size(), 3u);
   EXPECT_EQ(r.figures[0], (std::pair<std::string, std::string>{"parts made", "5"}));
   EXPECT_EQ(r.figures[1], (std::pair<std::string, std::string>{"rate [1/s]", "1.0"}));
   std::ostringstream text;
   printSummary(text, r);
   EXPECT_NE(text.str().find("the model's figures:\n  parts made: 5\n  rate [1/s]: 1.0\n"), std::string::npos) << text.str();
+  // a long one is wrapped at 100 columns, under itself
+  EXPECT_NE(text.str().find("  note:       a long figure a long figure a long figure a long figure a long figure a long figure a\n"
+                            "              long figure a long figure a long figure a long figure\n"),
+            std::string::npos)
+      << text.str();
   // one that fails says so, and the run's report stands
   auto bad = parseModel("gdpn: 1\nscripts:\n  globals: |\n    def summary():\n        return 3\n", "bad.gdpn.yaml", diags);
   ASSERT_TRUE(bad) << diags.str();

@@ -24,6 +24,8 @@ struct Settings {
   std::uint64_t seed = 1;            ///< seed of the model's random generator
   bool seed_given = false;           ///< whether the file sets seed (kept on save)
   std::optional<double> until;       ///< default end of a run, seconds
+  /// the unit of the angles the file and the scripts write (the scene stores degrees)
+  scene::AngleUnit angles = scene::AngleUnit::Degrees;
   friend bool operator==(const Settings&, const Settings&) = default;
 };
 

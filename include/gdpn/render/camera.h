@@ -28,5 +28,8 @@ Camera framing(const scene::Scene& scene);
 /// `path` is empty, or a framing view when it has none). Null `error` means found; otherwise
 /// it says what is wrong.
 Camera chooseCamera(const scene::Scene& scene, const std::string& path, double t, std::string& error);
+/// "" when `path` is empty or names a Camera node of `scene`; otherwise what is wrong, with
+/// the Camera nodes there are (a check made before a run, not after it).
+std::string cameraProblem(const scene::Scene& scene, const std::string& path);
 
 }  // namespace gdpn::render

@@ -53,7 +53,7 @@ enum class Conveyor : std::uint8_t { Speed, Direction };
 /// GradientField.
 enum class GradientField : std::uint8_t { Width, Depth, Nx, Ny, Vectors };
 /// Region.
-enum class Region : std::uint8_t { Shape, Size, Radius, Height, Length, Scope };
+enum class Region : std::uint8_t { Shape, Size, Radius, Height, Length, Scope, Report };
 /// RangeFinder.
 enum class RangeFinder : std::uint8_t { Length, Scope };
 /// GradientSensor.
@@ -99,6 +99,8 @@ enum class JointKind : std::uint8_t { Hinge, Slider, Ball, Universal, Hinge2, Fi
 enum class JointControl : std::uint8_t { Velocity, Position };
 /// Region `shape`.
 enum class RegionShape : std::uint8_t { Box, Sphere, Cylinder, Cone, Ray };
+/// Region `report`: what it reports, bodies and static shapes or bodies only.
+enum class RegionReport : std::uint8_t { All, Bodies };
 /// Region and RangeFinder `scope`: what a sensor feels.
 enum class Scope : std::uint8_t { World, Siblings, Parent };
 /// Light `kind`.

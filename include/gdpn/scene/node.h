@@ -188,4 +188,17 @@ class Scene {
   std::size_t live_ = 0;
 };
 
+/// The unit a model writes angles in, in its file and in its scripts (`settings: angles`).
+/// The scene stores degrees whatever the model writes.
+enum class AngleUnit : std::uint8_t { Degrees, Radians };
+
+/// Whether field `i` of `n` is an angle (or an angular rate): a field in deg or deg/s, a
+/// Rotation, or a joint's axis-1 field unless the joint is a slider (metres).
+[[nodiscard]] bool isAngular(const Node& n, std::size_t i);
+
+/// Value `v` of field `i` of `n` converted between `unit` and the stored degrees: written to
+/// stored when `to_stored`, else stored to written. Only angles change (a Rotation's angle,
+/// not its axis); with AngleUnit::Degrees nothing does.
+[[nodiscard]] FieldValue convertAngle(const Node& n, std::size_t i, FieldValue v, AngleUnit unit, bool to_stored);
+
 }  // namespace gdpn::scene
