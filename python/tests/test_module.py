@@ -100,7 +100,7 @@ pages:
     model = gdpn.load(path)
     with pytest.raises(gdpn.ScriptError) as info:
         model.run()
-    assert "m.gdpn.yaml:10: error: pre_fire of transition 'main/t' raised an exception" in str(info.value)
+    assert "m.gdpn.yaml:10: error: pre_fire of transition 'main/t' at t = 0 s raised an exception" in str(info.value)
     assert "ValueError: no good" in str(info.value)
 
 

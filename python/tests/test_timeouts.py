@@ -47,7 +47,7 @@ def test_a_sleeping_pre_fire_is_stopped_at_its_line(write_model):
         time.sleep(100)
     """))
     assert run_stopped(path, 0.3) == (
-        f"{path}:10: error: pre_fire of transition 'main/t' ran longer than the script timeout of 0.3 s")
+        f"{path}:10: error: pre_fire of transition 'main/t' at t = 0 s ran longer than the script timeout of 0.3 s")
 
 
 @pytest.mark.parametrize("call", [
@@ -59,7 +59,7 @@ def test_a_blocking_read_in_on_deposit_is_stopped(write_model, call):
     path = write_model(hooks("pass", call))
     line = 14 + call.count("\n")
     assert run_stopped(path, 0.3) == (
-        f"{path}:{line}: error: on_deposit of place 'main/q' slot a0 ran longer than the script timeout of 0.3 s")
+        f"{path}:{line}: error: on_deposit of place 'main/q' slot a0 at t = 1 s ran longer than the script timeout of 0.3 s")
 
 
 def test_a_script_that_swallows_the_stop_is_stopped_all_the_same(write_model):
@@ -71,7 +71,7 @@ def test_a_script_that_swallows_the_stop_is_stopped_all_the_same(write_model):
     """))
     # the stop is located where it came last: in the except clause
     assert run_stopped(path, 0.3) == (
-        f"{path}:12: error: pre_fire of transition 'main/t' ran longer than the script timeout of 0.3 s")
+        f"{path}:12: error: pre_fire of transition 'main/t' at t = 0 s ran longer than the script timeout of 0.3 s")
 
 
 def test_a_sleeping_globals_script_fails_the_load_where_it_sleeps(write_model):

@@ -12,7 +12,7 @@ bool termHolds(const net::Kernel& k, net::TermId id) {
     case net::TermKind::Test: return m >= term.weight;
     case net::TermKind::Inhibitor: return m < term.weight;
     case net::TermKind::Output: {
-      const std::int64_t cap = k.net().placeSlots()[term.place_slot].capacity;
+      const std::int64_t cap = k.capacity(term.place_slot);  // a script may have changed it
       return cap == net::kUnbounded || m + k.reserve(term.place_slot) + term.weight - term.take <= cap;
     }
     case net::TermKind::Condition: return k.condition(id);

@@ -115,6 +115,11 @@ std::string placeProblem(const net::PlaceSpec& p) {
   for (const auto& s : p.sensors) {
     if (s.path.empty()) return "a sensor slot names its sensor node";
   }
+  // a slot's initial tokens are a count or a list of nodes, not both (the file has one key)
+  for (const auto& t : p.tokens) {
+    const bool nodes = std::any_of(p.nodes.begin(), p.nodes.end(), [&](const auto& n) { return n.slot == t.slot; });
+    if (nodes) return "slot " + net::slotName(t.slot) + " holds node tokens: it has no count of its own";
+  }
   return {};
 }
 

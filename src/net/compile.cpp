@@ -65,6 +65,7 @@ class Compiler {
     resolveKinds();
     checkBalance();
     checkPredicates();
+    checkHandlers();
     if (diags_.hasErrors()) return nullptr;
     emit();
     return builder_.freeze();
@@ -566,6 +567,23 @@ class Compiler {
         if (kindOf(placeVertex(a.place, pred.slot)) != SlotKind::Node) {
           diags_.error(pred.expression.loc, "a predicate selects node tokens, but slot " + slotName(pred.slot) +
                                                 " of '" + places_[a.place].name + "' is a control slot");
+        }
+      }
+    }
+  }
+
+  /// A sensor handler (on_enter, on_exit, on_sample, on_change) needs a sensor in its slot.
+  void checkHandlers() {
+    std::set<std::pair<int, int>> told;  // a page type's script is told once, not per instance
+    for (PlaceId p = 0; p < places_.size(); ++p) {
+      for (const auto& sc : places_[p].spec->scripts) {
+        if (kindOf(placeVertex(p, sc.slot)) == SlotKind::Sensor) continue;
+        for (const ScriptKind k : kSlotScripts) {
+          if (k == ScriptKind::OnDeposit || k == ScriptKind::OnRemove || scriptOf(sc, k).empty()) continue;
+          if (!told.emplace(scriptOf(sc, k).loc.line, scriptOf(sc, k).loc.column).second) continue;
+          diags_.error(scriptOf(sc, k).loc, std::string(info(k).key) + " of place '" + places_[p].name +
+                                                "' is a sensor handler, but its slot " + slotName(sc.slot) +
+                                                " holds no sensor (declare one under 'sensors')");
         }
       }
     }

@@ -280,6 +280,24 @@ std::string Kernel::setMarking(PlaceSlotId ps, std::int64_t count) {
   return {};
 }
 
+std::string Kernel::setCapacity(PlaceSlotId ps, std::int64_t capacity) {
+  SlotState& st = slots_[ps];
+  if (capacity == st.capacity) return {};
+  // outputs into a slot declared unbounded are not watched (they always hold): such a slot
+  // keeps no capacity
+  if (net_->placeSlots()[ps].capacity == kUnbounded) return "it has no capacity in the model (give it one to change it)";
+  if (capacity != kUnbounded) {
+    if (capacity < 0) return "a capacity cannot be negative";
+    if (st.m + st.r > capacity) {
+      return "it holds " + std::to_string(st.m) + " and has " + std::to_string(st.r) + " promised: more than " +
+             std::to_string(capacity);
+    }
+  }
+  st.capacity = capacity;
+  update(ps);
+  return {};
+}
+
 void Kernel::setCondition(TermId term, bool holds) {
   if (term >= cond_.size() || static_cast<bool>(cond_[term]) == holds) return;
   cond_[term] = holds;

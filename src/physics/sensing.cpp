@@ -18,6 +18,7 @@ using Form = Primitive::Form;
 struct SensorSpec {
   Primitive volume;                         // None: no geometry (a time sensor, or no sensor)
   scene::Scope scope = scene::Scope::World;
+  bool bodies_only = false;                 // a Region that reports no static shapes
 };
 
 Primitive rayPrimitive(double length) {
@@ -36,12 +37,13 @@ SensorSpec sensorSpec(const Node& n) {
       using F = scene::field::Region;
       const Vec3 e = scene::shapeExtent(n), s = n.world_scale;
       const auto scope = n.choice<scene::Scope>(F::Scope);
+      const bool bodies = n.choice<scene::RegionReport>(F::Report) == scene::RegionReport::Bodies;
       switch (n.choice<scene::RegionShape>(F::Shape)) {
-        case scene::RegionShape::Box: return {boxPrimitive(e, s), scope};
-        case scene::RegionShape::Sphere: return {spherePrimitive(e, s), scope};
-        case scene::RegionShape::Cylinder: return {cylinderPrimitive(e, s, false), scope};
-        case scene::RegionShape::Cone: return {cylinderPrimitive(e, s, true), scope};
-        case scene::RegionShape::Ray: return {rayPrimitive(n.number(F::Length)), scope};
+        case scene::RegionShape::Box: return {boxPrimitive(e, s), scope, bodies};
+        case scene::RegionShape::Sphere: return {spherePrimitive(e, s), scope, bodies};
+        case scene::RegionShape::Cylinder: return {cylinderPrimitive(e, s, false), scope, bodies};
+        case scene::RegionShape::Cone: return {cylinderPrimitive(e, s, true), scope, bodies};
+        case scene::RegionShape::Ray: return {rayPrimitive(n.number(F::Length)), scope, bodies};
       }
       return {};
     }
@@ -94,7 +96,7 @@ dGeomID sensorGeom(dSpaceID space, const Primitive& v) {
 void World::Impl::addSensor(Node& n) {
   const SensorSpec spec = sensorSpec(n);
   if (spec.volume.form == Form::None) return;
-  sensors.push_back({&n, sensorGeom(space, spec.volume), spec.scope, spec.volume});
+  sensors.push_back({&n, sensorGeom(space, spec.volume), spec.scope, spec.bodies_only, spec.volume});
   retagSensors();
 }
 
@@ -104,6 +106,7 @@ void World::Impl::refreshSensor(const Node& n) {
     if (sensor.node != &n) continue;
     const SensorSpec spec = sensorSpec(n);
     sensor.scope = spec.scope;
+    sensor.bodies_only = spec.bodies_only;
     if (spec.volume == sensor.volume) continue;
     // a new shape or size: a new geometry in the same place in the list
     dGeomDestroy(sensor.geom);
@@ -146,7 +149,7 @@ void World::Impl::feel(std::size_t index, dGeomID other) {
       f.distance = c.depth;
       f.hit = reported(*s.node);
     }
-  } else {
+  } else if (!sensor.bodies_only || owner(*s.node)) {
     f.items.push_back(reported(*s.node));
   }
 }
@@ -192,7 +195,9 @@ void World::Impl::sense(std::vector<std::pair<scene::NodeHandle, Feel>>& out) {
     if (sensors[i].ray()) {
       feel.distance = f.distance;
       feel.hit = f.hit ? f.hit->handle() : 0;
-      if (n.kind() == NodeKind::Region && f.hit) feel.items.push_back(f.hit->handle());
+      // a static shape still stops the ray of a Region that reports bodies only
+      const bool reports = f.hit && (!sensors[i].bodies_only || owner(*f.hit));
+      if (n.kind() == NodeKind::Region && reports) feel.items.push_back(f.hit->handle());
     } else {
       std::sort(f.items.begin(), f.items.end(), [](const Node* a, const Node* b) { return a->path() < b->path(); });
       f.items.erase(std::unique(f.items.begin(), f.items.end()), f.items.end());

@@ -87,6 +87,7 @@ struct World::Impl {
     scene::Node* node;
     dGeomID geom;
     scene::Scope scope;  ///< what it feels
+    bool bodies_only;    ///< a Region that reports no static shapes
     Primitive volume;    ///< what `geom` was made as
     /// A ray: a RangeFinder, or a Region of shape ray.
     [[nodiscard]] bool ray() const { return volume.form == Primitive::Form::Ray; }

@@ -290,6 +290,12 @@ struct Engine::Impl : detail::Context {
   std::vector<Compiled> compiled;
   std::unordered_map<std::string, py::object> expressions;  // breakpoint predicates, compiled
   std::vector<py::object> transition_views, place_views, node_views;
+  // bare slot names (`c0`): each construct's scripts see its own sensor slots under their
+  // names, bound in the globals before its script runs and unbound before another's
+  std::unordered_map<std::int64_t, std::vector<std::pair<py::str, py::object>>> bare;  // by owner key
+  std::vector<std::pair<py::str, py::object>> bound;  // the names bound now, with what they hid
+  std::int64_t bound_key = -1;     // whose they are (-1: nobody's)
+  py::object geometries;           // gdpn_script.Geometries: on_enter/on_exit's `item`
   std::unique_ptr<Watchdog> watchdog;
 
   Halt halt = Halt::None;
@@ -329,6 +335,7 @@ struct Engine::Impl : detail::Context {
     return callbacks.plant ? callbacks.plant->resolve(ref) : nullptr;
   }
   physics::World* physicsWorld() const override { return callbacks.physics; }
+  scene::AngleUnit angles() const override { return options.angles; }
   scene::Scene* plant() const override { return callbacks.plant; }
   scene::Node* spawn(const scene::Node& templ, scene::Node& parent, std::optional<core::Vec3> at,
                      std::string& why) override {
@@ -511,7 +518,9 @@ struct Engine::Impl : detail::Context {
   void fail(ScriptKind kind, std::uint32_t id) {
     const auto [file, line] = innermost();
     const std::string where = (file.empty() ? model_path : file) + (line > 0 ? ":" + std::to_string(line) : "");
-    const std::string what = std::string(net::info(kind).key) + " of " + describe(kind, id);
+    // the model time too: a fault late in a long run is found again by running to it
+    const std::string what = std::string(net::info(kind).key) + " of " + describe(kind, id) + " at t = " +
+                             core::formatTime(kernel.now()) + " s";
     if (stoppedLate()) {
       halt = Halt::Timeout;
       message = where + ": error: " + what + " " + lateText();
@@ -527,6 +536,83 @@ struct Engine::Impl : detail::Context {
     message = where + ": error: " + what + " raised an exception\n" + formatPending();
   }
 
+  /// Appends the shapes (geometries) of node `n` to `out`: itself if it is one, else those
+  /// below it that belong to no other body.
+  void shapesOf(const scene::Node& n, py::list& out) {
+    if (n.type().category == scene::Category::Shape) out.append(nodeView(n.handle()));
+    for (const auto& c : n.children()) {
+      if (c->kind() != scene::NodeKind::Body) shapesOf(*c, out);
+    }
+  }
+
+  /// on_enter/on_exit's `item`, as the dissertation has it: the geometries of what is in the
+  /// region, those of `item` (what entered or left) first; its attributes are `item`'s.
+  py::object itemList(scene::NodeHandle item, const std::vector<scene::NodeHandle>& inside) {
+    if (!geometries) geometries = py::module_::import("gdpn_script").attr("Geometries");
+    py::object out = geometries();
+    py::list shapes;
+    if (const scene::Node* n = sceneNode(item)) shapesOf(*n, shapes);
+    for (auto h : inside) {
+      if (h == item) continue;
+      if (const scene::Node* n = sceneNode(h)) shapesOf(*n, shapes);
+    }
+    out.attr("extend")(shapes);
+    out.attr("node") = nodeView(item);
+    return out;
+  }
+
+  /// The key of the construct script (kind, id) belongs to: 2 t + 1 for transition t (its
+  /// arcs' predicates and conditions included), 2 p for place p; -1 for the model.
+  std::int64_t ownerKey(ScriptKind kind, std::uint32_t id) const {
+    switch (net::info(kind).owner) {
+      case net::ScriptOwner::Transition: return 2 * static_cast<std::int64_t>(id) + 1;
+      case net::ScriptOwner::Arc: return 2 * static_cast<std::int64_t>(net.terms()[id].transition) + 1;
+      case net::ScriptOwner::PlaceSlot: return 2 * static_cast<std::int64_t>(net.placeSlots()[id].place);
+      case net::ScriptOwner::Model: return -1;
+    }
+    return -1;
+  }
+
+  /// The sensor slots construct `key` sees by bare name: a place's own; a transition's, those
+  /// of the places its arcs touch (the first arc's where two share a name).
+  const std::vector<std::pair<py::str, py::object>>& bareNames(std::int64_t key) {
+    auto [it, fresh] = bare.try_emplace(key);
+    if (!fresh || !callbacks.plant) return it->second;
+    for (int s = 0; s < net::kSlotCount; ++s) {
+      const auto slot = static_cast<net::SlotId>(s);
+      const std::string* path = nullptr;
+      if (key % 2 == 1) {
+        path = &detail::sensorAround(net, static_cast<net::TransitionId>(key / 2), slot);
+      } else if (const auto ps = net.findPlaceSlot(static_cast<net::PlaceId>(key / 2), slot); ps >= 0) {
+        path = &net.sensorPath(static_cast<net::PlaceSlotId>(ps));
+      }
+      if (!path || path->empty()) continue;
+      if (const scene::Node* sensor = callbacks.plant->find(*path)) {
+        it->second.emplace_back(py::str(net::slotName(slot)), detail::makeSensorView(detail::refTo(*this), sensor->handle()));
+      }
+    }
+    return it->second;
+  }
+
+  /// Binds the bare slot names of the construct script (kind, id) belongs to, unbinding the
+  /// last construct's.
+  void bindBare(ScriptKind kind, std::uint32_t id) {
+    const std::int64_t key = ownerKey(kind, id);
+    if (key == bound_key) return;
+    // what a slot name hid (a global of the model's, a sensor of that name) comes back
+    for (auto it = bound.rbegin(); it != bound.rend(); ++it) {
+      if (it->second) PyDict_SetItem(globals.ptr(), it->first.ptr(), it->second.ptr());
+      else if (PyDict_DelItem(globals.ptr(), it->first.ptr()) < 0) PyErr_Clear();
+    }
+    bound.clear();
+    bound_key = key;
+    if (key < 0) return;
+    for (const auto& [name, view] : bareNames(key)) {
+      bound.emplace_back(name, py::reinterpret_borrow<py::object>(PyDict_GetItem(globals.ptr(), name.ptr())));
+      PyDict_SetItem(globals.ptr(), name.ptr(), view.ptr());
+    }
+  }
+
   /// Runs script `index` for construct (kind, id); returns its value (expressions) or None.
   /// On failure records the halt and returns null.
   /// Calls script `index`; a function gets (self), (self, token) or (self, value) / (self,
@@ -534,6 +620,7 @@ struct Engine::Impl : detail::Context {
   PyObject* call(std::int32_t index, ScriptKind kind, std::uint32_t id, PyObject* self, PyObject* token,
                  PyObject* value = nullptr, PyObject* items = nullptr) {
     const Compiled& c = compiled[static_cast<std::size_t>(index)];
+    bindBare(kind, id);
     watchdog->enter();
     PyObject* result = nullptr;
     if (c.function && items) {
@@ -598,6 +685,9 @@ Engine::~Engine() {
   impl_->transition_views.clear();
   impl_->place_views.clear();
   impl_->node_views.clear();
+  impl_->bare.clear();
+  impl_->bound.clear();
+  impl_->geometries = py::object();
   impl_->sim = py::object();
   impl_->globals.clear();
   impl_->globals = py::dict();
@@ -730,10 +820,20 @@ bool Engine::condition(net::TermId term, scene::NodeHandle sensor) {
   const auto& net = impl_->net;
   const auto& t = net.terms()[term];
   py::object view = detail::makeSensorView(detail::refTo(*impl_), sensor);
-  // the sensor is seen as `value` and under its slot's name ("c0")
-  impl_->globals[py::str(net::slotName(net.placeSlots()[t.place_slot].slot))] = view;
+  // the sensor is seen as `value` and under its slot's name ("c0"), even where another arc
+  // of the transition has a sensor slot of that name; the next script binds afresh
+  impl_->bindBare(ScriptKind::Condition, term);
+  const py::str name(net::slotName(net.placeSlots()[t.place_slot].slot));
+  auto& bound = impl_->bound;
+  if (std::none_of(bound.begin(), bound.end(), [&](const auto& b) { return b.first.equal(name); })) {
+    bound.emplace_back(name, py::reinterpret_borrow<py::object>(PyDict_GetItem(impl_->globals.ptr(), name.ptr())));
+  }
+  impl_->globals[name] = view;
   impl_->globals["value"] = view;
-  return impl_->test(ScriptKind::Condition, term, impl_->transitionView(t.transition).ptr(), nullptr, view.ptr());
+  const bool holds =
+      impl_->test(ScriptKind::Condition, term, impl_->transitionView(t.transition).ptr(), nullptr, view.ptr());
+  impl_->bound_key = -2;
+  return holds;
 }
 
 void Engine::sensorEvent(net::PlaceSlotId ps, ScriptKind kind, scene::NodeHandle sensor, scene::NodeHandle item) {
@@ -747,7 +847,7 @@ void Engine::sensorEvent(net::PlaceSlotId ps, ScriptKind kind, scene::NodeHandle
   impl_->globals["items"] = items;
   impl_->globals["value"] = view;
   const bool with_item = kind == ScriptKind::OnEnter || kind == ScriptKind::OnExit;
-  py::object arg = with_item ? impl_->nodeView(item)
+  py::object arg = with_item ? impl_->itemList(item, r.items)
                              : (kind == ScriptKind::OnSample && !r.items.empty() ? py::object(items) : view);
   impl_->runSensor(index, kind, ps, impl_->placeView(net.placeSlots()[ps].place).ptr(), with_item, items.ptr(),
                    arg.ptr());
@@ -760,7 +860,9 @@ std::vector<std::pair<std::string, std::string>> Engine::summary(std::string& er
     if (!impl_->globals.contains("summary")) return out;
     py::object f = impl_->globals["summary"];
     if (!PyCallable_Check(f.ptr())) return out;
-    // watched like any script: the guard leaves before the exception is formatted
+    // watched like any script: the guard leaves before the exception is formatted; it sees
+    // the model's names, no construct's slots
+    impl_->bindBare(ScriptKind::Globals, 0);
     const Watched watched(*impl_->watchdog);
     py::object result = f();
     if (!py::isinstance<py::dict>(result)) {
@@ -789,7 +891,9 @@ std::optional<bool> Engine::evaluate(const std::string& expression, std::string&
     }
     code = py::reinterpret_steal<py::object>(c);
   }
-  // the script timeout and Ctrl-C reach a predicate as they reach any script
+  // the script timeout and Ctrl-C reach a predicate as they reach any script; it sees the
+  // model's names, no construct's slots
+  impl_->bindBare(ScriptKind::Globals, 0);
   impl_->watchdog->enter();
   PyObject* r = PyEval_EvalCode(code.ptr(), impl_->globals.ptr(), impl_->globals.ptr());
   const int truth = r ? PyObject_IsTrue(r) : -1;

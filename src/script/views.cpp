@@ -2,6 +2,7 @@
 
 #include "views.h"
 
+#include <pybind11/eval.h>
 #include <pybind11/stl.h>
 
 #include <algorithm>
@@ -70,6 +71,46 @@ std::vector<net::NodeRef> tokensOf(const SlotView& s) {
   return out;
 }
 
+/// The path of the sensor a slot holds, or "": a place's sensor slot, or for a transition the
+/// sensor slot of that name on a place its arcs touch (a sensor slot defines the slots of
+/// the arcs and transitions around it).
+const std::string& sensorOf(const SlotView& s) {
+  static const std::string none;
+  const auto& net = s.r.get().netRef();
+  if (!s.of_transition) {
+    const auto ps = placeSlot(s);
+    return ps < 0 ? none : net.sensorPath(static_cast<net::PlaceSlotId>(ps));
+  }
+  return sensorAround(net, s.owner, s.slot);
+}
+
+/// The view of the sensor at `path` that slot `s` holds; AttributeError when it is gone.
+py::object sensorView(const SlotView& s, const std::string& path) {
+  const scene::Node* sensor = s.r.get().plant() ? s.r.get().plant()->find(path) : nullptr;
+  if (!sensor) throw py::attribute_error("sensor '" + path + "' is not in the scene");
+  return makeSensorView(s.r, sensor->handle());
+}
+
+/// The capacity of a place's slot: None when unbounded.
+py::object capacityOf(const SlotView& s) {
+  const auto ps = placeSlot(s);
+  if (s.of_transition || ps < 0) throw py::attribute_error(ownerName(s) + " has no slot " + net::slotName(s.slot) + " with a capacity");
+  const auto c = s.r.get().kernelRef().capacity(static_cast<net::PlaceSlotId>(ps));
+  if (c == net::kUnbounded) return py::none();
+  return py::int_(c);
+}
+
+/// Sets the capacity of a place's slot (None: unbounded); ValueError saying why not.
+void setCapacity(const SlotView& s, const py::object& value) {
+  const auto ps = placeSlot(s);
+  if (s.of_transition || ps < 0) throw py::attribute_error(ownerName(s) + " has no slot " + net::slotName(s.slot) + " with a capacity");
+  const std::int64_t c = value.is_none() ? net::kUnbounded : value.cast<std::int64_t>();
+  const std::string why = s.r.get().kernelRef().setCapacity(static_cast<net::PlaceSlotId>(ps), c);
+  if (!why.empty()) {
+    throw py::value_error("capacity of " + ownerName(s) + " slot " + net::slotName(s.slot) + ": " + why);
+  }
+}
+
 bool isNodeSlot(const SlotView& s) {
   const auto& net = s.r.get().netRef();
   if (s.of_transition) return (net.transitions()[s.owner].node_slot_mask >> s.slot) & 1u;
@@ -124,10 +165,11 @@ const scene::Node& joint(const NodeView& v) {
   return n;
 }
 
-/// A joint's position or rate on axis 1 in the units of the model file: metres for a slider,
-/// degrees otherwise (the physics works in radians).
-double inFileUnits(const scene::Node& joint, double x) {
-  return joint.choice<scene::JointKind>(scene::field::Joint::Kind) == scene::JointKind::Slider ? x : x * 180.0 / M_PI;
+/// A joint's position or rate on axis 1 (radians from the physics) in the units scripts use:
+/// metres for a slider, else degrees or radians as the model's `angles` says.
+double inScriptUnits(const Context& ctx, const scene::Node& joint, double x) {
+  if (joint.choice<scene::JointKind>(scene::field::Joint::Kind) == scene::JointKind::Slider) return x;
+  return ctx.angles() == scene::AngleUnit::Radians ? x : x * 180.0 / M_PI;
 }
 
 py::object related(const NodeView& v, const scene::Node* n) {
@@ -174,15 +216,34 @@ py::object getField(const NodeView& v, const std::string& name) {
         else if constexpr (std::is_same_v<T, std::vector<double>>) return py::cast(x);
         else return py::cast(x);
       },
-      n.value(i));
+      scene::convertAngle(n, i, n.value(i), v.r.get().angles(), false));
 }
 
-/// Sets a field from Python, with the same checks as the model file.
-void setField(const NodeView& v, const std::string& name, const py::object& value) {
-  scene::Node& n = sceneNode(v);
-  const std::size_t i = fieldOf(n, name);
-  const scene::FieldDesc& f = *n.type().fields[i];
-  // Python's value as the field's kind, then the field's own rules (as the model file has them)
+/// What a field of kind `f` takes, for messages ("a number (kg)").
+std::string expected(const scene::FieldDesc& f) {
+  const std::string unit = f.unit.empty() ? "" : " (" + f.unit + ")";
+  switch (f.kind) {
+    case scene::FieldKind::Bool: return "True or False";
+    case scene::FieldKind::Int: return "a whole number" + unit;
+    case scene::FieldKind::Float: return "a number" + unit;
+    case scene::FieldKind::Vec3: return "three numbers (x, y, z)" + unit;
+    case scene::FieldKind::Color: return "a colour (r, g, b)";
+    case scene::FieldKind::Rotation: return "(axis x, axis y, axis z, angle)";
+    case scene::FieldKind::Enum: {
+      std::string list;
+      for (const auto& c : f.choices) list += (list.empty() ? "'" : ", '") + c + "'";
+      return "one of " + list;
+    }
+    case scene::FieldKind::String:
+    case scene::FieldKind::File: return "a string";
+    case scene::FieldKind::FloatList: return "a list of numbers";
+  }
+  return "a value";
+}
+
+/// A Python value as field `f`'s kind (its syntax only); py::cast_error when it is not one.
+scene::FieldValue fromPython(const scene::FieldDesc& f, const py::object& value) {
+  const std::string& name = f.name;
   scene::FieldValue out;
   switch (f.kind) {
     case scene::FieldKind::Bool: out = value.cast<bool>(); break;
@@ -196,7 +257,7 @@ void setField(const NodeView& v, const std::string& name, const py::object& valu
     }
     case scene::FieldKind::Rotation: {
       const auto s = value.cast<py::sequence>();
-      if (py::len(s) != 4) throw py::value_error("'" + name + "' expects (axis x, axis y, axis z, degrees)");
+      if (py::len(s) != 4) throw py::value_error("'" + name + "' expects (axis x, axis y, axis z, angle)");
       out = std::array<double, 4>{s[0].cast<double>(), s[1].cast<double>(), s[2].cast<double>(), s[3].cast<double>()};
       break;
     }
@@ -210,7 +271,28 @@ void setField(const NodeView& v, const std::string& name, const py::object& valu
       break;
     }
   }
-  if (auto bad = f.check(out)) throw py::value_error(bad->message);
+  return out;
+}
+
+/// Sets a field from Python, with the same checks as the model file.
+void setField(const NodeView& v, const std::string& name, const py::object& value) {
+  scene::Node& n = sceneNode(v);
+  const std::size_t i = fieldOf(n, name);
+  const scene::FieldDesc& f = *n.type().fields[i];
+  // Python's value as the field's kind, then the field's own rules (as the model file has them)
+  scene::FieldValue out;
+  try {
+    out = fromPython(f, value);
+  } catch (const py::cast_error&) {
+    throw py::type_error("'" + name + "' of a " + n.type().name + " expects " + expected(f) + ", got " +
+                         py::str(py::type::of(value).attr("__name__")).cast<std::string>() + " " +
+                         py::repr(value).cast<std::string>());
+  }
+  out = scene::convertAngle(n, i, std::move(out), v.r.get().angles(), true);
+  if (auto bad = f.check(out)) {
+    const bool radians = v.r.get().angles() == scene::AngleUnit::Radians && scene::isAngular(n, i);
+    throw py::value_error(bad->message + (radians ? " (in degrees; the model writes angles in radians)" : ""));
+  }
   scene::FieldValue before = n.value(i);
   n.setValue(i, std::move(out));
   // the physics keeps some fields of its own (a joint's kind and control, a sensor's scope);
@@ -229,7 +311,83 @@ py::object slotAttr(Ref r, bool of_transition, std::uint32_t owner, const std::s
   return py::cast(SlotView{std::move(r), of_transition, owner, *slot});
 }
 
+/// The node a script passes where a node is expected: a node, on_enter's `item`, or a slot
+/// holding exactly one node token (the dissertation's `self.b2.attach(self.d0)`); TypeError
+/// otherwise.
+NodeView asNode(const py::object& o, const char* method) {
+  if (py::isinstance<NodeView>(o)) return o.cast<NodeView>();
+  // on_enter's `item` stands for the node that entered
+  if (py::hasattr(o, "node") && py::isinstance<NodeView>(o.attr("node"))) return o.attr("node").cast<NodeView>();
+  if (py::isinstance<SlotView>(o)) {
+    const auto& s = o.cast<const SlotView&>();
+    const auto tokens = tokensOf(s);
+    if (tokens.size() == 1) return NodeView{s.r, tokens.front()};
+    throw py::type_error(std::string(method) + "(): " + ownerName(s) + " slot " + net::slotName(s.slot) + " holds " +
+                         std::to_string(tokens.size()) + " node tokens; pass one node (" + net::slotName(s.slot) +
+                         "[0], say)");
+  }
+  throw py::type_error(std::string(method) + "() expects a node or a slot holding one, got " +
+                       py::str(py::type::of(o).attr("__name__")).cast<std::string>());
+}
+
+/// What a node stands for in attach and detach: a joint the body it moves (its child Body, as
+/// the dissertation's effector), any other node itself.
+const scene::Node& movedBy(const scene::Node& n) {
+  if (n.kind() != scene::NodeKind::Joint) return n;
+  for (const auto& c : n.children()) {
+    if (c->kind() == scene::NodeKind::Body) return *c;
+  }
+  return n;
+}
+
+/// A vector given as one sequence (x, y, z) or as three numbers, checked as physicsVec does.
+core::Vec3 vectorArgs(const py::args& args, const char* method, double bound, const char* unit) {
+  if (args.size() == 1) return physicsVec(args[0].cast<py::sequence>(), method, bound, unit);
+  if (args.size() == 3) return physicsVec(py::make_tuple(args[0], args[1], args[2]), method, bound, unit);
+  throw py::type_error(std::string(method) + "() takes (x, y, z) or three numbers, got " +
+                       std::to_string(args.size()) + " arguments");
+}
+
+/// A physics method of a node that takes one vector.
+struct VectorMethod {
+  const char* name;
+  const char* doc;
+  double bound;       ///< the largest size of a component
+  const char* unit;
+  void (physics::World::*apply)(const scene::Node&, core::Vec3);
+};
+
+/// gdpn's names, and the dissertation's (camelCase, three numbers or one sequence alike). The
+/// dissertation's setForce is ODE's dBodySetForce: a force for the next step only.
+const VectorMethod kVectorMethods[] = {
+    {"set_velocity", "sets its body's linear velocity, m/s", physics::kMaxSpeed, "m/s", &physics::World::setVelocity},
+    {"setVelocity", "the dissertation's set_velocity", physics::kMaxSpeed, "m/s", &physics::World::setVelocity},
+    {"set_force", "a force on its body, N, world frame, applied every step until changed", physics::kMaxForce, "N",
+     &physics::World::setForce},
+    {"add_force", "a force on its body, N, world frame, for the next step only", physics::kMaxForce, "N",
+     &physics::World::addForce},
+    {"addForce", "the dissertation's add_force", physics::kMaxForce, "N", &physics::World::addForce},
+    {"setForce", "the dissertation's setForce: a force on its body, N, world frame, for the next step only",
+     physics::kMaxForce, "N", &physics::World::addForce},
+    {"set_torque", "a torque on its body, N m, world frame, applied every step until changed", physics::kMaxForce,
+     "N m", &physics::World::setTorque},
+};
+
 }  // namespace
+
+const std::string& sensorAround(const net::Net& net, net::TransitionId t, net::SlotId slot) {
+  static const std::string none;
+  // a slot the transition's own arcs carry tokens in is its own
+  for (const auto& term : net.termsOf(t)) {
+    if (net.placeSlots()[term.place_slot].slot == slot && net.sensorPath(term.place_slot).empty()) return none;
+  }
+  for (const auto& term : net.termsOf(t)) {
+    const auto ps = net.findPlaceSlot(net.placeSlots()[term.place_slot].place, slot);
+    if (ps < 0) continue;
+    if (const auto& path = net.sensorPath(static_cast<net::PlaceSlotId>(ps)); !path.empty()) return path;
+  }
+  return none;
+}
 
 Context& Ref::get() const {
   if (!alive || !*alive) throw std::runtime_error("this view's model is gone");
@@ -242,9 +400,41 @@ void registerViews() {
   done = true;
   py::module_ m = py::module_::import("types").attr("ModuleType")("gdpn_script");
   py::module_::import("sys").attr("modules")["gdpn_script"] = m;
+  // on_enter/on_exit's `item`: the dissertation's list of the geometries in the region, the
+  // ones of what entered (or left) first; attributes read that node (`item.name`)
+  py::exec(R"(
+class Geometries(list):
+    """The geometries in a region, those of the node that entered or left first.
+    Attributes read that node: item.name, item.velocity; item[0] is its first geometry."""
+    __slots__ = ("node",)
 
-  py::class_<NodeView>(m, "Node", "A node token: a reference to a scene node, with its fields as attributes")
-      .def_property_readonly("name", [](const NodeView& v) { return v.r.get().nodeName(v.ref); },
+    def __getattr__(self, name):
+        return getattr(object.__getattribute__(self, "node"), name)
+
+    # it stands for its node: equal to it, hashed like it, printed like it
+    def __eq__(self, other):
+        return self.node == (other.node if isinstance(other, Geometries) else other)
+
+    def __ne__(self, other):
+        return not self == other
+
+    def __hash__(self):
+        return hash(self.node)
+
+    def __repr__(self):
+        return repr(self.node)
+)",
+           m.attr("__dict__"));
+
+  py::class_<NodeView> node_class(m, "Node", "A node token: a reference to a scene node, with its fields as attributes");
+  // the physics methods that take a vector, under gdpn's names and the dissertation's
+  for (const auto& method : kVectorMethods) {
+    auto call = [method](const NodeView& v, const py::args& args) {
+      (world(v).*method.apply)(sceneNode(v), vectorArgs(args, method.name, method.bound, method.unit));
+    };
+    node_class.def(method.name, call, method.doc);
+  }
+  node_class.def_property_readonly("name", [](const NodeView& v) { return v.r.get().nodeName(v.ref); },
                              "the node's path")
       .def_property_readonly("ref", [](const NodeView& v) { return v.ref; }, "the node's handle")
       .def_property_readonly("type", [](const NodeView& v) { return sceneNode(v).type().name; })
@@ -277,38 +467,31 @@ void registerViews() {
                                return py::make_tuple(u.x, u.y, u.z);
                              },
                              "its body's linear velocity, m/s")
-      .def("set_velocity", [](const NodeView& v, const py::sequence& u) { world(v).setVelocity(sceneNode(v), physicsVec(u, "set_velocity", physics::kMaxSpeed, "m/s")); },
-           "sets its body's linear velocity, m/s")
-      .def("set_force", [](const NodeView& v, const py::sequence& f) { world(v).setForce(sceneNode(v), physicsVec(f, "set_force", physics::kMaxForce, "N")); },
-           "a force on its body, N, world frame, applied every step until changed")
-      .def("add_force", [](const NodeView& v, const py::sequence& f) { world(v).addForce(sceneNode(v), physicsVec(f, "add_force", physics::kMaxForce, "N")); },
-           "a force on its body, N, world frame, for the next step only")
-      .def("set_torque", [](const NodeView& v, const py::sequence& t) { world(v).setTorque(sceneNode(v), physicsVec(t, "set_torque", physics::kMaxForce, "N m")); },
-           "a torque on its body, N m, world frame, applied every step until changed")
-      .def("attach", [](const NodeView& v, const NodeView& other) {
-             return world(v).attach(sceneNode(v), sceneNode(other));
-           }, "joins this node's body to the other's with a fixed joint; False if already joined")
-      .def("detach", [](const NodeView& v, const NodeView& other) {
-             return world(v).detach(sceneNode(v), sceneNode(other));
+      .def("attach", [](const NodeView& v, const py::object& other) {
+             return world(v).attach(movedBy(sceneNode(v)), movedBy(sceneNode(asNode(other, "attach"))));
+           }, "joins this node's body to the other's (a node, or a slot holding one) with a fixed joint; "
+              "False if already joined")
+      .def("detach", [](const NodeView& v, const py::object& other) {
+             return world(v).detach(movedBy(sceneNode(v)), movedBy(sceneNode(asNode(other, "detach"))));
            }, "breaks the joint attach() made; False if there is none")
       .def_property_readonly("angle",
                              [](const NodeView& v) {
                                const auto& n = joint(v);
-                               return inFileUnits(n, world(v).jointPosition(n));
+                               return inScriptUnits(v.r.get(), n, world(v).jointPosition(n));
                              },
-                             "a joint's position on axis 1: degrees, or metres for a slider")
+                             "a joint's position on axis 1: degrees (radians with `angles: radians`), or metres for a slider")
       .def_property_readonly("rate",
                              [](const NodeView& v) {
                                const auto& n = joint(v);
-                               return inFileUnits(n, world(v).jointRate(n));
+                               return inScriptUnits(v.r.get(), n, world(v).jointRate(n));
                              },
-                             "a joint's rate on axis 1: deg/s, or m/s for a slider")
+                             "a joint's rate on axis 1: deg/s (rad/s with `angles: radians`), or m/s for a slider")
       .def("spawn",
            [](const NodeView& v, const py::object& templ, const py::object& at) {
              auto& ctx = v.r.get();
              const scene::Node* source = nullptr;
-             if (py::isinstance<NodeView>(templ)) {
-               source = &sceneNode(templ.cast<const NodeView&>());
+             if (py::isinstance<NodeView>(templ) || py::isinstance<SlotView>(templ)) {
+               source = &sceneNode(asNode(templ, "spawn"));
              } else if (ctx.plant()) {
                source = ctx.plant()->find(templ.cast<std::string>());
              }
@@ -329,7 +512,12 @@ void registerViews() {
       .def("__setattr__", [](const NodeView& v, const std::string& name, const py::object& value) {
         setField(v, name, value);
       })
-      .def("__eq__", [](const NodeView& a, const NodeView& b) { return a.ref == b.ref; })
+      .def("__eq__",
+           [](const NodeView& a, const py::object& b) -> py::object {
+             // another kind of object: Python asks it next (on_enter's `item` compares as its node)
+             if (!py::isinstance<NodeView>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+             return py::bool_(a.ref == b.cast<const NodeView&>().ref);
+           })
       .def("__hash__", [](const NodeView& v) { return std::hash<net::NodeRef>{}(v.ref); })
       .def("__repr__", [](const NodeView& v) { return "<node " + v.r.get().nodeName(v.ref) + ">"; });
 
@@ -345,7 +533,8 @@ void registerViews() {
            },
            "sets a control slot's count (places only)")
       .def("add",
-           [](const SlotView& s, const NodeView& node) {
+           [](const SlotView& s, const py::object& what) {
+             const NodeView node = asNode(what, "add");
              if (s.of_transition) throw py::type_error("add node tokens to a place's slot");
              const auto ps = placeSlot(s);
              if (ps < 0) throw py::attribute_error(ownerName(s) + " has no slot " + net::slotName(s.slot));
@@ -353,13 +542,28 @@ void registerViews() {
              if (!why.empty()) throw py::value_error(ownerName(s) + " slot " + net::slotName(s.slot) + ": " + why);
            },
            "puts a node token at the end of a place's node slot (a spawned node, say)")
-      .def("__len__", [](const SlotView& s) { return count(s); })
+      .def("__len__",
+           [](const SlotView& s) -> std::int64_t {
+             if (const auto& path = sensorOf(s); !path.empty()) return static_cast<std::int64_t>(py::len(sensorView(s, path)));
+             return count(s);
+           })
+      .def("__contains__",
+           [](const SlotView& s, const py::object& node) -> bool {
+             if (const auto& path = sensorOf(s); !path.empty()) return sensorView(s, path).contains(node);
+             const auto tokens = tokensOf(s);
+             return py::isinstance<NodeView>(node) &&
+                    std::find(tokens.begin(), tokens.end(), node.cast<const NodeView&>().ref) != tokens.end();
+           })
       .def("__getitem__",
            [](const SlotView& s, std::int64_t i) {
              const auto tokens = tokensOf(s);
              const auto n = static_cast<std::int64_t>(tokens.size());
              if (i < 0) i += n;
-             if (i < 0 || i >= n) throw py::index_error("slot index out of range");
+             if (i < 0 || i >= n) {
+               throw py::index_error(ownerName(s) + " slot " + net::slotName(s.slot) + " holds " + std::to_string(n) +
+                                     " node token" + (n == 1 ? "" : "s") + ": no [" + std::to_string(i < 0 ? i - n : i) +
+                                     "]");
+             }
              return s.r.get().nodeView(tokens[static_cast<std::size_t>(i)]);
            })
       .def("__iter__",
@@ -370,15 +574,7 @@ void registerViews() {
            })
       .def("__getattr__",
            [](const SlotView& s, const std::string& name) -> py::object {
-             if (!s.of_transition) {
-               const auto ps = placeSlot(s);
-               const auto& path = ps < 0 ? std::string() : s.r.get().netRef().sensorPath(static_cast<net::PlaceSlotId>(ps));
-               if (!path.empty()) {
-                 const scene::Node* sensor = s.r.get().plant() ? s.r.get().plant()->find(path) : nullptr;
-                 if (!sensor) throw py::attribute_error("sensor '" + path + "' is not in the scene");
-                 return makeSensorView(s.r, sensor->handle()).attr(name.c_str());
-               }
-             }
+             if (const auto& path = sensorOf(s); !path.empty()) return sensorView(s, path).attr(name.c_str());
              const auto tokens = tokensOf(s);
              if (tokens.empty()) {
                throw py::attribute_error(ownerName(s) + " slot " + net::slotName(s.slot) +
@@ -386,8 +582,10 @@ void registerViews() {
              }
              return s.r.get().nodeView(tokens.front()).attr(name.c_str());
            })
+      .def_property_readonly("capacity", &capacityOf, "a place's slot's capacity, tokens; None when unbounded")
       .def("__setattr__",
            [](const SlotView& s, const std::string& name, const py::object& value) {
+             if (name == "capacity") return setCapacity(s, value);
              const auto tokens = tokensOf(s);
              if (tokens.empty()) {
                throw py::attribute_error(ownerName(s) + " slot " + net::slotName(s.slot) +
@@ -467,6 +665,10 @@ void registerViews() {
 
   py::class_<PlaceView>(m, "Place", "A place, as scripts see it")
       .def_property_readonly("name", [](const PlaceView& v) { return v.r.get().netRef().places()[v.p].name; })
+      .def_property(
+          "capacity", [](const PlaceView& v) { return capacityOf(SlotView{v.r, false, v.p, net::kDefaultSlot}); },
+          [](const PlaceView& v, const py::object& c) { setCapacity(SlotView{v.r, false, v.p, net::kDefaultSlot}, c); },
+          "the capacity of slot a0, tokens; None when unbounded; settable when the model gives one")
       .def("__getattr__", [](const PlaceView& v, const std::string& name) { return slotAttr(v.r, false, v.p, name); })
       .def("__repr__", [](const PlaceView& v) { return "<place " + v.r.get().netRef().places()[v.p].name + ">"; });
 

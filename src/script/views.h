@@ -37,6 +37,8 @@ class Context {
                              std::string& why) = 0;
   /// Deletes a node, its subtree and their tokens.
   virtual void erase(scene::Node& node) = 0;
+  /// The unit of the angles scripts read and write.
+  virtual scene::AngleUnit angles() const = 0;
   /// The reading of sensor node `sensor`.
   virtual const sensors::Reading& reading(scene::NodeHandle sensor) const = 0;
 
@@ -54,6 +56,10 @@ struct Ref {
 
 /// A handle on `ctx` for a new view.
 inline Ref refTo(Context& ctx) { return {&ctx, ctx.alive}; }
+
+/// The path of the sensor transition `t` sees in `slot` (or ""): the sensor slot of that name
+/// on a place its arcs touch (the first arc's), unless its own arcs carry tokens in `slot`.
+const std::string& sensorAround(const net::Net& net, net::TransitionId t, net::SlotId slot);
 
 /// Registers the view classes with Python (once per process).
 void registerViews();

@@ -171,6 +171,15 @@ TEST(NetEdit, APlaceOrTransitionIsSetWholeAndBadValuesAreRefused) {
   EXPECT_EQ(run(*doc, e), "");
   EXPECT_NE(doc->text().find("skip:\n        duration: {normal: [2, 0.5]}\n        priority: 4\n"), std::string::npos) << doc->text();
   EXPECT_EQ(doc->history().undoLabel(), "edit transition station/skip");
+  // a slot's initial tokens are nodes or a count: P2's box slot takes no count beside its box
+  const auto& places = findPage(doc->editableNet(), "factory")->places;
+  auto p2 = *std::find_if(places.begin(), places.end(), [](const auto& x) { return x.name == "P2"; });
+  setSlotCount(p2.tokens, *net::parseSlot("d0"), 2);
+  auto set = makeNetEdit(NetEditKind::SetPlace, "factory", "P2");
+  set.place = p2;
+  const auto before = doc->text();
+  EXPECT_EQ(run(*doc, set), "slot d0 holds node tokens: it has no count of its own");
+  EXPECT_EQ(doc->text(), before);
 }
 
 /// Random edits, good and bad, on every page and page type of the factory.

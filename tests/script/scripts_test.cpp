@@ -291,7 +291,10 @@ pages:
   const auto outcome = sim->run({});
   EXPECT_EQ(outcome.reason, StopReason::ScriptError);
   EXPECT_EQ(outcome.steps, 3);  // the exception came in step 3's completion phase
-  EXPECT_EQ(outcome.message.rfind(m.path() + ":11: error: post_fire of transition 'main/T' raised an exception", 0), 0u)
+  // the message says the model time: a fault late in a long run is found again by running to it
+  EXPECT_EQ(outcome.message.rfind(m.path() + ":11: error: post_fire of transition 'main/T' at t = 3 s raised an exception",
+                                  0),
+            0u)
       << outcome.message;
   EXPECT_NE(outcome.message.find("Traceback (most recent call last)"), std::string::npos);
   EXPECT_NE(outcome.message.find("ZeroDivisionError: division by zero"), std::string::npos);
@@ -299,6 +302,45 @@ pages:
   EXPECT_NE(trace.str().find("\"ev\":\"error\""), std::string::npos);
   // the run stopped at the end of the completion phase: nothing started in step 3
   EXPECT_EQ(trace.str().find("{\"step\":3,\"t\":3,\"ev\":\"start\""), std::string::npos);
+}
+
+// Mistakes in scripts are told in the model's terms: the field, what it takes and what it
+// got; the slot, what it holds and the index asked for.
+TEST(ScriptErrors, MessagesNameTheFieldOrSlotAndWhatWasWrong) {
+  ScriptModel m(R"Y(gdpn: 1
+scene:
+  - World: {}
+  - Body: {name: b, children: [{Sphere: {}}]}
+  - Joint: {name: j, children: [{Body: {children: [{Sphere: {}}]}}]}
+pages:
+  main:
+    places:
+      P: {tokens: {d0: [b]}}
+    transitions:
+      T:
+        pre_fire: |
+          for attempt in (lambda: setattr(sim.node("b"), "mass", "heavy"),
+                          lambda: setattr(sim.node("j"), "kind", 3),
+                          lambda: setattr(sim.node("b"), "mass", (1, 2)),
+                          lambda: self.d0[1],
+                          lambda: self.d0[-2]):
+              try:
+                  attempt()
+              except (TypeError, IndexError) as e:
+                  sim.log(type(e).__name__, e)
+    arcs:
+      - {from: P, to: T, weight: {d0: 1}}
+      - {from: T, to: P, weight: {d0: 1}}
+)Y");
+  const auto [logs, outcome] = runLogs(m, {0.0, std::nullopt});
+  EXPECT_EQ(logs, (std::vector<std::string>{
+                      "TypeError 'mass' of a Body expects a number (kg), got str 'heavy'",
+                      "TypeError 'kind' of a Joint expects one of 'hinge', 'slider', 'ball', 'universal', 'hinge2', "
+                      "'fixed', got int 3",
+                      "TypeError 'mass' of a Body expects a number (kg), got tuple (1, 2)",
+                      "IndexError transition 'main/T' slot d0 holds 1 node token: no [1]",
+                      "IndexError transition 'main/T' slot d0 holds 1 node token: no [-2]",
+                  }));
 }
 
 TEST(ScriptErrors, TheTimeoutStopsAnEndlessScript) {
@@ -320,7 +362,7 @@ pages:
   ASSERT_TRUE(sim) << diags.str();
   const auto outcome = sim->run({});
   EXPECT_EQ(outcome.reason, StopReason::ScriptError);
-  EXPECT_NE(outcome.message.find("pre_fire of transition 'main/T' ran longer than the script timeout of 0.2 s"),
+  EXPECT_NE(outcome.message.find("pre_fire of transition 'main/T' at t = 0 s ran longer than the script timeout of 0.2 s"),
             std::string::npos)
       << outcome.message;
 }

@@ -97,7 +97,7 @@ void expectTimedOut(const Timed& t, const std::string& where, const std::string&
 TEST(ScriptTimeout, StopsAPreFireSleepingInACall) {
   ScriptModel m(hooks("sim.log('start')\nimport time\ntime.sleep(100)"));
   const auto t = runTimed(m, 0.3);
-  expectTimedOut(t, m.path() + ":11", "pre_fire of transition 'main/T'", "0.3");
+  expectTimedOut(t, m.path() + ":11", "pre_fire of transition 'main/T' at t = 0 s", "0.3");
   EXPECT_EQ(testing::logLines(t.trace), std::vector<std::string>{"start"});
 }
 
@@ -116,10 +116,10 @@ TEST(ScriptTimeout, StopsAnOnDepositBlockedReadingOrWaiting) {
     if (where.empty()) {
       // the wait is inside threading.py: the stop is located there
       EXPECT_THAT(t.outcome.message, HasSubstr("threading.py:"));
-      EXPECT_THAT(t.outcome.message, HasSubstr(": error: " + late("on_deposit of place 'main/Q' slot a0", "0.3")));
+      EXPECT_THAT(t.outcome.message, HasSubstr(": error: " + late("on_deposit of place 'main/Q' slot a0 at t = 1 s", "0.3")));
       EXPECT_LT(t.seconds, 4.0);
     } else {
-      expectTimedOut(t, where, "on_deposit of place 'main/Q' slot a0", "0.3");
+      expectTimedOut(t, where, "on_deposit of place 'main/Q' slot a0 at t = 1 s", "0.3");
     }
   }
 }
@@ -137,7 +137,7 @@ TEST(ScriptTimeout, StopsAScriptThatSwallowsTheStop) {
     const auto t = runTimed(m, 0.3);
     EXPECT_EQ(t.outcome.reason, StopReason::ScriptError);
     EXPECT_EQ(t.outcome.message.rfind(m.path() + ":", 0), 0u) << t.outcome.message;
-    EXPECT_THAT(t.outcome.message, HasSubstr(": error: " + late("pre_fire of transition 'main/T'", "0.3")));
+    EXPECT_THAT(t.outcome.message, HasSubstr(": error: " + late("pre_fire of transition 'main/T' at t = 0 s", "0.3")));
     EXPECT_LT(t.seconds, 4.0);
     EXPECT_THAT(t.trace, HasSubstr("\"ev\":\"error\""));
   }
@@ -250,7 +250,7 @@ TEST(ScriptTimeout, RunStopsASwallowingScriptAndKeepsTheTrace) {
   const auto [code, out] = cli("run -q --script-timeout 0.3 --trace '" + trace + "' '" + m.path() + "'", m);
   EXPECT_LT(since(start), 4.0);
   EXPECT_EQ(code, 1);
-  EXPECT_THAT(out, HasSubstr(m.path() + ":13: error: " + late("pre_fire of transition 'main/T'", "0.3")));
+  EXPECT_THAT(out, HasSubstr(m.path() + ":13: error: " + late("pre_fire of transition 'main/T' at t = 0 s", "0.3")));
   std::ifstream in(trace);
   std::stringstream text;
   text << in.rdbuf();

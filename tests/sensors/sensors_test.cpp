@@ -97,6 +97,36 @@ TEST(Sensors, ARegionFeelsOnlyItsScope) {
   EXPECT_EQ(items[0], rig.handle("cell/mine"));
 }
 
+TEST(Sensors, ARegionThatReportsBodiesOnlyLeavesStaticShapesOut) {
+  // a box region holds a static shelf and a body; a ray region hits a static wall before a
+  // body: reporting bodies only, the box region reports the body, and the ray nothing (the
+  // wall still stops it)
+  const std::string scene = R"(
+  - World: {gravity: [0, 0, 0]}
+  - Region: {name: box, size: [2, 2, 2], report: $R}
+  - Transform: {translation: [0.5, 0, 0], children: [{Cube: {name: shelf, size: [0.2, 0.2, 0.2]}}]}
+  - Transform: {name: at, translation: [-0.5, 0, 0], children: [{Body: {name: b, children: [{Cube: {size: [0.2, 0.2, 0.2]}}]}}]}
+  - Transform: {translation: [0, 5, 0], children: [{Region: {name: ray, shape: ray, length: 10, report: $R}}]}
+  - Transform: {translation: [2, 5, 0], children: [{Cube: {name: wall, size: [0.2, 2, 2]}}]}
+  - Transform: {name: far, translation: [5, 5, 0], children: [{Body: {name: b, children: [{Cube: {size: [0.2, 0.2, 0.2]}}]}}]}
+)";
+  for (const std::string report : {"all", "bodies"}) {
+    std::string text = scene;
+    for (auto at = text.find("$R"); at != std::string::npos; at = text.find("$R")) text.replace(at, 2, report);
+    Rig rig(text);
+    rig.hub->update(0);
+    const auto& box = rig.hub->reading(rig.handle("box")).items;
+    const auto& ray = rig.hub->reading(rig.handle("#4/ray")).items;
+    if (report == "all") {
+      EXPECT_EQ(box, (std::vector<scene::NodeHandle>{rig.handle("#2/shelf"), rig.handle("at/b")}));
+      EXPECT_EQ(ray, (std::vector<scene::NodeHandle>{rig.handle("#5/wall")}));
+    } else {
+      EXPECT_EQ(box, (std::vector<scene::NodeHandle>{rig.handle("at/b")}));
+      EXPECT_TRUE(ray.empty());
+    }
+  }
+}
+
 TEST(Sensors, ATimeSensorTicksAtItsPeriod) {
   Rig rig("  - TimeSensor: {name: clock, period: 0.5, offset: 0.25}\n");
   std::vector<double> ticks;

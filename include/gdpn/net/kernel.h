@@ -101,6 +101,12 @@ class Kernel {
   /// not: a node slot, a negative count, or no room (count + reserve > capacity). Observers
   /// see the change as a deposit or a removal; on_deposit/on_remove scripts do not run.
   std::string setMarking(PlaceSlotId ps, std::int64_t count);
+  /// The capacity of place slot `ps`, tokens (kUnbounded when none).
+  [[nodiscard]] std::int64_t capacity(PlaceSlotId ps) const { return slots_[ps].capacity; }
+  /// Sets the capacity of place slot `ps` (a script's `capacity = n`; kUnbounded for none).
+  /// Returns "" or why not: a slot the model left unbounded, a negative capacity, or less than
+  /// the tokens there and the room promised to occurring transitions. Transitions waiting for room are re-examined.
+  std::string setCapacity(PlaceSlotId ps, std::int64_t capacity);
   /// Sets whether condition term `term` holds (the sensor layer evaluates conditions when
   /// their sensor changes). Conditions start out not holding.
   void setCondition(TermId term, bool holds);

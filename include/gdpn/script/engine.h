@@ -28,6 +28,8 @@ struct EngineOptions {
   /// how long a call that does not stop when told (stuck in C code) is given after its
   /// timeout before the process ends with the message on stderr (0: never), seconds
   double grace_s = 2.0;
+  /// the unit of the angles scripts read and write (joint fields, `angle`, `rate`)
+  scene::AngleUnit angles = scene::AngleUnit::Degrees;
 };
 
 /// What scripts reach outside the net.

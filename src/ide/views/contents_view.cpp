@@ -94,8 +94,10 @@ void placeContents(const session::Session& session, net::PlaceId p, nlohmann::js
         ImGui::BeginTooltip();
         ImGui::Text("%s: %s slot", name.c_str(), net::slotKindName(kind));
         if (sensor) ImGui::Text("reads %s", net.sensorPath(static_cast<net::PlaceSlotId>(ps)).c_str());
-        else ImGui::Text("%lld token(s)%s", static_cast<long long>(tokens),
-                         info.capacity == net::kUnbounded ? "" : (", capacity " + std::to_string(info.capacity)).c_str());
+        // the capacity now: a script may have changed it
+        const auto capacity = sim.kernel().capacity(static_cast<net::PlaceSlotId>(ps));
+        if (!sensor) ImGui::Text("%lld token(s)%s", static_cast<long long>(tokens),
+                                 capacity == net::kUnbounded ? "" : (", capacity " + std::to_string(capacity)).c_str());
         for (const auto& n : names) ImGui::BulletText("%s", n.c_str());
         ImGui::EndTooltip();
       }

@@ -1,0 +1,2 @@
+self.b0.vel1 = 2.0
+self.b2.attach(self.d0)

@@ -1,0 +1,1 @@
+self.b2.detach(self.d0)
