@@ -66,13 +66,13 @@ TEST_F(HeadlessIde, OpensTheFactoryInEditModeWithEveryView) {
   EXPECT_EQ(r["run"]["mode"], "edit");
   EXPECT_EQ(r["run"]["steps"], 0);
   EXPECT_EQ(r["net_view"]["page"], "factory");
-  EXPECT_EQ(r["net_view"]["places"], 9);
-  EXPECT_EQ(r["net_view"]["transitions"], 9);
-  EXPECT_GE(r["net_view"]["drawn"].get<int>(), 9 + 9 + 2);  // and the arcs
+  EXPECT_EQ(r["net_view"]["places"], 13);
+  EXPECT_EQ(r["net_view"]["transitions"], 12);
+  EXPECT_GE(r["net_view"]["drawn"].get<int>(), 13 + 12 + 2);  // and the arcs
   EXPECT_EQ(r["net_view"]["tokens"]["factory/buffer"], 23);  // the initial marking: boxes b01 to b23
   EXPECT_GT(r["world"]["triangles"].get<int>(), 100);
   EXPECT_GT(r["tree"]["nodes_shown"].get<int>(), 10);
-  EXPECT_EQ(r["toolbar"]["transitions"].get<int>(), 23);
+  EXPECT_EQ(r["toolbar"]["transitions"].get<int>(), 38);  // 12 on the page, 13 in each station
   EXPECT_TRUE(r["diagnostics"].empty());
 }
 
@@ -705,7 +705,7 @@ TEST_F(HeadlessIde, AClickInTheNetViewSelectsAndADoubleClickGoesIntoAnInstance) 
   EXPECT_GT(r["net_view"]["places"].get<int>(), 0);
 }
 
-TEST_F(HeadlessIde, TheContentsOfP1AreItsThreeJointTokensAndDeliverShowsItsScripts) {
+TEST_F(HeadlessIde, TheContentsOfP1AreItsThreeJointTokensAndDropShowsItsScripts) {
   auto r = replay("- select: factory/P1\n");
   const auto slots = r["inspector"]["contents"]["slots"];
   ASSERT_EQ(slots.size(), 3u) << slots.dump();
@@ -713,20 +713,20 @@ TEST_F(HeadlessIde, TheContentsOfP1AreItsThreeJointTokensAndDeliverShowsItsScrip
   EXPECT_EQ(slots["b0"]["names"], nlohmann::json::array({"arm/turn"}));
   EXPECT_EQ(slots["b2"]["names"], nlohmann::json::array({"arm/turn/column/lift/boom/wrist"}));
   EXPECT_EQ(r["inspector"]["tokens"], 3);
-  r = replay("- select: factory/deliver\n");
+  r = replay("- select: factory/drop\n");
   const auto contents = r["inspector"]["contents"];
-  EXPECT_EQ(contents["duration"], "2 s");
+  EXPECT_EQ(contents["duration"], "1 s");
   ASSERT_EQ(contents["scripts"].size(), 2u) << contents.dump();
   EXPECT_EQ(contents["scripts"][0]["what"], "pre_fire");
-  EXPECT_EQ(contents["scripts"][0]["lines"], 3);
-  EXPECT_EQ(contents["scripts"][1]["what"], "in_fire");
+  EXPECT_EQ(contents["scripts"][0]["lines"], 2);
+  EXPECT_EQ(contents["scripts"][1]["what"], "post_fire");
 }
 
 TEST_F(HeadlessIde, TheMiniViewShowsTheNetOverTheWorldAndAClickThereSelects) {
   EXPECT_EQ(replay("[]")["mini_view"]["shown"], false);  // closed until asked for
   const auto r = replay("- press: mini-view\n");
   ASSERT_EQ(r["mini_view"]["shown"], true);
-  EXPECT_GE(r["mini_view"]["drawn"].get<int>(), 9 + 9 + 2);
+  EXPECT_GE(r["mini_view"]["drawn"].get<int>(), 13 + 12 + 2);
   const auto p1 = r["mini_view"]["at"]["factory/P1"];
   const auto world = r["layout"]["world"];  // x, y, w, h
   EXPECT_GT(p1[0].get<double>(), world[0].get<double>());
