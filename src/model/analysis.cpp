@@ -7,7 +7,9 @@
 #include <chrono>
 #include <cstdio>
 #include <limits>
+#include <sstream>
 #include <string_view>
+#include <tuple>
 
 #include "gdpn/core/text.h"
 #include "gdpn/net/kernel.h"
@@ -42,6 +44,35 @@ std::string invariantText(const net::Net& net, const net::Invariant& y) {
     s += net::placeSlotName(net, k);
   }
   return s;
+}
+
+std::vector<DistinctCycle> distinctCycles(std::vector<net::CycleBound> bounds) {
+  std::vector<DistinctCycle> out;
+  std::map<std::tuple<std::vector<net::TransitionId>, std::int64_t, double>, std::size_t> seen;
+  for (auto& b : bounds) {
+    const auto [it, added] = seen.try_emplace({b.transitions, b.tokens, b.seconds}, out.size());
+    if (added) {
+      out.push_back({std::move(b), 0});
+    } else {
+      ++out[it->second].alike;
+    }
+  }
+  return out;
+}
+
+std::vector<std::string> invariantWords(std::string_view text, std::size_t most, std::string_view where) {
+  std::vector<std::string> terms;
+  for (std::string_view term : core::words(text)) {
+    if (term != "+") terms.emplace_back(term);
+  }
+  for (std::size_t i = 0; i + 1 < terms.size(); ++i) terms[i] += " +";
+  if (terms.size() > most) {
+    const std::size_t more = terms.size() - most;
+    terms.resize(most);
+    const std::string rest = "... and " + std::to_string(more) + " more (" + std::string(where) + " has all)";
+    for (std::string_view x : core::words(rest)) terms.emplace_back(x);
+  }
+  return terms;
 }
 
 Analysis analyze(const net::Net& net, std::string path, const AnalysisOptions& options) {
@@ -88,6 +119,12 @@ std::string seconds(double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.3f s", v);
   return buf;
+}
+
+/// The bound the whole net cannot repeat faster than: the largest that is not a flow's.
+const net::CycleBound* cycleTime(const Analysis& a) {
+  const auto it = std::find_if(a.cycles.begin(), a.cycles.end(), [](const net::CycleBound& c) { return !c.flow; });
+  return it == a.cycles.end() ? nullptr : &*it;
 }
 
 std::string megabytes(std::uint64_t bytes) {
@@ -222,9 +259,11 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
                                 {"transitions", names},
                                 {"tokens", c.tokens},
                                 {"circuit", c.circuit},
+                                {"flow", c.flow},
                                 {"seconds", c.seconds}});
   }
-  j["cycle_time"] = a.cycles.empty() ? ordered_json(nullptr) : ordered_json(a.cycles.front().seconds);
+  const auto* first = cycleTime(a);
+  j["cycle_time"] = first ? ordered_json(first->seconds) : ordered_json(nullptr);
   return j.dump(2) + "\n";
 }
 
@@ -260,10 +299,16 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
   auto decided = [&](bool b) { return s.decided ? yes(b) : "unknown (the graph is partial or unbounded)"; };
   for (const auto& [phase, stop] : stoppedPhases(a)) out << "stopped early: " << phase << " (" << net::stopReason(stop) << ")\n";
   printCaveats(out, net);
-  out << a.path << ": " << s.states << " states, " << s.edges << " edges";
-  if (!s.bounded) out << " of a coverability graph";
-  out << " (" << (s.bounded ? "" : "the net is unbounded; ") << net::stopReason(s.stop) << "; the search held "
-      << megabytes(s.peak_bytes) << ")\n";
+  {
+    // the figures wrapped at 100 columns after the path
+    std::ostringstream figures;
+    figures << s.states << " states, " << s.edges << " edges" << (s.bounded ? "" : " of a coverability graph") << " ("
+            << (s.bounded ? "" : "the net is unbounded; ") << net::stopReason(s.stop) << "; the search held "
+            << megabytes(s.peak_bytes) << ")";
+    out << a.path << ":";
+    core::writeWrapped(out, a.path.size() + 1, core::words(figures.str()), 2);
+    out << "\n";
+  }
   // lists of names wrap at 100 columns, under the first value
   constexpr std::size_t kValue = 19;
   out << "  deadlock:        " << (s.deadlock ? "yes" : s.complete ? "no" : "none found");
@@ -354,29 +399,48 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
       << "; covered by T-invariants: " << yes(inv.consistent) << "\n";
   constexpr std::size_t kShown = 20;
   out << "  P-invariants (" << inv.p.size() << "):" << (inv.p.empty() ? " none" : "") << "\n";
+  // each wrapped at 100 columns, cut after kMostPlaces places (--json has them whole)
+  constexpr std::size_t kMostPlaces = 8;
   for (std::size_t i = 0; i < inv.p.size() && i < kShown; ++i) {
-    out << "    " << invariantText(net, inv.p[i]) << " = " << tokensOn(net, inv.p[i]) << "\n";
+    auto terms = invariantWords(invariantText(net, inv.p[i]), kMostPlaces, "--json");
+    terms.push_back("= " + std::to_string(tokensOn(net, inv.p[i])));
+    out << "   ";
+    core::writeWrapped(out, 3, std::vector<std::string_view>(terms.begin(), terms.end()), 6);
+    out << "\n";
   }
   if (inv.p.size() > kShown) out << "    ... and " << inv.p.size() - kShown << " more (--json lists all)\n";
   out << "  T-invariants (" << inv.t.size() << "):" << (inv.t.empty() ? " none" : "") << "\n";
   for (std::size_t i = 0; i < inv.t.size() && i < kShown; ++i) {
+    std::vector<std::string> names;
+    for (const auto& [k, w] : inv.t[i].weights) names.push_back((w != 1 ? std::to_string(w) + "*" : "") + tr[k].name);
     out << "   ";
-    for (const auto& [k, w] : inv.t[i].weights) out << ' ' << (w != 1 ? std::to_string(w) + "*" : "") << tr[k].name;
+    core::writeWrapped(out, 3, std::vector<std::string_view>(names.begin(), names.end()), 6, kShownNames);
     out << "\n";
   }
   if (inv.t.size() > kShown) out << "    ... and " << inv.t.size() - kShown << " more (--json lists all)\n";
   if (!a.cycles.empty()) {
-    out << "cycle times (per P-invariant: the longest circuit of one token, else durations summed over tokens):\n";
-    for (const auto& c : a.cycles) {
-      out << "  " << seconds(c.seconds) << "  " << invariantText(net, inv.p[c.invariant]) << " (" << c.tokens
-          << (c.tokens == 1 ? " token" : " tokens");
+    out << "cycle times (one token's longest circuit, else durations summed over tokens; alike ones once):\n";
+    bool flow = false;
+    for (const auto& [c, alike] : distinctCycles(a.cycles)) {
+      // the bound, then the places and the circuit wrapped under them
+      std::string head = c.flow ? std::string("flow") : seconds(c.seconds);
+      head = std::string(head.size() < 8 ? 10 - head.size() : 2, ' ') + head + " ";  // right-aligned
+      out << head;
+      auto terms = invariantWords(invariantText(net, inv.p[c.invariant]), kMostPlaces, "--json");
+      terms.push_back("(" + std::to_string(c.tokens) + (c.tokens == 1 ? " token" : " tokens") + (c.circuit ? ";" : ")"));
       if (c.circuit) {
-        out << "; circuit";
-        for (std::size_t i = 0; i < c.transitions.size(); ++i) out << (i ? " -> " : " ") << tr[c.transitions[i]].name;
+        terms.emplace_back("circuit");
+        for (std::size_t i = 0; i < c.transitions.size(); ++i) {
+          terms.push_back(tr[c.transitions[i]].name + (i + 1 < c.transitions.size() ? " ->" : ")"));
+        }
       }
-      out << ")\n";
+      if (alike > 0) terms.push_back("(+" + std::to_string(alike) + " alike)");
+      flow = flow || c.flow;
+      core::writeWrapped(out, head.size(), std::vector<std::string_view>(terms.begin(), terms.end()), 12);
+      out << "\n";
     }
-    out << "  the net's cycle time is at least " << seconds(a.cycles.front().seconds) << "\n";
+    if (flow) out << "  flow: tokens that take alternative paths (a flow, not a cycle): no bound\n";
+    if (const auto* first = cycleTime(a)) out << "  the net's cycle time is at least " << seconds(first->seconds) << "\n";
   }
 }
 

@@ -44,6 +44,11 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
     f.max_tokens = s.max;
     f.final_tokens = s.tokens;
     f.throughput = outcome.time > 0 ? static_cast<double>(s.deposited) / outcome.time : 0.0;
+    const auto& place = net.places()[p];
+    f.sensors_only = place.slots_begin < place.slots_end;
+    for (auto ps = place.slots_begin; ps < place.slots_end; ++ps) {
+      f.sensors_only = f.sensors_only && net.placeSlots()[ps].kind == net::SlotKind::Sensor;
+    }
     r.places.push_back(std::move(f));
   }
   // the bounds from the invariants, beside the cycles measured: where measured exceeds the
@@ -53,22 +58,21 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
     budget.deadline = net::deadlineAfter(std::max(0.0, cycle_seconds));
     const auto invariants = net::invariants(net, budget);
     r.cycles_stop = invariants.stop;
-    // one line per set of transitions (slots of one place moving together make one cycle each)
-    std::map<std::tuple<std::vector<net::TransitionId>, std::int64_t, double>, std::size_t> seen;
     net::ExploreStop bounds_stop = net::ExploreStop::Done;
     auto bounds = net::cycleBounds(net, invariants, effectiveDurations(net, dt), budget, &bounds_stop);
     if (r.cycles_stop == net::ExploreStop::Done) r.cycles_stop = bounds_stop;
-    for (auto& c : bounds) {
-      const auto [it, added] = seen.try_emplace({std::move(c.transitions), c.tokens, c.seconds}, r.cycles.size());
-      if (!added) {
-        ++r.cycles[it->second].alike;
-        continue;
-      }
+    // one line per set of transitions (slots of one place moving together make one cycle each)
+    for (const auto& [c, alike] : distinctCycles(std::move(bounds))) {
       CycleFigures f;
       f.invariant = invariantText(net, invariants.p[c.invariant]);
       f.tokens = c.tokens;
+      f.flow = c.flow;
       f.bound = c.seconds;
-      for (auto t : std::get<0>(it->first)) f.measured = std::max(f.measured, r.transitions[t].mean_cycle);
+      f.alike = alike;
+      // a flow's transitions do not repeat together: nothing measured to set beside a bound
+      if (!c.flow) {
+        for (auto t : c.transitions) f.measured = std::max(f.measured, r.transitions[t].mean_cycle);
+      }
       r.cycles.push_back(std::move(f));
     }
   }
@@ -153,14 +157,16 @@ std::string reportJson(const Report& report) {
                         {"mean_tokens", p.mean_tokens},
                         {"max_tokens", p.max_tokens},
                         {"final_tokens", p.final_tokens},
-                        {"throughput", p.throughput}};
+                        {"throughput", p.throughput},
+                        {"sensors_only", p.sensors_only}};
   });
   j.array("cycles", report.cycles.size(), [&](std::size_t i) {
     const auto& c = report.cycles[i];
     return ordered_json{{"invariant", c.invariant},
                         {"tokens", c.tokens},
-                        {"bound", c.bound},
-                        {"measured", c.measured},
+                        {"flow", c.flow},
+                        {"bound", c.flow ? ordered_json(nullptr) : ordered_json(c.bound)},
+                        {"measured", c.flow ? ordered_json(nullptr) : ordered_json(c.measured)},
                         {"alike", c.alike}};
   });
   j.member("cycles_complete", report.cycles_stop == net::ExploreStop::Done);
@@ -197,9 +203,14 @@ void printSummary(std::ostream& out, const Report& report) {
   if (report.outcome.reason == StopReason::ScriptError) out << ", stopped: a script failed";
   out << "\n\n";
 
-  std::size_t w = 10;
+  // places that only read sensors and never held a token say nothing here (--report has them)
+  auto listed = [](const PlaceFigures& p) { return !p.sensors_only || p.max_tokens > 0; };
+  std::size_t w = 10, unlisted = 0;
   for (const auto& t : report.transitions) w = std::max(w, t.name.size());
-  for (const auto& p : report.places) w = std::max(w, p.name.size());
+  for (const auto& p : report.places) {
+    if (listed(p)) w = std::max(w, p.name.size());
+    if (!listed(p)) ++unlisted;
+  }
   w += 2;
 
   out << pad("transition", w, false) << pad("occurrences", 12, true) << pad("mean cycle [s]", 16, true)
@@ -214,9 +225,14 @@ void printSummary(std::ostream& out, const Report& report) {
       << pad("place", w, false) << pad("mean tokens", 12, true) << pad("max tokens", 16, true)
       << pad("final", 15, true) << pad("thru [1/s]", 13, true) << "\n";
   for (const auto& p : report.places) {
+    if (!listed(p)) continue;
     out << pad(p.name, w, false) << pad(fixed(p.mean_tokens, 3), 12, true)
         << pad(std::to_string(p.max_tokens), 16, true) << pad(std::to_string(p.final_tokens), 15, true)
         << pad(fixed(p.throughput, 3), 13, true) << "\n";
+  }
+  if (unlisted > 0) {
+    out << "(" << unlisted << (unlisted == 1 ? " place that only reads" : " places that only read")
+        << " sensors, never holding a token, not listed; --report has them)\n";
   }
   if (!report.cycles.empty()) {
     // the figures first, in aligned columns; the invariant last, wrapped at 100 columns under
@@ -225,28 +241,23 @@ void printSummary(std::ostream& out, const Report& report) {
     out << "\n"
         << pad("tokens", 8, true) << pad("bound [s]", 12, true) << pad("measured [s]", 14, true)
         << pad("waited [s]", 12, true) << "  cycle (P-invariant)\n";
-    bool alike = false;
+    bool alike = false, flow = false;
     for (const auto& c : report.cycles) {
-      const bool m = c.measured > 0.0;
-      out << pad(std::to_string(c.tokens), 8, true) << pad(fixed(c.bound, 3), 12, true)
+      const bool m = c.measured > 0.0 && !c.flow;
+      out << pad(std::to_string(c.tokens), 8, true) << pad(c.flow ? "flow" : fixed(c.bound, 3), 12, true)
           << pad(m ? fixed(c.measured, 3) : "-", 14, true) << pad(m ? fixed(c.measured - c.bound, 3) : "-", 12, true)
           << " ";
       // its places (with their weights) as words, " + " between them
-      std::vector<std::string> terms;
-      for (std::string_view term : core::words(c.invariant)) {
-        if (term != "+") terms.emplace_back(term);
-      }
-      for (std::size_t i = 0; i + 1 < terms.size(); ++i) terms[i] += " +";
-      if (terms.size() > kMostPlaces) {
-        const std::size_t more = terms.size() - kMostPlaces;
-        terms.resize(kMostPlaces);
-        const std::string rest = "... and " + std::to_string(more) + " more (--report has all)";
-        for (std::string_view x : core::words(rest)) terms.emplace_back(x);
-      }
+      auto terms = invariantWords(c.invariant, kMostPlaces, "--report");
       if (c.alike > 0) terms.push_back("(+" + std::to_string(c.alike) + " alike)");
       alike = alike || c.alike > 0;
+      flow = flow || c.flow;
       core::writeWrapped(out, kFigures + 1, std::vector<std::string_view>(terms.begin(), terms.end()), kFigures + 2);
       out << "\n";
+    }
+    if (flow) {
+      out << "flow: tokens that take alternative paths through the net (a box passing a station or\n"
+             "entering it) flow rather than cycle: no bound, and no one cycle to measure\n";
     }
     if (alike) {
       out << "(+N alike): N more invariants with the same transitions, tokens and bound, not listed (the same\n"

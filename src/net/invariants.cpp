@@ -607,6 +607,9 @@ std::vector<CycleBound> cycleBounds(const Net& net, const Invariants& invariants
       }
     }
     std::sort(b.transitions.begin(), b.transitions.end());
+    // a choice: a place slot of it feeding two or more transitions
+    bool choice = false;
+    for (const auto& [k, w] : weights) choice = choice || takers[k].size() > 1;
     double work = 0.0;
     for (TransitionId t : b.transitions) {
       work += (t < seconds.size() ? seconds[t] : 0.0) * static_cast<double>(taken[t]);
@@ -620,6 +623,10 @@ std::vector<CycleBound> cycleBounds(const Net& net, const Invariants& invariants
           b.transitions = std::move(circuit->second);
           b.circuit = true;
         }
+      }
+      if (choice && !b.circuit) {
+        b.flow = true;
+        b.seconds = 0.0;
       }
       out.push_back(std::move(b));
     }

@@ -116,12 +116,15 @@ std::string reportAsTree(const Report& report) {
   j["places"] = ordered_json::array();
   for (const auto& p : report.places) {
     j["places"].push_back({{"name", p.name}, {"mean_tokens", p.mean_tokens}, {"max_tokens", p.max_tokens},
-                           {"final_tokens", p.final_tokens}, {"throughput", p.throughput}});
+                           {"final_tokens", p.final_tokens}, {"throughput", p.throughput},
+                           {"sensors_only", p.sensors_only}});
   }
   j["cycles"] = ordered_json::array();
   for (const auto& c : report.cycles) {
-    j["cycles"].push_back({{"invariant", c.invariant}, {"tokens", c.tokens}, {"bound", c.bound},
-                           {"measured", c.measured}, {"alike", c.alike}});
+    const auto none = ordered_json(nullptr);
+    j["cycles"].push_back({{"invariant", c.invariant}, {"tokens", c.tokens}, {"flow", c.flow},
+                           {"bound", c.flow ? none : ordered_json(c.bound)},
+                           {"measured", c.flow ? none : ordered_json(c.measured)}, {"alike", c.alike}});
   }
   j["cycles_complete"] = report.cycles_stop == net::ExploreStop::Done;
   j["figures"] = ordered_json::object();

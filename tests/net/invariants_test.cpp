@@ -161,6 +161,16 @@ std::vector<double> meanDurations(const Net& net) {
   return seconds;
 }
 
+/// Adds transition `name` of `seconds` moving one token from `from` to `to`.
+TransitionId addTimed(NetBuilder& b, const std::string& name, double seconds, PlaceId from, PlaceId to) {
+  Duration d;
+  d.a = seconds;
+  const auto t = b.addTransition(name, d);
+  b.addInput(from, t);
+  b.addOutput(t, to);
+  return t;
+}
+
 TEST(CycleBounds, TwoCyclesGiveBothTimesAndTheLargerBounds) {
   // A: 1.5 + 2.5 s on one token = 4 s; B: 0.25 + 0.5 + 0.25 s on one token = 1 s; C: three
   // transitions of 1 s sharing two tokens = 1.5 s
@@ -198,17 +208,9 @@ TEST(CycleBounds, AChoiceIsACircuitOfItsOwnAndTheLongestBounds) {
   const auto ready = b.addPlace("ready");
   const auto busy = b.addPlace("busy");
   b.setSlot(ready, kDefaultSlot, SlotKind::Control, kUnbounded, 1);
-  auto timed = [&](const std::string& name, double seconds, PlaceId from, PlaceId to) {
-    Duration d;
-    d.a = seconds;
-    const auto t = b.addTransition(name, d);
-    b.addInput(from, t);
-    b.addOutput(t, to);
-    return t;
-  };
-  const auto work = timed("work", 3.0, ready, busy);
-  const auto finish = timed("finish", 12.0, busy, ready);
-  timed("skip", 2.0, ready, ready);
+  const auto work = addTimed(b, "work", 3.0, ready, busy);
+  const auto finish = addTimed(b, "finish", 12.0, busy, ready);
+  addTimed(b, "skip", 2.0, ready, ready);
   auto net = b.freeze();
   const Invariants inv = invariants(*net);
   const auto bounds = cycleBounds(*net, inv, meanDurations(*net));
@@ -231,7 +233,31 @@ TEST(CycleBounds, TwoTokensKeepTheSum) {
   const auto bounds = cycleBounds(*net, invariants(*net), std::vector<double>{3.0});
   ASSERT_EQ(bounds.size(), 1u);
   EXPECT_FALSE(bounds[0].circuit);
+  EXPECT_FALSE(bounds[0].flow);
   EXPECT_DOUBLE_EQ(bounds[0].seconds, 1.5);
+}
+
+TEST(CycleBounds, TokensTakingAlternativePathsAreAFlowWithoutABound) {
+  // three boxes: in -> pass (1 s) -> out, or in -> enter (10 s) -> cell -> leave (2 s) -> out,
+  // then back (1 s) -> in. Summed over the tokens, (1 + 10 + 2 + 1) / 3 s would claim a bound
+  // that a run where every box passes beats (2 s a round, 3 boxes): no bound, a flow.
+  NetBuilder b;
+  const auto in = b.addPlace("in");
+  const auto cell = b.addPlace("cell");
+  const auto out = b.addPlace("out");
+  b.setSlot(in, kDefaultSlot, SlotKind::Control, kUnbounded, 3);
+  addTimed(b, "pass", 1.0, in, out);
+  addTimed(b, "enter", 10.0, in, cell);
+  addTimed(b, "leave", 2.0, cell, out);
+  addTimed(b, "back", 1.0, out, in);
+  auto net = b.freeze();
+  const auto bounds = cycleBounds(*net, invariants(*net), meanDurations(*net));
+  ASSERT_EQ(bounds.size(), 1u);
+  EXPECT_TRUE(bounds[0].flow);
+  EXPECT_FALSE(bounds[0].circuit);
+  EXPECT_EQ(bounds[0].tokens, 3);
+  EXPECT_EQ(bounds[0].seconds, 0.0);
+  EXPECT_EQ(bounds[0].transitions.size(), 4u);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -52,6 +53,20 @@ bool timed(const net::Net& net);
 
 /// A P-invariant as text: "p1 + 2*p2 + p3".
 std::string invariantText(const net::Net& net, const net::Invariant& y);
+
+/// A cycle bound with how many more have the same transitions, tokens and seconds (the same
+/// cycle through the other slots of its places, or the same places with other weights).
+struct DistinctCycle {
+  net::CycleBound bound;  ///< the first of them
+  int alike = 0;          ///< how many more, not listed
+};
+
+/// `bounds` with alike ones merged, in their order.
+std::vector<DistinctCycle> distinctCycles(std::vector<net::CycleBound> bounds);
+
+/// The places of invariant text ("a + 2*b + c") as words for core::writeWrapped: "a +",
+/// "2*b +", "c", cut after `most` places with "... and N more (`where` has all)".
+std::vector<std::string> invariantWords(std::string_view text, std::size_t most, std::string_view where);
 
 /// What the untimed analysis of `net` leaves out, one sentence each: guards, sensor
 /// conditions and predicates taken to hold, scripts not run. Empty for a net without them.

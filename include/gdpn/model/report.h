@@ -31,13 +31,15 @@ struct PlaceFigures {
   std::int64_t max_tokens = 0;
   std::int64_t final_tokens = 0;
   double throughput = 0.0;   ///< tokens deposited per second
+  bool sensors_only = false; ///< every slot of it reads a sensor (it holds no tokens of its own)
 };
 
 /// One cycle of the net (a P-invariant carrying tokens): its bound beside what the run measured.
 struct CycleFigures {
   std::string invariant;        ///< its places, weighted: "a + b + 2*c"
   std::int64_t tokens = 0;      ///< weighted tokens on it
-  double bound = 0.0;           ///< seconds: the sum of its durations over its tokens
+  bool flow = false;            ///< its tokens take alternative paths: no bound, nothing measured
+  double bound = 0.0;           ///< seconds: the sum of its durations over its tokens (0 for a flow)
   double measured = 0.0;        ///< seconds: the slowest mean cycle among its transitions (0: none)
   int alike = 0;                ///< further invariants with the same transitions, tokens and bound (not listed)
 };

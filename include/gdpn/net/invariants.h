@@ -87,6 +87,9 @@ struct CycleBound {
   std::int64_t tokens = 0;                 ///< weighted tokens on it, y·M0
   double seconds = 0.0;                    ///< sum of duration × weight taken, over tokens; or the longest circuit's duration
   bool circuit = false;                    ///< one token through a state machine: `seconds` is its longest elementary circuit
+  /// the tokens take alternative paths (a place of it feeds several of its transitions) and no
+  /// circuit bounds them: a flow through the net, not a cycle; `seconds` is 0 (no bound)
+  bool flow = false;
 };
 
 /// Cycle-time bounds, one per P-invariant that carries tokens and feeds a transition, largest
@@ -94,6 +97,8 @@ struct CycleBound {
 /// net cannot repeat faster than the first one's `seconds`. Where one token runs through a
 /// state machine with choices (a cell that either skips a box or works on it), each choice
 /// is a conflict-free circuit of its own and the bound is the longest circuit's duration.
+/// Several tokens taking alternative paths (boxes that either pass a station or enter it) are
+/// a flow, not a cycle: no bound (`flow`), listed last.
 /// With `options`, it gives up at the deadline and says so in `stop` (when given); the bounds
 /// found so far are returned.
 std::vector<CycleBound> cycleBounds(const Net& net, const Invariants& invariants, std::span<const double> seconds,
