@@ -14,11 +14,8 @@ void traverse(Node& node, const std::function<void(Node&, const TraversalState&)
   // the node's own placement holds for its children; a Material among them holds for the
   // siblings after it
   TraversalState inner = state;
-  const core::Vec3 s = node.localScale();
-  core::Pose local = node.dynamic_pose ? core::Pose{} : node.localPose();
-  local.position = local.position.times(state.scale);
-  inner.pose = state.pose * local;
-  inner.scale = state.scale.times(s);
+  inner.pose = node.frameIn(state.pose, state.scale);
+  inner.scale = state.scale.times(node.localScale());
   for (const auto& child : node.children()) {
     if (child->kind() == NodeKind::Material) inner.material = child.get();
     traverse(*child, visit, inner);

@@ -146,6 +146,13 @@ core::Pose Node::localPose() const {
   return p;
 }
 
+core::Pose Node::frameIn(const core::Pose& frame, const core::Vec3& scale) const {
+  if (dynamic_pose) return frame;
+  core::Pose local = localPose();
+  local.position = local.position.times(scale);
+  return frame * local;
+}
+
 core::Vec3 Node::localScale() const {
   if (!is(NodeKind::Transform)) return {1, 1, 1};
   return vec3(field::Transform::Scale);

@@ -91,6 +91,16 @@ py::object sensorView(const SlotView& s, const std::string& path) {
   return makeSensorView(s.r, sensor->handle());
 }
 
+/// The scene node of the page-type instance that construct `name` belongs to ("line/cellA/t":
+/// the node "cellA", where the instance places its machine; nested instances give
+/// "cellA/sub"); None for a construct of a top-level page or an instance without scene nodes.
+py::object instanceOf(Context& ctx, std::string_view name) {
+  const auto first = name.find('/'), last = name.rfind('/');
+  if (first == std::string_view::npos || first == last || !ctx.plant()) return py::none();
+  const scene::Node* n = ctx.plant()->find(std::string(name.substr(first + 1, last - first - 1)));
+  return n ? ctx.nodeView(n->handle()) : py::none();
+}
+
 /// The capacity of a place's slot: None when unbounded.
 py::object capacityOf(const SlotView& s) {
   const auto ps = placeSlot(s);
@@ -451,13 +461,13 @@ class Geometries(list):
            "the node at a path below this one ('..' goes up), or None")
       .def_property_readonly("position",
                              [](const NodeView& v) {
-                               const auto p = sceneNode(v).world.position;
+                               const auto p = sceneNode(v).framePose().position;
                                return py::make_tuple(p.x, p.y, p.z);
                              },
-                             "world position, m")
+                             "world position, m: a Transform's own translation included (where its children stand)")
       .def_property_readonly("rotation",
                              [](const NodeView& v) {
-                               const auto q = sceneNode(v).world.rotation;
+                               const auto q = sceneNode(v).framePose().rotation;
                                return py::make_tuple(q.w, q.x, q.y, q.z);
                              },
                              "world orientation as a quaternion (w, x, y, z)")
@@ -658,6 +668,10 @@ class Geometries(list):
                                return static_cast<double>(k.startStep(v.t)) * k.dt();
                              },
                              "seconds; when the current or last occurrence started")
+      .def_property_readonly(
+          "instance", [](const TransitionView& v) { return instanceOf(v.r.get(), v.r.get().netRef().transitions()[v.t].name); },
+          "the scene node of its page type's instance (the Transform that places the instance's "
+          "machine), or None on a top-level page")
       .def("__getattr__", [](const TransitionView& v, const std::string& name) { return slotAttr(v.r, true, v.t, name); })
       .def("__repr__", [](const TransitionView& v) {
         return "<transition " + v.r.get().netRef().transitions()[v.t].name + ">";
@@ -669,6 +683,9 @@ class Geometries(list):
           "capacity", [](const PlaceView& v) { return capacityOf(SlotView{v.r, false, v.p, net::kDefaultSlot}); },
           [](const PlaceView& v, const py::object& c) { setCapacity(SlotView{v.r, false, v.p, net::kDefaultSlot}, c); },
           "the capacity of slot a0, tokens; None when unbounded; settable when the model gives one")
+      .def_property_readonly(
+          "instance", [](const PlaceView& v) { return instanceOf(v.r.get(), v.r.get().netRef().places()[v.p].name); },
+          "the scene node of its page type's instance, or None on a top-level page")
       .def("__getattr__", [](const PlaceView& v, const std::string& name) { return slotAttr(v.r, false, v.p, name); })
       .def("__repr__", [](const PlaceView& v) { return "<place " + v.r.get().netRef().places()[v.p].name + ">"; });
 

@@ -413,5 +413,61 @@ pages:
   EXPECT_EQ(core::fnv1a(first), 0x39d3975a8f7f26c5ULL) << std::hex << core::fnv1a(first);
 }
 
+
+// A Transform's position is where its children stand (its own translation included), and a
+// page type's scripts find their instance's node, so one script places things in every
+// instance: each cell spawns a box 0.5 m above its own table.
+TEST(Scripts, AnInstancePlacesWhatItsScriptsSpawnRelativeToItself) {
+  const ScriptModel model(R"Y(gdpn: 1
+settings: {dt: 0.1}
+scene:
+  - Transform:
+      name: hall
+      translation: [10, 0, 0]
+      children: [{Transform: {name: spot, translation: [1, 2, 3]}}]
+  - Transform:
+      name: store
+      translation: [0, -20, 0]
+      children: [{Body: {name: box, children: [{Cube: {size: [0.2, 0.2, 0.2]}}]}}]
+  - Group: {name: made}
+pages:
+  main:
+    places:
+      go: {tokens: 1}
+    transitions:
+      look:
+        pre_fire: |
+          sim.log("spot", sim.node("hall/spot").position, "hall", sim.node("hall").position)
+          sim.log("main", self.instance)
+    arcs:
+      - go -> look
+    instances:
+      left: {type: cell, translation: [-4, 0, 0]}
+      right: {type: cell, translation: [4, 1, 0]}
+page_types:
+  cell:
+    places:
+      ready: {tokens: 1}
+    transitions:
+      make:
+        pre_fire: |
+          p = self.instance.position
+          box = sim.node("made").spawn("store/box", at=(p[0], p[1], p[2] + 0.5))
+          sim.log(self.instance.name, p, box.position)
+    arcs:
+      - ready -> make
+    scene:
+      - Transform: {name: table, children: [{Cube: {size: [1, 1, 0.1]}}]}
+)Y");
+  const auto [logs, outcome] = runLogs(model, {.until = 0.3, .steps = std::nullopt});
+  ASSERT_EQ(outcome.reason, StopReason::Until) << outcome.message;
+  const std::vector<std::string> expected = {
+      "left (-4.0, 0.0, 0.0) (-4.0, 0.0, 0.5)",
+      "right (4.0, 1.0, 0.0) (4.0, 1.0, 0.5)",
+      "spot (11.0, 2.0, 3.0) hall (10.0, 0.0, 0.0)",
+      "main None",
+  };
+  EXPECT_EQ(logs, expected);
+}
 }  // namespace
 }  // namespace gdpn::model

@@ -100,6 +100,13 @@ class Node {
   [[nodiscard]] core::Pose localPose() const;
   /// A Transform's scale, (1, 1, 1) otherwise.
   [[nodiscard]] core::Vec3 localScale() const;
+  /// The frame this node sets up for its children, placed in `frame` scaled by `scale`: its
+  /// own translation (scaled) and rotation applied, unless the physics moves it (then `frame`).
+  [[nodiscard]] core::Pose frameIn(const core::Pose& frame, const core::Vec3& scale) const;
+  /// The world pose of the frame this node sets up for its children (m): a Transform's own
+  /// translation and rotation included; `world` is the frame it is placed in. Up to date
+  /// after updateTransforms.
+  [[nodiscard]] core::Pose framePose() const { return frameIn(world, world_scale); }
 
   /// Where the node was declared in the model file.
   core::SourceLoc loc;

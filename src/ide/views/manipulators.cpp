@@ -46,7 +46,7 @@ std::vector<HandleShape> handlesOf(App& app, scene::Node& node, const OrbitCamer
     return ImVec2{at.x + static_cast<float>((*q)[0]), at.y + static_cast<float>((*q)[1])};
   };
   // node.world is the frame the node is placed in (its parents'); its own frame adds its pose
-  const core::Pose pose = node.world * node.localPose();
+  const core::Pose pose = node.framePose();
   const double size = 0.16 * (view.eye() - pose.position).length();
   const core::Quat parent = node.world.rotation;
   if (node.kind() == scene::NodeKind::Transform && app.tool != Tool::Select) {
