@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <map>
-#include <tuple>
 
 #include "gdpn/core/text.h"
 #include "gdpn/model/analysis.h"
