@@ -7,6 +7,7 @@
 #include <cstdlib>
 
 #include "gdpn/core/assert.h"
+#include "gdpn/core/math.h"
 
 namespace gdpn::scene {
 namespace {
@@ -306,21 +307,20 @@ namespace {
 /// exactly those degrees, so that 0.1 rad written is 0.1 read and saved (not
 /// 0.10000000000000002), and a file's radians read and saved read back to the same degrees.
 double radiansOf(double degrees) {
-  constexpr double k = 180.0 / M_PI;
-  const double x = degrees * (M_PI / 180.0);
+  const double x = core::radians(degrees);
   for (int digits = 1; digits <= 17; ++digits) {
     char text[40];
     std::snprintf(text, sizeof text, "%.*g", digits, x);
     const double y = std::strtod(text, nullptr);
-    if (y * k == degrees) return y;
+    if (core::degrees(y) == degrees) return y;
   }
   // no short decimal: the nearest double that does (degrees read from radians always have one)
   double below = x, above = x;
   for (int step = 0; step < 8; ++step) {
     below = std::nextafter(below, -INFINITY);
     above = std::nextafter(above, INFINITY);
-    if (below * k == degrees) return below;
-    if (above * k == degrees) return above;
+    if (core::degrees(below) == degrees) return below;
+    if (core::degrees(above) == degrees) return above;
   }
   return x;
 }
@@ -329,7 +329,7 @@ double radiansOf(double degrees) {
 
 FieldValue convertAngle(const Node& n, std::size_t i, FieldValue v, AngleUnit unit, bool to_stored) {
   if (unit == AngleUnit::Degrees || !isAngular(n, i)) return v;
-  auto convert = [to_stored](double& x) { x = to_stored ? x * (180.0 / M_PI) : radiansOf(x); };
+  auto convert = [to_stored](double& x) { x = to_stored ? core::degrees(x) : radiansOf(x); };
   if (auto* x = std::get_if<double>(&v)) convert(*x);
   if (auto* r = std::get_if<std::array<double, 4>>(&v)) convert((*r)[3]);
   return v;

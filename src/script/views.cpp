@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "gdpn/core/math.h"
 #include "gdpn/core/text.h"
 
 namespace py = pybind11;
@@ -114,6 +115,13 @@ py::object capacityOf(const SlotView& s) {
 void setCapacity(const SlotView& s, const py::object& value) {
   const auto ps = placeSlot(s);
   if (s.of_transition || ps < 0) throw py::attribute_error(ownerName(s) + " has no slot " + net::slotName(s.slot) + " with a capacity");
+  // a whole number or None; anything else says so, not pybind11's "Unable to cast"
+  if (!value.is_none() && !py::isinstance<py::int_>(value)) {
+    throw py::type_error("capacity of " + ownerName(s) + " slot " + net::slotName(s.slot) +
+                         " expects a whole number or None, got " +
+                         py::str(py::type::of(value).attr("__name__")).cast<std::string>() + " " +
+                         py::repr(value).cast<std::string>());
+  }
   const std::int64_t c = value.is_none() ? net::kUnbounded : value.cast<std::int64_t>();
   const std::string why = s.r.get().kernelRef().setCapacity(static_cast<net::PlaceSlotId>(ps), c);
   if (!why.empty()) {
@@ -179,7 +187,7 @@ const scene::Node& joint(const NodeView& v) {
 /// metres for a slider, else degrees or radians as the model's `angles` says.
 double inScriptUnits(const Context& ctx, const scene::Node& joint, double x) {
   if (joint.choice<scene::JointKind>(scene::field::Joint::Kind) == scene::JointKind::Slider) return x;
-  return ctx.angles() == scene::AngleUnit::Radians ? x : x * 180.0 / M_PI;
+  return ctx.angles() == scene::AngleUnit::Radians ? x : core::degrees(x);
 }
 
 py::object related(const NodeView& v, const scene::Node* n) {

@@ -309,6 +309,10 @@ pages:
                   (buffer if wrong == 0 else sim.place("main/free")).capacity = 0 if wrong == 0 else 2
               except ValueError as e:
                   sim.log(e)
+          try:
+              buffer.capacity = "3"
+          except TypeError as e:
+              sim.log(e)
       unbound:
         duration: 8
         pre_fire: |
@@ -328,6 +332,7 @@ pages:
       "capacity 1 None",
       "capacity of place 'main/buffer' slot a0: it holds 1 and has 0 promised: more than 0",
       "capacity of place 'main/free' slot a0: it has no capacity in the model (give it one to change it)",
+      "capacity of place 'main/buffer' slot a0 expects a whole number or None, got str '3'",
       "capacity None",
   };
   EXPECT_EQ(r.logs, expected);

@@ -89,5 +89,7 @@ double intersect(const Ray& ray, const Aabb& box);
 
 /// Degrees to radians.
 inline double radians(double degrees) { return degrees * (M_PI / 180.0); }
+/// Radians to degrees.
+inline double degrees(double radians) { return radians * (180.0 / M_PI); }
 
 }  // namespace gdpn::core
