@@ -640,6 +640,9 @@ int run(const RunArgs& a) {
     }
     sim->traceTo(trace->stream());
   }
+  // with a report to show or write, its cycles are worked out first and each token with
+  // alternative circuits watched, so that each circuit's cycle is measured
+  if (!a.quiet || !a.report.empty()) model::watchRoundTrips(sim->simulation());
   std::signal(SIGINT, onSigint);
   model::RunOutcome outcome;
   {

@@ -88,6 +88,7 @@ scene:
   - Light: {{kind: directional, direction: [-0.4, 0.6, -1]}}
   - Camera: {{name: overview, position: [0, -42, 34], target: [0, 0, 0], fov: 50}}
   - Camera: {{name: orbit, kind: orbit, position: [0, -45, 30], target: [0, 0, 0], speed: 4}}
+  - Camera: {{name: close, position: [-1, -16, 12], target: [5, 3, 0], fov: 45}}
   - Material: {{diffuse: [0.45, 0.58, 0.32], friction: 0.6}}
   - Terrain: {{name: ground, file: terrain.png, width: {num(SIZE)}, depth: {num(SIZE)}, height_scale: {num(1.5 * HEIGHT / 255)}}}
   - GradientField:

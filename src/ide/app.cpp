@@ -503,6 +503,37 @@ bool App::perform(const Action& a, std::string& error) {
         error = "no node '" + a.text + "'";
         break;
       }
+      // besides the fields: the template mark and user data (`data.order`), as the file has them
+      if (a.field == "template") {
+        if (a.list || a.value.size() != 1 || (a.value[0] != "true" && a.value[0] != "false")) {
+          error = "'template' expects true or false";
+          break;
+        }
+        error = doc_->execute(std::make_unique<SetTemplateCommand>(a.text, a.value[0] == "true"));
+        inspector_error = error;
+        break;
+      }
+      if (a.field.starts_with("data.")) {
+        std::optional<scene::FieldValue> datum;
+        if (a.list) {
+          std::vector<double> xs;
+          for (const auto& w : a.value) {
+            const auto x = scene::datumFromText(w);
+            if (const auto* i = std::get_if<std::int64_t>(&x)) xs.push_back(static_cast<double>(*i));
+            else if (const auto* d = std::get_if<double>(&x)) xs.push_back(*d);
+          }
+          if (xs.size() != a.value.size()) {
+            error = "a datum's list holds numbers only";
+            break;
+          }
+          datum = std::move(xs);
+        } else if (a.value.size() == 1) {
+          datum = scene::datumFromText(a.value[0]);
+        }
+        error = doc_->execute(std::make_unique<SetDatumCommand>(a.text, a.field.substr(5), std::move(datum)));
+        inspector_error = error;
+        break;
+      }
       const int i = node->type().fieldIndex(a.field);
       if (i < 0) {
         error = "a " + node->type().name + " has no field '" + a.field + "'";

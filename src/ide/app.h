@@ -182,6 +182,8 @@ class App {
   net::SlotId contents_slot = net::kDefaultSlot;  ///< the slot the contents view edits
   std::uint64_t drag_id = 0;        ///< the inspector's current drag (merge key)
   std::string inspector_error;      ///< why the last edit was refused
+  std::string datum_key;            ///< the inspector's name for a datum to add
+  std::string datum_value;          ///< and its value, as text (datumFromText)
   double edit_quiet = 0;            ///< seconds since the document last changed (edit mode)
   std::uint64_t quiet_revision = 0; ///< the revision edit_quiet counts from
   std::uint64_t followed_revision = 0;  ///< the revision the run last tried to follow

@@ -1,9 +1,11 @@
-// Setting one field of one node, checked by the field's description.
+// Setting one field of one node, checked by the field's description; a node's template mark
+// and its user data.
 
 #include "gdpn/ide/set_field.h"
 
 #include <functional>
 
+#include "gdpn/core/text.h"
 #include "gdpn/ide/document.h"
 
 namespace gdpn::ide {
@@ -41,6 +43,37 @@ void SetFieldCommand::absorb(const Command& next) {
   // the step keeps its first old value and takes the latest new one
   value_ = static_cast<const SetFieldCommand&>(next).value_;
 }
+
+std::string SetTemplateCommand::apply(Document& doc) {
+  auto* scene = doc.scene();
+  auto* node = scene ? scene->find(path_) : nullptr;
+  if (node == nullptr) return "no node '" + path_ + "'";
+  if (node->parent() == nullptr) return "the scene's root is no template";
+  old_ = node->is_template;
+  node->is_template = on_;
+  return {};
+}
+
+void SetTemplateCommand::revert(Document& doc) { doc.scene()->find(path_)->is_template = old_; }
+
+std::string SetTemplateCommand::label() const { return (on_ ? "make a template of " : "unmark template ") + path_; }
+
+std::string SetDatumCommand::apply(Document& doc) {
+  auto* scene = doc.scene();
+  auto* node = scene ? scene->find(path_) : nullptr;
+  if (node == nullptr) return "no node '" + path_ + "'";
+  if (!core::isIdentifier(key_)) return "datum name '" + key_ + "' is not an identifier (letters, digits and '_')";
+  if (value_ && !scene::isDatumKind(*value_)) return "datum '" + key_ + "' is a bool, a number, text or a list of numbers";
+  if (!value_ && node->datum(key_) == nullptr) return "node '" + path_ + "' has no datum '" + key_ + "'";
+  old_ = node->data;
+  if (value_) node->setDatum(key_, *value_);
+  else node->eraseDatum(key_);
+  return {};
+}
+
+void SetDatumCommand::revert(Document& doc) { doc.scene()->find(path_)->data = old_; }
+
+std::string SetDatumCommand::label() const { return (value_ ? "set " : "remove ") + path_ + ".data." + key_; }
 
 }  // namespace gdpn::ide
 

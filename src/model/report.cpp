@@ -10,6 +10,56 @@
 
 namespace gdpn::model {
 
+namespace {
+
+/// The invariants and cycle bounds of `sim`'s net, within `cycle_seconds` of wall-clock time.
+std::unique_ptr<CyclePlan> planCycles(const Simulation& sim, double cycle_seconds) {
+  const auto& net = sim.net();
+  auto plan = std::make_unique<CyclePlan>();
+  net::InvariantOptions budget;
+  budget.deadline = net::deadlineAfter(std::max(0.0, cycle_seconds));
+  plan->invariants = net::invariants(net, budget);
+  plan->stop = plan->invariants.stop;
+  net::ExploreStop bounds_stop = net::ExploreStop::Done;
+  plan->bounds = net::cycleBounds(net, plan->invariants, effectiveDurations(net, sim.kernel().dt()), budget, &bounds_stop);
+  if (plan->stop == net::ExploreStop::Done) plan->stop = bounds_stop;
+  return plan;
+}
+
+}  // namespace
+
+void watchRoundTrips(Simulation& sim, double cycle_seconds) {
+  const auto& net = sim.net();
+  if (!timed(net)) return;
+  auto plan = planCycles(sim, cycle_seconds);
+  std::vector<std::vector<net::TransitionId>> takers_of;  // per place slot, made when first needed
+  for (const auto& b : plan->bounds) {
+    if (!b.alternatives) continue;
+    // the token's home: the place slot that holds it at the start
+    const auto& weights = plan->invariants.p[b.invariant].weights;
+    const auto home = std::find_if(weights.begin(), weights.end(), [&](const auto& kw) {
+      return net.placeSlots()[kw.first].initial > 0;
+    });
+    if (home == weights.end()) continue;
+    // every transition that takes from the invariant (b.transitions holds the longest circuit's)
+    if (takers_of.empty()) {
+      takers_of.resize(net.placeSlots().size());
+      for (net::TransitionId t = 0; t < net.transitions().size(); ++t) {
+        for (const auto& term : net.termsOf(t)) {
+          if (term.kind == net::TermKind::Input) takers_of[term.place_slot].push_back(t);
+        }
+      }
+    }
+    std::vector<net::TransitionId> takers;
+    for (const auto& [k, w] : weights) takers.insert(takers.end(), takers_of[k].begin(), takers_of[k].end());
+    std::sort(takers.begin(), takers.end());
+    takers.erase(std::unique(takers.begin(), takers.end()), takers.end());
+    if (!plan->trips) plan->trips = std::make_unique<net::RoundTrips>(net.transitions().size());
+    plan->watch_of[b.invariant] = plan->trips->watch(net, home->first, takers);
+  }
+  sim.keepCycles(std::move(plan));
+}
+
 Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_seconds) {
   Report r;
   r.model = sim.model().path;
@@ -52,15 +102,15 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
   // the bounds from the invariants, beside the cycles measured: where measured exceeds the
   // bound, the net waited on something else (the plant, a guard, a shared resource)
   if (timed(net)) {
-    net::InvariantOptions budget;
-    budget.deadline = net::deadlineAfter(std::max(0.0, cycle_seconds));
-    const auto invariants = net::invariants(net, budget);
-    r.cycles_stop = invariants.stop;
-    net::ExploreStop bounds_stop = net::ExploreStop::Done;
-    auto bounds = net::cycleBounds(net, invariants, effectiveDurations(net, dt), budget, &bounds_stop);
-    if (r.cycles_stop == net::ExploreStop::Done) r.cycles_stop = bounds_stop;
+    // the cycles worked out before the run when its round trips were watched, else now
+    std::unique_ptr<CyclePlan> own;
+    const CyclePlan* plan = sim.cycles();
+    if (plan == nullptr) plan = (own = planCycles(sim, cycle_seconds)).get();
+    const auto& invariants = plan->invariants;
+    r.cycles_stop = plan->stop;
+    const auto seconds = effectiveDurations(net, dt);
     // one line per set of transitions (slots of one place moving together make one cycle each)
-    for (const auto& [c, alike] : distinctCycles(std::move(bounds))) {
+    for (const auto& [c, alike] : distinctCycles(plan->bounds)) {
       CycleFigures f;
       f.invariant = invariantText(net, invariants.p[c.invariant]);
       f.tokens = c.tokens;
@@ -70,6 +120,22 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
       // a flow's transitions do not repeat together: nothing measured to set beside a bound
       if (!c.flow) {
         for (auto t : c.transitions) f.measured = std::max(f.measured, r.transitions[t].mean_cycle);
+      }
+      // each circuit the token took, most taken first
+      if (const auto w = plan->watch_of.find(c.invariant); w != plan->watch_of.end()) {
+        for (const auto& taken : plan->trips->circuits(w->second)) {
+          CircuitFigures k;
+          k.trips = taken.trips;
+          k.measured = static_cast<double>(taken.steps) * dt / static_cast<double>(taken.trips);
+          for (auto t : taken.transitions) {
+            k.transitions.push_back(net.transitions()[t].name);
+            k.bound += seconds[t];
+          }
+          f.circuits.push_back(std::move(k));
+        }
+        std::stable_sort(f.circuits.begin(), f.circuits.end(),
+                         [](const CircuitFigures& a, const CircuitFigures& b) { return a.trips > b.trips; });
+        f.other_trips = plan->trips->overlong(w->second);
       }
       r.cycles.push_back(std::move(f));
     }
@@ -160,12 +226,21 @@ std::string reportJson(const Report& report) {
   });
   j.array("cycles", report.cycles.size(), [&](std::size_t i) {
     const auto& c = report.cycles[i];
-    return ordered_json{{"invariant", c.invariant},
-                        {"tokens", c.tokens},
-                        {"flow", c.flow},
-                        {"bound", c.flow ? ordered_json(nullptr) : ordered_json(c.bound)},
-                        {"measured", c.flow ? ordered_json(nullptr) : ordered_json(c.measured)},
-                        {"alike", c.alike}};
+    ordered_json cycle{{"invariant", c.invariant},
+                       {"tokens", c.tokens},
+                       {"flow", c.flow},
+                       {"bound", c.flow ? ordered_json(nullptr) : ordered_json(c.bound)},
+                       {"measured", c.flow ? ordered_json(nullptr) : ordered_json(c.measured)},
+                       {"alike", c.alike}};
+    if (!c.circuits.empty() || c.other_trips > 0) {
+      auto& circuits = cycle["circuits"] = ordered_json::array();
+      for (const auto& k : c.circuits) {
+        circuits.push_back({{"transitions", k.transitions}, {"trips", k.trips}, {"bound", k.bound},
+                            {"measured", k.measured}});
+      }
+      cycle["other_trips"] = c.other_trips;
+    }
+    return cycle;
   });
   j.member("cycles_complete", report.cycles_stop == net::ExploreStop::Done);
   ordered_json figures = ordered_json::object();
@@ -239,7 +314,7 @@ void printSummary(std::ostream& out, const Report& report) {
     out << "\n"
         << pad("tokens", 8, true) << pad("bound [s]", 12, true) << pad("measured [s]", 14, true)
         << pad("waited [s]", 12, true) << "  cycle (P-invariant)\n";
-    bool alike = false, flow = false;
+    bool alike = false, flow = false, circuits = false;
     for (const auto& c : report.cycles) {
       const bool m = c.measured > 0.0 && !c.flow;
       out << pad(std::to_string(c.tokens), 8, true) << pad(c.flow ? "flow" : fixed(c.bound, 3), 12, true)
@@ -252,6 +327,25 @@ void printSummary(std::ostream& out, const Report& report) {
       flow = flow || c.flow;
       core::writeWrapped(out, kFigures + 1, std::vector<std::string_view>(terms.begin(), terms.end()), kFigures + 2);
       out << "\n";
+      // the circuits its token took, each measured: times taken, then its transitions by their
+      // own names (the page's path is the cycle's)
+      for (const auto& k : c.circuits) {
+        std::vector<std::string> words{std::to_string(k.trips) + (k.trips == 1 ? " trip:" : " trips:")};
+        for (std::size_t i = 0; i < k.transitions.size(); ++i) {
+          const auto& name = k.transitions[i];
+          words.push_back(name.substr(name.rfind('/') + 1) + (i + 1 < k.transitions.size() ? "," : ""));
+        }
+        out << pad("", 8, true) << pad(fixed(k.bound, 3), 12, true) << pad(fixed(k.measured, 3), 14, true)
+            << pad(fixed(k.measured - k.bound, 3), 12, true) << "   ";
+        core::writeWrapped(out, kFigures + 3, std::vector<std::string_view>(words.begin(), words.end()), kFigures + 4);
+        out << "\n";
+      }
+      if (c.other_trips > 0) out << pad("", kFigures + 3, false) << c.other_trips << " more trips on other circuits\n";
+      circuits = circuits || !c.circuits.empty();
+    }
+    if (circuits) {
+      out << "indented under a cycle: each circuit its token took (a choice made on the way), measured\n"
+             "from a trip's start to the next trip's; its bound is its own durations summed\n";
     }
     if (flow) {
       out << "flow: tokens that take alternative paths through the net (a box passing a station or\n"

@@ -63,7 +63,7 @@ class SceneReader {
     node->loc = e.loc;
     if (!e.value.IsMap()) return;
 
-    std::vector<std::string> keys = {"name", "children"};
+    std::vector<std::string> keys = {"name", "children", "template", "data"};
     std::vector<std::pair<std::size_t, Entry>> read;  // fields read, in the file's order
     for (const auto* f : type->fields) keys.push_back(f->name);
     // a node placed by a field it does not have: Transforms place what is below them
@@ -74,6 +74,20 @@ class SceneReader {
     };
     for (const auto& field : r_.entries(e.value, "a " + e.key, keys, hint)) {
       if (field.key == "name") continue;
+      if (field.key == "template") {
+        bool b = false;
+        const YAML::Node& n = field.value;
+        if (n.IsScalar() && n.Tag() != "!" && YAML::convert<bool>::decode(n, b)) {
+          node->is_template = b;
+        } else {
+          r_.error(r_.loc(n, field.loc), "'template' expects true or false, got " + describe(n));
+        }
+        continue;
+      }
+      if (field.key == "data") {
+        readData(field, *node);
+        continue;
+      }
       if (field.key == "children") {
         if (!type->has_children) {
           r_.error(field.loc, "a " + e.key + " has no children");
@@ -104,6 +118,35 @@ class SceneReader {
       }
     }
     check(*node);
+  }
+
+  /// A node's user data: a map of names to a bool, a number, text or a list of numbers.
+  void readData(const Entry& data, scene::Node& node) {
+    if (!data.value.IsMap()) {
+      r_.error(r_.loc(data.value, data.loc), "'data' is a map of names to values ({kind: red, order: 17}), got " +
+                                                 describe(data.value));
+      return;
+    }
+    for (const auto& d : r_.entries(data.value, "'data'", {})) {
+      const YAML::Node& n = d.value;
+      if (!core::isIdentifier(d.key)) {
+        r_.error(d.loc, "datum name '" + d.key + "' is not an identifier (letters, digits and '_')");
+      } else if (n.IsScalar()) {
+        // a quoted value is text whatever it says
+        node.setDatum(d.key, n.Tag() == "!" ? FieldValue(n.Scalar()) : scene::datumFromText(n.Scalar()));
+      } else if (n.IsSequence()) {
+        std::vector<double> list;
+        for (const auto& x : n) {
+          auto v = r_.number(x, d.key);
+          if (!v) return;
+          list.push_back(*v);
+        }
+        node.setDatum(d.key, std::move(list));
+      } else {
+        r_.error(r_.loc(n, d.loc), "datum '" + d.key + "' is a bool, a number, text or a list of numbers, got " +
+                                       describe(n));
+      }
+    }
   }
 
   /// Checks that span fields: a GradientField's vectors must fill its grid.
@@ -214,11 +257,24 @@ void writeNode(YAML::Emitter& out, const scene::Node& node, scene::AngleUnit ang
   out << YAML::BeginMap << YAML::Key << node.type().name << YAML::Value << (block ? YAML::Block : YAML::Flow)
       << YAML::BeginMap;
   if (!node.name().empty()) out << YAML::Key << "name" << YAML::Value << node.name();
+  if (node.is_template) out << YAML::Key << "template" << YAML::Value << true;
   for (std::size_t i = 0; i < node.type().fields.size(); ++i) {
     const FieldDesc& f = *node.type().fields[i];
     if (node.value(i) == f.initial) continue;
     out << YAML::Key << f.name << YAML::Value;
     writeValue(out, scene::convertAngle(node, i, node.value(i), angles, false));
+  }
+  if (!node.data.empty()) {
+    out << YAML::Key << "data" << YAML::Value << YAML::Flow << YAML::BeginMap;
+    for (const auto& [key, value] : node.data) {
+      out << YAML::Key << key << YAML::Value;
+      const auto* text = std::get_if<std::string>(&value);
+      if (text && scene::datumNeedsQuotes(*text)) out << YAML::DoubleQuoted << *text;
+      else if (text) out << *text;
+      else if (std::holds_alternative<double>(value)) out << scene::datumText(value);
+      else writeValue(out, value);
+    }
+    out << YAML::EndMap;
   }
   if (block) {
     out << YAML::Key << "children" << YAML::Value << YAML::BeginSeq;

@@ -187,7 +187,7 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
     bool any = false;
     scene::traverse(sim->scene_->root(), [&](scene::Node& n, const scene::TraversalState&) {
       any = any || n.type().category == scene::Category::Sensor;
-    });
+    }, {}, scene::Templates::Skip);
     if (any) {
       if (!sensors::Hub::check(*sim->scene_, diags)) return nullptr;
       sim->hub_ = std::make_unique<sensors::Hub>(*sim->scene_, sim->physics_.get());
@@ -238,6 +238,12 @@ std::optional<bool> Simulation::evaluate(const std::string& expression, std::str
   return engine_->evaluate(expression, error);
 }
 
+void Simulation::keepCycles(std::unique_ptr<CyclePlan> plan) {
+  if (cycles_ && cycles_->trips) kernel_->removeObserver(cycles_->trips.get());
+  cycles_ = std::move(plan);
+  if (cycles_ && cycles_->trips) kernel_->addObserver(cycles_->trips.get());
+}
+
 Simulation::~Simulation() {
   // the kernel must not call hooks of a dead engine
   if (kernel_) kernel_->setHooks(nullptr);
@@ -257,16 +263,28 @@ scene::Node* Simulation::spawn(const scene::Node& templ, scene::Node& parent, st
   // a fresh name: the template's, numbered
   const std::string base = templ.name().empty() ? "spawn" : templ.name();
   const std::string name = scene_->freshName(parent, base);
-  // with `at`, the copy's own origin goes there: a Transform is moved itself, anything else
-  // gets a Transform of its own
+  // the copy keeps the Material in effect at the template: a copy of it goes first, where it
+  // holds for the copy only, unless the same one is in effect where the copy goes
+  const scene::Node* look = scene::materialAt(templ);
+  const scene::Node* there = parent.lastChild(scene::NodeKind::Material);
+  if (there == nullptr) there = scene::materialAt(parent);
+  const bool carry = look != nullptr && look != there;
+  // a node of its own that holds the copy: with `at`, to place what cannot place itself (a
+  // Transform is moved itself), and to hold the material carried
   const bool placeable = templ.is(scene::NodeKind::Transform);
   scene::Node* home = &parent;
-  if (at && !placeable) home = scene_->create(*scene_->types().find(scene::NodeKind::Transform), name, parent);
+  if ((at && !placeable) || carry) {
+    home = scene_->create(*scene_->types().find(scene::NodeKind::Transform), name, parent);
+  }
+  if (carry) scene_->copy(*look, *home);
   scene::Node* copy = scene_->copy(templ, *home, home == &parent ? name : templ.name());
+  copy->is_template = false;  // a copy to simulate and draw
   scene::Node* top = home == &parent ? copy : home;
   if (at) {
+    // the holder, when there is one, stands where its parent's frame is
+    scene::Node* placed = placeable ? copy : home;
     const core::Vec3 local = parent.world.inverse().apply(*at);
-    top->setValue(scene::field::Transform::Translation, std::array<double, 3>{local.x, local.y, local.z});
+    placed->setValue(scene::field::Transform::Translation, std::array<double, 3>{local.x, local.y, local.z});
   }
   core::Diagnostics diags;
   if (physics_ && !physics_->add(*top, diags)) {

@@ -622,6 +622,7 @@ std::vector<CycleBound> cycleBounds(const Net& net, const Invariants& invariants
           b.seconds = circuit->first;
           b.transitions = std::move(circuit->second);
           b.circuit = true;
+          b.alternatives = choice;
         }
       }
       if (choice && !b.circuit) {

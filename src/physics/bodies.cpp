@@ -32,6 +32,7 @@ World::Impl::Body* World::Impl::owner(const Node& node) {
 
 bool World::Impl::buildBodies(Node& node, core::Diagnostics& diags) {
   // bodies below a body are made before its mass is summed, so its shapes know their owner
+  if (node.is_template) return true;  // copied by spawning, not simulated
   const bool body = node.kind() == NodeKind::Body;
   if (body) {
     dBodyID id = dBodyCreate(world);

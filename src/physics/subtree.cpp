@@ -10,25 +10,18 @@ namespace gdpn::physics {
 using scene::Node;
 using scene::NodeKind;
 
-const Node* World::Impl::materialAt(const Node& node) {
-  for (const Node* n = &node; n->parent(); n = n->parent()) {
-    if (const Node* sib = n->previous(NodeKind::Material)) return sib;
-  }
-  return nullptr;
-}
-
 bool World::Impl::addSubtree(Node& top, core::Diagnostics& diags) {
   scene::updateTransforms(top);
   // bodies first: joints need both ends
   bool ok = buildBodies(top, diags);
   // a geometry per shape with the material in effect, and the sensors
   std::vector<std::pair<Node*, Body*>> pending_joints;
-  scene::TraversalState state{top.world, top.world_scale, materialAt(top)};
+  scene::TraversalState state{top.world, top.world_scale, scene::materialAt(top)};
   scene::traverse(top, [&](Node& n, const scene::TraversalState& st) {
     ok = addGeom(n, st, model_dir, diags) && ok;
     if (n.kind() == NodeKind::Joint) pending_joints.emplace_back(&n, n.parent() ? owner(*n.parent()) : nullptr);
     addSensor(n);
-  }, state);
+  }, state, scene::Templates::Skip);
   // then the joints
   for (const auto& [node, parent] : pending_joints) ok = addJoint(*node, parent, diags) && ok;
   return ok;

@@ -140,7 +140,7 @@ std::unique_ptr<World> World::create(scene::Scene& scene, const std::string& mod
   const Node* settings = nullptr;
   scene::traverse(scene.root(), [&](Node& n, const scene::TraversalState&) {
     if (!settings && n.kind() == NodeKind::World) settings = &n;
-  });
+  }, {}, scene::Templates::Skip);
   Vec3 g{0, 0, -9.81};
   double erp = 0.2, cfm = 1e-5;
   bool auto_disable = true;

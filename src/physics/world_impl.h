@@ -153,7 +153,6 @@ struct World::Impl {
   // subtree.cpp: building and removing
   /// The Material in effect at `node`: the last one among the earlier siblings of it or of
   /// any of its ancestors, nearest first; null when none.
-  static const scene::Node* materialAt(const scene::Node& node);
   /// Builds everything in the subtree at `top`: bodies first (joints need both ends), then
   /// one geometry per shape with the material in effect, and the sensors, then the joints.
   bool addSubtree(scene::Node& top, core::Diagnostics& diags);

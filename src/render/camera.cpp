@@ -45,12 +45,13 @@ Camera framing(const scene::Scene& scene) {
 
 namespace {
 
-/// The scene's Camera nodes, in tree order (depth first, children in order).
+/// The scene's Camera nodes, in tree order (depth first, children in order), none in templates.
 std::vector<const Node*> cameraNodes(const scene::Scene& scene) {
   std::vector<const Node*> out, todo{&scene.root()};
   while (!todo.empty()) {
     const Node* n = todo.back();
     todo.pop_back();
+    if (n->is_template) continue;
     if (n->kind() == NodeKind::Camera) out.push_back(n);
     for (auto it = n->children().rbegin(); it != n->children().rend(); ++it) todo.push_back(it->get());
   }

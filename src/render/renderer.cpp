@@ -146,6 +146,7 @@ struct Renderer::Impl {
 
   /// Collects what to draw below `n`, with `material` in effect.
   void collect(const Node& n, const Node* material, const DrawOptions& opt, std::vector<Item>& items) {
+    if (n.is_template) return;  // kept to be copied, not drawn
     const glm::mat4 at = placement(n.world, n.world_scale);
     switch (n.kind()) {
       case NodeKind::Cube: primitive(cube, n, at, lookOf(material), items); break;
@@ -408,6 +409,7 @@ DrawStats Renderer::draw(const scene::Scene& scene, const Camera& cam, const Dra
   while (!todo.empty()) {
     const Node* n = todo.back();
     todo.pop_back();
+    if (n->is_template) continue;
     if (n->kind() == NodeKind::Light && lights.size() < static_cast<std::size_t>(kMaxLights)) {
       Light l;
       l.kind = shaderKind(n->choice<scene::LightKind>(field::Light::Kind));

@@ -6,7 +6,9 @@
 
 namespace gdpn::scene {
 
-void traverse(Node& node, const std::function<void(Node&, const TraversalState&)>& visit, TraversalState state) {
+void traverse(Node& node, const std::function<void(Node&, const TraversalState&)>& visit, TraversalState state,
+              Templates templates) {
+  if (templates == Templates::Skip && node.is_template) return;
   // a body the physics moves is where the physics says, whatever its parents say
   if (node.dynamic_pose) state.pose = *node.dynamic_pose;
   visit(node, state);
@@ -18,8 +20,15 @@ void traverse(Node& node, const std::function<void(Node&, const TraversalState&)
   inner.scale = state.scale.times(node.localScale());
   for (const auto& child : node.children()) {
     if (child->kind() == NodeKind::Material) inner.material = child.get();
-    traverse(*child, visit, inner);
+    traverse(*child, visit, inner, templates);
   }
+}
+
+const Node* materialAt(const Node& node) {
+  for (const Node* n = &node; n->parent(); n = n->parent()) {
+    if (const Node* sib = n->previous(NodeKind::Material)) return sib;
+  }
+  return nullptr;
 }
 
 void updateTransforms(Node& root) {
@@ -110,7 +119,7 @@ core::Aabb boundingBox(const Node& node) {
   core::Aabb box;
   traverse(const_cast<Node&>(node), [&](Node& n, const TraversalState&) {
     if (n.type().category == Category::Shape) box.add(worldBounds(n));
-  }, {node.world, node.world_scale, nullptr});
+  }, {node.world, node.world_scale, nullptr}, node.is_template ? Templates::Visit : Templates::Skip);
   return box;
 }
 
@@ -120,7 +129,7 @@ Pick pick(Node& root, const core::Ray& ray) {
     if (n.type().category != Category::Shape) return;
     const double d = core::intersect(ray, worldBounds(n));
     if (d >= 0 && (!best.shape || d < best.distance)) best = {&n, d};
-  }, {root.world, root.world_scale, nullptr});
+  }, {root.world, root.world_scale, nullptr}, Templates::Skip);
   return best;
 }
 

@@ -28,6 +28,30 @@ Node::Node(const NodeType& type, std::string name) : type_(&type), name_(std::mo
 
 std::size_t Node::index() const { return parent_ ? index_ : 0; }
 
+const FieldValue* Node::datum(std::string_view key) const {
+  for (const auto& [k, v] : data) {
+    if (k == key) return &v;
+  }
+  return nullptr;
+}
+
+void Node::setDatum(const std::string& key, FieldValue value) {
+  for (auto& [k, v] : data) {
+    if (k == key) {
+      v = std::move(value);
+      return;
+    }
+  }
+  data.emplace_back(key, std::move(value));
+}
+
+bool Node::eraseDatum(std::string_view key) {
+  const auto it = std::find_if(data.begin(), data.end(), [&](const auto& kv) { return kv.first == key; });
+  if (it == data.end()) return false;
+  data.erase(it);
+  return true;
+}
+
 std::string Node::path() const {
   if (!parent_) return {};
   const std::string segment = name_.empty() ? "#" + std::to_string(index()) : name_;
@@ -79,6 +103,13 @@ Node* Node::previous(NodeKind kind) const {
     // the last of that kind with a smaller index
     auto it = std::lower_bound(nodes.begin(), nodes.end(), index_, [](const Node* n, std::size_t i) { return n->index_ < i; });
     return it == nodes.begin() ? nullptr : *std::prev(it);
+  }
+  return nullptr;
+}
+
+Node* Node::lastChild(NodeKind kind) const {
+  for (const auto& [k, nodes] : by_kind_) {
+    if (k == kind) return nodes.empty() ? nullptr : nodes.back();
   }
   return nullptr;
 }
@@ -258,6 +289,8 @@ Node* Scene::copy(const Node& source, Node& parent, std::string name) {
   made->values_ = source.values_;
   made->field_locs = source.field_locs;
   made->loc = source.loc;
+  made->is_template = source.is_template;
+  made->data = source.data;
   for (const auto& c : source.children_) copy(*c, *made);
   return made;
 }
@@ -278,7 +311,10 @@ std::unique_ptr<Scene> Scene::clone() const {
 namespace {
 
 bool sameTree(const Node& a, const Node& b) {
-  if (&a.type() != &b.type() || a.name() != b.name() || a.children().size() != b.children().size()) return false;
+  if (&a.type() != &b.type() || a.name() != b.name() || a.children().size() != b.children().size() ||
+      a.is_template != b.is_template || a.data != b.data) {
+    return false;
+  }
   for (std::size_t i = 0; i < a.type().fields.size(); ++i) {
     if (!(a.value(i) == b.value(i))) return false;
   }

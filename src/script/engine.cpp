@@ -727,7 +727,7 @@ std::unique_ptr<Engine> Engine::create(const net::Net& net, net::Kernel& kernel,
           !impl->globals.contains(n.name().c_str())) {
         impl->globals[py::str(n.name())] = detail::makeSensorView(detail::refTo(*impl), n.handle());
       }
-    });
+    }, {}, scene::Templates::Skip);
   }
 
   // name each script by its first user ("pre_fire of transition 'main/T'"); guards and

@@ -39,6 +39,10 @@ struct NodeView {
 struct SimView {
   Ref r;
 };
+struct DataView {  // a node's user data
+  Ref r;
+  net::NodeRef ref;
+};
 struct SensorView {
   Ref r;
   scene::NodeHandle sensor;
@@ -323,6 +327,65 @@ void setField(const NodeView& v, const std::string& name, const py::object& valu
   }
 }
 
+/// The scene node behind a data view.
+scene::Node& dataNode(const DataView& d) { return sceneNode(NodeView{d.r, d.ref}); }
+
+/// A datum for Python: bool, int, float, str or a list of floats.
+py::object datumToPython(const scene::FieldValue& v) {
+  return std::visit([](const auto& x) -> py::object { return py::cast(x); }, v);
+}
+
+/// The datum `key` of a data view; KeyError naming the node and the data it has.
+const scene::FieldValue& datumOf(const DataView& d, const std::string& key) {
+  const scene::Node& n = dataNode(d);
+  if (const auto* v = n.datum(key)) return *v;
+  std::vector<std::string> names;
+  for (const auto& kv : n.data) names.push_back(kv.first);
+  std::string have;
+  for (const auto& k : names) have += (have.empty() ? "" : ", ") + k;
+  throw py::key_error("node " + d.r.get().nodeName(d.ref) + " has no datum '" + key + "'" +
+                      core::didYouMean(key, names) + (names.empty() ? std::string("; it has no data") : "; it has " + have));
+}
+
+/// Sets datum `key` from Python: a bool, an int, a finite float, a str or a sequence of numbers.
+void setDatum(const DataView& d, const std::string& key, const py::object& value) {
+  scene::Node& n = dataNode(d);
+  if (!core::isIdentifier(key)) {
+    throw py::key_error("datum name '" + key + "' is not an identifier (letters, digits and '_')");
+  }
+  const auto bad = [&]() {
+    return py::type_error("datum '" + key + "' of node " + d.r.get().nodeName(d.ref) +
+                          " is a bool, an int, a finite float, a str or a list of numbers, got " +
+                          py::str(py::type::of(value).attr("__name__")).cast<std::string>() + " " +
+                          py::repr(value).cast<std::string>());
+  };
+  if (py::isinstance<py::bool_>(value)) {
+    n.setDatum(key, value.cast<bool>());
+  } else if (py::isinstance<py::int_>(value)) {
+    try {
+      n.setDatum(key, value.cast<std::int64_t>());
+    } catch (const py::cast_error&) {
+      throw bad();
+    }
+  } else if (py::isinstance<py::float_>(value)) {
+    const double x = value.cast<double>();
+    if (!std::isfinite(x)) throw bad();
+    n.setDatum(key, x);
+  } else if (py::isinstance<py::str>(value)) {
+    n.setDatum(key, value.cast<std::string>());
+  } else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    std::vector<double> list;
+    for (const auto& x : value.cast<py::sequence>()) {
+      if (py::isinstance<py::bool_>(x) || !(py::isinstance<py::int_>(x) || py::isinstance<py::float_>(x))) throw bad();
+      list.push_back(x.cast<double>());
+      if (!std::isfinite(list.back())) throw bad();
+    }
+    n.setDatum(key, std::move(list));
+  } else {
+    throw bad();
+  }
+}
+
 py::object slotAttr(Ref r, bool of_transition, std::uint32_t owner, const std::string& name) {
   const auto slot = net::parseSlot(name);
   if (!slot) throw py::attribute_error("no attribute '" + name + "' (slots are a0 ... d7)");
@@ -456,6 +519,11 @@ class Geometries(list):
                              "the node's path")
       .def_property_readonly("ref", [](const NodeView& v) { return v.ref; }, "the node's handle")
       .def_property_readonly("type", [](const NodeView& v) { return sceneNode(v).type().name; })
+      .def_property_readonly("data", [](const NodeView& v) { return DataView{v.r, v.ref}; },
+                             "its user data, declared in the model (`data: {kind: red}`) or set here: "
+                             "node.data['kind'] or node.data.kind")
+      .def_property_readonly("template", [](const NodeView& v) { return sceneNode(v).is_template; },
+                             "True for a template: kept to be spawned, neither simulated nor drawn")
       .def_property_readonly("parent", [](const NodeView& v) { return related(v, sceneNode(v).parent()); })
       .def_property_readonly("prev", [](const NodeView& v) { return related(v, sceneNode(v).prev()); })
       .def_property_readonly("next", [](const NodeView& v) { return related(v, sceneNode(v).next()); })
@@ -538,6 +606,61 @@ class Geometries(list):
            })
       .def("__hash__", [](const NodeView& v) { return std::hash<net::NodeRef>{}(v.ref); })
       .def("__repr__", [](const NodeView& v) { return "<node " + v.r.get().nodeName(v.ref) + ">"; });
+
+  py::class_<DataView>(m, "Data", "A node's user data: names to bool, int, float, str or a list of numbers")
+      .def("__getitem__", [](const DataView& d, const std::string& key) { return datumToPython(datumOf(d, key)); })
+      .def("__setitem__", &setDatum)
+      .def("__delitem__",
+           [](const DataView& d, const std::string& key) {
+             (void)datumOf(d, key);  // KeyError when missing
+             dataNode(d).eraseDatum(key);
+           })
+      .def("__contains__", [](const DataView& d, const std::string& key) { return dataNode(d).datum(key) != nullptr; })
+      .def("__len__", [](const DataView& d) { return dataNode(d).data.size(); })
+      .def("__iter__",
+           [](const DataView& d) {
+             py::list out;
+             for (const auto& kv : dataNode(d).data) out.append(py::str(kv.first));
+             return py::iter(out);
+           })
+      .def("keys",
+           [](const DataView& d) {
+             py::list out;
+             for (const auto& kv : dataNode(d).data) out.append(py::str(kv.first));
+             return out;
+           })
+      .def("items",
+           [](const DataView& d) {
+             py::list out;
+             for (const auto& [k, v] : dataNode(d).data) out.append(py::make_tuple(k, datumToPython(v)));
+             return out;
+           })
+      .def("get",
+           [](const DataView& d, const std::string& key, const py::object& otherwise) -> py::object {
+             const auto* v = dataNode(d).datum(key);
+             return v ? datumToPython(*v) : otherwise;
+           },
+           py::arg("key"), py::arg("default") = py::none())
+      .def("__getattr__",
+           [](const DataView& d, const std::string& key) {
+             try {
+               return datumToPython(datumOf(d, key));
+             } catch (const py::key_error& e) {
+               throw py::attribute_error(e.what());
+             }
+           })
+      .def("__setattr__", &setDatum)
+      .def("__delattr__",
+           [](const DataView& d, const std::string& key) {
+             if (!dataNode(d).eraseDatum(key)) {
+               throw py::attribute_error("node " + d.r.get().nodeName(d.ref) + " has no datum '" + key + "'");
+             }
+           })
+      .def("__repr__", [](const DataView& d) {
+        py::dict out;
+        for (const auto& [k, v] : dataNode(d).data) out[py::str(k)] = datumToPython(v);
+        return py::repr(out).cast<std::string>();
+      });
 
   py::class_<SlotView>(m, "Slot", "One slot of a place or transition")
       .def("get", &count, "tokens in the slot (a count; for a node slot, how many nodes)")

@@ -25,7 +25,7 @@ const scene::Node* fieldOf(const scene::Scene& scene, const scene::Node& sensor)
   const scene::Node* first = nullptr;
   scene::traverse(scene.root(), [&](scene::Node& n, const scene::TraversalState&) {
     if (!first && n.kind() == scene::NodeKind::GradientField) first = &n;
-  });
+  }, {}, scene::Templates::Skip);
   return first;
 }
 
@@ -68,14 +68,14 @@ bool Hub::check(const scene::Scene& scene, core::Diagnostics& diags) {
                                   : " at '" + n.text(scene::field::GradientSensor::Field) + "'"));
       ok = false;
     }
-  });
+  }, {}, scene::Templates::Skip);
   return ok;
 }
 
 Hub::Hub(scene::Scene& scene, physics::World* world) : scene_(scene), world_(world) {
   scene::traverse(scene_.root(), [&](scene::Node& n, const scene::TraversalState&) {
     if (n.type().category == scene::Category::Sensor) entries_.push_back({&n, {}});
-  });
+  }, {}, scene::Templates::Skip);
   std::sort(entries_.begin(), entries_.end(), [](const Entry& a, const Entry& b) { return a.node->path() < b.node->path(); });
 }
 
@@ -217,7 +217,7 @@ const std::vector<Change>& Hub::update(double now) {
       if (!viewpoint_ && n.kind() == scene::NodeKind::Camera) {
         viewpoint_ = st.pose.apply(n.vec3(scene::field::Camera::Position));
       }
-    });
+    }, {}, scene::Templates::Skip);
   }
   if (world_) world_->sense(felt_);
   index_.clear();

@@ -55,6 +55,36 @@ TEST_F(DocumentTest, SetFieldChangesTheNodeAndUndoRedoGiveBackTheSameBytes) {
   EXPECT_EQ(doc->text(), before);
 }
 
+TEST_F(DocumentTest, TheTemplateMarkAndUserDataAreEditsUndoneByteForByte) {
+  auto doc = openBin();
+  ASSERT_TRUE(doc);
+  const auto before = doc->text();
+  ASSERT_EQ(doc->execute(std::make_unique<SetTemplateCommand>("drop", true)), "");
+  ASSERT_EQ(doc->execute(std::make_unique<SetDatumCommand>("drop/paint", "kind", FieldValue{std::string("007")})), "");
+  ASSERT_EQ(doc->execute(std::make_unique<SetDatumCommand>("drop/paint", "order", FieldValue{std::int64_t{17}})), "");
+  ASSERT_EQ(doc->execute(std::make_unique<SetDatumCommand>("drop/paint", "kind", std::nullopt)), "");
+  ASSERT_EQ(doc->execute(std::make_unique<SetDatumCommand>("drop/paint", "kind", FieldValue{std::string("red")})), "");
+  const auto after = doc->text();
+  EXPECT_NE(after.find("template: true"), std::string::npos) << after;
+  EXPECT_NE(after.find("data: {order: 17, kind: red}"), std::string::npos) << after;
+  // refused, and the document unchanged: a name that is no identifier, a datum that is not there
+  EXPECT_NE(doc->execute(std::make_unique<SetDatumCommand>("drop/paint", "two words", FieldValue{true})), "");
+  EXPECT_EQ(doc->execute(std::make_unique<SetDatumCommand>("drop/paint", "colour", std::nullopt)),
+            "node 'drop/paint' has no datum 'colour'");
+  EXPECT_NE(doc->execute(std::make_unique<SetTemplateCommand>("nowhere", true)), "");
+  EXPECT_EQ(doc->text(), after);
+  // undone step by step: the kind removed then set again comes back first, in its old place
+  ASSERT_TRUE(doc->undo());
+  ASSERT_TRUE(doc->undo());
+  EXPECT_NE(doc->text().find("data: {kind: \"007\", order: 17}"), std::string::npos) << doc->text();
+  while (doc->undo()) {
+  }
+  EXPECT_EQ(doc->text(), before);
+  while (doc->redo()) {
+  }
+  EXPECT_EQ(doc->text(), after);
+}
+
 TEST_F(DocumentTest, SavedEditsReadBackAsTheSameModel) {
   auto doc = openBin();
   ASSERT_TRUE(doc);

@@ -257,12 +257,12 @@ TEST_F(HeadlessIde, AFieldEditIsUndoneAndRedone) {
 }
 
 TEST_F(HeadlessIde, ADragOfAnInspectorSliderIsOneUndoStep) {
-  // the feed's first Material: its shininess slider is the fifth row of the inspector at 1280 x 720
-  auto r = replay("- select: feed/#0\n- drag: {from: [500, 644], to: [560, 644]}\n");
+  // the feed's first Material: its shininess slider is the fifth row of the inspector at 1280 x 720 (below the line of the template mark and the data to add)
+  auto r = replay("- select: feed/#0\n- drag: {from: [500, 670], to: [560, 670]}\n");
   EXPECT_EQ(r["inspector"]["type"], "Material");
   EXPECT_EQ(r["undo"]["depth"], 1);
   EXPECT_EQ(r["undo"]["label"], "set feed/#0.shininess");
-  r = replay("- select: feed/#0\n- drag: {from: [500, 644], to: [560, 644]}\n- press: undo\n");
+  r = replay("- select: feed/#0\n- drag: {from: [500, 670], to: [560, 670]}\n- press: undo\n");
   EXPECT_EQ(r["undo"]["depth"], 0);
 }
 

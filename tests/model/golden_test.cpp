@@ -338,6 +338,11 @@ TEST(CliRun, TheFactorysSummaryFitsAHundredColumns) {
             std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("\n(+N alike): N more invariants with the same transitions, tokens and bound"), std::string::npos);
+  // each station's token took one of its circuits only (no box was skipped): its trips measured
+  EXPECT_NE(r.out.find("\n              15.010        16.802       1.792    5 trips: push_box, insert, pull_rod, paint,\n" +
+                       std::string(50, ' ') + "push_rod, reach, pull_box, release, wait, rearm\n"),
+            std::string::npos)
+      << r.out;
   // the boxes flow through the line (a station passes a box or takes it in): no bound, nothing
   // set beside one; the places that only read sensors are left out
   EXPECT_NE(r.out.find("\n      24        flow             -           -  factory/buffer.d0 + "), std::string::npos)

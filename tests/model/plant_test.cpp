@@ -8,6 +8,7 @@
 #include "gdpn/core/text.h"
 #include "gdpn/model/report.h"
 #include "gdpn/model/simulation.h"
+#include "gdpn/scene/actions.h"
 #include "support/sim_helpers.h"
 
 namespace gdpn::model {
@@ -380,6 +381,153 @@ TEST(PlantExample, TheFeederFillsTheBeltAndTheArmKeepsItsCycle) {
       EXPECT_DOUBLE_EQ(t.mean_cycle, 1.5);
     }
   }
+}
+
+}  // namespace
+}  // namespace gdpn::model
+
+namespace gdpn::model {
+namespace {
+
+// A template is kept to be copied: not simulated; its copies are ordinary nodes that keep
+// the template's material and carry its user data, which scripts read and set.
+TEST(Plant, TemplatesAreCopiedNotSimulatedAndCopiesKeepTheirLookAndData) {
+  core::Diagnostics diags;
+  auto sim = open(R"Y(gdpn: 1
+settings: {dt: 0.01, until: 1}
+scene:
+  - Material: {diffuse: [0.4, 0.4, 0.4]}
+  - Plane: {}
+  - Group:
+      name: store
+      template: true
+      children:
+        - Material: {diffuse: [0.9, 0.6, 0.2], friction: 0.3}
+        - Body: {name: box, mass: 0.5, data: {kind: crate, code: "007", weight: 2.0, sizes: [1, 2]}, children: [{Cube: {size: [0.1, 0.1, 0.1]}}]}
+        - Transform: {name: spot, children: [{Body: {name: ball, children: [{Sphere: {radius: 0.05}}]}}]}
+  - Group: {name: area}
+pages:
+  main:
+    places:
+      feed: {tokens: 2}
+      seen: {}
+    transitions:
+      make:
+        duration: 0.2
+        pre_fire: |
+          box = sim.node("area").spawn("store/box", at=(sim.step * 0.01, 0, 0.5))
+          assert not box.template and sim.node("store").template
+          assert (box.data.kind, box.data["code"], box.data.weight, box.data.sizes) == ("crate", "007", 2.0, [1.0, 2.0])
+          box.data.order = sim.step
+          box.data["fresh"] = True
+          del box.data.sizes
+          assert "sizes" not in box.data and box.data.get("sizes", 5) == 5 and len(box.data) == 5
+          assert list(box.data) == ["kind", "code", "weight", "order", "fresh"], list(box.data)
+          sim.log(repr(box.data))
+    arcs:
+      - feed -> make
+      - make -> seen
+)Y", diags);
+  ASSERT_TRUE(sim) << diags.str();
+  std::ostringstream trace;
+  sim->traceTo(trace);
+  // the template's two bodies are not in the physics; nothing else is
+  EXPECT_EQ(sim->physics()->bodyCount(), 0u);
+  const auto outcome = sim->run({});
+  ASSERT_NE(outcome.reason, StopReason::ScriptError) << outcome.message;
+  EXPECT_EQ(sim->physics()->bodyCount(), 2u);
+  // the template stayed where it was, untouched by gravity
+  const auto* templ = sim->plant()->find("store/box");
+  EXPECT_FALSE(templ->dynamic_pose.has_value());
+  // each copy: a Transform holding a copy of the template's material, then the box
+  const auto* holder = sim->plant()->find("area/box_1");
+  ASSERT_NE(holder, nullptr);
+  ASSERT_EQ(holder->children().size(), 2u);
+  const auto& look = *holder->children()[0];
+  ASSERT_EQ(look.kind(), scene::NodeKind::Material);
+  EXPECT_EQ(look.vec3(scene::field::Material::Diffuse).x, 0.9);
+  EXPECT_EQ(look.number(scene::field::Material::Friction), 0.3);
+  const auto* box = sim->plant()->find("area/box_1/box");
+  ASSERT_NE(box, nullptr);
+  EXPECT_EQ(scene::materialAt(*box), &look);
+  EXPECT_FALSE(box->is_template);
+  EXPECT_NEAR(box->world.position.z, 0.05, 0.01);  // simulated: it fell onto the ground
+  // its data: the template's, then the script's
+  ASSERT_NE(box->datum("order"), nullptr);
+  EXPECT_EQ(std::get<std::int64_t>(*box->datum("order")), 0);
+  EXPECT_EQ(std::get<bool>(*box->datum("fresh")), true);
+  EXPECT_EQ(box->datum("sizes"), nullptr);
+  EXPECT_EQ(templ->data.size(), 4u);  // the template's own data is unchanged
+  const auto lines = testing::logLines(trace.str());
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[0], "{'kind': 'crate', 'code': '007', 'weight': 2.0, 'order': 0, 'fresh': True}");
+}
+
+TEST(Plant, ASpawnedCopyNeedsNoHolderWhereItsMaterialIsInEffect) {
+  core::Diagnostics diags;
+  auto sim = open(R"Y(gdpn: 1
+settings: {dt: 0.01, until: 0.05}
+scene:
+  - Material: {diffuse: [0.9, 0.6, 0.2]}
+  - Group: {name: store, template: true, children: [{Body: {name: box, children: [{Cube: {size: [0.1, 0.1, 0.1]}}]}}]}
+  - Group: {name: area}
+pages:
+  main:
+    places: {feed: {tokens: 1}}
+    transitions:
+      make: {pre_fire: 'sim.node("area").spawn("store/box")'}
+    arcs: [feed -> make]
+)Y", diags);
+  ASSERT_TRUE(sim) << diags.str();
+  (void)sim->run({});
+  // the same material is in effect at the template and in 'area': the copy goes in as it is
+  const auto* area = sim->plant()->find("area");
+  ASSERT_EQ(area->children().size(), 1u);
+  EXPECT_EQ(area->children()[0]->kind(), scene::NodeKind::Body);
+  EXPECT_EQ(area->children()[0]->name(), "box_1");
+}
+
+TEST(Plant, AMissingDatumIsAKeyErrorNamingTheNodeAndItsData) {
+  core::Diagnostics diags;
+  auto sim = open(R"Y(gdpn: 1
+settings: {dt: 0.01, until: 1}
+scene:
+  - Body: {name: box, data: {kind: crate, order: 3}, children: [{Cube: {size: [0.1, 0.1, 0.1]}}]}
+pages:
+  main:
+    places: {p: {tokens: {d0: [box]}}, q: {}}
+    transitions:
+      t: {pre_fire: 'print(self.d0[0].data.kinds)'}
+    arcs: [{from: p, to: t, weight: {d0: 1}}, {from: t, to: q, weight: {d0: 1}}]
+)Y", diags);
+  ASSERT_TRUE(sim) << diags.str();
+  const auto outcome = sim->run({});
+  ASSERT_EQ(outcome.reason, StopReason::ScriptError);
+  EXPECT_NE(outcome.message.find("node box has no datum 'kinds' (did you mean 'kind'?); it has kind, order"),
+            std::string::npos)
+      << outcome.message;
+}
+
+TEST(Plant, ADatumOfAnotherKindIsATypeError) {
+  core::Diagnostics diags;
+  auto sim = open(R"Y(gdpn: 1
+settings: {dt: 0.01, until: 1}
+scene:
+  - Body: {name: box, children: [{Cube: {size: [0.1, 0.1, 0.1]}}]}
+pages:
+  main:
+    places: {p: {tokens: {d0: [box]}}, q: {}}
+    transitions:
+      t: {pre_fire: 'self.d0[0].data.where = {"x": 1}'}
+    arcs: [{from: p, to: t, weight: {d0: 1}}, {from: t, to: q, weight: {d0: 1}}]
+)Y", diags);
+  ASSERT_TRUE(sim) << diags.str();
+  const auto outcome = sim->run({});
+  ASSERT_EQ(outcome.reason, StopReason::ScriptError);
+  EXPECT_NE(outcome.message.find("TypeError: datum 'where' of node box is a bool, an int, a finite float, a str or a "
+                                 "list of numbers, got dict {'x': 1}"),
+            std::string::npos)
+      << outcome.message;
 }
 
 }  // namespace

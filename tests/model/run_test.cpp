@@ -122,9 +122,18 @@ std::string reportAsTree(const Report& report) {
   j["cycles"] = ordered_json::array();
   for (const auto& c : report.cycles) {
     const auto none = ordered_json(nullptr);
-    j["cycles"].push_back({{"invariant", c.invariant}, {"tokens", c.tokens}, {"flow", c.flow},
-                           {"bound", c.flow ? none : ordered_json(c.bound)},
-                           {"measured", c.flow ? none : ordered_json(c.measured)}, {"alike", c.alike}});
+    ordered_json cycle{{"invariant", c.invariant}, {"tokens", c.tokens}, {"flow", c.flow},
+                       {"bound", c.flow ? none : ordered_json(c.bound)},
+                       {"measured", c.flow ? none : ordered_json(c.measured)}, {"alike", c.alike}};
+    if (!c.circuits.empty() || c.other_trips > 0) {
+      cycle["circuits"] = ordered_json::array();
+      for (const auto& k : c.circuits) {
+        cycle["circuits"].push_back(
+            {{"transitions", k.transitions}, {"trips", k.trips}, {"bound", k.bound}, {"measured", k.measured}});
+      }
+      cycle["other_trips"] = c.other_trips;
+    }
+    j["cycles"].push_back(std::move(cycle));
   }
   j["cycles_complete"] = report.cycles_stop == net::ExploreStop::Done;
   j["figures"] = ordered_json::object();
@@ -134,7 +143,8 @@ std::string reportAsTree(const Report& report) {
 }
 
 TEST(Report, TheJsonWrittenPieceByPieceIsTheWholeTreesText) {
-  for (const char* model : {"examples/basics/two_cells", "tests/data/good/cycles.gdpn.yaml", "examples/basics/figure31"}) {
+  for (const char* model : {"examples/basics/two_cells", "tests/data/good/cycles.gdpn.yaml", "examples/basics/figure31",
+                            "tests/data/good/alternatives.gdpn.yaml"}) {
     SCOPED_TRACE(model);
     core::Diagnostics diags;
     const auto path = resolveModelPath(std::string(GDPN_SOURCE_DIR) + "/" + model, diags);
@@ -143,6 +153,7 @@ TEST(Report, TheJsonWrittenPieceByPieceIsTheWholeTreesText) {
     ASSERT_TRUE(m) << diags.str();
     auto sim = Simulation::create(*m, diags);
     ASSERT_TRUE(sim) << diags.str();
+    watchRoundTrips(*sim);
     auto report = makeReport(*sim, sim->run({20.0, {}}));
     EXPECT_EQ(reportJson(report), reportAsTree(report));
     // the other members: a message, figures and their error, nothing in the arrays
@@ -154,6 +165,43 @@ TEST(Report, TheJsonWrittenPieceByPieceIsTheWholeTreesText) {
     report.cycles_stop = net::ExploreStop::TimeLimit;
     EXPECT_EQ(reportJson(report), reportAsTree(report));
   }
+}
+
+// A station token that either works on a part or skips it: each circuit it took is measured
+// on its own, from a trip's start to the next one's.
+TEST(Report, EachCircuitOfATokenWithAlternativesIsMeasured) {
+  auto sim = open("tests/data/good/alternatives.gdpn.yaml");
+  ASSERT_TRUE(sim);
+  watchRoundTrips(*sim);
+  const auto r = makeReport(*sim, sim->run({}));
+  ASSERT_FALSE(r.cycles.empty());
+  const auto& station = r.cycles[0];
+  EXPECT_EQ(station.invariant, "main/ready + main/busy + main/skipped");
+  EXPECT_EQ(station.bound, 4.0);  // the longest circuit
+  ASSERT_EQ(station.circuits.size(), 2u);
+  // seven trips began; six ended (each when the next began), three of each kind
+  const auto& work = station.circuits[0].transitions[0] == "main/work" ? station.circuits[0] : station.circuits[1];
+  const auto& skip = &work == &station.circuits[0] ? station.circuits[1] : station.circuits[0];
+  EXPECT_EQ(work.transitions, (std::vector<std::string>{"main/work", "main/finish"}));
+  EXPECT_EQ(skip.transitions, (std::vector<std::string>{"main/skip", "main/back"}));
+  EXPECT_EQ(work.trips + skip.trips, 6);
+  EXPECT_EQ(work.trips, 3);
+  EXPECT_EQ(work.bound, 4.0);
+  EXPECT_DOUBLE_EQ(work.measured, 4.0);  // parts are always waiting: no time between trips
+  EXPECT_EQ(skip.bound, 1.0);
+  EXPECT_DOUBLE_EQ(skip.measured, 1.0);
+  EXPECT_EQ(station.other_trips, 0);
+  std::ostringstream text;
+  printSummary(text, r);
+  EXPECT_NE(text.str().find("               4.000         4.000       0.000    3 trips: work, finish\n"),
+            std::string::npos)
+      << text.str();
+  EXPECT_NE(text.str().find("each circuit its token took"), std::string::npos);
+  // not watched, nothing measured per circuit (the cost is paid only when asked)
+  auto plain = open("tests/data/good/alternatives.gdpn.yaml");
+  const auto q = makeReport(*plain, plain->run({}));
+  EXPECT_TRUE(q.cycles[0].circuits.empty());
+  EXPECT_EQ(q.cycles[0].bound, 4.0);
 }
 
 TEST(Run, ProducerConsumerSettlesToTheConsumersCycle) {

@@ -201,6 +201,32 @@ scene:
   EXPECT_TRUE(copy->sameAs(*sim->plant()));
 }
 
+TEST(Render, ATemplateIsNotDrawnNorItsLightsAndCameras) {
+  DirectDraw d(R"(gdpn: 1
+scene:
+  - Group:
+      name: store
+      template: true
+      children:
+        - Light: {kind: point, location: [0, -1, 0], intensity: 5}
+        - Camera: {name: inside, position: [0, 4, 0], target: [0, 0, 0]}
+        - Cube: {size: [1, 1, 1]}
+  - Camera: {name: front, position: [0, -4, 0], target: [0, 0, 0]}
+  - Sphere: {radius: 0.2}
+)", "template.gdpn.yaml", 160, 120);
+  ASSERT_TRUE(d.ready());
+  auto& scene = *d.sim->plant();
+  const auto with = d.renderer->draw(scene, d.camera, d.options);
+  // the first camera is the first that is no template's
+  std::string error;
+  EXPECT_EQ(chooseCamera(scene, "", 0, error).eye.y, -4.0);
+  EXPECT_NE(cameraProblem(scene, "fornt").find("the scene's cameras: front"), std::string::npos);
+  scene.find("store")->is_template = false;
+  const auto without = d.renderer->draw(scene, d.camera, d.options);
+  EXPECT_EQ(without.triangles, with.triangles + 12);  // the cube's, drawn once it is no template
+  EXPECT_EQ(chooseCamera(scene, "", 0, error).eye.y, 4.0);
+}
+
 TEST(Render, TheDirectionalLightCastsAShadowOnTheSideItShinesTowards) {
   // a cube 1 m above a plane, the light shining down and towards +x: its shadow falls on the
   // plane at x = +1 (right of the cube in the picture), and nowhere else

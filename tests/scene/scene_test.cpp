@@ -185,3 +185,108 @@ TEST(Actions, AMaterialHoldsForTheShapesAfterIt) {
 
 }  // namespace
 }  // namespace gdpn::scene
+
+namespace gdpn::scene {
+namespace {
+
+TEST(UserData, TextReadsAsABoolANumberOrItself) {
+  EXPECT_EQ(datumFromText("true"), FieldValue(true));
+  EXPECT_EQ(datumFromText("false"), FieldValue(false));
+  EXPECT_EQ(datumFromText("17"), FieldValue(std::int64_t{17}));
+  EXPECT_EQ(datumFromText("-3"), FieldValue(std::int64_t{-3}));
+  EXPECT_EQ(datumFromText("2.5"), FieldValue(2.5));
+  EXPECT_EQ(datumFromText("1e3"), FieldValue(1000.0));
+  // what is not exactly one of those stays text
+  for (const char* text : {"", "red", "True", "0x10", "+5", "1.5 m", "inf", "nan", "99999999999999999999e999"}) {
+    EXPECT_EQ(datumFromText(text), FieldValue(std::string(text))) << text;
+  }
+  EXPECT_EQ(datumFromText("[1, 2.5]"), FieldValue(std::vector<double>{1, 2.5}));
+  EXPECT_EQ(datumFromText("[]"), FieldValue(std::vector<double>{}));
+  for (const char* text : {"[1, ]", "[a]", "[1 2]", "[1,,2]", "["}) {
+    EXPECT_EQ(datumFromText(text), FieldValue(std::string(text))) << text;
+  }
+  // a whole number too large for 64 bits is a number
+  EXPECT_EQ(datumFromText("99999999999999999999"), FieldValue(1e20));
+}
+
+TEST(UserData, TextOfADatumReadsBackAsTheSameDatum) {
+  for (const FieldValue& v : {FieldValue(true), FieldValue(std::int64_t{-4}), FieldValue(2.0), FieldValue(0.1),
+                              FieldValue(1e300), FieldValue(std::string("crate"))}) {
+    EXPECT_EQ(datumFromText(datumText(v)), v) << datumText(v);
+  }
+  EXPECT_EQ(datumText(FieldValue(2.0)), "2.0");
+  EXPECT_EQ(datumText(FieldValue(std::vector<double>{1, 2.5})), "[1, 2.5]");
+  EXPECT_EQ(datumFromText(datumText(FieldValue(std::vector<double>{1, 2.5}))), FieldValue(std::vector<double>{1, 2.5}));
+  EXPECT_TRUE(datumNeedsQuotes("[1]"));
+  EXPECT_TRUE(datumNeedsQuotes("007"));
+  EXPECT_TRUE(datumNeedsQuotes("false"));
+  EXPECT_TRUE(datumNeedsQuotes(""));
+  EXPECT_FALSE(datumNeedsQuotes("crate"));
+}
+
+TEST(UserData, ANodeKeepsItsDataInOrderAndACopyTakesThem) {
+  Scene s;
+  Node* a = s.create(*s.types().find(NodeKind::Group), "a", s.root());
+  a->setDatum("kind", std::string("crate"));
+  a->setDatum("order", std::int64_t{3});
+  a->setDatum("kind", std::string("box"));  // set again: stays first
+  ASSERT_EQ(a->data.size(), 2u);
+  EXPECT_EQ(a->data[0].first, "kind");
+  EXPECT_EQ(*a->datum("kind"), FieldValue(std::string("box")));
+  EXPECT_EQ(a->datum("colour"), nullptr);
+  a->is_template = true;
+  Node* b = s.copy(*a, s.root(), "b");
+  EXPECT_TRUE(b->is_template);
+  EXPECT_EQ(b->data, a->data);
+  auto c = s.clone();
+  EXPECT_TRUE(s.sameAs(*c));
+  EXPECT_TRUE(b->eraseDatum("order"));
+  EXPECT_FALSE(b->eraseDatum("order"));
+  EXPECT_FALSE(s.sameAs(*c));  // data count in sameness
+  c->find("b")->eraseDatum("order");
+  EXPECT_TRUE(s.sameAs(*c));
+  c->find("a")->is_template = false;
+  EXPECT_FALSE(s.sameAs(*c));  // and so does the template mark
+}
+
+TEST(Templates, TraversalsThatSimulateOrDrawSkipThemAndWhatIsBelow) {
+  Scene s;
+  const auto& group = *s.types().find(NodeKind::Group);
+  const auto& cube = *s.types().find(NodeKind::Cube);
+  Node* store = s.create(group, "store", s.root());
+  store->is_template = true;
+  s.create(cube, "box", *store);
+  Node* area = s.create(group, "area", s.root());
+  s.create(cube, "crate", *area);
+  std::vector<std::string> all, live;
+  traverse(s.root(), [&](Node& n, const TraversalState&) { all.push_back(n.path()); });
+  traverse(s.root(), [&](Node& n, const TraversalState&) { live.push_back(n.path()); }, {}, Templates::Skip);
+  EXPECT_EQ(all, (std::vector<std::string>{"", "store", "store/box", "area", "area/crate"}));
+  EXPECT_EQ(live, (std::vector<std::string>{"", "area", "area/crate"}));
+  // a template is not hit, and the box around the scene leaves it out
+  updateTransforms(s.root());
+  EXPECT_EQ(pick(s.root(), core::Ray{{0, 0, 5}, {0, 0, -1}}).shape, s.find("area/crate"));
+  EXPECT_EQ(boundingBox(s.root()).hi.z, 0.5);
+  // unless asked for the template itself
+  EXPECT_FALSE(boundingBox(*store).empty());
+}
+
+TEST(Templates, TheMaterialInEffectIsTheNearestBeforeAtAnyLevel) {
+  Scene s;
+  const auto& group = *s.types().find(NodeKind::Group);
+  const auto& material = *s.types().find(NodeKind::Material);
+  const auto& cube = *s.types().find(NodeKind::Cube);
+  Node* outer = s.create(material, "outer", s.root());
+  Node* g = s.create(group, "g", s.root());
+  Node* first = s.create(cube, "first", *g);
+  Node* inner = s.create(material, "inner", *g);
+  Node* second = s.create(cube, "second", *g);
+  EXPECT_EQ(materialAt(*first), outer);
+  EXPECT_EQ(materialAt(*second), inner);
+  EXPECT_EQ(materialAt(*outer), nullptr);
+  EXPECT_EQ(g->lastChild(NodeKind::Material), inner);
+  EXPECT_EQ(g->lastChild(NodeKind::Sphere), nullptr);
+}
+
+}  // namespace
+}  // namespace gdpn::scene

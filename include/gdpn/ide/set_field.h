@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// The first command: set one field of one scene node, checked by the field's own
-/// description (the check the model loader uses).
+/// Commands that set what one scene node holds: a field, checked by the field's own
+/// description (the check the model loader uses); its template mark; a datum of its user data.
 
 #include <cstdint>
 #include <optional>
@@ -10,6 +10,7 @@
 
 #include "gdpn/ide/command.h"
 #include "gdpn/scene/types.h"
+#include "gdpn/scene/user_data.h"
 
 namespace gdpn::ide {
 
@@ -30,6 +31,37 @@ class SetFieldCommand final : public Command {
   std::string field_;  // the field's name
   scene::FieldValue value_, old_;
   std::uint64_t drag_;
+};
+
+/// Marks the node at `path` as a template, or not (Node::is_template).
+class SetTemplateCommand final : public Command {
+ public:
+  SetTemplateCommand(std::string path, bool on) : path_(std::move(path)), on_(on) {}
+  std::string apply(Document& doc) override;
+  void revert(Document& doc) override;
+  [[nodiscard]] std::string label() const override;
+  void absorb(const Command&) override {}
+
+ private:
+  std::string path_;
+  bool on_, old_ = false;
+};
+
+/// Sets datum `key` of the user data of the node at `path` to `value`; removes it when
+/// `value` is empty.
+class SetDatumCommand final : public Command {
+ public:
+  SetDatumCommand(std::string path, std::string key, std::optional<scene::FieldValue> value)
+      : path_(std::move(path)), key_(std::move(key)), value_(std::move(value)) {}
+  std::string apply(Document& doc) override;
+  void revert(Document& doc) override;
+  [[nodiscard]] std::string label() const override;
+  void absorb(const Command&) override {}
+
+ private:
+  std::string path_, key_;
+  std::optional<scene::FieldValue> value_;
+  scene::UserData old_;  // the data before, restored whole (order included)
 };
 
 /// The value of field `desc` written as `words` (one word for a scalar, one a number for a

@@ -34,6 +34,14 @@ struct PlaceFigures {
   bool sensors_only = false; ///< every slot of it reads a sensor (it holds no tokens of its own)
 };
 
+/// One path the token of a cycle with alternative circuits took, as the run measured it.
+struct CircuitFigures {
+  std::vector<std::string> transitions;  ///< in the order they started; the first takes the token from its home
+  std::int64_t trips = 0;                ///< times the token took it
+  double bound = 0.0;                    ///< seconds: its transitions' durations summed
+  double measured = 0.0;                 ///< seconds: the mean from a trip's start to the next trip's
+};
+
 /// One cycle of the net (a P-invariant carrying tokens): its bound beside what the run measured.
 struct CycleFigures {
   std::string invariant;        ///< its places, weighted: "a + b + 2*c"
@@ -42,6 +50,10 @@ struct CycleFigures {
   double bound = 0.0;           ///< seconds: the sum of its durations over its tokens (0 for a flow)
   double measured = 0.0;        ///< seconds: the slowest mean cycle among its transitions (0: none)
   int alike = 0;                ///< further invariants with the same transitions, tokens and bound (not listed)
+  /// one token with alternative circuits (a station that skips a box or paints it): each
+  /// circuit it took, most taken first (watched only when watchRoundTrips ran before the run)
+  std::vector<CircuitFigures> circuits;
+  std::int64_t other_trips = 0;  ///< trips not in `circuits` (too long, or too many circuits)
 };
 
 /// Everything the summary shows.
@@ -61,6 +73,11 @@ struct Report {
 /// The cycle bounds' budget by default, seconds of wall-clock time.
 inline constexpr double kCycleBoundSeconds = 10.0;
 
+/// Works out the net's cycles before `sim` runs (within `cycle_seconds` of wall-clock time) and
+/// watches the round trips of every token with alternative circuits, so that the report can
+/// show the measured cycle of each circuit; makeReport then reuses the cycles. Costs what the
+/// report's cycle bounds cost, and one lookup per transition start of a watched cycle.
+void watchRoundTrips(Simulation& sim, double cycle_seconds = kCycleBoundSeconds);
 /// Gathers the report of a finished run. The cycle bounds (from the P-invariants) stop after
 /// `cycle_seconds` of wall-clock time, and the report says so.
 Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_seconds = kCycleBoundSeconds);

@@ -6,13 +6,16 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <ostream>
 #include <unordered_map>
 
 #include "gdpn/model/model.h"
+#include "gdpn/net/invariants.h"
 #include "gdpn/net/kernel.h"
+#include "gdpn/net/round_trips.h"
 #include "gdpn/net/stats.h"
 #include "gdpn/net/trace.h"
 #include "gdpn/physics/world.h"
@@ -52,6 +55,16 @@ struct RunOutcome {
 
 /// Called now and then during a run with the steps done and the steps planned (0 if open).
 using ProgressFn = std::function<void(std::int64_t done, std::int64_t total)>;
+
+/// The net's cycles worked out before a run, and the round trips watched during it: what the
+/// report sets beside the bounds (watchRoundTrips in report.h).
+struct CyclePlan {
+  net::Invariants invariants;                    ///< the P-invariants
+  std::vector<net::CycleBound> bounds;           ///< their cycle bounds
+  net::ExploreStop stop = net::ExploreStop::Done;  ///< why the two were cut short (Done: not)
+  std::unique_ptr<net::RoundTrips> trips;        ///< null when no cycle has alternative circuits
+  std::map<std::size_t, std::size_t> watch_of;   ///< invariant index -> its watch in `trips`
+};
 
 /// A model made ready to run.
 class Simulation {
@@ -103,14 +116,20 @@ class Simulation {
   [[nodiscard]] const net::StatsCollector& stats() const { return *stats_; }
   /// The seed in use.
   [[nodiscard]] std::uint64_t seed() const { return seed_; }
+  /// Keeps `plan` for the report and lets its round trips watch the run (before it starts).
+  void keepCycles(std::unique_ptr<CyclePlan> plan);
+  /// The plan kept by keepCycles, or null.
+  [[nodiscard]] const CyclePlan* cycles() const { return cycles_.get(); }
   /// The name of a node token.
   [[nodiscard]] std::string nodeName(net::NodeRef ref) const;
   /// True once start() has run.
   [[nodiscard]] bool started() const { return started_; }
   /// Copies `templ` (a node of the plant) as a new child of `parent`, named after it with a
   /// number. With `at`, the copy's origin goes to that world position (m): a Transform copy is
-  /// moved itself, anything else is put under a new Transform. Its bodies join the physics;
-  /// the trace records it. Returns the copy, or null and `why`.
+  /// moved itself, anything else is put under a new Transform. The copy keeps the Material in
+  /// effect at `templ` (a copy of it goes first under a new Transform when another is in effect
+  /// at `parent`) and is no template, whatever `templ` is. Its bodies join the physics; the
+  /// trace records it. Returns the copy, or null and `why`.
   scene::Node* spawn(const scene::Node& templ, scene::Node& parent, std::optional<core::Vec3> at, std::string& why);
   /// Deletes `node` and its subtree from the plant: tokens that hold any of them leave the
   /// net, their bodies leave the physics, and the trace records it. The root stays.
@@ -175,6 +194,7 @@ class Simulation {
   std::unique_ptr<net::Kernel> kernel_;
   std::unique_ptr<net::StatsCollector> stats_;
   std::unique_ptr<net::TraceWriter> trace_;
+  std::unique_ptr<CyclePlan> cycles_;
   std::ostream* trace_out_ = nullptr;
   std::unique_ptr<script::Engine> engine_;
   std::uint64_t seed_ = 1;

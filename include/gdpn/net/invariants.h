@@ -87,6 +87,7 @@ struct CycleBound {
   std::int64_t tokens = 0;                 ///< weighted tokens on it, y·M0
   double seconds = 0.0;                    ///< sum of duration × weight taken, over tokens; or the longest circuit's duration
   bool circuit = false;                    ///< one token through a state machine: `seconds` is its longest elementary circuit
+  bool alternatives = false;               ///< a circuit with choices: the token's round trips take more than one path
   /// the tokens take alternative paths (a place of it feeds several of its transitions) and no
   /// circuit bounds them: a flow through the net, not a cycle; `seconds` is 0 (no bound)
   bool flow = false;

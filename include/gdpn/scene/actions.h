@@ -18,10 +18,21 @@ struct TraversalState {
   const Node* material = nullptr;   ///< the Material in effect, or null
 };
 
+/// Whether a traversal visits templates (Node::is_template) and their subtrees.
+enum class Templates : bool {
+  Visit,  ///< every node: editing, finding, deleting
+  Skip,   ///< what is simulated, sensed and drawn: templates and what is below them left out
+};
+
 /// Visits `node` and its subtree in order, calling `visit(node, state)` with the state in
 /// effect at each node. Group-like nodes push the state for their children and pop it after.
+/// With Templates::Skip a template (`node` itself included) is not visited, nor its subtree.
 void traverse(Node& node, const std::function<void(Node&, const TraversalState&)>& visit,
-              TraversalState state = {});
+              TraversalState state = {}, Templates templates = Templates::Visit);
+
+/// The Material in effect at `node`: the nearest one before it among its siblings, or before
+/// an ancestor among the ancestor's siblings; null when none is.
+const Node* materialAt(const Node& node);
 
 /// Sets Node::world and Node::world_scale of every node below `root` (itself included).
 void updateTransforms(Node& root);
@@ -37,7 +48,8 @@ core::Vec3 shapeExtent(const Node& node);
 /// yet loaded).
 core::Aabb shapeBounds(const Node& shape);
 
-/// The world box around every shape in `node`'s subtree (from the last updateTransforms()).
+/// The world box around every shape in `node`'s subtree (from the last updateTransforms()),
+/// templates left out unless `node` is one.
 core::Aabb boundingBox(const Node& node);
 
 /// What a ray hit.
@@ -47,7 +59,8 @@ struct Pick {
 };
 
 /// The first shape below `root` that `ray` hits (by its bounding box; exact for unrotated
-/// boxes, conservative otherwise), from the last updateTransforms().
+/// boxes, conservative otherwise), from the last updateTransforms(); templates are not drawn,
+/// so not hit.
 Pick pick(Node& root, const core::Ray& ray);
 
 }  // namespace gdpn::scene

@@ -16,6 +16,7 @@
 #include "gdpn/core/math.h"
 #include "gdpn/scene/fields.h"
 #include "gdpn/scene/types.h"
+#include "gdpn/scene/user_data.h"
 
 namespace gdpn::scene {
 
@@ -51,6 +52,8 @@ class Node {
   /// The nearest sibling before this one whose kind is exactly `kind`, or null. Logarithmic
   /// in the number of such siblings.
   [[nodiscard]] Node* previous(NodeKind kind) const;
+  /// Its last child whose kind is exactly `kind`, or null. Constant time in the children.
+  [[nodiscard]] Node* lastChild(NodeKind kind) const;
   /// This node's index among its siblings. Constant time.
   [[nodiscard]] std::size_t index() const;
 
@@ -108,8 +111,20 @@ class Node {
   /// after updateTransforms.
   [[nodiscard]] core::Pose framePose() const { return frameIn(world, world_scale); }
 
+  /// The user datum called `key`, or null.
+  [[nodiscard]] const FieldValue* datum(std::string_view key) const;
+  /// Sets the user datum `key` (added at the end when new).
+  void setDatum(const std::string& key, FieldValue value);
+  /// Removes the user datum `key`; false when there is none.
+  bool eraseDatum(std::string_view key);
+
   /// Where the node was declared in the model file.
   core::SourceLoc loc;
+  /// A template: the node and its subtree are kept in the scene to be copied (spawned) but are
+  /// neither simulated, sensed nor drawn. A copy made by spawning is not a template.
+  bool is_template = false;
+  /// Its user data (datum(), setDatum()).
+  UserData data;
   /// Where each field was written (empty loc for fields left at their default).
   std::vector<core::SourceLoc> field_locs;
   /// Set by the physics for a moving Body: its placement in the world, which then replaces

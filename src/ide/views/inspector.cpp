@@ -15,6 +15,7 @@
 #include "gdpn/core/text.h"
 #include "gdpn/ide/set_field.h"
 #include "gdpn/scene/actions.h"
+#include "gdpn/scene/user_data.h"
 
 namespace gdpn::ide {
 
@@ -108,6 +109,63 @@ bool fieldWidget(const scene::FieldDesc& d, const FieldValue& v, FieldValue& out
   return false;
 }
 
+/// Runs `command` on the document; its refusal is shown above the fields.
+void edit(App& app, std::unique_ptr<Command> command) { app.inspector_error = app.document().execute(std::move(command)); }
+
+/// A node's template mark and its user data, each edit a command: one line with the mark and
+/// a datum to add, then a line per datum.
+void nodeExtras(App& app, const scene::Node& node, const std::string& path, nlohmann::json& report) {
+  bool on = node.is_template;
+  if (ImGui::Checkbox("template", &on)) edit(app, std::make_unique<SetTemplateCommand>(path, on));
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("kept to be copied by spawn: neither simulated, sensed nor drawn");
+  report["template"] = node.is_template;
+  for (const scene::Node* up = node.parent(); up != nullptr && !node.is_template; up = up->parent()) {
+    if (!up->is_template) continue;
+    ImGui::SameLine();
+    ImGui::TextDisabled("(inside template %s)", up->path().c_str());
+    report["inside_template"] = up->path();
+    break;
+  }
+  // a datum to add: a name and a value (true/false, a number, [numbers] or text)
+  const float right = ImGui::GetContentRegionMax().x;
+  ImGui::SameLine(std::max(ImGui::GetCursorPosX() + 8.0F, right - 330.0F));
+  ImGui::TextDisabled("add data");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(90);
+  ImGui::InputTextWithHint("##datum_key", "name", &app.datum_key);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(120);
+  const bool enter = ImGui::InputTextWithHint("##datum_value", "value", &app.datum_value,
+                                              ImGuiInputTextFlags_EnterReturnsTrue);
+  ImGui::SameLine();
+  if ((ImGui::SmallButton("add") || enter) && !app.datum_key.empty()) {
+    edit(app, std::make_unique<SetDatumCommand>(path, app.datum_key, scene::datumFromText(app.datum_value)));
+    if (app.inspector_error.empty()) {
+      app.datum_key.clear();
+      app.datum_value.clear();
+    }
+  }
+  auto& data = report["data"] = nlohmann::json::object();
+  for (const auto& [key, value] : node.data) {
+    ImGui::PushID(key.c_str());
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextDisabled("data");
+    ImGui::SameLine(50);
+    ImGui::TextUnformatted(key.c_str());
+    ImGui::SameLine(160);
+    std::string text = scene::datumText(value);
+    ImGui::SetNextItemWidth(-40);
+    if (ImGui::InputText("##datum", &text, ImGuiInputTextFlags_EnterReturnsTrue)) {
+      edit(app, std::make_unique<SetDatumCommand>(path, key, scene::datumFromText(text)));
+    }
+    ImGui::SameLine();
+    if (ImGui::SmallButton("x")) edit(app, std::make_unique<SetDatumCommand>(path, key, std::nullopt));
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("remove %s", key.c_str());
+    ImGui::PopID();
+    std::visit([&](const auto& v) { data[key] = v; }, value);
+  }
+}
+
 void nodeInspector(App& app, const std::string& path, nlohmann::json& report) {
   auto* s = app.document().scene();
   auto* node = s != nullptr ? s->find(path) : nullptr;
@@ -134,6 +192,7 @@ void nodeInspector(App& app, const std::string& path, nlohmann::json& report) {
   }
   report["node"] = path;
   report["type"] = node->type().name;
+  nodeExtras(app, *node, path, report);
   auto& fields = report["fields"] = nlohmann::json::array();
   const auto& types = node->type().fields;
   if (types.empty()) {

@@ -150,7 +150,8 @@ void drawNode(TreeState& st, scene::Node& node) {
   if (st.app.reveal_selection && !st.selected.empty() && st.selected.starts_with(path + "/")) {
     ImGui::SetNextItemOpen(true);
   }
-  const auto label = node.type().name + (node.name().empty() ? std::string() : "  " + node.name());
+  const auto label = node.type().name + (node.name().empty() ? std::string() : "  " + node.name()) +
+                     (node.is_template ? "  (template)" : "");
   if (is_token || is_sensor) {
     ImGui::PushFont(st.app.fonts.bold);
     st.bold.push_back(path);
