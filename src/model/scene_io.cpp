@@ -269,7 +269,9 @@ void writeNode(YAML::Emitter& out, const scene::Node& node, scene::AngleUnit ang
     for (const auto& [key, value] : node.data) {
       out << YAML::Key << key << YAML::Value;
       const auto* text = std::get_if<std::string>(&value);
-      if (text && scene::datumNeedsQuotes(*text)) out << YAML::DoubleQuoted << *text;
+      // text that would read back as something else, YAML's null included, is quoted
+      const bool null = text && (*text == "~" || *text == "null" || *text == "Null" || *text == "NULL");
+      if (text && (scene::datumNeedsQuotes(*text) || null)) out << YAML::DoubleQuoted << *text;
       else if (text) out << *text;
       else if (std::holds_alternative<double>(value)) out << scene::datumText(value);
       else writeValue(out, value);

@@ -169,8 +169,17 @@ TEST(SortingDevice, EveryOneOfFiftyBallsEndsInItsBin) {
     }
   }
   EXPECT_EQ(blue + red, 50);
-  EXPECT_GT(blue, 10);  // both colours came (seed 7 draws about half of each)
-  EXPECT_GT(red, 10);
+  EXPECT_EQ(blue, 23);  // seed 7
+  EXPECT_EQ(red, 27);
+  // the model's summary counts the same from the balls' user data and positions
+  std::string error;
+  const auto figures = sim->modelFigures(error);
+  ASSERT_EQ(error, "");
+  EXPECT_EQ(figures, (std::vector<std::pair<std::string, std::string>>{
+                         {"balls dropped", "50"},
+                         {"pushed left (blue) / right (red)", "23 / 27"},
+                         {"left bin: blue / red", "23 / 0"},
+                         {"right bin: red / blue", "27 / 0"}}));
 }
 
 }  // namespace
