@@ -528,7 +528,7 @@ bool App::perform(const Action& a, std::string& error) {
           }
           datum = std::move(xs);
         } else if (a.value.size() == 1) {
-          datum = scene::datumFromText(a.value[0]);
+          datum = a.quoted ? scene::FieldValue(a.value[0]) : scene::datumFromText(a.value[0]);
         }
         error = doc_->execute(std::make_unique<SetDatumCommand>(a.text, a.field.substr(5), std::move(datum)));
         inspector_error = error;

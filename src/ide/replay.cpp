@@ -155,6 +155,7 @@ class ActionReader {
     const auto value = v["value"];
     if (value.IsScalar()) {
       a.value = {value.Scalar()};
+      a.quoted = value.Tag() == "!";
     } else if (value.IsSequence()) {
       a.list = true;
       for (const auto& x : value) {

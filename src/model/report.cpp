@@ -33,7 +33,8 @@ void watchRoundTrips(Simulation& sim, double cycle_seconds) {
   if (!timed(net)) return;
   auto plan = planCycles(sim, cycle_seconds);
   std::vector<std::vector<net::TransitionId>> takers_of;  // per place slot, made when first needed
-  for (const auto& b : plan->bounds) {
+  // one watch per cycle the report lists (alike ones share its circuits)
+  for (const auto& [b, alike] : distinctCycles(plan->bounds)) {
     if (!b.alternatives) continue;
     // the token's home: the place slot that holds it at the start
     const auto& weights = plan->invariants.p[b.invariant].weights;

@@ -1,5 +1,7 @@
 #include "scene_io.h"
 
+#include <cmath>
+
 
 #include "gdpn/core/text.h"
 
@@ -139,6 +141,10 @@ class SceneReader {
         for (const auto& x : n) {
           auto v = r_.number(x, d.key);
           if (!v) return;
+          if (!std::isfinite(*v)) {
+            r_.error(x, "datum '" + d.key + "' holds finite numbers, got " + describe(x));
+            return;
+          }
           list.push_back(*v);
         }
         node.setDatum(d.key, std::move(list));
@@ -266,12 +272,15 @@ void writeNode(YAML::Emitter& out, const scene::Node& node, scene::AngleUnit ang
   }
   if (!node.data.empty()) {
     out << YAML::Key << "data" << YAML::Value << YAML::Flow << YAML::BeginMap;
+    // YAML reads these plain words as null: quoted, names and text stay what they are
+    const auto null = [](const std::string& s) { return s == "~" || s == "null" || s == "Null" || s == "NULL"; };
     for (const auto& [key, value] : node.data) {
-      out << YAML::Key << key << YAML::Value;
+      out << YAML::Key;
+      if (null(key)) out << YAML::DoubleQuoted;
+      out << key << YAML::Value;
       const auto* text = std::get_if<std::string>(&value);
-      // text that would read back as something else, YAML's null included, is quoted
-      const bool null = text && (*text == "~" || *text == "null" || *text == "Null" || *text == "NULL");
-      if (text && (scene::datumNeedsQuotes(*text) || null)) out << YAML::DoubleQuoted << *text;
+      // text that would read back as something else is quoted
+      if (text && (scene::datumNeedsQuotes(*text) || null(*text))) out << YAML::DoubleQuoted << *text;
       else if (text) out << *text;
       else if (std::holds_alternative<double>(value)) out << scene::datumText(value);
       else writeValue(out, value);

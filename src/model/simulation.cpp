@@ -260,6 +260,17 @@ scene::Node* Simulation::spawn(const scene::Node& templ, scene::Node& parent, st
     why = "a " + parent.type().name + " takes no children";
     return nullptr;
   }
+  // a copy goes where it is simulated: not into the template, nor into any template
+  for (const scene::Node* p = &parent; p != nullptr; p = p->parent()) {
+    if (p == &templ) {
+      why = "'" + parent.path() + "' is the template or inside it";
+      return nullptr;
+    }
+    if (p->is_template) {
+      why = "'" + parent.path() + "' is inside template '" + p->path() + "', which is not simulated";
+      return nullptr;
+    }
+  }
   // a fresh name: the template's, numbered
   const std::string base = templ.name().empty() ? "spawn" : templ.name();
   const std::string name = scene_->freshName(parent, base);
@@ -267,6 +278,7 @@ scene::Node* Simulation::spawn(const scene::Node& templ, scene::Node& parent, st
   // holds for the copy only, unless the same one is in effect where the copy goes
   const scene::Node* look = scene::materialAt(templ);
   const scene::Node* there = parent.lastChild(scene::NodeKind::Material);
+  while (there != nullptr && there->is_template) there = there->previous(scene::NodeKind::Material);
   if (there == nullptr) there = scene::materialAt(parent);
   const bool carry = look != nullptr && look != there;
   // a node of its own that holds the copy: with `at`, to place what cannot place itself (a
@@ -276,6 +288,7 @@ scene::Node* Simulation::spawn(const scene::Node& templ, scene::Node& parent, st
   if ((at && !placeable) || carry) {
     home = scene_->create(*scene_->types().find(scene::NodeKind::Transform), name, parent);
   }
+  if (home != &parent) holders_.insert(home->handle());
   if (carry) scene_->copy(*look, *home);
   scene::Node* copy = scene_->copy(templ, *home, home == &parent ? name : templ.name());
   copy->is_template = false;  // a copy to simulate and draw
@@ -309,8 +322,18 @@ void Simulation::deleteNode(scene::Node& node) {
   if (trace_) trace_->event(kernel_->steps(), "delete", "\"node\":" + core::jsonQuote(path));
   // tokens first (the trace names them while they still resolve), then the physics, the nodes
   kernel_->dropNodes([&](net::NodeRef r) { return gone.count(r) > 0; });
+  scene::Node* up = node.parent();
   if (physics_) physics_->remove(node);
   scene_->destroy(node);
+  // the Transform spawn made to hold a copy goes with it, once it holds nothing but the
+  // Material carried for it, so that spawning and deleting for ever does not grow the scene
+  if (holders_.count(up->handle()) > 0 &&
+      std::all_of(up->children().begin(), up->children().end(),
+                  [](const auto& c) { return c->kind() == scene::NodeKind::Material; })) {
+    holders_.erase(up->handle());
+    if (physics_) physics_->remove(*up);
+    scene_->destroy(*up);
+  }
 }
 
 std::optional<RunOutcome> Simulation::scriptHalt() const {

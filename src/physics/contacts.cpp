@@ -25,7 +25,7 @@ Surface World::Impl::surfaceFor(const Node& n, const scene::TraversalState& st, 
   // a conveyor among the shape's siblings (the last one, if several)
   if (n.parent()) {
     for (const auto& sib : n.parent()->children()) {
-      if (sib->kind() != NodeKind::Conveyor) continue;
+      if (sib->kind() != NodeKind::Conveyor || sib->is_template) continue;
       surface.conveyor = true;
       surface.conveyor_node = sib.get();
       surface.conveyor_field = sib->vec3(scene::field::Conveyor::Direction);

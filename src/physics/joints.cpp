@@ -85,8 +85,9 @@ bool World::Impl::addJoint(Node& n, Body* parent_body, core::Diagnostics& diags)
   while (!todo.empty() && !child_body) {
     Node* c = todo.back();
     todo.pop_back();
+    if (c->is_template) continue;  // not simulated: nothing to join
     if (c->kind() == scene::NodeKind::Body) {
-      child_body = &bodies[body_of[c->handle()]];
+      if (const auto b = body_of.find(c->handle()); b != body_of.end()) child_body = &bodies[b->second];
     } else {
       for (auto it = c->children().rbegin(); it != c->children().rend(); ++it) todo.push_back(it->get());
     }

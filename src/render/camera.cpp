@@ -63,10 +63,12 @@ std::vector<const Node*> cameraNodes(const scene::Scene& scene) {
 std::string cameraProblem(const scene::Scene& scene, const std::string& path) {
   if (path.empty()) return {};
   const Node* n = scene.find(path);
-  if (n != nullptr && n->kind() == NodeKind::Camera) return {};
+  if (n != nullptr && n->kind() == NodeKind::Camera && !scene::inTemplate(*n)) return {};
   std::vector<std::string> cameras;
   for (const Node* c : cameraNodes(scene)) cameras.push_back(c->path());
-  std::string why = n == nullptr ? "no node at '" + path + "'" : "'" + path + "' is a " + n->type().name + ", not a Camera";
+  std::string why = n == nullptr                        ? "no node at '" + path + "'"
+                    : n->kind() != NodeKind::Camera ? "'" + path + "' is a " + n->type().name + ", not a Camera"
+                                                    : "'" + path + "' is a Camera in a template, which is not drawn";
   if (cameras.empty()) return why + "; the scene has no Camera node (leave --camera out for a framing view)";
   std::string list;
   for (const auto& c : cameras) list += (list.empty() ? "" : ", ") + c;

@@ -191,7 +191,7 @@ struct Renderer::Impl {
     }
     const Node* inner = material;
     for (const auto& child : n.children()) {
-      if (child->kind() == NodeKind::Material) inner = child.get();
+      if (child->kind() == NodeKind::Material && !child->is_template) inner = child.get();
       collect(*child, inner, opt, items);
     }
   }

@@ -19,14 +19,25 @@ void traverse(Node& node, const std::function<void(Node&, const TraversalState&)
   inner.pose = node.frameIn(state.pose, state.scale);
   inner.scale = state.scale.times(node.localScale());
   for (const auto& child : node.children()) {
-    if (child->kind() == NodeKind::Material) inner.material = child.get();
+    const bool skipped = templates == Templates::Skip && child->is_template;
+    if (child->kind() == NodeKind::Material && !skipped) inner.material = child.get();
     traverse(*child, visit, inner, templates);
   }
 }
 
+bool inTemplate(const Node& node) {
+  for (const Node* n = &node; n != nullptr; n = n->parent()) {
+    if (n->is_template) return true;
+  }
+  return false;
+}
+
 const Node* materialAt(const Node& node) {
   for (const Node* n = &node; n->parent(); n = n->parent()) {
-    if (const Node* sib = n->previous(NodeKind::Material)) return sib;
+    // a Material marked as a template colours nothing: the one before it, then
+    for (const Node* sib = n->previous(NodeKind::Material); sib != nullptr; sib = sib->previous(NodeKind::Material)) {
+      if (!sib->is_template) return sib;
+    }
   }
   return nullptr;
 }

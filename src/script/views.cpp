@@ -652,9 +652,12 @@ class Geometries(list):
       .def("__setattr__", &setDatum)
       .def("__delattr__",
            [](const DataView& d, const std::string& key) {
-             if (!dataNode(d).eraseDatum(key)) {
-               throw py::attribute_error("node " + d.r.get().nodeName(d.ref) + " has no datum '" + key + "'");
+             try {
+               (void)datumOf(d, key);
+             } catch (const py::key_error& e) {
+               throw py::attribute_error(e.what());
              }
+             dataNode(d).eraseDatum(key);
            })
       .def("__repr__", [](const DataView& d) {
         py::dict out;

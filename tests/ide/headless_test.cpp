@@ -256,6 +256,25 @@ TEST_F(HeadlessIde, AFieldEditIsUndoneAndRedone) {
   EXPECT_EQ(r["undo"]["depth"], 1);
 }
 
+TEST_F(HeadlessIde, TheInspectorShowsAndSetsATemplatesMarkAndUserData) {
+  auto r = replayOn("examples/plant/feeder",
+                    "- select: store/box\n"
+                    "- set: {node: store/box, field: data.code, value: \"007\"}\n"
+                    "- set: {node: store/box, field: data.order, value: 17}\n"
+                    "- set: {node: store/box, field: data.sizes, value: [1, 2.5]}\n"
+                    "- set: {node: store, field: template, value: false}\n");
+  EXPECT_EQ(r["inspector"]["data"], nlohmann::json::parse(R"({"kind": "crate", "code": "007", "order": 17,
+                                                              "sizes": [1.0, 2.5]})"));
+  EXPECT_EQ(r["inspector"]["template"], false);
+  EXPECT_FALSE(r["inspector"].contains("inside_template"));  // the store was unmarked last
+  EXPECT_EQ(r["undo"]["depth"], 4);
+  EXPECT_EQ(r["undo"]["label"], "unmark template store");
+  r = replayOn("examples/plant/feeder", "- select: store/box\n");
+  EXPECT_EQ(r["inspector"]["inside_template"], "store");
+  replayOn("examples/plant/feeder", "- set: {node: store, field: template, value: maybe}\n", {}, 1);
+  EXPECT_NE(last_.out.find("actions.yaml:1:3: error: 'template' expects true or false"), std::string::npos) << last_.out;
+}
+
 TEST_F(HeadlessIde, ADragOfAnInspectorSliderIsOneUndoStep) {
   // the feed's first Material: its shininess slider is the fifth row of the inspector at 1280 x 720 (below the line of the template mark and the data to add)
   auto r = replay("- select: feed/#0\n- drag: {from: [500, 670], to: [560, 670]}\n");

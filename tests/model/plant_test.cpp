@@ -532,3 +532,85 @@ pages:
 
 }  // namespace
 }  // namespace gdpn::model
+
+namespace gdpn::model {
+namespace {
+
+TEST(Plant, ACopyGoesNeitherIntoItsTemplateNorIntoAnyTemplate) {
+  for (const char* into : {"store", "store/box", "spare"}) {
+    SCOPED_TRACE(into);
+    core::Diagnostics diags;
+    auto sim = open(std::string(R"Y(gdpn: 1
+settings: {dt: 0.01, until: 1}
+scene:
+  - Group: {name: store, template: true, children: [{Group: {name: box}}]}
+  - Group: {name: spare, template: true}
+pages:
+  main:
+    places: {p: {tokens: 1}}
+    transitions:
+      t: {pre_fire: 'sim.node(")Y") + into + R"Y(").spawn("store/box")'}
+    arcs: [p -> t]
+)Y", diags);
+    ASSERT_TRUE(sim) << diags.str();
+    const auto outcome = sim->run({});
+    ASSERT_EQ(outcome.reason, StopReason::ScriptError);
+    const std::string why = std::string(into) == "store/box" ? "'store/box' is the template or inside it"
+                                                             : "'" + std::string(into) + "' is inside template '" + into +
+                                                                   "', which is not simulated";
+    EXPECT_NE(outcome.message.find(why), std::string::npos)
+        << outcome.message;
+  }
+}
+
+TEST(Plant, TheTransformThatHoldsASpawnedCopyGoesWithIt) {
+  core::Diagnostics diags;
+  auto sim = open(R"Y(gdpn: 1
+settings: {dt: 0.01, until: 1}
+scene:
+  - Material: {diffuse: [0.4, 0.4, 0.4]}
+  - Group:
+      name: store
+      template: true
+      children:
+        - Material: {diffuse: [0.9, 0.6, 0.2]}
+        - Body: {name: box, children: [{Cube: {size: [0.1, 0.1, 0.1]}}]}
+  - Group: {name: area}
+pages:
+  main:
+    places: {p: {tokens: 5}}
+    transitions:
+      t:
+        duration: 0.1
+        pre_fire: |
+          box = sim.node("area").spawn("store/box", at=(0, 0, 1))
+          assert box.parent.children[0].type == "Material"
+          box.delete()
+    arcs: [p -> t]
+)Y", diags);
+  ASSERT_TRUE(sim) << diags.str();
+  const auto outcome = sim->run({});
+  ASSERT_NE(outcome.reason, StopReason::ScriptError) << outcome.message;
+  // five copies made and deleted: nothing left of them, their holders included
+  EXPECT_TRUE(sim->plant()->find("area")->children().empty());
+  EXPECT_EQ(sim->physics()->bodyCount(), 0u);
+}
+
+TEST(Plant, ATemplateMaterialColoursNothingAfterIt) {
+  core::Diagnostics diags;
+  auto sim = open(R"Y(gdpn: 1
+settings: {dt: 0.01, until: 0.02}
+scene:
+  - Material: {name: grey, diffuse: [0.4, 0.4, 0.4]}
+  - Material: {name: orange, template: true, diffuse: [0.9, 0.6, 0.2]}
+  - Group: {name: area}
+pages:
+  main:
+    places: {p: {tokens: 1}}
+)Y", diags);
+  ASSERT_TRUE(sim) << diags.str();
+  EXPECT_EQ(scene::materialAt(*sim->plant()->find("area")), sim->plant()->find("grey"));
+}
+
+}  // namespace
+}  // namespace gdpn::model

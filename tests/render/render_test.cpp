@@ -221,6 +221,7 @@ scene:
   std::string error;
   EXPECT_EQ(chooseCamera(scene, "", 0, error).eye.y, -4.0);
   EXPECT_NE(cameraProblem(scene, "fornt").find("the scene's cameras: front"), std::string::npos);
+  EXPECT_NE(cameraProblem(scene, "store/inside").find("'store/inside' is a Camera in a template"), std::string::npos);
   scene.find("store")->is_template = false;
   const auto without = d.renderer->draw(scene, d.camera, d.options);
   EXPECT_EQ(without.triangles, with.triangles + 12);  // the cube's, drawn once it is no template

@@ -42,6 +42,7 @@ struct Action {
   std::string field;           ///< Set: the field; Break: starts, completes, place or when
   std::vector<std::string> value;  ///< Set: the value's words (one for a scalar, more for a list)
   bool list = false;           ///< Set: the value was a list
+  bool quoted = false;         ///< Set: the value was quoted (text, for a datum)
   double number = 0;           ///< RunFor: seconds; Steps, Frames: the count; Break: at_least; Wheel: clicks
   double x = 0, y = 0;         ///< Click, Drag, Wheel: the point (Drag: where it starts), pixels
   double x2 = 0, y2 = 0;       ///< Drag: where it ends, pixels

@@ -11,6 +11,7 @@
 #include <optional>
 #include <ostream>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "gdpn/model/model.h"
 #include "gdpn/net/invariants.h"
@@ -126,13 +127,15 @@ class Simulation {
   [[nodiscard]] bool started() const { return started_; }
   /// Copies `templ` (a node of the plant) as a new child of `parent`, named after it with a
   /// number. With `at`, the copy's origin goes to that world position (m): a Transform copy is
-  /// moved itself, anything else is put under a new Transform. The copy keeps the Material in
-  /// effect at `templ` (a copy of it goes first under a new Transform when another is in effect
-  /// at `parent`) and is no template, whatever `templ` is. Its bodies join the physics; the
-  /// trace records it. Returns the copy, or null and `why`.
+  /// moved itself, anything else is put under a new Transform. Where a Material is in effect at
+  /// `templ`, the copy keeps it (a copy of it goes first under a new Transform when another is
+  /// in effect at `parent`); the copy is no template, whatever `templ` is. Its bodies join the
+  /// physics; the trace records it. Refused into `templ` itself or into any template. Returns
+  /// the copy, or null and `why`.
   scene::Node* spawn(const scene::Node& templ, scene::Node& parent, std::optional<core::Vec3> at, std::string& why);
   /// Deletes `node` and its subtree from the plant: tokens that hold any of them leave the
-  /// net, their bodies leave the physics, and the trace records it. The root stays.
+  /// net, their bodies leave the physics, and the trace records it. The root stays. The
+  /// Transform spawn made to hold `node` goes too once it holds nothing else.
   void deleteNode(scene::Node& node);
   /// The model's own figures: what its globals' `summary()` returns (empty without one).
   std::vector<std::pair<std::string, std::string>> modelFigures(std::string& error) {
@@ -195,6 +198,7 @@ class Simulation {
   std::unique_ptr<net::StatsCollector> stats_;
   std::unique_ptr<net::TraceWriter> trace_;
   std::unique_ptr<CyclePlan> cycles_;
+  std::unordered_set<scene::NodeHandle> holders_;  // Transforms spawn made to hold a copy
   std::ostream* trace_out_ = nullptr;
   std::unique_ptr<script::Engine> engine_;
   std::uint64_t seed_ = 1;

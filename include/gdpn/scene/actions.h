@@ -30,8 +30,11 @@ enum class Templates : bool {
 void traverse(Node& node, const std::function<void(Node&, const TraversalState&)>& visit,
               TraversalState state = {}, Templates templates = Templates::Visit);
 
+/// True when `node` or a node above it is a template (Node::is_template).
+[[nodiscard]] bool inTemplate(const Node& node);
+
 /// The Material in effect at `node`: the nearest one before it among its siblings, or before
-/// an ancestor among the ancestor's siblings; null when none is.
+/// an ancestor among the ancestor's siblings, that is no template; null when none is.
 const Node* materialAt(const Node& node);
 
 /// Sets Node::world and Node::world_scale of every node below `root` (itself included).

@@ -146,7 +146,11 @@ void nodeExtras(App& app, const scene::Node& node, const std::string& path, nloh
     }
   }
   auto& data = report["data"] = nlohmann::json::object();
-  for (const auto& [key, value] : node.data) {
+  // an edit changes node.data: made after the loop over it
+  std::unique_ptr<Command> change;
+  for (const auto& datum : node.data) {
+    const std::string& key = datum.first;  // named, not bound: lambdas capture it below
+    const scene::FieldValue& value = datum.second;
     ImGui::PushID(key.c_str());
     ImGui::AlignTextToFramePadding();
     ImGui::TextDisabled("data");
@@ -156,14 +160,17 @@ void nodeExtras(App& app, const scene::Node& node, const std::string& path, nloh
     std::string text = scene::datumText(value);
     ImGui::SetNextItemWidth(-40);
     if (ImGui::InputText("##datum", &text, ImGuiInputTextFlags_EnterReturnsTrue)) {
-      edit(app, std::make_unique<SetDatumCommand>(path, key, scene::datumFromText(text)));
+      // text stays text ("007" is not the number 7); anything else reads as the file does
+      const bool is_text = std::holds_alternative<std::string>(value);
+      change = std::make_unique<SetDatumCommand>(path, key, is_text ? scene::FieldValue(text) : scene::datumFromText(text));
     }
     ImGui::SameLine();
-    if (ImGui::SmallButton("x")) edit(app, std::make_unique<SetDatumCommand>(path, key, std::nullopt));
+    if (ImGui::SmallButton("x")) change = std::make_unique<SetDatumCommand>(path, key, std::nullopt);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("remove %s", key.c_str());
     ImGui::PopID();
     std::visit([&](const auto& v) { data[key] = v; }, value);
   }
+  if (change) edit(app, std::move(change));
 }
 
 void nodeInspector(App& app, const std::string& path, nlohmann::json& report) {

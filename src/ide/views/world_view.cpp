@@ -80,7 +80,7 @@ void drawViewBar(App& app, scene::Scene* s) {
         if (n.kind() != scene::NodeKind::Camera) return;
         const auto path = n.path();
         if (ImGui::Selectable(path.c_str(), path == app.camera_node)) app.camera_node = path;
-      });
+      }, {}, scene::Templates::Skip);
     }
     ImGui::EndCombo();
   }
