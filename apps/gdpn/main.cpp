@@ -161,8 +161,11 @@ int check(const std::string& arg, double script_timeout_s) {
     std::cerr << diags.errorCount() << (diags.errorCount() == 1 ? " error\n" : " errors\n");
     return 1;
   }
-  std::cout << *path << ": ok (" << net->places().size() << " places, " << net->transitions().size()
-            << " transitions, " << net->terms().size() << " arc terms)\n";
+  // "1 place", "2 places"
+  const auto counted = [](std::size_t n, const char* what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); };
+  std::cout << *path << ": ok (" << counted(net->places().size(), "place") << ", "
+            << counted(net->transitions().size(), "transition") << ", " << counted(net->terms().size(), "arc term")
+            << ")\n";
   return 0;
 }
 

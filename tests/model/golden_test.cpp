@@ -52,6 +52,9 @@ TEST(Cli, CheckAcceptsEveryExampleAndGoodModel) {
       EXPECT_NE(r.out.find(": ok ("), std::string::npos) << r.out;
     }
   }
+  // one of a kind in the singular
+  const auto r = gdpn("check tests/data/good/user_data.gdpn.yaml");
+  EXPECT_NE(r.out.find(": ok (1 place, 0 transitions, 0 arc terms)\n"), std::string::npos) << r.out;
 }
 
 TEST(Cli, CheckReportsMistakesAtTheirLocationAndFails) {
