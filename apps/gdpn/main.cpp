@@ -181,6 +181,7 @@ struct CaptureArgs {
   std::string page;         // render --net --page
   bool at_given = false;    // --at was on the command line
   bool size_given = false;  // --size was on the command line
+  bool quiet = false;       // no sim.log lines, no progress
 };
 
 /// The --size argument as width and height in pixels; nullopt after saying what is wrong.
@@ -247,6 +248,7 @@ int capture(CaptureArgs a, bool movie) {
   auto session = open(a.model, a.seed, 0.0);
   if (!session) return 1;
   model::Simulation* sim = &session->simulation();
+  if (a.quiet) sim->setLogEcho(false);
   std::string error;
   bool ok = false;
   if (!movie) {
@@ -256,7 +258,7 @@ int capture(CaptureArgs a, bool movie) {
     std::signal(SIGINT, onSigint);
     gdpn::capture::RecordResult result;
     {
-      ProgressBar bar(isatty(STDERR_FILENO));
+      ProgressBar bar(!a.quiet && isatty(STDERR_FILENO));
       ok = gdpn::capture::record(*sim, a.until, a.options, a.out, std::ref(bar), &g_interrupted, result, error);
     }
     std::signal(SIGINT, SIG_DFL);
@@ -814,6 +816,7 @@ int main(int argc, char** argv) {
     cmd->add_flag("!--no-ground", args.options.ground, "no sky and no ground grid: the background in one colour");
     cmd->add_option("--seed", args.seed, "the random seed (default: the model's)")->check(kSeed);
     cmd->add_option("-o,--output", args.out, "the file to write")->required();
+    cmd->add_flag("--quiet,-q", args.quiet, "no sim.log lines and no progress on stderr");
   };
   add_look(render_cmd, render_args);
   render_cmd->add_flag("--net", render_args.net, "draw the net of a page with its marking (.svg or .png) instead of the plant; without --size, as large as the page needs");

@@ -328,6 +328,12 @@ TEST(CliRun, QuietSilencesSimLogButTheTraceKeepsItAndAPictureIsOnlyWrittenAsPng)
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.out.find("a picture of the plant is written as .png"), std::string::npos) << r.out;
   EXPECT_TRUE(dir.names().size() == 1);
+  // a picture's run logs too, unless quiet: then only the line that names the picture
+  r = gdpn("render examples/factory --at 5 --size 64x36 -o " + dir.file("a.png"));
+  EXPECT_NE(r.out.find("[t=4] released boxes/b00/box"), std::string::npos) << r.out;
+  r = gdpn("render examples/factory --at 5 --size 64x36 --quiet -o " + dir.file("b.png"));
+  EXPECT_EQ(r.code, 0);
+  EXPECT_EQ(r.out, dir.file("b.png") + ": 64x36 at t = 5 s\n");
 }
 
 TEST(CliRun, TheFactorysSummaryFitsAHundredColumns) {
