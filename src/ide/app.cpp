@@ -516,17 +516,14 @@ bool App::perform(const Action& a, std::string& error) {
       if (a.field.starts_with("data.")) {
         std::optional<scene::FieldValue> datum;
         if (a.list) {
-          std::vector<double> xs;
-          for (const auto& w : a.value) {
-            const auto x = scene::datumFromText(w);
-            if (const auto* i = std::get_if<std::int64_t>(&x)) xs.push_back(static_cast<double>(*i));
-            else if (const auto* d = std::get_if<double>(&x)) xs.push_back(*d);
-          }
-          if (xs.size() != a.value.size()) {
+          // the list as the file's text rule reads it: "[1, 2.5]"
+          std::string text = "[";
+          for (const auto& w : a.value) text += (text.size() > 1 ? ", " : "") + w;
+          datum = scene::datumFromText(text + "]");
+          if (!std::holds_alternative<std::vector<double>>(*datum)) {
             error = "a datum's list holds numbers only";
             break;
           }
-          datum = std::move(xs);
         } else if (a.value.size() == 1) {
           datum = a.quoted ? scene::FieldValue(a.value[0]) : scene::datumFromText(a.value[0]);
         }

@@ -347,6 +347,19 @@ const scene::FieldValue& datumOf(const DataView& d, const std::string& key) {
                       core::didYouMean(key, names) + (names.empty() ? std::string("; it has no data") : "; it has " + have));
 }
 
+/// Removes datum `key`; KeyError as datumOf() when there is none.
+void eraseDatum(const DataView& d, const std::string& key) {
+  (void)datumOf(d, key);
+  dataNode(d).eraseDatum(key);
+}
+
+/// The names of a node's data, in order.
+py::list dataKeys(const DataView& d) {
+  py::list out;
+  for (const auto& kv : dataNode(d).data) out.append(py::str(kv.first));
+  return out;
+}
+
 /// Sets datum `key` from Python: a bool, an int, a finite float, a str or a sequence of numbers.
 void setDatum(const DataView& d, const std::string& key, const py::object& value) {
   scene::Node& n = dataNode(d);
@@ -610,25 +623,11 @@ class Geometries(list):
   py::class_<DataView>(m, "Data", "A node's user data: names to bool, int, float, str or a list of numbers")
       .def("__getitem__", [](const DataView& d, const std::string& key) { return datumToPython(datumOf(d, key)); })
       .def("__setitem__", &setDatum)
-      .def("__delitem__",
-           [](const DataView& d, const std::string& key) {
-             (void)datumOf(d, key);  // KeyError when missing
-             dataNode(d).eraseDatum(key);
-           })
+      .def("__delitem__", &eraseDatum)
       .def("__contains__", [](const DataView& d, const std::string& key) { return dataNode(d).datum(key) != nullptr; })
       .def("__len__", [](const DataView& d) { return dataNode(d).data.size(); })
-      .def("__iter__",
-           [](const DataView& d) {
-             py::list out;
-             for (const auto& kv : dataNode(d).data) out.append(py::str(kv.first));
-             return py::iter(out);
-           })
-      .def("keys",
-           [](const DataView& d) {
-             py::list out;
-             for (const auto& kv : dataNode(d).data) out.append(py::str(kv.first));
-             return out;
-           })
+      .def("__iter__", [](const DataView& d) { return py::iter(dataKeys(d)); })
+      .def("keys", &dataKeys)
       .def("items",
            [](const DataView& d) {
              py::list out;
@@ -653,11 +652,10 @@ class Geometries(list):
       .def("__delattr__",
            [](const DataView& d, const std::string& key) {
              try {
-               (void)datumOf(d, key);
+               eraseDatum(d, key);
              } catch (const py::key_error& e) {
                throw py::attribute_error(e.what());
              }
-             dataNode(d).eraseDatum(key);
            })
       .def("__repr__", [](const DataView& d) {
         py::dict out;
