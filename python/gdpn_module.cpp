@@ -42,17 +42,28 @@ py::module_& module() {
 
 class Model {
  public:
-  Model(std::string path, std::optional<std::uint64_t> seed, double script_timeout) : path_(std::move(path)) {
+  Model(std::string path, std::optional<std::uint64_t> seed, double script_timeout, const py::dict& params)
+      : path_(std::move(path)) {
     core::Diagnostics diags;
     auto resolved = model::resolveModelPath(path_, diags);
     if (!resolved) raiseModelError(diags);
     path_ = *resolved;
-    auto m = model::loadModel(path_, diags);
+    std::vector<model::ParamOverride> overrides;
+    for (const auto& [name, value] : params) {
+      if (py::isinstance<py::bool_>(value) || !(py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value))) {
+        throw py::type_error("params: '" + py::str(name).cast<std::string>() + "' expects a number, got " +
+                             py::repr(value).cast<std::string>());
+      }
+      overrides.push_back({py::str(name).cast<std::string>(), py::repr(value).cast<std::string>(), "params="});
+    }
+    auto m = model::loadModel(path_, diags, overrides);
     if (!m) raiseModelError(diags);
     session_ = session::Session::create(std::move(*m), diags, {seed, script_timeout});
     if (!session_) raiseModelError(diags);
     session_->traceTo(trace_);
   }
+
+  const std::vector<model::Param>& params() const { return session_->simulation().model().params; }
 
   py::dict run(std::optional<double> until, std::optional<std::int64_t> steps, std::optional<std::uint64_t> seed) {
     if (seed) reset(seed);
@@ -365,13 +376,25 @@ class FireError(ValueError):
       .def_property_readonly("steps", &Model::steps, "steps taken")
       .def_property_readonly("seed", &Model::seed)
       .def_property_readonly("path", &Model::path)
+      .def_property_readonly(
+          "params",
+          [](const Model& mo) {
+            py::dict out;
+            for (const auto& p : mo.params()) {
+              if (p.integer) out[py::str(p.name)] = py::int_(static_cast<long long>(p.value));
+              else out[py::str(p.name)] = py::float_(p.value);
+            }
+            return out;
+          },
+          "the model's parameters as this run has them: {name: number}")
       .def("__repr__", [](const Model& mo) { return "<gdpn.Model " + mo.path() + ">"; });
 
   m.def(
       "load",
-      [](const std::string& path, std::optional<std::uint64_t> seed, double script_timeout) {
-        return std::make_unique<Model>(path, seed, script_timeout);
+      [](const std::string& path, std::optional<std::uint64_t> seed, double script_timeout, const py::dict& params) {
+        return std::make_unique<Model>(path, seed, script_timeout, params);
       },
-      py::arg("path"), py::arg("seed") = py::none(), py::arg("script_timeout") = 0.0,
-      "Loads a model file (or a folder holding one); raises gdpn.ModelError on mistakes");
+      py::arg("path"), py::arg("seed") = py::none(), py::arg("script_timeout") = 0.0, py::arg("params") = py::dict(),
+      "Loads a model file (or a folder holding one), its parameters set from `params` ({name: number}) where "
+      "given; raises gdpn.ModelError on mistakes");
 }

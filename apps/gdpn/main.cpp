@@ -130,13 +130,33 @@ class ProgressBar {
   std::chrono::steady_clock::time_point last_{};
 };
 
+/// The --param arguments (NAME=VALUE each, checked by the option's validator).
+std::vector<model::ParamOverride> paramOverrides(const std::vector<std::string>& args) {
+  std::vector<model::ParamOverride> out;
+  for (const auto& a : args) {
+    if (auto o = model::parseParamArgument(a)) out.push_back(std::move(*o));
+  }
+  return out;
+}
+
+/// `--param NAME=VALUE` on `cmd` (repeatable), into `out`.
+void addParamOption(CLI::App* cmd, std::vector<std::string>& out) {
+  cmd->add_option("--param", out, "set a parameter of the model's params section: NAME=VALUE (repeatable)")
+      ->allow_extra_args(false)
+      ->check(CLI::Validator(
+          [](std::string& s) {
+            return model::parseParamArgument(s) ? std::string() : "expects NAME=VALUE, got '" + s + "'";
+          },
+          "NAME=VALUE"));
+}
+
 /// Loads and compiles MODEL (file or folder), printing diagnostics; nullptr on error.
 std::unique_ptr<gdpn::session::Session> open(const std::string& arg, std::optional<std::uint64_t> seed,
-                                             double script_timeout_s) {
+                                             double script_timeout_s, const std::vector<std::string>& params) {
   Diagnostics diags;
   std::unique_ptr<gdpn::session::Session> sim;
   if (auto path = model::resolveModelPath(arg, diags)) {
-    if (auto m = model::loadModel(*path, diags)) {
+    if (auto m = model::loadModel(*path, diags, paramOverrides(params))) {
       sim = gdpn::session::Session::create(*m, diags, {seed, script_timeout_s});
     }
   }
@@ -145,11 +165,11 @@ std::unique_ptr<gdpn::session::Session> open(const std::string& arg, std::option
   return sim;
 }
 
-int check(const std::string& arg, double script_timeout_s) {
+int check(const std::string& arg, double script_timeout_s, const std::vector<std::string>& params) {
   Diagnostics diags;
   auto path = model::resolveModelPath(arg, diags);
   std::optional<model::Model> m;
-  if (path) m = model::loadModel(*path, diags);
+  if (path) m = model::loadModel(*path, diags, paramOverrides(params));
   std::shared_ptr<const gdpn::net::Net> net;
   std::unique_ptr<model::Simulation> sim;
   if (m) net = gdpn::net::compile(m->net, diags);
@@ -182,6 +202,7 @@ struct CaptureArgs {
   bool at_given = false;    // --at was on the command line
   bool size_given = false;  // --size was on the command line
   bool quiet = false;       // no sim.log lines, no progress
+  std::vector<std::string> params;  // --param NAME=VALUE
 };
 
 /// The --size argument as width and height in pixels; nullopt after saying what is wrong.
@@ -211,7 +232,7 @@ int renderNet(const CaptureArgs& a) {
     return 2;
   }
   if (overwritesInput("-o", a.out, {{"the model file", modelFile(a.model)}})) return 2;
-  auto session = open(a.model, a.seed, 0.0);
+  auto session = open(a.model, a.seed, 0.0, a.params);
   if (!session) return 1;
   std::string error;
   Diagnostics warnings;
@@ -245,7 +266,7 @@ int capture(CaptureArgs a, bool movie) {
               << "named otherwise would mislead)\n";
     return 2;
   }
-  auto session = open(a.model, a.seed, 0.0);
+  auto session = open(a.model, a.seed, 0.0, a.params);
   if (!session) return 1;
   model::Simulation* sim = &session->simulation();
   if (a.quiet) sim->setLogEcho(false);
@@ -289,6 +310,7 @@ struct AnalyzeArgs {
   std::string witness;               // where to write the first answer's witness
   bool reduction = true;             // stubborn sets in the searches on the fly
   std::string graph;                 // write the reachability graph here (.dot or .aut) instead
+  std::vector<std::string> params;   // --param NAME=VALUE
 };
 
 /// Reads the --query arguments: each is a file of formulas (one per line; blank lines and
@@ -367,7 +389,7 @@ int analyze(const AnalyzeArgs& a) {
     spec = gdpn::net::loadPnml(a.model, diags);
   } else if (auto resolved = model::resolveModelPath(a.model, diags)) {
     path = *resolved;
-    if (auto m = model::loadModel(path, diags)) {
+    if (auto m = model::loadModel(path, diags, paramOverrides(a.params))) {
       spec = std::move(m->net);
       options.dt = m->settings.dt;
     }
@@ -549,6 +571,7 @@ struct RunArgs {
   std::vector<std::string> breaks;
   std::string replay;  // a witness file to play
   bool quiet = false;
+  std::vector<std::string> params;  // --param NAME=VALUE
 };
 
 /// A breakpoint written on the command line: "start:T", "complete:T", "PLACE OP N" (OP one
@@ -606,7 +629,7 @@ int run(const RunArgs& a) {
   auto with_trace = inputs;
   with_trace.emplace_back("the --trace file", a.trace);
   if (overwritesInput("--trace", a.trace, inputs) || overwritesInput("--report", a.report, with_trace)) return 2;
-  auto sim = open(a.model, a.seed, a.script_timeout);
+  auto sim = open(a.model, a.seed, a.script_timeout, a.params);
   if (!sim) return 1;
   if (a.quiet) sim->simulation().setLogEcho(false);  // sim.log still goes to the trace
   for (const auto& spec : a.breaks) {
@@ -738,6 +761,8 @@ int main(int argc, char** argv) {
   check_cmd->add_option("--script-timeout", check_timeout,
                         "report an error when the globals script (or a script file's top level) runs longer than SECONDS")
       ->check(CLI::PositiveNumber);
+  std::vector<std::string> check_params;
+  addParamOption(check_cmd, check_params);
 
   const auto kSeed = number<std::uint64_t>(0, UINT64_MAX, "a whole number from 0 to 2^64-1");
   RunArgs run_args;
@@ -763,6 +788,7 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--replay", run_args.replay,
                       "play the firing sequence of a witness (gdpn analyze --witness): only its transitions "
                       "start, in its order, each as soon as it can");
+  addParamOption(run_cmd, run_args.params);
   run_cmd->add_flag("--quiet,-q", run_args.quiet,
                     "print no summary, no progress and no sim.log lines (they still go to the --trace)");
 
@@ -771,6 +797,7 @@ int main(int argc, char** argv) {
       "analyze", "State space (deadlocks, bounds, liveness), invariants and cycle-time bounds of the untimed net");
   analyze_cmd->add_option("MODEL", analyze_args.model, "a .gdpn.yaml file (or a folder holding one), or a .pnml net")
       ->required();
+  addParamOption(analyze_cmd, analyze_args.params);
   analyze_cmd->add_flag("--json", analyze_args.json, "print the results as JSON");
   analyze_cmd->add_option("--max-states", analyze_args.max_states, "stop after this many states (the answer is then partial)")
       ->check(number<std::uint64_t>(1, 1'000'000'000'000, "a whole number of states from 1 to 10^12"));
@@ -817,6 +844,7 @@ int main(int argc, char** argv) {
     cmd->add_option("--seed", args.seed, "the random seed (default: the model's)")->check(kSeed);
     cmd->add_option("-o,--output", args.out, "the file to write")->required();
     cmd->add_flag("--quiet,-q", args.quiet, "no sim.log lines and no progress on stderr");
+    addParamOption(cmd, args.params);
   };
   add_look(render_cmd, render_args);
   render_cmd->add_flag("--net", render_args.net, "draw the net of a page with its marking (.svg or .png) instead of the plant; without --size, as large as the page needs");
@@ -883,7 +911,7 @@ int main(int argc, char** argv) {
   }
   if (render_cmd->parsed()) return capture(render_args, false);
   if (record_cmd->parsed()) return capture(record_args, true);
-  if (check_cmd->parsed()) return check(check_model, check_timeout);
+  if (check_cmd->parsed()) return check(check_model, check_timeout, check_params);
   if (run_cmd->parsed()) return run(run_args);
   if (ide_cmd->parsed()) return ide(ide_args);
   return 2;

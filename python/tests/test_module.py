@@ -299,3 +299,21 @@ def test_analyze_answers_queries_as_data_with_their_witnesses(source):
     # a limit leaves the answer unknown, and says why
     limited = model.analyze("EF P4 = 1", max_states=1)
     assert limited["answer"] == "unknown" and "--max-states" in limited["why"]
+
+
+def test_params_set_at_load_reach_fields_and_scripts(source):
+    path = str(source / "tests/data/good/params.gdpn.yaml")
+    model = gdpn.load(path)
+    assert model.params == {"wait": 0.5, "parts": 3, "spread": 0.25, "belt_speed": 0.4, "lane": 2, "chance": 0.5}
+    assert model.marking("main/ready") == 3
+    model = gdpn.load(path, params={"parts": 5, "wait": 1.0})
+    assert model.params["parts"] == 5 and model.params["wait"] == 1.0
+    assert model.marking("main/ready") == 5
+    with pytest.raises(gdpn.ModelError) as info:
+        gdpn.load(path, params={"wiat": 1})
+    assert info.value.args[0].startswith("params=: error: no parameter 'wiat' in ")
+    with pytest.raises(gdpn.ModelError) as info:
+        gdpn.load(path, params={"parts": 2.5})
+    assert "parameter 'parts' is a whole number, got '2.5'" in info.value.args[0]
+    with pytest.raises(TypeError):
+        gdpn.load(path, params={"parts": "many"})

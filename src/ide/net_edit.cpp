@@ -68,8 +68,9 @@ auto findArc(net::PageSpec& p, const NetEdit& e) {
 }
 
 void setWeight(net::ArcSpec& a, std::int64_t w) {
-  if (a.weights.empty()) a.weights.push_back({net::kDefaultSlot, 1, {}});
+  if (a.weights.empty()) a.weights.push_back({net::kDefaultSlot, 1, {}, {}});
   a.weights.front().value = w;
+  a.weights.front().param.clear();  // a value set by hand no longer comes from a parameter
   // a0 with weight 1 is what an arc without weights means: written the short way
   if (a.weights.size() == 1 && a.weights.front().slot == net::kDefaultSlot && w == 1) a.weights.clear();
 }
@@ -337,8 +338,9 @@ void setSlotCount(std::vector<net::SlotCount>& counts, net::SlotId slot, std::op
     if (it != counts.end()) counts.erase(it);
   } else if (it != counts.end()) {
     it->value = *value;
+    it->param.clear();  // a value set by hand no longer comes from a parameter
   } else {
-    counts.push_back({slot, *value, {}});
+    counts.push_back({slot, *value, {}, {}});
   }
 }
 

@@ -23,12 +23,16 @@ std::string SetFieldCommand::apply(Document& doc) {
   if (auto bad = desc.check(value_)) return bad->message;
   old_ = node->value(static_cast<std::size_t>(i));
   node->setValue(static_cast<std::size_t>(i), value_);
+  // a value set by hand no longer comes from the parameter the field named
+  old_params_ = node->params;
+  std::erase_if(node->params, [i](const auto& p) { return p.first == static_cast<std::uint32_t>(i); });
   return {};
 }
 
 void SetFieldCommand::revert(Document& doc) {
   auto* node = doc.scene()->find(path_);
   node->setValue(static_cast<std::size_t>(node->type().fieldIndex(field_)), old_);
+  node->params = old_params_;
 }
 
 std::string SetFieldCommand::label() const { return "set " + path_ + "." + field_; }

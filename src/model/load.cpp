@@ -24,8 +24,9 @@ using core::SourceLoc;
 using detail::Entry;
 using detail::YamlReader;
 
-const std::vector<std::string> kTopKeys = {"gdpn", "description", "settings", "pages", "page_types",
-                                           "scene", "scripts"};
+const std::vector<std::string> kTopKeys = {"gdpn", "description", "settings", "params", "pages",
+                                           "page_types", "scene", "scripts"};
+const std::vector<std::string> kParamKeys = {"value", "unit", "description"};
 const std::vector<std::string> kSettingsKeys = {"dt", "seed", "until", "angles"};
 const std::vector<std::string> kPageKeys = {"description", "places", "transitions", "arcs", "instances"};
 const std::vector<std::string> kPageTypeKeys = {"description", "references", "places", "transitions",
@@ -63,8 +64,9 @@ bool isNodePath(const std::string& s) {
 
 class ModelReader {
  public:
-  ModelReader(const std::string& file, const std::string& text, Diagnostics& diags)
-      : r_(file, diags), file_(file), text_(text) {}
+  ModelReader(const std::string& file, const std::string& text, Diagnostics& diags,
+              const std::vector<ParamOverride>& overrides)
+      : r_(file, diags), file_(file), text_(text), overrides_(overrides) {}
 
   std::optional<Model> read(const YAML::Node& root) {
     Model model;
@@ -77,6 +79,11 @@ class ModelReader {
     // the settings first: they say in what unit the scene's angles are written
     if (const YAML::Node s = root["settings"]) readSettings(s, model.settings);
     angles_ = model.settings.angles;
+    // then the parameters, which every other section's fields may refer to
+    if (const YAML::Node p = root["params"]) readParams(p, model.params);
+    setOverrides(model.params);
+    for (const auto& p : model.params) param_values_[p.name] = {p.value, p.integer};
+    r_.setParams(&param_values_);
     for (const auto& e : r_.entries(root, "model file", kTopKeys)) {
       if (e.key == "gdpn") {
         if (auto v = r_.integer(e.value, "gdpn"); v && *v != 1) {
@@ -84,7 +91,7 @@ class ModelReader {
         }
       } else if (e.key == "description") {
         if (auto s = r_.string(e.value, "description")) model.description = *s;
-      } else if (e.key == "settings") {
+      } else if (e.key == "settings" || e.key == "params") {
         continue;  // read above
       } else if (e.key == "pages") {
         readPages(e.value, model.net.pages, false);
@@ -185,6 +192,84 @@ class ModelReader {
         f(*slot, s);
       } else {
         r_.error(s.loc, "'" + s.key + "' is not a slot name (a0 ... d7)");
+      }
+    }
+  }
+
+  /// The `params` section: `name: value` or `name: {value: .., unit: .., description: ..}`.
+  void readParams(const YAML::Node& node, std::vector<Param>& out) {
+    if (node.IsNull()) return;
+    if (!r_.expectMap(node, "params")) return;
+    for (const auto& e : r_.entries(node, "params", {})) {
+      if (!core::isIdentifier(e.key)) {
+        r_.error(e.loc, "a parameter's name is a word of letters, digits and _ (not starting with a digit), got '" +
+                            e.key + "'");
+        continue;
+      }
+      Param p;
+      p.name = e.key;
+      p.loc = e.loc;
+      bool has_value = false;
+      if (!e.value.IsMap()) {
+        has_value = readParamValue(e.value, e.loc, p);
+      } else {
+        for (const auto& f : r_.entries(e.value, "parameter '" + p.name + "'", kParamKeys)) {
+          if (f.key == "value") {
+            has_value = readParamValue(f.value, f.loc, p);
+          } else if (auto text = r_.string(f.value, f.key)) {
+            (f.key == "unit" ? p.unit : p.description) = *text;
+          }
+        }
+        if (!has_value && !r_.failed()) r_.error(e.loc, "parameter '" + p.name + "' has no 'value'");
+      }
+      if (has_value) out.push_back(std::move(p));
+    }
+  }
+
+  /// A parameter's value: a whole number (written without a point) or a finite number.
+  bool readParamValue(const YAML::Node& v, const SourceLoc& at, Param& p) {
+    long long whole = 0;
+    if (v.IsScalar() && v.Tag() != "!" && YAML::convert<long long>::decode(v, whole)) {
+      p.integer = true;
+      p.value = p.declared = static_cast<double>(whole);
+      return true;
+    }
+    if (v.IsNull()) {
+      r_.error(at, "parameter '" + p.name + "' expects a number, got nothing");
+      return false;
+    }
+    double x = 0.0;
+    if (!v.IsScalar() || v.Tag() == "!" || !YAML::convert<double>::decode(v, x)) {
+      r_.error(v, "parameter '" + p.name + "' expects a number, got " + detail::describe(v));
+      return false;
+    }
+    if (!std::isfinite(x)) {
+      r_.error(v, "parameter '" + p.name + "' must be a finite number");
+      return false;
+    }
+    p.value = p.declared = x;
+    return true;
+  }
+
+  /// Applies the overrides (--param) to the parameters read.
+  void setOverrides(std::vector<Param>& params) {
+    for (const auto& o : overrides_) {
+      const SourceLoc where{o.where, 0, 0};
+      auto it = std::find_if(params.begin(), params.end(), [&](const Param& p) { return p.name == o.name; });
+      if (it == params.end()) {
+        std::vector<std::string> names;
+        for (const auto& p : params) names.push_back(p.name);
+        r_.error(where, "no parameter '" + o.name + "' in " + file_ +
+                            (names.empty() ? std::string(" (it declares none)") : core::didYouMean(o.name, names)));
+        continue;
+      }
+      const auto value = core::parseNumber(o.text);
+      if (!value || !std::isfinite(*value)) {
+        r_.error(where, "parameter '" + o.name + "' expects a number, got '" + o.text + "'");
+      } else if (it->integer && std::floor(*value) != *value) {
+        r_.error(where, "parameter '" + o.name + "' is a whole number, got '" + o.text + "'");
+      } else {
+        it->value = *value;
       }
     }
   }
@@ -330,13 +415,14 @@ class ModelReader {
         perSlot(e, "tokens", [&](net::SlotId slot, const YAML::Node& v, const SourceLoc& loc) {
           if (v.IsSequence()) {
             p.nodes.push_back({slot, readNodeList(v, loc), loc});
-          } else if (auto n = r_.integer(v, "tokens")) {
-            p.tokens.push_back({slot, *n, loc});
+          } else if (std::string param; auto n = r_.integer(v, "tokens", &param)) {
+            p.tokens.push_back({slot, *n, loc, param});
           }
         });
       } else if (e.key == "capacity") {
         perSlot(e, "capacity", [&](net::SlotId slot, const YAML::Node& v, const SourceLoc& loc) {
-          if (auto n = r_.integer(v, "capacity")) p.capacity.push_back({slot, *n, loc});
+          std::string param;
+          if (auto n = r_.integer(v, "capacity", &param)) p.capacity.push_back({slot, *n, loc, param});
         });
       } else if (e.key == "sensors") {
         if (!r_.expectMap(e.value, "sensors")) continue;
@@ -372,7 +458,7 @@ class ModelReader {
     d.loc = e.loc;
     if (!e.value.IsMap()) {
       d.loc = r_.loc(e.value, e.loc);
-      if (auto v = r_.number(e.value, "duration")) d.a = *v;
+      if (auto v = r_.number(e.value, "duration", &d.params[0])) d.a = *v;
       return d;
     }
     auto laws = r_.entries(e.value, "duration", kLaws);
@@ -386,7 +472,7 @@ class ModelReader {
     if (law.key == "exponential") {
       d.law = net::Duration::Law::Exponential;
       d.loc = r_.loc(law.value, law.loc);
-      if (auto v = r_.number(law.value, "exponential mean")) d.a = *v;
+      if (auto v = r_.number(law.value, "exponential mean", &d.params[0])) d.a = *v;
       return d;
     }
     d.law = law.key == "uniform" ? net::Duration::Law::Uniform : net::Duration::Law::Normal;
@@ -396,8 +482,8 @@ class ModelReader {
                                                detail::describe(law.value));
       return d;
     }
-    auto a = r_.number(law.value[0], law.key);
-    auto b = r_.number(law.value[1], law.key);
+    auto a = r_.number(law.value[0], law.key, &d.params[0]);
+    auto b = r_.number(law.value[1], law.key, &d.params[1]);
     if (a && b) {
       d.a = *a;
       d.b = *b;
@@ -419,10 +505,10 @@ class ModelReader {
       } else if (e.key == "duration") {
         t.duration = readDuration(e);
       } else if (e.key == "priority") {
-        if (auto v = r_.integer(e.value, "priority")) t.priority = *v;
+        if (auto v = r_.integer(e.value, "priority", &t.priority_param)) t.priority = *v;
       } else if (e.key == "probability") {
         t.probability_loc = r_.loc(e.value, e.loc);
-        if (auto v = r_.number(e.value, "probability")) t.probability = *v;
+        if (auto v = r_.number(e.value, "probability", &t.probability_param)) t.probability = *v;
       } else if (const auto kind = net::parseScriptKind(e.key, net::ScriptOwner::Transition)) {
         net::scriptOf(t, *kind) = readScript(e, e.key);
       } else if (e.key == "at") {
@@ -476,7 +562,8 @@ class ModelReader {
                                    "; expected normal, test or inhibitor");
       } else if (e.key == "weight") {
         perSlot(e, "weight", [&](net::SlotId slot, const YAML::Node& v, const SourceLoc& loc) {
-          if (auto n = r_.integer(v, "weight")) a.weights.push_back({slot, *n, loc});
+          std::string param;
+          if (auto n = r_.integer(v, "weight", &param)) a.weights.push_back({slot, *n, loc, param});
         });
       }
     }
@@ -546,22 +633,31 @@ class ModelReader {
   scene::AngleUnit angles_ = scene::AngleUnit::Degrees;  // the unit the file writes angles in
   std::string file_;
   const std::string& text_;
+  const std::vector<ParamOverride>& overrides_;
+  std::map<std::string, detail::ParamValue> param_values_;
 };
 
 }  // namespace
 
-std::optional<Model> parseModel(const std::string& text, const std::string& file, Diagnostics& diags) {
+std::optional<ParamOverride> parseParamArgument(const std::string& argument) {
+  const auto eq = argument.find('=');
+  if (eq == std::string::npos || eq == 0) return std::nullopt;
+  return ParamOverride{argument.substr(0, eq), argument.substr(eq + 1)};
+}
+
+std::optional<Model> parseModel(const std::string& text, const std::string& file, Diagnostics& diags,
+                                const std::vector<ParamOverride>& params) {
   auto root = detail::parseYaml(text, file, diags);
   if (!root) return std::nullopt;
-  auto model = ModelReader(file, text, diags).read(*root);
+  auto model = ModelReader(file, text, diags, params).read(*root);
   if (model) model->path = file;
   return model;
 }
 
-std::optional<Model> loadModel(const std::string& path, Diagnostics& diags) {
+std::optional<Model> loadModel(const std::string& path, Diagnostics& diags, const std::vector<ParamOverride>& params) {
   auto text = core::readFile(path, diags);
   if (!text) return std::nullopt;
-  return parseModel(*text, path, diags);
+  return parseModel(*text, path, diags, params);
 }
 
 std::optional<std::vector<sensors::InputEvent>> loadInput(const std::string& path, Diagnostics& diags) {

@@ -23,16 +23,29 @@ void description(YAML::Emitter& out, const std::string& text) {
   if (!text.empty()) out << YAML::Key << "description" << YAML::Value << YAML::DoubleQuoted << text;
 }
 
+/// A number, or `$name` of the parameter it comes from.
+std::string numberText(double value, const std::string& param) {
+  return param.empty() ? formatDouble(value) : "$" + param;
+}
+/// A per-slot count, or `$name` of the parameter it comes from.
+void count(YAML::Emitter& out, const net::SlotCount& c) {
+  if (c.param.empty()) out << c.value;
+  else out << "$" + c.param;
+}
+
 /// A per-slot integer list as a scalar (only a0) or a map.
 void perSlot(YAML::Emitter& out, const char* key, const std::vector<net::SlotCount>& values) {
   if (values.empty()) return;
   out << YAML::Key << key << YAML::Value;
   if (values.size() == 1 && values[0].slot == net::kDefaultSlot) {
-    out << values[0].value;
+    count(out, values[0]);
     return;
   }
   out << YAML::Flow << YAML::BeginMap;
-  for (const auto& v : values) out << YAML::Key << net::slotName(v.slot) << YAML::Value << v.value;
+  for (const auto& v : values) {
+    out << YAML::Key << net::slotName(v.slot) << YAML::Value;
+    count(out, v);
+  }
   out << YAML::EndMap;
 }
 
@@ -90,7 +103,10 @@ void writePlace(YAML::Emitter& out, const net::PlaceSpec& p) {
     perSlot(out, "tokens", p.tokens);
   } else {
     out << YAML::Key << "tokens" << YAML::Value << YAML::Flow << YAML::BeginMap;
-    for (const auto& t : p.tokens) out << YAML::Key << net::slotName(t.slot) << YAML::Value << t.value;
+    for (const auto& t : p.tokens) {
+      out << YAML::Key << net::slotName(t.slot) << YAML::Value;
+      count(out, t);
+    }
     for (const auto& n : p.nodes) {
       out << YAML::Key << net::slotName(n.slot) << YAML::Value << YAML::Flow << YAML::BeginSeq;
       for (const auto& name : n.nodes) out << name;
@@ -111,18 +127,18 @@ void writePlace(YAML::Emitter& out, const net::PlaceSpec& p) {
 
 void writeDuration(YAML::Emitter& out, const net::Duration& d) {
   using Law = net::Duration::Law;
-  if (d.law == Law::Fixed && d.a == 0.0) return;
+  if (d.law == Law::Fixed && d.a == 0.0 && d.params[0].empty()) return;
   out << YAML::Key << "duration" << YAML::Value;
+  const std::string a = numberText(d.a, d.params[0]), b = numberText(d.b, d.params[1]);
   switch (d.law) {
-    case Law::Fixed: out << formatDouble(d.a); break;
+    case Law::Fixed: out << a; break;
     case Law::Exponential:
-      out << YAML::Flow << YAML::BeginMap << YAML::Key << "exponential" << YAML::Value << formatDouble(d.a)
-          << YAML::EndMap;
+      out << YAML::Flow << YAML::BeginMap << YAML::Key << "exponential" << YAML::Value << a << YAML::EndMap;
       break;
     case Law::Uniform:
     case Law::Normal:
       out << YAML::Flow << YAML::BeginMap << YAML::Key << (d.law == Law::Uniform ? "uniform" : "normal")
-          << YAML::Value << YAML::BeginSeq << formatDouble(d.a) << formatDouble(d.b) << YAML::EndSeq << YAML::EndMap;
+          << YAML::Value << YAML::BeginSeq << a << b << YAML::EndSeq << YAML::EndMap;
       break;
   }
 }
@@ -131,8 +147,11 @@ void writeTransition(YAML::Emitter& out, const net::TransitionSpec& t) {
   out << YAML::Key << t.name << YAML::Value << styleFor(t.scripted()) << YAML::BeginMap;
   description(out, t.description);
   writeDuration(out, t.duration);
-  if (t.priority != 0) out << YAML::Key << "priority" << YAML::Value << t.priority;
-  if (t.probability != 1.0) out << YAML::Key << "probability" << YAML::Value << formatDouble(t.probability);
+  if (!t.priority_param.empty()) out << YAML::Key << "priority" << YAML::Value << "$" + t.priority_param;
+  else if (t.priority != 0) out << YAML::Key << "priority" << YAML::Value << t.priority;
+  if (t.probability != 1.0 || !t.probability_param.empty()) {
+    out << YAML::Key << "probability" << YAML::Value << numberText(t.probability, t.probability_param);
+  }
   for (const net::ScriptKind k : net::kTransitionScripts) writeScript(out, net::info(k).key, net::scriptOf(t, k));
   pos(out, t.position);
   out << YAML::EndMap;
@@ -220,6 +239,25 @@ std::string writeModel(const Model& model) {
     if (s.seed_given) out << YAML::Key << "seed" << YAML::Value << s.seed;
     if (s.until) out << YAML::Key << "until" << YAML::Value << formatDouble(*s.until);
     if (radians) out << YAML::Key << "angles" << YAML::Value << "radians";
+    out << YAML::EndMap;
+  }
+  if (!model.params.empty()) {
+    out << YAML::Key << "params" << YAML::Value << YAML::BeginMap;
+    for (const auto& p : model.params) {
+      out << YAML::Key << p.name << YAML::Value;
+      const std::string value = p.integer ? std::to_string(static_cast<std::int64_t>(p.declared)) : formatDouble(p.declared);
+      // a number with no point reads back as a whole one: a decimal parameter keeps its point
+      const bool point = p.integer || value.find_first_of(".eEn") != std::string::npos;
+      const std::string text = point ? value : value + ".0";
+      if (p.unit.empty() && p.description.empty()) {
+        out << text;
+        continue;
+      }
+      out << YAML::Flow << YAML::BeginMap << YAML::Key << "value" << YAML::Value << text;
+      if (!p.unit.empty()) out << YAML::Key << "unit" << YAML::Value << p.unit;
+      if (!p.description.empty()) out << YAML::Key << "description" << YAML::Value << YAML::DoubleQuoted << p.description;
+      out << YAML::EndMap;
+    }
     out << YAML::EndMap;
   }
   if (!model.net.pages.empty()) {

@@ -1,5 +1,6 @@
 #include "scene_io.h"
 
+#include <algorithm>
 #include <cmath>
 
 
@@ -102,9 +103,11 @@ class SceneReader {
       if (auto v = parse(*type->fields[i], field)) {
         node->setValue(i, std::move(*v));
         node->field_locs[i] = r_.loc(field.value, field.loc);
+        if (!param_.empty()) node->params.emplace_back(static_cast<std::uint32_t>(i), param_);
         read.emplace_back(i, field);
       }
     }
+    std::sort(node->params.begin(), node->params.end());
     // with every field read (a joint's kind decides whether its limits are angles), each value
     // in the stored units, then checked by the field's own rules (FieldDesc::check, shared
     // with scripts and the inspector); a value that fails goes back to its default
@@ -187,6 +190,7 @@ class SceneReader {
   /// The value as written, read as the field's kind (its syntax only).
   std::optional<FieldValue> parse(const FieldDesc& f, const Entry& e) {
     const YAML::Node& n = e.value;
+    param_.clear();
     switch (f.kind) {
       case FieldKind::Bool: {
         bool b = false;
@@ -195,10 +199,10 @@ class SceneReader {
         return std::nullopt;
       }
       case FieldKind::Int:
-        if (auto v = r_.integer(n, f.name)) return *v;
+        if (auto v = r_.integer(n, f.name, &param_)) return *v;
         return std::nullopt;
       case FieldKind::Float:
-        if (auto v = r_.number(n, f.name)) return *v;
+        if (auto v = r_.number(n, f.name, &param_)) return *v;
         return std::nullopt;
       case FieldKind::Vec3:
       case FieldKind::Color:
@@ -232,6 +236,7 @@ class SceneReader {
   YamlReader& r_;
   scene::Scene& scene_;
   scene::AngleUnit angles_;
+  std::string param_;  // the parameter the field parse() read last refers to ("" for none)
 };
 
 void writeValue(YAML::Emitter& out, const FieldValue& v) {
@@ -264,8 +269,14 @@ void writeNode(YAML::Emitter& out, const scene::Node& node, scene::AngleUnit ang
       << YAML::BeginMap;
   if (!node.name().empty()) out << YAML::Key << "name" << YAML::Value << node.name();
   if (node.is_template) out << YAML::Key << "template" << YAML::Value << true;
+  auto bound = node.params.begin();  // the fields a parameter gives, in field order
   for (std::size_t i = 0; i < node.type().fields.size(); ++i) {
     const FieldDesc& f = *node.type().fields[i];
+    while (bound != node.params.end() && bound->first < i) ++bound;
+    if (bound != node.params.end() && bound->first == i) {
+      out << YAML::Key << f.name << YAML::Value << "$" + bound->second;
+      continue;
+    }
     if (node.value(i) == f.initial) continue;
     out << YAML::Key << f.name << YAML::Value;
     writeValue(out, scene::convertAngle(node, i, node.value(i), angles, false));

@@ -220,6 +220,7 @@ bool Simulation::makeEngine(core::Diagnostics& diags) {
   script::EngineOptions options;
   options.timeout_s = script_timeout_s_;
   options.angles = model_.settings.angles;
+  for (const auto& p : model_.params) options.params.push_back({p.name, p.value, p.integer});
   engine_ = script::Engine::create(*net_, *kernel_, model_.path, options,
                                    std::move(callbacks), diags);
   if (!engine_) return false;

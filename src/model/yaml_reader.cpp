@@ -1,5 +1,7 @@
 #include "yaml_reader.h"
 
+#include <cmath>
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -193,14 +195,49 @@ std::vector<Entry> YamlReader::entries(const YAML::Node& map, const std::string&
   return out;
 }
 
-std::optional<double> YamlReader::number(const YAML::Node& node, const std::string& field) {
+std::optional<ParamValue> YamlReader::param(const YAML::Node& node, const std::string& field, std::string* name,
+                                            bool& ref) {
+  ref = node.IsScalar() && node.Scalar().size() > 1 && node.Scalar()[0] == '$';
+  if (name) name->clear();
+  if (!ref) return std::nullopt;
+  const std::string wanted = node.Scalar().substr(1);
+  if (!name) {
+    error(node, "'" + field + "' takes no parameter ($" + wanted + "); write a number");
+    return std::nullopt;
+  }
+  const auto it = params_ ? params_->find(wanted) : decltype(params_->end()){};
+  if (!params_ || it == params_->end()) {
+    std::vector<std::string> known;
+    if (params_) {
+      for (const auto& p : *params_) known.push_back(p.first);
+    }
+    error(node, "no parameter '" + wanted + "' in the model's params" +
+                    (known.empty() ? std::string(" (it declares none)") : core::didYouMean(wanted, known)));
+    return std::nullopt;
+  }
+  *name = wanted;
+  return it->second;
+}
+
+std::optional<double> YamlReader::number(const YAML::Node& node, const std::string& field, std::string* name) {
+  bool ref = false;
+  if (auto p = param(node, field, name, ref)) return p->value;
+  if (ref) return std::nullopt;
   double v = 0.0;
   if (node.IsScalar() && node.Tag() != "!" && YAML::convert<double>::decode(node, v)) return v;
   error(node, "'" + field + "' expects a number, got " + describe(node));
   return std::nullopt;
 }
 
-std::optional<std::int64_t> YamlReader::integer(const YAML::Node& node, const std::string& field) {
+std::optional<std::int64_t> YamlReader::integer(const YAML::Node& node, const std::string& field,
+                                                std::string* name) {
+  bool ref = false;
+  if (auto p = param(node, field, name, ref)) {
+    if (std::floor(p->value) == p->value && std::abs(p->value) < 9.0e15) return static_cast<std::int64_t>(p->value);
+    error(node, "'" + field + "' expects a whole number; parameter '" + *name + "' is " + core::formatDouble(p->value));
+    return std::nullopt;
+  }
+  if (ref) return std::nullopt;
   long long v = 0;
   if (node.IsScalar() && node.Tag() != "!" && YAML::convert<long long>::decode(node, v)) return v;
   error(node, "'" + field + "' expects a whole number, got " + describe(node));

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,12 @@ std::string describe(const YAML::Node& node);
 /// Parses YAML text; a syntax error becomes a located diagnostic and nullopt.
 std::optional<YAML::Node> parseYaml(const std::string& text, const std::string& file, core::Diagnostics& diags);
 
+/// A model parameter as the fields that refer to it see it.
+struct ParamValue {
+  double value = 0.0;    ///< in effect
+  bool integer = false;  ///< a whole number
+};
+
 /// Reads typed values out of a parsed tree, reporting mistakes at their location.
 class YamlReader {
  public:
@@ -44,14 +51,23 @@ class YamlReader {
   /// else the closest allowed key). Only accepted keys are returned.
   std::vector<Entry> entries(const YAML::Node& map, const std::string& what, const std::vector<std::string>& allowed,
                              const std::function<std::string(const std::string&)>& hint = {});
-  std::optional<double> number(const YAML::Node& node, const std::string& field);
-  std::optional<std::int64_t> integer(const YAML::Node& node, const std::string& field);
+  /// The parameters a field may refer to as `$name` (null: none; must outlive the reader).
+  void setParams(const std::map<std::string, ParamValue>* params) { params_ = params; }
+  /// A number; with `param`, the value may be `$name` of a parameter, whose name is then put
+  /// in `*param` (else `*param` is cleared). Without `param`, `$name` is an error.
+  std::optional<double> number(const YAML::Node& node, const std::string& field, std::string* param = nullptr);
+  /// A whole number, as number() (a parameter must hold a whole value).
+  std::optional<std::int64_t> integer(const YAML::Node& node, const std::string& field, std::string* param = nullptr);
   std::optional<std::string> string(const YAML::Node& node, const std::string& field);
 
  private:
   std::string file_;
+  /// The parameter `$name` at `node` (reported and nullopt when unknown or not allowed);
+  /// `ref` false when the node is no `$name`.
+  std::optional<ParamValue> param(const YAML::Node& node, const std::string& field, std::string* name, bool& ref);
   core::Diagnostics& diags_;
   bool failed_ = false;
+  const std::map<std::string, ParamValue>* params_ = nullptr;
 };
 
 }  // namespace gdpn::model::detail

@@ -144,7 +144,7 @@ class PnmlReader {
         p.loc = c->loc;
         p.description = describe(*c, p.name, *id);
         if (const XmlElement* m = c->child("initialMarking")) {
-          if (auto n = count(*m, "an initial marking"); n && *n > 0) p.tokens.push_back({kDefaultSlot, *n, m->loc});
+          if (auto n = count(*m, "an initial marking"); n && *n > 0) p.tokens.push_back({kDefaultSlot, *n, m->loc, {}});
         }
         p.position = position(*c);
         ids_[*id] = {true, p.name};
@@ -194,7 +194,7 @@ class PnmlReader {
     else if (kind == "test" || kind == "read") a.kind = ArcKind::Test;
     if (const XmlElement* w = el.child("inscription")) {
       if (auto n = count(*w, "an arc inscription")) {
-        if (*n != 1) a.weights.push_back({kDefaultSlot, *n, w->loc});
+        if (*n != 1) a.weights.push_back({kDefaultSlot, *n, w->loc, {}});
       }
     }
     page_.arcs.push_back(std::move(a));

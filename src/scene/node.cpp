@@ -291,6 +291,7 @@ Node* Scene::copy(const Node& source, Node& parent, std::string name) {
   made->loc = source.loc;
   made->is_template = source.is_template;
   made->data = source.data;
+  made->params = source.params;
   for (const auto& c : source.children_) copy(*c, *made);
   return made;
 }
@@ -312,7 +313,7 @@ namespace {
 
 bool sameTree(const Node& a, const Node& b) {
   if (&a.type() != &b.type() || a.name() != b.name() || a.children().size() != b.children().size() ||
-      a.is_template != b.is_template || a.data != b.data) {
+      a.is_template != b.is_template || a.data != b.data || a.params != b.params) {
     return false;
   }
   for (std::size_t i = 0; i < a.type().fields.size(); ++i) {

@@ -336,6 +336,18 @@ struct Engine::Impl : detail::Context {
   }
   physics::World* physicsWorld() const override { return callbacks.physics; }
   scene::AngleUnit angles() const override { return options.angles; }
+  py::object params() override {
+    if (!params_view) {
+      py::dict values;
+      for (const auto& p : options.params) {
+        if (p.integer) values[py::str(p.name)] = py::int_(static_cast<long long>(p.value));
+        else values[py::str(p.name)] = py::float_(p.value);
+      }
+      params_view = detail::makeParamsView(values);
+    }
+    return params_view;
+  }
+  py::object params_view;  // made on first use
   scene::Scene* plant() const override { return callbacks.plant; }
   scene::Node* spawn(const scene::Node& templ, scene::Node& parent, std::optional<core::Vec3> at,
                      std::string& why) override {
@@ -689,6 +701,7 @@ Engine::~Engine() {
   impl_->bound.clear();
   impl_->geometries = py::object();
   impl_->sim = py::object();
+  impl_->params_view = py::object();
   impl_->globals.clear();
   impl_->globals = py::dict();
   impl_.reset();

@@ -43,6 +43,9 @@ struct DataView {  // a node's user data
   Ref r;
   net::NodeRef ref;
 };
+struct ParamsView {  // sim.params
+  py::dict values;
+};
 struct SensorView {
   Ref r;
   scene::NodeHandle sensor;
@@ -842,11 +845,35 @@ class Geometries(list):
         return seq[v.r.get().kernelRef().random().below(n)];
       });
 
+  py::class_<ParamsView>(m, "Params", "The model's parameters (its params section, as this run set them); read-only")
+      .def("__getattr__",
+           [](const ParamsView& v, const std::string& name) -> py::object {
+             if (!v.values.contains(name)) {
+               std::string known;
+               for (const auto& k : v.values) known += (known.empty() ? "" : ", ") + py::str(k.first).cast<std::string>();
+               throw py::attribute_error("no parameter '" + name + "' (the model declares " +
+                                         (known.empty() ? std::string("none") : known) + ")");
+             }
+             return v.values[py::str(name)];
+           })
+      .def("__getitem__",
+           [](const ParamsView& v, const std::string& name) -> py::object {
+             if (!v.values.contains(name)) throw py::key_error("no parameter '" + name + "'");
+             return v.values[py::str(name)];
+           })
+      .def("__contains__", [](const ParamsView& v, const std::string& name) { return v.values.contains(name); })
+      .def("__iter__", [](const ParamsView& v) { return py::iter(v.values); })
+      .def("__len__", [](const ParamsView& v) { return py::len(v.values); })
+      .def("items", [](const ParamsView& v) { return v.values.attr("items")(); })
+      .def("__repr__", [](const ParamsView& v) { return "<sim.params " + py::repr(v.values).cast<std::string>() + ">"; });
+
   py::class_<SimView>(m, "Sim", "The running simulation")
       .def_property_readonly("time", [](const SimView& v) { return v.r.get().kernelRef().now(); }, "seconds")
       .def_property_readonly("dt", [](const SimView& v) { return v.r.get().kernelRef().dt(); }, "seconds")
       .def_property_readonly("step", [](const SimView& v) { return v.r.get().kernelRef().steps(); })
       .def_property_readonly("random", [](const SimView& v) { return RandomView{v.r}; })
+      .def_property_readonly("params", [](const SimView& v) { return v.r.get().params(); },
+                             "the model's parameters: sim.params.belt_speed")
       .def("log",
            [](const SimView& v, const py::args& args) {
              std::string text;
@@ -882,5 +909,6 @@ py::object makePlaceView(Ref r, net::PlaceId p) { return py::cast(PlaceView{std:
 py::object makeNodeView(Ref r, net::NodeRef ref) { return py::cast(NodeView{std::move(r), ref}); }
 py::object makeSimView(Ref r) { return py::cast(SimView{std::move(r)}); }
 py::object makeSensorView(Ref r, scene::NodeHandle sensor) { return py::cast(SensorView{std::move(r), sensor}); }
+py::object makeParamsView(py::dict values) { return py::cast(ParamsView{std::move(values)}); }
 
 }  // namespace gdpn::script::detail

@@ -41,6 +41,8 @@ class Context {
   virtual scene::AngleUnit angles() const = 0;
   /// The reading of sensor node `sensor`.
   virtual const sensors::Reading& reading(scene::NodeHandle sensor) const = 0;
+  /// `sim.params`: the model's parameters, read-only.
+  virtual pybind11::object params() = 0;
 
   /// False once the engine is gone; a view kept past that raises instead of crashing.
   std::shared_ptr<bool> alive = std::make_shared<bool>(true);
@@ -69,5 +71,7 @@ pybind11::object makePlaceView(Ref r, net::PlaceId p);
 pybind11::object makeNodeView(Ref r, net::NodeRef ref);
 pybind11::object makeSimView(Ref r);
 pybind11::object makeSensorView(Ref r, scene::NodeHandle sensor);
+/// `sim.params` over `values` (a dict of names to numbers): read by attribute or item, never set.
+pybind11::object makeParamsView(pybind11::dict values);
 
 }  // namespace gdpn::script::detail

@@ -55,6 +55,20 @@ TEST_F(DocumentTest, SetFieldChangesTheNodeAndUndoRedoGiveBackTheSameBytes) {
   EXPECT_EQ(doc->text(), before);
 }
 
+TEST_F(DocumentTest, AFieldSetByHandNoLongerNamesItsParameterUntilUndone) {
+  core::Diagnostics diags;
+  auto doc = Document::open(write("p.gdpn.yaml", "gdpn: 1\nparams: {speed: 0.4}\nscene:\n"
+                                                  "  - Conveyor: {name: belt, speed: $speed}\n"),
+                            diags);
+  ASSERT_TRUE(doc) << diags.str();
+  const auto before = doc->text();
+  EXPECT_NE(before.find("speed: $speed"), std::string::npos) << before;
+  ASSERT_EQ(doc->execute(std::make_unique<SetFieldCommand>("belt", "speed", FieldValue{0.7})), "");
+  EXPECT_NE(doc->text().find("{name: belt, speed: 0.7}"), std::string::npos) << doc->text();
+  ASSERT_TRUE(doc->undo());
+  EXPECT_EQ(doc->text(), before);
+}
+
 TEST_F(DocumentTest, TheTemplateMarkAndUserDataAreEditsUndoneByteForByte) {
   auto doc = openBin();
   ASSERT_TRUE(doc);

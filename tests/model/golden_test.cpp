@@ -919,4 +919,23 @@ TEST(CliOutputs, ARecordedMovieReplacesTheOldOne) {
   EXPECT_EQ(folder.names(), (std::vector<std::string>{"movie.mp4"}));
 }
 
+
+TEST(CliRun, ParamSetsAParameterForTheRunAndMistakesNameTheArgument) {
+  // three parts of 0.5 s by default; two of 0.25 s with the parameters set
+  auto r = gdpn("run tests/data/good/params.gdpn.yaml --until 10 --quiet --report /dev/stdout");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("\"name\": \"main/work\",\n      \"occurrences\": 3"), std::string::npos) << r.out;
+  r = gdpn("run tests/data/good/params.gdpn.yaml --until 10 --quiet --param parts=2 --param wait=0.25 --report /dev/stdout");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("\"name\": \"main/work\",\n      \"occurrences\": 2"), std::string::npos) << r.out;
+  r = gdpn("check tests/data/good/params.gdpn.yaml --param wiat=1");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.out, "--param: error: no parameter 'wiat' in tests/data/good/params.gdpn.yaml (did you mean 'wait'?)\n1 error\n");
+  r = gdpn("run tests/data/good/params.gdpn.yaml --param parts");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("--param: expects NAME=VALUE, got 'parts'"), std::string::npos) << r.out;
+  r = gdpn("analyze tests/data/good/params.gdpn.yaml --param parts=two");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find("--param: error: parameter 'parts' expects a number, got 'two'"), std::string::npos) << r.out;
+}
 }  // namespace

@@ -3,6 +3,7 @@
 /// Small text helpers shared by the loaders and the reports.
 
 #include <cstdint>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -38,6 +39,10 @@ std::vector<std::string_view> words(std::string_view text);
 
 /// True for [A-Za-z_][A-Za-z0-9_]*.
 bool isIdentifier(std::string_view s);
+
+/// The number `s` writes ("0.8", "-3", "1e-3"), all of it; nullopt for anything else
+/// (blanks, trailing text, an empty string).
+std::optional<double> parseNumber(std::string_view s);
 
 }  // namespace gdpn::core
 

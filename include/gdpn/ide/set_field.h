@@ -30,6 +30,7 @@ class SetFieldCommand final : public Command {
   std::string path_;   // the node
   std::string field_;  // the field's name
   scene::FieldValue value_, old_;
+  std::vector<std::pair<std::uint32_t, std::string>> old_params_;  // the node's parameter bindings before
   std::uint64_t drag_;
 };
 

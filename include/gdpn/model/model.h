@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "gdpn/core/diagnostics.h"
 #include "gdpn/net/spec.h"
@@ -29,11 +30,39 @@ struct Settings {
   friend bool operator==(const Settings&, const Settings&) = default;
 };
 
+/// A named value of the `params` section: scripts read it (`sim.params.belt_speed`), fields
+/// refer to it (`speed: $belt_speed`), and a run may set it (`gdpn run --param`).
+struct Param {
+  std::string name;         ///< an identifier
+  double value = 0.0;       ///< in effect: the file's, or what the run set
+  double declared = 0.0;    ///< what the file says (what a saver writes)
+  bool integer = false;     ///< a whole number (written without a point); only whole values
+  std::string unit;         ///< free text for people ("m/s"); not converted
+  std::string description;  ///< free text
+  core::SourceLoc loc;      ///< where it was declared
+  /// Same declaration (the value in effect and the location are not compared).
+  friend bool operator==(const Param& x, const Param& y) {
+    return x.name == y.name && x.declared == y.declared && x.integer == y.integer && x.unit == y.unit &&
+           x.description == y.description;
+  }
+};
+
+/// A parameter set from outside the file: `--param NAME=VALUE`, Python's `params=`.
+struct ParamOverride {
+  std::string name;  ///< the parameter
+  std::string text;  ///< its value as written ("0.8")
+  std::string where = "--param";  ///< what to name in a diagnostic
+};
+
+/// Parses "NAME=VALUE" (a --param argument); nullopt when there is no '='.
+std::optional<ParamOverride> parseParamArgument(const std::string& argument);
+
 /// Everything a model file holds.
 struct Model {
   std::string path;          ///< the file it was read from ("" when made in memory)
   std::string description;   ///< free text
   Settings settings;         ///< run settings
+  std::vector<Param> params; ///< the `params` section, in file order
   net::NetSpec net;          ///< pages and page types
   std::shared_ptr<const scene::Scene> scene;  ///< the `scene` section; null when the file has none
   /// The scene subtrees page types own (their `scene` sections), by page type name; each
@@ -42,7 +71,7 @@ struct Model {
 
   /// Same content (the path and source locations are not compared).
   friend bool operator==(const Model& a, const Model& b) {
-    return a.description == b.description && a.settings == b.settings && a.net == b.net &&
+    return a.description == b.description && a.settings == b.settings && a.params == b.params && a.net == b.net &&
            sameScene(a.scene, b.scene) && a.type_scenes.size() == b.type_scenes.size() &&
            std::equal(a.type_scenes.begin(), a.type_scenes.end(), b.type_scenes.begin(),
                       [](const auto& x, const auto& y) { return x.first == y.first && sameScene(x.second, y.second); });
@@ -60,10 +89,14 @@ inline constexpr const char* kModelSuffix = ".gdpn.yaml";
 /// Reads the model file at `path`; reports every problem found into `diags` (syntax, unknown
 /// keys, wrong types) and returns nullopt when there was an error. Semantic checks (names,
 /// slot kinds, balance) are compile()'s.
-std::optional<Model> loadModel(const std::string& path, core::Diagnostics& diags);
+/// `params` set parameters of the `params` section to other values before any field reads
+/// them (an unknown name or a value that is not a number is an error).
+std::optional<Model> loadModel(const std::string& path, core::Diagnostics& diags,
+                               const std::vector<ParamOverride>& params = {});
 
 /// Parses model text; `file` names it in diagnostics.
-std::optional<Model> parseModel(const std::string& text, const std::string& file, core::Diagnostics& diags);
+std::optional<Model> parseModel(const std::string& text, const std::string& file, core::Diagnostics& diags,
+                                const std::vector<ParamOverride>& params = {});
 
 /// The canonical text of `model`: saving it and loading it back gives an equal model, and
 /// writing that again gives the same bytes.

@@ -27,25 +27,38 @@ struct Duration {
     Normal,       ///< normal with mean `a` and standard deviation `b` seconds, redrawn below 0
     Exponential,  ///< exponential with mean `a` seconds
   };
+  /// 0 s, fixed.
+  Duration() = default;
+  /// A duration of law `law` with parameters `a` and `b` (seconds), written at `where`.
+  Duration(Law law_, double a_, double b_ = 0.0, SourceLoc where = {})
+      : law(law_), a(a_), b(b_), loc(std::move(where)) {}
   Law law = Law::Fixed;  ///< the law
   double a = 0.0;        ///< first parameter, seconds
   double b = 0.0;        ///< second parameter, seconds (uniform, normal)
   SourceLoc loc;         ///< where it was written
+  /// the model parameters `a` and `b` come from ("" for a number written as such)
+  std::array<std::string, 2> params;
 
   /// True for a constant duration.
   [[nodiscard]] bool fixed() const { return law == Law::Fixed; }
   friend bool operator==(const Duration& x, const Duration& y) {
-    return x.law == y.law && x.a == y.a && x.b == y.b;
+    return x.law == y.law && x.a == y.a && x.b == y.b && x.params == y.params;
   }
 };
 
 /// A per-slot integer (a marking count, a capacity or an arc weight) with its location.
 struct SlotCount {
+  /// 0 tokens in a0.
+  SlotCount() = default;
+  /// `count` tokens in `slot_`, written at `where`, from parameter `from` ("" for none).
+  SlotCount(SlotId slot_, std::int64_t count, SourceLoc where = {}, std::string from = {})
+      : slot(slot_), value(count), loc(std::move(where)), param(std::move(from)) {}
   SlotId slot = kDefaultSlot;  ///< which slot
   std::int64_t value = 0;      ///< tokens
   SourceLoc loc;               ///< where it was written
+  std::string param;           ///< the model parameter the value comes from ("" for none)
   friend bool operator==(const SlotCount& x, const SlotCount& y) {
-    return x.slot == y.slot && x.value == y.value;
+    return x.slot == y.slot && x.value == y.value && x.param == y.param;
   }
 };
 
@@ -152,6 +165,8 @@ struct TransitionSpec {
   std::int64_t priority = 0;          ///< higher starts first
   double probability = 1.0;           ///< chance to start in a step while enabled, in (0, 1]
   SourceLoc probability_loc;          ///< where the probability was written
+  std::string priority_param;         ///< the model parameter the priority comes from ("" for none)
+  std::string probability_param;      ///< the model parameter the probability comes from ("" for none)
   ScriptSpec guard;                   ///< a Python expression; the transition may start only while it is true
   ScriptSpec pre_fire;                ///< runs when an occurrence starts
   ScriptSpec in_fire;                 ///< runs every step while occurring (self.elapsed, self.progress)
@@ -165,6 +180,7 @@ struct TransitionSpec {
   friend bool operator==(const TransitionSpec& x, const TransitionSpec& y) {
     return x.name == y.name && x.description == y.description && x.duration == y.duration &&
            x.priority == y.priority && x.probability == y.probability && x.guard == y.guard &&
+           x.priority_param == y.priority_param && x.probability_param == y.probability_param &&
            x.pre_fire == y.pre_fire && x.in_fire == y.in_fire && x.post_fire == y.post_fire &&
            x.position == y.position;
   }

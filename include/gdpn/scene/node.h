@@ -125,6 +125,9 @@ class Node {
   bool is_template = false;
   /// Its user data (datum(), setDatum()).
   UserData data;
+  /// Fields whose value comes from a model parameter (`speed: $belt_speed`): field index ->
+  /// the parameter's name, in field order. The value stays in the field; savers write the name.
+  std::vector<std::pair<std::uint32_t, std::string>> params;
   /// Where each field was written (empty loc for fields left at their default).
   std::vector<core::SourceLoc> field_locs;
   /// Set by the physics for a moving Body: its placement in the world, which then replaces

@@ -20,6 +20,13 @@
 
 namespace gdpn::script {
 
+/// A model parameter as scripts read it (`sim.params.NAME`).
+struct ScriptParam {
+  std::string name;      ///< an identifier
+  double value = 0.0;    ///< in effect for this run
+  bool integer = false;  ///< read as a Python int
+};
+
 /// How scripts run.
 struct EngineOptions {
   /// a single script call (the globals script, a script file's top level, a hook, a
@@ -30,6 +37,8 @@ struct EngineOptions {
   double grace_s = 2.0;
   /// the unit of the angles scripts read and write (joint fields, `angle`, `rate`)
   scene::AngleUnit angles = scene::AngleUnit::Degrees;
+  /// the model's parameters, read-only to scripts as `sim.params`
+  std::vector<ScriptParam> params;
 };
 
 /// What scripts reach outside the net.

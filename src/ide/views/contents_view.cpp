@@ -514,6 +514,11 @@ void editTransition(App& app, const ConstructAt& at, const net::TransitionSpec& 
   const bool probability_changed = ImGui::IsItemDeactivatedAfterEdit();
   if (changed || priority_changed || probability_changed) {
     auto next = t;
+    // a value typed in no longer comes from the parameter it named
+    if (d.a != t.duration.a) d.params[0].clear();
+    if (d.b != t.duration.b) d.params[1].clear();
+    if (priority != t.priority) next.priority_param.clear();
+    if (probability != t.probability) next.probability_param.clear();
     next.duration = d;
     next.priority = priority;
     next.probability = probability;
