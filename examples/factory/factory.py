@@ -16,7 +16,7 @@ def summary():
         "boxes at the end of the line": len(piled()),
         "painted among them": len(piled() & set(paints)),
         "unpainted among them": len(piled() - set(paints)),
-        "share of those painted": f"{len(piled() & set(paints)) / max(1, len(piled())):.0%}",
+        "share of those painted": (100 * len(piled() & set(paints)) / max(1, len(piled())), "%"),
         "boxes painted twice": len(paints) - len(set(paints)),
         "rod strikes": len(strikes),
     }

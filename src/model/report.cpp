@@ -244,9 +244,16 @@ std::string reportJson(const Report& report) {
     return cycle;
   });
   j.member("cycles_complete", report.cycles_stop == net::ExploreStop::Done);
-  ordered_json figures = ordered_json::object();
-  for (const auto& [k, v] : report.figures) figures[k] = v;
+  // a number as a number (its unit beside, under figure_units), text as text
+  ordered_json figures = ordered_json::object(), units = ordered_json::object();
+  for (const auto& f : report.figures) {
+    if (f.value && f.integer) figures[f.label] = static_cast<std::int64_t>(*f.value);
+    else if (f.value) figures[f.label] = *f.value;
+    else figures[f.label] = f.text;
+    if (!f.unit.empty()) units[f.label] = f.unit;
+  }
   j.member("figures", figures);
+  if (!units.empty()) j.member("figure_units", units);
   if (!report.figures_error.empty()) j.member("figures_error", report.figures_error);
   j.close();
   return out;
@@ -366,11 +373,11 @@ void printSummary(std::ostream& out, const Report& report) {
   if (!report.figures.empty() || !report.figures_error.empty()) {
     out << "\nthe model's figures:\n";
     std::size_t fw = 0;
-    for (const auto& [k, v] : report.figures) fw = std::max(fw, k.size());
-    for (const auto& [k, v] : report.figures) {
+    for (const auto& f : report.figures) fw = std::max(fw, f.label.size());
+    for (const auto& f : report.figures) {
       // the value wrapped at 100 columns, under itself
-      out << "  " << pad(k + ":", fw + 1, false);
-      core::writeWrapped(out, fw + 3, core::words(v), fw + 4);
+      out << "  " << pad(f.label + ":", fw + 1, false);
+      core::writeWrapped(out, fw + 3, core::words(f.text), fw + 4);
       out << "\n";
     }
     if (!report.figures_error.empty()) out << "  " << report.figures_error << "\n";

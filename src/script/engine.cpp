@@ -867,8 +867,41 @@ void Engine::sensorEvent(net::PlaceSlotId ps, ScriptKind kind, scene::NodeHandle
 }
 
 bool Engine::halted() const { return impl_->halt != Halt::None; }
-std::vector<std::pair<std::string, std::string>> Engine::summary(std::string& error) {
-  std::vector<std::pair<std::string, std::string>> out;
+namespace {
+
+/// A figure's number: an int or a float (numpy's too), not a bool; nullopt for anything else.
+std::optional<double> figureNumber(py::handle x) {
+  if (PyBool_Check(x.ptr()) || PyUnicode_Check(x.ptr()) || PyBytes_Check(x.ptr())) return std::nullopt;
+  if (!PyLong_Check(x.ptr()) && !PyFloat_Check(x.ptr()) && !PyObject_HasAttrString(x.ptr(), "__float__")) {
+    return std::nullopt;
+  }
+  const double v = PyFloat_AsDouble(x.ptr());
+  if (PyErr_Occurred()) {
+    PyErr_Clear();
+    return std::nullopt;
+  }
+  return v;
+}
+
+/// True for a Python int (numpy's too) that a double holds exactly.
+bool wholeFigure(py::handle x, double v) {
+  return (PyLong_Check(x.ptr()) || PyObject_HasAttrString(x.ptr(), "__index__")) && std::abs(v) < 9.0e15;
+}
+
+/// The text of a figure's number: a whole number in full, others to 4 significant digits
+/// (the figures are read by people; the report keeps the number itself).
+std::string figureText(py::handle x, double v) {
+  if (wholeFigure(x, v)) return py::str(x);
+  char buf[64];
+  const bool wide = std::abs(v) >= 1e4 && std::abs(v) < 1e15;
+  std::snprintf(buf, sizeof buf, wide ? "%.0f" : "%.4g", v);
+  return buf;
+}
+
+}  // namespace
+
+std::vector<Figure> Engine::summary(std::string& error) {
+  std::vector<Figure> out;
   try {
     if (!impl_->globals.contains("summary")) return out;
     py::object f = impl_->globals["summary"];
@@ -883,7 +916,25 @@ std::vector<std::pair<std::string, std::string>> Engine::summary(std::string& er
       return out;
     }
     for (auto item : py::reinterpret_borrow<py::dict>(result)) {
-      out.emplace_back(py::str(item.first), py::str(item.second));
+      Figure fig;
+      fig.label = py::str(item.first);
+      py::handle v = item.second;
+      // (number, "unit")
+      if (PyTuple_Check(v.ptr()) && PyTuple_Size(v.ptr()) == 2 && PyUnicode_Check(PyTuple_GetItem(v.ptr(), 1)) &&
+          figureNumber(PyTuple_GetItem(v.ptr(), 0))) {
+        fig.unit = py::str(PyTuple_GetItem(v.ptr(), 1));
+        v = PyTuple_GetItem(v.ptr(), 0);
+      }
+      const auto number = figureNumber(v);
+      if (number && std::isfinite(*number)) {
+        fig.value = *number;
+        fig.integer = wholeFigure(v, *number);
+        fig.text = figureText(v, *number) + (fig.unit.empty() ? "" : " " + fig.unit);
+      } else {
+        fig.text = py::str(item.second);
+        fig.unit.clear();
+      }
+      out.push_back(std::move(fig));
     }
   } catch (const py::error_already_set& e) {
     const bool late = e.matches(PyExc_KeyboardInterrupt) && impl_->watchdog->timedOut();

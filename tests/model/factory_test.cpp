@@ -68,8 +68,8 @@ TEST(Factory, TheArmDeliversOneBoxPerFourSecondCycle) {
 }
 
 std::string figure(const Report& report, const std::string& name) {
-  for (const auto& [k, v] : report.figures) {
-    if (k == name) return v;
+  for (const auto& f : report.figures) {
+    if (f.label == name) return f.text;
   }
   ADD_FAILURE() << "no figure '" << name << "'";
   return {};
@@ -106,7 +106,7 @@ TEST(Factory, TheLinePaintsHalfTheBoxesOnceAndTheRodsStrikeNone) {
   EXPECT_EQ(figure(report, "boxes at the end of the line"), "21");
   EXPECT_EQ(figure(report, "painted among them"), "10");
   EXPECT_EQ(figure(report, "unpainted among them"), "11");
-  EXPECT_EQ(figure(report, "share of those painted"), "48%");
+  EXPECT_EQ(figure(report, "share of those painted"), "47.62 %");
   // the cells' bound is their 15 s circuit (push box, insert, pull rod, paint, push rod,
   // reach, pull box, release, wait) and the one step of rearm; the skips are circuits of
   // their own, shorter

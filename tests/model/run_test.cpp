@@ -64,7 +64,9 @@ scripts:
   globals: |
     made = 0
     def summary():
-        return {"parts made": made, "rate [1/s]": f"{made / sim.time:.1f}", "note": "a long figure " * 10}
+        return {"parts made": made, "rate [1/s]": f"{made / sim.time:.1f}", "note": "a long figure " * 10,
+                "mean cycle": (sim.time / 3, "s"), "share": (100 * 2 / 3, "%"), "big": 123456.7, "no": float("nan"),
+                "flag": True, "pair": (1, 2)}
 pages:
   main:
     places: {p: {tokens: 1}}
@@ -76,9 +78,24 @@ pages:
   auto sim = Simulation::create(*m, diags);
   ASSERT_TRUE(sim) << diags.str();
   const auto r = makeReport(*sim, sim->run({}));
-  ASSERT_EQ(r.figures.size(), 3u);
-  EXPECT_EQ(r.figures[0], (std::pair<std::string, std::string>{"parts made", "5"}));
-  EXPECT_EQ(r.figures[1], (std::pair<std::string, std::string>{"rate [1/s]", "1.0"}));
+  ASSERT_EQ(r.figures.size(), 9u);
+  // a number is kept as one (shown whole, or to 4 digits), with its unit when paired with one;
+  // anything else is text
+  EXPECT_EQ(r.figures[0], (script::Figure{"parts made", "5", 5.0, "", true}));
+  EXPECT_EQ(r.figures[1], (script::Figure{"rate [1/s]", "1.0", std::nullopt, "", false}));
+  EXPECT_EQ(r.figures[3], (script::Figure{"mean cycle", "1.667 s", 5.0 / 3, "s", false}));
+  EXPECT_EQ(r.figures[4], (script::Figure{"share", "66.67 %", 100 * 2.0 / 3, "%", false}));
+  EXPECT_EQ(r.figures[5], (script::Figure{"big", "123457", 123456.7, "", false}));
+  EXPECT_EQ(r.figures[6], (script::Figure{"no", "nan", std::nullopt, "", false}));
+  EXPECT_EQ(r.figures[7], (script::Figure{"flag", "True", std::nullopt, "", false}));
+  EXPECT_EQ(r.figures[8], (script::Figure{"pair", "(1, 2)", std::nullopt, "", false}));
+  // in the JSON report: numbers as numbers, their units beside
+  const auto j = nlohmann::json::parse(reportJson(r));
+  EXPECT_TRUE(j["figures"]["parts made"].is_number_integer());
+  EXPECT_EQ(j["figures"]["parts made"], 5);
+  EXPECT_EQ(j["figures"]["rate [1/s]"], "1.0");
+  EXPECT_EQ(j["figures"]["mean cycle"], 5.0 / 3);
+  EXPECT_EQ(j["figure_units"], (nlohmann::json{{"mean cycle", "s"}, {"share", "%"}}));
   std::ostringstream text;
   printSummary(text, r);
   EXPECT_NE(text.str().find("the model's figures:\n  parts made: 5\n  rate [1/s]: 1.0\n"), std::string::npos) << text.str();
@@ -137,7 +154,12 @@ std::string reportAsTree(const Report& report) {
   }
   j["cycles_complete"] = report.cycles_stop == net::ExploreStop::Done;
   j["figures"] = ordered_json::object();
-  for (const auto& [k, v] : report.figures) j["figures"][k] = v;
+  for (const auto& f : report.figures) {
+    if (f.value && f.integer) j["figures"][f.label] = static_cast<std::int64_t>(*f.value);
+    else if (f.value) j["figures"][f.label] = *f.value;
+    else j["figures"][f.label] = f.text;
+    if (!f.unit.empty()) j["figure_units"][f.label] = f.unit;
+  }
   if (!report.figures_error.empty()) j["figures_error"] = report.figures_error;
   return j.dump(2) + "\n";
 }
@@ -158,7 +180,8 @@ TEST(Report, TheJsonWrittenPieceByPieceIsTheWholeTreesText) {
     EXPECT_EQ(reportJson(report), reportAsTree(report));
     // the other members: a message, figures and their error, nothing in the arrays
     report.outcome.message = "stopped by \"a\" script\nline two";
-    report.figures = {{"boxes", "3"}, {"share", "75 %"}};
+    report.figures = {{"boxes", "3", 3.0, "", true}, {"share", "75 %", 75.0, "%", false},
+                      {"note", "late", std::nullopt, "", false}};
     report.figures_error = "summary() failed";
     report.cycles.clear();
     report.places.clear();

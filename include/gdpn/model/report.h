@@ -66,7 +66,7 @@ struct Report {
   std::vector<PlaceFigures> places;
   std::vector<CycleFigures> cycles;  ///< largest bound first; empty for an untimed net
   net::ExploreStop cycles_stop = net::ExploreStop::Done;  ///< why the cycle bounds were cut short (Done: not)
-  std::vector<std::pair<std::string, std::string>> figures;  ///< the model's own, from its summary()
+  std::vector<script::Figure> figures;  ///< the model's own, from its summary()
   std::string figures_error;         ///< why summary() failed ("" when it did not)
 };
 

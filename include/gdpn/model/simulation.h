@@ -138,8 +138,8 @@ class Simulation {
   /// Transform spawn made to hold `node` goes too once it holds nothing else.
   void deleteNode(scene::Node& node);
   /// The model's own figures: what its globals' `summary()` returns (empty without one).
-  std::vector<std::pair<std::string, std::string>> modelFigures(std::string& error) {
-    return engine_ ? engine_->summary(error) : std::vector<std::pair<std::string, std::string>>{};
+  std::vector<script::Figure> modelFigures(std::string& error) {
+    return engine_ ? engine_->summary(error) : std::vector<script::Figure>{};
   }
   /// Whether sim.log writes its lines to stderr (`[t=1.5] text`; on by default). They go to
   /// the trace either way.

@@ -27,6 +27,16 @@ struct ScriptParam {
   bool integer = false;  ///< read as a Python int
 };
 
+/// One of the model's own figures: a label and what `summary()` gave for it.
+struct Figure {
+  std::string label;             ///< the dict's key
+  std::string text;              ///< as shown: the number with its unit, or the text
+  std::optional<double> value;   ///< the number, when summary() gave one (not for text)
+  std::string unit;              ///< its unit ("s", "%"), "" for none
+  bool integer = false;          ///< the number is a Python int (the report writes it whole)
+  friend bool operator==(const Figure&, const Figure&) = default;
+};
+
 /// How scripts run.
 struct EngineOptions {
   /// a single script call (the globals script, a script file's top level, a hook, a
@@ -94,9 +104,9 @@ class Engine final : public net::ScriptHooks {
   void sensorEvent(net::PlaceSlotId ps, net::ScriptKind kind, scene::NodeHandle sensor, scene::NodeHandle item = 0);
 
   /// The model's own figures for the summary: when the globals define a function
-  /// `summary()`, the dict it returns as (label, text) pairs in its order; empty otherwise.
-  /// An exception, the timeout (or a result that is not a dict) leaves `error` set.
-  std::vector<std::pair<std::string, std::string>> summary(std::string& error);
+  /// `summary()`, the dict it returns, in its order; empty otherwise. A value is a number
+  /// (an int or a float), a pair `(number, "unit")`, or anything else as its text.
+  std::vector<Figure> summary(std::string& error);
 
   /// Evaluates the Python expression `expression` in the model's globals (what its scripts
   /// see: `sim`, the sensors by name, the globals script's names) for its truth: a
