@@ -42,8 +42,15 @@ py::module_& module() {
 
 class Model {
  public:
-  Model(std::string path, std::optional<std::uint64_t> seed, double script_timeout, const py::dict& params)
+  Model(std::string path, std::optional<std::uint64_t> seed, double script_timeout, const py::dict& params,
+        const std::vector<std::string>& signals)
       : path_(std::move(path)) {
+    for (const auto& arg : signals) {
+      std::string why;
+      auto spec = model::parseSignalArgument(arg, why);
+      if (!spec) throw py::value_error("signals: " + why);
+      signals_.push_back(std::move(*spec));
+    }
     core::Diagnostics diags;
     auto resolved = model::resolveModelPath(path_, diags);
     if (!resolved) raiseModelError(diags);
@@ -61,6 +68,41 @@ class Model {
     session_ = session::Session::create(std::move(*m), diags, {seed, script_timeout});
     if (!session_) raiseModelError(diags);
     session_->traceTo(trace_);
+    recordSignals();
+  }
+
+  /// Records the model's signals and those given to load(), when there are any.
+  void recordSignals() {
+    if (signals_.empty() && session_->simulation().model().signals.empty()) return;
+    core::Diagnostics diags;
+    if (!session_->simulation().recordSignals(signals_, diags)) raiseModelError(diags);
+  }
+
+  /// The signals recorded so far as a pandas DataFrame indexed by time (s).
+  py::object signalFrame() const {
+    const model::SignalTable* table = session_->simulation().signals();
+    py::module_ pandas;
+    try {
+      pandas = py::module_::import("pandas");
+    } catch (const py::error_already_set&) {
+      throw py::import_error("Model.signals() needs pandas (Debian: apt-get install python3-pandas)");
+    }
+    py::dict columns;
+    std::vector<std::string> names = table ? table->columns : std::vector<std::string>{};
+    for (std::size_t c = 0; c < names.size(); ++c) {
+      py::list values;
+      for (const auto& row : table->rows) {
+        if (row[c]) values.append(*row[c]);
+        else values.append(py::float_(std::nan("")));
+      }
+      columns[py::str(names[c])] = values;
+    }
+    py::list time;
+    if (table) {
+      for (double t : table->time) time.append(t);
+    }
+    py::object index = pandas.attr("Index")(time, py::arg("name") = "time");
+    return pandas.attr("DataFrame")(columns, py::arg("index") = index);
   }
 
   const std::vector<model::Param>& params() const { return session_->simulation().model().params; }
@@ -103,6 +145,7 @@ class Model {
     trace_.clear();
     if (!session_->reset(diags, seed)) raiseModelError(diags);
     outcome_ = {};
+    recordSignals();
   }
 
   int addBreakpoint(std::optional<std::string> starts, std::optional<std::string> completes,
@@ -303,6 +346,7 @@ class Model {
 
   std::string path_;
   std::ostringstream trace_;  // before the session, which writes into it
+  std::vector<model::SignalSpec> signals_;  // those given to load(), recorded with the model's
   std::unique_ptr<session::Session> session_;
   model::RunOutcome outcome_;
 };
@@ -371,6 +415,9 @@ class FireError(ValueError):
            "and marking that show it); with a list of formulas, a list of answers. Raises gdpn.ModelError, "
            "located by column, for a mistake in a formula; an answer a limit stops is 'unknown' with 'why'.")
       .def("trace", &Model::trace, "Every event so far, as dicts")
+      .def("signals", &Model::signalFrame,
+           "The signals recorded so far (the model's signals section and load(signals=...)) as a pandas "
+           "DataFrame indexed by time, s; NaN where a signal was not sampled")
       .def("report", &Model::report, "Figures of the run so far")
       .def_property_readonly("time", &Model::time, "seconds simulated")
       .def_property_readonly("steps", &Model::steps, "steps taken")
@@ -391,10 +438,13 @@ class FireError(ValueError):
 
   m.def(
       "load",
-      [](const std::string& path, std::optional<std::uint64_t> seed, double script_timeout, const py::dict& params) {
-        return std::make_unique<Model>(path, seed, script_timeout, params);
+      [](const std::string& path, std::optional<std::uint64_t> seed, double script_timeout, const py::dict& params,
+         const std::vector<std::string>& signals) {
+        return std::make_unique<Model>(path, seed, script_timeout, params, signals);
       },
       py::arg("path"), py::arg("seed") = py::none(), py::arg("script_timeout") = 0.0, py::arg("params") = py::dict(),
+      py::arg("signals") = std::vector<std::string>{},
       "Loads a model file (or a folder holding one), its parameters set from `params` ({name: number}) where "
-      "given; raises gdpn.ModelError on mistakes");
+      "given; `signals` adds signals to record (\"place:NAME\", \"node:PATH.QUANTITY\", \"python:EXPR\", sampled "
+      "every step) to the model's own; raises gdpn.ModelError on mistakes");
 }

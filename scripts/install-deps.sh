@@ -9,6 +9,8 @@ packages=(
   build-essential cmake ninja-build pkg-config clang libclang-rt-14-dev git
   # physics and scripting
   libode-dev pybind11-dev python3-dev python3-pytest python3-numpy
+  # experiments: signals as DataFrames (pandas)
+  python3-pandas
   # graphics and GUI
   libglfw3-dev libimgui-dev libepoxy-dev libegl-dev libgl-dev libgl1-mesa-dri xvfb xauth fonts-dejavu-core
   # file formats

@@ -171,11 +171,10 @@ int check(const std::string& arg, double script_timeout_s, const std::vector<std
   std::optional<model::Model> m;
   if (path) m = model::loadModel(*path, diags, paramOverrides(params));
   std::shared_ptr<const gdpn::net::Net> net;
-  std::unique_ptr<model::Simulation> sim;
-  if (m) net = gdpn::net::compile(m->net, diags);
-  // scripts and the plant are checked too: scripts compiled, their files and functions found,
-  // globals run (under the script timeout); bodies, joints and mesh files made ready
-  if (net && (net->scripted() || m->scene)) sim = model::Simulation::create(*m, diags, std::nullopt, script_timeout_s);
+  // scripts, the plant and the signals are checked too: scripts compiled, their files and
+  // functions found, globals run (under the script timeout); bodies, joints and mesh files made
+  // ready; what each signal names found
+  if (m) net = model::checkModel(*m, diags, script_timeout_s);
   diags.print(std::cerr);
   if (diags.hasErrors()) {
     std::cerr << diags.errorCount() << (diags.errorCount() == 1 ? " error\n" : " errors\n");
@@ -572,6 +571,9 @@ struct RunArgs {
   std::string replay;  // a witness file to play
   bool quiet = false;
   std::vector<std::string> params;  // --param NAME=VALUE
+  std::vector<std::string> signals;  // --signal place:P | node:PATH.Q | python:EXPR
+  double signal_every = 0.0;         // their period, seconds (0: every step)
+  std::string signals_out;           // --signals FILE.csv
 };
 
 /// A breakpoint written on the command line: "start:T", "complete:T", "PLACE OP N" (OP one
@@ -628,9 +630,33 @@ int run(const RunArgs& a) {
                                                                     {"the --input file", a.input}};
   auto with_trace = inputs;
   with_trace.emplace_back("the --trace file", a.trace);
-  if (overwritesInput("--trace", a.trace, inputs) || overwritesInput("--report", a.report, with_trace)) return 2;
+  if (overwritesInput("--trace", a.trace, inputs) || overwritesInput("--report", a.report, with_trace) ||
+      overwritesInput("--signals", a.signals_out, with_trace)) {
+    return 2;
+  }
+  std::vector<model::SignalSpec> extra;
+  for (const auto& arg : a.signals) {
+    std::string why;
+    auto spec = model::parseSignalArgument(arg, why);
+    if (!spec) {
+      std::cerr << "error: --signal: " << why << "\n";
+      return 2;
+    }
+    spec->every = a.signal_every;
+    extra.push_back(std::move(*spec));
+  }
+  if (!extra.empty() && a.signals_out.empty()) {
+    std::cerr << "error: --signal records into a table: add --signals FILE.csv\n";
+    return 2;
+  }
   auto sim = open(a.model, a.seed, a.script_timeout, a.params);
   if (!sim) return 1;
+  if (!a.signals_out.empty()) {
+    Diagnostics diags;
+    const bool ok = sim->simulation().recordSignals(extra, diags);
+    diags.print(std::cerr);
+    if (!ok) return 1;
+  }
   if (a.quiet) sim->simulation().setLogEcho(false);  // sim.log still goes to the trace
   for (const auto& spec : a.breaks) {
     std::string why;
@@ -693,6 +719,14 @@ int run(const RunArgs& a) {
       return 1;
     }
     if (!a.quiet) model::printSummary(std::cout, report);
+  }
+  if (!a.signals_out.empty()) {
+    std::ostringstream csv;
+    sim->simulation().signals()->writeCsv(csv);
+    if (!gdpn::core::writeOutput(a.signals_out, csv.str(), why)) {
+      std::cerr << a.signals_out << ": error: " << why << "\n";
+      return 1;
+    }
   }
   switch (outcome.reason) {
     case model::StopReason::ScriptError:
@@ -789,6 +823,15 @@ int main(int argc, char** argv) {
                       "play the firing sequence of a witness (gdpn analyze --witness): only its transitions "
                       "start, in its order, each as soon as it can");
   addParamOption(run_cmd, run_args.params);
+  run_cmd->add_option("--signals", run_args.signals_out,
+                      "write the model's signals (its signals section and each --signal) over time to FILE.csv");
+  run_cmd->add_option("--signal", run_args.signals,
+                      "record one more signal: place:NAME (its tokens), node:PATH.QUANTITY (position, velocity, "
+                      "angle, rate, reading or a number field), python:EXPRESSION (repeatable)")
+      ->allow_extra_args(false);
+  run_cmd->add_option("--signal-every", run_args.signal_every,
+                      "the --signal signals' sampling period in seconds (default: every step)")
+      ->check(number(0.0, kMaxTime, "seconds above 0, at most 1e9", true));
   run_cmd->add_flag("--quiet,-q", run_args.quiet,
                     "print no summary, no progress and no sim.log lines (they still go to the --trace)");
 

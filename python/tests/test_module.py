@@ -317,3 +317,32 @@ def test_params_set_at_load_reach_fields_and_scripts(source):
     assert "parameter 'parts' is a whole number, got '2.5'" in info.value.args[0]
     with pytest.raises(TypeError):
         gdpn.load(path, params={"parts": "many"})
+
+
+def test_signals_are_a_dataframe_of_the_falling_ball(source):
+    pandas = pytest.importorskip("pandas")
+    model = gdpn.load(str(source / "tests/data/good/falling_ball.gdpn.yaml"), signals=["place:main/clock"])
+    model.run()
+    frame = model.signals()
+    assert isinstance(frame, pandas.DataFrame)
+    assert list(frame.columns) == ["ball.x", "ball.y", "ball.z", "speed.x", "speed.y", "speed.z", "ticks", "clock",
+                                   "main/clock"]
+    assert frame.index.name == "time"
+    assert len(frame) == 101  # time 0 and each of 100 steps
+    # the ball falls as the integrator has it: after n steps of h, g h^2 n (n + 1) / 2 below
+    # its start, which is g t^2 / 2 and half a step's more
+    h, g = 0.01, 9.81
+    for n in (1, 50, 100):
+        t = frame.index[n]
+        assert t == pytest.approx(n * h)
+        assert frame["ball.z"].iloc[n] == pytest.approx(20 - g * h * h * n * (n + 1) / 2, abs=1e-9)
+        assert abs(frame["ball.z"].iloc[n] - (20 - g * t * t / 2)) <= g * h * t / 2 + 1e-9
+    # each at its own period: NaN between
+    assert frame["ticks"].dropna().tolist() == [float(k) for k in range(11)]
+    assert frame["clock"].dropna().tolist() == [0.0, 1.0, 2.0]
+    assert frame["speed.z"].dropna().iloc[-1] == pytest.approx(-g * 1.0)
+    with pytest.raises(ValueError):
+        gdpn.load(str(source / "tests/data/good/falling_ball.gdpn.yaml"), signals=["ball"])
+    with pytest.raises(gdpn.ModelError) as info:
+        gdpn.load(str(source / "tests/data/good/falling_ball.gdpn.yaml"), signals=["node:drop/ball.angle"])
+    assert "'drop/ball' is no joint: it has no angle" in info.value.args[0]

@@ -24,8 +24,9 @@ using core::SourceLoc;
 using detail::Entry;
 using detail::YamlReader;
 
-const std::vector<std::string> kTopKeys = {"gdpn", "description", "settings", "params", "pages",
+const std::vector<std::string> kTopKeys = {"gdpn", "description", "settings", "params", "signals", "pages",
                                            "page_types", "scene", "scripts"};
+const std::vector<std::string> kSignalKeys = {"place", "node", "of", "expression", "every"};
 const std::vector<std::string> kParamKeys = {"value", "unit", "description"};
 const std::vector<std::string> kSettingsKeys = {"dt", "seed", "until", "angles"};
 const std::vector<std::string> kPageKeys = {"description", "places", "transitions", "arcs", "instances"};
@@ -93,6 +94,8 @@ class ModelReader {
         if (auto s = r_.string(e.value, "description")) model.description = *s;
       } else if (e.key == "settings" || e.key == "params") {
         continue;  // read above
+      } else if (e.key == "signals") {
+        readSignals(e.value, model.signals);
       } else if (e.key == "pages") {
         readPages(e.value, model.net.pages, false);
       } else if (e.key == "page_types") {
@@ -196,16 +199,19 @@ class ModelReader {
     }
   }
 
+  /// True when the key of `e` is an identifier; reported (as `whose` name) when not.
+  bool identifier(const Entry& e, const std::string& whose) {
+    if (core::isIdentifier(e.key)) return true;
+    r_.error(e.loc, whose + " name is a word of letters, digits and _ (not starting with a digit), got '" + e.key + "'");
+    return false;
+  }
+
   /// The `params` section: `name: value` or `name: {value: .., unit: .., description: ..}`.
   void readParams(const YAML::Node& node, std::vector<Param>& out) {
     if (node.IsNull()) return;
     if (!r_.expectMap(node, "params")) return;
     for (const auto& e : r_.entries(node, "params", {})) {
-      if (!core::isIdentifier(e.key)) {
-        r_.error(e.loc, "a parameter's name is a word of letters, digits and _ (not starting with a digit), got '" +
-                            e.key + "'");
-        continue;
-      }
+      if (!identifier(e, "a parameter's")) continue;
       Param p;
       p.name = e.key;
       p.loc = e.loc;
@@ -249,6 +255,54 @@ class ModelReader {
     }
     p.value = p.declared = x;
     return true;
+  }
+
+  /// The `signals` section: `name: {place: P}`, `{node: PATH, of: QUANTITY}` or
+  /// `{expression: PYTHON}`, each with an optional sampling period `every` (seconds).
+  void readSignals(const YAML::Node& node, std::vector<SignalSpec>& out) {
+    if (node.IsNull() || !r_.expectMap(node, "signals")) return;
+    for (const auto& e : r_.entries(node, "signals", {})) {
+      if (!identifier(e, "a signal's")) continue;
+      SignalSpec s;
+      s.name = e.key;
+      s.loc = e.loc;
+      if (!r_.expectMap(e.value, "signal '" + s.name + "'")) continue;
+      int kinds = 0;
+      bool has_of = false;
+      for (const auto& f : r_.entries(e.value, "signal '" + s.name + "'", kSignalKeys)) {
+        if (f.key == "every") {
+          if (auto v = r_.number(f.value, "every")) {
+            if (!(*v > 0) || !std::isfinite(*v)) r_.error(f.value, "'every' is a period of more than 0 seconds");
+            s.every = *v;
+          }
+          continue;
+        }
+        auto text = r_.string(f.value, f.key);
+        if (!text) continue;
+        if (f.key == "of") {
+          s.quantity = *text;
+          has_of = true;
+          continue;
+        }
+        ++kinds;
+        s.kind = f.key == "place" ? SignalSpec::Kind::Place
+                 : f.key == "node" ? SignalSpec::Kind::Node
+                                   : SignalSpec::Kind::Expression;
+        s.target = *text;
+        s.loc = r_.loc(f.value, f.loc);
+      }
+      if (kinds != 1) {
+        r_.error(e.loc, "signal '" + s.name + "' reads one of: place, node (with 'of'), expression");
+        continue;
+      }
+      if ((s.kind == SignalSpec::Kind::Node) != has_of) {
+        r_.error(e.loc, s.kind == SignalSpec::Kind::Node
+                            ? "signal '" + s.name + "' needs 'of': position, velocity, angle, rate, reading or a field"
+                            : "'of' goes with 'node' only (signal '" + s.name + "')");
+        continue;
+      }
+      out.push_back(std::move(s));
+    }
   }
 
   /// Applies the overrides (--param) to the parameters read.

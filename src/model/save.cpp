@@ -260,6 +260,24 @@ std::string writeModel(const Model& model) {
     }
     out << YAML::EndMap;
   }
+  if (!model.signals.empty()) {
+    out << YAML::Key << "signals" << YAML::Value << YAML::BeginMap;
+    for (const auto& sig : model.signals) {
+      out << YAML::Key << sig.name << YAML::Value << YAML::Flow << YAML::BeginMap;
+      switch (sig.kind) {
+        case SignalSpec::Kind::Place: out << YAML::Key << "place" << YAML::Value << sig.target; break;
+        case SignalSpec::Kind::Node:
+          out << YAML::Key << "node" << YAML::Value << sig.target << YAML::Key << "of" << YAML::Value << sig.quantity;
+          break;
+        case SignalSpec::Kind::Expression:
+          out << YAML::Key << "expression" << YAML::Value << YAML::DoubleQuoted << sig.target;
+          break;
+      }
+      if (sig.every > 0) out << YAML::Key << "every" << YAML::Value << formatDouble(sig.every);
+      out << YAML::EndMap;
+    }
+    out << YAML::EndMap;
+  }
   if (!model.net.pages.empty()) {
     out << YAML::Key << "pages" << YAML::Value << YAML::BeginMap;
     for (const auto& p : model.net.pages) writePage(out, p, false, nullptr, s.angles);

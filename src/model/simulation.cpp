@@ -1,5 +1,7 @@
 #include "gdpn/model/simulation.h"
 
+#include "signal_recorder.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -128,6 +130,14 @@ class InstancePlacer {
 
 }  // namespace
 
+std::shared_ptr<const net::Net> checkModel(const Model& model, core::Diagnostics& diags, double script_timeout_s) {
+  auto net = net::compile(model.net, diags);
+  if (!net || !(net->scripted() || model.scene || !model.signals.empty())) return net;
+  auto sim = Simulation::create(model, diags, std::nullopt, script_timeout_s);
+  if (sim && !model.signals.empty()) sim->recordSignals({}, diags);
+  return net;
+}
+
 std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnostics& diags,
                                                std::optional<std::uint64_t> seed, double script_timeout_s) {
   auto net = net::compile(model.net, diags);
@@ -228,15 +238,37 @@ bool Simulation::makeEngine(core::Diagnostics& diags) {
   return true;
 }
 
+bool Simulation::engineReady(std::string& error) {
+  if (engine_) return true;
+  core::Diagnostics diags;
+  if (makeEngine(diags)) return true;
+  error = diags.str();
+  return false;
+}
+
 std::optional<bool> Simulation::evaluate(const std::string& expression, std::string& error) {
-  if (!engine_) {
-    core::Diagnostics diags;
-    if (!makeEngine(diags)) {
-      error = diags.str();
-      return std::nullopt;
-    }
-  }
+  if (!engineReady(error)) return std::nullopt;
   return engine_->evaluate(expression, error);
+}
+
+std::optional<double> Simulation::evaluateNumber(const std::string& expression, std::string& error) {
+  if (!engineReady(error)) return std::nullopt;
+  return engine_->evaluateNumber(expression, error);
+}
+
+bool Simulation::recordSignals(const std::vector<SignalSpec>& extra, core::Diagnostics& diags) {
+  std::vector<SignalSpec> all = model_.signals;
+  all.insert(all.end(), extra.begin(), extra.end());
+  signals_ = SignalRecorder::create(*this, all, diags);
+  if (signals_ && started_) signals_->sample();
+  return signals_ != nullptr;
+}
+
+const SignalTable* Simulation::signals() const { return signals_ ? &signals_->table() : nullptr; }
+
+const sensors::Reading& Simulation::reading(scene::NodeHandle sensor) const {
+  static const sensors::Reading none;
+  return hub_ ? hub_->reading(sensor) : none;
 }
 
 void Simulation::keepCycles(std::unique_ptr<CyclePlan> plan) {
@@ -467,6 +499,7 @@ void Simulation::start() {
   readConditions();
   if (engine_ && engine_->halted() && engine_->halt() != script::Halt::Stop) return;
   firePhase();
+  if (signals_) signals_->sample();
 }
 
 void Simulation::replay(std::vector<net::TransitionId> sequence) {
@@ -508,6 +541,7 @@ void Simulation::step() {
   // a script that failed stops the run at the end of its phase
   if (engine_ && engine_->halted() && engine_->halt() != script::Halt::Stop) return;
   firePhase();
+  if (signals_) signals_->sample();
 }
 
 void Simulation::stepPlant() {
@@ -564,6 +598,11 @@ RunOutcome Simulation::run(const RunLimits& limits, const ProgressFn& progress,
       break;
     }
     if (step_hook_) step_hook_();
+    if (signals_ && !signals_->error().empty()) {
+      outcome.reason = StopReason::ScriptError;
+      outcome.message = signals_->error();
+      break;
+    }
     if (stop_check_ && !scriptHalt() && stop_check_()) {
       outcome.reason = StopReason::Breakpoint;
       break;

@@ -943,40 +943,66 @@ std::vector<Figure> Engine::summary(std::string& error) {
   return out;
 }
 
-std::optional<bool> Engine::evaluate(const std::string& expression, std::string& error) {
+bool Engine::evaluateWith(const std::string& expression, const char* source, std::string& error,
+                          const std::function<bool(void*)>& read) {
   // each expression is compiled once
   auto& code = impl_->expressions[expression];
   if (!code) {
-    PyObject* c = Py_CompileString(expression.c_str(), "<breakpoint>", Py_eval_input);
+    PyObject* c = Py_CompileString(expression.c_str(), source, Py_eval_input);
     if (!c) {
       error = Impl::formatPending();
       impl_->expressions.erase(expression);
-      return std::nullopt;
+      return false;
     }
     code = py::reinterpret_steal<py::object>(c);
   }
-  // the script timeout and Ctrl-C reach a predicate as they reach any script; it sees the
+  // the script timeout and Ctrl-C reach an expression as they reach any script; it sees the
   // model's names, no construct's slots
   impl_->bindBare(ScriptKind::Globals, 0);
   impl_->watchdog->enter();
   PyObject* r = PyEval_EvalCode(code.ptr(), impl_->globals.ptr(), impl_->globals.ptr());
-  const int truth = r ? PyObject_IsTrue(r) : -1;
+  const bool ok = r != nullptr && read(r);
   impl_->watchdog->leave();
   Py_XDECREF(r);
-  if (truth < 0) {
-    if (impl_->stoppedLate()) {
-      error = "it " + impl_->lateText();
-      return std::nullopt;
-    }
-    if (PyErr_ExceptionMatches(PyExc_KeyboardInterrupt)) {
-      PyErr_Clear();
-      error = "it was interrupted (Ctrl-C)";
-      return std::nullopt;
-    }
-    error = Impl::formatPending();
-    return std::nullopt;
+  if (ok) return true;
+  if (impl_->stoppedLate()) {
+    error = "it " + impl_->lateText();
+    return false;
   }
-  return truth == 1;
+  if (PyErr_ExceptionMatches(PyExc_KeyboardInterrupt)) {
+    PyErr_Clear();
+    error = "it was interrupted (Ctrl-C)";
+    return false;
+  }
+  error = Impl::formatPending();
+  return false;
+}
+
+std::optional<bool> Engine::evaluate(const std::string& expression, std::string& error) {
+  bool truth = false;
+  const bool ok = evaluateWith(expression, "<breakpoint>", error, [&](void* result) {
+    auto* r = static_cast<PyObject*>(result);
+    const int t = PyObject_IsTrue(r);
+    truth = t == 1;
+    return t >= 0;
+  });
+  if (!ok) return std::nullopt;
+  return truth;
+}
+
+std::optional<double> Engine::evaluateNumber(const std::string& expression, std::string& error) {
+  double value = 0.0;
+  const bool ok = evaluateWith(expression, "<signal>", error, [&](void* result) {
+    auto* r = static_cast<PyObject*>(result);
+    if (PyUnicode_Check(r) || PyBytes_Check(r) || !(PyLong_Check(r) || PyFloat_Check(r) || PyObject_HasAttrString(r, "__float__"))) {
+      PyErr_Format(PyExc_TypeError, "a signal is a number, not %s", Py_TYPE(r)->tp_name);
+      return false;
+    }
+    value = PyFloat_AsDouble(r);
+    return !PyErr_Occurred();
+  });
+  if (!ok) return std::nullopt;
+  return value;
 }
 
 Halt Engine::halt() const { return impl_->halt; }

@@ -31,11 +31,11 @@ std::vector<std::string> badFiles() {
   return files;
 }
 
-/// Loads and compiles `path` with its scripts, returning all diagnostics.
+/// Loads and checks `path` as `gdpn check` does, returning all diagnostics.
 core::Diagnostics diagnose(const std::string& path) {
   core::Diagnostics diags;
   if (auto m = loadModel(path, diags)) {
-    if (auto net = net::compile(m->net, diags); net && (net->scripted() || m->scene)) Simulation::create(*m, diags);
+    checkModel(*m, diags);
   }
   return diags;
 }

@@ -938,4 +938,27 @@ TEST(CliRun, ParamSetsAParameterForTheRunAndMistakesNameTheArgument) {
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.out.find("--param: error: parameter 'parts' expects a number, got 'two'"), std::string::npos) << r.out;
 }
+TEST(CliRun, SignalsAreWrittenAsCsvAndMistakesNameTheArgument) {
+  const gdpn::testing::ScratchFolder dir("gdpn_signals");
+  auto r = gdpn("run tests/data/good/falling_ball.gdpn.yaml --quiet --signals " + dir.file("s.csv") +
+                " --signal place:main/clock --signal 'python:sim.step' --signal-every 0.5");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const std::string csv = gdpn::testing::fileBytes(dir.file("s.csv"));
+  EXPECT_EQ(csv.substr(0, csv.find('\n') + 1), "time,ball.x,ball.y,ball.z,speed.x,speed.y,speed.z,ticks,clock,main/clock,sim.step\n");
+  EXPECT_NE(csv.find("\n0.5,0,0,18.749225,0,0,-4.9049999999999985,5,1,0,50\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\n0.51,0,0,18.699194,,,,,,,\n"), std::string::npos) << csv;
+  r = gdpn("run tests/data/good/falling_ball.gdpn.yaml --signal place:main/clock");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.out, "error: --signal records into a table: add --signals FILE.csv\n");
+  r = gdpn("run tests/data/good/falling_ball.gdpn.yaml --signals " + dir.file("t.csv") + " --signal clock");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("--signal: expects place:NAME, node:PATH.QUANTITY or python:EXPRESSION, got 'clock'"),
+            std::string::npos);
+  r = gdpn("run tests/data/good/falling_ball.gdpn.yaml --signals " + dir.file("t.csv") + " --signal node:drop/ball.mas");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.out, "--signal node:drop/ball.mas: error: signal 'drop/ball.mas': a Body has no number 'mas' (did you mean "
+                   "'mass'?) (it has: position, velocity, mass, density, linear_damping, angular_damping)\n");
+  EXPECT_FALSE(fs::exists(dir.file("t.csv")));
+}
+
 }  // namespace

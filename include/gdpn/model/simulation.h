@@ -14,6 +14,7 @@
 #include <unordered_set>
 
 #include "gdpn/model/model.h"
+#include "gdpn/model/signals.h"
 #include "gdpn/net/invariants.h"
 #include "gdpn/net/kernel.h"
 #include "gdpn/net/round_trips.h"
@@ -24,6 +25,8 @@
 #include "gdpn/script/engine.h"
 
 namespace gdpn::model {
+
+class SignalRecorder;
 
 /// When a run ends. With neither set, the model's `until` applies, and without that the run
 /// goes on until the net is dead (or it is interrupted).
@@ -97,6 +100,16 @@ class Simulation {
   /// Evaluates a Python expression in the model's globals (a breakpoint's predicate). Starts
   /// the interpreter for a model without scripts. Nullopt with `error` when it fails.
   std::optional<bool> evaluate(const std::string& expression, std::string& error);
+  /// Evaluates a Python expression that gives a number (a signal), as evaluate().
+  std::optional<double> evaluateNumber(const std::string& expression, std::string& error);
+  /// Records the model's `signals` and `extra` from now on (call before start()): sampled at
+  /// time 0 and after every step at each signal's period. False with located diagnostics
+  /// when one names what is not there.
+  bool recordSignals(const std::vector<SignalSpec>& extra, core::Diagnostics& diags);
+  /// The signals recorded so far, or null when none are recorded.
+  [[nodiscard]] const SignalTable* signals() const;
+  /// The current reading of sensor node `sensor` (an empty reading without sensors).
+  [[nodiscard]] const sensors::Reading& reading(scene::NodeHandle sensor) const;
   /// Starts if needed, then steps until `limits` say stop, the net is dead, or `interrupt`
   /// becomes true. Closes the statistics at the end.
   RunOutcome run(const RunLimits& limits, const ProgressFn& progress = {},
@@ -177,6 +190,7 @@ class Simulation {
   std::size_t replayed_ = 0;
   std::string replay_blocked_;
   std::function<void()> step_hook_;
+  std::unique_ptr<SignalRecorder> signals_;
   std::function<bool()> stop_check_;
   Model model_;
   std::shared_ptr<const net::Net> net_;
@@ -190,6 +204,9 @@ class Simulation {
   void traceSensor(const sensors::Change& change);
   void readConditions();    // every condition term from its sensor's reading
   bool makeEngine(core::Diagnostics& diags);
+  // the engine, started for a model without scripts when an expression needs one; false with
+  // `error` when it cannot start
+  bool engineReady(std::string& error);
   double script_timeout_s_ = 0.0;
   bool stale_conditions_ = false;
   std::optional<double> physics_fault_at_;  // model time (s) of the step whose physics failed
@@ -204,5 +221,11 @@ class Simulation {
   std::uint64_t seed_ = 1;
   bool started_ = false;
 };
+
+/// Checks `model` as `gdpn check` does: the net compiled and, where the model has scripts, a
+/// scene or signals, a simulation made (scripts compiled and their globals run under
+/// `script_timeout_s`, the plant built) and its signals resolved. Every problem goes to
+/// `diags`; returns the net, null when it does not compile.
+std::shared_ptr<const net::Net> checkModel(const Model& model, core::Diagnostics& diags, double script_timeout_s = 0.0);
 
 }  // namespace gdpn::model

@@ -113,6 +113,9 @@ class Engine final : public net::ScriptHooks {
   /// breakpoint's predicate. Nullopt with `error` (the exception, or a syntax error) when it
   /// fails; a failure does not halt the engine.
   std::optional<bool> evaluate(const std::string& expression, std::string& error);
+  /// Evaluates a Python expression that gives a number (an int, a float or a bool) in the
+  /// model's globals (a signal). Nullopt with `error` when it fails or gives something else.
+  std::optional<double> evaluateNumber(const std::string& expression, std::string& error);
 
   /// Why the engine halted (None while it has not).
   [[nodiscard]] Halt halt() const;
@@ -121,6 +124,10 @@ class Engine final : public net::ScriptHooks {
 
  private:
   struct Impl;
+  /// Evaluates `expression` (compiled once, under the name `source`) and hands the result to
+  /// `read`, which returns false with a Python error set when it cannot take it.
+  bool evaluateWith(const std::string& expression, const char* source, std::string& error,
+                    const std::function<bool(void*)>& read);  // read gets the PyObject*
   explicit Engine(std::shared_ptr<Impl> impl);
   std::shared_ptr<Impl> impl_;
 };

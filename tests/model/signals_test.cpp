@@ -1,0 +1,119 @@
+// Signals: what a run records over time, at each signal's period, against analytic answers
+// (a falling ball under ODE's semi-implicit Euler steps), and their mistakes.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "gdpn/model/model.h"
+#include "gdpn/model/simulation.h"
+#include "support/sim_helpers.h"
+
+namespace gdpn::model {
+namespace {
+
+std::size_t column(const SignalTable& t, const std::string& name) {
+  for (std::size_t c = 0; c < t.columns.size(); ++c) {
+    if (t.columns[c] == name) return c;
+  }
+  ADD_FAILURE() << "no column " << name;
+  return 0;
+}
+
+TEST(Signals, AFallingBallsHeightIsHalfGTSquaredAndHalfAStepMore) {
+  auto sim = testing::openModelFile("tests/data/good/falling_ball.gdpn.yaml");
+  ASSERT_TRUE(sim);
+  core::Diagnostics diags;
+  ASSERT_TRUE(sim->recordSignals({}, diags)) << diags.str();
+  const auto outcome = sim->run({});
+  ASSERT_EQ(outcome.reason, StopReason::Until) << outcome.message;
+  const SignalTable& t = *sim->signals();
+  EXPECT_EQ(t.columns, (std::vector<std::string>{"ball.x", "ball.y", "ball.z", "speed.x", "speed.y", "speed.z",
+                                                 "ticks", "clock"}));
+  ASSERT_EQ(t.rows.size(), 101u);  // time 0 and every step of 0.01 s to 1 s
+  const double g = 9.81, h = 0.01;
+  const std::size_t z = column(t, "ball.z"), vz = column(t, "speed.z");
+  for (std::size_t n = 0; n <= 100; ++n) {
+    const double time = t.time[n];
+    EXPECT_NEAR(time, static_cast<double>(n) * h, 1e-12);
+    ASSERT_TRUE(t.rows[n][z]);
+    // ODE's step: the velocity first, then the position with it: after n steps the ball is
+    // g h^2 n (n + 1) / 2 below its start, which is g t^2 / 2 and g h t / 2 more
+    const double nn = static_cast<double>(n);
+    EXPECT_NEAR(*t.rows[n][z], 20 - g * h * h * nn * (nn + 1) / 2, 1e-9) << n;
+    EXPECT_LE(std::abs(*t.rows[n][z] - (20 - g * time * time / 2)), g * h * time / 2 + 1e-9) << n;
+    // the speed every 0.25 s, v = -g t exactly
+    if (n % 25 == 0) {
+      ASSERT_TRUE(t.rows[n][vz]) << n;
+      EXPECT_NEAR(*t.rows[n][vz], -g * time, 1e-9) << n;
+    } else {
+      EXPECT_FALSE(t.rows[n][vz]) << n;
+    }
+  }
+  // the net's ticks every 0.1 s: one more each time; the expression every 0.5 s
+  for (std::size_t k = 0; k <= 10; ++k) EXPECT_EQ(t.rows[k * 10][column(t, "ticks")], static_cast<double>(k));
+  EXPECT_EQ(t.rows[50][column(t, "clock")], 1.0);
+  EXPECT_FALSE(t.rows[49][column(t, "clock")]);
+  // as CSV: a header, the shortest exact numbers, an empty cell where nothing was sampled
+  std::ostringstream csv;
+  t.writeCsv(csv);
+  EXPECT_EQ(csv.str().substr(0, csv.str().find('\n', csv.str().find('\n', csv.str().find('\n') + 1) + 1) + 1),
+            "time,ball.x,ball.y,ball.z,speed.x,speed.y,speed.z,ticks,clock\n"
+            "0,0,0,20,0,0,0,0,0\n"
+            "0.01,0,0,19.999019,,,,,\n");
+}
+
+TEST(Signals, NothingIsRecordedUnlessAsked) {
+  auto sim = testing::openModelFile("tests/data/good/falling_ball.gdpn.yaml");
+  ASSERT_TRUE(sim);
+  sim->run({});
+  EXPECT_EQ(sim->signals(), nullptr);
+}
+
+TEST(Signals, CommandLineSignalsAreParsedAndNamedByTheirText) {
+  std::string why;
+  auto s = parseSignalArgument("node:arm/joint.angle", why);
+  ASSERT_TRUE(s) << why;
+  EXPECT_EQ(s->kind, SignalSpec::Kind::Node);
+  EXPECT_EQ(s->target, "arm/joint");
+  EXPECT_EQ(s->quantity, "angle");
+  EXPECT_EQ(s->name, "arm/joint.angle");
+  s = parseSignalArgument("python:len(sim.place('main/p').d0)", why);
+  ASSERT_TRUE(s);
+  EXPECT_EQ(s->kind, SignalSpec::Kind::Expression);
+  EXPECT_EQ(s->target, "len(sim.place('main/p').d0)");
+  EXPECT_EQ(parseSignalArgument("place:main/p", why)->target, "main/p");
+  for (const char* bad : {"main/p", "place:", "node:ball", "node:.x", "python:", "pos:ball"}) {
+    EXPECT_FALSE(parseSignalArgument(bad, why)) << bad;
+  }
+  EXPECT_EQ(why, "expects place:NAME, node:PATH.QUANTITY or python:EXPRESSION, got 'pos:ball'");
+}
+
+TEST(Signals, AnExpressionThatFailsStopsTheRunNamingTheSignalAndTheTime) {
+  core::Diagnostics diags;
+  auto m = parseModel(R"yaml(gdpn: 1
+settings: {dt: 0.25, until: 5}
+signals:
+  left: {expression: "1 / (1 - sim.time)", every: 0.5}
+pages:
+  main:
+    places: {p: {tokens: 1}}
+    transitions: {t: {duration: 1}}
+    arcs: [p -> t, t -> p]
+)yaml",
+                      "fails.gdpn.yaml", diags);
+  ASSERT_TRUE(m) << diags.str();
+  auto sim = Simulation::create(*m, diags);
+  ASSERT_TRUE(sim && sim->recordSignals({}, diags)) << diags.str();
+  const auto outcome = sim->run({});
+  EXPECT_EQ(outcome.reason, StopReason::ScriptError);
+  EXPECT_EQ(outcome.time, 1.0);
+  EXPECT_EQ(outcome.message.rfind("fails.gdpn.yaml:4:22: error: signal 'left' at t = 1 s: ", 0), 0u) << outcome.message;
+  EXPECT_NE(outcome.message.find("ZeroDivisionError"), std::string::npos) << outcome.message;
+  // what was sampled before stays
+  EXPECT_EQ(sim->signals()->time, (std::vector<double>{0.0, 0.5}));
+}
+
+}  // namespace
+}  // namespace gdpn::model
