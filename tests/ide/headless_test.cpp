@@ -275,6 +275,18 @@ TEST_F(HeadlessIde, TheInspectorShowsAndSetsATemplatesMarkAndUserData) {
   EXPECT_NE(last_.out.find("actions.yaml:1:3: error: 'template' expects true or false"), std::string::npos) << last_.out;
 }
 
+TEST_F(HeadlessIde, TheInspectorSaysWhichFieldsComeFromAParameterUntilOneIsTypedIn) {
+  auto r = replayOn("tests/data/good/params.gdpn.yaml", "- select: belt\n");
+  ASSERT_EQ(r["inspector"]["type"], "Conveyor");
+  EXPECT_EQ(r["inspector"]["fields"][0]["name"], "speed");
+  EXPECT_EQ(r["inspector"]["fields"][0]["param"], "belt_speed");
+  EXPECT_EQ(r["inspector"]["fields"][0]["value"], 0.4);
+  EXPECT_FALSE(r["inspector"]["fields"][1].contains("param"));
+  r = replayOn("tests/data/good/params.gdpn.yaml", "- select: belt\n- set: {node: belt, field: speed, value: 0.7}\n");
+  EXPECT_FALSE(r["inspector"]["fields"][0].contains("param"));
+  EXPECT_EQ(r["inspector"]["fields"][0]["value"], 0.7);
+}
+
 TEST_F(HeadlessIde, ADragOfAnInspectorSliderIsOneUndoStep) {
   // the feed's first Material: its shininess slider is the fifth row of the inspector at 1280 x 720 (below the line of the template mark and the data to add)
   auto r = replay("- select: feed/#0\n- drag: {from: [500, 670], to: [560, 670]}\n");

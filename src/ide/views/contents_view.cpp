@@ -37,11 +37,16 @@ ImVec4 slotColour(net::SlotKind kind, bool marked) {
 }
 
 std::string durationText(const net::Duration& d) {
+  // a number that comes from a model parameter shows as `$name (value)`
+  const auto num = [&](std::size_t k) {
+    const std::string value = core::formatDouble(k == 0 ? d.a : d.b);
+    return d.params[k].empty() ? value : "$" + d.params[k] + " (" + value + ")";
+  };
   switch (d.law) {
-    case net::Duration::Law::Fixed: return core::formatDouble(d.a) + " s";
-    case net::Duration::Law::Uniform: return "uniform in [" + core::formatDouble(d.a) + ", " + core::formatDouble(d.b) + ") s";
-    case net::Duration::Law::Normal: return "normal, mean " + core::formatDouble(d.a) + " s, sd " + core::formatDouble(d.b) + " s";
-    case net::Duration::Law::Exponential: return "exponential, mean " + core::formatDouble(d.a) + " s";
+    case net::Duration::Law::Fixed: return num(0) + " s";
+    case net::Duration::Law::Uniform: return "uniform in [" + num(0) + ", " + num(1) + ") s";
+    case net::Duration::Law::Normal: return "normal, mean " + num(0) + " s, sd " + num(1) + " s";
+    case net::Duration::Law::Exponential: return "exponential, mean " + num(0) + " s";
   }
   return "?";
 }

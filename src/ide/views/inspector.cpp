@@ -240,14 +240,27 @@ void nodeInspector(App& app, const std::string& path, nlohmann::json& report) {
     ImGui::TextDisabled("%s", d.unit.c_str());
     ImGui::TableNextColumn();
     const auto range = rangeText(d);
+    // a field that names a model parameter says which, where its range would be
+    const auto bound = std::find_if(node->params.begin(), node->params.end(),
+                                    [i](const auto& b) { return b.first == static_cast<std::uint32_t>(i); });
+    const std::string param = bound == node->params.end() ? std::string() : bound->second;
     ImGui::AlignTextToFramePadding();
-    ImGui::TextDisabled("%s", range.c_str());
-    if (ImGui::IsItemHovered() && !range.empty()) ImGui::SetTooltip("%s", range.c_str());
+    if (!param.empty()) {
+      ImGui::Text("= $%s", param.c_str());
+      if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("the value of parameter '%s' (the params section); a value typed here replaces it",
+                          param.c_str());
+      }
+    } else {
+      ImGui::TextDisabled("%s", range.c_str());
+      if (ImGui::IsItemHovered() && !range.empty()) ImGui::SetTooltip("%s", range.c_str());
+    }
     ImGui::PopID();
     nlohmann::json value;
     std::visit([&](const auto& v) { value = v; }, node->value(i));
     fields.push_back({{"name", d.name}, {"unit", d.unit}, {"range", range}, {"kind", scene::fieldKindName(d.kind)},
                       {"value", value}});
+    if (!param.empty()) fields.back()["param"] = param;
   }
   ImGui::EndTable();
 }
