@@ -10,6 +10,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "gdpn/core/text.h"
 #include "gdpn/model/analysis.h"
 #include "gdpn/model/report.h"
 #include "gdpn/session/session.h"
@@ -57,11 +58,18 @@ class Model {
     path_ = *resolved;
     std::vector<model::ParamOverride> overrides;
     for (const auto& [name, value] : params) {
-      if (py::isinstance<py::bool_>(value) || !(py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value))) {
-        throw py::type_error("params: '" + py::str(name).cast<std::string>() + "' expects a number, got " +
-                             py::repr(value).cast<std::string>());
+      // an int (numpy's too) as its digits, any other real number as its shortest exact text
+      const std::string key = py::str(name).cast<std::string>();
+      std::string text;
+      if (!PyBool_Check(value.ptr()) && PyObject_HasAttrString(value.ptr(), "__index__")) {
+        text = py::str(py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr())));
+      } else if (!PyBool_Check(value.ptr()) && !PyUnicode_Check(value.ptr()) &&
+                 PyObject_HasAttrString(value.ptr(), "__float__")) {
+        text = core::formatDouble(value.cast<double>());
+      } else {
+        throw py::type_error("params: '" + key + "' expects a number, got " + py::repr(value).cast<std::string>());
       }
-      overrides.push_back({py::str(name).cast<std::string>(), py::repr(value).cast<std::string>(), "params="});
+      overrides.push_back({key, text, "params="});
     }
     auto m = model::loadModel(path_, diags, overrides);
     if (!m) raiseModelError(diags);

@@ -385,6 +385,10 @@ int analyze(const AnalyzeArgs& a) {
   std::string path = a.model;
   model::AnalysisOptions options;
   if (a.model.ends_with(".pnml")) {
+    if (!a.params.empty()) {
+      std::cerr << "error: --param sets a parameter of a model file's params section; a PNML net has none\n";
+      return 2;
+    }
     spec = gdpn::net::loadPnml(a.model, diags);
   } else if (auto resolved = model::resolveModelPath(a.model, diags)) {
     path = *resolved;
@@ -631,7 +635,8 @@ int run(const RunArgs& a) {
   auto with_trace = inputs;
   with_trace.emplace_back("the --trace file", a.trace);
   if (overwritesInput("--trace", a.trace, inputs) || overwritesInput("--report", a.report, with_trace) ||
-      overwritesInput("--signals", a.signals_out, with_trace)) {
+      overwritesInput("--signals", a.signals_out, with_trace) ||
+      overwritesInput("--signals", a.signals_out, {{"the --report file", a.report}})) {
     return 2;
   }
   std::vector<model::SignalSpec> extra;

@@ -314,7 +314,7 @@ def test_params_set_at_load_reach_fields_and_scripts(source):
     assert info.value.args[0].startswith("params=: error: no parameter 'wiat' in ")
     with pytest.raises(gdpn.ModelError) as info:
         gdpn.load(path, params={"parts": 2.5})
-    assert "parameter 'parts' is a whole number, got '2.5'" in info.value.args[0]
+    assert "parameter 'parts' is a whole number (at most 2^53), got '2.5'" in info.value.args[0]
     with pytest.raises(TypeError):
         gdpn.load(path, params={"parts": "many"})
 

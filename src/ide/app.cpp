@@ -230,6 +230,8 @@ void App::copySelection() {
     message = "select a node, a place or a transition to copy";
     return;
   }
+  // the parameters its fields name go with it, so that it reads back
+  m.params = doc_->model().params;
   copied = model::writeModel(m);
   ImGui::SetClipboardText(copied.c_str());
   message = "copied " + sel.name + " (as a model file)";
@@ -243,6 +245,8 @@ void App::paste() {
   const char* text = ImGui::GetClipboardText();
   core::Diagnostics diags;
   auto m = text != nullptr ? model::parseModel(text, "<clipboard>", diags) : std::nullopt;
+  // a field that names a parameter this model does not declare keeps its value alone
+  if (m) model::keepParamsOf(*m, doc_->model().params);
   // a model file's places and transitions go into the net view's page
   const net::PageSpec* constructs = nullptr;
   if (m) {

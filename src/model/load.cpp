@@ -13,6 +13,7 @@
 #include "gdpn/core/file.h"
 #include "gdpn/core/text.h"
 #include "gdpn/model/model.h"
+#include "gdpn/scene/actions.h"
 #include "scene_io.h"
 #include "yaml_reader.h"
 
@@ -28,6 +29,8 @@ const std::vector<std::string> kTopKeys = {"gdpn", "description", "settings", "p
                                            "page_types", "scene", "scripts"};
 const std::vector<std::string> kSignalKeys = {"place", "node", "of", "expression", "every"};
 const std::vector<std::string> kParamKeys = {"value", "unit", "description"};
+/// The largest whole parameter, 2^53: a double holds every whole number up to it.
+constexpr double kMaxWhole = 9007199254740992.0;
 const std::vector<std::string> kSettingsKeys = {"dt", "seed", "until", "angles"};
 const std::vector<std::string> kPageKeys = {"description", "places", "transitions", "arcs", "instances"};
 const std::vector<std::string> kPageTypeKeys = {"description", "references", "places", "transitions",
@@ -236,6 +239,10 @@ class ModelReader {
   bool readParamValue(const YAML::Node& v, const SourceLoc& at, Param& p) {
     long long whole = 0;
     if (v.IsScalar() && v.Tag() != "!" && YAML::convert<long long>::decode(v, whole)) {
+      if (whole > (1LL << 53) || whole < -(1LL << 53)) {
+        r_.error(v, "parameter '" + p.name + "' is a whole number beyond 2^53, which a run cannot hold exactly");
+        return false;
+      }
       p.integer = true;
       p.value = p.declared = static_cast<double>(whole);
       return true;
@@ -320,8 +327,8 @@ class ModelReader {
       const auto value = core::parseNumber(o.text);
       if (!value || !std::isfinite(*value)) {
         r_.error(where, "parameter '" + o.name + "' expects a number, got '" + o.text + "'");
-      } else if (it->integer && std::floor(*value) != *value) {
-        r_.error(where, "parameter '" + o.name + "' is a whole number, got '" + o.text + "'");
+      } else if (it->integer && (std::floor(*value) != *value || std::abs(*value) > kMaxWhole)) {
+        r_.error(where, "parameter '" + o.name + "' is a whole number (at most 2^53), got '" + o.text + "'");
       } else {
         it->value = *value;
       }
@@ -692,6 +699,37 @@ class ModelReader {
 };
 
 }  // namespace
+
+void keepParamsOf(Model& fragment, const std::vector<Param>& declared) {
+  const auto unknown = [&](const std::string& name) {
+    return !name.empty() && std::none_of(declared.begin(), declared.end(), [&](const Param& p) { return p.name == name; });
+  };
+  const auto counts = [&](std::vector<net::SlotCount>& list) {
+    for (auto& c : list) {
+      if (unknown(c.param)) c.param.clear();
+    }
+  };
+  for (auto* pages : {&fragment.net.pages, &fragment.net.page_types}) {
+    for (auto& page : *pages) {
+      for (auto& p : page.places) counts(p.tokens), counts(p.capacity);
+      for (auto& a : page.arcs) counts(a.weights);
+      for (auto& t : page.transitions) {
+        for (auto& name : t.duration.params) {
+          if (unknown(name)) name.clear();
+        }
+        if (unknown(t.priority_param)) t.priority_param.clear();
+        if (unknown(t.probability_param)) t.probability_param.clear();
+      }
+    }
+  }
+  if (!fragment.scene) return;
+  auto scene = fragment.scene->clone();
+  scene::traverse(scene->root(), [&](scene::Node& n, const scene::TraversalState&) {
+    std::erase_if(n.params, [&](const auto& b) { return unknown(b.second); });
+  });
+  fragment.scene = std::move(scene);
+  fragment.params.clear();
+}
 
 std::optional<ParamOverride> parseParamArgument(const std::string& argument) {
   const auto eq = argument.find('=');

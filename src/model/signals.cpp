@@ -3,11 +3,13 @@
 
 #include "gdpn/model/signals.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "gdpn/core/text.h"
 #include "gdpn/model/simulation.h"
+#include "gdpn/scene/actions.h"
 #include "gdpn/scene/fields.h"
 #include "signal_recorder.h"
 
@@ -70,7 +72,9 @@ std::unique_ptr<SignalRecorder> SignalRecorder::create(Simulation& sim, const st
   for (const auto& spec : specs) {
     Probe p;
     p.spec = spec;
+    // a period of less than a step samples every step
     p.period_steps = spec.every > 0 ? spec.every / sim.kernel().dt() : 0.0;
+    if (p.period_steps < 1.0) p.period_steps = 0.0;
     p.first_column = rec->table_.columns.size();
     const auto fail = [&](const std::string& why) {
       diags.error(spec.loc, "signal '" + spec.name + "': " + why);
@@ -91,6 +95,10 @@ std::unique_ptr<SignalRecorder> SignalRecorder::create(Simulation& sim, const st
         const scene::Node* node = sim.plant() ? sim.plant()->find(spec.target) : nullptr;
         if (node == nullptr) {
           fail(sim.plant() ? "no scene node '" + spec.target + "'" : "the model has no scene");
+          continue;
+        }
+        if (scene::inTemplate(*node)) {
+          fail("'" + spec.target + "' lies in a template, which is neither simulated nor sensed");
           continue;
         }
         p.node = node->handle();
@@ -141,6 +149,11 @@ std::unique_ptr<SignalRecorder> SignalRecorder::create(Simulation& sim, const st
       }
     }
     const bool vector = p.what == What::Position || p.what == What::Velocity;
+    if (std::any_of(specs.begin(), specs.begin() + (&spec - specs.data()),
+                    [&](const SignalSpec& other) { return other.name == spec.name; })) {
+      fail("another signal has this name (each names its own column)");
+      continue;
+    }
     if (vector) {
       for (const char* axis : {".x", ".y", ".z"}) rec->table_.columns.push_back(spec.name + axis);
     } else {
@@ -164,9 +177,7 @@ void SignalRecorder::sample() {
   std::vector<std::optional<double>> row(table_.columns.size());
   for (auto& p : probes_) {
     if (!p.due_now) continue;
-    if (p.period_steps > 0) {
-      while (static_cast<double>(step) + 1e-6 >= p.next * p.period_steps) ++p.next;
-    }
+    if (p.period_steps > 0) p.next = std::floor((static_cast<double>(step) + 1e-6) / p.period_steps) + 1;
     read(p, row);
     if (!error_.empty()) return;
   }

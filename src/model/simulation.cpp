@@ -370,10 +370,16 @@ void Simulation::deleteNode(scene::Node& node) {
 }
 
 std::optional<RunOutcome> Simulation::scriptHalt() const {
-  if (!engine_ || !engine_->halted()) return std::nullopt;
   RunOutcome o;
   o.steps = kernel_->steps();
   o.time = kernel_->now();
+  // a signal's expression that failed ends the run as a script's error does
+  if (signals_ && !signals_->error().empty()) {
+    o.reason = StopReason::ScriptError;
+    o.message = signals_->error();
+    return o;
+  }
+  if (!engine_ || !engine_->halted()) return std::nullopt;
   o.message = engine_->message();
   switch (engine_->halt()) {
     case script::Halt::Stop: o.reason = StopReason::Stopped; break;
@@ -598,11 +604,6 @@ RunOutcome Simulation::run(const RunLimits& limits, const ProgressFn& progress,
       break;
     }
     if (step_hook_) step_hook_();
-    if (signals_ && !signals_->error().empty()) {
-      outcome.reason = StopReason::ScriptError;
-      outcome.message = signals_->error();
-      break;
-    }
     if (stop_check_ && !scriptHalt() && stop_check_()) {
       outcome.reason = StopReason::Breakpoint;
       break;

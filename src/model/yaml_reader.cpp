@@ -197,7 +197,8 @@ std::vector<Entry> YamlReader::entries(const YAML::Node& map, const std::string&
 
 std::optional<ParamValue> YamlReader::param(const YAML::Node& node, const std::string& field, std::string* name,
                                             bool& ref) {
-  ref = node.IsScalar() && node.Scalar().size() > 1 && node.Scalar()[0] == '$';
+  // `$name` written plain: a quoted "$name" is text
+  ref = node.IsScalar() && node.Tag() != "!" && node.Scalar().size() > 1 && node.Scalar()[0] == '$';
   if (name) name->clear();
   if (!ref) return std::nullopt;
   const std::string wanted = node.Scalar().substr(1);

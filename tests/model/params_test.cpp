@@ -125,7 +125,7 @@ TEST(Params, MistakesInOverridesNameTheArgument) {
             std::string::npos);
   EXPECT_NE(error({{"wait", "inf"}}).find("expects a number, got 'inf'"), std::string::npos);
   EXPECT_NE(error({{"wait", ""}}).find("expects a number, got ''"), std::string::npos);
-  EXPECT_NE(error({{"parts", "2.5"}}).find("parameter 'parts' is a whole number, got '2.5'"), std::string::npos);
+  EXPECT_NE(error({{"parts", "2.5"}}).find("parameter 'parts' is a whole number (at most 2^53), got '2.5'"), std::string::npos);
   EXPECT_NE(error({{"parts", "2", "params="}, {"x", "1", "params="}}).find("params=: error: no parameter 'x'"),
             std::string::npos);
   // a value the field refuses is reported where the field names the parameter: the loader
@@ -191,6 +191,35 @@ TEST(Params, ScriptsReadThemAndCannotSetThem) {
   EXPECT_EQ(lines[0], "3 0.75 int True 2 ['parts', 'wait']");
   EXPECT_EQ(lines[1], "read-only");
   EXPECT_EQ(lines[2], "no parameter 'speed' (the model declares parts, wait)");
+}
+
+TEST(Params, AQuotedDollarIsTextAndAHugeWholeNumberIsRefused) {
+  core::Diagnostics diags;
+  EXPECT_FALSE(parseModel("gdpn: 1\nparams: {n: 2}\npages: {main: {places: {p: {tokens: \"$n\"}}}}\n", "q.gdpn.yaml", diags));
+  EXPECT_NE(diags.str().find("q.gdpn.yaml:3:37: error: 'tokens' expects a whole number, got \"$n\""), std::string::npos)
+      << diags.str();
+  core::Diagnostics big;
+  EXPECT_FALSE(parseModel("gdpn: 1\nparams: {n: 9007199254740993}\n", "b.gdpn.yaml", big));
+  EXPECT_NE(big.str().find("b.gdpn.yaml:2:13: error: parameter 'n' is a whole number beyond 2^53"), std::string::npos)
+      << big.str();
+  core::Diagnostics over;
+  EXPECT_FALSE(loadModel(kFile, over, {{"parts", "1e30"}}));
+  EXPECT_NE(over.str().find("parameter 'parts' is a whole number (at most 2^53), got '1e30'"), std::string::npos)
+      << over.str();
+}
+
+TEST(Params, APastedFragmentKeepsOnlyTheParametersItsNewModelDeclares) {
+  core::Diagnostics diags;
+  auto m = loadModel(kFile, diags);
+  ASSERT_TRUE(m) << diags.str();
+  keepParamsOf(*m, {Param{"wait", 1.0, 1.0, false, "", "", {}}});
+  EXPECT_TRUE(m->params.empty());
+  EXPECT_EQ(transition(*m, "work").duration.params[0], "wait");  // declared there: kept
+  EXPECT_EQ(transition(*m, "work").priority_param, "");
+  EXPECT_EQ(transition(*m, "work").priority, 2);                  // the value stays
+  EXPECT_EQ(place(*m, "ready").tokens.at(0).param, "");
+  EXPECT_TRUE(m->scene->find("belt")->params.empty());
+  EXPECT_EQ(m->scene->find("belt")->number(scene::field::Conveyor::Speed), 0.4);
 }
 
 }  // namespace

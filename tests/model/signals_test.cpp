@@ -115,5 +115,25 @@ pages:
   EXPECT_EQ(sim->signals()->time, (std::vector<double>{0.0, 0.5}));
 }
 
+TEST(Signals, APeriodShorterThanAStepSamplesEveryStepAndNamesAreOneColumnEach) {
+  auto sim = testing::openModelFile("tests/data/good/falling_ball.gdpn.yaml");
+  ASSERT_TRUE(sim);
+  core::Diagnostics diags;
+  std::string why;
+  auto tiny = parseSignalArgument("place:main/ticks", why);
+  ASSERT_TRUE(tiny);
+  tiny->name = "often";
+  tiny->every = 1e-300;
+  ASSERT_TRUE(sim->recordSignals({*tiny}, diags)) << diags.str();
+  sim->run({0.05, {}});
+  EXPECT_EQ(sim->signals()->rows.size(), 6u);
+  // a name twice is refused
+  auto again = testing::openModelFile("tests/data/good/falling_ball.gdpn.yaml");
+  auto twice = *parseSignalArgument("python:1", why);
+  twice.name = "ticks";
+  EXPECT_FALSE(again->recordSignals({twice}, diags));
+  EXPECT_NE(diags.str().find("signal 'ticks': another signal has this name"), std::string::npos) << diags.str();
+}
+
 }  // namespace
 }  // namespace gdpn::model

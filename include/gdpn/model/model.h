@@ -85,6 +85,10 @@ struct Model {
   }
 };
 
+/// Drops from `fragment`'s fields the references to parameters that `declared` does not hold
+/// (their values stay): what is pasted into another model names only that model's parameters.
+void keepParamsOf(Model& fragment, const std::vector<Param>& declared);
+
 /// The suffix of model files.
 inline constexpr const char* kModelSuffix = ".gdpn.yaml";
 

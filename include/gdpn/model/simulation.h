@@ -173,7 +173,7 @@ class Simulation {
   /// Calls `hook` after every step that run() takes (a recorder takes its frames there).
   void setStepHook(std::function<void()> hook) { step_hook_ = std::move(hook); }
   /// Why the run must end now, if a script says so (an error, a timeout, an interrupt or
-  /// sim.stop); nullopt while scripts are content.
+  /// sim.stop) or a signal's expression failed; nullopt while scripts are content.
   [[nodiscard]] std::optional<RunOutcome> scriptHalt() const;
   /// Why the run must end now because the physics failed (StopReason::PhysicsError, its
   /// message naming the body and the model time, s); nullopt while the physics is sound.

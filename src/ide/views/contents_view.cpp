@@ -488,6 +488,7 @@ void editTransition(App& app, const ConstructAt& at, const net::TransitionSpec& 
   ImGui::SetNextItemWidth(130);
   if (ImGui::Combo("##law", &law, "fixed\0uniform\0normal\0exponential\0")) {
     d.law = static_cast<net::Duration::Law>(law);
+    d.params = {};  // another law's numbers mean other things: they no longer name parameters
     if (d.law == net::Duration::Law::Uniform && d.b < d.a) d.b = d.a;
     changed = true;
   }
