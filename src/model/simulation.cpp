@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <set>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -133,8 +134,19 @@ class InstancePlacer {
 std::shared_ptr<const net::Net> checkModel(const Model& model, core::Diagnostics& diags, double script_timeout_s) {
   auto net = net::compile(model.net, diags);
   if (!net || !(net->scripted() || model.scene || !model.signals.empty())) return net;
-  auto sim = Simulation::create(model, diags, std::nullopt, script_timeout_s);
-  if (sim && !model.signals.empty()) sim->recordSignals({}, diags);
+  // the simulation compiles the net again: what that says twice is said once
+  core::Diagnostics more;
+  auto sim = Simulation::create(model, more, std::nullopt, script_timeout_s);
+  if (sim && !model.signals.empty()) sim->recordSignals({}, more);
+  std::set<std::string> said;
+  for (const auto& d : diags.all()) said.insert(d.str());
+  for (const auto& d : more.all()) {
+    if (said.insert(d.str()).second) {
+      if (d.severity == core::Severity::Error) diags.error(d.loc, d.message);
+      else if (d.severity == core::Severity::Warning) diags.warning(d.loc, d.message);
+      else diags.note(d.loc, d.message);
+    }
+  }
   return net;
 }
 

@@ -961,4 +961,15 @@ TEST(CliRun, SignalsAreWrittenAsCsvAndMistakesNameTheArgument) {
   EXPECT_FALSE(fs::exists(dir.file("t.csv")));
 }
 
+TEST(Cli, CheckSaysEachWarningOnceWhenItAlsoBuildsThePlant) {
+  const gdpn::testing::ScratchFolder dir("gdpn_check_once");
+  std::ofstream(dir.file("w.gdpn.yaml")) << "gdpn: 1\nscene:\n  - World: {}\npages:\n  main:\n"
+                                            "    places: {p: {}}\n    transitions: {t: {}}\n    arcs: [t -> p]\n";
+  const auto r = gdpn("check " + dir.file("w.gdpn.yaml") + " 2>&1 >/dev/null");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_EQ(r.out, dir.file("w.gdpn.yaml") +
+                       ":7:19: warning: transition 't' has no input arcs: it starts again in every step it is not "
+                       "occurring\n");
+}
+
 }  // namespace
