@@ -65,6 +65,7 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
   Report r;
   r.model = sim.model().path;
   r.seed = sim.seed();
+  r.params = sim.model().params;
   r.dt = sim.kernel().dt();
   r.outcome = outcome;
   const auto& net = sim.net();
@@ -195,12 +196,28 @@ class JsonText {
 
 }  // namespace
 
+namespace {
+
+/// The parameters as the run had them: {name: value}, a whole one as a whole number.
+nlohmann::ordered_json paramsJson(const std::vector<Param>& params) {
+  // what the run had: a run is made again from its report with these as --param
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (const auto& p : params) {
+    if (p.integer) out[p.name] = static_cast<std::int64_t>(p.value);
+    else out[p.name] = p.value;
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string reportJson(const Report& report) {
   using nlohmann::ordered_json;
   std::string out;
   JsonText j(out);
   j.member("model", report.model);
   j.member("seed", report.seed);
+  if (!report.params.empty()) j.member("params", paramsJson(report.params));
   j.member("dt", report.dt);
   j.member("steps", report.outcome.steps);
   j.member("time", report.outcome.time);
@@ -282,7 +299,24 @@ void printSummary(std::ostream& out, const Report& report) {
   if (report.outcome.reason == StopReason::Interrupted) out << ", stopped: interrupted";
   if (report.outcome.reason == StopReason::Stopped) out << ", stopped by a script: " << report.outcome.message;
   if (report.outcome.reason == StopReason::ScriptError) out << ", stopped: a script failed";
-  out << "\n\n";
+  out << "\n";
+  if (!report.params.empty()) {
+    // the parameters as the run had them, wrapped at 100 columns
+    std::vector<std::string> items;
+    for (std::size_t i = 0; i < report.params.size(); ++i) {
+      const auto& p = report.params[i];
+      items.push_back(p.name + " = " + core::formatDouble(p.value) + (p.unit.empty() ? "" : " " + p.unit) +
+                      (i + 1 < report.params.size() ? "," : ""));
+    }
+    std::vector<std::string_view> words;
+    for (const auto& item : items) {
+      for (auto w : core::words(item)) words.push_back(w);
+    }
+    out << "parameters:";
+    core::writeWrapped(out, 11, words, 2);
+    out << "\n";
+  }
+  out << "\n";
 
   // places that only read sensors and never held a token say nothing here (--report has them)
   auto listed = [](const PlaceFigures& p) { return !p.sensors_only || p.max_tokens > 0; };

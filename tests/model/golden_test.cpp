@@ -928,6 +928,13 @@ TEST(CliRun, ParamSetsAParameterForTheRunAndMistakesNameTheArgument) {
   r = gdpn("run tests/data/good/params.gdpn.yaml --until 10 --quiet --param parts=2 --param wait=0.25 --report /dev/stdout");
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("\"name\": \"main/work\",\n      \"occurrences\": 2"), std::string::npos) << r.out;
+  // the report says what the run had, so that it can be made again
+  EXPECT_NE(r.out.find("\"params\": {\n    \"wait\": 0.25,\n    \"parts\": 2,\n"), std::string::npos) << r.out;
+  r = gdpn("run tests/data/good/params.gdpn.yaml --until 1 --param parts=2 2>/dev/null");
+  EXPECT_NE(r.out.find("\nparameters: wait = 0.5 s, parts = 2, spread = 0.25, belt_speed = 0.4 m/s, lane = 2, chance = "
+                       "0.5\n\n"),
+            std::string::npos)
+      << r.out;
   r = gdpn("check tests/data/good/params.gdpn.yaml --param wiat=1");
   EXPECT_EQ(r.code, 1);
   EXPECT_EQ(r.out, "--param: error: no parameter 'wiat' in tests/data/good/params.gdpn.yaml (did you mean 'wait'?)\n1 error\n");

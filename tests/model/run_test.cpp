@@ -119,6 +119,10 @@ std::string reportAsTree(const Report& report) {
   ordered_json j;
   j["model"] = report.model;
   j["seed"] = report.seed;
+  for (const auto& p : report.params) {
+    if (p.integer) j["params"][p.name] = static_cast<std::int64_t>(p.value);
+    else j["params"][p.name] = p.value;
+  }
   j["dt"] = report.dt;
   j["steps"] = report.outcome.steps;
   j["time"] = report.outcome.time;
@@ -166,7 +170,7 @@ std::string reportAsTree(const Report& report) {
 
 TEST(Report, TheJsonWrittenPieceByPieceIsTheWholeTreesText) {
   for (const char* model : {"examples/basics/two_cells", "tests/data/good/cycles.gdpn.yaml", "examples/basics/figure31",
-                            "tests/data/good/alternatives.gdpn.yaml"}) {
+                            "tests/data/good/alternatives.gdpn.yaml", "tests/data/good/params.gdpn.yaml"}) {
     SCOPED_TRACE(model);
     core::Diagnostics diags;
     const auto path = resolveModelPath(std::string(GDPN_SOURCE_DIR) + "/" + model, diags);

@@ -60,6 +60,7 @@ struct CycleFigures {
 struct Report {
   std::string model;              ///< model file
   std::uint64_t seed = 1;
+  std::vector<Param> params;      ///< the model's parameters, with the values the run had
   double dt = 0.0;                ///< seconds
   RunOutcome outcome;
   std::vector<TransitionFigures> transitions;
