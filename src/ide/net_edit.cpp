@@ -344,11 +344,16 @@ void setSlotCount(std::vector<net::SlotCount>& counts, net::SlotId slot, std::op
   }
 }
 
-std::optional<std::int64_t> slotCount(const std::vector<net::SlotCount>& counts, net::SlotId slot) {
+const net::SlotCount* slotEntry(const std::vector<net::SlotCount>& counts, net::SlotId slot) {
   for (const auto& c : counts) {
-    if (c.slot == slot) return c.value;
+    if (c.slot == slot) return &c;
   }
-  return std::nullopt;
+  return nullptr;
+}
+
+std::optional<std::int64_t> slotCount(const std::vector<net::SlotCount>& counts, net::SlotId slot) {
+  const auto* c = slotEntry(counts, slot);
+  return c ? std::optional<std::int64_t>(c->value) : std::nullopt;
 }
 
 void setInlineCode(net::ScriptSpec& script, const std::string& code, const core::SourceLoc& owner) {

@@ -210,12 +210,16 @@ void SignalRecorder::read(const Probe& p, std::vector<std::optional<double>>& ro
   switch (p.what) {
     case What::Position: {
       const core::Vec3 v = node->framePose().position;
-      at[0] = v.x, at[1] = v.y, at[2] = v.z;
+      at[0] = v.x;
+      at[1] = v.y;
+      at[2] = v.z;
       break;
     }
     case What::Velocity: {
       const core::Vec3 v = sim_.physics()->velocity(*node);
-      at[0] = v.x, at[1] = v.y, at[2] = v.z;
+      at[0] = v.x;
+      at[1] = v.y;
+      at[2] = v.z;
       break;
     }
     case What::JointAngle:

@@ -382,16 +382,17 @@ void Simulation::deleteNode(scene::Node& node) {
 }
 
 std::optional<RunOutcome> Simulation::scriptHalt() const {
+  // a signal's expression that failed ends the run as a script's error does
+  const bool signal_failed = signals_ && !signals_->error().empty();
+  if (!signal_failed && (!engine_ || !engine_->halted())) return std::nullopt;
   RunOutcome o;
   o.steps = kernel_->steps();
   o.time = kernel_->now();
-  // a signal's expression that failed ends the run as a script's error does
-  if (signals_ && !signals_->error().empty()) {
+  if (signal_failed) {
     o.reason = StopReason::ScriptError;
     o.message = signals_->error();
     return o;
   }
-  if (!engine_ || !engine_->halted()) return std::nullopt;
   o.message = engine_->message();
   switch (engine_->halt()) {
     case script::Halt::Stop: o.reason = StopReason::Stopped; break;

@@ -109,6 +109,8 @@ net::SlotKind slotKindOf(const net::PlaceSpec& p, net::SlotId slot);
 void setSlotKind(net::PlaceSpec& p, net::SlotId slot, net::SlotKind kind, const std::string& sensor = {});
 /// Sets the count of `slot` in `counts` (a place's tokens or capacities); nullopt removes it.
 void setSlotCount(std::vector<net::SlotCount>& counts, net::SlotId slot, std::optional<std::int64_t> value);
+/// The entry of `slot` in `counts`; null when it has none.
+const net::SlotCount* slotEntry(const std::vector<net::SlotCount>& counts, net::SlotId slot);
 /// The count of `slot` in `counts`; nullopt when it has none.
 std::optional<std::int64_t> slotCount(const std::vector<net::SlotCount>& counts, net::SlotId slot);
 /// Puts the node at `path` last into node slot `slot` of `p` (the slot becomes a node slot).

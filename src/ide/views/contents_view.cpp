@@ -51,6 +51,22 @@ std::string durationText(const net::Duration& d) {
   return "?";
 }
 
+/// After a field that comes from a model parameter: "= $name" (nothing for a number typed in).
+void paramNote(const std::string& param) {
+  if (param.empty()) return;
+  ImGui::SameLine();
+  ImGui::TextDisabled("= $%s", param.c_str());
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("the value of parameter '%s' (the params section); a value typed here replaces it", param.c_str());
+  }
+}
+
+/// The parameter the count of `slot` in `counts` comes from ("" for none).
+std::string slotParam(const std::vector<net::SlotCount>& counts, net::SlotId slot) {
+  const auto* c = slotEntry(counts, slot);
+  return c ? c->param : std::string();
+}
+
 /// One script, headed by its kind (and slot), its lines numbered and highlighted.
 void scriptBlock(const net::ScriptSpec& script, std::string_view heading, nlohmann::json& report) {
   ImGui::Separator();
@@ -283,24 +299,29 @@ void slotFields(App& app, const ConstructAt& at, const net::PlaceSpec& place, ne
     if (kind == net::SlotKind::Control) {
       int tokens = static_cast<int>(slotCount(place.tokens, slot).value_or(0));
       ImGui::SetNextItemWidth(110);
+      const int tokens_before = tokens;
       ImGui::InputInt("tokens", &tokens, 0, 0);
       noteItem("tokens", fields);
-      if (ImGui::IsItemDeactivatedAfterEdit() && tokens >= 0) {
+      // a value left as it was keeps the parameter it came from
+      if (ImGui::IsItemDeactivatedAfterEdit() && tokens >= 0 && tokens != tokens_before) {
         auto p = place;
         setSlotCount(p.tokens, slot, tokens > 0 ? std::optional<std::int64_t>(tokens) : std::nullopt);
         commitPlace(app, at, std::move(p));
       }
+      paramNote(slotParam(place.tokens, slot));
       ImGui::SameLine();
     }
     int capacity = static_cast<int>(slotCount(place.capacity, slot).value_or(-1));
     ImGui::SetNextItemWidth(110);
+    const int capacity_before = capacity;
     ImGui::InputInt("capacity (-1: none)", &capacity, 0, 0);
     noteItem("capacity", fields);
-    if (ImGui::IsItemDeactivatedAfterEdit() && capacity >= -1) {
+    if (ImGui::IsItemDeactivatedAfterEdit() && capacity >= -1 && capacity != capacity_before) {
       auto p = place;
       setSlotCount(p.capacity, slot, capacity >= 0 ? std::optional<std::int64_t>(capacity) : std::nullopt);
       commitPlace(app, at, std::move(p));
     }
+    paramNote(slotParam(place.capacity, slot));
     if (kind == net::SlotKind::Node) {
       for (const auto& n : place.nodes) {
         if (n.slot != slot) continue;
@@ -500,24 +521,28 @@ void editTransition(App& app, const ConstructAt& at, const net::TransitionSpec& 
   ImGui::InputDouble(first, &d.a, 0, 0, "%g");
   noteItem("duration", fields);
   changed = changed || ImGui::IsItemDeactivatedAfterEdit();
+  paramNote(t.duration.params[0]);
   if (two) {
     ImGui::SameLine();
     ImGui::SetNextItemWidth(90);
     ImGui::InputDouble(d.law == net::Duration::Law::Uniform ? "high, s" : "sd, s", &d.b, 0, 0, "%g");
     noteItem("duration2", fields);
     changed = changed || ImGui::IsItemDeactivatedAfterEdit();
+    paramNote(t.duration.params[1]);
   }
   int priority = static_cast<int>(t.priority);
   ImGui::SetNextItemWidth(90);
   ImGui::InputInt("priority", &priority, 0, 0);
   noteItem("priority", fields);
   const bool priority_changed = ImGui::IsItemDeactivatedAfterEdit();
+  paramNote(t.priority_param);
   ImGui::SameLine();
   double probability = t.probability;
   ImGui::SetNextItemWidth(90);
   ImGui::InputDouble("probability", &probability, 0, 0, "%g");
   noteItem("probability", fields);
   const bool probability_changed = ImGui::IsItemDeactivatedAfterEdit();
+  paramNote(t.probability_param);
   if (changed || priority_changed || probability_changed) {
     auto next = t;
     // a value typed in no longer comes from the parameter it named
