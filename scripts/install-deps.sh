@@ -9,8 +9,9 @@ packages=(
   build-essential cmake ninja-build pkg-config clang libclang-rt-14-dev git
   # physics and scripting
   libode-dev pybind11-dev python3-dev python3-pytest python3-numpy
-  # experiments: signals as DataFrames (pandas)
-  python3-pandas
+  # experiments: signals as DataFrames (pandas), the HTML report's plots (matplotlib) and its
+  # check in a real browser (chromium), sweeps on a Dask cluster (distributed)
+  python3-pandas python3-matplotlib chromium python3-distributed
   # graphics and GUI
   libglfw3-dev libimgui-dev libepoxy-dev libegl-dev libgl-dev libgl1-mesa-dri xvfb xauth fonts-dejavu-core
   # file formats

@@ -22,6 +22,8 @@
 #include "gdpn/model/analysis.h"
 #include "gdpn/model/model.h"
 #include "gdpn/model/report.h"
+#include "gdpn/experiments/html_report.h"
+#include "gdpn/net/timeline.h"
 #include "gdpn/model/simulation.h"
 #include "gdpn/model/witness.h"
 #include <nlohmann/json.hpp>
@@ -578,6 +580,7 @@ struct RunArgs {
   std::vector<std::string> signals;  // --signal place:P | node:PATH.Q | python:EXPR
   double signal_every = 0.0;         // their period, seconds (0: every step)
   std::string signals_out;           // --signals FILE.csv
+  std::string html;                  // --html FILE.html
 };
 
 /// A breakpoint written on the command line: "start:T", "complete:T", "PLACE OP N" (OP one
@@ -636,7 +639,9 @@ int run(const RunArgs& a) {
   with_trace.emplace_back("the --trace file", a.trace);
   if (overwritesInput("--trace", a.trace, inputs) || overwritesInput("--report", a.report, with_trace) ||
       overwritesInput("--signals", a.signals_out, with_trace) ||
-      overwritesInput("--signals", a.signals_out, {{"the --report file", a.report}})) {
+      overwritesInput("--signals", a.signals_out, {{"the --report file", a.report}}) ||
+      overwritesInput("--html", a.html, with_trace) ||
+      overwritesInput("--html", a.html, {{"the --report file", a.report}, {"the --signals file", a.signals_out}})) {
     return 2;
   }
   std::vector<model::SignalSpec> extra;
@@ -650,13 +655,13 @@ int run(const RunArgs& a) {
     spec->every = a.signal_every;
     extra.push_back(std::move(*spec));
   }
-  if (!extra.empty() && a.signals_out.empty()) {
-    std::cerr << "error: --signal records into a table: add --signals FILE.csv\n";
+  if (!extra.empty() && a.signals_out.empty() && a.html.empty()) {
+    std::cerr << "error: --signal records into a table or a page: add --signals FILE.csv or --html FILE.html\n";
     return 2;
   }
   auto sim = open(a.model, a.seed, a.script_timeout, a.params);
   if (!sim) return 1;
-  if (!a.signals_out.empty()) {
+  if (!a.signals_out.empty() || !a.html.empty()) {
     Diagnostics diags;
     const bool ok = sim->simulation().recordSignals(extra, diags);
     diags.print(std::cerr);
@@ -701,7 +706,14 @@ int run(const RunArgs& a) {
   }
   // with a report to show or write, its cycles are worked out first and each token with
   // alternative circuits watched, so that each circuit's cycle is measured
-  if (!a.quiet || !a.report.empty()) model::watchRoundTrips(sim->simulation());
+  const bool reporting = !a.quiet || !a.report.empty() || !a.html.empty();
+  if (reporting) model::watchRoundTrips(sim->simulation());
+  // the page's plots need every occurrence and every change of tokens (up to a budget)
+  std::unique_ptr<gdpn::net::Timeline> timeline;
+  if (!a.html.empty()) {
+    timeline = std::make_unique<gdpn::net::Timeline>(sim->simulation().net());
+    sim->simulation().kernel().addObserver(timeline.get());
+  }
   std::signal(SIGINT, onSigint);
   model::RunOutcome outcome;
   {
@@ -717,13 +729,22 @@ int run(const RunArgs& a) {
   int replay_failed = 0;
   if (witness) replay_failed = reportReplay(*witness, sim->simulation(), a.replay);
   // the report only when it is shown or written (it works out the cycle bounds)
-  if (!a.quiet || !a.report.empty()) {
+  if (reporting) {
     const auto report = model::makeReport(sim->simulation(), outcome);
     if (!a.report.empty() && !gdpn::core::writeOutput(a.report, model::reportJson(report), why)) {
       std::cerr << a.report << ": error: " << why << "\n";
       return 1;
     }
     if (!a.quiet) model::printSummary(std::cout, report);
+    if (!a.html.empty()) {
+      const auto page = gdpn::experiments::htmlReport(report, sim->simulation().net(), *timeline,
+                                                      sim->simulation().signals(), why);
+      if (!page || !gdpn::core::writeOutput(a.html, *page, why)) {
+        std::cerr << a.html << ": error: " << (page ? "" : "the page could not be drawn: ") << why
+                  << (why.ends_with('\n') ? "" : "\n");
+        return 1;
+      }
+    }
   }
   if (!a.signals_out.empty()) {
     std::ostringstream csv;
@@ -828,6 +849,9 @@ int main(int argc, char** argv) {
                       "play the firing sequence of a witness (gdpn analyze --witness): only its transitions "
                       "start, in its order, each as soon as it can");
   addParamOption(run_cmd, run_args.params);
+  run_cmd->add_option("--html", run_args.html,
+                      "write a self-contained HTML page of the run to FILE.html: the summary tables and plots "
+                      "(tokens over time, occurrences, throughput, cycles beside their bounds, signals)");
   run_cmd->add_option("--signals", run_args.signals_out,
                       "write the model's signals (its signals section and each --signal) over time to FILE.csv");
   run_cmd->add_option("--signal", run_args.signals,

@@ -956,7 +956,7 @@ TEST(CliRun, SignalsAreWrittenAsCsvAndMistakesNameTheArgument) {
   EXPECT_NE(csv.find("\n0.51,0,0,18.699194,,,,,,,\n"), std::string::npos) << csv;
   r = gdpn("run tests/data/good/falling_ball.gdpn.yaml --signal place:main/clock");
   EXPECT_EQ(r.code, 2);
-  EXPECT_EQ(r.out, "error: --signal records into a table: add --signals FILE.csv\n");
+  EXPECT_EQ(r.out, "error: --signal records into a table or a page: add --signals FILE.csv or --html FILE.html\n");
   r = gdpn("run tests/data/good/falling_ball.gdpn.yaml --signals " + dir.file("t.csv") + " --signal clock");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.out.find("--signal: expects place:NAME, node:PATH.QUANTITY or python:EXPRESSION, got 'clock'"),
@@ -966,6 +966,35 @@ TEST(CliRun, SignalsAreWrittenAsCsvAndMistakesNameTheArgument) {
   EXPECT_EQ(r.out, "--signal node:drop/ball.mas: error: signal 'drop/ball.mas': a Body has no number 'mas' (did you mean "
                    "'mass'?) (it has: position, velocity, mass, density, linear_damping, angular_damping)\n");
   EXPECT_FALSE(fs::exists(dir.file("t.csv")));
+}
+
+TEST(CliRun, HtmlWritesOnePageWithThePlotsAndTheSignalsAndRefusesToOverwriteInputs) {
+  const gdpn::testing::ScratchFolder dir("gdpn_html");
+  auto r = gdpn("run tests/data/good/falling_ball.gdpn.yaml --quiet --until 1 --html " + dir.file("r.html") +
+                " --signal 'python:sim.step'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const std::string page = gdpn::testing::fileBytes(dir.file("r.html"));
+  EXPECT_TRUE(page.starts_with("<!DOCTYPE html>")) << page.substr(0, 200);
+  EXPECT_TRUE(page.ends_with("</html>\n"));
+  // the section's signals and the --signal one, each in the signals plot's list
+  EXPECT_NE(page.find("<h2>Signals</h2>"), std::string::npos);
+  EXPECT_NE(page.find("<h2>Tokens over time</h2>"), std::string::npos);
+  EXPECT_NE(page.find("<svg"), std::string::npos);
+  EXPECT_EQ(page.find("<script"), std::string::npos);  // nothing runs, nothing is fetched
+  // the same run gives the same page
+  r = gdpn("run tests/data/good/falling_ball.gdpn.yaml --quiet --until 1 --html " + dir.file("s.html") +
+           " --signal 'python:sim.step'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(gdpn::testing::fileBytes(dir.file("s.html")), page);
+  // a folder that is not there: an error naming the file, and nothing written
+  r = gdpn("run tests/data/good/falling_ball.gdpn.yaml --quiet --until 0.1 --html " + dir.file("no/r.html"));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(r.out.starts_with(dir.file("no/r.html") + ": error: ")) << r.out;
+  EXPECT_FALSE(fs::exists(dir.file("no")));
+  r = gdpn("run tests/data/good/falling_ball.gdpn.yaml --quiet --report " + dir.file("r.json") + " --html " +
+           dir.file("r.json"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("--html"), std::string::npos) << r.out;
 }
 
 TEST(Cli, CheckSaysEachWarningOnceWhenItAlsoBuildsThePlant) {

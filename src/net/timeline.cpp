@@ -1,0 +1,58 @@
+#include "gdpn/net/timeline.h"
+
+namespace gdpn::net {
+
+Timeline::Timeline(const Net& net, std::size_t budget)
+    : net_(net), budget_(budget), open_(net.transitions().size()), tokens_(net.places().size()),
+      places_(net.places().size()) {
+  for (PlaceId p = 0; p < net.places().size(); ++p) {
+    const auto& place = net.places()[p];
+    for (auto ps = place.slots_begin; ps < place.slots_end; ++ps) tokens_[p] += net.placeSlots()[ps].initial;
+    places_[p].push_back({0, tokens_[p]});
+  }
+}
+
+bool Timeline::keep(std::int64_t step) {
+  if (kept_ < budget_) {
+    ++kept_;
+    return true;
+  }
+  if (cut_at_ < 0) cut_at_ = step;
+  ++dropped_;
+  return false;
+}
+
+void Timeline::onStart(TransitionId t, std::int64_t step) {
+  if (!keep(step)) return;
+  open_[t].push_back(occurrences_.size());
+  occurrences_.push_back({t, step, -1});
+}
+
+void Timeline::onComplete(TransitionId t, std::int64_t step) {
+  // occurrences of one transition complete in the order they started (equal durations)
+  if (open_[t].empty()) return;  // its start was not kept
+  occurrences_[open_[t].front()].end = step;
+  open_[t].pop_front();
+}
+
+void Timeline::change(PlaceSlotId ps, std::int64_t delta, std::int64_t step) {
+  const PlaceId p = net_.placeSlots()[ps].place;
+  tokens_[p] += delta;
+  auto& changes = places_[p];
+  if (changes.back().step == step) {  // merged into this step's record
+    changes.back().tokens = tokens_[p];
+    return;
+  }
+  if (!keep(step)) return;
+  changes.push_back({step, tokens_[p]});
+}
+
+void Timeline::onRemove(PlaceSlotId ps, std::int64_t count, std::span<const NodeRef>, std::int64_t step) {
+  change(ps, -count, step);
+}
+
+void Timeline::onDeposit(PlaceSlotId ps, std::int64_t count, std::span<const NodeRef>, std::int64_t step) {
+  change(ps, count, step);
+}
+
+}  // namespace gdpn::net
