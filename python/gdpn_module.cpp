@@ -1,5 +1,6 @@
 // The gdpn Python module: load a model, run it, read markings, the trace and the report.
 
+#include "gdpn/experiments/python_sources.h"
 #include <pybind11/pybind11.h>
 #include <pybind11/eval.h>
 #include <pybind11/stl.h>
@@ -455,4 +456,15 @@ class FireError(ValueError):
       "Loads a model file (or a folder holding one), its parameters set from `params` ({name: number}) where "
       "given; `signals` adds signals to record (\"place:NAME\", \"node:PATH.QUANTITY\", \"python:EXPR\", sampled "
       "every step) to the model's own; raises gdpn.ModelError on mistakes");
+
+  // sweeps: the same code as `gdpn sweep`, in a namespace of its own that no worker needs to
+  // import (Dask sends its functions by value)
+  py::dict sweeps;
+  sweeps["__builtins__"] = py::module_::import("builtins");
+  sweeps["__name__"] = "gdpn_sweep";
+  py::module_::import("builtins").attr("exec")(
+      py::module_::import("builtins").attr("compile")(gdpn::experiments::kSweepPy, "sweep.py", "exec"), sweeps);
+  m.attr("sweep") = sweeps["sweep"];
+  m.attr("Sweep") = sweeps["Sweep"];
+  m.attr("SweepError") = sweeps["SweepError"];
 }

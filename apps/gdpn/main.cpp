@@ -24,6 +24,7 @@
 #include "gdpn/model/report.h"
 #include "gdpn/experiments/html_report.h"
 #include "gdpn/net/timeline.h"
+#include "sweep_command.h"
 #include "gdpn/model/simulation.h"
 #include "gdpn/model/witness.h"
 #include <nlohmann/json.hpp>
@@ -864,6 +865,9 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--quiet,-q", run_args.quiet,
                     "print no summary, no progress and no sim.log lines (they still go to the --trace)");
 
+  gdpn::app::SweepArgs sweep_args;
+  auto* sweep_cmd = gdpn::app::addSweepCommand(app, sweep_args);
+
   AnalyzeArgs analyze_args;
   auto* analyze_cmd = app.add_subcommand(
       "analyze", "State space (deadlocks, bounds, liveness), invariants and cycle-time bounds of the untimed net");
@@ -985,6 +989,7 @@ int main(int argc, char** argv) {
   if (record_cmd->parsed()) return capture(record_args, true);
   if (check_cmd->parsed()) return check(check_model, check_timeout, check_params);
   if (run_cmd->parsed()) return run(run_args);
+  if (sweep_cmd->parsed()) return gdpn::app::sweep(sweep_args);
   if (ide_cmd->parsed()) return ide(ide_args);
   return 2;
 }
