@@ -31,7 +31,7 @@ const std::vector<std::string> kSignalKeys = {"place", "node", "of", "expression
 const std::vector<std::string> kParamKeys = {"value", "unit", "description"};
 /// The largest whole parameter, 2^53: a double holds every whole number up to it.
 constexpr double kMaxWhole = 9007199254740992.0;
-const std::vector<std::string> kSettingsKeys = {"dt", "seed", "until", "angles"};
+const std::vector<std::string> kSettingsKeys = {"dt", "seed", "until", "angles", "ties"};
 const std::vector<std::string> kPageKeys = {"description", "places", "transitions", "arcs", "instances"};
 const std::vector<std::string> kPageTypeKeys = {"description", "references", "places", "transitions",
                                                 "arcs", "instances", "scene"};
@@ -361,6 +361,14 @@ class ModelReader {
             s.angles = *v == "radians" ? scene::AngleUnit::Radians : scene::AngleUnit::Degrees;
           } else {
             r_.error(e.value, "angles are 'radians' or 'degrees', got '" + *v + "'");
+          }
+        }
+      } else if (e.key == "ties") {
+        if (auto v = r_.string(e.value, "ties")) {
+          if (*v == "random" || *v == "order") {
+            s.random_ties = *v == "random";
+          } else {
+            r_.error(e.value, "ties are 'order' (declaration order) or 'random' (drawn from the seed), got '" + *v + "'");
           }
         }
       }

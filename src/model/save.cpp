@@ -233,12 +233,13 @@ std::string writeModel(const Model& model) {
   description(out, model.description);
   const auto& s = model.settings;
   const bool radians = s.angles == scene::AngleUnit::Radians;
-  if (s.dt_given || s.seed_given || s.until || radians) {
+  if (s.dt_given || s.seed_given || s.until || radians || s.random_ties) {
     out << YAML::Key << "settings" << YAML::Value << YAML::BeginMap;
     if (s.dt_given) out << YAML::Key << "dt" << YAML::Value << formatDouble(s.dt);
     if (s.seed_given) out << YAML::Key << "seed" << YAML::Value << s.seed;
     if (s.until) out << YAML::Key << "until" << YAML::Value << formatDouble(*s.until);
     if (radians) out << YAML::Key << "angles" << YAML::Value << "radians";
+    if (s.random_ties) out << YAML::Key << "ties" << YAML::Value << "random";
     out << YAML::EndMap;
   }
   if (!model.params.empty()) {

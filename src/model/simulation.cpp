@@ -175,6 +175,7 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
     if (!sim->physics_) return nullptr;
   }
   net::KernelSettings settings{model.settings.dt, sim->seed_, {}};
+  settings.random_ties = model.settings.random_ties;
   if (sim->scene_) {
     // node tokens are scene nodes: each name in an initial marking is a path in the scene
     for (const auto& name : sim->net_->nodeNames()) {

@@ -22,7 +22,7 @@ std::uint64_t rankOf(std::uint64_t key) { return key >> 32; }
 }  // namespace
 
 Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
-    : net_(std::move(net)), dt_(settings.dt), random_(settings.seed) {
+    : net_(std::move(net)), dt_(settings.dt), random_(settings.seed), random_ties_(settings.random_ties) {
   GDPN_ASSERT(net_ != nullptr, "kernel needs a net");
   GDPN_ASSERT(dt_ > 0.0, "dt must be positive");
   const Net& n = *net_;
@@ -550,6 +550,7 @@ void Kernel::fireEnabled() {
     candidates_.push_back(best);
   }
 
+  if (random_ties_) shuffleTies();
   const std::size_t n = candidates_.size();
   for (std::size_t i = 0; i < n; ++i) {
     prefetchAhead(i, n, [this](std::size_t k) { return indexOf(candidates_[k].key); });
@@ -578,8 +579,37 @@ void Kernel::fireEnabled() {
   }
   fresh_.clear();
   late_now_.clear();
+  // the next phase merges the carried candidates as a sorted sequence
+  if (random_ties_) {
+    std::sort(carry_next_.begin(), carry_next_.end(), [](const Carry& a, const Carry& b) {
+      return rankOf(a.key) != rankOf(b.key) ? rankOf(a.key) < rankOf(b.key)
+             : a.step != b.step            ? a.step < b.step
+                                           : a.key < b.key;
+    });
+  }
   carry_.swap(carry_next_);
   in_firing_ = false;
+}
+
+void Kernel::shuffleTies() {
+  // an entry listed twice (enabled, disabled and enabled again) is kept once
+  candidates_.erase(std::unique(candidates_.begin(), candidates_.end(),
+                                [](const Carry& a, const Carry& b) { return a.key == b.key && a.step == b.step; }),
+                    candidates_.end());
+  // each run of equal priority and time enabled in an order drawn from the generator
+  // (Fisher-Yates, the last position first): one draw per candidate beyond the first of a run
+  const std::size_t n = candidates_.size();
+  for (std::size_t begin = 0, end = 0; begin < n; begin = end) {
+    end = begin + 1;
+    while (end < n && rankOf(candidates_[end].key) == rankOf(candidates_[begin].key) &&
+           candidates_[end].step == candidates_[begin].step) {
+      ++end;
+    }
+    for (std::size_t i = end - 1; i > begin; --i) {
+      const auto j = begin + static_cast<std::size_t>(random_.below(i - begin + 1));
+      std::swap(candidates_[i], candidates_[j]);
+    }
+  }
 }
 
 std::string Kernel::fire(TransitionId t) {

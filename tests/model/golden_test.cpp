@@ -997,6 +997,30 @@ TEST(CliRun, HtmlWritesOnePageWithThePlotsAndTheSignalsAndRefusesToOverwriteInpu
   EXPECT_NE(r.out.find("--html"), std::string::npos) << r.out;
 }
 
+TEST(CliRun, RandomTiesChooseByTheSeedAndTheSameSeedGivesTheSameTrace) {
+  const gdpn::testing::ScratchFolder dir("gdpn_ties");
+  // the routes each part took: {go_left, go_right} occurrences
+  auto routes = [&](const std::string& model, int seed) {
+    const auto r = gdpn("run " + model + " --quiet --seed " + std::to_string(seed) + " --report " +
+                        dir.file("r.json") + " --trace " + dir.file("t" + std::to_string(seed) + ".jsonl"));
+    EXPECT_EQ(r.code, 0) << r.out;
+    const auto j = nlohmann::json::parse(gdpn::testing::fileBytes(dir.file("r.json")));
+    return std::pair<std::int64_t, std::int64_t>{j["transitions"][1]["occurrences"], j["transitions"][2]["occurrences"]};
+  };
+  const std::string model = "tests/data/good/random_ties.gdpn.yaml";
+  EXPECT_EQ(routes(model, 1), (std::pair<std::int64_t, std::int64_t>{16, 24}));
+  const std::string first = gdpn::testing::fileBytes(dir.file("t1.jsonl"));
+  EXPECT_EQ(routes(model, 2), (std::pair<std::int64_t, std::int64_t>{18, 22}));
+  EXPECT_EQ(routes(model, 1), (std::pair<std::int64_t, std::int64_t>{16, 24}));
+  EXPECT_EQ(gdpn::testing::fileBytes(dir.file("t1.jsonl")), first);
+  // in declaration order every part goes left, whatever the seed
+  std::string text = gdpn::testing::fileBytes(std::string(GDPN_SOURCE_DIR) + "/" + model);
+  text.replace(text.find(", ties: random"), 14, "");
+  std::ofstream(dir.file("order.gdpn.yaml")) << text;
+  EXPECT_EQ(routes(dir.file("order.gdpn.yaml"), 1), (std::pair<std::int64_t, std::int64_t>{40, 0}));
+  EXPECT_EQ(routes(dir.file("order.gdpn.yaml"), 2), (std::pair<std::int64_t, std::int64_t>{40, 0}));
+}
+
 TEST(Cli, CheckSaysEachWarningOnceWhenItAlsoBuildsThePlant) {
   const gdpn::testing::ScratchFolder dir("gdpn_check_once");
   std::ofstream(dir.file("w.gdpn.yaml")) << "gdpn: 1\nscene:\n  - World: {}\npages:\n  main:\n"

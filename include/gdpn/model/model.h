@@ -28,6 +28,10 @@ struct Settings {
   std::optional<double> until;       ///< default end of a run, seconds
   /// the unit of the angles the file and the scripts write (the scene stores degrees)
   scene::AngleUnit angles = scene::AngleUnit::Degrees;
+  /// `ties: random`: enabled transitions of equal priority that became enabled in the same
+  /// step start in an order drawn from the generator; `ties: order` (the default): in
+  /// declaration order
+  bool random_ties = false;
   friend bool operator==(const Settings&, const Settings&) = default;
 };
 

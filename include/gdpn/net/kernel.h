@@ -29,6 +29,10 @@ struct KernelSettings {
   /// What each initial node token (an index into Net::nodeNames()) refers to; empty means
   /// the index itself.
   std::vector<NodeRef> node_refs;
+  /// How the firing phase orders enabled transitions of equal priority that became enabled
+  /// in the same step: false, in declaration order; true, in an order drawn from the model's
+  /// generator at the phase's start (semantics: Ties).
+  bool random_ties = false;
 };
 
 /// Whole steps of `dt` seconds an occurrence of `seconds` lasts: max(1, ceil(seconds / dt)),
@@ -59,7 +63,8 @@ class Kernel {
   void idleStep() { ++idle_; }
   /// Phase 3: occurring transitions whose duration has elapsed complete, in start order.
   void completeOccurrences();
-  /// Phase 4: enabled transitions start, by priority, then time enabled, then declaration.
+  /// Phase 4: enabled transitions start, by priority, then time enabled, then declaration
+  /// (or, with random ties, an order drawn for each group of equal priority and time).
   void fireEnabled();
 
   /// Starts `t` now, outside the firing phase: the user's "fire the selected transition".
@@ -187,6 +192,7 @@ class Kernel {
   void deposited(PlaceSlotId ps, const SlotState& st, std::int64_t count);
   void finish(TransitionId t);
   std::int64_t drawSteps(TransitionId t);
+  void shuffleTies();
 
   std::shared_ptr<const Net> net_;
   const Term* terms_ = nullptr;
@@ -195,6 +201,7 @@ class Kernel {
   std::int64_t step_ = 0;  // steps with the net on: the clock of occurrences and enabling
   std::int64_t idle_ = 0;  // steps with the net off
   bool in_firing_ = false;
+  bool random_ties_ = false;
 
   std::vector<TransitionState> tr_;
   std::vector<SlotState> slots_;                  // one more than there are slots: a sentinel
