@@ -101,6 +101,8 @@ std::string durationProblem(const net::Duration& d) {
     case Law::Normal:
       if (d.a < 0 || d.b < 0) return "a normal duration's mean and standard deviation are 0 s or more";
       break;
+    case Law::Immediate:
+      break;
   }
   return {};
 }

@@ -20,7 +20,9 @@ std::vector<double> effectiveDurations(const net::Net& net, double dt) {
   std::vector<double> out;
   for (const auto& t : net.transitions()) {
     const double mean = net::meanSeconds(t.duration);
-    if (dt > 0.0 && t.duration.fixed()) {
+    if (t.duration.law == net::Duration::Law::Immediate) {
+      out.push_back(0.0);
+    } else if (dt > 0.0 && t.duration.fixed()) {
       out.push_back(static_cast<double>(net::durationSteps(mean, dt)) * dt);
     } else {
       out.push_back(mean);

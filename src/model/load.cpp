@@ -527,7 +527,11 @@ class ModelReader {
     d.loc = e.loc;
     if (!e.value.IsMap()) {
       d.loc = r_.loc(e.value, e.loc);
-      if (auto v = r_.number(e.value, "duration", &d.params[0])) d.a = *v;
+      if (auto v = r_.number(e.value, "duration", &d.params[0])) {
+        d.a = *v;
+        // a duration of 0 written (or a parameter of 0): immediate, within the firing phase
+        if (*v == 0.0) d.law = net::Duration::Law::Immediate;
+      }
       return d;
     }
     auto laws = r_.entries(e.value, "duration", kLaws);

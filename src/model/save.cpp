@@ -131,7 +131,8 @@ void writeDuration(YAML::Emitter& out, const net::Duration& d) {
   out << YAML::Key << "duration" << YAML::Value;
   const std::string a = numberText(d.a, d.params[0]), b = numberText(d.b, d.params[1]);
   switch (d.law) {
-    case Law::Fixed: out << a; break;
+    case Law::Fixed:
+    case Law::Immediate: out << a; break;
     case Law::Exponential:
       out << YAML::Flow << YAML::BeginMap << YAML::Key << "exponential" << YAML::Value << a << YAML::EndMap;
       break;

@@ -118,6 +118,8 @@ class Compiler {
       case Duration::Law::Exponential:
         if (d.a <= 0) bad("needs a positive mean");
         break;
+      case Duration::Law::Immediate:
+        break;
     }
   }
 

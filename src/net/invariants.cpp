@@ -642,6 +642,8 @@ double meanSeconds(const Duration& duration) {
   switch (duration.law) {
     case Duration::Law::Uniform:
       return 0.5 * (duration.a + duration.b);
+    case Duration::Law::Immediate:
+      return 0.0;
     case Duration::Law::Fixed:
     case Duration::Law::Normal:
     case Duration::Law::Exponential:

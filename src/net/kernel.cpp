@@ -83,7 +83,9 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
       held_.emplace_back();
     }
     st.unsat = 0;
-    const std::int64_t fixed = spec.duration.fixed() ? durationSteps(spec.duration.a) : -1;
+    const std::int64_t fixed = spec.duration.law == Duration::Law::Immediate ? 0
+                               : spec.duration.fixed()                       ? durationSteps(spec.duration.a)
+                                                                             : -1;
     st.fixed_steps = fixed <= std::numeric_limits<std::int32_t>::max() ? static_cast<std::int32_t>(fixed) : -1;
     st.probability = spec.probability;
     st.enabled_step = 0;
@@ -216,6 +218,7 @@ std::int64_t Kernel::drawSteps(TransitionId t) {
       break;
     }
     case Duration::Law::Exponential: seconds = random_.exponential(d.a); break;
+    case Duration::Law::Immediate: return 0;
   }
   return durationSteps(seconds);
 }
@@ -360,10 +363,12 @@ void Kernel::begin(TransitionId t) {
   ++occurring_count_;
   ++start_count_;
   tr.start_step = step_;
-  const std::int64_t end = step_ + drawSteps(t);
+  const std::int64_t lasts = drawSteps(t);
+  const std::int64_t end = step_ + lasts;
   tr.end_step = end;
-  wheel_[static_cast<std::size_t>(end) & (kWheelSize - 1)].push_back(t);
-  if (tr.scripts & kInFire) {
+  // an immediate occurrence completes below, in this phase: no wheel, no in_fire
+  if (lasts > 0) wheel_[static_cast<std::size_t>(end) & (kWheelSize - 1)].push_back(t);
+  if ((tr.scripts & kInFire) && lasts > 0) {
     start_seq_[t] = start_count_;
     in_fire_.push_back(t);
   }
@@ -418,6 +423,10 @@ void Kernel::begin(TransitionId t) {
     }
   }
   if ((tr.scripts & kPreFire) && hooks_ && !hooks_->halted()) hooks_->preFire(t);
+  if (lasts == 0) {
+    immediate_fired_ = true;
+    finish(t);
+  }
 }
 
 void Kernel::finish(TransitionId t) {
@@ -529,6 +538,7 @@ void Kernel::fireEnabled() {
   detail::sortKeys(fresh_, scratch_);
   in_firing_ = true;
   carry_next_.clear();
+  immediate_fired_ = false;  // (a user's fire() of an immediate transition is not a round of this phase)
 
   // merge the three into one ordered list of candidates: (rank, step enabled, index)
   candidates_.clear();
@@ -551,6 +561,34 @@ void Kernel::fireEnabled() {
   }
 
   if (random_ties_) shuffleTies();
+  std::size_t done = startCandidates();
+  // immediate transitions: a round ends when one completes; the candidates not yet taken and
+  // the transitions enabled since then take a further round, in order, until none is left
+  // (or the rounds run out: what is left then waits for the next step)
+  int rounds = 0;
+  while (immediate_fired_ && rounds < kImmediateRounds && (done < candidates_.size() || !late_.empty())) {
+    immediate_fired_ = false;
+    ++rounds;
+    next_.assign(candidates_.begin() + static_cast<std::ptrdiff_t>(done), candidates_.end());
+    for (const std::uint64_t key : late_) next_.push_back({key, step_});
+    late_.clear();
+    std::sort(next_.begin(), next_.end(), candidateBefore);
+    candidates_.swap(next_);
+    if (random_ties_) shuffleTies();
+    done = startCandidates();
+  }
+  // candidates a last round left untaken stay enabled: they are carried to the next phase
+  for (std::size_t i = done; i < candidates_.size(); ++i) carry_next_.push_back(candidates_[i]);
+  immediate_fired_ = false;
+  fresh_.clear();
+  late_now_.clear();
+  // the next phase merges the carried candidates as a sorted sequence
+  if (random_ties_ || rounds > 0) std::sort(carry_next_.begin(), carry_next_.end(), candidateBefore);
+  carry_.swap(carry_next_);
+  in_firing_ = false;
+}
+
+std::size_t Kernel::startCandidates() {
   const std::size_t n = candidates_.size();
   for (std::size_t i = 0; i < n; ++i) {
     prefetchAhead(i, n, [this](std::size_t k) { return indexOf(candidates_[k].key); });
@@ -576,19 +614,9 @@ void Kernel::fireEnabled() {
       continue;
     }
     begin(t);
+    if (immediate_fired_) return i + 1;  // what it enabled may go before the rest
   }
-  fresh_.clear();
-  late_now_.clear();
-  // the next phase merges the carried candidates as a sorted sequence
-  if (random_ties_) {
-    std::sort(carry_next_.begin(), carry_next_.end(), [](const Carry& a, const Carry& b) {
-      return rankOf(a.key) != rankOf(b.key) ? rankOf(a.key) < rankOf(b.key)
-             : a.step != b.step            ? a.step < b.step
-                                           : a.key < b.key;
-    });
-  }
-  carry_.swap(carry_next_);
-  in_firing_ = false;
+  return n;
 }
 
 void Kernel::shuffleTies() {

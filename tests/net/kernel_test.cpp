@@ -373,6 +373,84 @@ TEST(NetKernel, RandomTiesKeepPriorityAndTheTimeEnabled) {
   EXPECT_EQ(rec.startsOf("High").size(), 21U);  // steps 0 to 20
 }
 
+// Immediate transitions (semantics: Immediate transitions): duration 0 written.
+Duration immediate() { return Duration{Duration::Law::Immediate, 0.0}; }
+
+TEST(NetKernel, ImmediateTransitionsStartAndCompleteWithinTheFiringPhaseOneAfterAnother) {
+  // P -> A (immediate) -> Q -> B (immediate) -> R -> C (1 s) -> S
+  NetBuilder b;
+  PlaceId p[5];
+  const char* names[] = {"P", "Q", "R", "S", "T"};
+  for (int i = 0; i < 5; ++i) {
+    p[i] = b.addPlace(names[i]);
+    b.setSlot(p[i], kDefaultSlot, kControl, kUnbounded, i == 0 ? 1 : 0);
+  }
+  const TransitionId ts[] = {b.addTransition("A", immediate()), b.addTransition("B", immediate()),
+                             b.addTransition("C", seconds(1.0))};
+  for (int i = 0; i < 3; ++i) {
+    b.addInput(p[i], ts[i]);
+    b.addOutput(ts[i], p[i + 1]);
+  }
+  Kernel k(b.freeze(), {0.1, 1});
+  Recorder rec(k.net());
+  k.addObserver(&rec);
+  k.start();
+  // all at step 0: A and B came and went, and C, enabled by B, started in the same phase
+  EXPECT_EQ(rec.startsOf("A"), (std::vector<std::int64_t>{0}));
+  EXPECT_EQ(rec.startsOf("B"), (std::vector<std::int64_t>{0}));
+  EXPECT_EQ(rec.startsOf("C"), (std::vector<std::int64_t>{0}));
+  EXPECT_FALSE(k.occurring(ts[0]));
+  EXPECT_FALSE(k.occurring(ts[1]));
+  EXPECT_TRUE(k.occurring(ts[2]));
+  EXPECT_EQ(tokens(k, "Q") + tokens(k, "R"), 0);
+  for (int i = 0; i < 10; ++i) k.step();
+  EXPECT_EQ(tokens(k, "S"), 1);
+  EXPECT_EQ(k.steps(), 10);
+}
+
+TEST(NetKernel, AnImmediateTransitionFiresAgainWhileItIsEnabledAndPriorityComesFirst) {
+  // three tokens: the immediate drain empties the place within the phase, before the
+  // timed one of lower priority can take any; one of higher priority goes first
+  NetBuilder b;
+  const auto pool = b.addPlace("pool");
+  const auto done = b.addPlace("done");
+  b.setSlot(pool, kDefaultSlot, kControl, kUnbounded, 3);
+  const auto drain = b.addTransition("Drain", immediate(), 1);
+  const auto slow = b.addTransition("Slow", seconds(1.0), 0);
+  for (const auto t : {drain, slow}) {
+    b.addInput(pool, t);
+    b.addOutput(t, done);
+  }
+  Kernel k(b.freeze(), {0.1, 1});
+  Recorder rec(k.net());
+  k.addObserver(&rec);
+  k.start();
+  EXPECT_EQ(rec.startsOf("Drain"), (std::vector<std::int64_t>{0, 0, 0}));
+  EXPECT_TRUE(rec.startsOf("Slow").empty());
+  EXPECT_EQ(tokens(k, "done"), 3);
+  EXPECT_TRUE(k.dead());
+}
+
+TEST(NetKernel, ACycleOfImmediateTransitionsEndsTheStepAfterItsRoundsAndGoesOnInTheNext) {
+  NetBuilder b;
+  const auto p = b.addPlace("P");
+  const auto q = b.addPlace("Q");
+  b.setSlot(p, kDefaultSlot, kControl, kUnbounded, 1);
+  const auto there = b.addTransition("There", immediate());
+  const auto back = b.addTransition("Back", immediate());
+  b.addInput(p, there);
+  b.addOutput(there, q);
+  b.addInput(q, back);
+  b.addOutput(back, p);
+  Kernel k(b.freeze(), {0.1, 1});
+  k.start();
+  const auto first = k.startCount();
+  EXPECT_EQ(first, 10001U);  // the phase's first pass and its 10,000 rounds
+  k.step();
+  EXPECT_EQ(k.startCount(), 2 * first);
+  EXPECT_EQ(tokens(k, "P") + tokens(k, "Q"), 1);
+}
+
 TEST(NetKernel, AtMostOneStartPerStepAndOneOccurrenceAtATime) {
   NetBuilder b;
   const auto p = b.addPlace("P");

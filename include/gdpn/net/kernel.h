@@ -180,6 +180,10 @@ class Kernel {
     std::uint64_t key;
     std::int64_t step;
   };
+  // the firing order: priority rank, then the step enabled, then declaration
+  static bool candidateBefore(const Carry& a, const Carry& b) {
+    return (a.key >> 32) != (b.key >> 32) ? (a.key >> 32) < (b.key >> 32) : a.step != b.step ? a.step < b.step : a.key < b.key;
+  }
 
   static bool holds(const SlotState& st, TermKind kind, std::int64_t weight, std::int64_t take);
   void update(PlaceSlotId ps);
@@ -193,6 +197,9 @@ class Kernel {
   void finish(TransitionId t);
   std::int64_t drawSteps(TransitionId t);
   void shuffleTies();
+  // one round of the firing phase over candidates_: how many it went through (all, or up to
+  // an immediate occurrence's completion)
+  std::size_t startCandidates();
 
   std::shared_ptr<const Net> net_;
   const Term* terms_ = nullptr;
@@ -202,6 +209,10 @@ class Kernel {
   std::int64_t idle_ = 0;  // steps with the net off
   bool in_firing_ = false;
   bool random_ties_ = false;
+  bool immediate_fired_ = false;  // an immediate occurrence completed in this round
+  /// Rounds of immediate occurrences one firing phase takes at most (a cycle of immediate
+  /// transitions would never end); what is left waits for the next step.
+  static constexpr int kImmediateRounds = 10000;
 
   std::vector<TransitionState> tr_;
   std::vector<SlotState> slots_;                  // one more than there are slots: a sentinel
@@ -214,6 +225,7 @@ class Kernel {
   std::vector<std::uint64_t> fresh_, late_, late_now_, scratch_;  // keys: rank << 32 | t
   std::vector<Carry> carry_, carry_next_;
   std::vector<Carry> candidates_;  // one firing phase's candidates, in order
+  std::vector<Carry> next_;        // the next round's, after an immediate occurrence
   std::vector<std::vector<TransitionId>> wheel_;  // completions, by end step modulo its size
   std::vector<TransitionId> due_;
   std::vector<NodeRef> moved_;  // node tokens of one event, reused

@@ -26,6 +26,7 @@ struct Duration {
     Uniform,      ///< uniform in [a, b) seconds
     Normal,       ///< normal with mean `a` and standard deviation `b` seconds, redrawn below 0
     Exponential,  ///< exponential with mean `a` seconds
+    Immediate,    ///< no time at all: starts and completes within the firing phase (`duration: 0`)
   };
   /// 0 s, fixed.
   Duration() = default;
@@ -39,8 +40,8 @@ struct Duration {
   /// the model parameters `a` and `b` come from ("" for a number written as such)
   std::array<std::string, 2> params;
 
-  /// True for a constant duration.
-  [[nodiscard]] bool fixed() const { return law == Law::Fixed; }
+  /// True for a constant duration (an immediate one too: 0 s).
+  [[nodiscard]] bool fixed() const { return law == Law::Fixed || law == Law::Immediate; }
   friend bool operator==(const Duration& x, const Duration& y) {
     return x.law == y.law && x.a == y.a && x.b == y.b && x.params == y.params;
   }

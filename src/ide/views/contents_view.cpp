@@ -47,6 +47,7 @@ std::string durationText(const net::Duration& d) {
     case net::Duration::Law::Uniform: return "uniform in [" + num(0) + ", " + num(1) + ") s";
     case net::Duration::Law::Normal: return "normal, mean " + num(0) + " s, sd " + num(1) + " s";
     case net::Duration::Law::Exponential: return "exponential, mean " + num(0) + " s";
+    case net::Duration::Law::Immediate: return "immediate" + std::string(d.params[0].empty() ? "" : " ($" + d.params[0] + " = 0)");
   }
   return "?";
 }
@@ -507,21 +508,24 @@ void editTransition(App& app, const ConstructAt& at, const net::TransitionSpec& 
   net::Duration d = t.duration;
   bool changed = false;
   ImGui::SetNextItemWidth(130);
-  if (ImGui::Combo("##law", &law, "fixed\0uniform\0normal\0exponential\0")) {
+  if (ImGui::Combo("##law", &law, "fixed\0uniform\0normal\0exponential\0immediate\0")) {
     d.law = static_cast<net::Duration::Law>(law);
     d.params = {};  // another law's numbers mean other things: they no longer name parameters
     if (d.law == net::Duration::Law::Uniform && d.b < d.a) d.b = d.a;
+    if (d.law == net::Duration::Law::Immediate) d.a = d.b = 0.0;
     changed = true;
   }
   noteItem("law", fields);
   const bool two = d.law == net::Duration::Law::Uniform || d.law == net::Duration::Law::Normal;
   const char* first = d.law == net::Duration::Law::Fixed ? "s" : d.law == net::Duration::Law::Uniform ? "low, s" : "mean, s";
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(90);
-  ImGui::InputDouble(first, &d.a, 0, 0, "%g");
-  noteItem("duration", fields);
-  changed = changed || ImGui::IsItemDeactivatedAfterEdit();
-  paramNote(t.duration.params[0]);
+  if (d.law != net::Duration::Law::Immediate) {  // no time, no number
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(90);
+    ImGui::InputDouble(first, &d.a, 0, 0, "%g");
+    noteItem("duration", fields);
+    changed = changed || ImGui::IsItemDeactivatedAfterEdit();
+    paramNote(t.duration.params[0]);
+  }
   if (two) {
     ImGui::SameLine();
     ImGui::SetNextItemWidth(90);
