@@ -24,6 +24,7 @@
 #include "gdpn/model/report.h"
 #include "gdpn/experiments/html_report.h"
 #include "gdpn/net/timeline.h"
+#include "cli_checks.h"
 #include "sweep_command.h"
 #include "gdpn/model/simulation.h"
 #include "gdpn/model/witness.h"
@@ -53,31 +54,8 @@ void onSigint(int) {
   gdpn::script::requestInterrupt();  // a script running now raises KeyboardInterrupt
 }
 
-/// `text` in quotes for a message, cut to about 40 characters (a pasted 300-digit number
-/// stays readable).
-std::string quoteArg(const std::string& text) {
-  constexpr std::size_t kMax = 40;
-  if (text.size() <= kMax) return "'" + text + "'";
-  return "'" + text.substr(0, kMax - 3) + "...' (" + std::to_string(text.size()) + " characters)";
-}
-
-/// A number on the command line: a whole number (integral T) or a finite decimal (floating
-/// T) from `low` to `high`, above `low` when `above_low`. NaN, infinities, overflow, trailing
-/// text and values out of range are refused before CLI11 converts the text; `what` names
-/// the unit and range, in --help and in the message.
-template <typename T>
-CLI::Validator number(T low, T high, const std::string& what, bool above_low = false) {
-  auto check = [=](std::string& text) -> std::string {
-    const std::string_view digits = text.starts_with('+') ? std::string_view(text).substr(1) : std::string_view(text);
-    T value{};
-    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    bool ok = !digits.empty() && ec == std::errc() && end == digits.data() + digits.size();
-    if constexpr (std::is_floating_point_v<T>) ok = ok && std::isfinite(value);
-    ok = ok && (above_low ? value > low : value >= low) && value <= high;
-    return ok ? std::string() : "expected " + what + ", got " + quoteArg(text);
-  };
-  return CLI::Validator(check, what, "");
-}
+using gdpn::app::number;
+using gdpn::app::quoteArg;
 
 /// The model file that MODEL names (a file, or the one in a folder); MODEL when there is none.
 std::string modelFile(const std::string& arg) {
@@ -989,7 +967,10 @@ int main(int argc, char** argv) {
   if (record_cmd->parsed()) return capture(record_args, true);
   if (check_cmd->parsed()) return check(check_model, check_timeout, check_params);
   if (run_cmd->parsed()) return run(run_args);
-  if (sweep_cmd->parsed()) return gdpn::app::sweep(sweep_args);
+  if (sweep_cmd->parsed()) {
+    sweep_args.scheduler_given = sweep_cmd->get_option("--scheduler")->count() > 0;
+    return gdpn::app::sweep(sweep_args);
+  }
   if (ide_cmd->parsed()) return ide(ide_args);
   return 2;
 }

@@ -1,5 +1,7 @@
 #include "sweep_command.h"
 
+#include "cli_checks.h"
+
 #include <unistd.h>
 
 #include <filesystem>
@@ -7,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gdpn/core/diagnostics.h"
+#include "gdpn/core/output_file.h"
 #include "gdpn/core/text.h"
 #include "gdpn/experiments/python_sources.h"
 #include "gdpn/model/model.h"
@@ -25,10 +28,11 @@ CLI::App* addSweepCommand(CLI::App& app, SweepArgs& a) {
                   "commas (repeatable; every combination runs)")
       ->allow_extra_args(false);
   cmd->add_option("--seeds", a.seeds, "runs per combination, with seeds --seed, --seed + 1, ... (default 1)")
-      ->check(CLI::Range(1, 1'000'000));
-  cmd->add_option("--seed", a.seed, "the first seed (default 1)");
+      ->check(number<int>(1, 1'000'000, "a whole number of runs from 1 to 10^6"));
+  cmd->add_option("--seed", a.seed, "the first seed (default 1)")
+      ->check(number<std::uint64_t>(0, UINT64_MAX - 1'000'000, "a whole number from 0 to 2^64 - 10^6 - 1"));
   cmd->add_option("--until", a.until, "end time of each run in seconds (default: the model's until)")
-      ->check(CLI::Range(0.0, 1e9));
+      ->check(number(0.0, 1e9, "seconds from 0 to 1e9"));
   cmd->add_option("-o,--output", a.output, "write one row per run to FILE.csv: parameters, seed, every figure, error");
   cmd->add_option("--summary", a.summary,
                   "write per combination the mean and 95 % confidence interval of each figure to FILE.csv");
@@ -38,12 +42,12 @@ CLI::App* addSweepCommand(CLI::App& app, SweepArgs& a) {
   cmd->add_option("--workers", a.workers,
                   "local Dask workers, each running one model at a time (default: one per core; 0: one run after "
                   "another in this process, without Dask)")
-      ->check(CLI::Range(0, 4096));
+      ->check(number<int>(0, 4096, "a whole number of workers from 0 to 4096"));
   cmd->add_option("--scheduler", a.scheduler,
                   "run on the Dask cluster whose scheduler is at tcp://HOST:PORT (its workers need gdpn and the "
                   "model at the same paths)");
   cmd->add_option("--timeout", a.timeout, "seconds of wall-clock time one run may take before it counts as failed")
-      ->check(CLI::Range(0.001, 1e7));
+      ->check(number(0.0, 1e7, "seconds above 0, at most 1e7", true));
   cmd->add_flag("--quiet,-q", a.quiet, "print no summary table and no progress");
   return cmd;
 }
@@ -60,6 +64,10 @@ std::string selfPath() {
 }  // namespace
 
 int sweep(const SweepArgs& a) {
+  if (a.scheduler_given && a.scheduler.empty()) {
+    std::cerr << "error: --scheduler: expected an address like tcp://HOST:PORT, got ''\n";
+    return 2;
+  }
   if (a.workers && !a.scheduler.empty()) {
     std::cerr << "error: --workers sets the local cluster's size; it does not go with --scheduler\n";
     return 2;
@@ -76,6 +84,25 @@ int sweep(const SweepArgs& a) {
   if (m) model::checkModel(*m, diags, 0.0);
   diags.print(std::cerr);
   if (diags.hasErrors()) return 1;
+  // no output over the model, and no two outputs in one file
+  const std::vector<std::pair<std::string, std::string>> outputs = {
+      {"-o", a.output}, {"--summary", a.summary}, {"--plot", a.plot}};
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    if (outputs[i].second.empty()) continue;
+    if (core::sameFile(outputs[i].second, *path)) {
+      std::cerr << "error: " << outputs[i].first << " '" << outputs[i].second
+                << "' is the model file; gdpn writes no output over it\n";
+      return 2;
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (!outputs[j].second.empty() &&
+          (outputs[j].second == outputs[i].second || core::sameFile(outputs[j].second, outputs[i].second))) {
+        std::cerr << "error: " << outputs[j].first << " and " << outputs[i].first << " name one file, '"
+                  << outputs[i].second << "'\n";
+        return 2;
+      }
+    }
+  }
   std::vector<std::string> declared;
   for (const auto& p : m->params) declared.push_back(p.name);
   for (const auto& arg : a.params) {

@@ -26,6 +26,7 @@ struct SweepArgs {
   std::string against;              ///< --against: which parameter it is plotted against
   std::optional<int> workers;       ///< local workers (default: every core; 0: serially, no Dask)
   std::string scheduler;            ///< tcp://HOST:PORT of a running Dask scheduler
+  bool scheduler_given = false;     ///< whether --scheduler was given (even empty)
   std::optional<double> timeout;    ///< seconds one run may take (wall-clock)
   bool quiet = false;               ///< no summary table, no progress
 };

@@ -90,6 +90,28 @@ def test_values_are_checked_before_any_run(queue):
     assert parse("x", "0.1..0.5:0.1") == [0.1, 0.2, 0.3, 0.4, 0.5]
     assert parse("x", "1..3:0.5,10") == [1, 1.5, 2, 2.5, 3, 10]
     assert parse("x", "1..2:0.3") == [1, 1.3, 1.6, 1.9]
+    # a value given twice runs once: its runs would count twice in its interval
+    assert parse("x", "1,1,0.5..1:0.5") == [1, 0.5]
+    with pytest.raises(gdpn.SweepError, match="more than 10000 values"):
+        parse("x", "-1e308..1e308")
+
+
+def test_a_figure_named_like_a_column_keeps_its_own_column(write_model):
+    model = write_model("""gdpn: 1
+settings: {dt: 0.1, until: 1}
+params: {gap: 1}
+scripts:
+  globals: |
+    def summary():
+        return {"gap": 99, "seed": 7, "error": "none", "time": 5, "fine": sim.params.gap}
+pages: {main: {places: {p: {tokens: 1}}}}
+""")
+    s = gdpn.sweep(model, {"gap": [1, 2]}, seeds=2, workers=0)
+    assert not s.failed
+    runs = s.runs
+    assert list(runs["gap"]) == [1, 1, 2, 2] and list(runs["seed"]) == [1, 2, 1, 2]
+    assert list(runs["summary.gap"]) == [99] * 4 and list(runs["summary.seed"]) == [7] * 4
+    assert list(runs["fine"]) == [1, 1, 2, 2] and runs["error"].isna().all()
 
 
 def test_the_command_line_writes_the_tables_and_the_plot(queue, tmp_path):
@@ -120,7 +142,20 @@ def test_the_command_line_writes_the_tables_and_the_plot(queue, tmp_path):
     assert bad.stderr == f"error: -o {missing}: the folder {missing.parent} is not there or not writable\n"
     bad = subprocess.run([gdpn_program(), "sweep", queue, "--param", "gap=1..1e9:1e-3"], capture_output=True,
                          text=True)
-    assert bad.returncode == 2 and "values; at most 10000" in bad.stderr, bad.stderr
+    assert bad.returncode == 2 and "more than 10000 values" in bad.stderr, bad.stderr
+    # no output over the model, nor two outputs in one file
+    bad = subprocess.run([gdpn_program(), "sweep", queue, "--param", "gap=1", "-o", queue], capture_output=True,
+                         text=True)
+    assert bad.returncode == 2 and "is the model file; gdpn writes no output over it" in bad.stderr, bad.stderr
+    bad = subprocess.run([gdpn_program(), "sweep", queue, "--param", "gap=1", "-o", str(out), "--summary", str(out)],
+                         capture_output=True, text=True)
+    assert bad.returncode == 2 and "-o and --summary name one file" in bad.stderr, bad.stderr
+    for option, value in (("--seed", "-1"), ("--until", "nan"), ("--timeout", "nan"), ("--scheduler", "")):
+        bad = subprocess.run([gdpn_program(), "sweep", queue, option, value], capture_output=True, text=True)
+        assert bad.returncode == 2, (option, value, bad.stderr)
+    bad = subprocess.run([gdpn_program(), "sweep", queue, "--param", "gap=1", "--scheduler", "foo"],
+                         capture_output=True, text=True)
+    assert bad.returncode == 2 and "Traceback" not in bad.stderr, bad.stderr
 
 
 def free_port():

@@ -99,13 +99,33 @@ def short(name, width=48):
     return name if len(name) <= width else "…" + name[-(width - 1):]
 
 
+MAX_POINTS = 4000  # steps of one token plot drawn as they are; more are thinned
+
+
+def thin(changes, end):
+    """At most about 2 * MAX_POINTS of a place's (time, tokens) steps: past that, each of
+    MAX_POINTS windows keeps its lowest and highest count, so every peak still shows."""
+    if len(changes) <= MAX_POINTS:
+        return changes
+    width = max(end, changes[-1][0]) / MAX_POINTS or 1.0
+    out, window = [], {}
+    for t, n in changes:
+        window.setdefault(min(int(t / width), MAX_POINTS - 1), []).append((t, n))
+    for k in sorted(window):
+        pts = window[k]
+        lo = min(pts, key=lambda p: p[1])
+        hi = max(pts, key=lambda p: p[1])
+        out += sorted({lo, hi})
+    return out
+
+
 def varies(changes):
     return len({c[1] for c in changes}) > 1
 
 
 def table(headers, rows, numeric, total=None, note=""):
     """An HTML table; `numeric` says which columns align right."""
-    out = ["<table><thead><tr>"]
+    out = ['<div class="wide"><table><thead><tr>']
     for h, n in zip(headers, numeric):
         out.append(f'<th class="{"num" if n else ""}">{esc(h)}</th>')
     out.append("</tr></thead><tbody>")
@@ -114,7 +134,7 @@ def table(headers, rows, numeric, total=None, note=""):
         for cell, n in zip(row, numeric):
             out.append(f'<td class="{"num" if n else ""}">{esc(cell)}</td>')
         out.append("</tr>")
-    out.append("</tbody></table>")
+    out.append("</tbody></table></div>")
     total = len(rows) if total is None else total
     if total > MAX_TABLE:
         out.append(f'<p class="note">The first {MAX_TABLE} of {total} rows.{esc(note)}</p>')
@@ -139,9 +159,12 @@ def tokens_plot(run):
     order = {p["name"]: i for i, p in enumerate(tl["places"])}
     shown.sort(key=lambda p: order[p["name"]])
     fig, axes = plt.subplots(len(shown), 1, figsize=(WIDTH, 0.85 * len(shown) + 0.6), sharex=True, squeeze=False)
+    thinned = False
     for ax, p in zip(axes[:, 0], shown):
-        t = [c[0] for c in p["changes"]] + [end]
-        n = [c[1] for c in p["changes"]]
+        changes = thin(p["changes"], end)
+        thinned = thinned or len(changes) < len(p["changes"])
+        t = [c[0] for c in changes] + [end]
+        n = [c[1] for c in changes]
         n.append(n[-1])
         ax.step(t, n, where="post", color=TOKENS, linewidth=1.2)
         ax.fill_between(t, n, step="post", color=TOKENS, alpha=0.15, linewidth=0)
@@ -154,6 +177,8 @@ def tokens_plot(run):
     note = ""
     if len(places) > len(shown):
         note = f" The {len(shown)} busiest of the {len(places)} places whose tokens changed."
+    if thinned:
+        note += f" Places with more than {MAX_POINTS} changes show each window's lowest and highest count."
     return svg(fig), note
 
 
@@ -235,10 +260,13 @@ def cycles_plot(run):
             path = " → ".join(short(t, 60) for t in k["transitions"])
             bars.append(("via " + short(path, 46), k["bound"], k["measured"]))
     fig, ax = plt.subplots(figsize=(WIDTH, 0.42 * len(bars) + 1.0))
+    labelled = set()
     for i, (label, bound, measured) in enumerate(bars):
-        ax.barh(i - 0.18, bound, height=0.34, color=BOUND, label="bound" if i == 0 else None)
+        ax.barh(i - 0.18, bound, height=0.34, color=BOUND, label=None if "b" in labelled else "bound")
+        labelled.add("b")
         if measured:
-            ax.barh(i + 0.18, measured, height=0.34, color=MEASURED, label="measured" if i == 0 else None)
+            ax.barh(i + 0.18, measured, height=0.34, color=MEASURED, label=None if "m" in labelled else "measured")
+            labelled.add("m")
     ax.set_yticks(range(len(bars)), [b[0] for b in bars])
     ax.set_ylim(len(bars) - 0.5, -0.6)
     ax.set_xlabel("cycle time (s)")
@@ -288,7 +316,8 @@ main { max-width: 1120px; margin: 0 auto; padding: 24px 32px 48px; background: #
 h1 { font-size: 22px; margin: 0 0 4px; }
 h2 { font-size: 17px; margin: 28px 0 6px; border-bottom: 1px solid #ddd; padding-bottom: 3px; }
 .run { color: #555; margin: 0 0 12px; }
-.caption, .note { color: #555; font-size: 13px; margin: 4px 0 8px; }
+.caption, .note { color: #555; font-size: 13px; margin: 4px 0 8px; overflow-wrap: anywhere; }
+.wide { overflow-x: auto; }
 table { border-collapse: collapse; font-size: 13px; margin: 6px 0; }
 th, td { padding: 3px 10px; border-bottom: 1px solid #eee; text-align: left; vertical-align: top; }
 th { background: #f3f3f3; font-weight: 600; }
@@ -359,16 +388,18 @@ def page(text):
     rows = [(t["name"], t["occurrences"], number(t["mean_cycle"]) if t["cycles"] else "–",
              number(t["min_cycle"]) if t["cycles"] else "–", number(t["max_cycle"]) if t["cycles"] else "–",
              f"{100 * t['utilisation']:.1f} %") for t in run["transitions"]]
-    sections.append(("transitions", "Transitions",
-                     table(["transition", "occurrences", "mean cycle (s)", "min (s)", "max (s)", "busy"],
-                           [tuple(number(c) if isinstance(c, int) else c for c in r) for r in rows],
-                           [False, True, True, True, True, True]), ""))
+    if run["transitions"]:
+        sections.append(("transitions", "Transitions",
+                         table(["transition", "occurrences", "mean cycle (s)", "min (s)", "max (s)", "busy"],
+                               [tuple(number(c) if isinstance(c, int) else c for c in r) for r in rows],
+                               [False, True, True, True, True, True]), ""))
     rows = [(p["name"] + (" (sensor)" if p["sensors_only"] else ""), number(p["mean_tokens"]),
              number(p["max_tokens"]), number(p["final_tokens"]), number(p["throughput"]))
             for p in run["places"]]
-    sections.append(("places", "Places",
-                     table(["place", "mean tokens", "max", "final", "deposits per s"], rows,
-                           [False, True, True, True, True]), ""))
+    if run["places"]:
+        sections.append(("places", "Places",
+                         table(["place", "mean tokens", "max", "final", "deposits per s"], rows,
+                               [False, True, True, True, True]), ""))
     if run["cycles"]:
         rows = [(c["invariant"], number(c["tokens"]), "flow" if c["flow"] else number(c["bound"]),
                  "–" if c["flow"] or not c["measured"] else number(c["measured"])) for c in run["cycles"]]

@@ -80,14 +80,16 @@ def parse_values(name, spec):
                 raise SweepError(f"{where}: the step must be positive, got {_format(step)}")
             if hi < lo:
                 raise SweepError(f"{where}: the range ends ({_format(hi)}) before it starts ({_format(lo)})")
-            count = math.floor((hi - lo) / step * (1 + 1e-12) + 1e-9) + 1
-            if count > 10000:
-                raise SweepError(f"{where}: {count} values; at most 10000")
+            span = (hi - lo) / step
+            if not math.isfinite(span) or span > 10000:
+                raise SweepError(f"{where}: more than 10000 values")
+            count = math.floor(span * (1 + 1e-12) + 1e-9) + 1
             # each value from its index, rounded to 12 digits: 0.1 steps give 0.3, not 0.30000000000000004
             values += [float(f"{lo + k * step:.12g}") for k in range(count)]
         else:
             values.append(_number(item, where))
-    return values
+    # a value given twice would count its runs twice (and narrow its interval): once each
+    return list(dict.fromkeys(values))
 
 
 def combinations(params):
@@ -117,11 +119,20 @@ def run_one(gdpn, model, values, seed, until, timeout):
             return {"error": why}
         with open(report, encoding="utf-8") as f:
             r = json.load(f)
-    figures = {"stopped": r["stopped"], "time": r["time"]}
-    figures.update(r.get("figures", {}))
     if r.get("figures_error"):
-        return {"error": "summary(): " + r["figures_error"].strip().splitlines()[-1]}
-    return {"figures": figures, "units": r.get("figure_units", {})}
+        lines = [line.strip() for line in r["figures_error"].splitlines() if line.strip()]
+        return {"error": "summary(): " + (lines[0] if lines else "failed")}
+    figures = {"stopped": r["stopped"], "time": r["time"]}
+    units = {}
+    # a figure named like a column of the table (a parameter, seed, error, stopped, time)
+    # keeps its place under "summary.NAME"
+    reserved = set(values) | {"seed", "error", "stopped", "time"}
+    for name, value in r.get("figures", {}).items():
+        key = "summary." + name if name in reserved else name
+        figures[key] = value
+        if name in r.get("figure_units", {}):
+            units[key] = r["figure_units"][name]
+    return {"figures": figures, "units": units}
 
 
 def _progress(done, total, failed, stream):
@@ -162,10 +173,16 @@ def execute(tasks, workers=None, scheduler=None, progress=False):
     else:
         try:
             client = Client(scheduler, timeout="10s")
-        except OSError as e:
+        except (OSError, TimeoutError) as e:
             raise SweepError(f"--scheduler {scheduler}: no Dask scheduler answers there ({e})") from None
+        except (ValueError, TypeError) as e:
+            raise SweepError(f"--scheduler {scheduler}: expected an address like tcp://HOST:PORT ({e})") from None
     try:
-        futures = [client.submit(run_one, *task, key=f"gdpn-run-{i}", pure=False) for i, task in enumerate(tasks)]
+        # keys of this sweep alone: sweeps sharing a scheduler must not share results
+        import uuid
+        token = uuid.uuid4().hex
+        futures = [client.submit(run_one, *task, key=f"gdpn-run-{token}-{i}", pure=False)
+                   for i, task in enumerate(tasks)]
         index = {f.key: i for i, f in enumerate(futures)}
         done = 0
         for future in as_completed(futures):
@@ -275,14 +292,24 @@ class Sweep:
     def __repr__(self):
         return f"<gdpn sweep: {len(self.rows)} runs, {len(self.failed)} failed>\n" + _table(self)
 
+    def check_against(self, against):
+        """Raises SweepError unless `against` (or the first parameter) can be plotted against."""
+        names = list(self.params)
+        if not names:
+            raise SweepError("--plot: the sweep varies no parameter")
+        if against and against not in names:
+            raise SweepError(f"--against: '{against}' is not a swept parameter ({', '.join(names)})")
+
     def plot(self, figure, against=None, path=None):
         """`figure`'s mean against parameter `against` (the first by default), a line per
         combination of the other parameters, with the 95 % intervals as bars. Saves to `path`
         (SVG, PNG or PDF by its name) when given; returns the matplotlib figure."""
         import matplotlib
+        ext = os.path.splitext(str(path))[1].lower() if path is not None else ""
         if path is not None:
-            matplotlib.use("Agg" if not str(path).endswith(".svg") else "svg")
+            matplotlib.use("svg" if ext == ".svg" else "pdf" if ext == ".pdf" else "Agg")
         import matplotlib.pyplot as plt
+        plt.rcParams["svg.hashsalt"] = "gdpn"  # the same sweep, the same file
         if figure not in self.numeric():
             known = ", ".join(self.numeric()) or "none"
             raise SweepError(f"--plot: no numeric figure '{figure}' (there are: {known})")
@@ -316,7 +343,8 @@ class Sweep:
         if others:
             ax.legend(frameon=False, fontsize=8)
         if path is not None:
-            fig.savefig(path, bbox_inches="tight", metadata={"Date": None} if str(path).endswith(".svg") else None)
+            metadata = {"Date": None} if ext == ".svg" else {"CreationDate": None} if ext == ".pdf" else None
+            fig.savefig(path, bbox_inches="tight", metadata=metadata, format=ext[1:] or None)
         return fig
 
 
@@ -336,13 +364,19 @@ def run_sweep(gdpn, model, params, seeds=1, seed=1, until=None, workers=None, sc
     values = {}
     for name, spec in params.items():
         if isinstance(spec, (list, tuple)):
-            values[name] = [_number(v, f"params[{name!r}]") for v in spec]
+            values[name] = list(dict.fromkeys(_number(v, f"params[{name!r}]") for v in spec))
         else:
             values[name] = parse_values(name, spec)
         if not values[name]:
             raise SweepError(f"--param {name}: no values")
-    if seeds < 1:
-        raise SweepError(f"--seeds: at least 1 run per combination, got {seeds}")
+    if not isinstance(seeds, int) or seeds < 1:
+        raise SweepError(f"--seeds: a whole number of runs per combination, at least 1, got {seeds!r}")
+    if workers is not None and (not isinstance(workers, int) or workers < 0):
+        raise SweepError(f"--workers: a whole number, 0 or more, got {workers!r}")
+    if until is not None and not (isinstance(until, (int, float)) and math.isfinite(until) and until >= 0):
+        raise SweepError(f"--until: a time of at least 0 seconds, got {until!r}")
+    if not os.path.exists(model):
+        raise SweepError(f"{model}: no such model file or folder")
     model = os.path.abspath(model)
     total = math.prod(len(v) for v in values.values()) * seeds
     if total > 1_000_000:
@@ -398,13 +432,28 @@ def sweep(model, params=None, seeds=1, seed=1, until=None, workers=None, schedul
                      progress, timeout)
 
 
-def _write(path, text):
-    """Writes beside the target and renames it into place when complete."""
-    folder = os.path.dirname(os.path.abspath(path))
-    fd, temporary = tempfile.mkstemp(prefix=".gdpn-", dir=folder)
-    with os.fdopen(fd, "w", encoding="utf-8") as f:
-        f.write(text)
-    os.replace(temporary, path)
+def _write(path, text, flag):
+    """Writes `text` to `path` as gdpn writes its outputs: beside the target, renamed into
+    place when complete; a device, a pipe or a link's target is written through."""
+    try:
+        if os.path.islink(path) or (os.path.exists(path) and not os.path.isfile(path)):
+            with open(path, "w", encoding="utf-8") as f:
+                f.write(text)
+            return
+        folder = os.path.dirname(os.path.abspath(path))
+        fd, temporary = tempfile.mkstemp(prefix=".gdpn-", dir=folder)
+        try:
+            umask = os.umask(0)
+            os.umask(umask)
+            os.fchmod(fd, 0o666 & ~umask)
+            with os.fdopen(fd, "w", encoding="utf-8") as f:
+                f.write(text)
+            os.replace(temporary, path)
+        finally:
+            if os.path.exists(temporary):
+                os.remove(temporary)
+    except OSError as e:
+        raise SweepError(f"{flag} {path}: {e.strerror or e}") from None
 
 
 def _table(sweep, width=100):
@@ -463,16 +512,25 @@ def main(text):
                 if not os.path.isdir(folder) or not os.access(folder, os.W_OK):
                     flag = "-o" if option == "output" else "--" + option
                     raise SweepError(f"{flag} {a[option]}: the folder {folder} is not there or not writable")
-        if a.get("plot") and os.path.splitext(a["plot"])[1].lower() not in (".svg", ".png", ".pdf"):
-            raise SweepError(f"--plot {a['plot']}: expected a file ending in .svg, .png or .pdf")
+        if a.get("plot"):
+            if os.path.splitext(a["plot"])[1].lower() not in (".svg", ".png", ".pdf"):
+                raise SweepError(f"--plot {a['plot']}: expected a file ending in .svg, .png or .pdf")
+            Sweep({n: [] for n in params}, [], [], {}).check_against(a.get("against"))
         sweep = run_sweep(a["gdpn"], a["model"], params, a["seeds"], a["seed"], a.get("until"),
                           a.get("workers"), a.get("scheduler"), a.get("progress", False), a.get("timeout"),
                           a.get("param_units"))
         if a.get("output"):
-            _write(a["output"], sweep.runs_csv())
+            _write(a["output"], sweep.runs_csv(), "-o")
         if a.get("summary"):
-            _write(a["summary"], sweep.summary_csv())
-        if a.get("plot"):
+            _write(a["summary"], sweep.summary_csv(), "--summary")
+        if not a.get("quiet"):
+            sys.stdout.write(_table(sweep))
+        for r in sweep.failed:
+            where = ", ".join(f"{n}={_format(r[n])}" for n in sweep.params)
+            sys.stderr.write(f"error: run {where + ', ' if where else ''}seed={r['seed']} failed: {r['error']}\n")
+        sys.stdout.flush()
+        sys.stderr.flush()
+        if a.get("plot"):  # last: the runs' failures are said first
             figure = a.get("figure") or next((f for f in sweep.numeric() if f != "time"), None)
             if figure is None:
                 raise SweepError("--plot: the runs gave no numeric figure to plot")
@@ -482,18 +540,23 @@ def main(text):
             try:
                 sweep.plot(figure, a.get("against"), temporary)
                 os.replace(temporary, a["plot"])
+            except OSError as e:
+                raise SweepError(f"--plot {a['plot']}: {e.strerror or e}") from None
             finally:
                 if os.path.exists(temporary):
                     os.remove(temporary)
-        if not a.get("quiet"):
-            sys.stdout.write(_table(sweep))
-        for r in sweep.failed:
-            where = ", ".join(f"{n}={_format(r[n])}" for n in sweep.params)
-            sys.stderr.write(f"error: run {where + ', ' if where else ''}seed={r['seed']} failed: {r['error']}\n")
-        sys.stdout.flush()
-        sys.stderr.flush()
         return "1" if sweep.failed else "0"
     except SweepError as e:
+        sys.stdout.flush()
         sys.stderr.write(f"error: {e}\n")
         sys.stderr.flush()
         return "2"
+    except KeyboardInterrupt:
+        sys.stdout.flush()
+        sys.stderr.write("error: the sweep was interrupted; no table was written\n")
+        sys.stderr.flush()
+        return "130"
+    except ImportError as e:
+        sys.stderr.write(f"error: the sweep needs Python's {e.name or 'module'} (Debian: scripts/install-deps.sh)\n")
+        sys.stderr.flush()
+        return "1"
