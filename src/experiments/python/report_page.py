@@ -22,7 +22,7 @@ GANTT = "#ff7f0e"
 BOUND = "#9a9a9a"
 MEASURED = "#d62728"
 SIGNALS = ["#9467bd", "#17becf", "#bcbd22"]
-THROUGHPUT = ["#2ca02c", "#8c564b", "#e377c2", "#393b79", "#637939", "#843c39"]
+THROUGHPUT = ["#2ca02c", "#8c564b", "#e377c2", "#393b79", "#e6550d", "#6b6ecf"]
 
 MAX_PLACES = 12        # token plots
 MAX_ROWS = 30          # transitions in the Gantt chart
