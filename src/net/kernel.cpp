@@ -569,16 +569,28 @@ void Kernel::fireEnabled() {
   while (immediate_fired_ && rounds < kImmediateRounds && (done < candidates_.size() || !late_.empty())) {
     immediate_fired_ = false;
     ++rounds;
-    next_.assign(candidates_.begin() + static_cast<std::ptrdiff_t>(done), candidates_.end());
-    for (const std::uint64_t key : late_) next_.push_back({key, step_});
+    // only entries still valid (enabled, at the step they name), each once: a cycle of
+    // immediates re-enabling a transition must not pile up its entries
+    next_.clear();
+    for (std::size_t i = done; i < candidates_.size(); ++i) {
+      if (valid(candidates_[i])) next_.push_back(candidates_[i]);
+    }
+    for (const std::uint64_t key : late_) {
+      if (valid({key, step_})) next_.push_back({key, step_});
+    }
     late_.clear();
     std::sort(next_.begin(), next_.end(), candidateBefore);
+    next_.erase(std::unique(next_.begin(), next_.end(),
+                            [](const Carry& a, const Carry& b) { return a.key == b.key && a.step == b.step; }),
+                next_.end());
     candidates_.swap(next_);
     if (random_ties_) shuffleTies();
     done = startCandidates();
   }
   // candidates a last round left untaken stay enabled: they are carried to the next phase
-  for (std::size_t i = done; i < candidates_.size(); ++i) carry_next_.push_back(candidates_[i]);
+  for (std::size_t i = done; i < candidates_.size(); ++i) {
+    if (valid(candidates_[i])) carry_next_.push_back(candidates_[i]);
+  }
   immediate_fired_ = false;
   fresh_.clear();
   late_now_.clear();
@@ -609,9 +621,15 @@ std::size_t Kernel::startCandidates() {
       continue;
     }
     const double p = tr.probability;
-    if (p < 1.0 && !(random_.uniform01() < p)) {
-      carry_next_.push_back({key, when});
-      continue;
+    if (p < 1.0) {
+      // one draw per transition and phase, however often immediates re-enable it
+      if (drawn_.empty()) drawn_.assign(tr_.size(), -1);
+      const bool drew = drawn_[t] == step_;
+      drawn_[t] = step_;
+      if (drew || !(random_.uniform01() < p)) {
+        carry_next_.push_back({key, when});
+        continue;
+      }
     }
     begin(t);
     if (immediate_fired_) return i + 1;  // what it enabled may go before the rest

@@ -431,6 +431,39 @@ TEST(NetKernel, AnImmediateTransitionFiresAgainWhileItIsEnabledAndPriorityComesF
   EXPECT_TRUE(k.dead());
 }
 
+TEST(NetKernel, ImmediatesThatReEnableAProbableTransitionDoNotGiveItMoreDraws) {
+  // U (p = 0.5) tests P; A takes P's token and B gives it back, both immediate: U is disabled
+  // and enabled again within the phase, and still draws once (semantics: Probability)
+  int started = 0;
+  for (std::uint64_t seed = 1; seed <= 2000; ++seed) {
+    NetBuilder b;
+    const auto p = b.addPlace("P"), q = b.addPlace("Q"), x = b.addPlace("X"), r = b.addPlace("R"),
+               out = b.addPlace("S");
+    b.setSlot(p, kDefaultSlot, kControl, kUnbounded, 1);
+    b.setSlot(q, kDefaultSlot, kControl, kUnbounded, 0);
+    b.setSlot(x, kDefaultSlot, kControl, kUnbounded, 1);
+    b.setSlot(r, kDefaultSlot, kControl, kUnbounded, 1);
+    b.setSlot(out, kDefaultSlot, kControl, kUnbounded, 0);
+    const auto u = b.addTransition("U", seconds(1.0), 1, 0.5);
+    const auto ta = b.addTransition("A", immediate());
+    const auto tb = b.addTransition("B", immediate());
+    b.addInput(r, u);
+    b.addInput(p, u, kDefaultSlot, 1, ArcKind::Test);
+    b.addOutput(u, out);
+    b.addInput(p, ta);
+    b.addInput(x, ta);
+    b.addOutput(ta, q);
+    b.addInput(q, tb);
+    b.addOutput(tb, p);
+    Kernel k(b.freeze(), {0.1, seed});
+    k.start();
+    started += k.occurring(u) || tokens(k, "S") > 0 ? 1 : 0;
+  }
+  // half of 2000 (sd 22): not 1 - (1 - p)^2 = 75 %
+  EXPECT_GT(started, 1000 - 110);
+  EXPECT_LT(started, 1000 + 110);
+}
+
 TEST(NetKernel, ACycleOfImmediateTransitionsEndsTheStepAfterItsRoundsAndGoesOnInTheNext) {
   NetBuilder b;
   const auto p = b.addPlace("P");

@@ -226,6 +226,12 @@ class Kernel {
   std::vector<Carry> carry_, carry_next_;
   std::vector<Carry> candidates_;  // one firing phase's candidates, in order
   std::vector<Carry> next_;        // the next round's, after an immediate occurrence
+  std::vector<std::int64_t> drawn_;  // per transition: the step of its last probability draw (-1: none)
+  // an entry that still stands: its transition enabled since the step it names
+  [[nodiscard]] bool valid(const Carry& c) const {
+    const auto& tr = tr_[static_cast<std::uint32_t>(c.key)];
+    return tr.unsat == 0 && tr.enabled_step == c.step;
+  }
   std::vector<std::vector<TransitionId>> wheel_;  // completions, by end step modulo its size
   std::vector<TransitionId> due_;
   std::vector<NodeRef> moved_;  // node tokens of one event, reused
