@@ -545,7 +545,7 @@ void Kernel::fireEnabled() {
   std::size_t ic = 0, il = 0, ifr = 0;
   const std::int64_t late_step = step_ - 1;
   auto before = [](std::uint64_t k1, std::int64_t s1, std::uint64_t k2, std::int64_t s2) {
-    return rankOf(k1) != rankOf(k2) ? rankOf(k1) < rankOf(k2) : s1 != s2 ? s1 < s2 : k1 < k2;
+    return candidateBefore({k1, s1}, {k2, s2});
   };
   while (true) {
     Carry best{};
