@@ -48,6 +48,29 @@ void BM_RingFirings(benchmark::State& state) {
 }
 BENCHMARK(BM_RingFirings)->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMicrosecond);
 
+// one station with unlimited servers and N parts going round it (P -> T -> P), each occurrence
+// lasting a drawn 0.5 to 1.5 s at dt = 0.01 s: about N/100 occurrences complete and as many
+// start each step, with N running at once. The cost per firing should not grow with N.
+void BM_UnlimitedServersFirings(benchmark::State& state) {
+  const auto n = state.range(0);
+  NetBuilder b;
+  const auto p = b.addPlace("parts");
+  b.setSlot(p, kDefaultSlot, SlotKind::Control, kUnbounded, n);
+  const auto t = b.addTransition("station", Duration{Duration::Law::Uniform, 0.5, 1.5, {}});
+  b.setServers(t, kUnlimitedServers);
+  b.addInput(p, t);
+  b.addOutput(t, p);
+  Kernel k(b.freeze(), {0.01, 1});
+  k.start();
+  for (int i = 0; i < 200; ++i) k.step();  // past the first wave: starts spread over the steps
+  const auto before = k.startCount();
+  for (auto _ : state) k.step();
+  const auto firings = static_cast<double>(k.startCount() - before);
+  state.counters["firings_per_s"] = benchmark::Counter(firings, benchmark::Counter::kIsRate);
+  state.counters["firings_per_step"] = firings / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_UnlimitedServersFirings)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMicrosecond);
+
 // constant activity (100 tokens circulating) in nets of growing size: a step must cost the same
 void BM_StepConstantActivity(benchmark::State& state) {
   const auto n = state.range(0);

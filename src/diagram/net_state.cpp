@@ -84,10 +84,12 @@ NetState netStateOf(const net::Kernel& kernel, const PageBinding& binding, const
   }
   // transitions: idle, enabled or occurring
   s.transitions.assign(binding.transitions.size(), Activity::Idle);
+  s.occurrences.assign(binding.transitions.size(), 0);
   for (std::size_t i = 0; i < binding.transitions.size(); ++i) {
     if (binding.transitions[i] < 0) continue;
     const auto t = static_cast<net::TransitionId>(binding.transitions[i]);
     s.transitions[i] = kernel.occurring(t) ? Activity::Occurring : kernel.enabled(t) ? Activity::Enabled : Activity::Idle;
+    s.occurrences[i] = static_cast<std::uint32_t>(kernel.occurrences(t));
   }
   // arcs: the terms of the arc's transition on the arc's place, inputs or outputs by its direction
   s.arcs.assign(binding.arcs.size(), std::nullopt);

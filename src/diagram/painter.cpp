@@ -221,6 +221,14 @@ class Painter {
     c_.fillRect({{b.min.x - grow, b.min.y}, {b.max.x + grow, b.max.y}}, activityColour(a));
     taken_.push_back(b);
     if (labels_) name({(b.min.x + b.max.x) / 2, b.min.y - kLabelGap * v_.zoom}, t.name, VAlign::Bottom);
+    // with servers, how many of its occurrences run, under the bar
+    const std::uint32_t n = s_ != nullptr && k < s_->occurrences.size() ? s_->occurrences[k] : 0;
+    if (labels_ && n > 1) {
+      const Point at{(b.min.x + b.max.x) / 2, b.max.y + 0.5 * kLabelGap * v_.zoom};
+      const Label count{"\u00d7" + std::to_string(n), font_ * 0.9, HAlign::Centre, VAlign::Top, activityColour(a), {at}};
+      c_.text(at, count.text, count.size, count.h, count.v, count.colour);
+      taken_.push_back(labelBox(c_, count, at));
+    }
   }
 
   void place(std::size_t k) {

@@ -274,6 +274,9 @@ std::string edit(net::NetSpec& net, net::PageSpec& p, const NetEdit& e, std::str
       const auto& t = *e.transition;
       if (auto why = durationProblem(t.duration); !why.empty()) return why;
       if (!(t.probability > 0.0 && t.probability <= 1.0)) return "a probability lies in (0, 1]";
+      if (t.servers != net::kUnlimitedServers && !(t.servers >= 1 && t.servers <= net::kMostServers)) {
+        return "servers are a whole number from 1 to " + std::to_string(net::kMostServers) + ", or unlimited";
+      }
       return replaceNamed(p, p.transitions, e.name, t, "transition");
     }
   }

@@ -46,7 +46,7 @@ std::vector<std::string> withScripts(std::vector<std::string> keys, net::ScriptO
 const std::vector<std::string> kPlaceKeys =
     withScripts({"description", "slots", "tokens", "capacity", "sensors", "at"}, net::ScriptOwner::PlaceSlot);
 const std::vector<std::string> kTransitionKeys =
-    withScripts({"description", "duration", "priority", "probability", "at"}, net::ScriptOwner::Transition);
+    withScripts({"description", "duration", "priority", "probability", "servers", "at"}, net::ScriptOwner::Transition);
 const std::vector<std::string> kArcKeys = {"from", "to", "kind", "weight", "predicate", "condition"};
 const std::vector<std::string> kScriptsKeys = {"globals"};
 const std::vector<std::string> kScriptFileKeys = {"file", "function"};
@@ -570,6 +570,7 @@ class ModelReader {
     t.loc = te.loc;
     t.duration.loc = te.loc;
     t.probability_loc = te.loc;
+    t.servers_loc = te.loc;
     if (te.value.IsNull()) return t;
     if (!r_.expectMap(te.value, "transition '" + t.name + "'")) return t;
     for (const auto& e : r_.entries(te.value, "transition", kTransitionKeys)) {
@@ -582,6 +583,19 @@ class ModelReader {
       } else if (e.key == "probability") {
         t.probability_loc = r_.loc(e.value, e.loc);
         if (auto v = r_.number(e.value, "probability", &t.probability_param)) t.probability = *v;
+      } else if (e.key == "servers") {
+        t.servers_loc = r_.loc(e.value, e.loc);
+        long long whole = 0;
+        const bool word = e.value.IsScalar() && !e.value.Scalar().starts_with('$') &&
+                          !YAML::convert<long long>::decode(e.value, whole);
+        if (word && e.value.Scalar() == "unlimited") {
+          t.servers = net::kUnlimitedServers;
+        } else if (word) {
+          r_.error(e.value, "'servers' expects a whole number of at least 1 or 'unlimited', got '" + e.value.Scalar() + "'");
+        } else if (auto v = r_.integer(e.value, "servers", &t.servers_param)) {
+          if (*v >= 1) t.servers = *v;
+          else r_.error(e.value, "'servers' expects a whole number of at least 1 or 'unlimited', got " + std::to_string(*v));
+        }
       } else if (const auto kind = net::parseScriptKind(e.key, net::ScriptOwner::Transition)) {
         net::scriptOf(t, *kind) = readScript(e, e.key);
       } else if (e.key == "at") {
@@ -731,6 +745,7 @@ void keepParamsOf(Model& fragment, const std::vector<Param>& declared) {
         }
         if (unknown(t.priority_param)) t.priority_param.clear();
         if (unknown(t.probability_param)) t.probability_param.clear();
+        if (unknown(t.servers_param)) t.servers_param.clear();
       }
     }
   }

@@ -3,7 +3,9 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "gdpn/core/text.h"
 #include "gdpn/model/analysis.h"
@@ -83,7 +85,11 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
       f.min_cycle = static_cast<double>(s.cycle_min) * dt;
       f.max_cycle = static_cast<double>(s.cycle_max) * dt;
     }
-    f.utilisation = steps > 0 ? static_cast<double>(s.busy) / steps : 0.0;
+    // the occurrences at once, averaged; and that as a share of its servers (none when unlimited)
+    f.servers = net.transitions()[t].servers;
+    f.mean_busy = steps > 0 ? static_cast<double>(s.busy) / steps : 0.0;
+    f.utilisation = f.servers == net::kUnlimitedServers ? std::numeric_limits<double>::quiet_NaN()
+                                                        : f.mean_busy / static_cast<double>(f.servers);
     r.transitions.push_back(std::move(f));
   }
   for (net::PlaceId p = 0; p < net.places().size(); ++p) {
@@ -225,13 +231,18 @@ std::string reportJson(const Report& report) {
   if (!report.outcome.message.empty()) j.member("message", report.outcome.message);
   j.array("transitions", report.transitions.size(), [&](std::size_t i) {
     const auto& t = report.transitions[i];
-    return ordered_json{{"name", t.name},
-                        {"occurrences", t.occurrences},
-                        {"cycles", t.cycles},
-                        {"mean_cycle", t.mean_cycle},
-                        {"min_cycle", t.min_cycle},
-                        {"max_cycle", t.max_cycle},
-                        {"utilisation", t.utilisation}};
+    ordered_json line{{"name", t.name},
+                      {"occurrences", t.occurrences},
+                      {"cycles", t.cycles},
+                      {"mean_cycle", t.mean_cycle},
+                      {"min_cycle", t.min_cycle},
+                      {"max_cycle", t.max_cycle},
+                      {"utilisation", std::isnan(t.utilisation) ? ordered_json(nullptr) : ordered_json(t.utilisation)}};
+    if (t.servers != 1) {
+      line["servers"] = t.servers == net::kUnlimitedServers ? ordered_json("unlimited") : ordered_json(t.servers);
+      line["mean_busy"] = t.mean_busy;
+    }
+    return line;
   });
   j.array("places", report.places.size(), [&](std::size_t i) {
     const auto& p = report.places[i];
@@ -328,13 +339,23 @@ void printSummary(std::ostream& out, const Report& report) {
   }
   w += 2;
 
+  // with servers, how many occurrences ran at once on average, and of how many servers
+  const bool servers = std::any_of(report.transitions.begin(), report.transitions.end(),
+                                   [](const TransitionFigures& t) { return t.servers != 1; });
   out << pad("transition", w, false) << pad("occurrences", 12, true) << pad("mean cycle [s]", 16, true)
-      << pad("max cycle [s]", 15, true) << pad("utilisation", 13, true) << "\n";
+      << pad("max cycle [s]", 15, true) << pad("utilisation", 13, true);
+  if (servers) out << pad("at once", 9, true) << pad("servers", 9, true);
+  out << "\n";
   for (const auto& t : report.transitions) {
     const bool cyc = t.cycles > 0;
     out << pad(t.name, w, false) << pad(std::to_string(t.occurrences), 12, true)
         << pad(cyc ? fixed(t.mean_cycle, 3) : "-", 16, true) << pad(cyc ? fixed(t.max_cycle, 3) : "-", 15, true)
-        << pad(fixed(100.0 * t.utilisation, 1) + " %", 13, true) << "\n";
+        << pad(std::isnan(t.utilisation) ? "-" : fixed(100.0 * t.utilisation, 1) + " %", 13, true);
+    if (servers) {
+      out << pad(fixed(t.mean_busy, 2), 9, true)
+          << pad(t.servers == net::kUnlimitedServers ? "any" : std::to_string(t.servers), 9, true);
+    }
+    out << "\n";
   }
   out << "\n"
       << pad("place", w, false) << pad("mean tokens", 12, true) << pad("max tokens", 16, true)

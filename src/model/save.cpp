@@ -153,6 +153,9 @@ void writeTransition(YAML::Emitter& out, const net::TransitionSpec& t) {
   if (t.probability != 1.0 || !t.probability_param.empty()) {
     out << YAML::Key << "probability" << YAML::Value << numberText(t.probability, t.probability_param);
   }
+  if (!t.servers_param.empty()) out << YAML::Key << "servers" << YAML::Value << "$" + t.servers_param;
+  else if (t.servers == net::kUnlimitedServers) out << YAML::Key << "servers" << YAML::Value << "unlimited";
+  else if (t.servers != 1) out << YAML::Key << "servers" << YAML::Value << t.servers;
   for (const net::ScriptKind k : net::kTransitionScripts) writeScript(out, net::info(k).key, net::scriptOf(t, k));
   pos(out, t.position);
   out << YAML::EndMap;

@@ -150,6 +150,11 @@ class Compiler {
         diags_.error(t.probability_loc, "probability of transition '" + t.name +
                                             "' must lie in (0, 1], got " + core::formatDouble(t.probability));
       }
+      if (t.servers != kUnlimitedServers && !(t.servers >= 1 && t.servers <= kMostServers)) {
+        diags_.error(t.servers_loc, "servers of transition '" + t.name + "' must be a whole number from 1 to " +
+                                        std::to_string(kMostServers) + " or 'unlimited', got " +
+                                        std::to_string(t.servers));
+      }
     }
     for (std::uint32_t i = 0; i < page.instances.size(); ++i) {
       const auto& inst = page.instances[i];
@@ -173,6 +178,7 @@ class Compiler {
     }
     index.arcs.reserve(page.arcs.size());
     std::vector<bool> has_input(page.transitions.size(), false);  // one pass over the arcs
+    std::vector<bool> takes(page.transitions.size(), false);      // a normal input arc
     constexpr std::size_t kAhead = 8;  // arcs whose ends are fetched ahead (see NameTable::prefetch)
     for (std::size_t i = 0; i < page.arcs.size(); ++i) {
       if (i + kAhead < page.arcs.size()) {
@@ -181,9 +187,18 @@ class Compiler {
       }
       const auto& a = page.arcs[i];
       index.arcs.push_back(checkArc(page, a, name_of));
-      if (index.arcs.back().second.what == End::What::Transition) has_input[index.arcs.back().second.index] = true;
+      if (index.arcs.back().second.what == End::What::Transition) {
+        has_input[index.arcs.back().second.index] = true;
+        if (a.kind == ArcKind::Normal) takes[index.arcs.back().second.index] = true;
+      }
     }
     for (std::uint32_t i = 0; i < page.transitions.size(); ++i) {
+      if (!takes[i] && page.transitions[i].servers == kUnlimitedServers) {
+        diags_.error(page.transitions[i].servers_loc,
+                     "transition '" + page.transitions[i].name +
+                         "' has unlimited servers but takes no tokens: it would start without end in one "
+                         "step (give it a number of servers, or an input arc that takes)");
+      }
       if (!has_input[i]) {
         diags_.warning(page.transitions[i].loc, "transition '" + page.transitions[i].name +
                                                     "' has no input arcs: it starts again in every step it is "
@@ -658,6 +673,7 @@ class Compiler {
     for (auto& ft : transitions_) {
       const auto& s = *ft.spec;
       const auto t = builder_.addTransition(std::move(ft.name), s.duration, s.priority, s.probability, s.loc);
+      if (s.servers != 1) builder_.setServers(t, static_cast<std::uint32_t>(s.servers));
       for (const ScriptKind k : kTransitionScripts) {
         if (!scriptOf(s, k).empty()) builder_.setTransitionScript(t, k, scriptIndex(scriptOf(s, k)));
       }

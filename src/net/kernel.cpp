@@ -64,6 +64,7 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
   // transitions: packed firing data, and the count of terms that do not hold
   const auto transitions = n.transitions();
   const std::size_t count = transitions.size();
+  GDPN_ASSERT(count < kOccurrenceBit, "too many transitions");
   core::reserveLarge(tr_, count);
   tr_.resize(count);
   for (TransitionId t = 0; t < count; ++t) {
@@ -73,8 +74,14 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
     st.inputs_end = spec.inputs_end;
     st.conditions_end = spec.conditions_end;
     st.terms_end = spec.terms_end;
-    // ranks beyond 2^24 - 1 (more distinct priorities than that) share the lowest rank
-    st.rank = std::min<std::uint32_t>(spec.priority_rank, (1u << 24) - 1) & 0xffffffu;
+    // ranks beyond 2^23 - 1 (more distinct priorities than that) share the lowest rank
+    st.rank = std::min<std::uint32_t>(spec.priority_rank, (1u << 23) - 1) & 0x7fffffu;
+    st.multi = spec.servers != 1 ? 1 : 0;
+    if (spec.servers != 1) {
+      if (servers_of_.empty()) servers_of_.assign(count, -1);
+      servers_of_[t] = static_cast<std::int32_t>(servers_.size());
+      servers_.push_back({spec.servers, 0, {}});
+    }
     st.scripts = spec.scripts;
     if ((spec.scripts & kInFire) && start_seq_.empty()) start_seq_.assign(count, 0);
     st.held = -1;
@@ -261,8 +268,36 @@ bool Kernel::selectTokens(TransitionId t) {
 }
 
 std::span<const std::pair<SlotId, NodeRef>> Kernel::held(TransitionId t) const {
+  if (tr_[t].multi) {
+    const Occurrence* o = currentOccurrence(t);
+    return o ? std::span<const std::pair<SlotId, NodeRef>>(o->held) : std::span<const std::pair<SlotId, NodeRef>>();
+  }
   if (tr_[t].held < 0) return {};
   return held_[static_cast<std::size_t>(tr_[t].held)];
+}
+
+const Kernel::Occurrence* Kernel::currentOccurrence(TransitionId t) const {
+  if ((current_ & kOccurrenceBit) && current_ != kNoEntry && occ_[current_ & ~kOccurrenceBit].t == t) {
+    return &occ_[current_ & ~kOccurrenceBit];
+  }
+  const auto& running = servers_[static_cast<std::size_t>(servers_of_[t])].running;
+  return running.empty() ? nullptr : &occ_[running.front()];
+}
+
+std::size_t Kernel::occurrences(TransitionId t) const {
+  if (tr_[t].multi) return servers_[static_cast<std::size_t>(servers_of_[t])].busy;
+  return occurring(t) ? 1 : 0;
+}
+
+std::int64_t Kernel::startStep(TransitionId t) const {
+  const Occurrence* o = tr_[t].multi ? currentOccurrence(t) : nullptr;
+  return (o ? o->start_step : tr_[t].start_step) + idle_;
+}
+
+std::int64_t Kernel::endStep(TransitionId t) const {
+  const Occurrence* o = tr_[t].multi ? currentOccurrence(t) : nullptr;
+  const std::int64_t end = o ? o->end_step : tr_[t].end_step;
+  return end < 0 ? -1 : end + idle_;
 }
 
 std::string Kernel::setMarking(PlaceSlotId ps, std::int64_t count) {
@@ -347,30 +382,90 @@ std::size_t Kernel::dropNodes(const std::function<bool(NodeRef)>& gone) {
     for (auto* o : observers_) o->onRemove(ps, static_cast<std::int64_t>(moved_.size()), moved_, steps());
     update(ps);
   }
-  for (auto& held : held_) {
+  auto drop = [&](std::vector<std::pair<SlotId, NodeRef>>& held) {
     const auto before = held.size();
     held.erase(std::remove_if(held.begin(), held.end(), [&](const auto& h) { return gone(h.second); }), held.end());
     dropped += before - held.size();
-  }
+  };
+  for (auto& held : held_) drop(held);
+  for (auto& o : occ_) drop(o.held);
   return dropped;
 }
 
-void Kernel::begin(TransitionId t) {
+Kernel::Entry Kernel::startOccurrence(TransitionId t, std::int64_t end) {
   TransitionState& tr = tr_[t];
-  // the occurrence is a virtual unsatisfied term: t cannot start again until it completes
-  ++tr.unsat;
-  --enabled_count_;
+  Servers& sv = servers_[static_cast<std::size_t>(servers_of_[t])];
+  // the virtual term of the occurrence counts only once every server is busy
+  if (++sv.busy == sv.limit) {
+    ++tr.unsat;
+    --enabled_count_;
+  }
+  std::uint32_t o = 0;
+  if (occ_free_.empty()) {
+    o = static_cast<std::uint32_t>(occ_.size());
+    GDPN_ASSERT(o < kOccurrenceBit, "too many occurrences at once");
+    occ_.emplace_back();
+  } else {
+    o = occ_free_.back();
+    occ_free_.pop_back();
+  }
+  Occurrence& occ = occ_[o];
+  occ.t = t;
+  occ.start_step = step_;
+  occ.end_step = end;
+  occ.seq = 0;
+  occ.held.clear();
+  sv.running.push_back(o);
+  tr.end_step = occ_[sv.running.front()].end_step;
+  return kOccurrenceBit | o;
+}
+
+void Kernel::endOccurrence(Entry e) {
+  const std::uint32_t o = e & ~kOccurrenceBit;
+  const TransitionId t = occ_[o].t;
+  TransitionState& tr = tr_[t];
+  Servers& sv = servers_[static_cast<std::size_t>(servers_of_[t])];
+  occ_[o].end_step = -1;
+  occ_[o].held.clear();
+  // completed occurrences leave the list (and are reused) once they reach its front
+  while (!sv.running.empty() && occ_[sv.running.front()].end_step < 0) {
+    occ_free_.push_back(sv.running.front());
+    sv.running.pop_front();
+  }
+  tr.end_step = sv.running.empty() ? -1 : occ_[sv.running.front()].end_step;
+  if (sv.busy-- == sv.limit && --tr.unsat == 0) markEnabled(t);
+}
+
+inline __attribute__((always_inline)) void Kernel::begin(TransitionId t) {
+  if (tr_[t].multi) beginAs<true>(t);
+  else beginAs<false>(t);
+}
+
+// begin() for a transition with servers or without: one text, compiled for each, so that a
+// single server's start pays nothing for servers
+template <bool kServers>
+void Kernel::beginAs(TransitionId t) {
+  TransitionState& tr = tr_[t];
   ++occurring_count_;
   ++start_count_;
   tr.start_step = step_;
-  const std::int64_t lasts = drawSteps(t);
+  const std::int64_t lasts = tr.fixed_steps >= 0 ? tr.fixed_steps : drawSteps(t);
   const std::int64_t end = step_ + lasts;
-  tr.end_step = end;
+  Entry entry = t;
+  if constexpr (kServers) {
+    entry = startOccurrence(t, end);
+  } else {
+    // the occurrence is a virtual unsatisfied term: t cannot start again until it completes
+    ++tr.unsat;
+    --enabled_count_;
+    tr.end_step = end;
+  }
   // an immediate occurrence completes below, in this phase: no wheel, no in_fire
-  if (lasts > 0) wheel_[static_cast<std::size_t>(end) & (kWheelSize - 1)].push_back(t);
+  if (lasts > 0) wheel_[static_cast<std::size_t>(end) & (kWheelSize - 1)].push_back(entry);
   if ((tr.scripts & kInFire) && lasts > 0) {
-    start_seq_[t] = start_count_;
-    in_fire_.push_back(t);
+    if constexpr (kServers) occ_[entry & ~kOccurrenceBit].seq = start_count_;
+    else start_seq_[t] = start_count_;
+    in_fire_.push_back(entry);
   }
   for (auto* o : observers_) o->onStart(t, steps());
 
@@ -386,7 +481,7 @@ void Kernel::begin(TransitionId t) {
     moved_.clear();
     if (st.fifo >= 0) {
       auto& fifo = fifos_[static_cast<std::size_t>(st.fifo)];
-      auto& held = held_[static_cast<std::size_t>(tr.held)];
+      auto& held = heldOf<kServers>(entry);
       const SlotId slot = st.slot;
       if (!chosen_.empty()) {
         // the tokens the predicates picked, in FIFO order
@@ -416,23 +511,42 @@ void Kernel::begin(TransitionId t) {
   }
   chosen_.clear();
 
-  // on_remove per token taken, in the order taken, then pre_fire
-  for (const RemoveCall& call : calls) {
-    for (std::int64_t k = 0; k < call.count && !hooks_->halted(); ++k) {
-      hooks_->onRemove(call.ps, call.node ? &call.token : nullptr);
+  // on_remove per token taken, in the order taken, then pre_fire (self: this occurrence)
+  if (!calls.empty() || ((tr.scripts & kPreFire) && hooks_)) {
+    const Entry outer = std::exchange(current_, entry);
+    for (const RemoveCall& call : calls) {
+      for (std::int64_t k = 0; k < call.count && !hooks_->halted(); ++k) {
+        hooks_->onRemove(call.ps, call.node ? &call.token : nullptr);
+      }
     }
+    if ((tr.scripts & kPreFire) && hooks_ && !hooks_->halted()) hooks_->preFire(t);
+    current_ = outer;
   }
-  if ((tr.scripts & kPreFire) && hooks_ && !hooks_->halted()) hooks_->preFire(t);
   if (lasts == 0) {
     immediate_fired_ = true;
-    finish(t);
+    finish(entry);
   }
 }
 
-void Kernel::finish(TransitionId t) {
+inline __attribute__((always_inline)) void Kernel::finish(Entry e) {
+  if (e & kOccurrenceBit) finishAs<true>(e);
+  else finishAs<false>(e);
+}
+
+template <bool kServers>
+void Kernel::finishAs(Entry e) {
+  const TransitionId t = kServers ? occ_[e & ~kOccurrenceBit].t : e;
   TransitionState& tr = tr_[t];
-  for (auto* o : observers_) o->onComplete(t, steps());
-  if ((tr.scripts & kPostFire) && hooks_ && !hooks_->halted()) hooks_->postFire(t);
+  if (!observers_.empty()) {
+    const std::int64_t started = (kServers ? occ_[e & ~kOccurrenceBit].start_step : tr.start_step) + idle_;
+    for (auto* o : observers_) o->onComplete(t, steps(), started);
+  }
+  // scripts (post_fire, on_deposit) see this occurrence as self's
+  if ((tr.scripts & kPostFire) && hooks_ && !hooks_->halted()) {
+    const Entry outer = std::exchange(current_, e);
+    hooks_->postFire(t);
+    current_ = outer;
+  }
   for (auto i = tr.conditions_end; i < tr.terms_end; ++i) {
     const Term& term = terms_[i];
     const PlaceSlotId ps = term.place_slot;
@@ -443,7 +557,7 @@ void Kernel::finish(TransitionId t) {
     if (st.fifo >= 0) {
       // node tokens leave in the order they were taken, per slot
       auto& fifo = fifos_[static_cast<std::size_t>(st.fifo)];
-      auto& held = held_[static_cast<std::size_t>(tr.held)];
+      auto& held = heldOf<kServers>(e);
       const SlotId slot = st.slot;
       for (auto it = held.begin(); it != held.end() && static_cast<std::int64_t>(moved_.size()) < term.weight;) {
         if (it->first == slot) {
@@ -460,11 +574,19 @@ void Kernel::finish(TransitionId t) {
     const std::int64_t count = st.fifo >= 0 ? static_cast<std::int64_t>(moved_.size()) : term.weight;
     for (auto* o : observers_) o->onDeposit(ps, count, moved_, steps());
     update(ps);
-    if ((st.scripts & kOnDeposit) && hooks_) deposited(ps, st, count);
+    if ((st.scripts & kOnDeposit) && hooks_) {
+      const Entry outer = std::exchange(current_, e);
+      deposited(ps, st, count);
+      current_ = outer;
+    }
   }
-  tr.end_step = -1;
   --occurring_count_;
-  if (--tr.unsat == 0) markEnabled(t);
+  if constexpr (kServers) {
+    endOccurrence(e);
+  } else {
+    tr.end_step = -1;
+    if (--tr.unsat == 0) markEnabled(t);
+  }
 }
 
 void Kernel::deposited(PlaceSlotId ps, const SlotState& st, std::int64_t count) {
@@ -483,39 +605,43 @@ void Kernel::completeOccurrences() {
   due_.clear();
   if (!slot.empty()) {
     std::size_t kept = 0;
-    for (TransitionId t : slot) {
-      if (tr_[t].end_step == step_) due_.push_back(t);
-      else slot[kept++] = t;
+    for (const Entry e : slot) {
+      if (endOf(e) == step_) due_.push_back(e);
+      else slot[kept++] = e;
     }
     slot.resize(kept);
   }
   if (in_fire_.empty()) {
     const std::size_t n = due_.size();
     for (std::size_t i = 0; i < n; ++i) {
-      prefetchAhead(i, n, [this](std::size_t k) { return due_[k]; });
+      prefetchAhead(i, n, [this](std::size_t k) { return transitionOf(due_[k]); });
       finish(due_[i]);
     }
     return;
   }
-  // with in_fire scripts: every occurring transition that has one, and every one due, in the
-  // order they started; each runs in_fire, then completes if its time has come
+  // with in_fire scripts: every occurrence that has one, and every one due, in the order they
+  // started; each runs in_fire, then completes if its time has come
   in_fire_next_.clear();
   std::size_t i = 0, j = 0;
   while (i < due_.size() || j < in_fire_.size()) {
-    TransitionId t = 0;
-    if (j >= in_fire_.size() ||
-        (i < due_.size() && start_seq_.size() > due_[i] && start_seq_[due_[i]] < start_seq_[in_fire_[j]])) {
-      t = due_[i++];
+    Entry e = 0;
+    if (j >= in_fire_.size() || (i < due_.size() && seqOf(due_[i]) < seqOf(in_fire_[j]))) {
+      e = due_[i++];
     } else {
-      t = in_fire_[j++];
-      if (i < due_.size() && due_[i] == t) ++i;
+      e = in_fire_[j++];
+      if (i < due_.size() && due_[i] == e) ++i;
     }
+    const TransitionId t = transitionOf(e);
     const TransitionState& tr = tr_[t];
-    if ((tr.scripts & kInFire) && hooks_ && !hooks_->halted()) hooks_->inFire(t);
-    if (tr.end_step == step_) {
-      finish(t);
+    if ((tr.scripts & kInFire) && hooks_ && !hooks_->halted()) {
+      const Entry outer = std::exchange(current_, e);
+      hooks_->inFire(t);
+      current_ = outer;
+    }
+    if (endOf(e) == step_) {
+      finish(e);
     } else if (tr.scripts & kInFire) {
-      in_fire_next_.push_back(t);
+      in_fire_next_.push_back(e);
     }
   }
   in_fire_.swap(in_fire_next_);
@@ -566,19 +692,21 @@ void Kernel::fireEnabled() {
   // the transitions enabled since then take a further round, in order, until none is left
   // (or the rounds run out: what is left then waits for the next step)
   int rounds = 0;
-  while (immediate_fired_ && rounds < kImmediateRounds && (done < candidates_.size() || !late_.empty())) {
+  while (immediate_fired_ && rounds < kImmediateRounds) {
     immediate_fired_ = false;
-    ++rounds;
     // only entries still valid (enabled, at the step they name), each once: a cycle of
-    // immediates re-enabling a transition must not pile up its entries
+    // immediates re-enabling a transition must not pile up its entries. The immediate
+    // transition itself (the last one taken) stays a candidate while it has free servers.
     next_.clear();
-    for (std::size_t i = done; i < candidates_.size(); ++i) {
+    for (std::size_t i = done - 1; i < candidates_.size(); ++i) {
       if (valid(candidates_[i])) next_.push_back(candidates_[i]);
     }
     for (const std::uint64_t key : late_) {
       if (valid({key, step_})) next_.push_back({key, step_});
     }
     late_.clear();
+    if (next_.empty()) break;
+    ++rounds;
     std::sort(next_.begin(), next_.end(), candidateBefore);
     next_.erase(std::unique(next_.begin(), next_.end(),
                             [](const Carry& a, const Carry& b) { return a.key == b.key && a.step == b.step; }),
@@ -588,7 +716,7 @@ void Kernel::fireEnabled() {
     done = startCandidates();
   }
   // candidates a last round left untaken stay enabled: they are carried to the next phase
-  for (std::size_t i = done; i < candidates_.size(); ++i) {
+  for (std::size_t i = immediate_fired_ ? done - 1 : done; i < candidates_.size(); ++i) {
     if (valid(candidates_[i])) carry_next_.push_back(candidates_[i]);
   }
   immediate_fired_ = false;
@@ -598,6 +726,23 @@ void Kernel::fireEnabled() {
   if (random_ties_ || rounds > 0) std::sort(carry_next_.begin(), carry_next_.end(), candidateBefore);
   carry_.swap(carry_next_);
   in_firing_ = false;
+}
+
+inline bool Kernel::tryStart(TransitionId t, bool again) {
+  const TransitionState& tr = tr_[t];
+  if ((tr.scripts & kGuard) && hooks_ && (hooks_->halted() || !hooks_->guard(t))) return false;
+  if (tr.held >= 0 && hooks_ && !selectTokens(t)) return false;
+  const double p = tr.probability;
+  if (p < 1.0) {
+    // one draw per transition and phase, however often immediates re-enable it; a further
+    // server's start in the same turn (`again`) draws anew
+    if (drawn_.empty()) drawn_.assign(tr_.size(), -1);
+    const bool drew = drawn_[t] == step_ && !again;
+    drawn_[t] = step_;
+    if (drew || !(random_.uniform01() < p)) return false;
+  }
+  begin(t);
+  return true;
 }
 
 std::size_t Kernel::startCandidates() {
@@ -611,28 +756,21 @@ std::size_t Kernel::startCandidates() {
     // entry twice (enabled, disabled and enabled again in one phase) is adjacent in the order
     if (tr.unsat != 0 || tr.enabled_step != when) continue;
     if (i > 0 && candidates_[i - 1].key == key && candidates_[i - 1].step == when) continue;
-    // condition 5 and predicates: scripts that do not hold keep t waiting, still enabled
-    if ((tr.scripts & kGuard) && hooks_ && (hooks_->halted() || !hooks_->guard(t))) {
+    // condition 5, predicates and probability: one that does not start waits, still enabled
+    if (!tryStart(t, false)) {
       carry_next_.push_back({key, when});
       continue;
     }
-    if (tr.held >= 0 && hooks_ && !selectTokens(t)) {
-      carry_next_.push_back({key, when});
-      continue;
-    }
-    const double p = tr.probability;
-    if (p < 1.0) {
-      // one draw per transition and phase, however often immediates re-enable it
-      if (drawn_.empty()) drawn_.assign(tr_.size(), -1);
-      const bool drew = drawn_[t] == step_;
-      drawn_[t] = step_;
-      if (drew || !(random_.uniform01() < p)) {
-        carry_next_.push_back({key, when});
-        continue;
-      }
-    }
-    begin(t);
     if (immediate_fired_) return i + 1;  // what it enabled may go before the rest
+    if (!tr.multi) continue;
+    // a transition with servers starts again while it stays enabled and a server is free
+    for (std::uint32_t k = 1; tr.unsat == 0; ++k) {
+      if (k == kStartsPerTurn || !tryStart(t, true)) {
+        carry_next_.push_back({key, when});
+        break;
+      }
+      if (immediate_fired_) return i + 1;
+    }
   }
   return n;
 }
@@ -662,7 +800,10 @@ std::string Kernel::fire(TransitionId t) {
   const Net& net = *net_;
   const std::string name = "'" + net.transitions()[t].name + "'";
   TransitionState& tr = tr_[t];
-  if (occurring(t)) return name + " is occurring";
+  if (occurring(t) && !tr.multi) return name + " is occurring";
+  if (tr.multi && servers(t) != 0 && occurrences(t) == servers(t)) {
+    return name + " is occurring on all its " + std::to_string(servers(t)) + " servers";
+  }
   if (tr.unsat != 0) {
     // name the first term that does not hold
     for (std::uint32_t i = tr.terms_begin; i < tr.terms_end; ++i) {
@@ -703,6 +844,9 @@ std::size_t Kernel::memoryBytes() const {
   for (const auto& w : wheel_) bytes += w.capacity() * sizeof(TransitionId);
   for (const auto& f : fifos_) bytes += sizeof(f) + f.size() * sizeof(NodeRef);
   for (const auto& h : held_) bytes += sizeof(h) + h.capacity() * sizeof(h[0]);
+  for (const auto& o : occ_) bytes += sizeof(o) + o.held.capacity() * sizeof(o.held[0]);
+  bytes += occ_free_.capacity() * sizeof(std::uint32_t) + servers_of_.capacity() * sizeof(std::int32_t);
+  for (const auto& sv : servers_) bytes += sizeof(sv) + sv.running.size() * sizeof(std::uint32_t);
   bytes += start_seq_.capacity() * sizeof(std::uint64_t);
   return bytes;
 }

@@ -113,6 +113,8 @@ TransitionId NetBuilder::addTransition(std::string name, Duration duration, std:
   return static_cast<TransitionId>(transitions_.size() - 1);
 }
 
+void NetBuilder::setServers(TransitionId t, std::uint32_t servers) { transitions_[t].servers = servers; }
+
 std::int32_t NetBuilder::addScript(ScriptSpec script) {
   scripts_.push_back(std::move(script));
   return static_cast<std::int32_t>(scripts_.size() - 1);

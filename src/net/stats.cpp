@@ -27,12 +27,16 @@ void StatsCollector::onStart(TransitionId t, std::int64_t step) {
     ++s.cycles;
   }
   s.last_start = step;
+  ++s.running;
+  s.running_starts += step;
 }
 
-void StatsCollector::onComplete(TransitionId t, std::int64_t step) {
+void StatsCollector::onComplete(TransitionId t, std::int64_t step, std::int64_t started) {
   auto& s = transitions_[t];
   ++s.completions;
-  s.busy += step - s.last_start;
+  s.busy += step - started;
+  --s.running;
+  s.running_starts -= started;
 }
 
 void StatsCollector::change(PlaceId p, std::int64_t delta, std::int64_t step) {
@@ -58,7 +62,7 @@ void StatsCollector::onDeposit(PlaceSlotId ps, std::int64_t count, std::span<con
 void StatsCollector::finish(std::int64_t step) {
   for (PlaceId p = 0; p < places_.size(); ++p) change(p, 0, step);
   for (auto& s : transitions_) {
-    if (s.starts > s.completions) s.busy += step - s.last_start;
+    s.busy += s.running * step - s.running_starts;
   }
 }
 

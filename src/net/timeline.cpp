@@ -28,11 +28,16 @@ void Timeline::onStart(TransitionId t, std::int64_t step) {
   occurrences_.push_back({t, step, -1});
 }
 
-void Timeline::onComplete(TransitionId t, std::int64_t step) {
-  // occurrences of one transition complete in the order they started (equal durations)
-  if (open_[t].empty()) return;  // its start was not kept
-  occurrences_[open_[t].front()].end = step;
-  open_[t].pop_front();
+void Timeline::onComplete(TransitionId t, std::int64_t step, std::int64_t started) {
+  // the oldest open occurrence that started when this one did (with one server, the oldest)
+  auto& open = open_[t];
+  for (auto it = open.begin(); it != open.end(); ++it) {
+    if (occurrences_[*it].start != started) continue;
+    occurrences_[*it].end = step;
+    open.erase(it);
+    return;
+  }
+  // its start was not kept
 }
 
 void Timeline::change(PlaceSlotId ps, std::int64_t delta, std::int64_t step) {

@@ -23,7 +23,7 @@ void TraceWriter::onStart(TransitionId t, std::int64_t step) {
   out_ << ",\"transition\":" << core::jsonQuote(net_.transitions()[t].name) << "}\n";
 }
 
-void TraceWriter::onComplete(TransitionId t, std::int64_t step) {
+void TraceWriter::onComplete(TransitionId t, std::int64_t step, std::int64_t) {
   head(step, "complete");
   out_ << ",\"transition\":" << core::jsonQuote(net_.transitions()[t].name) << "}\n";
 }

@@ -794,9 +794,19 @@ class Geometries(list):
                                auto& k = v.r.get().kernelRef();
                                if (!k.occurring(v.t)) return 0.0;
                                const auto whole = k.endStep(v.t) - k.startStep(v.t);
+                               if (whole <= 0) return 1.0;  // an immediate occurrence: done as it starts
                                return static_cast<double>(k.steps() - k.startStep(v.t)) / static_cast<double>(whole);
                              },
                              "share of the occurrence done, in (0, 1] during in_fire")
+      .def_property_readonly("occurrences",
+                             [](const TransitionView& v) { return v.r.get().kernelRef().occurrences(v.t); },
+                             "how many of its occurrences run now (more than 1 only with servers)")
+      .def_property_readonly("servers",
+                             [](const TransitionView& v) -> py::object {
+                               const auto n = v.r.get().kernelRef().servers(v.t);
+                               return n == net::kUnlimitedServers ? py::object(py::none()) : py::object(py::int_(n));
+                             },
+                             "occurrences it may have at once, or None for unlimited")
       .def_property_readonly("start_time",
                              [](const TransitionView& v) {
                                auto& k = v.r.get().kernelRef();

@@ -85,7 +85,7 @@ bool compare(std::int64_t a, Compare how, std::int64_t b) {
 class Session::Watcher final : public net::NetObserver {
  public:
   void onStart(net::TransitionId t, std::int64_t) override { started.push_back(t); }
-  void onComplete(net::TransitionId t, std::int64_t) override { completed.push_back(t); }
+  void onComplete(net::TransitionId t, std::int64_t, std::int64_t) override { completed.push_back(t); }
   void clear() {
     started.clear();
     completed.clear();

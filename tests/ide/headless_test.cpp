@@ -504,6 +504,19 @@ TEST_F(HeadlessIde, ATransitionsDurationPriorityAndProbabilityAreSetInTheContent
   r = replayOn(model, start + set("probability", "2"));
   EXPECT_EQ(r["undo"]["depth"], 0);
   EXPECT_EQ(r["message"], "a probability lies in (0, 1]");
+  // servers: a number, or unlimited by its box; none is refused
+  r = replayOn(model, start + set("servers", "3") + "- press: save\n");
+  EXPECT_NE(gdpn::testing::fileBytes(model).find("probability: 0.5, servers: 3}"), std::string::npos)
+      << gdpn::testing::fileBytes(model);
+  r = replayOn(model, start + "- click: " + at(fields["unlimited"]) + "\n- press: save\n");
+  EXPECT_EQ(r["undo"]["depth"], 1);
+  EXPECT_NE(gdpn::testing::fileBytes(model).find("probability: 0.5, servers: unlimited}"), std::string::npos)
+      << gdpn::testing::fileBytes(model);
+  r = replayOn(model, start + "- click: " + at(fields["unlimited"]) + "\n- press: save\n");
+  EXPECT_EQ(gdpn::testing::fileBytes(model).find("servers:"), std::string::npos) << gdpn::testing::fileBytes(model);
+  r = replayOn(model, start + set("servers", "0"));
+  EXPECT_EQ(r["undo"]["depth"], 0);
+  EXPECT_EQ(r["message"], "servers are a whole number from 1 to 1000000, or unlimited");
 }
 
 TEST_F(HeadlessIde, TheTutorialBuildsFromAnEmptyFileAModelWhoseRunPushesTheBoxOff) {

@@ -1021,6 +1021,43 @@ TEST(CliRun, RandomTiesChooseByTheSeedAndTheSameSeedGivesTheSameTrace) {
   EXPECT_EQ(routes(dir.file("order.gdpn.yaml"), 2), (std::pair<std::int64_t, std::int64_t>{40, 0}));
 }
 
+TEST(CliRun, ServersRunOccurrencesAtOnceEachWithItsOwnScriptsAndFigures) {
+  const gdpn::testing::ScratchFolder dir("gdpn_servers");
+  auto run = [&](const std::string& extra) {
+    const auto r = gdpn("run tests/data/good/servers.gdpn.yaml --report " + dir.file("r.json") + " " + extra);
+    EXPECT_EQ(r.code, 0) << r.out;
+    return std::pair{r.out, nlohmann::json::parse(gdpn::testing::fileBytes(dir.file("r.json")))};
+  };
+  const auto [text, j] = run("");
+  // ten parts fed every 0.5 s through two spindles of 2 s: done when the last has cooled
+  EXPECT_EQ(j["time"], 14.0);
+  const auto& machine = j["transitions"][1];
+  EXPECT_EQ(machine["servers"], 2);
+  EXPECT_NEAR(machine["mean_busy"].get<double>(), 20.0 / 14.0, 1e-12);  // ten occurrences of 2 s
+  EXPECT_NEAR(machine["utilisation"].get<double>(), 10.0 / 14.0, 1e-12);
+  EXPECT_EQ(j["transitions"][2]["servers"], "unlimited");
+  EXPECT_TRUE(j["transitions"][2]["utilisation"].is_null());
+  EXPECT_FALSE(j["transitions"][0].contains("servers"));
+  // post_fire sees its own occurrence: every machining took 2 s, and every cooling's start
+  // read at its completion is one of the starts read at pre_fire, though some overtook others
+  const auto& f = j["figures"];
+  EXPECT_EQ(f["machining shortest"], 2.0);
+  EXPECT_EQ(f["machining longest"], 2.0);
+  EXPECT_EQ(f["parts cooled"], 10);
+  EXPECT_EQ(f["cooling starts match"], "True");
+  EXPECT_EQ(f["coolings overtaken"], 3);
+  EXPECT_EQ(f["most cooling at once"], 5);
+  EXPECT_NE(text.find("utilisation  at once  servers\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("main/machine             10           0.944          1.500       71.4 %     1.43        2\n"),
+            std::string::npos)
+      << text;
+  // one spindle: the machine is the bottleneck, a part every 2 s, and the run is cut at 20 s
+  const auto [one_text, one] = run("--param spindles=1");
+  EXPECT_FALSE(one["transitions"][1].contains("servers"));
+  EXPECT_EQ(one["transitions"][1]["mean_cycle"], 2.0);
+  EXPECT_EQ(one["figures"]["parts machined"], 9);
+}
+
 TEST(Cli, CheckSaysEachWarningOnceWhenItAlsoBuildsThePlant) {
   const gdpn::testing::ScratchFolder dir("gdpn_check_once");
   std::ofstream(dir.file("w.gdpn.yaml")) << "gdpn: 1\nscene:\n  - World: {}\npages:\n  main:\n"

@@ -16,7 +16,7 @@ class Recorder : public net::NetObserver {
     events.push_back("start " + net_.transitions()[t].name + " @" + std::to_string(step));
     starts.emplace_back(net_.transitions()[t].name, step);
   }
-  void onComplete(net::TransitionId t, std::int64_t step) override {
+  void onComplete(net::TransitionId t, std::int64_t step, std::int64_t) override {
     events.push_back("complete " + net_.transitions()[t].name + " @" + std::to_string(step));
   }
   void onRemove(net::PlaceSlotId ps, std::int64_t n, std::span<const net::NodeRef> nodes, std::int64_t step) override {

@@ -36,6 +36,7 @@ struct NetState {
   double time = 0.0;                              ///< model time, seconds
   std::vector<std::vector<SlotMarking>> places;   ///< per place: its slots in use (empty slots left out)
   std::vector<Activity> transitions;              ///< per transition
+  std::vector<std::uint32_t> occurrences;         ///< per transition: its occurrences running now
   std::vector<std::optional<bool>> arcs;          ///< per arc of PageSpec::arcs: whether it holds (nullopt: unknown)
 };
 

@@ -21,7 +21,9 @@ struct TransitionFigures {
   double mean_cycle = 0.0;      ///< seconds (0 when no cycle)
   double min_cycle = 0.0;       ///< seconds
   double max_cycle = 0.0;       ///< seconds
-  double utilisation = 0.0;     ///< share of the run spent occurring, 0..1
+  double utilisation = 0.0;     ///< share of its servers busy over the run, 0..1 (NaN for unlimited servers)
+  std::uint32_t servers = 1;    ///< occurrences at once it may have; 0 for unlimited
+  double mean_busy = 0.0;       ///< occurrences running at once, averaged over the run
 };
 
 /// One place's line of the report.

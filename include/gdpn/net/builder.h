@@ -36,6 +36,8 @@ class NetBuilder {
                  std::int32_t weight = 1);
   /// Adds a script and returns its index for the set*Script calls.
   std::int32_t addScript(ScriptSpec script);
+  /// Lets `servers` occurrences of transition `t` run at once (0, kUnlimitedServers: any number).
+  void setServers(TransitionId t, std::uint32_t servers);
   /// Gives transition `t` script `index` as its script of kind `kind` (one of kTransitionScripts).
   void setTransitionScript(TransitionId t, ScriptKind kind, std::int32_t index);
   /// Gives slot `slot` of `place` script `index` as its script of kind `kind` (one of kSlotScripts).

@@ -68,7 +68,7 @@ class Kernel {
   void fireEnabled();
 
   /// Starts `t` now, outside the firing phase: the user's "fire the selected transition".
-  /// Returns "" when it started, or why not: it is occurring, a term does not hold (the first
+  /// Returns "" when it started, or why not: it is occurring (all its servers busy), a term does not hold (the first
   /// such is named), the scripts have stopped (an error, a timeout), its guard is false, or
   /// no node token satisfies its predicates. Its probability is not drawn: the user chose it.
   std::string fire(TransitionId t);
@@ -89,18 +89,22 @@ class Kernel {
   [[nodiscard]] std::int64_t placeTokens(PlaceId p) const;
   /// The node tokens on node slot `ps`, first to leave first (empty for control slots).
   [[nodiscard]] std::vector<NodeRef> nodes(PlaceSlotId ps) const;
-  /// True when `t` may start now (all its terms hold and it is not occurring).
+  /// True when `t` may start now (all its terms hold and a server of it is free).
   [[nodiscard]] bool enabled(TransitionId t) const { return tr_[t].unsat == 0; }
-  /// True while `t` is occurring.
+  /// True while an occurrence of `t` runs.
   [[nodiscard]] bool occurring(TransitionId t) const { return tr_[t].end_step >= 0; }
-  /// Step at which the current occurrence of `t` started (only while occurring).
-  /// (Steps with the net off before now count as if the occurrence had started after them.)
-  [[nodiscard]] std::int64_t startStep(TransitionId t) const { return tr_[t].start_step + idle_; }
+  /// How many occurrences of `t` run now (at most its servers).
+  [[nodiscard]] std::size_t occurrences(TransitionId t) const;
+  /// How many occurrences of `t` may run at once; 0 (kUnlimitedServers) for any number.
+  [[nodiscard]] std::uint32_t servers(TransitionId t) const { return net_->transitions()[t].servers; }
+  /// Step at which the current occurrence of `t` started; when it is not occurring, the last
+  /// one. (Steps with the net off before now count as if the occurrence had started after
+  /// them.) With servers, the current occurrence is the one whose script runs now, else the
+  /// oldest one running; so for endStep() and held().
+  [[nodiscard]] std::int64_t startStep(TransitionId t) const;
   /// Step at which the current occurrence of `t` completes (-1 when not occurring).
-  [[nodiscard]] std::int64_t endStep(TransitionId t) const {
-    return tr_[t].end_step < 0 ? -1 : tr_[t].end_step + idle_;
-  }
-  /// The node tokens `t` holds while occurring, with their slots, in the order taken.
+  [[nodiscard]] std::int64_t endStep(TransitionId t) const;
+  /// The node tokens the current occurrence of `t` holds, with their slots, in the order taken.
   [[nodiscard]] std::span<const std::pair<SlotId, NodeRef>> held(TransitionId t) const;
   /// Sets the marking of control slot `ps` to `count` (a script's `set`). Returns "" or why
   /// not: a node slot, a negative count, or no room (count + reserve > capacity). Observers
@@ -123,7 +127,7 @@ class Kernel {
   /// Removes every node token for which `gone(ref)` is true, from the places (observers see
   /// removals) and from what occurring transitions hold (they deposit fewer). Returns how many.
   std::size_t dropNodes(const std::function<bool(NodeRef)>& gone);
-  /// Number of transitions occurring now.
+  /// Number of occurrences running now (one per occurring transition, unless it has servers).
   [[nodiscard]] std::size_t occurringCount() const { return occurring_count_; }
   /// Number of transitions enabled now.
   [[nodiscard]] std::size_t enabledCount() const { return enabled_count_; }
@@ -141,15 +145,16 @@ class Kernel {
  private:
   struct alignas(64) TransitionState {  // all a firing needs of one transition: one cache line
     std::uint32_t terms_begin, inputs_end, conditions_end, terms_end;
-    std::uint32_t rank : 24;      // priority rank, 0 highest
+    std::uint32_t rank : 23;      // priority rank, 0 highest
+    std::uint32_t multi : 1;      // more than one server: its occurrences are kept in occ_
     std::uint32_t scripts : 8;    // TransitionScript bits
     std::int32_t held;            // index in held_, -1 when no node slot passes through
-    std::uint32_t unsat;          // terms that do not hold, +1 while occurring
+    std::uint32_t unsat;          // terms that do not hold, +1 while occurring (all servers busy)
     std::int32_t fixed_steps;     // -1 when the duration is drawn (or too long for 31 bits)
     double probability;
     std::int64_t enabled_step;    // when unsat last became 0
-    std::int64_t start_step;      // current occurrence
-    std::int64_t end_step;        // -1 when not occurring
+    std::int64_t start_step;      // current occurrence (with servers: the last started)
+    std::int64_t end_step;        // -1 when not occurring (with servers: the oldest's end)
   };
   static_assert(sizeof(TransitionState) == 64);
   struct Watch {  // one term that watches a place slot
@@ -185,6 +190,40 @@ class Kernel {
     return (a.key >> 32) != (b.key >> 32) ? (a.key >> 32) < (b.key >> 32) : a.step != b.step ? a.step < b.step : a.key < b.key;
   }
 
+  // An occurrence, as the wheel and the in_fire list name it: a transition's index, or, for a
+  // transition with servers, kOccurrenceBit | its occurrence's index in occ_.
+  using Entry = std::uint32_t;
+  static constexpr Entry kOccurrenceBit = 0x80000000u;
+  static constexpr Entry kNoEntry = 0xffffffffu;
+  struct Occurrence {  // one occurrence of a transition with servers
+    TransitionId t;
+    std::int64_t start_step, end_step;  // end_step -1 once completed
+    std::uint64_t seq;                  // start_count_ at its start, when it has in_fire
+    std::vector<std::pair<SlotId, NodeRef>> held;
+  };
+  struct Servers {  // a transition with servers
+    std::uint32_t limit;  // 0: unlimited
+    std::uint32_t busy;
+    std::deque<std::uint32_t> running;  // its occurrences by start (completed ones until they reach the front)
+  };
+  [[nodiscard]] TransitionId transitionOf(Entry e) const { return e & kOccurrenceBit ? occ_[e & ~kOccurrenceBit].t : e; }
+  [[nodiscard]] std::int64_t endOf(Entry e) const {
+    return e & kOccurrenceBit ? occ_[e & ~kOccurrenceBit].end_step : tr_[e].end_step;
+  }
+  [[nodiscard]] std::uint64_t seqOf(Entry e) const {
+    return e & kOccurrenceBit ? occ_[e & ~kOccurrenceBit].seq : start_seq_.empty() ? 0 : start_seq_[e];
+  }
+  template <bool kServers>
+  std::vector<std::pair<SlotId, NodeRef>>& heldOf(Entry e) {
+    if constexpr (kServers) return occ_[e & ~kOccurrenceBit].held;
+    else return held_[static_cast<std::size_t>(tr_[e].held)];
+  }
+  // the occurrence of `t` a question means: the one whose script runs, else the oldest (nullptr: none)
+  [[nodiscard]] const Occurrence* currentOccurrence(TransitionId t) const;
+  Entry startOccurrence(TransitionId t, std::int64_t end);  // the bookkeeping of begin() for servers
+  void endOccurrence(Entry e);                               // and of finish()
+  bool tryStart(TransitionId t, bool again);
+
   static bool holds(const SlotState& st, TermKind kind, std::int64_t weight, std::int64_t take);
   void update(PlaceSlotId ps);
   void examine(const SlotState& st, Watch& watch);
@@ -193,8 +232,12 @@ class Kernel {
   void markEnabled(TransitionId t);
   bool selectTokens(TransitionId t);
   void begin(TransitionId t);
+  template <bool kServers>
+  void beginAs(TransitionId t);
   void deposited(PlaceSlotId ps, const SlotState& st, std::int64_t count);
-  void finish(TransitionId t);
+  void finish(Entry e);
+  template <bool kServers>
+  void finishAs(Entry e);
   std::int64_t drawSteps(TransitionId t);
   void shuffleTies();
   // one round of the firing phase over candidates_: how many it went through (all, or up to
@@ -213,6 +256,9 @@ class Kernel {
   /// Rounds of immediate occurrences one firing phase takes at most (a cycle of immediate
   /// transitions would never end); what is left waits for the next step.
   static constexpr int kImmediateRounds = 10000;
+  /// Starts of one transition with servers in one turn of the firing phase, at most (scripts
+  /// that keep refilling its inputs would never end it); it goes on in the next phase.
+  static constexpr std::uint32_t kStartsPerTurn = 1'000'000;
 
   std::vector<TransitionState> tr_;
   std::vector<SlotState> slots_;                  // one more than there are slots: a sentinel
@@ -232,14 +278,19 @@ class Kernel {
     const auto& tr = tr_[static_cast<std::uint32_t>(c.key)];
     return tr.unsat == 0 && tr.enabled_step == c.step;
   }
-  std::vector<std::vector<TransitionId>> wheel_;  // completions, by end step modulo its size
-  std::vector<TransitionId> due_;
+  std::vector<std::vector<Entry>> wheel_;  // completions, by end step modulo its size
+  std::vector<Entry> due_;
   std::vector<NodeRef> moved_;  // node tokens of one event, reused
   ScriptHooks* hooks_ = nullptr;
   std::vector<std::uint8_t> cond_;                // per term: a condition that holds
   std::vector<std::uint64_t> start_seq_;        // per transition, when the net has in_fire scripts
-  std::vector<TransitionId> in_fire_;           // occurring transitions with in_fire, in start order
-  std::vector<TransitionId> in_fire_next_;
+  std::vector<Entry> in_fire_;                  // occurrences with in_fire, in start order
+  std::vector<Entry> in_fire_next_;
+  std::vector<Occurrence> occ_;                 // occurrences of transitions with servers
+  std::vector<std::uint32_t> occ_free_;         // indices in occ_ to reuse
+  std::vector<Servers> servers_;
+  std::vector<std::int32_t> servers_of_;        // per transition: index in servers_, -1 for one (empty: none has more)
+  Entry current_ = kNoEntry;                    // the occurrence whose scripts run now
   std::vector<std::vector<std::size_t>> chosen_;  // per input term of the candidate: FIFO positions picked by predicates
   std::vector<NetObserver*> observers_;
 };

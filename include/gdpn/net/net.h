@@ -91,6 +91,7 @@ struct Transition {
   std::int64_t priority = 0;       ///< higher first
   std::uint32_t priority_rank = 0; ///< 0 for the highest priority in the net, dense
   double probability = 1.0;        ///< chance to start in a step while enabled
+  std::uint32_t servers = 1;       ///< occurrences at once; 0 (kUnlimitedServers) for no limit
   std::uint32_t terms_begin = 0;   ///< first term
   std::uint32_t inputs_end = 0;    ///< end of the normal inputs
   std::uint32_t conditions_end = 0;///< end of the tests and inhibitors

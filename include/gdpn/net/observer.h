@@ -17,8 +17,10 @@ class NetObserver {
   virtual ~NetObserver() = default;
   /// `t` starts at `step`; its removals follow.
   virtual void onStart(TransitionId t, std::int64_t step) { (void)t, (void)step; }
-  /// `t` completes at `step`; its deposits follow.
-  virtual void onComplete(TransitionId t, std::int64_t step) { (void)t, (void)step; }
+  /// An occurrence of `t` that started at step `started` completes at `step`; its deposits
+  /// follow. (With servers, occurrences of one transition may complete in another order than
+  /// they started: `started` tells which one this is.)
+  virtual void onComplete(TransitionId t, std::int64_t step, std::int64_t started) { (void)t, (void)step, (void)started; }
   /// `count` tokens left place slot `ps` (the node tokens, for a node slot).
   virtual void onRemove(PlaceSlotId ps, std::int64_t count, std::span<const NodeRef> nodes,
                         std::int64_t step) {

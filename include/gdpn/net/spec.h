@@ -157,6 +157,11 @@ struct PlaceSpec {
   }
 };
 
+/// A transition's servers when any number of its occurrences may run at once.
+inline constexpr std::int64_t kUnlimitedServers = 0;
+/// The most servers a transition may have when they are limited.
+inline constexpr std::int64_t kMostServers = 1'000'000;
+
 /// A timed transition.
 struct TransitionSpec {
   std::string name;                   ///< unique on its page
@@ -168,6 +173,9 @@ struct TransitionSpec {
   SourceLoc probability_loc;          ///< where the probability was written
   std::string priority_param;         ///< the model parameter the priority comes from ("" for none)
   std::string probability_param;      ///< the model parameter the probability comes from ("" for none)
+  std::int64_t servers = 1;           ///< occurrences that may run at once; kUnlimitedServers for no limit
+  SourceLoc servers_loc;              ///< where the servers were written
+  std::string servers_param;          ///< the model parameter the servers come from ("" for none)
   ScriptSpec guard;                   ///< a Python expression; the transition may start only while it is true
   ScriptSpec pre_fire;                ///< runs when an occurrence starts
   ScriptSpec in_fire;                 ///< runs every step while occurring (self.elapsed, self.progress)
@@ -182,6 +190,7 @@ struct TransitionSpec {
     return x.name == y.name && x.description == y.description && x.duration == y.duration &&
            x.priority == y.priority && x.probability == y.probability && x.guard == y.guard &&
            x.priority_param == y.priority_param && x.probability_param == y.probability_param &&
+           x.servers == y.servers && x.servers_param == y.servers_param &&
            x.pre_fire == y.pre_fire && x.in_fire == y.in_fire && x.post_fire == y.post_fire &&
            x.position == y.position;
   }

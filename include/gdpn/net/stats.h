@@ -19,8 +19,10 @@ struct TransitionStats {
   std::int64_t cycle_sum = 0;     ///< sum of those intervals, steps
   std::int64_t cycle_min = 0;     ///< shortest interval, steps (0 when no cycle)
   std::int64_t cycle_max = 0;     ///< longest interval, steps
-  std::int64_t busy = 0;          ///< steps spent occurring
+  std::int64_t busy = 0;          ///< steps spent occurring, summed over its occurrences
   std::int64_t last_start = -1;   ///< step of the latest start, -1 if none
+  std::int64_t running = 0;       ///< occurrences started and not completed
+  std::int64_t running_starts = 0;///< sum of their start steps
 };
 
 /// Figures of one place (all its slots together) over a run.
@@ -39,7 +41,7 @@ class StatsCollector : public NetObserver {
   /// Starts counting from the initial marking of `net` at step 0.
   explicit StatsCollector(const Net& net);
   void onStart(TransitionId t, std::int64_t step) override;
-  void onComplete(TransitionId t, std::int64_t step) override;
+  void onComplete(TransitionId t, std::int64_t step, std::int64_t started) override;
   void onRemove(PlaceSlotId ps, std::int64_t count, std::span<const NodeRef> nodes, std::int64_t step) override;
   void onDeposit(PlaceSlotId ps, std::int64_t count, std::span<const NodeRef> nodes, std::int64_t step) override;
 

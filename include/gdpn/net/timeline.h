@@ -34,7 +34,7 @@ class Timeline final : public NetObserver {
   /// (occurrences and changes together; the initial tokens are not counted).
   explicit Timeline(const Net& net, std::size_t budget = kDefaultBudget);
   void onStart(TransitionId t, std::int64_t step) override;
-  void onComplete(TransitionId t, std::int64_t step) override;
+  void onComplete(TransitionId t, std::int64_t step, std::int64_t started) override;
   void onRemove(PlaceSlotId ps, std::int64_t count, std::span<const NodeRef> nodes, std::int64_t step) override;
   void onDeposit(PlaceSlotId ps, std::int64_t count, std::span<const NodeRef> nodes, std::int64_t step) override;
 

@@ -21,7 +21,7 @@ class TraceWriter : public NetObserver {
   /// Writes to `out`; times are step * `dt` seconds; `namer` names node tokens.
   TraceWriter(std::ostream& out, const Net& net, double dt, NodeNamer namer);
   void onStart(TransitionId t, std::int64_t step) override;
-  void onComplete(TransitionId t, std::int64_t step) override;
+  void onComplete(TransitionId t, std::int64_t step, std::int64_t started) override;
   void onRemove(PlaceSlotId ps, std::int64_t count, std::span<const NodeRef> nodes, std::int64_t step) override;
   void onDeposit(PlaceSlotId ps, std::int64_t count, std::span<const NodeRef> nodes, std::int64_t step) override;
   /// Writes a free event line: {"step":..,"t":..,"ev":`event`,`fields`} where `fields` is

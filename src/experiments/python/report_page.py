@@ -27,6 +27,7 @@ THROUGHPUT = ["#2ca02c", "#8c564b", "#e377c2", "#393b79", "#e6550d", "#6b6ecf"]
 MAX_PLACES = 12        # token plots
 MAX_ROWS = 30          # transitions in the Gantt chart
 MAX_BARS = 20000       # occurrences drawn in it
+MAX_LANES = 8          # lanes of one row, for occurrences at once
 MAX_SERIES = 6         # transitions in the throughput plot
 MAX_CYCLES = 20        # cycles beside their bounds
 MAX_SIGNALS = 24       # signal plots
@@ -197,16 +198,34 @@ def gantt_plot(run):
     row_of = {t: i for i, t in enumerate(rows)}
     fig, ax = plt.subplots(figsize=(WIDTH, 0.32 * len(rows) + 0.9))
     tick = max(end, run["dt"]) / 800  # an occurrence of no duration still shows
+    # occurrences of one transition that overlap (it has servers) go to lanes of its row: each
+    # to the first lane free when it starts (they come in the order they started)
     bars = {t: [] for t in rows}
+    lane_ends = {t: [] for t in rows}
     drawn = 0
     for t, s, e in occ:
         if t not in row_of or drawn >= MAX_BARS:
             continue
         stop = end if e is None else e
-        bars[t].append((s, max(stop - s, tick)))
+        width = max(stop - s, tick)
+        ends = lane_ends[t]
+        lane = next((i for i, x in enumerate(ends) if x <= s), None)
+        if lane is None and len(ends) < MAX_LANES:
+            ends.append(s)
+            lane = len(ends) - 1
+        if lane is None:  # more at once than lanes: the one that frees first
+            lane = min(range(len(ends)), key=ends.__getitem__)
+        ends[lane] = max(ends[lane], s + width)
+        bars[t].append((s, width, lane))
         drawn += 1
     for t in rows:
-        ax.broken_barh(bars[t], (row_of[t] - 0.35, 0.7), facecolors=GANTT, edgecolor="none")
+        lanes = max(1, len(lane_ends[t]))
+        height = 0.7 / lanes
+        for lane in range(lanes):
+            spans = [(s, w) for s, w, k in bars[t] if k == lane]
+            top = row_of[t] - 0.35 + lane * height
+            ax.broken_barh(spans, (top + 0.04 * height if lanes > 1 else top, height * (0.92 if lanes > 1 else 1)),
+                           facecolors=GANTT, edgecolor="none")
     ax.set_yticks(range(len(rows)), [short(names[t], 30) for t in rows])
     ax.set_ylim(len(rows) - 0.5, -0.5)
     ax.set_xlim(0, end if end > 0 else 1)
@@ -360,7 +379,8 @@ def page(text):
         sections.append(("figures", "The model's figures", body_, "What the model's summary() returns."))
     plots = [
         ("tokens", "Tokens over time", tokens_plot, "Each place's tokens (all its slots) over the run."),
-        ("gantt", "Transition occurrences", gantt_plot, "Each bar is one occurrence, from its start to its completion."),
+        ("gantt", "Transition occurrences", gantt_plot, "Each bar is one occurrence, from its start to its completion; occurrences of one transition "
+         "that overlap (it has servers) share its row in lanes."),
         ("throughput", "Throughput over time", throughput_plot, "Occurrences completed since the start."),
         ("cycles", "Cycle times and their bounds", cycles_plot,
          "Each cycle of the net (a P-invariant carrying tokens): the bound from its durations (grey) beside "
@@ -385,14 +405,19 @@ def page(text):
         if anchor in ("tokens", "gantt", "throughput") and cut:
             content += f'<p class="note">{esc(cut)}</p>'
         sections.append((anchor, title_, content, esc(caption)))
+    # with servers: the occurrences at once, averaged, beside the share of servers busy
+    servers = any("servers" in t for t in run["transitions"])
     rows = [(t["name"], t["occurrences"], number(t["mean_cycle"]) if t["cycles"] else "–",
              number(t["min_cycle"]) if t["cycles"] else "–", number(t["max_cycle"]) if t["cycles"] else "–",
-             f"{100 * t['utilisation']:.1f} %") for t in run["transitions"]]
+             "–" if t["utilisation"] is None else f"{100 * t['utilisation']:.1f} %")
+            + ((f"{t.get('mean_busy', t['utilisation']):.2f}", str(t.get("servers", 1))) if servers else ())
+            for t in run["transitions"]]
     if run["transitions"]:
+        head = ["transition", "occurrences", "mean cycle (s)", "min (s)", "max (s)", "busy"]
         sections.append(("transitions", "Transitions",
-                         table(["transition", "occurrences", "mean cycle (s)", "min (s)", "max (s)", "busy"],
+                         table(head + (["at once", "servers"] if servers else []),
                                [tuple(number(c) if isinstance(c, int) else c for c in r) for r in rows],
-                               [False, True, True, True, True, True]), ""))
+                               [False] + [True] * (len(head) - 1 + (2 if servers else 0))), ""))
     rows = [(p["name"] + (" (sensor)" if p["sensors_only"] else ""), number(p["mean_tokens"]),
              number(p["max_tokens"]), number(p["final_tokens"]), number(p["throughput"]))
             for p in run["places"]]

@@ -547,16 +547,33 @@ void editTransition(App& app, const ConstructAt& at, const net::TransitionSpec& 
   noteItem("probability", fields);
   const bool probability_changed = ImGui::IsItemDeactivatedAfterEdit();
   paramNote(t.probability_param);
-  if (changed || priority_changed || probability_changed) {
+  // servers: how many occurrences at once; "unlimited" greys the number out
+  bool unlimited = t.servers == net::kUnlimitedServers;
+  int servers = unlimited ? 1 : static_cast<int>(t.servers);
+  ImGui::BeginDisabled(unlimited);
+  ImGui::SetNextItemWidth(90);
+  ImGui::InputInt("servers", &servers, 0, 0);
+  ImGui::EndDisabled();
+  noteItem("servers", fields);
+  bool servers_changed = ImGui::IsItemDeactivatedAfterEdit();
+  paramNote(t.servers_param);
+  ImGui::SameLine();
+  servers_changed = ImGui::Checkbox("unlimited", &unlimited) || servers_changed;
+  noteItem("unlimited", fields);
+  if (changed || priority_changed || probability_changed || servers_changed) {
     auto next = t;
     // a value typed in no longer comes from the parameter it named
     if (d.a != t.duration.a) d.params[0].clear();
     if (d.b != t.duration.b) d.params[1].clear();
     if (priority != t.priority) next.priority_param.clear();
     if (probability != t.probability) next.probability_param.clear();
+    // a number typed below 1 is not "unlimited" (the spec's 0): it goes on to be refused
+    const std::int64_t servers_now = unlimited ? net::kUnlimitedServers : servers >= 1 ? servers : -1;
+    if (servers_now != t.servers) next.servers_param.clear();
     next.duration = d;
     next.priority = priority;
     next.probability = probability;
+    next.servers = servers_now;
     commitTransition(app, at, std::move(next));
   }
   report["duration"] = durationText(t.duration);

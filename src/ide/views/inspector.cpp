@@ -309,8 +309,16 @@ void runState(App& app, const session::Session& session, const Selection& sel, n
     if (t < 0) return;
     const auto id = static_cast<net::TransitionId>(t);
     const auto& tr = sim.net().transitions()[static_cast<std::size_t>(t)];
-    const char* state = sim.kernel().occurring(id) ? "occurring" : sim.kernel().enabled(id) ? "enabled" : "not enabled";
-    ImGui::Text("%s", state);
+    const auto& kernel = sim.kernel();
+    std::string state = kernel.occurring(id) ? "occurring" : kernel.enabled(id) ? "enabled" : "not enabled";
+    if (tr.servers != 1) {
+      // with servers: how many run, of how many, and whether another may start
+      const std::string busy = std::to_string(kernel.occurrences(id));
+      state = tr.servers == net::kUnlimitedServers ? busy + " occurring (servers unlimited)"
+                                                   : busy + " of " + std::to_string(tr.servers) + " servers busy";
+      if (kernel.enabled(id)) state += ", enabled";
+    }
+    ImGui::Text("%s", state.c_str());
     // in edit mode the contents view below has them as fields
     if (app.run().mode() != RunMode::Edit) {
       ImGui::Text("priority %lld, probability %g", static_cast<long long>(tr.priority), tr.probability);
