@@ -86,6 +86,9 @@ def test_values_are_checked_before_any_run(queue):
         gdpn.sweep(queue, {"gap": "1..0"}, workers=0)
     with pytest.raises(gdpn.SweepError, match="expected a number, got 'fast'"):
         gdpn.sweep(queue, {"gap": "0.5,fast"}, workers=0)
+    # a name the model does not declare, or a value its parameter refuses, before any run
+    with pytest.raises(gdpn.SweepError, match=r"no parameter 'gapp' in .*queue.gdpn.yaml \(did you mean 'gap'\?\)"):
+        gdpn.sweep(queue, {"gapp": [1, 2]}, workers=0)
     parse = gdpn.sweep.__globals__["parse_values"]
     assert parse("x", "0.1..0.5:0.1") == [0.1, 0.2, 0.3, 0.4, 0.5]
     assert parse("x", "1..3:0.5,10") == [1, 1.5, 2, 2.5, 3, 10]

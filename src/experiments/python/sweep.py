@@ -357,6 +357,26 @@ def _csv(columns, rows):
     return out.getvalue()
 
 
+def _check(gdpn, model, values):
+    """Checks the model with each parameter at each of its values before any run, so that a
+    misspelt name or a value the parameter refuses (a decimal for a whole number) is one
+    error, not a failure of every run. What the model makes of a value (a negative duration)
+    stays the failure of the runs with it."""
+    if not values:
+        return
+    for k in range(max(len(v) for v in values.values())):
+        command = [gdpn, "check", model]
+        for name, vs in values.items():
+            command += ["--param", f"{name}={_format(vs[min(k, len(vs) - 1)])}"]
+        try:
+            done = subprocess.run(command, capture_output=True, text=True, timeout=600)
+        except (OSError, subprocess.TimeoutExpired) as e:
+            raise SweepError(f"{gdpn} check {model}: {e}") from None
+        refused = [line for line in done.stderr.splitlines() if line.startswith("--param: error:")]
+        if done.returncode != 0 and refused:
+            raise SweepError(refused[0])
+
+
 def run_sweep(gdpn, model, params, seeds=1, seed=1, until=None, workers=None, scheduler=None, progress=False,
               timeout=None, param_units=None):
     """Runs the sweep and returns a Sweep. `params`: name -> list of numbers or a SPEC text
@@ -378,6 +398,7 @@ def run_sweep(gdpn, model, params, seeds=1, seed=1, until=None, workers=None, sc
     if not os.path.exists(model):
         raise SweepError(f"{model}: no such model file or folder")
     model = os.path.abspath(model)
+    _check(gdpn, model, values)
     total = math.prod(len(v) for v in values.values()) * seeds
     if total > 1_000_000:
         raise SweepError(f"{total} runs; at most 1000000 in one sweep")
