@@ -35,16 +35,21 @@ std::shared_ptr<const Net> ring(std::int64_t n, std::int64_t tokens) {
   return b.freeze();
 }
 
-// ring of N places and N transitions holding N/10 tokens: every step, N/10 firings
-void BM_RingFirings(benchmark::State& state) {
-  const auto n = state.range(0);
-  Kernel k(ring(n, n / 10), {0.01, 1});
-  k.start();
+/// Steps `k` for the benchmark's iterations and reports its firings per second and per step.
+void stepAndCount(benchmark::State& state, Kernel& k) {
   const auto before = k.startCount();
   for (auto _ : state) k.step();
   const auto firings = static_cast<double>(k.startCount() - before);
   state.counters["firings_per_s"] = benchmark::Counter(firings, benchmark::Counter::kIsRate);
   state.counters["firings_per_step"] = firings / static_cast<double>(state.iterations());
+}
+
+// ring of N places and N transitions holding N/10 tokens: every step, N/10 firings
+void BM_RingFirings(benchmark::State& state) {
+  const auto n = state.range(0);
+  Kernel k(ring(n, n / 10), {0.01, 1});
+  k.start();
+  stepAndCount(state, k);
 }
 BENCHMARK(BM_RingFirings)->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMicrosecond);
 
@@ -63,13 +68,32 @@ void BM_UnlimitedServersFirings(benchmark::State& state) {
   Kernel k(b.freeze(), {0.01, 1});
   k.start();
   for (int i = 0; i < 200; ++i) k.step();  // past the first wave: starts spread over the steps
-  const auto before = k.startCount();
-  for (auto _ : state) k.step();
-  const auto firings = static_cast<double>(k.startCount() - before);
-  state.counters["firings_per_s"] = benchmark::Counter(firings, benchmark::Counter::kIsRate);
-  state.counters["firings_per_step"] = firings / static_cast<double>(state.iterations());
+  stepAndCount(state, k);
 }
 BENCHMARK(BM_UnlimitedServersFirings)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMicrosecond);
+
+// N instances of P -> I (immediate) -> Q -> T (one step) -> P, one token each: every other
+// step N immediate occurrences in one firing phase, each ending a round. The cost per
+// firing should not grow with N.
+void BM_ImmediateInstancesFirings(benchmark::State& state) {
+  const auto n = state.range(0);
+  NetBuilder b;
+  for (std::int64_t i = 0; i < n; ++i) {
+    const auto p = b.addPlace(numbered("p", i)), q = b.addPlace(numbered("q", i));
+    b.setSlot(p, kDefaultSlot, SlotKind::Control, kUnbounded, 1);
+    b.setSlot(q, kDefaultSlot, SlotKind::Control, kUnbounded, 0);
+    const auto imm = b.addTransition(numbered("i", i), Duration{Duration::Law::Immediate, 0.0, 0.0, {}});
+    const auto t = b.addTransition(numbered("t", i));
+    b.addInput(p, imm);
+    b.addOutput(imm, q);
+    b.addInput(q, t);
+    b.addOutput(t, p);
+  }
+  Kernel k(b.freeze(), {0.01, 1});
+  k.start();
+  stepAndCount(state, k);
+}
+BENCHMARK(BM_ImmediateInstancesFirings)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMicrosecond);
 
 // constant activity (100 tokens circulating) in nets of growing size: a step must cost the same
 void BM_StepConstantActivity(benchmark::State& state) {

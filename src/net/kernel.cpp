@@ -686,44 +686,13 @@ void Kernel::fireEnabled() {
     candidates_.push_back(best);
   }
 
-  if (random_ties_) shuffleTies();
-  std::size_t done = startCandidates();
-  // immediate transitions: a round ends when one completes; the candidates not yet taken and
-  // the transitions enabled since then take a further round, in order, until none is left
-  // (or the rounds run out: what is left then waits for the next step)
-  int rounds = 0;
-  while (immediate_fired_ && rounds < kImmediateRounds) {
-    immediate_fired_ = false;
-    // only entries still valid (enabled, at the step they name), each once: a cycle of
-    // immediates re-enabling a transition must not pile up its entries. The immediate
-    // transition itself (the last one taken) stays a candidate while it has free servers.
-    next_.clear();
-    for (std::size_t i = done - 1; i < candidates_.size(); ++i) {
-      if (valid(candidates_[i])) next_.push_back(candidates_[i]);
-    }
-    for (const std::uint64_t key : late_) {
-      if (valid({key, step_})) next_.push_back({key, step_});
-    }
-    late_.clear();
-    if (next_.empty()) break;
-    ++rounds;
-    std::sort(next_.begin(), next_.end(), candidateBefore);
-    next_.erase(std::unique(next_.begin(), next_.end(),
-                            [](const Carry& a, const Carry& b) { return a.key == b.key && a.step == b.step; }),
-                next_.end());
-    candidates_.swap(next_);
-    if (random_ties_) shuffleTies();
-    done = startCandidates();
-  }
-  // candidates a last round left untaken stay enabled: they are carried to the next phase
-  for (std::size_t i = immediate_fired_ ? done - 1 : done; i < candidates_.size(); ++i) {
-    if (valid(candidates_[i])) carry_next_.push_back(candidates_[i]);
-  }
+  if (random_ties_) shuffleTies(candidates_);
+  const bool rounds = startCandidates();
   immediate_fired_ = false;
   fresh_.clear();
   late_now_.clear();
   // the next phase merges the carried candidates as a sorted sequence
-  if (random_ties_ || rounds > 0) std::sort(carry_next_.begin(), carry_next_.end(), candidateBefore);
+  if (random_ties_ || rounds) std::sort(carry_next_.begin(), carry_next_.end(), candidateBefore);
   carry_.swap(carry_next_);
   in_firing_ = false;
 }
@@ -745,53 +714,102 @@ inline bool Kernel::tryStart(TransitionId t, bool again) {
   return true;
 }
 
-std::size_t Kernel::startCandidates() {
+bool Kernel::startCandidates() {
+  // the candidates in order, and what immediate occurrences enabled since the phase began
+  // (extra_, in order), merged as they are taken
   const std::size_t n = candidates_.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    prefetchAhead(i, n, [this](std::size_t k) { return indexOf(candidates_[k].key); });
-    const auto [key, when] = candidates_[i];
-    const TransitionId t = indexOf(key);
+  std::size_t pos = 0, xpos = 0;
+  extra_.clear();
+  std::int64_t rounds = 0;
+  const std::int64_t most_rounds = kImmediateRounds + 4 * static_cast<std::int64_t>(tr_.size());
+  Carry last{~std::uint64_t{0}, -1};
+  while (pos < n || xpos < extra_.size()) {
+    const bool extra = xpos < extra_.size() && (pos >= n || extraBefore(extra_[xpos], candidates_[pos]));
+    if (!extra) prefetchAhead(pos, n, [this](std::size_t k) { return indexOf(candidates_[k].key); });
+    const Carry c = extra ? extra_[xpos++] : candidates_[pos++];
+    const TransitionId t = indexOf(c.key);
     TransitionState& tr = tr_[t];
     // stale entries: disabled since, or re-enabled later (a newer entry exists); the same
-    // entry twice (enabled, disabled and enabled again in one phase) is adjacent in the order
-    if (tr.unsat != 0 || tr.enabled_step != when) continue;
-    if (i > 0 && candidates_[i - 1].key == key && candidates_[i - 1].step == when) continue;
+    // entry twice (enabled, disabled and enabled again in one phase) comes twice in a row
+    const bool again = c.key == last.key && c.step == last.step;
+    last = c;
+    if (tr.unsat != 0 || tr.enabled_step != c.step || again) continue;
     // condition 5, predicates and probability: one that does not start waits, still enabled
     if (!tryStart(t, false)) {
-      carry_next_.push_back({key, when});
+      carry_next_.push_back(c);
       continue;
     }
-    if (immediate_fired_) return i + 1;  // what it enabled may go before the rest
-    if (!tr.multi) continue;
     // a transition with servers starts again while it stays enabled and a server is free
-    for (std::uint32_t k = 1; tr.unsat == 0; ++k) {
+    for (std::uint32_t k = 1; tr.multi && tr.unsat == 0 && !immediate_fired_; ++k) {
       if (k == kStartsPerTurn || !tryStart(t, true)) {
-        carry_next_.push_back({key, when});
+        carry_next_.push_back(c);
         break;
       }
-      if (immediate_fired_) return i + 1;
     }
+    if (!immediate_fired_) continue;
+    // an immediate occurrence completed: what it enabled may go before the rest, and the
+    // immediate transition itself stays a candidate while it is enabled (servers left)
+    immediate_fired_ = false;
+    if (++rounds > most_rounds) {
+      // a cycle of immediate transitions: what is left waits for the next step
+      if (valid(c)) carry_next_.push_back(c);
+      break;
+    }
+    addExtras(c, xpos);
+    xpos = 0;
+    last = {~std::uint64_t{0}, -1};
   }
-  return n;
+  // what the rounds left (they ran out) stays enabled: carried to the next phase
+  for (; pos < n; ++pos) {
+    if (valid(candidates_[pos])) carry_next_.push_back(candidates_[pos]);
+  }
+  for (; xpos < extra_.size(); ++xpos) {
+    if (valid(extra_[xpos])) carry_next_.push_back(extra_[xpos]);
+  }
+  return rounds > 0;
 }
 
-void Kernel::shuffleTies() {
+void Kernel::addExtras(const Carry& fired, std::size_t xpos) {
+  // only entries still valid (enabled, at the step they name), each once: a cycle of
+  // immediates re-enabling a transition must not pile up its entries
+  next_.clear();
+  if (valid(fired)) next_.push_back(fired);
+  for (const std::uint64_t key : late_) {
+    if (valid({key, step_})) next_.push_back({key, step_});
+  }
+  late_.clear();
+  std::sort(next_.begin(), next_.end(), candidateBefore);
+  if (random_ties_) {
+    shuffleTies(next_);
+  } else {
+    next_.erase(std::unique(next_.begin(), next_.end(),
+                            [](const Carry& a, const Carry& b) { return a.key == b.key && a.step == b.step; }),
+                next_.end());
+  }
+  // merged with the extras not yet taken (those first among equals)
+  merged_.clear();
+  std::merge(extra_.begin() + static_cast<std::ptrdiff_t>(xpos), extra_.end(), next_.begin(), next_.end(),
+             std::back_inserter(merged_), [this](const Carry& a, const Carry& b) { return extraBefore(a, b); });
+  extra_.swap(merged_);
+}
+
+void Kernel::shuffleTies(std::vector<Carry>& candidates) {
   // an entry listed twice (enabled, disabled and enabled again) is kept once
-  candidates_.erase(std::unique(candidates_.begin(), candidates_.end(),
-                                [](const Carry& a, const Carry& b) { return a.key == b.key && a.step == b.step; }),
-                    candidates_.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end(),
+                               [](const Carry& a, const Carry& b) { return a.key == b.key && a.step == b.step; }),
+                   candidates.end());
   // each run of equal priority and time enabled in an order drawn from the generator
   // (Fisher-Yates, the last position first): one draw per candidate beyond the first of a run
-  const std::size_t n = candidates_.size();
+  const std::size_t n = candidates.size();
   for (std::size_t begin = 0, end = 0; begin < n; begin = end) {
     end = begin + 1;
-    while (end < n && rankOf(candidates_[end].key) == rankOf(candidates_[begin].key) &&
-           candidates_[end].step == candidates_[begin].step) {
+    while (end < n && rankOf(candidates[end].key) == rankOf(candidates[begin].key) &&
+           candidates[end].step == candidates[begin].step) {
       ++end;
     }
     for (std::size_t i = end - 1; i > begin; --i) {
       const auto j = begin + static_cast<std::size_t>(random_.below(i - begin + 1));
-      std::swap(candidates_[i], candidates_[j]);
+      std::swap(candidates[i], candidates[j]);
     }
   }
 }

@@ -478,10 +478,36 @@ TEST(NetKernel, ACycleOfImmediateTransitionsEndsTheStepAfterItsRoundsAndGoesOnIn
   Kernel k(b.freeze(), {0.1, 1});
   k.start();
   const auto first = k.startCount();
-  EXPECT_EQ(first, 10001U);  // the phase's first pass and its 10,000 rounds
+  EXPECT_EQ(first, 10009U);  // the phase's first pass and its 10,000 + 4 x 2 (transitions) rounds
   k.step();
   EXPECT_EQ(k.startCount(), 2 * first);
   EXPECT_EQ(tokens(k, "P") + tokens(k, "Q"), 1);
+}
+
+TEST(NetKernel, ImmediateTransitionsOfManyInstancesAllFireInTheirPhase) {
+  // 20,000 instances of P -> I (immediate) -> Q: each I ends a round, and all of them fire at
+  // time 0 (the rounds allowed grow with the net; a cycle of immediates is still cut)
+  NetBuilder b;
+  constexpr int kInstances = 20000;
+  for (int i = 0; i < kInstances; ++i) {
+    const auto p = b.addPlace("P" + std::to_string(i)), q = b.addPlace("Q" + std::to_string(i));
+    b.setSlot(p, kDefaultSlot, kControl, kUnbounded, 1);
+    b.setSlot(q, kDefaultSlot, kControl, kUnbounded, 0);
+    const auto t = b.addTransition("I" + std::to_string(i), immediate(), i % 3);
+    b.addInput(p, t);
+    b.addOutput(t, q);
+  }
+  Kernel k(b.freeze(), {0.1, 1});
+  Recorder rec(k.net());
+  k.addObserver(&rec);
+  k.start();
+  EXPECT_EQ(k.startCount(), static_cast<std::uint64_t>(kInstances));
+  EXPECT_TRUE(k.dead());
+  // by priority (i % 3, highest first), then declaration
+  ASSERT_EQ(rec.starts.size(), static_cast<std::size_t>(kInstances));
+  EXPECT_EQ(rec.starts[0].first, "I2");
+  EXPECT_EQ(rec.starts[1].first, "I5");
+  EXPECT_EQ(rec.starts.back().first, "I19998");
 }
 
 TEST(NetKernel, AtMostOneStartPerStepAndOneOccurrenceAtATime) {

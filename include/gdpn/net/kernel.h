@@ -239,10 +239,20 @@ class Kernel {
   template <bool kServers>
   void finishAs(Entry e);
   std::int64_t drawSteps(TransitionId t);
-  void shuffleTies();
-  // one round of the firing phase over candidates_: how many it went through (all, or up to
-  // an immediate occurrence's completion)
-  std::size_t startCandidates();
+  // each run of `candidates` (in order) tied on priority and time enabled, in a drawn order
+  void shuffleTies(std::vector<Carry>& candidates);
+  // the firing phase's starts over candidates_ and, as immediate occurrences enable them,
+  // extra_: whether an immediate occurrence took a round
+  bool startCandidates();
+  // after an immediate occurrence of the entry `fired`: it (when still enabled) and what was
+  // enabled since join the extras not yet taken (extra_ from `xpos`), in order
+  void addExtras(const Carry& fired, std::size_t xpos);
+  // whether extra entry `x` goes before candidate `c`: in the firing order, or, with random
+  // ties, only before a candidate of a later (priority, time enabled) group
+  [[nodiscard]] bool extraBefore(const Carry& x, const Carry& c) const {
+    if (!random_ties_) return candidateBefore(x, c);
+    return (x.key >> 32) != (c.key >> 32) ? (x.key >> 32) < (c.key >> 32) : x.step < c.step;
+  }
 
   std::shared_ptr<const Net> net_;
   const Term* terms_ = nullptr;
@@ -253,9 +263,10 @@ class Kernel {
   bool in_firing_ = false;
   bool random_ties_ = false;
   bool immediate_fired_ = false;  // an immediate occurrence completed in this round
-  /// Rounds of immediate occurrences one firing phase takes at most (a cycle of immediate
-  /// transitions would never end); what is left waits for the next step.
-  static constexpr int kImmediateRounds = 10000;
+  /// Rounds of immediate occurrences one firing phase takes at most, beyond 4 per transition
+  /// of the net (a cycle of immediate transitions would never end); what is left waits for
+  /// the next step.
+  static constexpr std::int64_t kImmediateRounds = 10000;
   /// Starts of one transition with servers in one turn of the firing phase, at most (scripts
   /// that keep refilling its inputs would never end it); it goes on in the next phase.
   static constexpr std::uint32_t kStartsPerTurn = 1'000'000;
@@ -271,7 +282,8 @@ class Kernel {
   std::vector<std::uint64_t> fresh_, late_, late_now_, scratch_;  // keys: rank << 32 | t
   std::vector<Carry> carry_, carry_next_;
   std::vector<Carry> candidates_;  // one firing phase's candidates, in order
-  std::vector<Carry> next_;        // the next round's, after an immediate occurrence
+  std::vector<Carry> extra_;       // entries immediate occurrences enabled in this phase, in order
+  std::vector<Carry> next_, merged_;  // addExtras()'s new entries, and the merge
   std::vector<std::int64_t> drawn_;  // per transition: the step of its last probability draw (-1: none)
   // an entry that still stands: its transition enabled since the step it names
   [[nodiscard]] bool valid(const Carry& c) const {
