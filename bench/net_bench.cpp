@@ -72,7 +72,7 @@ void BM_UnlimitedServersFirings(benchmark::State& state) {
 }
 BENCHMARK(BM_UnlimitedServersFirings)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMicrosecond);
 
-// N instances of P -> I (immediate) -> Q -> T (one step) -> P, one token each: every other
+// N instances of P -> I (immediate, priority 1) -> Q -> T (one step) -> P, one token each: every other
 // step N immediate occurrences in one firing phase, each ending a round. The cost per
 // firing should not grow with N.
 void BM_ImmediateInstancesFirings(benchmark::State& state) {
@@ -82,7 +82,7 @@ void BM_ImmediateInstancesFirings(benchmark::State& state) {
     const auto p = b.addPlace(numbered("p", i)), q = b.addPlace(numbered("q", i));
     b.setSlot(p, kDefaultSlot, SlotKind::Control, kUnbounded, 1);
     b.setSlot(q, kDefaultSlot, SlotKind::Control, kUnbounded, 0);
-    const auto imm = b.addTransition(numbered("i", i), Duration{Duration::Law::Immediate, 0.0, 0.0, {}});
+    const auto imm = b.addTransition(numbered("i", i), Duration{Duration::Law::Immediate, 0.0, 0.0, {}}, 1);
     const auto t = b.addTransition(numbered("t", i));
     b.addInput(p, imm);
     b.addOutput(imm, q);

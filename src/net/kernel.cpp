@@ -80,7 +80,7 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
     if (spec.servers != 1) {
       if (servers_of_.empty()) servers_of_.assign(count, -1);
       servers_of_[t] = static_cast<std::int32_t>(servers_.size());
-      servers_.push_back({spec.servers, 0, {}});
+      servers_.push_back({spec.servers, 0, kNoOccurrence, kNoOccurrence});
     }
     st.scripts = spec.scripts;
     if ((spec.scripts & kInFire) && start_seq_.empty()) start_seq_.assign(count, 0);
@@ -280,8 +280,8 @@ const Kernel::Occurrence* Kernel::currentOccurrence(TransitionId t) const {
   if ((current_ & kOccurrenceBit) && current_ != kNoEntry && occ_[current_ & ~kOccurrenceBit].t == t) {
     return &occ_[current_ & ~kOccurrenceBit];
   }
-  const auto& running = servers_[static_cast<std::size_t>(servers_of_[t])].running;
-  return running.empty() ? nullptr : &occ_[running.front()];
+  const auto oldest = servers_[static_cast<std::size_t>(servers_of_[t])].oldest;
+  return oldest == kNoOccurrence ? nullptr : &occ_[oldest];
 }
 
 std::size_t Kernel::occurrences(TransitionId t) const {
@@ -411,28 +411,32 @@ Kernel::Entry Kernel::startOccurrence(TransitionId t, std::int64_t end) {
   }
   Occurrence& occ = occ_[o];
   occ.t = t;
+  occ.prev = sv.newest;
+  occ.next = kNoOccurrence;
   occ.start_step = step_;
   occ.end_step = end;
+  occ.start_idle = idle_;
   occ.seq = 0;
   occ.held.clear();
-  sv.running.push_back(o);
-  tr.end_step = occ_[sv.running.front()].end_step;
+  (sv.newest == kNoOccurrence ? sv.oldest : occ_[sv.newest].next) = o;
+  sv.newest = o;
+  tr.end_step = occ_[sv.oldest].end_step;
   return kOccurrenceBit | o;
 }
 
 void Kernel::endOccurrence(Entry e) {
+  // out of its transition's list, and free to reuse at once (no wheel or in_fire entry names it)
   const std::uint32_t o = e & ~kOccurrenceBit;
-  const TransitionId t = occ_[o].t;
+  Occurrence& occ = occ_[o];
+  const TransitionId t = occ.t;
   TransitionState& tr = tr_[t];
   Servers& sv = servers_[static_cast<std::size_t>(servers_of_[t])];
-  occ_[o].end_step = -1;
-  occ_[o].held.clear();
-  // completed occurrences leave the list (and are reused) once they reach its front
-  while (!sv.running.empty() && occ_[sv.running.front()].end_step < 0) {
-    occ_free_.push_back(sv.running.front());
-    sv.running.pop_front();
-  }
-  tr.end_step = sv.running.empty() ? -1 : occ_[sv.running.front()].end_step;
+  (occ.prev == kNoOccurrence ? sv.oldest : occ_[occ.prev].next) = occ.next;
+  (occ.next == kNoOccurrence ? sv.newest : occ_[occ.next].prev) = occ.prev;
+  occ.end_step = -1;
+  occ.held.clear();
+  occ_free_.push_back(o);
+  tr.end_step = sv.oldest == kNoOccurrence ? -1 : occ_[sv.oldest].end_step;
   if (sv.busy-- == sv.limit && --tr.unsat == 0) markEnabled(t);
 }
 
@@ -449,6 +453,7 @@ void Kernel::beginAs(TransitionId t) {
   ++occurring_count_;
   ++start_count_;
   tr.start_step = step_;
+  if (!start_idle_.empty()) start_idle_[t] = idle_;
   const std::int64_t lasts = tr.fixed_steps >= 0 ? tr.fixed_steps : drawSteps(t);
   const std::int64_t end = step_ + lasts;
   Entry entry = t;
@@ -538,7 +543,10 @@ void Kernel::finishAs(Entry e) {
   const TransitionId t = kServers ? occ_[e & ~kOccurrenceBit].t : e;
   TransitionState& tr = tr_[t];
   if (!observers_.empty()) {
-    const std::int64_t started = (kServers ? occ_[e & ~kOccurrenceBit].start_step : tr.start_step) + idle_;
+    // the step onStart saw: the start plus the idle steps before it
+    const std::int64_t started =
+        kServers ? occ_[e & ~kOccurrenceBit].start_step + occ_[e & ~kOccurrenceBit].start_idle
+                 : tr.start_step + (start_idle_.empty() ? idle_ : start_idle_[t]);
     for (auto* o : observers_) o->onComplete(t, steps(), started);
   }
   // scripts (post_fire, on_deposit) see this occurrence as self's
@@ -716,26 +724,43 @@ inline bool Kernel::tryStart(TransitionId t, bool again) {
 
 bool Kernel::startCandidates() {
   // the candidates in order, and what immediate occurrences enabled since the phase began
-  // (extra_, in order), merged as they are taken
+  // (extra_, a heap: the next to take in front), merged as they are taken
   const std::size_t n = candidates_.size();
-  std::size_t pos = 0, xpos = 0;
+  std::size_t pos = 0;
   extra_.clear();
   std::int64_t rounds = 0;
   const std::int64_t most_rounds = kImmediateRounds + 4 * static_cast<std::int64_t>(tr_.size());
+  ++phase_;
   Carry last{~std::uint64_t{0}, -1};
-  while (pos < n || xpos < extra_.size()) {
-    const bool extra = xpos < extra_.size() && (pos >= n || extraBefore(extra_[xpos], candidates_[pos]));
-    if (!extra) prefetchAhead(pos, n, [this](std::size_t k) { return indexOf(candidates_[k].key); });
-    const Carry c = extra ? extra_[xpos++] : candidates_[pos++];
+  TransitionId resume = kNoEntry;  // an immediate transition with servers whose turn goes on
+  while (pos < n || !extra_.empty()) {
+    const bool extra = !extra_.empty() && (pos >= n || extraBefore(extra_.front().c, candidates_[pos]));
+    Carry c{};
+    if (extra) {
+      c = extra_.front().c;
+      std::pop_heap(extra_.begin(), extra_.end(), [this](const Extra& x, const Extra& y) { return extraAfter(x, y); });
+      extra_.pop_back();
+    } else {
+      prefetchAhead(pos, n, [this](std::size_t k) { return indexOf(candidates_[k].key); });
+      c = candidates_[pos++];
+    }
     const TransitionId t = indexOf(c.key);
     TransitionState& tr = tr_[t];
     // stale entries: disabled since, or re-enabled later (a newer entry exists); the same
-    // entry twice (enabled, disabled and enabled again in one phase) comes twice in a row
-    const bool again = c.key == last.key && c.step == last.step;
+    // entry twice (enabled, disabled and enabled again in one phase) comes twice in a row,
+    // or, with random ties, was stamped when taken
+    bool again = c.key == last.key && c.step == last.step;
     last = c;
-    if (tr.unsat != 0 || tr.enabled_step != c.step || again) continue;
+    if (random_ties_ && !again) {
+      if (taken_phase_.empty()) taken_phase_.assign(tr_.size(), 0), taken_step_.assign(tr_.size(), -1);
+      again = taken_phase_[t] == phase_ && taken_step_[t] == c.step;
+      taken_phase_[t] = phase_;
+      taken_step_[t] = c.step;
+    }
+    const bool resumed = std::exchange(resume, kNoEntry) == t;
+    if (tr.unsat != 0 || tr.enabled_step != c.step || (again && !resumed)) continue;
     // condition 5, predicates and probability: one that does not start waits, still enabled
-    if (!tryStart(t, false)) {
+    if (!tryStart(t, resumed)) {
       carry_next_.push_back(c);
       continue;
     }
@@ -755,21 +780,22 @@ bool Kernel::startCandidates() {
       if (valid(c)) carry_next_.push_back(c);
       break;
     }
-    addExtras(c, xpos);
-    xpos = 0;
+    if (tr.multi && valid(c)) resume = t;
+    addExtras(c);
     last = {~std::uint64_t{0}, -1};
   }
   // what the rounds left (they ran out) stays enabled: carried to the next phase
   for (; pos < n; ++pos) {
     if (valid(candidates_[pos])) carry_next_.push_back(candidates_[pos]);
   }
-  for (; xpos < extra_.size(); ++xpos) {
-    if (valid(extra_[xpos])) carry_next_.push_back(extra_[xpos]);
+  for (const Extra& x : extra_) {
+    if (valid(x.c)) carry_next_.push_back(x.c);
   }
+  extra_.clear();
   return rounds > 0;
 }
 
-void Kernel::addExtras(const Carry& fired, std::size_t xpos) {
+void Kernel::addExtras(const Carry& fired) {
   // only entries still valid (enabled, at the step they name), each once: a cycle of
   // immediates re-enabling a transition must not pile up its entries
   next_.clear();
@@ -781,16 +807,18 @@ void Kernel::addExtras(const Carry& fired, std::size_t xpos) {
   std::sort(next_.begin(), next_.end(), candidateBefore);
   if (random_ties_) {
     shuffleTies(next_);
+    if (valid(fired)) taken_phase_[indexOf(fired.key)] = 0;  // it is to be taken again
   } else {
     next_.erase(std::unique(next_.begin(), next_.end(),
                             [](const Carry& a, const Carry& b) { return a.key == b.key && a.step == b.step; }),
                 next_.end());
   }
-  // merged with the extras not yet taken (those first among equals)
-  merged_.clear();
-  std::merge(extra_.begin() + static_cast<std::ptrdiff_t>(xpos), extra_.end(), next_.begin(), next_.end(),
-             std::back_inserter(merged_), [this](const Carry& a, const Carry& b) { return extraBefore(a, b); });
-  extra_.swap(merged_);
+  // into the heap of extras, each numbered in the order it came (with random ties, after
+  // those already waiting in its group)
+  for (const Carry& c : next_) {
+    extra_.push_back({c, extra_count_++});
+    std::push_heap(extra_.begin(), extra_.end(), [this](const Extra& x, const Extra& y) { return extraAfter(x, y); });
+  }
 }
 
 void Kernel::shuffleTies(std::vector<Carry>& candidates) {
@@ -864,7 +892,7 @@ std::size_t Kernel::memoryBytes() const {
   for (const auto& h : held_) bytes += sizeof(h) + h.capacity() * sizeof(h[0]);
   for (const auto& o : occ_) bytes += sizeof(o) + o.held.capacity() * sizeof(o.held[0]);
   bytes += occ_free_.capacity() * sizeof(std::uint32_t) + servers_of_.capacity() * sizeof(std::int32_t);
-  for (const auto& sv : servers_) bytes += sizeof(sv) + sv.running.size() * sizeof(std::uint32_t);
+  bytes += servers_.capacity() * sizeof(Servers) + start_idle_.capacity() * sizeof(std::int64_t);
   bytes += start_seq_.capacity() * sizeof(std::uint64_t);
   return bytes;
 }

@@ -1,5 +1,7 @@
 #include "gdpn/net/timeline.h"
 
+#include <algorithm>
+
 namespace gdpn::net {
 
 Timeline::Timeline(const Net& net, std::size_t budget)
@@ -29,15 +31,17 @@ void Timeline::onStart(TransitionId t, std::int64_t step) {
 }
 
 void Timeline::onComplete(TransitionId t, std::int64_t step, std::int64_t started) {
-  // the oldest open occurrence that started when this one did (with one server, the oldest)
+  // open_[t] lists the occurrences kept, by start; the first still open that started when this
+  // one did is this one (with one server, the front), and closed ones leave from the front
   auto& open = open_[t];
-  for (auto it = open.begin(); it != open.end(); ++it) {
-    if (occurrences_[*it].start != started) continue;
+  auto it = std::lower_bound(open.begin(), open.end(), started,
+                             [this](std::size_t i, std::int64_t s) { return occurrences_[i].start < s; });
+  for (; it != open.end() && occurrences_[*it].start == started; ++it) {
+    if (occurrences_[*it].end >= 0) continue;
     occurrences_[*it].end = step;
-    open.erase(it);
-    return;
+    break;
   }
-  // its start was not kept
+  while (!open.empty() && occurrences_[open.front()].end >= 0) open.pop_front();
 }
 
 void Timeline::change(PlaceSlotId ps, std::int64_t delta, std::int64_t step) {

@@ -257,5 +257,49 @@ TEST(Servers, AnImmediateTransitionWithServersDrainsItsPlaceWithinThePhase) {
   EXPECT_TRUE(k.dead());
 }
 
+TEST(Servers, AnImmediateProbableTransitionWithServersDrawsForEachStartOfItsTurn) {
+  // immediate, unlimited servers, p = 0.5, 8 tokens: each start completes at once and the
+  // turn goes on with a new draw, so the starts in the phase are geometric, not at most one
+  std::map<std::uint64_t, int> starts;
+  for (std::uint64_t seed = 1; seed <= 400; ++seed) {
+    NetBuilder b;
+    const auto p = b.addPlace("P"), q = b.addPlace("Q");
+    b.setSlot(p, kDefaultSlot, SlotKind::Control, kUnbounded, 8);
+    b.setSlot(q, kDefaultSlot, SlotKind::Control, kUnbounded, 0);
+    const auto t = b.addTransition("T", Duration{Duration::Law::Immediate, 0.0, 0.0, {}}, 0, 0.5);
+    b.setServers(t, kUnlimitedServers);
+    b.addInput(p, t);
+    b.addOutput(t, q);
+    Kernel k(b.freeze(), {1.0, seed});
+    k.start();
+    ++starts[k.startCount()];
+  }
+  EXPECT_NEAR(starts[0] / 400.0, 0.5, 0.1);
+  EXPECT_NEAR(starts[1] / 400.0, 0.25, 0.08);
+  EXPECT_GT(starts[3], 0);
+}
+
+TEST(Servers, AnOccurrenceSpanningStepsWithTheNetOffIsPairedWithItsStart) {
+  // the IDE's plant-only steps: the net is off, occurrences pause; the timeline and the
+  // figures still pair each completion with the step its start was seen at
+  for (const std::uint32_t servers : {1u, 2u}) {
+    auto net = machine(servers, 2);
+    Kernel k(net, {0.5, 1});
+    Timeline timeline(*net);
+    StatsCollector stats(*net);
+    k.addObserver(&timeline);
+    k.addObserver(&stats);
+    k.start();
+    k.step();
+    for (int i = 0; i < 3; ++i) k.idleStep();
+    while (!k.dead()) k.step();
+    for (const auto& o : timeline.occurrences()) EXPECT_GE(o.end, 0) << servers << " servers";
+    EXPECT_EQ(timeline.occurrences().front().start, 0);
+    EXPECT_EQ(timeline.occurrences().front().end, 7);  // 4 steps with the net on, 3 off
+    stats.finish(k.steps());
+    EXPECT_EQ(stats.transitions()[0].busy, servers == 1 ? 7 + 4 : 7 + 7) << servers << " servers";
+  }
+}
+
 }  // namespace
 }  // namespace gdpn::net

@@ -80,6 +80,11 @@ Timed runTimed(const ScriptModel& m, double timeout_s) {
   return t;
 }
 
+/// Seconds within which a stopped script must have ended: far below the 100 s its sleep would
+/// take, and far above what the stop takes on a loaded machine under the sanitizers (a run
+/// there once took 4.4 s), so that the tests say whether it was stopped, not how fast.
+constexpr double kStoppedWithin = 30.0;
+
 /// How a stop for running too long is told: "`what` ran longer than ... `timeout` s".
 std::string late(const std::string& what, const std::string& timeout) {
   return what + " ran longer than the script timeout of " + timeout + " s";
@@ -90,7 +95,7 @@ std::string late(const std::string& what, const std::string& timeout) {
 void expectTimedOut(const Timed& t, const std::string& where, const std::string& what, const std::string& timeout) {
   EXPECT_EQ(t.outcome.reason, StopReason::ScriptError);
   EXPECT_EQ(t.outcome.message, where + ": error: " + late(what, timeout));
-  EXPECT_LT(t.seconds, 4.0);
+  EXPECT_LT(t.seconds, kStoppedWithin);
   EXPECT_THAT(t.trace, HasSubstr("\"ev\":\"error\""));
 }
 
@@ -117,7 +122,7 @@ TEST(ScriptTimeout, StopsAnOnDepositBlockedReadingOrWaiting) {
       // the wait is inside threading.py: the stop is located there
       EXPECT_THAT(t.outcome.message, HasSubstr("threading.py:"));
       EXPECT_THAT(t.outcome.message, HasSubstr(": error: " + late("on_deposit of place 'main/Q' slot a0 at t = 1 s", "0.3")));
-      EXPECT_LT(t.seconds, 4.0);
+      EXPECT_LT(t.seconds, kStoppedWithin);
     } else {
       expectTimedOut(t, where, "on_deposit of place 'main/Q' slot a0 at t = 1 s", "0.3");
     }
@@ -138,7 +143,7 @@ TEST(ScriptTimeout, StopsAScriptThatSwallowsTheStop) {
     EXPECT_EQ(t.outcome.reason, StopReason::ScriptError);
     EXPECT_EQ(t.outcome.message.rfind(m.path() + ":", 0), 0u) << t.outcome.message;
     EXPECT_THAT(t.outcome.message, HasSubstr(": error: " + late("pre_fire of transition 'main/T' at t = 0 s", "0.3")));
-    EXPECT_LT(t.seconds, 4.0);
+    EXPECT_LT(t.seconds, kStoppedWithin);
     EXPECT_THAT(t.trace, HasSubstr("\"ev\":\"error\""));
   }
 }
@@ -149,7 +154,7 @@ TEST(ScriptTimeout, StopsTheGlobalsScriptAndLocatesIt) {
   core::Diagnostics diags;
   const auto start = clock::now();
   EXPECT_FALSE(m.open(diags, 0.5));
-  EXPECT_LT(since(start), 4.0);
+  EXPECT_LT(since(start), kStoppedWithin);
   EXPECT_EQ(diags.str(), m.path() + ":5: error: " + late("the globals script", "0.5") + "\n");
 }
 
@@ -160,7 +165,7 @@ TEST(ScriptTimeout, StopsTheTopLevelOfAScriptFile) {
   core::Diagnostics diags;
   const auto start = clock::now();
   EXPECT_FALSE(m.open(diags, 0.3));
-  EXPECT_LT(since(start), 4.0);
+  EXPECT_LT(since(start), kStoppedWithin);
   const std::string file = (std::filesystem::path(m.path()).parent_path() / "cell.py").string();
   EXPECT_EQ(diags.str().rfind(file + ":", 0), 0u) << diags.str();
   EXPECT_THAT(diags.str(), HasSubstr(": error: " + late("the script file 'cell.py' of the globals script", "0.3")));
@@ -175,7 +180,7 @@ TEST(ScriptTimeout, ASleepingSummaryGivesAFiguresErrorAndTheReport) {
   const auto outcome = sim->run({});
   const auto start = clock::now();
   const auto report = makeReport(*sim, outcome);
-  EXPECT_LT(since(start), 4.0);
+  EXPECT_LT(since(start), kStoppedWithin);
   EXPECT_TRUE(report.figures.empty());
   EXPECT_EQ(report.figures_error, late("summary()", "0.3"));
 }
@@ -191,7 +196,7 @@ TEST(ScriptTimeout, APredicateBreakpointThatSleepsEndsTheRunNamingIt) {
   ASSERT_TRUE(s->addBreakpoint(session::Breakpoint::predicate("__import__('time').sleep(100)"), why)) << why;
   const auto start = clock::now();
   const auto outcome = s->run({{}, 100});
-  EXPECT_LT(since(start), 4.0);
+  EXPECT_LT(since(start), kStoppedWithin);
   EXPECT_EQ(outcome.reason, StopReason::ScriptError);
   EXPECT_EQ(outcome.steps, 0);
   EXPECT_THAT(outcome.message, HasSubstr("breakpoint 1 (__import__('time').sleep(100)) failed: " + late("it", "0.3")));
@@ -236,7 +241,7 @@ TEST(ScriptTimeout, CheckStopsASleepingGlobalsScriptAndSaysWhere) {
                 "pages:\n  main:\n    places:\n      P: {tokens: 1}\n");
   const auto start = clock::now();
   const auto [code, out] = cli("check --script-timeout 0.5 '" + m.path() + "'", m);
-  EXPECT_LT(since(start), 4.0);
+  EXPECT_LT(since(start), kStoppedWithin);
   EXPECT_EQ(code, 1);
   EXPECT_EQ(out, m.path() + ":5: error: " + late("the globals script", "0.5") + "\n1 error\n");
 }
@@ -248,7 +253,7 @@ TEST(ScriptTimeout, RunStopsASwallowingScriptAndKeepsTheTrace) {
   const auto start = clock::now();
   // located where the stop came last: in the except clause that swallowed the first
   const auto [code, out] = cli("run -q --script-timeout 0.3 --trace '" + trace + "' '" + m.path() + "'", m);
-  EXPECT_LT(since(start), 4.0);
+  EXPECT_LT(since(start), kStoppedWithin);
   EXPECT_EQ(code, 1);
   EXPECT_THAT(out, HasSubstr(m.path() + ":13: error: " + late("pre_fire of transition 'main/T' at t = 0 s", "0.3")));
   std::ifstream in(trace);

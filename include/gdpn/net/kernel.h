@@ -60,7 +60,10 @@ class Kernel {
   void beginStep() { ++step_; }
   /// A step with the net switched off: the clock moves on and nothing in the net changes.
   /// Occurrences are paused: their start and end move with the clock.
-  void idleStep() { ++idle_; }
+  void idleStep() {
+    if (start_idle_.empty()) start_idle_.assign(tr_.size(), 0);  // from now on starts note idle_
+    ++idle_;
+  }
   /// Phase 3: occurring transitions whose duration has elapsed complete, in start order.
   void completeOccurrences();
   /// Phase 4: enabled transitions start, by priority, then time enabled, then declaration
@@ -195,16 +198,19 @@ class Kernel {
   using Entry = std::uint32_t;
   static constexpr Entry kOccurrenceBit = 0x80000000u;
   static constexpr Entry kNoEntry = 0xffffffffu;
+  static constexpr std::uint32_t kNoOccurrence = 0xffffffffu;
   struct Occurrence {  // one occurrence of a transition with servers
     TransitionId t;
+    std::uint32_t prev, next;           // its transition's running occurrences, by start
     std::int64_t start_step, end_step;  // end_step -1 once completed
+    std::int64_t start_idle;            // idle_ when it started
     std::uint64_t seq;                  // start_count_ at its start, when it has in_fire
     std::vector<std::pair<SlotId, NodeRef>> held;
   };
   struct Servers {  // a transition with servers
     std::uint32_t limit;  // 0: unlimited
     std::uint32_t busy;
-    std::deque<std::uint32_t> running;  // its occurrences by start (completed ones until they reach the front)
+    std::uint32_t oldest, newest;  // its running occurrences (kNoOccurrence: none)
   };
   [[nodiscard]] TransitionId transitionOf(Entry e) const { return e & kOccurrenceBit ? occ_[e & ~kOccurrenceBit].t : e; }
   [[nodiscard]] std::int64_t endOf(Entry e) const {
@@ -245,8 +251,19 @@ class Kernel {
   // extra_: whether an immediate occurrence took a round
   bool startCandidates();
   // after an immediate occurrence of the entry `fired`: it (when still enabled) and what was
-  // enabled since join the extras not yet taken (extra_ from `xpos`), in order
-  void addExtras(const Carry& fired, std::size_t xpos);
+  // enabled since join the extras not yet taken
+  void addExtras(const Carry& fired);
+  struct Extra {  // an entry an immediate occurrence enabled, numbered as it came
+    Carry c;
+    std::uint64_t order;
+  };
+  // whether extra `x` is taken after extra `y` (the heap's order): the firing order, or, with
+  // random ties, its group (priority, time enabled), then the order they came in
+  [[nodiscard]] bool extraAfter(const Extra& x, const Extra& y) const {
+    if (!random_ties_) return candidateBefore(y.c, x.c);
+    if ((x.c.key >> 32) != (y.c.key >> 32)) return (y.c.key >> 32) < (x.c.key >> 32);
+    return x.c.step != y.c.step ? y.c.step < x.c.step : y.order < x.order;
+  }
   // whether extra entry `x` goes before candidate `c`: in the firing order, or, with random
   // ties, only before a candidate of a later (priority, time enabled) group
   [[nodiscard]] bool extraBefore(const Carry& x, const Carry& c) const {
@@ -282,8 +299,12 @@ class Kernel {
   std::vector<std::uint64_t> fresh_, late_, late_now_, scratch_;  // keys: rank << 32 | t
   std::vector<Carry> carry_, carry_next_;
   std::vector<Carry> candidates_;  // one firing phase's candidates, in order
-  std::vector<Carry> extra_;       // entries immediate occurrences enabled in this phase, in order
-  std::vector<Carry> next_, merged_;  // addExtras()'s new entries, and the merge
+  std::vector<Extra> extra_;       // entries immediate occurrences enabled in this phase: a heap
+  std::uint64_t extra_count_ = 0;
+  std::uint64_t phase_ = 0;        // firing phases begun
+  std::vector<std::uint64_t> taken_phase_;  // with random ties: per transition, the phase it was last taken in
+  std::vector<std::int64_t> taken_step_;    // and the step enabled of the entry taken
+  std::vector<Carry> next_;        // addExtras()'s new entries
   std::vector<std::int64_t> drawn_;  // per transition: the step of its last probability draw (-1: none)
   // an entry that still stands: its transition enabled since the step it names
   [[nodiscard]] bool valid(const Carry& c) const {
@@ -300,6 +321,7 @@ class Kernel {
   std::vector<Entry> in_fire_next_;
   std::vector<Occurrence> occ_;                 // occurrences of transitions with servers
   std::vector<std::uint32_t> occ_free_;         // indices in occ_ to reuse
+  std::vector<std::int64_t> start_idle_;        // per transition: idle_ at its start (empty until an idle step)
   std::vector<Servers> servers_;
   std::vector<std::int32_t> servers_of_;        // per transition: index in servers_, -1 for one (empty: none has more)
   Entry current_ = kNoEntry;                    // the occurrence whose scripts run now

@@ -60,7 +60,7 @@ class Timeline final : public NetObserver {
   std::int64_t cut_at_ = -1;
   std::int64_t dropped_ = 0;
   std::vector<Occurrence> occurrences_;
-  std::vector<std::deque<std::size_t>> open_;  // per transition: its occurrences still going, oldest first
+  std::vector<std::deque<std::size_t>> open_;  // per transition: occurrences kept, by start (closed ones until at the front)
   std::vector<std::int64_t> tokens_;           // per place: tokens now (kept or not)
   std::vector<std::vector<Change>> places_;
 };
