@@ -546,7 +546,7 @@ void Kernel::finishAs(Entry e) {
     // the step onStart saw: the start plus the idle steps before it
     const std::int64_t started =
         kServers ? occ_[e & ~kOccurrenceBit].start_step + occ_[e & ~kOccurrenceBit].start_idle
-                 : tr.start_step + (start_idle_.empty() ? idle_ : start_idle_[t]);
+                 : tr.start_step + (start_idle_.empty() ? 0 : start_idle_[t]);
     for (auto* o : observers_) o->onComplete(t, steps(), started);
   }
   // scripts (post_fire, on_deposit) see this occurrence as self's
@@ -749,7 +749,7 @@ bool Kernel::startCandidates() {
     // stale entries: disabled since, or re-enabled later (a newer entry exists); the same
     // entry twice (enabled, disabled and enabled again in one phase) comes twice in a row,
     // or, with random ties, was stamped when taken
-    bool again = c.key == last.key && c.step == last.step;
+    bool again = sameEntry(c, last);
     last = c;
     if (random_ties_ && !again) {
       if (taken_phase_.empty()) taken_phase_.assign(tr_.size(), 0), taken_step_.assign(tr_.size(), -1);
@@ -810,7 +810,7 @@ void Kernel::addExtras(const Carry& fired) {
     if (valid(fired)) taken_phase_[indexOf(fired.key)] = 0;  // it is to be taken again
   } else {
     next_.erase(std::unique(next_.begin(), next_.end(),
-                            [](const Carry& a, const Carry& b) { return a.key == b.key && a.step == b.step; }),
+                            sameEntry),
                 next_.end());
   }
   // into the heap of extras, each numbered in the order it came (with random ties, after
@@ -824,7 +824,7 @@ void Kernel::addExtras(const Carry& fired) {
 void Kernel::shuffleTies(std::vector<Carry>& candidates) {
   // an entry listed twice (enabled, disabled and enabled again) is kept once
   candidates.erase(std::unique(candidates.begin(), candidates.end(),
-                               [](const Carry& a, const Carry& b) { return a.key == b.key && a.step == b.step; }),
+                               sameEntry),
                    candidates.end());
   // each run of equal priority and time enabled in an order drawn from the generator
   // (Fisher-Yates, the last position first): one draw per candidate beyond the first of a run

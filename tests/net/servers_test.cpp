@@ -28,18 +28,34 @@ std::int64_t tokens(const Kernel& k, const char* name) {
   return ps < 0 ? 0 : k.marking(static_cast<PlaceSlotId>(ps));
 }
 
-// P (5 tokens) -> T (2 s, `servers`) -> Q, at dt = 0.5 s: an occurrence lasts 4 steps
-std::shared_ptr<const Net> machine(std::uint32_t servers, std::int64_t parts = 5) {
+// P (`parts` tokens) -> T (`lasts`, default 2 s; `servers`; probability `p`) -> Q, at
+// dt = 0.5 s a 2 s occurrence lasts 4 steps
+std::shared_ptr<const Net> machine(std::uint32_t servers, std::int64_t parts = 5, Duration lasts = seconds(2.0),
+                                   double p = 1.0) {
   NetBuilder b;
-  const auto p = b.addPlace("P"), q = b.addPlace("Q");
-  b.setSlot(p, kDefaultSlot, SlotKind::Control, kUnbounded, parts);
-  b.setSlot(q, kDefaultSlot, SlotKind::Control, kUnbounded, 0);
-  const auto t = b.addTransition("T", seconds(2.0));
+  const auto in = b.addPlace("P"), out = b.addPlace("Q");
+  b.setSlot(in, kDefaultSlot, SlotKind::Control, kUnbounded, parts);
+  b.setSlot(out, kDefaultSlot, SlotKind::Control, kUnbounded, 0);
+  const auto t = b.addTransition("T", lasts, 0, p);
   b.setServers(t, servers);
-  b.addInput(p, t);
-  b.addOutput(t, q);
+  b.addInput(in, t);
+  b.addOutput(t, out);
   return b.freeze();
 }
+
+// per number of starts at time 0, in how many of 400 seeds the machine of 8 parts, p = 0.5,
+// made them
+std::map<std::uint64_t, int> startsAtTimeZero(Duration lasts, std::uint32_t servers) {
+  std::map<std::uint64_t, int> starts;
+  for (std::uint64_t seed = 1; seed <= 400; ++seed) {
+    Kernel k(machine(servers, 8, lasts, 0.5), {1.0, seed});
+    k.start();
+    ++starts[k.startCount()];
+  }
+  return starts;
+}
+
+const Duration kImmediate{Duration::Law::Immediate, 0.0, 0.0, {}};
 
 // S (`parts` tokens) -> Feed (`feed_s`) -> P -> T (`lasts`, `servers`) -> Q: a part comes
 // every feed_s seconds. T is transition 1.
@@ -221,20 +237,7 @@ TEST(Servers, TheTimelinePairsEachCompletionWithItsOwnStart) {
 
 TEST(Servers, AProbableTransitionDrawsForEachFurtherServer) {
   // 8 tokens, 8 servers, p = 0.5: each start in the turn draws, and the first loss ends it
-  std::map<std::size_t, int> started_at_once;
-  for (std::uint64_t seed = 1; seed <= 400; ++seed) {
-    NetBuilder b;
-    const auto p = b.addPlace("P"), q = b.addPlace("Q");
-    b.setSlot(p, kDefaultSlot, SlotKind::Control, kUnbounded, 8);
-    b.setSlot(q, kDefaultSlot, SlotKind::Control, kUnbounded, 0);
-    const auto t = b.addTransition("T", seconds(10.0), 0, 0.5);
-    b.setServers(t, 8);
-    b.addInput(p, t);
-    b.addOutput(t, q);
-    Kernel k(b.freeze(), {1.0, seed});
-    k.start();
-    ++started_at_once[k.occurrences(t)];
-  }
+  auto started_at_once = startsAtTimeZero(seconds(10.0), 8);
   // geometric: none in about half the runs, exactly one in about a quarter
   EXPECT_NEAR(started_at_once[0] / 400.0, 0.5, 0.1);
   EXPECT_NEAR(started_at_once[1] / 400.0, 0.25, 0.08);
@@ -242,15 +245,7 @@ TEST(Servers, AProbableTransitionDrawsForEachFurtherServer) {
 }
 
 TEST(Servers, AnImmediateTransitionWithServersDrainsItsPlaceWithinThePhase) {
-  NetBuilder b;
-  const auto p = b.addPlace("P"), q = b.addPlace("Q");
-  b.setSlot(p, kDefaultSlot, SlotKind::Control, kUnbounded, 5);
-  b.setSlot(q, kDefaultSlot, SlotKind::Control, kUnbounded, 0);
-  const auto t = b.addTransition("T", Duration{Duration::Law::Immediate, 0.0, 0.0, {}});
-  b.setServers(t, kUnlimitedServers);
-  b.addInput(p, t);
-  b.addOutput(t, q);
-  Kernel k(b.freeze(), {1.0, 1});
+  Kernel k(machine(kUnlimitedServers, 5, kImmediate), {1.0, 1});
   k.start();
   EXPECT_EQ(tokens(k, "Q"), 5);
   EXPECT_EQ(k.startCount(), 5u);
@@ -260,20 +255,7 @@ TEST(Servers, AnImmediateTransitionWithServersDrainsItsPlaceWithinThePhase) {
 TEST(Servers, AnImmediateProbableTransitionWithServersDrawsForEachStartOfItsTurn) {
   // immediate, unlimited servers, p = 0.5, 8 tokens: each start completes at once and the
   // turn goes on with a new draw, so the starts in the phase are geometric, not at most one
-  std::map<std::uint64_t, int> starts;
-  for (std::uint64_t seed = 1; seed <= 400; ++seed) {
-    NetBuilder b;
-    const auto p = b.addPlace("P"), q = b.addPlace("Q");
-    b.setSlot(p, kDefaultSlot, SlotKind::Control, kUnbounded, 8);
-    b.setSlot(q, kDefaultSlot, SlotKind::Control, kUnbounded, 0);
-    const auto t = b.addTransition("T", Duration{Duration::Law::Immediate, 0.0, 0.0, {}}, 0, 0.5);
-    b.setServers(t, kUnlimitedServers);
-    b.addInput(p, t);
-    b.addOutput(t, q);
-    Kernel k(b.freeze(), {1.0, seed});
-    k.start();
-    ++starts[k.startCount()];
-  }
+  auto starts = startsAtTimeZero(kImmediate, kUnlimitedServers);
   EXPECT_NEAR(starts[0] / 400.0, 0.5, 0.1);
   EXPECT_NEAR(starts[1] / 400.0, 0.25, 0.08);
   EXPECT_GT(starts[3], 0);

@@ -230,6 +230,9 @@ class Kernel {
   void endOccurrence(Entry e);                               // and of finish()
   bool tryStart(TransitionId t, bool again);
 
+  // the same entry: one enabling of one transition
+  static bool sameEntry(const Carry& a, const Carry& b) { return a.key == b.key && a.step == b.step; }
+
   static bool holds(const SlotState& st, TermKind kind, std::int64_t weight, std::int64_t take);
   void update(PlaceSlotId ps);
   void examine(const SlotState& st, Watch& watch);
