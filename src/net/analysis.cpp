@@ -222,7 +222,7 @@ Search::Expand Search::expand(StateId v) {
   hashes_.clear();
   succ_t_.clear();
   const std::uint64_t* m = store_->at(v);
-  candidates_.find(m, candidates_now_);
+  candidates_.find(m, firing_, candidates_now_);
   for (TransitionId t : candidates_now_) {
     bool enabled = false;
     std::uint64_t* out = keys_.data() + succ_t_.size() * words;
@@ -341,7 +341,7 @@ std::vector<TransitionId> Search::firingsAlong(const std::vector<StateId>& path)
   for (std::size_t i = 0; i + 1 < path.size();) {
     std::size_t best = i;
     TransitionId via = 0;
-    candidates_.find(store_->at(path[i]), candidates_now_);
+    candidates_.find(store_->at(path[i]), firing_, candidates_now_);
     for (TransitionId t : candidates_now_) {
       bool enabled = false;
       if (fire(t, store_->at(path[i]), next.data(), enabled) != Expand::Ok || !enabled) continue;
@@ -381,7 +381,7 @@ void Search::shortestPathToDeadlock(StateSpace& out) {
   if (dead[0]) return;
   for (std::size_t head = 0; head < queue.size(); ++head) {
     const StateId s = queue[head];
-    candidates_.find(store_->at(s), candidates_now_);
+    candidates_.find(store_->at(s), firing_, candidates_now_);
     for (TransitionId t : candidates_now_) {
       bool enabled = false;
       fire(t, store_->at(s), next.data(), enabled);

@@ -148,7 +148,7 @@ class Parallel {
         s.work.pop_back();
         // all successors first, their table slots fetched while the next are made
         std::size_t count = 0;
-        candidates_.find(s.store->at(v), candidates);
+        candidates_.find(s.store->at(v), firing_, candidates);
         for (TransitionId t : candidates) {
           std::size_t field = 0;
           std::uint64_t* out = keys.data() + count * words;
@@ -217,7 +217,7 @@ class Parallel {
     for (StateId v = 0; v < s.store->size(); ++v) {
       s.first.push_back(s.succ.size());
       std::size_t count = 0;
-      candidates_.find(s.store->at(v), candidates);
+      candidates_.find(s.store->at(v), firing_, candidates);
       for (TransitionId t : candidates) {
         std::size_t field = 0;
         std::uint64_t* out = keys.data() + count * words;
@@ -333,7 +333,7 @@ class Parallel {
         for (std::uint32_t x = v; x != s0; x = parent[x]) {
           // the k-th successor comes from the k-th enabled transition
           std::uint32_t k = via[x];
-          candidates_.find(marking(parent[x]), candidates);
+          candidates_.find(marking(parent[x]), firing_, candidates);
           for (TransitionId t : candidates) {
             if (!firing_.enabled(t, marking(parent[x]))) continue;
             if (k-- == 0) {

@@ -354,6 +354,47 @@ TEST(Analysis, AProducerWithoutConsumerIsUnboundedOnlyWhereItProduces) {
   EXPECT_EQ(s.place_bound[p0], 1);
 }
 
+TEST(Analysis, FiringsThatMoveTokensBetweenFieldsOfOnePackedWordKeepEveryCount) {
+  // a and b share 5 tokens (a + b = 5: three bits each), c holds at most 2 (two bits); the
+  // three lie in one 64-bit word, and each firing changes its fields by one addition: take
+  // moves 2 from a to b, give 1 back, fill adds to c while there is room, and empty takes 2
+  NetBuilder b;
+  const auto a = b.addPlace("a");
+  const auto bb = b.addPlace("b");
+  const auto c = b.addPlace("c");
+  b.setSlot(a, kDefaultSlot, SlotKind::Control, kUnbounded, 5);
+  b.setSlot(bb, kDefaultSlot, SlotKind::Control, kUnbounded, 0);
+  b.setSlot(c, kDefaultSlot, SlotKind::Control, 2, 0);
+  const auto take = b.addTransition("take");
+  b.addInput(a, take, kDefaultSlot, 2);
+  b.addOutput(take, bb, kDefaultSlot, 2);
+  const auto give = b.addTransition("give");
+  b.addInput(bb, give);
+  b.addOutput(give, a);
+  const auto fill = b.addTransition("fill");
+  b.addOutput(fill, c);
+  const auto empty = b.addTransition("empty");
+  b.addInput(c, empty, kDefaultSlot, 2);
+  const auto net = b.freeze();
+  for (const unsigned threads : {1u, 2u}) {
+    ExploreOptions options;
+    options.threads = threads;
+    const auto s = explore(*net, options);
+    // (a, 5 - a) for a = 0..5, times c = 0, 1, 2; take is enabled where a >= 2 (4 markings of
+    // a and b), give where b >= 1 (5): 9 edges for each c; fill where c < 2 and empty where
+    // c = 2: 3 edges for each (a, b)
+    EXPECT_EQ(s.states, 18u) << threads;
+    EXPECT_EQ(s.edges, 9u * 3 + 3u * 6) << threads;
+    EXPECT_EQ(s.place_bound[a], 5);
+    EXPECT_EQ(s.place_bound[bb], 5);
+    EXPECT_EQ(s.place_bound[c], 2);
+    EXPECT_EQ(s.max_marking, 7);
+    EXPECT_TRUE(s.live);
+    EXPECT_TRUE(s.reversible);
+    EXPECT_FALSE(s.deadlock);
+  }
+}
+
 TEST(Analysis, CountsBeyondWhatTheSearchHoldsGiveAPartialAnswer) {
   NetBuilder b;
   const auto p = b.addPlace("P");

@@ -8,13 +8,17 @@ namespace gdpn::net::detail {
 void Firing::use(const Layout& layout) {
   words_ = layout.words();
   const std::size_t transitions = net_.transitions().size();
-  test_begin_.assign(transitions + 1, 0);
-  change_begin_.assign(transitions + 1, 0);
+  spans_.assign(transitions + 1, Span{});
+  needs_.clear();
   tests_.clear();
+  adds_.clear();
   changes_.clear();
+  std::vector<std::int64_t> delta(layout.width(), 0);
+  std::vector<std::size_t> touched;
   for (TransitionId t = 0; t < transitions; ++t) {
-    test_begin_[t] = static_cast<std::uint32_t>(tests_.size());
-    change_begin_[t] = static_cast<std::uint32_t>(changes_.size());
+    spans_[t] = {static_cast<std::uint32_t>(needs_.size()), static_cast<std::uint32_t>(tests_.size()),
+                 static_cast<std::uint32_t>(adds_.size()), static_cast<std::uint32_t>(changes_.size())};
+    touched.clear();
     for (const Term& term : net_.termsOf(t)) {
       const std::size_t k = term.place_slot;
       const Layout::Field& f = layout.field(k);
@@ -46,35 +50,52 @@ void Firing::use(const Layout& layout) {
         case TermKind::Condition:
           continue;  // sensor conditions are free to be either: explore as if true
       }
-      tests_.push_back(x);
-      if (term.kind != TermKind::Input && term.kind != TermKind::Output) continue;
-      // inputs come before outputs among a transition's terms: a slot's change is noted
-      // where its first term is, and the sum of its terms checked against the field
-      const std::int64_t delta = term.kind == TermKind::Input ? -term.weight : term.weight;
-      auto at = std::find_if(changes_.begin() + change_begin_[t], changes_.end(),
-                             [&](const Change& c) { return c.field == k; });
-      if (at == changes_.end()) {
-        changes_.push_back({f.word, f.shift, static_cast<std::uint32_t>(k), f.omega, f.mask, layout.maxCount(k), 0});
-        at = changes_.end() - 1;
+      if (x.lo == 1 && x.hi == 1 && x.mask == 1 && !x.omega) {
+        // one token of a one-bit field: a bit that must be set
+        if (needs_.size() > spans_[t].needs && needs_.back().word == f.word) {
+          needs_.back().bits |= std::uint64_t{1} << f.shift;
+        } else {
+          needs_.push_back({f.word, std::uint64_t{1} << f.shift});
+        }
+      } else if (x.lo > 0 || x.hi < x.mask) {
+        tests_.push_back(x);
       }
-      at->delta += delta;
+      if (term.kind != TermKind::Input && term.kind != TermKind::Output) continue;
+      if (std::find(touched.begin(), touched.end(), k) == touched.end()) touched.push_back(k);
+      delta[k] += term.kind == TermKind::Input ? -term.weight : term.weight;
+    }
+    for (const std::size_t k : touched) {
+      const Layout::Field& f = layout.field(k);
+      if (delta[k] != 0 && f.omega) {
+        changes_.push_back({f.word, f.shift, static_cast<std::uint32_t>(k), f.mask, layout.maxCount(k), delta[k]});
+      } else if (delta[k] != 0) {
+        // two's complement in place: the count stays within its field, so nothing carries
+        const std::uint64_t add = static_cast<std::uint64_t>(delta[k]) << f.shift;
+        const auto at = std::find_if(adds_.begin() + spans_[t].adds, adds_.end(), [&](const Add& a) { return a.word == f.word; });
+        if (at == adds_.end()) {
+          adds_.push_back({f.word, add});
+        } else {
+          at->add += add;
+        }
+      }
+      delta[k] = 0;
     }
   }
-  test_begin_[transitions] = static_cast<std::uint32_t>(tests_.size());
-  change_begin_[transitions] = static_cast<std::uint32_t>(changes_.size());
+  spans_[transitions] = {static_cast<std::uint32_t>(needs_.size()), static_cast<std::uint32_t>(tests_.size()),
+                         static_cast<std::uint32_t>(adds_.size()), static_cast<std::uint32_t>(changes_.size())};
 }
 
 std::size_t markEnabled(const Firing& firing, const Candidates& candidates, const std::uint64_t* m,
                         std::vector<bool>& seen, std::vector<TransitionId>& scratch) {
   std::size_t added = 0;
-  candidates.find(m, scratch);
+  candidates.find(m, firing, scratch);
   for (TransitionId t : scratch) {
     if (!seen[t] && firing.enabled(t, m)) seen[t] = true, ++added;
   }
   return added;
 }
 
-Candidates::Candidates(const Net& net) : net_(net) {
+Candidates::Candidates(const Net& net) {
   const std::size_t places = net.placeSlots().size();
   std::vector<std::uint32_t> takers(places, 0);
   for (const Term& term : net.terms()) {
@@ -111,30 +132,9 @@ void Candidates::use(const Layout& layout) {
     for (std::uint32_t b = 0; b < layout.bits(k); ++b) field_at_[f.word * 64 + f.shift + b] = static_cast<std::uint32_t>(k);
     if (begin_[k + 1] > begin_[k]) watched_[f.word] |= masks_[k];
   }
-  // one token from a one-bit field: that bit must be set (an ω field is never one bit)
-  const std::size_t transitions = net_.transitions().size();
-  quick_begin_.assign(transitions + 1, 0);
-  quick_.clear();
-  for (TransitionId t = 0; t < transitions; ++t) {
-    quick_begin_[t] = static_cast<std::uint32_t>(quick_.size());
-    for (const Term& term : net_.termsOf(t)) {
-      const std::size_t k = term.place_slot;
-      if ((term.kind != TermKind::Input && term.kind != TermKind::Test) || term.weight != 1 || layout.bits(k) != 1 ||
-          layout.field(k).omega) {
-        continue;
-      }
-      const auto& f = layout.field(k);
-      if (quick_.size() > quick_begin_[t] && quick_.back().first == f.word) {
-        quick_.back().second |= masks_[k];
-      } else {
-        quick_.emplace_back(f.word, masks_[k]);
-      }
-    }
-  }
-  quick_begin_[transitions] = static_cast<std::uint32_t>(quick_.size());
 }
 
-void Candidates::find(const std::uint64_t* m, std::vector<TransitionId>& out) const {
+void Candidates::find(const std::uint64_t* m, const Firing& firing, std::vector<TransitionId>& out) const {
   out.assign(always_.begin(), always_.end());
   for (std::size_t w = 0; w < watched_.size(); ++w) {
     std::uint64_t x = m[w] & watched_[w];
@@ -142,12 +142,7 @@ void Candidates::find(const std::uint64_t* m, std::vector<TransitionId>& out) co
       const std::uint32_t k = field_at_[w * 64 + static_cast<std::size_t>(std::countr_zero(x))];
       x &= ~masks_[k];
       for (std::uint32_t i = begin_[k]; i < begin_[k + 1]; ++i) {
-        const TransitionId t = watchers_[i];
-        bool ok = true;
-        for (std::uint32_t q = quick_begin_[t]; q < quick_begin_[t + 1] && ok; ++q) {
-          ok = (m[quick_[q].first] & quick_[q].second) == quick_[q].second;
-        }
-        if (ok) out.push_back(t);
+        if (firing.ready(watchers_[i], m)) out.push_back(watchers_[i]);
       }
     }
   }

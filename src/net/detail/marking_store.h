@@ -267,6 +267,8 @@ class Store {
   std::vector<std::uint64_t> table_;
 };
 
+class Firing;
+
 /// The transitions that may be enabled in a packed marking, found from its marked place
 /// slots rather than by trying every transition: each transition is watched through one
 /// place slot it takes from or tests (the one the fewest transitions take from: a local
@@ -278,8 +280,8 @@ class Candidates {
   /// Reads where the fields lie; call again after the layout changes.
   void use(const Layout& layout);
   /// The candidates in `m`, in an order fixed by `m` (the order every search fires them in),
-  /// into `out`.
-  void find(const std::uint64_t* m, std::vector<TransitionId>& out) const;
+  /// into `out`: the watchers of its marked slots that `firing` finds ready.
+  void find(const std::uint64_t* m, const Firing& firing, std::vector<TransitionId>& out) const;
 
  private:
   std::vector<std::uint32_t> begin_;    // per place slot: its watchers in watchers_ from here
@@ -288,26 +290,34 @@ class Candidates {
   std::vector<std::uint32_t> field_at_;  // per bit of a packed marking: the field it lies in
   std::vector<std::uint64_t> watched_;   // per word: the bits of fields some transition watches
   std::vector<std::uint64_t> masks_;     // per field: its bits in place in its word
-  // per transition, the (word, bits) its one-token inputs and tests need set, in quick_ from
-  // quick_begin_[t]: a transition missing one is dropped without looking at its terms
-  std::vector<std::uint32_t> quick_begin_;
-  std::vector<std::pair<std::uint32_t, std::uint64_t>> quick_;
-  const Net& net_;
 };
 
 /// What firing a transition on a packed marking gave.
 enum class Fired : std::uint8_t { Ok, NotEnabled, TooBig };
 
 /// Each transition's arcs compiled for one layout: the bit-field tests its enabling makes
-/// and the changes its firing makes, read from two flat arrays rather than through the net.
+/// and the changes its firing makes, read from flat arrays rather than through the net.
+/// A field that cannot become ω holds a count within its place slot's bound (from the
+/// invariants, the state equation or the capacity) in every marking a search meets, so a
+/// firing changes such fields by one addition per word: no count borrows from or carries
+/// into its neighbour.
 class Firing {
  public:
   explicit Firing(const Net& net) : net_(net) {}
   /// Compiles the arcs for `layout`; call again after the layout changes.
   void use(const Layout& layout);
+  /// True when the one-bit fields `t` takes one token from or tests hold it in `m`: the
+  /// quick part of enabled().
+  bool ready(TransitionId t, const std::uint64_t* m) const {
+    for (std::uint32_t i = spans_[t].needs; i < spans_[t + 1].needs; ++i) {
+      if ((m[needs_[i].word] & needs_[i].bits) != needs_[i].bits) return false;
+    }
+    return true;
+  }
   /// True when `t` is enabled in the packed marking `m` (sensor conditions count as true).
   bool enabled(TransitionId t, const std::uint64_t* m) const {
-    for (std::uint32_t i = test_begin_[t]; i < test_begin_[t + 1]; ++i) {
+    if (!ready(t, m)) return false;
+    for (std::uint32_t i = spans_[t].tests; i < spans_[t + 1].tests; ++i) {
       const Test& x = tests_[i];
       const std::uint64_t c = (m[x.word] >> x.shift) & x.mask;
       if ((c < x.lo || c > x.hi) && !(x.omega && c == x.mask)) return false;
@@ -317,11 +327,18 @@ class Firing {
   /// Fires `t` on `m` into `out`. TooBig (with the field in `field`) when a count does not fit.
   Fired fire(TransitionId t, const std::uint64_t* m, std::uint64_t* out, std::size_t& field) const {
     if (!enabled(t, m)) return Fired::NotEnabled;
-    std::memcpy(out, m, words_ * sizeof(std::uint64_t));
-    for (std::uint32_t i = change_begin_[t]; i < change_begin_[t + 1]; ++i) {
+    if (words_ == 1) {
+      out[0] = m[0];
+    } else {
+      std::memcpy(out, m, words_ * sizeof(std::uint64_t));
+    }
+    const Span& r = spans_[t];
+    const Span& end = spans_[t + 1];
+    for (std::uint32_t i = r.adds; i < end.adds; ++i) out[adds_[i].word] += adds_[i].add;
+    for (std::uint32_t i = r.changes; i < end.changes; ++i) {
       const Change& x = changes_[i];
       const std::uint64_t c = (out[x.word] >> x.shift) & x.mask;
-      if (x.omega && c == x.mask) continue;  // ω stays ω
+      if (c == x.mask) continue;  // ω stays ω
       const std::uint64_t next = c + static_cast<std::uint64_t>(x.delta);
       if (next > x.max) {
         field = x.field;
@@ -333,23 +350,38 @@ class Firing {
   }
 
  private:
+  // one-token inputs and tests of one-bit fields: these bits of the word must be set
+  struct Need {
+    std::uint32_t word = 0;
+    std::uint64_t bits = 0;
+  };
   // enabled only if lo <= code <= hi, or the code is ω where `omega` says ω passes
   struct Test {
     std::uint32_t word = 0, shift = 0;
     std::uint64_t mask = 0, lo = 0, hi = 0;
     bool omega = false;
   };
-  // a place slot's count changes by delta (what the outputs add less what the inputs take)
+  // the fields of a word that cannot be ω change by `add` (their deltas in place, modulo 2^64)
+  struct Add {
+    std::uint32_t word = 0;
+    std::uint64_t add = 0;
+  };
+  // a field that may hold ω changes by delta (what the outputs add less what the inputs take)
   struct Change {
     std::uint32_t word = 0, shift = 0, field = 0;
-    bool omega = false;  // the field may hold ω
     std::uint64_t mask = 0, max = 0;
     std::int64_t delta = 0;
   };
+  // where a transition's entries begin in each array; they end where the next one's begin
+  struct Span {
+    std::uint32_t needs = 0, tests = 0, adds = 0, changes = 0;
+  };
   const Net& net_;
   std::size_t words_ = 0;
-  std::vector<std::uint32_t> test_begin_, change_begin_;  // per transition, then one past the last
+  std::vector<Span> spans_;  // per transition, then one past the last
+  std::vector<Need> needs_;
   std::vector<Test> tests_;
+  std::vector<Add> adds_;
   std::vector<Change> changes_;
 };
 

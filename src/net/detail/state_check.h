@@ -34,7 +34,7 @@ class StateCheck {
       case FormulaKind::True: return true;
       case FormulaKind::False: return false;
       case FormulaKind::Deadlock: {
-        candidates_.find(m, scratch_);
+        candidates_.find(m, firing_, scratch_);
         return std::none_of(scratch_.begin(), scratch_.end(), [&](TransitionId t) { return firing_.enabled(t, m); });
       }
       case FormulaKind::Fireable:
@@ -106,7 +106,7 @@ class ConcreteStates {
   /// fit its field (the search must stop: Overflow).
   template <class F>
   bool successors(StateId s, F f) {
-    check_->candidates().find(store_->at(s), candidates_);
+    check_->candidates().find(store_->at(s), check_->firing(), candidates_);
     return fire(s, candidates_, f);
   }
 

@@ -159,7 +159,7 @@ void Stubborn::addUpSet(const Formula& f, bool positive, const std::uint64_t* m,
       if (positive) {
         // some transition is enabled: it must come to be disabled
         std::vector<TransitionId> candidates;
-        check.candidates().find(m, candidates);
+        check.candidates().find(m, check.firing(), candidates);
         for (TransitionId t : candidates) {
           if (check.firing().enabled(t, m)) {
             addDisablers(t);
