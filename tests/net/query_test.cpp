@@ -393,6 +393,25 @@ TEST(QueryAnswers, AnUnboundedPlaceIsSearchedByItsCounts) {
   EXPECT_EQ(answerQuery(*net, parsed(*net, "AG p < 1000"), small).verdict, Verdict::Unknown);
 }
 
+TEST(QueryAnswers, ACountBeyondItsFieldStopsTheSearchRatherThanSpillingIntoTheNext) {
+  // p and q have no bound: 32 bits each, side by side in one 64-bit word. A billion tokens a
+  // firing overflow p's field at the fifth: the search stops there, rather than going on
+  // with the carry in q's field and p's count wrapped around
+  NetBuilder b;
+  const auto p = b.addPlace("p");
+  b.addPlace("q");
+  const auto t = b.addTransition("produce");
+  b.addOutput(t, p, kDefaultSlot, 1'000'000'000);
+  const auto net = b.freeze();
+  ExploreOptions limits;
+  limits.max_states = 1000;
+  const QueryAnswer a = answerQuery(*net, parsed(*net, "EF p >= 5000000000"), limits);
+  EXPECT_EQ(a.verdict, Verdict::Unknown);
+  EXPECT_EQ(a.stop, ExploreStop::Overflow);
+  EXPECT_EQ(a.states, 5u);
+  EXPECT_EQ(answerQuery(*net, parsed(*net, "EF p >= 4000000000"), limits).verdict, Verdict::True);
+}
+
 }  // namespace
 }  // namespace gdpn::net
 

@@ -66,8 +66,8 @@ void Firing::use(const Layout& layout) {
     }
     for (const std::size_t k : touched) {
       const Layout::Field& f = layout.field(k);
-      if (delta[k] != 0 && f.omega) {
-        changes_.push_back({f.word, f.shift, static_cast<std::uint32_t>(k), f.mask, layout.maxCount(k), delta[k]});
+      if (delta[k] != 0 && !f.bounded) {
+        changes_.push_back({f.word, f.shift, static_cast<std::uint32_t>(k), f.omega, f.mask, layout.maxCount(k), delta[k]});
       } else if (delta[k] != 0) {
         // two's complement in place: the count stays within its field, so nothing carries
         const std::uint64_t add = static_cast<std::uint64_t>(delta[k]) << f.shift;

@@ -36,13 +36,22 @@ class Layout {
     std::uint32_t shift = 0;
     std::uint64_t mask = 0;
     bool omega = false;
+    /// The place slot has a bound the field holds (from the invariants, the state equation or
+    /// its capacity): no marking a search meets outgrows it.
+    bool bounded = false;
   };
 
-  Layout(const std::vector<std::uint32_t>& bits, const std::vector<bool>& omega) : bits_(bits) {
+  /// Fields of `bits` bits; those `omega` names may become ω, the others are bounded.
+  Layout(const std::vector<std::uint32_t>& bits, const std::vector<bool>& omega) : Layout(bits, omega, flip(omega)) {}
+  /// The same, with the bounded fields named apart (a field may be neither ω nor bounded: a
+  /// search of concrete markings then stops where its count does not fit).
+  Layout(const std::vector<std::uint32_t>& bits, const std::vector<bool>& omega, const std::vector<bool>& bounded)
+      : bits_(bits) {
     std::uint32_t used = 64;
     for (std::size_t k = 0; k < bits.size(); ++k) {
       if (used + bits[k] > 64) ++words_, used = 0;
-      fields_.push_back({static_cast<std::uint32_t>(words_ - 1), used, (std::uint64_t{1} << bits[k]) - 1, omega[k]});
+      fields_.push_back(
+          {static_cast<std::uint32_t>(words_ - 1), used, (std::uint64_t{1} << bits[k]) - 1, omega[k], bounded[k] && !omega[k]});
       used += bits[k];
     }
     words_ = std::max<std::size_t>(words_, 1);
@@ -60,6 +69,7 @@ class Layout {
     m[f.word] = (m[f.word] & ~(f.mask << f.shift)) | (c << f.shift);
   }
   bool isOmega(std::size_t k, std::uint64_t c) const { return fields_[k].omega && c == fields_[k].mask; }
+  bool isBounded(std::size_t k) const { return fields_[k].bounded; }
   /// The largest count the field holds.
   std::uint64_t maxCount(std::size_t k) const { return fields_[k].omega ? fields_[k].mask - 1 : fields_[k].mask; }
   std::int64_t value(const std::uint64_t* m, std::size_t k) const {
@@ -88,6 +98,10 @@ class Layout {
   }
 
  private:
+  static std::vector<bool> flip(std::vector<bool> v) {
+    v.flip();
+    return v;
+  }
   std::vector<std::uint32_t> bits_;
   std::vector<Field> fields_;
   std::size_t words_ = 0;
@@ -297,10 +311,9 @@ enum class Fired : std::uint8_t { Ok, NotEnabled, TooBig };
 
 /// Each transition's arcs compiled for one layout: the bit-field tests its enabling makes
 /// and the changes its firing makes, read from flat arrays rather than through the net.
-/// A field that cannot become ω holds a count within its place slot's bound (from the
-/// invariants, the state equation or the capacity) in every marking a search meets, so a
-/// firing changes such fields by one addition per word: no count borrows from or carries
-/// into its neighbour.
+/// A bounded field holds a count within its place slot's bound in every marking a search
+/// meets, so a firing changes such fields by one addition per word: no count borrows from or
+/// carries into its neighbour. The others are changed one by one and checked.
 class Firing {
  public:
   explicit Firing(const Net& net) : net_(net) {}
@@ -338,7 +351,7 @@ class Firing {
     for (std::uint32_t i = r.changes; i < end.changes; ++i) {
       const Change& x = changes_[i];
       const std::uint64_t c = (out[x.word] >> x.shift) & x.mask;
-      if (c == x.mask) continue;  // ω stays ω
+      if (x.omega && c == x.mask) continue;  // ω stays ω
       const std::uint64_t next = c + static_cast<std::uint64_t>(x.delta);
       if (next > x.max) {
         field = x.field;
@@ -361,14 +374,16 @@ class Firing {
     std::uint64_t mask = 0, lo = 0, hi = 0;
     bool omega = false;
   };
-  // the fields of a word that cannot be ω change by `add` (their deltas in place, modulo 2^64)
+  // the bounded fields of a word change by `add` (their deltas in place, modulo 2^64)
   struct Add {
     std::uint32_t word = 0;
     std::uint64_t add = 0;
   };
-  // a field that may hold ω changes by delta (what the outputs add less what the inputs take)
+  // another field changes by delta (what the outputs add less what the inputs take), up to
+  // `max`; ω, where `omega` allows it, stays ω
   struct Change {
     std::uint32_t word = 0, shift = 0, field = 0;
+    bool omega = false;
     std::uint64_t mask = 0, max = 0;
     std::int64_t delta = 0;
   };

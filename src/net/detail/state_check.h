@@ -87,7 +87,9 @@ class ConcreteStates {
     for (std::size_t k = 0; k < bits.size(); ++k) {
       if (p.omega[k]) bits[k] = kMaxBits;
     }
-    store_ = std::make_unique<Store>(Layout(bits, std::vector<bool>(bits.size(), false)));
+    std::vector<bool> bounded = p.omega;
+    bounded.flip();
+    store_ = std::make_unique<Store>(Layout(bits, std::vector<bool>(bits.size(), false), bounded));
     check_ = std::make_unique<StateCheck>(net, store_->layout());
     next_.resize(store_->words());
     std::size_t bad = 0;
