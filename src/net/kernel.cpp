@@ -94,6 +94,7 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
                                : spec.duration.fixed()                       ? durationSteps(spec.duration.a)
                                                                              : -1;
     st.fixed_steps = fixed <= std::numeric_limits<std::int32_t>::max() ? static_cast<std::int32_t>(fixed) : -1;
+    immediates_ = immediates_ || fixed == 0;
     st.probability = spec.probability;
     st.enabled_step = 0;
     st.start_step = -1;
@@ -695,7 +696,7 @@ void Kernel::fireEnabled() {
   }
 
   if (random_ties_) shuffleTies(candidates_);
-  const bool rounds = startCandidates();
+  const bool rounds = immediates_ ? startCandidates<true>() : startCandidates<false>();
   immediate_fired_ = false;
   fresh_.clear();
   late_now_.clear();
@@ -722,6 +723,7 @@ inline bool Kernel::tryStart(TransitionId t, bool again) {
   return true;
 }
 
+template <bool kRounds>
 bool Kernel::startCandidates() {
   // the candidates in order, and what immediate occurrences enabled since the phase began
   // (extra_, a heap: the next to take in front), merged as they are taken
@@ -733,8 +735,8 @@ bool Kernel::startCandidates() {
   ++phase_;
   Carry last{~std::uint64_t{0}, -1};
   TransitionId resume = kNoEntry;  // an immediate transition with servers whose turn goes on
-  while (pos < n || !extra_.empty()) {
-    const bool extra = !extra_.empty() && (pos >= n || extraBefore(extra_.front().c, candidates_[pos]));
+  while (pos < n || (kRounds && !extra_.empty())) {
+    const bool extra = kRounds && !extra_.empty() && (pos >= n || extraBefore(extra_.front().c, candidates_[pos]));
     Carry c{};
     if (extra) {
       c = extra_.front().c;
@@ -757,7 +759,7 @@ bool Kernel::startCandidates() {
       taken_phase_[t] = phase_;
       taken_step_[t] = c.step;
     }
-    const bool resumed = std::exchange(resume, kNoEntry) == t;
+    const bool resumed = kRounds && std::exchange(resume, kNoEntry) == t;
     if (tr.unsat != 0 || tr.enabled_step != c.step || (again && !resumed)) continue;
     // condition 5, predicates and probability: one that does not start waits, still enabled
     if (!tryStart(t, resumed)) {
@@ -771,7 +773,7 @@ bool Kernel::startCandidates() {
         break;
       }
     }
-    if (!immediate_fired_) continue;
+    if (!kRounds || !immediate_fired_) continue;
     // an immediate occurrence completed: what it enabled may go before the rest, and the
     // immediate transition itself stays a candidate while it is enabled (servers left)
     immediate_fired_ = false;

@@ -251,7 +251,9 @@ class Kernel {
   // each run of `candidates` (in order) tied on priority and time enabled, in a drawn order
   void shuffleTies(std::vector<Carry>& candidates);
   // the firing phase's starts over candidates_ and, as immediate occurrences enable them,
-  // extra_: whether an immediate occurrence took a round
+  // extra_: whether an immediate occurrence took a round. Compiled without the rounds for a
+  // net with no immediate transition (kRounds false), where no occurrence completes in the phase.
+  template <bool kRounds>
   bool startCandidates();
   // after an immediate occurrence of the entry `fired`: it (when still enabled) and what was
   // enabled since join the extras not yet taken
@@ -283,6 +285,7 @@ class Kernel {
   bool in_firing_ = false;
   bool random_ties_ = false;
   bool immediate_fired_ = false;  // an immediate occurrence completed in this round
+  bool immediates_ = false;       // some transition is immediate
   /// Rounds of immediate occurrences one firing phase takes at most, beyond 4 per transition
   /// of the net (a cycle of immediate transitions would never end); what is left waits for
   /// the next step.
