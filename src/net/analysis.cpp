@@ -138,7 +138,7 @@ bool Search::widen(std::size_t k) {
     if (j == k || (omega[j] && bits[j] <= from)) bits[j] = std::min(kMaxBits, bits[j] * 4);
   }
   const Layout before = L;
-  store_->relayout(Layout(bits, omega));
+  store_->relayout(Layout::omegaOrBounded(bits, omega));
   seen_->relayout(before, store_->layout());
   candidates_.use(store_->layout());
   firing_.use(store_->layout());
@@ -417,7 +417,7 @@ StateSpace Search::run() {
   for (std::size_t k = 0; k < accel_.size(); ++k) {
     if (accel_[k]) accel_slots_.push_back(k);
   }
-  store_ = std::make_unique<Store>(Layout(p.bits, p.omega), true);
+  store_ = std::make_unique<Store>(Layout::omegaOrBounded(p.bits, p.omega), true);
   candidates_.use(store_->layout());
   firing_.use(store_->layout());
   if (cover_) boundedParts();

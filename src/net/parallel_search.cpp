@@ -34,7 +34,7 @@ class Parallel {
   Parallel(const Net& net, const ExploreOptions& options, const Plan& plan)
       : net_(net),
         options_(options),
-        layout_(plan.bits, plan.omega),
+        layout_(Layout::omegaOrBounded(plan.bits, plan.omega)),
         candidates_(net),
         firing_(net),
         threads_(options.threads),

@@ -198,7 +198,8 @@ std::vector<QueryAnswer> answerQueries(const Net& net, const std::vector<Formula
 }
 
 bool holdsIn(const Net& net, const Formula& f, const std::vector<std::int64_t>& marking) {
-  const Layout layout(std::vector<std::uint32_t>(marking.size(), kMaxBits), std::vector<bool>(marking.size(), false));
+  const std::vector<bool> no(marking.size(), false);
+  const Layout layout(std::vector<std::uint32_t>(marking.size(), kMaxBits), no, no);
   std::vector<std::uint64_t> packed(layout.words());
   std::size_t bad = 0;
   if (!layout.pack(marking.data(), packed.data(), bad)) return false;

@@ -97,7 +97,10 @@ std::vector<std::int64_t> stateEquationBounds(const Net& net, const std::vector<
     }
     if (glp_get_status(lp.get()) != GLP_OPT) continue;  // unbounded (or, with M0 >= 0 feasible, nothing else)
     const double best = static_cast<double>(m0) + glp_get_obj_val(lp.get());
-    if (best < 9e18) out[k] = static_cast<std::int64_t>(std::floor(best + 1e-6));
+    // the solver works to tolerances of about 1e-7 per row, scaled: an optimum it reports a
+    // little below a whole number is taken as that number (a bound one too high is still a
+    // bound; one too low would let the search's counts outgrow their fields)
+    if (best < 9e18) out[k] = static_cast<std::int64_t>(std::floor(best + 1e-3 * std::max(1.0, std::abs(best) * 1e-6)));
   }
   return out;
 }

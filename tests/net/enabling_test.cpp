@@ -119,7 +119,8 @@ class Generator {
  public:
   explicit Generator(const Net& net)
       : net_(net),
-        layout_(std::vector<std::uint32_t>(net.placeSlots().size(), 20),
+        // 20 bits a count, none bounded: a count past them is caught, not carried on
+        layout_(std::vector<std::uint32_t>(net.placeSlots().size(), 20), std::vector<bool>(net.placeSlots().size(), false),
                 std::vector<bool>(net.placeSlots().size(), false)),
         firing_(net) {
     firing_.use(layout_);

@@ -41,10 +41,9 @@ class Layout {
     bool bounded = false;
   };
 
-  /// Fields of `bits` bits; those `omega` names may become ω, the others are bounded.
-  Layout(const std::vector<std::uint32_t>& bits, const std::vector<bool>& omega) : Layout(bits, omega, flip(omega)) {}
-  /// The same, with the bounded fields named apart (a field may be neither ω nor bounded: a
-  /// search of concrete markings then stops where its count does not fit).
+  /// Fields of `bits` bits; those `omega` names may become ω, those `bounded` names hold a
+  /// bound (a field may be neither: a search of concrete markings stops where its count does
+  /// not fit).
   Layout(const std::vector<std::uint32_t>& bits, const std::vector<bool>& omega, const std::vector<bool>& bounded)
       : bits_(bits) {
     std::uint32_t used = 64;
@@ -69,7 +68,6 @@ class Layout {
     m[f.word] = (m[f.word] & ~(f.mask << f.shift)) | (c << f.shift);
   }
   bool isOmega(std::size_t k, std::uint64_t c) const { return fields_[k].omega && c == fields_[k].mask; }
-  bool isBounded(std::size_t k) const { return fields_[k].bounded; }
   /// The largest count the field holds.
   std::uint64_t maxCount(std::size_t k) const { return fields_[k].omega ? fields_[k].mask - 1 : fields_[k].mask; }
   std::int64_t value(const std::uint64_t* m, std::size_t k) const {
@@ -97,11 +95,15 @@ class Layout {
     return true;
   }
 
- private:
-  static std::vector<bool> flip(std::vector<bool> v) {
-    v.flip();
-    return v;
+  /// The layout of a search where a place slot without a bound may become ω: the fields
+  /// `omega` does not name are bounded.
+  static Layout omegaOrBounded(const std::vector<std::uint32_t>& bits, const std::vector<bool>& omega) {
+    std::vector<bool> bounded = omega;
+    bounded.flip();
+    return Layout(bits, omega, bounded);
   }
+
+ private:
   std::vector<std::uint32_t> bits_;
   std::vector<Field> fields_;
   std::size_t words_ = 0;
