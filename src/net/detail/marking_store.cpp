@@ -15,9 +15,12 @@ void Firing::use(const Layout& layout) {
   changes_.clear();
   std::vector<std::int64_t> delta(layout.width(), 0);
   std::vector<std::size_t> touched;
+  auto here = [&] {
+    return Span{static_cast<std::uint32_t>(needs_.size()), static_cast<std::uint32_t>(tests_.size()),
+                static_cast<std::uint32_t>(adds_.size()), static_cast<std::uint32_t>(changes_.size())};
+  };
   for (TransitionId t = 0; t < transitions; ++t) {
-    spans_[t] = {static_cast<std::uint32_t>(needs_.size()), static_cast<std::uint32_t>(tests_.size()),
-                 static_cast<std::uint32_t>(adds_.size()), static_cast<std::uint32_t>(changes_.size())};
+    spans_[t] = here();
     touched.clear();
     for (const Term& term : net_.termsOf(t)) {
       const std::size_t k = term.place_slot;
@@ -81,8 +84,7 @@ void Firing::use(const Layout& layout) {
       delta[k] = 0;
     }
   }
-  spans_[transitions] = {static_cast<std::uint32_t>(needs_.size()), static_cast<std::uint32_t>(tests_.size()),
-                         static_cast<std::uint32_t>(adds_.size()), static_cast<std::uint32_t>(changes_.size())};
+  spans_[transitions] = here();
 }
 
 std::size_t markEnabled(const Firing& firing, const Candidates& candidates, const std::uint64_t* m,
