@@ -862,7 +862,7 @@ int main(int argc, char** argv) {
                           "stop every phase after this many seconds in all (the answer is then partial)")
       ->check(number(0.0, 1e9, "seconds above 0, at most 1e9", true));
   analyze_cmd->add_option("--threads", analyze_args.threads,
-                          "threads for the search (1: one depth-first walk, the least memory)")
+                          "threads for the search (1: one depth-first walk, the least memory; more keep the graph)")
       ->check(number(1u, 256u, "a whole number of threads from 1 to 256"));
   analyze_cmd->add_option("--query", analyze_args.queries,
                           "answer this formula instead (repeatable), or each line of this file: 'EF (buffer >= 3 and "

@@ -404,7 +404,7 @@ StateSpace Search::run() {
 
   const Plan p = plan(net_, options_);
   if (p.overflow) return overflowAnswer(net_);
-  if (options_.threads > 1 && !p.cover) return exploreParallel(net_, options_, p);
+  if (options_.threads > 1 && !p.cover && transitions <= kParallelTransitions) return exploreParallel(net_, options_, p);
   cover_ = p.cover;
   token_delta_.assign(transitions, 0);
   for (TransitionId t = 0; t < transitions; ++t) {

@@ -1,11 +1,20 @@
 // The parallel state-space search. Each thread owns the markings whose hash falls to it
 // (a store of its own), expands them, and sends each successor to its owner's inbox; the
-// search ends when no marking is in flight. A second parallel pass writes the graph as
-// arrays (successors in transition order), and one thread then finds its strongly connected
-// components and the shortest path to a deadlock over those arrays, as the sequential
-// search does over the implicit graph. The answers are the same as the sequential search's.
+// search ends when no marking is in flight. The graph is written as it is found: each state
+// expanded reserves a run of slots for its successors (in the order their transitions are
+// found) and each slot gets its successor's id from the successor's owner once stored. One
+// thread then decides liveness and reversibility over those arrays (a dead state decides
+// both; a way back to the start from every state decides both; otherwise the strongly
+// connected components) and finds a shortest path to a deadlock. The answers are the same as
+// the sequential search's.
+//
+// A thread expands its states in batches: it makes every successor of a batch first, then
+// looks them up in its table with the slots and the markings of the lookups ahead fetched
+// into the cache, so that many misses are in flight rather than one state's worth.
 
+#include <algorithm>
 #include <atomic>
+#include <bit>
 #include <mutex>
 #include <thread>
 
@@ -14,19 +23,28 @@
 namespace gdpn::net::detail {
 namespace {
 
+/// Successor slots in one chunk of the graph arrays: a state's run of them (its count and its
+/// successors) never crosses a chunk.
+using Succ = Chunked<std::uint32_t, 20>;
+/// Fills the end of a chunk of successor slots that the next run did not fit in.
+constexpr std::uint32_t kPad = 0xffffffffu;
+
 struct Shard {
   std::unique_ptr<Store> store;
   std::mutex inbox_mutex;
-  std::vector<std::uint64_t> inbox;  // packed markings waiting to be stored
+  // records of a packed marking to store and the address of the slot its id goes to
+  std::vector<std::uint64_t> inbox;
   std::vector<StateId> work;         // stored, not yet expanded
   std::unique_ptr<Observed> seen;
   std::vector<bool> fired;
   std::atomic<std::uint64_t> edges{0};
   std::atomic<std::uint64_t> bytes{0};  // what the store holds, as its thread last saw
-  // the graph, written by the second pass: successors of local state i lie in
-  // succ[first[i] .. first[i + 1])
-  std::vector<std::uint64_t> first;
-  std::vector<std::uint32_t> succ;
+  std::uint64_t dead = 0;               // states expanded without a successor
+  // the graph: local state i's run in succ starts at first[i]: the number of its
+  // successors, its own global id, then theirs (global ids); a chunk's room too small for
+  // the next run is filled with kPad
+  Chunked<std::uint64_t, 18> first;
+  Succ succ;
 };
 
 class Parallel {
@@ -38,6 +56,7 @@ class Parallel {
         candidates_(net),
         firing_(net),
         threads_(options.threads),
+        shard_bits_(static_cast<unsigned>(std::bit_width(options.threads - 1))),
         shards_(options.threads) {
     candidates_.use(layout_);
     firing_.use(layout_);
@@ -52,6 +71,7 @@ class Parallel {
     const std::uint64_t h = shards_[0].store->hash(key.data());
     start_ = owner(h);
     shards_[start_].inbox = key;
+    shards_[start_].inbox.push_back(reinterpret_cast<std::uintptr_t>(&root_slot_));
     outstanding_ = 1;
     active_ = options.threads;
   }
@@ -67,19 +87,16 @@ class Parallel {
     for (auto& s : shards_) {
       out.states += s.store->size();
       out.edges += s.edges.load();
+      out.dead_markings += s.dead;
       for (std::size_t t = 0; t < s.fired.size(); ++t) out.fired[t] = out.fired[t] || s.fired[t];
       seen.merge(*s.seen);
       largest = std::max<std::uint64_t>(largest, s.store->size());
     }
-    if (stop_ == ExploreStop::Done && largest * threads_ >= 0xfffffff0u) stop_ = ExploreStop::MaxStates;
+    const std::uint64_t ids = largest << shard_bits_;
+    if (stop_ == ExploreStop::Done && ids >= 0xfffffff0u) stop_ = ExploreStop::MaxStates;
     out.stop = stop_;
     out.complete = stop_ == ExploreStop::Done;
-    if (out.complete) {
-      pool.clear();
-      for (unsigned s = 0; s < threads_; ++s) pool.emplace_back([this, s] { writeGraph(s); });
-      for (auto& t : pool) t.join();
-      components(out, largest * threads_);
-    }
+    if (out.complete) components(out, ids);
     seen.settle(layout_);
     summarise(net_, seen, out);
     out.peak_bytes = std::max(peak_, bytes());
@@ -88,7 +105,10 @@ class Parallel {
 
  private:
   unsigned owner(std::uint64_t h) const { return static_cast<unsigned>(((h >> 32) * threads_) >> 32); }
-  std::uint32_t global(unsigned shard, StateId local) const { return local * threads_ + shard; }
+  /// A state's id in the graph: its id in its shard's store, then the shard in the low bits.
+  std::uint32_t global(unsigned shard, StateId local) const { return (local << shard_bits_) | shard; }
+  const Shard& shardOf(std::uint32_t g) const { return shards_[g & ((1u << shard_bits_) - 1)]; }
+  static StateId localOf(std::uint32_t g, unsigned bits) { return g >> bits; }
 
   /// Memory held, as each thread last reported it (safe to call while they run).
   std::uint64_t bytes() const {
@@ -97,19 +117,23 @@ class Parallel {
     return b;
   }
   static void account(Shard& s) {
-    s.bytes.store(s.store->bytes() + s.work.capacity() * sizeof(StateId) + s.first.capacity() * sizeof(std::uint64_t) +
-                      s.succ.capacity() * sizeof(std::uint32_t),
+    s.bytes.store(s.store->bytes() + s.work.capacity() * sizeof(StateId) + s.first.bytes() +
+                      s.succ.bytes(),
                   std::memory_order_relaxed);
   }
 
-  /// Stores `key` in shard `s` (its own thread); a new marking becomes work.
-  void store(Shard& s, const std::uint64_t* key, std::uint64_t h) {
+  /// Stores `key` in shard `me` (its own thread): its global id. A new marking becomes work.
+  std::uint32_t store(unsigned me, const std::uint64_t* key, std::uint64_t h) {
+    Shard& s = shards_[me];
     bool added = false;
     const StateId id = s.store->insert(key, h, added);
-    if (!added) return;
-    s.seen->note(layout_, s.store->at(id));
-    s.work.push_back(id);
-    states_.fetch_add(1, std::memory_order_relaxed);
+    if (added) {
+      s.seen->note(layout_, s.store->at(id));
+      s.work.push_back(id);
+      s.first.push(0);
+      states_.fetch_add(1, std::memory_order_relaxed);
+    }
+    return global(me, id);
   }
 
   void explore(unsigned me) {
@@ -118,13 +142,18 @@ class Parallel {
     // with work are counted in active_. All is done when both are zero, read in that order.
     Shard& s = shards_[me];
     const std::size_t words = layout_.words();
-    const std::size_t transitions = net_.transitions().size();
+    const std::size_t record = words + 1;
+    // how far ahead of the lookup a table slot, and then the marking it names, is fetched
+    constexpr std::size_t kSlotAhead = 16, kMarkingAhead = 8;
+    // states a batch takes, and successors past which it takes no more
+    constexpr std::size_t kBatchStates = 64, kBatchSuccessors = 512;
     std::vector<std::vector<std::uint64_t>> outbox(threads_);
-    std::vector<std::uint64_t> batch, keys(transitions * words), hashes(transitions);
+    std::vector<std::uint64_t> batch, keys, hashes;
+    std::vector<std::uint32_t*> slots;
     std::vector<TransitionId> candidates;
     auto flush = [&](unsigned to) {
       if (outbox[to].empty()) return;
-      outstanding_.fetch_add(static_cast<std::int64_t>(outbox[to].size() / words));
+      outstanding_.fetch_add(static_cast<std::int64_t>(outbox[to].size() / record));
       std::lock_guard lock(shards_[to].inbox_mutex);
       auto& in = shards_[to].inbox;
       in.insert(in.end(), outbox[to].begin(), outbox[to].end());
@@ -140,39 +169,65 @@ class Parallel {
       }
       if (!batch.empty()) {
         if (!active) active_.fetch_add(1), active = true;
-        for (std::size_t i = 0; i < batch.size(); i += words) store(s, &batch[i], s.store->hash(&batch[i]));
-        outstanding_.fetch_sub(static_cast<std::int64_t>(batch.size() / words));
-      }
-      for (int n = 0; n < 1024 && !s.work.empty(); ++n) {
-        const StateId v = s.work.back();
-        s.work.pop_back();
-        // all successors first, their table slots fetched while the next are made
-        std::size_t count = 0;
-        candidates_.find(s.store->at(v), firing_, candidates);
-        for (TransitionId t : candidates) {
-          std::size_t field = 0;
-          std::uint64_t* out = keys.data() + count * words;
-          const Fired f = firing_.fire(t, s.store->at(v), out, field);
-          if (f == Fired::NotEnabled) continue;
-          if (f == Fired::TooBig) {
-            halt(ExploreStop::Overflow);
-            break;
-          }
-          s.fired[t] = true;
-          hashes[count] = s.store->hash(out);
-          if (owner(hashes[count]) == me) s.store->prefetch(hashes[count]);
-          ++count;
+        for (std::size_t i = 0; i < batch.size(); i += record) {
+          *reinterpret_cast<std::uint32_t*>(static_cast<std::uintptr_t>(batch[i + words])) =
+              store(me, &batch[i], s.store->hash(&batch[i]));
         }
-        s.edges.fetch_add(count, std::memory_order_relaxed);
-        for (std::size_t i = 0; i < count; ++i) {
+        outstanding_.fetch_sub(static_cast<std::int64_t>(batch.size() / record));
+      }
+      for (int n = 0; n < 16 && !s.work.empty() && !stop_flag_.load(std::memory_order_relaxed); ++n) {
+        // the successors of a batch of states, each given the slot its id goes to
+        std::size_t made = 0;
+        for (std::size_t b = 0; b < kBatchStates && made < kBatchSuccessors && !s.work.empty(); ++b) {
+          const StateId v = s.work.back();
+          s.work.pop_back();
+          const std::uint64_t* m = s.store->at(v);
+          candidates_.find(m, firing_, candidates);
+          if (keys.size() < (made + candidates.size()) * words) keys.resize(2 * (made + candidates.size()) * words);
+          const std::size_t begin = made;
+          for (TransitionId t : candidates) {
+            std::size_t field = 0;
+            const Fired f = firing_.fire(t, m, keys.data() + made * words, field);
+            if (f == Fired::NotEnabled) continue;
+            if (f == Fired::TooBig) {
+              halt(ExploreStop::Overflow);
+              break;
+            }
+            s.fired[t] = true;
+            ++made;
+          }
+          const std::size_t count = made - begin;
+          const std::size_t run = s.succ.appendRun(count + 2, kPad);
+          s.first[v] = run;
+          s.succ.at(run)[0] = static_cast<std::uint32_t>(count);
+          s.succ.at(run)[1] = global(me, v);
+          if (count == 0) ++s.dead;
+          if (slots.size() < made) slots.resize(2 * made), hashes.resize(2 * made);
+          for (std::size_t i = begin; i < made; ++i) {
+            slots[i] = s.succ.at(run + 2 + (i - begin));
+            hashes[i] = s.store->hash(keys.data() + i * words);
+          }
+        }
+        s.edges.fetch_add(made, std::memory_order_relaxed);
+        // the lookups, each with the slot of one further ahead and the marking of one
+        // nearer ahead on their way
+        auto mine = [&](std::size_t i) { return owner(hashes[i]) == me; };
+        for (std::size_t i = 0; i < std::min(made, kSlotAhead); ++i) {
+          if (mine(i)) s.store->prefetch(hashes[i]);
+        }
+        for (std::size_t i = 0; i < made; ++i) {
+          if (i + kSlotAhead < made && mine(i + kSlotAhead)) s.store->prefetch(hashes[i + kSlotAhead]);
+          if (i + kMarkingAhead < made && mine(i + kMarkingAhead)) s.store->peek(hashes[i + kMarkingAhead]);
           const std::uint64_t* key = keys.data() + i * words;
           const unsigned to = owner(hashes[i]);
           if (to == me) {
-            store(s, key, hashes[i]);
-          } else {
-            outbox[to].insert(outbox[to].end(), key, key + words);
-            if (outbox[to].size() >= 1024 * words) flush(to);
+            *slots[i] = store(me, key, hashes[i]);
+            continue;
           }
+          auto& box = outbox[to];
+          box.insert(box.end(), key, key + words);
+          box.push_back(reinterpret_cast<std::uintptr_t>(slots[i]));
+          if (box.size() >= 1024 * record) flush(to);
         }
       }
       account(s);
@@ -206,81 +261,80 @@ class Parallel {
     stop_flag_ = true;
   }
 
-  void writeGraph(unsigned me) {
-    Shard& s = shards_[me];
-    const std::size_t words = layout_.words();
-    const std::size_t transitions = net_.transitions().size();
-    std::vector<std::uint64_t> keys(transitions * words), hashes(transitions);
-    std::vector<TransitionId> candidates;
-    s.first.reserve(s.store->size() + 1);
-    s.succ.reserve(s.edges.load());
-    for (StateId v = 0; v < s.store->size(); ++v) {
-      s.first.push_back(s.succ.size());
-      std::size_t count = 0;
-      candidates_.find(s.store->at(v), firing_, candidates);
-      for (TransitionId t : candidates) {
-        std::size_t field = 0;
-        std::uint64_t* out = keys.data() + count * words;
-        if (firing_.fire(t, s.store->at(v), out, field) != Fired::Ok) continue;
-        hashes[count] = s.store->hash(out);
-        shards_[owner(hashes[count])].store->prefetch(hashes[count]);
-        ++count;
-      }
-      for (std::size_t i = 0; i < count; ++i) {
-        const unsigned to = owner(hashes[i]);
-        s.succ.push_back(global(to, shards_[to].store->find(keys.data() + i * words, hashes[i])));
-      }
-    }
-    s.first.push_back(s.succ.size());
-    account(s);
-  }
-
   const std::uint32_t* succBegin(std::uint32_t g) const {
-    const Shard& s = shards_[g % threads_];
-    return s.succ.data() + s.first[g / threads_];
+    const Shard& s = shardOf(g);
+    return s.succ.at(s.first[localOf(g, shard_bits_)]) + 2;
   }
   const std::uint32_t* succEnd(std::uint32_t g) const {
-    const Shard& s = shards_[g % threads_];
-    return s.succ.data() + s.first[g / threads_ + 1];
+    const Shard& s = shardOf(g);
+    const std::uint32_t* run = s.succ.at(s.first[localOf(g, shard_bits_)]);
+    return run + 2 + *run;
   }
-  const std::uint64_t* marking(std::uint32_t g) const { return shards_[g % threads_].store->at(g / threads_); }
+  const std::uint64_t* marking(std::uint32_t g) const { return shardOf(g).store->at(localOf(g, shard_bits_)); }
 
-  /// Strongly connected components over the arrays (Pearce's variant of Tarjan's
-  /// algorithm, as in the sequential search), then the shortest path to a deadlock.
+  /// Liveness and reversibility, and a shortest path to a dead state when there is one.
+  /// Where a state is dead, the net is neither live (unless it has no transition) nor
+  /// reversible (unless the dead state is the only one); otherwise the strongly connected
+  /// components over the arrays decide (Pearce's variant of Tarjan's algorithm, as in the
+  /// sequential search).
   void components(StateSpace& out, std::uint64_t ids) {
     const std::size_t transitions = net_.transitions().size();
-    std::vector<std::uint32_t> rindex(ids, 0);
+    const std::uint32_t s0 = global(start_, 0);
+    out.deadlock = out.dead_markings > 0;
+    if (out.deadlock) {
+      out.live = transitions == 0;
+      out.reversible = out.states == 1;
+      pathToDeadlock(out, ids, s0);
+      return;
+    }
+    // read at random, on huge pages
+    // the common case first: the initial state reached from every state, one component
+    if (reachingStart(ids, s0, out.states) == out.states) {
+      out.reversible = true;
+      out.live = std::all_of(out.fired.begin(), out.fired.end(), [](bool f) { return f; });
+      return;
+    }
+    std::vector<std::uint32_t> rindex;
+    core::reserveLarge(rindex, ids);
+    rindex.assign(ids, 0);
     std::vector<bool> leaves(ids, false);
     std::vector<std::uint32_t> stack;
+    // a state's successors are taken from the last to the first (any order finds the same
+    // components)
     struct Frame {
       std::uint32_t v;
+      const std::uint32_t* begin;
       const std::uint32_t* pos;
-      const std::uint32_t* end;
       bool root;
     };
     std::vector<Frame> frames;
     std::uint32_t index = 1, comp = 0xfffffffeu, bottoms = 0;
-    bool live = true, root_bottom = false, deadlock = false;
+    bool live = true, root_bottom = false;
     std::vector<bool> fires(transitions);
     std::vector<TransitionId> candidates;
-    const std::uint32_t s0 = global(start_, 0);
     auto visit = [&](std::uint32_t v) {
       rindex[v] = index++;
-      frames.push_back({v, succBegin(v), succEnd(v), true});
-      if (succBegin(v) == succEnd(v)) deadlock = true;
+      const std::uint32_t* begin = succBegin(v);
+      const std::uint32_t* end = begin + begin[-2];
+      frames.push_back({v, begin, end, true});
+      // the index of each successor, and where the new ones' successors lie, on their way
+      for (const std::uint32_t* e = begin; e != end; ++e) {
+        __builtin_prefetch(&rindex[*e]);
+        __builtin_prefetch(&shardOf(*e).first[localOf(*e, shard_bits_)]);
+      }
     };
     visit(s0);
     while (!frames.empty()) {
       Frame& f = frames.back();
-      if (f.pos != f.end) {
-        const std::uint32_t w = *f.pos;
+      if (f.pos != f.begin) {
+        const std::uint32_t w = f.pos[-1];
         if (rindex[w] == 0) {
           visit(w);
           continue;
         }
         if (rindex[w] < rindex[f.v]) rindex[f.v] = rindex[w], f.root = false;
         if (rindex[w] > comp) leaves[f.v] = true;
-        ++f.pos;
+        --f.pos;
         continue;
       }
       const std::uint32_t v = f.v;
@@ -314,19 +368,94 @@ class Parallel {
         const std::uint32_t rw = rindex[v];
         if (rw < rindex[parent.v]) rindex[parent.v] = rw, parent.root = false;
         if (rw > comp) leaves[parent.v] = true;
-        ++parent.pos;
+        --parent.pos;
       }
     }
     peak_ = std::max(peak_, bytes() + ids * (sizeof(std::uint32_t) + 1));
-    out.deadlock = deadlock;
     out.live = live;
     out.reversible = bottoms == 1 && root_bottom;
-    if (!deadlock) return;
-    // breadth first over the arrays: the first dead state met, and how it was reached
-    std::vector<std::uint32_t>& parent = rindex;
-    std::fill(parent.begin(), parent.end(), 0xffffffffu);
+  }
+
+  /// Calls `f(v, begin, end)` for every state expanded: its global id and its successors'.
+  template <typename F>
+  void forEachRun(F&& f) const {
+    for (const Shard& s : shards_) {
+      const std::size_t chunks = (s.succ.size() + Succ::chunkElements() - 1) / Succ::chunkElements();
+      for (std::size_t c = 0; c < chunks; ++c) {
+        const auto [data, size] = s.succ.chunk(c);
+        for (std::size_t i = 0; i < size && data[i] != kPad; i += 2 + data[i]) f(data[i + 1], data + i + 2, data + i + 2 + data[i]);
+      }
+    }
+  }
+
+  /// The number of states with a path to `s0`. First sweeps over the runs in the order they
+  /// were written, each marking a state one of whose successors is marked: a search from the
+  /// start tends to write a state after those on its way back, so that a few sweeps mark
+  /// them all. Where a sweep marks less than a hundredth of the states left, breadth first
+  /// from `s0` over the edges reversed (4 bytes an edge more, for the time it takes).
+  std::uint64_t reachingStart(std::uint64_t ids, std::uint32_t s0, std::uint64_t states) {
+    std::vector<std::uint64_t> reach((ids + 63) / 64, 0);
+    auto isMarked = [&](std::uint32_t g) { return ((reach[g >> 6] >> (g & 63)) & 1) != 0; };
+    auto mark = [&](std::uint32_t g) { reach[g >> 6] |= std::uint64_t{1} << (g & 63); };
+    mark(s0);
+    std::uint64_t marked = 1;
+    for (;;) {
+      const std::uint64_t before = marked;
+      forEachRun([&](std::uint32_t v, const std::uint32_t* begin, const std::uint32_t* end) {
+        if (isMarked(v)) return;
+        for (const std::uint32_t* e = begin; e != end; ++e) {
+          if (isMarked(*e)) {
+            mark(v);
+            ++marked;
+            return;
+          }
+        }
+      });
+      if (marked == before) return marked;
+      if ((marked - before) * 100 < states - before) break;
+    }
+    // the edges reversed: the predecessors of id g in preds[first[g] .. first[g + 1])
+    std::vector<std::uint64_t> first;
+    core::reserveLarge(first, ids + 1);
+    first.assign(ids + 1, 0);
+    std::uint64_t edges = 0;
+    forEachRun([&](std::uint32_t, const std::uint32_t* begin, const std::uint32_t* end) {
+      for (const std::uint32_t* e = begin; e != end; ++e) ++first[*e + 1];
+      edges += static_cast<std::uint64_t>(end - begin);
+    });
+    for (std::size_t g = 0; g < ids; ++g) first[g + 1] += first[g];
+    std::vector<std::uint32_t> preds;
+    core::reserveLarge(preds, edges);
+    preds.resize(edges);
+    peak_ = std::max(peak_, bytes() + reach.size() * 8 + first.size() * 8 + edges * 4);
+    forEachRun([&](std::uint32_t v, const std::uint32_t* begin, const std::uint32_t* end) {
+      for (const std::uint32_t* e = begin; e != end; ++e) preds[first[*e]++] = v;
+    });
+    // first[g] now holds where g's predecessors end: they begin where g - 1's end
+    std::vector<std::uint32_t> queue;
+    queue.reserve(states - marked);
+    forEachRun([&](std::uint32_t v, const std::uint32_t*, const std::uint32_t*) {
+      if (isMarked(v)) queue.push_back(v);
+    });
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const std::uint32_t w = queue[head];
+      for (std::uint64_t k = w == 0 ? 0 : first[w - 1]; k < first[w]; ++k) {
+        if (isMarked(preds[k])) continue;
+        mark(preds[k]);
+        ++marked;
+        queue.push_back(preds[k]);
+      }
+    }
+    return marked;
+  }
+
+  /// A shortest firing sequence from `s0` to a dead state: breadth first over the arrays.
+  void pathToDeadlock(StateSpace& out, std::uint64_t ids, std::uint32_t s0) {
+    std::vector<std::uint32_t> parent(ids, 0xffffffffu);
     std::vector<std::uint32_t> via(ids, 0), queue{s0};
+    std::vector<TransitionId> candidates;
     parent[s0] = s0;
+    peak_ = std::max(peak_, bytes() + ids * 2 * sizeof(std::uint32_t));
     for (std::size_t head = 0; head < queue.size(); ++head) {
       const std::uint32_t v = queue[head];
       if (succBegin(v) == succEnd(v)) {
@@ -360,8 +489,10 @@ class Parallel {
   Candidates candidates_;  // shared: read only once made
   Firing firing_;          // likewise
   unsigned threads_;
+  unsigned shard_bits_;  // bits of a state's id that name its shard
   std::vector<Shard> shards_;
   unsigned start_ = 0;
+  std::uint32_t root_slot_ = 0;  // where the initial state's id goes
   std::atomic<std::int64_t> outstanding_{0};
   std::atomic<std::int64_t> active_{0};
   std::atomic<std::uint64_t> states_{0};

@@ -114,6 +114,7 @@ TEST_P(Conformance, ThreadsGiveTheSameAnswers) {
     EXPECT_EQ(s.live, ref.l) << threads;
     EXPECT_EQ(s.quasi_live, ref.ql) << threads;
     EXPECT_EQ(s.reversible, one.reversible) << threads;
+    EXPECT_EQ(s.dead_markings, one.dead_markings) << threads;
     // each search gives its own path; the threads' is a shortest one (breadth first over the
     // graph they keep)
     if (s.deadlock) {
@@ -392,6 +393,57 @@ TEST(Analysis, FiringsThatMoveTokensBetweenFieldsOfOnePackedWordKeepEveryCount) 
     EXPECT_TRUE(s.live);
     EXPECT_TRUE(s.reversible);
     EXPECT_FALSE(s.deadlock);
+  }
+}
+
+TEST(Analysis, ThreadsDecideReversibilityOnALongRingWithAndWithoutAWayOut) {
+  // a token goes round a ring of 300 places; the way back to the start is 299 firings long,
+  // so that the threads' sweeps over their arrays make little headway and they search
+  // backwards over the edges reversed. With a way out of the ring into a cycle of two places
+  // (never back), the net is neither reversible nor live and the components decide; without
+  // it, every marking is on the ring: reversible and live.
+  for (const bool way_out : {false, true}) {
+    NetBuilder b;
+    constexpr int kRing = 300;
+    std::vector<PlaceId> ring;
+    for (int i = 0; i < kRing; ++i) {
+      ring.push_back(b.addPlace("r" + std::to_string(i)));
+      b.setSlot(ring.back(), kDefaultSlot, SlotKind::Control, kUnbounded, i == 0 ? 1 : 0);
+    }
+    for (int i = 0; i < kRing; ++i) {
+      const auto t = b.addTransition("t" + std::to_string(i));
+      b.addInput(ring[static_cast<std::size_t>(i)], t);
+      b.addOutput(t, ring[static_cast<std::size_t>((i + 1) % kRing)]);
+    }
+    if (way_out) {
+      const auto q0 = b.addPlace("q0");
+      const auto q1 = b.addPlace("q1");
+      const auto out = b.addTransition("out");
+      b.addInput(ring[1], out);
+      b.addOutput(out, q0);
+      const auto there = b.addTransition("there");
+      b.addInput(q0, there);
+      b.addOutput(there, q1);
+      const auto back = b.addTransition("back");
+      b.addInput(q1, back);
+      b.addOutput(back, q0);
+    }
+    const auto net = b.freeze();
+    const auto one = explore(*net);
+    ASSERT_EQ(one.states, way_out ? 302u : 300u);
+    EXPECT_EQ(one.reversible, !way_out);
+    EXPECT_EQ(one.live, !way_out);
+    for (const unsigned threads : {2u, 3u}) {
+      ExploreOptions options;
+      options.threads = threads;
+      const auto s = explore(*net, options);
+      EXPECT_EQ(s.states, one.states) << threads;
+      EXPECT_EQ(s.edges, one.edges) << threads;
+      EXPECT_EQ(s.reversible, !way_out) << threads;
+      EXPECT_EQ(s.live, !way_out) << threads;
+      EXPECT_FALSE(s.deadlock) << threads;
+      EXPECT_EQ(s.dead_markings, 0u) << threads;
+    }
   }
 }
 

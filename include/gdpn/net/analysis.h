@@ -40,9 +40,10 @@ inline constexpr std::size_t kDeadPaths = 3;
 struct ExploreOptions {
   std::uint64_t max_states = 20'000'000;  ///< stop (partial answer) past this many states
   std::uint64_t max_bytes = 0;            ///< stop (partial answer) past this much memory, bytes; 0: none
-  /// Worker threads. Above 1, markings are shared out among the threads by hash and the
-  /// graph is kept as arrays for a sequential pass over its components (more memory); a net
-  /// with a place that no invariant or capacity bounds is searched by one thread.
+  /// Worker threads. Above 1, markings are shared out among the threads by hash, each
+  /// expanding its markings in batches, and the graph is kept as arrays (4 bytes an edge and
+  /// 16 a state more) for the passes that decide liveness and reversibility; a net with a
+  /// place that no invariant or capacity bounds is searched by one thread.
   unsigned threads = 1;
   /// Called every 4,096 new states; may be empty.
   std::function<void(const ExploreProgress&)> progress;
@@ -89,8 +90,7 @@ struct StateSpace {
   std::uint64_t edges = 0;               ///< one per marking and enabled transition
   bool deadlock = false;                 ///< a dead marking is reachable
   std::vector<TransitionId> deadlock_path;  ///< a firing sequence to one (ExploreOptions::shortest_path: a shortest)
-  /// Dead markings met (every one when the search is complete); 0 from a search of several
-  /// threads, which does not count them.
+  /// Dead markings met (every one when the search is complete).
   std::uint64_t dead_markings = 0;
   /// Firing sequences to the next dead markings the search met after the first, at most
   /// kDeadPaths - 1 of them (one thread).
@@ -112,7 +112,7 @@ struct StateSpace {
 
 /// Explores the reachability graph of `net` from its initial marking. Markings are packed
 /// into bit fields sized by the invariants' bounds; strongly connected components are found
-/// during the depth-first search, so no edge is stored.
+/// during the depth-first search of one thread, so that no edge is stored.
 StateSpace explore(const Net& net, const ExploreOptions& options = {});
 
 /// A word for why a phase stopped ("complete", "partial: --max-states reached", ...).

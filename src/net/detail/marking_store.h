@@ -12,6 +12,7 @@
 #include <span>
 #include <new>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "gdpn/core/memory.h"
@@ -123,7 +124,28 @@ class Chunked {
     return at(size_++);
   }
   void push(const T& x) { *append() = x; }
+  /// Appends `n` elements (1 to a chunk's worth) that lie one after another in memory, moving
+  /// on to a new chunk where the current one has too little room (the rest of it set to
+  /// `pad`); the index of the first.
+  std::size_t appendRun(std::size_t n, const T& pad) {
+    if ((size_ & kMask) + n > kMask + 1) {
+      std::fill(at(size_), at(size_ | kMask) + stride_, pad);
+      size_ = (size_ | kMask) + 1;
+    }
+    while (((size_ + n - 1) >> kShift) >= chunks_.size()) chunks_.push_back(allocate());
+    const std::size_t first = size_;
+    size_ += n;
+    return first;
+  }
+  /// The elements one chunk holds.
+  static constexpr std::size_t chunkElements() { return kMask + 1; }
+  /// The elements in use of chunk `c` (of size() / chunkElements(), rounded up): the first,
+  /// and how many.
+  std::pair<const T*, std::size_t> chunk(std::size_t c) const {
+    return {chunks_[c].get(), std::min(size_ - (c << kShift), kMask + 1) * stride_};
+  }
   T& operator[](std::size_t i) { return *at(i); }
+  const T& operator[](std::size_t i) const { return *at(i); }
   T& back() { return *at(size_ - 1); }
   bool empty() const { return size_ == 0; }
   /// Drops the elements from `n` on; the chunks stay for reuse.
@@ -447,6 +469,9 @@ void summarise(const Net& net, const Observed& seen, StateSpace& out);
 /// The answer for a net whose initial marking cannot be stored.
 StateSpace overflowAnswer(const Net& net);
 
+/// The most transitions a net may have for the parallel search (one state's successors lie
+/// in one chunk of its arrays); a net with more is searched by one thread.
+constexpr std::size_t kParallelTransitions = (std::size_t{1} << 20) - 2;
 /// The parallel search (ExploreOptions::threads > 1, no place without a bound).
 StateSpace exploreParallel(const Net& net, const ExploreOptions& options, const Plan& plan);
 
