@@ -72,8 +72,7 @@ class Parallel {
     start_ = owner(h);
     shards_[start_].inbox = key;
     shards_[start_].inbox.push_back(reinterpret_cast<std::uintptr_t>(&root_slot_));
-    outstanding_ = 1;
-    active_ = options.threads;
+    pending_ = 1 + static_cast<std::int64_t>(options.threads);
   }
 
   StateSpace run() {
@@ -92,10 +91,14 @@ class Parallel {
       seen.merge(*s.seen);
       largest = std::max<std::uint64_t>(largest, s.store->size());
     }
+    // ids keep their top bit free, as the sequential search's: the components count indexes
+    // up from 1 and finished components down from 2^32 - 2
     const std::uint64_t ids = largest << shard_bits_;
-    if (stop_ == ExploreStop::Done && ids >= 0xfffffff0u) stop_ = ExploreStop::MaxStates;
+    if (stop_ == ExploreStop::Done && ids >= 0x7ffffff0u) stop_ = ExploreStop::MaxStates;
     out.stop = stop_;
     out.complete = stop_ == ExploreStop::Done;
+    // a partial search gives no path: its arrays may have slots no owner filled yet
+    out.deadlock = out.dead_markings > 0;
     if (out.complete) components(out, ids);
     seen.settle(layout_);
     summarise(net_, seen, out);
@@ -137,9 +140,11 @@ class Parallel {
   }
 
   void explore(unsigned me) {
-    // Markings in flight between threads are counted in outstanding_ (added by the sender
-    // before they reach an inbox, taken off by the receiver after storing them); threads
-    // with work are counted in active_. All is done when both are zero, read in that order.
+    // pending_ counts the markings in flight between threads (added by the sender before
+    // they reach an inbox, taken off by the receiver after storing them) and the threads at
+    // work (a thread that takes markings from its inbox counts itself before it takes them
+    // off; one that runs out of work flushes its outboxes before it takes itself off). One
+    // counter, read at once: all is done when it is zero.
     Shard& s = shards_[me];
     const std::size_t words = layout_.words();
     const std::size_t record = words + 1;
@@ -153,7 +158,7 @@ class Parallel {
     std::vector<TransitionId> candidates;
     auto flush = [&](unsigned to) {
       if (outbox[to].empty()) return;
-      outstanding_.fetch_add(static_cast<std::int64_t>(outbox[to].size() / record));
+      pending_.fetch_add(static_cast<std::int64_t>(outbox[to].size() / record));
       std::lock_guard lock(shards_[to].inbox_mutex);
       auto& in = shards_[to].inbox;
       in.insert(in.end(), outbox[to].begin(), outbox[to].end());
@@ -168,12 +173,12 @@ class Parallel {
         batch.swap(s.inbox);
       }
       if (!batch.empty()) {
-        if (!active) active_.fetch_add(1), active = true;
+        if (!active) pending_.fetch_add(1), active = true;
         for (std::size_t i = 0; i < batch.size(); i += record) {
           *reinterpret_cast<std::uint32_t*>(static_cast<std::uintptr_t>(batch[i + words])) =
               store(me, &batch[i], s.store->hash(&batch[i]));
         }
-        outstanding_.fetch_sub(static_cast<std::int64_t>(batch.size() / record));
+        pending_.fetch_sub(static_cast<std::int64_t>(batch.size() / record));
       }
       for (int n = 0; n < 16 && !s.work.empty() && !stop_flag_.load(std::memory_order_relaxed); ++n) {
         // the successors of a batch of states, each given the slot its id goes to
@@ -185,12 +190,14 @@ class Parallel {
           candidates_.find(m, firing_, candidates);
           if (keys.size() < (made + candidates.size()) * words) keys.resize(2 * (made + candidates.size()) * words);
           const std::size_t begin = made;
+          bool overflow = false;
           for (TransitionId t : candidates) {
             std::size_t field = 0;
             const Fired f = firing_.fire(t, m, keys.data() + made * words, field);
             if (f == Fired::NotEnabled) continue;
             if (f == Fired::TooBig) {
               halt(ExploreStop::Overflow);
+              overflow = true;
               break;
             }
             s.fired[t] = true;
@@ -201,7 +208,7 @@ class Parallel {
           s.first[v] = run;
           s.succ.at(run)[0] = static_cast<std::uint32_t>(count);
           s.succ.at(run)[1] = global(me, v);
-          if (count == 0) ++s.dead;
+          if (count == 0 && !overflow) ++s.dead;
           if (slots.size() < made) slots.resize(2 * made), hashes.resize(2 * made);
           for (std::size_t i = begin; i < made; ++i) {
             slots[i] = s.succ.at(run + 2 + (i - begin));
@@ -248,8 +255,8 @@ class Parallel {
       }
       if (s.work.empty() && batch.empty()) {
         for (unsigned to = 0; to < threads_; ++to) flush(to);
-        if (active) active_.fetch_sub(1), active = false;
-        if (outstanding_.load() == 0 && active_.load() == 0) break;
+        if (active) pending_.fetch_sub(1), active = false;
+        if (pending_.load() == 0) break;
         std::this_thread::yield();
       }
     }
@@ -274,13 +281,13 @@ class Parallel {
 
   /// Liveness and reversibility, and a shortest path to a dead state when there is one.
   /// Where a state is dead, the net is neither live (unless it has no transition) nor
-  /// reversible (unless the dead state is the only one); otherwise the strongly connected
+  /// reversible (unless the dead state is the only one); where every state leads back to the
+  /// start, it is reversible, and live when quasi-live; otherwise the strongly connected
   /// components over the arrays decide (Pearce's variant of Tarjan's algorithm, as in the
   /// sequential search).
   void components(StateSpace& out, std::uint64_t ids) {
     const std::size_t transitions = net_.transitions().size();
     const std::uint32_t s0 = global(start_, 0);
-    out.deadlock = out.dead_markings > 0;
     if (out.deadlock) {
       out.live = transitions == 0;
       out.reversible = out.states == 1;
@@ -493,8 +500,7 @@ class Parallel {
   std::vector<Shard> shards_;
   unsigned start_ = 0;
   std::uint32_t root_slot_ = 0;  // where the initial state's id goes
-  std::atomic<std::int64_t> outstanding_{0};
-  std::atomic<std::int64_t> active_{0};
+  std::atomic<std::int64_t> pending_{0};  // markings in flight and threads at work
   std::atomic<std::uint64_t> states_{0};
   std::atomic<bool> stop_flag_{false};
   std::mutex halt_mutex_;

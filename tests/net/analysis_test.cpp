@@ -485,6 +485,8 @@ TEST(Analysis, ThePathToADeadlockFiresFromTheStartToADeadMarking) {
   const auto cut = explore(*net, o);
   EXPECT_EQ(cut.stop, ExploreStop::MaxStates);
   EXPECT_FALSE(cut.decided);
+  // a dead marking met before the limit is a deadlock, though the threads give no path
+  EXPECT_EQ(cut.deadlock, cut.dead_markings > 0);
 }
 
 TEST(Analysis, LimitsStopCleanlyWithAPartialAnswer) {
