@@ -111,7 +111,7 @@ class Parallel {
   /// A state's id in the graph: its id in its shard's store, then the shard in the low bits.
   std::uint32_t global(unsigned shard, StateId local) const { return (local << shard_bits_) | shard; }
   const Shard& shardOf(std::uint32_t g) const { return shards_[g & ((1u << shard_bits_) - 1)]; }
-  static StateId localOf(std::uint32_t g, unsigned bits) { return g >> bits; }
+  StateId localOf(std::uint32_t g) const { return g >> shard_bits_; }
 
   /// Memory held, as each thread last reported it (safe to call while they run).
   std::uint64_t bytes() const {
@@ -270,14 +270,14 @@ class Parallel {
 
   const std::uint32_t* succBegin(std::uint32_t g) const {
     const Shard& s = shardOf(g);
-    return s.succ.at(s.first[localOf(g, shard_bits_)]) + 2;
+    return s.succ.at(s.first[localOf(g)]) + 2;
   }
   const std::uint32_t* succEnd(std::uint32_t g) const {
     const Shard& s = shardOf(g);
-    const std::uint32_t* run = s.succ.at(s.first[localOf(g, shard_bits_)]);
+    const std::uint32_t* run = s.succ.at(s.first[localOf(g)]);
     return run + 2 + *run;
   }
-  const std::uint64_t* marking(std::uint32_t g) const { return shardOf(g).store->at(localOf(g, shard_bits_)); }
+  const std::uint64_t* marking(std::uint32_t g) const { return shardOf(g).store->at(localOf(g)); }
 
   /// Liveness and reversibility, and a shortest path to a dead state when there is one.
   /// Where a state is dead, the net is neither live (unless it has no transition) nor
@@ -294,24 +294,21 @@ class Parallel {
       pathToDeadlock(out, ids, s0);
       return;
     }
-    // read at random, on huge pages
     // the common case first: the initial state reached from every state, one component
     if (reachingStart(ids, s0, out.states) == out.states) {
       out.reversible = true;
       out.live = std::all_of(out.fired.begin(), out.fired.end(), [](bool f) { return f; });
       return;
     }
-    std::vector<std::uint32_t> rindex;
+    std::vector<std::uint32_t> rindex;  // read at random: on huge pages
     core::reserveLarge(rindex, ids);
     rindex.assign(ids, 0);
     std::vector<bool> leaves(ids, false);
     std::vector<std::uint32_t> stack;
-    // a state's successors are taken from the last to the first (any order finds the same
-    // components)
     struct Frame {
       std::uint32_t v;
-      const std::uint32_t* begin;
       const std::uint32_t* pos;
+      const std::uint32_t* end;
       bool root;
     };
     std::vector<Frame> frames;
@@ -321,27 +318,20 @@ class Parallel {
     std::vector<TransitionId> candidates;
     auto visit = [&](std::uint32_t v) {
       rindex[v] = index++;
-      const std::uint32_t* begin = succBegin(v);
-      const std::uint32_t* end = begin + begin[-2];
-      frames.push_back({v, begin, end, true});
-      // the index of each successor, and where the new ones' successors lie, on their way
-      for (const std::uint32_t* e = begin; e != end; ++e) {
-        __builtin_prefetch(&rindex[*e]);
-        __builtin_prefetch(&shardOf(*e).first[localOf(*e, shard_bits_)]);
-      }
+      frames.push_back({v, succBegin(v), succEnd(v), true});
     };
     visit(s0);
     while (!frames.empty()) {
       Frame& f = frames.back();
-      if (f.pos != f.begin) {
-        const std::uint32_t w = f.pos[-1];
+      if (f.pos != f.end) {
+        const std::uint32_t w = *f.pos;
         if (rindex[w] == 0) {
           visit(w);
           continue;
         }
         if (rindex[w] < rindex[f.v]) rindex[f.v] = rindex[w], f.root = false;
         if (rindex[w] > comp) leaves[f.v] = true;
-        --f.pos;
+        ++f.pos;
         continue;
       }
       const std::uint32_t v = f.v;
@@ -375,7 +365,7 @@ class Parallel {
         const std::uint32_t rw = rindex[v];
         if (rw < rindex[parent.v]) rindex[parent.v] = rw, parent.root = false;
         if (rw > comp) leaves[parent.v] = true;
-        --parent.pos;
+        ++parent.pos;
       }
     }
     peak_ = std::max(peak_, bytes() + ids * (sizeof(std::uint32_t) + 1));
