@@ -110,7 +110,10 @@ class SceneReader {
     std::sort(node->params.begin(), node->params.end());
     // with every field read (a joint's kind decides whether its limits are angles), each value
     // in the stored units, then checked by the field's own rules (FieldDesc::check, shared
-    // with scripts and the inspector); a value that fails goes back to its default
+    // with scripts and the inspector); a value that fails goes back to its default. The words
+    // come first: a kind the file misspelt is the default kind before a limit asks for it.
+    std::stable_partition(read.begin(), read.end(),
+                          [&](const auto& r) { return type->fields[r.first]->kind == FieldKind::Enum; });
     for (const auto& [i, field] : read) {
       node->setValue(i, scene::convertAngle(*node, i, node->value(i), angles_, true));
       if (auto bad = type->fields[i]->check(node->value(i))) {
