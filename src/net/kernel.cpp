@@ -204,7 +204,7 @@ void Kernel::prefetchAhead(std::size_t i, std::size_t n, Get get) const {
 
 void Kernel::markEnabled(TransitionId t) {
   ++enabled_count_;
-  tr_[t].enabled_step = step_;
+  tr_[t].enabled_step = settled_ && !in_firing_ ? step_ + 1 : step_;
   const std::uint64_t key = (std::uint64_t{tr_[t].rank} << 32) | t;
   (in_firing_ ? late_ : fresh_).push_back(key);
 }
@@ -704,6 +704,7 @@ void Kernel::fireEnabled() {
   if (random_ties_ || rounds) std::sort(carry_next_.begin(), carry_next_.end(), candidateBefore);
   carry_.swap(carry_next_);
   in_firing_ = false;
+  settled_ = true;
 }
 
 inline bool Kernel::tryStart(TransitionId t, bool again) {

@@ -108,6 +108,28 @@ TEST(NetKernel, NormalArcNeedsItsWeightAndTakesIt) {
   EXPECT_TRUE(k.dead());
 }
 
+TEST(NetKernel, ATokenSetBetweenStepsEnablesInTheNextStep) {
+  // a marking set from outside between two steps (a Modbus controller, the Python module)
+  // makes the transition a candidate of the next step's firing phase, and of every later one
+  NetBuilder b;
+  const auto p = b.addPlace("P");
+  const auto q = b.addPlace("Q");
+  const auto t = b.addTransition("T", seconds(0.5));
+  b.addInput(p, t);
+  b.addOutput(t, q);
+  Kernel k(b.freeze(), {1.0, 1});
+  k.start();
+  k.step();
+  const auto ps = k.net().findPlaceSlot(static_cast<PlaceId>(k.net().findPlace("P")), kDefaultSlot);
+  ASSERT_EQ(k.setMarking(static_cast<PlaceSlotId>(ps), 2), "");
+  EXPECT_TRUE(k.enabled(t));
+  k.step();
+  EXPECT_EQ(tokens(k, "P"), 1) << "T started in the step after the tokens came";
+  k.step();
+  EXPECT_EQ(tokens(k, "Q"), 1);
+  EXPECT_EQ(tokens(k, "P"), 0) << "and again, once its first occurrence ended";
+}
+
 TEST(NetKernel, TestArcNeedsTokensButLeavesThem) {
   NetBuilder b;
   const auto p = b.addPlace("P");

@@ -57,7 +57,10 @@ class Kernel {
   void step();
 
   /// Phase 0: the clock moves to the end of the next step.
-  void beginStep() { ++step_; }
+  void beginStep() {
+    ++step_;
+    settled_ = false;
+  }
   /// A step with the net switched off: the clock moves on and nothing in the net changes.
   /// Occurrences are paused: their start and end move with the clock.
   void idleStep() {
@@ -283,6 +286,9 @@ class Kernel {
   std::int64_t step_ = 0;  // steps with the net on: the clock of occurrences and enabling
   std::int64_t idle_ = 0;  // steps with the net off
   bool in_firing_ = false;
+  // the step's firing phase is over: a transition enabled now (a marking set from outside
+  // between steps) is a candidate of the next step's, and is stamped with that step
+  bool settled_ = false;
   bool random_ties_ = false;
   bool immediate_fired_ = false;  // an immediate occurrence completed in this round
   bool immediates_ = false;       // some transition is immediate
