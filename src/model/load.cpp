@@ -14,6 +14,7 @@
 #include "gdpn/core/text.h"
 #include "gdpn/model/model.h"
 #include "gdpn/scene/actions.h"
+#include "io_section.h"
 #include "scene_io.h"
 #include "yaml_reader.h"
 
@@ -26,7 +27,7 @@ using detail::Entry;
 using detail::YamlReader;
 
 const std::vector<std::string> kTopKeys = {"gdpn", "description", "settings", "params", "signals", "pages",
-                                           "page_types", "scene", "scripts"};
+                                           "page_types", "scene", "scripts", "io"};
 const std::vector<std::string> kSignalKeys = {"place", "node", "of", "expression", "every"};
 const std::vector<std::string> kParamKeys = {"value", "unit", "description"};
 /// The largest whole parameter, 2^53: a double holds every whole number up to it.
@@ -106,6 +107,8 @@ class ModelReader {
         readPages(e.value, model.net.page_types, true);
       } else if (e.key == "scene") {
         model.scene = detail::readScene(e.value, r_, e.loc, angles_);
+      } else if (e.key == "io") {
+        model.io = detail::readIo(e.value, r_);
       } else if (e.key == "scripts") {
         if (!r_.expectMap(e.value, "scripts")) continue;
         for (const auto& g : r_.entries(e.value, "scripts", kScriptsKeys)) {

@@ -5,6 +5,7 @@
 #include "gdpn/core/output_file.h"
 #include "gdpn/core/text.h"
 #include "gdpn/model/model.h"
+#include "io_section.h"
 #include "scene_io.h"
 #include "yaml_reader.h"
 
@@ -282,6 +283,10 @@ std::string writeModel(const Model& model) {
       out << YAML::EndMap;
     }
     out << YAML::EndMap;
+  }
+  if (!model.io.empty()) {
+    out << YAML::Key << "io" << YAML::Value;
+    detail::writeIo(out, model.io);
   }
   if (!model.net.pages.empty()) {
     out << YAML::Key << "pages" << YAML::Value << YAML::BeginMap;

@@ -10,6 +10,7 @@
 #include "gdpn/model/signals.h"
 #include "gdpn/net/net.h"
 #include "gdpn/scene/node.h"
+#include "probe.h"
 
 namespace gdpn::model {
 
@@ -30,23 +31,18 @@ class SignalRecorder {
   [[nodiscard]] const std::string& error() const { return error_; }
 
  private:
-  enum class What : std::uint8_t { None, Position, Velocity, JointAngle, JointRate, Reading, Field };
-  struct Probe {
+  struct Entry {
     SignalSpec spec;
-    What what = What::None;
-    net::PlaceId place = 0;
-    scene::NodeHandle node = 0;
-    std::size_t field = 0;
-    bool linear = false;           // a slider: metres, never converted to degrees
+    Probe probe;                   // what it reads (unused for an expression)
     double period_steps = 0;       // the period in steps (0: every step)
     double next = 0;               // the next multiple of the period to sample at
     bool due_now = false;
     std::size_t first_column = 0;  // its first column in the table
   };
   explicit SignalRecorder(Simulation& sim) : sim_(sim) {}
-  void read(const Probe& p, std::vector<std::optional<double>>& row);
+  void read(const Entry& p, std::vector<std::optional<double>>& row);
   Simulation& sim_;
-  std::vector<Probe> probes_;
+  std::vector<Entry> probes_;
   SignalTable table_;
   std::string error_;
 };

@@ -5,12 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "gdpn/core/text.h"
 #include "gdpn/model/simulation.h"
-#include "gdpn/scene/actions.h"
-#include "gdpn/scene/fields.h"
+#include "probe.h"
 #include "signal_recorder.h"
 
 namespace gdpn::model {
@@ -70,7 +68,7 @@ std::unique_ptr<SignalRecorder> SignalRecorder::create(Simulation& sim, const st
   auto rec = std::unique_ptr<SignalRecorder>(new SignalRecorder(sim));
   bool ok = true;
   for (const auto& spec : specs) {
-    Probe p;
+    Entry p;
     p.spec = spec;
     // a period of less than a step samples every step
     p.period_steps = spec.every > 0 ? spec.every / sim.kernel().dt() : 0.0;
@@ -80,75 +78,19 @@ std::unique_ptr<SignalRecorder> SignalRecorder::create(Simulation& sim, const st
       diags.error(spec.loc, "signal '" + spec.name + "': " + why);
       ok = false;
     };
+    std::string why;
+    std::optional<Probe> probe;
     switch (spec.kind) {
-      case SignalSpec::Kind::Place: {
-        const auto place = sim.net().findPlace(spec.target);
-        if (place < 0) {
-          fail("no place '" + spec.target + "' (names are qualified: page/place)");
-          continue;
-        }
-        p.place = static_cast<net::PlaceId>(place);
-        break;
-      }
-      case SignalSpec::Kind::Expression: break;
-      case SignalSpec::Kind::Node: {
-        const scene::Node* node = sim.plant() ? sim.plant()->find(spec.target) : nullptr;
-        if (node == nullptr) {
-          fail(sim.plant() ? "no scene node '" + spec.target + "'" : "the model has no scene");
-          continue;
-        }
-        if (scene::inTemplate(*node)) {
-          fail("'" + spec.target + "' lies in a template, which is neither simulated nor sensed");
-          continue;
-        }
-        p.node = node->handle();
-        const std::string& q = spec.quantity;
-        if (q == "position") {
-          p.what = What::Position;
-        } else if (q == "velocity") {
-          if (!sim.physics() || !sim.physics()->isBody(*node)) {
-            fail("'" + spec.target + "' is no body the physics moves: it has no velocity");
-            continue;
-          }
-          p.what = What::Velocity;
-        } else if (q == "angle" || q == "rate") {
-          if (node->kind() != scene::NodeKind::Joint || !sim.physics()) {
-            fail("'" + spec.target + "' is no joint: it has no " + q);
-            continue;
-          }
-          p.what = q == "angle" ? What::JointAngle : What::JointRate;
-          p.linear = node->choice<scene::JointKind>(scene::field::Joint::Kind) == scene::JointKind::Slider;
-        } else if (q == "reading") {
-          if (node->type().category != scene::Category::Sensor) {
-            fail("'" + spec.target + "' is no sensor: it has no reading");
-            continue;
-          }
-          p.what = What::Reading;
-        } else {
-          const int i = node->type().fieldIndex(q);
-          const auto* f = i >= 0 ? node->type().fields[static_cast<std::size_t>(i)] : nullptr;
-          if (f == nullptr || (f->kind != scene::FieldKind::Float && f->kind != scene::FieldKind::Int)) {
-            // what this node has: a position always, the others by its kind
-            std::vector<std::string> known = {"position"};
-            if (sim.physics() && sim.physics()->isBody(*node)) known.emplace_back("velocity");
-            if (node->kind() == scene::NodeKind::Joint) known.insert(known.end(), {"angle", "rate"});
-            if (node->type().category == scene::Category::Sensor) known.emplace_back("reading");
-            for (const auto& fd : node->type().fields) {
-              if (fd->kind == scene::FieldKind::Float || fd->kind == scene::FieldKind::Int) known.push_back(fd->name);
-            }
-            std::string list;
-            for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-            fail("a " + node->type().name + " has no number '" + q + "'" + core::didYouMean(q, known) + " (it has: " +
-                 list + ")");
-            continue;
-          }
-          p.what = What::Field;
-          p.field = static_cast<std::size_t>(i);
-        }
-        break;
-      }
+      case SignalSpec::Kind::Place: probe = placeProbe(sim, spec.target, why); break;
+      case SignalSpec::Kind::Node: probe = nodeProbe(sim, spec.target, spec.quantity, why); break;
+      case SignalSpec::Kind::Expression: probe = Probe{}; break;
     }
-    const bool vector = p.what == What::Position || p.what == What::Velocity;
+    if (!probe) {
+      fail(why);
+      continue;
+    }
+    p.probe = std::move(*probe);
+    const bool vector = spec.kind == SignalSpec::Kind::Node && p.probe.width() == 3;
     if (std::any_of(specs.begin(), specs.begin() + (&spec - specs.data()),
                     [&](const SignalSpec& other) { return other.name == spec.name; })) {
       fail("another signal has this name (each names its own column)");
@@ -185,15 +127,8 @@ void SignalRecorder::sample() {
   table_.rows.push_back(std::move(row));
 }
 
-void SignalRecorder::read(const Probe& p, std::vector<std::optional<double>>& row) {
+void SignalRecorder::read(const Entry& p, std::vector<std::optional<double>>& row) {
   auto* at = row.data() + p.first_column;
-  if (p.spec.kind == SignalSpec::Kind::Place) {
-    const auto& place = sim_.net().places()[p.place];
-    std::int64_t tokens = 0;
-    for (auto ps = place.slots_begin; ps < place.slots_end; ++ps) tokens += sim_.kernel().marking(ps);
-    *at = static_cast<double>(tokens);
-    return;
-  }
   if (p.spec.kind == SignalSpec::Kind::Expression) {
     std::string why;
     if (auto v = sim_.evaluateNumber(p.spec.target, why)) {
@@ -204,43 +139,9 @@ void SignalRecorder::read(const Probe& p, std::vector<std::optional<double>>& ro
     }
     return;
   }
-  const scene::Node* node = sim_.plant()->resolve(p.node);
-  if (node == nullptr) return;  // deleted: no value from now on
-  const bool degrees = sim_.model().settings.angles == scene::AngleUnit::Degrees;
-  switch (p.what) {
-    case What::Position: {
-      const core::Vec3 v = node->framePose().position;
-      at[0] = v.x;
-      at[1] = v.y;
-      at[2] = v.z;
-      break;
-    }
-    case What::Velocity: {
-      const core::Vec3 v = sim_.physics()->velocity(*node);
-      at[0] = v.x;
-      at[1] = v.y;
-      at[2] = v.z;
-      break;
-    }
-    case What::JointAngle:
-    case What::JointRate: {
-      const double v = p.what == What::JointAngle ? sim_.physics()->jointPosition(*node) : sim_.physics()->jointRate(*node);
-      *at = !p.linear && degrees ? v * 180.0 / std::numbers::pi : v;
-      break;
-    }
-    case What::Reading: {
-      const auto& r = sim_.reading(p.node);
-      *at = node->kind() == scene::NodeKind::Region ? static_cast<double>(r.items.size()) : r.value;
-      break;
-    }
-    case What::Field: {
-      const auto v = scene::convertAngle(*node, p.field, node->value(p.field), sim_.model().settings.angles, false);
-      if (const auto* d = std::get_if<double>(&v)) *at = *d;
-      else if (const auto* i = std::get_if<std::int64_t>(&v)) *at = static_cast<double>(*i);
-      break;
-    }
-    case What::None: break;
-  }
+  double v[3];
+  if (!readProbe(sim_, p.probe, v)) return;  // deleted: no value from now on
+  for (int k = 0; k < p.probe.width(); ++k) at[k] = v[k];
 }
 
 }  // namespace gdpn::model

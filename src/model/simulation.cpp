@@ -133,11 +133,12 @@ class InstancePlacer {
 
 std::shared_ptr<const net::Net> checkModel(const Model& model, core::Diagnostics& diags, double script_timeout_s) {
   auto net = net::compile(model.net, diags);
-  if (!net || !(net->scripted() || model.scene || !model.signals.empty())) return net;
+  if (!net || !(net->scripted() || model.scene || !model.signals.empty() || !model.io.empty())) return net;
   // the simulation compiles the net again: what that says twice is said once
   core::Diagnostics more;
   auto sim = Simulation::create(model, more, std::nullopt, script_timeout_s);
   if (sim && !model.signals.empty()) sim->recordSignals({}, more);
+  if (sim && !model.io.empty()) IoMap::create(*sim, model.io, more);
   std::set<std::string> said;
   for (const auto& d : diags.all()) said.insert(d.str());
   for (const auto& d : more.all()) {
@@ -541,7 +542,12 @@ void Simulation::firePhase() {
   }
 }
 
+void Simulation::note(const char* event, const std::string& fields) {
+  if (trace_) trace_->event(kernel_->steps(), event, fields);
+}
+
 bool Simulation::dead() const {
+  if (open_) return false;
   const bool net_dead = replay_ ? kernel_->occurringCount() == 0 && (replayed_ == replay_->size() || !replay_blocked_.empty())
                                 : kernel_->dead();
   return net_dead && (!physics_ || physics_->awakeCount() == 0) && (!hub_ || !hub_->mayChange());
@@ -608,9 +614,17 @@ RunOutcome Simulation::run(const RunLimits& limits, const ProgressFn& progress,
       outcome.reason = StopReason::Dead;
       break;
     }
-    if (interrupt && interrupt->load(std::memory_order_relaxed)) {
+    const auto interrupted = [&] { return interrupt && interrupt->load(std::memory_order_relaxed); };
+    if (interrupted()) {
       outcome.reason = StopReason::Interrupted;
       break;
+    }
+    if (before_step_) {
+      before_step_();
+      if (interrupted()) {
+        outcome.reason = StopReason::Interrupted;
+        break;
+      }
     }
     step();
     if (auto halt = physicsHalt()) {

@@ -313,20 +313,8 @@ void setField(const NodeView& v, const std::string& name, const py::object& valu
                          py::str(py::type::of(value).attr("__name__")).cast<std::string>() + " " +
                          py::repr(value).cast<std::string>());
   }
-  out = scene::convertAngle(n, i, std::move(out), v.r.get().angles(), true);
-  if (auto bad = f.check(out)) {
-    const bool radians = v.r.get().angles() == scene::AngleUnit::Radians && scene::isAngular(n, i);
-    throw py::value_error(bad->message + (radians ? " (in degrees; the model writes angles in radians)" : ""));
-  }
-  scene::FieldValue before = n.value(i);
-  n.setValue(i, std::move(out));
-  // the physics keeps some fields of its own (a joint's kind and control, a sensor's scope);
-  // what it cannot follow (a joint kind with a zero axis) is refused, the field as it was
-  if (physics::World* w = v.r.get().physicsWorld()) {
-    if (auto why = w->fieldChanged(n); !why.empty()) {
-      n.setValue(i, std::move(before));
-      throw py::value_error("'" + name + "': " + why);
-    }
+  if (auto why = physics::assignField(n, i, std::move(out), v.r.get().angles(), v.r.get().physicsWorld()); !why.empty()) {
+    throw py::value_error(why);
   }
 }
 

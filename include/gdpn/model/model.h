@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "gdpn/core/diagnostics.h"
+#include "gdpn/model/io.h"
 #include "gdpn/model/signals.h"
 #include "gdpn/net/spec.h"
 #include "gdpn/scene/node.h"
@@ -69,6 +70,7 @@ struct Model {
   Settings settings;         ///< run settings
   std::vector<Param> params; ///< the `params` section, in file order
   std::vector<SignalSpec> signals;  ///< the `signals` section, in file order
+  IoSpec io;                 ///< the `io` section: the plant and net as Modbus tables
   net::NetSpec net;          ///< pages and page types
   std::shared_ptr<const scene::Scene> scene;  ///< the `scene` section; null when the file has none
   /// The scene subtrees page types own (their `scene` sections), by page type name; each
@@ -77,7 +79,7 @@ struct Model {
 
   /// Same content (the path and source locations are not compared).
   friend bool operator==(const Model& a, const Model& b) {
-    return a.description == b.description && a.settings == b.settings && a.params == b.params && a.signals == b.signals && a.net == b.net &&
+    return a.description == b.description && a.settings == b.settings && a.params == b.params && a.signals == b.signals && a.io == b.io && a.net == b.net &&
            sameScene(a.scene, b.scene) && a.type_scenes.size() == b.type_scenes.size() &&
            std::equal(a.type_scenes.begin(), a.type_scenes.end(), b.type_scenes.begin(),
                       [](const auto& x, const auto& y) { return x.first == y.first && sameScene(x.second, y.second); });

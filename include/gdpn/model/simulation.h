@@ -167,11 +167,21 @@ class Simulation {
   /// Why the next transition of the replayed sequence could not start at the last firing phase
   /// ("" when it started, or when the sequence is done or none is replayed).
   [[nodiscard]] const std::string& replayBlocked() const { return replay_blocked_; }
+  /// Writes an event of the caller's to the trace (when one is written) at the current step:
+  /// `{"step":..,"t":..,"ev":"<event>",<fields>}`; `fields` is JSON members without braces.
+  void note(const char* event, const std::string& fields);
+  /// Whether input from outside the model may come at any time (a Modbus controller): then a
+  /// dead net does not end run(), which goes on to its limits or an interrupt. Off by default.
+  void setOpen(bool open) { open_ = open; }
   /// Asks `check` after every step that run() takes; true ends the run there
   /// (StopReason::Breakpoint). An empty function asks nothing.
   void setStopCheck(std::function<bool()> check) { stop_check_ = std::move(check); }
   /// Calls `hook` after every step that run() takes (a recorder takes its frames there).
   void setStepHook(std::function<void()> hook) { step_hook_ = std::move(hook); }
+  /// Calls `hook` before every step that run() takes, once the checks that may end the run
+  /// have passed (a Modbus server answers its clients there, and waits for the wall clock or
+  /// for a step asked for). When the run's `interrupt` is true after it, the run ends there.
+  void setBeforeStep(std::function<void()> hook) { before_step_ = std::move(hook); }
   /// Why the run must end now, if a script says so (an error, a timeout, an interrupt or
   /// sim.stop) or a signal's expression failed; nullopt while scripts are content.
   [[nodiscard]] std::optional<RunOutcome> scriptHalt() const;
@@ -186,10 +196,12 @@ class Simulation {
   // nothing more can happen without outside input
   [[nodiscard]] bool dead() const;
   bool log_echo_ = true;
+  bool open_ = false;
   std::optional<std::vector<net::TransitionId>> replay_;
   std::size_t replayed_ = 0;
   std::string replay_blocked_;
   std::function<void()> step_hook_;
+  std::function<void()> before_step_;
   std::unique_ptr<SignalRecorder> signals_;
   std::function<bool()> stop_check_;
   Model model_;

@@ -136,4 +136,11 @@ class World {
   std::unique_ptr<Impl> impl_;
 };
 
+/// Assigns field `i` of `node` from outside the model file (a script, a Modbus write): the
+/// value, written in `unit` where the field is an angle, is converted to the stored unit,
+/// checked by the field's own rules (as the model file is), set, and told to `world` (null:
+/// none). Returns "" or why not, the field then as it was: the field's rule (with a note when
+/// the angle was given in radians), or what the world cannot follow.
+std::string assignField(scene::Node& node, std::size_t i, scene::FieldValue value, scene::AngleUnit unit, World* world);
+
 }  // namespace gdpn::physics

@@ -1,0 +1,333 @@
+// The `io` section resolved against a run: Modbus table values read from the plant and the
+// net, and a controller's writes applied to them.
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "gdpn/core/text.h"
+#include "gdpn/model/io.h"
+#include "gdpn/model/simulation.h"
+#include "probe.h"
+
+namespace gdpn::model {
+
+struct IoMap::Bound {
+  IoEntry spec;
+  Probe probe;                       // what a read gives (for a written entry: its field or place)
+  scene::NodeHandle node = 0;        // written field: its node
+  std::size_t field = 0;             // written field: its index
+  scene::FieldKind kind = scene::FieldKind::Float;
+  net::PlaceSlotId slot = 0;         // written place: its control slot
+  bool coil = false;                 // a place's coil: the state last written
+  std::string writer;                // the client that wrote it last
+  double written = std::numeric_limits<double>::quiet_NaN();  // the value written last (NaN: none yet)
+  [[nodiscard]] int width() const {
+    return spec.table == IoTable::InputRegisters || spec.table == IoTable::HoldingRegisters ? ioWidth(spec.type) : 1;
+  }
+};
+
+namespace {
+
+bool isBit(IoTable t) { return t == IoTable::DiscreteInputs || t == IoTable::Coils; }
+
+/// `x` held within [lo, hi] and rounded (NaN: 0).
+std::int64_t held(double x, double lo, double hi) {
+  if (std::isnan(x)) return 0;
+  return static_cast<std::int64_t>(std::llround(std::clamp(x, lo, hi)));
+}
+
+/// `v` as a field of kind `kind` holds it: a bool, a whole number (rounded) or a number.
+scene::FieldValue fieldValue(scene::FieldKind kind, double v) {
+  scene::FieldValue out;
+  if (kind == scene::FieldKind::Bool) {
+    out.emplace<bool>(v != 0.0);
+  } else if (kind == scene::FieldKind::Int) {
+    out.emplace<std::int64_t>(static_cast<std::int64_t>(std::llround(v)));
+  } else {
+    out.emplace<double>(v);
+  }
+  return out;
+}
+
+}  // namespace
+
+IoMap::IoMap(Simulation& sim) : sim_(sim) {}
+IoMap::~IoMap() = default;
+
+std::unique_ptr<IoMap> IoMap::create(Simulation& sim, const IoSpec& spec, core::Diagnostics& diags) {
+  auto map = std::unique_ptr<IoMap>(new IoMap(sim));
+  map->lockstep_ = spec.lockstep;
+  bool ok = true;
+  for (const IoEntry& e : spec.entries) {
+    const std::string name = ioAddressName(e.table, e.address);
+    const auto fail = [&](const std::string& why) {
+      diags.error(e.loc, name + ": " + why);
+      ok = false;
+    };
+    Bound b;
+    b.spec = e;
+    std::string why;
+    std::optional<Probe> probe;
+    if (e.source == IoEntry::Source::Place) {
+      probe = placeProbe(sim, e.target, why);
+      if (probe && (e.table == IoTable::Coils || e.table == IoTable::HoldingRegisters)) {
+        // written: the place's one control slot
+        const auto& place = sim.net().places()[probe->place];
+        const auto& slots = sim.net().placeSlots();
+        if (place.slots_end - place.slots_begin != 1 || slots[place.slots_begin].kind != net::SlotKind::Control) {
+          fail("place '" + e.target + "' holds node tokens or several slots: a controller sets plain tokens only");
+          continue;
+        }
+        b.slot = place.slots_begin;
+      }
+    } else if (!e.key.empty()) {
+      probe = keyProbe(sim, e.target, e.key, why);
+    } else {
+      const bool written = e.table == IoTable::Coils || e.table == IoTable::HoldingRegisters;
+      probe = nodeProbe(sim, e.target, written ? e.field : e.quantity, why);
+      if (probe && written) {
+        if (probe->what != Probe::What::Field) {
+          fail("'" + e.field + "' is no field a controller can set (a number field, or a bool for a coil)");
+          continue;
+        }
+        const scene::Node* node = sim.plant()->resolve(probe->node);
+        const scene::FieldDesc& f = *node->type().fields[probe->field];
+        b.node = probe->node;
+        b.field = probe->field;
+        b.kind = f.kind;
+        if (e.table == IoTable::HoldingRegisters && f.kind == scene::FieldKind::Bool) {
+          fail("'" + e.field + "' is true or false: map it to a coil");
+          continue;
+        }
+        if (e.table == IoTable::Coils && f.kind != scene::FieldKind::Bool) {
+          // the values of 1 and 0 must be ones the field takes
+          for (const double v : {e.on, e.off}) {
+            scene::FieldValue fv = fieldValue(f.kind, v);
+            if (f.kind == scene::FieldKind::Int && std::floor(v) != v) {
+              fail("'" + e.field + "' is a whole number; " + core::formatDouble(v) + " is not");
+              break;
+            }
+            fv = scene::convertAngle(*node, probe->field, fv, sim.model().settings.angles, true);
+            if (auto bad = f.check(fv)) {
+              fail("'" + std::string(v == e.on ? "on" : "off") + "': " + bad->message);
+              break;
+            }
+          }
+          if (!ok) continue;
+        }
+      }
+    }
+    if (!probe) {
+      fail(why);
+      continue;
+    }
+    if (probe->width() != 1) {
+      fail("'" + e.quantity + "' is three numbers: name one axis (" + e.quantity + ".z)");
+      continue;
+    }
+    b.probe = std::move(*probe);
+    map->bound_.push_back(std::move(b));
+  }
+  if (!ok) return nullptr;
+  std::stable_sort(map->bound_.begin(), map->bound_.end(), [](const Bound& a, const Bound& b) {
+    return a.spec.table != b.spec.table ? a.spec.table < b.spec.table : a.spec.address < b.spec.address;
+  });
+  return map;
+}
+
+IoMap::Bound* IoMap::find(IoTable table, std::uint32_t address) {
+  return const_cast<Bound*>(std::as_const(*this).find(table, address));
+}
+
+const IoMap::Bound* IoMap::find(IoTable table, std::uint32_t address) const {
+  // the last entry of the table starting at or before `address`, if it covers it
+  auto it = std::upper_bound(bound_.begin(), bound_.end(), std::pair(table, address), [](const auto& key, const Bound& b) {
+    return key.first != b.spec.table ? key.first < b.spec.table : key.second < b.spec.address;
+  });
+  if (it == bound_.begin()) return nullptr;
+  --it;
+  if (it->spec.table != table || address >= it->spec.address + static_cast<std::uint32_t>(it->width())) return nullptr;
+  return &*it;
+}
+
+bool IoMap::mapped(IoTable table, std::uint32_t first, std::uint32_t count) const {
+  for (std::uint32_t a = first; a < first + count; ++a) {
+    if (a > 65535) return false;
+    if (table == IoTable::HoldingRegisters && lockstep_ && a == *lockstep_) continue;
+    if (find(table, a) == nullptr) return false;
+  }
+  return true;
+}
+
+double IoMap::value(const Bound& b) const {
+  if (b.spec.table == IoTable::Coils && b.spec.source == IoEntry::Source::Place) return b.coil ? 1.0 : 0.0;
+  double v = 0.0;
+  if (!readProbe(sim_, b.probe, &v)) return 0.0;  // its node was deleted
+  if (b.spec.table == IoTable::Coils && b.kind != scene::FieldKind::Bool) return v == b.spec.on ? 1.0 : 0.0;
+  return v;
+}
+
+std::uint32_t IoMap::encode(const Bound& b) const {
+  const double v = value(b);
+  if (isBit(b.spec.table)) return v != 0.0 ? 1 : 0;
+  const double x = v * b.spec.scale;
+  switch (b.spec.type) {
+    case IoType::Int16: return static_cast<std::uint16_t>(static_cast<std::int16_t>(held(x, -32768, 32767)));
+    case IoType::Uint16: return static_cast<std::uint32_t>(held(x, 0, 65535));
+    case IoType::Int32:
+      return static_cast<std::uint32_t>(static_cast<std::int32_t>(held(x, -2147483648.0, 2147483647.0)));
+    case IoType::Uint32: return static_cast<std::uint32_t>(held(x, 0, 4294967295.0));
+    case IoType::Float32: {
+      const double lim = static_cast<double>(std::numeric_limits<float>::max());
+      return std::bit_cast<std::uint32_t>(static_cast<float>(std::isnan(x) ? x : std::clamp(x, -lim, lim)));
+    }
+  }
+  return 0;
+}
+
+bool IoMap::bit(IoTable table, std::uint16_t address) const {
+  const Bound* b = find(table, address);
+  return b != nullptr && encode(*b) != 0;
+}
+
+std::uint16_t IoMap::word(IoTable table, std::uint16_t address) const {
+  if (table == IoTable::HoldingRegisters && lockstep_ && address == *lockstep_) {
+    return static_cast<std::uint16_t>(std::min<std::uint32_t>(pending_steps_, 65535));
+  }
+  const Bound* b = find(table, address);
+  if (b == nullptr) return 0;
+  const std::uint32_t w = encode(*b);
+  if (b->width() == 1) return static_cast<std::uint16_t>(w);
+  return static_cast<std::uint16_t>(address == b->spec.address ? w >> 16 : w & 0xffff);  // high word first
+}
+
+void IoMap::noteWrite(Bound& b, double value) {
+  // a controller rewrites its outputs every scan: the trace has the changes
+  if (value == b.written) return;
+  b.written = value;
+  sim_.note("io", std::string("\"table\":\"") + ioTableKey(b.spec.table) + "\",\"address\":" +
+                      std::to_string(b.spec.address) + ",\"value\":" + core::formatDouble(value));
+}
+
+IoError IoMap::writeBits(std::uint16_t first, const std::vector<bool>& bits, const std::string& client) {
+  if (!mapped(IoTable::Coils, first, static_cast<std::uint32_t>(bits.size()))) return IoError::IllegalAddress;
+  for (std::size_t k = 0; k < bits.size(); ++k) {
+    Bound& b = *find(IoTable::Coils, first + static_cast<std::uint32_t>(k));
+    const bool on = bits[k];
+    b.writer = client;
+    std::string change;
+    if (b.spec.source == IoEntry::Source::Place) {
+      // a rising edge puts one token on the place
+      if (on && !b.coil) {
+        if (sim_.kernel().setMarking(b.slot, sim_.kernel().marking(b.slot) + 1).empty()) change = "token";
+      }
+      b.coil = on;
+    } else if (scene::Node* node = sim_.plant()->resolve(b.node)) {
+      const double v = b.kind == scene::FieldKind::Bool ? (on ? 1.0 : 0.0) : on ? b.spec.on : b.spec.off;
+      (void)physics::assignField(*node, b.field, fieldValue(b.kind, v), sim_.model().settings.angles, sim_.physics());
+    }
+    noteWrite(b, on ? 1.0 : 0.0);
+  }
+  return IoError::None;
+}
+
+IoError IoMap::writeWords(std::uint16_t first, const std::vector<std::uint16_t>& words, const std::string& client) {
+  const auto count = static_cast<std::uint32_t>(words.size());
+  if (!mapped(IoTable::HoldingRegisters, first, count)) return IoError::IllegalAddress;
+  // each entry's number from its words, all checked before any is written
+  struct Write {
+    Bound* b;
+    double value;
+  };
+  std::vector<Write> writes;
+  std::uint32_t steps = 0;
+  for (std::uint32_t a = first; a < first + count;) {
+    if (lockstep_ && a == *lockstep_) {
+      steps = words[a - first];
+      ++a;
+      continue;
+    }
+    Bound* b = find(IoTable::HoldingRegisters, a);
+    if (b->spec.address != a || a + static_cast<std::uint32_t>(b->width()) > first + count) {
+      return IoError::IllegalAddress;  // half of a two-word entry
+    }
+    const std::uint32_t w = b->width() == 1 ? words[a - first]
+                                            : (static_cast<std::uint32_t>(words[a - first]) << 16) | words[a - first + 1];
+    double raw = 0;
+    switch (b->spec.type) {
+      case IoType::Int16: raw = static_cast<std::int16_t>(static_cast<std::uint16_t>(w)); break;
+      case IoType::Uint16: raw = static_cast<std::uint16_t>(w); break;
+      case IoType::Int32: raw = static_cast<std::int32_t>(w); break;
+      case IoType::Uint32: raw = w; break;
+      case IoType::Float32: raw = static_cast<double>(std::bit_cast<float>(w)); break;
+    }
+    const double v = raw / b->spec.scale;
+    if (!std::isfinite(v)) return IoError::IllegalValue;
+    if (b->spec.source == IoEntry::Source::Place) {
+      if (v < 0 || std::floor(v) != v) return IoError::IllegalValue;
+    } else if (const scene::Node* node = sim_.plant()->resolve(b->node)) {
+      const scene::FieldDesc& f = *node->type().fields[b->field];
+      if (b->kind == scene::FieldKind::Int && std::abs(v) > 9.0e15) return IoError::IllegalValue;
+      if (f.check(scene::convertAngle(*node, b->field, fieldValue(b->kind, v), sim_.model().settings.angles, true))) {
+        return IoError::IllegalValue;
+      }
+    }
+    writes.push_back({b, v});
+    a += static_cast<std::uint32_t>(b->width());
+  }
+  for (const auto& w : writes) {
+    Bound& b = *w.b;
+    b.writer = client;
+    if (b.spec.source == IoEntry::Source::Place) {
+      if (!sim_.kernel().setMarking(b.slot, static_cast<std::int64_t>(w.value)).empty()) return IoError::IllegalValue;
+    } else if (scene::Node* node = sim_.plant()->resolve(b.node)) {
+      if (!physics::assignField(*node, b.field, fieldValue(b.kind, w.value), sim_.model().settings.angles, sim_.physics())
+               .empty()) {
+        return IoError::IllegalValue;
+      }
+    }
+    noteWrite(b, w.value);
+  }
+  pending_steps_ += steps;  // the steps show in the trace as steps
+  return IoError::None;
+}
+
+std::vector<IoMap::Row> IoMap::rows() const {
+  std::vector<Row> out;
+  for (const Bound& b : bound_) {
+    Row r;
+    r.table = b.spec.table;
+    r.address = b.spec.address;
+    const IoEntry& e = b.spec;
+    r.what = e.target;
+    if (!e.quantity.empty()) r.what += "." + e.quantity;
+    if (!e.field.empty()) r.what += "." + e.field;
+    if (!e.key.empty()) r.what += " key " + e.key;
+    if (e.table == IoTable::InputRegisters || e.table == IoTable::HoldingRegisters) {
+      std::vector<std::string> parts;
+      if (e.scale != 1.0) parts.push_back("x " + core::formatDouble(e.scale));
+      if (!e.unit.empty()) parts.push_back(e.unit);
+      if (e.type != IoType::Int16) parts.emplace_back(ioTypeName(e.type));
+      for (const auto& p : parts) r.wire += (r.wire.empty() ? "" : " ") + p;
+    }
+    r.value = value(b);
+    const std::uint32_t w = encode(b);
+    switch (e.type) {
+      case IoType::Int16:
+        r.raw = isBit(e.table) ? static_cast<std::int64_t>(w) : static_cast<std::int16_t>(static_cast<std::uint16_t>(w));
+        break;
+      case IoType::Int32: r.raw = static_cast<std::int32_t>(w); break;
+      case IoType::Uint16:
+      case IoType::Uint32:
+      case IoType::Float32: r.raw = w; break;
+    }
+    r.writer = b.writer;
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+}  // namespace gdpn::model

@@ -1,0 +1,244 @@
+// The `io` section of a model file: read with every mistake located, and written back.
+
+#include "io_section.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "gdpn/core/text.h"
+
+namespace gdpn::model {
+
+const char* ioTableKey(IoTable table) {
+  switch (table) {
+    case IoTable::DiscreteInputs: return "discrete_inputs";
+    case IoTable::InputRegisters: return "input_registers";
+    case IoTable::Coils: return "coils";
+    case IoTable::HoldingRegisters: return "holding_registers";
+  }
+  return "?";
+}
+
+const char* ioTypeName(IoType type) {
+  switch (type) {
+    case IoType::Int16: return "int16";
+    case IoType::Uint16: return "uint16";
+    case IoType::Int32: return "int32";
+    case IoType::Uint32: return "uint32";
+    case IoType::Float32: return "float32";
+  }
+  return "?";
+}
+
+std::string ioAddressName(IoTable table, std::uint32_t address) {
+  static const char* names[] = {"discrete input", "input register", "coil", "holding register"};
+  return std::string(names[static_cast<int>(table)]) + " " + std::to_string(address);
+}
+
+namespace detail {
+
+namespace {
+
+constexpr IoTable kTables[] = {IoTable::DiscreteInputs, IoTable::InputRegisters, IoTable::Coils,
+                               IoTable::HoldingRegisters};
+constexpr IoType kTypes[] = {IoType::Int16, IoType::Uint16, IoType::Int32, IoType::Uint32, IoType::Float32};
+
+bool isRegister(IoTable t) { return t == IoTable::InputRegisters || t == IoTable::HoldingRegisters; }
+bool isWritten(IoTable t) { return t == IoTable::Coils || t == IoTable::HoldingRegisters; }
+
+/// The keys an entry of `table` may have.
+std::vector<std::string> keysOf(IoTable table) {
+  switch (table) {
+    case IoTable::DiscreteInputs: return {"place", "node", "of", "key"};
+    case IoTable::InputRegisters: return {"place", "node", "of", "scale", "unit", "type"};
+    case IoTable::Coils: return {"place", "node", "field", "on", "off"};
+    case IoTable::HoldingRegisters: return {"place", "node", "field", "scale", "unit", "type"};
+  }
+  return {};
+}
+
+/// An address: a whole number from 0 to 65535.
+std::optional<std::uint16_t> address(YamlReader& r, const std::string& text, const core::SourceLoc& at,
+                                     const std::string& what) {
+  const auto v = core::parseNumber(text);
+  if (!v || *v != std::floor(*v) || *v < 0 || *v > 65535 || text.find_first_not_of("0123456789") != std::string::npos) {
+    r.error(at, what + " is an address from 0 to 65535 (as on the wire: the first is 0), got '" + text + "'");
+    return std::nullopt;
+  }
+  return static_cast<std::uint16_t>(*v);
+}
+
+std::optional<IoEntry> readEntry(YamlReader& r, IoTable table, std::uint16_t addr, const Entry& e) {
+  IoEntry out;
+  out.table = table;
+  out.address = addr;
+  out.loc = e.loc;
+  const std::string name = ioAddressName(table, addr);
+  if (!r.expectMap(e.value, name)) return std::nullopt;
+  int sources = 0;
+  bool ok = true;
+  for (const auto& k : r.entries(e.value, name, keysOf(table))) {
+    if (k.key == "scale" || k.key == "on" || k.key == "off") {
+      const auto v = r.number(k.value, k.key);
+      if (!v) {
+        ok = false;
+      } else if (!std::isfinite(*v) || (k.key == "scale" && *v == 0)) {
+        r.error(r.loc(k.value, k.loc), "'" + k.key + "' of " + name + " is a finite number" +
+                                           (k.key == "scale" ? std::string(" other than 0") : std::string()));
+        ok = false;
+      } else {
+        (k.key == "scale" ? out.scale : k.key == "on" ? out.on : out.off) = *v;
+      }
+      continue;
+    }
+    const auto text = r.string(k.value, k.key);
+    if (!text) {
+      ok = false;
+      continue;
+    }
+    if (k.key == "place" || k.key == "node") {
+      ++sources;
+      out.source = k.key == "place" ? IoEntry::Source::Place : IoEntry::Source::Node;
+      out.target = *text;
+    } else if (k.key == "of") {
+      out.quantity = *text;
+    } else if (k.key == "field") {
+      out.field = *text;
+    } else if (k.key == "key") {
+      out.key = *text;
+    } else if (k.key == "unit") {
+      out.unit = *text;
+    } else if (k.key == "type") {
+      const auto* t = std::find_if(std::begin(kTypes), std::end(kTypes), [&](IoType x) { return *text == ioTypeName(x); });
+      if (t == std::end(kTypes)) {
+        r.error(r.loc(k.value, k.loc), "'type' is one of int16, uint16, int32, uint32, float32, got '" + *text + "'");
+        ok = false;
+      } else {
+        out.type = *t;
+      }
+    }
+  }
+  if (!ok) return std::nullopt;
+  if (sources != 1) {
+    r.error(e.loc, name + (sources == 0 ? " maps nothing: give it a 'place' or a 'node'"
+                                        : " maps both a place and a node: keep one"));
+    return std::nullopt;
+  }
+  if (out.source == IoEntry::Source::Place) {
+    if (!out.quantity.empty() || !out.field.empty() || !out.key.empty()) {
+      r.error(e.loc, name + ": 'of', 'field' and 'key' go with 'node', not with 'place'");
+      return std::nullopt;
+    }
+    return out;
+  }
+  if (isWritten(table)) {
+    if (out.field.empty()) {
+      r.error(e.loc, name + " is written by the controller: it needs 'field', the node's field it sets (speed, target1)");
+      return std::nullopt;
+    }
+  } else if (out.quantity.empty() == out.key.empty()) {
+    r.error(e.loc, name + " needs " +
+                       (table == IoTable::DiscreteInputs ? std::string("one of 'of' (active, a bool field) or 'key'")
+                                                         : std::string("'of': reading, angle, rate, position.z, a field")));
+    return std::nullopt;
+  }
+  return out;
+}
+
+}  // namespace
+
+IoSpec readIo(const YAML::Node& section, YamlReader& r) {
+  IoSpec io;
+  if (section.IsNull() || !r.expectMap(section, "io")) return io;
+  std::vector<std::string> keys = {"lockstep"};
+  for (IoTable t : kTables) keys.emplace_back(ioTableKey(t));
+  for (const auto& e : r.entries(section, "io", keys)) {
+    if (e.key == "lockstep") {
+      const auto text = r.string(e.value, "lockstep");
+      if (!text) continue;
+      io.lockstep = address(r, *text, r.loc(e.value, e.loc), "'lockstep' (a holding register)");
+      io.lockstep_loc = r.loc(e.value, e.loc);
+      continue;
+    }
+    const IoTable table = *std::find_if(std::begin(kTables), std::end(kTables), [&](IoTable t) { return e.key == ioTableKey(t); });
+    if (e.value.IsNull() || !r.expectMap(e.value, e.key)) continue;
+    for (const auto& a : r.entries(e.value, e.key, {})) {
+      const auto addr = address(r, a.key, a.loc, "a key of '" + e.key + "'");
+      if (!addr) continue;
+      if (auto entry = readEntry(r, table, *addr, a)) io.entries.push_back(std::move(*entry));
+    }
+  }
+  // every address mapped once per table (a two-word entry takes the next address too): sorted
+  // by table and address, each entry is checked against the one before it, and the later of
+  // the two in the file is the one reported
+  std::vector<std::size_t> order(io.entries.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  const auto width = [](const IoEntry& e) { return isRegister(e.table) ? ioWidth(e.type) : 1; };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
+    const IoEntry& a = io.entries[x];
+    const IoEntry& b = io.entries[y];
+    return a.table != b.table ? a.table < b.table : a.address < b.address;
+  });
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const IoEntry& a = io.entries[order[k]];
+    const int wa = width(a);
+    if (a.address + wa - 1 > 65535) {
+      r.error(a.loc, ioAddressName(a.table, a.address) + " is a " + ioTypeName(a.type) +
+                         ": it takes two addresses, and 65535 is the last");
+    }
+    if (io.lockstep && a.table == IoTable::HoldingRegisters && a.address <= *io.lockstep &&
+        *io.lockstep < a.address + wa) {
+      r.error(a.loc, ioAddressName(a.table, a.address) + " overlaps the lockstep register " +
+                         std::to_string(*io.lockstep));
+    }
+    if (k == 0) continue;
+    const IoEntry& b = io.entries[order[k - 1]];
+    const int wb = width(b);
+    if (a.table != b.table || a.address >= b.address + wb) continue;
+    const bool a_later = order[k] > order[k - 1];
+    const IoEntry& later = a_later ? a : b;
+    const IoEntry& earlier = a_later ? b : a;
+    const int we = a_later ? wb : wa;
+    r.error(later.loc, ioAddressName(later.table, later.address) + " overlaps " +
+                           ioAddressName(earlier.table, earlier.address) +
+                           (we == 2 ? std::string(" (a ") + ioTypeName(earlier.type) + ", two addresses)" : std::string()) +
+                           ", written at line " + std::to_string(earlier.loc.line));
+  }
+  return io;
+}
+
+void writeIo(YAML::Emitter& out, const IoSpec& io) {
+  out << YAML::BeginMap;
+  if (io.lockstep) out << YAML::Key << "lockstep" << YAML::Value << *io.lockstep;
+  for (IoTable t : kTables) {
+    std::vector<const IoEntry*> of;
+    for (const auto& e : io.entries) {
+      if (e.table == t) of.push_back(&e);
+    }
+    if (of.empty()) continue;
+    std::stable_sort(of.begin(), of.end(), [](const IoEntry* a, const IoEntry* b) { return a->address < b->address; });
+    out << YAML::Key << ioTableKey(t) << YAML::Value << YAML::BeginMap;
+    for (const IoEntry* e : of) {
+      out << YAML::Key << e->address << YAML::Value << YAML::Flow << YAML::BeginMap;
+      out << YAML::Key << (e->source == IoEntry::Source::Place ? "place" : "node") << YAML::Value << e->target;
+      if (!e->quantity.empty()) out << YAML::Key << "of" << YAML::Value << e->quantity;
+      if (!e->key.empty()) out << YAML::Key << "key" << YAML::Value << e->key;
+      if (!e->field.empty()) out << YAML::Key << "field" << YAML::Value << e->field;
+      if (t == IoTable::Coils && e->source == IoEntry::Source::Node) {
+        if (e->on != 1.0) out << YAML::Key << "on" << YAML::Value << core::formatDouble(e->on);
+        if (e->off != 0.0) out << YAML::Key << "off" << YAML::Value << core::formatDouble(e->off);
+      }
+      if (isRegister(t)) {
+        if (e->scale != 1.0) out << YAML::Key << "scale" << YAML::Value << core::formatDouble(e->scale);
+        if (!e->unit.empty()) out << YAML::Key << "unit" << YAML::Value << e->unit;
+        if (e->type != IoType::Int16) out << YAML::Key << "type" << YAML::Value << ioTypeName(e->type);
+      }
+      out << YAML::EndMap;
+    }
+    out << YAML::EndMap;
+  }
+  out << YAML::EndMap;
+}
+
+}  // namespace detail
+}  // namespace gdpn::model

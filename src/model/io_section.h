@@ -1,0 +1,17 @@
+#pragma once
+// Internal: no promises. The `io` section of a model file (docs/format.md, "I/O").
+
+#include "gdpn/model/io.h"
+#include "yaml_reader.h"
+
+namespace gdpn::model::detail {
+
+/// Reads the `io` section: `lockstep: ADDRESS` and the four tables, each a map of addresses
+/// to entries. Every mistake (an unknown key, an address out of range, two entries over one
+/// address, a key that does not go with the table) is reported through `r` at its place.
+IoSpec readIo(const YAML::Node& section, YamlReader& r);
+
+/// Writes `io` as the reader reads it (table by table, addresses in order).
+void writeIo(YAML::Emitter& out, const IoSpec& io);
+
+}  // namespace gdpn::model::detail

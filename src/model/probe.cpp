@@ -1,0 +1,185 @@
+// Probes: one quantity of a run, resolved once and read on demand (signals, the I/O map).
+
+#include "probe.h"
+
+#include <algorithm>
+#include <numbers>
+
+#include "gdpn/core/text.h"
+#include "gdpn/model/simulation.h"
+#include "gdpn/scene/actions.h"
+#include "gdpn/scene/fields.h"
+
+namespace gdpn::model {
+
+namespace {
+
+/// A number or bool field a probe may read.
+bool readable(const scene::FieldDesc& f) {
+  return f.kind == scene::FieldKind::Float || f.kind == scene::FieldKind::Int || f.kind == scene::FieldKind::Bool;
+}
+
+/// The node at `path` that is simulated (not in a template); null and `why` otherwise.
+const scene::Node* liveNode(const Simulation& sim, const std::string& path, std::string& why) {
+  const scene::Node* node = sim.plant() ? sim.plant()->find(path) : nullptr;
+  if (node == nullptr) {
+    why = sim.plant() ? "no scene node '" + path + "'" : "the model has no scene";
+    return nullptr;
+  }
+  if (scene::inTemplate(*node)) {
+    why = "'" + path + "' lies in a template, which is neither simulated nor sensed";
+    return nullptr;
+  }
+  return node;
+}
+
+}  // namespace
+
+std::optional<Probe> placeProbe(const Simulation& sim, const std::string& place, std::string& why) {
+  const auto id = sim.net().findPlace(place);
+  if (id < 0) {
+    why = "no place '" + place + "' (names are qualified: page/place)";
+    return std::nullopt;
+  }
+  Probe p;
+  p.what = Probe::What::Tokens;
+  p.place = static_cast<net::PlaceId>(id);
+  return p;
+}
+
+std::optional<Probe> nodeProbe(const Simulation& sim, const std::string& path, const std::string& quantity,
+                               std::string& why) {
+  const scene::Node* node = liveNode(sim, path, why);
+  if (node == nullptr) return std::nullopt;
+  Probe p;
+  p.node = node->handle();
+  const bool body = sim.physics() && sim.physics()->isBody(*node);
+  const bool sensor = node->type().category == scene::Category::Sensor;
+  std::string q = quantity;
+  // position.x: one axis of a vector
+  if (const auto dot = q.rfind('.'); dot != std::string::npos && dot + 2 == q.size() && q[dot + 1] >= 'x' &&
+                                     q[dot + 1] <= 'z') {
+    p.axis = q[dot + 1] - 'x';
+    q.resize(dot);
+    if (q != "position" && q != "velocity") {
+      why = "'." + quantity.substr(dot + 1) + "' picks an axis of position or velocity, not of '" + q + "'";
+      return std::nullopt;
+    }
+  }
+  if (q == "position") {
+    p.what = Probe::What::Position;
+  } else if (q == "velocity") {
+    if (!body) {
+      why = "'" + path + "' is no body the physics moves: it has no velocity";
+      return std::nullopt;
+    }
+    p.what = Probe::What::Velocity;
+  } else if (q == "angle" || q == "rate") {
+    if (node->kind() != scene::NodeKind::Joint || !sim.physics()) {
+      why = "'" + path + "' is no joint: it has no " + q;
+      return std::nullopt;
+    }
+    p.what = q == "angle" ? Probe::What::JointAngle : Probe::What::JointRate;
+    p.linear = node->choice<scene::JointKind>(scene::field::Joint::Kind) == scene::JointKind::Slider;
+  } else if (q == "reading" || q == "active") {
+    if (!sensor) {
+      why = "'" + path + "' is no sensor: it has no " + q;
+      return std::nullopt;
+    }
+    p.what = q == "reading" ? Probe::What::Reading : Probe::What::Active;
+  } else {
+    const int i = node->type().fieldIndex(q);
+    const auto* f = i >= 0 ? node->type().fields[static_cast<std::size_t>(i)] : nullptr;
+    if (f == nullptr || !readable(*f)) {
+      // what this node has: a position always, the others by its kind
+      std::vector<std::string> known = {"position"};
+      if (body) known.emplace_back("velocity");
+      if (node->kind() == scene::NodeKind::Joint) known.insert(known.end(), {"angle", "rate"});
+      if (sensor) known.insert(known.end(), {"reading", "active"});
+      for (const auto& fd : node->type().fields) {
+        if (readable(*fd)) known.push_back(fd->name);
+      }
+      std::string list;
+      for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+      why = "a " + node->type().name + " has no number '" + q + "'" + core::didYouMean(q, known) + " (it has: " + list +
+            ")";
+      return std::nullopt;
+    }
+    p.what = Probe::What::Field;
+    p.field = static_cast<std::size_t>(i);
+  }
+  return p;
+}
+
+std::optional<Probe> keyProbe(const Simulation& sim, const std::string& path, const std::string& key, std::string& why) {
+  const scene::Node* node = liveNode(sim, path, why);
+  if (node == nullptr) return std::nullopt;
+  if (node->kind() != scene::NodeKind::KeyboardSensor) {
+    why = "'" + path + "' is a " + node->type().name + ", not a KeyboardSensor: it hears no keys";
+    return std::nullopt;
+  }
+  if (key.empty()) {
+    why = "'key' names a key (a, space, left)";
+    return std::nullopt;
+  }
+  Probe p;
+  p.what = Probe::What::Key;
+  p.node = node->handle();
+  p.key = key;
+  return p;
+}
+
+bool readProbe(const Simulation& sim, const Probe& p, double* out) {
+  if (p.what == Probe::What::Tokens) {
+    const auto& place = sim.net().places()[p.place];
+    std::int64_t tokens = 0;
+    for (auto ps = place.slots_begin; ps < place.slots_end; ++ps) tokens += sim.kernel().marking(ps);
+    *out = static_cast<double>(tokens);
+    return true;
+  }
+  const scene::Node* node = sim.plant()->resolve(p.node);
+  if (node == nullptr) return false;  // deleted: no value from now on
+  const auto vector = [&](core::Vec3 v) {
+    if (p.axis >= 0) {
+      *out = p.axis == 0 ? v.x : p.axis == 1 ? v.y : v.z;
+    } else {
+      out[0] = v.x;
+      out[1] = v.y;
+      out[2] = v.z;
+    }
+  };
+  switch (p.what) {
+    case Probe::What::Tokens: break;
+    case Probe::What::Position: vector(node->framePose().position); break;
+    case Probe::What::Velocity: vector(sim.physics()->velocity(*node)); break;
+    case Probe::What::JointAngle:
+    case Probe::What::JointRate: {
+      const bool degrees = sim.model().settings.angles == scene::AngleUnit::Degrees;
+      const double v = p.what == Probe::What::JointAngle ? sim.physics()->jointPosition(*node)
+                                                         : sim.physics()->jointRate(*node);
+      *out = !p.linear && degrees ? v * 180.0 / std::numbers::pi : v;
+      break;
+    }
+    case Probe::What::Reading: {
+      const auto& r = sim.reading(p.node);
+      *out = node->kind() == scene::NodeKind::Region ? static_cast<double>(r.items.size()) : r.value;
+      break;
+    }
+    case Probe::What::Active: *out = sim.reading(p.node).active ? 1.0 : 0.0; break;
+    case Probe::What::Key: {
+      const auto& keys = sim.reading(p.node).keys;
+      *out = std::find(keys.begin(), keys.end(), p.key) != keys.end() ? 1.0 : 0.0;
+      break;
+    }
+    case Probe::What::Field: {
+      const auto v = scene::convertAngle(*node, p.field, node->value(p.field), sim.model().settings.angles, false);
+      if (const auto* d = std::get_if<double>(&v)) *out = *d;
+      else if (const auto* i = std::get_if<std::int64_t>(&v)) *out = static_cast<double>(*i);
+      else if (const auto* b = std::get_if<bool>(&v)) *out = *b ? 1.0 : 0.0;
+      break;
+    }
+  }
+  return true;
+}
+
+}  // namespace gdpn::model

@@ -1,0 +1,57 @@
+#pragma once
+// Internal: no promises. A probe: one quantity of a run (a place's tokens, a node's position,
+// velocity, joint angle or rate, a sensor's reading, a field), resolved once against the run
+// and read whenever asked. Signals and the I/O map read the plant through probes.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "gdpn/net/net.h"
+#include "gdpn/scene/node.h"
+
+namespace gdpn::model {
+
+class Simulation;
+
+/// A quantity of a run, resolved.
+struct Probe {
+  /// What it reads.
+  enum class What : std::uint8_t {
+    Tokens,      ///< a place's tokens, all its slots
+    Position,    ///< a node's world position, m
+    Velocity,    ///< a body's linear velocity, m/s
+    JointAngle,  ///< a joint's position on axis 1 (the model's angle unit, or m for a slider)
+    JointRate,   ///< its rate on axis 1 (per second)
+    Reading,     ///< a sensor's: a Region's count of items, else its value
+    Active,      ///< a sensor's: 1 while it feels something (a Region holds, a RangeFinder sees), else 0
+    Key,         ///< a KeyboardSensor's: 1 while `key` is held down, else 0
+    Field,       ///< one of the node's number or bool fields
+  };
+  What what = What::Tokens;
+  net::PlaceId place = 0;         ///< Tokens: the place
+  scene::NodeHandle node = 0;     ///< the node
+  std::size_t field = 0;          ///< Field: its index
+  std::string key;                ///< Key: the key's name
+  bool linear = false;            ///< a slider's angle and rate: metres, never degrees
+  int axis = -1;                  ///< Position, Velocity: 0, 1, 2 for x, y, z alone; -1 for all three
+  /// How many numbers it gives: 3 for a whole position or velocity, else 1.
+  [[nodiscard]] int width() const { return (what == What::Position || what == What::Velocity) && axis < 0 ? 3 : 1; }
+};
+
+/// The tokens on the place named `place` (qualified); nullopt and `why` when there is none.
+std::optional<Probe> placeProbe(const Simulation& sim, const std::string& place, std::string& why);
+
+/// Quantity `quantity` of the plant's node `path`: `position`, `velocity` (each also `.x`,
+/// `.y`, `.z` alone), `angle`, `rate`, `reading`, `active`, or a number or bool field's name.
+/// Nullopt and `why` (naming what the node has) when it does not have it.
+std::optional<Probe> nodeProbe(const Simulation& sim, const std::string& path, const std::string& quantity,
+                               std::string& why);
+
+/// Whether `key` is held down at KeyboardSensor `path`; nullopt and `why` when it is none.
+std::optional<Probe> keyProbe(const Simulation& sim, const std::string& path, const std::string& key, std::string& why);
+
+/// Reads `p` into `out` (p.width() numbers); false when its node has been deleted.
+bool readProbe(const Simulation& sim, const Probe& p, double* out);
+
+}  // namespace gdpn::model
