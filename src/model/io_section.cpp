@@ -204,6 +204,11 @@ IoSpec readIo(const YAML::Node& section, YamlReader& r) {
                            (we == 2 ? std::string(" (a ") + ioTypeName(earlier.type) + ", two addresses)" : std::string()) +
                            ", written at line " + std::to_string(earlier.loc.line));
   }
+  // kept in table and address order, as written back: a model read again is the same
+  std::vector<IoEntry> sorted;
+  sorted.reserve(order.size());
+  for (const std::size_t i : order) sorted.push_back(std::move(io.entries[i]));
+  io.entries = std::move(sorted);
   return io;
 }
 

@@ -76,7 +76,7 @@ struct IoEntry {
 
 /// The `io` section.
 struct IoSpec {
-  std::vector<IoEntry> entries;            ///< in file order, table by table
+  std::vector<IoEntry> entries;            ///< by table (in IoTable's order), then by address
   std::optional<std::uint16_t> lockstep;   ///< the holding register a controller writes to ask for steps
   core::SourceLoc lockstep_loc;            ///< where `lockstep` is written
   /// True when the model has the section.
