@@ -2,7 +2,8 @@
 # Runs each libFuzzer target for SECONDS (default 60): the model loader, seeded with every
 # example and test model; the PNML reader, seeded with the test nets and the conformance nets;
 # the mesh loader, seeded with the test meshes; the input-event reader, seeded with the test
-# input files; the query reader, seeded with the test queries. Five targets: about five times
+# input files; the query reader, seeded with the test queries; the witness reader; the Modbus
+# request decoder, seeded with the test frames. Seven targets: about seven times
 # SECONDS in all. Fails on any crash, hang, leak or sanitizer report.
 # Needs the fuzz build: cmake --preset fuzz && cmake --build --preset fuzz
 set -euo pipefail
@@ -41,3 +42,4 @@ fuzz mesh_loader_fuzz 32768 "$meshes" tests/data/meshes tests/data/bad/files tes
 fuzz input_events_fuzz 4096 '*.input.yaml' tests/data/input
 fuzz query_parser_fuzz 8192 '*.query *.xml' tests/data/queries
 fuzz witness_fuzz 4096 '*.json' tests/data/witnesses
+fuzz modbus_request_fuzz 1024 "*.bin" tests/data/modbus

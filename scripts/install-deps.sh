@@ -23,6 +23,9 @@ packages=(
   libgraphviz-dev fonts-dejavu-core
   # linear programs: bounds from the state equation
   libglpk-dev
+  # virtual commissioning: Modbus TCP (the server), mbpoll and pymodbus (the tests' clients and
+  # the example's soft PLC)
+  libmodbus-dev mbpoll python3-pymodbus
 )
 
 missing=()

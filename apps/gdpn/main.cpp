@@ -25,6 +25,7 @@
 #include "gdpn/experiments/html_report.h"
 #include "gdpn/net/timeline.h"
 #include "cli_checks.h"
+#include "serve.h"
 #include "sweep_command.h"
 #include "gdpn/model/simulation.h"
 #include "gdpn/model/witness.h"
@@ -560,6 +561,7 @@ struct RunArgs {
   double signal_every = 0.0;         // their period, seconds (0: every step)
   std::string signals_out;           // --signals FILE.csv
   std::string html;                  // --html FILE.html
+  gdpn::app::ServeArgs serve;        // --modbus, --realtime, --lockstep
 };
 
 /// A breakpoint written on the command line: "start:T", "complete:T", "PLACE OP N" (OP one
@@ -693,13 +695,17 @@ int run(const RunArgs& a) {
     timeline = std::make_unique<gdpn::net::Timeline>(sim->simulation().net());
     sim->simulation().kernel().addObserver(timeline.get());
   }
+  gdpn::app::Serving serving;
+  if (int code = 0; !serving.start(a.serve, sim->simulation(), &g_interrupted, a.quiet, std::cerr, code)) return code;
   std::signal(SIGINT, onSigint);
+  std::signal(SIGTERM, onSigint);  // a launcher that stops the run still gets its trace and summary
   model::RunOutcome outcome;
   {
     ProgressBar bar(!a.quiet && isatty(STDERR_FILENO));
     outcome = sim->run({a.until, a.steps}, std::ref(bar), &g_interrupted);
   }
   std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
   if (trace && !trace->commit(why)) {
     std::cerr << a.trace << ": error: " << why << "\n";
     return 1;
@@ -715,6 +721,7 @@ int run(const RunArgs& a) {
       return 1;
     }
     if (!a.quiet) model::printSummary(std::cout, report);
+    if (!a.quiet) serving.finish(sim->simulation(), std::cout);
     if (!a.html.empty()) {
       const auto page = gdpn::experiments::htmlReport(report, sim->simulation().net(), *timeline,
                                                       sim->simulation().signals(), why);
@@ -840,6 +847,7 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--signal-every", run_args.signal_every,
                       "the --signal signals' sampling period in seconds (default: every step)")
       ->check(number(0.0, kMaxTime, "seconds above 0, at most 1e9", true));
+  gdpn::app::addServeOptions(*run_cmd, run_args.serve);
   run_cmd->add_flag("--quiet,-q", run_args.quiet,
                     "print no summary, no progress and no sim.log lines (they still go to the --trace)");
 
