@@ -3,13 +3,16 @@
 
 It does what a PLC does: every 10 ms it reads its inputs (the photo-eye, the height sensor,
 the pusher's stroke), runs its logic once, and writes its outputs (the belt, the pusher).
-The logic is a sequence of four steps, the same as the net on the station's page
-net_control:
+The logic is a sequence of four steps, as the net on the station's page net_control, except
+that the PLC waits for the pusher's stroke where the net waits fixed times:
 
   RUN      belt on; a box at the eye: tall (its top nearer than 550 mm) -> PUSH, else -> PASS
-  PUSH     belt off, pusher out, for 1.2 s -> RETRACT
-  RETRACT  pusher in, for 1.0 s -> RUN
+  PUSH     belt off, pusher out, until it is 690 mm out -> RETRACT
+  RETRACT  pusher in, until it is back within 10 mm -> RUN
   PASS     belt on; the eye clear again -> RUN
+
+A step that waits for the pusher longer than 3 s stops the program with an error (a stalled
+pusher: try writing a force of 20 N to holding register 2).
 
 Run the station first, then this, in two terminals:
 
@@ -41,8 +44,8 @@ LOCKSTEP = 100     # holding register: steps of the model the controller asks fo
 SCAN = 0.010             # s, the scan period
 STEPS_PER_SCAN = 2       # the station's dt is 5 ms
 TALL_BELOW_MM = 550      # a tall box's top (750 mm) is 450 mm below the sensor, a short one's 650
-PUSH_TIME = 1.2          # s, pusher out
-RETRACT_TIME = 1.0       # s, pusher in
+OUT_MM, IN_MM = 690, 10  # the pusher's stroke when out (of 700) and when back
+STALL_TIME = 3.0         # s, the longest the pusher may take
 
 
 class Logic:
@@ -53,17 +56,19 @@ class Logic:
         self.since = 0.0
         self.sorted = {"tall": 0, "short": 0}
 
-    def scan(self, now, eye, height_mm):
+    def scan(self, now, eye, height_mm, stroke_mm):
         def go(step):
             self.step, self.since = step, now
 
+        if self.step in ("PUSH", "RETRACT") and now - self.since > STALL_TIME:
+            raise RuntimeError(f"the pusher stalled in {self.step} at {stroke_mm} mm")
         if self.step == "RUN" and eye:
             tall = height_mm < TALL_BELOW_MM
             self.sorted["tall" if tall else "short"] += 1
             go("PUSH" if tall else "PASS")
-        elif self.step == "PUSH" and now - self.since >= PUSH_TIME:
+        elif self.step == "PUSH" and stroke_mm >= OUT_MM:
             go("RETRACT")
-        elif self.step == "RETRACT" and now - self.since >= RETRACT_TIME:
+        elif self.step == "RETRACT" and stroke_mm <= IN_MM:
             go("RUN")
         elif self.step == "PASS" and not eye:
             go("RUN")
@@ -112,8 +117,8 @@ def main():
             began = time.monotonic()
             now = scans * SCAN if args.lockstep else began - start
             eye = check(client.read_discrete_inputs(EYE, 1), "read the eye").bits[0]
-            height = check(client.read_input_registers(HEIGHT, 2), "read the sensors").registers[0]
-            belt, pusher = logic.scan(now, eye, height)
+            height, stroke = check(client.read_input_registers(HEIGHT, 2), "read the sensors").registers
+            belt, pusher = logic.scan(now, eye, height, stroke if stroke < 0x8000 else stroke - 0x10000)
             check(client.write_coils(BELT, [belt, pusher]), "write the outputs")
             scans += 1
             if args.lockstep:
@@ -128,7 +133,7 @@ def main():
                 overruns += 1
     except (PlantGone, ConnectionException, OSError):
         pass  # the run is over and the plant has gone
-    except RuntimeError as e:  # a request refused: the io map and this program disagree
+    except RuntimeError as e:  # a request refused (the io map and this program disagree), a stall
         print(f"plc: error: {e}", file=sys.stderr)
         return 1
     except KeyboardInterrupt:
