@@ -12,7 +12,7 @@ that the PLC waits for the pusher's stroke where the net waits fixed times:
   PASS     belt on; the eye clear again -> RUN
 
 A step that waits for the pusher longer than 3 s stops the program with an error (a stalled
-pusher: try writing a force of 20 N to holding register 2).
+pusher: try writing a force of 5 N to holding register 2).
 
 Run the station first, then this, in two terminals:
 
