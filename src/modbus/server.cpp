@@ -80,7 +80,7 @@ std::unique_ptr<Server> Server::listen(model::IoMap& map, const ServerOptions& o
     why = std::string("libmodbus: ") + modbus_strerror(errno);
     return nullptr;
   }
-  im.listener = modbus_tcp_listen(im.ctx, 16);
+  im.listener = modbus_tcp_listen(im.ctx, 64);  // a burst of clients waits to be accepted
   if (im.listener < 0) {
     why = "cannot listen on " + where + ": " + modbus_strerror(errno);
     return nullptr;
