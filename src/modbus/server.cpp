@@ -57,6 +57,7 @@ struct Server::Impl {
   modbus_mapping_t* mapping = nullptr;
   int listener = -1;
   std::vector<Client> clients;
+  std::vector<pollfd> fds;  // the listener and each client, made anew each round (kept to reuse its memory)
   ~Impl() {
     for (auto& c : clients) ::close(c.fd);
     if (listener >= 0) ::close(listener);
@@ -197,8 +198,8 @@ const char* Server::serve(Client& c) {
 
 void Server::round(std::int64_t timeout_ns) {
   Impl& im = *impl_;
-  std::vector<pollfd> fds;
-  fds.reserve(im.clients.size() + 1);
+  std::vector<pollfd>& fds = im.fds;
+  fds.clear();
   fds.push_back({im.listener, POLLIN, 0});
   for (const auto& c : im.clients) fds.push_back({c.fd, POLLIN, 0});
   timespec wait{};

@@ -110,9 +110,8 @@ std::unique_ptr<IoMap> IoMap::create(Simulation& sim, const IoSpec& spec, core::
               fail("'" + e.field + "' is a whole number; " + core::formatDouble(v) + " is not");
               break;
             }
-            fv = scene::convertAngle(*node, probe->field, fv, sim.model().settings.angles, true);
-            if (auto bad = f.check(fv)) {
-              fail("'" + std::string(v == e.on ? "on" : "off") + "': " + bad->message);
+            if (const auto no = scene::refusal(*node, probe->field, fv, sim.model().settings.angles); !no.empty()) {
+              fail("'" + std::string(v == e.on ? "on" : "off") + "': " + no);
               break;
             }
           }
@@ -218,12 +217,9 @@ IoError IoMap::writeBits(std::uint16_t first, const std::vector<bool>& bits, con
     Bound& b = *find(IoTable::Coils, first + static_cast<std::uint32_t>(k));
     const bool on = bits[k];
     b.writer = client;
-    std::string change;
     if (b.spec.source == IoEntry::Source::Place) {
-      // a rising edge puts one token on the place
-      if (on && !b.coil) {
-        if (sim_.kernel().setMarking(b.slot, sim_.kernel().marking(b.slot) + 1).empty()) change = "token";
-      }
+      // a rising edge puts one token on the place (none when its capacity is full)
+      if (on && !b.coil) (void)sim_.kernel().setMarking(b.slot, sim_.kernel().marking(b.slot) + 1);
       b.coil = on;
     } else if (scene::Node* node = sim_.plant()->resolve(b.node)) {
       const double v = b.kind == scene::FieldKind::Bool ? (on ? 1.0 : 0.0) : on ? b.spec.on : b.spec.off;
@@ -267,11 +263,10 @@ IoError IoMap::writeWords(std::uint16_t first, const std::vector<std::uint16_t>&
     const double v = raw / b->spec.scale;
     if (!std::isfinite(v)) return IoError::IllegalValue;
     if (b->spec.source == IoEntry::Source::Place) {
-      if (v < 0 || std::floor(v) != v) return IoError::IllegalValue;
+      if (v < 0 || std::floor(v) != v || v > 9.0e15) return IoError::IllegalValue;  // whole, 0 to 2^53
     } else if (const scene::Node* node = sim_.plant()->resolve(b->node)) {
-      const scene::FieldDesc& f = *node->type().fields[b->field];
       if (b->kind == scene::FieldKind::Int && std::abs(v) > 9.0e15) return IoError::IllegalValue;
-      if (f.check(scene::convertAngle(*node, b->field, fieldValue(b->kind, v), sim_.model().settings.angles, true))) {
+      if (!scene::refusal(*node, b->field, fieldValue(b->kind, v), sim_.model().settings.angles).empty()) {
         return IoError::IllegalValue;
       }
     }

@@ -224,12 +224,8 @@ bool World::add(scene::Node& top, core::Diagnostics& diags) {
 void World::remove(const scene::Node& top) { impl_->removeSubtree(top); }
 
 std::string assignField(scene::Node& node, std::size_t i, scene::FieldValue value, scene::AngleUnit unit, World* world) {
-  const scene::FieldDesc& f = *node.type().fields[i];
+  if (auto why = scene::refusal(node, i, value, unit); !why.empty()) return why;
   value = scene::convertAngle(node, i, std::move(value), unit, true);
-  if (auto bad = f.check(value)) {
-    const bool radians = unit == scene::AngleUnit::Radians && scene::isAngular(node, i);
-    return bad->message + (radians ? " (in degrees; the model writes angles in radians)" : "");
-  }
   scene::FieldValue before = node.value(i);
   node.setValue(i, std::move(value));
   // the physics keeps some fields of its own (a joint's kind and control, a sensor's scope);
@@ -237,7 +233,7 @@ std::string assignField(scene::Node& node, std::size_t i, scene::FieldValue valu
   if (world != nullptr) {
     if (auto why = world->fieldChanged(node); !why.empty()) {
       node.setValue(i, std::move(before));
-      return "'" + f.name + "': " + why;
+      return "'" + node.type().fields[i]->name + "': " + why;
     }
   }
   return "";

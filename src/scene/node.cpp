@@ -372,4 +372,11 @@ FieldValue convertAngle(const Node& n, std::size_t i, FieldValue v, AngleUnit un
   return v;
 }
 
+std::string refusal(const Node& n, std::size_t i, const FieldValue& v, AngleUnit unit) {
+  const auto bad = n.type().fields[i]->check(convertAngle(n, i, v, unit, true));
+  if (!bad) return "";
+  const bool radians = unit == AngleUnit::Radians && isAngular(n, i);
+  return bad->message + (radians ? " (in degrees; the model writes angles in radians)" : "");
+}
+
 }  // namespace gdpn::scene

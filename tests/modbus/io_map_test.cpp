@@ -56,6 +56,7 @@ io:
     1: {place: main/parts}
     2: {node: belt/drive, field: speed, type: float32}
     4: {node: post/arm, field: fmax1, type: int32}
+    6: {place: main/parts, type: float32}
 pages:
   main:
     places: {start: {}, parts: {tokens: 3}, done: {}}
@@ -184,6 +185,22 @@ TEST_F(IoMapTest, AWriteIsCheckedWholeBeforeAnyOfItIsApplied) {
   EXPECT_EQ(tokens("main/parts"), 9);
 }
 
+TEST_F(IoMapTest, ANumberTooLargeForAPlaceIsRefused) {
+  // tokens are whole numbers from 0 to 2^53: 3e38 as float32 is refused, 5 is taken
+  const auto words = [](float f) {
+    const auto w = std::bit_cast<std::uint32_t>(f);
+    return std::vector<std::uint16_t>{static_cast<std::uint16_t>(w >> 16), static_cast<std::uint16_t>(w)};
+  };
+  EXPECT_EQ(io_->writeWords(6, words(3.0e38F), "plc"), IoError::IllegalValue);
+  EXPECT_EQ(io_->writeWords(6, words(2.5F), "plc"), IoError::IllegalValue);
+  EXPECT_EQ(tokens("main/parts"), 3);
+  EXPECT_EQ(io_->writeWords(6, words(5.0F), "plc"), IoError::None);
+  EXPECT_EQ(tokens("main/parts"), 5);
+  // a whole-number field past 2^53 likewise (int32 cannot reach it; a field's own range holds)
+  EXPECT_EQ(io_->writeWords(4, {0x7FFF, 0xFFFF}, "plc"), IoError::None);
+  EXPECT_DOUBLE_EQ(field("post/arm", "fmax1"), 2147483647.0);
+}
+
 TEST_F(IoMapTest, TheLockstepRegisterAsksForSteps) {
   EXPECT_TRUE(io_->lockstep());
   EXPECT_EQ(io_->pendingSteps(), 0u);
@@ -210,7 +227,7 @@ TEST_F(IoMapTest, TheTraceHasTheWritesThatChangedSomething) {
 TEST_F(IoMapTest, RowsShowEachEntryItsValueAndItsLastWriter) {
   ASSERT_EQ(io_->writeWords(2, {0x3F40, 0}, "10.0.0.7:5020"), IoError::None);
   const auto rows = io_->rows();
-  ASSERT_EQ(rows.size(), 17u);
+  ASSERT_EQ(rows.size(), 18u);
   const auto& speed = rows[15];
   EXPECT_EQ(speed.table, IoTable::HoldingRegisters);
   EXPECT_EQ(speed.address, 2);

@@ -226,4 +226,9 @@ enum class AngleUnit : std::uint8_t { Degrees, Radians };
 /// not its axis); with AngleUnit::Degrees nothing does.
 [[nodiscard]] FieldValue convertAngle(const Node& n, std::size_t i, FieldValue v, AngleUnit unit, bool to_stored);
 
+/// Why field `i` of `n` refuses `v`, written in `unit` (converted to the stored unit, then
+/// checked by the field's own rule, as a model file's value is), with a note when the angle
+/// was given in radians; "" when it takes it.
+[[nodiscard]] std::string refusal(const Node& n, std::size_t i, const FieldValue& v, AngleUnit unit);
+
 }  // namespace gdpn::scene
