@@ -52,6 +52,34 @@ BENCHMARK(BM_SensorPhase)
     ->Args({100, 0})->Args({1000, 0})->Args({1000, 10})->Args({1000, 100})
     ->Unit(benchmark::kMicrosecond);
 
+/// One scan of a 360-ray LaserScan (issue 23) in a room of four walls with `n` boxes about:
+/// the time per scan, each ray tested against the shapes near the fan.
+void BM_LaserScan(benchmark::State& state) {
+  std::string t = "gdpn: 1\nscene:\n  - World: {gravity: [0, 0, 0]}\n";
+  for (const char* wall : {"[5.5, 0, 0], children: [{Cube: {size: [1, 12, 2]}}]", "[-5.5, 0, 0], children: [{Cube: {size: [1, 12, 2]}}]",
+                           "[0, 5.5, 0], children: [{Cube: {size: [12, 1, 2]}}]", "[0, -5.5, 0], children: [{Cube: {size: [12, 1, 2]}}]"}) {
+    t += std::string("  - Transform: {translation: ") + wall + "}\n";
+  }
+  for (int i = 0; i < state.range(0); ++i) {
+    const double a = i * 2.4, r = 1.5 + (i % 5) * 0.7;
+    t += "  - Transform: {translation: [" + core::formatDouble(r * std::cos(a)) + ", " + core::formatDouble(r * std::sin(a)) +
+         ", 0], children: [{Body: {mass: 1, children: [{Cube: {size: [0.3, 0.3, 0.3]}}]}}]}\n";
+  }
+  t += "  - LaserScan: {name: lidar, count: 360, length: 10, rate: 0}\n";
+  core::Diagnostics diags;
+  auto m = model::parseModel(t, "bench.gdpn.yaml", diags);
+  auto s = m->scene->clone();
+  auto world = physics::World::create(*s, ".", 1, diags);
+  sensors::Hub hub(*s, world.get());
+  double now = 0;
+  for (auto _ : state) {
+    now += 0.01;
+    benchmark::DoNotOptimize(hub.update(now));
+  }
+  state.counters["boxes"] = static_cast<double>(state.range(0));
+}
+BENCHMARK(BM_LaserScan)->Arg(0)->Arg(20)->Arg(200)->Unit(benchmark::kMicrosecond);
+
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -1,6 +1,7 @@
 // The gdpn Python module: load a model, run it, read markings, the trace and the report.
 
 #include "gdpn/experiments/python_sources.h"
+#include "gdpn/capture/sensor_imager.h"
 #include <pybind11/pybind11.h>
 #include <pybind11/eval.h>
 #include <pybind11/stl.h>
@@ -74,7 +75,9 @@ class Model {
     }
     auto m = model::loadModel(path_, diags, overrides);
     if (!m) raiseModelError(diags);
-    session_ = session::Session::create(std::move(*m), diags, {seed, script_timeout});
+    session_ = session::Session::create(std::move(*m), diags, {seed, script_timeout, [](const std::string& dir) {
+                                          return std::make_shared<capture::SensorImager>(dir);
+                                        }});
     if (!session_) raiseModelError(diags);
     session_->traceTo(trace_);
     recordSignals();

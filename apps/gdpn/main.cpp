@@ -36,6 +36,7 @@
 #include "gdpn/net/graph_export.h"
 #include "gdpn/net/pnml.h"
 #include "gdpn/capture/capture.h"
+#include "gdpn/capture/sensor_imager.h"
 #ifdef GDPN_WITH_IDE
 #include "gdpn/ide/ide.h"
 #endif
@@ -139,7 +140,9 @@ std::unique_ptr<gdpn::session::Session> open(const std::string& arg, std::option
   std::unique_ptr<gdpn::session::Session> sim;
   if (auto path = model::resolveModelPath(arg, diags)) {
     if (auto m = model::loadModel(*path, diags, paramOverrides(params))) {
-      sim = gdpn::session::Session::create(*m, diags, {seed, script_timeout_s});
+      sim = gdpn::session::Session::create(*m, diags, {seed, script_timeout_s, [](const std::string& dir) {
+                                                      return std::make_shared<gdpn::capture::SensorImager>(dir);
+                                                    }});
     }
   }
   diags.print(std::cerr);

@@ -213,8 +213,10 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
       any = any || n.type().category == scene::Category::Sensor;
     }, {}, scene::Templates::Skip);
     if (any) {
-      if (!sensors::Hub::check(*sim->scene_, diags)) return nullptr;
-      sim->hub_ = std::make_unique<sensors::Hub>(*sim->scene_, sim->physics_.get());
+      const auto dir = std::filesystem::path(model.path).parent_path().string();
+      if (!sensors::Hub::check(*sim->scene_, diags, dir.empty() ? "." : dir)) return nullptr;
+      sim->hub_ = std::make_unique<sensors::Hub>(*sim->scene_, sim->physics_.get(), sim->seed_);
+      sim->hub_->setModelDir(dir.empty() ? "." : dir);
     }
   }
   sim->kernel_ = std::make_unique<net::Kernel>(sim->net_, settings);
@@ -240,6 +242,13 @@ bool Simulation::makeEngine(core::Diagnostics& diags) {
   callbacks.reading = [this](scene::NodeHandle h) -> const sensors::Reading& {
     static const sensors::Reading none;
     return hub_ ? hub_->reading(h) : none;
+  };
+  callbacks.image = [this](scene::NodeHandle h, std::string& why) -> std::shared_ptr<const sensors::Image> {
+    if (!hub_) {
+      why = "the scene has no sensors";
+      return nullptr;
+    }
+    return hub_->image(h, why);
   };
   script::EngineOptions options;
   options.timeout_s = script_timeout_s_;
@@ -544,6 +553,16 @@ void Simulation::firePhase() {
 
 void Simulation::note(const char* event, const std::string& fields) {
   if (trace_) trace_->event(kernel_->steps(), event, fields);
+}
+
+bool Simulation::hasCameras() const {
+  bool any = false;
+  if (scene_) {
+    scene::traverse(scene_->root(), [&](scene::Node& n, const scene::TraversalState&) {
+      any = any || n.kind() == scene::NodeKind::ColorCamera || n.kind() == scene::NodeKind::DepthCamera;
+    }, {}, scene::Templates::Skip);
+  }
+  return any;
 }
 
 bool Simulation::dead() const {

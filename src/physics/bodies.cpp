@@ -36,7 +36,7 @@ bool World::Impl::buildBodies(Node& node, core::Diagnostics& diags) {
   const bool body = node.kind() == NodeKind::Body;
   if (body) {
     dBodyID id = dBodyCreate(world);
-    bodies.push_back({&node, id, {}, {}, {}, {}});
+    bodies.push_back({&node, id, {}, {}, {}, {}, false, {}});
     body_of[node.handle()] = bodies.size() - 1;
   }
   bool ok = true;
@@ -126,6 +126,11 @@ bool World::Impl::finishBody(Body& body, core::Diagnostics& diags) {
 bool World::isBody(const scene::Node& node) const { return impl_->body_of.count(node.handle()) > 0; }
 
 core::Vec3 World::velocity(const scene::Node& body) const { return v3(dBodyGetLinearVel(need(impl_->owner(body)).id)); }
+core::Vec3 World::pointVelocity(const scene::Node& body, core::Vec3 at) const {
+  dVector3 v;
+  dBodyGetPointVel(need(impl_->owner(body)).id, at.x, at.y, at.z, v);
+  return v3(v);
+}
 double World::mass(const scene::Node& body) const {
   dMass m;
   dBodyGetMass(need(impl_->owner(body)).id, &m);

@@ -113,6 +113,7 @@ void World::Impl::nearCallback(void* data, dGeomID o1, dGeomID o2) {
     }
     dJointID c = dJointCreateContact(self.world, self.contacts, &contact[i]);
     dJointAttach(c, b1, b2);
+    if (self.watching_contacts) self.watchContact(c, contact[i].geom, o1, o2);
     if (self.record_contacts) {
       const dContactGeom& g = contact[i].geom;
       self.touching.push_back({Vec3{g.pos[0], g.pos[1], g.pos[2]}, Vec3{g.normal[0], g.normal[1], g.normal[2]}, g.depth});
@@ -120,9 +121,95 @@ void World::Impl::nearCallback(void* data, dGeomID o1, dGeomID o2) {
   }
 }
 
+void World::Impl::watchContact(dJointID c, const dContactGeom& g, dGeomID o1, dGeomID o2) {
+  // each side whose body is watched sees the other side's body, or the static shape
+  for (int side = 0; side < 2; ++side) {
+    const dGeomID mine = side == 0 ? o1 : o2, theirs = side == 0 ? o2 : o1;
+    const Surface s = surfaceOf(mine, *this), t = surfaceOf(theirs, *this);
+    if (!s.node || !t.node) continue;
+    Body* body = owner(*s.node);
+    if (!body || !body->watched) continue;
+    contact_feedback.emplace_back();
+    dJointFeedback* fb = &contact_feedback.back();
+    dJointSetFeedback(c, fb);
+    watched_contacts.push_back({body, reported(*t.node)->handle(), fb, Vec3{g.normal[0], g.normal[1], g.normal[2]}, side == 0});
+  }
+}
+
+void World::Impl::gatherForces() {
+  for (const auto& w : watched_contacts) {
+    const dReal* f = w.first ? w.feedback->f1 : w.feedback->f2;
+    const double normal = std::abs(f[0] * w.normal.x + f[1] * w.normal.y + f[2] * w.normal.z);
+    auto& t = w.body->touches;
+    auto at = std::find_if(t.begin(), t.end(), [&](const auto& p) { return p.first == w.other; });
+    if (at == t.end()) {
+      t.emplace_back(w.other, normal);
+    } else {
+      at->second += normal;
+    }
+  }
+  watched_contacts.clear();
+  contact_feedback.clear();
+  if (!watching_joints) return;
+  for (auto& j : joints) {
+    if (!j.feedback || !j.id) continue;
+    j.force_sum = j.force_sum + Vec3{j.feedback->f1[0], j.feedback->f1[1], j.feedback->f1[2]};
+    j.torque_sum = j.torque_sum + Vec3{j.feedback->t1[0], j.feedback->t1[1], j.feedback->t1[2]};
+  }
+}
+
 }  // namespace gdpn::physics
 
 namespace gdpn::physics {
+
+bool World::watchContacts(const Node& node) {
+  Impl::Body* body = impl_->owner(node);
+  if (!body || !body->id) return false;
+  body->watched = true;
+  impl_->watching_contacts = true;
+  // a sleeping pair makes no contacts: the watched body stays awake, and keeps what rests on it awake
+  dBodySetAutoDisableFlag(body->id, 0);
+  dBodyEnable(body->id);
+  return true;
+}
+
+std::vector<World::Touch> World::touches(const Node& node) const {
+  std::vector<Touch> out;
+  const Impl::Body* body = impl_->owner(node);
+  if (!body) return out;
+  const double n = impl_->substeps;
+  for (const auto& [other, sum] : body->touches) {
+    if (impl_->scene.resolve(other)) out.push_back({other, sum / n});
+  }
+  std::sort(out.begin(), out.end(), [&](const Touch& a, const Touch& b) {
+    return impl_->scene.resolve(a.other)->path() < impl_->scene.resolve(b.other)->path();
+  });
+  return out;
+}
+
+bool World::watchJoint(const Node& joint) {
+  const auto it = impl_->joint_of.find(joint.handle());
+  if (it == impl_->joint_of.end()) return false;
+  auto& j = impl_->joints[it->second];
+  if (!j.feedback) j.feedback = std::make_unique<dJointFeedback>();
+  if (j.id) dJointSetFeedback(j.id, j.feedback.get());
+  impl_->watching_joints = true;
+  return true;
+}
+
+void World::jointWrench(const Node& joint, Vec3 at, Vec3& force, Vec3& torque) const {
+  force = torque = {};
+  const auto it = impl_->joint_of.find(joint.handle());
+  if (it == impl_->joint_of.end()) return;
+  const auto& j = impl_->joints[it->second];
+  if (!j.feedback || !j.id) return;
+  const double n = impl_->substeps;
+  force = j.force_sum * (1.0 / n);
+  // ODE's torque is about the child's centre of mass: moved to `at`
+  const dBodyID child = dJointGetBody(j.id, 0);
+  const Vec3 cm = child ? bodyPose(child).position : at;
+  torque = j.torque_sum * (1.0 / n) + (cm - at).cross(force);
+}
 
 void World::recordContacts(bool on) {
   impl_->record_contacts = on;

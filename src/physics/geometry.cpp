@@ -70,6 +70,13 @@ Primitive shapePrimitive(const Node& n) {
     case NodeKind::GradientSensor:
     case NodeKind::KeyboardSensor:
     case NodeKind::MouseSensor:
+    case NodeKind::ColorCamera:
+    case NodeKind::DepthCamera:
+    case NodeKind::LaserScan:
+    case NodeKind::Imu:
+    case NodeKind::Gps:
+    case NodeKind::Contact:
+    case NodeKind::ForceTorque:
     case NodeKind::TimeSensor: return p;
   }
   return p;

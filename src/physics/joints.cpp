@@ -103,7 +103,7 @@ bool World::Impl::addJoint(Node& n, Body* parent_body, core::Diagnostics& diags)
     return false;
   }
   dJointID j = makeJoint(n, kind, child_body->id, parent_body ? parent_body->id : nullptr);
-  joints.push_back({&n, j, kind, n.choice<JointControl>(F::Control)});
+  joints.push_back({&n, j, kind, n.choice<JointControl>(F::Control), nullptr, {}, {}});
   joint_of[n.handle()] = joints.size() - 1;
   return true;
 }
@@ -175,6 +175,7 @@ std::string World::Impl::refreshJoint(const Node& n) {
   dBodyID child = dJointGetBody(jt.id, 0), parent = dJointGetBody(jt.id, 1);
   dJointDestroy(jt.id);
   jt.id = makeJoint(n, kind, child, parent);
+  if (jt.feedback) dJointSetFeedback(jt.id, jt.feedback.get());
   jt.kind = kind;
   if (child) dBodyEnable(child);
   if (parent) dBodyEnable(parent);

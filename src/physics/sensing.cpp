@@ -69,6 +69,13 @@ SensorSpec sensorSpec(const Node& n) {
     case NodeKind::GradientSensor:
     case NodeKind::KeyboardSensor:
     case NodeKind::MouseSensor:
+    case NodeKind::ColorCamera:
+    case NodeKind::DepthCamera:
+    case NodeKind::LaserScan:
+    case NodeKind::Imu:
+    case NodeKind::Gps:
+    case NodeKind::Contact:
+    case NodeKind::ForceTorque:
     case NodeKind::TimeSensor: return {};
   }
   return {};
@@ -208,5 +215,50 @@ void World::Impl::sense(std::vector<std::pair<scene::NodeHandle, Feel>>& out) {
 }
 
 void World::sense(std::vector<std::pair<scene::NodeHandle, Feel>>& out) { impl_->sense(out); }
+
+void World::castRays(const Node& sensor, scene::Scope scope, Vec3 from, const std::vector<Vec3>& dirs, double length,
+                     std::vector<double>& distance, std::vector<scene::NodeHandle>& hit) {
+  Impl& m = *impl_;
+  distance.assign(dirs.size(), length);
+  hit.assign(dirs.size(), 0);
+  if (dirs.empty() || !(length > 0)) return;
+  // the shapes whose boxes meet the box around every ray, and in the sensor's scope
+  const Vec3 reach{length, length, length};
+  const core::Aabb fan{from - reach, from + reach};
+  const Impl::Sensor as{const_cast<Node*>(&sensor), nullptr, scope, false, rayPrimitive(length)};
+  std::vector<dGeomID> near;
+  auto consider = [&](dGeomID g) {
+    const Surface s = Impl::surfaceOf(g, m);
+    if (s.node && Impl::inScope(as, *s.node)) near.push_back(g);
+  };
+  m.refreshShapes();
+  m.refreshMoving();
+  for (std::size_t i = 0; i < m.moving.size(); ++i) {
+    if (core::overlaps(m.moving_boxes[i], fan)) consider(m.moving[i]);
+  }
+  m.fixed_tree.query(fan, [&](std::size_t k) { consider(m.fixed[k]); });
+  for (dGeomID g : m.endless) consider(g);
+  if (near.empty()) return;
+  dGeomID ray = dCreateRay(nullptr, length);
+  std::vector<core::Aabb> boxes;
+  boxes.reserve(near.size());
+  for (dGeomID g : near) boxes.push_back(aabbOf(g));
+  for (std::size_t r = 0; r < dirs.size(); ++r) {
+    const Vec3 d = dirs[r];
+    dGeomRaySet(ray, from.x, from.y, from.z, d.x, d.y, d.z);
+    dGeomRaySetLength(ray, length);
+    const Vec3 to = from + d * length;
+    const core::Aabb span{{std::min(from.x, to.x), std::min(from.y, to.y), std::min(from.z, to.z)},
+                          {std::max(from.x, to.x), std::max(from.y, to.y), std::max(from.z, to.z)}};
+    for (std::size_t k = 0; k < near.size(); ++k) {
+      if (!core::overlaps(boxes[k], span)) continue;
+      dContactGeom c;
+      if (dCollide(ray, near[k], 1, &c, sizeof(dContactGeom)) == 0 || !(c.depth < distance[r])) continue;
+      distance[r] = c.depth;
+      hit[r] = m.reported(*Impl::surfaceOf(near[k], m).node)->handle();
+    }
+  }
+  dGeomDestroy(ray);
+}
 
 }  // namespace gdpn::physics

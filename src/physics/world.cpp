@@ -98,6 +98,12 @@ void World::Impl::step(double dt) {
   last_ode_message.clear();
   const double h = dt / substeps;
   driveMotors();
+  if (watching_contacts) {
+    for (auto& b : bodies) b.touches.clear();
+  }
+  if (watching_joints) {
+    for (auto& j : joints) j.force_sum = j.torque_sum = {};
+  }
   for (int k = 0; k < substeps; ++k) {
     for (auto& b : bodies) {
       if (!b.id) continue;
@@ -108,6 +114,7 @@ void World::Impl::step(double dt) {
     touching.clear();
     collide();
     dWorldQuickStep(world, h);
+    if (watching_contacts || watching_joints) gatherForces();
     dJointGroupEmpty(contacts);
     // a body that ran away stops the physics before ODE or the broad phase meet its numbers
     if (!bodiesSane()) return;
@@ -208,6 +215,13 @@ std::string World::fieldChanged(const scene::Node& node) {
     case NodeKind::GradientSensor:
     case NodeKind::KeyboardSensor:
     case NodeKind::MouseSensor:
+    case NodeKind::ColorCamera:
+    case NodeKind::DepthCamera:
+    case NodeKind::LaserScan:
+    case NodeKind::Imu:
+    case NodeKind::Gps:
+    case NodeKind::Contact:
+    case NodeKind::ForceTorque:
     case NodeKind::TimeSensor: return {};
   }
   return {};

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <deque>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -74,6 +75,10 @@ struct World::Impl {
     core::Vec3 com;       ///< centre of mass in the node's frame (the ODE body's origin), m
     core::Vec3 force, torque;  ///< applied every step: N, N m (world frame)
     core::Vec3 pending;   ///< applied in the next step only, N
+    bool watched = false; ///< a Contact sensor reads what touches it (World::watchContacts)
+    /// While watched: the body or static shape on the other side of each contact of this
+    /// step, and the sum of its normal forces over the sub-steps, N.
+    std::vector<std::pair<scene::NodeHandle, double>> touches;
   };
   /// A Joint node and its ODE joint, with the Enum fields read every step, cached.
   struct Joint {
@@ -81,6 +86,19 @@ struct World::Impl {
     dJointID id;                  ///< null once removed
     scene::JointKind kind;        ///< what `id` was made as
     scene::JointControl control;  ///< what the motor on axis 1 follows
+    /// While watched (World::watchJoint): what ODE writes back, and the sums over this step's
+    /// sub-steps of the force (N) and torque about the child's centre of mass (N m) on the
+    /// child body.
+    std::unique_ptr<dJointFeedback> feedback;
+    core::Vec3 force_sum, torque_sum;
+  };
+  /// A contact joint of this sub-step with a watched body on one side.
+  struct WatchedContact {
+    Body* body;                ///< the watched body
+    scene::NodeHandle other;   ///< the body or static shape on the other side
+    dJointFeedback* feedback;  ///< in `contact_feedback`
+    core::Vec3 normal;         ///< the contact's normal, unit
+    bool first;                ///< the watched body is ODE's body 1 of the joint
   };
   /// A Region or RangeFinder and its geometry, never in contacts.
   struct Sensor {
@@ -114,6 +132,10 @@ struct World::Impl {
   dJointGroupID contacts = nullptr;
   bool record_contacts = false;          ///< keep the contact points of each sub-step (World::recordContacts)
   std::vector<World::Contact> touching;  ///< those of the last sub-step, while recording
+  bool watching_contacts = false;        ///< some body is watched (World::watchContacts)
+  std::deque<dJointFeedback> contact_feedback;  ///< this sub-step's, for watched contacts (stable addresses)
+  std::vector<WatchedContact> watched_contacts;  ///< this sub-step's
+  bool watching_joints = false;          ///< some joint is watched (World::watchJoint)
   int substeps = 1;
   std::deque<Body> bodies;  // stable addresses; a removed body keeps its place with id null
   std::unordered_map<scene::NodeHandle, std::size_t> body_of;  // Body node -> index
@@ -216,6 +238,11 @@ struct World::Impl {
   bool beltWakes(dGeomID belt, dBodyID other) const;
   /// The contact joints between two shapes that may touch (`data`: the Impl).
   static void nearCallback(void* data, dGeomID o1, dGeomID o2);
+  /// Asks ODE for the forces of contact joint `c` (at `g`, between `o1` and `o2`) where a
+  /// watched body is on either side.
+  void watchContact(dJointID c, const dContactGeom& g, dGeomID o1, dGeomID o2);
+  /// Adds what the watched contacts and joints of the sub-step just taken bore to their sums.
+  void gatherForces();
 
   // broad_phase.cpp
   /// Sorts the shapes into moving, fixed and endless, and rebuilds the fixed shapes' tree,

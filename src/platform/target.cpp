@@ -59,4 +59,25 @@ std::vector<std::uint8_t> Target::readRgb() {
   return flipped;
 }
 
+BindingKeeper::BindingKeeper() {
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer_);
+  glGetIntegerv(GL_VIEWPORT, viewport_);
+}
+
+BindingKeeper::~BindingKeeper() {
+  glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer_));
+  glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+}
+
+std::vector<float> Target::readDepth() {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  const auto w = static_cast<std::size_t>(width_), h = static_cast<std::size_t>(height_);
+  std::vector<float> depth(w * h), flipped(w * h);
+  glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  for (std::size_t y = 0; y < h; ++y) std::memcpy(&flipped[y * w], &depth[(h - 1 - y) * w], w * sizeof(float));
+  bind();
+  return flipped;
+}
+
 }  // namespace gdpn::platform

@@ -30,6 +30,21 @@ Camera cameraOf(const Node& camera, double t) {
   return c;
 }
 
+Camera sensorCamera(const Node& camera) {
+  using F = field::ColorCamera;
+  Camera c;
+  c.eye = camera.world.position;
+  c.target = c.eye + camera.world.rotation.rotate({1, 0, 0});
+  c.up = camera.world.rotation.rotate({0, 0, 1});
+  const double aspect = camera.number(F::Width) / camera.number(F::Height);
+  c.fov = 2.0 * std::atan(std::tan(camera.number(F::Fov) * std::numbers::pi / 360.0) / aspect) * 180.0 / std::numbers::pi;
+  c.near = camera.number(F::Near);
+  c.far = camera.number(F::Far);
+  return c;
+}
+
+bool isCameraSensor(const Node& n) { return n.kind() == NodeKind::ColorCamera || n.kind() == NodeKind::DepthCamera; }
+
 Camera framing(const scene::Scene& scene) {
   const core::Aabb box = scene::boundingBox(scene.root());
   Camera c;
@@ -52,7 +67,7 @@ std::vector<const Node*> cameraNodes(const scene::Scene& scene) {
     const Node* n = todo.back();
     todo.pop_back();
     if (n->is_template) continue;
-    if (n->kind() == NodeKind::Camera) out.push_back(n);
+    if (n->kind() == NodeKind::Camera || isCameraSensor(*n)) out.push_back(n);
     for (auto it = n->children().rbegin(); it != n->children().rend(); ++it) todo.push_back(it->get());
   }
   return out;
@@ -63,12 +78,13 @@ std::vector<const Node*> cameraNodes(const scene::Scene& scene) {
 std::string cameraProblem(const scene::Scene& scene, const std::string& path) {
   if (path.empty()) return {};
   const Node* n = scene.find(path);
-  if (n != nullptr && n->kind() == NodeKind::Camera && !scene::inTemplate(*n)) return {};
+  const bool camera = n != nullptr && (n->kind() == NodeKind::Camera || isCameraSensor(*n));
+  if (camera && !scene::inTemplate(*n)) return {};
   std::vector<std::string> cameras;
   for (const Node* c : cameraNodes(scene)) cameras.push_back(c->path());
   std::string why = n == nullptr                        ? "no node at '" + path + "'"
-                    : n->kind() != NodeKind::Camera ? "'" + path + "' is a " + n->type().name + ", not a Camera"
-                                                    : "'" + path + "' is a Camera in a template, which is not drawn";
+                    : !camera ? "'" + path + "' is a " + n->type().name + ", not a Camera or a camera sensor"
+                              : "'" + path + "' is a " + n->type().name + " in a template, which is not drawn";
   if (cameras.empty()) return why + "; the scene has no Camera node (leave --camera out for a framing view)";
   std::string list;
   for (const auto& c : cameras) list += (list.empty() ? "" : ", ") + c;
@@ -80,10 +96,14 @@ Camera chooseCamera(const scene::Scene& scene, const std::string& path, double t
   if (!path.empty()) {
     error = cameraProblem(scene, path);
     if (!error.empty()) return framing(scene);
-    return cameraOf(*scene.find(path), t);
+    const Node& n = *scene.find(path);
+    return isCameraSensor(n) ? sensorCamera(n) : cameraOf(n, t);
   }
-  const auto cameras = cameraNodes(scene);
-  return cameras.empty() ? framing(scene) : cameraOf(*cameras.front(), t);
+  // the first Camera node (a camera sensor is chosen only by its path)
+  for (const Node* n : cameraNodes(scene)) {
+    if (n->kind() == NodeKind::Camera) return cameraOf(*n, t);
+  }
+  return framing(scene);
 }
 
 }  // namespace gdpn::render

@@ -187,6 +187,13 @@ struct Renderer::Impl {
       case NodeKind::GradientSensor:
       case NodeKind::KeyboardSensor:
       case NodeKind::MouseSensor:
+      case NodeKind::ColorCamera:
+      case NodeKind::DepthCamera:
+      case NodeKind::LaserScan:
+      case NodeKind::Imu:
+      case NodeKind::Gps:
+      case NodeKind::Contact:
+      case NodeKind::ForceTorque:
       case NodeKind::TimeSensor: break;
     }
     const Node* inner = material;

@@ -95,6 +95,13 @@ core::Vec3 shapeExtent(const Node& node) {
     case NodeKind::GradientSensor:
     case NodeKind::KeyboardSensor:
     case NodeKind::MouseSensor:
+    case NodeKind::ColorCamera:
+    case NodeKind::DepthCamera:
+    case NodeKind::LaserScan:
+    case NodeKind::Imu:
+    case NodeKind::Gps:
+    case NodeKind::Contact:
+    case NodeKind::ForceTorque:
     case NodeKind::TimeSensor: return {};
   }
   return {};

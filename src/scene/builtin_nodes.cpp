@@ -55,6 +55,28 @@ NodeType type(NodeKind kind, std::string name, Category category, bool children,
 
 constexpr double kInf = 1e300;
 
+/// The noise a sensor may add to each number it reads (ids `noise`, then bias and resolution
+/// after it, in `unit`), drawn from its own stream of the model's generator.
+template <FieldId F>
+std::vector<FieldDesc> noise(F id, const std::string& unit) {
+  const auto next = [&](int k) { return static_cast<F>(static_cast<int>(id) + k); };
+  return {f(id, "noise", FieldKind::Float, 0.0, unit, "standard deviation of the Gaussian noise added to each number read", 0, kInf),
+          f(next(1), "bias", FieldKind::Float, 0.0, unit, "a constant added to each number read"),
+          f(next(2), "resolution", FieldKind::Float, 0.0, unit, "each number read is rounded to a multiple of this (0: not rounded)", 0, kInf)};
+}
+
+/// The sample rate of a sensor of `id`.
+template <FieldId F>
+FieldDesc rate(F id, double initial) {
+  return f(id, "rate", FieldKind::Float, initial, "Hz", "samples per second (0: one every step)", 0, kInf);
+}
+
+/// `a` with the fields of `b` after it.
+std::vector<FieldDesc> with(std::vector<FieldDesc> a, const std::vector<FieldDesc>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
 }  // namespace
 
 void registerBuiltinNodes(TypeRegistry& r) {
@@ -172,8 +194,9 @@ void registerBuiltinNodes(TypeRegistry& r) {
               choice(field::Region::Report, "report", {"all", "bodies"},
                      "what it reports: bodies and static shapes, or bodies only")}));
   r.add(type(NodeKind::RangeFinder, "RangeFinder", Category::Sensor, false, "the distance along a ray (+x) to the first thing it hits",
-             {f(field::RangeFinder::Length, "length", K::Float, 10.0, "m", "how far it sees", 0, kInf),
-              choice(field::RangeFinder::Scope, "scope", {"world", "siblings", "parent"}, "what it sees")}));
+             with({f(field::RangeFinder::Length, "length", K::Float, 10.0, "m", "how far it sees", 0, kInf),
+                   choice(field::RangeFinder::Scope, "scope", {"world", "siblings", "parent"}, "what it sees")},
+                  noise(field::RangeFinder::Noise, "m"))));
   r.add(type(NodeKind::GradientSensor, "GradientSensor", Category::Sensor, false,
              "the gradient field's vector where its parent body is (bilinear)",
              {f(field::GradientSensor::Field, "field", K::String, std::string(), "", "the GradientField's path (empty: the scene's first one)")}));
@@ -183,6 +206,42 @@ void registerBuiltinNodes(TypeRegistry& r) {
   r.add(type(NodeKind::TimeSensor, "TimeSensor", Category::Sensor, false, "ticks at a period",
              {f(field::TimeSensor::Period, "period", K::Float, 1.0, "s", "time between ticks", 1e-9, kInf),
               f(field::TimeSensor::Offset, "offset", K::Float, 0.0, "s", "time of the first tick", 0, kInf)}));
+  // sensors of issue 23: each samples at its rate and may add noise
+  using CC = field::ColorCamera;
+  r.add(type(NodeKind::ColorCamera, "ColorCamera", Category::Sensor, false,
+             "an RGB image looking along +x (up: +z), rendered only when a script reads it",
+             with({f(CC::Width, "width", K::Int, std::int64_t{320}, "px", "image width", 1, 8192),
+                   f(CC::Height, "height", K::Int, std::int64_t{240}, "px", "image height", 1, 8192),
+                   f(CC::Fov, "fov", K::Float, 60.0, "deg", "horizontal field of view", 1, 179),
+                   f(CC::Near, "near", K::Float, 0.05, "m", "nearest distance seen", 1e-6, kInf),
+                   f(CC::Far, "far", K::Float, 100.0, "m", "farthest distance seen", 1e-6, kInf), rate(CC::Rate, 30.0)},
+                  noise(CC::Noise, "level or m"))));
+  r.add(type(NodeKind::DepthCamera, "DepthCamera", Category::Sensor, false,
+             "distances along +x (metres per pixel, `far` where nothing is), rendered only when a script reads them", {}),
+        "ColorCamera");
+  using LS = field::LaserScan;
+  r.add(type(NodeKind::LaserScan, "LaserScan", Category::Sensor, false,
+             "distances along a fan of rays in its xy-plane, from +x towards +y",
+             with({f(LS::Count, "count", K::Int, std::int64_t{360}, "", "rays", 1, 1e6),
+                   f(LS::MinAngle, "min_angle", K::Float, -180.0, "deg", "angle of the first ray from +x", -360, 360),
+                   f(LS::MaxAngle, "max_angle", K::Float, 180.0, "deg", "angle of the last ray (a whole turn: the first again, not repeated)", -360, 360),
+                   f(LS::Length, "length", K::Float, 10.0, "m", "how far each ray sees", 0, kInf),
+                   choice(LS::Scope, "scope", {"world", "siblings", "parent"}, "what it sees"), rate(LS::Rate, 10.0)},
+                  noise(LS::Noise, "m"))));
+  r.add(type(NodeKind::Imu, "Imu", Category::Sensor, false,
+             "acceleration (gravity's reaction included) and angular velocity of the point where it is on its body, in its frame",
+             with({rate(field::Imu::Rate, 100.0)}, noise(field::Imu::Noise, "m/s^2, deg/s"))));
+  r.add(type(NodeKind::Gps, "Gps", Category::Sensor, false, "the position of its node",
+             with({choice(field::Gps::Frame, "frame", {"world", "geodetic"},
+                          "metres in the world, or latitude, longitude (deg) and altitude (m) over a georeferenced Terrain"),
+                   f(field::Gps::Terrain, "terrain", K::String, std::string(), "", "geodetic: the Terrain's path (empty: the scene's first)"),
+                   rate(field::Gps::Rate, 10.0)},
+                  noise(field::Gps::Noise, "m"))));
+  r.add(type(NodeKind::Contact, "Contact", Category::Sensor, false, "the bodies and shapes touching its body, and the normal force of each",
+             with({rate(field::Contact::Rate, 0.0)}, noise(field::Contact::Noise, "N"))));
+  r.add(type(NodeKind::ForceTorque, "ForceTorque", Category::Sensor, false,
+             "the force and torque its parent Joint applies to the body below it, at its origin and in its frame",
+             with({rate(field::ForceTorque::Rate, 0.0)}, noise(field::ForceTorque::Noise, "N, N m"))));
 }
 
 }  // namespace gdpn::scene

@@ -1,6 +1,7 @@
 #include "gdpn/scene/terrain.h"
 
 #include <gdal.h>
+#include <ogr_srs_api.h>
 
 #include <algorithm>
 #include <cmath>
@@ -10,9 +11,13 @@
 
 namespace gdpn::scene {
 
-std::optional<HeightGrid> loadHeightGrid(const std::string& path, std::string& why) {
+namespace {
+
+/// The raster at `path`, GDAL's errors kept quiet (pop the handler after closing it); null
+/// with `why`, the handler popped, when it cannot be opened.
+GDALDatasetH openRaster(const std::string& path, std::string& why) {
   // a regular file within the input limit: GDAL would read a FIFO or /dev/zero forever
-  if (!core::inputFileSize(path, why)) return std::nullopt;
+  if (!core::inputFileSize(path, why)) return nullptr;
   static std::once_flag once;
   std::call_once(once, [] { GDALAllRegister(); });
   // GDAL reports through a handler; keep its last message for ours
@@ -21,8 +26,63 @@ std::optional<HeightGrid> loadHeightGrid(const std::string& path, std::string& w
   if (!ds) {
     why = CPLGetLastErrorMsg()[0] ? CPLGetLastErrorMsg() : "not a raster GDAL can read";
     CPLPopErrorHandler();
-    return std::nullopt;
   }
+  return ds;
+}
+
+}  // namespace
+
+std::unique_ptr<Geodesy> Geodesy::open(const std::string& path, double width, double depth, std::string& why) {
+  GDALDatasetH ds = openRaster(path, why);
+  if (!ds) return nullptr;
+  std::unique_ptr<Geodesy> g(new Geodesy);
+  g->width_ = width;
+  g->depth_ = depth;
+  g->nx_ = GDALGetRasterXSize(ds);
+  g->ny_ = GDALGetRasterYSize(ds);
+  const char* wkt = GDALGetProjectionRef(ds);
+  if (GDALGetGeoTransform(ds, g->transform_.data()) != CE_None || !wkt || !*wkt) {
+    why = "it is not georeferenced (no coordinate system or no geotransform)";
+    g.reset();
+  } else {
+    OGRSpatialReferenceH from = OSRNewSpatialReference(wkt), to = OSRNewSpatialReference(nullptr);
+    OSRImportFromEPSG(to, 4326);
+    // longitude first, latitude second, whatever the authorities' axis order
+    OSRSetAxisMappingStrategy(from, OAMS_TRADITIONAL_GIS_ORDER);
+    OSRSetAxisMappingStrategy(to, OAMS_TRADITIONAL_GIS_ORDER);
+    g->to_wgs84_ = OCTNewCoordinateTransformation(from, to);
+    OSRDestroySpatialReference(from);
+    OSRDestroySpatialReference(to);
+    if (!g->to_wgs84_) {
+      why = "its coordinate system cannot be converted to latitude and longitude";
+      g.reset();
+    }
+  }
+  GDALClose(ds);
+  CPLPopErrorHandler();
+  return g;
+}
+
+Geodesy::~Geodesy() {
+  if (to_wgs84_) OCTDestroyCoordinateTransformation(static_cast<OGRCoordinateTransformationH>(to_wgs84_));
+}
+
+bool Geodesy::toGeodetic(double x, double y, double& latitude, double& longitude) const {
+  // the samples span the terrain edge to edge: sample i lies at -width/2 + i * width/(nx-1),
+  // and GDAL's pixel i covers [i, i+1), its centre at i + 0.5
+  const double col = 0.5 + (x + width_ / 2) / width_ * (nx_ - 1);
+  const double row = 0.5 + (depth_ / 2 - y) / depth_ * (ny_ - 1);
+  const auto& t = transform_;
+  double px = t[0] + col * t[1] + row * t[2], py = t[3] + col * t[4] + row * t[5];
+  if (!OCTTransform(static_cast<OGRCoordinateTransformationH>(to_wgs84_), 1, &px, &py, nullptr)) return false;
+  longitude = px;
+  latitude = py;
+  return std::isfinite(px) && std::isfinite(py);
+}
+
+std::optional<HeightGrid> loadHeightGrid(const std::string& path, std::string& why) {
+  GDALDatasetH ds = openRaster(path, why);
+  if (!ds) return std::nullopt;
   std::optional<HeightGrid> grid;
   const int nx = GDALGetRasterXSize(ds), ny = GDALGetRasterYSize(ds);
   if (GDALGetRasterCount(ds) < 1) {

@@ -360,6 +360,13 @@ struct Engine::Impl : detail::Context {
   void erase(scene::Node& node) override {
     if (callbacks.erase) callbacks.erase(node);
   }
+  std::shared_ptr<const sensors::Image> image(scene::NodeHandle sensor, std::string& why) const override {
+    if (!callbacks.image) {
+      why = "this run renders no camera pictures";
+      return nullptr;
+    }
+    return callbacks.image(sensor, why);
+  }
   const sensors::Reading& reading(scene::NodeHandle sensor) const override {
     static const sensors::Reading none;
     return callbacks.reading ? callbacks.reading(sensor) : none;

@@ -3,6 +3,7 @@
 #include "views.h"
 
 #include <pybind11/eval.h>
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include <algorithm>
@@ -93,6 +94,40 @@ const std::string& sensorOf(const SlotView& s) {
 }
 
 /// The view of the sensor at `path` that slot `s` holds; AttributeError when it is gone.
+/// The node of sensor view `v`, which must be one of `kinds` to have attribute `what`
+/// (AttributeError otherwise, naming its type).
+const scene::Node& measuring(const SensorView& v, std::initializer_list<scene::NodeKind> kinds, const char* what) {
+  const scene::Scene* plant = v.r.get().plant();
+  const scene::Node* n = plant ? plant->resolve(v.sensor) : nullptr;
+  if (!n) throw py::attribute_error("the sensor is gone");
+  if (std::find(kinds.begin(), kinds.end(), n->kind()) == kinds.end()) {
+    throw py::attribute_error("sensor '" + n->path() + "' is a " + n->type().name + ": it has no '" + what + "'");
+  }
+  return *n;
+}
+
+py::tuple tupleOf(core::Vec3 u) { return py::make_tuple(u.x, u.y, u.z); }
+
+/// A camera's picture as a read-only NumPy array over the picture itself (no copy): height x
+/// width x 3 bytes, or height x width metres (float32).
+py::object pictureOf(const SensorView& v) {
+  measuring(v, {scene::NodeKind::ColorCamera, scene::NodeKind::DepthCamera}, "image");
+  std::string why;
+  auto picture = v.r.get().image(v.sensor, why);
+  if (!picture) throw std::runtime_error("camera '" + v.r.get().nodeName(v.sensor) + "' has no picture: " + why);
+  auto* keep = new std::shared_ptr<const sensors::Image>(picture);
+  py::capsule owner(keep, [](void* p) { delete static_cast<std::shared_ptr<const sensors::Image>*>(p); });
+  const auto h = static_cast<py::ssize_t>(picture->height), w = static_cast<py::ssize_t>(picture->width);
+  py::array out;
+  if (!picture->depth.empty()) {
+    out = py::array_t<float>({h, w}, picture->depth.data(), owner);
+  } else {
+    out = py::array_t<std::uint8_t>({h, w, py::ssize_t{3}}, picture->rgb.data(), owner);
+  }
+  out.attr("flags").attr("writeable") = false;
+  return out;
+}
+
 py::object sensorView(const SlotView& s, const std::string& path) {
   const scene::Node* sensor = s.r.get().plant() ? s.r.get().plant()->find(path) : nullptr;
   if (!sensor) throw py::attribute_error("sensor '" + path + "' is not in the scene");
@@ -760,6 +795,54 @@ class Geometries(list):
                                return h ? v.r.get().nodeView(h) : py::none();
                              },
                              "what a RangeFinder sees, or None")
+      .def_property_readonly("image", &pictureOf,
+                             "a ColorCamera's picture (height x width x 3 bytes, NumPy) or a DepthCamera's "
+                             "(height x width metres), at its latest sample; read-only")
+      .def_property_readonly("ranges",
+                             [](const SensorView& v) {
+                               measuring(v, {scene::NodeKind::LaserScan}, "ranges");
+                               const auto& x = v.r.get().reading(v.sensor).values;
+                               return py::array_t<double>(static_cast<py::ssize_t>(x.size()), x.data());
+                             },
+                             "a LaserScan's distances, m, one per ray (NumPy)")
+      .def_property_readonly("forces",
+                             [](const SensorView& v) {
+                               measuring(v, {scene::NodeKind::Contact}, "forces");
+                               return v.r.get().reading(v.sensor).values;
+                             },
+                             "a Contact's normal force from each of its items, N")
+      .def_property_readonly("acceleration",
+                             [](const SensorView& v) {
+                               measuring(v, {scene::NodeKind::Imu}, "acceleration");
+                               return tupleOf(v.r.get().reading(v.sensor).linear);
+                             },
+                             "an Imu's acceleration less gravity, m/s^2, in its frame (at rest: -gravity)")
+      .def_property_readonly("angular_velocity",
+                             [](const SensorView& v) {
+                               measuring(v, {scene::NodeKind::Imu}, "angular_velocity");
+                               const auto w = v.r.get().reading(v.sensor).angular;
+                               const bool deg = v.r.get().angles() == scene::AngleUnit::Degrees;
+                               return tupleOf(deg ? w * core::degrees(1.0) : w);
+                             },
+                             "an Imu's angular velocity in its frame, deg/s (rad/s with angles: radians)")
+      .def_property_readonly("force",
+                             [](const SensorView& v) {
+                               measuring(v, {scene::NodeKind::ForceTorque}, "force");
+                               return tupleOf(v.r.get().reading(v.sensor).linear);
+                             },
+                             "a ForceTorque's force on the body below its joint, N, in its frame")
+      .def_property_readonly("torque",
+                             [](const SensorView& v) {
+                               measuring(v, {scene::NodeKind::ForceTorque}, "torque");
+                               return tupleOf(v.r.get().reading(v.sensor).angular);
+                             },
+                             "a ForceTorque's torque about its origin, N m, in its frame")
+      .def_property_readonly("position",
+                             [](const SensorView& v) {
+                               measuring(v, {scene::NodeKind::Gps}, "position");
+                               return tupleOf(v.r.get().reading(v.sensor).linear);
+                             },
+                             "a Gps's position: x, y, z m (world), or latitude, longitude (deg) and altitude (m)")
       .def("__len__", [](const SensorView& v) { return v.r.get().reading(v.sensor).items.size(); })
       .def("__contains__",
            [](const SensorView& v, const NodeView& n) {

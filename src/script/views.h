@@ -41,6 +41,8 @@ class Context {
   virtual scene::AngleUnit angles() const = 0;
   /// The reading of sensor node `sensor`.
   virtual const sensors::Reading& reading(scene::NodeHandle sensor) const = 0;
+  /// The picture of camera sensor `sensor` (rendered now if not yet); null with `why`.
+  virtual std::shared_ptr<const sensors::Image> image(scene::NodeHandle sensor, std::string& why) const = 0;
   /// `sim.params`: the model's parameters, read-only.
   virtual pybind11::object params() = 0;
 

@@ -3,10 +3,98 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gdpn/core/text.h"
 #include "gdpn/scene/actions.h"
+#include "gdpn/scene/terrain.h"
 
 namespace gdpn::sensors {
 namespace {
+
+using scene::NodeKind;
+namespace F = scene::field;
+
+/// A sensor's noise: standard deviation, bias and resolution, in its reading's units.
+struct Noise {
+  double sd = 0, bias = 0, resolution = 0;
+  [[nodiscard]] bool none() const { return sd == 0 && bias == 0 && resolution == 0; }
+};
+
+/// The noise fields, which each type declares in a row from its `noise`.
+template <scene::FieldId Id>
+Noise noiseFields(const scene::Node& n, Id noise) {
+  const auto at = [&](int k) { return n.number(static_cast<Id>(static_cast<int>(noise) + k)); };
+  return {at(0), at(1), at(2)};
+}
+
+Noise noiseOf(const scene::Node& n) {
+  switch (n.kind()) {
+    case NodeKind::RangeFinder: return noiseFields(n, F::RangeFinder::Noise);
+    case NodeKind::ColorCamera:
+    case NodeKind::DepthCamera: return noiseFields(n, F::ColorCamera::Noise);
+    case NodeKind::LaserScan: return noiseFields(n, F::LaserScan::Noise);
+    case NodeKind::Imu: return noiseFields(n, F::Imu::Noise);
+    case NodeKind::Gps: return noiseFields(n, F::Gps::Noise);
+    case NodeKind::Contact: return noiseFields(n, F::Contact::Noise);
+    case NodeKind::ForceTorque: return noiseFields(n, F::ForceTorque::Noise);
+    default: return {};
+  }
+}
+
+/// A sampled sensor's rate, Hz (0: every step).
+double rateOf(const scene::Node& n) {
+  switch (n.kind()) {
+    case NodeKind::ColorCamera:
+    case NodeKind::DepthCamera: return n.number(F::ColorCamera::Rate);
+    case NodeKind::LaserScan: return n.number(F::LaserScan::Rate);
+    case NodeKind::Imu: return n.number(F::Imu::Rate);
+    case NodeKind::Gps: return n.number(F::Gps::Rate);
+    case NodeKind::Contact: return n.number(F::Contact::Rate);
+    case NodeKind::ForceTorque: return n.number(F::ForceTorque::Rate);
+    default: return 0;
+  }
+}
+
+/// The directions of a LaserScan's rays in its frame: from min_angle to max_angle about +z,
+/// evenly, the last left out when the fan is a whole turn (it would repeat the first).
+std::vector<core::Vec3> fanOf(const scene::Node& n) {
+  const auto count = static_cast<std::size_t>(n.number(F::LaserScan::Count));
+  const double lo = n.number(F::LaserScan::MinAngle), hi = n.number(F::LaserScan::MaxAngle);
+  const bool turn = std::abs(std::abs(hi - lo) - 360.0) < 1e-9;
+  const double step = count < 2 ? 0.0 : (hi - lo) / static_cast<double>(turn ? count : count - 1);
+  std::vector<core::Vec3> dirs(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const double a = core::radians(lo + step * static_cast<double>(i));
+    dirs[i] = {std::cos(a), std::sin(a), 0};
+  }
+  return dirs;
+}
+
+/// A 64-bit hash of `text` (FNV-1a), to draw a sensor's own noise stream from its path.
+std::uint64_t hashOf(const std::string& text) {
+  std::uint64_t h = 1469598103934665603ULL;
+  for (char c : text) h = (h ^ static_cast<std::uint8_t>(c)) * 1099511628211ULL;
+  return h;
+}
+
+/// The Terrain a geodetic Gps reads: the one its `terrain` names, or the scene's first.
+const scene::Node* terrainOf(const scene::Scene& scene, const scene::Node& gps) {
+  const std::string& path = gps.text(F::Gps::Terrain);
+  if (!path.empty()) {
+    const scene::Node* t = scene.find(path);
+    return t && t->kind() == NodeKind::Terrain ? t : nullptr;
+  }
+  const scene::Node* first = nullptr;
+  scene::traverse(scene.root(), [&](scene::Node& n, const scene::TraversalState&) {
+    if (!first && n.kind() == NodeKind::Terrain) first = &n;
+  }, {}, scene::Templates::Skip);
+  return first;
+}
+
+std::unique_ptr<scene::Geodesy> geodesyOf(const scene::Node& terrain, const std::string& dir, std::string& why) {
+  const std::string& file = terrain.text(F::Terrain::File);
+  const std::string path = file.empty() || file[0] == '/' ? file : dir + "/" + file;
+  return scene::Geodesy::open(path, terrain.number(F::Terrain::Width), terrain.number(F::Terrain::Depth), why);
+}
 
 const scene::Node* bodyAbove(const scene::Node& n) {
   for (const scene::Node* p = n.parent(); p; p = p->parent()) {
@@ -52,9 +140,77 @@ core::Vec3 sample(const scene::Node& field, core::Vec3 p) {
 
 }  // namespace
 
-bool Hub::check(const scene::Scene& scene, core::Diagnostics& diags) {
+bool sampled(NodeKind kind) {
+  switch (kind) {
+    case NodeKind::ColorCamera:
+    case NodeKind::DepthCamera:
+    case NodeKind::LaserScan:
+    case NodeKind::Imu:
+    case NodeKind::Gps:
+    case NodeKind::Contact:
+    case NodeKind::ForceTorque: return true;
+    default: return false;
+  }
+}
+
+/// The georeferenced Terrain of geodetic Gps sensors, opened at their first sample.
+struct Hub::Geodetic {
+  const scene::Node* terrain = nullptr;
+  std::unique_ptr<scene::Geodesy> geodesy;
+};
+
+Hub::~Hub() = default;
+
+bool Hub::check(const scene::Scene& scene, core::Diagnostics& diags, const std::string& model_dir) {
   bool ok = true;
+  auto fail = [&](const core::SourceLoc& loc, const std::string& message) {
+    diags.error(loc, message);
+    ok = false;
+  };
   scene::traverse(scene.root(), [&](scene::Node& n, const scene::TraversalState&) {
+    switch (n.kind()) {
+      case NodeKind::Imu:
+      case NodeKind::Contact:
+        if (!bodyAbove(n)) {
+          fail(n.loc, std::string(n.kind() == NodeKind::Imu ? "an Imu feels the motion of" : "a Contact feels what touches") +
+                          " its body, but '" + n.path() + "' has no Body above it");
+        }
+        return;
+      case NodeKind::ForceTorque:
+        if (!n.parent() || n.parent()->kind() != NodeKind::Joint) {
+          fail(n.loc, "a ForceTorque reads the joint it sits in, but the parent of '" + n.path() + "' is no Joint");
+        }
+        return;
+      case NodeKind::ColorCamera:
+      case NodeKind::DepthCamera:
+        if (n.number(F::ColorCamera::Far) <= n.number(F::ColorCamera::Near)) {
+          const auto& at = n.fieldLoc(F::ColorCamera::Far).line ? n.fieldLoc(F::ColorCamera::Far) : n.loc;
+          fail(at, "camera '" + n.path() + "': far (" + core::formatDouble(n.number(F::ColorCamera::Far)) +
+                       " m) must lie beyond near (" + core::formatDouble(n.number(F::ColorCamera::Near)) + " m)");
+        }
+        return;
+      case NodeKind::LaserScan:
+        if (n.number(F::LaserScan::Count) > 1 && n.number(F::LaserScan::MinAngle) == n.number(F::LaserScan::MaxAngle)) {
+          const auto& at = n.fieldLoc(F::LaserScan::MaxAngle).line ? n.fieldLoc(F::LaserScan::MaxAngle) : n.loc;
+          fail(at, "laser scan '" + n.path() + "' has " + core::formatDouble(n.number(F::LaserScan::Count)) +
+                       " rays but no angle between min_angle and max_angle");
+        }
+        return;
+      case NodeKind::Gps: {
+        if (n.choice<scene::GpsFrame>(F::Gps::Frame) != scene::GpsFrame::Geodetic) return;
+        const scene::Node* t = terrainOf(scene, n);
+        const auto& at = n.fieldLoc(F::Gps::Frame).line ? n.fieldLoc(F::Gps::Frame) : n.loc;
+        std::string why;
+        if (!t) {
+          fail(at, "a geodetic Gps needs a georeferenced Terrain, but '" + n.path() + "' finds no Terrain" +
+                       (n.text(F::Gps::Terrain).empty() ? "" : " at '" + n.text(F::Gps::Terrain) + "'"));
+        } else if (!geodesyOf(*t, model_dir, why)) {
+          fail(at, "a geodetic Gps needs a georeferenced Terrain, but the file of '" + t->path() + "' cannot give latitudes: " + why);
+        }
+        return;
+      }
+      default: break;
+    }
     if (n.kind() != scene::NodeKind::GradientSensor) return;
     if (!bodyAbove(n)) {
       diags.error(n.loc, "a GradientSensor samples the field where its body is, but '" + n.path() +
@@ -72,11 +228,172 @@ bool Hub::check(const scene::Scene& scene, core::Diagnostics& diags) {
   return ok;
 }
 
-Hub::Hub(scene::Scene& scene, physics::World* world) : scene_(scene), world_(world) {
+Hub::Hub(scene::Scene& scene, physics::World* world, std::uint64_t seed) : scene_(scene), world_(world) {
   scene::traverse(scene_.root(), [&](scene::Node& n, const scene::TraversalState&) {
-    if (n.type().category == scene::Category::Sensor) entries_.push_back({&n, {}});
+    if (n.type().category == scene::Category::Sensor) {
+      Entry e;
+      e.node = &n;
+      e.noise.reseed(seed ^ hashOf(n.path()));
+      entries_.push_back(std::move(e));
+    }
+    if (n.kind() == NodeKind::World) gravity_ = n.vec3(F::World::Gravity);
   }, {}, scene::Templates::Skip);
   std::sort(entries_.begin(), entries_.end(), [](const Entry& a, const Entry& b) { return a.node->path() < b.node->path(); });
+  if (!world_) return;
+  // the physics keeps the forces that contact and force-torque sensors read, and only those
+  for (const auto& e : entries_) {
+    if (e.node->kind() == NodeKind::Contact) world_->watchContacts(*e.node);
+    if (e.node->kind() == NodeKind::ForceTorque && e.node->parent()) world_->watchJoint(*e.node->parent());
+  }
+}
+
+void Hub::track(Entry& e, double now) {
+  // the velocity of the Imu's point on its body, differenced over the step
+  const scene::Node* body = bodyAbove(*e.node);
+  core::Vec3 v, w;
+  if (world_ && body && world_->isBody(*body)) {
+    v = world_->pointVelocity(*body, e.node->world.position);
+    w = world_->angularVelocity(*body);
+  }
+  const double dt = now - last_now_;
+  e.acceleration = e.moved && dt > 0 ? (v - e.velocity) * (1.0 / dt) : core::Vec3{};
+  // the change of velocity over the step belongs to the middle of the step: seen in the
+  // frame the sensor had then (on a turntable, the chord's direction)
+  const core::Quat now_rot = e.node->world.rotation;
+  const core::Quat last = e.moved ? e.rotation : now_rot;
+  const double sign = last.w * now_rot.w + last.x * now_rot.x + last.y * now_rot.y + last.z * now_rot.z < 0 ? -1.0 : 1.0;
+  core::Quat mid{last.w + sign * now_rot.w, last.x + sign * now_rot.x, last.y + sign * now_rot.y, last.z + sign * now_rot.z};
+  const double norm = std::sqrt(mid.w * mid.w + mid.x * mid.x + mid.y * mid.y + mid.z * mid.z);
+  e.middle = norm > 0 ? core::Quat{mid.w / norm, mid.x / norm, mid.y / norm, mid.z / norm} : now_rot;
+  e.rotation = now_rot;
+  e.velocity = v;
+  e.spin = w;
+  e.moved = true;
+}
+
+void Hub::addNoise(Entry& e, double* x, std::size_t n) {
+  const Noise noise = noiseOf(*e.node);
+  if (noise.none()) return;
+  for (std::size_t i = 0; i < n; ++i) {
+    double v = x[i] + noise.bias;
+    if (noise.sd > 0) v += e.noise.normal(0.0, noise.sd);
+    if (noise.resolution > 0) v = std::round(v / noise.resolution) * noise.resolution;
+    x[i] = v;
+  }
+}
+
+void Hub::measure(Entry& e, Reading& next) {
+  const scene::Node& n = *e.node;
+  const core::Quat to_local = n.world.rotation.conjugate();
+  switch (n.kind()) {
+    case NodeKind::ColorCamera:
+    case NodeKind::DepthCamera:
+      next.value = static_cast<double>(e.samples);
+      e.image.reset();  // rendered when read
+      return;
+    case NodeKind::LaserScan: {
+      auto dirs = fanOf(n);
+      for (auto& d : dirs) d = n.world.rotation.rotate(d);
+      std::vector<scene::NodeHandle> hits;
+      const double length = n.number(F::LaserScan::Length);
+      if (world_) {
+        world_->castRays(n, n.choice<scene::Scope>(F::LaserScan::Scope), n.world.position, dirs, length, next.values, hits);
+      } else {
+        next.values.assign(dirs.size(), length);
+      }
+      addNoise(e, next.values.data(), next.values.size());
+      next.value = next.values.empty() ? length : *std::min_element(next.values.begin(), next.values.end());
+      return;
+    }
+    case NodeKind::Imu: {
+      // what an accelerometer feels: its acceleration less gravity; both in its frame
+      double x[6] = {};
+      const core::Vec3 a = e.middle.conjugate().rotate(e.acceleration - gravity_), w = to_local.rotate(e.spin);
+      x[0] = a.x, x[1] = a.y, x[2] = a.z;
+      x[3] = core::degrees(w.x), x[4] = core::degrees(w.y), x[5] = core::degrees(w.z);
+      addNoise(e, x, 6);
+      next.linear = {x[0], x[1], x[2]};
+      next.angular = {core::radians(x[3]), core::radians(x[4]), core::radians(x[5])};
+      next.value = static_cast<double>(e.samples);
+      return;
+    }
+    case NodeKind::Gps: {
+      core::Vec3 p = n.world.position;
+      const bool geodetic = n.choice<scene::GpsFrame>(F::Gps::Frame) == scene::GpsFrame::Geodetic;
+      if (geodetic) {
+        if (!geodetic_) {
+          geodetic_ = std::make_unique<Geodetic>();
+          geodetic_->terrain = terrainOf(scene_, n);
+          std::string why;
+          if (geodetic_->terrain) geodetic_->geodesy = geodesyOf(*geodetic_->terrain, model_dir_, why);
+        }
+        if (geodetic_->terrain) p = geodetic_->terrain->world.inverse().apply(p);
+      }
+      double x[3] = {p.x, p.y, p.z};
+      addNoise(e, x, 3);
+      next.linear = {x[0], x[1], x[2]};
+      double lat = 0, lon = 0;
+      if (geodetic && geodetic_->geodesy && geodetic_->geodesy->toGeodetic(x[0], x[1], lat, lon)) next.linear = {lat, lon, x[2]};
+      next.value = static_cast<double>(e.samples);
+      return;
+    }
+    case NodeKind::Contact: {
+      next.items.clear();
+      next.values.clear();
+      if (world_) {
+        for (const auto& t : world_->touches(n)) {
+          next.items.push_back(t.other);
+          next.values.push_back(t.normal_force);
+        }
+      }
+      addNoise(e, next.values.data(), next.values.size());
+      next.value = 0;
+      for (double f : next.values) next.value += f;
+      return;
+    }
+    case NodeKind::ForceTorque: {
+      core::Vec3 f, t;
+      if (world_ && n.parent()) world_->jointWrench(*n.parent(), n.world.position, f, t);
+      f = to_local.rotate(f);
+      t = to_local.rotate(t);
+      double x[6] = {f.x, f.y, f.z, t.x, t.y, t.z};
+      addNoise(e, x, 6);
+      next.linear = {x[0], x[1], x[2]};
+      next.angular = {x[3], x[4], x[5]};
+      next.value = next.linear.length();
+      return;
+    }
+    default: return;
+  }
+}
+
+std::shared_ptr<const Image> Hub::image(scene::NodeHandle camera, std::string& why) {
+  Entry* e = find(camera);
+  if (!e || (e->node->kind() != NodeKind::ColorCamera && e->node->kind() != NodeKind::DepthCamera)) {
+    why = "it is no camera";
+    return nullptr;
+  }
+  if (e->image) return e->image;
+  if (!imager_) {
+    why = "this run renders no camera pictures";
+    return nullptr;
+  }
+  auto picture = std::make_shared<Image>();
+  if (!imager_->render(scene_, *e->node, *picture, why)) return nullptr;
+  const Noise noise = noiseOf(*e->node);
+  if (!noise.none()) {
+    if (e->node->kind() == NodeKind::DepthCamera) {
+      std::vector<double> d(picture->depth.begin(), picture->depth.end());
+      addNoise(*e, d.data(), d.size());
+      for (std::size_t i = 0; i < d.size(); ++i) picture->depth[i] = static_cast<float>(d[i]);
+    } else {
+      std::vector<double> c(picture->rgb.begin(), picture->rgb.end());
+      addNoise(*e, c.data(), c.size());
+      for (std::size_t i = 0; i < c.size(); ++i) picture->rgb[i] = static_cast<std::uint8_t>(std::clamp(std::round(c[i]), 0.0, 255.0));
+    }
+  }
+  e->image = std::move(picture);
+  return e->image;
 }
 
 Hub::Entry* Hub::find(scene::NodeHandle h) {
@@ -112,8 +429,25 @@ const Reading& Hub::reading(scene::NodeHandle sensor) const {
   return none;
 }
 
-bool Hub::read(const Entry& e, double now, const std::vector<const InputEvent*>& due, Reading& next) const {
+bool Hub::read(Entry& e, double now, const std::vector<const InputEvent*>& due, Reading& next) {
   switch (e.node->kind()) {
+    case NodeKind::ColorCamera:
+    case NodeKind::DepthCamera:
+    case NodeKind::LaserScan:
+    case NodeKind::Imu:
+    case NodeKind::Gps:
+    case NodeKind::Contact:
+    case NodeKind::ForceTorque: {
+      if (e.node->kind() == NodeKind::Imu) track(e, now);
+      // a sample at 0, 1/rate, 2/rate, ... s (every step at rate 0)
+      const double rate = rateOf(*e.node);
+      const auto due_samples = rate > 0 ? static_cast<std::uint64_t>(std::floor(now * rate + 1e-9)) + 1 : e.samples + 1;
+      next.active = due_samples > e.samples;
+      if (!next.active) return e.reading.active;
+      e.samples = due_samples;
+      measure(e, next);
+      return true;
+    }
     case scene::NodeKind::KeyboardSensor: {
       // it hears keys while the viewer is inside its parent's box
       const scene::Node* parent = e.node->parent();
@@ -178,6 +512,7 @@ bool Hub::read(const Entry& e, double now, const std::vector<const InputEvent*>&
       next.items = feel.items;
       next.hit = feel.hit;
       next.value = range ? feel.distance : static_cast<double>(next.items.size());
+      if (range) addNoise(e, &next.value, 1);
       next.active = range ? next.hit != 0 : !next.items.empty();
       return true;
     }
@@ -245,11 +580,14 @@ const std::vector<Change>& Hub::update(double now) {
               [&](auto a, auto b) { return pathOf(a) < pathOf(b); });
     const bool changed = !change.entered.empty() || !change.exited.empty() || next.value != e.reading.value ||
                          next.hit != e.reading.hit || !(next.vector == e.reading.vector) ||
-                         (next.active != e.reading.active && kind != scene::NodeKind::TimeSensor) ||
+                         next.values != e.reading.values || !(next.linear == e.reading.linear) ||
+                         !(next.angular == e.reading.angular) ||
+                         (next.active != e.reading.active && kind != scene::NodeKind::TimeSensor && !sampled(kind)) ||
                          (kind == scene::NodeKind::TimeSensor && next.active);
     e.reading = std::move(next);
     if (changed) changes_.push_back(std::move(change));
   }
+  last_now_ = now;
   return changes_;
 }
 

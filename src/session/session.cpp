@@ -1,5 +1,7 @@
 #include "gdpn/session/session.h"
 
+#include <filesystem>
+
 #include <algorithm>
 
 #include "gdpn/net/observer.h"
@@ -106,7 +108,12 @@ std::unique_ptr<Session> Session::create(model::Model model, core::Diagnostics& 
 }
 
 std::unique_ptr<model::Simulation> Session::make(const model::Model& model, core::Diagnostics& diags) {
-  return model::Simulation::create(model, diags, options_.seed, options_.script_timeout_s);
+  auto sim = model::Simulation::create(model, diags, options_.seed, options_.script_timeout_s);
+  if (sim && options_.imager && sim->hasCameras()) {
+    if (!imager_) imager_ = options_.imager(std::filesystem::path(model.path).parent_path().string());
+    sim->setImager(imager_);
+  }
+  return sim;
 }
 
 void Session::adopt(std::unique_ptr<model::Simulation> sim) {

@@ -15,7 +15,8 @@ TEST(NodeKinds, EveryKindHasItsTypeAndItsName) {
   const char* names[] = {"Group",    "Transform", "Material",      "Light",         "Camera",      "Fog",
                          "Cube",     "Sphere",    "Cylinder",      "Cone",          "Plane",       "Mesh",
                          "Terrain",  "World",     "Body",          "Joint",         "Conveyor",    "GradientField",
-                         "Region",   "RangeFinder", "GradientSensor", "KeyboardSensor", "MouseSensor", "TimeSensor"};
+                         "Region",   "RangeFinder", "GradientSensor", "KeyboardSensor", "MouseSensor", "TimeSensor",
+                         "ColorCamera", "DepthCamera", "LaserScan", "Imu", "Gps", "Contact", "ForceTorque"};
   static_assert(std::size(names) == kNodeKinds);
   for (std::size_t k = 0; k < kNodeKinds; ++k) {
     const NodeType* t = builtinTypes().find(static_cast<NodeKind>(k));
@@ -58,6 +59,14 @@ TEST(FieldIds, EnumWordsFollowTheirCxxEnums) {
     r->setValue(field::Region::Shape, std::string(word));
     EXPECT_EQ(r->choice<RegionShape>(field::Region::Shape), shape) << word;
   }
+  Node* g = s.create(*builtinTypes().find(NodeKind::Gps), "g", s.root());
+  g->setValue(field::Gps::Frame, std::string("geodetic"));
+  EXPECT_EQ(g->choice<GpsFrame>(field::Gps::Frame), GpsFrame::Geodetic);
+  // a DepthCamera reads the fields it takes from ColorCamera through their ids
+  Node* d = s.create(*builtinTypes().find(NodeKind::DepthCamera), "d", s.root());
+  EXPECT_EQ(d->number(field::ColorCamera::Far), 100.0);
+  EXPECT_EQ(builtinTypes().find(NodeKind::LaserScan)->fields[static_cast<std::size_t>(field::LaserScan::Resolution)]->name,
+            "resolution");
   const std::pair<const char*, Scope> scopes[] = {{"world", Scope::World}, {"siblings", Scope::Siblings}, {"parent", Scope::Parent}};
   for (const auto& [word, scope] : scopes) {
     r->setValue(field::Region::Scope, std::string(word));

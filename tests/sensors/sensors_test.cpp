@@ -6,25 +6,10 @@
 
 #include "gdpn/model/model.h"
 #include "gdpn/sensors/hub.h"
+#include "rig.h"
 
 namespace gdpn::sensors {
 namespace {
-
-struct Rig {
-  std::unique_ptr<scene::Scene> scene;
-  std::unique_ptr<physics::World> world;
-  std::unique_ptr<Hub> hub;
-  explicit Rig(const std::string& scene_text) {
-    core::Diagnostics diags;
-    auto m = model::parseModel("gdpn: 1\nscene:\n" + scene_text, "rig.gdpn.yaml", diags);
-    EXPECT_TRUE(m) << diags.str();
-    scene = m->scene->clone();
-    world = physics::World::create(*scene, ".", 1, diags);
-    EXPECT_TRUE(world) << diags.str();
-    hub = std::make_unique<Hub>(*scene, world.get());
-  }
-  scene::NodeHandle handle(const char* path) const { return scene->find(path)->handle(); }
-};
 
 TEST(Sensors, ABallDroppedThroughARegionEntersOnceAndExitsOnce) {
   Rig rig(R"(

@@ -128,6 +128,13 @@ class Simulation {
   [[nodiscard]] const net::Kernel& kernel() const { return *kernel_; }
   /// Statistics so far.
   [[nodiscard]] const net::StatsCollector& stats() const { return *stats_; }
+  /// What renders camera sensors' pictures when a script reads them (the application's: the
+  /// model knows nothing of OpenGL). Without one, reading a picture is a script error.
+  void setImager(std::shared_ptr<sensors::Imager> imager) {
+    if (hub_) hub_->setImager(std::move(imager));
+  }
+  /// True when the scene has a ColorCamera or DepthCamera (an imager is worth making).
+  [[nodiscard]] bool hasCameras() const;
   /// The seed in use.
   [[nodiscard]] std::uint64_t seed() const { return seed_; }
   /// Keeps `plan` for the report and lets its round trips watch the run (before it starts).

@@ -68,6 +68,8 @@ class World {
   [[nodiscard]] bool isBody(const scene::Node& node) const;
   /// A body's linear velocity, m/s (world frame).
   [[nodiscard]] core::Vec3 velocity(const scene::Node& body) const;
+  /// The velocity of the world point `at` (m) moving with the body `body` belongs to, m/s.
+  [[nodiscard]] core::Vec3 pointVelocity(const scene::Node& body, core::Vec3 at) const;
   /// The mass of the body `body` belongs to, kg.
   [[nodiscard]] double mass(const scene::Node& body) const;
   /// A body's angular velocity, rad/s (world frame).
@@ -113,6 +115,33 @@ class World {
   /// Evaluates every Region and RangeFinder of the scene; `out` gets one entry per sensor node
   /// (by handle). Cost grows with the pairs that overlap, not with sensors times bodies.
   void sense(std::vector<std::pair<scene::NodeHandle, Feel>>& out);
+
+  /// Distances along rays from `from` (world, m) in each direction of `dirs` (unit, world), as
+  /// far as `length` m, seeing what `sensor`'s `scope` lets it see: `distance[i]` is the
+  /// first hit's distance (`length` where nothing is hit), `hit[i]` the body or static shape
+  /// hit (0: none). One query of the shapes near the fan, then a ray test per ray and shape.
+  void castRays(const scene::Node& sensor, scene::Scope scope, core::Vec3 from, const std::vector<core::Vec3>& dirs,
+                double length, std::vector<double>& distance, std::vector<scene::NodeHandle>& hit);
+
+  /// What touches a watched body: the body (or static shape) on the other side and the sum,
+  /// over the contact points, of the normal force it exerts there, N, averaged over the last
+  /// step's sub-steps.
+  struct Touch {
+    scene::NodeHandle other = 0;  ///< the body or static shape touching
+    double normal_force = 0;      ///< N
+  };
+  /// Keeps the contact forces on the body that `node` belongs to from now on (a Contact
+  /// sensor's body); false when it belongs to no body of this world.
+  bool watchContacts(const scene::Node& node);
+  /// What touched the body of `node` in the last step (watched with watchContacts), in the
+  /// order of the others' paths.
+  [[nodiscard]] std::vector<Touch> touches(const scene::Node& node) const;
+  /// Keeps the force and torque of Joint node `joint` from now on; false when it is no joint
+  /// of this world.
+  bool watchJoint(const scene::Node& joint);
+  /// The force (N) and torque (N m, about the world point `at`) that watched joint `joint`
+  /// applies to the body below it, world frame, averaged over the last step's sub-steps.
+  void jointWrench(const scene::Node& joint, core::Vec3 at, core::Vec3& force, core::Vec3& torque) const;
 
   /// A point where two shapes touch.
   struct Contact {

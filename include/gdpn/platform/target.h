@@ -20,6 +20,8 @@ class Target {
   void bind();
   /// The picture, RGB, top row first (3 bytes per pixel).
   [[nodiscard]] std::vector<std::uint8_t> readRgb();
+  /// The depth buffer, top row first, each in [0, 1] (a target of one sample only).
+  [[nodiscard]] std::vector<float> readDepth();
   /// Pixels across.
   [[nodiscard]] int width() const { return width_; }
   /// Pixels down.
@@ -29,6 +31,20 @@ class Target {
   int width_, height_, samples_;
   unsigned fbo_ = 0, color_ = 0, depth_ = 0;  // drawn into (multisampled when samples_ > 1)
   unsigned resolve_fbo_ = 0, resolve_color_ = 0;
+};
+
+/// Keeps the framebuffer bound and the viewport when made, and binds them again when gone:
+/// drawing offscreen in a context that another view draws in too (the IDE's window).
+class BindingKeeper {
+ public:
+  BindingKeeper();
+  ~BindingKeeper();
+  BindingKeeper(const BindingKeeper&) = delete;
+  BindingKeeper& operator=(const BindingKeeper&) = delete;
+
+ private:
+  int framebuffer_ = 0;
+  int viewport_[4] = {0, 0, 0, 0};
 };
 
 }  // namespace gdpn::platform

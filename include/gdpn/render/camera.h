@@ -22,9 +22,14 @@ struct Camera {
 /// The view of Camera node `camera` at time `t` seconds: its position and target in its
 /// parent's frame; an orbit camera turns about its target at its speed.
 Camera cameraOf(const scene::Node& camera, double t = 0.0);
+/// The view of ColorCamera or DepthCamera node `camera`: from its origin along its +x, +z up,
+/// its horizontal field of view over its width and height, its near and far.
+Camera sensorCamera(const scene::Node& camera);
+/// True for a ColorCamera or DepthCamera node.
+bool isCameraSensor(const scene::Node& n);
 /// A view from the south-east and above that frames every shape of `scene`.
 Camera framing(const scene::Scene& scene);
-/// The camera a picture uses: the Camera node at `path` (or the scene's first Camera when
+/// The camera a picture uses: the Camera node or camera sensor at `path` (or the scene's first Camera when
 /// `path` is empty, or a framing view when it has none). Null `error` means found; otherwise
 /// it says what is wrong.
 Camera chooseCamera(const scene::Scene& scene, const std::string& path, double t, std::string& error);

@@ -55,11 +55,25 @@ enum class GradientField : std::uint8_t { Width, Depth, Nx, Ny, Vectors };
 /// Region.
 enum class Region : std::uint8_t { Shape, Size, Radius, Height, Length, Scope, Report };
 /// RangeFinder.
-enum class RangeFinder : std::uint8_t { Length, Scope };
+enum class RangeFinder : std::uint8_t { Length, Scope, Noise, Bias, Resolution };
 /// GradientSensor.
 enum class GradientSensor : std::uint8_t { Field };
 /// TimeSensor.
 enum class TimeSensor : std::uint8_t { Period, Offset };
+/// ColorCamera (and DepthCamera, which adds nothing).
+enum class ColorCamera : std::uint8_t { Width, Height, Fov, Near, Far, Rate, Noise, Bias, Resolution };
+/// DepthCamera: a ColorCamera's fields only.
+enum class DepthCamera : std::uint8_t {};
+/// LaserScan.
+enum class LaserScan : std::uint8_t { Count, MinAngle, MaxAngle, Length, Scope, Rate, Noise, Bias, Resolution };
+/// Imu.
+enum class Imu : std::uint8_t { Rate, Noise, Bias, Resolution };
+/// Gps.
+enum class Gps : std::uint8_t { Frame, Terrain, Rate, Noise, Bias, Resolution };
+/// Contact.
+enum class Contact : std::uint8_t { Rate, Noise, Bias, Resolution };
+/// ForceTorque.
+enum class ForceTorque : std::uint8_t { Rate, Noise, Bias, Resolution };
 
 /// The node kind that declares each field enum (found by overload resolution).
 constexpr NodeKind ownerOf(Transform) { return NodeKind::Transform; }
@@ -83,6 +97,13 @@ constexpr NodeKind ownerOf(Region) { return NodeKind::Region; }
 constexpr NodeKind ownerOf(RangeFinder) { return NodeKind::RangeFinder; }
 constexpr NodeKind ownerOf(GradientSensor) { return NodeKind::GradientSensor; }
 constexpr NodeKind ownerOf(TimeSensor) { return NodeKind::TimeSensor; }
+constexpr NodeKind ownerOf(ColorCamera) { return NodeKind::ColorCamera; }
+constexpr NodeKind ownerOf(DepthCamera) { return NodeKind::DepthCamera; }
+constexpr NodeKind ownerOf(LaserScan) { return NodeKind::LaserScan; }
+constexpr NodeKind ownerOf(Imu) { return NodeKind::Imu; }
+constexpr NodeKind ownerOf(Gps) { return NodeKind::Gps; }
+constexpr NodeKind ownerOf(Contact) { return NodeKind::Contact; }
+constexpr NodeKind ownerOf(ForceTorque) { return NodeKind::ForceTorque; }
 }  // namespace field
 
 /// A field id: any of the enums in `field`.
@@ -103,6 +124,8 @@ enum class RegionShape : std::uint8_t { Box, Sphere, Cylinder, Cone, Ray };
 enum class RegionReport : std::uint8_t { All, Bodies };
 /// Region and RangeFinder `scope`: what a sensor feels.
 enum class Scope : std::uint8_t { World, Siblings, Parent };
+/// Gps `frame`: metres in the world, or latitude, longitude and altitude.
+enum class GpsFrame : std::uint8_t { World, Geodetic };
 /// Light `kind`.
 enum class LightKind : std::uint8_t { Directional, Point, Spot };
 /// Camera `kind`.

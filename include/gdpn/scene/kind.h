@@ -34,9 +34,16 @@ enum class NodeKind : std::uint8_t {
   KeyboardSensor,  ///< hears keys
   MouseSensor,     ///< feels clicks
   TimeSensor,      ///< ticks at a period
+  ColorCamera,     ///< an RGB image, rendered when read
+  DepthCamera,     ///< an image of distances, rendered when read
+  LaserScan,       ///< distances along a fan of rays
+  Imu,             ///< acceleration and angular velocity of its body
+  Gps,             ///< the position of its node
+  Contact,         ///< what touches its body, and how hard
+  ForceTorque,     ///< the force and torque of its joint
 };
 
 /// The number of node kinds.
-inline constexpr std::size_t kNodeKinds = static_cast<std::size_t>(NodeKind::TimeSensor) + 1;
+inline constexpr std::size_t kNodeKinds = static_cast<std::size_t>(NodeKind::ForceTorque) + 1;
 
 }  // namespace gdpn::scene

@@ -63,6 +63,8 @@ struct EngineCallbacks {
   std::function<void(scene::Node&)> erase;
   /// the current reading of a sensor node
   std::function<const sensors::Reading&(scene::NodeHandle)> reading;
+  /// the picture of a camera sensor at its latest sample (null with why when there is none)
+  std::function<std::shared_ptr<const sensors::Image>(scene::NodeHandle, std::string&)> image;
 };
 
 /// Why the engine halted.

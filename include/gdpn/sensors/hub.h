@@ -4,10 +4,14 @@
 /// step: items that entered or left a Region, a RangeFinder's new distance, a TimeSensor's
 /// tick. Regions and range finders are felt through the physics.
 
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
+
+#include "gdpn/core/random.h"
 
 #include "gdpn/core/diagnostics.h"
 #include "gdpn/physics/world.h"
@@ -24,8 +28,35 @@ struct Reading {
   std::vector<std::string> keys;         ///< KeyboardSensor: the keys held down now
   std::string key;                       ///< KeyboardSensor: the key of the latest event
   bool down = false;                     ///< KeyboardSensor: whether that event pressed it
-  /// Region: something is inside; RangeFinder: it sees something; TimeSensor: it ticked now.
+  /// Region: something is inside; RangeFinder: it sees something; TimeSensor: it ticked now;
+  /// a sensor with a rate (cameras, LaserScan, Imu, Gps, Contact, ForceTorque): it took a
+  /// sample now.
   bool active = false;
+  /// LaserScan: metres along each ray (its length where nothing is hit); Contact: the normal
+  /// force of each item, N.
+  std::vector<double> values;
+  /// Imu: acceleration less gravity, m/s^2 (its frame); ForceTorque: force, N (its frame);
+  /// Gps: position, m (world), or latitude, longitude (deg) and altitude (m).
+  core::Vec3 linear;
+  /// Imu: angular velocity, rad/s (its frame); ForceTorque: torque about its origin, N m (its frame).
+  core::Vec3 angular;
+};
+
+/// A camera's picture: RGB bytes (ColorCamera) or distances (DepthCamera), top row first.
+struct Image {
+  int width = 0;                   ///< pixels
+  int height = 0;                  ///< pixels
+  std::vector<std::uint8_t> rgb;   ///< ColorCamera: 3 bytes per pixel
+  std::vector<float> depth;        ///< DepthCamera: metres along the view axis per pixel (`far` where nothing is)
+};
+
+/// What renders a camera sensor's picture of the scene as it stands (the render module's, set
+/// by the application: the sensors know nothing of OpenGL).
+class Imager {
+ public:
+  virtual ~Imager() = default;
+  /// Renders ColorCamera or DepthCamera node `camera` of `scene` into `out`; false with `why`.
+  virtual bool render(const scene::Scene& scene, const scene::Node& camera, Image& out, std::string& why) = 0;
 };
 
 /// An input event of a headless run (from `gdpn run --input`; later from the IDE).
@@ -49,12 +80,27 @@ struct Change {
 /// Keeps the readings of every sensor node of a scene.
 class Hub {
  public:
-  /// Finds the sensors of `scene`; `world` feels Regions and RangeFinders (may be null when
-  /// the scene has none).
-  Hub(scene::Scene& scene, physics::World* world);
+  /// Finds the sensors of `scene`; `world` feels Regions, RangeFinders, laser scans, contacts
+  /// and joints (may be null when the scene has none). `seed`: the model's, from which each
+  /// sensor's noise gets a stream of its own (drawn from its path), so a sensor's noise does
+  /// not depend on which others are read.
+  Hub(scene::Scene& scene, physics::World* world, std::uint64_t seed = 1);
+  ~Hub();
+  Hub(const Hub&) = delete;
+  Hub& operator=(const Hub&) = delete;
   /// Reports sensors that cannot work, at their location: a GradientSensor with no Body
-  /// above it, or with no GradientField to read. False when there was one.
-  static bool check(const scene::Scene& scene, core::Diagnostics& diags);
+  /// above it, or with no GradientField to read; an Imu or Contact with no Body above it; a
+  /// ForceTorque whose parent is no Joint; a camera whose `far` is not beyond `near`; a
+  /// LaserScan with no angle between its rays; a geodetic Gps with no georeferenced Terrain.
+  /// `model_dir`: where the Terrain files are. False when there was one.
+  static bool check(const scene::Scene& scene, core::Diagnostics& diags, const std::string& model_dir = ".");
+  /// What renders camera pictures (none: reading one is an error that says so).
+  void setImager(std::shared_ptr<Imager> imager) { imager_ = std::move(imager); }
+  /// The picture of camera sensor `camera` at its latest sample, rendered now if it was not
+  /// yet (only pictures read are rendered); null with `why` when it cannot be.
+  std::shared_ptr<const Image> image(scene::NodeHandle camera, std::string& why);
+  /// Where the Terrain files of geodetic Gps sensors are found (the model's folder).
+  void setModelDir(std::string dir) { model_dir_ = std::move(dir); }
   /// Input events to deliver when their time comes (in time order).
   void setInput(std::vector<InputEvent> events) { input_ = std::move(events); next_input_ = 0; }
   /// One more input event, after the pending ones of the same or an earlier time.
@@ -72,12 +118,26 @@ class Hub {
 
  private:
   struct Entry {
-    scene::Node* node;
+    scene::Node* node = nullptr;
     Reading reading;
+    std::uint64_t samples = 0;         // samples taken (sensors with a rate)
+    core::Random noise;                // its own stream
+    core::Vec3 velocity, spin;         // Imu: its point's velocity (m/s), its body's (rad/s), world, last step
+    core::Vec3 acceleration;           // Imu: its point's, m/s^2 (world), over the last step
+    core::Quat rotation, middle;       // Imu: its rotation (world) at the last step, and halfway through the step
+    bool moved = false;                // Imu: velocity and spin hold a step's values
+    std::shared_ptr<const Image> image;  // cameras: the latest sample's picture, once read
   };
+  struct Geodetic;
+  // the numbers of a sample with its sensor's noise, bias and resolution
+  void addNoise(Entry& e, double* x, std::size_t n);
+  // an Imu's motion now, at time `now` (s)
+  void track(Entry& e, double now);
+  // the Imu's, Gps's, LaserScan's, Contact's and ForceTorque's reading now
+  void measure(Entry& e, Reading& next);
   Entry* find(scene::NodeHandle h);
   // the new reading of sensor `e` into `next`; false when it cannot have changed
-  bool read(const Entry& e, double now, const std::vector<const InputEvent*>& due, Reading& next) const;
+  bool read(Entry& e, double now, const std::vector<const InputEvent*>& due, Reading& next);
   scene::Scene& scene_;
   physics::World* world_;
   std::vector<Entry> entries_;  // in path order
@@ -87,6 +147,14 @@ class Hub {
   std::vector<InputEvent> input_;
   std::size_t next_input_ = 0;
   std::optional<core::Vec3> viewpoint_;
+  double last_now_ = 0;   // the time of the update before
+  core::Vec3 gravity_{0, 0, -9.81};  // the World node's, m/s^2
+  std::shared_ptr<Imager> imager_;
+  std::string model_dir_ = ".";
+  std::unique_ptr<Geodetic> geodetic_;  // the georeferenced Terrain of geodetic Gps sensors
 };
+
+/// True when sensor `kind` samples at a rate of its own (a `rate` field).
+bool sampled(scene::NodeKind kind);
 
 }  // namespace gdpn::sensors

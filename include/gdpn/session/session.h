@@ -26,6 +26,10 @@ namespace gdpn::session {
 struct SessionOptions {
   std::optional<std::uint64_t> seed;  ///< overrides the model's seed
   double script_timeout_s = 0.0;      ///< a script call running longer is stopped (0: never), seconds
+  /// Makes what renders camera sensors' pictures, given the model's folder; called once, at
+  /// the first simulation whose scene has a camera sensor (none: pictures are not rendered,
+  /// and a script that reads one fails saying so).
+  std::function<std::shared_ptr<sensors::Imager>(const std::string& model_dir)> imager;
 };
 
 /// What a breakpoint watches.
@@ -138,6 +142,7 @@ class Session {
  private:
   class Watcher;
   Session() = default;
+  std::shared_ptr<sensors::Imager> imager_;  // made at the first scene with a camera sensor
   std::unique_ptr<model::Simulation> make(const model::Model& model, core::Diagnostics& diags);
   void adopt(std::unique_ptr<model::Simulation> sim);
   void watch();                  // the watcher listens exactly while a breakpoint needs it

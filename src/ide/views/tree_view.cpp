@@ -43,6 +43,13 @@ ImVec4 colourOf(scene::NodeKind kind) {
     case K::GradientSensor:
     case K::KeyboardSensor:
     case K::MouseSensor:
+    case K::ColorCamera:
+    case K::DepthCamera:
+    case K::LaserScan:
+    case K::Imu:
+    case K::Gps:
+    case K::Contact:
+    case K::ForceTorque:
     case K::TimeSensor: return {0.40F, 0.92F, 0.90F, 1.0F};
   }
   return {1, 1, 1, 1};

@@ -1,0 +1,46 @@
+#pragma once
+/// \file
+/// Pictures for camera sensors during a run: ColorCamera and DepthCamera nodes rendered
+/// offscreen through the renderer, in a headless context of their own (EGL; llvmpipe when
+/// there is no GPU), made at the first picture asked for.
+
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+
+#include "gdpn/platform/gl_context.h"
+#include "gdpn/platform/target.h"
+#include "gdpn/render/renderer.h"
+#include "gdpn/sensors/hub.h"
+
+namespace gdpn::capture {
+
+/// Renders camera sensors' pictures (sensors::Imager) for a run.
+class SensorImager : public sensors::Imager {
+ public:
+  /// `model_dir`: where the scene's mesh and elevation files are. `own_context`: draw in a
+  /// headless context of its own, made at the first picture; otherwise in the context current
+  /// when asked (the IDE's), whose framebuffer binding and viewport are kept.
+  explicit SensorImager(std::string model_dir, bool own_context = true);
+  ~SensorImager() override;
+  SensorImager(const SensorImager&) = delete;
+  SensorImager& operator=(const SensorImager&) = delete;
+  /// The picture of `camera` as the scene stands: RGB bytes for a ColorCamera; for a
+  /// DepthCamera, metres along its view axis (`far` where nothing is within it). Lights,
+  /// materials and fog as drawn; no grid, no sensor overlays, no shadows.
+  bool render(const scene::Scene& scene, const scene::Node& camera, sensors::Image& out, std::string& why) override;
+  /// Pictures rendered so far.
+  [[nodiscard]] std::size_t pictures() const { return pictures_; }
+
+ private:
+  std::string model_dir_;
+  bool own_context_;
+  std::unique_ptr<platform::GlContext> context_;
+  std::unique_ptr<render::Renderer> renderer_;
+  std::map<std::pair<int, int>, std::unique_ptr<platform::Target>> targets_;  // by width and height
+  std::size_t pictures_ = 0;
+  std::string failed_;  // why the context could not be made (then asked no more)
+};
+
+}  // namespace gdpn::capture
