@@ -5,11 +5,11 @@
 
 namespace gdpn::capture {
 
-SensorImager::SensorImager(std::string model_dir, bool own_context)
-    : model_dir_(std::move(model_dir)), own_context_(own_context) {}
+SensorImager::SensorImager(std::string model_dir) : model_dir_(std::move(model_dir)) {}
 
 SensorImager::~SensorImager() {
-  // GPU objects go while their context is current
+  // GPU objects go while their context is current; the caller's is current again afterwards
+  const platform::KeptContext caller;
   if (context_) context_->makeCurrent();
   targets_.clear();
   renderer_.reset();
@@ -20,17 +20,19 @@ bool SensorImager::render(const scene::Scene& scene, const scene::Node& camera, 
     why = failed_;
     return false;
   }
-  if (own_context_ && !context_) {
+  // the caller's context (a picture or a movie being made) is current again afterwards
+  const platform::KeptContext caller;
+  if (!context_) {
     context_ = platform::createHeadlessContext(failed_);
     if (!context_) {
       failed_ = "no OpenGL context for camera pictures: " + failed_;
       why = failed_;
       return false;
     }
+    context_->makeCurrent();
+    renderer_ = std::make_unique<render::Renderer>(model_dir_);
   }
-  if (context_) context_->makeCurrent();
-  if (!renderer_) renderer_ = std::make_unique<render::Renderer>(model_dir_);
-  const platform::BindingKeeper keep;
+  context_->makeCurrent();
   using F = scene::field::ColorCamera;
   const int w = static_cast<int>(camera.number(F::Width)), h = static_cast<int>(camera.number(F::Height));
   auto& target = targets_[{w, h}];

@@ -26,6 +26,14 @@ class HeadlessContext final : public GlContext {
 
 }  // namespace
 
+KeptContext::KeptContext()
+    : display_(eglGetCurrentDisplay()), context_(eglGetCurrentContext()), draw_(eglGetCurrentSurface(EGL_DRAW)),
+      read_(eglGetCurrentSurface(EGL_READ)) {}
+
+KeptContext::~KeptContext() {
+  if (context_ != EGL_NO_CONTEXT && display_ != EGL_NO_DISPLAY) eglMakeCurrent(display_, draw_, read_, context_);
+}
+
 std::unique_ptr<GlContext> createHeadlessContext(std::string& why) {
   // surfaceless: the default display needs an X or Wayland server, this one needs nothing
   EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);

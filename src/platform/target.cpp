@@ -59,16 +59,6 @@ std::vector<std::uint8_t> Target::readRgb() {
   return flipped;
 }
 
-BindingKeeper::BindingKeeper() {
-  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer_);
-  glGetIntegerv(GL_VIEWPORT, viewport_);
-}
-
-BindingKeeper::~BindingKeeper() {
-  glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer_));
-  glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
-}
-
 std::vector<float> Target::readDepth() {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
   glPixelStorei(GL_PACK_ALIGNMENT, 4);

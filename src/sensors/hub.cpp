@@ -69,13 +69,6 @@ std::vector<core::Vec3> fanOf(const scene::Node& n) {
   return dirs;
 }
 
-/// A 64-bit hash of `text` (FNV-1a), to draw a sensor's own noise stream from its path.
-std::uint64_t hashOf(const std::string& text) {
-  std::uint64_t h = 1469598103934665603ULL;
-  for (char c : text) h = (h ^ static_cast<std::uint8_t>(c)) * 1099511628211ULL;
-  return h;
-}
-
 /// The Terrain a geodetic Gps reads: the one its `terrain` names, or the scene's first.
 const scene::Node* terrainOf(const scene::Scene& scene, const scene::Node& gps) {
   const std::string& path = gps.text(F::Gps::Terrain);
@@ -233,7 +226,7 @@ Hub::Hub(scene::Scene& scene, physics::World* world, std::uint64_t seed) : scene
     if (n.type().category == scene::Category::Sensor) {
       Entry e;
       e.node = &n;
-      e.noise.reseed(seed ^ hashOf(n.path()));
+      e.noise.reseed(seed ^ core::fnv1a(n.path()));
       entries_.push_back(std::move(e));
     }
     if (n.kind() == NodeKind::World) gravity_ = n.vec3(F::World::Gravity);

@@ -8,6 +8,8 @@
 
 #include "../sensors/rig.h"
 #include "gdpn/capture/sensor_imager.h"
+#include "gdpn/platform/headless_context.h"
+#include "gdpn/render/renderer.h"
 
 namespace gdpn::sensors {
 namespace {
@@ -90,6 +92,29 @@ TEST(CameraSensor, APictureIsRenderedOnlyWhenReadAndOncePerSample) {
     ASSERT_TRUE(rig.hub->image(rig.handle("eye"), why)) << why;  // read every step
   }
   EXPECT_EQ(imager->pictures(), 11u);  // one per sample: 1.0 (first read at 1.01 s) to 2.0 s
+}
+
+TEST(CameraSensor, TheCallersContextIsCurrentAgainAfterAPicture) {
+  // `gdpn render` and `gdpn record` draw in a context of their own while the run they film
+  // renders camera pictures in the imager's: a picture must not take the caller's away
+  std::string why;
+  auto caller = platform::createHeadlessContext(why);
+  ASSERT_TRUE(caller) << why;
+  platform::Target target(8, 8, 1);
+  render::Renderer renderer(".");
+  render::DrawOptions o;
+  o.width = o.height = 8;
+  o.sky = o.grid = o.shadows = false;
+  Rig rig("  - ColorCamera: {name: eye, width: 8, height: 6}\n");
+  rig.hub->setImager(std::make_shared<capture::SensorImager>("."));
+  rig.hub->update(0);
+  ASSERT_TRUE(rig.hub->image(rig.handle("eye"), why)) << why;
+  target.bind();
+  renderer.draw(*rig.scene, render::Camera{}, o);
+  const auto rgb = target.readRgb();
+  EXPECT_EQ(rgb[0], 158);  // the background, 0.62 0.70 0.80
+  EXPECT_EQ(rgb[1], 178);
+  EXPECT_EQ(rgb[2], 204);
 }
 
 TEST(CameraSensor, WithoutAnImagerReadingAPictureSaysWhy) {

@@ -19,10 +19,10 @@ namespace gdpn::capture {
 /// Renders camera sensors' pictures (sensors::Imager) for a run.
 class SensorImager : public sensors::Imager {
  public:
-  /// `model_dir`: where the scene's mesh and elevation files are. `own_context`: draw in a
-  /// headless context of its own, made at the first picture; otherwise in the context current
-  /// when asked (the IDE's), whose framebuffer binding and viewport are kept.
-  explicit SensorImager(std::string model_dir, bool own_context = true);
+  /// `model_dir`: where the scene's mesh and elevation files are. Pictures are drawn in a
+  /// headless context of its own, made at the first picture; the caller's context is current
+  /// again after each.
+  explicit SensorImager(std::string model_dir);
   ~SensorImager() override;
   SensorImager(const SensorImager&) = delete;
   SensorImager& operator=(const SensorImager&) = delete;
@@ -35,7 +35,6 @@ class SensorImager : public sensors::Imager {
 
  private:
   std::string model_dir_;
-  bool own_context_;
   std::unique_ptr<platform::GlContext> context_;
   std::unique_ptr<render::Renderer> renderer_;
   std::map<std::pair<int, int>, std::unique_ptr<platform::Target>> targets_;  // by width and height

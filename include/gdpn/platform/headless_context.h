@@ -14,4 +14,20 @@ namespace gdpn::platform {
 /// EGL or the driver refuses.
 std::unique_ptr<GlContext> createHeadlessContext(std::string& why);
 
+/// Keeps the EGL context current on this thread when made (none is fine) and makes it current
+/// again when gone: drawing in a context of one's own without taking the caller's away.
+class KeptContext {
+ public:
+  KeptContext();
+  ~KeptContext();
+  KeptContext(const KeptContext&) = delete;
+  KeptContext& operator=(const KeptContext&) = delete;
+
+ private:
+  void* display_;
+  void* context_;
+  void* draw_;
+  void* read_;
+};
+
 }  // namespace gdpn::platform

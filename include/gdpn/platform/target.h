@@ -33,18 +33,4 @@ class Target {
   unsigned resolve_fbo_ = 0, resolve_color_ = 0;
 };
 
-/// Keeps the framebuffer bound and the viewport when made, and binds them again when gone:
-/// drawing offscreen in a context that another view draws in too (the IDE's window).
-class BindingKeeper {
- public:
-  BindingKeeper();
-  ~BindingKeeper();
-  BindingKeeper(const BindingKeeper&) = delete;
-  BindingKeeper& operator=(const BindingKeeper&) = delete;
-
- private:
-  int framebuffer_ = 0;
-  int viewport_[4] = {0, 0, 0, 0};
-};
-
 }  // namespace gdpn::platform
