@@ -117,6 +117,28 @@ TEST(CameraSensor, TheCallersContextIsCurrentAgainAfterAPicture) {
   EXPECT_EQ(rgb[2], 204);
 }
 
+TEST(CameraSensor, AContextDrawsOnAfterAnotherOnItsDisplayIsGone) {
+  // the imager's context and a picture's share EGL's one surfaceless display: whichever
+  // goes first must leave the display to the other
+  std::string why;
+  auto first = platform::createHeadlessContext(why);
+  ASSERT_TRUE(first) << why;
+  Rig rig("  - ColorCamera: {name: eye, width: 8, height: 6}\n");
+  auto imager = std::make_shared<capture::SensorImager>(".");
+  rig.hub->setImager(imager);
+  rig.hub->update(0);
+  const auto before = rig.hub->image(rig.handle("eye"), why);  // the imager's context is made
+  ASSERT_TRUE(before) << why;
+  const std::vector<std::uint8_t> sky = before->rgb;
+  ASSERT_NE(sky[0] + sky[1] + sky[2], 0);
+  first.reset();
+  rig.hub->update(1);
+  const auto after = rig.hub->image(rig.handle("eye"), why);
+  ASSERT_TRUE(after) << why;
+  EXPECT_EQ(after->rgb, sky);  // the same empty sky, not black
+  EXPECT_EQ(imager->pictures(), 2u);
+}
+
 TEST(CameraSensor, WithoutAnImagerReadingAPictureSaysWhy) {
   Rig rig("  - ColorCamera: {name: eye}\n");
   rig.hub->update(0);
