@@ -75,9 +75,7 @@ class Model {
     }
     auto m = model::loadModel(path_, diags, overrides);
     if (!m) raiseModelError(diags);
-    session_ = session::Session::create(std::move(*m), diags, {seed, script_timeout, [](const std::string& dir) {
-                                          return std::make_shared<capture::SensorImager>(dir);
-                                        }});
+    session_ = session::Session::create(std::move(*m), diags, {seed, script_timeout, capture::makeSensorImager});
     if (!session_) raiseModelError(diags);
     session_->traceTo(trace_);
     recordSignals();

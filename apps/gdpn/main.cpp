@@ -15,6 +15,7 @@
 #include <sstream>
 #include <iostream>
 #include <string_view>
+#include <tuple>
 #include <type_traits>
 
 #include "gdpn/core/file.h"
@@ -140,9 +141,7 @@ std::unique_ptr<gdpn::session::Session> open(const std::string& arg, std::option
   std::unique_ptr<gdpn::session::Session> sim;
   if (auto path = model::resolveModelPath(arg, diags)) {
     if (auto m = model::loadModel(*path, diags, paramOverrides(params))) {
-      sim = gdpn::session::Session::create(*m, diags, {seed, script_timeout_s, [](const std::string& dir) {
-                                                      return std::make_shared<gdpn::capture::SensorImager>(dir);
-                                                    }});
+      sim = gdpn::session::Session::create(*m, diags, {seed, script_timeout_s, gdpn::capture::makeSensorImager});
     }
   }
   diags.print(std::cerr);
@@ -232,7 +231,17 @@ int renderNet(const CaptureArgs& a) {
   return 0;
 }
 
-/// `gdpn render` (movie = false) and `gdpn record` (movie = true).
+/// The size of a movie is even on each side (ffmpeg's yuv420p); otherwise says so. `source`
+/// says where the size came from.
+bool evenSize(const gdpn::capture::CaptureOptions& o, const std::string& source) {
+  if (o.width % 2 == 0 && o.height % 2 == 0) return true;
+  std::cerr << "error: a movie needs an even width and height, not " << o.width << "x" << o.height << " (" << source
+            << ")\n";
+  return false;
+}
+
+/// `gdpn render` (movie = false) and `gdpn record` (movie = true). Without --size, a picture
+/// from a camera sensor takes the camera's own width and height, any other 1280x720.
 int capture(CaptureArgs a, bool movie) {
   const auto size = sizeArg(a.size);
   if (!size) {
@@ -240,10 +249,7 @@ int capture(CaptureArgs a, bool movie) {
   }
   a.options.width = size->first;
   a.options.height = size->second;
-  if (movie && (a.options.width % 2 != 0 || a.options.height % 2 != 0)) {
-    std::cerr << "error: a movie needs an even width and height, not " << quoteArg(a.size) << "\n";
-    return 2;
-  }
+  if (movie && a.size_given && !evenSize(a.options, "--size " + quoteArg(a.size))) return 2;
   if (overwritesInput("-o", a.out, {{"the model file", modelFile(a.model)}})) return 2;
   if (!movie && !a.out.ends_with(".png")) {
     std::cerr << "error: -o " << quoteArg(a.out) << ": a picture of the plant is written as .png (PNG data in a file "
@@ -252,6 +258,12 @@ int capture(CaptureArgs a, bool movie) {
   }
   auto session = open(a.model, a.seed, 0.0, a.params);
   if (!session) return 1;
+  if (const auto* plant = session->simulation().plant(); plant != nullptr && !a.size_given) {
+    if (const auto own = gdpn::capture::cameraSensorSize(*plant, a.options.camera)) {
+      std::tie(a.options.width, a.options.height) = *own;
+      if (movie && !evenSize(a.options, "the size of camera '" + a.options.camera + "'; give --size")) return 2;
+    }
+  }
   model::Simulation* sim = &session->simulation();
   if (a.quiet) sim->setLogEcho(false);
   std::string error;
@@ -899,7 +911,8 @@ int main(int argc, char** argv) {
       ->check(number(0.0, kMaxTime, "seconds from 0 to 1e9"));
   auto add_look = [&kSeed](CLI::App* cmd, CaptureArgs& args) {
     cmd->add_option("--camera", args.options.camera, "path of the Camera node (default: the scene's first, or a framing view)");
-    cmd->add_option("--size", args.size, "WIDTHxHEIGHT in pixels, each side 16 to 16384 (default 1280x720)");
+    cmd->add_option("--size", args.size,
+                    "WIDTHxHEIGHT in pixels, each side 16 to 16384 (default 1280x720, or a camera sensor's own size)");
     cmd->add_option("--samples", args.options.samples, "samples per pixel for anti-aliasing (default 4)")
         ->check(number(1, 16, "a whole number of samples from 1 to 16"));
     cmd->add_flag("--sensors", args.options.sensors, "draw sensor volumes and rays");
@@ -974,8 +987,14 @@ int main(int argc, char** argv) {
     render_args.size_given = render_cmd->get_option("--size")->count() > 0;
     return renderNet(render_args);
   }
-  if (render_cmd->parsed()) return capture(render_args, false);
-  if (record_cmd->parsed()) return capture(record_args, true);
+  if (render_cmd->parsed()) {
+    render_args.size_given = render_cmd->get_option("--size")->count() > 0;
+    return capture(render_args, false);
+  }
+  if (record_cmd->parsed()) {
+    record_args.size_given = record_cmd->get_option("--size")->count() > 0;
+    return capture(record_args, true);
+  }
   if (check_cmd->parsed()) return check(check_model, check_timeout, check_params);
   if (run_cmd->parsed()) return run(run_args);
   if (sweep_cmd->parsed()) {

@@ -13,6 +13,7 @@
 #include "gdpn/platform/headless_context.h"
 #include "gdpn/platform/png.h"
 #include "gdpn/platform/target.h"
+#include "gdpn/render/camera.h"
 #include "gdpn/render/renderer.h"
 
 namespace gdpn::capture {
@@ -32,6 +33,13 @@ std::optional<std::pair<int, int>> parseSize(const std::string& text) {
   const auto h = side(std::string_view(text).substr(x + 1));
   if (!w || !h) return std::nullopt;
   return std::pair{*w, *h};
+}
+
+std::optional<std::pair<int, int>> cameraSensorSize(const scene::Scene& scene, const std::string& camera) {
+  const scene::Node* n = camera.empty() ? nullptr : scene.find(camera);
+  if (n == nullptr || !render::isCameraSensor(*n)) return std::nullopt;
+  using F = scene::field::ColorCamera;
+  return std::pair{static_cast<int>(n->number(F::Width)), static_cast<int>(n->number(F::Height))};
 }
 
 namespace {

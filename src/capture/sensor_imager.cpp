@@ -69,4 +69,8 @@ bool SensorImager::render(const scene::Scene& scene, const scene::Node& camera, 
   return true;
 }
 
+std::shared_ptr<sensors::Imager> makeSensorImager(const std::string& model_dir) {
+  return std::make_shared<SensorImager>(model_dir);
+}
+
 }  // namespace gdpn::capture

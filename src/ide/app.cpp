@@ -42,9 +42,10 @@ Fonts loadFonts() {
   return f;
 }
 
-App::App(std::unique_ptr<Document> doc) : doc_(std::move(doc)), net_view_(std::make_unique<NetViewState>()) {
+App::App(std::unique_ptr<Document> doc, session::SessionOptions options)
+    : doc_(std::move(doc)), net_view_(std::make_unique<NetViewState>()) {
   core::Diagnostics diags;
-  (void)run_.open(*doc_, diags);
+  (void)run_.open(*doc_, diags, std::move(options));
   // the world view starts where the scene's first Camera looks (or a view that frames it)
   if (auto* s = doc_->scene()) {
     scene::updateTransforms(s->root());

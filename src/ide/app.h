@@ -88,8 +88,9 @@ struct Fonts {
 /// The IDE: the document, its run, the views' own state, and what they showed last frame.
 class App {
  public:
-  /// An IDE over `doc`; the run is made from it (compile errors go to the Diagnostics view).
-  explicit App(std::unique_ptr<Document> doc);
+  /// An IDE over `doc`; the run is made from it with `options` (the platform's imager of
+  /// camera sensors); compile errors go to the Diagnostics view.
+  explicit App(std::unique_ptr<Document> doc, session::SessionOptions options = {});
   ~App();
   App(const App&) = delete;
   App& operator=(const App&) = delete;

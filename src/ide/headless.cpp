@@ -13,6 +13,7 @@
 #include "app.h"
 #include "detail/frame_io.h"
 #include "detail/keys.h"
+#include "gdpn/capture/sensor_imager.h"
 #include "gdpn/platform/headless_context.h"
 #include "gdpn/platform/target.h"
 
@@ -169,7 +170,10 @@ int runHeadless(const IdeOptions& o, std::unique_ptr<Document> doc, const std::v
     return 1;
   }
   platform::Target target(o.width, o.height, 1);
-  App app(std::move(doc));
+  // camera sensors draw in an EGL context of their own; the frame's is current again after
+  session::SessionOptions run_options;
+  run_options.imager = capture::makeSensorImager;
+  App app(std::move(doc), std::move(run_options));
   app.autosave_seconds = o.autosave;
   setUpImGui(app);
   // ImGui's own keys (Enter ends a field, Tab moves on, the arrows move the cursor) by the

@@ -28,11 +28,12 @@ const char* runModeName(RunMode mode) {
   return "edit";
 }
 
-bool RunControl::open(Document& doc, core::Diagnostics& diags) {
+bool RunControl::open(Document& doc, core::Diagnostics& diags, session::SessionOptions options) {
   doc_ = &doc;
   revision_ = doc.revision();
   mode_ = RunMode::Edit;
-  session_ = session::Session::create(doc.snapshot(), diags);
+  options_ = std::move(options);
+  session_ = session::Session::create(doc.snapshot(), diags, options_);
   diags_ = diags;
   return session_ != nullptr;
 }
@@ -111,7 +112,7 @@ bool RunControl::reset(core::Diagnostics& diags) {
   rtf_ = 0.0;
   owed_ = 0.0;
   message_.clear();
-  if (!session_) return open(*doc_, diags);
+  if (!session_) return open(*doc_, diags, options_);
   bool ok = false;
   if (doc_->revision() != revision_) {
     // the document changed since the run was made: the run takes the edited model

@@ -11,6 +11,7 @@
 #include <iostream>
 
 #include "app.h"
+#include "gdpn/capture/sensor_imager.h"
 #include "detail/frame_io.h"
 #include "detail/platforms.h"
 
@@ -31,8 +32,18 @@ int runWindow(const IdeOptions& o, std::unique_ptr<Document> doc) {
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  // an EGL context, as camera sensors' pictures are drawn in one of their own (EGL
+  // surfaceless) and an EGL context is kept and made current again around each; a GLX
+  // context cannot be current on the thread at the same time, so a window that has no EGL
+  // falls back to the native API without camera pictures
+  glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_EGL_CONTEXT_API);
   const auto title = "gdpn ide - " + doc->model().path;
   GLFWwindow* window = glfwCreateWindow(o.width, o.height, title.c_str(), nullptr, nullptr);
+  const bool egl = window != nullptr;
+  if (!egl) {
+    glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_NATIVE_CONTEXT_API);
+    window = glfwCreateWindow(o.width, o.height, title.c_str(), nullptr, nullptr);
+  }
   if (window == nullptr) {
     std::cerr << "gdpn ide: error: cannot open a window with OpenGL 3.3\n";
     glfwTerminate();
@@ -43,7 +54,10 @@ int runWindow(const IdeOptions& o, std::unique_ptr<Document> doc) {
 
   int code = 0;
   {
-    App app(std::move(doc));
+    session::SessionOptions run_options;
+    if (egl) run_options.imager = capture::makeSensorImager;
+    else std::cerr << "gdpn ide: note: the window has no EGL context: camera sensors render no pictures\n";
+    App app(std::move(doc), std::move(run_options));
     app.autosave_seconds = o.autosave;
     setUpImGui(app);
     ImGui_ImplGlfw_InitForOpenGL(window, true);

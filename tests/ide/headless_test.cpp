@@ -95,6 +95,18 @@ TEST_F(HeadlessIde, RunForTenSecondsShowsTheArmAtWork) {
   EXPECT_NE(std::find(bold.begin(), bold.end(), "arm/turn"), bold.end());
 }
 
+TEST_F(HeadlessIde, ARunReadsCameraPicturesBesideTheFramesContext) {
+  // the vision example's camera is rendered in a context of its own while the IDE draws in
+  // the frame's: the boxes are classified, and the frame is drawn on
+  const auto r = replayOn("examples/vision", "- run: 7\n", "--screenshot '" + (dir_ / "shot.png").string() + "'");
+  EXPECT_EQ(r["run"]["message"], "") << r["run"]["message"];
+  EXPECT_DOUBLE_EQ(r["run"]["time"].get<double>(), 7.0);
+  EXPECT_NE(last_.out.find("[t=2.65] camera sees boxes/red_1/box as red"), std::string::npos) << last_.out;
+  EXPECT_NE(last_.out.find("[t=6.65] camera sees boxes/red_3/box as red"), std::string::npos) << last_.out;
+  EXPECT_GT(r["world"]["triangles"].get<int>(), 10);
+  EXPECT_GT(std::filesystem::file_size(dir_ / "shot.png"), 10000u);
+}
+
 TEST_F(HeadlessIde, SelectingAPlaceHighlightsEveryNodeTokenItHolds) {
   // P1 holds the arm's three joints as the model starts
   const auto r = replay("- select: factory/P1\n");

@@ -674,6 +674,30 @@ TEST(CliRender, APictureAMovieAndTheirMistakes) {
   EXPECT_NE(r.out.find("error: a movie needs an even width and height"), std::string::npos) << r.out;
 }
 
+TEST(CliRender, FromACameraSensorAtItsOwnSize) {
+  // without --size, a picture or a movie from a ColorCamera takes the camera's 64 x 48
+  const std::string png = temp("gdpn_cli_sensor.png"), mp4 = temp("gdpn_cli_sensor.mp4");
+  auto r = gdpn("render examples/vision --camera line/mast/cam --at 1 -q -o " + png);
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find(": 64x48 at t = 1 s"), std::string::npos) << r.out;
+  r = gdpn("record examples/vision --camera line/mast/cam --until 0.5 --fps 10 -q -o " + mp4);
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find(": 5 frames of 64x48 at 10 fps"), std::string::npos) << r.out;
+  r = gdpn("record examples/vision --camera line/mast/cam --until 0.5 --size 96x72 -q -o " + mp4);
+  EXPECT_NE(r.out.find("frames of 96x72"), std::string::npos) << r.out;
+  // an odd camera cannot be filmed at its own size: the error says where the size came from
+  const std::string odd = temp("gdpn_odd_camera.gdpn.yaml");
+  std::ofstream(odd) << "gdpn: 1\nscene:\n  - ColorCamera: {name: cam, width: 65, height: 48}\n  - Cube: {}\n";
+  r = gdpn("record " + odd + " --camera cam --until 0.5 -q -o " + mp4);
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("error: a movie needs an even width and height, not 65x48 (the size of camera 'cam'; give --size)"),
+            std::string::npos)
+      << r.out;
+  fs::remove(png);
+  fs::remove(mp4);
+  fs::remove(odd);
+}
+
 TEST(CliConvert, AMeshBecomesAModelWithItsSubtree) {
   const auto dir = fs::temp_directory_path() / "gdpn_cli_convert";
   fs::create_directories(dir);

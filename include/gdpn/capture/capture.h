@@ -33,6 +33,11 @@ inline constexpr int kMaxSide = 16384;
 /// kMinSide to kMaxSide around an 'x'.
 std::optional<std::pair<int, int>> parseSize(const std::string& text);
 
+/// The width and height in pixels of the ColorCamera or DepthCamera at `camera` in `scene`:
+/// the size a picture from it takes unless one is asked for; nullopt when `camera` names no
+/// camera sensor.
+std::optional<std::pair<int, int>> cameraSensorSize(const scene::Scene& scene, const std::string& camera);
+
 /// What a recording made.
 struct RecordResult {
   std::int64_t frames = 0;          ///< frames written

@@ -42,4 +42,7 @@ class SensorImager : public sensors::Imager {
   std::string failed_;  // why the context could not be made (then asked no more)
 };
 
+/// A SensorImager for the model in `model_dir`: what SessionOptions::imager takes.
+std::shared_ptr<sensors::Imager> makeSensorImager(const std::string& model_dir);
+
 }  // namespace gdpn::capture

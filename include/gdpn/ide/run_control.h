@@ -39,9 +39,10 @@ enum class RunMode : std::uint8_t { Edit, Running, Paused };
 /// The run of a document and its controls.
 class RunControl {
  public:
-  /// Makes the session from `doc` (which must outlive this). False with diagnostics when the
-  /// model does not compile; the controls then do nothing until a later rebuild() works.
-  bool open(Document& doc, core::Diagnostics& diags);
+  /// Makes the session from `doc` (which must outlive this), with `options` (the IDE's
+  /// platform gives the imager of camera sensors). False with diagnostics when the model does
+  /// not compile; the controls then do nothing until a later rebuild() works.
+  bool open(Document& doc, core::Diagnostics& diags, session::SessionOptions options = {});
 
   /// Starts running at `speed` (advance() takes the steps). In edit mode, a document edited since
   /// the run was made is compiled first (as by reset()); this and the controls below do nothing
@@ -109,6 +110,7 @@ class RunControl {
   core::Diagnostics diags_;  // what the last build of the run found
   Document* doc_ = nullptr;
   std::unique_ptr<session::Session> session_;
+  session::SessionOptions options_;  // how each session is made
   std::uint64_t revision_ = 0;  // the document's revision the session was made from
   RunMode mode_ = RunMode::Edit;
   RunSpeed speed_ = RunSpeed::RealTime;
