@@ -380,6 +380,7 @@ void Simulation::deleteNode(scene::Node& node) {
   kernel_->dropNodes([&](net::NodeRef r) { return gone.count(r) > 0; });
   scene::Node* up = node.parent();
   if (physics_) physics_->remove(node);
+  if (hub_) hub_->forget(node);
   scene_->destroy(node);
   // the Transform spawn made to hold a copy goes with it, once it holds nothing but the
   // Material carried for it, so that spawning and deleting for ever does not grow the scene

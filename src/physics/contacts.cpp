@@ -122,22 +122,36 @@ void World::Impl::nearCallback(void* data, dGeomID o1, dGeomID o2) {
 }
 
 void World::Impl::watchContact(dJointID c, const dContactGeom& g, dGeomID o1, dGeomID o2) {
-  // each side whose body is watched sees the other side's body, or the static shape
+  // each side whose body is watched sees the other side's body, or the static shape; where
+  // both are watched, both read the joint's one feedback (ODE keeps one per joint)
+  dJointFeedback* fb = nullptr;
   for (int side = 0; side < 2; ++side) {
     const dGeomID mine = side == 0 ? o1 : o2, theirs = side == 0 ? o2 : o1;
     const Surface s = surfaceOf(mine, *this), t = surfaceOf(theirs, *this);
     if (!s.node || !t.node) continue;
     Body* body = owner(*s.node);
     if (!body || !body->watched) continue;
-    contact_feedback.emplace_back();
-    dJointFeedback* fb = &contact_feedback.back();
-    dJointSetFeedback(c, fb);
+    if (fb == nullptr) {
+      fb = &contact_feedback.emplace_back();
+      dJointSetFeedback(c, fb);
+    }
     watched_contacts.push_back({body, reported(*t.node)->handle(), fb, Vec3{g.normal[0], g.normal[1], g.normal[2]}, side == 0});
   }
 }
 
 void World::Impl::gatherForces() {
+  // a watched body's touches are summed over the sub-steps its island was stepped in (awake
+  // after the step: ODE wakes an island when one of its bodies is awake, and steps no island
+  // it has just put to sleep); one asleep for a whole step keeps what it read before, so that
+  // a Contact sensor lets its body and what rests on it sleep
+  for (Body* b : watched_bodies) {
+    b->stepped = b->id && dBodyIsEnabled(b->id);
+    if (!b->stepped) continue;
+    if (b->sensed_substeps++ == 0) b->touches.clear();
+    b->touch_substeps = b->sensed_substeps;
+  }
   for (const auto& w : watched_contacts) {
+    if (!w.body->stepped) continue;
     const dReal* f = w.first ? w.feedback->f1 : w.feedback->f2;
     const double normal = std::abs(f[0] * w.normal.x + f[1] * w.normal.y + f[2] * w.normal.z);
     auto& t = w.body->touches;
@@ -165,11 +179,9 @@ namespace gdpn::physics {
 bool World::watchContacts(const Node& node) {
   Impl::Body* body = impl_->owner(node);
   if (!body || !body->id) return false;
+  if (!body->watched) impl_->watched_bodies.push_back(body);
   body->watched = true;
   impl_->watching_contacts = true;
-  // a sleeping pair makes no contacts: the watched body stays awake, and keeps what rests on it awake
-  dBodySetAutoDisableFlag(body->id, 0);
-  dBodyEnable(body->id);
   return true;
 }
 
@@ -177,7 +189,7 @@ std::vector<World::Touch> World::touches(const Node& node) const {
   std::vector<Touch> out;
   const Impl::Body* body = impl_->owner(node);
   if (!body) return out;
-  const double n = impl_->substeps;
+  const double n = body->touch_substeps;
   for (const auto& [other, sum] : body->touches) {
     if (impl_->scene.resolve(other)) out.push_back({other, sum / n});
   }

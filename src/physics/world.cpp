@@ -98,9 +98,7 @@ void World::Impl::step(double dt) {
   last_ode_message.clear();
   const double h = dt / substeps;
   driveMotors();
-  if (watching_contacts) {
-    for (auto& b : bodies) b.touches.clear();
-  }
+  for (Body* b : watched_bodies) b->sensed_substeps = 0;
   if (watching_joints) {
     for (auto& j : joints) j.force_sum = j.torque_sum = {};
   }

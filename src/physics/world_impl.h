@@ -79,6 +79,9 @@ struct World::Impl {
     /// While watched: the body or static shape on the other side of each contact of this
     /// step, and the sum of its normal forces over the sub-steps, N.
     std::vector<std::pair<scene::NodeHandle, double>> touches;
+    bool stepped = false;     ///< While watched: awake through this sub-step (its contacts bore forces)
+    int sensed_substeps = 0;  ///< While watched: this step's sub-steps it was stepped in
+    int touch_substeps = 1;   ///< While watched: the sub-steps `touches` sums over
   };
   /// A Joint node and its ODE joint, with the Enum fields read every step, cached.
   struct Joint {
@@ -133,6 +136,7 @@ struct World::Impl {
   bool record_contacts = false;          ///< keep the contact points of each sub-step (World::recordContacts)
   std::vector<World::Contact> touching;  ///< those of the last sub-step, while recording
   bool watching_contacts = false;        ///< some body is watched (World::watchContacts)
+  std::vector<Body*> watched_bodies;     ///< those bodies (in `bodies`, whose addresses stay)
   std::deque<dJointFeedback> contact_feedback;  ///< this sub-step's, for watched contacts (stable addresses)
   std::vector<WatchedContact> watched_contacts;  ///< this sub-step's
   bool watching_joints = false;          ///< some joint is watched (World::watchJoint)

@@ -68,7 +68,7 @@ std::vector<FieldDesc> noise(F id, const std::string& unit) {
 /// The sample rate of a sensor of `id`.
 template <FieldId F>
 FieldDesc rate(F id, double initial) {
-  return f(id, "rate", FieldKind::Float, initial, "Hz", "samples per second (0: one every step)", 0, kInf);
+  return f(id, "rate", FieldKind::Float, initial, "Hz", "samples per second (0: one every step)", 0, 1e6);
 }
 
 /// `a` with the fields of `b` after it.

@@ -797,7 +797,7 @@ class Geometries(list):
                              "what a RangeFinder sees, or None")
       .def_property_readonly("image", &pictureOf,
                              "a ColorCamera's picture (height x width x 3 bytes, NumPy) or a DepthCamera's "
-                             "(height x width metres), at its latest sample; read-only")
+                             "(height x width metres), rendered when first read after a sample, of the scene as it stands then; read-only")
       .def_property_readonly("ranges",
                              [](const SensorView& v) {
                                measuring(v, {scene::NodeKind::LaserScan}, "ranges");

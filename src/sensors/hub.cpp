@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_set>
 
 #include "gdpn/core/text.h"
 #include "gdpn/scene/actions.h"
@@ -146,11 +147,9 @@ bool sampled(NodeKind kind) {
   }
 }
 
-/// The georeferenced Terrain of geodetic Gps sensors, opened at their first sample.
-struct Hub::Geodetic {
-  const scene::Node* terrain = nullptr;
-  std::unique_ptr<scene::Geodesy> geodesy;
-};
+/// The largest far / near of a camera: at far = 1e5 near, a 24-bit depth buffer tells apart
+/// distances about 1/170 of the distance apart at far, 1/1,700 at a tenth of far.
+constexpr double kMaxDepthRange = 1e5;  // the message says 100,000
 
 Hub::~Hub() = default;
 
@@ -180,6 +179,13 @@ bool Hub::check(const scene::Scene& scene, core::Diagnostics& diags, const std::
           const auto& at = n.fieldLoc(F::ColorCamera::Far).line ? n.fieldLoc(F::ColorCamera::Far) : n.loc;
           fail(at, "camera '" + n.path() + "': far (" + core::formatDouble(n.number(F::ColorCamera::Far)) +
                        " m) must lie beyond near (" + core::formatDouble(n.number(F::ColorCamera::Near)) + " m)");
+        } else if (n.number(F::ColorCamera::Far) > kMaxDepthRange * n.number(F::ColorCamera::Near)) {
+          // a 24-bit depth buffer over near to far resolves about (distance^2 / near) / 2^24
+          const auto& at = n.fieldLoc(F::ColorCamera::Near).line ? n.fieldLoc(F::ColorCamera::Near) : n.loc;
+          fail(at, "camera '" + n.path() + "': far (" + core::formatDouble(n.number(F::ColorCamera::Far)) +
+                       " m) is more than 100,000 times near (" +
+                       core::formatDouble(n.number(F::ColorCamera::Near)) +
+                       " m), which leaves the depth buffer too few steps to tell distances apart: raise near");
         }
         return;
       case NodeKind::LaserScan:
@@ -222,6 +228,7 @@ bool Hub::check(const scene::Scene& scene, core::Diagnostics& diags, const std::
 }
 
 Hub::Hub(scene::Scene& scene, physics::World* world, std::uint64_t seed) : scene_(scene), world_(world) {
+  bool world_node = false;
   scene::traverse(scene_.root(), [&](scene::Node& n, const scene::TraversalState&) {
     if (n.type().category == scene::Category::Sensor) {
       Entry e;
@@ -229,9 +236,14 @@ Hub::Hub(scene::Scene& scene, physics::World* world, std::uint64_t seed) : scene
       e.noise.reseed(seed ^ core::fnv1a(n.path()));
       entries_.push_back(std::move(e));
     }
-    if (n.kind() == NodeKind::World) gravity_ = n.vec3(F::World::Gravity);
+    // the World the physics takes: the first
+    if (n.kind() == NodeKind::World && !world_node) {
+      gravity_ = n.vec3(F::World::Gravity);
+      world_node = true;
+    }
   }, {}, scene::Templates::Skip);
   std::sort(entries_.begin(), entries_.end(), [](const Entry& a, const Entry& b) { return a.node->path() < b.node->path(); });
+  for (std::size_t i = 0; i < entries_.size(); ++i) entry_of_[entries_[i].node->handle()] = i;
   if (!world_) return;
   // the physics keeps the forces that contact and force-torque sensors read, and only those
   for (const auto& e : entries_) {
@@ -313,20 +325,29 @@ void Hub::measure(Entry& e, Reading& next) {
     case NodeKind::Gps: {
       core::Vec3 p = n.world.position;
       const bool geodetic = n.choice<scene::GpsFrame>(F::Gps::Frame) == scene::GpsFrame::Geodetic;
+      const scene::Geodesy* geodesy = nullptr;
       if (geodetic) {
-        if (!geodetic_) {
-          geodetic_ = std::make_unique<Geodetic>();
-          geodetic_->terrain = terrainOf(scene_, n);
-          std::string why;
-          if (geodetic_->terrain) geodetic_->geodesy = geodesyOf(*geodetic_->terrain, model_dir_, why);
+        // its Terrain, found once (a path, or the first Terrain), resolved each sample
+        if (e.terrain == 0) {
+          const scene::Node* t = terrainOf(scene_, n);
+          e.terrain = t ? t->handle() : 0;
         }
-        if (geodetic_->terrain) p = geodetic_->terrain->world.inverse().apply(p);
+        if (const scene::Node* t = e.terrain ? scene_.resolve(e.terrain) : nullptr) {
+          auto [at, fresh] = geodesies_.try_emplace(e.terrain);
+          std::string why;
+          if (fresh) at->second = geodesyOf(*t, model_dir_, why);
+          geodesy = at->second.get();
+          p = t->world.inverse().apply(p);
+        }
       }
       double x[3] = {p.x, p.y, p.z};
       addNoise(e, x, 3);
       next.linear = {x[0], x[1], x[2]};
-      double lat = 0, lon = 0;
-      if (geodetic && geodetic_->geodesy && geodetic_->geodesy->toGeodetic(x[0], x[1], lat, lon)) next.linear = {lat, lon, x[2]};
+      // where the Terrain is gone (or its file no longer gives a georeference) the position
+      // has no latitude: NaN, not metres read as degrees
+      double lat = std::nan(""), lon = std::nan("");
+      if (geodetic && !(geodesy && geodesy->toGeodetic(x[0], x[1], lat, lon))) lat = lon = std::nan("");
+      if (geodetic) next.linear = {lat, lon, x[2]};
       next.value = static_cast<double>(e.samples);
       return;
     }
@@ -390,10 +411,19 @@ std::shared_ptr<const Image> Hub::image(scene::NodeHandle camera, std::string& w
 }
 
 Hub::Entry* Hub::find(scene::NodeHandle h) {
-  for (auto& e : entries_) {
-    if (e.node->handle() == h) return &e;
-  }
-  return nullptr;
+  const auto at = entry_of_.find(h);
+  return at == entry_of_.end() ? nullptr : &entries_[at->second];
+}
+
+void Hub::forget(scene::Node& top) {
+  std::unordered_set<scene::NodeHandle> gone;
+  scene::traverse(top, [&](scene::Node& n, const scene::TraversalState&) { gone.insert(n.handle()); });
+  const auto before = entries_.size();
+  std::erase_if(entries_, [&](const Entry& e) { return gone.count(e.node->handle()) > 0; });
+  std::erase_if(geodesies_, [&](const auto& g) { return gone.count(g.first) > 0; });
+  if (entries_.size() == before) return;
+  entry_of_.clear();
+  for (std::size_t i = 0; i < entries_.size(); ++i) entry_of_[entries_[i].node->handle()] = i;
 }
 
 void Hub::push(InputEvent event) {
@@ -410,16 +440,12 @@ bool Hub::mayChange() const {
   return std::any_of(entries_.begin(), entries_.end(), [](const Entry& e) { return e.node->kind() == scene::NodeKind::TimeSensor; });
 }
 
-bool Hub::isSensor(scene::NodeHandle node) const {
-  return std::any_of(entries_.begin(), entries_.end(), [&](const Entry& e) { return e.node->handle() == node; });
-}
+bool Hub::isSensor(scene::NodeHandle node) const { return entry_of_.count(node) > 0; }
 
 const Reading& Hub::reading(scene::NodeHandle sensor) const {
   static const Reading none;
-  for (const auto& e : entries_) {
-    if (e.node->handle() == sensor) return e.reading;
-  }
-  return none;
+  const auto at = entry_of_.find(sensor);
+  return at == entry_of_.end() ? none : entries_[at->second].reading;
 }
 
 bool Hub::read(Entry& e, double now, const std::vector<const InputEvent*>& due, Reading& next) {

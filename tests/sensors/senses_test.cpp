@@ -188,6 +188,72 @@ TEST(Senses, AContactSensorFeelsTheBoxRestingOnItWithItsWeight) {
   EXPECT_NEAR(r.value, 2 * kG, 0.02 * 2 * kG);
 }
 
+TEST(Senses, AContactSensorLetsItsBodySleepAndKeepsItsReadingAsleep) {
+  // the box comes to rest and sleeps, with the pad's body: the reading stays m g
+  Rig rig(R"(
+  - Transform: {translation: [0, 0, 0.05], children: [{Body: {name: scale, mass: 5, children: [{Cube: {size: [1, 1, 0.1]}}, {Contact: {name: pad}}]}}]}
+  - Transform: {translation: [0, 0, 0.2], children: [{Body: {name: box, mass: 2, children: [{Cube: {size: [0.2, 0.2, 0.2]}}]}}]}
+  - Plane: {}
+)");
+  const auto pad = rig.handle("#0/scale/pad");
+  rig.hub->update(0);
+  double t = 0;
+  int steps = 0;
+  for (; steps < 3000 && rig.world->awakeCount() > 0; ++steps) t = rig.run(t, 1, 0.01);
+  ASSERT_EQ(rig.world->awakeCount(), 0u) << "still awake after " << steps << " steps";
+  t = rig.run(t, 50, 0.01);  // asleep all along
+  // the box on it with its weight; the ground under it with the box's and its own
+  const auto& r = rig.hub->reading(pad);
+  ASSERT_EQ(r.items.size(), 2u);
+  const std::size_t box = r.items[0] == rig.handle("#1/box") ? 0 : 1;
+  EXPECT_EQ(r.items[box], rig.handle("#1/box"));
+  EXPECT_NEAR(r.values[box], 2 * kG, 0.02 * 2 * kG);
+  EXPECT_NEAR(r.values[1 - box], 7 * kG, 0.02 * 7 * kG);
+}
+
+TEST(Senses, TwoContactSensorsTouchingEachOtherBothFeelTheForceBetweenThem) {
+  // a box with a Contact sensor on a scale with one: each feels the other with the box's weight
+  Rig rig(R"(
+  - Joint:
+      kind: fixed
+      children:
+        - Body:
+            name: scale
+            mass: 5
+            children: [{Cube: {size: [1, 1, 0.1]}}, {Contact: {name: pad}}]
+  - Transform:
+      translation: [0, 0, 0.2]
+      children: [{Body: {name: box, mass: 2, children: [{Cube: {size: [0.2, 0.2, 0.2]}}, {Contact: {name: feel}}]}}]
+)");
+  rig.hub->update(0);
+  rig.run(0, 200, 0.01);
+  const auto& below = rig.hub->reading(rig.handle("#0/scale/pad"));
+  const auto& above = rig.hub->reading(rig.handle("#1/box/feel"));
+  ASSERT_EQ(below.items.size(), 1u);
+  ASSERT_EQ(above.items.size(), 1u);
+  EXPECT_EQ(below.items[0], rig.handle("#1/box"));
+  EXPECT_EQ(above.items[0], rig.handle("#0/scale"));
+  EXPECT_NEAR(below.values[0], 2 * kG, 0.02 * 2 * kG);
+  EXPECT_NEAR(above.values[0], 2 * kG, 0.02 * 2 * kG);
+}
+
+TEST(Senses, ASensorDeletedWithItsBodyIsForgotten) {
+  Rig rig(R"(
+  - Transform: {name: a, translation: [0, 0, 1], children: [{Body: {name: box, mass: 1, children: [{Cube: {}}, {Imu: {name: imu}}, {Contact: {name: pad}}]}}]}
+)");
+  const auto imu = rig.handle("a/box/imu");
+  rig.hub->update(0);
+  double t = rig.run(0, 5, 0.01);
+  ASSERT_TRUE(rig.hub->isSensor(imu));
+  scene::Node& box = *rig.scene->find("a/box");
+  rig.world->remove(box);
+  rig.hub->forget(box);
+  rig.scene->destroy(box);
+  EXPECT_FALSE(rig.hub->isSensor(imu));
+  EXPECT_TRUE(rig.hub->reading(imu).values.empty());
+  rig.run(t, 5, 0.01);  // nothing reads the freed nodes (the ASan job would say)
+}
+
 TEST(Senses, AForceTorqueSensorReadsTheWeightAndMomentOfAHangingArm) {
   // the arm's centre of mass lies 0.5 m along +x from the joint that holds it
   Rig rig(R"(

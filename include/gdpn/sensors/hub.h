@@ -17,6 +17,10 @@
 #include "gdpn/physics/world.h"
 #include "gdpn/scene/node.h"
 
+namespace gdpn::scene {
+class Geodesy;
+}
+
 namespace gdpn::sensors {
 
 /// What a sensor reports now.
@@ -115,6 +119,8 @@ class Hub {
   [[nodiscard]] bool mayChange() const;
   /// True when `node` is a sensor this hub reads.
   [[nodiscard]] bool isSensor(scene::NodeHandle node) const;
+  /// Forgets the sensors in the subtree of `top`, which is about to be deleted.
+  void forget(scene::Node& top);
 
  private:
   struct Entry {
@@ -127,8 +133,8 @@ class Hub {
     core::Quat rotation, middle;       // Imu: its rotation (world) at the last step, and halfway through the step
     bool moved = false;                // Imu: velocity and spin hold a step's values
     std::shared_ptr<const Image> image;  // cameras: the latest sample's picture, once read
+    scene::NodeHandle terrain = 0;       // a geodetic Gps: its Terrain, found at its first sample
   };
-  struct Geodetic;
   // the numbers of a sample with its sensor's noise, bias and resolution
   void addNoise(Entry& e, double* x, std::size_t n);
   // an Imu's motion now, at time `now` (s)
@@ -141,6 +147,7 @@ class Hub {
   scene::Scene& scene_;
   physics::World* world_;
   std::vector<Entry> entries_;  // in path order
+  std::unordered_map<scene::NodeHandle, std::size_t> entry_of_;  // sensor -> its entry
   std::vector<std::pair<scene::NodeHandle, physics::World::Feel>> felt_;
   std::unordered_map<scene::NodeHandle, std::size_t> index_;  // sensor -> its entry in felt_
   std::vector<Change> changes_;
@@ -151,7 +158,9 @@ class Hub {
   core::Vec3 gravity_{0, 0, -9.81};  // the World node's, m/s^2
   std::shared_ptr<Imager> imager_;
   std::string model_dir_ = ".";
-  std::unique_ptr<Geodetic> geodetic_;  // the georeferenced Terrain of geodetic Gps sensors
+  // the georeferences of the Terrains geodetic Gps sensors read, opened at the first sample
+  // (null: the Terrain's file gives none)
+  std::unordered_map<scene::NodeHandle, std::unique_ptr<scene::Geodesy>> geodesies_;
 };
 
 /// True when sensor `kind` samples at a rate of its own (a `rate` field).
