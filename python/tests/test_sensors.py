@@ -43,6 +43,10 @@ pages:
               c2.image
           except AttributeError as e:
               probe.wrong = str(e)
+          try:
+              sim.node("b/depth").far = 0.01
+          except ValueError as e:
+              probe.refused = str(e)
       clock: {tokens: 1}
     transitions:
       tick: {duration: 0.1}
@@ -88,6 +92,8 @@ def test_pictures_ranges_and_imu_reach_numpy(write_model, probe):
     assert abs(ax) < 1e-3 and abs(ay) < 1e-3 and abs(az - 9.81) < 1e-2
 
     assert "sensor 'c/lidar' is a LaserScan: it has no 'image'" in probe.wrong
+    # the rules between a camera's fields hold for a script as for the model file
+    assert "far (0.01 m) must lie beyond near (0.05 m)" in probe.refused
 
 
 def test_a_picture_kept_by_a_script_outlives_the_next(write_model, probe):

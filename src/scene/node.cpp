@@ -8,6 +8,7 @@
 
 #include "gdpn/core/assert.h"
 #include "gdpn/core/math.h"
+#include "gdpn/scene/sensor_rules.h"
 
 namespace gdpn::scene {
 namespace {
@@ -373,8 +374,9 @@ FieldValue convertAngle(const Node& n, std::size_t i, FieldValue v, AngleUnit un
 }
 
 std::string refusal(const Node& n, std::size_t i, const FieldValue& v, AngleUnit unit) {
-  const auto bad = n.type().fields[i]->check(convertAngle(n, i, v, unit, true));
-  if (!bad) return "";
+  const FieldValue converted = convertAngle(n, i, v, unit, true);
+  const auto bad = n.type().fields[i]->check(converted);
+  if (!bad) return sensorRule(n, i, converted).message;  // a rule between the node's fields
   const bool radians = unit == AngleUnit::Radians && isAngular(n, i);
   return bad->message + (radians ? " (in degrees; the model writes angles in radians)" : "");
 }

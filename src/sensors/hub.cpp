@@ -6,6 +6,7 @@
 
 #include "gdpn/core/text.h"
 #include "gdpn/scene/actions.h"
+#include "gdpn/scene/sensor_rules.h"
 #include "gdpn/scene/terrain.h"
 
 namespace gdpn::sensors {
@@ -147,10 +148,6 @@ bool sampled(NodeKind kind) {
   }
 }
 
-/// The largest far / near of a camera: at far = 1e5 near, a 24-bit depth buffer tells apart
-/// distances about 1/170 of the distance apart at far, 1/1,700 at a tenth of far.
-constexpr double kMaxDepthRange = 1e5;  // the message says 100,000
-
 Hub::~Hub() = default;
 
 bool Hub::check(const scene::Scene& scene, core::Diagnostics& diags, const std::string& model_dir) {
@@ -175,24 +172,11 @@ bool Hub::check(const scene::Scene& scene, core::Diagnostics& diags, const std::
         return;
       case NodeKind::ColorCamera:
       case NodeKind::DepthCamera:
-        if (n.number(F::ColorCamera::Far) <= n.number(F::ColorCamera::Near)) {
-          const auto& at = n.fieldLoc(F::ColorCamera::Far).line ? n.fieldLoc(F::ColorCamera::Far) : n.loc;
-          fail(at, "camera '" + n.path() + "': far (" + core::formatDouble(n.number(F::ColorCamera::Far)) +
-                       " m) must lie beyond near (" + core::formatDouble(n.number(F::ColorCamera::Near)) + " m)");
-        } else if (n.number(F::ColorCamera::Far) > kMaxDepthRange * n.number(F::ColorCamera::Near)) {
-          // a 24-bit depth buffer over near to far resolves about (distance^2 / near) / 2^24
-          const auto& at = n.fieldLoc(F::ColorCamera::Near).line ? n.fieldLoc(F::ColorCamera::Near) : n.loc;
-          fail(at, "camera '" + n.path() + "': far (" + core::formatDouble(n.number(F::ColorCamera::Far)) +
-                       " m) is more than 100,000 times near (" +
-                       core::formatDouble(n.number(F::ColorCamera::Near)) +
-                       " m), which leaves the depth buffer too few steps to tell distances apart: raise near");
-        }
-        return;
       case NodeKind::LaserScan:
-        if (n.number(F::LaserScan::Count) > 1 && n.number(F::LaserScan::MinAngle) == n.number(F::LaserScan::MaxAngle)) {
-          const auto& at = n.fieldLoc(F::LaserScan::MaxAngle).line ? n.fieldLoc(F::LaserScan::MaxAngle) : n.loc;
-          fail(at, "laser scan '" + n.path() + "' has " + core::formatDouble(n.number(F::LaserScan::Count)) +
-                       " rays but no angle between min_angle and max_angle");
+        if (const auto rule = scene::sensorRule(n, scene::kAsItIs, {}); !rule.message.empty()) {
+          const auto& at = n.field_locs[rule.field].line ? n.field_locs[rule.field] : n.loc;
+          fail(at, std::string(n.kind() == NodeKind::LaserScan ? "laser scan '" : "camera '") + n.path() +
+                       (n.kind() == NodeKind::LaserScan ? "' " : "': ") + rule.message);
         }
         return;
       case NodeKind::Gps: {

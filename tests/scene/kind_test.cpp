@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "gdpn/scene/actions.h"
 #include "gdpn/scene/node.h"
+#include "gdpn/scene/sensor_rules.h"
 
 namespace gdpn::scene {
 namespace {
@@ -120,6 +122,26 @@ TEST(FieldCheck, OneRuleForEveryKindOfValue) {
   EXPECT_EQ(nx.check(std::int64_t{1})->message, "'nx' must lie in [2, 1e+06], got 1");
   const auto& vectors = fieldOf(NodeKind::GradientField, "vectors");
   EXPECT_EQ(vectors.check(std::vector<double>{1, 2, INFINITY})->component, 2);
+}
+
+TEST(FieldCheck, ASensorsFieldsKeepTheirRulesWhenOneIsSetFromOutside) {
+  // the rules between fields hold for a value set at run time as at load (sensor_rules.h)
+  Scene s;
+  Node* cam = s.create(*builtinTypes().find(NodeKind::DepthCamera), "cam", s.root());
+  const std::size_t far = cam->slot(field::ColorCamera::Far), near = cam->slot(field::ColorCamera::Near);
+  EXPECT_EQ(refusal(*cam, far, 20.0, AngleUnit::Degrees), "");
+  EXPECT_EQ(refusal(*cam, far, 0.01, AngleUnit::Degrees), "far (0.01 m) must lie beyond near (0.05 m)");
+  EXPECT_EQ(refusal(*cam, near, 1e-4, AngleUnit::Degrees),
+            "far (100 m) is more than 100,000 times near (1e-04 m), which leaves the depth buffer too few steps to "
+            "tell distances apart: raise near");
+  EXPECT_EQ(sensorRule(*cam, near, 1e-4).field, near);
+  Node* lidar = s.create(*builtinTypes().find(NodeKind::LaserScan), "lidar", s.root());
+  const std::size_t lo = lidar->slot(field::LaserScan::MinAngle);
+  EXPECT_EQ(refusal(*lidar, lo, 180.0, AngleUnit::Degrees), "has 360 rays but no angle between min_angle and max_angle");
+  EXPECT_EQ(refusal(*lidar, lo, std::numbers::pi, AngleUnit::Radians),
+            "has 360 rays but no angle between min_angle and max_angle");
+  EXPECT_EQ(refusal(*lidar, lo, -90.0, AngleUnit::Degrees), "");
+  EXPECT_EQ(sensorRule(*lidar, kAsItIs, {}).message, "");
 }
 
 TEST(ShapeExtent, IsTheOneSizeOfEveryPrimitive) {
