@@ -36,7 +36,7 @@ fuzz() {  # fuzz NAME MAX_LEN 'NAME PATTERNS' SEED_DIRS...
 }
 
 meshes='*.obj *.stl *.ply *.gltf *.glb *.dae *.3ds *.wrl *.iv'
-fuzz model_loader_fuzz 4096 '*.gdpn.yaml' examples/basics/* examples/plant/* examples/sorting tests/data/good tests/data/bad
+fuzz model_loader_fuzz 4096 '*.gdpn.yaml' examples/basics/* examples/plant/* examples/sorting examples/vision tests/data/good tests/data/bad
 fuzz pnml_reader_fuzz 65536 '*.pnml' tests/data/pnml tests/data/conformance
 fuzz mesh_loader_fuzz 32768 "$meshes" tests/data/meshes tests/data/bad/files tests/data/physics tests/data/good/parts
 fuzz input_events_fuzz 4096 '*.input.yaml' tests/data/input
