@@ -169,6 +169,13 @@ struct Renderer::Impl {
           ray(n, at, length, overlay({1.0f, 0.2f, 0.2f}, 0.8f), items);
         }
         break;
+      case NodeKind::ColorCamera:
+      case NodeKind::DepthCamera:
+        if (opt.sensors) frustum(n, at, items);
+        break;
+      case NodeKind::LaserScan:
+        if (opt.sensors) fan(n, at, items);
+        break;
       case NodeKind::Joint:
         if (opt.joints) joint(n, at, items);
         break;
@@ -187,9 +194,6 @@ struct Renderer::Impl {
       case NodeKind::GradientSensor:
       case NodeKind::KeyboardSensor:
       case NodeKind::MouseSensor:
-      case NodeKind::ColorCamera:
-      case NodeKind::DepthCamera:
-      case NodeKind::LaserScan:
       case NodeKind::Imu:
       case NodeKind::Gps:
       case NodeKind::Contact:
@@ -266,11 +270,46 @@ struct Renderer::Impl {
   }
 
   /// Sensor `n`'s ray, `length` m along its +x.
-  void ray(const Node& n, const glm::mat4& at, float length, const Look& look, std::vector<Item>& items) {
-    // along +x from the sensor's origin: a thin cylinder turned from z to x
-    const glm::mat4 m = at * alongZ({1, 0, 0}) * glm::translate(glm::mat4(1.0f), {0, 0, length / 2}) *
+  void ray(const Node& n, const glm::mat4& at, float length, const Look& look, std::vector<Item>& items,
+           glm::vec3 direction = {1, 0, 0}) {
+    // along `direction` (+x) from the sensor's origin: a thin cylinder turned from z to it
+    const glm::mat4 m = at * alongZ(direction) * glm::translate(glm::mat4(1.0f), {0, 0, length / 2}) *
                         glm::scale(glm::mat4(1.0f), glm::vec3(0.005f, 0.005f, length));
     items.push_back({&cylinder.gpu, nullptr, m, look, &n, 0});
+  }
+
+  /// Camera sensor `n`'s view: its axis and the four edges of its picture, out to 1 m along
+  /// the axis (or to `far` when nearer).
+  void frustum(const Node& n, const glm::mat4& at, std::vector<Item>& items) {
+    using F = field::ColorCamera;
+    const Look look = overlay({0.2f, 0.6f, 1.0f}, 0.8f);
+    const double reach = std::min(1.0, n.number(F::Far));
+    const double x = std::tan(n.number(F::Fov) * std::numbers::pi / 360.0);
+    const double y = x * n.number(F::Height) / n.number(F::Width);
+    ray(n, at, static_cast<float>(reach), look, items);
+    for (const double sy : {-1.0, 1.0}) {
+      for (const double sz : {-1.0, 1.0}) {
+        const glm::vec3 edge{1.0f, static_cast<float>(sy * x), static_cast<float>(sz * y)};
+        ray(n, at, static_cast<float>(reach) * glm::length(edge), look, items, glm::normalize(edge));
+      }
+    }
+  }
+
+  /// LaserScan `n`'s rays at their full length, at most 36 of them evenly through the fan.
+  void fan(const Node& n, const glm::mat4& at, std::vector<Item>& items) {
+    using F = field::LaserScan;
+    const Look look = overlay({1.0f, 0.2f, 0.2f}, 0.5f);
+    const auto count = static_cast<std::int64_t>(n.number(F::Count));
+    const double lo = n.number(F::MinAngle), hi = n.number(F::MaxAngle);
+    // as the scan: a whole turn leaves out the repeated last ray
+    const bool turn = hi - lo >= 360.0 - 1e-9;
+    const double step = count < 2 ? 0.0 : (hi - lo) / static_cast<double>(turn ? count : count - 1);
+    const std::int64_t every = std::max<std::int64_t>(1, (count + 35) / 36);
+    const auto length = static_cast<float>(n.number(F::Length));
+    for (std::int64_t i = 0; i < count; i += every) {
+      const double a = (lo + step * static_cast<double>(i)) * std::numbers::pi / 180.0;
+      ray(n, at, length, look, items, {static_cast<float>(std::cos(a)), static_cast<float>(std::sin(a)), 0.0f});
+    }
   }
 
   /// Sets the program's surface uniforms to `l`.

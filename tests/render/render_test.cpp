@@ -201,6 +201,27 @@ scene:
   EXPECT_TRUE(copy->sameAs(*sim->plant()));
 }
 
+TEST(Render, ACameraSensorShowsItsViewAndALaserScanItsFanWhenSensorsAreDrawn) {
+  // with sensors drawn, a RangeFinder is one ray; a camera sensor its axis and the four edges
+  // of its picture; a 360-ray LaserScan 36 of its rays, one in ten
+  const auto added = [](const std::string& sensor) {
+    DirectDraw d("gdpn: 1\nscene:\n  - Camera: {position: [0, -4, 2], target: [0, 0, 0]}\n  - " + sensor + "\n",
+                 "sensors.gdpn.yaml", 160, 120);
+    EXPECT_TRUE(d.ready());
+    if (!d.ready()) return std::size_t{0};
+    const auto plain = d.renderer->draw(*d.sim->plant(), d.camera, d.options);
+    d.options.sensors = true;
+    const auto drawn = d.renderer->draw(*d.sim->plant(), d.camera, d.options);
+    return drawn.triangles - plain.triangles;
+  };
+  const std::size_t ray = added("RangeFinder: {length: 2}");
+  ASSERT_GT(ray, 0u);
+  EXPECT_EQ(added("ColorCamera: {width: 64, height: 48}"), 5 * ray);
+  EXPECT_EQ(added("DepthCamera: {}"), 5 * ray);
+  EXPECT_EQ(added("LaserScan: {count: 360}"), 36 * ray);
+  EXPECT_EQ(added("LaserScan: {count: 7, min_angle: -30, max_angle: 30}"), 7 * ray);
+}
+
 TEST(Render, ATemplateIsNotDrawnNorItsLightsAndCameras) {
   DirectDraw d(R"(gdpn: 1
 scene:
