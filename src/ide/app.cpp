@@ -12,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "detail/picture_texture.h"
 #include "detail/world_texture.h"
 #include "gdpn/ide/net_edit.h"
 #include "gdpn/ide/scene_edit.h"

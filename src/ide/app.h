@@ -29,6 +29,7 @@ struct ImFont;
 namespace gdpn::ide {
 
 class WorldTexture;
+class PictureTexture;
 struct NetViewState;
 
 /// What the world view's last picture showed: when nothing of it changes, the picture is
@@ -222,6 +223,7 @@ class App {
   core::Vec3 last_eye{1e300, 0, 0};        ///< the viewpoint last sent to the sensors, m
   std::unique_ptr<render::Renderer> renderer;  ///< the world view's renderer
   std::unique_ptr<WorldTexture> world_texture; ///< where the world view draws
+  std::unique_ptr<PictureTexture> picture_texture;  ///< the inspector's camera picture
   WorldKey world_key;                          ///< what the world view's picture shows
   render::DrawStats world_stats;               ///< what drawing it took
 

@@ -391,7 +391,13 @@ std::shared_ptr<const Image> Hub::image(scene::NodeHandle camera, std::string& w
     }
   }
   e->image = std::move(picture);
+  e->last = e->image;
   return e->image;
+}
+
+std::shared_ptr<const Image> Hub::lastPicture(scene::NodeHandle camera) const {
+  const auto at = entry_of_.find(camera);
+  return at == entry_of_.end() ? nullptr : entries_[at->second].last;
 }
 
 Hub::Entry* Hub::find(scene::NodeHandle h) {

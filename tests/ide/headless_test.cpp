@@ -107,6 +107,23 @@ TEST_F(HeadlessIde, ARunReadsCameraPicturesBesideTheFramesContext) {
   EXPECT_GT(std::filesystem::file_size(dir_ / "shot.png"), 10000u);
 }
 
+TEST_F(HeadlessIde, TheInspectorShowsWhatASensorReadsAndTheLatestPictureAScriptRead) {
+  // before the first picture is read (2.65 s) the camera has none to show, and showing one
+  // renders nothing: the run goes as gdpn run's
+  auto r = replayOn("examples/vision", "- run: 1\n- select: line/mast/cam\n");
+  EXPECT_EQ(r["inspector"]["type"], "ColorCamera");
+  EXPECT_TRUE(r["inspector"]["reading"]["picture"].is_null()) << r["inspector"].dump();
+  r = replayOn("examples/vision", "- run: 3\n- select: line/mast/cam\n",
+               "--screenshot '" + (dir_ / "camera.png").string() + "'");
+  EXPECT_EQ(r["inspector"]["reading"]["picture"], nlohmann::json({64, 48})) << r["inspector"].dump();
+  EXPECT_NE(last_.out.find("[t=2.65] camera sees boxes/red_1/box as red"), std::string::npos) << last_.out;
+  // a region: what is inside it now
+  r = replayOn("examples/vision", "- run: 3\n- select: line/diverter/gate\n");
+  EXPECT_EQ(r["inspector"]["type"], "Region");
+  EXPECT_TRUE(r["inspector"]["reading"]["items"].is_array()) << r["inspector"].dump();
+  EXPECT_FALSE(r["inspector"]["reading"]["active"].get<bool>());
+}
+
 TEST_F(HeadlessIde, SelectingAPlaceHighlightsEveryNodeTokenItHolds) {
   // P1 holds the arm's three joints as the model starts
   const auto r = replay("- select: factory/P1\n");

@@ -110,6 +110,11 @@ class Simulation {
   [[nodiscard]] const SignalTable* signals() const;
   /// The current reading of sensor node `sensor` (an empty reading without sensors).
   [[nodiscard]] const sensors::Reading& reading(scene::NodeHandle sensor) const;
+  /// The latest picture a script read of camera sensor `camera`; null when none was (nothing
+  /// is rendered for the asking: the run stays as it would be).
+  [[nodiscard]] std::shared_ptr<const sensors::Image> lastPicture(scene::NodeHandle camera) const {
+    return hub_ ? hub_->lastPicture(camera) : nullptr;
+  }
   /// Starts if needed, then steps until `limits` say stop, the net is dead, or `interrupt`
   /// becomes true. Closes the statistics at the end.
   RunOutcome run(const RunLimits& limits, const ProgressFn& progress = {},

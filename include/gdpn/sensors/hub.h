@@ -103,6 +103,9 @@ class Hub {
   /// The picture of camera sensor `camera` at its latest sample, rendered now if it was not
   /// yet (only pictures read are rendered); null with `why` when it cannot be.
   std::shared_ptr<const Image> image(scene::NodeHandle camera, std::string& why);
+  /// The latest picture of camera `camera` that was read, of whatever sample; null when none
+  /// was. Renders nothing and draws no noise: what the IDE shows, not changing the run.
+  [[nodiscard]] std::shared_ptr<const Image> lastPicture(scene::NodeHandle camera) const;
   /// Where the Terrain files of geodetic Gps sensors are found (the model's folder).
   void setModelDir(std::string dir) { model_dir_ = std::move(dir); }
   /// Input events to deliver when their time comes (in time order).
@@ -133,6 +136,7 @@ class Hub {
     core::Quat rotation, middle;       // Imu: its rotation (world) at the last step, and halfway through the step
     bool moved = false;                // Imu: velocity and spin hold a step's values
     std::shared_ptr<const Image> image;  // cameras: the latest sample's picture, once read
+    std::shared_ptr<const Image> last;   // cameras: the latest picture read, of any sample
     scene::NodeHandle terrain = 0;       // a geodetic Gps: its Terrain, found at its first sample
   };
   // the numbers of a sample with its sensor's noise, bias and resolution

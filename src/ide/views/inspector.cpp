@@ -9,8 +9,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <string>
 
+#include "../detail/picture_texture.h"
 #include "../views.h"
 #include "gdpn/core/text.h"
 #include "gdpn/ide/set_field.h"
@@ -173,6 +175,109 @@ void nodeExtras(App& app, const scene::Node& node, const std::string& path, nloh
   if (change) edit(app, std::move(change));
 }
 
+/// "(x, y, z)" with `digits` decimals.
+std::string triple(core::Vec3 v, int digits) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.*f, %.*f, %.*f)", digits, v.x, digits, v.y, digits, v.z);
+  return text;
+}
+
+/// What sensor `sensor` reads now in the run (a camera: the latest picture a script read,
+/// nothing rendered for the asking, so that showing it leaves the run as it would be).
+void sensorReading(App& app, const model::Simulation& sim, const scene::Node& sensor, nlohmann::json& report) {
+  const sensors::Reading& r = sim.reading(sensor.handle());
+  const auto nameOf = [&](scene::NodeHandle h) {
+    const scene::Node* n = sim.plant()->resolve(h);
+    return n != nullptr ? n->path() : std::string("(gone)");
+  };
+  ImGui::Separator();
+  ImGui::TextDisabled("What it reads in the run:");
+  using scene::NodeKind;
+  namespace F = scene::field;
+  switch (sensor.kind()) {
+    case NodeKind::Region:
+    case NodeKind::Contact: {
+      const bool forces = sensor.kind() == NodeKind::Contact;
+      ImGui::Text("%zu %s%s", r.items.size(), forces ? "touching" : "inside", r.items.empty() ? "" : ":");
+      auto& items = report["items"] = nlohmann::json::array();
+      for (std::size_t i = 0; i < r.items.size(); ++i) {
+        const std::string name = nameOf(r.items[i]);
+        items.push_back(name);
+        if (i >= 8) continue;  // the first few; the count says how many
+        if (forces && i < r.values.size()) ImGui::BulletText("%s  %.2f N", name.c_str(), r.values[i]);
+        else ImGui::BulletText("%s", name.c_str());
+      }
+      break;
+    }
+    case NodeKind::RangeFinder:
+      ImGui::Text("%.4f m to %s", r.value, r.hit != 0 ? nameOf(r.hit).c_str() : "nothing");
+      report["value"] = r.value;
+      break;
+    case NodeKind::TimeSensor:
+      ImGui::Text("%.0f ticks", r.value);
+      report["value"] = r.value;
+      break;
+    case NodeKind::GradientSensor:
+      ImGui::Text("field vector %s", triple(r.vector, 3).c_str());
+      report["vector"] = {r.vector.x, r.vector.y, r.vector.z};
+      break;
+    case NodeKind::KeyboardSensor: {
+      std::string keys;
+      for (const auto& k : r.keys) keys += (keys.empty() ? "" : " ") + k;
+      ImGui::Text("keys down: %s", keys.empty() ? "none" : keys.c_str());
+      report["keys"] = r.keys;
+      break;
+    }
+    case NodeKind::LaserScan: {
+      const auto [lo, hi] = std::minmax_element(r.values.begin(), r.values.end());
+      if (lo != r.values.end()) ImGui::Text("%zu rays, %.3f to %.3f m", r.values.size(), *lo, *hi);
+      report["rays"] = r.values.size();
+      if (lo != r.values.end()) report["nearest"] = *lo;
+      break;
+    }
+    case NodeKind::Imu:
+      ImGui::Text("acceleration %s m/s^2", triple(r.linear, 3).c_str());
+      ImGui::Text("angular velocity %s deg/s", triple(r.angular * (180.0 / std::numbers::pi), 2).c_str());
+      report["acceleration"] = {r.linear.x, r.linear.y, r.linear.z};
+      break;
+    case NodeKind::Gps: {
+      const bool geodetic = sensor.choice<scene::GpsFrame>(F::Gps::Frame) == scene::GpsFrame::Geodetic;
+      if (geodetic) ImGui::Text("latitude %.7f, longitude %.7f deg, altitude %.2f m", r.linear.x, r.linear.y, r.linear.z);
+      else ImGui::Text("position %s m", triple(r.linear, 3).c_str());
+      report["position"] = {r.linear.x, r.linear.y, r.linear.z};
+      break;
+    }
+    case NodeKind::ForceTorque:
+      ImGui::Text("force %s N", triple(r.linear, 2).c_str());
+      ImGui::Text("torque %s N m", triple(r.angular, 2).c_str());
+      report["force"] = {r.linear.x, r.linear.y, r.linear.z};
+      break;
+    case NodeKind::ColorCamera:
+    case NodeKind::DepthCamera: {
+      const auto picture = sim.lastPicture(sensor.handle());
+      report["picture"] = picture ? nlohmann::json{picture->width, picture->height} : nlohmann::json();
+      if (!picture) {
+        ImGui::TextDisabled("No picture read yet: a camera renders only when a script reads it.");
+        break;
+      }
+      if (!app.picture_texture) app.picture_texture = std::make_unique<PictureTexture>();
+      app.picture_texture->show(picture, sensor.number(F::ColorCamera::Near), sensor.number(F::ColorCamera::Far));
+      ImGui::TextDisabled("the latest picture a script read, %d x %d%s", picture->width, picture->height,
+                          sensor.kind() == NodeKind::DepthCamera ? " (near white, far black)" : "");
+      // as large as the inspector allows, at most 4 times its size and half the panel's height,
+      // so that the fields stay in sight
+      const float aspect = static_cast<float>(picture->height) / static_cast<float>(picture->width);
+      const float width = std::min({ImGui::GetContentRegionAvail().x, 4.0F * static_cast<float>(picture->width),
+                                    0.5F * ImGui::GetWindowHeight() / aspect});
+      const float height = width * aspect;
+      ImGui::Image(reinterpret_cast<ImTextureID>(app.picture_texture->texture()), {width, height});
+      break;
+    }
+    default: break;  // a MouseSensor: clicks, delivered to its handlers as they come
+  }
+  report["active"] = r.active;
+}
+
 void nodeInspector(App& app, const std::string& path, nlohmann::json& report) {
   auto* s = app.document().scene();
   auto* node = s != nullptr ? s->find(path) : nullptr;
@@ -195,6 +300,9 @@ void nodeInspector(App& app, const std::string& path, nlohmann::json& report) {
       const auto p = (box.lo + box.hi) * 0.5;
       ImGui::Text("In the run its shapes' centre is at (%.3f, %.3f, %.3f) m.", p.x, p.y, p.z);
       report["live_position"] = {p.x, p.y, p.z};
+    }
+    if (live != nullptr && live->type().category == scene::Category::Sensor) {
+      sensorReading(app, app.run().session()->simulation(), *live, report["reading"]);
     }
   }
   report["node"] = path;
