@@ -33,10 +33,10 @@ std::string scene(int n, double overlap) {
   return t;
 }
 
-void BM_SensorPhase(benchmark::State& state) {
+/// The sensor phase of the scene of model text `text`, timed step by step (10 ms each).
+void senseEachStep(benchmark::State& state, const std::string& text) {
   core::Diagnostics diags;
-  auto m = model::parseModel(scene(static_cast<int>(state.range(0)), static_cast<double>(state.range(1)) / 100.0),
-                             "bench.gdpn.yaml", diags);
+  auto m = model::parseModel(text, "bench.gdpn.yaml", diags);
   auto s = m->scene->clone();
   auto world = physics::World::create(*s, ".", 1, diags);
   sensors::Hub hub(*s, world.get());
@@ -45,6 +45,10 @@ void BM_SensorPhase(benchmark::State& state) {
     now += 0.01;
     benchmark::DoNotOptimize(hub.update(now));
   }
+}
+
+void BM_SensorPhase(benchmark::State& state) {
+  senseEachStep(state, scene(static_cast<int>(state.range(0)), static_cast<double>(state.range(1)) / 100.0));
   state.counters["regions"] = static_cast<double>(state.range(0));
   state.counters["overlapping_pct"] = static_cast<double>(state.range(1));
 }
@@ -66,16 +70,7 @@ void BM_LaserScan(benchmark::State& state) {
          ", 0], children: [{Body: {mass: 1, children: [{Cube: {size: [0.3, 0.3, 0.3]}}]}}]}\n";
   }
   t += "  - LaserScan: {name: lidar, count: 360, length: 10, rate: 0}\n";
-  core::Diagnostics diags;
-  auto m = model::parseModel(t, "bench.gdpn.yaml", diags);
-  auto s = m->scene->clone();
-  auto world = physics::World::create(*s, ".", 1, diags);
-  sensors::Hub hub(*s, world.get());
-  double now = 0;
-  for (auto _ : state) {
-    now += 0.01;
-    benchmark::DoNotOptimize(hub.update(now));
-  }
+  senseEachStep(state, t);
   state.counters["boxes"] = static_cast<double>(state.range(0));
 }
 BENCHMARK(BM_LaserScan)->Arg(0)->Arg(20)->Arg(200)->Unit(benchmark::kMicrosecond);

@@ -175,8 +175,8 @@ bool Hub::check(const scene::Scene& scene, core::Diagnostics& diags, const std::
       case NodeKind::LaserScan:
         if (const auto rule = scene::sensorRule(n, scene::kAsItIs, {}); !rule.message.empty()) {
           const auto& at = n.field_locs[rule.field].line ? n.field_locs[rule.field] : n.loc;
-          fail(at, std::string(n.kind() == NodeKind::LaserScan ? "laser scan '" : "camera '") + n.path() +
-                       (n.kind() == NodeKind::LaserScan ? "' " : "': ") + rule.message);
+          const bool laser = n.kind() == NodeKind::LaserScan;  // "laser scan 'x' has ...", "camera 'x': far ..."
+          fail(at, (laser ? "laser scan '" : "camera '") + n.path() + (laser ? "' " : "': ") + rule.message);
         }
         return;
       case NodeKind::Gps: {
@@ -329,7 +329,7 @@ void Hub::measure(Entry& e, Reading& next) {
       next.linear = {x[0], x[1], x[2]};
       // where the Terrain is gone (or its file no longer gives a georeference) the position
       // has no latitude: NaN, not metres read as degrees
-      double lat = std::nan(""), lon = std::nan("");
+      double lat = 0, lon = 0;
       if (geodetic && !(geodesy && geodesy->toGeodetic(x[0], x[1], lat, lon))) lat = lon = std::nan("");
       if (geodetic) next.linear = {lat, lon, x[2]};
       next.value = static_cast<double>(e.samples);

@@ -165,8 +165,10 @@ TEST(Senses, AGeodeticGpsReadsLatitudeAndLongitudeFromTheTerrainsGeoreference) {
   std::filesystem::remove_all(dir);
 }
 
-TEST(Senses, AContactSensorFeelsTheBoxRestingOnItWithItsWeight) {
-  Rig rig(R"(
+/// A 5 kg scale held by a fixed joint, with a Contact sensor `pad`, and a 2 kg box dropped onto
+/// it from 5 cm; `box_sensor` (a node of the box's, or "") goes into the box.
+std::string scaleAndBox(const std::string& box_sensor) {
+  return R"(
   - Joint:
       kind: fixed
       children:
@@ -176,8 +178,12 @@ TEST(Senses, AContactSensorFeelsTheBoxRestingOnItWithItsWeight) {
             children: [{Cube: {size: [1, 1, 0.1]}}, {Contact: {name: pad}}]
   - Transform:
       translation: [0, 0, 0.2]
-      children: [{Body: {name: box, mass: 2, children: [{Cube: {size: [0.2, 0.2, 0.2]}}]}}]
-)");
+      children: [{Body: {name: box, mass: 2, children: [{Cube: {size: [0.2, 0.2, 0.2]}})" +
+         (box_sensor.empty() ? "" : ", " + box_sensor) + "]}}]\n";
+}
+
+TEST(Senses, AContactSensorFeelsTheBoxRestingOnItWithItsWeight) {
+  Rig rig(scaleAndBox(""));
   const auto pad = rig.handle("#0/scale/pad");
   rig.hub->update(0);
   rig.run(0, 200, 0.01);
@@ -213,18 +219,7 @@ TEST(Senses, AContactSensorLetsItsBodySleepAndKeepsItsReadingAsleep) {
 
 TEST(Senses, TwoContactSensorsTouchingEachOtherBothFeelTheForceBetweenThem) {
   // a box with a Contact sensor on a scale with one: each feels the other with the box's weight
-  Rig rig(R"(
-  - Joint:
-      kind: fixed
-      children:
-        - Body:
-            name: scale
-            mass: 5
-            children: [{Cube: {size: [1, 1, 0.1]}}, {Contact: {name: pad}}]
-  - Transform:
-      translation: [0, 0, 0.2]
-      children: [{Body: {name: box, mass: 2, children: [{Cube: {size: [0.2, 0.2, 0.2]}}, {Contact: {name: feel}}]}}]
-)");
+  Rig rig(scaleAndBox("{Contact: {name: feel}}"));
   rig.hub->update(0);
   rig.run(0, 200, 0.01);
   const auto& below = rig.hub->reading(rig.handle("#0/scale/pad"));

@@ -22,11 +22,11 @@ struct SensorRule {
   std::size_t field = 0;  ///< index in the node's type().fields of the field to blame
 };
 
+/// Field index meaning "no field changes" for sensorRule().
+inline constexpr std::size_t kAsItIs = std::numeric_limits<std::size_t>::max();
+
 /// The first rule between the fields of `n` that breaks were field `i` to hold `v` (i =
 /// kAsItIs: the node as it stands); an empty message when all hold or `n` has no such rule.
 SensorRule sensorRule(const Node& n, std::size_t i, const FieldValue& v);
-
-/// Field index meaning "no field changes" for sensorRule().
-inline constexpr std::size_t kAsItIs = std::numeric_limits<std::size_t>::max();
 
 }  // namespace gdpn::scene
