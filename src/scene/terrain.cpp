@@ -1,31 +1,35 @@
 #include "gdpn/scene/terrain.h"
 
-#include <gdal.h>
-#include <ogr_srs_api.h>
-
 #include <algorithm>
 #include <cmath>
-#include <mutex>
 
+#include "detail/gdal_library.h"
 #include "gdpn/core/file.h"
 
 namespace gdpn::scene {
 
 namespace {
 
-/// The raster at `path`, GDAL's errors kept quiet (pop the handler after closing it); null
-/// with `why`, the handler popped, when it cannot be opened.
-GDALDatasetH openRaster(const std::string& path, std::string& why) {
+using detail::GdalLibrary;
+
+/// The message of GDAL's last error, or `otherwise` when it gave none.
+std::string lastError(const GdalLibrary& g, const char* otherwise) {
+  return g.lastErrorMsg()[0] ? g.lastErrorMsg() : otherwise;
+}
+
+/// The raster at `path` and GDAL in `g`, GDAL's errors kept quiet (pop the handler after
+/// closing it); null with `why`, the handler popped, when it cannot be opened.
+GDALDatasetH openRaster(const std::string& path, const GdalLibrary*& g, std::string& why) {
   // a regular file within the input limit: GDAL would read a FIFO or /dev/zero forever
   if (!core::inputFileSize(path, why)) return nullptr;
-  static std::once_flag once;
-  std::call_once(once, [] { GDALAllRegister(); });
+  g = detail::gdal(why);
+  if (!g) return nullptr;
   // GDAL reports through a handler; keep its last message for ours
-  CPLPushErrorHandler(CPLQuietErrorHandler);
-  GDALDatasetH ds = GDALOpen(path.c_str(), GA_ReadOnly);
+  g->pushErrorHandler(g->quietErrorHandler);
+  GDALDatasetH ds = g->open(path.c_str(), GA_ReadOnly);
   if (!ds) {
-    why = CPLGetLastErrorMsg()[0] ? CPLGetLastErrorMsg() : "not a raster GDAL can read";
-    CPLPopErrorHandler();
+    why = lastError(*g, "not a raster GDAL can read");
+    g->popErrorHandler();
   }
   return ds;
 }
@@ -33,38 +37,40 @@ GDALDatasetH openRaster(const std::string& path, std::string& why) {
 }  // namespace
 
 std::unique_ptr<Geodesy> Geodesy::open(const std::string& path, double width, double depth, std::string& why) {
-  GDALDatasetH ds = openRaster(path, why);
+  const GdalLibrary* gd = nullptr;
+  GDALDatasetH ds = openRaster(path, gd, why);
   if (!ds) return nullptr;
   std::unique_ptr<Geodesy> g(new Geodesy);
   g->width_ = width;
   g->depth_ = depth;
-  g->nx_ = GDALGetRasterXSize(ds);
-  g->ny_ = GDALGetRasterYSize(ds);
-  const char* wkt = GDALGetProjectionRef(ds);
-  if (GDALGetGeoTransform(ds, g->transform_.data()) != CE_None || !wkt || !*wkt) {
+  g->nx_ = gd->rasterXSize(ds);
+  g->ny_ = gd->rasterYSize(ds);
+  const char* wkt = gd->projectionRef(ds);
+  if (gd->geoTransform(ds, g->transform_.data()) != CE_None || !wkt || !*wkt) {
     why = "it is not georeferenced (no coordinate system or no geotransform)";
     g.reset();
   } else {
-    OGRSpatialReferenceH from = OSRNewSpatialReference(wkt), to = OSRNewSpatialReference(nullptr);
-    OSRImportFromEPSG(to, 4326);
+    OGRSpatialReferenceH from = gd->newSpatialReference(wkt), to = gd->newSpatialReference(nullptr);
+    gd->importFromEPSG(to, 4326);
     // longitude first, latitude second, whatever the authorities' axis order
-    OSRSetAxisMappingStrategy(from, OAMS_TRADITIONAL_GIS_ORDER);
-    OSRSetAxisMappingStrategy(to, OAMS_TRADITIONAL_GIS_ORDER);
-    g->to_wgs84_ = OCTNewCoordinateTransformation(from, to);
-    OSRDestroySpatialReference(from);
-    OSRDestroySpatialReference(to);
+    gd->setAxisMappingStrategy(from, OAMS_TRADITIONAL_GIS_ORDER);
+    gd->setAxisMappingStrategy(to, OAMS_TRADITIONAL_GIS_ORDER);
+    g->to_wgs84_ = gd->newCoordinateTransformation(from, to);
+    gd->destroySpatialReference(from);
+    gd->destroySpatialReference(to);
     if (!g->to_wgs84_) {
       why = "its coordinate system cannot be converted to latitude and longitude";
       g.reset();
     }
   }
-  GDALClose(ds);
-  CPLPopErrorHandler();
+  gd->close(ds);
+  gd->popErrorHandler();
   return g;
 }
 
 Geodesy::~Geodesy() {
-  if (to_wgs84_) OCTDestroyCoordinateTransformation(static_cast<OGRCoordinateTransformationH>(to_wgs84_));
+  std::string why;
+  if (to_wgs84_) detail::gdal(why)->destroyCoordinateTransformation(static_cast<OGRCoordinateTransformationH>(to_wgs84_));
 }
 
 bool Geodesy::toGeodetic(double x, double y, double& latitude, double& longitude) const {
@@ -74,18 +80,20 @@ bool Geodesy::toGeodetic(double x, double y, double& latitude, double& longitude
   const double row = 0.5 + (depth_ / 2 - y) / depth_ * (ny_ - 1);
   const auto& t = transform_;
   double px = t[0] + col * t[1] + row * t[2], py = t[3] + col * t[4] + row * t[5];
-  if (!OCTTransform(static_cast<OGRCoordinateTransformationH>(to_wgs84_), 1, &px, &py, nullptr)) return false;
+  std::string why;  // loaded: this Geodesy was made through it
+  if (!detail::gdal(why)->transform(static_cast<OGRCoordinateTransformationH>(to_wgs84_), 1, &px, &py, nullptr)) return false;
   longitude = px;
   latitude = py;
   return std::isfinite(px) && std::isfinite(py);
 }
 
 std::optional<HeightGrid> loadHeightGrid(const std::string& path, std::string& why) {
-  GDALDatasetH ds = openRaster(path, why);
+  const GdalLibrary* gd = nullptr;
+  GDALDatasetH ds = openRaster(path, gd, why);
   if (!ds) return std::nullopt;
   std::optional<HeightGrid> grid;
-  const int nx = GDALGetRasterXSize(ds), ny = GDALGetRasterYSize(ds);
-  if (GDALGetRasterCount(ds) < 1) {
+  const int nx = gd->rasterXSize(ds), ny = gd->rasterYSize(ds);
+  if (gd->rasterCount(ds) < 1) {
     why = "the raster has no band";
   } else if (nx < 2 || ny < 2 || static_cast<long long>(nx) * ny > 64LL * 1024 * 1024) {
     why = "the raster is " + std::to_string(nx) + " x " + std::to_string(ny) +
@@ -95,12 +103,12 @@ std::optional<HeightGrid> loadHeightGrid(const std::string& path, std::string& w
     g.nx = nx;
     g.ny = ny;
     g.height.resize(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
-    GDALRasterBandH band = GDALGetRasterBand(ds, 1);
-    const CPLErr err = GDALRasterIO(band, GF_Read, 0, 0, nx, ny, g.height.data(), nx, ny, GDT_Float64, 0, 0);
+    GDALRasterBandH band = gd->rasterBand(ds, 1);
+    const CPLErr err = gd->rasterIO(band, GF_Read, 0, 0, nx, ny, g.height.data(), nx, ny, GDT_Float64, 0, 0);
     // a height that is no number would reach the physics as one (NaN or infinite contacts)
     const auto bad = std::find_if(g.height.begin(), g.height.end(), [](double h) { return !std::isfinite(h); });
     if (err != CE_None) {
-      why = CPLGetLastErrorMsg()[0] ? CPLGetLastErrorMsg() : "reading the raster failed";
+      why = lastError(*gd, "reading the raster failed");
     } else if (bad != g.height.end()) {
       const auto at = static_cast<std::size_t>(bad - g.height.begin());
       why = "the height at column " + std::to_string(at % static_cast<std::size_t>(nx)) + ", row " +
@@ -110,8 +118,8 @@ std::optional<HeightGrid> loadHeightGrid(const std::string& path, std::string& w
       grid = std::move(g);
     }
   }
-  GDALClose(ds);
-  CPLPopErrorHandler();
+  gd->close(ds);
+  gd->popErrorHandler();
   return grid;
 }
 
