@@ -295,9 +295,15 @@ class Parallel {
       return;
     }
     // the common case first: the initial state reached from every state, one component
-    if (reachingStart(ids, s0, out.states) == out.states) {
+    std::vector<std::uint64_t> reach;
+    if (reachingStart(ids, s0, out.states, reach) == out.states) {
       out.reversible = true;
       out.live = std::all_of(out.fired.begin(), out.fired.end(), [](bool f) { return f; });
+      return;
+    }
+    out.reversible = false;
+    if (missesATransition(ids, reach)) {
+      out.live = false;
       return;
     }
     std::vector<std::uint32_t> rindex;  // read at random: on huge pages
@@ -373,6 +379,48 @@ class Parallel {
     out.reversible = bottoms == 1 && root_bottom;
   }
 
+  /// Whether some state that cannot reach the start (unset in `reach`) leads only to states
+  /// in which some transition is never enabled: then the net is not live. A seeded walk from
+  /// the first such state (its successors cannot reach the start either) goes deep, towards a
+  /// bottom component, and the states it reaches from there are searched breadth first, until
+  /// every transition was seen enabled (no answer: false) or none is left. Costs a bit per
+  /// state and the states searched; the strongly connected components are the fallback.
+  bool missesATransition(std::uint64_t ids, const std::vector<std::uint64_t>& reach) {
+    auto isSet = [](const std::vector<std::uint64_t>& bits, std::uint32_t g) { return ((bits[g >> 6] >> (g & 63)) & 1) != 0; };
+    std::uint32_t v = 0xffffffffu;
+    forEachRun([&](std::uint32_t g, const std::uint32_t*, const std::uint32_t*) {
+      if (v == 0xffffffffu && !isSet(reach, g)) v = g;
+    });
+    if (v == 0xffffffffu) return false;
+    // the walk (which state it starts from depends on the threads' timing; the answer does
+    // not: where this finds nothing, the components decide)
+    std::uint64_t seed = 0x9e3779b97f4a7c15ULL;
+    for (int step = 0; step < (1 << 16) && succBegin(v) != succEnd(v); ++step) {
+      seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+      const auto n = static_cast<std::uint64_t>(succEnd(v) - succBegin(v));
+      v = succBegin(v)[((seed >> 33) * n) >> 31];
+    }
+    const std::size_t transitions = net_.transitions().size();
+    std::vector<bool> fires(transitions, false);
+    std::vector<TransitionId> candidates;
+    std::vector<std::uint64_t> seen((ids + 63) / 64, 0);
+    std::vector<std::uint32_t> queue{v};
+    seen[v >> 6] |= std::uint64_t{1} << (v & 63);
+    std::size_t fire = 0;
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const std::uint32_t w = queue[head];
+      fire += markEnabled(firing_, candidates_, marking(w), fires, candidates);
+      if (fire == transitions) return false;
+      for (const std::uint32_t* e = succBegin(w); e != succEnd(w); ++e) {
+        if (isSet(seen, *e)) continue;
+        seen[*e >> 6] |= std::uint64_t{1} << (*e & 63);
+        queue.push_back(*e);
+      }
+    }
+    peak_ = std::max(peak_, bytes() + seen.size() * 8 + reach.size() * 8 + queue.capacity() * 4);
+    return true;
+  }
+
   /// Calls `f(v, begin, end)` for every state expanded: its global id and its successors'.
   template <typename F>
   void forEachRun(F&& f) const {
@@ -385,13 +433,13 @@ class Parallel {
     }
   }
 
-  /// The number of states with a path to `s0`. First sweeps over the runs in the order they
-  /// were written, each marking a state one of whose successors is marked: a search from the
-  /// start tends to write a state after those on its way back, so that a few sweeps mark
-  /// them all. Where a sweep marks less than a hundredth of the states left, breadth first
+  /// The number of states with a path to `s0`, each set in `reach` (a bit per id). First
+  /// sweeps over the runs in the order they were written, each marking a state one of whose
+  /// successors is marked: a search from the start tends to write a state after those on its
+  /// way back, so that a few sweeps mark them all. Where a sweep marks less than a hundredth of the states left, breadth first
   /// from `s0` over the edges reversed (4 bytes an edge more, for the time it takes).
-  std::uint64_t reachingStart(std::uint64_t ids, std::uint32_t s0, std::uint64_t states) {
-    std::vector<std::uint64_t> reach((ids + 63) / 64, 0);
+  std::uint64_t reachingStart(std::uint64_t ids, std::uint32_t s0, std::uint64_t states, std::vector<std::uint64_t>& reach) {
+    reach.assign((ids + 63) / 64, 0);
     auto isMarked = [&](std::uint32_t g) { return ((reach[g >> 6] >> (g & 63)) & 1) != 0; };
     auto mark = [&](std::uint32_t g) { reach[g >> 6] |= std::uint64_t{1} << (g & 63); };
     mark(s0);

@@ -400,8 +400,9 @@ TEST(Analysis, ThreadsDecideReversibilityOnALongRingWithAndWithoutAWayOut) {
   // a token goes round a ring of 300 places; the way back to the start is 299 firings long,
   // so that the threads' sweeps over their arrays make little headway and they search
   // backwards over the edges reversed. With a way out of the ring into a cycle of two places
-  // (never back), the net is neither reversible nor live and the components decide; without
-  // it, every marking is on the ring: reversible and live.
+  // (never back), the net is neither reversible nor live: the states past the way out, which
+  // cannot reach the start, never enable a ring transition; without it, every marking is on
+  // the ring: reversible and live.
   for (const bool way_out : {false, true}) {
     NetBuilder b;
     constexpr int kRing = 300;
@@ -444,6 +445,35 @@ TEST(Analysis, ThreadsDecideReversibilityOnALongRingWithAndWithoutAWayOut) {
       EXPECT_FALSE(s.deadlock) << threads;
       EXPECT_EQ(s.dead_markings, 0u) << threads;
     }
+  }
+}
+
+TEST(Analysis, ThreadsFindANetLiveThatIsNotReversible) {
+  // two tokens in a; `move` takes one to b, `back` two from b and gives one to a: (2, 0) ->
+  // (1, 1) <-> (0, 2). The start is never reached again, but the last two markings enable
+  // both transitions in turn: live. The states that cannot reach the start miss no
+  // transition, so the threads' strongly connected components decide.
+  NetBuilder b;
+  const auto a = b.addPlace("a");
+  b.setSlot(a, kDefaultSlot, SlotKind::Control, kUnbounded, 2);
+  const auto bb = b.addPlace("b");
+  const auto move = b.addTransition("move");
+  b.addInput(a, move);
+  b.addOutput(move, bb);
+  const auto back = b.addTransition("back");
+  b.addInput(bb, back, kDefaultSlot, 2);
+  b.addOutput(back, a);
+  b.addOutput(back, bb);
+  const auto net = b.freeze();
+  for (const unsigned threads : {1u, 2u, 3u}) {
+    ExploreOptions options;
+    options.threads = threads;
+    const auto s = explore(*net, options);
+    EXPECT_EQ(s.states, 3u) << threads;
+    EXPECT_EQ(s.edges, 3u) << threads;
+    EXPECT_TRUE(s.live) << threads;
+    EXPECT_FALSE(s.reversible) << threads;
+    EXPECT_FALSE(s.deadlock) << threads;
   }
 }
 
