@@ -6,6 +6,7 @@
 #include <limits>
 #include <memory>
 #include <unordered_map>
+#include <utility>
 
 #include "gdpn/net/invariants.h"
 #include "detail/marking_store.h"
@@ -37,11 +38,34 @@ class Search {
   bool accelerate(std::uint64_t* key);
   /// A hash of the packed counts of the slots that are never accelerated.
   std::uint64_t boundedHash(const std::uint64_t* m) const;
+  /// Over the slots that may be accelerated: how many are ω, and the sum of the others'
+  /// counts. Compared in that order it grows strictly with the counts: a marking below `m`
+  /// on those slots (ω above any count) has a smaller one.
+  /// `sketch`: 16 fields of 4 bits, slot i of accel_slots_ in field i % 16, each the most
+  /// of min(count, 7) over its slots (ω: 7); below `m`, every field is at most m's.
+  struct Weight {
+    std::uint64_t omegas = 0, counts = 0;
+    std::uint64_t sketch = 0;
+    /// Whether a marking of weight `*this` may be below one of weight `w` (and not equal).
+    bool mayBeBelow(const Weight& w) const {
+      constexpr std::uint64_t kHigh = 0x8888888888888888ULL;
+      if (std::pair(omegas, counts) >= std::pair(w.omegas, w.counts)) return false;
+      // each field of w, its high bit set, less this one's: the high bit stays where w's is
+      // no less (no borrow crosses: fields hold 0 to 7)
+      return (((w.sketch | kHigh) - sketch) & kHigh) == kHigh;
+    }
+  };
+  /// `values`, when given, gets the counts of those slots (kW for ω), in accel_slots_' order.
+  Weight acceleratedWeight(const std::uint64_t* m, std::int64_t* values = nullptr) const;
+  /// Puts the packed marking `m` on top of the search path, or takes the top one off.
+  void pushPath(const std::uint64_t* m);
+  void popPath();
   /// The bits of each word that hold slots never accelerated, for the current layout; and
   /// the path's hashes again after the layout changed.
   void boundedParts();
-  /// Notes the new state `s`, reached from `from` by `t` (from == s: the initial state).
-  void noteNew(StateId s, StateId from, TransitionId t);
+  /// Notes the new state `s`, reached from `from` by `t` (from == s: the initial state);
+  /// `accelerated`: its marking is not the firing's but got ω.
+  void noteNew(StateId s, StateId from, TransitionId t, bool accelerated);
   void finishComponent(StateId v);
   /// A shortest firing sequence to a dead state: breadth first over the states stored,
   /// ending at the first dead one it generates.
@@ -76,9 +100,14 @@ class Search {
   std::vector<std::size_t> accel_slots_;  // those place slots
   bool cover_ = false;        // some place slot has no structural bound
   std::vector<std::uint64_t> path_;  // packed markings on the search path (cover_ only)
-  std::vector<std::uint64_t> path_hash_;  // their boundedHash
+  std::vector<std::uint64_t> path_hash_;  // per position on the path: boundedHash
+  struct OnPath {
+    Weight weight;           // acceleratedWeight
+    std::uint32_t position;  // on the path
+  };
   std::vector<std::uint64_t> bounded_mask_;  // per word: the bits of slots never accelerated
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> on_path_;  // boundedHash: positions on the path
+  // boundedHash: the markings on the path with it, bottom first (scanned in a row)
+  std::unordered_map<std::uint64_t, std::vector<OnPath>> on_path_;
   std::uint64_t edges_count_ = 0;
   ExploreStop stop_ = ExploreStop::Done;
 
@@ -102,6 +131,7 @@ class Search {
   std::vector<TransitionId> succ_t_;
   std::vector<TransitionId> candidates_now_;
   std::vector<std::int64_t> unpacked_;
+  std::vector<bool> accel_omega_;
   std::vector<bool> union_;
   // answers
   std::unique_ptr<Observed> seen_;
@@ -165,10 +195,45 @@ void Search::boundedParts() {
     if (!accel_[k]) bounded_mask_[L.field(k).word] |= L.field(k).mask << L.field(k).shift;
   }
   on_path_.clear();
-  for (std::size_t i = 0; i < path_hash_.size(); ++i) {
-    path_hash_[i] = boundedHash(path_.data() + i * L.words());
-    on_path_[path_hash_[i]].push_back(static_cast<std::uint32_t>(i));
+  const std::vector<std::uint64_t> path = std::move(path_);
+  const std::size_t n = path_hash_.size();
+  path_.clear();
+  path_hash_.clear();
+  for (std::size_t i = 0; i < n; ++i) pushPath(path.data() + i * L.words());
+}
+
+Search::Weight Search::acceleratedWeight(const std::uint64_t* m, std::int64_t* values) const {
+  const Layout& L = store_->layout();
+  Weight w;
+  for (std::size_t i = 0; i < accel_slots_.size(); ++i) {
+    const std::int64_t v = L.value(m, accel_slots_[i]);
+    if (values) values[i] = v;
+    if (v == kW) {
+      ++w.omegas;
+    } else {
+      w.counts += static_cast<std::uint64_t>(v);  // below 2^32 each: no overflow
+    }
+    const unsigned shift = 4 * static_cast<unsigned>(i % 16);
+    const std::uint64_t c = v == kW ? 7 : static_cast<std::uint64_t>(std::min<std::int64_t>(v, 7));
+    if (c > ((w.sketch >> shift) & 7)) w.sketch = (w.sketch & ~(std::uint64_t{15} << shift)) | (c << shift);
   }
+  return w;
+}
+
+void Search::pushPath(const std::uint64_t* m) {
+  const std::size_t words = store_->words();
+  path_.insert(path_.end(), m, m + words);
+  const std::uint64_t h = boundedHash(m);
+  on_path_[h].push_back({acceleratedWeight(m), static_cast<std::uint32_t>(path_hash_.size())});
+  path_hash_.push_back(h);
+}
+
+void Search::popPath() {
+  path_.resize(path_.size() - store_->words());
+  const auto bucket = on_path_.find(path_hash_.back());
+  bucket->second.pop_back();
+  if (bucket->second.empty()) on_path_.erase(bucket);
+  path_hash_.pop_back();
 }
 
 std::uint64_t Search::boundedHash(const std::uint64_t* m) const {
@@ -183,34 +248,38 @@ std::uint64_t Search::boundedHash(const std::uint64_t* m) const {
 bool Search::accelerate(std::uint64_t* key) {
   // a marking on the path can be below the key only where it agrees with it on every slot
   // that is never accelerated: only those with the same such part are compared, on the
-  // slots that may be accelerated
+  // slots that may be accelerated, and only where their weight (acceleratedWeight) allows it
   const auto bucket = on_path_.find(boundedHash(key));
   if (bucket == on_path_.end()) return false;
   const Layout& L = store_->layout();
   const std::size_t words = L.words();
-  unpacked_.resize(L.width());
-  L.unpack(key, unpacked_.data());
+  // the key's counts on those slots; a marking of less weight that is nowhere above them is
+  // below the key (and not equal to it)
   std::vector<std::int64_t>& m = unpacked_;
+  m.resize(accel_slots_.size());
+  const Weight weight = acceleratedWeight(key, m.data());
+  std::vector<bool>& omega = accel_omega_;
+  omega.assign(accel_slots_.size(), false);
   bool changed = false;
-  for (const std::uint32_t at : bucket->second) {
-    const std::uint64_t* a = path_.data() + static_cast<std::size_t>(at) * words;
-    bool ge = true, gt = false;
-    for (std::size_t i = 0; i < accel_slots_.size() && ge; ++i) {
-      const std::size_t k = accel_slots_[i];
-      const std::int64_t ak = L.value(a, k);
-      ge = m[k] >= ak;
-      gt = gt || m[k] > ak;
-    }
-    if (!ge || !gt) continue;
+  for (const OnPath& below : bucket->second) {
+    if (!below.weight.mayBeBelow(weight)) continue;
+    const std::uint64_t* a = path_.data() + static_cast<std::size_t>(below.position) * words;
+    bool ge = true;
+    for (std::size_t i = 0; i < accel_slots_.size() && ge; ++i) ge = m[i] >= L.value(a, accel_slots_[i]);
     for (std::size_t w = 0; w < words && ge; ++w) ge = ((a[w] ^ key[w]) & bounded_mask_[w]) == 0;
     if (!ge) continue;
-    for (const std::size_t k : accel_slots_) {
-      if (m[k] > L.value(a, k)) m[k] = kW, changed = true;
+    for (std::size_t i = 0; i < accel_slots_.size(); ++i) {
+      if (m[i] > L.value(a, accel_slots_[i])) omega[i] = true, changed = true;
     }
   }
   if (!changed) return false;
+  std::vector<std::int64_t> all(L.width());
+  L.unpack(key, all.data());
+  for (std::size_t i = 0; i < accel_slots_.size(); ++i) {
+    if (omega[i]) all[accel_slots_[i]] = kW;
+  }
   std::size_t bad = 0;
-  L.pack(m.data(), key, bad);  // ω always fits
+  L.pack(all.data(), key, bad);  // ω always fits
   return true;
 }
 
@@ -242,10 +311,11 @@ Search::Expand Search::expand(StateId v) {
   for (std::size_t i = 0; i < succ_t_.size(); ++i) {
     std::uint64_t* key = keys_.data() + i * words;
     std::uint64_t h = hashes_[i];
-    if (cover_ && store_->find(key, h) == kNone && accelerate(key)) h = store_->hash(key);
+    const bool accelerated = cover_ && store_->find(key, h) == kNone && accelerate(key);
+    if (accelerated) h = store_->hash(key);
     bool added = false;
     const StateId w = store_->insert(key, h, added);
-    if (added) noteNew(w, v, succ_t_[i]);
+    if (added) noteNew(w, v, succ_t_[i], accelerated);
     fired_[succ_t_[i]] = true;
     // an edge to a state already visited is settled now; the others wait in edges_
     const std::uint32_t rw = rindex(w);
@@ -273,20 +343,27 @@ Search::Expand Search::expand(StateId v) {
   return Expand::Ok;
 }
 
-void Search::noteNew(StateId s, StateId from, TransitionId t) {
+void Search::noteNew(StateId s, StateId from, TransitionId t, bool accelerated) {
   // the tokens in a marking lie beside it (the upper half of its extra word), so that a
   // successor's are its parent's and what the transition changes, and only the slots it
-  // touches need noting; where acceleration or a large count stands in the way, every slot
+  // touches need noting; where acceleration, ω on a slot it touches or a large count stands
+  // in the way, every slot (the tokens counted leave out ω)
   const Layout& L = store_->layout();
   const std::uint64_t parent = store_->extra(from) >> 32;
-  if (from != s && !cover_ && parent != kUnknownTotal) {
-    const std::int64_t total = static_cast<std::int64_t>(parent) + token_delta_[t];
+  auto touchesOmega = [&] {
+    for (const Term& term : net_.termsOf(t)) {
+      if ((term.kind == TermKind::Input || term.kind == TermKind::Output) && L.value(store_->at(s), term.place_slot) == kW) return true;
+    }
+    return false;
+  };
+  std::int64_t total = 0;
+  if (from != s && parent != kUnknownTotal && !accelerated && !(cover_ && touchesOmega())) {
+    total = static_cast<std::int64_t>(parent) + token_delta_[t];
     seen_->noteChange(L, store_->at(s), net_.termsOf(t), total);
-    store_->extra(s) = static_cast<std::uint64_t>(std::min<std::int64_t>(total, kUnknownTotal)) << 32;
   } else {
-    const std::int64_t total = seen_->note(L, store_->at(s));
-    store_->extra(s) = (cover_ ? kUnknownTotal : static_cast<std::uint64_t>(std::min<std::int64_t>(total, kUnknownTotal))) << 32;
+    total = seen_->note(L, store_->at(s));
   }
+  store_->extra(s) = static_cast<std::uint64_t>(std::min<std::int64_t>(total, kUnknownTotal)) << 32;
   leaves_.push_back(false);
 }
 
@@ -428,16 +505,11 @@ StateSpace Search::run() {
   fired_.assign(transitions, false);
   bool added = false;
   store_->insert(key.data(), store_->hash(key.data()), added);
-  noteNew(0, 0, 0);
+  noteNew(0, 0, 0, false);
 
   auto visit = [&](StateId v) -> bool {
     setRindex(v, next_index_++);
-    if (cover_) {
-      const std::size_t words = store_->words();
-      path_.insert(path_.end(), store_->at(v), store_->at(v) + words);
-      path_hash_.push_back(boundedHash(path_.data() + path_.size() - words));
-      on_path_[path_hash_.back()].push_back(static_cast<std::uint32_t>(path_hash_.size() - 1));
-    }
+    if (cover_) pushPath(store_->at(v));
     for (;;) {
       const Expand e = expand(v);
       if (e == Expand::Ok) return true;
@@ -481,13 +553,7 @@ StateSpace Search::run() {
     const StateId v = f.state();
     const bool root = f.root();
     frames_.shrink(frames_.size() - 1);
-    if (cover_) {
-      path_.resize(path_.size() - store_->words());
-      const auto bucket = on_path_.find(path_hash_.back());
-      bucket->second.pop_back();
-      if (bucket->second.empty()) on_path_.erase(bucket);
-      path_hash_.pop_back();
-    }
+    if (cover_) popPath();
     if (root) {
       finishComponent(v);
     } else {
