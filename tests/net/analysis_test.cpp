@@ -333,6 +333,40 @@ TEST(Analysis, AnUnboundedNetGivesACoverabilityGraphNamingItsPlaces) {
   EXPECT_EQ(s.states, 4u);
 }
 
+TEST(Analysis, ARoundThatFillsTwentyBuffersAcceleratesThemAllAtOnce) {
+  // a token goes round s0 -> s1 -> ... -> s20 -> s0, step i putting one token into buffer i:
+  // back at s0 every buffer holds one more than at the start, so all twenty become ω at
+  // once (more slots than the search's sketch has fields: 16). The first round's markings
+  // (token at s_k, k buffers holding one) and the same round with every buffer ω: 42 states
+  // and 42 edges; the most tokens in one marking, ω not counted, is 21 (s20 and 20 buffers).
+  constexpr int kSteps = 20;
+  NetBuilder b;
+  std::vector<PlaceId> s, buffer;
+  for (int i = 0; i <= kSteps; ++i) {
+    s.push_back(b.addPlace("s" + std::to_string(i)));
+    b.setSlot(s.back(), kDefaultSlot, SlotKind::Control, kUnbounded, i == 0 ? 1 : 0);
+  }
+  for (int i = 0; i < kSteps; ++i) {
+    buffer.push_back(b.addPlace("buffer" + std::to_string(i)));
+    const auto step = b.addTransition("step" + std::to_string(i));
+    b.addInput(s[static_cast<std::size_t>(i)], step);
+    b.addOutput(step, s[static_cast<std::size_t>(i) + 1]);
+    b.addOutput(step, buffer.back());
+  }
+  const auto back = b.addTransition("back");
+  b.addInput(s.back(), back);
+  b.addOutput(back, s.front());
+  const auto space = explore(*b.freeze());
+  EXPECT_TRUE(space.complete);
+  EXPECT_FALSE(space.bounded);
+  EXPECT_EQ(space.states, 42u);
+  EXPECT_EQ(space.edges, 42u);
+  EXPECT_EQ(space.unbounded_places, buffer);
+  for (const PlaceId p : s) EXPECT_EQ(space.place_bound[p], 1) << p;
+  EXPECT_EQ(space.max_marking, kSteps + 1);
+  EXPECT_FALSE(space.one_safe);
+}
+
 TEST(Analysis, AProducerWithoutConsumerIsUnboundedOnlyWhereItProduces) {
   // the classic unbounded producer: p0 -> produce -> p0 + buffer; consume takes buffer and
   // a free token: the buffer is unbounded, the free place is not
