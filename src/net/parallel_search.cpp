@@ -421,23 +421,37 @@ class Parallel {
     return true;
   }
 
-  /// Calls `f(v, begin, end)` for every state expanded: its global id and its successors'.
+  /// Calls `f(v, begin, end)` for every state shard `s` expanded: its global id and its
+  /// successors'.
+  template <typename F>
+  static void forEachRunOf(const Shard& s, F&& f) {
+    const std::size_t chunks = (s.succ.size() + Succ::chunkElements() - 1) / Succ::chunkElements();
+    for (std::size_t c = 0; c < chunks; ++c) {
+      const auto [data, size] = s.succ.chunk(c);
+      for (std::size_t i = 0; i < size && data[i] != kPad; i += 2 + data[i]) f(data[i + 1], data + i + 2, data + i + 2 + data[i]);
+    }
+  }
+  /// The same for every state expanded.
   template <typename F>
   void forEachRun(F&& f) const {
-    for (const Shard& s : shards_) {
-      const std::size_t chunks = (s.succ.size() + Succ::chunkElements() - 1) / Succ::chunkElements();
-      for (std::size_t c = 0; c < chunks; ++c) {
-        const auto [data, size] = s.succ.chunk(c);
-        for (std::size_t i = 0; i < size && data[i] != kPad; i += 2 + data[i]) f(data[i + 1], data + i + 2, data + i + 2 + data[i]);
-      }
-    }
+    for (const Shard& s : shards_) forEachRunOf(s, f);
+  }
+  /// Runs `f(me)` once on each of the threads (`me` from 0; the calling thread is the last)
+  /// and waits for them all.
+  template <typename F>
+  void onThreads(F&& f) const {
+    std::vector<std::thread> pool;
+    for (unsigned me = 0; me + 1 < threads_; ++me) pool.emplace_back([&f, me] { f(me); });
+    f(threads_ - 1);
+    for (auto& t : pool) t.join();
   }
 
   /// The number of states with a path to `s0`, each set in `reach` (a bit per id). First
   /// sweeps over the runs in the order they were written, each marking a state one of whose
   /// successors is marked: a search from the start tends to write a state after those on its
   /// way back, so that a few sweeps mark them all. Where a sweep marks less than a hundredth of the states left, breadth first
-  /// from `s0` over the edges reversed (4 bytes an edge more, for the time it takes).
+  /// from `s0` over the edges reversed (4 bytes an edge more, for the time it takes), the
+  /// threads sharing both the reversing (each its own shard's edges) and each level.
   std::uint64_t reachingStart(std::uint64_t ids, std::uint32_t s0, std::uint64_t states, std::vector<std::uint64_t>& reach) {
     reach.assign((ids + 63) / 64, 0);
     auto isMarked = [&](std::uint32_t g) { return ((reach[g >> 6] >> (g & 63)) & 1) != 0; };
@@ -459,36 +473,60 @@ class Parallel {
       if (marked == before) return marked;
       if ((marked - before) * 100 < states - before) break;
     }
-    // the edges reversed: the predecessors of id g in preds[first[g] .. first[g + 1])
+    // the edges reversed: the predecessors of id g in preds[first[g] .. first[g + 1]); the
+    // threads count and place them with atomic additions (the order among a state's
+    // predecessors varies, the states reached do not)
+    using Atomic64 = std::atomic_ref<std::uint64_t>;
     std::vector<std::uint64_t> first;
     core::reserveLarge(first, ids + 1);
     first.assign(ids + 1, 0);
-    std::uint64_t edges = 0;
-    forEachRun([&](std::uint32_t, const std::uint32_t* begin, const std::uint32_t* end) {
-      for (const std::uint32_t* e = begin; e != end; ++e) ++first[*e + 1];
-      edges += static_cast<std::uint64_t>(end - begin);
+    onThreads([&](unsigned me) {
+      forEachRunOf(shards_[me], [&](std::uint32_t, const std::uint32_t* begin, const std::uint32_t* end) {
+        for (const std::uint32_t* e = begin; e != end; ++e) Atomic64(first[*e + 1]).fetch_add(1, std::memory_order_relaxed);
+      });
     });
     for (std::size_t g = 0; g < ids; ++g) first[g + 1] += first[g];
+    const std::uint64_t edges = first[ids];
     std::vector<std::uint32_t> preds;
     core::reserveLarge(preds, edges);
     preds.resize(edges);
     peak_ = std::max(peak_, bytes() + reach.size() * 8 + first.size() * 8 + edges * 4);
-    forEachRun([&](std::uint32_t v, const std::uint32_t* begin, const std::uint32_t* end) {
-      for (const std::uint32_t* e = begin; e != end; ++e) preds[first[*e]++] = v;
+    onThreads([&](unsigned me) {
+      forEachRunOf(shards_[me], [&](std::uint32_t v, const std::uint32_t* begin, const std::uint32_t* end) {
+        for (const std::uint32_t* e = begin; e != end; ++e) preds[Atomic64(first[*e]).fetch_add(1, std::memory_order_relaxed)] = v;
+      });
     });
-    // first[g] now holds where g's predecessors end: they begin where g - 1's end
-    std::vector<std::uint32_t> queue;
-    queue.reserve(states - marked);
+    // first[g] now holds where g's predecessors end: they begin where g - 1's end. Breadth
+    // first, a level at a time: the threads take the level's states in blocks and mark
+    // their predecessors with an atomic or, each keeping those it was first to mark
+    std::vector<std::uint32_t> level;
+    level.reserve(marked);
     forEachRun([&](std::uint32_t v, const std::uint32_t*, const std::uint32_t*) {
-      if (isMarked(v)) queue.push_back(v);
+      if (isMarked(v)) level.push_back(v);
     });
-    for (std::size_t head = 0; head < queue.size(); ++head) {
-      const std::uint32_t w = queue[head];
-      for (std::uint64_t k = w == 0 ? 0 : first[w - 1]; k < first[w]; ++k) {
-        if (isMarked(preds[k])) continue;
-        mark(preds[k]);
-        ++marked;
-        queue.push_back(preds[k]);
+    std::vector<std::vector<std::uint32_t>> next(threads_);
+    while (!level.empty()) {
+      std::atomic<std::size_t> taken{0};
+      onThreads([&](unsigned me) {
+        constexpr std::size_t kBlock = 1024;
+        for (std::size_t begin; (begin = taken.fetch_add(kBlock, std::memory_order_relaxed)) < level.size();) {
+          for (std::size_t i = begin; i < std::min(level.size(), begin + kBlock); ++i) {
+            const std::uint32_t w = level[i];
+            for (std::uint64_t k = w == 0 ? 0 : first[w - 1]; k < first[w]; ++k) {
+              const std::uint32_t g = preds[k];
+              const std::uint64_t bit = std::uint64_t{1} << (g & 63);
+              Atomic64 word(reach[g >> 6]);
+              if ((word.load(std::memory_order_relaxed) & bit) != 0) continue;
+              if ((word.fetch_or(bit, std::memory_order_relaxed) & bit) == 0) next[me].push_back(g);
+            }
+          }
+        }
+      });
+      level.clear();
+      for (auto& n : next) {
+        marked += n.size();
+        level.insert(level.end(), n.begin(), n.end());
+        n.clear();
       }
     }
     return marked;
