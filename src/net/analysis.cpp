@@ -55,8 +55,10 @@ class Search {
       return (((w.sketch | kHigh) - sketch) & kHigh) == kHigh;
     }
   };
-  /// `values`, when given, gets the counts of those slots (kW for ω), in accel_slots_' order.
-  Weight acceleratedWeight(const std::uint64_t* m, std::int64_t* values = nullptr) const;
+  /// `values` gets the counts of those slots (kW for ω), in accel_slots_' order.
+  Weight acceleratedWeight(const std::uint64_t* m, std::int64_t* values) const;
+  /// The weight of those counts, given in accel_slots_' order.
+  Weight weightOf(const std::int64_t* values) const;
   /// Puts the packed marking `m` on top of the search path, or takes the top one off.
   void pushPath(const std::uint64_t* m);
   void popPath();
@@ -131,7 +133,6 @@ class Search {
   std::vector<TransitionId> succ_t_;
   std::vector<TransitionId> candidates_now_;
   std::vector<std::int64_t> unpacked_;
-  std::vector<bool> accel_omega_;
   std::vector<bool> union_;
   // answers
   std::unique_ptr<Observed> seen_;
@@ -204,10 +205,14 @@ void Search::boundedParts() {
 
 Search::Weight Search::acceleratedWeight(const std::uint64_t* m, std::int64_t* values) const {
   const Layout& L = store_->layout();
+  for (std::size_t i = 0; i < accel_slots_.size(); ++i) values[i] = L.value(m, accel_slots_[i]);
+  return weightOf(values);
+}
+
+Search::Weight Search::weightOf(const std::int64_t* values) const {
   Weight w;
   for (std::size_t i = 0; i < accel_slots_.size(); ++i) {
-    const std::int64_t v = L.value(m, accel_slots_[i]);
-    if (values) values[i] = v;
+    const std::int64_t v = values[i];
     if (v == kW) {
       ++w.omegas;
     } else {
@@ -224,7 +229,8 @@ void Search::pushPath(const std::uint64_t* m) {
   const std::size_t words = store_->words();
   path_.insert(path_.end(), m, m + words);
   const std::uint64_t h = boundedHash(m);
-  on_path_[h].push_back({acceleratedWeight(m), static_cast<std::uint32_t>(path_hash_.size())});
+  unpacked_.resize(accel_slots_.size());
+  on_path_[h].push_back({acceleratedWeight(m, unpacked_.data()), static_cast<std::uint32_t>(path_hash_.size())});
   path_hash_.push_back(h);
 }
 
@@ -254,12 +260,11 @@ bool Search::accelerate(std::uint64_t* key) {
   const Layout& L = store_->layout();
   const std::size_t words = L.words();
   // the key's counts on those slots; a marking of less weight that is nowhere above them is
-  // below the key (and not equal to it)
+  // below the key (and not equal to it). Each one below makes ω where the key is greater, and
+  // the markings after it (bottom first) are compared with the key so accelerated
   std::vector<std::int64_t>& m = unpacked_;
   m.resize(accel_slots_.size());
-  const Weight weight = acceleratedWeight(key, m.data());
-  std::vector<bool>& omega = accel_omega_;
-  omega.assign(accel_slots_.size(), false);
+  Weight weight = acceleratedWeight(key, m.data());
   bool changed = false;
   for (const OnPath& below : bucket->second) {
     if (!below.weight.mayBeBelow(weight)) continue;
@@ -269,15 +274,14 @@ bool Search::accelerate(std::uint64_t* key) {
     for (std::size_t w = 0; w < words && ge; ++w) ge = ((a[w] ^ key[w]) & bounded_mask_[w]) == 0;
     if (!ge) continue;
     for (std::size_t i = 0; i < accel_slots_.size(); ++i) {
-      if (m[i] > L.value(a, accel_slots_[i])) omega[i] = true, changed = true;
+      if (m[i] > L.value(a, accel_slots_[i])) m[i] = kW, changed = true;
     }
+    weight = weightOf(m.data());
   }
   if (!changed) return false;
   std::vector<std::int64_t> all(L.width());
   L.unpack(key, all.data());
-  for (std::size_t i = 0; i < accel_slots_.size(); ++i) {
-    if (omega[i]) all[accel_slots_[i]] = kW;
-  }
+  for (std::size_t i = 0; i < accel_slots_.size(); ++i) all[accel_slots_[i]] = m[i];
   std::size_t bad = 0;
   L.pack(all.data(), key, bad);  // ω always fits
   return true;

@@ -2,11 +2,12 @@
 // (a store of its own), expands them, and sends each successor to its owner's inbox; the
 // search ends when no marking is in flight. The graph is written as it is found: each state
 // expanded reserves a run of slots for its successors (in the order their transitions are
-// found) and each slot gets its successor's id from the successor's owner once stored. One
-// thread then decides liveness and reversibility over those arrays (a dead state decides
-// both; a way back to the start from every state decides both; otherwise the strongly
-// connected components) and finds a shortest path to a deadlock. The answers are the same as
-// the sequential search's.
+// found) and each slot gets its successor's id from the successor's owner once stored. Then
+// liveness and reversibility are decided over those arrays: a dead state decides both; a way
+// back to the start from every state decides both (found by the threads together); a
+// transition never enabled past a state that cannot get back decides liveness; otherwise one
+// thread finds the strongly connected components. A dead state gets a shortest path to it.
+// The answers are the same as the sequential search's.
 //
 // A thread expands its states in batches: it makes every successor of a batch first, then
 // looks them up in its table with the slots and the markings of the lookups ahead fetched
@@ -282,7 +283,8 @@ class Parallel {
   /// Liveness and reversibility, and a shortest path to a dead state when there is one.
   /// Where a state is dead, the net is neither live (unless it has no transition) nor
   /// reversible (unless the dead state is the only one); where every state leads back to the
-  /// start, it is reversible, and live when quasi-live; otherwise the strongly connected
+  /// start, it is reversible, and live when quasi-live; otherwise it is not reversible, and
+  /// not live where missesATransition() says so; failing that, the strongly connected
   /// components over the arrays decide (Pearce's variant of Tarjan's algorithm, as in the
   /// sequential search).
   void components(StateSpace& out, std::uint64_t ids) {
@@ -407,17 +409,21 @@ class Parallel {
     std::vector<std::uint32_t> queue{v};
     seen[v >> 6] |= std::uint64_t{1} << (v & 63);
     std::size_t fire = 0;
+    auto held = [&] { peak_ = std::max(peak_, bytes() + seen.size() * 8 + reach.size() * 8 + queue.capacity() * 4); };
     for (std::size_t head = 0; head < queue.size(); ++head) {
       const std::uint32_t w = queue[head];
       fire += markEnabled(firing_, candidates_, marking(w), fires, candidates);
-      if (fire == transitions) return false;
+      if (fire == transitions) {
+        held();
+        return false;
+      }
       for (const std::uint32_t* e = succBegin(w); e != succEnd(w); ++e) {
         if (isSet(seen, *e)) continue;
         seen[*e >> 6] |= std::uint64_t{1} << (*e & 63);
         queue.push_back(*e);
       }
     }
-    peak_ = std::max(peak_, bytes() + seen.size() * 8 + reach.size() * 8 + queue.capacity() * 4);
+    held();
     return true;
   }
 
@@ -449,9 +455,10 @@ class Parallel {
   /// The number of states with a path to `s0`, each set in `reach` (a bit per id). First
   /// sweeps over the runs in the order they were written, each marking a state one of whose
   /// successors is marked: a search from the start tends to write a state after those on its
-  /// way back, so that a few sweeps mark them all. Where a sweep marks less than a hundredth of the states left, breadth first
-  /// from `s0` over the edges reversed (4 bytes an edge more, for the time it takes), the
-  /// threads sharing both the reversing (each its own shard's edges) and each level.
+  /// way back, so that a few sweeps mark them all. Where a sweep marks less than a hundredth
+  /// of the states left, breadth first from `s0` over the edges reversed (4 bytes an edge
+  /// more, for the time it takes), the threads sharing both the reversing (each its own
+  /// shard's edges) and each large level.
   std::uint64_t reachingStart(std::uint64_t ids, std::uint32_t s0, std::uint64_t states, std::vector<std::uint64_t>& reach) {
     reach.assign((ids + 63) / 64, 0);
     auto isMarked = [&](std::uint32_t g) { return ((reach[g >> 6] >> (g & 63)) & 1) != 0; };
@@ -504,11 +511,16 @@ class Parallel {
     forEachRun([&](std::uint32_t v, const std::uint32_t*, const std::uint32_t*) {
       if (isMarked(v)) level.push_back(v);
     });
-    std::vector<std::vector<std::uint32_t>> next(threads_);
+    struct alignas(64) Next {
+      std::vector<std::uint32_t> states;  // a thread's share of the next level
+    };
+    std::vector<Next> next(threads_);
+    constexpr std::size_t kBlock = 1024;
     while (!level.empty()) {
       std::atomic<std::size_t> taken{0};
-      onThreads([&](unsigned me) {
-        constexpr std::size_t kBlock = 1024;
+      // a level too small to share is one thread's (no threads started for it)
+      auto share = [&](auto&& f) { level.size() < threads_ * kBlock ? f(0u) : onThreads(f); };
+      share([&](unsigned me) {
         for (std::size_t begin; (begin = taken.fetch_add(kBlock, std::memory_order_relaxed)) < level.size();) {
           for (std::size_t i = begin; i < std::min(level.size(), begin + kBlock); ++i) {
             const std::uint32_t w = level[i];
@@ -517,16 +529,16 @@ class Parallel {
               const std::uint64_t bit = std::uint64_t{1} << (g & 63);
               Atomic64 word(reach[g >> 6]);
               if ((word.load(std::memory_order_relaxed) & bit) != 0) continue;
-              if ((word.fetch_or(bit, std::memory_order_relaxed) & bit) == 0) next[me].push_back(g);
+              if ((word.fetch_or(bit, std::memory_order_relaxed) & bit) == 0) next[me].states.push_back(g);
             }
           }
         }
       });
       level.clear();
       for (auto& n : next) {
-        marked += n.size();
-        level.insert(level.end(), n.begin(), n.end());
-        n.clear();
+        marked += n.states.size();
+        level.insert(level.end(), n.states.begin(), n.states.end());
+        n.states.clear();
       }
     }
     return marked;

@@ -367,6 +367,63 @@ TEST(Analysis, ARoundThatFillsTwentyBuffersAcceleratesThemAllAtOnce) {
   EXPECT_FALSE(space.one_safe);
 }
 
+TEST(Analysis, EachMarkingBelowAcceleratesTheKeyTheOnesBeforeItMade) {
+  // p and q, both without a bound: `make` takes q and gives two p, `use` takes a p and gives a
+  // q. From (0, 1): make -> (2, 0), use -> (1, 1). (1, 1) is above the start on p: (ω, 1);
+  // that is above (2, 0) on q: (ω, ω). Then both transitions loop on it: 3 states, 4 edges.
+  NetBuilder b;
+  const auto p = b.addPlace("p");
+  const auto q = b.addPlace("q");
+  b.setSlot(q, kDefaultSlot, SlotKind::Control, kUnbounded, 1);
+  const auto make = b.addTransition("make");
+  b.addInput(q, make);
+  b.addOutput(make, p, kDefaultSlot, 2);
+  const auto use = b.addTransition("use");
+  b.addInput(p, use);
+  b.addOutput(use, q);
+  const auto space = explore(*b.freeze());
+  EXPECT_TRUE(space.complete);
+  EXPECT_EQ(space.states, 3u);
+  EXPECT_EQ(space.edges, 4u);
+  EXPECT_EQ(space.unbounded_places, (std::vector<PlaceId>{p, q}));
+  EXPECT_FALSE(space.deadlock);
+}
+
+TEST(Analysis, TheTokensOfAMarkingLeaveOutItsOmegaPlaces) {
+  // `grow` keeps a and adds to p: ω at once; `go` takes a and a p to c0, and each step takes
+  // c_i to c_(i+1) and puts five tokens into p (ω already). Every marking holds one token
+  // besides p's: the most in one marking is 1. States: (a, 0), (a, ω), (c0..c10, ω).
+  constexpr int kSteps = 10;
+  NetBuilder b;
+  const auto a = b.addPlace("a");
+  b.setSlot(a, kDefaultSlot, SlotKind::Control, kUnbounded, 1);
+  const auto p = b.addPlace("p");
+  std::vector<PlaceId> c;
+  for (int i = 0; i <= kSteps; ++i) c.push_back(b.addPlace("c" + std::to_string(i)));
+  const auto grow = b.addTransition("grow");
+  b.addInput(a, grow);
+  b.addOutput(grow, a);
+  b.addOutput(grow, p);
+  const auto go = b.addTransition("go");
+  b.addInput(a, go);
+  b.addInput(p, go);
+  b.addOutput(go, c.front());
+  for (int i = 0; i < kSteps; ++i) {
+    const auto step = b.addTransition("step" + std::to_string(i));
+    b.addInput(c[static_cast<std::size_t>(i)], step);
+    b.addOutput(step, c[static_cast<std::size_t>(i) + 1]);
+    b.addOutput(step, p, kDefaultSlot, 5);
+  }
+  const auto space = explore(*b.freeze());
+  EXPECT_TRUE(space.complete);
+  EXPECT_EQ(space.states, 2u + kSteps + 1);
+  EXPECT_EQ(space.edges, 3u + kSteps);
+  EXPECT_EQ(space.max_marking, 1);
+  EXPECT_EQ(space.place_bound[p], kOmega);
+  for (const PlaceId k : c) EXPECT_EQ(space.place_bound[k], 1) << k;
+  EXPECT_TRUE(space.deadlock);  // c10
+}
+
 TEST(Analysis, AProducerWithoutConsumerIsUnboundedOnlyWhereItProduces) {
   // the classic unbounded producer: p0 -> produce -> p0 + buffer; consume takes buffer and
   // a free token: the buffer is unbounded, the free place is not
@@ -479,6 +536,37 @@ TEST(Analysis, ThreadsDecideReversibilityOnALongRingWithAndWithoutAWayOut) {
       EXPECT_FALSE(s.deadlock) << threads;
       EXPECT_EQ(s.dead_markings, 0u) << threads;
     }
+  }
+}
+
+TEST(Analysis, ThreadsShareTheWayBackOverLevelsOfThousandsOfStates) {
+  // a token on each of three rings of 60 places: 60^3 markings, every one on the way back to
+  // the start (reversible and live). The ways back are long, so the threads go breadth first
+  // over the edges reversed, and the levels far from the start hold up to about 2,700
+  // markings each, which they share.
+  constexpr int kRing = 60, kRings = 3;
+  NetBuilder b;
+  for (int r = 0; r < kRings; ++r) {
+    std::vector<PlaceId> ring;
+    for (int i = 0; i < kRing; ++i) {
+      ring.push_back(b.addPlace("r" + std::to_string(r) + "_" + std::to_string(i)));
+      b.setSlot(ring.back(), kDefaultSlot, SlotKind::Control, kUnbounded, i == 0 ? 1 : 0);
+    }
+    for (int i = 0; i < kRing; ++i) {
+      const auto t = b.addTransition("t" + std::to_string(r) + "_" + std::to_string(i));
+      b.addInput(ring[static_cast<std::size_t>(i)], t);
+      b.addOutput(t, ring[static_cast<std::size_t>((i + 1) % kRing)]);
+    }
+  }
+  const auto net = b.freeze();
+  for (const unsigned threads : {1u, 2u, 3u}) {
+    ExploreOptions options;
+    options.threads = threads;
+    const auto s = explore(*net, options);
+    EXPECT_EQ(s.states, 216'000u) << threads;
+    EXPECT_EQ(s.edges, 3u * 216'000u) << threads;
+    EXPECT_TRUE(s.reversible) << threads;
+    EXPECT_TRUE(s.live) << threads;
   }
 }
 
