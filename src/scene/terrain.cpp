@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "detail/gdal_library.h"
+#include "gdpn/core/assert.h"
 #include "gdpn/core/file.h"
 
 namespace gdpn::scene {
@@ -11,6 +12,14 @@ namespace gdpn::scene {
 namespace {
 
 using detail::GdalLibrary;
+
+/// GDAL, already loaded: a Geodesy is only made through it.
+const GdalLibrary& loadedGdal() {
+  std::string why;
+  const GdalLibrary* g = detail::gdal(why);
+  GDPN_ASSERT(g, "GDAL used before it was loaded");
+  return *g;
+}
 
 /// The message of GDAL's last error, or `otherwise` when it gave none.
 std::string lastError(const GdalLibrary& g, const char* otherwise) {
@@ -69,8 +78,7 @@ std::unique_ptr<Geodesy> Geodesy::open(const std::string& path, double width, do
 }
 
 Geodesy::~Geodesy() {
-  std::string why;
-  if (to_wgs84_) detail::gdal(why)->destroyCoordinateTransformation(static_cast<OGRCoordinateTransformationH>(to_wgs84_));
+  if (to_wgs84_) loadedGdal().destroyCoordinateTransformation(static_cast<OGRCoordinateTransformationH>(to_wgs84_));
 }
 
 bool Geodesy::toGeodetic(double x, double y, double& latitude, double& longitude) const {
@@ -80,8 +88,7 @@ bool Geodesy::toGeodetic(double x, double y, double& latitude, double& longitude
   const double row = 0.5 + (depth_ / 2 - y) / depth_ * (ny_ - 1);
   const auto& t = transform_;
   double px = t[0] + col * t[1] + row * t[2], py = t[3] + col * t[4] + row * t[5];
-  std::string why;  // loaded: this Geodesy was made through it
-  if (!detail::gdal(why)->transform(static_cast<OGRCoordinateTransformationH>(to_wgs84_), 1, &px, &py, nullptr)) return false;
+  if (!loadedGdal().transform(static_cast<OGRCoordinateTransformationH>(to_wgs84_), 1, &px, &py, nullptr)) return false;
   longitude = px;
   latitude = py;
   return std::isfinite(px) && std::isfinite(py);

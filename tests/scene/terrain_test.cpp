@@ -1,5 +1,5 @@
 // Elevation files: what is not a regular file within the input limit never reaches GDAL (which
-// would read /dev/zero or wait on a FIFO for ever).
+// would read /dev/zero or wait on a FIFO for ever); GDAL is loaded only when one is read.
 
 #include "gdpn/scene/terrain.h"
 
@@ -7,6 +7,8 @@
 #include <sys/stat.h>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "gdpn/core/file.h"
 #include "support/temp_files.h"
@@ -33,6 +35,24 @@ TEST_F(TerrainFile, OnlyRegularFilesWithinTheLimitReachGdal) {
   const auto big = write("big.tif", "");
   fs::resize_file(big, std::uintmax_t{1} << 30);
   EXPECT_EQ(refusal(big), "the file is 1024 MiB; gdpn reads input files of at most 256 MiB");
+}
+
+/// Whether a library whose file name holds `name` is mapped into this process.
+bool mapped(const std::string& name) {
+  std::ifstream maps("/proc/self/maps");
+  std::stringstream text;
+  text << maps.rdbuf();
+  return text.str().find(name) != std::string::npos;
+}
+
+TEST(TerrainLibrary, GdalIsLoadedWhenTheFirstElevationFileIsRead) {
+  // its hundred libraries cost every program's start 0.1 s; only a terrain needs them
+  EXPECT_FALSE(mapped("libgdal")) << "before any terrain was read";
+  std::string why;
+  const auto grid = loadHeightGrid(std::string(GDPN_SOURCE_DIR) + "/examples/vehicles/terrain.png", why);
+  ASSERT_TRUE(grid) << why;
+  EXPECT_GT(grid->nx, 1);
+  EXPECT_TRUE(mapped("libgdal"));
 }
 
 }  // namespace

@@ -3,7 +3,6 @@
 #include <dlfcn.h>
 
 #include <cstring>
-#include <mutex>
 
 namespace gdpn::scene::detail {
 
@@ -29,7 +28,8 @@ Loaded load() {
   void* lib = dlopen(GDPN_GDAL_SONAME, RTLD_NOW | RTLD_LOCAL);  // never closed: GDAL keeps state
   if (!lib) {
     const char* e = dlerror();
-    out.why = std::string("GDAL cannot be loaded (") + (e ? e : GDPN_GDAL_SONAME) + "); install libgdal32";
+    out.why = std::string("GDAL cannot be loaded (") + (e ? e : GDPN_GDAL_SONAME) +
+              "); install the package that provides " GDPN_GDAL_SONAME;
     return out;
   }
   GdalLibrary& g = out.functions;
@@ -69,14 +69,14 @@ Loaded load() {
 }  // namespace
 
 const GdalLibrary* gdal(std::string& why) {
-  static std::once_flag once;
-  static Loaded loaded;
-  std::call_once(once, [] { loaded = load(); });
-  if (!loaded.why.empty()) {
-    why = loaded.why;
+  // loaded once (a function's static is made once, whatever the threads) and never freed:
+  // a Geodesy destroyed at exit may still call GDAL
+  static const Loaded* const loaded = new Loaded(load());
+  if (!loaded->why.empty()) {
+    why = loaded->why;
     return nullptr;
   }
-  return &loaded.functions;
+  return &loaded->functions;
 }
 
 }  // namespace gdpn::scene::detail
