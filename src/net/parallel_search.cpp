@@ -41,6 +41,7 @@ struct Shard {
   std::atomic<std::uint64_t> edges{0};
   std::atomic<std::uint64_t> bytes{0};  // what the store holds, as its thread last saw
   std::uint64_t dead = 0;               // states expanded without a successor
+  std::uint64_t fresh = 0;              // states stored, not yet in Parallel::states_
   // the graph: local state i's run in succ starts at first[i]: the number of its
   // successors, its own global id, then theirs (global ids); a chunk's room too small for
   // the next run is filled with kPad
@@ -135,7 +136,7 @@ class Parallel {
       s.seen->note(layout_, s.store->at(id));
       s.work.push_back(id);
       s.first.push(0);
-      states_.fetch_add(1, std::memory_order_relaxed);
+      ++s.fresh;
     }
     return global(me, id);
   }
@@ -239,6 +240,10 @@ class Parallel {
         }
       }
       account(s);
+      // the states stored since the last time, added to the count all threads share once per
+      // round (not once per state: the threads would take its cache line from each other)
+      states_.fetch_add(s.fresh, std::memory_order_relaxed);
+      s.fresh = 0;
       // limits and progress, looked at by the first thread
       const std::uint64_t states = states_.load(std::memory_order_relaxed);
       if (states > options_.max_states) halt(ExploreStop::MaxStates);
