@@ -141,7 +141,7 @@ std::unique_ptr<gdpn::session::Session> open(const std::string& arg, std::option
   std::unique_ptr<gdpn::session::Session> sim;
   if (auto path = model::resolveModelPath(arg, diags)) {
     if (auto m = model::loadModel(*path, diags, paramOverrides(params))) {
-      sim = gdpn::session::Session::create(*m, diags, {seed, script_timeout_s, gdpn::capture::makeSensorImager});
+      sim = gdpn::session::Session::create(std::move(*m), diags, {seed, script_timeout_s, gdpn::capture::makeSensorImager});
     }
   }
   diags.print(std::cerr);

@@ -83,6 +83,11 @@ void writeWrapped(std::ostream& out, std::size_t column, const std::vector<std::
   }
 }
 
+void writeWrapped(std::ostream& out, std::size_t column, const std::vector<std::string>& words, std::size_t indent,
+                  std::size_t most) {
+  writeWrapped(out, column, std::vector<std::string_view>(words.begin(), words.end()), indent, most);
+}
+
 std::vector<std::string_view> words(std::string_view text) {
   std::vector<std::string_view> out;
   for (std::size_t at = 0; at < text.size();) {

@@ -19,7 +19,7 @@ std::string runJson(const model::Report& report, const net::Net& net, const net:
   auto seconds = [dt](std::int64_t step) { return static_cast<double>(step) * dt; };
   ordered_json tl;
   auto& names = tl["transitions"] = ordered_json::array();
-  for (net::TransitionId t = 0; t < net.transitions().size(); ++t) names.push_back(net.transitions()[t].name);
+  for (net::TransitionId t = 0; t < net.transitions().size(); ++t) names.push_back(net.transitionName(t));
   auto& occurrences = tl["occurrences"] = ordered_json::array();
   for (const auto& o : timeline.occurrences()) {
     occurrences.push_back({o.transition, seconds(o.start), o.end < 0 ? ordered_json(nullptr) : ordered_json(seconds(o.end))});
@@ -29,7 +29,7 @@ std::string runJson(const model::Report& report, const net::Net& net, const net:
     if (report.places.size() > p && report.places[p].sensors_only) continue;  // no tokens of their own
     auto changes = ordered_json::array();
     for (const auto& c : timeline.places()[p]) changes.push_back({seconds(c.step), c.tokens});
-    places.push_back({{"name", net.places()[p].name}, {"changes", std::move(changes)}});
+    places.push_back({{"name", net.placeName(p)}, {"changes", std::move(changes)}});
   }
   tl["cut_at"] = timeline.cutAt() < 0 ? ordered_json(nullptr) : ordered_json(seconds(timeline.cutAt()));
   tl["dropped"] = timeline.dropped();

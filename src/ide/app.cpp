@@ -136,8 +136,8 @@ bool App::selectByName(const std::string& name) {
   }
   // an instance: a prefix of qualified names
   const auto prefix = name + "/";
-  for (const auto& p : net.places()) {
-    if (p.name.starts_with(prefix)) {
+  for (net::PlaceId p = 0; p < net.places().size(); ++p) {
+    if (net.placeName(p).starts_with(prefix)) {
       doc_->select({SelectionKind::Instance, name});
       return true;
     }

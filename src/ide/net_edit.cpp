@@ -285,7 +285,11 @@ std::string edit(net::NetSpec& net, net::PageSpec& p, const NetEdit& e, std::str
 
 }  // namespace
 
-net::PageSpec* findPage(net::NetSpec& net, const std::string& name, bool* is_type) {
+namespace {
+
+/// findPage() for a NetSpec that may be const.
+template <class Net>
+auto* findPageIn(Net& net, const std::string& name, bool* is_type) {
   for (auto* list : {&net.pages, &net.page_types}) {
     for (auto& p : *list) {
       if (p.name != name) continue;
@@ -293,7 +297,17 @@ net::PageSpec* findPage(net::NetSpec& net, const std::string& name, bool* is_typ
       return &p;
     }
   }
-  return nullptr;
+  return static_cast<decltype(&net.pages.front())>(nullptr);
+}
+
+}  // namespace
+
+net::PageSpec* findPage(net::NetSpec& net, const std::string& name, bool* is_type) {
+  return findPageIn(net, name, is_type);
+}
+
+const net::PageSpec* findPage(const net::NetSpec& net, const std::string& name, bool* is_type) {
+  return findPageIn(net, name, is_type);
 }
 
 namespace {

@@ -180,7 +180,8 @@ std::int64_t RunControl::steps() const { return session_ ? session_->simulation(
 std::vector<std::string> RunControl::transitions() const {
   std::vector<std::string> names;
   if (!session_) return names;
-  for (const auto& t : session_->simulation().net().transitions()) names.push_back(t.name);
+  const auto& net = session_->simulation().net();
+  for (net::TransitionId t = 0; t < net.transitions().size(); ++t) names.push_back(net.transitionName(t));
   return names;
 }
 

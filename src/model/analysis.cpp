@@ -140,22 +140,22 @@ std::string megabytes(std::uint64_t bytes) {
 std::vector<std::string> untimedCaveats(const net::Net& net) {
   std::vector<std::string> out;
   const auto& index = net.scriptIndex();
-  auto names = [](std::vector<std::string_view> list) {
+  auto names = [](const std::vector<std::string>& list) {
     std::string text;
     for (std::size_t i = 0; i < list.size() && i < 3; ++i) text += (i ? ", " : "") + std::string(list[i]);
     if (list.size() > 3) text += " and " + std::to_string(list.size() - 3) + " more";
     return text;
   };
   auto count = [](std::size_t n, const std::string& what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); };
-  std::vector<std::string_view> guarded, scripted, handled;
+  std::vector<std::string> guarded, scripted, handled;
   for (net::TransitionId t = 0; t < index.transitions.size(); ++t) {
     const auto& s = index.transitions[t];
-    if (s[0] >= 0) guarded.push_back(net.transitions()[t].name);
-    if (s[1] >= 0 || s[2] >= 0 || s[3] >= 0) scripted.push_back(net.transitions()[t].name);
+    if (s[0] >= 0) guarded.push_back(net.transitionName(t));
+    if (s[1] >= 0 || s[2] >= 0 || s[3] >= 0) scripted.push_back(net.transitionName(t));
   }
   for (net::PlaceSlotId k = 0; k < index.slots.size(); ++k) {
     const auto& s = index.slots[k];
-    const auto name = std::string_view(net.places()[net.placeSlots()[k].place].name);
+    const auto name = net.placeName(net.placeSlots()[k].place);
     if (std::any_of(s.begin(), s.end(), [](std::int32_t x) { return x >= 0; }) &&
         (handled.empty() || handled.back() != name)) {
       handled.push_back(name);
@@ -205,12 +205,12 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
   j["edges"] = s.edges;
   j["deadlock"] = s.deadlock;
   j["deadlock_path"] = ordered_json::array();
-  for (auto t : s.deadlock_path) j["deadlock_path"].push_back(tr[t].name);
+  for (auto t : s.deadlock_path) j["deadlock_path"].push_back(net.transitionName(t));
   j["dead_markings"] = s.dead_markings;
   j["more_dead_paths"] = ordered_json::array();
   for (const auto& path : s.more_dead_paths) {
     ordered_json names = ordered_json::array();
-    for (auto t : path) names.push_back(tr[t].name);
+    for (auto t : path) names.push_back(net.transitionName(t));
     j["more_dead_paths"].push_back(names);
   }
   j["max_tokens_place"] = s.max_place;
@@ -220,16 +220,16 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
   j["live"] = s.decided ? ordered_json(s.live) : ordered_json(nullptr);
   j["reversible"] = s.decided ? ordered_json(s.reversible) : ordered_json(nullptr);
   j["dead_transitions"] = ordered_json::array();
-  for (std::size_t t = 0; t < tr.size(); ++t) {
-    if (!s.fired[t]) j["dead_transitions"].push_back(tr[t].name);
+  for (net::TransitionId t = 0; t < tr.size(); ++t) {
+    if (!s.fired[t]) j["dead_transitions"].push_back(net.transitionName(t));
   }
   j["unbounded_places"] = ordered_json::array();
-  for (auto p : s.unbounded_places) j["unbounded_places"].push_back(places[p].name);
+  for (auto p : s.unbounded_places) j["unbounded_places"].push_back(net.placeName(p));
   j["constant_places"] = ordered_json::array();
-  for (auto p : s.constant_places) j["constant_places"].push_back(places[p].name);
+  for (auto p : s.constant_places) j["constant_places"].push_back(net.placeName(p));
   j["bounds"] = ordered_json::object();
-  for (std::size_t p = 0; p < places.size(); ++p) {
-    j["bounds"][places[p].name] = s.place_bound[p] == net::kOmega ? ordered_json("omega") : ordered_json(s.place_bound[p]);
+  for (net::PlaceId p = 0; p < places.size(); ++p) {
+    j["bounds"][net.placeName(p)] = s.place_bound[p] == net::kOmega ? ordered_json("omega") : ordered_json(s.place_bound[p]);
   }
   j["peak_bytes"] = s.peak_bytes;
 
@@ -249,14 +249,14 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
   ij["t"] = ordered_json::array();
   for (const auto& x : inv.t) {
     ordered_json w = ordered_json::object();
-    for (const auto& [k, v] : x.weights) w[tr[k].name] = v;
+    for (const auto& [k, v] : x.weights) w[net.transitionName(k)] = v;
     ij["t"].push_back(w);
   }
   j["invariants"] = ij;
   j["cycle_times"] = ordered_json::array();
   for (const auto& c : a.cycles) {
     ordered_json names = ordered_json::array();
-    for (auto t : c.transitions) names.push_back(tr[t].name);
+    for (auto t : c.transitions) names.push_back(net.transitionName(t));
     j["cycle_times"].push_back({{"invariant", invariantText(net, inv.p[c.invariant])},
                                 {"transitions", names},
                                 {"tokens", c.tokens},
@@ -269,13 +269,14 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
   return j.dump(2) + "\n";
 }
 
-std::vector<std::pair<std::string_view, std::int64_t>> markedPlaces(const net::Net& net,
-                                                                     const std::vector<std::int64_t>& marking) {
-  std::vector<std::pair<std::string_view, std::int64_t>> out;
-  for (const net::Place& p : net.places()) {
+std::vector<std::pair<std::string, std::int64_t>> markedPlaces(const net::Net& net,
+                                                                const std::vector<std::int64_t>& marking) {
+  std::vector<std::pair<std::string, std::int64_t>> out;
+  for (net::PlaceId pid = 0; pid < net.places().size(); ++pid) {
+    const net::Place& p = net.places()[pid];
     std::int64_t n = 0;
     for (auto k = p.slots_begin; k < p.slots_end; ++k) n += marking[k];
-    if (n != 0) out.emplace_back(p.name, n);
+    if (n != 0) out.emplace_back(net.placeName(pid), n);
   }
   return out;
 }
@@ -318,8 +319,8 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
     const std::string head =
         " after " + std::to_string(s.deadlock_path.size()) + (s.deadlock_path.size() == 1 ? " firing:" : " firings:");
     out << head;
-    std::vector<std::string_view> names;
-    for (auto t : s.deadlock_path) names.emplace_back(tr[t].name);
+    std::vector<std::string> names;
+    for (auto t : s.deadlock_path) names.emplace_back(net.transitionName(t));
     core::writeWrapped(out, kValue + 3 + head.size(), names, kValue);
   } else if (s.deadlock && s.complete && s.bounded) {
     out << " (the initial marking is dead)";
@@ -339,7 +340,7 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
     for (const auto& [place, n] : markedPlaces(net, m)) marked.push_back(std::string(place) + " = " + std::to_string(n));
     if (marked.empty()) marked.emplace_back("no tokens");
     out << "\n  dead marking:   ";
-    core::writeWrapped(out, kValue - 1, std::vector<std::string_view>(marked.begin(), marked.end()), kValue, kShownNames);
+    core::writeWrapped(out, kValue - 1, marked, kValue, kShownNames);
   };
   if (s.deadlock && (!s.deadlock_path.empty() || (s.complete && s.bounded))) deadMarking(s.deadlock_path);
   // the next ones the search met, each with its path
@@ -347,8 +348,8 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
     if (path.empty() || !s.bounded) continue;
     const std::string head = "after " + std::to_string(path.size()) + (path.size() == 1 ? " firing:" : " firings:");
     out << "\n  also dead:       " << head;
-    std::vector<std::string_view> names;
-    for (auto t : path) names.emplace_back(tr[t].name);
+    std::vector<std::string> names;
+    for (auto t : path) names.emplace_back(net.transitionName(t));
     core::writeWrapped(out, kValue + head.size(), names, kValue, kShownNames);
     deadMarking(path);
   }
@@ -359,8 +360,8 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
       << " in one marking; one-safe: " << yes(s.one_safe) << "\n";
   if (s.complete && s.bounded && !s.place_bound.empty()) {
     // each place's bound, places of equal bound together
-    std::map<std::int64_t, std::vector<std::string_view>> by_bound;
-    for (std::size_t p = 0; p < s.place_bound.size(); ++p) by_bound[s.place_bound[p]].emplace_back(net.places()[p].name);
+    std::map<std::int64_t, std::vector<std::string>> by_bound;
+    for (net::PlaceId p = 0; p < s.place_bound.size(); ++p) by_bound[s.place_bound[p]].emplace_back(net.placeName(p));
     for (auto it = by_bound.rbegin(); it != by_bound.rend(); ++it) {
       const std::string head = std::string(kValue, ' ') + "at most " + std::to_string(it->first) + ":";
       out << head;
@@ -370,16 +371,16 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
   }
   if (!s.bounded) {
     out << "  unbounded:      ";
-    std::vector<std::string_view> names;
-    for (auto p : s.unbounded_places) names.emplace_back(net.places()[p].name);
+    std::vector<std::string> names;
+    for (auto p : s.unbounded_places) names.emplace_back(net.placeName(p));
     core::writeWrapped(out, kValue - 1, names, kValue, kShownNames);
     out << "\n";
   }
   out << "  quasi-live:      " << yes(s.quasi_live);
   if (!s.quasi_live) {
-    std::vector<std::string_view> names;
-    for (std::size_t t = 0; t < tr.size(); ++t) {
-      if (!s.fired[t]) names.emplace_back(tr[t].name);
+    std::vector<std::string> names;
+    for (net::TransitionId t = 0; t < tr.size(); ++t) {
+      if (!s.fired[t]) names.emplace_back(net.transitionName(t));
     }
     const std::string head = s.complete ? "dead (" : "not fired yet (";
     out << ", " << head << names.size() << "):";
@@ -388,8 +389,8 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
   out << "\n  live:            " << decided(s.live) << "\n  reversible:      " << decided(s.reversible)
       << "\n  constant places: " << s.constant_places.size();
   if (!s.constant_places.empty()) {
-    std::vector<std::string_view> names;
-    for (auto p : s.constant_places) names.emplace_back(net.places()[p].name);
+    std::vector<std::string> names;
+    for (auto p : s.constant_places) names.emplace_back(net.placeName(p));
     out << ":";
     core::writeWrapped(out, kValue + std::to_string(s.constant_places.size()).size() + 1, names, kValue, kShownNames);
   }
@@ -407,16 +408,16 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
     auto terms = invariantWords(invariantText(net, inv.p[i]), kMostPlaces, "--json");
     terms.push_back("= " + std::to_string(tokensOn(net, inv.p[i])));
     out << "   ";
-    core::writeWrapped(out, 3, std::vector<std::string_view>(terms.begin(), terms.end()), 6);
+    core::writeWrapped(out, 3, terms, 6);
     out << "\n";
   }
   if (inv.p.size() > kShown) out << "    ... and " << inv.p.size() - kShown << " more (--json lists all)\n";
   out << "  T-invariants (" << inv.t.size() << "):" << (inv.t.empty() ? " none" : "") << "\n";
   for (std::size_t i = 0; i < inv.t.size() && i < kShown; ++i) {
     std::vector<std::string> names;
-    for (const auto& [k, w] : inv.t[i].weights) names.push_back((w != 1 ? std::to_string(w) + "*" : "") + tr[k].name);
+    for (const auto& [k, w] : inv.t[i].weights) names.push_back((w != 1 ? std::to_string(w) + "*" : "") + net.transitionName(k));
     out << "   ";
-    core::writeWrapped(out, 3, std::vector<std::string_view>(names.begin(), names.end()), 6, kShownNames);
+    core::writeWrapped(out, 3, names, 6, kShownNames);
     out << "\n";
   }
   if (inv.t.size() > kShown) out << "    ... and " << inv.t.size() - kShown << " more (--json lists all)\n";
@@ -433,12 +434,12 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
       if (c.circuit) {
         terms.emplace_back("circuit");
         for (std::size_t i = 0; i < c.transitions.size(); ++i) {
-          terms.push_back(tr[c.transitions[i]].name + (i + 1 < c.transitions.size() ? " ->" : ")"));
+          terms.push_back(net.transitionName(c.transitions[i]) + (i + 1 < c.transitions.size() ? " ->" : ")"));
         }
       }
       if (alike > 0) terms.push_back("(+" + std::to_string(alike) + " alike)");
       flow = flow || c.flow;
-      core::writeWrapped(out, head.size(), std::vector<std::string_view>(terms.begin(), terms.end()), 12);
+      core::writeWrapped(out, head.size(), terms, 12);
       out << "\n";
     }
     if (flow) out << "  flow: tokens that take alternative paths (a flow, not a cycle): no bound\n";
@@ -479,7 +480,7 @@ void printQueries(std::ostream& out, const net::Net& net, const std::vector<Quer
     }
     const std::string head = "query " + std::to_string(i + 1) + ":";
     out << head;
-    core::writeWrapped(out, head.size(), {net::formulaText(net, formula)}, 2);
+    core::writeWrapped(out, head.size(), std::vector<std::string>{net::formulaText(net, formula)}, 2);
     out << "\n  " << verdictWord(a);
     if (a.verdict == net::Verdict::Unknown) {
       out << ": " << (a.unsupported.empty() ? net::stopReason(a.stop) : a.unsupported);
@@ -497,15 +498,15 @@ void printQueries(std::ostream& out, const net::Net& net, const std::vector<Quer
                              (a.path.empty() ? "the initial marking" : "the marking after " + std::to_string(a.path.size()) +
                                                                           (a.path.size() == 1 ? " firing:" : " firings:"));
     out << lead;
-    std::vector<std::string_view> names;
-    for (auto t : a.path) names.push_back(net.transitions()[t].name);
+    std::vector<std::string> names;
+    for (auto t : a.path) names.push_back(net.transitionName(t));
     core::writeWrapped(out, lead.size(), names, 4);
     std::vector<std::string> marked;
     for (const auto& [place, n] : markedPlaces(net, a.marking)) marked.push_back(std::string(place) + " = " + std::to_string(n));
     if (marked.empty()) marked.push_back("none");
     const std::string what = "  tokens there:";
     out << "\n" << what;
-    core::writeWrapped(out, what.size(), std::vector<std::string_view>(marked.begin(), marked.end()), 4);
+    core::writeWrapped(out, what.size(), marked, 4);
     out << "\n";
     if (!a.lasso) continue;
     if (a.cycle.empty()) {
@@ -514,8 +515,8 @@ void printQueries(std::ostream& out, const net::Net& net, const std::vector<Quer
     }
     const std::string loop = "  then forever, " + std::to_string(a.cycle.size()) + (a.cycle.size() == 1 ? " firing:" : " firings:");
     out << loop;
-    std::vector<std::string_view> cycle;
-    for (auto t : a.cycle) cycle.push_back(net.transitions()[t].name);
+    std::vector<std::string> cycle;
+    for (auto t : a.cycle) cycle.push_back(net.transitionName(t));
     core::writeWrapped(out, loop.size(), cycle, 4);
     out << "\n";
   }
@@ -542,7 +543,7 @@ nlohmann::ordered_json queryObject(const net::Net& net, const QueryResult& r) {
   if (a.has_marking) {
     auto names = [&](const std::vector<net::TransitionId>& ts) {
       ordered_json list = ordered_json::array();
-      for (auto t : ts) list.push_back(net.transitions()[t].name);
+      for (auto t : ts) list.push_back(net.transitionName(t));
       return list;
     };
     q["path"] = names(a.path);

@@ -77,7 +77,7 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
   for (net::TransitionId t = 0; t < net.transitions().size(); ++t) {
     const auto& s = stats.transitions()[t];
     TransitionFigures f;
-    f.name = net.transitions()[t].name;
+    f.name = net.transitionName(t);
     f.occurrences = s.starts;
     f.cycles = s.cycles;
     if (s.cycles > 0) {
@@ -95,7 +95,7 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
   for (net::PlaceId p = 0; p < net.places().size(); ++p) {
     const auto& s = stats.places()[p];
     PlaceFigures f;
-    f.name = net.places()[p].name;
+    f.name = net.placeName(p);
     f.mean_tokens = steps > 0 ? static_cast<double>(s.area) / steps : static_cast<double>(s.tokens);
     f.max_tokens = s.max;
     f.final_tokens = s.tokens;
@@ -136,7 +136,7 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
           k.trips = taken.trips;
           k.measured = static_cast<double>(taken.steps) * dt / static_cast<double>(taken.trips);
           for (auto t : taken.transitions) {
-            k.transitions.push_back(net.transitions()[t].name);
+            k.transitions.push_back(net.transitionName(t));
             k.bound += seconds[t];
           }
           f.circuits.push_back(std::move(k));
@@ -388,7 +388,7 @@ void printSummary(std::ostream& out, const Report& report) {
       if (c.alike > 0) terms.push_back("(+" + std::to_string(c.alike) + " alike)");
       alike = alike || c.alike > 0;
       flow = flow || c.flow;
-      core::writeWrapped(out, kFigures + 1, std::vector<std::string_view>(terms.begin(), terms.end()), kFigures + 2);
+      core::writeWrapped(out, kFigures + 1, terms, kFigures + 2);
       out << "\n";
       // the circuits its token took, each measured: times taken, then its transitions by their
       // own names (the page's path is the cycle's)

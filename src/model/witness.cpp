@@ -100,7 +100,7 @@ std::string witnessMismatch(const net::Net& net, const net::Kernel& kernel, cons
   for (net::PlaceId p = 0; p < net.places().size(); ++p) {
     const std::int64_t has = kernel.placeTokens(p);
     if (has == expected[p]) continue;
-    out += (out.empty() ? "" : "; ") + std::string("'") + net.places()[p].name + "' holds " + std::to_string(has) +
+    out += (out.empty() ? "" : "; ") + std::string("'") + net.placeName(p) + "' holds " + std::to_string(has) +
            ", the witness says " + std::to_string(expected[p]);
   }
   return out;

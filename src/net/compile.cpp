@@ -59,7 +59,7 @@ class Compiler {
     reserveFlat();
     for (const auto& page : spec_.pages) {
       std::vector<const PageSpec*> stack;
-      instantiate(page, page.name, "", stack);
+      instantiate(page, kNoScope, page.name, "", stack);
     }
     if (diags_.hasErrors()) return nullptr;
     resolveKinds();
@@ -391,13 +391,39 @@ class Compiler {
 
   struct FlatPlace {
     const PlaceSpec* spec;
-    std::string name;
+    std::uint32_t scope;        // its instantiated page (a scope in builder_.names())
+    std::uint32_t local;        // its index in its page's places (and table)
     std::uint32_t node_prefix;  // in node_prefixes_: what qualifies its scene paths ("cellA/")
   };
   struct FlatTransition {
     const TransitionSpec* spec;
-    std::string name;
+    std::uint32_t scope;  // its instantiated page
+    std::uint32_t local;  // its index in its page's transitions (and table)
   };
+
+  /// The qualified name of flat place `p` ("line/cellA/buffer"), for messages.
+  std::string placeName(PlaceId p) {
+    std::string out;
+    builder_.names().appendName(out, places_[p].scope, places_[p].spec->name);
+    return out;
+  }
+  /// The qualified name of flat transition `t`, for messages.
+  std::string transitionName(TransitionId t) {
+    std::string out;
+    builder_.names().appendName(out, transitions_[t].scope, transitions_[t].spec->name);
+    return out;
+  }
+
+  /// The table of `page`'s local names and locations, made once for all its instances.
+  std::uint32_t tableOf(const PageSpec& page) {
+    auto [it, fresh] = tables_.try_emplace(&page, 0);
+    if (!fresh) return it->second;
+    auto& names = builder_.names();
+    it->second = names.addTable();
+    for (const auto& p : page.places) names.addPlace(it->second, p.name, p.loc);
+    for (const auto& t : page.transitions) names.addTransition(it->second, t.name, t.loc);
+    return it->second;
+  }
   struct FlatArc {
     PlaceId place;
     TransitionId transition;
@@ -431,15 +457,17 @@ class Compiler {
     core::reserveLarge(arcs_, n[2]);
   }
 
-  /// Expands `page` under `prefix`: its places first (so an instance's own places are
-  /// consecutive from the first), then its instances, its transitions and its arcs.
-  void instantiate(const PageSpec& page, const std::string& prefix, const std::string& node_prefix,
+  /// Expands `page` as a scope called `name` inside `parent` (kNoScope for a top page): its
+  /// places first (so an instance's own places are consecutive from the first), then its
+  /// instances, its transitions and its arcs.
+  void instantiate(const PageSpec& page, std::uint32_t parent, std::string_view name, const std::string& node_prefix,
                    std::vector<const PageSpec*>& stack) {
     const PageIndex& index = indexes_.at(&page);
     const auto base = static_cast<PlaceId>(places_.size());
+    const auto scope = builder_.names().addScope(parent, name, tableOf(page), base, 0);
     const auto prefix_index = static_cast<std::uint32_t>(node_prefixes_.size());
     if (!page.places.empty()) node_prefixes_.push_back(node_prefix);
-    for (const auto& p : page.places) places_.push_back({&p, prefix + "/" + p.name, prefix_index});
+    for (std::uint32_t k = 0; k < page.places.size(); ++k) places_.push_back({&page.places[k], scope, k, prefix_index});
     std::vector<PlaceId> inner(page.instances.size(), kNone);  // the first place of each instance
     for (std::size_t k = 0; k < page.instances.size(); ++k) {
       const auto& inst = page.instances[k];
@@ -452,11 +480,12 @@ class Compiler {
       }
       inner[k] = static_cast<PlaceId>(places_.size());
       stack.push_back(type);
-      instantiate(*type, prefix + "/" + inst.name, node_prefix + inst.name + "/", stack);
+      instantiate(*type, scope, inst.name, node_prefix + inst.name + "/", stack);
       stack.pop_back();
     }
     const auto tbase = static_cast<TransitionId>(transitions_.size());
-    for (const auto& t : page.transitions) transitions_.push_back({&t, prefix + "/" + t.name});
+    builder_.names().setFirstTransition(scope, tbase);
+    for (std::uint32_t k = 0; k < page.transitions.size(); ++k) transitions_.push_back({&page.transitions[k], scope, k});
     auto placeOf = [&](const End& end) -> PlaceId {
       if (end.what == End::What::Place) return base + end.index;
       if (inner[end.instance] == kNone) return kNone;  // only after a cycle error
@@ -545,8 +574,8 @@ class Compiler {
       }
       const KindSource& first = sources[source_of[root]];
       if (first.kind == kind) return;
-      const std::string& other = places_[first.place].name;
-      diags_.error(loc, "slot " + slotName(slot) + " is " + slotKindName(kind) + " on place '" + places_[p].name +
+      const std::string other = placeName(first.place);
+      diags_.error(loc, "slot " + slotName(slot) + " is " + slotKindName(kind) + " on place '" + placeName(p) +
                             "' but " + slotKindName(first.kind) + " on place '" + other + "', and arcs join the two");
       diags_.note(*first.loc, "slot " + slotName(slot) + " of '" + other + "' is " + slotKindName(first.kind) + " here");
     };
@@ -563,7 +592,7 @@ class Compiler {
       if (!sensors) break;
       forEachWeight(*a.spec, [&](SlotId slot, std::int64_t, const SourceLoc& loc) {
         if (kindOf(placeVertex(a.place, slot)) == SlotKind::Sensor) {
-          diags_.error(loc, "slot " + slotName(slot) + " of '" + places_[a.place].name +
+          diags_.error(loc, "slot " + slotName(slot) + " of '" + placeName(a.place) +
                                 "' reads a sensor and carries no tokens; give the arc a condition instead");
         }
       });
@@ -577,13 +606,13 @@ class Compiler {
           diags_.error(c.expression.loc, "a condition belongs on an arc from a place to a transition");
         } else if (kindOf(placeVertex(a.place, c.slot)) != SlotKind::Sensor) {
           diags_.error(c.expression.loc, "a condition reads a sensor slot, but slot " + slotName(c.slot) + " of '" +
-                                             places_[a.place].name + "' is not one (declare it under 'sensors')");
+                                             placeName(a.place) + "' is not one (declare it under 'sensors')");
         }
       }
       for (const auto& pred : a.spec->predicates) {
         if (kindOf(placeVertex(a.place, pred.slot)) != SlotKind::Node) {
           diags_.error(pred.expression.loc, "a predicate selects node tokens, but slot " + slotName(pred.slot) +
-                                                " of '" + places_[a.place].name + "' is a control slot");
+                                                " of '" + placeName(a.place) + "' is a control slot");
         }
       }
     }
@@ -598,7 +627,7 @@ class Compiler {
         for (const ScriptKind k : kSlotScripts) {
           if (k == ScriptKind::OnDeposit || k == ScriptKind::OnRemove || scriptOf(sc, k).empty()) continue;
           if (!told.emplace(scriptOf(sc, k).loc.line, scriptOf(sc, k).loc.column).second) continue;
-          diags_.error(scriptOf(sc, k).loc, std::string(info(k).key) + " of place '" + places_[p].name +
+          diags_.error(scriptOf(sc, k).loc, std::string(info(k).key) + " of place '" + placeName(p) +
                                                 "' is a sensor handler, but its slot " + slotName(sc.slot) +
                                                 " holds no sensor (declare one under 'sensors')");
         }
@@ -620,7 +649,7 @@ class Compiler {
     for (const auto& [key, io] : flow) {
       if (io.first == io.second) continue;
       const auto& t = transitions_[key.first];
-      diags_.error(t.spec->loc, "transition '" + t.name + "' takes " + std::to_string(io.first) +
+      diags_.error(t.spec->loc, "transition '" + transitionName(key.first) + "' takes " + std::to_string(io.first) +
                                     " token(s) from node slot " + slotName(key.second) + " but puts out " +
                                     std::to_string(io.second) +
                                     "; node tokens keep their identity, so the two must match");
@@ -641,7 +670,7 @@ class Compiler {
     if (!spec_.globals.empty()) builder_.setGlobalsScript(scriptIndex(spec_.globals));
     for (PlaceId p = 0; p < places_.size(); ++p) {
       auto& fp = places_[p];
-      builder_.addPlace(std::move(fp.name), fp.spec->loc);  // names are not needed after this
+      builder_.addScopedPlace(fp.scope, fp.local);
       std::uint32_t used = 0;
       for (const auto& d : fp.spec->kinds) used |= 1u << d.slot;
       for (const auto& t : fp.spec->tokens) used |= 1u << t.slot;
@@ -670,9 +699,9 @@ class Compiler {
         }
       }
     }
-    for (auto& ft : transitions_) {
+    for (const auto& ft : transitions_) {
       const auto& s = *ft.spec;
-      const auto t = builder_.addTransition(std::move(ft.name), s.duration, s.priority, s.probability, s.loc);
+      const auto t = builder_.addScopedTransition(ft.scope, ft.local, s.duration, s.priority, s.probability);
       if (s.servers != 1) builder_.setServers(t, static_cast<std::uint32_t>(s.servers));
       for (const ScriptKind k : kTransitionScripts) {
         if (!scriptOf(s, k).empty()) builder_.setTransitionScript(t, k, scriptIndex(scriptOf(s, k)));
@@ -725,6 +754,7 @@ class Compiler {
   std::vector<std::uint32_t> parent_;
   std::vector<SlotKind> root_kind_;
   std::unordered_map<const ScriptSpec*, std::int32_t> script_ids_;
+  std::unordered_map<const PageSpec*, std::uint32_t> tables_;  // each page's table in builder_.names()
   NetBuilder builder_;
 };
 

@@ -30,7 +30,7 @@ ExploreStop writeStateGraph(const Net& net, GraphFormat format, std::ostream& ou
     out << "des (0, " << g.succ.size() << ", " << g.size() << ")\n";
     for (StateId s = 0; s < g.size(); ++s) {
       for (auto e = g.first[s]; e < g.first[s + 1]; ++e) {
-        out << '(' << s << ", " << quoted(net.transitions()[g.via[e]].name) << ", " << g.succ[e] << ")\n";
+        out << '(' << s << ", " << quoted(net.transitionName(g.via[e])) << ", " << g.succ[e] << ")\n";
       }
     }
     return ExploreStop::Done;
@@ -40,10 +40,11 @@ ExploreStop writeStateGraph(const Net& net, GraphFormat format, std::ostream& ou
   for (StateId s = 0; s < g.size(); ++s) {
     layout.unpack(g.store->at(s), m.data());
     std::string label;
-    for (const Place& p : net.places()) {
+    for (PlaceId pid = 0; pid < net.places().size(); ++pid) {
+      const Place& p = net.places()[pid];
       std::int64_t n = 0;
       for (auto k = p.slots_begin; k < p.slots_end; ++k) n += m[k];
-      if (n != 0) label += (label.empty() ? "" : "\x01") + p.name + (n == 1 ? "" : " = " + std::to_string(n));
+      if (n != 0) label += (label.empty() ? "" : "\x01") + net.placeName(pid) + (n == 1 ? "" : " = " + std::to_string(n));
     }
     // one place per line: DOT's \n between them, put in after quoting
     std::string text = quoted(label.empty() ? "(no tokens)" : label);
@@ -53,7 +54,7 @@ ExploreStop writeStateGraph(const Net& net, GraphFormat format, std::ostream& ou
   }
   for (StateId s = 0; s < g.size(); ++s) {
     for (auto e = g.first[s]; e < g.first[s + 1]; ++e) {
-      out << "  s" << s << " -> s" << g.succ[e] << " [label=" << quoted(net.transitions()[g.via[e]].name) << "];\n";
+      out << "  s" << s << " -> s" << g.succ[e] << " [label=" << quoted(net.transitionName(g.via[e])) << "];\n";
     }
   }
   out << "}\n";

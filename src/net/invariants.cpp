@@ -638,7 +638,7 @@ std::vector<CycleBound> cycleBounds(const Net& net, const Invariants& invariants
   return out;
 }
 
-double meanSeconds(const Duration& duration) {
+double meanSeconds(const DurationLaw& duration) {
   switch (duration.law) {
     case Duration::Law::Uniform:
       return 0.5 * (duration.a + duration.b);
@@ -654,7 +654,7 @@ double meanSeconds(const Duration& duration) {
 
 std::string placeSlotName(const Net& net, PlaceSlotId ps) {
   const PlaceSlot& s = net.placeSlots()[ps];
-  const std::string& name = net.places()[s.place].name;
+  const std::string name = net.placeName(s.place);
   return s.slot == kDefaultSlot ? name : name + "." + slotName(s.slot);
 }
 

@@ -211,7 +211,7 @@ void Kernel::markEnabled(TransitionId t) {
 
 std::int64_t Kernel::drawSteps(TransitionId t) {
   if (tr_[t].fixed_steps >= 0) return tr_[t].fixed_steps;
-  const Duration& d = net_->transitions()[t].duration;
+  const DurationLaw& d = net_->transitions()[t].duration;
   double seconds = 0.0;
   switch (d.law) {
     case Duration::Law::Fixed: seconds = d.a; break;
@@ -847,7 +847,7 @@ void Kernel::shuffleTies(std::vector<Carry>& candidates) {
 
 std::string Kernel::fire(TransitionId t) {
   const Net& net = *net_;
-  const std::string name = "'" + net.transitions()[t].name + "'";
+  const std::string name = "'" + net.transitionName(t) + "'";
   TransitionState& tr = tr_[t];
   if (occurring(t) && !tr.multi) return name + " is occurring";
   if (tr.multi && servers(t) != 0 && occurrences(t) == servers(t)) {
@@ -860,7 +860,7 @@ std::string Kernel::fire(TransitionId t) {
       const SlotState& st = slots_[term.place_slot];
       if (term.kind == TermKind::Condition ? condition(i) : holds(st, term.kind, term.weight, term.take)) continue;
       const auto& ps = net.placeSlots()[term.place_slot];
-      const std::string place = "'" + net.places()[ps.place].name + "' " + slotName(ps.slot);
+      const std::string place = "'" + net.placeName(ps.place) + "' " + slotName(ps.slot);
       const std::string has = std::to_string(st.m), w = std::to_string(term.weight);
       switch (term.kind) {
         case TermKind::Input:

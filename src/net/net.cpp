@@ -1,6 +1,7 @@
 #include "gdpn/net/net.h"
 
 #include <algorithm>
+#include <tuple>
 
 #include "gdpn/core/assert.h"
 #include "gdpn/core/memory.h"
@@ -17,15 +18,30 @@ const char* arcKindName(ArcKind kind) {
   return "?";
 }
 
-std::int64_t Net::findPlace(std::string_view qualified_name) const {
-  const auto id = place_index_.find(qualified_name, [this](std::uint32_t p) -> std::string_view { return places_[p].name; });
-  return id ? static_cast<std::int64_t>(*id) : -1;
-}
+std::int64_t Net::findPlace(std::string_view qualified_name) const { return names_.findPlace(qualified_name); }
 
 std::int64_t Net::findTransition(std::string_view qualified_name) const {
-  const auto id = transition_index_.find(
-      qualified_name, [this](std::uint32_t t) -> std::string_view { return transitions_[t].name; });
-  return id ? static_cast<std::int64_t>(*id) : -1;
+  return names_.findTransition(qualified_name);
+}
+
+std::string Net::placeName(PlaceId p) const {
+  std::string out;
+  appendPlaceName(out, p);
+  return out;
+}
+
+std::string Net::transitionName(TransitionId t) const {
+  std::string out;
+  appendTransitionName(out, t);
+  return out;
+}
+
+void Net::appendPlaceName(std::string& out, PlaceId p) const {
+  names_.appendName(out, places_[p].scope, placeLocalName(p));
+}
+
+void Net::appendTransitionName(std::string& out, TransitionId t) const {
+  names_.appendName(out, transitions_[t].scope, transitionLocalName(t));
 }
 
 std::int64_t Net::findPlaceSlot(PlaceId place, SlotId slot) const {
@@ -44,10 +60,8 @@ std::size_t Net::memoryBytes() const {
                       watchers_.capacity() * sizeof(TermId) +
                       initial_nodes_.capacity() * sizeof(std::uint32_t);
   auto heap = [](const std::string& s) { return s.capacity() > 15 ? s.capacity() + 1 : 0; };
-  for (const auto& p : places_) bytes += heap(p.name) + heap(p.loc.file);
-  for (const auto& t : transitions_) bytes += heap(t.name) + heap(t.loc.file) + heap(t.duration.loc.file);
   for (const auto& n : node_names_) bytes += sizeof(std::string) + heap(n);
-  bytes += place_index_.memoryBytes() + transition_index_.memoryBytes();
+  bytes += names_.memoryBytes();
   return bytes;
 }
 
@@ -59,8 +73,28 @@ void NetBuilder::reserve(std::size_t places, std::size_t transitions, std::size_
   core::reserveLarge(arcs_, terms);
 }
 
+namespace {
+
+/// `qualified_name` split at its last '/': (prefix, local name, whether it has no '/').
+std::tuple<std::string_view, std::string_view, bool> splitName(std::string_view qualified_name) {
+  const auto slash = qualified_name.rfind('/');
+  if (slash == std::string_view::npos) return {{}, qualified_name, true};
+  return {qualified_name.substr(0, slash), qualified_name.substr(slash + 1), false};
+}
+
+}  // namespace
+
 PlaceId NetBuilder::addPlace(std::string name, SourceLoc loc) {
-  places_.push_back({std::move(name), std::move(loc), 0, 0});
+  const auto [prefix, local, bare] = splitName(name);
+  const auto scope = names_.scopeForPrefix(prefix, bare);
+  const auto table = names_.scope(scope).table;
+  const auto p = addScopedPlace(scope, names_.addPlace(table, std::string(local), std::move(loc)));
+  names_.addPlaceId(table, p);
+  return p;
+}
+
+PlaceId NetBuilder::addScopedPlace(std::uint32_t scope, std::uint32_t local) {
+  places_.push_back({0, 0, scope, local});
   first_slot_.push_back(kNoSlot);
   return static_cast<PlaceId>(places_.size() - 1);
 }
@@ -101,11 +135,22 @@ void NetBuilder::setNodes(PlaceId place, SlotId slot, const std::vector<std::str
   s.initial = static_cast<std::int64_t>(tokens.size());
 }
 
-TransitionId NetBuilder::addTransition(std::string name, Duration duration, std::int64_t priority,
+TransitionId NetBuilder::addTransition(std::string name, const Duration& duration, std::int64_t priority,
                                        double probability, SourceLoc loc) {
+  const auto [prefix, local, bare] = splitName(name);
+  const auto scope = names_.scopeForPrefix(prefix, bare);
+  const auto table = names_.scope(scope).table;
+  const auto t = addScopedTransition(scope, names_.addTransition(table, std::string(local), std::move(loc)),
+                                     duration, priority, probability);
+  names_.addTransitionId(table, t);
+  return t;
+}
+
+TransitionId NetBuilder::addScopedTransition(std::uint32_t scope, std::uint32_t local, const DurationLaw& duration,
+                                             std::int64_t priority, double probability) {
   Transition t;
-  t.name = std::move(name);
-  t.loc = std::move(loc);
+  t.scope = scope;
+  t.local = local;
   t.duration = duration;
   t.priority = priority;
   t.probability = probability;
@@ -294,13 +339,8 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
   net->scripts_ = std::move(scripts_);
   net->globals_script_ = globals_script_;
   net->node_names_ = std::move(node_names_);
-  const Net& frozen = *net;
-  auto ignore = [](std::uint32_t, std::uint32_t) {};  // the first of a name is found (compile() refuses twins)
-  net->place_index_.insertAll(static_cast<std::uint32_t>(frozen.places_.size()),
-                              [&](std::uint32_t p) -> std::string_view { return frozen.places_[p].name; }, ignore);
-  net->transition_index_.insertAll(static_cast<std::uint32_t>(frozen.transitions_.size()),
-                                   [&](std::uint32_t t) -> std::string_view { return frozen.transitions_[t].name; },
-                                   ignore);
+  names_.freeze();
+  net->names_ = std::move(names_);
 
   *this = NetBuilder{};
   return net;

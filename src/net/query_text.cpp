@@ -84,13 +84,16 @@ std::vector<Token> tokenize(std::string_view s) {
   return out;
 }
 
-// the id `find` gives `name`, or else that of the one name among `names` ending in "/" + name
-template <class Find, class Names>
-std::int64_t lookup(std::string_view name, Find find, const Names& names) {
+// the id `find` gives `name`, or else that of the one among `count` constructs whose name
+// (`append(out, id)` appends it) ends in "/" + name
+template <class Find, class Append>
+std::int64_t lookup(std::string_view name, Find find, std::size_t count, Append append) {
   if (const std::int64_t id = find(name); id >= 0) return id;
   std::int64_t found = -1;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    const std::string& n = names[i].name;
+  std::string n;
+  for (std::size_t i = 0; i < count; ++i) {
+    n.clear();
+    append(n, static_cast<std::uint32_t>(i));
     if (n.size() > name.size() && n.ends_with(name) && n[n.size() - name.size() - 1] == '/') {
       if (found >= 0) return -1;
       found = static_cast<std::int64_t>(i);
@@ -346,7 +349,7 @@ std::string sumText(const Net& net, const TokenSum& s) {
     const PlaceId p = net.placeSlots()[k].place;
     if (p == last) continue;  // a place's slots were named once, by the place
     last = p;
-    out += (out.empty() ? "" : " + ") + name(net.places()[p].name);
+    out += (out.empty() ? "" : " + ") + name(net.placeName(p));
   }
   if (s.constant != 0 || out.empty()) out += (out.empty() ? "" : " + ") + std::to_string(s.constant);
   return out;
@@ -355,11 +358,13 @@ std::string sumText(const Net& net, const TokenSum& s) {
 }  // namespace
 
 std::int64_t findPlaceNamed(const Net& net, std::string_view name) {
-  return lookup(name, [&](std::string_view x) { return net.findPlace(x); }, net.places());
+  return lookup(name, [&](std::string_view x) { return net.findPlace(x); }, net.places().size(),
+                [&](std::string& out, PlaceId p) { net.appendPlaceName(out, p); });
 }
 
 std::int64_t findTransitionNamed(const Net& net, std::string_view name) {
-  return lookup(name, [&](std::string_view x) { return net.findTransition(x); }, net.transitions());
+  return lookup(name, [&](std::string_view x) { return net.findTransition(x); }, net.transitions().size(),
+                [&](std::string& out, TransitionId t) { net.appendTransitionName(out, t); });
 }
 
 std::optional<Formula> parseQuery(const Net& net, std::string_view text, QueryError& error) {
@@ -384,7 +389,7 @@ std::string formulaText(const Net& net, const Formula& f) {
     case FormulaKind::Fireable: {
       std::string out = "fireable(";
       for (std::size_t i = 0; i < f.transitions.size(); ++i) {
-        out += (i ? ", " : "") + name(net.transitions()[f.transitions[i]].name);
+        out += (i ? ", " : "") + name(net.transitionName(f.transitions[i]));
       }
       return out + ")";
     }

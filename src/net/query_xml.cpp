@@ -12,12 +12,12 @@ namespace {
 
 using detail::XmlElement;
 
-/// Names by their last part (a PNML id under its net's or page's path), -2 when several share it.
-std::unordered_map<std::string_view, std::int64_t> byLastPart(const auto& named) {
+/// Names by their last part (a PNML id under its net's or page's path), -2 when several share
+/// it; `lastPart(id)` gives the last part of construct id's name, for ids below `count`.
+std::unordered_map<std::string_view, std::int64_t> byLastPart(std::size_t count, const auto& lastPart) {
   std::unordered_map<std::string_view, std::int64_t> out;
-  for (std::size_t i = 0; i < named.size(); ++i) {
-    std::string_view n = named[i].name;
-    if (const auto slash = n.rfind('/'); slash != std::string_view::npos) n = n.substr(slash + 1);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::string_view n = lastPart(static_cast<std::uint32_t>(i));
     const auto [at, added] = out.emplace(n, static_cast<std::int64_t>(i));
     if (!added) at->second = -2;
   }
@@ -27,7 +27,10 @@ std::unordered_map<std::string_view, std::int64_t> byLastPart(const auto& named)
 class Reader {
  public:
   Reader(const Net& net, core::Diagnostics& diags)
-      : net_(net), diags_(diags), places_(byLastPart(net.places())), transitions_(byLastPart(net.transitions())) {}
+      : net_(net),
+        diags_(diags),
+        places_(byLastPart(net.places().size(), [&](PlaceId p) { return net.placeLocalName(p); })),
+        transitions_(byLastPart(net.transitions().size(), [&](TransitionId t) { return net.transitionLocalName(t); })) {}
 
   std::optional<Formula> formula(const XmlElement& e, std::size_t depth = 0) {
     if (depth > kMaxDepth) return fail(e, "the formula is nested more than 100 levels deep");

@@ -20,17 +20,23 @@ void TraceWriter::event(std::int64_t step, const char* event, const std::string&
 
 void TraceWriter::onStart(TransitionId t, std::int64_t step) {
   head(step, "start");
-  out_ << ",\"transition\":" << core::jsonQuote(net_.transitions()[t].name) << "}\n";
+  name_.clear();
+  net_.appendTransitionName(name_, t);
+  out_ << ",\"transition\":" << core::jsonQuote(name_) << "}\n";
 }
 
 void TraceWriter::onComplete(TransitionId t, std::int64_t step, std::int64_t) {
   head(step, "complete");
-  out_ << ",\"transition\":" << core::jsonQuote(net_.transitions()[t].name) << "}\n";
+  name_.clear();
+  net_.appendTransitionName(name_, t);
+  out_ << ",\"transition\":" << core::jsonQuote(name_) << "}\n";
 }
 
 void TraceWriter::tokens(PlaceSlotId ps, std::int64_t count, std::span<const NodeRef> nodes) {
   const auto& slot = net_.placeSlots()[ps];
-  out_ << ",\"place\":" << core::jsonQuote(net_.places()[slot.place].name) << ",\"slot\":\""
+  name_.clear();
+  net_.appendPlaceName(name_, slot.place);
+  out_ << ",\"place\":" << core::jsonQuote(name_) << ",\"slot\":\""
        << slotName(slot.slot) << "\",\"count\":" << count;
   if (slot.kind == SlotKind::Node) {
     out_ << ",\"tokens\":[";

@@ -517,15 +517,15 @@ struct Engine::Impl : detail::Context {
 
   std::string describe(ScriptKind kind, std::uint32_t id) const {
     switch (net::info(kind).owner) {
-      case net::ScriptOwner::Transition: return "transition '" + net.transitions()[id].name + "'";
+      case net::ScriptOwner::Transition: return "transition '" + net.transitionName(id) + "'";
       case net::ScriptOwner::PlaceSlot: {
         const auto& ps = net.placeSlots()[id];
-        return "place '" + net.places()[ps.place].name + "' slot " + net::slotName(ps.slot);
+        return "place '" + net.placeName(ps.place) + "' slot " + net::slotName(ps.slot);
       }
       case net::ScriptOwner::Arc: {
         const auto& term = net.terms()[id];
         const auto& ps = net.placeSlots()[term.place_slot];
-        return "arc '" + net.places()[ps.place].name + "' -> '" + net.transitions()[term.transition].name +
+        return "arc '" + net.placeName(ps.place) + "' -> '" + net.transitionName(term.transition) +
                "' slot " + net::slotName(ps.slot);
       }
       case net::ScriptOwner::Model: return "the model";

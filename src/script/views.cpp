@@ -57,8 +57,8 @@ struct RandomView {
 
 std::string ownerName(const SlotView& s) {
   const auto& net = s.r.get().netRef();
-  return s.of_transition ? "transition '" + net.transitions()[s.owner].name + "'"
-                         : "place '" + net.places()[s.owner].name + "'";
+  return s.of_transition ? "transition '" + net.transitionName(s.owner) + "'"
+                         : "place '" + net.placeName(s.owner) + "'";
 }
 
 /// The place slot of a place's slot view, or -1.
@@ -852,7 +852,7 @@ class Geometries(list):
       .def("__repr__", [](const SensorView& v) { return "<sensor " + v.r.get().nodeName(v.sensor) + ">"; });
 
   py::class_<TransitionView>(m, "Transition", "A transition, as its scripts see it")
-      .def_property_readonly("name", [](const TransitionView& v) { return v.r.get().netRef().transitions()[v.t].name; })
+      .def_property_readonly("name", [](const TransitionView& v) { return v.r.get().netRef().transitionName(v.t); })
       .def_property_readonly("elapsed",
                              [](const TransitionView& v) {
                                auto& k = v.r.get().kernelRef();
@@ -885,25 +885,25 @@ class Geometries(list):
                              },
                              "seconds; when the current or last occurrence started")
       .def_property_readonly(
-          "instance", [](const TransitionView& v) { return instanceOf(v.r.get(), v.r.get().netRef().transitions()[v.t].name); },
+          "instance", [](const TransitionView& v) { return instanceOf(v.r.get(), v.r.get().netRef().transitionName(v.t)); },
           "the scene node of its page type's instance (the Transform that places the instance's "
           "machine), or None on a top-level page")
       .def("__getattr__", [](const TransitionView& v, const std::string& name) { return slotAttr(v.r, true, v.t, name); })
       .def("__repr__", [](const TransitionView& v) {
-        return "<transition " + v.r.get().netRef().transitions()[v.t].name + ">";
+        return "<transition " + v.r.get().netRef().transitionName(v.t) + ">";
       });
 
   py::class_<PlaceView>(m, "Place", "A place, as scripts see it")
-      .def_property_readonly("name", [](const PlaceView& v) { return v.r.get().netRef().places()[v.p].name; })
+      .def_property_readonly("name", [](const PlaceView& v) { return v.r.get().netRef().placeName(v.p); })
       .def_property(
           "capacity", [](const PlaceView& v) { return capacityOf(SlotView{v.r, false, v.p, net::kDefaultSlot}); },
           [](const PlaceView& v, const py::object& c) { setCapacity(SlotView{v.r, false, v.p, net::kDefaultSlot}, c); },
           "the capacity of slot a0, tokens; None when unbounded; settable when the model gives one")
       .def_property_readonly(
-          "instance", [](const PlaceView& v) { return instanceOf(v.r.get(), v.r.get().netRef().places()[v.p].name); },
+          "instance", [](const PlaceView& v) { return instanceOf(v.r.get(), v.r.get().netRef().placeName(v.p)); },
           "the scene node of its page type's instance, or None on a top-level page")
       .def("__getattr__", [](const PlaceView& v, const std::string& name) { return slotAttr(v.r, false, v.p, name); })
-      .def("__repr__", [](const PlaceView& v) { return "<place " + v.r.get().netRef().places()[v.p].name + ">"; });
+      .def("__repr__", [](const PlaceView& v) { return "<place " + v.r.get().netRef().placeName(v.p) + ">"; });
 
   py::class_<RandomView>(m, "Random", "The model's seeded random generator")
       .def("random", [](const RandomView& v) { return v.r.get().kernelRef().random().uniform01(); },

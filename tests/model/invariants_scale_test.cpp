@@ -97,7 +97,7 @@ TEST(InvariantsByPageType, CellsOnTheirOwnAndCellsFedFromOnePlaceGiveTheFlatNets
     std::vector<std::string> p;
     for (const auto& y : inv.p) {
       ASSERT_EQ(y.weights.size(), 1u);
-      p.push_back(net->places()[net->placeSlots()[y.weights[0].first].place].name);
+      p.push_back(net->placeName(net->placeSlots()[y.weights[0].first].place));
     }
     ASSERT_EQ(p.size(), linked ? 24u : 25u);
     EXPECT_EQ(p[0], linked ? "main/c0/ready" : "main/feed");

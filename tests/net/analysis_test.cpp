@@ -168,8 +168,8 @@ TEST(Analysis, TheShortestPathToADeadlockIsGiven) {
   EXPECT_EQ(s.states, 3u);
   EXPECT_TRUE(s.deadlock);
   ASSERT_EQ(s.deadlock_path.size(), 2u);
-  EXPECT_EQ(net->transitions()[s.deadlock_path[0]].name, "net/T1");
-  EXPECT_EQ(net->transitions()[s.deadlock_path[1]].name, "net/T2");
+  EXPECT_EQ(net->transitionName(s.deadlock_path[0]), "net/T1");
+  EXPECT_EQ(net->transitionName(s.deadlock_path[1]), "net/T2");
   EXPECT_FALSE(s.reversible);
 }
 

@@ -89,7 +89,7 @@ std::string describe(const Net& net) {
   std::ostringstream out;
   auto name = [&](PlaceSlotId ps) {
     const auto& s = net.placeSlots()[ps];
-    return net.places()[s.place].name + "." + slotName(s.slot);
+    return net.placeName(s.place) + "." + slotName(s.slot);
   };
   for (PlaceSlotId ps = 0; ps < net.placeSlots().size(); ++ps) {
     const auto& s = net.placeSlots()[ps];
@@ -99,7 +99,7 @@ std::string describe(const Net& net) {
   }
   const char* kinds[] = {"in", "test", "inhibitor", "out", "condition"};
   for (TransitionId t = 0; t < net.transitions().size(); ++t) {
-    out << net.transitions()[t].name << ":";
+    out << net.transitionName(t) << ":";
     for (const Term& term : net.termsOf(t)) {
       out << " " << kinds[static_cast<int>(term.kind)] << " " << name(term.place_slot) << "*" << term.weight;
     }

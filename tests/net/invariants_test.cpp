@@ -21,7 +21,7 @@ using testing::conformanceNet;
 std::set<std::string> support(const Net& net, const Invariant& inv, bool places) {
   std::set<std::string> out;
   for (const auto& [k, w] : inv.weights) {
-    std::string n = places ? placeSlotName(net, k) : net.transitions()[k].name;
+    std::string n = places ? placeSlotName(net, k) : net.transitionName(k);
     out.insert(n.substr(n.find('/') + 1));
   }
   return out;

@@ -46,7 +46,7 @@ std::string word(const QueryAnswer& a) {
 std::vector<std::vector<std::int64_t>> lassoMarkings(const Net& net, const QueryAnswer& a, std::size_t& loop) {
   std::vector<std::vector<std::int64_t>> out;
   auto m = testing::initialMarking(net);
-  auto fire = [&](TransitionId t) { EXPECT_TRUE(testing::fire(net, t, m)) << net.transitions()[t].name; };
+  auto fire = [&](TransitionId t) { EXPECT_TRUE(testing::fire(net, t, m)) << net.transitionName(t); };
   for (TransitionId t : a.path) {
     out.push_back(m);
     fire(t);

@@ -34,13 +34,13 @@ class ReentrantHooks : public ScriptHooks {
  public:
   explicit ReentrantHooks(const Net& net) : net_(net) {}
   bool guard(TransitionId t) override {
-    record("guard " + net_.transitions()[t].name);
+    record("guard " + net_.transitionName(t));
     return true;
   }
   bool eligible(TermId, NodeRef) override { return true; }
-  void preFire(TransitionId t) override { record("pre_fire " + net_.transitions()[t].name); }
-  void inFire(TransitionId t) override { record("in_fire " + net_.transitions()[t].name); }
-  void postFire(TransitionId t) override { record("post_fire " + net_.transitions()[t].name); }
+  void preFire(TransitionId t) override { record("pre_fire " + net_.transitionName(t)); }
+  void inFire(TransitionId t) override { record("in_fire " + net_.transitionName(t)); }
+  void postFire(TransitionId t) override { record("post_fire " + net_.transitionName(t)); }
   void onDeposit(PlaceSlotId ps, const NodeRef* token) override { record("on_deposit " + where(ps, token)); }
   void onRemove(PlaceSlotId ps, const NodeRef* token) override { record("on_remove " + where(ps, token)); }
   [[nodiscard]] bool halted() const override { return false; }
@@ -61,7 +61,7 @@ class ReentrantHooks : public ScriptHooks {
   }
   std::string where(PlaceSlotId ps, const NodeRef* token) const {
     const auto& s = net_.placeSlots()[ps];
-    return net_.places()[s.place].name + "." + slotName(s.slot) + (token ? " #" + std::to_string(*token) : "");
+    return net_.placeName(s.place) + "." + slotName(s.slot) + (token ? " #" + std::to_string(*token) : "");
   }
   const Net& net_;
   std::map<std::string, std::function<void()>> actions_;
@@ -131,7 +131,7 @@ void expectConsistent(const Kernel& k) {
         case TermKind::Condition: ok = false; break;
       }
     }
-    EXPECT_EQ(k.enabled(t), ok) << net.transitions()[t].name;
+    EXPECT_EQ(k.enabled(t), ok) << net.transitionName(t);
     enabled += ok ? 1 : 0;
   }
   EXPECT_EQ(k.enabledCount(), enabled);

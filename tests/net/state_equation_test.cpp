@@ -48,8 +48,8 @@ TEST(StateEquation, NoBoundFallsBelowWhatTheStateSpaceReaches) {
       const auto ps = net->places()[p].slots_begin;
       if (lp[ps] < 0) continue;
       ++bounded;
-      ASSERT_NE(s.place_bound[p], kOmega) << net->places()[p].name;
-      EXPECT_GE(lp[ps], s.place_bound[p]) << net->places()[p].name;
+      ASSERT_NE(s.place_bound[p], kOmega) << net->placeName(p);
+      EXPECT_GE(lp[ps], s.place_bound[p]) << net->placeName(p);
       ++checked;
     }
   }

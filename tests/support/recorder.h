@@ -13,11 +13,11 @@ class Recorder : public net::NetObserver {
  public:
   explicit Recorder(const net::Net& net) : net_(net) {}
   void onStart(net::TransitionId t, std::int64_t step) override {
-    events.push_back("start " + net_.transitions()[t].name + " @" + std::to_string(step));
-    starts.emplace_back(net_.transitions()[t].name, step);
+    events.push_back("start " + net_.transitionName(t) + " @" + std::to_string(step));
+    starts.emplace_back(net_.transitionName(t), step);
   }
   void onComplete(net::TransitionId t, std::int64_t step, std::int64_t) override {
-    events.push_back("complete " + net_.transitions()[t].name + " @" + std::to_string(step));
+    events.push_back("complete " + net_.transitionName(t) + " @" + std::to_string(step));
   }
   void onRemove(net::PlaceSlotId ps, std::int64_t n, std::span<const net::NodeRef> nodes, std::int64_t step) override {
     events.push_back("remove " + where(ps) + " x" + std::to_string(n) + list(nodes) + " @" + std::to_string(step));
@@ -40,7 +40,7 @@ class Recorder : public net::NetObserver {
  private:
   std::string where(net::PlaceSlotId ps) const {
     const auto& s = net_.placeSlots()[ps];
-    return net_.places()[s.place].name + "." + net::slotName(s.slot);
+    return net_.placeName(s.place) + "." + net::slotName(s.slot);
   }
   static std::string list(std::span<const net::NodeRef> nodes) {
     if (nodes.empty()) return "";

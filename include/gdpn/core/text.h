@@ -33,6 +33,9 @@ std::string formatTime(double seconds);
 /// ("... and N more (--json lists all)").
 void writeWrapped(std::ostream& out, std::size_t column, const std::vector<std::string_view>& words, std::size_t indent,
                   std::size_t most = static_cast<std::size_t>(-1));
+/// writeWrapped() for words held as strings.
+void writeWrapped(std::ostream& out, std::size_t column, const std::vector<std::string>& words, std::size_t indent,
+                  std::size_t most = static_cast<std::size_t>(-1));
 
 /// `text` split at its spaces.
 std::vector<std::string_view> words(std::string_view text);

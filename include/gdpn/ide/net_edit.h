@@ -97,6 +97,8 @@ class SetGlobalsCommand final : public Command {
 
 /// The page or page type `name` of `net`; null when there is none.
 net::PageSpec* findPage(net::NetSpec& net, const std::string& name, bool* is_type = nullptr);
+/// findPage() in a net that is only read.
+const net::PageSpec* findPage(const net::NetSpec& net, const std::string& name, bool* is_type = nullptr);
 
 // Changes to a place's slots, for the contents view: each keeps the place in the form the
 // model file would have read (empty entries dropped), so that a save reads back the same.

@@ -98,7 +98,7 @@ std::string queriesJson(const net::Net& net, const std::vector<QueryResult>& res
 /// that shows it, a lasso's cycle and the marking reached), and the model it is for.
 std::string witnessJson(const net::Net& net, const QueryResult& result, const std::string& model_file);
 /// The places that hold tokens in `marking` (per place slot) and how many, in place order.
-std::vector<std::pair<std::string_view, std::int64_t>> markedPlaces(const net::Net& net,
-                                                                     const std::vector<std::int64_t>& marking);
+std::vector<std::pair<std::string, std::int64_t>> markedPlaces(const net::Net& net,
+                                                                const std::vector<std::int64_t>& marking);
 
 }  // namespace gdpn::model

@@ -18,16 +18,26 @@ class NetBuilder {
   /// Makes room for `places` places (with about one slot each), `transitions` transitions and
   /// `terms` arc terms, so that building a large net does not move what it has built.
   void reserve(std::size_t places, std::size_t transitions, std::size_t terms);
-  /// Adds a place; its slots are made by setSlot() or by arcs.
+  /// Adds a place called `name` (qualified: its scope is the part before the last '/');
+  /// its slots are made by setSlot() or by arcs.
   PlaceId addPlace(std::string name, SourceLoc loc = {});
+  /// Adds place `local` of the table of `scope` (made with names()); compile() uses this, so
+  /// that a page type's names and locations are stored once for all its instances.
+  PlaceId addScopedPlace(std::uint32_t scope, std::uint32_t local);
   /// Sets the kind, capacity and initial marking of one slot of `place`.
   void setSlot(PlaceId place, SlotId slot, SlotKind kind, std::int64_t capacity,
                std::int64_t initial);
   /// Sets the initial node tokens of node slot `slot` of `place` (FIFO order); makes it a node slot.
   void setNodes(PlaceId place, SlotId slot, const std::vector<std::string>& nodes);
-  /// Adds a transition; `duration` in seconds.
-  TransitionId addTransition(std::string name, Duration duration = {}, std::int64_t priority = 0,
+  /// Adds a transition called `name` (qualified, as for addPlace); `duration` in seconds.
+  TransitionId addTransition(std::string name, const Duration& duration = {}, std::int64_t priority = 0,
                              double probability = 1.0, SourceLoc loc = {});
+  /// Adds transition `local` of the table of `scope` (made with names()); `duration` in seconds.
+  TransitionId addScopedTransition(std::uint32_t scope, std::uint32_t local, const DurationLaw& duration,
+                                   std::int64_t priority, double probability);
+  /// The tables and scopes of the net being built: compile() adds a table per page type and a
+  /// scope per instantiated page here before adding their places and transitions.
+  [[nodiscard]] Names& names() { return names_; }
   /// Adds an input arc term: place -> transition at `slot`.
   void addInput(PlaceId place, TransitionId transition, SlotId slot = kDefaultSlot,
                 std::int32_t weight = 1, ArcKind kind = ArcKind::Normal);
@@ -78,6 +88,7 @@ class NetBuilder {
   };
   BuildSlot& slotOf(PlaceId place, SlotId slot);
 
+  Names names_;                             // moved into the Net, with its indexes built
   std::vector<Place> places_;               // moved into the Net as they are
   std::vector<std::uint32_t> first_slot_;  // per place: its first slot in slots_ (a chain, no vector per place)
   std::vector<BuildSlot> slots_;

@@ -106,7 +106,7 @@ std::vector<CycleBound> cycleBounds(const Net& net, const Invariants& invariants
                                     const InvariantOptions& options = {}, ExploreStop* stop = nullptr);
 
 /// The mean of a duration, seconds.
-double meanSeconds(const Duration& duration);
+double meanSeconds(const DurationLaw& duration);
 
 /// A place slot's name for reports: the place's name, with ".slot" when not a0.
 std::string placeSlotName(const Net& net, PlaceSlotId ps);

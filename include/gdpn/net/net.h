@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "gdpn/core/diagnostics.h"
-#include "gdpn/core/name_table.h"
+#include "gdpn/net/names.h"
 #include "gdpn/net/slot.h"
 #include "gdpn/net/spec.h"
 
@@ -74,20 +74,21 @@ struct PlaceSlot {
   std::uint8_t scripts = 0;             ///< SlotScript bits
 };
 
-/// A place after flattening.
+/// A place after flattening. Its name and location are Net::placeName() and Net::placeLoc().
 struct Place {
-  std::string name;            ///< qualified name ("line/stationA/buffer")
-  SourceLoc loc;               ///< where it was declared
   std::uint32_t slots_begin = 0;  ///< its place slots: range in Net::placeSlots()
   std::uint32_t slots_end = 0;    ///< end of that range
+  std::uint32_t scope = 0;        ///< the instantiated page it belongs to (Net::names())
+  std::uint32_t local = 0;        ///< its index in that page's ConstructTable
 };
 
 /// A transition after flattening. Its terms lie in Net::terms() in the order: normal inputs,
-/// tests and inhibitors, outputs.
+/// tests and inhibitors, outputs. Its name and location are Net::transitionName() and
+/// Net::transitionLoc().
 struct Transition {
-  std::string name;                ///< qualified name
-  SourceLoc loc;                   ///< where it was declared
-  Duration duration;               ///< seconds
+  std::uint32_t scope = 0;         ///< the instantiated page it belongs to (Net::names())
+  std::uint32_t local = 0;         ///< its index in that page's ConstructTable
+  DurationLaw duration;            ///< seconds
   std::int64_t priority = 0;       ///< higher first
   std::uint32_t priority_rank = 0; ///< 0 for the highest priority in the net, dense
   double probability = 1.0;        ///< chance to start in a step while enabled
@@ -125,6 +126,32 @@ class Net {
   /// Indices into nodeNames(), referenced by PlaceSlot::nodes_begin/nodes_end.
   [[nodiscard]] std::span<const std::uint32_t> initialNodes() const { return initial_nodes_; }
 
+  /// The qualified name of place `p` ("line/cellA/buffer"), built on request.
+  [[nodiscard]] std::string placeName(PlaceId p) const;
+  /// The qualified name of transition `t`, built on request.
+  [[nodiscard]] std::string transitionName(TransitionId t) const;
+  /// Appends the qualified name of place `p` to `out` (for loops that write many names).
+  void appendPlaceName(std::string& out, PlaceId p) const;
+  /// Appends the qualified name of transition `t` to `out`.
+  void appendTransitionName(std::string& out, TransitionId t) const;
+  /// The last part of place `p`'s qualified name ("buffer"), as declared in its page.
+  [[nodiscard]] std::string_view placeLocalName(PlaceId p) const {
+    return names_.table(names_.scope(places_[p].scope).table).places[places_[p].local];
+  }
+  /// The last part of transition `t`'s qualified name, as declared in its page.
+  [[nodiscard]] std::string_view transitionLocalName(TransitionId t) const {
+    return names_.table(names_.scope(transitions_[t].scope).table).transitions[transitions_[t].local];
+  }
+  /// Where place `p` was declared (its page type's declaration, for every instance).
+  [[nodiscard]] const SourceLoc& placeLoc(PlaceId p) const {
+    return names_.table(names_.scope(places_[p].scope).table).place_locs[places_[p].local];
+  }
+  /// Where transition `t` was declared (its page type's declaration, for every instance).
+  [[nodiscard]] const SourceLoc& transitionLoc(TransitionId t) const {
+    return names_.table(names_.scope(transitions_[t].scope).table).transition_locs[transitions_[t].local];
+  }
+  /// The tables of local names and locations, and the scopes (instantiated pages).
+  [[nodiscard]] const Names& names() const { return names_; }
   /// The place called `qualified_name`, or -1.
   [[nodiscard]] std::int64_t findPlace(std::string_view qualified_name) const;
   /// The transition called `qualified_name`, or -1.
@@ -160,8 +187,7 @@ class Net {
   std::vector<TermId> watchers_;
   std::vector<std::string> node_names_;
   std::vector<std::uint32_t> initial_nodes_;
-  core::NameTable place_index_;       // qualified name -> PlaceId (names in places_)
-  core::NameTable transition_index_;  // qualified name -> TransitionId (names in transitions_)
+  Names names_;  // names and locations, per page type, and the scopes that use them
   std::uint32_t priority_levels_ = 1;
   std::vector<ScriptSpec> scripts_;
   ScriptIndex script_index_;

@@ -18,8 +18,8 @@ namespace gdpn::net {
 
 using core::SourceLoc;
 
-/// A transition's duration: a constant or a distribution drawn at each start (seconds).
-struct Duration {
+/// The law of a transition's duration and its parameters: what the kernel draws from (seconds).
+struct DurationLaw {
   /// Which law the duration follows.
   enum class Law : std::uint8_t {
     Fixed,        ///< `a` seconds
@@ -28,20 +28,26 @@ struct Duration {
     Exponential,  ///< exponential with mean `a` seconds
     Immediate,    ///< no time at all: starts and completes within the firing phase (`duration: 0`)
   };
+  Law law = Law::Fixed;  ///< the law
+  double a = 0.0;        ///< first parameter, seconds
+  double b = 0.0;        ///< second parameter, seconds (uniform, normal)
+
+  /// True for a constant duration (an immediate one too: 0 s).
+  [[nodiscard]] bool fixed() const { return law == Law::Fixed || law == Law::Immediate; }
+};
+
+/// A transition's duration as written: a constant or a distribution drawn at each start
+/// (seconds), with where it was written and the model parameters it names.
+struct Duration : DurationLaw {
   /// 0 s, fixed.
   Duration() = default;
   /// A duration of law `law` with parameters `a` and `b` (seconds), written at `where`.
   Duration(Law law_, double a_, double b_ = 0.0, SourceLoc where = {})
-      : law(law_), a(a_), b(b_), loc(std::move(where)) {}
-  Law law = Law::Fixed;  ///< the law
-  double a = 0.0;        ///< first parameter, seconds
-  double b = 0.0;        ///< second parameter, seconds (uniform, normal)
+      : DurationLaw{law_, a_, b_}, loc(std::move(where)) {}
   SourceLoc loc;         ///< where it was written
   /// the model parameters `a` and `b` come from ("" for a number written as such)
   std::array<std::string, 2> params;
 
-  /// True for a constant duration (an immediate one too: 0 s).
-  [[nodiscard]] bool fixed() const { return law == Law::Fixed || law == Law::Immediate; }
   friend bool operator==(const Duration& x, const Duration& y) {
     return x.law == y.law && x.a == y.a && x.b == y.b && x.params == y.params;
   }

@@ -35,6 +35,7 @@ class TraceWriter : public NetObserver {
   const Net& net_;
   double dt_;
   NodeNamer namer_;
+  std::string name_;  // the name being written (kept, so that writing it allocates nothing)
 };
 
 }  // namespace gdpn::net

@@ -147,10 +147,25 @@ void placeContents(const session::Session& session, net::PlaceId p, nlohmann::js
   }
 }
 
+/// The duration of transition `t` as its model writes it (naming the parameters it comes
+/// from); its law alone when the model does not write it.
+net::Duration writtenDuration(const session::Session& session, net::TransitionId t) {
+  const auto& net = session.simulation().net();
+  const auto& written = session.simulation().model().net;
+  if (const auto at = locateConstruct(written, net.transitionName(t))) {
+    if (const net::PageSpec* page = findPage(written, at->page)) {
+      for (const auto& spec : page->transitions) {
+        if (spec.name == at->name) return spec.duration;
+      }
+    }
+  }
+  const auto& law = net.transitions()[t].duration;
+  return {law.law, law.a, law.b};
+}
+
 void transitionContents(const session::Session& session, net::TransitionId t, nlohmann::json& report) {
   const auto& net = session.simulation().net();
-  const auto& tr = net.transitions()[t];
-  const auto duration = durationText(tr.duration);
+  const auto duration = durationText(writtenDuration(session, t));
   ImGui::Text("duration %s", duration.c_str());
   report["duration"] = duration;
   const auto& index = net.scriptIndex();

@@ -404,8 +404,8 @@ void runState(App& app, const session::Session& session, const Selection& sel, n
     if (p < 0) return;
     const auto tokens = sim.kernel().placeTokens(static_cast<net::PlaceId>(p));
     ImGui::Text("tokens: %lld", static_cast<long long>(tokens));
-    const auto& place = sim.net().places()[static_cast<std::size_t>(p)];
-    if (place.loc.line > 0) ImGui::TextDisabled("declared at %s", place.loc.str().c_str());
+    const auto& loc = sim.net().placeLoc(static_cast<net::PlaceId>(p));
+    if (loc.line > 0) ImGui::TextDisabled("declared at %s", loc.str().c_str());
     report["tokens"] = tokens;
     ImGui::SetNextItemWidth(90);
     ImGui::InputInt("##at_least", &app.break_tokens);
@@ -431,7 +431,7 @@ void runState(App& app, const session::Session& session, const Selection& sel, n
     if (app.run().mode() != RunMode::Edit) {
       ImGui::Text("priority %lld, probability %g", static_cast<long long>(tr.priority), tr.probability);
     }
-    if (tr.loc.line > 0) ImGui::TextDisabled("declared at %s", tr.loc.str().c_str());
+    if (const auto& loc = sim.net().transitionLoc(id); loc.line > 0) ImGui::TextDisabled("declared at %s", loc.str().c_str());
     report["state"] = state;
     breakpointBox(app, "break when it starts", session::Breakpoint::starts(sel.name), report);
     ImGui::SameLine();

@@ -242,25 +242,25 @@ void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
     const auto& net = session->simulation().net();
     const auto& kernel = session->simulation().kernel();
     for (std::size_t i = 0; i < net.places().size(); ++i) {
-      const auto& p = net.places()[i];
-      const auto label = "place  " + p.name + "  (" +
-                         std::to_string(kernel.placeTokens(static_cast<net::PlaceId>(i))) + ")";
-      const bool is_sel = sel.kind == SelectionKind::Place && sel.name == p.name;
-      if (ImGui::Selectable(label.c_str(), is_sel)) app.document().select({SelectionKind::Place, p.name});
+      const auto id = static_cast<net::PlaceId>(i);
+      const auto name = net.placeName(id);
+      const auto label = "place  " + name + "  (" + std::to_string(kernel.placeTokens(id)) + ")";
+      const bool is_sel = sel.kind == SelectionKind::Place && sel.name == name;
+      if (ImGui::Selectable(label.c_str(), is_sel)) app.document().select({SelectionKind::Place, name});
       ++places;
     }
     for (std::size_t i = 0; i < net.transitions().size(); ++i) {
-      const auto& t = net.transitions()[i];
       const auto id = static_cast<net::TransitionId>(i);
+      const auto name = net.transitionName(id);
       const char* state = kernel.occurring(id) ? "occurring" : kernel.enabled(id) ? "enabled" : "";
-      const auto label = "transition  " + t.name + (*state != '\0' ? std::string("  [") + state + "]" : "");
-      const bool is_sel = sel.kind == SelectionKind::Transition && sel.name == t.name;
+      const auto label = "transition  " + name + (*state != '\0' ? std::string("  [") + state + "]" : "");
+      const bool is_sel = sel.kind == SelectionKind::Transition && sel.name == name;
       ImGui::PushStyleColor(ImGuiCol_Text, kernel.occurring(id) ? ImVec4{1.0F, 0.45F, 0.4F, 1}
                                            : kernel.enabled(id) ? ImVec4{0.45F, 0.95F, 0.45F, 1}
                                                                 : ImGui::GetStyleColorVec4(ImGuiCol_Text));
       if (ImGui::Selectable(label.c_str(), is_sel)) {
-        app.document().select({SelectionKind::Transition, t.name});
-        app.fire_target = t.name;
+        app.document().select({SelectionKind::Transition, name});
+        app.fire_target = name;
       }
       ImGui::PopStyleColor();
       ++transitions;
