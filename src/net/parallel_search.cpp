@@ -30,6 +30,11 @@ using Succ = Chunked<std::uint32_t, 20>;
 /// Fills the end of a chunk of successor slots that the next run did not fit in.
 constexpr std::uint32_t kPad = 0xffffffffu;
 
+/// Whether bit `g` of the bit set `bits` is set.
+bool isSet(const std::vector<std::uint64_t>& bits, std::uint32_t g) { return ((bits[g >> 6] >> (g & 63)) & 1) != 0; }
+/// Sets bit `g` of `bits`.
+void set(std::vector<std::uint64_t>& bits, std::uint32_t g) { bits[g >> 6] |= std::uint64_t{1} << (g & 63); }
+
 struct Shard {
   std::unique_ptr<Store> store;
   std::mutex inbox_mutex;
@@ -393,7 +398,6 @@ class Parallel {
   /// every transition was seen enabled (no answer: false) or none is left. Costs a bit per
   /// state and the states searched; the strongly connected components are the fallback.
   bool missesATransition(std::uint64_t ids, const std::vector<std::uint64_t>& reach) {
-    auto isSet = [](const std::vector<std::uint64_t>& bits, std::uint32_t g) { return ((bits[g >> 6] >> (g & 63)) & 1) != 0; };
     std::uint32_t v = 0xffffffffu;
     forEachRun([&](std::uint32_t g, const std::uint32_t*, const std::uint32_t*) {
       if (v == 0xffffffffu && !isSet(reach, g)) v = g;
@@ -412,7 +416,7 @@ class Parallel {
     std::vector<TransitionId> candidates;
     std::vector<std::uint64_t> seen((ids + 63) / 64, 0);
     std::vector<std::uint32_t> queue{v};
-    seen[v >> 6] |= std::uint64_t{1} << (v & 63);
+    set(seen, v);
     std::size_t fire = 0;
     auto held = [&] { peak_ = std::max(peak_, bytes() + seen.size() * 8 + reach.size() * 8 + queue.capacity() * 4); };
     for (std::size_t head = 0; head < queue.size(); ++head) {
@@ -424,7 +428,7 @@ class Parallel {
       }
       for (const std::uint32_t* e = succBegin(w); e != succEnd(w); ++e) {
         if (isSet(seen, *e)) continue;
-        seen[*e >> 6] |= std::uint64_t{1} << (*e & 63);
+        set(seen, *e);
         queue.push_back(*e);
       }
     }
@@ -466,8 +470,8 @@ class Parallel {
   /// shard's edges) and each large level.
   std::uint64_t reachingStart(std::uint64_t ids, std::uint32_t s0, std::uint64_t states, std::vector<std::uint64_t>& reach) {
     reach.assign((ids + 63) / 64, 0);
-    auto isMarked = [&](std::uint32_t g) { return ((reach[g >> 6] >> (g & 63)) & 1) != 0; };
-    auto mark = [&](std::uint32_t g) { reach[g >> 6] |= std::uint64_t{1} << (g & 63); };
+    auto isMarked = [&](std::uint32_t g) { return isSet(reach, g); };
+    auto mark = [&](std::uint32_t g) { set(reach, g); };
     mark(s0);
     std::uint64_t marked = 1;
     for (;;) {

@@ -18,18 +18,20 @@ void TraceWriter::event(std::int64_t step, const char* event, const std::string&
   out_ << "}\n";
 }
 
-void TraceWriter::onStart(TransitionId t, std::int64_t step) {
-  head(step, "start");
+void TraceWriter::endWithTransition(TransitionId t) {
   name_.clear();
   net_.appendTransitionName(name_, t);
   out_ << ",\"transition\":" << core::jsonQuote(name_) << "}\n";
 }
 
+void TraceWriter::onStart(TransitionId t, std::int64_t step) {
+  head(step, "start");
+  endWithTransition(t);
+}
+
 void TraceWriter::onComplete(TransitionId t, std::int64_t step, std::int64_t) {
   head(step, "complete");
-  name_.clear();
-  net_.appendTransitionName(name_, t);
-  out_ << ",\"transition\":" << core::jsonQuote(name_) << "}\n";
+  endWithTransition(t);
 }
 
 void TraceWriter::tokens(PlaceSlotId ps, std::int64_t count, std::span<const NodeRef> nodes) {

@@ -35,6 +35,8 @@ class TraceWriter : public NetObserver {
   const Net& net_;
   double dt_;
   NodeNamer namer_;
+  /// Writes `,"transition":NAME}` and the line's end: the rest of a start or completion.
+  void endWithTransition(TransitionId t);
   std::string name_;  // the name being written (kept, so that writing it allocates nothing)
 };
 
