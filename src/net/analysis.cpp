@@ -372,27 +372,30 @@ void Search::noteNew(StateId s, StateId from, TransitionId t, bool accelerated) 
 }
 
 void Search::finishComponent(StateId v) {
-  // the component: v and the states above it on the stack
-  std::size_t first = stack_.size();
+  // the component: v and the states above it on the stack (all of them where v is the
+  // search's first state: its index is the lowest; nothing reads their indexes after it)
+  const bool last = frames_.empty();
+  std::size_t first = last ? 0 : stack_.size();
   while (first > 0 && rindex(stack_[first - 1]) >= rindex(v)) --first;
   const std::size_t size = stack_.size();
+  // a component of every state has no edge that leaves it
+  const bool every = size - first + 1 == store_->size();
   bool leaves = leaves_[v];
-  for (std::size_t i = first; i < size; ++i) leaves = leaves || leaves_[stack_[i]];
+  for (std::size_t i = first; i < size && !every; ++i) leaves = leaves || leaves_[stack_[i]];
   if (!leaves) {
     // a bottom component: every edge stays inside, so the transitions that fire inside it
     // are those enabled in its states
     ++bottoms_;
-    if (live_) {
-      union_.assign(net_.transitions().size(), false);
-      std::size_t fire = markEnabled(firing_, candidates_, store_->at(v), union_, candidates_now_);
-      for (std::size_t i = first; i < size; ++i) {
-        fire += markEnabled(firing_, candidates_, store_->at(stack_[i]), union_, candidates_now_);
-      }
-      live_ = fire == union_.size();
+    if (live_ && every) {
+      // the transitions fired inside are all those fired
+      live_ = std::all_of(fired_.begin(), fired_.end(), [](bool f) { return f; });
+    } else if (live_) {
+      auto marking = [&](std::size_t i) { return store_->at(i == 0 ? v : stack_[first + i - 1]); };
+      live_ = enablesAll(firing_, candidates_, net_.transitions().size(), size - first + 1, marking, union_, candidates_now_);
     }
   }
   root_bottom_ = !leaves;
-  for (std::size_t i = first; i < size; ++i) setRindex(stack_[i], next_comp_);
+  for (std::size_t i = first; i < size && !last; ++i) setRindex(stack_[i], next_comp_);
   setRindex(v, next_comp_);
   --next_comp_;
   stack_.shrink(first);

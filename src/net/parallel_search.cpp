@@ -363,12 +363,8 @@ class Parallel {
         if (!leaving) {
           ++bottoms;
           if (live) {
-            std::fill(fires.begin(), fires.end(), false);
-            std::size_t fire = markEnabled(firing_, candidates_, marking(v), fires, candidates);
-            for (std::size_t i = first; i < stack.size(); ++i) {
-              fire += markEnabled(firing_, candidates_, marking(stack[i]), fires, candidates);
-            }
-            live = fire == transitions;
+            auto at = [&](std::size_t i) { return marking(i == 0 ? v : stack[first + i - 1]); };
+            live = enablesAll(firing_, candidates_, transitions, stack.size() - first + 1, at, fires, candidates);
           }
         }
         root_bottom = !leaving;

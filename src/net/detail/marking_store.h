@@ -430,6 +430,19 @@ class Firing {
 std::size_t markEnabled(const Firing& firing, const Candidates& candidates, const std::uint64_t* m,
                         std::vector<bool>& seen, std::vector<TransitionId>& scratch);
 
+/// Whether every one of `transitions` transitions is enabled in one of the `n` markings
+/// `marking(i)` gives (those of a bottom component, in which each enabled one fires): looks
+/// at them in turn until all are seen, so a live net's component costs a few of its states.
+/// `seen` and `scratch` are scratch space.
+template <typename Marking>
+bool enablesAll(const Firing& firing, const Candidates& candidates, std::size_t transitions, std::size_t n,
+                Marking&& marking, std::vector<bool>& seen, std::vector<TransitionId>& scratch) {
+  seen.assign(transitions, false);
+  std::size_t fire = 0;
+  for (std::size_t i = 0; i < n && fire < transitions; ++i) fire += markEnabled(firing, candidates, marking(i), seen, scratch);
+  return fire == transitions;
+}
+
 /// How a search packs markings: field sizes from the invariants' bounds and capacities.
 struct Plan {
   std::vector<std::uint32_t> bits;   ///< per place slot
