@@ -599,6 +599,39 @@ TEST(Analysis, ThreadsFindANetLiveThatIsNotReversible) {
   }
 }
 
+TEST(Analysis, AComponentOfEveryStateIsLiveOnlyWhereEveryTransitionFires) {
+  // a token goes round a -> b -> c; `stuck` needs a token in d, which never has one. Every
+  // state lies in one component (reversible), but `stuck` never fires: not live; without it,
+  // live
+  for (const bool stuck : {true, false}) {
+    NetBuilder b;
+    std::vector<PlaceId> ring;
+    for (const char* name : {"a", "b", "c"}) ring.push_back(b.addPlace(name));
+    b.setSlot(ring[0], kDefaultSlot, SlotKind::Control, kUnbounded, 1);
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const auto t = b.addTransition("t" + std::to_string(i));
+      b.addInput(ring[i], t);
+      b.addOutput(t, ring[(i + 1) % ring.size()]);
+    }
+    if (stuck) {
+      const auto d = b.addPlace("d");
+      const auto t = b.addTransition("stuck");
+      b.addInput(d, t);
+      b.addOutput(t, ring[0]);
+    }
+    const auto net = b.freeze();
+    for (const unsigned threads : {1u, 2u}) {
+      ExploreOptions options;
+      options.threads = threads;
+      const auto s = explore(*net, options);
+      EXPECT_EQ(s.states, 3u) << threads;
+      EXPECT_TRUE(s.reversible) << threads;
+      EXPECT_EQ(s.live, !stuck) << threads;
+      EXPECT_EQ(s.quasi_live, !stuck) << threads;
+    }
+  }
+}
+
 TEST(Analysis, CountsBeyondWhatTheSearchHoldsGiveAPartialAnswer) {
   NetBuilder b;
   const auto p = b.addPlace("P");
