@@ -106,6 +106,10 @@ class Parallel {
     out.complete = stop_ == ExploreStop::Done;
     // a partial search gives no path: its arrays may have slots no owner filled yet
     out.deadlock = out.dead_markings > 0;
+    // what follows reads the markings by id and the graph, never looks a marking up: the
+    // tables go (a third of what the shards hold)
+    peak_ = std::max(peak_, bytes());
+    for (auto& s : shards_) s.store->dropIndex(), account(s);
     if (out.complete) components(out, ids);
     seen.settle(layout_);
     summarise(net_, seen, out);

@@ -262,6 +262,9 @@ class Store {
       }
     }
   }
+  /// Frees the table: the markings stay readable by id (at(), extra()), but none can be
+  /// looked up or added any more.
+  void dropIndex() { std::vector<std::uint64_t>().swap(table_); }
   /// Re-packs every marking into `layout` (wider fields), keeping the ids.
   void relayout(Layout layout) {
     Chunked<std::uint64_t, kArenaShift> next(layout.words() + extra_);
@@ -288,8 +291,9 @@ class Store {
   }
   void grow() { rehash(table_.size() * 2); }
   void rehash(std::size_t capacity) {
+    // the old table goes first (the markings give it again), so that the two never add up;
     // a table of many megabytes is probed at random: huge pages spare a TLB miss per probe
-    table_ = {};
+    dropIndex();
     core::reserveLarge(table_, capacity);
     table_.assign(capacity, kEmpty);
     for (std::size_t s = 0; s < size(); ++s) {
