@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Runs each libFuzzer target for SECONDS (default 60): the model loader, seeded with every
 # example and test model; the PNML reader, seeded with the test nets and the conformance nets;
-# the mesh loader, seeded with the test meshes; the input-event reader, seeded with the test
-# input files; the query reader, seeded with the test queries; the witness reader; the Modbus
-# request decoder, seeded with the test frames. Seven targets: about seven times
-# SECONDS in all. Fails on any crash, hang, leak or sanitizer report.
+# the mesh loader, seeded with the test meshes; the elevation loader, seeded with the test
+# elevation files; the input-event reader, seeded with the test input files; the query reader,
+# seeded with the test queries; the witness reader; the Modbus request decoder, seeded with the
+# test frames. Eight targets: about eight times SECONDS in all. Fails on any crash, hang, leak
+# or sanitizer report.
 # Needs the fuzz build: cmake --preset fuzz && cmake --build --preset fuzz
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -39,6 +40,7 @@ meshes='*.obj *.stl *.ply *.gltf *.glb *.dae *.3ds *.wrl *.iv'
 fuzz model_loader_fuzz 4096 '*.gdpn.yaml' examples/basics/* examples/plant/* examples/sorting examples/vision tests/data/good tests/data/bad
 fuzz pnml_reader_fuzz 65536 '*.pnml' tests/data/pnml tests/data/conformance
 fuzz mesh_loader_fuzz 32768 "$meshes" tests/data/meshes tests/data/bad/files tests/data/physics tests/data/good/parts
+fuzz elevation_loader_fuzz 4096 '*.asc *.xyz *.tif *.png' tests/data/elevation tests/data/bad/files
 fuzz input_events_fuzz 4096 '*.input.yaml' tests/data/input
 fuzz query_parser_fuzz 8192 '*.query *.xml' tests/data/queries
 fuzz witness_fuzz 4096 '*.json' tests/data/witnesses

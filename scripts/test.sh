@@ -4,7 +4,7 @@
 #   2. release build with warnings as errors; unit and golden tests (CTest);
 #   3. debug build under AddressSanitizer + UBSan; the unit tests again;
 #   4. clang build of the libFuzzer targets; 45 s of fuzzing each loader (scripts/fuzz.sh:
-#      models, PNML, meshes, input events, queries, witnesses, Modbus requests;
+#      models, PNML, meshes, elevation files, input events, queries, witnesses, Modbus requests;
 #      GDPN_FUZZ_SECONDS for more),
 #      so that the whole stays within 30 minutes on 2 cores.
 set -euo pipefail

@@ -88,7 +88,12 @@ bool Geodesy::toGeodetic(double x, double y, double& latitude, double& longitude
   const double row = 0.5 + (depth_ / 2 - y) / depth_ * (ny_ - 1);
   const auto& t = transform_;
   double px = t[0] + col * t[1] + row * t[2], py = t[3] + col * t[4] + row * t[5];
-  if (!loadedGdal().transform(static_cast<OGRCoordinateTransformationH>(to_wgs84_), 1, &px, &py, nullptr)) return false;
+  // a point the projection cannot take is a false answer, not a line of GDAL's on stderr
+  const GdalLibrary& gd = loadedGdal();
+  gd.pushErrorHandler(gd.quietErrorHandler);
+  const bool ok = gd.transform(static_cast<OGRCoordinateTransformationH>(to_wgs84_), 1, &px, &py, nullptr);
+  gd.popErrorHandler();
+  if (!ok) return false;
   longitude = px;
   latitude = py;
   return std::isfinite(px) && std::isfinite(py);
