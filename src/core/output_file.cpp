@@ -141,9 +141,13 @@ void OutputFile::discard() {
 }
 
 bool writeOutput(const std::string& path, const std::string& text, std::string& why) {
+  return writeOutput(path, [&text](std::ostream& out) { out << text; }, why);
+}
+
+bool writeOutput(const std::string& path, const std::function<void(std::ostream&)>& write, std::string& why) {
   OutputFile out(path);
   if (!out.open(why)) return false;
-  out.stream() << text;
+  write(out.stream());
   return out.commit(why);
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <sstream>
 
 #include "gdpn/core/text.h"
 #include "gdpn/model/analysis.h"
@@ -154,12 +155,12 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
 
 namespace {
 
-/// The text of a JSON document as `ordered_json::dump(2)` writes it, written piece by piece:
-/// the large arrays one element at a time, so that no tree of the whole report is held (at
-/// 100,000 instances it would hold several times the text).
+/// The text of a JSON document as `ordered_json::dump(2)` writes it, written piece by piece
+/// to a stream: the large arrays one element at a time, so that neither a tree of the whole
+/// report nor its text is held (at 100,000 instances the text alone is 135 MB).
 class JsonText {
  public:
-  explicit JsonText(std::string& out) : out_(out) { out_ += "{\n"; }
+  explicit JsonText(std::ostream& out) : out_(out) { out_ << "{\n"; }
   /// A member whose value is small enough to build whole.
   void member(const std::string& key, const nlohmann::ordered_json& value) {
     open(key);
@@ -170,33 +171,36 @@ class JsonText {
   void array(const std::string& key, std::size_t count, Element&& element) {
     open(key);
     if (count == 0) {
-      out_ += "[]";
+      out_ << "[]";
       return;
     }
-    out_ += "[\n";
+    out_ << "[\n";
     for (std::size_t i = 0; i < count; ++i) {
-      out_ += "    ";
+      out_ << "    ";
       indented(element(i).dump(2), 4);
-      out_ += i + 1 < count ? ",\n" : "\n";
+      out_ << (i + 1 < count ? ",\n" : "\n");
     }
-    out_ += "  ]";
+    out_ << "  ]";
   }
-  void close() { out_ += "\n}\n"; }
+  void close() { out_ << "\n}\n"; }
 
  private:
   void open(const std::string& key) {
-    if (!first_) out_ += ",\n";
+    if (!first_) out_ << ",\n";
     first_ = false;
-    out_ += "  " + nlohmann::ordered_json(key).dump() + ": ";
+    out_ << "  " << nlohmann::ordered_json(key).dump() << ": ";
   }
   /// `text` with `by` more spaces after each line break (strings in it never hold one).
   void indented(const std::string& text, std::size_t by) {
+    piece_.clear();
     for (const char c : text) {
-      out_ += c;
-      if (c == '\n') out_.append(by, ' ');
+      piece_ += c;
+      if (c == '\n') piece_.append(by, ' ');
     }
+    out_ << piece_;
   }
-  std::string& out_;
+  std::ostream& out_;
+  std::string piece_;
   bool first_ = true;
 };
 
@@ -218,8 +222,13 @@ nlohmann::ordered_json paramsJson(const std::vector<Param>& params) {
 }  // namespace
 
 std::string reportJson(const Report& report) {
+  std::ostringstream out;
+  writeReportJson(out, report);
+  return std::move(out).str();
+}
+
+void writeReportJson(std::ostream& out, const Report& report) {
   using nlohmann::ordered_json;
-  std::string out;
   JsonText j(out);
   j.member("model", report.model);
   j.member("seed", report.seed);
@@ -284,7 +293,6 @@ std::string reportJson(const Report& report) {
   if (!units.empty()) j.member("figure_units", units);
   if (!report.figures_error.empty()) j.member("figures_error", report.figures_error);
   j.close();
-  return out;
 }
 
 namespace {

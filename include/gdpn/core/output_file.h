@@ -4,6 +4,8 @@
 /// only when complete.
 
 #include <fstream>
+#include <functional>
+#include <ostream>
 #include <string>
 
 namespace gdpn::core {
@@ -54,6 +56,9 @@ class OutputFile {
 /// Writes `text` to `path` through an OutputFile. False with `why` on failure (the old file
 /// unchanged).
 [[nodiscard]] bool writeOutput(const std::string& path, const std::string& text, std::string& why);
+
+/// The same with what `write` writes to the stream it is given (text made as it goes out).
+[[nodiscard]] bool writeOutput(const std::string& path, const std::function<void(std::ostream&)>& write, std::string& why);
 
 /// True when `a` and `b` name the same file: one existing file, or one path once links, `.`
 /// and `..` are resolved (for files not yet made).

@@ -86,6 +86,8 @@ void watchRoundTrips(Simulation& sim, double cycle_seconds = kCycleBoundSeconds)
 Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_seconds = kCycleBoundSeconds);
 /// The report as pretty-printed JSON text.
 std::string reportJson(const Report& report);
+/// The same text written to `out` as it is made (none of it held: for large models).
+void writeReportJson(std::ostream& out, const Report& report);
 /// The summary tables, as `gdpn run` prints them.
 void printSummary(std::ostream& out, const Report& report);
 
