@@ -75,6 +75,10 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
   const auto& stats = sim.stats();
   const double dt = r.dt;
   const auto steps = static_cast<double>(outcome.steps);
+  // a line per construct: their number known, no room left over (100,000 instances make
+  // hundreds of thousands of lines)
+  r.transitions.reserve(net.transitions().size());
+  r.places.reserve(net.places().size());
   for (net::TransitionId t = 0; t < net.transitions().size(); ++t) {
     const auto& s = stats.transitions()[t];
     TransitionFigures f;
@@ -119,7 +123,9 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
     r.cycles_stop = plan->stop;
     const auto seconds = effectiveDurations(net, dt);
     // one line per set of transitions (slots of one place moving together make one cycle each)
-    for (const auto& [c, alike] : distinctCycles(plan->bounds)) {
+    const auto distinct = distinctCycles(plan->bounds);
+    r.cycles.reserve(distinct.size());
+    for (const auto& [c, alike] : distinct) {
       CycleFigures f;
       f.invariant = invariantText(net, invariants.p[c.invariant]);
       f.tokens = c.tokens;
