@@ -84,9 +84,9 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
     TransitionFigures f;
     f.name = net.transitionName(t);
     f.occurrences = s.starts;
-    f.cycles = s.cycles;
-    if (s.cycles > 0) {
-      f.mean_cycle = static_cast<double>(s.cycle_sum) * dt / static_cast<double>(s.cycles);
+    f.cycles = s.cycles();
+    if (f.cycles > 0) {
+      f.mean_cycle = static_cast<double>(s.cycle_sum) * dt / static_cast<double>(f.cycles);
       f.min_cycle = static_cast<double>(s.cycle_min) * dt;
       f.max_cycle = static_cast<double>(s.cycle_max) * dt;
     }

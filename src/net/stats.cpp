@@ -4,9 +4,11 @@
 
 namespace gdpn::net {
 
-StatsCollector::StatsCollector(const Net& net) : net_(net) {
+StatsCollector::StatsCollector(const Net& net) {
   transitions_.resize(net.transitions().size());
   places_.resize(net.places().size());
+  place_of_.resize(net.placeSlots().size());
+  for (PlaceSlotId ps = 0; ps < net.placeSlots().size(); ++ps) place_of_[ps] = net.placeSlots()[ps].place;
   for (PlaceId p = 0; p < net.places().size(); ++p) {
     const auto& place = net.places()[p];
     std::int64_t tokens = 0;
@@ -18,14 +20,13 @@ StatsCollector::StatsCollector(const Net& net) : net_(net) {
 
 void StatsCollector::onStart(TransitionId t, std::int64_t step) {
   auto& s = transitions_[t];
-  ++s.starts;
-  if (s.last_start >= 0) {
+  if (s.starts > 0) {
     const std::int64_t cycle = step - s.last_start;
-    s.cycle_min = s.cycles == 0 ? cycle : std::min(s.cycle_min, cycle);
+    s.cycle_min = s.starts == 1 ? cycle : std::min(s.cycle_min, cycle);
     s.cycle_max = std::max(s.cycle_max, cycle);
     s.cycle_sum += cycle;
-    ++s.cycles;
   }
+  ++s.starts;
   s.last_start = step;
   ++s.running;
   s.running_starts += step;
@@ -33,7 +34,6 @@ void StatsCollector::onStart(TransitionId t, std::int64_t step) {
 
 void StatsCollector::onComplete(TransitionId t, std::int64_t step, std::int64_t started) {
   auto& s = transitions_[t];
-  ++s.completions;
   s.busy += step - started;
   --s.running;
   s.running_starts -= started;
@@ -48,13 +48,11 @@ void StatsCollector::change(PlaceId p, std::int64_t delta, std::int64_t step) {
 }
 
 void StatsCollector::onRemove(PlaceSlotId ps, std::int64_t count, std::span<const NodeRef>, std::int64_t step) {
-  const PlaceId p = net_.placeSlots()[ps].place;
-  places_[p].removed += count;
-  change(p, -count, step);
+  change(place_of_[ps], -count, step);
 }
 
 void StatsCollector::onDeposit(PlaceSlotId ps, std::int64_t count, std::span<const NodeRef>, std::int64_t step) {
-  const PlaceId p = net_.placeSlots()[ps].place;
+  const PlaceId p = place_of_[ps];
   places_[p].deposited += count;
   change(p, count, step);
 }

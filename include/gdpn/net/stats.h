@@ -12,17 +12,17 @@
 namespace gdpn::net {
 
 /// Figures of one transition over a run.
-struct TransitionStats {
+struct alignas(64) TransitionStats {
   std::int64_t starts = 0;        ///< occurrences started
-  std::int64_t completions = 0;   ///< occurrences completed
-  std::int64_t cycles = 0;        ///< intervals between successive starts
-  std::int64_t cycle_sum = 0;     ///< sum of those intervals, steps
+  std::int64_t cycle_sum = 0;     ///< sum of the intervals between successive starts, steps
   std::int64_t cycle_min = 0;     ///< shortest interval, steps (0 when no cycle)
   std::int64_t cycle_max = 0;     ///< longest interval, steps
   std::int64_t busy = 0;          ///< steps spent occurring, summed over its occurrences
   std::int64_t last_start = -1;   ///< step of the latest start, -1 if none
   std::int64_t running = 0;       ///< occurrences started and not completed
   std::int64_t running_starts = 0;///< sum of their start steps
+  /// Intervals measured between successive starts: one fewer than the starts.
+  [[nodiscard]] std::int64_t cycles() const { return starts > 0 ? starts - 1 : 0; }
 };
 
 /// Figures of one place (all its slots together) over a run.
@@ -31,7 +31,6 @@ struct PlaceStats {
   std::int64_t max = 0;         ///< most tokens at any time
   std::int64_t area = 0;        ///< integral of tokens over steps (for the mean)
   std::int64_t deposited = 0;   ///< tokens deposited (for throughput)
-  std::int64_t removed = 0;     ///< tokens removed
   std::int64_t since = 0;       ///< step of the last change
 };
 
@@ -55,9 +54,11 @@ class StatsCollector : public NetObserver {
 
  private:
   void change(PlaceId p, std::int64_t delta, std::int64_t step);
-  const Net& net_;
+  // what a firing touches, each in one place: a transition's figures fill one cache line, and
+  // the place of each slot is read from an array of its own (not from the net's slots)
   std::vector<TransitionStats> transitions_;
   std::vector<PlaceStats> places_;
+  std::vector<PlaceId> place_of_;  // per place slot
 };
 
 }  // namespace gdpn::net
