@@ -345,13 +345,26 @@ void printSummary(std::ostream& out, const Report& report) {
 
   // places that only read sensors and never held a token say nothing here (--report has them)
   auto listed = [](const PlaceFigures& p) { return !p.sensors_only || p.max_tokens > 0; };
-  std::size_t w = 10, unlisted = 0;
-  for (const auto& t : report.transitions) w = std::max(w, t.name.size());
+  // each table shows its first kMostRows lines and says how many more the JSON report has (a
+  // model of 100,000 instances would print 700,000 lines)
+  const std::size_t transitions = std::min(report.transitions.size(), kMostRows);
+  std::vector<const PlaceFigures*> places;
+  std::size_t w = 10, unlisted = 0, more_places = 0;
+  for (std::size_t i = 0; i < transitions; ++i) w = std::max(w, report.transitions[i].name.size());
   for (const auto& p : report.places) {
-    if (listed(p)) w = std::max(w, p.name.size());
-    if (!listed(p)) ++unlisted;
+    if (!listed(p)) {
+      ++unlisted;
+    } else if (places.size() == kMostRows) {
+      ++more_places;
+    } else {
+      places.push_back(&p);
+      w = std::max(w, p.name.size());
+    }
   }
   w += 2;
+  auto more = [&out](std::size_t n, const char* what) {
+    if (n > 0) out << "... and " << n << " more " << what << (n == 1 ? " (--report has it)\n" : "s (--report has them)\n");
+  };
 
   // with servers, how many occurrences ran at once on average, and of how many servers
   const bool servers = std::any_of(report.transitions.begin(), report.transitions.end(),
@@ -360,7 +373,8 @@ void printSummary(std::ostream& out, const Report& report) {
       << pad("max cycle [s]", 15, true) << pad("utilisation", 13, true);
   if (servers) out << pad("at once", 9, true) << pad("servers", 9, true);
   out << "\n";
-  for (const auto& t : report.transitions) {
+  for (std::size_t i = 0; i < transitions; ++i) {
+    const auto& t = report.transitions[i];
     const bool cyc = t.cycles > 0;
     out << pad(t.name, w, false) << pad(std::to_string(t.occurrences), 12, true)
         << pad(cyc ? fixed(t.mean_cycle, 3) : "-", 16, true) << pad(cyc ? fixed(t.max_cycle, 3) : "-", 15, true)
@@ -371,15 +385,16 @@ void printSummary(std::ostream& out, const Report& report) {
     }
     out << "\n";
   }
+  more(report.transitions.size() - transitions, "transition");
   out << "\n"
       << pad("place", w, false) << pad("mean tokens", 12, true) << pad("max tokens", 16, true)
       << pad("final", 15, true) << pad("thru [1/s]", 13, true) << "\n";
-  for (const auto& p : report.places) {
-    if (!listed(p)) continue;
-    out << pad(p.name, w, false) << pad(fixed(p.mean_tokens, 3), 12, true)
-        << pad(std::to_string(p.max_tokens), 16, true) << pad(std::to_string(p.final_tokens), 15, true)
-        << pad(fixed(p.throughput, 3), 13, true) << "\n";
+  for (const PlaceFigures* p : places) {
+    out << pad(p->name, w, false) << pad(fixed(p->mean_tokens, 3), 12, true)
+        << pad(std::to_string(p->max_tokens), 16, true) << pad(std::to_string(p->final_tokens), 15, true)
+        << pad(fixed(p->throughput, 3), 13, true) << "\n";
   }
+  more(more_places, "place");
   if (unlisted > 0) {
     out << "(" << unlisted << (unlisted == 1 ? " place that only reads" : " places that only read")
         << " sensors, never holding a token, not listed; --report has them)\n";
@@ -392,7 +407,9 @@ void printSummary(std::ostream& out, const Report& report) {
         << pad("tokens", 8, true) << pad("bound [s]", 12, true) << pad("measured [s]", 14, true)
         << pad("waited [s]", 12, true) << "  cycle (P-invariant)\n";
     bool alike = false, flow = false, circuits = false;
-    for (const auto& c : report.cycles) {
+    const std::size_t cycles = std::min(report.cycles.size(), kMostRows);
+    for (std::size_t n = 0; n < cycles; ++n) {
+      const auto& c = report.cycles[n];
       const bool m = c.measured > 0.0 && !c.flow;
       out << pad(std::to_string(c.tokens), 8, true) << pad(c.flow ? "flow" : fixed(c.bound, 3), 12, true)
           << pad(m ? fixed(c.measured, 3) : "-", 14, true) << pad(m ? fixed(c.measured - c.bound, 3) : "-", 12, true)
@@ -420,6 +437,7 @@ void printSummary(std::ostream& out, const Report& report) {
       if (c.other_trips > 0) out << pad("", kFigures + 3, false) << c.other_trips << " more trips on other circuits\n";
       circuits = circuits || !c.circuits.empty();
     }
+    more(report.cycles.size() - cycles, "cycle");
     if (circuits) {
       out << "indented under a cycle: each circuit its token took (a choice made on the way), measured\n"
              "from a trip's start to the next trip's; its bound is its own durations summed\n";

@@ -196,6 +196,45 @@ TEST(Report, TheJsonWrittenPieceByPieceIsTheWholeTreesText) {
 
 // A station token that either works on a part or skips it: each circuit it took is measured
 // on its own, from a trip's start to the next one's.
+TEST(Report, EachTableOfTheSummaryShowsItsFirstHundredLinesAndCountsTheRest) {
+  // 250 transitions, 180 places (30 of them sensors only, never listed) and 101 cycles: the
+  // first 100 of each are printed, then how many more the JSON report has
+  Report r;
+  r.model = "big.gdpn.yaml";
+  for (int i = 0; i < 250; ++i) {
+    TransitionFigures t;
+    t.name = "main/t" + std::to_string(i);
+    r.transitions.push_back(t);
+  }
+  for (int i = 0; i < 180; ++i) {
+    PlaceFigures p;
+    p.name = "main/p" + std::to_string(i);
+    p.sensors_only = i % 6 == 0;
+    r.places.push_back(p);
+  }
+  for (int i = 0; i < 101; ++i) {
+    CycleFigures c;
+    c.invariant = "main/p" + std::to_string(i);
+    c.tokens = 1;
+    r.cycles.push_back(c);
+  }
+  std::ostringstream text;
+  printSummary(text, r);
+  const std::string s = text.str();
+  EXPECT_NE(s.find("main/t99 "), std::string::npos);
+  EXPECT_EQ(s.find("main/t100 "), std::string::npos);
+  EXPECT_NE(s.find("\n... and 150 more transitions (--report has them)\n"), std::string::npos) << s;
+  // places 1..119 less the sensors-only ones are the first 100 listed
+  EXPECT_NE(s.find("main/p119 "), std::string::npos);
+  EXPECT_EQ(s.find("main/p121 "), std::string::npos);
+  EXPECT_NE(s.find("\n... and 50 more places (--report has them)\n"), std::string::npos) << s;
+  EXPECT_NE(s.find("(30 places that only read sensors"), std::string::npos);
+  EXPECT_NE(s.find("\n... and 1 more cycle (--report has it)\n"), std::string::npos) << s;
+  // every line within 100 columns
+  std::istringstream in(s);
+  for (std::string line; std::getline(in, line);) EXPECT_LE(line.size(), 100u) << line;
+}
+
 TEST(Report, EachCircuitOfATokenWithAlternativesIsMeasured) {
   auto sim = open("tests/data/good/alternatives.gdpn.yaml");
   ASSERT_TRUE(sim);

@@ -88,6 +88,9 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
 std::string reportJson(const Report& report);
 /// The same text written to `out` as it is made (none of it held: for large models).
 void writeReportJson(std::ostream& out, const Report& report);
+/// The most lines of each of the summary's tables (transitions, places, cycles); a longer one
+/// ends with how many more the JSON report has.
+inline constexpr std::size_t kMostRows = 100;
 /// The summary tables, as `gdpn run` prints them.
 void printSummary(std::ostream& out, const Report& report);
 
