@@ -48,13 +48,17 @@ std::string invariantText(const net::Net& net, const net::Invariant& y) {
   return s;
 }
 
-std::vector<DistinctCycle> distinctCycles(std::vector<net::CycleBound> bounds) {
+std::vector<DistinctCycle> distinctCycles(const std::vector<net::CycleBound>& bounds) {
   std::vector<DistinctCycle> out;
-  std::map<std::tuple<std::vector<net::TransitionId>, std::int64_t, double>, std::size_t> seen;
-  for (auto& b : bounds) {
-    const auto [it, added] = seen.try_emplace({b.transitions, b.tokens, b.seconds}, out.size());
+  // alike: the same transitions, tokens and seconds (compared where they lie)
+  auto less = [](const net::CycleBound* a, const net::CycleBound* b) {
+    return std::tie(a->transitions, a->tokens, a->seconds) < std::tie(b->transitions, b->tokens, b->seconds);
+  };
+  std::map<const net::CycleBound*, std::size_t, decltype(less)> seen(less);
+  for (const auto& b : bounds) {
+    const auto [it, added] = seen.try_emplace(&b, out.size());
     if (added) {
-      out.push_back({std::move(b), 0});
+      out.push_back({b, 0});
     } else {
       ++out[it->second].alike;
     }
