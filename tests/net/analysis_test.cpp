@@ -23,6 +23,13 @@ using testing::conformanceNet;
 using testing::conformanceSpec;
 using testing::kConformanceDir;
 
+/// The state space of `net` searched by `threads` threads (the other options as they come).
+StateSpace exploreWith(const Net& net, unsigned threads) {
+  ExploreOptions options;
+  options.threads = threads;
+  return explore(net, options);
+}
+
 struct Reference {
   std::string model;
   std::uint64_t states, edges;
@@ -469,9 +476,7 @@ TEST(Analysis, FiringsThatMoveTokensBetweenFieldsOfOnePackedWordKeepEveryCount) 
   b.addInput(c, empty, kDefaultSlot, 2);
   const auto net = b.freeze();
   for (const unsigned threads : {1u, 2u}) {
-    ExploreOptions options;
-    options.threads = threads;
-    const auto s = explore(*net, options);
+    const auto s = exploreWith(*net, threads);
     // (a, 5 - a) for a = 0..5, times c = 0, 1, 2; take is enabled where a >= 2 (4 markings of
     // a and b), give where b >= 1 (5): 9 edges for each c; fill where c < 2 and empty where
     // c = 2: 3 edges for each (a, b)
@@ -526,9 +531,7 @@ TEST(Analysis, ThreadsDecideReversibilityOnALongRingWithAndWithoutAWayOut) {
     EXPECT_EQ(one.reversible, !way_out);
     EXPECT_EQ(one.live, !way_out);
     for (const unsigned threads : {2u, 3u}) {
-      ExploreOptions options;
-      options.threads = threads;
-      const auto s = explore(*net, options);
+      const auto s = exploreWith(*net, threads);
       EXPECT_EQ(s.states, one.states) << threads;
       EXPECT_EQ(s.edges, one.edges) << threads;
       EXPECT_EQ(s.reversible, !way_out) << threads;
@@ -560,9 +563,7 @@ TEST(Analysis, ThreadsShareTheWayBackOverLevelsOfThousandsOfStates) {
   }
   const auto net = b.freeze();
   for (const unsigned threads : {1u, 2u, 3u}) {
-    ExploreOptions options;
-    options.threads = threads;
-    const auto s = explore(*net, options);
+    const auto s = exploreWith(*net, threads);
     EXPECT_EQ(s.states, 216'000u) << threads;
     EXPECT_EQ(s.edges, 3u * 216'000u) << threads;
     EXPECT_TRUE(s.reversible) << threads;
@@ -588,9 +589,7 @@ TEST(Analysis, ThreadsFindANetLiveThatIsNotReversible) {
   b.addOutput(back, bb);
   const auto net = b.freeze();
   for (const unsigned threads : {1u, 2u, 3u}) {
-    ExploreOptions options;
-    options.threads = threads;
-    const auto s = explore(*net, options);
+    const auto s = exploreWith(*net, threads);
     EXPECT_EQ(s.states, 3u) << threads;
     EXPECT_EQ(s.edges, 3u) << threads;
     EXPECT_TRUE(s.live) << threads;
@@ -621,9 +620,7 @@ TEST(Analysis, AComponentOfEveryStateIsLiveOnlyWhereEveryTransitionFires) {
     }
     const auto net = b.freeze();
     for (const unsigned threads : {1u, 2u}) {
-      ExploreOptions options;
-      options.threads = threads;
-      const auto s = explore(*net, options);
+      const auto s = exploreWith(*net, threads);
       EXPECT_EQ(s.states, 3u) << threads;
       EXPECT_TRUE(s.reversible) << threads;
       EXPECT_EQ(s.live, !stuck) << threads;

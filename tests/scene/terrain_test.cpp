@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "gdpn/core/file.h"
+#include "support/scratch.h"
 #include "support/temp_files.h"
 
 namespace gdpn::scene {
@@ -57,14 +58,6 @@ TEST(TerrainLibrary, GdalIsLoadedWhenTheFirstElevationFileIsRead) {
   EXPECT_TRUE(mapped("libgdal"));
 }
 
-/// The contents of the file at `path`.
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 const std::string kElevation = std::string(GDPN_SOURCE_DIR) + "/tests/data/elevation/";
 
 /// Expects the elevation file `name` of the test data to hold `nx` x `ny` heights, `rows`.
@@ -106,7 +99,7 @@ TEST_F(TerrainGeoreference, AGridInUtmLiesWhereItsCoordinatesSay) {
   // 500 000 m, on zone 32's central meridian (9 degrees east), northing 5 400 025 m (the
   // sample's centre, half a cell below the top at 5 400 030 m), which UTM makes the meridian's
   // length to the latitude times 0.9996
-  const std::string both = slurp(kElevation + "georeferenced.asc");
+  const std::string both = testing::fileBytes(kElevation + "georeferenced.asc");
   const auto cut = both.find("--prj--\n");
   ASSERT_NE(cut, std::string::npos);
   const auto grid = write("grid.asc", both.substr(0, cut));
