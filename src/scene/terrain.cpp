@@ -43,6 +43,25 @@ GDALDatasetH openRaster(const std::string& path, const GdalLibrary*& g, std::str
   return ds;
 }
 
+/// The most bytes GDAL may allocate to read one block of a raster.
+constexpr double kMostBlockBytes = 256.0 * 1024 * 1024;
+
+/// Why reading the first band of `ds` (with `bands` bands) would take too much memory, or
+/// empty. GDAL reads a raster a block at a time, and a file whose samples interleave the bands
+/// holds all of them in one block: a header of a few bytes can ask for gigabytes.
+std::string oversizedBlock(const GdalLibrary& g, GDALDatasetH ds, int bands) {
+  GDALRasterBandH band = g.rasterBand(ds, 1);
+  int bx = 0, by = 0;
+  g.blockSize(band, &bx, &by);
+  const int sample = std::max(1, g.dataTypeSizeBytes(g.rasterDataType(band)));
+  const double bytes = static_cast<double>(bx) * by * sample * bands;
+  if (bytes <= kMostBlockBytes) return {};
+  return "reading one block of the raster (" + std::to_string(bx) + " x " + std::to_string(by) + " samples of " +
+         std::to_string(bands) + (bands == 1 ? " band" : " bands") + ", " + std::to_string(sample) + " bytes each) takes " +
+         std::to_string(static_cast<long long>(bytes / (1024 * 1024))) + " MiB; gdpn reads blocks of at most " +
+         std::to_string(static_cast<long long>(kMostBlockBytes / (1024 * 1024))) + " MiB";
+}
+
 }  // namespace
 
 std::unique_ptr<Geodesy> Geodesy::open(const std::string& path, double width, double depth, std::string& why) {
@@ -104,9 +123,11 @@ std::optional<HeightGrid> loadHeightGrid(const std::string& path, std::string& w
   GDALDatasetH ds = openRaster(path, gd, why);
   if (!ds) return std::nullopt;
   std::optional<HeightGrid> grid;
-  const int nx = gd->rasterXSize(ds), ny = gd->rasterYSize(ds);
-  if (gd->rasterCount(ds) < 1) {
+  const int nx = gd->rasterXSize(ds), ny = gd->rasterYSize(ds), bands = gd->rasterCount(ds);
+  if (bands < 1) {
     why = "the raster has no band";
+  } else if (const std::string big = oversizedBlock(*gd, ds, bands); !big.empty()) {
+    why = big;
   } else if (nx < 2 || ny < 2 || static_cast<long long>(nx) * ny > 64LL * 1024 * 1024) {
     why = "the raster is " + std::to_string(nx) + " x " + std::to_string(ny) +
           " samples; a terrain needs 2 to 64 M samples, at least 2 each way";

@@ -81,6 +81,15 @@ TEST(TerrainGrid, ATiffOfFloatsKeepsItsFractionsAndHasNoGeoreference) {
   EXPECT_EQ(why, "it is not georeferenced (no coordinate system or no geotransform)");
 }
 
+TEST(TerrainGrid, ARasterWhoseBlockWouldTakeGigabytesIsRefusedBeforeItIsRead) {
+  // 137 bytes the fuzz target found: GDAL would allocate 9 GB for the first block
+  std::string why;
+  EXPECT_FALSE(loadHeightGrid(kElevation + "interleaved-65281-bands.tif", why));
+  EXPECT_EQ(why,
+            "reading one block of the raster (37123 x 1 samples of 65281 bands, 4 bytes each) takes 9244 MiB; "
+            "gdpn reads blocks of at most 256 MiB");
+}
+
 /// The length, m, of the meridian on WGS 84 from the equator to latitude `phi` (radians):
 /// the series in the eccentricity to its sixth power (within a millimetre).
 double meridianArc(double phi) {

@@ -44,6 +44,9 @@ Loaded load() {
   need("GDALGetRasterYSize", g.rasterYSize);
   need("GDALGetRasterCount", g.rasterCount);
   need("GDALGetRasterBand", g.rasterBand);
+  need("GDALGetBlockSize", g.blockSize);
+  need("GDALGetRasterDataType", g.rasterDataType);
+  need("GDALGetDataTypeSizeBytes", g.dataTypeSizeBytes);
   need("GDALRasterIO", g.rasterIO);
   need("GDALGetProjectionRef", g.projectionRef);
   need("GDALGetGeoTransform", g.geoTransform);

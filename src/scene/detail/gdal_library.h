@@ -20,6 +20,9 @@ struct GdalLibrary {
   decltype(&::GDALGetRasterYSize) rasterYSize;
   decltype(&::GDALGetRasterCount) rasterCount;
   decltype(&::GDALGetRasterBand) rasterBand;
+  decltype(&::GDALGetBlockSize) blockSize;
+  decltype(&::GDALGetRasterDataType) rasterDataType;
+  decltype(&::GDALGetDataTypeSizeBytes) dataTypeSizeBytes;
   decltype(&::GDALRasterIO) rasterIO;
   decltype(&::GDALGetProjectionRef) projectionRef;
   decltype(&::GDALGetGeoTransform) geoTransform;
