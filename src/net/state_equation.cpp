@@ -120,9 +120,14 @@ using Conjunct = std::vector<Linear>;
 using Dnf = std::vector<Conjunct>;
 constexpr std::size_t kMostDisjuncts = 256;
 
-// every conjunct of `a` with every one of `b`; nullopt past kMostDisjuncts
-std::optional<Dnf> product(const Dnf& a, const Dnf& b) {
+// every conjunct of `a` with every one of `b`; nullopt past kMostDisjuncts. One conjunct of
+// `b` is appended where `a`'s lie: a chain of n conjuncts then costs n copies, not n^2
+std::optional<Dnf> product(Dnf a, const Dnf& b) {
   if (a.size() * b.size() > kMostDisjuncts) return std::nullopt;
+  if (b.size() == 1) {
+    for (Conjunct& x : a) x.insert(x.end(), b[0].begin(), b[0].end());
+    return a;
+  }
   Dnf out;
   for (const Conjunct& x : a) {
     for (const Conjunct& y : b) {
@@ -167,7 +172,7 @@ std::optional<Dnf> dnf(const Net& net, const Formula& f, bool positive) {
         for (const Formula& o : f.operands) {
           const auto d = dnf(net, o, positive);
           if (!d) return std::nullopt;
-          auto p = product(out, *d);
+          auto p = product(std::move(out), *d);
           if (!p) return std::nullopt;
           out = std::move(*p);
         }
@@ -230,7 +235,7 @@ std::optional<Dnf> dnf(const Net& net, const Formula& f, bool positive) {
       for (TransitionId t : ts) {
         Dnf some;
         for (const Linear& x : needs(net, t, true)) some.push_back({x});
-        auto p = product(out, some);
+        auto p = product(std::move(out), some);
         if (!p) return std::nullopt;
         out = std::move(*p);
       }
