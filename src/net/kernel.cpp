@@ -67,6 +67,7 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
   GDPN_ASSERT(count < kOccurrenceBit, "too many transitions");
   core::reserveLarge(tr_, count);
   tr_.resize(count);
+  big_ = (count + slots_.size()) * 64 + n.terms().size() * sizeof(Term) >= (std::size_t{4} << 20);
   for (TransitionId t = 0; t < count; ++t) {
     const auto& spec = transitions[t];
     auto& st = tr_[t];
@@ -176,33 +177,56 @@ void Kernel::update(PlaceSlotId ps) {
   SlotState& st = slots_[ps];
   if (st.watch_count == 0) return;
   examine(st, st.first);
-  const auto end = slots_[ps + 1].watch_begin;
+  // the further watchers' count from this line (the next slot's watch_begin is another line)
+  const auto end = st.watch_begin + st.watch_count - 1;
   for (auto w = st.watch_begin; w < end; ++w) examine(st, watch_[w]);
 }
 
-// For big nets: the loops over completions and candidates know the transitions ahead of
-// them, so they fetch what a firing reads in stages, each from what the stage before
-// brought into the cache: eight items ahead the transition's state line, four ahead its
-// terms, two ahead the place slots they name, one ahead the transition watching each slot
-// first (the one a change of its marking may enable).
+// For big nets: the loop over completions knows the transitions ahead of it, so it fetches
+// what a firing reads in stages, each from what the stage before brought into the cache: 24
+// items ahead the transition's state line, 16 ahead its terms, eight ahead the place slots
+// they name, two ahead the transition watching each slot first (the one a change of its
+// marking may enable). The first items have nothing ahead of them: at the first, each stage
+// runs over all of them at once, so that their misses overlap.
 template <class Get>
 void Kernel::prefetchAhead(std::size_t i, std::size_t n, Get get) const {
-  if (i + 24 < n) __builtin_prefetch(&tr_[get(i + 24)]);
-  if (i + 16 < n) __builtin_prefetch(&terms_[tr_[get(i + 16)].terms_begin]);
-  if (i + 8 < n) {
-    const TransitionState& tr = tr_[get(i + 8)];
-    for (auto k = tr.terms_begin; k < tr.terms_end; ++k) __builtin_prefetch(&slots_[terms_[k].place_slot]);
-  }
-  if (i + 2 < n) {
-    const TransitionState& tr = tr_[get(i + 2)];
+  constexpr std::size_t kState = 24, kTerms = 16, kSlots = 8, kWatchers = 2;
+  auto watchers = [&](std::size_t j) {
+    const TransitionState& tr = tr_[get(j)];
     for (auto k = tr.terms_begin; k < tr.terms_end; ++k) {
       const SlotState& st = slots_[terms_[k].place_slot];
       if (st.watch_count > 0) __builtin_prefetch(&tr_[st.first.transition]);
     }
+  };
+  if (i == 0) {
+    for (std::size_t j = 0; j < std::min(n, kState); ++j) __builtin_prefetch(&tr_[get(j)]);
+    for (std::size_t j = 0; j < std::min(n, kTerms); ++j) prefetchTerms(get(j));
+    for (std::size_t j = 0; j < std::min(n, kSlots); ++j) prefetchSlots(get(j));
+    for (std::size_t j = 0; j < std::min(n, kWatchers); ++j) watchers(j);
   }
+  if (i + kState < n) __builtin_prefetch(&tr_[get(i + kState)]);
+  if (i + kTerms < n) prefetchTerms(get(i + kTerms));
+  if (i + kSlots < n) prefetchSlots(get(i + kSlots));
+  if (i + kWatchers < n) watchers(i + kWatchers);
+}
+
+void Kernel::prefetchTerms(TransitionId t) const {
+  const TransitionState& tr = tr_[t];
+  if (tr.terms_end == tr.terms_begin) return;
+  // their first and last line (terms of 20 bytes straddle lines)
+  __builtin_prefetch(&terms_[tr.terms_begin]);
+  __builtin_prefetch(&terms_[tr.terms_end - 1]);
+}
+
+void Kernel::prefetchSlots(TransitionId t) const {
+  const TransitionState& tr = tr_[t];
+  for (auto k = tr.terms_begin; k < tr.terms_end; ++k) __builtin_prefetch(&slots_[terms_[k].place_slot]);
 }
 
 void Kernel::markEnabled(TransitionId t) {
+  // its terms are read when it starts, in this firing phase or the next: fetched now, while
+  // its state line is in the cache
+  if (big_) prefetchTerms(t);
   ++enabled_count_;
   tr_[t].enabled_step = settled_ && !in_firing_ ? step_ + 1 : step_;
   const std::uint64_t key = (std::uint64_t{tr_[t].rank} << 32) | t;
@@ -514,6 +538,9 @@ void Kernel::beginAs(TransitionId t) {
     SlotState& st = slots_[term.place_slot];
     st.r += term.weight;
     if (st.capacity != kUnbounded) update(term.place_slot);
+    // the completion deposits here and looks at the slot's first watcher: fetched now, while
+    // the slot's line is in the cache
+    if (big_ && st.watch_count > 0) __builtin_prefetch(&tr_[st.first.transition]);
   }
   chosen_.clear();
 
@@ -623,7 +650,7 @@ void Kernel::completeOccurrences() {
   if (in_fire_.empty()) {
     const std::size_t n = due_.size();
     for (std::size_t i = 0; i < n; ++i) {
-      prefetchAhead(i, n, [this](std::size_t k) { return transitionOf(due_[k]); });
+      if (big_) prefetchAhead(i, n, [this](std::size_t k) { return transitionOf(due_[k]); });
       finish(due_[i]);
     }
     return;
@@ -732,6 +759,13 @@ bool Kernel::startCandidates() {
   std::size_t pos = 0;
   extra_.clear();
   std::int64_t rounds = 0;
+  // their terms were fetched as they were enabled: the slots they name, a window ahead of the
+  // loop at a time, so that the misses overlap
+  constexpr std::size_t kWindow = 128;
+  auto slotsAhead = [&](std::size_t from, std::size_t to) {
+    for (std::size_t j = from; j < std::min(n, to); ++j) prefetchSlots(indexOf(candidates_[j].key));
+  };
+  if (big_) slotsAhead(0, kWindow);
   const std::int64_t most_rounds = kImmediateRounds + 4 * static_cast<std::int64_t>(tr_.size());
   ++phase_;
   Carry last{~std::uint64_t{0}, -1};
@@ -744,7 +778,7 @@ bool Kernel::startCandidates() {
       std::pop_heap(extra_.begin(), extra_.end(), [this](const Extra& x, const Extra& y) { return extraAfter(x, y); });
       extra_.pop_back();
     } else {
-      prefetchAhead(pos, n, [this](std::size_t k) { return indexOf(candidates_[k].key); });
+      if (big_ && pos % (kWindow / 2) == 0 && pos > 0) slotsAhead(pos + kWindow / 2, pos + kWindow);
       c = candidates_[pos++];
     }
     const TransitionId t = indexOf(c.key);

@@ -172,7 +172,7 @@ class Kernel {
   };
   struct alignas(64) SlotState {  // one place slot: one cache line, with its first watcher
     std::int64_t m, r, capacity;
-    std::uint32_t watch_begin;    // further watchers: watch_[watch_begin, next slot's watch_begin)
+    std::uint32_t watch_begin;    // further watchers: watch_[watch_begin, watch_begin + watch_count - 1)
     std::int32_t fifo;            // index in fifos_, -1 for control slots
     std::uint32_t watch_count;    // all watchers, the inline one included
     Watch first;                  // the first watcher, when watch_count > 0
@@ -241,6 +241,10 @@ class Kernel {
   void examine(const SlotState& st, Watch& watch);
   template <class Get>
   void prefetchAhead(std::size_t i, std::size_t n, Get get) const;
+  /// Fetches into the cache the terms of `t` (its state line in the cache already).
+  void prefetchTerms(TransitionId t) const;
+  /// Fetches into the cache the place slots the terms of `t` name (its terms in the cache).
+  void prefetchSlots(TransitionId t) const;
   void markEnabled(TransitionId t);
   bool selectTokens(TransitionId t);
   void begin(TransitionId t);
@@ -292,6 +296,9 @@ class Kernel {
   bool random_ties_ = false;
   bool immediate_fired_ = false;  // an immediate occurrence completed in this round
   bool immediates_ = false;       // some transition is immediate
+  /// The net's state outgrows the caches close to the core (4 MiB and more): a firing fetches
+  /// what the next ones read ahead of them.
+  bool big_ = false;
   /// Rounds of immediate occurrences one firing phase takes at most, beyond 4 per transition
   /// of the net (a cycle of immediate transitions would never end); what is left waits for
   /// the next step.
