@@ -121,6 +121,8 @@ class Search {
   static constexpr std::uint64_t kUnknownTotal = 0xffffffffu;
   std::vector<std::int64_t> token_delta_;  // per transition: tokens it adds minus tokens it takes
   std::vector<bool> leaves_;
+  std::vector<std::uint64_t> visited_;  // a bit per state: visited
+  bool visited(StateId s) const { return (s >> 6) < visited_.size() && ((visited_[s >> 6] >> (s & 63)) & 1) != 0; }
   // the walk
   Chunked<Frame> frames_;
   Chunked<StateId> edges_;
@@ -402,8 +404,8 @@ void Search::finishComponent(StateId v) {
 }
 
 std::uint64_t Search::bytes() const {
-  return store_->bytes() + leaves_.capacity() / 8 + frames_.bytes() + edges_.bytes() +
-         stack_.bytes() + path_.capacity() * sizeof(std::uint64_t);
+  return store_->bytes() + leaves_.capacity() / 8 + visited_.capacity() * sizeof(std::uint64_t) + frames_.bytes() +
+         edges_.bytes() + stack_.bytes() + path_.capacity() * sizeof(std::uint64_t);
 }
 
 std::vector<TransitionId> Search::firingsAlong(const std::vector<StateId>& path) {
@@ -516,6 +518,8 @@ StateSpace Search::run() {
 
   auto visit = [&](StateId v) -> bool {
     setRindex(v, next_index_++);
+    if ((v >> 6) >= visited_.size()) visited_.resize(std::max<std::size_t>(1024, visited_.size() * 2), 0);
+    visited_[v >> 6] |= std::uint64_t{1} << (v & 63);
     if (cover_) pushPath(store_->at(v));
     for (;;) {
       const Expand e = expand(v);
@@ -537,11 +541,11 @@ StateSpace Search::run() {
       // the next pending successor, taken from the top
       const StateId w = edges_[--f.end];
       edges_.shrink(f.end);
-      const std::uint32_t rw = rindex(w);
-      if (rw != 0) {
-        settle(f, rw);
-        continue;
-      }
+      // unvisited when f's state was expanded and visited since: below it in the search, so
+      // the edge tells nothing the path down to it did not (its index reached f's state
+      // through that path, and a component finished on the way made an edge leave f's own);
+      // a bit per state says so without reading the store
+      if (visited(w)) continue;
       running = visit(w);
       if (store_->size() >= next_report) {
         next_report += 1 << 12;
