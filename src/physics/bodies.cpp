@@ -12,7 +12,6 @@ using core::Pose;
 using core::Vec3;
 using scene::Node;
 using scene::NodeKind;
-using Form = Primitive::Form;
 
 template <class B>
 B& need(B* b) {

@@ -19,7 +19,6 @@ using core::Quat;
 using core::Vec3;
 using scene::Node;
 using scene::NodeKind;
-using Form = Primitive::Form;
 
 Primitive boxPrimitive(Vec3 extent, Vec3 scale) {
   Primitive p;

@@ -12,7 +12,6 @@ namespace {
 using core::Vec3;
 using scene::Node;
 using scene::NodeKind;
-using Form = Primitive::Form;
 
 /// What a sensor node is made as: its volume and what it feels.
 struct SensorSpec {

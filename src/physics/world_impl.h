@@ -41,6 +41,8 @@ struct Primitive {
   /// Same form and sizes.
   bool operator==(const Primitive&) const = default;
 };
+/// What ODE makes for a primitive (Primitive::Form).
+using Form = Primitive::Form;
 
 /// A box of `extent` (scene::shapeExtent, m) with each edge scaled by `scale`.
 Primitive boxPrimitive(core::Vec3 extent, core::Vec3 scale);
