@@ -1,10 +1,12 @@
 #include "gdpn/net/analysis.h"
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <thread>
 #include <unordered_map>
 #include <utility>
 
@@ -16,22 +18,62 @@ namespace {
 
 using namespace detail;
 
+/// Two searches of a net with place slots that no invariant, capacity or the state equation
+/// bounds, one thread each: the coverability search, and one of the reachable markings that
+/// never accelerates. Where the net is bounded, they walk the same states in the same order
+/// (no marking on a path lies below a later one) and the plain one, spared the comparisons
+/// with the path, ends first; where it is not, the plain one never ends: it gives up once it
+/// holds four times the states of the other, or when the other ends.
+struct Race {
+  std::atomic<bool> over{false};              ///< one search is done: the other stops
+  std::atomic<std::uint64_t> cover_states{0};  ///< the coverability search's states, as last noted
+};
+
 /// The search: a depth-first walk that finds strongly connected components as it goes
 /// (Pearce's single-index variant of Tarjan's algorithm), so that no edge is stored.
 class Search {
  public:
-  Search(const Net& net, const ExploreOptions& options) : net_(net), options_(options), candidates_(net), firing_(net) {}
+  /// A search of `net` laid out by `plan`; in a race, `accelerate` says which of the two.
+  Search(const Net& net, const ExploreOptions& options, const Plan& plan, Race* race = nullptr, bool accelerate = true)
+      : net_(net), options_(options), plan_(plan), race_(race), accelerate_(accelerate), candidates_(net), firing_(net) {}
 
   StateSpace run();
 
  private:
   enum class Expand : std::uint8_t { Ok, Widened, Overflow };
 
-  /// Successors of `v` into succ_ (ids) and its enabled transitions into via_.
+  /// The successors of a state: their transitions, packed markings and hashes.
+  struct Successors {
+    std::vector<TransitionId> t;
+    std::vector<std::uint64_t> keys;
+    std::vector<std::uint64_t> hashes;
+    std::vector<StateId> peeked;  ///< per successor: Store::peek (empty: not peeked yet)
+    StateId state = kNone;   ///< whose (kNone: none made ahead)
+    std::size_t index = 0;   ///< made ahead: of the successor `index` of the state expanded before
+  };
+  /// Expands `v`: its successors looked up or added, the edges to states visited settled and
+  /// the others pending in edges_, its frame pushed.
   Expand expand(StateId v);
+  /// Makes the successors of the packed marking `m` into `out`, their table slots on their way
+  /// into the cache.
+  Expand successors(const std::uint64_t* m, Successors& out);
   /// Fires `t` on the packed marking `m` into `out`; Overflow or Widened on a count that
   /// does not fit. False in `enabled` when `t` is not enabled.
-  Expand fire(TransitionId t, const std::uint64_t* m, std::uint64_t* out, bool& enabled);
+  Expand fire(TransitionId t, const std::uint64_t* m, std::uint64_t* out, bool& enabled) {
+    std::size_t field = 0;
+    const Fired f = firing_.fire(t, m, out, field);
+    enabled = f != Fired::NotEnabled;
+    return f != Fired::TooBig ? Expand::Ok : widened(field);
+  }
+  /// The same for a candidate (ready in `m`).
+  Expand fireCandidate(TransitionId t, const std::uint64_t* m, std::uint64_t* out, bool& enabled) {
+    std::size_t field = 0;
+    const Fired f = firing_.fireReady(t, m, out, field);
+    enabled = f != Fired::NotEnabled;
+    return f != Fired::TooBig ? Expand::Ok : widened(field);
+  }
+  /// Widens field `k` that a count outgrew: Widened, or Overflow where it cannot.
+  Expand widened(std::size_t k) { return widen(k) ? Expand::Widened : Expand::Overflow; }
   bool widen(std::size_t k);
   /// Karp-Miller acceleration of the packed marking `key` against the markings on the
   /// search path: true when some count became ω (`key` is then changed).
@@ -95,6 +137,10 @@ class Search {
 
   const Net& net_;
   const ExploreOptions& options_;
+  const Plan& plan_;
+  Race* race_ = nullptr;
+  bool accelerate_ = true;  // false: the plain search of a race
+  bool widens_ = false;     // some field may outgrow its bits (no bound known): no look-ahead
   std::unique_ptr<Store> store_;
   Candidates candidates_;
   Firing firing_;
@@ -130,9 +176,9 @@ class Search {
   std::uint32_t next_index_ = 1;
   std::uint32_t next_comp_ = 0xfffffffeu;
   // scratch
-  std::vector<std::uint64_t> keys_;
-  std::vector<std::uint64_t> hashes_;
-  std::vector<TransitionId> succ_t_;
+  // the successors of the state expanded, and those of the state the walk visits next, made
+  // while the first wait on the memory
+  Successors now_, ahead_;
   std::vector<TransitionId> candidates_now_;
   std::vector<std::int64_t> unpacked_;
   std::vector<bool> union_;
@@ -148,14 +194,6 @@ class Search {
   bool root_bottom_ = false;
   std::uint64_t peak_ = 0;
 };
-
-Search::Expand Search::fire(TransitionId t, const std::uint64_t* m, std::uint64_t* out, bool& enabled) {
-  std::size_t field = 0;
-  const Fired f = firing_.fire(t, m, out, field);
-  enabled = f != Fired::NotEnabled;
-  if (f != Fired::TooBig) return Expand::Ok;
-  return widen(field) ? Expand::Widened : Expand::Overflow;
-}
 
 bool Search::widen(std::size_t k) {
   const Layout& L = store_->layout();
@@ -289,40 +327,68 @@ bool Search::accelerate(std::uint64_t* key) {
   return true;
 }
 
-Search::Expand Search::expand(StateId v) {
-  const Layout& L = store_->layout();
-  const std::size_t words = L.words();
-  const std::size_t transitions = net_.transitions().size();
-  keys_.resize(transitions * words);
-  hashes_.clear();
-  succ_t_.clear();
-  const std::uint64_t* m = store_->at(v);
+Search::Expand Search::successors(const std::uint64_t* m, Successors& out) {
+  const std::size_t words = store_->layout().words();
+  out.keys.resize(net_.transitions().size() * words);
+  out.hashes.clear();
+  out.t.clear();
+  out.peeked.clear();
   candidates_.find(m, firing_, candidates_now_);
   for (TransitionId t : candidates_now_) {
     bool enabled = false;
-    std::uint64_t* out = keys_.data() + succ_t_.size() * words;
-    const Expand e = fire(t, m, out, enabled);
+    std::uint64_t* key = out.keys.data() + out.t.size() * words;
+    const Expand e = fireCandidate(t, m, key, enabled);
     if (e != Expand::Ok) return e;
     if (!enabled) continue;
-    succ_t_.push_back(t);
-    const std::uint64_t h = store_->hash(out);
-    hashes_.push_back(h);
+    out.t.push_back(t);
+    const std::uint64_t h = store_->hash(key);
+    out.hashes.push_back(h);
     store_->prefetch(h);
   }
+  return Expand::Ok;
+}
+
+Search::Expand Search::expand(StateId v) {
+  const std::size_t words = store_->layout().words();
+  if (ahead_.state == v) {
+    std::swap(now_, ahead_);
+  } else if (const Expand e = successors(store_->at(v), now_); e != Expand::Ok) {
+    return e;
+  }
+  ahead_.state = kNone;
+  const std::vector<TransitionId>& via = now_.t;
   // the markings the successors likely are (and their index beside them) fetched into the
-  // cache while the others are looked up
-  for (std::size_t i = 0; i < succ_t_.size(); ++i) store_->peek(hashes_[i]);
+  // cache while the others are looked up (made ahead, they were fetched already)
+  auto peek = [&](Successors& x) {
+    x.peeked.resize(x.t.size());
+    for (std::size_t i = 0; i < x.t.size(); ++i) x.peeked[i] = store_->peek(x.hashes[i]);
+  };
+  if (now_.peeked.size() != via.size()) peek(now_);
+  // the walk goes on with the last successor not visited (it is pushed last): found so, its
+  // successors are made now and their slots fetched while this state's lookups wait on the
+  // memory, and their markings once these are done. A state found by its hash's tag alone
+  // may be another: then nothing comes of it. Not where a field may widen (the markings are
+  // laid out anew) or accelerate
+  ahead_.index = via.size();
+  for (std::size_t i = via.size(); i-- > 0 && !widens_;) {
+    if (now_.peeked[i] == kNone || !visited(now_.peeked[i])) {
+      ahead_.index = i;
+      break;
+    }
+  }
+  if (ahead_.index < via.size()) successors(now_.keys.data() + ahead_.index * words, ahead_);
   std::uint32_t rv = rindex(v);
   bool root = true;
-  for (std::size_t i = 0; i < succ_t_.size(); ++i) {
-    std::uint64_t* key = keys_.data() + i * words;
-    std::uint64_t h = hashes_[i];
+  for (std::size_t i = 0; i < via.size(); ++i) {
+    std::uint64_t* key = now_.keys.data() + i * words;
+    std::uint64_t h = now_.hashes[i];
     const bool accelerated = cover_ && store_->find(key, h) == kNone && accelerate(key);
     if (accelerated) h = store_->hash(key);
     bool added = false;
     const StateId w = store_->insert(key, h, added);
-    if (added) noteNew(w, v, succ_t_[i], accelerated);
-    fired_[succ_t_[i]] = true;
+    if (added) noteNew(w, v, via[i], accelerated);
+    if (i == ahead_.index) ahead_.state = w;
+    fired_[via[i]] = true;
     // an edge to a state already visited is settled now; the others wait in edges_
     const std::uint32_t rw = rindex(w);
     if (rw == 0) {
@@ -332,10 +398,11 @@ Search::Expand Search::expand(StateId v) {
     if (rw < rv) rv = rw, root = false;
     if (rw > next_comp_) leaves_[v] = true;  // w's component is finished: an edge leaves
   }
+  if (ahead_.state != kNone) peek(ahead_);
   setRindex(v, rv);
-  edges_count_ += succ_t_.size();
-  if (succ_t_.empty() && options_.shortest_path) dead_states_.push_back(v);
-  if (succ_t_.empty()) {
+  edges_count_ += via.size();
+  if (via.empty() && options_.shortest_path) dead_states_.push_back(v);
+  if (via.empty()) {
     // the first few dead states: the search path to each (the frames' states, then v)
     deadlock_ = true;
     ++dead_count_;
@@ -488,10 +555,9 @@ StateSpace Search::run() {
   StateSpace out;
   const std::size_t transitions = net_.transitions().size();
 
-  const Plan p = plan(net_, options_);
-  if (p.overflow) return overflowAnswer(net_);
-  if (options_.threads > 1 && !p.cover && transitions <= kParallelTransitions) return exploreParallel(net_, options_, p);
-  cover_ = p.cover;
+  const Plan& p = plan_;
+  cover_ = p.cover && accelerate_;
+  widens_ = p.cover;
   token_delta_.assign(transitions, 0);
   for (TransitionId t = 0; t < transitions; ++t) {
     for (const Term& term : net_.termsOf(t)) {
@@ -552,6 +618,12 @@ StateSpace Search::run() {
         const std::uint64_t b = bytes();
         peak_ = std::max(peak_, b);
         if (options_.progress) options_.progress({store_->size(), edges_count_, b});
+        if (race_ != nullptr) {
+          // the other search is done, or this plain one has outgrown it: the net is unbounded
+          if (cover_) race_->cover_states.store(store_->size(), std::memory_order_relaxed);
+          const bool outgrown = !cover_ && store_->size() > 4 * race_->cover_states.load(std::memory_order_relaxed) + (1 << 16);
+          if (race_->over.load(std::memory_order_relaxed) || outgrown) stop_ = ExploreStop::MaxStates, running = false;
+        }
         if (options_.max_bytes != 0 && b > options_.max_bytes) stop_ = ExploreStop::MaxMemory, running = false;
         if (options_.deadline && std::chrono::steady_clock::now() >= *options_.deadline) {
           stop_ = ExploreStop::TimeLimit, running = false;
@@ -600,7 +672,39 @@ StateSpace Search::run() {
 
 }  // namespace
 
-StateSpace explore(const Net& net, const ExploreOptions& options) { return Search(net, options).run(); }
+namespace {
+
+/// The coverability search and the plain one side by side (Race): the first to end gives the
+/// answer, the other stops.
+StateSpace race(const Net& net, const ExploreOptions& options, const Plan& p) {
+  Race r;
+  ExploreOptions quiet = options;
+  quiet.progress = nullptr;
+  Search cover(net, options, p, &r, true);
+  Search plain(net, quiet, p, &r, false);
+  StateSpace found;
+  std::thread other([&] {
+    found = plain.run();
+    if (found.complete) r.over = true;
+  });
+  StateSpace out = cover.run();
+  r.over = true;
+  other.join();
+  return !out.complete && found.complete ? found : out;
+}
+
+}  // namespace
+
+StateSpace explore(const Net& net, const ExploreOptions& options) {
+  const Plan p = plan(net, options);
+  if (p.overflow) return overflowAnswer(net);
+  if (options.threads > 1 && net.transitions().size() <= kParallelTransitions) {
+    if (!p.cover) return exploreParallel(net, options, p);
+    // a limit on memory holds for one search: no race
+    if (options.max_bytes == 0) return race(net, options, p);
+  }
+  return Search(net, options, p).run();
+}
 
 const char* stopReason(ExploreStop stop) {
   switch (stop) {

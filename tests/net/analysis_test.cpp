@@ -453,6 +453,54 @@ TEST(Analysis, AProducerWithoutConsumerIsUnboundedOnlyWhereItProduces) {
   EXPECT_EQ(s.place_bound[p0], 1);
 }
 
+TEST(Analysis, TwoThreadsRaceACoverabilitySearchWithAPlainOneAndGiveTheOneThreadAnswer) {
+  // five counters, each raised by a transition that an inhibitor stops at four: no invariant
+  // or state equation bounds them (neither sees inhibitors), so one thread searches for
+  // coverability; they are bounded, so the plain search of two threads ends with the same
+  // graph, walked in the same order: 5^5 states, the last one dead
+  NetBuilder b;
+  for (int i = 0; i < 5; ++i) {
+    const auto c = b.addPlace("c" + std::to_string(i));
+    const auto raise = b.addTransition("raise" + std::to_string(i));
+    b.addInput(c, raise, kDefaultSlot, 4, ArcKind::Inhibitor);
+    b.addOutput(raise, c);
+  }
+  const auto bounded = b.freeze();
+  const StateSpace one = exploreWith(*bounded, 1), two = exploreWith(*bounded, 2);
+  ASSERT_TRUE(one.complete);
+  ASSERT_TRUE(two.complete);
+  EXPECT_EQ(one.states, 3125u);
+  EXPECT_EQ(two.states, one.states);
+  EXPECT_EQ(two.edges, one.edges);
+  EXPECT_TRUE(two.bounded);
+  EXPECT_EQ(two.place_bound, one.place_bound);
+  EXPECT_EQ(two.deadlock_path, one.deadlock_path);
+  EXPECT_EQ(two.more_dead_paths, one.more_dead_paths);
+  EXPECT_EQ(two.dead_markings, 1u);
+  EXPECT_TRUE(endsDead(*bounded, two.deadlock_path));
+  EXPECT_EQ(two.live, one.live);
+  EXPECT_EQ(two.reversible, one.reversible);
+  EXPECT_EQ(two.max_marking, 20);
+
+  // the classic producer: the plain search never ends; the coverability search does, and
+  // the plain one stops
+  NetBuilder u;
+  const auto p0 = u.addPlace("p0");
+  const auto buffer = u.addPlace("buffer");
+  u.setSlot(p0, kDefaultSlot, SlotKind::Control, kUnbounded, 1);
+  const auto produce = u.addTransition("produce");
+  u.addInput(p0, produce);
+  u.addOutput(produce, p0);
+  u.addOutput(produce, buffer);
+  const auto unbounded = u.freeze();
+  const StateSpace cover = exploreWith(*unbounded, 1), raced = exploreWith(*unbounded, 2);
+  ASSERT_TRUE(raced.complete);
+  EXPECT_FALSE(raced.bounded);
+  EXPECT_EQ(raced.states, cover.states);
+  EXPECT_EQ(raced.edges, cover.edges);
+  EXPECT_EQ(raced.unbounded_places, (std::vector<PlaceId>{buffer}));
+}
+
 TEST(Analysis, FiringsThatMoveTokensBetweenFieldsOfOnePackedWordKeepEveryCount) {
   // a and b share 5 tokens (a + b = 5: three bits each), c holds at most 2 (two bits); the
   // three lie in one 64-bit word, and each firing changes its fields by one addition: take

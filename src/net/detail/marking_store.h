@@ -356,8 +356,9 @@ class Firing {
     return true;
   }
   /// True when `t` is enabled in the packed marking `m` (sensor conditions count as true).
-  bool enabled(TransitionId t, const std::uint64_t* m) const {
-    if (!ready(t, m)) return false;
+  bool enabled(TransitionId t, const std::uint64_t* m) const { return ready(t, m) && passes(t, m); }
+  /// The rest of enabled(): the counts `t` tests lie within their ranges.
+  bool passes(TransitionId t, const std::uint64_t* m) const {
     for (std::uint32_t i = spans_[t].tests; i < spans_[t + 1].tests; ++i) {
       const Test& x = tests_[i];
       const std::uint64_t c = (m[x.word] >> x.shift) & x.mask;
@@ -367,7 +368,12 @@ class Firing {
   }
   /// Fires `t` on `m` into `out`. TooBig (with the field in `field`) when a count does not fit.
   Fired fire(TransitionId t, const std::uint64_t* m, std::uint64_t* out, std::size_t& field) const {
-    if (!enabled(t, m)) return Fired::NotEnabled;
+    if (!ready(t, m)) return Fired::NotEnabled;
+    return fireReady(t, m, out, field);
+  }
+  /// The same for a transition ready() in `m` (Candidates::find gives only such).
+  Fired fireReady(TransitionId t, const std::uint64_t* m, std::uint64_t* out, std::size_t& field) const {
+    if (!passes(t, m)) return Fired::NotEnabled;
     if (words_ == 1) {
       out[0] = m[0];
     } else {
