@@ -35,7 +35,16 @@ class Search {
  public:
   /// A search of `net` laid out by `plan`; in a race, `accelerate` says which of the two.
   Search(const Net& net, const ExploreOptions& options, const Plan& plan, Race* race = nullptr, bool accelerate = true)
-      : net_(net), options_(options), plan_(plan), race_(race), accelerate_(accelerate), candidates_(net), firing_(net) {}
+      : net_(net),
+        options_(options),
+        plan_(plan),
+        race_(race),
+        accelerate_(accelerate),
+        candidates_(net),
+        firing_(net),
+        affected_(net),
+        enabled_sets_(net.transitions().size() <= kEnabledSetTransitions &&
+                      affected_.total() <= kMostAffected * net.transitions().size()) {}
 
   StateSpace run();
 
@@ -48,6 +57,9 @@ class Search {
     std::vector<std::uint64_t> keys;
     std::vector<std::uint64_t> hashes;
     std::vector<StateId> peeked;  ///< per successor: Store::peek (empty: not peeked yet)
+    /// A bit per transition: enabled in the state (where the net has at most
+    /// kEnabledSetTransitions; the successors then come in the transitions' order).
+    std::vector<std::uint64_t> enabled;
     StateId state = kNone;   ///< whose (kNone: none made ahead)
     std::size_t index = 0;   ///< made ahead: of the successor `index` of the state expanded before
   };
@@ -57,6 +69,15 @@ class Search {
   /// Makes the successors of the packed marking `m` into `out`, their table slots on their way
   /// into the cache.
   Expand successors(const std::uint64_t* m, Successors& out);
+  /// The same for successor `i` of `parent`: its enabled transitions are the parent's with
+  /// those the firing may change tested again.
+  Expand successorsAfter(const Successors& parent, std::size_t i, Successors& out);
+  /// Fires the transitions enabled in `m` (out.enabled) into `out`.
+  Expand fireEnabled(const std::uint64_t* m, Successors& out);
+  /// Nets with more transitions, or whose firings each may change the enabling of more than
+  /// kMostAffected transitions on average (a thousand transitions around shared places), find
+  /// a state's candidates from its marked slots alone.
+  static constexpr std::size_t kEnabledSetTransitions = 4096, kMostAffected = 64;
   /// Fires `t` on the packed marking `m` into `out`; Overflow or Widened on a count that
   /// does not fit. False in `enabled` when `t` is not enabled.
   Expand fire(TransitionId t, const std::uint64_t* m, std::uint64_t* out, bool& enabled) {
@@ -144,6 +165,8 @@ class Search {
   std::unique_ptr<Store> store_;
   Candidates candidates_;
   Firing firing_;
+  Affected affected_;
+  bool enabled_sets_ = false;  // at most kEnabledSetTransitions transitions
   std::vector<bool> accel_;   // per place slot: may be accelerated to ω
   std::vector<std::size_t> accel_slots_;  // those place slots
   bool cover_ = false;        // some place slot has no structural bound
@@ -328,12 +351,19 @@ bool Search::accelerate(std::uint64_t* key) {
 }
 
 Search::Expand Search::successors(const std::uint64_t* m, Successors& out) {
+  candidates_.find(m, firing_, candidates_now_);
+  if (enabled_sets_) {
+    out.enabled.assign((net_.transitions().size() + 63) / 64, 0);
+    for (TransitionId t : candidates_now_) {
+      if (firing_.passes(t, m)) out.enabled[t >> 6] |= std::uint64_t{1} << (t & 63);
+    }
+    return fireEnabled(m, out);
+  }
   const std::size_t words = store_->layout().words();
   out.keys.resize(net_.transitions().size() * words);
   out.hashes.clear();
   out.t.clear();
   out.peeked.clear();
-  candidates_.find(m, firing_, candidates_now_);
   for (TransitionId t : candidates_now_) {
     bool enabled = false;
     std::uint64_t* key = out.keys.data() + out.t.size() * words;
@@ -344,6 +374,38 @@ Search::Expand Search::successors(const std::uint64_t* m, Successors& out) {
     const std::uint64_t h = store_->hash(key);
     out.hashes.push_back(h);
     store_->prefetch(h);
+  }
+  return Expand::Ok;
+}
+
+Search::Expand Search::successorsAfter(const Successors& parent, std::size_t i, Successors& out) {
+  const std::uint64_t* m = parent.keys.data() + i * store_->layout().words();
+  if (!enabled_sets_) return successors(m, out);
+  out.enabled = parent.enabled;
+  for (const TransitionId u : affected_.of(parent.t[i])) {
+    const std::uint64_t bit = std::uint64_t{1} << (u & 63);
+    out.enabled[u >> 6] = firing_.enabled(u, m) ? out.enabled[u >> 6] | bit : out.enabled[u >> 6] & ~bit;
+  }
+  return fireEnabled(m, out);
+}
+
+Search::Expand Search::fireEnabled(const std::uint64_t* m, Successors& out) {
+  const std::size_t words = store_->layout().words();
+  out.keys.resize(net_.transitions().size() * words);
+  out.hashes.clear();
+  out.t.clear();
+  out.peeked.clear();
+  for (std::size_t w = 0; w < out.enabled.size(); ++w) {
+    for (std::uint64_t x = out.enabled[w]; x != 0; x &= x - 1) {
+      const auto t = static_cast<TransitionId>(w * 64 + static_cast<std::size_t>(std::countr_zero(x)));
+      std::uint64_t* key = out.keys.data() + out.t.size() * words;
+      std::size_t field = 0;
+      if (firing_.fireEnabled(t, m, key, field) == Fired::TooBig) return widened(field);
+      out.t.push_back(t);
+      const std::uint64_t h = store_->hash(key);
+      out.hashes.push_back(h);
+      store_->prefetch(h);
+    }
   }
   return Expand::Ok;
 }
@@ -376,7 +438,7 @@ Search::Expand Search::expand(StateId v) {
       break;
     }
   }
-  if (ahead_.index < via.size()) successors(now_.keys.data() + ahead_.index * words, ahead_);
+  if (ahead_.index < via.size()) successorsAfter(now_, ahead_.index, ahead_);
   std::uint32_t rv = rindex(v);
   bool root = true;
   for (std::size_t i = 0; i < via.size(); ++i) {

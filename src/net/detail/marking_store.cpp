@@ -87,6 +87,41 @@ void Firing::use(const Layout& layout) {
   spans_[transitions] = here();
 }
 
+Affected::Affected(const Net& net) {
+  const std::size_t transitions = net.transitions().size();
+  // per place slot: the transitions whose enabling reads its count
+  std::vector<std::vector<TransitionId>> readers(net.placeSlots().size());
+  for (TransitionId t = 0; t < transitions; ++t) {
+    for (const Term& term : net.termsOf(t)) {
+      const bool reads = term.kind == TermKind::Input || term.kind == TermKind::Test || term.kind == TermKind::Inhibitor ||
+                         (term.kind == TermKind::Output && net.placeSlots()[term.place_slot].capacity != kUnbounded);
+      auto& r = readers[term.place_slot];
+      if (reads && (r.empty() || r.back() != t)) r.push_back(t);
+    }
+  }
+  std::vector<std::int64_t> delta(net.placeSlots().size(), 0);
+  std::vector<bool> in(transitions, false);
+  begin_.assign(transitions + 1, 0);
+  for (TransitionId t = 0; t < transitions; ++t) {
+    begin_[t] = static_cast<std::uint32_t>(list_.size());
+    for (const Term& term : net.termsOf(t)) {
+      if (term.kind == TermKind::Input) delta[term.place_slot] -= term.weight;
+      if (term.kind == TermKind::Output) delta[term.place_slot] += term.weight;
+    }
+    for (const Term& term : net.termsOf(t)) {
+      const PlaceSlotId k = term.place_slot;
+      if (delta[k] != 0) {
+        for (const TransitionId u : readers[k]) {
+          if (!in[u]) in[u] = true, list_.push_back(u);
+        }
+      }
+    }
+    for (const Term& term : net.termsOf(t)) delta[term.place_slot] = 0;
+    for (auto i = begin_[t]; i < list_.size(); ++i) in[list_[i]] = false;
+  }
+  begin_[transitions] = static_cast<std::uint32_t>(list_.size());
+}
+
 std::size_t markEnabled(const Firing& firing, const Candidates& candidates, const std::uint64_t* m,
                         std::vector<bool>& seen, std::vector<TransitionId>& scratch) {
   std::size_t added = 0;

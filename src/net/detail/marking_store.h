@@ -374,6 +374,10 @@ class Firing {
   /// The same for a transition ready() in `m` (Candidates::find gives only such).
   Fired fireReady(TransitionId t, const std::uint64_t* m, std::uint64_t* out, std::size_t& field) const {
     if (!passes(t, m)) return Fired::NotEnabled;
+    return fireEnabled(t, m, out, field);
+  }
+  /// The same for a transition enabled() in `m`.
+  Fired fireEnabled(TransitionId t, const std::uint64_t* m, std::uint64_t* out, std::size_t& field) const {
     if (words_ == 1) {
       out[0] = m[0];
     } else {
@@ -432,6 +436,25 @@ class Firing {
   std::vector<Test> tests_;
   std::vector<Add> adds_;
   std::vector<Change> changes_;
+};
+
+/// For each transition, the transitions whose enabling its firing may change: those with an
+/// arc (input, test, inhibitor, or output to a slot with a capacity) on a place slot whose
+/// count it changes. A state's enabled transitions are then its parent's with these tested
+/// again, not all of them.
+class Affected {
+ public:
+  explicit Affected(const Net& net);
+  /// The transitions firing `t` may enable or disable.
+  std::span<const TransitionId> of(TransitionId t) const {
+    return {list_.data() + begin_[t], list_.data() + begin_[t + 1]};
+  }
+  /// The lists' lengths summed over the transitions.
+  std::size_t total() const { return list_.size(); }
+
+ private:
+  std::vector<std::uint32_t> begin_;  // per transition, then one past the last
+  std::vector<TransitionId> list_;
 };
 
 /// Marks in `seen` the transitions enabled in `m`; returns how many were not marked before.
