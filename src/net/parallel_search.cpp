@@ -164,7 +164,7 @@ class Parallel {
     // states a batch takes, and successors past which it takes no more
     constexpr std::size_t kBatchStates = 64, kBatchSuccessors = 512;
     std::vector<std::vector<std::uint64_t>> outbox(threads_);
-    std::vector<std::uint64_t> batch, keys, hashes;
+    std::vector<std::uint64_t> batch, keys, hashes, in_hashes;
     std::vector<std::uint32_t*> slots;
     std::vector<TransitionId> candidates;
     auto flush = [&](unsigned to) {
@@ -185,9 +185,17 @@ class Parallel {
       }
       if (!batch.empty()) {
         if (!active) pending_.fetch_add(1), active = true;
-        for (std::size_t i = 0; i < batch.size(); i += record) {
-          *reinterpret_cast<std::uint32_t*>(static_cast<std::uintptr_t>(batch[i + words])) =
-              store(me, &batch[i], s.store->hash(&batch[i]));
+        // looked up as the thread's own successors are: each slot, then the marking it names,
+        // fetched ahead
+        const std::size_t n = batch.size() / record;
+        in_hashes.resize(n);
+        for (std::size_t i = 0; i < n; ++i) in_hashes[i] = s.store->hash(&batch[i * record]);
+        for (std::size_t i = 0; i < std::min(n, kSlotAhead); ++i) s.store->prefetch(in_hashes[i]);
+        for (std::size_t i = 0; i < n; ++i) {
+          if (i + kSlotAhead < n) s.store->prefetch(in_hashes[i + kSlotAhead]);
+          if (i + kMarkingAhead < n) s.store->peek(in_hashes[i + kMarkingAhead]);
+          *reinterpret_cast<std::uint32_t*>(static_cast<std::uintptr_t>(batch[i * record + words])) =
+              store(me, &batch[i * record], in_hashes[i]);
         }
         pending_.fetch_sub(static_cast<std::int64_t>(batch.size() / record));
       }
