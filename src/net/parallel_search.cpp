@@ -150,6 +150,21 @@ class Parallel {
     return global(me, id);
   }
 
+  /// Stores the `n` markings `key(j)`, of hashes `hash(j)`, in shard `me` (its own thread),
+  /// each id into `*slot(j)`: the lookups in a row, each with the table slot of one further
+  /// ahead and the marking of one nearer ahead on their way.
+  template <class Key, class Hash, class Slot>
+  void storeAll(unsigned me, std::size_t n, Key key, Hash hash, Slot slot) {
+    constexpr std::size_t kSlotAhead = 16, kMarkingAhead = 8;
+    const Store& store_of = *shards_[me].store;
+    for (std::size_t j = 0; j < std::min(n, kSlotAhead); ++j) store_of.prefetch(hash(j));
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j + kSlotAhead < n) store_of.prefetch(hash(j + kSlotAhead));
+      if (j + kMarkingAhead < n) store_of.peek(hash(j + kMarkingAhead));
+      *slot(j) = store(me, key(j), hash(j));
+    }
+  }
+
   void explore(unsigned me) {
     // pending_ counts the markings in flight between threads (added by the sender before
     // they reach an inbox, taken off by the receiver after storing them) and the threads at
@@ -159,12 +174,11 @@ class Parallel {
     Shard& s = shards_[me];
     const std::size_t words = layout_.words();
     const std::size_t record = words + 1;
-    // how far ahead of the lookup a table slot, and then the marking it names, is fetched
-    constexpr std::size_t kSlotAhead = 16, kMarkingAhead = 8;
     // states a batch takes, and successors past which it takes no more
     constexpr std::size_t kBatchStates = 64, kBatchSuccessors = 512;
     std::vector<std::vector<std::uint64_t>> outbox(threads_);
     std::vector<std::uint64_t> batch, keys, hashes, in_hashes;
+    std::vector<std::uint32_t> own;  // the successors this thread owns, by index
     std::vector<std::uint32_t*> slots;
     std::vector<TransitionId> candidates;
     auto flush = [&](unsigned to) {
@@ -185,18 +199,13 @@ class Parallel {
       }
       if (!batch.empty()) {
         if (!active) pending_.fetch_add(1), active = true;
-        // looked up as the thread's own successors are: each slot, then the marking it names,
-        // fetched ahead
+        // looked up as the thread's own successors are
         const std::size_t n = batch.size() / record;
         in_hashes.resize(n);
         for (std::size_t i = 0; i < n; ++i) in_hashes[i] = s.store->hash(&batch[i * record]);
-        for (std::size_t i = 0; i < std::min(n, kSlotAhead); ++i) s.store->prefetch(in_hashes[i]);
-        for (std::size_t i = 0; i < n; ++i) {
-          if (i + kSlotAhead < n) s.store->prefetch(in_hashes[i + kSlotAhead]);
-          if (i + kMarkingAhead < n) s.store->peek(in_hashes[i + kMarkingAhead]);
-          *reinterpret_cast<std::uint32_t*>(static_cast<std::uintptr_t>(batch[i * record + words])) =
-              store(me, &batch[i * record], in_hashes[i]);
-        }
+        storeAll(
+            me, n, [&](std::size_t i) { return &batch[i * record]; }, [&](std::size_t i) { return in_hashes[i]; },
+            [&](std::size_t i) { return reinterpret_cast<std::uint32_t*>(static_cast<std::uintptr_t>(batch[i * record + words])); });
         pending_.fetch_sub(static_cast<std::int64_t>(batch.size() / record));
       }
       for (int n = 0; n < 16 && !s.work.empty() && !stop_flag_.load(std::memory_order_relaxed); ++n) {
@@ -235,26 +244,23 @@ class Parallel {
           }
         }
         s.edges.fetch_add(made, std::memory_order_relaxed);
-        // the lookups, each with the slot of one further ahead and the marking of one
-        // nearer ahead on their way
-        auto mine = [&](std::size_t i) { return owner(hashes[i]) == me; };
-        for (std::size_t i = 0; i < std::min(made, kSlotAhead); ++i) {
-          if (mine(i)) s.store->prefetch(hashes[i]);
-        }
+        // the others' successors to their owners, this thread's looked up
+        own.clear();
         for (std::size_t i = 0; i < made; ++i) {
-          if (i + kSlotAhead < made && mine(i + kSlotAhead)) s.store->prefetch(hashes[i + kSlotAhead]);
-          if (i + kMarkingAhead < made && mine(i + kMarkingAhead)) s.store->peek(hashes[i + kMarkingAhead]);
-          const std::uint64_t* key = keys.data() + i * words;
           const unsigned to = owner(hashes[i]);
           if (to == me) {
-            *slots[i] = store(me, key, hashes[i]);
+            own.push_back(static_cast<std::uint32_t>(i));
             continue;
           }
+          const std::uint64_t* key = keys.data() + i * words;
           auto& box = outbox[to];
           box.insert(box.end(), key, key + words);
           box.push_back(reinterpret_cast<std::uintptr_t>(slots[i]));
           if (box.size() >= 1024 * record) flush(to);
         }
+        storeAll(
+            me, own.size(), [&](std::size_t j) { return keys.data() + own[j] * words; },
+            [&](std::size_t j) { return hashes[own[j]]; }, [&](std::size_t j) { return slots[own[j]]; });
       }
       account(s);
       // the states stored since the last time, added to the count all threads share once per
