@@ -61,11 +61,13 @@ class Parallel {
         options_(options),
         layout_(Layout::omegaOrBounded(plan.bits, plan.omega)),
         candidates_(net),
+        back_(net, Candidates::Way::Backward),
         firing_(net),
         threads_(options.threads),
         shard_bits_(static_cast<unsigned>(std::bit_width(options.threads - 1))),
         shards_(options.threads) {
     candidates_.use(layout_);
+    back_.use(layout_);
     firing_.use(layout_);
     for (auto& s : shards_) {
       s.store = std::make_unique<Store>(layout_);
@@ -106,11 +108,9 @@ class Parallel {
     out.complete = stop_ == ExploreStop::Done;
     // a partial search gives no path: its arrays may have slots no owner filled yet
     out.deadlock = out.dead_markings > 0;
-    // what follows reads the markings by id and the graph, never looks a marking up: the
-    // tables go (a third of what the shards hold)
     peak_ = std::max(peak_, bytes());
-    for (auto& s : shards_) s.store->dropIndex(), account(s);
     if (out.complete) components(out, ids);
+    dropTables();
     seen.settle(layout_);
     summarise(net_, seen, out);
     out.peak_bytes = std::max(peak_, bytes());
@@ -315,10 +315,17 @@ class Parallel {
   /// not live where missesATransition() says so; failing that, the strongly connected
   /// components over the arrays decide (Pearce's variant of Tarjan's algorithm, as in the
   /// sequential search).
+  /// Frees the tables: what follows reads the markings by id and the graph, never looks a
+  /// marking up (the tables are a third of what the shards hold).
+  void dropTables() {
+    for (auto& s : shards_) s.store->dropIndex(), account(s);
+  }
+
   void components(StateSpace& out, std::uint64_t ids) {
     const std::size_t transitions = net_.transitions().size();
     const std::uint32_t s0 = global(start_, 0);
     if (out.deadlock) {
+      dropTables();
       out.live = transitions == 0;
       out.reversible = out.states == 1;
       pathToDeadlock(out, ids, s0);
@@ -326,7 +333,9 @@ class Parallel {
     }
     // the common case first: the initial state reached from every state, one component
     std::vector<std::uint64_t> reach;
-    if (reachingStart(ids, s0, out.states, reach) == out.states) {
+    const std::uint64_t reaching = reachingStart(ids, s0, out.states, reach);
+    dropTables();
+    if (reaching == out.states) {
       out.reversible = true;
       out.live = std::all_of(out.fired.begin(), out.fired.end(), [](bool f) { return f; });
       return;
@@ -479,9 +488,10 @@ class Parallel {
   /// sweeps over the runs in the order they were written, each marking a state one of whose
   /// successors is marked: a search from the start tends to write a state after those on its
   /// way back, so that a few sweeps mark them all. Where a sweep marks less than a hundredth
-  /// of the states left, breadth first from `s0` over the edges reversed (4 bytes an edge
-  /// more, for the time it takes), the threads sharing both the reversing (each its own
-  /// shard's edges) and each large level.
+  /// of the states left, breadth first backward from the states marked: a state's
+  /// predecessors are made by undoing the transitions that may have led to it and looked up
+  /// in the tables (no edge is reversed, nothing more is held), the threads sharing each large
+  /// level.
   std::uint64_t reachingStart(std::uint64_t ids, std::uint32_t s0, std::uint64_t states, std::vector<std::uint64_t>& reach) {
     reach.assign((ids + 63) / 64, 0);
     auto isMarked = [&](std::uint32_t g) { return isSet(reach, g); };
@@ -503,32 +513,12 @@ class Parallel {
       if (marked == before) return marked;
       if ((marked - before) * 100 < states - before) break;
     }
-    // the edges reversed: the predecessors of id g in preds[first[g] .. first[g + 1]); the
-    // threads count and place them with atomic additions (the order among a state's
-    // predecessors varies, the states reached do not)
+    // breadth first from the states marked, backward, a level at a time: a state's
+    // predecessors are made by undoing the transitions that may have led to it, each looked
+    // up in its owner's table (the tables only read now), the slot and then the marking of
+    // the lookups ahead on their way. The threads take a large level's states in blocks and
+    // mark what they find with an atomic or, each keeping those it was first to mark
     using Atomic64 = std::atomic_ref<std::uint64_t>;
-    std::vector<std::uint64_t> first;
-    core::reserveLarge(first, ids + 1);
-    first.assign(ids + 1, 0);
-    onThreads([&](unsigned me) {
-      forEachRunOf(shards_[me], [&](std::uint32_t, const std::uint32_t* begin, const std::uint32_t* end) {
-        for (const std::uint32_t* e = begin; e != end; ++e) Atomic64(first[*e + 1]).fetch_add(1, std::memory_order_relaxed);
-      });
-    });
-    for (std::size_t g = 0; g < ids; ++g) first[g + 1] += first[g];
-    const std::uint64_t edges = first[ids];
-    std::vector<std::uint32_t> preds;
-    core::reserveLarge(preds, edges);
-    preds.resize(edges);
-    peak_ = std::max(peak_, bytes() + reach.size() * 8 + first.size() * 8 + edges * 4);
-    onThreads([&](unsigned me) {
-      forEachRunOf(shards_[me], [&](std::uint32_t v, const std::uint32_t* begin, const std::uint32_t* end) {
-        for (const std::uint32_t* e = begin; e != end; ++e) preds[Atomic64(first[*e]).fetch_add(1, std::memory_order_relaxed)] = v;
-      });
-    });
-    // first[g] now holds where g's predecessors end: they begin where g - 1's end. Breadth
-    // first, a level at a time: the threads take the level's states in blocks and mark
-    // their predecessors with an atomic or, each keeping those it was first to mark
     std::vector<std::uint32_t> level;
     level.reserve(marked);
     forEachRun([&](std::uint32_t v, const std::uint32_t*, const std::uint32_t*) {
@@ -536,24 +526,48 @@ class Parallel {
     });
     struct alignas(64) Next {
       std::vector<std::uint32_t> states;  // a thread's share of the next level
+      std::vector<std::uint64_t> keys;    // the predecessors of its block, to look up
+      std::vector<std::uint64_t> hashes;
+      std::vector<TransitionId> candidates;
     };
     std::vector<Next> next(threads_);
-    constexpr std::size_t kBlock = 1024;
+    const std::size_t words = layout_.words();
+    constexpr std::size_t kBlock = 256, kSlotAhead = 16, kMarkingAhead = 8;
     while (!level.empty()) {
       std::atomic<std::size_t> taken{0};
       // a level too small to share is one thread's (no threads started for it)
       auto share = [&](auto&& f) { level.size() < threads_ * kBlock ? f(0u) : onThreads(f); };
       share([&](unsigned me) {
+        Next& my = next[me];
         for (std::size_t begin; (begin = taken.fetch_add(kBlock, std::memory_order_relaxed)) < level.size();) {
+          my.keys.clear();
+          my.hashes.clear();
           for (std::size_t i = begin; i < std::min(level.size(), begin + kBlock); ++i) {
-            const std::uint32_t w = level[i];
-            for (std::uint64_t k = w == 0 ? 0 : first[w - 1]; k < first[w]; ++k) {
-              const std::uint32_t g = preds[k];
-              const std::uint64_t bit = std::uint64_t{1} << (g & 63);
-              Atomic64 word(reach[g >> 6]);
-              if ((word.load(std::memory_order_relaxed) & bit) != 0) continue;
-              if ((word.fetch_or(bit, std::memory_order_relaxed) & bit) == 0) next[me].states.push_back(g);
+            const std::uint64_t* m = marking(level[i]);
+            back_.findBackward(m, my.candidates);
+            for (const TransitionId t : my.candidates) {
+              const std::size_t at = my.keys.size();
+              my.keys.resize(at + words);
+              if (!firing_.unfire(t, m, my.keys.data() + at) || !firing_.enabled(t, my.keys.data() + at)) {
+                my.keys.resize(at);
+                continue;
+              }
+              my.hashes.push_back(shards_[0].store->hash(my.keys.data() + at));
             }
+          }
+          const std::size_t n = my.hashes.size();
+          auto table = [&](std::size_t j) -> const Store& { return *shards_[owner(my.hashes[j])].store; };
+          for (std::size_t j = 0; j < std::min(n, kSlotAhead); ++j) table(j).prefetch(my.hashes[j]);
+          for (std::size_t j = 0; j < n; ++j) {
+            if (j + kSlotAhead < n) table(j + kSlotAhead).prefetch(my.hashes[j + kSlotAhead]);
+            if (j + kMarkingAhead < n) table(j + kMarkingAhead).peek(my.hashes[j + kMarkingAhead]);
+            const StateId local = table(j).find(my.keys.data() + j * words, my.hashes[j]);
+            if (local == kNone) continue;  // not reachable: no edge
+            const std::uint32_t g = global(owner(my.hashes[j]), local);
+            const std::uint64_t bit = std::uint64_t{1} << (g & 63);
+            Atomic64 word(reach[g >> 6]);
+            if ((word.load(std::memory_order_relaxed) & bit) != 0) continue;
+            if ((word.fetch_or(bit, std::memory_order_relaxed) & bit) == 0) my.states.push_back(g);
           }
         }
       });
@@ -605,6 +619,7 @@ class Parallel {
   const ExploreOptions& options_;
   Layout layout_;
   Candidates candidates_;  // shared: read only once made
+  Candidates back_;        // the transitions that may lead to a marking: likewise
   Firing firing_;          // likewise
   unsigned threads_;
   unsigned shard_bits_;  // bits of a state's id that name its shard

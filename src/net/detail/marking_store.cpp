@@ -13,11 +13,13 @@ void Firing::use(const Layout& layout) {
   tests_.clear();
   adds_.clear();
   changes_.clear();
+  deltas_.clear();
   std::vector<std::int64_t> delta(layout.width(), 0);
   std::vector<std::size_t> touched;
   auto here = [&] {
     return Span{static_cast<std::uint32_t>(needs_.size()), static_cast<std::uint32_t>(tests_.size()),
-                static_cast<std::uint32_t>(adds_.size()), static_cast<std::uint32_t>(changes_.size())};
+                static_cast<std::uint32_t>(adds_.size()), static_cast<std::uint32_t>(changes_.size()),
+                static_cast<std::uint32_t>(deltas_.size())};
   };
   for (TransitionId t = 0; t < transitions; ++t) {
     spans_[t] = here();
@@ -69,6 +71,9 @@ void Firing::use(const Layout& layout) {
     }
     for (const std::size_t k : touched) {
       const Layout::Field& f = layout.field(k);
+      if (delta[k] != 0) {
+        deltas_.push_back({f.word, f.shift, static_cast<std::uint32_t>(k), f.omega, f.mask, layout.maxCount(k), delta[k]});
+      }
       if (delta[k] != 0 && !f.bounded) {
         changes_.push_back({f.word, f.shift, static_cast<std::uint32_t>(k), f.omega, f.mask, layout.maxCount(k), delta[k]});
       } else if (delta[k] != 0) {
@@ -132,17 +137,21 @@ std::size_t markEnabled(const Firing& firing, const Candidates& candidates, cons
   return added;
 }
 
-Candidates::Candidates(const Net& net) {
+Candidates::Candidates(const Net& net, Way way) {
   const std::size_t places = net.placeSlots().size();
+  // forward: the slots a transition takes from or tests; backward: those it puts into
+  auto watches = [way](const Term& term) {
+    return way == Way::Forward ? term.kind == TermKind::Input || term.kind == TermKind::Test : term.kind == TermKind::Output;
+  };
   std::vector<std::uint32_t> takers(places, 0);
   for (const Term& term : net.terms()) {
-    if (term.kind == TermKind::Input || term.kind == TermKind::Test) ++takers[term.place_slot];
+    if (watches(term)) ++takers[term.place_slot];
   }
   std::vector<std::uint32_t> sentinel(net.transitions().size(), kNone);
   std::vector<std::uint32_t> count(places + 1, 0);
   for (TransitionId t = 0; t < net.transitions().size(); ++t) {
     for (const Term& term : net.termsOf(t)) {
-      if (term.kind != TermKind::Input && term.kind != TermKind::Test) continue;
+      if (!watches(term)) continue;
       if (sentinel[t] == kNone || takers[term.place_slot] < takers[sentinel[t]]) sentinel[t] = term.place_slot;
     }
     if (sentinel[t] == kNone) {
@@ -168,6 +177,17 @@ void Candidates::use(const Layout& layout) {
     masks_[k] = f.mask << f.shift;
     for (std::uint32_t b = 0; b < layout.bits(k); ++b) field_at_[f.word * 64 + f.shift + b] = static_cast<std::uint32_t>(k);
     if (begin_[k + 1] > begin_[k]) watched_[f.word] |= masks_[k];
+  }
+}
+
+void Candidates::findBackward(const std::uint64_t* m, std::vector<TransitionId>& out) const {
+  out.assign(always_.begin(), always_.end());
+  for (std::size_t w = 0; w < watched_.size(); ++w) {
+    for (std::uint64_t x = m[w] & watched_[w]; x != 0;) {
+      const std::uint32_t k = field_at_[w * 64 + static_cast<std::size_t>(std::countr_zero(x))];
+      x &= ~masks_[k];
+      out.insert(out.end(), watchers_.begin() + begin_[k], watchers_.begin() + begin_[k + 1]);
+    }
   }
 }
 

@@ -318,12 +318,19 @@ class Firing;
 /// a transition that takes from and tests nothing is always a candidate.
 class Candidates {
  public:
-  explicit Candidates(const Net& net);
+  /// Which way the candidates fire: forward, each transition watched through a place slot it
+  /// takes from or tests; backward (the transitions that may have led to a marking), through
+  /// a place slot it puts tokens into (the one the fewest transitions put into).
+  enum class Way : std::uint8_t { Forward, Backward };
+  explicit Candidates(const Net& net, Way way = Way::Forward);
   /// Reads where the fields lie; call again after the layout changes.
   void use(const Layout& layout);
   /// The candidates in `m`, in an order fixed by `m` (the order every search fires them in),
   /// into `out`: the watchers of its marked slots that `firing` finds ready.
   void find(const std::uint64_t* m, const Firing& firing, std::vector<TransitionId>& out) const;
+  /// Backward: the transitions whose firing may have given `m` (the watchers of its marked
+  /// slots), into `out`.
+  void findBackward(const std::uint64_t* m, std::vector<TransitionId>& out) const;
 
  private:
   std::vector<std::uint32_t> begin_;    // per place slot: its watchers in watchers_ from here
@@ -376,6 +383,19 @@ class Firing {
     if (!passes(t, m)) return Fired::NotEnabled;
     return fireEnabled(t, m, out, field);
   }
+  /// The marking that firing `t` turned into `m`, into `out`: each count `t` changes less what
+  /// it added; false where one leaves its field (no marking gives `m` by `t`). Whether `t` is
+  /// enabled in `out` is not asked. Markings without ω only.
+  bool unfire(TransitionId t, const std::uint64_t* m, std::uint64_t* out) const {
+    std::memcpy(out, m, words_ * sizeof(std::uint64_t));
+    for (std::uint32_t i = spans_[t].deltas; i < spans_[t + 1].deltas; ++i) {
+      const Change& x = deltas_[i];
+      const auto before = static_cast<std::int64_t>((out[x.word] >> x.shift) & x.mask) - x.delta;
+      if (before < 0 || static_cast<std::uint64_t>(before) > x.max) return false;
+      out[x.word] = (out[x.word] & ~(x.mask << x.shift)) | (static_cast<std::uint64_t>(before) << x.shift);
+    }
+    return true;
+  }
   /// The same for a transition enabled() in `m`.
   Fired fireEnabled(TransitionId t, const std::uint64_t* m, std::uint64_t* out, std::size_t& field) const {
     if (words_ == 1) {
@@ -427,7 +447,7 @@ class Firing {
   };
   // where a transition's entries begin in each array; they end where the next one's begin
   struct Span {
-    std::uint32_t needs = 0, tests = 0, adds = 0, changes = 0;
+    std::uint32_t needs = 0, tests = 0, adds = 0, changes = 0, deltas = 0;
   };
   const Net& net_;
   std::size_t words_ = 0;
@@ -436,6 +456,7 @@ class Firing {
   std::vector<Test> tests_;
   std::vector<Add> adds_;
   std::vector<Change> changes_;
+  std::vector<Change> deltas_;  // every field a transition changes, bounded or not (unfire())
 };
 
 /// For each transition, the transitions whose enabling its firing may change: those with an
