@@ -42,9 +42,8 @@ class Search {
         accelerate_(accelerate),
         candidates_(net),
         firing_(net),
-        affected_(net),
-        enabled_sets_(net.transitions().size() <= kEnabledSetTransitions &&
-                      affected_.total() <= kMostAffected * net.transitions().size()) {}
+        affected_(net, net.transitions().size() <= kEnabledSetTransitions ? kMostAffected * net.transitions().size() : 0),
+        enabled_sets_(affected_.built()) {}
 
   StateSpace run();
 
@@ -74,6 +73,17 @@ class Search {
   Expand successorsAfter(const Successors& parent, std::size_t i, Successors& out);
   /// Fires the transitions enabled in `m` (out.enabled) into `out`.
   Expand fireEnabled(const std::uint64_t* m, Successors& out);
+  /// Empties `out` for a state's successors; each is made at next(out), then kept.
+  void reset(Successors& out) const;
+  std::uint64_t* next(Successors& out) const { return out.keys.data() + out.t.size() * store_->layout().words(); }
+  /// Keeps the marking made at next(out) as the successor by `t`: hashed, its table slot
+  /// fetched.
+  void keep(Successors& out, TransitionId t) const {
+    const std::uint64_t h = store_->hash(next(out));
+    out.t.push_back(t);
+    out.hashes.push_back(h);
+    store_->prefetch(h);
+  }
   /// Nets with more transitions, or whose firings each may change the enabling of more than
   /// kMostAffected transitions on average (a thousand transitions around shared places), find
   /// a state's candidates from its marked slots alone.
@@ -82,19 +92,20 @@ class Search {
   /// does not fit. False in `enabled` when `t` is not enabled.
   Expand fire(TransitionId t, const std::uint64_t* m, std::uint64_t* out, bool& enabled) {
     std::size_t field = 0;
-    const Fired f = firing_.fire(t, m, out, field);
-    enabled = f != Fired::NotEnabled;
-    return f != Fired::TooBig ? Expand::Ok : widened(field);
+    return expandOf(firing_.fire(t, m, out, field), field, enabled);
   }
   /// The same for a candidate (ready in `m`).
   Expand fireCandidate(TransitionId t, const std::uint64_t* m, std::uint64_t* out, bool& enabled) {
     std::size_t field = 0;
-    const Fired f = firing_.fireReady(t, m, out, field);
-    enabled = f != Fired::NotEnabled;
-    return f != Fired::TooBig ? Expand::Ok : widened(field);
+    return expandOf(firing_.fireReady(t, m, out, field), field, enabled);
   }
-  /// Widens field `k` that a count outgrew: Widened, or Overflow where it cannot.
-  Expand widened(std::size_t k) { return widen(k) ? Expand::Widened : Expand::Overflow; }
+  /// What a firing that gave `f` means for the search: TooBig widens `field` (Widened, or
+  /// Overflow where it cannot); `enabled` says whether the transition was.
+  Expand expandOf(Fired f, std::size_t field, bool& enabled) {
+    enabled = f != Fired::NotEnabled;
+    if (f != Fired::TooBig) return Expand::Ok;
+    return widen(field) ? Expand::Widened : Expand::Overflow;
+  }
   bool widen(std::size_t k);
   /// Karp-Miller acceleration of the packed marking `key` against the markings on the
   /// search path: true when some count became ω (`key` is then changed).
@@ -166,7 +177,7 @@ class Search {
   Candidates candidates_;
   Firing firing_;
   Affected affected_;
-  bool enabled_sets_ = false;  // at most kEnabledSetTransitions transitions
+  bool enabled_sets_ = false;  // affected_ was built: a state's enabled set from its parent's
   std::vector<bool> accel_;   // per place slot: may be accelerated to ω
   std::vector<std::size_t> accel_slots_;  // those place slots
   bool cover_ = false;        // some place slot has no structural bound
@@ -359,24 +370,23 @@ Search::Expand Search::successors(const std::uint64_t* m, Successors& out) {
     }
     return fireEnabled(m, out);
   }
-  const std::size_t words = store_->layout().words();
-  out.keys.resize(net_.transitions().size() * words);
-  out.hashes.clear();
-  out.t.clear();
-  out.peeked.clear();
+  reset(out);
   for (TransitionId t : candidates_now_) {
     bool enabled = false;
-    std::uint64_t* key = out.keys.data() + out.t.size() * words;
-    const Expand e = fireCandidate(t, m, key, enabled);
+    const Expand e = fireCandidate(t, m, next(out), enabled);
     if (e != Expand::Ok) return e;
-    if (!enabled) continue;
-    out.t.push_back(t);
-    const std::uint64_t h = store_->hash(key);
-    out.hashes.push_back(h);
-    store_->prefetch(h);
+    if (enabled) keep(out, t);
   }
   return Expand::Ok;
 }
+
+void Search::reset(Successors& out) const {
+  out.keys.resize(net_.transitions().size() * store_->layout().words());
+  out.hashes.clear();
+  out.t.clear();
+  out.peeked.clear();
+}
+
 
 Search::Expand Search::successorsAfter(const Successors& parent, std::size_t i, Successors& out) {
   const std::uint64_t* m = parent.keys.data() + i * store_->layout().words();
@@ -390,21 +400,15 @@ Search::Expand Search::successorsAfter(const Successors& parent, std::size_t i, 
 }
 
 Search::Expand Search::fireEnabled(const std::uint64_t* m, Successors& out) {
-  const std::size_t words = store_->layout().words();
-  out.keys.resize(net_.transitions().size() * words);
-  out.hashes.clear();
-  out.t.clear();
-  out.peeked.clear();
+  reset(out);
   for (std::size_t w = 0; w < out.enabled.size(); ++w) {
     for (std::uint64_t x = out.enabled[w]; x != 0; x &= x - 1) {
       const auto t = static_cast<TransitionId>(w * 64 + static_cast<std::size_t>(std::countr_zero(x)));
-      std::uint64_t* key = out.keys.data() + out.t.size() * words;
       std::size_t field = 0;
-      if (firing_.fireEnabled(t, m, key, field) == Fired::TooBig) return widened(field);
-      out.t.push_back(t);
-      const std::uint64_t h = store_->hash(key);
-      out.hashes.push_back(h);
-      store_->prefetch(h);
+      bool enabled = false;
+      const Expand e = expandOf(firing_.fireEnabled(t, m, next(out), field), field, enabled);
+      if (e != Expand::Ok) return e;
+      keep(out, t);
     }
   }
   return Expand::Ok;

@@ -186,8 +186,7 @@ void Kernel::update(PlaceSlotId ps) {
 // what a firing reads in stages, each from what the stage before brought into the cache: 24
 // items ahead the transition's state line, 16 ahead its terms, eight ahead the place slots
 // they name, two ahead the transition watching each slot first (the one a change of its
-// marking may enable). The first items have nothing ahead of them: at the first, each stage
-// runs over all of them at once, so that their misses overlap.
+// marking may enable).
 template <class Get>
 void Kernel::prefetchAhead(std::size_t i, std::size_t n, Get get) const {
   constexpr std::size_t kState = 24, kTerms = 16, kSlots = 8, kWatchers = 2;
@@ -198,12 +197,6 @@ void Kernel::prefetchAhead(std::size_t i, std::size_t n, Get get) const {
       if (st.watch_count > 0) __builtin_prefetch(&tr_[st.first.transition]);
     }
   };
-  if (i == 0) {
-    for (std::size_t j = 0; j < std::min(n, kState); ++j) __builtin_prefetch(&tr_[get(j)]);
-    for (std::size_t j = 0; j < std::min(n, kTerms); ++j) prefetchTerms(get(j));
-    for (std::size_t j = 0; j < std::min(n, kSlots); ++j) prefetchSlots(get(j));
-    for (std::size_t j = 0; j < std::min(n, kWatchers); ++j) watchers(j);
-  }
   if (i + kState < n) __builtin_prefetch(&tr_[get(i + kState)]);
   if (i + kTerms < n) prefetchTerms(get(i + kTerms));
   if (i + kSlots < n) prefetchSlots(get(i + kSlots));

@@ -150,19 +150,27 @@ class Parallel {
     return global(me, id);
   }
 
+  /// Runs `look(j)` for the `n` lookups j in a row, lookup j of hash `hash(j)` in the table
+  /// of `store(j)`: the table slot of one further ahead and the marking of one nearer ahead on
+  /// their way into the cache.
+  template <class StoreOf, class Hash, class Look>
+  static void lookUpInRow(std::size_t n, StoreOf store, Hash hash, Look look) {
+    constexpr std::size_t kSlotAhead = 16, kMarkingAhead = 8;
+    for (std::size_t j = 0; j < std::min(n, kSlotAhead); ++j) store(j).prefetch(hash(j));
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j + kSlotAhead < n) store(j + kSlotAhead).prefetch(hash(j + kSlotAhead));
+      if (j + kMarkingAhead < n) store(j + kMarkingAhead).peek(hash(j + kMarkingAhead));
+      look(j);
+    }
+  }
   /// Stores the `n` markings `key(j)`, of hashes `hash(j)`, in shard `me` (its own thread),
-  /// each id into `*slot(j)`: the lookups in a row, each with the table slot of one further
-  /// ahead and the marking of one nearer ahead on their way.
+  /// each id into `*slot(j)`, looked up in a row.
   template <class Key, class Hash, class Slot>
   void storeAll(unsigned me, std::size_t n, Key key, Hash hash, Slot slot) {
-    constexpr std::size_t kSlotAhead = 16, kMarkingAhead = 8;
-    const Store& store_of = *shards_[me].store;
-    for (std::size_t j = 0; j < std::min(n, kSlotAhead); ++j) store_of.prefetch(hash(j));
-    for (std::size_t j = 0; j < n; ++j) {
-      if (j + kSlotAhead < n) store_of.prefetch(hash(j + kSlotAhead));
-      if (j + kMarkingAhead < n) store_of.peek(hash(j + kMarkingAhead));
-      *slot(j) = store(me, key(j), hash(j));
-    }
+    const Store& mine = *shards_[me].store;
+    lookUpInRow(
+        n, [&](std::size_t) -> const Store& { return mine; }, hash,
+        [&](std::size_t j) { *slot(j) = store(me, key(j), hash(j)); });
   }
 
   void explore(unsigned me) {
@@ -308,6 +316,12 @@ class Parallel {
   }
   const std::uint64_t* marking(std::uint32_t g) const { return shardOf(g).store->at(localOf(g)); }
 
+  /// Frees the tables: what follows reads the markings by id and the graph, never looks a
+  /// marking up (the tables are a third of what the shards hold).
+  void dropTables() {
+    for (auto& s : shards_) s.store->dropIndex(), account(s);
+  }
+
   /// Liveness and reversibility, and a shortest path to a dead state when there is one.
   /// Where a state is dead, the net is neither live (unless it has no transition) nor
   /// reversible (unless the dead state is the only one); where every state leads back to the
@@ -315,12 +329,6 @@ class Parallel {
   /// not live where missesATransition() says so; failing that, the strongly connected
   /// components over the arrays decide (Pearce's variant of Tarjan's algorithm, as in the
   /// sequential search).
-  /// Frees the tables: what follows reads the markings by id and the graph, never looks a
-  /// marking up (the tables are a third of what the shards hold).
-  void dropTables() {
-    for (auto& s : shards_) s.store->dropIndex(), account(s);
-  }
-
   void components(StateSpace& out, std::uint64_t ids) {
     const std::size_t transitions = net_.transitions().size();
     const std::uint32_t s0 = global(start_, 0);
@@ -532,7 +540,7 @@ class Parallel {
     };
     std::vector<Next> next(threads_);
     const std::size_t words = layout_.words();
-    constexpr std::size_t kBlock = 256, kSlotAhead = 16, kMarkingAhead = 8;
+    constexpr std::size_t kBlock = 256;
     while (!level.empty()) {
       std::atomic<std::size_t> taken{0};
       // a level too small to share is one thread's (no threads started for it)
@@ -555,20 +563,18 @@ class Parallel {
               my.hashes.push_back(shards_[0].store->hash(my.keys.data() + at));
             }
           }
-          const std::size_t n = my.hashes.size();
           auto table = [&](std::size_t j) -> const Store& { return *shards_[owner(my.hashes[j])].store; };
-          for (std::size_t j = 0; j < std::min(n, kSlotAhead); ++j) table(j).prefetch(my.hashes[j]);
-          for (std::size_t j = 0; j < n; ++j) {
-            if (j + kSlotAhead < n) table(j + kSlotAhead).prefetch(my.hashes[j + kSlotAhead]);
-            if (j + kMarkingAhead < n) table(j + kMarkingAhead).peek(my.hashes[j + kMarkingAhead]);
-            const StateId local = table(j).find(my.keys.data() + j * words, my.hashes[j]);
-            if (local == kNone) continue;  // not reachable: no edge
-            const std::uint32_t g = global(owner(my.hashes[j]), local);
-            const std::uint64_t bit = std::uint64_t{1} << (g & 63);
-            Atomic64 word(reach[g >> 6]);
-            if ((word.load(std::memory_order_relaxed) & bit) != 0) continue;
-            if ((word.fetch_or(bit, std::memory_order_relaxed) & bit) == 0) my.states.push_back(g);
-          }
+          lookUpInRow(
+              my.hashes.size(), table, [&](std::size_t j) { return my.hashes[j]; },
+              [&](std::size_t j) {
+                const StateId local = table(j).find(my.keys.data() + j * words, my.hashes[j]);
+                if (local == kNone) return;  // not reachable: no edge
+                const std::uint32_t g = global(owner(my.hashes[j]), local);
+                const std::uint64_t bit = std::uint64_t{1} << (g & 63);
+                Atomic64 word(reach[g >> 6]);
+                if ((word.load(std::memory_order_relaxed) & bit) != 0) return;
+                if ((word.fetch_or(bit, std::memory_order_relaxed) & bit) == 0) my.states.push_back(g);
+              });
         }
       });
       level.clear();

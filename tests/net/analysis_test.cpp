@@ -431,18 +431,27 @@ TEST(Analysis, TheTokensOfAMarkingLeaveOutItsOmegaPlaces) {
   EXPECT_TRUE(space.deadlock);  // c10
 }
 
-TEST(Analysis, AProducerWithoutConsumerIsUnboundedOnlyWhereItProduces) {
-  // the classic unbounded producer: p0 -> produce -> p0 + buffer; consume takes buffer and
-  // a free token: the buffer is unbounded, the free place is not
-  NetBuilder b;
+/// The classic unbounded producer added to `b`: p0 (one token) -> produce -> p0 + buffer.
+struct Producer {
+  PlaceId p0, buffer;
+};
+Producer addProducer(NetBuilder& b) {
   const auto p0 = b.addPlace("p0");
   const auto buffer = b.addPlace("buffer");
-  const auto done = b.addPlace("done");
   b.setSlot(p0, kDefaultSlot, SlotKind::Control, kUnbounded, 1);
   const auto produce = b.addTransition("produce");
   b.addInput(p0, produce);
   b.addOutput(produce, p0);
   b.addOutput(produce, buffer);
+  return {p0, buffer};
+}
+
+TEST(Analysis, AProducerWithoutConsumerIsUnboundedOnlyWhereItProduces) {
+  // the classic unbounded producer; consume takes buffer and a free token: the buffer is
+  // unbounded, the free place is not
+  NetBuilder b;
+  const auto [p0, buffer] = addProducer(b);
+  const auto done = b.addPlace("done");
   const auto consume = b.addTransition("consume");
   b.addInput(buffer, consume);
   b.addOutput(consume, done);
@@ -485,13 +494,7 @@ TEST(Analysis, TwoThreadsRaceACoverabilitySearchWithAPlainOneAndGiveTheOneThread
   // the classic producer: the plain search never ends; the coverability search does, and
   // the plain one stops
   NetBuilder u;
-  const auto p0 = u.addPlace("p0");
-  const auto buffer = u.addPlace("buffer");
-  u.setSlot(p0, kDefaultSlot, SlotKind::Control, kUnbounded, 1);
-  const auto produce = u.addTransition("produce");
-  u.addInput(p0, produce);
-  u.addOutput(produce, p0);
-  u.addOutput(produce, buffer);
+  const PlaceId buffer = addProducer(u).buffer;
   const auto unbounded = u.freeze();
   const StateSpace cover = exploreWith(*unbounded, 1), raced = exploreWith(*unbounded, 2);
   ASSERT_TRUE(raced.complete);

@@ -92,7 +92,8 @@ void Firing::use(const Layout& layout) {
   spans_[transitions] = here();
 }
 
-Affected::Affected(const Net& net) {
+Affected::Affected(const Net& net, std::size_t most) {
+  if (most == 0) return;
   const std::size_t transitions = net.transitions().size();
   // per place slot: the transitions whose enabling reads its count
   std::vector<std::vector<TransitionId>> readers(net.placeSlots().size());
@@ -123,6 +124,12 @@ Affected::Affected(const Net& net) {
     }
     for (const Term& term : net.termsOf(t)) delta[term.place_slot] = 0;
     for (auto i = begin_[t]; i < list_.size(); ++i) in[list_[i]] = false;
+    if (list_.size() > most) {
+      // firings that each touch many transitions (around shared places): not worth it
+      std::vector<std::uint32_t>().swap(begin_);
+      std::vector<TransitionId>().swap(list_);
+      return;
+    }
   }
   begin_[transitions] = static_cast<std::uint32_t>(list_.size());
 }

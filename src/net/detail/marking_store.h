@@ -465,13 +465,15 @@ class Firing {
 /// again, not all of them.
 class Affected {
  public:
-  explicit Affected(const Net& net);
+  /// Builds the lists unless they would hold more than `most` entries in all (then none is
+  /// kept, and nothing is built where `most` is 0).
+  Affected(const Net& net, std::size_t most);
+  /// The lists were built.
+  bool built() const { return !begin_.empty(); }
   /// The transitions firing `t` may enable or disable.
   std::span<const TransitionId> of(TransitionId t) const {
     return {list_.data() + begin_[t], list_.data() + begin_[t + 1]};
   }
-  /// The lists' lengths summed over the transitions.
-  std::size_t total() const { return list_.size(); }
 
  private:
   std::vector<std::uint32_t> begin_;  // per transition, then one past the last
