@@ -342,7 +342,6 @@ class Parallel {
     // the common case first: the initial state reached from every state, one component
     std::vector<std::uint64_t> reach;
     const std::uint64_t reaching = reachingStart(ids, s0, out.states, reach);
-    dropTables();
     if (reaching == out.states) {
       out.reversible = true;
       out.live = std::all_of(out.fired.begin(), out.fired.end(), [](bool f) { return f; });
@@ -496,10 +495,12 @@ class Parallel {
   /// sweeps over the runs in the order they were written, each marking a state one of whose
   /// successors is marked: a search from the start tends to write a state after those on its
   /// way back, so that a few sweeps mark them all. Where a sweep marks less than a hundredth
-  /// of the states left, breadth first backward from the states marked: a state's
-  /// predecessors are made by undoing the transitions that may have led to it and looked up
-  /// in the tables (no edge is reversed, nothing more is held), the threads sharing each large
-  /// level.
+  /// of the states left, breadth first backward from the states marked: first over
+  /// predecessors made by undoing the transitions that may have led to each state, looked up
+  /// in the tables (what it costs grows with the states reached, nothing more is held); once
+  /// a sixteenth of the states are marked, over the edges reversed (4 bytes an edge and a
+  /// state for the time it takes, about half the misses), unless they would pass
+  /// ExploreOptions::max_bytes. Drops the tables either way.
   std::uint64_t reachingStart(std::uint64_t ids, std::uint32_t s0, std::uint64_t states, std::vector<std::uint64_t>& reach) {
     reach.assign((ids + 63) / 64, 0);
     auto isMarked = [&](std::uint32_t g) { return isSet(reach, g); };
@@ -518,63 +519,123 @@ class Parallel {
           }
         }
       });
-      if (marked == before) return marked;
+      if (marked == before) {
+        dropTables();
+        return marked;
+      }
       if ((marked - before) * 100 < states - before) break;
     }
-    // breadth first from the states marked, backward, a level at a time: a state's
-    // predecessors are made by undoing the transitions that may have led to it, each looked
-    // up in its owner's table (the tables only read now), the slot and then the marking of
-    // the lookups ahead on their way. The threads take a large level's states in blocks and
-    // mark what they find with an atomic or, each keeping those it was first to mark
-    using Atomic64 = std::atomic_ref<std::uint64_t>;
     std::vector<std::uint32_t> level;
     level.reserve(marked);
     forEachRun([&](std::uint32_t v, const std::uint32_t*, const std::uint32_t*) {
       if (isMarked(v)) level.push_back(v);
     });
-    struct alignas(64) Next {
-      std::vector<std::uint32_t> states;  // a thread's share of the next level
-      std::vector<std::uint64_t> keys;    // the predecessors of its block, to look up
-      std::vector<std::uint64_t> hashes;
-      std::vector<TransitionId> candidates;
-    };
-    std::vector<Next> next(threads_);
-    const std::size_t words = layout_.words();
+    // (a net that is not reversible often stops before the edges are reversed, which would
+    // cost what the whole graph holds: Peterson-PT-3 reaches its start from 1,782 of 3.4 M)
+    std::uint64_t edges = 0, tables = 0;
+    for (const Shard& s : shards_) edges += s.edges.load(), tables += s.store->tableBytes();
+    const std::uint64_t reversed = (edges + states + 2 * threads_) * sizeof(std::uint32_t);
+    const bool reverses = options_.max_bytes == 0 || bytes() - tables + reversed <= options_.max_bytes;
+    marked += backward(level, reach, reverses ? states / 16 : states, [&](Next& my, std::size_t begin, std::size_t end, auto reached) {
+      lookUpPredecessors(my, level, begin, end, reached);
+    });
+    dropTables();
+    if (level.empty()) return marked;
+    const std::vector<Into> into = reverse(reach);
+    std::uint64_t held = 0;
+    for (const Into& in : into) held += (in.at.capacity() + in.from.capacity()) * sizeof(std::uint32_t);
+    peak_ = std::max(peak_, bytes() + held + reach.size() * 8 + 2 * level.capacity() * sizeof(std::uint32_t));
+    const std::uint32_t mask = (1u << shard_bits_) - 1;
+    marked += backward(level, reach, states, [&](Next&, std::size_t begin, std::size_t end, auto reached) {
+      // the predecessor runs of the states ahead on their way into the cache
+      constexpr std::size_t kAhead = 8;
+      auto run = [&](std::uint32_t g) { return &into[g & mask].at[g >> shard_bits_]; };
+      for (std::size_t i = begin; i < end; ++i) {
+        if (i + 2 * kAhead < end) __builtin_prefetch(run(level[i + 2 * kAhead]));
+        if (i + kAhead < end) __builtin_prefetch(into[level[i + kAhead] & mask].from.data() + *run(level[i + kAhead]));
+        const std::uint32_t w = level[i];
+        const std::uint32_t* from = into[w & mask].from.data();
+        for (std::uint32_t k = run(w)[0]; k < run(w)[1]; ++k) reached(from[k]);
+      }
+    });
+    return marked;
+  }
+
+  /// The edges into the states of one shard: local state i's predecessors (global ids) are
+  /// from[at[i], at[i + 1]) (from's last element is scratch).
+  struct Into {
+    std::vector<std::uint32_t> at;
+    std::vector<std::uint32_t> from;
+  };
+  /// The edges reversed, leaving out those from states set in `skip` (each thread those into
+  /// its own shard's states: counted, then placed, in a pass each over all runs; no atomics).
+  std::vector<Into> reverse(const std::vector<std::uint64_t>& skip) const {
+    std::vector<Into> into(threads_);
+    const std::uint32_t mask = (1u << shard_bits_) - 1;
+    onThreads([&](unsigned me) {
+      Into& in = into[me];
+      const std::size_t n = shards_[me].store->size();
+      // counts at [i + 2], summed into where each run ends, then placed, each run's start
+      // moving up to its end: [i + 1] ends local state i's run and starts the next. The
+      // others' edges go to a sink, not round a branch (a coin toss): the count at [0], the
+      // place at from's element past the runs
+      const unsigned bits = shard_bits_;
+      in.at.assign(n + 2, 0);
+      std::uint32_t* at = in.at.data();
+      forEachRun([&](std::uint32_t v, const std::uint32_t* begin, const std::uint32_t* end) {
+        if (isSet(skip, v)) return;
+        for (const std::uint32_t* e = begin; e != end; ++e) ++at[(*e & mask) == me ? (*e >> bits) + 2 : 0];
+      });
+      at[0] = 0;
+      for (std::size_t i = 2; i < n + 2; ++i) at[i] += at[i - 1];
+      in.from.resize(at[n + 1] + std::size_t{1});
+      std::uint32_t* from = in.from.data();
+      forEachRun([&](std::uint32_t v, const std::uint32_t* begin, const std::uint32_t* end) {
+        if (isSet(skip, v)) return;
+        for (const std::uint32_t* e = begin; e != end; ++e) {
+          const bool mine = (*e & mask) == me;
+          std::uint32_t& place = at[mine ? (*e >> bits) + 1 : n + 1];
+          from[place] = v;
+          place += mine ? 1u : 0u;
+        }
+      });
+    });
+    return into;
+  }
+
+  /// A thread's share of one level of the backward search, and its scratch.
+  struct alignas(64) Next {
+    std::vector<std::uint32_t> states;  // the states of the next level it marked first
+    std::vector<std::uint64_t> keys;    // the predecessors of its block, to look up
+    std::vector<std::uint64_t> hashes;
+    std::vector<TransitionId> candidates;
+  };
+  /// Marks in `reach`, breadth first and a level at a time, states with a path to one in
+  /// `level` (marked already), until none is left or, after a level, more than `until` are
+  /// marked; `level` is then the next level. `block(my, begin, end, reached)` calls
+  /// `reached(g)` for predecessors g of the states level[begin, end), at least each one not
+  /// marked yet. The threads take a large level's states in blocks and mark what they find
+  /// with an atomic or, each keeping those it was first to mark; a level too small to share is
+  /// one thread's (no threads started for it). Returns the states it marked.
+  template <class Block>
+  std::uint64_t backward(std::vector<std::uint32_t>& level, std::vector<std::uint64_t>& reach, std::uint64_t until, Block block) {
+    using Atomic64 = std::atomic_ref<std::uint64_t>;
     constexpr std::size_t kBlock = 256;
-    while (!level.empty()) {
+    std::vector<Next> next(threads_);
+    std::uint64_t marked = 0;
+    while (!level.empty() && marked <= until) {
       std::atomic<std::size_t> taken{0};
-      // a level too small to share is one thread's (no threads started for it)
       auto share = [&](auto&& f) { level.size() < threads_ * kBlock ? f(0u) : onThreads(f); };
       share([&](unsigned me) {
         Next& my = next[me];
+        auto reached = [&](std::uint32_t g) {
+          const std::uint64_t bit = std::uint64_t{1} << (g & 63);
+          Atomic64 word(reach[g >> 6]);
+          if ((word.load(std::memory_order_relaxed) & bit) != 0) return;
+          if ((word.fetch_or(bit, std::memory_order_relaxed) & bit) == 0) my.states.push_back(g);
+        };
         for (std::size_t begin; (begin = taken.fetch_add(kBlock, std::memory_order_relaxed)) < level.size();) {
-          my.keys.clear();
-          my.hashes.clear();
-          for (std::size_t i = begin; i < std::min(level.size(), begin + kBlock); ++i) {
-            const std::uint64_t* m = marking(level[i]);
-            back_.findBackward(m, my.candidates);
-            for (const TransitionId t : my.candidates) {
-              const std::size_t at = my.keys.size();
-              my.keys.resize(at + words);
-              if (!firing_.unfire(t, m, my.keys.data() + at) || !firing_.enabled(t, my.keys.data() + at)) {
-                my.keys.resize(at);
-                continue;
-              }
-              my.hashes.push_back(shards_[0].store->hash(my.keys.data() + at));
-            }
-          }
-          auto table = [&](std::size_t j) -> const Store& { return *shards_[owner(my.hashes[j])].store; };
-          lookUpInRow(
-              my.hashes.size(), table, [&](std::size_t j) { return my.hashes[j]; },
-              [&](std::size_t j) {
-                const StateId local = table(j).find(my.keys.data() + j * words, my.hashes[j]);
-                if (local == kNone) return;  // not reachable: no edge
-                const std::uint32_t g = global(owner(my.hashes[j]), local);
-                const std::uint64_t bit = std::uint64_t{1} << (g & 63);
-                Atomic64 word(reach[g >> 6]);
-                if ((word.load(std::memory_order_relaxed) & bit) != 0) return;
-                if ((word.fetch_or(bit, std::memory_order_relaxed) & bit) == 0) my.states.push_back(g);
-              });
+          block(my, begin, std::min(level.size(), begin + kBlock), reached);
         }
       });
       level.clear();
@@ -585,6 +646,37 @@ class Parallel {
       }
     }
     return marked;
+  }
+
+  /// Calls `reached(g)` for each predecessor g of the states level[begin, end): made by
+  /// undoing the transitions that may have led to each, and looked up in its owner's table
+  /// (the tables only read now), the slot and then the marking of the lookups ahead on their
+  /// way.
+  template <class Reached>
+  void lookUpPredecessors(Next& my, const std::vector<std::uint32_t>& level, std::size_t begin, std::size_t end, Reached reached) const {
+    const std::size_t words = layout_.words();
+    my.keys.clear();
+    my.hashes.clear();
+    for (std::size_t i = begin; i < end; ++i) {
+      const std::uint64_t* m = marking(level[i]);
+      back_.findBackward(m, my.candidates);
+      for (const TransitionId t : my.candidates) {
+        const std::size_t at = my.keys.size();
+        my.keys.resize(at + words);
+        if (!firing_.unfire(t, m, my.keys.data() + at) || !firing_.enabled(t, my.keys.data() + at)) {
+          my.keys.resize(at);
+          continue;
+        }
+        my.hashes.push_back(shards_[0].store->hash(my.keys.data() + at));
+      }
+    }
+    auto table = [&](std::size_t j) -> const Store& { return *shards_[owner(my.hashes[j])].store; };
+    lookUpInRow(
+        my.hashes.size(), table, [&](std::size_t j) { return my.hashes[j]; },
+        [&](std::size_t j) {
+          const StateId local = table(j).find(my.keys.data() + j * words, my.hashes[j]);
+          if (local != kNone) reached(global(owner(my.hashes[j]), local));  // else not reachable: no edge
+        });
   }
 
   /// A shortest firing sequence from `s0` to a dead state: breadth first over the arrays.

@@ -546,10 +546,10 @@ TEST(Analysis, FiringsThatMoveTokensBetweenFieldsOfOnePackedWordKeepEveryCount) 
 TEST(Analysis, ThreadsDecideReversibilityOnALongRingWithAndWithoutAWayOut) {
   // a token goes round a ring of 300 places; the way back to the start is 299 firings long,
   // so that the threads' sweeps over their arrays make little headway and they search
-  // backwards over the edges reversed. With a way out of the ring into a cycle of two places
-  // (never back), the net is neither reversible nor live: the states past the way out, which
-  // cannot reach the start, never enable a ring transition; without it, every marking is on
-  // the ring: reversible and live.
+  // backwards (predecessors looked up, then over the edges reversed). With a way out of the
+  // ring into a cycle of two places (never back), the net is neither reversible nor live:
+  // the states past the way out, which cannot reach the start, never enable a ring
+  // transition; without it, every marking is on the ring: reversible and live.
   for (const bool way_out : {false, true}) {
     NetBuilder b;
     constexpr int kRing = 300;
@@ -593,26 +593,33 @@ TEST(Analysis, ThreadsDecideReversibilityOnALongRingWithAndWithoutAWayOut) {
   }
 }
 
-TEST(Analysis, ThreadsShareTheWayBackOverLevelsOfThousandsOfStates) {
-  // a token on each of three rings of 60 places: 60^3 markings, every one on the way back to
-  // the start (reversible and live). The ways back are long, so the threads go breadth first
-  // over the edges reversed, and the levels far from the start hold up to about 2,700
-  // markings each, which they share.
-  constexpr int kRing = 60, kRings = 3;
+/// `rings` rings of `places` places each, a token on each ring's first place: places^rings
+/// markings, every one on the way back to the start, each with `rings` successors.
+std::shared_ptr<const Net> tokenRings(int rings, int places) {
   NetBuilder b;
-  for (int r = 0; r < kRings; ++r) {
+  for (int r = 0; r < rings; ++r) {
     std::vector<PlaceId> ring;
-    for (int i = 0; i < kRing; ++i) {
+    for (int i = 0; i < places; ++i) {
       ring.push_back(b.addPlace("r" + std::to_string(r) + "_" + std::to_string(i)));
       b.setSlot(ring.back(), kDefaultSlot, SlotKind::Control, kUnbounded, i == 0 ? 1 : 0);
     }
-    for (int i = 0; i < kRing; ++i) {
+    for (int i = 0; i < places; ++i) {
       const auto t = b.addTransition("t" + std::to_string(r) + "_" + std::to_string(i));
       b.addInput(ring[static_cast<std::size_t>(i)], t);
-      b.addOutput(t, ring[static_cast<std::size_t>((i + 1) % kRing)]);
+      b.addOutput(t, ring[static_cast<std::size_t>((i + 1) % places)]);
     }
   }
-  const auto net = b.freeze();
+  return b.freeze();
+}
+
+TEST(Analysis, ThreadsShareTheWayBackOverLevelsOfThousandsOfStates) {
+  // a token on each of three rings of 60 places: 60^3 markings, every one on the way back to
+  // the start (reversible and live). The ways back are long, so the threads go breadth first
+  // backward, looking predecessors up and past a sixteenth of the states over the edges
+  // reversed; the levels far from the start hold up to about 2,700 markings each, which they
+  // share.
+  constexpr int kRing = 60, kRings = 3;
+  const auto net = tokenRings(kRings, kRing);
   for (const unsigned threads : {1u, 2u, 3u}) {
     const auto s = exploreWith(*net, threads);
     EXPECT_EQ(s.states, 216'000u) << threads;
@@ -620,6 +627,34 @@ TEST(Analysis, ThreadsShareTheWayBackOverLevelsOfThousandsOfStates) {
     EXPECT_TRUE(s.reversible) << threads;
     EXPECT_TRUE(s.live) << threads;
   }
+}
+
+TEST(Analysis, UnderAMemoryLimitThreadsFindTheWayBackWithoutReversingTheEdges) {
+  // a token on each of four rings of 24 places: 24^4 markings, four edges each, every one on
+  // a long way back to the start. Reversed, the edges take more than the tables they replace;
+  // under a limit the search fits in but they do not, the way back is searched by looking
+  // predecessors up, the same answers within the limit
+  constexpr int kRing = 24, kRings = 4;
+  const auto net = tokenRings(kRings, kRing);
+  ExploreOptions options;
+  options.threads = 2;
+  std::uint64_t searching = 0;  // the most the search held, as its progress says
+  options.progress = [&](const ExploreProgress& p) { searching = std::max(searching, p.bytes); };
+  const StateSpace reversing = explore(*net, options);
+  ASSERT_TRUE(reversing.complete);
+  EXPECT_EQ(reversing.states, 331'776u);
+  EXPECT_TRUE(reversing.reversible);
+  // halfway between the search's peak and the peak with the edges reversed
+  ASSERT_GT(reversing.peak_bytes, searching + (std::uint64_t{1} << 20));
+  options.max_bytes = (searching + reversing.peak_bytes) / 2;
+  options.progress = nullptr;
+  const StateSpace looking = explore(*net, options);
+  ASSERT_TRUE(looking.complete);
+  EXPECT_EQ(looking.states, reversing.states);
+  EXPECT_EQ(looking.edges, reversing.edges);
+  EXPECT_TRUE(looking.reversible);
+  EXPECT_TRUE(looking.live);
+  EXPECT_LE(looking.peak_bytes, options.max_bytes);
 }
 
 TEST(Analysis, ThreadsFindANetLiveThatIsNotReversible) {

@@ -204,7 +204,9 @@ class Store {
   /// The word kept beside state `s`'s marking (Store made with `extra`).
   std::uint64_t& extra(StateId s) { return arena_.at(s)[layout_.words()]; }
   std::uint64_t extra(StateId s) const { return arena_.at(s)[layout_.words()]; }
-  std::size_t bytes() const { return arena_.bytes() + table_.size() * sizeof(std::uint64_t); }
+  std::size_t bytes() const { return arena_.bytes() + tableBytes(); }
+  /// What the table alone holds (dropIndex() frees it).
+  std::size_t tableBytes() const { return table_.size() * sizeof(std::uint64_t); }
 
   std::uint64_t hash(const std::uint64_t* m) const {
     std::uint64_t h = 0x243f6a8885a308d3ULL;
