@@ -14,6 +14,7 @@
 // into the cache, so that many misses are in flight rather than one state's worth.
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <bit>
 #include <mutex>
@@ -52,7 +53,13 @@ struct Shard {
   // the next run is filled with kPad
   Chunked<std::uint64_t, 18> first;
   Succ succ;
+  // edges into each block of kInBlock states (local ids), counted as they are stored, for
+  // the edges reversed (the start's own record counted too)
+  std::vector<std::uint32_t> into_blocks;
 };
+
+/// States (local ids) in one block of the edges reversed: a byte names one in its block.
+constexpr unsigned kInBlockBits = 8;
 
 class Parallel {
  public:
@@ -141,6 +148,8 @@ class Parallel {
     Shard& s = shards_[me];
     bool added = false;
     const StateId id = s.store->insert(key, h, added);
+    if (added && (id & ((1u << kInBlockBits) - 1)) == 0) s.into_blocks.push_back(0);
+    ++s.into_blocks[id >> kInBlockBits];
     if (added) {
       s.seen->note(layout_, s.store->at(id));
       s.work.push_back(id);
@@ -498,8 +507,8 @@ class Parallel {
   /// of the states left, breadth first backward from the states marked: first over
   /// predecessors made by undoing the transitions that may have led to each state, looked up
   /// in the tables (what it costs grows with the states reached, nothing more is held); once
-  /// a sixteenth of the states are marked, over the edges reversed (4 bytes an edge and a
-  /// state for the time it takes, about half the misses), unless they would pass
+  /// a sixteenth of the states are marked, over the edges reversed (5 bytes an edge and 4 a
+  /// state for the time it takes, far fewer misses), unless they would pass
   /// ExploreOptions::max_bytes. Drops the tables either way.
   std::uint64_t reachingStart(std::uint64_t ids, std::uint32_t s0, std::uint64_t states, std::vector<std::uint64_t>& reach) {
     reach.assign((ids + 63) / 64, 0);
@@ -534,16 +543,17 @@ class Parallel {
     // cost what the whole graph holds: Peterson-PT-3 reaches its start from 1,782 of 3.4 M)
     std::uint64_t edges = 0, tables = 0;
     for (const Shard& s : shards_) edges += s.edges.load(), tables += s.store->tableBytes();
-    const std::uint64_t reversed = (edges + states + 2 * threads_) * sizeof(std::uint32_t);
+    // what reverse() holds at most: 4 bytes an edge and a state, and a byte an edge while it runs
+    const std::uint64_t reversed = (edges + states + 2 * threads_) * sizeof(std::uint32_t) + edges;
     const bool reverses = options_.max_bytes == 0 || bytes() - tables + reversed <= options_.max_bytes;
     marked += backward(level, reach, reverses ? states / 16 : states, [&](Next& my, std::size_t begin, std::size_t end, auto reached) {
       lookUpPredecessors(my, level, begin, end, reached);
     });
     dropTables();
     if (level.empty()) return marked;
-    const std::vector<Into> into = reverse(reach);
-    std::uint64_t held = 0;
-    for (const Into& in : into) held += (in.at.capacity() + in.from.capacity()) * sizeof(std::uint32_t);
+    const std::vector<Into> into = reverse();
+    std::uint64_t held = 0;  // and a byte an edge while reversing
+    for (const Into& in : into) held += (in.at.capacity() + in.from.capacity()) * sizeof(std::uint32_t) + in.from.size();
     peak_ = std::max(peak_, bytes() + held + reach.size() * 8 + 2 * level.capacity() * sizeof(std::uint32_t));
     const std::uint32_t mask = (1u << shard_bits_) - 1;
     marked += backward(level, reach, states, [&](Next&, std::size_t begin, std::size_t end, auto reached) {
@@ -562,43 +572,57 @@ class Parallel {
   }
 
   /// The edges into the states of one shard: local state i's predecessors (global ids) are
-  /// from[at[i], at[i + 1]) (from's last element is scratch).
+  /// from[at[i], at[i + 1]).
   struct Into {
     std::vector<std::uint32_t> at;
     std::vector<std::uint32_t> from;
   };
-  /// The edges reversed, leaving out those from states set in `skip` (each thread those into
-  /// its own shard's states: counted, then placed, in a pass each over all runs; no atomics).
-  std::vector<Into> reverse(const std::vector<std::uint64_t>& skip) const {
+  /// The edges reversed: each thread those into its own shard's states, no atomics. A pass
+  /// over all runs puts each edge in its block of 256 states (its share of the block counted
+  /// as the search stored it), with a byte that names its state there: a few lines a block in
+  /// the cache, where putting each edge in its place at once would miss for nearly every
+  /// edge. Then each block is sorted by its states, in the cache. The other shard's edges go
+  /// to a sink, not round a branch (a coin toss). Holds a byte an edge more while it runs.
+  std::vector<Into> reverse() const {
     std::vector<Into> into(threads_);
     const std::uint32_t mask = (1u << shard_bits_) - 1;
     onThreads([&](unsigned me) {
       Into& in = into[me];
-      const std::size_t n = shards_[me].store->size();
-      // counts at [i + 2], summed into where each run ends, then placed, each run's start
-      // moving up to its end: [i + 1] ends local state i's run and starts the next. The
-      // others' edges go to a sink, not round a branch (a coin toss): the count at [0], the
-      // place at from's element past the runs
       const unsigned bits = shard_bits_;
-      in.at.assign(n + 2, 0);
-      std::uint32_t* at = in.at.data();
-      forEachRun([&](std::uint32_t v, const std::uint32_t* begin, const std::uint32_t* end) {
-        if (isSet(skip, v)) return;
-        for (const std::uint32_t* e = begin; e != end; ++e) ++at[(*e & mask) == me ? (*e >> bits) + 2 : 0];
-      });
-      at[0] = 0;
-      for (std::size_t i = 2; i < n + 2; ++i) at[i] += at[i - 1];
-      in.from.resize(at[n + 1] + std::size_t{1});
+      const std::size_t n = shards_[me].store->size();
+      const std::vector<std::uint32_t>& counts = shards_[me].into_blocks;
+      const std::size_t blocks = counts.size(), sink = blocks;
+      // where each block starts (the start's own record was no edge)
+      std::vector<std::uint32_t> start(blocks + 1, 0);
+      for (std::size_t b = 0; b < blocks; ++b) start[b + 1] = start[b] + counts[b] - (me == start_ && b == 0 ? 1u : 0u);
+      const std::uint32_t total = start[blocks];
+      in.from.resize(std::size_t{total} + 1);  // the last one the sink's
+      std::vector<std::uint8_t> low(std::size_t{total} + 1);
+      std::vector<std::uint32_t> put(start.begin(), start.end());
       std::uint32_t* from = in.from.data();
       forEachRun([&](std::uint32_t v, const std::uint32_t* begin, const std::uint32_t* end) {
-        if (isSet(skip, v)) return;
         for (const std::uint32_t* e = begin; e != end; ++e) {
           const bool mine = (*e & mask) == me;
-          std::uint32_t& place = at[mine ? (*e >> bits) + 1 : n + 1];
-          from[place] = v;
-          place += mine ? 1u : 0u;
+          const std::uint32_t local = *e >> bits;
+          std::uint32_t& p = put[mine ? local >> kInBlockBits : sink];
+          from[p] = v;
+          low[p] = static_cast<std::uint8_t>(local);
+          p += mine ? 1u : 0u;
         }
       });
+      in.from.pop_back();
+      in.at.assign(n + 1, total);
+      std::vector<std::uint32_t> sorted;
+      for (std::size_t b = 0; b < blocks; ++b) {
+        const std::uint32_t b0 = start[b], b1 = start[b + 1];
+        std::array<std::uint32_t, 257> at{};
+        for (std::uint32_t k = b0; k < b1; ++k) ++at[low[k] + 1u];
+        for (std::size_t i = 1; i < at.size(); ++i) at[i] += at[i - 1];
+        for (std::size_t i = 0; i < 256 && (b << kInBlockBits) + i < n; ++i) in.at[(b << kInBlockBits) + i] = b0 + at[i];
+        sorted.resize(b1 - b0);
+        for (std::uint32_t k = b0; k < b1; ++k) sorted[at[low[k]]++] = from[k];
+        std::copy(sorted.begin(), sorted.end(), from + b0);
+      }
     });
     return into;
   }
