@@ -545,7 +545,8 @@ class Parallel {
     for (const Shard& s : shards_) edges += s.edges.load(), tables += s.store->tableBytes();
     // what reverse() holds at most: 4 bytes an edge and a state, and a byte an edge while it runs
     const std::uint64_t reversed = (edges + states + 2 * threads_) * sizeof(std::uint32_t) + edges;
-    const bool reverses = options_.max_bytes == 0 || bytes() - tables + reversed <= options_.max_bytes;
+    // (their positions are 32 bits: a graph of 2^32 edges or more is searched by lookups)
+    const bool reverses = edges < 0xffffffffu && (options_.max_bytes == 0 || bytes() - tables + reversed <= options_.max_bytes);
     marked += backward(level, reach, reverses ? states / 16 : states, [&](Next& my, std::size_t begin, std::size_t end, auto reached) {
       lookUpPredecessors(my, level, begin, end, reached);
     });
