@@ -552,12 +552,23 @@ class Parallel {
     });
     dropTables();
     if (level.empty()) return marked;
+    // nothing here reads a state's run by its id: where the runs start is made again after,
+    // if anything does, and not held beside the edges reversed
+    dropRunStarts();
+    marked += overReversedEdges(level, reach, states);
+    if (marked < states) findRunStarts();
+    return marked;
+  }
+
+  /// The rest of reachingStart(): breadth first from `level` over the edges reversed; the
+  /// states it marks.
+  std::uint64_t overReversedEdges(std::vector<std::uint32_t>& level, std::vector<std::uint64_t>& reach, std::uint64_t states) {
     const std::vector<Into> into = reverse();
     std::uint64_t held = 0;  // and a byte an edge while reversing
     for (const Into& in : into) held += (in.at.capacity() + in.from.capacity()) * sizeof(std::uint32_t) + in.from.size();
     peak_ = std::max(peak_, bytes() + held + reach.size() * 8 + 2 * level.capacity() * sizeof(std::uint32_t));
     const std::uint32_t mask = (1u << shard_bits_) - 1;
-    marked += backward(level, reach, states, [&](Next&, std::size_t begin, std::size_t end, auto reached) {
+    return backward(level, reach, states, [&](Next&, std::size_t begin, std::size_t end, auto reached) {
       // the predecessor runs of the states ahead on their way into the cache
       constexpr std::size_t kAhead = 8;
       auto run = [&](std::uint32_t g) { return &into[g & mask].at[g >> shard_bits_]; };
@@ -569,7 +580,24 @@ class Parallel {
         for (std::uint32_t k = run(w)[0]; k < run(w)[1]; ++k) reached(from[k]);
       }
     });
-    return marked;
+  }
+
+  /// Frees where each state's run starts (Shard::first).
+  void dropRunStarts() {
+    for (auto& s : shards_) s.first.clear(), account(s);
+  }
+  /// Makes again where each state's run starts, from the runs in the order they were written.
+  void findRunStarts() {
+    for (auto& s : shards_) {
+      s.first.clear();
+      for (std::size_t i = 0; i < s.store->size(); ++i) s.first.push(0);
+      const std::size_t chunks = (s.succ.size() + Succ::chunkElements() - 1) / Succ::chunkElements();
+      for (std::size_t c = 0; c < chunks; ++c) {
+        const auto [data, size] = s.succ.chunk(c);
+        for (std::size_t i = 0; i < size && data[i] != kPad; i += 2 + data[i]) s.first[localOf(data[i + 1])] = c * Succ::chunkElements() + i;
+      }
+      account(s);
+    }
   }
 
   /// The edges into the states of one shard: local state i's predecessors (global ids) are
