@@ -543,11 +543,13 @@ class Parallel {
     // cost what the whole graph holds: Peterson-PT-3 reaches its start from 1,782 of 3.4 M)
     std::uint64_t edges = 0, tables = 0;
     for (const Shard& s : shards_) edges += s.edges.load(), tables += s.store->tableBytes();
-    // what reverse() holds at most: 4 bytes an edge and a state, and a byte an edge while it runs
+    // what reverse() holds: 4 bytes an edge and a state, and a byte an edge while it runs (at
+    // most: where the runs start, counted in bytes(), is dropped first)
     const std::uint64_t reversed = (edges + states + 2 * threads_) * sizeof(std::uint32_t) + edges;
     // (their positions are 32 bits: a graph of 2^32 edges or more is searched by lookups)
     const bool reverses = edges < 0xffffffffu && (options_.max_bytes == 0 || bytes() - tables + reversed <= options_.max_bytes);
-    marked += backward(level, reach, reverses ? states / 16 : states, [&](Next& my, std::size_t begin, std::size_t end, auto reached) {
+    const std::uint64_t sixteenth = states / 16 > marked ? states / 16 - marked : 0;
+    marked += backward(level, reach, reverses ? sixteenth : states, [&](Next& my, std::size_t begin, std::size_t end, auto reached) {
       lookUpPredecessors(my, level, begin, end, reached);
     });
     dropTables();

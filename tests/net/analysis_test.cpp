@@ -594,8 +594,9 @@ TEST(Analysis, ThreadsDecideReversibilityOnALongRingWithAndWithoutAWayOut) {
 }
 
 /// `rings` rings of `places` places each, a token on each ring's first place: places^rings
-/// markings, every one on the way back to the start, each with `rings` successors.
-std::shared_ptr<const Net> tokenRings(int rings, int places) {
+/// markings, every one on the way back to the start, each with `rings` successors, reached
+/// by `copies` transitions each (as many edges).
+std::shared_ptr<const Net> tokenRings(int rings, int places, int copies = 1) {
   NetBuilder b;
   for (int r = 0; r < rings; ++r) {
     std::vector<PlaceId> ring;
@@ -604,9 +605,11 @@ std::shared_ptr<const Net> tokenRings(int rings, int places) {
       b.setSlot(ring.back(), kDefaultSlot, SlotKind::Control, kUnbounded, i == 0 ? 1 : 0);
     }
     for (int i = 0; i < places; ++i) {
-      const auto t = b.addTransition("t" + std::to_string(r) + "_" + std::to_string(i));
-      b.addInput(ring[static_cast<std::size_t>(i)], t);
-      b.addOutput(t, ring[static_cast<std::size_t>((i + 1) % places)]);
+      for (int c = 0; c < copies; ++c) {
+        const auto t = b.addTransition("t" + std::to_string(r) + "_" + std::to_string(i) + "_" + std::to_string(c));
+        b.addInput(ring[static_cast<std::size_t>(i)], t);
+        b.addOutput(t, ring[static_cast<std::size_t>((i + 1) % places)]);
+      }
     }
   }
   return b.freeze();
@@ -630,23 +633,23 @@ TEST(Analysis, ThreadsShareTheWayBackOverLevelsOfThousandsOfStates) {
 }
 
 TEST(Analysis, UnderAMemoryLimitThreadsFindTheWayBackWithoutReversingTheEdges) {
-  // a token on each of four rings of 24 places: 24^4 markings, four edges each, every one on
-  // a long way back to the start. Reversed, the edges take more than the tables they replace;
-  // under a limit the search fits in but they do not, the way back is searched by looking
-  // predecessors up, the same answers within the limit
-  constexpr int kRing = 24, kRings = 4;
-  const auto net = tokenRings(kRings, kRing);
+  // a token on each of four rings of 24 places, each step of a ring made by two transitions:
+  // 24^4 markings, eight edges each, the ways back too long for the sweeps. Reversed, the
+  // edges take several MiB more than the search held at its end. Under a limit 2 MiB below
+  // the reversing peak, which the search fits in, the way back is searched by looking
+  // predecessors up, with the same answers, within the limit (reversing would pass it)
+  const auto net = tokenRings(4, 24, 2);
   ExploreOptions options;
   options.threads = 2;
-  std::uint64_t searching = 0;  // the most the search held, as its progress says
+  std::uint64_t searching = 0;  // the most the search held, as its progress reports say
   options.progress = [&](const ExploreProgress& p) { searching = std::max(searching, p.bytes); };
   const StateSpace reversing = explore(*net, options);
   ASSERT_TRUE(reversing.complete);
   EXPECT_EQ(reversing.states, 331'776u);
+  EXPECT_EQ(reversing.edges, 8u * 331'776u);
   EXPECT_TRUE(reversing.reversible);
-  // halfway between the search's peak and the peak with the edges reversed
-  ASSERT_GT(reversing.peak_bytes, searching + (std::uint64_t{1} << 20));
-  options.max_bytes = (searching + reversing.peak_bytes) / 2;
+  options.max_bytes = reversing.peak_bytes - (std::uint64_t{2} << 20);
+  ASSERT_GT(options.max_bytes, searching + (std::uint64_t{1} << 20));
   options.progress = nullptr;
   const StateSpace looking = explore(*net, options);
   ASSERT_TRUE(looking.complete);
