@@ -539,6 +539,7 @@ class Parallel {
     forEachRun([&](std::uint32_t v, const std::uint32_t*, const std::uint32_t*) {
       if (isMarked(v)) level.push_back(v);
     });
+    peak_ = std::max(peak_, bytes() + reach.size() * 8 + level.capacity() * sizeof(std::uint32_t));
     // (a net that is not reversible often stops before the edges are reversed, which would
     // cost what the whole graph holds: Peterson-PT-3 reaches its start from 1,782 of 3.4 M)
     std::uint64_t edges = 0, tables = 0;
