@@ -516,23 +516,53 @@ class Parallel {
     auto mark = [&](std::uint32_t g) { set(reach, g); };
     mark(s0);
     std::uint64_t marked = 1;
-    for (;;) {
+    // the sweeps: each thread over its own shard's runs, marking with an atomic or (a state
+    // marked by both is counted once). Once fewer than an eighth are left, a sweep lists the
+    // states it does not mark, and the next sweeps go over the lists alone (HexagonalGrid:
+    // after 3 of its 6 sweeps, 5,000 of 2.7 M)
+    using Atomic64 = std::atomic_ref<std::uint64_t>;
+    struct alignas(64) Sweep {
+      std::vector<std::uint32_t> left;
+      std::uint64_t marked = 0;
+    };
+    std::vector<Sweep> sweeps(threads_);
+    bool listed = false, stuck = false;  // stuck: a sweep marked none, the rest cannot get back
+    while (marked < states) {
       const std::uint64_t before = marked;
-      forEachRun([&](std::uint32_t v, const std::uint32_t* begin, const std::uint32_t* end) {
-        if (isMarked(v)) return;
-        for (const std::uint32_t* e = begin; e != end; ++e) {
-          if (isMarked(*e)) {
-            mark(v);
-            ++marked;
-            return;
+      const bool list = !listed && (states - marked) * 8 < states;
+      onThreads([&](unsigned me) {
+        Sweep& my = sweeps[me];
+        auto seen = [&](std::uint32_t g) { return ((Atomic64(reach[g >> 6]).load(std::memory_order_relaxed) >> (g & 63)) & 1) != 0; };
+        // whether state v, not marked, has a marked successor: then marked
+        auto sweep = [&](std::uint32_t v, const std::uint32_t* begin, const std::uint32_t* end) {
+          for (const std::uint32_t* e = begin; e != end; ++e) {
+            if (seen(*e)) {
+              const std::uint64_t bit = std::uint64_t{1} << (v & 63);
+              if ((Atomic64(reach[v >> 6]).fetch_or(bit, std::memory_order_relaxed) & bit) == 0) ++my.marked;
+              return true;
+            }
           }
+          return false;
+        };
+        if (listed) {
+          std::erase_if(my.left, [&](std::uint32_t v) { return sweep(v, succBegin(v), succEnd(v)); });
+        } else {
+          forEachRunOf(shards_[me], [&](std::uint32_t v, const std::uint32_t* begin, const std::uint32_t* end) {
+            if (!seen(v) && !sweep(v, begin, end) && list) my.left.push_back(v);
+          });
         }
       });
-      if (marked == before) {
-        dropTables();
-        return marked;
-      }
+      listed = listed || list;
+      for (Sweep& my : sweeps) marked += std::exchange(my.marked, 0);
+      stuck = marked == before;
       if ((marked - before) * 100 < states - before) break;
+    }
+    std::uint64_t listing = 0;
+    for (Sweep& my : sweeps) listing += my.left.capacity() * sizeof(std::uint32_t), std::vector<std::uint32_t>().swap(my.left);
+    peak_ = std::max(peak_, bytes() + reach.size() * 8 + listing);
+    if (marked == states || stuck) {
+      dropTables();
+      return marked;
     }
     std::vector<std::uint32_t> level;
     level.reserve(marked);
