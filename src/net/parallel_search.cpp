@@ -35,6 +35,16 @@ constexpr std::uint32_t kPad = 0xffffffffu;
 bool isSet(const std::vector<std::uint64_t>& bits, std::uint32_t g) { return ((bits[g >> 6] >> (g & 63)) & 1) != 0; }
 /// Sets bit `g` of `bits`.
 void set(std::vector<std::uint64_t>& bits, std::uint32_t g) { bits[g >> 6] |= std::uint64_t{1} << (g & 63); }
+/// Whether bit `g` of `bits` is set, while other threads may set bits (claim()).
+bool isSetShared(std::vector<std::uint64_t>& bits, std::uint32_t g) {
+  return ((std::atomic_ref<std::uint64_t>(bits[g >> 6]).load(std::memory_order_relaxed) >> (g & 63)) & 1) != 0;
+}
+/// Sets bit `g` of `bits`, which other threads may set too: whether this call set it.
+bool claim(std::vector<std::uint64_t>& bits, std::uint32_t g) {
+  const std::uint64_t bit = std::uint64_t{1} << (g & 63);
+  std::atomic_ref<std::uint64_t> word(bits[g >> 6]);
+  return (word.load(std::memory_order_relaxed) & bit) == 0 && (word.fetch_or(bit, std::memory_order_relaxed) & bit) == 0;
+}
 
 struct Shard {
   std::unique_ptr<Store> store;
@@ -479,10 +489,17 @@ class Parallel {
   /// successors'.
   template <typename F>
   static void forEachRunOf(const Shard& s, F&& f) {
+    forEachRunAt(s, [&f](std::size_t, std::uint32_t v, const std::uint32_t* begin, const std::uint32_t* end) { f(v, begin, end); });
+  }
+  /// The same, with where each run starts in the shard's successor slots: `f(at, v, begin, end)`.
+  template <typename F>
+  static void forEachRunAt(const Shard& s, F&& f) {
     const std::size_t chunks = (s.succ.size() + Succ::chunkElements() - 1) / Succ::chunkElements();
     for (std::size_t c = 0; c < chunks; ++c) {
       const auto [data, size] = s.succ.chunk(c);
-      for (std::size_t i = 0; i < size && data[i] != kPad; i += 2 + data[i]) f(data[i + 1], data + i + 2, data + i + 2 + data[i]);
+      for (std::size_t i = 0; i < size && data[i] != kPad; i += 2 + data[i]) {
+        f(c * Succ::chunkElements() + i, data[i + 1], data + i + 2, data + i + 2 + data[i]);
+      }
     }
   }
   /// The same for every state expanded.
@@ -520,7 +537,6 @@ class Parallel {
     // marked by both is counted once). Once fewer than an eighth are left, a sweep lists the
     // states it does not mark, and the next sweeps go over the lists alone (HexagonalGrid:
     // after 3 of its 6 sweeps, 5,000 of 2.7 M)
-    using Atomic64 = std::atomic_ref<std::uint64_t>;
     struct alignas(64) Sweep {
       std::vector<std::uint32_t> left;
       std::uint64_t marked = 0;
@@ -532,13 +548,11 @@ class Parallel {
       const bool list = !listed && (states - marked) * 8 < states;
       onThreads([&](unsigned me) {
         Sweep& my = sweeps[me];
-        auto seen = [&](std::uint32_t g) { return ((Atomic64(reach[g >> 6]).load(std::memory_order_relaxed) >> (g & 63)) & 1) != 0; };
         // whether state v, not marked, has a marked successor: then marked
         auto sweep = [&](std::uint32_t v, const std::uint32_t* begin, const std::uint32_t* end) {
           for (const std::uint32_t* e = begin; e != end; ++e) {
-            if (seen(*e)) {
-              const std::uint64_t bit = std::uint64_t{1} << (v & 63);
-              if ((Atomic64(reach[v >> 6]).fetch_or(bit, std::memory_order_relaxed) & bit) == 0) ++my.marked;
+            if (isSetShared(reach, *e)) {
+              if (claim(reach, v)) ++my.marked;
               return true;
             }
           }
@@ -548,7 +562,7 @@ class Parallel {
           std::erase_if(my.left, [&](std::uint32_t v) { return sweep(v, succBegin(v), succEnd(v)); });
         } else {
           forEachRunOf(shards_[me], [&](std::uint32_t v, const std::uint32_t* begin, const std::uint32_t* end) {
-            if (!seen(v) && !sweep(v, begin, end) && list) my.left.push_back(v);
+            if (!isSetShared(reach, v) && !sweep(v, begin, end) && list) my.left.push_back(v);
           });
         }
       });
@@ -624,11 +638,7 @@ class Parallel {
     for (auto& s : shards_) {
       s.first.clear();
       for (std::size_t i = 0; i < s.store->size(); ++i) s.first.push(0);
-      const std::size_t chunks = (s.succ.size() + Succ::chunkElements() - 1) / Succ::chunkElements();
-      for (std::size_t c = 0; c < chunks; ++c) {
-        const auto [data, size] = s.succ.chunk(c);
-        for (std::size_t i = 0; i < size && data[i] != kPad; i += 2 + data[i]) s.first[localOf(data[i + 1])] = c * Succ::chunkElements() + i;
-      }
+      forEachRunAt(s, [&](std::size_t at, std::uint32_t v, const std::uint32_t*, const std::uint32_t*) { s.first[localOf(v)] = at; });
       account(s);
     }
   }
@@ -705,7 +715,6 @@ class Parallel {
   /// one thread's (no threads started for it). Returns the states it marked.
   template <class Block>
   std::uint64_t backward(std::vector<std::uint32_t>& level, std::vector<std::uint64_t>& reach, std::uint64_t until, Block block) {
-    using Atomic64 = std::atomic_ref<std::uint64_t>;
     constexpr std::size_t kBlock = 256;
     std::vector<Next> next(threads_);
     std::uint64_t marked = 0;
@@ -715,10 +724,7 @@ class Parallel {
       share([&](unsigned me) {
         Next& my = next[me];
         auto reached = [&](std::uint32_t g) {
-          const std::uint64_t bit = std::uint64_t{1} << (g & 63);
-          Atomic64 word(reach[g >> 6]);
-          if ((word.load(std::memory_order_relaxed) & bit) != 0) return;
-          if ((word.fetch_or(bit, std::memory_order_relaxed) & bit) == 0) my.states.push_back(g);
+          if (claim(reach, g)) my.states.push_back(g);
         };
         for (std::size_t begin; (begin = taken.fetch_add(kBlock, std::memory_order_relaxed)) < level.size();) {
           block(my, begin, std::min(level.size(), begin + kBlock), reached);
