@@ -27,6 +27,8 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
   GDPN_ASSERT(dt_ > 0.0, "dt must be positive");
   const Net& n = *net_;
   terms_ = n.terms().data();
+  core::reserveLarge(firing_terms_, n.terms().size());
+  for (const Term& term : n.terms()) firing_terms_.push_back({term.place_slot, term.weight});
 
   // place slots: markings, capacities, watcher ranges and node FIFOs
   const auto slots = n.placeSlots();
@@ -193,7 +195,7 @@ void Kernel::prefetchAhead(std::size_t i, std::size_t n, Get get) const {
   auto watchers = [&](std::size_t j) {
     const TransitionState& tr = tr_[get(j)];
     for (auto k = tr.terms_begin; k < tr.terms_end; ++k) {
-      const SlotState& st = slots_[terms_[k].place_slot];
+      const SlotState& st = slots_[firing_terms_[k].place_slot];
       if (st.watch_count > 0) __builtin_prefetch(&tr_[st.first.transition]);
     }
   };
@@ -206,14 +208,14 @@ void Kernel::prefetchAhead(std::size_t i, std::size_t n, Get get) const {
 void Kernel::prefetchTerms(TransitionId t) const {
   const TransitionState& tr = tr_[t];
   if (tr.terms_end == tr.terms_begin) return;
-  // their first and last line (terms of 20 bytes straddle lines)
-  __builtin_prefetch(&terms_[tr.terms_begin]);
-  __builtin_prefetch(&terms_[tr.terms_end - 1]);
+  // their first and last line (they may straddle lines)
+  __builtin_prefetch(&firing_terms_[tr.terms_begin]);
+  __builtin_prefetch(&firing_terms_[tr.terms_end - 1]);
 }
 
 void Kernel::prefetchSlots(TransitionId t) const {
   const TransitionState& tr = tr_[t];
-  for (auto k = tr.terms_begin; k < tr.terms_end; ++k) __builtin_prefetch(&slots_[terms_[k].place_slot]);
+  for (auto k = tr.terms_begin; k < tr.terms_end; ++k) __builtin_prefetch(&slots_[firing_terms_[k].place_slot]);
 }
 
 void Kernel::markEnabled(TransitionId t) {
@@ -497,7 +499,7 @@ void Kernel::beginAs(TransitionId t) {
   // node, add or remove tokens) meets a consistent kernel and cannot undo a take half-way
   std::vector<RemoveCall> calls;
   for (auto i = tr.terms_begin; i < tr.inputs_end; ++i) {
-    const Term& term = terms_[i];
+    const FiringTerm& term = firing_terms_[i];
     const PlaceSlotId ps = term.place_slot;
     SlotState& st = slots_[ps];
     st.m -= term.weight;
@@ -527,7 +529,7 @@ void Kernel::beginAs(TransitionId t) {
     update(ps);
   }
   for (auto i = tr.conditions_end; i < tr.terms_end; ++i) {
-    const Term& term = terms_[i];
+    const FiringTerm& term = firing_terms_[i];
     SlotState& st = slots_[term.place_slot];
     st.r += term.weight;
     if (st.capacity != kUnbounded) update(term.place_slot);
@@ -577,7 +579,7 @@ void Kernel::finishAs(Entry e) {
     current_ = outer;
   }
   for (auto i = tr.conditions_end; i < tr.terms_end; ++i) {
-    const Term& term = terms_[i];
+    const FiringTerm& term = firing_terms_[i];
     const PlaceSlotId ps = term.place_slot;
     SlotState& st = slots_[ps];
     st.r -= term.weight;
@@ -912,6 +914,7 @@ std::string Kernel::fire(TransitionId t) {
 
 std::size_t Kernel::memoryBytes() const {
   std::size_t bytes = tr_.capacity() * sizeof(TransitionState) + slots_.capacity() * sizeof(SlotState) +
+                      firing_terms_.capacity() * sizeof(FiringTerm) +
                       watch_.capacity() * sizeof(Watch) +
                       (fresh_.capacity() + late_.capacity() + late_now_.capacity() + scratch_.capacity()) *
                           sizeof(std::uint64_t) +

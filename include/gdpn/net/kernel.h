@@ -181,6 +181,10 @@ class Kernel {
   };
   static_assert(sizeof(SlotState) == 64);
   static_assert(sizeof(Watch) == 16);
+  struct FiringTerm {  // what a start and a completion read of one term: 8 bytes, not the term's 20
+    PlaceSlotId place_slot;
+    std::int32_t weight;
+  };
   struct RemoveCall {  // on_remove calls owed by a start: `count` times, for one node token or control
     PlaceSlotId ps;
     std::int64_t count;
@@ -285,6 +289,9 @@ class Kernel {
 
   std::shared_ptr<const Net> net_;
   const Term* terms_ = nullptr;
+  /// Per term (same index): its place slot and weight, all that firings read of it. A ring's
+  /// firing reads 16 bytes of them rather than 40, a quarter of a cache line at 10^6 terms.
+  std::vector<FiringTerm> firing_terms_;
   double dt_;
   core::Random random_;
   std::int64_t step_ = 0;  // steps with the net on: the clock of occurrences and enabling
