@@ -58,9 +58,10 @@ struct Shard {
   std::atomic<std::uint64_t> bytes{0};  // what the store holds, as its thread last saw
   std::uint64_t dead = 0;               // states expanded without a successor
   std::uint64_t fresh = 0;              // states stored, not yet in Parallel::states_
-  // the graph: local state i's run in succ starts at first[i]: the number of its
-  // successors, its own global id, then theirs (global ids); a chunk's room too small for
-  // the next run is filled with kPad
+  // the graph: each state expanded has a run in succ, in the order they were expanded: the
+  // number of its successors, its own global id, then theirs (global ids); a chunk's room too
+  // small for the next run is filled with kPad. Local state i's run starts at first[i], found
+  // after the search and only where a state's run is read by its id (findRunStarts())
   Chunked<std::uint64_t, 18> first;
   Succ succ;
   // edges into each block of kInBlock states (local ids), counted as they are stored, for
@@ -163,7 +164,6 @@ class Parallel {
     if (added) {
       s.seen->note(layout_, s.store->at(id));
       s.work.push_back(id);
-      s.first.push(0);
       ++s.fresh;
     }
     return global(me, id);
@@ -260,7 +260,6 @@ class Parallel {
           }
           const std::size_t count = made - begin;
           const std::size_t run = s.succ.appendRun(count + 2, kPad);
-          s.first[v] = run;
           s.succ.at(run)[0] = static_cast<std::uint32_t>(count);
           s.succ.at(run)[1] = global(me, v);
           if (count == 0 && !overflow) ++s.dead;
@@ -353,6 +352,7 @@ class Parallel {
     const std::uint32_t s0 = global(start_, 0);
     if (out.deadlock) {
       dropTables();
+      findRunStarts();
       out.live = transitions == 0;
       out.reversible = out.states == 1;
       pathToDeadlock(out, ids, s0);
@@ -367,6 +367,7 @@ class Parallel {
       return;
     }
     out.reversible = false;
+    findRunStarts();
     if (missesATransition(ids, reach)) {
       out.live = false;
       return;
@@ -538,7 +539,7 @@ class Parallel {
     // states it does not mark, and the next sweeps go over the lists alone (HexagonalGrid:
     // after 3 of its 6 sweeps, 5,000 of 2.7 M)
     struct alignas(64) Sweep {
-      std::vector<std::uint32_t> left;
+      std::vector<std::size_t> left;  // where the runs of the states left start
       std::uint64_t marked = 0;
     };
     std::vector<Sweep> sweeps(threads_);
@@ -559,10 +560,13 @@ class Parallel {
           return false;
         };
         if (listed) {
-          std::erase_if(my.left, [&](std::uint32_t v) { return sweep(v, succBegin(v), succEnd(v)); });
+          std::erase_if(my.left, [&](std::size_t at) {
+            const std::uint32_t* run = shards_[me].succ.at(at);
+            return sweep(run[1], run + 2, run + 2 + run[0]);
+          });
         } else {
-          forEachRunOf(shards_[me], [&](std::uint32_t v, const std::uint32_t* begin, const std::uint32_t* end) {
-            if (!isSetShared(reach, v) && !sweep(v, begin, end) && list) my.left.push_back(v);
+          forEachRunAt(shards_[me], [&](std::size_t at, std::uint32_t v, const std::uint32_t* begin, const std::uint32_t* end) {
+            if (!isSetShared(reach, v) && !sweep(v, begin, end) && list) my.left.push_back(at);
           });
         }
       });
@@ -572,7 +576,7 @@ class Parallel {
       if ((marked - before) * 100 < states - before) break;
     }
     std::uint64_t listing = 0;
-    for (Sweep& my : sweeps) listing += my.left.capacity() * sizeof(std::uint32_t), std::vector<std::uint32_t>().swap(my.left);
+    for (Sweep& my : sweeps) listing += my.left.capacity() * sizeof(std::size_t), std::vector<std::size_t>().swap(my.left);
     peak_ = std::max(peak_, bytes() + reach.size() * 8 + listing);
     if (marked == states || stuck) {
       dropTables();
@@ -588,8 +592,7 @@ class Parallel {
     // cost what the whole graph holds: Peterson-PT-3 reaches its start from 1,782 of 3.4 M)
     std::uint64_t edges = 0, tables = 0;
     for (const Shard& s : shards_) edges += s.edges.load(), tables += s.store->tableBytes();
-    // what reverse() holds: 4 bytes an edge and a state, and a byte an edge while it runs (at
-    // most: where the runs start, counted in bytes(), is dropped first)
+    // what reverse() holds: 4 bytes an edge and a state, and a byte an edge while it runs
     const std::uint64_t reversed = (edges + states + 2 * threads_) * sizeof(std::uint32_t) + edges;
     // (their positions are 32 bits: a graph of 2^32 edges or more is searched by lookups)
     const bool reverses = edges < 0xffffffffu && (options_.max_bytes == 0 || bytes() - tables + reversed <= options_.max_bytes);
@@ -599,12 +602,7 @@ class Parallel {
     });
     dropTables();
     if (level.empty()) return marked;
-    // nothing here reads a state's run by its id: where the runs start is made again after,
-    // if anything does, and not held beside the edges reversed
-    dropRunStarts();
-    marked += overReversedEdges(level, reach, states);
-    if (marked < states) findRunStarts();
-    return marked;
+    return marked + overReversedEdges(level, reach, states);
   }
 
   /// The rest of reachingStart(): breadth first from `level` over the edges reversed; the
@@ -629,18 +627,17 @@ class Parallel {
     });
   }
 
-  /// Frees where each state's run starts (Shard::first).
-  void dropRunStarts() {
-    for (auto& s : shards_) s.first.clear(), account(s);
-  }
-  /// Makes again where each state's run starts, from the runs in the order they were written.
+  /// Finds where each state's run starts (Shard::first), from the runs in the order they
+  /// were written, each thread in its own shard, for what reads a state's run by its id. The
+  /// search keeps no such index (8 bytes a state), and the way back to the start needs none.
   void findRunStarts() {
-    for (auto& s : shards_) {
+    onThreads([&](unsigned me) {
+      Shard& s = shards_[me];
       s.first.clear();
       for (std::size_t i = 0; i < s.store->size(); ++i) s.first.push(0);
       forEachRunAt(s, [&](std::size_t at, std::uint32_t v, const std::uint32_t*, const std::uint32_t*) { s.first[localOf(v)] = at; });
       account(s);
-    }
+    });
   }
 
   /// The edges into the states of one shard: local state i's predecessors (global ids) are

@@ -42,8 +42,9 @@ struct ExploreOptions {
   std::uint64_t max_bytes = 0;            ///< stop (partial answer) past this much memory, bytes; 0: none
   /// Worker threads. Above 1, markings are shared out among the threads by hash, each
   /// expanding its markings in batches, and the graph is kept as arrays (4 bytes an edge and
-  /// 16 a state more; reversed for a while, 5 bytes an edge and 4 a state more again, unless
-  /// that would pass `max_bytes`) for the passes that decide liveness and reversibility. A
+  /// 8 a state more; 8 a state more again after the search where a dead state or one that
+  /// cannot get back to the start makes the passes read it by state; reversed for a while,
+  /// 5 bytes an edge and 4 a state more, unless that would pass `max_bytes`) for the passes that decide liveness and reversibility. A
   /// net with a place that nothing bounds needs the coverability search (one walk): two
   /// threads race it against a plain search that never accelerates (the first to end
   /// answers; without `max_bytes` only).
