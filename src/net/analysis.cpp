@@ -664,7 +664,15 @@ StateSpace Search::run() {
     }
   };
 
-  std::uint64_t next_report = 1 << 12;
+  std::uint64_t next_report = 1 << 12, pops = 0;
+  // the limits of memory and time: looked at every 4,096 new states, and every 4,096 states
+  // done, for the walk back holds more as it goes (the stack of states whose component is
+  // not finished) while it finds no new state
+  auto withinLimits = [&](std::uint64_t b) {
+    if (options_.max_bytes != 0 && b > options_.max_bytes) stop_ = ExploreStop::MaxMemory;
+    if (options_.deadline && std::chrono::steady_clock::now() >= *options_.deadline) stop_ = ExploreStop::TimeLimit;
+    return stop_ == ExploreStop::Done;
+  };
   bool running = visit(0);
   while (running && !frames_.empty()) {
     Frame& f = frames_.back();
@@ -690,10 +698,7 @@ StateSpace Search::run() {
           const bool outgrown = !cover_ && store_->size() > 4 * race_->cover_states.load(std::memory_order_relaxed) + (1 << 16);
           if (race_->over.load(std::memory_order_relaxed) || outgrown) stop_ = ExploreStop::MaxStates, running = false;
         }
-        if (options_.max_bytes != 0 && b > options_.max_bytes) stop_ = ExploreStop::MaxMemory, running = false;
-        if (options_.deadline && std::chrono::steady_clock::now() >= *options_.deadline) {
-          stop_ = ExploreStop::TimeLimit, running = false;
-        }
+        running = withinLimits(b) && running;
       }
       // ids keep their top bit free (Frame::v_root)
       if (store_->size() > std::min<std::uint64_t>(options_.max_states, 0x7ffffff0u)) stop_ = ExploreStop::MaxStates, running = false;
@@ -707,6 +712,11 @@ StateSpace Search::run() {
       finishComponent(v);
     } else {
       stack_.push(v);
+    }
+    if ((++pops & 0xfff) == 0) {
+      const std::uint64_t b = bytes();
+      peak_ = std::max(peak_, b);
+      running = withinLimits(b);
     }
     // the edge from the parent to v is settled now that v is done
     if (!frames_.empty()) settle(frames_.back(), rindex(v));

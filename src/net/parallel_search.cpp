@@ -293,14 +293,16 @@ class Parallel {
       // round (not once per state: the threads would take its cache line from each other)
       states_.fetch_add(s.fresh, std::memory_order_relaxed);
       s.fresh = 0;
-      // limits and progress, looked at by the first thread
+      // limits and progress, looked at by the first thread: memory and time after each of its
+      // rounds (once every state is stored, the graph still grows as the rest are expanded),
+      // progress every 4,096 states
       const std::uint64_t states = states_.load(std::memory_order_relaxed);
       if (states > options_.max_states) halt(ExploreStop::MaxStates);
-      if (me == 0 && states >= next_report) {
-        next_report = states + (1 << 12);
+      if (me == 0) {
         const std::uint64_t b = bytes();
         peak_ = std::max(peak_, b);
-        if (options_.progress) {
+        if (options_.progress && states >= next_report) {
+          next_report = states + (1 << 12);
           std::uint64_t edges = 0;
           for (const auto& x : shards_) edges += x.edges.load(std::memory_order_relaxed);
           options_.progress({states, edges, b});

@@ -660,6 +660,34 @@ TEST(Analysis, UnderAMemoryLimitThreadsFindTheWayBackWithoutReversingTheEdges) {
   EXPECT_LE(looking.peak_bytes, options.max_bytes);
 }
 
+TEST(Analysis, UnderAMemoryLimitASearchStopsWhereItHoldsMoreWithoutNewStates) {
+  // a token on each of four rings: the threads' net has rings of 16 places, each step made by
+  // eight transitions (16^4 markings, 32 edges each), so that they store every marking long
+  // before they have expanded them all while their graph still grows; one thread's has rings
+  // of 24 places (24^4 markings), and its walk, once it has found every marking, still fills
+  // the stack of states whose component is not finished as it walks back. Under any limit
+  // below the whole search's peak, the search either stops (a partial answer) or holds no
+  // more than the limit: the memory is looked at as the search expands and walks back, not
+  // only as it stores new markings
+  for (unsigned threads : {1u, 2u}) {
+    const auto net = threads == 1 ? tokenRings(4, 24) : tokenRings(4, 16, 8);
+    ExploreOptions options;
+    options.threads = threads;
+    const StateSpace whole = explore(*net, options);
+    ASSERT_TRUE(whole.complete);
+    EXPECT_EQ(whole.states, threads == 1 ? 331'776u : 65'536u);
+    for (int part = 16; part < 32; ++part) {
+      options.max_bytes = whole.peak_bytes * static_cast<std::uint64_t>(part) / 32;
+      const StateSpace cut = explore(*net, options);
+      if (cut.complete) {
+        EXPECT_LE(cut.peak_bytes, options.max_bytes) << threads << " threads, " << part << "/32";
+      } else {
+        EXPECT_EQ(cut.stop, ExploreStop::MaxMemory) << threads << " threads, " << part << "/32";
+      }
+    }
+  }
+}
+
 TEST(Analysis, ThreadsFindANetLiveThatIsNotReversible) {
   // two tokens in a; `move` takes one to b, `back` two from b and gives one to a: (2, 0) ->
   // (1, 1) <-> (0, 2). The start is never reached again, but the last two markings enable

@@ -39,12 +39,17 @@ inline constexpr std::size_t kDeadPaths = 3;
 /// Limits of an exploration.
 struct ExploreOptions {
   std::uint64_t max_states = 20'000'000;  ///< stop (partial answer) past this many states
-  std::uint64_t max_bytes = 0;            ///< stop (partial answer) past this much memory, bytes; 0: none
+  /// Stop (partial answer) past this much memory, bytes; 0: none. Looked at as the search
+  /// stores, expands and walks back (one thread every 4,096 new states and every 4,096
+  /// states done, the threads after each round of batches): what is allocated between two
+  /// looks (a table grown, a chunk) may pass it by that much.
+  std::uint64_t max_bytes = 0;
   /// Worker threads. Above 1, markings are shared out among the threads by hash, each
   /// expanding its markings in batches, and the graph is kept as arrays (4 bytes an edge and
   /// 8 a state more; 8 a state more again after the search where a dead state or one that
   /// cannot get back to the start makes the passes read it by state; reversed for a while,
-  /// 5 bytes an edge and 4 a state more, unless that would pass `max_bytes`) for the passes that decide liveness and reversibility. A
+  /// 5 bytes an edge and 4 a state more, unless that would pass `max_bytes`) for the passes
+  /// that decide liveness and reversibility. A
   /// net with a place that nothing bounds needs the coverability search (one walk): two
   /// threads race it against a plain search that never accelerates (the first to end
   /// answers; without `max_bytes` only).
