@@ -48,7 +48,7 @@ class Search {
   StateSpace run();
 
  private:
-  enum class Expand : std::uint8_t { Ok, Widened, Overflow };
+  enum class Expand : std::uint8_t { Ok, Widened, Overflow, Full };
 
   /// The successors of a state: their transitions, packed markings and hashes.
   struct Successors {
@@ -443,6 +443,11 @@ Search::Expand Search::expand(StateId v) {
     }
   }
   if (ahead_.index < via.size()) successorsAfter(now_, ahead_.index, ahead_);
+  // a table that would grow past --max-memory stops the search before it grows
+  if (options_.max_bytes != 0) {
+    const std::size_t growth = store_->growthWithin(via.size());
+    if (growth != 0 && bytes() + growth > options_.max_bytes) return Expand::Full;
+  }
   std::uint32_t rv = rindex(v);
   bool root = true;
   for (std::size_t i = 0; i < via.size(); ++i) {
@@ -656,8 +661,8 @@ StateSpace Search::run() {
     for (;;) {
       const Expand e = expand(v);
       if (e == Expand::Ok) return true;
-      if (e == Expand::Overflow) {
-        stop_ = ExploreStop::Overflow;
+      if (e == Expand::Overflow || e == Expand::Full) {
+        stop_ = e == Expand::Full ? ExploreStop::MaxMemory : ExploreStop::Overflow;
         return false;
       }
       // a field grew: the markings were re-packed; compute the successors again

@@ -230,6 +230,7 @@ class Parallel {
         const std::size_t n = batch.size() / record;
         in_hashes.resize(n);
         for (std::size_t i = 0; i < n; ++i) in_hashes[i] = s.store->hash(&batch[i * record]);
+        if (!roomFor(me, n)) break;
         storeAll(
             me, n, [&](std::size_t i) { return &batch[i * record]; }, [&](std::size_t i) { return in_hashes[i]; },
             [&](std::size_t i) { return reinterpret_cast<std::uint32_t*>(static_cast<std::uintptr_t>(batch[i * record + words])); });
@@ -284,6 +285,7 @@ class Parallel {
           box.push_back(reinterpret_cast<std::uintptr_t>(slots[i]));
           if (box.size() >= 1024 * record) flush(to);
         }
+        if (!roomFor(me, own.size())) break;
         storeAll(
             me, own.size(), [&](std::size_t j) { return keys.data() + own[j] * words; },
             [&](std::size_t j) { return hashes[own[j]]; }, [&](std::size_t j) { return slots[own[j]]; });
@@ -317,6 +319,17 @@ class Parallel {
         std::this_thread::yield();
       }
     }
+  }
+
+  /// Whether shard `me`'s table may grow as `n` more markings are stored without passing
+  /// ExploreOptions::max_bytes (the others' memory as they last reported it); if not, the
+  /// search stops (a table that would pass the limit is never grown).
+  bool roomFor(unsigned me, std::size_t n) {
+    if (options_.max_bytes == 0) return true;
+    const std::size_t growth = shards_[me].store->growthWithin(n);
+    if (growth == 0 || bytes() + growth <= options_.max_bytes) return true;
+    halt(ExploreStop::MaxMemory);
+    return false;
   }
 
   void halt(ExploreStop why) {

@@ -207,6 +207,13 @@ class Store {
   std::size_t bytes() const { return arena_.bytes() + tableBytes(); }
   /// What the table alone holds (dropIndex() frees it).
   std::size_t tableBytes() const { return table_.size() * sizeof(std::uint64_t); }
+  /// Bytes the table grows by while `n` more markings are added (0 if it does not grow).
+  std::size_t growthWithin(std::size_t n) const {
+    if (table_.empty()) return 0;  // dropped: nothing more is added
+    std::size_t capacity = table_.size();
+    while ((size() + n) * 10 > capacity * 7) capacity *= 2;
+    return (capacity - table_.size()) * sizeof(std::uint64_t);
+  }
 
   std::uint64_t hash(const std::uint64_t* m) const {
     std::uint64_t h = 0x243f6a8885a308d3ULL;
@@ -244,7 +251,7 @@ class Store {
   }
   /// The id of `m`, adding it when new (`added` says which).
   StateId insert(const std::uint64_t* m, std::uint64_t h, bool& added) {
-    if ((size() + 1) * 10 > table_.size() * 7) grow();
+    if (growthWithin(1) != 0) grow();
     const std::uint64_t tag = h >> 32;
     for (std::size_t i = h & (table_.size() - 1);; i = (i + 1) & (table_.size() - 1)) {
       const std::uint64_t e = table_[i];
