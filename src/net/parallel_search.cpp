@@ -18,6 +18,7 @@
 #include <atomic>
 #include <bit>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "detail/marking_store.h"
@@ -230,10 +231,14 @@ class Parallel {
         const std::size_t n = batch.size() / record;
         in_hashes.resize(n);
         for (std::size_t i = 0; i < n; ++i) in_hashes[i] = s.store->hash(&batch[i * record]);
-        if (!roomFor(me, n)) break;
-        storeAll(
-            me, n, [&](std::size_t i) { return &batch[i * record]; }, [&](std::size_t i) { return in_hashes[i]; },
-            [&](std::size_t i) { return reinterpret_cast<std::uint32_t*>(static_cast<std::uintptr_t>(batch[i * record + words])); });
+        auto key = [&](std::size_t i) { return &batch[i * record]; };
+        auto hash = [&](std::size_t i) { return in_hashes[i]; };
+        const auto promised = room(me, n, key, hash);
+        if (!promised) break;
+        storeAll(me, n, key, hash, [&](std::size_t i) {
+          return reinterpret_cast<std::uint32_t*>(static_cast<std::uintptr_t>(batch[i * record + words]));
+        });
+        settle(me, *promised);
         pending_.fetch_sub(static_cast<std::int64_t>(batch.size() / record));
       }
       for (int n = 0; n < 16 && !s.work.empty() && !stop_flag_.load(std::memory_order_relaxed); ++n) {
@@ -285,10 +290,12 @@ class Parallel {
           box.push_back(reinterpret_cast<std::uintptr_t>(slots[i]));
           if (box.size() >= 1024 * record) flush(to);
         }
-        if (!roomFor(me, own.size())) break;
-        storeAll(
-            me, own.size(), [&](std::size_t j) { return keys.data() + own[j] * words; },
-            [&](std::size_t j) { return hashes[own[j]]; }, [&](std::size_t j) { return slots[own[j]]; });
+        auto key = [&](std::size_t j) { return keys.data() + own[j] * words; };
+        auto hash = [&](std::size_t j) { return hashes[own[j]]; };
+        const auto promised = room(me, own.size(), key, hash);
+        if (!promised) break;
+        storeAll(me, own.size(), key, hash, [&](std::size_t j) { return slots[own[j]]; });
+        settle(me, *promised);
       }
       account(s);
       // the states stored since the last time, added to the count all threads share once per
@@ -321,15 +328,36 @@ class Parallel {
     }
   }
 
-  /// Whether shard `me`'s table may grow as `n` more markings are stored without passing
-  /// ExploreOptions::max_bytes (the others' memory as they last reported it); if not, the
-  /// search stops (a table that would pass the limit is never grown).
-  bool roomFor(unsigned me, std::size_t n) {
-    if (options_.max_bytes == 0) return true;
-    const std::size_t growth = shards_[me].store->growthWithin(n);
-    if (growth == 0 || bytes() + growth <= options_.max_bytes) return true;
+  /// Room under ExploreOptions::max_bytes for shard `me`'s table to grow as the `n`
+  /// markings `key(j)` (of hashes `hash(j)`) are stored: the bytes of growth promised (0
+  /// where it does not grow), to be given back with settle() once stored; none (and the
+  /// search stops) where the growth would pass the limit, so that no table grows past it.
+  /// Near a growth point only the markings not stored yet count; growth promised by the
+  /// other threads counts until they report their grown tables (the shards fill evenly, so
+  /// their tables grow at nearly the same moment).
+  template <class Key, class Hash>
+  std::optional<std::uint64_t> room(unsigned me, std::size_t n, Key key, Hash hash) {
+    if (options_.max_bytes == 0) return 0;
+    Shard& s = shards_[me];
+    if (s.store->growthWithin(n) == 0) return 0;
+    std::size_t fresh = 0;
+    for (std::size_t j = 0; j < n; ++j) {
+      if (s.store->find(key(j), hash(j)) == kNone) ++fresh;
+    }
+    const std::uint64_t growth = s.store->growthWithin(fresh);
+    if (growth == 0) return 0;
+    account(s);
+    const std::uint64_t promised = promised_.fetch_add(growth) + growth;
+    if (bytes() + promised <= options_.max_bytes) return growth;
+    promised_.fetch_sub(growth);
     halt(ExploreStop::MaxMemory);
-    return false;
+    return std::nullopt;
+  }
+  /// Gives back growth room() promised, now that shard `me` reports its table.
+  void settle(unsigned me, std::uint64_t promised) {
+    if (promised == 0) return;
+    account(shards_[me]);
+    promised_.fetch_sub(promised);
   }
 
   void halt(ExploreStop why) {
@@ -830,6 +858,7 @@ class Parallel {
   std::uint32_t root_slot_ = 0;  // where the initial state's id goes
   std::atomic<std::int64_t> pending_{0};  // markings in flight and threads at work
   std::atomic<std::uint64_t> states_{0};
+  std::atomic<std::uint64_t> promised_{0};  // tables' growth room() promised, not yet reported
   std::atomic<bool> stop_flag_{false};
   std::mutex halt_mutex_;
   ExploreStop stop_ = ExploreStop::Done;

@@ -594,12 +594,13 @@ TEST(Analysis, ThreadsDecideReversibilityOnALongRingWithAndWithoutAWayOut) {
   }
 }
 
-/// `rings` rings of `places` places each, a token on each ring's first place: places^rings
-/// markings, every one on the way back to the start, each with `rings` successors, reached
+/// Rings of `sizes` places, a token on each ring's first place: the product of the sizes in
+/// markings, every one on the way back to the start, each with a successor per ring, reached
 /// by `copies` transitions each (as many edges).
-std::shared_ptr<const Net> tokenRings(int rings, int places, int copies = 1) {
+std::shared_ptr<const Net> tokenRings(const std::vector<int>& sizes, int copies = 1) {
   NetBuilder b;
-  for (int r = 0; r < rings; ++r) {
+  for (int r = 0; r < static_cast<int>(sizes.size()); ++r) {
+    const int places = sizes[static_cast<std::size_t>(r)];
     std::vector<PlaceId> ring;
     for (int i = 0; i < places; ++i) {
       ring.push_back(b.addPlace("r" + std::to_string(r) + "_" + std::to_string(i)));
@@ -614,6 +615,9 @@ std::shared_ptr<const Net> tokenRings(int rings, int places, int copies = 1) {
     }
   }
   return b.freeze();
+}
+std::shared_ptr<const Net> tokenRings(int rings, int places, int copies = 1) {
+  return tokenRings(std::vector<int>(static_cast<std::size_t>(rings), places), copies);
 }
 
 TEST(Analysis, ThreadsShareTheWayBackOverLevelsOfThousandsOfStates) {
@@ -667,9 +671,9 @@ TEST(Analysis, UnderAMemoryLimitASearchStopsWhereItHoldsMoreWithoutNewStates) {
   // before they have expanded them all while their graph still grows; one thread's has rings
   // of 24 places (24^4 markings), and its walk, once it has found every marking, still fills
   // the stack of states whose component is not finished as it walks back. Under any limit
-  // below the whole search's peak, the search either stops (a partial answer) or holds no
-  // more than the limit: the memory is looked at as the search expands and walks back, not
-  // only as it stores new markings
+  // below the whole search's peak, the search either stops (a partial answer, past the limit
+  // by a chunk at most) or holds no more than the limit: the memory is looked at as the
+  // search expands and walks back, not only as it stores new markings
   for (unsigned threads : {1u, 2u}) {
     const auto net = threads == 1 ? tokenRings(4, 24) : tokenRings(4, 16, 8);
     ExploreOptions options;
@@ -684,17 +688,41 @@ TEST(Analysis, UnderAMemoryLimitASearchStopsWhereItHoldsMoreWithoutNewStates) {
         EXPECT_LE(cut.peak_bytes, options.max_bytes) << threads << " threads, " << part << "/32";
       } else {
         EXPECT_EQ(cut.stop, ExploreStop::MaxMemory) << threads << " threads, " << part << "/32";
+        // stopped, it passes the limit by no more than a chunk allocated between two looks
+        // (2 MiB of one-word markings; 4 MiB of a thread's graph), never by a grown table
+        const std::uint64_t chunk = threads == 1 ? std::uint64_t{2} << 20 : threads * (std::uint64_t{4} << 20);
+        EXPECT_LE(cut.peak_bytes, options.max_bytes + chunk) << threads << " threads, " << part << "/32";
       }
     }
   }
 }
 
+TEST(Analysis, UnderALimitJustAboveItsPeakASearchEndsThoughItsTableIsNearlyFull) {
+  // 9 x 19 x 29 x 37 = 183,483 markings, 17 short of the 183,500 at which a table of 2^18
+  // slots grows, each with 32 successors: near its end the walk expands states whose
+  // successors would pass the growth point if all were new, though all are stored. Under a
+  // limit 64 KiB above the whole search's peak it ends, complete: only the successors not
+  // stored yet count towards the table's growth
+  const auto net = tokenRings({9, 19, 29, 37}, 8);
+  ExploreOptions options;
+  const StateSpace whole = explore(*net, options);
+  ASSERT_TRUE(whole.complete);
+  EXPECT_EQ(whole.states, 183'483u);
+  options.max_bytes = whole.peak_bytes + (std::uint64_t{64} << 10);
+  const StateSpace limited = explore(*net, options);
+  EXPECT_TRUE(limited.complete);
+  EXPECT_EQ(limited.states, whole.states);
+  EXPECT_EQ(limited.peak_bytes, whole.peak_bytes);
+}
+
 TEST(MarkingStore, GrowthWithinSaysHowMuchTheTableGrowsAsMarkingsAreAdded) {
   // what --max-memory is checked against before a table grows: for runs of new markings of
-  // every size, from one to past two doublings at once, the table grows by what was said
+  // every size, from one to past two doublings at once, the table grows by what was said.
+  // A marking already stored adds nothing, and the table does not grow for it, even where
+  // it holds as many as it takes before growing (716 in 1,024 slots, after the fifth run)
   detail::Store store(detail::Layout({32}, {false}, {true}));
   std::uint64_t next = 0;
-  for (std::size_t n : {1u, 2u, 7u, 100u, 600u, 1000u, 5000u, 20'000u, 1u, 90'000u, 3u}) {
+  for (std::size_t n : {1u, 2u, 7u, 100u, 606u, 1000u, 5000u, 20'000u, 1u, 90'000u, 3u}) {
     const std::size_t said = store.growthWithin(n), before = store.tableBytes();
     for (std::size_t i = 0; i < n; ++i, ++next) {
       const std::uint64_t m = next;
@@ -703,12 +731,14 @@ TEST(MarkingStore, GrowthWithinSaysHowMuchTheTableGrowsAsMarkingsAreAdded) {
       ASSERT_TRUE(added);
     }
     EXPECT_EQ(store.tableBytes() - before, said) << n;
-    // already there: nothing is added, so the table stays
+    const std::size_t after = store.tableBytes();
     const std::uint64_t again = 0;
     bool added = true;
     store.insert(&again, store.hash(&again), added);
     EXPECT_FALSE(added);
+    EXPECT_EQ(store.tableBytes(), after) << n;
   }
+  EXPECT_EQ(store.size(), next);
   EXPECT_GT(store.tableBytes(), std::size_t{1024} * sizeof(std::uint64_t));
 }
 

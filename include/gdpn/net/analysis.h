@@ -42,8 +42,8 @@ struct ExploreOptions {
   /// Stop (partial answer) past this much memory, bytes; 0: none. Looked at as the search
   /// stores, expands and walks back (one thread every 4,096 new states and every 4,096
   /// states done, the threads after each round of batches), and before a table grows (one
-  /// that would pass it is never grown): a chunk allocated between two looks may pass it
-  /// by that much.
+  /// that would pass it is never grown; only markings not stored yet count towards its
+  /// growth): a chunk allocated between two looks may pass it by that much.
   std::uint64_t max_bytes = 0;
   /// Worker threads. Above 1, markings are shared out among the threads by hash, each
   /// expanding its markings in batches, and the graph is kept as arrays (4 bytes an edge and

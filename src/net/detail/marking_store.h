@@ -249,13 +249,17 @@ class Store {
       if ((e >> 32) == tag && same(at(s), m)) return s;
     }
   }
-  /// The id of `m`, adding it when new (`added` says which).
+  /// The id of `m`, adding it when new (`added` says which). The table grows only as a new
+  /// marking is added (growthWithin() counts those alone).
   StateId insert(const std::uint64_t* m, std::uint64_t h, bool& added) {
-    if (growthWithin(1) != 0) grow();
     const std::uint64_t tag = h >> 32;
     for (std::size_t i = h & (table_.size() - 1);; i = (i + 1) & (table_.size() - 1)) {
       const std::uint64_t e = table_[i];
       if (e == kEmpty) {
+        if (growthWithin(1) != 0) {
+          grow();
+          return insert(m, h, added);
+        }
         const auto s = static_cast<StateId>(size());
         std::uint64_t* slot = arena_.append();
         std::memcpy(slot, m, words() * sizeof(std::uint64_t));
