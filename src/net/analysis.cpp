@@ -443,14 +443,10 @@ Search::Expand Search::expand(StateId v) {
     }
   }
   if (ahead_.index < via.size()) successorsAfter(now_, ahead_.index, ahead_);
-  // a table that would grow past --max-memory stops the search before it grows; near a
-  // growth point only the successors not stored yet count
-  if (options_.max_bytes != 0 && store_->growthWithin(via.size()) != 0) {
-    std::size_t fresh = 0;
-    for (std::size_t i = 0; i < via.size(); ++i) {
-      if (store_->find(now_.keys.data() + i * words, now_.hashes[i]) == kNone) ++fresh;
-    }
-    const std::size_t growth = store_->growthWithin(fresh);
+  // a table that would grow past --max-memory stops the search before it grows
+  if (options_.max_bytes != 0) {
+    const std::size_t growth = store_->growthInserting(
+        via.size(), [&](std::size_t i) { return now_.keys.data() + i * words; }, [&](std::size_t i) { return now_.hashes[i]; });
     if (growth != 0 && bytes() + growth > options_.max_bytes) return Expand::Full;
   }
   std::uint32_t rv = rindex(v);

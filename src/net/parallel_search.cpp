@@ -332,19 +332,13 @@ class Parallel {
   /// markings `key(j)` (of hashes `hash(j)`) are stored: the bytes of growth promised (0
   /// where it does not grow), to be given back with settle() once stored; none (and the
   /// search stops) where the growth would pass the limit, so that no table grows past it.
-  /// Near a growth point only the markings not stored yet count; growth promised by the
-  /// other threads counts until they report their grown tables (the shards fill evenly, so
-  /// their tables grow at nearly the same moment).
+  /// Growth promised by the other threads counts until they report their grown tables (the
+  /// shards fill evenly, so their tables grow at nearly the same moment).
   template <class Key, class Hash>
   std::optional<std::uint64_t> room(unsigned me, std::size_t n, Key key, Hash hash) {
     if (options_.max_bytes == 0) return 0;
     Shard& s = shards_[me];
-    if (s.store->growthWithin(n) == 0) return 0;
-    std::size_t fresh = 0;
-    for (std::size_t j = 0; j < n; ++j) {
-      if (s.store->find(key(j), hash(j)) == kNone) ++fresh;
-    }
-    const std::uint64_t growth = s.store->growthWithin(fresh);
+    const std::uint64_t growth = s.store->growthInserting(n, key, hash);
     if (growth == 0) return 0;
     account(s);
     const std::uint64_t promised = promised_.fetch_add(growth) + growth;

@@ -50,10 +50,9 @@ struct ExploreOptions {
   /// 8 a state more; 8 a state more again after the search where a dead state or one that
   /// cannot get back to the start makes the passes read it by state; reversed for a while,
   /// 5 bytes an edge and 4 a state more, unless that would pass `max_bytes`) for the passes
-  /// that decide liveness and reversibility. A
-  /// net with a place that nothing bounds needs the coverability search (one walk): two
-  /// threads race it against a plain search that never accelerates (the first to end
-  /// answers; without `max_bytes` only).
+  /// that decide liveness and reversibility. A net with a place that nothing bounds needs
+  /// the coverability search (one walk): two threads race it against a plain search that
+  /// never accelerates (the first to end answers; without `max_bytes` only).
   unsigned threads = 1;
   /// Called every 4,096 new states; may be empty.
   std::function<void(const ExploreProgress&)> progress;

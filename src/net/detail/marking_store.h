@@ -214,6 +214,18 @@ class Store {
     while ((size() + n) * 10 > capacity * 7) capacity *= 2;
     return (capacity - table_.size()) * sizeof(std::uint64_t);
   }
+  /// Bytes the table grows by as the `n` markings `key(j)`, of hashes `hash(j)`, are
+  /// inserted: near a growth point only those not stored yet count (a lookup each, there
+  /// alone).
+  template <class Key, class Hash>
+  std::size_t growthInserting(std::size_t n, Key key, Hash hash) const {
+    if (growthWithin(n) == 0) return 0;
+    std::size_t fresh = 0;
+    for (std::size_t j = 0; j < n; ++j) {
+      if (find(key(j), hash(j)) == kNone) ++fresh;
+    }
+    return growthWithin(fresh);
+  }
 
   std::uint64_t hash(const std::uint64_t* m) const {
     std::uint64_t h = 0x243f6a8885a308d3ULL;
