@@ -13,7 +13,11 @@
 namespace gdpn::net {
 namespace {
 
-constexpr std::size_t kWheelSize = 4096;  // power of two
+// Completions due within kNearSize steps wait in the near wheel, by end step modulo its size:
+// its lists, reused every kNearSize steps, stay in the cache. Later ones wait in the far wheel
+// (by end step modulo kFarSize; a full turn of it away, they stay there) until they are near.
+constexpr std::size_t kNearSize = 256;   // power of two
+constexpr std::size_t kFarSize = 4096;   // power of two
 constexpr std::int64_t kMaxSteps = std::int64_t{1} << 60;
 
 std::uint32_t indexOf(std::uint64_t key) { return static_cast<std::uint32_t>(key); }
@@ -122,7 +126,9 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
   for (TransitionId t = 0; t < count; ++t) {
     if (tr_[t].unsat == 0) markEnabled(t);
   }
-  wheel_.resize(kWheelSize);
+  wheel_.resize(kNearSize);
+  far_.resize(kFarSize);
+  near_end_ = static_cast<std::int64_t>(kNearSize) - 1;
 }
 
 void Kernel::addObserver(NetObserver* observer) { observers_.push_back(observer); }
@@ -486,7 +492,10 @@ void Kernel::beginAs(TransitionId t) {
     tr.end_step = end;
   }
   // an immediate occurrence completes below, in this phase: no wheel, no in_fire
-  if (lasts > 0) wheel_[static_cast<std::size_t>(end) & (kWheelSize - 1)].push_back(entry);
+  if (lasts > 0) {
+    if (end <= near_end_) [[likely]] wheel_[static_cast<std::size_t>(end) & (kNearSize - 1)].push_back(entry);
+    else waitFar(entry, end);
+  }
   if ((tr.scripts & kInFire) && lasts > 0) {
     if constexpr (kServers) occ_[entry & ~kOccurrenceBit].seq = start_count_;
     else start_seq_[t] = start_count_;
@@ -630,9 +639,32 @@ void Kernel::deposited(PlaceSlotId ps, const SlotState& st, std::int64_t count) 
   for (std::size_t k = 0; k < tokens.size() && !hooks_->halted(); ++k) hooks_->onDeposit(ps, &tokens[k]);
 }
 
+void Kernel::waitFar(Entry e, std::int64_t end) {
+  far_[static_cast<std::size_t>(end) & (kFarSize - 1)].push_back(e);
+  ++far_count_;
+}
+
 void Kernel::completeOccurrences() {
-  // the occurrences due now, in start order; ones due later (a full turn of the wheel away) stay
-  auto& slot = wheel_[static_cast<std::size_t>(step_) & (kWheelSize - 1)];
+  // the far wheel's occurrences that are now near move, in start order, to the near wheel's
+  // list for their end step: it holds nothing yet (what starts from now on with that end
+  // started later, and follows them)
+  const std::int64_t near_end = step_ + static_cast<std::int64_t>(kNearSize) - 1;
+  if (far_count_ == 0) near_end_ = std::max(near_end_, near_end);
+  for (; near_end_ < near_end;) {
+    ++near_end_;
+    auto& far = far_[static_cast<std::size_t>(near_end_) & (kFarSize - 1)];
+    if (far.empty()) continue;
+    auto& near = wheel_[static_cast<std::size_t>(near_end_) & (kNearSize - 1)];
+    std::size_t kept = 0;
+    for (const Entry e : far) {
+      if (endOf(e) == near_end_) near.push_back(e);
+      else far[kept++] = e;
+    }
+    far_count_ -= far.size() - kept;
+    far.resize(kept);
+  }
+  // the occurrences due now, in start order
+  auto& slot = wheel_[static_cast<std::size_t>(step_) & (kNearSize - 1)];
   due_.clear();
   if (!slot.empty()) {
     std::size_t kept = 0;
@@ -921,6 +953,8 @@ std::size_t Kernel::memoryBytes() const {
                       (carry_.capacity() + carry_next_.capacity() + candidates_.capacity()) * sizeof(Carry) +
                       wheel_.capacity() * sizeof(std::vector<TransitionId>) + due_.capacity() * sizeof(TransitionId);
   for (const auto& w : wheel_) bytes += w.capacity() * sizeof(TransitionId);
+  bytes += far_.capacity() * sizeof(std::vector<TransitionId>);
+  for (const auto& w : far_) bytes += w.capacity() * sizeof(TransitionId);
   for (const auto& f : fifos_) bytes += sizeof(f) + f.size() * sizeof(NodeRef);
   for (const auto& h : held_) bytes += sizeof(h) + h.capacity() * sizeof(h[0]);
   for (const auto& o : occ_) bytes += sizeof(o) + o.held.capacity() * sizeof(o.held[0]);

@@ -551,6 +551,49 @@ TEST(NetKernel, AtMostOneStartPerStepAndOneOccurrenceAtATime) {
   EXPECT_EQ(k.steps(), 15);
 }
 
+// Completions due in the same step come in the order the occurrences started, whether they
+// waited long (beyond the kernel's near wheel of 256 steps, or a whole turn of its far one of
+// 4,096) or a few steps.
+TEST(NetKernel, OccurrencesEndingInOneStepCompleteInStartOrderHoweverLongTheyLasted) {
+  NetBuilder b;
+  // each chain: a wait from step 0, then the occurrence that ends at step 5000 (or 9096)
+  struct Chain {
+    const char* name;
+    double wait, lasts;
+  };
+  const Chain chains[] = {{"Long", 0, 5000}, {"Mid", 300, 4700}, {"Near", 4800, 200}, {"Short", 4990, 10},
+                          {"Later", 0, 9096}};
+  for (const Chain& c : chains) {
+    const std::string name = c.name;
+    const auto in = b.addPlace(name + "In");
+    b.setSlot(in, kDefaultSlot, kControl, kUnbounded, c.wait == 0 ? 1 : 0);
+    if (c.wait > 0) {
+      const auto start = b.addPlace(name + "Start");
+      b.setSlot(start, kDefaultSlot, kControl, kUnbounded, 1);
+      const auto wait = b.addTransition(name + "Wait", seconds(c.wait));
+      b.addInput(start, wait);
+      b.addOutput(wait, in);
+    }
+    const auto out = b.addPlace(name + "Out");
+    const auto t = b.addTransition(name, seconds(c.lasts));
+    b.addInput(in, t);
+    b.addOutput(t, out);
+  }
+  Kernel k(b.freeze(), {1.0, 1});
+  Recorder rec(k.net());
+  k.addObserver(&rec);
+  k.start();
+  while (!k.dead()) k.step();
+  std::vector<std::string> ends;
+  for (const auto& e : rec.events) {
+    if (e.rfind("complete ", 0) == 0 && e.find("Wait") == std::string::npos) ends.push_back(e);
+  }
+  EXPECT_EQ(ends, (std::vector<std::string>{"complete Long @5000", "complete Mid @5000", "complete Near @5000",
+                                            "complete Short @5000", "complete Later @9096"}));
+  for (const Chain& c : chains) EXPECT_EQ(tokens(k, (std::string(c.name) + "Out").c_str()), 1) << c.name;
+  EXPECT_EQ(k.steps(), 9096);
+}
+
 TEST(NetKernel, EffectiveDurationIsWholeStepsAndAtLeastOne) {
   NetBuilder b;
   b.addPlace("P");

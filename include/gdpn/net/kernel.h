@@ -235,6 +235,8 @@ class Kernel {
   [[nodiscard]] const Occurrence* currentOccurrence(TransitionId t) const;
   Entry startOccurrence(TransitionId t, std::int64_t end);  // the bookkeeping of begin() for servers
   void endOccurrence(Entry e);                               // and of finish()
+  // puts `e`, ending at step `end`, in the far wheel (out of line: most occurrences are near)
+  [[gnu::noinline]] void waitFar(Entry e, std::int64_t end);
   bool tryStart(TransitionId t, bool again);
 
   // the same entry: one enabling of one transition
@@ -337,7 +339,10 @@ class Kernel {
     const auto& tr = tr_[static_cast<std::uint32_t>(c.key)];
     return tr.unsat == 0 && tr.enabled_step == c.step;
   }
-  std::vector<std::vector<Entry>> wheel_;  // completions, by end step modulo its size
+  std::vector<std::vector<Entry>> wheel_;  // completions due by near_end_, by end step modulo its size
+  std::vector<std::vector<Entry>> far_;    // later completions, by end step modulo its size
+  std::int64_t near_end_ = 0;              // the last end step whose completions wait in wheel_
+  std::size_t far_count_ = 0;              // completions waiting in far_
   std::vector<Entry> due_;
   std::vector<NodeRef> moved_;  // node tokens of one event, reused
   ScriptHooks* hooks_ = nullptr;
