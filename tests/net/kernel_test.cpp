@@ -551,22 +551,43 @@ TEST(NetKernel, AtMostOneStartPerStepAndOneOccurrenceAtATime) {
   EXPECT_EQ(k.steps(), 15);
 }
 
+/// Adds place `name`In (holding `initial`) -> transition `name` (lasting `lasts` seconds) ->
+/// place `name`Out; returns the input place.
+PlaceId addStage(NetBuilder& b, const std::string& name, std::int64_t initial, double lasts) {
+  const auto in = b.addPlace(name + "In");
+  b.setSlot(in, kDefaultSlot, kControl, kUnbounded, initial);
+  const auto t = b.addTransition(name, seconds(lasts));
+  b.addInput(in, t);
+  b.addOutput(t, b.addPlace(name + "Out"));
+  return in;
+}
+
+/// The "complete ..." events `rec` saw, but those of transitions whose name holds `except`.
+std::vector<std::string> completions(const Recorder& rec, const std::string& except = "\n") {
+  std::vector<std::string> out;
+  for (const auto& e : rec.events) {
+    if (e.rfind("complete ", 0) == 0 && e.find(except) == std::string::npos) out.push_back(e);
+  }
+  return out;
+}
+
 // Completions due in the same step come in the order the occurrences started, whether they
 // waited long (beyond the kernel's near wheel of 256 steps, or a whole turn of its far one of
 // 4,096) or a few steps.
 TEST(NetKernel, OccurrencesEndingInOneStepCompleteInStartOrderHoweverLongTheyLasted) {
   NetBuilder b;
-  // each chain: a wait from step 0, then the occurrence that ends at step 5000 (or 9096)
+  // each chain: a wait from step 0, then the occurrence that ends at step 5000 (or 9096);
+  // declared in the reverse of the order they start, so that neither order can stand in for
+  // the other
   struct Chain {
     const char* name;
     double wait, lasts;
   };
-  const Chain chains[] = {{"Long", 0, 5000}, {"Mid", 300, 4700}, {"Near", 4800, 200}, {"Short", 4990, 10},
-                          {"Later", 0, 9096}};
+  const Chain chains[] = {{"Later", 0, 9096}, {"Short", 4990, 10}, {"Near", 4800, 200}, {"Mid", 300, 4700},
+                          {"Long", 0, 5000}};
   for (const Chain& c : chains) {
     const std::string name = c.name;
-    const auto in = b.addPlace(name + "In");
-    b.setSlot(in, kDefaultSlot, kControl, kUnbounded, c.wait == 0 ? 1 : 0);
+    const auto in = addStage(b, name, c.wait == 0 ? 1 : 0, c.lasts);
     if (c.wait > 0) {
       const auto start = b.addPlace(name + "Start");
       b.setSlot(start, kDefaultSlot, kControl, kUnbounded, 1);
@@ -574,24 +595,46 @@ TEST(NetKernel, OccurrencesEndingInOneStepCompleteInStartOrderHoweverLongTheyLas
       b.addInput(start, wait);
       b.addOutput(wait, in);
     }
-    const auto out = b.addPlace(name + "Out");
-    const auto t = b.addTransition(name, seconds(c.lasts));
-    b.addInput(in, t);
-    b.addOutput(t, out);
   }
   Kernel k(b.freeze(), {1.0, 1});
   Recorder rec(k.net());
   k.addObserver(&rec);
   k.start();
   while (!k.dead()) k.step();
-  std::vector<std::string> ends;
-  for (const auto& e : rec.events) {
-    if (e.rfind("complete ", 0) == 0 && e.find("Wait") == std::string::npos) ends.push_back(e);
-  }
-  EXPECT_EQ(ends, (std::vector<std::string>{"complete Long @5000", "complete Mid @5000", "complete Near @5000",
-                                            "complete Short @5000", "complete Later @9096"}));
+  const std::vector<std::string> order{"complete Long @5000", "complete Mid @5000", "complete Near @5000",
+                                       "complete Short @5000", "complete Later @9096"};
+  EXPECT_EQ(completions(rec, "Wait"), order);
   for (const Chain& c : chains) EXPECT_EQ(tokens(k, (std::string(c.name) + "Out").c_str()), 1) << c.name;
   EXPECT_EQ(k.steps(), 9096);
+}
+
+// The same at the near wheel's edge (255 and 256 steps from now), for occurrences the firing
+// phase starts and ones the user starts between steps.
+TEST(NetKernel, OccurrencesStartedByTheUserCompleteInStartOrderAtTheNearWheelsEdge) {
+  NetBuilder b;
+  const char* names[] = {"G", "F", "E", "D", "C", "B", "A"};
+  const double lasts[] = {100, 300, 245, 246, 257, 256, 255};
+  // A, B and C start in the first firing phase; the user starts the others
+  for (int i = 0; i < 7; ++i) addStage(b, names[i], i >= 4 ? 1 : 0, lasts[i]);
+  Kernel k(b.freeze(), {1.0, 1});
+  Recorder rec(k.net());
+  k.addObserver(&rec);
+  k.start();
+  auto fireNow = [&](const std::string& name) {
+    const auto p = k.net().findPlace(name + "In");
+    ASSERT_GE(p, 0);
+    ASSERT_EQ(k.setMarking(static_cast<PlaceSlotId>(k.net().findPlaceSlot(static_cast<PlaceId>(p), kDefaultSlot)), 1), "");
+    ASSERT_EQ(k.fire(static_cast<TransitionId>(k.net().findTransition(name))), "") << name;
+  };
+  while (k.steps() < 400) {
+    k.step();
+    if (k.steps() == 10) fireNow("D"), fireNow("F");  // end at 256 and 310
+    if (k.steps() == 11) fireNow("E");                 // ends at 256
+    if (k.steps() == 210) fireNow("G");                // ends at 310, after F
+  }
+  const std::vector<std::string> order{"complete A @255", "complete B @256", "complete D @256", "complete E @256",
+                                       "complete C @257", "complete F @310", "complete G @310"};
+  EXPECT_EQ(completions(rec), order);
 }
 
 TEST(NetKernel, EffectiveDurationIsWholeStepsAndAtLeastOne) {

@@ -200,7 +200,7 @@ class Kernel {
     return (a.key >> 32) != (b.key >> 32) ? (a.key >> 32) < (b.key >> 32) : a.step != b.step ? a.step < b.step : a.key < b.key;
   }
 
-  // An occurrence, as the wheel and the in_fire list name it: a transition's index, or, for a
+  // An occurrence, as the wheels and the in_fire list name it: a transition's index, or, for a
   // transition with servers, kOccurrenceBit | its occurrence's index in occ_.
   using Entry = std::uint32_t;
   static constexpr Entry kOccurrenceBit = 0x80000000u;
