@@ -644,36 +644,32 @@ void Kernel::waitFar(Entry e, std::int64_t end) {
   ++far_count_;
 }
 
+std::size_t Kernel::takeEnding(std::vector<Entry>& from, std::int64_t end, std::vector<Entry>& to) const {
+  std::size_t kept = 0;
+  for (const Entry e : from) {
+    if (endOf(e) == end) to.push_back(e);
+    else from[kept++] = e;
+  }
+  const std::size_t taken = from.size() - kept;
+  from.resize(kept);
+  return taken;
+}
+
 void Kernel::completeOccurrences() {
   // the far wheel's occurrences that are now near move, in start order, to the near wheel's
   // list for their end step: it holds nothing yet (what starts from now on with that end
   // started later, and follows them)
+  // (an empty far wheel is not walked)
   const std::int64_t near_end = step_ + static_cast<std::int64_t>(kNearSize) - 1;
-  if (far_count_ == 0) near_end_ = std::max(near_end_, near_end);
-  for (; near_end_ < near_end;) {
+  while (near_end_ < near_end && far_count_ != 0) {
     ++near_end_;
     auto& far = far_[static_cast<std::size_t>(near_end_) & (kFarSize - 1)];
-    if (far.empty()) continue;
-    auto& near = wheel_[static_cast<std::size_t>(near_end_) & (kNearSize - 1)];
-    std::size_t kept = 0;
-    for (const Entry e : far) {
-      if (endOf(e) == near_end_) near.push_back(e);
-      else far[kept++] = e;
-    }
-    far_count_ -= far.size() - kept;
-    far.resize(kept);
+    far_count_ -= takeEnding(far, near_end_, wheel_[static_cast<std::size_t>(near_end_) & (kNearSize - 1)]);
   }
+  near_end_ = near_end;
   // the occurrences due now, in start order
-  auto& slot = wheel_[static_cast<std::size_t>(step_) & (kNearSize - 1)];
   due_.clear();
-  if (!slot.empty()) {
-    std::size_t kept = 0;
-    for (const Entry e : slot) {
-      if (endOf(e) == step_) due_.push_back(e);
-      else slot[kept++] = e;
-    }
-    slot.resize(kept);
-  }
+  takeEnding(wheel_[static_cast<std::size_t>(step_) & (kNearSize - 1)], step_, due_);
   if (in_fire_.empty()) {
     const std::size_t n = due_.size();
     for (std::size_t i = 0; i < n; ++i) {

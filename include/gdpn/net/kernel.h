@@ -237,6 +237,8 @@ class Kernel {
   void endOccurrence(Entry e);                               // and of finish()
   // puts `e`, ending at step `end`, in the far wheel (out of line: most occurrences are near)
   [[gnu::noinline]] void waitFar(Entry e, std::int64_t end);
+  // moves the entries of `from` that end at step `end` to `to`, in order; returns how many
+  std::size_t takeEnding(std::vector<Entry>& from, std::int64_t end, std::vector<Entry>& to) const;
   bool tryStart(TransitionId t, bool again);
 
   // the same entry: one enabling of one transition
