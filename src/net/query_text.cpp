@@ -304,8 +304,9 @@ class Parser {
       if (t.kind == Tok::Number) {
         std::int64_t v = 0;
         const auto r = std::from_chars(t.text.data(), t.text.data() + t.text.size(), v);
-        if (r.ec != std::errc()) return failed(t, "the number " + t.text + " is too large");
+        if (r.ec != std::errc() || v > kMostConstant) return failed(t, "the number " + t.text + " is too large (the most is 2^60)");
         out.constant += v;
+        if (out.constant > kMostConstant) return failed(t, "the numbers of this sum add up to more than 2^60");
       } else if (t.kind == Tok::Quoted || (t.kind == Tok::Name && !keyword(t.text))) {
         const std::int64_t p = place(t.text);
         if (p < 0) {

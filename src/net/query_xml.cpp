@@ -144,10 +144,10 @@ class Reader {
       try {
         std::size_t used = 0;
         out.constant = std::stoll(e.text, &used);
-        if (used == e.text.size()) return true;
+        if (used == e.text.size() && out.constant >= -kMostConstant && out.constant <= kMostConstant) return true;
       } catch (const std::exception&) {
       }
-      fail(e, "'" + e.text + "' is not a whole number");
+      fail(e, "'" + e.text + "' is not a whole number of at most 2^60 in magnitude");
       return false;
     }
     fail(e, "<" + e.name + "> is not an integer expression (<tokens-count> or <integer-constant>)");

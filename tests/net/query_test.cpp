@@ -90,6 +90,10 @@ TEST(QueryText, MistakesAreLocatedByColumn) {
       {"EF \"Think_1 = 1", 4, "never closed"},
       {"AG U = 1", 4, "'U' is a keyword"},
       {"Think_1 = 99999999999999999999", 11, "too large"},
+      {"Think_1 = 1152921504606846977", 11, "too large (the most is 2^60)"},
+      // found by the fuzzer: each below 2^63, their sum beyond it
+      {"8006600002080066040 + 8000000002080066040 = Think_1", 1, "too large"},
+      {"1152921504606846976 + 1 = Think_1", 23, "add up to more than 2^60"},
       {"EF deadlock deadlock", 13, "expected the end"},
       {"", 1, "expected a place"},
   };
@@ -167,6 +171,7 @@ TEST(QueryText, ContestPropertyFilesAreReadAndTheirMistakesLocated) {
   <property><id>b</id><formula><exists-path><somewhere/></exists-path></formula></property>
   <property><id>c</id><formula><negation><place-bound><place>p2</place></place-bound></negation></formula></property>
   <property><id>d</id><formula><integer-le><integer-constant>x1</integer-constant><integer-constant>2</integer-constant></integer-le></formula></property>
+  <property><id>e</id><formula><integer-le><integer-constant>-1152921504606846977</integer-constant><integer-constant>2</integer-constant></integer-le></formula></property>
 </property-set>
 )";
   core::Diagnostics errors;
@@ -178,6 +183,9 @@ TEST(QueryText, ContestPropertyFilesAreReadAndTheirMistakesLocated) {
       << text;
   EXPECT_NE(text.find("bad.xml:4:42: error: <place-bound> is a number"), std::string::npos) << text;
   EXPECT_NE(text.find("bad.xml:5:44: error: 'x1' is not a whole number"), std::string::npos) << text;
+  EXPECT_NE(text.find("bad.xml:6:44: error: '-1152921504606846977' is not a whole number of at most 2^60"),
+            std::string::npos)
+      << text;
   EXPECT_FALSE(readMccProperties(*net, "<property-set><property>", "cut.xml", errors));
 }
 

@@ -14,10 +14,14 @@
 
 namespace gdpn::net {
 
+/// The largest magnitude a sum's constant may have (2^60), so that a sum, and the difference
+/// of two, never overflows 64 bits. The parsers refuse larger constants.
+constexpr std::int64_t kMostConstant = std::int64_t{1} << 60;
+
 /// The integer side of a comparison: the tokens on some place slots, summed, plus a constant.
 struct TokenSum {
   std::vector<PlaceSlotId> slots;  ///< their tokens are added (a slot named twice counts twice)
-  std::int64_t constant = 0;       ///< added to them
+  std::int64_t constant = 0;       ///< added to them; at most kMostConstant in magnitude
 };
 
 /// What a formula node is. State formulas: the atoms and the boolean operators. Path

@@ -24,6 +24,8 @@ class StateCheck {
   /// The tokens `s` counts in `m`.
   std::int64_t sum(const TokenSum& s, const std::uint64_t* m) const {
     std::int64_t total = s.constant;
+    // queries see concrete markings (no ω), fields of at most 32 bits and constants of at most
+    // 2^60 in magnitude: the sum cannot overflow
     for (PlaceSlotId k : s.slots) total += layout_.value(m, k);
     return total;
   }
