@@ -401,14 +401,19 @@ Search::Expand Search::successorsAfter(const Successors& parent, std::size_t i, 
 
 Search::Expand Search::fireEnabled(const std::uint64_t* m, Successors& out) {
   reset(out);
-  for (std::size_t w = 0; w < out.enabled.size(); ++w) {
-    for (std::uint64_t x = out.enabled[w]; x != 0; x &= x - 1) {
+  const std::size_t words = store_->layout().words();
+  std::uint64_t* key = out.keys.data();
+  const std::uint64_t* enabled = out.enabled.data();
+  for (std::size_t w = 0, n = out.enabled.size(); w < n; ++w) {
+    for (std::uint64_t x = enabled[w]; x != 0; x &= x - 1) {
       const auto t = static_cast<TransitionId>(w * 64 + static_cast<std::size_t>(std::countr_zero(x)));
       std::size_t field = 0;
-      bool enabled = false;
-      const Expand e = expandOf(firing_.fireEnabled(t, m, next(out), field), field, enabled);
-      if (e != Expand::Ok) return e;
-      keep(out, t);
+      if (firing_.fireEnabled(t, m, key, field) == Fired::TooBig) return widen(field) ? Expand::Widened : Expand::Overflow;
+      const std::uint64_t h = store_->hash(key);
+      out.t.push_back(t);
+      out.hashes.push_back(h);
+      store_->prefetch(h);
+      key += words;
     }
   }
   return Expand::Ok;
@@ -457,7 +462,7 @@ Search::Expand Search::expand(StateId v) {
     const bool accelerated = cover_ && store_->find(key, h) == kNone && accelerate(key);
     if (accelerated) h = store_->hash(key);
     bool added = false;
-    const StateId w = store_->insert(key, h, added);
+    const StateId w = store_->insert(key, h, now_.peeked[i], added);
     if (added) noteNew(w, v, via[i], accelerated);
     if (i == ahead_.index) ahead_.state = w;
     fired_[via[i]] = true;

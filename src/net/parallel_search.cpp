@@ -156,10 +156,11 @@ class Parallel {
   }
 
   /// Stores `key` in shard `me` (its own thread): its global id. A new marking becomes work.
-  std::uint32_t store(unsigned me, const std::uint64_t* key, std::uint64_t h) {
+  /// `peeked`: what Store::peek(h) gave, or kNone.
+  std::uint32_t store(unsigned me, const std::uint64_t* key, std::uint64_t h, StateId peeked) {
     Shard& s = shards_[me];
     bool added = false;
-    const StateId id = s.store->insert(key, h, added);
+    const StateId id = s.store->insert(key, h, peeked, added);
     if (added && (id & ((1u << kInBlockBits) - 1)) == 0) s.into_blocks.push_back(0);
     ++s.into_blocks[id >> kInBlockBits];
     if (added) {
@@ -170,17 +171,21 @@ class Parallel {
     return global(me, id);
   }
 
-  /// Runs `look(j)` for the `n` lookups j in a row, lookup j of hash `hash(j)` in the table
-  /// of `store(j)`: the table slot of one further ahead and the marking of one nearer ahead on
-  /// their way into the cache.
+  /// Runs `look(j, peeked)` for the `n` lookups j in a row, lookup j of hash `hash(j)` in the
+  /// table of `store(j)`: the table slot of one further ahead and the marking of one nearer
+  /// ahead on their way into the cache. `peeked` is what Store::peek gave for lookup j (kNone
+  /// for the first few, which come too soon to be peeked).
   template <class StoreOf, class Hash, class Look>
   static void lookUpInRow(std::size_t n, StoreOf store, Hash hash, Look look) {
     constexpr std::size_t kSlotAhead = 16, kMarkingAhead = 8;
+    std::array<StateId, kMarkingAhead> peeked;  // lookup j's at j % kMarkingAhead
+    peeked.fill(kNone);
     for (std::size_t j = 0; j < std::min(n, kSlotAhead); ++j) store(j).prefetch(hash(j));
     for (std::size_t j = 0; j < n; ++j) {
       if (j + kSlotAhead < n) store(j + kSlotAhead).prefetch(hash(j + kSlotAhead));
-      if (j + kMarkingAhead < n) store(j + kMarkingAhead).peek(hash(j + kMarkingAhead));
-      look(j);
+      const StateId mine = peeked[j % kMarkingAhead];
+      if (j + kMarkingAhead < n) peeked[j % kMarkingAhead] = store(j + kMarkingAhead).peek(hash(j + kMarkingAhead));
+      look(j, mine);
     }
   }
   /// Stores the `n` markings `key(j)`, of hashes `hash(j)`, in shard `me` (its own thread),
@@ -190,7 +195,7 @@ class Parallel {
     const Store& mine = *shards_[me].store;
     lookUpInRow(
         n, [&](std::size_t) -> const Store& { return mine; }, hash,
-        [&](std::size_t j) { *slot(j) = store(me, key(j), hash(j)); });
+        [&](std::size_t j, StateId peeked) { *slot(j) = store(me, key(j), hash(j), peeked); });
   }
 
   void explore(unsigned me) {
@@ -799,8 +804,8 @@ class Parallel {
     auto table = [&](std::size_t j) -> const Store& { return *shards_[owner(my.hashes[j])].store; };
     lookUpInRow(
         my.hashes.size(), table, [&](std::size_t j) { return my.hashes[j]; },
-        [&](std::size_t j) {
-          const StateId local = table(j).find(my.keys.data() + j * words, my.hashes[j]);
+        [&](std::size_t j, StateId peeked) {
+          const StateId local = table(j).find(my.keys.data() + j * words, my.hashes[j], peeked);
           if (local != kNone) reached(global(owner(my.hashes[j]), local));  // else not reachable: no edge
         });
   }

@@ -5,6 +5,20 @@
 
 namespace gdpn::net::detail {
 
+StateId Store::add(const std::uint64_t* m, std::uint64_t h, std::size_t i, bool& added) {
+  if (growthWithin(1) != 0) {
+    grow();
+    return insert(m, h, added);
+  }
+  const auto s = static_cast<StateId>(size());
+  std::uint64_t* slot = arena_.append();
+  std::memcpy(slot, m, words() * sizeof(std::uint64_t));
+  if (extra_ != 0) slot[words()] = 0;
+  table_[i] = ((h >> 32) << 32) | s;
+  added = true;
+  return s;
+}
+
 void Firing::use(const Layout& layout) {
   words_ = layout.words();
   const std::size_t transitions = net_.transitions().size();
@@ -144,7 +158,7 @@ std::size_t markEnabled(const Firing& firing, const Candidates& candidates, cons
   return added;
 }
 
-Candidates::Candidates(const Net& net, Way way) {
+Candidates::Candidates(const Net& net, Way way) : net_(&net), way_(way) {
   const std::size_t places = net.placeSlots().size();
   // forward: the slots a transition takes from or tests; backward: those it puts into
   auto watches = [way](const Term& term) {
@@ -171,7 +185,7 @@ Candidates::Candidates(const Net& net, Way way) {
   begin_ = count;
   watchers_.resize(count[places]);
   for (TransitionId t = 0; t < net.transitions().size(); ++t) {
-    if (sentinel[t] != kNone) watchers_[count[sentinel[t]]++] = t;
+    if (sentinel[t] != kNone) watchers_[count[sentinel[t]]++].t = t;
   }
 }
 
@@ -185,6 +199,26 @@ void Candidates::use(const Layout& layout) {
     for (std::uint32_t b = 0; b < layout.bits(k); ++b) field_at_[f.word * 64 + f.shift + b] = static_cast<std::uint32_t>(k);
     if (begin_[k + 1] > begin_[k]) watched_[f.word] |= masks_[k];
   }
+  // each watcher's filter (forward only): of the words holding one-bit fields it takes from
+  // or tests (each then needs its bit set, ω aside) other than the slot it watches (whose
+  // field is known not to be 0), the one with the most such fields
+  if (way_ == Way::Backward) return;
+  std::vector<std::uint64_t> bits(layout.words());
+  for (std::size_t k = 0; k < layout.width(); ++k) {
+    for (std::uint32_t i = begin_[k]; i < begin_[k + 1]; ++i) {
+      Watcher& w = watchers_[i];
+      std::fill(bits.begin(), bits.end(), 0);
+      for (const Term& term : net_->termsOf(w.t)) {
+        const auto& f = layout.field(term.place_slot);
+        const bool needed = term.kind == TermKind::Input || term.kind == TermKind::Test;
+        if (needed && term.place_slot != k && f.mask == 1 && !f.omega) bits[f.word] |= std::uint64_t{1} << f.shift;
+      }
+      const auto most = std::max_element(bits.begin(), bits.end(),
+                                         [](std::uint64_t a, std::uint64_t b) { return std::popcount(a) < std::popcount(b); });
+      w.word = static_cast<std::uint32_t>(most - bits.begin());
+      w.bits = *most;
+    }
+  }
 }
 
 void Candidates::findBackward(const std::uint64_t* m, std::vector<TransitionId>& out) const {
@@ -193,7 +227,7 @@ void Candidates::findBackward(const std::uint64_t* m, std::vector<TransitionId>&
     for (std::uint64_t x = m[w] & watched_[w]; x != 0;) {
       const std::uint32_t k = field_at_[w * 64 + static_cast<std::size_t>(std::countr_zero(x))];
       x &= ~masks_[k];
-      out.insert(out.end(), watchers_.begin() + begin_[k], watchers_.begin() + begin_[k + 1]);
+      for (std::uint32_t i = begin_[k]; i < begin_[k + 1]; ++i) out.push_back(watchers_[i].t);
     }
   }
 }
@@ -206,7 +240,8 @@ void Candidates::find(const std::uint64_t* m, const Firing& firing, std::vector<
       const std::uint32_t k = field_at_[w * 64 + static_cast<std::size_t>(std::countr_zero(x))];
       x &= ~masks_[k];
       for (std::uint32_t i = begin_[k]; i < begin_[k + 1]; ++i) {
-        if (firing.ready(watchers_[i], m)) out.push_back(watchers_[i]);
+        const Watcher& c = watchers_[i];
+        if ((m[c.word] & c.bits) == c.bits && firing.ready(c.t, m)) out.push_back(c.t);
       }
     }
   }

@@ -261,31 +261,37 @@ class Store {
       if ((e >> 32) == tag && same(at(s), m)) return s;
     }
   }
+  /// The same, where peek(h) gave `peeked` (a stored state, or kNone): when that is `m`'s
+  /// state, the table is not probed again.
+  StateId find(const std::uint64_t* m, std::uint64_t h, StateId peeked) const {
+    return peeked != kNone && same(at(peeked), m) ? peeked : find(m, h);
+  }
   /// The id of `m`, adding it when new (`added` says which). The table grows only as a new
   /// marking is added (growthWithin() counts those alone).
   StateId insert(const std::uint64_t* m, std::uint64_t h, bool& added) {
+    // inlined where the search looks up each successor: most are stored already, and a new
+    // one is added out of line
     const std::uint64_t tag = h >> 32;
-    for (std::size_t i = h & (table_.size() - 1);; i = (i + 1) & (table_.size() - 1)) {
-      const std::uint64_t e = table_[i];
-      if (e == kEmpty) {
-        if (growthWithin(1) != 0) {
-          grow();
-          return insert(m, h, added);
-        }
-        const auto s = static_cast<StateId>(size());
-        std::uint64_t* slot = arena_.append();
-        std::memcpy(slot, m, words() * sizeof(std::uint64_t));
-        if (extra_ != 0) slot[words()] = 0;
-        table_[i] = (tag << 32) | s;
-        added = true;
-        return s;
-      }
+    const std::uint64_t* table = table_.data();
+    const std::size_t mask = table_.size() - 1;
+    for (std::size_t i = h & mask;; i = (i + 1) & mask) {
+      const std::uint64_t e = table[i];
+      if (e == kEmpty) return add(m, h, i, added);
       const auto s = static_cast<StateId>(e);
       if ((e >> 32) == tag && same(at(s), m)) {
         added = false;
         return s;
       }
     }
+  }
+  /// The same, where peek(h) gave `peeked` (a stored state, or kNone): when that is `m`'s
+  /// state, the table is not probed again.
+  StateId insert(const std::uint64_t* m, std::uint64_t h, StateId peeked, bool& added) {
+    if (peeked != kNone && same(at(peeked), m)) {
+      added = false;
+      return peeked;
+    }
+    return insert(m, h, added);
   }
   /// Frees the table: the markings stay readable by id (at(), extra()), but none can be
   /// looked up or added any more.
@@ -308,6 +314,9 @@ class Store {
 
  private:
   static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+  /// Adds `m` (hash `h`) at table slot `i`, the first empty one of its probe, or, where the
+  /// table is due to grow, into the grown table.
+  StateId add(const std::uint64_t* m, std::uint64_t h, std::size_t i, bool& added);
   bool same(const std::uint64_t* a, const std::uint64_t* b) const {
     for (std::size_t k = 0; k < words(); ++k) {
       if (a[k] != b[k]) return false;
@@ -358,8 +367,18 @@ class Candidates {
   void findBackward(const std::uint64_t* m, std::vector<TransitionId>& out) const;
 
  private:
+  // a watcher, and bits of one word of the marking that must be set for it to be enabled
+  // (those of one-bit fields it takes from or tests; none where it has no such field): a
+  // filter that spares most watchers not enabled the look at their arcs
+  struct Watcher {
+    TransitionId t = 0;
+    std::uint32_t word = 0;
+    std::uint64_t bits = 0;
+  };
+  const Net* net_;
+  Way way_;
   std::vector<std::uint32_t> begin_;    // per place slot: its watchers in watchers_ from here
-  std::vector<TransitionId> watchers_;
+  std::vector<Watcher> watchers_;
   std::vector<TransitionId> always_;
   std::vector<std::uint32_t> field_at_;  // per bit of a packed marking: the field it lies in
   std::vector<std::uint64_t> watched_;   // per word: the bits of fields some transition watches
@@ -412,7 +431,7 @@ class Firing {
   /// it added; false where one leaves its field (no marking gives `m` by `t`). Whether `t` is
   /// enabled in `out` is not asked. Markings without ω only.
   bool unfire(TransitionId t, const std::uint64_t* m, std::uint64_t* out) const {
-    std::memcpy(out, m, words_ * sizeof(std::uint64_t));
+    copy(m, out);
     for (std::uint32_t i = spans_[t].deltas; i < spans_[t + 1].deltas; ++i) {
       const Change& x = deltas_[i];
       const auto before = static_cast<std::int64_t>((out[x.word] >> x.shift) & x.mask) - x.delta;
@@ -421,13 +440,20 @@ class Firing {
     }
     return true;
   }
-  /// The same for a transition enabled() in `m`.
-  Fired fireEnabled(TransitionId t, const std::uint64_t* m, std::uint64_t* out, std::size_t& field) const {
-    if (words_ == 1) {
-      out[0] = m[0];
-    } else {
-      std::memcpy(out, m, words_ * sizeof(std::uint64_t));
+  /// Copies the packed marking `m` to `out`: markings of up to four words word by word, not
+  /// through a call to memcpy.
+  void copy(const std::uint64_t* m, std::uint64_t* out) const {
+    switch (words_) {
+      case 4: out[3] = m[3]; [[fallthrough]];
+      case 3: out[2] = m[2]; [[fallthrough]];
+      case 2: out[1] = m[1]; [[fallthrough]];
+      case 1: out[0] = m[0]; break;
+      default: std::memcpy(out, m, words_ * sizeof(std::uint64_t));
     }
+  }
+  /// As fire(), for a transition enabled() in `m`.
+  Fired fireEnabled(TransitionId t, const std::uint64_t* m, std::uint64_t* out, std::size_t& field) const {
+    copy(m, out);
     const Span& r = spans_[t];
     const Span& end = spans_[t + 1];
     for (std::uint32_t i = r.adds; i < end.adds; ++i) out[adds_[i].word] += adds_[i].add;
