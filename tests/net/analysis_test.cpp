@@ -744,6 +744,42 @@ TEST(MarkingStore, GrowthWithinSaysHowMuchTheTableGrowsAsMarkingsAreAdded) {
   EXPECT_GT(store.tableBytes(), std::size_t{1024} * sizeof(std::uint64_t));
 }
 
+TEST(MarkingStore, ALookupGivenAPeekedStateTrustsItOnlyWhereItIsTheMarking) {
+  // the search passes what Store::peek gave (the first state whose hash tag matches): the
+  // right state, another one, or none. Each gives the marking's own id, and a marking not
+  // stored is added once, whatever was passed. Two-word markings, as the search packs them
+  using detail::StateId;
+  detail::Store store(detail::Layout({40, 40}, {false, false}, {true, true}));
+  std::vector<std::vector<std::uint64_t>> kept;
+  for (std::uint64_t i = 0; i < 1000; ++i) kept.push_back({i, 1000 - i});
+  for (const auto& m : kept) {
+    bool added = false;
+    store.insert(m.data(), store.hash(m.data()), added);
+    ASSERT_TRUE(added);
+  }
+  for (StateId s = 0; s < kept.size(); ++s) {
+    const std::uint64_t* m = kept[s].data();
+    const std::uint64_t h = store.hash(m);
+    EXPECT_EQ(store.peek(h), s);
+    const StateId other = (s + 1) % static_cast<StateId>(kept.size());
+    for (const StateId peeked : {s, other, detail::kNone}) {
+      bool added = true;
+      EXPECT_EQ(store.insert(m, h, peeked, added), s) << s << " " << peeked;
+      EXPECT_FALSE(added);
+      EXPECT_EQ(store.find(m, h, peeked), s) << s << " " << peeked;
+    }
+  }
+  const std::vector<std::uint64_t> fresh{5000, 7};
+  const std::uint64_t h = store.hash(fresh.data());
+  EXPECT_EQ(store.find(fresh.data(), h, StateId{3}), detail::kNone);
+  bool added = false;
+  EXPECT_EQ(store.insert(fresh.data(), h, StateId{3}, added), StateId{1000});
+  EXPECT_TRUE(added);
+  EXPECT_EQ(store.insert(fresh.data(), h, StateId{3}, added), StateId{1000});
+  EXPECT_FALSE(added);
+  EXPECT_EQ(store.size(), 1001u);
+}
+
 TEST(Analysis, ThreadsFindANetLiveThatIsNotReversible) {
   // two tokens in a; `move` takes one to b, `back` two from b and gives one to a: (2, 0) ->
   // (1, 1) <-> (0, 2). The start is never reached again, but the last two markings enable
