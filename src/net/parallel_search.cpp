@@ -259,7 +259,7 @@ class Parallel {
           bool overflow = false;
           for (TransitionId t : candidates) {
             std::size_t field = 0;
-            const Fired f = firing_.fire(t, m, keys.data() + made * words, field);
+            const Fired f = firing_.fireReady(t, m, keys.data() + made * words, field);  // find() gives ready ones
             if (f == Fired::NotEnabled) continue;
             if (f == Fired::TooBig) {
               halt(ExploreStop::Overflow);
