@@ -291,8 +291,10 @@ class Parallel {
           }
           const std::uint64_t* key = keys.data() + i * words;
           auto& box = outbox[to];
-          box.insert(box.end(), key, key + words);
-          box.push_back(reinterpret_cast<std::uintptr_t>(slots[i]));
+          const std::size_t at = box.size();
+          box.resize(at + record);
+          firing_.copy(key, box.data() + at);  // a few words: no call to memmove
+          box[at + words] = reinterpret_cast<std::uintptr_t>(slots[i]);
           if (box.size() >= 1024 * record) flush(to);
         }
         auto key = [&](std::size_t j) { return keys.data() + own[j] * words; };
