@@ -227,7 +227,11 @@ void Kernel::prefetchSlots(TransitionId t) const {
 void Kernel::markEnabled(TransitionId t) {
   // its terms are read when it starts, in this firing phase or the next: fetched now, while
   // its state line is in the cache
-  if (big_) prefetchTerms(t);
+  if (big_) {
+    prefetchTerms(t);
+    // and a drawn duration's law, read as it starts (the net's transition: a line elsewhere)
+    if (tr_[t].fixed_steps < 0) __builtin_prefetch(&net_->transitions()[t].duration);
+  }
   ++enabled_count_;
   tr_[t].enabled_step = settled_ && !in_firing_ ? step_ + 1 : step_;
   const std::uint64_t key = (std::uint64_t{tr_[t].rank} << 32) | t;
