@@ -704,6 +704,7 @@ int run(const RunArgs& a) {
   // alternative circuits watched, so that each circuit's cycle is measured
   const bool reporting = !a.quiet || !a.report.empty() || !a.html.empty();
   if (reporting) model::watchRoundTrips(sim->simulation());
+  if (!reporting) sim->simulation().dropStatistics();  // no report: its figures are not collected
   // the page's plots need every occurrence and every change of tokens (up to a budget)
   std::unique_ptr<gdpn::net::Timeline> timeline;
   if (!a.html.empty()) {

@@ -227,6 +227,12 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
   return sim;
 }
 
+void Simulation::dropStatistics() {
+  if (!stats_) return;
+  kernel_->removeObserver(stats_.get());
+  stats_.reset();
+}
+
 bool Simulation::makeEngine(core::Diagnostics& diags) {
   script::EngineCallbacks callbacks;
   callbacks.log = [this](const std::string& text) {
@@ -666,7 +672,7 @@ RunOutcome Simulation::run(const RunLimits& limits, const ProgressFn& progress,
     trace_->event(kernel_->steps(), "error", "\"message\":" + core::jsonQuote(outcome.message));
   }
   if (trace_out_) trace_out_->flush();
-  stats_->finish(kernel_->steps());
+  if (stats_) stats_->finish(kernel_->steps());
   outcome.steps = kernel_->steps();
   outcome.time = kernel_->now();
   return outcome;

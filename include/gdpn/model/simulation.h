@@ -13,6 +13,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "gdpn/core/assert.h"
 #include "gdpn/model/model.h"
 #include "gdpn/model/signals.h"
 #include "gdpn/net/invariants.h"
@@ -131,8 +132,14 @@ class Simulation {
   /// The kernel (markings, clock).
   net::Kernel& kernel() { return *kernel_; }
   [[nodiscard]] const net::Kernel& kernel() const { return *kernel_; }
-  /// Statistics so far.
-  [[nodiscard]] const net::StatsCollector& stats() const { return *stats_; }
+  /// Statistics so far (the report's figures); not after dropStatistics().
+  [[nodiscard]] const net::StatsCollector& stats() const {
+    GDPN_ASSERT(stats_ != nullptr, "the statistics were dropped");
+    return *stats_;
+  }
+  /// Stops collecting statistics, for a run whose report is never made: the kernel then
+  /// calls one observer less on every start, completion and change of tokens.
+  void dropStatistics();
   /// What renders camera sensors' pictures when a script reads them (the application's: the
   /// model knows nothing of OpenGL). Without one, reading a picture is a script error.
   void setImager(std::shared_ptr<sensors::Imager> imager) {
