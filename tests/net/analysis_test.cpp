@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <random>
 #include <fstream>
 #include <sstream>
 
@@ -778,6 +779,76 @@ TEST(MarkingStore, ALookupGivenAPeekedStateTrustsItOnlyWhereItIsTheMarking) {
   EXPECT_EQ(store.insert(fresh.data(), h, StateId{3}, added), StateId{1000});
   EXPECT_FALSE(added);
   EXPECT_EQ(store.size(), 1001u);
+}
+
+TEST(MarkingStore, CandidatesFoundFromMarkedSlotsMissNoEnabledTransition) {
+  // Candidates::find tests each watcher of a marked slot first against the one-bit fields it
+  // needs in one word: that filter may only drop transitions not enabled. Arcs of every kind,
+  // test arcs, a weight no one-bit field holds, fields in both words of a 70-place marking,
+  // and a layout where some fields are wider (not in any filter) or may be ω; random markings
+  NetBuilder b;
+  std::vector<PlaceId> p;
+  for (int i = 0; i < 70; ++i) p.push_back(b.addPlace("p" + std::to_string(i)));
+  auto at = [&](int i) { return p[static_cast<std::size_t>(i)]; };
+  const auto t0 = b.addTransition("t0");
+  b.addInput(at(0), t0);
+  b.addInput(at(1), t0, kDefaultSlot, 1, ArcKind::Test);
+  b.addInput(at(65), t0);
+  const auto t1 = b.addTransition("t1");
+  b.addInput(at(2), t1, kDefaultSlot, 2);
+  b.addInput(at(3), t1, kDefaultSlot, 1, ArcKind::Test);
+  const auto t2 = b.addTransition("t2");
+  b.addInput(at(66), t2, kDefaultSlot, 1, ArcKind::Test);
+  b.addInput(at(5), t2);
+  b.addInput(at(6), t2, kDefaultSlot, 1, ArcKind::Inhibitor);
+  b.addOutput(t2, at(7));
+  const auto t3 = b.addTransition("t3");
+  for (int i : {67, 68, 69, 7, 8}) b.addInput(at(i), t3);
+  const auto t4 = b.addTransition("t4");
+  b.addOutput(t4, at(9));
+  for (int i = 10; i < 60; ++i) {
+    const auto t = b.addTransition("u" + std::to_string(i));
+    b.addInput(at(i), t);
+    b.addInput(at(i + 1), t, kDefaultSlot, 1, ArcKind::Test);
+    b.addInput(at(64 + i % 6), t);
+    b.addOutput(t, at(i - 1));
+  }
+  const auto net = b.freeze();
+  const std::size_t width = net->placeSlots().size();
+  std::vector<std::uint32_t> ones(width, 1), mixed(width, 1);
+  std::vector<bool> none(width, false), omega(width, false);
+  for (std::size_t k = 0; k < width; k += 7) mixed[k] = 4, omega[k] = k % 14 == 0;
+  std::mt19937_64 random(7);
+  for (const auto& [bits, may_be_omega] : {std::pair{ones, none}, std::pair{mixed, omega}}) {
+    const detail::Layout layout(bits, may_be_omega, std::vector<bool>(width, true));
+    detail::Candidates candidates(*net);
+    detail::Firing firing(*net);
+    candidates.use(layout);
+    firing.use(layout);
+    std::vector<std::int64_t> counts(width);
+    std::vector<std::uint64_t> m(layout.words());
+    std::vector<TransitionId> found;
+    std::size_t enabled = 0;
+    for (int round = 0; round < 4000; ++round) {
+      for (std::size_t k = 0; k < width; ++k) {
+        const auto most = static_cast<std::int64_t>(layout.maxCount(k));
+        counts[k] = static_cast<std::int64_t>(random() % 4) == 0 ? 0 : std::min<std::int64_t>(most, static_cast<std::int64_t>(random() % 3));
+        if (layout.field(k).omega && random() % 5 == 0) counts[k] = detail::kW;
+      }
+      std::size_t bad = 0;
+      ASSERT_TRUE(layout.pack(counts.data(), m.data(), bad));
+      candidates.find(m.data(), firing, found);
+      for (TransitionId t = 0; t < net->transitions().size(); ++t) {
+        const bool is = firing.enabled(t, m.data());
+        enabled += is ? 1 : 0;
+        const bool listed = std::find(found.begin(), found.end(), t) != found.end();
+        EXPECT_TRUE(listed || !is) << net->transitionName(t) << " is enabled, not found, in round " << round;
+        EXPECT_TRUE(!listed || firing.ready(t, m.data())) << net->transitionName(t) << " is found, not ready";
+      }
+    }
+    EXPECT_GT(enabled, 4000u);  // the markings enable many transitions, not a few
+  }
+  (void)t1, (void)t3, (void)t4;
 }
 
 TEST(Analysis, ThreadsFindANetLiveThatIsNotReversible) {

@@ -202,21 +202,26 @@ void Candidates::use(const Layout& layout) {
   // each watcher's filter (forward only): of the words holding one-bit fields it takes from
   // or tests (each then needs its bit set, ω aside) other than the slot it watches (whose
   // field is known not to be 0), the one with the most such fields
+  // (what it costs grows with the terms, not with the words of a marking)
   if (way_ == Way::Backward) return;
-  std::vector<std::uint64_t> bits(layout.words());
+  std::vector<std::pair<std::uint32_t, std::uint64_t>> bits;  // (word, a field's bit)
   for (std::size_t k = 0; k < layout.width(); ++k) {
     for (std::uint32_t i = begin_[k]; i < begin_[k + 1]; ++i) {
       Watcher& w = watchers_[i];
-      std::fill(bits.begin(), bits.end(), 0);
+      bits.clear();
       for (const Term& term : net_->termsOf(w.t)) {
         const auto& f = layout.field(term.place_slot);
         const bool needed = term.kind == TermKind::Input || term.kind == TermKind::Test;
-        if (needed && term.place_slot != k && f.mask == 1 && !f.omega) bits[f.word] |= std::uint64_t{1} << f.shift;
+        if (needed && term.place_slot != k && f.mask == 1 && !f.omega) bits.emplace_back(f.word, std::uint64_t{1} << f.shift);
       }
-      const auto most = std::max_element(bits.begin(), bits.end(),
-                                         [](std::uint64_t a, std::uint64_t b) { return std::popcount(a) < std::popcount(b); });
-      w.word = static_cast<std::uint32_t>(most - bits.begin());
-      w.bits = *most;
+      std::sort(bits.begin(), bits.end());
+      w.word = 0;
+      w.bits = 0;
+      for (std::size_t a = 0, b = 0; a < bits.size(); a = b) {
+        std::uint64_t word = 0;
+        for (b = a; b < bits.size() && bits[b].first == bits[a].first; ++b) word |= bits[b].second;
+        if (std::popcount(word) > std::popcount(w.bits)) w.word = bits[a].first, w.bits = word;
+      }
     }
   }
 }
