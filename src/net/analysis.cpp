@@ -76,10 +76,10 @@ class Search {
   /// Empties `out` for a state's successors; each is made at next(out), then kept.
   void reset(Successors& out) const;
   std::uint64_t* next(Successors& out) const { return out.keys.data() + out.t.size() * store_->layout().words(); }
-  /// Keeps the marking made at next(out) as the successor by `t`: hashed, its table slot
-  /// fetched.
-  void keep(Successors& out, TransitionId t) const {
-    const std::uint64_t h = store_->hash(next(out));
+  /// Keeps the marking made at `key` (next(out)) as the successor by `t`: hashed, its table
+  /// slot fetched.
+  void keep(Successors& out, TransitionId t, const std::uint64_t* key) const {
+    const std::uint64_t h = store_->hash(key);
     out.t.push_back(t);
     out.hashes.push_back(h);
     store_->prefetch(h);
@@ -375,7 +375,7 @@ Search::Expand Search::successors(const std::uint64_t* m, Successors& out) {
     bool enabled = false;
     const Expand e = fireCandidate(t, m, next(out), enabled);
     if (e != Expand::Ok) return e;
-    if (enabled) keep(out, t);
+    if (enabled) keep(out, t, next(out));
   }
   return Expand::Ok;
 }
@@ -403,16 +403,15 @@ Search::Expand Search::fireEnabled(const std::uint64_t* m, Successors& out) {
   reset(out);
   const std::size_t words = store_->layout().words();
   std::uint64_t* key = out.keys.data();
-  const std::uint64_t* enabled = out.enabled.data();
+  const std::uint64_t* bits = out.enabled.data();
   for (std::size_t w = 0, n = out.enabled.size(); w < n; ++w) {
-    for (std::uint64_t x = enabled[w]; x != 0; x &= x - 1) {
+    for (std::uint64_t x = bits[w]; x != 0; x &= x - 1) {
       const auto t = static_cast<TransitionId>(w * 64 + static_cast<std::size_t>(std::countr_zero(x)));
       std::size_t field = 0;
-      if (firing_.fireEnabled(t, m, key, field) == Fired::TooBig) return widen(field) ? Expand::Widened : Expand::Overflow;
-      const std::uint64_t h = store_->hash(key);
-      out.t.push_back(t);
-      out.hashes.push_back(h);
-      store_->prefetch(h);
+      bool enabled = false;
+      const Expand e = expandOf(firing_.fireEnabled(t, m, key, field), field, enabled);
+      if (e != Expand::Ok) return e;
+      keep(out, t, key);
       key += words;
     }
   }

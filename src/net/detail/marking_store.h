@@ -264,7 +264,7 @@ class Store {
   /// The same, where peek(h) gave `peeked` (a stored state, or kNone): when that is `m`'s
   /// state, the table is not probed again.
   StateId find(const std::uint64_t* m, std::uint64_t h, StateId peeked) const {
-    return peeked != kNone && same(at(peeked), m) ? peeked : find(m, h);
+    return isState(peeked, m) ? peeked : find(m, h);
   }
   /// The id of `m`, adding it when new (`added` says which). The table grows only as a new
   /// marking is added (growthWithin() counts those alone).
@@ -287,7 +287,7 @@ class Store {
   /// The same, where peek(h) gave `peeked` (a stored state, or kNone): when that is `m`'s
   /// state, the table is not probed again.
   StateId insert(const std::uint64_t* m, std::uint64_t h, StateId peeked, bool& added) {
-    if (peeked != kNone && same(at(peeked), m)) {
+    if (isState(peeked, m)) {
       added = false;
       return peeked;
     }
@@ -317,6 +317,8 @@ class Store {
   /// Adds `m` (hash `h`) at table slot `i`, the first empty one of its probe, or, where the
   /// table is due to grow, into the grown table.
   StateId add(const std::uint64_t* m, std::uint64_t h, std::size_t i, bool& added);
+  /// Whether `s` (a stored state, or kNone) is the marking `m`.
+  bool isState(StateId s, const std::uint64_t* m) const { return s != kNone && same(at(s), m); }
   bool same(const std::uint64_t* a, const std::uint64_t* b) const {
     for (std::size_t k = 0; k < words(); ++k) {
       if (a[k] != b[k]) return false;
