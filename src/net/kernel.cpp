@@ -20,6 +20,12 @@ constexpr std::size_t kNearSize = 256;   // power of two
 constexpr std::size_t kFarSize = 4096;   // power of two
 constexpr std::int64_t kMaxSteps = std::int64_t{1} << 60;
 
+// Fetches the cache line at `p` into the core's second-level cache, not its first: a big net's
+// firings fetch their lines a whole loop ahead, and a first-level cache (48 KiB, 12 ways) filled
+// that early evicts lines before they are read where many of them fall into the same sets
+// (evenly spaced tokens: in a ring of 10^6 with 100 tokens, 7.9 against 4.6 us a step).
+inline void fetchAhead(const void* p) { __builtin_prefetch(p, 0, 2); }
+
 std::uint32_t indexOf(std::uint64_t key) { return static_cast<std::uint32_t>(key); }
 std::uint64_t rankOf(std::uint64_t key) { return key >> 32; }
 
@@ -202,10 +208,10 @@ void Kernel::prefetchAhead(std::size_t i, std::size_t n, Get get) const {
     const TransitionState& tr = tr_[get(j)];
     for (auto k = tr.terms_begin; k < tr.terms_end; ++k) {
       const SlotState& st = slots_[firing_terms_[k].place_slot];
-      if (st.watch_count > 0) __builtin_prefetch(&tr_[st.first.transition]);
+      if (st.watch_count > 0) fetchAhead(&tr_[st.first.transition]);
     }
   };
-  if (i + kState < n) __builtin_prefetch(&tr_[get(i + kState)]);
+  if (i + kState < n) fetchAhead(&tr_[get(i + kState)]);
   if (i + kTerms < n) prefetchTerms(get(i + kTerms));
   if (i + kSlots < n) prefetchSlots(get(i + kSlots));
   if (i + kWatchers < n) watchers(i + kWatchers);
@@ -215,13 +221,13 @@ void Kernel::prefetchTerms(TransitionId t) const {
   const TransitionState& tr = tr_[t];
   if (tr.terms_end == tr.terms_begin) return;
   // their first and last line (they may straddle lines)
-  __builtin_prefetch(&firing_terms_[tr.terms_begin]);
-  __builtin_prefetch(&firing_terms_[tr.terms_end - 1]);
+  fetchAhead(&firing_terms_[tr.terms_begin]);
+  fetchAhead(&firing_terms_[tr.terms_end - 1]);
 }
 
 void Kernel::prefetchSlots(TransitionId t) const {
   const TransitionState& tr = tr_[t];
-  for (auto k = tr.terms_begin; k < tr.terms_end; ++k) __builtin_prefetch(&slots_[firing_terms_[k].place_slot]);
+  for (auto k = tr.terms_begin; k < tr.terms_end; ++k) fetchAhead(&slots_[firing_terms_[k].place_slot]);
 }
 
 void Kernel::markEnabled(TransitionId t) {
@@ -230,7 +236,7 @@ void Kernel::markEnabled(TransitionId t) {
   if (big_) {
     prefetchTerms(t);
     // and a drawn duration's law, read as it starts (the net's transition: a line elsewhere)
-    if (tr_[t].fixed_steps < 0) __builtin_prefetch(&net_->transitions()[t].duration);
+    if (tr_[t].fixed_steps < 0) fetchAhead(&net_->transitions()[t].duration);
   }
   ++enabled_count_;
   tr_[t].enabled_step = settled_ && !in_firing_ ? step_ + 1 : step_;
@@ -548,7 +554,7 @@ void Kernel::beginAs(TransitionId t) {
     if (st.capacity != kUnbounded) update(term.place_slot);
     // the completion deposits here and looks at the slot's first watcher: fetched now, while
     // the slot's line is in the cache
-    if (big_ && st.watch_count > 0) __builtin_prefetch(&tr_[st.first.transition]);
+    if (big_ && st.watch_count > 0) fetchAhead(&tr_[st.first.transition]);
   }
   chosen_.clear();
 
