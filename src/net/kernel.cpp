@@ -216,7 +216,9 @@ void Kernel::prefetchAhead(std::size_t i, std::size_t n, Get get) const {
   if (i + kSlots < n) prefetchSlots(get(i + kSlots));
 }
 
-void Kernel::prefetchTerms(TransitionId t) const {
+// (prefetchTerms and prefetchSlots are inlined: a call each cost 3 % of a big net's
+// instructions a step; fetchAhead() keeps them from being dropped once inlined)
+inline __attribute__((always_inline)) void Kernel::prefetchTerms(TransitionId t) const {
   const TransitionState& tr = tr_[t];
   if (tr.terms_end == tr.terms_begin) return;
   // their first and last line (they may straddle lines)
@@ -224,7 +226,7 @@ void Kernel::prefetchTerms(TransitionId t) const {
   fetchAhead(&firing_terms_[tr.terms_end - 1]);
 }
 
-void Kernel::prefetchSlots(TransitionId t) const {
+inline __attribute__((always_inline)) void Kernel::prefetchSlots(TransitionId t) const {
   const TransitionState& tr = tr_[t];
   for (auto k = tr.terms_begin; k < tr.terms_end; ++k) fetchAhead(&slots_[firing_terms_[k].place_slot]);
 }
