@@ -19,10 +19,11 @@ std::string numbered(const char* prefix, std::int64_t i) {
 }
 
 /// A ring of n places and n transitions (place i -> t_i -> place i+1) holding `tokens` tokens,
-/// spread evenly. Every transition lasts one step.
-std::shared_ptr<const Net> ring(std::int64_t n, std::int64_t tokens) {
+/// one on every `every`-th place from place 0 (0: spread evenly over the ring). Every
+/// transition lasts one step.
+std::shared_ptr<const Net> ring(std::int64_t n, std::int64_t tokens, std::int64_t every = 0) {
   NetBuilder b;
-  const std::int64_t every = std::max<std::int64_t>(1, n / std::max<std::int64_t>(1, tokens));
+  if (every <= 0) every = std::max<std::int64_t>(1, n / std::max<std::int64_t>(1, tokens));
   for (std::int64_t i = 0; i < n; ++i) {
     const auto p = b.addPlace(numbered("p", i));
     b.setSlot(p, kDefaultSlot, SlotKind::Control, kUnbounded, (i % every == 0 && i / every < tokens) ? 1 : 0);
@@ -104,6 +105,15 @@ void BM_StepConstantActivity(benchmark::State& state) {
   state.counters["transitions"] = static_cast<double>(n);
 }
 BENCHMARK(BM_StepConstantActivity)->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kNanosecond);
+
+// the same 100 tokens on a ring of 10^6, each k transitions apart: a line is read again k steps
+// after its last use, so the step's cost shows where its lines come from (k = 8: the caches)
+void BM_StepTokensApart(benchmark::State& state) {
+  Kernel k(ring(1000000, 100, state.range(0)), {0.01, 1});
+  k.start();
+  for (auto _ : state) k.step();
+}
+BENCHMARK(BM_StepTokensApart)->Arg(8)->Arg(64)->Arg(251)->Arg(1009)->Arg(9973)->Unit(benchmark::kNanosecond);
 
 // bytes of the frozen net and of the kernel's state, per place and per transition of a ring
 // (one place, one transition and two arc terms per element)
