@@ -779,5 +779,60 @@ TEST(SortKeys, SortsLargeUnsortedInputByRadix) {
   }
 }
 
+// A ring of n places and n transitions (place i -> t_i -> place i+1), a token on every
+// `every`-th place, each transition lasting `duration`.
+std::shared_ptr<const Net> bigRing(std::uint32_t n, std::uint32_t every, Duration duration) {
+  NetBuilder b;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const auto p = b.addPlace("p" + std::to_string(i));
+    b.setSlot(p, kDefaultSlot, kControl, kUnbounded, i % every == 0 ? 1 : 0);
+  }
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const auto t = b.addTransition("t" + std::to_string(i), duration);
+    b.addInput(static_cast<PlaceId>(i), t);
+    b.addOutput(t, static_cast<PlaceId>((i + 1) % n));
+  }
+  return b.freeze();
+}
+
+// A net whose state passes 4 MiB fires with what it reads fetched ahead (the kernel's big-net
+// path, which no smaller test reaches): the same firings as the rules give.
+TEST(NetKernel, ABigNetFiresWhatItsRulesSay) {
+  constexpr std::uint32_t n = 40000, every = 1000, steps = 2500;
+  Kernel k(bigRing(n, every, seconds(0.01)), {0.01, 1});
+  ASSERT_GE(k.memoryBytes(), std::size_t{4} << 20);
+  k.start();
+  for (std::uint32_t s = 0; s < steps; ++s) k.step();
+  // every step, each token moves on by one transition: after `steps` steps, the token that
+  // started on place j * every occurs in transition j * every + steps
+  EXPECT_EQ(k.startCount(), std::uint64_t{n / every} * (steps + 1));
+  EXPECT_EQ(k.occurringCount(), n / every);
+  for (std::uint32_t t = 0; t < n; ++t) {
+    const bool expected = (t + n - steps % n) % every == 0;
+    ASSERT_EQ(k.occurring(t), expected) << "t" << t;
+    if (expected) {
+      ASSERT_EQ(k.startStep(t), steps) << "t" << t;
+    }
+  }
+  for (PlaceSlotId ps = 0; ps < n; ++ps) ASSERT_EQ(k.marking(ps), 0);
+
+  // drawn durations (their laws fetched ahead too): tokens kept, and the same run twice
+  auto drawn = bigRing(n, every, Duration{Duration::Law::Uniform, 0.01, 0.05, {}});
+  Kernel a(drawn, {0.01, 7}), c(drawn, {0.01, 7});
+  a.start();
+  c.start();
+  for (std::uint32_t s = 0; s < steps; ++s) a.step(), c.step();
+  std::uint32_t held = 0;
+  for (std::uint32_t t = 0; t < n; ++t) {
+    ASSERT_EQ(a.occurring(t), c.occurring(t)) << "t" << t;
+    ASSERT_EQ(a.endStep(t), c.endStep(t)) << "t" << t;
+    held += a.occurring(t) ? 1u : 0u;
+  }
+  for (PlaceSlotId ps = 0; ps < n; ++ps) held += static_cast<std::uint32_t>(a.marking(ps));
+  EXPECT_EQ(held, n / every);
+  EXPECT_EQ(a.startCount(), c.startCount());
+  EXPECT_GT(a.startCount(), std::uint64_t{n / every} * steps / 5);
+}
+
 }  // namespace
 }  // namespace gdpn::net
