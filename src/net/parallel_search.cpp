@@ -565,8 +565,12 @@ class Parallel {
   /// The number of states with a path to `s0`, each set in `reach` (a bit per id). First
   /// sweeps over the runs in the order they were written, each marking a state one of whose
   /// successors is marked: a search from the start tends to write a state after those on its
-  /// way back, so that a few sweeps mark them all. Where a sweep marks less than a hundredth
-  /// of the states left, breadth first backward from the states marked: first over
+  /// way back, so that a few sweeps mark them all. The sweeps go on while each marks a
+  /// hundredth of the states left or twice what the one before it marked (marks that
+  /// grow geometrically: at most log2 of the states such sweeps, each a pass over the edges
+  /// in order; SmallOperatingSystem's first marks 10 states, its sixth 117,000, and 17 mark
+  /// all 4.1 M in less time than reversing the edges takes). Once they stop,
+  /// breadth first backward from the states marked: first over
   /// predecessors made by undoing the transitions that may have led to each state, looked up
   /// in the tables (what it costs grows with the states reached, nothing more is held); once
   /// a sixteenth of the states are marked, over the edges reversed (5 bytes an edge and 4 a
@@ -588,6 +592,7 @@ class Parallel {
     };
     std::vector<Sweep> sweeps(threads_);
     bool listed = false, stuck = false;  // stuck: a sweep marked none, the rest cannot get back
+    std::uint64_t last = 1;                // what the sweep before marked (the first: the start)
     while (marked < states) {
       const std::uint64_t before = marked;
       const bool list = !listed && (states - marked) * 8 < states;
@@ -617,7 +622,9 @@ class Parallel {
       listed = listed || list;
       for (Sweep& my : sweeps) marked += std::exchange(my.marked, 0);
       stuck = marked == before;
-      if ((marked - before) * 100 < states - before) break;
+      const std::uint64_t now = marked - before;
+      if (now * 100 < states - before && now < 2 * last) break;
+      last = now;
     }
     std::uint64_t listing = 0;
     for (Sweep& my : sweeps) listing += my.left.capacity() * sizeof(std::size_t), std::vector<std::size_t>().swap(my.left);

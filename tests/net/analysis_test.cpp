@@ -621,38 +621,60 @@ std::shared_ptr<const Net> tokenRings(int rings, int places, int copies = 1) {
   return tokenRings(std::vector<int>(static_cast<std::size_t>(rings), places), copies);
 }
 
+/// One ring of `places` places, `tokens` tokens on its first place, each step of the ring made
+/// by `copies` transitions: C(places + tokens - 1, tokens) markings, every one on the way back
+/// to the start. A marking's way back is as long as its tokens are from the first place, and
+/// the search writes a marking before those further on, so that a sweep over the graph in
+/// that order marks about one level of the way back: the sweeps stop after one or two.
+std::shared_ptr<const Net> tokensOnARing(int places, int tokens, int copies = 1) {
+  NetBuilder b;
+  std::vector<PlaceId> ring;
+  for (int i = 0; i < places; ++i) {
+    ring.push_back(b.addPlace("r" + std::to_string(i)));
+    b.setSlot(ring.back(), kDefaultSlot, SlotKind::Control, kUnbounded, i == 0 ? tokens : 0);
+  }
+  for (int i = 0; i < places; ++i) {
+    for (int c = 0; c < copies; ++c) {
+      const auto t = b.addTransition("t" + std::to_string(i) + "_" + std::to_string(c));
+      b.addInput(ring[static_cast<std::size_t>(i)], t);
+      b.addOutput(t, ring[static_cast<std::size_t>((i + 1) % places)]);
+    }
+  }
+  return b.freeze();
+}
+
 TEST(Analysis, ThreadsShareTheWayBackOverLevelsOfThousandsOfStates) {
-  // a token on each of three rings of 60 places: 60^3 markings, every one on the way back to
-  // the start (reversible and live). The ways back are long, so the threads go breadth first
-  // backward, looking predecessors up and past a sixteenth of the states over the edges
-  // reversed; the levels far from the start hold up to about 2,700 markings each, which they
-  // share.
-  constexpr int kRing = 60, kRings = 3;
-  const auto net = tokenRings(kRings, kRing);
+  // three tokens on a ring of 120 places: C(122, 3) = 295,240 markings, every one on the way
+  // back to the start (reversible and live), as many edges as the tokens stand on distinct
+  // places. The sweeps make little headway, so the threads go breadth first backward, looking
+  // predecessors up and past a sixteenth of the states over the edges reversed; the levels
+  // far from the start hold up to 1,830 markings each, which they share.
+  const auto net = tokensOnARing(120, 3);
   for (const unsigned threads : {1u, 2u, 3u}) {
     const auto s = exploreWith(*net, threads);
-    EXPECT_EQ(s.states, 216'000u) << threads;
-    EXPECT_EQ(s.edges, 3u * 216'000u) << threads;
+    EXPECT_EQ(s.states, 295'240u) << threads;
+    // markings with the tokens on 3, 2 and 1 places: C(120, 3), 120 * 119 and 120
+    EXPECT_EQ(s.edges, 3u * 280'840u + 2u * 14'280u + 120u) << threads;
     EXPECT_TRUE(s.reversible) << threads;
     EXPECT_TRUE(s.live) << threads;
   }
 }
 
 TEST(Analysis, UnderAMemoryLimitThreadsFindTheWayBackWithoutReversingTheEdges) {
-  // a token on each of four rings of 24 places, each step of a ring made by two transitions:
-  // 24^4 markings, eight edges each, the ways back too long for the sweeps. Reversed, the
-  // edges take several MiB more than the search held at its end. Under a limit 2 MiB below
-  // the reversing peak, which the search fits in, the way back is searched by looking
+  // three tokens on a ring of 120 places, each step made by two transitions: 295,240
+  // markings, twice as many edges as above, the ways back too long for the sweeps. Reversed,
+  // the edges take several MiB more than the search held at its end. Under a limit 2 MiB
+  // below the reversing peak, which the search fits in, the way back is searched by looking
   // predecessors up, with the same answers, within the limit (reversing would pass it)
-  const auto net = tokenRings(4, 24, 2);
+  const auto net = tokensOnARing(120, 3, 2);
   ExploreOptions options;
   options.threads = 2;
   std::uint64_t searching = 0;  // the most the search held, as its progress reports say
   options.progress = [&](const ExploreProgress& p) { searching = std::max(searching, p.bytes); };
   const StateSpace reversing = explore(*net, options);
   ASSERT_TRUE(reversing.complete);
-  EXPECT_EQ(reversing.states, 331'776u);
-  EXPECT_EQ(reversing.edges, 8u * 331'776u);
+  EXPECT_EQ(reversing.states, 295'240u);
+  EXPECT_EQ(reversing.edges, 2u * (3u * 280'840u + 2u * 14'280u + 120u));
   EXPECT_TRUE(reversing.reversible);
   options.max_bytes = reversing.peak_bytes - (std::uint64_t{2} << 20);
   ASSERT_GT(options.max_bytes, searching + (std::uint64_t{1} << 20));
