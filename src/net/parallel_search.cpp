@@ -70,6 +70,9 @@ struct Shard {
   std::vector<std::uint32_t> into_blocks;
 };
 
+/// The most sweeps over all of the graph's runs on the way back to the start: past them,
+/// reversing the edges (a few passes over them) costs less.
+constexpr unsigned kWholeSweeps = 32;
 /// States (local ids) in one block of the edges reversed: a byte names one in its block.
 constexpr unsigned kInBlockBits = 8;
 
@@ -566,16 +569,17 @@ class Parallel {
   /// sweeps over the runs in the order they were written, each marking a state one of whose
   /// successors is marked: a search from the start tends to write a state after those on its
   /// way back, so that a few sweeps mark them all. The sweeps go on while each marks a
-  /// hundredth of the states left or twice what the one before it marked (marks that
-  /// grow geometrically: at most log2 of the states such sweeps, each a pass over the edges
-  /// in order; SmallOperatingSystem's first marks 10 states, its sixth 117,000, and 17 mark
-  /// all 4.1 M in less time than reversing the edges takes). Once they stop,
-  /// breadth first backward from the states marked: first over
-  /// predecessors made by undoing the transitions that may have led to each state, looked up
-  /// in the tables (what it costs grows with the states reached, nothing more is held); once
-  /// a sixteenth of the states are marked, over the edges reversed (5 bytes an edge and 4 a
-  /// state for the time it takes, far fewer misses), unless they would pass
-  /// ExploreOptions::max_bytes. Drops the tables either way.
+  /// hundredth of the states left, or twice what the one before it marked (such growth from
+  /// the start's 1 lasts at most log2 of the states / 100 sweeps), and for kWholeSweeps passes
+  /// over all runs at most (once fewer than an eighth are left, the sweeps go over a list of
+  /// those alone). SmallOperatingSystem's first sweep marks 10 states, the first six 116,000
+  /// together, and 17 mark all 4.1 M in less time than reversing its edges takes. Then, where
+  /// states are left and the last sweep marked some, breadth first backward from the states
+  /// marked: first over predecessors made by undoing the transitions that may have led to
+  /// each state, looked up in the tables (what it costs grows with the states reached,
+  /// nothing more is held); once a sixteenth of the states are marked, over the edges
+  /// reversed (5 bytes an edge and 4 a state for the time it takes, far fewer misses), unless
+  /// they would pass ExploreOptions::max_bytes. Drops the tables either way.
   std::uint64_t reachingStart(std::uint64_t ids, std::uint32_t s0, std::uint64_t states, std::vector<std::uint64_t>& reach) {
     reach.assign((ids + 63) / 64, 0);
     auto isMarked = [&](std::uint32_t g) { return isSet(reach, g); };
@@ -593,6 +597,7 @@ class Parallel {
     std::vector<Sweep> sweeps(threads_);
     bool listed = false, stuck = false;  // stuck: a sweep marked none, the rest cannot get back
     std::uint64_t last = 1;                // what the sweep before marked (the first: the start)
+    unsigned whole = 0;                    // sweeps over all runs so far
     while (marked < states) {
       const std::uint64_t before = marked;
       const bool list = !listed && (states - marked) * 8 < states;
@@ -619,11 +624,13 @@ class Parallel {
           });
         }
       });
+      whole += listed ? 0 : 1;
       listed = listed || list;
       for (Sweep& my : sweeps) marked += std::exchange(my.marked, 0);
       stuck = marked == before;
       const std::uint64_t now = marked - before;
       if (now * 100 < states - before && now < 2 * last) break;
+      if (!listed && whole >= kWholeSweeps) break;
       last = now;
     }
     std::uint64_t listing = 0;

@@ -624,8 +624,9 @@ std::shared_ptr<const Net> tokenRings(int rings, int places, int copies = 1) {
 /// One ring of `places` places, `tokens` tokens on its first place, each step of the ring made
 /// by `copies` transitions: C(places + tokens - 1, tokens) markings, every one on the way back
 /// to the start. A marking's way back is as long as its tokens are from the first place, and
-/// the search writes a marking before those further on, so that a sweep over the graph in
-/// that order marks about one level of the way back: the sweeps stop after one or two.
+/// the search mostly writes a marking before those further on, so that a sweep over the graph
+/// in that order marks about one level of the way back: the sweeps stop after a few (usually
+/// the first), having marked far fewer than a sixteenth of the markings.
 std::shared_ptr<const Net> tokensOnARing(int places, int tokens, int copies = 1) {
   NetBuilder b;
   std::vector<PlaceId> ring;
@@ -661,12 +662,12 @@ TEST(Analysis, ThreadsShareTheWayBackOverLevelsOfThousandsOfStates) {
 }
 
 TEST(Analysis, UnderAMemoryLimitThreadsFindTheWayBackWithoutReversingTheEdges) {
-  // three tokens on a ring of 120 places, each step made by two transitions: 295,240
-  // markings, twice as many edges as above, the ways back too long for the sweeps. Reversed,
-  // the edges take several MiB more than the search held at its end. Under a limit 2 MiB
+  // three tokens on a ring of 120 places, each step made by four transitions: 295,240
+  // markings, four times as many edges as above, the ways back too long for the sweeps.
+  // Reversed, the edges take about 14 MiB more than the search held. Under a limit 2 MiB
   // below the reversing peak, which the search fits in, the way back is searched by looking
   // predecessors up, with the same answers, within the limit (reversing would pass it)
-  const auto net = tokensOnARing(120, 3, 2);
+  const auto net = tokensOnARing(120, 3, 4);
   ExploreOptions options;
   options.threads = 2;
   std::uint64_t searching = 0;  // the most the search held, as its progress reports say
@@ -674,7 +675,7 @@ TEST(Analysis, UnderAMemoryLimitThreadsFindTheWayBackWithoutReversingTheEdges) {
   const StateSpace reversing = explore(*net, options);
   ASSERT_TRUE(reversing.complete);
   EXPECT_EQ(reversing.states, 295'240u);
-  EXPECT_EQ(reversing.edges, 2u * (3u * 280'840u + 2u * 14'280u + 120u));
+  EXPECT_EQ(reversing.edges, 4u * (3u * 280'840u + 2u * 14'280u + 120u));
   EXPECT_TRUE(reversing.reversible);
   options.max_bytes = reversing.peak_bytes - (std::uint64_t{2} << 20);
   ASSERT_GT(options.max_bytes, searching + (std::uint64_t{1} << 20));
