@@ -31,6 +31,10 @@ namespace {
 using Succ = Chunked<std::uint32_t, 20>;
 /// Fills the end of a chunk of successor slots that the next run did not fit in.
 constexpr std::uint32_t kPad = 0xffffffffu;
+/// Set in a run's first slot, which holds the state's own global id (ids keep their top bit
+/// free): its successors' ids follow, up to the next slot with this bit (another run or kPad)
+/// or the end of the chunk's slots in use.
+constexpr std::uint32_t kHead = 0x80000000u;
 
 /// Whether bit `g` of the bit set `bits` is set.
 bool isSet(const std::vector<std::uint64_t>& bits, std::uint32_t g) { return ((bits[g >> 6] >> (g & 63)) & 1) != 0; }
@@ -59,8 +63,8 @@ struct Shard {
   std::atomic<std::uint64_t> bytes{0};  // what the store holds, as its thread last saw
   std::uint64_t dead = 0;               // states expanded without a successor
   std::uint64_t fresh = 0;              // states stored, not yet in Parallel::states_
-  // the graph: each state expanded has a run in succ, in the order they were expanded: the
-  // number of its successors, its own global id, then theirs (global ids); a chunk's room too
+  // the graph: each state expanded has a run in succ, in the order they were expanded: its
+  // own global id with kHead set, then its successors' (global ids); a chunk's room too
   // small for the next run is filled with kPad. Local state i's run starts at first[i], found
   // after the search and only where a state's run is read by its id (findRunStarts())
   Chunked<std::uint64_t, 18> first;
@@ -273,13 +277,12 @@ class Parallel {
             ++made;
           }
           const std::size_t count = made - begin;
-          const std::size_t run = s.succ.appendRun(count + 2, kPad);
-          s.succ.at(run)[0] = static_cast<std::uint32_t>(count);
-          s.succ.at(run)[1] = global(me, v);
+          const std::size_t run = s.succ.appendRun(count + 1, kPad);
+          s.succ.at(run)[0] = global(me, v) | kHead;
           if (count == 0 && !overflow) ++s.dead;
           if (slots.size() < made) slots.resize(2 * made), hashes.resize(2 * made);
           for (std::size_t i = begin; i < made; ++i) {
-            slots[i] = s.succ.at(run + 2 + (i - begin));
+            slots[i] = s.succ.at(run + 1 + (i - begin));
             hashes[i] = s.store->hash(keys.data() + i * words);
           }
         }
@@ -370,14 +373,28 @@ class Parallel {
     stop_flag_ = true;
   }
 
-  const std::uint32_t* succBegin(std::uint32_t g) const {
-    const Shard& s = shardOf(g);
-    return s.succ.at(s.first[localOf(g)]) + 2;
+  /// A state's run: its global id and its successors', [begin, end).
+  struct Run {
+    std::uint32_t v;
+    const std::uint32_t* begin;
+    const std::uint32_t* end;
+  };
+  /// The run whose first slot is data[i], in a chunk of `size` slots in use.
+  static Run runIn(const std::uint32_t* data, std::size_t i, std::size_t size) {
+    std::size_t j = i + 1;
+    while (j < size && (data[j] & kHead) == 0) ++j;
+    return {data[i] & ~kHead, data + i + 1, data + j};
   }
-  const std::uint32_t* succEnd(std::uint32_t g) const {
+  /// The run that starts at slot `at` of shard `s`.
+  static Run runAt(const Shard& s, std::size_t at) {
+    const std::size_t c = at / Succ::chunkElements();
+    const auto [data, size] = s.succ.chunk(c);
+    return runIn(data, at - c * Succ::chunkElements(), size);
+  }
+  /// State g's run (Shard::first found).
+  Run runOf(std::uint32_t g) const {
     const Shard& s = shardOf(g);
-    const std::uint32_t* run = s.succ.at(s.first[localOf(g)]);
-    return run + 2 + *run;
+    return runAt(s, s.first[localOf(g)]);
   }
   const std::uint64_t* marking(std::uint32_t g) const { return shardOf(g).store->at(localOf(g)); }
 
@@ -437,7 +454,8 @@ class Parallel {
     std::vector<TransitionId> candidates;
     auto visit = [&](std::uint32_t v) {
       rindex[v] = index++;
-      frames.push_back({v, succBegin(v), succEnd(v), true});
+      const Run r = runOf(v);
+      frames.push_back({v, r.begin, r.end, true});
     };
     visit(s0);
     while (!frames.empty()) {
@@ -503,10 +521,12 @@ class Parallel {
     // the walk (which state it starts from depends on the threads' timing; the answer does
     // not: where this finds nothing, the components decide)
     std::uint64_t seed = 0x9e3779b97f4a7c15ULL;
-    for (int step = 0; step < (1 << 16) && succBegin(v) != succEnd(v); ++step) {
+    for (int step = 0; step < (1 << 16); ++step) {
+      const Run r = runOf(v);
+      if (r.begin == r.end) break;
       seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
-      const auto n = static_cast<std::uint64_t>(succEnd(v) - succBegin(v));
-      v = succBegin(v)[((seed >> 33) * n) >> 31];
+      const auto n = static_cast<std::uint64_t>(r.end - r.begin);
+      v = r.begin[((seed >> 33) * n) >> 31];
     }
     const std::size_t transitions = net_.transitions().size();
     std::vector<bool> fires(transitions, false);
@@ -523,7 +543,8 @@ class Parallel {
         held();
         return false;
       }
-      for (const std::uint32_t* e = succBegin(w); e != succEnd(w); ++e) {
+      const Run r = runOf(w);
+      for (const std::uint32_t* e = r.begin; e != r.end; ++e) {
         if (isSet(seen, *e)) continue;
         set(seen, *e);
         queue.push_back(*e);
@@ -545,8 +566,10 @@ class Parallel {
     const std::size_t chunks = (s.succ.size() + Succ::chunkElements() - 1) / Succ::chunkElements();
     for (std::size_t c = 0; c < chunks; ++c) {
       const auto [data, size] = s.succ.chunk(c);
-      for (std::size_t i = 0; i < size && data[i] != kPad; i += 2 + data[i]) {
-        f(c * Succ::chunkElements() + i, data[i + 1], data + i + 2, data + i + 2 + data[i]);
+      for (std::size_t i = 0; i < size && data[i] != kPad;) {
+        const Run r = runIn(data, i, size);
+        f(c * Succ::chunkElements() + i, r.v, r.begin, r.end);
+        i = static_cast<std::size_t>(r.end - data);
       }
     }
   }
@@ -615,8 +638,8 @@ class Parallel {
         };
         if (listed) {
           std::erase_if(my.left, [&](std::size_t at) {
-            const std::uint32_t* run = shards_[me].succ.at(at);
-            return sweep(run[1], run + 2, run + 2 + run[0]);
+            const Run r = runAt(shards_[me], at);
+            return sweep(r.v, r.begin, r.end);
           });
         } else {
           forEachRunAt(shards_[me], [&](std::size_t at, std::uint32_t v, const std::uint32_t* begin, const std::uint32_t* end) {
@@ -835,7 +858,8 @@ class Parallel {
     peak_ = std::max(peak_, bytes() + ids * 2 * sizeof(std::uint32_t));
     for (std::size_t head = 0; head < queue.size(); ++head) {
       const std::uint32_t v = queue[head];
-      if (succBegin(v) == succEnd(v)) {
+      const Run r = runOf(v);
+      if (r.begin == r.end) {
         for (std::uint32_t x = v; x != s0; x = parent[x]) {
           // the k-th successor comes from the k-th enabled transition
           std::uint32_t k = via[x];
@@ -851,10 +875,10 @@ class Parallel {
         std::reverse(out.deadlock_path.begin(), out.deadlock_path.end());
         return;
       }
-      for (const std::uint32_t* e = succBegin(v); e != succEnd(v); ++e) {
+      for (const std::uint32_t* e = r.begin; e != r.end; ++e) {
         if (parent[*e] != 0xffffffffu) continue;
         parent[*e] = v;
-        via[*e] = static_cast<std::uint32_t>(e - succBegin(v));
+        via[*e] = static_cast<std::uint32_t>(e - r.begin);
         queue.push_back(*e);
       }
     }
