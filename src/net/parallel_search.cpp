@@ -26,8 +26,8 @@
 namespace gdpn::net::detail {
 namespace {
 
-/// Successor slots in one chunk of the graph arrays: a state's run of them (its count and its
-/// successors) never crosses a chunk.
+/// Successor slots in one chunk of the graph arrays: a state's run of them (its own id and
+/// its successors') never crosses a chunk.
 using Succ = Chunked<std::uint32_t, 20>;
 /// Fills the end of a chunk of successor slots that the next run did not fit in.
 constexpr std::uint32_t kPad = 0xffffffffu;
