@@ -597,15 +597,16 @@ TEST(Analysis, ThreadsDecideReversibilityOnALongRingWithAndWithoutAWayOut) {
 
 /// Rings of `sizes` places, a token on each ring's first place: the product of the sizes in
 /// markings, every one on the way back to the start, each with a successor per ring, reached
-/// by `copies` transitions each (as many edges).
-std::shared_ptr<const Net> tokenRings(const std::vector<int>& sizes, int copies = 1) {
+/// by `copies` transitions each (as many edges). With `tokens` on each first place, a ring of
+/// n places has C(n + tokens - 1, tokens) markings.
+std::shared_ptr<const Net> tokenRings(const std::vector<int>& sizes, int copies = 1, int tokens = 1) {
   NetBuilder b;
   for (int r = 0; r < static_cast<int>(sizes.size()); ++r) {
     const int places = sizes[static_cast<std::size_t>(r)];
     std::vector<PlaceId> ring;
     for (int i = 0; i < places; ++i) {
       ring.push_back(b.addPlace("r" + std::to_string(r) + "_" + std::to_string(i)));
-      b.setSlot(ring.back(), kDefaultSlot, SlotKind::Control, kUnbounded, i == 0 ? 1 : 0);
+      b.setSlot(ring.back(), kDefaultSlot, SlotKind::Control, kUnbounded, i == 0 ? tokens : 0);
     }
     for (int i = 0; i < places; ++i) {
       for (int c = 0; c < copies; ++c) {
@@ -621,28 +622,12 @@ std::shared_ptr<const Net> tokenRings(int rings, int places, int copies = 1) {
   return tokenRings(std::vector<int>(static_cast<std::size_t>(rings), places), copies);
 }
 
-/// One ring of `places` places, `tokens` tokens on its first place, each step of the ring made
-/// by `copies` transitions: C(places + tokens - 1, tokens) markings, every one on the way back
-/// to the start. A marking's way back is as long as its tokens are from the first place, and
-/// the search mostly writes a marking before those further on, so that a sweep over the graph
-/// in that order marks about one level of the way back: the sweeps stop after a few (usually
-/// the first), having marked far fewer than a sixteenth of the markings.
-std::shared_ptr<const Net> tokensOnARing(int places, int tokens, int copies = 1) {
-  NetBuilder b;
-  std::vector<PlaceId> ring;
-  for (int i = 0; i < places; ++i) {
-    ring.push_back(b.addPlace("r" + std::to_string(i)));
-    b.setSlot(ring.back(), kDefaultSlot, SlotKind::Control, kUnbounded, i == 0 ? tokens : 0);
-  }
-  for (int i = 0; i < places; ++i) {
-    for (int c = 0; c < copies; ++c) {
-      const auto t = b.addTransition("t" + std::to_string(i) + "_" + std::to_string(c));
-      b.addInput(ring[static_cast<std::size_t>(i)], t);
-      b.addOutput(t, ring[static_cast<std::size_t>((i + 1) % places)]);
-    }
-  }
-  return b.freeze();
-}
+/// Three tokens on one ring of 120 places, each step made by `copies` transitions: 295,240
+/// markings. A marking's way back is as long as its tokens are from the first place, and the
+/// search mostly writes a marking before those further on, so that a sweep over the graph in
+/// that order marks about one level of the way back: the sweeps stop after a few (usually the
+/// first), having marked far fewer than a sixteenth of the markings.
+std::shared_ptr<const Net> threeTokensOnARing(int copies) { return tokenRings(std::vector<int>{120}, copies, 3); }
 
 TEST(Analysis, ThreadsShareTheWayBackOverLevelsOfThousandsOfStates) {
   // three tokens on a ring of 120 places: C(122, 3) = 295,240 markings, every one on the way
@@ -650,7 +635,7 @@ TEST(Analysis, ThreadsShareTheWayBackOverLevelsOfThousandsOfStates) {
   // places. The sweeps make little headway, so the threads go breadth first backward, looking
   // predecessors up and past a sixteenth of the states over the edges reversed; the levels
   // far from the start hold up to 1,830 markings each, which they share.
-  const auto net = tokensOnARing(120, 3);
+  const auto net = threeTokensOnARing(1);
   for (const unsigned threads : {1u, 2u, 3u}) {
     const auto s = exploreWith(*net, threads);
     EXPECT_EQ(s.states, 295'240u) << threads;
@@ -667,7 +652,7 @@ TEST(Analysis, UnderAMemoryLimitThreadsFindTheWayBackWithoutReversingTheEdges) {
   // Reversed, the edges take about 14 MiB more than the search held. Under a limit 2 MiB
   // below the reversing peak, which the search fits in, the way back is searched by looking
   // predecessors up, with the same answers, within the limit (reversing would pass it)
-  const auto net = tokensOnARing(120, 3, 4);
+  const auto net = threeTokensOnARing(4);
   ExploreOptions options;
   options.threads = 2;
   std::uint64_t searching = 0;  // the most the search held, as its progress reports say
