@@ -6,6 +6,8 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <new>
+#include <optional>
 #include <thread>
 #include <unordered_map>
 #include <utility>
@@ -73,8 +75,10 @@ class Search {
   Expand successorsAfter(const Successors& parent, std::size_t i, Successors& out);
   /// Fires the transitions enabled in `m` (out.enabled) into `out`.
   Expand fireEnabled(const std::uint64_t* m, Successors& out);
-  /// Empties `out` for a state's successors; each is made at next(out), then kept.
-  void reset(Successors& out) const;
+  /// Empties `out` for a state's successors, with room for `n` of them; each is made at
+  /// next(out), then kept. Expand::Full where that room would take the search past
+  /// --max-memory (a net of 10^5 parts has markings of tens of KiB and as many successors).
+  Expand reset(Successors& out, std::size_t n);
   std::uint64_t* next(Successors& out) const { return out.keys.data() + out.t.size() * store_->layout().words(); }
   /// Keeps the marking made at `key` (next(out)) as the successor by `t`: hashed, its table
   /// slot fetched.
@@ -88,6 +92,9 @@ class Search {
   /// kMostAffected transitions on average (a thousand transitions around shared places), find
   /// a state's candidates from its marked slots alone.
   static constexpr std::size_t kEnabledSetTransitions = 4096, kMostAffected = 64;
+  /// The most bytes of successors' markings for which the next state's successors are made
+  /// ahead (the size of the cache close to one core).
+  static constexpr std::size_t kAheadBytes = std::size_t{1} << 20;
   /// Fires `t` on the packed marking `m` into `out`; Overflow or Widened on a count that
   /// does not fit. False in `enabled` when `t` is not enabled.
   Expand fire(TransitionId t, const std::uint64_t* m, std::uint64_t* out, bool& enabled) {
@@ -370,7 +377,7 @@ Search::Expand Search::successors(const std::uint64_t* m, Successors& out) {
     }
     return fireEnabled(m, out);
   }
-  reset(out);
+  if (const Expand e = reset(out, candidates_now_.size()); e != Expand::Ok) return e;
   for (TransitionId t : candidates_now_) {
     bool enabled = false;
     const Expand e = fireCandidate(t, m, next(out), enabled);
@@ -380,13 +387,19 @@ Search::Expand Search::successors(const std::uint64_t* m, Successors& out) {
   return Expand::Ok;
 }
 
-void Search::reset(Successors& out) const {
-  out.keys.resize(net_.transitions().size() * store_->layout().words());
+Search::Expand Search::reset(Successors& out, std::size_t n) {
+  const std::size_t words = n * store_->layout().words();
+  if (words > out.keys.size()) {
+    if (options_.max_bytes != 0 && bytes() + (words - out.keys.size()) * sizeof(std::uint64_t) > options_.max_bytes) {
+      return Expand::Full;
+    }
+    out.keys.resize(words);
+  }
   out.hashes.clear();
   out.t.clear();
   out.peeked.clear();
+  return Expand::Ok;
 }
-
 
 Search::Expand Search::successorsAfter(const Successors& parent, std::size_t i, Successors& out) {
   const std::uint64_t* m = parent.keys.data() + i * store_->layout().words();
@@ -400,7 +413,9 @@ Search::Expand Search::successorsAfter(const Successors& parent, std::size_t i, 
 }
 
 Search::Expand Search::fireEnabled(const std::uint64_t* m, Successors& out) {
-  reset(out);
+  std::size_t count = 0;
+  for (const std::uint64_t x : out.enabled) count += static_cast<std::size_t>(std::popcount(x));
+  if (const Expand e = reset(out, count); e != Expand::Ok) return e;
   const std::size_t words = store_->layout().words();
   std::uint64_t* key = out.keys.data();
   const std::uint64_t* bits = out.enabled.data();
@@ -438,20 +453,31 @@ Search::Expand Search::expand(StateId v) {
   // successors are made now and their slots fetched while this state's lookups wait on the
   // memory, and their markings once these are done. A state found by its hash's tag alone
   // may be another: then nothing comes of it. Not where a field may widen (the markings are
-  // laid out anew) or accelerate
+  // laid out anew) or accelerate, nor where the successors outgrow the cache close to the
+  // core (they would not stay there), nor where making them would pass --max-memory
   ahead_.index = via.size();
-  for (std::size_t i = via.size(); i-- > 0 && !widens_;) {
+  const bool small = via.size() * words * sizeof(std::uint64_t) <= kAheadBytes;
+  for (std::size_t i = via.size(); i-- > 0 && !widens_ && small;) {
     if (now_.peeked[i] == kNone || !visited(now_.peeked[i])) {
       ahead_.index = i;
       break;
     }
   }
-  if (ahead_.index < via.size()) successorsAfter(now_, ahead_.index, ahead_);
-  // a table that would grow past --max-memory stops the search before it grows
+  if (ahead_.index < via.size() && successorsAfter(now_, ahead_.index, ahead_) != Expand::Ok) ahead_.index = via.size();
+  // markings and a table that would grow past --max-memory stop the search before they grow
+  // (the markings counted as if every successor were new, and where that passes the limit,
+  // only those not stored yet)
   if (options_.max_bytes != 0) {
-    const std::size_t growth = store_->growthInserting(
-        via.size(), [&](std::size_t i) { return now_.keys.data() + i * words; }, [&](std::size_t i) { return now_.hashes[i]; });
-    if (growth != 0 && bytes() + growth > options_.max_bytes) return Expand::Full;
+    auto key = [&](std::size_t i) { return now_.keys.data() + i * words; };
+    auto hash = [&](std::size_t i) { return now_.hashes[i]; };
+    const std::size_t table = store_->growthInserting(via.size(), key, hash);
+    const std::size_t marking = store_->stride() * sizeof(std::uint64_t);
+    std::size_t fresh = via.size();
+    if (bytes() + table + fresh * marking > options_.max_bytes) {
+      fresh = 0;
+      for (std::size_t i = 0; i < via.size(); ++i) fresh += store_->find(key(i), hash(i)) == kNone ? 1u : 0u;
+    }
+    if (bytes() + table + fresh * marking > options_.max_bytes) return Expand::Full;
   }
   std::uint32_t rv = rindex(v);
   bool root = true;
@@ -548,7 +574,8 @@ void Search::finishComponent(StateId v) {
 
 std::uint64_t Search::bytes() const {
   return store_->bytes() + leaves_.capacity() / 8 + visited_.capacity() * sizeof(std::uint64_t) + frames_.bytes() +
-         edges_.bytes() + stack_.bytes() + path_.capacity() * sizeof(std::uint64_t);
+         edges_.bytes() + stack_.bytes() + path_.capacity() * sizeof(std::uint64_t) +
+         (now_.keys.capacity() + ahead_.keys.capacity()) * sizeof(std::uint64_t);
 }
 
 std::vector<TransitionId> Search::firingsAlong(const std::vector<StateId>& path) {
@@ -764,19 +791,36 @@ namespace {
 /// answer, the other stops.
 StateSpace race(const Net& net, const ExploreOptions& options, const Plan& p) {
   Race r;
-  ExploreOptions quiet = options;
+  // a guard on memory is shared: half each
+  ExploreOptions each = options;
+  each.max_bytes = options.max_bytes / 2;
+  ExploreOptions quiet = each;
   quiet.progress = nullptr;
-  Search cover(net, options, p, &r, true);
+  Search cover(net, each, p, &r, true);
   Search plain(net, quiet, p, &r, false);
+  // memory that the limit did not foresee ends a search as the limit would (the plain one
+  // here; the other's goes to the caller once this thread is joined)
   StateSpace found;
+  found.complete = false;
   std::thread other([&] {
-    found = plain.run();
+    try {
+      found = plain.run();
+    } catch (const std::bad_alloc&) {
+      found.stop = ExploreStop::MaxMemory;
+    }
     if (found.complete) r.over = true;
   });
-  StateSpace out = cover.run();
+  std::optional<StateSpace> out;
+  try {
+    out = cover.run();
+  } catch (...) {
+    r.over = true;
+    other.join();
+    throw;
+  }
   r.over = true;
   other.join();
-  return !out.complete && found.complete ? found : out;
+  return !out->complete && found.complete ? found : *out;
 }
 
 }  // namespace
@@ -786,8 +830,8 @@ StateSpace explore(const Net& net, const ExploreOptions& options) {
   if (p.overflow) return overflowAnswer(net);
   if (options.threads > 1 && net.transitions().size() <= kParallelTransitions) {
     if (!p.cover) return exploreParallel(net, options, p);
-    // a limit on memory holds for one search: no race
-    if (options.max_bytes == 0) return race(net, options, p);
+    // a limit on memory asked for holds for one search: no race
+    if (options.max_bytes == 0 || options.max_bytes_guard) return race(net, options, p);
   }
   return Search(net, options, p).run();
 }

@@ -18,6 +18,7 @@
 #include <atomic>
 #include <bit>
 #include <mutex>
+#include <new>
 #include <optional>
 #include <thread>
 
@@ -61,6 +62,13 @@ struct Shard {
   std::vector<bool> fired;
   std::atomic<std::uint64_t> edges{0};
   std::atomic<std::uint64_t> bytes{0};  // what the store holds, as its thread last saw
+  // what its thread's successors take on their way to be stored (made, sent, received),
+  // as it last saw, and what its inbox holds (set under inbox_mutex): a net of 10^5 parts
+  // has markings of tens of KiB and as many successors
+  std::atomic<std::uint64_t> buffers{0}, inbox_bytes{0};
+  // the words its inbox holds now (set under inbox_mutex): past kInboxBytes the others make
+  // no more successors until it has taken them
+  std::atomic<std::uint64_t> inbox_words{0};
   std::uint64_t dead = 0;               // states expanded without a successor
   std::uint64_t fresh = 0;              // states stored, not yet in Parallel::states_
   // the graph: each state expanded has a run in succ, in the order they were expanded: its
@@ -74,6 +82,10 @@ struct Shard {
   std::vector<std::uint32_t> into_blocks;
 };
 
+/// What a thread's inbox holds at most before the others wait for it to take it, bytes (the
+/// markings in flight stay bounded where a thread runs late: the others would otherwise
+/// pile up what they make for it).
+constexpr std::uint64_t kInboxBytes = std::uint64_t{4} << 20;
 /// The most sweeps over all of the graph's runs on the way back to the start: past them,
 /// reversing the edges (a few passes over them) costs less.
 constexpr unsigned kWholeSweeps = 32;
@@ -113,7 +125,16 @@ class Parallel {
   StateSpace run() {
     StateSpace out;
     std::vector<std::thread> pool;
-    for (unsigned s = 0; s < threads_; ++s) pool.emplace_back([this, s] { explore(s); });
+    // memory the limit did not foresee (none given) stops the search as the limit would
+    for (unsigned s = 0; s < threads_; ++s) {
+      pool.emplace_back([this, s] {
+        try {
+          explore(s);
+        } catch (const std::bad_alloc&) {
+          halt(ExploreStop::MaxMemory);
+        }
+      });
+    }
     for (auto& t : pool) t.join();
     out.fired.assign(net_.transitions().size(), false);
     Observed seen(layout_);
@@ -153,7 +174,10 @@ class Parallel {
   /// Memory held, as each thread last reported it (safe to call while they run).
   std::uint64_t bytes() const {
     std::uint64_t b = 0;
-    for (const auto& s : shards_) b += s.bytes.load(std::memory_order_relaxed);
+    for (const auto& s : shards_) {
+      b += s.bytes.load(std::memory_order_relaxed) + s.buffers.load(std::memory_order_relaxed) +
+           s.inbox_bytes.load(std::memory_order_relaxed);
+    }
     return b;
   }
   static void account(Shard& s) {
@@ -221,12 +245,20 @@ class Parallel {
     std::vector<std::uint32_t> own;  // the successors this thread owns, by index
     std::vector<std::uint32_t*> slots;
     std::vector<TransitionId> candidates;
+    // the successors' markings on their way, for the limit on memory
+    auto buffered = [&] {
+      std::size_t words_held = batch.capacity() + keys.capacity();
+      for (const auto& box : outbox) words_held += box.capacity();
+      s.buffers.store(words_held * sizeof(std::uint64_t), std::memory_order_relaxed);
+    };
     auto flush = [&](unsigned to) {
       if (outbox[to].empty()) return;
       pending_.fetch_add(static_cast<std::int64_t>(outbox[to].size() / record));
       std::lock_guard lock(shards_[to].inbox_mutex);
       auto& in = shards_[to].inbox;
       in.insert(in.end(), outbox[to].begin(), outbox[to].end());
+      shards_[to].inbox_bytes.store(in.capacity() * sizeof(std::uint64_t), std::memory_order_relaxed);
+      shards_[to].inbox_words.store(in.size(), std::memory_order_relaxed);
       outbox[to].clear();
     };
     bool active = true;
@@ -236,9 +268,12 @@ class Parallel {
       {
         std::lock_guard lock(s.inbox_mutex);
         batch.swap(s.inbox);
+        s.inbox_bytes.store(s.inbox.capacity() * sizeof(std::uint64_t), std::memory_order_relaxed);
+        s.inbox_words.store(0, std::memory_order_relaxed);
       }
       if (!batch.empty()) {
         if (!active) pending_.fetch_add(1), active = true;
+        buffered();
         // looked up as the thread's own successors are
         const std::size_t n = batch.size() / record;
         in_hashes.resize(n);
@@ -253,7 +288,9 @@ class Parallel {
         settle(me, *promised);
         pending_.fetch_sub(static_cast<std::int64_t>(batch.size() / record));
       }
-      for (int n = 0; n < 16 && !s.work.empty() && !stop_flag_.load(std::memory_order_relaxed); ++n) {
+      const bool waits = backedUp(me);
+      if (waits && batch.empty()) std::this_thread::yield();
+      for (int n = 0; n < 16 && !waits && !s.work.empty() && !stop_flag_.load(std::memory_order_relaxed); ++n) {
         // the successors of a batch of states, each given the slot its id goes to
         std::size_t made = 0;
         for (std::size_t b = 0; b < kBatchStates && made < kBatchSuccessors && !s.work.empty(); ++b) {
@@ -261,7 +298,17 @@ class Parallel {
           s.work.pop_back();
           const std::uint64_t* m = s.store->at(v);
           candidates_.find(m, firing_, candidates);
-          if (keys.size() < (made + candidates.size()) * words) keys.resize(2 * (made + candidates.size()) * words);
+          if (keys.size() < (made + candidates.size()) * words) {
+            // room for them that would pass the limit stops the search before it is taken
+            const std::size_t grown = 2 * (made + candidates.size()) * words;
+            if (options_.max_bytes != 0 &&
+                bytes() + promised_.load() + (grown - keys.capacity()) * sizeof(std::uint64_t) > options_.max_bytes) {
+              halt(ExploreStop::MaxMemory);
+              break;
+            }
+            keys.resize(grown);
+            buffered();
+          }
           const std::size_t begin = made;
           bool overflow = false;
           for (TransitionId t : candidates) {
@@ -303,6 +350,7 @@ class Parallel {
           box[at + words] = reinterpret_cast<std::uintptr_t>(slots[i]);
           if (box.size() >= 1024 * record) flush(to);
         }
+        buffered();
         auto key = [&](std::size_t j) { return keys.data() + own[j] * words; };
         auto hash = [&](std::size_t j) { return hashes[own[j]]; };
         const auto promised = room(me, own.size(), key, hash);
@@ -339,6 +387,15 @@ class Parallel {
         std::this_thread::yield();
       }
     }
+  }
+
+  /// Whether another thread's inbox holds more than kInboxBytes: thread `me` then makes no
+  /// successors until it is taken.
+  bool backedUp(unsigned me) const {
+    for (unsigned to = 0; to < threads_; ++to) {
+      if (to != me && shards_[to].inbox_words.load(std::memory_order_relaxed) * sizeof(std::uint64_t) > kInboxBytes) return true;
+    }
+    return false;
   }
 
   /// Room under ExploreOptions::max_bytes for shard `me`'s table to grow as the `n`

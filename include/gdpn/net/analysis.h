@@ -41,18 +41,23 @@ struct ExploreOptions {
   std::uint64_t max_states = 20'000'000;  ///< stop (partial answer) past this many states
   /// Stop (partial answer) past this much memory, bytes; 0: none. Looked at as the search
   /// stores, expands and walks back (one thread every 4,096 new states and every 4,096
-  /// states done, the threads after each round of batches), and before a table grows (one
-  /// that would pass it is never grown; only markings not stored yet count towards its
-  /// growth): a chunk allocated between two looks may pass it by that much.
+  /// states done, the threads after each round of batches), before a table grows and before
+  /// a state's successors are made and stored (room that would pass it is never taken; only
+  /// markings not stored yet count towards the growth): a chunk allocated between two looks
+  /// may pass it by that much.
   std::uint64_t max_bytes = 0;
+  /// `max_bytes` is a guard that the caller set on its own (`gdpn analyze` without
+  /// --max-memory: 3/4 of the memory available), not a limit asked for: a race of two
+  /// searches (below) runs under it, half each.
+  bool max_bytes_guard = false;
   /// Worker threads. Above 1, markings are shared out among the threads by hash, each
   /// expanding its markings in batches, and the graph is kept as arrays (4 bytes an edge and
-  /// 8 a state more; 8 a state more again after the search where a dead state or one that
+  /// 4 a state more; 8 a state more again after the search where a dead state or one that
   /// cannot get back to the start makes the passes read it by state; reversed for a while,
   /// 5 bytes an edge and 4 a state more, unless that would pass `max_bytes`) for the passes
   /// that decide liveness and reversibility. A net with a place that nothing bounds needs
   /// the coverability search (one walk): two threads race it against a plain search that
-  /// never accelerates (the first to end answers; without `max_bytes` only).
+  /// never accelerates (the first to end answers; without `max_bytes`, or under a guard).
   unsigned threads = 1;
   /// Called every 4,096 new states; may be empty.
   std::function<void(const ExploreProgress&)> progress;

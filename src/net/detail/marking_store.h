@@ -199,6 +199,8 @@ class Store {
 
   const Layout& layout() const { return layout_; }
   std::size_t words() const { return layout_.words(); }
+  /// Words a stored marking takes, its extra word included.
+  std::size_t stride() const { return layout_.words() + extra_; }
   std::size_t size() const { return arena_.size(); }
   const std::uint64_t* at(StateId s) const { return arena_.at(s); }
   /// The word kept beside state `s`'s marking (Store made with `extra`).
