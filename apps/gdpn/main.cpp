@@ -14,11 +14,13 @@
 #include <filesystem>
 #include <sstream>
 #include <iostream>
+#include <new>
 #include <string_view>
 #include <tuple>
 #include <type_traits>
 
 #include "gdpn/core/file.h"
+#include "gdpn/core/memory.h"
 #include "gdpn/core/output_file.h"
 #include "gdpn/model/analysis.h"
 #include "gdpn/model/model.h"
@@ -400,6 +402,13 @@ int analyze(const AnalyzeArgs& a) {
   if (!net) return 1;
   options.explore.max_states = a.max_states;
   options.explore.max_bytes = static_cast<std::uint64_t>(a.max_memory_mib * 1024.0 * 1024.0);
+  // none given: 3/4 of the memory the system has to give now, so that a state space too big
+  // for the machine ends in a partial answer rather than in the system's out-of-memory kill
+  const bool default_memory = a.max_memory_mib <= 0.0;
+  if (default_memory) {
+    options.explore.max_bytes = gdpn::core::availableMemory() / 4 * 3;
+    options.explore.max_bytes_guard = true;
+  }
   options.explore.threads = a.threads;
   options.explore.shortest_path = a.shortest_path;
   options.explore.reduction = a.reduction;
@@ -501,6 +510,12 @@ int analyze(const AnalyzeArgs& a) {
   };
   const auto result = model::analyze(*net, path, options);
   if (drawn) std::fprintf(stderr, "\r\033[K");
+  const auto stopped = model::stoppedPhases(result);
+  if (default_memory && std::any_of(stopped.begin(), stopped.end(),
+                                    [](const auto& p) { return p.second == gdpn::net::ExploreStop::MaxMemory; })) {
+    std::fprintf(stderr, "note: stopped at the default --max-memory, 3/4 of the memory available at the start (%.0f MiB)\n",
+                 static_cast<double>(options.explore.max_bytes) / (1024.0 * 1024.0));
+  }
   if (a.json) {
     std::cout << model::analysisJson(*net, result);
   } else {
@@ -808,7 +823,9 @@ int ide(const IdeArgs& a) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+namespace {
+
+int command(int argc, char** argv) {
   CLI::App app{"gdpn: geometry-driven Petri nets. Model, run and analyse control logic against a virtual plant."};
   app.set_version_flag("--version", std::string("gdpn ") + GDPN_VERSION);
   app.require_subcommand(1);
@@ -882,7 +899,7 @@ int main(int argc, char** argv) {
   analyze_cmd->add_option("--max-states", analyze_args.max_states, "stop after this many states (the answer is then partial)")
       ->check(number<std::uint64_t>(1, 1'000'000'000'000, "a whole number of states from 1 to 10^12"));
   analyze_cmd->add_option("--max-memory", analyze_args.max_memory_mib,
-                          "stop when the search holds this many MiB (the answer is then partial)")
+                          "stop when the search holds this many MiB (the answer is then partial; default: 3/4 of the memory available at the start)")
       ->check(number(0.0, 1e9, "MiB above 0, at most 1e9", true));
   analyze_cmd->add_option("--time-limit", analyze_args.time_limit_s,
                           "stop every phase after this many seconds in all (the answer is then partial)")
@@ -1006,4 +1023,18 @@ int main(int argc, char** argv) {
   }
   if (ide_cmd->parsed()) return ide(ide_args);
   return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // memory that no limit foresaw (a model too big for the machine, --max-memory set past
+  // what it has): a message and a non-zero exit rather than an abort
+  try {
+    return command(argc, argv);
+  } catch (const std::bad_alloc&) {
+    std::cerr << "error: out of memory (gdpn analyze: --max-memory sets a limit at which the search stops with a "
+                 "partial answer)\n";
+    return 1;
+  }
 }

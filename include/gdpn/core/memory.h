@@ -3,9 +3,12 @@
 /// Large arrays: the first touch of each 4 KiB page costs a page fault, which on a virtual
 /// machine can cost more than filling the page. Arrays of many megabytes (a net of a million
 /// places) ask the kernel for 2 MiB pages instead where it allows them (Linux transparent
-/// huge pages in "madvise" mode); elsewhere this is a plain reserve.
+/// huge pages in "madvise" mode); elsewhere this is a plain reserve. And how much memory the
+/// system has to give, for limits that end a search before the system kills it.
 
 #include <cstddef>
+#include <cstdint>
+#include <string_view>
 #include <vector>
 
 namespace gdpn::core {
@@ -20,5 +23,13 @@ void reserveLarge(std::vector<T>& v, std::size_t n) {
   v.reserve(n);
   adviseHugePages(v.data(), v.capacity() * sizeof(T));
 }
+
+/// The memory the system can give now without swapping, bytes: Linux's MemAvailable (free
+/// memory and caches it can drop), else the free physical pages; 0 where it cannot tell.
+std::uint64_t availableMemory();
+
+/// MemAvailable in the text of /proc/meminfo ("MemAvailable:   123456 kB"), bytes; 0 where
+/// the line is missing or malformed.
+std::uint64_t memAvailableIn(std::string_view meminfo);
 
 }  // namespace gdpn::core

@@ -1,0 +1,36 @@
+// How much memory the system has to give: the default limit of `gdpn analyze`.
+#include "gdpn/core/memory.h"
+
+#include <gtest/gtest.h>
+
+namespace gdpn::core {
+namespace {
+
+TEST(Memory, MemAvailableIsReadInBytesFromTheMeminfoText) {
+  const char* meminfo =
+      "MemTotal:       24567812 kB\n"
+      "MemFree:        23111044 kB\n"
+      "MemAvailable:   22874512 kB\n"
+      "Buffers:           41232 kB\n";
+  EXPECT_EQ(memAvailableIn(meminfo), 22874512ull * 1024);
+  // the last line, with no line end; a tab before the number
+  EXPECT_EQ(memAvailableIn("MemFree: 1 kB\nMemAvailable:\t7 kB"), 7ull * 1024);
+}
+
+TEST(Memory, MeminfoWithoutAReadableMemAvailableGivesZero) {
+  EXPECT_EQ(memAvailableIn(""), 0u);
+  EXPECT_EQ(memAvailableIn("MemTotal:       24567812 kB\n"), 0u);              // an old kernel: no such line
+  EXPECT_EQ(memAvailableIn("MemAvailable:   lots kB\n"), 0u);                  // not a number
+  EXPECT_EQ(memAvailableIn("MemAvailable:   12 MB\n"), 0u);                    // another unit
+  EXPECT_EQ(memAvailableIn("MemAvailable:   99999999999999999999 kB\n"), 0u);  // past 64 bits
+  EXPECT_EQ(memAvailableIn("MemAvailable:   18014398509481984 kB\n"), 0u);     // 2^54 KiB: past 64 bits in bytes
+  EXPECT_EQ(memAvailableIn("XMemAvailable:  12 kB\n"), 0u);                    // another key
+}
+
+TEST(Memory, ThisMachineHasMemoryToGive) {
+  // on Linux from /proc/meminfo, elsewhere from the free pages: more than a MiB either way
+  EXPECT_GT(availableMemory(), std::uint64_t{1} << 20);
+}
+
+}  // namespace
+}  // namespace gdpn::core
