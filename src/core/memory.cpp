@@ -1,5 +1,6 @@
 #include "gdpn/core/memory.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
 #include <fstream>
@@ -47,13 +48,65 @@ std::uint64_t memAvailableIn(std::string_view meminfo) {
   return 0;
 }
 
+namespace {
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::optional<std::uint64_t> number(std::string_view text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.remove_suffix(1);
+  std::uint64_t v = 0;
+  const auto [rest, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || rest != text.data() + text.size()) return std::nullopt;
+  return v;
+}
+
+// the room under the limit of this process's control group: v2 (0::PATH) or v1's memory
+// controller (N:memory:PATH), in the group's own folder or, in a container whose group is
+// the root of what it sees, at the top
+std::optional<std::uint64_t> ownCgroupRoom() {
+  const std::string groups = readText("/proc/self/cgroup");
+  std::string_view rest = groups;
+  while (!rest.empty()) {
+    const std::size_t end = std::min(rest.find('\n'), rest.size());
+    const std::string_view line = rest.substr(0, end);
+    rest.remove_prefix(std::min(end + 1, rest.size()));
+    const std::size_t first = line.find(':'), second = line.find(':', first + 1);
+    if (first == std::string_view::npos || second == std::string_view::npos) continue;
+    const std::string_view controllers = line.substr(first + 1, second - first - 1);
+    const std::string path(line.substr(second + 1));
+    const bool v2 = line.substr(0, first) == "0" && controllers.empty();
+    if (!v2 && controllers != "memory") continue;
+    const std::string top = v2 ? "/sys/fs/cgroup" : "/sys/fs/cgroup/memory";
+    const char* limit = v2 ? "/memory.max" : "/memory.limit_in_bytes";
+    const char* usage = v2 ? "/memory.current" : "/memory.usage_in_bytes";
+    for (const std::string& folder : {top + path, top}) {
+      const std::string l = readText(folder + limit);
+      if (l.empty()) continue;
+      return cgroupRoom(l, readText(folder + usage));
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::uint64_t> cgroupRoom(std::string_view limit, std::string_view usage) {
+  const auto l = number(limit), u = number(usage);
+  if (!l || !u || *l >= (std::uint64_t{1} << 62)) return std::nullopt;
+  return *l - std::min(*l, *u);
+}
+
 std::uint64_t availableMemory() {
-  std::ifstream in("/proc/meminfo");
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (const std::uint64_t bytes = memAvailableIn(text); bytes != 0) return bytes;
-  const long pages = sysconf(_SC_AVPHYS_PAGES), size = sysconf(_SC_PAGESIZE);
-  if (pages <= 0 || size <= 0) return 0;
-  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(size);
+  std::uint64_t bytes = memAvailableIn(readText("/proc/meminfo"));
+  if (bytes == 0) {
+    const long pages = sysconf(_SC_AVPHYS_PAGES), size = sysconf(_SC_PAGESIZE);
+    if (pages > 0 && size > 0) bytes = static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(size);
+  }
+  if (const auto room = ownCgroupRoom(); room && bytes != 0) bytes = std::min(bytes, *room);
+  return bytes;
 }
 
 }  // namespace gdpn::core

@@ -389,12 +389,17 @@ Search::Expand Search::successors(const std::uint64_t* m, Successors& out) {
 
 Search::Expand Search::reset(Successors& out, std::size_t n) {
   const std::size_t words = n * store_->layout().words();
-  if (words > out.keys.size()) {
-    if (options_.max_bytes != 0 && bytes() + (words - out.keys.size()) * sizeof(std::uint64_t) > options_.max_bytes) {
+  if (words > out.keys.capacity()) {
+    // a quarter more, so that a few more successors later do not move it again; the old
+    // room let go first (what it holds is made anew), so that it is never held twice
+    const std::size_t room = words + words / 4;
+    if (options_.max_bytes != 0 && bytes() + (room - out.keys.capacity()) * sizeof(std::uint64_t) > options_.max_bytes) {
       return Expand::Full;
     }
-    out.keys.resize(words);
+    std::vector<std::uint64_t>().swap(out.keys);
+    out.keys.reserve(room);
   }
+  if (words > out.keys.size()) out.keys.resize(words);
   out.hashes.clear();
   out.t.clear();
   out.peeked.clear();

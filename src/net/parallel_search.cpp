@@ -17,10 +17,12 @@
 #include <array>
 #include <atomic>
 #include <bit>
+#include <exception>
 #include <mutex>
 #include <new>
 #include <optional>
 #include <thread>
+#include <utility>
 
 #include "detail/marking_store.h"
 
@@ -86,6 +88,9 @@ struct Shard {
 /// markings in flight stay bounded where a thread runs late: the others would otherwise
 /// pile up what they make for it).
 constexpr std::uint64_t kInboxBytes = std::uint64_t{4} << 20;
+/// Bytes of a state's successors (made, sent and stored) past which a thread looks at the
+/// limit on memory before it makes them (below, it looks after each round of batches).
+constexpr std::uint64_t kManySuccessorBytes = std::uint64_t{64} << 10;
 /// The most sweeps over all of the graph's runs on the way back to the start: past them,
 /// reversing the edges (a few passes over them) costs less.
 constexpr unsigned kWholeSweeps = 32;
@@ -271,9 +276,9 @@ class Parallel {
         s.inbox_bytes.store(s.inbox.capacity() * sizeof(std::uint64_t), std::memory_order_relaxed);
         s.inbox_words.store(0, std::memory_order_relaxed);
       }
+      buffered();
       if (!batch.empty()) {
         if (!active) pending_.fetch_add(1), active = true;
-        buffered();
         // looked up as the thread's own successors are
         const std::size_t n = batch.size() / record;
         in_hashes.resize(n);
@@ -288,9 +293,15 @@ class Parallel {
         settle(me, *promised);
         pending_.fetch_sub(static_cast<std::int64_t>(batch.size() / record));
       }
-      const bool waits = backedUp(me);
-      if (waits && batch.empty()) std::this_thread::yield();
-      for (int n = 0; n < 16 && !waits && !s.work.empty() && !stop_flag_.load(std::memory_order_relaxed); ++n) {
+      if (batch.empty() && !s.work.empty() && backedUp(me)) std::this_thread::yield();
+      for (int n = 0; n < 16 && !s.work.empty() && !backedUp(me) && !stop_flag_.load(std::memory_order_relaxed); ++n) {
+        // what this batch's many successors take, promised (as a table's growth is) until
+        // they are made and sent, so that two threads do not both take the last room
+        struct Promise {
+          std::atomic<std::uint64_t>& to;
+          std::uint64_t bytes = 0;
+          ~Promise() { to.fetch_sub(bytes); }
+        } ahead_promised{promised_};
         // the successors of a batch of states, each given the slot its id goes to
         std::size_t made = 0;
         for (std::size_t b = 0; b < kBatchStates && made < kBatchSuccessors && !s.work.empty(); ++b) {
@@ -298,14 +309,26 @@ class Parallel {
           s.work.pop_back();
           const std::uint64_t* m = s.store->at(v);
           candidates_.find(m, firing_, candidates);
-          if (keys.size() < (made + candidates.size()) * words) {
-            // room for them that would pass the limit stops the search before it is taken
-            const std::size_t grown = 2 * (made + candidates.size()) * words;
-            if (options_.max_bytes != 0 &&
-                bytes() + promised_.load() + (grown - keys.capacity()) * sizeof(std::uint64_t) > options_.max_bytes) {
+          // room for its successors, and for their copies on the way to their owners (their
+          // stores look before they grow), that would pass the limit stops the search first:
+          // looked at where the room grows, or where they are many (a state of a net of 10^5
+          // parts has as many successors of tens of KiB; the others are looked at each round)
+          const std::size_t need = (made + candidates.size()) * words;
+          const std::size_t grown = need <= keys.size() ? keys.size() : std::max(need, std::min(2 * keys.size(), need + (std::size_t{1} << 20)));
+          const std::size_t more = grown > keys.capacity() ? grown - keys.capacity() : 0;
+          const std::size_t ahead = more + candidates.size() * record;
+          if (options_.max_bytes != 0 && (more != 0 || ahead * sizeof(std::uint64_t) >= kManySuccessorBytes)) {
+            const std::uint64_t want = ahead * sizeof(std::uint64_t);
+            if (bytes() + promised_.fetch_add(want) + want > options_.max_bytes) {
+              promised_.fetch_sub(want);
               halt(ExploreStop::MaxMemory);
               break;
             }
+            ahead_promised.bytes += want;
+          }
+          if (more != 0 || grown > keys.size()) {
+            // (nothing made yet in this batch: not held twice while it moves)
+            if (made == 0 && more != 0) std::vector<std::uint64_t>().swap(keys);
             keys.resize(grown);
             buffered();
           }
@@ -348,9 +371,11 @@ class Parallel {
           box.resize(at + record);
           firing_.copy(key, box.data() + at);  // a few words: no call to memmove
           box[at + words] = reinterpret_cast<std::uintptr_t>(slots[i]);
-          if (box.size() >= 1024 * record) flush(to);
+          if (box.size() >= 1024 * record || box.size() * sizeof(std::uint64_t) >= kInboxBytes / 4) flush(to);
         }
+        // made and sent, they count where they are now: the promise is given back
         buffered();
+        promised_.fetch_sub(std::exchange(ahead_promised.bytes, 0));
         auto key = [&](std::size_t j) { return keys.data() + own[j] * words; };
         auto hash = [&](std::size_t j) { return hashes[own[j]]; };
         const auto promised = room(me, own.size(), key, hash);
@@ -409,10 +434,17 @@ class Parallel {
     if (options_.max_bytes == 0) return 0;
     Shard& s = shards_[me];
     const std::uint64_t growth = s.store->growthInserting(n, key, hash);
-    if (growth == 0) return 0;
+    // the markings, as if all were new: where they would pass the limit, it stops (a table
+    // grows rarely; markings of tens of KiB fill the limit between two of its growths)
+    const std::uint64_t markings = n * s.store->stride() * sizeof(std::uint64_t);
+    if (growth == 0 && bytes() + promised_.load() + markings <= options_.max_bytes) return 0;
+    if (growth == 0) {
+      halt(ExploreStop::MaxMemory);
+      return std::nullopt;
+    }
     account(s);
     const std::uint64_t promised = promised_.fetch_add(growth) + growth;
-    if (bytes() + promised <= options_.max_bytes) return growth;
+    if (bytes() + promised + markings <= options_.max_bytes) return growth;
     promised_.fetch_sub(growth);
     halt(ExploreStop::MaxMemory);
     return std::nullopt;
@@ -639,10 +671,23 @@ class Parallel {
   /// and waits for them all.
   template <typename F>
   void onThreads(F&& f) const {
+    // (no pass waits on another thread: one that throws, out of memory, leaves the others to
+    // end; the first exception goes to the caller once all are joined)
+    std::vector<std::exception_ptr> failed(threads_);
+    auto run = [&](unsigned me) {
+      try {
+        f(me);
+      } catch (...) {
+        failed[me] = std::current_exception();
+      }
+    };
     std::vector<std::thread> pool;
-    for (unsigned me = 0; me + 1 < threads_; ++me) pool.emplace_back([&f, me] { f(me); });
-    f(threads_ - 1);
+    for (unsigned me = 0; me + 1 < threads_; ++me) pool.emplace_back(run, me);
+    run(threads_ - 1);
     for (auto& t : pool) t.join();
+    for (const auto& e : failed) {
+      if (e) std::rethrow_exception(e);
+    }
   }
 
   /// The number of states with a path to `s0`, each set in `reach` (a bit per id). First

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
+
 namespace gdpn::core {
 namespace {
 
@@ -25,6 +27,16 @@ TEST(Memory, MeminfoWithoutAReadableMemAvailableGivesZero) {
   EXPECT_EQ(memAvailableIn("MemAvailable:   99999999999999999999 kB\n"), 0u);  // past 64 bits
   EXPECT_EQ(memAvailableIn("MemAvailable:   18014398509481984 kB\n"), 0u);     // 2^54 KiB: past 64 bits in bytes
   EXPECT_EQ(memAvailableIn("XMemAvailable:  12 kB\n"), 0u);                    // another key
+}
+
+TEST(Memory, AControlGroupsLimitLeavesWhatItsUsageHasNotTaken) {
+  EXPECT_EQ(cgroupRoom("8589934592\n", "2147483648\n"), std::optional<std::uint64_t>(6442450944));  // 8 GiB, 2 used
+  EXPECT_EQ(cgroupRoom("1000", "1500"), std::optional<std::uint64_t>(0));  // over it: nothing left
+  EXPECT_EQ(cgroupRoom("max\n", "2147483648\n"), std::nullopt);           // v2: no limit
+  EXPECT_EQ(cgroupRoom("9223372036854771712\n", "2487775232\n"), std::nullopt);  // v1: no limit
+  EXPECT_EQ(cgroupRoom("", "1"), std::nullopt);
+  EXPECT_EQ(cgroupRoom("12 kB", "1"), std::nullopt);
+  EXPECT_EQ(cgroupRoom("1000", "x"), std::nullopt);
 }
 
 TEST(Memory, ThisMachineHasMemoryToGive) {

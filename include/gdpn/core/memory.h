@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -25,8 +26,15 @@ void reserveLarge(std::vector<T>& v, std::size_t n) {
 }
 
 /// The memory the system can give now without swapping, bytes: Linux's MemAvailable (free
-/// memory and caches it can drop), else the free physical pages; 0 where it cannot tell.
+/// memory and caches it can drop), else the free physical pages, and no more than the room
+/// left under the process's control group's limit (a container's); 0 where it cannot tell.
 std::uint64_t availableMemory();
+
+/// The room left under a control group's memory limit, bytes, from the text of its limit
+/// file (cgroup v2 memory.max: a number or "max"; v1 memory.limit_in_bytes: a number, 2^62
+/// and more meaning none) and of its usage file; nullopt where there is no limit or either
+/// text is not a number.
+std::optional<std::uint64_t> cgroupRoom(std::string_view limit, std::string_view usage);
 
 /// MemAvailable in the text of /proc/meminfo ("MemAvailable:   123456 kB"), bytes; 0 where
 /// the line is missing or malformed.
