@@ -424,32 +424,34 @@ class Parallel {
   }
 
   /// Room under ExploreOptions::max_bytes for shard `me`'s table to grow as the `n`
-  /// markings `key(j)` (of hashes `hash(j)`) are stored: the bytes of growth promised (0
-  /// where it does not grow), to be given back with settle() once stored; none (and the
-  /// search stops) where the growth would pass the limit, so that no table grows past it.
-  /// Growth promised by the other threads counts until they report their grown tables (the
-  /// shards fill evenly, so their tables grow at nearly the same moment).
+  /// markings `key(j)` (of hashes `hash(j)`) are stored, and for the markings themselves
+  /// (as if all were new): the bytes promised (0 where none are), to be given back with
+  /// settle() once stored; none (and the search stops) where they would pass the limit, so
+  /// that no table grows past it. Promises of the other threads count until they report what
+  /// they stored (the shards fill evenly, so their tables grow at nearly the same moment).
+  /// The markings are promised only where they are many (kManySuccessorBytes: markings of
+  /// tens of KiB fill the limit between two growths of a table); fewer are only counted.
   template <class Key, class Hash>
   std::optional<std::uint64_t> room(unsigned me, std::size_t n, Key key, Hash hash) {
     if (options_.max_bytes == 0) return 0;
     Shard& s = shards_[me];
     const std::uint64_t growth = s.store->growthInserting(n, key, hash);
-    // the markings, as if all were new: where they would pass the limit, it stops (a table
-    // grows rarely; markings of tens of KiB fill the limit between two of its growths)
     const std::uint64_t markings = n * s.store->stride() * sizeof(std::uint64_t);
-    if (growth == 0 && bytes() + promised_.load() + markings <= options_.max_bytes) return 0;
-    if (growth == 0) {
+    const std::uint64_t want = growth + (markings >= kManySuccessorBytes ? markings : 0);
+    const std::uint64_t counted = want + (markings >= kManySuccessorBytes ? 0 : markings);
+    if (want == 0) {
+      if (bytes() + promised_.load() + counted <= options_.max_bytes) return 0;
       halt(ExploreStop::MaxMemory);
       return std::nullopt;
     }
     account(s);
-    const std::uint64_t promised = promised_.fetch_add(growth) + growth;
-    if (bytes() + promised + markings <= options_.max_bytes) return growth;
-    promised_.fetch_sub(growth);
+    const std::uint64_t promised = promised_.fetch_add(want) + want;
+    if (bytes() + promised + (counted - want) <= options_.max_bytes) return want;
+    promised_.fetch_sub(want);
     halt(ExploreStop::MaxMemory);
     return std::nullopt;
   }
-  /// Gives back growth room() promised, now that shard `me` reports its table.
+  /// Gives back what room() promised, now that shard `me` reports what it stored.
   void settle(unsigned me, std::uint64_t promised) {
     if (promised == 0) return;
     account(shards_[me]);
