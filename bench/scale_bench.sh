@@ -47,7 +47,7 @@ for n in 1000 10000 100000; do
     code=$?
     set -e
     [[ $code == 0 || $code == 3 ]] || { echo "gdpn analyze of $n cells: exit $code" >&2; exit 1; }
-    read -r t m <"$work/time"
+    read -r t m < <(tail -n 1 "$work/time")  # (after "Command exited with non-zero status 3")
     times+=("$t") mems+=("$m")
   done
   read -r states stop < <(python3 -c 'import json, sys; j = json.load(open(sys.argv[1])); print(j["states"], j["stop"])' "$work/analysis.json")

@@ -87,7 +87,7 @@ struct Shard {
 /// What a thread's inbox holds at most before the others wait for it to take it, bytes (the
 /// markings in flight stay bounded where a thread runs late: the others would otherwise
 /// pile up what they make for it).
-constexpr std::uint64_t kInboxBytes = std::uint64_t{4} << 20;
+constexpr std::uint64_t kInboxBytes = std::uint64_t{1} << 20;
 /// Bytes of a state's successors (made, sent and stored) past which a thread looks at the
 /// limit on memory before it makes them (below, it looks after each round of batches).
 constexpr std::uint64_t kManySuccessorBytes = std::uint64_t{64} << 10;
