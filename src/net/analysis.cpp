@@ -477,12 +477,13 @@ Search::Expand Search::expand(StateId v) {
     auto hash = [&](std::size_t i) { return now_.hashes[i]; };
     const std::size_t table = store_->growthInserting(via.size(), key, hash);
     const std::size_t marking = store_->stride() * sizeof(std::uint64_t);
+    const std::uint64_t held = bytes() + table;
     std::size_t fresh = via.size();
-    if (bytes() + table + fresh * marking > options_.max_bytes) {
+    if (held + fresh * marking > options_.max_bytes) {
       fresh = 0;
       for (std::size_t i = 0; i < via.size(); ++i) fresh += store_->find(key(i), hash(i)) == kNone ? 1u : 0u;
     }
-    if (bytes() + table + fresh * marking > options_.max_bytes) return Expand::Full;
+    if (held + fresh * marking > options_.max_bytes) return Expand::Full;
   }
   std::uint32_t rv = rindex(v);
   bool root = true;

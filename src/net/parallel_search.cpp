@@ -314,7 +314,8 @@ class Parallel {
           // looked at where the room grows, or where they are many (a state of a net of 10^5
           // parts has as many successors of tens of KiB; the others are looked at each round)
           const std::size_t need = (made + candidates.size()) * words;
-          const std::size_t grown = need <= keys.size() ? keys.size() : std::max(need, std::min(2 * keys.size(), need + (std::size_t{1} << 20)));
+          const std::size_t grown =
+              need <= keys.size() ? keys.size() : std::max(need, std::min(2 * keys.size(), need + (std::size_t{1} << 20)));
           const std::size_t more = grown > keys.capacity() ? grown - keys.capacity() : 0;
           const std::size_t ahead = more + candidates.size() * record;
           if (options_.max_bytes != 0 && (more != 0 || ahead * sizeof(std::uint64_t) >= kManySuccessorBytes)) {
