@@ -30,6 +30,14 @@ void adviseHugePages(const void* data, std::size_t bytes) {
 #endif
 }
 
+std::size_t secondLevelCacheBytes() {
+#if defined(_SC_LEVEL2_CACHE_SIZE)
+  const long bytes = sysconf(_SC_LEVEL2_CACHE_SIZE);
+  if (bytes > 0) return static_cast<std::size_t>(bytes);
+#endif
+  return std::size_t{1} << 20;
+}
+
 std::uint64_t memAvailableIn(std::string_view meminfo) {
   constexpr std::string_view kKey = "MemAvailable:";
   for (std::size_t at = 0; at < meminfo.size();) {

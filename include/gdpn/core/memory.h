@@ -18,6 +18,9 @@ namespace gdpn::core {
 /// ignored below a few megabytes and where the system does not offer them.
 void adviseHugePages(const void* data, std::size_t bytes);
 
+/// The core's second-level data cache, bytes: the system's figure, 1 MiB where it gives none.
+std::size_t secondLevelCacheBytes();
+
 /// `v.reserve(n)`, then adviseHugePages() over the reserved storage.
 template <class T>
 void reserveLarge(std::vector<T>& v, std::size_t n) {

@@ -310,6 +310,11 @@ class Kernel {
   /// The net's state outgrows the caches close to the core (4 MiB and more): a firing fetches
   /// what the next ones read ahead of them.
   bool big_ = false;
+  /// Occurrences running at once up to which what a completion reads (its transition, terms
+  /// and place slots, touched as it started) is likely still in the second-level cache: a
+  /// quarter of that cache at four lines an occurrence. Up to it, the loop over completions
+  /// fetches nothing ahead; its fetches would only read lines already there.
+  std::size_t warm_occurrences_ = 0;
   /// Rounds of immediate occurrences one firing phase takes at most, beyond 4 per transition
   /// of the net (a cycle of immediate transitions would never end); what is left waits for
   /// the next step.
