@@ -30,12 +30,18 @@ void adviseHugePages(const void* data, std::size_t bytes) {
 #endif
 }
 
+std::size_t secondLevelCacheFrom(long reported) {
+  constexpr long kLeast = long{256} << 10, kMost = long{4} << 20;
+  if (reported <= 0) return std::size_t{1} << 20;
+  return static_cast<std::size_t>(std::clamp(reported, kLeast, kMost));
+}
+
 std::size_t secondLevelCacheBytes() {
 #if defined(_SC_LEVEL2_CACHE_SIZE)
-  const long bytes = sysconf(_SC_LEVEL2_CACHE_SIZE);
-  if (bytes > 0) return static_cast<std::size_t>(bytes);
+  return secondLevelCacheFrom(sysconf(_SC_LEVEL2_CACHE_SIZE));
+#else
+  return secondLevelCacheFrom(0);
 #endif
-  return std::size_t{1} << 20;
 }
 
 std::uint64_t memAvailableIn(std::string_view meminfo) {

@@ -39,6 +39,18 @@ TEST(Memory, AControlGroupsLimitLeavesWhatItsUsageHasNotTaken) {
   EXPECT_EQ(cgroupRoom("1000", "x"), std::nullopt);
 }
 
+TEST(Memory, ASecondLevelCacheSizeIsTheReportedOneHeldToWhatCoresHave) {
+  EXPECT_EQ(secondLevelCacheFrom(1 << 20), std::size_t{1} << 20);
+  EXPECT_EQ(secondLevelCacheFrom(1280 << 10), std::size_t{1280} << 10);
+  EXPECT_EQ(secondLevelCacheFrom(0), std::size_t{1} << 20);   // not reported
+  EXPECT_EQ(secondLevelCacheFrom(-1), std::size_t{1} << 20);  // sysconf's error
+  EXPECT_EQ(secondLevelCacheFrom(532676608), std::size_t{4} << 20);  // a VM's 508 MiB
+  EXPECT_EQ(secondLevelCacheFrom(4096), std::size_t{256} << 10);
+  const std::size_t here = secondLevelCacheBytes();
+  EXPECT_GE(here, std::size_t{256} << 10);
+  EXPECT_LE(here, std::size_t{4} << 20);
+}
+
 TEST(Memory, ThisMachineHasMemoryToGive) {
   // on Linux from /proc/meminfo, elsewhere from the free pages: more than a MiB either way
   EXPECT_GT(availableMemory(), std::uint64_t{1} << 20);

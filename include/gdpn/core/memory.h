@@ -18,8 +18,13 @@ namespace gdpn::core {
 /// ignored below a few megabytes and where the system does not offer them.
 void adviseHugePages(const void* data, std::size_t bytes);
 
-/// The core's second-level data cache, bytes: the system's figure, 1 MiB where it gives none.
+/// The core's second-level data cache, bytes: secondLevelCacheFrom() of the system's figure.
 std::size_t secondLevelCacheBytes();
+
+/// A second-level cache size from what the system reports, bytes: 1 MiB where it reports
+/// none (0 or less), else held within 256 KiB to 4 MiB (virtual machines report sizes no core
+/// has, such as a third-level cache of 508 MiB).
+std::size_t secondLevelCacheFrom(long reported);
 
 /// `v.reserve(n)`, then adviseHugePages() over the reserved storage.
 template <class T>
