@@ -18,8 +18,8 @@ namespace gdpn::core {
 
 void adviseHugePages(const void* data, std::size_t bytes) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-  constexpr std::uintptr_t kHuge = std::uintptr_t{2} << 20;
-  if (data == nullptr || bytes < 2 * kHuge) return;
+  constexpr std::uintptr_t kHuge = kHugePageBytes;
+  if (data == nullptr || bytes < kHuge) return;
   const auto begin = (reinterpret_cast<std::uintptr_t>(data) + kHuge - 1) & ~(kHuge - 1);
   const auto end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(kHuge - 1);
   // a hint: a kernel without transparent huge pages refuses it, and nothing changes
@@ -28,6 +28,19 @@ void adviseHugePages(const void* data, std::size_t bytes) {
   (void)data;
   (void)bytes;
 #endif
+}
+
+void* allocateLarge(std::size_t bytes) {
+  if (bytes < kHugePageBytes) {
+    if (void* p = std::malloc(std::max<std::size_t>(bytes, 1))) return p;
+    throw std::bad_alloc();
+  }
+  const std::size_t whole = (bytes + kHugePageBytes - 1) / kHugePageBytes * kHugePageBytes;
+  if (whole < bytes) throw std::bad_alloc();  // rounded past the largest size
+  void* p = std::aligned_alloc(kHugePageBytes, whole);
+  if (p == nullptr) throw std::bad_alloc();
+  adviseHugePages(p, whole);
+  return p;
 }
 
 std::size_t secondLevelCacheFrom(long reported) {

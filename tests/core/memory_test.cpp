@@ -3,7 +3,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
 #include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
 
 namespace gdpn::core {
 namespace {
@@ -49,6 +56,66 @@ TEST(Memory, ASecondLevelCacheSizeIsTheReportedOneHeldToWhatCoresHave) {
   const std::size_t here = secondLevelCacheBytes();
   EXPECT_GE(here, std::size_t{256} << 10);
   EXPECT_LE(here, std::size_t{4} << 20);
+}
+
+/// The flags of the mapping of this process that holds `p` (/proc/self/smaps' VmFlags), and
+/// where it starts and ends; empty where there is no such file.
+struct Mapping {
+  std::uintptr_t begin = 0, end = 0;
+  std::string flags;
+};
+Mapping mappingOf(const void* p) {
+  const auto at = reinterpret_cast<std::uintptr_t>(p);
+  std::ifstream smaps("/proc/self/smaps");
+  Mapping m, found;
+  for (std::string line; std::getline(smaps, line);) {
+    unsigned long long b = 0, e = 0;
+    char dash = 0;
+    std::istringstream in(line);
+    if (line.rfind("VmFlags:", 0) == 0) {
+      if (m.begin <= at && at < m.end) found = {m.begin, m.end, line};
+    } else if ((in >> std::hex >> b >> dash >> e) && dash == '-') {
+      m = {static_cast<std::uintptr_t>(b), static_cast<std::uintptr_t>(e), {}};
+    }
+  }
+  return found;
+}
+
+TEST(Memory, ALargeBlockLiesOnWholeHugePagesFromItsStart) {
+  for (const std::size_t bytes : {kHugePageBytes, kHugePageBytes + 1, std::size_t{9} << 20}) {
+    void* p = allocateLarge(bytes);
+    ASSERT_NE(p, nullptr);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(p) % kHugePageBytes, 0u) << bytes;
+    std::memset(p, 0xab, bytes);  // every byte asked for is there
+    EXPECT_EQ(static_cast<unsigned char*>(p)[bytes - 1], 0xab);
+#if defined(__linux__) && !defined(__SANITIZE_ADDRESS__)
+    // where the kernel has transparent huge pages, the whole block is advised to lie on them
+    // (a block from malloc alone has its first and last 2 MiB on small pages); ASan's
+    // allocator maps its own blocks
+    if (std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled")) {
+      const Mapping m = mappingOf(p);
+      EXPECT_NE(m.flags.find(" hg"), std::string::npos) << bytes << ": " << m.flags;
+      EXPECT_LE(m.begin, reinterpret_cast<std::uintptr_t>(p));
+      EXPECT_GE(m.end, reinterpret_cast<std::uintptr_t>(p) + bytes);
+    }
+#endif
+    std::free(p);
+  }
+  // small ones come from malloc: no rounding up to 2 MiB
+  void* small = allocateLarge(1000);
+  ASSERT_NE(small, nullptr);
+  std::memset(small, 1, 1000);
+  std::free(small);
+  std::free(allocateLarge(0));
+}
+
+TEST(Memory, AVectorWithTheLargeAllocatorStartsOnAHugePageOnceItIsLarge) {
+  std::vector<std::uint64_t, LargeAllocator<std::uint64_t>> v(1000, 7);
+  EXPECT_EQ(v[999], 7u);
+  v.assign(std::size_t{1} << 20, 3);  // 8 MiB
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(v.data()) % kHugePageBytes, 0u);
+  EXPECT_EQ(v.back(), 3u);
+  EXPECT_THROW(LargeAllocator<std::uint64_t>().allocate(static_cast<std::size_t>(-1) / 4), std::bad_array_new_length);
 }
 
 TEST(Memory, ThisMachineHasMemoryToGive) {

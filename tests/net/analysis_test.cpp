@@ -818,6 +818,32 @@ TEST(MarkingStore, GrowthWithinSaysHowMuchTheTableGrowsAsMarkingsAreAdded) {
   EXPECT_GT(store.tableBytes(), std::size_t{1024} * sizeof(std::uint64_t));
 }
 
+TEST(MarkingStore, TheWalksArraysTakeAHugePageOfChunksAtATimeOnceTheyHoldOne) {
+  // chunks of 256 KiB (the walk's pending edges): the first eight one at a time, as a small
+  // search needs, then eight at once, carved from one block that starts on a huge page
+  detail::Chunked<std::uint32_t> a;
+  constexpr std::size_t kChunk = std::size_t{1} << 16;
+  for (std::uint32_t i = 0; i < 8 * kChunk; ++i) a.push(i);
+  EXPECT_EQ(a.bytes(), std::size_t{2} << 20);
+  a.push(8 * kChunk);
+  EXPECT_EQ(a.bytes(), std::size_t{4} << 20);
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(a.at(8 * kChunk)) % core::kHugePageBytes, 0u);
+  for (std::uint32_t i = 8 * kChunk + 1; i < 16 * kChunk; ++i) a.push(i);
+  EXPECT_EQ(a.bytes(), std::size_t{4} << 20);  // the block's chunks in use
+  // runs never cross a chunk, carved or not
+  const std::size_t run = a.appendRun(kChunk, 0xffffffffu);
+  EXPECT_EQ(run, 16 * kChunk);
+  EXPECT_EQ(a.bytes(), std::size_t{6} << 20);
+  for (std::uint32_t i = 0; i < 16 * kChunk; i += 4099) ASSERT_EQ(a[i], i);
+  a.shrink(3);
+  EXPECT_EQ(a.size(), 3u);
+  EXPECT_EQ(a.bytes(), std::size_t{6} << 20);  // the chunks stay for reuse
+  a.clear();
+  EXPECT_EQ(a.bytes(), 0u);
+  a.push(5);
+  EXPECT_EQ(a[0], 5u);
+}
+
 TEST(MarkingStore, ALookupGivenAPeekedStateTrustsItOnlyWhereItIsTheMarking) {
   // the search passes what Store::peek gave (the first state whose hash tag matches): the
   // right state, another one, or none. Each gives the marking's own id, and a marking not

@@ -112,7 +112,10 @@ class Layout {
 
 /// Fixed-size chunks of 2^Shift elements, so that growing never copies and never holds twice
 /// the memory. Chunks of 2 MiB or more lie on huge pages where the system offers them (what is
-/// read at random, a state's marking or its index, then costs no TLB miss).
+/// read at random, a state's marking or its index, then costs no TLB miss); smaller ones do
+/// too once 2 MiB of them are held, a huge page's worth carved from one block (a walk of
+/// millions of states would otherwise take its memory a small page fault at a time, 12 us
+/// each on a virtual machine here).
 template <typename T, std::size_t Shift = 16>
 class Chunked {
  public:
@@ -120,7 +123,7 @@ class Chunked {
   T* at(std::size_t i) { return chunks_[i >> kShift].get() + (i & kMask) * stride_; }
   const T* at(std::size_t i) const { return chunks_[i >> kShift].get() + (i & kMask) * stride_; }
   T* append() {
-    if ((size_ >> kShift) >= chunks_.size()) chunks_.push_back(allocate());
+    if ((size_ >> kShift) >= chunks_.size()) grow();
     return at(size_++);
   }
   void push(const T& x) { *append() = x; }
@@ -132,7 +135,7 @@ class Chunked {
       std::fill(at(size_), at(size_ | kMask) + stride_, pad);
       size_ = (size_ | kMask) + 1;
     }
-    while (((size_ + n - 1) >> kShift) >= chunks_.size()) chunks_.push_back(allocate());
+    while (((size_ + n - 1) >> kShift) >= chunks_.size()) grow();
     const std::size_t first = size_;
     size_ += n;
     return first;
@@ -153,34 +156,41 @@ class Chunked {
   std::size_t size() const { return size_; }
   /// Memory held, bytes: a chunk on huge pages only as far as it is used (its pages are
   /// touched, and so taken from the system, only then).
-  std::size_t bytes() const {
-    return chunkBytes() >= kHuge ? size_ * stride_ * sizeof(T) : chunks_.size() * chunkBytes();
-  }
+  std::size_t bytes() const { return chunkBytes() >= kHuge ? size_ * stride_ * sizeof(T) : held_; }
   void clear() {
     chunks_.clear();
     size_ = 0;
+    held_ = 0;
   }
 
  private:
   static_assert(std::is_trivially_destructible_v<T>);
   static constexpr std::size_t kShift = Shift;
   static constexpr std::size_t kMask = (std::size_t{1} << kShift) - 1;
-  static constexpr std::size_t kHuge = std::size_t{2} << 20;
+  static constexpr std::size_t kHuge = core::kHugePageBytes;
+  /// Frees a block; the chunks carved from a block after its first own nothing.
   struct Free {
-    void operator()(T* p) const { std::free(p); }
+    bool owns = true;
+    void operator()(T* p) const {
+      if (owns) std::free(p);
+    }
   };
   std::size_t chunkBytes() const { return (kMask + 1) * stride_ * sizeof(T); }
-  std::unique_ptr<T[], Free> allocate() const {
+  /// Room for one more chunk at least: a chunk of its own while chunks are large or few, else
+  /// a huge page's worth of them.
+  void grow() {
     const std::size_t bytes = chunkBytes();
-    const bool huge = bytes >= kHuge;
-    void* p = huge ? std::aligned_alloc(kHuge, (bytes + kHuge - 1) / kHuge * kHuge) : std::malloc(bytes);
-    if (p == nullptr) throw std::bad_alloc();
-    if (huge) core::adviseHugePages(p, bytes);
-    std::uninitialized_default_construct_n(static_cast<T*>(p), (kMask + 1) * stride_);
-    return std::unique_ptr<T[], Free>(static_cast<T*>(p));
+    const std::size_t per_block = kHuge / bytes;
+    const std::size_t n = bytes >= kHuge || chunks_.size() < per_block ? 1 : per_block;
+    const std::size_t block = n == 1 ? bytes : kHuge;
+    T* p = static_cast<T*>(core::allocateLarge(block));
+    std::uninitialized_default_construct_n(p, n * (kMask + 1) * stride_);
+    for (std::size_t i = 0; i < n; ++i) chunks_.emplace_back(p + i * (kMask + 1) * stride_, Free{i == 0});
+    held_ += block;
   }
   std::size_t stride_;
   std::size_t size_ = 0;
+  std::size_t held_ = 0;  // bytes of the blocks taken
   std::vector<std::unique_ptr<T[], Free>> chunks_;
 };
 
@@ -297,7 +307,7 @@ class Store {
   }
   /// Frees the table: the markings stay readable by id (at(), extra()), but none can be
   /// looked up or added any more.
-  void dropIndex() { std::vector<std::uint64_t>().swap(table_); }
+  void dropIndex() { decltype(table_)().swap(table_); }
   /// Re-packs every marking into `layout` (wider fields), keeping the ids.
   void relayout(Layout layout) {
     Chunked<std::uint64_t, kArenaShift> next(layout.words() + extra_);
@@ -330,9 +340,9 @@ class Store {
   void grow() { rehash(table_.size() * 2); }
   void rehash(std::size_t capacity) {
     // the old table goes first (the markings give it again), so that the two never add up;
-    // a table of many megabytes is probed at random: huge pages spare a TLB miss per probe
+    // a table of many megabytes is probed at random: its allocator puts it on huge pages,
+    // which spare a TLB miss per probe
     dropIndex();
-    core::reserveLarge(table_, capacity);
     table_.assign(capacity, kEmpty);
     for (std::size_t s = 0; s < size(); ++s) {
       const std::uint64_t h = hash(at(static_cast<StateId>(s)));
@@ -344,7 +354,7 @@ class Store {
   Layout layout_;
   std::size_t extra_ = 0;  // words kept beside each marking
   Chunked<std::uint64_t, kArenaShift> arena_;
-  std::vector<std::uint64_t> table_;
+  std::vector<std::uint64_t, core::LargeAllocator<std::uint64_t>> table_;
 };
 
 class Firing;
