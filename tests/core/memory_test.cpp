@@ -58,6 +58,7 @@ TEST(Memory, ASecondLevelCacheSizeIsTheReportedOneHeldToWhatCoresHave) {
   EXPECT_LE(here, std::size_t{4} << 20);
 }
 
+#if defined(__linux__) && !defined(__SANITIZE_ADDRESS__)
 /// The flags of the mapping of this process that holds `p` (/proc/self/smaps' VmFlags), and
 /// where it starts and ends; empty where there is no such file.
 struct Mapping {
@@ -80,6 +81,7 @@ Mapping mappingOf(const void* p) {
   }
   return found;
 }
+#endif
 
 TEST(Memory, ALargeBlockLiesOnWholeHugePagesFromItsStart) {
   for (const std::size_t bytes : {kHugePageBytes, kHugePageBytes + 1, std::size_t{9} << 20}) {
