@@ -183,6 +183,7 @@ class Chunked {
     const std::size_t per_block = kHuge / bytes;
     const std::size_t n = bytes >= kHuge || chunks_.size() < per_block ? 1 : per_block;
     const std::size_t block = n == 1 ? bytes : kHuge;
+    chunks_.reserve(chunks_.size() + n);  // the block is never left without its owner
     T* p = static_cast<T*>(core::allocateLarge(block));
     std::uninitialized_default_construct_n(p, n * (kMask + 1) * stride_);
     for (std::size_t i = 0; i < n; ++i) chunks_.emplace_back(p + i * (kMask + 1) * stride_, Free{i == 0});
