@@ -96,6 +96,10 @@ TEST(Memory, ALargeBlockLiesOnWholeHugePagesFromItsStart) {
     // allocator maps its own blocks
     if (std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled")) {
       const Mapping m = mappingOf(p);
+      if (m.flags.empty()) {
+        std::free(p);
+        GTEST_SKIP() << "no VmFlags in /proc/self/smaps";
+      }
       EXPECT_NE(m.flags.find(" hg"), std::string::npos) << bytes << ": " << m.flags;
       EXPECT_LE(m.begin, reinterpret_cast<std::uintptr_t>(p));
       EXPECT_GE(m.end, reinterpret_cast<std::uintptr_t>(p) + bytes);

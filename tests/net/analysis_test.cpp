@@ -842,6 +842,12 @@ TEST(MarkingStore, TheWalksArraysTakeAHugePageOfChunksAtATimeOnceTheyHoldOne) {
   EXPECT_EQ(a.bytes(), 0u);
   a.push(5);
   EXPECT_EQ(a[0], 5u);
+  // chunks of 1.5 MiB (six words an element): one to a block of 2 MiB after the first
+  detail::Chunked<std::uint32_t> b(6);
+  for (std::uint32_t i = 0; i < 2 * kChunk; ++i) *b.append() = i;
+  EXPECT_EQ(b.bytes(), (std::size_t{3} << 19) + (std::size_t{2} << 20));
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(b.at(kChunk)) % core::kHugePageBytes, 0u);
+  EXPECT_EQ(b[2 * kChunk - 1], 2 * kChunk - 1);
 }
 
 TEST(MarkingStore, ALookupGivenAPeekedStateTrustsItOnlyWhereItIsTheMarking) {

@@ -34,8 +34,12 @@ void* allocateLarge(std::size_t bytes);
 /// grown and probed at random (a hash table of millions of entries).
 template <class T>
 struct LargeAllocator {
+  static_assert(alignof(T) <= alignof(std::max_align_t), "blocks under 2 MiB come from malloc");
+  /// The elements it makes room for.
   using value_type = T;
+  /// It holds nothing: any two give back each other's blocks.
   LargeAllocator() = default;
+  /// The same for another element type (as containers rebind it).
   template <class U>
   LargeAllocator(const LargeAllocator<U>&) noexcept {}  // NOLINT(google-explicit-constructor)
   /// Room for `n` elements.
@@ -45,6 +49,7 @@ struct LargeAllocator {
   }
   /// Gives back what allocate() gave.
   void deallocate(T* p, std::size_t) noexcept { std::free(p); }
+  /// Always equal: a block from one is given back by any other.
   template <class U>
   bool operator==(const LargeAllocator<U>&) const noexcept {
     return true;

@@ -154,8 +154,9 @@ class Chunked {
   /// Drops the elements from `n` on; the chunks stay for reuse.
   void shrink(std::size_t n) { size_ = std::min(size_, n); }
   std::size_t size() const { return size_; }
-  /// Memory held, bytes: a chunk on huge pages only as far as it is used (its pages are
-  /// touched, and so taken from the system, only then).
+  /// Memory held, bytes: a chunk of 2 MiB or more only as far as it is used (its pages are
+  /// touched, and so taken from the system, only then); smaller chunks every block taken for
+  /// them, used or not (a block of 2 MiB on a huge page is taken whole at its first touch).
   std::size_t bytes() const { return chunkBytes() >= kHuge ? size_ * stride_ * sizeof(T) : held_; }
   void clear() {
     chunks_.clear();
@@ -181,9 +182,12 @@ class Chunked {
   void grow() {
     const std::size_t bytes = chunkBytes();
     const std::size_t per_block = kHuge / bytes;
-    const std::size_t n = bytes >= kHuge || chunks_.size() < per_block ? 1 : per_block;
-    const std::size_t block = n == 1 ? bytes : kHuge;
-    chunks_.reserve(chunks_.size() + n);  // the block is never left without its owner
+    const bool carve = bytes < kHuge && chunks_.size() >= per_block;
+    const std::size_t n = carve ? per_block : 1;
+    const std::size_t block = carve ? kHuge : bytes;
+    // room in the list first, so that a block is never left without its owner (doubling, as
+    // push_back would: an arena of 10^4 chunks grows it as often)
+    if (chunks_.capacity() < chunks_.size() + n) chunks_.reserve(std::max(chunks_.size() + n, 2 * chunks_.capacity()));
     T* p = static_cast<T*>(core::allocateLarge(block));
     std::uninitialized_default_construct_n(p, n * (kMask + 1) * stride_);
     for (std::size_t i = 0; i < n; ++i) chunks_.emplace_back(p + i * (kMask + 1) * stride_, Free{i == 0});
