@@ -3,9 +3,15 @@
 // categories must be answered, and answered as the oracle says; every LTL answer shown by a
 // lasso must be shown by it (the lasso fires from the initial marking, its loop comes back,
 // and the path formula holds on it for E, fails on it for A).
+//
+// The two nets of millions of markings (Kanban, SwimmingPool) take minutes for all 112 of
+// their formulas: CI answers every eighth formula of each category on them (the first and the
+// ninth), and the ctest label `full` (`ctest --preset full`, GDPN_CONTEST_FULL=1) answers them
+// all.
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -29,6 +35,19 @@ std::map<std::string, std::string> oracle() {
   while (in >> id >> answer) out[id] = answer;
   return out;
 }
+
+/// True for the two nets whose state spaces take minutes to search.
+bool bigNet(const std::string& model) { return model == "Kanban-PT-00005" || model == "SwimmingPool-PT-02"; }
+
+/// True when every formula of every net is to be answered (the label `full`).
+bool fullSet() {
+  const char* full = std::getenv("GDPN_CONTEST_FULL");
+  return full != nullptr && std::string(full) == "1";
+}
+
+/// Whether formula `index` (0 to 15) of a category of `model` is asked: all of them but on the
+/// big nets outside the full set, where every eighth.
+bool asked(const std::string& model, std::size_t index) { return fullSet() || !bigNet(model) || index % 8 == 0; }
 
 std::string word(const QueryAnswer& a) {
   switch (a.verdict) {
@@ -136,7 +155,7 @@ TEST_P(ContestFormulas, EveryAnswerIsTheOracles) {
   ASSERT_TRUE(net);
   const auto expected = oracle();
   ASSERT_EQ(expected.size(), 1568u);
-  std::vector<Property> asked;
+  std::vector<Property> questions;
   std::vector<bool> ltl;  // per formula: from an LTL category
   for (const char* category : {"ReachabilityCardinality", "ReachabilityFireability", "UpperBounds", "CTLCardinality",
                                "CTLFireability", "LTLCardinality", "LTLFireability"}) {
@@ -147,30 +166,32 @@ TEST_P(ContestFormulas, EveryAnswerIsTheOracles) {
     auto properties = readMccProperties(*net, *text, file, diags);
     ASSERT_TRUE(properties) << diags.str();
     EXPECT_EQ(properties->size(), 16u) << category;
-    asked.insert(asked.end(), properties->begin(), properties->end());
-    ltl.resize(asked.size(), std::string(category).starts_with("LTL"));
+    for (std::size_t i = 0; i < properties->size(); ++i) {
+      if (asked(model, i)) questions.push_back((*properties)[i]);
+    }
+    ltl.resize(questions.size(), std::string(category).starts_with("LTL"));
   }
   // one batch: the graph is stored once for all of them
   std::vector<Formula> formulas;
-  for (const auto& p : asked) formulas.push_back(p.formula);
+  for (const auto& p : questions) formulas.push_back(p.formula);
   const auto answers = answerQueries(*net, formulas);
   std::size_t lassos = 0;
-  for (std::size_t i = 0; i < asked.size(); ++i) {
-    const auto at = expected.find(asked[i].id);
-    ASSERT_NE(at, expected.end()) << asked[i].id;
+  for (std::size_t i = 0; i < questions.size(); ++i) {
+    const auto at = expected.find(questions[i].id);
+    ASSERT_NE(at, expected.end()) << questions[i].id;
     EXPECT_EQ(word(answers[i]), at->second)
-        << asked[i].id << (ltl[i] ? " (LTL)" : "") << ": " << formulaText(*net, asked[i].formula) << " "
+        << questions[i].id << (ltl[i] ? " (LTL)" : "") << ": " << formulaText(*net, questions[i].formula) << " "
         << answers[i].unsupported;
     if (answers[i].lasso) {
       // under its negations, A p or E p: the lasso breaks p for A, keeps it for E
-      const Formula* f = &asked[i].formula;
+      const Formula* f = &questions[i].formula;
       while (f->kind == FormulaKind::Not) f = &f->operands[0];
-      EXPECT_EQ(holdsOnLasso(*net, f->operands[0], answers[i]), f->kind == FormulaKind::Exists) << asked[i].id;
+      EXPECT_EQ(holdsOnLasso(*net, f->operands[0], answers[i]), f->kind == FormulaKind::Exists) << questions[i].id;
       ++lassos;
     }
   }
   // most of the contest's LTL formulas fail on these nets: their counterexamples were checked
-  EXPECT_GE(lassos, 8u);
+  EXPECT_GE(lassos, asked(model, 1) ? 8u : 2u);
 }
 
 TEST_P(ContestFormulas, StubbornSetsGiveTheFullSearchsReachabilityAnswers) {
@@ -181,7 +202,7 @@ TEST_P(ContestFormulas, StubbornSetsGiveTheFullSearchsReachabilityAnswers) {
   const auto net = conformanceNet(model);
   ASSERT_TRUE(net);
   const auto expected = oracle();
-  const bool big = model == "Kanban-PT-00005" || model == "SwimmingPool-PT-02";
+  const bool big = bigNet(model);
   std::size_t refuted = 0;  // formulas the state equation answered without a search
   for (const char* category : {"ReachabilityCardinality", "ReachabilityFireability"}) {
     const auto file = (kConformanceDir / "queries" / model / (std::string(category) + ".xml")).string();
@@ -190,7 +211,9 @@ TEST_P(ContestFormulas, StubbornSetsGiveTheFullSearchsReachabilityAnswers) {
     ASSERT_TRUE(text) << diags.str();
     const auto properties = readMccProperties(*net, *text, file, diags);
     ASSERT_TRUE(properties) << diags.str();
-    for (const auto& p : *properties) {
+    for (std::size_t index = 0; index < properties->size(); ++index) {
+      if (!asked(model, index)) continue;
+      const auto& p = (*properties)[index];
       // the state equation first, as the command line does: where it refutes, the oracle's answer
       ExploreOptions limits;
       const QueryAnswer first = answerQuery(*net, p.formula, limits);
