@@ -39,10 +39,16 @@ pages:
           probe.depth = c1.image
           probe.ranges = c2.ranges
           probe.acceleration = c3.acceleration
+          probe.nearest = (c2.nearest, c2.value)
+          probe.imu_value = c3.value
           try:
               c2.image
           except AttributeError as e:
               probe.wrong = str(e)
+          try:
+              c3.ranges
+          except AttributeError as e:
+              probe.no_channel = str(e)
           try:
               sim.node("b/depth").far = 0.01
           except ValueError as e:
@@ -92,6 +98,14 @@ def test_pictures_ranges_and_imu_reach_numpy(write_model, probe):
     assert abs(ax) < 1e-3 and abs(ay) < 1e-3 and abs(az - 9.81) < 1e-2
 
     assert "sensor 'c/lidar' is a LaserScan: it has no 'image'" in probe.wrong
+    # a channel of another kind's: the error lists what this one has
+    assert probe.no_channel == (
+        "sensor 'd/box/imu' is an Imu: it has no 'ranges' "
+        "(it has: active, value, acceleration, angular_velocity, samples)")
+    # the main number: a LaserScan's nearest distance, the samples an Imu has taken
+    nearest, value = probe.nearest
+    assert nearest == value and abs(nearest - 3.0 / np.cos(np.radians(45 / 7))) < 1e-6
+    assert probe.imu_value >= 1
     # the rules between a camera's fields hold for a script as for the model file
     assert "far (0.01 m) must lie beyond near (0.05 m)" in probe.refused
 

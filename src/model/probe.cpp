@@ -9,6 +9,7 @@
 #include "gdpn/model/simulation.h"
 #include "gdpn/scene/actions.h"
 #include "gdpn/scene/fields.h"
+#include "gdpn/sensors/sensor_kind.h"
 
 namespace gdpn::model {
 
@@ -55,18 +56,38 @@ std::optional<Probe> nodeProbe(const Simulation& sim, const std::string& path, c
   p.node = node->handle();
   const bool body = sim.physics() && sim.physics()->isBody(*node);
   const bool sensor = node->type().category == scene::Category::Sensor;
+  const sensors::SensorKind* kind = sensors::sensorKind(node->kind());
+  // a sensor's channel that gives numbers: one, a flag, or a vector's three (or one axis)
+  const auto channelOf = [&](std::string_view name) -> int {
+    if (kind == nullptr) return -1;
+    for (std::size_t i = 0; i < kind->channels.size(); ++i) {
+      const auto type = kind->channels[i].type;
+      const bool numeric = type == sensors::ChannelType::Number || type == sensors::ChannelType::Flag ||
+                           type == sensors::ChannelType::Vector;
+      if (kind->channels[i].name == name && numeric) return static_cast<int>(i);
+    }
+    return -1;
+  };
   std::string q = quantity;
   // position.x: one axis of a vector
   if (const auto dot = q.rfind('.'); dot != std::string::npos && dot + 2 == q.size() && q[dot + 1] >= 'x' &&
                                      q[dot + 1] <= 'z') {
     p.axis = q[dot + 1] - 'x';
     q.resize(dot);
-    if (q != "position" && q != "velocity") {
-      why = "'." + quantity.substr(dot + 1) + "' picks an axis of position or velocity, not of '" + q + "'";
+    const int c = channelOf(q);
+    const bool vector = c >= 0 && kind->channels[static_cast<std::size_t>(c)].type == sensors::ChannelType::Vector;
+    if (q != "position" && q != "velocity" && !vector) {
+      why = "'." + quantity.substr(dot + 1) + "' picks an axis of position, velocity or a sensor's vector, not of '" + q + "'";
       return std::nullopt;
     }
   }
-  if (q == "position") {
+  if (const int c = channelOf(q); c >= 0) {
+    // a sensor's own channel (a Gps's `position` is its reading, not its node's place)
+    p.what = Probe::What::Channel;
+    p.field = static_cast<std::size_t>(c);
+    p.vector = kind->channels[p.field].type == sensors::ChannelType::Vector;
+    p.degrees = kind->channels[p.field].angular && sim.model().settings.angles == scene::AngleUnit::Degrees;
+  } else if (q == "position") {
     p.what = Probe::What::Position;
   } else if (q == "velocity") {
     if (!body) {
@@ -96,6 +117,9 @@ std::optional<Probe> nodeProbe(const Simulation& sim, const std::string& path, c
       if (body) known.emplace_back("velocity");
       if (node->kind() == scene::NodeKind::Joint) known.insert(known.end(), {"angle", "rate"});
       if (sensor) known.insert(known.end(), {"reading", "active"});
+      for (std::size_t k = 0; kind != nullptr && k < kind->channels.size(); ++k) {
+        if (channelOf(kind->channels[k].name) == static_cast<int>(k)) known.emplace_back(kind->channels[k].name);
+      }
       for (const auto& fd : node->type().fields) {
         if (readable(*fd)) known.push_back(fd->name);
       }
@@ -162,12 +186,25 @@ bool readProbe(const Simulation& sim, const Probe& p, double* out) {
     }
     case Probe::What::Reading: {
       const auto& r = sim.reading(p.node);
-      *out = node->kind() == scene::NodeKind::Region ? static_cast<double>(r.items.size()) : r.value;
+      const sensors::SensorKind* kind = sensors::sensorKind(node->kind());
+      *out = kind != nullptr && kind->primary < r.channels().size() ? r.get<double>(kind->primary) : 0.0;
+      break;
+    }
+    case Probe::What::Channel: {
+      const auto& r = sim.reading(p.node);
+      if (p.field >= r.channels().size()) return false;
+      const double scale = p.degrees ? 180.0 / std::numbers::pi : 1.0;
+      if (const auto* x = std::get_if<double>(&r.value(p.field))) *out = *x * scale;
+      else if (const auto* b = std::get_if<bool>(&r.value(p.field))) *out = *b ? 1.0 : 0.0;
+      else if (const auto* v = std::get_if<core::Vec3>(&r.value(p.field))) vector(*v * scale);
       break;
     }
     case Probe::What::Active: *out = sim.reading(p.node).active ? 1.0 : 0.0; break;
     case Probe::What::Key: {
-      const auto& keys = sim.reading(p.node).keys;
+      const auto& r = sim.reading(p.node);
+      const int k = r.find("keys");
+      if (k < 0) return false;
+      const auto& keys = r.get<std::vector<std::string>>(static_cast<std::size_t>(k));
       *out = std::find(keys.begin(), keys.end(), p.key) != keys.end() ? 1.0 : 0.0;
       break;
     }

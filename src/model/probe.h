@@ -23,7 +23,8 @@ struct Probe {
     Velocity,    ///< a body's linear velocity, m/s
     JointAngle,  ///< a joint's position on axis 1 (the model's angle unit, or m for a slider)
     JointRate,   ///< its rate on axis 1 (per second)
-    Reading,     ///< a sensor's: a Region's count of items, else its value
+    Reading,     ///< a sensor's main number (its kind's `primary` channel: a Region's count, a distance)
+    Channel,     ///< one of a sensor's channels that gives numbers: a number, a flag (1 or 0), a vector
     Active,      ///< a sensor's: 1 while it feels something (a Region holds, a RangeFinder sees), else 0
     Key,         ///< a KeyboardSensor's: 1 while `key` is held down, else 0
     Field,       ///< one of the node's number or bool fields
@@ -31,19 +32,24 @@ struct Probe {
   What what = What::Tokens;
   net::PlaceId place = 0;         ///< Tokens: the place
   scene::NodeHandle node = 0;     ///< the node
-  std::size_t field = 0;          ///< Field: its index
+  std::size_t field = 0;          ///< Field: its index; Channel: the channel's
+  bool vector = false;            ///< Channel: a vector's (three numbers, or `axis` alone)
+  bool degrees = false;           ///< Channel: an angular rate given in deg/s
   std::string key;                ///< Key: the key's name
   bool linear = false;            ///< a slider's angle and rate: metres, never degrees
-  int axis = -1;                  ///< Position, Velocity: 0, 1, 2 for x, y, z alone; -1 for all three
-  /// How many numbers it gives: 3 for a whole position or velocity, else 1.
-  [[nodiscard]] int width() const { return (what == What::Position || what == What::Velocity) && axis < 0 ? 3 : 1; }
+  int axis = -1;                  ///< Position, Velocity, a vector Channel: 0, 1, 2 for x, y, z alone; -1 for all three
+  /// How many numbers it gives: 3 for a whole position, velocity or vector channel, else 1.
+  [[nodiscard]] int width() const {
+    return (what == What::Position || what == What::Velocity || (what == What::Channel && vector)) && axis < 0 ? 3 : 1;
+  }
 };
 
 /// The tokens on the place named `place` (qualified); nullopt and `why` when there is none.
 std::optional<Probe> placeProbe(const Simulation& sim, const std::string& place, std::string& why);
 
 /// Quantity `quantity` of the plant's node `path`: `position`, `velocity` (each also `.x`,
-/// `.y`, `.z` alone), `angle`, `rate`, `reading`, `active`, or a number or bool field's name.
+/// `.y`, `.z` alone), `angle`, `rate`, `reading`, `active`, a sensor's channel that gives
+/// numbers (`distance`, `acceleration`, `acceleration.z`), or a number or bool field's name.
 /// Nullopt and `why` (naming what the node has) when it does not have it.
 std::optional<Probe> nodeProbe(const Simulation& sim, const std::string& path, const std::string& quantity,
                                std::string& why);

@@ -43,8 +43,37 @@ SensorRule sensorRule(const Node& n, std::size_t i, const FieldValue& v) {
       }
       return {};
     }
-    default: return {};
+    // no rules between their fields
+    case NodeKind::Group:
+    case NodeKind::Transform:
+    case NodeKind::Material:
+    case NodeKind::Light:
+    case NodeKind::Camera:
+    case NodeKind::Fog:
+    case NodeKind::Cube:
+    case NodeKind::Sphere:
+    case NodeKind::Cylinder:
+    case NodeKind::Cone:
+    case NodeKind::Plane:
+    case NodeKind::Mesh:
+    case NodeKind::Terrain:
+    case NodeKind::World:
+    case NodeKind::Body:
+    case NodeKind::Joint:
+    case NodeKind::Conveyor:
+    case NodeKind::GradientField:
+    case NodeKind::Region:
+    case NodeKind::RangeFinder:
+    case NodeKind::GradientSensor:
+    case NodeKind::KeyboardSensor:
+    case NodeKind::MouseSensor:
+    case NodeKind::TimeSensor:
+    case NodeKind::Imu:
+    case NodeKind::Gps:
+    case NodeKind::Contact:
+    case NodeKind::ForceTorque: return {};
   }
+  return {};
 }
 
 }  // namespace gdpn::scene

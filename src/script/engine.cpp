@@ -863,12 +863,12 @@ void Engine::sensorEvent(net::PlaceSlotId ps, ScriptKind kind, scene::NodeHandle
   py::object view = detail::makeSensorView(detail::refTo(*impl_), sensor);
   const auto& r = impl_->reading(sensor);
   py::list items;
-  for (auto h : r.items) items.append(impl_->nodeView(h));
+  for (auto h : r.items()) items.append(impl_->nodeView(h));
   impl_->globals["items"] = items;
   impl_->globals["value"] = view;
   const bool with_item = kind == ScriptKind::OnEnter || kind == ScriptKind::OnExit;
-  py::object arg = with_item ? impl_->itemList(item, r.items)
-                             : (kind == ScriptKind::OnSample && !r.items.empty() ? py::object(items) : view);
+  py::object arg = with_item ? impl_->itemList(item, r.items())
+                             : (kind == ScriptKind::OnSample && !r.items().empty() ? py::object(items) : view);
   impl_->runSensor(index, kind, ps, impl_->placeView(net.placeSlots()[ps].place).ptr(), with_item, items.ptr(),
                    arg.ptr());
 }

@@ -9,10 +9,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <stdexcept>
 
 #include "gdpn/core/math.h"
 #include "gdpn/core/text.h"
+#include "gdpn/scene/types.h"
+#include "gdpn/sensors/sensor_kind.h"
 
 namespace py = pybind11;
 
@@ -93,25 +96,85 @@ const std::string& sensorOf(const SlotView& s) {
   return sensorAround(net, s.owner, s.slot);
 }
 
-/// The view of the sensor at `path` that slot `s` holds; AttributeError when it is gone.
-/// The node of sensor view `v`, which must be one of `kinds` to have attribute `what`
-/// (AttributeError otherwise, naming its type).
-const scene::Node& measuring(const SensorView& v, std::initializer_list<scene::NodeKind> kinds, const char* what) {
+/// The node of sensor view `v`; AttributeError when it is gone.
+const scene::Node& sensorNode(const SensorView& v) {
   const scene::Scene* plant = v.r.get().plant();
   const scene::Node* n = plant ? plant->resolve(v.sensor) : nullptr;
   if (!n) throw py::attribute_error("the sensor is gone");
-  if (std::find(kinds.begin(), kinds.end(), n->kind()) == kinds.end()) {
-    throw py::attribute_error("sensor '" + n->path() + "' is a " + n->type().name + ": it has no '" + what + "'");
-  }
   return *n;
+}
+
+/// "a Region", "an Imu": node `n`'s type with its article, for messages.
+std::string typeWithArticle(const scene::Node& n) {
+  const std::string& name = n.type().name;
+  const bool vowel = !name.empty() && std::string_view("AEIOU").find(name[0]) != std::string_view::npos;
+  return (vowel ? "an " : "a ") + name;
+}
+
+/// What sensor view `v` reads now.
+const sensors::Reading& readingOf(const SensorView& v) { return v.r.get().reading(v.sensor); }
+
+/// The main number of sensor view `v` (0 where the sensor is gone).
+double primaryOf(const SensorView& v) {
+  const scene::Scene* plant = v.r.get().plant();
+  const scene::Node* n = plant ? plant->resolve(v.sensor) : nullptr;
+  const sensors::SensorKind* kind = n ? sensors::sensorKind(n->kind()) : nullptr;
+  const auto& r = readingOf(v);
+  return kind && kind->primary < r.channels().size() ? r.get<double>(kind->primary) : 0.0;
 }
 
 py::tuple tupleOf(core::Vec3 u) { return py::make_tuple(u.x, u.y, u.z); }
 
+/// Channel `name` of sensor view `v` as Python: a float, a bool, an (x, y, z) tuple, a NumPy
+/// array, a list of nodes, a node or None, a str, a list of str. Angular rates in the
+/// model's angle unit per second. AttributeError, naming what it has, for a channel its kind
+/// lacks.
+py::object channelOf(const SensorView& v, const std::string& name) {
+  const scene::Node& n = sensorNode(v);
+  const auto& r = readingOf(v);
+  const int i = r.find(name);
+  if (i < 0) {
+    std::string has = "active, value";
+    for (const auto& c : r.channels()) has += ", " + std::string(c.name);
+    throw py::attribute_error("sensor '" + n.path() + "' is " + typeWithArticle(n) + ": it has no '" + name +
+                              "' (it has: " + has + ")");
+  }
+  const auto k = static_cast<std::size_t>(i);
+  const sensors::Channel& c = r.channels()[k];
+  const double scale = c.angular && v.r.get().angles() == scene::AngleUnit::Degrees ? core::degrees(1.0) : 1.0;
+  switch (c.type) {
+    case sensors::ChannelType::Number: return py::float_(r.get<double>(k) * scale);
+    case sensors::ChannelType::Flag: return py::bool_(r.get<bool>(k));
+    case sensors::ChannelType::Vector: return tupleOf(r.get<core::Vec3>(k) * scale);
+    case sensors::ChannelType::Numbers: {
+      const auto& x = r.get<std::vector<double>>(k);
+      py::array_t<double> out(static_cast<py::ssize_t>(x.size()));
+      auto at = out.mutable_unchecked<1>();
+      for (std::size_t j = 0; j < x.size(); ++j) at(static_cast<py::ssize_t>(j)) = x[j] * scale;
+      return out;
+    }
+    case sensors::ChannelType::Items: {
+      py::list out;
+      for (auto h : r.get<std::vector<scene::NodeHandle>>(k)) out.append(v.r.get().nodeView(h));
+      return out;
+    }
+    case sensors::ChannelType::Node: {
+      const auto h = r.get<scene::NodeHandle>(k);
+      return h != 0 ? v.r.get().nodeView(h) : py::none();
+    }
+    case sensors::ChannelType::Text: return py::str(r.get<std::string>(k));
+    case sensors::ChannelType::Texts: return py::cast(r.get<std::vector<std::string>>(k));
+  }
+  return py::none();
+}
+
 /// A camera's picture as a read-only NumPy array over the picture itself (no copy): height x
 /// width x 3 bytes, or height x width metres (float32).
 py::object pictureOf(const SensorView& v) {
-  measuring(v, {scene::NodeKind::ColorCamera, scene::NodeKind::DepthCamera}, "image");
+  const scene::Node& n = sensorNode(v);
+  if (const auto* kind = sensors::sensorKind(n.kind()); kind == nullptr || !kind->pictures) {
+    throw py::attribute_error("sensor '" + n.path() + "' is " + typeWithArticle(n) + ": it has no 'image'");
+  }
   std::string why;
   auto picture = v.r.get().image(v.sensor, why);
   if (!picture) throw std::runtime_error("camera '" + v.r.get().nodeName(v.sensor) + "' has no picture: " + why);
@@ -493,59 +556,9 @@ const VectorMethod kVectorMethods[] = {
      "N m", &physics::World::setTorque},
 };
 
-}  // namespace
 
-const std::string& sensorAround(const net::Net& net, net::TransitionId t, net::SlotId slot) {
-  static const std::string none;
-  // a slot the transition's own arcs carry tokens in is its own
-  for (const auto& term : net.termsOf(t)) {
-    if (net.placeSlots()[term.place_slot].slot == slot && net.sensorPath(term.place_slot).empty()) return none;
-  }
-  for (const auto& term : net.termsOf(t)) {
-    const auto ps = net.findPlaceSlot(net.placeSlots()[term.place_slot].place, slot);
-    if (ps < 0) continue;
-    if (const auto& path = net.sensorPath(static_cast<net::PlaceSlotId>(ps)); !path.empty()) return path;
-  }
-  return none;
-}
-
-Context& Ref::get() const {
-  if (!alive || !*alive) throw std::runtime_error("this view's model is gone");
-  return *ctx;
-}
-
-void registerViews() {
-  static bool done = false;
-  if (done) return;
-  done = true;
-  py::module_ m = py::module_::import("types").attr("ModuleType")("gdpn_script");
-  py::module_::import("sys").attr("modules")["gdpn_script"] = m;
-  // on_enter/on_exit's `item`: the dissertation's list of the geometries in the region, the
-  // ones of what entered (or left) first; attributes read that node (`item.name`)
-  py::exec(R"(
-class Geometries(list):
-    """The geometries in a region, those of the node that entered or left first.
-    Attributes read that node: item.name, item.velocity; item[0] is its first geometry."""
-    __slots__ = ("node",)
-
-    def __getattr__(self, name):
-        return getattr(object.__getattribute__(self, "node"), name)
-
-    # it stands for its node: equal to it, hashed like it, printed like it
-    def __eq__(self, other):
-        return self.node == (other.node if isinstance(other, Geometries) else other)
-
-    def __ne__(self, other):
-        return not self == other
-
-    def __hash__(self):
-        return hash(self.node)
-
-    def __repr__(self):
-        return repr(self.node)
-)",
-           m.attr("__dict__"));
-
+/// Registers `gdpn_script.Node`: node tokens: fields as attributes, the physics' methods.
+void registerNodeView(py::module_& m) {
   py::class_<NodeView> node_class(m, "Node", "A node token: a reference to a scene node, with its fields as attributes");
   // the physics methods that take a vector, under gdpn's names and the dissertation's
   for (const auto& method : kVectorMethods) {
@@ -645,7 +658,10 @@ class Geometries(list):
            })
       .def("__hash__", [](const NodeView& v) { return std::hash<net::NodeRef>{}(v.ref); })
       .def("__repr__", [](const NodeView& v) { return "<node " + v.r.get().nodeName(v.ref) + ">"; });
+}
 
+/// Registers `gdpn_script.Data`: a node's user data.
+void registerDataView(py::module_& m) {
   py::class_<DataView>(m, "Data", "A node's user data: names to bool, int, float, str or a list of numbers")
       .def("__getitem__", [](const DataView& d, const std::string& key) { return datumToPython(datumOf(d, key)); })
       .def("__setitem__", &setDatum)
@@ -688,7 +704,10 @@ class Geometries(list):
         for (const auto& [k, v] : dataNode(d).data) out[py::str(k)] = datumToPython(v);
         return py::repr(out).cast<std::string>();
       });
+}
 
+/// Registers `gdpn_script.Slot`: a place's or transition's slot.
+void registerSlotView(py::module_& m) {
   py::class_<SlotView>(m, "Slot", "One slot of a place or transition")
       .def("get", &count, "tokens in the slot (a count; for a node slot, how many nodes)")
       .def("set",
@@ -764,93 +783,53 @@ class Geometries(list):
       .def("__repr__", [](const SlotView& s) {
         return "<slot " + net::slotName(s.slot) + " of " + ownerName(s) + ": " + std::to_string(count(s)) + ">";
       });
+}
 
-  py::class_<SensorView>(m, "Sensor", "What a sensor reports now")
+/// Registers `gdpn_script.Sensor`: a sensor's reading: its kind's channels.
+void registerSensorView(py::module_& m) {
+  py::class_<SensorView> sensor(m, "Sensor", "What a sensor reports now: `active`, `value` and its kind's channels");
+  sensor
       .def_property_readonly("items",
                              [](const SensorView& v) {
                                py::list out;
-                               for (auto h : v.r.get().reading(v.sensor).items) out.append(v.r.get().nodeView(h));
+                               for (auto h : readingOf(v).items()) out.append(v.r.get().nodeView(h));
                                return out;
                              },
-                             "a Region's contents: the bodies (or static shapes) inside, in path order")
-      .def_property_readonly("value", [](const SensorView& v) { return v.r.get().reading(v.sensor).value; },
-                             "a RangeFinder's distance (m), a TimeSensor's ticks, a Region's count")
-      .def_property_readonly("vector",
-                             [](const SensorView& v) {
-                               const auto u = v.r.get().reading(v.sensor).vector;
-                               return py::make_tuple(u.x, u.y, u.z);
-                             },
-                             "a GradientSensor's vector where its body is (world frame)")
-      .def_property_readonly("keys", [](const SensorView& v) { return v.r.get().reading(v.sensor).keys; },
-                             "a KeyboardSensor's keys held down now")
-      .def_property_readonly("key", [](const SensorView& v) { return v.r.get().reading(v.sensor).key; },
-                             "a KeyboardSensor's latest key")
-      .def_property_readonly("down", [](const SensorView& v) { return v.r.get().reading(v.sensor).down; },
-                             "whether the latest key event pressed its key")
-      .def_property_readonly("active", [](const SensorView& v) { return v.r.get().reading(v.sensor).active; },
-                             "something inside, something seen, or a tick now")
-      .def_property_readonly("hit",
-                             [](const SensorView& v) -> py::object {
-                               const auto h = v.r.get().reading(v.sensor).hit;
-                               return h ? v.r.get().nodeView(h) : py::none();
-                             },
-                             "what a RangeFinder sees, or None")
+                             "what it senses (a Region's contents, a Contact's touches): bodies or static shapes "
+                             "in path order; empty for kinds that sense no items")
+      .def_property_readonly("value", [](const SensorView& v) { return primaryOf(v); },
+                             "its main number: a Region's count, a RangeFinder's distance (m), a TimeSensor's "
+                             "ticks, a Contact's total force (N); each kind's is listed in docs/format.md")
+      .def_property_readonly("active", [](const SensorView& v) { return readingOf(v).active; },
+                             "something inside, something seen, a key heard, a click, or a tick or sample now")
       .def_property_readonly("image", &pictureOf,
                              "a ColorCamera's picture (height x width x 3 bytes, NumPy) or a DepthCamera's "
                              "(height x width metres), rendered when first read after a sample, of the scene as it stands then; read-only")
-      .def_property_readonly("ranges",
-                             [](const SensorView& v) {
-                               measuring(v, {scene::NodeKind::LaserScan}, "ranges");
-                               const auto& x = v.r.get().reading(v.sensor).values;
-                               return py::array_t<double>(static_cast<py::ssize_t>(x.size()), x.data());
-                             },
-                             "a LaserScan's distances, m, one per ray (NumPy)")
-      .def_property_readonly("forces",
-                             [](const SensorView& v) {
-                               measuring(v, {scene::NodeKind::Contact}, "forces");
-                               return v.r.get().reading(v.sensor).values;
-                             },
-                             "a Contact's normal force from each of its items, N")
-      .def_property_readonly("acceleration",
-                             [](const SensorView& v) {
-                               measuring(v, {scene::NodeKind::Imu}, "acceleration");
-                               return tupleOf(v.r.get().reading(v.sensor).linear);
-                             },
-                             "an Imu's acceleration less gravity, m/s^2, in its frame (at rest: -gravity)")
-      .def_property_readonly("angular_velocity",
-                             [](const SensorView& v) {
-                               measuring(v, {scene::NodeKind::Imu}, "angular_velocity");
-                               const auto w = v.r.get().reading(v.sensor).angular;
-                               const bool deg = v.r.get().angles() == scene::AngleUnit::Degrees;
-                               return tupleOf(deg ? w * core::degrees(1.0) : w);
-                             },
-                             "an Imu's angular velocity in its frame, deg/s (rad/s with angles: radians)")
-      .def_property_readonly("force",
-                             [](const SensorView& v) {
-                               measuring(v, {scene::NodeKind::ForceTorque}, "force");
-                               return tupleOf(v.r.get().reading(v.sensor).linear);
-                             },
-                             "a ForceTorque's force on the body below its joint, N, in its frame")
-      .def_property_readonly("torque",
-                             [](const SensorView& v) {
-                               measuring(v, {scene::NodeKind::ForceTorque}, "torque");
-                               return tupleOf(v.r.get().reading(v.sensor).angular);
-                             },
-                             "a ForceTorque's torque about its origin, N m, in its frame")
-      .def_property_readonly("position",
-                             [](const SensorView& v) {
-                               measuring(v, {scene::NodeKind::Gps}, "position");
-                               return tupleOf(v.r.get().reading(v.sensor).linear);
-                             },
-                             "a Gps's position: x, y, z m (world), or latitude, longitude (deg) and altitude (m)")
-      .def("__len__", [](const SensorView& v) { return v.r.get().reading(v.sensor).items.size(); })
+      .def("__len__", [](const SensorView& v) { return readingOf(v).items().size(); })
       .def("__contains__",
            [](const SensorView& v, const NodeView& n) {
-             const auto& items = v.r.get().reading(v.sensor).items;
+             const auto& items = readingOf(v).items();
              return std::find(items.begin(), items.end(), n.ref) != items.end();
            })
       .def("__repr__", [](const SensorView& v) { return "<sensor " + v.r.get().nodeName(v.sensor) + ">"; });
+  // every channel of every kind, read by name: the kinds' own descriptions, not a list here
+  std::map<std::string, std::string, std::less<>> channel_docs;
+  for (const sensors::SensorKind* kind : sensors::sensorKinds()) {
+    const scene::NodeType* type = scene::builtinTypes().find(kind->node_kind);
+    for (const auto& c : kind->channels) {
+      if (c.name == "items") continue;  // above, for every kind
+      auto& doc = channel_docs[std::string(c.name)];
+      doc += (doc.empty() ? "" : "; ") + (type ? type->name : std::string("?")) + ": " + std::string(c.help) +
+             (c.unit.empty() ? "" : ", " + std::string(c.angular ? "deg/s (rad/s with angles: radians)" : c.unit));
+    }
+  }
+  for (const auto& [name, doc] : channel_docs) {
+    sensor.def_property_readonly(name.c_str(), [name = name](const SensorView& v) { return channelOf(v, name); }, doc.c_str());
+  }
+}
 
+/// Registers `gdpn_script.Transition`: a transition.
+void registerTransitionView(py::module_& m) {
   py::class_<TransitionView>(m, "Transition", "A transition, as its scripts see it")
       .def_property_readonly("name", [](const TransitionView& v) { return v.r.get().netRef().transitionName(v.t); })
       .def_property_readonly("elapsed",
@@ -892,7 +871,10 @@ class Geometries(list):
       .def("__repr__", [](const TransitionView& v) {
         return "<transition " + v.r.get().netRef().transitionName(v.t) + ">";
       });
+}
 
+/// Registers `gdpn_script.Place`: a place.
+void registerPlaceView(py::module_& m) {
   py::class_<PlaceView>(m, "Place", "A place, as scripts see it")
       .def_property_readonly("name", [](const PlaceView& v) { return v.r.get().netRef().placeName(v.p); })
       .def_property(
@@ -904,7 +886,10 @@ class Geometries(list):
           "the scene node of its page type's instance, or None on a top-level page")
       .def("__getattr__", [](const PlaceView& v, const std::string& name) { return slotAttr(v.r, false, v.p, name); })
       .def("__repr__", [](const PlaceView& v) { return "<place " + v.r.get().netRef().placeName(v.p) + ">"; });
+}
 
+/// Registers `gdpn_script.Random`: the seeded random generator.
+void registerRandomView(py::module_& m) {
   py::class_<RandomView>(m, "Random", "The model's seeded random generator")
       .def("random", [](const RandomView& v) { return v.r.get().kernelRef().random().uniform01(); },
            "a float in [0, 1)")
@@ -925,7 +910,10 @@ class Geometries(list):
         if (n == 0) throw py::index_error("choice from an empty sequence");
         return seq[v.r.get().kernelRef().random().below(n)];
       });
+}
 
+/// Registers `gdpn_script.Params`: the model's parameters.
+void registerParamsView(py::module_& m) {
   py::class_<ParamsView>(m, "Params", "The model's parameters (its params section, as this run set them); read-only")
       .def("__getattr__",
            [](const ParamsView& v, const std::string& name) -> py::object {
@@ -947,7 +935,10 @@ class Geometries(list):
       .def("__len__", [](const ParamsView& v) { return py::len(v.values); })
       .def("items", [](const ParamsView& v) { return v.values.attr("items")(); })
       .def("__repr__", [](const ParamsView& v) { return "<sim.params " + py::repr(v.values).cast<std::string>() + ">"; });
+}
 
+/// Registers `gdpn_script.Sim`: the running simulation.
+void registerSimView(py::module_& m) {
   py::class_<SimView>(m, "Sim", "The running simulation")
       .def_property_readonly("time", [](const SimView& v) { return v.r.get().kernelRef().now(); }, "seconds")
       .def_property_readonly("dt", [](const SimView& v) { return v.r.get().kernelRef().dt(); }, "seconds")
@@ -983,6 +974,70 @@ class Geometries(list):
         if (t < 0) throw py::key_error("no transition '" + name + "'");
         return v.r.get().transitionView(static_cast<net::TransitionId>(t));
       });
+}
+
+}  // namespace
+
+const std::string& sensorAround(const net::Net& net, net::TransitionId t, net::SlotId slot) {
+  static const std::string none;
+  // a slot the transition's own arcs carry tokens in is its own
+  for (const auto& term : net.termsOf(t)) {
+    if (net.placeSlots()[term.place_slot].slot == slot && net.sensorPath(term.place_slot).empty()) return none;
+  }
+  for (const auto& term : net.termsOf(t)) {
+    const auto ps = net.findPlaceSlot(net.placeSlots()[term.place_slot].place, slot);
+    if (ps < 0) continue;
+    if (const auto& path = net.sensorPath(static_cast<net::PlaceSlotId>(ps)); !path.empty()) return path;
+  }
+  return none;
+}
+
+Context& Ref::get() const {
+  if (!alive || !*alive) throw std::runtime_error("this view's model is gone");
+  return *ctx;
+}
+
+void registerViews() {
+  static bool done = false;
+  if (done) return;
+  done = true;
+  py::module_ m = py::module_::import("types").attr("ModuleType")("gdpn_script");
+  py::module_::import("sys").attr("modules")["gdpn_script"] = m;
+  // on_enter/on_exit's `item`: the dissertation's list of the geometries in the region, the
+  // ones of what entered (or left) first; attributes read that node (`item.name`)
+  py::exec(R"(
+class Geometries(list):
+    """The geometries in a region, those of the node that entered or left first.
+    Attributes read that node: item.name, item.velocity; item[0] is its first geometry."""
+    __slots__ = ("node",)
+
+    def __getattr__(self, name):
+        return getattr(object.__getattribute__(self, "node"), name)
+
+    # it stands for its node: equal to it, hashed like it, printed like it
+    def __eq__(self, other):
+        return self.node == (other.node if isinstance(other, Geometries) else other)
+
+    def __ne__(self, other):
+        return not self == other
+
+    def __hash__(self):
+        return hash(self.node)
+
+    def __repr__(self):
+        return repr(self.node)
+)",
+           m.attr("__dict__"));
+
+  registerNodeView(m);
+  registerDataView(m);
+  registerSlotView(m);
+  registerSensorView(m);
+  registerTransitionView(m);
+  registerPlaceView(m);
+  registerRandomView(m);
+  registerParamsView(m);
+  registerSimView(m);
 }
 
 py::object makeTransitionView(Ref r, net::TransitionId t) { return py::cast(TransitionView{std::move(r), t}); }

@@ -135,5 +135,63 @@ TEST(Signals, APeriodShorterThanAStepSamplesEveryStepAndNamesAreOneColumnEach) {
   EXPECT_NE(diags.str().find("signal 'ticks': another signal has this name"), std::string::npos) << diags.str();
 }
 
+TEST(Signals, ASensorsChannelsAreReadByNameAndOneAxisOfAVector) {
+  // a box at rest on the ground carries an Imu (it feels -gravity: 9.81 m/s^2 up); a range
+  // finder at the origin looks along +x at a wall whose face is at x = 2.5
+  core::Diagnostics diags;
+  auto m = parseModel(R"yaml(gdpn: 1
+settings: {dt: 0.01, until: 1}
+signals:
+  eye: {node: post/eye, of: distance}
+  main: {node: post/eye, of: reading}
+  up: {node: spot/box/imu, of: acceleration.z}
+  felt: {node: spot/box/imu, of: acceleration, every: 0.5}
+pages:
+  main: {places: {p: {tokens: 1}}, transitions: {t: {duration: 0.5}}, arcs: [p -> t, t -> p]}
+scene:
+  - Plane: {}
+  - Transform: {name: post, translation: [0, 3, 0.5], children: [{RangeFinder: {name: eye, length: 10}}]}
+  - Transform: {translation: [3, 3, 0.5], children: [{Cube: {size: [1, 1, 1]}}]}
+  - Transform:
+      name: spot
+      translation: [0, -3, 0.1]
+      children: [{Body: {name: box, children: [{Cube: {size: [0.2, 0.2, 0.2]}}, {Imu: {name: imu}}]}}]
+)yaml",
+                      "channels.gdpn.yaml", diags);
+  ASSERT_TRUE(m) << diags.str();
+  auto sim = Simulation::create(*m, diags);
+  ASSERT_TRUE(sim && sim->recordSignals({}, diags)) << diags.str();
+  const auto outcome = sim->run({});
+  ASSERT_EQ(outcome.reason, StopReason::Until) << outcome.message;
+  const SignalTable& t = *sim->signals();
+  EXPECT_EQ(t.columns, (std::vector<std::string>{"eye", "main", "up", "felt.x", "felt.y", "felt.z"}));
+  const auto& last = t.rows.back();
+  EXPECT_NEAR(*last[column(t, "eye")], 2.5, 1e-6);
+  EXPECT_EQ(*last[column(t, "main")], *last[column(t, "eye")]);  // a RangeFinder's main number is its distance
+  EXPECT_NEAR(*last[column(t, "up")], 9.81, 0.05);
+  EXPECT_NEAR(*last[column(t, "felt.z")], 9.81, 0.05);
+  EXPECT_NEAR(*last[column(t, "felt.x")], 0.0, 0.05);
+}
+
+TEST(Signals, AChannelThatIsNoNumberIsRefusedNamingWhatTheSensorHas) {
+  core::Diagnostics diags;
+  auto m = parseModel(R"yaml(gdpn: 1
+signals:
+  rays: {node: lidar, of: ranges}
+pages:
+  main: {places: {p: {}}}
+scene:
+  - LaserScan: {name: lidar, count: 8, min_angle: -90, max_angle: 90}
+)yaml",
+                      "rays.gdpn.yaml", diags);
+  ASSERT_TRUE(m) << diags.str();
+  auto sim = Simulation::create(*m, diags);
+  ASSERT_TRUE(sim) << diags.str();
+  EXPECT_FALSE(sim->recordSignals({}, diags));
+  EXPECT_NE(diags.str().find("rays.gdpn.yaml:3:"), std::string::npos) << diags.str();
+  EXPECT_NE(diags.str().find("a LaserScan has no number 'ranges'"), std::string::npos) << diags.str();
+  EXPECT_NE(diags.str().find("reading, active, nearest"), std::string::npos) << diags.str();
+}
+
 }  // namespace
 }  // namespace gdpn::model

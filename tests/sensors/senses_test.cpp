@@ -41,10 +41,10 @@ TEST(Senses, AnImuAtRestReadsMinusGravityAlongItsUpAxisAndNoRotation) {
   rig.run(0, 120, 0.01);
   const auto& r = rig.hub->reading(imu);
   EXPECT_TRUE(r.active);
-  EXPECT_NEAR(r.linear.x, 0, 1e-6);
-  EXPECT_NEAR(r.linear.y, kG, 1e-6);
-  EXPECT_NEAR(r.linear.z, 0, 1e-6);
-  EXPECT_NEAR(r.angular.length(), 0, 1e-6);
+  EXPECT_NEAR(r.vector("acceleration").x, 0, 1e-6);
+  EXPECT_NEAR(r.vector("acceleration").y, kG, 1e-6);
+  EXPECT_NEAR(r.vector("acceleration").z, 0, 1e-6);
+  EXPECT_NEAR(r.vector("angular_velocity").length(), 0, 1e-6);
 }
 
 TEST(Senses, AnImuOnATurntableReadsItsRateAndTheCentripetalAcceleration) {
@@ -70,12 +70,12 @@ TEST(Senses, AnImuOnATurntableReadsItsRateAndTheCentripetalAcceleration) {
   rig.run(0, 200, 0.005);
   const auto& r = rig.hub->reading(imu);
   const double w = std::numbers::pi / 2;
-  EXPECT_NEAR(r.angular.z, w, 1e-4);
-  EXPECT_NEAR(r.angular.x, 0, 1e-6);
-  EXPECT_NEAR(r.angular.y, 0, 1e-6);
+  EXPECT_NEAR(r.vector("angular_velocity").z, w, 1e-4);
+  EXPECT_NEAR(r.vector("angular_velocity").x, 0, 1e-6);
+  EXPECT_NEAR(r.vector("angular_velocity").y, 0, 1e-6);
   // towards the axis: -x in the IMU's frame, which turns with the disc
-  EXPECT_NEAR(r.linear.x, -w * w * 0.5, 1e-3);
-  EXPECT_NEAR(r.linear.y, 0, 1e-3);
+  EXPECT_NEAR(r.vector("acceleration").x, -w * w * 0.5, 1e-3);
+  EXPECT_NEAR(r.vector("acceleration").y, 0, 1e-3);
 }
 
 TEST(Senses, ALaserScanInASquareRoomReadsTheDistancesToItsWalls) {
@@ -90,13 +90,13 @@ TEST(Senses, ALaserScanInASquareRoomReadsTheDistancesToItsWalls) {
   const auto lidar = rig.handle("lidar");
   rig.hub->update(0);
   const auto& r = rig.hub->reading(lidar);
-  ASSERT_EQ(r.values.size(), 360u);
+  ASSERT_EQ(r.numbers("ranges").size(), 360u);
   for (std::size_t i = 0; i < 360; ++i) {
     const double a = (-180.0 + static_cast<double>(i)) * std::numbers::pi / 180;
     const double expected = 2.0 / std::max(std::abs(std::cos(a)), std::abs(std::sin(a)));
-    EXPECT_NEAR(r.values[i], expected, 1e-6) << "ray " << i;
+    EXPECT_NEAR(r.numbers("ranges")[i], expected, 1e-6) << "ray " << i;
   }
-  EXPECT_NEAR(r.value, 2.0, 1e-6);
+  EXPECT_NEAR(r.number("nearest"), 2.0, 1e-6);
 }
 
 TEST(Senses, ALaserScanSeesItsLengthWhereNothingIsAndSamplesAtItsRate) {
@@ -108,7 +108,7 @@ TEST(Senses, ALaserScanSeesItsLengthWhereNothingIsAndSamplesAtItsRate) {
     samples += rig.hub->reading(lidar).active ? 1 : 0;
   }
   EXPECT_EQ(samples, 11);  // at 0, 0.1, ..., 1.0 s
-  EXPECT_EQ(rig.hub->reading(lidar).values, (std::vector<double>{4, 4, 4}));
+  EXPECT_EQ(rig.hub->reading(lidar).numbers("ranges"), (std::vector<double>{4, 4, 4}));
 }
 
 TEST(Senses, AGpsFollowsABodyMovingAtAKnownVelocity) {
@@ -122,7 +122,7 @@ TEST(Senses, AGpsFollowsABodyMovingAtAKnownVelocity) {
   rig.world->setVelocity(*rig.scene->find("#1/rover"), {0.5, -0.25, 1});
   rig.hub->update(0);
   const double t = rig.run(0, 200, 0.01);
-  const auto& p = rig.hub->reading(gps).linear;
+  const auto& p = rig.hub->reading(gps).vector("position");
   EXPECT_NEAR(p.x, 1 + 0.5 * t, 1e-9);
   EXPECT_NEAR(p.y, 2 - 0.25 * t, 1e-9);
   EXPECT_NEAR(p.z, 3 + 1.0 * t, 1e-9);
@@ -157,7 +157,7 @@ TEST(Senses, AGeodeticGpsReadsLatitudeAndLongitudeFromTheTerrainsGeoreference) {
   core::Diagnostics diags;
   EXPECT_TRUE(Hub::check(*rig.scene, diags, dir.string())) << diags.str();
   rig.hub->update(0);
-  const auto& p = rig.hub->reading(rig.handle("#2/rover/gps")).linear;
+  const auto& p = rig.hub->reading(rig.handle("#2/rover/gps")).vector("position");
   // the east edge is the last sample's centre: column 10.5; 25 m south of the centre: row 8
   EXPECT_NEAR(p.y, 10.0 + 10.5 * 0.001, 1e-9);
   EXPECT_NEAR(p.x, 50.0 - 8.0 * 0.001, 1e-9);
@@ -188,10 +188,10 @@ TEST(Senses, AContactSensorFeelsTheBoxRestingOnItWithItsWeight) {
   rig.hub->update(0);
   rig.run(0, 200, 0.01);
   const auto& r = rig.hub->reading(pad);
-  ASSERT_EQ(r.items.size(), 1u);
-  EXPECT_EQ(r.items[0], rig.handle("#1/box"));
-  EXPECT_NEAR(r.values[0], 2 * kG, 0.02 * 2 * kG);
-  EXPECT_NEAR(r.value, 2 * kG, 0.02 * 2 * kG);
+  ASSERT_EQ(r.items().size(), 1u);
+  EXPECT_EQ(r.items()[0], rig.handle("#1/box"));
+  EXPECT_NEAR(r.numbers("forces")[0], 2 * kG, 0.02 * 2 * kG);
+  EXPECT_NEAR(r.number("total"), 2 * kG, 0.02 * 2 * kG);
 }
 
 TEST(Senses, AContactSensorLetsItsBodySleepAndKeepsItsReadingAsleep) {
@@ -210,11 +210,11 @@ TEST(Senses, AContactSensorLetsItsBodySleepAndKeepsItsReadingAsleep) {
   t = rig.run(t, 50, 0.01);  // asleep all along
   // the box on it with its weight; the ground under it with the box's and its own
   const auto& r = rig.hub->reading(pad);
-  ASSERT_EQ(r.items.size(), 2u);
-  const std::size_t box = r.items[0] == rig.handle("#1/box") ? 0 : 1;
-  EXPECT_EQ(r.items[box], rig.handle("#1/box"));
-  EXPECT_NEAR(r.values[box], 2 * kG, 0.02 * 2 * kG);
-  EXPECT_NEAR(r.values[1 - box], 7 * kG, 0.02 * 7 * kG);
+  ASSERT_EQ(r.items().size(), 2u);
+  const std::size_t box = r.items()[0] == rig.handle("#1/box") ? 0 : 1;
+  EXPECT_EQ(r.items()[box], rig.handle("#1/box"));
+  EXPECT_NEAR(r.numbers("forces")[box], 2 * kG, 0.02 * 2 * kG);
+  EXPECT_NEAR(r.numbers("forces")[1 - box], 7 * kG, 0.02 * 7 * kG);
 }
 
 TEST(Senses, TwoContactSensorsTouchingEachOtherBothFeelTheForceBetweenThem) {
@@ -224,12 +224,12 @@ TEST(Senses, TwoContactSensorsTouchingEachOtherBothFeelTheForceBetweenThem) {
   rig.run(0, 200, 0.01);
   const auto& below = rig.hub->reading(rig.handle("#0/scale/pad"));
   const auto& above = rig.hub->reading(rig.handle("#1/box/feel"));
-  ASSERT_EQ(below.items.size(), 1u);
-  ASSERT_EQ(above.items.size(), 1u);
-  EXPECT_EQ(below.items[0], rig.handle("#1/box"));
-  EXPECT_EQ(above.items[0], rig.handle("#0/scale"));
-  EXPECT_NEAR(below.values[0], 2 * kG, 0.02 * 2 * kG);
-  EXPECT_NEAR(above.values[0], 2 * kG, 0.02 * 2 * kG);
+  ASSERT_EQ(below.items().size(), 1u);
+  ASSERT_EQ(above.items().size(), 1u);
+  EXPECT_EQ(below.items()[0], rig.handle("#1/box"));
+  EXPECT_EQ(above.items()[0], rig.handle("#0/scale"));
+  EXPECT_NEAR(below.numbers("forces")[0], 2 * kG, 0.02 * 2 * kG);
+  EXPECT_NEAR(above.numbers("forces")[0], 2 * kG, 0.02 * 2 * kG);
 }
 
 TEST(Senses, ASensorDeletedWithItsBodyIsForgotten) {
@@ -245,7 +245,7 @@ TEST(Senses, ASensorDeletedWithItsBodyIsForgotten) {
   rig.hub->forget(box);
   rig.scene->destroy(box);
   EXPECT_FALSE(rig.hub->isSensor(imu));
-  EXPECT_TRUE(rig.hub->reading(imu).values.empty());
+  EXPECT_TRUE(rig.hub->reading(imu).channels().empty());
   rig.run(t, 5, 0.01);  // nothing reads the freed nodes (the ASan job would say)
 }
 
@@ -266,11 +266,11 @@ TEST(Senses, AForceTorqueSensorReadsTheWeightAndMomentOfAHangingArm) {
   rig.run(0, 100, 0.01);
   const auto& r = rig.hub->reading(ft);
   const double w = 3 * kG;
-  EXPECT_NEAR(r.linear.x, 0, 1e-3 * w);
-  EXPECT_NEAR(r.linear.y, 0, 1e-3 * w);
-  EXPECT_NEAR(r.linear.z, w, 1e-2 * w);
-  EXPECT_NEAR(r.angular.y, -0.5 * w, 1e-2 * w);
-  EXPECT_NEAR(r.angular.x, 0, 1e-3 * w);
+  EXPECT_NEAR(r.vector("force").x, 0, 1e-3 * w);
+  EXPECT_NEAR(r.vector("force").y, 0, 1e-3 * w);
+  EXPECT_NEAR(r.vector("force").z, w, 1e-2 * w);
+  EXPECT_NEAR(r.vector("torque").y, -0.5 * w, 1e-2 * w);
+  EXPECT_NEAR(r.vector("torque").x, 0, 1e-3 * w);
 }
 
 /// A range finder 2 m from a wall, with noise `sd` and bias 0.05 m: `n` samples.
@@ -283,7 +283,7 @@ std::vector<double> noisyRanges(std::uint64_t seed, double sd, int n) {
   std::vector<double> out;
   for (int i = 0; i < n; ++i) {
     rig.hub->update(i * 0.01);
-    out.push_back(rig.hub->reading(eye).value);
+    out.push_back(rig.hub->reading(eye).number("distance"));
   }
   return out;
 }
@@ -308,7 +308,7 @@ TEST(Senses, ResolutionRoundsEachReading) {
   - Transform: {translation: [0, 0, 0.3], children: [{RangeFinder: {name: eye, length: 10, resolution: 0.25, bias: 0.1}}]}
 )");
   rig.hub->update(0);
-  EXPECT_DOUBLE_EQ(rig.hub->reading(rig.handle("#1/eye")).value, 2.0);  // 2.1 to the nearest quarter
+  EXPECT_DOUBLE_EQ(rig.hub->reading(rig.handle("#1/eye")).number("distance"), 2.0);  // 2.1 to the nearest quarter
 }
 
 }  // namespace

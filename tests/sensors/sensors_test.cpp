@@ -54,15 +54,15 @@ TEST(Sensors, ARangeFinderMeasuresTheDistanceToAFaceExactly) {
   auto& box = *rig.scene->find("#2/box");
   rig.world->step(0.01);
   rig.hub->update(0.01);
-  EXPECT_NEAR(rig.hub->reading(eye).value, 2.35, 1e-6);
-  EXPECT_EQ(rig.hub->reading(eye).hit, box.handle());
+  EXPECT_NEAR(rig.hub->reading(eye).number("distance"), 2.35, 1e-6);
+  EXPECT_EQ(rig.hub->reading(eye).node("hit"), box.handle());
   // the box moves away at 1 m/s: the distance follows
   rig.world->setVelocity(box, {1, 0, 0});
   for (int i = 0; i < 100; ++i) rig.world->step(0.01);
   const auto& changes = rig.hub->update(1.01);
   ASSERT_EQ(changes.size(), 1u);
-  EXPECT_NEAR(rig.hub->reading(eye).value, box.world.position.x - 0.25, 1e-6);
-  EXPECT_NEAR(rig.hub->reading(eye).value, 3.35, 1e-3);
+  EXPECT_NEAR(rig.hub->reading(eye).number("distance"), box.world.position.x - 0.25, 1e-6);
+  EXPECT_NEAR(rig.hub->reading(eye).number("distance"), 3.35, 1e-3);
 }
 
 TEST(Sensors, ARegionFeelsOnlyItsScope) {
@@ -77,7 +77,7 @@ TEST(Sensors, ARegionFeelsOnlyItsScope) {
   - Body: {name: other, mass: 1, children: [{Cube: {size: [0.2, 0.2, 0.2]}}]}
 )");
   rig.hub->update(0);
-  const auto& items = rig.hub->reading(rig.handle("cell/inside")).items;
+  const auto& items = rig.hub->reading(rig.handle("cell/inside")).items();
   ASSERT_EQ(items.size(), 1u);
   EXPECT_EQ(items[0], rig.handle("cell/mine"));
 }
@@ -100,8 +100,8 @@ TEST(Sensors, ARegionThatReportsBodiesOnlyLeavesStaticShapesOut) {
     for (auto at = text.find("$R"); at != std::string::npos; at = text.find("$R")) text.replace(at, 2, report);
     Rig rig(text);
     rig.hub->update(0);
-    const auto& box = rig.hub->reading(rig.handle("box")).items;
-    const auto& ray = rig.hub->reading(rig.handle("#4/ray")).items;
+    const auto& box = rig.hub->reading(rig.handle("box")).items();
+    const auto& ray = rig.hub->reading(rig.handle("#4/ray")).items();
     if (report == "all") {
       EXPECT_EQ(box, (std::vector<scene::NodeHandle>{rig.handle("#2/shelf"), rig.handle("at/b")}));
       EXPECT_EQ(ray, (std::vector<scene::NodeHandle>{rig.handle("#5/wall")}));
@@ -123,7 +123,7 @@ TEST(Sensors, ATimeSensorTicksAtItsPeriod) {
   EXPECT_NEAR(ticks[0], 0.25, 1e-9);
   EXPECT_NEAR(ticks[1], 0.75, 1e-9);
   EXPECT_NEAR(ticks[2], 1.25, 1e-9);
-  EXPECT_EQ(rig.hub->reading(rig.handle("clock")).value, 3.0);
+  EXPECT_EQ(rig.hub->reading(rig.handle("clock")).number("ticks"), 3.0);
 }
 
 }  // namespace

@@ -16,35 +16,14 @@
 #include "gdpn/core/diagnostics.h"
 #include "gdpn/physics/world.h"
 #include "gdpn/scene/node.h"
-
-namespace gdpn::scene {
-class Geodesy;
-}
+#include "gdpn/sensors/channel.h"
+#include "gdpn/sensors/sensor_kind.h"
 
 namespace gdpn::sensors {
 
-/// What a sensor reports now.
-struct Reading {
-  std::vector<scene::NodeHandle> items;  ///< Region: what is inside, in path order
-  double value = 0;                      ///< RangeFinder: distance, m; TimeSensor: ticks so far
-  scene::NodeHandle hit = 0;             ///< RangeFinder: what it sees (0: nothing)
-  core::Vec3 vector;                     ///< GradientSensor: the field's vector where its body is
-  std::vector<std::string> keys;         ///< KeyboardSensor: the keys held down now
-  std::string key;                       ///< KeyboardSensor: the key of the latest event
-  bool down = false;                     ///< KeyboardSensor: whether that event pressed it
-  /// Region: something is inside; RangeFinder: it sees something; TimeSensor: it ticked now;
-  /// a sensor with a rate (cameras, LaserScan, Imu, Gps, Contact, ForceTorque): it took a
-  /// sample now.
-  bool active = false;
-  /// LaserScan: metres along each ray (its length where nothing is hit); Contact: the normal
-  /// force of each item, N.
-  std::vector<double> values;
-  /// Imu: acceleration less gravity, m/s^2 (its frame); ForceTorque: force, N (its frame);
-  /// Gps: position, m (world), or latitude, longitude (deg) and altitude (m).
-  core::Vec3 linear;
-  /// Imu: angular velocity, rad/s (its frame); ForceTorque: torque about its origin, N m (its frame).
-  core::Vec3 angular;
-};
+namespace detail {
+class Sensor;
+}
 
 /// A camera's picture: RGB bytes (ColorCamera) or distances (DepthCamera), top row first.
 struct Image {
@@ -127,33 +106,16 @@ class Hub {
 
  private:
   struct Entry {
-    scene::Node* node = nullptr;
+    std::unique_ptr<detail::Sensor> sensor;
     Reading reading;
-    std::uint64_t samples = 0;         // samples taken (sensors with a rate)
-    core::Random noise;                // its own stream
-    core::Vec3 velocity, spin;         // Imu: its point's velocity (m/s), its body's (rad/s), world, last step
-    core::Vec3 acceleration;           // Imu: its point's, m/s^2 (world), over the last step
-    core::Quat rotation, middle;       // Imu: its rotation (world) at the last step, and halfway through the step
-    bool moved = false;                // Imu: velocity and spin hold a step's values
-    std::shared_ptr<const Image> image;  // cameras: the latest sample's picture, once read
-    std::shared_ptr<const Image> last;   // cameras: the latest picture read, of any sample
-    scene::NodeHandle terrain = 0;       // a geodetic Gps: its Terrain, found at its first sample
   };
-  // the numbers of a sample with its sensor's noise, bias and resolution
-  void addNoise(Entry& e, double* x, std::size_t n);
-  // an Imu's motion now, at time `now` (s)
-  void track(Entry& e, double now);
-  // the Imu's, Gps's, LaserScan's, Contact's and ForceTorque's reading now
-  void measure(Entry& e, Reading& next);
   Entry* find(scene::NodeHandle h);
-  // the new reading of sensor `e` into `next`; false when it cannot have changed
-  bool read(Entry& e, double now, const std::vector<const InputEvent*>& due, Reading& next);
   scene::Scene& scene_;
   physics::World* world_;
   std::vector<Entry> entries_;  // in path order
   std::unordered_map<scene::NodeHandle, std::size_t> entry_of_;  // sensor -> its entry
   std::vector<std::pair<scene::NodeHandle, physics::World::Feel>> felt_;
-  std::unordered_map<scene::NodeHandle, std::size_t> index_;  // sensor -> its entry in felt_
+  std::unordered_map<scene::NodeHandle, physics::World::Feel> felt_of_;  // sensor -> what it felt
   std::vector<Change> changes_;
   std::vector<InputEvent> input_;
   std::size_t next_input_ = 0;
@@ -162,12 +124,6 @@ class Hub {
   core::Vec3 gravity_{0, 0, -9.81};  // the World node's, m/s^2
   std::shared_ptr<Imager> imager_;
   std::string model_dir_ = ".";
-  // the georeferences of the Terrains geodetic Gps sensors read, opened at the first sample
-  // (null: the Terrain's file gives none)
-  std::unordered_map<scene::NodeHandle, std::unique_ptr<scene::Geodesy>> geodesies_;
 };
-
-/// True when sensor `kind` samples at a rate of its own (a `rate` field).
-bool sampled(scene::NodeKind kind);
 
 }  // namespace gdpn::sensors

@@ -175,107 +175,87 @@ void nodeExtras(App& app, const scene::Node& node, const std::string& path, nloh
   if (change) edit(app, std::move(change));
 }
 
-/// "(x, y, z)" with `digits` decimals.
-std::string triple(core::Vec3 v, int digits) {
-  char text[96];
-  std::snprintf(text, sizeof text, "(%.*f, %.*f, %.*f)", digits, v.x, digits, v.y, digits, v.z);
-  return text;
+/// A channel's value as JSON for the report: numbers, flags, [x, y, z], lists, node paths, words.
+nlohmann::json channelJson(const sensors::Value& v, const std::function<std::string(scene::NodeHandle)>& name_of) {
+  return std::visit(
+      [&](const auto& x) -> nlohmann::json {
+        using T = std::decay_t<decltype(x)>;
+        if constexpr (std::is_same_v<T, core::Vec3>) {
+          return {x.x, x.y, x.z};
+        } else if constexpr (std::is_same_v<T, std::vector<scene::NodeHandle>>) {
+          auto out = nlohmann::json::array();
+          for (auto h : x) out.push_back(name_of(h));
+          return out;
+        } else if constexpr (std::is_same_v<T, scene::NodeHandle>) {
+          return x != 0 ? nlohmann::json(name_of(x)) : nlohmann::json();
+        } else {
+          return x;
+        }
+      },
+      v);
 }
 
-/// What sensor `sensor` reads now in the run (a camera: the latest picture a script read,
-/// nothing rendered for the asking, so that showing it leaves the run as it would be).
+/// What sensor `sensor` reads now in the run, channel by channel (a camera: the latest picture
+/// a script read, nothing rendered for the asking, so that showing it leaves the run as it
+/// would be).
 void sensorReading(App& app, const model::Simulation& sim, const scene::Node& sensor, nlohmann::json& report) {
   const sensors::Reading& r = sim.reading(sensor.handle());
-  const auto nameOf = [&](scene::NodeHandle h) {
+  const sensors::SensorKind* kind = sensors::sensorKind(sensor.kind());
+  const std::function<std::string(scene::NodeHandle)> name_of = [&](scene::NodeHandle h) {
     const scene::Node* n = sim.plant()->resolve(h);
     return n != nullptr ? n->path() : std::string("(gone)");
   };
+  const bool degrees = sim.model().settings.angles == scene::AngleUnit::Degrees;
   ImGui::Separator();
   ImGui::TextDisabled("What it reads in the run:");
-  using scene::NodeKind;
-  namespace F = scene::field;
-  switch (sensor.kind()) {
-    case NodeKind::Region:
-    case NodeKind::Contact: {
-      const bool forces = sensor.kind() == NodeKind::Contact;
-      ImGui::Text("%zu %s%s", r.items.size(), forces ? "touching" : "inside", r.items.empty() ? "" : ":");
-      auto& items = report["items"] = nlohmann::json::array();
-      for (std::size_t i = 0; i < r.items.size(); ++i) {
-        const std::string name = nameOf(r.items[i]);
-        items.push_back(name);
-        if (i >= 8) continue;  // the first few; the count says how many
-        if (forces && i < r.values.size()) ImGui::BulletText("%s  %.2f N", name.c_str(), r.values[i]);
-        else ImGui::BulletText("%s", name.c_str());
+  const auto channels = r.channels();
+  for (std::size_t i = 0; i < channels.size(); ++i) {
+    const sensors::Channel& c = channels[i];
+    report[std::string(c.name)] = channelJson(r.value(i), name_of);
+    if (c.per_item) continue;  // beside each item
+    if (c.type != sensors::ChannelType::Items) {
+      ImGui::Text("%s: %s", std::string(c.name).c_str(), sensors::channelText(c, r.value(i), name_of, degrees).c_str());
+      continue;
+    }
+    // the items, the first few by name, each with its share of a per-item channel
+    const auto& items = r.get<std::vector<scene::NodeHandle>>(i);
+    ImGui::Text("%s: %zu", std::string(c.name).c_str(), items.size());
+    for (std::size_t k = 0; k < items.size() && k < 8; ++k) {
+      std::string line = name_of(items[k]);
+      for (std::size_t j = 0; j < channels.size(); ++j) {
+        const auto* per = std::get_if<std::vector<double>>(&r.value(j));
+        if (!channels[j].per_item || per == nullptr || k >= per->size()) continue;
+        line += "  " + sensors::numberText((*per)[k]) + (channels[j].unit.empty() ? "" : " ") + std::string(channels[j].unit);
       }
-      break;
+      ImGui::BulletText("%s", line.c_str());
     }
-    case NodeKind::RangeFinder:
-      ImGui::Text("%.4f m to %s", r.value, r.hit != 0 ? nameOf(r.hit).c_str() : "nothing");
-      report["value"] = r.value;
-      break;
-    case NodeKind::TimeSensor:
-      ImGui::Text("%.0f ticks", r.value);
-      report["value"] = r.value;
-      break;
-    case NodeKind::GradientSensor:
-      ImGui::Text("field vector %s", triple(r.vector, 3).c_str());
-      report["vector"] = {r.vector.x, r.vector.y, r.vector.z};
-      break;
-    case NodeKind::KeyboardSensor: {
-      std::string keys;
-      for (const auto& k : r.keys) keys += (keys.empty() ? "" : " ") + k;
-      ImGui::Text("keys down: %s", keys.empty() ? "none" : keys.c_str());
-      report["keys"] = r.keys;
-      break;
-    }
-    case NodeKind::LaserScan: {
-      const auto [lo, hi] = std::minmax_element(r.values.begin(), r.values.end());
-      if (lo != r.values.end()) ImGui::Text("%zu rays, %.3f to %.3f m", r.values.size(), *lo, *hi);
-      report["rays"] = r.values.size();
-      if (lo != r.values.end()) report["nearest"] = *lo;
-      break;
-    }
-    case NodeKind::Imu:
-      ImGui::Text("acceleration %s m/s^2", triple(r.linear, 3).c_str());
-      ImGui::Text("angular velocity %s deg/s", triple(r.angular * (180.0 / std::numbers::pi), 2).c_str());
-      report["acceleration"] = {r.linear.x, r.linear.y, r.linear.z};
-      break;
-    case NodeKind::Gps: {
-      const bool geodetic = sensor.choice<scene::GpsFrame>(F::Gps::Frame) == scene::GpsFrame::Geodetic;
-      if (geodetic) ImGui::Text("latitude %.7f, longitude %.7f deg, altitude %.2f m", r.linear.x, r.linear.y, r.linear.z);
-      else ImGui::Text("position %s m", triple(r.linear, 3).c_str());
-      report["position"] = {r.linear.x, r.linear.y, r.linear.z};
-      break;
-    }
-    case NodeKind::ForceTorque:
-      ImGui::Text("force %s N", triple(r.linear, 2).c_str());
-      ImGui::Text("torque %s N m", triple(r.angular, 2).c_str());
-      report["force"] = {r.linear.x, r.linear.y, r.linear.z};
-      break;
-    case NodeKind::ColorCamera:
-    case NodeKind::DepthCamera: {
-      const auto picture = sim.lastPicture(sensor.handle());
-      report["picture"] = picture ? nlohmann::json{picture->width, picture->height} : nlohmann::json();
-      if (!picture) {
-        ImGui::TextDisabled("No picture read yet: a camera renders only when a script reads it.");
-        break;
-      }
-      if (!app.picture_texture) app.picture_texture = std::make_unique<PictureTexture>();
-      app.picture_texture->show(picture, sensor.number(F::ColorCamera::Near), sensor.number(F::ColorCamera::Far));
-      ImGui::TextDisabled("the latest picture a script read, %d x %d%s", picture->width, picture->height,
-                          sensor.kind() == NodeKind::DepthCamera ? " (near white, far black)" : "");
-      // as large as the inspector allows, at most 4 times its size and half the panel's height,
-      // so that the fields stay in sight
-      const float aspect = static_cast<float>(picture->height) / static_cast<float>(picture->width);
-      const float width = std::min({ImGui::GetContentRegionAvail().x, 4.0F * static_cast<float>(picture->width),
-                                    0.5F * ImGui::GetWindowHeight() / aspect});
-      const float height = width * aspect;
-      ImGui::Image(reinterpret_cast<ImTextureID>(app.picture_texture->texture()), {width, height});
-      break;
-    }
-    default: break;  // a MouseSensor: clicks, delivered to its handlers as they come
+  }
+  ImGui::Text("active: %s", r.active ? "yes" : "no");
+  if (kind != nullptr) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("(%s)", std::string(kind->active).c_str());
   }
   report["active"] = r.active;
+  if (kind == nullptr || !kind->pictures) return;
+  const auto picture = sim.lastPicture(sensor.handle());
+  report["picture"] = picture ? nlohmann::json{picture->width, picture->height} : nlohmann::json();
+  if (!picture) {
+    ImGui::TextDisabled("No picture read yet: a camera renders only when a script reads it.");
+    return;
+  }
+  namespace F = scene::field;
+  if (!app.picture_texture) app.picture_texture = std::make_unique<PictureTexture>();
+  app.picture_texture->show(picture, sensor.number(F::ColorCamera::Near), sensor.number(F::ColorCamera::Far));
+  const bool depth = !picture->depth.empty();
+  ImGui::TextDisabled("the latest picture a script read, %d x %d%s", picture->width, picture->height,
+                      depth ? " (near white, far black)" : "");
+  // as large as the inspector allows, at most 4 times its size and half the panel's height,
+  // so that the fields stay in sight
+  const float aspect = static_cast<float>(picture->height) / static_cast<float>(picture->width);
+  const float width = std::min({ImGui::GetContentRegionAvail().x, 4.0F * static_cast<float>(picture->width),
+                                0.5F * ImGui::GetWindowHeight() / aspect});
+  const float height = width * aspect;
+  ImGui::Image(reinterpret_cast<ImTextureID>(app.picture_texture->texture()), {width, height});
 }
 
 void nodeInspector(App& app, const std::string& path, nlohmann::json& report) {
