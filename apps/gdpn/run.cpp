@@ -118,7 +118,7 @@ int run(const RunArgs& a) {
     }
     sim->traceTo(trace->stream());
   }
-  Serving serving;
+  modbus::Serving serving;
   if (int code = 0; !serving.start(a.serve, sim->simulation(), &g_interrupted, a.quiet, std::cerr, code)) return code;
   std::signal(SIGINT, onSigint);
   std::signal(SIGTERM, onSigint);  // a launcher that stops the run still gets its trace and summary
