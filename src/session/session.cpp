@@ -206,6 +206,7 @@ bool Session::rebuild(const model::Model& model, core::Diagnostics& diags) {
 }
 
 model::Report Session::report(const model::RunOutcome& outcome) {
+  GDPN_ASSERT(options_.run.report, "a report of a session whose RunRequest collects none");
   return model::makeReport(*sim_, outcome, options_.run.cycle_seconds);
 }
 
