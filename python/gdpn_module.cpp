@@ -219,6 +219,22 @@ class Model {
     return *id;
   }
 
+  /// Plays a witness' firing sequence in this run and after each reset (Session::replay).
+  void replay(const std::string& witness) {
+    core::Diagnostics diags;
+    if (!session_->replay(witness, diags)) raiseModelError(diags);
+  }
+
+  /// How far the replay got: {done, message}, or None when no witness is replayed.
+  py::object replayVerdict() const {
+    const auto verdict = session_->replayVerdict();
+    if (!verdict) return py::none();
+    py::dict out;
+    out["done"] = verdict->done;
+    out["message"] = verdict->message;
+    return out;
+  }
+
   void enableBreakpoint(int id, bool enabled) {
     if (!session_->enableBreakpoint(id, enabled)) throw py::key_error("no breakpoint " + std::to_string(id));
   }
@@ -441,6 +457,12 @@ class FireError(ValueError):
            "compare with `value`, or a predicate holds: a Python expression over the model's globals, or a "
            "callable taking no arguments. Or as `gdpn run --break` writes it: 'start:T', 'complete:T', "
            "'P>=3' (or <, <=, ==, !=, >) or 'when:EXPR'. Returns its id.")
+      .def("replay", &Model::replay, py::arg("witness"),
+           "Plays the firing sequence of a witness (gdpn analyze --witness, as gdpn run --replay) in this run "
+           "and after each reset: only its transitions start, in its order, each as soon as it can. Raises "
+           "gdpn.ModelError, located, when the file is no witness of this net")
+      .def_property_readonly("replay_verdict", &Model::replayVerdict,
+                             "how far the replay got: {done, message} (the message gdpn run --replay prints), or None")
       .def("remove_breakpoint", &Model::removeBreakpoint, py::arg("id"))
       .def("enable_breakpoint", &Model::enableBreakpoint, py::arg("id"), py::arg("enabled") = true,
            "Enables or disables a breakpoint (a disabled one is kept but never stops a run)")

@@ -75,6 +75,26 @@ def test_a_mistake_in_a_written_breakpoint_is_located(source):
     assert m.breakpoints == [{"id": 1, "watches": "completes main/consume", "enabled": True}]
 
 
+def test_a_witness_is_replayed_alike(source, tmp_path):
+    model = str(source / "examples/basics/figure31/figure31.gdpn.yaml")
+    witness = str(tmp_path / "w.json")
+    done = subprocess.run([gdpn_program(), "analyze", model, "--query", "EF P4 = 1", "--witness", witness],
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    cli, err = cli_report(tmp_path, model, "--replay", witness)
+    m = gdpn.load(model)
+    assert m.replay_verdict is None
+    m.replay(witness)
+    python = m.run()
+    assert python == cli
+    verdict = m.replay_verdict
+    assert verdict["done"] is True
+    assert verdict["message"] in err
+    assert verdict["message"].startswith("replay: all 2 firings done by t = 2 s")
+    with pytest.raises(gdpn.ModelError):
+        m.replay(str(tmp_path / "none.json"))
+
+
 def huge(write_model, n=40):
     """n independent switches: 2^n markings, far past any memory limit."""
     places = "".join(f"      p{i}: {{tokens: 1}}\n      q{i}: {{}}\n" for i in range(n))
