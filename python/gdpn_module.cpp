@@ -337,8 +337,9 @@ class Model {
         py::gil_scoped_release unlocked;
         answer = session::analyze(net, path_, request);
       }
-      if (answer.stoppedAtGuard()) {
-        PyErr_WarnEx(PyExc_ResourceWarning, answer.guardNote("max_memory_mib").c_str(), 1);
+      // as gdpn analyze's note (a warning that a filter turns into an error raises it)
+      if (answer.stoppedAtGuard() && PyErr_WarnEx(PyExc_RuntimeWarning, answer.guardNote("max_memory_mib").c_str(), 1) < 0) {
+        throw py::error_already_set();
       }
       return loads(model::analysisJson(net, answer.analysis));
     }
@@ -479,7 +480,7 @@ class FireError(ValueError):
            py::arg("max_states") = session::kDefaultMaxStates, py::arg("max_memory_mib") = 0.0,
            py::arg("time_limit") = 0.0,
            "The untimed net's analysis as data, under gdpn analyze's limits (max_memory_mib 0: 3/4 of the "
-           "memory available at the start; a ResourceWarning says when that stopped it): without `query`, "
+           "memory available at the start; a RuntimeWarning says when that stopped it): without `query`, "
            "what `gdpn analyze --json` reports; with a "
            "formula (docs/queries.md), its answer as a dict (answer, states, technique, and the path, cycle "
            "and marking that show it); with a list of formulas, a list of answers. Raises gdpn.ModelError, "
