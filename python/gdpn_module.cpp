@@ -15,6 +15,8 @@
 #include "gdpn/core/text.h"
 #include "gdpn/model/analysis.h"
 #include "gdpn/model/report.h"
+#include "gdpn/session/analysis_request.h"
+#include "gdpn/session/breakpoint_syntax.h"
 #include "gdpn/session/session.h"
 
 namespace py = pybind11;
@@ -41,6 +43,22 @@ py::module_& module() {
                                                first ? first->loc.column : 0, all);
   PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(err.ptr())), err.ptr());
   throw py::error_already_set();
+}
+
+/// An analysis request from Python's arguments; ValueError for a limit out of range.
+session::AnalysisRequest checkedAnalysisRequest(std::uint64_t max_states, double max_memory_mib, double time_limit) {
+  if (max_states < 1) throw py::value_error("max_states is a whole number of states from 1");
+  if (!std::isfinite(max_memory_mib) || max_memory_mib < 0.0 || max_memory_mib > 1e9) {
+    throw py::value_error("max_memory_mib is MiB from 0 to 1e9 (0: 3/4 of the memory available at the start)");
+  }
+  if (!std::isfinite(time_limit) || time_limit < 0.0 || time_limit > 1e9) {
+    throw py::value_error("time_limit is seconds from 0 to 1e9 (0: none)");
+  }
+  session::AnalysisRequest request;
+  request.max_states = max_states;
+  request.max_memory_mib = max_memory_mib;
+  request.time_limit_s = time_limit;
+  return request;
 }
 
 class Model {
@@ -75,7 +93,7 @@ class Model {
     }
     auto m = model::loadModel(path_, diags, overrides);
     if (!m) raiseModelError(diags);
-    session_ = session::Session::create(std::move(*m), diags, {seed, script_timeout, capture::makeSensorImager});
+    session_ = session::Session::create(std::move(*m), diags, {seed, script_timeout, capture::makeSensorImager, {}});
     if (!session_) raiseModelError(diags);
     session_->traceTo(trace_);
     recordSignals();
@@ -158,12 +176,25 @@ class Model {
     recordSignals();
   }
 
-  int addBreakpoint(std::optional<std::string> starts, std::optional<std::string> completes,
-                    std::optional<std::string> place, const std::string& compare, std::int64_t value,
-                    const py::object& predicate) {
-    const int given = static_cast<int>(starts.has_value()) + static_cast<int>(completes.has_value()) +
-                      static_cast<int>(place.has_value()) + static_cast<int>(!predicate.is_none());
-    if (given != 1) throw py::value_error("a breakpoint watches one thing: starts=, completes=, place= or predicate=");
+  int addBreakpoint(const std::optional<std::string>& written, std::optional<std::string> starts,
+                    std::optional<std::string> completes, std::optional<std::string> place, const std::string& compare,
+                    std::int64_t value, const py::object& predicate) {
+    const int given = static_cast<int>(written.has_value()) + static_cast<int>(starts.has_value()) +
+                      static_cast<int>(completes.has_value()) + static_cast<int>(place.has_value()) +
+                      static_cast<int>(!predicate.is_none());
+    if (given != 1) {
+      throw py::value_error("a breakpoint watches one thing: as written ('start:T', 'P>=3', 'when:EXPR'), starts=, "
+                            "completes=, place= or predicate=");
+    }
+    std::string why;
+    if (written) {
+      // the one syntax of gdpn run --break and the IDE's replay
+      const auto bp = session::parseBreakpoint(*written);
+      if (!bp) throw py::value_error("column " + std::to_string(bp.error().loc.column) + ": " + bp.error().message);
+      const auto id = session_->addBreakpoint(*bp, why);
+      if (!id) throw py::value_error(why);
+      return *id;
+    }
     session::Breakpoint bp;
     bp.kind = starts      ? session::BreakKind::Starts
               : completes ? session::BreakKind::Completes
@@ -183,10 +214,25 @@ class Model {
       bp.compare = *how;
       bp.value = value;
     }
-    std::string why;
     const auto id = session_->addBreakpoint(bp, why);
     if (!id) throw py::value_error(why);
     return *id;
+  }
+
+  /// Plays a witness' firing sequence in this run and after each reset (Session::replay).
+  void replay(const std::string& witness) {
+    core::Diagnostics diags;
+    if (!session_->replay(witness, diags)) raiseModelError(diags);
+  }
+
+  /// How far the replay got: {done, message}, or None when no witness is replayed.
+  py::object replayVerdict() const {
+    const auto verdict = session_->replayVerdict();
+    if (!verdict) return py::none();
+    py::dict out;
+    out["done"] = verdict->done;
+    out["message"] = verdict->message;
+    return out;
   }
 
   void enableBreakpoint(int id, bool enabled) {
@@ -271,30 +317,31 @@ class Model {
   }
 
   py::dict report() const {
-    model::Simulation* sim_ = &session_->simulation();
+    const model::Simulation* sim_ = &session_->simulation();
     auto outcome = outcome_;
     outcome.steps = sim_->kernel().steps();
     outcome.time = sim_->kernel().now();
-    return py::module_::import("json").attr("loads")(model::reportJson(model::makeReport(*sim_, outcome)));
+    return py::module_::import("json").attr("loads")(model::reportJson(session_->report(outcome)));
   }
 
   /// The untimed analysis: without `query`, everything `gdpn analyze --json` reports; with a
   /// formula, its answer; with a list of them, their answers (as `gdpn analyze --query --json`).
+  /// Its limits are gdpn analyze's, the memory guard included (max_memory_mib 0).
   py::object analyze(const py::object& query, std::uint64_t max_states, double max_memory_mib, double time_limit) {
     const net::Net& net = session_->simulation().net();
-    net::ExploreOptions limits;
-    limits.max_states = max_states;
-    limits.max_bytes = static_cast<std::uint64_t>(max_memory_mib * 1024.0 * 1024.0);
+    const session::AnalysisRequest request = analysisRequest(max_states, max_memory_mib, time_limit);
     auto loads = py::module_::import("json").attr("loads");
     if (query.is_none()) {
-      model::AnalysisOptions options;
-      options.explore = limits;
-      options.dt = session_->simulation().model().settings.dt;
-      options.time_limit_s = time_limit;
-      py::gil_scoped_release unlocked;
-      const auto analysis = model::analyze(net, path_, options);
-      py::gil_scoped_acquire locked;
-      return loads(model::analysisJson(net, analysis));
+      session::AnalysisAnswer answer;
+      {
+        py::gil_scoped_release unlocked;
+        answer = session::analyze(net, path_, request);
+      }
+      // as gdpn analyze's note (a warning that a filter turns into an error raises it)
+      if (answer.stoppedAtGuard() && PyErr_WarnEx(PyExc_RuntimeWarning, answer.guardNote("max_memory_mib").c_str(), 1) < 0) {
+        throw py::error_already_set();
+      }
+      return loads(model::analysisJson(net, answer.analysis));
     }
     const bool one = py::isinstance<py::str>(query);
     const auto texts = one ? std::vector<std::string>{query.cast<std::string>()} : query.cast<std::vector<std::string>>();
@@ -311,17 +358,21 @@ class Model {
       formulas.push_back(*f);
       results.push_back({texts[i], std::move(*f), {}, {}});
     }
-    if (time_limit > 0.0) {
-      limits.deadline = net::deadlineAfter(time_limit);
-    }
     std::vector<net::QueryAnswer> answers;
     {
       py::gil_scoped_release unlocked;
-      answers = net::answerQueries(net, formulas, limits);
+      answers = session::answerQueries(net, formulas, request);
     }
     for (std::size_t i = 0; i < answers.size(); ++i) results[i].answer = std::move(answers[i]);
     py::list out = loads(model::queriesJson(net, results))["queries"];
     return one ? out[0] : py::object(out);
+  }
+
+  /// The request of Model.analyze(): the model's step, and the limits given (checked).
+  session::AnalysisRequest analysisRequest(std::uint64_t max_states, double max_memory_mib, double time_limit) const {
+    session::AnalysisRequest request = checkedAnalysisRequest(max_states, max_memory_mib, time_limit);
+    request.dt = session_->simulation().model().settings.dt;
+    return request;
   }
 
   [[nodiscard]] double time() const { return session_->simulation().kernel().now(); }
@@ -400,12 +451,19 @@ class FireError(ValueError):
            "Starts the named transition now; raises gdpn.FireError with the reason when it cannot start")
       .def("reset", &Model::reset, py::arg("seed") = py::none(),
            "Back to the initial state: the same run again, byte for byte (with a seed: that seed's run)")
-      .def("add_breakpoint", &Model::addBreakpoint, py::kw_only(), py::arg("starts") = py::none(),
-           py::arg("completes") = py::none(), py::arg("place") = py::none(), py::arg("compare") = ">=",
-           py::arg("value") = 0, py::arg("predicate") = py::none(),
+      .def("add_breakpoint", &Model::addBreakpoint, py::arg("written") = py::none(), py::kw_only(),
+           py::arg("starts") = py::none(), py::arg("completes") = py::none(), py::arg("place") = py::none(),
+           py::arg("compare") = ">=", py::arg("value") = 0, py::arg("predicate") = py::none(),
            "Stops run() at the end of the step where a transition starts or completes, a place's tokens "
            "compare with `value`, or a predicate holds: a Python expression over the model's globals, or a "
-           "callable taking no arguments. Returns its id.")
+           "callable taking no arguments. Or as `gdpn run --break` writes it: 'start:T', 'complete:T', "
+           "'P>=3' (or <, <=, ==, !=, >) or 'when:EXPR'. Returns its id.")
+      .def("replay", &Model::replay, py::arg("witness"),
+           "Plays the firing sequence of a witness (gdpn analyze --witness, as gdpn run --replay) in this run "
+           "and after each reset: only its transitions start, in its order, each as soon as it can. Raises "
+           "gdpn.ModelError, located, when the file is no witness of this net")
+      .def_property_readonly("replay_verdict", &Model::replayVerdict,
+                             "how far the replay got: {done, message} (the message gdpn run --replay prints), or None")
       .def("remove_breakpoint", &Model::removeBreakpoint, py::arg("id"))
       .def("enable_breakpoint", &Model::enableBreakpoint, py::arg("id"), py::arg("enabled") = true,
            "Enables or disables a breakpoint (a disabled one is kept but never stops a run)")
@@ -419,8 +477,11 @@ class FireError(ValueError):
       .def("marking", &Model::marking, py::arg("place"),
            "Tokens on a place: a count for a plain place, else {slot: count or [node names]}")
       .def("analyze", &Model::analyze, py::arg("query") = py::none(), py::kw_only(),
-           py::arg("max_states") = 20'000'000, py::arg("max_memory_mib") = 0.0, py::arg("time_limit") = 0.0,
-           "The untimed net's analysis as data: without `query`, what `gdpn analyze --json` reports; with a "
+           py::arg("max_states") = session::kDefaultMaxStates, py::arg("max_memory_mib") = 0.0,
+           py::arg("time_limit") = 0.0,
+           "The untimed net's analysis as data, under gdpn analyze's limits (max_memory_mib 0: 3/4 of the "
+           "memory available at the start; a RuntimeWarning says when that stopped it): without `query`, "
+           "what `gdpn analyze --json` reports; with a "
            "formula (docs/queries.md), its answer as a dict (answer, states, technique, and the path, cycle "
            "and marking that show it); with a list of formulas, a list of answers. Raises gdpn.ModelError, "
            "located by column, for a mistake in a formula; an answer a limit stops is 'unknown' with 'why'.")
@@ -457,6 +518,21 @@ class FireError(ValueError):
       "Loads a model file (or a folder holding one), its parameters set from `params` ({name: number}) where "
       "given; `signals` adds signals to record (\"place:NAME\", \"node:PATH.QUANTITY\", \"python:EXPR\", sampled "
       "every step) to the model's own; raises gdpn.ModelError on mistakes");
+
+  m.def(
+      "analysis_limits",
+      [](std::uint64_t max_states, double max_memory_mib, double time_limit) {
+        const net::ExploreOptions limits = checkedAnalysisRequest(max_states, max_memory_mib, time_limit).limits();
+        py::dict out;
+        out["max_states"] = limits.max_states;
+        out["max_bytes"] = limits.max_bytes;
+        out["guard"] = limits.max_bytes_guard;
+        return out;
+      },
+      py::kw_only(), py::arg("max_states") = session::kDefaultMaxStates, py::arg("max_memory_mib") = 0.0,
+      py::arg("time_limit") = 0.0,
+      "The limits Model.analyze() (and gdpn analyze) would run under now: {max_states, max_bytes, guard}; "
+      "guard is True when max_bytes is the default, 3/4 of the memory available");
 
   // sweeps: the same code as `gdpn sweep`, in a namespace of its own that no worker needs to
   // import (Dask sends its functions by value)

@@ -1,6 +1,7 @@
 #include "sweep_command.h"
 
 #include "cli_checks.h"
+#include "commands.h"
 
 #include <unistd.h>
 
@@ -148,6 +149,15 @@ int sweep(const SweepArgs& a) {
     return 1;
   }
   return std::stoi(*code);
+}
+
+Subcommand addSweep(CLI::App& app) {
+  auto args = std::make_shared<SweepArgs>();
+  auto* sweep_cmd = addSweepCommand(app, *args);
+  return {sweep_cmd, [args, sweep_cmd] {
+            args->scheduler_given = sweep_cmd->get_option("--scheduler")->count() > 0;
+            return sweep(*args);
+          }};
 }
 
 }  // namespace gdpn::app

@@ -18,6 +18,7 @@
 #include "gdpn/ide/scene_edit.h"
 #include "gdpn/ide/set_field.h"
 #include "gdpn/scene/actions.h"
+#include "gdpn/session/breakpoint_syntax.h"
 #include "views.h"
 #include "views/net_view_state.h"
 
@@ -573,7 +574,15 @@ bool App::perform(const Action& a, std::string& error) {
     }
     case ActionKind::Break: {
       session::Breakpoint bp;
-      if (a.field == "starts") bp = session::Breakpoint::starts(a.text);
+      if (a.field == "written") {
+        // in gdpn run --break's syntax, checked by the replay's reader already
+        auto written = session::parseBreakpoint(a.text);
+        if (!written) {
+          error = written.error().message;
+          break;
+        }
+        bp = std::move(*written);
+      } else if (a.field == "starts") bp = session::Breakpoint::starts(a.text);
       else if (a.field == "completes") bp = session::Breakpoint::completes(a.text);
       else if (a.field == "place")
         bp = session::Breakpoint::marking(a.text, session::Compare::GreaterEqual, static_cast<std::int64_t>(a.number));

@@ -1,6 +1,7 @@
 // Reading replay files: a YAML list of one-key maps, each an action, located for messages.
 
 #include "gdpn/ide/replay.h"
+#include "gdpn/session/breakpoint_syntax.h"
 
 #include <yaml-cpp/yaml.h>
 
@@ -169,7 +170,23 @@ class ActionReader {
   }
   bool breakpoint(const YAML::Node& v, Action& a) {
     a.kind = ActionKind::Break;
-    const char* kUsage = "expects {starts: T}, {completes: T}, {place: P, at_least: N} or {when: PYTHON}";
+    const char* kUsage =
+        "expects 'start:T', 'complete:T', 'P>=N' (or <, <=, ==, !=, >), 'when:PYTHON', {starts: T}, {completes: T}, "
+        "{place: P, at_least: N} or {when: PYTHON}";
+    if (v.IsScalar()) {
+      // as gdpn run --break writes it (session::parseBreakpoint), located in the file; a
+      // quoted scalar's text starts after its quote
+      core::SourceLoc start = locOf(v, file_);
+      if (v.Tag() == "!") ++start.column;
+      const auto bp = session::parseBreakpoint(v.Scalar(), start);
+      if (!bp) {
+        diags_.error(bp.error().loc, bp.error().message);
+        return false;
+      }
+      a.field = "written";
+      a.text = v.Scalar();
+      return true;
+    }
     if (!v.IsMap()) return fail(v, kUsage);
     bool counted = false;
     for (const auto& kv : v) {

@@ -1,10 +1,11 @@
 #include "gdpn/session/session.h"
 
-#include <filesystem>
-
 #include <algorithm>
+#include <filesystem>
+#include <sstream>
 
 #include "gdpn/net/observer.h"
+#include "gdpn/net/timeline.h"
 
 namespace gdpn::session {
 
@@ -118,10 +119,27 @@ std::unique_ptr<model::Simulation> Session::make(const model::Model& model, core
 
 void Session::adopt(std::unique_ptr<model::Simulation> sim) {
   if (watcher_ && sim_) sim_->kernel().removeObserver(watcher_.get());
+  if (timeline_ && sim_) sim_->kernel().removeObserver(timeline_.get());
   sim_ = std::move(sim);
   hit_.reset();
   if (trace_out_) sim_->traceTo(*trace_out_);
   if (!input_.empty()) sim_->setInput(input_);
+  // what the run collects from its start: the report's figures and circuits, a timeline
+  if (options_.run.report) {
+    model::watchRoundTrips(*sim_, options_.run.cycle_seconds);
+  } else {
+    sim_->dropStatistics();
+  }
+  timeline_.reset();
+  if (options_.run.timeline) {
+    timeline_ = std::make_unique<net::Timeline>(sim_->net());
+    sim_->kernel().addObserver(timeline_.get());
+  }
+  if (witness_) {
+    auto sequence = witness_->path;
+    sequence.insert(sequence.end(), witness_->cycle.begin(), witness_->cycle.end());
+    sim_->replay(std::move(sequence));
+  }
   // breakpoints whose transition or place the net lacks (after an edit) are dropped
   targets_.clear();
   for (auto it = breakpoints_.begin(); it != breakpoints_.end();) {
@@ -182,8 +200,49 @@ bool Session::rebuild(const model::Model& model, core::Diagnostics& diags) {
   diags.append(own);
   if (!sim) return false;
   model_ = model;
+  witness_.reset();  // its transitions were the old net's
   adopt(std::move(sim));
   return true;
+}
+
+model::Report Session::report(const model::RunOutcome& outcome) {
+  GDPN_ASSERT(options_.run.report, "a report of a session whose RunRequest collects none");
+  return model::makeReport(*sim_, outcome, options_.run.cycle_seconds);
+}
+
+bool Session::replay(const std::string& path, core::Diagnostics& diags) {
+  auto witness = model::loadWitness(sim_->net(), path, diags);
+  if (!witness) return false;
+  auto sequence = witness->path;
+  sequence.insert(sequence.end(), witness->cycle.begin(), witness->cycle.end());
+  sim_->replay(std::move(sequence));
+  witness_ = std::move(witness);
+  return true;
+}
+
+std::optional<ReplayVerdict> Session::replayVerdict() const {
+  if (!witness_) return std::nullopt;
+  const model::Witness& w = *witness_;
+  const std::size_t total = w.path.size() + w.cycle.size();
+  const std::string loop = w.lasso ? " (its cycle once)" : "";
+  const std::string all = total == 1 ? "the 1 firing" : "all " + std::to_string(total) + " firings";
+  std::ostringstream out;
+  ReplayVerdict verdict;
+  if (sim_->replayed() < total) {
+    out << "replay stopped after " << sim_->replayed() << " of " << total << " firings" << loop << " at t = "
+        << sim_->kernel().now() << " s: " << (sim_->replayBlocked().empty() ? "the run ended first" : sim_->replayBlocked());
+  } else if (sim_->kernel().occurringCount() != 0) {
+    out << "replay: " << all << " started" << loop << ", but " << sim_->kernel().occurringCount()
+        << " still occur at t = " << sim_->kernel().now() << " s (a later --until lets them complete)";
+  } else if (const std::string differs = model::witnessMismatch(sim_->net(), sim_->kernel(), w); !differs.empty()) {
+    out << "replay: " << all << " done" << loop << ", but the marking is not the witness': " << differs;
+  } else {
+    verdict.done = true;
+    out << "replay: " << all << " done" << loop << " by t = " << sim_->kernel().now() << " s; the marking is the witness'"
+        << (w.query.empty() ? "" : " (" + w.query + ")");
+  }
+  verdict.message = out.str();
+  return verdict;
 }
 
 void Session::traceTo(std::ostream& out) {

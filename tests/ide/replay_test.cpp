@@ -46,6 +46,19 @@ TEST(Replay, ReadsEveryAction) {
   EXPECT_EQ((*a)[11].loc.column, 3);
 }
 
+TEST(Replay, ABreakpointMayBeWrittenAsGdpnRunWritesIt) {
+  core::Diagnostics diags;
+  const auto a = parse("- break: start:factory/pickup\n- break: 'main/buffer>=3'\n- break: 'when:sim.time > 2'\n", diags);
+  ASSERT_TRUE(a) << diags.str();
+  ASSERT_EQ(a->size(), 3U);
+  for (const auto& action : *a) {
+    EXPECT_EQ(action.kind, ActionKind::Break);
+    EXPECT_EQ(action.field, "written");
+  }
+  EXPECT_EQ((*a)[0].text, "start:factory/pickup");
+  EXPECT_EQ((*a)[2].text, "when:sim.time > 2");
+}
+
 TEST(Replay, MistakesAreLocated) {
   const std::pair<const char*, const char*> cases[] = {
       {"- hop: 1\n", "a.yaml:1:3: error: unknown action 'hop'"},
@@ -59,6 +72,9 @@ TEST(Replay, MistakesAreLocated) {
       {"- wheel: {at: [1, 2], clicks: 1e9}\n", "a.yaml:1:31: error: expects clicks from -100 to 100"},
       {"select: a\n", "a.yaml:1:1: error: a replay file is a list of actions"},
       {"- break: {place: p}\n", "a.yaml:1:10: error: a place's breakpoint expects at_least: N tokens"},
+      // as gdpn run --break writes it: located at the character that goes wrong
+      {"- break: main/buffer=>3\n", "a.yaml:1:21: error: expected start:TRANSITION, complete:TRANSITION"},
+      {"- break: 'main/buffer>=x'\n", "a.yaml:1:24: error: expected start:TRANSITION"},
       {"- [a, b]\n", "a.yaml:1:3: error: an action is a map with one key"},
   };
   for (const auto& [text, expected] : cases) {

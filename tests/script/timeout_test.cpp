@@ -190,7 +190,7 @@ TEST(ScriptTimeout, APredicateBreakpointThatSleepsEndsTheRunNamingIt) {
   const std::string path = "/examples/basics/producer_consumer/producer_consumer.gdpn.yaml";
   auto model = loadModel(std::string(GDPN_SOURCE_DIR) + path, diags);
   ASSERT_TRUE(model) << diags.str();
-  auto s = session::Session::create(std::move(*model), diags, {std::nullopt, 0.3, {}});
+  auto s = session::Session::create(std::move(*model), diags, {std::nullopt, 0.3, {}, {}});
   ASSERT_TRUE(s) << diags.str();
   std::string why;
   ASSERT_TRUE(s->addBreakpoint(session::Breakpoint::predicate("__import__('time').sleep(100)"), why)) << why;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "gdpn/net/timeline.h"
 #include "gdpn/session/session.h"
 
 namespace gdpn::session {
@@ -429,6 +430,62 @@ TEST(Session, RebuildTakesAnEditedModelOrKeepsTheOldOne) {
   EXPECT_EQ(s->simulation().kernel().steps(), 0);
   s->run({{}, 60});
   EXPECT_EQ(tokens(*s, "main/b"), 1);
+}
+
+}  // namespace
+}  // namespace gdpn::session
+
+namespace gdpn::session {
+namespace {
+
+// the run request: what each run of a session collects from its start, kept over resets
+
+std::size_t circuitCount(const model::Report& report) {
+  std::size_t n = 0;
+  for (const auto& c : report.cycles) n += c.circuits.size();
+  return n;
+}
+
+TEST(RunRequest, ByDefaultTheReportShowsEachCircuitOfATokenWithAlternatives) {
+  auto s = openFile("tests/data/good/alternatives.gdpn.yaml");
+  ASSERT_TRUE(s);
+  const auto outcome = s->run({{}, {}});
+  // the station token works red parts and skips blue ones: two circuits, each measured
+  EXPECT_EQ(circuitCount(s->report(outcome)), 2u);
+  EXPECT_EQ(s->timeline(), nullptr);
+  // again after a reset: the request holds for every run the session makes
+  core::Diagnostics diags;
+  ASSERT_TRUE(s->reset(diags));
+  EXPECT_EQ(circuitCount(s->report(s->run({{}, {}}))), 2u);
+}
+
+TEST(RunRequest, ATimelineWhenAskedAndNoStatisticsWhenNoReportIs) {
+  core::Diagnostics diags;
+  auto m = model::loadModel(std::string(GDPN_SOURCE_DIR) + "/tests/data/good/alternatives.gdpn.yaml", diags);
+  ASSERT_TRUE(m) << diags.str();
+  SessionOptions options;
+  options.run.timeline = true;
+  auto s = Session::create(*m, diags, options);
+  ASSERT_TRUE(s) << diags.str();
+  s->run({{}, 100});
+  ASSERT_NE(s->timeline(), nullptr);
+  EXPECT_FALSE(s->timeline()->occurrences().empty());
+  options.run = {};
+  options.run.report = false;
+  auto quiet = Session::create(*m, diags, options);
+  ASSERT_TRUE(quiet) << diags.str();
+  EXPECT_EQ(quiet->timeline(), nullptr);
+  EXPECT_EQ(quiet->run({{}, 100}).steps, 100);
+}
+
+TEST(RunRequest, AReplayedWitnessSaysHowFarItGot) {
+  auto s = openFile(kProducerConsumer);
+  ASSERT_TRUE(s);
+  EXPECT_FALSE(s->replayVerdict());
+  core::Diagnostics diags;
+  EXPECT_FALSE(s->replay("/nonexistent/witness.json", diags));
+  EXPECT_TRUE(diags.hasErrors());
+  EXPECT_FALSE(s->replayVerdict());
 }
 
 }  // namespace

@@ -39,7 +39,7 @@ enum class ActionKind : std::uint8_t {
 struct Action {
   ActionKind kind = ActionKind::Select;  ///< what it does
   std::string text;            ///< the name, control, key, file, node path or view
-  std::string field;           ///< Set: the field; Break: starts, completes, place or when
+  std::string field;           ///< Set: the field; Break: starts, completes, place, when, or written (`text` in gdpn run --break's syntax)
   std::vector<std::string> value;  ///< Set: the value's words (one for a scalar, more for a list)
   bool list = false;           ///< Set: the value was a list
   bool quoted = false;         ///< Set: the value was quoted (text, for a datum)

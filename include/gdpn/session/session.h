@@ -19,6 +19,12 @@
 #include "gdpn/core/diagnostics.h"
 #include "gdpn/model/model.h"
 #include "gdpn/model/simulation.h"
+#include "gdpn/model/witness.h"
+#include "gdpn/session/run_request.h"
+
+namespace gdpn::net {
+class Timeline;
+}  // namespace gdpn::net
 
 namespace gdpn::session {
 
@@ -30,6 +36,14 @@ struct SessionOptions {
   /// the first simulation whose scene has a camera sensor (none: pictures are not rendered,
   /// and a script that reads one fails saying so).
   std::function<std::shared_ptr<sensors::Imager>(const std::string& model_dir)> imager;
+  /// What each run collects from its start (the report's figures and circuits, a timeline).
+  RunRequest run;
+};
+
+/// How far the replay of a witness got (Session::replay).
+struct ReplayVerdict {
+  bool done = false;    ///< every firing started and the witness' marking reached
+  std::string message;  ///< done: "replay: all N firings done by t = ... s; ..."; else where it stopped and why
 };
 
 /// What a breakpoint watches.
@@ -130,6 +144,21 @@ class Session {
   /// Input events (a whole list, in time order) the sensors receive; they come back on reset.
   void setInput(std::vector<sensors::InputEvent> events);
 
+  /// The report of the run so far, `outcome` being how its last run() ended: the figures
+  /// collected (RunRequest::report must be on) and each watched token's circuits.
+  [[nodiscard]] model::Report report(const model::RunOutcome& outcome);
+  /// The timeline of the run (null unless RunRequest::timeline is on).
+  [[nodiscard]] const net::Timeline* timeline() const { return timeline_.get(); }
+
+  /// Plays the firing sequence of the witness in file `path` (`gdpn analyze --witness`), in
+  /// this run and in every run after a reset: only its transitions start, in its order, each
+  /// as soon as it can (a rebuild drops it). False with located diagnostics in `diags` when
+  /// the file is no witness of this net. Call before the run starts.
+  bool replay(const std::string& path, core::Diagnostics& diags);
+  /// How far the replay got: every firing started, none still occurring and the witness'
+  /// marking reached, or where it stopped and why. Nullopt when no witness is replayed.
+  [[nodiscard]] std::optional<ReplayVerdict> replayVerdict() const;
+
   /// The model.
   [[nodiscard]] const model::Model& model() const { return model_; }
   /// The run.
@@ -151,6 +180,7 @@ class Session {
   model::Model model_;
   SessionOptions options_;
   std::unique_ptr<Watcher> watcher_;  // before the run it listens to: it outlives the kernel
+  std::unique_ptr<net::Timeline> timeline_;  // RunRequest::timeline; likewise
   std::unique_ptr<model::Simulation> sim_;
   std::vector<std::pair<int, Breakpoint>> breakpoints_;
   std::vector<std::int64_t> targets_;  // per breakpoint: its transition or place in the net
@@ -159,6 +189,7 @@ class Session {
   std::string predicate_error_;  // why a predicate of the last run failed
   std::ostream* trace_out_ = nullptr;
   std::vector<sensors::InputEvent> input_;
+  std::optional<model::Witness> witness_;  // replayed in every run (Session::replay)
 };
 
 }  // namespace gdpn::session

@@ -1,0 +1,71 @@
+#include "gdpn/session/analysis_request.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "gdpn/core/memory.h"
+
+namespace gdpn::session {
+
+namespace {
+
+/// The limits with the deadline of the time limit, for a single search.
+net::ExploreOptions withDeadline(const AnalysisRequest& request) {
+  net::ExploreOptions limits = request.limits();
+  if (request.time_limit_s > 0.0) limits.deadline = net::deadlineAfter(request.time_limit_s);
+  return limits;
+}
+
+}  // namespace
+
+net::ExploreOptions AnalysisRequest::limits() const {
+  net::ExploreOptions o;
+  o.max_states = max_states;
+  o.max_bytes = static_cast<std::uint64_t>(max_memory_mib * 1024.0 * 1024.0);
+  if (guarded()) {
+    o.max_bytes = core::availableMemory() / 4 * 3;
+    o.max_bytes_guard = true;
+  }
+  o.threads = threads;
+  o.shortest_path = shortest_path;
+  o.reduction = reduction;
+  return o;
+}
+
+bool AnalysisAnswer::stoppedAtGuard() const {
+  const auto stopped = model::stoppedPhases(analysis);
+  return guard && std::any_of(stopped.begin(), stopped.end(),
+                              [](const auto& p) { return p.second == net::ExploreStop::MaxMemory; });
+}
+
+std::string AnalysisAnswer::guardNote(std::string_view option) const {
+  char mib[32];
+  std::snprintf(mib, sizeof mib, "%.0f", static_cast<double>(max_bytes) / (1024.0 * 1024.0));
+  return "stopped at the default " + std::string(option) + ", 3/4 of the memory available at the start (" + mib + " MiB)";
+}
+
+AnalysisAnswer analyze(const net::Net& net, std::string path, const AnalysisRequest& request) {
+  model::AnalysisOptions options;
+  options.explore = request.limits();
+  options.explore.progress = request.progress;
+  options.dt = request.dt;
+  options.time_limit_s = request.time_limit_s;
+  options.progress = request.phase_progress;
+  AnalysisAnswer answer;
+  answer.max_bytes = options.explore.max_bytes;
+  answer.guard = options.explore.max_bytes_guard;
+  answer.analysis = model::analyze(net, std::move(path), options);
+  return answer;
+}
+
+std::vector<net::QueryAnswer> answerQueries(const net::Net& net, const std::vector<net::Formula>& formulas,
+                                            const AnalysisRequest& request) {
+  return net::answerQueries(net, formulas, withDeadline(request));
+}
+
+net::ExploreStop writeStateGraph(const net::Net& net, net::GraphFormat format, std::ostream& out,
+                                 const AnalysisRequest& request) {
+  return net::writeStateGraph(net, format, out, withDeadline(request));
+}
+
+}  // namespace gdpn::session
