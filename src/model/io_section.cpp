@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "gdpn/core/text.h"
+#include "gdpn/model/schema.h"
 
 namespace gdpn::model {
 
@@ -46,17 +47,6 @@ constexpr IoType kTypes[] = {IoType::Int16, IoType::Uint16, IoType::Int32, IoTyp
 bool isRegister(IoTable t) { return t == IoTable::InputRegisters || t == IoTable::HoldingRegisters; }
 bool isWritten(IoTable t) { return t == IoTable::Coils || t == IoTable::HoldingRegisters; }
 
-/// The keys an entry of `table` may have.
-std::vector<std::string> keysOf(IoTable table) {
-  switch (table) {
-    case IoTable::DiscreteInputs: return {"place", "node", "of", "key"};
-    case IoTable::InputRegisters: return {"place", "node", "of", "scale", "unit", "type"};
-    case IoTable::Coils: return {"place", "node", "field", "on", "off"};
-    case IoTable::HoldingRegisters: return {"place", "node", "field", "scale", "unit", "type"};
-  }
-  return {};
-}
-
 /// An address: a whole number from 0 to 65535.
 std::optional<std::uint16_t> address(YamlReader& r, const std::string& text, const core::SourceLoc& at,
                                      const std::string& what) {
@@ -77,7 +67,7 @@ std::optional<IoEntry> readEntry(YamlReader& r, IoTable table, std::uint16_t add
   if (!r.expectMap(e.value, name)) return std::nullopt;
   int sources = 0;
   bool ok = true;
-  for (const auto& k : r.entries(e.value, name, keysOf(table))) {
+  for (const auto& k : r.entries(e.value, name, schema::ioEntryKeyNames(table))) {
     if (k.key == "scale" || k.key == "on" || k.key == "off") {
       const auto v = r.number(k.value, k.key);
       if (!v) {
@@ -150,9 +140,7 @@ std::optional<IoEntry> readEntry(YamlReader& r, IoTable table, std::uint16_t add
 IoSpec readIo(const YAML::Node& section, YamlReader& r) {
   IoSpec io;
   if (section.IsNull() || !r.expectMap(section, "io")) return io;
-  std::vector<std::string> keys = {"lockstep"};
-  for (IoTable t : kTables) keys.emplace_back(ioTableKey(t));
-  for (const auto& e : r.entries(section, "io", keys)) {
+  for (const auto& e : r.entries(section, "io", schema::keyNames(schema::Section::Io))) {
     if (e.key == "lockstep") {
       const auto text = r.string(e.value, "lockstep");
       if (!text) continue;
@@ -213,6 +201,12 @@ IoSpec readIo(const YAML::Node& section, YamlReader& r) {
 }
 
 void writeIo(YAML::Emitter& out, const IoSpec& io) {
+  // what an entry leaves out: the schema's defaults
+  using schema::Section;
+  const double on_default = schema::defaultNumber(Section::IoEntry, "on");
+  const double off_default = schema::defaultNumber(Section::IoEntry, "off");
+  const double scale_default = schema::defaultNumber(Section::IoEntry, "scale");
+  const std::string& type_default = schema::key(Section::IoEntry, "type").initial;
   out << YAML::BeginMap;
   if (io.lockstep) out << YAML::Key << "lockstep" << YAML::Value << *io.lockstep;
   for (IoTable t : kTables) {
@@ -230,13 +224,13 @@ void writeIo(YAML::Emitter& out, const IoSpec& io) {
       if (!e->key.empty()) out << YAML::Key << "key" << YAML::Value << e->key;
       if (!e->field.empty()) out << YAML::Key << "field" << YAML::Value << e->field;
       if (t == IoTable::Coils && e->source == IoEntry::Source::Node) {
-        if (e->on != 1.0) out << YAML::Key << "on" << YAML::Value << core::formatDouble(e->on);
-        if (e->off != 0.0) out << YAML::Key << "off" << YAML::Value << core::formatDouble(e->off);
+        if (e->on != on_default) out << YAML::Key << "on" << YAML::Value << core::formatDouble(e->on);
+        if (e->off != off_default) out << YAML::Key << "off" << YAML::Value << core::formatDouble(e->off);
       }
       if (isRegister(t)) {
-        if (e->scale != 1.0) out << YAML::Key << "scale" << YAML::Value << core::formatDouble(e->scale);
+        if (e->scale != scale_default) out << YAML::Key << "scale" << YAML::Value << core::formatDouble(e->scale);
         if (!e->unit.empty()) out << YAML::Key << "unit" << YAML::Value << e->unit;
-        if (e->type != IoType::Int16) out << YAML::Key << "type" << YAML::Value << ioTypeName(e->type);
+        if (ioTypeName(e->type) != type_default) out << YAML::Key << "type" << YAML::Value << ioTypeName(e->type);
       }
       out << YAML::EndMap;
     }

@@ -5,6 +5,7 @@
 #include "gdpn/core/output_file.h"
 #include "gdpn/core/text.h"
 #include "gdpn/model/model.h"
+#include "gdpn/model/schema.h"
 #include "io_section.h"
 #include "scene_io.h"
 #include "yaml_reader.h"
@@ -13,6 +14,7 @@ namespace gdpn::model {
 namespace {
 
 using core::formatDouble;
+using schema::Section;
 
 void pos(YAML::Emitter& out, const std::optional<net::EditorPos>& p) {
   if (!p) return;
@@ -146,17 +148,21 @@ void writeDuration(YAML::Emitter& out, const net::Duration& d) {
 }
 
 void writeTransition(YAML::Emitter& out, const net::TransitionSpec& t) {
+  // what a transition leaves out: the schema's defaults
+  const double priority_default = schema::defaultNumber(Section::Transition, "priority");
+  const double probability_default = schema::defaultNumber(Section::Transition, "probability");
+  const double servers_default = schema::defaultNumber(Section::Transition, "servers");
   out << YAML::Key << t.name << YAML::Value << styleFor(t.scripted()) << YAML::BeginMap;
   description(out, t.description);
   writeDuration(out, t.duration);
   if (!t.priority_param.empty()) out << YAML::Key << "priority" << YAML::Value << "$" + t.priority_param;
-  else if (t.priority != 0) out << YAML::Key << "priority" << YAML::Value << t.priority;
-  if (t.probability != 1.0 || !t.probability_param.empty()) {
+  else if (static_cast<double>(t.priority) != priority_default) out << YAML::Key << "priority" << YAML::Value << t.priority;
+  if (t.probability != probability_default || !t.probability_param.empty()) {
     out << YAML::Key << "probability" << YAML::Value << numberText(t.probability, t.probability_param);
   }
   if (!t.servers_param.empty()) out << YAML::Key << "servers" << YAML::Value << "$" + t.servers_param;
   else if (t.servers == net::kUnlimitedServers) out << YAML::Key << "servers" << YAML::Value << "unlimited";
-  else if (t.servers != 1) out << YAML::Key << "servers" << YAML::Value << t.servers;
+  else if (static_cast<double>(t.servers) != servers_default) out << YAML::Key << "servers" << YAML::Value << t.servers;
   for (const net::ScriptKind k : net::kTransitionScripts) writeScript(out, net::info(k).key, net::scriptOf(t, k));
   pos(out, t.position);
   out << YAML::EndMap;
@@ -166,7 +172,7 @@ void writeArc(YAML::Emitter& out, const net::ArcSpec& a) {
   out << styleFor(!a.predicates.empty() || !a.conditions.empty()) << YAML::BeginMap << YAML::Key << "from" << YAML::Value << a.from
       << YAML::Key << "to"
       << YAML::Value << a.to;
-  if (a.kind != net::ArcKind::Normal) out << YAML::Key << "kind" << YAML::Value << net::arcKindName(a.kind);
+  if (net::arcKindName(a.kind) != schema::key(Section::Arc, "kind").initial) out << YAML::Key << "kind" << YAML::Value << net::arcKindName(a.kind);
   perSlot(out, "weight", a.weights);
   for (const auto* list : {&a.predicates, &a.conditions}) {
     if (list->empty()) continue;
