@@ -20,6 +20,7 @@
 #include "gdpn/ide/net_edit.h"
 #include "gdpn/ide/python_text.h"
 #include "gdpn/ide/token_types.h"
+#include "gdpn/model/schema.h"
 #include "gdpn/scene/node.h"
 
 namespace gdpn::ide {
@@ -50,6 +51,17 @@ std::string durationText(const net::Duration& d) {
     case net::Duration::Law::Immediate: return "immediate" + std::string(d.params[0].empty() ? "" : " ($" + d.params[0] + " = 0)");
   }
   return "?";
+}
+
+/// Notes the last item, the field of key `name` of `section`, under the key's name (as
+/// noteItem does) and, while it is hovered, shows the key's help and range from the schema.
+void keyItem(model::schema::Section section, std::string_view name, nlohmann::json& fields) {
+  const auto& key = model::schema::key(section, name);
+  noteItem(key.name, fields);
+  if (ImGui::IsItemHovered()) {
+    const std::string range = model::schema::rangeText(key);
+    ImGui::SetTooltip("%s%s", key.help.c_str(), range.empty() ? "" : (" (" + range + ")").c_str());
+  }
 }
 
 /// After a field that comes from a model parameter: "= $name" (nothing for a number typed in).
@@ -317,7 +329,7 @@ void slotFields(App& app, const ConstructAt& at, const net::PlaceSpec& place, ne
       ImGui::SetNextItemWidth(110);
       const int tokens_before = tokens;
       ImGui::InputInt("tokens", &tokens, 0, 0);
-      noteItem("tokens", fields);
+      keyItem(model::schema::Section::Place, "tokens", fields);
       // a value left as it was keeps the parameter it came from
       if (ImGui::IsItemDeactivatedAfterEdit() && tokens >= 0 && tokens != tokens_before) {
         auto p = place;
@@ -331,7 +343,7 @@ void slotFields(App& app, const ConstructAt& at, const net::PlaceSpec& place, ne
     ImGui::SetNextItemWidth(110);
     const int capacity_before = capacity;
     ImGui::InputInt("capacity (-1: none)", &capacity, 0, 0);
-    noteItem("capacity", fields);
+    keyItem(model::schema::Section::Place, "capacity", fields);
     if (ImGui::IsItemDeactivatedAfterEdit() && capacity >= -1 && capacity != capacity_before) {
       auto p = place;
       setSlotCount(p.capacity, slot, capacity >= 0 ? std::optional<std::int64_t>(capacity) : std::nullopt);
@@ -537,7 +549,7 @@ void editTransition(App& app, const ConstructAt& at, const net::TransitionSpec& 
     ImGui::SameLine();
     ImGui::SetNextItemWidth(90);
     ImGui::InputDouble(first, &d.a, 0, 0, "%g");
-    noteItem("duration", fields);
+    keyItem(model::schema::Section::Transition, "duration", fields);
     changed = changed || ImGui::IsItemDeactivatedAfterEdit();
     paramNote(t.duration.params[0]);
   }
@@ -552,14 +564,14 @@ void editTransition(App& app, const ConstructAt& at, const net::TransitionSpec& 
   int priority = static_cast<int>(t.priority);
   ImGui::SetNextItemWidth(90);
   ImGui::InputInt("priority", &priority, 0, 0);
-  noteItem("priority", fields);
+  keyItem(model::schema::Section::Transition, "priority", fields);
   const bool priority_changed = ImGui::IsItemDeactivatedAfterEdit();
   paramNote(t.priority_param);
   ImGui::SameLine();
   double probability = t.probability;
   ImGui::SetNextItemWidth(90);
   ImGui::InputDouble("probability", &probability, 0, 0, "%g");
-  noteItem("probability", fields);
+  keyItem(model::schema::Section::Transition, "probability", fields);
   const bool probability_changed = ImGui::IsItemDeactivatedAfterEdit();
   paramNote(t.probability_param);
   // servers: how many occurrences at once; "unlimited" greys the number out
@@ -569,7 +581,7 @@ void editTransition(App& app, const ConstructAt& at, const net::TransitionSpec& 
   ImGui::SetNextItemWidth(90);
   ImGui::InputInt("servers", &servers, 0, 0);
   ImGui::EndDisabled();
-  noteItem("servers", fields);
+  keyItem(model::schema::Section::Transition, "servers", fields);
   bool servers_changed = ImGui::IsItemDeactivatedAfterEdit();
   paramNote(t.servers_param);
   ImGui::SameLine();
