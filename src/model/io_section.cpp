@@ -101,7 +101,8 @@ std::optional<IoEntry> readEntry(YamlReader& r, IoTable table, std::uint16_t add
     } else if (k.key == "type") {
       const auto* t = std::find_if(std::begin(kTypes), std::end(kTypes), [&](IoType x) { return *text == ioTypeName(x); });
       if (t == std::end(kTypes)) {
-        r.error(r.loc(k.value, k.loc), "'type' is one of int16, uint16, int32, uint32, float32, got '" + *text + "'");
+        const auto& types = schema::key(schema::Section::IoEntry, "type");
+        r.error(r.loc(k.value, k.loc), "'type' is one of " + schema::choiceList(types, "", ", ") + ", got '" + *text + "'");
         ok = false;
       } else {
         out.type = *t;

@@ -32,10 +32,6 @@ using schema::Section;
 
 /// The largest whole parameter, 2^53: a double holds every whole number up to it.
 constexpr double kMaxWhole = 9007199254740992.0;
-const std::vector<std::string> kScriptsKeys = {"globals"};
-const std::vector<std::string> kScriptFileKeys = {"file", "function"};
-const std::vector<std::string> kLaws = {"uniform", "normal", "exponential"};
-const std::vector<std::string> kSlotKinds = {"control", "node", "sensor"};
 
 /// True when `value` lies in the schema's range for key `name` of `section`.
 bool inRange(Section section, const std::string& name, double value) {
@@ -103,7 +99,7 @@ class ModelReader {
         model.io = detail::readIo(e.value, r_);
       } else if (e.key == "scripts") {
         if (!r_.expectMap(e.value, "scripts")) continue;
-        for (const auto& g : r_.entries(e.value, "scripts", kScriptsKeys)) {
+        for (const auto& g : r_.entries(e.value, "scripts", keyNames(Section::Scripts))) {
           model.net.globals = readScript(g, "globals");
         }
       }
@@ -130,7 +126,7 @@ class ModelReader {
     net::ScriptSpec script;
     script.loc = r_.loc(e.value, e.loc);
     if (e.value.IsMap()) {
-      for (const auto& k : r_.entries(e.value, what, kScriptFileKeys)) {
+      for (const auto& k : r_.entries(e.value, what, keyNames(Section::ScriptFile))) {
         if (auto v = r_.string(k.value, k.key)) (k.key == "file" ? script.file : script.function) = *v;
       }
       if (script.file.empty()) r_.error(e.loc, what + " in a file needs 'file'");
@@ -177,7 +173,9 @@ class ModelReader {
   /// Per-slot scripts: a script (for slot a0, or for `default_slot`) or a map slot -> script.
   template <class F>
   void perSlotScript(const Entry& e, const std::string& what, net::SlotId default_slot, F&& f) {
-    const bool file_form = e.value.IsMap() && (e.value["file"] || e.value["function"]);
+    const auto& file_keys = keyNames(Section::ScriptFile);
+    const bool file_form = e.value.IsMap() && std::any_of(file_keys.begin(), file_keys.end(),
+                                                          [&](const std::string& k) { return bool(e.value[k]); });
     if (!e.value.IsMap() || file_form) {
       f(default_slot, readScript(e, what));
       return;
@@ -469,8 +467,9 @@ class ModelReader {
           if (!s) return;
           auto kind = net::parseSlotKind(*s);
           if (!kind) {
-            r_.error(v, "unknown slot kind '" + *s + "'" + core::didYouMean(*s, kSlotKinds) +
-                            "; expected control, node or sensor");
+            const auto& slots = schema::key(Section::Place, "slots");
+            r_.error(v, "unknown slot kind '" + *s + "'" + core::didYouMean(*s, slots.choices) + "; expected " +
+                            schema::choiceList(slots));
             return;
           }
           p.kinds.push_back({slot, *kind, loc});
@@ -529,7 +528,7 @@ class ModelReader {
       }
       return d;
     }
-    auto laws = r_.entries(e.value, "duration", kLaws);
+    auto laws = r_.entries(e.value, "duration", keyNames(Section::Duration));
     if (laws.size() != 1) {
       r_.error(e.loc, "duration expects a number of seconds or one law: {uniform: [lo, hi]}, "
                       "{normal: [mean, sd]} or {exponential: mean}");
@@ -637,11 +636,12 @@ class ModelReader {
       } else if (e.key == "kind") {
         auto s = r_.string(e.value, "kind");
         if (!s) continue;
+        const auto& kinds = schema::key(Section::Arc, "kind");
         if (*s == "normal") a.kind = net::ArcKind::Normal;
         else if (*s == "test") a.kind = net::ArcKind::Test;
         else if (*s == "inhibitor") a.kind = net::ArcKind::Inhibitor;
-        else r_.error(e.value, "unknown arc kind '" + *s + "'" + core::didYouMean(*s, schema::key(Section::Arc, "kind").choices) +
-                                   "; expected normal, test or inhibitor");
+        else r_.error(e.value, "unknown arc kind '" + *s + "'" + core::didYouMean(*s, kinds.choices) + "; expected " +
+                                   schema::choiceList(kinds));
       } else if (e.key == "weight") {
         perSlot(e, "weight", [&](net::SlotId slot, const YAML::Node& v, const SourceLoc& loc) {
           std::string param;

@@ -10,6 +10,7 @@
 #include "gdpn/core/text.h"
 #include "gdpn/net/net.h"
 #include "gdpn/net/script_kind.h"
+#include "gdpn/net/slot.h"
 #include "gdpn/net/spec.h"
 
 namespace gdpn::model::schema {
@@ -156,7 +157,8 @@ std::vector<KeyDesc> ioEntryKeys() {
          {InputRegisters, HoldingRegisters}),
       io(k("unit", ValueType::Text, "", "for people, the word's unit after scaling"),
          {InputRegisters, HoldingRegisters}),
-      io(word("type", {"int16", "uint16", "int32", "uint32", "float32"},
+      io(word("type", {ioTypeName(IoType::Int16), ioTypeName(IoType::Uint16), ioTypeName(IoType::Int32),
+                       ioTypeName(IoType::Uint32), ioTypeName(IoType::Float32)},
               "how the number is put into words (32 bits: two, the high word first)"),
          {InputRegisters, HoldingRegisters}),
   };
@@ -183,9 +185,14 @@ std::vector<KeyDesc> pageKeys(bool type) {
 std::vector<KeyDesc> placeKeys() {
   using net::ScriptKind;
   const std::string slot_script = "script, or map slot → script";
+  // `slots` maps slot names to the words of net::SlotKind
+  KeyDesc slots = k("slots", ValueType::Map, "", "declares slot kinds explicitly");
+  slots.choices = {net::slotKindName(net::SlotKind::Control), net::slotKindName(net::SlotKind::Node),
+                   net::slotKindName(net::SlotKind::Sensor)};
+  slots.form = "map slot → " + choiceList(slots, "`");
   return {
       k("description", ValueType::Text, "", "free text"),
-      form(k("slots", ValueType::Map, "", "declares slot kinds explicitly"), "map slot → `control`, `node` or `sensor`"),
+      slots,
       range(form(k("tokens", ValueType::Integer, "0",
                    "initial marking. An integer is a count on `a0`; a list of node paths (`[box1, line/box2]`) puts "
                    "node tokens on `a0`; a map names slots: `{a0: 2, d0: [box1, box2]}`"),
@@ -239,7 +246,9 @@ std::vector<KeyDesc> arcKeys() {
   return {
       k("from", ValueType::Name, "", "one end is a transition; the other a place or a link `instance/reference`"),
       k("to", ValueType::Name, "", "the other end"),
-      word("kind", {"normal", "test", "inhibitor"}, "input arcs only"),
+      word("kind", {net::arcKindName(net::ArcKind::Normal), net::arcKindName(net::ArcKind::Test),
+                    net::arcKindName(net::ArcKind::Inhibitor)},
+           "input arcs only"),
       range(form(k("weight", ValueType::Integer, "1", "tokens per slot; an integer means `a0`"),
                  "integer or map slot → integer"),
             1, static_cast<double>(net::kMaxWeight)),
@@ -263,6 +272,26 @@ std::vector<KeyDesc> instanceKeys() {
   };
 }
 
+std::vector<KeyDesc> scriptsKeys() {
+  return {script(net::ScriptKind::Globals, "script", "Python run once at load; every script sees its names")};
+}
+
+std::vector<KeyDesc> scriptFileKeys() {
+  return {
+      form(k("file", ValueType::Name, "", "the `.py` file, relative to the model; it runs once, in the model's namespace"),
+           "path"),
+      k("function", ValueType::Name, "", "the function called (not for `globals`)"),
+  };
+}
+
+std::vector<KeyDesc> durationKeys() {
+  return {
+      unit(form(k("uniform", ValueType::Vector, "", "drawn evenly from lo up to hi"), "`[lo, hi]`"), "s"),
+      unit(form(k("normal", ValueType::Vector, "", "drawn from a normal law, redrawn below 0"), "`[mean, sd]`"), "s"),
+      unit(form(k("exponential", ValueType::Number, "", "drawn from an exponential law of this mean"), "mean"), "s"),
+  };
+}
+
 std::vector<KeyDesc> build(Section section) {
   switch (section) {
     case Section::Model: return modelKeys();
@@ -277,6 +306,9 @@ std::vector<KeyDesc> build(Section section) {
     case Section::Transition: return transitionKeys();
     case Section::Arc: return arcKeys();
     case Section::Instance: return instanceKeys();
+    case Section::Scripts: return scriptsKeys();
+    case Section::ScriptFile: return scriptFileKeys();
+    case Section::Duration: return durationKeys();
   }
   return {};
 }
@@ -377,6 +409,15 @@ std::string rangeText(const KeyDesc& key) {
   return {};
 }
 
+std::string choiceList(const KeyDesc& key, std::string_view quote, std::string_view last) {
+  std::string out;
+  for (std::size_t i = 0; i < key.choices.size(); ++i) {
+    out += std::string(i == 0 ? "" : i + 1 == key.choices.size() ? last : ", ") + std::string(quote) + key.choices[i] +
+           std::string(quote);
+  }
+  return out;
+}
+
 std::string_view sectionName(Section section) {
   switch (section) {
     case Section::Model: return "model";
@@ -391,6 +432,9 @@ std::string_view sectionName(Section section) {
     case Section::Transition: return "transition";
     case Section::Arc: return "arc";
     case Section::Instance: return "instance";
+    case Section::Scripts: return "scripts";
+    case Section::ScriptFile: return "script_file";
+    case Section::Duration: return "duration";
   }
   return "?";
 }
@@ -399,12 +443,7 @@ std::string schemaMarkdown(Section section) {
   std::string out = "| key | type | unit | default | meaning |\n| --- | --- | --- | --- | --- |\n";
   for (const auto& d : keys(section)) {
     std::string type = d.form.empty() ? std::string(valueTypeName(d.type)) : d.form;
-    if (d.type == ValueType::Word && d.form.empty()) {
-      type.clear();
-      for (std::size_t i = 0; i < d.choices.size(); ++i) {
-        type += (i == 0 ? "" : i + 1 == d.choices.size() ? " or " : ", ") + ("`" + d.choices[i] + "`");
-      }
-    }
+    if (d.type == ValueType::Word && d.form.empty()) type = choiceList(d, "`");
     if (const std::string r = rangeText(d); !r.empty()) type += ", " + r;
     if (d.tables != 0 && section == Section::IoEntry) {
       // which tables take the key

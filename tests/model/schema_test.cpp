@@ -55,6 +55,14 @@ TEST(Schema, RangesAndDefaultsAreKnown) {
   EXPECT_EQ(key(Section::Arc, "kind").initial, "normal");
 }
 
+TEST(Schema, WordsComeFromTheirEnumsNames) {
+  EXPECT_EQ(key(Section::Arc, "kind").choices, (std::vector<std::string>{"normal", "test", "inhibitor"}));
+  EXPECT_EQ(choiceList(key(Section::Arc, "kind")), "normal, test or inhibitor");
+  EXPECT_EQ(choiceList(key(Section::IoEntry, "type"), "", ", "), "int16, uint16, int32, uint32, float32");
+  EXPECT_EQ(key(Section::Place, "slots").form, "map slot → `control`, `node` or `sensor`");
+  EXPECT_EQ(choiceList(key(Section::Settings, "ties"), "'"), "'order' or 'random'");
+}
+
 TEST(Schema, ScriptKeysAreTheScriptTables) {
   // each owner's scripts stand in its section, in the script table's order
   const std::pair<net::ScriptOwner, Section> owners[] = {{net::ScriptOwner::PlaceSlot, Section::Place},
@@ -116,6 +124,9 @@ std::vector<Context> contexts() {
       {Section::Transition, "pages: {main: {transitions: {t: {", ": 1}}}}", "transition"},
       {Section::Arc, "pages: {main: {arcs: [{", ": 1}]}}", "arc"},
       {Section::Instance, "pages: {main: {instances: {i: {", ": 1}}}}", "instance"},
+      {Section::Scripts, "scripts: {", ": 1}", "scripts"},
+      {Section::ScriptFile, "scripts: {globals: {", ": 1}}", "globals"},
+      {Section::Duration, "pages: {main: {transitions: {t: {duration: {", ": 1}}}}}", "duration"},
   };
 }
 
@@ -170,7 +181,15 @@ TEST(SchemaLoad, RangesComeFromTheSchemaWithTheirLocations) {
   EXPECT_NE(diagnose("gdpn: 1\nsettings: {ties: randum}\n").find("m.gdpn.yaml:2:18: error: ties are 'order'"),
             std::string::npos);
   EXPECT_NE(diagnose("gdpn: 1\npages: {main: {arcs: [{from: p, to: t, kind: tset}]}}\n")
-                .find("m.gdpn.yaml:2:46: error: unknown arc kind 'tset' (did you mean 'test'?)"),
+                .find("m.gdpn.yaml:2:46: error: unknown arc kind 'tset' (did you mean 'test'?); expected normal, test "
+                      "or inhibitor"),
+            std::string::npos);
+  EXPECT_NE(diagnose("gdpn: 1\npages: {main: {places: {p: {slots: {a1: sensr}}}}}\n")
+                .find("m.gdpn.yaml:2:41: error: unknown slot kind 'sensr' (did you mean 'sensor'?); expected control, "
+                      "node or sensor"),
+            std::string::npos);
+  EXPECT_NE(diagnose("gdpn: 1\nio: {input_registers: {0: {node: n, of: reading, type: int8}}}\n")
+                .find("m.gdpn.yaml:2:56: error: 'type' is one of int16, uint16, int32, uint32, float32, got 'int8'"),
             std::string::npos);
 }
 
@@ -223,9 +242,11 @@ pages:
         servers: 3
         guard: "True"
         pre_fire: "x = 7"
-        in_fire: "x = 8"
+        in_fire: {file: station.py, function: follow}
         post_fire: "x = 9"
         at: [3, 4]
+      t2: {duration: {normal: [1, 0.1]}}
+      t3: {duration: {exponential: 2}}
     instances:
       i: {type: cell, at: [5, 6], translation: [1, 2, 3], rotation: [0, 0, 1, 90]}
     arcs:
@@ -254,7 +275,7 @@ scripts:
 std::map<Section, std::vector<std::vector<std::string>>> keysBySection(const std::string& text) {
   std::map<Section, std::vector<std::vector<std::string>>> out;
   const auto add = [&](Section s, const YAML::Node& map) {
-    if (!map.IsMap()) return;
+    if (!map || !map.IsMap()) return;
     auto& keys = out[s].emplace_back();
     for (auto it = map.begin(); it != map.end(); ++it) keys.push_back(it->first.Scalar());
   };
@@ -264,6 +285,7 @@ std::map<Section, std::vector<std::vector<std::string>>> keysBySection(const std
   for (auto it = root["params"].begin(); it != root["params"].end(); ++it) add(Section::Param, it->second);
   for (auto it = root["signals"].begin(); it != root["signals"].end(); ++it) add(Section::Signal, it->second);
   add(Section::Io, root["io"]);
+  add(Section::Scripts, root["scripts"]);
   for (unsigned t = 0; t < 4; ++t) {
     const YAML::Node table = root["io"][ioTableKey(static_cast<IoTable>(t))];
     for (auto it = table.begin(); it != table.end(); ++it) add(Section::IoEntry, it->second);
@@ -273,7 +295,14 @@ std::map<Section, std::vector<std::vector<std::string>>> keysBySection(const std
       const YAML::Node page = it->second;
       add(section, page);
       for (auto p = page["places"].begin(); p != page["places"].end(); ++p) add(Section::Place, p->second);
-      for (auto t = page["transitions"].begin(); t != page["transitions"].end(); ++t) add(Section::Transition, t->second);
+      for (auto t = page["transitions"].begin(); t != page["transitions"].end(); ++t) {
+        const YAML::Node transition = t->second;
+        add(Section::Transition, transition);
+        add(Section::Duration, transition["duration"]);
+        for (auto s = transition.begin(); s != transition.end(); ++s) {
+          if (s->second.IsMap() && s->second["file"]) add(Section::ScriptFile, s->second);
+        }
+      }
       for (auto i = page["instances"].begin(); i != page["instances"].end(); ++i) add(Section::Instance, i->second);
       for (const auto& a : page["arcs"]) add(Section::Arc, a);
     }

@@ -1,11 +1,16 @@
 #pragma once
 /// \file
 /// The schema of the model file: every key of the top level, `settings`, `params`, `signals`,
-/// `io`, pages, page types, places, transitions, arcs and instances, described once (name,
+/// `io`, pages, page types, places, transitions, arcs, instances, `scripts`, scripts in files
+/// and duration laws, described once (name,
 /// type, default, range, unit, help), as builtin_nodes.cpp describes the scene's fields. The
 /// loader takes its lists of allowed keys and its ranges from here, the writer its defaults
 /// and its key order (a test checks the order), the IDE's contents view its help, and
 /// docs/format.md its key tables (schemaMarkdown; a test fails when the docs lag).
+///
+/// A new key: describe it here (src/model/schema.cpp), read it in load.cpp, write it in
+/// save.cpp, and set it in tests/model/schema_test.cpp's model of every key; the tests then
+/// say what lags (the docs' table: GDPN_UPDATE_GOLDEN=1 model_test rewrites it).
 
 #include <cstdint>
 #include <limits>
@@ -31,12 +36,16 @@ enum class Section : std::uint8_t {
   Transition,  ///< a transition of a page's `transitions`
   Arc,         ///< an arc of a page's `arcs`, written as a map
   Instance,    ///< an instance of a page's `instances`, written as a map
+  Scripts,     ///< `scripts`
+  ScriptFile,  ///< a script written as a function in a file
+  Duration,    ///< a transition's `duration` written as a law (one key)
 };
 
 /// Every section, in the order of the enum.
 inline constexpr Section kSections[] = {Section::Model,   Section::Settings, Section::Param,      Section::Signal,
                                         Section::Io,      Section::IoEntry,  Section::Page,       Section::PageType,
-                                        Section::Place,   Section::Transition, Section::Arc,      Section::Instance};
+                                        Section::Place,   Section::Transition, Section::Arc,      Section::Instance,
+                                        Section::Scripts, Section::ScriptFile, Section::Duration};
 
 /// What a key's value is.
 enum class ValueType : std::uint8_t {
@@ -68,7 +77,8 @@ struct KeyDesc {
   bool max_open = false;           ///< `max` itself is refused
   std::string unit;                ///< "s", "Hz", "" when none
   std::string help;                ///< one line or a few for the docs and the IDE
-  std::vector<std::string> choices;  ///< the words a Word takes, the default first
+  /// the words a Word takes, the default first (a Map's: the words its values take)
+  std::vector<std::string> choices;
   /// IoEntry keys: the tables (bit 1 << IoTable) whose entries take the key; 0 elsewhere
   std::uint8_t tables = 0;
 };
@@ -87,6 +97,9 @@ double defaultNumber(Section section, std::string_view name);
 bool inRange(const KeyDesc& key, double value);
 /// The range of `key` as the docs write it ("> 0", "in (0, 1]"); empty when unbounded.
 std::string rangeText(const KeyDesc& key);
+/// The words `key` takes, each between `quote`s, as a sentence lists them: "a, b or c" (the
+/// last joined by `last`).
+std::string choiceList(const KeyDesc& key, std::string_view quote = {}, std::string_view last = " or ");
 /// The section's name as docs/format.md's markers write it (`places`, `io_entry`).
 std::string_view sectionName(Section section);
 /// The Markdown table of the keys of `section`, one line per row, each ending in '\n':
