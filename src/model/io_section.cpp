@@ -208,35 +208,53 @@ void writeIo(YAML::Emitter& out, const IoSpec& io) {
   const double off_default = schema::defaultNumber(Section::IoEntry, "off");
   const double scale_default = schema::defaultNumber(Section::IoEntry, "scale");
   const std::string& type_default = schema::key(Section::IoEntry, "type").initial;
-  out << YAML::BeginMap;
-  if (io.lockstep) out << YAML::Key << "lockstep" << YAML::Value << *io.lockstep;
-  for (IoTable t : kTables) {
-    std::vector<const IoEntry*> of;
-    for (const auto& e : io.entries) {
-      if (e.table == t) of.push_back(&e);
-    }
-    if (of.empty()) continue;
-    std::stable_sort(of.begin(), of.end(), [](const IoEntry* a, const IoEntry* b) { return a->address < b->address; });
-    out << YAML::Key << ioTableKey(t) << YAML::Value << YAML::BeginMap;
-    for (const IoEntry* e : of) {
-      out << YAML::Key << e->address << YAML::Value << YAML::Flow << YAML::BeginMap;
-      out << YAML::Key << (e->source == IoEntry::Source::Place ? "place" : "node") << YAML::Value << e->target;
-      if (!e->quantity.empty()) out << YAML::Key << "of" << YAML::Value << e->quantity;
-      if (!e->key.empty()) out << YAML::Key << "key" << YAML::Value << e->key;
-      if (!e->field.empty()) out << YAML::Key << "field" << YAML::Value << e->field;
-      if (t == IoTable::Coils && e->source == IoEntry::Source::Node) {
-        if (e->on != on_default) out << YAML::Key << "on" << YAML::Value << core::formatDouble(e->on);
-        if (e->off != off_default) out << YAML::Key << "off" << YAML::Value << core::formatDouble(e->off);
-      }
-      if (isRegister(t)) {
-        if (e->scale != scale_default) out << YAML::Key << "scale" << YAML::Value << core::formatDouble(e->scale);
-        if (!e->unit.empty()) out << YAML::Key << "unit" << YAML::Value << e->unit;
-        if (ioTypeName(e->type) != type_default) out << YAML::Key << "type" << YAML::Value << ioTypeName(e->type);
-      }
-      out << YAML::EndMap;
-    }
+  const auto entry = [&](IoTable t, const IoEntry& e) {
+    out << YAML::Key << e.address << YAML::Value << YAML::Flow << YAML::BeginMap;
+    const bool place = e.source == IoEntry::Source::Place;
+    const bool coil = t == IoTable::Coils && !place;  // a coil on a node's number field
+    const bool word = isRegister(t);
+    schema::inSchemaOrder(
+        Section::IoEntry,
+        {
+            {"place", [&] { if (place) out << YAML::Key << "place" << YAML::Value << e.target; }},
+            {"node", [&] { if (!place) out << YAML::Key << "node" << YAML::Value << e.target; }},
+            {"of", [&] { if (!e.quantity.empty()) out << YAML::Key << "of" << YAML::Value << e.quantity; }},
+            {"key", [&] { if (!e.key.empty()) out << YAML::Key << "key" << YAML::Value << e.key; }},
+            {"field", [&] { if (!e.field.empty()) out << YAML::Key << "field" << YAML::Value << e.field; }},
+            {"on", [&] { if (coil && e.on != on_default) out << YAML::Key << "on" << YAML::Value << core::formatDouble(e.on); }},
+            {"off",
+             [&] { if (coil && e.off != off_default) out << YAML::Key << "off" << YAML::Value << core::formatDouble(e.off); }},
+            {"scale",
+             [&] {
+               if (word && e.scale != scale_default) out << YAML::Key << "scale" << YAML::Value << core::formatDouble(e.scale);
+             }},
+            {"unit", [&] { if (word && !e.unit.empty()) out << YAML::Key << "unit" << YAML::Value << e.unit; }},
+            {"type",
+             [&] {
+               if (word && ioTypeName(e.type) != type_default) out << YAML::Key << "type" << YAML::Value << ioTypeName(e.type);
+             }},
+        });
     out << YAML::EndMap;
+  };
+  out << YAML::BeginMap;
+  std::vector<schema::KeyWriter> keys = {
+      {"lockstep", [&] { if (io.lockstep) out << YAML::Key << "lockstep" << YAML::Value << *io.lockstep; }},
+  };
+  for (IoTable t : kTables) {
+    keys.push_back({ioTableKey(t), [&, t] {
+                      std::vector<const IoEntry*> of;
+                      for (const auto& e : io.entries) {
+                        if (e.table == t) of.push_back(&e);
+                      }
+                      if (of.empty()) return;
+                      std::stable_sort(of.begin(), of.end(),
+                                       [](const IoEntry* a, const IoEntry* b) { return a->address < b->address; });
+                      out << YAML::Key << ioTableKey(t) << YAML::Value << YAML::BeginMap;
+                      for (const IoEntry* e : of) entry(t, *e);
+                      out << YAML::EndMap;
+                    }});
   }
+  schema::inSchemaOrder(Section::Io, keys);
   out << YAML::EndMap;
 }
 

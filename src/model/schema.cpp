@@ -3,6 +3,7 @@
 
 #include "gdpn/model/schema.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -375,6 +376,21 @@ std::vector<std::string> ioEntryKeyNames(IoTable table) {
     if ((d.tables >> static_cast<unsigned>(table)) & 1U) names.push_back(d.name);
   }
   return names;
+}
+
+void inSchemaOrder(Section section, const std::vector<KeyWriter>& writers) {
+  const auto& names = keyNames(section);
+  std::vector<const KeyWriter*> by_key(names.size(), nullptr);
+  for (const auto& w : writers) {
+    const auto it = std::find(names.begin(), names.end(), w.key);
+    GDPN_ASSERT(it != names.end(), "a writer writes only keys the schema describes");
+    auto& slot = by_key[static_cast<std::size_t>(it - names.begin())];
+    GDPN_ASSERT(slot == nullptr, "one writer per key");
+    slot = &w;
+  }
+  for (const KeyWriter* w : by_key) {
+    if (w != nullptr) w->write();
+  }
 }
 
 const KeyDesc& key(Section section, std::string_view name) {

@@ -13,6 +13,7 @@
 /// say what lags (the docs' table: GDPN_UPDATE_GOLDEN=1 model_test rewrites it).
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -82,6 +83,16 @@ struct KeyDesc {
   /// IoEntry keys: the tables (bit 1 << IoTable) whose entries take the key; 0 elsewhere
   std::uint8_t tables = 0;
 };
+
+/// What writes one key of a map (nothing, when its value is the default).
+struct KeyWriter {
+  std::string_view key;         ///< the key it writes
+  std::function<void()> write;  ///< writes it
+};
+/// Runs `writers` in the order the schema lists the keys of `section`: the writer's key order
+/// is the schema's. A writer for a key the schema lacks, or two for one key, is a programmer
+/// error (asserted).
+void inSchemaOrder(Section section, const std::vector<KeyWriter>& writers);
 
 /// The keys of `section`, in the order the writer writes them (the canonical order).
 const std::vector<KeyDesc>& keys(Section section);
