@@ -63,6 +63,13 @@ TEST(Schema, WordsComeFromTheirEnumsNames) {
   EXPECT_EQ(choiceList(key(Section::Settings, "ties"), "'"), "'order' or 'random'");
 }
 
+TEST(Schema, WritersRunInTheSchemasOrderWhateverTheirOwn) {
+  std::string written;
+  const auto w = [&](std::string_view k) { return KeyWriter{k, [&written, k] { written += std::string(k) + " "; }}; };
+  inSchemaOrder(Section::Arc, {w("condition"), w("weight"), w("from"), w("to")});
+  EXPECT_EQ(written, "from to weight condition ");
+}
+
 TEST(Schema, ScriptKeysAreTheScriptTables) {
   // each owner's scripts stand in its section, in the script table's order
   const std::pair<net::ScriptOwner, Section> owners[] = {{net::ScriptOwner::PlaceSlot, Section::Place},
