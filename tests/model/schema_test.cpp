@@ -175,6 +175,40 @@ TEST(SchemaLoad, EveryKeyIsAcceptedWhereItBelongs) {
   }
 }
 
+TEST(SchemaLoad, AValueOfTheWrongTypeIsRefusedWhereItStands) {
+  // a map where a key of one plain type (a number, text, a word) is due
+  const auto plain = [](const KeyDesc& d) {
+    return d.form.empty() && (d.type == ValueType::Integer || d.type == ValueType::Number || d.type == ValueType::Text ||
+                              d.type == ValueType::Name || d.type == ValueType::Word);
+  };
+  const auto check = [](const std::string& before, const std::string& key, const std::string& after) {
+    const std::string all = diagnose("gdpn: 1\n" + before + key + ": {a: 1}" + after.substr(3) + "\n");
+    const std::string at = "m.gdpn.yaml:2:" + std::to_string(before.size() + key.size() + 3) + ": error: ";
+    const auto found = all.find(at);
+    ASSERT_NE(found, std::string::npos) << key << ": " << at << "\n" << all;
+    EXPECT_NE(all.find("expects", found), std::string::npos) << key << "\n" << all;
+  };
+  int checked = 0;
+  for (const auto& c : contexts()) {
+    for (const auto& d : keys(c.section)) {
+      if (!plain(d) || (c.section == Section::Model && d.name == "gdpn")) continue;  // the first line's, below
+      check(c.before, d.name, c.after);
+      ++checked;
+    }
+  }
+  for (unsigned t = 0; t < 4; ++t) {
+    const auto table = static_cast<IoTable>(t);
+    for (const auto& d : keys(Section::IoEntry)) {
+      if (!plain(d) || ((d.tables >> t) & 1U) == 0) continue;
+      check("io: {" + std::string(ioTableKey(table)) + ": {0: {", d.name, ": 1}}}");
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 40);
+  EXPECT_NE(diagnose("gdpn: {a: 1}\n").find("m.gdpn.yaml:1:7: error: 'gdpn' expects a whole number, got a map"),
+            std::string::npos);
+}
+
 TEST(SchemaLoad, RangesComeFromTheSchemaWithTheirLocations) {
   EXPECT_NE(diagnose("gdpn: 1\nsettings: {dt: 0}\n").find("m.gdpn.yaml:2:16: error: dt must be a positive number of seconds"),
             std::string::npos);
