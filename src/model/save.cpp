@@ -2,6 +2,8 @@
 
 #include "yaml.h"
 
+#include <algorithm>
+
 #include "gdpn/core/output_file.h"
 #include "gdpn/core/text.h"
 #include "gdpn/model/model.h"
@@ -221,9 +223,10 @@ void writeArc(YAML::Emitter& out, const net::ArcSpec& a) {
 
 void writeInstance(YAML::Emitter& out, const net::InstanceSpec& i) {
   out << YAML::Key << i.name << YAML::Value << YAML::Flow << YAML::BeginMap;
-  // a list of numbers, when it is not `initial`
-  const auto numbers = [&](const char* key, const auto& values, const auto& initial) {
-    if (values == initial) return;
+  // a list of numbers, when it is not the schema's default
+  const auto numbers = [&](const char* key, const auto& values) {
+    const std::vector<double> initial = schema::defaultNumbers(Section::Instance, key);
+    if (std::equal(values.begin(), values.end(), initial.begin(), initial.end())) return;
     out << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginSeq;
     for (double x : values) out << formatDouble(x);
     out << YAML::EndSeq;
@@ -232,8 +235,8 @@ void writeInstance(YAML::Emitter& out, const net::InstanceSpec& i) {
                         {
                             {"type", [&] { out << YAML::Key << "type" << YAML::Value << i.type; }},
                             {"at", [&] { pos(out, i.position); }},
-                            {"translation", [&] { numbers("translation", i.translation, std::array<double, 3>{0, 0, 0}); }},
-                            {"rotation", [&] { numbers("rotation", i.rotation, std::array<double, 4>{0, 0, 1, 0}); }},
+                            {"translation", [&] { numbers("translation", i.translation); }},
+                            {"rotation", [&] { numbers("rotation", i.rotation); }},
                         });
   out << YAML::EndMap;
 }

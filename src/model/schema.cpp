@@ -407,6 +407,23 @@ double defaultNumber(Section section, std::string_view name) {
   return *value;
 }
 
+std::vector<double> defaultNumbers(Section section, std::string_view name) {
+  const std::string& text = key(section, name).initial;
+  GDPN_ASSERT(text.size() >= 2 && text.front() == '[' && text.back() == ']', "a list key's default is a list");
+  std::vector<double> out;
+  std::string_view rest = std::string_view(text).substr(1, text.size() - 2);
+  while (!rest.empty()) {
+    const auto comma = rest.find(',');
+    std::string_view item = rest.substr(0, comma);
+    while (!item.empty() && item.front() == ' ') item.remove_prefix(1);
+    const auto value = core::parseNumber(item);
+    GDPN_ASSERT(value.has_value(), "a list key's default is a list of numbers");
+    out.push_back(*value);
+    rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 1);
+  }
+  return out;
+}
+
 bool inRange(const KeyDesc& key, double value) {
   if (!std::isfinite(value)) return false;
   const bool above = key.min_open ? value > key.min : value >= key.min;

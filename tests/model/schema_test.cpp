@@ -53,6 +53,8 @@ TEST(Schema, RangesAndDefaultsAreKnown) {
   EXPECT_EQ(defaultNumber(Section::Transition, "servers"), 1.0);
   EXPECT_EQ(defaultNumber(Section::IoEntry, "scale"), 1.0);
   EXPECT_EQ(key(Section::Arc, "kind").initial, "normal");
+  EXPECT_EQ(defaultNumbers(Section::Instance, "rotation"), (std::vector<double>{0, 0, 1, 0}));
+  EXPECT_EQ(defaultNumbers(Section::Instance, "translation"), (std::vector<double>{0, 0, 0}));
 }
 
 TEST(Schema, WordsComeFromTheirEnumsNames) {
@@ -396,16 +398,20 @@ pages:
       p: {tokens: 1}
     transitions:
       t: {priority: 0, probability: 1, servers: 1}
+    instances:
+      i: {type: cell, translation: [0, 0, 0], rotation: [0, 0, 1, 0]}
     arcs:
       - {from: p, to: t, kind: normal}
 )",
                       "defaults.gdpn.yaml", diags);
   ASSERT_TRUE(m) << diags.str();
   const std::string text = writeModel(*m);
-  for (const char* k : {"on:", "off:", "scale:", "type:", "priority:", "probability:", "servers:", "kind:"}) {
+  for (const char* k : {"on:", "off:", "scale:", "type: int", "priority:", "probability:", "servers:", "kind:",
+                        "translation:", "rotation:"}) {
     EXPECT_EQ(text.find(k), std::string::npos) << k << "\n" << text;
   }
   EXPECT_NE(text.find("t: {}"), std::string::npos) << text;
+  EXPECT_NE(text.find("i: {type: cell}"), std::string::npos) << text;
 }
 
 }  // namespace

@@ -104,6 +104,8 @@ std::vector<std::string> ioEntryKeyNames(IoTable table);
 const KeyDesc& key(Section section, std::string_view name);
 /// The default of numeric key `name` of `section` (asserted to be a number).
 double defaultNumber(Section section, std::string_view name);
+/// The default of list key `name` of `section`, "[a, b, c]" (asserted to be a list of numbers).
+std::vector<double> defaultNumbers(Section section, std::string_view name);
 /// True when `value` lies in the range of `key` (a NaN never does).
 bool inRange(const KeyDesc& key, double value);
 /// The range of `key` as the docs write it ("> 0", "in (0, 1]"); empty when unbounded.
