@@ -26,6 +26,9 @@
 namespace gdpn::ide {
 namespace {
 
+namespace schema = model::schema;
+using schema::Section;
+
 /// The slot grid's colours: the net view's (diagram::colours), dimmed when the slot is empty.
 ImVec4 slotColour(net::SlotKind kind, bool marked) {
   const float a = marked ? 1.0f : 0.35f;
@@ -53,13 +56,12 @@ std::string durationText(const net::Duration& d) {
   return "?";
 }
 
-/// Notes the last item, the field of key `name` of `section`, under the key's name (as
-/// noteItem does) and, while it is hovered, shows the key's help and range from the schema.
-void keyItem(model::schema::Section section, std::string_view name, nlohmann::json& fields) {
-  const auto& key = model::schema::key(section, name);
+/// Notes the last item, the field of `key`, under the key's name (as noteItem does) and, while
+/// it is hovered, shows the key's help and range from the schema.
+void keyItem(const schema::KeyDesc& key, nlohmann::json& fields) {
   noteItem(key.name, fields);
   if (ImGui::IsItemHovered()) {
-    const std::string range = model::schema::rangeText(key);
+    const std::string range = schema::rangeText(key);
     ImGui::SetTooltip("%s%s", key.help.c_str(), range.empty() ? "" : (" (" + range + ")").c_str());
   }
 }
@@ -328,8 +330,9 @@ void slotFields(App& app, const ConstructAt& at, const net::PlaceSpec& place, ne
       int tokens = static_cast<int>(slotCount(place.tokens, slot).value_or(0));
       ImGui::SetNextItemWidth(110);
       const int tokens_before = tokens;
-      ImGui::InputInt("tokens", &tokens, 0, 0);
-      keyItem(model::schema::Section::Place, "tokens", fields);
+      const auto& tokens_key = schema::key(Section::Place, "tokens");
+      ImGui::InputInt(tokens_key.name.c_str(), &tokens, 0, 0);
+      keyItem(tokens_key, fields);
       // a value left as it was keeps the parameter it came from
       if (ImGui::IsItemDeactivatedAfterEdit() && tokens >= 0 && tokens != tokens_before) {
         auto p = place;
@@ -342,8 +345,9 @@ void slotFields(App& app, const ConstructAt& at, const net::PlaceSpec& place, ne
     int capacity = static_cast<int>(slotCount(place.capacity, slot).value_or(-1));
     ImGui::SetNextItemWidth(110);
     const int capacity_before = capacity;
-    ImGui::InputInt("capacity (-1: none)", &capacity, 0, 0);
-    keyItem(model::schema::Section::Place, "capacity", fields);
+    const auto& capacity_key = schema::key(Section::Place, "capacity");
+    ImGui::InputInt((capacity_key.name + " (-1: none)").c_str(), &capacity, 0, 0);
+    keyItem(capacity_key, fields);
     if (ImGui::IsItemDeactivatedAfterEdit() && capacity >= -1 && capacity != capacity_before) {
       auto p = place;
       setSlotCount(p.capacity, slot, capacity >= 0 ? std::optional<std::int64_t>(capacity) : std::nullopt);
@@ -549,7 +553,7 @@ void editTransition(App& app, const ConstructAt& at, const net::TransitionSpec& 
     ImGui::SameLine();
     ImGui::SetNextItemWidth(90);
     ImGui::InputDouble(first, &d.a, 0, 0, "%g");
-    keyItem(model::schema::Section::Transition, "duration", fields);
+    keyItem(schema::key(Section::Transition, "duration"), fields);
     changed = changed || ImGui::IsItemDeactivatedAfterEdit();
     paramNote(t.duration.params[0]);
   }
@@ -563,15 +567,17 @@ void editTransition(App& app, const ConstructAt& at, const net::TransitionSpec& 
   }
   int priority = static_cast<int>(t.priority);
   ImGui::SetNextItemWidth(90);
-  ImGui::InputInt("priority", &priority, 0, 0);
-  keyItem(model::schema::Section::Transition, "priority", fields);
+  const auto& priority_key = schema::key(Section::Transition, "priority");
+  ImGui::InputInt(priority_key.name.c_str(), &priority, 0, 0);
+  keyItem(priority_key, fields);
   const bool priority_changed = ImGui::IsItemDeactivatedAfterEdit();
   paramNote(t.priority_param);
   ImGui::SameLine();
   double probability = t.probability;
   ImGui::SetNextItemWidth(90);
-  ImGui::InputDouble("probability", &probability, 0, 0, "%g");
-  keyItem(model::schema::Section::Transition, "probability", fields);
+  const auto& probability_key = schema::key(Section::Transition, "probability");
+  ImGui::InputDouble(probability_key.name.c_str(), &probability, 0, 0, "%g");
+  keyItem(probability_key, fields);
   const bool probability_changed = ImGui::IsItemDeactivatedAfterEdit();
   paramNote(t.probability_param);
   // servers: how many occurrences at once; "unlimited" greys the number out
@@ -579,9 +585,10 @@ void editTransition(App& app, const ConstructAt& at, const net::TransitionSpec& 
   int servers = unlimited ? 1 : static_cast<int>(t.servers);
   ImGui::BeginDisabled(unlimited);
   ImGui::SetNextItemWidth(90);
-  ImGui::InputInt("servers", &servers, 0, 0);
+  const auto& servers_key = schema::key(Section::Transition, "servers");
+  ImGui::InputInt(servers_key.name.c_str(), &servers, 0, 0);
   ImGui::EndDisabled();
-  keyItem(model::schema::Section::Transition, "servers", fields);
+  keyItem(servers_key, fields);
   bool servers_changed = ImGui::IsItemDeactivatedAfterEdit();
   paramNote(t.servers_param);
   ImGui::SameLine();
