@@ -284,16 +284,20 @@ void writePage(YAML::Emitter& out, const net::PageSpec& page, bool type, const s
 }
 
 void writeSettings(YAML::Emitter& out, const Settings& s) {
-  const bool radians = s.angles == scene::AngleUnit::Radians;
-  if (!s.dt_given && !s.seed_given && !s.until && !radians && !s.random_ties) return;
+  // a word at the schema's default is left out
+  const std::string angles = s.angles == scene::AngleUnit::Radians ? "radians" : "degrees";
+  const std::string ties = s.random_ties ? "random" : "order";
+  const bool angles_given = angles != schema::key(Section::Settings, "angles").initial;
+  const bool ties_given = ties != schema::key(Section::Settings, "ties").initial;
+  if (!s.dt_given && !s.seed_given && !s.until && !angles_given && !ties_given) return;
   out << YAML::Key << "settings" << YAML::Value << YAML::BeginMap;
   schema::inSchemaOrder(Section::Settings,
                         {
                             {"dt", [&] { if (s.dt_given) out << YAML::Key << "dt" << YAML::Value << formatDouble(s.dt); }},
                             {"seed", [&] { if (s.seed_given) out << YAML::Key << "seed" << YAML::Value << s.seed; }},
                             {"until", [&] { if (s.until) out << YAML::Key << "until" << YAML::Value << formatDouble(*s.until); }},
-                            {"angles", [&] { if (radians) out << YAML::Key << "angles" << YAML::Value << "radians"; }},
-                            {"ties", [&] { if (s.random_ties) out << YAML::Key << "ties" << YAML::Value << "random"; }},
+                            {"angles", [&] { if (angles_given) out << YAML::Key << "angles" << YAML::Value << angles; }},
+                            {"ties", [&] { if (ties_given) out << YAML::Key << "ties" << YAML::Value << ties; }},
                         });
   out << YAML::EndMap;
 }

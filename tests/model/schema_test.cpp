@@ -387,6 +387,7 @@ TEST(SchemaRoundTrip, EveryKeyIsWrittenInTheSchemasOrderAndReadBack) {
 TEST(SchemaRoundTrip, KeysAtTheirDefaultsAreLeftOut) {
   core::Diagnostics diags;
   auto m = parseModel(R"(gdpn: 1
+settings: {angles: degrees, ties: order}
 io:
   coils:
     0: {node: belt, field: speed, on: 1, off: 0}
@@ -407,7 +408,7 @@ pages:
   ASSERT_TRUE(m) << diags.str();
   const std::string text = writeModel(*m);
   for (const char* k : {"on:", "off:", "scale:", "type: int", "priority:", "probability:", "servers:", "kind:",
-                        "translation:", "rotation:"}) {
+                        "translation:", "rotation:", "settings:", "angles:", "ties:"}) {
     EXPECT_EQ(text.find(k), std::string::npos) << k << "\n" << text;
   }
   EXPECT_NE(text.find("t: {}"), std::string::npos) << text;
