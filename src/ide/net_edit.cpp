@@ -10,6 +10,7 @@
 
 #include "gdpn/core/text.h"
 #include "gdpn/ide/document.h"
+#include "gdpn/model/schema.h"
 
 namespace gdpn::ide {
 
@@ -273,8 +274,13 @@ std::string edit(net::NetSpec& net, net::PageSpec& p, const NetEdit& e, std::str
       if (!e.transition) return "no transition given";
       const auto& t = *e.transition;
       if (auto why = durationProblem(t.duration); !why.empty()) return why;
-      if (!(t.probability > 0.0 && t.probability <= 1.0)) return "a probability lies in (0, 1]";
-      if (t.servers != net::kUnlimitedServers && !(t.servers >= 1 && t.servers <= net::kMostServers)) {
+      // the model file's ranges (the schema's), with the editor's words
+      using model::schema::Section;
+      if (!model::schema::inRange(model::schema::key(Section::Transition, "probability"), t.probability)) {
+        return "a probability lies in (0, 1]";
+      }
+      if (t.servers != net::kUnlimitedServers &&
+          !model::schema::inRange(model::schema::key(Section::Transition, "servers"), static_cast<double>(t.servers))) {
         return "servers are a whole number from 1 to " + std::to_string(net::kMostServers) + ", or unlimited";
       }
       return replaceNamed(p, p.transitions, e.name, t, "transition");

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "gdpn/core/text.h"
+#include "gdpn/model/schema.h"
 
 namespace gdpn::model {
 
@@ -46,17 +47,6 @@ constexpr IoType kTypes[] = {IoType::Int16, IoType::Uint16, IoType::Int32, IoTyp
 bool isRegister(IoTable t) { return t == IoTable::InputRegisters || t == IoTable::HoldingRegisters; }
 bool isWritten(IoTable t) { return t == IoTable::Coils || t == IoTable::HoldingRegisters; }
 
-/// The keys an entry of `table` may have.
-std::vector<std::string> keysOf(IoTable table) {
-  switch (table) {
-    case IoTable::DiscreteInputs: return {"place", "node", "of", "key"};
-    case IoTable::InputRegisters: return {"place", "node", "of", "scale", "unit", "type"};
-    case IoTable::Coils: return {"place", "node", "field", "on", "off"};
-    case IoTable::HoldingRegisters: return {"place", "node", "field", "scale", "unit", "type"};
-  }
-  return {};
-}
-
 /// An address: a whole number from 0 to 65535.
 std::optional<std::uint16_t> address(YamlReader& r, const std::string& text, const core::SourceLoc& at,
                                      const std::string& what) {
@@ -77,7 +67,7 @@ std::optional<IoEntry> readEntry(YamlReader& r, IoTable table, std::uint16_t add
   if (!r.expectMap(e.value, name)) return std::nullopt;
   int sources = 0;
   bool ok = true;
-  for (const auto& k : r.entries(e.value, name, keysOf(table))) {
+  for (const auto& k : r.entries(e.value, name, schema::ioEntryKeyNames(table))) {
     if (k.key == "scale" || k.key == "on" || k.key == "off") {
       const auto v = r.number(k.value, k.key);
       if (!v) {
@@ -111,7 +101,8 @@ std::optional<IoEntry> readEntry(YamlReader& r, IoTable table, std::uint16_t add
     } else if (k.key == "type") {
       const auto* t = std::find_if(std::begin(kTypes), std::end(kTypes), [&](IoType x) { return *text == ioTypeName(x); });
       if (t == std::end(kTypes)) {
-        r.error(r.loc(k.value, k.loc), "'type' is one of int16, uint16, int32, uint32, float32, got '" + *text + "'");
+        const auto& types = schema::key(schema::Section::IoEntry, "type");
+        r.error(r.loc(k.value, k.loc), "'type' is one of " + schema::choiceList(types, "", ", ") + ", got '" + *text + "'");
         ok = false;
       } else {
         out.type = *t;
@@ -150,9 +141,7 @@ std::optional<IoEntry> readEntry(YamlReader& r, IoTable table, std::uint16_t add
 IoSpec readIo(const YAML::Node& section, YamlReader& r) {
   IoSpec io;
   if (section.IsNull() || !r.expectMap(section, "io")) return io;
-  std::vector<std::string> keys = {"lockstep"};
-  for (IoTable t : kTables) keys.emplace_back(ioTableKey(t));
-  for (const auto& e : r.entries(section, "io", keys)) {
+  for (const auto& e : r.entries(section, "io", schema::keyNames(schema::Section::Io))) {
     if (e.key == "lockstep") {
       const auto text = r.string(e.value, "lockstep");
       if (!text) continue;
@@ -213,35 +202,59 @@ IoSpec readIo(const YAML::Node& section, YamlReader& r) {
 }
 
 void writeIo(YAML::Emitter& out, const IoSpec& io) {
-  out << YAML::BeginMap;
-  if (io.lockstep) out << YAML::Key << "lockstep" << YAML::Value << *io.lockstep;
-  for (IoTable t : kTables) {
-    std::vector<const IoEntry*> of;
-    for (const auto& e : io.entries) {
-      if (e.table == t) of.push_back(&e);
-    }
-    if (of.empty()) continue;
-    std::stable_sort(of.begin(), of.end(), [](const IoEntry* a, const IoEntry* b) { return a->address < b->address; });
-    out << YAML::Key << ioTableKey(t) << YAML::Value << YAML::BeginMap;
-    for (const IoEntry* e : of) {
-      out << YAML::Key << e->address << YAML::Value << YAML::Flow << YAML::BeginMap;
-      out << YAML::Key << (e->source == IoEntry::Source::Place ? "place" : "node") << YAML::Value << e->target;
-      if (!e->quantity.empty()) out << YAML::Key << "of" << YAML::Value << e->quantity;
-      if (!e->key.empty()) out << YAML::Key << "key" << YAML::Value << e->key;
-      if (!e->field.empty()) out << YAML::Key << "field" << YAML::Value << e->field;
-      if (t == IoTable::Coils && e->source == IoEntry::Source::Node) {
-        if (e->on != 1.0) out << YAML::Key << "on" << YAML::Value << core::formatDouble(e->on);
-        if (e->off != 0.0) out << YAML::Key << "off" << YAML::Value << core::formatDouble(e->off);
-      }
-      if (isRegister(t)) {
-        if (e->scale != 1.0) out << YAML::Key << "scale" << YAML::Value << core::formatDouble(e->scale);
-        if (!e->unit.empty()) out << YAML::Key << "unit" << YAML::Value << e->unit;
-        if (e->type != IoType::Int16) out << YAML::Key << "type" << YAML::Value << ioTypeName(e->type);
-      }
-      out << YAML::EndMap;
-    }
+  // what an entry leaves out: the schema's defaults
+  using schema::Section;
+  const double on_default = schema::defaultNumber(Section::IoEntry, "on");
+  const double off_default = schema::defaultNumber(Section::IoEntry, "off");
+  const double scale_default = schema::defaultNumber(Section::IoEntry, "scale");
+  const std::string& type_default = schema::key(Section::IoEntry, "type").initial;
+  const auto entry = [&](IoTable t, const IoEntry& e) {
+    out << YAML::Key << e.address << YAML::Value << YAML::Flow << YAML::BeginMap;
+    const bool place = e.source == IoEntry::Source::Place;
+    const bool coil = t == IoTable::Coils && !place;  // a coil on a node's number field
+    const bool word = isRegister(t);
+    schema::inSchemaOrder(
+        Section::IoEntry,
+        {
+            {"place", [&] { if (place) out << YAML::Key << "place" << YAML::Value << e.target; }},
+            {"node", [&] { if (!place) out << YAML::Key << "node" << YAML::Value << e.target; }},
+            {"of", [&] { if (!e.quantity.empty()) out << YAML::Key << "of" << YAML::Value << e.quantity; }},
+            {"key", [&] { if (!e.key.empty()) out << YAML::Key << "key" << YAML::Value << e.key; }},
+            {"field", [&] { if (!e.field.empty()) out << YAML::Key << "field" << YAML::Value << e.field; }},
+            {"on", [&] { if (coil && e.on != on_default) out << YAML::Key << "on" << YAML::Value << core::formatDouble(e.on); }},
+            {"off",
+             [&] { if (coil && e.off != off_default) out << YAML::Key << "off" << YAML::Value << core::formatDouble(e.off); }},
+            {"scale",
+             [&] {
+               if (word && e.scale != scale_default) out << YAML::Key << "scale" << YAML::Value << core::formatDouble(e.scale);
+             }},
+            {"unit", [&] { if (word && !e.unit.empty()) out << YAML::Key << "unit" << YAML::Value << e.unit; }},
+            {"type",
+             [&] {
+               if (word && ioTypeName(e.type) != type_default) out << YAML::Key << "type" << YAML::Value << ioTypeName(e.type);
+             }},
+        });
     out << YAML::EndMap;
+  };
+  out << YAML::BeginMap;
+  std::vector<schema::KeyWriter> keys = {
+      {"lockstep", [&] { if (io.lockstep) out << YAML::Key << "lockstep" << YAML::Value << *io.lockstep; }},
+  };
+  for (IoTable t : kTables) {
+    keys.push_back({ioTableKey(t), [&, t] {
+                      std::vector<const IoEntry*> of;
+                      for (const auto& e : io.entries) {
+                        if (e.table == t) of.push_back(&e);
+                      }
+                      if (of.empty()) return;
+                      std::stable_sort(of.begin(), of.end(),
+                                       [](const IoEntry* a, const IoEntry* b) { return a->address < b->address; });
+                      out << YAML::Key << ioTableKey(t) << YAML::Value << YAML::BeginMap;
+                      for (const IoEntry* e : of) entry(t, *e);
+                      out << YAML::EndMap;
+                    }});
   }
+  schema::inSchemaOrder(Section::Io, keys);
   out << YAML::EndMap;
 }
 

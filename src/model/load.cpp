@@ -13,6 +13,7 @@
 #include "gdpn/core/file.h"
 #include "gdpn/core/text.h"
 #include "gdpn/model/model.h"
+#include "gdpn/model/schema.h"
 #include "gdpn/scene/actions.h"
 #include "io_section.h"
 #include "scene_io.h"
@@ -26,35 +27,22 @@ using core::SourceLoc;
 using detail::Entry;
 using detail::YamlReader;
 
-const std::vector<std::string> kTopKeys = {"gdpn", "description", "settings", "params", "signals", "pages",
-                                           "page_types", "scene", "scripts", "io"};
-const std::vector<std::string> kSignalKeys = {"place", "node", "of", "expression", "every"};
-const std::vector<std::string> kParamKeys = {"value", "unit", "description"};
+using schema::keyNames;
+using schema::Section;
+
 /// The largest whole parameter, 2^53: a double holds every whole number up to it.
 constexpr double kMaxWhole = 9007199254740992.0;
-const std::vector<std::string> kSettingsKeys = {"dt", "seed", "until", "angles", "ties"};
-const std::vector<std::string> kPageKeys = {"description", "places", "transitions", "arcs", "instances"};
-const std::vector<std::string> kPageTypeKeys = {"description", "references", "places", "transitions",
-                                                "arcs", "instances", "scene"};
-/// `keys`, then the keys of the scripts of `owner` (net::kScriptKinds).
-std::vector<std::string> withScripts(std::vector<std::string> keys, net::ScriptOwner owner) {
-  for (const auto& k : net::kScriptKinds) {
-    if (k.owner == owner) keys.emplace_back(k.key);
-  }
-  return keys;
+
+/// True when `value` lies in the schema's range for key `name` of `section`.
+bool inRange(Section section, const std::string& name, double value) {
+  return schema::inRange(schema::key(section, name), value);
 }
 
-const std::vector<std::string> kPlaceKeys =
-    withScripts({"description", "slots", "tokens", "capacity", "sensors", "at"}, net::ScriptOwner::PlaceSlot);
-const std::vector<std::string> kTransitionKeys =
-    withScripts({"description", "duration", "priority", "probability", "servers", "at"}, net::ScriptOwner::Transition);
-const std::vector<std::string> kArcKeys = {"from", "to", "kind", "weight", "predicate", "condition"};
-const std::vector<std::string> kScriptsKeys = {"globals"};
-const std::vector<std::string> kScriptFileKeys = {"file", "function"};
-const std::vector<std::string> kInstanceKeys = {"type", "at", "translation", "rotation"};
-const std::vector<std::string> kLaws = {"uniform", "normal", "exponential"};
-const std::vector<std::string> kArcKinds = {"normal", "test", "inhibitor"};
-const std::vector<std::string> kSlotKinds = {"control", "node", "sensor"};
+/// True when `word` is one of the words Word key `name` of `section` takes.
+bool isChoice(Section section, const std::string& name, const std::string& word) {
+  const auto& choices = schema::key(section, name).choices;
+  return std::find(choices.begin(), choices.end(), word) != choices.end();
+}
 
 /// A node path: identifiers joined by '/'.
 bool isNodePath(const std::string& s) {
@@ -89,7 +77,7 @@ class ModelReader {
     setOverrides(model.params);
     for (const auto& p : model.params) param_values_[p.name] = {p.value, p.integer};
     r_.setParams(&param_values_);
-    for (const auto& e : r_.entries(root, "model file", kTopKeys)) {
+    for (const auto& e : r_.entries(root, "model file", keyNames(Section::Model))) {
       if (e.key == "gdpn") {
         if (auto v = r_.integer(e.value, "gdpn"); v && *v != 1) {
           r_.error(e.value, "this is gdpn format " + std::to_string(*v) + "; this gdpn reads format 1");
@@ -111,7 +99,7 @@ class ModelReader {
         model.io = detail::readIo(e.value, r_);
       } else if (e.key == "scripts") {
         if (!r_.expectMap(e.value, "scripts")) continue;
-        for (const auto& g : r_.entries(e.value, "scripts", kScriptsKeys)) {
+        for (const auto& g : r_.entries(e.value, "scripts", keyNames(Section::Scripts))) {
           model.net.globals = readScript(g, "globals");
         }
       }
@@ -138,7 +126,7 @@ class ModelReader {
     net::ScriptSpec script;
     script.loc = r_.loc(e.value, e.loc);
     if (e.value.IsMap()) {
-      for (const auto& k : r_.entries(e.value, what, kScriptFileKeys)) {
+      for (const auto& k : r_.entries(e.value, what, keyNames(Section::ScriptFile))) {
         if (auto v = r_.string(k.value, k.key)) (k.key == "file" ? script.file : script.function) = *v;
       }
       if (script.file.empty()) r_.error(e.loc, what + " in a file needs 'file'");
@@ -185,7 +173,9 @@ class ModelReader {
   /// Per-slot scripts: a script (for slot a0, or for `default_slot`) or a map slot -> script.
   template <class F>
   void perSlotScript(const Entry& e, const std::string& what, net::SlotId default_slot, F&& f) {
-    const bool file_form = e.value.IsMap() && (e.value["file"] || e.value["function"]);
+    const auto& file_keys = keyNames(Section::ScriptFile);
+    const bool file_form = e.value.IsMap() && std::any_of(file_keys.begin(), file_keys.end(),
+                                                          [&](const std::string& k) { return bool(e.value[k]); });
     if (!e.value.IsMap() || file_form) {
       f(default_slot, readScript(e, what));
       return;
@@ -225,7 +215,7 @@ class ModelReader {
       if (!e.value.IsMap()) {
         has_value = readParamValue(e.value, e.loc, p);
       } else {
-        for (const auto& f : r_.entries(e.value, "parameter '" + p.name + "'", kParamKeys)) {
+        for (const auto& f : r_.entries(e.value, "parameter '" + p.name + "'", keyNames(Section::Param))) {
           if (f.key == "value") {
             has_value = readParamValue(f.value, f.loc, p);
           } else if (auto text = r_.string(f.value, f.key)) {
@@ -279,10 +269,10 @@ class ModelReader {
       if (!r_.expectMap(e.value, "signal '" + s.name + "'")) continue;
       int kinds = 0;
       bool has_of = false;
-      for (const auto& f : r_.entries(e.value, "signal '" + s.name + "'", kSignalKeys)) {
+      for (const auto& f : r_.entries(e.value, "signal '" + s.name + "'", keyNames(Section::Signal))) {
         if (f.key == "every") {
           if (auto v = r_.number(f.value, "every")) {
-            if (!(*v > 0) || !std::isfinite(*v)) r_.error(f.value, "'every' is a period of more than 0 seconds");
+            if (!inRange(Section::Signal, f.key, *v)) r_.error(f.value, "'every' is a period of more than 0 seconds");
             s.every = *v;
           }
           continue;
@@ -340,27 +330,27 @@ class ModelReader {
 
   void readSettings(const YAML::Node& node, Settings& s) {
     if (!r_.expectMap(node, "settings")) return;
-    for (const auto& e : r_.entries(node, "settings", kSettingsKeys)) {
+    for (const auto& e : r_.entries(node, "settings", keyNames(Section::Settings))) {
       if (e.key == "dt") {
         if (auto v = r_.number(e.value, "dt")) {
-          if (!(*v > 0.0) || !std::isfinite(*v)) r_.error(e.value, "dt must be a positive number of seconds");
+          if (!inRange(Section::Settings, e.key, *v)) r_.error(e.value, "dt must be a positive number of seconds");
           s.dt = *v;
           s.dt_given = true;
         }
       } else if (e.key == "seed") {
         if (auto v = r_.integer(e.value, "seed")) {
-          if (*v < 0) r_.error(e.value, "seed must not be negative");
+          if (!inRange(Section::Settings, e.key, static_cast<double>(*v))) r_.error(e.value, "seed must not be negative");
           s.seed = static_cast<std::uint64_t>(*v);
           s.seed_given = true;
         }
       } else if (e.key == "until") {
         if (auto v = r_.number(e.value, "until")) {
-          if (!(*v >= 0.0) || !std::isfinite(*v)) r_.error(e.value, "until must be a time of at least 0 seconds");
+          if (!inRange(Section::Settings, e.key, *v)) r_.error(e.value, "until must be a time of at least 0 seconds");
           s.until = *v;
         }
       } else if (e.key == "angles") {
         if (auto v = r_.string(e.value, "angles")) {
-          if (*v == "radians" || *v == "degrees") {
+          if (isChoice(Section::Settings, e.key, *v)) {
             s.angles = *v == "radians" ? scene::AngleUnit::Radians : scene::AngleUnit::Degrees;
           } else {
             r_.error(e.value, "angles are 'radians' or 'degrees', got '" + *v + "'");
@@ -368,7 +358,7 @@ class ModelReader {
         }
       } else if (e.key == "ties") {
         if (auto v = r_.string(e.value, "ties")) {
-          if (*v == "random" || *v == "order") {
+          if (isChoice(Section::Settings, e.key, *v)) {
             s.random_ties = *v == "random";
           } else {
             r_.error(e.value, "ties are 'order' (declaration order) or 'random' (drawn from the seed), got '" + *v + "'");
@@ -394,7 +384,7 @@ class ModelReader {
     const std::string what = std::string(type ? "page type '" : "page '") + page.name + "'";
     if (pe.value.IsNull()) return;
     if (!r_.expectMap(pe.value, what)) return;
-    for (const auto& e : r_.entries(pe.value, what, type ? kPageTypeKeys : kPageKeys)) {
+    for (const auto& e : r_.entries(pe.value, what, keyNames(type ? Section::PageType : Section::Page))) {
       if (e.key == "description") {
         if (auto s = r_.string(e.value, "description")) page.description = *s;
       } else if (e.key == "references") {
@@ -467,7 +457,7 @@ class ModelReader {
     p.loc = pe.loc;
     if (pe.value.IsNull()) return p;
     if (!r_.expectMap(pe.value, "place '" + p.name + "'")) return p;
-    for (const auto& e : r_.entries(pe.value, "place", kPlaceKeys)) {
+    for (const auto& e : r_.entries(pe.value, "place", keyNames(Section::Place))) {
       if (e.key == "description") {
         if (auto s = r_.string(e.value, "description")) p.description = *s;
       } else if (e.key == "slots") {
@@ -477,8 +467,9 @@ class ModelReader {
           if (!s) return;
           auto kind = net::parseSlotKind(*s);
           if (!kind) {
-            r_.error(v, "unknown slot kind '" + *s + "'" + core::didYouMean(*s, kSlotKinds) +
-                            "; expected control, node or sensor");
+            const auto& slots = schema::key(Section::Place, "slots");
+            r_.error(v, "unknown slot kind '" + *s + "'" + core::didYouMean(*s, slots.choices) + "; expected " +
+                            schema::choiceList(slots));
             return;
           }
           p.kinds.push_back({slot, *kind, loc});
@@ -537,7 +528,7 @@ class ModelReader {
       }
       return d;
     }
-    auto laws = r_.entries(e.value, "duration", kLaws);
+    auto laws = r_.entries(e.value, "duration", keyNames(Section::Duration));
     if (laws.size() != 1) {
       r_.error(e.loc, "duration expects a number of seconds or one law: {uniform: [lo, hi]}, "
                       "{normal: [mean, sd]} or {exponential: mean}");
@@ -576,7 +567,7 @@ class ModelReader {
     t.servers_loc = te.loc;
     if (te.value.IsNull()) return t;
     if (!r_.expectMap(te.value, "transition '" + t.name + "'")) return t;
-    for (const auto& e : r_.entries(te.value, "transition", kTransitionKeys)) {
+    for (const auto& e : r_.entries(te.value, "transition", keyNames(Section::Transition))) {
       if (e.key == "description") {
         if (auto s = r_.string(e.value, "description")) t.description = *s;
       } else if (e.key == "duration") {
@@ -633,7 +624,7 @@ class ModelReader {
     if (!r_.expectMap(node, "an arc")) return std::nullopt;
     bool has_from = false, has_to = false;
     std::optional<Entry> predicate, condition;
-    for (const auto& e : r_.entries(node, "arc", kArcKeys)) {
+    for (const auto& e : r_.entries(node, "arc", keyNames(Section::Arc))) {
       if (e.key == "predicate") predicate = e;
       if (e.key == "condition") condition = e;
       if (e.key == "from") {
@@ -645,11 +636,12 @@ class ModelReader {
       } else if (e.key == "kind") {
         auto s = r_.string(e.value, "kind");
         if (!s) continue;
+        const auto& kinds = schema::key(Section::Arc, "kind");
         if (*s == "normal") a.kind = net::ArcKind::Normal;
         else if (*s == "test") a.kind = net::ArcKind::Test;
         else if (*s == "inhibitor") a.kind = net::ArcKind::Inhibitor;
-        else r_.error(e.value, "unknown arc kind '" + *s + "'" + core::didYouMean(*s, kArcKinds) +
-                                   "; expected normal, test or inhibitor");
+        else r_.error(e.value, "unknown arc kind '" + *s + "'" + core::didYouMean(*s, kinds.choices) + "; expected " +
+                                   schema::choiceList(kinds));
       } else if (e.key == "weight") {
         perSlot(e, "weight", [&](net::SlotId slot, const YAML::Node& v, const SourceLoc& loc) {
           std::string param;
@@ -688,7 +680,7 @@ class ModelReader {
     }
     if (!r_.expectMap(ie.value, "instance '" + i.name + "'")) return i;
     bool has_type = false;
-    for (const auto& e : r_.entries(ie.value, "instance", kInstanceKeys)) {
+    for (const auto& e : r_.entries(ie.value, "instance", keyNames(Section::Instance))) {
       if (e.key == "type") {
         if (auto s = r_.string(e.value, "type")) i.type = *s, has_type = true;
         i.type_loc = r_.loc(e.value, e.loc);

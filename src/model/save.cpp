@@ -2,9 +2,12 @@
 
 #include "yaml.h"
 
+#include <algorithm>
+
 #include "gdpn/core/output_file.h"
 #include "gdpn/core/text.h"
 #include "gdpn/model/model.h"
+#include "gdpn/model/schema.h"
 #include "io_section.h"
 #include "scene_io.h"
 #include "yaml_reader.h"
@@ -13,6 +16,7 @@ namespace gdpn::model {
 namespace {
 
 using core::formatDouble;
+using schema::Section;
 
 void pos(YAML::Emitter& out, const std::optional<net::EditorPos>& p) {
   if (!p) return;
@@ -94,35 +98,47 @@ YAML::EMITTER_MANIP styleFor(bool scripted) { return scripted ? YAML::Block : YA
 
 void writePlace(YAML::Emitter& out, const net::PlaceSpec& p) {
   out << YAML::Key << p.name << YAML::Value << styleFor(!p.scripts.empty()) << YAML::BeginMap;
-  description(out, p.description);
-  if (!p.kinds.empty()) {
-    out << YAML::Key << "slots" << YAML::Value << YAML::Flow << YAML::BeginMap;
-    for (const auto& k : p.kinds) out << YAML::Key << net::slotName(k.slot) << YAML::Value << net::slotKindName(k.kind);
-    out << YAML::EndMap;
+  std::vector<schema::KeyWriter> keys = {
+      {"description", [&] { description(out, p.description); }},
+      {"slots",
+       [&] {
+         if (p.kinds.empty()) return;
+         out << YAML::Key << "slots" << YAML::Value << YAML::Flow << YAML::BeginMap;
+         for (const auto& k : p.kinds) out << YAML::Key << net::slotName(k.slot) << YAML::Value << net::slotKindName(k.kind);
+         out << YAML::EndMap;
+       }},
+      {"tokens",
+       [&] {
+         if (p.nodes.empty()) {
+           perSlot(out, "tokens", p.tokens);
+           return;
+         }
+         out << YAML::Key << "tokens" << YAML::Value << YAML::Flow << YAML::BeginMap;
+         for (const auto& t : p.tokens) {
+           out << YAML::Key << net::slotName(t.slot) << YAML::Value;
+           count(out, t);
+         }
+         for (const auto& n : p.nodes) {
+           out << YAML::Key << net::slotName(n.slot) << YAML::Value << YAML::Flow << YAML::BeginSeq;
+           for (const auto& name : n.nodes) out << name;
+           out << YAML::EndSeq;
+         }
+         out << YAML::EndMap;
+       }},
+      {"capacity", [&] { perSlot(out, "capacity", p.capacity); }},
+      {"sensors",
+       [&] {
+         if (p.sensors.empty()) return;
+         out << YAML::Key << "sensors" << YAML::Value << YAML::Flow << YAML::BeginMap;
+         for (const auto& b : p.sensors) out << YAML::Key << net::slotName(b.slot) << YAML::Value << b.path;
+         out << YAML::EndMap;
+       }},
+      {"at", [&] { pos(out, p.position); }},
+  };
+  for (const net::ScriptKind k : net::kSlotScripts) {
+    keys.push_back({net::info(k).key, [&out, &p, k] { writeSlotScripts(out, k, p.scripts); }});
   }
-  if (p.nodes.empty()) {
-    perSlot(out, "tokens", p.tokens);
-  } else {
-    out << YAML::Key << "tokens" << YAML::Value << YAML::Flow << YAML::BeginMap;
-    for (const auto& t : p.tokens) {
-      out << YAML::Key << net::slotName(t.slot) << YAML::Value;
-      count(out, t);
-    }
-    for (const auto& n : p.nodes) {
-      out << YAML::Key << net::slotName(n.slot) << YAML::Value << YAML::Flow << YAML::BeginSeq;
-      for (const auto& name : n.nodes) out << name;
-      out << YAML::EndSeq;
-    }
-    out << YAML::EndMap;
-  }
-  perSlot(out, "capacity", p.capacity);
-  if (!p.sensors.empty()) {
-    out << YAML::Key << "sensors" << YAML::Value << YAML::Flow << YAML::BeginMap;
-    for (const auto& b : p.sensors) out << YAML::Key << net::slotName(b.slot) << YAML::Value << b.path;
-    out << YAML::EndMap;
-  }
-  for (const net::ScriptKind k : net::kSlotScripts) writeSlotScripts(out, k, p.scripts);
-  pos(out, p.position);
+  schema::inSchemaOrder(Section::Place, keys);
   out << YAML::EndMap;
 }
 
@@ -146,170 +162,232 @@ void writeDuration(YAML::Emitter& out, const net::Duration& d) {
 }
 
 void writeTransition(YAML::Emitter& out, const net::TransitionSpec& t) {
+  // what a transition leaves out: the schema's defaults
+  const double priority_default = schema::defaultNumber(Section::Transition, "priority");
+  const double probability_default = schema::defaultNumber(Section::Transition, "probability");
+  const double servers_default = schema::defaultNumber(Section::Transition, "servers");
   out << YAML::Key << t.name << YAML::Value << styleFor(t.scripted()) << YAML::BeginMap;
-  description(out, t.description);
-  writeDuration(out, t.duration);
-  if (!t.priority_param.empty()) out << YAML::Key << "priority" << YAML::Value << "$" + t.priority_param;
-  else if (t.priority != 0) out << YAML::Key << "priority" << YAML::Value << t.priority;
-  if (t.probability != 1.0 || !t.probability_param.empty()) {
-    out << YAML::Key << "probability" << YAML::Value << numberText(t.probability, t.probability_param);
+  std::vector<schema::KeyWriter> keys = {
+      {"description", [&] { description(out, t.description); }},
+      {"duration", [&] { writeDuration(out, t.duration); }},
+      {"priority",
+       [&] {
+         if (!t.priority_param.empty()) out << YAML::Key << "priority" << YAML::Value << "$" + t.priority_param;
+         else if (static_cast<double>(t.priority) != priority_default) out << YAML::Key << "priority" << YAML::Value << t.priority;
+       }},
+      {"probability",
+       [&] {
+         if (t.probability == probability_default && t.probability_param.empty()) return;
+         out << YAML::Key << "probability" << YAML::Value << numberText(t.probability, t.probability_param);
+       }},
+      {"servers",
+       [&] {
+         if (!t.servers_param.empty()) out << YAML::Key << "servers" << YAML::Value << "$" + t.servers_param;
+         else if (t.servers == net::kUnlimitedServers) out << YAML::Key << "servers" << YAML::Value << "unlimited";
+         else if (static_cast<double>(t.servers) != servers_default) out << YAML::Key << "servers" << YAML::Value << t.servers;
+       }},
+      {"at", [&] { pos(out, t.position); }},
+  };
+  for (const net::ScriptKind k : net::kTransitionScripts) {
+    keys.push_back({net::info(k).key, [&out, &t, k] { writeScript(out, net::info(k).key, net::scriptOf(t, k)); }});
   }
-  if (!t.servers_param.empty()) out << YAML::Key << "servers" << YAML::Value << "$" + t.servers_param;
-  else if (t.servers == net::kUnlimitedServers) out << YAML::Key << "servers" << YAML::Value << "unlimited";
-  else if (t.servers != 1) out << YAML::Key << "servers" << YAML::Value << t.servers;
-  for (const net::ScriptKind k : net::kTransitionScripts) writeScript(out, net::info(k).key, net::scriptOf(t, k));
-  pos(out, t.position);
+  schema::inSchemaOrder(Section::Transition, keys);
   out << YAML::EndMap;
 }
 
 void writeArc(YAML::Emitter& out, const net::ArcSpec& a) {
-  out << styleFor(!a.predicates.empty() || !a.conditions.empty()) << YAML::BeginMap << YAML::Key << "from" << YAML::Value << a.from
-      << YAML::Key << "to"
-      << YAML::Value << a.to;
-  if (a.kind != net::ArcKind::Normal) out << YAML::Key << "kind" << YAML::Value << net::arcKindName(a.kind);
-  perSlot(out, "weight", a.weights);
-  for (const auto* list : {&a.predicates, &a.conditions}) {
-    if (list->empty()) continue;
-    out << YAML::Key << (list == &a.predicates ? "predicate" : "condition") << YAML::Value << YAML::BeginMap;
-    for (const auto& p : *list) writeScript(out, net::slotName(p.slot).c_str(), p.expression);
+  const std::string& kind_default = schema::key(Section::Arc, "kind").initial;
+  out << styleFor(!a.predicates.empty() || !a.conditions.empty()) << YAML::BeginMap;
+  // predicates and conditions: a map slot -> expression
+  const auto scripts = [&](const char* key, const std::vector<net::SlotPredicate>& list) {
+    if (list.empty()) return;
+    out << YAML::Key << key << YAML::Value << YAML::BeginMap;
+    for (const auto& p : list) writeScript(out, net::slotName(p.slot), p.expression);
     out << YAML::EndMap;
-  }
+  };
+  schema::inSchemaOrder(
+      Section::Arc,
+      {
+          {"from", [&] { out << YAML::Key << "from" << YAML::Value << a.from; }},
+          {"to", [&] { out << YAML::Key << "to" << YAML::Value << a.to; }},
+          {"kind",
+           [&] {
+             if (net::arcKindName(a.kind) != kind_default) out << YAML::Key << "kind" << YAML::Value << net::arcKindName(a.kind);
+           }},
+          {"weight", [&] { perSlot(out, "weight", a.weights); }},
+          {net::info(net::ScriptKind::Predicate).key, [&] { scripts("predicate", a.predicates); }},
+          {net::info(net::ScriptKind::Condition).key, [&] { scripts("condition", a.conditions); }},
+      });
+  out << YAML::EndMap;
+}
+
+void writeInstance(YAML::Emitter& out, const net::InstanceSpec& i) {
+  out << YAML::Key << i.name << YAML::Value << YAML::Flow << YAML::BeginMap;
+  // a list of numbers, when it is not the schema's default
+  const auto numbers = [&](const char* key, const auto& values) {
+    const std::vector<double> initial = schema::defaultNumbers(Section::Instance, key);
+    if (std::equal(values.begin(), values.end(), initial.begin(), initial.end())) return;
+    out << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginSeq;
+    for (double x : values) out << formatDouble(x);
+    out << YAML::EndSeq;
+  };
+  schema::inSchemaOrder(Section::Instance,
+                        {
+                            {"type", [&] { out << YAML::Key << "type" << YAML::Value << i.type; }},
+                            {"at", [&] { pos(out, i.position); }},
+                            {"translation", [&] { numbers("translation", i.translation); }},
+                            {"rotation", [&] { numbers("rotation", i.rotation); }},
+                        });
+  out << YAML::EndMap;
+}
+
+/// A map name -> construct written by `write`, when `list` is not empty.
+template <class T, class F>
+void namedMap(YAML::Emitter& out, const char* key, const std::vector<T>& list, F&& write) {
+  if (list.empty()) return;
+  out << YAML::Key << key << YAML::Value << YAML::BeginMap;
+  for (const auto& item : list) write(out, item);
   out << YAML::EndMap;
 }
 
 void writePage(YAML::Emitter& out, const net::PageSpec& page, bool type, const scene::Scene* type_scene,
                scene::AngleUnit angles) {
   out << YAML::Key << page.name << YAML::Value << YAML::BeginMap;
-  description(out, page.description);
-  if (type && !page.references.empty()) {
-    out << YAML::Key << "references" << YAML::Value << YAML::Flow << YAML::BeginSeq;
-    for (const auto& r : page.references) out << r.place;
-    out << YAML::EndSeq;
+  std::vector<schema::KeyWriter> keys = {
+      {"description", [&] { description(out, page.description); }},
+      {"places", [&] { namedMap(out, "places", page.places, writePlace); }},
+      {"transitions", [&] { namedMap(out, "transitions", page.transitions, writeTransition); }},
+      {"instances", [&] { namedMap(out, "instances", page.instances, writeInstance); }},
+      {"arcs",
+       [&] {
+         if (page.arcs.empty()) return;
+         out << YAML::Key << "arcs" << YAML::Value << YAML::BeginSeq;
+         for (const auto& a : page.arcs) writeArc(out, a);
+         out << YAML::EndSeq;
+       }},
+  };
+  if (type) {
+    keys.push_back({"references", [&] {
+                      if (page.references.empty()) return;
+                      out << YAML::Key << "references" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+                      for (const auto& r : page.references) out << r.place;
+                      out << YAML::EndSeq;
+                    }});
+    keys.push_back({"scene", [&] {
+                      if (!type_scene) return;
+                      out << YAML::Key << "scene" << YAML::Value;
+                      detail::writeScene(out, *type_scene, angles);
+                    }});
   }
-  if (!page.places.empty()) {
-    out << YAML::Key << "places" << YAML::Value << YAML::BeginMap;
-    for (const auto& p : page.places) writePlace(out, p);
-    out << YAML::EndMap;
-  }
-  if (!page.transitions.empty()) {
-    out << YAML::Key << "transitions" << YAML::Value << YAML::BeginMap;
-    for (const auto& t : page.transitions) writeTransition(out, t);
-    out << YAML::EndMap;
-  }
-  if (!page.instances.empty()) {
-    out << YAML::Key << "instances" << YAML::Value << YAML::BeginMap;
-    for (const auto& i : page.instances) {
-      out << YAML::Key << i.name << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "type"
-          << YAML::Value << i.type;
-      pos(out, i.position);
-      if (i.translation != std::array<double, 3>{0, 0, 0}) {
-        out << YAML::Key << "translation" << YAML::Value << YAML::Flow << YAML::BeginSeq;
-        for (double x : i.translation) out << formatDouble(x);
-        out << YAML::EndSeq;
-      }
-      if (i.rotation != std::array<double, 4>{0, 0, 1, 0}) {
-        out << YAML::Key << "rotation" << YAML::Value << YAML::Flow << YAML::BeginSeq;
-        for (double x : i.rotation) out << formatDouble(x);
-        out << YAML::EndSeq;
-      }
-      out << YAML::EndMap;
-    }
-    out << YAML::EndMap;
-  }
-  if (!page.arcs.empty()) {
-    out << YAML::Key << "arcs" << YAML::Value << YAML::BeginSeq;
-    for (const auto& a : page.arcs) writeArc(out, a);
-    out << YAML::EndSeq;
-  }
-  if (type_scene) {
-    out << YAML::Key << "scene" << YAML::Value;
-    detail::writeScene(out, *type_scene, angles);
-  }
+  schema::inSchemaOrder(type ? Section::PageType : Section::Page, keys);
   out << YAML::EndMap;
 }
 
+void writeSettings(YAML::Emitter& out, const Settings& s) {
+  // a word at the schema's default is left out
+  const std::string angles = s.angles == scene::AngleUnit::Radians ? "radians" : "degrees";
+  const std::string ties = s.random_ties ? "random" : "order";
+  const bool angles_given = angles != schema::key(Section::Settings, "angles").initial;
+  const bool ties_given = ties != schema::key(Section::Settings, "ties").initial;
+  if (!s.dt_given && !s.seed_given && !s.until && !angles_given && !ties_given) return;
+  out << YAML::Key << "settings" << YAML::Value << YAML::BeginMap;
+  schema::inSchemaOrder(Section::Settings,
+                        {
+                            {"dt", [&] { if (s.dt_given) out << YAML::Key << "dt" << YAML::Value << formatDouble(s.dt); }},
+                            {"seed", [&] { if (s.seed_given) out << YAML::Key << "seed" << YAML::Value << s.seed; }},
+                            {"until", [&] { if (s.until) out << YAML::Key << "until" << YAML::Value << formatDouble(*s.until); }},
+                            {"angles", [&] { if (angles_given) out << YAML::Key << "angles" << YAML::Value << angles; }},
+                            {"ties", [&] { if (ties_given) out << YAML::Key << "ties" << YAML::Value << ties; }},
+                        });
+  out << YAML::EndMap;
+}
+
+void writeParam(YAML::Emitter& out, const Param& p) {
+  out << YAML::Key << p.name << YAML::Value;
+  const std::string value = p.integer ? std::to_string(static_cast<std::int64_t>(p.declared)) : formatDouble(p.declared);
+  // a number with no point reads back as a whole one: a decimal parameter keeps its point
+  const bool point = p.integer || value.find_first_of(".eEn") != std::string::npos;
+  const std::string text = point ? value : value + ".0";
+  if (p.unit.empty() && p.description.empty()) {
+    out << text;
+    return;
+  }
+  out << YAML::Flow << YAML::BeginMap;
+  schema::inSchemaOrder(
+      Section::Param,
+      {
+          {"value", [&] { out << YAML::Key << "value" << YAML::Value << text; }},
+          {"unit", [&] { if (!p.unit.empty()) out << YAML::Key << "unit" << YAML::Value << p.unit; }},
+          {"description",
+           [&] { if (!p.description.empty()) out << YAML::Key << "description" << YAML::Value << YAML::DoubleQuoted << p.description; }},
+      });
+  out << YAML::EndMap;
+}
+
+void writeSignal(YAML::Emitter& out, const SignalSpec& sig) {
+  using Kind = SignalSpec::Kind;
+  out << YAML::Key << sig.name << YAML::Value << YAML::Flow << YAML::BeginMap;
+  schema::inSchemaOrder(
+      Section::Signal,
+      {
+          {"place", [&] { if (sig.kind == Kind::Place) out << YAML::Key << "place" << YAML::Value << sig.target; }},
+          {"node", [&] { if (sig.kind == Kind::Node) out << YAML::Key << "node" << YAML::Value << sig.target; }},
+          {"of", [&] { if (sig.kind == Kind::Node) out << YAML::Key << "of" << YAML::Value << sig.quantity; }},
+          {"expression",
+           [&] {
+             if (sig.kind == Kind::Expression) out << YAML::Key << "expression" << YAML::Value << YAML::DoubleQuoted << sig.target;
+           }},
+          {"every", [&] { if (sig.every > 0) out << YAML::Key << "every" << YAML::Value << formatDouble(sig.every); }},
+      });
+  out << YAML::EndMap;
+}
 
 }  // namespace
 
 std::string writeModel(const Model& model) {
   YAML::Emitter out;
-  out << YAML::BeginMap;
-  out << YAML::Key << "gdpn" << YAML::Value << 1;
-  description(out, model.description);
   const auto& s = model.settings;
-  const bool radians = s.angles == scene::AngleUnit::Radians;
-  if (s.dt_given || s.seed_given || s.until || radians || s.random_ties) {
-    out << YAML::Key << "settings" << YAML::Value << YAML::BeginMap;
-    if (s.dt_given) out << YAML::Key << "dt" << YAML::Value << formatDouble(s.dt);
-    if (s.seed_given) out << YAML::Key << "seed" << YAML::Value << s.seed;
-    if (s.until) out << YAML::Key << "until" << YAML::Value << formatDouble(*s.until);
-    if (radians) out << YAML::Key << "angles" << YAML::Value << "radians";
-    if (s.random_ties) out << YAML::Key << "ties" << YAML::Value << "random";
-    out << YAML::EndMap;
-  }
-  if (!model.params.empty()) {
-    out << YAML::Key << "params" << YAML::Value << YAML::BeginMap;
-    for (const auto& p : model.params) {
-      out << YAML::Key << p.name << YAML::Value;
-      const std::string value = p.integer ? std::to_string(static_cast<std::int64_t>(p.declared)) : formatDouble(p.declared);
-      // a number with no point reads back as a whole one: a decimal parameter keeps its point
-      const bool point = p.integer || value.find_first_of(".eEn") != std::string::npos;
-      const std::string text = point ? value : value + ".0";
-      if (p.unit.empty() && p.description.empty()) {
-        out << text;
-        continue;
-      }
-      out << YAML::Flow << YAML::BeginMap << YAML::Key << "value" << YAML::Value << text;
-      if (!p.unit.empty()) out << YAML::Key << "unit" << YAML::Value << p.unit;
-      if (!p.description.empty()) out << YAML::Key << "description" << YAML::Value << YAML::DoubleQuoted << p.description;
-      out << YAML::EndMap;
-    }
-    out << YAML::EndMap;
-  }
-  if (!model.signals.empty()) {
-    out << YAML::Key << "signals" << YAML::Value << YAML::BeginMap;
-    for (const auto& sig : model.signals) {
-      out << YAML::Key << sig.name << YAML::Value << YAML::Flow << YAML::BeginMap;
-      switch (sig.kind) {
-        case SignalSpec::Kind::Place: out << YAML::Key << "place" << YAML::Value << sig.target; break;
-        case SignalSpec::Kind::Node:
-          out << YAML::Key << "node" << YAML::Value << sig.target << YAML::Key << "of" << YAML::Value << sig.quantity;
-          break;
-        case SignalSpec::Kind::Expression:
-          out << YAML::Key << "expression" << YAML::Value << YAML::DoubleQuoted << sig.target;
-          break;
-      }
-      if (sig.every > 0) out << YAML::Key << "every" << YAML::Value << formatDouble(sig.every);
-      out << YAML::EndMap;
-    }
-    out << YAML::EndMap;
-  }
-  if (!model.io.empty()) {
-    out << YAML::Key << "io" << YAML::Value;
-    detail::writeIo(out, model.io);
-  }
-  if (!model.net.pages.empty()) {
-    out << YAML::Key << "pages" << YAML::Value << YAML::BeginMap;
-    for (const auto& p : model.net.pages) writePage(out, p, false, nullptr, s.angles);
-    out << YAML::EndMap;
-  }
-  if (!model.net.page_types.empty()) {
-    out << YAML::Key << "page_types" << YAML::Value << YAML::BeginMap;
-    for (const auto& p : model.net.page_types) {
-      auto it = model.type_scenes.find(p.name);
-      writePage(out, p, true, it == model.type_scenes.end() ? nullptr : it->second.get(), s.angles);
-    }
-    out << YAML::EndMap;
-  }
-  if (model.scene) {
-    out << YAML::Key << "scene" << YAML::Value;
-    detail::writeScene(out, *model.scene, s.angles);
-  }
-  if (!model.net.globals.empty()) {
-    out << YAML::Key << "scripts" << YAML::Value << YAML::BeginMap;
-    writeScript(out, "globals", model.net.globals);
-    out << YAML::EndMap;
-  }
+  out << YAML::BeginMap;
+  schema::inSchemaOrder(
+      Section::Model,
+      {
+          {"gdpn", [&] { out << YAML::Key << "gdpn" << YAML::Value << 1; }},
+          {"description", [&] { description(out, model.description); }},
+          {"settings", [&] { writeSettings(out, s); }},
+          {"params", [&] { namedMap(out, "params", model.params, writeParam); }},
+          {"signals", [&] { namedMap(out, "signals", model.signals, writeSignal); }},
+          {"io",
+           [&] {
+             if (model.io.empty()) return;
+             out << YAML::Key << "io" << YAML::Value;
+             detail::writeIo(out, model.io);
+           }},
+          {"pages",
+           [&] {
+             namedMap(out, "pages", model.net.pages,
+                      [&](YAML::Emitter& o, const net::PageSpec& p) { writePage(o, p, false, nullptr, s.angles); });
+           }},
+          {"page_types",
+           [&] {
+             namedMap(out, "page_types", model.net.page_types, [&](YAML::Emitter& o, const net::PageSpec& p) {
+               auto it = model.type_scenes.find(p.name);
+               writePage(o, p, true, it == model.type_scenes.end() ? nullptr : it->second.get(), s.angles);
+             });
+           }},
+          {"scene",
+           [&] {
+             if (!model.scene) return;
+             out << YAML::Key << "scene" << YAML::Value;
+             detail::writeScene(out, *model.scene, s.angles);
+           }},
+          {"scripts",
+           [&] {
+             if (model.net.globals.empty()) return;
+             out << YAML::Key << "scripts" << YAML::Value << YAML::BeginMap;
+             writeScript(out, "globals", model.net.globals);
+             out << YAML::EndMap;
+           }},
+      });
   out << YAML::EndMap;
   return std::string(out.c_str()) + "\n";
 }

@@ -20,10 +20,14 @@
 #include "gdpn/ide/net_edit.h"
 #include "gdpn/ide/python_text.h"
 #include "gdpn/ide/token_types.h"
+#include "gdpn/model/schema.h"
 #include "gdpn/scene/node.h"
 
 namespace gdpn::ide {
 namespace {
+
+namespace schema = model::schema;
+using schema::Section;
 
 /// The slot grid's colours: the net view's (diagram::colours), dimmed when the slot is empty.
 ImVec4 slotColour(net::SlotKind kind, bool marked) {
@@ -50,6 +54,16 @@ std::string durationText(const net::Duration& d) {
     case net::Duration::Law::Immediate: return "immediate" + std::string(d.params[0].empty() ? "" : " ($" + d.params[0] + " = 0)");
   }
   return "?";
+}
+
+/// Notes the last item, the field of `key`, under the key's name (as noteItem does) and, while
+/// it is hovered, shows the key's help and range from the schema.
+void keyItem(const schema::KeyDesc& key, nlohmann::json& fields) {
+  noteItem(key.name, fields);
+  if (ImGui::IsItemHovered()) {
+    const std::string range = schema::rangeText(key);
+    ImGui::SetTooltip("%s%s", key.help.c_str(), range.empty() ? "" : (" (" + range + ")").c_str());
+  }
 }
 
 /// After a field that comes from a model parameter: "= $name" (nothing for a number typed in).
@@ -316,8 +330,9 @@ void slotFields(App& app, const ConstructAt& at, const net::PlaceSpec& place, ne
       int tokens = static_cast<int>(slotCount(place.tokens, slot).value_or(0));
       ImGui::SetNextItemWidth(110);
       const int tokens_before = tokens;
-      ImGui::InputInt("tokens", &tokens, 0, 0);
-      noteItem("tokens", fields);
+      const auto& tokens_key = schema::key(Section::Place, "tokens");
+      ImGui::InputInt(tokens_key.name.c_str(), &tokens, 0, 0);
+      keyItem(tokens_key, fields);
       // a value left as it was keeps the parameter it came from
       if (ImGui::IsItemDeactivatedAfterEdit() && tokens >= 0 && tokens != tokens_before) {
         auto p = place;
@@ -330,8 +345,9 @@ void slotFields(App& app, const ConstructAt& at, const net::PlaceSpec& place, ne
     int capacity = static_cast<int>(slotCount(place.capacity, slot).value_or(-1));
     ImGui::SetNextItemWidth(110);
     const int capacity_before = capacity;
-    ImGui::InputInt("capacity (-1: none)", &capacity, 0, 0);
-    noteItem("capacity", fields);
+    const auto& capacity_key = schema::key(Section::Place, "capacity");
+    ImGui::InputInt((capacity_key.name + " (-1: none)").c_str(), &capacity, 0, 0);
+    keyItem(capacity_key, fields);
     if (ImGui::IsItemDeactivatedAfterEdit() && capacity >= -1 && capacity != capacity_before) {
       auto p = place;
       setSlotCount(p.capacity, slot, capacity >= 0 ? std::optional<std::int64_t>(capacity) : std::nullopt);
@@ -537,7 +553,7 @@ void editTransition(App& app, const ConstructAt& at, const net::TransitionSpec& 
     ImGui::SameLine();
     ImGui::SetNextItemWidth(90);
     ImGui::InputDouble(first, &d.a, 0, 0, "%g");
-    noteItem("duration", fields);
+    keyItem(schema::key(Section::Transition, "duration"), fields);
     changed = changed || ImGui::IsItemDeactivatedAfterEdit();
     paramNote(t.duration.params[0]);
   }
@@ -551,15 +567,17 @@ void editTransition(App& app, const ConstructAt& at, const net::TransitionSpec& 
   }
   int priority = static_cast<int>(t.priority);
   ImGui::SetNextItemWidth(90);
-  ImGui::InputInt("priority", &priority, 0, 0);
-  noteItem("priority", fields);
+  const auto& priority_key = schema::key(Section::Transition, "priority");
+  ImGui::InputInt(priority_key.name.c_str(), &priority, 0, 0);
+  keyItem(priority_key, fields);
   const bool priority_changed = ImGui::IsItemDeactivatedAfterEdit();
   paramNote(t.priority_param);
   ImGui::SameLine();
   double probability = t.probability;
   ImGui::SetNextItemWidth(90);
-  ImGui::InputDouble("probability", &probability, 0, 0, "%g");
-  noteItem("probability", fields);
+  const auto& probability_key = schema::key(Section::Transition, "probability");
+  ImGui::InputDouble(probability_key.name.c_str(), &probability, 0, 0, "%g");
+  keyItem(probability_key, fields);
   const bool probability_changed = ImGui::IsItemDeactivatedAfterEdit();
   paramNote(t.probability_param);
   // servers: how many occurrences at once; "unlimited" greys the number out
@@ -567,9 +585,10 @@ void editTransition(App& app, const ConstructAt& at, const net::TransitionSpec& 
   int servers = unlimited ? 1 : static_cast<int>(t.servers);
   ImGui::BeginDisabled(unlimited);
   ImGui::SetNextItemWidth(90);
-  ImGui::InputInt("servers", &servers, 0, 0);
+  const auto& servers_key = schema::key(Section::Transition, "servers");
+  ImGui::InputInt(servers_key.name.c_str(), &servers, 0, 0);
   ImGui::EndDisabled();
-  noteItem("servers", fields);
+  keyItem(servers_key, fields);
   bool servers_changed = ImGui::IsItemDeactivatedAfterEdit();
   paramNote(t.servers_param);
   ImGui::SameLine();
