@@ -400,8 +400,10 @@ class Model {
       case model::StopReason::Interrupted:
         PyErr_SetString(PyExc_KeyboardInterrupt, outcome_.message.empty() ? "run interrupted" : outcome_.message.c_str());
         throw py::error_already_set();
-      default:
-        return;
+      case model::StopReason::Until:
+      case model::StopReason::Dead:
+      case model::StopReason::Stopped:
+      case model::StopReason::Breakpoint: return;  // a run that ended as asked, or by the model
     }
   }
 

@@ -147,7 +147,15 @@ bool perform(App& app, Driver& d, const Action& given, const IdeOptions& o, int 
       d.frame();
       if (!writeOutputs(app, w, h, a.text, "")) return false;
       break;
-    default:
+    // what the document and the views do, then a frame to show it
+    case ActionKind::Select:
+    case ActionKind::Press:
+    case ActionKind::Fire:
+    case ActionKind::RunFor:
+    case ActionKind::Steps:
+    case ActionKind::Set:
+    case ActionKind::View:
+    case ActionKind::Break:
       if (!app.perform(a, error)) break;
       d.frame();
       break;

@@ -415,7 +415,9 @@ std::optional<RunOutcome> Simulation::scriptHalt() const {
   switch (engine_->halt()) {
     case script::Halt::Stop: o.reason = StopReason::Stopped; break;
     case script::Halt::Interrupted: o.reason = StopReason::Interrupted; break;
-    default: o.reason = StopReason::ScriptError; break;
+    case script::Halt::None:
+    case script::Halt::Error:
+    case script::Halt::Timeout: o.reason = StopReason::ScriptError; break;
   }
   return o;
 }

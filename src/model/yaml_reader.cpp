@@ -17,8 +17,10 @@ std::string describe(const YAML::Node& node) {
     case YAML::NodeType::Map: return "a map";
     case YAML::NodeType::Sequence: return "a list";
     case YAML::NodeType::Scalar: return "\"" + node.Scalar() + "\"";
-    default: return "nothing";
+    case YAML::NodeType::Null:
+    case YAML::NodeType::Undefined: return "nothing";
   }
+  return "nothing";  // no value of the enum
 }
 
 namespace {

@@ -56,8 +56,16 @@ class Nnf {
         const std::uint32_t p = of(f.operands[0], negated), q = of(f.operands[1], negated);
         return add({negated ? Node::Release : Node::Until, p, q});  // not (p U q) = not p R not q
       }
-      default: return add({Node::False});  // a quantifier inside: not LTL, never asked
+      case FormulaKind::All:
+      case FormulaKind::Bound:
+      case FormulaKind::Compare:
+      case FormulaKind::Deadlock:
+      case FormulaKind::Exists:
+      case FormulaKind::False:
+      case FormulaKind::Fireable:
+      case FormulaKind::True: return add({Node::False});  // atoms are above; a quantifier inside: not LTL, never asked
     }
+    return add({Node::False});  // no value of the enum
   }
 
  private:
@@ -105,7 +113,10 @@ class Nnf {
         }
         break;
       }
-      default: break;
+      case Node::Atom:
+      case Node::False:
+      case Node::NotAtom:
+      case Node::True: break;
     }
     const auto [at, added] = index_.emplace(n, static_cast<std::uint32_t>(nodes.size()));
     if (added) nodes.push_back(n);

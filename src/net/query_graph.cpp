@@ -87,12 +87,22 @@ class Checker {
       }
       case FormulaKind::Exists:
       case FormulaKind::All: return temporal(f.kind == FormulaKind::All, f.operands[0]);
-      default: {
+      case FormulaKind::Bound:
+      case FormulaKind::Compare:
+      case FormulaKind::Deadlock:
+      case FormulaKind::False:
+      case FormulaKind::Fireable:
+      case FormulaKind::Future:
+      case FormulaKind::Globally:
+      case FormulaKind::Next:
+      case FormulaKind::True:
+      case FormulaKind::Until: {
         Set x(n);
         for (StateId s = 0; s < n; ++s) x[s] = check_.holds(f, g_.store->at(s));
         return x;
       }
     }
+    return Set(n, 0);  // no value of the enum
   }
 
  private:
@@ -129,8 +139,19 @@ class Checker {
         Set p = eval(path.operands[0]), q = eval(path.operands[1]);
         return until(p, std::move(q), all);
       }
-      default: return Set(n, 0);  // not CTL: never asked (isCtl)
+      case FormulaKind::All:
+      case FormulaKind::And:
+      case FormulaKind::Bound:
+      case FormulaKind::Compare:
+      case FormulaKind::Deadlock:
+      case FormulaKind::Exists:
+      case FormulaKind::False:
+      case FormulaKind::Fireable:
+      case FormulaKind::Not:
+      case FormulaKind::Or:
+      case FormulaKind::True: return Set(n, 0);  // not CTL: never asked (isCtl)
     }
+    return Set(n, 0);  // no value of the enum
   }
   // E[p U q] (all: A[p U q]): q, then backwards through p, a p marking joining once one of
   // its edges (all: every one) leads into the set; a least fixed point

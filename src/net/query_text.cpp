@@ -438,7 +438,14 @@ bool isStateFormula(const Formula& f) {
     case FormulaKind::Globally:
     case FormulaKind::Until:
       return false;
-    default:
+    case FormulaKind::And:
+    case FormulaKind::Compare:
+    case FormulaKind::Deadlock:
+    case FormulaKind::False:
+    case FormulaKind::Fireable:
+    case FormulaKind::Not:
+    case FormulaKind::Or:
+    case FormulaKind::True:
       break;
   }
   for (const Formula& o : f.operands) {

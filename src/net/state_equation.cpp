@@ -241,8 +241,15 @@ std::optional<Dnf> dnf(const Net& net, const Formula& f, bool positive) {
       }
       return out;
     }
-    default: return std::nullopt;  // not a state formula
+    case FormulaKind::All:
+    case FormulaKind::Bound:
+    case FormulaKind::Exists:
+    case FormulaKind::Future:
+    case FormulaKind::Globally:
+    case FormulaKind::Next:
+    case FormulaKind::Until: return std::nullopt;  // not a state formula
   }
+  return std::nullopt;  // no value of the enum
 }
 
 }  // namespace

@@ -72,8 +72,10 @@ std::optional<diagram::ItemRef> selectedItem(const NetViewState& s, const Select
     case SelectionKind::Place: return find(s.layout.places, diagram::ItemKind::Place);
     case SelectionKind::Transition: return find(s.layout.transitions, diagram::ItemKind::Transition);
     case SelectionKind::Instance: return find(s.layout.instances, diagram::ItemKind::Instance);
-    default: return std::nullopt;
+    case SelectionKind::None:
+    case SelectionKind::Node: return std::nullopt;  // nothing of the net
   }
+  return std::nullopt;  // no value of the enum
 }
 
 /// Pages of at most this many constructs report each one (positions, activity, tokens); the

@@ -59,8 +59,15 @@ class StateCheck {
         return std::all_of(f.operands.begin(), f.operands.end(), [&](const Formula& o) { return holds(o, m); });
       case FormulaKind::Or:
         return std::any_of(f.operands.begin(), f.operands.end(), [&](const Formula& o) { return holds(o, m); });
-      default: return false;  // not a state formula: never asked
+      case FormulaKind::All:
+      case FormulaKind::Bound:
+      case FormulaKind::Exists:
+      case FormulaKind::Future:
+      case FormulaKind::Globally:
+      case FormulaKind::Next:
+      case FormulaKind::Until: return false;  // not a state formula: never asked
     }
+    return false;  // no value of the enum
   }
 
  private:

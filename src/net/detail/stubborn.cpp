@@ -168,7 +168,13 @@ void Stubborn::addUpSet(const Formula& f, bool positive, const std::uint64_t* m,
         }
       }
       return;  // `not deadlock` fails: the marking is dead, nothing fires
-    default: return;  // not a state formula: never asked
+    case FormulaKind::All:
+    case FormulaKind::Bound:
+    case FormulaKind::Exists:
+    case FormulaKind::Future:
+    case FormulaKind::Globally:
+    case FormulaKind::Next:
+    case FormulaKind::Until: return;  // not a state formula: never asked
   }
 }
 
