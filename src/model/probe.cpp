@@ -81,8 +81,8 @@ std::optional<Probe> nodeProbe(const Simulation& sim, const std::string& path, c
       return std::nullopt;
     }
   }
-  if (const int c = channelOf(q); c >= 0) {
-    // a sensor's own channel (a Gps's `position` is its reading, not its node's place)
+  if (const int c = channelOf(q); c >= 0 && q != "position" && q != "velocity") {
+    // a sensor's own channel (a Gps's `position` is its node's, as for any node)
     p.what = Probe::What::Channel;
     p.field = static_cast<std::size_t>(c);
     p.vector = kind->channels[p.field].type == sensors::ChannelType::Vector;

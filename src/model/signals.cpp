@@ -25,7 +25,10 @@ std::optional<SignalSpec> parseSignalArgument(const std::string& argument, std::
     s.target = rest;
   } else if (kind == "node" && rest.find('.') != std::string::npos) {
     s.kind = SignalSpec::Kind::Node;
-    const auto dot = rest.rfind('.');
+    // the quantity follows the last dot, or the one before when it picks an axis: ball.position.x
+    auto dot = rest.rfind('.');
+    const bool axis = dot + 2 == rest.size() && rest[dot + 1] >= 'x' && rest[dot + 1] <= 'z';
+    if (axis && dot > 0 && rest.rfind('.', dot - 1) != std::string::npos) dot = rest.rfind('.', dot - 1);
     s.target = rest.substr(0, dot);
     s.quantity = rest.substr(dot + 1);
     if (s.target.empty() || s.quantity.empty()) {

@@ -148,6 +148,12 @@ py::object channelOf(const SensorView& v, const std::string& name) {
     case sensors::ChannelType::Vector: return tupleOf(r.get<core::Vec3>(k) * scale);
     case sensors::ChannelType::Numbers: {
       const auto& x = r.get<std::vector<double>>(k);
+      if (c.per_item) {
+        // one per item, beside `items`: a list, as the items are
+        py::list out;
+        for (double f : x) out.append(f * scale);
+        return out;
+      }
       py::array_t<double> out(static_cast<py::ssize_t>(x.size()));
       auto at = out.mutable_unchecked<1>();
       for (std::size_t j = 0; j < x.size(); ++j) at(static_cast<py::ssize_t>(j)) = x[j] * scale;

@@ -72,12 +72,12 @@ class Camera final : public SampledSensor {
 }  // namespace camera
 
 const KindDef kColorCamera{
-    {scene::NodeKind::ColorCamera, camera::kChannels, 0, -1, "it took a picture now", Sampling::Rate, true, true},
+    {scene::NodeKind::ColorCamera, camera::kChannels, 0, "it took a picture now", Sampling::Rate, true},
     camera::check,
     makeSensor<camera::Camera>};
 
 const KindDef kDepthCamera{
-    {scene::NodeKind::DepthCamera, camera::kChannels, 0, -1, "it took a picture now", Sampling::Rate, true, true},
+    {scene::NodeKind::DepthCamera, camera::kChannels, 0, "it took a picture now", Sampling::Rate, true},
     camera::check,
     makeSensor<camera::Camera>};
 

@@ -38,12 +38,12 @@ Value emptyValue(ChannelType type) {
   return 0.0;
 }
 
-std::string numberText(double x) {
+std::string numberText(double x, int digits) {
   char text[64];
   if (std::isfinite(x) && std::abs(x) < 1e15 && x == std::floor(x)) {
     std::snprintf(text, sizeof text, "%.0f", x == 0 ? 0.0 : x);  // no "-0"
   } else {
-    std::snprintf(text, sizeof text, "%.5g", x);
+    std::snprintf(text, sizeof text, "%.*g", digits, x);
   }
   return text;
 }
@@ -62,18 +62,18 @@ std::string channelText(const Channel& c, const Value& v, const std::function<st
     return list.empty() ? std::string("none") : out;
   };
   switch (c.type) {
-    case ChannelType::Number: return withUnit(numberText(std::get<double>(v) * scale));
+    case ChannelType::Number: return withUnit(numberText(std::get<double>(v) * scale, c.digits));
     case ChannelType::Flag: return std::get<bool>(v) ? "yes" : "no";
     case ChannelType::Vector: {
       const core::Vec3 x = std::get<core::Vec3>(v) * scale;
-      return withUnit("(" + numberText(x.x) + ", " + numberText(x.y) + ", " + numberText(x.z) + ")");
+      return withUnit("(" + numberText(x.x, c.digits) + ", " + numberText(x.y, c.digits) + ", " + numberText(x.z, c.digits) + ")");
     }
     case ChannelType::Numbers: {
       const auto& x = std::get<std::vector<double>>(v);
       if (x.empty()) return "none";
       const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
-      return withUnit(std::to_string(x.size()) + (x.size() == 1 ? " value, " : " values, ") + numberText(*lo * scale) +
-                      " to " + numberText(*hi * scale));
+      return withUnit(std::to_string(x.size()) + (x.size() == 1 ? " value, " : " values, ") + numberText(*lo * scale, c.digits) +
+                      " to " + numberText(*hi * scale, c.digits));
     }
     case ChannelType::Items: {
       std::vector<std::string> names;

@@ -47,8 +47,9 @@ class Contact final : public SampledSensor {
 
 }  // namespace contact
 
-const KindDef kContact{{scene::NodeKind::Contact, contact::kChannels, 2, 0, "it took a sample now", Sampling::Rate, true},
+const KindDef kContact{{scene::NodeKind::Contact, contact::kChannels, 2, "it took a sample now", Sampling::Rate},
                        contact::check,
-                       makeSensor<contact::Contact>};
+                       makeSensor<contact::Contact>,
+                       [](physics::World& world, const scene::Node& n) { world.watchContacts(n); }};
 
 }  // namespace gdpn::sensors::detail

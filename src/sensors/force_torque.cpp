@@ -45,8 +45,11 @@ class ForceTorque final : public SampledSensor {
 
 }  // namespace force_torque
 
-const KindDef kForceTorque{{scene::NodeKind::ForceTorque, force_torque::kChannels, 2, -1, "it took a sample now", Sampling::Rate, true},
+const KindDef kForceTorque{{scene::NodeKind::ForceTorque, force_torque::kChannels, 2, "it took a sample now", Sampling::Rate},
                            force_torque::check,
-                           makeSensor<force_torque::ForceTorque>};
+                           makeSensor<force_torque::ForceTorque>,
+                           [](physics::World& world, const scene::Node& n) {
+                             if (n.parent() != nullptr) world.watchJoint(*n.parent());
+                           }};
 
 }  // namespace gdpn::sensors::detail

@@ -13,8 +13,10 @@ namespace gps {  // named, not anonymous: the kinds share a unity build
 namespace F = scene::field;
 
 constexpr Channel kChannels[] = {
-    {"position", ChannelType::Vector, "m",
-     "x, y, z in the world's frame; with frame: geodetic, latitude and longitude (deg) and altitude (m)"},
+    // no one unit: metres, or degrees and metres
+    {"position", ChannelType::Vector, "",
+     "x, y, z (m) in the world's frame; with frame: geodetic, latitude and longitude (deg) and altitude (m)", false,
+     false, 10},
     {"samples", ChannelType::Number, "", "samples taken so far"},
 };
 
@@ -102,7 +104,7 @@ class Gps final : public SampledSensor {
 
 }  // namespace gps
 
-const KindDef kGps{{scene::NodeKind::Gps, gps::kChannels, 1, -1, "it took a sample now", Sampling::Rate, true},
+const KindDef kGps{{scene::NodeKind::Gps, gps::kChannels, 1, "it took a sample now", Sampling::Rate},
                    gps::check,
                    makeSensor<gps::Gps>};
 

@@ -81,7 +81,7 @@ class GradientSensor final : public Sensor {
 
 }  // namespace gradient_sensor
 
-const KindDef kGradientSensor{{scene::NodeKind::GradientSensor, gradient_sensor::kChannels, 1, -1, "it reads a field", Sampling::EveryStep},
+const KindDef kGradientSensor{{scene::NodeKind::GradientSensor, gradient_sensor::kChannels, 1, "it reads a field", Sampling::EveryStep},
                               gradient_sensor::check,
                               makeSensor<gradient_sensor::GradientSensor>};
 

@@ -37,11 +37,11 @@ Hub::Hub(scene::Scene& scene, physics::World* world, std::uint64_t seed) : scene
             [](const Entry& a, const Entry& b) { return a.sensor->node().path() < b.sensor->node().path(); });
   for (std::size_t i = 0; i < entries_.size(); ++i) entry_of_[entries_[i].sensor->node().handle()] = i;
   if (!world_) return;
-  // the physics keeps the forces that contact and force-torque sensors read, and only those
+  // the physics keeps what the sensors that ask for it read (contact and joint forces), and only that
   for (const auto& e : entries_) {
-    const scene::Node& n = e.sensor->node();
-    if (n.kind() == scene::NodeKind::Contact) world_->watchContacts(n);
-    if (n.kind() == scene::NodeKind::ForceTorque && n.parent()) world_->watchJoint(*n.parent());
+    if (const detail::KindDef* def = detail::kindDef(e.sensor->node().kind()); def->watch != nullptr) {
+      def->watch(*world_, e.sensor->node());
+    }
   }
 }
 
@@ -139,7 +139,7 @@ const std::vector<Change>& Hub::update(double now) {
     std::sort(change.exited.begin(), change.exited.end(), [&](auto a, auto b) { return pathOf(a) < pathOf(b); });
     // a pulse (a tick, a sample) is no change by itself: what it measured is
     const bool changed = !change.entered.empty() || !change.exited.empty() || !next.sameValues(e.reading) ||
-                         (next.active != e.reading.active && !e.sensor->kind().pulse);
+                         (next.active != e.reading.active && !e.sensor->kind().pulse());
     e.reading = std::move(next);
     if (changed) changes_.push_back(std::move(change));
   }

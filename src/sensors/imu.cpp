@@ -75,7 +75,7 @@ class Imu final : public SampledSensor {
 
 }  // namespace imu
 
-const KindDef kImu{{scene::NodeKind::Imu, imu::kChannels, 2, -1, "it took a sample now", Sampling::Rate, true},
+const KindDef kImu{{scene::NodeKind::Imu, imu::kChannels, 2, "it took a sample now", Sampling::Rate},
                    imu::check,
                    makeSensor<imu::Imu>};
 

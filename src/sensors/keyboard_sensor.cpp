@@ -44,7 +44,7 @@ class KeyboardSensor final : public Sensor {
 }  // namespace keyboard_sensor
 
 const KindDef kKeyboardSensor{
-    {scene::NodeKind::KeyboardSensor, keyboard_sensor::kChannels, 3, -1, "the viewer is inside its parent's box", Sampling::Events},
+    {scene::NodeKind::KeyboardSensor, keyboard_sensor::kChannels, 3, "the viewer is inside its parent's box", Sampling::Events},
     checkNothing,
     makeSensor<keyboard_sensor::KeyboardSensor>};
 

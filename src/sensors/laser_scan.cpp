@@ -69,7 +69,7 @@ class LaserScan final : public SampledSensor {
 
 }  // namespace laser_scan
 
-const KindDef kLaserScan{{scene::NodeKind::LaserScan, laser_scan::kChannels, 1, -1, "it took a sample now", Sampling::Rate, true},
+const KindDef kLaserScan{{scene::NodeKind::LaserScan, laser_scan::kChannels, 1, "it took a sample now", Sampling::Rate},
                          laser_scan::check,
                          makeSensor<laser_scan::LaserScan>};
 

@@ -35,7 +35,7 @@ class MouseSensor final : public Sensor {
 
 }  // namespace mouse_sensor
 
-const KindDef kMouseSensor{{scene::NodeKind::MouseSensor, mouse_sensor::kChannels, 1, -1, "a click fell on its parent now", Sampling::Events},
+const KindDef kMouseSensor{{scene::NodeKind::MouseSensor, mouse_sensor::kChannels, 1, "a click fell on its parent now", Sampling::Events},
                            checkNothing,
                            makeSensor<mouse_sensor::MouseSensor>};
 

@@ -32,7 +32,7 @@ class RangeFinder final : public Sensor {
 
 }  // namespace range_finder
 
-const KindDef kRangeFinder{{scene::NodeKind::RangeFinder, range_finder::kChannels, 0, -1, "it sees something", Sampling::EveryStep},
+const KindDef kRangeFinder{{scene::NodeKind::RangeFinder, range_finder::kChannels, 0, "it sees something", Sampling::EveryStep},
                            checkNothing,
                            makeSensor<range_finder::RangeFinder>};
 

@@ -8,6 +8,7 @@ namespace region {  // named, not anonymous: the kinds share a unity build
 constexpr Channel kChannels[] = {
     {"items", ChannelType::Items, "", "the bodies (or static shapes) inside, in path order"},
     {"count", ChannelType::Number, "", "how many items are inside"},
+    {"hit", ChannelType::Node, "", "what its ray hits first, a static shape too (shape: ray; none otherwise)"},
 };
 
 class Region final : public Sensor {
@@ -18,6 +19,7 @@ class Region final : public Sensor {
     if (feel == nullptr) return false;
     next.get<std::vector<scene::NodeHandle>>(0) = feel->items;
     next.get<double>(1) = static_cast<double>(feel->items.size());
+    next.get<scene::NodeHandle>(2) = feel->hit;
     next.active = !feel->items.empty();
     return true;
   }
@@ -25,7 +27,7 @@ class Region final : public Sensor {
 
 }  // namespace region
 
-const KindDef kRegion{{scene::NodeKind::Region, region::kChannels, 1, 0, "something is inside", Sampling::EveryStep},
+const KindDef kRegion{{scene::NodeKind::Region, region::kChannels, 1, "something is inside", Sampling::EveryStep},
                       checkNothing,
                       makeSensor<region::Region>};
 

@@ -82,7 +82,7 @@ std::string channelsMarkdown() {
       const Channel& c = kind->channels[i];
       out += row({i == 0 ? name : "", "`" + std::string(c.name) + "`" + (i == kind->primary ? " (value)" : ""),
                   std::string(channelTypeName(c.type)),
-                  c.angular ? "rad/s (deg/s in scripts with angles: degrees)" : std::string(c.unit), std::string(c.help)});
+                  c.angular ? "rad/s (deg/s where the model's angles are degrees)" : std::string(c.unit), std::string(c.help)});
     }
     out += row({"", "`active`", "flag", "", std::string(kind->active)});
   }

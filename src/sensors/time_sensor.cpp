@@ -28,7 +28,7 @@ class TimeSensor final : public Sensor {
 
 }  // namespace time_sensor
 
-const KindDef kTimeSensor{{scene::NodeKind::TimeSensor, time_sensor::kChannels, 0, -1, "it ticked now", Sampling::Clock, true},
+const KindDef kTimeSensor{{scene::NodeKind::TimeSensor, time_sensor::kChannels, 0, "it ticked now", Sampling::Clock},
                           checkNothing,
                           makeSensor<time_sensor::TimeSensor>};
 

@@ -84,6 +84,15 @@ TEST(Signals, CommandLineSignalsAreParsedAndNamedByTheirText) {
   EXPECT_EQ(s->kind, SignalSpec::Kind::Expression);
   EXPECT_EQ(s->target, "len(sim.place('main/p').d0)");
   EXPECT_EQ(parseSignalArgument("place:main/p", why)->target, "main/p");
+  // an axis of a vector: the quantity is the two last words
+  s = parseSignalArgument("node:drop/ball.position.z", why);
+  ASSERT_TRUE(s) << why;
+  EXPECT_EQ(s->target, "drop/ball");
+  EXPECT_EQ(s->quantity, "position.z");
+  s = parseSignalArgument("node:rig/imu.acceleration.x", why);
+  ASSERT_TRUE(s) << why;
+  EXPECT_EQ(s->target, "rig/imu");
+  EXPECT_EQ(s->quantity, "acceleration.x");
   for (const char* bad : {"main/p", "place:", "node:ball", "node:.x", "python:", "pos:ball"}) {
     EXPECT_FALSE(parseSignalArgument(bad, why)) << bad;
   }

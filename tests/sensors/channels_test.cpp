@@ -39,7 +39,7 @@ TEST(SensorChannels, EachChannelIsNamedTypedAndExplained) {
   for (const SensorKind* kind : sensorKinds()) {
     const std::string type = scene::builtinTypes().find(kind->node_kind)->name;
     std::set<std::string_view> names;
-    bool has_items = false;
+    int items = 0;
     for (const Channel& c : kind->channels) {
       EXPECT_TRUE(lowerIdentifier(c.name)) << type << ": '" << c.name << "' is no lower-case identifier";
       EXPECT_TRUE(names.insert(c.name).second) << type << ": '" << c.name << "' twice";
@@ -54,16 +54,17 @@ TEST(SensorChannels, EachChannelIsNamedTypedAndExplained) {
       if (c.per_item) {
         EXPECT_EQ(c.type, ChannelType::Numbers) << type << "." << c.name;
       }
-      has_items = has_items || c.type == ChannelType::Items;
+      items += c.type == ChannelType::Items ? 1 : 0;
     }
-    // the main number, and the Items channel whose changes are enter and exit events
+    // the main number; at most one Items channel (whose changes are enter and exit events)
     ASSERT_LT(kind->primary, kind->channels.size()) << type;
     EXPECT_EQ(kind->channels[kind->primary].type, ChannelType::Number) << type;
-    if (kind->items >= 0) {
-      ASSERT_LT(static_cast<std::size_t>(kind->items), kind->channels.size()) << type;
-      EXPECT_EQ(kind->channels[static_cast<std::size_t>(kind->items)].type, ChannelType::Items) << type;
-    } else {
-      EXPECT_FALSE(has_items) << type << " has an Items channel but names none";
+    EXPECT_LE(items, 1) << type;
+    // a Contact's forces stand beside its items
+    for (const Channel& c : kind->channels) {
+      if (c.per_item) {
+        EXPECT_EQ(items, 1) << type << "." << c.name << " is per item, but of which items?";
+      }
     }
     EXPECT_EQ(kind->sampling == Sampling::Rate, sampled(kind->node_kind)) << type;
   }

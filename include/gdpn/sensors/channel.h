@@ -45,6 +45,8 @@ struct Channel {
   bool angular = false;
   /// Numbers: one per item of the kind's Items channel, in its order (a Contact's forces).
   bool per_item = false;
+  /// Significant digits a person is shown (latitudes need more than distances).
+  int digits = 5;
 };
 
 /// The name of `type`: "number", "flag", "vector", "numbers", "items", "node", "text", "texts".
@@ -53,8 +55,9 @@ struct Channel {
 /// The value a channel of `type` holds before anything is sensed (0, false, empty).
 [[nodiscard]] Value emptyValue(ChannelType type);
 
-/// `x` as a person reads it: whole numbers without decimals, others to five significant digits.
-[[nodiscard]] std::string numberText(double x);
+/// `x` as a person reads it: whole numbers without decimals, others to `digits` significant
+/// digits.
+[[nodiscard]] std::string numberText(double x, int digits = 5);
 
 /// The unit channel `c` is shown in: its own, or deg/s for an angular rate when `degrees`.
 [[nodiscard]] std::string_view shownUnit(const Channel& c, bool degrees);

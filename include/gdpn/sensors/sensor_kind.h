@@ -26,16 +26,17 @@ struct SensorKind {
   scene::NodeKind node_kind;           ///< the scene node kind
   std::span<const Channel> channels;   ///< what it reports, in order
   /// The number channel that `value` (scripts) and `reading` (signals, the I/O map) give.
+  /// Its Items channel, if it has one (at most one), is what `items` gives and whose changes
+  /// are the `on_enter` and `on_exit` events.
   std::size_t primary = 0;
-  /// Its Items channel, whose changes are the `on_enter` and `on_exit` events (-1: none).
-  int items = -1;
   std::string_view active;  ///< what `active` means for it, one line
   Sampling sampling = Sampling::EveryStep;  ///< when it reads
-  /// `active` is a pulse (a tick, a sample taken): its rise and fall alone are no change of
-  /// the reading (what the tick or sample measured is).
-  bool pulse = false;
   /// It takes pictures (cameras): `Hub::image` renders them when read.
   bool pictures = false;
+
+  /// `active` is a pulse (a sample taken, a tick): its rise and fall alone are no change of
+  /// the reading (what the sample or tick measured is).
+  [[nodiscard]] bool pulse() const { return sampling == Sampling::Rate || sampling == Sampling::Clock; }
 };
 
 /// The description of sensor kind `kind`; null for node kinds that are no sensors.

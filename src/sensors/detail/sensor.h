@@ -118,6 +118,9 @@ struct KindDef {
                 const std::string& model_dir) = nullptr;
   /// A sensor for node `n`.
   std::unique_ptr<Sensor> (*make)(scene::Node& n, const SensorKind& kind, std::uint64_t seed) = nullptr;
+  /// Asks the physics to keep what sensor `n` reads that it keeps only when asked (the forces
+  /// of a body's contacts, of a joint); null for kinds that need nothing.
+  void (*watch)(physics::World& world, const scene::Node& n) = nullptr;
 };
 
 /// A check for kinds that need nothing.
