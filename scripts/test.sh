@@ -11,8 +11,9 @@
 # The whole must stay within 30 minutes on 2 cores. Each stage has a budget, in seconds on
 # the project's 2-core machine (docs/performance.md, "CI"); the script prints each stage's
 # time beside it at the end, and a stage over its budget is said there (not a failure: the
-# machines' speed varies by a third from run to run). The builds of 3 and 4 compile the
-# libraries as unity builds (GDPN_UNITY_LIBRARIES).
+# machines' speed varies by a third from run to run). The builds of 2, 3 and 4 compile the
+# libraries as unity builds (GDPN_UNITY_LIBRARIES; the dev preset does not, so that a file
+# that lacks an include still fails there).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
