@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "detail/sensor.h"
-#include "gdpn/scene/sensor_rules.h"
 
 namespace gdpn::sensors::detail {
 namespace camera {  // named, not anonymous: the kinds share a unity build
@@ -17,11 +16,7 @@ constexpr Channel kChannels[] = {
 
 /// A camera's far beyond its near, and within reach of the depth buffer.
 bool check(const scene::Scene& /*scene*/, const scene::Node& n, core::Diagnostics& diags, const std::string& /*dir*/) {
-  const auto rule = scene::sensorRule(n, scene::kAsItIs, {});
-  if (rule.message.empty()) return true;
-  const auto& at = n.field_locs[rule.field].line ? n.field_locs[rule.field] : n.loc;
-  diags.error(at, "camera '" + n.path() + "': " + rule.message);
-  return false;
+  return checkFieldRules(n, diags, "camera", ": ");
 }
 
 class Camera final : public SampledSensor {

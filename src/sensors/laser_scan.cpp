@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "detail/sensor.h"
-#include "gdpn/scene/sensor_rules.h"
 
 namespace gdpn::sensors::detail {
 namespace laser_scan {  // named, not anonymous: the kinds share a unity build
@@ -33,11 +32,7 @@ std::vector<core::Vec3> fanOf(const scene::Node& n) {
 
 /// A fan with an angle between its rays.
 bool check(const scene::Scene& /*scene*/, const scene::Node& n, core::Diagnostics& diags, const std::string& /*dir*/) {
-  const auto rule = scene::sensorRule(n, scene::kAsItIs, {});
-  if (rule.message.empty()) return true;
-  const auto& at = n.field_locs[rule.field].line ? n.field_locs[rule.field] : n.loc;
-  diags.error(at, "laser scan '" + n.path() + "' " + rule.message);
-  return false;
+  return checkFieldRules(n, diags, "laser scan", " ");
 }
 
 class LaserScan final : public SampledSensor {

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "gdpn/core/text.h"
+#include "gdpn/scene/sensor_rules.h"
 
 namespace gdpn::sensors::detail {
 
@@ -19,6 +20,14 @@ const scene::Node* bodyAbove(const scene::Node& n) {
     if (p->kind() == scene::NodeKind::Body) return p;
   }
   return nullptr;
+}
+
+bool checkFieldRules(const scene::Node& n, core::Diagnostics& diags, const std::string& what, const std::string& separator) {
+  const auto rule = scene::sensorRule(n, scene::kAsItIs, {});
+  if (rule.message.empty()) return true;
+  const auto& at = n.field_locs[rule.field].line ? n.field_locs[rule.field] : n.loc;
+  diags.error(at, what + " '" + n.path() + "'" + separator + rule.message);
+  return false;
 }
 
 bool checkNothing(const scene::Scene& /*scene*/, const scene::Node& /*n*/, core::Diagnostics& /*diags*/,

@@ -123,6 +123,11 @@ struct KindDef {
   void (*watch)(physics::World& world, const scene::Node& n) = nullptr;
 };
 
+/// Reports the first broken rule between the fields of sensor `n` (scene::sensorRule) at the
+/// field it blames (the node where that field is not written), as `what` + the path +
+/// `separator` + the rule's message; false when one is broken.
+bool checkFieldRules(const scene::Node& n, core::Diagnostics& diags, const std::string& what, const std::string& separator);
+
 /// A check for kinds that need nothing.
 bool checkNothing(const scene::Scene& scene, const scene::Node& n, core::Diagnostics& diags, const std::string& model_dir);
 
