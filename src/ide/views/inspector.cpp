@@ -233,7 +233,7 @@ void sensorReading(App& app, const model::Simulation& sim, const scene::Node& se
   ImGui::Text("active: %s", r.active ? "yes" : "no");
   if (kind != nullptr) {
     ImGui::SameLine();
-    ImGui::TextDisabled("(%s)", std::string(kind->active).c_str());
+    ImGui::TextDisabled("(yes when %s)", std::string(kind->active).c_str());
   }
   report["active"] = r.active;
   if (kind == nullptr || !kind->pictures) return;
