@@ -33,7 +33,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (t >= net->transitions().size()) __builtin_trap();
   }
   for (const auto& [place, n] : w->marking) {
-    if (net->findPlace(place) < 0) __builtin_trap();
+    if (!net->findPlace(place)) __builtin_trap();
   }
   return 0;
 }

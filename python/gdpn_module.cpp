@@ -286,10 +286,10 @@ class Model {
     const model::Simulation* sim_ = &session_->simulation();
     const auto& net = sim_->net();
     const auto p = net.findPlace(place);
-    if (p < 0) throw py::key_error("no place '" + place + "'");
-    const auto& pl = net.places()[static_cast<std::size_t>(p)];
+    if (!p) throw py::key_error("no place '" + place + "'");
+    const auto& pl = net.places()[*p];
     py::dict slots;
-    for (auto ps = pl.slots_begin; ps < pl.slots_end; ++ps) {
+    for (net::PlaceSlotId ps{pl.slots_begin}; ps < pl.slots_end; ++ps) {
       const auto& slot = net.placeSlots()[ps];
       if (slot.kind == net::SlotKind::Node) {
         py::list names;

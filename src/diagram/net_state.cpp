@@ -31,8 +31,8 @@ PageBinding bindPage(const net::Net& net, const PageView& view) {
   if (view.page == nullptr) return b;
   const net::PageSpec& page = *view.page;
   const bool alone = view.prefix.empty();
-  b.places.assign(page.places.size(), -1);
-  b.transitions.assign(page.transitions.size(), -1);
+  b.places.assign(page.places.size(), std::nullopt);
+  b.transitions.assign(page.transitions.size(), std::nullopt);
   b.arcs.assign(page.arcs.size(), {});
   if (alone) return b;
   for (std::size_t i = 0; i < page.places.size(); ++i) b.places[i] = net.findPlace(qualify(view, page.places[i].name));
@@ -42,9 +42,9 @@ PageBinding bindPage(const net::Net& net, const PageView& view) {
   for (std::size_t a = 0; a < page.arcs.size(); ++a) {
     const auto& arc = page.arcs[a];
     auto& out = b.arcs[a];
-    if ((out.transition = net.findTransition(qualify(view, arc.to))) >= 0) {
+    if ((out.transition = net.findTransition(qualify(view, arc.to)))) {
       out.place = net.findPlace(qualify(view, arc.from));
-    } else if ((out.transition = net.findTransition(qualify(view, arc.from))) >= 0) {
+    } else if ((out.transition = net.findTransition(qualify(view, arc.from)))) {
       out.place = net.findPlace(qualify(view, arc.to));
       out.output = true;
     }
@@ -68,9 +68,9 @@ NetState netStateOf(const net::Kernel& kernel, const PageBinding& binding, const
   s.places.resize(binding.places.size());
   for (std::size_t i = 0; i < binding.places.size(); ++i) {
     const auto p = binding.places[i];
-    if (p < 0) continue;
-    const net::Place& place = net.places()[static_cast<std::size_t>(p)];
-    for (auto ps = place.slots_begin; ps < place.slots_end; ++ps) {
+    if (!p) continue;
+    const net::Place& place = net.places()[*p];
+    for (net::PlaceSlotId ps{place.slots_begin}; ps < place.slots_end; ++ps) {
       const net::PlaceSlot& slot = net.placeSlots()[ps];
       SlotMarking m{slot.slot, slot.kind, kernel.marking(ps), {}};
       if (!net.sensorPath(ps).empty()) {
@@ -86,8 +86,8 @@ NetState netStateOf(const net::Kernel& kernel, const PageBinding& binding, const
   s.transitions.assign(binding.transitions.size(), Activity::Idle);
   s.occurrences.assign(binding.transitions.size(), 0);
   for (std::size_t i = 0; i < binding.transitions.size(); ++i) {
-    if (binding.transitions[i] < 0) continue;
-    const auto t = static_cast<net::TransitionId>(binding.transitions[i]);
+    if (!binding.transitions[i]) continue;
+    const auto t = *binding.transitions[i];
     s.transitions[i] = kernel.occurring(t) ? Activity::Occurring : kernel.enabled(t) ? Activity::Enabled : Activity::Idle;
     s.occurrences[i] = static_cast<std::uint32_t>(kernel.occurrences(t));
   }
@@ -95,15 +95,15 @@ NetState netStateOf(const net::Kernel& kernel, const PageBinding& binding, const
   s.arcs.assign(binding.arcs.size(), std::nullopt);
   for (std::size_t a = 0; a < binding.arcs.size(); ++a) {
     const auto [t, p, output] = binding.arcs[a];
-    if (t < 0 || p < 0) continue;
-    const auto first = net.transitions()[static_cast<std::size_t>(t)].terms_begin;
+    if (!t || !p) continue;
+    const auto first = net.transitions()[*t].terms_begin;
     bool any = false, all = true;
-    const auto terms = net.termsOf(static_cast<net::TransitionId>(t));
+    const auto terms = net.termsOf(*t);
     for (std::size_t k = 0; k < terms.size(); ++k) {
-      if (net.placeSlots()[terms[k].place_slot].place != static_cast<net::PlaceId>(p)) continue;
+      if (net.placeSlots()[terms[k].place_slot].place != *p) continue;
       if ((terms[k].kind == net::TermKind::Output) != output) continue;
       any = true;
-      all = all && termHolds(kernel, static_cast<net::TermId>(first + k));
+      all = all && termHolds(kernel, net::TermId{first + k});
     }
     if (any) s.arcs[a] = all;
   }

@@ -19,13 +19,13 @@ std::string runJson(const model::Report& report, const net::Net& net, const net:
   auto seconds = [dt](std::int64_t step) { return static_cast<double>(step) * dt; };
   ordered_json tl;
   auto& names = tl["transitions"] = ordered_json::array();
-  for (net::TransitionId t = 0; t < net.transitions().size(); ++t) names.push_back(net.transitionName(t));
+  for (net::TransitionId t{0}; t < net.transitions().size(); ++t) names.push_back(net.transitionName(t));
   auto& occurrences = tl["occurrences"] = ordered_json::array();
   for (const auto& o : timeline.occurrences()) {
-    occurrences.push_back({o.transition, seconds(o.start), o.end < 0 ? ordered_json(nullptr) : ordered_json(seconds(o.end))});
+    occurrences.push_back({o.transition.index(), seconds(o.start), o.end < 0 ? ordered_json(nullptr) : ordered_json(seconds(o.end))});
   }
   auto& places = tl["places"] = ordered_json::array();
-  for (net::PlaceId p = 0; p < net.places().size(); ++p) {
+  for (net::PlaceId p{0}; p < net.places().size(); ++p) {
     if (report.places.size() > p && report.places[p].sensors_only) continue;  // no tokens of their own
     auto changes = ordered_json::array();
     for (const auto& c : timeline.places()[p]) changes.push_back({seconds(c.step), c.tokens});

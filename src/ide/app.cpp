@@ -126,18 +126,18 @@ bool App::selectByName(const std::string& name) {
   }
   if (run_.session() == nullptr) return false;
   const auto& net = run_.session()->simulation().net();
-  if (net.findPlace(name) >= 0) {
+  if (net.findPlace(name)) {
     doc_->select({SelectionKind::Place, name});
     return true;
   }
-  if (net.findTransition(name) >= 0) {
+  if (net.findTransition(name)) {
     doc_->select({SelectionKind::Transition, name});
     fire_target = name;
     return true;
   }
   // an instance: a prefix of qualified names
   const auto prefix = name + "/";
-  for (net::PlaceId p = 0; p < net.places().size(); ++p) {
+  for (net::PlaceId p{0}; p < net.places().size(); ++p) {
     if (net.placeName(p).starts_with(prefix)) {
       doc_->select({SelectionKind::Instance, name});
       return true;

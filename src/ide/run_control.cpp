@@ -181,7 +181,7 @@ std::vector<std::string> RunControl::transitions() const {
   std::vector<std::string> names;
   if (!session_) return names;
   const auto& net = session_->simulation().net();
-  for (net::TransitionId t = 0; t < net.transitions().size(); ++t) names.push_back(net.transitionName(t));
+  for (net::TransitionId t{0}; t < net.transitions().size(); ++t) names.push_back(net.transitionName(t));
   return names;
 }
 

@@ -43,7 +43,7 @@ std::string invariantText(const net::Net& net, const net::Invariant& y) {
   for (const auto& [k, w] : y.weights) {
     if (!s.empty()) s += " + ";
     if (w != 1) s += std::to_string(w) + "*";
-    s += net::placeSlotName(net, k);
+    s += net::placeSlotName(net, net::PlaceSlotId{k});
   }
   return s;
 }
@@ -152,12 +152,12 @@ std::vector<std::string> untimedCaveats(const net::Net& net) {
   };
   auto count = [](std::size_t n, const std::string& what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); };
   std::vector<std::string> guarded, scripted, handled;
-  for (net::TransitionId t = 0; t < index.transitions.size(); ++t) {
+  for (net::TransitionId t{0}; t < index.transitions.size(); ++t) {
     const auto& s = index.transitions[t];
     if (s[0] >= 0) guarded.push_back(net.transitionName(t));
     if (s[1] >= 0 || s[2] >= 0 || s[3] >= 0) scripted.push_back(net.transitionName(t));
   }
-  for (net::PlaceSlotId k = 0; k < index.slots.size(); ++k) {
+  for (net::PlaceSlotId k{0}; k < index.slots.size(); ++k) {
     const auto& s = index.slots[k];
     const auto name = net.placeName(net.placeSlots()[k].place);
     if (std::any_of(s.begin(), s.end(), [](std::int32_t x) { return x >= 0; }) &&
@@ -235,7 +235,7 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
   j["live"] = s.decided ? ordered_json(s.live) : ordered_json(nullptr);
   j["reversible"] = s.decided ? ordered_json(s.reversible) : ordered_json(nullptr);
   j["dead_transitions"] = ordered_json::array();
-  for (net::TransitionId t = 0; t < tr.size(); ++t) {
+  for (net::TransitionId t{0}; t < tr.size(); ++t) {
     if (!s.fired[t]) j["dead_transitions"].push_back(net.transitionName(t));
   }
   j["unbounded_places"] = ordered_json::array();
@@ -244,7 +244,7 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
   for (auto p : s.constant_places) j["constant_places"].push_back(net.placeName(p));
   ordered_json bounds = ordered_json::object();
   bounds.get_ref<ordered_json::object_t&>().reserve(places.size());
-  for (net::PlaceId p = 0; p < places.size(); ++p) {
+  for (net::PlaceId p{0}; p < places.size(); ++p) {
     appendMember(bounds, net.placeName(p), s.place_bound[p] == net::kOmega ? ordered_json("omega") : ordered_json(s.place_bound[p]));
   }
   j["bounds"] = std::move(bounds);
@@ -260,13 +260,13 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
   ij["p"] = ordered_json::array();
   for (const auto& y : inv.p) {
     ordered_json w = ordered_json::object();
-    for (const auto& [k, v] : y.weights) appendMember(w, net::placeSlotName(net, k), v);
+    for (const auto& [k, v] : y.weights) appendMember(w, net::placeSlotName(net, net::PlaceSlotId{k}), v);
     ij["p"].push_back({{"weights", w}, {"tokens", tokensOn(net, y)}});
   }
   ij["t"] = ordered_json::array();
   for (const auto& x : inv.t) {
     ordered_json w = ordered_json::object();
-    for (const auto& [k, v] : x.weights) appendMember(w, net.transitionName(k), v);
+    for (const auto& [k, v] : x.weights) appendMember(w, net.transitionName(net::TransitionId{k}), v);
     ij["t"].push_back(w);
   }
   j["invariants"] = ij;
@@ -289,7 +289,7 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
 std::vector<std::pair<std::string, std::int64_t>> markedPlaces(const net::Net& net,
                                                                 const std::vector<std::int64_t>& marking) {
   std::vector<std::pair<std::string, std::int64_t>> out;
-  for (net::PlaceId pid = 0; pid < net.places().size(); ++pid) {
+  for (net::PlaceId pid{0}; pid < net.places().size(); ++pid) {
     const net::Place& p = net.places()[pid];
     std::int64_t n = 0;
     for (auto k = p.slots_begin; k < p.slots_end; ++k) n += marking[k];
@@ -378,7 +378,7 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
   if (s.complete && s.bounded && !s.place_bound.empty()) {
     // each place's bound, places of equal bound together
     std::map<std::int64_t, std::vector<std::string>> by_bound;
-    for (net::PlaceId p = 0; p < s.place_bound.size(); ++p) by_bound[s.place_bound[p]].emplace_back(net.placeName(p));
+    for (net::PlaceId p{0}; p < s.place_bound.size(); ++p) by_bound[s.place_bound[p]].emplace_back(net.placeName(p));
     for (auto it = by_bound.rbegin(); it != by_bound.rend(); ++it) {
       const std::string head = std::string(kValue, ' ') + "at most " + std::to_string(it->first) + ":";
       out << head;
@@ -396,7 +396,7 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
   out << "  quasi-live:      " << yes(s.quasi_live);
   if (!s.quasi_live) {
     std::vector<std::string> names;
-    for (net::TransitionId t = 0; t < tr.size(); ++t) {
+    for (net::TransitionId t{0}; t < tr.size(); ++t) {
       if (!s.fired[t]) names.emplace_back(net.transitionName(t));
     }
     const std::string head = s.complete ? "dead (" : "not fired yet (";
@@ -432,7 +432,7 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
   out << "  T-invariants (" << inv.t.size() << "):" << (inv.t.empty() ? " none" : "") << "\n";
   for (std::size_t i = 0; i < inv.t.size() && i < kShown; ++i) {
     std::vector<std::string> names;
-    for (const auto& [k, w] : inv.t[i].weights) names.push_back((w != 1 ? std::to_string(w) + "*" : "") + net.transitionName(k));
+    for (const auto& [k, w] : inv.t[i].weights) names.push_back((w != 1 ? std::to_string(w) + "*" : "") + net.transitionName(net::TransitionId{k}));
     out << "   ";
     core::writeWrapped(out, 3, names, 6, kShownNames);
     out << "\n";

@@ -20,7 +20,7 @@ struct IoMap::Bound {
   scene::NodeHandle node = 0;        // written field: its node
   std::size_t field = 0;             // written field: its index
   scene::FieldKind kind = scene::FieldKind::Float;
-  net::PlaceSlotId slot = 0;         // written place: its control slot
+  net::PlaceSlotId slot{0};         // written place: its control slot
   bool coil = false;                 // a place's coil: the state last written
   std::string writer;                // the client that wrote it last
   double written = std::numeric_limits<double>::quiet_NaN();  // the value written last (NaN: none yet)
@@ -81,7 +81,7 @@ std::unique_ptr<IoMap> IoMap::create(Simulation& sim, const IoSpec& spec, core::
           fail("place '" + e.target + "' holds node tokens or several slots: a controller sets plain tokens only");
           continue;
         }
-        b.slot = place.slots_begin;
+        b.slot = net::PlaceSlotId{place.slots_begin};
       }
     } else if (!e.key.empty()) {
       probe = keyProbe(sim, e.target, e.key, why);

@@ -38,13 +38,13 @@ const scene::Node* liveNode(const Simulation& sim, const std::string& path, std:
 
 std::optional<Probe> placeProbe(const Simulation& sim, const std::string& place, std::string& why) {
   const auto id = sim.net().findPlace(place);
-  if (id < 0) {
+  if (!id) {
     why = "no place '" + place + "' (names are qualified: page/place)";
     return std::nullopt;
   }
   Probe p;
   p.what = Probe::What::Tokens;
-  p.place = static_cast<net::PlaceId>(id);
+  p.place = *id;
   return p;
 }
 
@@ -155,9 +155,8 @@ std::optional<Probe> keyProbe(const Simulation& sim, const std::string& path, co
 
 bool readProbe(const Simulation& sim, const Probe& p, double* out) {
   if (p.what == Probe::What::Tokens) {
-    const auto& place = sim.net().places()[p.place];
     std::int64_t tokens = 0;
-    for (auto ps = place.slots_begin; ps < place.slots_end; ++ps) tokens += sim.kernel().marking(ps);
+    for (const net::PlaceSlotId ps : sim.net().placeSlotsOf(p.place)) tokens += sim.kernel().marking(ps);
     *out = static_cast<double>(tokens);
     return true;
   }

@@ -30,7 +30,7 @@ struct Probe {
     Field,       ///< one of the node's number or bool fields
   };
   What what = What::Tokens;
-  net::PlaceId place = 0;         ///< Tokens: the place
+  net::PlaceId place{0};         ///< Tokens: the place
   scene::NodeHandle node = 0;     ///< the node
   std::size_t field = 0;          ///< Field: its index; Channel: the channel's
   bool vector = false;            ///< Channel: a vector's (three numbers, or `axis` alone)

@@ -48,7 +48,7 @@ void watchRoundTrips(Simulation& sim, double cycle_seconds) {
     // every transition that takes from the invariant (b.transitions holds the longest circuit's)
     if (takers_of.empty()) {
       takers_of.resize(net.placeSlots().size());
-      for (net::TransitionId t = 0; t < net.transitions().size(); ++t) {
+      for (net::TransitionId t{0}; t < net.transitions().size(); ++t) {
         for (const auto& term : net.termsOf(t)) {
           if (term.kind == net::TermKind::Input) takers_of[term.place_slot].push_back(t);
         }
@@ -59,7 +59,7 @@ void watchRoundTrips(Simulation& sim, double cycle_seconds) {
     std::sort(takers.begin(), takers.end());
     takers.erase(std::unique(takers.begin(), takers.end()), takers.end());
     if (!plan->trips) plan->trips = std::make_unique<net::RoundTrips>(net.transitions().size());
-    plan->watch_of[b.invariant] = plan->trips->watch(net, home->first, takers);
+    plan->watch_of[b.invariant] = plan->trips->watch(net, net::PlaceSlotId{home->first}, takers);
   }
   sim.keepCycles(std::move(plan));
 }
@@ -79,7 +79,7 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
   // hundreds of thousands of lines)
   r.transitions.reserve(net.transitions().size());
   r.places.reserve(net.places().size());
-  for (net::TransitionId t = 0; t < net.transitions().size(); ++t) {
+  for (net::TransitionId t{0}; t < net.transitions().size(); ++t) {
     const auto& s = stats.transitions()[t];
     TransitionFigures f;
     f.name = net.transitionName(t);
@@ -97,7 +97,7 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
                                                         : f.mean_busy / static_cast<double>(f.servers);
     r.transitions.push_back(std::move(f));
   }
-  for (net::PlaceId p = 0; p < net.places().size(); ++p) {
+  for (net::PlaceId p{0}; p < net.places().size(); ++p) {
     const auto& s = stats.places()[p];
     PlaceFigures f;
     f.name = net.placeName(p);
@@ -107,7 +107,7 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
     f.throughput = outcome.time > 0 ? static_cast<double>(s.deposited) / outcome.time : 0.0;
     const auto& place = net.places()[p];
     f.sensors_only = place.slots_begin < place.slots_end;
-    for (auto ps = place.slots_begin; ps < place.slots_end; ++ps) {
+    for (net::PlaceSlotId ps{place.slots_begin}; ps < place.slots_end; ++ps) {
       f.sensors_only = f.sensors_only && net.placeSlots()[ps].kind == net::SlotKind::Sensor;
     }
     r.places.push_back(std::move(f));

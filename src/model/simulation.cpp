@@ -191,7 +191,7 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
   }
   // sensor slots read sensor nodes of the plant
   sim->slot_sensor_.assign(sim->net_->placeSlots().size(), 0);
-  for (net::PlaceSlotId ps = 0; ps < sim->net_->placeSlots().size(); ++ps) {
+  for (net::PlaceSlotId ps{0}; ps < sim->net_->placeSlots().size(); ++ps) {
     const std::string& path = sim->net_->sensorPath(ps);
     if (path.empty()) continue;
     const scene::Node* sensor = sim->scene_ ? sim->scene_->find(path) : nullptr;
@@ -202,7 +202,7 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
     sim->slot_sensor_[ps] = sensor->handle();
     sim->sensor_slots_[sensor->handle()].push_back(ps);
   }
-  for (net::TermId id = 0; id < sim->net_->terms().size(); ++id) {
+  for (net::TermId id{0}; id < sim->net_->terms().size(); ++id) {
     const auto& term = sim->net_->terms()[id];
     if (term.kind == net::TermKind::Condition) sim->conditions_of_[term.place_slot].push_back(id);
   }

@@ -60,13 +60,13 @@ std::optional<Witness> loadWitness(const net::Net& net, const std::string& file,
   if (j.contains("query") && j["query"].is_string()) w.query = j["query"].get<std::string>();
   auto transitions = [&](const char* key, std::vector<net::TransitionId>& out) {
     for (const auto& x : j[key]) {
-      const std::int64_t t = x.is_string() ? net.findTransition(x.get<std::string>()) : -1;
-      if (t < 0) {
+      const auto t = x.is_string() ? net.findTransition(x.get<std::string>()) : std::nullopt;
+      if (!t) {
         const std::string name = x.is_string() ? x.get<std::string>() : x.dump();
         diags.error(where(key, name), "the net has no transition '" + name + "'");
         continue;
       }
-      out.push_back(static_cast<net::TransitionId>(t));
+      out.push_back(*t);
     }
   };
   transitions("path", w.path);
@@ -83,9 +83,10 @@ std::optional<Witness> loadWitness(const net::Net& net, const std::string& file,
       diags.error(where("marking", ""), "\"marking\" must map place names to token counts");
     } else {
       for (const auto& [place, n] : j["marking"].items()) {
-        if (net.findPlace(place) < 0) diags.error(where("marking", place), "the net has no place '" + place + "'");
+        const bool known = net.findPlace(place).has_value();
+        if (!known) diags.error(where("marking", place), "the net has no place '" + place + "'");
         if (!n.is_number_integer()) diags.error(where("marking", place), "the tokens of '" + place + "' must be a whole number");
-        if (net.findPlace(place) >= 0 && n.is_number_integer()) w.marking.emplace_back(place, n.get<std::int64_t>());
+        if (known && n.is_number_integer()) w.marking.emplace_back(place, n.get<std::int64_t>());
       }
     }
   }
@@ -95,9 +96,9 @@ std::optional<Witness> loadWitness(const net::Net& net, const std::string& file,
 
 std::string witnessMismatch(const net::Net& net, const net::Kernel& kernel, const Witness& witness) {
   std::vector<std::int64_t> expected(net.places().size(), 0);
-  for (const auto& [place, n] : witness.marking) expected[static_cast<std::size_t>(net.findPlace(place))] = n;
+  for (const auto& [place, n] : witness.marking) expected[*net.findPlace(place)] = n;
   std::string out;
-  for (net::PlaceId p = 0; p < net.places().size(); ++p) {
+  for (net::PlaceId p{0}; p < net.places().size(); ++p) {
     const std::int64_t has = kernel.placeTokens(p);
     if (has == expected[p]) continue;
     out += (out.empty() ? "" : "; ") + std::string("'") + net.placeName(p) + "' holds " + std::to_string(has) +

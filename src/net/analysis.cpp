@@ -602,7 +602,7 @@ std::vector<TransitionId> Search::firingsAlong(const std::vector<StateId>& path)
   };
   for (std::size_t i = 0; i + 1 < path.size();) {
     std::size_t best = i;
-    TransitionId via = 0;
+    TransitionId via{0};
     candidates_.find(store_->at(path[i]), firing_, candidates_now_);
     for (TransitionId t : candidates_now_) {
       bool enabled = false;
@@ -631,7 +631,7 @@ void Search::shortestPathToDeadlock(StateSpace& out) {
   std::vector<bool> dead(n, false);
   for (StateId s : dead_states_) dead[s] = true;
   std::vector<StateId> parent(n, kNone);
-  std::vector<TransitionId> via(n, 0);
+  std::vector<TransitionId> via(n);
   std::vector<StateId> queue{0};
   parent[0] = 0;
   const std::size_t words = store_->words();
@@ -668,7 +668,7 @@ StateSpace Search::run() {
   cover_ = p.cover && accelerate_;
   widens_ = p.cover;
   token_delta_.assign(transitions, 0);
-  for (TransitionId t = 0; t < transitions; ++t) {
+  for (TransitionId t{0}; t < transitions; ++t) {
     for (const Term& term : net_.termsOf(t)) {
       if (term.kind == TermKind::Input) token_delta_[t] -= term.weight;
       if (term.kind == TermKind::Output) token_delta_[t] += term.weight;
@@ -689,7 +689,7 @@ StateSpace Search::run() {
   fired_.assign(transitions, false);
   bool added = false;
   store_->insert(key.data(), store_->hash(key.data()), added);
-  noteNew(0, 0, 0, false);
+  noteNew(0, 0, TransitionId{0}, false);
 
   auto visit = [&](StateId v) -> bool {
     setRindex(v, next_index_++);

@@ -43,7 +43,7 @@ constexpr std::uint32_t kNone = 0xffffffffu;
 struct KindSource {
   SlotKind kind = SlotKind::Control;
   const SourceLoc* loc = nullptr;  // in the spec
-  PlaceId place = 0;               // the flat place that declared it
+  PlaceId place{0};               // the flat place that declared it
 };
 
 class Compiler {
@@ -463,12 +463,12 @@ class Compiler {
   void instantiate(const PageSpec& page, std::uint32_t parent, std::string_view name, const std::string& node_prefix,
                    std::vector<const PageSpec*>& stack) {
     const PageIndex& index = indexes_.at(&page);
-    const auto base = static_cast<PlaceId>(places_.size());
+    const auto base = static_cast<std::uint32_t>(places_.size());
     const auto scope = builder_.names().addScope(parent, name, tableOf(page), base, 0);
     const auto prefix_index = static_cast<std::uint32_t>(node_prefixes_.size());
     if (!page.places.empty()) node_prefixes_.push_back(node_prefix);
     for (std::uint32_t k = 0; k < page.places.size(); ++k) places_.push_back({&page.places[k], scope, k, prefix_index});
-    std::vector<PlaceId> inner(page.instances.size(), kNone);  // the first place of each instance
+    std::vector<std::optional<PlaceId>> inner(page.instances.size());  // the first place of each instance
     for (std::size_t k = 0; k < page.instances.size(); ++k) {
       const auto& inst = page.instances[k];
       const PageSpec* type = index.instance_types[k];
@@ -478,27 +478,27 @@ class Compiler {
         diags_.error(inst.loc, "page type '" + inst.type + "' contains itself (" + chain + inst.type + ")");
         continue;
       }
-      inner[k] = static_cast<PlaceId>(places_.size());
+      inner[k] = PlaceId{places_.size()};
       stack.push_back(type);
       instantiate(*type, scope, inst.name, node_prefix + inst.name + "/", stack);
       stack.pop_back();
     }
-    const auto tbase = static_cast<TransitionId>(transitions_.size());
+    const auto tbase = static_cast<std::uint32_t>(transitions_.size());
     builder_.names().setFirstTransition(scope, tbase);
     for (std::uint32_t k = 0; k < page.transitions.size(); ++k) transitions_.push_back({&page.transitions[k], scope, k});
-    auto placeOf = [&](const End& end) -> PlaceId {
-      if (end.what == End::What::Place) return base + end.index;
-      if (inner[end.instance] == kNone) return kNone;  // only after a cycle error
+    auto placeOf = [&](const End& end) -> std::optional<PlaceId> {
+      if (end.what == End::What::Place) return PlaceId{base + end.index};
+      if (!inner[end.instance]) return std::nullopt;  // only after a cycle error
       const PageIndex& type = indexes_.at(index.instance_types[end.instance]);
-      return inner[end.instance] + type.reference_places[end.index];
+      return PlaceId{*inner[end.instance] + type.reference_places[end.index]};
     };
     for (std::size_t i = 0; i < page.arcs.size(); ++i) {
       const auto& [from, to] = index.arcs[i];
       if (from.what == End::What::None || to.what == End::What::None) continue;  // reported
       const bool output = from.what == End::What::Transition;
-      const PlaceId place = placeOf(output ? to : from);
-      if (place == kNone) continue;
-      arcs_.push_back({place, tbase + (output ? from : to).index, output, &page.arcs[i]});
+      const auto place = placeOf(output ? to : from);
+      if (!place) continue;
+      arcs_.push_back({*place, TransitionId{tbase + (output ? from : to).index}, output, &page.arcs[i]});
     }
   }
 
@@ -579,7 +579,7 @@ class Compiler {
                             "' but " + slotKindName(first.kind) + " on place '" + other + "', and arcs join the two");
       diags_.note(*first.loc, "slot " + slotName(slot) + " of '" + other + "' is " + slotKindName(first.kind) + " here");
     };
-    for (PlaceId p = 0; p < places_.size(); ++p) {
+    for (PlaceId p{0}; p < places_.size(); ++p) {
       const auto& spec = *places_[p].spec;
       for (const auto& d : spec.kinds) declare(p, d.slot, d.kind, d.loc);
       for (const auto& t : spec.tokens) declare(p, t.slot, SlotKind::Control, t.loc);
@@ -621,7 +621,7 @@ class Compiler {
   /// A sensor handler (on_enter, on_exit, on_sample, on_change) needs a sensor in its slot.
   void checkHandlers() {
     std::set<std::pair<int, int>> told;  // a page type's script is told once, not per instance
-    for (PlaceId p = 0; p < places_.size(); ++p) {
+    for (PlaceId p{0}; p < places_.size(); ++p) {
       for (const auto& sc : places_[p].spec->scripts) {
         if (kindOf(placeVertex(p, sc.slot)) == SlotKind::Sensor) continue;
         for (const ScriptKind k : kSlotScripts) {
@@ -668,7 +668,7 @@ class Compiler {
   void emit() {
     builder_.reserve(places_.size(), transitions_.size(), arcs_.size());
     if (!spec_.globals.empty()) builder_.setGlobalsScript(scriptIndex(spec_.globals));
-    for (PlaceId p = 0; p < places_.size(); ++p) {
+    for (PlaceId p{0}; p < places_.size(); ++p) {
       auto& fp = places_[p];
       builder_.addScopedPlace(fp.scope, fp.local);
       std::uint32_t used = 0;

@@ -40,7 +40,7 @@ ExploreStop writeStateGraph(const Net& net, GraphFormat format, std::ostream& ou
   for (StateId s = 0; s < g.size(); ++s) {
     layout.unpack(g.store->at(s), m.data());
     std::string label;
-    for (PlaceId pid = 0; pid < net.places().size(); ++pid) {
+    for (PlaceId pid{0}; pid < net.places().size(); ++pid) {
       const Place& p = net.places()[pid];
       std::int64_t n = 0;
       for (auto k = p.slots_begin; k < p.slots_end; ++k) n += m[k];

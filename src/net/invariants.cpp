@@ -99,6 +99,15 @@ bool combine(const Sparse& x, std::int64_t cx, const Sparse& z, std::int64_t cz,
   return true;
 }
 
+/// A row of the incidence matrix with plain indices, for the algebra.
+template <class IdType>
+Sparse indexed(const std::vector<std::pair<IdType, std::int64_t>>& row) {
+  Sparse out;
+  out.reserve(row.size());
+  for (const auto& [id, v] : row) out.emplace_back(id.index(), v);
+  return out;
+}
+
 std::int64_t valueAt(const Sparse& v, std::uint32_t index) {
   const auto it = std::lower_bound(v.begin(), v.end(), std::make_pair(index, std::numeric_limits<std::int64_t>::min()));
   return it != v.end() && it->first == index ? it->second : 0;
@@ -361,7 +370,7 @@ std::vector<Invariant> slotwise(const Net& net, const Incidence& c, bool slack, 
     std::vector<Sparse> a;
     std::vector<std::uint32_t> slacks;  // the transitions of the slack rows, in order
     for (auto ps : members) {
-      a.push_back(c.by_place[ps]);
+      a.push_back(indexed(c.by_place[ps]));
       if (slack) {
         for (const auto& [t, v] : c.by_place[ps]) slacks.push_back(t);
       }
@@ -390,14 +399,14 @@ Incidence incidenceMatrix(const Net& net) {
   Incidence c;
   c.by_place.resize(net.placeSlots().size());
   c.by_transition.resize(net.transitions().size());
-  for (TransitionId t = 0; t < net.transitions().size(); ++t) {
-    Sparse& row = c.by_transition[t];
+  for (TransitionId t{0}; t < net.transitions().size(); ++t) {
+    auto& row = c.by_transition[t];
     for (const Term& term : net.termsOf(t)) {
       if (term.kind == TermKind::Input) row.emplace_back(term.place_slot, -std::int64_t{term.weight});
       if (term.kind == TermKind::Output) row.emplace_back(term.place_slot, term.weight);
     }
     std::sort(row.begin(), row.end());
-    Sparse merged;
+    std::remove_reference_t<decltype(row)> merged;
     for (const auto& [ps, v] : row) {
       if (!merged.empty() && merged.back().first == ps) {
         merged.back().second += v;
@@ -430,7 +439,10 @@ Invariants invariants(const Net& net, const InvariantOptions& options) {
   Budget budget(options);
   const Incidence c = incidenceMatrix(net);
   out.p = slotwise(net, c, false, budget);
-  out.t = semiflows(c.by_transition, places, budget);
+  std::vector<Sparse> by_transition;
+  by_transition.reserve(c.by_transition.size());
+  for (const auto& row : c.by_transition) by_transition.push_back(indexed(row));
+  out.t = semiflows(by_transition, places, budget);
   out.conservative = covers(out.p, places);
   out.consistent = covers(out.t, transitions);
 
@@ -484,7 +496,7 @@ bool isTInvariant(const Net& net, const Invariant& x) {
   std::vector<std::int64_t> sum(net.placeSlots().size(), 0);
   for (const auto& [k, w] : x.weights) {
     if (w <= 0 || k >= net.transitions().size()) return false;
-    for (const Term& term : net.termsOf(k)) {
+    for (const Term& term : net.termsOf(TransitionId{k})) {
       if (term.kind == TermKind::Input) sum[term.place_slot] -= w * term.weight;
       if (term.kind == TermKind::Output) sum[term.place_slot] += w * term.weight;
     }
@@ -584,7 +596,7 @@ std::vector<CycleBound> cycleBounds(const Net& net, const Invariants& invariants
   // what each place slot's tokens feed: (transition, tokens taken), so that an invariant's
   // transitions are found from its places, not by looking at every transition
   std::vector<std::vector<std::pair<TransitionId, std::int64_t>>> takers(places);
-  for (TransitionId t = 0; t < net.transitions().size(); ++t) {
+  for (TransitionId t{0}; t < net.transitions().size(); ++t) {
     for (const Term& term : net.termsOf(t)) {
       if (term.kind == TermKind::Input) takers[term.place_slot].emplace_back(t, term.weight);
     }

@@ -87,7 +87,7 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
   tr_.resize(count);
   big_ = (count + slots_.size()) * 64 + n.terms().size() * sizeof(Term) >= (std::size_t{4} << 20);
   warm_occurrences_ = core::secondLevelCacheBytes() / (4 * 4 * 64);
-  for (TransitionId t = 0; t < count; ++t) {
+  for (TransitionId t{0}; t < count; ++t) {
     const auto& spec = transitions[t];
     auto& st = tr_[t];
     st.terms_begin = spec.terms_begin;
@@ -120,7 +120,7 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
     st.start_step = -1;
     st.end_step = -1;
   }
-  for (PlaceSlotId ps = 0; ps < slots.size(); ++ps) {
+  for (PlaceSlotId ps{0}; ps < slots.size(); ++ps) {
     auto init = [&](Watch& watch) {
       if (!holds(slots_[ps], watch.kind, watch.weight, watch.take)) {
         watch.holds = 0;
@@ -131,12 +131,12 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
     for (auto w = slots_[ps].watch_begin; w < slots_[ps + 1].watch_begin; ++w) init(watch_[w]);
   }
   // conditions do not hold until the sensor layer says they do
-  for (TermId id = 0; id < n.terms().size(); ++id) {
+  for (TermId id{0}; id < n.terms().size(); ++id) {
     if (terms_[id].kind != TermKind::Condition) continue;
     if (cond_.empty()) cond_.assign(n.terms().size(), 0);
     ++tr_[terms_[id].transition].unsat;
   }
-  for (TransitionId t = 0; t < count; ++t) {
+  for (TransitionId t{0}; t < count; ++t) {
     if (tr_[t].unsat == 0) markEnabled(t);
   }
   wheel_.resize(kNearSize);
@@ -294,7 +294,7 @@ bool Kernel::selectTokens(TransitionId t) {
         taken = std::find(other.begin(), other.end(), k) != other.end();
       }
       if (taken) continue;
-      if (term.predicate && !hooks_->eligible(i, fifo[k])) {
+      if (term.predicate && !hooks_->eligible(TermId{i}, fifo[k])) {
         if (hooks_->halted()) return false;
         continue;
       }
@@ -404,7 +404,7 @@ std::string Kernel::addNode(PlaceSlotId ps, NodeRef ref) {
 
 std::size_t Kernel::dropNodes(const std::function<bool(NodeRef)>& gone) {
   std::size_t dropped = 0;
-  for (PlaceSlotId ps = 0; ps + 1 < slots_.size(); ++ps) {
+  for (PlaceSlotId ps{0}; ps + 1 < slots_.size(); ++ps) {
     SlotState& st = slots_[ps];
     if (st.fifo < 0) continue;
     auto& fifo = fifos_[static_cast<std::size_t>(st.fifo)];
@@ -587,7 +587,7 @@ inline __attribute__((always_inline)) void Kernel::finish(Entry e) {
 
 template <bool kServers>
 void Kernel::finishAs(Entry e) {
-  const TransitionId t = kServers ? occ_[e & ~kOccurrenceBit].t : e;
+  const TransitionId t = kServers ? occ_[e & ~kOccurrenceBit].t : TransitionId{e};
   TransitionState& tr = tr_[t];
   if (!observers_.empty()) {
     // the step onStart saw: the start plus the idle steps before it
@@ -802,13 +802,13 @@ bool Kernel::startCandidates() {
   // loop at a time, so that the misses overlap
   constexpr std::size_t kWindow = 128;
   auto slotsAhead = [&](std::size_t from, std::size_t to) {
-    for (std::size_t j = from; j < std::min(n, to); ++j) prefetchSlots(indexOf(candidates_[j].key));
+    for (std::size_t j = from; j < std::min(n, to); ++j) prefetchSlots(TransitionId{indexOf(candidates_[j].key)});
   };
   if (big_) slotsAhead(0, kWindow);
   const std::int64_t most_rounds = kImmediateRounds + 4 * static_cast<std::int64_t>(tr_.size());
   ++phase_;
   Carry last{~std::uint64_t{0}, -1};
-  TransitionId resume = kNoEntry;  // an immediate transition with servers whose turn goes on
+  TransitionId resume{kNoEntry};  // an immediate transition with servers whose turn goes on
   while (pos < n || (kRounds && !extra_.empty())) {
     const bool extra = kRounds && !extra_.empty() && (pos >= n || extraBefore(extra_.front().c, candidates_[pos]));
     Carry c{};
@@ -820,7 +820,7 @@ bool Kernel::startCandidates() {
       if (big_ && pos % (kWindow / 2) == 0 && pos > 0) slotsAhead(pos + kWindow / 2, pos + kWindow);
       c = candidates_[pos++];
     }
-    const TransitionId t = indexOf(c.key);
+    const TransitionId t{indexOf(c.key)};
     TransitionState& tr = tr_[t];
     // stale entries: disabled since, or re-enabled later (a newer entry exists); the same
     // entry twice (enabled, disabled and enabled again in one phase) comes twice in a row,
@@ -833,7 +833,7 @@ bool Kernel::startCandidates() {
       taken_phase_[t] = phase_;
       taken_step_[t] = c.step;
     }
-    const bool resumed = kRounds && std::exchange(resume, kNoEntry) == t;
+    const bool resumed = kRounds && std::exchange(resume, TransitionId{kNoEntry}) == t;
     if (tr.unsat != 0 || tr.enabled_step != c.step || (again && !resumed)) continue;
     // condition 5, predicates and probability: one that does not start waits, still enabled
     if (!tryStart(t, resumed)) {
@@ -931,7 +931,7 @@ std::string Kernel::fire(TransitionId t) {
     for (std::uint32_t i = tr.terms_begin; i < tr.terms_end; ++i) {
       const Term& term = terms_[i];
       const SlotState& st = slots_[term.place_slot];
-      if (term.kind == TermKind::Condition ? condition(i) : holds(st, term.kind, term.weight, term.take)) continue;
+      if (term.kind == TermKind::Condition ? condition(TermId{i}) : holds(st, term.kind, term.weight, term.take)) continue;
       const auto& ps = net.placeSlots()[term.place_slot];
       const std::string place = "'" + net.placeName(ps.place) + "' " + slotName(ps.slot);
       const std::string has = std::to_string(st.m), w = std::to_string(term.weight);

@@ -112,28 +112,29 @@ bool Names::scopeIs(std::uint32_t scope, std::string_view path) const {
   return path[rest] == '/' && scopeIs(parent, path.substr(0, rest));
 }
 
-std::int64_t Names::findScope(std::string_view path) const {
-  const auto id = scope_index_.find(path, [this](std::uint32_t s) { return PathOf{this, s}; });
-  return id ? static_cast<std::int64_t>(*id) : -1;
+std::optional<std::uint32_t> Names::findScope(std::string_view path) const {
+  return scope_index_.find(path, [this](std::uint32_t s) { return PathOf{this, s}; });
 }
 
-std::pair<std::int64_t, std::string_view> Names::split(std::string_view qualified_name) const {
+std::pair<std::optional<std::uint32_t>, std::string_view> Names::split(std::string_view qualified_name) const {
   const auto slash = qualified_name.rfind('/');
-  if (slash == std::string_view::npos) return {bare_ == kNoScope ? -1 : std::int64_t{bare_}, qualified_name};
+  if (slash == std::string_view::npos) {
+    return {bare_ == kNoScope ? std::nullopt : std::optional<std::uint32_t>(bare_), qualified_name};
+  }
   return {findScope(qualified_name.substr(0, slash)), qualified_name.substr(slash + 1)};
 }
 
-std::int64_t Names::find(std::string_view qualified_name, bool place) const {
+std::optional<std::uint32_t> Names::find(std::string_view qualified_name, bool place) const {
   const auto [scope, local] = split(qualified_name);
-  if (scope < 0) return -1;
-  const auto& s = scopes_[static_cast<std::size_t>(scope)];
+  if (!scope) return std::nullopt;
+  const auto& s = scopes_[*scope];
   const auto& t = tables_[s.table];
   const auto& names = place ? t.places : t.transitions;
   const auto& ids = place ? t.place_ids : t.transition_ids;
   const auto id = (place ? t.place_index : t.transition_index)
                       .find(local, [&](std::uint32_t i) -> std::string_view { return names[i]; });
-  if (!id) return -1;
-  return ids.empty() ? std::int64_t{place ? s.first_place : s.first_transition} + *id : std::int64_t{ids[*id]};
+  if (!id) return std::nullopt;
+  return ids.empty() ? (place ? s.first_place : s.first_transition) + *id : ids[*id];
 }
 
 std::size_t Names::memoryBytes() const {

@@ -18,12 +18,6 @@ const char* arcKindName(ArcKind kind) {
   return "?";
 }
 
-std::int64_t Net::findPlace(std::string_view qualified_name) const { return names_.findPlace(qualified_name); }
-
-std::int64_t Net::findTransition(std::string_view qualified_name) const {
-  return names_.findTransition(qualified_name);
-}
-
 std::string Net::placeName(PlaceId p) const {
   std::string out;
   appendPlaceName(out, p);
@@ -44,12 +38,12 @@ void Net::appendTransitionName(std::string& out, TransitionId t) const {
   names_.appendName(out, transitions_[t].scope, transitionLocalName(t));
 }
 
-std::int64_t Net::findPlaceSlot(PlaceId place, SlotId slot) const {
+std::optional<PlaceSlotId> Net::findPlaceSlot(PlaceId place, SlotId slot) const {
   const auto& p = places_[place];
   for (auto ps = p.slots_begin; ps < p.slots_end; ++ps) {
-    if (place_slots_[ps].slot == slot) return ps;
+    if (place_slots_[ps].slot == slot) return PlaceSlotId{ps};
   }
-  return -1;
+  return std::nullopt;
 }
 
 std::size_t Net::memoryBytes() const {
@@ -213,7 +207,7 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
   // place slots: grouped per place, ordered by slot
   core::reserveLarge(net->place_slots_, slots_.size());
   std::vector<std::uint32_t> chain;
-  for (PlaceId p = 0; p < places_.size(); ++p) {
+  for (PlaceId p{0}; p < places_.size(); ++p) {
     Place& place = places_[p];
     chain.clear();
     for (auto i = first_slot_[p]; i != kNoSlot; i = slots_[i].next) chain.push_back(i);
@@ -248,9 +242,9 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
   net->places_ = std::move(places_);
   auto psOf = [&](PlaceId p, SlotId slot) -> PlaceSlotId {
     for (auto ps = net->places_[p].slots_begin; ps < net->places_[p].slots_end; ++ps) {
-      if (net->place_slots_[ps].slot == slot) return ps;
+      if (net->place_slots_[ps].slot == slot) return PlaceSlotId{ps};
     }
-    return 0;  // unreachable: addInput/addOutput made the slot
+    return PlaceSlotId{0};  // unreachable: addInput/addOutput made the slot
   };
 
   // terms grouped per transition: inputs, conditions, outputs (stable within each group)
@@ -281,7 +275,7 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
 
   // transition ranges, node-slot masks, and what each output's transition takes from its place
   std::vector<std::int64_t> priorities;
-  for (TransitionId t = 0; t < transitions_.size(); ++t) {
+  for (TransitionId t{0}; t < transitions_.size(); ++t) {
     auto& tr = transitions_[t];
     tr.terms_begin = count[t];
     tr.terms_end = count[t + 1];
@@ -330,7 +324,7 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
   for (std::size_t ps = 0; ps < slot_count; ++ps) net->watch_begin_[ps + 1] += net->watch_begin_[ps];
   net->watchers_.resize(net->watch_begin_[slot_count]);
   std::vector<std::uint32_t> fill(net->watch_begin_.begin(), net->watch_begin_.end() - 1);
-  for (TermId id = 0; id < net->terms_.size(); ++id) {
+  for (TermId id{0}; id < net->terms_.size(); ++id) {
     const auto& term = net->terms_[id];
     if (watched(term)) net->watchers_[fill[term.place_slot]++] = id;
   }

@@ -46,7 +46,7 @@ Reach reach(const Net& net, const Formula& target, const ExploreOptions& limits)
   if (limits.reduction) stubborn.emplace(net, store.layout());
   std::vector<TransitionId> chosen;
   std::vector<StateId> parent{0};
-  std::vector<TransitionId> via{0};
+  std::vector<TransitionId> via{TransitionId{0}};  // one entry (a bare {0} would be the size)
   auto found = [&](StateId s) {
     if (!states.check().holds(target, store.at(s))) return false;
     out.found = true;

@@ -86,17 +86,17 @@ std::vector<Token> tokenize(std::string_view s) {
 
 // the id `find` gives `name`, or else that of the one among `count` constructs whose name
 // (`append(out, id)` appends it) ends in "/" + name
-template <class Find, class Append>
-std::int64_t lookup(std::string_view name, Find find, std::size_t count, Append append) {
-  if (const std::int64_t id = find(name); id >= 0) return id;
-  std::int64_t found = -1;
+template <class IdType, class Find, class Append>
+std::optional<IdType> lookup(std::string_view name, Find find, std::size_t count, Append append) {
+  if (const std::optional<IdType> id = find(name)) return id;
+  std::optional<IdType> found;
   std::string n;
-  for (std::size_t i = 0; i < count; ++i) {
+  for (const IdType i : IdRange<IdType>(count)) {
     n.clear();
-    append(n, static_cast<std::uint32_t>(i));
+    append(n, i);
     if (n.size() > name.size() && n.ends_with(name) && n[n.size() - name.size() - 1] == '/') {
-      if (found >= 0) return -1;
-      found = static_cast<std::int64_t>(i);
+      if (found) return std::nullopt;
+      found = i;
     }
   }
   return found;
@@ -274,9 +274,9 @@ class Parser {
       do {
         const Token& n = peek();
         if (n.kind != Tok::Name && n.kind != Tok::Quoted) return fail(n, "expected a transition's name, found " + describe(n));
-        const std::int64_t id = transition(n.text);
-        if (id < 0) return fail(n, "no transition is called '" + n.text + "'");
-        f.transitions.push_back(static_cast<TransitionId>(id));
+        const auto id = transition(n.text);
+        if (!id) return fail(n, "no transition is called '" + n.text + "'");
+        f.transitions.push_back(*id);
         take();
       } while (peek().kind == Tok::Comma && take().kind == Tok::Comma);
       if (!expect(Tok::RParen, "')'")) return std::nullopt;
@@ -308,14 +308,14 @@ class Parser {
         out.constant += v;
         if (out.constant > kMostConstant) return failed(t, "the numbers of this sum add up to more than 2^60");
       } else if (t.kind == Tok::Quoted || (t.kind == Tok::Name && !keyword(t.text))) {
-        const std::int64_t p = place(t.text);
-        if (p < 0) {
-          const bool is_transition = transition(t.text) >= 0;
+        const auto p = place(t.text);
+        if (!p) {
+          const bool is_transition = transition(t.text).has_value();
           return failed(t, "no place is called '" + t.text + "'" +
                                (is_transition ? " (a transition is: fireable(" + t.text + ")?)" : ""));
         }
-        const Place& place = net_.places()[static_cast<PlaceId>(p)];
-        for (auto k = place.slots_begin; k < place.slots_end; ++k) out.slots.push_back(k);
+        const Place& place = net_.places()[*p];
+        for (auto k = place.slots_begin; k < place.slots_end; ++k) out.slots.emplace_back(k);
       } else if (t.kind == Tok::Name) {
         return failed(t, "'" + t.text + "' is a keyword: a place so called is written \"" + t.text + "\"");
       } else {
@@ -326,8 +326,8 @@ class Parser {
     return true;
   }
 
-  std::int64_t place(std::string_view n) const { return findPlaceNamed(net_, n); }
-  std::int64_t transition(std::string_view n) const { return findTransitionNamed(net_, n); }
+  std::optional<PlaceId> place(std::string_view n) const { return findPlaceNamed(net_, n); }
+  std::optional<TransitionId> transition(std::string_view n) const { return findTransitionNamed(net_, n); }
 
   static constexpr std::size_t kMaxDepth = 100;  // levels of the formula's tree
   static constexpr const char* kTooDeep = "the formula is nested more than 100 levels deep";
@@ -345,7 +345,7 @@ std::string name(std::string_view n) {
 
 std::string sumText(const Net& net, const TokenSum& s) {
   std::string out;
-  PlaceId last = ~PlaceId{0};
+  std::optional<PlaceId> last;
   for (PlaceSlotId k : s.slots) {
     const PlaceId p = net.placeSlots()[k].place;
     if (p == last) continue;  // a place's slots were named once, by the place
@@ -358,13 +358,13 @@ std::string sumText(const Net& net, const TokenSum& s) {
 
 }  // namespace
 
-std::int64_t findPlaceNamed(const Net& net, std::string_view name) {
-  return lookup(name, [&](std::string_view x) { return net.findPlace(x); }, net.places().size(),
+std::optional<PlaceId> findPlaceNamed(const Net& net, std::string_view name) {
+  return lookup<PlaceId>(name, [&](std::string_view x) { return net.findPlace(x); }, net.places().size(),
                 [&](std::string& out, PlaceId p) { net.appendPlaceName(out, p); });
 }
 
-std::int64_t findTransitionNamed(const Net& net, std::string_view name) {
-  return lookup(name, [&](std::string_view x) { return net.findTransition(x); }, net.transitions().size(),
+std::optional<TransitionId> findTransitionNamed(const Net& net, std::string_view name) {
+  return lookup<TransitionId>(name, [&](std::string_view x) { return net.findTransition(x); }, net.transitions().size(),
                 [&](std::string& out, TransitionId t) { net.appendTransitionName(out, t); });
 }
 

@@ -12,25 +12,32 @@ namespace {
 
 using detail::XmlElement;
 
-/// Names by their last part (a PNML id under its net's or page's path), -2 when several share
-/// it; `lastPart(id)` gives the last part of construct id's name, for ids below `count`.
-std::unordered_map<std::string_view, std::int64_t> byLastPart(std::size_t count, const auto& lastPart) {
-  std::unordered_map<std::string_view, std::int64_t> out;
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::string_view n = lastPart(static_cast<std::uint32_t>(i));
-    const auto [at, added] = out.emplace(n, static_cast<std::int64_t>(i));
-    if (!added) at->second = -2;
+/// Names by their last part (a PNML id under its net's or page's path), none when several
+/// share it; `lastPart(id)` gives the last part of construct id's name.
+template <class IdType>
+std::unordered_map<std::string_view, std::optional<IdType>> byLastPart(IdRange<IdType> ids, const auto& lastPart) {
+  std::unordered_map<std::string_view, std::optional<IdType>> out;
+  for (const IdType i : ids) {
+    const auto [at, added] = out.emplace(lastPart(i), i);
+    if (!added) at->second.reset();
   }
   return out;
 }
+
+/// A construct looked up by its PNML id: its id, or none (`shared` when several have its name).
+template <class IdType>
+struct Found {
+  std::optional<IdType> id;
+  bool shared = false;
+};
 
 class Reader {
  public:
   Reader(const Net& net, core::Diagnostics& diags)
       : net_(net),
         diags_(diags),
-        places_(byLastPart(net.places().size(), [&](PlaceId p) { return net.placeLocalName(p); })),
-        transitions_(byLastPart(net.transitions().size(), [&](TransitionId t) { return net.transitionLocalName(t); })) {}
+        places_(byLastPart(net.placeIds(), [&](PlaceId p) { return net.placeLocalName(p); })),
+        transitions_(byLastPart(net.transitionIds(), [&](TransitionId t) { return net.transitionLocalName(t); })) {}
 
   std::optional<Formula> formula(const XmlElement& e, std::size_t depth = 0) {
     if (depth > kMaxDepth) return fail(e, "the formula is nested more than 100 levels deep");
@@ -78,9 +85,9 @@ class Reader {
       f.kind = FormulaKind::Fireable;
       for (const auto& c : e.children) {
         if (c->name != "transition") return fail(*c, "<is-fireable> holds <transition> elements, not <" + c->name + ">");
-        const std::int64_t t = find(net_.findTransition(c->text), transitions_, c->text);
-        if (t < 0) return fail(*c, "no transition is called '" + c->text + "'" + (t == -2 ? " for certain (two PNML ids share its name)" : ""));
-        f.transitions.push_back(static_cast<TransitionId>(t));
+        const auto t = find(net_.findTransition(c->text), transitions_, c->text);
+        if (!t.id) return fail(*c, "no transition is called '" + c->text + "'" + (t.shared ? " for certain (two PNML ids share its name)" : ""));
+        f.transitions.push_back(*t.id);
       }
       return f;
     }
@@ -113,14 +120,15 @@ class Reader {
   }
   // the name itself, else the one place (or transition) whose name's last part is the PNML id
   // as gdpn reads it (pnmlName: "t8.2" becomes "t8_2"); -2 when that could be another's
-  static std::int64_t find(std::int64_t exact, const std::unordered_map<std::string_view, std::int64_t>& by,
-                           const std::string& id) {
-    if (exact >= 0) return exact;
+  template <class IdType>
+  static Found<IdType> find(std::optional<IdType> exact,
+                            const std::unordered_map<std::string_view, std::optional<IdType>>& by, const std::string& id) {
+    if (exact) return {exact};
     const std::string name = pnmlName(id);
     const auto at = by.find(name);
-    if (at == by.end()) return -1;
-    if (name != id && by.contains(name + "_")) return -2;  // two ids gave this name
-    return at->second;
+    if (at == by.end()) return {};
+    if (name != id && by.contains(name + "_")) return {std::nullopt, true};  // two ids gave this name
+    return {at->second, !at->second};
   }
   bool places(const XmlElement& e, TokenSum& out) {
     for (const auto& c : e.children) {
@@ -128,13 +136,13 @@ class Reader {
         fail(*c, "<" + e.name + "> holds <place> elements, not <" + c->name + ">");
         return false;
       }
-      const std::int64_t p = find(net_.findPlace(c->text), places_, c->text);
-      if (p < 0) {
-        fail(*c, "no place is called '" + c->text + "'" + (p == -2 ? " for certain (two PNML ids share its name)" : ""));
+      const auto p = find(net_.findPlace(c->text), places_, c->text);
+      if (!p.id) {
+        fail(*c, "no place is called '" + c->text + "'" + (p.shared ? " for certain (two PNML ids share its name)" : ""));
         return false;
       }
-      const Place& place = net_.places()[static_cast<PlaceId>(p)];
-      for (auto k = place.slots_begin; k < place.slots_end; ++k) out.slots.push_back(k);
+      const Place& place = net_.places()[*p.id];
+      for (auto k = place.slots_begin; k < place.slots_end; ++k) out.slots.emplace_back(k);
     }
     return true;
   }
@@ -156,7 +164,8 @@ class Reader {
 
   const Net& net_;
   core::Diagnostics& diags_;
-  std::unordered_map<std::string_view, std::int64_t> places_, transitions_;
+  std::unordered_map<std::string_view, std::optional<PlaceId>> places_;
+  std::unordered_map<std::string_view, std::optional<TransitionId>> transitions_;
 };
 
 }  // namespace

@@ -41,7 +41,7 @@ Lp stateEquation(const Net& net, const Incidence& c) {
   for (std::size_t t = 0; t < transitions; ++t) glp_set_col_bnds(lp.get(), static_cast<int>(t + 1), GLP_LO, 0.0, 0.0);
   std::vector<int> ia{0}, ja{0};
   std::vector<double> ar{0.0};
-  for (TransitionId t = 0; t < transitions; ++t) {
+  for (TransitionId t{0}; t < transitions; ++t) {
     for (const auto& [ps, v] : c.by_transition[t]) {
       ia.push_back(static_cast<int>(ps + 1));
       ja.push_back(static_cast<int>(t + 1));
@@ -218,7 +218,7 @@ std::optional<Dnf> dnf(const Net& net, const Formula& f, bool positive) {
       bool enabled = positive;  // fireable: one of them enabled; deadlock: none
       if (f.kind == FormulaKind::Deadlock) {
         ts.resize(net.transitions().size());
-        for (TransitionId t = 0; t < ts.size(); ++t) ts[t] = t;
+        for (TransitionId t{0}; t < ts.size(); ++t) ts[t] = t;
         enabled = !positive;
       }
       if (enabled) {

@@ -8,8 +8,8 @@ StatsCollector::StatsCollector(const Net& net) {
   transitions_.resize(net.transitions().size());
   places_.resize(net.places().size());
   place_of_.resize(net.placeSlots().size());
-  for (PlaceSlotId ps = 0; ps < net.placeSlots().size(); ++ps) place_of_[ps] = net.placeSlots()[ps].place;
-  for (PlaceId p = 0; p < net.places().size(); ++p) {
+  for (PlaceSlotId ps{0}; ps < net.placeSlots().size(); ++ps) place_of_[ps] = net.placeSlots()[ps].place;
+  for (PlaceId p{0}; p < net.places().size(); ++p) {
     const auto& place = net.places()[p];
     std::int64_t tokens = 0;
     for (auto ps = place.slots_begin; ps < place.slots_end; ++ps) tokens += net.placeSlots()[ps].initial;
@@ -58,7 +58,7 @@ void StatsCollector::onDeposit(PlaceSlotId ps, std::int64_t count, std::span<con
 }
 
 void StatsCollector::finish(std::int64_t step) {
-  for (PlaceId p = 0; p < places_.size(); ++p) change(p, 0, step);
+  for (PlaceId p{0}; p < places_.size(); ++p) change(p, 0, step);
   for (auto& s : transitions_) {
     s.busy += s.running * step - s.running_starts;
   }

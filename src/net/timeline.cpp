@@ -7,7 +7,7 @@ namespace gdpn::net {
 Timeline::Timeline(const Net& net, std::size_t budget)
     : net_(net), budget_(budget), open_(net.transitions().size()), tokens_(net.places().size()),
       places_(net.places().size()) {
-  for (PlaceId p = 0; p < net.places().size(); ++p) {
+  for (PlaceId p{0}; p < net.places().size(); ++p) {
     const auto& place = net.places()[p];
     for (auto ps = place.slots_begin; ps < place.slots_end; ++ps) tokens_[p] += net.placeSlots()[ps].initial;
     places_[p].push_back({0, tokens_[p]});

@@ -517,7 +517,7 @@ struct Engine::Impl : detail::Context {
 
   std::string describe(ScriptKind kind, std::uint32_t id) const {
     switch (net::info(kind).owner) {
-      case net::ScriptOwner::Transition: return "transition '" + net.transitionName(id) + "'";
+      case net::ScriptOwner::Transition: return "transition '" + net.transitionName(net::TransitionId{id}) + "'";
       case net::ScriptOwner::PlaceSlot: {
         const auto& ps = net.placeSlots()[id];
         return "place '" + net.placeName(ps.place) + "' slot " + net::slotName(ps.slot);
@@ -601,9 +601,9 @@ struct Engine::Impl : detail::Context {
       const auto slot = static_cast<net::SlotId>(s);
       const std::string* path = nullptr;
       if (key % 2 == 1) {
-        path = &detail::sensorAround(net, static_cast<net::TransitionId>(key / 2), slot);
-      } else if (const auto ps = net.findPlaceSlot(static_cast<net::PlaceId>(key / 2), slot); ps >= 0) {
-        path = &net.sensorPath(static_cast<net::PlaceSlotId>(ps));
+        path = &detail::sensorAround(net, net::TransitionId{key / 2}, slot);
+      } else if (const auto ps = net.findPlaceSlot(net::PlaceId{key / 2}, slot)) {
+        path = &net.sensorPath(*ps);
       }
       if (!path || path->empty()) continue;
       if (const scene::Node* sensor = callbacks.plant->find(*path)) {

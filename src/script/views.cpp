@@ -35,6 +35,8 @@ struct SlotView {
   bool of_transition;
   std::uint32_t owner;  // transition or place
   net::SlotId slot;
+  [[nodiscard]] net::TransitionId transition() const { return net::TransitionId{owner}; }
+  [[nodiscard]] net::PlaceId place() const { return net::PlaceId{owner}; }
 };
 struct NodeView {
   Ref r;
@@ -60,13 +62,13 @@ struct RandomView {
 
 std::string ownerName(const SlotView& s) {
   const auto& net = s.r.get().netRef();
-  return s.of_transition ? "transition '" + net.transitionName(s.owner) + "'"
-                         : "place '" + net.placeName(s.owner) + "'";
+  return s.of_transition ? "transition '" + net.transitionName(s.transition()) + "'"
+                         : "place '" + net.placeName(s.place()) + "'";
 }
 
-/// The place slot of a place's slot view, or -1.
-std::int64_t placeSlot(const SlotView& s) {
-  return s.r.get().netRef().findPlaceSlot(static_cast<net::PlaceId>(s.owner), s.slot);
+/// The place slot of a place's slot view, if its place uses that slot.
+std::optional<net::PlaceSlotId> placeSlot(const SlotView& s) {
+  return s.r.get().netRef().findPlaceSlot(s.place(), s.slot);
 }
 
 /// The node tokens in a slot: a place's FIFO, or what a transition holds.
@@ -74,10 +76,10 @@ std::vector<net::NodeRef> tokensOf(const SlotView& s) {
   auto& ctx = s.r.get();
   if (!s.of_transition) {
     const auto ps = placeSlot(s);
-    return ps < 0 ? std::vector<net::NodeRef>{} : ctx.kernelRef().nodes(static_cast<net::PlaceSlotId>(ps));
+    return ps ? ctx.kernelRef().nodes(*ps) : std::vector<net::NodeRef>{};
   }
   std::vector<net::NodeRef> out;
-  for (const auto& [slot, node] : ctx.kernelRef().held(s.owner)) {
+  for (const auto& [slot, node] : ctx.kernelRef().held(s.transition())) {
     if (slot == s.slot) out.push_back(node);
   }
   return out;
@@ -91,9 +93,9 @@ const std::string& sensorOf(const SlotView& s) {
   const auto& net = s.r.get().netRef();
   if (!s.of_transition) {
     const auto ps = placeSlot(s);
-    return ps < 0 ? none : net.sensorPath(static_cast<net::PlaceSlotId>(ps));
+    return ps ? net.sensorPath(*ps) : none;
   }
-  return sensorAround(net, s.owner, s.slot);
+  return sensorAround(net, s.transition(), s.slot);
 }
 
 /// The node of sensor view `v`; AttributeError when it is gone.
@@ -216,8 +218,8 @@ py::object instanceOf(Context& ctx, std::string_view name) {
 /// The capacity of a place's slot: None when unbounded.
 py::object capacityOf(const SlotView& s) {
   const auto ps = placeSlot(s);
-  if (s.of_transition || ps < 0) throw py::attribute_error(ownerName(s) + " has no slot " + net::slotName(s.slot) + " with a capacity");
-  const auto c = s.r.get().kernelRef().capacity(static_cast<net::PlaceSlotId>(ps));
+  if (s.of_transition || !ps) throw py::attribute_error(ownerName(s) + " has no slot " + net::slotName(s.slot) + " with a capacity");
+  const auto c = s.r.get().kernelRef().capacity(*ps);
   if (c == net::kUnbounded) return py::none();
   return py::int_(c);
 }
@@ -225,7 +227,7 @@ py::object capacityOf(const SlotView& s) {
 /// Sets the capacity of a place's slot (None: unbounded); ValueError saying why not.
 void setCapacity(const SlotView& s, const py::object& value) {
   const auto ps = placeSlot(s);
-  if (s.of_transition || ps < 0) throw py::attribute_error(ownerName(s) + " has no slot " + net::slotName(s.slot) + " with a capacity");
+  if (s.of_transition || !ps) throw py::attribute_error(ownerName(s) + " has no slot " + net::slotName(s.slot) + " with a capacity");
   // a whole number or None; anything else says so, not pybind11's "Unable to cast"
   if (!value.is_none() && !py::isinstance<py::int_>(value)) {
     throw py::type_error("capacity of " + ownerName(s) + " slot " + net::slotName(s.slot) +
@@ -234,7 +236,7 @@ void setCapacity(const SlotView& s, const py::object& value) {
                          py::repr(value).cast<std::string>());
   }
   const std::int64_t c = value.is_none() ? net::kUnbounded : value.cast<std::int64_t>();
-  const std::string why = s.r.get().kernelRef().setCapacity(static_cast<net::PlaceSlotId>(ps), c);
+  const std::string why = s.r.get().kernelRef().setCapacity(*ps, c);
   if (!why.empty()) {
     throw py::value_error("capacity of " + ownerName(s) + " slot " + net::slotName(s.slot) + ": " + why);
   }
@@ -242,9 +244,9 @@ void setCapacity(const SlotView& s, const py::object& value) {
 
 bool isNodeSlot(const SlotView& s) {
   const auto& net = s.r.get().netRef();
-  if (s.of_transition) return (net.transitions()[s.owner].node_slot_mask >> s.slot) & 1u;
+  if (s.of_transition) return (net.transitions()[s.transition()].node_slot_mask >> s.slot) & 1u;
   const auto ps = placeSlot(s);
-  return ps >= 0 && net.placeSlots()[static_cast<std::size_t>(ps)].kind == net::SlotKind::Node;
+  return ps && net.placeSlots()[*ps].kind == net::SlotKind::Node;
 }
 
 std::int64_t count(const SlotView& s) {
@@ -252,12 +254,12 @@ std::int64_t count(const SlotView& s) {
   if (isNodeSlot(s)) return static_cast<std::int64_t>(tokensOf(s).size());
   if (!s.of_transition) {
     const auto ps = placeSlot(s);
-    return ps < 0 ? 0 : ctx.kernelRef().marking(static_cast<net::PlaceSlotId>(ps));
+    return ps ? ctx.kernelRef().marking(*ps) : 0;
   }
   // control tokens a transition took: its normal inputs on this slot, while it occurs
-  if (!ctx.kernelRef().occurring(s.owner)) return 0;
+  if (!ctx.kernelRef().occurring(s.transition())) return 0;
   std::int64_t n = 0;
-  for (const auto& term : ctx.netRef().termsOf(s.owner)) {
+  for (const auto& term : ctx.netRef().termsOf(s.transition())) {
     if (term.kind == net::TermKind::Input && ctx.netRef().placeSlots()[term.place_slot].slot == s.slot) {
       n += term.weight;
     }
@@ -720,8 +722,8 @@ void registerSlotView(py::module_& m) {
            [](const SlotView& s, std::int64_t n) {
              if (s.of_transition) throw py::type_error("a transition's slots are read-only");
              const auto ps = placeSlot(s);
-             if (ps < 0) throw py::attribute_error(ownerName(s) + " has no slot " + net::slotName(s.slot));
-             const std::string why = s.r.get().kernelRef().setMarking(static_cast<net::PlaceSlotId>(ps), n);
+             if (!ps) throw py::attribute_error(ownerName(s) + " has no slot " + net::slotName(s.slot));
+             const std::string why = s.r.get().kernelRef().setMarking(*ps, n);
              if (!why.empty()) throw py::value_error(ownerName(s) + " slot " + net::slotName(s.slot) + ": " + why);
            },
            "sets a control slot's count (places only)")
@@ -730,8 +732,8 @@ void registerSlotView(py::module_& m) {
              const NodeView node = asNode(what, "add");
              if (s.of_transition) throw py::type_error("add node tokens to a place's slot");
              const auto ps = placeSlot(s);
-             if (ps < 0) throw py::attribute_error(ownerName(s) + " has no slot " + net::slotName(s.slot));
-             const std::string why = s.r.get().kernelRef().addNode(static_cast<net::PlaceSlotId>(ps), node.ref);
+             if (!ps) throw py::attribute_error(ownerName(s) + " has no slot " + net::slotName(s.slot));
+             const std::string why = s.r.get().kernelRef().addNode(*ps, node.ref);
              if (!why.empty()) throw py::value_error(ownerName(s) + " slot " + net::slotName(s.slot) + ": " + why);
            },
            "puts a node token at the end of a place's node slot (a spawned node, say)")
@@ -964,8 +966,8 @@ void registerSimView(py::module_& m) {
       .def("place",
            [](const SimView& v, const std::string& name) {
              const auto p = v.r.get().netRef().findPlace(name);
-             if (p < 0) throw py::key_error("no place '" + name + "'");
-             return v.r.get().placeView(static_cast<net::PlaceId>(p));
+             if (!p) throw py::key_error("no place '" + name + "'");
+             return v.r.get().placeView(*p);
            })
       .def("node",
            [](const SimView& v, const std::string& path) -> py::object {
@@ -977,8 +979,8 @@ void registerSimView(py::module_& m) {
            "the scene node at a path")
       .def("transition", [](const SimView& v, const std::string& name) {
         const auto t = v.r.get().netRef().findTransition(name);
-        if (t < 0) throw py::key_error("no transition '" + name + "'");
-        return v.r.get().transitionView(static_cast<net::TransitionId>(t));
+        if (!t) throw py::key_error("no transition '" + name + "'");
+        return v.r.get().transitionView(*t);
       });
 }
 
@@ -992,8 +994,8 @@ const std::string& sensorAround(const net::Net& net, net::TransitionId t, net::S
   }
   for (const auto& term : net.termsOf(t)) {
     const auto ps = net.findPlaceSlot(net.placeSlots()[term.place_slot].place, slot);
-    if (ps < 0) continue;
-    if (const auto& path = net.sensorPath(static_cast<net::PlaceSlotId>(ps)); !path.empty()) return path;
+    if (!ps) continue;
+    if (const auto& path = net.sensorPath(*ps); !path.empty()) return path;
   }
   return none;
 }

@@ -143,9 +143,9 @@ void Session::adopt(std::unique_ptr<model::Simulation> sim) {
   // breakpoints whose transition or place the net lacks (after an edit) are dropped
   targets_.clear();
   for (auto it = breakpoints_.begin(); it != breakpoints_.end();) {
-    const std::int64_t target = targetOf(it->second);
+    const auto target = targetOf(it->second);
     const bool named = it->second.kind != BreakKind::Predicate;
-    if (named && target < 0) {
+    if (named && !target) {
       it = breakpoints_.erase(it);
       continue;
     }
@@ -169,14 +169,15 @@ void Session::watch() {
   }
 }
 
-std::int64_t Session::targetOf(const Breakpoint& bp) const {
+std::optional<std::uint32_t> Session::targetOf(const Breakpoint& bp) const {
+  auto index = [](const auto& id) { return id ? std::optional<std::uint32_t>(id->index()) : std::nullopt; };
   switch (bp.kind) {
     case BreakKind::Starts:
-    case BreakKind::Completes: return sim_->net().findTransition(bp.target);
-    case BreakKind::Marking: return sim_->net().findPlace(bp.target);
-    case BreakKind::Predicate: return -1;
+    case BreakKind::Completes: return index(sim_->net().findTransition(bp.target));
+    case BreakKind::Marking: return index(sim_->net().findPlace(bp.target));
+    case BreakKind::Predicate: return std::nullopt;
   }
-  return -1;
+  return std::nullopt;
 }
 
 bool Session::reset(core::Diagnostics& diags, std::optional<std::uint64_t> seed) {
@@ -269,24 +270,24 @@ void Session::push(sensors::InputEvent event) { sim_->push(std::move(event)); }
 
 std::string Session::fire(const std::string& transition) {
   const auto t = sim_->net().findTransition(transition);
-  if (t < 0) return "no transition '" + transition + "' in the net";
+  if (!t) return "no transition '" + transition + "' in the net";
   if (!sim_->started()) sim_->start();
   if (watcher_) watcher_->clear();
-  return sim_->kernel().fire(static_cast<net::TransitionId>(t));
+  return sim_->kernel().fire(*t);
 }
 
 std::optional<int> Session::addBreakpoint(Breakpoint breakpoint, std::string& why) {
-  const std::int64_t target = targetOf(breakpoint);
+  const auto target = targetOf(breakpoint);
   switch (breakpoint.kind) {
     case BreakKind::Starts:
     case BreakKind::Completes:
-      if (target < 0) {
+      if (!target) {
         why = "no transition '" + breakpoint.target + "' in the net";
         return std::nullopt;
       }
       break;
     case BreakKind::Marking:
-      if (target < 0) {
+      if (!target) {
         why = "no place '" + breakpoint.target + "' in the net";
         return std::nullopt;
       }
@@ -330,13 +331,13 @@ std::optional<int> Session::holding() {
     switch (bp.kind) {
       case BreakKind::Starts:
       case BreakKind::Completes: {
-        const auto t = static_cast<net::TransitionId>(targets_[i]);
+        const net::TransitionId t{*targets_[i]};
         const auto& seen = bp.kind == BreakKind::Starts ? watcher_->started : watcher_->completed;
         if (std::find(seen.begin(), seen.end(), t) != seen.end()) return id;
         break;
       }
       case BreakKind::Marking: {
-        const auto p = static_cast<net::PlaceId>(targets_[i]);
+        const net::PlaceId p{*targets_[i]};
         if (compare(sim_->kernel().placeTokens(p), bp.compare, bp.value)) return id;
         break;
       }

@@ -34,7 +34,7 @@ class RunControlTest : public TempDirTest {
   }
   std::int64_t tokens(const std::string& place) const {
     const auto& sim = run_.session()->simulation();
-    return sim.kernel().placeTokens(static_cast<net::PlaceId>(sim.net().findPlace(place)));
+    return sim.kernel().placeTokens(*sim.net().findPlace(place));
   }
   std::unique_ptr<Document> doc_;
   RunControl run_;

@@ -80,8 +80,11 @@ class IoMapTest : public ::testing::Test {
   std::int64_t tokens(const char* place) {
     const auto& net = sim_->net();
     const auto id = net.findPlace(place);
-    EXPECT_GE(id, 0) << place;
-    return sim_->kernel().marking(net.places()[static_cast<std::size_t>(id)].slots_begin);
+    if (!id) {
+      ADD_FAILURE() << "no place " << place;
+      return -1;
+    }
+    return sim_->kernel().marking(net::PlaceSlotId{net.places()[*id].slots_begin});
   }
   double field(const char* path, const char* name) {
     const scene::Node* n = sim_->plant()->find(path);

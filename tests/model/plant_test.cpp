@@ -338,13 +338,13 @@ pages:
   ASSERT_NE(first, nullptr);
   EXPECT_NEAR(first->world.position.z, 0.05, 0.01);
   const auto boxes = sim->net().findPlace("main/boxes");
-  EXPECT_EQ(sim->kernel().placeTokens(static_cast<net::PlaceId>(boxes)), 3);
+  EXPECT_EQ(sim->kernel().placeTokens(boxes.value()), 3);
   // the deleted crate left the scene, the physics and its place; the trace says so
   EXPECT_EQ(sim->plant()->find("pile/spot1/crate1"), nullptr);
   EXPECT_NE(sim->plant()->find("pile/spot1"), nullptr);
   EXPECT_EQ(sim->physics()->bodyCount(), bodies_before + 3 - 1);
   const auto crates = sim->net().findPlace("main/crates");
-  EXPECT_EQ(sim->kernel().placeTokens(static_cast<net::PlaceId>(crates)), 1);
+  EXPECT_EQ(sim->kernel().placeTokens(crates.value()), 1);
   const std::string t = trace.str();
   EXPECT_NE(t.find("\"ev\":\"delete\",\"node\":\"pile/spot1/crate1\""), std::string::npos) << t;
   EXPECT_NE(t.find("\"ev\":\"remove\",\"place\":\"main/crates\",\"slot\":\"d0\",\"count\":1,\"tokens\":"

@@ -80,7 +80,7 @@ bool endsDead(const Net& net, const std::vector<TransitionId>& path) {
       if (term.kind == TermKind::Output) m[term.place_slot] += term.weight;
     }
   }
-  for (TransitionId t = 0; t < net.transitions().size(); ++t) {
+  for (TransitionId t{0}; t < net.transitions().size(); ++t) {
     if (enabled(t)) return false;
   }
   return true;
@@ -943,7 +943,7 @@ TEST(MarkingStore, CandidatesFoundFromMarkedSlotsMissNoEnabledTransition) {
       std::size_t bad = 0;
       ASSERT_TRUE(layout.pack(counts.data(), m.data(), bad));
       candidates.find(m.data(), firing, found);
-      for (TransitionId t = 0; t < net->transitions().size(); ++t) {
+      for (TransitionId t{0}; t < net->transitions().size(); ++t) {
         const bool is = firing.enabled(t, m.data());
         enabled += is ? 1 : 0;
         const bool listed = std::find(found.begin(), found.end(), t) != found.end();

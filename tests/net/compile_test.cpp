@@ -29,9 +29,9 @@ TEST(Compile, NodeKindPropagatesAlongArcs) {
   auto net = compile(spec, diags);
   ASSERT_TRUE(net) << diags.str();
   for (const char* name : {"main/P", "main/Q", "main/R"}) {
-    const auto ps = net->findPlaceSlot(static_cast<PlaceId>(net->findPlace(name)), d0);
-    ASSERT_GE(ps, 0) << name;
-    EXPECT_EQ(net->placeSlots()[static_cast<std::size_t>(ps)].kind, SlotKind::Node) << name;
+    const auto ps = net->findPlaceSlot(*net->findPlace(name), d0);
+    ASSERT_TRUE(ps) << name;
+    EXPECT_EQ(net->placeSlots()[*ps].kind, SlotKind::Node) << name;
   }
   EXPECT_EQ(net->transitions()[0].node_slot_mask, 1u << d0);
 }
@@ -80,7 +80,7 @@ TEST(Compile, OutputTakesWhatItsTransitionRemovesFromTheSamePlace) {
   core::Diagnostics diags;
   auto net = compile(spec, diags);
   ASSERT_TRUE(net);
-  const auto terms = net->termsOf(0);
+  const auto terms = net->termsOf(TransitionId{0});
   ASSERT_EQ(terms.size(), 2u);
   EXPECT_EQ(terms[1].kind, TermKind::Output);
   EXPECT_EQ(terms[1].take, 1);

@@ -61,7 +61,7 @@ std::shared_ptr<const Net> randomNet(core::Random& rng) {
     const TransitionId t = b.addTransition("T" + std::to_string(i), Duration{Duration::Law::Fixed, 1.0, 0.0, {}});
     std::int32_t nodes_in = 0;
     std::vector<PlaceId> node_places;
-    for (PlaceId p = 0; p < places; ++p) {
+    for (PlaceId p{0}; p < places; ++p) {
       const auto input = rng.below(6);  // 0, 1: none; 2, 5: normal; 3: test; 4: inhibitor
       const ArcKind kind = input == 3 ? ArcKind::Test : input == 4 ? ArcKind::Inhibitor : ArcKind::Normal;
       const bool output = oneIn(3);
@@ -91,14 +91,14 @@ std::string describe(const Net& net) {
     const auto& s = net.placeSlots()[ps];
     return net.placeName(s.place) + "." + slotName(s.slot);
   };
-  for (PlaceSlotId ps = 0; ps < net.placeSlots().size(); ++ps) {
+  for (PlaceSlotId ps{0}; ps < net.placeSlots().size(); ++ps) {
     const auto& s = net.placeSlots()[ps];
     out << name(ps) << (s.kind == SlotKind::Node ? " node" : "") << " m0=" << s.initial;
     if (s.capacity != kUnbounded) out << " k=" << s.capacity;
     out << "\n";
   }
   const char* kinds[] = {"in", "test", "inhibitor", "out", "condition"};
-  for (TransitionId t = 0; t < net.transitions().size(); ++t) {
+  for (TransitionId t{0}; t < net.transitions().size(); ++t) {
     out << net.transitionName(t) << ":";
     for (const Term& term : net.termsOf(t)) {
       out << " " << kinds[static_cast<int>(term.kind)] << " " << name(term.place_slot) << "*" << term.weight;
@@ -135,7 +135,7 @@ class Generator {
   std::vector<bool> enabled(const Marking& m) const {
     const auto packed = pack(m);
     std::vector<bool> out;
-    for (TransitionId t = 0; t < net_.transitions().size(); ++t) {
+    for (TransitionId t{0}; t < net_.transitions().size(); ++t) {
       out.push_back(firing_.enabled(t, packed.data()));
     }
     return out;
@@ -167,20 +167,20 @@ class Generator {
 /// Per transition: the kernel says it is enabled.
 std::vector<bool> kernelEnabled(const Kernel& k) {
   std::vector<bool> out;
-  for (TransitionId t = 0; t < k.net().transitions().size(); ++t) out.push_back(k.enabled(t));
+  for (TransitionId t{0}; t < k.net().transitions().size(); ++t) out.push_back(k.enabled(t));
   return out;
 }
 
 Marking kernelMarking(const Kernel& k) {
   Marking m;
-  for (PlaceSlotId ps = 0; ps < k.net().placeSlots().size(); ++ps) m.push_back(k.marking(ps));
+  for (PlaceSlotId ps{0}; ps < k.net().placeSlots().size(); ++ps) m.push_back(k.marking(ps));
   return m;
 }
 
 /// Brings `k` (nothing occurring) to `m` the way scripts would: counts set on control slots;
 /// on node slots the first tokens deleted, or fresh ones (numbered from `fresh`) added.
 void moveKernelTo(Kernel& k, const Marking& m, NodeRef& fresh) {
-  for (PlaceSlotId ps = 0; ps < m.size(); ++ps) {
+  for (PlaceSlotId ps{0}; ps < m.size(); ++ps) {
     if (k.net().placeSlots()[ps].kind == SlotKind::Control) {
       ASSERT_EQ(k.setMarking(ps, m[ps]), "") << ps;
       continue;
@@ -215,7 +215,7 @@ TEST(EnablingProperty, KernelAndAnalysisAgreeAlongRandomWalks) {
         expectSameEnabled(k, g, i);
         std::vector<TransitionId> can;
         const auto enabled = g.enabled(m);
-        for (TransitionId t = 0; t < enabled.size(); ++t) {
+        for (TransitionId t{0}; t < enabled.size(); ++t) {
           if (enabled[t]) can.push_back(t);
         }
         if (can.empty()) break;
@@ -245,7 +245,7 @@ TEST(EnablingProperty, KernelAndAnalysisAgreeInEveryReachableMarking) {
       queue.pop_front();
       moveKernelTo(k, m, fresh);
       expectSameEnabled(k, g, i);
-      for (TransitionId t = 0; t < net->transitions().size(); ++t) {
+      for (TransitionId t{0}; t < net->transitions().size(); ++t) {
         const auto next = g.fire(m, t);
         if (!next || seen.count(*next)) continue;
         if (seen.size() >= 500) {

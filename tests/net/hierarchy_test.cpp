@@ -24,8 +24,11 @@ PageSpec cellType() {
 
 std::int64_t marking(const Kernel& k, const std::string& place) {
   const auto p = k.net().findPlace(place);
-  EXPECT_GE(p, 0) << place;
-  return k.placeTokens(static_cast<PlaceId>(p));
+  if (!p) {
+    ADD_FAILURE() << "no place " << place;
+    return -1;
+  }
+  return k.placeTokens(*p);
 }
 
 TEST(Hierarchy, TwoInstancesKeepIndependentMarkings) {
@@ -44,9 +47,9 @@ TEST(Hierarchy, TwoInstancesKeepIndependentMarkings) {
   ASSERT_TRUE(net) << diags.str();
 
   // qualified names, one copy of every construct per instance
-  EXPECT_GE(net->findPlace("line/cellA/machine"), 0);
-  EXPECT_GE(net->findPlace("line/cellB/machine"), 0);
-  EXPECT_GE(net->findTransition("line/cellA/work"), 0);
+  EXPECT_TRUE(net->findPlace("line/cellA/machine"));
+  EXPECT_TRUE(net->findPlace("line/cellB/machine"));
+  EXPECT_TRUE(net->findTransition("line/cellA/work"));
   EXPECT_EQ(net->places().size(), 2u + 2 * 3u);
   EXPECT_EQ(net->transitions().size(), 2u + 2 * 1u);
 
@@ -81,7 +84,7 @@ TEST(Hierarchy, NestedInstancesQualifyEveryLevel) {
   core::Diagnostics diags;
   auto net = compile(spec, diags);
   ASSERT_TRUE(net) << diags.str();
-  EXPECT_GE(net->findPlace("top/p/second/machine"), 0);
+  EXPECT_TRUE(net->findPlace("top/p/second/machine"));
   Kernel k(net, {1.0, 1});
   k.start();
   for (int i = 0; i < 40 && !k.dead(); ++i) k.step();

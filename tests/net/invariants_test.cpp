@@ -21,7 +21,7 @@ using testing::conformanceNet;
 std::set<std::string> support(const Net& net, const Invariant& inv, bool places) {
   std::set<std::string> out;
   for (const auto& [k, w] : inv.weights) {
-    std::string n = places ? placeSlotName(net, k) : net.transitionName(k);
+    std::string n = places ? placeSlotName(net, PlaceSlotId{k}) : net.transitionName(TransitionId{k});
     out.insert(n.substr(n.find('/') + 1));
   }
   return out;
@@ -145,7 +145,7 @@ TEST(Invariants, EveryReportedInvariantIsRealOnTheConformanceNets) {
     if (std::string(model).starts_with("Kanban") || std::string(model).starts_with("Swimming")) continue;
     const StateSpace s = explore(*net);
     ASSERT_TRUE(s.complete) << model;
-    for (PlaceSlotId ps = 0; ps < net->placeSlots().size(); ++ps) {
+    for (PlaceSlotId ps{0}; ps < net->placeSlots().size(); ++ps) {
       const PlaceId place = net->placeSlots()[ps].place;
       if (inv.bound[ps] >= 0) {
         EXPECT_LE(s.place_bound[place], inv.bound[ps]) << model << " " << placeSlotName(*net, ps);

@@ -24,13 +24,16 @@ Duration seconds(double s) { return Duration{Duration::Law::Fixed, s, 0.0, {}}; 
 /// Marking of place `name` at slot a0.
 std::int64_t tokens(const Kernel& k, const char* name) {
   const auto p = k.net().findPlace(name);
-  EXPECT_GE(p, 0) << name;
-  const auto ps = k.net().findPlaceSlot(static_cast<PlaceId>(p), kDefaultSlot);
-  return ps < 0 ? 0 : k.marking(static_cast<PlaceSlotId>(ps));
+  if (!p) {
+    ADD_FAILURE() << "no place " << name;
+    return -1;
+  }
+  const auto ps = k.net().findPlaceSlot(*p, kDefaultSlot);
+  return ps ? k.marking(*ps) : 0;
 }
 
 bool enabled(const Kernel& k, const char* name) {
-  return k.enabled(static_cast<TransitionId>(k.net().findTransition(name)));
+  return k.enabled(*k.net().findTransition(name));
 }
 
 // Figure 3.1: T1 takes P1 and P2 into P3; T2 moves P3 to P4 and refills P2. All capacities 1.
@@ -120,8 +123,9 @@ TEST(NetKernel, ATokenSetBetweenStepsEnablesInTheNextStep) {
   Kernel k(b.freeze(), {1.0, 1});
   k.start();
   k.step();
-  const auto ps = k.net().findPlaceSlot(static_cast<PlaceId>(k.net().findPlace("P")), kDefaultSlot);
-  ASSERT_EQ(k.setMarking(static_cast<PlaceSlotId>(ps), 2), "");
+  const auto ps = k.net().findPlaceSlot(*k.net().findPlace("P"), kDefaultSlot);
+  ASSERT_TRUE(ps);
+  ASSERT_EQ(k.setMarking(*ps, 2), "");
   EXPECT_TRUE(k.enabled(t));
   k.step();
   EXPECT_EQ(tokens(k, "P"), 1) << "T started in the step after the tokens came";
@@ -205,7 +209,7 @@ TEST(NetKernel, ReserveKeepsRoomForAnOccurringTransition) {
   Recorder rec(*net);
   k.addObserver(&rec);
   k.start();
-  const auto out_ps = static_cast<PlaceSlotId>(net->findPlaceSlot(out, kDefaultSlot));
+  const auto out_ps = *net->findPlaceSlot(out, kDefaultSlot);
   EXPECT_EQ(k.marking(out_ps), 0);
   EXPECT_EQ(k.reserve(out_ps), 1);
   k.step();
@@ -622,9 +626,9 @@ TEST(NetKernel, OccurrencesStartedByTheUserCompleteInStartOrderAtTheNearWheelsEd
   k.start();
   auto fireNow = [&](const std::string& name) {
     const auto p = k.net().findPlace(name + "In");
-    ASSERT_GE(p, 0);
-    ASSERT_EQ(k.setMarking(static_cast<PlaceSlotId>(k.net().findPlaceSlot(static_cast<PlaceId>(p), kDefaultSlot)), 1), "");
-    ASSERT_EQ(k.fire(static_cast<TransitionId>(k.net().findTransition(name))), "") << name;
+    ASSERT_TRUE(p);
+    ASSERT_EQ(k.setMarking(*k.net().findPlaceSlot(*p, kDefaultSlot), 1), "");
+    ASSERT_EQ(k.fire(*k.net().findTransition(name)), "") << name;
   };
   while (k.steps() < 400) {
     k.step();
@@ -719,7 +723,7 @@ TEST(NetKernel, NodeTokensKeepTheirIdentityAndOrder) {
   k.step();
   auto names = [&](PlaceId place) {
     std::vector<std::string> out;
-    for (auto ref : k.nodes(static_cast<PlaceSlotId>(net->findPlaceSlot(place, d0)))) {
+    for (auto ref : k.nodes(*net->findPlaceSlot(place, d0))) {
       out.push_back(net->nodeNames()[ref]);
     }
     return out;
@@ -807,14 +811,14 @@ TEST(NetKernel, ABigNetFiresWhatItsRulesSay) {
   // started on place j * every occurs in transition j * every + steps
   EXPECT_EQ(k.startCount(), std::uint64_t{n / every} * (steps + 1));
   EXPECT_EQ(k.occurringCount(), n / every);
-  for (std::uint32_t t = 0; t < n; ++t) {
+  for (TransitionId t{0}; t < n; ++t) {
     const bool expected = (t + n - steps % n) % every == 0;
     ASSERT_EQ(k.occurring(t), expected) << "t" << t;
     if (expected) {
       ASSERT_EQ(k.startStep(t), steps) << "t" << t;
     }
   }
-  for (PlaceSlotId ps = 0; ps < n; ++ps) ASSERT_EQ(k.marking(ps), 0);
+  for (PlaceSlotId ps{0}; ps < n; ++ps) ASSERT_EQ(k.marking(ps), 0);
 
   // drawn durations (their laws fetched ahead too): tokens kept, and the same run twice
   auto drawn = bigRing(n, every, Duration{Duration::Law::Uniform, 0.01, 0.05, {}});
@@ -823,12 +827,12 @@ TEST(NetKernel, ABigNetFiresWhatItsRulesSay) {
   c.start();
   for (std::uint32_t s = 0; s < steps; ++s) a.step(), c.step();
   std::uint32_t held = 0;
-  for (std::uint32_t t = 0; t < n; ++t) {
+  for (TransitionId t{0}; t < n; ++t) {
     ASSERT_EQ(a.occurring(t), c.occurring(t)) << "t" << t;
     ASSERT_EQ(a.endStep(t), c.endStep(t)) << "t" << t;
     held += a.occurring(t) ? 1u : 0u;
   }
-  for (PlaceSlotId ps = 0; ps < n; ++ps) held += static_cast<std::uint32_t>(a.marking(ps));
+  for (PlaceSlotId ps{0}; ps < n; ++ps) held += static_cast<std::uint32_t>(a.marking(ps));
   EXPECT_EQ(held, n / every);
   EXPECT_EQ(a.startCount(), c.startCount());
   EXPECT_GT(a.startCount(), std::uint64_t{n / every} * steps / 5);

@@ -66,11 +66,11 @@ TEST(Names, EveryInstanceIsDeclaredWhereItsPageTypeDeclaresIt) {
   ASSERT_EQ(net->transitions().size(), 1u + 2 * (2 * (1 + 2 * 1)));
   const std::map<std::string, int> place_line{{"a", 1}, {"b", 2}, {"m", 4}, {"x", 6}, {"p", 7}};
   const std::map<std::string, int> transition_line{{"t", 3}, {"u", 5}, {"v", 8}};
-  for (PlaceId p = 0; p < net->places().size(); ++p) {
+  for (PlaceId p{0}; p < net->places().size(); ++p) {
     const std::string local(net->placeLocalName(p));
     EXPECT_EQ(net->placeLoc(p), at(place_line.at(local))) << net->placeName(p);
   }
-  for (TransitionId t = 0; t < net->transitions().size(); ++t) {
+  for (TransitionId t{0}; t < net->transitions().size(); ++t) {
     const std::string local(net->transitionLocalName(t));
     EXPECT_EQ(net->transitionLoc(t), at(transition_line.at(local))) << net->transitionName(t);
   }
@@ -81,29 +81,29 @@ TEST(Names, NestedInstancesAreNamedByTheirPath) {
   const auto net = compile(nested(), diags);
   ASSERT_TRUE(net) << diags.str();
   // declaration order: a page's places, its instances', then its transitions
-  EXPECT_EQ(net->placeName(0), "main/p");
-  EXPECT_EQ(net->placeName(1), "main/top1/x");
-  EXPECT_EQ(net->placeName(2), "main/top1/mid1/m");
-  EXPECT_EQ(net->placeName(3), "main/top1/mid1/leaf1/a");
-  EXPECT_EQ(net->placeName(6), "main/top1/mid1/leaf2/b");
+  EXPECT_EQ(net->placeName(PlaceId{0}), "main/p");
+  EXPECT_EQ(net->placeName(PlaceId{1}), "main/top1/x");
+  EXPECT_EQ(net->placeName(PlaceId{2}), "main/top1/mid1/m");
+  EXPECT_EQ(net->placeName(PlaceId{3}), "main/top1/mid1/leaf1/a");
+  EXPECT_EQ(net->placeName(PlaceId{6}), "main/top1/mid1/leaf2/b");
   EXPECT_EQ(net->placeName(static_cast<PlaceId>(net->places().size() - 1)), "main/top2/mid2/leaf2/b");
-  EXPECT_EQ(net->transitionName(0), "main/top1/mid1/leaf1/t");
-  EXPECT_EQ(net->transitionName(2), "main/top1/mid1/u");
+  EXPECT_EQ(net->transitionName(TransitionId{0}), "main/top1/mid1/leaf1/t");
+  EXPECT_EQ(net->transitionName(TransitionId{2}), "main/top1/mid1/u");
   EXPECT_EQ(net->transitionName(static_cast<TransitionId>(net->transitions().size() - 1)), "main/v");
   std::string appended = "at ";
-  net->appendPlaceName(appended, 3);
+  net->appendPlaceName(appended, PlaceId{3});
   EXPECT_EQ(appended, "at main/top1/mid1/leaf1/a");
-  EXPECT_EQ(net->placeLocalName(3), "a");
+  EXPECT_EQ(net->placeLocalName(PlaceId{3}), "a");
   // every name leads back to its construct; parts of a path lead nowhere
-  for (PlaceId p = 0; p < net->places().size(); ++p) EXPECT_EQ(net->findPlace(net->placeName(p)), p);
-  for (TransitionId t = 0; t < net->transitions().size(); ++t) {
+  for (PlaceId p{0}; p < net->places().size(); ++p) EXPECT_EQ(net->findPlace(net->placeName(p)), p);
+  for (TransitionId t{0}; t < net->transitions().size(); ++t) {
     EXPECT_EQ(net->findTransition(net->transitionName(t)), t);
   }
-  EXPECT_EQ(net->findPlace("main/top1/mid1"), -1);
-  EXPECT_EQ(net->findPlace("top1/mid1/m"), -1);
-  EXPECT_EQ(net->findPlace("main/top1/mid1/leaf1/t"), -1);
-  EXPECT_EQ(net->findTransition("main/top3/mid1/u"), -1);
-  EXPECT_EQ(net->findPlace("a"), -1);
+  EXPECT_FALSE(net->findPlace("main/top1/mid1"));
+  EXPECT_FALSE(net->findPlace("top1/mid1/m"));
+  EXPECT_FALSE(net->findPlace("main/top1/mid1/leaf1/t"));
+  EXPECT_FALSE(net->findTransition("main/top3/mid1/u"));
+  EXPECT_FALSE(net->findPlace("a"));
 }
 
 TEST(Names, BuilderNamesSplitAtTheLastSlash) {
@@ -127,8 +127,8 @@ TEST(Names, BuilderNamesSplitAtTheLastSlash) {
   EXPECT_EQ(net->findPlace("a/b/d"), abd);
   EXPECT_EQ(net->findPlace("x"), x);  // the first of twins
   EXPECT_EQ(net->findPlace("/y"), y);
-  EXPECT_EQ(net->findPlace("y"), -1);
-  EXPECT_EQ(net->findPlace("a/b"), -1);
+  EXPECT_FALSE(net->findPlace("y"));
+  EXPECT_FALSE(net->findPlace("a/b"));
   EXPECT_EQ(net->findTransition("a/b/t"), t);
   EXPECT_EQ(net->findTransition("u"), u);
   EXPECT_EQ(net->placeLoc(abc), at(1));
@@ -164,7 +164,7 @@ TEST(Names, AnInstanceAddsLessThan200BytesOfNames) {
   // the whole net: the flat places and transitions themselves, and less than 200 bytes more
   const double whole = static_cast<double>(large->memoryBytes() - small->memoryBytes()) / added;
   EXPECT_LT(whole, static_cast<double>(3 * sizeof(Place) + 2 * sizeof(Transition)) + 200.0);
-  EXPECT_EQ(large->placeName(3 * 1999 + 2), "main/c1999/done");
+  EXPECT_EQ(large->placeName(PlaceId{3 * 1999 + 2}), "main/c1999/done");
 }
 
 }  // namespace

@@ -229,7 +229,7 @@ TEST(QueryAnswers, ReachabilityAgreesWithTheWholeStateSpaceAndEveryWitnessReplay
     }
     check("AG not deadlock", space.deadlock ? Verdict::False : Verdict::True, &dead);
     // each place's bound: reached, never passed
-    for (PlaceId p = 0; p < net->places().size(); p += 1 + static_cast<PlaceId>(net->places().size() / 8)) {
+    for (PlaceId p{0}; p < net->places().size(); p = PlaceId{p + 1 + net->places().size() / 8}) {
       const std::string name = "\"" + net->placeName(p) + "\"";
       const std::string bound = std::to_string(space.place_bound[p]);
       const Formula at = parsed(*net, name + " >= " + bound);
@@ -243,7 +243,7 @@ TEST(QueryAnswers, ReachabilityAgreesWithTheWholeStateSpaceAndEveryWitnessReplay
       check("AG " + name + " >= " + bound, constant ? Verdict::True : Verdict::False, &below);
     }
     // each transition that can fire: a marking enabling it, and one firing more reaches it
-    for (TransitionId t = 0; t < net->transitions().size(); t += 1 + static_cast<TransitionId>(net->transitions().size() / 8)) {
+    for (TransitionId t{0}; t < net->transitions().size(); t = TransitionId{t + 1 + net->transitions().size() / 8}) {
       const std::string text = "fireable(\"" + net->transitionName(t) + "\")";
       const Formula on = parsed(*net, text);
       check("EF " + text, space.fired[t] ? Verdict::True : Verdict::False, &on);
@@ -261,8 +261,8 @@ TEST(QueryAnswers, CtlAgreesWithLivenessAndReversibilityOfTheWholeStateSpace) {
     const StateSpace space = explore(*net);
     ASSERT_TRUE(space.complete && space.decided);
     std::string live = "true", initial = "true";
-    for (TransitionId t = 0; t < net->transitions().size(); ++t) live += " and AG EF fireable(\"" + net->transitionName(t) + "\")";
-    for (PlaceId pid = 0; pid < net->places().size(); ++pid) {
+    for (TransitionId t{0}; t < net->transitions().size(); ++t) live += " and AG EF fireable(\"" + net->transitionName(t) + "\")";
+    for (PlaceId pid{0}; pid < net->places().size(); ++pid) {
       const Place& p = net->places()[pid];
       std::int64_t tokens = 0;
       for (auto k = p.slots_begin; k < p.slots_end; ++k) tokens += net->placeSlots()[k].initial;

@@ -82,10 +82,9 @@ struct Harness {
 
 PlaceSlotId slotOf(const Kernel& k, const char* place, SlotId slot = kDefaultSlot) {
   const auto p = k.net().findPlace(place);
-  EXPECT_GE(p, 0) << place;
-  const auto ps = k.net().findPlaceSlot(static_cast<PlaceId>(p), slot);
-  EXPECT_GE(ps, 0) << place;
-  return static_cast<PlaceSlotId>(ps);
+  const auto ps = p ? k.net().findPlaceSlot(*p, slot) : std::nullopt;
+  if (!ps) ADD_FAILURE() << "no place " << place << " with that slot";
+  return ps.value_or(PlaceSlotId{0});
 }
 
 std::vector<NodeRef> nodesOf(const Kernel& k, const char* place) { return k.nodes(slotOf(k, place, kD0)); }
@@ -105,7 +104,7 @@ std::function<bool(NodeRef)> oneOf(std::set<NodeRef> refs) {
 /// transition enabled exactly when rules 1-4 of semantics.md hold.
 void expectConsistent(const Kernel& k) {
   const Net& net = k.net();
-  for (PlaceSlotId ps = 0; ps < net.placeSlots().size(); ++ps) {
+  for (PlaceSlotId ps{0}; ps < net.placeSlots().size(); ++ps) {
     const auto& slot = net.placeSlots()[ps];
     EXPECT_GE(k.marking(ps), 0) << ps;
     EXPECT_GE(k.reserve(ps), 0) << ps;
@@ -117,7 +116,7 @@ void expectConsistent(const Kernel& k) {
     }
   }
   std::size_t enabled = 0;
-  for (TransitionId t = 0; t < net.transitions().size(); ++t) {
+  for (TransitionId t{0}; t < net.transitions().size(); ++t) {
     bool ok = !k.occurring(t);
     for (const Term& term : net.termsOf(t)) {
       const std::int64_t m = k.marking(term.place_slot), cap = net.placeSlots()[term.place_slot].capacity;
@@ -150,7 +149,9 @@ TEST(KernelReentry, DeletingATakenNodeInOnRemoveLeavesTheOtherTokensTheirCalls) 
   b.addInput(p, t, kD0, 3);
   b.addOutput(t, q, kD0, 3);
   Harness h(b.freeze());
-  auto& [net, k, hooks, rec] = h;
+  auto& k = h.kernel;
+  auto& hooks = h.hooks;
+  auto& rec = h.recorder;
   std::size_t dropped = 0;
   hooks.when("on_remove P.d0 #0", [&] { dropped = k.dropNodes(oneOf({0})); });
 
@@ -188,7 +189,9 @@ TEST(KernelReentry, DeletingSeveralNodesInOnRemoveMeetsAStartThatTookAllItsInput
   b.addOutput(t, q, kD0, 1);
   b.addOutput(t, s, kD0, 2);
   Harness h(b.freeze());
-  auto& [net, k, hooks, rec] = h;
+  auto& k = h.kernel;
+  auto& hooks = h.hooks;
+  auto& rec = h.recorder;
   std::size_t dropped = 0;
   hooks.when("on_remove P.d0 #0", [&] {
     dropped = k.dropNodes(oneOf({1, 2, 4}));
@@ -228,7 +231,9 @@ TEST(KernelReentry, SettingMarkingsInOnRemoveCannotUndoATakeOrOverfillAnOutput) 
   b.addInput(bp, t, kDefaultSlot, 2);
   b.addOutput(t, c);
   Harness h(b.freeze());
-  auto& [net, k, hooks, rec] = h;
+  auto& k = h.kernel;
+  auto& hooks = h.hooks;
+  auto& rec = h.recorder;
   std::vector<std::string> why;
   hooks.when("on_remove A.a0", [&] {
     why.push_back(k.setMarking(slotOf(k, "B"), 0));
@@ -268,7 +273,8 @@ TEST(KernelReentry, PreInAndPostFireMayAddAndDeleteTokens) {
   b.addInput(p, t, kD0, 2);
   b.addOutput(t, q, kD0, 2);
   Harness h(b.freeze());
-  auto& [net, k, hooks, rec] = h;
+  auto& k = h.kernel;
+  auto& hooks = h.hooks;
   const PlaceSlotId ps = slotOf(k, "P", kD0), qs = slotOf(k, "Q", kD0);
   std::vector<std::string> why;
   std::size_t dropped = 0;
@@ -329,7 +335,9 @@ TEST(KernelReentry, OnDepositMayDeleteTokensStillToBeDepositedAndEmptyItsPlace) 
   b.addOutput(t, s, kD0, 1);
   b.addOutput(t, c, kDefaultSlot, 3);
   Harness h(b.freeze());
-  auto& [net, k, hooks, rec] = h;
+  auto& k = h.kernel;
+  auto& hooks = h.hooks;
+  auto& rec = h.recorder;
   std::size_t dropped = 0;
   std::string why = "not called";
   hooks.when("on_deposit Q.d0 #0", [&] { dropped = k.dropNodes(oneOf({1})); });

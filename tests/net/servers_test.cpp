@@ -24,8 +24,8 @@ Duration seconds(double s) { return Duration{Duration::Law::Fixed, s, 0.0, {}}; 
 
 std::int64_t tokens(const Kernel& k, const char* name) {
   const auto p = k.net().findPlace(name);
-  const auto ps = k.net().findPlaceSlot(static_cast<PlaceId>(p), kDefaultSlot);
-  return ps < 0 ? 0 : k.marking(static_cast<PlaceSlotId>(ps));
+  const auto ps = p ? k.net().findPlaceSlot(*p, kDefaultSlot) : std::nullopt;
+  return ps ? k.marking(*ps) : 0;
 }
 
 // P (`parts` tokens) -> T (`lasts`, default 2 s; `servers`; probability `p`) -> Q, at
@@ -77,7 +77,7 @@ std::shared_ptr<const Net> fedStation(std::int64_t parts, double feed_s, Duratio
 
 /// Records each completion of transition `of` with the start step the kernel names for it.
 struct Completions : NetObserver {
-  explicit Completions(TransitionId t = 0) : of(t) {}
+  explicit Completions(TransitionId t = TransitionId{0}) : of(t) {}
   void onComplete(TransitionId t, std::int64_t step, std::int64_t started) override {
     if (t == of) pairs.emplace_back(started, step);
   }
@@ -97,12 +97,12 @@ TEST(Servers, NServersOverlap) {
   k.start();
   // two parts start at once; with both servers busy, the third waits though tokens are there
   EXPECT_EQ(rec.startsOf("T"), (std::vector<std::int64_t>{0, 0}));
-  EXPECT_EQ(k.occurrences(0), 2u);
+  EXPECT_EQ(k.occurrences(TransitionId{0}), 2u);
   EXPECT_EQ(k.occurringCount(), 2u);
-  EXPECT_TRUE(k.occurring(0));
-  EXPECT_FALSE(k.enabled(0));
+  EXPECT_TRUE(k.occurring(TransitionId{0}));
+  EXPECT_FALSE(k.enabled(TransitionId{0}));
   EXPECT_EQ(tokens(k, "P"), 3);
-  EXPECT_EQ(k.fire(0), "'T' is occurring on all its 2 servers");
+  EXPECT_EQ(k.fire(TransitionId{0}), "'T' is occurring on all its 2 servers");
   while (!k.dead()) k.step();
   // 5 parts on 2 servers of 4 steps: batches at 0, 4 and 8, the last part alone
   EXPECT_EQ(rec.startsOf("T"), (std::vector<std::int64_t>{0, 0, 4, 4, 8}));
@@ -121,7 +121,7 @@ TEST(Servers, OneServerIsTheDefaultAndKeepsOneOccurrenceAtATime) {
   k.start();
   while (!k.dead()) k.step();
   EXPECT_EQ(rec.startsOf("T"), (std::vector<std::int64_t>{0, 4, 8, 12, 16}));
-  EXPECT_EQ(k.fire(0), "'T' is not enabled: 'P' a0 holds 0 of the 1 it needs");
+  EXPECT_EQ(k.fire(TransitionId{0}), "'T' is not enabled: 'P' a0 holds 0 of the 1 it needs");
 }
 
 TEST(Servers, UnlimitedServersStartEveryEnabledOccurrenceInOnePhase) {
@@ -133,16 +133,16 @@ TEST(Servers, UnlimitedServersStartEveryEnabledOccurrenceInOnePhase) {
   k.addObserver(&done);
   k.start();
   EXPECT_EQ(rec.startsOf("T").size(), 1000u);
-  EXPECT_EQ(k.occurrences(0), 1000u);
-  EXPECT_EQ(k.startStep(0), 0);
-  EXPECT_EQ(k.endStep(0), 4);
+  EXPECT_EQ(k.occurrences(TransitionId{0}), 1000u);
+  EXPECT_EQ(k.startStep(TransitionId{0}), 0);
+  EXPECT_EQ(k.endStep(TransitionId{0}), 4);
   // the transition is not enabled because its inputs ran out, not for want of a server
-  EXPECT_EQ(k.fire(0), "'T' is not enabled: 'P' a0 holds 0 of the 1 it needs");
+  EXPECT_EQ(k.fire(TransitionId{0}), "'T' is not enabled: 'P' a0 holds 0 of the 1 it needs");
   for (int i = 0; i < 4; ++i) k.step();
   EXPECT_EQ(done.pairs.size(), 1000u);
   EXPECT_EQ(tokens(k, "Q"), 1000);
   EXPECT_TRUE(k.dead());
-  EXPECT_FALSE(k.occurring(0));
+  EXPECT_FALSE(k.occurring(TransitionId{0}));
 }
 
 TEST(Servers, AFreeServerStartsWhenItsTokenArrivesWhileOthersOccur) {
@@ -213,13 +213,13 @@ TEST(Servers, EachOccurrenceKeepsItsOwnNodeTokensAndCompletesOnItsOwnTime) {
   EXPECT_GT(most, 1u);
   // the seed draws durations under which some occurrence overtakes an earlier one
   EXPECT_FALSE(std::is_sorted(seen.order.begin(), seen.order.end()));
-  EXPECT_EQ(k.nodes(static_cast<PlaceSlotId>(net->findPlaceSlot(r, kD0))).size(), 12u);
+  EXPECT_EQ(k.nodes(*net->findPlaceSlot(r, kD0)).size(), 12u);
 }
 
 TEST(Servers, TheTimelinePairsEachCompletionWithItsOwnStart) {
   // durations drawn per occurrence: the Gantt bars must keep each occurrence's own length
   auto net = fedStation(20, 0.1, Duration{Duration::Law::Uniform, 0.1, 3.0, {}}, 4);
-  const TransitionId t = 1;
+  const TransitionId t{1};
   Kernel k(net, {0.1, 3});
   Timeline timeline(*net);
   Completions done(t);

@@ -43,7 +43,7 @@ TEST(StateEquation, NoBoundFallsBelowWhatTheStateSpaceReaches) {
     const auto lp = stateEquationBounds(*net, all);
     const StateSpace s = explore(*net);
     ASSERT_TRUE(s.complete);
-    for (PlaceId p = 0; p < net->places().size(); ++p) {
+    for (PlaceId p{0}; p < net->places().size(); ++p) {
       // one slot per place in these nets
       const auto ps = net->places()[p].slots_begin;
       if (lp[ps] < 0) continue;

@@ -38,8 +38,8 @@ TEST(Timeline, KeepsEachOccurrenceAndEachPlacesTokensStepByStep) {
     EXPECT_EQ(o.start, static_cast<std::int64_t>(3 * i));
     EXPECT_EQ(o.end, static_cast<std::int64_t>(3 * i + 3));
   }
-  const auto p = static_cast<PlaceId>(k.net().findPlace("P"));
-  const auto q = static_cast<PlaceId>(k.net().findPlace("Q"));
+  const auto p = *k.net().findPlace("P");
+  const auto q = *k.net().findPlace("Q");
   // P: 5 at step 0, then one fewer at each start (the first start is at step 0 itself)
   EXPECT_EQ(tl.places()[p], (std::vector<Change>{{0, 4}, {3, 3}, {6, 2}, {9, 1}, {12, 0}}));
   EXPECT_EQ(tl.places()[q], (std::vector<Change>{{0, 0}, {3, 1}, {6, 2}, {9, 3}, {12, 4}, {15, 5}}));

@@ -337,8 +337,7 @@ pages:
   };
   EXPECT_EQ(r.logs, expected);
   // 1 until t = 5 (capacity 1), then unbounded: feed puts one more in at every step's end
-  const auto buffer = static_cast<net::PlaceSlotId>(r.sim->net().findPlaceSlot(
-      static_cast<net::PlaceId>(r.sim->net().findPlace("main/buffer")), net::kDefaultSlot));
+  const auto buffer = *r.sim->net().findPlaceSlot(*r.sim->net().findPlace("main/buffer"), net::kDefaultSlot);
   EXPECT_EQ(r.sim->kernel().marking(buffer), 1 + std::llround(5.0 * 60.0));
 }
 

@@ -185,7 +185,7 @@ pages:
   EXPECT_EQ(outcome.message, "three is enough");
   EXPECT_EQ(outcome.steps, 3);
   const auto q = sim->net().findPlace("main/Q");
-  EXPECT_EQ(sim->kernel().placeTokens(static_cast<net::PlaceId>(q)), 4);
+  EXPECT_EQ(sim->kernel().placeTokens(q.value()), 4);
 }
 
 TEST(Scripts, DeletingANodeInOnRemoveLeavesTheOtherTokensOfTheRemovalTheirCalls) {
@@ -200,7 +200,7 @@ TEST(Scripts, DeletingANodeInOnRemoveLeavesTheOtherTokensOfTheRemovalTheirCalls)
                                             "1 on_deposit boxes/box3"}));
   EXPECT_EQ(sim->plant()->find("boxes/box1"), nullptr);
   const auto bin = sim->net().findPlace("main/bin");
-  EXPECT_EQ(sim->kernel().placeTokens(static_cast<net::PlaceId>(bin)), 2);
+  EXPECT_EQ(sim->kernel().placeTokens(bin.value()), 2);
 }
 
 TEST(ScriptErrors, SyntaxErrorInlineIsLocatedInTheModelFile) {

@@ -31,8 +31,11 @@ const char* kProducerConsumer = "examples/basics/producer_consumer/producer_cons
 
 std::int64_t tokens(const Session& s, const std::string& place) {
   const auto p = s.simulation().net().findPlace(place);
-  EXPECT_GE(p, 0) << place;
-  return s.simulation().kernel().placeTokens(static_cast<net::PlaceId>(p));
+  if (!p) {
+    ADD_FAILURE() << "no place " << place;
+    return -1;
+  }
+  return s.simulation().kernel().placeTokens(*p);
 }
 
 // boxes fall into a bin watched by a region; drawn durations make the seed matter
@@ -139,7 +142,7 @@ TEST(Session, FireStartsTheChosenTransitionNow) {
   s->run({{}, 5});
   ASSERT_EQ(tokens(*s, "main/ready"), 1) << "the net did not start 'rare' by itself";
   EXPECT_EQ(s->fire("main/rare"), "");
-  const auto rare = static_cast<net::TransitionId>(s->simulation().net().findTransition("main/rare"));
+  const auto rare = *s->simulation().net().findTransition("main/rare");
   EXPECT_TRUE(s->simulation().kernel().occurring(rare));
   EXPECT_EQ(tokens(*s, "main/ready"), 0);
   // it completes a second (10 steps) later
@@ -222,7 +225,7 @@ TEST(Session, SensorConditionsAreReadAgainWhenTheNetIsBackOn) {
   core::Diagnostics diags;
   auto s = open(kBin, diags);
   ASSERT_TRUE(s) << diags.str();
-  const auto see = static_cast<net::TransitionId>(s->simulation().net().findTransition("main/see"));
+  const auto see = *s->simulation().net().findTransition("main/see");
   // the box falls into the bin while the net is off: nothing sees it
   for (int i = 0; i < 150; ++i) s->stepPlant();
   ASSERT_LT(s->simulation().plant()->find("drop/box")->world.position.z, 0.5) << "the box lies in the bin";
@@ -271,7 +274,7 @@ TEST(Session, StepPlantMovesThePlantWhileTheNetWaits) {
   auto s = open(kFall, diags);
   ASSERT_TRUE(s) << diags.str();
   s->step();  // t starts at time 0 and would complete at 1 s
-  const auto t = static_cast<net::TransitionId>(s->simulation().net().findTransition("main/t"));
+  const auto t = *s->simulation().net().findTransition("main/t");
   ASSERT_TRUE(s->simulation().kernel().occurring(t));
   const double z0 = s->simulation().plant()->find("ball")->world.position.z;
   for (int i = 0; i < 50; ++i) s->stepPlant();

@@ -45,15 +45,15 @@ using NodeNamer = std::function<std::string(net::NodeRef)>;
 
 /// Where a page view's constructs are in a compiled net, found once by their qualified names
 /// (`view.prefix` + "/" + name), so that their state can be read at every frame without a
-/// name lookup. -1 where the net lacks one (a page type seen alone).
+/// name lookup. None where the net lacks one (a page type seen alone).
 struct PageBinding {
-  std::vector<std::int64_t> places;       ///< per place of the page: its PlaceId
-  std::vector<std::int64_t> transitions;  ///< per transition: its TransitionId
+  std::vector<std::optional<net::PlaceId>> places;            ///< per place of the page
+  std::vector<std::optional<net::TransitionId>> transitions;  ///< per transition of the page
   /// An arc's transition and place, and which way it runs.
   struct Arc {
-    std::int64_t transition = -1;  ///< TransitionId
-    std::int64_t place = -1;       ///< PlaceId
-    bool output = false;           ///< from the transition to the place
+    std::optional<net::TransitionId> transition;  ///< its transition in the net
+    std::optional<net::PlaceId> place;            ///< its place in the net
+    bool output = false;                          ///< from the transition to the place
   };
   std::vector<Arc> arcs;  ///< per arc of PageSpec::arcs
 };

@@ -219,7 +219,9 @@ class Kernel {
     std::uint32_t busy;
     std::uint32_t oldest, newest;  // its running occurrences (kNoOccurrence: none)
   };
-  [[nodiscard]] TransitionId transitionOf(Entry e) const { return e & kOccurrenceBit ? occ_[e & ~kOccurrenceBit].t : e; }
+  [[nodiscard]] TransitionId transitionOf(Entry e) const {
+    return e & kOccurrenceBit ? occ_[e & ~kOccurrenceBit].t : TransitionId{e};
+  }
   [[nodiscard]] std::int64_t endOf(Entry e) const {
     return e & kOccurrenceBit ? occ_[e & ~kOccurrenceBit].end_step : tr_[e].end_step;
   }

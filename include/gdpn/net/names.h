@@ -6,6 +6,7 @@
 /// a (scope, local) pair, and its qualified name ("line/cellA/buffer") is built on request.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -13,6 +14,7 @@
 
 #include "gdpn/core/diagnostics.h"
 #include "gdpn/core/name_table.h"
+#include "gdpn/net/id.h"
 
 namespace gdpn::net {
 
@@ -84,13 +86,17 @@ class Names {
   void appendScopePath(std::string& out, std::uint32_t scope) const;
   /// Appends the qualified name of construct `local` of `scope` to `out`.
   void appendName(std::string& out, std::uint32_t scope, std::string_view local) const;
-  /// The scope whose qualified name is `path`, or -1 (never the bare scope).
-  [[nodiscard]] std::int64_t findScope(std::string_view path) const;
-  /// The net's place called `qualified_name`, or -1.
-  [[nodiscard]] std::int64_t findPlace(std::string_view qualified_name) const { return find(qualified_name, true); }
-  /// The net's transition called `qualified_name`, or -1.
-  [[nodiscard]] std::int64_t findTransition(std::string_view qualified_name) const {
-    return find(qualified_name, false);
+  /// The scope whose qualified name is `path`, if there is one (never the bare scope).
+  [[nodiscard]] std::optional<std::uint32_t> findScope(std::string_view path) const;
+  /// The net's place called `qualified_name`, if there is one.
+  [[nodiscard]] std::optional<PlaceId> findPlace(std::string_view qualified_name) const {
+    const auto id = find(qualified_name, true);
+    return id ? std::optional<PlaceId>(*id) : std::nullopt;
+  }
+  /// The net's transition called `qualified_name`, if there is one.
+  [[nodiscard]] std::optional<TransitionId> findTransition(std::string_view qualified_name) const {
+    const auto id = find(qualified_name, false);
+    return id ? std::optional<TransitionId>(*id) : std::nullopt;
   }
   /// Approximate heap bytes held.
   [[nodiscard]] std::size_t memoryBytes() const;
@@ -99,10 +105,10 @@ class Names {
   struct PathOf;
   /// Whether the qualified name of `scope` is `path`, without building it.
   [[nodiscard]] bool scopeIs(std::uint32_t scope, std::string_view path) const;
-  /// The net's place (`place`) or transition called `qualified_name`, or -1.
-  [[nodiscard]] std::int64_t find(std::string_view qualified_name, bool place) const;
-  /// The (scope, rest) that `qualified_name` splits into at its last '/'; scope -1 when none.
-  [[nodiscard]] std::pair<std::int64_t, std::string_view> split(std::string_view qualified_name) const;
+  /// The index of the net's place (`place`) or transition called `qualified_name`, if any.
+  [[nodiscard]] std::optional<std::uint32_t> find(std::string_view qualified_name, bool place) const;
+  /// The (scope, rest) that `qualified_name` splits into at its last '/'; no scope when none.
+  [[nodiscard]] std::pair<std::optional<std::uint32_t>, std::string_view> split(std::string_view qualified_name) const;
 
   std::vector<ConstructTable> tables_;
   std::vector<Scope> scopes_;

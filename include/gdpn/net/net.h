@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -13,16 +14,13 @@
 #include <vector>
 
 #include "gdpn/core/diagnostics.h"
+#include "gdpn/net/id.h"
 #include "gdpn/net/names.h"
 #include "gdpn/net/slot.h"
 #include "gdpn/net/spec.h"
 
 namespace gdpn::net {
 
-using PlaceId = std::uint32_t;       ///< index of a place in `Net::places()`
-using TransitionId = std::uint32_t;  ///< index of a transition in `Net::transitions()`
-using PlaceSlotId = std::uint32_t;   ///< index of one (place, slot) pair
-using TermId = std::uint32_t;        ///< index of one (arc, slot) condition
 using NodeRef = std::uint64_t;       ///< an opaque reference to a scene node; the kernel never looks inside
 
 /// Capacity of a slot that has none.
@@ -42,8 +40,8 @@ inline constexpr std::int64_t kMaxWeight = std::numeric_limits<std::int32_t>::ma
 
 /// One (arc, slot) pair: the unit of incremental enabling. 20 bytes.
 struct Term {
-  TransitionId transition = 0;  ///< the arc's transition
-  PlaceSlotId place_slot = 0;   ///< the arc's place, at this slot
+  TransitionId transition;      ///< the arc's transition
+  PlaceSlotId place_slot;       ///< the arc's place, at this slot
   std::int32_t weight = 1;      ///< tokens, 1..kMaxWeight
   std::int32_t take = 0;        ///< for outputs: what the transition itself takes from this place slot
   TermKind kind = TermKind::Input;  ///< what the term asks of its place slot
@@ -64,7 +62,7 @@ struct ScriptIndex {
 
 /// One slot of one place.
 struct PlaceSlot {
-  PlaceId place = 0;                    ///< owning place
+  PlaceId place;                        ///< owning place
   SlotId slot = kDefaultSlot;           ///< which slot
   SlotKind kind = SlotKind::Control;    ///< control or node
   std::int64_t capacity = kUnbounded;   ///< tokens; kUnbounded when none
@@ -110,6 +108,16 @@ class Net {
   [[nodiscard]] std::span<const Transition> transitions() const { return transitions_; }
   /// All (place, slot) pairs.
   [[nodiscard]] std::span<const PlaceSlot> placeSlots() const { return place_slots_; }
+  /// The ids of all places, 0..places().size()-1.
+  [[nodiscard]] IdRange<PlaceId> placeIds() const { return IdRange<PlaceId>(places_.size()); }
+  /// The ids of all transitions, in their order.
+  [[nodiscard]] IdRange<TransitionId> transitionIds() const { return IdRange<TransitionId>(transitions_.size()); }
+  /// The ids of all place slots.
+  [[nodiscard]] IdRange<PlaceSlotId> placeSlotIds() const { return IdRange<PlaceSlotId>(place_slots_.size()); }
+  /// The ids of place `p`'s slots, in slot order.
+  [[nodiscard]] IdRange<PlaceSlotId> placeSlotsOf(PlaceId p) const {
+    return {places_[p].slots_begin, places_[p].slots_end};
+  }
   /// All (arc, slot) conditions, grouped by transition.
   [[nodiscard]] std::span<const Term> terms() const { return terms_; }
   /// The terms of transition `t`.
@@ -152,12 +160,16 @@ class Net {
   }
   /// The tables of local names and locations, and the scopes (instantiated pages).
   [[nodiscard]] const Names& names() const { return names_; }
-  /// The place called `qualified_name`, or -1.
-  [[nodiscard]] std::int64_t findPlace(std::string_view qualified_name) const;
-  /// The transition called `qualified_name`, or -1.
-  [[nodiscard]] std::int64_t findTransition(std::string_view qualified_name) const;
-  /// The place slot of `place` at `slot`, or -1 when the place does not use that slot.
-  [[nodiscard]] std::int64_t findPlaceSlot(PlaceId place, SlotId slot) const;
+  /// The place called `qualified_name`, if there is one.
+  [[nodiscard]] std::optional<PlaceId> findPlace(std::string_view qualified_name) const {
+    return names_.findPlace(qualified_name);
+  }
+  /// The transition called `qualified_name`, if there is one.
+  [[nodiscard]] std::optional<TransitionId> findTransition(std::string_view qualified_name) const {
+    return names_.findTransition(qualified_name);
+  }
+  /// The place slot of `place` at `slot`; none when the place does not use that slot.
+  [[nodiscard]] std::optional<PlaceSlotId> findPlaceSlot(PlaceId place, SlotId slot) const;
   /// The number of distinct priorities (ranks run 0..count-1).
   [[nodiscard]] std::uint32_t priorityLevels() const { return priority_levels_; }
   /// The distinct scripts of the net (a page type's scripts appear once for all its instances),

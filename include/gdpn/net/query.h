@@ -80,10 +80,10 @@ struct QueryError {
 std::optional<Formula> parseQuery(const Net& net, std::string_view text, QueryError& error);
 
 /// The place called `name`, or else the one place whose name ends in "/" + `name` (a name
-/// given without its page's path, or a PNML id); -1 when none or several.
-std::int64_t findPlaceNamed(const Net& net, std::string_view name);
+/// given without its page's path, or a PNML id); none when none or several.
+std::optional<PlaceId> findPlaceNamed(const Net& net, std::string_view name);
 /// The same for transitions.
-std::int64_t findTransitionNamed(const Net& net, std::string_view name);
+std::optional<TransitionId> findTransitionNamed(const Net& net, std::string_view name);
 
 /// One property of a Model Checking Contest property file.
 struct Property {

@@ -19,7 +19,7 @@ class Timeline final : public NetObserver {
  public:
   /// One occurrence of a transition.
   struct Occurrence {
-    TransitionId transition = 0;  ///< which
+    TransitionId transition{0};  ///< which
     std::int64_t start = 0;       ///< step it started
     std::int64_t end = -1;        ///< step it completed (-1: still occurring when the run ended)
   };

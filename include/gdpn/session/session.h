@@ -175,7 +175,7 @@ class Session {
   std::unique_ptr<model::Simulation> make(const model::Model& model, core::Diagnostics& diags);
   void adopt(std::unique_ptr<model::Simulation> sim);
   void watch();                  // the watcher listens exactly while a breakpoint needs it
-  std::int64_t targetOf(const Breakpoint& bp) const;  // its transition or place, -1 when none
+  std::optional<std::uint32_t> targetOf(const Breakpoint& bp) const;  // the index of its transition or place
   std::optional<int> holding();  // the first breakpoint that holds after a step
   model::Model model_;
   SessionOptions options_;
@@ -183,7 +183,7 @@ class Session {
   std::unique_ptr<net::Timeline> timeline_;  // RunRequest::timeline; likewise
   std::unique_ptr<model::Simulation> sim_;
   std::vector<std::pair<int, Breakpoint>> breakpoints_;
-  std::vector<std::int64_t> targets_;  // per breakpoint: its transition or place in the net
+  std::vector<std::optional<std::uint32_t>> targets_;  // per breakpoint: the index of its transition or place
   int next_id_ = 1;
   std::optional<int> hit_;
   std::string predicate_error_;  // why a predicate of the last run failed

@@ -105,8 +105,8 @@ void placeContents(const session::Session& session, net::PlaceId p, nlohmann::js
       ImGui::TableNextColumn();
       const auto slot = static_cast<net::SlotId>(s);
       const std::string name = net::slotName(slot);
-      const auto ps = net.findPlaceSlot(p, slot);
-      if (ps < 0) {  // a slot the place does not use: a faint cell, so that the rows line up
+      const auto found = net.findPlaceSlot(p, slot);
+      if (!found) {  // a slot the place does not use: a faint cell, so that the rows line up
         ImGui::BeginDisabled();
         ImGui::PushStyleColor(ImGuiCol_Button, {0.2f, 0.21f, 0.23f, 1.0f});
         ImGui::Button(name.c_str(), {56, 0});
@@ -114,13 +114,14 @@ void placeContents(const session::Session& session, net::PlaceId p, nlohmann::js
         ImGui::EndDisabled();
         continue;
       }
-      const auto& info = net.placeSlots()[static_cast<std::size_t>(ps)];
-      const bool sensor = !net.sensorPath(static_cast<net::PlaceSlotId>(ps)).empty();
+      const net::PlaceSlotId ps = *found;
+      const auto& info = net.placeSlots()[ps];
+      const bool sensor = !net.sensorPath(ps).empty();
       const auto kind = sensor ? net::SlotKind::Sensor : info.kind;
-      const auto tokens = sim.kernel().marking(static_cast<net::PlaceSlotId>(ps));
+      const auto tokens = sim.kernel().marking(ps);
       std::vector<std::string> names;
       if (kind == net::SlotKind::Node) {
-        for (net::NodeRef ref : sim.kernel().nodes(static_cast<net::PlaceSlotId>(ps))) names.push_back(sim.nodeName(ref));
+        for (net::NodeRef ref : sim.kernel().nodes(ps)) names.push_back(sim.nodeName(ref));
       }
       const std::string label = sensor ? name : name + " " + std::to_string(tokens);
       ImGui::PushStyleColor(ImGuiCol_Button, slotColour(kind, sensor || tokens > 0));
@@ -129,9 +130,9 @@ void placeContents(const session::Session& session, net::PlaceId p, nlohmann::js
       if (ImGui::IsItemHovered()) {
         ImGui::BeginTooltip();
         ImGui::Text("%s: %s slot", name.c_str(), net::slotKindName(kind));
-        if (sensor) ImGui::Text("reads %s", net.sensorPath(static_cast<net::PlaceSlotId>(ps)).c_str());
+        if (sensor) ImGui::Text("reads %s", net.sensorPath(ps).c_str());
         // the capacity now: a script may have changed it
-        const auto capacity = sim.kernel().capacity(static_cast<net::PlaceSlotId>(ps));
+        const auto capacity = sim.kernel().capacity(ps);
         if (!sensor) ImGui::Text("%lld token(s)%s", static_cast<long long>(tokens),
                                  capacity == net::kUnbounded ? "" : (", capacity " + std::to_string(capacity)).c_str());
         for (const auto& n : names) ImGui::BulletText("%s", n.c_str());
@@ -150,7 +151,7 @@ void placeContents(const session::Session& session, net::PlaceId p, nlohmann::js
     ImGui::TextWrapped("%s", line.c_str());
   }
   const auto& index = net.scriptIndex();
-  for (auto ps = place.slots_begin; ps < place.slots_end && ps < index.slots.size(); ++ps) {
+  for (net::PlaceSlotId ps{place.slots_begin}; ps < place.slots_end && ps < index.slots.size(); ++ps) {
     for (std::size_t k = 0; k < net::kSlotScripts.size(); ++k) {
       const auto i = index.slots[ps][k];
       if (i < 0) continue;
@@ -672,11 +673,9 @@ void drawContents(App& app, const Selection& sel, nlohmann::json& report) {
   if (session == nullptr) return;
   const auto& net = session->simulation().net();
   if (sel.kind == SelectionKind::Place) {
-    if (const auto p = net.findPlace(sel.name); p >= 0) placeContents(*session, static_cast<net::PlaceId>(p), report);
+    if (const auto p = net.findPlace(sel.name)) placeContents(*session, *p, report);
   } else if (sel.kind == SelectionKind::Transition) {
-    if (const auto t = net.findTransition(sel.name); t >= 0) {
-      transitionContents(*session, static_cast<net::TransitionId>(t), report);
-    }
+    if (const auto t = net.findTransition(sel.name)) transitionContents(*session, *t, report);
   }
 }
 

@@ -381,10 +381,10 @@ void runState(App& app, const session::Session& session, const Selection& sel, n
   const auto& sim = session.simulation();
   if (sel.kind == SelectionKind::Place) {
     const auto p = sim.net().findPlace(sel.name);
-    if (p < 0) return;
-    const auto tokens = sim.kernel().placeTokens(static_cast<net::PlaceId>(p));
+    if (!p) return;
+    const auto tokens = sim.kernel().placeTokens(*p);
     ImGui::Text("tokens: %lld", static_cast<long long>(tokens));
-    const auto& loc = sim.net().placeLoc(static_cast<net::PlaceId>(p));
+    const auto& loc = sim.net().placeLoc(*p);
     if (loc.line > 0) ImGui::TextDisabled("declared at %s", loc.str().c_str());
     report["tokens"] = tokens;
     ImGui::SetNextItemWidth(90);
@@ -394,9 +394,9 @@ void runState(App& app, const session::Session& session, const Selection& sel, n
                   session::Breakpoint::marking(sel.name, session::Compare::GreaterEqual, app.break_tokens), report);
   } else if (sel.kind == SelectionKind::Transition) {
     const auto t = sim.net().findTransition(sel.name);
-    if (t < 0) return;
-    const auto id = static_cast<net::TransitionId>(t);
-    const auto& tr = sim.net().transitions()[static_cast<std::size_t>(t)];
+    if (!t) return;
+    const net::TransitionId id = *t;
+    const auto& tr = sim.net().transitions()[id];
     const auto& kernel = sim.kernel();
     std::string state = kernel.occurring(id) ? "occurring" : kernel.enabled(id) ? "enabled" : "not enabled";
     if (tr.servers != 1) {

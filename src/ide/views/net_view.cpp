@@ -156,8 +156,8 @@ std::vector<diagram::ItemRef> holdersOf(App& app, const NetViewState& s, const s
   const auto& sim = app.run().session()->simulation();
   for (std::uint32_t i = 0; i < s.binding.transitions.size(); ++i) {
     const auto t = s.binding.transitions[i];
-    if (t < 0) continue;
-    for (const auto& [slot, ref] : sim.kernel().held(static_cast<net::TransitionId>(t))) {
+    if (!t) continue;
+    for (const auto& [slot, ref] : sim.kernel().held(*t)) {
       if (sim.nodeName(ref) != path) continue;
       out.push_back({diagram::ItemKind::Transition, i});
       break;

@@ -33,13 +33,13 @@ std::vector<scene::NodeHandle> highlighted(App& app, scene::Scene& s) {
   if (sel.kind != SelectionKind::Place || session == nullptr) return {};
   const auto& sim = session->simulation();
   const auto p = sim.net().findPlace(sel.name);
-  if (p < 0) return {};
-  const auto& place = sim.net().places()[static_cast<std::size_t>(p)];
+  if (!p) return {};
+  const auto& place = sim.net().places()[*p];
   // the run's tokens are nodes of the run's plant; before a run, the model's scene is shown:
   // the same nodes found there by path
   const bool same = &s == sim.plant();
   std::vector<scene::NodeHandle> out;
-  for (auto ps = place.slots_begin; ps < place.slots_end; ++ps) {
+  for (net::PlaceSlotId ps{place.slots_begin}; ps < place.slots_end; ++ps) {
     for (const auto h : sim.kernel().nodes(ps)) {
       if (same) {
         out.push_back(h);

@@ -35,7 +35,7 @@ void Firing::use(const Layout& layout) {
                 static_cast<std::uint32_t>(adds_.size()), static_cast<std::uint32_t>(changes_.size()),
                 static_cast<std::uint32_t>(deltas_.size())};
   };
-  for (TransitionId t = 0; t < transitions; ++t) {
+  for (TransitionId t{0}; t < transitions; ++t) {
     spans_[t] = here();
     touched.clear();
     for (const Term& term : net_.termsOf(t)) {
@@ -111,7 +111,7 @@ Affected::Affected(const Net& net, std::size_t most) {
   const std::size_t transitions = net.transitions().size();
   // per place slot: the transitions whose enabling reads its count
   std::vector<std::vector<TransitionId>> readers(net.placeSlots().size());
-  for (TransitionId t = 0; t < transitions; ++t) {
+  for (TransitionId t{0}; t < transitions; ++t) {
     for (const Term& term : net.termsOf(t)) {
       const bool reads = term.kind == TermKind::Input || term.kind == TermKind::Test || term.kind == TermKind::Inhibitor ||
                          (term.kind == TermKind::Output && net.placeSlots()[term.place_slot].capacity != kUnbounded);
@@ -122,7 +122,7 @@ Affected::Affected(const Net& net, std::size_t most) {
   std::vector<std::int64_t> delta(net.placeSlots().size(), 0);
   std::vector<bool> in(transitions, false);
   begin_.assign(transitions + 1, 0);
-  for (TransitionId t = 0; t < transitions; ++t) {
+  for (TransitionId t{0}; t < transitions; ++t) {
     begin_[t] = static_cast<std::uint32_t>(list_.size());
     for (const Term& term : net.termsOf(t)) {
       if (term.kind == TermKind::Input) delta[term.place_slot] -= term.weight;
@@ -170,7 +170,7 @@ Candidates::Candidates(const Net& net, Way way) : net_(&net), way_(way) {
   }
   std::vector<std::uint32_t> sentinel(net.transitions().size(), kNone);
   std::vector<std::uint32_t> count(places + 1, 0);
-  for (TransitionId t = 0; t < net.transitions().size(); ++t) {
+  for (TransitionId t{0}; t < net.transitions().size(); ++t) {
     for (const Term& term : net.termsOf(t)) {
       if (!watches(term)) continue;
       if (sentinel[t] == kNone || takers[term.place_slot] < takers[sentinel[t]]) sentinel[t] = term.place_slot;
@@ -184,7 +184,7 @@ Candidates::Candidates(const Net& net, Way way) : net_(&net), way_(way) {
   for (std::size_t k = 0; k < places; ++k) count[k + 1] += count[k];
   begin_ = count;
   watchers_.resize(count[places]);
-  for (TransitionId t = 0; t < net.transitions().size(); ++t) {
+  for (TransitionId t{0}; t < net.transitions().size(); ++t) {
     if (sentinel[t] != kNone) watchers_[count[sentinel[t]]++].t = t;
   }
 }
@@ -391,7 +391,7 @@ void summarise(const Net& net, const Observed& seen, StateSpace& out) {
   out.quasi_live = std::all_of(out.fired.begin(), out.fired.end(), [](bool b) { return b; });
   const auto places = net.places();
   out.place_bound.assign(places.size(), 0);
-  for (PlaceId p = 0; p < places.size(); ++p) {
+  for (PlaceId p{0}; p < places.size(); ++p) {
     bool constant = true;
     for (auto ps = places[p].slots_begin; ps < places[p].slots_end; ++ps) {
       if (seen.high[ps] == kW) {

@@ -390,7 +390,7 @@ class Candidates {
   // (those of one-bit fields it takes from or tests; none where it has no such field): a
   // filter that spares most watchers not enabled the look at their arcs
   struct Watcher {
-    TransitionId t = 0;
+    TransitionId t{0};
     std::uint32_t word = 0;
     std::uint64_t bits = 0;
   };

@@ -26,7 +26,7 @@ Stubborn::Stubborn(const Net& net, const Layout& layout) : layout_(layout), stam
   constexpr std::int64_t kAny = std::numeric_limits<std::int64_t>::max();
   const std::size_t slots = net.placeSlots().size();
   std::vector<std::vector<TransitionId>> raise(slots), lower(slots), floors(slots), ceilings(slots);
-  for (TransitionId t = 0; t < net.transitions().size(); ++t) {
+  for (TransitionId t{0}; t < net.transitions().size(); ++t) {
     need_begin_.push_back(static_cast<std::uint32_t>(needs_.size()));
     change_begin_.push_back(static_cast<std::uint32_t>(changes_.size()));
     std::vector<std::pair<std::uint32_t, std::int64_t>> delta;
