@@ -6,7 +6,7 @@
 # seeded with the test queries; the witness reader; the Modbus request decoder, seeded with the
 # test frames. Eight targets: about eight times SECONDS in all. Fails on any crash, hang, leak
 # or sanitizer report.
-# Needs the fuzz build: cmake --preset fuzz && cmake --build --preset fuzz
+# Needs the asan build, which holds the fuzz targets: cmake --preset asan && cmake --build --preset asan
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
@@ -16,7 +16,7 @@ export LSAN_OPTIONS="suppressions=$PWD/fuzz/lsan.supp:print_suppressions=0${LSAN
 fuzz() {  # fuzz NAME MAX_LEN 'NAME PATTERNS' SEED_DIRS...
   local name=$1 max_len=$2 patterns=$3
   shift 3
-  local work=build/fuzz/run-$name
+  local work=build/asan/fuzz-run/$name
   rm -rf "$work" && mkdir -p "$work/corpus" "$work/seeds"
   local find_names=() list pattern
   read -ra list <<<"$patterns"
@@ -26,7 +26,7 @@ fuzz() {  # fuzz NAME MAX_LEN 'NAME PATTERNS' SEED_DIRS...
   for dir in "$@"; do
     [ -d "$dir" ] && find "$dir" -maxdepth 1 -type f \( "${find_names[@]}" \) -exec cp {} "$work/seeds/" \;
   done
-  "build/fuzz/fuzz/$name" "$work/corpus" "$work/seeds" -max_total_time="$seconds" -max_len="$max_len" -timeout=10 \
+  "build/asan/fuzz/$name" "$work/corpus" "$work/seeds" -max_total_time="$seconds" -max_len="$max_len" -timeout=10 \
     -rss_limit_mb=2048 -artifact_prefix="$work/" -print_final_stats=1 2>"$work/log" || {
     tail -n 60 "$work/log"
     echo "fuzz: $name failed; the input is in $work/" >&2

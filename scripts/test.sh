@@ -4,10 +4,11 @@
 #   2. release build with warnings as errors; unit, golden, python and gui tests (CTest; the
 #      label `full`, every contest formula on the two largest nets, is left to `ctest --preset
 #      full` by hand);
-#   3. debug build under AddressSanitizer + UBSan; the unit tests again;
-#   4. clang build of the libFuzzer targets; GDPN_FUZZ_SECONDS (default 45) of fuzzing each
-#      loader and server (scripts/fuzz.sh: models, PNML, meshes, elevation files, input events,
-#      queries, witnesses, Modbus requests).
+#   3. one clang build (-O1) under AddressSanitizer + UBSan with libFuzzer's coverage: the unit
+#      tests again, and the libFuzzer targets;
+#   4. GDPN_FUZZ_SECONDS (default 45) of fuzzing each loader and server with that build
+#      (scripts/fuzz.sh: models, PNML, meshes, elevation files, input events, queries,
+#      witnesses, Modbus requests).
 # The whole must stay within 30 minutes on 2 cores. Each stage has a budget, in seconds on
 # the project's 2-core machine (docs/performance.md, "CI"); the script prints each stage's
 # time beside it at the end, and a stage over its budget is said there (not a failure: the
@@ -47,8 +48,7 @@ report() {  # each stage's seconds beside its budget; the builds and tests toget
 stage "Debian packages" - bash scripts/install-deps.sh
 stage "release build" 600 bash -c "cmake --preset ci >/dev/null && cmake --build --preset ci -j $jobs"
 stage "release tests" 300 ctest --preset ci -j "$jobs"
-stage "ASan + UBSan build" 420 bash -c "cmake --preset asan >/dev/null && cmake --build --preset asan -j $jobs"
+stage "ASan + UBSan + fuzz build" 540 bash -c "cmake --preset asan >/dev/null && cmake --build --preset asan -j $jobs"
 stage "ASan + UBSan unit tests" 150 ctest --preset asan -j "$jobs"
-stage "libFuzzer build" 240 bash -c "cmake --preset fuzz >/dev/null && cmake --build --preset fuzz -j $jobs"
 stage "fuzzing" 390 bash scripts/fuzz.sh "${GDPN_FUZZ_SECONDS:-45}"
 report

@@ -15,22 +15,12 @@
 #include <cstdio>
 #include <cstring>
 
+#include "gdpn/core/sanitizers.h"
 #include "gdpn/core/text.h"
 
 namespace gdpn::core {
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kSanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer) || __has_feature(thread_sanitizer)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-#else
-constexpr bool kSanitized = false;
-#endif
 
 /// The bytes of address space this process maps now (/proc/self/statm's first field).
 std::size_t mappedBytes() {

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "gdpn/core/sanitizers.h"
+
 namespace gdpn::core {
 namespace {
 
@@ -58,7 +60,7 @@ TEST(Memory, ASecondLevelCacheSizeIsTheReportedOneHeldToWhatCoresHave) {
   EXPECT_LE(here, std::size_t{4} << 20);
 }
 
-#if defined(__linux__) && !defined(__SANITIZE_ADDRESS__)
+#if defined(__linux__) && !GDPN_SANITIZED
 /// The flags of the mapping of this process that holds `p` (/proc/self/smaps' VmFlags), and
 /// where it starts and ends; empty where there is no such file.
 struct Mapping {
@@ -90,7 +92,7 @@ TEST(Memory, ALargeBlockLiesOnWholeHugePagesFromItsStart) {
     EXPECT_EQ(reinterpret_cast<std::uintptr_t>(p) % kHugePageBytes, 0u) << bytes;
     std::memset(p, 0xab, bytes);  // every byte asked for is there
     EXPECT_EQ(static_cast<unsigned char*>(p)[bytes - 1], 0xab);
-#if defined(__linux__) && !defined(__SANITIZE_ADDRESS__)
+#if defined(__linux__) && !GDPN_SANITIZED
     // where the kernel has transparent huge pages, the whole block is advised to lie on them
     // (a block from malloc alone has its first and last 2 MiB on small pages); ASan's
     // allocator maps its own blocks

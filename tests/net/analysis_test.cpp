@@ -12,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "gdpn/core/sanitizers.h"
 #include "gdpn/net/builder.h"
 #include "gdpn/net/compile.h"
 #include "gdpn/net/pnml.h"
@@ -709,13 +710,9 @@ TEST(Analysis, UnderAMemoryLimitASearchStopsWhereItHoldsMoreWithoutNewStates) {
   }
 }
 
-#if defined(__SANITIZE_ADDRESS__)
 /// AddressSanitizer keeps freed memory a while (its quarantine): the resident set tells
 /// nothing of what a search held.
-constexpr bool kResidentTells = false;
-#else
-constexpr bool kResidentTells = true;
-#endif
+constexpr bool kResidentTells = !core::kSanitized;
 
 /// The most memory the process has held since `from` began, bytes: its resident set's
 /// peak, set back to what it holds now before `from` runs (Linux: /proc/self/clear_refs).

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "gdpn/scene/actions.h"
@@ -121,7 +122,7 @@ TEST(FieldCheck, OneRuleForEveryKindOfValue) {
   const auto& nx = fieldOf(NodeKind::GradientField, "nx");
   EXPECT_EQ(nx.check(std::int64_t{1})->message, "'nx' must lie in [2, 1e+06], got 1");
   const auto& vectors = fieldOf(NodeKind::GradientField, "vectors");
-  EXPECT_EQ(vectors.check(std::vector<double>{1, 2, INFINITY})->component, 2);
+  EXPECT_EQ(vectors.check(std::vector<double>{1, 2, std::numeric_limits<double>::infinity()})->component, 2);
 }
 
 TEST(FieldCheck, ASensorsFieldsKeepTheirRulesWhenOneIsSetFromOutside) {
