@@ -5,19 +5,21 @@
 
 #include <imgui.h>
 
-#include <GLFW/glfw3.h>
-
 #include <algorithm>
-#include <iterator>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <iterator>
+#include <utility>
 
+#include "action_run.h"
 #include "detail/picture_texture.h"
 #include "detail/world_texture.h"
 #include "gdpn/ide/net_edit.h"
 #include "gdpn/ide/scene_edit.h"
 #include "gdpn/ide/set_field.h"
 #include "gdpn/scene/actions.h"
+#include "gdpn/ide/actions.h"
 #include "gdpn/session/breakpoint_syntax.h"
 #include "views.h"
 #include "views/net_view_state.h"
@@ -25,6 +27,13 @@
 namespace gdpn::ide {
 
 namespace {
+
+/// `path` made absolute and normal ("a/../b.yaml" from /w: "/w/b.yaml"); as given when it cannot be.
+std::string absolutePath(const std::string& path) {
+  std::error_code ec;
+  const auto a = std::filesystem::absolute(path, ec);
+  return ec ? path : a.lexically_normal().string();
+}
 
 constexpr const char* kRegularFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 constexpr const char* kBoldFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf";
@@ -45,9 +54,10 @@ Fonts loadFonts() {
 }
 
 App::App(std::unique_ptr<Document> doc, session::SessionOptions options)
-    : doc_(std::move(doc)), net_view_(std::make_unique<NetViewState>()) {
+    : doc_(std::move(doc)), options_(options), net_view_(std::make_unique<NetViewState>()) {
   core::Diagnostics diags;
   (void)run_.open(*doc_, diags, std::move(options));
+  if (std::filesystem::exists(doc_->model().path)) recent = withRecent(recent, absolutePath(doc_->model().path));
   // the world view starts where the scene's first Camera looks (or a view that frames it)
   if (auto* s = doc_->scene()) {
     scene::updateTransforms(s->root());
@@ -167,6 +177,10 @@ void App::redo() {
 }
 
 void App::save() {
+  if (untitled_) {  // a new model has no file yet: its name first
+    browse(BrowseFor::SaveAs);
+    return;
+  }
   core::Diagnostics diags;
   message = doc_->save(diags) ? "saved " + doc_->model().path : diags.str();
 }
@@ -349,7 +363,155 @@ void App::importMeshes(const std::string& files) {
 
 void App::saveAs(const std::string& path) {
   core::Diagnostics diags;
-  message = doc_->saveAs(path, diags) ? "saved as " + path : diags.str();
+  if (!doc_->saveAs(path, diags)) {
+    message = diags.str();
+    return;
+  }
+  message = "saved as " + path;
+  untitled_ = false;
+  recent = withRecent(recent, absolutePath(path));
+  // a question waited for this save (a new model saved before it is closed)
+  if (question.then != AfterQuestion::None) {
+    const auto waiting = std::exchange(question, {});
+    proceed(waiting.then, waiting.path);
+  }
+}
+
+void App::newModel() {
+  if (!askFirst(AfterQuestion::New, {})) proceed(AfterQuestion::New, {});
+}
+
+void App::openModel(const std::string& path) {
+  if (!askFirst(AfterQuestion::Open, path)) proceed(AfterQuestion::Open, path);
+}
+
+void App::closeModel() {
+  if (!askFirst(AfterQuestion::Close, {})) proceed(AfterQuestion::Close, {});
+}
+
+void App::quit() {
+  if (!askFirst(AfterQuestion::Quit, {})) proceed(AfterQuestion::Quit, {});
+}
+
+bool App::askFirst(AfterQuestion then, const std::string& path) {
+  if (!doc_->modified()) return false;
+  question = {then, path};
+  return true;
+}
+
+void App::answer(SaveAnswer a) {
+  if (question.then == AfterQuestion::None) return;
+  switch (a) {
+    case SaveAnswer::Cancel: question = {}; return;
+    case SaveAnswer::DontSave: break;
+    case SaveAnswer::Save:
+      if (untitled_) {  // Save As first; the question goes on once it is saved
+        browse(BrowseFor::SaveAs);
+        return;
+      }
+      save();
+      if (doc_->modified()) {  // the save failed: the message says why, the model stays
+        question = {};
+        return;
+      }
+      break;
+  }
+  const auto waiting = std::exchange(question, {});
+  proceed(waiting.then, waiting.path);
+}
+
+void App::proceed(AfterQuestion then, const std::string& path) {
+  switch (then) {
+    case AfterQuestion::None: return;
+    case AfterQuestion::Quit: quit_requested_ = true; return;
+    case AfterQuestion::New:
+    case AfterQuestion::Close: {
+      // a name beside the old model's that no file has yet
+      const auto folder = std::filesystem::path(doc_->model().path).parent_path();
+      std::string name = "untitled.gdpn.yaml";
+      for (int n = 2; std::filesystem::exists(folder / name); ++n) name = "untitled-" + std::to_string(n) + ".gdpn.yaml";
+      replaceDocument(Document::create((folder / name).string()), true);
+      message = then == AfterQuestion::New ? "a new model: Save gives it a name" : "closed; a new model took its place";
+      return;
+    }
+    case AfterQuestion::Open: {
+      core::Diagnostics diags;
+      auto doc = Document::open(path, diags);
+      if (!doc) {
+        message = "cannot open " + path + ": " + (diags.all().empty() ? std::string("no such model") : diags.all().front().str());
+        return;
+      }
+      replaceDocument(std::move(doc), false);
+      recent = withRecent(recent, absolutePath(path));
+      message = "opened " + path;
+      return;
+    }
+  }
+}
+
+void App::replaceDocument(std::unique_ptr<Document> doc, bool untitled) {
+  doc_ = std::move(doc);
+  untitled_ = untitled;
+  core::Diagnostics diags;
+  (void)run_.open(*doc_, diags, options_);
+  run_.setPlantOnly(false);
+  net_view_ = std::make_unique<NetViewState>();
+  token_types_revision_ = ~std::uint64_t{0};
+  scripts = {};
+  manipulating = {};
+  camera_node.clear();
+  fire_target.clear();
+  const auto names = run_.transitions();
+  if (!names.empty()) fire_target = names.front();
+  orbit = OrbitCamera{};
+  if (auto* s = doc_->scene()) {
+    scene::updateTransforms(s->root());
+    std::string error;
+    orbit = OrbitCamera::from(render::chooseCamera(*s, "", 0.0, error));
+  }
+  restore_offered = doc_->autosavePending();
+  autosaved_revision = doc_->revision();
+  quiet_revision = followed_revision = 0;
+  world_key = {};
+  if (renderer) renderer = std::make_unique<render::Renderer>(std::filesystem::path(doc_->model().path).parent_path().string());
+}
+
+void App::browse(BrowseFor mode) {
+  browser.open = true;
+  browser.mode = mode;
+  browser.error.clear();
+  browser.replacing.clear();
+  const auto path = std::filesystem::path(absolutePath(doc_->model().path));
+  browser.folder = path.parent_path().string();
+  browser.name = mode == BrowseFor::SaveAs ? path.filename().string() : std::string();
+}
+
+std::string App::title() const {
+  return (doc_->modified() ? "*" : "") + std::filesystem::path(doc_->model().path).filename().string() + " - gdpn ide";
+}
+
+void App::openGuide() {
+  // the installed docs (PREFIX/share/doc/gdpn beside PREFIX/bin), else the sources' of a build
+  // tree the program runs from
+  std::error_code ec;
+  const auto exe = std::filesystem::canonical("/proc/self/exe", ec);
+  std::vector<std::filesystem::path> candidates;
+  if (!ec) {
+    candidates.push_back(exe.parent_path().parent_path() / "share" / "doc" / "gdpn" / "ide.md");
+    for (auto dir = exe.parent_path(); dir.has_relative_path(); dir = dir.parent_path()) {
+      candidates.push_back(dir / "docs" / "ide.md");
+    }
+  }
+  for (const auto& c : candidates) {
+    if (!std::filesystem::exists(c, ec)) continue;
+    message = "the guide: " + c.string();
+    if (std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr) {
+      const std::string command = "xdg-open '" + c.string() + "' >/dev/null 2>&1 &";
+      if (std::system(command.c_str()) != 0) message += " (xdg-open could not show it)";
+    }
+    return;
+  }
+  message = "the guide (docs/ide.md) is not installed here";
 }
 
 void App::restoreAutosave() {
@@ -457,38 +619,8 @@ bool App::perform(const Action& a, std::string& error) {
       if (!selectByName(a.text)) error = "nothing is called '" + a.text + "'";
       break;
     case ActionKind::Press:
-      if (a.text == "run") run_.run(RunSpeed::RealTime);
-      else if (a.text == "faster") run_.run(RunSpeed::Faster);
-      else if (a.text == "fastest") run_.run(RunSpeed::Fastest);
-      else if (a.text == "pause") run_.pause();
-      else if (a.text == "step") run_.step();
-      else if (a.text == "reset") reset();
-      else if (a.text == "plant-only") run_.setPlantOnly(!run_.plantOnly());
-      else if (a.text == "mini-view") show_mini = !show_mini;
-      else if (a.text == "sensors") show_sensors = !show_sensors;
-      else if (a.text == "joints") show_joints = !show_joints;
-      else if (a.text == "contacts") show_contacts = !show_contacts;
-      else if (a.text == "shadows") show_shadows = !show_shadows;
-      else if (a.text == "grid") show_grid = !show_grid;
-      else if (a.text == "select-tool") tool = Tool::Select;
-      else if (a.text == "move-tool") tool = Tool::Move;
-      else if (a.text == "turn-tool") tool = Tool::Turn;
-      else if (a.text == "snap") snap = !snap;
-      else if (a.text == "local-axes") local_axes = !local_axes;
-      else if (a.text == "movie") toggleMovie();
-      else if (a.text == "undo") undo();
-      else if (a.text == "redo") redo();
-      else if (a.text == "save") save();
-      else if (a.text == "copy") copySelection();
-      else if (a.text == "cut") {
-        copySelection();
-        deleteSelection();
-      } else if (a.text == "paste") paste();
-      else if (a.text == "restore" || a.text == "discard") {
-        if (!restore_offered) error = "no autosave is offered";
-        else if (a.text == "restore") restoreAutosave();
-        else discardAutosave();
-      }
+      if (const auto id = findAction(a.text)) error = performAction(*this, *id);
+      else error = "no action is called '" + a.text + "' (" + actionNames() + ")";
       break;
     case ActionKind::Fire: {
       const auto names = run_.transitions();
@@ -635,23 +767,9 @@ void App::frame(float width, float height, double wall_seconds) {
   followEdits(wall_seconds);
   run_.advance(wall_seconds);
 
-  // the keys that work everywhere
+  // the actions' shortcuts, everywhere
   auto& io = ImGui::GetIO();
-  if (!io.KeyCtrl && !io.WantTextInput && ImGui::IsKeyPressed(GLFW_KEY_DELETE, false)) deleteSelection();
-  if (io.KeyCtrl && !io.WantTextInput) {
-    if (ImGui::IsKeyPressed(GLFW_KEY_Z, false)) undo();
-    if (ImGui::IsKeyPressed(GLFW_KEY_Y, false)) redo();
-    if (ImGui::IsKeyPressed(GLFW_KEY_C, false)) copySelection();
-    if (ImGui::IsKeyPressed(GLFW_KEY_X, false)) {
-      copySelection();
-      deleteSelection();
-    }
-    if (ImGui::IsKeyPressed(GLFW_KEY_V, false)) paste();
-    if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) {
-      if (io.KeyShift) save_as_open = true;
-      else save();
-    }
-  }
+  handleShortcuts(*this);
 
   const auto layout = Layout::of(splitters_, width, height);
   ImGui::SetNextWindowPos({0, 0});
@@ -665,17 +783,19 @@ void App::frame(float width, float height, double wall_seconds) {
   ImGui::PopStyleVar(3);
 
   nlohmann::json report;
-  drawToolbar(*this, layout.toolbar, report["toolbar"]);
-  drawTreeView(*this, layout.tree, report["tree"]);
-  drawWorldView(*this, layout.world, report["world"]);
-  drawNetView(*this, layout.net, report["net_view"]);
-  drawInspector(*this, layout.inspector, report["inspector"]);
-  drawDiagnostics(*this, layout.diagnostics, report["diagnostics"], report["breakpoints"]);
+  drawToolbar(*this, layout.toolbar, report["toolbar"], report["menu"]);
+  // a view filling the window leaves the others out
+  if (layout.tree.w > 0) drawTreeView(*this, layout.tree, report["tree"]);
+  if (layout.world.w > 0) drawWorldView(*this, layout.world, report["world"]);
+  if (layout.net.w > 0) drawNetView(*this, layout.net, report["net_view"]);
+  if (layout.inspector.w > 0) drawInspector(*this, layout.inspector, report["inspector"]);
+  if (layout.diagnostics.w > 0) drawDiagnostics(*this, layout.diagnostics, report["diagnostics"], report["breakpoints"]);
   drawStatusBar(*this, layout.status, report["status"]);
 
   // the splitters: drag a handle to move it
   for (int i = 0; i < 4; ++i) {
     const auto& h = layout.handles[i];
+    if (h.w <= 0 || h.h <= 0) continue;
     ImGui::SetCursorScreenPos({h.x, h.y});
     ImGui::PushID(i);
     ImGui::InvisibleButton("##splitter", {std::max(h.w, 1.0F), std::max(h.h, 1.0F)});
@@ -698,8 +818,11 @@ void App::frame(float width, float height, double wall_seconds) {
   }
   ImGui::End();
   // over the world view, in a window of its own so that it stays on top and can be moved
-  drawMiniView(*this, layout.world, report["mini_view"]);
+  if (layout.world.w > 0) drawMiniView(*this, layout.world, report["mini_view"]);
   drawRestoreOffer(report["restore"]);
+  drawFileBrowser(*this, report["file_browser"]);
+  drawSaveQuestion(*this, report["save_changes"]);
+  drawKeys(*this, report["keys"]);
 
   // what the frame showed, for tests and scripts
   const auto& sel = doc_->selection();
@@ -713,7 +836,8 @@ void App::frame(float width, float height, double wall_seconds) {
                    {"message", run_.message()}};
   report["undo"] = {{"depth", doc_->history().depth()}, {"can_redo", doc_->history().canRedo()},
                     {"label", doc_->history().undoLabel()}};
-  report["document"] = {{"path", doc_->model().path}, {"modified", doc_->modified()},
+  report["document"] = {{"path", doc_->model().path}, {"modified", doc_->modified()}, {"title", title()},
+                        {"untitled", untitled_}, {"recent", recent},
                         {"autosaved_revision", autosaved_revision}, {"revision", doc_->revision()}};
   report["layout"] = {{"toolbar", rectJson(layout.toolbar)}, {"tree", rectJson(layout.tree)},
                       {"world", rectJson(layout.world)},     {"net", rectJson(layout.net)},
@@ -722,7 +846,9 @@ void App::frame(float width, float height, double wall_seconds) {
   report["splitters"] = {{"tree_width", splitters_.tree_width},
                          {"bottom_height", splitters_.bottom_height},
                          {"net_width", splitters_.net_width},
-                         {"diagnostics_width", splitters_.diagnostics_width}};
+                         {"diagnostics_width", splitters_.diagnostics_width},
+                         {"swapped", splitters_.swapped},
+                         {"full", splitters_.full == FullView::World ? "world" : splitters_.full == FullView::Net ? "net" : "none"}};
   report["message"] = message;
   report["copied"] = copied;
   report_ = std::move(report);

@@ -80,6 +80,44 @@ struct ManipulatorDrag {
   std::uint64_t id = 0;          ///< its merge key: the drag is one step
 };
 
+/// What the file browser chooses a file for.
+enum class BrowseFor : std::uint8_t {
+  Open,    ///< a model to open
+  SaveAs,  ///< the name to save the model as
+};
+
+/// The IDE's own file browser (views/file_browser.cpp): a folder's subfolders and model files.
+struct FileBrowser {
+  bool open = false;                ///< shown
+  BrowseFor mode = BrowseFor::Open; ///< what for
+  std::string folder;               ///< the folder listed (absolute)
+  std::string name;                 ///< the file name typed or clicked
+  std::string error;                ///< why the last choice was refused
+  std::string replacing;            ///< the existing file Save As was told about once (the next Save replaces it)
+};
+
+/// What "save changes?" was asked for: it is done once the question is answered.
+enum class AfterQuestion : std::uint8_t {
+  None,   ///< no question
+  New,    ///< a new model
+  Open,   ///< open `SaveQuestion::path`
+  Close,  ///< close the model
+  Quit,   ///< close the IDE
+};
+
+/// The answers to "save changes?".
+enum class SaveAnswer : std::uint8_t {
+  Save,      ///< save, then go on (a new model is saved through Save As first)
+  DontSave,  ///< go on; the edits are lost
+  Cancel,    ///< stay
+};
+
+/// The question "save changes?" under way.
+struct SaveQuestion {
+  AfterQuestion then = AfterQuestion::None;  ///< what waits for the answer
+  std::string path;                          ///< the file to open, for Open
+};
+
 /// Fonts the views use (null: ImGui's default).
 struct Fonts {
   ImFont* regular = nullptr;  ///< DejaVu Sans
@@ -108,10 +146,42 @@ class App {
   [[nodiscard]] const nlohmann::json& report() const { return report_; }
   /// The document.
   [[nodiscard]] Document& document() { return *doc_; }
+  /// The document, to read.
+  [[nodiscard]] const Document& document() const { return *doc_; }
   /// The run.
   [[nodiscard]] RunControl& run() { return run_; }
+  /// The run, to read.
+  [[nodiscard]] const RunControl& run() const { return run_; }
   /// The splitters (loaded from and saved to the settings file by the platform).
   [[nodiscard]] Splitters& splitters() { return splitters_; }
+  /// The splitters, to read.
+  [[nodiscard]] const Splitters& splittersView() const { return splitters_; }
+
+  // files: each asks "save changes?" first where unsaved edits would be lost
+  /// A new, empty model in place of this one (saved through Save As).
+  void newModel();
+  /// Opens the model file `path` in place of this one; its errors go to the message line.
+  void openModel(const std::string& path);
+  /// Closes the model: a new, empty one takes its place.
+  void closeModel();
+  /// Closes the IDE (the platform ends at the end of the frame).
+  void quit();
+  /// True once the IDE should close.
+  [[nodiscard]] bool quitRequested() const { return quit_requested_; }
+  /// Answers the "save changes?" question under way.
+  void answer(SaveAnswer answer);
+  /// Opens the file browser to choose a file for `mode`, in the model's folder.
+  void browse(BrowseFor mode);
+  /// The window's title: the model's file name, marked "*" while it has unsaved edits.
+  [[nodiscard]] std::string title() const;
+  /// True for a model made by New that has no file of its own yet.
+  [[nodiscard]] bool untitled() const { return untitled_; }
+  /// The world and net views trade places.
+  void swapViews() { splitters_.swapped = !splitters_.swapped; }
+  /// `view` fills the window, or the panels come back when it does already.
+  void fill(FullView view) { splitters_.full = splitters_.full == view ? FullView::None : view; }
+  /// Opens the IDE's guide (docs/ide.md, installed or beside the sources) in the browser.
+  void openGuide();
 
   // the views' shared state, read and written by the view files (views/*.cpp)
   /// The scene the world and tree views show: the run's plant once it has run, else the
@@ -193,8 +263,11 @@ class App {
   double autosave_clock = 0;        ///< seconds the edits not yet autosaved have waited
   std::uint64_t autosaved_revision = 0;  ///< the document's revision last autosaved
   bool restore_offered = false;     ///< the start found a newer autosave: the IDE asks what to do
-  bool save_as_open = false;        ///< the Save As field is shown
-  std::string save_as_path;         ///< the file name typed into it
+  FileBrowser browser;              ///< the file browser (Open, Save As)
+  SaveQuestion question;            ///< "save changes?" under way
+  std::vector<std::string> recent;  ///< model files opened, the latest first (the settings file keeps them)
+  bool keys_open = false;           ///< Help's list of the actions and their keys is shown
+  RunSpeed speed = RunSpeed::RealTime;  ///< the toolbar's speed for Run
   std::string message;              ///< the status bar's message line
   std::string copied;               ///< what the last copy put on the clipboard (a model file)
   double fps = 0;                   ///< frames per second, smoothed
@@ -235,7 +308,16 @@ class App {
   std::string pasteScene(std::shared_ptr<const scene::Scene> fragment, std::string& made);
   void followEdits(double wall_seconds);
   void drawRestoreOffer(nlohmann::json& report);
+  // does what the question waited for (no question asked)
+  void proceed(AfterQuestion then, const std::string& path);
+  // true when `then` must wait for "save changes?" (asked now)
+  bool askFirst(AfterQuestion then, const std::string& path);
+  // puts `doc` in place of the document: a new run, the views' state of the old model dropped
+  void replaceDocument(std::unique_ptr<Document> doc, bool untitled);
   std::unique_ptr<Document> doc_;
+  session::SessionOptions options_;  // how each run is made
+  bool untitled_ = false;
+  bool quit_requested_ = false;
   std::unique_ptr<NetViewState> net_view_;
   TokenTypes token_types_;
   std::uint64_t token_types_revision_ = ~std::uint64_t{0};

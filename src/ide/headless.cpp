@@ -206,6 +206,7 @@ int runHeadless(const IdeOptions& o, std::unique_ptr<Document> doc, const std::v
       code = 1;
       break;
     }
+    if (app.quitRequested()) break;  // File > Quit: the actions after it are not done
   }
   if (code == 0) {
     d.frame();

@@ -1,6 +1,8 @@
 // Reading replay files: a YAML list of one-key maps, each an action, located for messages.
 
 #include "gdpn/ide/replay.h"
+
+#include "gdpn/ide/actions.h"
 #include "gdpn/session/breakpoint_syntax.h"
 
 #include <yaml-cpp/yaml.h>
@@ -43,17 +45,8 @@ class ActionReader {
     if (key == "screenshot") return word(v, a, ActionKind::Screenshot);
     if (key == "press") {
       if (!word(v, a, ActionKind::Press)) return false;
-      static constexpr const char* kControls[] = {"run",    "faster",  "fastest",  "pause",   "step",    "reset",
-                                                  "plant-only", "mini-view", "sensors", "joints", "contacts",
-                                                  "shadows", "grid",    "movie",    "undo",    "redo",    "save",
-                                                  "restore", "discard", "select-tool", "move-tool",
-                                                  "turn-tool", "snap", "local-axes", "copy", "cut", "paste"};
-      std::string known;
-      for (const char* c : kControls) {
-        if (a.text == c) return true;
-        known += (known.empty() ? "" : ", ") + std::string(c);
-      }
-      return fail(v, "unknown control '" + a.text + "' (" + known + ")");
+      if (findAction(a.text)) return true;
+      return fail(v, "unknown action '" + a.text + "' (" + actionNames() + ")");
     }
     if (key == "run") return number(v, a, ActionKind::RunFor, false);
     if (key == "steps") return number(v, a, ActionKind::Steps, true);

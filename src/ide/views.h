@@ -13,8 +13,19 @@ namespace gdpn::ide {
 /// The drag-and-drop payload of a scene node dragged from the tree view: its path.
 inline constexpr const char* kNodePayload = "GDPN_NODE";
 
-/// Run, Pause, Step, Run N, Fire, Plant only, Reset, Undo, Redo.
-void drawToolbar(App& app, const Rect& at, nlohmann::json& report);
+/// The menus (File, Edit, View, Run, Help), then Run, Pause, Step, Run N, Fire, Plant only,
+/// Reset, Save, Undo, Redo: every button an action of the table (gdpn/ide/actions.h).
+void drawToolbar(App& app, const Rect& at, nlohmann::json& report, nlohmann::json& menu_report);
+/// The menus at the toolbar's start, each listing its actions of the table with their keys,
+/// check marks and whether they can be done now; File's Open Recent lists App::recent.
+void drawMenus(App& app, nlohmann::json& report);
+/// Help's list of every action with its key and what it does, while App::keys_open.
+void drawKeys(App& app, nlohmann::json& report);
+/// The file browser, while App::browser.open: the folder's subfolders and model files, a name
+/// field, and Open or Save.
+void drawFileBrowser(App& app, nlohmann::json& report);
+/// "Save changes?" while App::question waits: Save, Don't Save, Cancel.
+void drawSaveQuestion(App& app, nlohmann::json& report);
 /// The scene tree (node tokens and sensors in bold, colours by category) and the net's
 /// places and transitions.
 void drawTreeView(App& app, const Rect& at, nlohmann::json& report);

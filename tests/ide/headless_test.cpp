@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gdpn/platform/png.h"
+#include "ide/headless_fixture.h"
 #include "ide/ide_model.h"
 #include "support/cli.h"
 #include "support/golden.h"
@@ -23,43 +24,6 @@ namespace gdpn::ide {
 namespace {
 
 using gdpn::testing::runShell;
-
-class HeadlessIde : public gdpn::testing::TempDirTest {
- protected:
-  /// Runs the headless IDE (1280 x 720) on the factory with `actions` (a replay file's text);
-  /// the report.
-  nlohmann::json replay(const std::string& actions, const std::string& extra = {}, int expect = 0) {
-    return replayOn("examples/factory", actions, extra, expect);
-  }
-  /// The same on the model at `model`.
-  nlohmann::json replayOn(const std::string& model, const std::string& actions, const std::string& extra = {},
-                          int expect = 0) {
-    const auto file = write("actions.yaml", actions);
-    const auto report = (dir_ / "report.json").string();
-    std::filesystem::remove(report);
-    last_ = runShell(env() + " \"$GDPN\" ide '" + model +
-                     "' --headless --size " + size_ + " --replay '" + file + "' --report '" + report + "' " + extra);
-    EXPECT_EQ(last_.code, expect) << last_.out;
-    if (last_.code != 0) return {};
-    std::ifstream in(report);
-    return nlohmann::json::parse(in, nullptr, false);
-  }
-  /// The settings and state folders of the IDEs these tests start: inside the test's folder.
-  [[nodiscard]] std::string env() const {
-    return "XDG_CONFIG_HOME='" + (dir_ / "config").string() + "' XDG_STATE_HOME='" + (dir_ / "state").string() + "'";
-  }
-  /// The autosaves in the state folder.
-  [[nodiscard]] std::vector<std::filesystem::path> autosaves() const {
-    std::vector<std::filesystem::path> found;
-    std::error_code ec;
-    for (const auto& e : std::filesystem::directory_iterator(dir_ / "state" / "gdpn" / "autosave", ec)) {
-      if (e.path().filename().string().front() != '.') found.push_back(e.path());
-    }
-    return found;
-  }
-  gdpn::testing::CliResult last_;
-  std::string size_ = "1280x720";  // the window of the IDEs started
-};
 
 TEST_F(HeadlessIde, OpensTheFactoryInEditModeWithEveryView) {
   const auto r = replay("[]");
@@ -336,7 +300,7 @@ TEST_F(HeadlessIde, MistakesInTheReplayFileAreLocated) {
   replay("- press: step\n- jump: 3\n", {}, 1);
   EXPECT_NE(last_.out.find("actions.yaml:2:3: error: unknown action 'jump'"), std::string::npos) << last_.out;
   replay("- press: fly\n", {}, 1);
-  EXPECT_NE(last_.out.find("actions.yaml:1:10: error: unknown control 'fly'"), std::string::npos) << last_.out;
+  EXPECT_NE(last_.out.find("actions.yaml:1:10: error: unknown action 'fly'"), std::string::npos) << last_.out;
   replay("- select: nowhere\n", {}, 1);
   EXPECT_NE(last_.out.find("actions.yaml:1:3: error: nothing is called 'nowhere'"), std::string::npos) << last_.out;
   replay("- key: f13\n", {}, 1);

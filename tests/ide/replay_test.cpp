@@ -62,7 +62,7 @@ TEST(Replay, ABreakpointMayBeWrittenAsGdpnRunWritesIt) {
 TEST(Replay, MistakesAreLocated) {
   const std::pair<const char*, const char*> cases[] = {
       {"- hop: 1\n", "a.yaml:1:3: error: unknown action 'hop'"},
-      {"- press: fly\n", "a.yaml:1:10: error: unknown control 'fly'"},
+      {"- press: fly\n", "a.yaml:1:10: error: unknown action 'fly'"},
       {"- run: -1\n", "a.yaml:1:8: error: expects seconds from 0 to 10^7"},
       {"- steps: 1.5\n", "a.yaml:1:10: error: expects a whole number"},
       {"- click: [1]\n", "a.yaml:1:10: error: expects a point [X, Y] in window pixels"},

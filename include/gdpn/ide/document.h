@@ -83,6 +83,8 @@ class Document {
   bool redo() { return undo_.redo(*this); }
   /// The undo stack.
   [[nodiscard]] UndoStack& history() { return undo_; }
+  /// The undo stack, to read.
+  [[nodiscard]] const UndoStack& history() const { return undo_; }
 
   /// Counts changes: it grows with every applied, undone or redone command and reload.
   [[nodiscard]] std::uint64_t revision() const { return revision_; }

@@ -16,7 +16,7 @@ namespace gdpn::ide {
 /// What an action does.
 enum class ActionKind : std::uint8_t {
   Select,      ///< `select: NAME`: a node path, else a place, transition or instance name
-  Press,       ///< `press: run|faster|fastest|pause|step|reset|plant-only|mini-view|movie|undo|redo|save|restore|discard|select-tool|move-tool|turn-tool|snap|local-axes|copy|cut|paste`
+  Press,       ///< `press: NAME`: an action of the table by its name (gdpn/ide/actions.h: save, undo, run, ...)
   Fire,        ///< `fire: TRANSITION`
   RunFor,      ///< `run: SECONDS` of model time (whole steps)
   Steps,       ///< `steps: N` steps

@@ -91,9 +91,15 @@ bool writeOutputs(App& app, int width, int height, const std::string& screenshot
 }
 
 void loadSettings(App& app) {
-  if (auto s = loadSplitters(settingsPath())) app.splitters() = *s;
+  if (auto s = loadSettingsFile(settingsPath())) {
+    app.splitters() = s->splitters;
+    // the model opened from the command line is the latest
+    const auto opened = app.recent;
+    app.recent = s->recent;
+    for (auto it = opened.rbegin(); it != opened.rend(); ++it) app.recent = withRecent(app.recent, *it);
+  }
 }
 
-void saveSettings(App& app) { (void)saveSplitters(settingsPath(), app.splitters()); }
+void saveSettings(App& app) { (void)saveSettingsFile(settingsPath(), {app.splitters(), app.recent}); }
 
 }  // namespace gdpn::ide

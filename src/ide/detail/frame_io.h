@@ -24,9 +24,9 @@ void drawFrame(App& app, int fb_width, int fb_height, double wall_seconds);
 std::vector<std::uint8_t> readFramebuffer(int width, int height);
 /// Writes the picture and the report files asked for; false (with a message on stderr) on error.
 bool writeOutputs(App& app, int width, int height, const std::string& screenshot, const std::string& report);
-/// Loads the splitters from the settings file (when there is one).
+/// Loads the layout and the recent files from the settings file (when there is one).
 void loadSettings(App& app);
-/// Saves the splitters to the settings file.
+/// Saves the layout and the recent files to the settings file.
 void saveSettings(App& app);
 
 }  // namespace gdpn::ide

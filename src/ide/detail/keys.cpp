@@ -4,6 +4,8 @@
 
 #include <GLFW/glfw3.h>
 
+#include <string>
+
 namespace gdpn::ide {
 
 const std::vector<std::pair<int, std::string>>& sensorKeys() {
@@ -25,9 +27,21 @@ const std::vector<std::pair<int, std::string>>& sensorKeys() {
   return keys;
 }
 
+const std::vector<std::pair<int, std::string>>& commandKeys() {
+  static const auto keys = [] {
+    std::vector<std::pair<int, std::string>> k;
+    for (int f = 1; f <= 12; ++f) k.emplace_back(GLFW_KEY_F1 + f - 1, "f" + std::to_string(f));
+    k.emplace_back(GLFW_KEY_HOME, "home");
+    return k;
+  }();
+  return keys;
+}
+
 int keyCode(std::string_view name) {
-  for (const auto& [code, n] : sensorKeys()) {
-    if (n == name) return code;
+  for (const auto* keys : {&sensorKeys(), &commandKeys()}) {
+    for (const auto& [code, n] : *keys) {
+      if (n == name) return code;
+    }
   }
   return -1;
 }

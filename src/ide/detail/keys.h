@@ -11,7 +11,9 @@ namespace gdpn::ide {
 
 /// Every key the sensors hear: GLFW key code and name.
 const std::vector<std::pair<int, std::string>>& sensorKeys();
-/// The GLFW code of the key called `name`, or -1.
+/// The keys only the IDE's shortcuts use (sensors do not hear them): "f1".."f12", "home".
+const std::vector<std::pair<int, std::string>>& commandKeys();
+/// The GLFW code of the key called `name` (a sensor's or a command's), or -1.
 int keyCode(std::string_view name);
 
 }  // namespace gdpn::ide

@@ -1,55 +1,71 @@
-// The toolbar: the run controls, the transition to fire, undo and redo.
+// The toolbar: the menus, the run controls, the transition to fire, save, undo and redo; each
+// button an action of the table.
 
 #include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <string>
 
-#include <imgui_stdlib.h>
-
+#include "../action_run.h"
 #include "../views.h"
+#include "gdpn/ide/actions.h"
 
 namespace gdpn::ide {
 
 namespace {
 
-/// A button drawn faded, and deaf to clicks, while `enabled` is false.
-bool toolButton(const char* label, bool enabled) {
+/// A button for action `id` of the table: its label (or `label`), faded and deaf to clicks
+/// while the action cannot be done, its help as the tooltip, its centre noted in `report`.
+void actionButton(App& app, ActionId id, nlohmann::json& report, const char* label = nullptr, ImVec2 size = {0, 0}) {
+  const auto& a = info(id);
+  const bool enabled = actionEnabled(app, id);
+  const std::string text = label != nullptr ? std::string(label) : std::string(a.label);
   ImGui::PushStyleVar(ImGuiStyleVar_Alpha, enabled ? 1.0F : 0.5F);
-  const bool pressed = ImGui::Button(label);
+  const bool pressed = ImGui::Button(text.c_str(), size);
   ImGui::PopStyleVar();
-  return pressed && enabled;
+  noteItem(std::string(a.name), report);
+  if (ImGui::IsItemHovered()) {
+    const std::string keys = a.keys.empty() ? std::string() : " (" + std::string(a.keys) + ")";
+    ImGui::SetTooltip("%s%s", std::string(a.help).c_str(), keys.c_str());
+  }
+  if (pressed && enabled) (void)performAction(app, id);
 }
 
 }  // namespace
 
-void drawToolbar(App& app, const Rect& at, nlohmann::json& report) {
+void drawToolbar(App& app, const Rect& at, nlohmann::json& report, nlohmann::json& menu_report) {
   auto& run = app.run();
   ImGui::SetCursorScreenPos({at.x, at.y});
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {8, 6});
   ImGui::BeginChild("##toolbar", {at.w, at.h}, false, ImGuiWindowFlags_AlwaysUseWindowPadding);
   ImGui::PopStyleVar();
+  drawMenus(app, menu_report);
+  ImGui::SameLine(0, 16);
   const bool ready = run.session() != nullptr;
   const bool running = run.mode() == RunMode::Running;
-  if (!ready) ImGui::BeginDisabled();
+  nlohmann::json buttons = nlohmann::json::object();
 
   // run at a speed, pause, step, run N steps
-  static const RunSpeed kSpeeds[] = {RunSpeed::RealTime, RunSpeed::Faster, RunSpeed::Fastest};
-  static int speed = 0;
-  if (ImGui::Button(running ? "Running" : "Run", {70, 0})) run.run(kSpeeds[speed]);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Run the model at the chosen speed");
+  static constexpr RunSpeed kSpeeds[] = {RunSpeed::RealTime, RunSpeed::Faster, RunSpeed::Fastest};
+  static constexpr ActionId kRunAt[] = {ActionId::Run, ActionId::Faster, ActionId::Fastest};
+  int speed = static_cast<int>(std::find(std::begin(kSpeeds), std::end(kSpeeds), app.speed) - std::begin(kSpeeds));
+  actionButton(app, kRunAt[speed], buttons, running ? "Running" : "Run", {70, 0});
   ImGui::SameLine();
   ImGui::SetNextItemWidth(130);
-  if (ImGui::Combo("##speed", &speed, "real time\0faster (x8)\0as fast as possible\0") && running) {
-    run.run(kSpeeds[speed]);
+  if (!ready) ImGui::BeginDisabled();
+  if (ImGui::Combo("##speed", &speed, "real time\0faster (x8)\0as fast as possible\0")) {
+    app.speed = kSpeeds[speed];
+    if (running) (void)performAction(app, kRunAt[speed]);
   }
+  if (!ready) ImGui::EndDisabled();
   ImGui::SameLine();
-  if (ImGui::Button("Pause")) run.pause();
+  actionButton(app, ActionId::Pause, buttons);
   ImGui::SameLine();
-  if (ImGui::Button("Step")) run.step();
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("One step (the plant alone when Plant only is on)");
+  actionButton(app, ActionId::Step, buttons);
   ImGui::SameLine();
-  if (ImGui::Button("Run N")) run.runSteps(app.run_n);
+  actionButton(app, ActionId::RunN, buttons, "Run N");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(64);
   ImGui::InputInt("##n", &app.run_n, 0, 0);
@@ -69,76 +85,36 @@ void drawToolbar(App& app, const Rect& at, nlohmann::json& report) {
     ImGui::EndCombo();
   }
   ImGui::SameLine();
-  if (ImGui::Button("Fire") && !app.fire_target.empty()) {
-    (void)run.fire(app.fire_target);
-    app.message = run.message();
-  }
+  actionButton(app, ActionId::Fire, buttons);
 
   // the net switched off; back to the edit-time state
   ImGui::SameLine(0, 18);
   bool plant_only = run.plantOnly();
-  if (ImGui::Checkbox("Plant only", &plant_only)) run.setPlantOnly(plant_only);
-  ImGui::SameLine();
+  if (!ready) ImGui::BeginDisabled();
+  if (ImGui::Checkbox("Plant only", &plant_only)) (void)performAction(app, ActionId::PlantOnly);
   if (!ready) ImGui::EndDisabled();
-  if (ImGui::Button("Reset")) app.reset();
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Back to the model as edited");
+  ImGui::SameLine();
+  actionButton(app, ActionId::Reset, buttons);
 
-  // the document's history
+  // the document and its history
   ImGui::SameLine(0, 18);
-  auto& history = app.document().history();
-  if (ImGui::Button("Save")) app.save();
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Save the model to its file (Ctrl+S)");
+  actionButton(app, ActionId::Save, buttons);
   ImGui::SameLine();
-  if (ImGui::Button("Save As")) app.save_as_open = true;
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Save the model under another name, which it keeps (Ctrl+Shift+S)");
-  nlohmann::json save_as = {{"open", false}};
-  if (app.save_as_open) {
-    if (!ImGui::IsPopupOpen("##save_as")) {
-      ImGui::OpenPopup("##save_as");
-      app.save_as_path = app.document().model().path;
-    }
-  }
-  if (ImGui::BeginPopup("##save_as")) {
-    ImGui::TextUnformatted("Save the model as");
-    ImGui::SetNextItemWidth(420);
-    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-    const bool entered = ImGui::InputText("##path", &app.save_as_path, ImGuiInputTextFlags_EnterReturnsTrue);
-    save_as = {{"open", true}, {"path", app.save_as_path}};
-    ImGui::SameLine();
-    if (ImGui::Button("Save") || entered) {
-      app.saveAs(app.save_as_path);
-      app.save_as_open = false;
-      ImGui::CloseCurrentPopup();
-    }
-    noteItem("save", save_as);
-    ImGui::EndPopup();
-  } else {
-    app.save_as_open = false;
-  }
+  actionButton(app, ActionId::Undo, buttons);
   ImGui::SameLine();
-  if (toolButton("Undo", history.canUndo())) app.undo();
-  ImGui::SameLine();
-  if (toolButton("Redo", history.canRedo())) app.redo();
-  ImGui::SameLine(0, 18);
-  if (ImGui::Button("Screenshot")) app.screenshot_requested = true;
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Save the window as gdpn-ide-N.png in the current folder");
-  ImGui::SameLine();
-  if (ImGui::Button(app.movie ? "Stop movie" : "Movie")) app.toggleMovie();
-  if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("Film the window into gdpn-ide-N.mp4 in the current folder (through ffmpeg), one movie frame "
-                      "a drawn frame at the frame rate when filming began");
-  }
+  actionButton(app, ActionId::Redo, buttons);
   ImGui::EndChild();
 
+  const auto& history = app.document().history();
   report = {{"ready", ready},
-            {"speed", runSpeedName(kSpeeds[speed])},
+            {"speed", runSpeedName(app.speed)},
             {"fire_target", app.fire_target},
             {"transitions", names.size()},
             {"run_n", app.run_n},
             {"can_undo", history.canUndo()},
             {"can_redo", history.canRedo()},
             {"filming", app.movie != nullptr},
-            {"save_as", save_as}};
+            {"buttons", buttons}};
 }
 
 }  // namespace gdpn::ide

@@ -1,0 +1,203 @@
+// The actions' behaviour: one switch over ActionId for each question (no default: the compiler
+// lists every place a new action must be handled).
+
+#include "action_run.h"
+
+#include <imgui.h>
+
+#include "app.h"
+#include "detail/keys.h"
+
+namespace gdpn::ide {
+
+namespace {
+
+bool editing(const App& app) { return app.run().mode() == RunMode::Edit; }
+
+bool hasRun(const App& app) { return app.run().session() != nullptr; }
+
+/// A node, place or transition is selected: what Copy and Cut take.
+bool copyableSelected(const App& app) {
+  const auto kind = app.document().selection().kind;
+  return kind == SelectionKind::Node || kind == SelectionKind::Place || kind == SelectionKind::Transition;
+}
+
+}  // namespace
+
+bool actionEnabled(const App& app, ActionId id) {
+  switch (id) {
+    case ActionId::New:
+    case ActionId::Open:
+    case ActionId::Save:
+    case ActionId::SaveAs:
+    case ActionId::Close:
+    case ActionId::Quit: return true;
+    case ActionId::Restore:
+    case ActionId::Discard: return app.restore_offered;
+    case ActionId::Undo: return app.document().history().canUndo();
+    case ActionId::Redo: return app.document().history().canRedo();
+    case ActionId::Cut:
+    case ActionId::Delete: return copyableSelected(app) && editing(app);
+    case ActionId::Copy: return copyableSelected(app);
+    case ActionId::Paste: return editing(app);  // what the clipboard holds is read then (another program's text, too)
+    case ActionId::SwapViews:
+    case ActionId::WorldFull:
+    case ActionId::NetFull:
+    case ActionId::MiniView:
+    case ActionId::Sensors:
+    case ActionId::Joints:
+    case ActionId::Contacts:
+    case ActionId::Shadows:
+    case ActionId::Grid:
+    case ActionId::SelectTool:
+    case ActionId::MoveTool:
+    case ActionId::TurnTool:
+    case ActionId::Snap:
+    case ActionId::LocalAxes:
+    case ActionId::FrameSelection:
+    case ActionId::Screenshot:
+    case ActionId::Movie: return true;
+    case ActionId::Run:
+    case ActionId::Faster:
+    case ActionId::Fastest:
+    case ActionId::Step:
+    case ActionId::RunN:
+    case ActionId::PlantOnly: return hasRun(app);
+    case ActionId::Pause: return app.run().mode() == RunMode::Running;
+    case ActionId::Fire: return hasRun(app) && !app.fire_target.empty();
+    case ActionId::Reset: return true;
+    case ActionId::ClearBreakpoints: return !app.run().breakpoints().empty();
+    case ActionId::Keys:
+    case ActionId::Guide: return true;
+  }
+  return false;
+}
+
+bool actionChecked(const App& app, ActionId id) {
+  switch (id) {
+    case ActionId::SwapViews: return app.splittersView().swapped;
+    case ActionId::WorldFull: return app.splittersView().full == FullView::World;
+    case ActionId::NetFull: return app.splittersView().full == FullView::Net;
+    case ActionId::MiniView: return app.show_mini;
+    case ActionId::Sensors: return app.show_sensors;
+    case ActionId::Joints: return app.show_joints;
+    case ActionId::Contacts: return app.show_contacts;
+    case ActionId::Shadows: return app.show_shadows;
+    case ActionId::Grid: return app.show_grid;
+    case ActionId::SelectTool: return app.tool == Tool::Select;
+    case ActionId::MoveTool: return app.tool == Tool::Move;
+    case ActionId::TurnTool: return app.tool == Tool::Turn;
+    case ActionId::Snap: return app.snap;
+    case ActionId::LocalAxes: return app.local_axes;
+    case ActionId::Movie: return app.movie != nullptr;
+    case ActionId::PlantOnly: return app.run().plantOnly();
+    case ActionId::New:
+    case ActionId::Open:
+    case ActionId::Save:
+    case ActionId::SaveAs:
+    case ActionId::Close:
+    case ActionId::Quit:
+    case ActionId::Restore:
+    case ActionId::Discard:
+    case ActionId::Undo:
+    case ActionId::Redo:
+    case ActionId::Cut:
+    case ActionId::Copy:
+    case ActionId::Paste:
+    case ActionId::Delete:
+    case ActionId::FrameSelection:
+    case ActionId::Screenshot:
+    case ActionId::Run:
+    case ActionId::Faster:
+    case ActionId::Fastest:
+    case ActionId::Pause:
+    case ActionId::Step:
+    case ActionId::RunN:
+    case ActionId::Fire:
+    case ActionId::Reset:
+    case ActionId::ClearBreakpoints:
+    case ActionId::Keys:
+    case ActionId::Guide: return false;
+  }
+  return false;
+}
+
+std::string performAction(App& app, ActionId id) {
+  if (!actionEnabled(app, id)) {
+    return "'" + std::string(info(id).name) + "' cannot be done now (" + std::string(info(id).help) + ")";
+  }
+  auto& run = app.run();
+  switch (id) {
+    case ActionId::New: app.newModel(); break;
+    case ActionId::Open: app.browse(BrowseFor::Open); break;
+    case ActionId::Save: app.save(); break;
+    case ActionId::SaveAs: app.browse(BrowseFor::SaveAs); break;
+    case ActionId::Close: app.closeModel(); break;
+    case ActionId::Quit: app.quit(); break;
+    case ActionId::Restore: app.restoreAutosave(); break;
+    case ActionId::Discard: app.discardAutosave(); break;
+    case ActionId::Undo: app.undo(); break;
+    case ActionId::Redo: app.redo(); break;
+    case ActionId::Cut:
+      app.copySelection();
+      app.deleteSelection();
+      break;
+    case ActionId::Copy: app.copySelection(); break;
+    case ActionId::Paste: app.paste(); break;
+    case ActionId::Delete: app.deleteSelection(); break;
+    case ActionId::SwapViews: app.swapViews(); break;
+    case ActionId::WorldFull: app.fill(FullView::World); break;
+    case ActionId::NetFull: app.fill(FullView::Net); break;
+    case ActionId::MiniView: app.show_mini = !app.show_mini; break;
+    case ActionId::Sensors: app.show_sensors = !app.show_sensors; break;
+    case ActionId::Joints: app.show_joints = !app.show_joints; break;
+    case ActionId::Contacts: app.show_contacts = !app.show_contacts; break;
+    case ActionId::Shadows: app.show_shadows = !app.show_shadows; break;
+    case ActionId::Grid: app.show_grid = !app.show_grid; break;
+    case ActionId::SelectTool: app.tool = Tool::Select; break;
+    case ActionId::MoveTool: app.tool = Tool::Move; break;
+    case ActionId::TurnTool: app.tool = Tool::Turn; break;
+    case ActionId::Snap: app.snap = !app.snap; break;
+    case ActionId::LocalAxes: app.local_axes = !app.local_axes; break;
+    case ActionId::FrameSelection: app.frameSelection(); break;
+    case ActionId::Screenshot: app.screenshot_requested = true; break;
+    case ActionId::Movie: app.toggleMovie(); break;
+    case ActionId::Run: run.run(RunSpeed::RealTime); break;
+    case ActionId::Faster: run.run(RunSpeed::Faster); break;
+    case ActionId::Fastest: run.run(RunSpeed::Fastest); break;
+    case ActionId::Pause: run.pause(); break;
+    case ActionId::Step: run.step(); break;
+    case ActionId::RunN: run.runSteps(app.run_n); break;
+    case ActionId::Fire:
+      (void)run.fire(app.fire_target);
+      app.message = run.message();
+      break;
+    case ActionId::PlantOnly: run.setPlantOnly(!run.plantOnly()); break;
+    case ActionId::Reset: app.reset(); break;
+    case ActionId::ClearBreakpoints:
+      for (const auto& b : run.breakpoints()) (void)run.removeBreakpoint(b);
+      app.message = "removed every breakpoint";
+      break;
+    case ActionId::Keys: app.keys_open = true; break;
+    case ActionId::Guide: app.openGuide(); break;
+  }
+  return {};
+}
+
+void handleShortcuts(App& app) {
+  const auto& io = ImGui::GetIO();
+  for (const auto& a : actionInfos()) {
+    if (a.keys.empty()) continue;
+    const auto shortcut = parseShortcut(a.keys);
+    if (!shortcut) continue;  // tests/ide/actions_test.cpp reads every one
+    const int code = keyCode(shortcut->key);
+    if (code < 0 || !ImGui::IsKeyPressed(code, false)) continue;
+    if (io.KeyCtrl != shortcut->ctrl || io.KeyShift != shortcut->shift || io.KeyAlt != shortcut->alt) continue;
+    // a field being typed in keeps its editing keys (and every key without Ctrl)
+    const bool function_key = shortcut->key.size() > 1 && shortcut->key[0] == 'f' && shortcut->key[1] >= '0' && shortcut->key[1] <= '9';
+    if (io.WantTextInput && (a.text_first || !shortcut->ctrl) && !function_key) continue;
+    if (actionEnabled(app, a.id)) (void)performAction(app, a.id);
+  }
+}
+
+}  // namespace gdpn::ide

@@ -1,0 +1,299 @@
+// The IDE's shell: the table of actions (every entry pressable, its keys real), the menus, the
+// files (New, Open through the file browser, Open Recent, Save As, "save changes?"), the title,
+// and the panels (swapped, one filling the window, kept in the settings).
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "ide/detail/keys.h"
+#include "gdpn/ide/actions.h"
+#include "gdpn/ide/replay.h"
+#include "ide/headless_fixture.h"
+#include "ide/ide_model.h"
+
+namespace gdpn::ide {
+namespace {
+
+TEST(ActionTable, EveryActionHasOneEntryANameAndARealKey) {
+  std::set<std::string_view> names;
+  std::set<std::string> keys;
+  for (int i = 0; i <= static_cast<int>(ActionId::Guide); ++i) {
+    const auto id = static_cast<ActionId>(i);
+    EXPECT_EQ(info(id).id, id) << i;  // each id is described
+  }
+  EXPECT_EQ(actionInfos().size(), static_cast<std::size_t>(ActionId::Guide) + 1);
+  for (const auto& a : actionInfos()) {
+    EXPECT_TRUE(names.insert(a.name).second) << a.name;
+    EXPECT_EQ(findAction(a.name), a.id);
+    EXPECT_FALSE(a.label.empty() || a.help.empty()) << a.name;
+    if (a.keys.empty()) continue;
+    const auto shortcut = parseShortcut(a.keys);
+    ASSERT_TRUE(shortcut) << a.keys;
+    EXPECT_GE(keyCode(shortcut->key), 0) << a.keys << ": a key the platform knows";
+    EXPECT_TRUE(keys.insert(std::string(a.keys)).second) << a.keys << " twice";
+  }
+  EXPECT_FALSE(findAction("fly"));
+  const auto s = parseShortcut("Ctrl+Shift+S");
+  ASSERT_TRUE(s);
+  EXPECT_TRUE(s->ctrl && s->shift && !s->alt);
+  EXPECT_EQ(s->key, "s");
+  EXPECT_FALSE(parseShortcut("Ctrl+"));
+  EXPECT_FALSE(parseShortcut("S+Ctrl"));
+}
+
+TEST(ActionTable, AReplayMayPressEveryActionByItsName) {
+  for (const auto& a : actionInfos()) {
+    core::Diagnostics diags;
+    const auto actions = parseReplay("- press: " + std::string(a.name) + "\n", "a.yaml", diags);
+    ASSERT_TRUE(actions) << diags.str();
+    EXPECT_EQ((*actions)[0].kind, ActionKind::Press);
+  }
+}
+
+class Shell : public HeadlessIde {
+ protected:
+  /// A model file of the test's own (the bin model) at `name` under the test's folder.
+  std::string model(const std::string& name) { return write(name, testing::kBinModel); }
+  /// The text of the file at `path`.
+  static std::string text(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+};
+
+TEST_F(Shell, EveryActionOfTheTableIsDoneByPressInAStateThatAllowsIt) {
+  const auto path = model("bin.gdpn.yaml");
+  // each action pressed where it can be done (a press that cannot is an error: the replay
+  // would fail); the autosave's Restore and Discard are tested where an autosave is offered
+  const std::string actions = R"Y(
+- select: drop
+- press: copy
+- press: paste
+- press: undo
+- press: redo
+- press: cut
+- press: undo
+- select: drop
+- press: delete
+- press: undo
+- press: swap-views
+- press: swap-views
+- press: world-full
+- press: world-full
+- press: net-full
+- press: net-full
+- press: mini-view
+- press: sensors
+- press: joints
+- press: contacts
+- press: shadows
+- press: grid
+- press: select-tool
+- press: turn-tool
+- press: move-tool
+- press: snap
+- press: local-axes
+- press: frame
+- press: screenshot
+- press: movie
+- frames: 2
+- press: movie
+- break: {starts: main/work}
+- press: clear-breakpoints
+- press: run
+- frames: 3
+- press: pause
+- press: faster
+- press: pause
+- press: fastest
+- press: pause
+- press: step
+- press: run-n
+- press: fire
+- press: plant-only
+- press: plant-only
+- press: reset
+- press: keys
+- press: guide
+- press: save
+- press: open
+- click: [file_browser, buttons, cancel]
+- press: save-as
+- click: [file_browser, buttons, cancel]
+- press: new
+- press: close
+- press: quit
+)Y";
+  std::set<std::string> pressed;
+  std::istringstream lines(actions);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.starts_with("- press: ")) pressed.insert(line.substr(9));
+  }
+  for (const auto& a : actionInfos()) {
+    if (a.id == ActionId::Restore || a.id == ActionId::Discard) continue;
+    EXPECT_TRUE(pressed.contains(std::string(a.name))) << a.name;
+  }
+  // in the test's folder: the screenshot and the movie land there
+  const auto file = write("all.yaml", actions);
+  const auto report = (dir_ / "all.json").string();
+  last_ = gdpn::testing::runShell("cd '" + dir_.string() + "' && " + env() + " \"$GDPN\" ide '" + path +
+                                  "' --headless --size 1280x720 --replay '" + file + "' --report '" + report + "'");
+  ASSERT_EQ(last_.code, 0) << last_.out;
+  std::ifstream in(report);
+  const auto r = nlohmann::json::parse(in, nullptr, false);
+  EXPECT_EQ(r["document"]["untitled"], true);  // Close left a new model
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "gdpn-ide-1.png"));
+  EXPECT_TRUE(r["run"]["breakpoints"].empty());
+}
+
+TEST_F(Shell, PressingAnActionThatCannotBeDoneNowIsAnErrorThatSaysSo) {
+  const auto path = model("bin.gdpn.yaml");
+  replayOn(path, "- press: undo\n", "", 1);
+  EXPECT_NE(last_.out.find("'undo' cannot be done now"), std::string::npos) << last_.out;
+}
+
+TEST_F(Shell, TheMenusListTheTableAndAChoiceDoesTheAction) {
+  const auto path = model("bin.gdpn.yaml");
+  auto r = replayOn(path, "- click: [menu, File]\n");
+  EXPECT_EQ(r["menu"]["open"], "File");
+  for (const char* item : {"New", "Open...", "Open Recent", "Save", "Save As...", "Close", "Quit"}) {
+    EXPECT_TRUE(r["menu"]["items"].contains(item)) << item << " in " << r["menu"]["items"].dump();
+  }
+  EXPECT_FALSE(r["menu"]["items"].contains("Undo"));
+  // View > Net Fills the Window: the net view alone; again: the panels
+  r = replayOn(path, "- click: [menu, View]\n- click: [menu, items, Net Fills the Window]\n");
+  EXPECT_EQ(r["splitters"]["full"], "net");
+  EXPECT_FALSE(r.contains("world"));
+  EXPECT_FLOAT_EQ(r["layout"]["net"][2].get<float>(), 1280);
+  std::filesystem::remove_all(dir_ / "config");  // the layout the last session kept
+  r = replayOn(path, "- press: net-full\n- press: net-full\n- press: swap-views\n");
+  EXPECT_EQ(r["splitters"]["full"], "none");
+  EXPECT_EQ(r["splitters"]["swapped"], true);
+  EXPECT_GT(r["layout"]["net"][2].get<float>(), r["layout"]["world"][2].get<float>());  // the big panel
+  // Help > Keys lists every action
+  r = replayOn(path, "- press: keys\n");
+  EXPECT_EQ(r["keys"]["actions"].size(), actionInfos().size());
+}
+
+TEST_F(Shell, TheLayoutIsKeptBetweenSessions) {
+  const auto path = model("bin.gdpn.yaml");
+  replayOn(path, "- press: swap-views\n- press: world-full\n");
+  const auto r = replayOn(path, "[]");
+  EXPECT_EQ(r["splitters"]["swapped"], true);
+  EXPECT_EQ(r["splitters"]["full"], "world");
+}
+
+TEST_F(Shell, NewGivesAnUntitledModelThatSaveNamesThroughTheFileBrowser) {
+  const auto path = model("bin.gdpn.yaml");
+  auto r = replayOn(path, "- press: new\n");
+  EXPECT_EQ(r["document"]["untitled"], true);
+  EXPECT_EQ(std::filesystem::path(r["document"]["path"].get<std::string>()).filename(), "untitled.gdpn.yaml");
+  EXPECT_EQ(r["document"]["title"], "untitled.gdpn.yaml - gdpn ide");
+  EXPECT_EQ(r["net_view"]["places"], 0);
+  EXPECT_FALSE(r["tree"].empty());
+  // Save on an untitled model asks for its name; the name typed is where it goes
+  r = replayOn(path, "- press: new\n- press: save\n");
+  EXPECT_EQ(r["file_browser"]["open"], true);
+  EXPECT_EQ(r["file_browser"]["mode"], "save-as");
+  r = replayOn(path, "- press: new\n- press: save\n- click: [file_browser, buttons, name]\n- type: \"-mine\"\n"
+                     "- click: [file_browser, buttons, save]\n");
+  const auto saved = dir_ / "untitled.gdpn.yaml-mine.gdpn.yaml";
+  EXPECT_TRUE(std::filesystem::exists(saved)) << r["file_browser"].dump() << r["message"];
+  EXPECT_EQ(r["document"]["untitled"], false);
+  EXPECT_EQ(r["document"]["recent"][0], saved.string());
+}
+
+TEST_F(Shell, OpenGoesThroughTheFileBrowserAndRecentFilesComeBack) {
+  const auto a = model("a.gdpn.yaml");
+  std::filesystem::create_directories(dir_ / "sub");
+  const auto b = model("sub/b.gdpn.yaml");
+  // the browser lists the model's folder: its subfolders and model files
+  auto r = replayOn(a, "- press: open\n");
+  ASSERT_EQ(r["file_browser"]["open"], true);
+  EXPECT_EQ(r["file_browser"]["folder"], dir_.string());
+  EXPECT_TRUE(r["file_browser"]["entries"].contains("sub"));
+  EXPECT_TRUE(r["file_browser"]["entries"].contains("a.gdpn.yaml"));
+  EXPECT_FALSE(r["file_browser"]["entries"].contains("actions.yaml"));  // not a model file
+  // into sub, b chosen, Open
+  r = replayOn(a, "- press: open\n- click: [file_browser, entries, sub]\n- click: [file_browser, entries, b.gdpn.yaml]\n"
+                  "- click: [file_browser, buttons, open]\n");
+  EXPECT_EQ(r["document"]["path"], b) << r["message"];
+  EXPECT_EQ(r["file_browser"]["open"], false);
+  EXPECT_EQ(r["document"]["recent"][0], b);
+  EXPECT_EQ(r["document"]["recent"][1], a);
+  // the next session offers both; File > Open Recent > a opens a again
+  r = replayOn(b, "- click: [menu, File]\n- click: [menu, items, Open Recent]\n");
+  ASSERT_TRUE(r["menu"]["recent"].contains("a.gdpn.yaml")) << r["menu"].dump();
+  r = replayOn(b, "- click: [menu, File]\n- click: [menu, items, Open Recent]\n- click: [menu, recent, a.gdpn.yaml]\n");
+  EXPECT_EQ(r["document"]["path"], a);
+  // a name that is no file is refused in the browser, which stays open
+  r = replayOn(a, "- press: open\n- type: nothing.gdpn.yaml\n- click: [file_browser, buttons, open]\n");
+  EXPECT_EQ(r["file_browser"]["open"], true);
+  EXPECT_NE(r["file_browser"]["error"].get<std::string>().find("no file"), std::string::npos);
+}
+
+TEST_F(Shell, SaveAsGoesThroughTheFileBrowserAndAsksBeforeReplacingAFile) {
+  const auto a = model("a.gdpn.yaml");
+  std::filesystem::create_directories(dir_ / "sub");
+  auto r = replayOn(a, "- press: save-as\n- click: [file_browser, entries, sub]\n- click: [file_browser, buttons, save]\n");
+  const auto copy = (dir_ / "sub" / "a.gdpn.yaml").string();
+  EXPECT_EQ(r["document"]["path"], copy);
+  const auto written = text(copy);  // the model as the writer writes it
+  EXPECT_NE(written.find("name: drop"), std::string::npos) << written;
+  // over another file: once told, the second Save replaces it
+  const auto other = model("other.gdpn.yaml");
+  std::ofstream(other) << "gdpn: 1\n";
+  const std::string over = "- press: save-as\n- click: [file_browser, entries, other.gdpn.yaml]\n- click: [file_browser, buttons, save]\n";
+  r = replayOn(a, over);
+  EXPECT_NE(r["file_browser"]["error"].get<std::string>().find("exists"), std::string::npos);
+  EXPECT_EQ(text(other), "gdpn: 1\n");
+  r = replayOn(a, over + "- click: [file_browser, buttons, save]\n");
+  EXPECT_EQ(text(other), written);
+  EXPECT_EQ(r["document"]["path"], other);
+}
+
+TEST_F(Shell, UnsavedEditsAreMarkedInTheTitleAndAskedAboutBeforeTheyAreLost) {
+  const auto a = model("a.gdpn.yaml");
+  const auto before = text(a);
+  const std::string edit = "- set: {node: drop, field: translation, value: [0, 0, 2]}\n";
+  auto r = replayOn(a, edit);
+  EXPECT_EQ(r["document"]["title"], "*a.gdpn.yaml - gdpn ide");
+  // New with unsaved edits asks; Cancel keeps everything
+  r = replayOn(a, edit + "- press: new\n");
+  ASSERT_EQ(r["save_changes"]["open"], true);
+  EXPECT_EQ(r["save_changes"]["file"], "a.gdpn.yaml");
+  r = replayOn(a, edit + "- press: new\n- click: [save_changes, buttons, cancel]\n");
+  EXPECT_EQ(r["save_changes"]["open"], false);
+  EXPECT_EQ(r["document"]["path"], a);
+  EXPECT_EQ(r["document"]["modified"], true);
+  // Don't Save: the new model; the file as it was
+  r = replayOn(a, edit + "- press: new\n- click: [save_changes, buttons, dont-save]\n");
+  EXPECT_EQ(r["document"]["untitled"], true);
+  EXPECT_EQ(text(a), before);
+  // Save: the file saved, then the new model
+  r = replayOn(a, edit + "- press: close\n- click: [save_changes, buttons, save]\n");
+  EXPECT_EQ(r["document"]["untitled"], true);
+  EXPECT_NE(text(a), before);
+  EXPECT_NE(text(a).find("translation: [0, 0, 2]"), std::string::npos) << text(a);
+}
+
+TEST_F(Shell, QuitAsksFirstAndEndsTheIde) {
+  const auto a = model("a.gdpn.yaml");
+  // nothing to lose: the IDE ends at once, the actions after Quit are not done
+  auto r = replayOn(a, "- press: quit\n- press: grid\n");
+  EXPECT_EQ(r["document"]["path"], a);
+  const std::string edit = "- set: {node: drop, field: translation, value: [0, 0, 2]}\n";
+  r = replayOn(a, edit + "- press: quit\n");
+  EXPECT_EQ(r["save_changes"]["open"], true);
+}
+
+}  // namespace
+}  // namespace gdpn::ide
