@@ -14,6 +14,8 @@ packages=(
   python3-pandas python3-matplotlib chromium python3-distributed
   # graphics and GUI
   libglfw3-dev libimgui-dev libepoxy-dev libegl-dev libgl-dev libgl1-mesa-dri xvfb xauth fonts-dejavu-core
+  # the IDE's window driven as a user's hands drive it (tests/ide/window_keys.sh)
+  xdotool
   # file formats
   libassimp-dev libcoin-dev libgdal-dev libstb-dev libtinygltf-dev
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libeigen3-dev libglm-dev

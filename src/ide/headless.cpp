@@ -5,14 +5,15 @@
 
 #include <epoxy/gl.h>
 #include <imgui.h>
-#include <GLFW/glfw3.h>
 #include <imgui_impl_opengl3.h>
 
 #include <iostream>
 
 #include "app.h"
 #include "detail/frame_io.h"
-#include "detail/keys.h"
+#include "detail/imgui_input.h"
+#include "detail/input_queue.h"
+#include "detail/key_chord.h"
 #include "gdpn/capture/sensor_imager.h"
 #include "gdpn/platform/headless_context.h"
 #include "gdpn/platform/target.h"
@@ -23,34 +24,41 @@ namespace {
 
 constexpr double kFrame = 1.0 / 60.0;  // seconds a headless frame stands for
 
-/// Frames with synthetic input.
+/// Frames with synthetic input: every press, release, character, move and click goes through
+/// the input queue, as the window's do, and reaches ImGui a frame at a time.
 class Driver {
  public:
   Driver(App& app, int w, int h, platform::Target& target) : app_(app), w_(w), h_(h), target_(target) {}
 
+  /// One frame, with the next frame's input from the queue.
   void frame() {
     auto& io = ImGui::GetIO();
     io.DisplaySize = {static_cast<float>(w_), static_cast<float>(h_)};
     io.DeltaTime = static_cast<float>(kFrame);
-    io.MousePos = mouse_;
-    for (int b = 0; b < 3; ++b) io.MouseDown[b] = down_[b];
+    feedImGui(queue_, queue_.next(), io);
+    io.MousePos = {queue_.mouseX(), queue_.mouseY()};
     ImGui_ImplOpenGL3_NewFrame();
     target_.bind();
     drawFrame(app_, w_, h_, kFrame);
   }
+  /// A frame, and more until every queued event has reached the UI.
+  void drain() {
+    do frame();
+    while (!queue_.empty());
+  }
   void move(double x, double y) {
-    mouse_ = {static_cast<float>(x), static_cast<float>(y)};
-    frame();
+    queue_.move(static_cast<float>(x), static_cast<float>(y));
+    drain();
   }
   /// Turns the mouse wheel `clicks` clicks at (`x`, `y`).
   void wheel(double x, double y, double clicks) {
     move(x, y);
-    ImGui::GetIO().MouseWheel = static_cast<float>(clicks);
-    frame();
+    queue_.scroll(0, static_cast<float>(clicks));
+    drain();
   }
   void button(int b, bool down) {
-    down_[b] = down;
-    frame();
+    queue_.button(b, down);
+    drain();
   }
   /// Types `text` into the field that has the keyboard: two frames for a field that was just
   /// asked to take the keyboard to take it (ImGui gives it the focus a frame later, and the
@@ -58,24 +66,34 @@ class Driver {
   void type(const std::string& text) {
     frame();
     frame();
-    ImGui::GetIO().AddInputCharactersUTF8(text.c_str());
-    frame();
+    queue_.text(text);
+    drain();
+  }
+  /// Presses and releases each of `chords` over the world view, all queued before one frame
+  /// (as a quick hand does between two frames of a slow window), then frames until each press
+  /// and release has reached the UI.
+  void keys(const std::vector<KeyChord>& chords) {
+    overWorld();
+    for (const auto& c : chords) queueChord(queue_, c);
+    drain();
   }
   /// Presses (`down`) or releases key `code` over the world view.
   void key(int code, bool down) {
-    // keys reach the world view while the mouse is over it
-    const auto& world = app_.report()["layout"]["world"];
-    if (world.is_array()) move(world[0].get<double>() + world[2].get<double>() / 2, world[1].get<double>() + world[3].get<double>() / 2);
-    ImGui::GetIO().KeysDown[code] = down;
-    frame();
+    overWorld();
+    queue_.key(code, down);
+    drain();
   }
 
  private:
+  // keys reach the world view while the mouse is over it
+  void overWorld() {
+    const auto& world = app_.report()["layout"]["world"];
+    if (world.is_array()) move(world[0].get<double>() + world[2].get<double>() / 2, world[1].get<double>() + world[3].get<double>() / 2);
+  }
   App& app_;
   int w_, h_;
   platform::Target& target_;
-  ImVec2 mouse_{-1, -1};
-  bool down_[3] = {false, false, false};
+  InputQueue queue_;
 };
 
 /// Where the last frame's report placed the item the keys `keys` lead to; false with `error`.
@@ -111,13 +129,12 @@ bool perform(App& app, Driver& d, const Action& given, const IdeOptions& o, int 
   }
   switch (a.kind) {
     case ActionKind::Key: {
-      const int code = keyCode(a.text);
-      if (code < 0) error = "unknown key '" + a.text + "' (a-z, 0-9, space, enter, escape, tab, left, right, up, down)";
-      else if (a.field == "hold") d.key(code, true);
-      else if (a.field == "release") d.key(code, false);
-      else {
-        d.key(code, true);
-        d.key(code, false);
+      if (a.field == "hold" || a.field == "release") {
+        const int code = keyByName(a.text);
+        if (code < 0) error = "unknown key '" + a.text + "' (" + knownKeyNames() + ")";
+        else d.key(code, a.field == "hold");
+      } else if (const auto chords = parseChords(a.text, error)) {
+        d.keys(*chords);
       }
       break;
     }
@@ -184,17 +201,9 @@ int runHeadless(const IdeOptions& o, std::unique_ptr<Document> doc, const std::v
   App app(std::move(doc), std::move(run_options));
   app.autosave_seconds = o.autosave;
   setUpImGui(app);
-  // ImGui's own keys (Enter ends a field, Tab moves on, the arrows move the cursor) by the
-  // codes the replay's keys use, as the window's GLFW backend maps them
-  auto& io = ImGui::GetIO();
-  io.KeyMap[ImGuiKey_Tab] = GLFW_KEY_TAB;
-  io.KeyMap[ImGuiKey_LeftArrow] = GLFW_KEY_LEFT;
-  io.KeyMap[ImGuiKey_RightArrow] = GLFW_KEY_RIGHT;
-  io.KeyMap[ImGuiKey_UpArrow] = GLFW_KEY_UP;
-  io.KeyMap[ImGuiKey_DownArrow] = GLFW_KEY_DOWN;
-  io.KeyMap[ImGuiKey_Enter] = GLFW_KEY_ENTER;
-  io.KeyMap[ImGuiKey_Escape] = GLFW_KEY_ESCAPE;
-  io.KeyMap[ImGuiKey_Space] = GLFW_KEY_SPACE;
+  // ImGui's own keys (Enter ends a field, Tab moves on, the arrows move the cursor, Ctrl+A
+  // selects all) by the codes the replay's keys use, as the window's GLFW backend maps them
+  mapGlfwKeys(ImGui::GetIO());
   loadSettings(app);
   Driver d(app, o.width, o.height, target);
   // two frames so that every view has its size

@@ -1,5 +1,7 @@
-// The IDE in a window: GLFW and ImGui's GLFW backend feed the input, the frames are the
-// headless IDE's.
+// The IDE in a window: GLFW's key, character, button, move and scroll events go into the
+// input queue, which hands them to ImGui a frame at a time (no press or release is lost,
+// however short); ImGui's GLFW backend does the rest (the display size, the clipboard, the
+// cursor's shape, focus). The frames are the headless IDE's.
 
 #include <epoxy/gl.h>
 #include <imgui.h>
@@ -13,6 +15,8 @@
 #include "app.h"
 #include "gdpn/capture/sensor_imager.h"
 #include "detail/frame_io.h"
+#include "detail/imgui_input.h"
+#include "detail/input_queue.h"
 #include "detail/platforms.h"
 
 namespace gdpn::ide {
@@ -20,6 +24,36 @@ namespace gdpn::ide {
 namespace {
 
 void onGlfwError(int code, const char* text) { std::cerr << "gdpn ide: GLFW error " << code << ": " << text << "\n"; }
+
+// GLFW's input events, queued (the window's user pointer is the queue)
+InputQueue& windowQueue(GLFWwindow* window) { return *static_cast<InputQueue*>(glfwGetWindowUserPointer(window)); }
+void onWindowKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
+  // a key held down repeats in ImGui by itself
+  if (action != GLFW_REPEAT) windowQueue(window).key(key, action == GLFW_PRESS);
+}
+void onWindowChar(GLFWwindow* window, unsigned int c) { windowQueue(window).character(c); }
+void onWindowButton(GLFWwindow* window, int button, int action, int /*mods*/) {
+  windowQueue(window).button(button, action == GLFW_PRESS);
+}
+void onWindowMove(GLFWwindow* window, double x, double y) {
+  windowQueue(window).move(static_cast<float>(x), static_cast<float>(y));
+}
+void onWindowScroll(GLFWwindow* window, double dx, double dy) {
+  windowQueue(window).scroll(static_cast<float>(dx), static_cast<float>(dy));
+}
+
+/// Sends `window`'s input into `queue`; focus and the mouse entering or leaving go to ImGui's
+/// backend, which asks for them when it installs no callbacks of its own.
+void queueInput(GLFWwindow* window, InputQueue& queue) {
+  glfwSetWindowUserPointer(window, &queue);
+  glfwSetKeyCallback(window, onWindowKey);
+  glfwSetCharCallback(window, onWindowChar);
+  glfwSetMouseButtonCallback(window, onWindowButton);
+  glfwSetCursorPosCallback(window, onWindowMove);
+  glfwSetScrollCallback(window, onWindowScroll);
+  glfwSetWindowFocusCallback(window, ImGui_ImplGlfw_WindowFocusCallback);
+  glfwSetCursorEnterCallback(window, ImGui_ImplGlfw_CursorEnterCallback);
+}
 
 }  // namespace
 
@@ -60,11 +94,14 @@ int runWindow(const IdeOptions& o, std::unique_ptr<Document> doc) {
     App app(std::move(doc), std::move(run_options));
     app.autosave_seconds = o.autosave;
     setUpImGui(app);
-    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    InputQueue queue;
+    ImGui_ImplGlfw_InitForOpenGL(window, false);
+    queueInput(window, queue);
     loadSettings(app);
     if (o.quit_after > 0) app.run().run(RunSpeed::RealTime);
     const double start = glfwGetTime();
     double last = start;
+    int drawn = 0;  // frames drawn, up to 2
     while (glfwWindowShouldClose(window) == GLFW_FALSE) {
       glfwPollEvents();
       const double now = glfwGetTime();
@@ -72,6 +109,11 @@ int runWindow(const IdeOptions& o, std::unique_ptr<Document> doc) {
       glfwGetFramebufferSize(window, &w, &h);
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
+      // after the backend, whose mouse buttons are GLFW's state now, not the queue's; input
+      // waits until every view has been drawn (ImGui finds what is under the mouse among the
+      // last frame's windows), so that a click sent as the window opens is not lost either
+      feedImGui(queue, drawn < 2 ? InputFrame{} : queue.next(), ImGui::GetIO());
+      if (drawn < 2) ++drawn;
       drawFrame(app, w, h, now - last);
       last = now;
       // a timed session (the smoke test) ends with its outputs
@@ -82,6 +124,7 @@ int runWindow(const IdeOptions& o, std::unique_ptr<Document> doc) {
       glfwSwapBuffers(window);
     }
     saveSettings(app);
+    glfwSetWindowUserPointer(window, nullptr);
     ImGui_ImplGlfw_Shutdown();
     tearDownImGui();
   }

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Replay files: the actions a headless IDE performs, one a list item in YAML (docs/ide.md):
-/// select, press a control, fire, run for a time, type a key, click or drag at a point, set a
+/// select, press a control, fire, run for a time, press keys, click or drag at a point, set a
 /// field, undo, redo, choose a view, take a screenshot. Reading only; the IDE performs them.
 
 #include <cstdint>
@@ -21,8 +21,12 @@ enum class ActionKind : std::uint8_t {
   RunFor,      ///< `run: SECONDS` of model time (whole steps)
   Steps,       ///< `steps: N` steps
   Frames,      ///< `frames: N` frames drawn (the run advancing as Run says, 1/60 s a frame)
-  Key,         ///< `key: NAME` typed in the world view (pressed, then released); `hold: NAME`
-               ///< presses it and keeps it down, `release: NAME` lets it go (field: hold, release)
+  Key,         ///< `key: CHORDS` over the world view: each chord (`s`, `enter`, `ctrl+s`,
+               ///< `ctrl+shift+s`; several separated by spaces, `ctrl+a x`) pressed and released,
+               ///< all before one frame, through the input queue that gives each press and release
+               ///< a frame; a-z, 0-9 and space type their character unless Ctrl, Alt or Super is
+               ///< held. `hold: NAME` presses one key (a modifier too) and keeps it down,
+               ///< `release: NAME` lets it go (field: hold, release)
   Type,        ///< `type: TEXT`: the characters typed into the field that has the keyboard
   Click,       ///< `click: [X, Y]` window pixels, left button; `click: {at: [X, Y], button: right}`
   Drag,        ///< `drag: {from: [X, Y], to: [X, Y], button: left|right|middle}`
