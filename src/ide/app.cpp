@@ -473,6 +473,8 @@ bool App::perform(const Action& a, std::string& error) {
       else if (a.text == "select-tool") tool = Tool::Select;
       else if (a.text == "move-tool") tool = Tool::Move;
       else if (a.text == "turn-tool") tool = Tool::Turn;
+      else if (a.text == "scale-tool") tool = Tool::Scale;
+      else if (a.text == "aim-tool") tool = Tool::Aim;
       else if (a.text == "snap") snap = !snap;
       else if (a.text == "local-axes") local_axes = !local_axes;
       else if (a.text == "movie") toggleMovie();

@@ -47,7 +47,8 @@ class ActionReader {
                                                   "plant-only", "mini-view", "sensors", "joints", "contacts",
                                                   "shadows", "grid",    "movie",    "undo",    "redo",    "save",
                                                   "restore", "discard", "select-tool", "move-tool",
-                                                  "turn-tool", "snap", "local-axes", "copy", "cut", "paste"};
+                                                  "turn-tool", "scale-tool", "aim-tool", "snap", "local-axes", "copy", "cut",
+                                                  "paste"};
       std::string known;
       for (const char* c : kControls) {
         if (a.text == c) return true;
