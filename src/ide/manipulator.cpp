@@ -158,7 +158,11 @@ std::optional<core::Vec3> aimAt(const core::Ray& ray, const core::Vec3& apex, co
                                 const core::Vec3& normal) {
   const auto hit = onPlane(ray, point, normal);
   if (!hit) return std::nullopt;
-  const core::Vec3 to = *hit - apex;
+  return aimToward(apex, *hit);
+}
+
+std::optional<core::Vec3> aimToward(const core::Vec3& apex, const core::Vec3& target) {
+  const core::Vec3 to = target - apex;
   if (to.length() < 1e-9) return std::nullopt;
   return to.normalized();
 }

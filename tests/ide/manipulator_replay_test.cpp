@@ -152,6 +152,23 @@ TEST_F(ManipulatorReplay, ASpotLightIsAimedAtThePointerAndUndoRestoresItsDirecti
   EXPECT_EQ(r["undo"]["depth"], 0);
 }
 
+TEST_F(ManipulatorReplay, ASpotLightDraggedOntoAShapeShinesOnIt) {
+  // the aim dot dropped on the box's centre as seen from the front: the light at (0.3, 0, 1.3)
+  // points at (0, -0.6, 0.5) on the box's front face, heading -116.6 and elevation -50.0
+  // degrees, snapped to -115 and -50
+  const std::string setup = "- press: aim-tool\n- select: spot\n- view: front\n";
+  const auto box = replay("- press: scale-tool\n- select: stand/box\n- view: front\n");
+  ASSERT_TRUE(box["world"].contains("pivot")) << box["world"].dump();
+  const auto& p = box["world"]["pivot"];
+  const auto r = replay(setup + "- drag: {from: [world, handles, aim], to: " + at(p[0].get<double>(), p[1].get<double>()) + "}\n");
+  const auto d = fieldValue(r, "direction");
+  ASSERT_EQ(d.size(), 3U) << r["inspector"].dump();
+  constexpr double kDeg = 3.14159265358979323846 / 180;
+  EXPECT_NEAR(d[0].get<double>(), std::cos(-50 * kDeg) * std::cos(-115 * kDeg), 1e-9);
+  EXPECT_NEAR(d[1].get<double>(), std::cos(-50 * kDeg) * std::sin(-115 * kDeg), 1e-9);
+  EXPECT_NEAR(d[2].get<double>(), std::sin(-50 * kDeg), 1e-9);
+}
+
 TEST_F(ManipulatorReplay, ASpotLightsConeIsSizedByItsHandleAndUndoRestoresIt) {
   // the cone's handle dragged to a point 45 degrees off the beam: a cone of 45 degrees
   const std::string setup = "- press: aim-tool\n- select: spot\n- view: front\n";

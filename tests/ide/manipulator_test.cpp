@@ -203,6 +203,15 @@ TEST(SpotManipulator, TheLightPointsTowardThePointerOnTheHandlesPlane) {
   EXPECT_FALSE(aimAt({{0, -10, 2}, {0, 1, 0}}, apex, plane, facing));
 }
 
+TEST(SpotManipulator, TheLightPointsTowardAPointOfAShapeUnderThePointer) {
+  // from (0, 0, 2) toward (3, 4, 2): along (0.6, 0.8, 0); toward (0, 0, 0): straight down
+  const auto d = aimToward({0, 0, 2}, {3, 4, 2});
+  ASSERT_TRUE(d);
+  EXPECT_NEAR((*d - core::Vec3{0.6, 0.8, 0}).length(), 0.0, 1e-15);
+  EXPECT_EQ(*aimToward({0, 0, 2}, {0, 0, 0}), (core::Vec3{0, 0, -1}));
+  EXPECT_FALSE(aimToward({0, 0, 2}, {0, 0, 2})) << "the light itself has no direction";
+}
+
 TEST(SpotManipulator, ASnappedDirectionHasWholeStepsOfHeadingAndElevation) {
   // heading 1.1 degrees, elevation -44.6: snapped to 0 and -45
   const auto d = snapDirection({1, 0.02, -1}, 5);

@@ -86,6 +86,10 @@ std::array<double, 3> scaledSize(const std::array<double, 3>& size, const ScaleT
 std::optional<core::Vec3> aimAt(const core::Ray& ray, const core::Vec3& apex, const core::Vec3& point,
                                 const core::Vec3& normal);
 
+/// The unit direction from `apex` (a spot light, world, m) toward `target` (world, m: what is
+/// under the pointer); nullopt when the two are one point.
+std::optional<core::Vec3> aimToward(const core::Vec3& apex, const core::Vec3& target);
+
 /// Unit `direction` with its heading (about z, from x) and its elevation (from the xy plane)
 /// each rounded to a whole number of `step` degrees; normalised only when `step` <= 0.
 core::Vec3 snapDirection(const core::Vec3& direction, double step);

@@ -17,6 +17,7 @@
 
 #include "../views.h"
 #include "gdpn/ide/set_field.h"
+#include "gdpn/scene/actions.h"
 #include "gdpn/scene/fields.h"
 
 namespace gdpn::ide {
@@ -424,8 +425,12 @@ bool drawManipulators(App& app, scene::Scene& scene, const OrbitCamera& view, Im
           break;
         }
         case Handle::Aim: {
-          // toward the pointer, written in the light's parent's frame
-          const auto toward = moved ? aimAt(ray, drag.origin, drag.point, drag.axis) : std::nullopt;
+          // toward the shape under the pointer, else toward the pointer in the dot's plane facing
+          // the view; written in the light's parent's frame
+          const auto hit = scene::pick(scene.root(), ray);
+          const auto toward = !moved                 ? std::nullopt
+                              : hit.shape != nullptr ? aimToward(drag.origin, ray.origin + ray.direction * hit.distance)
+                                                     : aimAt(ray, drag.origin, drag.point, drag.axis);
           if (toward) {
             core::Vec3 d = drag.frame.conjugate().rotate(*toward);
             d = app.snap ? snapDirection(d, app.turn_step) : d.normalized();
