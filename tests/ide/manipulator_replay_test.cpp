@@ -26,6 +26,7 @@ scene:
   - Camera: {name: view, position: [1.6, -1.6, 2.1], target: [0, 0, 0.5]}
   - Transform: {name: stand, translation: [0, 0, 0.5], children: [{Cube: {name: box, size: [0.8, 1.2, 0.4]}}]}
   - Light: {name: spot, kind: spot, location: [0.3, 0, 1.3], direction: [0, 0, -1], cutoff: 30}
+  - Transform: {name: stretched, translation: [0, 0, 0.5], scale: [2, 1, 1], children: [{Region: {name: zone, size: [1, 1, 0.2]}}]}
 pages:
   main: {}
 )Y";
@@ -87,6 +88,10 @@ TEST_F(ManipulatorReplay, ABoxSeenFromAboveOffersTheTabsOfARectangle) {
   EXPECT_NEAR((handles["scale +x"][0].get<double>() + handles["scale -x"][0].get<double>()) / 2, p[0].get<double>(), 1.0);
   // the move tool offers a box no handles
   EXPECT_TRUE(replay("- select: stand/box\n- view: top\n")["world"]["handles"].empty());
+  // a box Region (here under a scale) offers the same; aslant, three faces and nine edges
+  EXPECT_EQ(replay("- press: scale-tool\n- select: stretched/zone\n- view: top\n")["world"]["handles"].size(), 8U);
+  const auto aslant = replay("- press: scale-tool\n- select: stretched/zone\n- view: iso\n")["world"]["handles"];
+  EXPECT_EQ(aslant.size(), 12U) << aslant.dump();
 }
 
 TEST_F(ManipulatorReplay, AFaceTabDraggedTwiceAsFarFromTheCentreDoublesItsAxisAndUndoRestoresIt) {
@@ -121,6 +126,18 @@ TEST_F(ManipulatorReplay, ACornerTabScalesTheTwoAxesItJoins) {
   r = replay(drag + "- press: undo\n");
   EXPECT_EQ(fieldValue(r, "size"), nlohmann::json::array({0.8, 1.2, 0.4}));
   EXPECT_EQ(r["undo"]["depth"], 0);
+}
+
+TEST_F(ManipulatorReplay, ABoxRegionUnderAScaleIsSizedInItsOwnMetres) {
+  // the zone, 1 m along x under a scale of 2, shows 2 m: its +x face pulled half as far again
+  // out moves 0.5 m in the world, 0.25 m of its own, so its size grows by 0.5 m
+  const std::string setup = "- press: scale-tool\n- select: stretched/zone\n- view: top\n";
+  const auto before = replay(setup);
+  ASSERT_TRUE(before["world"]["handles"].contains("scale +x")) << before["world"].dump();
+  const auto r = replay(setup + "- drag: {from: [world, handles, scale +x], to: " + beyond(before["world"], "scale +x", 1.5) +
+                        "}\n");
+  EXPECT_EQ(fieldValue(r, "size"), nlohmann::json::array({1.5, 1.0, 0.2})) << r["world"].dump();
+  EXPECT_EQ(r["undo"]["label"], "set stretched/zone.size");
 }
 
 TEST_F(ManipulatorReplay, ASpotLightIsAimedAtThePointerAndUndoRestoresItsDirection) {
