@@ -52,6 +52,8 @@ bool actionEnabled(const App& app, ActionId id) {
     case ActionId::SelectTool:
     case ActionId::MoveTool:
     case ActionId::TurnTool:
+    case ActionId::ScaleTool:
+    case ActionId::AimTool:
     case ActionId::Snap:
     case ActionId::LocalAxes:
     case ActionId::FrameSelection:
@@ -87,6 +89,8 @@ bool actionChecked(const App& app, ActionId id) {
     case ActionId::SelectTool: return app.tool == Tool::Select;
     case ActionId::MoveTool: return app.tool == Tool::Move;
     case ActionId::TurnTool: return app.tool == Tool::Turn;
+    case ActionId::ScaleTool: return app.tool == Tool::Scale;
+    case ActionId::AimTool: return app.tool == Tool::Aim;
     case ActionId::Snap: return app.snap;
     case ActionId::LocalAxes: return app.local_axes;
     case ActionId::Movie: return app.movie != nullptr;
@@ -157,6 +161,8 @@ std::string performAction(App& app, ActionId id) {
     case ActionId::SelectTool: app.tool = Tool::Select; break;
     case ActionId::MoveTool: app.tool = Tool::Move; break;
     case ActionId::TurnTool: app.tool = Tool::Turn; break;
+    case ActionId::ScaleTool: app.tool = Tool::Scale; break;
+    case ActionId::AimTool: app.tool = Tool::Aim; break;
     case ActionId::Snap: app.snap = !app.snap; break;
     case ActionId::LocalAxes: app.local_axes = !app.local_axes; break;
     case ActionId::FrameSelection: app.frameSelection(); break;

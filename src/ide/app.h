@@ -66,6 +66,8 @@ enum class Tool : std::uint8_t {
   Select,  ///< nothing: the drag turns the view
   Move,    ///< handles along three axes move a Transform
   Turn,    ///< rings about three axes turn a Transform
+  Scale,   ///< tabs on a box's faces and edges (a Cube, a box Region) change its size
+  Aim,     ///< a spot light's direction and the size of its cone
 };
 
 /// A manipulator drag under way.
@@ -75,6 +77,10 @@ struct ManipulatorDrag {
   std::string field;             ///< the field it edits
   core::Vec3 origin, axis, reference;  ///< the handle's point and axis (world), angles' zero
   core::Vec3 parent_axis;        ///< the axis in the node's parent's frame (moves, turns)
+  core::Vec3 point;              ///< scale tabs: where the drag began; aims: a point of the drag's plane (world, m)
+  core::Quat frame;              ///< scale tabs: the box's rotation; aims: its parent's (world)
+  core::Vec3 scale{1, 1, 1};     ///< scale tabs: the scale of the box's parents
+  ScaleTab tab{};                ///< scale tabs: which one
   double start = 0;              ///< where the drag began: along the axis (m) or the angle (deg)
   scene::FieldValue value;       ///< the field's value when the drag began
   std::uint64_t id = 0;          ///< its merge key: the drag is one step

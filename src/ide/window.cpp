@@ -10,7 +10,9 @@
 
 #include <GLFW/glfw3.h>
 
+#include <filesystem>
 #include <iostream>
+#include <string>
 
 #include "app.h"
 #include "gdpn/capture/sensor_imager.h"
@@ -71,7 +73,7 @@ int runWindow(const IdeOptions& o, std::unique_ptr<Document> doc) {
   // context cannot be current on the thread at the same time, so a window that has no EGL
   // falls back to the native API without camera pictures
   glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_EGL_CONTEXT_API);
-  const auto title = "gdpn ide - " + doc->model().path;
+  const auto title = std::filesystem::path(doc->model().path).filename().string() + " - gdpn ide";
   GLFWwindow* window = glfwCreateWindow(o.width, o.height, title.c_str(), nullptr, nullptr);
   const bool egl = window != nullptr;
   if (!egl) {
@@ -102,8 +104,20 @@ int runWindow(const IdeOptions& o, std::unique_ptr<Document> doc) {
     const double start = glfwGetTime();
     double last = start;
     int drawn = 0;  // frames drawn, up to 2
-    while (glfwWindowShouldClose(window) == GLFW_FALSE) {
+    std::string shown_title;
+    while (!app.quitRequested()) {
       glfwPollEvents();
+      // the window's close button is File > Quit: "save changes?" first where edits would be lost
+      if (glfwWindowShouldClose(window) == GLFW_TRUE) {
+        glfwSetWindowShouldClose(window, GLFW_FALSE);
+        if (o.quit_after > 0) break;
+        app.quit();
+        if (app.quitRequested()) break;
+      }
+      if (const auto t = app.title(); t != shown_title) {
+        glfwSetWindowTitle(window, t.c_str());
+        shown_title = t;
+      }
       const double now = glfwGetTime();
       int w = 0, h = 0;
       glfwGetFramebufferSize(window, &w, &h);
@@ -119,7 +133,8 @@ int runWindow(const IdeOptions& o, std::unique_ptr<Document> doc) {
       // a timed session (the smoke test) ends with its outputs
       if (o.quit_after > 0 && now - start >= o.quit_after) {
         if (!writeOutputs(app, w, h, o.screenshot, o.report)) code = 1;
-        glfwSetWindowShouldClose(window, GLFW_TRUE);
+        glfwSwapBuffers(window);
+        break;
       }
       glfwSwapBuffers(window);
     }

@@ -98,6 +98,8 @@ TEST_F(Shell, EveryActionOfTheTableIsDoneByPressInAStateThatAllowsIt) {
 - press: grid
 - press: select-tool
 - press: turn-tool
+- press: scale-tool
+- press: aim-tool
 - press: move-tool
 - press: snap
 - press: local-axes

@@ -87,9 +87,9 @@ void drawViewBar(App& app, scene::Scene* s) {
   // the manipulator of the selected node, and its steps
   ImGui::SameLine();
   ImGui::SetNextItemWidth(80);
-  const char* tools[] = {"select", "move", "turn"};
+  const char* tools[] = {"select", "move", "turn", "scale", "aim"};
   if (ImGui::BeginCombo("##tool", tools[static_cast<int>(app.tool)], ImGuiComboFlags_HeightLarge)) {
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < 5; ++i) {
       if (ImGui::Selectable(tools[i], static_cast<int>(app.tool) == i)) app.tool = static_cast<Tool>(i);
     }
     ImGui::Separator();
@@ -104,8 +104,9 @@ void drawViewBar(App& app, scene::Scene* s) {
     ImGui::EndCombo();
   }
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("What a drag on the selected node's handles does: move along or turn about an axis (a joint's "
-                      "limits always have handles)");
+    ImGui::SetTooltip("What a drag on the selected node's handles does: move along or turn about an axis; scale a box "
+                      "(a Cube, a box Region) by the tabs on its faces and edges; aim a spot light and size its cone (a "
+                      "joint's limits always have handles)");
   }
   // what to show: one list, so that the row fits a narrow view
   ImGui::SameLine();
