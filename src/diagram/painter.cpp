@@ -103,11 +103,21 @@ Box labelBox(const Canvas& c, const Label& l, Point anchor) {
   return {{x - 1, y}, {x + w + 1, y + h}};
 }
 
+}  // namespace
+
+double labelPx(const Viewport& v) {
+  double font = std::min(kLabelSize * v.zoom, kMaxFontPx);
+  if (font >= kReadableFromPx) font = std::max(font, std::min(v.min_label_px, kMaxFontPx));
+  return font >= kMinFontPx ? font : 0.0;
+}
+
+namespace {
+
 class Painter {
  public:
   Painter(const NetLayout& l, const NetState* s, const Viewport& v, Canvas& c) : l_(l), s_(s), v_(v), c_(c) {
-    font_ = std::min(kLabelSize * v.zoom, kMaxFontPx);
-    labels_ = font_ >= kMinFontPx;
+    font_ = labelPx(v);
+    labels_ = font_ > 0;
     coarse_ = kPlaceRadius * v.zoom < kCoarseRadiusPx;
   }
 

@@ -185,6 +185,15 @@ TEST_F(Shell, TheMenusListTheTableAndAChoiceDoesTheAction) {
   EXPECT_EQ(r["keys"]["actions"].size(), actionInfos().size());
 }
 
+TEST_F(Shell, TheFactorysNetFillingTheWindowIsReadable) {
+  size_ = "1600x900";
+  auto r = replay("[]");
+  EXPECT_EQ(r["net_view"]["label_px"], 0) << "in its panel, the factory's net is too small for names";
+  r = replay("- press: net-full\n");
+  EXPECT_GE(r["net_view"]["label_px"].get<double>(), 10.0) << r["net_view"].dump();
+  EXPECT_EQ(r["net_view"]["places"], 13);
+}
+
 TEST_F(Shell, TheLayoutIsKeptBetweenSessions) {
   const auto path = model("bin.gdpn.yaml");
   replayOn(path, "- press: swap-views\n- press: world-full\n");

@@ -26,6 +26,9 @@ namespace gdpn::diagram {
 inline constexpr double kMinFontPx = 8.0;
 /// Largest text drawn, pixels (names do not grow past it when zoomed in).
 inline constexpr double kMaxFontPx = 18.0;
+/// Names whose zoom would draw them this small or larger are drawn at Viewport::min_label_px
+/// when it is larger (below, the shapes are too close for names to find room), pixels.
+inline constexpr double kReadableFromPx = 5.0;
 /// Most tokens drawn as dots in one place; more are shown as numbers.
 inline constexpr std::int64_t kMaxDots = 5;
 
@@ -45,10 +48,19 @@ inline constexpr Rgba kInstanceLine{80, 96, 128, 255};    ///< instance boxes' o
 inline constexpr Rgba kInscription{70, 70, 110, 255};     ///< arc inscriptions (weights, slots)
 }  // namespace colours
 
+struct Viewport;
+/// The height the names of constructs are drawn at through `v`, pixels; 0 when the zoom is
+/// too small for names (they are left out).
+[[nodiscard]] double labelPx(const Viewport& v);
+
 /// How layout units map to the canvas: screen = (layout - origin) * zoom.
 struct Viewport {
   Point origin;       ///< the layout point at the canvas' top-left corner, layout units
   double zoom = 1.0;  ///< pixels per layout unit (> 0)
+  /// The least height of names, pixels, where the zoom would draw them smaller but still at
+  /// kReadableFromPx or more (0: names scale with the zoom alone). An editor's view asks for
+  /// names it can read; a rendered picture keeps them in proportion.
+  double min_label_px = 0;
 
   /// A layout point on the canvas, pixels.
   [[nodiscard]] Point toScreen(Point p) const { return (p - origin) * zoom; }

@@ -112,7 +112,9 @@ void drawFileBrowser(App& app, nlohmann::json& report) {
 
   // its subfolders and model files: a click on a folder goes in, on a file takes its name
   const Listing listing = list(b.folder);
-  const float list_h = ImGui::GetContentRegionAvail().y - 2 * ImGui::GetFrameHeightWithSpacing() - 6;
+  // room under the list for the name row, and the error's line when there is one
+  const float rows = b.error.empty() ? 1.0F : 2.0F;
+  const float list_h = ImGui::GetContentRegionAvail().y - rows * ImGui::GetFrameHeightWithSpacing() - 4;
   ImGui::BeginChild("##entries", {0, std::max(list_h, 80.0F)}, true);
   std::string enter;
   for (const auto& f : listing.folders) {

@@ -16,6 +16,9 @@
 #include "net_view_state.h"
 
 namespace gdpn::ide {
+
+/// The least height of the net view's names, pixels (docs/ide.md: 10 px at least on a 1600 x 900 window).
+constexpr double kNetViewLabelPx = 10.0;
 namespace {
 
 /// Lays out the page the view shows again when the page or the document changed.
@@ -432,13 +435,19 @@ void drawNetView(App& app, const Rect& at, nlohmann::json& report) {
     return;
   }
   const Region r = regionHere("##netcanvas");
-  if (s.fit) {
+  // fitted again when asked, and when the canvas changed size (a splitter, the view filling the
+  // window) while it showed the fit
+  if (s.fit || (s.fitted && (r.width != s.fitted_w || r.height != s.fitted_h))) {
     s.viewport = diagram::fitViewport(s.layout, r.width, r.height);
     s.fit = false;
+    s.fitted = true;
+    s.fitted_w = r.width;
+    s.fitted_h = r.height;
   }
   const ImGuiIO& io = ImGui::GetIO();
   if (r.hovered && io.MouseWheel != 0.0f) {
     s.viewport = s.viewport.zoomedAbout(r.mouse, std::pow(1.15, static_cast<double>(io.MouseWheel)));
+    s.fitted = false;
   }
   // what is under the mouse as the frame begins: a drag that starts on a construct moves it
   const auto pointed = s.index->pick(s.viewport.toLayout(r.mouse), 4.0 / s.viewport.zoom);
@@ -446,8 +455,12 @@ void drawNetView(App& app, const Rect& at, nlohmann::json& report) {
   if (r.active && !moving && s.moving.empty() &&
       (ImGui::IsMouseDragging(ImGuiMouseButton_Left) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle))) {
     s.viewport = s.viewport.panned({static_cast<double>(io.MouseDelta.x), static_cast<double>(io.MouseDelta.y)});
+    s.fitted = false;
   }
-  const auto under = clickAndPaint(app, s, r, s.viewport, report);
+  auto shown = s.viewport;
+  shown.min_label_px = kNetViewLabelPx;  // names a user can read where there is room for them
+  const auto under = clickAndPaint(app, s, r, shown, report);
+  report["label_px"] = diagram::labelPx(shown);
   if (r.hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && under &&
       under->kind == diagram::ItemKind::Instance) {
     s.path = (s.path.empty() ? s.layout.page : s.path) + "/" + s.layout.instances[under->index].name;

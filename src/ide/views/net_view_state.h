@@ -23,6 +23,8 @@ struct NetViewState {
   std::unique_ptr<diagram::SpatialIndex> index;  ///< over `layout`
   diagram::Viewport viewport;        ///< pan and zoom
   bool fit = true;                   ///< fit the page into the view at the next frame
+  bool fitted = true;                ///< the view shows the fit (no zoom or pan since): a new size fits again
+  int fitted_w = 0, fitted_h = 0;    ///< the canvas's size when it was fitted, pixels
   std::string error;                 ///< why the page cannot be shown ("" when it can)
   std::string laid_out_path = "\x01";  ///< `path` when the layout was made
   std::uint64_t laid_out_revision = ~std::uint64_t{0};  ///< the document's revision then
