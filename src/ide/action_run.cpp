@@ -66,7 +66,7 @@ bool actionEnabled(const App& app, ActionId id) {
     case ActionId::RunN:
     case ActionId::PlantOnly: return hasRun(app);
     case ActionId::Pause: return app.run().mode() == RunMode::Running;
-    case ActionId::Fire: return hasRun(app) && !app.fire_target.empty();
+    case ActionId::Fire: return hasRun(app) && !app.toolbar.fire_target.empty();
     case ActionId::Reset: return true;
     case ActionId::ClearBreakpoints: return !app.run().breakpoints().empty();
     case ActionId::Keys:
@@ -80,19 +80,19 @@ bool actionChecked(const App& app, ActionId id) {
     case ActionId::SwapViews: return app.splittersView().swapped;
     case ActionId::WorldFull: return app.splittersView().full == FullView::World;
     case ActionId::NetFull: return app.splittersView().full == FullView::Net;
-    case ActionId::MiniView: return app.show_mini;
-    case ActionId::Sensors: return app.show_sensors;
-    case ActionId::Joints: return app.show_joints;
-    case ActionId::Contacts: return app.show_contacts;
-    case ActionId::Shadows: return app.show_shadows;
-    case ActionId::Grid: return app.show_grid;
-    case ActionId::SelectTool: return app.tool == Tool::Select;
-    case ActionId::MoveTool: return app.tool == Tool::Move;
-    case ActionId::TurnTool: return app.tool == Tool::Turn;
-    case ActionId::ScaleTool: return app.tool == Tool::Scale;
-    case ActionId::AimTool: return app.tool == Tool::Aim;
-    case ActionId::Snap: return app.snap;
-    case ActionId::LocalAxes: return app.local_axes;
+    case ActionId::MiniView: return app.world.show_mini;
+    case ActionId::Sensors: return app.world.show_sensors;
+    case ActionId::Joints: return app.world.show_joints;
+    case ActionId::Contacts: return app.world.show_contacts;
+    case ActionId::Shadows: return app.world.show_shadows;
+    case ActionId::Grid: return app.world.show_grid;
+    case ActionId::SelectTool: return app.world.tool == Tool::Select;
+    case ActionId::MoveTool: return app.world.tool == Tool::Move;
+    case ActionId::TurnTool: return app.world.tool == Tool::Turn;
+    case ActionId::ScaleTool: return app.world.tool == Tool::Scale;
+    case ActionId::AimTool: return app.world.tool == Tool::Aim;
+    case ActionId::Snap: return app.world.snap;
+    case ActionId::LocalAxes: return app.world.local_axes;
     case ActionId::Movie: return app.movie != nullptr;
     case ActionId::PlantOnly: return app.run().plantOnly();
     case ActionId::New:
@@ -152,19 +152,19 @@ std::string performAction(App& app, ActionId id) {
     case ActionId::SwapViews: app.swapViews(); break;
     case ActionId::WorldFull: app.fill(FullView::World); break;
     case ActionId::NetFull: app.fill(FullView::Net); break;
-    case ActionId::MiniView: app.show_mini = !app.show_mini; break;
-    case ActionId::Sensors: app.show_sensors = !app.show_sensors; break;
-    case ActionId::Joints: app.show_joints = !app.show_joints; break;
-    case ActionId::Contacts: app.show_contacts = !app.show_contacts; break;
-    case ActionId::Shadows: app.show_shadows = !app.show_shadows; break;
-    case ActionId::Grid: app.show_grid = !app.show_grid; break;
-    case ActionId::SelectTool: app.tool = Tool::Select; break;
-    case ActionId::MoveTool: app.tool = Tool::Move; break;
-    case ActionId::TurnTool: app.tool = Tool::Turn; break;
-    case ActionId::ScaleTool: app.tool = Tool::Scale; break;
-    case ActionId::AimTool: app.tool = Tool::Aim; break;
-    case ActionId::Snap: app.snap = !app.snap; break;
-    case ActionId::LocalAxes: app.local_axes = !app.local_axes; break;
+    case ActionId::MiniView: app.world.show_mini = !app.world.show_mini; break;
+    case ActionId::Sensors: app.world.show_sensors = !app.world.show_sensors; break;
+    case ActionId::Joints: app.world.show_joints = !app.world.show_joints; break;
+    case ActionId::Contacts: app.world.show_contacts = !app.world.show_contacts; break;
+    case ActionId::Shadows: app.world.show_shadows = !app.world.show_shadows; break;
+    case ActionId::Grid: app.world.show_grid = !app.world.show_grid; break;
+    case ActionId::SelectTool: app.world.tool = Tool::Select; break;
+    case ActionId::MoveTool: app.world.tool = Tool::Move; break;
+    case ActionId::TurnTool: app.world.tool = Tool::Turn; break;
+    case ActionId::ScaleTool: app.world.tool = Tool::Scale; break;
+    case ActionId::AimTool: app.world.tool = Tool::Aim; break;
+    case ActionId::Snap: app.world.snap = !app.world.snap; break;
+    case ActionId::LocalAxes: app.world.local_axes = !app.world.local_axes; break;
     case ActionId::FrameSelection: app.frameSelection(); break;
     case ActionId::Screenshot: app.screenshot_requested = true; break;
     case ActionId::Movie: app.toggleMovie(); break;
@@ -173,9 +173,9 @@ std::string performAction(App& app, ActionId id) {
     case ActionId::Fastest: run.run(RunSpeed::Fastest); break;
     case ActionId::Pause: run.pause(); break;
     case ActionId::Step: run.step(); break;
-    case ActionId::RunN: run.runSteps(app.run_n); break;
+    case ActionId::RunN: run.runSteps(app.toolbar.run_n); break;
     case ActionId::Fire:
-      (void)run.fire(app.fire_target);
+      (void)run.fire(app.toolbar.fire_target);
       app.message = run.message();
       break;
     case ActionId::PlantOnly: run.setPlantOnly(!run.plantOnly()); break;

@@ -62,10 +62,10 @@ App::App(std::unique_ptr<Document> doc, session::SessionOptions options)
   if (auto* s = doc_->scene()) {
     scene::updateTransforms(s->root());
     std::string error;
-    orbit = OrbitCamera::from(render::chooseCamera(*s, "", 0.0, error));
+    world.orbit = OrbitCamera::from(render::chooseCamera(*s, "", 0.0, error));
   }
   const auto names = run_.transitions();
-  if (!names.empty()) fire_target = names.front();
+  if (!names.empty()) toolbar.fire_target = names.front();
   restore_offered = doc_->autosavePending();
   autosaved_revision = doc_->revision();
 }
@@ -114,8 +114,8 @@ void App::filmFrame(int width, int height, const std::vector<std::uint8_t>& rgb)
 void App::initGraphics(Fonts f) {
   fonts = f;
   const auto dir = std::filesystem::path(doc_->model().path).parent_path().string();
-  renderer = std::make_unique<render::Renderer>(dir);
-  world_texture = std::make_unique<WorldTexture>();
+  world.renderer = std::make_unique<render::Renderer>(dir);
+  world.texture = std::make_unique<WorldTexture>();
 }
 
 scene::Scene* App::shownScene() const {
@@ -125,7 +125,7 @@ scene::Scene* App::shownScene() const {
 
 void App::selectNode(const std::string& path) {
   doc_->select(Selection::node(path));
-  reveal_selection = true;
+  tree.reveal = true;
 }
 
 bool App::selectByName(const std::string& name) {
@@ -142,7 +142,7 @@ bool App::selectByName(const std::string& name) {
   }
   if (net.findTransition(name)) {
     doc_->select({SelectionKind::Transition, name});
-    fire_target = name;
+    toolbar.fire_target = name;
     return true;
   }
   // an instance: a prefix of qualified names
@@ -162,8 +162,8 @@ void App::frameSelection() {
   scene::updateTransforms(s->root());
   const auto& sel = doc_->selection();
   auto* node = sel.kind == SelectionKind::Node ? s->find(sel.name) : nullptr;
-  orbit.frame(scene::boundingBox(node != nullptr ? *node : s->root()));
-  camera_node.clear();
+  world.orbit.frame(scene::boundingBox(node != nullptr ? *node : s->root()));
+  world.camera_node.clear();
 }
 
 void App::undo() {
@@ -307,7 +307,7 @@ std::string App::pasteScene(std::shared_ptr<const scene::Scene> fragment, std::s
   if (why.empty()) {
     made = edit->made();
     doc_->select(Selection::node(made));
-    reveal_selection = true;
+    tree.reveal = true;
   }
   return why;
 }
@@ -457,23 +457,23 @@ void App::replaceDocument(std::unique_ptr<Document> doc, bool untitled) {
   run_.setPlantOnly(false);
   net_view_ = std::make_unique<NetViewState>();
   token_types_revision_ = ~std::uint64_t{0};
-  scripts = {};
-  manipulating = {};
-  camera_node.clear();
-  fire_target.clear();
+  inspector.scripts = {};
+  world.manipulating = {};
+  world.camera_node.clear();
+  toolbar.fire_target.clear();
   const auto names = run_.transitions();
-  if (!names.empty()) fire_target = names.front();
-  orbit = OrbitCamera{};
+  if (!names.empty()) toolbar.fire_target = names.front();
+  world.orbit = OrbitCamera{};
   if (auto* s = doc_->scene()) {
     scene::updateTransforms(s->root());
     std::string error;
-    orbit = OrbitCamera::from(render::chooseCamera(*s, "", 0.0, error));
+    world.orbit = OrbitCamera::from(render::chooseCamera(*s, "", 0.0, error));
   }
   restore_offered = doc_->autosavePending();
   autosaved_revision = doc_->revision();
   quiet_revision = followed_revision = 0;
-  world_key = {};
-  if (renderer) renderer = std::make_unique<render::Renderer>(std::filesystem::path(doc_->model().path).parent_path().string());
+  world.key = {};
+  if (world.renderer) world.renderer = std::make_unique<render::Renderer>(std::filesystem::path(doc_->model().path).parent_path().string());
 }
 
 void App::browse(BrowseFor mode) {
@@ -550,7 +550,7 @@ void App::followEdits(double wall_seconds) {
   }
   edit_quiet += wall_seconds;
   if (run_.mode() != RunMode::Edit || run_.revision() == doc_->revision() || edit_quiet < 0.25) return;
-  if (ImGui::IsAnyItemActive() || manipulating.handle != Handle::None) return;
+  if (ImGui::IsAnyItemActive() || world.manipulating.handle != Handle::None) return;
   if (followed_revision == doc_->revision()) return;  // tried already: it did not compile
   followed_revision = doc_->revision();
   core::Diagnostics diags;
@@ -628,7 +628,7 @@ bool App::perform(const Action& a, std::string& error) {
         error = "the net has no transition '" + a.text + "'";
         break;
       }
-      fire_target = a.text;
+      toolbar.fire_target = a.text;
       (void)run_.fire(a.text);
       message = run_.message();
       break;
@@ -649,7 +649,7 @@ bool App::perform(const Action& a, std::string& error) {
           break;
         }
         error = doc_->execute(std::make_unique<SetTemplateCommand>(a.text, a.value[0] == "true"));
-        inspector_error = error;
+        inspector.error = error;
         break;
       }
       if (a.field.starts_with("data.")) {
@@ -667,7 +667,7 @@ bool App::perform(const Action& a, std::string& error) {
           datum = a.quoted ? scene::FieldValue(a.value[0]) : scene::datumFromText(a.value[0]);
         }
         error = doc_->execute(std::make_unique<SetDatumCommand>(a.text, a.field.substr(5), std::move(datum)));
-        inspector_error = error;
+        inspector.error = error;
         break;
       }
       const int i = node->type().fieldIndex(a.field);
@@ -678,20 +678,20 @@ bool App::perform(const Action& a, std::string& error) {
       auto value = fieldValueFromWords(*node->type().fields[static_cast<std::size_t>(i)], a.value, a.list, error);
       if (!value) break;
       error = doc_->execute(std::make_unique<SetFieldCommand>(a.text, a.field, std::move(*value)));
-      inspector_error = error;
+      inspector.error = error;
       break;
     }
     case ActionKind::View: {
       if (auto v = parseStandardView(a.text)) {
-        orbit.look(*v);
-        camera_node.clear();
+        world.orbit.look(*v);
+        world.camera_node.clear();
       } else if (a.text == "frame") {
         frameSelection();
       } else if (a.text == "all") {
         if (auto* s = shownScene()) {
           scene::updateTransforms(s->root());
-          orbit.frame(scene::boundingBox(s->root()));
-          camera_node.clear();
+          world.orbit.frame(scene::boundingBox(s->root()));
+          world.camera_node.clear();
         }
       } else {
         auto* s = shownScene();
@@ -700,7 +700,7 @@ bool App::perform(const Action& a, std::string& error) {
           error = "'" + a.text + "' is no standard view (front, back, left, right, top, iso, frame, all) and no Camera node";
           break;
         }
-        camera_node = a.text;
+        world.camera_node = a.text;
       }
       break;
     }
@@ -742,24 +742,24 @@ constexpr int kWorldLevels = static_cast<int>(std::size(kWorldScales));
 }  // namespace
 
 bool App::busy() const {
-  return run_.mode() == RunMode::Running || manipulating.handle != Handle::None || ImGui::IsAnyItemActive();
+  return run_.mode() == RunMode::Running || world.manipulating.handle != Handle::None || ImGui::IsAnyItemActive();
 }
 
-double App::worldScale() const { return busy() ? kWorldScales[world_level] : 1.0; }
+double App::worldScale() const { return busy() ? kWorldScales[world.level] : 1.0; }
 
 void App::frame(float width, float height, double wall_seconds) {
   if (wall_seconds > 0) fps = fps == 0 ? 1.0 / wall_seconds : 0.9 * fps + 0.1 / wall_seconds;
   // a software renderer cannot fill a large world view 30 times a second: while running, its
   // resolution follows the frame rate, a step every half second at most (a headless frame
   // stands for 1/60 s and never lowers it)
-  world_level_age += wall_seconds;
-  if (busy() && world_level_age >= 0.5) {
-    if (fps < 30 && world_level + 1 < kWorldLevels) {
-      ++world_level;
-      world_level_age = 0;
-    } else if (fps > 45 && world_level > 0) {
-      --world_level;
-      world_level_age = 0;
+  world.level_age += wall_seconds;
+  if (busy() && world.level_age >= 0.5) {
+    if (fps < 30 && world.level + 1 < kWorldLevels) {
+      ++world.level;
+      world.level_age = 0;
+    } else if (fps > 45 && world.level > 0) {
+      --world.level;
+      world.level_age = 0;
     }
   }
   checkReload();

@@ -86,6 +86,61 @@ struct ManipulatorDrag {
   std::uint64_t id = 0;          ///< its merge key: the drag is one step
 };
 
+/// The world view's own state: its camera, what it shows, the tools of its manipulators, and
+/// what it drew last (views/world_view.cpp, views/manipulators.cpp, the mini view).
+struct WorldViewState {
+  OrbitCamera orbit;                ///< the free camera
+  std::string camera_node;          ///< the scene Camera node in use ("" : the free camera)
+  bool show_sensors = false;        ///< draws sensor volumes
+  bool show_joints = false;         ///< draws joint axes
+  bool show_contacts = false;       ///< marks the contact points of the last step
+  bool show_shadows = true;         ///< the main light casts shadows
+  bool show_grid = true;            ///< draws the ground grid
+  bool show_mini = false;           ///< the mini view (the net over the world view) is open
+  Tool tool = Tool::Move;           ///< the manipulator a drag uses
+  bool snap = true;                 ///< manipulators move, turn and scale in steps
+  double move_step = 0.05;          ///< a step of a move (and of a scale), m
+  double turn_step = 5.0;           ///< a step of a turn, degrees
+  bool local_axes = false;          ///< the move and turn handles follow the node's own axes
+  ManipulatorDrag manipulating;     ///< the manipulator drag under way
+  int level = 0;                    ///< how far the resolution is lowered while running (kWorldScales)
+  double level_age = 0;             ///< wall seconds since `level` last changed
+  std::vector<std::string> pressed_keys;  ///< keys delivered to the sensors (report)
+  std::array<bool, 512> key_was_down{};   ///< the keys last frame, by GLFW code
+  core::Vec3 last_eye{1e300, 0, 0};       ///< the viewpoint last sent to the sensors, m
+  std::unique_ptr<render::Renderer> renderer;  ///< draws the scene
+  std::unique_ptr<WorldTexture> texture;       ///< where the scene is drawn
+  WorldKey key;                                ///< what the picture shows
+  render::DrawStats stats;                     ///< what drawing it took
+};
+
+/// The inspector's and the contents view's own state (views/inspector.cpp, contents_view.cpp).
+struct InspectorState {
+  int break_tokens = 1;             ///< the token count for a place's breakpoint
+  std::string break_condition;      ///< the breakpoints' field: a Python condition being typed
+  std::uint64_t drag_id = 0;        ///< the current drag of a field (merge key)
+  std::string error;                ///< why the last edit was refused
+  std::string datum_key;            ///< the name for a datum to add
+  std::string datum_value;          ///< and its value, as text (datumFromText)
+  ScriptEditing scripts;            ///< the contents view's script editor
+  net::SlotId contents_slot = net::kDefaultSlot;  ///< the slot the contents view edits
+  std::unique_ptr<PictureTexture> picture_texture;  ///< a camera sensor's picture
+};
+
+/// The toolbar's own state (views/toolbar.cpp).
+struct ToolbarState {
+  std::string fire_target;              ///< the chosen transition
+  int run_n = 100;                      ///< N for Run N steps
+  RunSpeed speed = RunSpeed::RealTime;  ///< the speed for Run
+};
+
+/// The tree view's own state (views/tree_view.cpp).
+struct TreeViewState {
+  std::string rename;               ///< the node's name being typed in its menu
+  std::string import_files;         ///< the mesh files to import, typed in its menu
+  bool reveal = false;              ///< opens and scrolls to the selection once
+};
+
 /// What the file browser chooses a file for.
 enum class BrowseFor : std::uint8_t {
   Open,    ///< a model to open
@@ -236,32 +291,10 @@ class App {
   [[nodiscard]] const core::Diagnostics& runDiagnostics() const { return run_.buildDiagnostics(); }
 
   Fonts fonts;                      ///< the fonts
-  OrbitCamera orbit;                ///< the world view's camera
-  std::string camera_node;          ///< the scene Camera node in use ("" : the orbit camera)
-  bool show_sensors = false;        ///< the world view draws sensor volumes
-  bool show_joints = false;         ///< the world view draws joint axes
-  bool show_contacts = false;       ///< the world view marks the contact points of the last step
-  bool show_shadows = true;         ///< the world view's main light casts shadows
-  bool show_grid = true;            ///< the world view draws the ground grid
-  bool show_mini = false;           ///< the mini view (the net over the world view) is open
-  Tool tool = Tool::Move;           ///< the world view's manipulator
-  bool snap = true;                 ///< manipulators move and turn in steps
-  double move_step = 0.05;          ///< a step of a move, m
-  double turn_step = 5.0;           ///< a step of a turn, degrees
-  bool local_axes = false;          ///< the move and turn handles follow the node's own axes
-  ManipulatorDrag manipulating;     ///< the manipulator drag under way
-  std::string fire_target;          ///< the toolbar's chosen transition
-  int run_n = 100;                  ///< the toolbar's N for Run N steps
-  int break_tokens = 1;             ///< the inspector's token count for a place's breakpoint
-  std::string break_condition;      ///< the breakpoints' field: a Python condition being typed
-  std::string tree_rename;          ///< the tree view's menu: the node's name being typed
-  std::string import_files;         ///< the tree view's menu: the mesh files to import
-  ScriptEditing scripts;            ///< the contents view's script editor
-  net::SlotId contents_slot = net::kDefaultSlot;  ///< the slot the contents view edits
-  std::uint64_t drag_id = 0;        ///< the inspector's current drag (merge key)
-  std::string inspector_error;      ///< why the last edit was refused
-  std::string datum_key;            ///< the inspector's name for a datum to add
-  std::string datum_value;          ///< and its value, as text (datumFromText)
+  WorldViewState world;             ///< the world view's (and its manipulators' and mini view's) own state
+  InspectorState inspector;         ///< the inspector's and the contents view's own state
+  ToolbarState toolbar;             ///< the toolbar's own state
+  TreeViewState tree;               ///< the tree view's own state
   double edit_quiet = 0;            ///< seconds since the document last changed (edit mode)
   std::uint64_t quiet_revision = 0; ///< the revision edit_quiet counts from
   std::uint64_t followed_revision = 0;  ///< the revision the run last tried to follow
@@ -273,12 +306,9 @@ class App {
   SaveQuestion question;            ///< "save changes?" under way
   std::vector<std::string> recent;  ///< model files opened, the latest first (the settings file keeps them)
   bool keys_open = false;           ///< Help's list of the actions and their keys is shown
-  RunSpeed speed = RunSpeed::RealTime;  ///< the toolbar's speed for Run
   std::string message;              ///< the status bar's message line
   std::string copied;               ///< what the last copy put on the clipboard (a model file)
   double fps = 0;                   ///< frames per second, smoothed
-  int world_level = 0;              ///< how far the world view's resolution is lowered while running (kWorldScales)
-  double world_level_age = 0;       ///< wall seconds since world_level last changed
   /// The share of its pixels (per side) the world view is drawn at: 1 unless busy (running, or a
   /// drag of a manipulator or a field), where a frame rate under 30 fps lowers it in steps to
   /// 0.5 and one over 45 raises it again.
@@ -296,15 +326,6 @@ class App {
   /// Adds the frame just drawn (`width` x `height` pixels, RGB, top row first) to the movie;
   /// an odd last row or column is left out (H.264 wants even sizes).
   void filmFrame(int width, int height, const std::vector<std::uint8_t>& rgb);
-  bool reveal_selection = false;    ///< the tree opens and scrolls to the selection once
-  std::vector<std::string> pressed_keys;  ///< keys the world view delivered (report)
-  std::array<bool, 512> key_was_down{};   ///< the world view's keys last frame, by GLFW code
-  core::Vec3 last_eye{1e300, 0, 0};        ///< the viewpoint last sent to the sensors, m
-  std::unique_ptr<render::Renderer> renderer;  ///< the world view's renderer
-  std::unique_ptr<WorldTexture> world_texture; ///< where the world view draws
-  std::unique_ptr<PictureTexture> picture_texture;  ///< the inspector's camera picture
-  WorldKey world_key;                          ///< what the world view's picture shows
-  render::DrawStats world_stats;               ///< what drawing it took
 
  private:
   void checkReload();

@@ -218,7 +218,7 @@ void commitTransition(App& app, const ConstructAt& at, net::TransitionSpec t) {
 /// field was changed.
 void scriptEditor(App& app, const std::string& key, const std::string& heading, const net::ScriptSpec& script,
                   bool expression, const std::function<void(const std::string&)>& store, nlohmann::json& report) {
-  auto& ed = app.scripts;
+  auto& ed = app.inspector.scripts;
   ImGui::PushID(key.c_str());
   ImGui::Separator();
   ImGui::TextColored({0.6f, 0.75f, 1.0f, 1.0f}, "%s", heading.c_str());
@@ -466,10 +466,10 @@ void editPlace(App& app, const ConstructAt& at, const net::PlaceSpec& place, con
                         std::any_of(place.scripts.begin(), place.scripts.end(), [&](const auto& x) { return x.slot == slot; });
       const auto count = kind == net::SlotKind::Node ? static_cast<std::int64_t>(names.size()) : tokens;
       const std::string label = kind == net::SlotKind::Sensor ? name : name + " " + std::to_string(count);
-      const bool chosen = app.contents_slot == slot;
+      const bool chosen = app.inspector.contents_slot == slot;
       ImGui::PushStyleColor(ImGuiCol_Button, slotColour(kind, used));
       if (chosen) ImGui::PushStyleVar(ImGuiStyleVar_FrameBorderSize, 2.0f);
-      if (ImGui::Button(label.c_str(), {56, 0})) app.contents_slot = slot;
+      if (ImGui::Button(label.c_str(), {56, 0})) app.inspector.contents_slot = slot;
       if (chosen) ImGui::PopStyleVar();
       ImGui::PopStyleColor();
       noteItem(name, grid);
@@ -477,7 +477,7 @@ void editPlace(App& app, const ConstructAt& at, const net::PlaceSpec& place, con
         if (const ImGuiPayload* payload = ImGui::AcceptDragDropPayload(kNodePayload)) {
           auto p = place;
           addNodeToken(p, slot, std::string(static_cast<const char*>(payload->Data), static_cast<std::size_t>(payload->DataSize)));
-          app.contents_slot = slot;
+          app.inspector.contents_slot = slot;
           commitPlace(app, at, std::move(p));
         }
         ImGui::EndDragDropTarget();
@@ -490,24 +490,24 @@ void editPlace(App& app, const ConstructAt& at, const net::PlaceSpec& place, con
   report["slots"] = slots;
   report["grid"] = grid;
   report["editable"] = true;
-  slotFields(app, at, place, app.contents_slot, report);
+  slotFields(app, at, place, app.inspector.contents_slot, report);
   typeFindings(app, construct, report);
-  pathScripts(page, at.name, app.contents_slot, report);
+  pathScripts(page, at.name, app.inspector.contents_slot, report);
 
   // the chosen slot's scripts, then every other script of the place: side by side
-  const auto kind = slotKindOf(place, app.contents_slot);
+  const auto kind = slotKindOf(place, app.inspector.contents_slot);
   const auto scriptsOf = [&](net::SlotId slot) {
     const auto it = std::find_if(place.scripts.begin(), place.scripts.end(), [&](const auto& x) { return x.slot == slot; });
     net::SlotScripts none;
     none.slot = slot;
     return it == place.scripts.end() ? none : *it;
   };
-  const auto chosen = scriptsOf(app.contents_slot);
+  const auto chosen = scriptsOf(app.inspector.contents_slot);
   for (const auto k : net::kSlotScripts) {
     const bool sensor_only = k != net::ScriptKind::OnDeposit && k != net::ScriptKind::OnRemove;
     if (sensor_only != (kind == net::SlotKind::Sensor)) continue;
-    const std::string heading = std::string(net::info(k).key) + " (" + net::slotName(app.contents_slot) + ")";
-    const auto slot = app.contents_slot;
+    const std::string heading = std::string(net::info(k).key) + " (" + net::slotName(app.inspector.contents_slot) + ")";
+    const auto slot = app.inspector.contents_slot;
     scriptEditor(app, construct + "#" + heading, heading, net::scriptOf(chosen, k), false,
                  [&app, at, place, slot, k](const std::string& code) {
                    auto p = place;
@@ -516,7 +516,7 @@ void editPlace(App& app, const ConstructAt& at, const net::PlaceSpec& place, con
                  }, report);
   }
   for (const auto& s : place.scripts) {
-    if (s.slot == app.contents_slot) continue;
+    if (s.slot == app.inspector.contents_slot) continue;
     for (const auto k : net::kSlotScripts) {
       const auto& script = net::scriptOf(s, k);
       if (script.empty()) continue;

@@ -101,12 +101,12 @@ void drawBreakpoints(App& app, nlohmann::json& report) {
   }
   // a Python condition, checked after every step (the run's globals and sim are in scope)
   ImGui::SetNextItemWidth(std::max(80.0f, ImGui::GetContentRegionAvail().x - 60.0f));
-  const bool entered = ImGui::InputTextWithHint("##when", "when (Python), e.g. sim.time > 20", &app.break_condition,
+  const bool entered = ImGui::InputTextWithHint("##when", "when (Python), e.g. sim.time > 20", &app.inspector.break_condition,
                                                 ImGuiInputTextFlags_EnterReturnsTrue);
   ImGui::SameLine();
-  if ((ImGui::Button("Add") || entered) && !app.break_condition.empty()) {
-    app.message = app.run().addBreakpoint(session::Breakpoint::predicate(app.break_condition));
-    if (app.message.empty()) app.break_condition.clear();
+  if ((ImGui::Button("Add") || entered) && !app.inspector.break_condition.empty()) {
+    app.message = app.run().addBreakpoint(session::Breakpoint::predicate(app.inspector.break_condition));
+    if (app.message.empty()) app.inspector.break_condition.clear();
   }
 }
 

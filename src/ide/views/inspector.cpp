@@ -112,7 +112,7 @@ bool fieldWidget(const scene::FieldDesc& d, const FieldValue& v, FieldValue& out
 }
 
 /// Runs `command` on the document; its refusal is shown above the fields.
-void edit(App& app, std::unique_ptr<Command> command) { app.inspector_error = app.document().execute(std::move(command)); }
+void edit(App& app, std::unique_ptr<Command> command) { app.inspector.error = app.document().execute(std::move(command)); }
 
 /// A node's template mark and its user data, each edit a command: one line with the mark and
 /// a datum to add, then a line per datum.
@@ -134,17 +134,17 @@ void nodeExtras(App& app, const scene::Node& node, const std::string& path, nloh
   ImGui::TextDisabled("add data");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(90);
-  ImGui::InputTextWithHint("##datum_key", "name", &app.datum_key);
+  ImGui::InputTextWithHint("##datum_key", "name", &app.inspector.datum_key);
   ImGui::SameLine();
   ImGui::SetNextItemWidth(120);
-  const bool enter = ImGui::InputTextWithHint("##datum_value", "value", &app.datum_value,
+  const bool enter = ImGui::InputTextWithHint("##datum_value", "value", &app.inspector.datum_value,
                                               ImGuiInputTextFlags_EnterReturnsTrue);
   ImGui::SameLine();
-  if ((ImGui::SmallButton("add") || enter) && !app.datum_key.empty()) {
-    edit(app, std::make_unique<SetDatumCommand>(path, app.datum_key, scene::datumFromText(app.datum_value)));
-    if (app.inspector_error.empty()) {
-      app.datum_key.clear();
-      app.datum_value.clear();
+  if ((ImGui::SmallButton("add") || enter) && !app.inspector.datum_key.empty()) {
+    edit(app, std::make_unique<SetDatumCommand>(path, app.inspector.datum_key, scene::datumFromText(app.inspector.datum_value)));
+    if (app.inspector.error.empty()) {
+      app.inspector.datum_key.clear();
+      app.inspector.datum_value.clear();
     }
   }
   auto& data = report["data"] = nlohmann::json::object();
@@ -244,8 +244,8 @@ void sensorReading(App& app, const model::Simulation& sim, const scene::Node& se
     return;
   }
   namespace F = scene::field;
-  if (!app.picture_texture) app.picture_texture = std::make_unique<PictureTexture>();
-  app.picture_texture->show(picture, sensor.number(F::ColorCamera::Near), sensor.number(F::ColorCamera::Far));
+  if (!app.inspector.picture_texture) app.inspector.picture_texture = std::make_unique<PictureTexture>();
+  app.inspector.picture_texture->show(picture, sensor.number(F::ColorCamera::Near), sensor.number(F::ColorCamera::Far));
   const bool depth = !picture->depth.empty();
   ImGui::TextDisabled("the latest picture a script read, %d x %d%s", picture->width, picture->height,
                       depth ? " (near white, far black)" : "");
@@ -255,7 +255,7 @@ void sensorReading(App& app, const model::Simulation& sim, const scene::Node& se
   const float width = std::min({ImGui::GetContentRegionAvail().x, 4.0F * static_cast<float>(picture->width),
                                 0.5F * ImGui::GetWindowHeight() / aspect});
   const float height = width * aspect;
-  ImGui::Image(reinterpret_cast<ImTextureID>(app.picture_texture->texture()), {width, height});
+  ImGui::Image(reinterpret_cast<ImTextureID>(app.inspector.picture_texture->texture()), {width, height});
 }
 
 void nodeInspector(App& app, const std::string& path, nlohmann::json& report) {
@@ -269,7 +269,7 @@ void nodeInspector(App& app, const std::string& path, nlohmann::json& report) {
   ImGui::Text("%s  %s", node->type().name.c_str(), path.c_str());
   ImGui::SameLine();
   ImGui::TextDisabled("%s", node->type().doc.c_str());
-  if (!app.inspector_error.empty()) ImGui::TextColored({1.0F, 0.4F, 0.35F, 1.0F}, "%s", app.inspector_error.c_str());
+  if (!app.inspector.error.empty()) ImGui::TextColored({1.0F, 0.4F, 0.35F, 1.0F}, "%s", app.inspector.error.c_str());
   if (app.run().mode() != RunMode::Edit) {
     ImGui::TextDisabled("The model as edited: the run takes edits at Reset.");
     // where a moving body is in the run now (world frame)
@@ -317,10 +317,10 @@ void nodeInspector(App& app, const std::string& path, nlohmann::json& report) {
     FieldValue next;
     const bool changed = fieldWidget(d, node->value(i), next);
     // a drag of one widget is one step: a new drag id when it becomes active
-    if (ImGui::IsItemActivated()) ++app.drag_id;
+    if (ImGui::IsItemActivated()) ++app.inspector.drag_id;
     if (changed) {
-      auto why = app.document().execute(std::make_unique<SetFieldCommand>(path, d.name, std::move(next), app.drag_id));
-      app.inspector_error = why;
+      auto why = app.document().execute(std::make_unique<SetFieldCommand>(path, d.name, std::move(next), app.inspector.drag_id));
+      app.inspector.error = why;
     }
     if (ImGui::IsItemDeactivated()) app.document().history().seal();
     ImGui::TableNextColumn();
@@ -388,10 +388,10 @@ void runState(App& app, const session::Session& session, const Selection& sel, n
     if (loc.line > 0) ImGui::TextDisabled("declared at %s", loc.str().c_str());
     report["tokens"] = tokens;
     ImGui::SetNextItemWidth(90);
-    ImGui::InputInt("##at_least", &app.break_tokens);
+    ImGui::InputInt("##at_least", &app.inspector.break_tokens);
     ImGui::SameLine();
     breakpointBox(app, "break when it holds at least this many tokens",
-                  session::Breakpoint::marking(sel.name, session::Compare::GreaterEqual, app.break_tokens), report);
+                  session::Breakpoint::marking(sel.name, session::Compare::GreaterEqual, app.inspector.break_tokens), report);
   } else if (sel.kind == SelectionKind::Transition) {
     const auto t = sim.net().findTransition(sel.name);
     if (!t) return;
@@ -424,7 +424,7 @@ void runState(App& app, const session::Session& session, const Selection& sel, n
 void drawInspector(App& app, const Rect& at, nlohmann::json& report) {
   beginPanel("##inspector", at, "Inspector");
   const auto sel = app.document().selection();
-  report = {{"kind", selectionKindName(sel.kind)}, {"error", app.inspector_error}};
+  report = {{"kind", selectionKindName(sel.kind)}, {"error", app.inspector.error}};
   switch (sel.kind) {
     case SelectionKind::None:
       ImGui::TextDisabled("Select a node in the tree or the world view, or a place or transition in the net view.");

@@ -110,18 +110,18 @@ Handles handlesOf(App& app, scene::Node& node, const OrbitCamera& view, ImVec2 a
   const double size = 0.16 * (view.eye() - pose.position).length();
   const core::Quat parent = node.world.rotation;
   const core::Vec3 forward = (view.target - view.eye()).normalized();
-  if (node.kind() == scene::NodeKind::Transform && (app.tool == Tool::Move || app.tool == Tool::Turn)) {
+  if (node.kind() == scene::NodeKind::Transform && (app.world.tool == Tool::Move || app.world.tool == Tool::Turn)) {
     handles.pivot = pose.position;
     for (int i = 0; i < 3; ++i) {
       core::Vec3 e{i == 0 ? 1.0 : 0.0, i == 1 ? 1.0 : 0.0, i == 2 ? 1.0 : 0.0};
-      const core::Vec3 axis = app.local_axes ? pose.rotation.rotate(e) : e;
+      const core::Vec3 axis = app.world.local_axes ? pose.rotation.rotate(e) : e;
       HandleShape s;
       s.colour = kAxisColours[static_cast<std::size_t>(i)];
       s.origin = pose.position;
       s.axis = axis;
       s.reference = perpendicular(axis);
       s.parent_axis = parent.conjugate().rotate(axis);
-      if (app.tool == Tool::Move) {
+      if (app.world.tool == Tool::Move) {
         s.handle = static_cast<Handle>(static_cast<int>(Handle::MoveX) + i);
         s.field = "translation";
         const auto a = screen(pose.position), b = screen(pose.position + axis * size);
@@ -172,7 +172,7 @@ Handles handlesOf(App& app, scene::Node& node, const OrbitCamera& view, ImVec2 a
     }
   }
   // a box: its outline, and a tab on each face and edge the view can drag (the box's own axes)
-  if (isBox(node) && app.tool == Tool::Scale) {
+  if (isBox(node) && app.world.tool == Tool::Scale) {
     const core::Vec3 half = boxSize(node).times(node.world_scale) * 0.5;
     const auto corner = [&](double x, double y, double z) { return pose.apply({x * half.x, y * half.y, z * half.z}); };
     handles.pivot = pose.position;
@@ -213,7 +213,7 @@ Handles handlesOf(App& app, scene::Node& node, const OrbitCamera& view, ImVec2 a
     }
   }
   // a spot light: the beam's axis ending in the aim handle, the cone's outline with its handle
-  if (node.kind() == scene::NodeKind::Light && app.tool == Tool::Aim &&
+  if (node.kind() == scene::NodeKind::Light && app.world.tool == Tool::Aim &&
       node.choice<scene::LightKind>(scene::field::Light::Kind) == scene::LightKind::Spot) {
     const core::Vec3 apex = node.world.apply(node.vec3(scene::field::Light::Location));
     const core::Vec3 axis = node.world.rotation.rotate(node.vec3(scene::field::Light::Direction)).normalized();
@@ -336,10 +336,10 @@ bool isSlider(const scene::Node& node) {
 
 bool drawManipulators(App& app, scene::Scene& scene, const OrbitCamera& view, ImVec2 at, float w, float h,
                       nlohmann::json& report) {
-  auto& drag = app.manipulating;
+  auto& drag = app.world.manipulating;
   const auto& sel = app.document().selection();
   scene::Node* node = sel.kind == SelectionKind::Node && app.run().mode() == RunMode::Edit ? scene.find(sel.name) : nullptr;
-  report["tool"] = toolName(app.tool);
+  report["tool"] = toolName(app.world.tool);
   if (node == nullptr) {
     drag = {};
     return false;
@@ -380,7 +380,7 @@ bool drawManipulators(App& app, scene::Scene& scene, const OrbitCamera& view, Im
       } else if (drag.handle != Handle::Aim && drag.handle != Handle::Cone) {
         drag.start = measure(drag.handle, ray, drag, slider).value_or(0.0);
       }
-      drag.id = ++app.drag_id;
+      drag.id = ++app.inspector.drag_id;
     }
   }
   bool took = drag.handle != Handle::None;
@@ -396,7 +396,7 @@ bool drawManipulators(App& app, scene::Scene& scene, const OrbitCamera& view, Im
         case Handle::MoveX:
         case Handle::MoveY:
         case Handle::MoveZ: {
-          const double d = app.snap ? snapTo(*now - drag.start, app.move_step) : *now - drag.start;
+          const double d = app.world.snap ? snapTo(*now - drag.start, app.world.move_step) : *now - drag.start;
           // the move along the axis goes in whole steps; the translation is in the parent's frame
           auto t = std::get<std::array<double, 3>>(drag.value);
           t[0] += drag.parent_axis.x * d;
@@ -409,18 +409,18 @@ bool drawManipulators(App& app, scene::Scene& scene, const OrbitCamera& view, Im
         case Handle::TurnY:
         case Handle::TurnZ: {
           double d = std::remainder(*now - drag.start, 360.0);
-          if (app.snap) d = snapTo(d, app.turn_step);
+          if (app.world.snap) d = snapTo(d, app.world.turn_step);
           value = turned(std::get<std::array<double, 4>>(drag.value), drag.parent_axis, d);
           break;
         }
         case Handle::Lo1:
-        case Handle::Hi1: value = app.snap ? snapTo(*now, slider ? app.move_step : app.turn_step) : *now; break;
+        case Handle::Hi1: value = app.world.snap ? snapTo(*now, slider ? app.world.move_step : app.world.turn_step) : *now; break;
         case Handle::Scale: {
           // the move since the press, along the box's own axes
           if (const auto p = tabPoint(ray, drag)) {
             const core::Vec3 moved_by = drag.frame.conjugate().rotate(*p - drag.point);
             value = scaledSize(std::get<std::array<double, 3>>(drag.value), drag.tab, moved_by, drag.scale,
-                               app.snap ? app.move_step : 0.0);
+                               app.world.snap ? app.world.move_step : 0.0);
           }
           break;
         }
@@ -433,14 +433,14 @@ bool drawManipulators(App& app, scene::Scene& scene, const OrbitCamera& view, Im
                                                      : aimAt(ray, drag.origin, drag.point, drag.axis);
           if (toward) {
             core::Vec3 d = drag.frame.conjugate().rotate(*toward);
-            d = app.snap ? snapDirection(d, app.turn_step) : d.normalized();
+            d = app.world.snap ? snapDirection(d, app.world.turn_step) : d.normalized();
             value = std::array<double, 3>{d.x, d.y, d.z};
           }
           break;
         }
         case Handle::Cone: {
           if (const auto angle = moved ? coneAngle(ray, drag.origin, drag.axis, drag.reference) : std::nullopt) {
-            value = std::clamp(app.snap ? snapTo(*angle, app.turn_step) : *angle, 0.0, 90.0);
+            value = std::clamp(app.world.snap ? snapTo(*angle, app.world.turn_step) : *angle, 0.0, 90.0);
           }
           break;
         }
@@ -448,7 +448,7 @@ bool drawManipulators(App& app, scene::Scene& scene, const OrbitCamera& view, Im
       }
       if (value && *value != node->value(static_cast<std::size_t>(node->type().fieldIndex(drag.field)))) {
         const auto why = app.document().execute(std::make_unique<SetFieldCommand>(drag.path, drag.field, *value, drag.id));
-        app.inspector_error = why;
+        app.inspector.error = why;
         if (!why.empty()) app.message = why;
       }
     }

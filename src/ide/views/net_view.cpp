@@ -180,7 +180,7 @@ std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const R
       ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f).y == 0.0f) {
     if (under) app.document().select(selectionOf(s, *under));
     else app.document().select({});
-    if (under && under->kind == diagram::ItemKind::Transition) app.fire_target = qualified(s, *under);
+    if (under && under->kind == diagram::ItemKind::Transition) app.toolbar.fire_target = qualified(s, *under);
   }
   // the run's marking, when there is a run of this model: the page's constructs found in its
   // net once, their state read again only after a step or a start (not for a pan or a zoom)
@@ -330,14 +330,14 @@ bool editGestures(App& app, NetViewState& s, const Region& r, const diagram::Vie
   // a drag on a construct moves it
   if (r.activated && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && node && s.arc_from.empty()) {
     s.moving = localName(s, *under);
-    ++app.drag_id;
+    ++app.inspector.drag_id;
   }
   if (!r.active) s.moving.clear();
   const bool moving = !s.moving.empty() && ImGui::IsMouseDragging(ImGuiMouseButton_Left);
   if (moving) {
     auto e = makeNetEdit(NetEditKind::Move, editedPage(s), s.moving);
     e.at = editorAt(mouse);
-    e.drag = app.drag_id;
+    e.drag = app.inspector.drag_id;
     if (s.layout.from_graphviz) {
       for (const auto& p : s.layout.places) e.pins.emplace_back(p.name, editorAt(p.centre));
       for (const auto& t : s.layout.transitions) e.pins.emplace_back(t.name, editorAt(t.centre));
@@ -469,15 +469,15 @@ void drawNetView(App& app, const Rect& at, nlohmann::json& report) {
 }
 
 void drawMiniView(App& app, const Rect& world, nlohmann::json& report) {
-  report = {{"shown", app.show_mini}};
-  if (!app.show_mini) return;
+  report = {{"shown", app.world.show_mini}};
+  if (!app.world.show_mini) return;
   NetViewState& s = app.netView();
   ensureLayout(app, s);
   const float w = std::max(160.0f, world.w * 0.45f), h = std::max(90.0f, world.h * 0.32f);
   ImGui::SetNextWindowPos({world.x + world.w - w - 8, world.y + world.h - h - 8}, ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize({w, h}, ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.92f);
-  const bool open = ImGui::Begin("Mini view", &app.show_mini,
+  const bool open = ImGui::Begin("Mini view", &app.world.show_mini,
                                  ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
                                      ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoFocusOnAppearing);
   if (open && s.error.empty()) {

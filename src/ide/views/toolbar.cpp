@@ -50,13 +50,13 @@ void drawToolbar(App& app, const Rect& at, nlohmann::json& report, nlohmann::jso
   // run at a speed, pause, step, run N steps
   static constexpr RunSpeed kSpeeds[] = {RunSpeed::RealTime, RunSpeed::Faster, RunSpeed::Fastest};
   static constexpr ActionId kRunAt[] = {ActionId::Run, ActionId::Faster, ActionId::Fastest};
-  int speed = static_cast<int>(std::find(std::begin(kSpeeds), std::end(kSpeeds), app.speed) - std::begin(kSpeeds));
+  int speed = static_cast<int>(std::find(std::begin(kSpeeds), std::end(kSpeeds), app.toolbar.speed) - std::begin(kSpeeds));
   actionButton(app, kRunAt[speed], buttons, running ? "Running" : "Run", {70, 0});
   ImGui::SameLine();
   ImGui::SetNextItemWidth(130);
   if (!ready) ImGui::BeginDisabled();
   if (ImGui::Combo("##speed", &speed, "real time\0faster (x8)\0as fast as possible\0")) {
-    app.speed = kSpeeds[speed];
+    app.toolbar.speed = kSpeeds[speed];
     if (running) (void)performAction(app, kRunAt[speed]);
   }
   if (!ready) ImGui::EndDisabled();
@@ -68,17 +68,17 @@ void drawToolbar(App& app, const Rect& at, nlohmann::json& report, nlohmann::jso
   actionButton(app, ActionId::RunN, buttons, "Run N");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(64);
-  ImGui::InputInt("##n", &app.run_n, 0, 0);
-  app.run_n = std::clamp(app.run_n, 1, 10'000'000);
+  ImGui::InputInt("##n", &app.toolbar.run_n, 0, 0);
+  app.toolbar.run_n = std::clamp(app.toolbar.run_n, 1, 10'000'000);
 
   // fire a transition chosen from the net's (the net view picks it later)
   ImGui::SameLine(0, 18);
   const auto names = run.transitions();
   ImGui::SetNextItemWidth(170);
-  if (ImGui::BeginCombo("##fire", app.fire_target.empty() ? "(transition)" : app.fire_target.c_str())) {
+  if (ImGui::BeginCombo("##fire", app.toolbar.fire_target.empty() ? "(transition)" : app.toolbar.fire_target.c_str())) {
     for (const auto& n : names) {
-      if (ImGui::Selectable(n.c_str(), n == app.fire_target)) {
-        app.fire_target = n;
+      if (ImGui::Selectable(n.c_str(), n == app.toolbar.fire_target)) {
+        app.toolbar.fire_target = n;
         app.document().select({SelectionKind::Transition, n});
       }
     }
@@ -107,10 +107,10 @@ void drawToolbar(App& app, const Rect& at, nlohmann::json& report, nlohmann::jso
 
   const auto& history = app.document().history();
   report = {{"ready", ready},
-            {"speed", runSpeedName(app.speed)},
-            {"fire_target", app.fire_target},
+            {"speed", runSpeedName(app.toolbar.speed)},
+            {"fire_target", app.toolbar.fire_target},
             {"transitions", names.size()},
-            {"run_n", app.run_n},
+            {"run_n", app.toolbar.run_n},
             {"can_undo", history.canUndo()},
             {"can_redo", history.canRedo()},
             {"filming", app.movie != nullptr},

@@ -73,7 +73,7 @@ void importMenu(TreeState& st) {
   if (!beginMenu("Import meshes", st.menu)) return;
   ImGui::TextDisabled("Mesh files (obj, stl, 3ds, gltf, dae, ply, wrl, iv), ';' between them:");
   ImGui::SetNextItemWidth(360);
-  const bool entered = ImGui::InputText("##files", &st.app.import_files, ImGuiInputTextFlags_EnterReturnsTrue);
+  const bool entered = ImGui::InputText("##files", &st.app.tree.import_files, ImGuiInputTextFlags_EnterReturnsTrue);
   noteItem("files", st.menu);
   if (menuItem("Import", st.menu) || entered) {
     st.import = true;  // once the tree is drawn
@@ -106,12 +106,12 @@ void nodeMenu(TreeState& st, const scene::Scene& s, const scene::Node& node, con
     ImGui::SetNextItemWidth(160);
     // the name field takes the keyboard with its text selected: typing replaces it
     if (ImGui::IsWindowAppearing()) {
-      app.tree_rename = node.name();
+      app.tree.rename = node.name();
       ImGui::SetKeyboardFocusHere();
     }
-    if (ImGui::InputText("name", &app.tree_rename, ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll) &&
-        app.tree_rename != node.name()) {
-      st.request = SceneEdit{SceneEditKind::Rename, path, {}, app.tree_rename, false, {}};
+    if (ImGui::InputText("name", &app.tree.rename, ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll) &&
+        app.tree.rename != node.name()) {
+      st.request = SceneEdit{SceneEditKind::Rename, path, {}, app.tree.rename, false, {}};
       ImGui::CloseCurrentPopup();
     }
     if (node.type().has_children) {
@@ -154,7 +154,7 @@ void drawNode(TreeState& st, scene::Node& node) {
   if (leaf) flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
   if (path == st.selected) flags |= ImGuiTreeNodeFlags_Selected;
   // open the parents of a selection made elsewhere
-  if (st.app.reveal_selection && !st.selected.empty() && st.selected.starts_with(path + "/")) {
+  if (st.app.tree.reveal && !st.selected.empty() && st.selected.starts_with(path + "/")) {
     ImGui::SetNextItemOpen(true);
   }
   const auto label = node.type().name + (node.name().empty() ? std::string() : "  " + node.name()) +
@@ -178,7 +178,7 @@ void drawNode(TreeState& st, scene::Node& node) {
   if (const auto* s = st.app.shownScene()) nodeMenu(st, *s, node, path);
   if (st.shown < 200) noteItem(path, st.rows);
   ++st.shown;
-  if (path == st.selected && st.app.reveal_selection) ImGui::SetScrollHereY();
+  if (path == st.selected && st.app.tree.reveal) ImGui::SetScrollHereY();
   // selected when the button comes up without a drag (a drag carries the node elsewhere)
   if (ImGui::IsItemHovered() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
       ImGui::GetMouseDragDelta(ImGuiMouseButton_Left).x == 0.0F && ImGui::GetMouseDragDelta(ImGuiMouseButton_Left).y == 0.0F) {
@@ -260,7 +260,7 @@ void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
                                                                 : ImGui::GetStyleColorVec4(ImGuiCol_Text));
       if (ImGui::Selectable(label.c_str(), is_sel)) {
         app.document().select({SelectionKind::Transition, name});
-        app.fire_target = name;
+        app.toolbar.fire_target = name;
       }
       ImGui::PopStyleColor();
       ++transitions;
@@ -268,9 +268,9 @@ void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
   }
   ImGui::EndChild();
   endPanel();
-  app.reveal_selection = false;
+  app.tree.reveal = false;
   // the edit a menu asked for, now that nothing iterates the tree
-  if (st.import) app.importMeshes(app.import_files);
+  if (st.import) app.importMeshes(app.tree.import_files);
   if (st.request) {
     auto command = std::make_unique<SceneEditCommand>(*st.request);
     const auto* edit = command.get();  // kept on the undo stack when it succeeds
@@ -281,7 +281,7 @@ void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
     // the node added, copied or renamed is selected, and the tree opens to it
     if (why.empty() && !made.empty()) {
       app.document().select(Selection::node(made));
-      app.reveal_selection = true;
+      app.tree.reveal = true;
     }
   }
   report = {{"nodes_shown", st.shown},

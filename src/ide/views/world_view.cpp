@@ -64,8 +64,8 @@ void drawViewBar(App& app, scene::Scene* s) {
     for (auto v : {StandardView::Front, StandardView::Back, StandardView::Left, StandardView::Right, StandardView::Top,
                    StandardView::Iso}) {
       if (ImGui::Selectable(standardViewName(v))) {
-        app.orbit.look(v);
-        app.camera_node.clear();
+        app.world.orbit.look(v);
+        app.world.camera_node.clear();
       }
     }
     ImGui::EndCombo();
@@ -73,13 +73,13 @@ void drawViewBar(App& app, scene::Scene* s) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Standard views");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(130);
-  if (ImGui::BeginCombo("##camera", app.camera_node.empty() ? "free camera" : app.camera_node.c_str())) {
-    if (ImGui::Selectable("free camera", app.camera_node.empty())) app.camera_node.clear();
+  if (ImGui::BeginCombo("##camera", app.world.camera_node.empty() ? "free camera" : app.world.camera_node.c_str())) {
+    if (ImGui::Selectable("free camera", app.world.camera_node.empty())) app.world.camera_node.clear();
     if (s != nullptr) {
       scene::traverse(s->root(), [&](scene::Node& n, const scene::TraversalState&) {
         if (n.kind() != scene::NodeKind::Camera) return;
         const auto path = n.path();
-        if (ImGui::Selectable(path.c_str(), path == app.camera_node)) app.camera_node = path;
+        if (ImGui::Selectable(path.c_str(), path == app.world.camera_node)) app.world.camera_node = path;
       }, {}, scene::Templates::Skip);
     }
     ImGui::EndCombo();
@@ -88,19 +88,19 @@ void drawViewBar(App& app, scene::Scene* s) {
   ImGui::SameLine();
   ImGui::SetNextItemWidth(80);
   const char* tools[] = {"select", "move", "turn", "scale", "aim"};
-  if (ImGui::BeginCombo("##tool", tools[static_cast<int>(app.tool)], ImGuiComboFlags_HeightLarge)) {
+  if (ImGui::BeginCombo("##tool", tools[static_cast<int>(app.world.tool)], ImGuiComboFlags_HeightLarge)) {
     for (int i = 0; i < 5; ++i) {
-      if (ImGui::Selectable(tools[i], static_cast<int>(app.tool) == i)) app.tool = static_cast<Tool>(i);
+      if (ImGui::Selectable(tools[i], static_cast<int>(app.world.tool) == i)) app.world.tool = static_cast<Tool>(i);
     }
     ImGui::Separator();
-    ImGui::Checkbox("snap", &app.snap);
+    ImGui::Checkbox("snap", &app.world.snap);
     ImGui::SetNextItemWidth(70);
-    ImGui::InputDouble("m a step", &app.move_step, 0, 0, "%g");
+    ImGui::InputDouble("m a step", &app.world.move_step, 0, 0, "%g");
     ImGui::SetNextItemWidth(70);
-    ImGui::InputDouble("degrees a step", &app.turn_step, 0, 0, "%g");
-    app.move_step = std::clamp(app.move_step, 1e-6, 1e6);
-    app.turn_step = std::clamp(app.turn_step, 1e-6, 360.0);
-    ImGui::Checkbox("the node's own axes", &app.local_axes);
+    ImGui::InputDouble("degrees a step", &app.world.turn_step, 0, 0, "%g");
+    app.world.move_step = std::clamp(app.world.move_step, 1e-6, 1e6);
+    app.world.turn_step = std::clamp(app.world.turn_step, 1e-6, 360.0);
+    ImGui::Checkbox("the node's own axes", &app.world.local_axes);
     ImGui::EndCombo();
   }
   if (ImGui::IsItemHovered()) {
@@ -112,13 +112,13 @@ void drawViewBar(App& app, scene::Scene* s) {
   ImGui::SameLine();
   ImGui::SetNextItemWidth(70);
   if (ImGui::BeginCombo("##show", "show", ImGuiComboFlags_HeightLarge)) {
-    ImGui::Checkbox("sensor volumes", &app.show_sensors);
-    ImGui::Checkbox("joint axes", &app.show_joints);
-    ImGui::Checkbox("contacts", &app.show_contacts);
-    ImGui::Checkbox("shadows", &app.show_shadows);
+    ImGui::Checkbox("sensor volumes", &app.world.show_sensors);
+    ImGui::Checkbox("joint axes", &app.world.show_joints);
+    ImGui::Checkbox("contacts", &app.world.show_contacts);
+    ImGui::Checkbox("shadows", &app.world.show_shadows);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Off makes each frame about a third cheaper on a software renderer");
-    ImGui::Checkbox("ground grid", &app.show_grid);
-    ImGui::Checkbox("mini view", &app.show_mini);
+    ImGui::Checkbox("ground grid", &app.world.show_grid);
+    ImGui::Checkbox("mini view", &app.world.show_mini);
     ImGui::EndCombo();
   }
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Overlays: sensors, joints, contacts; shadows, grid; the mini view");
@@ -126,8 +126,8 @@ void drawViewBar(App& app, scene::Scene* s) {
 
 /// The App::show_* switches as bits, for WorldKey.
 unsigned shownBits(const App& app) {
-  return (app.show_sensors ? 1U : 0U) | (app.show_joints ? 2U : 0U) | (app.show_contacts ? 4U : 0U) |
-         (app.show_shadows ? 8U : 0U) | (app.show_grid ? 16U : 0U);
+  return (app.world.show_sensors ? 1U : 0U) | (app.world.show_joints ? 2U : 0U) | (app.world.show_contacts ? 4U : 0U) |
+         (app.world.show_shadows ? 8U : 0U) | (app.world.show_grid ? 16U : 0U);
 }
 
 }  // namespace
@@ -140,8 +140,8 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
   const int w = std::max(16, static_cast<int>(size.x));
   const int h = std::max(16, static_cast<int>(size.y));
   const auto origin = ImGui::GetCursorScreenPos();
-  report = {{"size", {w, h}}, {"camera", app.camera_node.empty() ? "free" : app.camera_node}, {"origin", {origin.x, origin.y}}};
-  if (s == nullptr || !app.renderer) {
+  report = {{"size", {w, h}}, {"camera", app.world.camera_node.empty() ? "free" : app.world.camera_node}, {"origin", {origin.x, origin.y}}};
+  if (s == nullptr || !app.world.renderer) {
     ImGui::TextDisabled("(nothing to draw)");
     endPanel();
     return;
@@ -149,9 +149,9 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
   if (app.run().mode() == RunMode::Edit) scene::updateTransforms(s->root());
 
   // the camera: a Camera node of the scene, or the orbit camera the mouse moves
-  render::Camera camera = app.orbit.camera();
-  if (!app.camera_node.empty()) {
-    const auto* node = s->find(app.camera_node);
+  render::Camera camera = app.world.orbit.camera();
+  if (!app.world.camera_node.empty()) {
+    const auto* node = s->find(app.world.camera_node);
     if (node != nullptr && node->kind() == scene::NodeKind::Camera) camera = render::cameraOf(*node, app.run().time());
   }
 
@@ -163,31 +163,31 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
   render::DrawOptions options;
   options.width = rw;
   options.height = rh;
-  options.sensors = app.show_sensors;
-  options.shadows = app.show_shadows;
-  options.joints = app.show_joints;
-  options.grid = app.show_grid;
+  options.sensors = app.world.show_sensors;
+  options.shadows = app.world.show_shadows;
+  options.joints = app.world.show_joints;
+  options.grid = app.world.show_grid;
   options.selection = highlighted(app, *s);
   // contact points are recorded by the run's physics only while they are shown
   physics::World* physics = app.run().session() != nullptr && app.run().mode() != RunMode::Edit
                                 ? app.run().session()->simulation().physics()
                                 : nullptr;
   if (physics != nullptr) {
-    physics->recordContacts(app.show_contacts);
+    physics->recordContacts(app.world.show_contacts);
     for (const auto& c : physics->contacts()) options.contacts.push_back({c.position, c.normal});
   }
   // draw only when something seen changed: the run, the model, the camera, the selection
   WorldKey seen{app.run().steps(), app.run().mode(), app.document().sceneRevision(), camera.eye, camera.target,
                 camera.fov, options.selection, rw, rh, shownBits(app), app.run().session()};
-  if (!(seen == app.world_key) || app.world_stats.draw_calls == 0) {
+  if (!(seen == app.world.key) || app.world.stats.draw_calls == 0) {
     // four samples a pixel against jagged edges; none in a lowered picture, already soft
-    app.world_texture->begin(rw, rh, scale < 1 ? 1 : 4);
-    app.world_stats = app.renderer->draw(*s, camera, options);
-    app.world_texture->end();
-    app.world_key = std::move(seen);
+    app.world.texture->begin(rw, rh, scale < 1 ? 1 : 4);
+    app.world.stats = app.world.renderer->draw(*s, camera, options);
+    app.world.texture->end();
+    app.world.key = std::move(seen);
   }
-  const auto& stats = app.world_stats;
-  ImGui::Image(reinterpret_cast<ImTextureID>(app.world_texture->texture()), {static_cast<float>(w), static_cast<float>(h)},
+  const auto& stats = app.world.stats;
+  ImGui::Image(reinterpret_cast<ImTextureID>(app.world.texture->texture()), {static_cast<float>(w), static_cast<float>(h)},
                {0, 1}, {1, 0});
   ImGui::SetCursorScreenPos(origin);
   ImGui::InvisibleButton("##world_input", {static_cast<float>(w), static_cast<float>(h)},
@@ -198,9 +198,9 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
   auto& io = ImGui::GetIO();
   const auto take_camera = [&] {
     // moving the view leaves a scene camera for the orbit camera at the same place
-    if (!app.camera_node.empty()) {
-      app.orbit = OrbitCamera::from(camera);
-      app.camera_node.clear();
+    if (!app.world.camera_node.empty()) {
+      app.world.orbit = OrbitCamera::from(camera);
+      app.world.camera_node.clear();
     }
   };
 
@@ -212,15 +212,15 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
   if (active && !manipulating && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
     if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
       take_camera();
-      app.orbit.orbit(static_cast<double>(io.MouseDelta.x), static_cast<double>(io.MouseDelta.y));
+      app.world.orbit.orbit(static_cast<double>(io.MouseDelta.x), static_cast<double>(io.MouseDelta.y));
     } else if (ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle)) {
       take_camera();
-      app.orbit.pan(static_cast<double>(io.MouseDelta.x), static_cast<double>(io.MouseDelta.y), h);
+      app.world.orbit.pan(static_cast<double>(io.MouseDelta.x), static_cast<double>(io.MouseDelta.y), h);
     }
   }
   if (hovered && io.MouseWheel != 0) {
     take_camera();
-    app.orbit.zoom(static_cast<double>(io.MouseWheel));
+    app.world.orbit.zoom(static_cast<double>(io.MouseWheel));
   }
 
   // a click (no drag) picks a shape and tells the mouse sensors
@@ -243,8 +243,8 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
   }
 
   // keys typed over the world view go to the keyboard sensors, with where the viewer is
-  auto& was_down = app.key_was_down;
-  auto& last_eye = app.last_eye;
+  auto& was_down = app.world.key_was_down;
+  auto& last_eye = app.world.last_eye;
   if (hovered && (camera.eye - last_eye).length() > 1e-9) {
     sensors::InputEvent view;
     view.t = app.run().time();
@@ -262,7 +262,7 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
       key.key = name;
       key.down = down;
       app.run().push(key);
-      if (down) app.pressed_keys.push_back(name);
+      if (down) app.world.pressed_keys.push_back(name);
     }
     was_down[static_cast<std::size_t>(code)] = down;
   }
@@ -274,12 +274,12 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
   report["triangles"] = stats.triangles;
   report["highlighted"] = !options.selection.empty();
   report["highlighted_nodes"] = options.selection.size();
-  report["keys"] = app.pressed_keys;
-  report["sensors"] = app.show_sensors;
-  report["joints"] = app.show_joints;
+  report["keys"] = app.world.pressed_keys;
+  report["sensors"] = app.world.show_sensors;
+  report["joints"] = app.world.show_joints;
   report["contacts"] = options.contacts.size();
-  report["shadows"] = app.show_shadows;
-  report["grid"] = app.show_grid;
+  report["shadows"] = app.world.show_shadows;
+  report["grid"] = app.world.show_grid;
   report["scale"] = scale;
 }
 
