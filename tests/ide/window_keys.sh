@@ -77,4 +77,9 @@ if [ "$before" = "$after" ]; then
   exit 1
 fi
 "$gdpn" check "$model" >/dev/null || { echo "the saved model does not check"; cat "$model"; exit 1; }
+if grep -qE -- '-0([],]|$)' "$model"; then  # a place snapped to 0 was once written as -0
+  echo "the saved model holds a negative zero:"
+  grep -nE -- '-0([],]|$)' "$model"
+  exit 1
+fi
 echo "ok: Ctrl+S saved $(grep "^ *$place:" "$model" | sed 's/^ *//')"

@@ -280,9 +280,10 @@ std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const R
   return under;
 }
 
-/// A layout point in editor units (`at:`), on a grid of a quarter unit.
+/// A layout point in editor units (`at:`), on a grid of a quarter unit (never -0: the file
+/// would say `at: [0.75, -0]`).
 net::EditorPos editorAt(diagram::Point p) {
-  const auto snap = [](double v) { return std::round(v / diagram::kEditorUnit * 4.0) / 4.0; };
+  const auto snap = [](double v) { return std::round(v / diagram::kEditorUnit * 4.0) / 4.0 + 0.0; };
   return {snap(p.x), snap(p.y)};
 }
 
