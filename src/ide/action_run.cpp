@@ -5,6 +5,9 @@
 
 #include <imgui.h>
 
+#include <optional>
+#include <vector>
+
 #include "app.h"
 #include "detail/keys.h"
 
@@ -191,18 +194,28 @@ std::string performAction(App& app, ActionId id) {
 }
 
 void handleShortcuts(App& app) {
+  // each action's key taken apart once: (action, shortcut, GLFW code)
+  struct Key {
+    const ActionInfo* action;
+    Shortcut shortcut;
+    int code;
+  };
+  static const std::vector<Key> keys = [] {
+    std::vector<Key> out;
+    for (const auto& a : actionInfos()) {
+      const auto shortcut = a.keys.empty() ? std::nullopt : parseShortcut(a.keys);
+      if (shortcut && keyCode(shortcut->key) >= 0) out.push_back({&a, *shortcut, keyCode(shortcut->key)});
+    }
+    return out;
+  }();
   const auto& io = ImGui::GetIO();
-  for (const auto& a : actionInfos()) {
-    if (a.keys.empty()) continue;
-    const auto shortcut = parseShortcut(a.keys);
-    if (!shortcut) continue;  // tests/ide/actions_test.cpp reads every one
-    const int code = keyCode(shortcut->key);
-    if (code < 0 || !ImGui::IsKeyPressed(code, false)) continue;
-    if (io.KeyCtrl != shortcut->ctrl || io.KeyShift != shortcut->shift || io.KeyAlt != shortcut->alt) continue;
-    // a field being typed in keeps its editing keys (and every key without Ctrl)
-    const bool function_key = shortcut->key.size() > 1 && shortcut->key[0] == 'f' && shortcut->key[1] >= '0' && shortcut->key[1] <= '9';
-    if (io.WantTextInput && (a.text_first || !shortcut->ctrl) && !function_key) continue;
-    if (actionEnabled(app, a.id)) (void)performAction(app, a.id);
+  for (const auto& [a, shortcut, code] : keys) {
+    if (!ImGui::IsKeyPressed(code, false)) continue;
+    if (io.KeyCtrl != shortcut.ctrl || io.KeyShift != shortcut.shift || io.KeyAlt != shortcut.alt) continue;
+    // a field being typed in keeps its editing keys (and every key without Ctrl but F1..F12)
+    const bool function_key = shortcut.key.size() > 1 && shortcut.key[0] == 'f' && shortcut.key[1] >= '0' && shortcut.key[1] <= '9';
+    if (io.WantTextInput && (a->text_first || !shortcut.ctrl) && !function_key) continue;
+    if (actionEnabled(app, a->id)) (void)performAction(app, a->id);
   }
 }
 

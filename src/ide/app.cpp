@@ -505,7 +505,8 @@ void App::openGuide() {
   for (const auto& c : candidates) {
     if (!std::filesystem::exists(c, ec)) continue;
     message = "the guide: " + c.string();
-    if (std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr) {
+    const bool quotable = c.string().find('\'') == std::string::npos;  // the shell line quotes it
+    if (quotable && (std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr)) {
       const std::string command = "xdg-open '" + c.string() + "' >/dev/null 2>&1 &";
       if (std::system(command.c_str()) != 0) message += " (xdg-open could not show it)";
     }
