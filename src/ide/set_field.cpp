@@ -25,7 +25,7 @@ std::string SetFieldCommand::apply(Document& doc) {
   node->setValue(static_cast<std::size_t>(i), value_);
   // a value set by hand no longer comes from the parameter the field named
   old_params_ = node->params;
-  std::erase_if(node->params, [i](const auto& p) { return p.first == static_cast<std::uint32_t>(i); });
+  std::erase_if(node->params, [i](const auto& p) { return p.field == static_cast<std::uint32_t>(i); });
   return {};
 }
 

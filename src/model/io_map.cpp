@@ -10,6 +10,7 @@
 #include "gdpn/core/text.h"
 #include "gdpn/model/io.h"
 #include "gdpn/model/simulation.h"
+#include "gdpn/model/part_run.h"
 #include "probe.h"
 
 namespace gdpn::model {
@@ -22,6 +23,7 @@ struct IoMap::Bound {
   scene::FieldKind kind = scene::FieldKind::Float;
   net::PlaceSlotId slot{0};         // written place: its control slot
   bool coil = false;                 // a place's coil: the state last written
+  std::size_t part = 0;              // a part's I/O: the part (PartRun's index)
   std::string writer;                // the client that wrote it last
   double written = std::numeric_limits<double>::quiet_NaN();  // the value written last (NaN: none yet)
   [[nodiscard]] int width() const {
@@ -71,6 +73,35 @@ std::unique_ptr<IoMap> IoMap::create(Simulation& sim, const IoSpec& spec, core::
     b.spec = e;
     std::string why;
     std::optional<Probe> probe;
+    if (e.source == IoEntry::Source::Part) {
+      constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+      std::size_t part = kNone;
+      if (!sim.parts()) why = "no part '" + e.target + "' (the model has none)";
+      else part = sim.parts()->find(e.target, why).value_or(kNone);
+      if (part == kNone) {
+        fail(why);
+        continue;
+      }
+      const PartIoSpec* io = sim.parts()->instances()[part].spec->findIo(e.io);
+      if (!io) {
+        (void)sim.parts()->read(part, e.io, why);
+        fail(why);
+        continue;
+      }
+      const bool written = e.table == IoTable::Coils || e.table == IoTable::HoldingRegisters;
+      const bool bit = isBit(e.table);
+      if (written != (io->direction == IoDirection::Output) || bit != (io->signal == IoSignal::Digital)) {
+        const char* table = io->direction == IoDirection::Input
+                                ? (io->signal == IoSignal::Digital ? "discrete_inputs" : "input_registers")
+                                : (io->signal == IoSignal::Digital ? "coils" : "holding_registers");
+        fail("'" + e.io + "' is a " + ioSignalName(io->signal) + " " + ioDirectionName(io->direction) + ": map it in " +
+             table);
+        continue;
+      }
+      b.part = part;
+      map->bound_.push_back(std::move(b));
+      continue;
+    }
     if (e.source == IoEntry::Source::Place) {
       probe = placeProbe(sim, e.target, why);
       if (probe && (e.table == IoTable::Coils || e.table == IoTable::HoldingRegisters)) {
@@ -163,6 +194,10 @@ bool IoMap::mapped(IoTable table, std::uint32_t first, std::uint32_t count) cons
 
 double IoMap::value(const Bound& b) const {
   if (b.spec.table == IoTable::Coils && b.spec.source == IoEntry::Source::Place) return b.coil ? 1.0 : 0.0;
+  if (b.spec.source == IoEntry::Source::Part) {
+    std::string why;
+    return sim_.parts()->read(b.part, b.spec.io, why).value_or(0.0);
+  }
   double v = 0.0;
   if (!readProbe(sim_, b.probe, &v)) return 0.0;  // its node was deleted
   if (b.spec.table == IoTable::Coils && b.kind != scene::FieldKind::Bool) return v == b.spec.on ? 1.0 : 0.0;
@@ -217,7 +252,10 @@ IoError IoMap::writeBits(std::uint16_t first, const std::vector<bool>& bits, con
     Bound& b = *find(IoTable::Coils, first + static_cast<std::uint32_t>(k));
     const bool on = bits[k];
     b.writer = client;
-    if (b.spec.source == IoEntry::Source::Place) {
+    if (b.spec.source == IoEntry::Source::Part) {
+      std::string why;
+      (void)sim_.parts()->write(b.part, b.spec.io, on ? 1.0 : 0.0, why);
+    } else if (b.spec.source == IoEntry::Source::Place) {
       // a rising edge puts one token on the place (none when its capacity is full)
       if (on && !b.coil) (void)sim_.kernel().setMarking(b.slot, sim_.kernel().marking(b.slot) + 1);
       b.coil = on;
@@ -262,7 +300,9 @@ IoError IoMap::writeWords(std::uint16_t first, const std::vector<std::uint16_t>&
     }
     const double v = raw / b->spec.scale;
     if (!std::isfinite(v)) return IoError::IllegalValue;
-    if (b->spec.source == IoEntry::Source::Place) {
+    if (b->spec.source == IoEntry::Source::Part) {
+      // checked as it is written
+    } else if (b->spec.source == IoEntry::Source::Place) {
       if (v < 0 || std::floor(v) != v || v > 9.0e15) return IoError::IllegalValue;  // whole, 0 to 2^53
     } else if (const scene::Node* node = sim_.plant()->resolve(b->node)) {
       if (b->kind == scene::FieldKind::Int && std::abs(v) > 9.0e15) return IoError::IllegalValue;
@@ -276,7 +316,10 @@ IoError IoMap::writeWords(std::uint16_t first, const std::vector<std::uint16_t>&
   for (const auto& w : writes) {
     Bound& b = *w.b;
     b.writer = client;
-    if (b.spec.source == IoEntry::Source::Place) {
+    if (b.spec.source == IoEntry::Source::Part) {
+      std::string why;
+      if (!sim_.parts()->write(b.part, b.spec.io, w.value, why)) return IoError::IllegalValue;
+    } else if (b.spec.source == IoEntry::Source::Place) {
       if (!sim_.kernel().setMarking(b.slot, static_cast<std::int64_t>(w.value)).empty()) return IoError::IllegalValue;
     } else if (scene::Node* node = sim_.plant()->resolve(b.node)) {
       if (!physics::assignField(*node, b.field, fieldValue(b.kind, w.value), sim_.model().settings.angles, sim_.physics())
@@ -298,6 +341,7 @@ std::vector<IoMap::Row> IoMap::rows() const {
     r.address = b.spec.address;
     const IoEntry& e = b.spec;
     r.what = e.target;
+    if (!e.io.empty()) r.what += "." + e.io;
     if (!e.quantity.empty()) r.what += "." + e.quantity;
     if (!e.field.empty()) r.what += "." + e.field;
     if (!e.key.empty()) r.what += " key " + e.key;

@@ -86,10 +86,14 @@ std::optional<IoEntry> readEntry(YamlReader& r, IoTable table, std::uint16_t add
       ok = false;
       continue;
     }
-    if (k.key == "place" || k.key == "node") {
+    if (k.key == "place" || k.key == "node" || k.key == "part") {
       ++sources;
-      out.source = k.key == "place" ? IoEntry::Source::Place : IoEntry::Source::Node;
+      out.source = k.key == "place"  ? IoEntry::Source::Place
+                   : k.key == "node" ? IoEntry::Source::Node
+                                     : IoEntry::Source::Part;
       out.target = *text;
+    } else if (k.key == "io") {
+      out.io = *text;
     } else if (k.key == "of") {
       out.quantity = *text;
     } else if (k.key == "field") {
@@ -111,9 +115,21 @@ std::optional<IoEntry> readEntry(YamlReader& r, IoTable table, std::uint16_t add
   }
   if (!ok) return std::nullopt;
   if (sources != 1) {
-    r.error(e.loc, name + (sources == 0 ? " maps nothing: give it a 'place' or a 'node'"
-                                        : " maps both a place and a node: keep one"));
+    r.error(e.loc, name + (sources == 0 ? " maps nothing: give it a 'place', a 'node' or a 'part'"
+                                        : " maps more than one of 'place', 'node' and 'part': keep one"));
     return std::nullopt;
+  }
+  if ((out.source == IoEntry::Source::Part) != !out.io.empty()) {
+    r.error(e.loc, name + (out.io.empty() ? ": a 'part' needs 'io', the name of its input or output"
+                                          : ": 'io' goes with 'part'"));
+    return std::nullopt;
+  }
+  if (out.source == IoEntry::Source::Part) {
+    if (!out.quantity.empty() || !out.field.empty() || !out.key.empty()) {
+      r.error(e.loc, name + ": 'of', 'field' and 'key' go with 'node'; a part's I/O says what it reads or sets");
+      return std::nullopt;
+    }
+    return out;
   }
   if (out.source == IoEntry::Source::Place) {
     if (!out.quantity.empty() || !out.field.empty() || !out.key.empty()) {
@@ -211,13 +227,15 @@ void writeIo(YAML::Emitter& out, const IoSpec& io) {
   const auto entry = [&](IoTable t, const IoEntry& e) {
     out << YAML::Key << e.address << YAML::Value << YAML::Flow << YAML::BeginMap;
     const bool place = e.source == IoEntry::Source::Place;
-    const bool coil = t == IoTable::Coils && !place;  // a coil on a node's number field
+    const bool coil = t == IoTable::Coils && e.source == IoEntry::Source::Node;  // a coil on a node's number field
     const bool word = isRegister(t);
     schema::inSchemaOrder(
         Section::IoEntry,
         {
             {"place", [&] { if (place) out << YAML::Key << "place" << YAML::Value << e.target; }},
-            {"node", [&] { if (!place) out << YAML::Key << "node" << YAML::Value << e.target; }},
+            {"node", [&] { if (e.source == IoEntry::Source::Node) out << YAML::Key << "node" << YAML::Value << e.target; }},
+            {"part", [&] { if (e.source == IoEntry::Source::Part) out << YAML::Key << "part" << YAML::Value << e.target; }},
+            {"io", [&] { if (!e.io.empty()) out << YAML::Key << "io" << YAML::Value << e.io; }},
             {"of", [&] { if (!e.quantity.empty()) out << YAML::Key << "of" << YAML::Value << e.quantity; }},
             {"key", [&] { if (!e.key.empty()) out << YAML::Key << "key" << YAML::Value << e.key; }},
             {"field", [&] { if (!e.field.empty()) out << YAML::Key << "field" << YAML::Value << e.field; }},

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "gdpn/core/expression.h"
 #include "gdpn/core/file.h"
 #include "gdpn/core/text.h"
 #include "gdpn/model/model.h"
@@ -92,6 +93,7 @@ class ModelReader {
         readPages(e.value, model.net.pages, false);
       } else if (e.key == "page_types") {
         type_scenes_ = &model.type_scenes;
+        parts_ = &model.parts;
         readPages(e.value, model.net.page_types, true);
       } else if (e.key == "scene") {
         model.scene = detail::readScene(e.value, r_, e.loc, angles_);
@@ -384,6 +386,21 @@ class ModelReader {
     const std::string what = std::string(type ? "page type '" : "page '") + page.name + "'";
     if (pe.value.IsNull()) return;
     if (!r_.expectMap(pe.value, what)) return;
+    // a part's parameters first: its scene's fields refer to them, besides the model's
+    PartSpec part;
+    part.loc = page.loc;
+    std::map<std::string, detail::ParamValue> with_own = param_values_;
+    const bool is_part = type && (pe.value["part"] || pe.value["params"] || pe.value["io"]);
+    if (type && pe.value["params"]) {
+      readParams(pe.value["params"], part.params);
+      for (const auto& p : part.params) with_own[p.name] = {p.value, p.integer};
+    }
+    r_.setParams(&with_own);
+    struct Restore {
+      YamlReader& r;
+      const std::map<std::string, detail::ParamValue>* p;
+      ~Restore() { r.setParams(p); }
+    } restore{r_, &param_values_};
     for (const auto& e : r_.entries(pe.value, what, keyNames(type ? Section::PageType : Section::Page))) {
       if (e.key == "description") {
         if (auto s = r_.string(e.value, "description")) page.description = *s;
@@ -405,7 +422,121 @@ class ModelReader {
         forEachNamed(e, "instances", [&](const Entry& c) { page.instances.push_back(readInstance(c)); });
       } else if (e.key == "scene" && type_scenes_) {
         (*type_scenes_)[page.name] = detail::readScene(e.value, r_, e.loc, angles_);
+      } else if (e.key == "part") {
+        readPartMeta(e, part);
+      } else if (e.key == "io") {
+        readPartIo(e, part);
       }
+    }
+    if (is_part && parts_) (*parts_)[page.name] = std::move(part);
+  }
+
+  /// A page type's `part`: how the palette shows it.
+  void readPartMeta(const Entry& pe, PartSpec& part) {
+    part.listed = true;
+    if (pe.value.IsNull()) return;
+    if (!r_.expectMap(pe.value, "part")) return;
+    for (const auto& e : r_.entries(pe.value, "part", keyNames(Section::Part))) {
+      if (e.key == "version") {
+        if (auto v = r_.integer(e.value, "version")) {
+          if (inRange(Section::Part, "version", static_cast<double>(*v))) {
+            part.version = static_cast<int>(*v);
+          } else {
+            r_.error(e.value, "a part's version is a whole number from 1, got " + std::to_string(*v));
+          }
+        }
+      } else if (auto text = r_.string(e.value, e.key)) {
+        if (e.key == "group") part.group = *text;
+        else if (e.key == "picture") part.picture = *text;
+        else if (e.key == "control") part.control = *text;
+        else if (e.key == "controls") part.controls = *text;
+      }
+    }
+  }
+
+  /// The texts of a digital output's `on` or `off`: one number, or a list of them (a vector
+  /// field's), each a number, a `$param` or an `=expression`.
+  std::vector<std::string> readOnOff(const Entry& e) {
+    std::vector<std::string> out;
+    const auto one = [&](const YAML::Node& n) {
+      std::string bound;
+      if (r_.number(n, e.key, &bound)) out.push_back(bound.empty() ? n.Scalar() : referenceText(bound));
+    };
+    if (e.value.IsSequence()) {
+      for (const auto& n : e.value) one(n);
+      if (out.size() != e.value.size()) out.clear();
+    } else {
+      one(e.value);
+    }
+    return out;
+  }
+
+  /// A page type's `io`: its named inputs and outputs.
+  void readPartIo(const Entry& section, PartSpec& part) {
+    if (section.value.IsNull() || !r_.expectMap(section.value, "io")) return;
+    for (const auto& e : r_.entries(section.value, "io", {})) {
+      if (!identifier(e, "an I/O's")) continue;
+      PartIoSpec io;
+      io.name = e.key;
+      io.loc = e.loc;
+      if (!r_.expectMap(e.value, "I/O '" + io.name + "'")) continue;
+      bool has_direction = false;
+      for (const auto& f : r_.entries(e.value, "I/O '" + io.name + "'", keyNames(Section::PartIo))) {
+        if (f.key == "on" || f.key == "off") {
+          (f.key == "on" ? io.on : io.off) = readOnOff(f);
+          continue;
+        }
+        auto text = r_.string(f.value, f.key);
+        if (!text) continue;
+        if (f.key == "direction" || f.key == "signal") {
+          if (!isChoice(Section::PartIo, f.key, *text)) {
+            r_.error(f.value, "'" + f.key + "' is " + schema::choiceList(schema::key(Section::PartIo, f.key), "'") +
+                                  ", got '" + *text + "'");
+            continue;
+          }
+          if (f.key == "direction") {
+            io.direction = *text == ioDirectionName(IoDirection::Input) ? IoDirection::Input : IoDirection::Output;
+            has_direction = true;
+          } else {
+            io.signal = *text == ioSignalName(IoSignal::Digital) ? IoSignal::Digital : IoSignal::Analog;
+          }
+        } else if (f.key == "unit") {
+          io.unit = *text;
+        } else if (f.key == "description") {
+          io.description = *text;
+        } else if (f.key == "node") {
+          if (!isNodePath(*text)) r_.error(f.value, "'" + *text + "' is not a node path (names joined by '/')");
+          io.node = *text;
+        } else if (f.key == "of") {
+          io.of = *text;
+        } else if (f.key == "field") {
+          io.field = *text;
+        }
+      }
+      const std::string name = "I/O '" + io.name + "'";
+      if (!has_direction) {
+        r_.error(e.loc, name + " needs 'direction': input (a sensor) or output (an actuator)");
+        continue;
+      }
+      if (io.node.empty()) {
+        r_.error(e.loc, name + " needs 'node', the node of the part's scene it is bound to");
+        continue;
+      }
+      const bool input = io.direction == IoDirection::Input;
+      if (input && (io.of.empty() || !io.field.empty())) {
+        r_.error(e.loc, name + " is an input: it reads 'of' (active, reading, a channel, a field), not 'field'");
+        continue;
+      }
+      if (!input && (io.field.empty() || !io.of.empty())) {
+        r_.error(e.loc, name + " is an output: it sets 'field' (speed, target1, emissive), not 'of'");
+        continue;
+      }
+      if ((!io.on.empty() || !io.off.empty()) && (input || io.signal != IoSignal::Digital)) {
+        r_.error(e.loc, name + ": 'on' and 'off' are for digital outputs");
+        continue;
+      }
+      if (part.findIo(io.name)) continue;  // entries() reported the duplicate key
+      part.io.push_back(std::move(io));
     }
   }
 
@@ -704,6 +835,20 @@ class ModelReader {
         if (!ok) continue;
         if (n == 3) i.translation = {v[0], v[1], v[2]};
         else i.rotation = v;
+      } else if (e.key == "params") {
+        if (e.value.IsNull() || !r_.expectMap(e.value, "params")) continue;
+        for (const auto& p : r_.entries(e.value, "params", {})) {
+          if (auto v = r_.number(p.value, p.key)) {
+            if (!std::isfinite(*v)) {
+              r_.error(p.value, "parameter '" + p.key + "' must be a finite number");
+              continue;
+            }
+            i.params.push_back({p.key, *v, p.loc});
+          }
+        }
+      } else if (e.key == "part") {
+        if (auto s = r_.string(e.value, "part")) i.part = *s;
+        i.part_loc = r_.loc(e.value, e.loc);
       }
     }
     if (!has_type) r_.error(ie.loc, "instance '" + i.name + "' has no 'type'");
@@ -712,6 +857,7 @@ class ModelReader {
 
   YamlReader r_;
   std::map<std::string, std::shared_ptr<const scene::Scene>>* type_scenes_ = nullptr;
+  std::map<std::string, PartSpec>* parts_ = nullptr;
   scene::AngleUnit angles_ = scene::AngleUnit::Degrees;  // the unit the file writes angles in
   std::string file_;
   const std::string& text_;
@@ -722,8 +868,15 @@ class ModelReader {
 }  // namespace
 
 void keepParamsOf(Model& fragment, const std::vector<Param>& declared) {
+  const auto undeclared = [&](const std::string& name) {
+    return std::none_of(declared.begin(), declared.end(), [&](const Param& p) { return p.name == name; });
+  };
+  // a reference the model does not declare; an expression's, when any name it reads
   const auto unknown = [&](const std::string& name) {
-    return !name.empty() && std::none_of(declared.begin(), declared.end(), [&](const Param& p) { return p.name == name; });
+    if (name.empty()) return false;
+    if (name[0] != '=') return undeclared(name);
+    const auto names = core::expressionNames(std::string_view(name).substr(1));
+    return std::any_of(names.begin(), names.end(), undeclared);
   };
   const auto counts = [&](std::vector<net::SlotCount>& list) {
     for (auto& c : list) {
@@ -747,7 +900,7 @@ void keepParamsOf(Model& fragment, const std::vector<Param>& declared) {
   if (!fragment.scene) return;
   auto scene = fragment.scene->clone();
   scene::traverse(scene->root(), [&](scene::Node& n, const scene::TraversalState&) {
-    std::erase_if(n.params, [&](const auto& b) { return unknown(b.second); });
+    std::erase_if(n.params, [&](const auto& b) { return unknown(b.text); });
   });
   fragment.scene = std::move(scene);
   fragment.params.clear();

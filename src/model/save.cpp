@@ -30,12 +30,12 @@ void description(YAML::Emitter& out, const std::string& text) {
 
 /// A number, or `$name` of the parameter it comes from.
 std::string numberText(double value, const std::string& param) {
-  return param.empty() ? formatDouble(value) : "$" + param;
+  return param.empty() ? formatDouble(value) : referenceText(param);
 }
 /// A per-slot count, or `$name` of the parameter it comes from.
 void count(YAML::Emitter& out, const net::SlotCount& c) {
   if (c.param.empty()) out << c.value;
-  else out << "$" + c.param;
+  else out << referenceText(c.param);
 }
 
 /// A per-slot integer list as a scalar (only a0) or a map.
@@ -172,7 +172,7 @@ void writeTransition(YAML::Emitter& out, const net::TransitionSpec& t) {
       {"duration", [&] { writeDuration(out, t.duration); }},
       {"priority",
        [&] {
-         if (!t.priority_param.empty()) out << YAML::Key << "priority" << YAML::Value << "$" + t.priority_param;
+         if (!t.priority_param.empty()) out << YAML::Key << "priority" << YAML::Value << referenceText(t.priority_param);
          else if (static_cast<double>(t.priority) != priority_default) out << YAML::Key << "priority" << YAML::Value << t.priority;
        }},
       {"probability",
@@ -182,7 +182,7 @@ void writeTransition(YAML::Emitter& out, const net::TransitionSpec& t) {
        }},
       {"servers",
        [&] {
-         if (!t.servers_param.empty()) out << YAML::Key << "servers" << YAML::Value << "$" + t.servers_param;
+         if (!t.servers_param.empty()) out << YAML::Key << "servers" << YAML::Value << referenceText(t.servers_param);
          else if (t.servers == net::kUnlimitedServers) out << YAML::Key << "servers" << YAML::Value << "unlimited";
          else if (static_cast<double>(t.servers) != servers_default) out << YAML::Key << "servers" << YAML::Value << t.servers;
        }},
@@ -237,6 +237,14 @@ void writeInstance(YAML::Emitter& out, const net::InstanceSpec& i) {
                             {"at", [&] { pos(out, i.position); }},
                             {"translation", [&] { numbers("translation", i.translation); }},
                             {"rotation", [&] { numbers("rotation", i.rotation); }},
+                            {"params",
+                             [&] {
+                               if (i.params.empty()) return;
+                               out << YAML::Key << "params" << YAML::Value << YAML::Flow << YAML::BeginMap;
+                               for (const auto& p : i.params) out << YAML::Key << p.name << YAML::Value << formatDouble(p.value);
+                               out << YAML::EndMap;
+                             }},
+                            {"part", [&] { if (!i.part.empty()) out << YAML::Key << "part" << YAML::Value << i.part; }},
                         });
   out << YAML::EndMap;
 }
@@ -250,8 +258,71 @@ void namedMap(YAML::Emitter& out, const char* key, const std::vector<T>& list, F
   out << YAML::EndMap;
 }
 
+void writeParam(YAML::Emitter& out, const Param& p);
+
+/// A digital output's `on` or `off`: one number, or a list of them.
+void writeOnOff(YAML::Emitter& out, const char* key, const std::vector<std::string>& texts) {
+  if (texts.empty()) return;
+  out << YAML::Key << key << YAML::Value;
+  if (texts.size() == 1) {
+    out << texts[0];
+    return;
+  }
+  out << YAML::Flow << YAML::BeginSeq;
+  for (const auto& t : texts) out << t;
+  out << YAML::EndSeq;
+}
+
+/// A page type's `part`, `params` and `io` sections.
+std::vector<schema::KeyWriter> partWriters(YAML::Emitter& out, const PartSpec& part) {
+  return {
+      {"part",
+       [&] {
+         if (!part.listed) return;
+         out << YAML::Key << "part" << YAML::Value << YAML::Flow << YAML::BeginMap;
+         schema::inSchemaOrder(
+             Section::Part,
+             {
+                 {"version", [&] { out << YAML::Key << "version" << YAML::Value << part.version; }},
+                 {"group", [&] { if (!part.group.empty()) out << YAML::Key << "group" << YAML::Value << part.group; }},
+                 {"picture",
+                  [&] { if (!part.picture.empty()) out << YAML::Key << "picture" << YAML::Value << part.picture; }},
+                 {"control",
+                  [&] { if (!part.control.empty()) out << YAML::Key << "control" << YAML::Value << part.control; }},
+                 {"controls",
+                  [&] { if (!part.controls.empty()) out << YAML::Key << "controls" << YAML::Value << part.controls; }},
+             });
+         out << YAML::EndMap;
+       }},
+      {"params", [&] { namedMap(out, "params", part.params, writeParam); }},
+      {"io",
+       [&] {
+         namedMap(out, "io", part.io, [](YAML::Emitter& o, const PartIoSpec& io) {
+           o << YAML::Key << io.name << YAML::Value << YAML::Flow << YAML::BeginMap;
+           const auto text = [&](const char* key, const std::string& value) {
+             if (!value.empty()) o << YAML::Key << key << YAML::Value << value;
+           };
+           schema::inSchemaOrder(
+               Section::PartIo,
+               {
+                   {"direction", [&] { text("direction", ioDirectionName(io.direction)); }},
+                   {"signal", [&] { text("signal", ioSignalName(io.signal)); }},
+                   {"unit", [&] { text("unit", io.unit); }},
+                   {"description", [&] { if (!io.description.empty()) o << YAML::Key << "description" << YAML::Value << YAML::DoubleQuoted << io.description; }},
+                   {"node", [&] { text("node", io.node); }},
+                   {"of", [&] { text("of", io.of); }},
+                   {"field", [&] { text("field", io.field); }},
+                   {"on", [&] { writeOnOff(o, "on", io.on); }},
+                   {"off", [&] { writeOnOff(o, "off", io.off); }},
+               });
+           o << YAML::EndMap;
+         });
+       }},
+  };
+}
+
 void writePage(YAML::Emitter& out, const net::PageSpec& page, bool type, const scene::Scene* type_scene,
-               scene::AngleUnit angles) {
+               scene::AngleUnit angles, const PartSpec* part) {
   out << YAML::Key << page.name << YAML::Value << YAML::BeginMap;
   std::vector<schema::KeyWriter> keys = {
       {"description", [&] { description(out, page.description); }},
@@ -278,6 +349,8 @@ void writePage(YAML::Emitter& out, const net::PageSpec& page, bool type, const s
                       out << YAML::Key << "scene" << YAML::Value;
                       detail::writeScene(out, *type_scene, angles);
                     }});
+    static const PartSpec none;  // a page type that is no part: its writers write nothing
+    for (auto& w : partWriters(out, part ? *part : none)) keys.push_back(std::move(w));
   }
   schema::inSchemaOrder(type ? Section::PageType : Section::Page, keys);
   out << YAML::EndMap;
@@ -365,13 +438,15 @@ std::string writeModel(const Model& model) {
           {"pages",
            [&] {
              namedMap(out, "pages", model.net.pages,
-                      [&](YAML::Emitter& o, const net::PageSpec& p) { writePage(o, p, false, nullptr, s.angles); });
+                      [&](YAML::Emitter& o, const net::PageSpec& p) { writePage(o, p, false, nullptr, s.angles, nullptr); });
            }},
           {"page_types",
            [&] {
              namedMap(out, "page_types", model.net.page_types, [&](YAML::Emitter& o, const net::PageSpec& p) {
                auto it = model.type_scenes.find(p.name);
-               writePage(o, p, true, it == model.type_scenes.end() ? nullptr : it->second.get(), s.angles);
+               const auto part = model.parts.find(p.name);
+               writePage(o, p, true, it == model.type_scenes.end() ? nullptr : it->second.get(), s.angles,
+                         part == model.parts.end() ? nullptr : &part->second);
              });
            }},
           {"scene",

@@ -5,6 +5,7 @@
 
 
 #include "gdpn/core/text.h"
+#include "gdpn/model/param.h"
 
 namespace gdpn::model::detail {
 namespace {
@@ -103,7 +104,9 @@ class SceneReader {
       if (auto v = parse(*type->fields[i], field)) {
         node->setValue(i, std::move(*v));
         node->field_locs[i] = r_.loc(field.value, field.loc);
-        if (!param_.empty()) node->params.emplace_back(static_cast<std::uint32_t>(i), param_);
+        for (auto& [component, text] : bound_) {
+          node->params.push_back({static_cast<std::uint32_t>(i), component, std::move(text)});
+        }
         read.emplace_back(i, field);
       }
     }
@@ -183,9 +186,11 @@ class SceneReader {
     }
     std::array<double, N> out{};
     for (std::size_t k = 0; k < N; ++k) {
-      auto v = r_.number(n[k], f.name);
+      std::string bound;
+      auto v = r_.number(n[k], f.name, &bound);
       if (!v) return std::nullopt;
       out[k] = *v;
+      if (!bound.empty()) bound_.emplace_back(static_cast<std::int32_t>(k), std::move(bound));
     }
     return out;
   }
@@ -193,7 +198,11 @@ class SceneReader {
   /// The value as written, read as the field's kind (its syntax only).
   std::optional<FieldValue> parse(const FieldDesc& f, const Entry& e) {
     const YAML::Node& n = e.value;
-    param_.clear();
+    bound_.clear();
+    std::string param;
+    const auto whole = [&] {
+      if (!param.empty()) bound_.emplace_back(-1, std::move(param));
+    };
     switch (f.kind) {
       case FieldKind::Bool: {
         bool b = false;
@@ -202,10 +211,10 @@ class SceneReader {
         return std::nullopt;
       }
       case FieldKind::Int:
-        if (auto v = r_.integer(n, f.name, &param_)) return *v;
+        if (auto v = r_.integer(n, f.name, &param)) return whole(), *v;
         return std::nullopt;
       case FieldKind::Float:
-        if (auto v = r_.number(n, f.name, &param_)) return *v;
+        if (auto v = r_.number(n, f.name, &param)) return whole(), *v;
         return std::nullopt;
       case FieldKind::Vec3:
       case FieldKind::Color:
@@ -239,7 +248,8 @@ class SceneReader {
   YamlReader& r_;
   scene::Scene& scene_;
   scene::AngleUnit angles_;
-  std::string param_;  // the parameter the field parse() read last refers to ("" for none)
+  // what the numbers of the field parse() read last refer to: (component or -1, reference)
+  std::vector<std::pair<std::int32_t, std::string>> bound_;
 };
 
 void writeValue(YAML::Emitter& out, const FieldValue& v) {
@@ -272,12 +282,29 @@ void writeNode(YAML::Emitter& out, const scene::Node& node, scene::AngleUnit ang
       << YAML::BeginMap;
   if (!node.name().empty()) out << YAML::Key << "name" << YAML::Value << node.name();
   if (node.is_template) out << YAML::Key << "template" << YAML::Value << true;
-  auto bound = node.params.begin();  // the fields a parameter gives, in field order
+  auto bound = node.params.begin();  // the fields parameters give, in field order
   for (std::size_t i = 0; i < node.type().fields.size(); ++i) {
     const FieldDesc& f = *node.type().fields[i];
-    while (bound != node.params.end() && bound->first < i) ++bound;
-    if (bound != node.params.end() && bound->first == i) {
-      out << YAML::Key << f.name << YAML::Value << "$" + bound->second;
+    while (bound != node.params.end() && bound->field < i) ++bound;
+    if (bound != node.params.end() && bound->field == i && bound->component < 0) {
+      out << YAML::Key << f.name << YAML::Value << referenceText(bound->text);
+      continue;
+    }
+    if (bound != node.params.end() && bound->field == i) {
+      // a vector some of whose numbers parameters give
+      const FieldValue v = scene::convertAngle(node, i, node.value(i), angles, false);
+      std::vector<double> numbers;
+      if (const auto* a3 = std::get_if<std::array<double, 3>>(&v)) numbers.assign(a3->begin(), a3->end());
+      if (const auto* a4 = std::get_if<std::array<double, 4>>(&v)) numbers.assign(a4->begin(), a4->end());
+      out << YAML::Key << f.name << YAML::Value << YAML::Flow << YAML::BeginSeq;
+      for (std::size_t k = 0; k < numbers.size(); ++k) {
+        const auto b = std::find_if(bound, node.params.end(), [&](const scene::Node::Binding& x) {
+          return x.field == i && x.component == static_cast<std::int32_t>(k);
+        });
+        if (b != node.params.end() && b->field == i) out << referenceText(b->text);
+        else out << core::formatDouble(numbers[k]);
+      }
+      out << YAML::EndSeq;
       continue;
     }
     if (node.value(i) == f.initial) continue;

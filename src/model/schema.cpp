@@ -13,6 +13,7 @@
 #include "gdpn/net/script_kind.h"
 #include "gdpn/net/slot.h"
 #include "gdpn/net/spec.h"
+#include "gdpn/model/part.h"
 
 namespace gdpn::model::schema {
 namespace {
@@ -148,6 +149,11 @@ std::vector<KeyDesc> ioEntryKeys() {
       io(k("place", ValueType::Name, "", "a place: its tokens, all slots together"),
          {DiscreteInputs, InputRegisters, Coils, HoldingRegisters}),
       io(k("node", ValueType::Name, "", "a node's path"), {DiscreteInputs, InputRegisters, Coils, HoldingRegisters}),
+      io(k("part", ValueType::Name, "", "a part instance (its name, or qualified: `main/pusher1`): with `io`"),
+         {DiscreteInputs, InputRegisters, Coils, HoldingRegisters}),
+      io(k("io", ValueType::Name, "",
+           "the part's input (for `discrete_inputs`, `input_registers`) or output (`coils`, `holding_registers`)"),
+         {DiscreteInputs, InputRegisters, Coils, HoldingRegisters}),
       io(k("of", ValueType::Text, "", "what of the node is read (as a signal's `of`)"),
          {DiscreteInputs, InputRegisters}),
       io(k("key", ValueType::Text, "", "a KeyboardSensor's key held down"), {DiscreteInputs}),
@@ -179,6 +185,15 @@ std::vector<KeyDesc> pageKeys(bool type) {
     keys.push_back(form(k("scene", ValueType::List, "",
                           "the machine it controls: each instance gets a copy under a Transform named after it"),
                         "list of nodes"));
+    keys.push_back(form(k("part", ValueType::Map, "", "makes it a part the palette offers: version, group, picture, "
+                                                      "control pattern (*Parts*)"),
+                        "map"));
+    keys.push_back(form(k("params", ValueType::Map, "",
+                          "numbers each instance may set (`params: {length: 3}`), as the model's `params` are written; "
+                          "its scene's fields refer to them as `$name` or in `=expressions`"),
+                        "map name → parameter"));
+    keys.push_back(form(k("io", ValueType::Map, "", "its named inputs and outputs, each bound to a node of its scene"),
+                        "map name → I/O"));
   }
   return keys;
 }
@@ -270,6 +285,36 @@ std::vector<KeyDesc> instanceKeys() {
            "m"),
       form(k("rotation", ValueType::Vector, "[0, 0, 1, 0]", "how the copy of the type's scene is turned: axis and degrees"),
            "`[x, y, z, angle]`"),
+      form(k("params", ValueType::Map, "", "values for the type's parameters (the others keep the type's)"),
+           "map name → number"),
+      k("part", ValueType::Name, "", "a control pattern's: the part instance on this page it controls"),
+  };
+}
+
+std::vector<KeyDesc> partKeys() {
+  return {
+      range(k("version", ValueType::Integer, "1", "grows with each change a model using the part should take"), 1, kInf),
+      k("group", ValueType::Text, "", "where the palette lists it: `Conveyors`, `Sensors`, `Actuators`, `Items`"),
+      form(k("picture", ValueType::Name, "", "a PNG of it, relative to the file, for the palette"), "path"),
+      k("control", ValueType::Name, "", "the page type of its usual control (a control pattern), offered when it is placed"),
+      k("controls", ValueType::Name, "",
+        "a control pattern's: the part type it controls; each instance names its part with `part:`"),
+  };
+}
+
+std::vector<KeyDesc> partIoKeys() {
+  return {
+      word("direction", {ioDirectionName(IoDirection::Input), ioDirectionName(IoDirection::Output)},
+           "seen from the controller: an input tells it (a sensor), an output drives the plant (an actuator)"),
+      word("signal", {ioSignalName(IoSignal::Digital), ioSignalName(IoSignal::Analog)}, "a bit, or a number in `unit`"),
+      k("unit", ValueType::Text, "", "an analogue value's unit, for people"),
+      k("description", ValueType::Text, "", "what it means, for people"),
+      k("node", ValueType::Name, "", "the node it is bound to: a path in the part's scene"),
+      k("of", ValueType::Text, "", "an input's: what of the node is read (as a signal's `of`)"),
+      k("field", ValueType::Text, "", "an output's: the node's field it sets"),
+      form(k("on", ValueType::Number, "1", "a digital output's value for 1 (a vector field's: three numbers)"),
+           "number or list"),
+      form(k("off", ValueType::Number, "0", "a digital output's value for 0"), "number or list"),
   };
 }
 
@@ -310,6 +355,8 @@ std::vector<KeyDesc> build(Section section) {
     case Section::Scripts: return scriptsKeys();
     case Section::ScriptFile: return scriptFileKeys();
     case Section::Duration: return durationKeys();
+    case Section::Part: return partKeys();
+    case Section::PartIo: return partIoKeys();
   }
   return {};
 }
@@ -468,6 +515,8 @@ std::string_view sectionName(Section section) {
     case Section::Scripts: return "scripts";
     case Section::ScriptFile: return "script_file";
     case Section::Duration: return "duration";
+    case Section::Part: return "part";
+    case Section::PartIo: return "part_io";
   }
   return "?";
 }

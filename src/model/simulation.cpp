@@ -1,5 +1,8 @@
 #include "gdpn/model/simulation.h"
 
+#include "gdpn/core/expression.h"
+#include "gdpn/model/part_run.h"
+
 #include "signal_recorder.h"
 
 #include <algorithm>
@@ -79,36 +82,160 @@ core::SourceLoc tokenLoc(const net::NetSpec& spec, const std::string& name) {
 /// the instance and placed by its translation and rotation; nested instances nest the same way.
 class InstancePlacer {
  public:
-  InstancePlacer(const Model& model, scene::Scene& scene, core::Diagnostics& diags)
+  InstancePlacer(const Model& model, scene::Scene* scene, core::Diagnostics& diags)
       : model_(model), scene_(scene), diags_(diags) {
     for (const auto& t : model.net.page_types) types_[t.name] = &t;
   }
 
-  void placePage(const net::PageSpec& page, scene::Node& parent, std::vector<std::string>& stack) {
+  /// Places the instances of `page` (named `prefix`) and, below them, theirs: each instance of
+  /// a type that owns scene nodes gets its Transform under `parent` with a copy of its type's
+  /// scene, its parameters applied; each part instance is noted.
+  void placePage(const net::PageSpec& page, const std::string& prefix, scene::Node* parent,
+                 std::vector<std::string>& stack) {
     for (const auto& inst : page.instances) {
       auto type = types_.find(inst.type);
       if (type == types_.end() || std::find(stack.begin(), stack.end(), inst.type) != stack.end()) continue;
-      if (!ownsScene(*type->second)) continue;
-      scene::Node* frame = scene_.create(*scene_.types().find(scene::NodeKind::Transform), inst.name, parent);
-      if (!frame) {
-        diags_.error(inst.loc, "instance '" + inst.name + "' places its machine at '" +
-                                   (parent.path().empty() ? "" : parent.path() + "/") + inst.name +
-                                   "', but the scene already has a node there");
-        continue;
+      const std::string name = prefix + "/" + inst.name;
+      const auto part = model_.parts.find(inst.type);
+      PlacedPart placed;
+      placed.name = name;
+      placed.type = inst.type;
+      placed.loc = inst.loc;
+      if (part != model_.parts.end()) resolveParams(inst, part->second, placed);
+      checkControl(page, prefix, inst, part == model_.parts.end() ? nullptr : &part->second, placed);
+      scene::Node* frame = nullptr;
+      if (scene_ && parent && ownsScene(*type->second)) {
+        frame = scene_->create(*scene_->types().find(scene::NodeKind::Transform), inst.name, *parent);
+        if (!frame) {
+          diags_.error(inst.loc, "instance '" + inst.name + "' places its machine at '" +
+                                     (parent->path().empty() ? "" : parent->path() + "/") + inst.name +
+                                     "', but the scene already has a node there");
+          continue;
+        }
+        frame->loc = inst.loc;
+        frame->setValue(0, inst.translation);
+        frame->setValue(1, inst.rotation);
+        if (auto own = model_.type_scenes.find(inst.type); own != model_.type_scenes.end()) {
+          for (const auto& c : own->second->root().children()) scene_->copy(*c, *frame);
+        }
+        applyParams(*frame, inst, placed);
+        placed.frame = frame->path();
       }
-      frame->loc = inst.loc;
-      frame->setValue(0, inst.translation);
-      frame->setValue(1, inst.rotation);
-      if (auto own = model_.type_scenes.find(inst.type); own != model_.type_scenes.end()) {
-        for (const auto& c : own->second->root().children()) scene_.copy(*c, *frame);
-      }
+      if (part != model_.parts.end()) placed_.push_back(std::move(placed));
       stack.push_back(inst.type);
-      placePage(*type->second, *frame, stack);
+      placePage(*type->second, name, frame ? frame : parent, stack);
       stack.pop_back();
     }
   }
 
+  /// The part instances placed, in placement order.
+  std::vector<PlacedPart> takePlaced() { return std::move(placed_); }
+
  private:
+  /// The type's parameters with the instance's values; an unknown name is an error.
+  void resolveParams(const net::InstanceSpec& inst, const PartSpec& part, PlacedPart& placed) {
+    for (const auto& p : part.params) placed.params.emplace_back(p.name, p.value);
+    for (const auto& set : inst.params) {
+      auto it = std::find_if(placed.params.begin(), placed.params.end(), [&](const auto& p) { return p.first == set.name; });
+      if (it == placed.params.end()) {
+        std::vector<std::string> names;
+        for (const auto& p : part.params) names.push_back(p.name);
+        diags_.error(set.loc, "page type '" + inst.type + "' has no parameter '" + set.name + "'" +
+                                  core::didYouMean(set.name, names) +
+                                  (names.empty() ? " (it declares none)" : ""));
+        continue;
+      }
+      const auto declared = std::find_if(part.params.begin(), part.params.end(), [&](const Param& p) { return p.name == set.name; });
+      if (declared->integer && std::floor(set.value) != set.value) {
+        diags_.error(set.loc, "parameter '" + set.name + "' of page type '" + inst.type + "' is a whole number; " +
+                                  core::formatDouble(set.value) + " is not");
+        continue;
+      }
+      it->second = set.value;
+    }
+  }
+
+  /// A control pattern's instance names the part it controls, on its own page, of its type.
+  void checkControl(const net::PageSpec& page, const std::string& prefix, const net::InstanceSpec& inst,
+                    const PartSpec* part, PlacedPart& placed) {
+    const bool pattern = part && !part->controls.empty();
+    if (inst.part.empty()) {
+      if (pattern) {
+        diags_.error(inst.loc, "instance '" + inst.name + "' of control pattern '" + inst.type +
+                                   "' needs 'part': the " + part->controls + " it controls");
+      }
+      return;
+    }
+    if (!pattern) {
+      diags_.error(inst.part_loc, "'part' is for instances of control patterns; '" + inst.type + "' controls no part");
+      return;
+    }
+    const auto target = std::find_if(page.instances.begin(), page.instances.end(),
+                                      [&](const net::InstanceSpec& i) { return i.name == inst.part; });
+    if (target == page.instances.end()) {
+      std::vector<std::string> names;
+      for (const auto& i : page.instances) {
+        if (i.type == part->controls) names.push_back(i.name);
+      }
+      diags_.error(inst.part_loc, "no instance '" + inst.part + "' on page '" + page.name + "'" +
+                                      core::didYouMean(inst.part, names));
+      return;
+    }
+    if (target->type != part->controls) {
+      diags_.error(inst.part_loc, "'" + inst.part + "' is a " + target->type + "; control pattern '" + inst.type +
+                                      "' controls a " + part->controls);
+      return;
+    }
+    placed.controls = prefix + "/" + inst.part;
+  }
+
+  /// Gives every field of the copy under `frame` that refers to parameters its value for this
+  /// instance: the instance's parameters first, then the model's.
+  void applyParams(scene::Node& frame, const net::InstanceSpec& inst, const PlacedPart& placed) {
+    const core::NameLookup lookup = [&](std::string_view name) -> std::optional<double> {
+      for (const auto& [n, v] : placed.params) {
+        if (n == name) return v;
+      }
+      for (const auto& p : model_.params) {
+        if (p.name == name) return p.value;
+      }
+      return std::nullopt;
+    };
+    const auto angles = model_.settings.angles;
+    for (const auto& child : frame.children()) {
+      scene::traverse(*child, [&](scene::Node& n, const scene::TraversalState&) {
+        for (const auto& b : n.params) {
+          core::ExpressionError e;
+          const std::string text = b.text[0] == '=' ? b.text.substr(1) : b.text;
+          const auto v = core::evaluate(text, lookup, e);
+          if (!v) {
+            diags_.error(inst.loc, "instance '" + inst.name + "': " + n.path() + "." + n.type().fields[b.field]->name +
+                                       " = " + referenceText(b.text) + ": " + e.message);
+            continue;
+          }
+          // the number in the file's unit, as written; stored as the field stores it
+          scene::FieldValue written = scene::convertAngle(n, b.field, n.value(b.field), angles, false);
+          if (b.component < 0) {
+            written = n.type().fields[b.field]->kind == scene::FieldKind::Int
+                          ? scene::FieldValue(static_cast<std::int64_t>(std::llround(*v)))
+                          : scene::FieldValue(*v);
+          } else if (auto* a3 = std::get_if<std::array<double, 3>>(&written)) {
+            (*a3)[static_cast<std::size_t>(b.component)] = *v;
+          } else if (auto* a4 = std::get_if<std::array<double, 4>>(&written)) {
+            (*a4)[static_cast<std::size_t>(b.component)] = *v;
+          }
+          const scene::FieldValue stored = scene::convertAngle(n, b.field, written, angles, true);
+          if (auto bad = n.type().fields[b.field]->check(stored)) {
+            diags_.error(inst.loc, "instance '" + inst.name + "': " + n.path() + "." + n.type().fields[b.field]->name +
+                                       " = " + referenceText(b.text) + ": " + bad->message);
+            continue;
+          }
+          n.setValue(b.field, stored);
+        }
+      });
+    }
+  }
+
   /// True when the type, or a page type it instantiates, owns scene nodes.
   bool ownsScene(const net::PageSpec& type, int depth = 0) const {
     if (depth > 64) return false;
@@ -124,9 +251,10 @@ class InstancePlacer {
   }
 
   const Model& model_;
-  scene::Scene& scene_;
+  scene::Scene* scene_;
   core::Diagnostics& diags_;
   std::unordered_map<std::string, const net::PageSpec*> types_;
+  std::vector<PlacedPart> placed_;
 };
 
 }  // namespace
@@ -165,12 +293,14 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
                                  [](const auto& t) { return !t.second->root().children().empty(); });
   if ((model.scene && !model.scene->root().children().empty()) || typed) {
     sim->scene_ = model.scene ? model.scene->clone() : std::make_unique<scene::Scene>();
-    InstancePlacer placer(model, *sim->scene_, diags);
-    for (const auto& page : model.net.pages) {
-      std::vector<std::string> stack;
-      placer.placePage(page, sim->scene_->root(), stack);
-    }
-    if (diags.hasErrors()) return nullptr;
+  }
+  InstancePlacer placer(model, sim->scene_.get(), diags);
+  for (const auto& page : model.net.pages) {
+    std::vector<std::string> stack;
+    placer.placePage(page, page.name, sim->scene_ ? &sim->scene_->root() : nullptr, stack);
+  }
+  if (diags.hasErrors()) return nullptr;
+  if (sim->scene_) {
     const auto dir = std::filesystem::path(model.path).parent_path().string();
     sim->physics_ = physics::World::create(*sim->scene_, dir, sim->seed_, diags);
     if (!sim->physics_) return nullptr;
@@ -219,6 +349,10 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
       sim->hub_->setModelDir(dir.empty() ? "." : dir);
     }
   }
+  if (!model.parts.empty()) {
+    sim->parts_ = PartRun::create(*sim, placer.takePlaced(), diags);
+    if (!sim->parts_) return nullptr;
+  }
   sim->kernel_ = std::make_unique<net::Kernel>(sim->net_, settings);
   sim->stats_ = std::make_unique<net::StatsCollector>(*sim->net_);
   sim->kernel_->addObserver(sim->stats_.get());
@@ -256,6 +390,33 @@ bool Simulation::makeEngine(core::Diagnostics& diags) {
     }
     return hub_->image(h, why);
   };
+  if (parts_) {
+    PartRun* parts = parts_.get();
+    auto& access = callbacks.parts;
+    access.find = [parts](const std::string& name, std::string& why) { return parts->find(name, why); };
+    access.of_construct = [parts](const std::string& construct) { return parts->ofConstruct(construct); };
+    access.name = [parts](std::size_t i) { return parts->instances()[i].placed.name; };
+    access.io = [parts](std::size_t i) {
+      std::vector<std::pair<std::string, bool>> out;
+      for (const auto& io : parts->instances()[i].spec->io) out.emplace_back(io.name, io.signal == IoSignal::Digital);
+      return out;
+    };
+    access.params = [parts](std::size_t i) {
+      std::vector<script::ScriptParam> out;
+      const auto& inst = parts->instances()[i];
+      for (const auto& [name, value] : inst.placed.params) {
+        const auto declared = std::find_if(inst.spec->params.begin(), inst.spec->params.end(),
+                                           [&](const Param& p) { return p.name == name; });
+        out.push_back({name, value, declared != inst.spec->params.end() && declared->integer});
+      }
+      return out;
+    };
+    access.frame = [parts](std::size_t i) { return parts->instances()[i].frame; };
+    access.read = [parts](std::size_t i, const std::string& io, std::string& why) { return parts->read(i, io, why); };
+    access.write = [parts](std::size_t i, const std::string& io, double v, std::string& why) {
+      return parts->write(i, io, v, why);
+    };
+  }
   script::EngineOptions options;
   options.timeout_s = script_timeout_s_;
   options.angles = model_.settings.angles;
@@ -584,6 +745,7 @@ bool Simulation::dead() const {
 void Simulation::step() {
   if (!started_) start();
   kernel_->beginStep();
+  if (parts_) parts_->atStepBoundary();
   // phase 1: the world advances; phase 2: the sensors feel it (not a world that failed)
   stepPhysics();
   if (physics_fault_at_) return;

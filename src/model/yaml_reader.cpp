@@ -1,5 +1,7 @@
 #include "yaml_reader.h"
 
+#include "gdpn/core/expression.h"
+
 #include <cmath>
 
 #include <filesystem>
@@ -199,10 +201,39 @@ std::vector<Entry> YamlReader::entries(const YAML::Node& map, const std::string&
 
 std::optional<ParamValue> YamlReader::param(const YAML::Node& node, const std::string& field, std::string* name,
                                             bool& ref) {
-  // `$name` written plain: a quoted "$name" is text
-  ref = node.IsScalar() && node.Tag() != "!" && node.Scalar().size() > 1 && node.Scalar()[0] == '$';
+  // `$name` or `=expression` written plain: a quoted "$name" is text
+  ref = node.IsScalar() && node.Tag() != "!" && node.Scalar().size() > 1 &&
+        (node.Scalar()[0] == '$' || node.Scalar()[0] == '=');
   if (name) name->clear();
   if (!ref) return std::nullopt;
+  if (node.Scalar()[0] == '=') {
+    const std::string text = node.Scalar().substr(1);
+    if (!name) {
+      error(node, "'" + field + "' takes no expression (" + node.Scalar() + "); write a number");
+      return std::nullopt;
+    }
+    std::vector<std::string> known;
+    if (params_) {
+      for (const auto& p : *params_) known.push_back(p.first);
+    }
+    core::ExpressionError why;
+    const auto value = core::evaluate(
+        text,
+        [&](std::string_view n) -> std::optional<double> {
+          const auto it = params_ ? params_->find(std::string(n)) : decltype(params_->end()){};
+          if (!params_ || it == params_->end()) return std::nullopt;
+          return it->second.value;
+        },
+        why, known);
+    if (!value) {
+      core::SourceLoc at = loc(node);
+      at.column += static_cast<int>(why.column) + 1;  // past the '='
+      error(at, why.message);
+      return std::nullopt;
+    }
+    *name = node.Scalar();
+    return ParamValue{*value, std::floor(*value) == *value};
+  }
   const std::string wanted = node.Scalar().substr(1);
   if (!name) {
     error(node, "'" + field + "' takes no parameter ($" + wanted + "); write a number");

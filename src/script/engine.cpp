@@ -349,6 +349,7 @@ struct Engine::Impl : detail::Context {
   }
   py::object params_view;  // made on first use
   scene::Scene* plant() const override { return callbacks.plant; }
+  const PartAccess& parts() const override { return callbacks.parts; }
   scene::Node* spawn(const scene::Node& templ, scene::Node& parent, std::optional<core::Vec3> at,
                      std::string& why) override {
     if (!callbacks.spawn) {

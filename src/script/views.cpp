@@ -59,6 +59,25 @@ struct SensorView {
 struct RandomView {
   Ref r;
 };
+struct PartView {  // sim.part(name): a part instance's I/O and parameters
+  Ref r;
+  std::size_t part;
+};
+
+/// The part view of the part the construct `name` belongs to or controls, or None.
+py::object partOf(Context& ctx, const std::string& name) {
+  const auto& parts = ctx.parts();
+  if (!parts.of_construct) return py::none();
+  const auto part = parts.of_construct(name);
+  return part ? py::cast(PartView{refTo(ctx), *part}) : py::none();
+}
+
+/// The names of a part's I/O, joined for a message.
+std::string ioList(const PartView& v) {
+  std::string out;
+  for (const auto& [name, digital] : v.r.get().parts().io(v.part)) out += (out.empty() ? "" : ", ") + name;
+  return out.empty() ? std::string("none") : out;
+}
 
 std::string ownerName(const SlotView& s) {
   const auto& net = s.r.get().netRef();
@@ -875,6 +894,9 @@ void registerTransitionView(py::module_& m) {
           "instance", [](const TransitionView& v) { return instanceOf(v.r.get(), v.r.get().netRef().transitionName(v.t)); },
           "the scene node of its page type's instance (the Transform that places the instance's "
           "machine), or None on a top-level page")
+      .def_property_readonly(
+          "part", [](const TransitionView& v) { return partOf(v.r.get(), v.r.get().netRef().transitionName(v.t)); },
+          "the part its instance is, or controls (a control pattern's), or None")
       .def("__getattr__", [](const TransitionView& v, const std::string& name) { return slotAttr(v.r, true, v.t, name); })
       .def("__repr__", [](const TransitionView& v) {
         return "<transition " + v.r.get().netRef().transitionName(v.t) + ">";
@@ -889,6 +911,9 @@ void registerPlaceView(py::module_& m) {
           "capacity", [](const PlaceView& v) { return capacityOf(SlotView{v.r, false, v.p, net::kDefaultSlot}); },
           [](const PlaceView& v, const py::object& c) { setCapacity(SlotView{v.r, false, v.p, net::kDefaultSlot}, c); },
           "the capacity of slot a0, tokens; None when unbounded; settable when the model gives one")
+      .def_property_readonly(
+          "part", [](const PlaceView& v) { return partOf(v.r.get(), v.r.get().netRef().placeName(v.p)); },
+          "the part its instance is, or controls (a control pattern's), or None")
       .def_property_readonly(
           "instance", [](const PlaceView& v) { return instanceOf(v.r.get(), v.r.get().netRef().placeName(v.p)); },
           "the scene node of its page type's instance, or None on a top-level page")
@@ -945,6 +970,76 @@ void registerParamsView(py::module_& m) {
       .def("__repr__", [](const ParamsView& v) { return "<sim.params " + py::repr(v.values).cast<std::string>() + ">"; });
 }
 
+/// Registers `gdpn_script.Part`: a part instance, its I/O as attributes.
+void registerPartView(py::module_& m) {
+  py::class_<PartView>(m, "Part", "A part instance: its inputs and outputs as attributes, its parameters as `params`")
+      .def_property_readonly("name", [](const PartView& v) { return v.r.get().parts().name(v.part); },
+                             "its qualified name (main/pusher1)")
+      .def_property_readonly("io", [](const PartView& v) {
+        py::list out;
+        for (const auto& [name, digital] : v.r.get().parts().io(v.part)) out.append(name);
+        return out;
+      }, "the names of its inputs and outputs")
+      .def_property_readonly("params", [](const PartView& v) {
+        py::dict values;
+        for (const auto& p : v.r.get().parts().params(v.part)) {
+          if (p.integer) values[py::str(p.name)] = py::int_(static_cast<long long>(p.value));
+          else values[py::str(p.name)] = py::float_(p.value);
+        }
+        return makeParamsView(std::move(values));
+      }, "its parameters as this instance has them")
+      .def_property_readonly("node", [](const PartView& v) -> py::object {
+        const auto h = v.r.get().parts().frame(v.part);
+        return h != 0 ? v.r.get().nodeView(h) : py::none();
+      }, "the Transform that holds its machine, or None")
+      .def("__getattr__",
+           [](const PartView& v, const std::string& name) -> py::object {
+             const auto& parts = v.r.get().parts();
+             for (const auto& [io, digital] : parts.io(v.part)) {
+               if (io != name) continue;
+               std::string why;
+               const auto value = parts.read(v.part, name, why);
+               if (!value) throw py::value_error(why);
+               if (digital) return py::bool_(*value != 0.0);
+               return py::float_(*value);
+             }
+             throw py::attribute_error("part '" + parts.name(v.part) + "' has no I/O '" + name + "' (it has: " +
+                                       ioList(v) + ")");
+           })
+      .def("__setattr__",
+           [](const PartView& v, const std::string& name, const py::object& value) {
+             const auto& parts = v.r.get().parts();
+             double x = 0.0;
+             if (py::isinstance<py::bool_>(value) || py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value)) {
+               x = value.cast<double>();
+             } else {
+               throw py::type_error("I/O '" + name + "' of part '" + parts.name(v.part) +
+                                    "' takes a bool or a number, got " +
+                                    py::str(py::type::of(value).attr("__name__")).cast<std::string>());
+             }
+             std::string why;
+             bool known = false;
+             for (const auto& [io, digital] : parts.io(v.part)) known = known || io == name;
+             if (!known) {
+               throw py::attribute_error("part '" + parts.name(v.part) + "' has no I/O '" + name + "' (it has: " +
+                                         ioList(v) + ")");
+             }
+             if (!parts.write(v.part, name, x, why)) throw py::value_error(why);
+           })
+      .def("__repr__", [](const PartView& v) {
+        const auto& parts = v.r.get().parts();
+        std::string out = "<part " + parts.name(v.part);
+        const char* sep = ": ";
+        for (const auto& [io, digital] : parts.io(v.part)) {
+          std::string why;
+          const auto value = parts.read(v.part, io, why);
+          out += sep + io + "=" + (!value ? "?" : digital ? (*value != 0 ? "True" : "False") : core::formatDouble(*value));
+          sep = ", ";
+        }
+        return out + ">";
+      });
+}
+
 /// Registers `gdpn_script.Sim`: the running simulation.
 void registerSimView(py::module_& m) {
   py::class_<SimView>(m, "Sim", "The running simulation")
@@ -977,6 +1072,15 @@ void registerSimView(py::module_& m) {
              return ctx.nodeView(n->handle());
            },
            "the scene node at a path")
+      .def("part",
+           [](const SimView& v, const std::string& name) -> py::object {
+             const auto& parts = v.r.get().parts();
+             std::string why = "no part '" + name + "' (the model has none)";
+             const auto part = parts.find ? parts.find(name, why) : std::nullopt;
+             if (!part) throw py::key_error(why);
+             return py::cast(PartView{v.r, *part});
+           },
+           "a part instance by name: its I/O as attributes (sim.part('pusher1').front_limit)")
       .def("transition", [](const SimView& v, const std::string& name) {
         const auto t = v.r.get().netRef().findTransition(name);
         if (!t) throw py::key_error("no transition '" + name + "'");
@@ -1045,6 +1149,7 @@ class Geometries(list):
   registerPlaceView(m);
   registerRandomView(m);
   registerParamsView(m);
+  registerPartView(m);
   registerSimView(m);
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "gdpn/net/kernel.h"
+#include "gdpn/script/engine.h"
 #include "gdpn/physics/world.h"
 #include "gdpn/scene/node.h"
 #include "gdpn/sensors/hub.h"
@@ -45,6 +46,8 @@ class Context {
   virtual std::shared_ptr<const sensors::Image> image(scene::NodeHandle sensor, std::string& why) const = 0;
   /// `sim.params`: the model's parameters, read-only.
   virtual pybind11::object params() = 0;
+  /// The run's parts (its functions empty when the model has none).
+  virtual const PartAccess& parts() const = 0;
 
   /// False once the engine is gone; a view kept past that raises instead of crashing.
   std::shared_ptr<bool> alive = std::make_shared<bool>(true);

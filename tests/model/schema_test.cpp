@@ -93,9 +93,10 @@ TEST(Schema, IoKeysAreTheFourTablesAfterLockstep) {
   EXPECT_EQ(keyNames(Section::Io),
             (std::vector<std::string>{"lockstep", ioTableKey(IoTable::DiscreteInputs), ioTableKey(IoTable::InputRegisters),
                                       ioTableKey(IoTable::Coils), ioTableKey(IoTable::HoldingRegisters)}));
-  EXPECT_EQ(ioEntryKeyNames(IoTable::Coils), (std::vector<std::string>{"place", "node", "field", "on", "off"}));
+  EXPECT_EQ(ioEntryKeyNames(IoTable::Coils),
+            (std::vector<std::string>{"place", "node", "part", "io", "field", "on", "off"}));
   EXPECT_EQ(ioEntryKeyNames(IoTable::InputRegisters),
-            (std::vector<std::string>{"place", "node", "of", "scale", "unit", "type"}));
+            (std::vector<std::string>{"place", "node", "part", "io", "of", "scale", "unit", "type"}));
 }
 
 TEST(Schema, EveryKeyIsDescribed) {
@@ -256,6 +257,7 @@ io:
     0: {node: mast, of: reading, scale: 1000, unit: mm, type: float32}
   coils:
     0: {node: belt, field: speed, on: 0.5, off: 0.25}
+    1: {part: main/i, io: lamp}
   holding_registers:
     0: {place: main/p}
     2: {node: pusher, field: vel1, scale: 10, unit: mm/s, type: int32}
@@ -291,7 +293,7 @@ pages:
       t2: {duration: {normal: [1, 0.1]}}
       t3: {duration: {exponential: 2}}
     instances:
-      i: {type: cell, at: [5, 6], translation: [1, 2, 3], rotation: [0, 0, 1, 90]}
+      i: {type: cell, at: [5, 6], translation: [1, 2, 3], rotation: [0, 0, 1, 90], params: {w: 2}, part: j}
     arcs:
       - {from: p, to: t, kind: test, weight: {d0: 2}, predicate: {d0: "token is not None"}, condition: {c0: "value > 0"}}
 page_types:
@@ -308,6 +310,14 @@ page_types:
       - enter -> work
     scene:
       - Group: {name: g}
+      - Cube: {name: c, size: [=w*2, 1, $w]}
+      - Material: {name: m, shininess: $w}
+    part: {version: 3, group: Cells, picture: cell.png, control: cell_control, controls: other}
+    params:
+      w: {value: 0.5, unit: m, description: "width"}
+    io:
+      lamp: {direction: output, signal: digital, unit: "-", description: "a lamp", node: m, field: emissive, on: [1, 0, =w], off: [0, 0, 0]}
+      eye: {direction: input, signal: analog, node: c, of: reading}
 scene:
   - Group: {name: box}
 scripts:
@@ -347,6 +357,8 @@ std::map<Section, std::vector<std::vector<std::string>>> keysBySection(const std
         }
       }
       for (auto i = page["instances"].begin(); i != page["instances"].end(); ++i) add(Section::Instance, i->second);
+      add(Section::Part, page["part"]);
+      for (auto i = page["io"].begin(); i != page["io"].end(); ++i) add(Section::PartIo, i->second);
       for (const auto& a : page["arcs"]) add(Section::Arc, a);
     }
   }

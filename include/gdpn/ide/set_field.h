@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "gdpn/ide/command.h"
+#include "gdpn/scene/node.h"
 #include "gdpn/scene/types.h"
 #include "gdpn/scene/user_data.h"
 
@@ -30,7 +31,7 @@ class SetFieldCommand final : public Command {
   std::string path_;   // the node
   std::string field_;  // the field's name
   scene::FieldValue value_, old_;
-  std::vector<std::pair<std::uint32_t, std::string>> old_params_;  // the node's parameter bindings before
+  std::vector<scene::Node::Binding> old_params_;  // the node's parameter bindings before
   std::uint64_t drag_;
 };
 

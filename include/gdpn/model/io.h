@@ -53,11 +53,13 @@ struct IoEntry {
   enum class Source : std::uint8_t {
     Place,  ///< `place: NAME`: read, its tokens (a bit: marked); written, a coil's rising edge adds a token, a register sets the tokens
     Node,   ///< `node: PATH` with `of: QUANTITY` (read) or `field: NAME` (written), or `key: KEY` (a KeyboardSensor's key held down)
+    Part,   ///< `part: INSTANCE` with `io: NAME`: one of a part's inputs (read) or outputs (written)
   };
   IoTable table = IoTable::DiscreteInputs;  ///< its table
   std::uint16_t address = 0;                ///< its (first) address, 0-based as on the wire
   Source source = Source::Node;             ///< a place or a node
-  std::string target;                       ///< the place's qualified name or the node's path
+  std::string target;                       ///< the place's qualified name, the node's path or the part instance
+  std::string io;                           ///< a part's: the name of its input or output
   std::string quantity;                     ///< inputs: what is read (`of`: as a signal's, with `active` and `position.z`)
   std::string field;                        ///< coils, holding registers: the field written
   std::string key;                          ///< discrete inputs: a KeyboardSensor's key
@@ -68,7 +70,7 @@ struct IoEntry {
   double off = 0.0;                         ///< coils on a number field: the value for 0
   core::SourceLoc loc;                      ///< where the address is written
   friend bool operator==(const IoEntry& a, const IoEntry& b) {
-    return a.table == b.table && a.address == b.address && a.source == b.source && a.target == b.target &&
+    return a.table == b.table && a.address == b.address && a.source == b.source && a.target == b.target && a.io == b.io &&
            a.quantity == b.quantity && a.field == b.field && a.key == b.key && a.scale == b.scale && a.unit == b.unit &&
            a.type == b.type && a.on == b.on && a.off == b.off;
   }

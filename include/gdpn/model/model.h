@@ -13,6 +13,8 @@
 
 #include "gdpn/core/diagnostics.h"
 #include "gdpn/model/io.h"
+#include "gdpn/model/param.h"
+#include "gdpn/model/part.h"
 #include "gdpn/model/signals.h"
 #include "gdpn/net/spec.h"
 #include "gdpn/scene/node.h"
@@ -36,33 +38,6 @@ struct Settings {
   friend bool operator==(const Settings&, const Settings&) = default;
 };
 
-/// A named value of the `params` section: scripts read it (`sim.params.belt_speed`), fields
-/// refer to it (`speed: $belt_speed`), and a run may set it (`gdpn run --param`).
-struct Param {
-  std::string name;         ///< an identifier
-  double value = 0.0;       ///< in effect: the file's, or what the run set
-  double declared = 0.0;    ///< what the file says (what a saver writes)
-  bool integer = false;     ///< a whole number (written without a point); only whole values
-  std::string unit;         ///< free text for people ("m/s"); not converted
-  std::string description;  ///< free text
-  core::SourceLoc loc;      ///< where it was declared
-  /// Same declaration (the value in effect and the location are not compared).
-  friend bool operator==(const Param& x, const Param& y) {
-    return x.name == y.name && x.declared == y.declared && x.integer == y.integer && x.unit == y.unit &&
-           x.description == y.description;
-  }
-};
-
-/// A parameter set from outside the file: `--param NAME=VALUE`, Python's `params=`.
-struct ParamOverride {
-  std::string name;  ///< the parameter
-  std::string text;  ///< its value as written ("0.8")
-  std::string where = "--param";  ///< what to name in a diagnostic
-};
-
-/// Parses "NAME=VALUE" (a --param argument); nullopt when there is no '='.
-std::optional<ParamOverride> parseParamArgument(const std::string& argument);
-
 /// Everything a model file holds.
 struct Model {
   std::string path;          ///< the file it was read from ("" when made in memory)
@@ -76,10 +51,12 @@ struct Model {
   /// The scene subtrees page types own (their `scene` sections), by page type name; each
   /// instance gets its own copy.
   std::map<std::string, std::shared_ptr<const scene::Scene>> type_scenes;
+  /// The page types that are parts (they have `part`, `params` or `io`), by page type name.
+  std::map<std::string, PartSpec> parts;
 
   /// Same content (the path and source locations are not compared).
   friend bool operator==(const Model& a, const Model& b) {
-    return a.description == b.description && a.settings == b.settings && a.params == b.params && a.signals == b.signals && a.io == b.io && a.net == b.net &&
+    return a.description == b.description && a.settings == b.settings && a.params == b.params && a.signals == b.signals && a.io == b.io && a.net == b.net && a.parts == b.parts &&
            sameScene(a.scene, b.scene) && a.type_scenes.size() == b.type_scenes.size() &&
            std::equal(a.type_scenes.begin(), a.type_scenes.end(), b.type_scenes.begin(),
                       [](const auto& x, const auto& y) { return x.first == y.first && sameScene(x.second, y.second); });

@@ -40,13 +40,16 @@ enum class Section : std::uint8_t {
   Scripts,     ///< `scripts`
   ScriptFile,  ///< a script written as a function in a file
   Duration,    ///< a transition's `duration` written as a law (one key)
+  Part,        ///< a page type's `part`: how the palette shows it
+  PartIo,      ///< one of a page type's `io`: a part's named input or output
 };
 
 /// Every section, in the order of the enum.
 inline constexpr Section kSections[] = {Section::Model,   Section::Settings, Section::Param,      Section::Signal,
                                         Section::Io,      Section::IoEntry,  Section::Page,       Section::PageType,
                                         Section::Place,   Section::Transition, Section::Arc,      Section::Instance,
-                                        Section::Scripts, Section::ScriptFile, Section::Duration};
+                                        Section::Scripts, Section::ScriptFile, Section::Duration,
+                                        Section::Part,    Section::PartIo};
 
 /// What a key's value is.
 enum class ValueType : std::uint8_t {

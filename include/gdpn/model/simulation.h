@@ -28,6 +28,7 @@
 namespace gdpn::model {
 
 class SignalRecorder;
+class PartRun;
 
 /// When a run ends. With neither set, the model's `until` applies, and without that the run
 /// goes on until the net is dead (or it is interrupted).
@@ -207,6 +208,10 @@ class Simulation {
   /// Why the run must end now because the physics failed (StopReason::PhysicsError, its
   /// message naming the body and the model time, s); nullopt while the physics is sound.
   [[nodiscard]] std::optional<RunOutcome> physicsHalt() const;
+  /// The run's parts and their I/O (null when the model has none).
+  [[nodiscard]] PartRun* parts() { return parts_.get(); }
+  /// The run's parts, read-only (null when the model has none).
+  [[nodiscard]] const PartRun* parts() const { return parts_.get(); }
 
  private:
   Simulation() = default;
@@ -249,6 +254,7 @@ class Simulation {
   std::unordered_set<scene::NodeHandle> holders_;  // Transforms spawn made to hold a copy
   std::ostream* trace_out_ = nullptr;
   std::unique_ptr<script::Engine> engine_;
+  std::unique_ptr<PartRun> parts_;
   std::uint64_t seed_ = 1;
   bool started_ = false;
 };

@@ -245,9 +245,19 @@ struct InstanceSpec {
   std::optional<EditorPos> position;  ///< where the editor draws it
   std::array<double, 3> translation{0, 0, 0};     ///< where its copy of the type's scene stands, m
   std::array<double, 4> rotation{0, 0, 1, 0};     ///< how it is turned: axis and degrees
+  /// A number the type declares as a parameter, set for this instance (`params: {length: 3}`).
+  struct Param {
+    std::string name;   ///< the type's parameter
+    double value = 0;   ///< its value here, in the parameter's unit
+    SourceLoc loc;      ///< where it is set
+    friend bool operator==(const Param& a, const Param& b) { return a.name == b.name && a.value == b.value; }
+  };
+  std::vector<Param> params;  ///< the parameters set here, in file order (the others keep the type's)
+  std::string part;           ///< a control pattern's: the part instance on its page it controls
+  SourceLoc part_loc;         ///< where `part` is written
   friend bool operator==(const InstanceSpec& x, const InstanceSpec& y) {
     return x.name == y.name && x.type == y.type && x.position == y.position && x.translation == y.translation &&
-           x.rotation == y.rotation;
+           x.rotation == y.rotation && x.params == y.params && x.part == y.part;
   }
 };
 

@@ -125,9 +125,17 @@ class Node {
   bool is_template = false;
   /// Its user data (datum(), setDatum()).
   UserData data;
-  /// Fields whose value comes from a model parameter (`speed: $belt_speed`): field index ->
-  /// the parameter's name, in field order. The value stays in the field; savers write the name.
-  std::vector<std::pair<std::uint32_t, std::string>> params;
+  /// A field, or one number of a vector field, whose value a parameter gives (`speed:
+  /// $belt_speed`) or an expression of parameters (`translation: [=length/2, 0, 0]`).
+  struct Binding {
+    std::uint32_t field = 0;      ///< the field's index
+    std::int32_t component = -1;  ///< the number within a vector field (0: x); -1: the whole field
+    std::string text;             ///< the parameter's name, or the expression as written ("=length/2")
+    friend auto operator<=>(const Binding&, const Binding&) = default;
+  };
+  /// The fields parameters give, in field order. The value stays in the field; savers write
+  /// the reference.
+  std::vector<Binding> params;
   /// Where each field was written (empty loc for fields left at their default).
   std::vector<core::SourceLoc> field_locs;
   /// Set by the physics for a moving Body: its placement in the world, which then replaces

@@ -51,6 +51,27 @@ struct EngineOptions {
   std::vector<ScriptParam> params;
 };
 
+/// What `sim.part(name)` and a construct's `self.part` reach: the run's parts, each with its
+/// parameters and its named inputs and outputs (the model's PartRun provides them).
+struct PartAccess {
+  /// The part `name` names (its instance's name, or qualified); nullopt with `why`.
+  std::function<std::optional<std::size_t>(const std::string& name, std::string& why)> find;
+  /// The part the construct with qualified name `construct` belongs to or controls, if any.
+  std::function<std::optional<std::size_t>(const std::string& construct)> of_construct;
+  /// A part's qualified name (`main/pusher1`).
+  std::function<std::string(std::size_t)> name;
+  /// A part's I/O, in declaration order: name and whether it is digital.
+  std::function<std::vector<std::pair<std::string, bool>>(std::size_t)> io;
+  /// A part's parameters as this instance has them.
+  std::function<std::vector<ScriptParam>(std::size_t)> params;
+  /// The Transform that holds its machine (0: none).
+  std::function<scene::NodeHandle(std::size_t)> frame;
+  /// An I/O's value now; nullopt with `why`.
+  std::function<std::optional<double>(std::size_t, const std::string&, std::string& why)> read;
+  /// Sets an output; false with `why`.
+  std::function<bool(std::size_t, const std::string&, double, std::string& why)> write;
+};
+
 /// What scripts reach outside the net.
 struct EngineCallbacks {
   std::function<void(const std::string&)> log;  ///< sim.log(...) text
@@ -65,6 +86,8 @@ struct EngineCallbacks {
   std::function<const sensors::Reading&(scene::NodeHandle)> reading;
   /// the picture of a camera sensor at its latest sample (null with why when there is none)
   std::function<std::shared_ptr<const sensors::Image>(scene::NodeHandle, std::string&)> image;
+  /// the run's parts (empty functions: the model has none)
+  PartAccess parts;
 };
 
 /// Why the engine halted.

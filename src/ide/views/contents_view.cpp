@@ -44,7 +44,7 @@ std::string durationText(const net::Duration& d) {
   // a number that comes from a model parameter shows as `$name (value)`
   const auto num = [&](std::size_t k) {
     const std::string value = core::formatDouble(k == 0 ? d.a : d.b);
-    return d.params[k].empty() ? value : "$" + d.params[k] + " (" + value + ")";
+    return d.params[k].empty() ? value : model::referenceText(d.params[k]) + " (" + value + ")";
   };
   switch (d.law) {
     case net::Duration::Law::Fixed: return num(0) + " s";

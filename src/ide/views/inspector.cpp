@@ -330,14 +330,18 @@ void nodeInspector(App& app, const std::string& path, nlohmann::json& report) {
     const auto range = rangeText(d);
     // a field that names a model parameter says which, where its range would be
     const auto bound = std::find_if(node->params.begin(), node->params.end(),
-                                    [i](const auto& b) { return b.first == static_cast<std::uint32_t>(i); });
-    const std::string param = bound == node->params.end() ? std::string() : bound->second;
+                                    [i](const auto& b) { return b.field == static_cast<std::uint32_t>(i); });
+    const std::string param = bound == node->params.end() ? std::string() : bound->text;
     ImGui::AlignTextToFramePadding();
     if (!param.empty()) {
-      ImGui::Text("= $%s", param.c_str());
+      const std::string ref = model::referenceText(param);
+      ImGui::Text("%s%s", param[0] == '=' ? "" : "= ", ref.c_str());
       if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("the value of parameter '%s' (the params section); a value typed here replaces it",
-                          param.c_str());
+        const std::string tip = param[0] == '='
+                                    ? "computed from the part's parameters; a value typed here replaces it"
+                                    : "the value of parameter '" + param +
+                                          "' (the params section); a value typed here replaces it";
+        ImGui::SetTooltip("%s", tip.c_str());
       }
     } else {
       ImGui::TextDisabled("%s", range.c_str());
