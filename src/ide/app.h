@@ -106,6 +106,7 @@ struct WorldViewState {
   int level = 0;                    ///< how far the resolution is lowered while running (kWorldScales)
   double level_age = 0;             ///< wall seconds since `level` last changed
   std::vector<std::string> pressed_keys;  ///< keys delivered to the sensors (report)
+  std::vector<std::string> clicked;       ///< the mouse sensors the last click counts for (report)
   std::array<bool, 512> key_was_down{};   ///< the keys last frame, by GLFW code
   core::Vec3 last_eye{1e300, 0, 0};       ///< the viewpoint last sent to the sensors, m
   std::unique_ptr<render::Renderer> renderer;  ///< draws the scene

@@ -173,6 +173,25 @@ void RunControl::push(sensors::InputEvent event) {
   if (session_) session_->push(std::move(event));
 }
 
+sensors::ClickTarget RunControl::click(const core::Ray& ray) {
+  if (!session_ || mode_ == RunMode::Edit || session_->simulation().plant() == nullptr) return {};
+  // what the sensors will decide at the next step, for the status line
+  auto target = sensors::clickTarget(session_->simulation().plant()->root(), ray);
+  sensors::InputEvent event;
+  event.t = time();
+  event.kind = sensors::InputEvent::Kind::Click;
+  event.ray = ray;
+  session_->push(std::move(event));
+  if (!target.sensors.empty()) {
+    message_ = "clicked " + target.hit.shape->path() + ":";
+    for (std::size_t i = 0; i < target.sensors.size(); ++i) {
+      message_ += (i == 0 ? " " : ", ") + target.sensors[i]->path();
+    }
+    message_ += target.sensors.size() == 1 ? " feels it at the next step" : " feel it at the next step";
+  }
+  return target;
+}
+
 double RunControl::time() const { return session_ ? session_->simulation().kernel().now() : 0.0; }
 
 std::int64_t RunControl::steps() const { return session_ ? session_->simulation().kernel().steps() : 0; }

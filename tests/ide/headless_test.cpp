@@ -717,6 +717,44 @@ TEST_F(HeadlessIde, AKeyboardSensorHearsTheWorldViewsKeysWhileTheViewerIsInside)
   EXPECT_EQ(j["inspector"]["tokens"], 0);
 }
 
+TEST_F(HeadlessIde, AClickOnAButtonInTheWorldViewDuringARunIsFeltByItsMouseSensor) {
+  // a Body holding a Cube and a MouseSensor, in the middle of the view; `press` fires on a click
+  const auto model = write("button.gdpn.yaml", ide::testing::kButtonModel);
+  const std::string click = "- click: [world, center]\n";
+  // the run started (a step), a click on the cap: the status line names the sensor that will
+  // feel it, and the selection stays
+  auto r = replayOn(model, "- press: step\n" + click);
+  EXPECT_EQ(r["status"]["message"], "clicked button/cap: button/mouse feels it at the next step") << r["status"].dump();
+  EXPECT_EQ(r["world"]["clicked"], nlohmann::json::array({"button/mouse"}));
+  EXPECT_EQ(r["selection"]["kind"], "none");
+  EXPECT_EQ(r["net_view"]["tokens"]["main/pressed"], 0);
+  const auto eye = r["world"]["eye"];
+  // at the next step boundary the sensor counts it, and press fires on c0.clicks > 0
+  r = replayOn(model, "- press: step\n" + click + "- steps: 2\n- select: button/mouse\n");
+  EXPECT_EQ(r["inspector"]["reading"]["clicks"], 1) << r["inspector"].dump();
+  EXPECT_EQ(r["net_view"]["tokens"]["main/pressed"], 1) << r["net_view"].dump();
+  EXPECT_EQ(r["net_view"]["tokens"]["main/ready"], 0);
+
+  // a click beside the cap, and a drag that starts on it (an orbit), count nothing
+  const auto origin = r["world"]["origin"];
+  const auto center = r["world"]["center"];
+  const auto beside = clickAt(nlohmann::json::array({origin[0].get<int>() + 12, origin[1].get<int>() + 12}));
+  const auto orbit = "- drag: {from: [world, center], to: [" + std::to_string(center[0].get<int>() + 80) + ", " +
+                     std::to_string(center[1].get<int>()) + "]}\n";
+  r = replayOn(model, "- press: step\n" + beside + orbit + "- steps: 2\n- select: button/mouse\n");
+  EXPECT_EQ(r["inspector"]["reading"]["clicks"], 0) << r["inspector"].dump();
+  EXPECT_EQ(r["net_view"]["tokens"]["main/pressed"], 0);
+  EXPECT_EQ(r["world"]["clicked"], nlohmann::json::array());
+  EXPECT_NE(r["world"]["eye"], eye);  // the drag orbited
+
+  // in edit mode a click on the cap selects it, as before, and the run made at Step never
+  // sees it
+  r = replayOn(model, click + "- steps: 2\n");
+  EXPECT_EQ(r["selection"]["name"], "button/cap");
+  EXPECT_EQ(r["world"]["clicked"], nlohmann::json::array());
+  EXPECT_EQ(r["net_view"]["tokens"]["main/pressed"], 0);
+}
+
 TEST_F(HeadlessIde, TheNetViewShowsPickupRedWhileItOccursAndTheMarkingOfTheRun) {
   auto r = replay("- break: {starts: factory/pickup}\n- press: fastest\n- frames: 5\n");
   EXPECT_EQ(r["run"]["message"], "stopped at breakpoint: starts factory/pickup");

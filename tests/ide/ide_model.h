@@ -47,4 +47,31 @@ pages:
       - manual -> landed
 )Y";
 
+// a push button: a Body holding a Cube and a MouseSensor, seen by the camera straight on; a
+// click on it lets `press` fire once
+inline const std::string kButtonModel = R"Y(gdpn: 1
+settings: {dt: 0.01, seed: 1}
+scene:
+  - World: {gravity: [0, 0, 0]}
+  - Light: {}
+  - Camera: {name: view, position: [3, -3, 2], target: [0, 0, 0]}
+  - Body:
+      name: button
+      children:
+        - Cube: {name: cap, size: [0.5, 0.5, 0.5]}
+        - MouseSensor: {name: mouse}
+pages:
+  main:
+    places:
+      panel: {sensors: {c0: button/mouse}}
+      ready: {tokens: 1}
+      pressed: {}
+    transitions:
+      press: {}
+    arcs:
+      - {from: panel, to: press, condition: 'c0.clicks > 0'}
+      - ready -> press
+      - press -> pressed
+)Y";
+
 }  // namespace gdpn::ide::testing

@@ -163,7 +163,100 @@ TEST_F(RunControlTest, ResetTakesTheEditedDocument) {
   EXPECT_DOUBLE_EQ(drop->localPose().position.z, 9.0);
 }
 
+/// The push button (kButtonModel): clicks of the world view reach its MouseSensor through the run.
+class RunControlClick : public TempDirTest {
+ protected:
+  void SetUp() override {
+    TempDirTest::SetUp();
+    core::Diagnostics diags;
+    doc_ = Document::open(write("button.gdpn.yaml", ide::testing::kButtonModel), diags);
+    ASSERT_TRUE(doc_) << diags.str();
+    ASSERT_TRUE(run_.open(*doc_, diags)) << diags.str();
+  }
+  /// The pick ray from the model's camera toward `to` (world frame, m).
+  static core::Ray rayTo(core::Vec3 to) {
+    const core::Vec3 eye{3, -3, 2};
+    const auto d = to - eye;
+    return {eye, d * (1.0 / d.length())};
+  }
+  std::int64_t tokens(const std::string& place) const {
+    const auto& sim = run_.session()->simulation();
+    return sim.kernel().placeTokens(*sim.net().findPlace(place));
+  }
+  /// The `clicks` channel of the run's button/mouse.
+  double clicks() const {
+    const auto& sim = run_.session()->simulation();
+    const auto* sensor = sim.plant()->find("button/mouse");
+    return sim.reading(sensor->handle()).number("clicks");
+  }
+  std::unique_ptr<Document> doc_;
+  RunControl run_;
+};
+
+TEST_F(RunControlClick, AClickOnTheButtonDuringARunIsFeltAtTheNextStep) {
+  run_.step();
+  const auto target = run_.click(rayTo({0, 0, 0}));
+  ASSERT_NE(target.hit.shape, nullptr);
+  EXPECT_EQ(target.hit.shape->path(), "button/cap");
+  ASSERT_EQ(target.sensors.size(), 1U);
+  EXPECT_EQ(target.sensors[0]->path(), "button/mouse");
+  EXPECT_EQ(run_.message(), "clicked button/cap: button/mouse feels it at the next step");
+  // nothing happens before the step boundary
+  EXPECT_EQ(clicks(), 0);
+  EXPECT_EQ(tokens("main/pressed"), 0);
+  run_.step();
+  EXPECT_EQ(clicks(), 1);
+  run_.step();
+  EXPECT_EQ(tokens("main/pressed"), 1);
+}
+
+TEST_F(RunControlClick, AClickThatMissesTheButtonIsNotCounted) {
+  run_.step();
+  const auto target = run_.click(rayTo({0, 0, 3}));
+  EXPECT_EQ(target.hit.shape, nullptr);
+  EXPECT_TRUE(target.sensors.empty());
+  EXPECT_EQ(run_.message(), "");
+  run_.runSteps(3);
+  EXPECT_EQ(clicks(), 0);
+  EXPECT_EQ(tokens("main/pressed"), 0);
+}
+
+TEST_F(RunControlClick, AClickInEditModeDoesNotReachTheRun) {
+  // nothing runs yet: the click selects in the world view, and the run made later never sees it
+  EXPECT_EQ(run_.mode(), RunMode::Edit);
+  const auto target = run_.click(rayTo({0, 0, 0}));
+  EXPECT_EQ(target.hit.shape, nullptr);
+  EXPECT_TRUE(target.sensors.empty());
+  run_.runSteps(3);
+  EXPECT_EQ(clicks(), 0);
+  EXPECT_EQ(tokens("main/pressed"), 0);
+}
+
 #ifdef GDPN_CLI
+TEST_F(RunControlClick, AClickGivesTheTraceOfGdpnRunsInputClickAtTheNextStep) {
+  // gdpn run --input with the click at 0.06 s; the IDE's click at 0.05 s is felt at the step
+  // that ends at 0.06 s
+  const auto model = (dir_ / "button.gdpn.yaml").string();
+  const auto input = write("clicks.yaml", "- {t: 0.06, click: {from: [3, -3, 2], to: [0, 0, 0]}}\n");
+  const auto trace = (dir_ / "cli.jsonl").string();
+  const auto r = gdpn::testing::runGdpn("run '" + model + "' --until 0.5 --input '" + input + "' --trace '" + trace + "'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  std::ifstream in(trace);
+  std::stringstream cli;
+  cli << in.rdbuf();
+  ASSERT_NE(cli.str().find("press"), std::string::npos) << cli.str();
+
+  run_.step();
+  core::Diagnostics diags;
+  std::ostringstream ide;
+  run_.session()->traceTo(ide);
+  ASSERT_TRUE(run_.reset(diags)) << diags.str();
+  run_.runSteps(5);
+  (void)run_.click(rayTo({0, 0, 0}));
+  run_.runSteps(45);
+  EXPECT_EQ(ide.str(), cli.str());
+}
+
 TEST_F(RunControlTest, ResetThenRunGivesTheSameTraceAsGdpnRun) {
   const auto model = (dir_ / "bin.gdpn.yaml").string();
   const auto trace = (dir_ / "cli.jsonl").string();

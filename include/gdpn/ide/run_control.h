@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "gdpn/core/diagnostics.h"
+#include "gdpn/core/math.h"
+#include "gdpn/sensors/mouse_sensor.h"
 #include "gdpn/session/session.h"
 
 namespace gdpn::ide {
@@ -80,6 +82,12 @@ class RunControl {
   void advance(double wall_seconds);
   /// Delivers a live input event (a key or a click of the world view) to the sensors.
   void push(sensors::InputEvent event);
+  /// A click of the world view along pick ray `ray` (world frame) while a run is going or
+  /// paused: handed to the run as an input event at the current time, so that the
+  /// MouseSensors count it at the next step, as they count `gdpn run --input`'s clicks. Returns
+  /// what the ray hits in the run's plant now and the sensors that will count it; message()
+  /// names them. In edit mode nothing runs: nothing is handed over, and nothing is returned.
+  sensors::ClickTarget click(const core::Ray& ray);
 
   /// The problems found when the run was last made from the document (empty when it compiled).
   [[nodiscard]] const core::Diagnostics& buildDiagnostics() const { return diags_; }

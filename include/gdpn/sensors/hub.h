@@ -42,7 +42,8 @@ class Imager {
   virtual bool render(const scene::Scene& scene, const scene::Node& camera, Image& out, std::string& why) = 0;
 };
 
-/// An input event of a headless run (from `gdpn run --input`; later from the IDE).
+/// An input event for the keyboard and mouse sensors: from `gdpn run --input`, or live from the
+/// IDE's world view (`Session::push`), delivered at the next step at or after its time.
 struct InputEvent {
   double t = 0;               ///< when, seconds
   enum class Kind : std::uint8_t { Key, Click, Viewpoint } kind = Kind::Key;

@@ -1,6 +1,6 @@
 // The world view: the plant through the renderer into an offscreen texture shown as an image;
 // orbit (left drag), pan (right or middle drag), zoom (wheel), pick (click), standard views,
-// the scene's cameras; keys and clicks go to the keyboard and mouse sensors.
+// the scene's cameras; keys and, during a run, clicks go to the keyboard and mouse sensors.
 
 #include <imgui.h>
 
@@ -140,7 +140,10 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
   const int w = std::max(16, static_cast<int>(size.x));
   const int h = std::max(16, static_cast<int>(size.y));
   const auto origin = ImGui::GetCursorScreenPos();
-  report = {{"size", {w, h}}, {"camera", app.world.camera_node.empty() ? "free" : app.world.camera_node}, {"origin", {origin.x, origin.y}}};
+  report = {{"size", {w, h}},
+            {"camera", app.world.camera_node.empty() ? "free" : app.world.camera_node},
+            {"origin", {origin.x, origin.y}},
+            {"center", {std::floor(origin.x + static_cast<float>(w) / 2), std::floor(origin.y + static_cast<float>(h) / 2)}}};
   if (s == nullptr || !app.world.renderer) {
     ImGui::TextDisabled("(nothing to draw)");
     endPanel();
@@ -223,23 +226,25 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
     app.world.orbit.zoom(static_cast<double>(io.MouseWheel));
   }
 
-  // a click (no drag) picks a shape and tells the mouse sensors
+  // a click (no drag): during a run (going or paused) the run gets it as an input event, and a
+  // click that a mouse sensor counts operates the plant; any other click picks a shape
   if (hovered && !manipulating && ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 16) {
     const auto ray = OrbitCamera::from(camera).ray(static_cast<double>(io.MousePos.x - origin.x),
                                                    static_cast<double>(io.MousePos.y - origin.y), w, h);
-    const auto hit = scene::pick(s->root(), ray);
-    if (hit.shape != nullptr) {
+    // in a run the world view shows the run's plant, where the run's own pick is the view's
+    const auto target = app.run().click(ray);
+    std::vector<std::string> felt;
+    for (const auto* sensor : target.sensors) felt.push_back(sensor->path());
+    const auto hit = app.run().mode() == RunMode::Edit ? scene::pick(s->root(), ray) : target.hit;
+    // a click a sensor counts keeps the selection (the run's status line names the sensor)
+    if (felt.empty() && hit.shape != nullptr) {
       app.selectNode(hit.shape->path());
       app.message = "picked " + hit.shape->path();
-    } else {
+    } else if (felt.empty()) {
       app.document().select({});
     }
-    sensors::InputEvent click;
-    click.t = app.run().time();
-    click.kind = sensors::InputEvent::Kind::Click;
-    click.ray = ray;
-    app.run().push(click);
     report["picked"] = hit.shape != nullptr ? hit.shape->path() : "";
+    app.world.clicked = std::move(felt);
   }
 
   // keys typed over the world view go to the keyboard sensors, with where the viewer is
@@ -275,6 +280,7 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
   report["highlighted"] = !options.selection.empty();
   report["highlighted_nodes"] = options.selection.size();
   report["keys"] = app.world.pressed_keys;
+  report["clicked"] = app.world.clicked;
   report["sensors"] = app.world.show_sensors;
   report["joints"] = app.world.show_joints;
   report["contacts"] = options.contacts.size();
