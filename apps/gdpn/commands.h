@@ -26,6 +26,8 @@ Subcommand addRender(CLI::App& app);
 Subcommand addRecord(CLI::App& app);
 /// `gdpn convert IN OUT`: PNML to a model and back, or a mesh to a model.
 Subcommand addConvert(CLI::App& app);
+/// `gdpn parts`: the parts library; a model's parts added, mapped and updated.
+Subcommand addParts(CLI::App& app);
 /// `gdpn ide MODEL`: the IDE, when it was built in.
 Subcommand addIde(CLI::App& app);
 

@@ -103,13 +103,12 @@ std::unique_ptr<PartRun> PartRun::create(Simulation& sim, std::vector<PlacedPart
       b.part = part;
       b.spec = &io;
       std::string why;
-      const bool input = io.direction == IoDirection::Input;
-      const auto probe = nodeProbe(sim, path, input ? io.of : io.field, why);
-      if (!probe) {
-        fail(why);
-        continue;
-      }
-      if (input) {
+      if (io.direction == IoDirection::Input) {
+        const auto probe = nodeProbe(sim, path, io.of, why);
+        if (!probe) {
+          fail(why);
+          continue;
+        }
         if (probe->width() != 1) {
           fail("'" + io.of + "' is three numbers: name one axis (" + io.of + ".z)");
           continue;
@@ -118,16 +117,21 @@ std::unique_ptr<PartRun> PartRun::create(Simulation& sim, std::vector<PlacedPart
         run->bound_.push_back(std::move(b));
         continue;
       }
-      const scene::Node* node = sim.plant()->resolve(probe->node);
-      const auto index = node->type().fieldIndex(io.field);
-      if (index < 0) {
-        fail("a " + node->type().name + " has no field '" + io.field + "'");
+      const scene::Node* node = sim.plant() ? sim.plant()->find(path) : nullptr;
+      if (node == nullptr) {
+        fail("its scene has no node '" + io.node + "'");
         continue;
       }
-      b.node = probe->node;
+      const auto index = node->type().fieldIndex(io.field);
+      if (index < 0) {
+        std::vector<std::string> names;
+        for (const auto* f : node->type().fields) names.push_back(f->name);
+        fail("a " + node->type().name + " has no field '" + io.field + "'" + core::didYouMean(io.field, names));
+        continue;
+      }
+      b.node = node->handle();
       b.field = static_cast<std::size_t>(index);
       b.kind = node->type().fields[b.field]->kind;
-      b.probe = *probe;
       if (io.signal == IoSignal::Digital) {
         const bool vector = b.kind == scene::FieldKind::Vec3 || b.kind == scene::FieldKind::Color;
         const auto on = valueOf(io.on.empty() ? std::vector<std::string>(vector ? 0 : 1, "1") : io.on, b.kind, lookup, why);
@@ -219,10 +223,14 @@ const PartRun::Bound* PartRun::bound(std::size_t part, const std::string& io, st
 }
 
 double PartRun::plantValue(const Bound& b) const {
-  if (b.spec->direction == IoDirection::Output && b.spec->signal == IoSignal::Digital) {
+  if (b.spec->direction == IoDirection::Output) {
     const scene::Node* node = sim_->plant()->resolve(b.node);
     if (node == nullptr) return 0.0;
-    return node->value(b.field) == b.on ? 1.0 : 0.0;
+    if (b.spec->signal == IoSignal::Digital) return node->value(b.field) == b.on ? 1.0 : 0.0;
+    const scene::FieldValue v = scene::convertAngle(*node, b.field, node->value(b.field), sim_->model().settings.angles, false);
+    if (const auto* d = std::get_if<double>(&v)) return *d;
+    if (const auto* i = std::get_if<std::int64_t>(&v)) return static_cast<double>(*i);
+    return 0.0;
   }
   double v = 0.0;
   if (!readProbe(*sim_, b.probe, &v)) return 0.0;

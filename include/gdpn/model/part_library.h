@@ -1,0 +1,96 @@
+#pragma once
+/// \file
+/// The parts library: part files found along a search path, copied into models that use
+/// them, and offered again when the library holds a newer version. The IDE's palette, `gdpn
+/// parts` and the Python module all call these.
+///
+/// A part file is a model file (`*.gdpn.yaml`) whose page types include parts (page types with
+/// a `part` section); it may hold a demo page, which is never copied. A model keeps a copy of
+/// every part type it uses (with its version), so it opens and runs without the library.
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gdpn/core/diagnostics.h"
+#include "gdpn/model/model.h"
+
+namespace gdpn::model {
+
+/// A part the library offers.
+struct LibraryPart {
+  std::string name;         ///< its page type's name: `belt_conveyor`
+  std::string file;         ///< the part file that holds it
+  std::string description;  ///< its page type's description
+  std::string picture;      ///< its picture's path ("" when the file names none or it is missing)
+  PartSpec spec;            ///< version, group, parameters, I/O
+  bool pattern = false;     ///< a control pattern (the palette lists parts, not patterns)
+};
+
+/// The folders parts are looked for in, first first: `model_dir` (the model's own folder, when
+/// not empty), `$XDG_DATA_HOME/gdpn/parts` (`~/.local/share/gdpn/parts`), each of
+/// `$XDG_DATA_DIRS` + `/gdpn/parts` (`/usr/local/share:/usr/share`), the install prefix's
+/// `share/gdpn/parts`, then the source tree's `parts/` (the build's own library).
+std::vector<std::string> partSearchPath(const std::string& model_dir);
+
+/// Every part in the part files of `path` (each folder searched with its subfolders, except
+/// `model_dir`'s own files, read without descending), sorted by group then name; where two
+/// folders hold a part of one name, the earlier folder's wins. A file that does not load is a
+/// warning in `diags` and skipped. `skip` is a file not to read (the model itself).
+std::vector<LibraryPart> scanParts(const std::vector<std::string>& path, core::Diagnostics& diags,
+                                   const std::string& skip = {});
+
+/// The part named `name` in `parts`, or null.
+const LibraryPart* findLibraryPart(const std::vector<LibraryPart>& parts, const std::string& name);
+
+/// Copies page type `name` of `part`'s file into `model`, with its control pattern and every
+/// page type they instantiate, unless the model holds them already. False with `why` when the
+/// file does not load, or when the model holds a different page type of one of these names
+/// that is not an older version of the same part (update it first).
+bool copyPartType(Model& model, const LibraryPart& part, std::string& why);
+
+/// A free instance name on `page` for a new instance of `type`: `type` with the first number
+/// from 1 not yet taken (`belt_conveyor1`), or `prefix` + number when given.
+std::string freeInstanceName(const Model& model, const std::string& page, const std::string& prefix);
+
+/// Adds part `part` to page `page` of `model` (a new page when there is none of that name):
+/// its type copied in (copyPartType), an instance named `name` (or a free name after the part)
+/// standing at `translation` (m) turned by `angle` degrees about z, and, with `control`, an
+/// instance of its control pattern bound to it (named after it: `pusher1_control`). Returns
+/// the new instances' names, the part's first; empty with `why` when it cannot.
+std::vector<std::string> placePart(Model& model, const std::string& page, const LibraryPart& part,
+                                   const std::array<double, 3>& translation, double angle, bool control,
+                                   std::string& why, const std::string& name = {});
+
+/// Maps every I/O of part instance `instance` (its name on `page`) into the `io` section at
+/// the first free addresses of their tables (a digital input in `discrete_inputs`, an analogue
+/// one in `input_registers` as a float32, a digital output in `coils`, an analogue one in
+/// `holding_registers` as a float32), skipping those already mapped. Returns the entries
+/// added; empty with `why` when there is no such part instance.
+std::vector<IoEntry> mapPartIo(Model& model, const std::string& page, const std::string& instance, std::string& why);
+
+/// What a newer version of a part changes for a model that uses an older one.
+struct PartUpdate {
+  std::string name;                   ///< the part type
+  int from = 0;                       ///< the model's version
+  int to = 0;                         ///< the library's
+  std::string file;                   ///< the library's file
+  std::vector<std::string> added;     ///< I/O the new version adds
+  std::vector<std::string> removed;   ///< I/O it no longer has
+  std::vector<std::string> changed;   ///< I/O whose direction, signal, unit or binding changed
+  std::vector<std::string> params_added;    ///< parameters it adds
+  std::vector<std::string> params_removed;  ///< parameters it no longer has
+};
+
+/// The parts of `model` the library holds in a newer version.
+std::vector<PartUpdate> partUpdates(const Model& model, const std::vector<LibraryPart>& parts);
+
+/// Replaces `model`'s copy of the part type `update.name` (and its control pattern) by the
+/// library's; instance parameters the new version lacks are dropped. Uses of removed I/O (in
+/// the `io` section) become errors at their location in `diags` when the model is checked;
+/// their list is returned in `uses` ("io.coils.3: pusher1.extend"). False with `why` when the
+/// library's file does not load.
+bool applyPartUpdate(Model& model, const PartUpdate& update, std::vector<std::string>& uses, std::string& why);
+
+}  // namespace gdpn::model

@@ -1,0 +1,422 @@
+// The parts library: part files found along a search path, copied into models, updated.
+
+#include "gdpn/model/part_library.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <set>
+
+#include "gdpn/core/text.h"
+
+namespace gdpn::model {
+namespace fs = std::filesystem;
+
+namespace {
+
+/// `$name`, or `fallback` when it is unset or empty.
+std::string env(const char* name, const std::string& fallback) {
+  const char* v = std::getenv(name);
+  return v && *v ? std::string(v) : fallback;
+}
+
+/// The part files in `dir` (with its subfolders when `deep`), in path order.
+std::vector<fs::path> partFiles(const fs::path& dir, bool deep) {
+  std::vector<fs::path> out;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return out;
+  const auto take = [&](const fs::directory_entry& e) {
+    const std::string name = e.path().filename().string();
+    std::error_code ignored;
+    if (e.is_regular_file(ignored) && name.size() > std::string_view(kModelSuffix).size() &&
+        name.ends_with(kModelSuffix)) {
+      out.push_back(e.path());
+    }
+  };
+  if (deep) {
+    for (fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec), end;
+         !ec && it != end; it.increment(ec)) {
+      take(*it);
+    }
+  } else {
+    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) take(*it);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+/// The page type `name` of `model`, or null.
+const net::PageSpec* pageType(const Model& model, const std::string& name) {
+  for (const auto& t : model.net.page_types) {
+    if (t.name == name) return &t;
+  }
+  return nullptr;
+}
+
+/// The page types of `file` that part `name` brings: itself, its control patterns, and what
+/// they instantiate, in the file's order.
+std::vector<std::string> typesOf(const Model& file, const std::string& name) {
+  std::set<std::string> want;
+  std::function<void(const std::string&)> add = [&](const std::string& type) {
+    const net::PageSpec* t = pageType(file, type);
+    if (!t || !want.insert(type).second) return;
+    for (const auto& i : t->instances) add(i.type);
+  };
+  add(name);
+  for (const auto& [type, spec] : file.parts) {
+    if (spec.controls == name) add(type);
+  }
+  if (const auto it = file.parts.find(name); it != file.parts.end() && !it->second.control.empty()) {
+    add(it->second.control);
+  }
+  std::vector<std::string> out;
+  for (const auto& t : file.net.page_types) {
+    if (want.contains(t.name)) out.push_back(t.name);
+  }
+  return out;
+}
+
+/// Copies page type `name` (its net, scene and part section) from `from` into `to`, replacing
+/// one of that name.
+void copyType(Model& to, const Model& from, const std::string& name) {
+  const net::PageSpec* t = pageType(from, name);
+  auto it = std::find_if(to.net.page_types.begin(), to.net.page_types.end(),
+                         [&](const net::PageSpec& p) { return p.name == name; });
+  if (it != to.net.page_types.end()) *it = *t;
+  else to.net.page_types.push_back(*t);
+  if (auto s = from.type_scenes.find(name); s != from.type_scenes.end()) to.type_scenes[name] = s->second;
+  else to.type_scenes.erase(name);
+  if (auto p = from.parts.find(name); p != from.parts.end()) to.parts[name] = p->second;
+  else to.parts.erase(name);
+}
+
+/// Loads a part file; nullopt and `why` (its first error) when it does not load.
+std::optional<Model> loadPartFile(const std::string& file, std::string& why) {
+  core::Diagnostics diags;
+  auto m = loadModel(file, diags);
+  if (!m) {
+    why = diags.all().empty() ? file + ": cannot be read" : diags.all().front().str();
+    return std::nullopt;
+  }
+  return m;
+}
+
+}  // namespace
+
+std::vector<std::string> partSearchPath(const std::string& model_dir) {
+  std::vector<std::string> out;
+  if (!model_dir.empty()) out.push_back(model_dir);
+  const std::string home = env("HOME", "");
+  const std::string data_home = env("XDG_DATA_HOME", home.empty() ? std::string() : home + "/.local/share");
+  if (!data_home.empty()) out.push_back(data_home + "/gdpn/parts");
+  const std::string dirs = env("XDG_DATA_DIRS", "/usr/local/share:/usr/share");
+  std::size_t begin = 0;
+  while (begin <= dirs.size()) {
+    const auto end = dirs.find(':', begin);
+    const std::string d = dirs.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+    if (!d.empty()) out.push_back(d + "/gdpn/parts");
+    if (end == std::string::npos) break;
+    begin = end + 1;
+  }
+#ifdef GDPN_PARTS_INSTALL_DIR
+  out.emplace_back(GDPN_PARTS_INSTALL_DIR);
+#endif
+#ifdef GDPN_PARTS_SOURCE_DIR
+  out.emplace_back(GDPN_PARTS_SOURCE_DIR);
+#endif
+  // each folder once, at its first place
+  std::vector<std::string> unique;
+  for (auto& d : out) {
+    if (std::find(unique.begin(), unique.end(), d) == unique.end()) unique.push_back(std::move(d));
+  }
+  return unique;
+}
+
+std::vector<LibraryPart> scanParts(const std::vector<std::string>& path, core::Diagnostics& diags,
+                                   const std::string& skip) {
+  std::vector<LibraryPart> out;
+  std::set<std::string> seen;
+  std::error_code ec;
+  const fs::path skipped = skip.empty() ? fs::path() : fs::weakly_canonical(skip, ec);
+  for (std::size_t k = 0; k < path.size(); ++k) {
+    // the model's own folder (the first, when a model is open) is not searched below
+    const bool deep = !(k == 0 && path.size() > 1 && !skip.empty());
+    for (const auto& file : partFiles(path[k], deep)) {
+      if (!skipped.empty() && fs::weakly_canonical(file, ec) == skipped) continue;
+      core::Diagnostics mine;
+      auto m = loadModel(file.string(), mine);
+      if (!m) {
+        const auto& first = mine.all().empty() ? core::Diagnostic{} : mine.all().front();
+        diags.warning(first.loc.line > 0 ? first.loc : core::SourceLoc{file.string(), 0, 0},
+                      "part file skipped: " + first.message);
+        continue;
+      }
+      for (const auto& [name, spec] : m->parts) {
+        if (!spec.listed || !seen.insert(name).second) continue;
+        LibraryPart p;
+        p.name = name;
+        p.file = file.string();
+        p.spec = spec;
+        p.pattern = !spec.controls.empty();
+        if (const net::PageSpec* t = pageType(*m, name)) p.description = t->description;
+        if (!spec.picture.empty()) {
+          const fs::path pic = file.parent_path() / spec.picture;
+          if (fs::is_regular_file(pic, ec)) p.picture = pic.string();
+        }
+        out.push_back(std::move(p));
+      }
+    }
+  }
+  std::stable_sort(out.begin(), out.end(), [](const LibraryPart& a, const LibraryPart& b) {
+    return a.spec.group != b.spec.group ? a.spec.group < b.spec.group : a.name < b.name;
+  });
+  return out;
+}
+
+const LibraryPart* findLibraryPart(const std::vector<LibraryPart>& parts, const std::string& name) {
+  for (const auto& p : parts) {
+    if (p.name == name) return &p;
+  }
+  return nullptr;
+}
+
+bool copyPartType(Model& model, const LibraryPart& part, std::string& why) {
+  const auto file = loadPartFile(part.file, why);
+  if (!file) return false;
+  const auto types = typesOf(*file, part.name);
+  if (types.empty()) {
+    why = part.file + " holds no page type '" + part.name + "'";
+    return false;
+  }
+  std::vector<std::string> missing;
+  for (const auto& t : types) {
+    const net::PageSpec* mine = pageType(model, t);
+    if (!mine) {
+      missing.push_back(t);
+      continue;
+    }
+    const auto theirs = file->parts.find(t);
+    const auto ours = model.parts.find(t);
+    if (theirs == file->parts.end() || ours == model.parts.end()) {
+      why = "the model has a page type '" + t + "' of its own: rename it to use part '" + part.name + "'";
+      return false;
+    }
+    if (ours->second.version < theirs->second.version) {
+      why = "the model uses version " + std::to_string(ours->second.version) + " of '" + t + "'; the library has " +
+            std::to_string(theirs->second.version) + ": update it first";
+      return false;
+    }
+  }
+  for (const auto& t : missing) copyType(model, *file, t);
+  return true;
+}
+
+std::string freeInstanceName(const Model& model, const std::string& page, const std::string& prefix) {
+  std::set<std::string> taken;
+  for (const auto* pages : {&model.net.pages, &model.net.page_types}) {
+    for (const auto& p : *pages) {
+      if (p.name != page) continue;
+      for (const auto& i : p.instances) taken.insert(i.name);
+      for (const auto& pl : p.places) taken.insert(pl.name);
+      for (const auto& t : p.transitions) taken.insert(t.name);
+    }
+  }
+  for (int n = 1;; ++n) {
+    std::string name = prefix + std::to_string(n);
+    if (!taken.contains(name)) return name;
+  }
+}
+
+std::vector<std::string> placePart(Model& model, const std::string& page, const LibraryPart& part,
+                                   const std::array<double, 3>& translation, double angle, bool control,
+                                   std::string& why, const std::string& name) {
+  if (part.pattern) {
+    why = "'" + part.name + "' is a control pattern: place the part it controls (" + part.spec.controls + ")";
+    return {};
+  }
+  if (!copyPartType(model, part, why)) return {};
+  auto target = std::find_if(model.net.pages.begin(), model.net.pages.end(),
+                             [&](const net::PageSpec& p) { return p.name == page; });
+  if (target == model.net.pages.end()) {
+    net::PageSpec fresh;
+    fresh.name = page;
+    model.net.pages.push_back(std::move(fresh));
+    target = std::prev(model.net.pages.end());
+  }
+  std::vector<std::string> out;
+  net::InstanceSpec inst;
+  inst.name = name.empty() ? freeInstanceName(model, page, part.name) : name;
+  const auto taken = [&](const std::string& n) {
+    return std::any_of(target->instances.begin(), target->instances.end(), [&](const auto& i) { return i.name == n; }) ||
+           std::any_of(target->places.begin(), target->places.end(), [&](const auto& i) { return i.name == n; }) ||
+           std::any_of(target->transitions.begin(), target->transitions.end(), [&](const auto& i) { return i.name == n; });
+  };
+  if (!core::isIdentifier(inst.name) || taken(inst.name)) {
+    why = "'" + inst.name + "' is taken on page '" + page + "' or is no name";
+    return {};
+  }
+  inst.type = part.name;
+  inst.translation = translation;
+  inst.rotation = {0, 0, 1, angle};
+  target->instances.push_back(inst);
+  out.push_back(inst.name);
+  // its control pattern: the one the part names, else one that says it controls the part
+  std::string pattern;
+  if (control) {
+    const auto& spec = model.parts.at(part.name);
+    pattern = spec.control;
+    if (pattern.empty()) {
+      for (const auto& [type, s] : model.parts) {
+        if (s.controls == part.name) pattern = type;
+      }
+    }
+    if (pattern.empty() || !pageType(model, pattern)) {
+      why = "'" + part.name + "' comes with no control pattern";
+      return out;
+    }
+    net::InstanceSpec c;
+    c.name = taken(inst.name + "_control") ? freeInstanceName(model, page, inst.name + "_control") : inst.name + "_control";
+    c.type = pattern;
+    c.part = inst.name;
+    target->instances.push_back(c);
+    out.push_back(c.name);
+  }
+  return out;
+}
+
+std::vector<IoEntry> mapPartIo(Model& model, const std::string& page, const std::string& instance, std::string& why) {
+  const net::InstanceSpec* inst = nullptr;
+  for (const auto& p : model.net.pages) {
+    if (p.name != page) continue;
+    for (const auto& i : p.instances) {
+      if (i.name == instance) inst = &i;
+    }
+  }
+  const auto spec = inst ? model.parts.find(inst->type) : model.parts.end();
+  if (!inst || spec == model.parts.end()) {
+    why = "no part instance '" + instance + "' on page '" + page + "'";
+    return {};
+  }
+  const std::string target = page + "/" + instance;
+  std::vector<IoEntry> added;
+  for (const auto& io : spec->second.io) {
+    const bool input = io.direction == IoDirection::Input;
+    const bool digital = io.signal == IoSignal::Digital;
+    const IoTable table = input ? (digital ? IoTable::DiscreteInputs : IoTable::InputRegisters)
+                                : (digital ? IoTable::Coils : IoTable::HoldingRegisters);
+    const bool mapped = std::any_of(model.io.entries.begin(), model.io.entries.end(), [&](const IoEntry& e) {
+      return e.source == IoEntry::Source::Part && e.io == io.name &&
+             (e.target == target || e.target == instance);
+    });
+    if (mapped) continue;
+    // the first address from which the entry's words are free
+    const int width = digital ? 1 : 2;
+    std::uint32_t address = 0;
+    for (bool moved = true; moved;) {
+      moved = false;
+      for (const auto& e : model.io.entries) {
+        if (e.table != table) continue;
+        const int w = (table == IoTable::InputRegisters || table == IoTable::HoldingRegisters) ? ioWidth(e.type) : 1;
+        const bool overlap = address < e.address + static_cast<std::uint32_t>(w) &&
+                             e.address < address + static_cast<std::uint32_t>(width);
+        const bool lockstep = table == IoTable::HoldingRegisters && model.io.lockstep &&
+                              address <= *model.io.lockstep && *model.io.lockstep < address + static_cast<std::uint32_t>(width);
+        if (overlap || lockstep) {
+          address = std::max(address + 1, overlap ? e.address + static_cast<std::uint32_t>(w) : address + 1);
+          moved = true;
+        }
+      }
+    }
+    if (address + static_cast<std::uint32_t>(width) - 1 > 65535) {
+      why = "the " + std::string(ioTableKey(table)) + " table is full";
+      return added;
+    }
+    IoEntry e;
+    e.table = table;
+    e.address = static_cast<std::uint16_t>(address);
+    e.source = IoEntry::Source::Part;
+    e.target = target;
+    e.io = io.name;
+    if (!digital) {
+      e.type = IoType::Float32;
+      e.unit = io.unit;
+    }
+    model.io.entries.push_back(e);
+    added.push_back(e);
+  }
+  std::stable_sort(model.io.entries.begin(), model.io.entries.end(), [](const IoEntry& a, const IoEntry& b) {
+    return a.table != b.table ? a.table < b.table : a.address < b.address;
+  });
+  return added;
+}
+
+std::vector<PartUpdate> partUpdates(const Model& model, const std::vector<LibraryPart>& parts) {
+  std::vector<PartUpdate> out;
+  for (const auto& [name, ours] : model.parts) {
+    if (!ours.listed || !ours.controls.empty()) continue;
+    const LibraryPart* lib = findLibraryPart(parts, name);
+    if (!lib || lib->spec.version <= ours.version) continue;
+    PartUpdate u;
+    u.name = name;
+    u.from = ours.version;
+    u.to = lib->spec.version;
+    u.file = lib->file;
+    for (const auto& io : lib->spec.io) {
+      const PartIoSpec* old = ours.findIo(io.name);
+      if (!old) u.added.push_back(io.name);
+      else if (!(*old == io)) u.changed.push_back(io.name);
+    }
+    for (const auto& io : ours.io) {
+      if (!lib->spec.findIo(io.name)) u.removed.push_back(io.name);
+    }
+    const auto has = [](const std::vector<Param>& ps, const std::string& n) {
+      return std::any_of(ps.begin(), ps.end(), [&](const Param& p) { return p.name == n; });
+    };
+    for (const auto& p : lib->spec.params) {
+      if (!has(ours.params, p.name)) u.params_added.push_back(p.name);
+    }
+    for (const auto& p : ours.params) {
+      if (!has(lib->spec.params, p.name)) u.params_removed.push_back(p.name);
+    }
+    out.push_back(std::move(u));
+  }
+  return out;
+}
+
+bool applyPartUpdate(Model& model, const PartUpdate& update, std::vector<std::string>& uses, std::string& why) {
+  const auto file = loadPartFile(update.file, why);
+  if (!file) return false;
+  const auto types = typesOf(*file, update.name);
+  if (types.empty()) {
+    why = update.file + " holds no page type '" + update.name + "'";
+    return false;
+  }
+  for (const auto& t : types) copyType(model, *file, t);
+  const PartSpec& now = model.parts.at(update.name);
+  // instances keep the parameters the new version still has
+  std::set<std::string> instances;  // the part's instances, by name on their page
+  for (auto* pages : {&model.net.pages, &model.net.page_types}) {
+    for (auto& page : *pages) {
+      for (auto& inst : page.instances) {
+        if (inst.type != update.name) continue;
+        instances.insert(inst.name);
+        std::erase_if(inst.params, [&](const net::InstanceSpec::Param& p) {
+          return std::none_of(now.params.begin(), now.params.end(), [&](const Param& d) { return d.name == p.name; });
+        });
+      }
+    }
+  }
+  // the io section's uses of removed I/O stay, to be reported where they are written
+  for (const auto& e : model.io.entries) {
+    if (e.source != IoEntry::Source::Part) continue;
+    const auto slash = e.target.rfind('/');
+    const std::string inst = e.target.substr(slash == std::string::npos ? 0 : slash + 1);
+    if (instances.contains(inst) && !now.findIo(e.io)) {
+      uses.push_back(e.loc.str() + ": " + ioAddressName(e.table, e.address) + " uses " + e.target + "." + e.io);
+    }
+  }
+  return true;
+}
+
+}  // namespace gdpn::model

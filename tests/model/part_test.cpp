@@ -1,0 +1,312 @@
+// Parts: per-instance parameters and expressions, named I/O read, written and forced, control
+// patterns bound to their part, and the library: search path, copies, updates.
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "gdpn/core/file.h"
+#include "gdpn/model/part_library.h"
+#include "gdpn/model/part_run.h"
+#include "gdpn/model/simulation.h"
+#include "gdpn/scene/fields.h"
+#include "support/sim_helpers.h"
+
+namespace gdpn::model {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kLampFile = std::string(GDPN_SOURCE_DIR) + "/tests/data/parts/lamp.gdpn.yaml";
+
+/// The lamp part's file with a page using it, as model text.
+std::string lampModel(const std::string& page) {
+  std::ifstream in(kLampFile);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str() + "pages:\n" + page;
+}
+
+std::unique_ptr<Simulation> make(const std::string& text, core::Diagnostics& diags) {
+  auto m = parseModel(text, "m.gdpn.yaml", diags);
+  if (!m) return nullptr;
+  return Simulation::create(*m, diags);
+}
+
+TEST(Part, EachInstanceComputesItsFieldsFromItsParameters) {
+  core::Diagnostics diags;
+  auto sim = make(lampModel("  main:\n    instances:\n      a: {type: lamp}\n"
+                            "      b: {type: lamp, translation: [0, 3, 0], params: {length: 4, count: 5}}\n"),
+                  diags);
+  ASSERT_TRUE(sim) << diags.str();
+  const auto size = [&](const std::string& path) { return sim->plant()->find(path)->vec3(scene::field::Cube::Size); };
+  EXPECT_EQ(size("a/rail/bar"), (core::Vec3{2, 0.1, 0.1 * 3}));
+  EXPECT_EQ(size("b/rail/bar"), (core::Vec3{4, 0.1, 0.1 * 5}));
+  EXPECT_EQ(sim->plant()->find("b/rail")->vec3(scene::field::Transform::Translation), (core::Vec3{2, 0, 1}));
+  // the model's own copy keeps the expressions
+  EXPECT_NE(writeModel(sim->model()).find("size: [=length, 0.1, =0.1*count]"), std::string::npos);
+}
+
+TEST(Part, BadParametersAreLocatedErrors) {
+  core::Diagnostics diags;
+  EXPECT_FALSE(make(lampModel("  main:\n    instances:\n      a: {type: lamp, params: {lenght: 4}}\n"), diags));
+  EXPECT_NE(diags.str().find("m.gdpn.yaml:38:32: error: page type 'lamp' has no parameter 'lenght' (did you mean "
+                             "'length'?)"),
+            std::string::npos)
+      << diags.str();
+  core::Diagnostics refused;
+  EXPECT_FALSE(make(lampModel("  main:\n    instances:\n      a: {type: lamp, params: {length: -1}}\n"), refused));
+  EXPECT_NE(refused.str().find("m.gdpn.yaml:38:7: error: instance 'a': a/rail/bar.size = =length:"), std::string::npos)
+      << refused.str();
+  core::Diagnostics whole;
+  EXPECT_FALSE(make(lampModel("  main:\n    instances:\n      a: {type: lamp, params: {count: 2.5}}\n"), whole));
+  EXPECT_NE(whole.str().find("parameter 'count' of page type 'lamp' is a whole number; 2.5 is not"), std::string::npos)
+      << whole.str();
+  core::Diagnostics expr;
+  EXPECT_FALSE(parseModel("gdpn: 1\npage_types:\n  t:\n    params: {w: 1}\n    scene:\n      - Cube: {size: [=w/(w-1), 1, 1]}\n",
+                          "m.gdpn.yaml", expr));
+  EXPECT_NE(expr.str().find("m.gdpn.yaml:6:26: error: division by zero"), std::string::npos) << expr.str();
+}
+
+TEST(Part, IoIsReadWrittenAndNamedInScriptsAndTheIoSection) {
+  core::Diagnostics diags;
+  auto sim = make(lampModel("  main:\n    instances:\n      a: {type: lamp, params: {brightness: 0.8}}\n"
+                            "    transitions:\n      t: {post_fire: \"sim.log(sim.part('a').light, sim.part('a').height, "
+                            "sim.part('main/a').params.brightness, sim.part('a').io)\"}\n"
+                            "    places:\n      p: {tokens: 1}\n    arcs: [p -> t]\n"),
+                  diags);
+  ASSERT_TRUE(sim) << diags.str();
+  PartRun& parts = *sim->parts();
+  std::string why;
+  const auto a = parts.find("a", why);
+  ASSERT_TRUE(a) << why;
+  EXPECT_EQ(parts.read(*a, "height", why), 1.0);
+  EXPECT_EQ(parts.read(*a, "light", why), 0.0);
+  ASSERT_TRUE(parts.write(*a, "light", 1, why)) << why;
+  EXPECT_EQ(sim->plant()->find("a/rail/paint")->vec3(scene::field::Material::Emissive), (core::Vec3{0.8, 0, 0}));
+  EXPECT_EQ(parts.read(*a, "light", why), 1.0);
+  EXPECT_FALSE(parts.write(*a, "seen", 1, why));
+  EXPECT_EQ(why, "'seen' of part 'main/a' is an input: the plant sets it");
+  EXPECT_FALSE(parts.read(*a, "lite", why));
+  EXPECT_EQ(why, "part 'main/a' has no I/O 'lite' (it has: light, seen, height, speed)");
+  EXPECT_FALSE(parts.find("b", why));
+  EXPECT_EQ(why, "no part 'b'");
+  std::ostringstream trace;
+  sim->traceTo(trace);
+  sim->step();
+  EXPECT_EQ(testing::logLines(trace.str()), (std::vector<std::string>{"True 1.0 0.8 ['light', 'seen', 'height', 'speed']"}));
+}
+
+TEST(Part, TheIoSectionMapsAPartsIoByName) {
+  core::Diagnostics diags;
+  auto m = parseModel(lampModel("  main:\n    instances:\n      a: {type: lamp}\n") +
+                          "io:\n  coils:\n    0: {part: a, io: light}\n  discrete_inputs:\n    0: {part: a, io: light}\n",
+                      "m.gdpn.yaml", diags);
+  ASSERT_TRUE(m) << diags.str();
+  checkModel(*m, diags);
+  EXPECT_NE(diags.str().find("m.gdpn.yaml:43:5: error: discrete input 0: 'light' is a digital output: map it in coils"),
+            std::string::npos)
+      << diags.str();
+  core::Diagnostics ok;
+  auto good = parseModel(lampModel("  main:\n    instances:\n      a: {type: lamp}\n") +
+                             "io:\n  coils:\n    0: {part: a, io: light}\n  discrete_inputs:\n    0: {part: a, io: seen}\n",
+                         "m.gdpn.yaml", ok);
+  ASSERT_TRUE(good);
+  auto sim = Simulation::create(*good, ok);
+  ASSERT_TRUE(sim) << ok.str();
+  auto io = IoMap::create(*sim, good->io, ok);
+  ASSERT_TRUE(io) << ok.str();
+  EXPECT_EQ(io->writeBits(0, {true}, "plc"), IoError::None);
+  std::string why;
+  EXPECT_EQ(sim->parts()->read(0, "light", why), 1.0);
+  EXPECT_TRUE(io->bit(IoTable::Coils, 0));
+  EXPECT_EQ(io->rows().at(1).what, "a.light");
+}
+
+TEST(Part, AControlPatternDrivesThePartItNames) {
+  core::Diagnostics diags;
+  // a box falls into the lamp's eye: its control pattern lights the lamp
+  auto sim = make(lampModel("  main:\n    instances:\n      a: {type: lamp}\n      c: {type: lamp_control, part: a}\n") +
+                      "scene:\n  - Transform: {translation: [0, 0, 0.5], children: [{Body: {name: box, children: "
+                      "[{Sphere: {radius: 0.1}}]}}]}\n",
+                  diags);
+  ASSERT_TRUE(sim) << diags.str();
+  std::string why;
+  for (int i = 0; i < 60 && sim->parts()->read(0, "light", why) == 0.0; ++i) sim->step();
+  EXPECT_EQ(sim->parts()->read(0, "seen", why), 1.0);
+  EXPECT_EQ(sim->parts()->read(0, "light", why), 1.0);
+  core::Diagnostics unbound;
+  EXPECT_FALSE(make(lampModel("  main:\n    instances:\n      a: {type: lamp}\n      c: {type: lamp_control}\n"), unbound));
+  EXPECT_NE(unbound.str().find("instance 'c' of control pattern 'lamp_control' needs 'part': the lamp it controls"),
+            std::string::npos)
+      << unbound.str();
+  core::Diagnostics wrong;
+  EXPECT_FALSE(make(lampModel("  main:\n    instances:\n      a: {type: lamp}\n      c: {type: lamp_control, part: b}\n"),
+                    wrong));
+  EXPECT_NE(wrong.str().find("no instance 'b' on page 'main'"), std::string::npos) << wrong.str();
+}
+
+/// The trace of 30 steps of the lamp with forces asked at steps 5 (light on, seen on) and 20
+/// (all released).
+std::string forcedRun() {
+  core::Diagnostics diags;
+  auto sim = make(lampModel("  main:\n    instances:\n      a: {type: lamp}\n      c: {type: lamp_control, part: a}\n"),
+                  diags);
+  EXPECT_TRUE(sim) << diags.str();
+  std::ostringstream trace;
+  sim->traceTo(trace);
+  std::string why;
+  for (int i = 0; i < 30; ++i) {
+    if (i == 5) {
+      EXPECT_TRUE(sim->parts()->force(0, "seen", 1, why)) << why;
+      EXPECT_TRUE(sim->parts()->force(0, "speed", 0.25, why)) << why;
+    }
+    if (i == 6) {
+      // the input reads its force; the output holds its own whatever is written
+      EXPECT_EQ(sim->parts()->read(0, "seen", why), 1.0);
+      EXPECT_TRUE(sim->parts()->write(0, "speed", 2, why));
+      EXPECT_EQ(sim->plant()->find("a/belt")->number(scene::field::Conveyor::Speed), 0.25);
+      const auto rows = sim->parts()->rows();
+      EXPECT_TRUE(rows[1].forced && rows[3].forced && !rows[0].forced);
+    }
+    if (i == 20) sim->parts()->releaseAll();
+    sim->step();
+  }
+  // the control pattern saw the forced input and lit the lamp; released, the output takes
+  // what was written while it was forced
+  EXPECT_EQ(sim->parts()->read(0, "seen", why), 0.0);
+  EXPECT_EQ(sim->plant()->find("a/belt")->number(scene::field::Conveyor::Speed), 2.0);
+  EXPECT_FALSE(sim->parts()->force(0, "speed", -1e300 * 1e300, why));
+  return trace.str();
+}
+
+TEST(Part, ForcesApplyAtStepBoundariesAreTracedAndReproducible) {
+  const std::string trace = forcedRun();
+  EXPECT_NE(trace.find("\"step\":6,\"t\":0.1,\"ev\":\"force\",\"part\":\"main/a\",\"io\":\"seen\",\"value\":1"),
+            std::string::npos)
+      << trace;
+  EXPECT_NE(trace.find("\"ev\":\"release\",\"part\":\"main/a\",\"io\":\"speed\""), std::string::npos);
+  EXPECT_NE(trace.find("\"transition\":\"main/c/light\""), std::string::npos);
+  EXPECT_EQ(forcedRun(), trace);
+}
+
+/// A folder of its own under the test's temporary folder.
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("gdpn_part_test_" + name + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+TEST(PartLibrary, TheSearchPathFollowsXdgThenTheInstallThenTheSourceTree) {
+  ::setenv("XDG_DATA_HOME", "/home/u/data", 1);
+  ::setenv("XDG_DATA_DIRS", "/opt/a:/opt/b", 1);
+  const auto path = partSearchPath("/work/model");
+  ASSERT_GE(path.size(), 5U);
+  EXPECT_EQ(path[0], "/work/model");
+  EXPECT_EQ(path[1], "/home/u/data/gdpn/parts");
+  EXPECT_EQ(path[2], "/opt/a/gdpn/parts");
+  EXPECT_EQ(path[3], "/opt/b/gdpn/parts");
+  EXPECT_EQ(path.back(), std::string(GDPN_SOURCE_DIR) + "/parts");
+  ::unsetenv("XDG_DATA_DIRS");
+  EXPECT_EQ(partSearchPath("")[1], "/usr/local/share/gdpn/parts");
+  ::unsetenv("XDG_DATA_HOME");
+}
+
+TEST(PartLibrary, AModelKeepsItsCopyAndRunsWithoutTheLibrary) {
+  const fs::path lib = scratch("lib");
+  fs::create_directories(lib / "test");
+  fs::copy_file(kLampFile, lib / "test" / "lamp.gdpn.yaml");
+  core::Diagnostics diags;
+  auto parts = scanParts({lib.string()}, diags);
+  ASSERT_EQ(parts.size(), 2U) << diags.str();
+  const LibraryPart* lamp = findLibraryPart(parts, "lamp");
+  ASSERT_TRUE(lamp);
+  EXPECT_FALSE(lamp->pattern);
+  EXPECT_TRUE(findLibraryPart(parts, "lamp_control")->pattern);
+  EXPECT_EQ(lamp->description, "a lamp on a rail");
+  Model m;
+  std::string why;
+  const auto names = placePart(m, "main", *lamp, {1, 2, 0}, 90, true, why);
+  ASSERT_EQ(names, (std::vector<std::string>{"lamp1", "lamp1_control"})) << why;
+  EXPECT_EQ(placePart(m, "main", *lamp, {0, 0, 0}, 0, false, why), (std::vector<std::string>{"lamp2"}));
+  const auto mapped = mapPartIo(m, "main", "lamp1", why);
+  ASSERT_EQ(mapped.size(), 4U) << why;
+  EXPECT_EQ(mapped[2].table, IoTable::InputRegisters);
+  EXPECT_EQ(mapped[2].type, IoType::Float32);
+  EXPECT_TRUE(mapPartIo(m, "main", "lamp1", why).empty());  // mapped once
+  const fs::path saved = scratch("model") / "m.gdpn.yaml";
+  ASSERT_TRUE(saveModel(m, saved.string(), diags)) << diags.str();
+  fs::remove_all(lib);
+  auto back = loadModel(saved.string(), diags);
+  ASSERT_TRUE(back) << diags.str();
+  EXPECT_EQ(back->parts.at("lamp").version, 1);
+  auto sim = Simulation::create(*back, diags);
+  ASSERT_TRUE(sim) << diags.str();
+  EXPECT_EQ(sim->plant()->find("lamp1")->value(scene::field::Transform::Rotation),
+            scene::FieldValue(std::array<double, 4>{0, 0, 1, 90}));
+  EXPECT_TRUE(IoMap::create(*sim, back->io, diags)) << diags.str();
+}
+
+TEST(PartLibrary, ANewerVersionIsOfferedAndAppliedAndRemovedIoIsLocated) {
+  const fs::path lib = scratch("newer");
+  core::Diagnostics read;
+  std::string text = core::readFile(kLampFile, read).value();
+  fs::create_directories(lib);
+  {
+    std::ofstream(lib / "lamp.gdpn.yaml") << text;
+  }
+  core::Diagnostics diags;
+  auto parts = scanParts({lib.string()}, diags);
+  Model m;
+  std::string why;
+  ASSERT_FALSE(placePart(m, "main", *findLibraryPart(parts, "lamp"), {0, 0, 0}, 0, false, why).empty()) << why;
+  m.net.pages[0].instances[0].params.push_back({"count", 4, {}});
+  ASSERT_FALSE(mapPartIo(m, "main", "lamp1", why).empty());
+  EXPECT_TRUE(partUpdates(m, parts).empty());
+  // version 2 drops the input 'seen' and the parameter 'count', and adds 'blink'
+  auto replace = [&](const std::string& from, const std::string& to) { text.replace(text.find(from), from.size(), to); };
+  replace("version: 1, group: Test, control", "version: 2, group: Test, control");
+  replace("      seen: {direction: input, signal: digital, description: \"something under it\", node: eye, of: active}\n",
+          "      blink: {direction: output, signal: digital, node: belt, field: speed}\n");
+  replace("      count: 3\n", "");
+  replace("=0.1*count", "0.3");
+  replace("guard: \"self.part.seen\"", "guard: \"True\"");
+  replace("guard: \"not self.part.seen\"", "guard: \"False\"");
+  {
+    std::ofstream(lib / "lamp.gdpn.yaml") << text;
+  }
+  parts = scanParts({lib.string()}, diags);
+  const auto updates = partUpdates(m, parts);
+  ASSERT_EQ(updates.size(), 1U);
+  EXPECT_EQ(updates[0].from, 1);
+  EXPECT_EQ(updates[0].to, 2);
+  EXPECT_EQ(updates[0].removed, (std::vector<std::string>{"seen"}));
+  EXPECT_EQ(updates[0].added, (std::vector<std::string>{"blink"}));
+  EXPECT_EQ(updates[0].params_removed, (std::vector<std::string>{"count"}));
+  // placing another is refused until the model takes the update
+  EXPECT_TRUE(placePart(m, "main", *findLibraryPart(parts, "lamp"), {0, 0, 0}, 0, false, why).empty());
+  EXPECT_EQ(why, "the model uses version 1 of 'lamp'; the library has 2: update it first");
+  // saved and read back, the model's io section is located
+  const fs::path saved = scratch("updated") / "m.gdpn.yaml";
+  ASSERT_TRUE(saveModel(m, saved.string(), diags));
+  auto back = loadModel(saved.string(), diags);
+  ASSERT_TRUE(back);
+  std::vector<std::string> uses;
+  ASSERT_TRUE(applyPartUpdate(*back, updates[0], uses, why)) << why;
+  EXPECT_EQ(back->parts.at("lamp").version, 2);
+  EXPECT_TRUE(back->net.pages[0].instances[0].params.empty());
+  ASSERT_EQ(uses.size(), 1U);
+  EXPECT_NE(uses[0].find("m.gdpn.yaml:4:5: discrete input 0 uses main/lamp1.seen"), std::string::npos) << uses[0];
+  core::Diagnostics check;
+  checkModel(*back, check);
+  EXPECT_NE(check.str().find("m.gdpn.yaml:4:5: error: discrete input 0: part 'main/lamp1' has no I/O 'seen'"),
+            std::string::npos)
+      << check.str();
+}
+
+}  // namespace
+}  // namespace gdpn::model
