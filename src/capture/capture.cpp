@@ -77,6 +77,7 @@ struct Studio {
     const render::Camera camera = render::chooseCamera(*sim.plant(), o.camera, sim.kernel().now(), error);
     if (!error.empty()) return false;
     target->bind();
+    draw.time = sim.kernel().now();  // the parts' markings: a conveyor's arrows move with time
     stats = renderer->draw(*sim.plant(), camera, draw);
     if (!renderer->problems().empty()) {
       error = renderer->problems().front();

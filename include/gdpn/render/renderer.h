@@ -3,10 +3,12 @@
 /// Draws a scene with OpenGL 3.3 core: materials (ambient, diffuse, specular, emissive,
 /// shininess, transparency, transparent shapes back to front), directional, point and spot
 /// lights (all gathered before anything is drawn), fog, every shape type, meshes from files,
-/// terrain with view-dependent level of detail, overlays for sensors and joints, and a
-/// highlight on a selection. The renderer only reads the scene, draws into whatever
-/// framebuffer is bound (gdpn::platform makes contexts and offscreen targets), and knows
-/// nothing of models, simulations or the IDE.
+/// terrain with view-dependent level of detail, overlays for sensors and joints, markings
+/// that show how parts work (a conveyor's moving arrows), and a highlight on a selection.
+/// The renderer only reads the scene, draws into whatever framebuffer is bound
+/// (gdpn::platform makes contexts and offscreen targets), and knows
+/// nothing of models, simulations or the IDE (the caller gives the model time, for the
+/// parts' markings).
 
 #include <cstddef>
 #include <memory>
@@ -31,6 +33,11 @@ struct DrawOptions {
   int height = 720;                    ///< pixels
   core::Vec3 background{0.62, 0.70, 0.80};  ///< colour where nothing is (fog colour when fogged)
   bool sensors = false;                ///< translucent sensor volumes and rays
+  /// What shows people how the parts work (camera sensors see none of it, as they see no
+  /// overlay): arrows on the top face of each Cube a Conveyor drives (scene::drivingConveyor),
+  /// pointing where it carries things and moving at its speed.
+  bool markings = true;
+  double time = 0;                     ///< model time, s: how far a conveyor's arrows have moved (speed times time)
   bool joints = false;                 ///< joint axes
   std::vector<ContactMark> contacts;   ///< contact points to mark, over everything: a dot 3 cm across and its normal, 20 cm long
   std::vector<scene::NodeHandle> selection;  ///< nodes whose shapes get outlined
