@@ -164,7 +164,12 @@ struct Renderer::Impl {
         if (const TerrainGpu* g = files.terrain(n)) items.push_back({nullptr, g, at, lookOf(material), &n, 0});
         break;
       case NodeKind::Region:
-        if (opt.sensors) region(n, at, items);
+        // a visible one in its own colours; the others with the sensor volumes
+        if (opt.markings && n.flag(field::Region::Visible)) {
+          region(n, at, markingLook(n, opt), items);
+        } else if (opt.sensors) {
+          region(n, at, overlay({1.0f, 0.85f, 0.1f}, 0.3f), items);
+        }
         break;
       case NodeKind::Conveyor:
         if (opt.markings) belt(n, opt.time, items);
@@ -235,9 +240,8 @@ struct Renderer::Impl {
     }
   }
 
-  /// Region `n`'s volume, or its ray.
-  void region(const Node& n, const glm::mat4& at, std::vector<Item>& items) {
-    const Look look = overlay({1.0f, 0.85f, 0.1f}, 0.3f);
+  /// Region `n`'s volume, or its ray, in `look`.
+  void region(const Node& n, const glm::mat4& at, const Look& look, std::vector<Item>& items) {
     switch (n.choice<scene::RegionShape>(field::Region::Shape)) {
       case scene::RegionShape::Box: primitive(cube, n, at, look, items); break;
       case scene::RegionShape::Sphere: primitive(sphere, n, at, look, items); break;
@@ -245,6 +249,14 @@ struct Renderer::Impl {
       case scene::RegionShape::Cone: primitive(cone, n, at, look, items); break;
       case scene::RegionShape::Ray: ray(n, at, static_cast<float>(n.number(field::Region::Length)), look, items); break;
     }
+  }
+
+  /// How visible Region `n` looks: a ray as a red beam, a volume translucent red; bright
+  /// green and more opaque while it is active.
+  static Look markingLook(const Node& n, const DrawOptions& opt) {
+    const bool ray = n.choice<scene::RegionShape>(field::Region::Shape) == scene::RegionShape::Ray;
+    if (opt.active && opt.active(n)) return overlay({0.1f, 1.0f, 0.25f}, ray ? 1.0f : 0.4f);
+    return overlay({0.95f, 0.08f, 0.05f}, ray ? 0.9f : 0.25f);
   }
 
   /// Conveyor `n`'s arrows, if it drives the shapes beside it (scene::drivingConveyor, the

@@ -1,7 +1,8 @@
 // How parts show what they are (issue 54): a conveyor's arrows on the top face of the Cubes
-// it drives, pointing where it carries things and moved on by its speed over model time.
-// Pictures taken headless (EGL surfaceless) looking straight down, read pixel by pixel: no
-// golden pictures, and no test measures time.
+// it drives, pointing where it carries things and moved on by its speed over model time; a
+// Region marked `visible` drawn with no sensor overlay asked for, a ray as a red beam that
+// turns green while something breaks it. Pictures taken headless (EGL surfaceless) looking
+// straight down, read pixel by pixel: no golden pictures, and no test measures time.
 
 #include <gtest/gtest.h>
 
@@ -46,8 +47,11 @@ struct Picture {
   }
 };
 
-/// The arrows' safety yellow (against the grey-blue background and the dark belt).
+/// The arrows' safety yellow; the beam's red and, while active, green (against the grey-blue
+/// background and the dark belt).
 bool yellow(std::array<int, 3> c) { return c[0] > 150 && c[1] > 110 && c[2] < 90; }
+bool red(std::array<int, 3> c) { return c[0] > 150 && c[1] < 90 && c[2] < 90; }
+bool green(std::array<int, 3> c) { return c[1] > 150 && c[0] < 110 && c[2] < 130; }
 
 /// Pixels per metre on the plane at height `z` (m) seen straight down from `eye` m up by a
 /// camera of `fov` degrees (vertical) over `height` pixels.
@@ -235,6 +239,73 @@ TEST(Parts, ATemplateConveyorDrawsNoArrowsNorDoesAPictureWithoutMarkings) {
   EXPECT_EQ(two.draw(0).count(yellow), 0);
 }
 
+// a ray 1 m along +x from the origin, 0.1 m up, seen from 1.6 m up: 1 cm across is 2 pixels
+constexpr int kBeamWidth = 480, kBeamHeight = 240;
+constexpr double kBeamEye = 1.6;
+const std::string kRay = "  - Transform: {translation: [0, 0, 0.1], children: [{Region: {name: eye, shape: ray, length: 1";
+
+/// The columns (of `p`'s middle rows) that hold a pixel `like`, from the first to the last.
+template <class Like>
+std::pair<int, int> span(const Picture& p, Like like) {
+  int first = -1, last = -1;
+  for (int x = 0; x < p.width; ++x) {
+    for (int y = p.height / 2 - 3; y <= p.height / 2 + 3; ++y) {
+      if (!like(p.at(x, y))) continue;
+      if (first < 0) first = x;
+      last = x;
+    }
+  }
+  return {first, last};
+}
+
+TEST(Parts, AVisibleRayRegionIsARedBeamAlongItsLengthGreenWhileActive) {
+  const double ppm = pixelsPerMetre(kBeamEye, 0.1, TopView::kFov, kBeamHeight);
+  TopView v(kRay + ", visible: true}}]}", kBeamEye, kBeamWidth, kBeamHeight);
+  ASSERT_TRUE(v.ready());
+  const Picture p = v.draw(0);
+  // red from the sensor's origin (the middle column) to 1 m along +x, and only there
+  const auto [first, last] = span(p, red);
+  EXPECT_NEAR(first, kBeamWidth / 2, 2);
+  EXPECT_NEAR(last, kBeamWidth / 2 + ppm, 2);
+  EXPECT_EQ(p.count(red), p.count(red, kBeamHeight / 2 - 3, kBeamHeight / 2 + 3));
+  int gaps = 0;
+  for (int x = first; x <= last; ++x) {
+    bool any = false;
+    for (int y = kBeamHeight / 2 - 3; y <= kBeamHeight / 2 + 3; ++y) any = any || red(p.at(x, y));
+    gaps += any ? 0 : 1;
+  }
+  EXPECT_EQ(gaps, 0) << "the beam is drawn whole";
+  EXPECT_EQ(p.count(green), 0);
+  // while it holds something: green, not red
+  v.options.active = [](const scene::Node& n) { return n.name() == "eye"; };
+  const Picture active = v.draw(0);
+  EXPECT_EQ(active.count(red), 0);
+  EXPECT_NEAR(span(active, green).first, first, 1);
+  EXPECT_NEAR(span(active, green).second, last, 1);
+  // not visible: nothing, unless the sensor volumes are asked for (then the overlay's yellow)
+  TopView hidden(kRay + "}}]}", kBeamEye, kBeamWidth, kBeamHeight);
+  ASSERT_TRUE(hidden.ready());
+  const Picture none = hidden.draw(0);
+  EXPECT_EQ(none.count(red), 0);
+  const auto background = none.at(0, 0);
+  EXPECT_EQ(none.count([&](std::array<int, 3> c) { return c != background; }), 0) << "only the background";
+  hidden.options.sensors = true;
+  EXPECT_EQ(hidden.draw(0).count(red), 0);
+  // nor is a visible one drawn where the markings are not asked for
+  v.options.markings = false;
+  EXPECT_EQ(v.draw(0).count(red) + v.draw(0).count(green), 0);
+}
+
+TEST(Parts, AVisibleVolumeRegionIsTranslucentRed) {
+  TopView v("  - Region: {shape: box, size: [0.5, 0.5, 0.2], visible: true}\n", kBeamEye, kBeamWidth, kBeamHeight);
+  ASSERT_TRUE(v.ready());
+  const auto middle = v.draw(0).at(kBeamWidth / 2, kBeamHeight / 2);
+  // reddened, and the background still shows through (its blue)
+  EXPECT_GT(middle[0], middle[1] + 40);
+  EXPECT_GT(middle[2], 60);
+  EXPECT_LT(middle[0], 250);
+}
+
 /// A picture of model `yaml` at `t` seconds through `gdpn render`'s path (capture::renderAt):
 /// the run's own time and sensors.
 Picture renderedAt(const std::string& yaml, double t, int width, int height) {
@@ -259,7 +330,7 @@ Picture renderedAt(const std::string& yaml, double t, int width, int height) {
   return p;
 }
 
-TEST(Parts, APictureOfARunShowsTheArrowsWhereItsTimeMovedThem) {
+TEST(Parts, APictureOfARunShowsTheArrowsWhereItsTimeMovedThemAndTheBeamBrokenByABox) {
   // gdpn render at 0 and at 0.3 s: the arrows 0.15 m on
   const std::string camera = "  - Camera: {position: [0, 0, 3], target: [0, 0, 0], up: [0, 1, 0], fov: 40}\n";
   const std::string model = "gdpn: 1\nsettings: {dt: 0.01}\nscene:\n" + camera + belt("Conveyor: {speed: 0.5}");
@@ -268,13 +339,29 @@ TEST(Parts, APictureOfARunShowsTheArrowsWhereItsTimeMovedThem) {
   const auto at0 = arrowProfile(renderedAt(model, 0, kWidth, kHeight));
   ASSERT_EQ(at0.size(), static_cast<std::size_t>(kWidth));
   EXPECT_NEAR(bestShift(at0, arrowProfile(renderedAt(model, 0.3, kWidth, kHeight)), lo, hi, 20), 0.15 * ppm, 1.5);
+  // a box resting across a visible beam: the beam is green where it shows; red with no box
+  const std::string beam = R"(gdpn: 1
+settings: {dt: 0.01}
+scene:
+  - World: {}
+  - Camera: {position: [0, 0, 1.6], target: [0, 0, 0], up: [0, 1, 0], fov: 40}
+  - Plane: {}
+  - Transform: {translation: [0, 0, 0.1], children: [{Region: {name: eye, shape: ray, length: 1, visible: true}}]}
+)";
+  const std::string box = "  - Transform: {translation: [0.5, 0, 0.1], children: [{Body: {children: [{Cube: {size: [0.2, 0.2, 0.2]}}]}}]}\n";
+  const Picture broken = renderedAt(beam + box, 0.05, kBeamWidth, kBeamHeight);
+  EXPECT_GT(broken.count(green), 100);
+  EXPECT_EQ(broken.count(red), 0);
+  const Picture clear = renderedAt(beam, 0.05, kBeamWidth, kBeamHeight);
+  EXPECT_GT(clear.count(red), 100);
+  EXPECT_EQ(clear.count(green), 0);
 }
 
 TEST(Parts, ACameraSensorSeesNoMarkings) {
-  // a colour camera looking down at a driven belt: the belt, not its arrows (what the plant
-  // is, not how people are shown it works)
+  // a colour camera looking down at a driven belt and a visible beam: the belt, not the
+  // arrows nor the beam (what the plant is, not how people are shown it works)
   core::Diagnostics diags;
-  auto m = model::parseModel("gdpn: 1\nscene:\n" + belt("Conveyor: {speed: 0.5}") +
+  auto m = model::parseModel("gdpn: 1\nscene:\n" + belt("Conveyor: {speed: 0.5}") + kRay + ", visible: true}}]}\n" +
                                  "  - Transform: {translation: [0, 0, 2], rotation: [0, 1, 0, 90], children: "
                                  "[{ColorCamera: {name: cam, width: 160, height: 120, fov: 90}}]}\n",
                              "camera.gdpn.yaml", diags);
@@ -284,10 +371,11 @@ TEST(Parts, ACameraSensorSeesNoMarkings) {
   capture::SensorImager imager(".");
   sensors::Image image;
   std::string why;
-  ASSERT_TRUE(imager.render(*sim->plant(), *sim->plant()->find("#2/cam"), image, why)) << why;
+  ASSERT_TRUE(imager.render(*sim->plant(), *sim->plant()->find("#3/cam"), image, why)) << why;
   const Picture seen{image.width, image.height, image.rgb};
   ASSERT_EQ(seen.rgb.size(), 160u * 120u * 3u);
   EXPECT_EQ(seen.count(yellow), 0);
+  EXPECT_EQ(seen.count(red), 0);
   // the belt is in view: dark pixels in the middle
   const auto middle = seen.at(80, 60);
   EXPECT_LT(middle[0] + middle[1] + middle[2], 150);
