@@ -77,6 +77,10 @@ struct Studio {
     const render::Camera camera = render::chooseCamera(*sim.plant(), o.camera, sim.kernel().now(), error);
     if (!error.empty()) return false;
     target->bind();
+    // the parts' markings: a conveyor's arrows move with time, a visible Region shows when
+    // it holds something
+    draw.time = sim.kernel().now();
+    draw.active = [&sim](const scene::Node& n) { return sim.reading(n.handle()).active; };
     stats = renderer->draw(*sim.plant(), camera, draw);
     if (!renderer->problems().empty()) {
       error = renderer->problems().front();

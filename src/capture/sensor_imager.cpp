@@ -46,6 +46,7 @@ bool SensorImager::render(const scene::Scene& scene, const scene::Node& camera, 
   draw.shadows = false;
   draw.grid = false;
   draw.sky = !depth;
+  draw.markings = false;  // what the plant is, not how people are shown it works
   const render::Camera view = render::sensorCamera(camera);
   renderer_->draw(scene, view, draw);
   if (!renderer_->problems().empty()) {

@@ -23,14 +23,11 @@ Surface World::Impl::surfaceFor(const Node& n, const scene::TraversalState& st, 
     surface.bounce = st.material->number(scene::field::Material::Bounce);
   }
   // a conveyor among the shape's siblings (the last one, if several)
-  if (n.parent()) {
-    for (const auto& sib : n.parent()->children()) {
-      if (sib->kind() != NodeKind::Conveyor || sib->is_template) continue;
-      surface.conveyor = true;
-      surface.conveyor_node = sib.get();
-      surface.conveyor_field = sib->vec3(scene::field::Conveyor::Direction);
-      surface.conveyor_dir = conveyorDirection(*sib, body);
-    }
+  if (const Node* conveyor = n.parent() ? scene::drivingConveyor(*n.parent()) : nullptr) {
+    surface.conveyor = true;
+    surface.conveyor_node = conveyor;
+    surface.conveyor_field = conveyor->vec3(scene::field::Conveyor::Direction);
+    surface.conveyor_dir = conveyorDirection(*conveyor, body);
   }
   return surface;
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <utility>
@@ -34,6 +35,7 @@ using detail::placement;
 using detail::ShaderProgram;
 using detail::TerrainGpu;
 using detail::UnitShape;
+using detail::unitChevron;
 using detail::unitCube;
 using detail::unitPlane;
 using detail::unitRound;
@@ -52,6 +54,7 @@ struct Item {
   Look look;
   const Node* node = nullptr;
   float depth = 0;  // view-space distance, for sorting transparent items
+  bool decal = false;  // lies on a surface: drawn pulled towards the eye, casting no shadow
 };
 
 /// How many of its axes a joint of `kind` uses (axis1, then axis2).
@@ -124,12 +127,12 @@ struct Renderer::Impl {
   GLuint empty_vao = 0;              // for the sky's triangle, which has no vertex buffer
   ShadowMap shadow;
   UnitShape cube = unitCube(), sphere = unitSphere(), cylinder = unitRound(false), cone = unitRound(true);
-  GpuMesh plane = unitPlane();
+  GpuMesh plane = unitPlane(), chevron = unitChevron();
   GpuCache files;
 
   explicit Impl(std::string model_dir) : files(std::move(model_dir)) { glGenVertexArrays(1, &empty_vao); }
   ~Impl() {
-    for (GpuMesh* g : {&cube.gpu, &sphere.gpu, &cylinder.gpu, &cone.gpu, &plane}) g->release();
+    for (GpuMesh* g : {&cube.gpu, &sphere.gpu, &cylinder.gpu, &cone.gpu, &plane, &chevron}) g->release();
     shadow.release();
     glDeleteVertexArrays(1, &empty_vao);
   }
@@ -161,7 +164,15 @@ struct Renderer::Impl {
         if (const TerrainGpu* g = files.terrain(n)) items.push_back({nullptr, g, at, lookOf(material), &n, 0});
         break;
       case NodeKind::Region:
-        if (opt.sensors) region(n, at, items);
+        // a visible one in its own colours; the others with the sensor volumes
+        if (opt.markings && n.flag(field::Region::Visible)) {
+          region(n, at, markingLook(n, opt), items);
+        } else if (opt.sensors) {
+          region(n, at, overlay({1.0f, 0.85f, 0.1f}, 0.3f), items);
+        }
+        break;
+      case NodeKind::Conveyor:
+        if (opt.markings) belt(n, opt.time, items);
         break;
       case NodeKind::RangeFinder:
         if (opt.sensors) {
@@ -189,7 +200,6 @@ struct Renderer::Impl {
       case NodeKind::Fog:
       case NodeKind::World:
       case NodeKind::Body:
-      case NodeKind::Conveyor:
       case NodeKind::GradientField:
       case NodeKind::GradientSensor:
       case NodeKind::KeyboardSensor:
@@ -230,15 +240,94 @@ struct Renderer::Impl {
     }
   }
 
-  /// Region `n`'s volume, or its ray.
-  void region(const Node& n, const glm::mat4& at, std::vector<Item>& items) {
-    const Look look = overlay({1.0f, 0.85f, 0.1f}, 0.3f);
+  /// Region `n`'s volume, or its ray, in `look`.
+  void region(const Node& n, const glm::mat4& at, const Look& look, std::vector<Item>& items) {
     switch (n.choice<scene::RegionShape>(field::Region::Shape)) {
       case scene::RegionShape::Box: primitive(cube, n, at, look, items); break;
       case scene::RegionShape::Sphere: primitive(sphere, n, at, look, items); break;
       case scene::RegionShape::Cylinder: primitive(cylinder, n, at, look, items); break;
       case scene::RegionShape::Cone: primitive(cone, n, at, look, items); break;
       case scene::RegionShape::Ray: ray(n, at, static_cast<float>(n.number(field::Region::Length)), look, items); break;
+    }
+  }
+
+  /// How visible Region `n` looks: a ray as a red beam, a volume translucent red; bright
+  /// green and more opaque while it is active.
+  static Look markingLook(const Node& n, const DrawOptions& opt) {
+    const bool ray = n.choice<scene::RegionShape>(field::Region::Shape) == scene::RegionShape::Ray;
+    if (opt.active && opt.active(n)) return overlay({0.1f, 1.0f, 0.25f}, ray ? 1.0f : 0.4f);
+    return overlay({0.95f, 0.08f, 0.05f}, ray ? 0.9f : 0.25f);
+  }
+
+  /// Conveyor `n`'s arrows, if it drives the shapes beside it (scene::drivingConveyor, the
+  /// physics' rule): on the top face of each Cube among them, moved on by its speed over
+  /// `time` (s).
+  void belt(const Node& n, double time, std::vector<Item>& items) {
+    const Node* parent = n.parent();
+    if (parent == nullptr || scene::drivingConveyor(*parent) != &n) return;
+    using F = field::Conveyor;
+    const double speed = n.number(F::Speed);
+    // where the belt carries things, in the world (as the physics turns `direction`)
+    const core::Vec3 carries = n.world.rotation.rotate(n.vec3(F::Direction)) * (speed < 0 ? -1.0 : 1.0);
+    if (carries.length() == 0) return;
+    for (const auto& shape : parent->children()) {
+      if (shape->kind() == NodeKind::Cube && !shape->is_template) arrows(n, *shape, carries, std::abs(speed) * time, items);
+    }
+  }
+
+  /// Arrows of conveyor `n` on the top face of Cube `box` (the face most turned towards +z),
+  /// pointing along `carries` (world frame) as laid in that face, `moved` m along it.
+  void arrows(const Node& n, const Node& box, core::Vec3 carries, double moved, std::vector<Item>& items) {
+    const core::Vec3 scale = box.world_scale;
+    const glm::vec3 size = glm::abs(gv(scene::shapeExtent(box).times(scale)));
+    // the top face: the axis of the box's frame whose direction is most upwards
+    const core::Quat& q = box.world.rotation;
+    const glm::vec3 up = gv(q.conjugate().rotate({0, 0, 1}));
+    int axis = 2;
+    for (int a = 0; a < 2; ++a) {
+      if (std::abs(up[a]) > std::abs(up[axis])) axis = a;
+    }
+    glm::vec3 normal(0.0f);
+    normal[axis] = up[axis] < 0 ? -1.0f : 1.0f;
+    // the direction laid in the face (none when the belt runs across it)
+    glm::vec3 along = gv(q.conjugate().rotate(carries));
+    along[axis] = 0;
+    if (glm::length(along) < 1e-6f * glm::length(gv(carries))) return;
+    along = glm::normalize(along);
+    // the face's chord through its centre along the arrows, and across them
+    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    const auto chord = [&](float di, float dj) {
+      constexpr float kEndless = std::numeric_limits<float>::infinity();
+      return std::min(di == 0 ? kEndless : size[i] / std::abs(di), dj == 0 ? kEndless : size[j] / std::abs(dj));
+    };
+    const float length = chord(along[i], along[j]), across = chord(along[j], along[i]);
+    // an arrow 60 % as wide as the face, 45 % of that long, one every 1.6 widths; at most
+    // kMaxArrows on a face (a long belt spaces them wider)
+    constexpr int kMaxArrows = 64;
+    float width = 0.6f * across, deep = 0.45f * width;
+    if (deep > 0.8f * length) {
+      width *= 0.8f * length / deep;
+      deep = 0.8f * length;
+    }
+    const float spacing = std::max(1.6f * width, length / kMaxArrows);
+    if (!(deep > 0.0f) || !(spacing > 0.0f)) return;
+    const auto offset = static_cast<float>(std::fmod(moved, static_cast<double>(spacing)));
+    // the face's frame: x along the arrows, z out of the face, y across
+    glm::mat4 face(1.0f);
+    face[0] = glm::vec4(along, 0.0f);
+    face[1] = glm::vec4(glm::cross(normal, along), 0.0f);
+    face[2] = glm::vec4(normal, 0.0f);
+    face[3] = glm::vec4(0.5f * size[axis] * normal, 1.0f);
+    const glm::mat4 on = placement(box.world, {1, 1, 1}) * face;
+    // the arrows whose centres lie within the face, their whole length on it
+    const float reach = 0.5f * (length - deep);
+    Look look;
+    look.ambient = look.diffuse = {0.95f, 0.78f, 0.15f};
+    const auto first = static_cast<int>(std::ceil((-reach - offset) / spacing));
+    const auto last = static_cast<int>(std::floor((reach - offset) / spacing));
+    for (int k = first; k <= last; ++k) {
+      const float x = offset + static_cast<float>(k) * spacing;
+      items.push_back({&chevron, nullptr, glm::scale(glm::translate(on, {x, 0, 0}), {deep, width, 1}), look, &n, 0, true});
     }
   }
 
@@ -536,8 +625,11 @@ DrawStats Renderer::draw(const scene::Scene& scene, const Camera& cam, const Dra
     DrawStats depth_pass;
     for (const auto& it : items) {
       // planes bound the world below: they take shadows and cast none worth a full-map fill
+      // markings lying on a surface neither
       const bool plane = it.node != nullptr && it.node->kind() == NodeKind::Plane;
-      if (it.look.alpha >= 1.0f && !it.look.unlit && !plane) r.drawItem(it, light_view, light_proj, cam, opt, depth_pass);
+      if (it.look.alpha >= 1.0f && !it.look.unlit && !plane && !it.decal) {
+        r.drawItem(it, light_view, light_proj, cam, opt, depth_pass);
+      }
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -571,7 +663,13 @@ DrawStats Renderer::draw(const scene::Scene& scene, const Camera& cam, const Dra
   });
   for (const Item* it : solid) {
     r.setLook(it->look);
+    // a decal over the surface it lies on
+    if (it->decal) {
+      glEnable(GL_POLYGON_OFFSET_FILL);
+      glPolygonOffset(-1.0f, -4.0f);
+    }
     r.drawItem(*it, view, proj, cam, opt, stats);
+    if (it->decal) glDisable(GL_POLYGON_OFFSET_FILL);
   }
   r.ground(cam, view, proj, opt, fog == nullptr, terrain ? std::nullopt : ground.has_value() ? ground : 0.0);
   r.use(r.program);

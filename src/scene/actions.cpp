@@ -42,6 +42,13 @@ const Node* materialAt(const Node& node) {
   return nullptr;
 }
 
+const Node* drivingConveyor(const Node& parent) {
+  // a Conveyor marked as a template moves nothing: the one before it, then
+  const Node* conveyor = parent.lastChild(NodeKind::Conveyor);
+  while (conveyor != nullptr && conveyor->is_template) conveyor = conveyor->previous(NodeKind::Conveyor);
+  return conveyor;
+}
+
 void updateTransforms(Node& root) {
   traverse(root, [](Node& n, const TraversalState& st) {
     n.world = st.pose;

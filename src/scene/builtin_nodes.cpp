@@ -192,7 +192,10 @@ void registerBuiltinNodes(TypeRegistry& r) {
               choice(field::Region::Scope, "scope", {"world", "siblings", "parent"},
                      "what it feels: its siblings and their subtrees, its parent's subtree, or everything"),
               choice(field::Region::Report, "report", {"all", "bodies"},
-                     "what it reports: bodies and static shapes, or bodies only")}));
+                     "what it reports: bodies and static shapes, or bodies only"),
+              f(field::Region::Visible, "visible", K::Bool, false, "",
+                "drawn always, not only with the sensor volumes: a ray as a red beam, a volume translucent red; "
+                "green while it holds something")}));
   r.add(type(NodeKind::RangeFinder, "RangeFinder", Category::Sensor, false, "the distance along a ray (+x) to the first thing it hits",
              with({f(field::RangeFinder::Length, "length", K::Float, 10.0, "m", "how far it sees", 0, kInf),
                    choice(field::RangeFinder::Scope, "scope", {"world", "siblings", "parent"}, "what it sees")},

@@ -288,5 +288,26 @@ TEST(Templates, TheMaterialInEffectIsTheNearestBeforeAtAnyLevel) {
   EXPECT_EQ(g->lastChild(NodeKind::Sphere), nullptr);
 }
 
+TEST(Templates, TheShapesAreDrivenByTheLastConveyorBesideThemThatIsNoTemplate) {
+  Scene s;
+  const auto& group = *s.types().find(NodeKind::Group);
+  const auto& conveyor = *s.types().find(NodeKind::Conveyor);
+  const auto& cube = *s.types().find(NodeKind::Cube);
+  Node* belt = s.create(group, "belt", s.root());
+  s.create(cube, "deck", *belt);
+  EXPECT_EQ(drivingConveyor(*belt), nullptr);
+  Node* first = s.create(conveyor, "first", *belt);
+  EXPECT_EQ(drivingConveyor(*belt), first);
+  Node* second = s.create(conveyor, "second", *belt);
+  EXPECT_EQ(drivingConveyor(*belt), second);
+  // a template Conveyor moves nothing: the one before it drives, or none
+  second->is_template = true;
+  EXPECT_EQ(drivingConveyor(*belt), first);
+  first->is_template = true;
+  EXPECT_EQ(drivingConveyor(*belt), nullptr);
+  // only the children count, not the nodes below them
+  EXPECT_EQ(drivingConveyor(s.root()), nullptr);
+}
+
 }  // namespace
 }  // namespace gdpn::scene

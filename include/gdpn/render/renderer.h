@@ -3,12 +3,15 @@
 /// Draws a scene with OpenGL 3.3 core: materials (ambient, diffuse, specular, emissive,
 /// shininess, transparency, transparent shapes back to front), directional, point and spot
 /// lights (all gathered before anything is drawn), fog, every shape type, meshes from files,
-/// terrain with view-dependent level of detail, overlays for sensors and joints, and a
+/// terrain with view-dependent level of detail, overlays for sensors and joints, markings
+/// that show how parts work (a conveyor's moving arrows, a visible Region's beam), and a
 /// highlight on a selection. The renderer only reads the scene, draws into whatever
 /// framebuffer is bound (gdpn::platform makes contexts and offscreen targets), and knows
-/// nothing of models, simulations or the IDE.
+/// nothing of models, simulations or the IDE (the caller gives the model time and which
+/// sensors are active, for the parts' markings).
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,6 +34,14 @@ struct DrawOptions {
   int height = 720;                    ///< pixels
   core::Vec3 background{0.62, 0.70, 0.80};  ///< colour where nothing is (fog colour when fogged)
   bool sensors = false;                ///< translucent sensor volumes and rays
+  /// What shows people how the parts work (camera sensors see none of it, as they see no
+  /// overlay): arrows on the top face of each Cube a Conveyor drives (scene::drivingConveyor),
+  /// pointing where it carries things and moving at its speed; Regions marked `visible`, a
+  /// ray as a red beam and a volume translucent red, green while active.
+  bool markings = true;
+  double time = 0;                     ///< model time, s: how far a conveyor's arrows have moved (speed times time)
+  /// Whether sensor node `n` is active now (a Region holds something); null: none is.
+  std::function<bool(const scene::Node& n)> active;
   bool joints = false;                 ///< joint axes
   std::vector<ContactMark> contacts;   ///< contact points to mark, over everything: a dot 3 cm across and its normal, 20 cm long
   std::vector<scene::NodeHandle> selection;  ///< nodes whose shapes get outlined

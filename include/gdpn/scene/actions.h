@@ -37,6 +37,12 @@ void traverse(Node& node, const std::function<void(Node&, const TraversalState&)
 /// an ancestor among the ancestor's siblings, that is no template; null when none is.
 const Node* materialAt(const Node& node);
 
+/// The Conveyor that drives the shapes among `parent`'s children: the last of its children
+/// that is a Conveyor and no template; null when none is. The physics moves what touches
+/// those shapes along it, and the renderer draws its arrows on them. Constant time in the
+/// children but for template Conveyors.
+const Node* drivingConveyor(const Node& parent);
+
 /// Sets Node::world and Node::world_scale of every node below `root` (itself included).
 void updateTransforms(Node& root);
 

@@ -53,7 +53,7 @@ enum class Conveyor : std::uint8_t { Speed, Direction };
 /// GradientField.
 enum class GradientField : std::uint8_t { Width, Depth, Nx, Ny, Vectors };
 /// Region.
-enum class Region : std::uint8_t { Shape, Size, Radius, Height, Length, Scope, Report };
+enum class Region : std::uint8_t { Shape, Size, Radius, Height, Length, Scope, Report, Visible };
 /// RangeFinder.
 enum class RangeFinder : std::uint8_t { Length, Scope, Noise, Bias, Resolution };
 /// GradientSensor.

@@ -178,6 +178,11 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
   if (physics != nullptr) {
     physics->recordContacts(app.world.show_contacts);
     for (const auto& c : physics->contacts()) options.contacts.push_back({c.position, c.normal});
+    // the parts' markings: a conveyor's arrows move with the run's time, a visible Region
+    // shows when it holds something
+    const auto& sim = app.run().session()->simulation();
+    options.time = app.run().time();
+    options.active = [&sim](const scene::Node& n) { return sim.reading(n.handle()).active; };
   }
   // draw only when something seen changed: the run, the model, the camera, the selection
   WorldKey seen{app.run().steps(), app.run().mode(), app.document().sceneRevision(), camera.eye, camera.target,

@@ -114,4 +114,21 @@ GpuMesh unitPlane() {
   return g;
 }
 
+GpuMesh unitChevron() {
+  // ">" as two parallelograms meeting along the x axis: the outer edge through the tip at
+  // (0.5, 0), the inner edge through the notch 0.45 behind it
+  constexpr float kArm = 0.45f;
+  ShapeBuilder b;
+  b.v.reserve(6 * 6);
+  const glm::vec3 n(0, 0, 1);
+  const auto back_left = b.vertex({-0.5f, 0.5f, 0}, n), back_left_in = b.vertex({-0.5f + kArm, 0.5f, 0}, n);
+  const auto tip = b.vertex({0.5f, 0, 0}, n), notch = b.vertex({0.5f - kArm, 0, 0}, n);
+  const auto back_right_in = b.vertex({-0.5f + kArm, -0.5f, 0}, n), back_right = b.vertex({-0.5f, -0.5f, 0}, n);
+  b.quad(back_left, notch, tip, back_left_in);
+  b.quad(notch, back_right, back_right_in, tip);
+  GpuMesh g;
+  g.upload(b.v, b.i);
+  return g;
+}
+
 }  // namespace gdpn::render::detail

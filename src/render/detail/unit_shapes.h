@@ -27,5 +27,8 @@ UnitShape unitSphere();
 UnitShape unitRound(bool cone);
 /// "Endless" ground facing +z: a 2 km square.
 GpuMesh unitPlane();
+/// A flat chevron facing +z and pointing +x: 1 long (x) and 1 wide (y), centred on the
+/// origin, its two arms 0.45 thick along x (a conveyor's arrow, stretched to its size).
+GpuMesh unitChevron();
 
 }  // namespace gdpn::render::detail
