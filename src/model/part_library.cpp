@@ -285,6 +285,49 @@ std::vector<std::string> placePart(Model& model, const std::string& page, const 
   return out;
 }
 
+std::string addPartControl(Model& model, const std::string& page, const std::string& instance, std::string& why) {
+  auto target = std::find_if(model.net.pages.begin(), model.net.pages.end(),
+                             [&](const net::PageSpec& p) { return p.name == page; });
+  const net::InstanceSpec* inst = nullptr;
+  if (target != model.net.pages.end()) {
+    for (const auto& i : target->instances) {
+      if (i.name == instance) inst = &i;
+    }
+  }
+  const auto spec = inst ? model.parts.find(inst->type) : model.parts.end();
+  if (!inst || spec == model.parts.end()) {
+    why = "no part instance '" + instance + "' on page '" + page + "'";
+    return {};
+  }
+  // the pattern the part names, else one that says it controls the part
+  std::string pattern = spec->second.control;
+  if (pattern.empty()) {
+    for (const auto& [type, s] : model.parts) {
+      if (s.controls == inst->type) pattern = type;
+    }
+  }
+  if (pattern.empty() || !pageType(model, pattern)) {
+    why = "'" + inst->type + "' comes with no control pattern in the model";
+    return {};
+  }
+  for (const auto& i : target->instances) {
+    if (i.part == instance) {
+      why = "'" + i.name + "' controls '" + instance + "' already";
+      return {};
+    }
+  }
+  net::InstanceSpec c;
+  const std::string wanted = instance + "_control";
+  const bool taken = std::any_of(target->instances.begin(), target->instances.end(), [&](const auto& i) { return i.name == wanted; }) ||
+                     std::any_of(target->places.begin(), target->places.end(), [&](const auto& i) { return i.name == wanted; }) ||
+                     std::any_of(target->transitions.begin(), target->transitions.end(), [&](const auto& i) { return i.name == wanted; });
+  c.name = taken ? freeInstanceName(model, page, wanted) : wanted;
+  c.type = pattern;
+  c.part = instance;
+  target->instances.push_back(std::move(c));
+  return target->instances.back().name;
+}
+
 std::vector<IoEntry> mapPartIo(Model& model, const std::string& page, const std::string& instance, std::string& why) {
   const net::InstanceSpec* inst = nullptr;
   for (const auto& p : model.net.pages) {

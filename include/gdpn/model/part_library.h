@@ -63,6 +63,14 @@ std::vector<std::string> placePart(Model& model, const std::string& page, const 
                                    const std::array<double, 3>& translation, double angle, bool control,
                                    std::string& why, const std::string& name = {});
 
+/// Adds to page `page` of `model` an instance of the control pattern of part instance
+/// `instance` (the page type its part names as `control`, else one that says it `controls` the
+/// part; it must be in the model, as copyPartType leaves it), bound to it with `part:` and named
+/// after it (`pusher1_control`, or a free name after that). Returns the new instance's name;
+/// "" with `why` when there is no such part instance, its part has no control pattern in the
+/// model, or an instance on the page controls it already.
+std::string addPartControl(Model& model, const std::string& page, const std::string& instance, std::string& why);
+
 /// Maps every I/O of part instance `instance` (its name on `page`) into the `io` section at
 /// the first free addresses of their tables (a digital input in `discrete_inputs`, an analogue
 /// one in `input_registers` as a float32, a digital output in `coils`, an analogue one in
