@@ -32,6 +32,9 @@ class Document {
   [[nodiscard]] const model::Model& model() const { return model_; }
   /// The net, for the commands that edit it (net_edit.h); everything else reads model().net.
   [[nodiscard]] net::NetSpec& editableNet() { return model_.net; }
+  /// The whole model, for the commands that edit more than the net and the scene (a part
+  /// placed from the palette brings page types, their scenes and part sections: part_edit.h).
+  [[nodiscard]] model::Model& editableModel() { return model_; }
   /// Puts `scene` in place of the model's scene (for the commands that edit the tree,
   /// scene_edit.h); returns the one it replaces.
   std::shared_ptr<scene::Scene> swapScene(std::shared_ptr<scene::Scene> scene);

@@ -1,0 +1,122 @@
+#pragma once
+/// \file
+/// Commands that edit a document's part instances: a part placed from the palette (with the
+/// page types it brings), its control pattern added, an instance's parameter or placement set.
+/// The first two make one library call each (model/part_library.h); every one keeps what it
+/// changed, so that undo gives the model back exactly and redo puts the same result back.
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gdpn/ide/command.h"
+#include "gdpn/model/model.h"
+#include "gdpn/model/part_library.h"
+
+namespace gdpn::ide {
+
+/// Where a part instance is written: an instance of a part type on a top-level page.
+struct PartInstanceAt {
+  std::string page;  ///< the page ("main")
+  std::string name;  ///< the instance ("belt_conveyor1")
+  friend bool operator==(const PartInstanceAt&, const PartInstanceAt&) = default;
+};
+
+/// The part instance `name` names: by its own name (which is also the path of the Transform
+/// that holds its machine in the plant) or qualified by its page (`main/belt_conveyor1`).
+/// Nullopt when no page has an instance of a part type by that name.
+[[nodiscard]] std::optional<PartInstanceAt> findPartInstance(const model::Model& model, const std::string& name);
+/// The instance `at` names, or null.
+[[nodiscard]] const net::InstanceSpec* instanceAt(const model::Model& model, const PartInstanceAt& at);
+/// The name of the instance on `at`'s page that controls it (its `part:` names it); "" when none.
+[[nodiscard]] std::string controllerOf(const model::Model& model, const PartInstanceAt& at);
+/// The control pattern of part type `type` held by `model` (the one it names, else one that says
+/// it controls it); "" when the model holds none.
+[[nodiscard]] std::string controlPatternOf(const model::Model& model, const std::string& type);
+
+/// What a part edit changes: the net and the page types' scenes and part sections.
+struct PartTypesState {
+  net::NetSpec net;  ///< pages and page types
+  std::map<std::string, std::shared_ptr<const scene::Scene>> type_scenes;  ///< by page type
+  std::map<std::string, model::PartSpec> parts;  ///< by page type
+};
+
+/// Places library part `part` on `page` (model::placePart, once): its types copied in when the
+/// model lacks them, an instance at `translation` (m) turned `angle` degrees about z, and with
+/// `control` its control pattern bound to it. Undo removes what it added.
+class PlacePartCommand final : public Command {
+ public:
+  /// The drop of `part` on `page` at `translation` (world, m), turned `angle` degrees about z.
+  PlacePartCommand(model::LibraryPart part, std::string page, std::array<double, 3> translation, double angle,
+                   bool control = false);
+  std::string apply(Document& doc) override;
+  void revert(Document& doc) override;
+  [[nodiscard]] std::string label() const override;
+  void absorb(const Command&) override {}
+  /// The new instances' names, the part's first (empty until applied).
+  [[nodiscard]] const std::vector<std::string>& made() const { return made_; }
+
+ private:
+  model::LibraryPart part_;
+  std::string page_;
+  std::array<double, 3> translation_;
+  double angle_;
+  bool control_;
+  std::vector<std::string> made_;
+  std::optional<PartTypesState> other_;  // the state not in the document now (after apply: the one before)
+};
+
+/// Adds the control pattern's instance of part instance `at`, bound to it
+/// (model::addPartControl, once). Undo removes it.
+class AddPartControlCommand final : public Command {
+ public:
+  /// The control of part instance `at`.
+  explicit AddPartControlCommand(PartInstanceAt at);
+  std::string apply(Document& doc) override;
+  void revert(Document& doc) override;
+  [[nodiscard]] std::string label() const override;
+  void absorb(const Command&) override {}
+  [[nodiscard]] bool changesScene() const override { return false; }
+  /// The new instance's name (empty until applied).
+  [[nodiscard]] const std::string& made() const { return made_; }
+
+ private:
+  PartInstanceAt at_;
+  std::string made_;
+  std::optional<net::PageSpec> other_;  // the page not in the document now
+};
+
+/// Sets one parameter of a part instance, or its placement. A parameter the part does not
+/// declare, a fraction for a whole-number one or a value that is not finite is refused.
+class SetInstanceCommand final : public Command {
+ public:
+  /// Parameter `param` of instance `at` becomes `value` (in the parameter's unit).
+  static std::unique_ptr<SetInstanceCommand> param(PartInstanceAt at, std::string param, double value);
+  /// Instance `at` stands at `translation` (m) turned by `rotation` (axis and degrees); the
+  /// moves of one drag (`merge` not 0) are one step.
+  static std::unique_ptr<SetInstanceCommand> placement(PartInstanceAt at, std::array<double, 3> translation,
+                                                       std::array<double, 4> rotation, std::uint64_t merge = 0);
+  std::string apply(Document& doc) override;
+  void revert(Document& doc) override;
+  [[nodiscard]] std::string label() const override;
+  [[nodiscard]] std::uint64_t mergeKey() const override { return merge_; }
+  void absorb(const Command& next) override;
+  [[nodiscard]] bool changesScene() const override { return false; }
+
+ private:
+  SetInstanceCommand() = default;
+  PartInstanceAt at_;
+  std::string param_;  // "" for a placement
+  double value_ = 0;
+  std::array<double, 3> translation_{0, 0, 0};
+  std::array<double, 4> rotation_{0, 0, 1, 0};
+  std::uint64_t merge_ = 0;
+  std::optional<net::InstanceSpec> before_;  // the instance before the first apply
+  std::optional<net::InstanceSpec> after_;   // and after the last
+};
+
+}  // namespace gdpn::ide

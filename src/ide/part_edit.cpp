@@ -1,0 +1,227 @@
+// Part instances edited: placed from the library, given their control, their parameters and
+// placement set.
+
+#include "gdpn/ide/part_edit.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "gdpn/core/text.h"
+#include "gdpn/ide/document.h"
+
+namespace gdpn::ide {
+
+namespace {
+
+net::PageSpec* pageOf(net::NetSpec& net, const std::string& name) {
+  const auto it = std::find_if(net.pages.begin(), net.pages.end(), [&](const auto& p) { return p.name == name; });
+  return it == net.pages.end() ? nullptr : &*it;
+}
+
+net::InstanceSpec* instanceOf(net::NetSpec& net, const PartInstanceAt& at) {
+  auto* page = pageOf(net, at.page);
+  if (page == nullptr) return nullptr;
+  const auto it = std::find_if(page->instances.begin(), page->instances.end(), [&](const auto& i) { return i.name == at.name; });
+  return it == page->instances.end() ? nullptr : &*it;
+}
+
+/// The part state of `doc`'s model, moved out (the document keeps empty ones until `restore`).
+PartTypesState takeState(Document& doc) {
+  auto& m = doc.editableModel();
+  return {std::move(m.net), std::move(m.type_scenes), std::move(m.parts)};
+}
+
+void putState(Document& doc, PartTypesState state) {
+  auto& m = doc.editableModel();
+  m.net = std::move(state.net);
+  m.type_scenes = std::move(state.type_scenes);
+  m.parts = std::move(state.parts);
+}
+
+}  // namespace
+
+std::optional<PartInstanceAt> findPartInstance(const model::Model& model, const std::string& name) {
+  const auto slash = name.find('/');
+  const std::string page = slash == std::string::npos ? std::string() : name.substr(0, slash);
+  const std::string own = slash == std::string::npos ? name : name.substr(slash + 1);
+  for (const auto& p : model.net.pages) {
+    if (!page.empty() && p.name != page) continue;
+    for (const auto& i : p.instances) {
+      if (i.name == own && model.parts.contains(i.type)) return PartInstanceAt{p.name, i.name};
+    }
+  }
+  return std::nullopt;
+}
+
+const net::InstanceSpec* instanceAt(const model::Model& model, const PartInstanceAt& at) {
+  return instanceOf(const_cast<net::NetSpec&>(model.net), at);
+}
+
+std::string controllerOf(const model::Model& model, const PartInstanceAt& at) {
+  for (const auto& p : model.net.pages) {
+    if (p.name != at.page) continue;
+    for (const auto& i : p.instances) {
+      if (i.part == at.name) return i.name;
+    }
+  }
+  return {};
+}
+
+std::string controlPatternOf(const model::Model& model, const std::string& type) {
+  const auto spec = model.parts.find(type);
+  if (spec == model.parts.end()) return {};
+  std::string pattern = spec->second.control;
+  if (pattern.empty()) {
+    for (const auto& [name, s] : model.parts) {
+      if (s.controls == type) pattern = name;
+    }
+  }
+  const bool held = std::any_of(model.net.page_types.begin(), model.net.page_types.end(),
+                                [&](const auto& t) { return t.name == pattern; });
+  return held ? pattern : std::string();
+}
+
+PlacePartCommand::PlacePartCommand(model::LibraryPart part, std::string page, std::array<double, 3> translation,
+                                   double angle, bool control)
+    : part_(std::move(part)), page_(std::move(page)), translation_(translation), angle_(angle), control_(control) {}
+
+std::string PlacePartCommand::apply(Document& doc) {
+  if (other_) {
+    // a redo: exactly what the first apply made
+    auto before = takeState(doc);
+    putState(doc, std::move(*other_));
+    other_ = std::move(before);
+    return {};
+  }
+  const auto& m = doc.model();
+  PartTypesState before{m.net, m.type_scenes, m.parts};
+  std::string why;
+  made_ = model::placePart(doc.editableModel(), page_, part_, translation_, angle_, control_, why);
+  if (made_.empty() || !why.empty()) {
+    putState(doc, std::move(before));
+    made_.clear();
+    return why.empty() ? "'" + part_.name + "' cannot be placed" : why;
+  }
+  other_ = std::move(before);
+  return {};
+}
+
+void PlacePartCommand::revert(Document& doc) {
+  auto now = takeState(doc);
+  putState(doc, std::move(*other_));
+  other_ = std::move(now);
+}
+
+std::string PlacePartCommand::label() const {
+  return "place " + (made_.empty() ? part_.name : made_.front()) + " (" + part_.name + ")";
+}
+
+AddPartControlCommand::AddPartControlCommand(PartInstanceAt at) : at_(std::move(at)) {}
+
+std::string AddPartControlCommand::apply(Document& doc) {
+  auto* page = pageOf(doc.editableNet(), at_.page);
+  if (page == nullptr) return "no page '" + at_.page + "'";
+  if (other_) {
+    std::swap(*page, *other_);
+    return {};
+  }
+  net::PageSpec before = *page;
+  std::string why;
+  made_ = model::addPartControl(doc.editableModel(), at_.page, at_.name, why);
+  if (made_.empty()) return why;
+  other_ = std::move(before);
+  return {};
+}
+
+void AddPartControlCommand::revert(Document& doc) {
+  if (auto* page = pageOf(doc.editableNet(), at_.page); page != nullptr && other_) std::swap(*page, *other_);
+}
+
+std::string AddPartControlCommand::label() const { return "add the control of " + at_.name; }
+
+std::unique_ptr<SetInstanceCommand> SetInstanceCommand::param(PartInstanceAt at, std::string param, double value) {
+  std::unique_ptr<SetInstanceCommand> c(new SetInstanceCommand());
+  c->at_ = std::move(at);
+  c->param_ = std::move(param);
+  c->value_ = value;
+  return c;
+}
+
+std::unique_ptr<SetInstanceCommand> SetInstanceCommand::placement(PartInstanceAt at, std::array<double, 3> translation,
+                                                                  std::array<double, 4> rotation, std::uint64_t merge) {
+  std::unique_ptr<SetInstanceCommand> c(new SetInstanceCommand());
+  c->at_ = std::move(at);
+  c->translation_ = translation;
+  c->rotation_ = rotation;
+  c->merge_ = merge;
+  return c;
+}
+
+std::string SetInstanceCommand::apply(Document& doc) {
+  auto* inst = instanceOf(doc.editableNet(), at_);
+  if (inst == nullptr) return "no instance '" + at_.name + "' on page '" + at_.page + "'";
+  if (after_) {  // a redo
+    *inst = *after_;
+    return {};
+  }
+  net::InstanceSpec next = *inst;
+  if (param_.empty()) {
+    for (const double v : translation_) {
+      if (!std::isfinite(v)) return "a translation is three finite numbers (m)";
+    }
+    next.translation = translation_;
+    next.rotation = rotation_;
+  } else {
+    const auto spec = doc.model().parts.find(inst->type);
+    const auto* declared = spec == doc.model().parts.end() ? nullptr : [&]() -> const model::Param* {
+      for (const auto& p : spec->second.params) {
+        if (p.name == param_) return &p;
+      }
+      return nullptr;
+    }();
+    if (declared == nullptr) return "part '" + inst->type + "' has no parameter '" + param_ + "'";
+    if (!std::isfinite(value_)) return "'" + param_ + "' is a number";
+    if (declared->integer && std::floor(value_) != value_) {
+      return "'" + param_ + "' is a whole number; " + core::formatDouble(value_) + " is not";
+    }
+    // set here, or written anew in the type's order of declaration
+    auto it = std::find_if(next.params.begin(), next.params.end(), [&](const auto& p) { return p.name == param_; });
+    if (it != next.params.end()) {
+      it->value = value_;
+    } else {
+      net::InstanceSpec::Param p;
+      p.name = param_;
+      p.value = value_;
+      next.params.push_back(std::move(p));
+      std::stable_sort(next.params.begin(), next.params.end(), [&](const auto& a, const auto& b) {
+        const auto order = [&](const std::string& n) {
+          const auto& ps = spec->second.params;
+          return std::find_if(ps.begin(), ps.end(), [&](const auto& x) { return x.name == n; }) - ps.begin();
+        };
+        return order(a.name) < order(b.name);
+      });
+    }
+  }
+  if (next == *inst) return "'" + at_.name + "' has that already";
+  before_ = *inst;
+  *inst = next;
+  after_ = std::move(next);
+  return {};
+}
+
+void SetInstanceCommand::revert(Document& doc) {
+  if (auto* inst = instanceOf(doc.editableNet(), at_); inst != nullptr && before_) *inst = *before_;
+}
+
+std::string SetInstanceCommand::label() const {
+  return param_.empty() ? "move " + at_.name : "set " + at_.name + "." + param_ + " = " + core::formatDouble(value_);
+}
+
+void SetInstanceCommand::absorb(const Command& next) {
+  const auto& n = static_cast<const SetInstanceCommand&>(next);
+  after_ = n.after_;
+  translation_ = n.translation_;
+  rotation_ = n.rotation_;
+}
+
+}  // namespace gdpn::ide
