@@ -60,6 +60,8 @@ class Driver {
     queue_.button(b, down);
     drain();
   }
+  /// The button a drag with `hold: true` left down (-1: none).
+  int held = -1;
   /// Types `text` into the field that has the keyboard: two frames for a field that was just
   /// asked to take the keyboard to take it (ImGui gives it the focus a frame later, and the
   /// keyboard the frame after), then the text.
@@ -147,11 +149,23 @@ bool perform(App& app, Driver& d, const Action& given, const IdeOptions& o, int 
       d.button(a.button, false);
       break;
     case ActionKind::Drag: {
-      d.move(a.x, a.y);
-      d.button(a.button, true);
+      // a drag held down by the last one goes on from where it is
+      if (d.held != a.button) {
+        if (d.held >= 0) d.button(d.held, false);
+        d.move(a.x, a.y);
+        d.button(a.button, true);
+      } else {
+        a.x = ImGui::GetIO().MousePos.x;
+        a.y = ImGui::GetIO().MousePos.y;
+      }
       constexpr int kSteps = 8;
       for (int i = 1; i <= kSteps; ++i) d.move(a.x + (a.x2 - a.x) * i / kSteps, a.y + (a.y2 - a.y) * i / kSteps);
-      d.button(a.button, false);
+      if (a.hold) {
+        d.held = a.button;
+      } else {
+        d.button(a.button, false);
+        d.held = -1;
+      }
       break;
     }
     case ActionKind::Wheel:

@@ -114,8 +114,11 @@ class ActionReader {
   }
   bool drag(const YAML::Node& v, Action& a) {
     a.kind = ActionKind::Drag;
-    if (!v.IsMap() || !v["from"] || !v["to"]) return fail(v, "expects {from: [X, Y], to: [X, Y]}");
+    if (!v.IsMap() || !v["from"] || !v["to"]) return fail(v, "expects {from: [X, Y], to: [X, Y], button: left|right|middle, hold: true|false}");
     if (!target(v["from"], a.x, a.y, a.on) || !target(v["to"], a.x2, a.y2, a.on2)) return false;
+    if (const auto h = v["hold"]) {
+      if (!h.IsScalar() || !YAML::convert<bool>::decode(h, a.hold)) return fail(h, "expects hold: true or false");
+    }
     return button(v, a);
   }
   bool button(const YAML::Node& v, Action& a) {

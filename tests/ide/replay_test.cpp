@@ -84,6 +84,18 @@ TEST(Replay, MistakesAreLocated) {
   }
 }
 
+TEST(Replay, ADragMayHoldItsButtonDownAndStartAtANamedItem) {
+  core::Diagnostics diags;
+  const auto a = parse("- drag: {from: [palette, items, belt_conveyor], to: [world, parts, belt1, +x], hold: true}\n- drag: {from: [1, 2], to: [3, 4]}\n", diags);
+  ASSERT_TRUE(a) << diags.str();
+  EXPECT_TRUE((*a)[0].hold);
+  EXPECT_EQ((*a)[0].on, (std::vector<std::string>{"palette", "items", "belt_conveyor"}));
+  EXPECT_EQ((*a)[0].on2, (std::vector<std::string>{"world", "parts", "belt1", "+x"}));
+  EXPECT_FALSE((*a)[1].hold);
+  EXPECT_FALSE(parse("- drag: {from: [1, 2], to: [3, 4], hold: sometimes}\n", diags));
+  EXPECT_NE(diags.str().find("a.yaml:1:42: error: expects hold: true or false"), std::string::npos) << diags.str();
+}
+
 TEST(Replay, AnEmptyFileHasNoActions) {
   core::Diagnostics diags;
   const auto a = parse("", diags);

@@ -29,7 +29,9 @@ enum class ActionKind : std::uint8_t {
                ///< `release: NAME` lets it go (field: hold, release)
   Type,        ///< `type: TEXT`: the characters typed into the field that has the keyboard
   Click,       ///< `click: [X, Y]` window pixels, left button; `click: {at: [X, Y], button: right}`
-  Drag,        ///< `drag: {from: [X, Y], to: [X, Y], button: left|right|middle}`
+  Drag,        ///< `drag: {from: [X, Y], to: [X, Y], button: left|right|middle}`; with `hold: true`
+               ///< the button stays down at `to` (a screenshot shows the drag under way) and the
+               ///< next drag goes on from there
                ///< (a point of Click and Drag may also be an item the last frame's report placed,
                ///< named by the keys that lead to it: `click: [tree, rows, belt]`)
   Wheel,       ///< `wheel: {at: [X, Y], clicks: N}`: the mouse wheel turned N clicks (negative: back) there
@@ -51,6 +53,7 @@ struct Action {
   double x = 0, y = 0;         ///< Click, Drag, Wheel: the point (Drag: where it starts), pixels
   double x2 = 0, y2 = 0;       ///< Drag: where it ends, pixels
   int button = 0;              ///< Click, Drag: 0 left, 1 right, 2 middle
+  bool hold = false;           ///< Drag: the button stays down at the end
   std::vector<std::string> on;   ///< Click, Drag: the report's keys to the item at (x, y), when named so
   std::vector<std::string> on2;  ///< Drag: the report's keys to the item at (x2, y2), when named so
   core::SourceLoc loc;         ///< where it was written
