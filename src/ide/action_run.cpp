@@ -47,6 +47,7 @@ bool actionEnabled(const App& app, ActionId id) {
     case ActionId::WorldFull:
     case ActionId::NetFull:
     case ActionId::MiniView:
+    case ActionId::Palette:
     case ActionId::Sensors:
     case ActionId::Joints:
     case ActionId::Contacts:
@@ -84,6 +85,7 @@ bool actionChecked(const App& app, ActionId id) {
     case ActionId::WorldFull: return app.splittersView().full == FullView::World;
     case ActionId::NetFull: return app.splittersView().full == FullView::Net;
     case ActionId::MiniView: return app.world.show_mini;
+    case ActionId::Palette: return app.splittersView().show_palette;
     case ActionId::Sensors: return app.world.show_sensors;
     case ActionId::Joints: return app.world.show_joints;
     case ActionId::Contacts: return app.world.show_contacts;
@@ -156,6 +158,7 @@ std::string performAction(App& app, ActionId id) {
     case ActionId::WorldFull: app.fill(FullView::World); break;
     case ActionId::NetFull: app.fill(FullView::Net); break;
     case ActionId::MiniView: app.world.show_mini = !app.world.show_mini; break;
+    case ActionId::Palette: app.splitters().show_palette = !app.splitters().show_palette; break;
     case ActionId::Sensors: app.world.show_sensors = !app.world.show_sensors; break;
     case ActionId::Joints: app.world.show_joints = !app.world.show_joints; break;
     case ActionId::Contacts: app.world.show_contacts = !app.world.show_contacts; break;

@@ -47,6 +47,8 @@ constexpr ActionInfo kActions[] = {
      "The net view alone, in the whole window (again: back to the panels)"},
     {A::MiniView, "mini-view", "Mini Net View", M::View, "", false, true, false,
      "The net, fitted, in a small window over the world view"},
+    {A::Palette, "palette", "Parts Palette", M::View, "", false, true, false,
+     "The library's parts under the tree view: drag one into the world view to place it"},
     {A::Sensors, "sensors", "Sensor Volumes", M::View, "", false, true, true, "Draw the sensors' volumes and rays"},
     {A::Joints, "joints", "Joint Axes", M::View, "", false, true, false, "Draw the joints' axes"},
     {A::Contacts, "contacts", "Contact Points", M::View, "", false, true, false,

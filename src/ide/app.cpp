@@ -23,6 +23,7 @@
 #include "gdpn/session/breakpoint_syntax.h"
 #include "views.h"
 #include "views/net_view_state.h"
+#include "views/palette_state.h"
 
 namespace gdpn::ide {
 
@@ -54,7 +55,8 @@ Fonts loadFonts() {
 }
 
 App::App(std::unique_ptr<Document> doc, session::SessionOptions options)
-    : doc_(std::move(doc)), options_(options), net_view_(std::make_unique<NetViewState>()) {
+    : doc_(std::move(doc)), options_(options), net_view_(std::make_unique<NetViewState>()),
+      palette_(std::make_unique<PaletteState>()) {
   core::Diagnostics diags;
   (void)run_.open(*doc_, diags, std::move(options));
   if (std::filesystem::exists(doc_->model().path)) recent = withRecent(recent, absolutePath(doc_->model().path));
@@ -120,6 +122,7 @@ void App::initGraphics(Fonts f) {
 
 scene::Scene* App::shownScene() const {
   if (run_.mode() != RunMode::Edit && run_.session() != nullptr) return run_.session()->simulation().plant();
+  if (palette_->edit_scene) return palette_->edit_scene.get();
   return doc_->scene();
 }
 
@@ -456,6 +459,7 @@ void App::replaceDocument(std::unique_ptr<Document> doc, bool untitled) {
   (void)run_.open(*doc_, diags, options_);
   run_.setPlantOnly(false);
   net_view_ = std::make_unique<NetViewState>();
+  palette_ = std::make_unique<PaletteState>();  // the new model's parts are scanned for at the next frame
   token_types_revision_ = ~std::uint64_t{0};
   inspector.scripts = {};
   world.manipulating = {};
@@ -766,6 +770,7 @@ void App::frame(float width, float height, double wall_seconds) {
   checkReload();
   checkAutosave(wall_seconds);
   followEdits(wall_seconds);
+  refreshEditScene(*this);
   run_.advance(wall_seconds);
 
   // the actions' shortcuts, everywhere
@@ -787,6 +792,8 @@ void App::frame(float width, float height, double wall_seconds) {
   drawToolbar(*this, layout.toolbar, report["toolbar"], report["menu"]);
   // a view filling the window leaves the others out
   if (layout.tree.w > 0) drawTreeView(*this, layout.tree, report["tree"]);
+  if (layout.palette.w > 0) drawPalette(*this, layout.palette, report["palette"]);
+  else report["palette"] = {{"shown", false}};
   if (layout.world.w > 0) drawWorldView(*this, layout.world, report["world"]);
   if (layout.net.w > 0) drawNetView(*this, layout.net, report["net_view"]);
   if (layout.inspector.w > 0) drawInspector(*this, layout.inspector, report["inspector"]);
@@ -794,7 +801,7 @@ void App::frame(float width, float height, double wall_seconds) {
   drawStatusBar(*this, layout.status, report["status"]);
 
   // the splitters: drag a handle to move it
-  for (int i = 0; i < 4; ++i) {
+  for (int i = 0; i < static_cast<int>(std::size(layout.handles)); ++i) {
     const auto& h = layout.handles[i];
     if (h.w <= 0 || h.h <= 0) continue;
     ImGui::SetCursorScreenPos({h.x, h.y});
@@ -814,12 +821,14 @@ void App::frame(float width, float height, double wall_seconds) {
         case Splitter::Bottom: splitters_.bottom_height -= d.y; break;
         case Splitter::Net: splitters_.net_width -= d.x; break;
         case Splitter::Diagnostics: splitters_.diagnostics_width -= d.x; break;
+        case Splitter::Palette: splitters_.palette_height -= d.y; break;
       }
     }
   }
   ImGui::End();
   // over the world view, in a window of its own so that it stays on top and can be moved
   if (layout.world.w > 0) drawMiniView(*this, layout.world, report["mini_view"]);
+  drawDropOffer(*this, report["palette"]);
   drawRestoreOffer(report["restore"]);
   drawFileBrowser(*this, report["file_browser"]);
   drawSaveQuestion(*this, report["save_changes"]);
@@ -843,11 +852,13 @@ void App::frame(float width, float height, double wall_seconds) {
   report["layout"] = {{"toolbar", rectJson(layout.toolbar)}, {"tree", rectJson(layout.tree)},
                       {"world", rectJson(layout.world)},     {"net", rectJson(layout.net)},
                       {"inspector", rectJson(layout.inspector)}, {"diagnostics", rectJson(layout.diagnostics)},
-                      {"status", rectJson(layout.status)}};
+                      {"status", rectJson(layout.status)}, {"palette", rectJson(layout.palette)}};
   report["splitters"] = {{"tree_width", splitters_.tree_width},
                          {"bottom_height", splitters_.bottom_height},
                          {"net_width", splitters_.net_width},
                          {"diagnostics_width", splitters_.diagnostics_width},
+                         {"palette_height", splitters_.palette_height},
+                         {"show_palette", splitters_.show_palette},
                          {"swapped", splitters_.swapped},
                          {"full", splitters_.full == FullView::World ? "world" : splitters_.full == FullView::Net ? "net" : "none"}};
   report["message"] = message;

@@ -31,6 +31,7 @@ namespace gdpn::ide {
 class WorldTexture;
 class PictureTexture;
 struct NetViewState;
+struct PaletteState;
 
 /// What the world view's last picture showed: when nothing of it changes, the picture is
 /// shown again without drawing.
@@ -44,8 +45,9 @@ struct WorldKey {
   int width = 0, height = 0;               ///< pixels
   unsigned shown = 0;                      ///< the overlays and looks on (App::Show bits)
   const void* session = nullptr;           ///< the run drawn
+  std::uint64_t edit_scene = 0;            ///< the palette's edit scene's generation (machines, ghost)
   friend bool operator==(const WorldKey& a, const WorldKey& b) {
-    return a.steps == b.steps && a.mode == b.mode && a.revision == b.revision && a.eye.x == b.eye.x &&
+    return a.steps == b.steps && a.mode == b.mode && a.revision == b.revision && a.edit_scene == b.edit_scene && a.eye.x == b.eye.x &&
            a.eye.y == b.eye.y && a.eye.z == b.eye.z && a.target.x == b.target.x && a.target.y == b.target.y &&
            a.target.z == b.target.z && a.fov == b.fov && a.selection == b.selection && a.width == b.width &&
            a.height == b.height && a.shown == b.shown && a.session == b.session;
@@ -247,7 +249,7 @@ class App {
 
   // the views' shared state, read and written by the view files (views/*.cpp)
   /// The scene the world and tree views show: the run's plant once it has run, else the
-  /// document's scene.
+  /// document's scene (with the part instances' machines placed in it, views/palette.cpp).
   [[nodiscard]] scene::Scene* shownScene() const;
   /// Selects `path` of the shown scene, and says so in the message line.
   void selectNode(const std::string& path);
@@ -288,6 +290,10 @@ class App {
   [[nodiscard]] const TokenTypes& tokenTypes();
   /// The net view's page, layout and viewport (views/net_view.cpp).
   [[nodiscard]] NetViewState& netView() { return *net_view_; }
+  /// The parts palette's state and the edit scene with the parts' machines (views/palette.cpp).
+  [[nodiscard]] PaletteState& palette() { return *palette_; }
+  /// The same, to read.
+  [[nodiscard]] const PaletteState& palette() const { return *palette_; }
   /// The compile errors of the run, if it failed to build.
   [[nodiscard]] const core::Diagnostics& runDiagnostics() const { return run_.buildDiagnostics(); }
 
@@ -347,6 +353,7 @@ class App {
   bool untitled_ = false;
   bool quit_requested_ = false;
   std::unique_ptr<NetViewState> net_view_;
+  std::unique_ptr<PaletteState> palette_;
   TokenTypes token_types_;
   std::uint64_t token_types_revision_ = ~std::uint64_t{0};
   RunControl run_;

@@ -39,6 +39,13 @@ Layout Layout::of(Splitters& s, float width, float height) {
     case FullView::Net: l.net = {0, body_top, width, body_h}; return l;
   }
   l.tree = {0, body_top, s.tree_width, body_h};
+  if (s.show_palette) {
+    // the Parts palette under the tree, as a catalogue under a scene graph
+    s.palette_height = clampSplit(s.palette_height, kMinView, body_h - kMinView - kHandle);
+    l.tree.h = std::max(body_h - s.palette_height - kHandle, 0.0F);
+    l.palette = {0, body_top + l.tree.h + kHandle, s.tree_width, s.palette_height};
+    l.handles[static_cast<int>(Splitter::Palette)] = {0, body_top + l.tree.h, s.tree_width, kHandle};
+  }
   const float big_w = std::max(right_w - s.net_width - kHandle, 0.0F);
   const Rect big{right_x, body_top, big_w, top_h};
   const Rect side{right_x + big_w + kHandle, body_top, s.net_width, top_h};
@@ -88,6 +95,7 @@ std::optional<Settings> loadSettingsFile(const std::string& path) {
       continue;
     }
     if (key == "swapped") s.swapped = text == "1";
+    if (key == "palette") s.show_palette = text == "1";
     if (key == "full") s.full = text == "world" ? FullView::World : text == "net" ? FullView::Net : FullView::None;
     float v = 0;
     std::istringstream value(text);
@@ -96,6 +104,7 @@ std::optional<Settings> loadSettingsFile(const std::string& path) {
     if (key == "bottom_height") s.bottom_height = v;
     if (key == "net_width") s.net_width = v;
     if (key == "diagnostics_width") s.diagnostics_width = v;
+    if (key == "palette_height") s.palette_height = v;
   }
   return settings;
 }
@@ -117,7 +126,7 @@ bool saveSettingsFile(const std::string& path, const Settings& settings) {
     out << "# gdpn ide: splitter positions (pixels), the views' places, the files opened last\n"
         << "tree_width=" << s.tree_width << "\nbottom_height=" << s.bottom_height << "\nnet_width=" << s.net_width
         << "\ndiagnostics_width=" << s.diagnostics_width << "\nswapped=" << (s.swapped ? 1 : 0) << "\nfull=" << full
-        << "\n";
+        << "\npalette=" << (s.show_palette ? 1 : 0) << "\npalette_height=" << s.palette_height << "\n";
     for (const auto& r : settings.recent) out << "recent=" << r << "\n";
     if (!out) return false;
   }

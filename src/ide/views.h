@@ -5,7 +5,13 @@
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
 #include "app.h"
+#include "gdpn/ide/part_edit.h"
 #include "gdpn/ide/layout.h"
 
 namespace gdpn::ide {
@@ -55,6 +61,47 @@ void drawDiagnostics(App& app, const Rect& at, nlohmann::json& report, nlohmann:
 /// The run's breakpoints (each with a button that removes it) and a field that adds one on a
 /// Python condition; drawn under the diagnostics.
 void drawBreakpoints(App& app, nlohmann::json& report);
+/// The drag-and-drop payload of a part dragged from the palette: its name.
+inline constexpr const char* kPartPayload = "GDPN_PART";
+
+/// The Parts palette: the library's parts (scanned along model::partSearchPath of the model's
+/// folder when a model is opened), grouped, each with its picture and name, a search field;
+/// a part dragged from it is dropped in the world view.
+void drawPalette(App& app, const Rect& at, nlohmann::json& report);
+/// After a drop of a part with a control pattern: "Add its control pattern?" at the drop point
+/// (Yes, the default on Enter; No, or Escape); its buttons go into `report["offer"]`.
+void drawDropOffer(App& app, nlohmann::json& report);
+/// Once a frame before the views draw (edit mode): the run follows an edit of the part instances
+/// at once, and the edit scene (the document's scene with the parts' machines) is made again
+/// when the document or the run changed; none is needed when the model places no machine.
+void refreshEditScene(App& app);
+/// What a ghost scene the world view draws while a part is dragged over it.
+struct PaletteGhost {
+  scene::Scene* scene = nullptr;             ///< the edit scene with the ghost (null: no drag)
+  std::vector<scene::NodeHandle> selection;  ///< the ghost, outlined
+};
+/// Before the world view draws: where a part dragged over the picture (at `at`, `w` x `h`
+/// pixels, seen by `view`) would land, and the scene with its ghost there.
+PaletteGhost paletteGhost(App& app, const OrbitCamera& view, ImVec2 at, float w, float h);
+/// After the world view's button: a part dropped on it is placed (one step of undo), selected,
+/// and offered its control; the footprint where it would land is drawn; the part instances'
+/// points (`parts/NAME/center`, `+x`, `-x`, `+y`, `-y`: just beyond each side, on its floor)
+/// go into `report`, for replays to drop at.
+void paletteDrop(App& app, const OrbitCamera& view, ImVec2 at, float w, float h, nlohmann::json& report);
+/// The Transform holding a part instance's machine that `path` lies in (the part is one node to
+/// the views), else `path`.
+[[nodiscard]] std::string partPathOf(const App& app, const std::string& path);
+/// The part instance whose machine the edit scene holds at `path` (its Transform), if any.
+[[nodiscard]] std::optional<PartInstanceAt> partAtPath(const App& app, const std::string& path);
+/// The command a manipulator's drag of `field` of node `path` makes: a part instance's
+/// placement (translation, rotation) for a part's Transform, else a SetFieldCommand.
+[[nodiscard]] std::unique_ptr<Command> manipulatorCommand(const App& app, const std::string& path,
+                                                          const std::string& field, const scene::FieldValue& value,
+                                                          std::uint64_t merge);
+/// The inspector of part instance `at`: its version, its parameters (each edit one step), its
+/// I/O and its control ("Add its control" when it has a pattern and nothing controls it yet).
+void drawPartInspector(App& app, const PartInstanceAt& at, nlohmann::json& report);
+
 /// Model time, steps, real-time factor, frames per second, the message.
 void drawStatusBar(App& app, const Rect& at, nlohmann::json& report);
 

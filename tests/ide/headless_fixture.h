@@ -42,6 +42,13 @@ class HeadlessIde : public gdpn::testing::TempDirTest {
   [[nodiscard]] std::string env() const {
     return "XDG_CONFIG_HOME='" + (dir_ / "config").string() + "' XDG_STATE_HOME='" + (dir_ / "state").string() + "'";
   }
+  /// Starts the IDEs these tests run with the parts palette hidden (their settings say so): the
+  /// tree has the whole left column, as before there was a palette, and no picture shows
+  /// whatever parts library the machine holds.
+  void hidePalette() {
+    std::filesystem::create_directories(dir_ / "config" / "gdpn");
+    std::ofstream(dir_ / "config" / "gdpn" / "ide.ini") << "palette=0\n";
+  }
   /// The autosaves in the state folder.
   [[nodiscard]] std::vector<std::filesystem::path> autosaves() const {
     std::vector<std::filesystem::path> found;

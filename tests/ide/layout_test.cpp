@@ -29,6 +29,26 @@ TEST(Layout, TheViewsTileTheWindow) {
   EXPECT_FLOAT_EQ(l.status.y, 900 - kStatusHeight);
 }
 
+TEST(Layout, ThePartsPaletteStandsUnderTheTreeUntilHidden) {
+  Splitters s;
+  auto l = Layout::of(s, 1600, 900);
+  EXPECT_FLOAT_EQ(l.palette.x, 0);
+  EXPECT_FLOAT_EQ(l.palette.w, l.tree.w);
+  EXPECT_FLOAT_EQ(l.palette.h, s.palette_height);
+  EXPECT_FLOAT_EQ(l.tree.y + l.tree.h + kHandle, l.palette.y);
+  EXPECT_FLOAT_EQ(l.palette.y + l.palette.h, 900 - kStatusHeight);
+  EXPECT_FLOAT_EQ(l.handles[static_cast<int>(Splitter::Palette)].y, l.tree.y + l.tree.h);
+  // as tall as the column allows, less a tree of its least size
+  s.palette_height = 5000;
+  l = Layout::of(s, 1600, 900);
+  EXPECT_GE(l.tree.h, 120);
+  s.show_palette = false;
+  l = Layout::of(s, 1600, 900);
+  EXPECT_EQ(l.palette.w, 0);
+  EXPECT_EQ(l.handles[static_cast<int>(Splitter::Palette)].w, 0);
+  EXPECT_FLOAT_EQ(l.tree.h, 900 - kToolbarHeight - kStatusHeight);
+}
+
 TEST(Layout, SplittersAreClampedSoEveryViewKeepsASize) {
   Splitters s;
   s.tree_width = 5000;
@@ -61,7 +81,7 @@ TEST(Layout, AViewFillingTheWindowTakesTheWholeBodyAndHidesTheOthers) {
   EXPECT_FLOAT_EQ(l.net.y, kToolbarHeight);
   EXPECT_FLOAT_EQ(l.net.w, 1600);
   EXPECT_FLOAT_EQ(l.net.h, 900 - kToolbarHeight - kStatusHeight);
-  for (const Rect& hidden : {l.world, l.tree, l.inspector, l.diagnostics}) EXPECT_EQ(hidden.w, 0);
+  for (const Rect& hidden : {l.world, l.tree, l.inspector, l.diagnostics, l.palette}) EXPECT_EQ(hidden.w, 0);
   for (const Rect& h : l.handles) EXPECT_EQ(h.w, 0);
   EXPECT_EQ(l.toolbar.w, 1600);
   s.full = FullView::World;
@@ -87,6 +107,8 @@ TEST_F(SettingsFile, TheLayoutAndRecentFilesSurviveASaveAndALoad) {
   s.splitters.net_width = 512;
   s.splitters.swapped = true;
   s.splitters.full = FullView::Net;
+  s.splitters.show_palette = false;
+  s.splitters.palette_height = 222;
   s.recent = {"/a/b c.gdpn.yaml", "/d/e=f.gdpn.yaml"};  // spaces and '=' in names
   ASSERT_TRUE(saveSettingsFile(path, s));
   const auto back = loadSettingsFile(path);

@@ -91,6 +91,8 @@ TEST_F(Shell, EveryActionOfTheTableIsDoneByPressInAStateThatAllowsIt) {
 - press: net-full
 - press: net-full
 - press: mini-view
+- press: palette
+- press: palette
 - press: sensors
 - press: joints
 - press: contacts

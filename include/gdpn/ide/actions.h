@@ -21,7 +21,7 @@ enum class ActionId : std::uint8_t {
   // Edit
   Undo, Redo, Cut, Copy, Paste, Delete,
   // View
-  SwapViews, WorldFull, NetFull, MiniView, Sensors, Joints, Contacts, Shadows, Grid,
+  SwapViews, WorldFull, NetFull, MiniView, Palette, Sensors, Joints, Contacts, Shadows, Grid,
   SelectTool, MoveTool, TurnTool, ScaleTool, AimTool, Snap, LocalAxes, FrameSelection, Screenshot, Movie,
   // Run
   Run, Faster, Fastest, Pause, Step, RunN, Fire, PlantOnly, Reset, ClearBreakpoints,

@@ -33,6 +33,8 @@ struct Splitters {
   float net_width = 420.0F;        ///< the width of the panel right of the big one (the Net view's, or the World view's when swapped)
   float diagnostics_width = 420.0F;///< the Diagnostics' width (right of the Inspector)
   bool swapped = false;            ///< the net view takes the big panel, the world view the one at its right
+  float palette_height = 380.0F;   ///< the Parts palette's height, under the Tree view
+  bool show_palette = true;        ///< the Parts palette is shown (View > Parts Palette)
   FullView full = FullView::None;  ///< a view filling the window
   friend bool operator==(const Splitters&, const Splitters&) = default;
 };
@@ -51,12 +53,13 @@ inline constexpr std::size_t kRecentFiles = 10;
 [[nodiscard]] std::vector<std::string> withRecent(std::vector<std::string> recent, const std::string& path);
 
 /// Which splitter a handle moves.
-enum class Splitter : int { Tree, Bottom, Net, Diagnostics };
+enum class Splitter : int { Tree, Bottom, Net, Diagnostics, Palette };
 
 /// The views' rectangles in a window.
 struct Layout {
   Rect toolbar, tree, world, net, inspector, diagnostics, status;  ///< each view's place
-  Rect handles[4];  ///< the splitters' handles, by Splitter
+  Rect palette;     ///< the Parts palette's place, under the tree (empty while hidden)
+  Rect handles[5];  ///< the splitters' handles, by Splitter
 
   /// Places the views in a `width` x `height` window; the splitters are first clamped so
   /// every view keeps a usable size (written back into `s`). A view filling the window gets

@@ -259,6 +259,12 @@ void sensorReading(App& app, const model::Simulation& sim, const scene::Node& se
 }
 
 void nodeInspector(App& app, const std::string& path, nlohmann::json& report) {
+  // a part's Transform stands for the part: its parameters, I/O and control
+  if (const auto part = partAtPath(app, path)) {
+    report["node"] = path;
+    drawPartInspector(app, *part, report["part"]);
+    return;
+  }
   auto* s = app.document().scene();
   auto* node = s != nullptr ? s->find(path) : nullptr;
   if (node == nullptr) {
@@ -437,7 +443,13 @@ void drawInspector(App& app, const Rect& at, nlohmann::json& report) {
     case SelectionKind::Node: nodeInspector(app, sel.name, report); break;
     case SelectionKind::Place:
     case SelectionKind::Transition:
-    case SelectionKind::Instance: netInspector(app, sel, report); break;
+    case SelectionKind::Instance:
+      if (const auto part = findPartInstance(app.document().model(), sel.name)) {
+        drawPartInspector(app, *part, report["part"]);
+        ImGui::Separator();
+      }
+      netInspector(app, sel, report);
+      break;
   }
   endPanel();
 }

@@ -447,7 +447,7 @@ bool drawManipulators(App& app, scene::Scene& scene, const OrbitCamera& view, Im
         case Handle::None: break;
       }
       if (value && *value != node->value(static_cast<std::size_t>(node->type().fieldIndex(drag.field)))) {
-        const auto why = app.document().execute(std::make_unique<SetFieldCommand>(drag.path, drag.field, *value, drag.id));
+        const auto why = app.document().execute(manipulatorCommand(app, drag.path, drag.field, *value, drag.id));
         app.inspector.error = why;
         if (!why.empty()) app.message = why;
       }

@@ -145,8 +145,31 @@ void dropTarget(TreeState& st, const std::string& parent) {
   ImGui::EndDragDropTarget();
 }
 
+/// A part instance's machine: one row, the part, edited through its parameters (inspector).
+void drawPart(TreeState& st, const std::string& path, const PartInstanceAt& at) {
+  const auto* inst = instanceAt(st.app.document().model(), at);
+  ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen | ImGuiTreeNodeFlags_SpanAvailWidth;
+  if (path == st.selected) flags |= ImGuiTreeNodeFlags_Selected;
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4{0.98F, 0.78F, 0.45F, 1.0F});
+  ImGui::TreeNodeEx(path.c_str(), flags, "Part  %s", at.name.c_str());
+  ImGui::PopStyleColor();
+  if (st.shown < 200) noteItem(path, st.rows);
+  ++st.shown;
+  if (path == st.selected && st.app.tree.reveal) ImGui::SetScrollHereY();
+  if (ImGui::IsItemHovered() && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) st.app.document().select(Selection::node(path));
+  if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) st.app.frameSelection();
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("Part %s (%s): its parameters, I/O and control are in the inspector", at.name.c_str(),
+                      inst != nullptr ? inst->type.c_str() : "?");
+  }
+}
+
 void drawNode(TreeState& st, scene::Node& node) {
   const auto path = node.path();
+  if (const auto part = partAtPath(st.app, path)) {
+    drawPart(st, path, *part);
+    return;
+  }
   const bool is_token = st.tokens.count(path) > 0;
   const bool is_sensor = node.type().category == scene::Category::Sensor;
   const bool leaf = node.children().empty();

@@ -14,6 +14,7 @@
 #include "../detail/keys.h"
 #include "../detail/world_texture.h"
 #include "../views.h"
+#include "palette_state.h"
 #include "gdpn/physics/world.h"
 #include "gdpn/scene/actions.h"
 
@@ -184,13 +185,16 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
     options.time = app.run().time();
     options.active = [&sim](const scene::Node& n) { return sim.reading(n.handle()).active; };
   }
+  // a part dragged from the palette: the scene with its ghost where it would land, outlined
+  const auto ghost = paletteGhost(app, OrbitCamera::from(camera), origin, static_cast<float>(w), static_cast<float>(h));
+  if (ghost.scene != nullptr) options.selection = ghost.selection;
   // draw only when something seen changed: the run, the model, the camera, the selection
   WorldKey seen{app.run().steps(), app.run().mode(), app.document().sceneRevision(), camera.eye, camera.target,
-                camera.fov, options.selection, rw, rh, shownBits(app), app.run().session()};
+                camera.fov, options.selection, rw, rh, shownBits(app), app.run().session(), app.palette().generation};
   if (!(seen == app.world.key) || app.world.stats.draw_calls == 0) {
     // four samples a pixel against jagged edges; none in a lowered picture, already soft
     app.world.texture->begin(rw, rh, scale < 1 ? 1 : 4);
-    app.world.stats = app.world.renderer->draw(*s, camera, options);
+    app.world.stats = app.world.renderer->draw(ghost.scene != nullptr ? *ghost.scene : *s, camera, options);
     app.world.texture->end();
     app.world.key = std::move(seen);
   }
@@ -203,6 +207,8 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
                              ImGuiButtonFlags_MouseButtonMiddle);
   const bool hovered = ImGui::IsItemHovered();
   const bool active = ImGui::IsItemActive();
+  // a part dropped from the palette is placed where its ghost stands
+  paletteDrop(app, OrbitCamera::from(camera), origin, static_cast<float>(w), static_cast<float>(h), report);
   auto& io = ImGui::GetIO();
   const auto take_camera = [&] {
     // moving the view leaves a scene camera for the orbit camera at the same place
@@ -243,8 +249,10 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
     const auto hit = app.run().mode() == RunMode::Edit ? scene::pick(s->root(), ray) : target.hit;
     // a click a sensor counts keeps the selection (the run's status line names the sensor)
     if (felt.empty() && hit.shape != nullptr) {
-      app.selectNode(hit.shape->path());
-      app.message = "picked " + hit.shape->path();
+      // a part's shape picks the part
+      const auto picked = app.run().mode() == RunMode::Edit ? partPathOf(app, hit.shape->path()) : hit.shape->path();
+      app.selectNode(picked);
+      app.message = "picked " + picked;
     } else if (felt.empty()) {
       app.document().select({});
     }

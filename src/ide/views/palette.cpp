@@ -1,0 +1,613 @@
+// The parts palette: the library's parts by group with their pictures and names, searched; a
+// part dragged into the world view shows where it will land (a ghost, snapped by
+// gdpn/ide/part_snap.h) and is placed there by one library call; a part with a control pattern
+// is offered it. Also the edit scene: the document's scene with the part instances' machines,
+// which the views show in edit mode.
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "../detail/picture_texture.h"
+#include "../views.h"
+#include "gdpn/core/text.h"
+#include "gdpn/ide/set_field.h"
+#include "gdpn/platform/png.h"
+#include "gdpn/scene/actions.h"
+#include "net_view_state.h"
+#include "palette_state.h"
+
+namespace gdpn::ide {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr float kPicture = 56.0F;   // a part's picture in the palette, pixels
+constexpr float kTileWidth = 76.0F;
+constexpr const char* kGhostName = "palette_ghost";
+constexpr double kBeyond = 0.1;     // the report's points beside a part: this far beyond its sides, m
+
+/// `text` in lower case.
+std::string lower(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+/// How the palette writes a part's name: its words apart ("belt conveyor").
+std::string shownName(const std::string& name) {
+  std::string out = name;
+  std::replace(out.begin(), out.end(), '_', ' ');
+  return out;
+}
+
+/// Scans the library for the model's folder once per model file opened.
+void scan(App& app) {
+  auto& st = app.palette();
+  const auto& path = app.document().model().path;
+  if (st.scanned_for && *st.scanned_for == path) return;
+  st.scanned_for = path;
+  std::error_code ec;
+  const auto dir = path.empty() ? fs::path() : fs::absolute(path, ec).parent_path();
+  st.folders = model::partSearchPath(dir.string());
+  core::Diagnostics diags;
+  st.parts.clear();
+  for (auto& p : model::scanParts(st.folders, diags, path)) {
+    if (!p.pattern) st.parts.push_back(std::move(p));  // patterns come with their parts
+  }
+  st.warnings.clear();
+  for (const auto& d : diags.all()) st.warnings.push_back(d.str());
+  st.pictures.clear();
+  st.machines.clear();
+}
+
+/// The picture of `part`, made `kPicture` pixels at most on a side by averaging (so that it
+/// shows sharp at that size); null when it has none or it cannot be read.
+PictureTexture* pictureOf(PaletteState& st, const model::LibraryPart& part) {
+  auto [it, fresh] = st.pictures.try_emplace(part.name);
+  if (!fresh || part.picture.empty()) return it->second.get();
+  int w = 0, h = 0;
+  std::vector<std::uint8_t> rgb;
+  std::string why;
+  if (!platform::readPng(part.picture, w, h, rgb, why) || w <= 0 || h <= 0) return nullptr;
+  const int side = static_cast<int>(kPicture);
+  const double shrink = std::max({1.0, static_cast<double>(w) / side, static_cast<double>(h) / side});
+  auto image = std::make_shared<sensors::Image>();
+  image->width = std::max(1, static_cast<int>(std::lround(w / shrink)));
+  image->height = std::max(1, static_cast<int>(std::lround(h / shrink)));
+  image->rgb.assign(static_cast<std::size_t>(image->width) * static_cast<std::size_t>(image->height) * 3, 0);
+  const auto sw = static_cast<std::size_t>(w), sh = static_cast<std::size_t>(h);
+  const auto dw = static_cast<std::size_t>(image->width), dh = static_cast<std::size_t>(image->height);
+  for (std::size_t y = 0; y < dh; ++y) {
+    for (std::size_t x = 0; x < dw; ++x) {
+      // the mean of the source pixels under this one
+      const auto from = [&](std::size_t i) { return static_cast<std::size_t>(static_cast<double>(i) * shrink); };
+      const std::size_t x0 = from(x), x1 = std::min(sw, std::max(x0 + 1, from(x + 1)));
+      const std::size_t y0 = from(y), y1 = std::min(sh, std::max(y0 + 1, from(y + 1)));
+      for (std::size_t c = 0; c < 3; ++c) {
+        double sum = 0;
+        std::size_t n = 0;
+        for (std::size_t sy = y0; sy < y1; ++sy) {
+          for (std::size_t sx = x0; sx < x1; ++sx, ++n) sum += rgb[(sy * sw + sx) * 3 + c];
+        }
+        image->rgb[(y * dw + x) * 3 + c] = static_cast<std::uint8_t>(n > 0 ? sum / static_cast<double>(n) + 0.5 : 0.0);
+      }
+    }
+  }
+  it->second = std::make_unique<PictureTexture>();
+  it->second->show(image, 0.0, 1.0);
+  return it->second.get();
+}
+
+/// The machine of library part `part` at its type's parameters: its type's scene and box.
+const PartMachine& machineOf(PaletteState& st, const model::LibraryPart& part) {
+  auto [it, fresh] = st.machines.try_emplace(part.name);
+  if (!fresh) return it->second;
+  core::Diagnostics diags;
+  const auto file = model::loadModel(part.file, diags);
+  if (!file) {
+    it->second.error = diags.all().empty() ? part.file + ": cannot be read" : diags.all().front().str();
+    return it->second;
+  }
+  const auto own = file->type_scenes.find(part.name);
+  if (own == file->type_scenes.end()) return it->second;
+  it->second.scene = own->second;
+  // its box in its own frame: the machine under a frame at the origin
+  scene::Scene s(own->second->types());
+  auto* frame = s.create(*s.types().find(scene::NodeKind::Transform), "part", s.root());
+  for (const auto& c : own->second->root().children()) s.copy(*c, *frame);
+  scene::updateTransforms(s.root());
+  it->second.box = localBox(*frame);
+  return it->second;
+}
+
+/// The parts placed, for snapping: where each stands and its machine's box.
+std::vector<PartFootprint> footprints(const App& app) {
+  const auto& st = app.palette();
+  std::vector<PartFootprint> out;
+  if (!st.edit_scene) return out;
+  for (const auto& [path, at] : st.frames) {
+    const auto* inst = instanceAt(app.document().model(), at);
+    const auto* frame = st.edit_scene->find(path);
+    if (inst == nullptr || frame == nullptr) continue;
+    out.push_back({at.name, {inst->translation[0], inst->translation[1], inst->translation[2]}, angleAboutZ(inst->rotation),
+                   localBox(*frame)});
+  }
+  return out;
+}
+
+/// The page a drop goes to: the net view's page when it shows a page, else the first page, else
+/// "main".
+std::string dropPage(App& app) {
+  const auto& pages = app.document().model().net.pages;
+  const auto& path = app.netView().path;
+  const std::string first = path.substr(0, path.find('/'));
+  for (const auto& p : pages) {
+    if (!first.empty() && p.name == first) return p.name;
+  }
+  return pages.empty() ? std::string("main") : pages.front().name;
+}
+
+/// `at` in window pixels, when the view shows it.
+std::optional<ImVec2> onScreen(const OrbitCamera& view, const core::Vec3& p, ImVec2 at, float w, float h) {
+  const auto q = view.project(p, static_cast<double>(w), static_cast<double>(h));
+  if (!q) return std::nullopt;
+  return ImVec2{at.x + static_cast<float>((*q)[0]), at.y + static_cast<float>((*q)[1])};
+}
+
+/// Places part `name` where `place` says (one step of undo), selects it and offers its control.
+void placeDropped(App& app, const std::string& name, const DropPlace& place, ImVec2 pointer) {
+  auto& st = app.palette();
+  if (app.run().mode() != RunMode::Edit) {
+    app.message = "the run's plant is not edited: Reset to place parts";
+    return;
+  }
+  const auto* part = model::findLibraryPart(st.parts, name);
+  if (part == nullptr) return;
+  auto command = std::make_unique<PlacePartCommand>(*part, dropPage(app), place.translation, place.angle);
+  const auto* placing = command.get();  // kept on the undo stack when it succeeds
+  const auto page = dropPage(app);
+  const auto why = app.document().execute(std::move(command));
+  if (!why.empty()) {
+    app.message = why;
+    return;
+  }
+  const auto made = placing->made().front();
+  app.selectNode(made);
+  std::ostringstream text;
+  text << "placed " << made << " at (" << core::formatDouble(place.translation[0]) << ", "
+       << core::formatDouble(place.translation[1]) << ", " << core::formatDouble(place.translation[2]) << ") m";
+  if (!place.neighbour.empty()) text << ", " << snapKindName(place.kind) << " of " << place.neighbour;
+  app.message = text.str();
+  // a part with a control pattern is offered it at the drop
+  const auto pattern = controlPatternOf(app.document().model(), part->name);
+  if (!pattern.empty()) st.offer = {true, true, {page, made}, pattern, pointer.x, pointer.y};
+}
+
+/// A part's tile: its picture (or its group's initial) over its name in one or two lines.
+bool tile(PaletteState& st, const model::LibraryPart& part, nlohmann::json& items, nlohmann::json& list) {
+  ImGui::PushID(part.name.c_str());
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  const float line = ImGui::GetTextLineHeight();
+  const ImVec2 size{kTileWidth, kPicture + 2 * line + 8};
+  ImGui::InvisibleButton("##tile", size);
+  const bool hovered = ImGui::IsItemHovered();
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  if (hovered || ImGui::IsItemActive()) {
+    draw->AddRectFilled(at, {at.x + size.x, at.y + size.y}, ImGui::GetColorU32(ImGuiCol_HeaderHovered), 4.0F);
+  }
+  const ImVec2 pic{at.x + (size.x - kPicture) / 2, at.y + 3};
+  PictureTexture* picture = pictureOf(st, part);
+  if (picture != nullptr) {
+    draw->AddImage(reinterpret_cast<ImTextureID>(picture->texture()), pic, {pic.x + kPicture, pic.y + kPicture}, {0, 0}, {1, 1});
+  } else {
+    // no picture: the group's initial on a plain square
+    draw->AddRectFilled(pic, {pic.x + kPicture, pic.y + kPicture}, IM_COL32(70, 76, 88, 255), 6.0F);
+    const std::string initial(1, static_cast<char>(std::toupper(static_cast<unsigned char>(part.spec.group.empty() ? part.name[0] : part.spec.group[0]))));
+    const ImVec2 t = ImGui::CalcTextSize(initial.c_str());
+    draw->AddText({pic.x + (kPicture - t.x) / 2, pic.y + (kPicture - t.y) / 2}, IM_COL32(220, 224, 232, 255), initial.c_str());
+  }
+  // the name, split at a space into two centred lines when one is too wide
+  const std::string name = shownName(part.name);
+  std::vector<std::string> lines{name};
+  if (ImGui::CalcTextSize(name.c_str()).x > size.x - 4) {
+    const auto mid = name.size() / 2;
+    auto space = name.rfind(' ', mid);
+    if (space == std::string::npos) space = name.find(' ', mid);
+    if (space != std::string::npos) lines = {name.substr(0, space), name.substr(space + 1)};
+  }
+  float y = pic.y + kPicture + 3;
+  for (const auto& l : lines) {
+    const float tw = ImGui::CalcTextSize(l.c_str()).x;
+    draw->PushClipRect(at, {at.x + size.x, at.y + size.y}, true);
+    draw->AddText({at.x + std::max(2.0F, (size.x - tw) / 2), y}, ImGui::GetColorU32(ImGuiCol_Text), l.c_str());
+    draw->PopClipRect();
+    y += line;
+  }
+  // dragged into the world view, it is placed there
+  if (ImGui::BeginDragDropSource()) {
+    ImGui::SetDragDropPayload(kPartPayload, part.name.data(), part.name.size());
+    if (picture != nullptr) ImGui::Image(reinterpret_cast<ImTextureID>(picture->texture()), {kPicture / 2, kPicture / 2});
+    ImGui::SameLine();
+    ImGui::TextUnformatted(name.c_str());
+    ImGui::EndDragDropSource();
+  } else if (hovered) {
+    std::size_t inputs = 0, outputs = 0;
+    for (const auto& io : part.spec.io) (io.direction == model::IoDirection::Input ? inputs : outputs)++;
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 26);
+    ImGui::Text("%s  (%s, version %d)", part.name.c_str(), part.spec.group.c_str(), part.spec.version);
+    if (!part.description.empty()) ImGui::TextUnformatted(part.description.c_str());
+    ImGui::TextDisabled("%zu I/O: %zu inputs, %zu outputs; %zu parameters%s", part.spec.io.size(), inputs, outputs,
+                        part.spec.params.size(), part.spec.control.empty() ? "" : "; comes with its control");
+    ImGui::TextDisabled("Drag it into the world view to place it.");
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
+  // where a replay can drag it from: only while it is in sight (scroll or search to bring it)
+  nlohmann::json entry = {{"name", part.name}, {"group", part.spec.group}, {"version", part.spec.version},
+                          {"picture", picture != nullptr}, {"visible", ImGui::IsItemVisible()}};
+  if (ImGui::IsItemVisible()) {
+    noteItem(part.name, items);
+    entry["at"] = items[part.name];
+  }
+  list.push_back(std::move(entry));
+  ImGui::PopID();
+  return hovered;
+}
+
+/// True when `part` answers the search `words` (each found in its name, group or description).
+bool matches(const model::LibraryPart& part, const std::string& search) {
+  const std::string hay = lower(part.name + " " + shownName(part.name) + " " + part.spec.group + " " + part.description);
+  std::istringstream words(lower(search));
+  std::string w;
+  while (words >> w) {
+    if (hay.find(w) == std::string::npos) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+void drawPalette(App& app, const Rect& at, nlohmann::json& report) {
+  auto& st = app.palette();
+  scan(app);
+  beginPanel("##palette", at, "Parts");
+  nlohmann::json items = nlohmann::json::object(), list = nlohmann::json::array(), groups = nlohmann::json::array();
+  ImGui::SetNextItemWidth(-70);
+  ImGui::InputTextWithHint("##part_search", "search parts", &st.search);
+  nlohmann::json controls = nlohmann::json::object();
+  noteItem("search", controls);
+  ImGui::SameLine();
+  if (ImGui::Button("Rescan")) st.scanned_for.reset();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Look for part files again along the search path");
+  noteItem("rescan", controls);
+  ImGui::BeginChild("##palette_scroll", {0, 0}, false);
+  if (st.parts.empty()) {
+    ImGui::PushTextWrapPos(0);
+    ImGui::TextDisabled("No parts found. Part files (*.gdpn.yaml with a part section) are looked for in:");
+    for (const auto& f : st.folders) ImGui::BulletText("%s", f.c_str());
+    ImGui::PopTextWrapPos();
+  }
+  std::size_t shown = 0;
+  for (std::size_t i = 0; i < st.parts.size();) {
+    // a group: its parts that answer the search, in tiles as many to a row as fit
+    const std::string group = st.parts[i].spec.group;
+    std::vector<const model::LibraryPart*> found;
+    for (; i < st.parts.size() && st.parts[i].spec.group == group; ++i) {
+      if (matches(st.parts[i], st.search)) found.push_back(&st.parts[i]);
+    }
+    if (found.empty()) continue;
+    const std::string heading = (group.empty() ? std::string("Other") : group) + "  (" + std::to_string(found.size()) + ")";
+    groups.push_back(group);
+    if (!ImGui::CollapsingHeader(heading.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) continue;
+    const float room = ImGui::GetContentRegionAvail().x;
+    const int per_row = std::max(1, static_cast<int>((room + ImGui::GetStyle().ItemSpacing.x) / (kTileWidth + ImGui::GetStyle().ItemSpacing.x)));
+    for (std::size_t k = 0; k < found.size(); ++k) {
+      if (k % static_cast<std::size_t>(per_row) != 0) ImGui::SameLine();
+      (void)tile(st, *found[k], items, list);
+      ++shown;
+    }
+  }
+  if (!st.parts.empty() && shown == 0) ImGui::TextDisabled("No part answers '%s'.", st.search.c_str());
+  for (const auto& w : st.warnings) {
+    ImGui::PushTextWrapPos(0);
+    ImGui::TextColored({0.95F, 0.75F, 0.3F, 1.0F}, "%s", w.c_str());
+    ImGui::PopTextWrapPos();
+  }
+  ImGui::EndChild();
+  endPanel();
+  report = {{"shown", true},   {"count", st.parts.size()}, {"listed", shown},        {"search", st.search},
+            {"groups", groups}, {"items", items},           {"list", list},          {"folders", st.folders},
+            {"warnings", st.warnings}, {"controls", controls}, {"dragging", st.dragged}};
+}
+
+void drawDropOffer(App& app, nlohmann::json& report) {
+  auto& offer = app.palette().offer;
+  if (!report.is_object()) report = nlohmann::json::object();
+  report["offer"] = {{"open", offer.open}};
+  if (!offer.open) return;
+  constexpr const char* kId = "##control_offer";
+  if (offer.appearing) {
+    ImGui::SetNextWindowPos({offer.x + 12, offer.y + 12});
+    ImGui::OpenPopup(kId);
+    offer.appearing = false;
+  }
+  if (!ImGui::BeginPopup(kId, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings)) {
+    offer.open = false;  // closed by a click elsewhere: no
+    return;
+  }
+  ImGui::Text("Add its control pattern (%s)?", offer.pattern.c_str());
+  ImGui::TextDisabled("A net that runs %s through its I/O, bound to it.", offer.at.name.c_str());
+  nlohmann::json buttons = nlohmann::json::object();
+  ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+  const bool yes = ImGui::Button("Yes", {90, 0});
+  ImGui::PopStyleColor();
+  noteItem("yes", buttons);
+  ImGui::SameLine();
+  const bool no = ImGui::Button("No", {90, 0});
+  noteItem("no", buttons);
+  ImGui::SameLine();
+  ImGui::TextDisabled("Enter: yes");
+  const bool enter = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter)) ||
+                     ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter));
+  const bool escape = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
+  report["offer"] = {{"open", true}, {"part", offer.at.name}, {"pattern", offer.pattern}, {"buttons", buttons}};
+  if (yes || no || enter || escape) {
+    const auto at = offer.at;
+    offer.open = false;
+    ImGui::CloseCurrentPopup();
+    if (yes || enter) {
+      auto command = std::make_unique<AddPartControlCommand>(at);
+      const auto* adding = command.get();
+      const auto why = app.document().execute(std::move(command));
+      app.message = why.empty() ? "added " + adding->made() + ", the control of " + at.name : why;
+    }
+  }
+  ImGui::EndPopup();
+}
+
+void refreshEditScene(App& app) {
+  auto& st = app.palette();
+  const auto& doc = app.document();
+  const auto& m = doc.model();
+  const bool edit = app.run().mode() == RunMode::Edit;
+  // the part instances as the run builds their machines: types and parameters
+  std::string placed;
+  bool machines = false;
+  for (const auto& page : m.net.pages) {
+    for (const auto& inst : page.instances) {
+      const auto own = m.type_scenes.find(inst.type);
+      const bool owns = own != m.type_scenes.end() && !own->second->root().children().empty();
+      if (!owns && !m.parts.contains(inst.type)) continue;
+      machines = machines || owns;
+      placed += page.name + "/" + inst.name + ":" + inst.type;
+      for (const auto& p : inst.params) placed += "," + p.name + "=" + core::formatDouble(p.value);
+      placed += ";";
+    }
+  }
+  // the machines are the run's: it follows an edit of them at once, not a quarter second later
+  if (edit && placed != st.followed) {
+    st.followed = placed;
+    if (app.run().revision() != doc.revision()) {
+      core::Diagnostics diags;
+      (void)app.run().reset(diags);
+    }
+  }
+  if (!edit || !(machines || doc.scene() == nullptr)) {
+    if (st.edit_scene) {
+      ++st.generation;
+      ++st.builds;
+    }
+    st.edit_scene.reset();
+    st.frames.clear();
+    st.built_revision = ~std::uint64_t{0};
+    return;
+  }
+  const auto* plant = app.run().session() != nullptr ? app.run().session()->simulation().plant() : nullptr;
+  if (st.edit_scene && st.built_revision == doc.revision() && st.built_run == app.run().revision() && st.built_session == plant) {
+    return;
+  }
+  // the document's scene, and each part instance's machine under a Transform named after it:
+  // the run's (its parameters applied), else its type's as it is
+  auto s = doc.scene() != nullptr ? doc.scene()->clone() : std::make_unique<scene::Scene>();
+  const auto& transform = *s->types().find(scene::NodeKind::Transform);
+  st.frames.clear();
+  for (const auto& page : m.net.pages) {
+    for (const auto& inst : page.instances) {
+      const auto own = m.type_scenes.find(inst.type);
+      if (own == m.type_scenes.end() || own->second->root().children().empty() || s->find(inst.name) != nullptr) continue;
+      const scene::Node* made = plant != nullptr ? plant->find(inst.name) : nullptr;
+      scene::Node* frame = nullptr;
+      if (made != nullptr && made->kind() == scene::NodeKind::Transform) {
+        frame = s->copy(*made, s->root());
+      } else if ((frame = s->create(transform, inst.name, s->root())) != nullptr) {
+        for (const auto& c : own->second->root().children()) s->copy(*c, *frame);
+      }
+      if (frame == nullptr) continue;
+      frame->setValue(scene::field::Transform::Translation, inst.translation);
+      frame->setValue(scene::field::Transform::Rotation, inst.rotation);
+      if (m.parts.contains(inst.type)) st.frames[frame->path()] = {page.name, inst.name};
+    }
+  }
+  scene::updateTransforms(s->root());
+  st.edit_scene = std::move(s);
+  st.built_revision = doc.revision();
+  st.built_run = app.run().revision();
+  st.built_session = plant;
+  ++st.generation;
+  ++st.builds;
+}
+
+PaletteGhost paletteGhost(App& app, const OrbitCamera& view, ImVec2 at, float w, float h) {
+  auto& st = app.palette();
+  const ImGuiPayload* payload = ImGui::GetDragDropPayload();
+  const ImVec2 mouse = ImGui::GetIO().MousePos;
+  const bool over = mouse.x >= at.x && mouse.y >= at.y && mouse.x < at.x + w && mouse.y < at.y + h;
+  const auto* part = payload != nullptr && payload->IsDataType(kPartPayload) && over && app.run().mode() == RunMode::Edit
+                         ? model::findLibraryPart(st.parts, std::string(static_cast<const char*>(payload->Data),
+                                                                        static_cast<std::size_t>(payload->DataSize)))
+                         : nullptr;
+  if (part == nullptr) {
+    if (!st.dragged.empty()) ++st.generation;
+    st.dragged.clear();
+    st.ghost.reset();
+    st.ghost_scene.reset();
+    return {};
+  }
+  const auto& machine = machineOf(st, *part);
+  DropQuery q;
+  q.ray = view.ray(static_cast<double>(mouse.x - at.x), static_cast<double>(mouse.y - at.y), static_cast<double>(w),
+                   static_cast<double>(h));
+  q.box = machine.box;
+  q.neighbours = footprints(app);
+  q.grid = app.world.snap ? app.world.move_step : 0.0;
+  const auto place = placeDrop(q);
+
+  const bool moved = st.dragged != part->name || !st.ghost || !place || place->translation != st.ghost->translation ||
+                     place->angle != st.ghost->angle;
+  st.dragged = part->name;
+  st.ghost = place;
+  // the scene shown with the ghost in it: made again when the scene under it or the part changed
+  if (!st.ghost_scene || st.ghost_builds != st.builds || st.ghost_revision != app.document().sceneRevision() ||
+      st.ghost_part != part->name) {
+    auto* base = app.shownScene();
+    st.ghost_scene = base != nullptr ? base->clone() : std::make_unique<scene::Scene>();
+    auto* frame = st.ghost_scene->create(*st.ghost_scene->types().find(scene::NodeKind::Transform), kGhostName,
+                                         st.ghost_scene->root());
+    if (frame != nullptr && machine.scene) {
+      for (const auto& c : machine.scene->root().children()) st.ghost_scene->copy(*c, *frame);
+    }
+    st.ghost_node = frame != nullptr ? frame->handle() : 0;
+    st.ghost_part = part->name;
+    st.ghost_builds = st.builds;
+    st.ghost_revision = app.document().sceneRevision();
+    ++st.generation;
+  } else if (moved) {
+    ++st.generation;
+  }
+  auto* frame = st.ghost_scene->resolve(st.ghost_node);
+  if (frame == nullptr) return {};
+  // where it would land; nowhere (looking up into the sky): not drawn
+  frame->is_template = !place;
+  if (place) {
+    frame->setValue(scene::field::Transform::Translation, place->translation);
+    frame->setValue(scene::field::Transform::Rotation, std::array<double, 4>{0, 0, 1, place->angle});
+  }
+  scene::updateTransforms(st.ghost_scene->root());
+  return {st.ghost_scene.get(), {frame->handle()}};
+}
+
+void paletteDrop(App& app, const OrbitCamera& view, ImVec2 at, float w, float h, nlohmann::json& report) {
+  auto& st = app.palette();
+  // a part dropped here is placed where its ghost stands
+  if (ImGui::BeginDragDropTarget()) {
+    if (const ImGuiPayload* payload = ImGui::AcceptDragDropPayload(kPartPayload, ImGuiDragDropFlags_AcceptNoDrawDefaultRect)) {
+      const std::string name(static_cast<const char*>(payload->Data), static_cast<std::size_t>(payload->DataSize));
+      if (st.ghost && st.dragged == name) {
+        placeDropped(app, name, *st.ghost, ImGui::GetIO().MousePos);
+      } else {
+        app.message = "'" + name + "' cannot land there: point at the floor or at a part";
+      }
+      st.dragged.clear();
+      st.ghost.reset();
+      st.ghost_scene.reset();
+      ++st.generation;
+    }
+    ImGui::EndDragDropTarget();
+  }
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  // the footprint where the dragged part would land, and how it snapped
+  if (st.ghost && !st.dragged.empty()) {
+    const auto* part = model::findLibraryPart(st.parts, st.dragged);
+    const auto box = part != nullptr ? machineOf(st, *part).box : core::Aabb{};
+    const auto pose = poseAboutZ({st.ghost->translation[0], st.ghost->translation[1], st.ghost->translation[2]}, st.ghost->angle);
+    const bool snapped = !st.ghost->neighbour.empty();
+    const ImU32 colour = snapped ? IM_COL32(80, 230, 120, 255) : IM_COL32(120, 190, 255, 255);
+    if (!box.empty()) {
+      std::vector<ImVec2> outline;
+      for (const auto& c : {core::Vec3{box.lo.x, box.lo.y, 0}, core::Vec3{box.hi.x, box.lo.y, 0}, core::Vec3{box.hi.x, box.hi.y, 0},
+                            core::Vec3{box.lo.x, box.hi.y, 0}}) {
+        if (const auto p = onScreen(view, pose.apply(c), at, w, h)) outline.push_back(*p);
+      }
+      if (outline.size() == 4) {
+        draw->AddPolyline(outline.data(), 4, IM_COL32(10, 10, 10, 160), ImDrawFlags_Closed, 4.0F);
+        draw->AddPolyline(outline.data(), 4, colour, ImDrawFlags_Closed, 2.0F);
+      }
+    }
+    std::string label = shownName(st.dragged) + ": ";
+    label += snapped ? std::string(snapKindName(st.ghost->kind)) + " of " + st.ghost->neighbour : "on the floor";
+    label += "  (" + core::formatDouble(st.ghost->translation[0]) + ", " + core::formatDouble(st.ghost->translation[1]) + ")";
+    // above the pointer: the drag's own preview is below it
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    const ImVec2 size = ImGui::CalcTextSize(label.c_str());
+    const ImVec2 corner{std::clamp(mouse.x + 12, at.x + 4, std::max(at.x + 4, at.x + w - size.x - 12)),
+                        std::max(at.y + 4, mouse.y - 16 - size.y)};
+    draw->AddRectFilled(corner, {corner.x + size.x + 8, corner.y + size.y + 6}, IM_COL32(20, 22, 26, 220), 4.0F);
+    draw->AddText({corner.x + 4, corner.y + 3}, colour, label.c_str());
+    report["drop"] = {{"part", st.dragged},
+                      {"translation", st.ghost->translation},
+                      {"angle", st.ghost->angle},
+                      {"snap", snapKindName(st.ghost->kind)},
+                      {"neighbour", st.ghost->neighbour}};
+  }
+  // where a replay can drop beside each part: its top's centre and just beyond each side
+  nlohmann::json parts = nlohmann::json::object();
+  if (st.edit_scene) {
+    for (const auto& [path, inst] : st.frames) {
+      const auto* frame = st.edit_scene->find(path);
+      if (frame == nullptr) continue;
+      const auto box = localBox(*frame);
+      if (box.empty()) continue;
+      const core::Vec3 c = (box.lo + box.hi) * 0.5;
+      nlohmann::json points = nlohmann::json::object();
+      const std::pair<const char*, core::Vec3> named[] = {{"center", {c.x, c.y, box.hi.z}},
+                                                          {"+x", {box.hi.x + kBeyond, c.y, 0}},
+                                                          {"-x", {box.lo.x - kBeyond, c.y, 0}},
+                                                          {"+y", {c.x, box.hi.y + kBeyond, 0}},
+                                                          {"-y", {c.x, box.lo.y - kBeyond, 0}}};
+      for (const auto& [key, local] : named) {
+        if (const auto p = onScreen(view, frame->framePose().apply(local), at, w, h)) {
+          points[key] = {std::lround(p->x), std::lround(p->y)};
+        }
+      }
+      parts[inst.name] = points;
+    }
+  }
+  report["parts"] = parts;
+}
+
+std::optional<PartInstanceAt> partAtPath(const App& app, const std::string& path) {
+  const auto& st = app.palette();
+  if (app.run().mode() != RunMode::Edit || !st.edit_scene) return std::nullopt;
+  const auto it = st.frames.find(path);
+  if (it == st.frames.end()) return std::nullopt;
+  return it->second;
+}
+
+std::string partPathOf(const App& app, const std::string& path) {
+  const auto top = path.substr(0, path.find('/'));
+  return partAtPath(app, top) ? top : path;
+}
+
+std::unique_ptr<Command> manipulatorCommand(const App& app, const std::string& path, const std::string& field,
+                                            const scene::FieldValue& value, std::uint64_t merge) {
+  const auto at = partAtPath(app, path);
+  const auto* inst = at ? instanceAt(app.document().model(), *at) : nullptr;
+  if (inst != nullptr && (field == "translation" || field == "rotation")) {
+    // a part's Transform stands for its instance: the instance moves and turns
+    auto translation = inst->translation;
+    auto rotation = inst->rotation;
+    if (const auto* t = std::get_if<std::array<double, 3>>(&value); t != nullptr && field == "translation") translation = *t;
+    if (const auto* r = std::get_if<std::array<double, 4>>(&value); r != nullptr && field == "rotation") rotation = *r;
+    return SetInstanceCommand::placement(*at, translation, rotation, merge);
+  }
+  return std::make_unique<SetFieldCommand>(path, field, value, merge);
+}
+
+}  // namespace gdpn::ide

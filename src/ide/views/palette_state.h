@@ -1,0 +1,72 @@
+#pragma once
+// What the parts palette keeps between frames: the library's parts and their pictures, the
+// search, the part being dragged and where it would land, the control offered after a drop,
+// and the scene the views show in edit mode (the document's scene with the part instances'
+// machines). Private to the ide module.
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gdpn/core/diagnostics.h"
+#include "gdpn/ide/part_edit.h"
+#include "gdpn/ide/part_snap.h"
+#include "gdpn/model/part_library.h"
+#include "gdpn/scene/node.h"
+
+namespace gdpn::ide {
+
+class PictureTexture;
+
+/// A library part's machine at its type's parameters, for the ghost and for snapping.
+struct PartMachine {
+  std::shared_ptr<const scene::Scene> scene;  ///< its type's scene (null: it brings none)
+  core::Aabb box;                             ///< its shapes in its own frame, m
+  std::string error;                          ///< why its file did not load ("" when it did)
+};
+
+/// The control pattern offered after a drop: "Add its control pattern (pusher_control)?".
+struct DropOffer {
+  bool open = false;      ///< shown
+  bool appearing = false; ///< opened this frame: the popup is placed at the drop
+  PartInstanceAt at;      ///< the part just placed
+  std::string pattern;    ///< its control pattern's page type
+  float x = 0, y = 0;     ///< where it was dropped, window pixels
+};
+
+/// The parts palette's own state, and the edit scene it adds to the views.
+struct PaletteState {
+  std::vector<model::LibraryPart> parts;   ///< the library's parts (patterns left out), by group then name
+  std::vector<std::string> folders;        ///< the search path scanned
+  std::vector<std::string> warnings;       ///< part files skipped, and why
+  std::optional<std::string> scanned_for;  ///< the model file the parts were scanned for (none: not yet)
+  std::string search;                      ///< the search field: name, group or description
+  std::map<std::string, std::unique_ptr<PictureTexture>> pictures;  ///< by part name (null: none or unreadable)
+  std::map<std::string, PartMachine> machines;  ///< by part name, loaded at its first drag
+
+  std::string dragged;                 ///< the part being dragged over the world view ("" : none)
+  std::optional<DropPlace> ghost;      ///< where it would land now
+  std::unique_ptr<scene::Scene> ghost_scene;  ///< the edit scene with the ghost, drawn while dragging
+  std::uint64_t ghost_builds = ~std::uint64_t{0};    ///< `builds` when it was made
+  std::uint64_t ghost_revision = ~std::uint64_t{0};  ///< the document's scene revision then
+  std::string ghost_part;              ///< the part the ghost scene shows
+  scene::NodeHandle ghost_node = 0;    ///< the ghost's Transform in it
+  DropOffer offer;                     ///< the control offered after a drop
+
+  /// The document's scene with each part instance's machine under a Transform named after the
+  /// instance, as the run places it (null: the views show the document's scene itself).
+  std::unique_ptr<scene::Scene> edit_scene;
+  std::uint64_t generation = 0;        ///< grows whenever what the world view shows changes (the ghost too)
+  std::uint64_t builds = 0;            ///< grows whenever the edit scene is made again or dropped
+  std::uint64_t built_revision = ~std::uint64_t{0};  ///< the document's revision it was made from
+  std::uint64_t built_run = ~std::uint64_t{0};       ///< the run's revision then
+  const void* built_session = nullptr;               ///< and its session
+  bool built_with_ghost = false;                     ///< made while a part was dragged
+  std::string followed;                ///< the part instances (types, parameters) the run was last reset for
+  std::map<std::string, PartInstanceAt> frames;  ///< part instances by their Transform's path in it
+};
+
+}  // namespace gdpn::ide
