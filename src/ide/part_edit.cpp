@@ -169,8 +169,13 @@ std::string SetInstanceCommand::apply(Document& doc) {
     for (const double v : translation_) {
       if (!std::isfinite(v)) return "a translation is three finite numbers (m)";
     }
-    next.translation = translation_;
-    next.rotation = rotation_;
+    // whole nanometres, as the file will say them (a drag's steps add up to 3.3499999...)
+    const auto tidy = [](double v) {
+      const double r = std::round(v * 1e9) / 1e9;
+      return r == 0 ? 0.0 : r;
+    };
+    for (std::size_t i = 0; i < 3; ++i) next.translation[i] = tidy(translation_[i]);
+    for (std::size_t i = 0; i < 4; ++i) next.rotation[i] = tidy(rotation_[i]);
   } else {
     const auto spec = doc.model().parts.find(inst->type);
     const auto* declared = spec == doc.model().parts.end() ? nullptr : [&]() -> const model::Param* {

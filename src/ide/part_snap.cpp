@@ -16,6 +16,7 @@ using core::Aabb;
 using core::Vec3;
 
 constexpr double kEps = 1e-9;
+constexpr double kSpan = 0.01;  // wider than a part by this on each side: across it, m
 
 Vec3 centreOf(const Aabb& b) { return (b.lo + b.hi) * 0.5; }
 Vec3 halfOf(const Aabb& b) { return (b.hi - b.lo) * 0.5; }
@@ -29,18 +30,23 @@ double tidy(double v) {
 /// `v` on the grid of `step` (none when 0).
 double onGrid(double v, double step) { return step > 0 ? tidy(std::round(v / step) * step) : tidy(v); }
 
-/// The place at `local` (the dropped part's origin in `n`'s frame), turned as `n` is.
-DropPlace placedBy(const PartFootprint& n, const Vec3& local, SnapKind kind) {
+/// The place at `local` (the dropped part's origin in `n`'s frame), turned as `n` is and by
+/// `turn` degrees more.
+DropPlace placedBy(const PartFootprint& n, const Vec3& local, SnapKind kind, double turn = 0) {
   const Vec3 p = poseAboutZ(n.position, n.angle).apply(local);
-  return {{tidy(p.x), tidy(p.y), tidy(p.z)}, tidy(n.angle), kind, n.name};
+  const double angle = std::remainder(n.angle + turn, 360.0);
+  return {{tidy(p.x), tidy(p.y), tidy(p.z)}, tidy(angle == -180.0 ? 180.0 : angle), kind, n.name};
 }
 
-/// On top of the part whose top face the ray enters first, when the dropped box fits inside its
-/// footprint.
-std::optional<DropPlace> onTop(const DropQuery& q, const Aabb& box) {
-  const PartFootprint* first = nullptr;
+/// The part the ray enters first, and where (in that part's frame).
+struct FirstHit {
+  const PartFootprint* part = nullptr;
+  Vec3 local;  // where the ray enters its box, in its frame
+};
+
+FirstHit firstHit(const DropQuery& q) {
+  FirstHit first;
   double nearest = std::numeric_limits<double>::infinity();
-  Vec3 hit;
   for (const auto& n : q.neighbours) {
     if (n.box.empty()) continue;
     const core::Pose inv = poseAboutZ(n.position, n.angle).inverse();
@@ -48,17 +54,27 @@ std::optional<DropPlace> onTop(const DropQuery& q, const Aabb& box) {
     const double t = core::intersect(local, n.box);
     if (t < 0 || t >= nearest) continue;
     nearest = t;
-    first = &n;
-    hit = local.origin + local.direction * t;
+    first = {&n, local.origin + local.direction * t};
   }
-  // the part seen first is entered through its top, and the dropped part fits inside it
-  if (first == nullptr || std::abs(hit.z - first->box.hi.z) > 1e-6) return std::nullopt;
-  const Vec3 size = box.hi - box.lo, room = first->box.hi - first->box.lo;
+  return first;
+}
+
+/// On top of the part the ray enters first through its top face, when the dropped box fits
+/// inside its footprint.
+/// True when the ray enters the part it meets first through that part's top face.
+bool throughTop(const FirstHit& first) {
+  return first.part != nullptr && std::abs(first.local.z - first.part->box.hi.z) <= 1e-6;
+}
+
+std::optional<DropPlace> onTop(const DropQuery& q, const FirstHit& first, const Aabb& box) {
+  if (!q.loose || !throughTop(first)) return std::nullopt;
+  const Aabb& a = first.part->box;
+  const Vec3 size = box.hi - box.lo, room = a.hi - a.lo;
   if (!(size.x < room.x - 1e-6 && size.y < room.y - 1e-6)) return std::nullopt;
   const Vec3 c = centreOf(box);
-  const double x = std::clamp(onGrid(hit.x - c.x, q.grid), first->box.lo.x - box.lo.x, first->box.hi.x - box.hi.x);
-  const double y = std::clamp(onGrid(hit.y - c.y, q.grid), first->box.lo.y - box.lo.y, first->box.hi.y - box.hi.y);
-  return placedBy(*first, {x, y, first->box.hi.z}, SnapKind::OnTop);
+  const double x = std::clamp(onGrid(first.local.x - c.x, q.grid), a.lo.x - box.lo.x, a.hi.x - box.hi.x);
+  const double y = std::clamp(onGrid(first.local.y - c.y, q.grid), a.lo.y - box.lo.y, a.hi.y - box.hi.y);
+  return placedBy(*first.part, {x, y, a.hi.z}, SnapKind::OnTop);
 }
 
 }  // namespace
@@ -90,16 +106,24 @@ core::Pose poseAboutZ(const Vec3& position, double angle) {
 std::optional<DropPlace> placeDrop(const DropQuery& q) {
   // a part with no shapes is a point at its origin
   const Aabb box = q.box.empty() ? Aabb{{0, 0, 0}, {0, 0, 0}} : q.box;
-  if (auto top = onTop(q, box)) return top;
+  const auto first = firstHit(q);
+  if (auto top = onTop(q, first, box)) return top;
 
-  // the floor under the pointer holds the dropped box's centre
-  if (q.ray.direction.z > -kEps) return std::nullopt;
-  const Vec3 p = q.ray.origin + q.ray.direction * (-q.ray.origin.z / q.ray.direction.z);
+  // what is under the pointer (the top of the part it points at, else the floor) holds the
+  // box's centre
+  Vec3 p;
+  if (throughTop(first)) {
+    p = poseAboutZ(first.part->position, first.part->angle).apply(first.local);
+  } else if (q.ray.direction.z < -kEps) {
+    p = q.ray.origin + q.ray.direction * (-q.ray.origin.z / q.ray.direction.z);
+  } else {
+    return std::nullopt;
+  }
   const Vec3 bc = centreOf(box), bh = halfOf(box);
 
   // the part whose box comes nearest that box captures it, within `capture`
   const PartFootprint* best = nullptr;
-  double best_gap = 0, best_distance = 0;
+  double best_gap = 0, best_area = 0, best_distance = 0;
   Vec3 at;  // the pointer in the best part's frame
   for (const auto& n : q.neighbours) {
     if (n.box.empty()) continue;
@@ -109,35 +133,67 @@ std::optional<DropPlace> placeDrop(const DropQuery& q) {
     const double gap_y = std::max(0.0, std::abs(c.y - ac.y) - (ah.y + bh.y));
     const double gap = std::max(gap_x, gap_y);
     const double distance = std::hypot(c.x - ac.x, c.y - ac.y);
+    const double area = 4 * ah.x * ah.y;
     if (gap > q.capture + kEps) continue;
-    if (best == nullptr || gap < best_gap - kEps || (std::abs(gap - best_gap) <= kEps && distance < best_distance)) {
+    const bool tie = std::abs(gap - best_gap) <= kEps;
+    if (best == nullptr || gap < best_gap - kEps || (tie && area > best_area + kEps) ||
+        (tie && std::abs(area - best_area) <= kEps && distance < best_distance)) {
       best = &n;
       best_gap = gap;
+      best_area = area;
       best_distance = distance;
       at = c;
     }
   }
   if (best == nullptr) return DropPlace{{onGrid(p.x - bc.x, q.grid), onGrid(p.y - bc.y, q.grid), 0.0}, 0.0, SnapKind::Floor, {}};
 
-  // the side of its box the pointer is on, split by the box's diagonals
+  // wider than the part and pointed at on it: across it, on its centre line (a photo-eye's
+  // posts or a portal over a belt)
   const Aabb& a = best->box;
   const Vec3 ac = centreOf(a), ah = halfOf(a);
   const Vec3 d = at - ac;
-  const bool along_x = std::abs(d.x) * std::max(ah.y, kEps) >= std::abs(d.y) * std::max(ah.x, kEps);
+  const double x = onGrid(at.x - bc.x, q.grid);
+  // (how far the pointer lies beyond its ends and beyond its sides: negative inside)
+  const double beyond_x = std::abs(d.x) - ah.x, beyond_y = std::abs(d.y) - ah.y;
+  if (box.lo.y < a.lo.y - kSpan && box.hi.y > a.hi.y + kSpan && beyond_x <= kEps && beyond_y <= kEps) {
+    return placedBy(*best, {x, 0.0, 0.0}, SnapKind::CentreLine);
+  }
+  // the side of its box nearest the pointer: the one it lies beyond, or nearest inside
+  const bool along_x = beyond_x >= beyond_y;
   if (along_x) {
     // end to end, centre lines aligned
     const bool plus = d.x >= 0;
-    const double x = plus ? a.hi.x - box.lo.x : a.lo.x - box.hi.x;
-    return placedBy(*best, {x, ac.y - bc.y, 0.0}, plus ? SnapKind::EndPlusX : SnapKind::EndMinusX);
+    const double end = plus ? a.hi.x - box.lo.x : a.lo.x - box.hi.x;
+    return placedBy(*best, {end, ac.y - bc.y, 0.0}, plus ? SnapKind::EndPlusX : SnapKind::EndMinusX);
   }
-  // side by side, sliding along it on the grid
+  // side by side, sliding along it on the grid; a part drawn on one side of its origin (a
+  // pusher, a diffuse photo-eye) faces the part: on its other side it is turned half round
   const bool plus = d.y >= 0;
-  const double x = onGrid(at.x - bc.x, q.grid);
-  // on the centre line the box spans the part's width (posts on both sides of a belt): there
-  if (box.lo.y <= a.lo.y + kEps && box.hi.y >= a.hi.y - kEps) return placedBy(*best, {x, 0.0, 0.0}, SnapKind::CentreLine);
-  const double y = plus ? a.hi.y - box.lo.y : a.lo.y - box.hi.y;
-  if (std::abs(y) <= q.centre_line) return placedBy(*best, {x, 0.0, 0.0}, SnapKind::CentreLine);
-  return placedBy(*best, {x, y, 0.0}, plus ? SnapKind::SidePlusY : SnapKind::SideMinusY);
+  const bool faces_plus = box.hi.y <= kSpan && box.lo.y < -kSpan;
+  const bool faces_minus = box.lo.y >= -kSpan && box.hi.y > kSpan;
+  const bool turn = (plus && faces_plus) || (!plus && faces_minus);
+  const Aabb b = turn ? Aabb{{-box.hi.x, -box.hi.y, box.lo.z}, {-box.lo.x, -box.lo.y, box.hi.z}} : box;
+  const double along = onGrid(at.x - centreOf(b).x, q.grid);
+  const double y = plus ? a.hi.y - b.lo.y : a.lo.y - b.hi.y;
+  const double half_turn = turn ? 180.0 : 0.0;
+  if (std::abs(y) <= q.centre_line) return placedBy(*best, {along, 0.0, 0.0}, SnapKind::CentreLine, half_turn);
+  return placedBy(*best, {along, y, 0.0}, plus ? SnapKind::SidePlusY : SnapKind::SideMinusY, half_turn);
+}
+
+bool looseMachine(const scene::Node& frame) {
+  bool any = false, loose = true;
+  for (const auto& child : frame.children()) {
+    scene::traverse(*child, [&](scene::Node& n, const scene::TraversalState&) {
+      if (n.type().category != scene::Category::Shape) return;
+      any = true;
+      bool in_body = false;
+      for (const scene::Node* up = n.parent(); up != nullptr && up != &frame && !in_body; up = up->parent()) {
+        in_body = up->kind() == scene::NodeKind::Body;
+      }
+      loose = loose && in_body;
+    }, {}, scene::Templates::Skip);
+  }
+  return any && loose;
 }
 
 core::Aabb localBox(const scene::Node& frame) {

@@ -80,30 +80,56 @@ TEST(PartSnap, APartDrawnBesideABeltGoesOntoItsCentreLine) {
   // a pusher's box ends at the belt's edge (y = -0.25 of its origin): its origin on the line
   const Aabb pusher{{-0.2, -0.8, 0.78}, {0.2, -0.26, 0.92}};
   expectAt(placeDrop(query(down(0.53, -0.7), pusher, belt)), 0.55, 0, 0, SnapKind::CentreLine, "belt1");
-  // a through-beam's posts on both sides: across the belt, on its centre line
+  // a pusher pointed at on the belt's top, near its side: beside it all the same
+  expectAt(placeDrop(query(down(-0.31, -0.2), pusher, belt)), -0.3, 0, 0, SnapKind::CentreLine, "belt1");
+  // at the other side it faces the belt: turned half round
+  expectAt(placeDrop(query(down(0.53, 0.7), pusher, belt)), 0.55, 0, 0, SnapKind::CentreLine, "belt1", 180);
+  // drawn 0.5 m off its origin: touching, its origin 0.25 m inside the belt's side
+  const Aabb far_pusher{{-0.2, -0.9, 0.78}, {0.2, -0.5, 0.92}};
+  expectAt(placeDrop(query(down(0.53, 0.6), far_pusher, belt)), 0.55, -0.25, 0, SnapKind::SidePlusY, "belt1", 180);
+  expectAt(placeDrop(query(down(0.53, -0.6), far_pusher, belt)), 0.55, 0.25, 0, SnapKind::SideMinusY, "belt1");
+  // a through-beam's posts on both sides: pointed at on the belt, across it on its centre line;
+  // beside it, beside it
   const Aabb eye{{-0.025, -0.375, 0}, {0.025, 0.375, 0.9}};
-  expectAt(placeDrop(query(down(0.4, 0.5), eye, belt)), 0.4, 0, 0, SnapKind::CentreLine, "belt1");
+  expectAt(placeDrop(query(down(0.4, 0.1), eye, belt)), 0.4, 0, 0, SnapKind::CentreLine, "belt1");
+  expectAt(placeDrop(query(down(-0.88, -0.2), eye, belt)), -0.9, 0, 0, SnapKind::CentreLine, "belt1");
+  expectAt(placeDrop(query(down(0.4, 0.5), eye, belt)), 0.4, 0.625, 0, SnapKind::SidePlusY, "belt1");
+  // beyond the belt's end it is no longer across it
+  expectAt(placeDrop(query(down(1.2, 0), eye, belt)), 1.025, 0, 0, SnapKind::EndPlusX, "belt1");
+  // a belt as wide as the belt is not across it: end to end
+  expectAt(placeDrop(query(down(0.95, 0.1), kBelt, belt)), 2, 0, 0, SnapKind::EndPlusX, "belt1");
 }
 
-TEST(PartSnap, ThePartNearestTheDropCapturesIt) {
+TEST(PartSnap, ThePartNearestTheDropCapturesItTheLargestOfThoseOverlapped) {
   const std::vector<PartFootprint> belts{{"belt1", {0, 0, 0}, 0, kBelt}, {"belt2", {0, 1.2, 0}, 0, kBelt}};
   const Aabb sensor{{-0.05, -0.05, 0}, {0.05, 0.05, 1}};
   expectAt(placeDrop(query(down(0, 0.4), sensor, belts)), 0, 0.3, 0, SnapKind::SidePlusY, "belt1");
   expectAt(placeDrop(query(down(0, 0.8), sensor, belts)), 0, 0.9, 0, SnapKind::SideMinusY, "belt2");
+  // a bin beside a belt where a photo-eye stands across it: the belt's side, not the eye's end
+  const std::vector<PartFootprint> station{{"eye", {0.5, 0, 0}, 0, {{-0.025, -0.375, 0}, {0.025, 0.375, 0.9}}},
+                                           {"belt1", {0, 0, 0}, 0, kBelt}};
+  const Aabb bin{{-0.5, -0.4, 0}, {0.5, 0.4, 0.5}};
+  expectAt(placeDrop(query(down(0.52, 0.6), bin, station)), 0.5, 0.65, 0, SnapKind::SidePlusY, "belt1");
 }
 
-TEST(PartSnap, OverTheTopOfAPartItFitsOnItLandsThereOnTheGrid) {
+TEST(PartSnap, AnItemOverTheTopOfAPartItFitsOnLandsThereOnTheGrid) {
   const std::vector<PartFootprint> belt{{"belt1", {0, 0, 0}, 0, kBelt}};
   const Aabb box{{-0.1, -0.1, 0}, {0.1, 0.1, 0.2}};
-  expectAt(placeDrop(query(down(0.42, 0.08), box, belt)), 0.4, 0.1, 0.8, SnapKind::OnTop, "belt1");
+  auto item = [&](const core::Ray& ray) {
+    auto q = query(ray, box, belt);
+    q.loose = true;
+    return placeDrop(q);
+  };
+  expectAt(item(down(0.42, 0.08)), 0.4, 0.1, 0.8, SnapKind::OnTop, "belt1");
   // kept inside its footprint
-  expectAt(placeDrop(query(down(0.98, -0.2), box, belt)), 0.9, -0.15, 0.8, SnapKind::OnTop, "belt1");
+  expectAt(item(down(0.98, -0.2)), 0.9, -0.15, 0.8, SnapKind::OnTop, "belt1");
+  // a machine (a sensor's post) pointed at on the belt's top stands beside it
+  expectAt(placeDrop(query(down(0.42, 0.08), box, belt)), 0.4, 0.35, 0, SnapKind::SidePlusY, "belt1");
   // a belt over a belt does not fit on it: end to end instead
   expectAt(placeDrop(query(down(0.9, 0), kBelt, belt)), 2, 0, 0, SnapKind::EndPlusX, "belt1");
-  // seen from the side, the ray enters the belt through its side: the floor behind it
-  const auto behind = placeDrop(query({{0.5, -5, 0.6}, Vec3{0, 1, -0.1}.normalized()}, box, belt));
-  ASSERT_TRUE(behind);
-  EXPECT_NE(behind->kind, SnapKind::OnTop);
+  // seen from the side, the ray enters the belt through its side: not on it, but where the ray
+  // meets the floor behind it (1 m past its middle: too far to snap)
+  expectAt(item({{0.52, -5, 0.6}, Vec3{0, 1, -0.1}.normalized()}), 0.5, 1, 0, SnapKind::Floor);
 }
 
 TEST(PartSnap, AMachinesBoxIsInItsOwnFrame) {
@@ -123,6 +149,13 @@ TEST(PartSnap, AMachinesBoxIsInItsOwnFrame) {
   EXPECT_NEAR(box.lo.y, -0.25, 1e-9);
   EXPECT_NEAR(box.hi.z, 0.8, 1e-9);
   EXPECT_TRUE(localBox(*cube).empty());  // no shape below it
+  // a machine, not an item: its shape is in no body
+  EXPECT_FALSE(looseMachine(*frame));
+  auto* item = s.create(*types.find(scene::NodeKind::Transform), "box", s.root());
+  EXPECT_FALSE(looseMachine(*item));  // no shape at all
+  auto* body = s.create(*types.find(scene::NodeKind::Body), "body", *item);
+  s.create(*types.find(scene::NodeKind::Cube), "look", *body);
+  EXPECT_TRUE(looseMachine(*item));
 }
 
 TEST(PartSnap, OnlyATurnAboutZIsAnAngle) {

@@ -42,6 +42,7 @@ enum class SnapKind : std::uint8_t {
 struct DropQuery {
   core::Ray ray;                          ///< the pick ray under the pointer, world
   core::Aabb box;                         ///< the dropped part's machine in its own frame, m
+  bool loose = false;                     ///< its shapes all move with bodies (an item): it may go on top of a part
   std::vector<PartFootprint> neighbours;  ///< the parts already placed
   double grid = 0.05;                     ///< the grid step, m (0: none)
   double capture = 0.3;                   ///< how near a neighbour's box must come to snap to it, m
@@ -58,18 +59,26 @@ struct DropPlace {
 
 /// Where a part with machine box `q.box` lands when dropped along `q.ray`: nullopt when the ray
 /// meets neither the floor nor a part. The rules (docs/ide.md):
-/// - over the top face of a part whose footprint holds the dropped one's: on top of it, turned
-///   as it is, on the grid of its frame;
-/// - else the floor point under the pointer holds the dropped box's centre; a part whose box
-///   comes within `capture` of that box captures it (the nearest): the pointer's side of the
-///   part's box (its ends along x, its sides along y, split by the box's diagonals) is touched.
-///   At an end the centre lines line up; at a side the drop slides along on the grid and
-///   touches the side, its origin going onto the part's centre line (y = 0 of its frame) when
-///   that is within `centre_line`, or when there its box spans the part's width (a photo-eye's
-///   posts on both sides of a belt). A snapped part stands at the part's height and is turned
-///   as it is;
+/// - a loose part (an item) over the top face of the part the ray meets first, when its
+///   footprint fits inside that part's: on top of it, turned as it is, on the grid of its frame;
+/// - else the point under the pointer (on the top face of the part the ray meets, else on the
+///   floor) holds the dropped box's centre, and a part whose box comes within `capture` of that
+///   box captures it: the nearest, and of those as near (overlapping), the one of the largest
+///   footprint (a belt rather than the photo-eye across it). A box wider than the part by a
+///   centimetre on both sides, pointed at on the part, goes across it with its origin on the
+///   part's centre line (y = 0 of its frame: a photo-eye's posts, a portal over a belt). Else
+///   the side of the part's box nearest the pointer (its ends along x, its sides along y: the
+///   one the pointer lies beyond, else the nearest) is touched: at an
+///   end the centre lines line up; at a side the drop slides along on the grid, its origin
+///   going onto the centre line when that is within `centre_line`, and a part drawn on one side
+///   of its origin (a pusher, a diffuse photo-eye) faces the part: at its other side it is
+///   turned half round. A snapped part stands at the part's height and is turned as it is;
 /// - else the origin goes on the floor, on the grid.
 [[nodiscard]] std::optional<DropPlace> placeDrop(const DropQuery& q);
+
+/// True when every shape below `frame` lies in a Body (the part is an item that moves as a
+/// whole, not a machine standing on the floor); false when it holds no shape.
+[[nodiscard]] bool looseMachine(const scene::Node& frame);
 
 /// The box of the shapes below `frame` in the frame it sets up for them (a Transform's own
 /// translation and rotation included), from the last updateTransforms(), templates left out;

@@ -29,7 +29,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr float kPicture = 56.0F;   // a part's picture in the palette, pixels
-constexpr float kTileWidth = 76.0F;
+constexpr float kTileWidth = 70.0F;
 constexpr const char* kGhostName = "palette_ghost";
 constexpr double kBeyond = 0.1;     // the report's points beside a part: this far beyond its sides, m
 
@@ -123,6 +123,7 @@ const PartMachine& machineOf(PaletteState& st, const model::LibraryPart& part) {
   for (const auto& c : own->second->root().children()) s.copy(*c, *frame);
   scene::updateTransforms(s.root());
   it->second.box = localBox(*frame);
+  it->second.loose = looseMachine(*frame);
   return it->second;
 }
 
@@ -465,6 +466,7 @@ PaletteGhost paletteGhost(App& app, const OrbitCamera& view, ImVec2 at, float w,
   q.ray = view.ray(static_cast<double>(mouse.x - at.x), static_cast<double>(mouse.y - at.y), static_cast<double>(w),
                    static_cast<double>(h));
   q.box = machine.box;
+  q.loose = machine.loose;
   q.neighbours = footprints(app);
   q.grid = app.world.snap ? app.world.move_step : 0.0;
   const auto place = placeDrop(q);

@@ -25,6 +25,7 @@ class PictureTexture;
 struct PartMachine {
   std::shared_ptr<const scene::Scene> scene;  ///< its type's scene (null: it brings none)
   core::Aabb box;                             ///< its shapes in its own frame, m
+  bool loose = false;                         ///< an item (its shapes all in bodies): it may go on top of a part
   std::string error;                          ///< why its file did not load ("" when it did)
 };
 
