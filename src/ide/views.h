@@ -85,13 +85,15 @@ struct PaletteGhost {
 PaletteGhost paletteGhost(App& app, const OrbitCamera& view, ImVec2 at, float w, float h);
 /// After the world view's button: a part dropped on it is placed (one step of undo), selected,
 /// and offered its control; the footprint where it would land is drawn; the part instances'
-/// points (`parts/NAME/center`, `+x`, `-x`, `+y`, `-y`: just beyond each side, on its floor)
-/// go into `report`, for replays to drop at.
+/// points go into `report`, for replays to drop at: `parts/NAME/center` (its top's middle),
+/// `top -x` and `top +x` (its top a quarter from each end), `+x`, `-x`, `+y`, `-y` (0.1 m
+/// beyond the middle of each side, on its floor).
 void paletteDrop(App& app, const OrbitCamera& view, ImVec2 at, float w, float h, nlohmann::json& report);
 /// The Transform holding a part instance's machine that `path` lies in (the part is one node to
 /// the views), else `path`.
 [[nodiscard]] std::string partPathOf(const App& app, const std::string& path);
-/// The part instance whose machine the edit scene holds at `path` (its Transform), if any.
+/// The part instance whose machine the shown scene (the edit scene, or the run's plant) holds
+/// at `path` (its Transform: a top-level node named after the instance), if any.
 [[nodiscard]] std::optional<PartInstanceAt> partAtPath(const App& app, const std::string& path);
 /// The command a manipulator's drag of `field` of node `path` makes: a part instance's
 /// placement (translation, rotation) for a part's Transform, else a SetFieldCommand.

@@ -154,7 +154,7 @@ std::string dropPage(App& app) {
   return pages.empty() ? std::string("main") : pages.front().name;
 }
 
-/// `at` in window pixels, when the view shows it.
+/// Where world point `p` is in window pixels, the view's picture at `at` (nullopt: behind the eye).
 std::optional<ImVec2> onScreen(const OrbitCamera& view, const core::Vec3& p, ImVec2 at, float w, float h) {
   const auto q = view.project(p, static_cast<double>(w), static_cast<double>(h));
   if (!q) return std::nullopt;
@@ -170,9 +170,9 @@ void placeDropped(App& app, const std::string& name, const DropPlace& place, ImV
   }
   const auto* part = model::findLibraryPart(st.parts, name);
   if (part == nullptr) return;
-  auto command = std::make_unique<PlacePartCommand>(*part, dropPage(app), place.translation, place.angle);
-  const auto* placing = command.get();  // kept on the undo stack when it succeeds
   const auto page = dropPage(app);
+  auto command = std::make_unique<PlacePartCommand>(*part, page, place.translation, place.angle);
+  const auto* placing = command.get();  // kept on the undo stack when it succeeds
   const auto why = app.document().execute(std::move(command));
   if (!why.empty()) {
     app.message = why;
@@ -191,7 +191,7 @@ void placeDropped(App& app, const std::string& name, const DropPlace& place, ImV
 }
 
 /// A part's tile: its picture (or its group's initial) over its name in one or two lines.
-bool tile(PaletteState& st, const model::LibraryPart& part, nlohmann::json& items, nlohmann::json& list) {
+void tile(PaletteState& st, const model::LibraryPart& part, nlohmann::json& items, nlohmann::json& list) {
   ImGui::PushID(part.name.c_str());
   const ImVec2 at = ImGui::GetCursorScreenPos();
   const float line = ImGui::GetTextLineHeight();
@@ -244,8 +244,11 @@ bool tile(PaletteState& st, const model::LibraryPart& part, nlohmann::json& item
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 26);
     ImGui::Text("%s  (%s, version %d)", part.name.c_str(), part.spec.group.c_str(), part.spec.version);
     if (!part.description.empty()) ImGui::TextUnformatted(part.description.c_str());
-    ImGui::TextDisabled("%zu I/O: %zu inputs, %zu outputs; %zu parameters%s", part.spec.io.size(), inputs, outputs,
-                        part.spec.params.size(), part.spec.control.empty() ? "" : "; comes with its control");
+    const auto count = [](std::size_t n, const char* one) { return std::to_string(n) + " " + one + (n == 1 ? "" : "s"); };
+    const std::string io = std::to_string(part.spec.io.size()) + " I/O (" + count(inputs, "input") + ", " +
+                           count(outputs, "output") + "), " + count(part.spec.params.size(), "parameter") +
+                           (part.spec.control.empty() ? "" : "; comes with its control (" + part.spec.control + ")");
+    ImGui::TextDisabled("%s", io.c_str());
     ImGui::TextDisabled("Drag it into the world view to place it.");
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
@@ -259,7 +262,6 @@ bool tile(PaletteState& st, const model::LibraryPart& part, nlohmann::json& item
   }
   list.push_back(std::move(entry));
   ImGui::PopID();
-  return hovered;
 }
 
 /// True when `part` answers the search `words` (each found in its name, group or description).
@@ -311,7 +313,7 @@ void drawPalette(App& app, const Rect& at, nlohmann::json& report) {
     const int per_row = std::max(1, static_cast<int>((room + ImGui::GetStyle().ItemSpacing.x) / (kTileWidth + ImGui::GetStyle().ItemSpacing.x)));
     for (std::size_t k = 0; k < found.size(); ++k) {
       if (k % static_cast<std::size_t>(per_row) != 0) ImGui::SameLine();
-      (void)tile(st, *found[k], items, list);
+      tile(st, *found[k], items, list);
       ++shown;
     }
   }
@@ -568,7 +570,10 @@ void paletteDrop(App& app, const OrbitCamera& view, ImVec2 at, float w, float h,
       if (box.empty()) continue;
       const core::Vec3 c = (box.lo + box.hi) * 0.5;
       nlohmann::json points = nlohmann::json::object();
+      const double quarter = (box.hi.x - box.lo.x) / 4;
       const std::pair<const char*, core::Vec3> named[] = {{"center", {c.x, c.y, box.hi.z}},
+                                                          {"top -x", {c.x - quarter, c.y, box.hi.z}},
+                                                          {"top +x", {c.x + quarter, c.y, box.hi.z}},
                                                           {"+x", {box.hi.x + kBeyond, c.y, 0}},
                                                           {"-x", {box.lo.x - kBeyond, c.y, 0}},
                                                           {"+y", {c.x, box.hi.y + kBeyond, 0}},
@@ -585,11 +590,17 @@ void paletteDrop(App& app, const OrbitCamera& view, ImVec2 at, float w, float h,
 }
 
 std::optional<PartInstanceAt> partAtPath(const App& app, const std::string& path) {
-  const auto& st = app.palette();
-  if (app.run().mode() != RunMode::Edit || !st.edit_scene) return std::nullopt;
-  const auto it = st.frames.find(path);
-  if (it == st.frames.end()) return std::nullopt;
-  return it->second;
+  // a top-level node named after a part instance that places a machine, which the document's
+  // own scene does not hold (the edit scene's and the run's plant's alike)
+  if (path.empty() || path.find('/') != std::string::npos) return std::nullopt;
+  const auto& m = app.document().model();
+  const auto at = findPartInstance(m, path);
+  if (!at) return std::nullopt;
+  const auto* inst = instanceAt(m, *at);
+  const auto own = m.type_scenes.find(inst->type);
+  if (own == m.type_scenes.end() || own->second->root().children().empty()) return std::nullopt;
+  if (const auto* s = app.document().scene(); s != nullptr && s->find(path) != nullptr) return std::nullopt;
+  return at;
 }
 
 std::string partPathOf(const App& app, const std::string& path) {

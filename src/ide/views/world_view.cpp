@@ -250,7 +250,7 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
     // a click a sensor counts keeps the selection (the run's status line names the sensor)
     if (felt.empty() && hit.shape != nullptr) {
       // a part's shape picks the part
-      const auto picked = app.run().mode() == RunMode::Edit ? partPathOf(app, hit.shape->path()) : hit.shape->path();
+      const auto picked = partPathOf(app, hit.shape->path());
       app.selectNode(picked);
       app.message = "picked " + picked;
     } else if (felt.empty()) {
