@@ -419,4 +419,59 @@ bool applyPartUpdate(Model& model, const PartUpdate& update, std::vector<std::st
   return true;
 }
 
+namespace {
+
+/// `|` in a table cell would end it.
+std::string cell(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '|') out += '\\';
+    out += c == '\n' ? ' ' : c;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string partsMarkdown(const std::vector<LibraryPart>& parts, const std::string& docs_dir) {
+  std::string out = "<!-- parts: from gdpn::model::partsMarkdown() -->\n";
+  std::string group = "\x01";
+  for (const auto& p : parts) {
+    if (p.pattern) continue;
+    if (p.spec.group != group) {
+      group = p.spec.group;
+      out += "\n### " + (group.empty() ? std::string("Other") : group) + "\n";
+    }
+    out += "\n#### `" + p.name + "` (version " + std::to_string(p.spec.version) + ")\n\n";
+    if (!p.picture.empty()) {
+      std::error_code ec;
+      const auto rel = fs::relative(p.picture, docs_dir, ec);
+      out += "![" + p.name + "](" + (ec ? p.picture : rel.generic_string()) + ")\n\n";
+    }
+    if (!p.description.empty()) out += p.description + "\n\n";
+    if (!p.spec.params.empty()) {
+      out += "| parameter | default | unit | meaning |\n| --- | --- | --- | --- |\n";
+      for (const auto& q : p.spec.params) {
+        out += "| `" + q.name + "` | " + core::formatDouble(q.declared) + " | " + cell(q.unit) + " | " +
+               cell(q.description) + " |\n";
+      }
+      out += "\n";
+    }
+    if (!p.spec.io.empty()) {
+      out += "| I/O | kind | unit | meaning |\n| --- | --- | --- | --- |\n";
+      for (const auto& io : p.spec.io) {
+        out += "| `" + io.name + "` | " + ioSignalName(io.signal) + " " + ioDirectionName(io.direction) + " | " +
+               cell(io.unit) + " | " + cell(io.description) + " |\n";
+      }
+      out += "\n";
+    }
+    for (const auto& c : parts) {
+      if (c.pattern && c.spec.controls == p.name) {
+        out += "Control pattern `" + c.name + "`" + (c.description.empty() ? "" : ": " + c.description) + "\n\n";
+      }
+    }
+  }
+  return out + "<!-- end of parts -->\n";
+}
+
 }  // namespace gdpn::model

@@ -93,4 +93,10 @@ std::vector<PartUpdate> partUpdates(const Model& model, const std::vector<Librar
 /// library's file does not load.
 bool applyPartUpdate(Model& model, const PartUpdate& update, std::vector<std::string>& uses, std::string& why);
 
+/// docs/parts.md's catalogue of `parts` (patterns under the part they control): per part its
+/// picture (linked relative to `docs_dir`), description, parameters and I/O, as Markdown
+/// between the markers `<!-- parts: from gdpn::model::partsMarkdown() -->` and
+/// `<!-- end of parts -->` (a test fails when the docs lag).
+std::string partsMarkdown(const std::vector<LibraryPart>& parts, const std::string& docs_dir);
+
 }  // namespace gdpn::model
