@@ -219,6 +219,19 @@ TEST_P(EveryPart, ItsDemoRunsAndItsIoBindToThePlant) {
   }
 }
 
+TEST_P(EveryPart, SavesAndReadsBackTheSame) {
+  // a model keeps a copy of the parts it uses: the part's file written out and read back is
+  // the same model, its =expressions and $params as written
+  const auto m = loadPart(GetParam().file);
+  ASSERT_TRUE(m);
+  const std::string text = writeModel(*m);
+  core::Diagnostics diags;
+  const auto back = parseModel(text, "saved.gdpn.yaml", diags);
+  ASSERT_TRUE(back) << diags.str() << text;
+  EXPECT_TRUE(*back == *m);
+  EXPECT_EQ(writeModel(*back), text);
+}
+
 INSTANTIATE_TEST_SUITE_P(Library, EveryPart, ::testing::ValuesIn(library()),
                          [](const auto& p) { return stem(p.param.file); });
 
