@@ -807,6 +807,28 @@ TEST(StackLight, EachOutputLightsItsLamp) {
   EXPECT_EQ(colour(*sim, "light1/lamps/amber", "emissive"), (std::array<double, 3>{1, 0.6, 0}));
 }
 
+TEST(StackLight, AForcedOutputHoldsItsLamp) {
+  // forced on, the red lamp stays lit whatever is written; released, it takes what was
+  // written meanwhile (off)
+  auto sim = compose(std::string(kFloor) + "pages:\n  main:\n    instances:\n      light1: {type: stack_light}\n",
+                     {"operator/stack_light"});
+  ASSERT_TRUE(sim);
+  std::string why;
+  const auto light = sim->parts()->find("light1", why);
+  ASSERT_TRUE(light) << why;
+  ASSERT_TRUE(sim->parts()->force(*light, "red", 1, why)) << why;
+  runFor(*sim, 0.03);
+  EXPECT_EQ(colour(*sim, "light1/lamps/red", "emissive"), (std::array<double, 3>{1, 0, 0}));
+  write(*sim, "light1", "red", 0);
+  runFor(*sim, 0.03);
+  EXPECT_DOUBLE_EQ(io(*sim, "light1", "red"), 1.0);
+  EXPECT_EQ(colour(*sim, "light1/lamps/red", "emissive"), (std::array<double, 3>{1, 0, 0}));
+  ASSERT_TRUE(sim->parts()->release(*light, "red"));
+  runFor(*sim, 0.03);
+  EXPECT_DOUBLE_EQ(io(*sim, "light1", "red"), 0.0);
+  EXPECT_EQ(colour(*sim, "light1/lamps/red", "emissive"), (std::array<double, 3>{0, 0, 0}));
+}
+
 TEST(PushButton, AClickOnItsHeadPressesIt) {
   // a click straight down on the head: pressed in that step, one press counted; a click
   // beside it: nothing
