@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "gdpn/core/file.h"
@@ -306,6 +307,76 @@ TEST(PartLibrary, ANewerVersionIsOfferedAndAppliedAndRemovedIoIsLocated) {
   EXPECT_NE(check.str().find("m.gdpn.yaml:4:5: error: discrete input 0: part 'main/lamp1' has no I/O 'seen'"),
             std::string::npos)
       << check.str();
+}
+
+}  // namespace
+}  // namespace gdpn::model
+
+namespace gdpn::model {
+namespace {
+
+// examples/station: issue 54's station, made of parts, sorts red boxes into the bin and lets
+// blue ones ride to the remover; its summary counts both.
+TEST(StationExample, RedBoxesEndInTheBinBlueInTheRemover) {
+  auto sim = testing::openModelFile("examples/station/station.gdpn.yaml");
+  ASSERT_TRUE(sim);
+  const auto outcome = sim->run({120.0, std::nullopt});
+  EXPECT_EQ(outcome.reason, StopReason::Until) << outcome.message;
+  std::string error;
+  const auto figures = sim->modelFigures(error);
+  ASSERT_TRUE(error.empty()) << error;
+  std::map<std::string, double> f;
+  for (const auto& x : figures) f[x.label] = x.value.value_or(-1);
+  // a box every 4 s from 0 to 116 s; the last, blue, is still on the belt at 120 s
+  EXPECT_EQ(f["boxes made"], 30);
+  EXPECT_EQ(f["red boxes in the bin"], 15);
+  EXPECT_EQ(f["blue boxes removed"], 14);
+  EXPECT_EQ(f["strokes"], 15);
+  // and each is where its colour says
+  for (const auto& holder : sim->plant()->find("emitter1/items")->children()) {
+    const scene::Node* box = holder->find("box");
+    ASSERT_NE(box, nullptr);
+    const bool red = std::get<std::string>(*box->datum("colour")) == "red";
+    EXPECT_EQ(box->framePose().position.y > 0.45, red) << box->path();
+  }
+}
+
+}  // namespace
+}  // namespace gdpn::model
+
+namespace gdpn::model {
+namespace {
+
+// docs/parts.md's catalogue is made from the part files of parts/ (GDPN_UPDATE_GOLDEN=1
+// rewrites it); every part gdpn ships is in it, with its picture.
+TEST(PartDocs, TheCatalogueIsThePartFiles) {
+  core::Diagnostics diags;
+  const std::string src = GDPN_SOURCE_DIR;
+  const auto parts = scanParts({src + "/parts"}, diags);
+  EXPECT_TRUE(diags.all().empty()) << diags.str();
+  for (const char* name : {"small_box", "medium_box", "large_box", "emitter", "remover", "belt_conveyor",
+                           "diffuse_sensor", "through_beam", "pusher", "bin", "stack_light", "push_button"}) {
+    const LibraryPart* p = findLibraryPart(parts, name);
+    ASSERT_TRUE(p) << name;
+    EXPECT_FALSE(p->picture.empty()) << name << " has no picture";
+    EXPECT_FALSE(p->description.empty()) << name;
+  }
+  const std::string want = partsMarkdown(parts, src + "/docs");
+  const std::string path = src + "/docs/parts.md";
+  core::Diagnostics read;
+  std::string text = core::readFile(path, read).value_or("");
+  const auto begin = text.find("<!-- parts: from gdpn::model::partsMarkdown() -->");
+  const std::string end_marker = "<!-- end of parts -->\n";
+  const auto end = text.find(end_marker);
+  ASSERT_NE(begin, std::string::npos);
+  ASSERT_NE(end, std::string::npos);
+  const std::string have = text.substr(begin, end + end_marker.size() - begin);
+  if (std::getenv("GDPN_UPDATE_GOLDEN") != nullptr && have != want) {
+    text.replace(begin, have.size(), want);
+    std::ofstream(path) << text;
+    return;
+  }
+  EXPECT_EQ(have, want) << "docs/parts.md lags the part files; GDPN_UPDATE_GOLDEN=1 rewrites it";
 }
 
 }  // namespace
