@@ -318,7 +318,7 @@ namespace {
 // examples/station: issue 54's station, made of parts, sorts red boxes into the bin and lets
 // blue ones ride to the remover; its summary counts both.
 TEST(StationExample, RedBoxesEndInTheBinBlueInTheRemover) {
-  auto sim = testing::openModelFile("examples/station/station.gdpn.yaml");
+  auto sim = testing::openModelFile("examples/station/sorting_station.gdpn.yaml");
   ASSERT_TRUE(sim);
   const auto outcome = sim->run({120.0, std::nullopt});
   EXPECT_EQ(outcome.reason, StopReason::Until) << outcome.message;
