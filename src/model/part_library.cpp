@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <set>
 
 #include "gdpn/core/text.h"
@@ -102,6 +103,20 @@ std::optional<Model> loadPartFile(const std::string& file, std::string& why) {
   return m;
 }
 
+/// Part file `file` and, in `types`, the page types its part `name` brings (typesOf);
+/// nullopt and `why` when it does not load or has no such part.
+std::optional<Model> loadPartTypes(const std::string& file, const std::string& name, std::vector<std::string>& types,
+                                   std::string& why) {
+  auto m = loadPartFile(file, why);
+  if (!m) return std::nullopt;
+  types = typesOf(*m, name);
+  if (types.empty()) {
+    why = file + " holds no page type '" + name + "'";
+    return std::nullopt;
+  }
+  return m;
+}
+
 }  // namespace
 
 std::vector<std::string> partSearchPath(const std::string& model_dir) {
@@ -136,7 +151,7 @@ std::vector<std::string> partSearchPath(const std::string& model_dir) {
 std::vector<LibraryPart> scanParts(const std::vector<std::string>& path, core::Diagnostics& diags,
                                    const std::string& skip) {
   std::vector<LibraryPart> out;
-  std::set<std::string> seen;
+  std::map<std::string, std::size_t> seen;  // a part's name -> its index in out
   std::error_code ec;
   const fs::path skipped = skip.empty() ? fs::path() : fs::weakly_canonical(skip, ec);
   for (std::size_t k = 0; k < path.size(); ++k) {
@@ -153,7 +168,11 @@ std::vector<LibraryPart> scanParts(const std::vector<std::string>& path, core::D
         continue;
       }
       for (const auto& [name, spec] : m->parts) {
-        if (!spec.listed || !seen.insert(name).second) continue;
+        if (!spec.listed) continue;
+        // a name met before keeps its first file, unless this one is newer (a model's stale
+        // copy beside the model never hides the library's newer version)
+        const auto before = seen.find(name);
+        if (before != seen.end() && out[before->second].spec.version >= spec.version) continue;
         LibraryPart p;
         p.name = name;
         p.file = file.string();
@@ -164,7 +183,12 @@ std::vector<LibraryPart> scanParts(const std::vector<std::string>& path, core::D
           const fs::path pic = file.parent_path() / spec.picture;
           if (fs::is_regular_file(pic, ec)) p.picture = pic.string();
         }
-        out.push_back(std::move(p));
+        if (before != seen.end()) {
+          out[before->second] = std::move(p);
+        } else {
+          seen.emplace(name, out.size());
+          out.push_back(std::move(p));
+        }
       }
     }
   }
@@ -182,13 +206,9 @@ const LibraryPart* findLibraryPart(const std::vector<LibraryPart>& parts, const 
 }
 
 bool copyPartType(Model& model, const LibraryPart& part, std::string& why) {
-  const auto file = loadPartFile(part.file, why);
+  std::vector<std::string> types;
+  const auto file = loadPartTypes(part.file, part.name, types, why);
   if (!file) return false;
-  const auto types = typesOf(*file, part.name);
-  if (types.empty()) {
-    why = part.file + " holds no page type '" + part.name + "'";
-    return false;
-  }
   std::vector<std::string> missing;
   for (const auto& t : types) {
     const net::PageSpec* mine = pageType(model, t);
@@ -385,13 +405,9 @@ std::vector<PartUpdate> partUpdates(const Model& model, const std::vector<Librar
 }
 
 bool applyPartUpdate(Model& model, const PartUpdate& update, std::vector<std::string>& uses, std::string& why) {
-  const auto file = loadPartFile(update.file, why);
+  std::vector<std::string> types;
+  const auto file = loadPartTypes(update.file, update.name, types, why);
   if (!file) return false;
-  const auto types = typesOf(*file, update.name);
-  if (types.empty()) {
-    why = update.file + " holds no page type '" + update.name + "'";
-    return false;
-  }
   for (const auto& t : types) copyType(model, *file, t);
   const PartSpec& now = model.parts.at(update.name);
   // instances keep the parameters the new version still has

@@ -252,6 +252,27 @@ TEST(PartLibrary, AModelKeepsItsCopyAndRunsWithoutTheLibrary) {
   EXPECT_TRUE(IoMap::create(*sim, back->io, diags)) << diags.str();
 }
 
+TEST(PartLibrary, TheHigherVersionWinsAndOfEqualOnesTheFirstFolder) {
+  const fs::path near = scratch("near"), far = scratch("far");
+  core::Diagnostics read;
+  std::string text = core::readFile(kLampFile, read).value();
+  std::ofstream(near / "lamp.gdpn.yaml") << text;
+  const std::string v2 = "version: 2, group: Test, control";
+  text.replace(text.find("version: 1, group: Test, control"), v2.size(), v2);
+  std::ofstream(far / "lamp.gdpn.yaml") << text;
+  core::Diagnostics diags;
+  auto parts = scanParts({near.string(), far.string()}, diags);
+  ASSERT_TRUE(findLibraryPart(parts, "lamp")) << diags.str();
+  EXPECT_EQ(findLibraryPart(parts, "lamp")->spec.version, 2);
+  EXPECT_EQ(findLibraryPart(parts, "lamp")->file, (far / "lamp.gdpn.yaml").string());
+  // of one version, the first folder's
+  const fs::path same = scratch("same");
+  fs::copy_file(near / "lamp.gdpn.yaml", same / "lamp.gdpn.yaml");
+  EXPECT_EQ(findLibraryPart(scanParts({same.string(), near.string()}, diags), "lamp")->file,
+            (same / "lamp.gdpn.yaml").string());
+  EXPECT_EQ(std::count_if(parts.begin(), parts.end(), [](const LibraryPart& p) { return p.name == "lamp"; }), 1);
+}
+
 TEST(PartLibrary, ANewerVersionIsOfferedAndAppliedAndRemovedIoIsLocated) {
   const fs::path lib = scratch("newer");
   core::Diagnostics read;

@@ -36,7 +36,9 @@ std::vector<std::string> partSearchPath(const std::string& model_dir);
 
 /// Every part in the part files of `path` (each folder searched with its subfolders, except
 /// `model_dir`'s own files, read without descending), sorted by group then name; where two
-/// folders hold a part of one name, the earlier folder's wins. A file that does not load is a
+/// files hold a part of one name, the higher version wins, and of one version the earlier
+/// folder's (a model beside the model holds copies of the parts it uses: an older copy never
+/// hides the library's newer version). A file that does not load is a
 /// warning in `diags` and skipped. `skip` is a file not to read (the model itself).
 std::vector<LibraryPart> scanParts(const std::vector<std::string>& path, core::Diagnostics& diags,
                                    const std::string& skip = {});
