@@ -10,6 +10,7 @@
 #include <set>
 
 #include "gdpn/core/text.h"
+#include "gdpn/scene/fields.h"
 
 namespace gdpn::model {
 namespace fs = std::filesystem;
@@ -433,6 +434,60 @@ bool applyPartUpdate(Model& model, const PartUpdate& update, std::vector<std::st
     }
   }
   return true;
+}
+
+std::optional<Model> partFromNodes(const std::vector<const scene::Node*>& nodes, const std::string& name,
+                                   const std::string& group, const std::vector<Param>& params, std::string& why) {
+  if (!core::isIdentifier(name)) {
+    why = "a part's name is a word of letters, digits and _ (not starting with a digit), got '" + name + "'";
+    return std::nullopt;
+  }
+  if (nodes.empty()) {
+    why = "nothing is selected to make a part of";
+    return std::nullopt;
+  }
+  Model m;
+  m.description = "the part " + name;
+  auto scene = std::make_shared<scene::Scene>();
+  for (const scene::Node* n : nodes) {
+    if (!scene->copy(*n, scene->root())) {
+      why = "two selected nodes are named '" + n->name() + "': rename one";
+      return std::nullopt;
+    }
+  }
+  // the first node's place is the part's origin: its Transforms are moved by as much
+  if (nodes.front()->kind() == scene::NodeKind::Transform) {
+    const auto origin = nodes.front()->vec3(scene::field::Transform::Translation);
+    for (const auto& c : scene->root().children()) {
+      if (c->kind() != scene::NodeKind::Transform) continue;
+      const auto t = c->vec3(scene::field::Transform::Translation);
+      c->setValue(scene::field::Transform::Translation, std::array<double, 3>{t.x - origin.x, t.y - origin.y, t.z - origin.z});
+      std::erase_if(c->params, [](const scene::Node::Binding& b) { return b.field == static_cast<std::uint32_t>(scene::field::Transform::Translation); });
+    }
+  }
+  // references the part does not declare keep their values alone
+  Model fragment;
+  fragment.scene = scene;
+  keepParamsOf(fragment, params);
+  net::PageSpec type;
+  type.name = name;
+  type.description = "made from " + std::to_string(nodes.size()) + " node" + (nodes.size() == 1 ? "" : "s") +
+                     " of a scene";
+  m.net.page_types.push_back(type);
+  m.type_scenes[name] = fragment.scene;
+  PartSpec part;
+  part.listed = true;
+  part.group = group;
+  part.params = params;
+  m.parts[name] = part;
+  net::PageSpec demo;
+  demo.name = "main";
+  net::InstanceSpec inst;
+  inst.name = name + "1";
+  inst.type = name;
+  demo.instances.push_back(inst);
+  m.net.pages.push_back(demo);
+  return m;
 }
 
 namespace {

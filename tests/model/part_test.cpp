@@ -273,6 +273,39 @@ TEST(PartLibrary, TheHigherVersionWinsAndOfEqualOnesTheFirstFolder) {
   EXPECT_EQ(std::count_if(parts.begin(), parts.end(), [](const LibraryPart& p) { return p.name == "lamp"; }), 1);
 }
 
+TEST(PartLibrary, NodesOfAScenePlacedAsANewPart) {
+  core::Diagnostics diags;
+  auto m = parseModel("gdpn: 1\nparams: {w: 0.5, h: 2}\nscene:\n"
+                      "  - Transform: {name: table, translation: [3, 1, 0], children: [{Cube: {name: top, size: [1, $w, 0.05]}}]}\n"
+                      "  - Transform: {name: lamp, translation: [3, 2, 1], children: [{Sphere: {radius: 0.1}}]}\n",
+                      "m.gdpn.yaml", diags);
+  ASSERT_TRUE(m) << diags.str();
+  std::string why;
+  const std::vector<const scene::Node*> nodes = {m->scene->find("table"), m->scene->find("lamp")};
+  auto part = partFromNodes(nodes, "desk", "Furniture", {m->params[0]}, why);
+  ASSERT_TRUE(part) << why;
+  // the first node's place is the origin; the width stays a parameter of the part
+  const scene::Scene& s = *part->type_scenes.at("desk");
+  EXPECT_EQ(s.find("table")->vec3(scene::field::Transform::Translation), (core::Vec3{0, 0, 0}));
+  EXPECT_EQ(s.find("lamp")->vec3(scene::field::Transform::Translation), (core::Vec3{0, 1, 1}));
+  EXPECT_EQ(part->parts.at("desk").params.size(), 1U);
+  const fs::path lib = scratch("made");
+  ASSERT_TRUE(saveModel(*part, (lib / "desk.gdpn.yaml").string(), diags)) << diags.str();
+  auto parts = scanParts({lib.string()}, diags);
+  const LibraryPart* desk = findLibraryPart(parts, "desk");
+  ASSERT_TRUE(desk) << diags.str();
+  EXPECT_EQ(desk->spec.group, "Furniture");
+  Model use;
+  ASSERT_FALSE(placePart(use, "main", *desk, {5, 0, 0}, 0, false, why).empty()) << why;
+  use.net.pages[0].instances[0].params.push_back({"w", 0.8, {}});
+  auto sim = Simulation::create(use, diags);
+  ASSERT_TRUE(sim) << diags.str();
+  EXPECT_EQ(sim->plant()->find("desk1/table/top")->vec3(scene::field::Cube::Size), (core::Vec3{1, 0.8, 0.05}));
+  EXPECT_FALSE(partFromNodes({}, "x", "", {}, why));
+  EXPECT_EQ(why, "nothing is selected to make a part of");
+  EXPECT_FALSE(partFromNodes(nodes, "2desk", "", {}, why));
+}
+
 TEST(PartLibrary, ANewerVersionIsOfferedAndAppliedAndRemovedIoIsLocated) {
   const fs::path lib = scratch("newer");
   core::Diagnostics read;

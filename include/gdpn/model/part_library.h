@@ -95,6 +95,15 @@ std::vector<PartUpdate> partUpdates(const Model& model, const std::vector<Librar
 /// library's file does not load.
 bool applyPartUpdate(Model& model, const PartUpdate& update, std::vector<std::string>& uses, std::string& why);
 
+/// A part file holding page type `name` (a part of `group`, version 1) whose machine is a copy
+/// of `nodes` (scene nodes, each with its subtree; where the first is a Transform, its place is
+/// the part's origin and the Transforms among them move by as much), with a demo page placing
+/// one instance: what the IDE's "Save as Part" writes. The
+/// nodes keep their fields' parameter references only where `params` declares them. Nullopt
+/// with `why` when `name` is no identifier or `nodes` is empty.
+std::optional<Model> partFromNodes(const std::vector<const scene::Node*>& nodes, const std::string& name,
+                                   const std::string& group, const std::vector<Param>& params, std::string& why);
+
 /// docs/parts.md's catalogue of `parts` (patterns under the part they control): per part its
 /// picture (linked relative to `docs_dir`), description, parameters and I/O, as Markdown
 /// between the markers `<!-- parts: from gdpn::model::partsMarkdown() -->` and
