@@ -53,7 +53,9 @@ bool reaches(const std::string& code, const std::string& call, const std::string
     auto i = at;
     while (i > 0 && (identifierChar(code[i - 1]) || code[i - 1] == '.')) --i;
     while (i > 0 && (code[i - 1] == ' ' || code[i - 1] == '\t')) --i;
-    if (i == 0 || code[i - 1] != '=' || (i > 1 && (code[i - 2] == '=' || code[i - 2] == '!' || code[i - 2] == '<' || code[i - 2] == '>'))) continue;
+    const bool assigned = i > 0 && code[i - 1] == '=' &&
+                          (i == 1 || (code[i - 2] != '=' && code[i - 2] != '!' && code[i - 2] != '<' && code[i - 2] != '>'));
+    if (!assigned) continue;
     --i;
     while (i > 0 && (code[i - 1] == ' ' || code[i - 1] == '\t')) --i;
     const auto end = i;
@@ -160,7 +162,8 @@ std::vector<IoListRow> ioListRows(const model::Model& model) {
       if (used) row.uses.push_back(t.where);
     }
     for (const auto& e : model.io.entries) {
-      if (e.source == model::IoEntry::Source::Part && e.io == row.io.name && (e.target == row.part || e.target == row.instance)) {
+      const bool names = e.target == row.part || e.target == row.instance;
+      if (e.source == model::IoEntry::Source::Part && e.io == row.io.name && names) {
         row.addresses.push_back(model::ioAddressName(e.table, e.address));
       }
     }

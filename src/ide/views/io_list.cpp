@@ -20,7 +20,7 @@ namespace gdpn::ide {
 
 namespace {
 
-constexpr float kTabsHeight = 24.0F;  // the tab strip over the panel: where a heading would be
+constexpr float kTabsHeight = 25.0F;  // the tab strip over the panel: the inspector's fields stay where its heading left them
 constexpr float kHeadingWidth = 520.0F;  // a part's name and type in its heading row, at most (px)
 constexpr float kFixedWidth = 740.0F;    // the columns before "used by", with their padding (px)
 constexpr float kUsesWidth = 200.0F;     // "used by" at least (px)
@@ -89,7 +89,8 @@ void forceCell(App& app, const IoListRow& row, const IoLive* live, bool running,
     for (const int bit : {1, 0}) {
       const std::string label = "Force " + std::to_string(bit);
       if (ImGui::SmallButton(label.c_str())) {
-        tell(app, forceIo(app.run(), row.part, row.io.name, bit), key + " forced to " + std::to_string(bit) + " at the next step");
+        const auto why = forceIo(app.run(), row.part, row.io.name, bit);
+        tell(app, why, key + " forced to " + std::to_string(bit) + " at the next step");
       }
       if (ImGui::IsItemVisible()) noteItem("force" + std::to_string(bit), at);
       ImGui::SameLine(0, 4);
@@ -120,7 +121,9 @@ void forceCell(App& app, const IoListRow& row, const IoLive* live, bool running,
   if (ImGui::IsItemVisible()) noteItem("release", at);
   ImGui::EndDisabled();
   ImGui::EndDisabled();
-  if (!running && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("Run or Step first: forces need a run");
+  if (!running && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+    ImGui::SetTooltip("Run or Step first: forces need a run");
+  }
 }
 
 /// A list of texts joined by ", ".
