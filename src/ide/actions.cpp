@@ -47,6 +47,8 @@ constexpr ActionInfo kActions[] = {
      "The net view alone, in the whole window (again: back to the panels)"},
     {A::MiniView, "mini-view", "Mini Net View", M::View, "", false, true, false,
      "The net, fitted, in a small window over the world view"},
+    {A::IoList, "io-list", "I/O List", M::View, "", false, true, false,
+     "Every part's inputs and outputs in the inspector's panel: live values, forces, what uses each, PLC addresses"},
     {A::Sensors, "sensors", "Sensor Volumes", M::View, "", false, true, true, "Draw the sensors' volumes and rays"},
     {A::Joints, "joints", "Joint Axes", M::View, "", false, true, false, "Draw the joints' axes"},
     {A::Contacts, "contacts", "Contact Points", M::View, "", false, true, false,
@@ -87,6 +89,8 @@ constexpr ActionInfo kActions[] = {
     {A::Reset, "reset", "Reset", M::Run, "Shift+F5", false, false, false, "Back to the model as edited"},
     {A::ClearBreakpoints, "clear-breakpoints", "Remove All Breakpoints", M::Run, "", false, false, true,
      "Remove every breakpoint of the run"},
+    {A::ReleaseForces, "release-forces", "Release All Forces", M::Run, "", false, false, false,
+     "Release every forced input and output of the I/O list at the next step"},
 
     {A::Keys, "keys", "Keys", M::Help, "F1", false, false, false, "List every action and its key"},
     {A::Guide, "guide", "IDE Guide", M::Help, "", false, false, false,

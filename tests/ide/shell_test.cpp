@@ -91,6 +91,8 @@ TEST_F(Shell, EveryActionOfTheTableIsDoneByPressInAStateThatAllowsIt) {
 - press: net-full
 - press: net-full
 - press: mini-view
+- press: io-list
+- press: io-list
 - press: sensors
 - press: joints
 - press: contacts
@@ -118,6 +120,7 @@ TEST_F(Shell, EveryActionOfTheTableIsDoneByPressInAStateThatAllowsIt) {
 - press: fastest
 - press: pause
 - press: step
+- press: release-forces
 - press: run-n
 - press: fire
 - press: plant-only

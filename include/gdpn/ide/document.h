@@ -32,6 +32,8 @@ class Document {
   [[nodiscard]] const model::Model& model() const { return model_; }
   /// The net, for the commands that edit it (net_edit.h); everything else reads model().net.
   [[nodiscard]] net::NetSpec& editableNet() { return model_.net; }
+  /// The `io` section, for the command that maps a part's I/O (io_list.h).
+  [[nodiscard]] model::IoSpec& editableIo() { return model_.io; }
   /// Puts `scene` in place of the model's scene (for the commands that edit the tree,
   /// scene_edit.h); returns the one it replaces.
   std::shared_ptr<scene::Scene> swapScene(std::shared_ptr<scene::Scene> scene);
