@@ -33,6 +33,7 @@ void BM_Headless(benchmark::State& state, const char* relative, double until) {
 }
 BENCHMARK_CAPTURE(BM_Headless, Factory120s, "examples/factory", 120.0)->Unit(benchmark::kSecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Headless, Vehicles, "examples/vehicles", 60.0)->Unit(benchmark::kSecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Headless, Station120s, "examples/station", 120.0)->Unit(benchmark::kSecond)->UseRealTime();
 
 }  // namespace
 

@@ -14,6 +14,8 @@
 
 #include "gdpn/core/text.h"
 #include "gdpn/model/analysis.h"
+#include "gdpn/model/part_library.h"
+#include "gdpn/model/part_run.h"
 #include "gdpn/model/report.h"
 #include "gdpn/session/analysis_request.h"
 #include "gdpn/session/breakpoint_syntax.h"
@@ -282,6 +284,53 @@ class Model {
 
   [[nodiscard]] std::optional<int> hit() const { return session_->hit(); }
 
+  /// The run's parts, or KeyError-free nothing: raises when the model has none.
+  model::PartRun& parts() const {
+    model::PartRun* parts = session_->simulation().parts();
+    if (!parts) throw py::value_error("the model has no parts");
+    return *parts;
+  }
+
+  /// Every I/O of every part: [{part, io, direction, signal, unit, value, forced}].
+  py::list io() const {
+    py::list out;
+    const model::PartRun* parts = session_->simulation().parts();
+    if (!parts) return out;
+    for (const auto& row : parts->rows()) {
+      py::dict d;
+      d["part"] = parts->instances()[row.part].placed.name;
+      d["io"] = row.io->name;
+      d["direction"] = model::ioDirectionName(row.io->direction);
+      d["signal"] = model::ioSignalName(row.io->signal);
+      d["unit"] = row.io->unit;
+      d["value"] = row.value;
+      d["forced"] = row.forced;
+      out.append(d);
+    }
+    return out;
+  }
+
+  /// Forces `io` of `part` to `value` from the next step.
+  void force(const std::string& part, const std::string& io, double value) {
+    std::string why;
+    const auto p = parts().find(part, why);
+    if (!p) throw py::key_error(why);
+    if (!parts().force(*p, io, value, why)) throw py::value_error(why);
+  }
+
+  /// Releases `io` of `part` at the next step; every force when neither is given.
+  void release(const std::optional<std::string>& part, const std::optional<std::string>& io) {
+    if (!part && !io) {
+      parts().releaseAll();
+      return;
+    }
+    if (!part || !io) throw py::value_error("release: give both part and io, or neither (release all)");
+    std::string why;
+    const auto p = parts().find(*part, why);
+    if (!p) throw py::key_error(why);
+    if (!parts().release(*p, *io)) throw py::value_error("'" + *io + "' of part '" + *part + "' is not forced");
+  }
+
   py::object marking(const std::string& place) const {
     const model::Simulation* sim_ = &session_->simulation();
     const auto& net = sim_->net();
@@ -507,7 +556,48 @@ class FireError(ValueError):
             return out;
           },
           "the model's parameters as this run has them: {name: number}")
+      .def("io", &Model::io, "Every I/O of every part, with its value now: [{part, io, direction, signal, unit, "
+                             "value, forced}]")
+      .def("force", &Model::force, py::arg("part"), py::arg("io"), py::arg("value"),
+           "Forces a part's I/O to a value from the next step on (an input reads it, an output holds it); traced")
+      .def("release", &Model::release, py::arg("part") = py::none(), py::arg("io") = py::none(),
+           "Releases a force at the next step; every force when no argument is given")
       .def("__repr__", [](const Model& mo) { return "<gdpn.Model " + mo.path() + ">"; });
+
+  m.def(
+      "parts",
+      [](const std::string& model_dir) {
+        core::Diagnostics diags;
+        py::list out;
+        for (const auto& p : model::scanParts(model::partSearchPath(model_dir), diags)) {
+          py::dict d;
+          d["name"] = p.name;
+          d["group"] = p.spec.group;
+          d["version"] = p.spec.version;
+          d["file"] = p.file;
+          d["description"] = p.description;
+          d["pattern"] = p.pattern;
+          py::list io;
+          for (const auto& i : p.spec.io) {
+            py::dict x;
+            x["name"] = i.name;
+            x["direction"] = model::ioDirectionName(i.direction);
+            x["signal"] = model::ioSignalName(i.signal);
+            x["unit"] = i.unit;
+            x["description"] = i.description;
+            io.append(x);
+          }
+          d["io"] = io;
+          py::dict params;
+          for (const auto& q : p.spec.params) params[py::str(q.name)] = q.declared;
+          d["params"] = params;
+          out.append(d);
+        }
+        return out;
+      },
+      py::arg("model_dir") = "",
+      "The parts library (as gdpn parts lists it): [{name, group, version, file, description, pattern, io, params}], "
+      "searched from model_dir when given, then $XDG_DATA_HOME, $XDG_DATA_DIRS, the install and the source tree");
 
   m.def(
       "load",

@@ -29,6 +29,10 @@ struct PartsArgs {
   bool control = false;             ///< --control
   std::string map;                  ///< --map INSTANCE
   bool update = false;              ///< --update
+  std::string make;                 ///< --make NAME
+  std::vector<std::string> from;    ///< --from PATH (repeatable)
+  std::string group;                ///< --group
+  std::string to;                   ///< --to FILE
 };
 
 /// "digital input", "analog output, m/s".
@@ -141,6 +145,38 @@ int parts(const PartsArgs& args) {
     }
     changed = changed || !added.empty();
   }
+  if (!args.make.empty()) {
+    // a new part from nodes of the model's scene, written to the user's library
+    std::vector<const scene::Node*> nodes;
+    for (const auto& p : args.from) {
+      const scene::Node* n = m->scene ? m->scene->find(p) : nullptr;
+      if (!n) {
+        std::cerr << "--from: error: no node '" << p << "' in the scene of " << *path << "\n";
+        return 1;
+      }
+      nodes.push_back(n);
+    }
+    std::string why;
+    auto part = model::partFromNodes(nodes, args.make, args.group, m->params, why);
+    if (!part) {
+      std::cerr << "--make: error: " << why << "\n";
+      return 1;
+    }
+    std::string to = args.to;
+    if (to.empty()) {
+      const auto& home = search.size() > 1 ? search[1] : search.front();
+      std::error_code ec;
+      std::filesystem::create_directories(home, ec);
+      to = home + "/" + args.make + model::kModelSuffix;
+    }
+    Diagnostics saved;
+    if (!model::saveModel(*part, to, saved)) {
+      saved.print(std::cerr);
+      return 1;
+    }
+    std::cout << "wrote part " << args.make << " to " << to << "\n";
+    return 0;
+  }
   const auto updates = model::partUpdates(*m, library);
   if (args.update) {
     for (const auto& u : updates) {
@@ -201,6 +237,10 @@ Subcommand addParts(CLI::App& app) {
   cmd->add_flag("--control", args->control, "with --add: also an instance of its control pattern, bound to it");
   cmd->add_option("--map", args->map, "with --model: map this part instance's I/O into the io section");
   cmd->add_flag("--update", args->update, "with --model: take the library's newer versions of its parts");
+  cmd->add_option("--make", args->make, "with --model and --from: make a new part of this name from scene nodes");
+  cmd->add_option("--from", args->from, "with --make: a node of the model's scene (its subtree goes too); repeatable");
+  cmd->add_option("--group", args->group, "with --make: the palette's group");
+  cmd->add_option("--to", args->to, "with --make: the part file to write (default: $XDG_DATA_HOME/gdpn/parts/NAME.gdpn.yaml)");
   return {cmd, [args] { return parts(*args); }};
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app.h"
+#include "gdpn/ide/io_list.h"
 #include "detail/keys.h"
 
 namespace gdpn::ide {
@@ -73,6 +74,8 @@ bool actionEnabled(const App& app, ActionId id) {
     case ActionId::Fire: return hasRun(app) && !app.toolbar.fire_target.empty();
     case ActionId::Reset: return true;
     case ActionId::ClearBreakpoints: return !app.run().breakpoints().empty();
+    case ActionId::IoList: return true;
+    case ActionId::ReleaseForces: return app.run().mode() != RunMode::Edit && hasRun(app);
     case ActionId::Keys:
     case ActionId::Guide: return true;
   }
@@ -100,6 +103,8 @@ bool actionChecked(const App& app, ActionId id) {
     case ActionId::LocalAxes: return app.world.local_axes;
     case ActionId::Movie: return app.movie != nullptr;
     case ActionId::PlantOnly: return app.run().plantOnly();
+    case ActionId::IoList: return app.io_list.shown;
+    case ActionId::ReleaseForces:
     case ActionId::New:
     case ActionId::Open:
     case ActionId::Save:
@@ -189,6 +194,11 @@ std::string performAction(App& app, ActionId id) {
     case ActionId::ClearBreakpoints:
       for (const auto& b : run.breakpoints()) (void)run.removeBreakpoint(b);
       app.message = "removed every breakpoint";
+      break;
+    case ActionId::IoList: app.io_list.shown = !app.io_list.shown; break;
+    case ActionId::ReleaseForces:
+      app.message = releaseAllIo(run);
+      if (app.message.empty()) app.message = "every force is released at the next step";
       break;
     case ActionId::Keys: app.keys_open = true; break;
     case ActionId::Guide: app.openGuide(); break;

@@ -49,6 +49,8 @@ constexpr ActionInfo kActions[] = {
      "The net, fitted, in a small window over the world view"},
     {A::Palette, "palette", "Parts Palette", M::View, "", false, true, false,
      "The library's parts under the tree view: drag one into the world view to place it"},
+    {A::IoList, "io-list", "I/O List", M::View, "", false, true, false,
+     "Every part's inputs and outputs in the inspector's panel: live values, forces, what uses each, PLC addresses"},
     {A::Sensors, "sensors", "Sensor Volumes", M::View, "", false, true, true, "Draw the sensors' volumes and rays"},
     {A::Joints, "joints", "Joint Axes", M::View, "", false, true, false, "Draw the joints' axes"},
     {A::Contacts, "contacts", "Contact Points", M::View, "", false, true, false,
@@ -89,6 +91,8 @@ constexpr ActionInfo kActions[] = {
     {A::Reset, "reset", "Reset", M::Run, "Shift+F5", false, false, false, "Back to the model as edited"},
     {A::ClearBreakpoints, "clear-breakpoints", "Remove All Breakpoints", M::Run, "", false, false, true,
      "Remove every breakpoint of the run"},
+    {A::ReleaseForces, "release-forces", "Release All Forces", M::Run, "", false, false, false,
+     "Release every forced input and output of the I/O list at the next step"},
 
     {A::Keys, "keys", "Keys", M::Help, "F1", false, false, false, "List every action and its key"},
     {A::Guide, "guide", "IDE Guide", M::Help, "", false, false, false,

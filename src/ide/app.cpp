@@ -47,9 +47,12 @@ nlohmann::json rectJson(const Rect& r) { return {r.x, r.y, r.w, r.h}; }
 Fonts loadFonts() {
   auto& io = ImGui::GetIO();
   Fonts f;
-  if (std::filesystem::exists(kRegularFont)) f.regular = io.Fonts->AddFontFromFileTTF(kRegularFont, kFontSize);
+  // Latin-1, and the dashes and arrows the views write (an em dash for no value, an arrow for
+  // a force waiting for the next step)
+  static const ImWchar kRanges[] = {0x0020, 0x00FF, 0x2010, 0x2027, 0x2190, 0x2193, 0};
+  if (std::filesystem::exists(kRegularFont)) f.regular = io.Fonts->AddFontFromFileTTF(kRegularFont, kFontSize, nullptr, kRanges);
   if (f.regular == nullptr) f.regular = io.Fonts->AddFontDefault();
-  if (std::filesystem::exists(kBoldFont)) f.bold = io.Fonts->AddFontFromFileTTF(kBoldFont, kFontSize);
+  if (std::filesystem::exists(kBoldFont)) f.bold = io.Fonts->AddFontFromFileTTF(kBoldFont, kFontSize, nullptr, kRanges);
   if (f.bold == nullptr) f.bold = f.regular;
   return f;
 }
@@ -461,6 +464,9 @@ void App::replaceDocument(std::unique_ptr<Document> doc, bool untitled) {
   net_view_ = std::make_unique<NetViewState>();
   palette_ = std::make_unique<PaletteState>();  // the new model's parts are scanned for at the next frame
   token_types_revision_ = ~std::uint64_t{0};
+  io_list.rows.clear();  // the list is found again for the new model (its tab stays chosen)
+  io_list.revision = ~std::uint64_t{0};
+  io_list.typed.clear();
   inspector.scripts = {};
   world.manipulating = {};
   world.camera_node.clear();
@@ -796,7 +802,12 @@ void App::frame(float width, float height, double wall_seconds) {
   else report["palette"] = {{"shown", false}};
   if (layout.world.w > 0) drawWorldView(*this, layout.world, report["world"]);
   if (layout.net.w > 0) drawNetView(*this, layout.net, report["net_view"]);
-  if (layout.inspector.w > 0) drawInspector(*this, layout.inspector, report["inspector"]);
+  if (layout.inspector.w > 0) {
+    // the inspector shares its panel with the I/O list, a tab each
+    const Rect below = drawInspectorTabs(*this, layout.inspector, report["inspector_tabs"]);
+    if (io_list.shown) drawIoList(*this, below, report["io_list"]);
+    else drawInspector(*this, below, report["inspector"]);
+  }
   if (layout.diagnostics.w > 0) drawDiagnostics(*this, layout.diagnostics, report["diagnostics"], report["breakpoints"]);
   drawStatusBar(*this, layout.status, report["status"]);
 

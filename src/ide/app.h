@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gdpn/ide/document.h"
+#include "gdpn/ide/io_list.h"
 #include "gdpn/ide/layout.h"
 #include "gdpn/ide/manipulator.h"
 #include "gdpn/ide/token_types.h"
@@ -182,6 +183,14 @@ struct SaveQuestion {
   std::string path;                          ///< the file to open, for Open
 };
 
+/// The I/O list's own state (views/io_list.cpp).
+struct IoListState {
+  bool shown = false;                          ///< the I/O list has the inspector's panel (its tab, View > I/O List)
+  std::uint64_t revision = ~std::uint64_t{0};  ///< the document's revision `rows` were found at
+  std::vector<IoListRow> rows;                 ///< every part's I/O and what uses it
+  std::map<std::string, std::string> typed;    ///< an analogue value being typed, by IoListRow::key
+};
+
 /// Fonts the views use (null: ImGui's default).
 struct Fonts {
   ImFont* regular = nullptr;  ///< DejaVu Sans
@@ -302,6 +311,7 @@ class App {
   InspectorState inspector;         ///< the inspector's and the contents view's own state
   ToolbarState toolbar;             ///< the toolbar's own state
   TreeViewState tree;               ///< the tree view's own state
+  IoListState io_list;              ///< the I/O list's own state
   double edit_quiet = 0;            ///< seconds since the document last changed (edit mode)
   std::uint64_t quiet_revision = 0; ///< the revision edit_quiet counts from
   std::uint64_t followed_revision = 0;  ///< the revision the run last tried to follow

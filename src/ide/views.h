@@ -56,6 +56,12 @@ bool drawManipulators(App& app, scene::Scene& scene, const OrbitCamera& view, Im
 void drawMiniView(App& app, const Rect& world, nlohmann::json& report);
 /// The selected node's fields, edited through commands; a place's or transition's state.
 void drawInspector(App& app, const Rect& at, nlohmann::json& report);
+/// The tabs over the inspector's panel, Inspector and I/O (App::io_list.shown), where its
+/// heading would be; returns the rectangle below them, for the chosen view.
+Rect drawInspectorTabs(App& app, const Rect& at, nlohmann::json& report);
+/// Every part's inputs and outputs: direction, signal, unit, the value in the run (a lamp for
+/// a bit), forces and releases, the `io` section's addresses, what uses each; Map for PLC.
+void drawIoList(App& app, const Rect& at, nlohmann::json& report);
 /// Every error and warning at file:line:col; a click selects the construct.
 void drawDiagnostics(App& app, const Rect& at, nlohmann::json& report, nlohmann::json& breakpoints);
 /// The run's breakpoints (each with a button that removes it) and a field that adds one on a

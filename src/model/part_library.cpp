@@ -6,9 +6,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <set>
 
 #include "gdpn/core/text.h"
+#include "gdpn/scene/fields.h"
 
 namespace gdpn::model {
 namespace fs = std::filesystem;
@@ -102,6 +104,20 @@ std::optional<Model> loadPartFile(const std::string& file, std::string& why) {
   return m;
 }
 
+/// Part file `file` and, in `types`, the page types its part `name` brings (typesOf);
+/// nullopt and `why` when it does not load or has no such part.
+std::optional<Model> loadPartTypes(const std::string& file, const std::string& name, std::vector<std::string>& types,
+                                   std::string& why) {
+  auto m = loadPartFile(file, why);
+  if (!m) return std::nullopt;
+  types = typesOf(*m, name);
+  if (types.empty()) {
+    why = file + " holds no page type '" + name + "'";
+    return std::nullopt;
+  }
+  return m;
+}
+
 }  // namespace
 
 std::vector<std::string> partSearchPath(const std::string& model_dir) {
@@ -136,7 +152,7 @@ std::vector<std::string> partSearchPath(const std::string& model_dir) {
 std::vector<LibraryPart> scanParts(const std::vector<std::string>& path, core::Diagnostics& diags,
                                    const std::string& skip) {
   std::vector<LibraryPart> out;
-  std::set<std::string> seen;
+  std::map<std::string, std::size_t> seen;  // a part's name -> its index in out
   std::error_code ec;
   const fs::path skipped = skip.empty() ? fs::path() : fs::weakly_canonical(skip, ec);
   for (std::size_t k = 0; k < path.size(); ++k) {
@@ -153,7 +169,11 @@ std::vector<LibraryPart> scanParts(const std::vector<std::string>& path, core::D
         continue;
       }
       for (const auto& [name, spec] : m->parts) {
-        if (!spec.listed || !seen.insert(name).second) continue;
+        if (!spec.listed) continue;
+        // a name met before keeps its first file, unless this one is newer (a model's stale
+        // copy beside the model never hides the library's newer version)
+        const auto before = seen.find(name);
+        if (before != seen.end() && out[before->second].spec.version >= spec.version) continue;
         LibraryPart p;
         p.name = name;
         p.file = file.string();
@@ -164,7 +184,12 @@ std::vector<LibraryPart> scanParts(const std::vector<std::string>& path, core::D
           const fs::path pic = file.parent_path() / spec.picture;
           if (fs::is_regular_file(pic, ec)) p.picture = pic.string();
         }
-        out.push_back(std::move(p));
+        if (before != seen.end()) {
+          out[before->second] = std::move(p);
+        } else {
+          seen.emplace(name, out.size());
+          out.push_back(std::move(p));
+        }
       }
     }
   }
@@ -182,13 +207,9 @@ const LibraryPart* findLibraryPart(const std::vector<LibraryPart>& parts, const 
 }
 
 bool copyPartType(Model& model, const LibraryPart& part, std::string& why) {
-  const auto file = loadPartFile(part.file, why);
+  std::vector<std::string> types;
+  const auto file = loadPartTypes(part.file, part.name, types, why);
   if (!file) return false;
-  const auto types = typesOf(*file, part.name);
-  if (types.empty()) {
-    why = part.file + " holds no page type '" + part.name + "'";
-    return false;
-  }
   std::vector<std::string> missing;
   for (const auto& t : types) {
     const net::PageSpec* mine = pageType(model, t);
@@ -428,13 +449,9 @@ std::vector<PartUpdate> partUpdates(const Model& model, const std::vector<Librar
 }
 
 bool applyPartUpdate(Model& model, const PartUpdate& update, std::vector<std::string>& uses, std::string& why) {
-  const auto file = loadPartFile(update.file, why);
+  std::vector<std::string> types;
+  const auto file = loadPartTypes(update.file, update.name, types, why);
   if (!file) return false;
-  const auto types = typesOf(*file, update.name);
-  if (types.empty()) {
-    why = update.file + " holds no page type '" + update.name + "'";
-    return false;
-  }
   for (const auto& t : types) copyType(model, *file, t);
   const PartSpec& now = model.parts.at(update.name);
   // instances keep the parameters the new version still has
@@ -460,6 +477,115 @@ bool applyPartUpdate(Model& model, const PartUpdate& update, std::vector<std::st
     }
   }
   return true;
+}
+
+std::optional<Model> partFromNodes(const std::vector<const scene::Node*>& nodes, const std::string& name,
+                                   const std::string& group, const std::vector<Param>& params, std::string& why) {
+  if (!core::isIdentifier(name)) {
+    why = "a part's name is a word of letters, digits and _ (not starting with a digit), got '" + name + "'";
+    return std::nullopt;
+  }
+  if (nodes.empty()) {
+    why = "nothing is selected to make a part of";
+    return std::nullopt;
+  }
+  Model m;
+  m.description = "the part " + name;
+  auto scene = std::make_shared<scene::Scene>();
+  for (const scene::Node* n : nodes) {
+    if (!scene->copy(*n, scene->root())) {
+      why = "two selected nodes are named '" + n->name() + "': rename one";
+      return std::nullopt;
+    }
+  }
+  // the first node's place is the part's origin: its Transforms are moved by as much
+  if (nodes.front()->kind() == scene::NodeKind::Transform) {
+    const auto origin = nodes.front()->vec3(scene::field::Transform::Translation);
+    for (const auto& c : scene->root().children()) {
+      if (c->kind() != scene::NodeKind::Transform) continue;
+      const auto t = c->vec3(scene::field::Transform::Translation);
+      c->setValue(scene::field::Transform::Translation, std::array<double, 3>{t.x - origin.x, t.y - origin.y, t.z - origin.z});
+      std::erase_if(c->params, [](const scene::Node::Binding& b) { return b.field == static_cast<std::uint32_t>(scene::field::Transform::Translation); });
+    }
+  }
+  // references the part does not declare keep their values alone
+  Model fragment;
+  fragment.scene = scene;
+  keepParamsOf(fragment, params);
+  net::PageSpec type;
+  type.name = name;
+  type.description = "made from " + std::to_string(nodes.size()) + " node" + (nodes.size() == 1 ? "" : "s") +
+                     " of a scene";
+  m.net.page_types.push_back(type);
+  m.type_scenes[name] = fragment.scene;
+  PartSpec part;
+  part.listed = true;
+  part.group = group;
+  part.params = params;
+  m.parts[name] = part;
+  net::PageSpec demo;
+  demo.name = "main";
+  net::InstanceSpec inst;
+  inst.name = name + "1";
+  inst.type = name;
+  demo.instances.push_back(inst);
+  m.net.pages.push_back(demo);
+  return m;
+}
+
+namespace {
+
+/// `|` in a table cell would end it.
+std::string cell(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '|') out += '\\';
+    out += c == '\n' ? ' ' : c;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string partsMarkdown(const std::vector<LibraryPart>& parts, const std::string& docs_dir) {
+  std::string out = "<!-- parts: from gdpn::model::partsMarkdown() -->\n";
+  std::string group = "\x01";
+  for (const auto& p : parts) {
+    if (p.pattern) continue;
+    if (p.spec.group != group) {
+      group = p.spec.group;
+      out += "\n### " + (group.empty() ? std::string("Other") : group) + "\n";
+    }
+    out += "\n#### `" + p.name + "` (version " + std::to_string(p.spec.version) + ")\n\n";
+    if (!p.picture.empty()) {
+      std::error_code ec;
+      const auto rel = fs::relative(p.picture, docs_dir, ec);
+      out += "![" + p.name + "](" + (ec ? p.picture : rel.generic_string()) + ")\n\n";
+    }
+    if (!p.description.empty()) out += p.description + "\n\n";
+    if (!p.spec.params.empty()) {
+      out += "| parameter | default | unit | meaning |\n| --- | --- | --- | --- |\n";
+      for (const auto& q : p.spec.params) {
+        out += "| `" + q.name + "` | " + core::formatDouble(q.declared) + " | " + cell(q.unit) + " | " +
+               cell(q.description) + " |\n";
+      }
+      out += "\n";
+    }
+    if (!p.spec.io.empty()) {
+      out += "| I/O | kind | unit | meaning |\n| --- | --- | --- | --- |\n";
+      for (const auto& io : p.spec.io) {
+        out += "| `" + io.name + "` | " + ioSignalName(io.signal) + " " + ioDirectionName(io.direction) + " | " +
+               cell(io.unit) + " | " + cell(io.description) + " |\n";
+      }
+      out += "\n";
+    }
+    for (const auto& c : parts) {
+      if (c.pattern && c.spec.controls == p.name) {
+        out += "Control pattern `" + c.name + "`" + (c.description.empty() ? "" : ": " + c.description) + "\n\n";
+      }
+    }
+  }
+  return out + "<!-- end of parts -->\n";
 }
 
 }  // namespace gdpn::model

@@ -342,8 +342,11 @@ void PartRun::atStepBoundary() {
 std::vector<PartRun::Row> PartRun::rows() const {
   std::vector<Row> out;
   out.reserve(bound_.size());
-  for (const auto& b : bound_) {
-    out.push_back({b.part, b.spec, b.forced ? *b.forced : plantValue(b), b.forced.has_value()});
+  for (std::size_t i = 0; i < bound_.size(); ++i) {
+    const Bound& b = bound_[i];
+    const auto asked = asked_.find(i);
+    out.push_back({b.part, b.spec, b.forced ? *b.forced : plantValue(b), b.forced.has_value(), asked != asked_.end(),
+                   asked != asked_.end() ? asked->second : std::nullopt});
   }
   return out;
 }

@@ -404,10 +404,10 @@ bool Simulation::makeEngine(core::Diagnostics& diags) {
     access.params = [parts](std::size_t i) {
       std::vector<script::ScriptParam> out;
       const auto& inst = parts->instances()[i];
-      for (const auto& [name, value] : inst.placed.params) {
+      for (const auto& param : inst.placed.params) {
         const auto declared = std::find_if(inst.spec->params.begin(), inst.spec->params.end(),
-                                           [&](const Param& p) { return p.name == name; });
-        out.push_back({name, value, declared != inst.spec->params.end() && declared->integer});
+                                           [&](const Param& p) { return p.name == param.first; });
+        out.push_back({param.first, param.second, declared != inst.spec->params.end() && declared->integer});
       }
       return out;
     };

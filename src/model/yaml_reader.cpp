@@ -201,9 +201,10 @@ std::vector<Entry> YamlReader::entries(const YAML::Node& map, const std::string&
 
 std::optional<ParamValue> YamlReader::param(const YAML::Node& node, const std::string& field, std::string* name,
                                             bool& ref) {
-  // `$name` or `=expression` written plain: a quoted "$name" is text
-  ref = node.IsScalar() && node.Tag() != "!" && node.Scalar().size() > 1 &&
-        (node.Scalar()[0] == '$' || node.Scalar()[0] == '=');
+  // `$name` written plain (a quoted "$name" is text), or an `=expression`, quoted or not (one
+  // with a comma, `"=min(a, b)"`, is quoted inside a flow list, and savers write it so)
+  ref = node.IsScalar() && node.Scalar().size() > 1 &&
+        ((node.Scalar()[0] == '$' && node.Tag() != "!") || node.Scalar()[0] == '=');
   if (name) name->clear();
   if (!ref) return std::nullopt;
   if (node.Scalar()[0] == '=') {

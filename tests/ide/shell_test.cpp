@@ -93,6 +93,8 @@ TEST_F(Shell, EveryActionOfTheTableIsDoneByPressInAStateThatAllowsIt) {
 - press: mini-view
 - press: palette
 - press: palette
+- press: io-list
+- press: io-list
 - press: sensors
 - press: joints
 - press: contacts
@@ -120,6 +122,7 @@ TEST_F(Shell, EveryActionOfTheTableIsDoneByPressInAStateThatAllowsIt) {
 - press: fastest
 - press: pause
 - press: step
+- press: release-forces
 - press: run-n
 - press: fire
 - press: plant-only

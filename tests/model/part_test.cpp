@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "gdpn/core/file.h"
@@ -251,6 +252,60 @@ TEST(PartLibrary, AModelKeepsItsCopyAndRunsWithoutTheLibrary) {
   EXPECT_TRUE(IoMap::create(*sim, back->io, diags)) << diags.str();
 }
 
+TEST(PartLibrary, TheHigherVersionWinsAndOfEqualOnesTheFirstFolder) {
+  const fs::path near = scratch("near"), far = scratch("far");
+  core::Diagnostics read;
+  std::string text = core::readFile(kLampFile, read).value();
+  std::ofstream(near / "lamp.gdpn.yaml") << text;
+  const std::string v2 = "version: 2, group: Test, control";
+  text.replace(text.find("version: 1, group: Test, control"), v2.size(), v2);
+  std::ofstream(far / "lamp.gdpn.yaml") << text;
+  core::Diagnostics diags;
+  auto parts = scanParts({near.string(), far.string()}, diags);
+  ASSERT_TRUE(findLibraryPart(parts, "lamp")) << diags.str();
+  EXPECT_EQ(findLibraryPart(parts, "lamp")->spec.version, 2);
+  EXPECT_EQ(findLibraryPart(parts, "lamp")->file, (far / "lamp.gdpn.yaml").string());
+  // of one version, the first folder's
+  const fs::path same = scratch("same");
+  fs::copy_file(near / "lamp.gdpn.yaml", same / "lamp.gdpn.yaml");
+  EXPECT_EQ(findLibraryPart(scanParts({same.string(), near.string()}, diags), "lamp")->file,
+            (same / "lamp.gdpn.yaml").string());
+  EXPECT_EQ(std::count_if(parts.begin(), parts.end(), [](const LibraryPart& p) { return p.name == "lamp"; }), 1);
+}
+
+TEST(PartLibrary, NodesOfAScenePlacedAsANewPart) {
+  core::Diagnostics diags;
+  auto m = parseModel("gdpn: 1\nparams: {w: 0.5, h: 2}\nscene:\n"
+                      "  - Transform: {name: table, translation: [3, 1, 0], children: [{Cube: {name: top, size: [1, $w, 0.05]}}]}\n"
+                      "  - Transform: {name: lamp, translation: [3, 2, 1], children: [{Sphere: {radius: 0.1}}]}\n",
+                      "m.gdpn.yaml", diags);
+  ASSERT_TRUE(m) << diags.str();
+  std::string why;
+  const std::vector<const scene::Node*> nodes = {m->scene->find("table"), m->scene->find("lamp")};
+  auto part = partFromNodes(nodes, "desk", "Furniture", {m->params[0]}, why);
+  ASSERT_TRUE(part) << why;
+  // the first node's place is the origin; the width stays a parameter of the part
+  const scene::Scene& s = *part->type_scenes.at("desk");
+  EXPECT_EQ(s.find("table")->vec3(scene::field::Transform::Translation), (core::Vec3{0, 0, 0}));
+  EXPECT_EQ(s.find("lamp")->vec3(scene::field::Transform::Translation), (core::Vec3{0, 1, 1}));
+  EXPECT_EQ(part->parts.at("desk").params.size(), 1U);
+  const fs::path lib = scratch("made");
+  ASSERT_TRUE(saveModel(*part, (lib / "desk.gdpn.yaml").string(), diags)) << diags.str();
+  auto parts = scanParts({lib.string()}, diags);
+  const LibraryPart* desk = findLibraryPart(parts, "desk");
+  ASSERT_TRUE(desk) << diags.str();
+  EXPECT_EQ(desk->spec.group, "Furniture");
+  Model use;
+  ASSERT_FALSE(placePart(use, "main", *desk, {5, 0, 0}, 0, false, why).empty()) << why;
+  use.net.pages[0].instances[0].params.push_back({"w", 0.8, {}});
+  auto sim = Simulation::create(use, diags);
+  ASSERT_TRUE(sim) << diags.str();
+  EXPECT_EQ(sim->plant()->find("desk1/table/top")->vec3(scene::field::Cube::Size), (core::Vec3{1, 0.8, 0.05}));
+  EXPECT_FALSE(partFromNodes({}, "x", "", {}, why));
+  EXPECT_EQ(why, "nothing is selected to make a part of");
+  EXPECT_FALSE(partFromNodes(nodes, "2desk", "", {}, why));
+}
+
 TEST(PartLibrary, ANewerVersionIsOfferedAndAppliedAndRemovedIoIsLocated) {
   const fs::path lib = scratch("newer");
   core::Diagnostics read;
@@ -306,6 +361,76 @@ TEST(PartLibrary, ANewerVersionIsOfferedAndAppliedAndRemovedIoIsLocated) {
   EXPECT_NE(check.str().find("m.gdpn.yaml:4:5: error: discrete input 0: part 'main/lamp1' has no I/O 'seen'"),
             std::string::npos)
       << check.str();
+}
+
+}  // namespace
+}  // namespace gdpn::model
+
+namespace gdpn::model {
+namespace {
+
+// examples/station: issue 54's station, made of parts, sorts red boxes into the bin and lets
+// blue ones ride to the remover; its summary counts both.
+TEST(StationExample, RedBoxesEndInTheBinBlueInTheRemover) {
+  auto sim = testing::openModelFile("examples/station/sorting_station.gdpn.yaml");
+  ASSERT_TRUE(sim);
+  const auto outcome = sim->run({120.0, std::nullopt});
+  EXPECT_EQ(outcome.reason, StopReason::Until) << outcome.message;
+  std::string error;
+  const auto figures = sim->modelFigures(error);
+  ASSERT_TRUE(error.empty()) << error;
+  std::map<std::string, double> f;
+  for (const auto& x : figures) f[x.label] = x.value.value_or(-1);
+  // a box every 4 s from 0 to 116 s; the last, blue, is still on the belt at 120 s
+  EXPECT_EQ(f["boxes made"], 30);
+  EXPECT_EQ(f["red boxes in the bin"], 15);
+  EXPECT_EQ(f["blue boxes removed"], 14);
+  EXPECT_EQ(f["strokes"], 15);
+  // and each is where its colour says
+  for (const auto& holder : sim->plant()->find("emitter1/items")->children()) {
+    const scene::Node* box = holder->find("box");
+    ASSERT_NE(box, nullptr);
+    const bool red = std::get<std::string>(*box->datum("colour")) == "red";
+    EXPECT_EQ(box->framePose().position.y > 0.45, red) << box->path();
+  }
+}
+
+}  // namespace
+}  // namespace gdpn::model
+
+namespace gdpn::model {
+namespace {
+
+// docs/parts.md's catalogue is made from the part files of parts/ (GDPN_UPDATE_GOLDEN=1
+// rewrites it); every part gdpn ships is in it, with its picture.
+TEST(PartDocs, TheCatalogueIsThePartFiles) {
+  core::Diagnostics diags;
+  const std::string src = GDPN_SOURCE_DIR;
+  const auto parts = scanParts({src + "/parts"}, diags);
+  EXPECT_TRUE(diags.all().empty()) << diags.str();
+  for (const char* name : {"small_box", "medium_box", "large_box", "emitter", "remover", "belt_conveyor",
+                           "diffuse_sensor", "through_beam", "pusher", "bin", "stack_light", "push_button"}) {
+    const LibraryPart* p = findLibraryPart(parts, name);
+    ASSERT_TRUE(p) << name;
+    EXPECT_FALSE(p->picture.empty()) << name << " has no picture";
+    EXPECT_FALSE(p->description.empty()) << name;
+  }
+  const std::string want = partsMarkdown(parts, src + "/docs");
+  const std::string path = src + "/docs/parts.md";
+  core::Diagnostics read;
+  std::string text = core::readFile(path, read).value_or("");
+  const auto begin = text.find("<!-- parts: from gdpn::model::partsMarkdown() -->");
+  const std::string end_marker = "<!-- end of parts -->\n";
+  const auto end = text.find(end_marker);
+  ASSERT_NE(begin, std::string::npos);
+  ASSERT_NE(end, std::string::npos);
+  const std::string have = text.substr(begin, end + end_marker.size() - begin);
+  if (std::getenv("GDPN_UPDATE_GOLDEN") != nullptr && have != want) {
+    text.replace(begin, have.size(), want);
+    std::ofstream(path) << text;
+    return;
+  }
+  EXPECT_EQ(have, want) << "docs/parts.md lags the part files; GDPN_UPDATE_GOLDEN=1 rewrites it";
 }
 
 }  // namespace

@@ -23,8 +23,10 @@ enum class ActionId : std::uint8_t {
   // View
   SwapViews, WorldFull, NetFull, MiniView, Palette, Sensors, Joints, Contacts, Shadows, Grid,
   SelectTool, MoveTool, TurnTool, ScaleTool, AimTool, Snap, LocalAxes, FrameSelection, Screenshot, Movie,
+  IoList,
   // Run
   Run, Faster, Fastest, Pause, Step, RunN, Fire, PlantOnly, Reset, ClearBreakpoints,
+  ReleaseForces,
   // Help
   Keys, Guide,
 };

@@ -35,6 +35,8 @@ class Document {
   /// The whole model, for the commands that edit more than the net and the scene (a part
   /// placed from the palette brings page types, their scenes and part sections: part_edit.h).
   [[nodiscard]] model::Model& editableModel() { return model_; }
+  /// The `io` section, for the command that maps a part's I/O (io_list.h).
+  [[nodiscard]] model::IoSpec& editableIo() { return model_.io; }
   /// Puts `scene` in place of the model's scene (for the commands that edit the tree,
   /// scene_edit.h); returns the one it replaces.
   std::shared_ptr<scene::Scene> swapScene(std::shared_ptr<scene::Scene> scene);

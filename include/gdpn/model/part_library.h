@@ -36,7 +36,9 @@ std::vector<std::string> partSearchPath(const std::string& model_dir);
 
 /// Every part in the part files of `path` (each folder searched with its subfolders, except
 /// `model_dir`'s own files, read without descending), sorted by group then name; where two
-/// folders hold a part of one name, the earlier folder's wins. A file that does not load is a
+/// files hold a part of one name, the higher version wins, and of one version the earlier
+/// folder's (a model beside the model holds copies of the parts it uses: an older copy never
+/// hides the library's newer version). A file that does not load is a
 /// warning in `diags` and skipped. `skip` is a file not to read (the model itself).
 std::vector<LibraryPart> scanParts(const std::vector<std::string>& path, core::Diagnostics& diags,
                                    const std::string& skip = {});
@@ -100,5 +102,20 @@ std::vector<PartUpdate> partUpdates(const Model& model, const std::vector<Librar
 /// their list is returned in `uses` ("io.coils.3: pusher1.extend"). False with `why` when the
 /// library's file does not load.
 bool applyPartUpdate(Model& model, const PartUpdate& update, std::vector<std::string>& uses, std::string& why);
+
+/// A part file holding page type `name` (a part of `group`, version 1) whose machine is a copy
+/// of `nodes` (scene nodes, each with its subtree; where the first is a Transform, its place is
+/// the part's origin and the Transforms among them move by as much), with a demo page placing
+/// one instance: what the IDE's "Save as Part" writes. The
+/// nodes keep their fields' parameter references only where `params` declares them. Nullopt
+/// with `why` when `name` is no identifier or `nodes` is empty.
+std::optional<Model> partFromNodes(const std::vector<const scene::Node*>& nodes, const std::string& name,
+                                   const std::string& group, const std::vector<Param>& params, std::string& why);
+
+/// docs/parts.md's catalogue of `parts` (patterns under the part they control): per part its
+/// picture (linked relative to `docs_dir`), description, parameters and I/O, as Markdown
+/// between the markers `<!-- parts: from gdpn::model::partsMarkdown() -->` and
+/// `<!-- end of parts -->` (a test fails when the docs lag).
+std::string partsMarkdown(const std::vector<LibraryPart>& parts, const std::string& docs_dir);
 
 }  // namespace gdpn::model

@@ -46,6 +46,8 @@ class PartRun {
     const PartIoSpec* io;     ///< its declaration
     double value = 0;         ///< now (a digital one's: 1 or 0); forced: the forced value
     bool forced = false;      ///< held by a force
+    bool pending = false;     ///< a force or release is asked for the next step boundary
+    std::optional<double> asked;  ///< pending: the value asked for (none: a release)
   };
 
   /// Binds every part's I/O to the plant of `sim`; problems (a node or quantity the scene
@@ -82,7 +84,8 @@ class PartRun {
   /// outputs; each change goes to the trace (`"ev":"force"`, `"ev":"release"`). Called by the
   /// simulation at the start of each step.
   void atStepBoundary();
-  /// Every I/O of every part with its value now.
+  /// Every I/O of every part with its value now, and the force or release that waits for the
+  /// next step boundary (the IDE's I/O list shows both).
   [[nodiscard]] std::vector<Row> rows() const;
 
  private:

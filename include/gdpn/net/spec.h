@@ -252,9 +252,9 @@ struct InstanceSpec {
     SourceLoc loc;      ///< where it is set
     friend bool operator==(const Param& a, const Param& b) { return a.name == b.name && a.value == b.value; }
   };
-  std::vector<Param> params;  ///< the parameters set here, in file order (the others keep the type's)
-  std::string part;           ///< a control pattern's: the part instance on its page it controls
-  SourceLoc part_loc;         ///< where `part` is written
+  std::vector<Param> params{};  ///< the parameters set here, in file order (the others keep the type's)
+  std::string part{};         ///< a control pattern's: the part instance on its page it controls
+  SourceLoc part_loc{};       ///< where `part` is written
   friend bool operator==(const InstanceSpec& x, const InstanceSpec& y) {
     return x.name == y.name && x.type == y.type && x.position == y.position && x.translation == y.translation &&
            x.rotation == y.rotation && x.params == y.params && x.part == y.part;

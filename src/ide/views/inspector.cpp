@@ -432,7 +432,7 @@ void runState(App& app, const session::Session& session, const Selection& sel, n
 }  // namespace
 
 void drawInspector(App& app, const Rect& at, nlohmann::json& report) {
-  beginPanel("##inspector", at, "Inspector");
+  beginPanel("##inspector", at, nullptr);  // its tab names it
   const auto sel = app.document().selection();
   report = {{"kind", selectionKindName(sel.kind)}, {"error", app.inspector.error}};
   switch (sel.kind) {

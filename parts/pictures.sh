@@ -1,0 +1,22 @@
+#!/bin/sh
+# Makes each part's picture for the palette (160x160 PNG beside its file) from its demo's
+# Camera, at a moment of the demo that shows the part at work. Run from the repository root
+# after building: parts/pictures.sh [path to gdpn]
+set -e
+G=${1:-build/ci/apps/gdpn/gdpn}
+shot() {  # FILE TIME [more options]
+  f=$1; t=$2; shift 2
+  "$G" render "parts/$f.gdpn.yaml" --size 160x160 --at "$t" -q -o "parts/$f.png" "$@"
+}
+shot items/small_box 1
+shot items/medium_box 1
+shot items/large_box 1
+shot conveyors/belt_conveyor 1
+shot sources_and_sinks/emitter 0.6
+shot sources_and_sinks/remover 0.3
+shot sensors/diffuse_sensor 2.6 --sensors
+shot sensors/through_beam 2.6 --sensors
+shot actuators/pusher 1.2
+shot storage/bin 2
+shot operator/stack_light 3.5
+shot operator/push_button 0.2

@@ -1,0 +1,932 @@
+// The parts library (parts/): every part loads and declares its palette entry and its I/O as
+// documented in parts/README.md, its demo runs, and it behaves physically against a known
+// answer (the belt carries at its speed, the pusher's stroke takes stroke/speed, the beam
+// sees only what crosses it, the remover and the bin count, the emitter keeps its period and
+// colours, the lamps light, the button counts clicks). Nothing here measures wall time.
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <initializer_list>
+#include <limits>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gdpn/model/part_run.h"
+#include "gdpn/model/simulation.h"
+
+namespace gdpn::model {
+namespace {
+
+/// A part file of the source tree: `group/name` -> parts/group/name.gdpn.yaml.
+std::string partPath(const std::string& rel) { return std::string(GDPN_SOURCE_DIR) + "/parts/" + rel + kModelSuffix; }
+
+/// The model of part file `rel`; nullopt after a failed expectation showing the diagnostics.
+std::optional<Model> loadPart(const std::string& rel) {
+  core::Diagnostics diags;
+  auto m = loadModel(partPath(rel), diags);
+  EXPECT_TRUE(m) << diags.str();
+  return m;
+}
+
+/// A model of `body` (pages and scene: a test's station) with the page types of the part
+/// files `parts`, made ready to run; null after a failed expectation.
+std::unique_ptr<Simulation> compose(const std::string& body, std::initializer_list<const char*> parts,
+                                    std::optional<std::uint64_t> seed = {}) {
+  core::Diagnostics diags;
+  auto m = parseModel("gdpn: 1\nsettings: {dt: 0.01}\n" + body, "station.gdpn.yaml", diags);
+  EXPECT_TRUE(m) << diags.str();
+  if (!m) return nullptr;
+  for (const char* rel : parts) {
+    auto p = loadPart(rel);
+    if (!p) return nullptr;
+    for (auto& type : p->net.page_types) m->net.page_types.push_back(std::move(type));
+    for (auto& [name, part] : p->parts) m->parts[name] = std::move(part);
+    for (auto& [name, scene] : p->type_scenes) m->type_scenes[name] = std::move(scene);
+  }
+  auto sim = Simulation::create(*m, diags, seed);
+  EXPECT_TRUE(sim) << diags.str();
+  return sim;
+}
+
+constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+
+/// A floor, and the scene of a test's station after it.
+const char* const kFloor = "scene:\n  - World: {}\n  - Plane: {name: floor}\n";
+
+/// Part `part`'s I/O `io` now.
+double io(const Simulation& sim, const std::string& part, const std::string& io) {
+  std::string why;
+  const auto p = sim.parts()->find(part, why);
+  EXPECT_TRUE(p) << why;
+  if (!p) return kNan;
+  const auto v = sim.parts()->read(*p, io, why);
+  EXPECT_TRUE(v) << why;
+  return v ? *v : kNan;
+}
+
+/// Sets output `io` of part `part`.
+void write(Simulation& sim, const std::string& part, const std::string& io, double value) {
+  std::string why;
+  const auto p = sim.parts()->find(part, why);
+  ASSERT_TRUE(p) << why;
+  ASSERT_TRUE(sim.parts()->write(*p, io, value, why)) << why;
+}
+
+/// The tokens on place `place` (qualified), all its slots.
+std::int64_t tokens(const Simulation& sim, const std::string& place) {
+  const auto id = sim.net().findPlace(place);
+  EXPECT_TRUE(id) << place;
+  if (!id) return -1;
+  std::int64_t n = 0;
+  for (const auto ps : sim.net().placeSlotsOf(*id)) n += sim.kernel().marking(ps);
+  return n;
+}
+
+/// The world position of scene node `path` (a body's as the physics moves it).
+core::Vec3 position(const Simulation& sim, const std::string& path) {
+  const scene::Node* n = sim.plant()->find(path);
+  EXPECT_NE(n, nullptr) << path;
+  return n ? n->framePose().position : core::Vec3{kNan, kNan, kNan};
+}
+
+/// Colour (or vector) field `field` of scene node `path`.
+std::array<double, 3> colour(const Simulation& sim, const std::string& path, const std::string& field) {
+  const scene::Node* n = sim.plant()->find(path);
+  EXPECT_NE(n, nullptr) << path;
+  if (!n) return {kNan, kNan, kNan};
+  const int i = n->type().fieldIndex(field);
+  EXPECT_GE(i, 0) << field;
+  return std::get<std::array<double, 3>>(n->value(static_cast<std::size_t>(i)));
+}
+
+/// Steps `sim` for `seconds` of model time.
+void runFor(Simulation& sim, double seconds) {
+  const auto steps = static_cast<std::int64_t>(std::llround(seconds / sim.model().settings.dt));
+  for (std::int64_t i = 0; i < steps; ++i) sim.step();
+}
+
+// ---------------------------------------------------------------------------------------
+// every part: its file, its palette entry, its I/O
+
+/// One I/O as parts/README.md documents it.
+struct IoRow {
+  const char* name;
+  IoDirection direction;
+  IoSignal signal;
+  const char* unit;
+};
+
+/// One part as parts/README.md documents it.
+struct PartRow {
+  const char* file;   // group/name
+  const char* group;  // the palette's group
+  const char* control;
+  std::vector<IoRow> io;
+};
+
+constexpr auto In = IoDirection::Input;
+constexpr auto Out = IoDirection::Output;
+constexpr auto Dig = IoSignal::Digital;
+constexpr auto Ana = IoSignal::Analog;
+
+const std::vector<PartRow>& library() {
+  static const std::vector<PartRow> rows = {
+      {"items/small_box", "Items", "", {}},
+      {"items/medium_box", "Items", "", {}},
+      {"items/large_box", "Items", "", {}},
+      {"sources_and_sinks/emitter", "Sources and sinks", "",
+       {{"emit", Out, Dig, ""}, {"emitted", In, Ana, "boxes"}, {"occupied", In, Dig, ""}}},
+      {"sources_and_sinks/remover", "Sources and sinks", "", {{"removed", In, Ana, "items"}}},
+      {"conveyors/belt_conveyor", "Conveyors", "", {{"run", Out, Dig, ""}, {"speed", Out, Ana, "m/s"}}},
+      {"storage/bin", "Storage", "", {{"count", In, Ana, "items"}}},
+      {"sensors/diffuse_sensor", "Sensors", "", {{"detected", In, Dig, ""}}},
+      {"sensors/through_beam", "Sensors", "", {{"blocked", In, Dig, ""}}},
+      {"actuators/pusher", "Actuators", "pusher_control",
+       {{"extend", Out, Dig, ""}, {"front_limit", In, Dig, ""}, {"back_limit", In, Dig, ""}}},
+      {"operator/stack_light", "Operator", "", {{"red", Out, Dig, ""}, {"amber", Out, Dig, ""}, {"green", Out, Dig, ""}}},
+      {"operator/push_button", "Operator", "", {{"pressed", In, Dig, ""}, {"presses", In, Ana, "presses"}}},
+  };
+  return rows;
+}
+
+std::string stem(const std::string& file) { return file.substr(file.find('/') + 1); }
+
+class EveryPart : public ::testing::TestWithParam<PartRow> {};
+
+TEST_P(EveryPart, LoadsWithItsPaletteEntryAndPicture) {
+  // the page type named as the file, listed in its group, version 1, a picture beside it
+  const PartRow& row = GetParam();
+  const auto m = loadPart(row.file);
+  ASSERT_TRUE(m);
+  const std::string name = stem(row.file);
+  ASSERT_TRUE(m->parts.contains(name));
+  const PartSpec& spec = m->parts.at(name);
+  EXPECT_TRUE(spec.listed);
+  EXPECT_EQ(spec.version, 1);
+  EXPECT_EQ(spec.group, row.group);
+  EXPECT_EQ(spec.picture, name + ".png");
+  EXPECT_TRUE(std::filesystem::is_regular_file(std::filesystem::path(partPath(row.file)).parent_path() / spec.picture))
+      << spec.picture;
+  EXPECT_EQ(spec.control, row.control);
+  EXPECT_TRUE(m->type_scenes.contains(name)) << "a part brings its machine";
+  // every parameter says what it is
+  for (const auto& p : spec.params) EXPECT_FALSE(p.description.empty()) << name << "." << p.name;
+  // a control pattern, when it has one, says which part it controls
+  if (!spec.control.empty()) {
+    ASSERT_TRUE(m->parts.contains(spec.control));
+    EXPECT_EQ(m->parts.at(spec.control).controls, name);
+    EXPECT_EQ(m->parts.at(spec.control).group, row.group);
+  }
+}
+
+TEST_P(EveryPart, DeclaresItsIoAsDocumented) {
+  const PartRow& row = GetParam();
+  const auto m = loadPart(row.file);
+  ASSERT_TRUE(m);
+  const PartSpec& spec = m->parts.at(stem(row.file));
+  ASSERT_EQ(spec.io.size(), row.io.size());
+  for (std::size_t i = 0; i < row.io.size(); ++i) {
+    SCOPED_TRACE(row.io[i].name);
+    EXPECT_EQ(spec.io[i].name, row.io[i].name);
+    EXPECT_EQ(spec.io[i].direction, row.io[i].direction);
+    EXPECT_EQ(spec.io[i].signal, row.io[i].signal);
+    EXPECT_EQ(spec.io[i].unit, row.io[i].unit);
+    EXPECT_FALSE(spec.io[i].description.empty());
+  }
+}
+
+TEST_P(EveryPart, ItsDemoRunsAndItsIoBindToThePlant) {
+  // the demo page runs 1 s; every I/O reads a value (bound to a node of the part's copy)
+  const PartRow& row = GetParam();
+  const auto m = loadPart(row.file);
+  ASSERT_TRUE(m);
+  core::Diagnostics diags;
+  auto sim = Simulation::create(*m, diags);
+  ASSERT_TRUE(sim) << diags.str();
+  runFor(*sim, 1.0);
+  EXPECT_FALSE(sim->scriptHalt()) << sim->scriptHalt()->message;
+  EXPECT_FALSE(sim->physicsHalt());
+  ASSERT_NE(sim->parts(), nullptr);
+  for (const auto& r : sim->parts()->rows()) {
+    EXPECT_TRUE(std::isfinite(r.value)) << r.io->name;
+  }
+}
+
+TEST_P(EveryPart, SavesAndReadsBackTheSame) {
+  // a model keeps a copy of the parts it uses: the part's file written out and read back is
+  // the same model, its =expressions and $params as written
+  const auto m = loadPart(GetParam().file);
+  ASSERT_TRUE(m);
+  const std::string text = writeModel(*m);
+  core::Diagnostics diags;
+  const auto back = parseModel(text, "saved.gdpn.yaml", diags);
+  ASSERT_TRUE(back) << diags.str() << text;
+  EXPECT_TRUE(*back == *m);
+  EXPECT_EQ(writeModel(*back), text);
+}
+
+INSTANTIATE_TEST_SUITE_P(Library, EveryPart, ::testing::ValuesIn(library()),
+                         [](const auto& p) { return stem(p.param.file); });
+
+// ---------------------------------------------------------------------------------------
+// items
+
+/// The same node types, names and field values all the way down.
+bool sameTree(const scene::Node& a, const scene::Node& b) {
+  if (a.kind() != b.kind() || a.name() != b.name() || a.children().size() != b.children().size()) return false;
+  for (std::size_t i = 0; i < a.type().fields.size(); ++i) {
+    if (a.value(i) != b.value(i)) return false;
+  }
+  for (std::size_t i = 0; i < a.children().size(); ++i) {
+    if (!sameTree(*a.children()[i], *b.children()[i])) return false;
+  }
+  return true;
+}
+
+TEST(Items, BoxesStandOnTheFloorWithTheirUserData) {
+  // each box settles with its base on the floor (its origin at z = 0), brown cardboard
+  for (const char* type : {"small_box", "medium_box", "large_box"}) {
+    SCOPED_TRACE(type);
+    auto sim = compose(std::string(kFloor) + "pages:\n  main:\n    instances:\n      box1: {type: " + type +
+                           ", translation: [0, 0, 0.05]}\n",
+                       {(std::string("items/") + type).c_str()});
+    ASSERT_TRUE(sim);
+    runFor(*sim, 1.0);
+    EXPECT_NEAR(position(*sim, "box1/box").z, 0.0, 0.005);
+    const scene::Node* box = sim->plant()->find("box1/box");
+    ASSERT_NE(box, nullptr);
+    ASSERT_NE(box->datum("colour"), nullptr);
+    ASSERT_NE(box->datum("material"), nullptr);
+    EXPECT_EQ(std::get<std::string>(*box->datum("colour")), "brown");
+    EXPECT_EQ(std::get<std::string>(*box->datum("material")), "cardboard");
+  }
+}
+
+TEST(Items, TheEmittersBoxesAreTheItemsBoxes) {
+  // the emitter's templates have the items' masses, sizes and looks
+  const auto emitter = loadPart("sources_and_sinks/emitter");
+  ASSERT_TRUE(emitter);
+  const auto& templates = *emitter->type_scenes.at("emitter");
+  for (const auto& [size, file] : std::vector<std::pair<std::string, std::string>>{
+           {"small", "small_box"}, {"medium", "medium_box"}, {"large", "large_box"}}) {
+    SCOPED_TRACE(size);
+    const auto item = loadPart("items/" + file);
+    ASSERT_TRUE(item);
+    const scene::Node* made = templates.find("templates/" + size + "/box");
+    const scene::Node* box = item->type_scenes.at(file)->find("box");
+    ASSERT_NE(made, nullptr);
+    ASSERT_NE(box, nullptr);
+    ASSERT_EQ(made->children().size(), box->children().size());
+    for (std::size_t i = 0; i < box->children().size(); ++i) EXPECT_TRUE(sameTree(*made->children()[i], *box->children()[i]));
+    EXPECT_EQ(made->data, box->data);
+  }
+}
+
+
+// ---------------------------------------------------------------------------------------
+// the belt conveyor
+
+TEST(BeltConveyor, CarriesABoxAtItsSpeed) {
+  // a medium box on a 4 m belt at 0.8 m/s: once it has settled, it goes 1.6 m in 2 s (2 %)
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      belt1: {type: belt_conveyor, params: {length: 4, speed: 0.8}}
+      box1: {type: medium_box, translation: [-1.6, 0, 0.801]}
+)Y",
+                     {"conveyors/belt_conveyor", "items/medium_box"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 1.0);
+  const core::Vec3 a = position(*sim, "box1/box");
+  runFor(*sim, 2.0);
+  const core::Vec3 b = position(*sim, "box1/box");
+  EXPECT_NEAR((b.x - a.x) / 2.0, 0.8, 0.8 * 0.02);
+  EXPECT_NEAR(b.y, 0.0, 0.01);
+  EXPECT_NEAR(b.z, 0.8, 0.005) << "on the belt's top";
+  EXPECT_DOUBLE_EQ(io(*sim, "belt1", "run"), 1.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "belt1", "speed"), 0.8);
+}
+
+TEST(BeltConveyor, RunAndSpeedDriveOneMotor) {
+  // start: 0 stands still; run switches the parameter's speed on and off; speed sets any
+  // speed (backwards too), and then run reads 0: the belt no longer runs at its speed
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      belt1: {type: belt_conveyor, params: {length: 4, start: 0}}
+      box1: {type: small_box, translation: [0, 0, 0.801]}
+)Y",
+                     {"conveyors/belt_conveyor", "items/small_box"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 1.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "belt1", "run"), 0.0);
+  EXPECT_NEAR(position(*sim, "box1/box").x, 0.0, 0.002) << "stands until driven";
+  write(*sim, "belt1", "run", 1);
+  runFor(*sim, 0.5);
+  double x = position(*sim, "box1/box").x;
+  runFor(*sim, 1.0);
+  EXPECT_NEAR(position(*sim, "box1/box").x - x, 0.5, 0.01) << "run: the speed parameter, 0.5 m/s";
+  write(*sim, "belt1", "speed", -0.3);
+  EXPECT_DOUBLE_EQ(io(*sim, "belt1", "run"), 0.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "belt1", "speed"), -0.3);
+  runFor(*sim, 0.5);
+  x = position(*sim, "box1/box").x;
+  runFor(*sim, 1.0);
+  EXPECT_NEAR(position(*sim, "box1/box").x - x, -0.3, 0.01) << "speed: backwards at 0.3 m/s";
+  write(*sim, "belt1", "run", 0);
+  runFor(*sim, 0.5);
+  x = position(*sim, "box1/box").x;
+  runFor(*sim, 1.0);
+  EXPECT_NEAR(position(*sim, "box1/box").x, x, 0.002) << "run off: stopped";
+}
+
+TEST(BeltConveyor, BeltsPlacedAtLengthIntervalsHandOverABox) {
+  // two 2 m belts, the second 2 m further on: a box rides from the first onto the second
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      belt1: {type: belt_conveyor}
+      belt2: {type: belt_conveyor, translation: [2, 0, 0]}
+      box1: {type: small_box, translation: [-0.7, 0, 0.801]}
+)Y",
+                     {"conveyors/belt_conveyor", "items/small_box"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 6.0);  // 3 m at 0.5 m/s
+  const core::Vec3 p = position(*sim, "box1/box");
+  EXPECT_NEAR(p.x, 2.3, 0.05);
+  EXPECT_NEAR(p.z, 0.8, 0.005) << "still on a belt's top";
+}
+
+// ---------------------------------------------------------------------------------------
+// the pusher
+
+TEST(Pusher, AStrokeTakesStrokeOverSpeedAndTheLimitsSwitch) {
+  // 0.6 m at 0.5 m/s: out in 1.2 s (the front limit 15 mm before the end), at 0.5 m/s on the
+  // way; the back limit drops at once; back in 1.2 s too
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      pusher1: {type: pusher, params: {stroke: 0.6, speed: 0.5}}
+)Y",
+                     {"actuators/pusher"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 0.2);
+  EXPECT_DOUBLE_EQ(io(*sim, "pusher1", "back_limit"), 1.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "pusher1", "front_limit"), 0.0);
+  const scene::Node* slide = sim->plant()->find("pusher1/cylinder/slide");
+  ASSERT_NE(slide, nullptr);
+  write(*sim, "pusher1", "extend", 1);
+  EXPECT_DOUBLE_EQ(io(*sim, "pusher1", "extend"), 1.0);
+  const double t0 = sim->kernel().now();
+  double back_off = -1, front_on = -1, x_at_03 = 0, x_at_08 = 0;
+  while (sim->kernel().now() - t0 < 3.0 && front_on < 0) {
+    sim->step();
+    const double t = sim->kernel().now() - t0;
+    if (back_off < 0 && io(*sim, "pusher1", "back_limit") == 0.0) back_off = t;
+    if (io(*sim, "pusher1", "front_limit") != 0.0) front_on = t;
+    if (std::abs(t - 0.3) < 1e-6) x_at_03 = sim->physics()->jointPosition(*slide);
+    if (std::abs(t - 0.8) < 1e-6) x_at_08 = sim->physics()->jointPosition(*slide);
+  }
+  EXPECT_NEAR(front_on, 0.6 / 0.5, 0.06) << "stroke / speed, within 5 %";
+  EXPECT_GT(back_off, 0.0);
+  EXPECT_LT(back_off, 0.1) << "the back limit drops as the plate leaves";
+  EXPECT_NEAR((x_at_08 - x_at_03) / 0.5, 0.5, 0.01) << "at its speed on the way";
+  runFor(*sim, 0.3);
+  EXPECT_NEAR(sim->physics()->jointPosition(*slide), 0.6, 0.002) << "out by its stroke";
+  EXPECT_DOUBLE_EQ(io(*sim, "pusher1", "front_limit"), 1.0);
+  write(*sim, "pusher1", "extend", 0);
+  const double t1 = sim->kernel().now();
+  double back_on = -1;
+  while (sim->kernel().now() - t1 < 3.0 && back_on < 0) {
+    sim->step();
+    if (io(*sim, "pusher1", "back_limit") != 0.0) back_on = sim->kernel().now() - t1;
+  }
+  EXPECT_NEAR(back_on, 0.6 / 0.5, 0.06);
+  EXPECT_DOUBLE_EQ(io(*sim, "pusher1", "front_limit"), 0.0);
+}
+
+TEST(Pusher, ItsControlPatternMakesOneStrokePerRequest) {
+  // two requests: two strokes, two tokens on done, the valve closed and the plate home
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      pusher1: {type: pusher}
+      pusher1_control: {type: pusher_control, part: pusher1}
+    places:
+      asks: {tokens: 2}
+    transitions:
+      ask: {}
+    arcs:
+      - asks -> ask
+      - ask -> pusher1_control/request
+)Y",
+                     {"actuators/pusher"});
+  ASSERT_TRUE(sim);
+  const scene::Node* slide = sim->plant()->find("pusher1/cylinder/slide");
+  ASSERT_NE(slide, nullptr);
+  double reach = 0;
+  int outs = 0;
+  bool was_front = false;
+  for (int i = 0; i < 600; ++i) {
+    sim->step();
+    reach = std::max(reach, sim->physics()->jointPosition(*slide));
+    const bool front = io(*sim, "pusher1", "front_limit") != 0.0;
+    if (front && !was_front) ++outs;
+    was_front = front;
+  }
+  EXPECT_EQ(tokens(*sim, "main/pusher1_control/done"), 2);
+  EXPECT_EQ(outs, 2);
+  EXPECT_GT(reach, 1.0 - 0.015) << "out to the front limit";
+  EXPECT_DOUBLE_EQ(io(*sim, "pusher1", "extend"), 0.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "pusher1", "back_limit"), 1.0);
+  EXPECT_EQ(tokens(*sim, "main/pusher1_control/idle"), 1);
+}
+
+TEST(Pusher, ItsControlPatternGivesUpAStrokeThatIsBlocked) {
+  // a wall 0.3 m in front of the plate: the stroke never reaches the front limit; after 1.5
+  // times stroke/speed and 0.5 s (2 s) the plate comes back: done, and a jam counted
+  auto sim = compose(std::string(kFloor) + R"Y(  - Transform: {translation: [0, 0, 0.9], children: [{Cube: {name: wall, size: [1, 0.1, 0.4]}}]}
+pages:
+  main:
+    instances:
+      pusher1: {type: pusher}
+      pusher1_control: {type: pusher_control, part: pusher1}
+    places:
+      asks: {tokens: 1}
+    transitions:
+      ask: {}
+    arcs:
+      - asks -> ask
+      - ask -> pusher1_control/request
+)Y",
+                     {"actuators/pusher"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 1.9);
+  EXPECT_DOUBLE_EQ(io(*sim, "pusher1", "extend"), 1.0) << "still pushing against the wall";
+  EXPECT_DOUBLE_EQ(io(*sim, "pusher1", "front_limit"), 0.0);
+  runFor(*sim, 1.6);
+  EXPECT_DOUBLE_EQ(io(*sim, "pusher1", "extend"), 0.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "pusher1", "back_limit"), 1.0);
+  EXPECT_EQ(tokens(*sim, "main/pusher1_control/jams"), 1);
+  EXPECT_EQ(tokens(*sim, "main/pusher1_control/done"), 1);
+}
+
+TEST(Pusher, PushesABoxOffABelt) {
+  // a belt standing still, a medium box in front of the plate: one stroke and it is off the
+  // far side (+y), on the floor
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      belt1: {type: belt_conveyor, params: {start: 0}}
+      pusher1: {type: pusher}
+      box1: {type: medium_box, translation: [0, 0, 0.801]}
+)Y",
+                     {"conveyors/belt_conveyor", "actuators/pusher", "items/medium_box"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 0.2);
+  write(*sim, "pusher1", "extend", 1);
+  runFor(*sim, 1.5);
+  write(*sim, "pusher1", "extend", 0);
+  runFor(*sim, 1.5);
+  const core::Vec3 p = position(*sim, "box1/box");
+  EXPECT_GT(p.y, 0.35 + 0.2);
+  EXPECT_LT(p.z, 0.5) << "fell off the belt";
+}
+
+// ---------------------------------------------------------------------------------------
+// the photo-eyes
+
+/// A belt carrying a medium box (front face at x = -1) at 0.5 m/s past sensors at x = 0.5:
+/// its front reaches them at 3 s, its back leaves at 3.8 s.
+std::string beltWithBox(const std::string& sensors) {
+  return std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      belt1: {type: belt_conveyor, params: {length: 4}}
+      box1: {type: medium_box, translation: [-1.2, 0, 0.801]}
+)Y" + sensors;
+}
+
+/// When input `io` of `part` went on and off while `sim` ran `seconds` (-1: never).
+std::pair<double, double> onOff(Simulation& sim, const std::string& part, const std::string& io_name, double seconds,
+                                int* switches = nullptr) {
+  double on = -1, off = -1;
+  bool was = io(sim, part, io_name) != 0.0;
+  int n = 0;
+  const auto steps = static_cast<int>(std::llround(seconds / sim.model().settings.dt));
+  for (int i = 0; i < steps; ++i) {
+    sim.step();
+    const bool now = io(sim, part, io_name) != 0.0;
+    if (now != was) ++n;
+    if (now && !was && on < 0) on = sim.kernel().now();
+    if (!now && was && off < 0) off = sim.kernel().now();
+    was = now;
+  }
+  if (switches) *switches = n;
+  return {on, off};
+}
+
+TEST(ThroughBeam, SeesAnItemCrossingItAndNothingElse) {
+  // the belt, its rails and the posts never break the beam; the box does from 3 s to 3.8 s,
+  // and while it does the box is all the beam holds
+  auto sim = compose(beltWithBox("      eye1: {type: through_beam, translation: [0.5, 0, 0]}\n"),
+                     {"conveyors/belt_conveyor", "items/medium_box", "sensors/through_beam"});
+  ASSERT_TRUE(sim);
+  int switches = 0;
+  const auto [on, off] = onOff(*sim, "eye1", "blocked", 3.4, &switches);
+  EXPECT_NEAR(on, 3.0, 0.05);
+  const scene::Node* ray = sim->plant()->find("eye1/sender/beam/ray");
+  ASSERT_NE(ray, nullptr);
+  const auto& items = sim->reading(ray->handle()).get<std::vector<scene::NodeHandle>>(0);
+  ASSERT_EQ(items.size(), 1u);
+  EXPECT_EQ(sim->plant()->resolve(items[0])->path(), "box1/box");
+  EXPECT_EQ(colour(*sim, "eye1/receiver/led", "emissive")[0], 1.0) << "the receiver's LED is lit";
+  const auto [on2, off2] = onOff(*sim, "eye1", "blocked", 2.0, &switches);
+  EXPECT_NEAR(off2, 3.8, 0.05);
+  EXPECT_LT(on2, 0.0) << "blocked once only";
+  EXPECT_EQ(switches, 1) << "on until the box has passed, then off";
+  EXPECT_EQ(colour(*sim, "eye1/receiver/led", "emissive")[0], 0.0);
+  (void)off;
+}
+
+TEST(ThroughBeam, AnEmptyBeltNeverBreaksTheBeam) {
+  // a running belt with nothing on it, and a pusher plate going out and back beside the
+  // beam: never blocked
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      belt1: {type: belt_conveyor}
+      eye1: {type: through_beam, translation: [0.4, 0, 0]}
+      pusher1: {type: pusher}
+)Y",
+                     {"conveyors/belt_conveyor", "sensors/through_beam", "actuators/pusher"});
+  ASSERT_TRUE(sim);
+  write(*sim, "pusher1", "extend", 1);
+  int switches = 0;
+  onOff(*sim, "eye1", "blocked", 1.5, &switches);
+  write(*sim, "pusher1", "extend", 0);
+  onOff(*sim, "eye1", "blocked", 1.5, &switches);
+  EXPECT_EQ(switches, 0);
+}
+
+TEST(DiffuseSensor, DetectsABoxWithinItsRangeOnly) {
+  // two eyes at x = 0.5 and 1.0: the box's near face is 0.17 m from the lens, so the eye of
+  // range 0.7 sees it and the eye of range 0.1 does not
+  auto sim = compose(beltWithBox("      near: {type: diffuse_sensor, translation: [0.5, 0, 0]}\n"
+                                 "      short: {type: diffuse_sensor, translation: [1.0, 0, 0], params: {range: 0.1}}\n"),
+                     {"conveyors/belt_conveyor", "items/medium_box", "sensors/diffuse_sensor"});
+  ASSERT_TRUE(sim);
+  bool short_saw = false;
+  double on = -1, off = -1;
+  bool was = false;
+  for (int i = 0; i < 600; ++i) {
+    sim->step();
+    short_saw = short_saw || io(*sim, "short", "detected") != 0.0;
+    const bool now = io(*sim, "near", "detected") != 0.0;
+    if (now && !was && on < 0) on = sim->kernel().now();
+    if (!now && was && off < 0) off = sim->kernel().now();
+    was = now;
+  }
+  EXPECT_NEAR(on, 3.0, 0.05);
+  EXPECT_NEAR(off, 3.8, 0.05);
+  EXPECT_FALSE(short_saw);
+}
+
+// ---------------------------------------------------------------------------------------
+// the remover and the bin
+
+TEST(Remover, TakesAwayAndCountsWhatEntersIt) {
+  // three boxes fall into it and are gone, counted on its place and its input; a fourth
+  // beside it stays
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      remover1: {type: remover}
+      box1: {type: small_box, translation: [0, 0, 2.0]}
+      box2: {type: small_box, translation: [0.1, 0.2, 2.5]}
+      box3: {type: small_box, translation: [-0.1, -0.2, 3.0]}
+      box4: {type: small_box, translation: [2, 0, 0.5]}
+)Y",
+                     {"sources_and_sinks/remover", "items/small_box"});
+  ASSERT_TRUE(sim);
+  EXPECT_DOUBLE_EQ(io(*sim, "remover1", "removed"), 0.0);
+  runFor(*sim, 1.5);
+  EXPECT_EQ(tokens(*sim, "main/remover1/removed"), 3);
+  EXPECT_DOUBLE_EQ(io(*sim, "remover1", "removed"), 3.0);
+  for (const char* gone : {"box1/box", "box2/box", "box3/box"}) EXPECT_EQ(sim->plant()->find(gone), nullptr) << gone;
+  EXPECT_NE(sim->plant()->find("box4/box"), nullptr);
+}
+
+TEST(Bin, CountsWhatFallsIn) {
+  // three boxes fall in, one beside it: 3 inside, 3 entries
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      bin1: {type: bin}
+      box1: {type: small_box, translation: [-0.2, 0, 1.0]}
+      box2: {type: small_box, translation: [0.2, 0.1, 1.3]}
+      box3: {type: small_box, translation: [0, -0.15, 1.6]}
+      box4: {type: small_box, translation: [1.5, 0, 1.0]}
+)Y",
+                     {"storage/bin", "items/small_box"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 2.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "bin1", "count"), 3.0);
+  EXPECT_EQ(tokens(*sim, "main/bin1/entered"), 3);
+  EXPECT_LT(position(*sim, "box1/box").z, 0.1) << "on the bin's bottom";
+}
+
+// ---------------------------------------------------------------------------------------
+// the emitter
+
+/// An emitter with `params` over a 6 m belt at `speed` that carries its boxes away, into a
+/// remover at its end.
+std::unique_ptr<Simulation> emitterOverBelt(const std::string& params, double speed = 0.5,
+                                            const std::string& more = "") {
+  return compose(std::string(kFloor) + "pages:\n  main:\n    instances:\n"
+                 "      belt1: {type: belt_conveyor, translation: [2.5, 0, 0], params: {length: 6, speed: " +
+                     std::to_string(speed) + "}}\n      remover1: {type: remover, translation: [5.5, 0, 0]}\n      emitter1: {type: emitter, params: " + params + "}\n" + more,
+                 {"conveyors/belt_conveyor", "sources_and_sinks/emitter", "sources_and_sinks/remover"});
+}
+
+/// The model times at which `emitted` grew while `sim` ran `seconds`.
+std::vector<double> emissions(Simulation& sim, double seconds) {
+  std::vector<double> at;
+  double count = io(sim, "emitter1", "emitted");
+  const auto steps = static_cast<int>(std::llround(seconds / sim.model().settings.dt));
+  for (int i = 0; i < steps; ++i) {
+    sim.step();
+    const double now = io(sim, "emitter1", "emitted");
+    for (; count < now; count += 1) at.push_back(sim.kernel().now());
+  }
+  return at;
+}
+
+/// The boxes the emitter made, in order: each one's colour datum and its Material's diffuse.
+std::vector<std::pair<std::string, std::array<double, 3>>> boxesMade(const Simulation& sim) {
+  std::vector<std::pair<std::string, std::array<double, 3>>> out;
+  const scene::Node* items = sim.plant()->find("emitter1/items");
+  EXPECT_NE(items, nullptr);
+  if (!items) return out;
+  for (const auto& holder : items->children()) {
+    const scene::Node* box = holder->find("box");
+    EXPECT_NE(box, nullptr);
+    if (!box) continue;
+    EXPECT_EQ(std::get<std::string>(*box->datum("material")), "cardboard");
+    out.emplace_back(std::get<std::string>(*box->datum("colour")),
+                     colour(sim, box->path() + "/look", "diffuse"));
+  }
+  return out;
+}
+
+TEST(Emitter, RedAndBlueInTurnEvery4sByDefault) {
+  // the defaults are the station's: a small box every 4 s, red and blue in turn, each on the
+  // belt's top under the portal
+  auto sim = emitterOverBelt("{}");
+  ASSERT_TRUE(sim);
+  const auto at = emissions(*sim, 12.5);
+  ASSERT_EQ(at.size(), 4u);
+  for (std::size_t i = 0; i < at.size(); ++i) EXPECT_NEAR(at[i], 4.0 * static_cast<double>(i), 0.03) << i;
+  // the first has reached the remover at the belt's end (5 m at 0.5 m/s); the others ride on
+  EXPECT_EQ(tokens(*sim, "main/remover1/removed"), 1);
+  const auto boxes = boxesMade(*sim);
+  ASSERT_EQ(boxes.size(), 3u);
+  const std::array<double, 3> red{0.8, 0.12, 0.1}, blue{0.1, 0.3, 0.85};
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const bool even = (i + 1) % 2 == 0;  // box i + 1 of 0, 1, 2, 3
+    EXPECT_EQ(boxes[i].first, even ? "red" : "blue") << i;
+    EXPECT_EQ(boxes[i].second, even ? red : blue) << i;
+  }
+  // the latest stands on the belt, carried off
+  const scene::Node* last = sim->plant()->find("emitter1/items")->children().back()->find("box");
+  EXPECT_NEAR(last->framePose().position.z, 0.8, 0.005);
+  EXPECT_GT(last->framePose().position.x, 0.1);
+  EXPECT_DOUBLE_EQ(io(*sim, "emitter1", "emitted"), 4.0);
+}
+
+TEST(Emitter, AtRandomItsIntervalsAverageThePeriod) {
+  // random: 1, period 1 s, small boxes, a fast belt: 60 s make about 60 boxes at
+  // irregular intervals of about 1 s on average (the seed fixes them)
+  auto sim = emitterOverBelt("{period: 1, random: 1, size: 1, colours: 3}", 1.5);
+  ASSERT_TRUE(sim);
+  const auto at = emissions(*sim, 60.0);
+  ASSERT_GE(at.size(), 10u);
+  const double mean = (at.back() - at.front()) / static_cast<double>(at.size() - 1);
+  EXPECT_GT(mean, 0.75);
+  EXPECT_LT(mean, 1.33);
+  double shortest = 1e9, longest = 0;
+  for (std::size_t i = 1; i < at.size(); ++i) {
+    shortest = std::min(shortest, at[i] - at[i - 1]);
+    longest = std::max(longest, at[i] - at[i - 1]);
+  }
+  EXPECT_LT(shortest, 0.5);
+  EXPECT_GT(longest, 2.0);
+  EXPECT_EQ(tokens(*sim, "main/remover1/removed") + static_cast<std::int64_t>(boxesMade(*sim).size()),
+            static_cast<std::int64_t>(at.size()))
+      << "every box made is on the belt or was taken at its end";
+  auto sim2 = emitterOverBelt("{period: 1, colours: 3}", 1.5);
+  ASSERT_TRUE(sim2);
+  runFor(*sim2, 2.5);
+  const auto boxes = boxesMade(*sim2);
+  ASSERT_EQ(boxes.size(), 3u);
+  EXPECT_EQ(boxes[0].first, "red");
+  EXPECT_EQ(boxes[1].first, "blue");
+  EXPECT_EQ(boxes[2].first, "green");
+}
+
+TEST(Emitter, OnRequestOnePerRisingEdgeOrToken) {
+  // mode 1: nothing by itself; emit held on gives one box, off and on again another; a
+  // token on request one more
+  auto sim = emitterOverBelt("{mode: 1}", 0.5, R"Y(    places:
+      asks: {}
+    transitions:
+      ask: {guard: 'sim.time > 5'}
+    arcs:
+      - asks -> ask
+      - ask -> emitter1/request
+)Y");
+  ASSERT_TRUE(sim);
+  EXPECT_TRUE(emissions(*sim, 1.0).empty());
+  write(*sim, "emitter1", "emit", 1);
+  EXPECT_EQ(emissions(*sim, 1.5).size(), 1u);
+  write(*sim, "emitter1", "emit", 0);
+  EXPECT_TRUE(emissions(*sim, 0.5).empty());
+  write(*sim, "emitter1", "emit", 1);
+  EXPECT_EQ(emissions(*sim, 1.0).size(), 1u);
+  EXPECT_EQ(colour(*sim, "emitter1/portal/lamp", "emissive")[2], 1.0) << "the request lamp is lit";
+  EXPECT_EQ(tokens(*sim, "main/emitter1/emitted"), 2);
+}
+
+TEST(Emitter, WaitsForItsOutletAndStopsAtItsLimit) {
+  // a belt standing still: the first box stays in the outlet, so no second comes; with the
+  // belt running, limit: 2 stops it at two
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      belt1: {type: belt_conveyor, translation: [2.5, 0, 0], params: {length: 6, start: 0}}
+      emitter1: {type: emitter, params: {period: 1, limit: 2}}
+)Y",
+                     {"conveyors/belt_conveyor", "sources_and_sinks/emitter"});
+  ASSERT_TRUE(sim);
+  EXPECT_EQ(emissions(*sim, 3.0).size(), 1u);
+  EXPECT_DOUBLE_EQ(io(*sim, "emitter1", "occupied"), 1.0);
+  write(*sim, "belt1", "run", 1);
+  EXPECT_EQ(emissions(*sim, 6.0).size(), 1u) << "the one waiting, then no more";
+  EXPECT_DOUBLE_EQ(io(*sim, "emitter1", "emitted"), 2.0);
+}
+
+// ---------------------------------------------------------------------------------------
+// the operator's parts
+
+TEST(StackLight, EachOutputLightsItsLamp) {
+  auto sim = compose(std::string(kFloor) + "pages:\n  main:\n    instances:\n      light1: {type: stack_light}\n",
+                     {"operator/stack_light"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 0.1);
+  const std::array<double, 3> dark{0, 0, 0};
+  for (const char* lamp : {"red", "amber", "green"}) EXPECT_EQ(colour(*sim, std::string("light1/lamps/") + lamp, "emissive"), dark);
+  write(*sim, "light1", "red", 1);
+  write(*sim, "light1", "green", 1);
+  runFor(*sim, 0.02);
+  EXPECT_DOUBLE_EQ(io(*sim, "light1", "red"), 1.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "light1", "amber"), 0.0);
+  EXPECT_EQ(colour(*sim, "light1/lamps/red", "emissive"), (std::array<double, 3>{1, 0, 0}));
+  EXPECT_EQ(colour(*sim, "light1/lamps/amber", "emissive"), dark);
+  EXPECT_EQ(colour(*sim, "light1/lamps/green", "emissive"), (std::array<double, 3>{0, 1, 0}));
+  write(*sim, "light1", "red", 0);
+  write(*sim, "light1", "amber", 1);
+  runFor(*sim, 0.02);
+  EXPECT_EQ(colour(*sim, "light1/lamps/red", "emissive"), dark);
+  EXPECT_EQ(colour(*sim, "light1/lamps/amber", "emissive"), (std::array<double, 3>{1, 0.6, 0}));
+}
+
+TEST(StackLight, AForcedOutputHoldsItsLamp) {
+  // forced on, the red lamp stays lit whatever is written; released, it takes what was
+  // written meanwhile (off)
+  auto sim = compose(std::string(kFloor) + "pages:\n  main:\n    instances:\n      light1: {type: stack_light}\n",
+                     {"operator/stack_light"});
+  ASSERT_TRUE(sim);
+  std::string why;
+  const auto light = sim->parts()->find("light1", why);
+  ASSERT_TRUE(light) << why;
+  ASSERT_TRUE(sim->parts()->force(*light, "red", 1, why)) << why;
+  runFor(*sim, 0.03);
+  EXPECT_EQ(colour(*sim, "light1/lamps/red", "emissive"), (std::array<double, 3>{1, 0, 0}));
+  write(*sim, "light1", "red", 0);
+  runFor(*sim, 0.03);
+  EXPECT_DOUBLE_EQ(io(*sim, "light1", "red"), 1.0);
+  EXPECT_EQ(colour(*sim, "light1/lamps/red", "emissive"), (std::array<double, 3>{1, 0, 0}));
+  ASSERT_TRUE(sim->parts()->release(*light, "red"));
+  runFor(*sim, 0.03);
+  EXPECT_DOUBLE_EQ(io(*sim, "light1", "red"), 0.0);
+  EXPECT_EQ(colour(*sim, "light1/lamps/red", "emissive"), (std::array<double, 3>{0, 0, 0}));
+}
+
+TEST(PushButton, AClickOnItsHeadPressesIt) {
+  // a click straight down on the head: pressed in that step, one press counted; a click
+  // beside it: nothing
+  auto sim = compose(std::string(kFloor) + "pages:\n  main:\n    instances:\n      button1: {type: push_button}\n",
+                     {"operator/push_button"});
+  ASSERT_TRUE(sim);
+  const auto click = [](double t, double x) {
+    sensors::InputEvent e;
+    e.t = t;
+    e.kind = sensors::InputEvent::Kind::Click;
+    e.ray = {{x, 0, 2}, {0, 0, -1}};
+    return e;
+  };
+  sim->setInput({click(0.5, 0.0), click(1.0, 0.5)});
+  int pressed_steps = 0;
+  for (int i = 0; i < 150; ++i) {
+    sim->step();
+    if (io(*sim, "button1", "pressed") != 0.0) {
+      ++pressed_steps;
+      EXPECT_NEAR(sim->kernel().now(), 0.5, 0.011);
+    }
+  }
+  EXPECT_EQ(pressed_steps, 1);
+  EXPECT_DOUBLE_EQ(io(*sim, "button1", "presses"), 1.0);
+  EXPECT_EQ(tokens(*sim, "main/button1/presses"), 1);
+}
+
+
+// ---------------------------------------------------------------------------------------
+// the parts together: issue 54's station
+
+TEST(Station, RedBoxesGoToTheBinBlueOnesToTheRemover) {
+  // the emitter's defaults (red and blue in turn every 4 s) over a belt; a photo-eye 0.3 m
+  // past the pusher (just beyond its plate, which it would see) sees a box's front when the
+  // box is in front of the plate; a red one stops
+  // the belt and asks the pusher's control pattern for a stroke into the bin; at done the belt
+  // runs again; blue ones ride on into the remover at the belt's end
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      emitter1: {type: emitter}
+      belt1: {type: belt_conveyor, translation: [1.5, 0, 0], params: {length: 4}}
+      pusher1: {type: pusher, translation: [2, 0, 0]}
+      pusher1_control: {type: pusher_control, part: pusher1}
+      eye1: {type: diffuse_sensor, translation: [2.3, 0, 0]}
+      bin1: {type: bin, translation: [2, 0.95, 0], params: {length: 1.2, width: 1.0}}
+      remover1: {type: remover, translation: [3.5, 0, 0]}
+    places:
+      eye: {sensors: {c0: eye1/head/beam/ray}}
+      ready: {tokens: 1}
+      pushing: {}
+    transitions:
+      red:
+        pre_fire: 'sim.part("belt1").run = False'
+      resume:
+        pre_fire: 'sim.part("belt1").run = True'
+    arcs:
+      - {from: eye, to: red, condition: 'c0.active and c0.items[0].data.colour == "red"'}
+      - ready -> red
+      - red -> pushing
+      - red -> pusher1_control/request
+      - pushing -> resume
+      - pusher1_control/done -> resume
+      - resume -> ready
+)Y",
+                     {"sources_and_sinks/emitter", "conveyors/belt_conveyor", "actuators/pusher",
+                      "sensors/diffuse_sensor", "storage/bin", "sources_and_sinks/remover"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 120.0);
+  ASSERT_FALSE(sim->scriptHalt()) << sim->scriptHalt()->message;
+  const auto emitted = static_cast<std::int64_t>(io(*sim, "emitter1", "emitted"));
+  const auto removed = tokens(*sim, "main/remover1/removed");
+  const auto binned = static_cast<std::int64_t>(io(*sim, "bin1", "count"));
+  EXPECT_EQ(emitted, 30);
+  EXPECT_GE(binned, 13);
+  EXPECT_GE(removed, 13);
+  EXPECT_EQ(tokens(*sim, "main/pusher1_control/jams"), 0);
+  EXPECT_EQ(tokens(*sim, "main/bin1/entered"), binned) << "what went in stayed in";
+  // every box made is in the bin (red), taken by the remover, or still on the belt before it
+  int in_bin = 0, on_belt = 0;
+  for (const auto& holder : sim->plant()->find("emitter1/items")->children()) {
+    const scene::Node* box = holder->find("box");
+    ASSERT_NE(box, nullptr);
+    const core::Vec3 p = box->framePose().position;
+    const auto& colour_name = std::get<std::string>(*box->datum("colour"));
+    if (p.y > 0.45) {
+      ++in_bin;
+      EXPECT_EQ(colour_name, "red") << box->path();
+      EXPECT_LT(p.z, 0.75) << box->path() << " lies in the bin or its heap";
+    } else {
+      ++on_belt;
+      EXPECT_NEAR(p.z, 0.8, 0.01) << box->path() << " is on the belt";
+      EXPECT_TRUE(colour_name == "blue" || p.x < 2.3) << box->path() << ": no red box rides past the pusher";
+    }
+  }
+  EXPECT_EQ(in_bin, binned);
+  EXPECT_EQ(in_bin + on_belt + removed, emitted);
+}
+
+}  // namespace
+}  // namespace gdpn::model
