@@ -155,8 +155,8 @@ bool perform(App& app, Driver& d, const Action& given, const IdeOptions& o, int 
         d.move(a.x, a.y);
         d.button(a.button, true);
       } else {
-        a.x = ImGui::GetIO().MousePos.x;
-        a.y = ImGui::GetIO().MousePos.y;
+        a.x = static_cast<double>(ImGui::GetIO().MousePos.x);
+        a.y = static_cast<double>(ImGui::GetIO().MousePos.y);
       }
       constexpr int kSteps = 8;
       for (int i = 1; i <= kSteps; ++i) d.move(a.x + (a.x2 - a.x) * i / kSteps, a.y + (a.y2 - a.y) * i / kSteps);

@@ -762,6 +762,7 @@ void Simulation::step() {
 
 void Simulation::stepPlant() {
   kernel_->idleStep();
+  if (parts_) parts_->atStepBoundary();  // a force holds the plant with the net off too
   stepPhysics();
   if (physics_fault_at_) return;
   sense(false);

@@ -194,6 +194,22 @@ TEST(Part, ForcesApplyAtStepBoundariesAreTracedAndReproducible) {
   EXPECT_EQ(forcedRun(), trace);
 }
 
+TEST(Part, AForceAppliesInAStepOfThePlantAloneToo) {
+  core::Diagnostics diags;
+  auto sim = make(lampModel("  main:\n    instances:\n      a: {type: lamp}\n"), diags);
+  ASSERT_TRUE(sim) << diags.str();
+  sim->start();
+  std::string why;
+  ASSERT_TRUE(sim->parts()->force(0, "speed", 0.5, why)) << why;
+  sim->stepPlant();
+  EXPECT_EQ(sim->plant()->find("a/belt")->number(scene::field::Conveyor::Speed), 0.5);
+  EXPECT_TRUE(sim->parts()->rows()[3].forced);
+  sim->parts()->releaseAll();
+  sim->stepPlant();
+  EXPECT_FALSE(sim->parts()->rows()[3].forced);
+  EXPECT_EQ(sim->plant()->find("a/belt")->number(scene::field::Conveyor::Speed), 0.0);
+}
+
 /// A folder of its own under the test's temporary folder.
 fs::path scratch(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("gdpn_part_test_" + name + std::to_string(::getpid()));
