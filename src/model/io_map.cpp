@@ -301,7 +301,7 @@ IoError IoMap::writeWords(std::uint16_t first, const std::vector<std::uint16_t>&
     const double v = raw / b->spec.scale;
     if (!std::isfinite(v)) return IoError::IllegalValue;
     if (b->spec.source == IoEntry::Source::Part) {
-      // checked as it is written
+      if (!sim_.parts()->refusal(b->part, b->spec.io, v).empty()) return IoError::IllegalValue;
     } else if (b->spec.source == IoEntry::Source::Place) {
       if (v < 0 || std::floor(v) != v || v > 9.0e15) return IoError::IllegalValue;  // whole, 0 to 2^53
     } else if (const scene::Node* node = sim_.plant()->resolve(b->node)) {

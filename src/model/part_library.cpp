@@ -156,8 +156,9 @@ std::vector<LibraryPart> scanParts(const std::vector<std::string>& path, core::D
   std::error_code ec;
   const fs::path skipped = skip.empty() ? fs::path() : fs::weakly_canonical(skip, ec);
   for (std::size_t k = 0; k < path.size(); ++k) {
-    // the model's own folder (the first, when a model is open) is not searched below
-    const bool deep = !(k == 0 && path.size() > 1 && !skip.empty());
+    // a library folder (`.../parts`) is searched with its subfolders; any other, a model's
+    // own folder, only itself: a model in a home folder must not read the whole home
+    const bool deep = fs::path(path[k]).filename() == "parts";
     for (const auto& file : partFiles(path[k], deep)) {
       if (!skipped.empty() && fs::weakly_canonical(file, ec) == skipped) continue;
       core::Diagnostics mine;

@@ -164,16 +164,17 @@ std::unique_ptr<PartRun> PartRun::create(Simulation& sim, std::vector<PlacedPart
 }
 
 std::optional<std::size_t> PartRun::find(const std::string& name, std::string& why) const {
+  if (const auto it = found_.find(name); it != found_.end() && it->second) return it->second;
   std::vector<std::size_t> found;
   std::vector<std::string> names;
   for (std::size_t i = 0; i < instances_.size(); ++i) {
     const std::string& q = instances_[i].placed.name;
     names.push_back(q);
-    if (q == name) return i;
+    if (q == name) return found_[name] = i;
     const auto slash = q.rfind('/');
     if (q.substr(slash == std::string::npos ? 0 : slash + 1) == name) found.push_back(i);
   }
-  if (found.size() == 1) return found[0];
+  if (found.size() == 1) return found_[name] = found[0];
   if (found.empty()) {
     why = "no part '" + name + "'" + core::didYouMean(name, names);
     if (names.empty()) why += " (the model has none)";
@@ -185,6 +186,8 @@ std::optional<std::size_t> PartRun::find(const std::string& name, std::string& w
 }
 
 std::optional<std::size_t> PartRun::ofConstruct(const std::string& construct) const {
+  if (const auto it = of_construct_.find(construct); it != of_construct_.end()) return it->second;
+  auto& out = of_construct_[construct];
   // the deepest instance whose qualified name prefixes the construct's
   std::optional<std::size_t> best;
   std::size_t longest = 0;
@@ -199,9 +202,9 @@ std::optional<std::size_t> PartRun::ofConstruct(const std::string& construct) co
   // a control pattern's construct: its instance names the part it controls
   if (best && !instances_[*best].placed.controls.empty()) {
     std::string why;
-    return find(instances_[*best].placed.controls, why);
+    best = find(instances_[*best].placed.controls, why);
   }
-  return best;
+  return out = best;
 }
 
 const PartRun::Bound* PartRun::bound(std::size_t part, const std::string& io, std::string& why) const {
@@ -261,7 +264,7 @@ bool PartRun::write(std::size_t part, const std::string& io, double value, std::
   if (found == nullptr) return false;
   Bound& b = bound_[static_cast<std::size_t>(found - bound_.data())];
   if (b.spec->direction == IoDirection::Input) {
-    why = "'" + io + "' of part '" + instances_[part].placed.name + "' is an input: the plant sets it";
+    why = refusal(part, io, value);
     return false;
   }
   if (b.forced) {
@@ -273,21 +276,30 @@ bool PartRun::write(std::size_t part, const std::string& io, double value, std::
   return assign(b, value, why);
 }
 
+std::string PartRun::fieldRefusal(const Bound& b, double value) const {
+  if (b.spec->direction != IoDirection::Output || b.spec->signal != IoSignal::Analog) return {};
+  const scene::Node* node = sim_->plant()->resolve(b.node);
+  if (node == nullptr) return "its node was deleted";
+  return scene::refusal(*node, b.field, numberAs(b.kind, value), sim_->model().settings.angles);
+}
+
+std::string PartRun::refusal(std::size_t part, const std::string& io, double value) const {
+  std::string why;
+  const Bound* b = bound(part, io, why);
+  if (b == nullptr) return why;
+  if (b->spec->direction == IoDirection::Input) {
+    return "'" + io + "' of part '" + instances_[part].placed.name + "' is an input: the plant sets it";
+  }
+  return fieldRefusal(*b, value);
+}
+
 bool PartRun::force(std::size_t part, const std::string& io, double value, std::string& why) {
   const Bound* found = bound(part, io, why);
   if (found == nullptr) return false;
   const auto i = static_cast<std::size_t>(found - bound_.data());
-  const Bound& b = bound_[i];
-  if (b.spec->signal == IoSignal::Digital) value = value != 0.0 ? 1.0 : 0.0;
-  if (b.spec->direction == IoDirection::Output && b.spec->signal == IoSignal::Analog) {
-    const scene::Node* node = sim_->plant()->resolve(b.node);
-    if (node == nullptr) {
-      why = "its node was deleted";
-      return false;
-    }
-    why = scene::refusal(*node, b.field, numberAs(b.kind, value), sim_->model().settings.angles);
-    if (!why.empty()) return false;
-  }
+  if (found->spec->signal == IoSignal::Digital) value = value != 0.0 ? 1.0 : 0.0;
+  why = fieldRefusal(*found, value);
+  if (!why.empty()) return false;
   asked_[i] = value;
   return true;
 }

@@ -234,12 +234,15 @@ TEST(PartLibrary, TheSearchPathFollowsXdgThenTheInstallThenTheSourceTree) {
 }
 
 TEST(PartLibrary, AModelKeepsItsCopyAndRunsWithoutTheLibrary) {
-  const fs::path lib = scratch("lib");
+  // a library folder is searched with its subfolders
+  const fs::path lib = scratch("lib") / "parts";
   fs::create_directories(lib / "test");
   fs::copy_file(kLampFile, lib / "test" / "lamp.gdpn.yaml");
   core::Diagnostics diags;
   auto parts = scanParts({lib.string()}, diags);
   ASSERT_EQ(parts.size(), 2U) << diags.str();
+  // a model's folder is read without descending
+  EXPECT_TRUE(scanParts({lib.parent_path().string()}, diags).empty());
   const LibraryPart* lamp = findLibraryPart(parts, "lamp");
   ASSERT_TRUE(lamp);
   EXPECT_FALSE(lamp->pattern);

@@ -34,8 +34,9 @@ struct LibraryPart {
 /// `share/gdpn/parts`, then the source tree's `parts/` (the build's own library).
 std::vector<std::string> partSearchPath(const std::string& model_dir);
 
-/// Every part in the part files of `path` (each folder searched with its subfolders, except
-/// `model_dir`'s own files, read without descending), sorted by group then name; where two
+/// Every part in the part files of `path` (a folder named `parts` searched with its
+/// subfolders, any other, such as a model's own folder, without descending), sorted by group
+/// then name; where two
 /// files hold a part of one name, the higher version wins, and of one version the earlier
 /// folder's (a model beside the model holds copies of the parts it uses: an older copy never
 /// hides the library's newer version). A file that does not load is a

@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -72,6 +73,10 @@ class PartRun {
   /// name or a value the field refuses.
   bool write(std::size_t part, const std::string& io, double value, std::string& why);
 
+  /// Why output `io` of `part` would refuse `value` ("" when it takes it): no such output,
+  /// an input, or a value its field refuses. Nothing is written.
+  [[nodiscard]] std::string refusal(std::size_t part, const std::string& io, double value) const;
+
   /// Forces `io` of `part` to `value` from the next step boundary on: an input reads it
   /// whatever the plant says; an output holds it whatever is written. False and `why` when
   /// there is no such I/O or an output's field refuses the value.
@@ -94,11 +99,14 @@ class PartRun {
   [[nodiscard]] const Bound* bound(std::size_t part, const std::string& io, std::string& why) const;
   [[nodiscard]] double plantValue(const Bound& b) const;  // what the plant says, no force
   bool assign(Bound& b, double value, std::string& why);   // sets an output's field
+  [[nodiscard]] std::string fieldRefusal(const Bound& b, double value) const;  // an analogue output's field's "no"
   Simulation* sim_;
   std::vector<Instance> instances_;
   std::vector<Bound> bound_;                         // every I/O of every part, by part then declaration
   std::vector<std::size_t> first_;                   // per part: its first entry in bound_
   std::map<std::size_t, std::optional<double>> asked_;  // bound_ index -> force (a value) or release (none)
+  // what names found: scripts ask every step, and a run's parts do not change
+  mutable std::unordered_map<std::string, std::optional<std::size_t>> found_, of_construct_;
  public:
   ~PartRun();
   PartRun(const PartRun&) = delete;
