@@ -27,6 +27,8 @@ struct PartsArgs {
   double angle = 0;                 ///< --angle
   std::string page = "main";        ///< --page
   bool control = false;             ///< --control
+  std::string pattern;              ///< --pattern NAME
+  std::vector<std::string> uses;    ///< --use ROLE=PART (repeatable)
   std::string map;                  ///< --map INSTANCE
   bool update = false;              ///< --update
   std::string make;                 ///< --make NAME
@@ -64,10 +66,24 @@ void listLibrary(const std::vector<model::LibraryPart>& parts, const std::vector
   std::cout << "\n";
 }
 
-void showPart(const model::LibraryPart& p) {
+void showPart(const model::LibraryPart& p, const std::vector<model::LibraryPart>& library) {
   std::cout << p.name << " (version " << p.spec.version << (p.spec.group.empty() ? "" : ", " + p.spec.group) << "): "
             << p.description << "\n  " << p.file << "\n";
-  if (!p.spec.control.empty()) std::cout << "  control pattern: " << p.spec.control << "\n";
+  for (const auto& pattern : library) {
+    if (!pattern.pattern || pattern.spec.controls != p.name) continue;
+    const std::string head = "  control pattern " + pattern.name + (pattern.name == p.spec.control ? " (usual):" : ":");
+    std::cout << head;
+    core::writeWrapped(std::cout, head.size(), core::words(pattern.description), 4);
+    std::cout << "\n";
+    for (const auto& u : pattern.spec.uses) {
+      std::string io;
+      for (const auto& n : u.io) io += (io.empty() ? "" : ", ") + n;
+      const std::string use = "    uses " + u.name + (u.optional ? " (optional)" : "") + ":";
+      std::cout << use;
+      core::writeWrapped(std::cout, use.size(), core::words("a part with " + io + (u.description.empty() ? "" : ": " + u.description)), 6);
+      std::cout << "\n";
+    }
+  }
   if (!p.spec.params.empty()) std::cout << "\nparameter        value  unit   meaning\n";
   for (const auto& q : p.spec.params) {
     std::cout << "  " << std::left << std::setw(14) << q.name << std::right << std::setw(6)
@@ -110,7 +126,7 @@ int parts(const PartsArgs& args) {
                 << "\n";
       return 1;
     }
-    showPart(*p);
+    showPart(*p, library);
     return 0;
   }
   bool changed = false;
@@ -125,8 +141,27 @@ int parts(const PartsArgs& args) {
     std::string why;
     std::array<double, 3> at{0, 0, 0};
     for (std::size_t k = 0; k < args.at.size() && k < 3; ++k) at[k] = args.at[k];
-    const auto names = model::placePart(*m, args.page, *p, at, args.angle, args.control, why, args.name);
-    if (names.empty() || (args.control && names.size() < 2)) {
+    std::vector<net::InstanceSpec::Use> uses;
+    for (const auto& u : args.uses) {
+      const auto eq = u.find('=');
+      if (eq == std::string::npos || eq == 0 || eq + 1 == u.size()) {
+        std::cerr << "--use: error: '" << u << "' is not ROLE=PART (eye=diffuse_sensor1)\n";
+        return 1;
+      }
+      uses.push_back({u.substr(0, eq), u.substr(eq + 1), {}});
+    }
+    const bool control = args.control || !args.pattern.empty() || !uses.empty();
+    std::vector<std::string> names;
+    if (control && uses.empty()) {
+      names = model::placePart(*m, args.page, *p, at, args.angle, true, why, args.name, args.pattern);
+    } else {
+      names = model::placePart(*m, args.page, *p, at, args.angle, false, why, args.name);
+      if (!names.empty() && control) {
+        const auto c = model::addPartControl(*m, args.page, names.front(), why, args.pattern, uses);
+        if (!c.empty()) names.push_back(c);
+      }
+    }
+    if (names.empty() || (control && names.size() < 2)) {
       std::cerr << "--add: error: " << why << "\n";
       if (names.empty()) return 1;
     }
@@ -234,7 +269,10 @@ Subcommand addParts(CLI::App& app) {
   cmd->add_option("--at", args->at, "with --add: where it stands, X Y Z in m")->expected(3);
   cmd->add_option("--angle", args->angle, "with --add: turned by this many degrees about z");
   cmd->add_option("--page", args->page, "with --add and --map: the page (default main)");
-  cmd->add_flag("--control", args->control, "with --add: also an instance of its control pattern, bound to it");
+  cmd->add_flag("--control", args->control, "with --add: also an instance of its usual control pattern, bound to it "
+                                            "(its roles filled by the nearest parts that fit)");
+  cmd->add_option("--pattern", args->pattern, "with --add: this control pattern of the part rather than its usual one");
+  cmd->add_option("--use", args->uses, "with --add: ROLE=PART fills a role of the control pattern (repeatable)");
   cmd->add_option("--map", args->map, "with --model: map this part instance's I/O into the io section");
   cmd->add_flag("--update", args->update, "with --model: take the library's newer versions of its parts");
   cmd->add_option("--make", args->make, "with --model and --from: make a new part of this name from scene nodes");

@@ -390,7 +390,7 @@ class ModelReader {
     PartSpec part;
     part.loc = page.loc;
     std::map<std::string, detail::ParamValue> with_own = param_values_;
-    const bool is_part = type && (pe.value["part"] || pe.value["params"] || pe.value["io"]);
+    const bool is_part = type && (pe.value["part"] || pe.value["params"] || pe.value["io"] || pe.value["uses"]);
     if (type && pe.value["params"]) {
       readParams(pe.value["params"], part.params);
       for (const auto& p : part.params) with_own[p.name] = {p.value, p.integer};
@@ -426,6 +426,8 @@ class ModelReader {
         readPartMeta(e, part);
       } else if (e.key == "io") {
         readPartIo(e, part);
+      } else if (e.key == "uses") {
+        readPartUses(e, part);
       }
     }
     if (is_part && parts_) (*parts_)[page.name] = std::move(part);
@@ -451,6 +453,43 @@ class ModelReader {
         else if (e.key == "control") part.control = *text;
         else if (e.key == "controls") part.controls = *text;
       }
+    }
+  }
+
+  /// A control pattern's `uses`: the roles other parts fill.
+  void readPartUses(const Entry& section, PartSpec& part) {
+    if (section.value.IsNull() || !r_.expectMap(section.value, "uses")) return;
+    for (const auto& e : r_.entries(section.value, "uses", {})) {
+      if (!identifier(e, "a role's")) continue;
+      PartUse use;
+      use.name = e.key;
+      use.loc = e.loc;
+      const std::string what = "role '" + use.name + "'";
+      if (!r_.expectMap(e.value, what)) continue;
+      for (const auto& f : r_.entries(e.value, what, keyNames(Section::PartUse))) {
+        if (f.key == "io") {
+          if (!r_.expectList(f.value, "io")) continue;
+          for (const auto& item : f.value) {
+            if (auto s = r_.string(item, "an I/O's name")) use.io.push_back(*s);
+          }
+        } else if (auto text = r_.string(f.value, f.key)) {
+          if (f.key == "description") {
+            use.description = *text;
+          } else if (f.key == "optional") {
+            if (!isChoice(Section::PartUse, f.key, *text)) {
+              r_.error(f.value, "'optional' is true or false, got '" + *text + "'");
+              continue;
+            }
+            use.optional = *text == "true";
+          }
+        }
+      }
+      if (use.io.empty()) {
+        r_.error(e.loc, what + " needs 'io': the I/O a part must have to fill it");
+        continue;
+      }
+      if (part.findUse(use.name)) continue;  // entries() reported the duplicate key
+      part.uses.push_back(std::move(use));
     }
   }
 
@@ -849,6 +888,11 @@ class ModelReader {
       } else if (e.key == "part") {
         if (auto s = r_.string(e.value, "part")) i.part = *s;
         i.part_loc = r_.loc(e.value, e.loc);
+      } else if (e.key == "uses") {
+        if (e.value.IsNull() || !r_.expectMap(e.value, "uses")) continue;
+        for (const auto& u : r_.entries(e.value, "uses", {})) {
+          if (auto s = r_.string(u.value, u.key)) i.uses.push_back({u.key, *s, r_.loc(u.value, u.loc)});
+        }
       }
     }
     if (!has_type) r_.error(ie.loc, "instance '" + i.name + "' has no 'type'");

@@ -3,6 +3,7 @@
 #include "gdpn/model/part_library.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
@@ -252,7 +253,7 @@ std::string freeInstanceName(const Model& model, const std::string& page, const 
 
 std::vector<std::string> placePart(Model& model, const std::string& page, const LibraryPart& part,
                                    const std::array<double, 3>& translation, double angle, bool control,
-                                   std::string& why, const std::string& name) {
+                                   std::string& why, const std::string& name, const std::string& pattern) {
   if (part.pattern) {
     why = "'" + part.name + "' is a control pattern: place the part it controls (" + part.spec.controls + ")";
     return {};
@@ -283,31 +284,85 @@ std::vector<std::string> placePart(Model& model, const std::string& page, const 
   inst.rotation = {0, 0, 1, angle};
   target->instances.push_back(inst);
   out.push_back(inst.name);
-  // its control pattern: the one the part names, else one that says it controls the part
-  std::string pattern;
   if (control) {
-    const auto& spec = model.parts.at(part.name);
-    pattern = spec.control;
-    if (pattern.empty()) {
-      for (const auto& [type, s] : model.parts) {
-        if (s.controls == part.name) pattern = type;
-      }
-    }
-    if (pattern.empty() || !pageType(model, pattern)) {
-      why = "'" + part.name + "' comes with no control pattern";
-      return out;
-    }
-    net::InstanceSpec c;
-    c.name = taken(inst.name + "_control") ? freeInstanceName(model, page, inst.name + "_control") : inst.name + "_control";
-    c.type = pattern;
-    c.part = inst.name;
-    target->instances.push_back(c);
-    out.push_back(c.name);
+    const std::string c = addPartControl(model, page, inst.name, why, pattern);
+    if (!c.empty()) out.push_back(c);
   }
   return out;
 }
 
-std::string addPartControl(Model& model, const std::string& page, const std::string& instance, std::string& why) {
+std::vector<std::string> controlPatterns(const Model& model, const std::string& type) {
+  std::vector<std::string> out;
+  const auto spec = model.parts.find(type);
+  if (spec != model.parts.end() && !spec->second.control.empty() && pageType(model, spec->second.control)) {
+    out.push_back(spec->second.control);
+  }
+  for (const auto& t : model.net.page_types) {
+    const auto s = model.parts.find(t.name);
+    if (s != model.parts.end() && s->second.controls == type && std::find(out.begin(), out.end(), t.name) == out.end()) {
+      out.push_back(t.name);
+    }
+  }
+  return out;
+}
+
+std::vector<net::InstanceSpec::Use> fillRoles(const Model& model, const std::string& page, const std::string& instance,
+                                              const std::string& pattern,
+                                              const std::vector<net::InstanceSpec::Use>& given, std::string& why) {
+  const net::PageSpec* target = nullptr;
+  for (const auto& p : model.net.pages) {
+    if (p.name == page) target = &p;
+  }
+  const auto spec = model.parts.find(pattern);
+  const net::InstanceSpec* self = nullptr;
+  for (const auto& i : target ? target->instances : std::vector<net::InstanceSpec>{}) {
+    if (i.name == instance) self = &i;
+  }
+  if (target == nullptr || spec == model.parts.end() || self == nullptr) {
+    why = "no part instance '" + instance + "' on page '" + page + "', or no control pattern '" + pattern + "'";
+    return {};
+  }
+  std::vector<net::InstanceSpec::Use> out;
+  for (const auto& u : given) {
+    if (!spec->second.findUse(u.role)) {
+      why = "'" + pattern + "' has no role '" + u.role + "'";
+      return {};
+    }
+  }
+  for (const auto& role : spec->second.uses) {
+    const auto set = std::find_if(given.begin(), given.end(), [&](const auto& u) { return u.role == role.name; });
+    if (set != given.end()) {
+      out.push_back(*set);
+      continue;
+    }
+    // the nearest part instance that has the role's I/O (the first of equals)
+    const net::InstanceSpec* best = nullptr;
+    double best_d = 0;
+    for (const auto& i : target->instances) {
+      const auto s = model.parts.find(i.type);
+      if (i.name == instance || s == model.parts.end() || !s->second.controls.empty() || !s->second.fills(role)) continue;
+      const double d = std::hypot(i.translation[0] - self->translation[0], i.translation[1] - self->translation[1],
+                                  i.translation[2] - self->translation[2]);
+      if (best == nullptr || d < best_d) {
+        best = &i;
+        best_d = d;
+      }
+    }
+    if (best != nullptr) {
+      out.push_back({role.name, best->name, {}});
+    } else if (!role.optional) {
+      std::string needs;
+      for (const auto& n : role.io) needs += (needs.empty() ? "" : ", ") + n;
+      why = "'" + pattern + "' needs a part with " + needs + " for its role '" + role.name + "'" +
+            (role.description.empty() ? "" : " (" + role.description + ")") + ": place one on page '" + page + "' first";
+      return {};
+    }
+  }
+  return out;
+}
+
+std::string addPartControl(Model& model, const std::string& page, const std::string& instance, std::string& why,
+                           const std::string& pattern_wanted, const std::vector<net::InstanceSpec::Use>& uses) {
   auto target = std::find_if(model.net.pages.begin(), model.net.pages.end(),
                              [&](const net::PageSpec& p) { return p.name == page; });
   const net::InstanceSpec* inst = nullptr;
@@ -321,15 +376,16 @@ std::string addPartControl(Model& model, const std::string& page, const std::str
     why = "no part instance '" + instance + "' on page '" + page + "'";
     return {};
   }
-  // the pattern the part names, else one that says it controls the part
-  std::string pattern = spec->second.control;
-  if (pattern.empty()) {
-    for (const auto& [type, s] : model.parts) {
-      if (s.controls == inst->type) pattern = type;
-    }
-  }
-  if (pattern.empty() || !pageType(model, pattern)) {
+  const auto patterns = controlPatterns(model, inst->type);
+  if (patterns.empty()) {
     why = "'" + inst->type + "' comes with no control pattern in the model";
+    return {};
+  }
+  const std::string pattern = pattern_wanted.empty() ? patterns.front() : pattern_wanted;
+  if (std::find(patterns.begin(), patterns.end(), pattern) == patterns.end()) {
+    std::string list;
+    for (const auto& p : patterns) list += (list.empty() ? "" : ", ") + p;
+    why = "'" + pattern + "' is no control pattern of '" + inst->type + "' (it has: " + list + ")";
     return {};
   }
   for (const auto& i : target->instances) {
@@ -338,14 +394,25 @@ std::string addPartControl(Model& model, const std::string& page, const std::str
       return {};
     }
   }
+  std::string unfilled;
+  auto filled = fillRoles(model, page, instance, pattern, uses, unfilled);
+  if (!unfilled.empty()) {
+    why = unfilled;
+    return {};
+  }
   net::InstanceSpec c;
-  const std::string wanted = instance + "_control";
+  const bool usual = pattern == spec->second.control || (spec->second.control.empty() && pattern == patterns.front());
+  // named after the part and what the pattern does (`pusher1_control`, `pusher1_sort`)
+  std::string suffix = "_control";
+  if (!usual && pattern.starts_with(inst->type + "_")) suffix = pattern.substr(inst->type.size());
+  const std::string wanted = instance + suffix;
   const bool taken = std::any_of(target->instances.begin(), target->instances.end(), [&](const auto& i) { return i.name == wanted; }) ||
                      std::any_of(target->places.begin(), target->places.end(), [&](const auto& i) { return i.name == wanted; }) ||
                      std::any_of(target->transitions.begin(), target->transitions.end(), [&](const auto& i) { return i.name == wanted; });
   c.name = taken ? freeInstanceName(model, page, wanted) : wanted;
   c.type = pattern;
   c.part = instance;
+  c.uses = std::move(filled);
   target->instances.push_back(std::move(c));
   return target->instances.back().name;
 }
@@ -546,6 +613,17 @@ std::string cell(const std::string& text) {
   return out;
 }
 
+/// A Markdown table of `params` (nothing when there are none).
+void paramsTable(std::string& out, const std::vector<Param>& params) {
+  if (params.empty()) return;
+  out += "| parameter | default | unit | meaning |\n| --- | --- | --- | --- |\n";
+  for (const auto& q : params) {
+    out += "| `" + q.name + "` | " + core::formatDouble(q.declared) + " | " + cell(q.unit) + " | " + cell(q.description) +
+           " |\n";
+  }
+  out += "\n";
+}
+
 }  // namespace
 
 std::string partsMarkdown(const std::vector<LibraryPart>& parts, const std::string& docs_dir) {
@@ -564,14 +642,7 @@ std::string partsMarkdown(const std::vector<LibraryPart>& parts, const std::stri
       out += "![" + p.name + "](" + (ec ? p.picture : rel.generic_string()) + ")\n\n";
     }
     if (!p.description.empty()) out += p.description + "\n\n";
-    if (!p.spec.params.empty()) {
-      out += "| parameter | default | unit | meaning |\n| --- | --- | --- | --- |\n";
-      for (const auto& q : p.spec.params) {
-        out += "| `" + q.name + "` | " + core::formatDouble(q.declared) + " | " + cell(q.unit) + " | " +
-               cell(q.description) + " |\n";
-      }
-      out += "\n";
-    }
+    paramsTable(out, p.spec.params);
     if (!p.spec.io.empty()) {
       out += "| I/O | kind | unit | meaning |\n| --- | --- | --- | --- |\n";
       for (const auto& io : p.spec.io) {
@@ -582,7 +653,19 @@ std::string partsMarkdown(const std::vector<LibraryPart>& parts, const std::stri
     }
     for (const auto& c : parts) {
       if (c.pattern && c.spec.controls == p.name) {
-        out += "Control pattern `" + c.name + "`" + (c.description.empty() ? "" : ": " + c.description) + "\n\n";
+        out += "Control pattern `" + c.name + "`" + (c.name == p.spec.control ? " (its usual one)" : "") +
+               (c.description.empty() ? "" : ": " + c.description) + "\n\n";
+        paramsTable(out, c.spec.params);
+        if (!c.spec.uses.empty()) {
+          out += "| uses | a part with | meaning |\n| --- | --- | --- |\n";
+          for (const auto& u : c.spec.uses) {
+            std::string io;
+            for (const auto& n : u.io) io += (io.empty() ? "`" : ", `") + n + "`";
+            out += "| `" + u.name + "`" + (u.optional ? " (optional)" : "") + " | " + io + " | " + cell(u.description) +
+                   " |\n";
+          }
+          out += "\n";
+        }
       }
     }
   }

@@ -185,9 +185,9 @@ std::optional<std::size_t> PartRun::find(const std::string& name, std::string& w
   return std::nullopt;
 }
 
-std::optional<std::size_t> PartRun::ofConstruct(const std::string& construct) const {
-  if (const auto it = of_construct_.find(construct); it != of_construct_.end()) return it->second;
-  auto& out = of_construct_[construct];
+std::optional<std::size_t> PartRun::ownerOf(const std::string& construct) const {
+  if (const auto it = owner_of_.find(construct); it != owner_of_.end()) return it->second;
+  auto& out = owner_of_[construct];
   // the deepest instance whose qualified name prefixes the construct's
   std::optional<std::size_t> best;
   std::size_t longest = 0;
@@ -199,6 +199,28 @@ std::optional<std::size_t> PartRun::ofConstruct(const std::string& construct) co
       longest = q.size();
     }
   }
+  return out = best;
+}
+
+std::vector<std::pair<std::string, std::optional<std::size_t>>> PartRun::usesOf(std::size_t owner) const {
+  std::vector<std::pair<std::string, std::optional<std::size_t>>> out;
+  if (owner >= instances_.size()) return out;
+  const auto& inst = instances_[owner];
+  for (const auto& role : inst.spec->uses) {
+    std::optional<std::size_t> filled;
+    for (const auto& [name, part] : inst.placed.uses) {
+      std::string why;
+      if (name == role.name) filled = find(part, why);
+    }
+    out.emplace_back(role.name, filled);
+  }
+  return out;
+}
+
+std::optional<std::size_t> PartRun::ofConstruct(const std::string& construct) const {
+  if (const auto it = of_construct_.find(construct); it != of_construct_.end()) return it->second;
+  auto& out = of_construct_[construct];
+  std::optional<std::size_t> best = ownerOf(construct);
   // a control pattern's construct: its instance names the part it controls
   if (best && !instances_[*best].placed.controls.empty()) {
     std::string why;

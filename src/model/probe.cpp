@@ -102,6 +102,20 @@ std::optional<Probe> nodeProbe(const Simulation& sim, const std::string& path, c
     }
     p.what = q == "angle" ? Probe::What::JointAngle : Probe::What::JointRate;
     p.linear = node->choice<scene::JointKind>(scene::field::Joint::Kind) == scene::JointKind::Slider;
+  } else if (q.starts_with("item.")) {
+    const bool items = kind != nullptr && std::any_of(kind->channels.begin(), kind->channels.end(), [](const auto& ch) {
+                         return ch.type == sensors::ChannelType::Items;
+                       });
+    if (!items) {
+      why = "'" + path + "' is no sensor of items: it has no " + q;
+      return std::nullopt;
+    }
+    p.what = Probe::What::ItemDatum;
+    p.key = q.substr(5);
+    if (p.key.empty()) {
+      why = "'item.' names no datum: write item.KEY (item.colour_code)";
+      return std::nullopt;
+    }
   } else if (q == "reading" || q == "active") {
     if (!sensor) {
       why = "'" + path + "' is no sensor: it has no " + q;
@@ -205,6 +219,23 @@ bool readProbe(const Simulation& sim, const Probe& p, double* out) {
       if (k < 0) return false;
       const auto& keys = r.get<std::vector<std::string>>(static_cast<std::size_t>(k));
       *out = std::find(keys.begin(), keys.end(), p.key) != keys.end() ? 1.0 : 0.0;
+      break;
+    }
+    case Probe::What::ItemDatum: {
+      *out = 0.0;
+      const auto& r = sim.reading(p.node);
+      for (std::size_t c = 0; c < r.channels().size(); ++c) {
+        const auto* items = std::get_if<std::vector<scene::NodeHandle>>(&r.value(c));
+        if (items == nullptr) continue;
+        const scene::Node* item = items->empty() ? nullptr : sim.plant()->resolve(items->front());
+        for (const auto& [name, value] : item ? item->data : scene::UserData{}) {
+          if (name != p.key) continue;
+          if (const auto* d = std::get_if<double>(&value)) *out = *d;
+          else if (const auto* i = std::get_if<std::int64_t>(&value)) *out = static_cast<double>(*i);
+          else if (const auto* b = std::get_if<bool>(&value)) *out = *b ? 1.0 : 0.0;
+        }
+        break;
+      }
       break;
     }
     case Probe::What::Field: {

@@ -245,6 +245,13 @@ void writeInstance(YAML::Emitter& out, const net::InstanceSpec& i) {
                                out << YAML::EndMap;
                              }},
                             {"part", [&] { if (!i.part.empty()) out << YAML::Key << "part" << YAML::Value << i.part; }},
+                            {"uses",
+                             [&] {
+                               if (i.uses.empty()) return;
+                               out << YAML::Key << "uses" << YAML::Value << YAML::Flow << YAML::BeginMap;
+                               for (const auto& u : i.uses) out << YAML::Key << u.role << YAML::Value << u.part;
+                               out << YAML::EndMap;
+                             }},
                         });
   out << YAML::EndMap;
 }
@@ -314,6 +321,30 @@ std::vector<schema::KeyWriter> partWriters(YAML::Emitter& out, const PartSpec& p
                    {"field", [&] { text("field", io.field); }},
                    {"on", [&] { writeOnOff(o, "on", io.on); }},
                    {"off", [&] { writeOnOff(o, "off", io.off); }},
+               });
+           o << YAML::EndMap;
+         });
+       }},
+      {"uses",
+       [&] {
+         namedMap(out, "uses", part.uses, [](YAML::Emitter& o, const PartUse& use) {
+           o << YAML::Key << use.name << YAML::Value << YAML::Flow << YAML::BeginMap;
+           schema::inSchemaOrder(
+               Section::PartUse,
+               {
+                   {"io",
+                    [&] {
+                      o << YAML::Key << "io" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+                      for (const auto& n : use.io) o << n;
+                      o << YAML::EndSeq;
+                    }},
+                   {"optional", [&] { if (use.optional) o << YAML::Key << "optional" << YAML::Value << true; }},
+                   {"description",
+                    [&] {
+                      if (!use.description.empty()) {
+                        o << YAML::Key << "description" << YAML::Value << YAML::DoubleQuoted << use.description;
+                      }
+                    }},
                });
            o << YAML::EndMap;
          });

@@ -194,6 +194,10 @@ std::vector<KeyDesc> pageKeys(bool type) {
                         "map name → parameter"));
     keys.push_back(form(k("io", ValueType::Map, "", "its named inputs and outputs, each bound to a node of its scene"),
                         "map name → I/O"));
+    keys.push_back(form(k("uses", ValueType::Map, "",
+                          "a control pattern's: the other parts it works with, each a role that any part with the "
+                          "named I/O fills (a photo-eye, a belt); scripts reach them as `self.uses.ROLE`"),
+                        "map role → use"));
   }
   return keys;
 }
@@ -288,6 +292,8 @@ std::vector<KeyDesc> instanceKeys() {
       form(k("params", ValueType::Map, "", "values for the type's parameters (the others keep the type's)"),
            "map name → number"),
       k("part", ValueType::Name, "", "a control pattern's: the part instance on this page it controls"),
+      form(k("uses", ValueType::Map, "", "a control pattern's: the part instance on this page that fills each of its roles"),
+           "map role → instance name"),
   };
 }
 
@@ -315,6 +321,14 @@ std::vector<KeyDesc> partIoKeys() {
       form(k("on", ValueType::Number, "1", "a digital output's value for 1 (a vector field's: three numbers)"),
            "number or list"),
       form(k("off", ValueType::Number, "0", "a digital output's value for 0"), "number or list"),
+  };
+}
+
+std::vector<KeyDesc> partUseKeys() {
+  return {
+      form(k("io", ValueType::List, "", "the I/O a part needs to fill the role (`[detected, colour]`)"), "list of names"),
+      word("optional", {"false", "true"}, "an instance may leave it unfilled (scripts see None)"),
+      k("description", ValueType::Text, "", "what it is for, for people"),
   };
 }
 
@@ -357,6 +371,7 @@ std::vector<KeyDesc> build(Section section) {
     case Section::Duration: return durationKeys();
     case Section::Part: return partKeys();
     case Section::PartIo: return partIoKeys();
+    case Section::PartUse: return partUseKeys();
   }
   return {};
 }
@@ -517,6 +532,7 @@ std::string_view sectionName(Section section) {
     case Section::Duration: return "duration";
     case Section::Part: return "part";
     case Section::PartIo: return "part_io";
+    case Section::PartUse: return "part_use";
   }
   return "?";
 }

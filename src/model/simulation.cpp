@@ -103,6 +103,7 @@ class InstancePlacer {
       placed.loc = inst.loc;
       if (part != model_.parts.end()) resolveParams(inst, part->second, placed);
       checkControl(page, prefix, inst, part == model_.parts.end() ? nullptr : &part->second, placed);
+      checkUses(page, prefix, inst, part == model_.parts.end() ? nullptr : &part->second, placed);
       scene::Node* frame = nullptr;
       if (scene_ && parent && ownsScene(*type->second)) {
         frame = scene_->create(*scene_->types().find(scene::NodeKind::Transform), inst.name, *parent);
@@ -187,6 +188,57 @@ class InstancePlacer {
       return;
     }
     placed.controls = prefix + "/" + inst.part;
+  }
+
+  /// A control pattern's instance fills each of its roles with a part instance on its page that
+  /// has the role's I/O (an optional role may stay unfilled).
+  void checkUses(const net::PageSpec& page, const std::string& prefix, const net::InstanceSpec& inst,
+                 const PartSpec* part, PlacedPart& placed) {
+    const std::vector<PartUse> none;
+    const auto& roles = part ? part->uses : none;
+    for (const auto& u : inst.uses) {
+      const PartUse* role = part ? part->findUse(u.role) : nullptr;
+      if (role == nullptr) {
+        std::vector<std::string> names;
+        for (const auto& r : roles) names.push_back(r.name);
+        diags_.error(u.loc, "page type '" + inst.type + "' has no role '" + u.role + "'" + core::didYouMean(u.role, names) +
+                                (names.empty() ? " (it uses no other parts)" : ""));
+        continue;
+      }
+      const auto target = std::find_if(page.instances.begin(), page.instances.end(),
+                                        [&](const net::InstanceSpec& i) { return i.name == u.part; });
+      const auto spec = target == page.instances.end() ? model_.parts.end() : model_.parts.find(target->type);
+      std::string needs;
+      for (const auto& n : role->io) needs += (needs.empty() ? "" : ", ") + n;
+      if (spec == model_.parts.end()) {
+        std::vector<std::string> names;
+        for (const auto& i : page.instances) {
+          const auto s = model_.parts.find(i.type);
+          if (s != model_.parts.end() && s->second.fills(*role)) names.push_back(i.name);
+        }
+        diags_.error(u.loc, "no part instance '" + u.part + "' on page '" + page.name + "'" +
+                                core::didYouMean(u.part, names));
+        continue;
+      }
+      if (!spec->second.fills(*role)) {
+        std::string missing;
+        for (const auto& n : role->io) {
+          if (!spec->second.findIo(n)) missing += (missing.empty() ? "" : ", ") + n;
+        }
+        diags_.error(u.loc, "'" + u.part + "' is a " + target->type + ", which has no " + missing + ": role '" +
+                                u.role + "' of '" + inst.type + "' needs a part with " + needs);
+        continue;
+      }
+      placed.uses.emplace_back(u.role, prefix + "/" + u.part);
+    }
+    for (const auto& r : roles) {
+      const bool filled = std::any_of(inst.uses.begin(), inst.uses.end(), [&](const auto& u) { return u.role == r.name; });
+      if (filled || r.optional) continue;
+      std::string needs;
+      for (const auto& n : r.io) needs += (needs.empty() ? "" : ", ") + n;
+      diags_.error(inst.loc, "instance '" + inst.name + "' of '" + inst.type + "' needs 'uses: {" + r.name +
+                                 ": ...}': a part with " + needs + (r.description.empty() ? "" : " (" + r.description + ")"));
+    }
   }
 
   /// Gives every field of the copy under `frame` that refers to parameters its value for this
@@ -395,6 +447,8 @@ bool Simulation::makeEngine(core::Diagnostics& diags) {
     auto& access = callbacks.parts;
     access.find = [parts](const std::string& name, std::string& why) { return parts->find(name, why); };
     access.of_construct = [parts](const std::string& construct) { return parts->ofConstruct(construct); };
+    access.owner = [parts](const std::string& construct) { return parts->ownerOf(construct); };
+    access.uses = [parts](std::size_t owner) { return parts->usesOf(owner); };
     access.name = [parts](std::size_t i) { return parts->instances()[i].placed.name; };
     access.io = [parts](std::size_t i) {
       std::vector<std::pair<std::string, bool>> out;

@@ -64,6 +64,36 @@ struct PartView {  // sim.part(name): a part instance's I/O and parameters
   std::size_t part;
 };
 
+struct UsesView {  // self.uses: the parts a control pattern's instance works with, by role
+  Ref r;
+  std::optional<std::size_t> owner;  // none: the construct belongs to no part's instance
+  std::string construct;             // the construct asking, for messages
+};
+
+/// The roles of the control pattern instance the construct `name` belongs to.
+py::object usesOf(Context& ctx, const std::string& name) {
+  const auto& parts = ctx.parts();
+  return py::cast(UsesView{refTo(ctx), parts.owner ? parts.owner(name) : std::nullopt, name});
+}
+
+/// The parameters of part or control pattern instance `part` as `sim.params` shows the model's.
+py::object paramsOfPart(Context& ctx, std::size_t part) {
+  py::dict values;
+  for (const auto& p : ctx.parts().params(part)) {
+    if (p.integer) values[py::str(p.name)] = py::int_(static_cast<long long>(p.value));
+    else values[py::str(p.name)] = py::float_(p.value);
+  }
+  return makeParamsView(std::move(values));
+}
+
+/// The parameters of the part or control pattern instance the construct `name` belongs to
+/// (none outside one).
+py::object paramsOf(Context& ctx, const std::string& name) {
+  const auto& parts = ctx.parts();
+  const auto owner = parts.owner ? parts.owner(name) : std::nullopt;
+  return owner ? paramsOfPart(ctx, *owner) : makeParamsView(py::dict());
+}
+
 /// The part view of the part the construct `name` belongs to or controls, or None.
 py::object partOf(Context& ctx, const std::string& name) {
   const auto& parts = ctx.parts();
@@ -897,6 +927,12 @@ void registerTransitionView(py::module_& m) {
       .def_property_readonly(
           "part", [](const TransitionView& v) { return partOf(v.r.get(), v.r.get().netRef().transitionName(v.t)); },
           "the part its instance is, or controls (a control pattern's), or None")
+      .def_property_readonly(
+          "uses", [](const TransitionView& v) { return usesOf(v.r.get(), v.r.get().netRef().transitionName(v.t)); },
+          "a control pattern's: the parts its instance works with, by role (`self.uses.eye`; None: left unfilled)")
+      .def_property_readonly(
+          "params", [](const TransitionView& v) { return paramsOf(v.r.get(), v.r.get().netRef().transitionName(v.t)); },
+          "the parameters of the part or control pattern instance it belongs to")
       .def("__getattr__", [](const TransitionView& v, const std::string& name) { return slotAttr(v.r, true, v.t, name); })
       .def("__repr__", [](const TransitionView& v) {
         return "<transition " + v.r.get().netRef().transitionName(v.t) + ">";
@@ -914,6 +950,12 @@ void registerPlaceView(py::module_& m) {
       .def_property_readonly(
           "part", [](const PlaceView& v) { return partOf(v.r.get(), v.r.get().netRef().placeName(v.p)); },
           "the part its instance is, or controls (a control pattern's), or None")
+      .def_property_readonly(
+          "uses", [](const PlaceView& v) { return usesOf(v.r.get(), v.r.get().netRef().placeName(v.p)); },
+          "a control pattern's: the parts its instance works with, by role (`self.uses.eye`; None: left unfilled)")
+      .def_property_readonly(
+          "params", [](const PlaceView& v) { return paramsOf(v.r.get(), v.r.get().netRef().placeName(v.p)); },
+          "the parameters of the part or control pattern instance it belongs to")
       .def_property_readonly(
           "instance", [](const PlaceView& v) { return instanceOf(v.r.get(), v.r.get().netRef().placeName(v.p)); },
           "the scene node of its page type's instance, or None on a top-level page")
@@ -970,6 +1012,42 @@ void registerParamsView(py::module_& m) {
       .def("__repr__", [](const ParamsView& v) { return "<sim.params " + py::repr(v.values).cast<std::string>() + ">"; });
 }
 
+/// Registers `gdpn_script.Uses`: a control pattern instance's roles, each a part (or None).
+void registerUsesView(py::module_& m) {
+  py::class_<UsesView>(m, "Uses", "The parts a control pattern's instance works with, by role, as attributes")
+      .def("__getattr__",
+           [](const UsesView& v, const std::string& role) -> py::object {
+             const auto& parts = v.r.get().parts();
+             if (!v.owner) {
+               throw py::attribute_error("'" + v.construct + "' belongs to no control pattern's instance: it uses no parts");
+             }
+             std::string roles;
+             for (const auto& [name, part] : parts.uses(*v.owner)) {
+               if (name == role) return part ? py::cast(PartView{v.r, *part}) : py::object(py::none());
+               roles += (roles.empty() ? "" : ", ") + name;
+             }
+             throw py::attribute_error("'" + parts.name(*v.owner) + "' has no role '" + role + "' (it has: " +
+                                       (roles.empty() ? std::string("none") : roles) + ")");
+           })
+      .def("__dir__", [](const UsesView& v) {
+        py::list out;
+        if (!v.owner) return out;
+        for (const auto& [name, part] : v.r.get().parts().uses(*v.owner)) out.append(name);
+        return out;
+      })
+      .def("__repr__", [](const UsesView& v) {
+        const auto& parts = v.r.get().parts();
+        if (!v.owner) return "<uses of " + v.construct + ": none>";
+        std::string out = "<uses of " + parts.name(*v.owner);
+        const char* sep = ": ";
+        for (const auto& [name, part] : parts.uses(*v.owner)) {
+          out += sep + name + "=" + (part ? parts.name(*part) : std::string("None"));
+          sep = ", ";
+        }
+        return out + ">";
+      });
+}
+
 /// Registers `gdpn_script.Part`: a part instance, its I/O as attributes.
 void registerPartView(py::module_& m) {
   py::class_<PartView>(m, "Part", "A part instance: its inputs and outputs as attributes, its parameters as `params`")
@@ -980,14 +1058,8 @@ void registerPartView(py::module_& m) {
         for (const auto& [name, digital] : v.r.get().parts().io(v.part)) out.append(name);
         return out;
       }, "the names of its inputs and outputs")
-      .def_property_readonly("params", [](const PartView& v) {
-        py::dict values;
-        for (const auto& p : v.r.get().parts().params(v.part)) {
-          if (p.integer) values[py::str(p.name)] = py::int_(static_cast<long long>(p.value));
-          else values[py::str(p.name)] = py::float_(p.value);
-        }
-        return makeParamsView(std::move(values));
-      }, "its parameters as this instance has them")
+      .def_property_readonly("params", [](const PartView& v) { return paramsOfPart(v.r.get(), v.part); },
+                             "its parameters as this instance has them")
       .def_property_readonly("node", [](const PartView& v) -> py::object {
         const auto h = v.r.get().parts().frame(v.part);
         return h != 0 ? v.r.get().nodeView(h) : py::none();
@@ -1150,6 +1222,7 @@ class Geometries(list):
   registerRandomView(m);
   registerParamsView(m);
   registerPartView(m);
+  registerUsesView(m);
   registerSimView(m);
 }
 

@@ -293,7 +293,7 @@ pages:
       t2: {duration: {normal: [1, 0.1]}}
       t3: {duration: {exponential: 2}}
     instances:
-      i: {type: cell, at: [5, 6], translation: [1, 2, 3], rotation: [0, 0, 1, 90], params: {w: 2}, part: j}
+      i: {type: cell, at: [5, 6], translation: [1, 2, 3], rotation: [0, 0, 1, 90], params: {w: 2}, part: j, uses: {eye: k}}
     arcs:
       - {from: p, to: t, kind: test, weight: {d0: 2}, predicate: {d0: "token is not None"}, condition: {c0: "value > 0"}}
 page_types:
@@ -318,6 +318,8 @@ page_types:
     io:
       lamp: {direction: output, signal: digital, unit: "-", description: "a lamp", node: m, field: emissive, on: [1, 0, =w], off: [0, 0, 0]}
       eye: {direction: input, signal: analog, node: c, of: reading}
+    uses:
+      eye: {io: [eye], optional: true, description: "an eye"}
 scene:
   - Group: {name: box}
 scripts:
@@ -359,6 +361,7 @@ std::map<Section, std::vector<std::vector<std::string>>> keysBySection(const std
       for (auto i = page["instances"].begin(); i != page["instances"].end(); ++i) add(Section::Instance, i->second);
       add(Section::Part, page["part"]);
       for (auto i = page["io"].begin(); i != page["io"].end(); ++i) add(Section::PartIo, i->second);
+      for (auto i = page["uses"].begin(); i != page["uses"].end(); ++i) add(Section::PartUse, i->second);
       for (const auto& a : page["arcs"]) add(Section::Arc, a);
     }
   }

@@ -146,7 +146,7 @@ const std::vector<PartRow>& library() {
       {"sources_and_sinks/remover", "Sources and sinks", "", {{"removed", In, Ana, "items"}}},
       {"conveyors/belt_conveyor", "Conveyors", "", {{"run", Out, Dig, ""}, {"speed", Out, Ana, "m/s"}}},
       {"storage/bin", "Storage", "", {{"count", In, Ana, "items"}}},
-      {"sensors/diffuse_sensor", "Sensors", "", {{"detected", In, Dig, ""}}},
+      {"sensors/diffuse_sensor", "Sensors", "", {{"detected", In, Dig, ""}, {"colour", In, Ana, ""}}},
       {"sensors/through_beam", "Sensors", "", {{"blocked", In, Dig, ""}}},
       {"actuators/pusher", "Actuators", "pusher_control",
        {{"extend", Out, Dig, ""}, {"front_limit", In, Dig, ""}, {"back_limit", In, Dig, ""}}},
@@ -169,7 +169,7 @@ TEST_P(EveryPart, LoadsWithItsPaletteEntryAndPicture) {
   ASSERT_TRUE(m->parts.contains(name));
   const PartSpec& spec = m->parts.at(name);
   EXPECT_TRUE(spec.listed);
-  EXPECT_EQ(spec.version, 1);
+  EXPECT_GE(spec.version, 1);
   EXPECT_EQ(spec.group, row.group);
   EXPECT_EQ(spec.picture, name + ".png");
   EXPECT_TRUE(std::filesystem::is_regular_file(std::filesystem::path(partPath(row.file)).parent_path() / spec.picture))
@@ -590,6 +590,8 @@ TEST(DiffuseSensor, DetectsABoxWithinItsRangeOnly) {
     sim->step();
     short_saw = short_saw || io(*sim, "short", "detected") != 0.0;
     const bool now = io(*sim, "near", "detected") != 0.0;
+    // the colour of what it sees: the box's colour_code (5, brown cardboard), else 0
+    EXPECT_EQ(io(*sim, "near", "colour"), now ? 5.0 : 0.0) << sim->kernel().now();
     if (now && !was && on < 0) on = sim->kernel().now();
     if (!now && was && off < 0) off = sim->kernel().now();
     was = now;
@@ -926,6 +928,52 @@ TEST(Station, RedBoxesGoToTheBinBlueOnesToTheRemover) {
   }
   EXPECT_EQ(in_bin, binned);
   EXPECT_EQ(in_bin + on_belt + removed, emitted);
+}
+
+TEST(Station, ThePusherSortPatternSortsByColourWithItsRolesFilled) {
+  // the same station with the pusher's other pattern: it watches the eye for red (colour 1),
+  // stops the belt it uses, strokes, and runs it again; the stack light follows
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      emitter1: {type: emitter}
+      belt1: {type: belt_conveyor, translation: [1.5, 0, 0], params: {length: 4}}
+      pusher1: {type: pusher, translation: [2, 0, 0]}
+      eye1: {type: diffuse_sensor, translation: [2.3, 0, 0]}
+      bin1: {type: bin, translation: [2, 0.95, 0], params: {length: 1.2, width: 1.0}}
+      remover1: {type: remover, translation: [3.5, 0, 0]}
+      light1: {type: stack_light, translation: [2.6, -1, 0]}
+      sort1: {type: pusher_sort, part: pusher1, uses: {eye: eye1, belt: belt1, light: light1}}
+)Y",
+                     {"sources_and_sinks/emitter", "conveyors/belt_conveyor", "actuators/pusher",
+                      "sensors/diffuse_sensor", "storage/bin", "sources_and_sinks/remover", "operator/stack_light"});
+  ASSERT_TRUE(sim);
+  // the first step starts the belt and lights green
+  runFor(*sim, 0.1);
+  EXPECT_EQ(io(*sim, "belt1", "run"), 1.0);
+  EXPECT_EQ(io(*sim, "light1", "green"), 1.0);
+  // the first box (red) reaches the eye 0.3 m past the pusher: the belt stands, amber, a stroke
+  bool stood = false;
+  for (int i = 0; i < 1000 && !stood; ++i) {
+    sim->step();
+    stood = io(*sim, "belt1", "run") == 0.0;
+  }
+  ASSERT_TRUE(stood);
+  EXPECT_EQ(io(*sim, "eye1", "colour"), 1.0);
+  EXPECT_EQ(io(*sim, "light1", "amber"), 1.0);
+  EXPECT_EQ(io(*sim, "light1", "green"), 0.0);
+  EXPECT_EQ(io(*sim, "pusher1", "extend"), 1.0);
+  runFor(*sim, 120.0 - sim->kernel().now());
+  ASSERT_FALSE(sim->scriptHalt()) << sim->scriptHalt()->message;
+  EXPECT_EQ(io(*sim, "emitter1", "emitted"), 30);
+  EXPECT_EQ(tokens(*sim, "main/sort1/sorted"), 15);
+  EXPECT_EQ(tokens(*sim, "main/bin1/entered"), 15);
+  EXPECT_EQ(tokens(*sim, "main/remover1/removed") + 1, 15) << "the last blue box is still on the belt";
+  for (const auto& holder : sim->plant()->find("emitter1/items")->children()) {
+    const scene::Node* box = holder->find("box");
+    ASSERT_NE(box, nullptr);
+    EXPECT_EQ(box->framePose().position.y > 0.45, std::get<std::string>(*box->datum("colour")) == "red") << box->path();
+  }
 }
 
 }  // namespace

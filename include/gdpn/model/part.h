@@ -54,6 +54,19 @@ struct PartIoSpec {
   }
 };
 
+/// A part a control pattern works with besides the one it controls (its `uses`): a role
+/// (`eye`, `belt`) that any part instance with the named I/O fills.
+struct PartUse {
+  std::string name;              ///< the role: an identifier (`eye`)
+  std::vector<std::string> io;   ///< the I/O a part needs to fill it (`[detected, colour]`)
+  bool optional = false;         ///< an instance may leave it unfilled (scripts see None)
+  std::string description;       ///< what it is for, for people
+  core::SourceLoc loc;           ///< where it is declared
+  friend bool operator==(const PartUse& a, const PartUse& b) {
+    return a.name == b.name && a.io == b.io && a.optional == b.optional && a.description == b.description;
+  }
+};
+
 /// What makes a page type a part: its parameters, its I/O and how the palette shows it.
 struct PartSpec {
   bool listed = false;              ///< it has a `part` section: the palette offers it
@@ -64,7 +77,22 @@ struct PartSpec {
   std::string controls;             ///< a control pattern's: the part type it controls; "" none
   std::vector<Param> params;        ///< numbers each instance may set (`params: {length: 3}`)
   std::vector<PartIoSpec> io;       ///< its inputs and outputs, in declaration order
+  std::vector<PartUse> uses;        ///< a control pattern's: the other parts it works with, by role
   core::SourceLoc loc;              ///< where the page type is declared
+  /// The role named `name`, or null.
+  [[nodiscard]] const PartUse* findUse(const std::string& name) const {
+    for (const auto& u : uses) {
+      if (u.name == name) return &u;
+    }
+    return nullptr;
+  }
+  /// Whether it has every I/O `use` needs.
+  [[nodiscard]] bool fills(const PartUse& use) const {
+    for (const auto& n : use.io) {
+      if (findIo(n) == nullptr) return false;
+    }
+    return true;
+  }
   /// The I/O named `name`, or null.
   [[nodiscard]] const PartIoSpec* findIo(const std::string& name) const {
     for (const auto& i : io) {
@@ -74,7 +102,7 @@ struct PartSpec {
   }
   friend bool operator==(const PartSpec& a, const PartSpec& b) {
     return a.listed == b.listed && a.version == b.version && a.group == b.group && a.picture == b.picture &&
-           a.control == b.control && a.controls == b.controls && a.params == b.params && a.io == b.io;
+           a.control == b.control && a.controls == b.controls && a.params == b.params && a.io == b.io && a.uses == b.uses;
   }
 };
 

@@ -60,19 +60,35 @@ std::string freeInstanceName(const Model& model, const std::string& page, const 
 /// Adds part `part` to page `page` of `model` (a new page when there is none of that name):
 /// its type copied in (copyPartType), an instance named `name` (or a free name after the part)
 /// standing at `translation` (m) turned by `angle` degrees about z, and, with `control`, an
-/// instance of its control pattern bound to it (named after it: `pusher1_control`). Returns
-/// the new instances' names, the part's first; empty with `why` when it cannot.
+/// instance of its control pattern bound to it (addPartControl with `pattern`). Returns the new
+/// instances' names, the part's first; with `why` when it cannot (the part alone when only the
+/// control pattern could not be added).
 std::vector<std::string> placePart(Model& model, const std::string& page, const LibraryPart& part,
                                    const std::array<double, 3>& translation, double angle, bool control,
-                                   std::string& why, const std::string& name = {});
+                                   std::string& why, const std::string& name = {}, const std::string& pattern = {});
 
-/// Adds to page `page` of `model` an instance of the control pattern of part instance
-/// `instance` (the page type its part names as `control`, else one that says it `controls` the
-/// part; it must be in the model, as copyPartType leaves it), bound to it with `part:` and named
-/// after it (`pusher1_control`, or a free name after that). Returns the new instance's name;
-/// "" with `why` when there is no such part instance, its part has no control pattern in the
-/// model, or an instance on the page controls it already.
-std::string addPartControl(Model& model, const std::string& page, const std::string& instance, std::string& why);
+/// The control patterns of part type `type` in `model`: the one it names as `control` first,
+/// then the page types that say they `control` it, in the file's order.
+std::vector<std::string> controlPatterns(const Model& model, const std::string& type);
+
+/// The parts that fill the roles (`uses`) of control pattern `pattern` for an instance that
+/// controls part instance `instance` on `page`: those `given`, and for each other role the part
+/// instance nearest `instance` (m, between their translations; the first of equals) whose part
+/// has the role's I/O. An optional role no part fills is left out. Empty with `why` when a
+/// role is unknown or a required one has no part to fill it.
+std::vector<net::InstanceSpec::Use> fillRoles(const Model& model, const std::string& page, const std::string& instance,
+                                              const std::string& pattern,
+                                              const std::vector<net::InstanceSpec::Use>& given, std::string& why);
+
+/// Adds to page `page` of `model` an instance of control pattern `pattern` (empty: the usual
+/// one, the first of controlPatterns) of part instance `instance` (it must be in the model, as
+/// copyPartType leaves it), bound to it with `part:`, its roles filled by fillRoles from
+/// `uses`, and named after it (`pusher1_control` for the usual pattern; `pusher1_sort` for
+/// pattern `pusher_sort`; a free name after that when taken). Returns the new instance's name;
+/// "" with `why` when there is no such part instance or pattern, a role cannot be filled, or
+/// an instance on the page controls it already.
+std::string addPartControl(Model& model, const std::string& page, const std::string& instance, std::string& why,
+                           const std::string& pattern = {}, const std::vector<net::InstanceSpec::Use>& uses = {});
 
 /// Maps every I/O of part instance `instance` (its name on `page`) into the `io` section at
 /// the first free addresses of their tables (a digital input in `discrete_inputs`, an analogue

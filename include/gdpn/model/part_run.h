@@ -28,6 +28,7 @@ struct PlacedPart {
   std::string type;    ///< its page type
   std::string frame;   ///< the scene path of the Transform that holds its machine
   std::string controls;  ///< a control pattern's: the qualified name of the part it controls
+  std::vector<std::pair<std::string, std::string>> uses;  ///< a control pattern's: role and the qualified part filling it
   std::vector<std::pair<std::string, double>> params;  ///< every parameter's value here, in the type's order
   core::SourceLoc loc;  ///< where the instance is declared
 };
@@ -63,6 +64,12 @@ class PartRun {
   /// The part the construct with qualified name `construct` belongs to (a construct of a part
   /// type's instance) or controls (of a control pattern's instance with `part:`); nullopt when none.
   [[nodiscard]] std::optional<std::size_t> ofConstruct(const std::string& construct) const;
+  /// The part or control pattern instance the construct `construct` belongs to itself (a
+  /// pattern's own, not the part it controls); nullopt when none.
+  [[nodiscard]] std::optional<std::size_t> ownerOf(const std::string& construct) const;
+  /// The roles of the control pattern instance `owner` (ownerOf) and the part filling each
+  /// (none: an optional role left unfilled), in the type's order.
+  [[nodiscard]] std::vector<std::pair<std::string, std::optional<std::size_t>>> usesOf(std::size_t owner) const;
 
   /// The value of `part`'s I/O `io` now: an input's reading (a digital one: 1 or 0), an
   /// output's field (a digital one: 1 while it holds `on`); a forced one's forced value.
@@ -106,7 +113,7 @@ class PartRun {
   std::vector<std::size_t> first_;                   // per part: its first entry in bound_
   std::map<std::size_t, std::optional<double>> asked_;  // bound_ index -> force (a value) or release (none)
   // what names found: scripts ask every step, and a run's parts do not change
-  mutable std::unordered_map<std::string, std::optional<std::size_t>> found_, of_construct_;
+  mutable std::unordered_map<std::string, std::optional<std::size_t>> found_, of_construct_, owner_of_;
  public:
   ~PartRun();
   PartRun(const PartRun&) = delete;

@@ -42,6 +42,7 @@ enum class Section : std::uint8_t {
   Duration,    ///< a transition's `duration` written as a law (one key)
   Part,        ///< a page type's `part`: how the palette shows it
   PartIo,      ///< one of a page type's `io`: a part's named input or output
+  PartUse,     ///< one of a page type's `uses`: a role a control pattern's instance fills with a part
 };
 
 /// Every section, in the order of the enum.
@@ -49,7 +50,7 @@ inline constexpr Section kSections[] = {Section::Model,   Section::Settings, Sec
                                         Section::Io,      Section::IoEntry,  Section::Page,       Section::PageType,
                                         Section::Place,   Section::Transition, Section::Arc,      Section::Instance,
                                         Section::Scripts, Section::ScriptFile, Section::Duration,
-                                        Section::Part,    Section::PartIo};
+                                        Section::Part,    Section::PartIo,   Section::PartUse};
 
 /// What a key's value is.
 enum class ValueType : std::uint8_t {

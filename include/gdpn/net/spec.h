@@ -255,9 +255,17 @@ struct InstanceSpec {
   std::vector<Param> params{};  ///< the parameters set here, in file order (the others keep the type's)
   std::string part{};         ///< a control pattern's: the part instance on its page it controls
   SourceLoc part_loc{};       ///< where `part` is written
+  /// A control pattern's: the part instance on its page that fills one of its roles (`uses`).
+  struct Use {
+    std::string role;   ///< the pattern's role (`eye`)
+    std::string part;   ///< the part instance on this page that fills it
+    SourceLoc loc;      ///< where it is written
+    friend bool operator==(const Use& a, const Use& b) { return a.role == b.role && a.part == b.part; }
+  };
+  std::vector<Use> uses{};    ///< the roles filled here, in file order
   friend bool operator==(const InstanceSpec& x, const InstanceSpec& y) {
     return x.name == y.name && x.type == y.type && x.position == y.position && x.translation == y.translation &&
-           x.rotation == y.rotation && x.params == y.params && x.part == y.part;
+           x.rotation == y.rotation && x.params == y.params && x.part == y.part && x.uses == y.uses;
   }
 };
 

@@ -58,6 +58,10 @@ struct PartAccess {
   std::function<std::optional<std::size_t>(const std::string& name, std::string& why)> find;
   /// The part the construct with qualified name `construct` belongs to or controls, if any.
   std::function<std::optional<std::size_t>(const std::string& construct)> of_construct;
+  /// The part or control pattern instance the construct belongs to itself, if any.
+  std::function<std::optional<std::size_t>(const std::string& construct)> owner;
+  /// A control pattern instance's roles and the part filling each (none: left unfilled).
+  std::function<std::vector<std::pair<std::string, std::optional<std::size_t>>>(std::size_t)> uses;
   /// A part's qualified name (`main/pusher1`).
   std::function<std::string(std::size_t)> name;
   /// A part's I/O, in declaration order: name and whether it is digital.
