@@ -94,6 +94,7 @@ struct ManipulatorDrag {
 struct WorldViewState {
   OrbitCamera orbit;                ///< the free camera
   std::string camera_node;          ///< the scene Camera node in use ("" : the free camera)
+  OrbitCamera shown;                ///< the camera the last frame drew with (the free one or a Camera node's)
   bool show_sensors = false;        ///< draws sensor volumes
   bool show_joints = false;         ///< draws joint axes
   bool show_contacts = false;       ///< marks the contact points of the last step

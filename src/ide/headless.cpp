@@ -7,7 +7,10 @@
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
 
+#include <charconv>
+#include <cmath>
 #include <iostream>
+#include <system_error>
 
 #include "app.h"
 #include "detail/frame_io.h"
@@ -100,6 +103,32 @@ class Driver {
 
 /// Where the last frame's report placed the item the keys `keys` lead to; false with `error`.
 bool placed(const App& app, const std::vector<std::string>& keys, double& x, double& y, std::string& error) {
+  // [world, floor, X, Y]: where the floor's point (X, Y) m shows in the world view
+  if (keys.size() == 4 && keys[0] == "world" && keys[1] == "floor") {
+    double f[2] = {0, 0};
+    for (int k = 0; k < 2; ++k) {
+      const auto& text = keys[static_cast<std::size_t>(k) + 2];
+      const auto r = std::from_chars(text.data(), text.data() + text.size(), f[k]);
+      if (r.ec != std::errc() || r.ptr != text.data() + text.size() || !std::isfinite(f[k])) {
+        error = "[world, floor, X, Y] takes two numbers (metres), got '" + text + "'";
+        return false;
+      }
+    }
+    const auto& world = app.report()["world"];
+    if (!world.contains("origin") || !world.contains("size")) {
+      error = "the last frame showed no world view";
+      return false;
+    }
+    const double w = world["size"][0].get<double>(), h = world["size"][1].get<double>();
+    const auto q = app.world.shown.project({f[0], f[1], 0.0}, w, h);
+    if (!q || (*q)[0] < 0 || (*q)[1] < 0 || (*q)[0] >= w || (*q)[1] >= h) {
+      error = "the floor's point (" + keys[2] + ", " + keys[3] + ") is not in sight in the world view";
+      return false;
+    }
+    x = world["origin"][0].get<double>() + (*q)[0];
+    y = world["origin"][1].get<double>() + (*q)[1];
+    return true;
+  }
   const nlohmann::json* at = &app.report();
   std::string path;
   for (const auto& k : keys) {

@@ -67,20 +67,6 @@ std::string controllerOf(const model::Model& model, const PartInstanceAt& at) {
   return {};
 }
 
-std::string controlPatternOf(const model::Model& model, const std::string& type) {
-  const auto spec = model.parts.find(type);
-  if (spec == model.parts.end()) return {};
-  std::string pattern = spec->second.control;
-  if (pattern.empty()) {
-    for (const auto& [name, s] : model.parts) {
-      if (s.controls == type) pattern = name;
-    }
-  }
-  const bool held = std::any_of(model.net.page_types.begin(), model.net.page_types.end(),
-                                [&](const auto& t) { return t.name == pattern; });
-  return held ? pattern : std::string();
-}
-
 PlacePartCommand::PlacePartCommand(model::LibraryPart part, std::string page, std::array<double, 3> translation,
                                    double angle, bool control)
     : part_(std::move(part)), page_(std::move(page)), translation_(translation), angle_(angle), control_(control) {}
@@ -116,7 +102,8 @@ std::string PlacePartCommand::label() const {
   return "place " + (made_.empty() ? part_.name : made_.front()) + " (" + part_.name + ")";
 }
 
-AddPartControlCommand::AddPartControlCommand(PartInstanceAt at) : at_(std::move(at)) {}
+AddPartControlCommand::AddPartControlCommand(PartInstanceAt at, std::string pattern)
+    : at_(std::move(at)), pattern_(std::move(pattern)) {}
 
 std::string AddPartControlCommand::apply(Document& doc) {
   auto* page = pageOf(doc.editableNet(), at_.page);
@@ -127,7 +114,7 @@ std::string AddPartControlCommand::apply(Document& doc) {
   }
   net::PageSpec before = *page;
   std::string why;
-  made_ = model::addPartControl(doc.editableModel(), at_.page, at_.name, why);
+  made_ = model::addPartControl(doc.editableModel(), at_.page, at_.name, why, pattern_);
   if (made_.empty()) return why;
   other_ = std::move(before);
   return {};

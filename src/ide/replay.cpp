@@ -89,13 +89,6 @@ class ActionReader {
     a.number = x;
     return true;
   }
-  bool point(const YAML::Node& v, double& x, double& y) {
-    if (!v.IsSequence() || v.size() != 2 || !YAML::convert<double>::decode(v[0], x) ||
-        !YAML::convert<double>::decode(v[1], y)) {
-      return fail(v, "expects a point [X, Y] in window pixels");
-    }
-    return true;
-  }
   /// A point [X, Y] in window pixels, or where the last frame's report says an item stands:
   /// the keys that lead to it ([tree, rows, belt]).
   bool target(const YAML::Node& v, double& x, double& y, std::vector<std::string>& keys) {
@@ -134,7 +127,7 @@ class ActionReader {
   bool wheel(const YAML::Node& v, Action& a) {
     a.kind = ActionKind::Wheel;
     if (!v.IsMap() || !v["at"] || !v["clicks"]) return fail(v, "expects {at: [X, Y], clicks: N}");
-    if (!point(v["at"], a.x, a.y)) return false;
+    if (!target(v["at"], a.x, a.y, a.on)) return false;
     const auto c = v["clicks"];
     if (!c.IsScalar() || !YAML::convert<double>::decode(c, a.number) || !(std::abs(a.number) <= 100)) {
       return fail(c, "expects clicks from -100 to 100");

@@ -8,6 +8,7 @@
 
 #include "gdpn/ide/document.h"
 #include "gdpn/ide/part_edit.h"
+#include "gdpn/model/part_library.h"
 #include "gdpn/model/simulation.h"
 #include "support/temp_files.h"
 
@@ -79,8 +80,8 @@ TEST_F(PartEdit, APartWhoseNameTheModelUsesForAnotherTypeIsRefused) {
 TEST_F(PartEdit, ItsControlPatternIsAddedOnceBoundToIt) {
   ASSERT_EQ(place("pusher", 0), "pusher1");
   const PartInstanceAt at{"main", "pusher1"};
-  EXPECT_EQ(controlPatternOf(doc_->model(), "pusher"), "pusher_control");
-  EXPECT_EQ(controlPatternOf(doc_->model(), "missing"), "");
+  EXPECT_EQ(model::controlPatterns(doc_->model(), "pusher").front(), "pusher_control");
+  EXPECT_TRUE(model::controlPatterns(doc_->model(), "missing").empty());
   EXPECT_EQ(controllerOf(doc_->model(), at), "");
   const auto before = doc_->text();
   auto command = std::make_unique<AddPartControlCommand>(at);

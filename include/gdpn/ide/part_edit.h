@@ -34,9 +34,6 @@ struct PartInstanceAt {
 [[nodiscard]] const net::InstanceSpec* instanceAt(const model::Model& model, const PartInstanceAt& at);
 /// The name of the instance on `at`'s page that controls it (its `part:` names it); "" when none.
 [[nodiscard]] std::string controllerOf(const model::Model& model, const PartInstanceAt& at);
-/// The control pattern of part type `type` held by `model` (the one it names, else one that says
-/// it controls it); "" when the model holds none.
-[[nodiscard]] std::string controlPatternOf(const model::Model& model, const std::string& type);
 
 /// What a part edit changes: the net and the page types' scenes and part sections.
 struct PartTypesState {
@@ -70,12 +67,12 @@ class PlacePartCommand final : public Command {
   std::optional<PartTypesState> other_;  // the state not in the document now (after apply: the one before)
 };
 
-/// Adds the control pattern's instance of part instance `at`, bound to it
-/// (model::addPartControl, once). Undo removes it.
+/// Adds an instance of a control pattern of part instance `at`, bound to it and its roles
+/// filled by the nearest parts that fit (model::addPartControl, once). Undo removes it.
 class AddPartControlCommand final : public Command {
  public:
-  /// The control of part instance `at`.
-  explicit AddPartControlCommand(PartInstanceAt at);
+  /// The control of part instance `at`: control pattern `pattern` (empty: its usual one).
+  explicit AddPartControlCommand(PartInstanceAt at, std::string pattern = {});
   std::string apply(Document& doc) override;
   void revert(Document& doc) override;
   [[nodiscard]] std::string label() const override;
@@ -86,6 +83,7 @@ class AddPartControlCommand final : public Command {
 
  private:
   PartInstanceAt at_;
+  std::string pattern_;
   std::string made_;
   std::optional<net::PageSpec> other_;  // the page not in the document now
 };

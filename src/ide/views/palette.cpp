@@ -185,9 +185,20 @@ void placeDropped(App& app, const std::string& name, const DropPlace& place, ImV
        << core::formatDouble(place.translation[1]) << ", " << core::formatDouble(place.translation[2]) << ") m";
   if (!place.neighbour.empty()) text << ", " << snapKindName(place.kind) << " of " << place.neighbour;
   app.message = text.str();
-  // a part with a control pattern is offered it at the drop
-  const auto pattern = controlPatternOf(app.document().model(), part->name);
-  if (!pattern.empty()) st.offer = {true, true, {page, made}, pattern, pointer.x, pointer.y};
+  // a part with control patterns is offered them at the drop
+  const auto& m = app.document().model();
+  std::vector<OfferedPattern> offered;
+  for (const auto& pattern : model::controlPatterns(m, part->name)) {
+    OfferedPattern o{pattern, {}, {}, {}};
+    for (const auto& t : m.net.page_types) {
+      if (t.name == pattern) o.description = t.description;
+    }
+    for (const auto& u : model::fillRoles(m, page, made, pattern, {}, o.unfilled)) {
+      o.uses += (o.uses.empty() ? "" : ", ") + u.role + ": " + u.part;
+    }
+    offered.push_back(std::move(o));
+  }
+  if (!offered.empty()) st.offer = {true, true, {page, made}, std::move(offered), pointer.x, pointer.y};
 }
 
 /// A part's tile: its picture (or its group's initial) over its name in one or two lines.
@@ -253,11 +264,16 @@ void tile(PaletteState& st, const model::LibraryPart& part, nlohmann::json& item
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
   }
-  // where a replay can drag it from: only while it is in sight (scroll or search to bring it)
+  // where a replay can drag it from: the middle of what is in sight of it, at least 8 pixels
+  // high (scroll or search to bring it)
+  const ImVec2 clip_lo = draw->GetClipRectMin(), clip_hi = draw->GetClipRectMax();
+  const ImVec2 lo{std::max(at.x, clip_lo.x), std::max(at.y, clip_lo.y)};
+  const ImVec2 hi{std::min(at.x + size.x, clip_hi.x), std::min(at.y + size.y, clip_hi.y)};
+  const bool visible = hi.x - lo.x >= 8 && hi.y - lo.y >= 8;
   nlohmann::json entry = {{"name", part.name}, {"group", part.spec.group}, {"version", part.spec.version},
-                          {"picture", picture != nullptr}, {"visible", ImGui::IsItemVisible()}};
-  if (ImGui::IsItemVisible()) {
-    noteItem(part.name, items);
+                          {"picture", picture != nullptr}, {"visible", visible}};
+  if (visible) {
+    items[part.name] = {std::lround((lo.x + hi.x) / 2), std::lround((lo.y + hi.y) / 2)};
     entry["at"] = items[part.name];
   }
   list.push_back(std::move(entry));
@@ -290,6 +306,11 @@ void drawPalette(App& app, const Rect& at, nlohmann::json& report) {
   if (ImGui::Button("Rescan")) st.scanned_for.reset();
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Look for part files again along the search path");
   noteItem("rescan", controls);
+  {
+    // the list's middle: where a replay's wheel scrolls it
+    const ImVec2 c = ImGui::GetCursorScreenPos(), room = ImGui::GetContentRegionAvail();
+    controls["list"] = {std::lround(c.x + room.x / 2), std::lround(c.y + room.y / 2)};
+  }
   ImGui::BeginChild("##palette_scroll", {0, 0}, false);
   if (st.parts.empty()) {
     ImGui::PushTextWrapPos(0);
@@ -345,28 +366,47 @@ void drawDropOffer(App& app, nlohmann::json& report) {
     offer.open = false;  // closed by a click elsewhere: no
     return;
   }
-  ImGui::Text("Add its control pattern (%s)?", offer.pattern.c_str());
-  ImGui::TextDisabled("A net that runs %s through its I/O, bound to it.", offer.at.name.c_str());
-  nlohmann::json buttons = nlohmann::json::object();
-  ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-  const bool yes = ImGui::Button("Yes", {90, 0});
-  ImGui::PopStyleColor();
-  noteItem("yes", buttons);
-  ImGui::SameLine();
-  const bool no = ImGui::Button("No", {90, 0});
+  ImGui::Text("Add a control for %s?", offer.at.name.c_str());
+  ImGui::TextDisabled("A net in the model that runs it through its I/O:");
+  nlohmann::json buttons = nlohmann::json::object(), patterns = nlohmann::json::array();
+  std::string chosen;  // the pattern clicked ("": none yet)
+  const OfferedPattern* first = nullptr;  // the first that can be added: Enter's
+  const float wrap = ImGui::GetFontSize() * 34;
+  for (const auto& o : offer.patterns) {
+    if (first == nullptr && o.unfilled.empty()) first = &o;
+    ImGui::BeginDisabled(!o.unfilled.empty());
+    if (&o == first) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+    if (ImGui::Button(o.name.c_str(), {ImGui::GetFontSize() * 9, 0})) chosen = o.name;
+    if (&o == first) ImGui::PopStyleColor();
+    ImGui::EndDisabled();
+    noteItem(o.name, buttons);
+    ImGui::SameLine();
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + wrap);
+    if (!o.unfilled.empty()) {
+      ImGui::TextColored({1.0F, 0.55F, 0.35F, 1.0F}, "%s", o.unfilled.c_str());
+    } else {
+      ImGui::TextDisabled("%s%s", o.description.c_str(), o.uses.empty() ? "" : ("\nwith " + o.uses).c_str());
+    }
+    ImGui::PopTextWrapPos();
+    patterns.push_back({{"name", o.name}, {"uses", o.uses}, {"unfilled", o.unfilled}});
+  }
+  const bool no = ImGui::Button("No", {ImGui::GetFontSize() * 9, 0});
   noteItem("no", buttons);
-  ImGui::SameLine();
-  ImGui::TextDisabled("Enter: yes");
+  if (first != nullptr) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("Enter: %s", first->name.c_str());
+  }
   const bool enter = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter)) ||
                      ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter));
   const bool escape = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
-  report["offer"] = {{"open", true}, {"part", offer.at.name}, {"pattern", offer.pattern}, {"buttons", buttons}};
-  if (yes || no || enter || escape) {
+  if (enter && first != nullptr) chosen = first->name;
+  report["offer"] = {{"open", true}, {"part", offer.at.name}, {"patterns", patterns}, {"buttons", buttons}};
+  if (!chosen.empty() || no || escape || enter) {
     const auto at = offer.at;
     offer.open = false;
     ImGui::CloseCurrentPopup();
-    if (yes || enter) {
-      auto command = std::make_unique<AddPartControlCommand>(at);
+    if (!chosen.empty()) {
+      auto command = std::make_unique<AddPartControlCommand>(at, chosen);
       const auto* adding = command.get();
       const auto why = app.document().execute(std::move(command));
       app.message = why.empty() ? "added " + adding->made() + ", the control of " + at.name : why;

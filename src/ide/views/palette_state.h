@@ -29,12 +29,20 @@ struct PartMachine {
   std::string error;                          ///< why its file did not load ("" when it did)
 };
 
-/// The control pattern offered after a drop: "Add its control pattern (pusher_control)?".
+/// One control pattern offered after a drop.
+struct OfferedPattern {
+  std::string name;         ///< its page type (`pusher_sort`)
+  std::string description;  ///< its page type's description
+  std::string uses;         ///< the parts that would fill its roles ("eye: diffuse_sensor1, belt: belt_conveyor1")
+  std::string unfilled;     ///< why it cannot be added now (a role no part fills); "" when it can
+};
+
+/// The control patterns offered after a drop: "Add a control for pusher1?", one button each.
 struct DropOffer {
   bool open = false;      ///< shown
   bool appearing = false; ///< opened this frame: the popup is placed at the drop
   PartInstanceAt at;      ///< the part just placed
-  std::string pattern;    ///< its control pattern's page type
+  std::vector<OfferedPattern> patterns;  ///< its control patterns, the usual one first
   float x = 0, y = 0;     ///< where it was dropped, window pixels
 };
 

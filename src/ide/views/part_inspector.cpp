@@ -10,6 +10,7 @@
 #include "../views.h"
 #include "gdpn/core/text.h"
 #include "gdpn/ide/part_snap.h"
+#include "gdpn/model/part_library.h"
 
 namespace gdpn::ide {
 
@@ -54,28 +55,42 @@ void drawPartInspector(App& app, const PartInstanceAt& at, nlohmann::json& repor
   report["version"] = spec.version;
   report["translation"] = inst->translation;
 
-  // its control: the pattern's instance bound to it, or a button that adds one
+  // its control: the pattern's instance bound to it, or a button per pattern that adds one
   nlohmann::json buttons = nlohmann::json::object();
-  const auto pattern = controlPatternOf(m, inst->type);
+  const auto patterns = model::controlPatterns(m, inst->type);
   const auto controller = controllerOf(m, at);
   if (!controller.empty()) {
-    ImGui::Text("controlled by %s", controller.c_str());
-  } else if (!pattern.empty()) {
-    ImGui::BeginDisabled(!edit);
-    const std::string label = "Add its control (" + pattern + ")";
-    if (ImGui::Button(label.c_str())) {
-      auto command = std::make_unique<AddPartControlCommand>(at);
-      const auto* adding = command.get();
-      app.inspector.error = app.document().execute(std::move(command));
-      app.message = app.inspector.error.empty() ? "added " + adding->made() + ", the control of " + at.name : app.inspector.error;
+    std::string with;
+    for (const auto& p : m.net.pages) {
+      for (const auto& i : p.name == at.page ? p.instances : std::vector<net::InstanceSpec>{}) {
+        if (i.name != controller) continue;
+        for (const auto& u : i.uses) with += (with.empty() ? " (" : ", ") + u.role + ": " + u.part;
+      }
     }
-    ImGui::EndDisabled();
-    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-      ImGui::SetTooltip("An instance of %s in the net, bound to %s's I/O", pattern.c_str(), at.name.c_str());
+    ImGui::Text("controlled by %s%s", controller.c_str(), with.empty() ? "" : (with + ")").c_str());
+  } else {
+    for (std::size_t k = 0; k < patterns.size(); ++k) {
+      const auto& pattern = patterns[k];
+      std::string unfilled;
+      model::fillRoles(m, at.page, at.name, pattern, {}, unfilled);
+      ImGui::BeginDisabled(!edit || !unfilled.empty());
+      const std::string label = "Add control: " + pattern;
+      if (ImGui::Button(label.c_str())) {
+        auto command = std::make_unique<AddPartControlCommand>(at, pattern);
+        const auto* adding = command.get();
+        app.inspector.error = app.document().execute(std::move(command));
+        app.message = app.inspector.error.empty() ? "added " + adding->made() + ", the control of " + at.name : app.inspector.error;
+      }
+      ImGui::EndDisabled();
+      if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+        ImGui::SetTooltip("%s", unfilled.empty() ? ("An instance of " + pattern + " in the net, bound to " + at.name + "'s I/O").c_str()
+                                                 : unfilled.c_str());
+      }
+      noteItem(k == 0 ? "add-control" : pattern, buttons);
     }
-    noteItem("add-control", buttons);
   }
-  report["control"] = {{"pattern", pattern}, {"controller", controller}};
+  report["control"] = {{"pattern", patterns.empty() ? std::string() : patterns.front()}, {"patterns", patterns},
+                       {"controller", controller}};
   report["buttons"] = buttons;
 
   // its parameters: the type's, with this instance's values (Enter commits)

@@ -208,7 +208,8 @@ void drawWorldView(App& app, const Rect& at, nlohmann::json& report) {
   const bool hovered = ImGui::IsItemHovered();
   const bool active = ImGui::IsItemActive();
   // a part dropped from the palette is placed where its ghost stands
-  paletteDrop(app, OrbitCamera::from(camera), origin, static_cast<float>(w), static_cast<float>(h), report);
+  app.world.shown = OrbitCamera::from(camera);
+  paletteDrop(app, app.world.shown, origin, static_cast<float>(w), static_cast<float>(h), report);
   auto& io = ImGui::GetIO();
   const auto take_camera = [&] {
     // moving the view leaves a scene camera for the orbit camera at the same place
