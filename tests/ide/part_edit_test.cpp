@@ -5,7 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -15,6 +14,7 @@
 #include "gdpn/ide/part_edit.h"
 #include "gdpn/ide/run_control.h"
 #include "gdpn/model/simulation.h"
+#include "support/scoped_env.h"
 #include "support/temp_files.h"
 
 namespace gdpn::ide {
@@ -237,25 +237,7 @@ TEST(PartUpdate, AnUpdateWhoseLibraryFileIsGoneIsRefusedAndChangesNothing) {
             "no part has a newer version in the library");
 }
 
-/// Sets environment variable `name` to `value` (unset for nullopt) while it lives.
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, std::optional<std::string> value) : name_(name) {
-    if (const char* old = std::getenv(name)) old_ = old;
-    if (value) ::setenv(name, value->c_str(), 1);
-    else ::unsetenv(name);
-  }
-  ~ScopedEnv() {
-    if (old_) ::setenv(name_, old_->c_str(), 1);
-    else ::unsetenv(name_);
-  }
-  ScopedEnv(const ScopedEnv&) = delete;
-  ScopedEnv& operator=(const ScopedEnv&) = delete;
-
- private:
-  const char* name_;
-  std::optional<std::string> old_;
-};
+using gdpn::testing::ScopedEnv;
 
 class SavePart : public gdpn::testing::TempDirTest {};
 
