@@ -11,6 +11,7 @@
 #include "app.h"
 #include "gdpn/ide/io_list.h"
 #include "detail/keys.h"
+#include "views.h"
 
 namespace gdpn::ide {
 
@@ -43,6 +44,8 @@ bool actionEnabled(const App& app, ActionId id) {
     case ActionId::Cut:
     case ActionId::Delete: return copyableSelected(app) && editing(app);
     case ActionId::Copy: return copyableSelected(app);
+    case ActionId::SaveAsPart: return app.document().selection().kind == SelectionKind::Node;
+    case ActionId::UpdateParts: return editing(app) && !app.part_updates.updates.empty();
     case ActionId::Paste: return editing(app);  // what the clipboard holds is read then (another program's text, too)
     case ActionId::SwapViews:
     case ActionId::WorldFull:
@@ -105,6 +108,8 @@ bool actionChecked(const App& app, ActionId id) {
     case ActionId::PlantOnly: return app.run().plantOnly();
     case ActionId::IoList: return app.io_list.shown;
     case ActionId::ReleaseForces:
+    case ActionId::SaveAsPart:
+    case ActionId::UpdateParts:
     case ActionId::New:
     case ActionId::Open:
     case ActionId::Save:
@@ -159,6 +164,8 @@ std::string performAction(App& app, ActionId id) {
     case ActionId::Copy: app.copySelection(); break;
     case ActionId::Paste: app.paste(); break;
     case ActionId::Delete: app.deleteSelection(); break;
+    case ActionId::SaveAsPart: openSaveAsPart(app); break;
+    case ActionId::UpdateParts: openPartUpdates(app); break;
     case ActionId::SwapViews: app.swapViews(); break;
     case ActionId::WorldFull: app.fill(FullView::World); break;
     case ActionId::NetFull: app.fill(FullView::Net); break;

@@ -20,6 +20,8 @@ constexpr ActionInfo kActions[] = {
     {A::Save, "save", "Save", M::File, "Ctrl+S", false, false, true, "Save the model to its file"},
     {A::SaveAs, "save-as", "Save As...", M::File, "Ctrl+Shift+S", false, false, false,
      "Save the model under another name, which it keeps"},
+    {A::SaveAsPart, "save-as-part", "Save as Part...", M::File, "", false, false, false,
+     "Save the selected scene node, with what it holds, as a new part in your parts folder ($XDG_DATA_HOME/gdpn/parts): the palette lists it"},
     {A::Close, "close", "Close", M::File, "Ctrl+W", false, false, false,
      "Close the model (a new, empty one takes its place)"},
     {A::Restore, "restore", "Restore Autosave", M::File, "", false, false, true,
@@ -38,6 +40,8 @@ constexpr ActionInfo kActions[] = {
      "Paste a model file's nodes under the selected node (beside it, or at the top), its places and transitions into the net view's page"},
     {A::Delete, "delete", "Delete", M::Edit, "Delete", true, false, false,
      "Delete the selected node, or place or transition with its arcs"},
+    {A::UpdateParts, "update-parts", "Update Parts...", M::Edit, "", false, false, true,
+     "Take the library's newer versions of the model's parts (what they change in the I/O is listed first)"},
 
     {A::SwapViews, "swap-views", "Swap World and Net", M::View, "", false, true, false,
      "Put the net view where the world view is, and the world view where the net view is"},

@@ -467,6 +467,8 @@ void App::replaceDocument(std::unique_ptr<Document> doc, bool untitled) {
   io_list.rows.clear();  // the list is found again for the new model (its tab stays chosen)
   io_list.revision = ~std::uint64_t{0};
   io_list.typed.clear();
+  part_updates = {};  // found again for the new model
+  save_part = {};
   inspector.scripts = {};
   world.manipulating = {};
   world.camera_node.clear();
@@ -777,6 +779,7 @@ void App::frame(float width, float height, double wall_seconds) {
   checkAutosave(wall_seconds);
   followEdits(wall_seconds);
   refreshEditScene(*this);
+  refreshPartUpdates(*this);
   run_.advance(wall_seconds);
 
   // the actions' shortcuts, everywhere
@@ -840,6 +843,8 @@ void App::frame(float width, float height, double wall_seconds) {
   // over the world view, in a window of its own so that it stays on top and can be moved
   if (layout.world.w > 0) drawMiniView(*this, layout.world, report["mini_view"]);
   drawDropOffer(*this, report["palette"]);
+  drawPartUpdates(*this, report["parts_update"]);
+  drawSaveAsPart(*this, report["save_as_part"]);
   drawRestoreOffer(report["restore"]);
   drawFileBrowser(*this, report["file_browser"]);
   drawSaveQuestion(*this, report["save_changes"]);

@@ -18,6 +18,7 @@
 #include "gdpn/ide/layout.h"
 #include "gdpn/ide/manipulator.h"
 #include "gdpn/ide/token_types.h"
+#include "gdpn/model/part_library.h"
 #include "gdpn/ide/orbit.h"
 #include "gdpn/ide/replay.h"
 #include "gdpn/ide/run_control.h"
@@ -192,6 +193,30 @@ struct IoListState {
   std::map<std::string, std::string> typed;    ///< an analogue value being typed, by IoListRow::key
 };
 
+/// The library's newer versions of the model's parts, and the popup that takes them
+/// (views/part_updates.cpp).
+struct PartUpdatesState {
+  std::vector<model::PartUpdate> updates;  ///< the model's parts the library holds in a newer version
+  std::uint64_t revision = ~std::uint64_t{0};  ///< the document's revision they were found at
+  std::uint64_t scans = ~std::uint64_t{0};     ///< and the palette's scan
+  bool open = false;                       ///< the popup is shown
+  std::vector<model::PartUpdate> offered;  ///< what the popup lists, as found when it opened
+  std::vector<std::string> uses;           ///< the io section's uses of the I/O they remove, located
+  std::string error;                       ///< why the update was refused
+};
+
+/// "Save as Part": a scene node and its subtree written to the user's parts folder as a new
+/// part (views/part_updates.cpp).
+struct SaveAsPartState {
+  bool open = false;      ///< the popup is shown
+  bool focus = false;     ///< the name field takes the keyboard in the next frame
+  std::string node;       ///< the node saved (its path in the model's scene)
+  std::string name;       ///< the part's name, as typed
+  std::string group;      ///< its group in the palette, as typed
+  std::string error;      ///< why the last Save wrote nothing
+  std::string replacing;  ///< the existing file the user was told of: the next Save replaces it
+};
+
 /// Fonts the views use (null: ImGui's default).
 struct Fonts {
   ImFont* regular = nullptr;  ///< DejaVu Sans
@@ -313,6 +338,8 @@ class App {
   ToolbarState toolbar;             ///< the toolbar's own state
   TreeViewState tree;               ///< the tree view's own state
   IoListState io_list;              ///< the I/O list's own state
+  PartUpdatesState part_updates;    ///< the library's newer versions of the model's parts
+  SaveAsPartState save_part;        ///< "Save as Part"
   double edit_quiet = 0;            ///< seconds since the document last changed (edit mode)
   std::uint64_t quiet_revision = 0; ///< the revision edit_quiet counts from
   std::uint64_t followed_revision = 0;  ///< the revision the run last tried to follow

@@ -1,10 +1,14 @@
 // Part instances edited: placed from the library, given their control, their parameters and
-// placement set.
+// placement set; the library's newer versions taken; a scene node saved as a new part.
 
 #include "gdpn/ide/part_edit.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <set>
 
 #include "gdpn/core/text.h"
 #include "gdpn/ide/document.h"
@@ -36,6 +40,34 @@ void putState(Document& doc, PartTypesState state) {
   m.net = std::move(state.net);
   m.type_scenes = std::move(state.type_scenes);
   m.parts = std::move(state.parts);
+}
+
+/// The words of `text` that could name a parameter (letters, digits and _, not starting with a
+/// digit): a binding's parameter, or the names in its expression ("=length/2").
+void wordsOf(const std::string& text, std::set<std::string>& words) {
+  const auto part = [&](std::size_t i) { return std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '_'; };
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (std::isdigit(c)) {
+      // a number, with what its digits run into (2e3, 0.5): no name
+      while (i < text.size() && (part(i) || text[i] == '.')) ++i;
+      continue;
+    }
+    if (!std::isalpha(c) && c != '_') {
+      ++i;
+      continue;
+    }
+    const std::size_t start = i;
+    while (i < text.size() && part(i)) ++i;
+    words.insert(text.substr(start, i - start));
+  }
+}
+
+/// The names the fields of `node` and its subtree take their values from.
+void namedParams(const scene::Node& node, std::set<std::string>& words) {
+  for (const auto& b : node.params) wordsOf(b.text, words);
+  for (const auto& c : node.children()) namedParams(*c, words);
 }
 
 }  // namespace
@@ -214,6 +246,108 @@ void SetInstanceCommand::absorb(const Command& next) {
   after_ = n.after_;
   translation_ = n.translation_;
   rotation_ = n.rotation_;
+}
+
+std::vector<std::string> removedIoUses(const model::Model& model, const std::vector<model::PartUpdate>& updates,
+                                       std::string& why) {
+  // applied to a copy: the copy shares the scenes, which the updates replace and never edit
+  model::Model copy = model;
+  std::vector<std::string> uses;
+  for (const auto& u : updates) {
+    if (!model::applyPartUpdate(copy, u, uses, why)) return {};
+  }
+  return uses;
+}
+
+UpdatePartsCommand::UpdatePartsCommand(std::vector<model::PartUpdate> updates) : updates_(std::move(updates)) {}
+
+std::string UpdatePartsCommand::apply(Document& doc) {
+  if (other_) {
+    // a redo: exactly what the first apply made
+    auto before = takeState(doc);
+    putState(doc, std::move(*other_));
+    other_ = std::move(before);
+    return {};
+  }
+  if (updates_.empty()) return "no part has a newer version in the library";
+  const auto& m = doc.model();
+  PartTypesState before{m.net, m.type_scenes, m.parts};
+  std::vector<std::string> uses;
+  for (const auto& u : updates_) {
+    std::string why;
+    if (!model::applyPartUpdate(doc.editableModel(), u, uses, why)) {
+      putState(doc, std::move(before));
+      return "'" + u.name + "' cannot be updated: " + why;
+    }
+  }
+  uses_ = std::move(uses);
+  other_ = std::move(before);
+  return {};
+}
+
+void UpdatePartsCommand::revert(Document& doc) {
+  auto now = takeState(doc);
+  putState(doc, std::move(*other_));
+  other_ = std::move(now);
+}
+
+std::string UpdatePartsCommand::label() const {
+  if (updates_.size() == 1) return "update " + updates_[0].name + " to version " + std::to_string(updates_[0].to);
+  return "update " + std::to_string(updates_.size()) + " parts";
+}
+
+std::string userPartsFolder() {
+  const auto var = [](const char* name) {
+    const char* v = std::getenv(name);
+    return v != nullptr ? std::string(v) : std::string();
+  };
+  // as model::partSearchPath reads them: an empty variable is no variable
+  std::string data = var("XDG_DATA_HOME");
+  if (data.empty() && !var("HOME").empty()) data = var("HOME") + "/.local/share";
+  return data.empty() ? std::string() : data + "/gdpn/parts";
+}
+
+SavedPart savePartOfNode(const model::Model& model, const std::string& node, const std::string& name,
+                         const std::string& group, const std::string& folder, bool replace) {
+  namespace fs = std::filesystem;
+  SavedPart out;
+  const scene::Node* n = model.scene ? model.scene->find(node) : nullptr;
+  if (n == nullptr) {
+    out.error = "the model's scene has no node '" + node + "' (a part placed from the library is one already)";
+    return out;
+  }
+  // the model's parameters that the subtree's fields name become the part's
+  std::set<std::string> named;
+  namedParams(*n, named);
+  std::vector<model::Param> params;
+  for (const auto& p : model.params) {
+    if (named.contains(p.name)) params.push_back(p);
+  }
+  std::string why;
+  const auto part = model::partFromNodes({n}, name, group, params, why);
+  if (!part) {
+    out.error = why;
+    return out;
+  }
+  if (folder.empty()) {
+    out.error = "neither $XDG_DATA_HOME nor $HOME is set: there is no parts folder of the user's to save to";
+    return out;
+  }
+  out.file = (fs::path(folder) / (name + model::kModelSuffix)).string();
+  std::error_code ec;
+  if (!replace && fs::exists(out.file, ec)) {
+    out.exists = true;
+    out.error = name + model::kModelSuffix + " exists in " + folder + ": Save again to replace it";
+    return out;
+  }
+  fs::create_directories(folder, ec);
+  if (ec) {
+    out.error = "cannot make " + folder + ": " + ec.message();
+    return out;
+  }
+  core::Diagnostics diags;
+  if (!model::saveModel(*part, out.file, diags)) out.error = diags.str();
+  return out;
 }
 
 }  // namespace gdpn::ide

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "gdpn/ide/document.h"
+#include "gdpn/model/io.h"
 
 namespace gdpn::ide {
 
@@ -34,8 +35,15 @@ bool RunControl::open(Document& doc, core::Diagnostics& diags, session::SessionO
   mode_ = RunMode::Edit;
   options_ = std::move(options);
   session_ = session::Session::create(doc.snapshot(), diags, options_);
+  if (session_) checkIo(diags);
   diags_ = diags;
   return session_ != nullptr;
+}
+
+void RunControl::checkIo(core::Diagnostics& diags) {
+  // as gdpn check does: the io section resolved against the run (the map made is not kept)
+  const auto& io = session_->model().io;
+  if (!io.empty()) (void)model::IoMap::create(session_->simulation(), io, diags);
 }
 
 bool RunControl::prepare() {
@@ -121,6 +129,7 @@ bool RunControl::reset(core::Diagnostics& diags) {
   } else {
     ok = session_->reset(diags);
   }
+  if (ok) checkIo(diags);
   diags_ = diags;
   return ok;
 }

@@ -74,6 +74,27 @@ inline constexpr const char* kPartPayload = "GDPN_PART";
 /// folder when a model is opened), grouped, each with its picture and name, a search field;
 /// a part dragged from it is dropped in the world view.
 void drawPalette(App& app, const Rect& at, nlohmann::json& report);
+/// Scans the library (model::scanParts along model::partSearchPath of the model's folder) for
+/// the palette once per model file opened, and again after Rescan (PaletteState::scanned_for
+/// reset).
+void scanLibrary(App& app);
+/// Once a frame before the views draw: the parts of the model the library holds in a newer
+/// version (model::partUpdates), found again when the document changed or the library was
+/// scanned again (scanned first when the model uses parts).
+void refreshPartUpdates(App& app);
+/// Opens the popup that lists the newer versions found (App::part_updates) and takes them.
+void openPartUpdates(App& app);
+/// In the palette, under its search: "1 part has a newer version" and Update..., when the
+/// library holds one; its button goes into `report["update"]`.
+void drawPartUpdateNotice(App& app, nlohmann::json& report);
+/// The popup "Update Parts": per part its versions, the I/O and parameters it adds, removes and
+/// changes, the io section's uses of removed I/O; Update (one step of undo) or Cancel.
+void drawPartUpdates(App& app, nlohmann::json& report);
+/// Opens "Save as Part" for the selected scene node (App::save_part).
+void openSaveAsPart(App& app);
+/// The popup "Save as Part": the part's name and group, Save (the part file written to the
+/// user's parts folder, the palette scanned again) or Cancel; why nothing was written in red.
+void drawSaveAsPart(App& app, nlohmann::json& report);
 /// After a drop of a part with a control pattern: "Add its control pattern?" at the drop point
 /// (Yes, the default on Enter; No, or Escape); its buttons go into `report["offer"]`.
 void drawDropOffer(App& app, nlohmann::json& report);

@@ -17,9 +17,9 @@ namespace gdpn::ide {
 /// Every action of the IDE.
 enum class ActionId : std::uint8_t {
   // File
-  New, Open, Save, SaveAs, Close, Quit, Restore, Discard,
+  New, Open, Save, SaveAs, Close, Quit, Restore, Discard, SaveAsPart,
   // Edit
-  Undo, Redo, Cut, Copy, Paste, Delete,
+  Undo, Redo, Cut, Copy, Paste, Delete, UpdateParts,
   // View
   SwapViews, WorldFull, NetFull, MiniView, Palette, Sensors, Joints, Contacts, Shadows, Grid,
   SelectTool, MoveTool, TurnTool, ScaleTool, AimTool, Snap, LocalAxes, FrameSelection, Screenshot, Movie,

@@ -1,9 +1,11 @@
 #pragma once
 /// \file
 /// Commands that edit a document's part instances: a part placed from the palette (with the
-/// page types it brings), its control pattern added, an instance's parameter or placement set.
-/// The first two make one library call each (model/part_library.h); every one keeps what it
-/// changed, so that undo gives the model back exactly and redo puts the same result back.
+/// page types it brings), its control pattern added, an instance's parameter or placement set,
+/// the library's newer versions of its parts taken. Each of the library's edits is one library
+/// call (model/part_library.h); every command keeps what it changed, so that undo gives the
+/// model back exactly and redo puts the same result back. Also "Save as Part": a scene node
+/// written to the user's library as a new part.
 
 #include <array>
 #include <cstdint>
@@ -116,5 +118,54 @@ class SetInstanceCommand final : public Command {
   std::optional<net::InstanceSpec> before_;  // the instance before the first apply
   std::optional<net::InstanceSpec> after_;   // and after the last
 };
+
+/// The io section's uses of the I/O that `updates` remove, as they will be located once the
+/// updates are applied ("m.gdpn.yaml:4:5: discrete input 0 uses main/lamp1.seen"): each update
+/// applied (model::applyPartUpdate) to a copy of `model`. Empty with `why` when a library file
+/// does not load.
+[[nodiscard]] std::vector<std::string> removedIoUses(const model::Model& model,
+                                                     const std::vector<model::PartUpdate>& updates, std::string& why);
+
+/// Takes the library's newer versions of parts the model uses (model::applyPartUpdate, once for
+/// each update, in order) as one step: their page types, scenes and part sections replaced,
+/// instance parameters the new versions lack dropped. The io section is left as it is: its uses
+/// of removed I/O become located errors when the model is checked. Undo gives the model back
+/// exactly.
+class UpdatePartsCommand final : public Command {
+ public:
+  /// The updates found by model::partUpdates.
+  explicit UpdatePartsCommand(std::vector<model::PartUpdate> updates);
+  std::string apply(Document& doc) override;
+  void revert(Document& doc) override;
+  [[nodiscard]] std::string label() const override;
+  void absorb(const Command&) override {}
+  /// The io section's uses of removed I/O, located, found by the first apply.
+  [[nodiscard]] const std::vector<std::string>& uses() const { return uses_; }
+
+ private:
+  std::vector<model::PartUpdate> updates_;
+  std::vector<std::string> uses_;
+  std::optional<PartTypesState> other_;  // the state not in the document now (after apply: the one before)
+};
+
+/// The user's own parts folder, where "Save as Part" writes: `$XDG_DATA_HOME/gdpn/parts`, else
+/// `$HOME/.local/share/gdpn/parts` (the folder model::partSearchPath looks in after the
+/// model's own); "" when neither variable is set.
+[[nodiscard]] std::string userPartsFolder();
+
+/// What saving a scene node as a part did.
+struct SavedPart {
+  std::string file;     ///< the part file: written, or the one that exists already
+  std::string error;    ///< why nothing was written ("" when it was)
+  bool exists = false;  ///< refused only because `file` exists (saving again with `replace` replaces it)
+};
+
+/// Writes the part `name` (of the palette's group `group`, version 1) made of node `node` of
+/// `model`'s scene and its subtree (model::partFromNodes; the model's parameters that its
+/// fields name become the part's) to `folder`/`name`.gdpn.yaml, the folder made when missing:
+/// written beside the file and renamed when complete. A file there is replaced only with
+/// `replace`. Nothing is written when `name` is no identifier or the scene has no such node.
+[[nodiscard]] SavedPart savePartOfNode(const model::Model& model, const std::string& node, const std::string& name,
+                                       const std::string& group, const std::string& folder, bool replace);
 
 }  // namespace gdpn::ide

@@ -89,7 +89,10 @@ class RunControl {
   /// names them. In edit mode nothing runs: nothing is handed over, and nothing is returned.
   sensors::ClickTarget click(const core::Ray& ray);
 
-  /// The problems found when the run was last made from the document (empty when it compiled).
+  /// The problems found when the run was last made from the document (empty when it compiled),
+  /// with those of its `io` section as `gdpn check` finds them (an address that names an I/O
+  /// its part no longer has): located errors, though the run is made (only a Modbus
+  /// controller reads the io section).
   [[nodiscard]] const core::Diagnostics& buildDiagnostics() const { return diags_; }
 
   /// The document's revision the run was last made from.
@@ -115,6 +118,7 @@ class RunControl {
  private:
   void takeSteps(std::int64_t n);  // n steps (or plant steps), stopping on a halt
   bool prepare();  // in edit mode, the run made again from an edited document; false when it fails
+  void checkIo(core::Diagnostics& diags);  // the made run's io section resolved against it, its problems into diags
   core::Diagnostics diags_;  // what the last build of the run found
   Document* doc_ = nullptr;
   std::unique_ptr<session::Session> session_;

@@ -46,12 +46,14 @@ std::string shownName(const std::string& name) {
   return out;
 }
 
-/// Scans the library for the model's folder once per model file opened.
-void scan(App& app) {
+}  // namespace
+
+void scanLibrary(App& app) {
   auto& st = app.palette();
   const auto& path = app.document().model().path;
   if (st.scanned_for && *st.scanned_for == path) return;
   st.scanned_for = path;
+  ++st.scans;
   std::error_code ec;
   const auto dir = path.empty() ? fs::path() : fs::absolute(path, ec).parent_path();
   st.folders = model::partSearchPath(dir.string());
@@ -65,6 +67,8 @@ void scan(App& app) {
   st.pictures.clear();
   st.machines.clear();
 }
+
+namespace {
 
 /// The picture of `part`, made `kPicture` pixels at most on a side by averaging (so that it
 /// shows sharp at that size); null when it has none or it cannot be read.
@@ -295,7 +299,7 @@ bool matches(const model::LibraryPart& part, const std::string& search) {
 
 void drawPalette(App& app, const Rect& at, nlohmann::json& report) {
   auto& st = app.palette();
-  scan(app);
+  scanLibrary(app);
   beginPanel("##palette", at, "Parts");
   nlohmann::json items = nlohmann::json::object(), list = nlohmann::json::array(), groups = nlohmann::json::array();
   ImGui::SetNextItemWidth(-70);
@@ -306,6 +310,8 @@ void drawPalette(App& app, const Rect& at, nlohmann::json& report) {
   if (ImGui::Button("Rescan")) st.scanned_for.reset();
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Look for part files again along the search path");
   noteItem("rescan", controls);
+  nlohmann::json updates;
+  drawPartUpdateNotice(app, updates);
   {
     // the list's middle: where a replay's wheel scrolls it
     const ImVec2 c = ImGui::GetCursorScreenPos(), room = ImGui::GetContentRegionAvail();
@@ -349,6 +355,7 @@ void drawPalette(App& app, const Rect& at, nlohmann::json& report) {
   report = {{"shown", true},   {"count", st.parts.size()}, {"listed", shown},        {"search", st.search},
             {"groups", groups}, {"items", items},           {"list", list},          {"folders", st.folders},
             {"warnings", st.warnings}, {"controls", controls}, {"dragging", st.dragged}};
+  report["updates"] = updates;
 }
 
 void drawDropOffer(App& app, nlohmann::json& report) {

@@ -52,6 +52,7 @@ struct PaletteState {
   std::vector<std::string> folders;        ///< the search path scanned
   std::vector<std::string> warnings;       ///< part files skipped, and why
   std::optional<std::string> scanned_for;  ///< the model file the parts were scanned for (none: not yet)
+  std::uint64_t scans = 0;                 ///< grows with every scan (what the part updates were found with)
   std::string search;                      ///< the search field: name, group or description
   std::map<std::string, std::unique_ptr<PictureTexture>> pictures;  ///< by part name (null: none or unreadable)
   std::map<std::string, PartMachine> machines;  ///< by part name, loaded at its first drag
