@@ -761,7 +761,9 @@ bool App::busy() const {
 double App::worldScale() const { return busy() ? kWorldScales[world.level] : 1.0; }
 
 void App::frame(float width, float height, double wall_seconds) {
-  if (wall_seconds > 0) fps = fps == 0 ? 1.0 / wall_seconds : 0.9 * fps + 0.1 / wall_seconds;
+  // the frame time smoothed (not the rate: one very short frame, such as the first, would
+  // read thousands of frames a second and take many frames to fade)
+  if (wall_seconds > 0) fps = 1.0 / (fps == 0 ? wall_seconds : 0.9 / fps + 0.1 * wall_seconds);
   // a software renderer cannot fill a large world view 30 times a second: while running, its
   // resolution follows the frame rate, a step every half second at most (a headless frame
   // stands for 1/60 s and never lowers it)
