@@ -20,3 +20,6 @@ shot actuators/pusher 1.2
 shot storage/bin 2
 shot operator/stack_light 3.5
 shot operator/push_button 0.2
+shot operator/emergency_stop 0.2
+shot operator/selector_switch 0.2
+shot operator/beacon 0.6

@@ -553,7 +553,8 @@ TEST(PartDocs, TheCatalogueIsThePartFiles) {
   const auto parts = scanParts({src + "/parts"}, diags);
   EXPECT_TRUE(diags.all().empty()) << diags.str();
   for (const char* name : {"small_box", "medium_box", "large_box", "emitter", "remover", "belt_conveyor",
-                           "diffuse_sensor", "through_beam", "pusher", "bin", "stack_light", "push_button"}) {
+                           "diffuse_sensor", "through_beam", "pusher", "bin", "stack_light", "push_button",
+                           "emergency_stop", "selector_switch", "beacon"}) {
     const LibraryPart* p = findLibraryPart(parts, name);
     ASSERT_TRUE(p) << name;
     EXPECT_FALSE(p->picture.empty()) << name << " has no picture";

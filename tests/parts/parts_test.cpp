@@ -152,6 +152,9 @@ const std::vector<PartRow>& library() {
        {{"extend", Out, Dig, ""}, {"front_limit", In, Dig, ""}, {"back_limit", In, Dig, ""}}},
       {"operator/stack_light", "Operator", "", {{"red", Out, Dig, ""}, {"amber", Out, Dig, ""}, {"green", Out, Dig, ""}}},
       {"operator/push_button", "Operator", "", {{"pressed", In, Dig, ""}, {"presses", In, Ana, "presses"}}},
+      {"operator/emergency_stop", "Operator", "", {{"latched", In, Dig, ""}, {"released", In, Dig, ""}}},
+      {"operator/selector_switch", "Operator", "", {{"on", In, Dig, ""}}},
+      {"operator/beacon", "Operator", "", {{"on", Out, Dig, ""}, {"lit", In, Dig, ""}}},
   };
   return rows;
 }
@@ -858,6 +861,92 @@ TEST(PushButton, AClickOnItsHeadPressesIt) {
   EXPECT_EQ(tokens(*sim, "main/button1/presses"), 1);
 }
 
+/// A click straight down at (x, 0) at `t` s, as the IDE's world view or `--input` gives one.
+sensors::InputEvent clickAt(double t, double x) {
+  sensors::InputEvent e;
+  e.t = t;
+  e.kind = sensors::InputEvent::Kind::Click;
+  e.ray = {{x, 0, 2}, {0, 0, -1}};
+  return e;
+}
+
+TEST(EmergencyStop, AClickLatchesItUntilTheNextClickReleasesIt) {
+  auto sim = compose(std::string(kFloor) + "pages:\n  main:\n    instances:\n      stop1: {type: emergency_stop}\n",
+                     {"operator/emergency_stop"});
+  ASSERT_TRUE(sim);
+  // latched at 0.5 s, a click beside it at 1.0 s changes nothing, released at 1.5 s
+  sim->setInput({clickAt(0.5, 0.0), clickAt(1.0, 0.5), clickAt(1.5, 0.01)});
+  const double top = sim->plant()->find("stop1/head")->vec3(scene::field::Transform::Translation).z;
+  std::map<double, std::pair<double, double>> seen;  // time: latched, released
+  for (int i = 0; i < 200; ++i) {
+    sim->step();
+    const double t = std::round(sim->kernel().now() * 100) / 100;
+    seen[t] = {io(*sim, "stop1", "latched"), io(*sim, "stop1", "released")};
+    if (t == 1.2) {
+      EXPECT_EQ(tokens(*sim, "main/stop1/latched"), 1);
+      EXPECT_NEAR(sim->plant()->find("stop1/head")->vec3(scene::field::Transform::Translation).z, top - 0.015, 1e-12)
+          << "the head sinks while latched";
+    }
+  }
+  EXPECT_EQ(seen[0.4], (std::pair<double, double>{0, 1}));
+  EXPECT_EQ(seen[0.6], (std::pair<double, double>{1, 0}));
+  EXPECT_EQ(seen[1.4], (std::pair<double, double>{1, 0})) << "a click beside it does not release it";
+  EXPECT_EQ(seen[1.6], (std::pair<double, double>{0, 1}));
+  EXPECT_EQ(tokens(*sim, "main/stop1/latched"), 0);
+}
+
+TEST(SelectorSwitch, EachClickTurnsItToTheOtherSide) {
+  auto sim = compose(std::string(kFloor) + "pages:\n  main:\n    instances:\n      a: {type: selector_switch}\n"
+                                           "      b: {type: selector_switch, translation: [2, 0, 0], params: {start: 1}}\n",
+                     {"operator/selector_switch"});
+  ASSERT_TRUE(sim);
+  sim->setInput({clickAt(0.5, 0.0), clickAt(1.0, 2.0), clickAt(1.5, 0.0)});
+  const auto knob = [&](const std::string& path) {
+    return sim->plant()->find(path + "/head/knob")->value(scene::field::Transform::Rotation);
+  };
+  runFor(*sim, 0.3);
+  EXPECT_EQ(io(*sim, "a", "on"), 0.0);
+  EXPECT_EQ(io(*sim, "b", "on"), 1.0) << "start: 1";
+  runFor(*sim, 0.5);  // 0.8 s
+  EXPECT_EQ(io(*sim, "a", "on"), 1.0);
+  EXPECT_EQ(tokens(*sim, "main/a/on"), 1);
+  EXPECT_EQ((std::get<std::array<double, 4>>(knob("a"))[3]), -45.0) << "turned right";
+  runFor(*sim, 0.5);  // 1.3 s
+  EXPECT_EQ(io(*sim, "b", "on"), 0.0);
+  runFor(*sim, 0.5);  // 1.8 s
+  EXPECT_EQ(io(*sim, "a", "on"), 0.0);
+  EXPECT_EQ((std::get<std::array<double, 4>>(knob("a"))[3]), 45.0) << "turned left";
+}
+
+TEST(Beacon, FlashesAtItsRateWhileOnOrLightsSteady) {
+  auto sim = compose(std::string(kFloor) + "pages:\n  main:\n    instances:\n      a: {type: beacon}\n"
+                                           "      b: {type: beacon, translation: [1, 0, 0], params: {flash: 0}}\n",
+                     {"operator/beacon"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 0.2);
+  EXPECT_EQ(io(*sim, "a", "lit"), 0.0);
+  write(*sim, "a", "on", 1);
+  write(*sim, "b", "on", 1);
+  // 2 Hz: lit a quarter second, dark a quarter second; b steady
+  int changes = 0, b_dark = 0;
+  double last = io(*sim, "a", "lit");
+  for (int i = 0; i < 200; ++i) {  // 2 s
+    sim->step();
+    const double now = io(*sim, "a", "lit");
+    changes += now != last ? 1 : 0;
+    last = now;
+    if (i > 5) b_dark += io(*sim, "b", "lit") == 0.0 ? 1 : 0;
+  }
+  EXPECT_EQ(changes, 8);
+  EXPECT_EQ(b_dark, 0);
+  EXPECT_EQ(colour(*sim, "b/lamp", "emissive"), (std::array<double, 3>{1.0, 0.55, 0.0}));
+  write(*sim, "a", "on", 0);
+  write(*sim, "b", "on", 0);
+  runFor(*sim, 0.6);
+  EXPECT_EQ(io(*sim, "a", "lit"), 0.0);
+  EXPECT_EQ(io(*sim, "b", "lit"), 0.0);
+  EXPECT_EQ(colour(*sim, "b/lamp", "emissive"), (std::array<double, 3>{0, 0, 0}));
+}
 
 // ---------------------------------------------------------------------------------------
 // the parts together: issue 54's station
