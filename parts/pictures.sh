@@ -23,3 +23,9 @@ shot operator/push_button 0.2
 shot operator/emergency_stop 0.2
 shot operator/selector_switch 0.2
 shot operator/beacon 0.6
+shot items/metal_base 1
+shot items/plastic_lid 1
+shot sensors/inductive_sensor 1.2 --sensors
+shot sensors/capacitive_sensor 1.2 --sensors
+shot sensors/code_reader 1.2 --sensors
+shot conveyors/scale_conveyor 1.5

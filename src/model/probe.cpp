@@ -34,6 +34,28 @@ const scene::Node* liveNode(const Simulation& sim, const std::string& path, std:
   return node;
 }
 
+/// What item `item` gives probe `p` (ItemDatum): its datum `p.key` as a number (a bool as 1 or
+/// 0), else its number field of that name (a body's mass); with `p.match`, 1 when the datum
+/// reads as that text. 0 when it has neither.
+double itemValue(const scene::Node& item, const Probe& p) {
+  for (const auto& [name, value] : item.data) {
+    if (name != p.key) continue;
+    if (p.match) return scene::datumText(value) == *p.match ? 1.0 : 0.0;
+    if (const auto* d = std::get_if<double>(&value)) return *d;
+    if (const auto* i = std::get_if<std::int64_t>(&value)) return static_cast<double>(*i);
+    if (const auto* b = std::get_if<bool>(&value)) return *b ? 1.0 : 0.0;
+    return 0.0;
+  }
+  if (p.match) return 0.0;
+  const int f = item.type().fieldIndex(p.key);
+  if (f < 0) return 0.0;
+  const auto& v = item.value(static_cast<std::size_t>(f));
+  if (const auto* d = std::get_if<double>(&v)) return *d;
+  if (const auto* i = std::get_if<std::int64_t>(&v)) return static_cast<double>(*i);
+  if (const auto* b = std::get_if<bool>(&v)) return *b ? 1.0 : 0.0;
+  return 0.0;
+}
+
 }  // namespace
 
 std::optional<Probe> placeProbe(const Simulation& sim, const std::string& place, std::string& why) {
@@ -102,7 +124,7 @@ std::optional<Probe> nodeProbe(const Simulation& sim, const std::string& path, c
     }
     p.what = q == "angle" ? Probe::What::JointAngle : Probe::What::JointRate;
     p.linear = node->choice<scene::JointKind>(scene::field::Joint::Kind) == scene::JointKind::Slider;
-  } else if (q.starts_with("item.")) {
+  } else if (q.starts_with("item.") || q.starts_with("items.")) {
     const bool items = kind != nullptr && std::any_of(kind->channels.begin(), kind->channels.end(), [](const auto& ch) {
                          return ch.type == sensors::ChannelType::Items;
                        });
@@ -111,9 +133,15 @@ std::optional<Probe> nodeProbe(const Simulation& sim, const std::string& path, c
       return std::nullopt;
     }
     p.what = Probe::What::ItemDatum;
-    p.key = q.substr(5);
-    if (p.key.empty()) {
-      why = "'item.' names no datum: write item.KEY (item.colour_code)";
+    p.all = q.starts_with("items.");
+    p.key = q.substr(p.all ? 6 : 5);
+    if (const auto eq = p.key.find('='); eq != std::string::npos) {
+      p.match = p.key.substr(eq + 1);
+      p.key.resize(eq);
+    }
+    if (!core::isIdentifier(p.key)) {
+      why = "'" + q + "' names no datum: write item.KEY, item.KEY=TEXT, items.KEY (item.colour_code, "
+            "item.material=metal, items.mass)";
       return std::nullopt;
     }
   } else if (q == "reading" || q == "active") {
@@ -227,12 +255,9 @@ bool readProbe(const Simulation& sim, const Probe& p, double* out) {
       for (std::size_t c = 0; c < r.channels().size(); ++c) {
         const auto* items = std::get_if<std::vector<scene::NodeHandle>>(&r.value(c));
         if (items == nullptr) continue;
-        const scene::Node* item = items->empty() ? nullptr : sim.plant()->resolve(items->front());
-        for (const auto& [name, value] : item ? item->data : scene::UserData{}) {
-          if (name != p.key) continue;
-          if (const auto* d = std::get_if<double>(&value)) *out = *d;
-          else if (const auto* i = std::get_if<std::int64_t>(&value)) *out = static_cast<double>(*i);
-          else if (const auto* b = std::get_if<bool>(&value)) *out = *b ? 1.0 : 0.0;
+        for (const auto h : *items) {
+          if (const scene::Node* item = sim.plant()->resolve(h)) *out += itemValue(*item, p);
+          if (!p.all) break;
         }
         break;
       }

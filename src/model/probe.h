@@ -27,7 +27,7 @@ struct Probe {
     Channel,     ///< one of a sensor's channels that gives numbers: a number, a flag (1 or 0), a vector
     Active,      ///< a sensor's: 1 while it feels something (a Region holds, a RangeFinder sees), else 0
     Key,         ///< a KeyboardSensor's: 1 while `key` is held down, else 0
-    ItemDatum,   ///< a sensor's: the number its first item holds as user datum `key` (0: no item, or none)
+    ItemDatum,   ///< a sensor's: what its first item (`all`: all its items, summed) holds as `key` (see nodeProbe)
     Field,       ///< one of the node's number or bool fields
   };
   What what = What::Tokens;
@@ -36,7 +36,9 @@ struct Probe {
   std::size_t field = 0;          ///< Field: its index; Channel: the channel's
   bool vector = false;            ///< Channel: a vector's (three numbers, or `axis` alone)
   bool degrees = false;           ///< Channel: an angular rate given in deg/s
-  std::string key;                ///< Key: the key's name; ItemDatum: the datum's
+  std::string key;                ///< Key: the key's name; ItemDatum: the datum's (or number field's)
+  std::optional<std::string> match;  ///< ItemDatum: 1 for an item whose datum reads as this text, else 0
+  bool all = false;               ///< ItemDatum: every item summed, not the first
   bool linear = false;            ///< a slider's angle and rate: metres, never degrees
   int axis = -1;                  ///< Position, Velocity, a vector Channel: 0, 1, 2 for x, y, z alone; -1 for all three
   /// How many numbers it gives: 3 for a whole position, velocity or vector channel, else 1.
@@ -51,7 +53,10 @@ std::optional<Probe> placeProbe(const Simulation& sim, const std::string& place,
 /// Quantity `quantity` of the plant's node `path`: `position`, `velocity` (each also `.x`,
 /// `.y`, `.z` alone), `angle`, `rate`, `reading`, `active`, a sensor's channel that gives
 /// numbers (`distance`, `acceleration`, `acceleration.z`), `item.KEY` (a sensor's first item's
-/// user datum KEY as a number: a colour sensor's code), or a number or bool field's name.
+/// user datum KEY as a number, else its number field KEY: a colour sensor's code, a body's
+/// mass), `item.KEY=TEXT` (1 when that datum reads TEXT: an inductive sensor's `material=metal`),
+/// `items.KEY` and `items.KEY=TEXT` (the same summed over every item: a scale's `items.mass`,
+/// a count), or a number or bool field's name.
 /// Nullopt and `why` (naming what the node has) when it does not have it.
 std::optional<Probe> nodeProbe(const Simulation& sim, const std::string& path, const std::string& quantity,
                                std::string& why);

@@ -273,6 +273,43 @@ TEST(Part, RolesThatCannotBeFilledAreLocatedErrors) {
       << sim->scriptHalt()->message;
 }
 
+TEST(Part, AnInputReadsItsSensorsItemsData) {
+  // a Region holding two bodies with user data (the first in path order: a): the first item's
+  // datum, a text compared, a field,
+  // and the sum over the items; a bad form is located at the I/O
+  const std::string scene = R"Y(scene:
+  - World: {gravity: [0, 0, 0]}
+  - Region: {name: zone, size: [2, 2, 2], report: bodies}
+  - Body: {name: a, mass: 2, data: {code: 7, material: metal}, children: [{Sphere: {radius: 0.1}}]}
+  - Transform: {name: z, translation: [0.5, 0, 0], children: [{Body: {name: b, mass: 3, data: {material: plastic}, children: [{Sphere: {radius: 0.1}}]}}]}
+)Y";
+  const auto model = [&](const std::string& of) {
+    return "gdpn: 1\npage_types:\n  probe:\n    part: {}\n    io:\n      x: {direction: input, signal: analog, node: zone, of: " +
+           of + "}\n    scene:\n      - Region: {name: zone, size: [2, 2, 2], report: bodies}\npages:\n  main:\n    instances:\n      p: {type: probe}\n" + scene;
+  };
+  const auto value = [&](const std::string& of) -> double {
+    core::Diagnostics diags;
+    auto sim = make(model(of), diags);
+    EXPECT_TRUE(sim) << diags.str();
+    if (!sim) return -1;
+    sim->step();
+    sim->step();
+    std::string why;
+    return sim->parts()->read(0, "x", why).value_or(-1);
+  };
+  EXPECT_EQ(value("item.code"), 7);
+  EXPECT_EQ(value("item.material=metal"), 1);
+  EXPECT_EQ(value("item.material=wood"), 0);
+  EXPECT_EQ(value("item.mass"), 2);
+  EXPECT_EQ(value("items.mass"), 5);
+  EXPECT_EQ(value("items.material=plastic"), 1);
+  EXPECT_EQ(value("items.colour"), 0);
+  core::Diagnostics diags;
+  EXPECT_FALSE(make(model("items."), diags));
+  EXPECT_NE(diags.str().find("'items.' names no datum: write item.KEY, item.KEY=TEXT, items.KEY"), std::string::npos)
+      << diags.str();
+}
+
 TEST(Part, ForcesApplyAtStepBoundariesAreTracedAndReproducible) {
   const std::string trace = forcedRun();
   EXPECT_NE(trace.find("\"step\":6,\"t\":0.1,\"ev\":\"force\",\"part\":\"main/a\",\"io\":\"seen\",\"value\":1"),
@@ -554,7 +591,8 @@ TEST(PartDocs, TheCatalogueIsThePartFiles) {
   EXPECT_TRUE(diags.all().empty()) << diags.str();
   for (const char* name : {"small_box", "medium_box", "large_box", "emitter", "remover", "belt_conveyor",
                            "diffuse_sensor", "through_beam", "pusher", "bin", "stack_light", "push_button",
-                           "emergency_stop", "selector_switch", "beacon"}) {
+                           "emergency_stop", "selector_switch", "beacon", "metal_base", "plastic_lid",
+                           "inductive_sensor", "capacitive_sensor", "code_reader", "scale_conveyor"}) {
     const LibraryPart* p = findLibraryPart(parts, name);
     ASSERT_TRUE(p) << name;
     EXPECT_FALSE(p->picture.empty()) << name << " has no picture";

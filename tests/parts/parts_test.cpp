@@ -141,6 +141,8 @@ const std::vector<PartRow>& library() {
       {"items/small_box", "Items", "", {}},
       {"items/medium_box", "Items", "", {}},
       {"items/large_box", "Items", "", {}},
+      {"items/metal_base", "Items", "", {}},
+      {"items/plastic_lid", "Items", "", {}},
       {"sources_and_sinks/emitter", "Sources and sinks", "",
        {{"emit", Out, Dig, ""}, {"emitted", In, Ana, "boxes"}, {"occupied", In, Dig, ""}}},
       {"sources_and_sinks/remover", "Sources and sinks", "", {{"removed", In, Ana, "items"}}},
@@ -148,6 +150,11 @@ const std::vector<PartRow>& library() {
       {"storage/bin", "Storage", "", {{"count", In, Ana, "items"}}},
       {"sensors/diffuse_sensor", "Sensors", "", {{"detected", In, Dig, ""}, {"colour", In, Ana, ""}}},
       {"sensors/through_beam", "Sensors", "", {{"blocked", In, Dig, ""}}},
+      {"sensors/inductive_sensor", "Sensors", "", {{"detected", In, Dig, ""}}},
+      {"sensors/capacitive_sensor", "Sensors", "", {{"detected", In, Dig, ""}}},
+      {"sensors/code_reader", "Sensors", "", {{"code", In, Ana, ""}, {"read", In, Dig, ""}}},
+      {"conveyors/scale_conveyor", "Conveyors", "",
+       {{"mass", In, Ana, "kg"}, {"loaded", In, Dig, ""}, {"run", Out, Dig, ""}, {"speed", Out, Ana, "m/s"}}},
       {"actuators/pusher", "Actuators", "pusher_control",
        {{"extend", Out, Dig, ""}, {"front_limit", In, Dig, ""}, {"back_limit", In, Dig, ""}}},
       {"operator/stack_light", "Operator", "", {{"red", Out, Dig, ""}, {"amber", Out, Dig, ""}, {"green", Out, Dig, ""}}},
@@ -602,6 +609,67 @@ TEST(DiffuseSensor, DetectsABoxWithinItsRangeOnly) {
   EXPECT_NEAR(on, 3.0, 0.05);
   EXPECT_NEAR(off, 3.8, 0.05);
   EXPECT_FALSE(short_saw);
+}
+
+/// The part file's own demo, running.
+std::unique_ptr<Simulation> demoOf(const std::string& rel) {
+  core::Diagnostics diags;
+  auto m = loadModel(partPath(rel), diags);
+  EXPECT_TRUE(m) << diags.str();
+  if (!m) return nullptr;
+  auto sim = Simulation::create(*m, diags);
+  EXPECT_TRUE(sim) << diags.str();
+  return sim;
+}
+
+/// Each step's value of I/O `io` of `part` over `seconds` (from the demo's start): the times
+/// (to 0.01 s) at which it changed, with the value it took.
+std::vector<std::pair<double, double>> changesOf(Simulation& sim, const std::string& part, const std::string& io,
+                                                 double seconds) {
+  std::vector<std::pair<double, double>> out;
+  double last = 0;
+  while (sim.kernel().now() < seconds - 1e-9) {
+    sim.step();
+    const double v = ::gdpn::model::io(sim, part, io);
+    if (v != last) out.emplace_back(std::round(sim.kernel().now() * 100) / 100, v);
+    last = v;
+  }
+  return out;
+}
+
+TEST(ProximitySensors, TheInductiveOneSeesMetalOnlyTheCapacitiveOneEverything) {
+  // the demos carry a metal base (front 0.3 m from the head at 0.5 m/s), then a plastic lid
+  auto inductive = demoOf("sensors/inductive_sensor");
+  auto capacitive = demoOf("sensors/capacitive_sensor");
+  ASSERT_TRUE(inductive && capacitive);
+  using C = std::vector<std::pair<double, double>>;
+  // the base's 0.3 m pass the ray in 0.6 s; the lid's too, 1.2 s later
+  EXPECT_EQ(changesOf(*inductive, "inductive_sensor1", "detected", 4), (C{{0.95, 1}, {1.55, 0}}));
+  EXPECT_EQ(changesOf(*capacitive, "capacitive_sensor1", "detected", 4), (C{{0.95, 1}, {1.55, 0}, {2.14, 1}, {2.74, 0}}));
+}
+
+TEST(CodeReader, ReadsTheCodeOfTheItemUnderIt) {
+  auto sim = demoOf("sensors/code_reader");
+  ASSERT_TRUE(sim);
+  using C = std::vector<std::pair<double, double>>;
+  EXPECT_EQ(changesOf(*sim, "code_reader1", "code", 4), (C{{0.95, 1}, {1.55, 0}, {2.14, 2}, {2.74, 0}}));
+}
+
+TEST(ScaleConveyor, WeighsWhatRidesOnItAndCarriesIt) {
+  // a medium box (1.2 kg), then a metal base (4.5 kg), across the scale from belt to belt
+  auto sim = demoOf("conveyors/scale_conveyor");
+  ASSERT_TRUE(sim);
+  std::vector<double> masses;
+  while (sim->kernel().now() < 6 - 1e-9) {
+    sim->step();
+    const double m = io(*sim, "scale1", "mass");
+    EXPECT_EQ(m != 0.0, io(*sim, "scale1", "loaded") != 0.0);
+    if (m != 0 && (masses.empty() || masses.back() != m)) masses.push_back(m);
+  }
+  EXPECT_EQ(masses, (std::vector<double>{1.2, 4.5}));
+  // both rode on onto the belt out
+  EXPECT_GT(sim->plant()->find("box/box")->framePose().position.x, 0.6);
+  EXPECT_GT(sim->plant()->find("base/base")->framePose().position.x, 0.3);
 }
 
 // ---------------------------------------------------------------------------------------
