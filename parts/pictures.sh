@@ -29,3 +29,4 @@ shot sensors/inductive_sensor 1.2 --sensors
 shot sensors/capacitive_sensor 1.2 --sensors
 shot sensors/code_reader 1.2 --sensors
 shot conveyors/scale_conveyor 1.5
+shot actuators/pick_and_place 3

@@ -157,6 +157,9 @@ const std::vector<PartRow>& library() {
        {{"mass", In, Ana, "kg"}, {"loaded", In, Dig, ""}, {"run", Out, Dig, ""}, {"speed", Out, Ana, "m/s"}}},
       {"actuators/pusher", "Actuators", "pusher_control",
        {{"extend", Out, Dig, ""}, {"front_limit", In, Dig, ""}, {"back_limit", In, Dig, ""}}},
+      {"actuators/pick_and_place", "Actuators", "pick_and_place_control",
+       {{"x", Out, Ana, "m"}, {"down", Out, Dig, ""}, {"vacuum", Out, Dig, ""}, {"x_at", In, Ana, "m"}, {"z_at", In, Ana, "m"},
+        {"holding", In, Dig, ""}}},
       {"operator/stack_light", "Operator", "", {{"red", Out, Dig, ""}, {"amber", Out, Dig, ""}, {"green", Out, Dig, ""}}},
       {"operator/push_button", "Operator", "", {{"pressed", In, Dig, ""}, {"presses", In, Ana, "presses"}}},
       {"operator/emergency_stop", "Operator", "", {{"latched", In, Dig, ""}, {"released", In, Dig, ""}}},
@@ -670,6 +673,33 @@ TEST(ScaleConveyor, WeighsWhatRidesOnItAndCarriesIt) {
   // both rode on onto the belt out
   EXPECT_GT(sim->plant()->find("box/box")->framePose().position.x, 0.6);
   EXPECT_GT(sim->plant()->find("base/base")->framePose().position.x, 0.3);
+}
+
+TEST(PickAndPlace, ItsControlPatternMovesAnItemFromPickToPlace) {
+  // the demo: a metal base on a table under the cup's home (x = 0), one request; the pattern
+  // goes down, grips, lifts it, carries it 1.5 m at 0.6 m/s, sets it down, lets go and goes home
+  auto sim = demoOf("actuators/pick_and_place");
+  ASSERT_TRUE(sim);
+  double lifted = 0, carried_from = -1, carried_to = -1;
+  while (sim->kernel().now() < 9 - 1e-9) {
+    sim->step();
+    const auto p = sim->plant()->find("base/base")->framePose().position;
+    lifted = std::max(lifted, p.z);
+    const double x = io(*sim, "pp1", "x_at");
+    if (io(*sim, "pp1", "holding") != 0.0) {
+      if (carried_from < 0 && io(*sim, "pp1", "x") > 0) carried_from = sim->kernel().now();  // sent on
+      if (x > 1.49) carried_to = carried_to < 0 ? sim->kernel().now() : carried_to;
+    }
+  }
+  const auto p = sim->plant()->find("base/base")->framePose().position;
+  EXPECT_NEAR(p.x, 1.5, 0.01);
+  EXPECT_NEAR(p.y, 0.0, 0.01);
+  EXPECT_NEAR(p.z, 0.8, 0.005) << "set down on the second table";
+  EXPECT_GT(lifted, 1.1) << "lifted clear of the tables";
+  EXPECT_NEAR(carried_to - carried_from, 1.5 / 0.6, 0.15) << "carried at the carriage's speed: " << carried_from << " to " << carried_to;
+  EXPECT_EQ(io(*sim, "pp1", "holding"), 0.0);
+  EXPECT_LT(io(*sim, "pp1", "x_at"), 0.005) << "home again";
+  EXPECT_EQ(tokens(*sim, "main/pp1_control/idle"), 1) << "the move done";
 }
 
 // ---------------------------------------------------------------------------------------
