@@ -162,8 +162,8 @@ int parts(const PartsArgs& args) {
       }
     }
     if (names.empty() || (control && names.size() < 2)) {
-      std::cerr << "--add: error: " << why << "\n";
-      if (names.empty()) return 1;
+      std::cerr << "--add: error: " << why << " (the model is left as it was)\n";
+      return 1;
     }
     for (const auto& n : names) std::cout << "added " << args.page << "/" << n << "\n";
     changed = true;

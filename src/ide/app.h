@@ -206,7 +206,7 @@ struct PartUpdatesState {
 };
 
 /// "Save as Part": a scene node and its subtree written to the user's parts folder as a new
-/// part (views/part_updates.cpp).
+/// part (views/save_as_part.cpp).
 struct SaveAsPartState {
   bool open = false;      ///< the popup is shown
   bool focus = false;     ///< the name field takes the keyboard in the next frame

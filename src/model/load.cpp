@@ -461,6 +461,10 @@ class ModelReader {
     if (section.value.IsNull() || !r_.expectMap(section.value, "uses")) return;
     for (const auto& e : r_.entries(section.value, "uses", {})) {
       if (!identifier(e, "a role's")) continue;
+      if (core::isPythonKeyword(e.key)) {
+        r_.error(e.loc, "role '" + e.key + "' is a word Python reserves: scripts could not write self.uses." + e.key);
+        continue;
+      }
       PartUse use;
       use.name = e.key;
       use.loc = e.loc;

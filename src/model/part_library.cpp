@@ -306,43 +306,81 @@ std::vector<std::string> controlPatterns(const Model& model, const std::string& 
   return out;
 }
 
+std::string roleRefusal(const Model& model, const net::InstanceSpec& candidate, const std::string& controlled,
+                        const PartUse& role) {
+  const auto s = model.parts.find(candidate.type);
+  if (s == model.parts.end()) return "'" + candidate.name + "' is a " + candidate.type + ", no part";
+  if (!s->second.controls.empty()) return "'" + candidate.name + "' is a control pattern (" + candidate.type + "), not a part";
+  if (candidate.name == controlled) return "'" + candidate.name + "' is the part the pattern controls";
+  std::string missing;
+  for (const auto& n : role.io) {
+    if (s->second.findIo(n) == nullptr) missing += (missing.empty() ? "" : ", ") + n;
+  }
+  return missing.empty() ? std::string() : "'" + candidate.name + "' is a " + candidate.type + ", which has no " + missing;
+}
+
 std::vector<net::InstanceSpec::Use> fillRoles(const Model& model, const std::string& page, const std::string& instance,
                                               const std::string& pattern,
                                               const std::vector<net::InstanceSpec::Use>& given, std::string& why) {
-  const net::PageSpec* target = nullptr;
-  for (const auto& p : model.net.pages) {
-    if (p.name == page) target = &p;
-  }
+  const auto target = std::find_if(model.net.pages.begin(), model.net.pages.end(),
+                                   [&](const net::PageSpec& p) { return p.name == page; });
   const auto spec = model.parts.find(pattern);
-  const net::InstanceSpec* self = nullptr;
-  for (const auto& i : target ? target->instances : std::vector<net::InstanceSpec>{}) {
-    if (i.name == instance) self = &i;
-  }
-  if (target == nullptr || spec == model.parts.end() || self == nullptr) {
-    why = "no part instance '" + instance + "' on page '" + page + "', or no control pattern '" + pattern + "'";
+  if (target == model.net.pages.end() || spec == model.parts.end()) {
+    why = "no page '" + page + "', or no control pattern '" + pattern + "'";
     return {};
   }
-  std::vector<net::InstanceSpec::Use> out;
-  for (const auto& u : given) {
-    if (!spec->second.findUse(u.role)) {
+  const auto named = [&](const std::string& name) -> const net::InstanceSpec* {
+    for (const auto& i : target->instances) {
+      if (i.name == name) return &i;
+    }
+    return nullptr;
+  };
+  const net::InstanceSpec* self = named(instance);
+  if (self == nullptr) {
+    why = "no part instance '" + instance + "' on page '" + page + "'";
+    return {};
+  }
+  const auto needs = [](const PartUse& role) {
+    std::string out;
+    for (const auto& n : role.io) out += (out.empty() ? "" : ", ") + n;
+    return out;
+  };
+  // what is given: known roles, each once, filled by parts that fit
+  for (std::size_t k = 0; k < given.size(); ++k) {
+    const auto& u = given[k];
+    const PartUse* role = spec->second.findUse(u.role);
+    if (role == nullptr) {
       why = "'" + pattern + "' has no role '" + u.role + "'";
       return {};
     }
+    for (std::size_t j = 0; j < k; ++j) {
+      if (given[j].role == u.role) {
+        why = "role '" + u.role + "' is given twice";
+        return {};
+      }
+    }
+    const net::InstanceSpec* part = named(u.part);
+    const std::string refusal = part ? roleRefusal(model, *part, instance, *role) : "no instance '" + u.part + "' on page '" + page + "'";
+    if (!refusal.empty()) {
+      why = refusal + ": role '" + u.role + "' of '" + pattern + "' needs a part with " + needs(*role);
+      return {};
+    }
   }
+  std::vector<net::InstanceSpec::Use> out;
   for (const auto& role : spec->second.uses) {
     const auto set = std::find_if(given.begin(), given.end(), [&](const auto& u) { return u.role == role.name; });
     if (set != given.end()) {
       out.push_back(*set);
       continue;
     }
-    // the nearest part instance that has the role's I/O (the first of equals)
+    // the nearest part instance that fits (the first of equals)
     const net::InstanceSpec* best = nullptr;
     double best_d = 0;
     for (const auto& i : target->instances) {
-      const auto s = model.parts.find(i.type);
-      if (i.name == instance || s == model.parts.end() || !s->second.controls.empty() || !s->second.fills(role)) continue;
+      if (!roleRefusal(model, i, instance, role).empty()) continue;
       const double d = std::hypot(i.translation[0] - self->translation[0], i.translation[1] - self->translation[1],
                                   i.translation[2] - self->translation[2]);
+      if (!std::isfinite(d)) continue;
       if (best == nullptr || d < best_d) {
         best = &i;
         best_d = d;
@@ -351,9 +389,7 @@ std::vector<net::InstanceSpec::Use> fillRoles(const Model& model, const std::str
     if (best != nullptr) {
       out.push_back({role.name, best->name, {}});
     } else if (!role.optional) {
-      std::string needs;
-      for (const auto& n : role.io) needs += (needs.empty() ? "" : ", ") + n;
-      why = "'" + pattern + "' needs a part with " + needs + " for its role '" + role.name + "'" +
+      why = "'" + pattern + "' needs a part with " + needs(role) + " for its role '" + role.name + "'" +
             (role.description.empty() ? "" : " (" + role.description + ")") + ": place one on page '" + page + "' first";
       return {};
     }

@@ -92,7 +92,8 @@ std::optional<Probe> nodeProbe(const Simulation& sim, const std::string& path, c
   };
   std::string q = quantity;
   // position.x: one axis of a vector
-  if (const auto dot = q.rfind('.'); dot != std::string::npos && dot + 2 == q.size() && q[dot + 1] >= 'x' &&
+  const bool of_items = q.starts_with("item.") || q.starts_with("items.");  // item.x is a datum, not an axis
+  if (const auto dot = q.rfind('.'); !of_items && dot != std::string::npos && dot + 2 == q.size() && q[dot + 1] >= 'x' &&
                                      q[dot + 1] <= 'z') {
     p.axis = q[dot + 1] - 'x';
     q.resize(dot);
@@ -124,7 +125,7 @@ std::optional<Probe> nodeProbe(const Simulation& sim, const std::string& path, c
     }
     p.what = q == "angle" ? Probe::What::JointAngle : Probe::What::JointRate;
     p.linear = node->choice<scene::JointKind>(scene::field::Joint::Kind) == scene::JointKind::Slider;
-  } else if (q.starts_with("item.") || q.starts_with("items.")) {
+  } else if (of_items) {
     const bool items = kind != nullptr && std::any_of(kind->channels.begin(), kind->channels.end(), [](const auto& ch) {
                          return ch.type == sensors::ChannelType::Items;
                        });
@@ -139,7 +140,7 @@ std::optional<Probe> nodeProbe(const Simulation& sim, const std::string& path, c
       p.match = p.key.substr(eq + 1);
       p.key.resize(eq);
     }
-    if (!core::isIdentifier(p.key)) {
+    if (!core::isIdentifier(p.key) || (p.match && (p.match->empty() || p.match->find('=') != std::string::npos))) {
       why = "'" + q + "' names no datum: write item.KEY, item.KEY=TEXT, items.KEY (item.colour_code, "
             "item.material=metal, items.mass)";
       return std::nullopt;

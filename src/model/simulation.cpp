@@ -1,6 +1,7 @@
 #include "gdpn/model/simulation.h"
 
 #include "gdpn/core/expression.h"
+#include "gdpn/model/part_library.h"
 #include "gdpn/model/part_run.h"
 
 #include "signal_recorder.h"
@@ -207,26 +208,19 @@ class InstancePlacer {
       }
       const auto target = std::find_if(page.instances.begin(), page.instances.end(),
                                         [&](const net::InstanceSpec& i) { return i.name == u.part; });
-      const auto spec = target == page.instances.end() ? model_.parts.end() : model_.parts.find(target->type);
       std::string needs;
       for (const auto& n : role->io) needs += (needs.empty() ? "" : ", ") + n;
-      if (spec == model_.parts.end()) {
+      if (target == page.instances.end()) {
         std::vector<std::string> names;
         for (const auto& i : page.instances) {
-          const auto s = model_.parts.find(i.type);
-          if (s != model_.parts.end() && s->second.fills(*role)) names.push_back(i.name);
+          if (roleRefusal(model_, i, inst.part, *role).empty()) names.push_back(i.name);
         }
         diags_.error(u.loc, "no part instance '" + u.part + "' on page '" + page.name + "'" +
                                 core::didYouMean(u.part, names));
         continue;
       }
-      if (!spec->second.fills(*role)) {
-        std::string missing;
-        for (const auto& n : role->io) {
-          if (!spec->second.findIo(n)) missing += (missing.empty() ? "" : ", ") + n;
-        }
-        diags_.error(u.loc, "'" + u.part + "' is a " + target->type + ", which has no " + missing + ": role '" +
-                                u.role + "' of '" + inst.type + "' needs a part with " + needs);
+      if (const auto refusal = roleRefusal(model_, *target, inst.part, *role); !refusal.empty()) {
+        diags_.error(u.loc, refusal + ": role '" + u.role + "' of '" + inst.type + "' needs a part with " + needs);
         continue;
       }
       placed.uses.emplace_back(u.role, prefix + "/" + u.part);

@@ -982,6 +982,42 @@ TEST(CliRun, ParamSetsAParameterForTheRunAndMistakesNameTheArgument) {
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.out.find("--param: error: parameter 'parts' expects a number, got 'two'"), std::string::npos) << r.out;
 }
+TEST(CliParts, APatternIsAddedWithItsRolesAndAMistakeLeavesTheModelAlone) {
+  const gdpn::testing::ScratchFolder dir("gdpn_parts_cli");
+  const std::string model = dir.file("s.gdpn.yaml");
+  { std::ofstream(model) << "gdpn: 1\n"; }
+  for (const char* add : {"belt_conveyor --at 1 0 0", "diffuse_sensor --at 1.3 0 0"}) {
+    const auto r = gdpn(std::string("parts --model ") + model + " --add " + add);
+    ASSERT_EQ(r.code, 0) << r.out;
+  }
+  const std::string before = gdpn::testing::fileBytes(model);
+  // a role filled by a part without its I/O, a role given twice, an unknown pattern: refused,
+  // and the file as it was
+  auto r = gdpn("parts --model " + model + " --add pusher --at 1 0 0 --pattern pusher_sort --use eye=belt_conveyor1");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find("--add: error: 'belt_conveyor1' is a belt_conveyor, which has no detected, colour: role 'eye' of "
+                       "'pusher_sort' needs a part with detected, colour (the model is left as it was)"),
+            std::string::npos)
+      << r.out;
+  r = gdpn("parts --model " + model + " --add pusher --pattern pusher_sort --use eye=diffuse_sensor1 --use eye=diffuse_sensor1");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find("role 'eye' is given twice"), std::string::npos) << r.out;
+  r = gdpn("parts --model " + model + " --add pusher --pattern pusher_sorts");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find("'pusher_sorts' is no control pattern of 'pusher' (it has: pusher_control, pusher_sort)"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(gdpn::testing::fileBytes(model), before);
+  // the roles filled by the nearest parts that fit
+  r = gdpn("parts --model " + model + " --add pusher --at 1 0 0 --pattern pusher_sort");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(r.out, "added main/pusher1\nadded main/pusher1_sort\n");
+  EXPECT_NE(gdpn::testing::fileBytes(model).find(
+                "pusher1_sort: {type: pusher_sort, part: pusher1, uses: {eye: diffuse_sensor1, belt: belt_conveyor1}}"),
+            std::string::npos);
+  EXPECT_EQ(gdpn("check " + model).code, 0);
+}
+
 TEST(CliRun, SignalsAreWrittenAsCsvAndMistakesNameTheArgument) {
   const gdpn::testing::ScratchFolder dir("gdpn_signals");
   auto r = gdpn("run tests/data/good/falling_ball.gdpn.yaml --quiet --signals " + dir.file("s.csv") +

@@ -260,8 +260,19 @@ TEST(Part, RolesThatCannotBeFilledAreLocatedErrors) {
             std::string::npos);
   // a part without the role's I/O: the pattern itself has none
   EXPECT_NE(errors("      m: {type: lamp_mirror, part: a, uses: {other: n}}\n      n: {type: lamp_mirror, part: b, uses: {other: a}}\n")
-                .find("'n' is a lamp_mirror, which has no seen: role 'other' of 'lamp_mirror' needs a part with seen"),
+                .find("'n' is a control pattern (lamp_mirror), not a part: role 'other' of 'lamp_mirror' needs a part with seen"),
             std::string::npos);
+  EXPECT_NE(errors("      m: {type: lamp_mirror, part: a, uses: {other: a}}\n")
+                .find("'a' is the part the pattern controls: role 'other' of 'lamp_mirror' needs a part with seen"),
+            std::string::npos);
+  // a role named as Python reserves a word: scripts could not reach it
+  {
+    core::Diagnostics d;
+    auto text = mirrorModel("  main:\n    instances:\n      a: {type: lamp}\n");
+    text.replace(text.find("      spare:"), 12, "      class:");
+    EXPECT_FALSE(parseModel(text, "m.gdpn.yaml", d));
+    EXPECT_NE(d.str().find("role 'class' is a word Python reserves"), std::string::npos) << d.str();
+  }
   // a script asking for roles where there are none
   core::Diagnostics diags;
   auto sim = make(lampModel("  main:\n    instances:\n      a: {type: lamp}\n    transitions:\n      t: {guard: 'self.uses.eye'}\n"),
@@ -304,10 +315,16 @@ TEST(Part, AnInputReadsItsSensorsItemsData) {
   EXPECT_EQ(value("items.mass"), 5);
   EXPECT_EQ(value("items.material=plastic"), 1);
   EXPECT_EQ(value("items.colour"), 0);
+  EXPECT_EQ(value("item.x"), 0) << "a datum named x, not an axis";
   core::Diagnostics diags;
   EXPECT_FALSE(make(model("items."), diags));
   EXPECT_NE(diags.str().find("'items.' names no datum: write item.KEY, item.KEY=TEXT, items.KEY"), std::string::npos)
       << diags.str();
+  for (const char* bad : {"item.material=", "item.a=b=c"}) {
+    core::Diagnostics d;
+    EXPECT_FALSE(make(model(bad), d)) << bad;
+    EXPECT_NE(d.str().find("names no datum"), std::string::npos) << d.str();
+  }
 }
 
 TEST(Part, ForcesApplyAtStepBoundariesAreTracedAndReproducible) {
@@ -535,6 +552,15 @@ TEST(PartLibrary, AControlPatternsRolesAreFilledByTheNearestPartThatFits) {
   EXPECT_EQ(roles[0].part, "far");
   EXPECT_TRUE(fillRoles(*m, "main", "a", "lamp_mirror", {{"nobody", "far", {}}}, why).empty());
   EXPECT_EQ(why, "'lamp_mirror' has no role 'nobody'");
+  why.clear();
+  EXPECT_TRUE(fillRoles(*m, "main", "a", "lamp_mirror", {{"other", "far", {}}, {"other", "near", {}}}, why).empty());
+  EXPECT_EQ(why, "role 'other' is given twice");
+  why.clear();
+  EXPECT_TRUE(fillRoles(*m, "main", "a", "lamp_mirror", {{"other", "a", {}}}, why).empty());
+  EXPECT_EQ(why, "'a' is the part the pattern controls: role 'other' of 'lamp_mirror' needs a part with seen");
+  why.clear();
+  EXPECT_TRUE(fillRoles(*m, "main", "a", "lamp_mirror", {{"other", "ghost", {}}}, why).empty());
+  EXPECT_EQ(why, "no instance 'ghost' on page 'main': role 'other' of 'lamp_mirror' needs a part with seen");
   // added: named after the pattern's own word, and it runs
   why.clear();
   EXPECT_EQ(addPartControl(*m, "main", "a", why, "lamp_mirror"), "a_mirror") << why;

@@ -43,6 +43,9 @@ std::vector<std::string_view> words(std::string_view text);
 /// True for [A-Za-z_][A-Za-z0-9_]*.
 bool isIdentifier(std::string_view s);
 
+/// True for a word Python reserves (`class`, `None`, `lambda`): no attribute can be named so.
+bool isPythonKeyword(std::string_view s);
+
 /// The number `s` writes ("0.8", "-3", "1e-3"), all of it; nullopt for anything else
 /// (blanks, trailing text, an empty string).
 std::optional<double> parseNumber(std::string_view s);

@@ -71,11 +71,18 @@ std::vector<std::string> placePart(Model& model, const std::string& page, const 
 /// then the page types that say they `control` it, in the file's order.
 std::vector<std::string> controlPatterns(const Model& model, const std::string& type);
 
+/// Why part instance `candidate` cannot fill role `role` of a control pattern's instance that
+/// controls `controlled` (on the same page): it is no part, a control pattern, the controlled
+/// part itself, or lacks some of the role's I/O. "" when it can.
+std::string roleRefusal(const Model& model, const net::InstanceSpec& candidate, const std::string& controlled,
+                        const PartUse& role);
+
 /// The parts that fill the roles (`uses`) of control pattern `pattern` for an instance that
 /// controls part instance `instance` on `page`: those `given`, and for each other role the part
 /// instance nearest `instance` (m, between their translations; the first of equals) whose part
-/// has the role's I/O. An optional role no part fills is left out. Empty with `why` when a
-/// role is unknown or a required one has no part to fill it.
+/// fits (roleRefusal). An optional role no part fills is left out. Empty with `why` when a
+/// role is unknown or given twice, a given part does not fit, or a required role has no part
+/// to fill it.
 std::vector<net::InstanceSpec::Use> fillRoles(const Model& model, const std::string& page, const std::string& instance,
                                               const std::string& pattern,
                                               const std::vector<net::InstanceSpec::Use>& given, std::string& why);

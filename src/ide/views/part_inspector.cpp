@@ -61,11 +61,8 @@ void drawPartInspector(App& app, const PartInstanceAt& at, nlohmann::json& repor
   const auto controller = controllerOf(m, at);
   if (!controller.empty()) {
     std::string with;
-    for (const auto& p : m.net.pages) {
-      for (const auto& i : p.name == at.page ? p.instances : std::vector<net::InstanceSpec>{}) {
-        if (i.name != controller) continue;
-        for (const auto& u : i.uses) with += (with.empty() ? " (" : ", ") + u.role + ": " + u.part;
-      }
+    if (const auto* c = instanceAt(m, {at.page, controller}); c != nullptr) {
+      for (const auto& u : c->uses) with += (with.empty() ? " (" : ", ") + u.role + ": " + u.part;
     }
     ImGui::Text("controlled by %s%s", controller.c_str(), with.empty() ? "" : (with + ")").c_str());
   } else {
