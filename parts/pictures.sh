@@ -30,3 +30,5 @@ shot sensors/capacitive_sensor 1.2 --sensors
 shot sensors/code_reader 1.2 --sensors
 shot conveyors/scale_conveyor 1.5
 shot actuators/pick_and_place 3
+shot items/pallet 1.4
+shot conveyors/chute 0.3

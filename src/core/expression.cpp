@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <numbers>
 
 #include "gdpn/core/text.h"
 
@@ -154,6 +155,15 @@ class Evaluator {
       if (!want(2)) return std::nullopt;
       return name == "min" ? std::min(args[0], args[1]) : std::max(args[0], args[1]);
     }
+    if (name == "atan2d") {  // degrees, as MATLAB's: the angle parts turn by
+      if (!want(2)) return std::nullopt;
+      return std::atan2(args[0], args[1]) * 180.0 / std::numbers::pi;
+    }
+    if (name == "sind" || name == "cosd") {
+      if (!want(1)) return std::nullopt;
+      const double r = args[0] * std::numbers::pi / 180.0;
+      return name == "sind" ? std::sin(r) : std::cos(r);
+    }
     if (name == "abs" || name == "sqrt" || name == "floor" || name == "ceil") {
       if (!want(1)) return std::nullopt;
       if (name == "abs") return std::abs(args[0]);
@@ -163,8 +173,8 @@ class Evaluator {
       return std::sqrt(args[0]);
     }
     return fail(at, "no function '" + name + "'" +
-                        didYouMean(name, {"min", "max", "abs", "sqrt", "floor", "ceil"}) +
-                        " (there are: min, max, abs, sqrt, floor, ceil)");
+                        didYouMean(name, {"min", "max", "abs", "sqrt", "floor", "ceil", "sind", "cosd", "atan2d"}) +
+                        " (there are: min, max, abs, sqrt, floor, ceil, sind, cosd, atan2d)");
   }
 
   std::string_view s_;

@@ -49,6 +49,11 @@ TEST(Expression, Functions) {
   EXPECT_EQ(value("sqrt(16)"), 4.0);
   EXPECT_EQ(value("floor(length/0.3)"), 6.0);
   EXPECT_EQ(value("ceil(length/0.3)"), 7.0);
+  // in degrees, as rotations are written
+  EXPECT_NEAR(value("sind(30)"), 0.5, 1e-15);
+  EXPECT_NEAR(value("cosd(60)"), 0.5, 1e-15);
+  EXPECT_NEAR(value("atan2d(width, width)"), 45.0, 1e-12);
+  EXPECT_NEAR(value("atan2d(-1, 0)"), -90.0, 1e-12);
 }
 
 TEST(Expression, ErrorsNameWhatAndWhere) {
@@ -63,7 +68,8 @@ TEST(Expression, ErrorsNameWhatAndWhere) {
   EXPECT_EQ(error("(length").message, "expected ')'");
   EXPECT_EQ(error("length 2").message, "unexpected '2'");
   EXPECT_EQ(error("mx(1, 2)").message,
-            "no function 'mx' (did you mean 'max'?) (there are: min, max, abs, sqrt, floor, ceil)");
+            "no function 'mx' (did you mean 'max'?) (there are: min, max, abs, sqrt, floor, ceil, sind, cosd, atan2d)");
+  EXPECT_EQ(error("atan2d(1)").message, "atan2d() takes 2 arguments, got 1");
   EXPECT_EQ(error("min(1)").message, "min() takes 2 arguments, got 1");
   EXPECT_EQ(error("sqrt(-1)").message, "sqrt() of a negative number");
   EXPECT_EQ(error("1.2.3").message, "'1.2.3' is not a number");

@@ -153,6 +153,8 @@ const std::vector<PartRow>& library() {
       {"sensors/inductive_sensor", "Sensors", "", {{"detected", In, Dig, ""}}},
       {"sensors/capacitive_sensor", "Sensors", "", {{"detected", In, Dig, ""}}},
       {"sensors/code_reader", "Sensors", "", {{"code", In, Ana, ""}, {"read", In, Dig, ""}}},
+      {"conveyors/chute", "Conveyors", "", {}},
+      {"items/pallet", "Items", "", {}},
       {"conveyors/scale_conveyor", "Conveyors", "",
        {{"mass", In, Ana, "kg"}, {"loaded", In, Dig, ""}, {"run", Out, Dig, ""}, {"speed", Out, Ana, "m/s"}}},
       {"actuators/pusher", "Actuators", "pusher_control",
@@ -656,6 +658,23 @@ TEST(CodeReader, ReadsTheCodeOfTheItemUnderIt) {
   ASSERT_TRUE(sim);
   using C = std::vector<std::pair<double, double>>;
   EXPECT_EQ(changesOf(*sim, "code_reader1", "code", 4), (C{{0.95, 1}, {1.55, 0}, {2.14, 2}, {2.74, 0}}));
+}
+
+TEST(Chute, AnItemSlidesDownAtGravitysPullLessFriction) {
+  // its demo: a box at rest on the slope (atan(0.4 / 1.0) = 21.8 degrees), friction sqrt(0.1 *
+  // 0.1) = 0.1: it slides with a = g (sin - 0.1 cos), 2.73 m/s^2, so 0.342 m along the slope in
+  // 0.5 s
+  auto sim = demoOf("conveyors/chute");
+  ASSERT_TRUE(sim);
+  const double angle = std::atan2(0.4, 1.0);
+  const double a = 9.81 * (std::sin(angle) - 0.1 * std::cos(angle));
+  const auto start = sim->plant()->find("box/box")->framePose().position;
+  runFor(*sim, 0.5);
+  const auto p = sim->plant()->find("box/box")->framePose().position;
+  const double along = std::hypot(p.x - start.x, p.z - start.z);
+  EXPECT_NEAR(along, 0.5 * a * 0.25, 0.05 * 0.5 * a * 0.25);
+  EXPECT_NEAR((start.z - p.z) / (p.x - start.x), 0.4, 0.01) << "down the slope";
+  EXPECT_NEAR(p.y, 0.0, 1e-3);
 }
 
 TEST(ScaleConveyor, WeighsWhatRidesOnItAndCarriesIt) {

@@ -2,7 +2,8 @@
 /// \file
 /// Arithmetic over named numbers, as a part's fields write derived values
 /// (`translation: [=length/2, 0, 0]`): numbers, names, `+ - * /`, parentheses, unary minus,
-/// and the functions `min(a, b)`, `max(a, b)`, `abs(x)`, `sqrt(x)`, `floor(x)`, `ceil(x)`.
+/// and the functions `min(a, b)`, `max(a, b)`, `abs(x)`, `sqrt(x)`, `floor(x)`, `ceil(x)`, and in
+/// degrees `sind(x)`, `cosd(x)`, `atan2d(y, x)`.
 
 #include <functional>
 #include <optional>
