@@ -235,6 +235,18 @@ bool copyPartType(Model& model, const LibraryPart& part, std::string& why) {
   return true;
 }
 
+namespace {
+
+/// Whether `page` has an instance, place or transition named `name`.
+bool nameTaken(const net::PageSpec& page, const std::string& name) {
+  const auto named = [&](const auto& list) {
+    return std::any_of(list.begin(), list.end(), [&](const auto& x) { return x.name == name; });
+  };
+  return named(page.instances) || named(page.places) || named(page.transitions);
+}
+
+}  // namespace
+
 std::string freeInstanceName(const Model& model, const std::string& page, const std::string& prefix) {
   std::set<std::string> taken;
   for (const auto* pages : {&model.net.pages, &model.net.page_types}) {
@@ -270,12 +282,7 @@ std::vector<std::string> placePart(Model& model, const std::string& page, const 
   std::vector<std::string> out;
   net::InstanceSpec inst;
   inst.name = name.empty() ? freeInstanceName(model, page, part.name) : name;
-  const auto taken = [&](const std::string& n) {
-    return std::any_of(target->instances.begin(), target->instances.end(), [&](const auto& i) { return i.name == n; }) ||
-           std::any_of(target->places.begin(), target->places.end(), [&](const auto& i) { return i.name == n; }) ||
-           std::any_of(target->transitions.begin(), target->transitions.end(), [&](const auto& i) { return i.name == n; });
-  };
-  if (!core::isIdentifier(inst.name) || taken(inst.name)) {
+  if (!core::isIdentifier(inst.name) || nameTaken(*target, inst.name)) {
     why = "'" + inst.name + "' is taken on page '" + page + "' or is no name";
     return {};
   }
@@ -442,10 +449,7 @@ std::string addPartControl(Model& model, const std::string& page, const std::str
   std::string suffix = "_control";
   if (!usual && pattern.starts_with(inst->type + "_")) suffix = pattern.substr(inst->type.size());
   const std::string wanted = instance + suffix;
-  const bool taken = std::any_of(target->instances.begin(), target->instances.end(), [&](const auto& i) { return i.name == wanted; }) ||
-                     std::any_of(target->places.begin(), target->places.end(), [&](const auto& i) { return i.name == wanted; }) ||
-                     std::any_of(target->transitions.begin(), target->transitions.end(), [&](const auto& i) { return i.name == wanted; });
-  c.name = taken ? freeInstanceName(model, page, wanted) : wanted;
+  c.name = nameTaken(*target, wanted) ? freeInstanceName(model, page, wanted) : wanted;
   c.type = pattern;
   c.part = instance;
   c.uses = std::move(filled);

@@ -252,10 +252,7 @@ double PartRun::plantValue(const Bound& b) const {
     const scene::Node* node = sim_->plant()->resolve(b.node);
     if (node == nullptr) return 0.0;
     if (b.spec->signal == IoSignal::Digital) return node->value(b.field) == b.on ? 1.0 : 0.0;
-    const scene::FieldValue v = scene::convertAngle(*node, b.field, node->value(b.field), sim_->model().settings.angles, false);
-    if (const auto* d = std::get_if<double>(&v)) return *d;
-    if (const auto* i = std::get_if<std::int64_t>(&v)) return static_cast<double>(*i);
-    return 0.0;
+    return numberOf(scene::convertAngle(*node, b.field, node->value(b.field), sim_->model().settings.angles, false));
   }
   double v = 0.0;
   if (!readProbe(*sim_, b.probe, &v)) return 0.0;

@@ -34,6 +34,17 @@ const scene::Node* liveNode(const Simulation& sim, const std::string& path, std:
   return node;
 }
 
+}  // namespace
+
+double numberOf(const scene::FieldValue& v) {
+  if (const auto* d = std::get_if<double>(&v)) return *d;
+  if (const auto* i = std::get_if<std::int64_t>(&v)) return static_cast<double>(*i);
+  if (const auto* b = std::get_if<bool>(&v)) return *b ? 1.0 : 0.0;
+  return 0.0;
+}
+
+namespace {
+
 /// What item `item` gives probe `p` (ItemDatum): its datum `p.key` as a number (a bool as 1 or
 /// 0), else its number field of that name (a body's mass); with `p.match`, 1 when the datum
 /// reads as that text. 0 when it has neither.
@@ -41,19 +52,11 @@ double itemValue(const scene::Node& item, const Probe& p) {
   for (const auto& [name, value] : item.data) {
     if (name != p.key) continue;
     if (p.match) return scene::datumText(value) == *p.match ? 1.0 : 0.0;
-    if (const auto* d = std::get_if<double>(&value)) return *d;
-    if (const auto* i = std::get_if<std::int64_t>(&value)) return static_cast<double>(*i);
-    if (const auto* b = std::get_if<bool>(&value)) return *b ? 1.0 : 0.0;
-    return 0.0;
+    return numberOf(value);
   }
   if (p.match) return 0.0;
   const int f = item.type().fieldIndex(p.key);
-  if (f < 0) return 0.0;
-  const auto& v = item.value(static_cast<std::size_t>(f));
-  if (const auto* d = std::get_if<double>(&v)) return *d;
-  if (const auto* i = std::get_if<std::int64_t>(&v)) return static_cast<double>(*i);
-  if (const auto* b = std::get_if<bool>(&v)) return *b ? 1.0 : 0.0;
-  return 0.0;
+  return f < 0 ? 0.0 : numberOf(item.value(static_cast<std::size_t>(f)));
 }
 
 }  // namespace
@@ -265,10 +268,7 @@ bool readProbe(const Simulation& sim, const Probe& p, double* out) {
       break;
     }
     case Probe::What::Field: {
-      const auto v = scene::convertAngle(*node, p.field, node->value(p.field), sim.model().settings.angles, false);
-      if (const auto* d = std::get_if<double>(&v)) *out = *d;
-      else if (const auto* i = std::get_if<std::int64_t>(&v)) *out = static_cast<double>(*i);
-      else if (const auto* b = std::get_if<bool>(&v)) *out = *b ? 1.0 : 0.0;
+      *out = numberOf(scene::convertAngle(*node, p.field, node->value(p.field), sim.model().settings.angles, false));
       break;
     }
   }

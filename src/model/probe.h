@@ -64,6 +64,9 @@ std::optional<Probe> nodeProbe(const Simulation& sim, const std::string& path, c
 /// Whether `key` is held down at KeyboardSensor `path`; nullopt and `why` when it is none.
 std::optional<Probe> keyProbe(const Simulation& sim, const std::string& path, const std::string& key, std::string& why);
 
+/// A bool, whole number or number field value as a number (a bool as 1 or 0); 0 for any other.
+double numberOf(const scene::FieldValue& v);
+
 /// Reads `p` into `out` (p.width() numbers); false when its node has been deleted.
 bool readProbe(const Simulation& sim, const Probe& p, double* out);
 
