@@ -45,12 +45,13 @@ bool isChoice(Section section, const std::string& name, const std::string& word)
   return std::find(choices.begin(), choices.end(), word) != choices.end();
 }
 
-/// A node path: identifiers joined by '/'.
-bool isNodePath(const std::string& s) {
+/// A node path: identifiers joined by '/' (and `*`s for every child, where `any`).
+bool isNodePath(const std::string& s, bool any = false) {
   std::size_t begin = 0;
   while (true) {
     const auto end = s.find('/', begin);
-    if (!core::isIdentifier(std::string_view(s).substr(begin, end - begin))) return false;
+    const std::string_view segment = std::string_view(s).substr(begin, end - begin);
+    if (!core::isIdentifier(segment) && !(any && segment == "*")) return false;
     if (end == std::string::npos) return true;
     begin = end + 1;
   }
@@ -548,7 +549,9 @@ class ModelReader {
         } else if (f.key == "description") {
           io.description = *text;
         } else if (f.key == "node") {
-          if (!isNodePath(*text)) r_.error(f.value, "'" + *text + "' is not a node path (names joined by '/')");
+          if (!isNodePath(*text, true)) {
+            r_.error(f.value, "'" + *text + "' is not a node path (names joined by '/', or `*` for every child)");
+          }
           io.node = *text;
         } else if (f.key == "of") {
           io.of = *text;
@@ -568,6 +571,10 @@ class ModelReader {
       const bool input = io.direction == IoDirection::Input;
       if (input && (io.of.empty() || !io.field.empty())) {
         r_.error(e.loc, name + " is an input: it reads 'of' (active, reading, a channel, a field), not 'field'");
+        continue;
+      }
+      if (input && io.node.find('*') != std::string::npos) {
+        r_.error(e.loc, name + " is an input: it reads one node ('*' is for an output that sets several alike)");
         continue;
       }
       if (!input && (io.field.empty() || !io.of.empty())) {

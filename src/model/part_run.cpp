@@ -19,6 +19,7 @@ struct PartRun::Bound {
   const PartIoSpec* spec = nullptr;
   Probe probe;                          // an input's quantity, or an output's field
   scene::NodeHandle node = 0;           // an output's node
+  std::vector<scene::NodeHandle> also;  // an output's further nodes (a `*` in its path): set alike
   std::size_t field = 0;                // an output's field
   scene::FieldKind kind = scene::FieldKind::Float;
   scene::FieldValue on, off;            // a digital output's values
@@ -31,6 +32,22 @@ PartRun::PartRun(Simulation& sim) : sim_(&sim) {}
 PartRun::~PartRun() = default;
 
 namespace {
+
+/// The nodes at `path` below `from`, where a `*` segment stands for every child, in order.
+void findAll(scene::Node* from, std::string_view path, std::vector<scene::Node*>& out) {
+  if (from == nullptr) return;
+  if (path.empty()) {
+    out.push_back(from);
+    return;
+  }
+  const auto slash = path.find('/');
+  const std::string_view segment = path.substr(0, slash), rest = slash == std::string_view::npos ? "" : path.substr(slash + 1);
+  if (segment != "*") {
+    findAll(from->find(segment), rest, out);
+    return;
+  }
+  for (const auto& c : from->children()) findAll(c.get(), rest, out);
+}
 
 /// `v` as a field of kind `kind` holds it (a bool, a whole number, a number).
 scene::FieldValue numberAs(scene::FieldKind kind, double v) {
@@ -103,7 +120,12 @@ std::unique_ptr<PartRun> PartRun::create(Simulation& sim, std::vector<PlacedPart
       b.part = part;
       b.spec = &io;
       std::string why;
+      const bool many = io.node.find('*') != std::string::npos;
       if (io.direction == IoDirection::Input) {
+        if (many) {
+          fail("an input reads one node: a '*' in '" + io.node + "' is for an output that sets several alike");
+          continue;
+        }
         const auto probe = nodeProbe(sim, path, io.of, why);
         if (!probe) {
           fail(why);
@@ -117,11 +139,20 @@ std::unique_ptr<PartRun> PartRun::create(Simulation& sim, std::vector<PlacedPart
         run->bound_.push_back(std::move(b));
         continue;
       }
-      const scene::Node* node = sim.plant() ? sim.plant()->find(path) : nullptr;
-      if (node == nullptr) {
+      std::vector<scene::Node*> nodes;
+      if (sim.plant()) findAll(&sim.plant()->root(), path, nodes);
+      if (nodes.empty()) {
         fail("its scene has no node '" + io.node + "'");
         continue;
       }
+      const scene::Node* node = nodes.front();
+      if (const auto other = std::ranges::find_if(nodes, [node](const scene::Node* n) { return n->kind() != node->kind(); });
+          other != nodes.end()) {
+        fail("'" + io.node + "' sets " + node->path() + ", a " + node->type().name + ", and " + (*other)->path() +
+             ", a " + (*other)->type().name + ": an output sets nodes of one type");
+        continue;
+      }
+      for (std::size_t i = 1; i < nodes.size(); ++i) b.also.push_back(nodes[i]->handle());
       const auto index = node->type().fieldIndex(io.field);
       if (index < 0) {
         std::vector<std::string> names;
@@ -275,6 +306,12 @@ bool PartRun::assign(Bound& b, double value, std::string& why) {
   }
   const scene::FieldValue v = b.spec->signal == IoSignal::Digital ? (value != 0.0 ? b.on : b.off) : numberAs(b.kind, value);
   why = physics::assignField(*node, b.field, v, sim_->model().settings.angles, sim_->physics());
+  // the further nodes of a `*` path, alike
+  for (const scene::NodeHandle h : b.also) {
+    if (scene::Node* more = why.empty() ? sim_->plant()->resolve(h) : nullptr) {
+      why = physics::assignField(*more, b.field, v, sim_->model().settings.angles, sim_->physics());
+    }
+  }
   return why.empty();
 }
 

@@ -315,7 +315,7 @@ std::vector<KeyDesc> partIoKeys() {
       word("signal", {ioSignalName(IoSignal::Digital), ioSignalName(IoSignal::Analog)}, "a bit, or a number in `unit`"),
       k("unit", ValueType::Text, "", "an analogue value's unit, for people"),
       k("description", ValueType::Text, "", "what it means, for people"),
-      k("node", ValueType::Name, "", "the node it is bound to: a path in the part's scene"),
+      k("node", ValueType::Name, "", "the node it is bound to: a path in the part's scene (an output's may hold `*` for every child: it sets each node matched)"),
       k("of", ValueType::Text, "", "an input's: what of the node is read (as a signal's `of`)"),
       k("field", ValueType::Text, "", "an output's: the node's field it sets"),
       form(k("on", ValueType::Number, "1", "a digital output's value for 1 (a vector field's: three numbers)"),

@@ -28,8 +28,13 @@ Surface World::Impl::surfaceFor(const Node& n, const scene::TraversalState& st, 
     surface.conveyor_node = conveyor;
     surface.conveyor_field = conveyor->vec3(scene::field::Conveyor::Direction);
     surface.conveyor_dir = conveyorDirection(*conveyor, body);
+    surface.conveyor_frame = conveyorFrame(*conveyor, body);
   }
   return surface;
+}
+
+core::Pose World::Impl::conveyorFrame(const Node& conveyor, const Body* body) {
+  return body ? bodyPose(body->id).inverse() * conveyor.world : conveyor.world;
 }
 
 Vec3 World::Impl::conveyorDirection(const Node& conveyor, const Body* body) {
@@ -51,6 +56,7 @@ void World::Impl::refreshSurfaces(const Node& n) {
       s.conveyor_field = n.vec3(scene::field::Conveyor::Direction);
       s.conveyor_dir = conveyorDirection(n, owner(*s.node));
     }
+    if (s.conveyor_node == &n) s.conveyor_frame = conveyorFrame(n, owner(*s.node));
   }
 }
 
@@ -86,6 +92,8 @@ void World::Impl::nearCallback(void* data, dGeomID o1, dGeomID o2) {
   const bool belt1 = s1.conveyor, belt2 = !belt1 && s2.conveyor;
   Vec3 dir;
   double motion = 0;
+  double spin = 0;  // a curved belt's rate about its axis, rad/s
+  Vec3 up, centre;  // a curved belt's axis: its direction and a point on it
   if (belt1 || belt2) {
     const Surface& belt = belt1 ? s1 : s2;
     const dBodyID belt_body = belt1 ? b1 : b2;
@@ -93,6 +101,14 @@ void World::Impl::nearCallback(void* data, dGeomID o1, dGeomID o2) {
     // the speed now: a script may start and stop a belt
     const double speed = belt.conveyor_node->number(scene::field::Conveyor::Speed);
     motion = belt1 ? -speed : speed;
+    // a curved belt turns at its speed over its radius about an axis that far to its left
+    const double radius = belt.conveyor_node->number(scene::field::Conveyor::Radius);
+    if (radius != 0.0) {
+      spin = speed / radius;
+      const core::Pose frame = belt_body ? bodyPose(belt_body) * belt.conveyor_frame : belt.conveyor_frame;
+      up = frame.rotation.rotate(Vec3{0, 0, 1});
+      centre = frame.position + up.cross(dir) * radius;
+    }
   }
   for (int i = 0; i < n; ++i) {
     dSurfaceParameters& sp = contact[i].surface;
@@ -102,11 +118,21 @@ void World::Impl::nearCallback(void* data, dGeomID o1, dGeomID o2) {
     sp.bounce = std::max(s1.bounce, s2.bounce);
     sp.bounce_vel = 0.01;
     if (belt1 || belt2) {
+      Vec3 along = dir;
+      double m = motion;
+      if (spin != 0.0) {
+        // a curved belt: its velocity at the contact point, spin x (point - centre)
+        const Vec3 p{contact[i].geom.pos[0], contact[i].geom.pos[1], contact[i].geom.pos[2]};
+        const Vec3 v = (up * spin).cross(p - centre);
+        const double speed = v.length();
+        along = speed > 0 ? v * (1.0 / speed) : v;
+        m = belt1 ? -speed : speed;
+      }
       sp.mode |= dContactFDir1 | dContactMotion1;
-      contact[i].fdir1[0] = dir.x;
-      contact[i].fdir1[1] = dir.y;
-      contact[i].fdir1[2] = dir.z;
-      sp.motion1 = motion;
+      contact[i].fdir1[0] = along.x;
+      contact[i].fdir1[1] = along.y;
+      contact[i].fdir1[2] = along.z;
+      sp.motion1 = m;
     }
     dJointID c = dJointCreateContact(self.world, self.contacts, &contact[i]);
     dJointAttach(c, b1, b2);

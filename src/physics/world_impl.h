@@ -65,6 +65,7 @@ struct Surface {
   const scene::Node* conveyor_node = nullptr;  ///< the Conveyor beside the shape: its speed is read at each contact
   core::Vec3 conveyor_dir;                ///< belt direction, unit, in the frame of the geometry's body (world frame if static)
   core::Vec3 conveyor_field;              ///< the Conveyor's `direction` as conveyor_dir was made from
+  core::Pose conveyor_frame;              ///< the Conveyor's frame in the frame of the geometry's body (the world's if static): where a curved belt's axis is
   bool conveyor = false;                  ///< a Conveyor is beside the shape
   const scene::Node* node = nullptr;      ///< the shape
 };
@@ -235,6 +236,8 @@ struct World::Impl {
   Surface surfaceFor(const scene::Node& n, const scene::TraversalState& st, const Body* body) const;
   /// A Conveyor's belt direction, unit, in the frame of `body` (the world's when null).
   static core::Vec3 conveyorDirection(const scene::Node& conveyor, const Body* body);
+  /// A Conveyor's frame in the frame of `body` (the world's when null).
+  static core::Pose conveyorFrame(const scene::Node& conveyor, const Body* body);
   /// Reads again what the surfaces take from Material or Conveyor `n` (World::fieldChanged).
   void refreshSurfaces(const scene::Node& n);
   /// The surface of geometry `g` (the default one for a sensor or an unknown geometry).

@@ -173,7 +173,10 @@ void registerBuiltinNodes(TypeRegistry& r) {
                 kInf)}));
   r.add(type(NodeKind::Conveyor, "Conveyor", Category::Dynamics, false, "makes the shapes beside it move what touches them",
              {f(field::Conveyor::Speed, "speed", K::Float, 1.0, "m/s", "belt speed"),
-              f(field::Conveyor::Direction, "direction", K::Vec3, V3{1, 0, 0}, "", "belt direction, in the conveyor's frame")}));
+              f(field::Conveyor::Direction, "direction", K::Vec3, V3{1, 0, 0}, "", "belt direction, in the conveyor's frame"),
+              f(field::Conveyor::Radius, "radius", K::Float, 0.0, "m",
+                "0: a straight belt; else a curved one: it moves along `direction` at the conveyor's origin and "
+                "turns about an axis parallel to the conveyor's z this far to the left (negative: to the right)")}));
   r.add(type(NodeKind::GradientField, "GradientField", Category::Field, false,
              "a 2D grid of vectors over a region of the ground, centred on its origin",
              {f(field::GradientField::Width, "width", K::Float, 10.0, "m", "extent along x", 1e-9, kInf),

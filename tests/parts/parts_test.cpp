@@ -167,6 +167,8 @@ const std::vector<PartRow>& library() {
       {"operator/emergency_stop", "Operator", "", {{"latched", In, Dig, ""}, {"released", In, Dig, ""}}},
       {"operator/selector_switch", "Operator", "", {{"on", In, Dig, ""}}},
       {"operator/beacon", "Operator", "", {{"on", Out, Dig, ""}, {"lit", In, Dig, ""}}},
+      {"conveyors/curved_belt", "Conveyors", "", {{"run", Out, Dig, ""}, {"speed", Out, Ana, "m/s"}}},
+      {"conveyors/roller_conveyor", "Conveyors", "", {{"run", Out, Dig, ""}, {"backwards", Out, Dig, ""}}},
   };
   return rows;
 }
@@ -377,6 +379,136 @@ TEST(BeltConveyor, BeltsPlacedAtLengthIntervalsHandOverABox) {
   const core::Vec3 p = position(*sim, "box1/box");
   EXPECT_NEAR(p.x, 2.3, 0.05);
   EXPECT_NEAR(p.z, 0.8, 0.005) << "still on a belt's top";
+}
+
+// ---------------------------------------------------------------------------------------
+// the curved belt and the roller conveyor
+
+/// The heading (degrees from +x, about z) of scene node `path`'s x axis.
+double heading(const Simulation& sim, const std::string& path) {
+  const scene::Node* n = sim.plant()->find(path);
+  EXPECT_NE(n, nullptr) << path;
+  if (!n) return kNan;
+  const core::Vec3 x = n->framePose().rotation.rotate({1, 0, 0});
+  return std::atan2(x.y, x.x) * 180.0 / std::acos(-1.0);
+}
+
+TEST(CurvedBelt, CarriesABoxRoundItsCentreAtItsSpeed) {
+  // radius 1 m at 0.5 m/s: 0.5 rad/s round the centre (0, 1); a small box on the centre
+  // line 10 degrees in turns 1 rad (57.3 degrees) in 2 s, stays 1 m out and turns with it
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      curve1: {type: curved_belt}
+      box1: {type: small_box, translation: [0.17365, 0.01519, 0.801], rotation: [0, 0, 1, 10]}
+)Y",
+                     {"conveyors/curved_belt", "items/small_box"});
+  ASSERT_TRUE(sim);
+  const auto around = [&sim] {
+    const core::Vec3 p = position(*sim, "box1/box");
+    return std::atan2(p.y - 1.0, p.x) * 180.0 / std::acos(-1.0);
+  };
+  runFor(*sim, 0.5);
+  const double a = around(), yaw = heading(*sim, "box1/box");
+  runFor(*sim, 2.0);
+  EXPECT_NEAR(around() - a, 57.3, 57.3 * 0.03);
+  EXPECT_NEAR(heading(*sim, "box1/box") - yaw, 57.3, 57.3 * 0.05) << "it turns with the belt";
+  const core::Vec3 p = position(*sim, "box1/box");
+  EXPECT_NEAR(std::hypot(p.x, p.y - 1.0), 1.0, 0.03) << "on the centre line still";
+  EXPECT_NEAR(p.z, 0.8, 0.005) << "on the belt's top";
+  EXPECT_DOUBLE_EQ(io(*sim, "curve1", "run"), 1.0);
+  // the motor off: every piece of the belt stops
+  write(*sim, "curve1", "run", 0);
+  runFor(*sim, 0.5);
+  const double b = around();
+  runFor(*sim, 1.0);
+  EXPECT_NEAR(around(), b, 0.2);
+  // backwards, at 0.25 m/s: a quarter of a radian a second the other way
+  write(*sim, "curve1", "speed", -0.25);
+  runFor(*sim, 0.5);
+  const double c = around();
+  runFor(*sim, 2.0);
+  EXPECT_NEAR(around() - c, -28.65, 28.65 * 0.05);
+}
+
+TEST(CurvedBelt, TakesABoxFromOneBeltToAnotherAtRightAngles) {
+  // a 2 m belt ending at the curve's entry, the curve, a 2 m belt leaving its exit (1, 1)
+  // along +y: 1.3 m + pi/2 m + 0.8 m at 0.5 m/s is 7.5 s; the box is then on the second belt
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      belt1: {type: belt_conveyor, translation: [-1, 0, 0]}
+      curve1: {type: curved_belt}
+      belt2: {type: belt_conveyor, translation: [1, 2, 0], rotation: [0, 0, 1, 90]}
+      box1: {type: small_box, translation: [-1.3, 0, 0.801]}
+)Y",
+                     {"conveyors/belt_conveyor", "conveyors/curved_belt", "items/small_box"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 7.5);
+  const core::Vec3 p = position(*sim, "box1/box");
+  EXPECT_NEAR(p.x, 1.0, 0.06) << "on the second belt's centre line";
+  EXPECT_NEAR(p.y, 1.8, 0.25);
+  EXPECT_NEAR(p.z, 0.8, 0.005) << "on a belt's top all the way";
+}
+
+TEST(RollerConveyor, CarriesABoxAtItsSpeedOnRollersThatTurn) {
+  // a medium box on two 2 m modules end to end at 0.8 m/s: 1.6 m in 2 s once it has settled,
+  // across the joint; each roller (radius 30 mm) turns at 0.8 / 0.03 rad/s: 0.8 rad in 30 ms
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      rollers1: {type: roller_conveyor, translation: [-1, 0, 0], params: {speed: 0.8}}
+      rollers2: {type: roller_conveyor, translation: [1, 0, 0], params: {speed: 0.8}}
+      box1: {type: medium_box, translation: [-1.6, 0, 0.801]}
+)Y",
+                     {"conveyors/roller_conveyor", "items/medium_box"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 1.0);
+  const core::Vec3 a = position(*sim, "box1/box");
+  const std::string roller = "rollers1/rollers/roller16/axle/roller";
+  const core::Quat r0 = sim->plant()->find(roller)->framePose().rotation;
+  runFor(*sim, 0.03);
+  const auto [axis, turned] = (sim->plant()->find(roller)->framePose().rotation * r0.conjugate()).toAxisAngle();
+  EXPECT_NEAR(turned, 0.8, 0.8 * 0.03);
+  EXPECT_NEAR(axis.y, 1.0, 0.01) << "about its axle, its top going +x";
+  runFor(*sim, 1.97);
+  const core::Vec3 b = position(*sim, "box1/box");
+  EXPECT_NEAR((b.x - a.x) / 2.0, 0.8, 0.8 * 0.03);
+  EXPECT_NEAR(b.y, 0.0, 0.01);
+  EXPECT_NEAR(b.z, 0.8, 0.005) << "on the rollers' tops";
+}
+
+TEST(RollerConveyor, RunAndBackwardsDriveOneMotor) {
+  // start 0: it stands; run carries the box along +x at 0.5 m/s, backwards along -x, and
+  // off, the rollers stop and so does the box
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      rollers1: {type: roller_conveyor, params: {start: 0}}
+      box1: {type: small_box, translation: [0, 0, 0.801]}
+)Y",
+                     {"conveyors/roller_conveyor", "items/small_box"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 1.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "rollers1", "run"), 0.0);
+  EXPECT_NEAR(position(*sim, "box1/box").x, 0.0, 0.002) << "stands until driven";
+  write(*sim, "rollers1", "run", 1);
+  runFor(*sim, 0.5);
+  double x = position(*sim, "box1/box").x;
+  runFor(*sim, 1.0);
+  EXPECT_NEAR(position(*sim, "box1/box").x - x, 0.5, 0.015) << "forwards at 0.5 m/s";
+  write(*sim, "rollers1", "backwards", 1);
+  EXPECT_DOUBLE_EQ(io(*sim, "rollers1", "run"), 0.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "rollers1", "backwards"), 1.0);
+  runFor(*sim, 0.5);
+  x = position(*sim, "box1/box").x;
+  runFor(*sim, 1.0);
+  EXPECT_NEAR(position(*sim, "box1/box").x - x, -0.5, 0.015) << "backwards at 0.5 m/s";
+  write(*sim, "rollers1", "backwards", 0);
+  runFor(*sim, 0.5);
+  x = position(*sim, "box1/box").x;
+  runFor(*sim, 1.0);
+  EXPECT_NEAR(position(*sim, "box1/box").x, x, 0.003) << "off: stopped";
 }
 
 // ---------------------------------------------------------------------------------------
@@ -831,6 +963,42 @@ TEST(Emitter, RedAndBlueInTurnEvery4sByDefault) {
   EXPECT_NEAR(last->framePose().position.z, 0.8, 0.005);
   EXPECT_GT(last->framePose().position.x, 0.1);
   EXPECT_DOUBLE_EQ(io(*sim, "emitter1", "emitted"), 4.0);
+}
+
+TEST(Emitter, ShuffledItsColoursComeAtRandomFromTheSeed) {
+  // shuffle: 1 with red and blue, a box a second onto a fast belt, for 40 s: both colours
+  // about as often (of 40 draws, between 10 and 30 red: more than 3 sigma), not in turn, and the
+  // same seed gives the same order
+  const auto order = [](std::uint64_t seed) {
+    std::string out;
+    auto sim = compose(std::string(kFloor) + "pages:\n  main:\n    instances:\n"
+                       "      belt1: {type: belt_conveyor, translation: [2.5, 0, 0], params: {length: 6, speed: 2}}\n"
+                       "      remover1: {type: remover, translation: [5.5, 0, 0]}\n"
+                       "      emitter1: {type: emitter, params: {period: 1, shuffle: 1}}\n",
+                       {"conveyors/belt_conveyor", "sources_and_sinks/emitter", "sources_and_sinks/remover"},
+                       seed);
+    if (!sim) return out;
+    // each box's colour when it is made (the newest is the items' last)
+    std::int64_t seen = 0;
+    for (int i = 0; i < 4000; ++i) {
+      sim->step();
+      const scene::Node* items = sim->plant()->find("emitter1/items");
+      const auto made = static_cast<std::int64_t>(io(*sim, "emitter1", "emitted"));
+      for (; seen < made; ++seen) {
+        const scene::Node* box = items->children().back()->find("box");
+        out += std::get<std::string>(*box->datum("colour")) == "red" ? 'r' : 'b';
+      }
+    }
+    return out;
+  };
+  const std::string a = order(7);
+  ASSERT_EQ(a.size(), 40u);
+  const auto reds = std::count(a.begin(), a.end(), 'r');
+  EXPECT_GT(reds, 10);
+  EXPECT_LT(reds, 30);
+  EXPECT_NE(a.find("rr"), std::string::npos) << a << ": not in turn";
+  EXPECT_EQ(order(7), a) << "the seed's order";
+  EXPECT_NE(order(8), a) << "another seed, another order";
 }
 
 TEST(Emitter, AtRandomItsIntervalsAverageThePeriod) {

@@ -49,7 +49,7 @@ enum class Joint : std::uint8_t {
   Kind, Anchor, Axis1, Axis2, Lo1, Hi1, Lo2, Hi2, Vel1, Fmax1, Vel2, Fmax2, Control, Target1, ServoTime
 };
 /// Conveyor.
-enum class Conveyor : std::uint8_t { Speed, Direction };
+enum class Conveyor : std::uint8_t { Speed, Direction, Radius };
 /// GradientField.
 enum class GradientField : std::uint8_t { Width, Depth, Nx, Ny, Vectors };
 /// Region.
