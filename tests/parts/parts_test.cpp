@@ -167,6 +167,9 @@ const std::vector<PartRow>& library() {
       {"operator/emergency_stop", "Operator", "", {{"latched", In, Dig, ""}, {"released", In, Dig, ""}}},
       {"operator/selector_switch", "Operator", "", {{"on", In, Dig, ""}}},
       {"operator/beacon", "Operator", "", {{"on", Out, Dig, ""}, {"lit", In, Dig, ""}}},
+      {"actuators/elevator", "Actuators", "",
+       {{"up", Out, Dig, ""}, {"run", Out, Dig, ""}, {"speed", Out, Ana, "m/s"}, {"at_bottom", In, Dig, ""}, {"at_top", In, Dig, ""},
+        {"loaded", In, Dig, ""}}},
   };
   return rows;
 }
@@ -1210,6 +1213,97 @@ TEST(MaterialLine, ThePickAndPlaceTakesTheMetalBasesOffTheLidsRideOn) {
   }
   EXPECT_EQ(bases_in_bin, 6);
   EXPECT_EQ(lids_on_belt + static_cast<int>(io(*sim, "remover1", "removed")), 6);
+}
+
+// ---------------------------------------------------------------------------------------
+// the elevator
+
+TEST(Elevator, TheCarriageRisesHighLessLowInThatOverTheLiftSpeed) {
+  // 0.8 m at 0.4 m/s: at 0.4 m/s on the way; the top switch (1 cm before the end) in 2 s
+  // within 5 % (the servo, 0.1 s, slows it over the last 4 cm: (0.8 - 0.04) / 0.4 + 0.1 ln 4
+  // = 2.04 s); the bottom switch drops at once; and back down in as long
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      lift1: {type: elevator, params: {low: 0.8, high: 1.6, lift_speed: 0.4}}
+)Y",
+                     {"actuators/elevator"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 0.2);
+  EXPECT_DOUBLE_EQ(io(*sim, "lift1", "at_bottom"), 1.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "lift1", "at_top"), 0.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "lift1", "loaded"), 0.0);
+  EXPECT_NEAR(position(*sim, "lift1/lift/slide/carriage").z, 0.8, 0.002) << "the belt's top at low";
+  const scene::Node* slide = sim->plant()->find("lift1/lift/slide");
+  ASSERT_NE(slide, nullptr);
+  write(*sim, "lift1", "up", 1);
+  const double t0 = sim->kernel().now();
+  double bottom_off = -1, top_on = -1, z05 = 0, z15 = 0;
+  while (sim->kernel().now() - t0 < 4.0 && top_on < 0) {
+    sim->step();
+    const double t = sim->kernel().now() - t0;
+    if (bottom_off < 0 && io(*sim, "lift1", "at_bottom") == 0.0) bottom_off = t;
+    if (io(*sim, "lift1", "at_top") != 0.0) top_on = t;
+    if (std::abs(t - 0.5) < 1e-6) z05 = sim->physics()->jointPosition(*slide);
+    if (std::abs(t - 1.5) < 1e-6) z15 = sim->physics()->jointPosition(*slide);
+  }
+  EXPECT_NEAR(top_on, 0.8 / 0.4, 0.1) << "(high - low) / lift_speed, within 5 %";
+  EXPECT_GT(bottom_off, 0.0);
+  EXPECT_LT(bottom_off, 0.05) << "the bottom switch drops as the carriage leaves";
+  EXPECT_NEAR(z15 - z05, 0.4, 0.008) << "at the lift speed on the way (2 %: the joint gives a little under the load)";
+  runFor(*sim, 0.5);
+  EXPECT_NEAR(position(*sim, "lift1/lift/slide/carriage").z, 1.6, 0.002) << "the belt's top at high";
+  EXPECT_DOUBLE_EQ(io(*sim, "lift1", "at_top"), 1.0);
+  write(*sim, "lift1", "up", 0);
+  const double t1 = sim->kernel().now();
+  double bottom_on = -1;
+  while (sim->kernel().now() - t1 < 4.0 && bottom_on < 0) {
+    sim->step();
+    if (io(*sim, "lift1", "at_bottom") != 0.0) bottom_on = sim->kernel().now() - t1;
+  }
+  EXPECT_NEAR(bottom_on, 0.8 / 0.4, 0.1);
+  EXPECT_DOUBLE_EQ(io(*sim, "lift1", "at_top"), 0.0);
+}
+
+TEST(Elevator, AnItemRidesUpAndTheBeltCarriesItOffAtItsSpeed) {
+  // a medium box on the carriage: loaded; up, it rides 0.6 m up with the carriage and stays
+  // where it lay; the belt, run at 0.6 m/s, carries it along +x at that speed (2 %) onto an
+  // upper belt at 1.4 m, and the carriage is empty
+  auto sim = compose(std::string(kFloor) + R"Y(  - Transform:
+      translation: [1.285, 0, 1.38]
+      children: [{Conveyor: {speed: 0.6}}, {Cube: {name: upper, size: [1.5, 0.7, 0.04]}}]
+pages:
+  main:
+    instances:
+      lift1: {type: elevator, params: {low: 0.8, high: 1.4, speed: 0.6}}
+      box1: {type: medium_box, translation: [0, 0, 0.801]}
+)Y",
+                     {"actuators/elevator", "items/medium_box"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 0.5);
+  EXPECT_DOUBLE_EQ(io(*sim, "lift1", "loaded"), 1.0);
+  const core::Vec3 a = position(*sim, "box1/box");
+  write(*sim, "lift1", "up", 1);
+  runFor(*sim, 2.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "lift1", "at_top"), 1.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "lift1", "loaded"), 1.0);
+  const core::Vec3 b = position(*sim, "box1/box");
+  EXPECT_NEAR(b.z - a.z, 0.6, 0.005) << "up with the carriage";
+  EXPECT_NEAR(b.x, a.x, 0.01) << "where it lay on the belt";
+  EXPECT_NEAR(b.y, a.y, 0.01);
+  write(*sim, "lift1", "run", 1);
+  EXPECT_DOUBLE_EQ(io(*sim, "lift1", "speed"), 0.6);
+  runFor(*sim, 0.2);
+  const core::Vec3 c = position(*sim, "box1/box");
+  runFor(*sim, 0.5);
+  const core::Vec3 d = position(*sim, "box1/box");
+  EXPECT_NEAR((d.x - c.x) / 0.5, 0.6, 0.6 * 0.02) << "at the belt's speed, along +x";
+  EXPECT_NEAR(d.y, a.y, 0.01);
+  runFor(*sim, 1.5);
+  const core::Vec3 e = position(*sim, "box1/box");
+  EXPECT_GT(e.x - 0.2, 0.5) << "off the carriage";
+  EXPECT_NEAR(e.z, 1.4, 0.005) << "on the upper belt";
+  EXPECT_DOUBLE_EQ(io(*sim, "lift1", "loaded"), 0.0);
 }
 
 }  // namespace
