@@ -33,3 +33,4 @@ shot actuators/pick_and_place 3
 shot items/pallet 1.4
 shot conveyors/chute 0.3
 shot actuators/elevator 3.5
+shot storage/stacker 7
