@@ -34,3 +34,5 @@ shot items/pallet 1.4
 shot conveyors/chute 0.3
 shot conveyors/curved_belt 2
 shot conveyors/roller_conveyor 1
+shot actuators/elevator 3.5
+shot storage/stacker 7

@@ -169,6 +169,12 @@ const std::vector<PartRow>& library() {
       {"operator/beacon", "Operator", "", {{"on", Out, Dig, ""}, {"lit", In, Dig, ""}}},
       {"conveyors/curved_belt", "Conveyors", "", {{"run", Out, Dig, ""}, {"speed", Out, Ana, "m/s"}}},
       {"conveyors/roller_conveyor", "Conveyors", "", {{"run", Out, Dig, ""}, {"backwards", Out, Dig, ""}}},
+      {"actuators/elevator", "Actuators", "",
+       {{"up", Out, Dig, ""}, {"run", Out, Dig, ""}, {"speed", Out, Ana, "m/s"}, {"at_bottom", In, Dig, ""}, {"at_top", In, Dig, ""},
+        {"loaded", In, Dig, ""}}},
+      {"storage/stacker", "Storage", "stacker_control",
+       {{"x", Out, Ana, "m"}, {"z", Out, Ana, "m"}, {"fork_out", Out, Dig, ""}, {"lift", Out, Dig, ""}, {"x_at", In, Ana, "m"},
+        {"z_at", In, Ana, "m"}, {"fork_home", In, Dig, ""}, {"fork_out_limit", In, Dig, ""}, {"loaded", In, Dig, ""}}},
   };
   return rows;
 }
@@ -1378,6 +1384,243 @@ TEST(MaterialLine, ThePickAndPlaceTakesTheMetalBasesOffTheLidsRideOn) {
   }
   EXPECT_EQ(bases_in_bin, 6);
   EXPECT_EQ(lids_on_belt + static_cast<int>(io(*sim, "remover1", "removed")), 6);
+}
+
+// ---------------------------------------------------------------------------------------
+// the elevator
+
+TEST(Elevator, TheCarriageRisesHighLessLowInThatOverTheLiftSpeed) {
+  // 0.8 m at 0.4 m/s: at 0.4 m/s on the way; the top switch (1 cm before the end) in 2 s
+  // within 5 % (the servo, 0.1 s, slows it over the last 4 cm: (0.8 - 0.04) / 0.4 + 0.1 ln 4
+  // = 2.04 s); the bottom switch drops at once; and back down in as long
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      lift1: {type: elevator, params: {low: 0.8, high: 1.6, lift_speed: 0.4}}
+)Y",
+                     {"actuators/elevator"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 0.2);
+  EXPECT_DOUBLE_EQ(io(*sim, "lift1", "at_bottom"), 1.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "lift1", "at_top"), 0.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "lift1", "loaded"), 0.0);
+  EXPECT_NEAR(position(*sim, "lift1/lift/slide/carriage").z, 0.8, 0.002) << "the belt's top at low";
+  const scene::Node* slide = sim->plant()->find("lift1/lift/slide");
+  ASSERT_NE(slide, nullptr);
+  write(*sim, "lift1", "up", 1);
+  const double t0 = sim->kernel().now();
+  double bottom_off = -1, top_on = -1, z05 = 0, z15 = 0;
+  while (sim->kernel().now() - t0 < 4.0 && top_on < 0) {
+    sim->step();
+    const double t = sim->kernel().now() - t0;
+    if (bottom_off < 0 && io(*sim, "lift1", "at_bottom") == 0.0) bottom_off = t;
+    if (io(*sim, "lift1", "at_top") != 0.0) top_on = t;
+    if (std::abs(t - 0.5) < 1e-6) z05 = sim->physics()->jointPosition(*slide);
+    if (std::abs(t - 1.5) < 1e-6) z15 = sim->physics()->jointPosition(*slide);
+  }
+  EXPECT_NEAR(top_on, 0.8 / 0.4, 0.1) << "(high - low) / lift_speed, within 5 %";
+  EXPECT_GT(bottom_off, 0.0);
+  EXPECT_LT(bottom_off, 0.05) << "the bottom switch drops as the carriage leaves";
+  EXPECT_NEAR(z15 - z05, 0.4, 0.008) << "at the lift speed on the way (2 %: the joint gives a little under the load)";
+  runFor(*sim, 0.5);
+  EXPECT_NEAR(position(*sim, "lift1/lift/slide/carriage").z, 1.6, 0.002) << "the belt's top at high";
+  EXPECT_DOUBLE_EQ(io(*sim, "lift1", "at_top"), 1.0);
+  write(*sim, "lift1", "up", 0);
+  const double t1 = sim->kernel().now();
+  double bottom_on = -1;
+  while (sim->kernel().now() - t1 < 4.0 && bottom_on < 0) {
+    sim->step();
+    if (io(*sim, "lift1", "at_bottom") != 0.0) bottom_on = sim->kernel().now() - t1;
+  }
+  EXPECT_NEAR(bottom_on, 0.8 / 0.4, 0.1);
+  EXPECT_DOUBLE_EQ(io(*sim, "lift1", "at_top"), 0.0);
+}
+
+TEST(Elevator, AnItemRidesUpAndTheBeltCarriesItOffAtItsSpeed) {
+  // a medium box on the carriage: loaded; up, it rides 0.6 m up with the carriage and stays
+  // where it lay; the belt, run at 0.6 m/s, carries it along +x at that speed (2 %) onto an
+  // upper belt at 1.4 m, and the carriage is empty
+  auto sim = compose(std::string(kFloor) + R"Y(  - Transform:
+      translation: [1.285, 0, 1.38]
+      children: [{Conveyor: {speed: 0.6}}, {Cube: {name: upper, size: [1.5, 0.7, 0.04]}}]
+pages:
+  main:
+    instances:
+      lift1: {type: elevator, params: {low: 0.8, high: 1.4, speed: 0.6}}
+      box1: {type: medium_box, translation: [0, 0, 0.801]}
+)Y",
+                     {"actuators/elevator", "items/medium_box"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 0.5);
+  EXPECT_DOUBLE_EQ(io(*sim, "lift1", "loaded"), 1.0);
+  const core::Vec3 a = position(*sim, "box1/box");
+  write(*sim, "lift1", "up", 1);
+  runFor(*sim, 2.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "lift1", "at_top"), 1.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "lift1", "loaded"), 1.0);
+  const core::Vec3 b = position(*sim, "box1/box");
+  EXPECT_NEAR(b.z - a.z, 0.6, 0.005) << "up with the carriage";
+  EXPECT_NEAR(b.x, a.x, 0.01) << "where it lay on the belt";
+  EXPECT_NEAR(b.y, a.y, 0.01);
+  write(*sim, "lift1", "run", 1);
+  EXPECT_DOUBLE_EQ(io(*sim, "lift1", "speed"), 0.6);
+  runFor(*sim, 0.2);
+  const core::Vec3 c = position(*sim, "box1/box");
+  runFor(*sim, 0.5);
+  const core::Vec3 d = position(*sim, "box1/box");
+  EXPECT_NEAR((d.x - c.x) / 0.5, 0.6, 0.6 * 0.02) << "at the belt's speed, along +x";
+  EXPECT_NEAR(d.y, a.y, 0.01);
+  runFor(*sim, 1.5);
+  const core::Vec3 e = position(*sim, "box1/box");
+  EXPECT_GT(e.x - 0.2, 0.5) << "off the carriage";
+  EXPECT_NEAR(e.z, 1.4, 0.005) << "on the upper belt";
+  EXPECT_DOUBLE_EQ(io(*sim, "lift1", "loaded"), 0.0);
+}
+
+// ---------------------------------------------------------------------------------------
+// the stacker crane
+
+/// Steps `sim` until `done()` holds or `seconds` pass; the time it took, or -1.
+template <class Done>
+double runUntil(Simulation& sim, Done done, double seconds) {
+  const double t0 = sim.kernel().now();
+  while (sim.kernel().now() - t0 < seconds - 1e-9) {
+    sim.step();
+    if (done()) return sim.kernel().now() - t0;
+  }
+  return -1;
+}
+
+TEST(Stacker, TheCraneReachesACellsXAndZInDistanceOverSpeed) {
+  // to column 2, level 2: 2.1 m along the aisle at 0.5 m/s, 1.2 m up at 0.3 m/s. On the way
+  // at those speeds; each servo (0.15 s along, 0.1 s up) slows the last v tau, so it is within
+  // 5 mm at d/v - tau + tau ln(v tau / 5 mm): 4.51 s and 4.08 s (0.1 s, the start's
+  // acceleration and the steps)
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      stacker1: {type: stacker}
+)Y",
+                     {"storage/stacker"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 0.2);
+  EXPECT_DOUBLE_EQ(io(*sim, "stacker1", "fork_home"), 1.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "stacker1", "fork_out_limit"), 0.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "stacker1", "loaded"), 0.0);
+  write(*sim, "stacker1", "x", 2.1);
+  write(*sim, "stacker1", "z", 1.2);
+  const double t0 = sim->kernel().now();
+  double tx = -1, tz = -1, x1 = 0, x2 = 0, z1 = 0, z2 = 0;
+  while (sim->kernel().now() - t0 < 6.0 && (tx < 0 || tz < 0)) {
+    sim->step();
+    const double t = sim->kernel().now() - t0;
+    const double x = io(*sim, "stacker1", "x_at"), z = io(*sim, "stacker1", "z_at");
+    if (tx < 0 && std::abs(x - 2.1) < 0.005) tx = t;
+    if (tz < 0 && std::abs(z - 1.2) < 0.005) tz = t;
+    if (std::abs(t - 1.0) < 1e-6) x1 = x, z1 = z;
+    if (std::abs(t - 3.0) < 1e-6) x2 = x, z2 = z;
+  }
+  EXPECT_NEAR((x2 - x1) / 2.0, 0.5, 0.005) << "along the aisle at its speed";
+  EXPECT_NEAR((z2 - z1) / 2.0, 0.3, 0.006) << "up at the lift speed (2 %: the joint gives a little under the load)";
+  EXPECT_NEAR(tx, 2.1 / 0.5 - 0.15 + 0.15 * std::log(0.5 * 0.15 / 0.005), 0.1);
+  EXPECT_NEAR(tz, 1.2 / 0.3 - 0.1 + 0.1 * std::log(0.3 * 0.1 / 0.005), 0.1);
+  runFor(*sim, 1.0);
+  EXPECT_NEAR(position(*sim, "stacker1/crane/x_slide/mast").x, 2.1, 0.002);
+  EXPECT_NEAR(position(*sim, "stacker1/crane/x_slide/mast/z_slide/carriage").z, 0.4 - 0.015 + 1.2, 0.003)
+      << "the fork's top 1.5 cm under level 2's arms";
+}
+
+TEST(Stacker, ItsIoTakeAnItemFromTheStandIntoACellWhereItStays) {
+  // a medium box on the pick-up stand: the fork goes under it, lifts, comes in loaded; the
+  // crane goes to column 2, level 1, the fork goes out, down and in: the box stands in that
+  // cell (x 2.1, y 0.75, on the arms at 1.0 m) within 2 cm and is still there after the crane
+  // has gone home
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      stacker1: {type: stacker}
+      box1: {type: medium_box, translation: [0, 0.75, 0.401]}
+)Y",
+                     {"storage/stacker", "items/medium_box"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 0.3);
+  EXPECT_DOUBLE_EQ(io(*sim, "stacker1", "loaded"), 0.0) << "the box is on the stand, not over the fork";
+  write(*sim, "stacker1", "fork_out", 1);
+  EXPECT_GT(runUntil(*sim, [&] { return io(*sim, "stacker1", "fork_out_limit") != 0.0; }, 3.0), 0.75 / 0.5 * 0.9);
+  EXPECT_DOUBLE_EQ(io(*sim, "stacker1", "fork_home"), 0.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "stacker1", "loaded"), 1.0) << "under the box";
+  write(*sim, "stacker1", "lift", 1);
+  runFor(*sim, 0.8);
+  // taken 3.5 cm off the stand, less what the fork, out 0.75 m from its carriage, gives
+  // under the joints' softness (about 6 mm): at least 2 cm clear
+  EXPECT_GT(position(*sim, "box1/box").z, 0.4 + 0.02) << "taken off the stand";
+  EXPECT_LT(position(*sim, "box1/box").z, 0.4 + 0.036);
+  write(*sim, "stacker1", "fork_out", 0);
+  EXPECT_GT(runUntil(*sim, [&] { return io(*sim, "stacker1", "fork_home") != 0.0; }, 3.0), 0.0);
+  runFor(*sim, 0.3);
+  EXPECT_DOUBLE_EQ(io(*sim, "stacker1", "loaded"), 1.0);
+  EXPECT_NEAR(position(*sim, "box1/box").y, 0.0, 0.03) << "in with the fork";
+  write(*sim, "stacker1", "x", 2.1);
+  write(*sim, "stacker1", "z", 0.6);
+  EXPECT_GT(runUntil(
+                *sim,
+                [&] {
+                  return std::abs(io(*sim, "stacker1", "x_at") - 2.1) < 0.003 && std::abs(io(*sim, "stacker1", "z_at") - 0.6) < 0.003;
+                },
+                8.0),
+            0.0);
+  write(*sim, "stacker1", "fork_out", 1);
+  EXPECT_GT(runUntil(*sim, [&] { return io(*sim, "stacker1", "fork_out_limit") != 0.0; }, 3.0), 0.0);
+  write(*sim, "stacker1", "lift", 0);
+  runFor(*sim, 0.8);
+  write(*sim, "stacker1", "fork_out", 0);
+  EXPECT_GT(runUntil(*sim, [&] { return io(*sim, "stacker1", "fork_home") != 0.0; }, 3.0), 0.0);
+  runFor(*sim, 0.3);
+  EXPECT_DOUBLE_EQ(io(*sim, "stacker1", "loaded"), 0.0) << "the fork came back empty";
+  const core::Vec3 p = position(*sim, "box1/box");
+  EXPECT_NEAR(p.x, 2.1, 0.02);
+  EXPECT_NEAR(p.y, 0.75, 0.02);
+  EXPECT_NEAR(p.z, 1.0, 0.005) << "on the arms of level 1";
+  write(*sim, "stacker1", "x", 0);
+  write(*sim, "stacker1", "z", 0);
+  runFor(*sim, 6.0);
+  const core::Vec3 q = position(*sim, "box1/box");
+  EXPECT_NEAR(q.x, p.x, 0.002) << "it stays";
+  EXPECT_NEAR(q.y, p.y, 0.002);
+  EXPECT_NEAR(q.z, p.z, 0.002);
+}
+
+TEST(Stacker, ItsControlPatternStoresWhatWaitsInTheNextFreeCell) {
+  // a box on the stand, one request: stored in the first cell (column 0, level 0: x 0.7,
+  // y 0.75, on the arms at 0.4 m) within 2 cm; a token on stored, eight free cells left,
+  // home with the fork in
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      stacker1: {type: stacker}
+      stacker1_control: {type: stacker_control, part: stacker1}
+      box1: {type: medium_box, translation: [0, 0.75, 0.401]}
+    places:
+      asks: {tokens: 1}
+    transitions:
+      ask: {}
+    arcs:
+      - asks -> ask
+      - ask -> stacker1_control/store
+)Y",
+                     {"storage/stacker", "items/medium_box"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 11.0);
+  EXPECT_EQ(tokens(*sim, "main/stacker1_control/stored"), 1);
+  EXPECT_EQ(tokens(*sim, "main/stacker1_control/free"), 8);
+  EXPECT_EQ(tokens(*sim, "main/stacker1_control/idle"), 1);
+  const core::Vec3 p = position(*sim, "box1/box");
+  EXPECT_NEAR(p.x, 0.7, 0.02);
+  EXPECT_NEAR(p.y, 0.75, 0.02);
+  EXPECT_NEAR(p.z, 0.4, 0.005);
+  EXPECT_DOUBLE_EQ(io(*sim, "stacker1", "fork_home"), 1.0);
+  EXPECT_LT(std::abs(io(*sim, "stacker1", "x_at")), 0.003) << "home";
+  EXPECT_DOUBLE_EQ(io(*sim, "stacker1", "loaded"), 0.0);
 }
 
 }  // namespace
