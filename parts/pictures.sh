@@ -36,3 +36,5 @@ shot conveyors/curved_belt 2
 shot conveyors/roller_conveyor 1
 shot actuators/elevator 3.5
 shot storage/stacker 7
+shot conveyors/turntable 3.5
+shot conveyors/transfer 4.3

@@ -175,6 +175,11 @@ const std::vector<PartRow>& library() {
       {"storage/stacker", "Storage", "stacker_control",
        {{"x", Out, Ana, "m"}, {"z", Out, Ana, "m"}, {"fork_out", Out, Dig, ""}, {"lift", Out, Dig, ""}, {"x_at", In, Ana, "m"},
         {"z_at", In, Ana, "m"}, {"fork_home", In, Dig, ""}, {"fork_out_limit", In, Dig, ""}, {"loaded", In, Dig, ""}}},
+      {"conveyors/turntable", "Conveyors", "",
+       {{"turn", Out, Dig, ""}, {"run", Out, Dig, ""}, {"speed", Out, Ana, "m/s"}, {"at_home", In, Dig, ""},
+        {"at_angle", In, Dig, ""}, {"angle_at", In, Ana, "deg"}}},
+      {"conveyors/transfer", "Conveyors", "",
+       {{"run", Out, Dig, ""}, {"speed", Out, Ana, "m/s"}, {"up", Out, Dig, ""}, {"left", Out, Dig, ""}, {"right", Out, Dig, ""}}},
   };
   return rows;
 }
@@ -1621,6 +1626,165 @@ TEST(Stacker, ItsControlPatternStoresWhatWaitsInTheNextFreeCell) {
   EXPECT_DOUBLE_EQ(io(*sim, "stacker1", "fork_home"), 1.0);
   EXPECT_LT(std::abs(io(*sim, "stacker1", "x_at")), 0.003) << "home";
   EXPECT_DOUBLE_EQ(io(*sim, "stacker1", "loaded"), 0.0);
+}
+
+// ---------------------------------------------------------------------------------------
+// the turntable and the pop-up wheel transfer
+
+TEST(Turntable, TurnsByItsAngleInAngleOverTurnSpeedAndItsSwitchesSeeTheEnds) {
+  // 60 degrees at 30 deg/s: the platform turns at 30 deg/s (1 %); `at_home` drops about 1
+  // degree out, `at_angle` comes about 1 degree before the end, 59/30 = 1.967 s after `turn`
+  // (the drive takes a step or two to start: 0.05 s); back home the same way
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      table1: {type: turntable, params: {angle: 60, turn_speed: 30}}
+)Y",
+                     {"conveyors/turntable"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 0.2);
+  EXPECT_DOUBLE_EQ(io(*sim, "table1", "at_home"), 1.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "table1", "at_angle"), 0.0);
+  EXPECT_NEAR(io(*sim, "table1", "angle_at"), 0.0, 0.01);
+  write(*sim, "table1", "turn", 1);
+  const double t0 = sim->kernel().now();
+  double home_off = -1, home_off_angle = 0, angle_on = -1, angle_on_angle = 0, a_05 = 0, a_15 = 0;
+  while (sim->kernel().now() - t0 < 3.0 && angle_on < 0) {
+    sim->step();
+    const double t = sim->kernel().now() - t0;
+    const double a = io(*sim, "table1", "angle_at");
+    if (home_off < 0 && io(*sim, "table1", "at_home") == 0.0) home_off = t, home_off_angle = a;
+    if (io(*sim, "table1", "at_angle") != 0.0) angle_on = t, angle_on_angle = a;
+    if (std::abs(t - 0.5) < 1e-6) a_05 = a;
+    if (std::abs(t - 1.5) < 1e-6) a_15 = a;
+  }
+  EXPECT_NEAR((a_15 - a_05) / 1.0, 30.0, 0.3) << "at its turn speed on the way";
+  EXPECT_NEAR(angle_on, 59.0 / 30.0, 0.05) << "angle / turn_speed, less the switch's degree";
+  EXPECT_NEAR(home_off_angle, 1.0, 0.4) << "the home switch opens about 1 degree out";
+  EXPECT_NEAR(angle_on_angle, 59.0, 0.4) << "the angle switch closes about 1 degree before the end";
+  EXPECT_GT(home_off, 0.0);
+  runFor(*sim, 0.3);
+  EXPECT_NEAR(io(*sim, "table1", "angle_at"), 60.0, 0.1) << "turned by its angle";
+  EXPECT_DOUBLE_EQ(io(*sim, "table1", "at_angle"), 1.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "table1", "at_home"), 0.0);
+  write(*sim, "table1", "turn", 0);
+  const double t1 = sim->kernel().now();
+  double home_on = -1;
+  while (sim->kernel().now() - t1 < 3.0 && home_on < 0) {
+    sim->step();
+    if (io(*sim, "table1", "at_home") != 0.0) home_on = sim->kernel().now() - t1;
+  }
+  EXPECT_NEAR(home_on, 59.0 / 30.0, 0.05);
+  EXPECT_DOUBLE_EQ(io(*sim, "table1", "at_angle"), 0.0);
+  runFor(*sim, 0.3);
+  EXPECT_NEAR(io(*sim, "table1", "angle_at"), 0.0, 0.1) << "home again";
+}
+
+TEST(Turntable, CarriesAlongXHomeAndAlongTheTurnedDirectionAfterATurn) {
+  // a medium box at rest on the platform: home, the belt carries it along +x at 0.5 m/s
+  // (2 %); stopped, the platform turns 90 degrees with the box on it (the box turns about the
+  // axis with it); then the belt carries it along +y at 0.5 m/s and its x holds
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      table1: {type: turntable}
+      box1: {type: medium_box, translation: [-0.3, 0, 0.801]}
+)Y",
+                     {"conveyors/turntable", "items/medium_box"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 0.2);
+  write(*sim, "table1", "run", 1);
+  runFor(*sim, 0.2);
+  core::Vec3 a = position(*sim, "box1/box");
+  runFor(*sim, 0.4);
+  core::Vec3 b = position(*sim, "box1/box");
+  EXPECT_NEAR((b.x - a.x) / 0.4, 0.5, 0.5 * 0.02) << "along +x at the belt's speed";
+  EXPECT_NEAR(b.y - a.y, 0.0, 0.002);
+  write(*sim, "table1", "run", 0);
+  runFor(*sim, 0.2);
+  const core::Vec3 stopped = position(*sim, "box1/box");
+  write(*sim, "table1", "turn", 1);
+  runFor(*sim, 90.0 / 45.0 + 0.3);
+  EXPECT_DOUBLE_EQ(io(*sim, "table1", "at_angle"), 1.0);
+  const core::Vec3 turned = position(*sim, "box1/box");
+  EXPECT_NEAR(turned.x, -stopped.y, 0.01) << "turned about the axis with the platform";
+  EXPECT_NEAR(turned.y, stopped.x, 0.01);
+  EXPECT_NEAR(turned.z, 0.8, 0.005) << "still on the belt's top";
+  write(*sim, "table1", "run", 1);
+  runFor(*sim, 0.2);
+  a = position(*sim, "box1/box");
+  runFor(*sim, 0.4);
+  b = position(*sim, "box1/box");
+  EXPECT_NEAR((b.y - a.y) / 0.4, 0.5, 0.5 * 0.02) << "along +y, the turned direction, at the belt's speed";
+  EXPECT_NEAR(b.x - a.x, 0.0, 0.002);
+}
+
+/// A transfer `length` long (0.7 m wide, belt 0.5 m/s, wheels 0.4 m/s) and a medium box on
+/// it at x = `box_x`.
+std::unique_ptr<Simulation> transferWithABox(double length, double box_x) {
+  return compose(std::string(kFloor) + "pages:\n  main:\n    instances:\n      transfer1: {type: transfer, params: {length: " +
+                     std::to_string(length) + ", wheel_speed: 0.4}}\n      box1: {type: medium_box, translation: [" +
+                     std::to_string(box_x) + ", 0, 0.801]}\n",
+                 {"conveyors/transfer", "items/medium_box"});
+}
+
+TEST(Transfer, WheelsDownTheBeltCarriesAlongXAtItsSpeed) {
+  // on a 1.6 m transfer with the wheels down: 0.5 m/s along +x (2 %), whatever the wheels do
+  // under the belt (`left` on), the box on the strips' top
+  auto sim = transferWithABox(1.6, -0.6);
+  ASSERT_TRUE(sim);
+  runFor(*sim, 0.2);
+  write(*sim, "transfer1", "run", 1);
+  write(*sim, "transfer1", "left", 1);
+  runFor(*sim, 0.3);
+  const core::Vec3 a = position(*sim, "box1/box");
+  runFor(*sim, 1.0);
+  const core::Vec3 b = position(*sim, "box1/box");
+  EXPECT_NEAR((b.x - a.x) / 1.0, 0.5, 0.5 * 0.02);
+  EXPECT_NEAR(b.y, 0.0, 0.002) << "the wheels under the belt do not touch it";
+  EXPECT_NEAR(b.z, 0.8, 0.005) << "on the strips";
+  // every strip and every wheel runs as the first one (the part copies the motors' speeds)
+  for (const char* drive : {"transfer1/belt/strip4/drive", "transfer1/lift/raise/wheels/w34/drive"}) {
+    const scene::Node* n = sim->plant()->find(drive);
+    ASSERT_NE(n, nullptr) << drive;
+    EXPECT_DOUBLE_EQ(n->number(scene::field::Conveyor::Speed), std::string(drive).find("strip") != std::string::npos ? 0.5 : 0.4);
+  }
+}
+
+TEST(Transfer, WheelsUpDriveTheBoxAcrossAtWheelSpeedAndItsXHolds) {
+  // the box at rest in the middle, the belt running: `up` lifts it 1.2 cm onto the wheels,
+  // `left` sends it along +y at 0.4 m/s (3 %) while its x holds (the belt no longer touches
+  // it); `right`, written last, turns the same wheels round: -y at 0.4 m/s; `up` off sets it
+  // down on the belt, which carries it along x again
+  auto sim = transferWithABox(0.8, 0.0);
+  ASSERT_TRUE(sim);
+  runFor(*sim, 0.2);
+  write(*sim, "transfer1", "run", 1);
+  write(*sim, "transfer1", "up", 1);
+  write(*sim, "transfer1", "left", 1);
+  runFor(*sim, 0.25);
+  core::Vec3 a = position(*sim, "box1/box");
+  runFor(*sim, 0.2);
+  core::Vec3 b = position(*sim, "box1/box");
+  EXPECT_NEAR((b.y - a.y) / 0.2, 0.4, 0.4 * 0.03) << "along +y at the wheels' speed";
+  EXPECT_NEAR(b.x - a.x, 0.0, 0.002) << "its x holds";
+  EXPECT_NEAR(b.z, 0.8 + 0.012, 0.003) << "riding on the wheels, 1.2 cm above the belt";
+  write(*sim, "transfer1", "right", 1);
+  EXPECT_DOUBLE_EQ(io(*sim, "transfer1", "left"), 0.0) << "one motor: the last one written wins";
+  EXPECT_DOUBLE_EQ(io(*sim, "transfer1", "right"), 1.0);
+  runFor(*sim, 0.2);
+  a = position(*sim, "box1/box");
+  runFor(*sim, 0.2);
+  b = position(*sim, "box1/box");
+  EXPECT_NEAR((b.y - a.y) / 0.2, -0.4, 0.4 * 0.03) << "along -y at the wheels' speed";
+  EXPECT_NEAR(b.x - a.x, 0.0, 0.002);
+  write(*sim, "transfer1", "up", 0);
+  runFor(*sim, 0.3);
+  a = position(*sim, "box1/box");
+  runFor(*sim, 0.2);
+  b = position(*sim, "box1/box");
+  EXPECT_NEAR(b.z, 0.8, 0.003) << "down on the belt";
+  EXPECT_NEAR((b.x - a.x) / 0.2, 0.5, 0.5 * 0.03) << "the belt carries it along x again";
 }
 
 }  // namespace
