@@ -167,6 +167,8 @@ const std::vector<PartRow>& library() {
       {"operator/emergency_stop", "Operator", "", {{"latched", In, Dig, ""}, {"released", In, Dig, ""}}},
       {"operator/selector_switch", "Operator", "", {{"on", In, Dig, ""}}},
       {"operator/beacon", "Operator", "", {{"on", Out, Dig, ""}, {"lit", In, Dig, ""}}},
+      {"conveyors/stopper_belt", "Conveyors", "",
+       {{"run", Out, Dig, ""}, {"speed", Out, Ana, "m/s"}, {"stop", Out, Dig, ""}, {"waiting", In, Dig, ""}}},
   };
   return rows;
 }
@@ -1210,6 +1212,113 @@ TEST(MaterialLine, ThePickAndPlaceTakesTheMetalBasesOffTheLidsRideOn) {
   }
   EXPECT_EQ(bases_in_bin, 6);
   EXPECT_EQ(lids_on_belt + static_cast<int>(io(*sim, "remover1", "removed")), 6);
+}
+
+
+// ---------------------------------------------------------------------------------------
+// the stopper belt
+
+/// A 3 m stopper belt (blade at x = 0.5, its face at 0.4925; the eye's beam at 0.47) carrying
+/// a medium box (0.4 m long) whose front starts at x = -0.4, with the blade `up` or down.
+std::unique_ptr<Simulation> stopperWithBox(bool up) {
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      stopper1: {type: stopper_belt, params: {length: 3}}
+      box1: {type: medium_box, translation: [-0.6, 0, 0.801]}
+)Y",
+                     {"conveyors/stopper_belt", "items/medium_box"});
+  if (sim && up) write(*sim, "stopper1", "stop", 1);
+  return sim;
+}
+
+TEST(StopperBelt, TheBladeHoldsAnItemWhileTheBeltRunsAndLetsItGo) {
+  // blade up: the box's front reaches the beam (0.87 m at 0.5 m/s: 1.74 s) and stops at the
+  // blade's face; it stands there, within 2 mm, for 3 s while the belt runs and `waiting`
+  // holds 1; blade down: it leaves at the belt's speed and `waiting` drops when its back has
+  // crossed the beam: 0.3775 m, 0.755 s at speed, and under 0.15 s more for the blade to drop
+  // below the belt's top (5.5 cm) and the box to get up to speed (0.5 m/s at about 7 m/s^2)
+  auto sim = stopperWithBox(true);
+  ASSERT_TRUE(sim);
+  EXPECT_DOUBLE_EQ(io(*sim, "stopper1", "stop"), 1.0);
+  const auto [on, off] = onOff(*sim, "stopper1", "waiting", 2.5);
+  EXPECT_NEAR(on, 1.74, 0.05);
+  EXPECT_LT(off, 0.0);
+  const core::Vec3 held = position(*sim, "box1/box");
+  EXPECT_NEAR(held.x + 0.2, 0.4925, 0.005) << "its front against the blade's face";
+  for (int i = 0; i < 300; ++i) {
+    sim->step();
+    ASSERT_DOUBLE_EQ(io(*sim, "stopper1", "waiting"), 1.0) << sim->kernel().now();
+  }
+  const core::Vec3 still = position(*sim, "box1/box");
+  EXPECT_NEAR(still.x, held.x, 0.002) << "held for 3 s";
+  EXPECT_NEAR(still.y, 0.0, 0.002);
+  EXPECT_NEAR(still.z, 0.8, 0.005) << "on the belt, not climbing the blade";
+  EXPECT_DOUBLE_EQ(io(*sim, "stopper1", "run"), 1.0) << "the belt ran all the while";
+  write(*sim, "stopper1", "stop", 0);
+  const double t0 = sim->kernel().now();
+  const auto [on2, off2] = onOff(*sim, "stopper1", "waiting", 1.0);
+  EXPECT_LT(on2, 0.0);
+  EXPECT_GT(off2 - t0, 0.755);
+  EXPECT_LT(off2 - t0, 0.755 + 0.15);
+  const double x = position(*sim, "box1/box").x;
+  runFor(*sim, 1.0);
+  EXPECT_NEAR(position(*sim, "box1/box").x - x, 0.5, 0.01) << "past the blade at the belt's speed";
+  EXPECT_NEAR(position(*sim, "box1/box").z, 0.8, 0.005);
+}
+
+TEST(StopperBelt, WithTheBladeDownAnItemRidesPastAtTheBeltsSpeed) {
+  // blade down: the box crosses the gap onto the belt past it without a check: 1.0 m in 2 s
+  // (2 %) from 1.5 s to 3.5 s; `waiting` is on once, while the box crosses the beam: from
+  // 1.74 s for its length over the speed, 0.8 s
+  auto sim = stopperWithBox(false);
+  ASSERT_TRUE(sim);
+  const auto [on, off] = onOff(*sim, "stopper1", "waiting", 1.5);
+  EXPECT_LT(on, 0.0);
+  const double x = position(*sim, "box1/box").x;
+  int switches = 0;
+  const auto [on2, off2] = onOff(*sim, "stopper1", "waiting", 2.0, &switches);
+  const core::Vec3 p = position(*sim, "box1/box");
+  EXPECT_NEAR(p.x - x, 1.0, 0.02);
+  EXPECT_NEAR(p.z, 0.8, 0.005);
+  EXPECT_NEAR(on2, 1.74, 0.05);
+  EXPECT_NEAR(off2 - on2, 0.8, 0.03);
+  EXPECT_EQ(switches, 2);
+  (void)off;
+}
+
+TEST(StopperBelt, TheBladeAloneNeverTripsTheEyeAndBothBeltsRunAsOne) {
+  // an empty belt standing (start 0): the blade goes up and down, `waiting` stays 0; a box on
+  // the belt past the gap moves as `run` and `speed` drive the motor: 0.5 m/s, then -0.3 m/s
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      stopper1: {type: stopper_belt, params: {length: 3, start: 0}}
+      box1: {type: small_box, translation: [0.7, 0, 0.801]}
+)Y",
+                     {"conveyors/stopper_belt", "items/small_box"});
+  ASSERT_TRUE(sim);
+  int switches = 0;
+  write(*sim, "stopper1", "stop", 1);
+  onOff(*sim, "stopper1", "waiting", 0.5, &switches);
+  const scene::Node* lift = sim->plant()->find("stopper1/stopper/lift");
+  ASSERT_NE(lift, nullptr);
+  EXPECT_NEAR(sim->physics()->jointPosition(*lift), 0.055, 0.002) << "up: 5 cm above the belt's top";
+  write(*sim, "stopper1", "stop", 0);
+  onOff(*sim, "stopper1", "waiting", 0.5, &switches);
+  EXPECT_NEAR(sim->physics()->jointPosition(*lift), 0.0, 0.002);
+  EXPECT_EQ(switches, 0);
+  EXPECT_NEAR(position(*sim, "box1/box").x, 0.7, 0.002) << "stands until driven";
+  write(*sim, "stopper1", "run", 1);
+  runFor(*sim, 0.5);
+  double x = position(*sim, "box1/box").x;
+  runFor(*sim, 0.6);
+  EXPECT_NEAR(position(*sim, "box1/box").x - x, 0.3, 0.01) << "run: 0.5 m/s past the gap too";
+  write(*sim, "stopper1", "speed", -0.3);
+  runFor(*sim, 0.5);
+  x = position(*sim, "box1/box").x;
+  runFor(*sim, 1.0);
+  EXPECT_NEAR(position(*sim, "box1/box").x - x, -0.3, 0.01) << "speed: backwards at 0.3 m/s";
 }
 
 }  // namespace
