@@ -33,3 +33,4 @@ shot actuators/pick_and_place 3
 shot items/pallet 1.4
 shot conveyors/chute 0.3
 shot conveyors/stopper_belt 3
+shot actuators/pivot_arm_sorter 1.6

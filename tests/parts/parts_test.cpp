@@ -169,6 +169,8 @@ const std::vector<PartRow>& library() {
       {"operator/beacon", "Operator", "", {{"on", Out, Dig, ""}, {"lit", In, Dig, ""}}},
       {"conveyors/stopper_belt", "Conveyors", "",
        {{"run", Out, Dig, ""}, {"speed", Out, Ana, "m/s"}, {"stop", Out, Dig, ""}, {"waiting", In, Dig, ""}}},
+      {"actuators/pivot_arm_sorter", "Actuators", "pivot_arm_control",
+       {{"swing", Out, Dig, ""}, {"home", In, Dig, ""}, {"out", In, Dig, ""}}},
   };
   return rows;
 }
@@ -1216,7 +1218,7 @@ TEST(MaterialLine, ThePickAndPlaceTakesTheMetalBasesOffTheLidsRideOn) {
 
 
 // ---------------------------------------------------------------------------------------
-// the stopper belt
+// the stopper belt and the pivot arm sorter
 
 /// A 3 m stopper belt (blade at x = 0.5, its face at 0.4925; the eye's beam at 0.47) carrying
 /// a medium box (0.4 m long) whose front starts at x = -0.4, with the blade `up` or down.
@@ -1319,6 +1321,144 @@ TEST(StopperBelt, TheBladeAloneNeverTripsTheEyeAndBothBeltsRunAsOne) {
   x = position(*sim, "box1/box").x;
   runFor(*sim, 1.0);
   EXPECT_NEAR(position(*sim, "box1/box").x - x, -0.3, 0.01) << "speed: backwards at 0.3 m/s";
+}
+
+/// The arm's angle now, degrees.
+double armAngle(const Simulation& sim, const std::string& part) {
+  const scene::Node* turn = sim.plant()->find(part + "/pivot/turn");
+  EXPECT_NE(turn, nullptr);
+  return turn ? sim.physics()->jointPosition(*turn) * 180.0 / std::acos(-1.0) : kNan;
+}
+
+TEST(PivotArmSorter, ASwingTakesAngleOverTurnSpeedAndTheLimitsSwitch) {
+  // 60 degrees at 60 deg/s: out in 1 s (the motor follows its target at turn_speed, and its
+  // last degree in about servo_time, 0.02 s: 5 % covers it), 30 degrees from 0.3 s to 0.8 s;
+  // `home` drops within 0.1 s; `out` comes on within 3.5 degrees of the angle; back in 1 s
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      arm1: {type: pivot_arm_sorter, params: {angle: 60, turn_speed: 60}}
+)Y",
+                     {"actuators/pivot_arm_sorter"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 0.2);
+  EXPECT_DOUBLE_EQ(io(*sim, "arm1", "home"), 1.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "arm1", "out"), 0.0);
+  write(*sim, "arm1", "swing", 1);
+  EXPECT_DOUBLE_EQ(io(*sim, "arm1", "swing"), 1.0);
+  const double t0 = sim->kernel().now();
+  double home_off = -1, out_on = -1, out_on_angle = 0, reached = -1, at_03 = 0, at_08 = 0;
+  while (sim->kernel().now() - t0 < 2.0) {
+    sim->step();
+    const double t = sim->kernel().now() - t0, a = armAngle(*sim, "arm1");
+    if (home_off < 0 && io(*sim, "arm1", "home") == 0.0) home_off = t;
+    if (out_on < 0 && io(*sim, "arm1", "out") != 0.0) {
+      out_on = t;
+      out_on_angle = a;
+    }
+    if (reached < 0 && a > 59.5) reached = t;
+    if (std::abs(t - 0.3) < 1e-6) at_03 = a;
+    if (std::abs(t - 0.8) < 1e-6) at_08 = a;
+  }
+  EXPECT_NEAR(reached, 60.0 / 60.0, 0.05) << "angle / turn_speed, within 5 %";
+  EXPECT_NEAR(at_08 - at_03, 30.0, 0.6) << "at its speed on the way";
+  EXPECT_GT(home_off, 0.0);
+  EXPECT_LT(home_off, 0.1);
+  EXPECT_GT(out_on_angle, 60.0 - 4.0) << "the out switch: within 3.5 degrees";
+  EXPECT_LT(out_on_angle, 60.0);
+  EXPECT_NEAR(armAngle(*sim, "arm1"), 60.0, 0.1) << "out by its angle";
+  EXPECT_DOUBLE_EQ(io(*sim, "arm1", "out"), 1.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "arm1", "home"), 0.0);
+  write(*sim, "arm1", "swing", 0);
+  const double t1 = sim->kernel().now();
+  double home_on = -1, out_off = -1;
+  while (sim->kernel().now() - t1 < 2.0 && home_on < 0) {
+    sim->step();
+    const double t = sim->kernel().now() - t1;
+    if (out_off < 0 && io(*sim, "arm1", "out") == 0.0) out_off = t;
+    if (io(*sim, "arm1", "home") != 0.0) home_on = t;
+  }
+  EXPECT_NEAR(home_on, (60.0 - 3.5) / 60.0, 0.05);
+  EXPECT_LT(out_off, 0.1);
+  runFor(*sim, 0.5);
+  EXPECT_NEAR(armAngle(*sim, "arm1"), 0.0, 0.1) << "home again";
+}
+
+/// A 4 m belt carrying a medium box (front at x = -0.8) at 0.5 m/s past a pivot arm at x = 0,
+/// its arm out (`swing`) or home, for `seconds`; the box's position then.
+core::Vec3 boxPastTheArm(bool swing, double seconds) {
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      belt1: {type: belt_conveyor, params: {length: 4}}
+      arm1: {type: pivot_arm_sorter}
+      box1: {type: medium_box, translation: [-1.0, 0, 0.801]}
+)Y",
+                     {"conveyors/belt_conveyor", "actuators/pivot_arm_sorter", "items/medium_box"});
+  if (!sim) return {kNan, kNan, kNan};
+  write(*sim, "arm1", "swing", swing ? 1 : 0);
+  runFor(*sim, seconds);
+  EXPECT_DOUBLE_EQ(io(*sim, "arm1", "swing"), swing ? 1.0 : 0.0);
+  return position(*sim, "box1/box");
+}
+
+TEST(PivotArmSorter, AnItemMeetingTheArmOutLeavesTheBeltOnTheFarSide) {
+  // out (45 degrees, reaching 0.33 m past the centre line): the box runs against the arm, is
+  // guided along it and falls off the far side (+y) onto the floor; home: it rides on, 2 m in
+  // 4 s, on the centre line
+  const core::Vec3 off = boxPastTheArm(true, 5.0);
+  EXPECT_GT(off.y, 0.35 + 0.1) << "past the belt's far edge";
+  EXPECT_LT(off.z, 0.5) << "fell off the belt";
+  const core::Vec3 on = boxPastTheArm(false, 4.0);
+  EXPECT_NEAR(on.x, -1.0 + 2.0, 0.05);
+  EXPECT_NEAR(on.y, 0.0, 0.01);
+  EXPECT_NEAR(on.z, 0.8, 0.005) << "still on the belt's top";
+}
+
+TEST(PivotArmSorter, ItsControlPatternMakesOneSwingPerRequest) {
+  // two requests, hold 1 s: two swings, each out (the out switch on) for the hold and the
+  // few hundredths the arm takes to leave the switch; two tokens on done, the arm home
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      arm1: {type: pivot_arm_sorter}
+      arm1_control: {type: pivot_arm_control, part: arm1, params: {hold: 1.0}}
+    places:
+      asks: {tokens: 2}
+    transitions:
+      ask: {}
+    arcs:
+      - asks -> ask
+      - ask -> arm1_control/request
+)Y",
+                     {"actuators/pivot_arm_sorter"});
+  ASSERT_TRUE(sim);
+  int outs = 0;
+  bool was_out = false;
+  double since = 0, reach = 0;
+  std::vector<double> held;
+  for (int i = 0; i < 500; ++i) {
+    sim->step();
+    reach = std::max(reach, armAngle(*sim, "arm1"));
+    const bool out = io(*sim, "arm1", "out") != 0.0;
+    if (out && !was_out) {
+      ++outs;
+      since = sim->kernel().now();
+    }
+    if (!out && was_out) held.push_back(sim->kernel().now() - since);
+    was_out = out;
+  }
+  EXPECT_EQ(tokens(*sim, "main/arm1_control/done"), 2);
+  EXPECT_EQ(outs, 2);
+  ASSERT_EQ(held.size(), 2u);
+  for (const double h : held) {
+    EXPECT_GT(h, 1.0);
+    EXPECT_LT(h, 1.1);
+  }
+  EXPECT_NEAR(reach, 45.0, 0.5) << "out to its angle";
+  EXPECT_DOUBLE_EQ(io(*sim, "arm1", "swing"), 0.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "arm1", "home"), 1.0);
+  EXPECT_EQ(tokens(*sim, "main/arm1_control/idle"), 1);
 }
 
 }  // namespace
