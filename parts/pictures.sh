@@ -38,3 +38,5 @@ shot actuators/elevator 3.5
 shot storage/stacker 7
 shot conveyors/turntable 3.5
 shot conveyors/transfer 4.3
+shot conveyors/stopper_belt 3
+shot actuators/pivot_arm_sorter 1.6

@@ -180,6 +180,10 @@ const std::vector<PartRow>& library() {
         {"at_angle", In, Dig, ""}, {"angle_at", In, Ana, "deg"}}},
       {"conveyors/transfer", "Conveyors", "",
        {{"run", Out, Dig, ""}, {"speed", Out, Ana, "m/s"}, {"up", Out, Dig, ""}, {"left", Out, Dig, ""}, {"right", Out, Dig, ""}}},
+      {"conveyors/stopper_belt", "Conveyors", "",
+       {{"run", Out, Dig, ""}, {"speed", Out, Ana, "m/s"}, {"stop", Out, Dig, ""}, {"waiting", In, Dig, ""}}},
+      {"actuators/pivot_arm_sorter", "Actuators", "pivot_arm_control",
+       {{"swing", Out, Dig, ""}, {"home", In, Dig, ""}, {"out", In, Dig, ""}}},
   };
   return rows;
 }
@@ -1785,6 +1789,250 @@ TEST(Transfer, WheelsUpDriveTheBoxAcrossAtWheelSpeedAndItsXHolds) {
   b = position(*sim, "box1/box");
   EXPECT_NEAR(b.z, 0.8, 0.003) << "down on the belt";
   EXPECT_NEAR((b.x - a.x) / 0.2, 0.5, 0.5 * 0.03) << "the belt carries it along x again";
+}
+
+// ---------------------------------------------------------------------------------------
+// the stopper belt and the pivot arm sorter
+
+/// A 3 m stopper belt (blade at x = 0.5, its face at 0.4925; the eye's beam at 0.47) carrying
+/// a medium box (0.4 m long) whose front starts at x = -0.4, with the blade `up` or down.
+std::unique_ptr<Simulation> stopperWithBox(bool up) {
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      stopper1: {type: stopper_belt, params: {length: 3}}
+      box1: {type: medium_box, translation: [-0.6, 0, 0.801]}
+)Y",
+                     {"conveyors/stopper_belt", "items/medium_box"});
+  if (sim && up) write(*sim, "stopper1", "stop", 1);
+  return sim;
+}
+
+TEST(StopperBelt, TheBladeHoldsAnItemWhileTheBeltRunsAndLetsItGo) {
+  // blade up: the box's front reaches the beam (0.87 m at 0.5 m/s: 1.74 s) and stops at the
+  // blade's face; it stands there, within 2 mm, for 3 s while the belt runs and `waiting`
+  // holds 1; blade down: it leaves at the belt's speed and `waiting` drops when its back has
+  // crossed the beam: 0.3775 m, 0.755 s at speed, and under 0.15 s more for the blade to drop
+  // below the belt's top (5.5 cm) and the box to get up to speed (0.5 m/s at about 7 m/s^2)
+  auto sim = stopperWithBox(true);
+  ASSERT_TRUE(sim);
+  EXPECT_DOUBLE_EQ(io(*sim, "stopper1", "stop"), 1.0);
+  const auto [on, off] = onOff(*sim, "stopper1", "waiting", 2.5);
+  EXPECT_NEAR(on, 1.74, 0.05);
+  EXPECT_LT(off, 0.0);
+  const core::Vec3 held = position(*sim, "box1/box");
+  EXPECT_NEAR(held.x + 0.2, 0.4925, 0.005) << "its front against the blade's face";
+  for (int i = 0; i < 300; ++i) {
+    sim->step();
+    ASSERT_DOUBLE_EQ(io(*sim, "stopper1", "waiting"), 1.0) << sim->kernel().now();
+  }
+  const core::Vec3 still = position(*sim, "box1/box");
+  EXPECT_NEAR(still.x, held.x, 0.002) << "held for 3 s";
+  EXPECT_NEAR(still.y, 0.0, 0.002);
+  EXPECT_NEAR(still.z, 0.8, 0.005) << "on the belt, not climbing the blade";
+  EXPECT_DOUBLE_EQ(io(*sim, "stopper1", "run"), 1.0) << "the belt ran all the while";
+  write(*sim, "stopper1", "stop", 0);
+  const double t0 = sim->kernel().now();
+  const auto [on2, off2] = onOff(*sim, "stopper1", "waiting", 1.0);
+  EXPECT_LT(on2, 0.0);
+  EXPECT_GT(off2 - t0, 0.755);
+  EXPECT_LT(off2 - t0, 0.755 + 0.15);
+  const double x = position(*sim, "box1/box").x;
+  runFor(*sim, 1.0);
+  EXPECT_NEAR(position(*sim, "box1/box").x - x, 0.5, 0.01) << "past the blade at the belt's speed";
+  EXPECT_NEAR(position(*sim, "box1/box").z, 0.8, 0.005);
+}
+
+TEST(StopperBelt, WithTheBladeDownAnItemRidesPastAtTheBeltsSpeed) {
+  // blade down: the box crosses the gap onto the belt past it without a check: 1.0 m in 2 s
+  // (2 %) from 1.5 s to 3.5 s; `waiting` is on once, while the box crosses the beam: from
+  // 1.74 s for its length over the speed, 0.8 s
+  auto sim = stopperWithBox(false);
+  ASSERT_TRUE(sim);
+  const auto [on, off] = onOff(*sim, "stopper1", "waiting", 1.5);
+  EXPECT_LT(on, 0.0);
+  const double x = position(*sim, "box1/box").x;
+  int switches = 0;
+  const auto [on2, off2] = onOff(*sim, "stopper1", "waiting", 2.0, &switches);
+  const core::Vec3 p = position(*sim, "box1/box");
+  EXPECT_NEAR(p.x - x, 1.0, 0.02);
+  EXPECT_NEAR(p.z, 0.8, 0.005);
+  EXPECT_NEAR(on2, 1.74, 0.05);
+  EXPECT_NEAR(off2 - on2, 0.8, 0.03);
+  EXPECT_EQ(switches, 2);
+  (void)off;
+}
+
+TEST(StopperBelt, TheBladeAloneNeverTripsTheEyeAndBothBeltsRunAsOne) {
+  // an empty belt standing (start 0): the blade goes up and down, `waiting` stays 0; a box on
+  // the belt past the gap moves as `run` and `speed` drive the motor: 0.5 m/s, then -0.3 m/s
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      stopper1: {type: stopper_belt, params: {length: 3, start: 0}}
+      box1: {type: small_box, translation: [0.7, 0, 0.801]}
+)Y",
+                     {"conveyors/stopper_belt", "items/small_box"});
+  ASSERT_TRUE(sim);
+  int switches = 0;
+  write(*sim, "stopper1", "stop", 1);
+  onOff(*sim, "stopper1", "waiting", 0.5, &switches);
+  const scene::Node* lift = sim->plant()->find("stopper1/stopper/lift");
+  ASSERT_NE(lift, nullptr);
+  EXPECT_NEAR(sim->physics()->jointPosition(*lift), 0.055, 0.002) << "up: 5 cm above the belt's top";
+  write(*sim, "stopper1", "stop", 0);
+  onOff(*sim, "stopper1", "waiting", 0.5, &switches);
+  EXPECT_NEAR(sim->physics()->jointPosition(*lift), 0.0, 0.002);
+  EXPECT_EQ(switches, 0);
+  EXPECT_NEAR(position(*sim, "box1/box").x, 0.7, 0.002) << "stands until driven";
+  write(*sim, "stopper1", "run", 1);
+  runFor(*sim, 0.5);
+  double x = position(*sim, "box1/box").x;
+  runFor(*sim, 0.6);
+  EXPECT_NEAR(position(*sim, "box1/box").x - x, 0.3, 0.01) << "run: 0.5 m/s past the gap too";
+  write(*sim, "stopper1", "speed", -0.3);
+  runFor(*sim, 0.5);
+  x = position(*sim, "box1/box").x;
+  runFor(*sim, 1.0);
+  EXPECT_NEAR(position(*sim, "box1/box").x - x, -0.3, 0.01) << "speed: backwards at 0.3 m/s";
+}
+
+/// The arm's angle now, degrees.
+double armAngle(const Simulation& sim, const std::string& part) {
+  const scene::Node* turn = sim.plant()->find(part + "/pivot/turn");
+  EXPECT_NE(turn, nullptr);
+  return turn ? sim.physics()->jointPosition(*turn) * 180.0 / std::acos(-1.0) : kNan;
+}
+
+TEST(PivotArmSorter, ASwingTakesAngleOverTurnSpeedAndTheLimitsSwitch) {
+  // 60 degrees at 60 deg/s: out in 1 s (the motor follows its target at turn_speed, and its
+  // last degree in about servo_time, 0.02 s: 5 % covers it), 30 degrees from 0.3 s to 0.8 s;
+  // `home` drops within 0.1 s; `out` comes on within 3.5 degrees of the angle; back in 1 s
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      arm1: {type: pivot_arm_sorter, params: {angle: 60, turn_speed: 60}}
+)Y",
+                     {"actuators/pivot_arm_sorter"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 0.2);
+  EXPECT_DOUBLE_EQ(io(*sim, "arm1", "home"), 1.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "arm1", "out"), 0.0);
+  write(*sim, "arm1", "swing", 1);
+  EXPECT_DOUBLE_EQ(io(*sim, "arm1", "swing"), 1.0);
+  const double t0 = sim->kernel().now();
+  double home_off = -1, out_on = -1, out_on_angle = 0, reached = -1, at_03 = 0, at_08 = 0;
+  while (sim->kernel().now() - t0 < 2.0) {
+    sim->step();
+    const double t = sim->kernel().now() - t0, a = armAngle(*sim, "arm1");
+    if (home_off < 0 && io(*sim, "arm1", "home") == 0.0) home_off = t;
+    if (out_on < 0 && io(*sim, "arm1", "out") != 0.0) {
+      out_on = t;
+      out_on_angle = a;
+    }
+    if (reached < 0 && a > 59.5) reached = t;
+    if (std::abs(t - 0.3) < 1e-6) at_03 = a;
+    if (std::abs(t - 0.8) < 1e-6) at_08 = a;
+  }
+  EXPECT_NEAR(reached, 60.0 / 60.0, 0.05) << "angle / turn_speed, within 5 %";
+  EXPECT_NEAR(at_08 - at_03, 30.0, 0.6) << "at its speed on the way";
+  EXPECT_GT(home_off, 0.0);
+  EXPECT_LT(home_off, 0.1);
+  EXPECT_GT(out_on_angle, 60.0 - 4.0) << "the out switch: within 3.5 degrees";
+  EXPECT_LT(out_on_angle, 60.0);
+  EXPECT_NEAR(armAngle(*sim, "arm1"), 60.0, 0.1) << "out by its angle";
+  EXPECT_DOUBLE_EQ(io(*sim, "arm1", "out"), 1.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "arm1", "home"), 0.0);
+  write(*sim, "arm1", "swing", 0);
+  const double t1 = sim->kernel().now();
+  double home_on = -1, out_off = -1;
+  while (sim->kernel().now() - t1 < 2.0 && home_on < 0) {
+    sim->step();
+    const double t = sim->kernel().now() - t1;
+    if (out_off < 0 && io(*sim, "arm1", "out") == 0.0) out_off = t;
+    if (io(*sim, "arm1", "home") != 0.0) home_on = t;
+  }
+  EXPECT_NEAR(home_on, (60.0 - 3.5) / 60.0, 0.05);
+  EXPECT_LT(out_off, 0.1);
+  runFor(*sim, 0.5);
+  EXPECT_NEAR(armAngle(*sim, "arm1"), 0.0, 0.1) << "home again";
+}
+
+/// A 4 m belt carrying a medium box (front at x = -0.8) at 0.5 m/s past a pivot arm at x = 0,
+/// its arm out (`swing`) or home, for `seconds`; the box's position then.
+core::Vec3 boxPastTheArm(bool swing, double seconds) {
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      belt1: {type: belt_conveyor, params: {length: 4}}
+      arm1: {type: pivot_arm_sorter}
+      box1: {type: medium_box, translation: [-1.0, 0, 0.801]}
+)Y",
+                     {"conveyors/belt_conveyor", "actuators/pivot_arm_sorter", "items/medium_box"});
+  if (!sim) return {kNan, kNan, kNan};
+  write(*sim, "arm1", "swing", swing ? 1 : 0);
+  runFor(*sim, seconds);
+  EXPECT_DOUBLE_EQ(io(*sim, "arm1", "swing"), swing ? 1.0 : 0.0);
+  return position(*sim, "box1/box");
+}
+
+TEST(PivotArmSorter, AnItemMeetingTheArmOutLeavesTheBeltOnTheFarSide) {
+  // out (45 degrees, reaching 0.33 m past the centre line): the box runs against the arm, is
+  // guided along it and falls off the far side (+y) onto the floor; home: it rides on, 2 m in
+  // 4 s, on the centre line
+  const core::Vec3 off = boxPastTheArm(true, 5.0);
+  EXPECT_GT(off.y, 0.35 + 0.1) << "past the belt's far edge";
+  EXPECT_LT(off.z, 0.5) << "fell off the belt";
+  const core::Vec3 on = boxPastTheArm(false, 4.0);
+  EXPECT_NEAR(on.x, -1.0 + 2.0, 0.05);
+  EXPECT_NEAR(on.y, 0.0, 0.01);
+  EXPECT_NEAR(on.z, 0.8, 0.005) << "still on the belt's top";
+}
+
+TEST(PivotArmSorter, ItsControlPatternMakesOneSwingPerRequest) {
+  // two requests, hold 1 s: two swings, each out (the out switch on) for the hold and the
+  // few hundredths the arm takes to leave the switch; two tokens on done, the arm home
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      arm1: {type: pivot_arm_sorter}
+      arm1_control: {type: pivot_arm_control, part: arm1, params: {hold: 1.0}}
+    places:
+      asks: {tokens: 2}
+    transitions:
+      ask: {}
+    arcs:
+      - asks -> ask
+      - ask -> arm1_control/request
+)Y",
+                     {"actuators/pivot_arm_sorter"});
+  ASSERT_TRUE(sim);
+  int outs = 0;
+  bool was_out = false;
+  double since = 0, reach = 0;
+  std::vector<double> held;
+  for (int i = 0; i < 500; ++i) {
+    sim->step();
+    reach = std::max(reach, armAngle(*sim, "arm1"));
+    const bool out = io(*sim, "arm1", "out") != 0.0;
+    if (out && !was_out) {
+      ++outs;
+      since = sim->kernel().now();
+    }
+    if (!out && was_out) held.push_back(sim->kernel().now() - since);
+    was_out = out;
+  }
+  EXPECT_EQ(tokens(*sim, "main/arm1_control/done"), 2);
+  EXPECT_EQ(outs, 2);
+  ASSERT_EQ(held.size(), 2u);
+  for (const double h : held) {
+    EXPECT_GT(h, 1.0);
+    EXPECT_LT(h, 1.1);
+  }
+  EXPECT_NEAR(reach, 45.0, 0.5) << "out to its angle";
+  EXPECT_DOUBLE_EQ(io(*sim, "arm1", "swing"), 0.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "arm1", "home"), 1.0);
+  EXPECT_EQ(tokens(*sim, "main/arm1_control/idle"), 1);
 }
 
 }  // namespace
