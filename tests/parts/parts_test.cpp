@@ -1747,7 +1747,7 @@ TEST(Transfer, WheelsDownTheBeltCarriesAlongXAtItsSpeed) {
   EXPECT_NEAR((b.x - a.x) / 1.0, 0.5, 0.5 * 0.02);
   EXPECT_NEAR(b.y, 0.0, 0.002) << "the wheels under the belt do not touch it";
   EXPECT_NEAR(b.z, 0.8, 0.005) << "on the strips";
-  // every strip and every wheel runs as the first one (the part copies the motors' speeds)
+  // every strip and every wheel runs as the first one (one motor drives them all)
   for (const char* drive : {"transfer1/belt/strip4/drive", "transfer1/lift/raise/wheels/w34/drive"}) {
     const scene::Node* n = sim->plant()->find(drive);
     ASSERT_NE(n, nullptr) << drive;
