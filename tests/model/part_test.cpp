@@ -618,7 +618,9 @@ TEST(PartDocs, TheCatalogueIsThePartFiles) {
   for (const char* name : {"small_box", "medium_box", "large_box", "emitter", "remover", "belt_conveyor",
                            "diffuse_sensor", "through_beam", "pusher", "bin", "stack_light", "push_button",
                            "emergency_stop", "selector_switch", "beacon", "metal_base", "plastic_lid",
-                           "inductive_sensor", "capacitive_sensor", "code_reader", "scale_conveyor", "pick_and_place", "pallet", "chute"}) {
+                           "inductive_sensor", "capacitive_sensor", "code_reader", "scale_conveyor", "pick_and_place", "pallet", "chute",
+                           "curved_belt", "roller_conveyor", "turntable", "transfer", "stopper_belt", "elevator",
+                           "stacker", "pivot_arm_sorter"}) {
     const LibraryPart* p = findLibraryPart(parts, name);
     ASSERT_TRUE(p) << name;
     EXPECT_FALSE(p->picture.empty()) << name << " has no picture";
