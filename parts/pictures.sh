@@ -32,3 +32,4 @@ shot conveyors/scale_conveyor 1.5
 shot actuators/pick_and_place 3
 shot items/pallet 1.4
 shot conveyors/chute 0.3
+shot operator/potentiometer 0.2

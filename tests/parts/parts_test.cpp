@@ -13,6 +13,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <utility>
@@ -20,6 +21,7 @@
 
 #include "gdpn/model/part_run.h"
 #include "gdpn/model/simulation.h"
+#include "gdpn/scene/actions.h"
 
 namespace gdpn::model {
 namespace {
@@ -167,6 +169,7 @@ const std::vector<PartRow>& library() {
       {"operator/emergency_stop", "Operator", "", {{"latched", In, Dig, ""}, {"released", In, Dig, ""}}},
       {"operator/selector_switch", "Operator", "", {{"on", In, Dig, ""}}},
       {"operator/beacon", "Operator", "", {{"on", Out, Dig, ""}, {"lit", In, Dig, ""}}},
+      {"operator/potentiometer", "Operator", "", {{"value", In, Ana, ""}}},
   };
   return rows;
 }
@@ -1210,6 +1213,73 @@ TEST(MaterialLine, ThePickAndPlaceTakesTheMetalBasesOffTheLidsRideOn) {
   }
   EXPECT_EQ(bases_in_bin, 6);
   EXPECT_EQ(lids_on_belt + static_cast<int>(io(*sim, "remover1", "removed")), 6);
+}
+
+// ---------------------------------------------------------------------------------------
+// the potentiometer
+
+/// A click straight down at (x, y) at `t` s.
+sensors::InputEvent clickAtXY(double t, double x, double y) {
+  sensors::InputEvent e;
+  e.t = t;
+  e.kind = sensors::InputEvent::Kind::Click;
+  e.ray = {{x, y, 2}, {0, 0, -1}};
+  return e;
+}
+
+/// Where dot `mark` (0 to 20) of a potentiometer at (x0, 0) lies: 0.055 m from the knob's
+/// axis, 135 - 13.5 x mark degrees counter-clockwise from +y.
+std::pair<double, double> dialMark(int mark, double x0 = 0) {
+  const double a = (135.0 - 13.5 * mark) * std::numbers::pi / 180;
+  return {x0 - 0.055 * std::sin(a), 0.055 * std::cos(a)};
+}
+
+TEST(Potentiometer, AClickOnADotTurnsThePointerThereAndSetsItsValue) {
+  // a: max 10 from 0; b: max 100 from 50 (the pointer straight up). Clicks on dots 15, 0,
+  // 10 and 20 of a give 7.5, 0, 5, 10; clicks on a's knob and on the plate below it, where
+  // the scale has its gap, change nothing; dot 4 of b gives 20
+  auto sim = compose(std::string(kFloor) + "pages:\n  main:\n    instances:\n      a: {type: potentiometer}\n"
+                                           "      b: {type: potentiometer, translation: [2, 0, 0], params: {max: 100, start: 50}}\n",
+                     {"operator/potentiometer"});
+  ASSERT_TRUE(sim);
+  const auto at = [](double t, int mark, double x0 = 0) {
+    const auto [x, y] = dialMark(mark, x0);
+    return clickAtXY(t, x, y);
+  };
+  sim->setInput({at(0.2, 15), at(0.4, 0), clickAtXY(0.6, 0.005, 0.005), clickAtXY(0.8, 0, -0.055), at(1.0, 10),
+                 at(1.2, 20), at(1.4, 4, 2.0)});
+  const auto pointer = [&](const std::string& part) {
+    return std::get<std::array<double, 4>>(sim->plant()->find(part + "/head/pointer")->value(scene::field::Transform::Rotation))[3];
+  };
+  // the pointer's white line (its middle 0.0125 m out from the axis) lies towards the dot
+  // (the world frames of the still Transforms a script turned are brought up to date first:
+  // the physics does so for bodies only)
+  const auto pointsAt = [&](const std::string& part, int mark, double x0) {
+    const auto [x, y] = dialMark(mark, x0);
+    scene::updateTransforms(*sim->plant()->find(part));
+    const auto p = position(*sim, part + "/head/pointer/line");
+    EXPECT_NEAR(p.x, x0 + (x - x0) * 0.0125 / 0.055, 1e-6) << part << " mark " << mark;
+    EXPECT_NEAR(p.y, y * 0.0125 / 0.055, 1e-6) << part << " mark " << mark;
+  };
+  runFor(*sim, 0.1);
+  EXPECT_EQ(io(*sim, "a", "value"), 0.0);
+  EXPECT_EQ(pointer("a"), 135.0) << "0: the lower left";
+  EXPECT_EQ(io(*sim, "b", "value"), 50.0);
+  EXPECT_EQ(pointer("b"), 0.0) << "half scale: straight up";
+  const std::vector<std::pair<double, int>> expected = {{7.5, 15}, {0, 0}, {0, 0}, {0, 0}, {5, 10}, {10, 20}};
+  for (const auto& [value, mark] : expected) {
+    runFor(*sim, 0.2);
+    SCOPED_TRACE(sim->kernel().now());
+    EXPECT_DOUBLE_EQ(io(*sim, "a", "value"), value);
+    EXPECT_DOUBLE_EQ(pointer("a"), 135.0 - 13.5 * mark);
+    pointsAt("a", mark, 0);
+  }
+  EXPECT_EQ(pointer("a"), -135.0) << "full scale: the lower right";
+  runFor(*sim, 0.2);  // 1.5 s
+  EXPECT_DOUBLE_EQ(io(*sim, "b", "value"), 20.0);
+  EXPECT_DOUBLE_EQ(pointer("b"), 135.0 - 13.5 * 4);
+  pointsAt("b", 4, 2.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "a", "value"), 10.0) << "a click on b leaves a as it was";
 }
 
 }  // namespace
