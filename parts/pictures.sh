@@ -33,3 +33,4 @@ shot actuators/pick_and_place 3
 shot items/pallet 1.4
 shot conveyors/chute 0.3
 shot operator/potentiometer 0.2
+shot operator/digital_display 1.3

@@ -170,6 +170,7 @@ const std::vector<PartRow>& library() {
       {"operator/selector_switch", "Operator", "", {{"on", In, Dig, ""}}},
       {"operator/beacon", "Operator", "", {{"on", Out, Dig, ""}, {"lit", In, Dig, ""}}},
       {"operator/potentiometer", "Operator", "", {{"value", In, Ana, ""}}},
+      {"operator/digital_display", "Operator", "", {{"value", Out, Ana, ""}}},
   };
   return rows;
 }
@@ -1216,7 +1217,7 @@ TEST(MaterialLine, ThePickAndPlaceTakesTheMetalBasesOffTheLidsRideOn) {
 }
 
 // ---------------------------------------------------------------------------------------
-// the potentiometer
+// the potentiometer and the digital display
 
 /// A click straight down at (x, y) at `t` s.
 sensors::InputEvent clickAtXY(double t, double x, double y) {
@@ -1280,6 +1281,106 @@ TEST(Potentiometer, AClickOnADotTurnsThePointerThereAndSetsItsValue) {
   EXPECT_DOUBLE_EQ(pointer("b"), 135.0 - 13.5 * 4);
   pointsAt("b", 4, 2.0);
   EXPECT_DOUBLE_EQ(io(*sim, "a", "value"), 10.0) << "a click on b leaves a as it was";
+}
+
+/// What display `part` shows: per digit, the character whose segments are lit ('?' for
+/// none); every segment lit as a lamp (red, glowing) or dark (nearly black, not glowing).
+std::string shown(const Simulation& sim, const std::string& part) {
+  static const std::map<std::string, char> chars = {
+      {"abcdef", '0'}, {"bc", '1'},      {"abdeg", '2'},   {"abcdg", '3'},  {"bcfg", '4'}, {"acdfg", '5'},
+      {"acdefg", '6'}, {"abc", '7'},     {"abcdefg", '8'}, {"abcdfg", '9'}, {"g", '-'},    {"", ' '}};
+  std::string out;
+  for (int d = 1; d <= 4; ++d) {
+    std::string lit;
+    for (const char s : std::string("abcdefg")) {
+      const std::string led = part + "/face/d" + std::to_string(d) + "/" + s + "/led";
+      const auto emissive = colour(sim, led, "emissive");
+      const auto diffuse = colour(sim, led, "diffuse");
+      if (emissive[0] > 0) {
+        lit += s;
+        EXPECT_EQ(emissive, (std::array<double, 3>{1.0, 0.1, 0.05})) << led;
+        EXPECT_GT(diffuse[0], 0.9) << led << ": red";
+        EXPECT_LT(diffuse[1], 0.2) << led;
+      } else {
+        EXPECT_EQ(emissive, (std::array<double, 3>{0, 0, 0})) << led;
+        EXPECT_LT(std::max({diffuse[0], diffuse[1], diffuse[2]}), 0.1) << led << ": nearly black";
+      }
+    }
+    const auto c = chars.find(lit);
+    out += c == chars.end() ? '?' : c->second;
+  }
+  return out;
+}
+
+TEST(DigitalDisplay, ShowsTheNumberWrittenRightAlignedOrDashesWhenItDoesNotFit) {
+  auto sim = compose(std::string(kFloor) + "pages:\n  main:\n    instances:\n      display1: {type: digital_display}\n",
+                     {"operator/digital_display"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 0.05);
+  EXPECT_EQ(shown(*sim, "display1"), "   0") << "0 at the start";
+  const std::vector<std::pair<double, std::string>> cases = {
+      {42, "  42"},    {-7, "  -7"},    {8888, "8888"}, {0, "   0"},    {9999, "9999"},   {-999, "-999"},
+      {10000, "----"}, {-1000, "----"}, {3.6, "   4"},  {-0.4, "   0"}, {1234, "1234"}};
+  for (const auto& [value, text] : cases) {
+    write(*sim, "display1", "value", value);
+    runFor(*sim, 0.05);  // it reads every 0.02 s
+    EXPECT_EQ(shown(*sim, "display1"), text) << value;
+    EXPECT_EQ(io(*sim, "display1", "value"), value) << "the output reads back as written";
+  }
+  // " 42" is segments b, c, f, g of the third digit and a, b, d, e, g of the fourth, no other
+  write(*sim, "display1", "value", 42);
+  runFor(*sim, 0.05);
+  EXPECT_EQ(colour(*sim, "display1/face/d3/f/led", "emissive")[0], 1.0);
+  EXPECT_EQ(colour(*sim, "display1/face/d3/a/led", "emissive")[0], 0.0);
+  EXPECT_EQ(colour(*sim, "display1/face/d4/e/led", "emissive")[0], 1.0);
+  EXPECT_EQ(colour(*sim, "display1/face/d4/c/led", "emissive")[0], 0.0);
+  EXPECT_EQ(colour(*sim, "display1/face/d2/g/led", "emissive")[0], 0.0);
+}
+
+TEST(DigitalDisplay, ShowsTheTokensOfTheLinkedPlaceAndFollowsThem) {
+  // 5 tokens go onto the display's place at once; from 0.5 s one is taken every 0.1 s (at
+  // the start of each occurrence); the display follows. Then a written value shows until the
+  // place changes again
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      display1: {type: digital_display}
+    places:
+      stock: {tokens: 5}
+      more: {}
+    transitions:
+      load: {duration: 0}
+      take: {guard: 'sim.time >= 0.5 and sim.time < 0.75', duration: 0.1}
+      again: {duration: 0}
+    arcs:
+      - stock -> load
+      - load -> display1/shows
+      - display1/shows -> take
+      - more -> again
+      - again -> display1/shows
+)Y",
+                     {"operator/digital_display"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 0.3);
+  EXPECT_EQ(tokens(*sim, "main/display1/shows"), 5);
+  EXPECT_EQ(shown(*sim, "display1"), "   5");
+  runFor(*sim, 0.25);  // 0.55 s: one taken at 0.5
+  EXPECT_EQ(tokens(*sim, "main/display1/shows"), 4);
+  EXPECT_EQ(shown(*sim, "display1"), "   4");
+  runFor(*sim, 0.1);  // 0.65 s
+  EXPECT_EQ(shown(*sim, "display1"), "   3");
+  runFor(*sim, 0.3);  // 0.95 s: taken at 0.5, 0.6 and 0.7, then no more
+  EXPECT_EQ(tokens(*sim, "main/display1/shows"), 2);
+  EXPECT_EQ(shown(*sim, "display1"), "   2");
+  write(*sim, "display1", "value", -42);
+  runFor(*sim, 0.05);
+  EXPECT_EQ(shown(*sim, "display1"), " -42") << "the value written last";
+  const auto id = sim->net().findPlace("main/more");
+  ASSERT_TRUE(id);
+  EXPECT_EQ(sim->kernel().setMarking(*sim->net().placeSlotsOf(*id).begin(), 10), "");
+  runFor(*sim, 0.1);
+  EXPECT_EQ(tokens(*sim, "main/display1/shows"), 12);
+  EXPECT_EQ(shown(*sim, "display1"), "  12") << "the place changed last";
 }
 
 }  // namespace
