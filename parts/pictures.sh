@@ -34,3 +34,4 @@ shot items/pallet 1.4
 shot conveyors/chute 0.3
 shot operator/potentiometer 0.2
 shot operator/digital_display 1.3
+shot sensors/light_array 2.5 --sensors

@@ -171,6 +171,7 @@ const std::vector<PartRow>& library() {
       {"operator/beacon", "Operator", "", {{"on", Out, Dig, ""}, {"lit", In, Dig, ""}}},
       {"operator/potentiometer", "Operator", "", {{"value", In, Ana, ""}}},
       {"operator/digital_display", "Operator", "", {{"value", Out, Ana, ""}}},
+      {"sensors/light_array", "Sensors", "", {{"blocked", In, Dig, ""}, {"beams", In, Ana, "beams"}, {"height", In, Ana, "m"}}},
   };
   return rows;
 }
@@ -1217,7 +1218,7 @@ TEST(MaterialLine, ThePickAndPlaceTakesTheMetalBasesOffTheLidsRideOn) {
 }
 
 // ---------------------------------------------------------------------------------------
-// the potentiometer and the digital display
+// the potentiometer, the digital display, the light array
 
 /// A click straight down at (x, y) at `t` s.
 sensors::InputEvent clickAtXY(double t, double x, double y) {
@@ -1381,6 +1382,64 @@ TEST(DigitalDisplay, ShowsTheTokensOfTheLinkedPlaceAndFollowsThem) {
   runFor(*sim, 0.1);
   EXPECT_EQ(tokens(*sim, "main/display1/shows"), 12);
   EXPECT_EQ(shown(*sim, "display1"), "  12") << "the place changed last";
+}
+
+TEST(LightArray, ABoxBreaksTheBeamsBelowItsTopAndItsHeightReadsTheHighest) {
+  // four belts, a light array across each at x = 0.5 and a box on each centred at x = -1.2:
+  // at 0.5 m/s every box is centred in its curtain at 3.4 s. Beams at 0.03 + 0.06 k above
+  // the belt: the small box (0.2 m high) breaks the 3 under 0.2 (top one at 0.15), the
+  // medium (0.3 m) 5 (0.27), the large (0.4 m) 7 (0.39); with a pitch of 0.04 the medium box
+  // breaks the 7 under 0.3 (0.03 + 0.04 k, k = 0 to 6: top one at 0.27). A fifth belt, empty,
+  // never breaks one
+  std::string body = std::string(kFloor) + "pages:\n  main:\n    instances:\n";
+  const std::vector<std::pair<std::string, std::string>> lanes = {
+      {"small_box", ""}, {"medium_box", ""}, {"large_box", ""}, {"medium_box", ", params: {pitch: 0.04}"}, {"", ""}};
+  for (std::size_t i = 0; i < lanes.size(); ++i) {
+    const std::string y = std::to_string(2.0 * static_cast<double>(i));
+    const std::string n = std::to_string(i);
+    body += "      belt" + n + ": {type: belt_conveyor, translation: [0, " + y + ", 0], params: {length: 4}}\n";
+    body += "      curtain" + n + ": {type: light_array, translation: [0.5, " + y + ", 0]" + lanes[i].second + "}\n";
+    if (!lanes[i].first.empty()) {
+      body += "      box" + n + ": {type: " + lanes[i].first + ", translation: [-1.2, " + y + ", 0.801]}\n";
+    }
+  }
+  auto sim = compose(body, {"conveyors/belt_conveyor", "items/small_box", "items/medium_box", "items/large_box",
+                            "sensors/light_array"});
+  ASSERT_TRUE(sim);
+  const std::vector<double> beams = {3, 5, 7, 7, 0};
+  const std::vector<double> heights = {0.15, 0.27, 0.39, 0.27, 0};
+  std::vector<double> most(lanes.size(), 0);
+  const auto watch = [&](double seconds) {
+    const auto steps = static_cast<int>(std::llround(seconds / sim->model().settings.dt));
+    for (int s = 0; s < steps; ++s) {
+      sim->step();
+      for (std::size_t i = 0; i < lanes.size(); ++i) {
+        const std::string c = "curtain" + std::to_string(i);
+        most[i] = std::max(most[i], io(*sim, c, "beams"));
+        EXPECT_EQ(io(*sim, c, "blocked"), io(*sim, c, "beams") > 0 ? 1.0 : 0.0);
+      }
+    }
+  };
+  watch(1.0);
+  for (std::size_t i = 0; i < lanes.size(); ++i) EXPECT_EQ(io(*sim, "curtain" + std::to_string(i), "beams"), 0) << i;
+  watch(2.4);  // 3.4 s
+  for (std::size_t i = 0; i < lanes.size(); ++i) {
+    SCOPED_TRACE(i);
+    const std::string c = "curtain" + std::to_string(i);
+    EXPECT_EQ(io(*sim, c, "beams"), beams[i]);
+    EXPECT_NEAR(io(*sim, c, "height"), heights[i], 1e-9);
+    EXPECT_EQ(io(*sim, c, "blocked"), beams[i] > 0 ? 1.0 : 0.0);
+  }
+  EXPECT_EQ(colour(*sim, "curtain0/receiver/led", "emissive")[0], 1.0) << "red while broken";
+  watch(1.6);  // 5 s: the large box's back (0.275 m behind its centre) passed at 4.0 s
+  for (std::size_t i = 0; i < lanes.size(); ++i) {
+    SCOPED_TRACE(i);
+    const std::string c = "curtain" + std::to_string(i);
+    EXPECT_EQ(io(*sim, c, "beams"), 0);
+    EXPECT_EQ(io(*sim, c, "height"), 0);
+    EXPECT_EQ(most[i], beams[i]) << "never more beams than its height implies";
+  }
+  EXPECT_EQ(colour(*sim, "curtain0/receiver/led", "emissive")[1], 0.9) << "green when clear";
 }
 
 }  // namespace
