@@ -40,3 +40,6 @@ shot conveyors/turntable 3.5
 shot conveyors/transfer 4.3
 shot conveyors/stopper_belt 3
 shot actuators/pivot_arm_sorter 1.6
+shot operator/potentiometer 0.2
+shot operator/digital_display 1.3
+shot sensors/light_array 2.5 --sensors

@@ -13,6 +13,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <utility>
@@ -20,6 +21,7 @@
 
 #include "gdpn/model/part_run.h"
 #include "gdpn/model/simulation.h"
+#include "gdpn/scene/actions.h"
 
 namespace gdpn::model {
 namespace {
@@ -184,6 +186,9 @@ const std::vector<PartRow>& library() {
        {{"run", Out, Dig, ""}, {"speed", Out, Ana, "m/s"}, {"stop", Out, Dig, ""}, {"waiting", In, Dig, ""}}},
       {"actuators/pivot_arm_sorter", "Actuators", "pivot_arm_control",
        {{"swing", Out, Dig, ""}, {"home", In, Dig, ""}, {"out", In, Dig, ""}}},
+      {"operator/potentiometer", "Operator", "", {{"value", In, Ana, ""}}},
+      {"operator/digital_display", "Operator", "", {{"value", Out, Ana, ""}}},
+      {"sensors/light_array", "Sensors", "", {{"blocked", In, Dig, ""}, {"beams", In, Ana, "beams"}, {"height", In, Ana, "m"}}},
   };
   return rows;
 }
@@ -2033,6 +2038,231 @@ TEST(PivotArmSorter, ItsControlPatternMakesOneSwingPerRequest) {
   EXPECT_DOUBLE_EQ(io(*sim, "arm1", "swing"), 0.0);
   EXPECT_DOUBLE_EQ(io(*sim, "arm1", "home"), 1.0);
   EXPECT_EQ(tokens(*sim, "main/arm1_control/idle"), 1);
+}
+
+// ---------------------------------------------------------------------------------------
+// the potentiometer, the digital display, the light array
+
+/// A click straight down at (x, y) at `t` s.
+sensors::InputEvent clickAtXY(double t, double x, double y) {
+  sensors::InputEvent e;
+  e.t = t;
+  e.kind = sensors::InputEvent::Kind::Click;
+  e.ray = {{x, y, 2}, {0, 0, -1}};
+  return e;
+}
+
+/// Where dot `mark` (0 to 20) of a potentiometer at (x0, 0) lies: 0.055 m from the knob's
+/// axis, 135 - 13.5 x mark degrees counter-clockwise from +y.
+std::pair<double, double> dialMark(int mark, double x0 = 0) {
+  const double a = (135.0 - 13.5 * mark) * std::numbers::pi / 180;
+  return {x0 - 0.055 * std::sin(a), 0.055 * std::cos(a)};
+}
+
+TEST(Potentiometer, AClickOnADotTurnsThePointerThereAndSetsItsValue) {
+  // a: max 10 from 0; b: max 100 from 50 (the pointer straight up). Clicks on dots 15, 0,
+  // 10 and 20 of a give 7.5, 0, 5, 10; clicks on a's knob and on the plate below it, where
+  // the scale has its gap, change nothing; dot 4 of b gives 20
+  auto sim = compose(std::string(kFloor) + "pages:\n  main:\n    instances:\n      a: {type: potentiometer}\n"
+                                           "      b: {type: potentiometer, translation: [2, 0, 0], params: {max: 100, start: 50}}\n",
+                     {"operator/potentiometer"});
+  ASSERT_TRUE(sim);
+  const auto at = [](double t, int mark, double x0 = 0) {
+    const auto [x, y] = dialMark(mark, x0);
+    return clickAtXY(t, x, y);
+  };
+  sim->setInput({at(0.2, 15), at(0.4, 0), clickAtXY(0.6, 0.005, 0.005), clickAtXY(0.8, 0, -0.055), at(1.0, 10),
+                 at(1.2, 20), at(1.4, 4, 2.0)});
+  const auto pointer = [&](const std::string& part) {
+    return std::get<std::array<double, 4>>(sim->plant()->find(part + "/head/pointer")->value(scene::field::Transform::Rotation))[3];
+  };
+  // the pointer's white line (its middle 0.0125 m out from the axis) lies towards the dot
+  // (the world frames of the still Transforms a script turned are brought up to date first:
+  // the physics does so for bodies only)
+  const auto pointsAt = [&](const std::string& part, int mark, double x0) {
+    const auto [x, y] = dialMark(mark, x0);
+    scene::updateTransforms(*sim->plant()->find(part));
+    const auto p = position(*sim, part + "/head/pointer/line");
+    EXPECT_NEAR(p.x, x0 + (x - x0) * 0.0125 / 0.055, 1e-6) << part << " mark " << mark;
+    EXPECT_NEAR(p.y, y * 0.0125 / 0.055, 1e-6) << part << " mark " << mark;
+  };
+  runFor(*sim, 0.1);
+  EXPECT_EQ(io(*sim, "a", "value"), 0.0);
+  EXPECT_EQ(pointer("a"), 135.0) << "0: the lower left";
+  EXPECT_EQ(io(*sim, "b", "value"), 50.0);
+  EXPECT_EQ(pointer("b"), 0.0) << "half scale: straight up";
+  const std::vector<std::pair<double, int>> expected = {{7.5, 15}, {0, 0}, {0, 0}, {0, 0}, {5, 10}, {10, 20}};
+  for (const auto& [value, mark] : expected) {
+    runFor(*sim, 0.2);
+    SCOPED_TRACE(sim->kernel().now());
+    EXPECT_DOUBLE_EQ(io(*sim, "a", "value"), value);
+    EXPECT_DOUBLE_EQ(pointer("a"), 135.0 - 13.5 * mark);
+    pointsAt("a", mark, 0);
+  }
+  EXPECT_EQ(pointer("a"), -135.0) << "full scale: the lower right";
+  runFor(*sim, 0.2);  // 1.5 s
+  EXPECT_DOUBLE_EQ(io(*sim, "b", "value"), 20.0);
+  EXPECT_DOUBLE_EQ(pointer("b"), 135.0 - 13.5 * 4);
+  pointsAt("b", 4, 2.0);
+  EXPECT_DOUBLE_EQ(io(*sim, "a", "value"), 10.0) << "a click on b leaves a as it was";
+}
+
+/// What display `part` shows: per digit, the character whose segments are lit ('?' for
+/// none); every segment lit as a lamp (red, glowing) or dark (nearly black, not glowing).
+std::string shown(const Simulation& sim, const std::string& part) {
+  static const std::map<std::string, char> chars = {
+      {"abcdef", '0'}, {"bc", '1'},      {"abdeg", '2'},   {"abcdg", '3'},  {"bcfg", '4'}, {"acdfg", '5'},
+      {"acdefg", '6'}, {"abc", '7'},     {"abcdefg", '8'}, {"abcdfg", '9'}, {"g", '-'},    {"", ' '}};
+  std::string out;
+  for (int d = 1; d <= 4; ++d) {
+    std::string lit;
+    for (const char s : std::string("abcdefg")) {
+      const std::string led = part + "/face/d" + std::to_string(d) + "/" + s + "/led";
+      const auto emissive = colour(sim, led, "emissive");
+      const auto diffuse = colour(sim, led, "diffuse");
+      if (emissive[0] > 0) {
+        lit += s;
+        EXPECT_EQ(emissive, (std::array<double, 3>{1.0, 0.1, 0.05})) << led;
+        EXPECT_GT(diffuse[0], 0.9) << led << ": red";
+        EXPECT_LT(diffuse[1], 0.2) << led;
+      } else {
+        EXPECT_EQ(emissive, (std::array<double, 3>{0, 0, 0})) << led;
+        EXPECT_LT(std::max({diffuse[0], diffuse[1], diffuse[2]}), 0.1) << led << ": nearly black";
+      }
+    }
+    const auto c = chars.find(lit);
+    out += c == chars.end() ? '?' : c->second;
+  }
+  return out;
+}
+
+TEST(DigitalDisplay, ShowsTheNumberWrittenRightAlignedOrDashesWhenItDoesNotFit) {
+  auto sim = compose(std::string(kFloor) + "pages:\n  main:\n    instances:\n      display1: {type: digital_display}\n",
+                     {"operator/digital_display"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 0.05);
+  EXPECT_EQ(shown(*sim, "display1"), "   0") << "0 at the start";
+  const std::vector<std::pair<double, std::string>> cases = {
+      {42, "  42"},    {-7, "  -7"},    {8888, "8888"}, {0, "   0"},    {9999, "9999"},   {-999, "-999"},
+      {10000, "----"}, {-1000, "----"}, {3.6, "   4"},  {-0.4, "   0"}, {1234, "1234"}};
+  for (const auto& [value, text] : cases) {
+    write(*sim, "display1", "value", value);
+    runFor(*sim, 0.05);  // it reads every 0.02 s
+    EXPECT_EQ(shown(*sim, "display1"), text) << value;
+    EXPECT_EQ(io(*sim, "display1", "value"), value) << "the output reads back as written";
+  }
+  // " 42" is segments b, c, f, g of the third digit and a, b, d, e, g of the fourth, no other
+  write(*sim, "display1", "value", 42);
+  runFor(*sim, 0.05);
+  EXPECT_EQ(colour(*sim, "display1/face/d3/f/led", "emissive")[0], 1.0);
+  EXPECT_EQ(colour(*sim, "display1/face/d3/a/led", "emissive")[0], 0.0);
+  EXPECT_EQ(colour(*sim, "display1/face/d4/e/led", "emissive")[0], 1.0);
+  EXPECT_EQ(colour(*sim, "display1/face/d4/c/led", "emissive")[0], 0.0);
+  EXPECT_EQ(colour(*sim, "display1/face/d2/g/led", "emissive")[0], 0.0);
+}
+
+TEST(DigitalDisplay, ShowsTheTokensOfTheLinkedPlaceAndFollowsThem) {
+  // 5 tokens go onto the display's place at once; from 0.5 s one is taken every 0.1 s (at
+  // the start of each occurrence); the display follows. Then a written value shows until the
+  // place changes again
+  auto sim = compose(std::string(kFloor) + R"Y(pages:
+  main:
+    instances:
+      display1: {type: digital_display}
+    places:
+      stock: {tokens: 5}
+      more: {}
+    transitions:
+      load: {duration: 0}
+      take: {guard: 'sim.time >= 0.5 and sim.time < 0.75', duration: 0.1}
+      again: {duration: 0}
+    arcs:
+      - stock -> load
+      - load -> display1/shows
+      - display1/shows -> take
+      - more -> again
+      - again -> display1/shows
+)Y",
+                     {"operator/digital_display"});
+  ASSERT_TRUE(sim);
+  runFor(*sim, 0.3);
+  EXPECT_EQ(tokens(*sim, "main/display1/shows"), 5);
+  EXPECT_EQ(shown(*sim, "display1"), "   5");
+  runFor(*sim, 0.25);  // 0.55 s: one taken at 0.5
+  EXPECT_EQ(tokens(*sim, "main/display1/shows"), 4);
+  EXPECT_EQ(shown(*sim, "display1"), "   4");
+  runFor(*sim, 0.1);  // 0.65 s
+  EXPECT_EQ(shown(*sim, "display1"), "   3");
+  runFor(*sim, 0.3);  // 0.95 s: taken at 0.5, 0.6 and 0.7, then no more
+  EXPECT_EQ(tokens(*sim, "main/display1/shows"), 2);
+  EXPECT_EQ(shown(*sim, "display1"), "   2");
+  write(*sim, "display1", "value", -42);
+  runFor(*sim, 0.05);
+  EXPECT_EQ(shown(*sim, "display1"), " -42") << "the value written last";
+  const auto id = sim->net().findPlace("main/more");
+  ASSERT_TRUE(id);
+  EXPECT_EQ(sim->kernel().setMarking(*sim->net().placeSlotsOf(*id).begin(), 10), "");
+  runFor(*sim, 0.1);
+  EXPECT_EQ(tokens(*sim, "main/display1/shows"), 12);
+  EXPECT_EQ(shown(*sim, "display1"), "  12") << "the place changed last";
+}
+
+TEST(LightArray, ABoxBreaksTheBeamsBelowItsTopAndItsHeightReadsTheHighest) {
+  // four belts, a light array across each at x = 0.5 and a box on each centred at x = -1.2:
+  // at 0.5 m/s every box is centred in its curtain at 3.4 s. Beams at 0.03 + 0.06 k above
+  // the belt: the small box (0.2 m high) breaks the 3 under 0.2 (top one at 0.15), the
+  // medium (0.3 m) 5 (0.27), the large (0.4 m) 7 (0.39); with a pitch of 0.04 the medium box
+  // breaks the 7 under 0.3 (0.03 + 0.04 k, k = 0 to 6: top one at 0.27). A fifth belt, empty,
+  // never breaks one
+  std::string body = std::string(kFloor) + "pages:\n  main:\n    instances:\n";
+  const std::vector<std::pair<std::string, std::string>> lanes = {
+      {"small_box", ""}, {"medium_box", ""}, {"large_box", ""}, {"medium_box", ", params: {pitch: 0.04}"}, {"", ""}};
+  for (std::size_t i = 0; i < lanes.size(); ++i) {
+    const std::string y = std::to_string(2.0 * static_cast<double>(i));
+    const std::string n = std::to_string(i);
+    body += "      belt" + n + ": {type: belt_conveyor, translation: [0, " + y + ", 0], params: {length: 4}}\n";
+    body += "      curtain" + n + ": {type: light_array, translation: [0.5, " + y + ", 0]" + lanes[i].second + "}\n";
+    if (!lanes[i].first.empty()) {
+      body += "      box" + n + ": {type: " + lanes[i].first + ", translation: [-1.2, " + y + ", 0.801]}\n";
+    }
+  }
+  auto sim = compose(body, {"conveyors/belt_conveyor", "items/small_box", "items/medium_box", "items/large_box",
+                            "sensors/light_array"});
+  ASSERT_TRUE(sim);
+  const std::vector<double> beams = {3, 5, 7, 7, 0};
+  const std::vector<double> heights = {0.15, 0.27, 0.39, 0.27, 0};
+  std::vector<double> most(lanes.size(), 0);
+  const auto watch = [&](double seconds) {
+    const auto steps = static_cast<int>(std::llround(seconds / sim->model().settings.dt));
+    for (int s = 0; s < steps; ++s) {
+      sim->step();
+      for (std::size_t i = 0; i < lanes.size(); ++i) {
+        const std::string c = "curtain" + std::to_string(i);
+        most[i] = std::max(most[i], io(*sim, c, "beams"));
+        EXPECT_EQ(io(*sim, c, "blocked"), io(*sim, c, "beams") > 0 ? 1.0 : 0.0);
+      }
+    }
+  };
+  watch(1.0);
+  for (std::size_t i = 0; i < lanes.size(); ++i) EXPECT_EQ(io(*sim, "curtain" + std::to_string(i), "beams"), 0) << i;
+  watch(2.4);  // 3.4 s
+  for (std::size_t i = 0; i < lanes.size(); ++i) {
+    SCOPED_TRACE(i);
+    const std::string c = "curtain" + std::to_string(i);
+    EXPECT_EQ(io(*sim, c, "beams"), beams[i]);
+    EXPECT_NEAR(io(*sim, c, "height"), heights[i], 1e-9);
+    EXPECT_EQ(io(*sim, c, "blocked"), beams[i] > 0 ? 1.0 : 0.0);
+  }
+  EXPECT_EQ(colour(*sim, "curtain0/receiver/led", "emissive")[0], 1.0) << "red while broken";
+  watch(1.6);  // 5 s: the large box's back (0.275 m behind its centre) passed at 4.0 s
+  for (std::size_t i = 0; i < lanes.size(); ++i) {
+    SCOPED_TRACE(i);
+    const std::string c = "curtain" + std::to_string(i);
+    EXPECT_EQ(io(*sim, c, "beams"), 0);
+    EXPECT_EQ(io(*sim, c, "height"), 0);
+    EXPECT_EQ(most[i], beams[i]) << "never more beams than its height implies";
+  }
+  EXPECT_EQ(colour(*sim, "curtain0/receiver/led", "emissive")[1], 0.9) << "green when clear";
 }
 
 }  // namespace
