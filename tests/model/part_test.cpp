@@ -620,7 +620,7 @@ TEST(PartDocs, TheCatalogueIsThePartFiles) {
                            "emergency_stop", "selector_switch", "beacon", "metal_base", "plastic_lid",
                            "inductive_sensor", "capacitive_sensor", "code_reader", "scale_conveyor", "pick_and_place", "pallet", "chute",
                            "curved_belt", "roller_conveyor", "turntable", "transfer", "stopper_belt", "elevator",
-                           "stacker", "pivot_arm_sorter"}) {
+                           "stacker", "pivot_arm_sorter", "potentiometer", "digital_display", "light_array"}) {
     const LibraryPart* p = findLibraryPart(parts, name);
     ASSERT_TRUE(p) << name;
     EXPECT_FALSE(p->picture.empty()) << name << " has no picture";

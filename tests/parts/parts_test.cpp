@@ -188,7 +188,7 @@ const std::vector<PartRow>& library() {
        {{"swing", Out, Dig, ""}, {"home", In, Dig, ""}, {"out", In, Dig, ""}}},
       {"operator/potentiometer", "Operator", "", {{"value", In, Ana, ""}}},
       {"operator/digital_display", "Operator", "", {{"value", Out, Ana, ""}}},
-      {"sensors/light_array", "Sensors", "", {{"blocked", In, Dig, ""}, {"beams", In, Ana, "beams"}, {"height", In, Ana, "m"}}},
+      {"sensors/light_array", "Sensors", "", {{"blocked", In, Dig, ""}, {"beams", In, Ana, "beams"}, {"top", In, Ana, "m"}}},
   };
   return rows;
 }
@@ -2250,7 +2250,7 @@ TEST(LightArray, ABoxBreaksTheBeamsBelowItsTopAndItsHeightReadsTheHighest) {
     SCOPED_TRACE(i);
     const std::string c = "curtain" + std::to_string(i);
     EXPECT_EQ(io(*sim, c, "beams"), beams[i]);
-    EXPECT_NEAR(io(*sim, c, "height"), heights[i], 1e-9);
+    EXPECT_NEAR(io(*sim, c, "top"), heights[i], 1e-9);
     EXPECT_EQ(io(*sim, c, "blocked"), beams[i] > 0 ? 1.0 : 0.0);
   }
   EXPECT_EQ(colour(*sim, "curtain0/receiver/led", "emissive")[0], 1.0) << "red while broken";
@@ -2259,7 +2259,7 @@ TEST(LightArray, ABoxBreaksTheBeamsBelowItsTopAndItsHeightReadsTheHighest) {
     SCOPED_TRACE(i);
     const std::string c = "curtain" + std::to_string(i);
     EXPECT_EQ(io(*sim, c, "beams"), 0);
-    EXPECT_EQ(io(*sim, c, "height"), 0);
+    EXPECT_EQ(io(*sim, c, "top"), 0);
     EXPECT_EQ(most[i], beams[i]) << "never more beams than its height implies";
   }
   EXPECT_EQ(colour(*sim, "curtain0/receiver/led", "emissive")[1], 0.9) << "green when clear";
