@@ -1400,6 +1400,35 @@ TEST(MaterialLine, ThePickAndPlaceTakesTheMetalBasesOffTheLidsRideOn) {
   EXPECT_EQ(lids_on_belt + static_cast<int>(io(*sim, "remover1", "removed")), 6);
 }
 
+TEST(SortingFromParts, FiftyBoxesEachInTheBinOfItsColour) {
+  // examples/sorting/from_parts: fifty small boxes, red or blue at random (seed 7), two
+  // pusher_sort stations: every red box ends within the right bin's walls, every blue one
+  // within the left's; none left on the belt, none reaches its end
+  core::Diagnostics diags;
+  auto m = loadModel(std::string(GDPN_SOURCE_DIR) + "/examples/sorting/from_parts/sorting.gdpn.yaml", diags);
+  ASSERT_TRUE(m) << diags.str();
+  auto sim = Simulation::create(*m, diags);
+  ASSERT_TRUE(sim) << diags.str();
+  runFor(*sim, 270.0);
+  ASSERT_FALSE(sim->scriptHalt()) << sim->scriptHalt()->message;
+  EXPECT_EQ(io(*sim, "emitter1", "emitted"), 50);
+  EXPECT_EQ(io(*sim, "remover1", "removed"), 0);
+  std::map<std::string, int> in;
+  for (const auto& holder : sim->plant()->find("emitter1/items")->children()) {
+    const scene::Node* box = holder->find("box");
+    const std::string colour = std::get<std::string>(*box->datum("colour"));
+    const core::Vec3 p = box->framePose().position;
+    // the bins, 2 m by 1.4 m, stand at (1.6, 1.195) and (3.4, -1.195)
+    const bool right = std::abs(p.x - 1.6) < 0.98 && std::abs(p.y - 1.195) < 0.68;
+    const bool left = std::abs(p.x - 3.4) < 0.98 && std::abs(p.y + 1.195) < 0.68;
+    ++in[colour + (right ? " right" : left ? " left" : " elsewhere")];
+  }
+  EXPECT_EQ(in["red right"] + in["blue left"], 50) << "red right " << in["red right"] << ", blue left "
+                                                   << in["blue left"];
+  EXPECT_GT(in["red right"], 10);
+  EXPECT_GT(in["blue left"], 10);
+}
+
 // ---------------------------------------------------------------------------------------
 // the elevator
 
