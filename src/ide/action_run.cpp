@@ -5,19 +5,67 @@
 
 #include <imgui.h>
 
+#include <array>
+#include <cmath>
+#include <numbers>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "app.h"
 #include "gdpn/ide/io_list.h"
+#include "gdpn/ide/part_edit.h"
 #include "detail/keys.h"
 #include "views.h"
+#include "views/palette_state.h"
 
 namespace gdpn::ide {
 
 namespace {
 
 bool editing(const App& app) { return app.run().mode() == RunMode::Edit; }
+
+/// The selected node's path when it is a part's machine or a Transform: what Turn a Quarter
+/// turns; "" for anything else.
+std::string turnable(const App& app) {
+  const auto& sel = app.document().selection();
+  if (sel.kind != SelectionKind::Node) return {};
+  const std::string path = partPathOf(app, sel.name);
+  if (partAtPath(app, path)) return path;
+  const auto* s = app.document().scene();
+  const auto* node = s != nullptr ? s->find(path) : nullptr;
+  return node != nullptr && node->kind() == scene::NodeKind::Transform ? path : std::string();
+}
+
+/// Turns the part being dragged from the palette a quarter round (where it lands is snapped
+/// anew), else the selected part or Transform, about the vertical through its origin
+/// (anticlockwise seen from above): one step of undo.
+void turnQuarter(App& app) {
+  if (auto& palette = app.palette(); !palette.dragged.empty()) {
+    palette.drag_turn = std::fmod(palette.drag_turn + 90.0, 360.0);
+    ++palette.generation;
+    app.message = "turned " + palette.dragged + " a quarter round";
+    return;
+  }
+  const std::string path = turnable(app);
+  if (path.empty()) return;
+  std::array<double, 4> now{0, 0, 1, 0};
+  if (const auto at = partAtPath(app, path)) {
+    now = instanceAt(app.document().model(), *at)->rotation;
+  } else {
+    const auto* node = app.document().scene()->find(path);
+    now = std::get<std::array<double, 4>>(node->value(static_cast<std::size_t>(node->type().fieldIndex("rotation"))));
+  }
+  // the quarter turn about the world's z after the rotation it has
+  const core::Vec3 axis{now[0], now[1], now[2]};
+  const core::Quat before = axis.length() > 0 ? core::Quat::axisAngle(axis, core::radians(now[3])) : core::Quat{};
+  const auto [a, angle] = (core::Quat::axisAngle({0, 0, 1}, core::radians(90)) * before).toAxisAngle();
+  const double degrees = std::round(angle * 180.0 / std::numbers::pi * 1e9) / 1e9;
+  const std::array<double, 4> turned = degrees == 0 ? std::array<double, 4>{0, 0, 1, 0}
+                                                    : std::array<double, 4>{a.x, a.y, a.z, degrees};
+  const auto why = app.document().execute(manipulatorCommand(app, path, "rotation", turned, 0));
+  app.message = why.empty() ? "turned " + path + " a quarter round" : why;
+}
 
 bool hasRun(const App& app) { return app.run().session() != nullptr; }
 
@@ -43,6 +91,7 @@ bool actionEnabled(const App& app, ActionId id) {
     case ActionId::Redo: return app.document().history().canRedo();
     case ActionId::Cut:
     case ActionId::Delete: return copyableSelected(app) && editing(app);
+    case ActionId::TurnQuarter: return editing(app) && (!app.palette().dragged.empty() || !turnable(app).empty());
     case ActionId::Copy: return copyableSelected(app);
     case ActionId::SaveAsPart: return app.document().selection().kind == SelectionKind::Node;
     case ActionId::UpdateParts: return editing(app) && !app.part_updates.updates.empty();
@@ -124,6 +173,7 @@ bool actionChecked(const App& app, ActionId id) {
     case ActionId::Copy:
     case ActionId::Paste:
     case ActionId::Delete:
+    case ActionId::TurnQuarter:
     case ActionId::FrameSelection:
     case ActionId::Screenshot:
     case ActionId::Run:
@@ -164,6 +214,7 @@ std::string performAction(App& app, ActionId id) {
     case ActionId::Copy: app.copySelection(); break;
     case ActionId::Paste: app.paste(); break;
     case ActionId::Delete: app.deleteSelection(); break;
+    case ActionId::TurnQuarter: turnQuarter(app); break;
     case ActionId::SaveAsPart: openSaveAsPart(app); break;
     case ActionId::UpdateParts: openPartUpdates(app); break;
     case ActionId::SwapViews: app.swapViews(); break;

@@ -40,6 +40,8 @@ constexpr ActionInfo kActions[] = {
      "Paste a model file's nodes under the selected node (beside it, or at the top), its places and transitions into the net view's page"},
     {A::Delete, "delete", "Delete", M::Edit, "Delete", true, false, false,
      "Delete the selected node, or place or transition with its arcs"},
+    {A::TurnQuarter, "turn-quarter", "Turn a Quarter", M::Edit, "R", false, false, false,
+     "Turn the selected part (or Transform) a quarter round, anticlockwise seen from above, about its origin"},
     {A::UpdateParts, "update-parts", "Update Parts...", M::Edit, "", false, false, true,
      "Take the library's newer versions of the model's parts (what they change in the I/O is listed first)"},
 

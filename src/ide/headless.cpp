@@ -11,6 +11,7 @@
 #include <cmath>
 #include <iostream>
 #include <system_error>
+#include <tuple>
 
 #include "app.h"
 #include "detail/frame_io.h"
@@ -18,6 +19,7 @@
 #include "detail/input_queue.h"
 #include "detail/key_chord.h"
 #include "gdpn/capture/sensor_imager.h"
+#include "gdpn/core/text.h"
 #include "gdpn/platform/headless_context.h"
 #include "gdpn/platform/target.h"
 
@@ -156,6 +158,16 @@ bool perform(App& app, Driver& d, const Action& given, const IdeOptions& o, int 
   if (!a.on.empty()) d.frame();
   if ((!a.on.empty() && !placed(app, a.on, a.x, a.y, error)) || (!a.on2.empty() && !placed(app, a.on2, a.x2, a.y2, error))) {
     std::cerr << a.loc.str() << ": error: " << error << "\n";
+    return false;
+  }
+  // an item the report places out of the window (a field below an inspector's edge) cannot be
+  // reached by a hand: scroll it into sight first
+  for (const auto& [keys, x, y] : {std::tuple{&a.on, a.x, a.y}, std::tuple{&a.on2, a.x2, a.y2}}) {
+    if (keys->empty() || (x >= 0 && y >= 0 && x < w && y < h)) continue;
+    std::string path;
+    for (const auto& k : *keys) path += (path.empty() ? "" : ", ") + k;
+    std::cerr << a.loc.str() << ": error: [" << path << "] stands at (" << core::formatDouble(x) << ", "
+              << core::formatDouble(y) << "), out of the " << w << "x" << h << " window: scroll it into sight\n";
     return false;
   }
   switch (a.kind) {

@@ -103,6 +103,14 @@ core::Pose poseAboutZ(const Vec3& position, double angle) {
   return {position, core::Quat::axisAngle({0, 0, 1}, core::radians(angle))};
 }
 
+Aabb turnedAboutZ(const Aabb& box, double angle) {
+  if (box.empty() || angle == 0) return box;
+  Aabb out = box.transformed(poseAboutZ({0, 0, 0}, angle));
+  // whole nanometres, so that a quarter turn's sines of 1e-17 leave no trace in the file
+  for (Vec3* c : {&out.lo, &out.hi}) *c = {tidy(c->x), tidy(c->y), tidy(c->z)};
+  return out;
+}
+
 std::optional<DropPlace> placeDrop(const DropQuery& q) {
   // a part with no shapes is a point at its origin
   const Aabb box = q.box.empty() ? Aabb{{0, 0, 0}, {0, 0, 0}} : q.box;
@@ -166,9 +174,20 @@ std::optional<DropPlace> placeDrop(const DropQuery& q) {
     const double end = plus ? a.hi.x - box.lo.x : a.lo.x - box.hi.x;
     return placedBy(*best, {end, ac.y - bc.y, 0.0}, plus ? SnapKind::EndPlusX : SnapKind::EndMinusX);
   }
+  const bool plus = d.y >= 0;
+  // a part that reaches over from one side to its origin (a proximity sensor's head on an arm
+  // from a post beside a belt: its box passes its origin by no more than the part's half
+  // width): its origin on the centre line, its post on the side pointed at, turned half round
+  // for the other side
+  const bool hangs_plus = box.lo.y < -ah.y && box.hi.y > kSpan && box.hi.y <= ah.y;
+  const bool hangs_minus = box.hi.y > ah.y && box.lo.y < -kSpan && box.lo.y >= -ah.y;
+  if (hangs_plus || hangs_minus) {
+    const bool other = beyond_y > kEps && plus == hangs_plus;
+    const double across = onGrid(at.x - centreOf(other ? turnedAboutZ(box, 180) : box).x, q.grid);
+    return placedBy(*best, {across, 0.0, 0.0}, SnapKind::CentreLine, other ? 180.0 : 0.0);
+  }
   // side by side, sliding along it on the grid; a part drawn on one side of its origin (a
   // pusher, a diffuse photo-eye) faces the part: on its other side it is turned half round
-  const bool plus = d.y >= 0;
   const bool faces_plus = box.hi.y <= kSpan && box.lo.y < -kSpan;
   const bool faces_minus = box.lo.y >= -kSpan && box.hi.y > kSpan;
   const bool turn = (plus && faces_plus) || (!plus && faces_minus);

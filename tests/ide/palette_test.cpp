@@ -132,15 +132,20 @@ TEST_F(Palette, ADropIsOneStepOfUndoAndTheGhostShowsWhereItLands) {
 
 
 /// The gestures a replay's user input takes: a click, a drag, a turn of the wheel, a key chord,
-/// a typed word, a hold or a release each count one. Actions that are no user input (`set`,
-/// `select`, `fire`, `press`) are refused: ADD_FAILURE names them.
+/// a typed word, a hold or a release each count one; a drag that goes on from one held
+/// (`hold: true`) is the same gesture. Actions that are no user input (`set`, `select`,
+/// `fire`, `press`) are refused: ADD_FAILURE names them.
 int gestures(const YAML::Node& actions) {
   int n = 0;
+  bool held = false;  // a drag's button is down
   for (const auto& a : actions) {
     const auto entry = a.begin();
     const auto key = entry->first.as<std::string>();
     const YAML::Node v = entry->second;
-    if (key == "click" || key == "drag" || key == "wheel" || key == "hold" || key == "release") {
+    if (key == "drag") {
+      n += held ? 0 : 1;
+      held = v["hold"] && v["hold"].as<bool>();
+    } else if (key == "click" || key == "wheel" || key == "hold" || key == "release") {
       ++n;
     } else if (key == "key" || key == "type") {
       std::istringstream words(v.as<std::string>());
@@ -207,6 +212,52 @@ TEST_F(Palette, TheSortingStationIsBuiltFromAnEmptyFileIn18GesturesAndSorts) {
     red_in_bin += box->framePose().position.y > 0.4 ? 1 : 0;
   }
   EXPECT_EQ(red_in_bin, 15);
+}
+
+TEST_F(Palette, TheMaterialLineIsBuiltFromAnEmptyFileIn24GesturesAndSorts) {
+  // the pick-and-place turned a quarter (R) while it is dragged, so that it stands across the
+  // belt; the emitter's mix set in its inspector
+  const auto model = write("material_line.gdpn.yaml", "gdpn: 1\n");
+  const std::string src = GDPN_SOURCE_DIR;
+  const auto actions = YAML::LoadFile(src + "/examples/material/build.yaml");
+  EXPECT_EQ(gestures(actions), 24);
+  size_ = "1600x900";
+  std::ifstream in(src + "/examples/material/build.yaml");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto r = replayOn(model, text, "", 0);
+  ASSERT_FALSE(r.is_null()) << last_.out;
+  EXPECT_FALSE(r["document"]["modified"].get<bool>());
+
+  core::Diagnostics diags;
+  const auto m = model::loadModel(model, diags);
+  ASSERT_TRUE(m) << diags.str();
+  // the pick-and-place across the belt on its middle, turned a quarter; the inductive sensor
+  // on the belt's centre line; the emitter makes metal bases and plastic lids
+  EXPECT_EQ(instance(*m, "pick_and_place1").translation, (std::array<double, 3>{1.5, 0, 0}));
+  EXPECT_EQ(instance(*m, "pick_and_place1").rotation, (std::array<double, 4>{0, 0, 1, 90}));
+  EXPECT_EQ(instance(*m, "inductive_sensor1").translation, (std::array<double, 3>{1.65, 0, 0}));
+  ASSERT_EQ(instance(*m, "emitter1").params.size(), 1U);
+  EXPECT_EQ(instance(*m, "emitter1").params[0].name, "mix");
+  EXPECT_EQ(instance(*m, "emitter1").params[0].value, 1.0);
+  const auto& sort = instance(*m, "pick_and_place1_sort");
+  EXPECT_EQ(sort.part, "pick_and_place1");
+  ASSERT_EQ(sort.uses.size(), 3U);
+  EXPECT_EQ(sort.uses[0].part, "inductive_sensor1");
+  EXPECT_EQ(sort.uses[1].part, "belt_conveyor1");
+  // examples/material is this file, with a description and a summary
+  const auto example = model::loadModel(src + "/examples/material/material_line.gdpn.yaml", diags);
+  ASSERT_TRUE(example) << diags.str();
+  EXPECT_EQ(example->net.pages.at(0).instances, m->net.pages.at(0).instances);
+
+  // 60 s: a base and a lid in turn every 4 s; six bases set down in the bin
+  const auto sim = model::Simulation::create(*m, diags);
+  ASSERT_NE(sim, nullptr) << diags.str();
+  const auto outcome = sim->run({60.0, std::nullopt});
+  EXPECT_EQ(outcome.reason, model::StopReason::Until) << outcome.message;
+  const auto tokens = [&](const std::string& place) { return sim->kernel().placeTokens(sim->net().findPlace(place).value()); };
+  EXPECT_EQ(tokens("main/emitter1/emitted"), 14);
+  EXPECT_EQ(tokens("main/pick_and_place1_sort/taken"), 6);
+  EXPECT_EQ(tokens("main/bin1/entered"), 6);
 }
 
 }  // namespace

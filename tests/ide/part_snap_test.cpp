@@ -100,6 +100,35 @@ TEST(PartSnap, APartDrawnBesideABeltGoesOntoItsCentreLine) {
   expectAt(placeDrop(query(down(0.95, 0.1), kBelt, belt)), 2, 0, 0, SnapKind::EndPlusX, "belt1");
 }
 
+TEST(PartSnap, APartReachingOverABeltFromItsSideGoesOntoItsCentreLine) {
+  const std::vector<PartFootprint> belt{{"belt1", {0, 0, 0}, 0, kBelt}};
+  // a proximity sensor: a post 0.4 m off its origin at -y, an arm reaching to its head over
+  // the origin (its box passes the origin by 16 mm): pointed at over the belt or at the post's
+  // side, its origin on the centre line as drawn; at the other side, turned half round
+  const Aabb sensor{{-0.06, -0.46, 0}, {0.06, 0.016, 1.0}};
+  expectAt(placeDrop(query(down(0.4, 0.02), sensor, belt)), 0.4, 0, 0, SnapKind::CentreLine, "belt1");
+  expectAt(placeDrop(query(down(0.4, -0.5), sensor, belt)), 0.4, 0, 0, SnapKind::CentreLine, "belt1");
+  expectAt(placeDrop(query(down(0.4, 0.5), sensor, belt)), 0.4, 0, 0, SnapKind::CentreLine, "belt1", 180);
+  // one whose box passes its origin by more than the belt's half width is no such part: it
+  // touches the side
+  const Aabb wide{{-0.06, -0.46, 0}, {0.06, 0.3, 1.0}};
+  expectAt(placeDrop(query(down(0.4, -0.5), wide, belt)), 0.4, -0.55, 0, SnapKind::SideMinusY, "belt1");
+}
+
+TEST(PartSnap, APartTurnedWhileDraggedSnapsAsItsTurnedBox) {
+  // a gantry 1.6 m long along its x, 0.4 m wide: turned a quarter, it spans the belt and goes
+  // across it on its centre line
+  const std::vector<PartFootprint> belt{{"belt1", {0, 0, 0}, 0, kBelt}};
+  const Aabb gantry{{-0.4, -0.2, 0}, {1.2, 0.2, 1.8}};
+  const Aabb turned = turnedAboutZ(gantry, 90);
+  EXPECT_NEAR(turned.lo.x, -0.2, 1e-12);
+  EXPECT_NEAR(turned.hi.x, 0.2, 1e-12);
+  EXPECT_NEAR(turned.lo.y, -0.4, 1e-12);
+  EXPECT_NEAR(turned.hi.y, 1.2, 1e-12);
+  expectAt(placeDrop(query(down(0.3, 0), turned, belt)), 0.3, 0, 0, SnapKind::CentreLine, "belt1");
+  EXPECT_EQ(turnedAboutZ(gantry, 0).hi.x, 1.2);
+}
+
 TEST(PartSnap, ThePartNearestTheDropCapturesItTheLargestOfThoseOverlapped) {
   const std::vector<PartFootprint> belts{{"belt1", {0, 0, 0}, 0, kBelt}, {"belt2", {0, 1.2, 0}, 0, kBelt}};
   const Aabb sensor{{-0.05, -0.05, 0}, {0.05, 0.05, 1}};

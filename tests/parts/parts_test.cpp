@@ -1371,7 +1371,7 @@ TEST(Station, ThePusherSortPatternSortsByColourWithItsRolesFilled) {
 }
 
 TEST(MaterialLine, ThePickAndPlaceTakesTheMetalBasesOffTheLidsRideOn) {
-  // examples/material: a metal base and a plastic lid in turn every 5 s; the inductive sensor
+  // examples/material: a metal base and a plastic lid in turn every 4 s; the inductive sensor
   // past the pick-and-place feels the bases, which pick_and_place_sort sets down in the bin
   core::Diagnostics diags;
   auto m = loadModel(std::string(GDPN_SOURCE_DIR) + "/examples/material/material_line.gdpn.yaml", diags);
@@ -1380,16 +1380,20 @@ TEST(MaterialLine, ThePickAndPlaceTakesTheMetalBasesOffTheLidsRideOn) {
   ASSERT_TRUE(sim) << diags.str();
   runFor(*sim, 60.0);
   ASSERT_FALSE(sim->scriptHalt()) << sim->scriptHalt()->message;
-  EXPECT_EQ(io(*sim, "emitter1", "emitted"), 12);
+  // 14 in 60 s (the first at 0): 7 bases, the last one just put down on the belt; 7 lids,
+  // the last two on the belt
+  EXPECT_EQ(io(*sim, "emitter1", "emitted"), 14);
   EXPECT_EQ(tokens(*sim, "main/pick_and_place1_sort/taken"), 6);
   EXPECT_EQ(tokens(*sim, "main/bin1/entered"), 6);
-  int bases_in_bin = 0, lids_on_belt = 0;
+  int bases_in_bin = 0, bases_on_belt = 0, lids_on_belt = 0;
   for (const auto& holder : sim->plant()->find("emitter1/items")->children()) {
     for (const auto& item : holder->children()) {
       const auto p = item->framePose().position;
       if (item->name() == "base") {
-        EXPECT_GT(p.y, 1.0) << item->path() << ": every metal base is in the bin";
-        ++bases_in_bin;
+        (p.y > 0.9 ? bases_in_bin : bases_on_belt) += 1;
+        if (p.y <= 0.9) {
+          EXPECT_LT(std::abs(p.y), 0.35) << item->path() << ": in the bin or on the belt";
+        }
       } else {
         EXPECT_LT(std::abs(p.y), 0.35) << item->path() << ": a lid is never taken off";
         ++lids_on_belt;
@@ -1397,7 +1401,8 @@ TEST(MaterialLine, ThePickAndPlaceTakesTheMetalBasesOffTheLidsRideOn) {
     }
   }
   EXPECT_EQ(bases_in_bin, 6);
-  EXPECT_EQ(lids_on_belt + static_cast<int>(io(*sim, "remover1", "removed")), 6);
+  EXPECT_EQ(bases_on_belt, 1);
+  EXPECT_EQ(lids_on_belt + static_cast<int>(io(*sim, "remover1", "removed")), 7);
 }
 
 TEST(SortingFromParts, FiftyBoxesEachInTheBinOfItsColour) {

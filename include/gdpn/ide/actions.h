@@ -19,7 +19,7 @@ enum class ActionId : std::uint8_t {
   // File
   New, Open, Save, SaveAs, Close, Quit, Restore, Discard, SaveAsPart,
   // Edit
-  Undo, Redo, Cut, Copy, Paste, Delete, UpdateParts,
+  Undo, Redo, Cut, Copy, Paste, Delete, TurnQuarter, UpdateParts,
   // View
   SwapViews, WorldFull, NetFull, MiniView, Palette, Sensors, Joints, Contacts, Shadows, Grid,
   SelectTool, MoveTool, TurnTool, ScaleTool, AimTool, Snap, LocalAxes, FrameSelection, Screenshot, Movie,

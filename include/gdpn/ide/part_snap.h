@@ -90,5 +90,8 @@ struct DropPlace {
 
 /// The pose of a frame at `position` turned `angle` degrees about z.
 [[nodiscard]] core::Pose poseAboutZ(const core::Vec3& position, double angle);
+/// The box holding `box` turned by `angle` degrees about z (the dropped part's box when the
+/// user turns it while dragging).
+[[nodiscard]] core::Aabb turnedAboutZ(const core::Aabb& box, double angle);
 
 }  // namespace gdpn::ide

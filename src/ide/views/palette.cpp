@@ -506,6 +506,7 @@ PaletteGhost paletteGhost(App& app, const OrbitCamera& view, ImVec2 at, float w,
   if (part == nullptr) {
     if (!st.dragged.empty()) ++st.generation;
     st.dragged.clear();
+    st.drag_turn = 0;
     st.ghost.reset();
     st.ghost_scene.reset();
     return {};
@@ -514,11 +515,14 @@ PaletteGhost paletteGhost(App& app, const OrbitCamera& view, ImVec2 at, float w,
   DropQuery q;
   q.ray = view.ray(static_cast<double>(mouse.x - at.x), static_cast<double>(mouse.y - at.y), static_cast<double>(w),
                    static_cast<double>(h));
-  q.box = machine.box;
+  // turned while dragging: it snaps as the turned box it is
+  if (st.dragged != part->name) st.drag_turn = 0;
+  q.box = turnedAboutZ(machine.box, st.drag_turn);
   q.loose = machine.loose;
   q.neighbours = footprints(app);
   q.grid = app.world.snap ? app.world.move_step : 0.0;
-  const auto place = placeDrop(q);
+  auto place = placeDrop(q);
+  if (place) place->angle = std::fmod(place->angle + st.drag_turn, 360.0);
 
   const bool moved = st.dragged != part->name || !st.ghost || !place || place->translation != st.ghost->translation ||
                      place->angle != st.ghost->angle;

@@ -59,6 +59,7 @@ struct PaletteState {
 
   std::string dragged;                 ///< the part being dragged over the world view ("" : none)
   std::optional<DropPlace> ghost;      ///< where it would land now
+  double drag_turn = 0;                ///< degrees the user turned it while dragging (Turn a Quarter), 0 to 270
   std::unique_ptr<scene::Scene> ghost_scene;  ///< the edit scene with the ghost, drawn while dragging
   std::uint64_t ghost_builds = ~std::uint64_t{0};    ///< `builds` when it was made
   std::uint64_t ghost_revision = ~std::uint64_t{0};  ///< the document's scene revision then
