@@ -87,6 +87,9 @@ TEST_F(Shell, EveryActionOfTheTableIsDoneByPressInAStateThatAllowsIt) {
 - select: drop
 - press: delete
 - press: undo
+- select: drop
+- press: turn-quarter
+- press: undo
 - press: swap-views
 - press: swap-views
 - press: world-full
@@ -168,6 +171,18 @@ TEST_F(Shell, PressingAnActionThatCannotBeDoneNowIsAnErrorThatSaysSo) {
   const auto path = model("bin.gdpn.yaml");
   replayOn(path, "- press: undo\n", "", 1);
   EXPECT_NE(last_.out.find("'undo' cannot be done now"), std::string::npos) << last_.out;
+}
+
+TEST_F(Shell, RTurnsTheSelectedTransformAQuarterRoundEachAStepOfUndo) {
+  // R twice: half round (180 degrees about z); Ctrl+Z: a quarter (90); saved as such
+  const auto path = model("bin.gdpn.yaml");
+  const auto r = replayOn(path, "- select: drop\n- key: r\n- key: r\n- key: ctrl+z\n- key: ctrl+s\n");
+  EXPECT_EQ(r["undo"]["depth"], 1);
+  const std::string saved = text(path);
+  EXPECT_NE(saved.find("rotation: [0, 0, 1, 90]"), std::string::npos) << saved;
+  // nothing selected: R does nothing (it cannot be pressed)
+  replayOn(path, "- press: turn-quarter\n", "", 1);
+  EXPECT_NE(last_.out.find("'turn-quarter' cannot be done now"), std::string::npos) << last_.out;
 }
 
 TEST_F(Shell, TheMenusListTheTableAndAChoiceDoesTheAction) {
