@@ -22,6 +22,33 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// The gestures a replay's user input takes: a click, a drag, a turn of the wheel, a key chord,
+/// a typed word, a hold or a release each count one; a drag that goes on from one held
+/// (`hold: true`) is the same gesture. Actions that are no user input (`set`, `select`,
+/// `fire`, `press`) are refused: ADD_FAILURE names them.
+int gestures(const YAML::Node& actions) {
+  int n = 0;
+  bool held = false;  // a drag's button is down
+  for (const auto& a : actions) {
+    const auto entry = a.begin();
+    const auto key = entry->first.as<std::string>();
+    const YAML::Node v = entry->second;
+    if (key == "drag") {
+      n += held ? 0 : 1;
+      held = v["hold"] && v["hold"].as<bool>();
+    } else if (key == "click" || key == "wheel" || key == "hold" || key == "release") {
+      ++n;
+    } else if (key == "key" || key == "type") {
+      std::istringstream words(v.as<std::string>());
+      std::string w;
+      while (words >> w) ++n;
+    } else if (key != "screenshot" && key != "frames") {
+      ADD_FAILURE() << "'" << key << "' is no user input";
+    }
+  }
+  return n;
+}
+
 class Palette : public HeadlessIde {
  protected:
   /// An empty model file in the test's folder, with the test library's part files beside it
@@ -31,6 +58,32 @@ class Palette : public HeadlessIde {
       fs::copy_file(e.path(), dir_ / e.path().filename(), fs::copy_options::overwrite_existing);
     }
     return write("station.gdpn.yaml", "gdpn: 1\n");
+  }
+  /// The model an example's replay `example/build.yaml` (`gestures` of user input) builds in
+  /// `file` from an empty file, at 1600x900; nullopt after a failed expectation. The example's
+  /// model file `example/example_file` is what it saved, with a description and a summary.
+  std::optional<model::Model> builtByReplay(const std::string& example, const std::string& file,
+                                            const std::string& example_file, int gestures_taken) {
+    const auto model = write(file, "gdpn: 1\n");
+    const std::string build = std::string(GDPN_SOURCE_DIR) + "/examples/" + example + "/build.yaml";
+    EXPECT_EQ(gestures(YAML::LoadFile(build)), gestures_taken);
+    EXPECT_LE(gestures(YAML::LoadFile(build)), 25);  // issue 54's bound
+    size_ = "1600x900";
+    std::ifstream in(build);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto r = replayOn(model, text, "", 0);
+    EXPECT_FALSE(r.is_null()) << last_.out;
+    if (r.is_null()) return std::nullopt;
+    EXPECT_FALSE(r["document"]["modified"].get<bool>());
+    core::Diagnostics diags;
+    auto m = model::loadModel(model, diags);
+    EXPECT_TRUE(m) << diags.str();
+    const auto shipped = model::loadModel(std::string(GDPN_SOURCE_DIR) + "/examples/" + example + "/" + example_file, diags);
+    EXPECT_TRUE(shipped) << diags.str();
+    if (m && shipped) {
+      EXPECT_EQ(shipped->net.pages.at(0).instances, m->net.pages.at(0).instances);
+    }
+    return m;
   }
   /// The instance `name` of page main of `m`.
   static const net::InstanceSpec& instance(const model::Model& m, const std::string& name) {
@@ -131,50 +184,11 @@ TEST_F(Palette, ADropIsOneStepOfUndoAndTheGhostShowsWhereItLands) {
 }
 
 
-/// The gestures a replay's user input takes: a click, a drag, a turn of the wheel, a key chord,
-/// a typed word, a hold or a release each count one; a drag that goes on from one held
-/// (`hold: true`) is the same gesture. Actions that are no user input (`set`, `select`,
-/// `fire`, `press`) are refused: ADD_FAILURE names them.
-int gestures(const YAML::Node& actions) {
-  int n = 0;
-  bool held = false;  // a drag's button is down
-  for (const auto& a : actions) {
-    const auto entry = a.begin();
-    const auto key = entry->first.as<std::string>();
-    const YAML::Node v = entry->second;
-    if (key == "drag") {
-      n += held ? 0 : 1;
-      held = v["hold"] && v["hold"].as<bool>();
-    } else if (key == "click" || key == "wheel" || key == "hold" || key == "release") {
-      ++n;
-    } else if (key == "key" || key == "type") {
-      std::istringstream words(v.as<std::string>());
-      std::string w;
-      while (words >> w) ++n;
-    } else if (key != "screenshot" && key != "frames") {
-      ADD_FAILURE() << "'" << key << "' is no user input";
-    }
-  }
-  return n;
-}
 
 TEST_F(Palette, TheSortingStationIsBuiltFromAnEmptyFileIn18GesturesAndSorts) {
   // the repository's parts library only: an empty folder for the user's
-  const auto model = write("station.gdpn.yaml", "gdpn: 1\n");
-  const std::string src = GDPN_SOURCE_DIR;
-  const auto actions = YAML::LoadFile(src + "/examples/station/build.yaml");
-  EXPECT_EQ(gestures(actions), 18);
-  EXPECT_LE(gestures(actions), 25);  // issue 54's bound
-  size_ = "1600x900";
-  std::ifstream in(src + "/examples/station/build.yaml");
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto r = replayOn(model, text, "", 0);
-  ASSERT_FALSE(r.is_null()) << last_.out;
-  EXPECT_FALSE(r["document"]["modified"].get<bool>());
-
-  core::Diagnostics diags;
-  const auto m = model::loadModel(model, diags);
-  ASSERT_TRUE(m) << diags.str();
+  const auto m = builtByReplay("station", "station.gdpn.yaml", "sorting_station.gdpn.yaml", 18);
+  ASSERT_TRUE(m);
   // where the snapping put them: the emitter across the belt, the pusher on its centre line,
   // the photo-eye beside it 0.3 m on, the bin at its +y side, the remover at its end
   EXPECT_EQ(instance(*m, "emitter1").translation, (std::array<double, 3>{0.3, 0, 0}));
@@ -188,13 +202,10 @@ TEST_F(Palette, TheSortingStationIsBuiltFromAnEmptyFileIn18GesturesAndSorts) {
   EXPECT_EQ(sort.uses[0].part, "diffuse_sensor1");
   EXPECT_EQ(sort.uses[1].part, "belt_conveyor1");
   EXPECT_EQ(sort.uses[2].part, "stack_light1");
-  // examples/station is this file, with a description and a summary
-  const auto example = model::loadModel(src + "/examples/station/sorting_station.gdpn.yaml", diags);
-  ASSERT_TRUE(example) << diags.str();
-  EXPECT_EQ(example->net.pages.at(0).instances, m->net.pages.at(0).instances);
 
   // 120 s: a box every 4 s, red and blue in turn; each red one pushed into the bin, each blue
   // one into the remover
+  core::Diagnostics diags;
   const auto sim = model::Simulation::create(*m, diags);
   ASSERT_NE(sim, nullptr) << diags.str();
   const auto outcome = sim->run({120.0, std::nullopt});
@@ -217,20 +228,8 @@ TEST_F(Palette, TheSortingStationIsBuiltFromAnEmptyFileIn18GesturesAndSorts) {
 TEST_F(Palette, TheMaterialLineIsBuiltFromAnEmptyFileIn24GesturesAndSorts) {
   // the pick-and-place turned a quarter (R) while it is dragged, so that it stands across the
   // belt; the emitter's mix set in its inspector
-  const auto model = write("material_line.gdpn.yaml", "gdpn: 1\n");
-  const std::string src = GDPN_SOURCE_DIR;
-  const auto actions = YAML::LoadFile(src + "/examples/material/build.yaml");
-  EXPECT_EQ(gestures(actions), 24);
-  size_ = "1600x900";
-  std::ifstream in(src + "/examples/material/build.yaml");
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto r = replayOn(model, text, "", 0);
-  ASSERT_FALSE(r.is_null()) << last_.out;
-  EXPECT_FALSE(r["document"]["modified"].get<bool>());
-
-  core::Diagnostics diags;
-  const auto m = model::loadModel(model, diags);
-  ASSERT_TRUE(m) << diags.str();
+  const auto m = builtByReplay("material", "material_line.gdpn.yaml", "material_line.gdpn.yaml", 24);
+  ASSERT_TRUE(m);
   // the pick-and-place across the belt on its middle, turned a quarter; the inductive sensor
   // on the belt's centre line; the emitter makes metal bases and plastic lids
   EXPECT_EQ(instance(*m, "pick_and_place1").translation, (std::array<double, 3>{1.5, 0, 0}));
@@ -244,12 +243,9 @@ TEST_F(Palette, TheMaterialLineIsBuiltFromAnEmptyFileIn24GesturesAndSorts) {
   ASSERT_EQ(sort.uses.size(), 3U);
   EXPECT_EQ(sort.uses[0].part, "inductive_sensor1");
   EXPECT_EQ(sort.uses[1].part, "belt_conveyor1");
-  // examples/material is this file, with a description and a summary
-  const auto example = model::loadModel(src + "/examples/material/material_line.gdpn.yaml", diags);
-  ASSERT_TRUE(example) << diags.str();
-  EXPECT_EQ(example->net.pages.at(0).instances, m->net.pages.at(0).instances);
 
   // 60 s: a base and a lid in turn every 4 s; six bases set down in the bin
+  core::Diagnostics diags;
   const auto sim = model::Simulation::create(*m, diags);
   ASSERT_NE(sim, nullptr) << diags.str();
   const auto outcome = sim->run({60.0, std::nullopt});
