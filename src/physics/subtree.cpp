@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "ode_convert.h"
 #include "world_impl.h"
 
 namespace gdpn::physics {
@@ -25,6 +26,54 @@ bool World::Impl::addSubtree(Node& top, core::Diagnostics& diags) {
   // then the joints
   for (const auto& [node, parent] : pending_joints) ok = addJoint(*node, parent, diags) && ok;
   return ok;
+}
+
+void World::Impl::moveSubtree(Node& top) {
+  // each static geometry's place relative to its node (a mesh's box sits on the mesh's
+  // centre), then the nodes' new poses, then the geometries there; ground stays as made, and
+  // what bodies carry goes with the bodies
+  struct Static {
+    const Node* node;
+    dGeomID geom;
+    core::Pose offset;
+    core::Aabb box;  // where it was, then where it is too
+  };
+  std::vector<Static> statics;
+  scene::traverse(top, [&](Node& n, const scene::TraversalState&) {
+    const auto g = geom_of.find(n.handle());
+    if (g == geom_of.end() || dGeomGetBody(g->second) != nullptr) return;
+    const int kind = dGeomGetClass(g->second);
+    if (kind == dPlaneClass || kind == dHeightfieldClass) return;
+    const dReal* p = dGeomGetPosition(g->second);
+    dQuaternion q;
+    dGeomGetQuaternion(g->second, q);
+    statics.push_back({&n, g->second, n.world.inverse() * core::Pose{{p[0], p[1], p[2]}, {q[0], q[1], q[2], q[3]}},
+                       aabbOf(g->second)});
+  }, {top.world, top.world_scale, nullptr}, scene::Templates::Skip);
+  scene::updateTransforms(top);
+  // the broad phase's tree of fixed shapes is made again (once, at the next step)
+  if (!statics.empty()) shapes_changed = true;
+  for (auto& s : statics) {
+    const core::Pose at = s.node->world * s.offset;
+    dGeomSetPosition(s.geom, at.position.x, at.position.y, at.position.z);
+    const dQuaternion q = {at.rotation.w, at.rotation.x, at.rotation.y, at.rotation.z};
+    dGeomSetQuaternion(s.geom, q);
+    s.box.add(aabbOf(s.geom));
+  }
+  // a sleeping body that lay on (or against) a moved shape, or where one went, wakes
+  constexpr double kNear = 0.01;  // m
+  for (dGeomID g : shapes) {
+    const dBodyID b = dGeomGetBody(g);
+    if (b == nullptr || dBodyIsEnabled(b)) continue;
+    const core::Aabb box = aabbOf(g);
+    for (const auto& s : statics) {
+      if (box.lo.x <= s.box.hi.x + kNear && box.hi.x >= s.box.lo.x - kNear && box.lo.y <= s.box.hi.y + kNear &&
+          box.hi.y >= s.box.lo.y - kNear && box.lo.z <= s.box.hi.z + kNear && box.hi.z >= s.box.lo.z - kNear) {
+        dBodyEnable(b);
+        break;
+      }
+    }
+  }
 }
 
 void World::Impl::removeSubtree(const Node& top) {

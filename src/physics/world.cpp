@@ -194,9 +194,9 @@ std::string World::fieldChanged(const scene::Node& node) {
     case NodeKind::RangeFinder: impl_->refreshSensor(node); return {};
     case NodeKind::Material:
     case NodeKind::Conveyor: impl_->refreshSurfaces(node); return {};
+    case NodeKind::Transform: impl_->moveSubtree(const_cast<scene::Node&>(node)); return {};
     // the rest holds as built, or is read every step
     case NodeKind::Group:
-    case NodeKind::Transform:
     case NodeKind::Light:
     case NodeKind::Camera:
     case NodeKind::Fog:

@@ -187,6 +187,9 @@ struct World::Impl {
   bool addSubtree(scene::Node& top, core::Diagnostics& diags);
   /// Takes the bodies, geometries, sensors and joints of the subtree at `top` out.
   void removeSubtree(const scene::Node& top);
+  /// The subtree at `top` was moved (a Transform's placement assigned): its world poses made
+  /// again, and the geometries of its shapes that no body carries moved with them.
+  void moveSubtree(scene::Node& top);
 
   // bodies.cpp
   /// The Body that owns `node` (itself, or the nearest Body above it), or null.

@@ -318,6 +318,38 @@ TEST(Physics, ARegionWhoseScopeOrSizeAScriptChangesFeelsWhatItSaysAfterwards) {
   EXPECT_TRUE(felt(*p.world, *p.scene, eye).empty());
 }
 
+TEST(Physics, AShelfAScriptMovesCarriesWhatFallsOnItThereAndItsSensorGoesWithIt) {
+  // a static shelf (a box 1 m across, its top at 1 m) with a region over it, moved 3 m along
+  // x as a script sets its Transform's translation; a ball dropped over the new place lands on
+  // it (its centre at 1.1 m), and the region there feels the ball
+  Plant p(R"(
+  - World: {}
+  - Transform:
+      name: shelf
+      children:
+        - Transform: {name: board, translation: [0, 0, 0.95], children: [{Cube: {size: [1, 1, 0.1]}}]}
+        - Transform: {name: above, translation: [0, 0, 1.2], children: [{Region: {name: eye, size: [0.8, 0.8, 0.3]}}]}
+  - Transform:
+      name: drop
+      translation: [3, 0, 1.6]
+      children: [{Body: {name: ball, mass: 1, children: [{Sphere: {radius: 0.1}}]}}]
+)");
+  auto& shelf = p.node("shelf");
+  ASSERT_EQ(assignField(shelf, static_cast<std::size_t>(shelf.type().fieldIndex("translation")),
+                        std::array<double, 3>{3, 0, 0}, scene::AngleUnit::Degrees, p.world.get()),
+            "");
+  EXPECT_NEAR(p.node("shelf/board").world.position.x, 3.0, 1e-12) << "the poses below it follow at once";
+  p.run(1.0, 1.0 / 500);
+  EXPECT_NEAR(p.node("drop/ball").framePose().position.z, 1.1, 0.005) << "it lies on the moved shelf";
+  EXPECT_EQ(felt(*p.world, *p.scene, p.node("shelf/above/eye")), std::vector<std::string>{"ball"});
+  // turned a quarter about x, the shelf stands on its edge: the ball falls past it to the floor
+  ASSERT_EQ(assignField(shelf, static_cast<std::size_t>(shelf.type().fieldIndex("rotation")),
+                        std::array<double, 4>{0, 1, 0, 90}, scene::AngleUnit::Degrees, p.world.get()),
+            "");
+  p.run(1.0, 1.0 / 500);
+  EXPECT_LT(p.node("drop/ball").framePose().position.z, 0.5);
+}
+
 TEST(Physics, AnAttachedBoxFollowsTheArmThenFallsWhenDetached) {
   Plant p(R"(
   - World: {auto_disable: false}

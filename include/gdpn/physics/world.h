@@ -56,7 +56,10 @@ class World {
   ///   bodies, where they are now: its positions count from there);
   /// - a Region's or RangeFinder's `scope`, and its volume (`shape`, `size`, `radius`,
   ///   `height`, `length`; a changed volume gets a new geometry);
-  /// - a Conveyor's `direction` (its `speed` is read at every contact anyway);
+  /// - a Transform's placement: the poses below it, and with them the sensors and the shapes
+  ///   no body carries, follow (a script turning a knob); bodies keep the poses the physics
+  ///   gives them;
+  /// - a Conveyor's `direction` and `radius` (its `speed` is read at every contact anyway);
   /// - a Material's `friction` and `bounce`, for the shapes it colours.
   /// Motor fields (vel1, fmax1, vel2, fmax2, target1, servo_time) are read every step and need
   /// no call. Everything else holds as built: a body's mass and damping, a shape's size, a
