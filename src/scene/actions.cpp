@@ -53,8 +53,8 @@ void updateTransforms(Node& root) {
   traverse(root, [](Node& n, const TraversalState& st) {
     n.world = st.pose;
     n.world_scale = st.scale;
-  }, {root.parent() ? root.parent()->world : core::Pose{},
-      root.parent() ? root.parent()->world_scale : core::Vec3{1, 1, 1}, nullptr});
+  }, {root.parent() ? root.parent()->framePose() : core::Pose{},
+      root.parent() ? root.parent()->world_scale.times(root.parent()->localScale()) : core::Vec3{1, 1, 1}, nullptr});
 }
 
 namespace {

@@ -123,6 +123,31 @@ TEST(Actions, TransformsComposeFromTheRoot) {
   EXPECT_NEAR(x_axis.y, 1.0, 1e-12);
 }
 
+TEST(Actions, TransformsMadeAgainBelowANodeAreThoseOfTheWholeScene) {
+  // outer (at (1, 0, 0), turned a quarter, scaled 2) > inner (at (2, 0, 0)) > cube: inner
+  // moved to (3, 0, 0) and made again from inner alone stands where the whole scene's pass
+  // puts it (the parent's own placement and scale counted)
+  Scene s;
+  Node* outer = s.create(T("Transform"), "outer", s.root());
+  outer->setValue(0, std::array<double, 3>{1, 0, 0});
+  outer->setValue(1, std::array<double, 4>{0, 0, 1, 90});
+  outer->setValue(2, std::array<double, 3>{2, 2, 2});
+  Node* inner = s.create(T("Transform"), "inner", *outer);
+  inner->setValue(0, std::array<double, 3>{2, 0, 0});
+  Node* cube = s.create(T("Cube"), "cube", *inner);
+  updateTransforms(s.root());
+  inner->setValue(0, std::array<double, 3>{3, 0, 0});
+  updateTransforms(*inner);
+  // (3, 0, 0) scaled 2, turned a quarter: (0, 6, 0); plus (1, 0, 0)
+  EXPECT_NEAR(cube->world.position.x, 1.0, 1e-12);
+  EXPECT_NEAR(cube->world.position.y, 6.0, 1e-12);
+  EXPECT_NEAR(cube->world_scale.x, 2.0, 1e-12);
+  const core::Pose alone = cube->world;
+  updateTransforms(s.root());
+  EXPECT_NEAR(cube->world.position.x, alone.position.x, 1e-12);
+  EXPECT_NEAR(cube->world.position.y, alone.position.y, 1e-12);
+}
+
 TEST(Actions, ScaleScalesTranslationsAndShapes) {
   Scene s;
   Node* t = s.create(T("Transform"), "t", s.root());

@@ -43,7 +43,8 @@ const Node* materialAt(const Node& node);
 /// children but for template Conveyors.
 const Node* drivingConveyor(const Node& parent);
 
-/// Sets Node::world and Node::world_scale of every node below `root` (itself included).
+/// Sets Node::world and Node::world_scale of every node below `root` (itself included), `root`
+/// placed in its parent's frame as that stands (the parent's own placement included).
 void updateTransforms(Node& root);
 
 /// The size of a primitive volume in its own frame, centred on its origin, in metres along
