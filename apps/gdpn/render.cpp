@@ -53,7 +53,7 @@ int renderNet(const CaptureArgs& a) {
     return 2;
   }
   if (overwritesInput("-o", a.out, {{"the model file", modelFile(a.model)}})) return 2;
-  auto session = open(a.model, a.seed, 0.0, a.params, session::RunRequest{.report = false});
+  auto session = open(a.model, a.seed, 0.0, a.params, session::RunRequest{.report = false, .echo_log = !a.quiet});
   if (!session) return 1;
   std::string error;
   Diagnostics warnings;
@@ -94,7 +94,7 @@ int capture(CaptureArgs a, bool movie) {
               << "named otherwise would mislead)\n";
     return 2;
   }
-  auto session = open(a.model, a.seed, 0.0, a.params, session::RunRequest{.report = false});
+  auto session = open(a.model, a.seed, 0.0, a.params, session::RunRequest{.report = false, .echo_log = !a.quiet});
   if (!session) return 1;
   if (const auto* plant = session->simulation().plant(); plant != nullptr && !a.size_given) {
     if (const auto own = gdpn::capture::cameraSensorSize(*plant, a.options.camera)) {
@@ -103,7 +103,6 @@ int capture(CaptureArgs a, bool movie) {
     }
   }
   model::Simulation* sim = &session->simulation();
-  if (a.quiet) sim->setLogEcho(false);
   std::string error;
   bool ok = false;
   if (!movie) {

@@ -77,6 +77,7 @@ int run(const RunArgs& a) {
   session::RunRequest request;
   request.report = !a.quiet || !a.report.empty() || !a.html.empty();
   request.timeline = !a.html.empty();
+  request.echo_log = !a.quiet;  // sim.log still goes to the trace
   auto sim = open(a.model, a.seed, a.script_timeout, a.params, request);
   if (!sim) return 1;
   if (!a.signals_out.empty() || !a.html.empty()) {
@@ -85,7 +86,6 @@ int run(const RunArgs& a) {
     diags.print(std::cerr);
     if (!ok) return 1;
   }
-  if (a.quiet) sim->simulation().setLogEcho(false);  // sim.log still goes to the trace
   for (const auto& spec : a.breaks) {
     const auto bp = session::parseBreakpoint(spec);
     std::string why = bp ? std::string() : bp.error().message;

@@ -326,10 +326,12 @@ std::shared_ptr<const net::Net> checkModel(const Model& model, core::Diagnostics
 }
 
 std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnostics& diags,
-                                               std::optional<std::uint64_t> seed, double script_timeout_s) {
+                                               std::optional<std::uint64_t> seed, double script_timeout_s,
+                                               bool echo_log) {
   auto net = net::compile(model.net, diags);
   if (!net) return nullptr;
   std::unique_ptr<Simulation> sim(new Simulation());
+  sim->log_echo_ = echo_log;  // before the globals script runs
   sim->model_ = model;
   sim->net_ = std::move(net);
   sim->seed_ = seed.value_or(model.settings.seed);

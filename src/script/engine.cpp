@@ -31,11 +31,19 @@ namespace py = pybind11;
 namespace gdpn::script {
 namespace {
 
+/// Set once the user interrupts (requestInterrupt: Ctrl-C, SIGTERM): only then is a script's
+/// KeyboardInterrupt an interruption; a script that raises one itself has failed.
+std::atomic<bool> interrupt_requested{false};
+
 /// Makes the script running in the main thread raise KeyboardInterrupt soon. Safe from any
 /// thread and from a signal handler; needs Python's SIGINT entry to be default_int_handler.
 void interruptScript() {
+  interrupt_requested.store(true);
   if (Py_IsInitialized()) PyErr_SetInterruptEx(SIGINT);
 }
+
+/// The pending exception is the user's interruption (not a KeyboardInterrupt a script raised).
+bool interruptedByUser() { return interrupt_requested.load() && PyErr_ExceptionMatches(PyExc_KeyboardInterrupt); }
 
 using net::ScriptKind;
 
@@ -546,7 +554,7 @@ struct Engine::Impl : detail::Context {
       message = where + ": error: " + what + " " + lateText();
       return;
     }
-    if (PyErr_ExceptionMatches(PyExc_KeyboardInterrupt)) {
+    if (interruptedByUser()) {
       PyErr_Clear();
       halt = Halt::Interrupted;
       message = where + ": error: " + what + " was interrupted (Ctrl-C)";
@@ -977,7 +985,7 @@ bool Engine::evaluateWith(const std::string& expression, const char* source, std
     error = "it " + impl_->lateText();
     return false;
   }
-  if (PyErr_ExceptionMatches(PyExc_KeyboardInterrupt)) {
+  if (interruptedByUser()) {
     PyErr_Clear();
     error = "it was interrupted (Ctrl-C)";
     return false;

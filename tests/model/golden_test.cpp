@@ -347,6 +347,14 @@ TEST(CliRun, QuietSilencesSimLogButTheTraceKeepsItAndAPictureIsOnlyWrittenAsPng)
   r = gdpn("render examples/factory --at 5 --size 64x36 --quiet -o " + dir.file("b.png"));
   EXPECT_EQ(r.code, 0);
   EXPECT_EQ(r.out, dir.file("b.png") + ": 64x36 at t = 5 s\n");
+  // the globals script's lines too (they are logged before the first step)
+  const std::string model = dir.file("globals.gdpn.yaml");
+  std::ofstream(model) << "gdpn: 1\nsettings: {until: 0.1}\nscripts:\n  globals: |\n    sim.log(\"hello\")\n";
+  r = gdpn("run " + model);
+  EXPECT_NE(r.out.find("[t=0] hello"), std::string::npos) << r.out;
+  r = gdpn("run " + model + " -q");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_EQ(r.out, "");
 }
 
 TEST(CliRun, TheFactorysSummaryFitsAHundredColumns) {

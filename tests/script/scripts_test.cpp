@@ -268,6 +268,31 @@ pages:
       << diags.str();
 }
 
+TEST(ScriptErrors, AKeyboardInterruptAScriptRaisesIsAScriptErrorNotAnInterruption) {
+  // no Ctrl-C came: the script's own KeyboardInterrupt fails the run as any exception does
+  ScriptModel m(R"Y(gdpn: 1
+settings: {dt: 1, until: 10}
+pages:
+  main:
+    places:
+      P: {tokens: 1}
+    transitions:
+      T:
+        pre_fire: |
+          raise KeyboardInterrupt("not the user")
+    arcs:
+      - P -> T
+)Y");
+  core::Diagnostics diags;
+  auto sim = m.open(diags);
+  ASSERT_TRUE(sim) << diags.str();
+  const auto outcome = sim->run({});
+  EXPECT_EQ(outcome.reason, StopReason::ScriptError);
+  EXPECT_EQ(outcome.message.rfind(m.path() + ":10: error: pre_fire of transition 'main/T' at t = 0 s raised an exception", 0), 0u)
+      << outcome.message;
+  EXPECT_NE(outcome.message.find("KeyboardInterrupt: not the user"), std::string::npos) << outcome.message;
+}
+
 TEST(ScriptErrors, AnExceptionStopsTheRunAndNamesConstructKindAndLine) {
   ScriptModel m(R"Y(gdpn: 1
 settings: {dt: 1, until: 10}

@@ -76,9 +76,11 @@ struct CyclePlan {
 class Simulation {
  public:
   /// Compiles `model` and its scripts; returns nullptr with diagnostics on any error. `seed`
-  /// overrides the model's seed; `script_timeout_s` (> 0) stops a script call that runs longer.
+  /// overrides the model's seed; `script_timeout_s` (> 0) stops a script call that runs longer;
+  /// `echo_log` false keeps `sim.log` lines off stderr from the globals script on (`-q`).
   static std::unique_ptr<Simulation> create(const Model& model, core::Diagnostics& diags,
-                                            std::optional<std::uint64_t> seed = {}, double script_timeout_s = 0.0);
+                                            std::optional<std::uint64_t> seed = {}, double script_timeout_s = 0.0,
+                                            bool echo_log = true);
   ~Simulation();
 
   /// Input events (keys, clicks, viewpoint moves) the sensors receive when their time comes.

@@ -18,6 +18,9 @@ struct RunRequest {
   /// Keep every occurrence and change of tokens, up to the timeline's budget (the plots of
   /// `gdpn run --html`); Session::timeline() gives it.
   bool timeline = false;
+  /// Echo each `sim.log` line on stderr (`[t=...] ...`), the globals script's too; off
+  /// (`-q`): the lines go to the trace alone.
+  bool echo_log = true;
   /// Wall-clock time the cycle bounds may take, for the circuits watched and the report,
   /// seconds.
   double cycle_seconds = model::kCycleBoundSeconds;
