@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "gdpn/core/text.h"
 #include "gdpn/model/simulation.h"
 #include "gdpn/net/net.h"
 
@@ -35,8 +36,7 @@ int check(const std::string& arg, double script_timeout_s, const std::vector<std
     std::cerr << diags.errorCount() << (diags.errorCount() == 1 ? " error\n" : " errors\n");
     return 1;
   }
-  // "1 place", "2 places"
-  const auto counted = [](std::size_t n, const char* what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); };
+  using gdpn::core::counted;
   std::cout << *path << ": ok (" << counted(net->places().size(), "place") << ", "
             << counted(net->transitions().size(), "transition") << ", " << counted(net->terms().size(), "arc term")
             << ")\n";

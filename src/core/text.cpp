@@ -52,6 +52,10 @@ std::string didYouMean(std::string_view word, const std::vector<std::string>& ca
   return best.empty() ? std::string() : " (did you mean '" + best + "'?)";
 }
 
+std::string counted(std::size_t n, std::string_view noun) {
+  return std::to_string(n) + " " + std::string(noun) + (n == 1 ? "" : "s");
+}
+
 std::string formatDouble(double value) {
   std::array<char, 32> buf{};
   const auto result = std::to_chars(buf.data(), buf.data() + buf.size(), value);

@@ -150,7 +150,7 @@ std::vector<std::string> untimedCaveats(const net::Net& net) {
     if (list.size() > 3) text += " and " + std::to_string(list.size() - 3) + " more";
     return text;
   };
-  auto count = [](std::size_t n, const std::string& what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); };
+  using core::counted;
   std::vector<std::string> guarded, scripted, handled;
   for (net::TransitionId t{0}; t < index.transitions.size(); ++t) {
     const auto& s = index.transitions[t];
@@ -171,19 +171,19 @@ std::vector<std::string> untimedCaveats(const net::Net& net) {
     predicates += term.predicate;
   }
   if (!guarded.empty()) {
-    out.push_back("the guards of " + count(guarded.size(), "transition") + " (" + names(guarded) +
+    out.push_back("the guards of " + counted(guarded.size(), "transition") + " (" + names(guarded) +
                   ") are taken to hold: the analysis may show firings the run never makes");
   }
   if (conditions != 0 || predicates != 0) {
-    out.push_back(count(conditions, "sensor condition") + " and " + count(predicates, "token predicate") +
+    out.push_back(counted(conditions, "sensor condition") + " and " + counted(predicates, "token predicate") +
                   " on arcs are taken to hold: the plant is not simulated");
   }
   if (!scripted.empty() || !handled.empty() || net.globalsScript() >= 0) {
     std::string what;
-    if (!scripted.empty()) what += "the firing scripts of " + count(scripted.size(), "transition") + " (" + names(scripted) + ")";
+    if (!scripted.empty()) what += "the firing scripts of " + counted(scripted.size(), "transition") + " (" + names(scripted) + ")";
     if (!handled.empty()) {
       what += std::string(what.empty() ? "" : " and ") + "the token and sensor handlers of " +
-              count(handled.size(), "place") + " (" + names(handled) + ")";
+              counted(handled.size(), "place") + " (" + names(handled) + ")";
     }
     if (what.empty()) what = "the model's globals script";
     out.push_back(what + " are not run: tokens they add or remove (sim.set, add, spawn) are not among the markings "
@@ -322,7 +322,7 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
   {
     // the figures wrapped at 100 columns after the path
     std::ostringstream figures;
-    figures << s.states << " states, " << s.edges << " edges" << (s.bounded ? "" : " of a coverability graph") << " ("
+    figures << core::counted(s.states, "state") << ", " << core::counted(s.edges, "edge") << (s.bounded ? "" : " of a coverability graph") << " ("
             << (s.bounded ? "" : "the net is unbounded; ") << net::stopReason(s.stop) << "; the search held "
             << megabytes(s.peak_bytes) << ")";
     out << a.path << ":";

@@ -622,8 +622,7 @@ std::optional<Model> partFromNodes(const std::vector<const scene::Node*>& nodes,
   keepParamsOf(fragment, params);
   net::PageSpec type;
   type.name = name;
-  type.description = "made from " + std::to_string(nodes.size()) + " node" + (nodes.size() == 1 ? "" : "s") +
-                     " of a scene";
+  type.description = "made from " + core::counted(nodes.size(), "node") + " of a scene";
   m.net.page_types.push_back(type);
   m.type_scenes[name] = fragment.scene;
   PartSpec part;

@@ -291,6 +291,12 @@ TEST(CliAnalyze, APnmlNetAndAModelFile) {
   EXPECT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("243 states, 945 edges"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("deadlock:        yes after"), std::string::npos) << r.out;
+  // one edge is one edge
+  const gdpn::testing::ScratchFolder dir("gdpn_one_edge");
+  const std::string one = dir.file("one.gdpn.yaml");
+  std::ofstream(one) << "gdpn: 1\npages:\n  main:\n    places:\n      p: {tokens: 1}\n    transitions:\n      t: {}\n"
+                        "    arcs: [p -> t]\n";
+  EXPECT_NE(gdpn("analyze " + one).out.find(": 2 states, 1 edge ("), std::string::npos);
   // the dead marking itself, each place's bound, the constant places by name
   r = gdpn("analyze examples/basics/figure31");
   EXPECT_NE(r.out.find("  deadlock:        yes after 2 firings: main/T1 main/T2\n"

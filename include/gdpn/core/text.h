@@ -21,6 +21,9 @@ std::string closestMatch(std::string_view word, const std::vector<std::string>& 
 /// " (did you mean 'x'?)" when a close candidate exists, else "".
 std::string didYouMean(std::string_view word, const std::vector<std::string>& candidates);
 
+/// `n` and a regular noun in its number: "1 edge", "2 edges", "0 edges".
+std::string counted(std::size_t n, std::string_view noun);
+
 /// The shortest decimal text that reads back as exactly `value` ("0.1", "4", "1e-05").
 std::string formatDouble(double value);
 

@@ -259,9 +259,9 @@ void tile(PaletteState& st, const model::LibraryPart& part, nlohmann::json& item
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 26);
     ImGui::Text("%s  (%s, version %d)", part.name.c_str(), part.spec.group.c_str(), part.spec.version);
     if (!part.description.empty()) ImGui::TextUnformatted(part.description.c_str());
-    const auto count = [](std::size_t n, const char* one) { return std::to_string(n) + " " + one + (n == 1 ? "" : "s"); };
-    const std::string io = std::to_string(part.spec.io.size()) + " I/O (" + count(inputs, "input") + ", " +
-                           count(outputs, "output") + "), " + count(part.spec.params.size(), "parameter") +
+    using core::counted;
+    const std::string io = std::to_string(part.spec.io.size()) + " I/O (" + counted(inputs, "input") + ", " +
+                           counted(outputs, "output") + "), " + counted(part.spec.params.size(), "parameter") +
                            (part.spec.control.empty() ? "" : "; comes with its control (" + part.spec.control + ")");
     ImGui::TextDisabled("%s", io.c_str());
     ImGui::TextDisabled("Drag it into the world view to place it.");
