@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "gdpn/core/text.h"
 #include "gdpn/net/observer.h"
 #include "gdpn/net/timeline.h"
 
@@ -268,9 +269,25 @@ void Session::stepPlant() {
 
 void Session::push(sensors::InputEvent event) { sim_->push(std::move(event)); }
 
+namespace {
+
+/// "no place 'main/pp' in the net (did you mean 'main/p'?)": the net's places or transitions
+/// as the candidates.
+std::string noSuch(const net::Net& net, bool place, const std::string& name) {
+  std::vector<std::string> names;
+  if (place) {
+    for (const auto p : net.placeIds()) names.push_back(net.placeName(p));
+  } else {
+    for (const auto t : net.transitionIds()) names.push_back(net.transitionName(t));
+  }
+  return std::string("no ") + (place ? "place" : "transition") + " '" + name + "' in the net" + core::didYouMean(name, names);
+}
+
+}  // namespace
+
 std::string Session::fire(const std::string& transition) {
   const auto t = sim_->net().findTransition(transition);
-  if (!t) return "no transition '" + transition + "' in the net";
+  if (!t) return noSuch(sim_->net(), false, transition);
   if (!sim_->started()) sim_->start();
   if (watcher_) watcher_->clear();
   return sim_->kernel().fire(*t);
@@ -282,13 +299,13 @@ std::optional<int> Session::addBreakpoint(Breakpoint breakpoint, std::string& wh
     case BreakKind::Starts:
     case BreakKind::Completes:
       if (!target) {
-        why = "no transition '" + breakpoint.target + "' in the net";
+        why = noSuch(sim_->net(), false, breakpoint.target);
         return std::nullopt;
       }
       break;
     case BreakKind::Marking:
       if (!target) {
-        why = "no place '" + breakpoint.target + "' in the net";
+        why = noSuch(sim_->net(), true, breakpoint.target);
         return std::nullopt;
       }
       break;

@@ -374,6 +374,9 @@ TEST(Session, ABreakpointOnSomethingTheNetLacksIsRefused) {
   EXPECT_EQ(why, "no transition 'main/nope' in the net");
   EXPECT_FALSE(s->addBreakpoint(Breakpoint::marking("buffer", Compare::Equal, 0), why));
   EXPECT_EQ(why, "no place 'buffer' in the net");
+  // a near miss offers the name meant
+  EXPECT_FALSE(s->addBreakpoint(Breakpoint::marking("main/bufer", Compare::GreaterEqual, 2), why));
+  EXPECT_EQ(why, "no place 'main/bufer' in the net (did you mean 'main/buffer'?)");
   EXPECT_FALSE(s->addBreakpoint(Breakpoint::predicate("  "), why));
 }
 
