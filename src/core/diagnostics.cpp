@@ -21,18 +21,24 @@ std::string Diagnostic::str() const {
   return loc.str() + ": " + kind + ": " + message;
 }
 
-void Diagnostics::error(SourceLoc loc, std::string message) {
-  list_.push_back({Severity::Error, std::move(loc), std::move(message)});
-  ++errors_;
+void Diagnostics::add(Diagnostic d) {
+  if (d.severity == Severity::Note) {
+    if (!repeating_) list_.push_back(std::move(d));
+    return;
+  }
+  repeating_ = !said_.insert(d.str()).second;
+  if (repeating_) return;
+  if (d.severity == Severity::Error) ++errors_;
+  list_.push_back(std::move(d));
 }
+
+void Diagnostics::error(SourceLoc loc, std::string message) { add({Severity::Error, std::move(loc), std::move(message)}); }
 
 void Diagnostics::warning(SourceLoc loc, std::string message) {
-  list_.push_back({Severity::Warning, std::move(loc), std::move(message)});
+  add({Severity::Warning, std::move(loc), std::move(message)});
 }
 
-void Diagnostics::note(SourceLoc loc, std::string message) {
-  list_.push_back({Severity::Note, std::move(loc), std::move(message)});
-}
+void Diagnostics::note(SourceLoc loc, std::string message) { add({Severity::Note, std::move(loc), std::move(message)}); }
 
 void Diagnostics::print(std::ostream& out) const {
   for (const auto& d : list_) out << d.str() << '\n';
@@ -45,10 +51,7 @@ std::string Diagnostics::str() const {
 }
 
 void Diagnostics::append(const Diagnostics& other) {
-  for (const auto& d : other.list_) {
-    list_.push_back(d);
-    if (d.severity == Severity::Error) ++errors_;
-  }
+  for (const auto& d : other.list_) add(d);
 }
 
 }  // namespace gdpn::core

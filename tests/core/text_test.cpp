@@ -61,6 +61,27 @@ TEST(Diagnostics, GccForm) {
   EXPECT_EQ(d.errorCount(), 1u);
 }
 
+TEST(Diagnostics, OneSaidAgainAtTheSamePlaceIsSaidOnceWithItsNotes) {
+  // a page type's mistake met again in its second instance: one error, one note; the same
+  // words at another place, and a note of a new error, are kept
+  Diagnostics d;
+  for (int instance = 0; instance < 2; ++instance) {
+    d.error({"m.gdpn.yaml", 7, 7}, "page type 'cell' contains itself (cell -> cell)");
+    d.note({"m.gdpn.yaml", 3, 3}, "cell is here");
+  }
+  d.error({"m.gdpn.yaml", 9, 7}, "page type 'cell' contains itself (cell -> cell)");
+  d.note({"m.gdpn.yaml", 3, 3}, "cell is here");
+  Diagnostics more;
+  more.error({"m.gdpn.yaml", 7, 7}, "page type 'cell' contains itself (cell -> cell)");
+  d.append(more);
+  EXPECT_EQ(d.str(),
+            "m.gdpn.yaml:7:7: error: page type 'cell' contains itself (cell -> cell)\n"
+            "m.gdpn.yaml:3:3: note: cell is here\n"
+            "m.gdpn.yaml:9:7: error: page type 'cell' contains itself (cell -> cell)\n"
+            "m.gdpn.yaml:3:3: note: cell is here\n");
+  EXPECT_EQ(d.errorCount(), 2u);
+}
+
 }  // namespace
 }  // namespace gdpn::core
 

@@ -108,6 +108,29 @@ TEST(BadInput, SemanticErrorsAreAllReportedToo) {
   EXPECT_NE(all.find("sem.gdpn.yaml:9:34: error: arc weight must be at least 1, got 0"), std::string::npos) << all;
 }
 
+TEST(BadInput, APageTypesMistakeIsReportedOnceHoweverManyInstancesItHas) {
+  // a page type that contains itself, instanced twice: one error, at the instance inside it
+  core::Diagnostics diags;
+  auto m = parseModel(R"(gdpn: 1
+page_types:
+  cell:
+    places:
+      p: {}
+    instances:
+      inner: {type: cell}
+pages:
+  main:
+    instances:
+      a: {type: cell}
+      b: {type: cell}
+)", "self.gdpn.yaml", diags);
+  ASSERT_TRUE(m) << diags.str();
+  EXPECT_FALSE(net::compile(m->net, diags));
+  const std::string all = diags.str();
+  EXPECT_EQ(diags.errorCount(), 1u) << all;
+  EXPECT_EQ(all, "self.gdpn.yaml:7:7: error: page type 'cell' contains itself (cell -> cell)\n");
+}
+
 TEST(BadInput, MissingFileIsAnErrorNotACrash) {
   core::Diagnostics diags;
   EXPECT_FALSE(loadModel("/nonexistent/x.gdpn.yaml", diags));

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <iosfwd>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -33,7 +34,9 @@ struct Diagnostic {
   [[nodiscard]] std::string str() const;
 };
 
-/// An ordered list of diagnostics. Loaders append to it and carry on where they can.
+/// An ordered list of diagnostics. Loaders append to it and carry on where they can. A
+/// diagnostic said before (the same severity, place and words: a page type's mistake met again
+/// in its next instance) is said once, its notes with it.
 class Diagnostics {
  public:
   /// Appends an error at `loc`.
@@ -57,7 +60,11 @@ class Diagnostics {
   [[nodiscard]] std::string str() const;
 
  private:
+  /// Appends `d` unless it was said before (then its notes are left out too).
+  void add(Diagnostic d);
   std::vector<Diagnostic> list_;
+  std::set<std::string> said_;   // each error's and warning's text, to say it once
+  bool repeating_ = false;       // the last error or warning was said before: its notes go too
   std::size_t errors_ = 0;
 };
 
