@@ -173,19 +173,23 @@ std::vector<LibraryPart> scanParts(const std::vector<std::string>& path, core::D
       for (const auto& [name, spec] : m->parts) {
         if (!spec.listed) continue;
         // a name met before keeps its first file, unless this one is newer (a model's stale
-        // copy beside the model never hides the library's newer version)
+        // copy beside the model never hides the library's newer version), or as new and it
+        // has the picture the first lacks (a saved model's copy beside the model)
         const auto before = seen.find(name);
-        if (before != seen.end() && out[before->second].spec.version >= spec.version) continue;
+        const fs::path pic = spec.picture.empty() ? fs::path() : file.parent_path() / spec.picture;
+        const bool pictured = !pic.empty() && fs::is_regular_file(pic, ec);
+        if (before != seen.end()) {
+          const LibraryPart& first = out[before->second];
+          if (first.spec.version > spec.version) continue;
+          if (first.spec.version == spec.version && (!first.picture.empty() || !pictured)) continue;
+        }
         LibraryPart p;
         p.name = name;
         p.file = file.string();
         p.spec = spec;
         p.pattern = !spec.controls.empty();
         if (const net::PageSpec* t = pageType(*m, name)) p.description = t->description;
-        if (!spec.picture.empty()) {
-          const fs::path pic = file.parent_path() / spec.picture;
-          if (fs::is_regular_file(pic, ec)) p.picture = pic.string();
-        }
+        if (pictured) p.picture = pic.string();
         if (before != seen.end()) {
           out[before->second] = std::move(p);
         } else {

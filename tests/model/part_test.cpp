@@ -433,6 +433,20 @@ TEST(PartLibrary, TheHigherVersionWinsAndOfEqualOnesTheFirstFolder) {
   EXPECT_EQ(findLibraryPart(scanParts({same.string(), near.string()}, diags), "lamp")->file,
             (same / "lamp.gdpn.yaml").string());
   EXPECT_EQ(std::count_if(parts.begin(), parts.end(), [](const LibraryPart& p) { return p.name == "lamp"; }), 1);
+  // of one version, a copy without its picture (a saved model's, beside the model being
+  // edited) does not hide the file that has it: the palette shows the picture
+  const fs::path pictured = scratch("pictured");
+  std::string with = core::readFile(kLampFile, read).value();
+  const std::string pic = "version: 1, group: Test, picture: lamp.png, control";
+  with.replace(with.find("version: 1, group: Test, control"), std::string("version: 1, group: Test, control").size(), pic);
+  std::ofstream(pictured / "lamp.gdpn.yaml") << with;
+  std::ofstream(pictured / "lamp.png") << "a picture";
+  std::ofstream(same / "lamp.gdpn.yaml") << with;  // the copy, its picture not beside it
+  const auto found = scanParts({same.string(), pictured.string()}, diags);
+  const auto* lamp = findLibraryPart(found, "lamp");
+  ASSERT_TRUE(lamp);
+  EXPECT_EQ(lamp->file, (pictured / "lamp.gdpn.yaml").string());
+  EXPECT_EQ(lamp->picture, (pictured / "lamp.png").string());
 }
 
 TEST(PartLibrary, NodesOfAScenePlacedAsANewPart) {
