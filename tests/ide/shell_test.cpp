@@ -185,6 +185,14 @@ TEST_F(Shell, RTurnsTheSelectedTransformAQuarterRoundEachAStepOfUndo) {
   EXPECT_NE(last_.out.find("'turn-quarter' cannot be done now"), std::string::npos) << last_.out;
 }
 
+TEST_F(Shell, ANewEmptyModelShowsAnEmptyNetNotAnError) {
+  // `gdpn: 1` alone: the net view says how a net starts, and the diagnostics hold nothing
+  const auto path = write("empty.gdpn.yaml", "gdpn: 1\n");
+  const auto r = replayOn(path, "- frames: 1\n");
+  EXPECT_FALSE(r["net_view"].contains("error")) << r["net_view"].dump();
+  EXPECT_EQ(r["net_view"]["empty"], true);
+}
+
 TEST_F(Shell, TheMenusListTheTableAndAChoiceDoesTheAction) {
   const auto path = model("bin.gdpn.yaml");
   auto r = replayOn(path, "- click: [menu, File]\n");

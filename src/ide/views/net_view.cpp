@@ -429,6 +429,13 @@ void drawNetView(App& app, const Rect& at, nlohmann::json& report) {
   ensureLayout(app, s);
   report = {{"path", s.path}, {"page", s.layout.page}, {"places", s.layout.places.size()},
             {"transitions", s.layout.transitions.size()}, {"arcs", s.layout.arcs.size()}};
+  // a model with no page yet (a new, empty file) has an empty net, which is no error
+  if (s.path.empty() && app.document().model().net.pages.empty()) {
+    ImGui::TextDisabled("No net yet: a part dropped into the world view starts page main.");
+    report["empty"] = true;
+    endPanel();
+    return;
+  }
   if (!s.error.empty()) {
     ImGui::TextWrapped("%s", s.error.c_str());
     report["error"] = s.error;
