@@ -118,6 +118,13 @@ TEST_F(Palette, ListsTheLibrarysPartsByGroupWithPicturesAndFindsThemByName) {
   EXPECT_EQ(r["palette"]["listed"], 0);  // no part's words hold both
   r = replayOn(model, "- click: [palette, controls, search]\n- type: cylinder beside\n");
   EXPECT_EQ(r["palette"]["list"][0]["name"], "pusher");
+  // a word a name holds lists the parts so named, not those whose description mentions it
+  // (the pusher's speaks of a belt): only when no name holds it are descriptions searched
+  r = replayOn(model, "- click: [palette, controls, search]\n- type: belt\n");
+  EXPECT_TRUE(r["palette"]["items"].contains("belt_conveyor")) << r["palette"]["list"].dump();
+  for (const auto& item : r["palette"]["list"]) {
+    EXPECT_NE(item["name"].get<std::string>().find("belt"), std::string::npos) << item.dump();
+  }
   // View > Parts Palette hides it, and the tree takes the column
   r = replayOn(model, "- press: palette\n");
   EXPECT_FALSE(r["palette"]["shown"].get<bool>());

@@ -284,9 +284,11 @@ void tile(PaletteState& st, const model::LibraryPart& part, nlohmann::json& item
   ImGui::PopID();
 }
 
-/// True when `part` answers the search `words` (each found in its name, group or description).
-bool matches(const model::LibraryPart& part, const std::string& search) {
-  const std::string hay = lower(part.name + " " + shownName(part.name) + " " + part.spec.group + " " + part.description);
+/// True when `part` answers the search `words`: each found in its name or group, or with
+/// `described`, in its description too.
+bool matches(const model::LibraryPart& part, const std::string& search, bool described) {
+  const std::string hay = lower(part.name + " " + shownName(part.name) + " " + part.spec.group +
+                                (described ? " " + part.description : std::string()));
   std::istringstream words(lower(search));
   std::string w;
   while (words >> w) {
@@ -324,13 +326,16 @@ void drawPalette(App& app, const Rect& at, nlohmann::json& report) {
     for (const auto& f : st.folders) ImGui::BulletText("%s", f.c_str());
     ImGui::PopTextWrapPos();
   }
+  // the parts a search names (by name or group); when it names none, those it describes
+  const bool described = std::none_of(st.parts.begin(), st.parts.end(),
+                                      [&](const model::LibraryPart& p) { return matches(p, st.search, false); });
   std::size_t shown = 0;
   for (std::size_t i = 0; i < st.parts.size();) {
     // a group: its parts that answer the search, in tiles as many to a row as fit
     const std::string group = st.parts[i].spec.group;
     std::vector<const model::LibraryPart*> found;
     for (; i < st.parts.size() && st.parts[i].spec.group == group; ++i) {
-      if (matches(st.parts[i], st.search)) found.push_back(&st.parts[i]);
+      if (matches(st.parts[i], st.search, described)) found.push_back(&st.parts[i]);
     }
     if (found.empty()) continue;
     const std::string heading = (group.empty() ? std::string("Other") : group) + "  (" + std::to_string(found.size()) + ")";
