@@ -120,12 +120,8 @@ std::unique_ptr<PartRun> PartRun::create(Simulation& sim, std::vector<PlacedPart
       b.part = part;
       b.spec = &io;
       std::string why;
-      const bool many = io.node.find('*') != std::string::npos;
       if (io.direction == IoDirection::Input) {
-        if (many) {
-          fail("an input reads one node: a '*' in '" + io.node + "' is for an output that sets several alike");
-          continue;
-        }
+        // (a '*' in an input's path is refused where the file is read)
         const auto probe = nodeProbe(sim, path, io.of, why);
         if (!probe) {
           fail(why);

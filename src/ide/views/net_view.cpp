@@ -431,7 +431,9 @@ void drawNetView(App& app, const Rect& at, nlohmann::json& report) {
             {"transitions", s.layout.transitions.size()}, {"arcs", s.layout.arcs.size()}};
   // a model with no page yet (a new, empty file) has an empty net, which is no error
   if (s.path.empty() && app.document().model().net.pages.empty()) {
+    ImGui::PushTextWrapPos(0);
     ImGui::TextDisabled("No net yet: a part dropped into the world view starts page main.");
+    ImGui::PopTextWrapPos();
     report["empty"] = true;
     endPanel();
     return;

@@ -384,11 +384,16 @@ void drawDropOffer(App& app, nlohmann::json& report) {
   std::string chosen;  // the pattern clicked ("": none yet)
   const OfferedPattern* first = nullptr;  // the first that can be added: Enter's
   const float wrap = ImGui::GetFontSize() * 34;
+  // the buttons as wide as the longest pattern's name (pick_and_place_control), and at least 9 ems
+  float button = ImGui::GetFontSize() * 9;
+  for (const auto& o : offer.patterns) {
+    button = std::max(button, ImGui::CalcTextSize(o.name.c_str()).x + ImGui::GetStyle().FramePadding.x * 2);
+  }
   for (const auto& o : offer.patterns) {
     if (first == nullptr && o.unfilled.empty()) first = &o;
     ImGui::BeginDisabled(!o.unfilled.empty());
     if (&o == first) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-    if (ImGui::Button(o.name.c_str(), {ImGui::GetFontSize() * 9, 0})) chosen = o.name;
+    if (ImGui::Button(o.name.c_str(), {button, 0})) chosen = o.name;
     if (&o == first) ImGui::PopStyleColor();
     ImGui::EndDisabled();
     noteItem(o.name, buttons);
@@ -402,7 +407,7 @@ void drawDropOffer(App& app, nlohmann::json& report) {
     ImGui::PopTextWrapPos();
     patterns.push_back({{"name", o.name}, {"uses", o.uses}, {"unfilled", o.unfilled}});
   }
-  const bool no = ImGui::Button("No", {ImGui::GetFontSize() * 9, 0});
+  const bool no = ImGui::Button("No", {button, 0});
   noteItem("no", buttons);
   if (first != nullptr) {
     ImGui::SameLine();
