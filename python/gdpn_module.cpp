@@ -65,7 +65,7 @@ session::AnalysisRequest checkedAnalysisRequest(std::uint64_t max_states, double
 
 class Model {
  public:
-  Model(std::string path, std::optional<std::uint64_t> seed, double script_timeout, const py::dict& params,
+  Model(std::string path, std::optional<std::uint64_t> seed, script::ScriptLimits limits, const py::dict& params,
         const std::vector<std::string>& signals)
       : path_(std::move(path)) {
     for (const auto& arg : signals) {
@@ -95,7 +95,7 @@ class Model {
     }
     auto m = model::loadModel(path_, diags, overrides);
     if (!m) raiseModelError(diags);
-    session_ = session::Session::create(std::move(*m), diags, {seed, script_timeout, capture::makeSensorImager, {}});
+    session_ = session::Session::create(std::move(*m), diags, {seed, limits, capture::makeSensorImager, {}});
     if (!session_) raiseModelError(diags);
     session_->traceTo(trace_);
     recordSignals();
@@ -601,15 +601,18 @@ class FireError(ValueError):
 
   m.def(
       "load",
-      [](const std::string& path, std::optional<std::uint64_t> seed, double script_timeout, const py::dict& params,
+      [](const std::string& path, std::optional<std::uint64_t> seed, double script_timeout, double script_memory,
+         const py::dict& params,
          const std::vector<std::string>& signals) {
-        return std::make_unique<Model>(path, seed, script_timeout, params, signals);
+        return std::make_unique<Model>(path, seed, script::ScriptLimits{script_timeout, script_memory}, params, signals);
       },
-      py::arg("path"), py::arg("seed") = py::none(), py::arg("script_timeout") = 0.0, py::arg("params") = py::dict(),
+      py::arg("path"), py::arg("seed") = py::none(), py::arg("script_timeout") = script::kDefaultScriptTimeout,
+      py::arg("script_memory") = script::kDefaultScriptMemory, py::arg("params") = py::dict(),
       py::arg("signals") = std::vector<std::string>{},
       "Loads a model file (or a folder holding one), its parameters set from `params` ({name: number}) where "
       "given; `signals` adds signals to record (\"place:NAME\", \"node:PATH.QUANTITY\", \"python:EXPR\", sampled "
-      "every step) to the model's own; raises gdpn.ModelError on mistakes");
+      "every step) to the model's own; `script_timeout` (seconds, 0: none) stops a script call, the globals "
+      "script included, that runs longer, `script_memory` (MiB, 0: none) one that makes Python hold more; raises gdpn.ModelError on mistakes");
 
   m.def(
       "analysis_limits",

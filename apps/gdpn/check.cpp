@@ -17,11 +17,11 @@ using gdpn::core::Diagnostics;
 /// `gdpn check`'s arguments.
 struct CheckArgs {
   std::string model;                ///< the model file or folder
-  double script_timeout = 0.0;      ///< --script-timeout, seconds (0: none)
+  gdpn::script::ScriptLimits limits;  ///< --script-timeout, --script-memory
   std::vector<std::string> params;  ///< --param NAME=VALUE
 };
 
-int check(const std::string& arg, double script_timeout_s, const std::vector<std::string>& params) {
+int check(const std::string& arg, gdpn::script::ScriptLimits limits, const std::vector<std::string>& params) {
   Diagnostics diags;
   auto path = model::resolveModelPath(arg, diags);
   std::optional<model::Model> m;
@@ -30,7 +30,7 @@ int check(const std::string& arg, double script_timeout_s, const std::vector<std
   // scripts, the plant and the signals are checked too: scripts compiled, their files and
   // functions found, globals run (under the script timeout); bodies, joints and mesh files made
   // ready; what each signal names found
-  if (m) net = model::checkModel(*m, diags, script_timeout_s);
+  if (m) net = model::checkModel(*m, diags, limits);
   diags.print(std::cerr);
   if (diags.hasErrors()) {
     std::cerr << diags.errorCount() << (diags.errorCount() == 1 ? " error\n" : " errors\n");
@@ -49,11 +49,9 @@ Subcommand addCheck(CLI::App& app) {
   auto args = std::make_shared<CheckArgs>();
   auto* check_cmd = app.add_subcommand("check", "Check a model and print its diagnostics; exit 0 when clean");
   check_cmd->add_option("MODEL", args->model, "a .gdpn.yaml file, or a folder holding exactly one")->required();
-  check_cmd->add_option("--script-timeout", args->script_timeout,
-                        "report an error when the globals script (or a script file's top level) runs longer than SECONDS")
-      ->check(CLI::PositiveNumber);
+  addScriptLimitOptions(check_cmd, args->limits);
   addParamOption(check_cmd, args->params);
-  return {check_cmd, [args] { return check(args->model, args->script_timeout, args->params); }};
+  return {check_cmd, [args] { return check(args->model, args->limits, args->params); }};
 }
 
 }  // namespace gdpn::app

@@ -49,6 +49,17 @@ std::vector<model::ParamOverride> paramOverrides(const std::vector<std::string>&
   return out;
 }
 
+void addScriptLimitOptions(CLI::App* cmd, script::ScriptLimits& out) {
+  cmd->add_option("--script-timeout", out.timeout_s,
+                  "stop when one script call (the globals script included) runs longer than SECONDS; 0: never")
+      ->default_val(script::kDefaultScriptTimeout)
+      ->check(number(0.0, 1e6, "seconds from 0 (never) to 1e6"));
+  cmd->add_option("--script-memory", out.memory_mib,
+                  "stop when the scripts' Python holds more than MIB mebibytes (NumPy's arrays not counted); 0: no bound")
+      ->default_val(script::kDefaultScriptMemory)
+      ->check(number(0.0, 1e9, "mebibytes from 0 (no bound) to 1e9"));
+}
+
 void addParamOption(CLI::App* cmd, std::vector<std::string>& out) {
   cmd->add_option("--param", out, "set a parameter of the model's params section: NAME=VALUE (repeatable)")
       ->allow_extra_args(false)
@@ -60,13 +71,13 @@ void addParamOption(CLI::App* cmd, std::vector<std::string>& out) {
 }
 
 std::unique_ptr<session::Session> open(const std::string& arg, std::optional<std::uint64_t> seed,
-                                       double script_timeout_s, const std::vector<std::string>& params,
+                                       gdpn::script::ScriptLimits limits, const std::vector<std::string>& params,
                                        session::RunRequest run) {
   Diagnostics diags;
   std::unique_ptr<gdpn::session::Session> sim;
   if (auto path = model::resolveModelPath(arg, diags)) {
     if (auto m = model::loadModel(*path, diags, paramOverrides(params))) {
-      sim = gdpn::session::Session::create(std::move(*m), diags, {seed, script_timeout_s, gdpn::capture::makeSensorImager, run});
+      sim = gdpn::session::Session::create(std::move(*m), diags, {seed, limits, gdpn::capture::makeSensorImager, run});
     }
   }
   diags.print(std::cerr);

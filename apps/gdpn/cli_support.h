@@ -56,10 +56,15 @@ std::vector<model::ParamOverride> paramOverrides(const std::vector<std::string>&
 /// `--param NAME=VALUE` on `cmd` (repeatable), into `out`.
 void addParamOption(CLI::App* cmd, std::vector<std::string>& out);
 
+/// `--script-timeout SECONDS` and `--script-memory MIB` on `cmd` into `out` (which holds the
+/// defaults): a script call, the globals script included, that runs longer, or Python holding
+/// more, stops the command with a located error; 0: no bound.
+void addScriptLimitOptions(CLI::App* cmd, script::ScriptLimits& out);
+
 /// Loads and compiles MODEL (file or folder) into a session whose runs collect what `run`
 /// asks, printing diagnostics; nullptr on error.
 std::unique_ptr<session::Session> open(const std::string& arg, std::optional<std::uint64_t> seed,
-                                       double script_timeout_s, const std::vector<std::string>& params,
+                                       script::ScriptLimits limits, const std::vector<std::string>& params,
                                        session::RunRequest run = {});
 
 /// The --size argument as width and height in pixels; nullopt after saying what is wrong.

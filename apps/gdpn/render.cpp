@@ -34,6 +34,7 @@ struct CaptureArgs {
   bool size_given = false;  // --size was on the command line
   bool quiet = false;       // no sim.log lines, no progress
   std::vector<std::string> params;  // --param NAME=VALUE
+  gdpn::script::ScriptLimits limits;  // --script-timeout, --script-memory
 };
 
 /// `gdpn render --net`: the net of one page with its marking at --at (the initial marking
@@ -53,7 +54,7 @@ int renderNet(const CaptureArgs& a) {
     return 2;
   }
   if (overwritesInput("-o", a.out, {{"the model file", modelFile(a.model)}})) return 2;
-  auto session = open(a.model, a.seed, 0.0, a.params, session::RunRequest{.report = false, .echo_log = !a.quiet});
+  auto session = open(a.model, a.seed, a.limits, a.params, session::RunRequest{.report = false, .echo_log = !a.quiet});
   if (!session) return 1;
   std::string error;
   Diagnostics warnings;
@@ -94,7 +95,7 @@ int capture(CaptureArgs a, bool movie) {
               << "named otherwise would mislead)\n";
     return 2;
   }
-  auto session = open(a.model, a.seed, 0.0, a.params, session::RunRequest{.report = false, .echo_log = !a.quiet});
+  auto session = open(a.model, a.seed, a.limits, a.params, session::RunRequest{.report = false, .echo_log = !a.quiet});
   if (!session) return 1;
   if (const auto* plant = session->simulation().plant(); plant != nullptr && !a.size_given) {
     if (const auto own = gdpn::capture::cameraSensorSize(*plant, a.options.camera)) {
@@ -145,6 +146,7 @@ void addLook(CLI::App* cmd, CaptureArgs& args) {
   cmd->add_option("-o,--output", args.out, "the file to write")->required();
   cmd->add_flag("--quiet,-q", args.quiet, "no sim.log lines and no progress on stderr");
   addParamOption(cmd, args.params);
+  addScriptLimitOptions(cmd, args.limits);
 }
 
 /// `gdpn render`: the plant's options and the net's do not mix; then the picture of the one

@@ -31,7 +31,7 @@ struct RunArgs {
   std::optional<std::uint64_t> seed;
   std::string trace;
   std::string report;
-  double script_timeout = 0.0;
+  gdpn::script::ScriptLimits limits;  // --script-timeout, --script-memory
   std::string input;
   std::vector<std::string> breaks;
   std::string replay;  // a witness file to play
@@ -78,7 +78,7 @@ int run(const RunArgs& a) {
   request.report = !a.quiet || !a.report.empty() || !a.html.empty();
   request.timeline = !a.html.empty();
   request.echo_log = !a.quiet;  // sim.log still goes to the trace
-  auto sim = open(a.model, a.seed, a.script_timeout, a.params, request);
+  auto sim = open(a.model, a.seed, a.limits, a.params, request);
   if (!sim) return 1;
   if (!a.signals_out.empty() || !a.html.empty()) {
     Diagnostics diags;
@@ -201,9 +201,7 @@ Subcommand addRun(CLI::App& app) {
       ->check(seedCheck());
   run_cmd->add_option("--trace", args->trace, "write every event as JSON Lines to FILE.jsonl");
   run_cmd->add_option("--report", args->report, "write the figures as JSON to FILE.json");
-  run_cmd->add_option("--script-timeout", args->script_timeout,
-                      "stop the run when one script call runs longer than SECONDS")
-      ->check(number(0.0, 1e6, "seconds above 0, at most 1e6", true));
+  addScriptLimitOptions(run_cmd, args->limits);
   run_cmd->add_option("--input", args->input,
                       "input events for keyboard and mouse sensors: a YAML list of {t, key | click | viewpoint}");
   run_cmd->add_option("--break", args->breaks,

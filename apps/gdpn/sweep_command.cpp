@@ -82,7 +82,7 @@ int sweep(const SweepArgs& a) {
   const auto path = model::resolveModelPath(a.model, diags);
   std::optional<model::Model> m;
   if (path) m = model::loadModel(*path, diags);
-  if (m) model::checkModel(*m, diags, 0.0);
+  if (m) model::checkModel(*m, diags);
   diags.print(std::cerr);
   if (diags.hasErrors()) return 1;
   // no output over the model, and no two outputs in one file

@@ -170,7 +170,52 @@ class ModelReader {
     } else {
       script.indent = static_cast<int>(col);
     }
+    if (first != '|') script.lines = codeLines(script.code, script.loc, first != '>');
     return script;
+  }
+
+  /// The model file's line of each line of `code`, a scalar whose lines do not follow the
+  /// file's one for one (a folded `>` block joins lines and drops blank ones; a quoted string
+  /// may hold `\n`), found by reading on from `start`: each code line's first characters (up to
+  /// a quote or backslash, which a quoted string writes otherwise) stand on the file line it
+  /// came from, the next line of the file for a folded block (`on_same_line` false), or further
+  /// along the same line for a quoted one. A line not found keeps the line before's. Empty
+  /// when the lines follow one another from `start.line`.
+  std::vector<int> codeLines(const std::string& code, SourceLoc start, bool on_same_line) const {
+    std::vector<int> lines;
+    if (code.find('\n') == std::string::npos || code.find('\n') + 1 == code.size()) return lines;
+    int line = start.line;
+    std::size_t col = start.column > 0 ? static_cast<std::size_t>(start.column - 1) : 0;
+    std::string_view text = sourceLine(line);
+    const int total = static_cast<int>(std::count(text_.begin(), text_.end(), '\n')) + 1;
+    bool consecutive = true;
+    std::size_t begin = 0;
+    while (begin < code.size()) {
+      const std::size_t end = std::min(code.find('\n', begin), code.size());
+      std::string_view key = std::string_view(code).substr(begin, end - begin);
+      const std::size_t lead = key.find_first_not_of(" \t");
+      key.remove_prefix(lead == std::string_view::npos ? key.size() : lead);
+      key = key.substr(0, std::min({key.find_first_of("\"'\\"), std::size_t{24}}));
+      while (!key.empty() && key.back() == ' ') key.remove_suffix(1);
+      if (!key.empty()) {
+        // search this line from `col` (a quoted string), else the lines after it
+        for (int l = (on_same_line || lines.empty()) ? line : line + 1; l <= total && l < line + 1000; ++l) {
+          const std::string_view t = l == line ? text : sourceLine(l);
+          const std::size_t from = l == line ? std::min(col, t.size()) : 0;
+          if (const auto at = t.find(key, from); at != std::string_view::npos) {
+            line = l;
+            text = t;
+            col = at + key.size();
+            break;
+          }
+        }
+      }
+      if (line != start.line + static_cast<int>(lines.size())) consecutive = false;
+      lines.push_back(line);
+      begin = end + 1;
+    }
+    if (consecutive) lines.clear();
+    return lines;
   }
 
   /// Per-slot scripts: a script (for slot a0, or for `default_slot`) or a map slot -> script.

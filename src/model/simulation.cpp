@@ -305,12 +305,12 @@ class InstancePlacer {
 
 }  // namespace
 
-std::shared_ptr<const net::Net> checkModel(const Model& model, core::Diagnostics& diags, double script_timeout_s) {
+std::shared_ptr<const net::Net> checkModel(const Model& model, core::Diagnostics& diags, script::ScriptLimits limits) {
   auto net = net::compile(model.net, diags);
   if (!net || !(net->scripted() || model.scene || !model.signals.empty() || !model.io.empty())) return net;
   // the simulation compiles the net again: what that says twice is said once
   core::Diagnostics more;
-  auto sim = Simulation::create(model, more, std::nullopt, script_timeout_s);
+  auto sim = Simulation::create(model, more, std::nullopt, limits);
   if (sim && !model.signals.empty()) sim->recordSignals({}, more);
   if (sim && !model.io.empty()) IoMap::create(*sim, model.io, more);
   std::set<std::string> said;
@@ -326,7 +326,7 @@ std::shared_ptr<const net::Net> checkModel(const Model& model, core::Diagnostics
 }
 
 std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnostics& diags,
-                                               std::optional<std::uint64_t> seed, double script_timeout_s,
+                                               std::optional<std::uint64_t> seed, script::ScriptLimits limits,
                                                bool echo_log) {
   auto net = net::compile(model.net, diags);
   if (!net) return nullptr;
@@ -404,7 +404,7 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
   sim->kernel_ = std::make_unique<net::Kernel>(sim->net_, settings);
   sim->stats_ = std::make_unique<net::StatsCollector>(*sim->net_);
   sim->kernel_->addObserver(sim->stats_.get());
-  sim->script_timeout_s_ = script_timeout_s;
+  sim->limits_ = limits;
   if (sim->net_->scripted() && !sim->makeEngine(diags)) return nullptr;
   return sim;
 }
@@ -468,7 +468,8 @@ bool Simulation::makeEngine(core::Diagnostics& diags) {
     };
   }
   script::EngineOptions options;
-  options.timeout_s = script_timeout_s_;
+  options.timeout_s = limits_.timeout_s;
+  options.memory_mib = limits_.memory_mib;
   options.angles = model_.settings.angles;
   for (const auto& p : model_.params) options.params.push_back({p.name, p.value, p.integer});
   engine_ = script::Engine::create(*net_, *kernel_, model_.path, options,

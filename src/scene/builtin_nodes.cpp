@@ -10,10 +10,15 @@ namespace {
 using V3 = std::array<double, 3>;
 using V4 = std::array<double, 4>;
 
+/// A number's bounds unless its field says otherwise (a script setting a motor's speed to
+/// 1e300 is refused at the assignment, naming the field, rather than ending the run a step
+/// later with a body run away).
+constexpr double kHuge = kPlantLimit;
+
 /// The description of field `id`: its id binds the description to the enum in fields.h.
 template <FieldId F>
 FieldDesc f(F id, std::string name, FieldKind kind, FieldValue initial, std::string unit, std::string doc,
-            double min = -1e300, double max = 1e300) {
+            double min = -kHuge, double max = kHuge) {
   FieldDesc d;
   d.owner = field::ownerOf(id);
   d.index = static_cast<std::uint8_t>(id);
@@ -157,14 +162,14 @@ void registerBuiltinNodes(TypeRegistry& r) {
               f(field::Joint::Anchor, "anchor", K::Vec3, V3{0, 0, 0}, "m", "the joint's point, in the joint's frame"),
               f(field::Joint::Axis1, "axis1", K::Vec3, V3{0, 0, 1}, "", "first axis"),
               f(field::Joint::Axis2, "axis2", K::Vec3, V3{1, 0, 0}, "", "second axis (universal, hinge2)"),
-              f(field::Joint::Lo1, "lo1", K::Float, -kInf, "deg or m", "lower limit on axis 1"),
-              f(field::Joint::Hi1, "hi1", K::Float, kInf, "deg or m", "upper limit on axis 1"),
-              f(field::Joint::Lo2, "lo2", K::Float, -kInf, "deg", "lower limit on axis 2"),
-              f(field::Joint::Hi2, "hi2", K::Float, kInf, "deg", "upper limit on axis 2"),
+              f(field::Joint::Lo1, "lo1", K::Float, -kInf, "deg or m", "lower limit on axis 1", -kInf, kInf),
+              f(field::Joint::Hi1, "hi1", K::Float, kInf, "deg or m", "upper limit on axis 1", -kInf, kInf),
+              f(field::Joint::Lo2, "lo2", K::Float, -kInf, "deg", "lower limit on axis 2", -kInf, kInf),
+              f(field::Joint::Hi2, "hi2", K::Float, kInf, "deg", "upper limit on axis 2", -kInf, kInf),
               f(field::Joint::Vel1, "vel1", K::Float, 0.0, "deg/s or m/s", "motor target velocity on axis 1"),
-              f(field::Joint::Fmax1, "fmax1", K::Float, 0.0, "N m or N", "motor's greatest force on axis 1 (0: no motor)", 0, kInf),
+              f(field::Joint::Fmax1, "fmax1", K::Float, 0.0, "N m or N", "motor's greatest force on axis 1 (0: no motor)", 0, kHuge),
               f(field::Joint::Vel2, "vel2", K::Float, 0.0, "deg/s", "motor target velocity on axis 2"),
-              f(field::Joint::Fmax2, "fmax2", K::Float, 0.0, "N m", "motor's greatest force on axis 2", 0, kInf),
+              f(field::Joint::Fmax2, "fmax2", K::Float, 0.0, "N m", "motor's greatest force on axis 2", 0, kHuge),
               choice(field::Joint::Control, "control", {"velocity", "position"},
                      "what the motor on axis 1 follows: vel1, or target1 (at most |vel1| fast when vel1 is not 0)"),
               f(field::Joint::Target1, "target1", K::Float, 0.0, "deg or m", "position the motor drives axis 1 to, in position control"),

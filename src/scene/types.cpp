@@ -27,7 +27,7 @@ const char* fieldKindName(FieldKind kind) {
 std::string FieldDesc::rangeError(double x) const {
   if (!std::isfinite(x)) return "'" + name + "' must be a finite number, got " + core::formatDouble(x);
   if (x >= min && x <= max) return {};
-  const bool low = min > -1e299, high = max < 1e299;
+  const bool low = boundedBelow() || x < min, high = boundedAbove() || x > max;
   std::string rule = low && high ? "must lie in [" + core::formatDouble(min) + ", " + core::formatDouble(max) + "]"
                      : low       ? "must be at least " + core::formatDouble(min)
                                  : "must be at most " + core::formatDouble(max);

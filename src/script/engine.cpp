@@ -24,6 +24,7 @@
 
 #include "gdpn/core/text.h"
 #include "gdpn/scene/actions.h"
+#include "memory_limit.h"
 #include "views.h"
 
 namespace py = pybind11;
@@ -123,10 +124,16 @@ class Watchdog {
   Watchdog(const Watchdog&) = delete;
   Watchdog& operator=(const Watchdog&) = delete;
 
+  /// While a call runs, Python may hold at most `bytes` (as detail::memoryHeld() counts; 0:
+  /// no bound): an allocation past it raises MemoryError in the script.
+  void capMemory(std::int64_t bytes) { memory_cap_ = bytes; }
+
   /// A script call starts in this thread (under the GIL). A call made from inside another
   /// (a hook run by what a script did) is part of it: the outer call's clock runs on.
   void enter() {
-    if (!thread_.joinable() || depth_++ > 0) return;
+    if (depth_++ > 0) return;
+    if (memory_cap_ != 0) detail::setMemoryCap(memory_cap_);
+    if (!thread_.joinable()) return;
     const unsigned long ident = PyThread_get_thread_ident();
     {
       std::lock_guard<std::mutex> lock(call_mutex_);
@@ -141,7 +148,9 @@ class Watchdog {
   }
   /// The call has returned (under the GIL): the stop's trace function goes.
   void leave() {
-    if (!thread_.joinable() || --depth_ > 0) return;
+    if (--depth_ > 0) return;
+    if (memory_cap_ != 0) detail::setMemoryCap(0);
+    if (!thread_.joinable()) return;
     {
       std::lock_guard<std::mutex> lock(call_mutex_);
       in_call_.store(false, std::memory_order_release);
@@ -228,6 +237,7 @@ class Watchdog {
   // the script's thread only
   Watchdog* previous_ = nullptr;
   int depth_ = 0;  // calls inside calls
+  std::int64_t memory_cap_ = 0;  // bytes Python may hold during a call (0: no bound)
   bool tracing_ = false;
   Py_tracefunc saved_trace_ = nullptr;
   PyObject* saved_trace_obj_ = nullptr;
@@ -394,6 +404,50 @@ struct Engine::Impl : detail::Context {
     return std::string(static_cast<std::size_t>(pad), '\n') + s.code;
   }
 
+  /// Compiles inline code whose lines stand on the model file's lines `s.lines` (a folded
+  /// block, a quoted string: net::ScriptSpec::lines): parsed, each node moved to its file line,
+  /// compiled; a syntax error is placed on the file's line too. A new reference, or null with
+  /// the error pending.
+  PyObject* compileMapped(const net::ScriptSpec& s, bool expression) const {
+    // made once and kept for the process, as the interpreter is (never destroyed: after the
+    // interpreter, a Python object cannot be)
+    static const py::object& compile_mapped = *new py::object([] {
+      py::dict scope;
+      py::exec(R"(
+import ast
+
+def compile_mapped(code, filename, mode, lines):
+    def at(n):
+        return lines[min(max(n, 1), len(lines)) - 1]
+    try:
+        tree = ast.parse(code, filename, mode)
+    except SyntaxError as e:
+        if e.lineno:
+            e.lineno = at(e.lineno)
+        if getattr(e, "end_lineno", None):
+            e.end_lineno = at(e.end_lineno)
+        raise
+    for node in ast.walk(tree):
+        if getattr(node, "lineno", None):
+            node.lineno = at(node.lineno)
+        if getattr(node, "end_lineno", None):
+            node.end_lineno = at(node.end_lineno)
+    return compile(tree, filename, mode, dont_inherit=True)
+)",
+               scope);
+      return py::object(scope["compile_mapped"]);
+    }());
+    try {
+      py::list lines;
+      for (const int l : s.lines) lines.append(l);
+      py::object code = compile_mapped(s.code, model_path, expression ? "eval" : "exec", lines);
+      return code.release().ptr();
+    } catch (py::error_already_set& e) {
+      e.restore();
+      return nullptr;
+    }
+  }
+
   /// Reports the pending SyntaxError at its file:line:col; `indent` shifts inline columns.
   void syntaxError(core::Diagnostics& diags, const std::string& what, int indent) {
     py::error_already_set e;
@@ -433,6 +487,8 @@ struct Engine::Impl : detail::Context {
       const auto where = located(innermost());  // before the exception is cleared
       if (stoppedLate()) {
         diags.error(where, "the script file '" + s.file + "' of " + what + " " + lateText());
+      } else if (const auto full = outOfMemory()) {
+        diags.error(where, "the script file '" + s.file + "' of " + what + " " + *full);
       } else {
         diags.error(s.loc, "running the script file '" + s.file + "' failed:\n" + formatPending());
       }
@@ -457,7 +513,9 @@ struct Engine::Impl : detail::Context {
       out.function = py::reinterpret_borrow<py::object>(fn);
       return true;
     }
-    PyObject* code = Py_CompileString(padded(s).c_str(), model_path.c_str(), expression ? Py_eval_input : Py_file_input);
+    PyObject* code = s.lines.empty() ? Py_CompileString(padded(s).c_str(), model_path.c_str(),
+                                                        expression ? Py_eval_input : Py_file_input)
+                                     : compileMapped(s, expression);
     if (!code) {
       syntaxError(diags, what, s.indent);
       return false;
@@ -483,6 +541,18 @@ struct Engine::Impl : detail::Context {
     return true;
   }
 
+  /// When the pending exception is a MemoryError from the script memory limit: how it is told
+  /// ("ran out of memory: ..."), the exception cleared (which frees what the call's frames
+  /// held). Else nullopt, the exception still pending.
+  std::optional<std::string> outOfMemory() const {
+    if (!detail::memoryLimitHit() || !PyErr_ExceptionMatches(PyExc_MemoryError)) return std::nullopt;
+    detail::clearMemoryLimitHit();
+    const detail::MemoryLimitLifted lifted;
+    PyErr_Clear();
+    return "ran out of memory: the scripts may take " + core::formatDouble(options.memory_mib) +
+           " MiB (--script-memory)";
+  }
+
   /// How a script that was stopped for running too long is told.
   std::string lateText() const {
     return "ran longer than the script timeout of " + core::formatDouble(options.timeout_s) + " s";
@@ -497,8 +567,15 @@ struct Engine::Impl : detail::Context {
   static std::string formatPending() {
     py::error_already_set e;
     try {
+      // the traceback without gdpn's own frames (internalFrame), as the user wrote the code
       py::object tb = py::module_::import("traceback");
-      py::list lines = tb.attr("format_exception")(e.type(), e.value(), e.trace());
+      py::object te = tb.attr("TracebackException")(e.type(), e.value(), e.trace());
+      py::list kept;
+      for (auto f : te.attr("stack")) {
+        if (!internalFrame(py::str(f.attr("filename")).cast<std::string>().c_str())) kept.append(f);
+      }
+      te.attr("stack") = tb.attr("StackSummary").attr("from_list")(kept);
+      py::list lines(te.attr("format")());
       std::string text;
       for (auto line : lines) text += py::str(line).cast<std::string>();
       return text;
@@ -507,21 +584,32 @@ struct Engine::Impl : detail::Context {
     }
   }
 
-  /// The innermost frame of the pending exception's traceback: file and line.
-  static std::pair<std::string, int> innermost() {
+  /// True for a frame of gdpn's own Python (code run by py::exec is named `<string>`): the
+  /// user never wrote it, so neither the location nor the traceback names it.
+  static bool internalFrame(const char* filename) { return !filename || filename[0] == '<'; }
+
+  /// The innermost frame of the pending exception's traceback in the user's own code: the
+  /// model file or a script file beside it (an exception raised inside gdpn's helpers,
+  /// `item.nosuch` in on_enter, or inside Python's library is placed at the script line that
+  /// called them); else the innermost frame of any file. File and line.
+  std::pair<std::string, int> innermost() const {
     PyObject *type = nullptr, *value = nullptr, *tb = nullptr;
     PyErr_Fetch(&type, &value, &tb);
     PyErr_NormalizeException(&type, &value, &tb);
-    std::pair<std::string, int> where{"", 0};
+    std::pair<std::string, int> where{"", 0}, mine{"", 0};
+    const std::string dir = model_dir.empty() ? std::string() : model_dir.string() + "/";
     for (PyObject* t = tb; t && t != Py_None;) {
       auto* frame = reinterpret_cast<PyTracebackObject*>(t);
       PyCodeObject* code = PyFrame_GetCode(frame->tb_frame);
-      where = {PyUnicode_AsUTF8(code->co_filename), frame->tb_lineno};
+      const char* f = PyUnicode_AsUTF8(code->co_filename);
+      const std::string file = f ? f : "";
+      if (!internalFrame(f) || where.first.empty()) where = {file, frame->tb_lineno};
+      if (file == model_path || (!dir.empty() && file.starts_with(dir))) mine = {file, frame->tb_lineno};
       Py_DECREF(code);
       t = reinterpret_cast<PyObject*>(frame->tb_next);
     }
     PyErr_Restore(type, value, tb);
-    return where;
+    return mine.first.empty() ? where : mine;
   }
 
   std::string describe(ScriptKind kind, std::uint32_t id) const {
@@ -558,6 +646,11 @@ struct Engine::Impl : detail::Context {
       PyErr_Clear();
       halt = Halt::Interrupted;
       message = where + ": error: " + what + " was interrupted (Ctrl-C)";
+      return;
+    }
+    if (const auto full = outOfMemory()) {
+      halt = Halt::Error;
+      message = where + ": error: " + what + " " + *full;
       return;
     }
     halt = Halt::Error;
@@ -742,6 +835,13 @@ std::unique_ptr<Engine> Engine::create(const net::Net& net, net::Kernel& kernel,
     std::fflush(stderr);
     std::_Exit(1);
   });
+  if (options.memory_mib > 0) {
+    // the scripts' share on top of what Python holds now (a notebook's own data is not theirs)
+    detail::installMemoryLimit();
+    const double share = options.memory_mib * 1024.0 * 1024.0;
+    impl->watchdog->capMemory(std::max<std::int64_t>(
+        1, detail::memoryHeld() + static_cast<std::int64_t>(std::min(share, 4.0e18))));
+  }
   impl->transition_views.resize(net.transitions().size());
   impl->place_views.resize(net.places().size());
   impl->node_views.resize(net.nodeNames().size());
@@ -790,9 +890,11 @@ std::unique_ptr<Engine> Engine::create(const net::Net& net, net::Kernel& kernel,
     if (ok && c.code) {
       PyObject* r = impl->evalWatched(c.code.ptr());
       if (!r) {
-        const auto where = impl->located(Impl::innermost());
+        const auto where = impl->located(impl->innermost());
         if (impl->stoppedLate()) {
           diags.error(where, "the globals script " + impl->lateText());
+        } else if (const auto full = impl->outOfMemory()) {
+          diags.error(where, "the globals script " + *full);
         } else {
           diags.error(where, "the globals script raised an exception\n" + Impl::formatPending());
         }

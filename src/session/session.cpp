@@ -110,7 +110,7 @@ std::unique_ptr<Session> Session::create(model::Model model, core::Diagnostics& 
 }
 
 std::unique_ptr<model::Simulation> Session::make(const model::Model& model, core::Diagnostics& diags) {
-  auto sim = model::Simulation::create(model, diags, options_.seed, options_.script_timeout_s, options_.run.echo_log);
+  auto sim = model::Simulation::create(model, diags, options_.seed, options_.script_limits, options_.run.echo_log);
   if (sim && options_.imager && sim->hasCameras()) {
     if (!imager_) imager_ = options_.imager(std::filesystem::path(model.path).parent_path().string());
     sim->setImager(imager_);

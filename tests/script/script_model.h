@@ -33,7 +33,7 @@ class ScriptModel {
   /// Loads and compiles; the diagnostics text on failure.
   std::unique_ptr<model::Simulation> open(core::Diagnostics& diags, double timeout = 0) const {
     auto m = model::loadModel(path_, diags);
-    return m ? model::Simulation::create(*m, diags, std::nullopt, timeout) : nullptr;
+    return m ? model::Simulation::create(*m, diags, std::nullopt, script::ScriptLimits{timeout, 0}) : nullptr;
   }
   const std::string& path() const { return path_; }
 

@@ -329,6 +329,113 @@ pages:
   EXPECT_EQ(trace.str().find("{\"step\":3,\"t\":3,\"ev\":\"start\""), std::string::npos);
 }
 
+/// The message of the run of `text` (a script error expected).
+std::string failureOf(const ScriptModel& m) {
+  core::Diagnostics diags;
+  auto sim = m.open(diags);
+  EXPECT_TRUE(sim) << diags.str();
+  if (!sim) return diags.str();
+  const auto outcome = sim->run({});
+  EXPECT_EQ(outcome.reason, StopReason::ScriptError) << outcome.message;
+  return outcome.message;
+}
+
+TEST(ScriptErrors, AnExceptionInsideGdpnsHelpersIsPlacedAtTheScriptLineThatCalledThem) {
+  // `item.nosuch` in on_enter fails inside the helper that stands for the item: the location
+  // and the traceback are the model file's, never gdpn's own `<string>`
+  ScriptModel m(R"Y(gdpn: 1
+settings: {until: 1}
+pages:
+  main:
+    places:
+      p:
+        slots: {c0: sensor}
+        sensors: {c0: zone}
+        on_enter:
+          c0: |
+            x = 1
+            print(item.nosuch)
+scene:
+  - Region: {name: zone, size: [2, 2, 2]}
+  - Transform:
+      name: box
+      children:
+        - Body: {mass: 1}
+        - Cube: {size: [0.1, 0.1, 0.1]}
+)Y");
+  const std::string message = failureOf(m);
+  EXPECT_EQ(message.rfind(m.path() + ":12: error: on_enter of place 'main/p' slot c0 at t = 0 s raised an exception", 0), 0u)
+      << message;
+  EXPECT_EQ(message.find("<string>"), std::string::npos) << message;
+  EXPECT_NE(message.find("print(item.nosuch)"), std::string::npos) << message;
+}
+
+TEST(ScriptErrors, FoldedAndQuotedScriptsAreLocatedAtTheirOwnLines) {
+  // a folded block drops its blank lines, a quoted string may hold \n or run over lines: each
+  // line of code is still placed on the file's line it stands on
+  const auto model = [](const std::string& pre_fire) {
+    return "gdpn: 1\n"                           // 1
+           "settings: {dt: 1, until: 5}\n"       // 2
+           "pages:\n"                            // 3
+           "  main:\n"                           // 4
+           "    arcs: [P -> T]\n"                // 5
+           "    places: {P: {tokens: 1}}\n"      // 6
+           "    transitions:\n"                  // 7
+           "      T:\n"                          // 8
+           "        pre_fire: " + pre_fire + "\n";  // 9...
+  };
+  ScriptModel folded(model(">\n          x = 1\n\n          y = 2\n\n          raise ValueError(\"folded\")"));
+  const std::string message = failureOf(folded);
+  EXPECT_EQ(message.rfind(folded.path() + ":14: error: pre_fire of transition 'main/T'", 0), 0u) << message;
+  EXPECT_NE(message.find("line 14"), std::string::npos) << message;
+  ScriptModel quoted(model("\"a = 1\\nb = 2\\nraise ValueError('quoted')\""));
+  EXPECT_EQ(failureOf(quoted).rfind(quoted.path() + ":9: error: pre_fire of transition 'main/T'", 0), 0u)
+      << failureOf(quoted);
+  ScriptModel spread(model("\"a = 1\n\n          raise ValueError('spread')\""));
+  EXPECT_EQ(failureOf(spread).rfind(spread.path() + ":11: error: pre_fire of transition 'main/T'", 0), 0u)
+      << failureOf(spread);
+}
+
+TEST(ScriptErrors, AMotorSetBeyondWhatThePlantCanHoldIsRefusedAtTheAssignment) {
+  // not "physics error: body ran away" a step later, with no location
+  ScriptModel m(R"Y(gdpn: 1
+settings: {until: 1}
+pages:
+  main:
+    places:
+      p: {tokens: 1}
+    transitions:
+      t:
+        pre_fire: |
+          j = sim.node("arm/hinge")
+          j.fmax1 = 100
+          j.vel1 = 1e300
+    arcs:
+      - p -> t
+scene:
+  - Transform:
+      name: arm
+      children:
+        - Joint:
+            name: hinge
+            kind: hinge
+            children:
+              - Body: {mass: 1}
+              - Cube: {size: [1, 0.1, 0.1]}
+)Y");
+  const std::string message = failureOf(m);
+  EXPECT_EQ(message.rfind(m.path() + ":12: error: pre_fire of transition 'main/t'", 0), 0u) << message;
+  EXPECT_NE(message.find("'vel1' must be at most 1e+12, got 1e+300"), std::string::npos) << message;
+  // and in the file, on load
+  ScriptModel file(R"Y(gdpn: 1
+scene:
+  - Joint: {name: hinge, kind: hinge, fmax1: 1e300, children: [Body: {mass: 1}, Cube: {size: [1, 1, 1]}]}
+)Y");
+  core::Diagnostics diags;
+  EXPECT_FALSE(model::loadModel(file.path(), diags)) << diags.str();
+  EXPECT_NE(diags.str().find("'fmax1' must lie in [0, 1e+12], got 1e+300"), std::string::npos) << diags.str();
+}
+
 // Mistakes in scripts are told in the model's terms: the field, what it takes and what it
 // got; the slot, what it holds and the index asked for.
 TEST(ScriptErrors, MessagesNameTheFieldOrSlotAndWhatWasWrong) {

@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -190,7 +191,7 @@ TEST(ScriptTimeout, APredicateBreakpointThatSleepsEndsTheRunNamingIt) {
   const std::string path = "/examples/basics/producer_consumer/producer_consumer.gdpn.yaml";
   auto model = loadModel(std::string(GDPN_SOURCE_DIR) + path, diags);
   ASSERT_TRUE(model) << diags.str();
-  auto s = session::Session::create(std::move(*model), diags, {std::nullopt, 0.3, {}, {}});
+  auto s = session::Session::create(std::move(*model), diags, {std::nullopt, {0.3, 0}, {}, {}});
   ASSERT_TRUE(s) << diags.str();
   std::string why;
   ASSERT_TRUE(s->addBreakpoint(session::Breakpoint::predicate("__import__('time').sleep(100)"), why)) << why;
@@ -244,6 +245,47 @@ TEST(ScriptTimeout, CheckStopsASleepingGlobalsScriptAndSaysWhere) {
   EXPECT_LT(since(start), kStoppedWithin);
   EXPECT_EQ(code, 1);
   EXPECT_EQ(out, m.path() + ":5: error: " + late("the globals script", "0.5") + "\n1 error\n");
+}
+
+TEST(ScriptTimeout, WithoutTheOptionCheckStillStopsAGlobalsScriptThatNeverEnds) {
+  // the default bound (script::kDefaultScriptTimeout): `gdpn check` of a model whose globals
+  // script loops for ever ends, located, instead of hanging
+  ScriptModel m("gdpn: 1\nscripts:\n  globals: |\n    n = 0\n    while True:\n      n += 1\n"
+                "pages:\n  main:\n    places:\n      P: {tokens: 1}\n");
+  const auto start = clock::now();
+  const auto [code, out] = cli("check '" + m.path() + "'", m);
+  EXPECT_LT(since(start), 60.0);
+  EXPECT_EQ(code, 1);
+  EXPECT_THAT(out, HasSubstr(": error: " + late("the globals script", "10")));
+}
+
+TEST(ScriptMemory, AScriptThatTakesMemoryWithoutEndStopsOutOfMemoryAtItsLine) {
+  // big blocks (Python's raw allocator) and small objects (its arenas) alike
+  for (const std::string grow : {"x.append(bytearray(1 << 20))", "x.append([object() for _ in range(1000)])"}) {
+    ScriptModel m(hooks("x = []\nwhile True:\n    " + grow));
+    const auto [code, out] = cli("run -q --script-memory 64 '" + m.path() + "'", m);
+    EXPECT_EQ(code, 1) << out;
+    EXPECT_THAT(out, HasSubstr(m.path() + ":11: error: pre_fire of transition 'main/T' at t = 0 s ran out of memory: "
+                               "the scripts may take 64 MiB (--script-memory)"));
+  }
+}
+
+TEST(ScriptMemory, AScriptThatCatchesTheRefusalIsStoppedByTheTimeout) {
+  ScriptModel m(hooks("x = []\nwhile True:\n    try: x.append(bytearray(1 << 20))\n    except MemoryError: pass"));
+  const auto [code, out] = cli("run -q --script-memory 32 --script-timeout 0.5 '" + m.path() + "'", m);
+  EXPECT_EQ(code, 1) << out;
+  EXPECT_THAT(out, HasSubstr(late("pre_fire of transition 'main/T' at t = 0 s", "0.5")));
+}
+
+TEST(ScriptMemory, TheGlobalsScriptIsBoundAndScriptsWithinTheBoundRunOn) {
+  ScriptModel m("gdpn: 1\nscripts:\n  globals: |\n    keep = [bytearray(1 << 20) for _ in range(8)]\n"
+                "    more = [bytearray(1 << 20) for _ in range(100)]\n"
+                "pages:\n  main:\n    places:\n      P: {tokens: 1}\n");
+  auto [code, out] = cli("check --script-memory 50 '" + m.path() + "'", m);
+  EXPECT_EQ(code, 1);
+  EXPECT_THAT(out, HasSubstr(m.path() + ":5: error: the globals script ran out of memory"));
+  std::tie(code, out) = cli("check --script-memory 200 '" + m.path() + "'", m);
+  EXPECT_EQ(code, 0) << out;
 }
 
 TEST(ScriptTimeout, RunStopsASwallowingScriptAndKeepsTheTrace) {

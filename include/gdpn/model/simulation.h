@@ -76,10 +76,10 @@ struct CyclePlan {
 class Simulation {
  public:
   /// Compiles `model` and its scripts; returns nullptr with diagnostics on any error. `seed`
-  /// overrides the model's seed; `script_timeout_s` (> 0) stops a script call that runs longer;
+  /// overrides the model's seed; `limits` bound each script call's time and what Python holds;
   /// `echo_log` false keeps `sim.log` lines off stderr from the globals script on (`-q`).
   static std::unique_ptr<Simulation> create(const Model& model, core::Diagnostics& diags,
-                                            std::optional<std::uint64_t> seed = {}, double script_timeout_s = 0.0,
+                                            std::optional<std::uint64_t> seed = {}, script::ScriptLimits limits = {},
                                             bool echo_log = true);
   ~Simulation();
 
@@ -245,7 +245,7 @@ class Simulation {
   // the engine, started for a model without scripts when an expression needs one; false with
   // `error` when it cannot start
   bool engineReady(std::string& error);
-  double script_timeout_s_ = 0.0;
+  script::ScriptLimits limits_;
   bool stale_conditions_ = false;
   std::optional<double> physics_fault_at_;  // model time (s) of the step whose physics failed
   void stepPhysics();                       // phase 1, and the time of a fault
@@ -265,6 +265,6 @@ class Simulation {
 /// scene or signals, a simulation made (scripts compiled and their globals run under
 /// `script_timeout_s`, the plant built) and its signals resolved. Every problem goes to
 /// `diags`; returns the net, null when it does not compile.
-std::shared_ptr<const net::Net> checkModel(const Model& model, core::Diagnostics& diags, double script_timeout_s = 0.0);
+std::shared_ptr<const net::Net> checkModel(const Model& model, core::Diagnostics& diags, script::ScriptLimits limits = {});
 
 }  // namespace gdpn::model

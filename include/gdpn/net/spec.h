@@ -97,6 +97,10 @@ struct ScriptSpec {
   std::string function;  ///< the function in that file (file form; a globals file needs none)
   SourceLoc loc;         ///< where the code's first character is (inline) or where the script is named (file form)
   int indent = 0;        ///< columns the code's lines are indented by in the model file (inline block form)
+  /// The model file's line of each line of `code`, where they do not follow one another from
+  /// `loc.line` (a folded `>` block, a quoted string spread over lines or holding `\n`); empty
+  /// when they do (a `|` block, one line).
+  std::vector<int> lines;
 
   /// True when no script is attached.
   [[nodiscard]] bool empty() const { return code.empty() && file.empty(); }

@@ -46,6 +46,11 @@ struct FieldError {
   int component = -1;   ///< which number of a vector or list is wrong (-1: the whole value)
 };
 
+/// The largest magnitude a number of the plant may have unless its field allows more (a
+/// joint's "no limit"): the physics calls a body beyond it run away. A field bounded only by
+/// it is shown as unbounded.
+inline constexpr double kPlantLimit = 1e12;
+
 /// One field of a node type.
 struct FieldDesc {
   std::string name;                   ///< as written in files and seen from Python
@@ -59,6 +64,9 @@ struct FieldDesc {
   NodeKind owner = NodeKind::Group;   ///< the node kind that declares it
   std::uint8_t index = 0;             ///< its place among its owner's own fields (its id)
 
+  /// Whether the field has a lower (upper) bound of its own, tighter than kPlantLimit.
+  [[nodiscard]] bool boundedBelow() const { return min > -kPlantLimit; }
+  [[nodiscard]] bool boundedAbove() const { return max < kPlantLimit; }  ///< see boundedBelow()
   /// "" when the number `x` is finite and in range, else why not ("'bounce' must lie in
   /// [0, 1], got 1.5").
   [[nodiscard]] std::string rangeError(double x) const;

@@ -37,11 +37,31 @@ struct Figure {
   friend bool operator==(const Figure&, const Figure&) = default;
 };
 
+/// The script timeout every command gives unless told otherwise (`--script-timeout`, the
+/// Python module's `script_timeout`, the IDE's runs): a script call (the globals script
+/// included) that runs longer stops the run with a located error rather than hanging it;
+/// seconds.
+inline constexpr double kDefaultScriptTimeout = 10.0;
+
+/// The memory Python may hold unless told otherwise (`--script-memory`, the Python module's
+/// `script_memory`): an allocation past it is refused, and the run stops with "ran out of
+/// memory" at the script line that asked; MiB.
+inline constexpr double kDefaultScriptMemory = 2048.0;
+
+/// What scripts may take before the run stops: the bounds every command gives.
+struct ScriptLimits {
+  double timeout_s = kDefaultScriptTimeout;  ///< one call running longer is stopped (0: never), seconds
+  double memory_mib = kDefaultScriptMemory;  ///< Python may hold at most this much (0: no bound), MiB
+};
+
 /// How scripts run.
 struct EngineOptions {
   /// a single script call (the globals script, a script file's top level, a hook, a
   /// breakpoint's predicate) running longer than this is stopped (0: never), seconds
   double timeout_s = 0.0;
+  /// the most memory Python may hold (an allocation past it raises MemoryError, and the run
+  /// stops as "ran out of memory"; 0: no bound), MiB
+  double memory_mib = 0.0;
   /// how long a call that does not stop when told (stuck in C code) is given after its
   /// timeout before the process ends with the message on stderr (0: never), seconds
   double grace_s = 2.0;

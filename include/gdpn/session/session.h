@@ -31,7 +31,7 @@ namespace gdpn::session {
 /// How a session's runs are made.
 struct SessionOptions {
   std::optional<std::uint64_t> seed;  ///< overrides the model's seed
-  double script_timeout_s = 0.0;      ///< a script call running longer is stopped (0: never), seconds
+  script::ScriptLimits script_limits;  ///< what a script call may take: its time, Python's memory
   /// Makes what renders camera sensors' pictures, given the model's folder; called once, at
   /// the first simulation whose scene has a camera sensor (none: pictures are not rendered,
   /// and a script that reads one fails saying so).

@@ -32,16 +32,16 @@ std::string rangeText(const scene::FieldDesc& d) {
     for (const auto& c : d.choices) s += (s.empty() ? "" : " | ") + c;
     return s;
   }
-  if (d.min <= -1e299 && d.max >= 1e299) return "";
-  const auto bound = [](double x) { return std::abs(x) >= 1e299 ? std::string(x < 0 ? "-inf" : "inf") : core::formatDouble(x); };
-  return "[" + bound(d.min) + ", " + bound(d.max) + "]";
+  if (!d.boundedBelow() && !d.boundedAbove()) return "";
+  return "[" + (d.boundedBelow() ? core::formatDouble(d.min) : std::string("-inf")) + ", " +
+         (d.boundedAbove() ? core::formatDouble(d.max) : std::string("inf")) + "]";
 }
 
 /// One field's widget; true with `out` when the user changed the value this frame.
 bool fieldWidget(const scene::FieldDesc& d, const FieldValue& v, FieldValue& out) {
-  const double lo = d.min <= -1e299 ? -1e9 : d.min;
-  const double hi = d.max >= 1e299 ? 1e9 : d.max;
-  const float speed = static_cast<float>(d.max < 1e299 && d.min > -1e299 ? (hi - lo) / 300.0 : 0.01);
+  const double lo = d.boundedBelow() ? d.min : -1e9;
+  const double hi = d.boundedAbove() ? d.max : 1e9;
+  const float speed = static_cast<float>(d.boundedAbove() && d.boundedBelow() ? (hi - lo) / 300.0 : 0.01);
   switch (d.kind) {
     case FieldKind::Bool: {
       bool b = std::get<bool>(v);
