@@ -65,8 +65,8 @@ int convert(const std::string& in, const std::string& out) {
       diags.error({out, 0, 0}, why);
     } else {
       for (const auto& u : unseen) {
-        diags.note({out, 0, 0}, "other tools will not see the net's " + std::to_string(u.count) + " " + u.what +
-                                    " (kept for gdpn in <toolspecific tool=\"gdpn\">)");
+        diags.note({out, 0, 0}, "only gdpn reads the net's " + std::to_string(u.count) + " " + u.what +
+                                    " (other tools skip <toolspecific tool=\"gdpn\">)");
       }
       if (m->scene || !m->params.empty() || !m->signals.empty() || !m->io.empty()) {
         diags.note({out, 0, 0}, "PNML holds the net alone: the model's scene, parameters, signals, I/O and settings are not written");

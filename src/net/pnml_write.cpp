@@ -101,27 +101,29 @@ enum class Unseen : std::uint8_t {
   NodeTokens, Sensor, PlaceScript, Predicate, Condition, PageDescription, Instance, Globals, Parameter, Count
 };
 
-/// Each kind's words in a note.
-constexpr std::array<std::string_view, static_cast<std::size_t>(Unseen::Count)> kUnseenWords = {
-    "transition durations",
-    "transition priorities",
-    "transition probabilities",
-    "transitions' servers",
-    "guards",
-    "transition scripts (pre_fire, in_fire, post_fire)",
-    "place capacities",
-    "declared slot kinds",
-    "markings and arc weights on slots other than a0",
-    "places holding node tokens",
-    "sensor slots",
-    "place scripts",
-    "arc predicates",
-    "arc conditions",
-    "page descriptions",
-    "page type instances' settings (position, translation, rotation, params, part, uses)",
-    "globals scripts",
-    "values taken from model parameters (written as their values)",
-};
+/// Each kind's words in a note: one of it, several of it.
+constexpr std::array<std::array<std::string_view, 2>, static_cast<std::size_t>(Unseen::Count)> kUnseenWords = {{
+    {"transition duration", "transition durations"},
+    {"transition priority", "transition priorities"},
+    {"transition probability", "transition probabilities"},
+    {"transition's servers", "transitions' servers"},
+    {"guard", "guards"},
+    {"transition with scripts (pre_fire, in_fire, post_fire)", "transitions with scripts (pre_fire, in_fire, post_fire)"},
+    {"place with a capacity", "places with a capacity"},
+    {"place declaring slot kinds", "places declaring slot kinds"},
+    {"marking or arc weight on slots other than a0", "markings and arc weights on slots other than a0"},
+    {"place holding node tokens", "places holding node tokens"},
+    {"place reading sensors", "places reading sensors"},
+    {"place with scripts", "places with scripts"},
+    {"arc with predicates", "arcs with predicates"},
+    {"arc with conditions", "arcs with conditions"},
+    {"page description", "page descriptions"},
+    {"page type instance's settings (position, translation, rotation, params, part, uses)",
+     "page type instances' settings (position, translation, rotation, params, part, uses)"},
+    {"globals script", "globals scripts"},
+    {"value taken from a model parameter (written as its value)",
+     "values taken from model parameters (written as their values)"},
+}};
 
 /// Writes a NetSpec as PNML. Ids are chosen first (a construct keeps its name, or the PNML id
 /// it came from, where that is free), then the pages are written, nested as instances nest.
@@ -175,7 +177,7 @@ class PnmlWriter {
     if (unseen) {
       unseen->clear();
       for (std::size_t k = 0; k < counts_.size(); ++k) {
-        if (counts_[k]) unseen->push_back({std::string(kUnseenWords[k]), counts_[k]});
+        if (counts_[k]) unseen->push_back({std::string(kUnseenWords[k][counts_[k] == 1 ? 0 : 1]), counts_[k]});
       }
     }
     return std::move(out_);

@@ -63,21 +63,21 @@ TEST(PnmlToolSpecific, ModelToPnmlToModelKeepsEveryConstructOfTheNet) {
   EXPECT_EQ(said,
             "6 transition durations\n"
             "2 transition priorities\n"
-            "1 transition probabilities\n"
+            "1 transition probability\n"
             "2 transitions' servers\n"
-            "1 guards\n"
-            "1 transition scripts (pre_fire, in_fire, post_fire)\n"
-            "3 place capacities\n"
-            "1 declared slot kinds\n"
+            "1 guard\n"
+            "1 transition with scripts (pre_fire, in_fire, post_fire)\n"
+            "3 places with a capacity\n"
+            "1 place declaring slot kinds\n"
             "3 markings and arc weights on slots other than a0\n"
-            "1 places holding node tokens\n"
-            "1 sensor slots\n"
-            "2 place scripts\n"
-            "1 arc predicates\n"
-            "1 arc conditions\n"
+            "1 place holding node tokens\n"
+            "1 place reading sensors\n"
+            "2 places with scripts\n"
+            "1 arc with predicates\n"
+            "1 arc with conditions\n"
             "2 page descriptions\n"
-            "1 page type instances' settings (position, translation, rotation, params, part, uses)\n"
-            "1 globals scripts\n");
+            "1 page type instance's settings (position, translation, rotation, params, part, uses)\n"
+            "1 globals script\n");
 }
 
 TEST(PnmlToolSpecific, OtherToolsReadAPlainNetBesideIt) {

@@ -36,7 +36,7 @@ std::optional<NetSpec> loadPnml(const std::string& path, core::Diagnostics& diag
 /// What a PNML file keeps only in gdpn's tool-specific part, which other tools do not read:
 /// one kind of construct and how many of it the net has.
 struct PnmlUnseen {
-  std::string what;        ///< the kind, plural ("transition durations")
+  std::string what;        ///< the kind, in the number of `count` ("transition durations", "guard")
   std::size_t count = 0;   ///< how many
 };
 
