@@ -37,10 +37,12 @@ int convert(const std::string& in, const std::string& out) {
   if (mesh) {
     m = model::meshModel(in, out, diags);
   } else if (in.ends_with(".pnml")) {
-    if (auto spec = gdpn::net::loadPnml(in, diags); spec && gdpn::net::compile(*spec, diags)) {
+    // the net's name (its <name>, else its id) becomes the model's description
+    std::string name;
+    if (auto spec = gdpn::net::loadPnml(in, diags, &name); spec && gdpn::net::compile(*spec, diags)) {
       m.emplace();
       m->net = std::move(*spec);
-      m->description = "converted from " + std::filesystem::path(in).filename().string();
+      m->description = name.empty() ? "converted from " + std::filesystem::path(in).filename().string() : name;
     }
   } else if (auto path = model::resolveModelPath(in, diags)) {
     m = model::loadModel(*path, diags);
@@ -53,12 +55,22 @@ int convert(const std::string& in, const std::string& out) {
     }
   }
   if (m && to_pnml) {
+    // what only gdpn reads back is said once per kind; the model beyond its net is not written
     std::string why;
-    auto text = gdpn::net::writePnml(m->net, why);
+    std::vector<gdpn::net::PnmlUnseen> unseen;
+    auto text = gdpn::net::writePnml(m->net, why, m->description, &unseen);
     if (!text) {
       diags.error({in, 0, 0}, "cannot write PNML: " + why);
     } else if (!gdpn::core::writeOutput(out, *text, why)) {
       diags.error({out, 0, 0}, why);
+    } else {
+      for (const auto& u : unseen) {
+        diags.note({out, 0, 0}, "only gdpn reads the net's " + std::to_string(u.count) + " " + u.what +
+                                    " (other tools skip <toolspecific tool=\"gdpn\">)");
+      }
+      if (m->scene || !m->params.empty() || !m->signals.empty() || !m->io.empty()) {
+        diags.note({out, 0, 0}, "PNML holds the net alone: the model's scene, parameters, signals, I/O and settings are not written");
+      }
     }
   } else if (m) {
     model::saveModel(*m, out, diags);

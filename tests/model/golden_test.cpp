@@ -860,10 +860,12 @@ TEST(CliOutputs, ConvertWritesTheFormatOfTheOutputsExtension) {
   EXPECT_TRUE(fileBytes(folder.file("copy.pnml")).starts_with("<?xml")) << fileBytes(folder.file("copy.pnml"));
   r = gdpn("convert " + net + " " + folder.file("net.gdpn.yaml"));
   ASSERT_EQ(r.code, 0) << r.out;
-  EXPECT_NE(fileBytes(folder.file("net.gdpn.yaml")).find("description: \"converted from net.pnml\""), std::string::npos);
+  // the net's name (here its id: it has no <name>) is the model's description, and back
+  EXPECT_NE(fileBytes(folder.file("net.gdpn.yaml")).find("description: \"Philosophers-PT-000005\""), std::string::npos);
   r = gdpn("convert " + folder.file("net.gdpn.yaml") + " " + folder.file("back.pnml"));
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_TRUE(fileBytes(folder.file("back.pnml")).starts_with("<?xml"));
+  EXPECT_NE(fileBytes(folder.file("back.pnml")).find("<name><text>Philosophers-PT-000005</text></name>"), std::string::npos);
   // an extension that names no format is refused before anything is read or written
   r = gdpn("convert " + net + " " + folder.file("net.txt"));
   EXPECT_EQ(r.code, 2) << r.out;
