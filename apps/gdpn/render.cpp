@@ -133,7 +133,8 @@ int capture(CaptureArgs a, bool movie) {
 
 /// The options of the picture and the movie alike: camera, size, look, seed, output, --param.
 void addLook(CLI::App* cmd, CaptureArgs& args) {
-  cmd->add_option("--camera", args.options.camera, "path of the Camera node (default: the scene's first, or a framing view)");
+  cmd->add_option("--camera", args.options.camera, "path of the Camera node or camera sensor (default: the scene's first Camera, or a framing "
+                  "view); a DepthCamera shows its depth in grey, near white, far black");
   cmd->add_option("--size", args.size,
                   "WIDTHxHEIGHT in pixels, each side 16 to 16384 (default 1280x720, or a camera sensor's own size)");
   cmd->add_option("--samples", args.options.samples, "samples per pixel for anti-aliasing (default 4)")

@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "gdpn/capture/movie.h"
+#include "gdpn/capture/sensor_imager.h"
 #include "gdpn/diagram/layout.h"
 #include "gdpn/diagram/net_state.h"
 #include "gdpn/diagram/picture.h"
@@ -44,11 +45,14 @@ std::optional<std::pair<int, int>> cameraSensorSize(const scene::Scene& scene, c
 
 namespace {
 
-/// A headless context, a target and a renderer for one model.
+/// A headless context, a target and a renderer for one model; a DepthCamera's pictures are
+/// drawn as its sensor draws them.
 struct Studio {
   std::unique_ptr<platform::GlContext> context;
   std::unique_ptr<platform::Target> target;
   std::unique_ptr<render::Renderer> renderer;
+  std::unique_ptr<SensorImager> depth;  // made at the first picture from a DepthCamera
+  std::string model_dir;
   render::DrawOptions draw;
 
   bool open(const model::Simulation& sim, const CaptureOptions& o, std::string& error) {
@@ -62,7 +66,8 @@ struct Studio {
     context = platform::createHeadlessContext(error);
     if (!context) return false;
     target = std::make_unique<platform::Target>(o.width, o.height, o.samples);
-    renderer = std::make_unique<render::Renderer>(std::filesystem::path(sim.model().path).parent_path().string());
+    model_dir = std::filesystem::path(sim.model().path).parent_path().string();
+    renderer = std::make_unique<render::Renderer>(model_dir);
     draw.width = o.width;
     draw.height = o.height;
     draw.sensors = o.sensors;
@@ -76,6 +81,10 @@ struct Studio {
              render::DrawStats& stats, std::string& error) {
     const render::Camera camera = render::chooseCamera(*sim.plant(), o.camera, sim.kernel().now(), error);
     if (!error.empty()) return false;
+    const scene::Node* sensor = o.camera.empty() ? nullptr : sim.plant()->find(o.camera);
+    if (sensor != nullptr && sensor->kind() == scene::NodeKind::DepthCamera) {
+      return shootDepth(sim, *sensor, o, rgb, stats, error);
+    }
     target->bind();
     // the parts' markings: a conveyor's arrows move with time, a visible Region shows when
     // it holds something
@@ -87,6 +96,18 @@ struct Studio {
       return false;
     }
     rgb = target->readRgb();
+    return true;
+  }
+
+  /// What DepthCamera `camera` sees, at the picture's size: its distances (without noise) in
+  /// grey, near white and far black (depthGrey).
+  bool shootDepth(const model::Simulation& sim, const scene::Node& camera, const CaptureOptions& o,
+                  std::vector<std::uint8_t>& rgb, render::DrawStats& stats, std::string& error) {
+    if (!depth) depth = std::make_unique<SensorImager>(model_dir);
+    sensors::Image picture;
+    if (!depth->picture(*sim.plant(), camera, o.width, o.height, picture, error, &stats)) return false;
+    using F = scene::field::ColorCamera;
+    rgb = depthGrey(picture, camera.number(F::Near), camera.number(F::Far));
     return true;
   }
 };

@@ -1,5 +1,7 @@
 #include "gdpn/capture/sensor_imager.h"
 
+#include <algorithm>
+
 #include "gdpn/platform/headless_context.h"
 #include "gdpn/render/camera.h"
 
@@ -16,6 +18,13 @@ SensorImager::~SensorImager() {
 }
 
 bool SensorImager::render(const scene::Scene& scene, const scene::Node& camera, sensors::Image& out, std::string& why) {
+  using F = scene::field::ColorCamera;
+  return picture(scene, camera, static_cast<int>(camera.number(F::Width)), static_cast<int>(camera.number(F::Height)),
+                 out, why);
+}
+
+bool SensorImager::picture(const scene::Scene& scene, const scene::Node& camera, int width, int height,
+                           sensors::Image& out, std::string& why, render::DrawStats* stats) {
   if (!failed_.empty()) {
     why = failed_;
     return false;
@@ -33,28 +42,28 @@ bool SensorImager::render(const scene::Scene& scene, const scene::Node& camera, 
     renderer_ = std::make_unique<render::Renderer>(model_dir_);
   }
   context_->makeCurrent();
-  using F = scene::field::ColorCamera;
-  const int w = static_cast<int>(camera.number(F::Width)), h = static_cast<int>(camera.number(F::Height));
-  auto& target = targets_[{w, h}];
+  auto& target = targets_[{width, height}];
   // one sample per pixel: a pixel's colour and depth are those of what it sees, not a blend
-  if (!target) target = std::make_unique<platform::Target>(w, h, 1);
+  if (!target) target = std::make_unique<platform::Target>(width, height, 1);
   target->bind();
   const bool depth = camera.kind() == scene::NodeKind::DepthCamera;
   render::DrawOptions draw;
-  draw.width = w;
-  draw.height = h;
+  draw.width = width;
+  draw.height = height;
   draw.shadows = false;
   draw.grid = false;
   draw.sky = !depth;
   draw.markings = false;  // what the plant is, not how people are shown it works
   const render::Camera view = render::sensorCamera(camera);
-  renderer_->draw(scene, view, draw);
+  const render::DrawStats drawn = renderer_->draw(scene, view, draw);
+  if (stats != nullptr) *stats = drawn;
+  // what this picture could not draw fails it, and only it
   if (!renderer_->problems().empty()) {
     why = renderer_->problems().front();
     return false;
   }
-  out.width = w;
-  out.height = h;
+  out.width = width;
+  out.height = height;
   if (depth) {
     // window depth to distance along the view axis (the projection's near and far)
     out.depth = target->readDepth();
@@ -68,6 +77,16 @@ bool SensorImager::render(const scene::Scene& scene, const scene::Node& camera, 
   }
   ++pictures_;
   return true;
+}
+
+std::vector<std::uint8_t> depthGrey(const sensors::Image& depth, double near, double far) {
+  std::vector<std::uint8_t> grey(depth.depth.size() * 3);
+  const double span = far > near ? far - near : 1.0;
+  for (std::size_t i = 0; i < depth.depth.size(); ++i) {
+    const double t = std::clamp((static_cast<double>(depth.depth[i]) - near) / span, 0.0, 1.0);
+    grey[3 * i] = grey[3 * i + 1] = grey[3 * i + 2] = static_cast<std::uint8_t>(255.0 * (1.0 - t) + 0.5);
+  }
+  return grey;
 }
 
 std::shared_ptr<sensors::Imager> makeSensorImager(const std::string& model_dir) {

@@ -386,10 +386,11 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
   }
   if (diags.hasErrors()) return nullptr;
   if (sim->scene_) {
+    // sensors, or templates holding some that copies will bring
     bool any = false;
     scene::traverse(sim->scene_->root(), [&](scene::Node& n, const scene::TraversalState&) {
       any = any || n.type().category == scene::Category::Sensor;
-    }, {}, scene::Templates::Skip);
+    });
     if (any) {
       const auto dir = std::filesystem::path(model.path).parent_path().string();
       if (!sensors::Hub::check(*sim->scene_, diags, dir.empty() ? "." : dir)) return nullptr;
@@ -573,10 +574,11 @@ scene::Node* Simulation::spawn(const scene::Node& templ, scene::Node& parent, st
     const core::Vec3 local = parent.world.inverse().apply(*at);
     placed->setValue(scene::field::Transform::Translation, std::array<double, 3>{local.x, local.y, local.z});
   }
+  // its bodies join the physics, its sensors are read from the next step on
   core::Diagnostics diags;
-  if (physics_ && !physics_->add(*top, diags)) {
+  if ((physics_ && !physics_->add(*top, diags)) || (hub_ && !hub_->add(*top, diags))) {
     why = diags.str();
-    physics_->remove(*top);
+    if (physics_) physics_->remove(*top);
     scene_->destroy(*top);
     return nullptr;
   }

@@ -88,6 +88,7 @@ bool World::Impl::finishBody(Body& body, core::Diagnostics& diags) {
       }
       // ground has no mass (and cannot be part of a body: see addGeom)
       case Form::None:
+      case Form::Cone:  // only a Region's volume, never a shape (shapePrimitive)
       case Form::Ray:
       case Form::Plane:
       case Form::Terrain: return;

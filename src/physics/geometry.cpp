@@ -208,7 +208,9 @@ bool World::Impl::addGeom(Node& n, const scene::TraversalState& st, const std::s
       }
       break;
     }
+    // a shape is never made as a cone (shapePrimitive: a Cone collides as a cylinder)
     case Form::None:
+    case Form::Cone:
     case Form::Ray: return true;
   }
   // what the geometry brings to contacts: the material in effect, a conveyor beside it

@@ -2,6 +2,8 @@
 // node is at each pass and met with the shapes whose boxes it overlaps.
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 #include "ode_convert.h"
 #include "world_impl.h"
@@ -41,7 +43,11 @@ SensorSpec sensorSpec(const Node& n) {
         case scene::RegionShape::Box: return {boxPrimitive(e, s), scope, bodies};
         case scene::RegionShape::Sphere: return {spherePrimitive(e, s), scope, bodies};
         case scene::RegionShape::Cylinder: return {cylinderPrimitive(e, s, false), scope, bodies};
-        case scene::RegionShape::Cone: return {cylinderPrimitive(e, s, true), scope, bodies};
+        case scene::RegionShape::Cone: {
+          Primitive cone = cylinderPrimitive(e, s, false);
+          cone.form = Form::Cone;
+          return {cone, scope, bodies};
+        }
         case scene::RegionShape::Ray: return {rayPrimitive(n.number(F::Length)), scope, bodies};
       }
       return {};
@@ -80,14 +86,56 @@ SensorSpec sensorSpec(const Node& n) {
   return {};
 }
 
-/// A sensor's geometry in `space`; a volume's sizes are taken as at least 1e-9 m.
-dGeomID sensorGeom(dSpaceID space, const Primitive& v) {
+/// Sides of the pyramid a cone is sensed as: its base a regular polygon inscribed in the
+/// cone's base circle (the slanted faces lie within 0.2% of the radius inside the cone).
+constexpr int kConeSides = 48;
+
+/// A cone of base radius `r` and height `h` (m) along z, base at -h/2, apex at +h/2, as
+/// ODE's convex geometry reads it: a pyramid of kConeSides slanted faces and the base.
+std::unique_ptr<Convex> conePolyhedron(double r, double h) {
+  auto c = std::make_unique<Convex>();
+  const double half = h / 2;
+  // the apex, then the base's corners counterclockwise seen from above
+  c->points = {0, 0, half};
+  for (int i = 0; i < kConeSides; ++i) {
+    const double a = 2 * std::numbers::pi * i / kConeSides;
+    c->points.insert(c->points.end(), {r * std::cos(a), r * std::sin(a), -half});
+  }
+  // each slanted face through the apex and one edge of the base, its normal outward: the
+  // edge lies at `inner` from the axis, so the face is u * h + z * inner = inner * h / 2
+  // along the direction u of the edge's middle
+  const double inner = r * std::cos(std::numbers::pi / kConeSides);
+  const double length = std::hypot(h, inner);
+  for (int i = 0; i < kConeSides; ++i) {
+    const double mid = 2 * std::numbers::pi * (i + 0.5) / kConeSides;
+    c->planes.insert(c->planes.end(), {h * std::cos(mid) / length, h * std::sin(mid) / length, inner / length,
+                                       inner * half / length});
+    const auto next = static_cast<unsigned>((i + 1) % kConeSides + 1);
+    c->polygons.insert(c->polygons.end(), {3U, 0U, static_cast<unsigned>(i + 1), next});
+  }
+  // the base, facing down: its corners clockwise seen from above
+  c->planes.insert(c->planes.end(), {0, 0, -1, half});
+  c->polygons.push_back(kConeSides);
+  for (int i = kConeSides; i >= 1; --i) c->polygons.push_back(static_cast<unsigned>(i));
+  return c;
+}
+
+/// A sensor's geometry in `space`; a volume's sizes are taken as at least 1e-9 m. A cone
+/// gets its polyhedron in `convex` (which the geometry reads as long as it lives).
+dGeomID sensorGeom(dSpaceID space, const Primitive& v, std::unique_ptr<Convex>& convex) {
   constexpr double kLeast = 1e-9;
+  convex.reset();
   switch (v.form) {
     case Form::Box:
       return dCreateBox(space, std::max(v.box.x, kLeast), std::max(v.box.y, kLeast), std::max(v.box.z, kLeast));
     case Form::Sphere: return dCreateSphere(space, std::max(v.radius, kLeast));
     case Form::Cylinder: return dCreateCylinder(space, std::max(v.radius, kLeast), std::max(v.height, kLeast));
+    case Form::Cone: {
+      convex = conePolyhedron(std::max(v.radius, kLeast), std::max(v.height, kLeast));
+      return dCreateConvex(space, convex->planes.data(), static_cast<unsigned>(convex->planes.size() / 4),
+                           convex->points.data(), static_cast<unsigned>(convex->points.size() / 3),
+                           convex->polygons.data());
+    }
     case Form::Ray: return dCreateRay(space, v.length);
     case Form::None:
     case Form::Mesh:
@@ -102,7 +150,9 @@ dGeomID sensorGeom(dSpaceID space, const Primitive& v) {
 void World::Impl::addSensor(Node& n) {
   const SensorSpec spec = sensorSpec(n);
   if (spec.volume.form == Form::None) return;
-  sensors.push_back({&n, sensorGeom(space, spec.volume), spec.scope, spec.bodies_only, spec.volume});
+  std::unique_ptr<Convex> convex;
+  dGeomID geom = sensorGeom(space, spec.volume, convex);
+  sensors.push_back({&n, geom, spec.scope, spec.bodies_only, spec.volume, std::move(convex)});
   retagSensors();
 }
 
@@ -116,7 +166,7 @@ void World::Impl::refreshSensor(const Node& n) {
     if (spec.volume == sensor.volume) continue;
     // a new shape or size: a new geometry in the same place in the list
     dGeomDestroy(sensor.geom);
-    sensor.geom = sensorGeom(space, spec.volume);
+    sensor.geom = sensorGeom(space, spec.volume, sensor.convex);
     sensor.volume = spec.volume;
     dGeomSetData(sensor.geom, reinterpret_cast<void*>(kSensorTag | i));
   }
@@ -224,7 +274,7 @@ void World::castRays(const Node& sensor, scene::Scope scope, Vec3 from, const st
   // the shapes whose boxes meet the box around every ray, and in the sensor's scope
   const Vec3 reach{length, length, length};
   const core::Aabb fan{from - reach, from + reach};
-  const Impl::Sensor as{const_cast<Node*>(&sensor), nullptr, scope, false, rayPrimitive(length)};
+  const Impl::Sensor as{const_cast<Node*>(&sensor), nullptr, scope, false, rayPrimitive(length), nullptr};
   std::vector<dGeomID> near;
   auto consider = [&](dGeomID g) {
     const Surface s = Impl::surfaceOf(g, m);

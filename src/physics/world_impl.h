@@ -32,17 +32,24 @@ inline constexpr double kHuge = 1e299;
 /// The primitive ODE makes for a shape or for a sensor's volume, scale applied.
 struct Primitive {
   /// What ODE makes.
-  enum class Form : std::uint8_t { None, Box, Sphere, Cylinder, Ray, Mesh, Plane, Terrain };
+  enum class Form : std::uint8_t { None, Box, Sphere, Cylinder, Cone, Ray, Mesh, Plane, Terrain };
   Form form = Form::None;  ///< None: nothing to make
   core::Vec3 box;          ///< Box: edge lengths, m
-  double radius = 0;       ///< Sphere, Cylinder: m
-  double height = 0;       ///< Cylinder: m, along z
+  double radius = 0;       ///< Sphere, Cylinder: m; Cone: of its base, m
+  double height = 0;       ///< Cylinder, Cone: m, along z (a cone's base at -height/2, its apex at +height/2)
   double length = 0;       ///< Ray: m, along +x
   /// Same form and sizes.
   bool operator==(const Primitive&) const = default;
 };
 /// What ODE makes for a primitive (Primitive::Form).
 using Form = Primitive::Form;
+
+/// A convex polyhedron as ODE's convex geometry reads it (ODE keeps pointers into these).
+struct Convex {
+  std::vector<double> planes;      ///< a b c d per face: unit outward normal, offset (m)
+  std::vector<double> points;      ///< x y z per vertex, m
+  std::vector<unsigned> polygons;  ///< per face: its vertex count, then its vertices
+};
 
 /// A box of `extent` (scene::shapeExtent, m) with each edge scaled by `scale`.
 Primitive boxPrimitive(core::Vec3 extent, core::Vec3 scale);
@@ -113,6 +120,7 @@ struct World::Impl {
     scene::Scope scope;  ///< what it feels
     bool bodies_only;    ///< a Region that reports no static shapes
     Primitive volume;    ///< what `geom` was made as
+    std::unique_ptr<Convex> convex;  ///< a cone's polyhedron, which `geom` reads; null for the others
     /// A ray: a RangeFinder, or a Region of shape ray.
     [[nodiscard]] bool ray() const { return volume.form == Primitive::Form::Ray; }
   };

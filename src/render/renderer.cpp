@@ -129,6 +129,7 @@ struct Renderer::Impl {
   UnitShape cube = unitCube(), sphere = unitSphere(), cylinder = unitRound(false), cone = unitRound(true);
   GpuMesh plane = unitPlane(), chevron = unitChevron();
   GpuCache files;
+  std::vector<std::string> problems;  // of the last draw
 
   explicit Impl(std::string model_dir) : files(std::move(model_dir)) { glGenVertexArrays(1, &empty_vao); }
   ~Impl() {
@@ -160,9 +161,15 @@ struct Renderer::Impl {
         items.push_back({&plane, nullptr, at * alongZ(gv(n.vec3(field::Plane::Normal))), lookOf(material), &n, 0});
         break;
       case NodeKind::Mesh: mesh(n, at, material, items); break;
-      case NodeKind::Terrain:
-        if (const TerrainGpu* g = files.terrain(n)) items.push_back({nullptr, g, at, lookOf(material), &n, 0});
+      case NodeKind::Terrain: {
+        std::string why;
+        if (const TerrainGpu* g = files.terrain(n, why)) {
+          items.push_back({nullptr, g, at, lookOf(material), &n, 0});
+        } else {
+          problem(n, n.fieldLoc(field::Terrain::File), why);
+        }
         break;
+      }
       case NodeKind::Region:
         // a visible one in its own colours; the others with the sensor volumes
         if (opt.markings && n.flag(field::Region::Visible)) {
@@ -217,6 +224,14 @@ struct Renderer::Impl {
     }
   }
 
+  /// Node `n` could not be drawn, `why`: a problem of this draw, at `loc` (where its file
+  /// field was written; the node's own place when that is unknown).
+  void problem(const Node& n, const core::SourceLoc& loc, const std::string& why) {
+    const core::SourceLoc& at = loc.line > 0 ? loc : n.loc;
+    problems.push_back((at.line > 0 ? at.str() + ": error: " : std::string()) + n.type().name + " '" + n.path() +
+                       "' cannot be drawn: " + why);
+  }
+
   /// Primitive `n` (a shape, or a Region's volume) placed `at`: `shape` stretched to its extent.
   static void primitive(const UnitShape& shape, const Node& n, const glm::mat4& at, const Look& look,
                         std::vector<Item>& items) {
@@ -225,8 +240,12 @@ struct Renderer::Impl {
 
   /// Mesh node `n`'s parts (or the one part it names), in `material` or else the file's own.
   void mesh(const Node& n, const glm::mat4& at, const Node* material, std::vector<Item>& items) {
-    const GpuCache::MeshGpu* m = files.mesh(n);
-    if (m == nullptr) return;
+    std::string why;
+    const GpuCache::MeshGpu* m = files.mesh(n, why);
+    if (m == nullptr) {
+      problem(n, n.fieldLoc(field::Mesh::File), why);
+      return;
+    }
     const auto part = static_cast<long>(n.number(field::Mesh::Part));
     for (std::size_t i = 0; i < m->parts.size(); ++i) {
       if (part >= 0 && static_cast<std::size_t>(part) != i) continue;
@@ -519,10 +538,11 @@ struct Renderer::Impl {
 Renderer::Renderer(std::string model_dir) : impl_(std::make_unique<Impl>(std::move(model_dir))) {}
 Renderer::~Renderer() = default;
 
-const std::vector<std::string>& Renderer::problems() const { return impl_->files.problems(); }
+const std::vector<std::string>& Renderer::problems() const { return impl_->problems; }
 
 DrawStats Renderer::draw(const scene::Scene& scene, const Camera& cam, const DrawOptions& opt) {
   Impl& r = *impl_;
+  r.problems.clear();
   DrawStats stats;
   const Node& root = scene.root();
   // the looks of the whole scene first: lights and fog

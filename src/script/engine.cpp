@@ -763,7 +763,7 @@ def compile_mapped(code, filename, mode, lines):
   }
 
   /// A sensor handler: on_enter/on_exit get (items, item); on_sample gets items (Region) or
-  /// the value; on_change gets the value.
+  /// the sensor; on_change gets the sensor's value.
   void runSensor(std::int32_t index, ScriptKind kind, std::uint32_t id, PyObject* self, bool with_item, PyObject* items,
                  PyObject* arg) {
     if (index < 0 || halt != Halt::None) return;
@@ -975,11 +975,14 @@ void Engine::sensorEvent(net::PlaceSlotId ps, ScriptKind kind, scene::NodeHandle
   const auto& r = impl_->reading(sensor);
   py::list items;
   for (auto h : r.items()) items.append(impl_->nodeView(h));
+  // on_change sees the sensor's value (its main number; the sensor is under its slot's name),
+  // the others the sensor
+  py::object value = kind == ScriptKind::OnChange ? view.attr("value") : view;
   impl_->globals["items"] = items;
-  impl_->globals["value"] = view;
+  impl_->globals["value"] = value;
   const bool with_item = kind == ScriptKind::OnEnter || kind == ScriptKind::OnExit;
   py::object arg = with_item ? impl_->itemList(item, r.items())
-                             : (kind == ScriptKind::OnSample && !r.items().empty() ? py::object(items) : view);
+                             : (kind == ScriptKind::OnSample && !r.items().empty() ? py::object(items) : value);
   impl_->runSensor(index, kind, ps, impl_->placeView(net.placeSlots()[ps].place).ptr(), with_item, items.ptr(),
                    arg.ptr());
 }

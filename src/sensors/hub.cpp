@@ -1,7 +1,6 @@
 #include "gdpn/sensors/hub.h"
 
 #include <algorithm>
-#include <unordered_set>
 
 #include "detail/sensor.h"
 #include "gdpn/scene/actions.h"
@@ -18,31 +17,40 @@ bool Hub::check(const scene::Scene& scene, core::Diagnostics& diags, const std::
   return ok;
 }
 
-Hub::Hub(scene::Scene& scene, physics::World* world, std::uint64_t seed) : scene_(scene), world_(world) {
+Hub::Hub(scene::Scene& scene, physics::World* world, std::uint64_t seed)
+    : scene_(scene), world_(world), seed_(seed) {
+  // the World the physics takes: the first
   bool world_node = false;
   scene::traverse(scene_.root(), [&](scene::Node& n, const scene::TraversalState&) {
-    if (const detail::KindDef* def = detail::kindDef(n.kind())) {
-      Entry e;
-      e.sensor = def->make(n, def->kind, seed);
-      e.reading = Reading(def->kind.channels);
-      entries_.push_back(std::move(e));
-    }
-    // the World the physics takes: the first
     if (n.kind() == scene::NodeKind::World && !world_node) {
       gravity_ = n.vec3(scene::field::World::Gravity);
       world_node = true;
     }
   }, {}, scene::Templates::Skip);
-  std::sort(entries_.begin(), entries_.end(),
-            [](const Entry& a, const Entry& b) { return a.sensor->node().path() < b.sensor->node().path(); });
-  for (std::size_t i = 0; i < entries_.size(); ++i) entry_of_[entries_[i].sensor->node().handle()] = i;
-  if (!world_) return;
-  // the physics keeps what the sensors that ask for it read (contact and joint forces), and only that
-  for (const auto& e : entries_) {
-    if (const detail::KindDef* def = detail::kindDef(e.sensor->node().kind()); def->watch != nullptr) {
-      def->watch(*world_, e.sensor->node());
-    }
-  }
+  enter(scene_.root());
+}
+
+void Hub::enter(scene::Node& top) {
+  scene::traverse(top, [&](scene::Node& n, const scene::TraversalState&) {
+    const detail::KindDef* def = detail::kindDef(n.kind());
+    if (def == nullptr) return;
+    Entry e;
+    e.sensor = def->make(n, def->kind, seed_);
+    e.reading = Reading(def->kind.channels);
+    const auto at = entries_.emplace(Key{n.path(), n.handle()}, std::move(e)).first;
+    entry_of_[n.handle()] = at;
+    // the physics keeps what the sensors that ask for it read (contact and joint forces), and only that
+    if (world_ && def->watch != nullptr) def->watch(*world_, n);
+  }, {}, scene::Templates::Skip);
+}
+
+bool Hub::add(scene::Node& top, core::Diagnostics& diags) {
+  bool ok = true;
+  scene::traverse(top, [&](scene::Node& n, const scene::TraversalState&) {
+    if (const detail::KindDef* def = detail::kindDef(n.kind())) ok = def->check(scene_, n, diags, model_dir_) && ok;
+  }, {}, scene::Templates::Skip);
+  if (ok) enter(top);
+  return ok;
 }
 
 std::shared_ptr<const Image> Hub::image(scene::NodeHandle camera, std::string& why) {
@@ -57,22 +65,21 @@ std::shared_ptr<const Image> Hub::image(scene::NodeHandle camera, std::string& w
 
 std::shared_ptr<const Image> Hub::lastPicture(scene::NodeHandle camera) const {
   const auto at = entry_of_.find(camera);
-  return at == entry_of_.end() ? nullptr : entries_[at->second].sensor->lastPicture();
+  return at == entry_of_.end() ? nullptr : at->second->second.sensor->lastPicture();
 }
 
 Hub::Entry* Hub::find(scene::NodeHandle h) {
   const auto at = entry_of_.find(h);
-  return at == entry_of_.end() ? nullptr : &entries_[at->second];
+  return at == entry_of_.end() ? nullptr : &at->second->second;
 }
 
 void Hub::forget(scene::Node& top) {
-  std::unordered_set<scene::NodeHandle> gone;
-  scene::traverse(top, [&](scene::Node& n, const scene::TraversalState&) { gone.insert(n.handle()); });
-  const auto before = entries_.size();
-  std::erase_if(entries_, [&](const Entry& e) { return gone.count(e.sensor->node().handle()) > 0; });
-  if (entries_.size() == before) return;
-  entry_of_.clear();
-  for (std::size_t i = 0; i < entries_.size(); ++i) entry_of_[entries_[i].sensor->node().handle()] = i;
+  scene::traverse(top, [&](scene::Node& n, const scene::TraversalState&) {
+    const auto at = entry_of_.find(n.handle());
+    if (at == entry_of_.end()) return;
+    entries_.erase(at->second);
+    entry_of_.erase(at);
+  });
 }
 
 void Hub::push(InputEvent event) {
@@ -87,7 +94,7 @@ void Hub::push(InputEvent event) {
 bool Hub::mayChange() const {
   if (next_input_ < input_.size()) return true;
   return std::any_of(entries_.begin(), entries_.end(),
-                     [](const Entry& e) { return e.sensor->kind().sampling == Sampling::Clock; });
+                     [](const auto& e) { return e.second.sensor->kind().sampling == Sampling::Clock; });
 }
 
 bool Hub::isSensor(scene::NodeHandle node) const { return entry_of_.count(node) > 0; }
@@ -95,7 +102,7 @@ bool Hub::isSensor(scene::NodeHandle node) const { return entry_of_.count(node) 
 const Reading& Hub::reading(scene::NodeHandle sensor) const {
   static const Reading none;
   const auto at = entry_of_.find(sensor);
-  return at == entry_of_.end() ? none : entries_[at->second].reading;
+  return at == entry_of_.end() ? none : at->second->second.reading;
 }
 
 const std::vector<Change>& Hub::update(double now) {
@@ -122,7 +129,7 @@ const std::vector<Change>& Hub::update(double now) {
     const scene::Node* n = scene_.resolve(h);
     return n ? n->path() : std::string();
   };
-  for (auto& e : entries_) {
+  for (auto& [key, e] : entries_) {
     Reading next = e.reading;
     if (!e.sensor->read(ctx, e.reading, next)) continue;
     Change change;

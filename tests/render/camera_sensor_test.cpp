@@ -10,6 +10,7 @@
 #include "gdpn/capture/sensor_imager.h"
 #include "gdpn/platform/headless_context.h"
 #include "gdpn/render/renderer.h"
+#include "gdpn/scene/actions.h"
 
 namespace gdpn::sensors {
 namespace {
@@ -137,6 +138,36 @@ TEST(CameraSensor, AContextDrawsOnAfterAnotherOnItsDisplayIsGone) {
   ASSERT_TRUE(after) << why;
   EXPECT_EQ(after->rgb, sky);  // the same empty sky, not black
   EXPECT_EQ(imager->pictures(), 2u);
+}
+
+TEST(CameraSensor, AMeshThatCannotBeDrawnFailsOnlyThePicturesThatDrawIt) {
+  // a Mesh whose file is not there (no physics read it first): the picture with it fails,
+  // saying where the file is named and which node; a picture without it, later, is drawn
+  core::Diagnostics diags;
+  auto model = model::parseModel(R"(gdpn: 1
+scene:
+  - Transform: {translation: [2.5, 0, 0], children: [{Cube: {size: [1, 20, 20]}}]}
+  - Mesh: {name: broken, file: nowhere.obj}
+  - DepthCamera: {name: eye, width: 16, height: 12}
+)", "broken.gdpn.yaml", diags);
+  ASSERT_TRUE(model) << diags.str();
+  auto scene = model->scene->clone();
+  scene::updateTransforms(scene->root());
+  capture::SensorImager imager(".");
+  Image picture;
+  std::string why;
+  EXPECT_FALSE(imager.render(*scene, *scene->find("eye"), picture, why));
+  EXPECT_NE(why.find("broken.gdpn.yaml:4:"), std::string::npos) << why;
+  EXPECT_NE(why.find("'broken'"), std::string::npos) << why;
+  EXPECT_NE(why.find("nowhere.obj"), std::string::npos) << why;
+  // the mesh deleted: the same camera's next picture is drawn, and so is another scene's
+  scene->destroy(*scene->find("broken"));
+  why.clear();
+  ASSERT_TRUE(imager.render(*scene, *scene->find("eye"), picture, why)) << why;
+  for (float d : picture.depth) ASSERT_NEAR(d, 2.0, 1e-3);
+  Rig rig("  - ColorCamera: {name: eye, width: 8, height: 6}\n");
+  ASSERT_TRUE(imager.render(*rig.scene, *rig.scene->find("eye"), picture, why)) << why;
+  EXPECT_EQ(imager.pictures(), 2u);
 }
 
 TEST(CameraSensor, WithoutAnImagerReadingAPictureSaysWhy) {

@@ -222,6 +222,56 @@ TEST(Render, ACameraSensorShowsItsViewAndALaserScanItsFanWhenSensorsAreDrawn) {
   EXPECT_EQ(added("LaserScan: {count: 7, min_angle: -30, max_angle: 30}"), 7 * ray);
 }
 
+TEST(Render, APictureFromADepthCameraIsItsDepthInGreyNearWhiteFarBlack) {
+  // a DepthCamera with near 0.5 m and far 10.5 m looks along +x at a wall whose face is 3 m
+  // away, with a box whose face is 1.5 m away in the middle: grey 255 (1 - (d - near) / (far -
+  // near)), 191 for the wall, 230 for the box; nothing of the colour view (the sky, the box's
+  // red, the light)
+  core::Diagnostics diags;
+  auto m = model::parseModel(R"(gdpn: 1
+scene:
+  - Light: {kind: directional, direction: [1, 0.2, -0.3]}
+  - Material: {diffuse: [0.9, 0.05, 0.05]}
+  - Transform: {translation: [3.5, 0, 0], children: [{Cube: {size: [1, 40, 40]}}]}
+  - Transform: {translation: [2, 0, 0], children: [{Cube: {size: [1, 0.6, 0.6]}}]}
+  - DepthCamera: {name: eye, width: 64, height: 48, fov: 60, near: 0.5, far: 10.5}
+)", (kData / "depth_camera.gdpn.yaml").string(), diags);
+  ASSERT_TRUE(m) << diags.str();
+  auto sim = model::Simulation::create(*m, diags);
+  ASSERT_TRUE(sim) << diags.str();
+  CaptureOptions o;
+  o.camera = "eye";
+  o.width = 64;
+  o.height = 48;
+  const auto out = (fs::temp_directory_path() / "gdpn_render_depth_camera.png").string();
+  std::string error;
+  ASSERT_TRUE(renderAt(*sim, 0.0, o, out, error)) << error;
+  Picture p;
+  ASSERT_TRUE(readPng(out, p.width, p.height, p.rgb, error)) << error;
+  fs::remove(out);
+  ASSERT_EQ(p.width, 64);
+  ASSERT_EQ(p.height, 48);
+  const auto grey = [](double d) { return static_cast<int>(255.0 * (1.0 - (d - 0.5) / 10.0) + 0.5); };
+  // the box: 0.6 m at 1.5 m over 60 degrees spans about 12 pixels about the middle
+  for (int y = 20; y < 28; ++y) {
+    for (int x = 28; x < 36; ++x) {
+      const auto c = p.at(x, y);
+      ASSERT_NEAR(c[0], grey(1.5), 1) << x << ", " << y;
+      ASSERT_EQ(c[1], c[0]);
+      ASSERT_EQ(c[2], c[0]);
+    }
+  }
+  // the wall beside it; its far ends are farther off the axis, but the depth is along it
+  for (int y = 0; y < 48; ++y) {
+    for (int x : {0, 1, 10, 53, 62, 63}) {
+      const auto c = p.at(x, y);
+      ASSERT_NEAR(c[0], grey(3.0), 1) << x << ", " << y;
+      ASSERT_EQ(c[1], c[0]);
+      ASSERT_EQ(c[2], c[0]);
+    }
+  }
+}
+
 TEST(Render, ATemplateIsNotDrawnNorItsLightsAndCameras) {
   DirectDraw d(R"(gdpn: 1
 scene:

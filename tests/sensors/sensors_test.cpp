@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "gdpn/model/model.h"
 #include "gdpn/sensors/hub.h"
@@ -109,6 +112,51 @@ TEST(Sensors, ARegionThatReportsBodiesOnlyLeavesStaticShapesOut) {
       EXPECT_EQ(box, (std::vector<scene::NodeHandle>{rig.handle("at/b")}));
       EXPECT_TRUE(ray.empty());
     }
+  }
+}
+
+TEST(Sensors, AConeRegionFeelsWhatIsInsideItsSlantedSurfaceAndNothingOutside) {
+  // a cone of radius 1 and height 2 along z, base at z = -1, apex at z = +1: at height z its
+  // radius is (1 - z) / 2. Small spheres and cubes 5 cm (along the radius) inside and outside
+  // its slanted surface at several heights and bearings, and beyond its apex and base; the
+  // cone stands tilted and moved, which moves every item with it
+  struct Probe {
+    double z, off, bearing;  // height in the cone's frame, radial offset from its surface (m), rad
+    bool inside;
+  };
+  std::vector<Probe> probes;
+  int k = 0;
+  for (double z : {-0.8, -0.3, 0.2, 0.7}) {
+    for (double off : {-0.05, 0.05}) probes.push_back({z, off, 0.4 + 1.3 * k++, off < 0});
+  }
+  probes.push_back({1.03, -1.0, 0, false});   // above the apex, on the axis
+  probes.push_back({0.97, -1.0, 0, true});    // just below it
+  probes.push_back({-1.03, -0.5, 1, false});  // below the base
+  probes.push_back({-0.97, -0.5, 1, true});   // just above it
+  std::string text = R"(
+  - World: {gravity: [0, 0, 0]}
+  - Transform:
+      translation: [3, -2, 1]
+      rotation: [1, 1, 0, 40]
+      children:
+        - Region: {name: cone, shape: cone, radius: 1, height: 2}
+)";
+  for (std::size_t i = 0; i < probes.size(); ++i) {
+    const Probe& p = probes[i];
+    const double r = std::max(0.0, (1 - p.z) / 2 + p.off);
+    const std::string shape = i % 2 == 0 ? "Sphere: {radius: 0.01}" : "Cube: {size: [0.02, 0.02, 0.02]}";
+    text += "        - Transform: {name: p" + std::to_string(i) + ", translation: [" +
+            std::to_string(r * std::cos(p.bearing)) + ", " + std::to_string(r * std::sin(p.bearing)) + ", " +
+            std::to_string(p.z) + "], children: [{" + shape + "}]}\n";
+  }
+  Rig rig(text);
+  rig.hub->update(0);
+  const auto& items = rig.hub->reading(rig.handle("#1/cone")).items();
+  for (std::size_t i = 0; i < probes.size(); ++i) {
+    const scene::Node& probe = *rig.scene->find("#1/p" + std::to_string(i));
+    const bool felt = std::find(items.begin(), items.end(), probe.children().front()->handle()) != items.end();
+    EXPECT_EQ(felt, probes[i].inside) << "probe " << i << " at height " << probes[i].z << ", " << probes[i].off
+                                      << " m from the surface";
   }
 }
 

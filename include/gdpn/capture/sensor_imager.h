@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "gdpn/platform/gl_context.h"
 #include "gdpn/platform/target.h"
@@ -30,6 +31,11 @@ class SensorImager : public sensors::Imager {
   /// DepthCamera, metres along its view axis (`far` where nothing is within it). Lights,
   /// materials and fog as drawn; no grid, no sensor overlays, no shadows.
   bool render(const scene::Scene& scene, const scene::Node& camera, sensors::Image& out, std::string& why) override;
+  /// As render(), at `width` x `height` pixels rather than the camera's own size (`gdpn
+  /// render --camera` with --size); `stats` (when given) gets what the draw did. A picture
+  /// that fails (a mesh that cannot be read: `why` says where) leaves later ones unharmed.
+  bool picture(const scene::Scene& scene, const scene::Node& camera, int width, int height, sensors::Image& out,
+               std::string& why, render::DrawStats* stats = nullptr);
   /// Pictures rendered so far.
   [[nodiscard]] std::size_t pictures() const { return pictures_; }
 
@@ -41,6 +47,10 @@ class SensorImager : public sensors::Imager {
   std::size_t pictures_ = 0;
   std::string failed_;  // why the context could not be made (then asked no more)
 };
+
+/// A DepthCamera's picture (`depth`, metres) as grey RGB bytes, 3 a pixel, top row first:
+/// near white, far black, linear from `near` (255) to `far` (0) metres, as the IDE shows it.
+std::vector<std::uint8_t> depthGrey(const sensors::Image& depth, double near, double far);
 
 /// A SensorImager for the model in `model_dir`: what SessionOptions::imager takes.
 std::shared_ptr<sensors::Imager> makeSensorImager(const std::string& model_dir);

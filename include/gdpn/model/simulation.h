@@ -165,7 +165,8 @@ class Simulation {
   /// moved itself, anything else is put under a new Transform. Where a Material is in effect at
   /// `templ`, the copy keeps it (a copy of it goes first under a new Transform when another is
   /// in effect at `parent`); the copy is no template, whatever `templ` is. Its bodies join the
-  /// physics; the trace records it. Refused into `templ` itself or into any template. Returns
+  /// physics, its sensors are read from the next step (refused, with `why`, when one cannot
+  /// work); the trace records it. Refused into `templ` itself or into any template. Returns
   /// the copy, or null and `why`.
   scene::Node* spawn(const scene::Node& templ, scene::Node& parent, std::optional<core::Vec3> at, std::string& why);
   /// Deletes `node` and its subtree from the plant: tokens that hold any of them leave the

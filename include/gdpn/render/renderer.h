@@ -68,7 +68,10 @@ class Renderer {
   Renderer& operator=(const Renderer&) = delete;
   /// Draws `scene` seen by `camera` (world transforms as the scene holds them now).
   DrawStats draw(const scene::Scene& scene, const Camera& camera, const DrawOptions& options);
-  /// Files that could not be read (each named once, with the reason).
+  /// What the last draw could not draw: each Mesh or Terrain node whose file could not be
+  /// read, as `file:line:col: error: ` where its file was named (when known), the node's type
+  /// and path, and why. Empty when the last draw drew everything; a file is read once, so a
+  /// later draw with the node in it fails alike, and one without it is clean.
   [[nodiscard]] const std::vector<std::string>& problems() const;
 
  private:

@@ -5,6 +5,7 @@
 /// tick. Regions and range finders are felt through the physics.
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -64,10 +65,10 @@ struct Change {
 /// Keeps the readings of every sensor node of a scene.
 class Hub {
  public:
-  /// Finds the sensors of `scene`; `world` feels Regions, RangeFinders, laser scans, contacts
-  /// and joints (may be null when the scene has none). `seed`: the model's, from which each
-  /// sensor's noise gets a stream of its own (drawn from its path), so a sensor's noise does
-  /// not depend on which others are read.
+  /// Finds the sensors of `scene` (not those in templates); `world` feels Regions,
+  /// RangeFinders, laser scans, contacts and joints (may be null when the scene has none).
+  /// `seed`: the model's, from which each sensor's noise gets a stream of its own (drawn from
+  /// its path), so a sensor's noise does not depend on which others are read.
   Hub(scene::Scene& scene, physics::World* world, std::uint64_t seed = 1);
   ~Hub();
   Hub(const Hub&) = delete;
@@ -102,7 +103,13 @@ class Hub {
   [[nodiscard]] bool mayChange() const;
   /// True when `node` is a sensor this hub reads.
   [[nodiscard]] bool isSensor(scene::NodeHandle node) const;
-  /// Forgets the sensors in the subtree of `top`, which is about to be deleted.
+  /// Reads the sensors in the subtree of `top` from the next update on, as if they had been
+  /// there from the start (a copy that spawn made, already in the physics): first checked as
+  /// check() does, and none is added when one cannot work (false, with diagnostics). Costs
+  /// in the size of the subtree, not of the scene.
+  bool add(scene::Node& top, core::Diagnostics& diags);
+  /// Forgets the sensors in the subtree of `top`, which is about to be deleted. Costs in the
+  /// size of the subtree, not of the scene.
   void forget(scene::Node& top);
 
  private:
@@ -110,11 +117,16 @@ class Hub {
     std::unique_ptr<detail::Sensor> sensor;
     Reading reading;
   };
+  /// Where an entry is kept: its sensor's path when it was added (and its handle).
+  using Key = std::pair<std::string, scene::NodeHandle>;
   Entry* find(scene::NodeHandle h);
+  /// Makes the entries of the sensors in the subtree of `top` (none in templates).
+  void enter(scene::Node& top);
   scene::Scene& scene_;
   physics::World* world_;
-  std::vector<Entry> entries_;  // in path order
-  std::unordered_map<scene::NodeHandle, std::size_t> entry_of_;  // sensor -> its entry
+  std::uint64_t seed_;
+  std::map<Key, Entry> entries_;  // in path order
+  std::unordered_map<scene::NodeHandle, std::map<Key, Entry>::iterator> entry_of_;  // sensor -> its entry
   std::vector<std::pair<scene::NodeHandle, physics::World::Feel>> felt_;
   std::unordered_map<scene::NodeHandle, physics::World::Feel> felt_of_;  // sensor -> what it felt
   std::vector<Change> changes_;

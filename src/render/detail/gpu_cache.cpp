@@ -16,19 +16,18 @@ GpuCache::~GpuCache() {
   for (auto& [k, t] : terrains_) t.release();
 }
 
-void GpuCache::problem(const std::string& key, const std::string& text) {
-  if (failed_.insert(key).second) problems_.push_back(text);
-}
-
-const GpuCache::MeshGpu* GpuCache::mesh(const scene::Node& n) {
+const GpuCache::MeshGpu* GpuCache::mesh(const scene::Node& n, std::string& why) {
   const std::string file = n.text(field::Mesh::File);
   const std::string path = (std::filesystem::path(dir_) / file).string();
   if (auto it = meshes_.find(path); it != meshes_.end()) return &it->second;
-  if (failed_.count(path) != 0) return nullptr;
-  std::string why;
-  auto data = file.empty() ? nullptr : scene::loadMesh(path, why);
+  if (auto it = failed_.find(path); it != failed_.end()) {
+    why = it->second;
+    return nullptr;
+  }
+  std::string reason;
+  auto data = file.empty() ? nullptr : scene::loadMesh(path, reason);
   if (!data) {
-    problem(path, "cannot read the mesh file '" + file + "': " + why);
+    why = failed_[path] = "cannot read the mesh file '" + file + "': " + (file.empty() ? "none is named" : reason);
     return nullptr;
   }
   MeshGpu m;
@@ -47,7 +46,7 @@ const GpuCache::MeshGpu* GpuCache::mesh(const scene::Node& n) {
   return &(meshes_[path] = std::move(m));
 }
 
-const TerrainGpu* GpuCache::terrain(const scene::Node& n) {
+const TerrainGpu* GpuCache::terrain(const scene::Node& n, std::string& why) {
   const std::string file = n.text(field::Terrain::File);
   const std::string path = (std::filesystem::path(dir_) / file).string();
   const double width = n.number(field::Terrain::Width), depth = n.number(field::Terrain::Depth),
@@ -55,12 +54,15 @@ const TerrainGpu* GpuCache::terrain(const scene::Node& n) {
   const std::string key =
       path + "|" + std::to_string(width) + "|" + std::to_string(depth) + "|" + std::to_string(height_scale);
   if (auto it = terrains_.find(key); it != terrains_.end()) return &it->second;
-  if (failed_.count(key) != 0) return nullptr;
-  std::string why;
-  auto grid = scene::loadHeightGrid(path, why);
+  if (auto it = failed_.find(key); it != failed_.end()) {
+    why = it->second;
+    return nullptr;
+  }
+  std::string reason;
+  auto grid = scene::loadHeightGrid(path, reason);
   TerrainGpu t;
   if (!grid || !t.build(*grid, width, depth, height_scale)) {
-    problem(key, "cannot read the elevation file '" + file + "': " + (grid ? "too few samples" : why));
+    why = failed_[key] = "cannot read the elevation file '" + file + "': " + (grid ? "too few samples" : reason);
     return nullptr;
   }
   return &(terrains_[key] = t);

@@ -1,11 +1,10 @@
 #pragma once
 /// \file
 /// GPU copies of what shape nodes load from files (meshes, elevation grids), kept between
-/// frames, and the files that could not be read.
+/// frames, and why the files that could not be read failed.
 
 #include <map>
 #include <memory>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -30,21 +29,18 @@ class GpuCache {
   ~GpuCache();
   GpuCache(const GpuCache&) = delete;
   GpuCache& operator=(const GpuCache&) = delete;
-  /// The mesh of Mesh node `n`; null when its file cannot be read (a problem then).
-  const MeshGpu* mesh(const scene::Node& n);
-  /// The terrain of Terrain node `n` at its size; null when its file cannot be read (a problem
-  /// then).
-  const TerrainGpu* terrain(const scene::Node& n);
-  /// Files that could not be read (each named once, with the reason).
-  [[nodiscard]] const std::vector<std::string>& problems() const { return problems_; }
+  /// The mesh of Mesh node `n`; null with `why` when its file cannot be read (tried once:
+  /// later asks get the same `why`).
+  const MeshGpu* mesh(const scene::Node& n, std::string& why);
+  /// The terrain of Terrain node `n` at its size; null with `why` when its file cannot be read
+  /// (tried once).
+  const TerrainGpu* terrain(const scene::Node& n, std::string& why);
 
  private:
-  void problem(const std::string& key, const std::string& text);
   std::string dir_;
   std::map<std::string, MeshGpu> meshes_;        // by path
   std::map<std::string, TerrainGpu> terrains_;   // by path and size
-  std::set<std::string> failed_;                 // keys that failed
-  std::vector<std::string> problems_;
+  std::map<std::string, std::string> failed_;    // keys that failed, and why
 };
 
 }  // namespace gdpn::render::detail
