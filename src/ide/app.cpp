@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iterator>
+#include <string_view>
 #include <utility>
 
 #include "action_run.h"
@@ -265,9 +266,11 @@ void App::paste() {
     message = "the run's plant is not edited: Reset to edit the model";
     return;
   }
+  // an empty clipboard (or one holding no text) is nothing to paste: nothing happens
   const char* text = ImGui::GetClipboardText();
+  if (text == nullptr || std::string_view(text).find_first_not_of(" \t\r\n") == std::string_view::npos) return;
   core::Diagnostics diags;
-  auto m = text != nullptr ? model::parseModel(text, "<clipboard>", diags) : std::nullopt;
+  auto m = model::parseModel(text, "<clipboard>", diags);
   // a field that names a parameter this model does not declare keeps its value alone
   if (m) model::keepParamsOf(*m, doc_->model().params);
   // a model file's places and transitions go into the net view's page
@@ -755,7 +758,9 @@ constexpr int kWorldLevels = static_cast<int>(std::size(kWorldScales));
 }  // namespace
 
 bool App::busy() const {
-  return run_.mode() == RunMode::Running || world.manipulating.handle != Handle::None || ImGui::IsAnyItemActive();
+  // only a run that goes on: an edit (a handle or a field dragged, a field typed in) with nothing
+  // running keeps the whole resolution, however slow the frames
+  return run_.mode() == RunMode::Running;
 }
 
 double App::worldScale() const { return busy() ? kWorldScales[world.level] : 1.0; }
@@ -764,9 +769,9 @@ void App::frame(float width, float height, double wall_seconds) {
   // the frame time smoothed (not the rate: one very short frame, such as the first, would
   // read thousands of frames a second and take many frames to fade)
   if (wall_seconds > 0) fps = 1.0 / (fps == 0 ? wall_seconds : 0.9 / fps + 0.1 * wall_seconds);
-  // a software renderer cannot fill a large world view 30 times a second: while running, its
-  // resolution follows the frame rate, a step every half second at most (a headless frame
-  // stands for 1/60 s and never lowers it)
+  // a software renderer cannot fill a large world view 30 times a second: while running (and
+  // only then), its resolution follows the frame rate, a step every half second at most (a
+  // headless frame stands for 1/60 s and never lowers it, unless a replay says it is slower)
   world.level_age += wall_seconds;
   if (busy() && world.level_age >= 0.5) {
     if (fps < 30 && world.level + 1 < kWorldLevels) {

@@ -354,12 +354,12 @@ class App {
   std::string message;              ///< the status bar's message line
   std::string copied;               ///< what the last copy put on the clipboard (a model file)
   double fps = 0;                   ///< frames per second, smoothed
-  /// The share of its pixels (per side) the world view is drawn at: 1 unless busy (running, or a
-  /// drag of a manipulator or a field), where a frame rate under 30 fps lowers it in steps to
-  /// 0.5 and one over 45 raises it again.
+  /// The share of its pixels (per side) the world view is drawn at: 1 unless busy (running),
+  /// where a frame rate under 30 fps lowers it in steps to 0.5 and one over 45 raises it again.
+  /// Edits never lower it.
   [[nodiscard]] double worldScale() const;
-  /// True while the model runs or a manipulator or a field is dragged: the world view may be
-  /// drawn at a lower resolution to keep the frame rate.
+  /// True while the model runs (not while the user edits with nothing running): the world view
+  /// may be drawn at a lower resolution to keep the frame rate.
   [[nodiscard]] bool busy() const;
   bool screenshot_requested = false;  ///< the toolbar asked for a picture of the next frame
   int screenshots = 0;              ///< pictures taken so far (their names count up)

@@ -7,25 +7,39 @@
 namespace gdpn::ide {
 
 std::string UndoStack::push(std::unique_ptr<Command> command, Document& doc) {
+  Selection before = doc.selection();
   if (auto why = command->apply(doc); !why.empty()) return why;
   doc.touched(command->changesScene());
   undone_.clear();
   // a drag: the new edit joins the step it continues
   const auto key = command->mergeKey();
-  if (!sealed_ && key != 0 && !done_.empty() && done_.back()->mergeKey() == key) {
-    done_.back()->absorb(*command);
+  if (!sealed_ && key != 0 && !done_.empty() && done_.back().command->mergeKey() == key) {
+    done_.back().command->absorb(*command);
     return {};
   }
-  done_.push_back(std::move(command));
+  done_.push_back({std::move(command), std::move(before), {}});
   sealed_ = false;
   return {};
 }
 
+namespace {
+
+/// Selects `selection` in `doc` when it still names something there, else nothing.
+void selectIfThere(Document& doc, const Selection& selection) {
+  doc.select(namesSomething(doc, selection) ? selection : Selection{});
+}
+
+}  // namespace
+
 bool UndoStack::undo(Document& doc) {
   if (done_.empty()) return false;
-  done_.back()->revert(doc);
-  doc.touched(done_.back()->changesScene());
-  undone_.push_back(std::move(done_.back()));
+  auto& step = done_.back();
+  step.after = doc.selection();
+  step.command->revert(doc);
+  doc.touched(step.command->changesScene());
+  // what was selected before the step (a pasted node is gone again)
+  selectIfThere(doc, step.before);
+  undone_.push_back(std::move(step));
   done_.pop_back();
   sealed_ = true;
   return true;
@@ -33,10 +47,12 @@ bool UndoStack::undo(Document& doc) {
 
 bool UndoStack::redo(Document& doc) {
   if (undone_.empty()) return false;
+  auto& step = undone_.back();
   // a command that applied once applies again on the state it was undone to
-  (void)undone_.back()->apply(doc);
-  doc.touched(undone_.back()->changesScene());
-  done_.push_back(std::move(undone_.back()));
+  (void)step.command->apply(doc);
+  doc.touched(step.command->changesScene());
+  selectIfThere(doc, step.after);
+  done_.push_back(std::move(step));
   undone_.pop_back();
   sealed_ = true;
   return true;

@@ -289,9 +289,7 @@ bool Document::reload() {
   adopt(std::move(*model));
   diagnostics_ = std::move(diags);
   undo_.clear();
-  if (selection_.kind == SelectionKind::Node && (!scene_ || scene_->find(selection_.name) == nullptr)) {
-    selection_ = {};
-  }
+  if (!namesSomething(*this, selection_)) selection_ = {};
   return true;
 }
 

@@ -18,6 +18,7 @@
 #include "detail/imgui_input.h"
 #include "detail/input_queue.h"
 #include "detail/key_chord.h"
+#include "detail/termination.h"
 #include "gdpn/capture/sensor_imager.h"
 #include "gdpn/core/text.h"
 #include "gdpn/platform/headless_context.h"
@@ -39,13 +40,15 @@ class Driver {
   void frame() {
     auto& io = ImGui::GetIO();
     io.DisplaySize = {static_cast<float>(w_), static_cast<float>(h_)};
-    io.DeltaTime = static_cast<float>(kFrame);
+    io.DeltaTime = static_cast<float>(seconds);
     feedImGui(queue_, queue_.next(), io);
     io.MousePos = {queue_.mouseX(), queue_.mouseY()};
     ImGui_ImplOpenGL3_NewFrame();
     target_.bind();
-    drawFrame(app_, w_, h_, kFrame);
+    drawFrame(app_, w_, h_, seconds);
   }
+  /// Wall seconds a frame stands for: 1/60 s, longer for `frames: {seconds: S}` (a slow machine).
+  double seconds = kFrame;
   /// A frame, and more until every queued event has reached the UI.
   void drain() {
     do frame();
@@ -213,7 +216,9 @@ bool perform(App& app, Driver& d, const Action& given, const IdeOptions& o, int 
       d.wheel(a.x, a.y, a.number);
       break;
     case ActionKind::Frames:
-      for (int i = 0; i < static_cast<int>(a.number); ++i) d.frame();
+      d.seconds = a.seconds > 0 ? a.seconds : kFrame;
+      for (int i = 0; i < static_cast<int>(a.number) && !terminationFlag().load(); ++i) d.frame();
+      d.seconds = kFrame;
       break;
     case ActionKind::Screenshot:
       d.frame();
@@ -260,18 +265,22 @@ int runHeadless(const IdeOptions& o, std::unique_ptr<Document> doc, const std::v
   // selects all) by the codes the replay's keys use, as the window's GLFW backend maps them
   mapGlfwKeys(ImGui::GetIO());
   loadSettings(app);
+  app.run().stopOn(&terminationFlag());
   Driver d(app, o.width, o.height, target);
   // two frames so that every view has its size
   d.frame();
   d.frame();
   int code = 0;
   for (const auto& a : actions) {
+    // a signal asked the IDE to end: now, writing nothing (no report, no settings)
+    if (terminationFlag().load()) endByTermination();
     if (!perform(app, d, a, o, o.width, o.height)) {
       code = 1;
       break;
     }
     if (app.quitRequested()) break;  // File > Quit: the actions after it are not done
   }
+  if (terminationFlag().load()) endByTermination();
   if (code == 0) {
     d.frame();
     if (!writeOutputs(app, o.width, o.height, o.screenshot, o.report)) code = 1;

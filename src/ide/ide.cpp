@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "detail/platforms.h"
+#include "detail/termination.h"
 #include "gdpn/model/model.h"
 
 namespace gdpn::ide {
@@ -31,6 +32,9 @@ bool newModel(const std::string& path) {
 }  // namespace
 
 int runIde(const IdeOptions& o) {
+  // SIGTERM, SIGINT and SIGHUP end the IDE between two frames, even where a launcher left them
+  // ignored
+  catchTermination();
   core::Diagnostics diags;
   std::unique_ptr<Document> doc;
   if (newModel(o.model)) {
@@ -42,6 +46,7 @@ int runIde(const IdeOptions& o) {
     diags.print(std::cerr);
     return 1;
   }
+  if (terminationFlag().load()) endByTermination();
   if (!o.headless) return runWindow(o, std::move(doc));
   std::vector<Action> actions;
   if (!o.replay.empty()) {

@@ -50,7 +50,7 @@ class ActionReader {
     }
     if (key == "run") return number(v, a, ActionKind::RunFor, false);
     if (key == "steps") return number(v, a, ActionKind::Steps, true);
-    if (key == "frames") return number(v, a, ActionKind::Frames, true);
+    if (key == "frames") return v.IsMap() ? slowFrames(v, a) : number(v, a, ActionKind::Frames, true);
     if (key == "click") {
       a.kind = ActionKind::Click;
       if (v.IsMap()) {
@@ -121,6 +121,17 @@ class ActionReader {
       else if (name == "right") a.button = 1;
       else if (name == "middle") a.button = 2;
       else return fail(b, "expects a button: left, right or middle");
+    }
+    return true;
+  }
+  /// `frames: {count: N, seconds: S}`: N frames, each standing for S wall seconds.
+  bool slowFrames(const YAML::Node& v, Action& a) {
+    const char* kUsage = "expects {count: N, seconds: S}: N frames, each S wall seconds long (at most 10)";
+    if (!v["count"] || !v["seconds"] || v.size() != 2) return fail(v, kUsage);
+    if (!number(v["count"], a, ActionKind::Frames, true)) return false;
+    const auto s = v["seconds"];
+    if (!s.IsScalar() || !YAML::convert<double>::decode(s, a.seconds) || !(a.seconds > 0 && a.seconds <= 10)) {
+      return fail(s, kUsage);
     }
     return true;
   }

@@ -74,10 +74,10 @@ void RunControl::pause() {
 void RunControl::takeSteps(std::int64_t n) {
   if (!session_ || n <= 0) return;
   if (plant_only_) {
-    for (std::int64_t i = 0; i < n; ++i) session_->stepPlant();
+    for (std::int64_t i = 0; i < n && (stop_ == nullptr || !stop_->load()); ++i) session_->stepPlant();
     return;
   }
-  const auto outcome = session_->run(model::RunLimits{.until = {}, .steps = steps() + n});
+  const auto outcome = session_->run(model::RunLimits{.until = {}, .steps = steps() + n}, {}, stop_);
   if (outcome.reason != model::StopReason::Until) {
     mode_ = RunMode::Paused;
     message_ = std::string("stopped: ") + model::stopReasonName(outcome.reason);

@@ -20,12 +20,28 @@
 #include "detail/imgui_input.h"
 #include "detail/input_queue.h"
 #include "detail/platforms.h"
+#include "detail/termination.h"
 
 namespace gdpn::ide {
 
 namespace {
 
-void onGlfwError(int code, const char* text) { std::cerr << "gdpn ide: GLFW error " << code << ": " << text << "\n"; }
+/// True while the clipboard is read: an empty one (or one holding no text) is nothing to
+/// paste, not an error to print.
+bool g_reading_clipboard = false;
+
+void onGlfwError(int code, const char* text) {
+  if (code == GLFW_FORMAT_UNAVAILABLE && g_reading_clipboard) return;
+  std::cerr << "gdpn ide: GLFW error " << code << ": " << text << "\n";
+}
+
+/// The clipboard's text for ImGui (Paste, Ctrl+V in a field); null when it holds none.
+const char* clipboardText(void* window) {
+  g_reading_clipboard = true;
+  const char* text = glfwGetClipboardString(static_cast<GLFWwindow*>(window));
+  g_reading_clipboard = false;
+  return text;
+}
 
 // GLFW's input events, queued (the window's user pointer is the queue)
 InputQueue& windowQueue(GLFWwindow* window) { return *static_cast<InputQueue*>(glfwGetWindowUserPointer(window)); }
@@ -98,6 +114,7 @@ int runWindow(const IdeOptions& o, std::unique_ptr<Document> doc) {
     setUpImGui(app);
     InputQueue queue;
     ImGui_ImplGlfw_InitForOpenGL(window, false);
+    ImGui::GetIO().GetClipboardTextFn = clipboardText;
     queueInput(window, queue);
     loadSettings(app);
     if (o.quit_after > 0) app.run().run(RunSpeed::RealTime);
@@ -105,8 +122,11 @@ int runWindow(const IdeOptions& o, std::unique_ptr<Document> doc) {
     double last = start;
     int drawn = 0;  // frames drawn, up to 2
     std::string shown_title;
+    app.run().stopOn(&terminationFlag());
     while (!app.quitRequested()) {
       glfwPollEvents();
+      // a signal asked the IDE to end: now, saving nothing (no question, no settings)
+      if (terminationFlag().load()) endByTermination();
       // the window's close button is File > Quit: "save changes?" first where edits would be lost
       if (glfwWindowShouldClose(window) == GLFW_TRUE) {
         glfwSetWindowShouldClose(window, GLFW_FALSE);

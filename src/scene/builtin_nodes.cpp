@@ -60,6 +60,22 @@ NodeType type(NodeKind kind, std::string name, Category category, bool children,
 
 constexpr double kInf = 1e300;
 
+/// `d` for a length or another amount that must be above 0 (0 itself refused: a Cube of size 0
+/// on one axis, a sphere of radius 0).
+FieldDesc positive(FieldDesc d) {
+  d.min = 0;
+  d.min_open = true;
+  return d;
+}
+
+/// `d`, a field of a Joint's axis 1, in `unit` (a hinge's: deg, deg/s, N m), and in
+/// `slider_unit` in a slider (m, m/s, N): its unit follows the joint's `kind`.
+FieldDesc axis1(FieldDesc d, std::string slider_unit) {
+  d.unit_follows = "kind";
+  d.units_by_choice = {{"slider", std::move(slider_unit)}};
+  return d;
+}
+
 /// The noise a sensor may add to each number it reads (ids `noise`, then bias and resolution
 /// after it, in `unit`), drawn from its own stream of the model's generator.
 template <FieldId F>
@@ -91,7 +107,7 @@ void registerBuiltinNodes(TypeRegistry& r) {
   r.add(type(NodeKind::Transform, "Transform", Category::Group, true, "places its children: scale, then rotate, then translate",
              {f(field::Transform::Translation, "translation", K::Vec3, V3{0, 0, 0}, "m", "offset from the parent"),
               f(field::Transform::Rotation, "rotation", K::Rotation, V4{0, 0, 1, 0}, "axis, deg", "axis and angle of rotation"),
-              f(field::Transform::Scale, "scale", K::Vec3, V3{1, 1, 1}, "", "scale factors along x, y, z", 1e-9, kInf)}),
+              positive(f(field::Transform::Scale, "scale", K::Vec3, V3{1, 1, 1}, "", "scale factors along x, y, z"))}),
         "Group");
   // looks
   r.add(type(NodeKind::Material, "Material", Category::Look, false, "how the shapes after it look, and how they touch",
@@ -120,29 +136,31 @@ void registerBuiltinNodes(TypeRegistry& r) {
   r.add(type(NodeKind::Fog, "Fog", Category::Look, false, "fog over the whole scene",
              {choice(field::Fog::Kind, "kind", {"linear", "exponential"}, "how it thickens"),
               f(field::Fog::Color, "color", K::Color, V3{0.7, 0.7, 0.7}, "", "colour", 0, 1),
-              f(field::Fog::Visibility, "visibility", K::Float, 50.0, "m", "distance at which things vanish", 0, kInf)}));
+              positive(f(field::Fog::Visibility, "visibility", K::Float, 50.0, "m", "distance at which things vanish"))}));
   // shapes: the geometry of what they stand in; under a Body they are part of it
   r.add(type(NodeKind::Cube, "Cube", Category::Shape, false, "a box centred on its origin",
-             {f(field::Cube::Size, "size", K::Vec3, V3{1, 1, 1}, "m", "edge lengths along x, y, z", 0, kInf)}));
+             {positive(f(field::Cube::Size, "size", K::Vec3, V3{1, 1, 1}, "m", "edge lengths along x, y, z"))}));
   r.add(type(NodeKind::Sphere, "Sphere", Category::Shape, false, "a sphere centred on its origin",
-             {f(field::Sphere::Radius, "radius", K::Float, 0.5, "m", "radius", 0, kInf)}));
+             {positive(f(field::Sphere::Radius, "radius", K::Float, 0.5, "m", "radius"))}));
   r.add(type(NodeKind::Cylinder, "Cylinder", Category::Shape, false, "a cylinder along z, centred on its origin",
-             {f(field::Cylinder::Radius, "radius", K::Float, 0.5, "m", "radius", 0, kInf), f(field::Cylinder::Height, "height", K::Float, 1.0, "m", "height", 0, kInf)}));
+             {positive(f(field::Cylinder::Radius, "radius", K::Float, 0.5, "m", "radius")),
+              positive(f(field::Cylinder::Height, "height", K::Float, 1.0, "m", "height"))}));
   r.add(type(NodeKind::Cone, "Cone", Category::Shape, false, "a cone along z, base at -height/2, tip at +height/2",
-             {f(field::Cone::Radius, "radius", K::Float, 0.5, "m", "base radius", 0, kInf), f(field::Cone::Height, "height", K::Float, 1.0, "m", "height", 0, kInf)}));
+             {positive(f(field::Cone::Radius, "radius", K::Float, 0.5, "m", "base radius")),
+              positive(f(field::Cone::Height, "height", K::Float, 1.0, "m", "height"))}));
   r.add(type(NodeKind::Plane, "Plane", Category::Shape, false, "an endless flat ground through its origin",
              {f(field::Plane::Normal, "normal", K::Vec3, V3{0, 0, 1}, "", "which way the plane faces")}));
   r.add(type(NodeKind::Mesh, "Mesh", Category::Shape, false, "triangles from a file",
              {f(field::Mesh::File, "file", K::File, std::string(), "", "mesh file (obj, stl, 3ds, gltf, dae, ply, wrl, iv)"),
               f(field::Mesh::Part, "part", K::Int, std::int64_t{-1}, "", "which part of the file (-1: all of them)", -1, 1e9),
-              f(field::Mesh::Scale, "scale", K::Vec3, V3{1, 1, 1}, "", "scale factors", 1e-9, kInf),
+              positive(f(field::Mesh::Scale, "scale", K::Vec3, V3{1, 1, 1}, "", "scale factors")),
               choice(field::Mesh::Collision, "collision", {"trimesh", "box", "convex"}, "what the physics collides with: the triangles, "
                      "their bounding box, or their convex hull")}));
   r.add(type(NodeKind::Terrain, "Terrain", Category::Shape, false,
              "ground from an elevation file (GeoTIFF or another DEM, or a greyscale image), centred on its origin",
              {f(field::Terrain::File, "file", K::File, std::string(), "", "elevation file, read through GDAL"),
-              f(field::Terrain::Width, "width", K::Float, 100.0, "m", "extent along x", 1e-9, kInf),
-              f(field::Terrain::Depth, "depth", K::Float, 100.0, "m", "extent along y", 1e-9, kInf),
+              positive(f(field::Terrain::Width, "width", K::Float, 100.0, "m", "extent along x")),
+              positive(f(field::Terrain::Depth, "depth", K::Float, 100.0, "m", "extent along y")),
               f(field::Terrain::HeightScale, "height_scale", K::Float, 1.0, "m", "metres per unit of the file's values")}));
   // dynamics
   r.add(type(NodeKind::World, "World", Category::Dynamics, false, "settings of the rigid-body physics",
@@ -162,17 +180,17 @@ void registerBuiltinNodes(TypeRegistry& r) {
               f(field::Joint::Anchor, "anchor", K::Vec3, V3{0, 0, 0}, "m", "the joint's point, in the joint's frame"),
               f(field::Joint::Axis1, "axis1", K::Vec3, V3{0, 0, 1}, "", "first axis"),
               f(field::Joint::Axis2, "axis2", K::Vec3, V3{1, 0, 0}, "", "second axis (universal, hinge2)"),
-              f(field::Joint::Lo1, "lo1", K::Float, -kInf, "deg or m", "lower limit on axis 1", -kInf, kInf),
-              f(field::Joint::Hi1, "hi1", K::Float, kInf, "deg or m", "upper limit on axis 1", -kInf, kInf),
+              axis1(f(field::Joint::Lo1, "lo1", K::Float, -kInf, "deg", "lower limit on axis 1", -kInf, kInf), "m"),
+              axis1(f(field::Joint::Hi1, "hi1", K::Float, kInf, "deg", "upper limit on axis 1", -kInf, kInf), "m"),
               f(field::Joint::Lo2, "lo2", K::Float, -kInf, "deg", "lower limit on axis 2", -kInf, kInf),
               f(field::Joint::Hi2, "hi2", K::Float, kInf, "deg", "upper limit on axis 2", -kInf, kInf),
-              f(field::Joint::Vel1, "vel1", K::Float, 0.0, "deg/s or m/s", "motor target velocity on axis 1"),
-              f(field::Joint::Fmax1, "fmax1", K::Float, 0.0, "N m or N", "motor's greatest force on axis 1 (0: no motor)", 0, kHuge),
+              axis1(f(field::Joint::Vel1, "vel1", K::Float, 0.0, "deg/s", "motor target velocity on axis 1"), "m/s"),
+              axis1(f(field::Joint::Fmax1, "fmax1", K::Float, 0.0, "N m", "motor's greatest force on axis 1 (0: no motor)", 0, kHuge), "N"),
               f(field::Joint::Vel2, "vel2", K::Float, 0.0, "deg/s", "motor target velocity on axis 2"),
               f(field::Joint::Fmax2, "fmax2", K::Float, 0.0, "N m", "motor's greatest force on axis 2", 0, kHuge),
               choice(field::Joint::Control, "control", {"velocity", "position"},
                      "what the motor on axis 1 follows: vel1, or target1 (at most |vel1| fast when vel1 is not 0)"),
-              f(field::Joint::Target1, "target1", K::Float, 0.0, "deg or m", "position the motor drives axis 1 to, in position control"),
+              axis1(f(field::Joint::Target1, "target1", K::Float, 0.0, "deg", "position the motor drives axis 1 to, in position control"), "m"),
               f(field::Joint::ServoTime, "servo_time", K::Float, 0.1, "s",
                 "position control: the motor's speed is the error over this time, so an error shrinks by e in it", 1e-3,
                 kInf)}));
@@ -184,8 +202,8 @@ void registerBuiltinNodes(TypeRegistry& r) {
                 "turns about an axis parallel to the conveyor's z this far to the left (negative: to the right)")}));
   r.add(type(NodeKind::GradientField, "GradientField", Category::Field, false,
              "a 2D grid of vectors over a region of the ground, centred on its origin",
-             {f(field::GradientField::Width, "width", K::Float, 10.0, "m", "extent along x", 1e-9, kInf),
-              f(field::GradientField::Depth, "depth", K::Float, 10.0, "m", "extent along y", 1e-9, kInf),
+             {positive(f(field::GradientField::Width, "width", K::Float, 10.0, "m", "extent along x")),
+              positive(f(field::GradientField::Depth, "depth", K::Float, 10.0, "m", "extent along y")),
               f(field::GradientField::Nx, "nx", K::Int, std::int64_t{2}, "", "grid points along x", 2, 1e6),
               f(field::GradientField::Ny, "ny", K::Int, std::int64_t{2}, "", "grid points along y", 2, 1e6),
               f(field::GradientField::Vectors, "vectors", K::FloatList, std::vector<double>(8, 0.0), "",
@@ -193,10 +211,10 @@ void registerBuiltinNodes(TypeRegistry& r) {
   // sensors: they feel the plant and make no contact forces
   r.add(type(NodeKind::Region, "Region", Category::Sensor, false, "reports the bodies and shapes inside its volume",
              {choice(field::Region::Shape, "shape", {"box", "sphere", "cylinder", "cone", "ray"}, "the volume's shape"),
-              f(field::Region::Size, "size", K::Vec3, V3{1, 1, 1}, "m", "edge lengths of a box"),
-              f(field::Region::Radius, "radius", K::Float, 0.5, "m", "radius of a sphere, cylinder or cone", 0, kInf),
-              f(field::Region::Height, "height", K::Float, 1.0, "m", "height of a cylinder or cone (along z)", 0, kInf),
-              f(field::Region::Length, "length", K::Float, 1.0, "m", "length of a ray (along +x)", 0, kInf),
+              positive(f(field::Region::Size, "size", K::Vec3, V3{1, 1, 1}, "m", "edge lengths of a box")),
+              positive(f(field::Region::Radius, "radius", K::Float, 0.5, "m", "radius of a sphere, cylinder or cone")),
+              positive(f(field::Region::Height, "height", K::Float, 1.0, "m", "height of a cylinder or cone (along z)")),
+              positive(f(field::Region::Length, "length", K::Float, 1.0, "m", "length of a ray (along +x)")),
               choice(field::Region::Scope, "scope", {"world", "siblings", "parent"},
                      "what it feels: its siblings and their subtrees, its parent's subtree, or everything"),
               choice(field::Region::Report, "report", {"all", "bodies"},
@@ -205,7 +223,7 @@ void registerBuiltinNodes(TypeRegistry& r) {
                 "drawn always, not only with the sensor volumes: a ray as a red beam, a volume translucent red; "
                 "green while it holds something")}));
   r.add(type(NodeKind::RangeFinder, "RangeFinder", Category::Sensor, false, "the distance along a ray (+x) to the first thing it hits",
-             with({f(field::RangeFinder::Length, "length", K::Float, 10.0, "m", "how far it sees", 0, kInf),
+             with({positive(f(field::RangeFinder::Length, "length", K::Float, 10.0, "m", "how far it sees")),
                    choice(field::RangeFinder::Scope, "scope", {"world", "siblings", "parent"}, "what it sees")},
                   noise(field::RangeFinder::Noise, "m"))));
   r.add(type(NodeKind::GradientSensor, "GradientSensor", Category::Sensor, false,
@@ -215,7 +233,7 @@ void registerBuiltinNodes(TypeRegistry& r) {
              "key presses, while the viewpoint is inside its parent's bounding box", {}));
   r.add(type(NodeKind::MouseSensor, "MouseSensor", Category::Sensor, false, "clicks (ray picks) on its parent's subtree", {}));
   r.add(type(NodeKind::TimeSensor, "TimeSensor", Category::Sensor, false, "ticks at a period",
-             {f(field::TimeSensor::Period, "period", K::Float, 1.0, "s", "time between ticks", 1e-9, kInf),
+             {positive(f(field::TimeSensor::Period, "period", K::Float, 1.0, "s", "time between ticks")),
               f(field::TimeSensor::Offset, "offset", K::Float, 0.0, "s", "time of the first tick", 0, kInf)}));
   // sensors of issue 23: each samples at its rate and may add noise
   using CC = field::ColorCamera;
@@ -236,7 +254,7 @@ void registerBuiltinNodes(TypeRegistry& r) {
              with({f(LS::Count, "count", K::Int, std::int64_t{360}, "", "rays", 1, 1e6),
                    f(LS::MinAngle, "min_angle", K::Float, -180.0, "deg", "angle of the first ray from +x", -360, 360),
                    f(LS::MaxAngle, "max_angle", K::Float, 180.0, "deg", "angle of the last ray (a whole turn: the first again, not repeated)", -360, 360),
-                   f(LS::Length, "length", K::Float, 10.0, "m", "how far each ray sees", 0, kInf),
+                   positive(f(LS::Length, "length", K::Float, 10.0, "m", "how far each ray sees")),
                    choice(LS::Scope, "scope", {"world", "siblings", "parent"}, "what it sees"), rate(LS::Rate, 10.0)},
                   noise(LS::Noise, "m"))));
   r.add(type(NodeKind::Imu, "Imu", Category::Sensor, false,

@@ -330,13 +330,21 @@ bool sameTree(const Node& a, const Node& b) {
 
 bool Scene::sameAs(const Scene& other) const { return sameTree(*root_, *other.root_); }
 
+const std::string& unitOf(const Node& n, std::size_t i) {
+  const FieldDesc& f = *n.type().fields[i];
+  if (f.unit_follows.empty()) return f.unit;
+  const int by = n.type().fieldIndex(f.unit_follows);
+  GDPN_ASSERT(by >= 0, "a unit follows a field of the same type");
+  const auto& word = n.value(static_cast<std::size_t>(by));
+  return std::holds_alternative<std::string>(word) ? f.unitFor(std::get<std::string>(word)) : f.unit;
+}
+
 bool isAngular(const Node& n, std::size_t i) {
   const FieldDesc& f = *n.type().fields[i];
   if (f.kind == FieldKind::Rotation) return true;
   if (f.kind != FieldKind::Float) return false;
-  if (f.unit == "deg" || f.unit == "deg/s") return true;
-  if (f.unit != "deg or m" && f.unit != "deg/s or m/s") return false;
-  return n.kind() != NodeKind::Joint || n.choice<JointKind>(field::Joint::Kind) != JointKind::Slider;
+  const auto& unit = unitOf(n, i);
+  return unit == "deg" || unit == "deg/s";
 }
 
 namespace {

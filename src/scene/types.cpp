@@ -26,12 +26,30 @@ const char* fieldKindName(FieldKind kind) {
 
 std::string FieldDesc::rangeError(double x) const {
   if (!std::isfinite(x)) return "'" + name + "' must be a finite number, got " + core::formatDouble(x);
-  if (x >= min && x <= max) return {};
+  if ((min_open ? x > min : x >= min) && x <= max) return {};
   const bool low = boundedBelow() || x < min, high = boundedAbove() || x > max;
-  std::string rule = low && high ? "must lie in [" + core::formatDouble(min) + ", " + core::formatDouble(max) + "]"
-                     : low       ? "must be at least " + core::formatDouble(min)
+  std::string rule = low && high ? "must lie in " + rangeText()
+                     : low       ? (min_open ? "must be above " : "must be at least ") + core::formatDouble(min)
                                  : "must be at most " + core::formatDouble(max);
   return "'" + name + "' " + rule + ", got " + core::formatDouble(x);
+}
+
+std::string FieldDesc::rangeText() const {
+  if (kind == FieldKind::Enum) {
+    std::string s;
+    for (const auto& c : choices) s += (s.empty() ? "" : " | ") + c;
+    return s;
+  }
+  if (!boundedBelow() && !boundedAbove()) return "";
+  return (min_open ? "(" : "[") + (boundedBelow() ? core::formatDouble(min) : std::string("-inf")) + ", " +
+         (boundedAbove() ? core::formatDouble(max) : std::string("inf")) + "]";
+}
+
+const std::string& FieldDesc::unitFor(std::string_view choice) const {
+  for (const auto& [word, u] : units_by_choice) {
+    if (word == choice) return u;
+  }
+  return unit;
 }
 
 std::size_t valueIndex(FieldKind kind) {

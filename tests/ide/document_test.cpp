@@ -10,6 +10,8 @@
 #include <iterator>
 
 #include "gdpn/ide/document.h"
+#include "gdpn/ide/net_edit.h"
+#include "gdpn/ide/scene_edit.h"
 #include "gdpn/ide/set_field.h"
 #include "ide/ide_model.h"
 #include "support/scratch.h"
@@ -313,6 +315,64 @@ TEST_F(DocumentTest, AnAutosaveIsOfferedOnlyWhenNewerThanTheFileAndDifferent) {
   next->discardAutosave();
   EXPECT_FALSE(std::filesystem::exists(next->autosavePath()));
   unsetenv("XDG_STATE_HOME");
+}
+
+TEST_F(DocumentTest, UndoSelectsWhatWasSelectedBeforeTheStepNeverAThingItTookAway) {
+  auto doc = openBin();
+  doc->select(Selection::node("drop/paint"));
+  // a copy of the box pasted under drop and selected, as the IDE's Paste does
+  auto fragment = std::make_shared<scene::Scene>(doc->scene()->types());
+  fragment->copy(*doc->scene()->find("drop/box"), fragment->root());
+  auto paste = std::make_unique<SceneEditCommand>(SceneEdit{SceneEditKind::Paste, "drop", {}, {}, false, fragment});
+  const auto* pasted = paste.get();
+  ASSERT_EQ(doc->execute(std::move(paste)), "");
+  const auto copy = Selection::node(pasted->made());
+  ASSERT_TRUE(namesSomething(*doc, copy));
+  doc->select(copy);
+  // undone: the copy is gone, and the inspector is back on what was selected before
+  ASSERT_TRUE(doc->undo());
+  EXPECT_FALSE(namesSomething(*doc, copy));
+  EXPECT_EQ(doc->selection(), Selection::node("drop/paint"));
+  // redone: the copy again, selected as it was when undone
+  ASSERT_TRUE(doc->redo());
+  EXPECT_EQ(doc->selection(), copy);
+
+  // a place added with nothing selected before: undone, nothing is selected
+  doc->select({});
+  ASSERT_EQ(doc->execute(std::make_unique<NetEditCommand>(makeNetEdit(NetEditKind::AddPlace, "main", "fresh"))), "");
+  const Selection fresh{SelectionKind::Place, "main/fresh"};
+  ASSERT_TRUE(namesSomething(*doc, fresh));
+  doc->select(fresh);
+  ASSERT_TRUE(doc->undo());
+  EXPECT_EQ(doc->selection(), Selection{});
+  EXPECT_FALSE(namesSomething(*doc, fresh));
+
+  // a deleted node selected while deleted would name nothing: undoing the delete selects it
+  // again, redoing it leaves nothing selected
+  doc->select(Selection::node("drop/paint"));
+  ASSERT_EQ(doc->execute(std::make_unique<SceneEditCommand>(SceneEdit{SceneEditKind::Delete, "drop/paint", {}, {}, false, {}})), "");
+  doc->select({});
+  ASSERT_TRUE(doc->undo());
+  EXPECT_EQ(doc->selection(), Selection::node("drop/paint"));
+  ASSERT_TRUE(doc->redo());
+  EXPECT_EQ(doc->selection(), Selection{});
+  EXPECT_TRUE(namesSomething(*doc, {SelectionKind::Transition, "main/work"}));
+  EXPECT_FALSE(namesSomething(*doc, {SelectionKind::Transition, "main/idle"}));  // a place
+}
+
+TEST_F(DocumentTest, AShapeOfNoSizeIsRefusedAndTheModelKeptAsItWas) {
+  auto doc = openBin();
+  const auto before = doc->text();
+  // a Cube flat on one axis: the size's rule says each edge is above 0
+  const auto why = doc->execute(std::make_unique<SetFieldCommand>(
+      "drop/box/shape", "size", FieldValue{std::array<double, 3>{0.2, 0.0, 0.2}}, 0));
+  EXPECT_EQ(why, "'size' must be above 0, got 0");
+  EXPECT_EQ(doc->text(), before);
+  EXPECT_FALSE(doc->history().canUndo());
+  // a small one is a size
+  EXPECT_EQ(doc->execute(std::make_unique<SetFieldCommand>("drop/box/shape", "size",
+                                                           FieldValue{std::array<double, 3>{0.2, 1e-4, 0.2}}, 0)),
+            "");
 }
 
 TEST(Selection, KindsHaveNames) {

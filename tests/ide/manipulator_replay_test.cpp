@@ -205,5 +205,67 @@ TEST_F(ManipulatorReplay, ASpotLightsConeIsSizedByItsHandleAndUndoRestoresIt) {
   EXPECT_EQ(fieldValue(r, "cutoff"), 30.0);
 }
 
+// a slider joined to the world, its anchor left at the world's origin (a slider has no use for
+// it), moving a plate placed at (1, 0.5, 0.3) along x between -0.2 and +0.4 m
+constexpr const char* kSliderModel = R"Y(gdpn: 1
+scene:
+  - Camera: {name: view, position: [1, -2, 3], target: [1, 0.5, 0.3]}
+  - Joint:
+      name: rail
+      kind: slider
+      axis1: [1, 0, 0]
+      lo1: -0.2
+      hi1: 0.4
+      children:
+        - Transform:
+            name: carriage
+            translation: [1, 0.5, 0.3]
+            children: [{Body: {name: plate, children: [{Cube: {size: [0.2, 0.2, 0.05]}}]}}]
+pages:
+  main: {}
+)Y";
+
+/// The unit the inspector shows for field `name`.
+nlohmann::json fieldUnit(const nlohmann::json& report, const std::string& name) {
+  for (const auto& f : report["inspector"]["fields"]) {
+    if (f["name"] == name) return f["unit"];
+  }
+  return {};
+}
+
+TEST_F(ManipulatorReplay, ASlidersLimitsStandOnTheBodyItMovesInMetres) {
+  model_ = write("slider.gdpn.yaml", kSliderModel);
+  const auto body = replay("- select: rail/carriage\n- view: top\n")["world"]["pivot"];
+  const auto r = replay("- select: rail\n- view: top\n");
+  const auto& world = r["world"];
+  ASSERT_TRUE(world["handles"].contains("lo1") && world["handles"].contains("hi1")) << world.dump();
+  // the limits are drawn from the plate, not from the world's origin (the unused anchor)
+  EXPECT_NEAR(world["pivot"][0].get<double>(), body[0].get<double>(), 1.0) << world.dump();
+  EXPECT_NEAR(world["pivot"][1].get<double>(), body[1].get<double>(), 1.0) << world.dump();
+  // along x seen from above: lo1 0.2 m to the left, hi1 0.4 m to the right, level with it
+  const double px = world["pivot"][0].get<double>(), py = world["pivot"][1].get<double>();
+  const double lo = world["handles"]["lo1"][0].get<double>() - px, hi = world["handles"]["hi1"][0].get<double>() - px;
+  EXPECT_LT(lo, -10);
+  EXPECT_NEAR(hi, -2 * lo, 2.0);
+  EXPECT_NEAR(world["handles"]["hi1"][1].get<double>(), py, 1.0);
+  // hi1 dragged halfway back to the plate: 0.2 m
+  const auto dragged = replay("- select: rail\n- view: top\n- drag: {from: [world, handles, hi1], to: " +
+                              beyond(world, "hi1", 0.5) + "}\n");
+  EXPECT_EQ(fieldValue(dragged, "hi1"), 0.2) << dragged["world"].dump();
+  // the inspector's units follow the joint's kind: a slider's in m, m/s and N
+  EXPECT_EQ(fieldUnit(r, "lo1"), "m");
+  EXPECT_EQ(fieldUnit(r, "hi1"), "m");
+  EXPECT_EQ(fieldUnit(r, "target1"), "m");
+  EXPECT_EQ(fieldUnit(r, "vel1"), "m/s");
+  EXPECT_EQ(fieldUnit(r, "fmax1"), "N");
+  EXPECT_EQ(fieldUnit(r, "anchor"), "m");
+  // a hinge's in deg, deg/s and N m
+  const auto hinge = replay("- set: {node: rail, field: kind, value: hinge}\n- select: rail\n");
+  EXPECT_EQ(fieldUnit(hinge, "lo1"), "deg");
+  EXPECT_EQ(fieldUnit(hinge, "target1"), "deg");
+  EXPECT_EQ(fieldUnit(hinge, "vel1"), "deg/s");
+  EXPECT_EQ(fieldUnit(hinge, "fmax1"), "N m");
+}
+
 }  // namespace
 }  // namespace gdpn::ide

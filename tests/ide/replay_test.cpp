@@ -96,6 +96,20 @@ TEST(Replay, ADragMayHoldItsButtonDownAndStartAtANamedItem) {
   EXPECT_NE(diags.str().find("a.yaml:1:42: error: expects hold: true or false"), std::string::npos) << diags.str();
 }
 
+TEST(Replay, FramesMayStandForASlowMachine) {
+  core::Diagnostics diags;
+  const auto a = parse("- frames: {count: 20, seconds: 0.2}\n- frames: 3\n", diags);
+  ASSERT_TRUE(a) << diags.str();
+  EXPECT_EQ((*a)[0].kind, ActionKind::Frames);
+  EXPECT_EQ((*a)[0].number, 20);
+  EXPECT_EQ((*a)[0].seconds, 0.2);
+  EXPECT_EQ((*a)[1].seconds, 0);  // 1/60 s
+  EXPECT_FALSE(parse("- frames: {count: 2, seconds: 11}\n", diags));
+  EXPECT_NE(diags.str().find("a.yaml:1:31: error: expects {count: N, seconds: S}"), std::string::npos) << diags.str();
+  EXPECT_FALSE(parse("- frames: {count: 2}\n", diags));
+  EXPECT_NE(diags.str().find("a.yaml:1:11: error: expects {count: N, seconds: S}"), std::string::npos) << diags.str();
+}
+
 TEST(Replay, AnEmptyFileHasNoActions) {
   core::Diagnostics diags;
   const auto a = parse("", diags);

@@ -4,7 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <thread>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -335,6 +342,145 @@ TEST_F(Shell, QuitAsksFirstAndEndsTheIde) {
   const std::string edit = "- set: {node: drop, field: translation, value: [0, 0, 2]}\n";
   r = replayOn(a, edit + "- press: quit\n");
   EXPECT_EQ(r["save_changes"]["open"], true);
+}
+
+TEST_F(Shell, PasteThenUndoPutsTheInspectorBackOnWhatWasSelectedBefore) {
+  const auto path = model("bin.gdpn.yaml");
+  // a Material copied and pasted beside itself: the copy is selected
+  const std::string paste = "- select: drop/paint\n- press: copy\n- press: paste\n";
+  auto r = replayOn(path, paste);
+  ASSERT_EQ(r["selection"]["kind"], "node");
+  const auto copy = r["selection"]["name"].get<std::string>();
+  EXPECT_NE(copy, "drop/paint");
+  EXPECT_EQ(r["inspector"]["node"], copy);
+  // undone: the copy is gone, and so is it from the inspector
+  r = replayOn(path, paste + "- press: undo\n");
+  EXPECT_EQ(r["selection"]["name"], "drop/paint");
+  EXPECT_EQ(r["inspector"]["node"], "drop/paint");
+  EXPECT_EQ(r["inspector"]["type"], "Material");
+  // a place pasted into the net view, undone
+  r = replayOn(path, "- select: main/idle\n- press: copy\n- press: paste\n- press: undo\n");
+  EXPECT_EQ(r["selection"]["name"], "main/idle");
+  EXPECT_EQ(r["inspector"]["name"], "main/idle");
+}
+
+TEST_F(Shell, PasteWithNothingToPasteDoesNothingSilently) {
+  const auto path = model("bin.gdpn.yaml");
+  const auto r = replayOn(path, "- select: drop/paint\n- press: paste\n");
+  EXPECT_EQ(r["message"], "");
+  EXPECT_EQ(r["undo"]["depth"], 0);
+  EXPECT_EQ(r["selection"]["name"], "drop/paint");
+  EXPECT_EQ(last_.out.find("error"), std::string::npos) << last_.out;
+}
+
+TEST_F(Shell, TheWorldViewLowersItsResolutionOnlyWhileASlowRunGoesOn) {
+  const auto path = model("bin.gdpn.yaml");
+  // a slow machine: 5 frames a second. A move handle held down (editing, the view still) for
+  // 4 s keeps the whole resolution
+  const std::string hold =
+      "- select: high\n- drag: {from: [world, handles, move x], to: [world, handles, move x], hold: true}\n"
+      "- frames: {count: 20, seconds: 0.2}\n";
+  auto r = replayOn(path, hold);
+  EXPECT_EQ(r["world"]["manipulating"], "move x") << r["world"].dump();
+  EXPECT_EQ(r["world"]["scale"], 1.0);
+  // so does a frame of nothing at all
+  r = replayOn(path, "- frames: {count: 20, seconds: 0.2}\n");
+  EXPECT_EQ(r["world"]["scale"], 1.0);
+  // the model running that slowly: lowered in steps to half each side; paused, whole again
+  const std::string run = "- press: run\n- frames: {count: 20, seconds: 0.2}\n";
+  r = replayOn(path, run);
+  EXPECT_EQ(r["run"]["mode"], "running");
+  EXPECT_EQ(r["world"]["scale"], 0.5);
+  r = replayOn(path, run + "- press: pause\n");
+  EXPECT_EQ(r["world"]["scale"], 1.0);
+  // at 60 frames a second nothing is lowered
+  r = replayOn(path, "- press: run\n- frames: 120\n");
+  EXPECT_EQ(r["world"]["scale"], 1.0);
+  // a slow frame is read as a replay's mistake when it asks for too much
+  replayOn(path, "- frames: {count: 2, seconds: 0}\n", {}, 1);
+  EXPECT_NE(last_.out.find("actions.yaml:1:31: error: expects {count: N, seconds: S}"), std::string::npos) << last_.out;
+}
+
+TEST_F(Shell, TheInspectorRefusesAShapeOfNoSize) {
+  const auto path = model("bin.gdpn.yaml");
+  replayOn(path, "- set: {node: drop/box/shape, field: size, value: [0.2, 0, 0.2]}\n", {}, 1);
+  EXPECT_NE(last_.out.find("actions.yaml:1:3: error: 'size' must be above 0, got 0"), std::string::npos) << last_.out;
+  const auto r = replayOn(path, "- set: {node: drop/box/shape, field: size, value: [0.2, 0.05, 0.2]}\n");
+  EXPECT_EQ(r["undo"]["depth"], 1);
+}
+
+/// The IDE as a real process, ended by a signal.
+class Signalled : public Shell {
+ protected:
+  /// Starts the headless IDE on `model` with the replay `actions`, SIGTERM ignored as a launcher
+  /// may leave it when `ignored`; its process id. It writes `started.png` when it got going.
+  pid_t start(const std::string& model, const std::string& actions, bool ignored) {
+    const auto file = write("actions.yaml", actions);
+    const std::string command = "exec env " + env() + " '" + GDPN_CLI + "' ide '" + model +
+                                "' --headless --size 640x480 --replay '" + file + "' --report '" +
+                                (dir_ / "report.json").string() + "' >'" + (dir_ / "ide.log").string() + "' 2>&1";
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+      if (ignored) ::signal(SIGTERM, SIG_IGN);
+      ::chdir(dir_.c_str());
+      ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    return pid;
+  }
+  /// Waits until the IDE shows that it got going (at most a minute); false when it did not.
+  bool started(pid_t pid) {
+    for (int i = 0; i < 600; ++i) {
+      if (std::filesystem::exists(dir_ / "started.png")) return true;
+      if (::waitpid(pid, &status_, WNOHANG) == pid) return false;
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    return false;
+  }
+  /// Sends SIGTERM and waits for the end, at most 5 s (then SIGKILL); the seconds it took, or
+  /// a negative number when it did not end.
+  double terminate(pid_t pid) {
+    const auto sent = std::chrono::steady_clock::now();
+    ::kill(pid, SIGTERM);
+    for (;;) {
+      const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
+      if (::waitpid(pid, &status_, WNOHANG) == pid) return took;
+      if (took > 5) {
+        ::kill(pid, SIGKILL);
+        ::waitpid(pid, &status_, 0);
+        return -1;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+  }
+  int status_ = 0;
+};
+
+TEST_F(Signalled, SigtermEndsTheIdeAtOnceSavingNothingEvenWhereALauncherIgnoredIt) {
+  const auto path = model("bin.gdpn.yaml");
+  const auto before = text(path);
+  // an unsaved edit, then frames that would last half an hour; once with the model running
+  const std::string edit = "- set: {node: drop, field: translation, value: [0, 0, 2]}\n- screenshot: started.png\n";
+  for (const bool ignored : {false, true}) {
+    for (const std::string& then : {std::string(), std::string("- press: run\n")}) {
+      SCOPED_TRACE(std::string(ignored ? "SIGTERM ignored by the launcher" : "SIGTERM as it comes") +
+                   (then.empty() ? ", editing" : ", running"));
+      std::filesystem::remove(dir_ / "started.png");
+      const pid_t pid = start(path, edit + then + "- frames: 100000\n", ignored);
+      ASSERT_TRUE(started(pid)) << text((dir_ / "ide.log").string());
+      const double took = terminate(pid);
+      ASSERT_GE(took, 0) << "still running 5 s after SIGTERM";
+      std::cout << "  the IDE ended " << std::lround(took * 1000) << " ms after SIGTERM\n";
+      // ended by the signal, as the default action would (a shell says 143)
+      ASSERT_TRUE(WIFSIGNALED(status_)) << "exit status " << WEXITSTATUS(status_) << ": " << text((dir_ / "ide.log").string());
+      EXPECT_EQ(WTERMSIG(status_), SIGTERM);
+      // nothing saved: the model as it was, no autosave, no report
+      EXPECT_EQ(text(path), before);
+      EXPECT_TRUE(autosaves().empty());
+      EXPECT_FALSE(std::filesystem::exists(dir_ / "report.json"));
+      EXPECT_EQ(text((dir_ / "ide.log").string()).find("error"), std::string::npos) << text((dir_ / "ide.log").string());
+    }
+  }
 }
 
 }  // namespace

@@ -3,7 +3,11 @@
 # net (an edit), then types `xdotool key ctrl+s` with its default 12 ms between press and
 # release, much less than a frame of the IDE on a software renderer; the model file must be
 # saved with the place where it was dropped. The positions are those the headless IDE reports
-# for the same window size. Skipped (77) when Xvfb or xdotool is missing.
+# for the same window size. Before the drag, Reset (Shift+F5: the window was opened running),
+# then Ctrl+V with nothing on the clipboard (a fresh
+# display's) must do nothing and print nothing (GLFW's "Format unavailable" once did); at the
+# end SIGTERM ends the IDE at once (within 5 s here; the time is printed) as the signal's
+# default would (status 143), the saved file intact. Skipped (77) when Xvfb or xdotool is missing.
 # usage: window_keys.sh GDPN MODEL.gdpn.yaml PLACE (a place of its page `main`)
 set -eu
 command -v Xvfb >/dev/null 2>&1 || { echo "Xvfb missing (Debian package xvfb): skipped"; exit 77; }
@@ -54,6 +58,10 @@ wid=$(timeout 120 xdotool search --sync --onlyvisible --name "gdpn ide") || {
 wid=$(echo "$wid" | head -n 1)
 timeout 60 xdotool windowfocus --sync "$wid" || { echo "the window did not take the keyboard"; exit 1; }
 
+# back to editing (--quit-after started the run), where paste is offered; nothing to paste:
+# nothing happens, silently
+xdotool key shift+F5 ctrl+v
+
 # the edit: the place dragged 60 px to the right; then Ctrl+S, the default 12 ms
 xdotool mousemove --window "$wid" "$x" "$y" mousedown 1 mousemove --window "$wid" $((x + 60)) "$y" mouseup 1
 xdotool key ctrl+s
@@ -82,4 +90,24 @@ if grep -qE -- '-0([],]|$)' "$model"; then  # a place snapped to 0 was once writ
   grep -nE -- '-0([],]|$)' "$model"
   exit 1
 fi
-echo "ok: Ctrl+S saved $(grep "^ *$place:" "$model" | sed 's/^ *//')"
+if grep -q "GLFW error" "$dir/ide.log"; then
+  echo "the IDE printed a GLFW error (Ctrl+V with an empty clipboard?):"
+  cat "$dir/ide.log"
+  exit 1
+fi
+
+# SIGTERM: the IDE ends by it at once, saving nothing more
+cp "$model" "$dir/saved.yaml"
+(sleep 5 && kill -KILL "$ide" 2>/dev/null) &
+watchdog=$!
+start=$(date +%s%N)
+kill -TERM "$ide"
+status=0
+wait "$ide" || status=$?
+ended=$(( ($(date +%s%N) - start) / 1000000 ))
+{ kill "$watchdog" && wait "$watchdog"; } 2>/dev/null || true
+ide=""
+[ "$status" -ne 137 ] || { echo "the IDE still ran 5 s after SIGTERM"; exit 1; }
+[ "$status" -eq 143 ] || { echo "after SIGTERM the exit status is $status, not 143"; cat "$dir/ide.log"; exit 1; }
+cmp -s "$model" "$dir/saved.yaml" || { echo "the model changed after SIGTERM"; exit 1; }
+echo "ok: Ctrl+S saved $(grep "^ *$place:" "$model" | sed 's/^ *//'); SIGTERM ended the IDE in $ended ms"

@@ -6,6 +6,9 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "gdpn/scene/actions.h"
 #include "gdpn/scene/node.h"
@@ -123,6 +126,60 @@ TEST(FieldCheck, OneRuleForEveryKindOfValue) {
   EXPECT_EQ(nx.check(std::int64_t{1})->message, "'nx' must lie in [2, 1e+06], got 1");
   const auto& vectors = fieldOf(NodeKind::GradientField, "vectors");
   EXPECT_EQ(vectors.check(std::vector<double>{1, 2, std::numeric_limits<double>::infinity()})->component, 2);
+}
+
+TEST(FieldCheck, ShapeDimensionsMustBeAboveZero) {
+  // a length of 0 is refused where a shape or a sensor's volume needs one (min_open)
+  const auto& size = fieldOf(NodeKind::Cube, "size");
+  EXPECT_TRUE(size.min_open);
+  const auto flat = size.check(std::array<double, 3>{1, 0, 1});
+  ASSERT_TRUE(flat);
+  EXPECT_EQ(flat->component, 1);
+  EXPECT_EQ(flat->message, "'size' must be above 0, got 0");
+  EXPECT_FALSE(size.check(std::array<double, 3>{1, 1e-6, 1}));
+  EXPECT_EQ(size.rangeText(), "(0, inf]");
+  for (const auto& [kind, name] : std::vector<std::pair<NodeKind, const char*>>{
+           {NodeKind::Sphere, "radius"}, {NodeKind::Cylinder, "radius"}, {NodeKind::Cylinder, "height"},
+           {NodeKind::Cone, "radius"}, {NodeKind::Cone, "height"}, {NodeKind::Region, "radius"},
+           {NodeKind::Region, "height"}, {NodeKind::Region, "length"}, {NodeKind::RangeFinder, "length"},
+           {NodeKind::LaserScan, "length"}, {NodeKind::Terrain, "width"}, {NodeKind::GradientField, "depth"},
+           {NodeKind::TimeSensor, "period"}, {NodeKind::Fog, "visibility"}}) {
+    const auto& f = fieldOf(kind, name);
+    ASSERT_TRUE(f.check(0.0)) << name;
+    EXPECT_EQ(f.check(0.0)->message, "'" + std::string(name) + "' must be above 0, got 0");
+    EXPECT_FALSE(f.check(0.25)) << name;
+  }
+  const auto& region = fieldOf(NodeKind::Region, "size");
+  EXPECT_EQ(region.check(std::array<double, 3>{1, 1, -1})->component, 2);
+  // a bound that is reached stays a closed one
+  EXPECT_FALSE(fieldOf(NodeKind::Material, "friction").check(0.0));
+}
+
+TEST(FieldUnits, AJointsAxisOneFieldsFollowItsKind) {
+  Scene s;
+  Node& joint = *s.create(*builtinTypes().find(NodeKind::Joint), "j", s.root());
+  const auto unit = [&](const char* name) { return unitOf(joint, static_cast<std::size_t>(joint.type().fieldIndex(name))); };
+  // a hinge turns: degrees
+  EXPECT_EQ(unit("lo1"), "deg");
+  EXPECT_EQ(unit("hi1"), "deg");
+  EXPECT_EQ(unit("target1"), "deg");
+  EXPECT_EQ(unit("vel1"), "deg/s");
+  EXPECT_EQ(unit("fmax1"), "N m");
+  EXPECT_TRUE(isAngular(joint, static_cast<std::size_t>(joint.type().fieldIndex("lo1"))));
+  // a slider slides: metres
+  joint.setValue(field::Joint::Kind, std::string("slider"));
+  EXPECT_EQ(unit("lo1"), "m");
+  EXPECT_EQ(unit("hi1"), "m");
+  EXPECT_EQ(unit("target1"), "m");
+  EXPECT_EQ(unit("vel1"), "m/s");
+  EXPECT_EQ(unit("fmax1"), "N");
+  EXPECT_FALSE(isAngular(joint, static_cast<std::size_t>(joint.type().fieldIndex("vel1"))));
+  // axis 2 is always angular; other fields keep their one unit
+  EXPECT_EQ(unit("vel2"), "deg/s");
+  EXPECT_EQ(unit("anchor"), "m");
+  for (const auto* f : joint.type().fields) {
+    EXPECT_EQ(f->unit.find(" or "), std::string::npos) << f->name << ": a unit is one unit";
+  }
 }
 
 TEST(FieldCheck, ASensorsFieldsKeepTheirRulesWhenOneIsSetFromOutside) {

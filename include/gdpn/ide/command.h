@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "gdpn/ide/selection.h"
+
 namespace gdpn::ide {
 
 class Document;
@@ -30,15 +32,18 @@ class Command {
   [[nodiscard]] virtual bool changesScene() const { return true; }
 };
 
-/// Done and undone commands.
+/// Done and undone commands, each with the selection before it: undo selects again what was
+/// selected before the step, redo what was selected when it was undone, each only while it
+/// still names something (else nothing), so that no view shows a thing the step took away.
 class UndoStack {
  public:
   /// Applies `command` to `doc`; on success it goes on the stack (merged into the top when
   /// their merge keys agree) and the redo list is cleared. "" or why it was refused.
   std::string push(std::unique_ptr<Command> command, Document& doc);
-  /// Reverts the last command; false when there is none.
+  /// Reverts the last command and selects what was selected before it; false when there is none.
   bool undo(Document& doc);
-  /// Applies the last undone command again; false when there is none.
+  /// Applies the last undone command again and selects what was selected when it was undone;
+  /// false when there is none.
   bool redo(Document& doc);
   /// Ends merging: the next command starts a new step even with the same key (a drag ended).
   void seal() { sealed_ = true; }
@@ -49,13 +54,19 @@ class UndoStack {
   /// Steps that can be undone.
   [[nodiscard]] std::size_t depth() const { return done_.size(); }
   /// The label of the step undo() would revert ("" when none).
-  [[nodiscard]] std::string undoLabel() const { return done_.empty() ? std::string() : done_.back()->label(); }
+  [[nodiscard]] std::string undoLabel() const { return done_.empty() ? std::string() : done_.back().command->label(); }
   /// Forgets everything (a reload).
   void clear();
 
  private:
-  std::vector<std::unique_ptr<Command>> done_;
-  std::vector<std::unique_ptr<Command>> undone_;
+  /// A command and the selections around it.
+  struct Step {
+    std::unique_ptr<Command> command;
+    Selection before;  ///< selected when it was first applied
+    Selection after;   ///< selected when it was last undone
+  };
+  std::vector<Step> done_;
+  std::vector<Step> undone_;
   bool sealed_ = true;
 };
 

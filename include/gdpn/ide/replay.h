@@ -20,7 +20,8 @@ enum class ActionKind : std::uint8_t {
   Fire,        ///< `fire: TRANSITION`
   RunFor,      ///< `run: SECONDS` of model time (whole steps)
   Steps,       ///< `steps: N` steps
-  Frames,      ///< `frames: N` frames drawn (the run advancing as Run says, 1/60 s a frame)
+  Frames,      ///< `frames: N` frames drawn (the run advancing as Run says, 1/60 s a frame);
+               ///< `frames: {count: N, seconds: S}`: each frame S wall seconds long (a slow machine)
   Key,         ///< `key: CHORDS` over the world view: each chord (`s`, `enter`, `ctrl+s`,
                ///< `ctrl+shift+s`; several separated by spaces, `ctrl+a x`) pressed and released,
                ///< all before one frame, through the input queue that gives each press and release
@@ -50,6 +51,7 @@ struct Action {
   bool list = false;           ///< Set: the value was a list
   bool quoted = false;         ///< Set: the value was quoted (text, for a datum)
   double number = 0;           ///< RunFor: seconds; Steps, Frames: the count; Break: at_least; Wheel: clicks
+  double seconds = 0;          ///< Frames: the wall seconds each frame stands for (0: 1/60 s)
   double x = 0, y = 0;         ///< Click, Drag, Wheel: the point (Drag: where it starts), pixels
   double x2 = 0, y2 = 0;       ///< Drag: where it ends, pixels
   int button = 0;              ///< Click, Drag: 0 left, 1 right, 2 middle

@@ -5,6 +5,7 @@
 /// run never changes the document; reset goes back to the document's state exactly. No
 /// ImGui: the toolbar calls these, and so do the tests.
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -114,6 +115,8 @@ class RunControl {
   [[nodiscard]] std::vector<std::string> transitions() const;
   /// The last message for the user (why a fire was refused, why a run ended); "" when none.
   [[nodiscard]] const std::string& message() const { return message_; }
+  /// Steps stop as soon as `*flag` becomes true (the IDE asked to end by a signal); null: never.
+  void stopOn(const std::atomic<bool>* flag) { stop_ = flag; }
 
  private:
   void takeSteps(std::int64_t n);  // n steps (or plant steps), stopping on a halt
@@ -130,6 +133,7 @@ class RunControl {
   double owed_ = 0.0;  // model seconds Run owes
   double rtf_ = 0.0;
   std::string message_;
+  const std::atomic<bool>* stop_ = nullptr;  // stopOn()
 };
 
 }  // namespace gdpn::ide

@@ -34,4 +34,11 @@ struct Selection {
   friend bool operator==(const Selection&, const Selection&) = default;
 };
 
+class Document;
+
+/// True when `selection` names something of `doc`'s model: a node of its scene, a place,
+/// transition or instance written on one of its pages (or in the page type of an instance on
+/// the way). None names nothing.
+[[nodiscard]] bool namesSomething(const Document& doc, const Selection& selection);
+
 }  // namespace gdpn::ide

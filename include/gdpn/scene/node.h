@@ -225,8 +225,11 @@ class Scene {
 /// The scene stores degrees whatever the model writes.
 enum class AngleUnit : std::uint8_t { Degrees, Radians };
 
-/// Whether field `i` of `n` is an angle (or an angular rate): a field in deg or deg/s, a
-/// Rotation, or a joint's axis-1 field unless the joint is a slider (metres).
+/// The unit of field `i` of `n`: its description's, or the one its `unit_follows` field's word
+/// gives (a slider's `lo1` is in m, a hinge's in deg).
+[[nodiscard]] const std::string& unitOf(const Node& n, std::size_t i);
+/// Whether field `i` of `n` is an angle (or an angular rate): a Rotation, or a field whose unit
+/// in `n` (unitOf) is deg or deg/s.
 [[nodiscard]] bool isAngular(const Node& n, std::size_t i);
 
 /// Value `v` of field `i` of `n` converted between `unit` and the stored degrees: written to

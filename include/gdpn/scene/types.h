@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -57,9 +58,16 @@ struct FieldDesc {
   FieldKind kind = FieldKind::Float;  ///< what it holds
   FieldValue initial;                 ///< its default
   std::string unit;                   ///< "m", "kg", "deg", "m/s", "" when none
+  /// The name of the node's Enum field whose word may change the unit ("kind" for a Joint's
+  /// axis-1 fields, "" when the unit is always `unit`).
+  std::string unit_follows;
+  /// The words of `unit_follows` that give another unit than `unit`, each with its unit
+  /// ({"slider", "m"} for a Joint's `lo1`).
+  std::vector<std::pair<std::string, std::string>> units_by_choice;
   std::string doc;                    ///< one line for the inspector and docs
   std::vector<std::string> choices;   ///< the words an Enum accepts
   double min = -1e300;                ///< smallest accepted number (Int, Float, each component)
+  bool min_open = false;              ///< `min` itself refused: numbers must lie above it (a length: > 0)
   double max = 1e300;                 ///< largest accepted number
   NodeKind owner = NodeKind::Group;   ///< the node kind that declares it
   std::uint8_t index = 0;             ///< its place among its owner's own fields (its id)
@@ -68,8 +76,12 @@ struct FieldDesc {
   [[nodiscard]] bool boundedBelow() const { return min > -kPlantLimit; }
   [[nodiscard]] bool boundedAbove() const { return max < kPlantLimit; }  ///< see boundedBelow()
   /// "" when the number `x` is finite and in range, else why not ("'bounce' must lie in
-  /// [0, 1], got 1.5").
+  /// [0, 1], got 1.5"; "'radius' must be above 0, got 0").
   [[nodiscard]] std::string rangeError(double x) const;
+  /// The range as the inspector and docs show it: "[0, 1]", "(0, inf)", "" when unbounded.
+  [[nodiscard]] std::string rangeText() const;
+  /// The unit in a node whose `unit_follows` field holds `choice` (`unit` for any other word).
+  [[nodiscard]] const std::string& unitFor(std::string_view choice) const;
   /// Why `value` cannot be this field's value, or nullopt when it can: the alternative must
   /// match the kind, numbers must be finite and in range, an Enum's word one of its choices,
   /// a Rotation's axis not zero unless its angle is. The one check that the model loader,

@@ -26,17 +26,6 @@ namespace {
 using scene::FieldKind;
 using scene::FieldValue;
 
-std::string rangeText(const scene::FieldDesc& d) {
-  if (d.kind == FieldKind::Enum) {
-    std::string s;
-    for (const auto& c : d.choices) s += (s.empty() ? "" : " | ") + c;
-    return s;
-  }
-  if (!d.boundedBelow() && !d.boundedAbove()) return "";
-  return "[" + (d.boundedBelow() ? core::formatDouble(d.min) : std::string("-inf")) + ", " +
-         (d.boundedAbove() ? core::formatDouble(d.max) : std::string("inf")) + "]";
-}
-
 /// One field's widget; true with `out` when the user changed the value this frame.
 bool fieldWidget(const scene::FieldDesc& d, const FieldValue& v, FieldValue& out) {
   const double lo = d.boundedBelow() ? d.min : -1e9;
@@ -331,9 +320,11 @@ void nodeInspector(App& app, const std::string& path, nlohmann::json& report) {
     if (ImGui::IsItemDeactivated()) app.document().history().seal();
     ImGui::TableNextColumn();
     ImGui::AlignTextToFramePadding();
-    ImGui::TextDisabled("%s", d.unit.c_str());
+    // a joint's axis-1 fields are in m in a slider, in deg in a hinge
+    const auto& unit = scene::unitOf(*node, i);
+    ImGui::TextDisabled("%s", unit.c_str());
     ImGui::TableNextColumn();
-    const auto range = rangeText(d);
+    const auto range = d.rangeText();
     // a field that names a model parameter says which, where its range would be
     const auto bound = std::find_if(node->params.begin(), node->params.end(),
                                     [i](const auto& b) { return b.field == static_cast<std::uint32_t>(i); });
@@ -356,7 +347,7 @@ void nodeInspector(App& app, const std::string& path, nlohmann::json& report) {
     ImGui::PopID();
     nlohmann::json value;
     std::visit([&](const auto& v) { value = v; }, node->value(i));
-    fields.push_back({{"name", d.name}, {"unit", d.unit}, {"range", range}, {"kind", scene::fieldKindName(d.kind)},
+    fields.push_back({{"name", d.name}, {"unit", unit}, {"range", range}, {"kind", scene::fieldKindName(d.kind)},
                       {"value", value}});
     if (!param.empty()) fields.back()["param"] = param;
   }

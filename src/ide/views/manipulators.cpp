@@ -67,6 +67,21 @@ core::Vec3 axisOf(const core::Quat& rotation, std::size_t i) {
 }
 
 /// Whether `node` is a box the scale tool sizes: a Cube, or a Region of shape box.
+/// The Body a joint moves, as the physics finds it: the first Body below the joint (Transforms
+/// may place it) that is no template and not inside another Body; null when there is none.
+const scene::Node* jointBody(const scene::Node& joint) {
+  std::vector<const scene::Node*> todo;
+  for (auto it = joint.children().rbegin(); it != joint.children().rend(); ++it) todo.push_back(it->get());
+  while (!todo.empty()) {
+    const scene::Node* c = todo.back();
+    todo.pop_back();
+    if (c->is_template) continue;
+    if (c->kind() == scene::NodeKind::Body) return c;
+    for (auto it = c->children().rbegin(); it != c->children().rend(); ++it) todo.push_back(it->get());
+  }
+  return nullptr;
+}
+
 bool isBox(const scene::Node& node) {
   return node.kind() == scene::NodeKind::Cube ||
          (node.kind() == scene::NodeKind::Region &&
@@ -146,7 +161,10 @@ Handles handlesOf(App& app, scene::Node& node, const OrbitCamera& view, ImVec2 a
     const auto kind = node.choice<scene::JointKind>(scene::field::Joint::Kind);
     const bool slider = kind == scene::JointKind::Slider, hinge = kind == scene::JointKind::Hinge;
     if (!slider && !hinge) return handles;
-    const core::Vec3 anchor = pose.apply(node.vec3(scene::field::Joint::Anchor));
+    // a hinge turns about its anchor; a slider has none (the physics ignores it): its limits
+    // are offsets of its body from where the body stands now, so they are drawn from there
+    const auto* body = slider ? jointBody(node) : nullptr;
+    const core::Vec3 anchor = body != nullptr ? body->framePose().position : pose.apply(node.vec3(scene::field::Joint::Anchor));
     handles.pivot = anchor;
     const core::Vec3 axis = pose.rotation.rotate(node.vec3(scene::field::Joint::Axis1)).normalized();
     const core::Vec3 reference = perpendicular(axis), side = axis.cross(reference);
