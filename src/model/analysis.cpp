@@ -127,9 +127,13 @@ std::string seconds(double v) {
   return buf;
 }
 
-/// The bound the whole net cannot repeat faster than: the largest that is not a flow's.
+/// The bound the whole net cannot repeat faster than: the largest that is a bound (not a
+/// flow's, not a cycle of immediate transitions); none when the net as a whole cannot repeat
+/// (no T-invariant covers every transition: a transition that fires once has no cycle time).
 const net::CycleBound* cycleTime(const Analysis& a) {
-  const auto it = std::find_if(a.cycles.begin(), a.cycles.end(), [](const net::CycleBound& c) { return !c.flow; });
+  if (!a.invariants.consistent) return nullptr;
+  const auto it = std::find_if(a.cycles.begin(), a.cycles.end(),
+                               [](const net::CycleBound& c) { return !c.flow && !c.immediate; });
   return it == a.cycles.end() ? nullptr : &*it;
 }
 
@@ -279,7 +283,8 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
                                 {"tokens", c.tokens},
                                 {"circuit", c.circuit},
                                 {"flow", c.flow},
-                                {"seconds", c.seconds}});
+                                {"immediate", c.immediate},
+                                {"seconds", c.flow || c.immediate ? ordered_json(nullptr) : ordered_json(c.seconds)}});
   }
   const auto* first = cycleTime(a);
   j["cycle_time"] = first ? ordered_json(first->seconds) : ordered_json(nullptr);
@@ -440,10 +445,10 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
   if (inv.t.size() > kShown) out << "    ... and " << inv.t.size() - kShown << " more (--json lists all)\n";
   if (!a.cycles.empty()) {
     out << "cycle times (one token's longest circuit, else durations summed over tokens; alike ones once):\n";
-    bool flow = false;
+    bool flow = false, immediate = false;
     for (const auto& [c, alike] : distinctCycles(a.cycles)) {
       // the bound, then the places and the circuit wrapped under them
-      std::string head = c.flow ? std::string("flow") : seconds(c.seconds);
+      std::string head = c.flow ? std::string("flow") : c.immediate ? std::string("-") : seconds(c.seconds);
       head = std::string(head.size() < 8 ? 10 - head.size() : 2, ' ') + head + " ";  // right-aligned
       out << head;
       auto terms = invariantWords(invariantText(net, inv.p[c.invariant]), kMostPlaces, "--json");
@@ -456,11 +461,17 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
       }
       if (alike > 0) terms.push_back("(+" + std::to_string(alike) + " alike)");
       flow = flow || c.flow;
+      immediate = immediate || c.immediate;
       core::writeWrapped(out, head.size(), terms, 12);
       out << "\n";
     }
     if (flow) out << "  flow: tokens that take alternative paths (a flow, not a cycle): no bound\n";
-    if (const auto* first = cycleTime(a)) out << "  the net's cycle time is at least " << seconds(first->seconds) << "\n";
+    if (immediate) out << "  -: its transitions take no time: what they wait for sets its pace, no bound\n";
+    if (const auto* first = cycleTime(a)) {
+      out << "  the net's cycle time is at least " << seconds(first->seconds) << "\n";
+    } else if (!a.invariants.consistent) {
+      out << "  the net as a whole does not repeat (no T-invariant covers every transition): no cycle time\n";
+    }
   }
 }
 

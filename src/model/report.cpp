@@ -130,11 +130,23 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
       f.invariant = invariantText(net, invariants.p[c.invariant]);
       f.tokens = c.tokens;
       f.flow = c.flow;
-      f.bound = c.seconds;
+      // no bound for a flow, nor for transitions that take no time (their pace is what they
+      // wait for: a bound of a step or two would mislead)
+      if (!c.flow && !c.immediate) f.bound = c.seconds;
       f.alike = alike;
-      // a flow's transitions do not repeat together: nothing measured to set beside a bound
-      if (!c.flow) {
-        for (auto t : c.transitions) f.measured = std::max(f.measured, r.transitions[t].mean_cycle);
+      // a flow's transitions do not repeat together: nothing measured to set beside a bound.
+      // Else the intervals between successive starts of its transitions, pooled: each fires
+      // once a round, so every interval is a round's length (a transition with fewer
+      // intervals measured, one started late, weighs less, rather than its mean alone
+      // standing for the cycle)
+      if (!c.flow && !c.alternatives) {
+        std::int64_t rounds = 0, round_steps = 0;
+        for (auto t : c.transitions) {
+          const auto& s = stats.transitions()[t];
+          rounds += s.cycles();
+          round_steps += s.cycle_sum;
+        }
+        if (rounds > 0) f.measured = static_cast<double>(round_steps) * dt / static_cast<double>(rounds);
       }
       // each circuit the token took, most taken first
       if (const auto w = plan->watch_of.find(c.invariant); w != plan->watch_of.end()) {
@@ -151,6 +163,20 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
         std::stable_sort(f.circuits.begin(), f.circuits.end(),
                          [](const CircuitFigures& a, const CircuitFigures& b) { return a.trips > b.trips; });
         f.other_trips = plan->trips->overlong(w->second);
+        // one token choosing among circuits: a round is a trip. Measured: its trips' mean;
+        // bound: what the circuits it took need, averaged over its trips (so that measured
+        // minus bound is the time it lay idle); the longest circuit's when it took none
+        std::int64_t trips = 0;
+        double took = 0.0, needed = 0.0;
+        for (const auto& k : f.circuits) {
+          trips += k.trips;
+          took += k.measured * static_cast<double>(k.trips);
+          needed += k.bound * static_cast<double>(k.trips);
+        }
+        if (trips > 0) {
+          f.measured = took / static_cast<double>(trips);
+          if (f.bound) f.bound = needed / static_cast<double>(trips);
+        }
       }
       r.cycles.push_back(std::move(f));
     }
@@ -273,8 +299,8 @@ void writeReportJson(std::ostream& out, const Report& report) {
     ordered_json cycle{{"invariant", c.invariant},
                        {"tokens", c.tokens},
                        {"flow", c.flow},
-                       {"bound", c.flow ? ordered_json(nullptr) : ordered_json(c.bound)},
-                       {"measured", c.flow ? ordered_json(nullptr) : ordered_json(c.measured)},
+                       {"bound", c.bound ? ordered_json(*c.bound) : ordered_json(nullptr)},
+                       {"measured", c.measured ? ordered_json(*c.measured) : ordered_json(nullptr)},
                        {"alike", c.alike}};
     if (!c.circuits.empty() || c.other_trips > 0) {
       auto& circuits = cycle["circuits"] = ordered_json::array();
@@ -405,15 +431,16 @@ void printSummary(std::ostream& out, const Report& report) {
     constexpr std::size_t kFigures = 46, kMostPlaces = 6;
     out << "\n"
         << pad("tokens", 8, true) << pad("bound [s]", 12, true) << pad("measured [s]", 14, true)
-        << pad("waited [s]", 12, true) << "  cycle (P-invariant)\n";
-    bool alike = false, flow = false, circuits = false;
+        << pad("idle [s]", 12, true) << "  cycle (P-invariant)\n";
+    bool alike = false, flow = false, circuits = false, immediate = false;
     const std::size_t cycles = std::min(report.cycles.size(), kMostRows);
     for (std::size_t n = 0; n < cycles; ++n) {
       const auto& c = report.cycles[n];
-      const bool m = c.measured > 0.0 && !c.flow;
-      out << pad(std::to_string(c.tokens), 8, true) << pad(c.flow ? "flow" : fixed(c.bound, 3), 12, true)
-          << pad(m ? fixed(c.measured, 3) : "-", 14, true) << pad(m ? fixed(c.measured - c.bound, 3) : "-", 12, true)
-          << " ";
+      out << pad(std::to_string(c.tokens), 8, true)
+          << pad(c.flow ? "flow" : c.bound ? fixed(*c.bound, 3) : "-", 12, true)
+          << pad(c.measured ? fixed(*c.measured, 3) : "-", 14, true)
+          << pad(c.measured && c.bound ? fixed(*c.measured - *c.bound, 3) : "-", 12, true) << " ";
+      immediate = immediate || (!c.flow && !c.bound);
       // its places (with their weights) as words, " + " between them
       auto terms = invariantWords(c.invariant, kMostPlaces, "--report");
       if (c.alike > 0) terms.push_back("(+" + std::to_string(c.alike) + " alike)");
@@ -438,6 +465,10 @@ void printSummary(std::ostream& out, const Report& report) {
       circuits = circuits || !c.circuits.empty();
     }
     more(report.cycles.size() - cycles, "cycle");
+    out << "bound: the least time a round of the cycle takes by its durations; measured: the mean\n"
+           "round; idle: their difference, the time its tokens lay in its places each round (waiting\n"
+           "for the plant, a guard, another cycle, or to be needed)\n";
+    if (immediate) out << "-: its transitions take no time: what they wait for sets its pace, no bound\n";
     if (circuits) {
       out << "indented under a cycle: each circuit its token took (a choice made on the way), measured\n"
              "from a trip's start to the next trip's; its bound is its own durations summed\n";

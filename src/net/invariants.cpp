@@ -1,6 +1,7 @@
 #include "gdpn/net/invariants.h"
 
 #include <algorithm>
+#include <unordered_map>
 #include <bit>
 #include <limits>
 #include <map>
@@ -589,6 +590,61 @@ std::optional<std::pair<double, std::vector<TransitionId>>> longestCircuit(const
 
 }  // namespace
 
+namespace {
+
+/// Whether the tokens of P-invariant `weights` (`y` its weights by place slot) can come back to
+/// each of its place slots: from the first, every one is reached through the transitions that
+/// take from one and put on another (`takers`), and every one reaches the first back.
+bool comesBack(const Net& net, const std::vector<std::pair<std::uint32_t, std::int64_t>>& weights,
+               std::span<const std::int64_t> y,
+               const std::vector<std::vector<std::pair<TransitionId, std::int64_t>>>& takers) {
+  if (weights.size() <= 1) {
+    // one place slot: a cycle when a transition takes from it and puts back on it
+    if (weights.empty()) return false;
+    const auto k = weights.front().first;
+    return std::any_of(takers[k].begin(), takers[k].end(), [&](const auto& tn) {
+      const auto& terms = net.termsOf(tn.first);
+      return std::any_of(terms.begin(), terms.end(),
+                         [&](const Term& term) { return term.kind == TermKind::Output && term.place_slot == k; });
+    });
+  }
+  // the invariant's own graph, place slot to place slot, forwards and backwards
+  std::unordered_map<std::uint32_t, std::size_t> at;
+  for (std::size_t i = 0; i < weights.size(); ++i) at.emplace(weights[i].first, i);
+  std::vector<std::vector<std::size_t>> next(weights.size()), back(weights.size());
+  for (std::size_t i = 0; i < weights.size(); ++i) {
+    for (const auto& [t, n] : takers[weights[i].first]) {
+      for (const Term& term : net.termsOf(t)) {
+        if (term.kind != TermKind::Output || y[term.place_slot] == 0) continue;
+        const std::size_t j = at.at(term.place_slot);
+        next[i].push_back(j);
+        back[j].push_back(i);
+      }
+    }
+  }
+  const auto reachesAll = [&](const std::vector<std::vector<std::size_t>>& edges) {
+    std::vector<char> seen(weights.size(), 0);
+    std::vector<std::size_t> todo{0};
+    seen[0] = 1;
+    std::size_t reached = 1;
+    while (!todo.empty()) {
+      const std::size_t i = todo.back();
+      todo.pop_back();
+      for (std::size_t j : edges[i]) {
+        if (!seen[j]) {
+          seen[j] = 1;
+          ++reached;
+          todo.push_back(j);
+        }
+      }
+    }
+    return reached == weights.size();
+  };
+  return reachesAll(next) && reachesAll(back);
+}
+
+}  // namespace
+
 std::vector<CycleBound> cycleBounds(const Net& net, const Invariants& invariants, std::span<const double> seconds,
                                     const InvariantOptions& options, ExploreStop* stop) {
   std::vector<CycleBound> out;
@@ -619,6 +675,13 @@ std::vector<CycleBound> cycleBounds(const Net& net, const Invariants& invariants
       }
     }
     std::sort(b.transitions.begin(), b.transitions.end());
+    // a cycle only when its tokens come back: every place of it reaches every other through
+    // its transitions (a flow that ends in a sink, a transition that fires once, is none)
+    if (!comesBack(net, weights, y, takers)) {
+      for (TransitionId t : b.transitions) taken[t] = 0;
+      for (const auto& [k, w] : weights) y[k] = 0;
+      continue;
+    }
     // a choice: a place slot of it feeding two or more transitions
     bool choice = false;
     for (const auto& [k, w] : weights) choice = choice || takers[k].size() > 1;
@@ -641,6 +704,10 @@ std::vector<CycleBound> cycleBounds(const Net& net, const Invariants& invariants
         b.flow = true;
         b.seconds = 0.0;
       }
+      b.immediate = std::all_of(b.transitions.begin(), b.transitions.end(), [&](TransitionId t) {
+        return meanSeconds(net.transitions()[t].duration) <= 0.0;
+      });
+      if (b.immediate) b.seconds = 0.0;
       out.push_back(std::move(b));
     }
     for (const auto& [k, w] : weights) y[k] = 0;

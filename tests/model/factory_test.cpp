@@ -40,7 +40,8 @@ TEST(Factory, TheArmDeliversOneBoxPerFourSecondCycle) {
     if (c.invariant != "factory/P1.b0 + factory/P2.b0 + factory/lifted.b0 + factory/P3.b0") continue;
     found = true;
     EXPECT_EQ(c.bound, 4.0);
-    EXPECT_NEAR(c.measured, 4.0, 0.05);
+    ASSERT_TRUE(c.measured);
+    EXPECT_NEAR(*c.measured, 4.0, 0.05);
     EXPECT_EQ(c.alike, 2);  // the three joints move together
   }
   EXPECT_TRUE(found);
@@ -115,7 +116,11 @@ TEST(Factory, TheLinePaintsHalfTheBoxesOnceAndTheRodsStrikeNone) {
     if (c.invariant.rfind("factory/station", 0) != 0) continue;
     ++cells;
     EXPECT_EQ(c.bound, 15.01) << c.invariant;
-    EXPECT_GE(c.measured, 15.01) << c.invariant;
+    ASSERT_TRUE(c.measured) << c.invariant;
+    EXPECT_GE(*c.measured, 15.01) << c.invariant;
+    // the cycle's line agrees with its circuits' lines (one circuit taken: the same figures)
+    ASSERT_EQ(c.circuits.size(), 1u) << c.invariant;
+    EXPECT_DOUBLE_EQ(*c.measured, c.circuits[0].measured) << c.invariant;
   }
   EXPECT_EQ(cells, 2);
 }

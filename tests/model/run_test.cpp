@@ -144,8 +144,8 @@ std::string reportAsTree(const Report& report) {
   for (const auto& c : report.cycles) {
     const auto none = ordered_json(nullptr);
     ordered_json cycle{{"invariant", c.invariant}, {"tokens", c.tokens}, {"flow", c.flow},
-                       {"bound", c.flow ? none : ordered_json(c.bound)},
-                       {"measured", c.flow ? none : ordered_json(c.measured)}, {"alike", c.alike}};
+                       {"bound", c.bound ? ordered_json(*c.bound) : none},
+                       {"measured", c.measured ? ordered_json(*c.measured) : none}, {"alike", c.alike}};
     if (!c.circuits.empty() || c.other_trips > 0) {
       cycle["circuits"] = ordered_json::array();
       for (const auto& k : c.circuits) {
@@ -243,7 +243,10 @@ TEST(Report, EachCircuitOfATokenWithAlternativesIsMeasured) {
   ASSERT_FALSE(r.cycles.empty());
   const auto& station = r.cycles[0];
   EXPECT_EQ(station.invariant, "main/ready + main/busy + main/skipped");
-  EXPECT_EQ(station.bound, 4.0);  // the longest circuit
+  // a round is a trip: the circuits' bounds and measures averaged over the six trips, three
+  // of 4 s and three of 1 s (the cycle's line agrees with its circuits' lines)
+  EXPECT_EQ(station.bound, 2.5);
+  EXPECT_EQ(station.measured, 2.5);
   ASSERT_EQ(station.circuits.size(), 2u);
   // seven trips began; six ended (each when the next began), three of each kind
   const auto& work = station.circuits[0].transitions[0] == "main/work" ? station.circuits[0] : station.circuits[1];
@@ -267,7 +270,83 @@ TEST(Report, EachCircuitOfATokenWithAlternativesIsMeasured) {
   auto plain = open("tests/data/good/alternatives.gdpn.yaml");
   const auto q = makeReport(*plain, plain->run({}));
   EXPECT_TRUE(q.cycles[0].circuits.empty());
-  EXPECT_EQ(q.cycles[0].bound, 4.0);
+  EXPECT_EQ(q.cycles[0].bound, 4.0);  // no trips known: the longest circuit
+  EXPECT_FALSE(q.cycles[0].measured);
+}
+
+/// The cycle of `r` whose invariant is `invariant`; fails the test when there is none.
+const CycleFigures* cycleOf(const Report& r, const std::string& invariant) {
+  for (const auto& c : r.cycles) {
+    if (c.invariant == invariant) return &c;
+  }
+  ADD_FAILURE() << "no cycle " << invariant;
+  return nullptr;
+}
+
+TEST(Report, ATokenSharedFreelyIsIdleNotLateAndItsRoundIsItsTrip) {
+  // the tool is used 1 s at a time by A (every 4 s) and B (every 6 s): its cycle's measured
+  // figure is its mean trip, not the slowest machine's cycle, and what is left over it lay
+  // idle
+  auto sim = open("tests/data/good/shared_tool.gdpn.yaml");
+  ASSERT_TRUE(sim);
+  watchRoundTrips(*sim);
+  const auto r = makeReport(*sim, sim->run({}));
+  const auto* tool = cycleOf(r, "main/tool");
+  ASSERT_TRUE(tool);
+  EXPECT_EQ(tool->bound, 1.0);
+  ASSERT_TRUE(tool->measured);
+  std::int64_t trips = 0;
+  double time = 0;
+  for (const auto& k : tool->circuits) {
+    EXPECT_EQ(k.bound, 1.0);
+    trips += k.trips;
+    time += k.measured * static_cast<double>(k.trips);
+  }
+  ASSERT_GT(trips, 5);
+  EXPECT_DOUBLE_EQ(*tool->measured, time / static_cast<double>(trips));
+  EXPECT_LT(*tool->measured, figures(r, "main/A").mean_cycle);  // not the slowest's 4 s or more
+  std::ostringstream text;
+  printSummary(text, r);
+  EXPECT_NE(text.str().find("  idle [s]  cycle (P-invariant)\n"), std::string::npos) << text.str();
+  EXPECT_EQ(text.str().find("waited"), std::string::npos) << text.str();
+}
+
+TEST(Report, NoCycleFigureIsGivenWhereNoneHolds) {
+  auto sim = open("tests/data/good/cycle_figures.gdpn.yaml");
+  ASSERT_TRUE(sim);
+  const auto r = makeReport(*sim, sim->run({}));
+  // a switch of transitions that take no time: no bound (a step or two would mislead), its
+  // pace measured: on every 4 s
+  const auto* sw = cycleOf(r, "main/off + main/on");
+  ASSERT_TRUE(sw);
+  EXPECT_FALSE(sw->bound);
+  EXPECT_EQ(sw->measured, 4.0);
+  // `go` never fired: nothing measured, in the summary and the report alike
+  const auto* xy = cycleOf(r, "main/x + main/y");
+  ASSERT_TRUE(xy);
+  EXPECT_EQ(xy->bound, 2.0);
+  EXPECT_FALSE(xy->measured);
+  std::ostringstream json;
+  writeReportJson(json, r);
+  const auto j = nlohmann::json::parse(json.str());
+  for (const auto& c : j["cycles"]) {
+    if (c["invariant"] == "main/x + main/y") {
+      EXPECT_TRUE(c["measured"].is_null()) << c;
+    }
+    if (c["invariant"] == "main/off + main/on") {
+      EXPECT_TRUE(c["bound"].is_null()) << c;
+    }
+  }
+  // boxes that end in a sink make no cycle
+  EXPECT_EQ(r.cycles.size(), 2u);
+  for (const auto& c : r.cycles) EXPECT_EQ(c.invariant.find("box"), std::string::npos) << c.invariant;
+  std::ostringstream text;
+  printSummary(text, r);
+  EXPECT_NE(text.str().find("       1           -         4.000           -  main/off + main/on\n"), std::string::npos)
+      << text.str();
+  EXPECT_NE(text.str().find("       1       2.000             -           -  main/x + main/y\n"), std::string::npos)
+      << text.str();
+  EXPECT_NE(text.str().find("\n-: its transitions take no time"), std::string::npos) << text.str();
 }
 
 TEST(Run, ProducerConsumerSettlesToTheConsumersCycle) {

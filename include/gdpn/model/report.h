@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <ostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,8 +50,15 @@ struct CycleFigures {
   std::string invariant;        ///< its places, weighted: "a + b + 2*c"
   std::int64_t tokens = 0;      ///< weighted tokens on it
   bool flow = false;            ///< its tokens take alternative paths: no bound, nothing measured
-  double bound = 0.0;           ///< seconds: the sum of its durations over its tokens (0 for a flow)
-  double measured = 0.0;        ///< seconds: the slowest mean cycle among its transitions (0: none)
+  /// seconds: the least time between two rounds its durations allow (its durations summed,
+  /// weighted, over its tokens; for one token with alternative circuits, the circuits' own
+  /// bounds averaged over the trips it took, else the longest circuit's); none for a flow and
+  /// for a cycle of transitions that take no time (docs/semantics.md, "Cycle figures")
+  std::optional<double> bound;
+  /// seconds: the mean time between two rounds measured (the intervals between successive
+  /// starts of its transitions, pooled; the token's trips for alternative circuits); none
+  /// when no round was completed, and for a flow
+  std::optional<double> measured;
   int alike = 0;                ///< further invariants with the same transitions, tokens and bound (not listed)
   /// one token with alternative circuits (a station that skips a box or paints it): each
   /// circuit it took, most taken first (watched only when watchRoundTrips ran before the run)

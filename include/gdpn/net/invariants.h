@@ -91,10 +91,15 @@ struct CycleBound {
   /// the tokens take alternative paths (a place of it feeds several of its transitions) and no
   /// circuit bounds them: a flow through the net, not a cycle; `seconds` is 0 (no bound)
   bool flow = false;
+  /// every transition of it takes no time (immediate, or a duration of 0): its pace is set by
+  /// what they wait for (a sensor, a guard, another cycle), not by durations; `seconds` is 0
+  /// (no bound: the steps its firings take are no bound worth giving)
+  bool immediate = false;
 };
 
-/// Cycle-time bounds, one per P-invariant that carries tokens and feeds a transition, largest
-/// first; `seconds[t]` is the duration of transition `t` (its mean for drawn durations). The
+/// Cycle-time bounds, one per P-invariant that carries tokens, feeds a transition and is a
+/// cycle: its tokens can come back to every place of it (its places, joined by its transitions,
+/// are strongly connected; tokens that end in a sink are no cycle), largest first; `seconds[t]` is the duration of transition `t` (its mean for drawn durations). The
 /// net cannot repeat faster than the first one's `seconds`. Where one token runs through a
 /// state machine with choices (a cell that either skips a box or works on it), each choice
 /// is a conflict-free circuit of its own and the bound is the longest circuit's duration.
