@@ -2,12 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "gdpn/model/model.h"
 #include "gdpn/net/compile.h"
+#include "support/scratch.h"
 
 namespace gdpn::model {
 namespace {
@@ -112,6 +114,72 @@ TEST(RoundTrip, ControlCharactersAreRefusedWhereTheyStand) {
   core::Diagnostics diags;
   EXPECT_FALSE(parseModel(text, "fuzz.gdpn.yaml", diags));
   EXPECT_EQ(diags.str(), "fuzz.gdpn.yaml:3:26: error: control character U+0000 is not allowed in the file\n");
+}
+
+}  // namespace
+}  // namespace gdpn::model
+
+namespace gdpn::model {
+namespace {
+
+using gdpn::testing::ScratchFolder;
+
+/// The numbers with more digits after the point than a person (or a 32-bit value) writes.
+std::string noise(const std::string& text) {
+  std::string found;
+  std::size_t run = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    run = std::isdigit(static_cast<unsigned char>(text[i])) ? run + 1 : 0;
+    if (run == 10) found += text.substr(i > 40 ? i - 40 : 0, 60) + "\n";
+  }
+  return found;
+}
+
+TEST(SaveNumbers, ATypedValueIsSavedAsTyped) {
+  const std::string text =
+      "gdpn: 1\nscene:\n  - Material: {ambient: [0.2, 0.3, 0.1], shininess: 0.3, bounce: 0.2}\n"
+      "  - Transform: {translation: [-1.75, -0, 0.1], children: [{Cube: {name: box, size: [0.2, 0.6, 0.7]}}]}\n"
+      "pages:\n  main:\n    places:\n      p: {at: [-1.75, -0]}\n";
+  core::Diagnostics diags;
+  auto m = parseModel(text, "typed.gdpn.yaml", diags);
+  ASSERT_TRUE(m) << diags.str();
+  const std::string saved = writeModel(*m);
+  EXPECT_NE(saved.find("{ambient: [0.2, 0.3, 0.1], shininess: 0.3, bounce: 0.2}"), std::string::npos) << saved;
+  EXPECT_NE(saved.find("translation: [-1.75, 0, 0.1]"), std::string::npos) << saved;
+  EXPECT_NE(saved.find("size: [0.2, 0.6, 0.7]"), std::string::npos) << saved;
+  EXPECT_NE(saved.find("p: {at: [-1.75, 0]}"), std::string::npos) << saved;
+  EXPECT_EQ(saved.find("-0,"), std::string::npos) << saved;
+  EXPECT_EQ(saved.find("-0]"), std::string::npos) << saved;
+  EXPECT_EQ(noise(saved), "");
+}
+
+TEST(SaveNumbers, AnEditorPositionOfMinusZeroIsWrittenZero) {
+  Model m;
+  net::PageSpec page;
+  page.name = "main";
+  net::PlaceSpec p;
+  p.name = "p";
+  p.position = net::EditorPos{-0.0, -1.75};
+  page.places.push_back(p);
+  m.net.pages.push_back(page);
+  EXPECT_NE(writeModel(m).find("p: {at: [0, -1.75]}"), std::string::npos) << writeModel(m);
+}
+
+TEST(SaveNumbers, AConvertedMeshHoldsTheNumbersItsFileSays) {
+  // 32-bit numbers in the mesh files: written as the shortest text that gives them back
+  ScratchFolder folder("gdpn_convert_numbers");
+  std::ofstream(folder.file("part.iv")) << "#Inventor V2.1 ascii\nSeparator { Material { diffuseColor 0.6 0.2 0.3 "
+                                           "transparency 0.3 } Cube {} }\n";
+  std::ofstream(folder.file("part.obj")) << "mtllib part.mtl\nusemtl paint\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  std::ofstream(folder.file("part.mtl")) << "newmtl paint\nKd 0.6 0.1 0.3\nKa 0.2 0.2 0.2\nNs 25.6\nd 0.7\n";
+  for (const char* file : {"part.iv", "part.obj"}) {
+    core::Diagnostics diags;
+    const auto m = meshModel(folder.file(file), folder.file("part.gdpn.yaml"), diags);
+    ASSERT_TRUE(m) << diags.str();
+    const std::string text = writeModel(*m);
+    EXPECT_EQ(noise(text), "") << text;
+    EXPECT_NE(text.find("transparency: 0.3"), std::string::npos) << text;
+  }
 }
 
 }  // namespace
