@@ -57,9 +57,20 @@ std::string counted(std::size_t n, std::string_view noun) {
 }
 
 std::string formatDouble(double value) {
+  if (value == 0.0) value = 0.0;  // -0 reads back as 0: written so
   std::array<char, 32> buf{};
   const auto result = std::to_chars(buf.data(), buf.data() + buf.size(), value);
   return std::string(buf.data(), result.ptr);
+}
+
+double widenFloat(float value) {
+  if (!std::isfinite(value)) return static_cast<double>(value);
+  // the shortest text of the float, read as a double
+  std::array<char, 32> buf{};
+  const auto written = std::to_chars(buf.data(), buf.data() + buf.size(), value);
+  double wide = 0.0;
+  std::from_chars(buf.data(), written.ptr, wide);
+  return wide;
 }
 
 std::string formatTime(double seconds) {

@@ -10,6 +10,7 @@
 #include <system_error>
 #include <vector>
 
+#include "gdpn/core/file.h"
 #include "gdpn/core/output_file.h"
 #include "gdpn/core/text.h"
 
@@ -27,9 +28,12 @@ std::optional<std::filesystem::file_time_type> stampOf(const std::string& path) 
 }  // namespace
 
 std::unique_ptr<Document> Document::open(const std::string& path, core::Diagnostics& diags) {
-  auto model = model::loadModel(path, diags);
+  auto text = core::readFile(path, diags);
+  if (!text) return nullptr;
+  auto model = model::parseModel(*text, path, diags);
   if (!model) return nullptr;
   auto doc = std::make_unique<Document>(std::move(*model));
+  doc->source_ = std::move(*text);
   doc->diagnostics_ = diags;
   return doc;
 }
@@ -165,14 +169,24 @@ std::string keepBackup(const std::string& path) {
 
 }  // namespace
 
-bool Document::save(core::Diagnostics& diags, const std::string& path) {
-  const auto& to = path.empty() ? model_.path : path;
+bool Document::writeFile(const std::string& to, const std::string& text, core::Diagnostics& diags) {
   if (auto why = keepBackup(to); !why.empty()) {
     diags.error(core::SourceLoc{to, 0, 0}, why);
     return false;
   }
-  if (!model::saveModel(model_, to, diags)) return false;
+  if (std::string why; !core::writeOutput(to, text, why)) {
+    diags.error({to, 0, 0}, why);
+    return false;
+  }
+  return true;
+}
+
+bool Document::save(core::Diagnostics& diags, const std::string& path) {
+  const auto& to = path.empty() ? model_.path : path;
+  std::string written = text();
+  if (!writeFile(to, written, diags)) return false;
   if (to == model_.path) {
+    source_ = std::move(written);  // the next save keeps this file's layout
     stamp_ = stampOf(to);
     saved_revision_ = revision_;
     discardAutosave();
@@ -189,9 +203,11 @@ bool Document::saveAs(const std::string& path, core::Diagnostics& diags) {
     diags.error({path, 0, 0}, std::string("a model file's name ends in ") + model::kModelSuffix);
     return false;
   }
-  if (!save(diags, path)) return false;
+  std::string written = text();
+  if (!writeFile(path, written, diags)) return false;
   discardAutosave();  // the old file's: its edits are in the new file
   model_.path = path;
+  source_ = std::move(written);
   stamp_ = stampOf(path);
   saved_revision_ = revision_;
   script_stamps_ = scriptStamps();
@@ -238,7 +254,7 @@ bool Document::autosave(core::Diagnostics& diags) {
     diags.error({path, 0, 0}, "cannot make the autosave folder: " + ec.message());
     return false;
   }
-  return model::saveModel(model_, path, diags);
+  return model::saveModel(model_, path, diags, source_);
 }
 
 bool Document::autosavePending() const {
@@ -279,7 +295,8 @@ bool Document::changedOnDisk() const {
 
 bool Document::reload() {
   core::Diagnostics diags;
-  auto model = model::loadModel(model_.path, diags);
+  auto text = core::readFile(model_.path, diags);
+  auto model = text ? model::parseModel(*text, model_.path, diags) : std::nullopt;
   if (!model) {
     // keep the old model; remember the new file's time so the errors are not read again and again
     stamp_ = stampOf(model_.path);
@@ -287,6 +304,7 @@ bool Document::reload() {
     return false;
   }
   adopt(std::move(*model));
+  source_ = std::move(*text);
   diagnostics_ = std::move(diags);
   undo_.clear();
   if (!namesSomething(*this, selection_)) selection_ = {};

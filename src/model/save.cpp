@@ -9,6 +9,7 @@
 #include "gdpn/model/model.h"
 #include "gdpn/model/schema.h"
 #include "io_section.h"
+#include "keep_layout.h"
 #include "scene_io.h"
 #include "yaml_reader.h"
 
@@ -498,9 +499,29 @@ std::string writeModel(const Model& model) {
   return std::string(out.c_str()) + "\n";
 }
 
-bool saveModel(const Model& model, const std::string& path, core::Diagnostics& diags) {
+std::string writeModelOver(const Model& model, const std::string& original) {
+  std::string after = writeModel(model);
+  if (original.empty()) return after;
+  // the original's own canonical text tells what the edits changed
+  const std::string file = model.path.empty() ? std::string("saved") + kModelSuffix : model.path;
+  core::Diagnostics quiet;
+  const auto before = parseModel(original, file, quiet);
+  if (!before || quiet.hasErrors()) return after;
+  const std::string before_text = writeModel(*before);
+  // unedited: the file itself, which has just read back as the model
+  if (before_text == after) return original;
+  const auto merged = detail::keepLayout(original, before_text, after);
+  if (!merged) return after;
+  // the merged text must read back as the canonical text does, or the canonical text is saved
+  const auto reread = parseModel(*merged, file, quiet);
+  const auto canonical = parseModel(after, file, quiet);
+  if (!reread || !canonical || quiet.hasErrors() || !(*reread == *canonical) || writeModel(*reread) != after) return after;
+  return *merged;
+}
+
+bool saveModel(const Model& model, const std::string& path, core::Diagnostics& diags, const std::string& original) {
   std::string why;
-  if (core::writeOutput(path, writeModel(model), why)) return true;
+  if (core::writeOutput(path, original.empty() ? writeModel(model) : writeModelOver(model, original), why)) return true;
   diags.error({path, 0, 0}, why);
   return false;
 }

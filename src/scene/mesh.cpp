@@ -542,8 +542,8 @@ std::array<double, 3> color(const aiMaterial& m, const char* key, unsigned type,
                             std::array<double, 3> fallback) {
   aiColor3D c;
   if (m.Get(key, type, index, c) != AI_SUCCESS) return fallback;
-  return {std::clamp(static_cast<double>(c.r), 0.0, 1.0), std::clamp(static_cast<double>(c.g), 0.0, 1.0),
-          std::clamp(static_cast<double>(c.b), 0.0, 1.0)};
+  return {std::clamp(core::widenFloat(c.r), 0.0, 1.0), std::clamp(core::widenFloat(c.g), 0.0, 1.0),
+          std::clamp(core::widenFloat(c.b), 0.0, 1.0)};
 }
 
 /// Sets `mesh`'s primitive types from its faces (points, lines, triangles, polygons).
@@ -586,8 +586,13 @@ bool readWithAssimp(const std::string& path, MeshData& mesh, std::string& why) {
     out.emissive = color(m, AI_MATKEY_COLOR_EMISSIVE, out.emissive);
     float shininess = 0, opacity = 1;
     // exponents run to 128 in most formats (Inventor's shininess 1 is 128)
-    if (m.Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS) out.shininess = std::clamp(static_cast<double>(shininess) / 128.0, 0.0, 1.0);
-    if (m.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS) out.transparency = std::clamp(1.0 - static_cast<double>(opacity), 0.0, 1.0);
+    // (what a 32-bit number says, and the results at that precision: 0.3, not 0.30000000000000004)
+    if (m.Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS) {
+      out.shininess = std::clamp(core::widenFloat(static_cast<float>(core::widenFloat(shininess) / 128.0)), 0.0, 1.0);
+    }
+    if (m.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS) {
+      out.transparency = std::clamp(core::widenFloat(static_cast<float>(1.0 - core::widenFloat(opacity))), 0.0, 1.0);
+    }
     mesh.materials.push_back(out);
   }
   for (unsigned i = 0; i < s->mNumMeshes; ++i) {
@@ -647,14 +652,14 @@ SoCallbackAction::Response coinShape(void* data, SoCallbackAction* action, const
   action->getMaterial(ambient, diffuse, specular, emission, shininess, transparency);
   MeshMaterial m;
   const auto rgb = [](const SbColor& c) {
-    return std::array<double, 3>{static_cast<double>(c[0]), static_cast<double>(c[1]), static_cast<double>(c[2])};
+    return std::array<double, 3>{core::widenFloat(c[0]), core::widenFloat(c[1]), core::widenFloat(c[2])};
   };
   m.ambient = rgb(ambient);
   m.diffuse = rgb(diffuse);
   m.specular = rgb(specular);
   m.emissive = rgb(emission);
-  m.shininess = static_cast<double>(shininess);
-  m.transparency = static_cast<double>(transparency);
+  m.shininess = core::widenFloat(shininess);  // Coin's 0.2F is 0.2
+  m.transparency = core::widenFloat(transparency);
   read->mesh->materials.push_back(m);
   read->part.material = static_cast<int>(read->mesh->materials.size() - 1);
   return SoCallbackAction::CONTINUE;

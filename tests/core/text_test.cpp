@@ -27,6 +27,21 @@ TEST(Text, FormatDoubleIsShortestExact) {
   EXPECT_EQ(formatDouble(-1.5), "-1.5");
 }
 
+TEST(Text, NegativeZeroIsWrittenZero) {
+  EXPECT_EQ(formatDouble(-0.0), "0");
+  EXPECT_EQ(formatDouble(-1.75 * 0.0), "0");
+  EXPECT_EQ(formatDouble(-1e-300), "-1e-300");
+}
+
+TEST(Text, AFloatWidensToWhatItsShortestTextSays) {
+  EXPECT_EQ(widenFloat(0.6F), 0.6);
+  EXPECT_EQ(widenFloat(0.2F), 0.2);
+  EXPECT_EQ(formatDouble(widenFloat(0.1F + 0.2F)), "0.3");  // 0.3F is the float nearest the sum
+  EXPECT_EQ(formatDouble(widenFloat(1.0F / 3.0F)), "0.33333334");
+  EXPECT_EQ(static_cast<float>(widenFloat(1.0F / 3.0F)), 1.0F / 3.0F);  // the same 32-bit value
+  EXPECT_EQ(widenFloat(-0.0F), 0.0);
+}
+
 TEST(Text, ModelTimesPrintWithoutTheNoiseOfSummedSteps) {
   EXPECT_EQ(formatDouble(781 * 0.01), "7.8100000000000005");  // what a step count times dt gives
   EXPECT_EQ(formatTime(781 * 0.01), "7.81");

@@ -1,5 +1,6 @@
 // The IDE's document: field edits through commands, undo and redo giving back byte-identical
-// saves, a drag merged into one step, the selection, and reloading from disk.
+// saves, a drag merged into one step, the selection, reloading from disk, and saves that keep the
+// layout of a file written by hand.
 
 #include <gtest/gtest.h>
 
@@ -373,6 +374,87 @@ TEST_F(DocumentTest, AShapeOfNoSizeIsRefusedAndTheModelKeptAsItWas) {
   EXPECT_EQ(doc->execute(std::make_unique<SetFieldCommand>("drop/box/shape", "size",
                                                            FieldValue{std::array<double, 3>{0.2, 1e-4, 0.2}}, 0)),
             "");
+/// A model written by hand: comments, keys in an order of its own, flow and block styles.
+constexpr const char* kCommented = R"(# Two stations (written by hand)
+gdpn: 1
+scene:
+  # the box that drops
+  - Transform:
+      name: drop
+      translation: [0, 0, 3]   # three metres up
+      children:
+        - Material: {name: paint, diffuse: [0.8, 0.2, 0.1], bounce: 0.2}
+        - Cube: {name: old, size: [0.2, 0.2, 0.2]}   # to go
+pages:
+  main:
+    places:
+      # what waits
+      idle: {tokens: 2, at: [0, 0]}   # two to begin
+      busy: {at: [2, 0]}
+    transitions:
+      work:
+        # logs each start
+        pre_fire: |
+          sim.log("start")   # a Python comment
+        at: [1, 0]
+        duration: 0.3
+    arcs:
+      - idle -> work
+      - work -> busy
+settings: {seed: 3}   # settings last, as this author likes
+)";
+
+TEST_F(DocumentTest, SavingKeepsTheFilesCommentsOrderAndLayoutWhereTheEditsDidNotReach) {
+  core::Diagnostics diags;
+  auto doc = Document::open(write("line.gdpn.yaml", kCommented), diags);
+  ASSERT_TRUE(doc) << diags.str();
+  EXPECT_EQ(doc->text(), kCommented) << "unedited, the file is saved as it is";
+  // a field changed, a node deleted, a place moved, a transition added
+  ASSERT_EQ(doc->execute(std::make_unique<SetFieldCommand>("drop/paint", "bounce", FieldValue{0.5})), "");
+  SceneEdit remove;
+  remove.kind = SceneEditKind::Delete;
+  remove.path = "drop/old";
+  ASSERT_EQ(doc->execute(std::make_unique<SceneEditCommand>(remove)), "");
+  ASSERT_EQ(doc->execute(std::make_unique<NetEditCommand>(makeNetEdit(NetEditKind::Move, "main", "busy", {}, {2.5, -0.0}))), "");
+  ASSERT_EQ(doc->execute(std::make_unique<NetEditCommand>(makeNetEdit(NetEditKind::AddTransition, "main", "rest", {}, {3, 0}))), "");
+  ASSERT_TRUE(doc->save(diags)) << diags.str();
+  const std::string expected = R"(# Two stations (written by hand)
+gdpn: 1
+scene:
+  # the box that drops
+  - Transform:
+      name: drop
+      translation: [0, 0, 3]   # three metres up
+      children:
+        - Material: {name: paint, diffuse: [0.8, 0.2, 0.1], bounce: 0.5}
+pages:
+  main:
+    places:
+      # what waits
+      idle: {tokens: 2, at: [0, 0]}   # two to begin
+      busy: {at: [2.5, 0]}
+    transitions:
+      work:
+        # logs each start
+        pre_fire: |
+          sim.log("start")   # a Python comment
+        at: [1, 0]
+        duration: 0.3
+      rest: {at: [3, 0]}
+    arcs:
+      - idle -> work
+      - work -> busy
+settings: {seed: 3}   # settings last, as this author likes
+)";
+  EXPECT_EQ(gdpn::testing::fileBytes(doc->model().path), expected);
+  // the saved file is the document's from now on: it reads back as the same model
+  auto again = Document::open(doc->model().path, diags);
+  ASSERT_TRUE(again) << diags.str();
+  EXPECT_EQ(model::writeModel(again->model()), model::writeModel(doc->model()));
+  // undone back to the first model, the save gives the first file again
+  while (doc->undo()) {
+  }
+  EXPECT_EQ(model::writeModelOver(doc->model(), kCommented), kCommented);
 }
 
 TEST(Selection, KindsHaveNames) {

@@ -24,8 +24,14 @@ std::string didYouMean(std::string_view word, const std::vector<std::string>& ca
 /// `n` and a regular noun in its number: "1 edge", "2 edges", "0 edges".
 std::string counted(std::size_t n, std::string_view noun);
 
-/// The shortest decimal text that reads back as exactly `value` ("0.1", "4", "1e-05").
+/// The shortest decimal text that reads back as exactly `value` ("0.1", "4", "1e-05"); a
+/// negative zero is written "0" (a file or a log never says `-0`).
 std::string formatDouble(double value);
+
+/// The double a 32-bit value stands for: the one nearest the shortest decimal that reads back
+/// as `value` as a float (0.6F gives 0.6, not 0.6000000238418579), so that what a 32-bit
+/// source (a mesh file, a colour widget) says is written as it was typed.
+double widenFloat(float value);
 
 /// A model time in seconds as text, to the nanosecond and without the noise of its sum of
 /// steps: 781 steps of 0.01 s print as "7.81", not "7.8100000000000005".

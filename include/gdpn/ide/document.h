@@ -44,8 +44,12 @@ class Document {
   [[nodiscard]] scene::Scene* scene() const { return scene_.get(); }
   /// The model with a scene of its own, for a run: nothing the run does reaches the document.
   [[nodiscard]] model::Model snapshot() const;
-  /// The canonical text of the model (what saving writes).
-  [[nodiscard]] std::string text() const { return model::writeModel(model_); }
+  /// What saving writes: the model over the text of its file as last read or saved, which keeps
+  /// the comments, key order and layout of all that the edits did not change
+  /// (model::writeModelOver); the canonical text for a new model.
+  [[nodiscard]] std::string text() const { return model::writeModelOver(model_, source_); }
+  /// The text of the model's file as last read or saved ("" for a new model).
+  [[nodiscard]] const std::string& source() const { return source_; }
   /// How many numbered backups of a model file saving keeps.
   static constexpr std::size_t kBackups = 5;
   /// Writes the model to its file (or `path`), atomically; a file there is first kept as
@@ -118,10 +122,13 @@ class Document {
 
  private:
   void adopt(model::Model model);
+  /// Writes `text` to `to` atomically, the file there first kept as a backup.
+  bool writeFile(const std::string& to, const std::string& text, core::Diagnostics& diags);
   friend class ReplaceModelCommand;
   /// Puts `model`'s content (not its path) in place of the document's; returns the old content.
   model::Model exchange(model::Model model);
   model::Model model_;
+  std::string source_;  // the file's text as last read or saved: saving keeps its layout
   std::shared_ptr<scene::Scene> scene_;  // the same object as model_.scene, editable
   Selection selection_;
   UndoStack undo_;

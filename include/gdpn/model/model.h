@@ -91,9 +91,19 @@ std::optional<Model> parseModel(const std::string& text, const std::string& file
 /// writing that again gives the same bytes.
 std::string writeModel(const Model& model);
 
+/// The text of `model` written over `original`, the text of the file it was read from (as a
+/// person wrote it): what the edits did not change keeps its bytes there (comments, key order,
+/// layout, blank lines), what they changed is written canonically in its place, new entries
+/// after their canonical predecessors (docs/format.md, "Saving"). The text always reads back
+/// as the model that writeModel(model) reads back as; where the original's layout cannot give
+/// that, it is writeModel(model). An empty `original` gives writeModel(model).
+std::string writeModelOver(const Model& model, const std::string& original);
+
 /// Writes `model` to `path` safely: a temporary file beside it, then a rename, so the old
-/// file survives any failure. Returns false (with a diagnostic) when it could not.
-bool saveModel(const Model& model, const std::string& path, core::Diagnostics& diags);
+/// file survives any failure. With `original` (the text the model was read from), the text is
+/// writeModelOver(model, original), else writeModel(model). Returns false (with a diagnostic)
+/// when it could not.
+bool saveModel(const Model& model, const std::string& path, core::Diagnostics& diags, const std::string& original = {});
 
 /// A model whose scene is the mesh file at `mesh` as a subtree (a Group named after the file,
 /// holding a Material and a Mesh node per part), to be saved at `out`: the Mesh nodes refer

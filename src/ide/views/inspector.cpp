@@ -55,7 +55,13 @@ bool fieldWidget(const scene::FieldDesc& d, const FieldValue& v, FieldValue& out
       const auto c = std::get<std::array<double, 3>>(v);
       float f[3] = {static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2])};
       if (!ImGui::ColorEdit3("##v", f, ImGuiColorEditFlags_Float)) return false;
-      out = std::array<double, 3>{static_cast<double>(f[0]), static_cast<double>(f[1]), static_cast<double>(f[2])};
+      // the widget holds 32 bits: a component it did not change keeps its value, a changed one
+      // is what the widget shows (0.2, not 0.20000000298023224)
+      std::array<double, 3> changed = c;
+      for (std::size_t k = 0; k < 3; ++k) {
+        if (f[k] != static_cast<float>(c[k])) changed[k] = core::widenFloat(f[k]);
+      }
+      out = changed;
       return true;
     }
     case FieldKind::Vec3: {
