@@ -374,6 +374,8 @@ TEST_F(DocumentTest, AShapeOfNoSizeIsRefusedAndTheModelKeptAsItWas) {
   EXPECT_EQ(doc->execute(std::make_unique<SetFieldCommand>("drop/box/shape", "size",
                                                            FieldValue{std::array<double, 3>{0.2, 1e-4, 0.2}}, 0)),
             "");
+}
+
 /// A model written by hand: comments, keys in an order of its own, flow and block styles.
 constexpr const char* kCommented = R"(# Two stations (written by hand)
 gdpn: 1
