@@ -962,6 +962,21 @@ TEST(CliOutputs, AKilledEncoderKeepsTheOldMovie) {
   EXPECT_EQ(folder.names(), (std::vector<std::string>{"bin", "movie.mp4"}));
 }
 
+TEST(CliOutputs, AMovieCutShortByAFullDiskFailsAndKeepsTheOldOne) {
+  // under a file size limit (a full disk) ffmpeg's writes fail; SIGXFSZ ignored, as a full
+  // disk sends none, ffmpeg used to log "Error writing trailer" and exit 0: a cut movie
+  ScratchFolder folder("gdpn_cli_movie_full_disk");
+  const auto movie = folder.file("movie.mp4");
+  std::ofstream(movie) << "the old movie\n";
+  const auto r = gdpnOnAFullDisk("record tests/data/render/cube_lit.gdpn.yaml --until 2 --fps 10 --size 320x240 -o " +
+                                 movie);
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find(movie + ": error: ffmpeg failed: "), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("frames of"), std::string::npos) << r.out;
+  EXPECT_EQ(fileBytes(movie), "the old movie\n");
+  EXPECT_EQ(folder.names(), (std::vector<std::string>{"movie.mp4"}));
+}
+
 TEST(CliOutputs, ARecordedMovieReplacesTheOldOne) {
   ScratchFolder folder("gdpn_cli_movie_replaced");
   const auto movie = folder.file("movie.mp4");
