@@ -411,6 +411,27 @@ TEST(CliRun, TheFactorysSummaryFitsAHundredColumns) {
   EXPECT_EQ(sensors_only, 9u);
 }
 
+TEST(CliRun, TheExamplesSummariesFitAHundredColumnsAndSayTheStepAsItMeans) {
+  // why a run stopped goes on a line of its own, wrapped; a step of 1/60 s is not written
+  // as 0.016666666666666666
+  auto r = gdpn("run examples/sorting");
+  ASSERT_EQ(r.code, 0) << r.out;
+  expectFitsAHundredColumns(r.out);
+  EXPECT_NE(r.out.find("steps of 0.005 s, t = 15.785 s, seed 7\nstopped: the net is dead (nothing enabled or occurring)\n"),
+            std::string::npos)
+      << r.out;
+  r = gdpn("run examples/vehicles");
+  ASSERT_EQ(r.code, 0) << r.out;
+  expectFitsAHundredColumns(r.out);
+  EXPECT_NE(r.out.find(" s, seed 1\nstopped by a script: all 4 vehicles reached the depot\n"), std::string::npos) << r.out;
+  r = gdpn("run examples/station --until 10");
+  ASSERT_EQ(r.code, 0) << r.out;
+  expectFitsAHundredColumns(r.out);
+  EXPECT_NE(r.out.find("examples/station/sorting_station.gdpn.yaml: 600 steps of 1/60 s, t = 10.000 s, seed 1\n"),
+            std::string::npos)
+      << r.out;
+}
+
 TEST(CliAnalyze, TheFactorysAnalysisFitsAHundredColumns) {
   // long invariants and circuits wrapped under their value and cut (--json has them whole)
   const auto r = gdpn("analyze examples/factory --max-states 20000");
