@@ -432,6 +432,25 @@ TEST(CliRun, TheExamplesSummariesFitAHundredColumnsAndSayTheStepAsItMeans) {
       << r.out;
 }
 
+TEST(CliRun, TheVehiclesLogAndSummaryGiveTheSameDistances) {
+  // a parked car's distance stops counting: its log line and the summary agree
+  const auto r = gdpn("run examples/vehicles");
+  ASSERT_EQ(r.code, 0) << r.out;
+  for (const char* car : {"car1", "car2", "car3", "car4"}) {
+    const auto logged = r.out.find(std::string("] ") + car + " reached the depot at ");
+    ASSERT_NE(logged, std::string::npos) << car << "\n" << r.out;
+    const auto summary = r.out.find(std::string("  ") + car + ":");
+    ASSERT_NE(summary, std::string::npos) << car << "\n" << r.out;
+    const auto tail = [&](std::size_t from) {
+      const auto end = r.out.find('\n', from);
+      const auto after = r.out.rfind(" after ", end);
+      return r.out.substr(after, end - after);
+    };
+    EXPECT_EQ(tail(logged), tail(summary)) << car << "\n" << r.out;
+  }
+  EXPECT_NE(r.out.find("car4 reached the depot at 20.27 s after 28.2 m"), std::string::npos) << r.out;
+}
+
 TEST(CliAnalyze, TheFactorysAnalysisFitsAHundredColumns) {
   // long invariants and circuits wrapped under their value and cut (--json has them whole)
   const auto r = gdpn("analyze examples/factory --max-states 20000");
