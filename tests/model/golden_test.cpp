@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -430,6 +431,29 @@ TEST(CliRun, TheExamplesSummariesFitAHundredColumnsAndSayTheStepAsItMeans) {
   EXPECT_NE(r.out.find("examples/station/sorting_station.gdpn.yaml: 600 steps of 1/60 s, t = 10.000 s, seed 1\n"),
             std::string::npos)
       << r.out;
+}
+
+TEST(CliRun, TheFactorysLogGivesPositionsToTheMillimetre) {
+  const auto r = gdpn("run examples/factory --until 10");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto at = r.out.find("[t=4] released boxes/b00/box at (");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const std::string line = r.out.substr(at, r.out.find('\n', at) - at);
+  double x = 0, y = 0, z = 0;
+  char close = 0;
+  ASSERT_EQ(std::sscanf(line.c_str(), "[t=4] released boxes/b00/box at (%lf, %lf, %lf%c", &x, &y, &z, &close), 4) << line;
+  EXPECT_EQ(close, ')') << line;
+  // three decimals each: "(-7.975, 1.600, 0.812)"
+  std::size_t decimals = 0;
+  for (std::size_t i = line.find('('); i < line.size(); ++i) {
+    if (line[i] == '.') {
+      decimals = 0;
+    } else if (std::isdigit(static_cast<unsigned char>(line[i]))) {
+      ++decimals;
+    } else if (line[i] == ',' || line[i] == ')') {
+      EXPECT_EQ(decimals, 3u) << line;
+    }
+  }
 }
 
 TEST(CliRun, TheVehiclesLogAndSummaryGiveTheSameDistances) {
