@@ -475,6 +475,17 @@ TEST(CliRun, TheVehiclesLogAndSummaryGiveTheSameDistances) {
   EXPECT_NE(r.out.find("car4 reached the depot at 20.27 s after 28.2 m"), std::string::npos) << r.out;
 }
 
+TEST(CliRun, ASignalOfAMissingNodeSaysHowUnnamedNodesAreAddressed) {
+  const gdpn::testing::ScratchFolder dir("gdpn_signal_missing_node");
+  const auto r = gdpn("run examples/vehicles --until 1 --signal node:nosuch/body.position --signals " +
+                      dir.file("s.csv"));
+  EXPECT_NE(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("no scene node 'nosuch/body' (a node without a name is addressed by its index among its "
+                       "siblings: '#2', '#2/box')"),
+            std::string::npos)
+      << r.out;
+}
+
 TEST(CliAnalyze, TheFactorysAnalysisFitsAHundredColumns) {
   // long invariants and circuits wrapped under their value and cut (--json has them whole)
   const auto r = gdpn("analyze examples/factory --max-states 20000");
