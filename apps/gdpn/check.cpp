@@ -37,7 +37,7 @@ int check(const std::string& arg, gdpn::script::ScriptLimits limits, const std::
     return 1;
   }
   using gdpn::core::counted;
-  std::cout << *path << ": ok (" << counted(net->places().size(), "place") << ", "
+  std::cout << core::escapeInvalidUtf8(*path) << ": ok (" << counted(net->places().size(), "place") << ", "
             << counted(net->transitions().size(), "transition") << ", " << counted(net->terms().size(), "arc term")
             << ")\n";
   return 0;

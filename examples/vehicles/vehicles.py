@@ -15,7 +15,9 @@ def drive(body, compass):
     keeps it on the ground. A parked vehicle stands still."""
     name = vehicle(body)
     x, y, _ = body.position
-    if name in last:
+    # the distance counts while the vehicle drives: once parked, its log line and the
+    # summary say the same metres
+    if name in last and name not in arrivals:
         px, py = last[name]
         travelled[name] = travelled.get(name, 0.0) + ((x - px) ** 2 + (y - py) ** 2) ** 0.5
     last[name] = (x, y)

@@ -46,7 +46,9 @@ bool MovieWriter::open(const std::string& path, int width, int height, double fp
   out_->closeStream();
   log_ = (std::filesystem::temp_directory_path() / ("gdpn-ffmpeg-" + std::to_string(::getpid()) + ".log")).string();
   std::ostringstream cmd;
-  cmd << "ffmpeg -hide_banner -loglevel error -y -f rawvideo -pix_fmt rgb24 -s " << width << "x" << height
+  // -xerror: a write that fails (a full disk, a file size limit) ends ffmpeg with a failure;
+  // without it ffmpeg logs "Error writing trailer" and exits 0, the movie cut short
+  cmd << "ffmpeg -hide_banner -loglevel error -xerror -y -f rawvideo -pix_fmt rgb24 -s " << width << "x" << height
       << " -r " << fps << " -i - -c:v libx264 -preset veryfast -pix_fmt yuv420p -movflags +faststart -f mp4 "
       << quote(out_->tempPath())
       << " 2> " << quote(log_);
@@ -73,6 +75,8 @@ bool MovieWriter::write(const std::vector<std::uint8_t>& rgb) {
 
 bool MovieWriter::close(std::string& why, bool keep) {
   if (pipe_ == nullptr) return true;
+  // the last frames still buffered go to ffmpeg now: a failure here is a movie cut short
+  const bool flushed = std::fflush(pipe_) == 0;
   const int status = ::pclose(pipe_);
   pipe_ = nullptr;
   restoreSigpipe();
@@ -84,10 +88,20 @@ bool MovieWriter::close(std::string& why, bool keep) {
   std::error_code ec;
   std::filesystem::remove(log_, ec);
   auto out = std::move(out_);
+  // the temporary file goes with `out` on every failure: the old movie stays
   if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     why = WIFSIGNALED(status) ? "ffmpeg was killed by signal " + std::to_string(WTERMSIG(status))
                               : "ffmpeg failed" + (last.empty() ? std::string() : ": " + last);
-    return false;  // the temporary file goes with `out`, the old movie stays
+    return false;
+  }
+  // ffmpeg logs errors only (-loglevel error): one it survived still spoils the movie
+  if (!last.empty()) {
+    why = "ffmpeg failed: " + last;
+    return false;
+  }
+  if (!flushed) {
+    why = "ffmpeg did not take every frame";
+    return false;
   }
   if (!keep) return true;
   std::error_code size_ec;

@@ -3,10 +3,12 @@
 #include <ostream>
 #include <sstream>
 
+#include "gdpn/core/text.h"
+
 namespace gdpn::core {
 
 std::string SourceLoc::str() const {
-  std::string s = file.empty() ? std::string("<input>") : file;
+  std::string s = file.empty() ? std::string("<input>") : escapeInvalidUtf8(file);
   if (line > 0) {
     s += ':' + std::to_string(line);
     if (column > 0) s += ':' + std::to_string(column);

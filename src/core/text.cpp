@@ -204,6 +204,23 @@ std::size_t firstInvalidUtf8(std::string_view s) {
   return std::string_view::npos;
 }
 
+std::string escapeInvalidUtf8(std::string_view s) {
+  std::string out;
+  out.reserve(s.size());
+  // each valid run as it is, then the first byte that starts no valid sequence as \xNN
+  for (std::size_t bad = firstInvalidUtf8(s); bad != std::string_view::npos; bad = firstInvalidUtf8(s)) {
+    static constexpr char kHex[] = "0123456789abcdef";
+    const auto b = static_cast<unsigned char>(s[bad]);
+    out.append(s.substr(0, bad));
+    out += "\\x";
+    out += kHex[b >> 4];
+    out += kHex[b & 0xf];
+    s.remove_prefix(bad + 1);
+  }
+  out.append(s);
+  return out;
+}
+
 std::pair<int, int> lineColumn(std::string_view text, std::size_t offset) {
   int line = 1, column = 1;
   for (std::size_t i = 0; i < offset && i < text.size(); ++i) {

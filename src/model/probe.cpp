@@ -9,6 +9,7 @@
 #include "gdpn/model/simulation.h"
 #include "gdpn/scene/actions.h"
 #include "gdpn/scene/fields.h"
+#include "gdpn/scene/node_path.h"
 #include "gdpn/sensors/sensor_kind.h"
 
 namespace gdpn::model {
@@ -24,7 +25,7 @@ bool readable(const scene::FieldDesc& f) {
 const scene::Node* liveNode(const Simulation& sim, const std::string& path, std::string& why) {
   const scene::Node* node = sim.plant() ? sim.plant()->find(path) : nullptr;
   if (node == nullptr) {
-    why = sim.plant() ? "no scene node '" + path + "'" : "the model has no scene";
+    why = sim.plant() ? scene::noSceneNode(path) : "the model has no scene";
     return nullptr;
   }
   if (scene::inTemplate(*node)) {

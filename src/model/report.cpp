@@ -335,6 +335,20 @@ std::string fixed(double v, int decimals) {
   return buf;
 }
 
+/// A step length in seconds as a person reads it: "0.01"; "1/60" for a step of a whole rate
+/// that no short decimal writes (not 0.016666666666666666); else four significant digits.
+std::string stepText(double dt) {
+  std::string shortest = core::formatDouble(dt);
+  if (shortest.size() <= 8) return shortest;
+  const double rate = std::round(1.0 / dt);
+  if (rate >= 1.0 && rate < 1e9 && std::abs(1.0 / rate - dt) <= 1e-12 * dt) {
+    return "1/" + std::to_string(static_cast<long long>(rate));
+  }
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", dt);
+  return buf;
+}
+
 std::string pad(const std::string& s, std::size_t width, bool right) {
   if (s.size() >= width) return s;
   const std::string fill(width - s.size(), ' ');
@@ -344,13 +358,20 @@ std::string pad(const std::string& s, std::size_t width, bool right) {
 }  // namespace
 
 void printSummary(std::ostream& out, const Report& report) {
-  out << report.model << ": " << report.outcome.steps << " steps of " << core::formatDouble(report.dt)
-      << " s, t = " << fixed(report.outcome.time, 3) << " s, seed " << report.seed;
-  if (report.outcome.reason == StopReason::Dead) out << ", stopped: the net is dead (nothing enabled or occurring)";
-  if (report.outcome.reason == StopReason::Interrupted) out << ", stopped: interrupted";
-  if (report.outcome.reason == StopReason::Stopped) out << ", stopped by a script: " << report.outcome.message;
-  if (report.outcome.reason == StopReason::ScriptError) out << ", stopped: a script failed";
-  out << "\n";
+  // the run on one line, why it stopped (when not at its end) on the next, wrapped at 100 columns
+  out << core::escapeInvalidUtf8(report.model) << ": " << report.outcome.steps << " steps of " << stepText(report.dt)
+      << " s, t = " << fixed(report.outcome.time, 3) << " s, seed " << report.seed << "\n";
+  std::string stopped;
+  if (report.outcome.reason == StopReason::Dead) stopped = "stopped: the net is dead (nothing enabled or occurring)";
+  if (report.outcome.reason == StopReason::Interrupted) stopped = "stopped: interrupted";
+  if (report.outcome.reason == StopReason::Stopped) stopped = "stopped by a script: " + report.outcome.message;
+  if (report.outcome.reason == StopReason::ScriptError) stopped = "stopped: a script failed";
+  if (!stopped.empty()) {
+    const auto words = core::words(stopped);
+    out << words.front();
+    core::writeWrapped(out, words.front().size(), std::vector<std::string_view>(words.begin() + 1, words.end()), 2);
+    out << "\n";
+  }
   if (!report.params.empty()) {
     // the parameters as the run had them, wrapped at 100 columns
     std::vector<std::string> items;

@@ -291,6 +291,33 @@ void installStopHandler() {
   }
 }
 
+/// A path as Python names files: its bytes decoded as the file system's names are, a byte
+/// that is not UTF-8 as a surrogate (PEP 383), so a folder of any bytes can hold a model.
+py::object pyPath(const std::string& path) {
+  PyObject* s = PyUnicode_DecodeFSDefaultAndSize(path.data(), static_cast<Py_ssize_t>(path.size()));
+  if (!s) throw py::error_already_set();
+  return py::reinterpret_steal<py::object>(s);
+}
+
+/// The bytes of a Python text that may name a path (a code object's file name, a traceback
+/// line): encoded as the file system's names are, each surrogate back to the byte it stood
+/// for (pyPath's inverse); any other lone surrogate escaped. Never fails.
+std::string bytesOf(py::handle text) {
+  py::object s = py::str(text);
+  PyObject* b = PyUnicode_EncodeFSDefault(s.ptr());
+  if (!b) {
+    PyErr_Clear();
+    b = PyUnicode_AsEncodedString(s.ptr(), "utf-8", "backslashreplace");
+  }
+  if (!b) {
+    PyErr_Clear();
+    return "?";
+  }
+  std::string out(PyBytes_AS_STRING(b), static_cast<std::size_t>(PyBytes_GET_SIZE(b)));
+  Py_DECREF(b);
+  return out;
+}
+
 }  // namespace
 
 struct Engine::Impl : detail::Context {
@@ -440,7 +467,7 @@ def compile_mapped(code, filename, mode, lines):
     try {
       py::list lines;
       for (const int l : s.lines) lines.append(l);
-      py::object code = compile_mapped(s.code, model_path, expression ? "eval" : "exec", lines);
+      py::object code = compile_mapped(s.code, pyPath(model_path), expression ? "eval" : "exec", lines);
       return code.release().ptr();
     } catch (py::error_already_set& e) {
       e.restore();
@@ -457,8 +484,8 @@ def compile_mapped(code, filename, mode, lines):
       const py::object v = e.value();
       if (py::hasattr(v, "lineno") && !v.attr("lineno").is_none()) line = v.attr("lineno").cast<int>();
       if (py::hasattr(v, "offset") && !v.attr("offset").is_none()) col = v.attr("offset").cast<int>() + indent;
-      if (py::hasattr(v, "filename") && !v.attr("filename").is_none()) file = py::str(v.attr("filename"));
-      msg = py::str(v.attr("msg"));
+      if (py::hasattr(v, "filename") && !v.attr("filename").is_none()) file = bytesOf(v.attr("filename"));
+      msg = bytesOf(v.attr("msg"));
     }
     diags.error({file, line, col}, "syntax error in " + what + ": " + msg);
   }
@@ -471,7 +498,7 @@ def compile_mapped(code, filename, mode, lines):
     loaded[path] = false;
     std::ifstream in(path, std::ios::binary);
     if (!in) {
-      diags.error(s.loc, "cannot read the script file '" + s.file + "' of " + what + " (looked for " + path + ")");
+      diags.error(s.loc, "cannot read the script file '" + s.file + "' of " + what + " (looked for " + core::escapeInvalidUtf8(path) + ")");
       return std::nullopt;
     }
     std::stringstream text;
@@ -572,15 +599,16 @@ def compile_mapped(code, filename, mode, lines):
       py::object te = tb.attr("TracebackException")(e.type(), e.value(), e.trace());
       py::list kept;
       for (auto f : te.attr("stack")) {
-        if (!internalFrame(py::str(f.attr("filename")).cast<std::string>().c_str())) kept.append(f);
+        if (!internalFrame(bytesOf(f.attr("filename")).c_str())) kept.append(f);
       }
       te.attr("stack") = tb.attr("StackSummary").attr("from_list")(kept);
       py::list lines(te.attr("format")());
       std::string text;
-      for (auto line : lines) text += py::str(line).cast<std::string>();
-      return text;
+      // the bytes of the paths it names, shown escaped where they are not UTF-8
+      for (auto line : lines) text += bytesOf(line);
+      return core::escapeInvalidUtf8(text);
     } catch (const std::exception&) {
-      return e.what();
+      return core::escapeInvalidUtf8(e.what());
     }
   }
 
@@ -601,9 +629,8 @@ def compile_mapped(code, filename, mode, lines):
     for (PyObject* t = tb; t && t != Py_None;) {
       auto* frame = reinterpret_cast<PyTracebackObject*>(t);
       PyCodeObject* code = PyFrame_GetCode(frame->tb_frame);
-      const char* f = PyUnicode_AsUTF8(code->co_filename);
-      const std::string file = f ? f : "";
-      if (!internalFrame(f) || where.first.empty()) where = {file, frame->tb_lineno};
+      const std::string file = bytesOf(code->co_filename);
+      if (!internalFrame(file.c_str()) || where.first.empty()) where = {file, frame->tb_lineno};
       if (file == model_path || (!dir.empty() && file.starts_with(dir))) mine = {file, frame->tb_lineno};
       Py_DECREF(code);
       t = reinterpret_cast<PyObject*>(frame->tb_next);
@@ -633,7 +660,8 @@ def compile_mapped(code, filename, mode, lines):
   /// Records the pending exception as the engine's halt.
   void fail(ScriptKind kind, std::uint32_t id) {
     const auto [file, line] = innermost();
-    const std::string where = (file.empty() ? model_path : file) + (line > 0 ? ":" + std::to_string(line) : "");
+    const std::string where =
+        core::escapeInvalidUtf8(file.empty() ? model_path : file) + (line > 0 ? ":" + std::to_string(line) : "");
     // the model time too: a fault late in a long run is found again by running to it
     const std::string what = std::string(net::info(kind).key) + " of " + describe(kind, id) + " at t = " +
                              core::formatTime(kernel.now()) + " s";
@@ -831,7 +859,7 @@ std::unique_ptr<Engine> Engine::create(const net::Net& net, net::Kernel& kernel,
   // the watchdog is there before the first script runs: the globals are watched too
   impl->watchdog = std::make_unique<Watchdog>(options.timeout_s, options.grace_s, [impl = impl.get()] {
     std::fprintf(stderr, "%s: error: a script %s and did not stop within %s s more; the process ends\n",
-                 impl->model_path.c_str(), impl->lateText().c_str(), core::formatDouble(impl->options.grace_s).c_str());
+                 core::escapeInvalidUtf8(impl->model_path).c_str(), impl->lateText().c_str(), core::formatDouble(impl->options.grace_s).c_str());
     std::fflush(stderr);
     std::_Exit(1);
   });

@@ -14,6 +14,7 @@
 
 #include "gdpn/core/math.h"
 #include "gdpn/core/text.h"
+#include "gdpn/scene/node_path.h"
 #include "gdpn/scene/types.h"
 #include "gdpn/sensors/sensor_kind.h"
 
@@ -1140,7 +1141,7 @@ void registerSimView(py::module_& m) {
            [](const SimView& v, const std::string& path) -> py::object {
              auto& ctx = v.r.get();
              const scene::Node* n = ctx.plant() ? ctx.plant()->find(path) : nullptr;
-             if (!n) throw py::key_error("no scene node '" + path + "'");
+             if (!n) throw py::key_error(scene::noSceneNode(path));
              return ctx.nodeView(n->handle());
            },
            "the scene node at a path")

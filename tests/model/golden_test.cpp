@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -409,6 +410,80 @@ TEST(CliRun, TheFactorysSummaryFitsAHundredColumns) {
     if (p["sensors_only"].get<bool>()) ++sensors_only;
   }
   EXPECT_EQ(sensors_only, 9u);
+}
+
+TEST(CliRun, TheExamplesSummariesFitAHundredColumnsAndSayTheStepAsItMeans) {
+  // why a run stopped goes on a line of its own, wrapped; a step of 1/60 s is not written
+  // as 0.016666666666666666
+  auto r = gdpn("run examples/sorting");
+  ASSERT_EQ(r.code, 0) << r.out;
+  expectFitsAHundredColumns(r.out);
+  EXPECT_NE(r.out.find("steps of 0.005 s, t = 15.785 s, seed 7\nstopped: the net is dead (nothing enabled or occurring)\n"),
+            std::string::npos)
+      << r.out;
+  r = gdpn("run examples/vehicles");
+  ASSERT_EQ(r.code, 0) << r.out;
+  expectFitsAHundredColumns(r.out);
+  EXPECT_NE(r.out.find(" s, seed 1\nstopped by a script: all 4 vehicles reached the depot\n"), std::string::npos) << r.out;
+  r = gdpn("run examples/station --until 10");
+  ASSERT_EQ(r.code, 0) << r.out;
+  expectFitsAHundredColumns(r.out);
+  EXPECT_NE(r.out.find("examples/station/sorting_station.gdpn.yaml: 600 steps of 1/60 s, t = 10.000 s, seed 1\n"),
+            std::string::npos)
+      << r.out;
+}
+
+TEST(CliRun, TheFactorysLogGivesPositionsToTheMillimetre) {
+  const auto r = gdpn("run examples/factory --until 10");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto at = r.out.find("[t=4] released boxes/b00/box at (");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const std::string line = r.out.substr(at, r.out.find('\n', at) - at);
+  double x = 0, y = 0, z = 0;
+  char close = 0;
+  ASSERT_EQ(std::sscanf(line.c_str(), "[t=4] released boxes/b00/box at (%lf, %lf, %lf%c", &x, &y, &z, &close), 4) << line;
+  EXPECT_EQ(close, ')') << line;
+  // three decimals each: "(-7.975, 1.600, 0.812)"
+  std::size_t decimals = 0;
+  for (std::size_t i = line.find('('); i < line.size(); ++i) {
+    if (line[i] == '.') {
+      decimals = 0;
+    } else if (std::isdigit(static_cast<unsigned char>(line[i]))) {
+      ++decimals;
+    } else if (line[i] == ',' || line[i] == ')') {
+      EXPECT_EQ(decimals, 3u) << line;
+    }
+  }
+}
+
+TEST(CliRun, TheVehiclesLogAndSummaryGiveTheSameDistances) {
+  // a parked car's distance stops counting: its log line and the summary agree
+  const auto r = gdpn("run examples/vehicles");
+  ASSERT_EQ(r.code, 0) << r.out;
+  for (const char* car : {"car1", "car2", "car3", "car4"}) {
+    const auto logged = r.out.find(std::string("] ") + car + " reached the depot at ");
+    ASSERT_NE(logged, std::string::npos) << car << "\n" << r.out;
+    const auto summary = r.out.find(std::string("  ") + car + ":");
+    ASSERT_NE(summary, std::string::npos) << car << "\n" << r.out;
+    const auto tail = [&](std::size_t from) {
+      const auto end = r.out.find('\n', from);
+      const auto after = r.out.rfind(" after ", end);
+      return r.out.substr(after, end - after);
+    };
+    EXPECT_EQ(tail(logged), tail(summary)) << car << "\n" << r.out;
+  }
+  EXPECT_NE(r.out.find("car4 reached the depot at 20.27 s after 28.2 m"), std::string::npos) << r.out;
+}
+
+TEST(CliRun, ASignalOfAMissingNodeSaysHowUnnamedNodesAreAddressed) {
+  const gdpn::testing::ScratchFolder dir("gdpn_signal_missing_node");
+  const auto r = gdpn("run examples/vehicles --until 1 --signal node:nosuch/body.position --signals " +
+                      dir.file("s.csv"));
+  EXPECT_NE(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("no scene node 'nosuch/body' (a node without a name is addressed by its index among its "
+                       "siblings: '#2', '#2/box')"),
+            std::string::npos)
+      << r.out;
 }
 
 TEST(CliAnalyze, TheFactorysAnalysisFitsAHundredColumns) {
@@ -979,6 +1054,21 @@ TEST(CliOutputs, AKilledEncoderKeepsTheOldMovie) {
   EXPECT_NE(r.out.find(movie + ": error: ffmpeg "), std::string::npos) << r.out;
   EXPECT_EQ(fileBytes(movie), "the old movie\n");
   EXPECT_EQ(folder.names(), (std::vector<std::string>{"bin", "movie.mp4"}));
+}
+
+TEST(CliOutputs, AMovieCutShortByAFullDiskFailsAndKeepsTheOldOne) {
+  // under a file size limit (a full disk) ffmpeg's writes fail; SIGXFSZ ignored, as a full
+  // disk sends none, ffmpeg used to log "Error writing trailer" and exit 0: a cut movie
+  ScratchFolder folder("gdpn_cli_movie_full_disk");
+  const auto movie = folder.file("movie.mp4");
+  std::ofstream(movie) << "the old movie\n";
+  const auto r = gdpnOnAFullDisk("record tests/data/render/cube_lit.gdpn.yaml --until 2 --fps 10 --size 320x240 -o " +
+                                 movie);
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find(movie + ": error: ffmpeg failed: "), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("frames of"), std::string::npos) << r.out;
+  EXPECT_EQ(fileBytes(movie), "the old movie\n");
+  EXPECT_EQ(folder.names(), (std::vector<std::string>{"movie.mp4"}));
 }
 
 TEST(CliOutputs, ARecordedMovieReplacesTheOldOne) {

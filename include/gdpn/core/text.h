@@ -81,6 +81,10 @@ namespace gdpn::core {
 /// invalid), or npos when all of `s` is valid.
 std::size_t firstInvalidUtf8(std::string_view s);
 
+/// `s` (a path, a message naming one) with every byte that is not part of valid UTF-8
+/// written as `\xNN`, the rest as it is: a path in a folder of any bytes prints readably.
+std::string escapeInvalidUtf8(std::string_view s);
+
 /// 1-based line and column (in bytes) of `offset` in `text`.
 std::pair<int, int> lineColumn(std::string_view text, std::size_t offset);
 
