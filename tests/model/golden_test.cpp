@@ -878,9 +878,13 @@ TEST(CliNumbers, NotANumberInfinityAndOutOfRangeAreRefusedNamingTheOption) {
   for (const char* bad : {"-1", "1.5", "18446744073709551616", "nan"}) {
     expectRefused(run + "--seed " + bad, std::string("--seed: expected a whole number from 0 to 2^64-1, got '") + bad + "'");
   }
-  for (const char* bad : {"0", "-0.5", "nan", "inf", "1e7"}) {
+  for (const char* bad : {"-0.5", "nan", "inf", "1e7"}) {
     expectRefused(run + "--script-timeout " + bad,
-                  std::string("--script-timeout: expected seconds above 0, at most 1e6, got '") + bad + "'");
+                  std::string("--script-timeout: expected seconds from 0 (never) to 1e6, got '") + bad + "'");
+  }
+  for (const char* bad : {"-1", "nan", "inf", "2e9"}) {
+    expectRefused(run + "--script-memory " + bad,
+                  std::string("--script-memory: expected mebibytes from 0 (no bound) to 1e9, got '") + bad + "'");
   }
   const std::string analyze = "analyze examples/basics/figure31 ";
   expectRefused(analyze + "--max-states 0", "--max-states: expected a whole number of states from 1 to 10^12, got '0'");
