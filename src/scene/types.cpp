@@ -41,8 +41,11 @@ std::string FieldDesc::rangeText() const {
     return s;
   }
   if (!boundedBelow() && !boundedAbove()) return "";
-  return (min_open ? "(" : "[") + (boundedBelow() ? core::formatDouble(min) : std::string("-inf")) + ", " +
-         (boundedAbove() ? core::formatDouble(max) : std::string("inf")) + "]";
+  // the plant's limit where it is the bound (fmax1 in [0, 1e12]); a joint's "no limit" is inf
+  const auto bound = [](double x) {
+    return std::abs(x) >= 1e299 ? std::string(x < 0 ? "-inf" : "inf") : core::formatDouble(x);
+  };
+  return (min_open ? "(" : "[") + bound(min) + ", " + bound(max) + "]";
 }
 
 const std::string& FieldDesc::unitFor(std::string_view choice) const {

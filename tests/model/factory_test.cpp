@@ -87,6 +87,7 @@ const TransitionFigures* transition(const Report& report, const std::string& nam
 TEST(Factory, TheLinePaintsHalfTheBoxesOnceAndTheRodsStrikeNone) {
   auto sim = testing::openModelFile("examples/factory/factory.gdpn.yaml");
   ASSERT_TRUE(sim);
+  watchRoundTrips(*sim);  // as a run that prints its summary does: the stations' trips measured
   const auto outcome = sim->run({120.0, std::nullopt});
   ASSERT_EQ(outcome.reason, StopReason::Until) << outcome.message;
   const auto report = makeReport(*sim, outcome);
