@@ -137,7 +137,7 @@ TEST(FieldCheck, ShapeDimensionsMustBeAboveZero) {
   EXPECT_EQ(flat->component, 1);
   EXPECT_EQ(flat->message, "'size' must be above 0, got 0");
   EXPECT_FALSE(size.check(std::array<double, 3>{1, 1e-6, 1}));
-  EXPECT_EQ(size.rangeText(), "(0, inf]");
+  EXPECT_EQ(size.rangeText(), "(0, 1e+12]");
   for (const auto& [kind, name] : std::vector<std::pair<NodeKind, const char*>>{
            {NodeKind::Sphere, "radius"}, {NodeKind::Cylinder, "radius"}, {NodeKind::Cylinder, "height"},
            {NodeKind::Cone, "radius"}, {NodeKind::Cone, "height"}, {NodeKind::Region, "radius"},
