@@ -504,8 +504,9 @@ class Merger {
       const Span& span = (*spans)[*bk];
       anchor = span.end;
       if (same(bi[*bk].value, ai[*ak].value)) continue;
-      const bool done = changed(oi[*bk].value, bi[*bk].value, ai[*ak].value, [&] {
-        auto text = moved((*a_spans)[*ak], column);
+      const std::size_t a_at = *ak;  // a structured binding cannot be captured (C++20, clang)
+      const bool done = changed(oi[*bk].value, bi[*bk].value, ai[a_at].value, [&] {
+        auto text = moved((*a_spans)[a_at], column);
         if (!text) return false;
         replace(span, std::move(*text));
         return true;
