@@ -96,6 +96,8 @@ class ModelReader {
         type_scenes_ = &model.type_scenes;
         parts_ = &model.parts;
         readPages(e.value, model.net.page_types, true);
+      } else if (e.key == "fusion") {
+        readFusions(e, model.net.fusions);
       } else if (e.key == "scene") {
         model.scene = detail::readScene(e.value, r_, e.loc, angles_);
       } else if (e.key == "io") {
@@ -416,6 +418,28 @@ class ModelReader {
     }
   }
 
+  /// `fusion`: each set's name and scope (`pool: global`).
+  void readFusions(const Entry& section, std::vector<net::FusionSpec>& out) {
+    forEachNamed(section, "fusion", [&](const Entry& e) {
+      net::FusionSpec f;
+      f.name = e.key;
+      f.loc = e.loc;
+      const auto word = r_.string(e.value, "a fusion set's scope");
+      if (!word) return;
+      const auto scope = net::parseFusionScope(*word);
+      if (!scope) {
+        const std::vector<std::string> scopes = {net::fusionScopeName(net::FusionScope::Global),
+                                                 net::fusionScopeName(net::FusionScope::Instance)};
+        r_.error(e.value, "fusion set '" + f.name + "' has scope '" + *word + "'" + core::didYouMean(*word, scopes) +
+                              "; expected global (one place for the net) or instance (one place per instance of "
+                              "the page type that holds its members)");
+        return;
+      }
+      f.scope = *scope;
+      out.push_back(std::move(f));
+    });
+  }
+
   void readPages(const YAML::Node& node, std::vector<net::PageSpec>& out, bool types) {
     const char* what = types ? "page_types" : "pages";
     if (!r_.expectMap(node, what)) return;
@@ -686,6 +710,8 @@ class ModelReader {
     for (const auto& e : r_.entries(pe.value, "place", keyNames(Section::Place))) {
       if (e.key == "description") {
         if (auto s = r_.string(e.value, "description")) p.description = *s;
+      } else if (e.key == "fusion") {
+        if (auto s = r_.string(e.value, "fusion")) p.fusion = *s, p.fusion_loc = r_.loc(e.value, e.loc);
       } else if (e.key == "slots") {
         if (!r_.expectMap(e.value, "slots")) continue;
         perSlot(e, "slots", [&](net::SlotId slot, const YAML::Node& v, const SourceLoc& loc) {

@@ -101,6 +101,7 @@ void writePlace(YAML::Emitter& out, const net::PlaceSpec& p) {
   out << YAML::Key << p.name << YAML::Value << styleFor(!p.scripts.empty()) << YAML::BeginMap;
   std::vector<schema::KeyWriter> keys = {
       {"description", [&] { description(out, p.description); }},
+      {"fusion", [&] { if (!p.fusion.empty()) out << YAML::Key << "fusion" << YAML::Value << p.fusion; }},
       {"slots",
        [&] {
          if (p.kinds.empty()) return;
@@ -479,6 +480,12 @@ std::string writeModel(const Model& model) {
                const auto part = model.parts.find(p.name);
                writePage(o, p, true, it == model.type_scenes.end() ? nullptr : it->second.get(), s.angles,
                          part == model.parts.end() ? nullptr : &part->second);
+             });
+           }},
+          {"fusion",
+           [&] {
+             namedMap(out, "fusion", model.net.fusions, [](YAML::Emitter& o, const net::FusionSpec& f) {
+               o << YAML::Key << f.name << YAML::Value << net::fusionScopeName(f.scope);
              });
            }},
           {"scene",

@@ -89,6 +89,11 @@ std::vector<KeyDesc> modelKeys() {
            "map"),
       form(k("pages", ValueType::Map, "", "the top-level nets; constructs are named `page/name`"), "map name → page"),
       form(k("page_types", ValueType::Map, "", "pages to instantiate"), "map name → page type"),
+      form(k("fusion", ValueType::Map, "",
+             "fusion sets: places that are one place, each a member by its `fusion` key; `global`: one place for "
+             "the whole net; `instance`: members on one page or page type, one place per instance of it (*Fusion "
+             "places*)"),
+           "map name → `global` or `instance`"),
       form(k("scene", ValueType::List, "", "the plant: a tree of typed nodes (below)"), "list of nodes"),
       form(k("scripts", ValueType::Map, "", "`globals`: Python run once at load; every script sees its names"), "map"),
   };
@@ -212,6 +217,9 @@ std::vector<KeyDesc> placeKeys() {
   slots.form = "map slot → " + choiceList(slots, "`");
   return {
       k("description", ValueType::Text, "", "free text"),
+      k("fusion", ValueType::Name, "",
+        "the fusion set it is a member of: it is one place with the set's other members; one member declares "
+        "the keys below (the others name the set alone) (*Fusion places*)"),
       slots,
       range(form(k("tokens", ValueType::Integer, "0",
                    "initial marking. An integer is a count on `a0`; a list of node paths (`[box1, line/box2]`) puts "

@@ -55,12 +55,16 @@ class Compiler {
     checkUnique(spec_.pages, "page");
     for (const auto& page : spec_.pages) checkPage(page, false);
     for (const auto& type : spec_.page_types) checkPage(type, true);
+    checkFusions();
     if (diags_.hasErrors()) return nullptr;
     reserveFlat();
     for (const auto& page : spec_.pages) {
       std::vector<const PageSpec*> stack;
       instantiate(page, kNoScope, page.name, "", stack);
     }
+    if (diags_.hasErrors()) return nullptr;
+    fuse();
+    checkFusedArcs();
     if (diags_.hasErrors()) return nullptr;
     resolveKinds();
     checkBalance();
@@ -387,6 +391,74 @@ class Compiler {
     }
   }
 
+  // ---- fusion sets: checked on the pages that hold their members ----
+
+  /// Each member names a declared set; an `instance` set's members share one page or page
+  /// type; one member declares what the set's place holds, the others name the set alone
+  /// (or declare exactly the same).
+  void checkFusions() {
+    checkUnique(spec_.fusions, "fusion set");
+    std::vector<std::string> known;
+    for (std::uint32_t i = 0; i < spec_.fusions.size(); ++i) {
+      const auto& f = spec_.fusions[i];
+      checkName(f.name, f.loc, "fusion set");
+      fusion_index_.try_emplace(f.name, i);
+      known.push_back(f.name);
+    }
+    struct Seen {
+      const PlaceSpec* first = nullptr;     // its first member
+      const PageSpec* page = nullptr;       // the page that holds it
+      const PlaceSpec* declarer = nullptr;  // its first member that declares anything
+      const PageSpec* declarer_page = nullptr;
+    };
+    std::vector<Seen> seen(spec_.fusions.size());
+    const auto visit = [&](const PageSpec& page) {
+      for (const auto& p : page.places) {
+        if (p.fusion.empty()) continue;
+        const auto it = fusion_index_.find(p.fusion);
+        if (it == fusion_index_.end()) {
+          diags_.error(p.fusion_loc, "place '" + page.name + "/" + p.name + "' is a member of fusion set '" + p.fusion +
+                                         "', which the model does not declare (under 'fusion')" +
+                                         core::didYouMean(p.fusion, known));
+          continue;
+        }
+        member_set_.emplace(&p, it->second);
+        const FusionSpec& f = spec_.fusions[it->second];
+        Seen& s = seen[it->second];
+        if (!s.first) {
+          s.first = &p;
+          s.page = &page;
+        } else if (f.scope == FusionScope::Instance && s.page != &page) {
+          diags_.error(p.fusion_loc, "fusion set '" + f.name + "' is one place per instance, so its members lie on one "
+                                         "page or page type; '" + page.name + "/" + p.name + "' lies on '" + page.name +
+                                         "' but '" + s.page->name + "/" + s.first->name + "' on '" + s.page->name +
+                                         "' (make the set global to join places of different pages)");
+          diags_.note(s.first->fusion_loc, "the set's first member is here");
+        }
+        if (!p.declares()) continue;
+        if (!s.declarer) {
+          s.declarer = &p;
+          s.declarer_page = &page;
+        } else if (!sameDeclarations(*s.declarer, p)) {
+          const std::string first = s.declarer_page->name + "/" + s.declarer->name;
+          diags_.error(p.loc, "place '" + page.name + "/" + p.name + "' and place '" + first + "' of fusion set '" +
+                                  f.name + "' declare its tokens, capacity, slot kinds, sensors or scripts differently; "
+                                  "one member declares them and the others name the set alone");
+          diags_.note(s.declarer->loc, "'" + first + "' declares them here");
+        }
+      }
+    };
+    for (const auto& page : spec_.pages) visit(page);
+    for (const auto& type : spec_.page_types) visit(type);
+    for (std::uint32_t i = 0; i < spec_.fusions.size(); ++i) {
+      if (!seen[i].first) {
+        diags_.warning(spec_.fusions[i].loc, "fusion set '" + spec_.fusions[i].name +
+                                                 "' has no members (a place joins it with 'fusion: " +
+                                                 spec_.fusions[i].name + "')");
+      }
+    }
+  }
+
   // ---- instantiation: flatten pages and page types into qualified constructs ----
 
   struct FlatPlace {
@@ -499,6 +571,70 @@ class Compiler {
       const auto place = placeOf(output ? to : from);
       if (!place) continue;
       arcs_.push_back({*place, TransitionId{tbase + (output ? from : to).index}, output, &page.arcs[i]});
+    }
+  }
+
+  // ---- fusion: the members of a set (per instance, for an `instance` set) become one place ----
+
+  /// Makes the flat places of each fusion set one: the member that declares what it holds
+  /// (else the first) stays, under its name; the arcs of the others move to it. The scopes
+  /// keep numbering their places as before, and the names map each number to its place.
+  void fuse() {
+    if (member_set_.empty()) return;
+    const auto n = static_cast<std::uint32_t>(places_.size());
+    std::vector<std::uint32_t> group(n, kNone);  // per flat place: its set's place, as the flat place that stays
+    std::unordered_map<std::uint64_t, std::uint32_t> kept;  // (set, scope) -> the flat place that stays
+    for (std::uint32_t v = 0; v < n; ++v) {
+      const auto member = member_set_.find(places_[v].spec);
+      if (member == member_set_.end()) continue;
+      const bool per_instance = spec_.fusions[member->second].scope == FusionScope::Instance;
+      const std::uint64_t key = std::uint64_t{member->second} << 32 | (per_instance ? places_[v].scope : kNone);
+      auto [it, fresh] = kept.try_emplace(key, v);
+      if (!fresh && !places_[it->second].spec->declares() && places_[v].spec->declares()) it->second = v;
+    }
+    for (std::uint32_t v = 0; v < n; ++v) {
+      const auto member = member_set_.find(places_[v].spec);
+      if (member == member_set_.end()) continue;
+      const bool per_instance = spec_.fusions[member->second].scope == FusionScope::Instance;
+      group[v] = kept.at(std::uint64_t{member->second} << 32 | (per_instance ? places_[v].scope : kNone));
+    }
+    // the places that stay, in their order; each other member is the place of its set
+    std::vector<std::uint32_t> id(n, kNone);
+    std::vector<FlatPlace> merged;
+    merged.reserve(n);
+    for (std::uint32_t v = 0; v < n; ++v) {
+      if (group[v] != kNone && group[v] != v) continue;
+      id[v] = static_cast<std::uint32_t>(merged.size());
+      merged.push_back(places_[v]);
+    }
+    fused_.assign(merged.size(), false);
+    for (std::uint32_t v = 0; v < n; ++v) {
+      if (group[v] == kNone || group[v] == v) continue;
+      id[v] = id[group[v]];
+      fused_[id[v]] = true;
+    }
+    for (auto& a : arcs_) a.place = PlaceId{id[a.place]};
+    places_ = std::move(merged);
+    builder_.names().setPlaceIds(std::move(id));
+  }
+
+  /// Two arcs between a transition and one fused place on one slot (through two members):
+  /// like two arcs to one place, each would find the tokens only their sum needs. Reported
+  /// once per pair of arcs, however many instances repeat them.
+  void checkFusedArcs() {
+    if (fused_.empty()) return;
+    std::map<std::tuple<TransitionId, PlaceId, SlotId, bool>, const ArcSpec*> first;
+    std::set<std::pair<const ArcSpec*, const ArcSpec*>> told;
+    for (const auto& a : arcs_) {
+      if (!fused_[a.place] || (!a.output && a.spec->kind != ArcKind::Normal)) continue;
+      forEachWeight(*a.spec, [&](SlotId slot, std::int64_t, const SourceLoc&) {
+        const auto [it, fresh] = first.try_emplace({a.transition, a.place, slot, a.output}, a.spec);
+        if (fresh || !told.emplace(it->second, a.spec).second) return;
+        diags_.error(a.spec->loc, "a second arc between transition '" + transitionName(a.transition) +
+                                      "' and fusion place '" + placeName(a.place) + "' on slot " + slotName(slot) +
+                                      " (through another member of its set): give one arc the sum of their weights");
+        diags_.note(it->second->loc, "the first arc is here");
+      });
     }
   }
 
@@ -755,6 +891,9 @@ class Compiler {
   std::vector<SlotKind> root_kind_;
   std::unordered_map<const ScriptSpec*, std::int32_t> script_ids_;
   std::unordered_map<const PageSpec*, std::uint32_t> tables_;  // each page's table in builder_.names()
+  std::unordered_map<std::string, std::uint32_t> fusion_index_;       // a fusion set's name -> its index
+  std::unordered_map<const PlaceSpec*, std::uint32_t> member_set_;    // a member place -> its set's index
+  std::vector<bool> fused_;  // per flat place after fuse(): whether other members joined it
   NetBuilder builder_;
 };
 

@@ -134,12 +134,15 @@ std::optional<std::uint32_t> Names::find(std::string_view qualified_name, bool p
   const auto id = (place ? t.place_index : t.transition_index)
                       .find(local, [&](std::uint32_t i) -> std::string_view { return names[i]; });
   if (!id) return std::nullopt;
-  return ids.empty() ? (place ? s.first_place : s.first_transition) + *id : ids[*id];
+  if (!ids.empty()) return ids[*id];
+  if (!place) return s.first_transition + *id;
+  return scope_place_ids_.empty() ? s.first_place + *id : scope_place_ids_[s.first_place + *id];
 }
 
 std::size_t Names::memoryBytes() const {
   std::size_t bytes = tables_.capacity() * sizeof(ConstructTable) + scopes_.capacity() * sizeof(Scope) +
-                      heapBytes(scope_chars_) + scope_index_.memoryBytes();
+                      heapBytes(scope_chars_) + scope_index_.memoryBytes() +
+                      scope_place_ids_.capacity() * sizeof(std::uint32_t);
   for (const auto& t : tables_) {
     bytes += (t.places.capacity() + t.transitions.capacity()) * sizeof(std::string) +
              (t.place_locs.capacity() + t.transition_locs.capacity()) * sizeof(SourceLoc) +

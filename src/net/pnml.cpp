@@ -69,6 +69,7 @@ struct RawArc {
   const XmlElement* el = nullptr;
   ArcSpec spec;            // all but its ends
   std::string place, transition;  // the ids of the place and transition it joins, references followed
+  std::string via;                // the referencePlace it names for its place, if it names one
   bool from_place = true;
 };
 
@@ -106,6 +107,7 @@ class PnmlReader {
     if (const XmlElement* tool = gdpnPart(*net)) {
       for (const auto& c : tool->children) {
         if (c->name == "globals") spec.globals = script(*c);
+        else if (c->name == "fusion") fusionSet(*c);
         else unknown(*c, "the net");
       }
     }
@@ -116,6 +118,7 @@ class PnmlReader {
     placeArcs();
     if (diags_.hasErrors()) return std::nullopt;
     build(spec);
+    spec.fusions = std::move(fusions_);
     return spec;
   }
 
@@ -220,13 +223,29 @@ class PnmlReader {
     return all.back();
   }
 
+  /// A fusion set the net's part declares: `<fusion name="pool" scope="global"/>`.
+  void fusionSet(const XmlElement& el) {
+    const std::string* name = el.attr("name");
+    const std::string* scope = el.attr("scope");
+    const auto parsed = scope ? parseFusionScope(*scope) : std::optional<FusionScope>(FusionScope::Global);
+    if (!name || !parsed) {
+      diags_.error(el.loc, "<fusion> needs name=\"a set\" and scope=\"global\" or \"instance\"");
+      return;
+    }
+    fusions_.push_back({*name, *parsed, el.loc});
+    fusion_names_.insert(*name);
+  }
+
   void placePart(const XmlElement& tool, PlaceSpec& p) {
     bool tokens = false;
     for (const auto& cp : tool.children) {
       const XmlElement& c = *cp;
       const std::string owner = "place '" + p.name + "'";
       if (c.name == "name" || c.name == "description") continue;
-      if (c.name == "slot") {
+      if (c.name == "fusion") {
+        if (const std::string* set = c.attr("name")) p.fusion = *set, p.fusion_loc = c.loc;
+        else diags_.error(c.loc, "<fusion> needs name=\"the set\" the place is a member of");
+      } else if (c.name == "slot") {
         auto slot = slotOf(c, "name");
         const std::string* k = c.attr("kind");
         auto kind = k ? parseSlotKind(*k) : std::nullopt;
@@ -423,11 +442,11 @@ class PnmlReader {
         p.spec.loc = p.instance.loc = p.instance.type_loc = c.loc;
         if (const XmlElement* tool = gdpnPart(c)) pagePart(*tool, pages_[static_cast<std::size_t>(index)]);
         collect(c, index);
-      } else if (c.name == "place" || c.name == "transition") {
+      } else if (c.name == "place" || c.name == "transition" || (c.name == "referencePlace" && isMember(c))) {
         auto id = idOf(c);
         if (!id) continue;
         const XmlElement* tool = gdpnPart(c);
-        const bool is_place = c.name == "place";
+        const bool is_place = c.name != "transition";
         Node node{is_place ? Node::Kind::Place : Node::Kind::Transition, pageFor(el, page), 0, &c};
         if (is_place) {
           PlaceSpec p;
@@ -467,6 +486,16 @@ class PnmlReader {
         arcs_.push_back(std::move(a));
       }
     }
+  }
+
+  /// True for a referencePlace that gdpn wrote for a member of a fusion set (its part names the
+  /// set): a place of its own page, one with the place it refers to.
+  bool isMember(const XmlElement& el) {
+    for (const auto& c : el.children) {
+      if (c->name != "toolspecific" || !c->attr("tool") || *c->attr("tool") != detail::kPnmlTool) continue;
+      if (c->child("fusion")) return true;
+    }
+    return false;
   }
 
   /// Gives every page its name: gdpn's own; `net` for the one page of a net; else its id, cleaned.
@@ -563,6 +592,8 @@ class PnmlReader {
     const std::string from = real(*src), to = real(*dst);
     if (from.empty() || to.empty()) return;  // a broken reference, reported
     const bool from_place = ids_.at(from).kind == Node::Kind::Place;
+    const std::string& written = from_place ? *src : *dst;
+    if (ids_.at(written).kind == Node::Kind::ReferencePlace) raw.via = written;
     if (from_place == (ids_.at(to).kind == Node::Kind::Place)) {
       diags_.error(el.loc, "arc '" + *src + "' -> '" + *dst + "' joins two " + (from_place ? "places" : "transitions"));
       return;
@@ -593,15 +624,28 @@ class PnmlReader {
     return d;
   }
 
-  /// Makes the pages of arcs that gdpn cannot draw on one page one: an arc lies on its
-  /// transition's page and reaches places of that page and, as links, of pages directly inside it.
+  /// True when an arc of transition `transition` reaches place `place` as gdpn draws arcs:
+  /// on the transition's page, or as a link to a page directly inside it.
+  bool linkable(const RawArc& a) {
+    const int t = host(ids_.at(a.transition).page), p = host(ids_.at(a.place).page);
+    return t == p || parentOf(p) == t;
+  }
+  /// True when arc `a` reaches its place through a referencePlace on its transition's page,
+  /// which can be a member of a fusion set with the place.
+  bool viaReference(const RawArc& a) {
+    return !a.via.empty() && host(ids_.at(a.via).page) == host(ids_.at(a.transition).page);
+  }
+
+  /// An arc that reaches a place of another page through a referencePlace on its own page makes
+  /// that reference a member of a fusion set with the place. The pages of other arcs that gdpn
+  /// cannot draw on one page are made one: an arc lies on its transition's page and reaches
+  /// places of that page and, as links, of pages directly inside it.
   void placeArcs() {
     for (bool changed = true; changed;) {
       changed = false;
       for (const auto& a : arcs_) {
-        if (a.place.empty()) continue;
+        if (a.place.empty() || linkable(a) || viaReference(a)) continue;
         const int t = host(ids_.at(a.transition).page), p = host(ids_.at(a.place).page);
-        if (t == p || parentOf(p) == t) continue;
         // the deeper page goes into the one around it; of two top-level pages, the later into the earlier
         int from = 0, into = 0;
         if (parentOf(t) < 0 && parentOf(p) < 0) {
@@ -616,11 +660,43 @@ class PnmlReader {
                                       transitions_[ids_.at(a.transition).index].name + "' of page '" + name(t) +
                                       "' and place '" + places_[ids_.at(a.place).index].name + "' of page '" + name(p) +
                                       "', and a transition's arcs reach only places of its own page and of pages "
-                                      "directly inside it (gdpn has no fusion places yet)");
+                                      "directly inside it (or a referencePlace on its page, a fusion place)");
         pages_[static_cast<std::size_t>(from)].host = into;
         changed = true;
       }
     }
+    for (auto& a : arcs_) {
+      if (a.place.empty() || linkable(a)) continue;
+      a.place = member(a.via, a.place);
+    }
+  }
+
+  /// Makes referencePlace `ref` a place of its page, a member of the fusion set of place
+  /// `target` (one named after it, global, where it is in none); returns `ref`.
+  const std::string& member(const std::string& ref, const std::string& target) {
+    Node& node = ids_.at(ref);
+    if (node.kind == Node::Kind::Place) return ref;  // made a member by an arc before
+    PlaceSpec& declarer = places_[ids_.at(target).index];
+    if (declarer.fusion.empty()) {
+      std::string set = declarer.name;
+      for (int n = 2; fusion_names_.count(set); ++n) set = declarer.name + "_" + std::to_string(n);
+      fusion_names_.insert(set);
+      fusions_.push_back({set, FusionScope::Global, declarer.loc});
+      declarer.fusion = set;
+      declarer.fusion_loc = declarer.loc;
+    }
+    PlaceSpec p;
+    const XmlElement& el = *node.el;
+    const XmlElement* tool = gdpnPart(el);
+    p.name = nameFor(ref, tool);
+    p.loc = p.fusion_loc = el.loc;
+    p.description = describe(el, tool, p.name, ref);
+    p.position = position(el);
+    p.fusion = places_[ids_.at(target).index].fusion;
+    node.kind = Node::Kind::Place;
+    node.index = places_.size();
+    places_.push_back(std::move(p));
+    return ref;
   }
 
   const std::string& name(int page) const { return pages_[static_cast<std::size_t>(page)].spec.name; }
@@ -685,6 +761,8 @@ class PnmlReader {
   std::vector<std::string> references_;                // reference nodes' ids, in document order
   std::unordered_map<std::string, std::string> target_;  // reference id -> the node it stands for ("" for none)
   std::unordered_set<std::string> used_;               // names given so far
+  std::vector<FusionSpec> fusions_;                     // fusion sets, declared or made for references
+  std::unordered_set<std::string> fusion_names_;        // their names
 };
 
 }  // namespace

@@ -166,10 +166,15 @@ class PnmlWriter {
            "<pnml xmlns=\"http://www.pnml.org/version-2009/grammar/pnml\">\n"
            "  <net id=\"" + attr(net_id) + "\" type=\"http://www.pnml.org/version-2009/grammar/ptnet\">\n";
     if (!name.empty()) out_ += "    <name><text>" + text(name) + "</text></name>\n";
+    std::string net_tool;
     if (!spec_.globals.empty()) {
       see(Unseen::Globals);
-      out_ += "    " + toolOpen() + scriptXml("globals", spec_.globals) + "</toolspecific>\n";
+      net_tool += scriptXml("globals", spec_.globals);
     }
+    for (const auto& f : spec_.fusions) {
+      net_tool += "<fusion name=\"" + attr(f.name) + "\" scope=\"" + fusionScopeName(f.scope) + "\"/>";
+    }
+    if (!net_tool.empty()) out_ += "    " + toolOpen() + net_tool + "</toolspecific>\n";
     for (const auto& p : spec_.pages) {
       if (!writePage(p, nullptr, 2)) return std::nullopt;
     }
@@ -208,7 +213,14 @@ class PnmlWriter {
   /// Chooses the ids of `page`'s places and transitions, then those of the pages inside it.
   bool assignNodes(const PageSpec& page) {
     auto& ids = node_ids_[&page];
-    for (const auto& p : page.places) ids[p.name] = unique(idFor(p.name, p.description));
+    for (const auto& p : page.places) {
+      ids[p.name] = unique(idFor(p.name, p.description));
+      if (p.fusion.empty()) continue;
+      // the member compile() keeps (the first that declares, else the first) is the place;
+      // the others are referencePlaces to it
+      auto [it, fresh] = declarer_.try_emplace(p.fusion, &p, ids[p.name]);
+      if (!fresh && !it->second.first->declares() && p.declares()) it->second = {&p, ids[p.name]};
+    }
     for (const auto& t : page.transitions) ids[t.name] = unique(idFor(t.name, t.description));
     for (const auto& i : page.instances) {
       auto type = types_.find(i.type);
@@ -231,8 +243,13 @@ class PnmlWriter {
   }
 
   void place(const PlaceSpec& p, const std::string& id, const std::string& pad) {
+    // a member of a fusion set other than the one kept: a referencePlace to that one, which
+    // holds in gdpn's part all the member declares
+    const auto declarer = p.fusion.empty() ? declarer_.end() : declarer_.find(p.fusion);
+    const bool reference = declarer != declarer_.end() && declarer->second.first != &p;
     std::int64_t a0 = 0;
-    bool simple_tokens = p.tokens.empty() || (p.tokens.size() == 1 && p.tokens[0].slot == kDefaultSlot && p.tokens[0].value > 0);
+    bool simple_tokens = !reference && (p.tokens.empty() || (p.tokens.size() == 1 && p.tokens[0].slot == kDefaultSlot &&
+                                                             p.tokens[0].value > 0));
     bool other_slots = false;
     for (const auto& t : p.tokens) {
       if (t.slot == kDefaultSlot) a0 += t.value;
@@ -240,6 +257,7 @@ class PnmlWriter {
       if (!t.param.empty()) see(Unseen::Parameter);
     }
     std::string tool = nameXml(p.name, id, p.description);
+    if (!p.fusion.empty()) tool += "<fusion name=\"" + attr(p.fusion) + "\"/>";
     for (const auto& k : p.kinds) tool += "<slot name=\"" + slotName(k.slot) + "\" kind=\"" + slotKindName(k.kind) + "\"/>";
     if (!p.kinds.empty()) see(Unseen::SlotKindDecl);
     if (!simple_tokens) {
@@ -271,11 +289,13 @@ class PnmlWriter {
       if (s == SlotScripts{s.slot, {}, {}, {}, {}, {}, {}}) tool += "<scripts" + slotAttr(s.slot) + "/>";
     }
     if (scripted) see(Unseen::PlaceScript);
-    out_ += pad + "<place id=\"" + attr(id) + "\"><name><text>" + text(label(id, p.description)) + "</text></name>" +
-            positionXml(p.position);
-    if (a0 > 0) out_ += "<initialMarking><text>" + std::to_string(a0) + "</text></initialMarking>";
+    const std::string element = reference ? "referencePlace" : "place";
+    out_ += pad + "<" + element + " id=\"" + attr(id) + "\"" +
+            (reference ? " ref=\"" + attr(declarer->second.second) + "\"" : std::string()) + "><name><text>" +
+            text(label(id, p.description)) + "</text></name>" + positionXml(p.position);
+    if (a0 > 0 && !reference) out_ += "<initialMarking><text>" + std::to_string(a0) + "</text></initialMarking>";
     if (!tool.empty()) out_ += toolOpen() + tool + "</toolspecific>";
-    out_ += "</place>\n";
+    out_ += "</" + element + ">\n";
   }
 
   void transition(const TransitionSpec& t, const std::string& id, const std::string& pad) {
@@ -432,6 +452,8 @@ class PnmlWriter {
   std::unordered_map<const PageSpec*, std::unordered_map<std::string, std::string>> node_ids_;  // name -> id
   std::unordered_map<const PageSpec*, std::string> page_ids_;
   std::unordered_set<std::string> ids_;  // every id given so far
+  /// per fusion set: the member written as the place, and its id
+  std::unordered_map<std::string, std::pair<const PlaceSpec*, std::string>> declarer_;
   int arc_count_ = 0;
   std::array<std::size_t, static_cast<std::size_t>(Unseen::Count)> counts_{};
 };

@@ -44,4 +44,19 @@ const ScriptSpec& scriptOf(const TransitionSpec& t, ScriptKind kind) {
   return t.guard;
 }
 
+const char* fusionScopeName(FusionScope scope) {
+  switch (scope) {
+    case FusionScope::Global: return "global";
+    case FusionScope::Instance: return "instance";
+  }
+  return "?";
+}
+
+std::optional<FusionScope> parseFusionScope(std::string_view word) {
+  for (const FusionScope s : {FusionScope::Global, FusionScope::Instance}) {
+    if (word == fusionScopeName(s)) return s;
+  }
+  return std::nullopt;
+}
+
 }  // namespace gdpn::net

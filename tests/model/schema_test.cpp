@@ -267,6 +267,7 @@ pages:
     places:
       p:
         description: "a place"
+        fusion: pool
         slots: {a1: control, d0: node, c0: sensor}
         tokens: {a0: $n, d0: [box]}
         capacity: {a0: 5}
@@ -320,6 +321,8 @@ page_types:
       eye: {direction: input, signal: analog, node: c, of: reading}
     uses:
       eye: {io: [eye], optional: true, description: "an eye"}
+fusion:
+  pool: global
 scene:
   - Group: {name: box}
 scripts:

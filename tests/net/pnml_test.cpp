@@ -198,19 +198,21 @@ TEST(PnmlPages, AReferenceToNothingOrToTheOtherKindIsLocated) {
 }
 
 TEST(PnmlPages, TwoPagesThatAnArcJoinsAreReadAsOneWithAWarning) {
-  // gdpn's arcs reach places of their transition's page and of pages directly inside it
+  // gdpn's arcs reach places of their transition's page and of pages directly inside it (a
+  // referencePlace on the transition's page is a fusion place: pnml_fusion_test.cpp)
   core::Diagnostics diags;
   auto spec = parsePnml(R"(<pnml><net id="n" type="ptnet">
 <page id="left"><place id="p"><initialMarking><text>1</text></initialMarking></place></page>
-<page id="right"><transition id="t"/><referencePlace id="rp" ref="p"/>
-  <arc id="a" source="rp" target="t"/></page>
+<page id="right"><transition id="t"/>
+  <arc id="a" source="p" target="t"/></page>
 <page id="alone"><place id="q"/></page>
 </net></pnml>)",
                         "siblings.pnml", diags);
   ASSERT_TRUE(spec) << diags.str();
   EXPECT_EQ(diags.str(), "siblings.pnml:4:3: warning: page 'right' is read as part of page 'left': arc 'a' joins "
                          "transition 't' of page 'right' and place 'p' of page 'left', and a transition's arcs reach "
-                         "only places of its own page and of pages directly inside it (gdpn has no fusion places yet)\n");
+                         "only places of its own page and of pages directly inside it (or a referencePlace on its "
+                         "page, a fusion place)\n");
   ASSERT_EQ(spec->pages.size(), 2u);
   EXPECT_EQ(spec->pages[0].name, "left");
   EXPECT_EQ(arcs(spec->pages[0]), (std::vector<std::string>{"p -> t"}));

@@ -71,6 +71,10 @@ class Names {
   /// The scope, with a table of its own, for qualified names with prefix `prefix` (a name
   /// with no '/' when `bare`); made on first use. For NetBuilder's name-splitting calls.
   std::uint32_t scopeForPrefix(std::string_view prefix, bool bare);
+  /// Makes the place that scopes number `v` (from their `first_place`) the net's place
+  /// `ids[v]`: several numbers name one place where fusion sets join places. Without it,
+  /// number `v` is place `v`.
+  void setPlaceIds(std::vector<std::uint32_t> ids) { scope_place_ids_ = std::move(ids); }
   /// Builds the name indexes; call once, when every name is in.
   void freeze();
 
@@ -117,6 +121,7 @@ class Names {
   std::uint32_t bare_ = kNoScope;       // the scope of names without '/', if any
   std::vector<std::uint32_t> prefixes_; // scopes made by scopeForPrefix (builder only; cleared by freeze)
   core::NameTable prefix_index_;        // their prefixes -> index in prefixes_ (builder only)
+  std::vector<std::uint32_t> scope_place_ids_;  // see setPlaceIds; empty when each number is its place
 };
 
 }  // namespace gdpn::net

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "gdpn/core/diagnostics.h"
@@ -160,10 +161,22 @@ struct PlaceSpec {
   std::vector<SlotScripts> scripts;    ///< per-slot scripts
   std::vector<SensorBinding> sensors;  ///< sensor slots and the sensors they read
   std::optional<EditorPos> position;   ///< where the editor draws it
+  std::string fusion{};                ///< the fusion set it is a member of ("" for none)
+  SourceLoc fusion_loc{};              ///< where the set is named
+  /// True when it declares anything a fusion set's members share: slot kinds, tokens,
+  /// capacities, scripts or sensors.
+  [[nodiscard]] bool declares() const {
+    return !kinds.empty() || !tokens.empty() || !nodes.empty() || !capacity.empty() || !scripts.empty() ||
+           !sensors.empty();
+  }
+  /// True when `x` and `y` declare the same slot kinds, tokens, capacities, scripts and sensors.
+  friend bool sameDeclarations(const PlaceSpec& x, const PlaceSpec& y) {
+    return x.kinds == y.kinds && x.tokens == y.tokens && x.nodes == y.nodes && x.capacity == y.capacity &&
+           x.scripts == y.scripts && x.sensors == y.sensors;
+  }
   friend bool operator==(const PlaceSpec& x, const PlaceSpec& y) {
-    return x.name == y.name && x.description == y.description && x.kinds == y.kinds &&
-           x.tokens == y.tokens && x.nodes == y.nodes && x.capacity == y.capacity &&
-           x.scripts == y.scripts && x.sensors == y.sensors && x.position == y.position;
+    return x.name == y.name && x.description == y.description && sameDeclarations(x, y) &&
+           x.position == y.position && x.fusion == y.fusion;
   }
 };
 
@@ -299,10 +312,32 @@ struct PageSpec {
   }
 };
 
+/// How far a fusion set reaches.
+enum class FusionScope : std::uint8_t {
+  Global,    ///< its members are one place for the whole net
+  Instance,  ///< its members (all on one page or page type) are one place per instance of it
+};
+
+/// "global" or "instance".
+const char* fusionScopeName(FusionScope scope);
+/// The scope called `word` ("global", "instance"), if any.
+std::optional<FusionScope> parseFusionScope(std::string_view word);
+
+/// A fusion set: places, each named by its member's `fusion`, that are one place.
+struct FusionSpec {
+  std::string name;                           ///< unique among fusion sets
+  FusionScope scope = FusionScope::Global;    ///< one place for the net, or one per instance
+  SourceLoc loc;                              ///< where it is declared
+  friend bool operator==(const FusionSpec& x, const FusionSpec& y) {
+    return x.name == y.name && x.scope == y.scope;
+  }
+};
+
 /// The whole net of a model: top-level pages and the page types they instantiate.
 struct NetSpec {
   std::vector<PageSpec> pages;       ///< top-level pages; names qualify their constructs
   std::vector<PageSpec> page_types;  ///< reusable pages, instantiated by name
+  std::vector<FusionSpec> fusions;   ///< fusion sets, in declaration order
   ScriptSpec globals;                ///< model-wide script run once at load; its names are seen by every script
   friend bool operator==(const NetSpec&, const NetSpec&) = default;
 };
