@@ -89,6 +89,8 @@ const char* activityName(diagram::Activity a) {
   switch (a) {
     case diagram::Activity::Idle: return "idle";
     case diagram::Activity::Enabled: return "enabled";
+    case diagram::Activity::Waiting: return "waiting";
+    case diagram::Activity::HeldBack: return "held back";
     case diagram::Activity::Occurring: return "occurring";
   }
   return "?";
