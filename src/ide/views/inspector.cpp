@@ -420,9 +420,10 @@ void runState(App& app, const session::Session& session, const Selection& sel, n
     std::string why;
     if (net::heldBack(ready)) why = "held back: " + kernel.readinessText(id);
     else if (ready == net::Readiness::Untried) why = "waiting: " + kernel.readinessText(id);
-    else if (ready == net::Readiness::Tokens || ready == net::Readiness::Room) why = kernel.readinessText(id);
+    else if (ready == net::Readiness::Tokens || ready == net::Readiness::Room) why = "not enabled: " + kernel.readinessText(id);
     if (!kernel.occurring(id) && net::heldBack(ready)) state = "held back";
-    ImGui::Text("%s", state.c_str());
+    // one line where the reason says it all ("held back: guard false"), else the state first
+    if (why.empty() || tr.servers != 1 || kernel.occurring(id)) ImGui::Text("%s", state.c_str());
     if (!why.empty()) {
       if (net::heldBack(ready)) ImGui::TextColored({0.95F, 0.70F, 0.10F, 1}, "%s", why.c_str());
       else ImGui::TextDisabled("%s", why.c_str());
