@@ -26,6 +26,22 @@ std::string qualify(const PageView& view, const std::string& name) {
 
 }  // namespace
 
+Activity activityOf(net::Readiness readiness) {
+  switch (readiness) {
+    case net::Readiness::Able: return Activity::Enabled;
+    case net::Readiness::Untried: return Activity::Waiting;
+    case net::Readiness::Occurring: return Activity::Occurring;
+    case net::Readiness::Tokens:
+    case net::Readiness::Room: return Activity::Idle;
+    case net::Readiness::Condition:
+    case net::Readiness::Guard:
+    case net::Readiness::Predicate:
+    case net::Readiness::Probability:
+    case net::Readiness::Halted: return Activity::HeldBack;
+  }
+  return Activity::Idle;
+}
+
 PageBinding bindPage(const net::Net& net, const PageView& view) {
   PageBinding b;
   if (view.page == nullptr) return b;
@@ -82,13 +98,15 @@ NetState netStateOf(const net::Kernel& kernel, const PageBinding& binding, const
       if (m.count > 0) s.places[i].push_back(std::move(m));
     }
   }
-  // transitions: idle, enabled or occurring
+  // transitions: the kernel's own answer (what the last firing phase found), read, not evaluated
   s.transitions.assign(binding.transitions.size(), Activity::Idle);
+  s.readiness.assign(binding.transitions.size(), net::Readiness::Tokens);
   s.occurrences.assign(binding.transitions.size(), 0);
   for (std::size_t i = 0; i < binding.transitions.size(); ++i) {
     if (!binding.transitions[i]) continue;
     const auto t = *binding.transitions[i];
-    s.transitions[i] = kernel.occurring(t) ? Activity::Occurring : kernel.enabled(t) ? Activity::Enabled : Activity::Idle;
+    s.readiness[i] = kernel.readiness(t);
+    s.transitions[i] = kernel.occurring(t) ? Activity::Occurring : activityOf(s.readiness[i]);
     s.occurrences[i] = static_cast<std::uint32_t>(kernel.occurrences(t));
   }
   // arcs: the terms of the arc's transition on the arc's place, inputs or outputs by its direction

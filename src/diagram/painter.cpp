@@ -34,6 +34,8 @@ Rgba activityColour(Activity a) {
   switch (a) {
     case Activity::Idle: return colours::kIdle;
     case Activity::Enabled: return colours::kEnabled;
+    case Activity::Waiting: return colours::kIdle;
+    case Activity::HeldBack: return colours::kHeldBack;
     case Activity::Occurring: return colours::kOccurring;
   }
   return colours::kIdle;
@@ -228,7 +230,13 @@ class Painter {
     const Box b{v_.toScreen(t.box.min), v_.toScreen(t.box.max)};
     // a bar at least a pixel and a half wide, so that it shows when zoomed out
     const double grow = std::max(0.0, (1.5 - b.width()) / 2);
-    c_.fillRect({{b.min.x - grow, b.min.y}, {b.max.x + grow, b.max.y}}, activityColour(a));
+    const Box bar{{b.min.x - grow, b.min.y}, {b.max.x + grow, b.max.y}};
+    c_.fillRect(bar, activityColour(a));
+    // its marking suffices but it is not (yet) able to start: outlined in the enabled colour
+    if (!coarse_ && (a == Activity::HeldBack || a == Activity::Waiting)) {
+      const double w = std::max(kOutlineWidth * v_.zoom, 1.0);
+      c_.strokeRect(bar, w, colours::kEnabled);
+    }
     taken_.push_back(b);
     if (labels_) name({(b.min.x + b.max.x) / 2, b.min.y - kLabelGap * v_.zoom}, t.name, VAlign::Bottom);
     // with servers, how many of its occurrences run, under the bar

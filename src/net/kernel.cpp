@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <utility>
 
@@ -136,6 +137,15 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
     if (cond_.empty()) cond_.assign(n.terms().size(), 0);
     ++tr_[terms_[id].transition].unsat;
   }
+  // transitions that a guard, a predicate or a draw can hold back keep what their last
+  // attempt to start found (the others' readiness is their terms')
+  for (TransitionId t{0}; t < count; ++t) {
+    bool predicates = false;
+    for (auto i = tr_[t].terms_begin; i < tr_[t].conditions_end; ++i) predicates = predicates || terms_[i].predicate;
+    if (!(tr_[t].scripts & kGuard) && !predicates && !(tr_[t].probability < 1.0)) continue;
+    if (verdict_.empty()) verdict_.assign(count, kFree);
+    verdict_[t] = static_cast<std::uint8_t>(Readiness::Untried);
+  }
   for (TransitionId t{0}; t < count; ++t) {
     if (tr_[t].unsat == 0) markEnabled(t);
   }
@@ -245,6 +255,8 @@ void Kernel::markEnabled(TransitionId t) {
   }
   ++enabled_count_;
   tr_[t].enabled_step = settled_ && !in_firing_ ? step_ + 1 : step_;
+  // a new enabling: what an earlier attempt found of its guard or draw no longer says anything
+  if (!verdict_.empty() && verdict_[t] != kFree) verdict_[t] = static_cast<std::uint8_t>(Readiness::Untried);
   const std::uint64_t key = (std::uint64_t{tr_[t].rank} << 32) | t;
   (in_firing_ ? late_ : fresh_).push_back(key);
 }
@@ -775,8 +787,12 @@ void Kernel::fireEnabled() {
 
 inline bool Kernel::tryStart(TransitionId t, bool again) {
   const TransitionState& tr = tr_[t];
-  if ((tr.scripts & kGuard) && hooks_ && (hooks_->halted() || !hooks_->guard(t))) return false;
-  if (tr.held >= 0 && hooks_ && !selectTokens(t)) return false;
+  // what holds it back is kept for readiness() (verdict_), where the kernel decides anyway
+  if ((tr.scripts & kGuard) && hooks_) {
+    if (hooks_->halted()) return heldBy(t, Readiness::Halted);
+    if (!hooks_->guard(t)) return heldBy(t, hooks_->halted() ? Readiness::Halted : Readiness::Guard);
+  }
+  if (tr.held >= 0 && hooks_ && !selectTokens(t)) return heldBy(t, hooks_->halted() ? Readiness::Halted : Readiness::Predicate);
   const double p = tr.probability;
   if (p < 1.0) {
     // one draw per transition and phase, however often immediates re-enable it; a further
@@ -784,8 +800,9 @@ inline bool Kernel::tryStart(TransitionId t, bool again) {
     if (drawn_.empty()) drawn_.assign(tr_.size(), -1);
     const bool drew = drawn_[t] == step_ && !again;
     drawn_[t] = step_;
-    if (drew || !(random_.uniform01() < p)) return false;
+    if (drew || !(random_.uniform01() < p)) return heldBy(t, Readiness::Probability);
   }
+  if (!verdict_.empty() && verdict_[t] != kFree) verdict_[t] = static_cast<std::uint8_t>(Readiness::Able);
   begin(t);
   return true;
 }
@@ -932,27 +949,133 @@ std::string Kernel::fire(TransitionId t) {
       const Term& term = terms_[i];
       const SlotState& st = slots_[term.place_slot];
       if (term.kind == TermKind::Condition ? condition(TermId{i}) : holds(st, term.kind, term.weight, term.take)) continue;
-      const auto& ps = net.placeSlots()[term.place_slot];
-      const std::string place = "'" + net.placeName(ps.place) + "' " + slotName(ps.slot);
-      const std::string has = std::to_string(st.m), w = std::to_string(term.weight);
-      switch (term.kind) {
-        case TermKind::Input:
-        case TermKind::Test: return name + " is not enabled: " + place + " holds " + has + " of the " + w + " it needs";
-        case TermKind::Inhibitor:
-          return name + " is not enabled: " + place + " holds " + has + ", its inhibitor arc allows fewer than " + w;
-        case TermKind::Output: return name + " is not enabled: " + place + " has no room for " + w + " more";
-        case TermKind::Condition: return name + " is not enabled: the condition on " + place + " does not hold";
-      }
+      return name + " is not enabled: " + termText(i);
     }
     return name + " is not enabled";
   }
-  if (hooks_ && hooks_->halted()) return name + " cannot start: the model's scripts have stopped";
-  if ((tr.scripts & kGuard) && hooks_ && !hooks_->guard(t)) return name + "'s guard is false";
-  if (tr.held >= 0 && hooks_ && !selectTokens(t)) return "no node token satisfies the predicates of " + name;
+  // what holds it back is kept for readiness(), as in a firing phase
+  if (hooks_ && hooks_->halted()) {
+    heldBy(t, Readiness::Halted);
+    return name + " cannot start: the model's scripts have stopped";
+  }
+  if ((tr.scripts & kGuard) && hooks_ && !hooks_->guard(t)) {
+    heldBy(t, hooks_->halted() ? Readiness::Halted : Readiness::Guard);
+    return name + "'s guard is false";
+  }
+  if (tr.held >= 0 && hooks_ && !selectTokens(t)) {
+    heldBy(t, hooks_->halted() ? Readiness::Halted : Readiness::Predicate);
+    return "no node token satisfies the predicates of " + name;
+  }
+  if (!verdict_.empty() && verdict_[t] != kFree) verdict_[t] = static_cast<std::uint8_t>(Readiness::Able);
   // what the start enables waits for the next firing phase, as if enabled in this one
   const bool was = std::exchange(in_firing_, true);
   begin(t);
   in_firing_ = was;
+  return {};
+}
+
+std::string Kernel::termText(std::uint32_t i) const {
+  const Net& net = *net_;
+  const Term& term = terms_[i];
+  const SlotState& st = slots_[term.place_slot];
+  const auto& ps = net.placeSlots()[term.place_slot];
+  const std::string place = "'" + net.placeName(ps.place) + "' " + slotName(ps.slot);
+  const std::string has = std::to_string(st.m), w = std::to_string(term.weight);
+  switch (term.kind) {
+    case TermKind::Input:
+    case TermKind::Test: return place + " holds " + has + " of the " + w + " it needs";
+    case TermKind::Inhibitor: return place + " holds " + has + ", its inhibitor arc allows fewer than " + w;
+    case TermKind::Output: return place + " has no room for " + w + " more";
+    case TermKind::Condition: return "the condition on " + place + " does not hold";
+  }
+  return place;
+}
+
+bool heldBack(Readiness r) {
+  switch (r) {
+    case Readiness::Able:
+    case Readiness::Untried:
+    case Readiness::Occurring:
+    case Readiness::Tokens:
+    case Readiness::Room: return false;
+    case Readiness::Condition:
+    case Readiness::Guard:
+    case Readiness::Predicate:
+    case Readiness::Probability:
+    case Readiness::Halted: return true;
+  }
+  return false;
+}
+
+const char* readinessName(Readiness r) {
+  switch (r) {
+    case Readiness::Able: return "able";
+    case Readiness::Untried: return "untried";
+    case Readiness::Occurring: return "occurring";
+    case Readiness::Tokens: return "tokens";
+    case Readiness::Room: return "room";
+    case Readiness::Condition: return "condition";
+    case Readiness::Guard: return "guard";
+    case Readiness::Predicate: return "predicate";
+    case Readiness::Probability: return "probability";
+    case Readiness::Halted: return "halted";
+  }
+  return "?";
+}
+
+Readiness Kernel::readiness(TransitionId t) const {
+  const TransitionState& tr = tr_[t];
+  // its terms hold: what the last attempt found (Able for one only its terms can hold back)
+  if (tr.unsat == 0) return verdict_.empty() || verdict_[t] == kFree ? Readiness::Able : static_cast<Readiness>(verdict_[t]);
+  // no free server: the occurrence's virtual term
+  if (!tr.multi && tr.end_step >= 0) return Readiness::Occurring;
+  if (tr.multi) {
+    const Servers& sv = servers_[static_cast<std::size_t>(servers_of_[t])];
+    if (sv.limit != 0 && sv.busy == sv.limit) return Readiness::Occurring;
+  }
+  // a marking or a capacity before a condition: a condition holds it back only where the
+  // marking suffices
+  for (std::uint32_t i = tr.terms_begin; i < tr.terms_end; ++i) {
+    const Term& term = terms_[i];
+    if (term.kind == TermKind::Condition || holds(slots_[term.place_slot], term.kind, term.weight, term.take)) continue;
+    return term.kind == TermKind::Output ? Readiness::Room : Readiness::Tokens;
+  }
+  return Readiness::Condition;
+}
+
+std::string Kernel::readinessText(TransitionId t) const {
+  const Net& net = *net_;
+  const TransitionState& tr = tr_[t];
+  // the first term of the kind readiness() found that does not hold
+  auto firstFailing = [&](bool conditions) -> std::string {
+    for (std::uint32_t i = tr.terms_begin; i < tr.terms_end; ++i) {
+      const Term& term = terms_[i];
+      const bool is_condition = term.kind == TermKind::Condition;
+      if (is_condition != conditions) continue;
+      if (is_condition ? condition(TermId{i}) : holds(slots_[term.place_slot], term.kind, term.weight, term.take)) continue;
+      if (!is_condition) return termText(i);
+      const auto& ps = net.placeSlots()[term.place_slot];
+      return "condition of arc '" + net.placeName(ps.place) + "' -> '" + net.transitionName(t) + "' false";
+    }
+    return {};
+  };
+  switch (readiness(t)) {
+    case Readiness::Able: return "able to start";
+    case Readiness::Untried: return "its arcs allow it; no firing phase has tried its guard, predicates or draw yet";
+    case Readiness::Occurring:
+      return tr.multi ? "occurring on all its " + std::to_string(servers(t)) + " servers" : std::string("occurring");
+    case Readiness::Tokens:
+    case Readiness::Room: return firstFailing(false);
+    case Readiness::Condition: return firstFailing(true);
+    case Readiness::Guard: return "guard false";
+    case Readiness::Predicate: return "no node token satisfies its predicates";
+    case Readiness::Probability: {
+      char p[32];
+      std::snprintf(p, sizeof p, "%g", tr.probability);
+      return std::string("lost its probability draw (p = ") + p + ")";
+    }
+    case Readiness::Halted: return "the model's scripts have stopped";
+  }
   return {};
 }
 
@@ -972,7 +1095,7 @@ std::size_t Kernel::memoryBytes() const {
   for (const auto& o : occ_) bytes += sizeof(o) + o.held.capacity() * sizeof(o.held[0]);
   bytes += occ_free_.capacity() * sizeof(std::uint32_t) + servers_of_.capacity() * sizeof(std::int32_t);
   bytes += servers_.capacity() * sizeof(Servers) + start_idle_.capacity() * sizeof(std::int64_t);
-  bytes += start_seq_.capacity() * sizeof(std::uint64_t);
+  bytes += start_seq_.capacity() * sizeof(std::uint64_t) + verdict_.capacity();
   return bytes;
 }
 

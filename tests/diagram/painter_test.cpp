@@ -100,6 +100,44 @@ TEST(DiagramSvg, SmallNetHasItsShapesNamesAndColours) {
   EXPECT_EQ(d.svg(), later) << "the same state must give the same bytes";
 }
 
+/// Hooks whose guards are all false; no other script does anything.
+class ClosedGuards : public net::ScriptHooks {
+ public:
+  bool guard(net::TransitionId) override { return false; }
+  bool eligible(net::TermId, net::NodeRef) override { return true; }
+  void preFire(net::TransitionId) override {}
+  void inFire(net::TransitionId) override {}
+  void postFire(net::TransitionId) override {}
+  void onDeposit(net::PlaceSlotId, const net::NodeRef*) override {}
+  void onRemove(net::PlaceSlotId, const net::NodeRef*) override {}
+  [[nodiscard]] bool halted() const override { return false; }
+};
+
+TEST(DiagramNetState, AGuardFalseWhereTheMarkingSufficesIsHeldBackNotEnabled) {
+  Drawn d;
+  d.spec.pages[0].transitions[0].guard.code = "False";  // go: src has its token, block none
+  core::Diagnostics diags;
+  d.net = net::compile(d.spec, diags);
+  ASSERT_TRUE(d.net) << diags.str();
+  d.kernel = std::make_unique<net::Kernel>(d.net, net::KernelSettings{0.5, 1});
+  ClosedGuards hooks;
+  d.kernel->setHooks(&hooks);
+  // before the first firing phase its guard is unknown: waiting, not enabled
+  EXPECT_EQ(d.state().transitions[0], Activity::Waiting);
+  d.kernel->start();
+  const auto s = d.state();
+  EXPECT_EQ(s.transitions[0], Activity::HeldBack);
+  EXPECT_EQ(s.readiness[0], net::Readiness::Guard);
+  EXPECT_EQ(s.transitions[1], Activity::Idle);
+  EXPECT_EQ(s.readiness[1], net::Readiness::Tokens);
+  // drawn amber, outlined in the enabled colour (its marking suffices); no green bar
+  const std::string svg = d.svg();
+  EXPECT_NE(svg.find("fill=\"" + svgColour(colours::kHeldBack) + "\"/>"), std::string::npos) << svg;
+  EXPECT_TRUE(std::regex_search(svg, std::regex("<rect[^>]*fill=\"none\" stroke=\"" + svgColour(colours::kEnabled) + "\"")))
+      << svg;
+  EXPECT_FALSE(std::regex_search(svg, std::regex("<rect[^>]*fill=\"" + svgColour(colours::kEnabled) + "\"/>"))) << svg;
+}
+
 TEST(DiagramNetState, ABindingMadeOnceReadsTheSameStateAsTheNames) {
   Drawn d;
   const auto binding = bindPage(*d.net, d.findViewOrDie());

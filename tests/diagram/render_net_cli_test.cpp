@@ -39,6 +39,35 @@ TEST(RenderNetCli, DrawsThePageAtTheTimeAsked) {
   std::filesystem::remove(inner);
 }
 
+TEST(RenderNetCli, AGuardFalseIsDrawnHeldBackAsInTheIde) {
+  // t's marking suffices from the start; its guard is false until 0.5 s
+  const auto model = tempFile("guarded.gdpn.yaml");
+  std::ofstream(model) << R"Y(gdpn: 1
+scene:
+  - Cube: {name: c, size: [1, 1, 1]}
+pages:
+  main:
+    places:
+      a: {tokens: 1}
+      b: {}
+    transitions:
+      t: {duration: 10, guard: "sim.time >= 0.5"}
+    arcs:
+      - a -> t
+      - t -> b
+)Y";
+  const auto out = tempFile("guarded.svg");
+  ASSERT_EQ(runGdpn("render '" + model + "' --net --at 0.1 -o " + out).code, 0);
+  const auto held = slurp(out);
+  EXPECT_NE(held.find("fill=\"#e6ab02\"/>"), std::string::npos) << held;  // colours::kHeldBack
+  ASSERT_EQ(runGdpn("render '" + model + "' --net --at 1 -o " + out).code, 0);
+  const auto started = slurp(out);
+  EXPECT_EQ(started.find("#e6ab02"), std::string::npos) << started;
+  EXPECT_NE(started.find("fill=\"#d62728\"/>"), std::string::npos) << started;  // occurring
+  std::filesystem::remove(out);
+  std::filesystem::remove(model);
+}
+
 TEST(RenderNetCli, TwoRunsGiveTheSameBytes) {
   // two_cells has no positions on its page: Graphviz lays it out, in two processes
   const auto a = tempFile("run1.svg"), b = tempFile("run2.svg");

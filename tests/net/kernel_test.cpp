@@ -838,5 +838,127 @@ TEST(NetKernel, ABigNetFiresWhatItsRulesSay) {
   EXPECT_GT(a.startCount(), std::uint64_t{n / every} * steps / 5);
 }
 
+// --- readiness: what held a transition back, as the kernel last found it ---
+
+/// Hooks whose guards all answer `open`; no other script does anything.
+class GuardHooks : public ScriptHooks {
+ public:
+  bool guard(TransitionId) override {
+    ++guards;
+    return open;
+  }
+  bool eligible(TermId, NodeRef) override { return true; }
+  void preFire(TransitionId) override {}
+  void inFire(TransitionId) override {}
+  void postFire(TransitionId) override {}
+  void onDeposit(PlaceSlotId, const NodeRef*) override {}
+  void onRemove(PlaceSlotId, const NodeRef*) override {}
+  [[nodiscard]] bool halted() const override { return false; }
+  bool open = false;
+  int guards = 0;
+};
+
+// P (1 token) -> T -> Q, T guarded; C -> T a sensor condition when `condition`
+std::shared_ptr<const Net> guardedNet(bool condition) {
+  NetBuilder b;
+  const auto p = b.addPlace("P");
+  b.setSlot(p, kDefaultSlot, kControl, kUnbounded, 1);
+  const auto q = b.addPlace("Q");
+  const auto t = b.addTransition("T", seconds(1));
+  b.addInput(p, t);
+  b.addOutput(t, q);
+  ScriptSpec guard;
+  guard.code = "open";
+  b.setTransitionScript(t, ScriptKind::Guard, b.addScript(guard));
+  if (condition) {
+    const auto c = b.addPlace("C");
+    ScriptSpec cond;
+    cond.code = "C > 0";
+    b.addCondition(c, t, kDefaultSlot, b.addScript(cond));
+  }
+  return b.freeze();
+}
+
+TEST(KernelReadiness, AGuardFalseHoldsBackATransitionWhoseMarkingSufficesUntilAPhaseFindsItTrue) {
+  Kernel k(guardedNet(false), {1.0, 1});
+  GuardHooks hooks;
+  k.setHooks(&hooks);
+  const TransitionId t = *k.net().findTransition("T");
+  // its marking suffices: enabled by the counts, but no phase has tried its guard yet
+  EXPECT_TRUE(k.enabled(t));
+  EXPECT_EQ(k.readiness(t), Readiness::Untried);
+  EXPECT_FALSE(heldBack(Readiness::Untried));
+  k.start();
+  EXPECT_EQ(k.readiness(t), Readiness::Guard);
+  EXPECT_TRUE(heldBack(k.readiness(t)));
+  EXPECT_EQ(k.readinessText(t), "guard false");
+  // asking runs no script
+  const int guards = hooks.guards;
+  (void)k.readiness(t);
+  (void)k.readinessText(t);
+  EXPECT_EQ(hooks.guards, guards);
+  // the guard turns true: the kernel's answer is the last phase's until the next one tries it
+  hooks.open = true;
+  EXPECT_EQ(k.readiness(t), Readiness::Guard);
+  k.step();
+  EXPECT_TRUE(k.occurring(t));
+  EXPECT_EQ(k.readiness(t), Readiness::Occurring);
+  EXPECT_EQ(k.readinessText(t), "occurring");
+  // completed, P empty: its marking does not suffice
+  k.step();
+  EXPECT_EQ(k.readiness(t), Readiness::Tokens);
+  EXPECT_FALSE(heldBack(k.readiness(t)));
+  EXPECT_EQ(k.readinessText(t), "'P' a0 holds 0 of the 1 it needs");
+  // a token put back between steps: a new enabling, untried until the next phase starts it
+  ASSERT_EQ(k.setMarking(*k.net().findPlaceSlot(*k.net().findPlace("P"), kDefaultSlot), 1), "");
+  EXPECT_EQ(k.readiness(t), Readiness::Untried);
+  hooks.open = false;
+  EXPECT_EQ(k.fire(t), "'T''s guard is false");
+  EXPECT_EQ(k.readiness(t), Readiness::Guard);
+}
+
+TEST(KernelReadiness, AConditionFalseHoldsBackOnlyWhereTheMarkingSuffices) {
+  Kernel k(guardedNet(true), {1.0, 1});
+  GuardHooks hooks;
+  hooks.open = true;
+  k.setHooks(&hooks);
+  const TransitionId t = *k.net().findTransition("T");
+  TermId cond{0};
+  for (TermId i{0}; i < k.net().terms().size(); ++i) {
+    if (k.net().terms()[i].kind == TermKind::Condition) cond = i;
+  }
+  EXPECT_EQ(k.readiness(t), Readiness::Condition);
+  EXPECT_TRUE(heldBack(Readiness::Condition));
+  EXPECT_EQ(k.readinessText(t), "condition of arc 'C' -> 'T' false");
+  // without P's token it is the marking that stops it
+  ASSERT_EQ(k.setMarking(*k.net().findPlaceSlot(*k.net().findPlace("P"), kDefaultSlot), 0), "");
+  EXPECT_EQ(k.readiness(t), Readiness::Tokens);
+  ASSERT_EQ(k.setMarking(*k.net().findPlaceSlot(*k.net().findPlace("P"), kDefaultSlot), 1), "");
+  k.setCondition(cond, true);
+  EXPECT_EQ(k.readiness(t), Readiness::Untried);
+  k.start();
+  EXPECT_TRUE(k.occurring(t));
+}
+
+TEST(KernelReadiness, TransitionsNothingButTheirArcsCanHoldBackAreAbleWheneverEnabled) {
+  Kernel k(figure31(), {1.0, 1});
+  EXPECT_EQ(k.readiness(*k.net().findTransition("T1")), Readiness::Able);
+  EXPECT_EQ(k.readinessText(*k.net().findTransition("T1")), "able to start");
+  EXPECT_EQ(k.readiness(*k.net().findTransition("T2")), Readiness::Tokens);
+}
+
+TEST(KernelReadiness, ALostDrawHoldsBackUntilTheNextPhase) {
+  NetBuilder b;
+  const auto p = b.addPlace("P");
+  b.setSlot(p, kDefaultSlot, kControl, kUnbounded, 1);
+  const auto t = b.addTransition("T", seconds(1), 0, 1e-9);
+  b.addInput(p, t);
+  Kernel k(b.freeze(), {1.0, 1});
+  EXPECT_EQ(k.readiness(t), Readiness::Untried);
+  k.start();
+  EXPECT_EQ(k.readiness(t), Readiness::Probability);
+  EXPECT_EQ(k.readinessText(t), "lost its probability draw (p = 1e-09)");
+}
+
 }  // namespace
 }  // namespace gdpn::net

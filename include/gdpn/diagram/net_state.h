@@ -1,8 +1,9 @@
 #pragma once
 /// \file
 /// What the net view shows of a running net: per place slot its kind, tokens and token
-/// names; per transition whether it is idle, enabled or occurring; per arc whether its
-/// condition holds. Made from the kernel at its current time; plain data, so the IDE and the
+/// names; per transition whether it is idle, enabled, held back (its marking suffices, its
+/// guard, a predicate or a condition does not) or occurring; per arc whether its condition
+/// holds. Made from the kernel at its current time; plain data, so the IDE and the
 /// CLI draw the same thing.
 
 #include <cstdint>
@@ -24,18 +25,25 @@ struct SlotMarking {
   std::vector<std::string> names;              ///< node tokens' names, first to leave first
 };
 
-/// What a transition is doing.
+/// What a transition is doing, as the kernel last found it (net::Kernel::readiness()).
 enum class Activity : std::uint8_t {
-  Idle,       ///< neither enabled nor occurring
-  Enabled,    ///< may start now
+  Idle,       ///< neither enabled nor occurring: its marking or a capacity does not allow it
+  Enabled,    ///< the last firing phase found it able to start (or nothing but its arcs can stop it)
+  Waiting,    ///< its arcs allow it; no firing phase has tried its guard, predicates or draw yet
+  HeldBack,   ///< its marking suffices, but its guard, a predicate, a condition or its draw held it back
   Occurring,  ///< started, not yet completed
 };
+
+/// The activity a transition in `readiness` shows when it is not occurring.
+[[nodiscard]] Activity activityOf(net::Readiness readiness);
 
 /// The state of one page's constructs, indexed as the PageSpec's vectors are.
 struct NetState {
   double time = 0.0;                              ///< model time, seconds
   std::vector<std::vector<SlotMarking>> places;   ///< per place: its slots in use (empty slots left out)
   std::vector<Activity> transitions;              ///< per transition
+  /// Per transition: why it can or cannot start (net::Readiness::Tokens for one the net lacks).
+  std::vector<net::Readiness> readiness;
   std::vector<std::uint32_t> occurrences;         ///< per transition: its occurrences running now
   std::vector<std::optional<bool>> arcs;          ///< per arc of PageSpec::arcs: whether it holds (nullopt: unknown)
 };

@@ -4,7 +4,10 @@
 /// look (the dissertation's scheme, close to CPN Tools and TAPAAL):
 /// - places are circles with their tokens as dots coloured by slot kind (control black, node
 ///   blue, sensor orange), or as numbers when there are more than kMaxDots;
-/// - transitions are bars: enabled green, occurring red, idle dark grey;
+/// - transitions are bars: enabled green (the last firing phase found it able to start),
+///   occurring red, idle dark grey; amber with a green outline when its marking suffices but
+///   its guard, a predicate, a condition or its probability draw held it back; dark grey with
+///   a green outline while its arcs allow it but no firing phase has tried it yet;
 /// - normal arcs end in an arrowhead, inhibitor arcs in a small circle; test arcs are dashed
 ///   with no arrowhead (they take nothing); an arc is green while its condition holds and
 ///   grey while not; inscriptions (weights above 1, or the slots: "b0..b4") stand beside
@@ -38,6 +41,7 @@ inline constexpr Rgba kBackground{255, 255, 255, 255};  ///< the page
 inline constexpr Rgba kOutline{34, 34, 34, 255};        ///< places' circles, names
 inline constexpr Rgba kEnabled{44, 160, 44, 255};       ///< enabled transitions, arcs that hold
 inline constexpr Rgba kOccurring{214, 39, 40, 255};     ///< occurring transitions
+inline constexpr Rgba kHeldBack{230, 171, 2, 255};      ///< transitions whose marking suffices but something held back
 inline constexpr Rgba kIdle{68, 68, 68, 255};           ///< idle transitions, arcs with no state
 inline constexpr Rgba kArcOff{160, 160, 160, 255};      ///< arcs that do not hold
 inline constexpr Rgba kControl{20, 20, 20, 255};        ///< control tokens

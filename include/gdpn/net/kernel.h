@@ -10,6 +10,7 @@
 #include <deque>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "gdpn/core/random.h"
@@ -34,6 +35,30 @@ struct KernelSettings {
   /// generator at the phase's start (semantics: Ties).
   bool random_ties = false;
 };
+
+/// Whether a transition can start, as the kernel last found it (semantics: When a transition
+/// is enabled). Rules 1 to 4 and the conditions are the kernel's counts, known at any time;
+/// the guard, the predicates and the probability draw are what the last attempt to start it
+/// (a firing phase, or Kernel::fire()) found, kept until it is disabled or tried again.
+enum class Readiness : std::uint8_t {
+  Able,         ///< its arcs allow it and nothing held it back: it starts (or started) when tried
+  Untried,      ///< its arcs allow it, but no attempt has looked at its guard, predicates or draw since
+  Occurring,    ///< it is occurring: no server is free
+  Tokens,       ///< an input or test arc lacks tokens, or an inhibitor arc finds too many
+  Room,         ///< an output arc finds no room (capacity)
+  Condition,    ///< its marking suffices, but a sensor condition on one of its arcs is false
+  Guard,        ///< its marking suffices, but its guard was false
+  Predicate,    ///< its marking suffices, but too few node tokens satisfied its predicates
+  Probability,  ///< its marking suffices, but it lost its probability draw
+  Halted,       ///< its marking suffices, but the model's scripts have stopped (an error, a timeout)
+};
+
+/// True for the readiness of a transition whose marking suffices but that something else
+/// (condition, guard, predicate, probability draw, stopped scripts) held back.
+[[nodiscard]] bool heldBack(Readiness r);
+/// A word for `r` ("able", "untried", "occurring", "tokens", "room", "condition", "guard",
+/// "predicate", "probability", "halted"), for reports.
+[[nodiscard]] const char* readinessName(Readiness r);
 
 /// Whole steps of `dt` seconds an occurrence of `seconds` lasts: max(1, ceil(seconds / dt)),
 /// a duration within a billionth of a whole number of steps counting as that number.
@@ -97,6 +122,13 @@ class Kernel {
   [[nodiscard]] std::vector<NodeRef> nodes(PlaceSlotId ps) const;
   /// True when `t` may start now (all its terms hold and a server of it is free).
   [[nodiscard]] bool enabled(TransitionId t) const { return tr_[t].unsat == 0; }
+  /// Whether `t` can start, as the kernel last found it: its terms now, and what the last
+  /// attempt to start it found of its guard, predicates and draw. Reads what the kernel keeps
+  /// (no script runs); its cost is that of `t`'s terms.
+  [[nodiscard]] Readiness readiness(TransitionId t) const;
+  /// readiness(t) in words: "able to start", "guard false", "condition of arc 'P' -> 'T'
+  /// false", "'P' a0 holds 0 of the 1 it needs" and the like.
+  [[nodiscard]] std::string readinessText(TransitionId t) const;
   /// True while an occurrence of `t` runs.
   [[nodiscard]] bool occurring(TransitionId t) const { return tr_[t].end_step >= 0; }
   /// How many occurrences of `t` run now (at most its servers).
@@ -343,6 +375,18 @@ class Kernel {
   std::vector<std::int64_t> taken_step_;    // and the step enabled of the entry taken
   std::vector<Carry> next_;        // addExtras()'s new entries
   std::vector<std::int64_t> drawn_;  // per transition: the step of its last probability draw (-1: none)
+  // per transition: a Readiness that the last attempt to start it found, Untried since it was
+  // enabled, or kFree for one nothing but its terms can hold back (no guard, predicate or
+  // draw). Empty when every transition is free: a net without scripts pays nothing.
+  static constexpr std::uint8_t kFree = 0xff;
+  std::vector<std::uint8_t> verdict_;
+  // records that the attempt to start `t` found `r`; returns false (it did not start)
+  bool heldBy(TransitionId t, Readiness r) {
+    if (!verdict_.empty() && verdict_[t] != kFree) verdict_[t] = static_cast<std::uint8_t>(r);
+    return false;
+  }
+  // why term `i` does not hold, after "'T' is not enabled: " ("'P' a0 holds 0 of the 1 it needs")
+  [[nodiscard]] std::string termText(std::uint32_t i) const;
   // an entry that still stands: its transition enabled since the step it names
   [[nodiscard]] bool valid(const Carry& c) const {
     const auto& tr = tr_[static_cast<std::uint32_t>(c.key)];

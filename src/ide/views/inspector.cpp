@@ -405,15 +405,31 @@ void runState(App& app, const session::Session& session, const Selection& sel, n
     const net::TransitionId id = *t;
     const auto& tr = sim.net().transitions()[id];
     const auto& kernel = sim.kernel();
-    std::string state = kernel.occurring(id) ? "occurring" : kernel.enabled(id) ? "enabled" : "not enabled";
+    // the kernel's own answer: what the last firing phase found (no script runs here)
+    const net::Readiness ready = kernel.readiness(id);
+    const bool able = ready == net::Readiness::Able;
+    std::string state = kernel.occurring(id) ? "occurring" : able ? "enabled" : "not enabled";
     if (tr.servers != 1) {
       // with servers: how many run, of how many, and whether another may start
       const std::string busy = std::to_string(kernel.occurrences(id));
       state = tr.servers == net::kUnlimitedServers ? busy + " occurring (servers unlimited)"
                                                    : busy + " of " + std::to_string(tr.servers) + " servers busy";
-      if (kernel.enabled(id)) state += ", enabled";
+      if (able) state += ", enabled";
     }
-    ImGui::Text("%s", state.c_str());
+    // what holds it back, or why it is not enabled: "held back: guard false"
+    std::string why;
+    if (net::heldBack(ready)) why = "held back: " + kernel.readinessText(id);
+    else if (ready == net::Readiness::Untried) why = "waiting: " + kernel.readinessText(id);
+    else if (ready == net::Readiness::Tokens || ready == net::Readiness::Room) why = "not enabled: " + kernel.readinessText(id);
+    if (!kernel.occurring(id) && net::heldBack(ready)) state = "held back";
+    // one line where the reason says it all ("held back: guard false"), else the state first
+    if (why.empty() || tr.servers != 1 || kernel.occurring(id)) ImGui::Text("%s", state.c_str());
+    if (!why.empty()) {
+      if (net::heldBack(ready)) ImGui::TextColored({0.95F, 0.70F, 0.10F, 1}, "%s", why.c_str());
+      else ImGui::TextDisabled("%s", why.c_str());
+    }
+    report["readiness"] = net::readinessName(ready);
+    report["why"] = why;
     // in edit mode the contents view below has them as fields
     if (app.run().mode() != RunMode::Edit) {
       ImGui::Text("priority %lld, probability %g", static_cast<long long>(tr.priority), tr.probability);

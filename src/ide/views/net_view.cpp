@@ -89,6 +89,8 @@ const char* activityName(diagram::Activity a) {
   switch (a) {
     case diagram::Activity::Idle: return "idle";
     case diagram::Activity::Enabled: return "enabled";
+    case diagram::Activity::Waiting: return "waiting";
+    case diagram::Activity::HeldBack: return "held back";
     case diagram::Activity::Occurring: return "occurring";
   }
   return "?";
@@ -242,7 +244,18 @@ std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const R
   }
   list->PopClipRect();
   if (under && r.hovered && under->kind != diagram::ItemKind::Arc) {
-    ImGui::SetTooltip("%s", qualified(s, *under).c_str());
+    std::string tip = qualified(s, *under);
+    // a transition held back or waiting: what held it back, as the inspector says it
+    const auto* session = app.run().session();
+    if (under->kind == diagram::ItemKind::Transition && state && session != nullptr && under->index < s.binding.transitions.size()) {
+      if (const auto t = s.binding.transitions[under->index]) {
+        const auto& kernel = session->simulation().kernel();
+        const net::Readiness ready = kernel.readiness(*t);
+        if (net::heldBack(ready)) tip += "\nheld back: " + kernel.readinessText(*t);
+        else if (ready == net::Readiness::Untried) tip += "\nwaiting: " + kernel.readinessText(*t);
+      }
+    }
+    ImGui::SetTooltip("%s", tip.c_str());
   }
   report["drawn"] = drawn;
   report["zoom"] = viewport.zoom;

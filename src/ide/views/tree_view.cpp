@@ -275,11 +275,15 @@ void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
     for (std::size_t i = 0; i < net.transitions().size(); ++i) {
       const auto id = static_cast<net::TransitionId>(i);
       const auto name = net.transitionName(id);
-      const char* state = kernel.occurring(id) ? "occurring" : kernel.enabled(id) ? "enabled" : "";
+      // the kernel's answer, as the net view draws it: enabled only when able to start
+      const net::Readiness ready = kernel.readiness(id);
+      const bool able = ready == net::Readiness::Able, held = net::heldBack(ready);
+      const char* state = kernel.occurring(id) ? "occurring" : able ? "enabled" : held ? "held back" : "";
       const auto label = "transition  " + name + (*state != '\0' ? std::string("  [") + state + "]" : "");
       const bool is_sel = sel.kind == SelectionKind::Transition && sel.name == name;
       ImGui::PushStyleColor(ImGuiCol_Text, kernel.occurring(id) ? ImVec4{1.0F, 0.45F, 0.4F, 1}
-                                           : kernel.enabled(id) ? ImVec4{0.45F, 0.95F, 0.45F, 1}
+                                           : able               ? ImVec4{0.45F, 0.95F, 0.45F, 1}
+                                           : held               ? ImVec4{0.95F, 0.70F, 0.10F, 1}
                                                                 : ImGui::GetStyleColorVec4(ImGuiCol_Text));
       if (ImGui::Selectable(label.c_str(), is_sel)) {
         app.document().select({SelectionKind::Transition, name});
