@@ -352,7 +352,7 @@ Thing resolve(const ScriptScope& scope, const std::vector<Segment>& chain) {
 
 void addView(ViewClass c, std::vector<Completion>& out) {
   for (const auto& n : script::viewNames(c)) {
-    out.push_back({n.name, n.method ? "method" : "attribute", n.method ? "(" + n.arguments + ") " + n.doc : n.doc});
+    out.push_back({n.name, n.method ? "method" : "attribute", n.doc, n.method ? "(" + n.arguments + ")" : ""});
   }
 }
 
@@ -372,7 +372,7 @@ std::string slotLine(const ScopeSlot& s) {
 }
 
 void addSlots(const std::vector<ScopeSlot>& slots, std::vector<Completion>& out) {
-  for (const auto& s : slots) out.push_back({net::slotName(s.slot), "slot", slotLine(s)});
+  for (const auto& s : slots) out.push_back({net::slotName(s.slot), "slot", slotLine(s), ""});
 }
 
 /// A node's own names and the fields of its types (each field once, the first type's line).
@@ -384,7 +384,7 @@ void addNode(const std::set<std::string>& types, std::vector<Completion>& out) {
     for (const auto* f : type->fields) {
       std::string line = std::string(scene::fieldKindName(f->kind)) + (f->unit.empty() ? "" : ", " + f->unit);
       line += (types.size() > 1 ? " (" + type->name + ")" : std::string()) + ": " + f->doc;
-      out.push_back({f->name, "field", line});
+      out.push_back({f->name, "field", line, ""});
     }
   }
 }
@@ -402,11 +402,11 @@ void addSensor(const scene::NodeType* type, std::vector<Completion>& out) {
       const auto c = std::find_if(own->channels.begin(), own->channels.end(), [&](const auto& x) { return x.name == n.name; });
       if (c == own->channels.end()) continue;  // another kind's
       if (n.name != "items") {
-        out.push_back({n.name, "channel", std::string(c->help) + (c->unit.empty() ? "" : ", " + std::string(c->unit))});
+        out.push_back({n.name, "channel", std::string(c->help) + (c->unit.empty() ? "" : ", " + std::string(c->unit)), ""});
         continue;
       }
     }
-    out.push_back({n.name, n.method ? "method" : "attribute", n.method ? "(" + n.arguments + ") " + n.doc : n.doc});
+    out.push_back({n.name, n.method ? "method" : "attribute", n.doc, n.method ? "(" + n.arguments + ")" : ""});
   }
 }
 
@@ -418,7 +418,7 @@ std::vector<Completion> namesOf(const ScriptScope& scope, const Thing& t) {
       if (t.view == ViewClass::Transition || t.view == ViewClass::Place) addSlots(t.slots, out);
       addView(t.view, out);
       if (t.view == ViewClass::Params) {
-        for (const auto& [name, line] : scope.params) out.push_back({name, "parameter", line});
+        for (const auto& [name, line] : scope.params) out.push_back({name, "parameter", line, ""});
       }
       break;
     case Thing::Is::Slot:
@@ -436,25 +436,25 @@ std::vector<Completion> namesOf(const ScriptScope& scope, const Thing& t) {
 /// The names a script sees before any dot.
 std::vector<Completion> topNames(const ScriptScope& scope) {
   std::vector<Completion> out;
-  out.push_back({"sim", "name", script::viewClassDoc(ViewClass::Sim)});
+  out.push_back({"sim", "name", script::viewClassDoc(ViewClass::Sim), ""});
   const auto owner = net::info(scope.kind).owner;
   switch (owner) {
     case net::ScriptOwner::Transition:
-    case net::ScriptOwner::Arc: out.push_back({"self", "name", script::viewClassDoc(ViewClass::Transition)}); break;
-    case net::ScriptOwner::PlaceSlot: out.push_back({"self", "name", script::viewClassDoc(ViewClass::Place)}); break;
+    case net::ScriptOwner::Arc: out.push_back({"self", "name", script::viewClassDoc(ViewClass::Transition), ""}); break;
+    case net::ScriptOwner::PlaceSlot: out.push_back({"self", "name", script::viewClassDoc(ViewClass::Place), ""}); break;
     case net::ScriptOwner::Model: break;
   }
   switch (scope.kind) {
     case net::ScriptKind::OnDeposit:
     case net::ScriptKind::OnRemove:
-    case net::ScriptKind::Predicate: out.push_back({"token", "name", "the node token (None for a control token)"}); break;
+    case net::ScriptKind::Predicate: out.push_back({"token", "name", "the node token (None for a control token)", ""}); break;
     case net::ScriptKind::OnEnter:
     case net::ScriptKind::OnExit:
-      out.push_back({"item", "name", "what entered (or left) first: its geometries; attributes read its node"});
-      out.push_back({"items", "name", "every item that entered (or left) in this step"});
+      out.push_back({"item", "name", "what entered (or left) first: its geometries; attributes read its node", ""});
+      out.push_back({"items", "name", "every item that entered (or left) in this step", ""});
       break;
     case net::ScriptKind::OnChange:
-    case net::ScriptKind::Condition: out.push_back({"value", "name", "the sensor's main number"}); break;
+    case net::ScriptKind::Condition: out.push_back({"value", "name", "the sensor's main number", ""}); break;
     case net::ScriptKind::Guard:
     case net::ScriptKind::PreFire:
     case net::ScriptKind::InFire:
@@ -464,10 +464,10 @@ std::vector<Completion> topNames(const ScriptScope& scope) {
   }
   if (scope.kind == net::ScriptKind::Condition) {
     for (const auto& s : scope.slots) {
-      if (s.kind == net::SlotKind::Sensor) out.push_back({net::slotName(s.slot), "slot", slotLine(s)});
+      if (s.kind == net::SlotKind::Sensor) out.push_back({net::slotName(s.slot), "slot", slotLine(s), ""});
     }
   }
-  for (const auto& g : scope.globals) out.push_back({g.name, g.kind, g.detail});
+  for (const auto& g : scope.globals) out.push_back({g.name, g.kind, g.detail, ""});
   return out;
 }
 

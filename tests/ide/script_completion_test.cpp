@@ -92,7 +92,8 @@ TEST_F(Completing, SimOffersTheSimsBindingsEachWithItsLine) {
   for (const char* n : {"time", "dt", "step", "log", "stop", "place", "node", "params", "random"}) EXPECT_TRUE(has(offered_names, n)) << n;
   ASSERT_NE(offered("stop"), nullptr);
   EXPECT_EQ(offered("stop")->kind, "method");
-  EXPECT_EQ(offered("stop")->detail, "(reason='stopped by a script') ends the run after this step");
+  EXPECT_EQ(offered("stop")->signature, "(reason='stopped by a script')");
+  EXPECT_EQ(offered("stop")->detail, "ends the run after this step");
   ASSERT_NE(offered("time"), nullptr);
   EXPECT_EQ(offered("time")->kind, "attribute");
   EXPECT_EQ(offered("time")->detail, "seconds");

@@ -62,7 +62,8 @@ ScriptScope scopeOf(const model::Model& model, const TokenTypes& types, const st
 struct Completion {
   std::string name;    ///< what is inserted
   std::string kind;    ///< "attribute", "method", "field", "slot", "name", "function", "class", "variable", "import", "parameter", "channel"
-  std::string detail;  ///< one line: what it is (a method's parameters first; a field's unit)
+  std::string detail;  ///< one line: what it is (a field's kind and unit first)
+  std::string signature;  ///< a method's parameters, "(reason='stopped by a script')"; "" for any other name
 };
 
 /// What may follow the cursor.
