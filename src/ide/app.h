@@ -17,6 +17,7 @@
 #include "gdpn/ide/io_list.h"
 #include "gdpn/ide/layout.h"
 #include "gdpn/ide/manipulator.h"
+#include "gdpn/ide/script_completion.h"
 #include "gdpn/ide/token_types.h"
 #include "gdpn/model/part_library.h"
 #include "gdpn/ide/orbit.h"
@@ -56,6 +57,19 @@ struct WorldKey {
   }
 };
 
+/// The script editor's completion list (views/script_editor.cpp) across frames: what the text
+/// field's callback found and what the keys asked of it.
+struct CompletionPopup {
+  bool open = false;         ///< the list shows under the cursor
+  int selected = 0;          ///< the chosen name's index
+  CompletionQuery query;     ///< what may follow the cursor
+  int cursor = 0;            ///< the cursor last frame, bytes
+  bool accept = false;       ///< Tab or Enter while open: the chosen name goes in
+  bool ask = false;          ///< Tab after a name or a dot: complete it
+  bool typed = false;        ///< a name's character or a dot was typed this frame
+  float text_x = 0, text_y = 0;  ///< where the field's text begins on screen, pixels
+};
+
 /// The contents view's script editor: the script open for typing, its text, and the syntax
 /// problems found when scripts were last compiled (each kept until its script changes).
 struct ScriptEditing {
@@ -63,6 +77,15 @@ struct ScriptEditing {
   std::string buffer;  ///< its text as typed
   bool focus = false;  ///< the field takes the keyboard in the next frame
   std::map<std::string, script::SyntaxProblem> problems;  ///< by key
+  ScriptScope scope;           ///< what the script being typed sees (made when it opens)
+  CompletionPopup completion;  ///< the completion list
+  std::uint64_t placed_revision = ~std::uint64_t{0};  ///< the document revision `placed` is of
+  net::NetSpec placed;         ///< the document's net with its scripts on their file lines
+  /// the run's last error at a line of the model file (0: none), kept while the document
+  /// stays at `error_revision`, and its message's last line
+  int error_line = 0;
+  std::uint64_t error_revision = 0;  ///< the document revision the erring run was made from
+  std::string error_message;         ///< the exception ("NameError: name 'x' is not defined")
 };
 
 /// What a left drag over the selected node does in the world view (edit mode).

@@ -1,6 +1,7 @@
 // The document: the model being edited, its selection, its history, and reloading from disk.
 
 #include "gdpn/ide/document.h"
+#include "gdpn/ide/script_places.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -135,6 +136,8 @@ bool Document::scriptsChanged() {
 model::Model Document::snapshot() const {
   model::Model copy = model_;
   if (scene_) copy.scene = std::shared_ptr<const scene::Scene>(scene_->clone());
+  // the scripts on the lines Save gives them: a run's error is placed at the file's line
+  placeScripts(copy, text());
   return copy;
 }
 

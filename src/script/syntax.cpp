@@ -21,6 +21,23 @@ void startInterpreter() {
   std::signal(SIGINT, previous);  // the C-level handler stays the program's
 }
 
+void quoteSourceAs(const std::string& file, const std::string& text) {
+  if (file.empty()) return;
+  startInterpreter();
+  py::gil_scoped_acquire gil;
+  try {
+    // an entry without a modification time is one linecache never checks against the disk
+    // the file named as compile() names it: its bytes decoded as the file system's names are
+    PyObject* raw = PyUnicode_DecodeFSDefaultAndSize(file.data(), static_cast<Py_ssize_t>(file.size()));
+    if (raw == nullptr) throw py::error_already_set();
+    const auto name = py::reinterpret_steal<py::object>(raw);
+    const py::object lines = py::str(text).attr("splitlines")(true);
+    py::module_::import("linecache").attr("cache")[name] = py::make_tuple(text.size(), py::none(), lines, name);
+  } catch (py::error_already_set&) {
+    // text Python cannot read as UTF-8: tracebacks quote the file on disk
+  }
+}
+
 std::optional<SyntaxProblem> syntaxProblem(const std::string& code, bool expression) {
   startInterpreter();
   py::gil_scoped_acquire gil;

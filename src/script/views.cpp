@@ -628,23 +628,28 @@ void registerNodeView(py::module_& m) {
   node_class.def_property_readonly("name", [](const NodeView& v) { return v.r.get().nodeName(v.ref); },
                              "the node's path")
       .def_property_readonly("ref", [](const NodeView& v) { return v.ref; }, "the node's handle")
-      .def_property_readonly("type", [](const NodeView& v) { return sceneNode(v).type().name; })
+      .def_property_readonly("type", [](const NodeView& v) { return sceneNode(v).type().name; },
+                             "its node type's name ('Body', 'Cube')")
       .def_property_readonly("data", [](const NodeView& v) { return DataView{v.r, v.ref}; },
                              "its user data, declared in the model (`data: {kind: red}`) or set here: "
                              "node.data['kind'] or node.data.kind")
       .def_property_readonly("template", [](const NodeView& v) { return sceneNode(v).is_template; },
                              "True for a template: kept to be spawned, neither simulated nor drawn")
-      .def_property_readonly("parent", [](const NodeView& v) { return related(v, sceneNode(v).parent()); })
-      .def_property_readonly("prev", [](const NodeView& v) { return related(v, sceneNode(v).prev()); })
-      .def_property_readonly("next", [](const NodeView& v) { return related(v, sceneNode(v).next()); })
+      .def_property_readonly("parent", [](const NodeView& v) { return related(v, sceneNode(v).parent()); },
+                             "the node above it, or None")
+      .def_property_readonly("prev", [](const NodeView& v) { return related(v, sceneNode(v).prev()); },
+                             "the sibling before it, or None")
+      .def_property_readonly("next", [](const NodeView& v) { return related(v, sceneNode(v).next()); },
+                             "the sibling after it, or None")
       .def_property_readonly("children",
                              [](const NodeView& v) {
                                py::list out;
                                for (const auto& c : sceneNode(v).children()) out.append(related(v, c.get()));
                                return out;
-                             })
+                             },
+                             "the nodes below it, in order")
       .def("find", [](const NodeView& v, const std::string& path) { return related(v, sceneNode(v).find(path)); },
-           "the node at a path below this one ('..' goes up), or None")
+           py::arg("path"), "the node at a path below this one ('..' goes up), or None")
       .def_property_readonly("position",
                              [](const NodeView& v) {
                                const auto p = sceneNode(v).framePose().position;
@@ -665,11 +670,11 @@ void registerNodeView(py::module_& m) {
                              "its body's linear velocity, m/s")
       .def("attach", [](const NodeView& v, const py::object& other) {
              return world(v).attach(movedBy(sceneNode(v)), movedBy(sceneNode(asNode(other, "attach"))));
-           }, "joins this node's body to the other's (a node, or a slot holding one) with a fixed joint; "
+           }, py::arg("other"), "joins this node's body to the other's (a node, or a slot holding one) with a fixed joint; "
               "False if already joined")
       .def("detach", [](const NodeView& v, const py::object& other) {
              return world(v).detach(movedBy(sceneNode(v)), movedBy(sceneNode(asNode(other, "detach"))));
-           }, "breaks the joint attach() made; False if there is none")
+           }, py::arg("other"), "breaks the joint attach() made; False if there is none")
       .def_property_readonly("angle",
                              [](const NodeView& v) {
                                const auto& n = joint(v);
@@ -727,19 +732,20 @@ void registerDataView(py::module_& m) {
       .def("__contains__", [](const DataView& d, const std::string& key) { return dataNode(d).datum(key) != nullptr; })
       .def("__len__", [](const DataView& d) { return dataNode(d).data.size(); })
       .def("__iter__", [](const DataView& d) { return py::iter(dataKeys(d)); })
-      .def("keys", &dataKeys)
+      .def("keys", &dataKeys, "the data's names")
       .def("items",
            [](const DataView& d) {
              py::list out;
              for (const auto& [k, v] : dataNode(d).data) out.append(py::make_tuple(k, datumToPython(v)));
              return out;
-           })
+           },
+           "(name, value) pairs")
       .def("get",
            [](const DataView& d, const std::string& key, const py::object& otherwise) -> py::object {
              const auto* v = dataNode(d).datum(key);
              return v ? datumToPython(*v) : otherwise;
            },
-           py::arg("key"), py::arg("default") = py::none())
+           py::arg("key"), py::arg("default") = py::none(), "the datum called key, or default when there is none")
       .def("__getattr__",
            [](const DataView& d, const std::string& key) {
              try {
@@ -776,7 +782,7 @@ void registerSlotView(py::module_& m) {
              const std::string why = s.r.get().kernelRef().setMarking(*ps, n);
              if (!why.empty()) throw py::value_error(ownerName(s) + " slot " + net::slotName(s.slot) + ": " + why);
            },
-           "sets a control slot's count (places only)")
+           py::arg("n"), "sets a control slot's count (places only)")
       .def("add",
            [](const SlotView& s, const py::object& what) {
              const NodeView node = asNode(what, "add");
@@ -786,7 +792,7 @@ void registerSlotView(py::module_& m) {
              const std::string why = s.r.get().kernelRef().addNode(*ps, node.ref);
              if (!why.empty()) throw py::value_error(ownerName(s) + " slot " + net::slotName(s.slot) + ": " + why);
            },
-           "puts a node token at the end of a place's node slot (a spawned node, say)")
+           py::arg("node"), "puts a node token at the end of a place's node slot (a spawned node, say)")
       .def("__len__",
            [](const SlotView& s) -> std::int64_t {
              if (const auto& path = sensorOf(s); !path.empty()) return static_cast<std::int64_t>(py::len(sensorView(s, path)));
@@ -889,7 +895,8 @@ void registerSensorView(py::module_& m) {
 /// Registers `gdpn_script.Transition`: a transition.
 void registerTransitionView(py::module_& m) {
   py::class_<TransitionView>(m, "Transition", "A transition, as its scripts see it")
-      .def_property_readonly("name", [](const TransitionView& v) { return v.r.get().netRef().transitionName(v.t); })
+      .def_property_readonly("name", [](const TransitionView& v) { return v.r.get().netRef().transitionName(v.t); },
+                             "its qualified name (main/cell/work)")
       .def_property_readonly("elapsed",
                              [](const TransitionView& v) {
                                auto& k = v.r.get().kernelRef();
@@ -943,7 +950,8 @@ void registerTransitionView(py::module_& m) {
 /// Registers `gdpn_script.Place`: a place.
 void registerPlaceView(py::module_& m) {
   py::class_<PlaceView>(m, "Place", "A place, as scripts see it")
-      .def_property_readonly("name", [](const PlaceView& v) { return v.r.get().netRef().placeName(v.p); })
+      .def_property_readonly("name", [](const PlaceView& v) { return v.r.get().netRef().placeName(v.p); },
+                             "its qualified name (main/cell/buffer)")
       .def_property(
           "capacity", [](const PlaceView& v) { return capacityOf(SlotView{v.r, false, v.p, net::kDefaultSlot}); },
           [](const PlaceView& v, const py::object& c) { setCapacity(SlotView{v.r, false, v.p, net::kDefaultSlot}, c); },
@@ -969,23 +977,25 @@ void registerRandomView(py::module_& m) {
   py::class_<RandomView>(m, "Random", "The model's seeded random generator")
       .def("random", [](const RandomView& v) { return v.r.get().kernelRef().random().uniform01(); },
            "a float in [0, 1)")
-      .def("uniform", [](const RandomView& v, double a, double b) { return v.r.get().kernelRef().random().uniform(a, b); })
+      .def("uniform", [](const RandomView& v, double a, double b) { return v.r.get().kernelRef().random().uniform(a, b); },
+           py::arg("a"), py::arg("b"), "a float in [a, b)")
       .def("normal", [](const RandomView& v, double mu, double sigma) {
              return v.r.get().kernelRef().random().normal(mu, sigma);
-           }, py::arg("mu") = 0.0, py::arg("sigma") = 1.0)
-      .def("exponential", [](const RandomView& v, double mean) { return v.r.get().kernelRef().random().exponential(mean); })
+           }, py::arg("mu") = 0.0, py::arg("sigma") = 1.0, "a float from the normal law of mean mu and deviation sigma")
+      .def("exponential", [](const RandomView& v, double mean) { return v.r.get().kernelRef().random().exponential(mean); },
+           py::arg("mean"), "a float from the exponential law of that mean")
       .def("randint",
            [](const RandomView& v, std::int64_t a, std::int64_t b) {
              if (b < a) throw py::value_error("randint(a, b) needs a <= b");
              const auto span = static_cast<std::uint64_t>(b - a) + 1;
              return a + static_cast<std::int64_t>(v.r.get().kernelRef().random().below(span));
            },
-           "an integer in [a, b]")
+           py::arg("a"), py::arg("b"), "an integer in [a, b]")
       .def("choice", [](const RandomView& v, const py::sequence& seq) {
         const auto n = py::len(seq);
         if (n == 0) throw py::index_error("choice from an empty sequence");
         return seq[v.r.get().kernelRef().random().below(n)];
-      });
+      }, py::arg("seq"), "one item of the sequence, each as likely");
 }
 
 /// Registers `gdpn_script.Params`: the model's parameters.
@@ -1009,7 +1019,7 @@ void registerParamsView(py::module_& m) {
       .def("__contains__", [](const ParamsView& v, const std::string& name) { return v.values.contains(name); })
       .def("__iter__", [](const ParamsView& v) { return py::iter(v.values); })
       .def("__len__", [](const ParamsView& v) { return py::len(v.values); })
-      .def("items", [](const ParamsView& v) { return v.values.attr("items")(); })
+      .def("items", [](const ParamsView& v) { return v.values.attr("items")(); }, "(name, value) pairs of every parameter")
       .def("__repr__", [](const ParamsView& v) { return "<sim.params " + py::repr(v.values).cast<std::string>() + ">"; });
 }
 
@@ -1118,8 +1128,10 @@ void registerSimView(py::module_& m) {
   py::class_<SimView>(m, "Sim", "The running simulation")
       .def_property_readonly("time", [](const SimView& v) { return v.r.get().kernelRef().now(); }, "seconds")
       .def_property_readonly("dt", [](const SimView& v) { return v.r.get().kernelRef().dt(); }, "seconds")
-      .def_property_readonly("step", [](const SimView& v) { return v.r.get().kernelRef().steps(); })
-      .def_property_readonly("random", [](const SimView& v) { return RandomView{v.r}; })
+      .def_property_readonly("step", [](const SimView& v) { return v.r.get().kernelRef().steps(); },
+                             "steps taken since the start")
+      .def_property_readonly("random", [](const SimView& v) { return RandomView{v.r}; },
+                             "the model's seeded random generator")
       .def_property_readonly("params", [](const SimView& v) { return v.r.get().params(); },
                              "the model's parameters: sim.params.belt_speed")
       .def("log",
@@ -1136,7 +1148,8 @@ void registerSimView(py::module_& m) {
              const auto p = v.r.get().netRef().findPlace(name);
              if (!p) throw py::key_error("no place '" + name + "'");
              return v.r.get().placeView(*p);
-           })
+           },
+           py::arg("name"), "a place by its qualified name (main/belt)")
       .def("node",
            [](const SimView& v, const std::string& path) -> py::object {
              auto& ctx = v.r.get();
@@ -1144,7 +1157,7 @@ void registerSimView(py::module_& m) {
              if (!n) throw py::key_error(scene::noSceneNode(path));
              return ctx.nodeView(n->handle());
            },
-           "the scene node at a path")
+           py::arg("path"), "the scene node at a path")
       .def("part",
            [](const SimView& v, const std::string& name) -> py::object {
              const auto& parts = v.r.get().parts();
@@ -1153,12 +1166,12 @@ void registerSimView(py::module_& m) {
              if (!part) throw py::key_error(why);
              return py::cast(PartView{v.r, *part});
            },
-           "a part instance by name: its I/O as attributes (sim.part('pusher1').front_limit)")
+           py::arg("name"), "a part instance by name: its I/O as attributes (sim.part('pusher1').front_limit)")
       .def("transition", [](const SimView& v, const std::string& name) {
         const auto t = v.r.get().netRef().findTransition(name);
         if (!t) throw py::key_error("no transition '" + name + "'");
         return v.r.get().transitionView(*t);
-      });
+      }, py::arg("name"), "a transition by its qualified name (main/push)");
 }
 
 }  // namespace

@@ -43,6 +43,8 @@ class Document {
   /// The editable scene (null when the model has none).
   [[nodiscard]] scene::Scene* scene() const { return scene_.get(); }
   /// The model with a scene of its own, for a run: nothing the run does reaches the document.
+  /// Its scripts stand on the lines that text() gives them (script_places.h), so that a
+  /// script's error is reported at the line it has in the file as saved.
   [[nodiscard]] model::Model snapshot() const;
   /// What saving writes: the model over the text of its file as last read or saved, which keeps
   /// the comments, key order and layout of all that the edits did not change

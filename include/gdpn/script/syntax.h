@@ -23,4 +23,9 @@ std::optional<SyntaxProblem> syntaxProblem(const std::string& code, bool express
 /// Starts the embedded interpreter once (the engine and the syntax check share it).
 void startInterpreter();
 
+/// Has Python's tracebacks quote the lines of `text` for the file `file` rather than the file
+/// on disk (the IDE runs a model as Save will write it, its scripts compiled at their lines in
+/// that text); an empty `file` does nothing. Starts the interpreter when it is not running.
+void quoteSourceAs(const std::string& file, const std::string& text);
+
 }  // namespace gdpn::script

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <functional>
 #include <string_view>
+#include <utility>
 
 #include "../views.h"
 #include "gdpn/core/text.h"
@@ -20,6 +21,7 @@
 #include "gdpn/ide/net_edit.h"
 #include "gdpn/ide/python_text.h"
 #include "gdpn/ide/token_types.h"
+#include "script_editor.h"
 #include "gdpn/model/schema.h"
 #include "gdpn/scene/node.h"
 
@@ -82,19 +84,31 @@ std::string slotParam(const std::vector<net::SlotCount>& counts, net::SlotId slo
   return c ? c->param : std::string();
 }
 
-/// One script, headed by its kind (and slot), its lines numbered and highlighted.
-void scriptBlock(const net::ScriptSpec& script, std::string_view heading, nlohmann::json& report) {
+/// The run's error (runError: a line of the model file and a message), none by default.
+using FileError = std::pair<int, std::string>;
+
+/// One script, headed by its kind (and slot), its lines numbered with the model file's and
+/// highlighted; the line `error` names, when it is one of the script's, marked with its message.
+void scriptBlock(const net::ScriptSpec& script, std::string_view heading, nlohmann::json& report,
+                 const FileError& error = {}) {
   ImGui::Separator();
   ImGui::TextColored({0.6f, 0.75f, 1.0f, 1.0f}, "%.*s", static_cast<int>(heading.size()), heading.data());
   if (!script.file.empty()) {
     ImGui::SameLine();
     ImGui::TextDisabled("%s%s%s", script.file.c_str(), script.function.empty() ? "" : ": ", script.function.c_str());
   }
-  const int lines = drawPython(script.code, script.loc.line);
-  report["scripts"].push_back({{"what", heading}, {"lines", lines}, {"file", script.file}});
+  const int error_line = scriptLineOf(script, error.first);
+  const int lines = drawPython(script.code, script.loc.line, error_line);
+  nlohmann::json entry = {{"what", heading}, {"lines", lines}, {"file", script.file}, {"first_line", script.loc.line}};
+  if (error_line > 0) {
+    ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "the run stopped at line %d (file line %d): %s", error_line, error.first,
+                       error.second.c_str());
+    entry["run_error"] = {{"line", error_line}, {"file_line", error.first}, {"message", error.second}};
+  }
+  report["scripts"].push_back(entry);
 }
 
-void placeContents(const session::Session& session, net::PlaceId p, nlohmann::json& report) {
+void placeContents(const session::Session& session, net::PlaceId p, nlohmann::json& report, const FileError& error) {
   const auto& sim = session.simulation();
   const auto& net = sim.net();
   const auto& place = net.places()[p];
@@ -157,7 +171,7 @@ void placeContents(const session::Session& session, net::PlaceId p, nlohmann::js
       if (i < 0) continue;
       const std::string heading = std::string(net::info(net::kSlotScripts[k]).key) + " (" +
                                   net::slotName(net.placeSlots()[ps].slot) + ")";
-      scriptBlock(net.scripts()[static_cast<std::size_t>(i)], heading, report);
+      scriptBlock(net.scripts()[static_cast<std::size_t>(i)], heading, report, error);
     }
   }
 }
@@ -178,7 +192,8 @@ net::Duration writtenDuration(const session::Session& session, net::TransitionId
   return {law.law, law.a, law.b};
 }
 
-void transitionContents(const session::Session& session, net::TransitionId t, nlohmann::json& report) {
+void transitionContents(const session::Session& session, net::TransitionId t, nlohmann::json& report,
+                        const FileError& error) {
   const auto& net = session.simulation().net();
   const auto duration = durationText(writtenDuration(session, t));
   ImGui::Text("duration %s", duration.c_str());
@@ -187,7 +202,9 @@ void transitionContents(const session::Session& session, net::TransitionId t, nl
   if (t >= index.transitions.size()) return;
   for (std::size_t k = 0; k < net::kTransitionScripts.size(); ++k) {
     const auto i = index.transitions[t][k];
-    if (i >= 0) scriptBlock(net.scripts()[static_cast<std::size_t>(i)], net::info(net::kTransitionScripts[k]).key, report);
+    if (i >= 0) {
+      scriptBlock(net.scripts()[static_cast<std::size_t>(i)], net::info(net::kTransitionScripts[k]).key, report, error);
+    }
   }
 }
 
@@ -210,71 +227,6 @@ void commitTransition(App& app, const ConstructAt& at, net::TransitionSpec t) {
   auto e = makeNetEdit(NetEditKind::SetTransition, at.page, at.name);
   e.transition = std::move(t);
   commit(app, std::move(e));
-}
-
-/// One script in the editor: highlighted with its line numbers and its syntax error marked,
-/// or, after "Edit", a field that takes the typing and is compiled when it loses focus. A
-/// script in a .py file is shown, not edited here. Calls `store` with the new code when the
-/// field was changed.
-void scriptEditor(App& app, const std::string& key, const std::string& heading, const net::ScriptSpec& script,
-                  bool expression, const std::function<void(const std::string&)>& store, nlohmann::json& report) {
-  auto& ed = app.inspector.scripts;
-  ImGui::PushID(key.c_str());
-  ImGui::Separator();
-  ImGui::TextColored({0.6f, 0.75f, 1.0f, 1.0f}, "%s", heading.c_str());
-  nlohmann::json entry = {{"what", heading}, {"file", script.file}};
-  if (!script.file.empty()) {
-    ImGui::SameLine();
-    ImGui::TextDisabled("%s%s%s (edit the file)", script.file.c_str(), script.function.empty() ? "" : ": ",
-                        script.function.c_str());
-    entry["lines"] = drawPython(script.code, script.loc.line);
-  } else if (ed.key == key) {
-    ImGui::SameLine();
-    ImGui::TextDisabled(expression ? "an expression; compiled when you leave it" : "compiled when you leave it");
-    if (ed.focus) {
-      ImGui::SetKeyboardFocusHere();
-      ed.focus = false;
-    }
-    const int lines = 1 + static_cast<int>(std::count(ed.buffer.begin(), ed.buffer.end(), '\n'));
-    ImGui::InputTextMultiline("##code", &ed.buffer,
-                              {-1, ImGui::GetTextLineHeight() * static_cast<float>(std::clamp(lines + 1, 3, 16)) + 8},
-                              ImGuiInputTextFlags_AllowTabInput);
-    noteItem("field", entry);
-    entry["editing"] = true;
-    entry["lines"] = lines;
-    if (ImGui::IsItemDeactivated()) {
-      // compiled now; a syntax error is kept and marked, the text is never thrown away
-      std::string code = ed.buffer;
-      while (!code.empty() && (code.back() == '\n' || code.back() == ' ')) code.pop_back();
-      if (!code.empty() && !expression) code += '\n';
-      ed.problems.erase(key);
-      if (!code.empty()) {
-        if (auto problem = script::syntaxProblem(code, expression)) ed.problems[key] = *problem;
-      }
-      ed.key.clear();
-      if (code != script.code) store(code);
-    }
-  } else {
-    const auto problem = ed.problems.find(key);
-    const int error_line = problem == ed.problems.end() ? 0 : std::max(1, problem->second.line);
-    ImGui::SameLine();
-    if (ImGui::SmallButton(script.empty() ? "Add" : "Edit")) {
-      ed.key = key;
-      ed.buffer = script.code;
-      ed.focus = true;
-    }
-    noteItem("edit", entry);
-    entry["lines"] = script.empty() ? 0 : drawPython(script.code, 1, error_line);
-    if (problem != ed.problems.end()) {
-      const auto& p = problem->second;
-      const std::string where = "line " + std::to_string(p.line) + (p.column > 0 ? ", column " + std::to_string(p.column) : "");
-      ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s: %s", where.c_str(), p.message.c_str());
-      entry["error"] = {{"line", p.line}, {"column", p.column}, {"message", p.message}};
-    }
-  }
-  if (!script.empty() || entry.contains("editing")) report["scripts"].push_back(entry);
-  report["editors"][heading] = entry;
-  ImGui::PopID();
 }
 
 /// The sensor nodes of the document's scene, by path.
@@ -508,7 +460,7 @@ void editPlace(App& app, const ConstructAt& at, const net::PlaceSpec& place, con
     if (sensor_only != (kind == net::SlotKind::Sensor)) continue;
     const std::string heading = std::string(net::info(k).key) + " (" + net::slotName(app.inspector.contents_slot) + ")";
     const auto slot = app.inspector.contents_slot;
-    scriptEditor(app, construct + "#" + heading, heading, net::scriptOf(chosen, k), false,
+    scriptEditor(app, construct + "#" + heading, heading, net::scriptOf(chosen, k), false, ScriptAt{at.page, at.name, k, slot},
                  [&app, at, place, slot, k](const std::string& code) {
                    auto p = place;
                    setSlotScript(p, slot, k, code);
@@ -522,7 +474,7 @@ void editPlace(App& app, const ConstructAt& at, const net::PlaceSpec& place, con
       if (script.empty()) continue;
       const std::string heading = std::string(net::info(k).key) + " (" + net::slotName(s.slot) + ")";
       const auto slot = s.slot;
-      scriptEditor(app, construct + "#" + heading, heading, script, false,
+      scriptEditor(app, construct + "#" + heading, heading, script, false, ScriptAt{at.page, at.name, k, slot},
                    [&app, at, place, slot, k](const std::string& code) {
                      auto p = place;
                      setSlotScript(p, slot, k, code);
@@ -618,7 +570,7 @@ void editTransition(App& app, const ConstructAt& at, const net::TransitionSpec& 
   for (const auto k : net::kTransitionScripts) {
     const std::string heading(net::info(k).key);
     scriptEditor(app, construct + "#" + heading, heading, net::scriptOf(t, k), net::info(k).expression,
-                 [&app, at, t, k](const std::string& code) {
+                 ScriptAt{at.page, at.name, k}, [&app, at, t, k](const std::string& code) {
                    auto next = t;
                    setInlineCode(net::scriptOf(next, k), code, t.loc);
                    commitTransition(app, at, std::move(next));
@@ -655,10 +607,12 @@ void drawModelContents(App& app, nlohmann::json& report) {
   ImGui::TextUnformatted("function summary() returning a dict adds the model's own figures to a run's summary.");
   const auto& globals = app.document().model().net.globals;
   if (app.run().mode() != RunMode::Edit) {
-    scriptBlock(globals, "globals", report);
+    // as the run has them: on their file lines
+    const auto* session = app.run().session();
+    scriptBlock(session != nullptr ? session->simulation().model().net.globals : globals, "globals", report, runError(app));
     return;
   }
-  scriptEditor(app, "#globals", "globals", globals, false,
+  scriptEditor(app, "#globals", "globals", globals, false, ScriptAt{},
                [&app](const std::string& code) {
                  const auto why = app.document().execute(std::make_unique<SetGlobalsCommand>(code));
                  if (!why.empty()) app.message = why;
@@ -673,9 +627,9 @@ void drawContents(App& app, const Selection& sel, nlohmann::json& report) {
   if (session == nullptr) return;
   const auto& net = session->simulation().net();
   if (sel.kind == SelectionKind::Place) {
-    if (const auto p = net.findPlace(sel.name)) placeContents(*session, *p, report);
+    if (const auto p = net.findPlace(sel.name)) placeContents(*session, *p, report, runError(app));
   } else if (sel.kind == SelectionKind::Transition) {
-    if (const auto t = net.findTransition(sel.name)) transitionContents(*session, *t, report);
+    if (const auto t = net.findTransition(sel.name)) transitionContents(*session, *t, report, runError(app));
   }
 }
 
