@@ -16,6 +16,8 @@
 #include "gdpn/ide/io_list.h"
 #include "gdpn/ide/part_edit.h"
 #include "detail/keys.h"
+#include "net_actions.h"
+#include "views/net_view_state.h"
 #include "views.h"
 #include "views/palette_state.h"
 
@@ -69,10 +71,29 @@ void turnQuarter(App& app) {
 
 bool hasRun(const App& app) { return app.run().session() != nullptr; }
 
-/// A node, place or transition is selected: what Copy and Cut take.
+/// Shows `why` in the status bar when an action was refused.
+void note(App& app, const std::string& why) {
+  if (!why.empty()) app.message = why;
+}
+
+/// A node, or something of the net, is selected: what Copy and Cut take.
 bool copyableSelected(const App& app) {
   const auto kind = app.document().selection().kind;
-  return kind == SelectionKind::Node || kind == SelectionKind::Place || kind == SelectionKind::Transition;
+  switch (kind) {
+    case SelectionKind::None: return false;
+    case SelectionKind::Node:
+    case SelectionKind::Place:
+    case SelectionKind::Transition:
+    case SelectionKind::Instance:
+    case SelectionKind::Arc: return true;
+  }
+  return false;
+}
+
+/// True when something of the net is selected (the current selection is not a node).
+bool netSelected(const App& app) {
+  const auto kind = app.document().selection().kind;
+  return kind != SelectionKind::None && kind != SelectionKind::Node;
 }
 
 }  // namespace
@@ -93,6 +114,19 @@ bool actionEnabled(const App& app, ActionId id) {
     case ActionId::Delete: return copyableSelected(app) && editing(app);
     case ActionId::TurnQuarter: return editing(app) && (!app.palette().dragged.empty() || !turnable(app).empty());
     case ActionId::Copy: return copyableSelected(app);
+    case ActionId::SelectAll: return true;
+    case ActionId::NetSelectTool:
+    case ActionId::NetPlaceTool:
+    case ActionId::NetTransitionTool:
+    case ActionId::NetArcTool: return true;
+    case ActionId::ReverseArc:
+      return editing(app) && app.document().selection().kind == SelectionKind::Arc && app.document().selectedCount() == 1;
+    case ActionId::AlignLeft:
+    case ActionId::AlignTop:
+    case ActionId::DistributeAcross:
+    case ActionId::DistributeDown: return editing(app) && netSelected(app) && app.document().selectedCount() >= 2;
+    case ActionId::PageTypeFromSelection: return editing(app) && netSelected(app);
+    case ActionId::OpenInstance: return app.document().selection().kind == SelectionKind::Instance;
     case ActionId::SaveAsPart: return app.document().selection().kind == SelectionKind::Node;
     case ActionId::UpdateParts: return editing(app) && !app.part_updates.updates.empty();
     case ActionId::Paste: return editing(app);  // what the clipboard holds is read then (another program's text, too)
@@ -156,6 +190,18 @@ bool actionChecked(const App& app, ActionId id) {
     case ActionId::Movie: return app.movie != nullptr;
     case ActionId::PlantOnly: return app.run().plantOnly();
     case ActionId::IoList: return app.io_list.shown;
+    case ActionId::NetSelectTool: return app.netView().tool == NetTool::Select;
+    case ActionId::NetPlaceTool: return app.netView().tool == NetTool::Place;
+    case ActionId::NetTransitionTool: return app.netView().tool == NetTool::Transition;
+    case ActionId::NetArcTool: return app.netView().tool == NetTool::Arc;
+    case ActionId::SelectAll:
+    case ActionId::ReverseArc:
+    case ActionId::AlignLeft:
+    case ActionId::AlignTop:
+    case ActionId::DistributeAcross:
+    case ActionId::DistributeDown:
+    case ActionId::PageTypeFromSelection:
+    case ActionId::OpenInstance:
     case ActionId::ReleaseForces:
     case ActionId::SaveAsPart:
     case ActionId::UpdateParts:
@@ -214,6 +260,18 @@ std::string performAction(App& app, ActionId id) {
     case ActionId::Copy: app.copySelection(); break;
     case ActionId::Paste: app.paste(); break;
     case ActionId::Delete: app.deleteSelection(); break;
+    case ActionId::SelectAll: selectAllOnPage(app); break;
+    case ActionId::NetSelectTool: app.netView().tool = NetTool::Select; break;
+    case ActionId::NetPlaceTool: app.netView().tool = NetTool::Place; break;
+    case ActionId::NetTransitionTool: app.netView().tool = NetTool::Transition; break;
+    case ActionId::NetArcTool: app.netView().tool = NetTool::Arc; break;
+    case ActionId::ReverseArc: note(app, reverseSelectedArc(app)); break;
+    case ActionId::AlignLeft: note(app, arrangeNetSelection(app, Arrange::Left)); break;
+    case ActionId::AlignTop: note(app, arrangeNetSelection(app, Arrange::Top)); break;
+    case ActionId::DistributeAcross: note(app, arrangeNetSelection(app, Arrange::Across)); break;
+    case ActionId::DistributeDown: note(app, arrangeNetSelection(app, Arrange::Down)); break;
+    case ActionId::PageTypeFromSelection: note(app, pageTypeFromSelection(app)); break;
+    case ActionId::OpenInstance: openSelectedInstance(app); break;
     case ActionId::TurnQuarter: turnQuarter(app); break;
     case ActionId::SaveAsPart: openSaveAsPart(app); break;
     case ActionId::UpdateParts: openPartUpdates(app); break;

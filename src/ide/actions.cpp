@@ -40,6 +40,8 @@ constexpr ActionInfo kActions[] = {
      "Paste a model file's nodes under the selected node (beside it, or at the top), its places and transitions into the net view's page"},
     {A::Delete, "delete", "Delete", M::Edit, "Delete", true, false, false,
      "Delete the selected node, or place or transition with its arcs"},
+    {A::SelectAll, "select-all", "Select All", M::Edit, "Ctrl+A", true, false, false,
+     "Select every place, transition, arc and instance of the net view's page"},
     {A::TurnQuarter, "turn-quarter", "Turn a Quarter", M::Edit, "R", false, false, false,
      "Turn the selected part (or Transform) a quarter round, anticlockwise seen from above, about its origin"},
     {A::UpdateParts, "update-parts", "Update Parts...", M::Edit, "", false, false, true,
@@ -83,6 +85,28 @@ constexpr ActionInfo kActions[] = {
     {A::Movie, "movie", "Movie", M::View, "", false, true, false,
      "Film the window into gdpn-ide-N.mp4 in the current folder (again: stop)"},
 
+    {A::NetSelectTool, "net-select", "Select Tool", M::Net, "S", false, true, false,
+     "A click selects, Shift or Ctrl adds; a drag moves the selection, or on paper draws a rubber band"},
+    {A::NetPlaceTool, "net-place", "Place Tool", M::Net, "P", false, true, false, "A click on the paper adds a place there"},
+    {A::NetTransitionTool, "net-transition", "Transition Tool", M::Net, "T", false, true, false,
+     "A click on the paper adds a transition there"},
+    {A::NetArcTool, "net-arc", "Arc Tool", M::Net, "A", false, true, false,
+     "A drag from a place to a transition (or back) adds an arc"},
+    {A::ReverseArc, "reverse-arc", "Reverse Arc", M::Net, "", false, false, true,
+     "Swap the selected arc's source and target"},
+    {A::AlignLeft, "align-left", "Align Left", M::Net, "", false, false, true,
+     "Put the selected constructs' centres on the leftmost one's vertical line"},
+    {A::AlignTop, "align-top", "Align Top", M::Net, "", false, false, false,
+     "Put the selected constructs' centres on the topmost one's horizontal line"},
+    {A::DistributeAcross, "distribute-across", "Distribute Across", M::Net, "", false, false, false,
+     "Space the selected constructs evenly from the leftmost to the rightmost"},
+    {A::DistributeDown, "distribute-down", "Distribute Down", M::Net, "", false, false, false,
+     "Space the selected constructs evenly from the topmost to the lowest"},
+    {A::PageTypeFromSelection, "page-type-from-selection", "Page Type from Selection", M::Net, "", false, false, true,
+     "Move the selection into a new page type and put an instance of it in its place; crossing arcs become ports"},
+    {A::OpenInstance, "open-instance", "Open Instance's Page", M::Net, "", false, false, false,
+     "Show the selected instance's page (Up comes back)"},
+
     {A::Run, "run", "Run", M::Run, "F5", false, false, false, "Run the model in real time"},
     {A::Faster, "faster", "Run Faster (x8)", M::Run, "", false, false, false, "Run the model eight times real time"},
     {A::Fastest, "fastest", "Run As Fast As Possible", M::Run, "", false, false, false,
@@ -120,6 +144,7 @@ const char* menuName(Menu menu) {
     case Menu::File: return "File";
     case Menu::Edit: return "Edit";
     case Menu::View: return "View";
+    case Menu::Net: return "Net";
     case Menu::Run: return "Run";
     case Menu::Help: return "Help";
   }

@@ -16,6 +16,7 @@
 #include "action_run.h"
 #include "detail/picture_texture.h"
 #include "detail/world_texture.h"
+#include "net_actions.h"
 #include "gdpn/ide/net_edit.h"
 #include "gdpn/ide/scene_edit.h"
 #include "gdpn/ide/set_field.h"
@@ -141,6 +142,11 @@ bool App::selectByName(const std::string& name) {
     selectNode(name);
     return true;
   }
+  // an arc, as arcName() writes it ("main: a -> t")
+  if (const Selection arc{SelectionKind::Arc, name}; parseArcName(name) && namesSomething(*doc_, arc)) {
+    doc_->select(arc);
+    return true;
+  }
   if (run_.session() == nullptr) return false;
   const auto& net = run_.session()->simulation().net();
   if (net.findPlace(name)) {
@@ -201,11 +207,20 @@ void App::deleteSelection() {
   std::string why;
   if (sel.kind == SelectionKind::Node) {
     why = doc_->execute(std::make_unique<SceneEditCommand>(SceneEdit{SceneEditKind::Delete, sel.name, {}, {}, false, {}}));
+  } else if (sel.kind == SelectionKind::None) {
+    return;
+  } else if (!netSelection(*this).empty()) {
+    // what is selected on the net view's page, as one step
+    why = deleteNetSelection(*this);
+    if (!why.empty()) message = why;
+    return;
   } else if (sel.kind == SelectionKind::Place || sel.kind == SelectionKind::Transition) {
+    // chosen in the tree on a page the net view does not show
     const auto at = locateConstruct(doc_->model().net, sel.name);
     why = at ? doc_->execute(std::make_unique<NetEditCommand>(makeNetEdit(NetEditKind::Delete, at->page, at->name)))
              : "'" + sel.name + "' is not written on a page";
   } else {
+    message = "show " + sel.name + "'s page in the net view to delete it";
     return;
   }
   message = why.empty() ? "deleted " + sel.name : why;
@@ -237,6 +252,9 @@ void App::copySelection() {
     auto fragment = std::make_shared<scene::Scene>(s->types());
     fragment->copy(*node, fragment->root());
     m.scene = fragment;
+  } else if (auto many = copyNetSelection(*this); !many.places.empty() || !many.transitions.empty()) {
+    // the net view's selection, with the arcs among it
+    m.net.pages.push_back(std::move(many));
   } else if (sel.kind == SelectionKind::Place || sel.kind == SelectionKind::Transition) {
     const auto at = locateConstruct(doc_->model().net, sel.name);
     auto* page = at ? findPage(doc_->editableNet(), at->page) : nullptr;
@@ -258,7 +276,9 @@ void App::copySelection() {
   m.params = doc_->model().params;
   copied = model::writeModel(m);
   ImGui::SetClipboardText(copied.c_str());
-  message = "copied " + sel.name + " (as a model file)";
+  const auto count = m.net.pages.empty() ? 1 : m.net.pages.front().places.size() + m.net.pages.front().transitions.size();
+  message = count > 1 ? "copied " + std::to_string(count) + " places and transitions (as a model file)"
+                      : "copied " + sel.name + " (as a model file)";
 }
 
 void App::paste() {
@@ -288,9 +308,13 @@ void App::paste() {
     const auto why = doc_->execute(std::move(command));
     message = why.empty() ? "pasted " + edit->made() + " into " + net_view_->layout.page : why;
     if (why.empty()) {
+      // everything pasted is selected, ready to be moved as one
       const auto& prefix = net_view_->view.prefix.empty() ? net_view_->layout.page : net_view_->view.prefix;
-      const bool place = !constructs->places.empty();
-      doc_->select({place ? SelectionKind::Place : SelectionKind::Transition, prefix + "/" + edit->made()});
+      std::vector<Selection> made;
+      for (const auto& p : edit->pasted().places) made.push_back({SelectionKind::Place, prefix + "/" + p.name});
+      for (const auto& t : edit->pasted().transitions) made.push_back({SelectionKind::Transition, prefix + "/" + t.name});
+      for (const auto& a : edit->pasted().arcs) made.push_back({SelectionKind::Arc, arcName(prefix, a.from, a.to, a.kind)});
+      doc_->selectAll(made);
     }
     return;
   }
@@ -859,7 +883,12 @@ void App::frame(float width, float height, double wall_seconds) {
 
   // what the frame showed, for tests and scripts
   const auto& sel = doc_->selection();
-  report["selection"] = {{"kind", selectionKindName(sel.kind)}, {"name", sel.name}};
+  report["selection"] = {{"kind", selectionKindName(sel.kind)}, {"name", sel.name}, {"count", doc_->selectedCount()}};
+  if (doc_->selectedCount() > 1 && doc_->selectedCount() <= 500) {
+    nlohmann::json all = nlohmann::json::array();
+    for (const auto& one : doc_->selections()) all.push_back(one.name);
+    report["selection"]["all"] = all;
+  }
   report["run"] = {{"mode", runModeName(run_.mode())},
                    {"speed", runSpeedName(run_.speed())},
                    {"time", run_.time()},

@@ -151,6 +151,7 @@ struct InspectorState {
   std::string error;                ///< why the last edit was refused
   std::string datum_key;            ///< the name for a datum to add
   std::string datum_value;          ///< and its value, as text (datumFromText)
+  std::string new_arc_slot;         ///< the arc inspector's field: a slot to add to the arc
   ScriptEditing scripts;            ///< the contents view's script editor
   net::SlotId contents_slot = net::kDefaultSlot;  ///< the slot the contents view edits
   std::unique_ptr<PictureTexture> picture_texture;  ///< a camera sensor's picture
@@ -348,6 +349,8 @@ class App {
   [[nodiscard]] const TokenTypes& tokenTypes();
   /// The net view's page, layout and viewport (views/net_view.cpp).
   [[nodiscard]] NetViewState& netView() { return *net_view_; }
+  /// The net view's state, to read.
+  [[nodiscard]] const NetViewState& netView() const { return *net_view_; }
   /// The parts palette's state and the edit scene with the parts' machines (views/palette.cpp).
   [[nodiscard]] PaletteState& palette() { return *palette_; }
   /// The same, to read.

@@ -7,7 +7,7 @@
 namespace gdpn::ide {
 
 std::string UndoStack::push(std::unique_ptr<Command> command, Document& doc) {
-  Selection before = doc.selection();
+  auto before = doc.selections();
   if (auto why = command->apply(doc); !why.empty()) return why;
   doc.touched(command->changesScene());
   undone_.clear();
@@ -24,9 +24,10 @@ std::string UndoStack::push(std::unique_ptr<Command> command, Document& doc) {
 
 namespace {
 
-/// Selects `selection` in `doc` when it still names something there, else nothing.
-void selectIfThere(Document& doc, const Selection& selection) {
-  doc.select(namesSomething(doc, selection) ? selection : Selection{});
+/// Selects what of `selection` still names something in `doc`.
+void selectIfThere(Document& doc, std::vector<Selection> selection) {
+  std::erase_if(selection, [&](const Selection& one) { return !namesSomething(doc, one); });
+  doc.selectAll(selection);
 }
 
 }  // namespace
@@ -34,7 +35,7 @@ void selectIfThere(Document& doc, const Selection& selection) {
 bool UndoStack::undo(Document& doc) {
   if (done_.empty()) return false;
   auto& step = done_.back();
-  step.after = doc.selection();
+  step.after = doc.selections();
   step.command->revert(doc);
   doc.touched(step.command->changesScene());
   // what was selected before the step (a pasted node is gone again)

@@ -310,8 +310,50 @@ bool Document::reload() {
   source_ = std::move(*text);
   diagnostics_ = std::move(diags);
   undo_.clear();
-  if (!namesSomething(*this, selection_)) selection_ = {};
+  auto kept = selections();
+  std::erase_if(kept, [&](const Selection& one) { return !namesSomething(*this, one); });
+  selectAll(kept);
   return true;
+}
+
+std::vector<Selection> Document::selections() const {
+  if (!selection_.any()) return {};
+  std::vector<Selection> out = also_;
+  out.push_back(selection_);
+  return out;
+}
+
+void Document::selectAll(const std::vector<Selection>& all) {
+  select({});
+  for (const auto& one : all) {
+    if (!one.any() || isSelected(one)) continue;
+    if (selection_.any()) also_.push_back(std::move(selection_));
+    selection_ = one;
+  }
+}
+
+void Document::toggleSelected(const Selection& one) {
+  if (!one.any()) return;
+  if (selection_ == one) {
+    // the one added before it becomes the current one
+    if (also_.empty()) {
+      selection_ = {};
+    } else {
+      selection_ = std::move(also_.back());
+      also_.pop_back();
+    }
+    return;
+  }
+  if (const auto it = std::find(also_.begin(), also_.end(), one); it != also_.end()) {
+    also_.erase(it);
+    return;
+  }
+  if (selection_.any()) also_.push_back(std::move(selection_));
+  selection_ = one;
+}
+
+bool Document::isSelected(const Selection& one) const {
+  return one.any() && (selection_ == one || std::find(also_.begin(), also_.end(), one) != also_.end());
 }
 
 }  // namespace gdpn::ide

@@ -7,6 +7,9 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <string_view>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "gdpn/core/text.h"
 #include "gdpn/ide/document.h"
@@ -140,8 +143,9 @@ std::string replaceNamed(net::PageSpec& p, std::vector<Spec>& list, const std::s
   return {};
 }
 
-/// Adds `fragment`'s constructs to `p`, renamed where taken; the first one's name into `made`.
-std::string paste(net::PageSpec& p, const net::PageSpec& fragment, std::string& made) {
+/// Adds `fragment`'s constructs to `p`, renamed where taken; the first one's name into `made`,
+/// and all it added into `pasted`.
+std::string paste(net::PageSpec& p, const net::PageSpec& fragment, std::string& made, net::PageSpec& pasted) {
   if (fragment.places.empty() && fragment.transitions.empty()) return "nothing to paste";
   std::map<std::string, std::string> renamed;
   const auto fresh = [&](const std::string& name) {
@@ -158,11 +162,13 @@ std::string paste(net::PageSpec& p, const net::PageSpec& fragment, std::string& 
   for (auto place : fragment.places) {
     place.name = fresh(place.name);
     place.position = shifted(place.position);
+    pasted.places.push_back(place);
     p.places.push_back(std::move(place));
   }
   for (auto t : fragment.transitions) {
     t.name = fresh(t.name);
     t.position = shifted(t.position);
+    pasted.transitions.push_back(t);
     p.transitions.push_back(std::move(t));
   }
   for (auto a : fragment.arcs) {
@@ -170,28 +176,103 @@ std::string paste(net::PageSpec& p, const net::PageSpec& fragment, std::string& 
     if (from == renamed.end() || to == renamed.end()) continue;
     a.from = from->second;
     a.to = to->second;
+    pasted.arcs.push_back(a);
     p.arcs.push_back(std::move(a));
   }
   return {};
 }
 
-/// Performs `e` on `p` (a copy of the page in `net`); "" or why not.
-std::string edit(net::NetSpec& net, net::PageSpec& p, const NetEdit& e, std::string& made) {
+/// Places constructs of `p` without a position where `pins` says they are drawn (a page laid
+/// out by Graphviz keeps its look when one of them moves).
+void pinAll(net::PageSpec& p, const std::vector<std::pair<std::string, net::EditorPos>>& pins) {
+  if (pins.empty()) return;
+  std::unordered_map<std::string_view, net::EditorPos> at;
+  for (const auto& [name, pos] : pins) at.emplace(name, pos);
+  const auto pin = [&](auto& list) {
+    for (auto& x : list) {
+      if (x.position) continue;
+      if (const auto it = at.find(x.name); it != at.end()) x.position = it->second;
+    }
+  };
+  pin(p.places);
+  pin(p.transitions);
+  pin(p.instances);
+}
+
+/// Moves each of `moves` on `p`; "" or why not (a name not on the page).
+std::string moveAll(net::PageSpec& p, const std::vector<std::pair<std::string, net::EditorPos>>& moves) {
+  std::unordered_map<std::string_view, const net::EditorPos*> to;
+  for (const auto& [name, pos] : moves) to[name] = &pos;
+  std::size_t found = 0;
+  const auto move = [&](auto& list) {
+    for (auto& x : list) {
+      if (const auto it = to.find(x.name); it != to.end()) {
+        x.position = *it->second;
+        ++found;
+      }
+    }
+  };
+  move(p.places);
+  move(p.transitions);
+  move(p.instances);
+  if (found == to.size()) return {};
+  for (const auto& [name, pos] : moves) {
+    if (!taken(p, name)) return "no place, transition or instance '" + name + "' on page '" + p.name + "'";
+  }
+  return {};
+}
+
+/// True when `a` is the arc `e` names (source, target and kind).
+bool sameArc(const net::ArcSpec& a, const net::ArcSpec& b) { return a.from == b.from && a.to == b.to && a.kind == b.kind; }
+
+/// True when page `page` is `name` or holds, through its instances at any depth, page type `name`.
+bool holds(const net::NetSpec& net, const net::PageSpec& page, const std::string& name, int depth = 0) {
+  if (page.name == name) return true;
+  if (depth > 64) return true;  // deeper than any sane net: taken as a cycle
+  for (const auto& i : page.instances) {
+    const auto* type = findPage(net, i.type);
+    if (type != nullptr && holds(net, *type, name, depth + 1)) return true;
+  }
+  return false;
+}
+
+/// Deletes `names` (places, transitions, instances) with their arcs, and `arcs`; "" or why not.
+std::string deleteAll(net::PageSpec& p, const NetEdit& e) {
+  std::unordered_set<std::string_view> gone;
+  for (const auto& n : e.names) {
+    if (!taken(p, n)) return "no place, transition or instance '" + n + "' on page '" + p.name + "'";
+    if (hasPlace(p, n) && published(p, n)) {
+      return "'" + n + "' is published as a reference of '" + p.name + "': arcs of other pages reach it";
+    }
+    gone.insert(n);
+  }
+  for (const auto& a : e.arcs) {
+    if (std::none_of(p.arcs.begin(), p.arcs.end(), [&](const net::ArcSpec& x) { return sameArc(x, a); })) {
+      return std::string("no ") + kindName(a.kind) + " from '" + a.from + "' to '" + a.to + "' on page '" + p.name + "'";
+    }
+  }
+  const auto instanceOf = [](std::string_view end) { return end.substr(0, end.find('/')); };
+  std::erase_if(p.places, [&](const auto& x) { return gone.contains(x.name); });
+  std::erase_if(p.transitions, [&](const auto& x) { return gone.contains(x.name); });
+  std::erase_if(p.instances, [&](const auto& x) { return gone.contains(x.name); });
+  std::erase_if(p.arcs, [&](const net::ArcSpec& a) {
+    // an arc to a link goes with its instance
+    return gone.contains(a.from) || gone.contains(a.to) || gone.contains(instanceOf(a.from)) ||
+           gone.contains(instanceOf(a.to)) ||
+           std::any_of(e.arcs.begin(), e.arcs.end(), [&](const net::ArcSpec& x) { return sameArc(x, a); });
+  });
+  return {};
+}
+
+/// Performs `e` on `p` (a copy of the page in `net`); "" or why not. A Paste's name first
+/// added goes into `made`, and all it added into `pasted`.
+std::string edit(net::NetSpec& net, net::PageSpec& p, const NetEdit& e, std::string& made, net::PageSpec& pasted) {
   switch (e.kind) {
     case NetEditKind::AddPlace: return addNamed(p, p.places, e);
     case NetEditKind::AddTransition: return addNamed(p, p.transitions, e);
     case NetEditKind::Move: {
       // a page Graphviz lays out: every construct pinned where it is drawn, then one moved
-      const auto pin = [&](auto& list) {
-        for (auto& x : list) {
-          if (x.position) continue;
-          const auto at = std::find_if(e.pins.begin(), e.pins.end(), [&](const auto& q) { return q.first == x.name; });
-          if (at != e.pins.end()) x.position = at->second;
-        }
-      };
-      pin(p.places);
-      pin(p.transitions);
-      pin(p.instances);
+      pinAll(p, e.pins);
       if (auto it = byName(p.places, e.name); it != p.places.end()) it->position = e.at;
       else if (auto t = byName(p.transitions, e.name); t != p.transitions.end()) t->position = e.at;
       else if (auto i = byName(p.instances, e.name); i != p.instances.end()) i->position = e.at;
@@ -269,7 +350,51 @@ std::string edit(net::NetSpec& net, net::PageSpec& p, const NetEdit& e, std::str
       if (auto why = placeProblem(*e.place); !why.empty()) return why;
       return replaceNamed(p, p.places, e.name, *e.place, "place");
     }
-    case NetEditKind::Paste: return e.fragment ? paste(p, *e.fragment, made) : "nothing to paste";
+    case NetEditKind::Paste: return e.fragment ? paste(p, *e.fragment, made, pasted) : "nothing to paste";
+    case NetEditKind::MoveMany:
+      pinAll(p, e.pins);
+      return moveAll(p, e.moves);
+    case NetEditKind::DeleteMany: return deleteAll(p, e);
+    case NetEditKind::AddInstance: {
+      if (auto why = newNameProblem(p, e.name); !why.empty()) return why;
+      bool type = false;
+      const auto* of = findPage(net, e.new_name, &type);
+      if (of == nullptr || !type) return "no page type '" + e.new_name + "'";
+      if (holds(net, *of, p.name)) return "page type '" + e.new_name + "' holds '" + p.name + "': an instance of it there would hold itself";
+      net::InstanceSpec added;
+      added.name = e.name;
+      added.type = e.new_name;
+      added.position = e.at;
+      p.instances.push_back(std::move(added));
+      return {};
+    }
+    case NetEditKind::SetArc: {
+      const auto a = findArc(p, e);
+      if (a == p.arcs.end()) {
+        return std::string("no ") + kindName(e.arc_kind) + " from '" + e.name + "' to '" + e.new_name + "' on page '" +
+               p.name + "'";
+      }
+      if (!e.arc) return "no arc given";
+      net::ArcSpec changed = *e.arc;
+      // checked as a new arc would be, without the arc it replaces
+      net::ArcSpec was = std::move(*a);
+      const auto at = a - p.arcs.begin();
+      p.arcs.erase(a);
+      auto check = makeNetEdit(NetEditKind::AddArc, p.name, changed.from, changed.to);
+      check.arc_kind = changed.kind;
+      std::string unused;
+      net::PageSpec none;
+      if (auto why = edit(net, p, check, unused, none); !why.empty()) return why;
+      for (const auto& w : changed.weights) {
+        if (w.value < 1 || w.value > kMaxWeight) return "an arc's weight is a whole number from 1 to 10^9";
+      }
+      p.arcs.pop_back();  // the check's arc: the changed one takes the old one's place in the list
+      changed.loc = was.loc;
+      changed.from_loc = was.from_loc;
+      changed.to_loc = was.to_loc;
+      p.arcs.insert(p.arcs.begin() + at, std::move(changed));
+      return {};
+    }
     case NetEditKind::SetTransition: {
       if (!e.transition) return "no transition given";
       const auto& t = *e.transition;
@@ -477,7 +602,8 @@ std::string NetEditCommand::apply(Document& doc) {
   if (page == nullptr) return "no page or page type '" + edit_.page + "'";
   net::PageSpec changed = *page;
   made_.clear();
-  if (auto why = edit(net, changed, edit_, made_); !why.empty()) return why;
+  pasted_ = {};
+  if (auto why = edit(net, changed, edit_, made_, pasted_); !why.empty()) return why;
   before_ = std::move(*page);
   *page = std::move(changed);
   doc.touched(false);
@@ -505,19 +631,28 @@ std::string NetEditCommand::label() const {
     case NetEditKind::SetPlace: return "edit place " + edit_.page + "/" + edit_.name;
     case NetEditKind::SetTransition: return "edit transition " + edit_.page + "/" + edit_.name;
     case NetEditKind::Paste: return "paste into " + edit_.page;
+    case NetEditKind::MoveMany:
+      return edit_.moves.size() == 1 ? "move " + edit_.page + "/" + edit_.moves.front().first
+                                     : "move " + std::to_string(edit_.moves.size()) + " items of " + edit_.page;
+    case NetEditKind::DeleteMany:
+      return "delete " + std::to_string(edit_.names.size() + edit_.arcs.size()) + " items of " + edit_.page;
+    case NetEditKind::SetArc: return std::string("edit ") + kindName(edit_.arc_kind) + " " + edit_.name + " -> " + edit_.new_name;
+    case NetEditKind::AddInstance: return "add instance " + edit_.page + "/" + edit_.name + " of " + edit_.new_name;
   }
   return "edit the net";
 }
 
 std::uint64_t NetEditCommand::mergeKey() const {
-  if (edit_.kind != NetEditKind::Move || edit_.drag == 0) return 0;
-  const auto h = std::hash<std::string>{}(edit_.page + '\n' + edit_.name);
+  if ((edit_.kind != NetEditKind::Move && edit_.kind != NetEditKind::MoveMany) || edit_.drag == 0) return 0;
+  const auto h = std::hash<std::string>{}(edit_.page + '\n' + (edit_.kind == NetEditKind::Move ? edit_.name : "\x01group"));
   return (h ^ (edit_.drag * 0x9E3779B97F4A7C15ULL)) | 1U;
 }
 
 void NetEditCommand::absorb(const Command& next) {
-  // the step keeps the page as it was before the drag and takes the last position
-  edit_.at = static_cast<const NetEditCommand&>(next).edit_.at;
+  // the step keeps the page as it was before the drag and takes the last positions
+  const auto& later = static_cast<const NetEditCommand&>(next).edit_;
+  edit_.at = later.at;
+  edit_.moves = later.moves;
 }
 
 }  // namespace gdpn::ide

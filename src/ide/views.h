@@ -5,6 +5,8 @@
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include "gdpn/ide/actions.h"
+
 #include <memory>
 #include <optional>
 #include <string>
@@ -56,6 +58,9 @@ bool drawManipulators(App& app, scene::Scene& scene, const OrbitCamera& view, Im
 void drawMiniView(App& app, const Rect& world, nlohmann::json& report);
 /// The selected node's fields, edited through commands; a place's or transition's state.
 void drawInspector(App& app, const Rect& at, nlohmann::json& report);
+/// The inspector's part for a selected arc: kind, weights by slot, predicates and conditions,
+/// reverse and delete.
+void arcInspector(App& app, const Selection& sel, nlohmann::json& report);
 /// The tabs over the inspector's panel, Inspector and I/O (App::io_list.shown), where its
 /// heading would be; returns the rectangle below them, for the chosen view.
 Rect drawInspectorTabs(App& app, const Rect& at, nlohmann::json& report);
@@ -151,5 +156,9 @@ bool beginMenu(const char* label, nlohmann::json& positions);
 /// A menu item `label`; its centre, in window pixels, goes into `positions` under its label (so
 /// that replay files and tests can click it). True when chosen.
 bool menuItem(const char* label, nlohmann::json& positions);
+
+/// Menu items for the actions `ids` that can be done now, from the table of actions (label,
+/// key, help), each noted in `positions`; a chosen one is performed.
+void actionItems(App& app, std::initializer_list<ActionId> ids, nlohmann::json& positions);
 
 }  // namespace gdpn::ide

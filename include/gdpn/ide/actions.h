@@ -19,11 +19,14 @@ enum class ActionId : std::uint8_t {
   // File
   New, Open, Save, SaveAs, Close, Quit, Restore, Discard, SaveAsPart,
   // Edit
-  Undo, Redo, Cut, Copy, Paste, Delete, TurnQuarter, UpdateParts,
+  Undo, Redo, Cut, Copy, Paste, Delete, SelectAll, TurnQuarter, UpdateParts,
   // View
   SwapViews, WorldFull, NetFull, MiniView, Palette, Sensors, Joints, Contacts, Shadows, Grid,
   SelectTool, MoveTool, TurnTool, ScaleTool, AimTool, Snap, LocalAxes, FrameSelection, Screenshot, Movie,
   IoList,
+  // Net
+  NetSelectTool, NetPlaceTool, NetTransitionTool, NetArcTool, ReverseArc, AlignLeft, AlignTop, DistributeAcross,
+  DistributeDown, PageTypeFromSelection, OpenInstance,
   // Run
   Run, Faster, Fastest, Pause, Step, RunN, Fire, PlantOnly, Reset, ClearBreakpoints,
   ReleaseForces,
@@ -32,12 +35,12 @@ enum class ActionId : std::uint8_t {
 };
 
 /// The menu an action is listed in.
-enum class Menu : std::uint8_t { File, Edit, View, Run, Help };
+enum class Menu : std::uint8_t { File, Edit, View, Net, Run, Help };
 
 /// The menus in the menu bar's order.
-inline constexpr Menu kMenus[] = {Menu::File, Menu::Edit, Menu::View, Menu::Run, Menu::Help};
+inline constexpr Menu kMenus[] = {Menu::File, Menu::Edit, Menu::View, Menu::Net, Menu::Run, Menu::Help};
 
-/// "File", "Edit", "View", "Run", "Help".
+/// "File", "Edit", "View", "Net", "Run", "Help".
 [[nodiscard]] const char* menuName(Menu menu);
 
 /// A key with modifiers, as a shortcut ("Ctrl+Shift+S").

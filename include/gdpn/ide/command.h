@@ -33,8 +33,8 @@ class Command {
 };
 
 /// Done and undone commands, each with the selection before it: undo selects again what was
-/// selected before the step, redo what was selected when it was undone, each only while it
-/// still names something (else nothing), so that no view shows a thing the step took away.
+/// selected before the step, redo what was selected when it was undone, each only what still
+/// names something, so that no view shows a thing the step took away.
 class UndoStack {
  public:
   /// Applies `command` to `doc`; on success it goes on the stack (merged into the top when
@@ -62,8 +62,8 @@ class UndoStack {
   /// A command and the selections around it.
   struct Step {
     std::unique_ptr<Command> command;
-    Selection before;  ///< selected when it was first applied
-    Selection after;   ///< selected when it was last undone
+    std::vector<Selection> before;  ///< selected when it was first applied
+    std::vector<Selection> after;   ///< selected when it was last undone
   };
   std::vector<Step> done_;
   std::vector<Step> undone_;

@@ -81,10 +81,25 @@ class Document {
   /// Removes the autosave (saving does this too).
   void discardAutosave() const;
 
-  /// The selection.
+  /// The current selection: the one thing the inspector shows (of several, the last one added).
   [[nodiscard]] const Selection& selection() const { return selection_; }
-  /// Selects `selection` (every view follows).
-  void select(Selection selection) { selection_ = std::move(selection); }
+  /// Selects `selection` alone (every view follows).
+  void select(Selection selection) {
+    selection_ = std::move(selection);
+    also_.clear();
+  }
+  /// Everything selected, the current selection last; empty when nothing is.
+  [[nodiscard]] std::vector<Selection> selections() const;
+  /// How many things are selected.
+  [[nodiscard]] std::size_t selectedCount() const { return selection_.any() ? also_.size() + 1 : 0; }
+  /// Selects every one of `all` (the last becomes the current one; None entries and repeats
+  /// are left out).
+  void selectAll(const std::vector<Selection>& all);
+  /// Adds `one` to the selection, as the current one, or takes it out when it is selected
+  /// (Shift- or Ctrl-click).
+  void toggleSelected(const Selection& one);
+  /// True when `one` is selected (the current selection or beside it).
+  [[nodiscard]] bool isSelected(const Selection& one) const;
 
   /// Applies `command` and keeps it for undo; "" or why it was refused.
   std::string execute(std::unique_ptr<Command> command);
@@ -133,6 +148,7 @@ class Document {
   std::string source_;  // the file's text as last read or saved: saving keeps its layout
   std::shared_ptr<scene::Scene> scene_;  // the same object as model_.scene, editable
   Selection selection_;
+  std::vector<Selection> also_;  // selected beside selection_ (only while it is something)
   UndoStack undo_;
   std::uint64_t revision_ = 0;
   std::uint64_t saved_revision_ = 0;  // the revision last read or saved

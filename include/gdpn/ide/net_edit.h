@@ -31,6 +31,12 @@ enum class NetEditKind {
   SetTransition,  ///< transition `name` becomes `transition` (duration, priority, probability, scripts)
   Paste,          ///< the places, transitions and arcs of `fragment` added (a name taken gets a number;
                   ///< arcs kept where both ends come along; positions half a unit down and right)
+  MoveMany,       ///< each of `moves` to its point (a group's drag, align, distribute: one step)
+  DeleteMany,     ///< the places, transitions and instances `names` with every arc touching them,
+                  ///< and the arcs `arcs` (by source, target and kind)
+  SetArc,         ///< the arc from `name` to `new_name` of kind `arc_kind` becomes `arc` (its kind,
+                  ///< weights, predicates, conditions; its ends swapped: reversed)
+  AddInstance,    ///< an instance `name` of page type `new_name` at `at`
 };
 
 /// One edit of one page's net (a top-level page or a page type, by name).
@@ -52,6 +58,14 @@ struct NetEdit {
   std::optional<net::TransitionSpec> transition;
   /// Paste: what to paste (a page of a model file, read).
   std::optional<net::PageSpec> fragment;
+  /// MoveMany: each construct's name and where it goes, editor units.
+  std::vector<std::pair<std::string, net::EditorPos>> moves;
+  /// DeleteMany: the places, transitions and instances to delete.
+  std::vector<std::string> names;
+  /// DeleteMany: the arcs to delete (their source, target and kind say which).
+  std::vector<net::ArcSpec> arcs;
+  /// SetArc: the arc as it is to be.
+  std::optional<net::ArcSpec> arc;
 };
 
 /// A NetEdit of `kind` on `page`: construct `name` (and `second`: a new name, or an arc's
@@ -71,10 +85,13 @@ class NetEditCommand final : public Command {
   [[nodiscard]] bool changesScene() const override { return false; }
   /// After apply(): the name of the first construct a Paste added ("" otherwise).
   [[nodiscard]] const std::string& made() const { return made_; }
+  /// After apply(): what a Paste added, under the names it got (empty otherwise).
+  [[nodiscard]] const net::PageSpec& pasted() const { return pasted_; }
 
  private:
   NetEdit edit_;
   std::string made_;
+  net::PageSpec pasted_;
   std::optional<net::PageSpec> before_;  // the page as it was, for revert
   bool type_ = false;                    // the page is a page type
 };

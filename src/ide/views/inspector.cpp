@@ -450,7 +450,7 @@ void drawInspector(App& app, const Rect& at, nlohmann::json& report) {
   report = {{"kind", selectionKindName(sel.kind)}, {"error", app.inspector.error}};
   switch (sel.kind) {
     case SelectionKind::None:
-      ImGui::TextDisabled("Select a node in the tree or the world view, or a place or transition in the net view.");
+      ImGui::TextDisabled("Select a node in the tree or the world view, or a place, transition or arc in the net view.");
       drawModelContents(app, report["contents"]);
       break;
     case SelectionKind::Node: nodeInspector(app, sel.name, report); break;
@@ -463,6 +463,7 @@ void drawInspector(App& app, const Rect& at, nlohmann::json& report) {
       }
       netInspector(app, sel, report);
       break;
+    case SelectionKind::Arc: arcInspector(app, sel, report); break;
   }
   endPanel();
 }

@@ -46,6 +46,17 @@ void menuItems(App& app, Menu menu, nlohmann::json& items, nlohmann::json& recen
 
 }  // namespace
 
+void actionItems(App& app, std::initializer_list<ActionId> ids, nlohmann::json& positions) {
+  for (const ActionId id : ids) {
+    if (!actionEnabled(app, id)) continue;
+    const auto& a = info(id);
+    const std::string label(a.label), keys(a.keys);
+    if (ImGui::MenuItem(label.c_str(), keys.empty() ? nullptr : keys.c_str())) (void)performAction(app, id);
+    noteItem(label, positions);
+    if (ImGui::IsItemHovered() && !a.help.empty()) ImGui::SetTooltip("%s", std::string(a.help).c_str());
+  }
+}
+
 void drawMenus(App& app, nlohmann::json& report) {
   nlohmann::json items = nlohmann::json::object(), recent = nlohmann::json::object();
   std::string open;

@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
+#include "../action_run.h"
 #include "../views.h"
 #include "gdpn/diagram/net_state.h"
 #include "gdpn/ide/net_edit.h"
@@ -19,9 +21,6 @@ namespace gdpn::ide {
 
 /// The least height of the net view's names, pixels (docs/ide.md: 10 px at least on a 1600 x 900 window).
 constexpr double kNetViewLabelPx = 10.0;
-namespace {
-
-/// Lays out the page the view shows again when the page or the document changed.
 void ensureLayout(App& app, NetViewState& s) {
   const auto revision = app.document().revision();
   if (s.laid_out_path == s.path && s.laid_out_revision == revision) return;
@@ -30,51 +29,109 @@ void ensureLayout(App& app, NetViewState& s) {
   s.layout = s.view.page ? diagram::layoutPage(*s.view.page, diags) : diagram::NetLayout{};
   s.index = std::make_unique<diagram::SpatialIndex>(s.layout);
   s.error = diags.hasErrors() ? diags.str() : "";
+  // the overview's density: constructs per cell of a grid over the page
+  s.density.assign(static_cast<std::size_t>(kOverviewCols * kOverviewRows), 0);
+  const diagram::Box& all = s.layout.bounds;
+  const auto count = [&](const auto& items) {
+    for (const auto& n : items) {
+      const double fx = all.width() > 0 ? (n.centre.x - all.min.x) / all.width() : 0.5;
+      const double fy = all.height() > 0 ? (n.centre.y - all.min.y) / all.height() : 0.5;
+      const int cx = std::clamp(static_cast<int>(fx * kOverviewCols), 0, kOverviewCols - 1);
+      const int cy = std::clamp(static_cast<int>(fy * kOverviewRows), 0, kOverviewRows - 1);
+      ++s.density[static_cast<std::size_t>(cy * kOverviewCols + cx)];
+    }
+  };
+  count(s.layout.places);
+  count(s.layout.transitions);
+  count(s.layout.instances);
+  // every item by the name a selection gives it
+  s.by_name.clear();
+  const std::string& prefix = s.view.prefix.empty() ? s.layout.page : s.view.prefix;
+  const auto put = [&](const auto& items, diagram::ItemKind kind) {
+    for (std::uint32_t i = 0; i < items.size(); ++i) s.by_name.emplace(prefix + "/" + items[i].name, diagram::ItemRef{kind, i});
+  };
+  put(s.layout.places, diagram::ItemKind::Place);
+  put(s.layout.transitions, diagram::ItemKind::Transition);
+  put(s.layout.instances, diagram::ItemKind::Instance);
+  if (s.view.page != nullptr) {
+    for (std::uint32_t i = 0; i < s.layout.arcs.size(); ++i) {
+      const auto& a = s.view.page->arcs[s.layout.arcs[i].spec_index];
+      s.by_name.emplace(arcName(prefix, a.from, a.to, a.kind), diagram::ItemRef{diagram::ItemKind::Arc, i});
+    }
+  }
   if (s.laid_out_path != s.path) s.fit = true;
   s.laid_out_path = s.path;
   s.laid_out_revision = revision;
 }
 
-/// The qualified name of a laid-out construct in the frozen net ("" for arcs).
+net::EditorPos editorAt(diagram::Point p) {
+  const auto snap = [](double v) { return std::round(v / diagram::kEditorUnit * 4.0) / 4.0 + 0.0; };
+  return {snap(p.x), snap(p.y)};
+}
+
+std::vector<std::pair<std::string, net::EditorPos>> pinsOf(const NetViewState& s) {
+  std::vector<std::pair<std::string, net::EditorPos>> pins;
+  if (!s.layout.from_graphviz) return pins;
+  for (const auto& p : s.layout.places) pins.emplace_back(p.name, editorAt(p.centre));
+  for (const auto& t : s.layout.transitions) pins.emplace_back(t.name, editorAt(t.centre));
+  for (const auto& i : s.layout.instances) pins.emplace_back(i.name, editorAt(i.centre));
+  return pins;
+}
+
+const char* netToolName(NetTool tool) {
+  switch (tool) {
+    case NetTool::Select: return "select";
+    case NetTool::Place: return "place";
+    case NetTool::Transition: return "transition";
+    case NetTool::Arc: return "arc";
+  }
+  return "select";
+}
+
+namespace {
+
+/// The qualified name of a laid-out construct in the frozen net (an arc's: arcName()).
 std::string qualified(const NetViewState& s, diagram::ItemRef item) {
   const std::string& prefix = s.view.prefix.empty() ? s.layout.page : s.view.prefix;
   switch (item.kind) {
     case diagram::ItemKind::Place: return prefix + "/" + s.layout.places[item.index].name;
     case diagram::ItemKind::Transition: return prefix + "/" + s.layout.transitions[item.index].name;
     case diagram::ItemKind::Instance: return prefix + "/" + s.layout.instances[item.index].name;
-    case diagram::ItemKind::Arc: return {};
+    case diagram::ItemKind::Arc: {
+      if (s.view.page == nullptr) return {};
+      const auto& a = s.view.page->arcs[s.layout.arcs[item.index].spec_index];
+      return arcName(prefix, a.from, a.to, a.kind);
+    }
   }
   return {};
+}
+
+/// The kind of selection an item of `kind` makes.
+SelectionKind selectionKindOf(diagram::ItemKind kind) {
+  switch (kind) {
+    case diagram::ItemKind::Place: return SelectionKind::Place;
+    case diagram::ItemKind::Transition: return SelectionKind::Transition;
+    case diagram::ItemKind::Instance: return SelectionKind::Instance;
+    case diagram::ItemKind::Arc: return SelectionKind::Arc;
+  }
+  return SelectionKind::None;
 }
 
 /// The selection a click on `item` makes.
-Selection selectionOf(const NetViewState& s, diagram::ItemRef item) {
-  switch (item.kind) {
-    case diagram::ItemKind::Place: return {SelectionKind::Place, qualified(s, item)};
-    case diagram::ItemKind::Transition: return {SelectionKind::Transition, qualified(s, item)};
-    case diagram::ItemKind::Instance: return {SelectionKind::Instance, qualified(s, item)};
-    case diagram::ItemKind::Arc: return {};
-  }
-  return {};
-}
+Selection selectionOf(const NetViewState& s, diagram::ItemRef item) { return {selectionKindOf(item.kind), qualified(s, item)}; }
 
 /// The laid-out item the selection names on this page, if it is here.
 std::optional<diagram::ItemRef> selectedItem(const NetViewState& s, const Selection& sel) {
-  // the selection's page-local name, when it lies on this page: no string is built per item
-  const std::string& prefix = s.view.prefix.empty() ? s.layout.page : s.view.prefix;
-  const std::string_view name(sel.name);
-  if (!name.starts_with(prefix) || name.size() <= prefix.size() || name[prefix.size()] != '/') return std::nullopt;
-  const std::string_view local = name.substr(prefix.size() + 1);
-  auto find = [&](const auto& items, diagram::ItemKind kind) -> std::optional<diagram::ItemRef> {
-    for (std::uint32_t i = 0; i < items.size(); ++i) {
-      if (items[i].name == local) return diagram::ItemRef{kind, i};
-    }
-    return std::nullopt;
-  };
   switch (sel.kind) {
-    case SelectionKind::Place: return find(s.layout.places, diagram::ItemKind::Place);
-    case SelectionKind::Transition: return find(s.layout.transitions, diagram::ItemKind::Transition);
-    case SelectionKind::Instance: return find(s.layout.instances, diagram::ItemKind::Instance);
+    case SelectionKind::Place:
+    case SelectionKind::Transition:
+    case SelectionKind::Instance:
+    case SelectionKind::Arc: {
+      const auto it = s.by_name.find(sel.name);
+      if (it == s.by_name.end()) return std::nullopt;
+      // a name the page gives a construct of another kind is not this selection
+      return selectionKindOf(it->second.kind) == sel.kind ? std::optional(it->second) : std::nullopt;
+    }
     case SelectionKind::None:
     case SelectionKind::Node: return std::nullopt;  // nothing of the net
   }
@@ -97,7 +154,7 @@ const char* activityName(diagram::Activity a) {
 }
 
 /// The page choice: the model's pages, then its page types; "Up" leaves an instance.
-void drawPageBar(App& app, NetViewState& s) {
+void drawPageBar(App& app, NetViewState& s, nlohmann::json& tools) {
   const auto& net = app.document().model().net;
   const std::string shown = s.path.empty() ? (net.pages.empty() ? std::string() : net.pages.front().name) : s.path;
   ImGui::SetNextItemWidth(std::min(260.0f, ImGui::GetContentRegionAvail().x * 0.5f));
@@ -119,6 +176,29 @@ void drawPageBar(App& app, NetViewState& s) {
   ImGui::EndDisabled();
   ImGui::SameLine();
   if (ImGui::Button("Fit")) s.fit = true;
+  // the tools: what a left click or drag on the paper does (keys S, P, T, A); on a row of
+  // their own when the bar has no room for them
+  const ImGuiStyle& style = ImGui::GetStyle();
+  float strip = 0;
+  for (const char* word : {"Select", "Place", "Transition", "Arc"}) strip += ImGui::CalcTextSize(word).x + style.FramePadding.x * 2 + 2;
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  if (ImGui::GetItemRectMax().x + 16 + strip <= right) ImGui::SameLine(0, 16);
+  for (const auto& [tool, id, word] : {std::tuple{NetTool::Select, ActionId::NetSelectTool, "Select"},
+                                       std::tuple{NetTool::Place, ActionId::NetPlaceTool, "Place"},
+                                       std::tuple{NetTool::Transition, ActionId::NetTransitionTool, "Transition"},
+                                       std::tuple{NetTool::Arc, ActionId::NetArcTool, "Arc"}}) {
+    const bool on = s.tool == tool;
+    if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+    if (ImGui::Button(word)) (void)performAction(app, id);
+    if (on) ImGui::PopStyleColor();
+    noteItem(word, tools);
+    if (ImGui::IsItemHovered()) {
+      const auto& a = info(id);
+      ImGui::SetTooltip("%s (%s)", std::string(a.help).c_str(), std::string(a.keys).c_str());
+    }
+    ImGui::SameLine(0, 2);
+  }
+  ImGui::NewLine();
 }
 
 /// The free region of the current window as a canvas, taken by an invisible button (so the
@@ -171,13 +251,14 @@ std::vector<diagram::ItemRef> holdersOf(App& app, const NetViewState& s, const s
   return out;
 }
 
-/// Selects what a click (not the end of a drag) on the region's button hits, then paints the
-/// page with the run's marking in `viewport` and frames the selection. Returns the item under
-/// the mouse; writes what it drew into `report`.
+/// Selects what a click (not the end of a drag) on the region's button hits when `clicks`
+/// (the mini view; the net view's own gestures select there), then paints the page with the
+/// run's marking in `viewport` and frames the selection. Returns the item under the mouse;
+/// writes what it drew into `report`.
 std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const Region& r,
-                                              const diagram::Viewport& viewport, nlohmann::json& report) {
+                                              const diagram::Viewport& viewport, nlohmann::json& report, bool clicks) {
   const auto under = s.index->pick(viewport.toLayout(r.mouse), 4.0 / viewport.zoom);
-  if (r.hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+  if (clicks && r.hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
       ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f).x == 0.0f &&
       ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f).y == 0.0f) {
     if (under) app.document().select(selectionOf(s, *under));
@@ -229,7 +310,31 @@ std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const R
                   {r.origin.x + static_cast<float>(hi.x) + 4, r.origin.y + static_cast<float>(hi.y) + 4},
                   IM_COL32(255, 170, 0, 255), 3.0f, 0, thickness);
   };
-  if (const auto sel = selectedItem(s, selection)) frame(*sel, 2.0f);
+  // every selected item of this page: a frame, an arc drawn over in the highlight colour
+  std::size_t framed = 0;
+  const auto mark = [&](const Selection& one) {
+    const auto item = selectedItem(s, one);
+    if (!item) return;
+    ++framed;
+    if (item->kind != diagram::ItemKind::Arc) {
+      frame(*item, one == selection ? 2.5f : 1.5f);
+      return;
+    }
+    const auto& points = s.layout.arcs[item->index].points;
+    for (std::size_t i = 1; i < points.size(); ++i) {
+      const diagram::Point a = viewport.toScreen(points[i - 1]), b = viewport.toScreen(points[i]);
+      list->AddLine({r.origin.x + static_cast<float>(a.x), r.origin.y + static_cast<float>(a.y)},
+                    {r.origin.x + static_cast<float>(b.x), r.origin.y + static_cast<float>(b.y)}, IM_COL32(255, 170, 0, 200),
+                    one == selection ? 4.0f : 3.0f);
+    }
+  };
+  if (selection.any()) {
+    mark(selection);
+    for (const auto& one : app.document().selections()) {
+      if (!(one == selection)) mark(one);
+    }
+  }
+  report["selected"] = framed;
   nlohmann::json holding = nlohmann::json::array();
   for (const auto item : s.holding) {
     frame(item, 2.0f);
@@ -274,6 +379,16 @@ std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const R
     put(diagram::ItemKind::Transition, s.layout.transitions.size());
     put(diagram::ItemKind::Instance, s.layout.instances.size());
     report["at"] = at_px;
+    // each arc's middle: the midpoint of its middle segment, where a click selects it
+    nlohmann::json arc_px = nlohmann::json::object();
+    for (std::uint32_t i = 0; i < s.layout.arcs.size(); ++i) {
+      const auto& points = s.layout.arcs[i].points;
+      const std::size_t k = (points.size() - 1) / 2;
+      const diagram::Point p = viewport.toScreen((points[k] + points[k + 1]) * 0.5);
+      arc_px[qualified(s, {diagram::ItemKind::Arc, i})] = {std::lround(static_cast<double>(r.origin.x) + p.x),
+                                                           std::lround(static_cast<double>(r.origin.y) + p.y)};
+    }
+    report["arc_at"] = arc_px;
   }
   // what each construct shows, on small pages (the report is made every frame)
   if (state && s.layout.places.size() + s.layout.transitions.size() <= kReportedItems) {
@@ -293,12 +408,6 @@ std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const R
   return under;
 }
 
-/// A layout point in editor units (`at:`), on a grid of a quarter unit (never -0: the file
-/// would say `at: [0.75, -0]`).
-net::EditorPos editorAt(diagram::Point p) {
-  const auto snap = [](double v) { return std::round(v / diagram::kEditorUnit * 4.0) / 4.0 + 0.0; };
-  return {snap(p.x), snap(p.y)};
-}
 
 /// The page the view edits: the page shown, or the page type of the instance shown.
 const std::string& editedPage(const NetViewState& s) { return s.layout.page; }
@@ -332,72 +441,278 @@ std::string localName(const NetViewState& s, diagram::ItemRef item) {
   return {};
 }
 
-/// Editing by hand. A left drag on a place, transition or instance moves it, on a grid of a
-/// quarter unit (one undo step). The right button opens a menu: on paper, a new place or
-/// transition there; on a place or transition, rename, delete, or an arc from it (normal, test,
-/// inhibitor) that a click on its other end finishes (Escape or a click on paper drops it).
-/// Returns true while a drag moves a construct (the view does not pan then).
+/// The places, transitions and instances of this page that are selected, with where each is
+/// drawn now (editor units), in the page's order.
+std::vector<std::pair<std::string, net::EditorPos>> selectedConstructs(App& app, const NetViewState& s) {
+  std::vector<std::pair<std::string, net::EditorPos>> out;
+  for (const auto& one : app.document().selections()) {
+    const auto item = selectedItem(s, one);
+    if (!item || item->kind == diagram::ItemKind::Arc) continue;
+    const diagram::Box& box = s.layout.boxOf(*item);
+    out.emplace_back(localName(s, *item), editorAt((box.min + box.max) * 0.5));
+  }
+  return out;
+}
+
+/// The items a rubber band from `a` to `b` (layout units) holds whole: places, transitions,
+/// instances and arcs.
+std::vector<diagram::ItemRef> inBand(const NetViewState& s, diagram::Point a, diagram::Point b) {
+  const diagram::Box band{{std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)}};
+  std::vector<diagram::ItemRef> out;
+  for (const auto item : s.index->query(band)) {
+    const diagram::Box& box = s.layout.boxOf(item);
+    if (box.min.x >= band.min.x && box.min.y >= band.min.y && box.max.x <= band.max.x && box.max.y <= band.max.y) {
+      out.push_back(item);
+    }
+  }
+  return out;
+}
+
+/// A click that was not the end of a drag: the left button let go where it went down.
+bool leftClicked(const Region& r) {
+  return r.hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+         ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f).x == 0.0f &&
+         ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f).y == 0.0f;
+}
+
+/// Ends the arc begun at s.arc_from on `to`: an arc of the page, or, when one end is an
+/// instance, a menu of its ports (the arc goes to or from `instance/place`).
+void finishArc(App& app, NetViewState& s, const std::string& to) {
+  const auto isInstance = [&](const std::string& name) {
+    return std::any_of(s.layout.instances.begin(), s.layout.instances.end(), [&](const auto& i) { return i.name == name; });
+  };
+  if (isInstance(to) || isInstance(s.arc_from)) {
+    s.port_into = isInstance(to);
+    s.port_instance = s.port_into ? to : s.arc_from;
+    s.port_other = s.port_into ? s.arc_from : to;
+    return;
+  }
+  auto e = makeNetEdit(NetEditKind::AddArc, editedPage(s), s.arc_from, to);
+  e.arc_kind = s.arc_kind;
+  (void)perform(app, std::move(e));
+}
+
+/// Adds an instance of page type `type` at `at` (layout units), named for its type (cell1,
+/// cell2, ...), and selects it.
+void addInstanceAt(App& app, NetViewState& s, const std::string& type, diagram::Point at) {
+  std::string name;
+  for (int n = 1; name.empty(); ++n) {
+    const std::string candidate = type + std::to_string(n);
+    const auto used = [&](const auto& list) {
+      return std::any_of(list.begin(), list.end(), [&](const auto& x) { return x.name == candidate; });
+    };
+    if (!used(s.layout.places) && !used(s.layout.transitions) && !used(s.layout.instances)) name = candidate;
+  }
+  if (perform(app, makeNetEdit(NetEditKind::AddInstance, editedPage(s), name, type, editorAt(at))).empty()) {
+    const std::string& prefix = s.view.prefix.empty() ? s.layout.page : s.view.prefix;
+    app.document().select({SelectionKind::Instance, prefix + "/" + name});
+  }
+}
+
+/// The context menu's items for the selection: the Edit and Net menus' actions that apply.
+void netSelectionMenu(App& app, nlohmann::json& items) {
+  actionItems(app,
+              {ActionId::Cut, ActionId::Copy, ActionId::Delete, ActionId::ReverseArc, ActionId::AlignLeft, ActionId::AlignTop,
+               ActionId::DistributeAcross, ActionId::DistributeDown, ActionId::PageTypeFromSelection, ActionId::OpenInstance},
+              items);
+}
+
+/// Adds a place (`letter` P) or transition (T) at `at` (layout units) and selects it alone.
+void addConstructAt(App& app, NetViewState& s, char letter, diagram::Point at) {
+  const std::string& prefix = s.view.prefix.empty() ? s.layout.page : s.view.prefix;
+  const bool place = letter == 'P';
+  const auto name = freshName(s, letter);
+  const auto kind = place ? NetEditKind::AddPlace : NetEditKind::AddTransition;
+  if (perform(app, makeNetEdit(kind, editedPage(s), name, {}, editorAt(at))).empty()) {
+    app.document().select({place ? SelectionKind::Place : SelectionKind::Transition, prefix + "/" + name});
+  }
+}
+
+/// The left button with the Select tool: a click selects (Shift or Ctrl: adds or takes away), a
+/// drag on a selected construct moves the selection (one undo step), a drag on paper draws a
+/// rubber band that selects what it holds whole, Alt+drag pans. Returns true while the
+/// selection moves.
+bool selectGestures(App& app, NetViewState& s, const Region& r, diagram::Point mouse, std::optional<diagram::ItemRef> under) {
+  const ImGuiIO& io = ImGui::GetIO();
+  const bool adds = io.KeyShift || io.KeyCtrl;
+  auto& doc = app.document();
+  if (r.activated && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    s.panning = io.KeyAlt;
+    s.toggling.reset();
+    if (s.panning) {
+      // the view pans; nothing is selected
+    } else if (!under) {
+      s.band_from = mouse;
+      s.band_adds = adds;
+    } else {
+      const Selection one = selectionOf(s, *under);
+      if (adds) s.toggling = under;
+      else if (!doc.isSelected(one)) doc.select(one);
+      if (under->kind == diagram::ItemKind::Transition && !adds) app.toolbar.fire_target = one.name;
+      if (under->kind != diagram::ItemKind::Arc && !adds) {
+        s.moving = localName(s, *under);
+        s.moving_from = selectedConstructs(app, s);
+        s.moving_origin = mouse;
+        s.moved_by = {0, 0};
+        ++app.inspector.drag_id;
+      }
+    }
+  }
+  const bool dragging = r.active && ImGui::IsMouseDragging(ImGuiMouseButton_Left);
+  if (dragging) s.toggling.reset();
+  // the selection follows the mouse, on a grid of a quarter unit, as one step
+  bool moving = false;
+  if (!s.moving.empty() && dragging && !s.moving_from.empty()) {
+    moving = true;
+    const auto by = editorAt(mouse - s.moving_origin);
+    if (by != s.moved_by) {
+      s.moved_by = by;
+      auto e = makeNetEdit(NetEditKind::MoveMany, editedPage(s), {});
+      e.moves.reserve(s.moving_from.size());
+      for (const auto& [name, at] : s.moving_from) e.moves.emplace_back(name, net::EditorPos{at[0] + by[0], at[1] + by[1]});
+      e.drag = app.inspector.drag_id;
+      e.pins = pinsOf(s);
+      (void)perform(app, std::move(e));
+    }
+  }
+  if (ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
+    if (s.band_from) {
+      const bool dragged = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f).x != 0.0f ||
+                           ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f).y != 0.0f;
+      if (dragged) {
+        std::vector<Selection> chosen = s.band_adds ? doc.selections() : std::vector<Selection>{};
+        for (const auto item : inBand(s, *s.band_from, mouse)) chosen.push_back(selectionOf(s, item));
+        doc.selectAll(chosen);
+        app.message = std::to_string(doc.selectedCount()) + " selected";
+      } else if (!s.band_adds) {
+        doc.select({});
+      }
+    }
+    if (s.toggling && leftClicked(r)) doc.toggleSelected(selectionOf(s, *s.toggling));
+    s.band_from.reset();
+    s.toggling.reset();
+    s.moving.clear();
+    s.moving_from.clear();
+    s.panning = false;
+  }
+  return moving;
+}
+
+/// Editing by hand. With the Select tool, selectGestures(); with the Place or Transition tool a
+/// click on paper adds one there; with the Arc tool a drag (or a click, then a click) from a
+/// place to a transition or back adds an arc. The right button opens a menu: on paper, a new
+/// place or transition there; on a place or transition, rename, delete, or an arc from it
+/// (normal, test, inhibitor) that a click on its other end finishes (Escape or a click on
+/// paper drops it); on an arc, reverse or delete it. Returns true while a drag moves constructs
+/// (the view does not pan then).
 bool editGestures(App& app, NetViewState& s, const Region& r, const diagram::Viewport& viewport,
                   std::optional<diagram::ItemRef> under, nlohmann::json& report) {
   const diagram::Point mouse = viewport.toLayout(r.mouse);
   const bool node = under && under->kind != diagram::ItemKind::Arc;
-  // a drag on a construct moves it
-  if (r.activated && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && node && s.arc_from.empty()) {
-    s.moving = localName(s, *under);
-    ++app.inspector.drag_id;
+  bool moving = false;
+  nlohmann::json items = nlohmann::json::object();  // the menus' items, for replays
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape)) && !ImGui::GetIO().WantTextInput) {
+    // Escape drops what is under way and goes back to selecting
+    s.arc_from.clear();
+    s.band_from.reset();
+    s.tool = NetTool::Select;
+    app.message.clear();
   }
-  if (!r.active) s.moving.clear();
-  const bool moving = !s.moving.empty() && ImGui::IsMouseDragging(ImGuiMouseButton_Left);
-  if (moving) {
-    auto e = makeNetEdit(NetEditKind::Move, editedPage(s), s.moving);
-    e.at = editorAt(mouse);
-    e.drag = app.inspector.drag_id;
-    if (s.layout.from_graphviz) {
-      for (const auto& p : s.layout.places) e.pins.emplace_back(p.name, editorAt(p.centre));
-      for (const auto& t : s.layout.transitions) e.pins.emplace_back(t.name, editorAt(t.centre));
-      for (const auto& i : s.layout.instances) e.pins.emplace_back(i.name, editorAt(i.centre));
-    }
-    (void)perform(app, std::move(e));
+  switch (s.overview_hot ? NetTool::Select : s.tool) {
+    case NetTool::Select:
+      if (s.overview_hot) break;  // the overview takes the left button
+      if (s.arc_from.empty()) moving = selectGestures(app, s, r, mouse, under);
+      break;
+    case NetTool::Place:
+    case NetTool::Transition:
+      if (leftClicked(r) && !under) addConstructAt(app, s, s.tool == NetTool::Place ? 'P' : 'T', mouse);
+      else if (leftClicked(r) && under) app.document().select(selectionOf(s, *under));
+      break;
+    case NetTool::Arc:
+      // a drag from one end: the arc starts where the button went down
+      if (r.activated && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && node && s.arc_from.empty()) {
+        s.arc_from = localName(s, *under);
+        s.arc_kind = net::ArcKind::Normal;
+        s.moving = "\x01arc";  // the drag draws the arc, it pans nothing
+      }
+      if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && !s.arc_from.empty() && !leftClicked(r)) {
+        // let go after a drag: on a construct the arc is made, elsewhere dropped
+        if (node && localName(s, *under) != s.arc_from) finishArc(app, s, localName(s, *under));
+        s.arc_from.clear();
+        app.message.clear();
+      }
+      if (!r.active) s.moving.clear();
+      moving = !s.arc_from.empty();
+      break;
   }
   // an arc begun: a click on its other end makes it
   if (!s.arc_from.empty()) {
     app.message = "click where the arc from " + s.arc_from + " ends (Escape: no arc)";
-    const bool clicked = r.hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
-                         ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f).x == 0.0f &&
-                         ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f).y == 0.0f;
-    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
-      s.arc_from.clear();
+    if (leftClicked(r) && !(node && localName(s, *under) == s.arc_from)) {
       app.message.clear();
-    } else if (clicked) {
-      auto e = makeNetEdit(NetEditKind::AddArc, editedPage(s), s.arc_from);
-      e.new_name = node ? localName(s, *under) : std::string();
-      e.arc_kind = s.arc_kind;
+      if (node) finishArc(app, s, localName(s, *under));
       s.arc_from.clear();
-      app.message.clear();
-      if (node) (void)perform(app, std::move(e));
     }
+  }
+  // an arc to or from an instance: which of its ports
+  if (!s.port_instance.empty() && !s.port_open) {
+    ImGui::OpenPopup("##ports");
+    s.port_open = true;
+  }
+  if (ImGui::BeginPopup("##ports")) {
+    const auto& net = app.document().model().net;
+    const net::PageSpec* type = nullptr;
+    if (const auto* page = findPage(net, editedPage(s))) {
+      for (const auto& i : page->instances) {
+        if (i.name == s.port_instance) type = findPage(net, i.type);
+      }
+    }
+    ImGui::TextDisabled("%s which port of %s?", s.port_into ? "into" : "out of", s.port_instance.c_str());
+    if (type != nullptr) {
+      for (const auto& ref : type->references) {
+        if (!menuItem(ref.place.c_str(), items)) continue;
+        const std::string link = s.port_instance + "/" + ref.place;
+        auto e = makeNetEdit(NetEditKind::AddArc, editedPage(s), s.port_into ? s.port_other : link,
+                             s.port_into ? link : s.port_other);
+        e.arc_kind = s.arc_kind;
+        (void)perform(app, std::move(e));
+      }
+    }
+    if (type == nullptr || type->references.empty()) ImGui::TextDisabled("(it publishes no places)");
+    ImGui::EndPopup();
+  } else if (s.port_open) {
+    s.port_instance.clear();  // the menu closed
+    s.port_open = false;
   }
   // the menu
   if (r.hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Right)) {
-    s.menu_item = node ? under : std::nullopt;
+    s.menu_item = under;
     s.menu_at = mouse;
     s.rename = node ? localName(s, *under) : std::string();
+    // a right-click on something not selected selects it alone (the menu is about it)
+    if (under && !app.document().isSelected(selectionOf(s, *under))) app.document().select(selectionOf(s, *under));
     ImGui::OpenPopup("##net_menu");
   }
-  nlohmann::json items = nlohmann::json::object();
   const auto item = [&](const char* label) { return menuItem(label, items); };
   if (ImGui::BeginPopup("##net_menu")) {
     if (!s.menu_item) {
-      // the new place or transition is selected: the contents view shows it
-      const std::string& prefix = s.view.prefix.empty() ? s.layout.page : s.view.prefix;
-      const auto add = [&](NetEditKind kind, char letter, SelectionKind selected) {
-        const auto name = freshName(s, letter);
-        if (perform(app, makeNetEdit(kind, editedPage(s), name, {}, editorAt(s.menu_at))).empty()) {
-          app.document().select({selected, prefix + "/" + name});
+      if (item("Place here")) addConstructAt(app, s, 'P', s.menu_at);
+      if (item("Transition here")) addConstructAt(app, s, 'T', s.menu_at);
+      const auto& types = app.document().model().net.page_types;
+      if (!types.empty() && beginMenu("Instance here", items)) {
+        for (const auto& type : types) {
+          if (type.name == editedPage(s) || !menuItem(type.name.c_str(), items)) continue;
+          addInstanceAt(app, s, type.name, s.menu_at);
         }
-      };
-      if (item("Place here")) add(NetEditKind::AddPlace, 'P', SelectionKind::Place);
-      if (item("Transition here")) add(NetEditKind::AddTransition, 'T', SelectionKind::Transition);
+        ImGui::EndMenu();
+      }
+      if (app.document().selectedCount() > 0) {
+        ImGui::Separator();
+        netSelectionMenu(app, items);
+      }
+    } else if (s.menu_item->kind == diagram::ItemKind::Arc) {
+      ImGui::TextDisabled("%s", qualified(s, *s.menu_item).c_str());
+      netSelectionMenu(app, items);
     } else if (s.menu_item->kind != diagram::ItemKind::Instance) {
       const std::string name = localName(s, *s.menu_item);
       ImGui::TextDisabled("%s %s", s.menu_item->kind == diagram::ItemKind::Place ? "place" : "transition", name.c_str());
@@ -415,7 +730,6 @@ bool editGestures(App& app, NetViewState& s, const Region& r, const diagram::Vie
         }
       }
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("A new name, then Enter");
-      if (item("Delete")) (void)perform(app, makeNetEdit(NetEditKind::Delete, editedPage(s), name));
       for (const auto& [label, kind] : {std::pair{"Arc from here", net::ArcKind::Normal},
                                         std::pair{"Test arc from here", net::ArcKind::Test},
                                         std::pair{"Inhibitor arc from here", net::ArcKind::Inhibitor}}) {
@@ -424,13 +738,97 @@ bool editGestures(App& app, NetViewState& s, const Region& r, const diagram::Vie
           s.arc_kind = kind;
         }
       }
+      ImGui::Separator();
+      netSelectionMenu(app, items);
+    } else {
+      ImGui::TextDisabled("instance %s", localName(s, *s.menu_item).c_str());
+      if (item("Open Its Page")) s.path = (s.path.empty() ? s.layout.page : s.path) + "/" + localName(s, *s.menu_item);
+      netSelectionMenu(app, items);
     }
     ImGui::EndPopup();
   }
   report["menu"] = items;
-  report["moving"] = s.moving;
+  report["moving"] = s.moving == "\x01arc" ? std::string() : s.moving;
   report["arc_from"] = s.arc_from;
+  report["tool"] = netToolName(s.tool);
+  report["band"] = s.band_from.has_value();
   return moving;
+}
+
+/// Where the overview goes: the view's lower right corner, in the page's proportions; none
+/// while the whole page is in view.
+std::optional<diagram::Box> overviewBox(const NetViewState& s, const Region& r, const diagram::Viewport& viewport) {
+  const diagram::Box& all = s.layout.bounds;
+  const diagram::Box seen = viewport.visible(r.width, r.height);
+  const bool whole = seen.min.x <= all.min.x && seen.min.y <= all.min.y && seen.max.x >= all.max.x && seen.max.y >= all.max.y;
+  if (whole || all.width() <= 0 || all.height() <= 0 || r.width < 320 || r.height < 240) return std::nullopt;
+  const double w = std::min(200.0, r.width * 0.3), scale = std::min(w / all.width(), (r.height * 0.3) / all.height());
+  const double bw = all.width() * scale, bh = all.height() * scale;
+  const diagram::Point hi{static_cast<double>(r.width) - 10, static_cast<double>(r.height) - 10};
+  return diagram::Box{{hi.x - bw, hi.y - bh}, hi};
+}
+
+/// The overview of a page larger than the view: where its constructs lie, shaded by how many,
+/// and the part the view shows framed; a click or drag in it brings the view there. True
+/// while it takes the mouse.
+bool drawOverview(NetViewState& s, const Region& r, nlohmann::json& report) {
+  const auto box = overviewBox(s, r, s.viewport);
+  report["overview"] = box.has_value();
+  if (!box) return false;
+  ImDrawList* list = ImGui::GetWindowDrawList();
+  const auto px = [&](diagram::Point p) { return ImVec2{r.origin.x + static_cast<float>(p.x), r.origin.y + static_cast<float>(p.y)}; };
+  list->AddRectFilled(px(box->min - diagram::Point{3, 3}), px(box->max + diagram::Point{3, 3}), IM_COL32(250, 250, 250, 235), 3.0f);
+  list->AddRect(px(box->min - diagram::Point{3, 3}), px(box->max + diagram::Point{3, 3}), IM_COL32(150, 150, 150, 255), 3.0f);
+  const double cw = box->width() / kOverviewCols, ch = box->height() / kOverviewRows;
+  const std::uint32_t most = std::max<std::uint32_t>(1, *std::max_element(s.density.begin(), s.density.end()));
+  for (int y = 0; y < kOverviewRows; ++y) {
+    for (int x = 0; x < kOverviewCols; ++x) {
+      const auto n = s.density[static_cast<std::size_t>(y * kOverviewCols + x)];
+      if (n == 0) continue;
+      const int shade = 200 - static_cast<int>(140.0 * std::sqrt(static_cast<double>(n) / most));
+      const diagram::Point lo{box->min.x + x * cw, box->min.y + y * ch};
+      list->AddRectFilled(px(lo), px(lo + diagram::Point{cw, ch}), IM_COL32(shade, shade, shade + 20, 255));
+    }
+  }
+  // the part in view
+  const diagram::Box& all = s.layout.bounds;
+  const double scale = box->width() / all.width();
+  const diagram::Box seen = s.viewport.visible(r.width, r.height);
+  const auto onBox = [&](diagram::Point p) {
+    return diagram::Point{std::clamp(box->min.x + (p.x - all.min.x) * scale, box->min.x, box->max.x),
+                          std::clamp(box->min.y + (p.y - all.min.y) * scale, box->min.y, box->max.y)};
+  };
+  list->AddRect(px(onBox(seen.min)), px(onBox(seen.max)), IM_COL32(255, 140, 0, 255), 0.0f, 0, 2.0f);
+  // a click or drag there centres the view on that point of the page
+  const bool inside = r.hovered && r.mouse.x >= box->min.x && r.mouse.y >= box->min.y && r.mouse.x <= box->max.x && r.mouse.y <= box->max.y;
+  if (inside && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) s.overview_drag = true;
+  if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) s.overview_drag = false;
+  if (s.overview_drag) {
+    const diagram::Point q{all.min.x + (std::clamp(r.mouse.x, box->min.x, box->max.x) - box->min.x) / scale,
+                           all.min.y + (std::clamp(r.mouse.y, box->min.y, box->max.y) - box->min.y) / scale};
+    const diagram::Point centre{r.width / 2.0, r.height / 2.0};
+    s.viewport = s.viewport.panned(centre - s.viewport.toScreen(q));
+    s.fitted = false;
+  }
+  return inside || s.overview_drag;
+}
+
+/// Draws over the page what a gesture under way shows: a rubber band, an arc being drawn.
+void paintGestures(const NetViewState& s, const Region& r, const diagram::Viewport& viewport) {
+  ImDrawList* list = ImGui::GetWindowDrawList();
+  const auto px = [&](diagram::Point p) { return ImVec2{r.origin.x + static_cast<float>(p.x), r.origin.y + static_cast<float>(p.y)}; };
+  if (s.band_from) {
+    const diagram::Point a = viewport.toScreen(*s.band_from);
+    const diagram::Point lo{std::min(a.x, r.mouse.x), std::min(a.y, r.mouse.y)}, hi{std::max(a.x, r.mouse.x), std::max(a.y, r.mouse.y)};
+    list->AddRectFilled(px(lo), px(hi), IM_COL32(60, 120, 220, 40));
+    list->AddRect(px(lo), px(hi), IM_COL32(60, 120, 220, 220), 0.0f, 0, 1.0f);
+  }
+  if (!s.arc_from.empty()) {
+    const auto it = s.by_name.find((s.view.prefix.empty() ? s.layout.page : s.view.prefix) + "/" + s.arc_from);
+    if (it == s.by_name.end()) return;
+    const diagram::Box& box = s.layout.boxOf(it->second);
+    list->AddLine(px(viewport.toScreen((box.min + box.max) * 0.5)), px(r.mouse), IM_COL32(40, 90, 200, 255), 2.0f);
+  }
 }
 
 }  // namespace
@@ -438,10 +836,11 @@ bool editGestures(App& app, NetViewState& s, const Region& r, const diagram::Vie
 void drawNetView(App& app, const Rect& at, nlohmann::json& report) {
   beginPanel("##net", at, "Net view");
   NetViewState& s = app.netView();
-  drawPageBar(app, s);
+  nlohmann::json tools = nlohmann::json::object();
+  drawPageBar(app, s, tools);
   ensureLayout(app, s);
   report = {{"path", s.path}, {"page", s.layout.page}, {"places", s.layout.places.size()},
-            {"transitions", s.layout.transitions.size()}, {"arcs", s.layout.arcs.size()}};
+            {"transitions", s.layout.transitions.size()}, {"arcs", s.layout.arcs.size()}, {"tools", tools}};
   // a model with no page yet (a new, empty file) has an empty net, which is no error
   if (s.path.empty() && app.document().model().net.pages.empty()) {
     ImGui::PushTextWrapPos(0);
@@ -474,15 +873,24 @@ void drawNetView(App& app, const Rect& at, nlohmann::json& report) {
   }
   // what is under the mouse as the frame begins: a drag that starts on a construct moves it
   const auto pointed = s.index->pick(s.viewport.toLayout(r.mouse), 4.0 / s.viewport.zoom);
-  const bool moving = editGestures(app, s, r, s.viewport, pointed, report);
-  if (r.active && !moving && s.moving.empty() &&
-      (ImGui::IsMouseDragging(ImGuiMouseButton_Left) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle))) {
+  // the overview of a large page takes the mouse over it
+  const auto overview = overviewBox(s, r, s.viewport);
+  const bool over_overview = s.overview_drag || (overview && r.mouse.x >= overview->min.x && r.mouse.y >= overview->min.y &&
+                                                 r.mouse.x <= overview->max.x && r.mouse.y <= overview->max.y);
+  s.overview_hot = over_overview;
+  const bool moving = editGestures(app, s, r, s.viewport, over_overview ? std::nullopt : pointed, report);
+  // the middle button pans, as does a left drag with Alt, or on paper with a tool that adds
+  const bool left_pans = s.panning || (s.tool != NetTool::Select && s.arc_from.empty() && !moving);
+  if (r.active && !moving && s.moving.empty() && !s.band_from && !over_overview &&
+      ((left_pans && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle))) {
     s.viewport = s.viewport.panned({static_cast<double>(io.MouseDelta.x), static_cast<double>(io.MouseDelta.y)});
     s.fitted = false;
   }
   auto shown = s.viewport;
   shown.min_label_px = kNetViewLabelPx;  // names a user can read where there is room for them
-  const auto under = clickAndPaint(app, s, r, shown, report);
+  const auto under = clickAndPaint(app, s, r, shown, report, false);
+  paintGestures(s, r, shown);
+  (void)drawOverview(s, r, report);
   report["label_px"] = diagram::labelPx(shown);
   if (r.hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && under &&
       under->kind == diagram::ItemKind::Instance) {
@@ -505,7 +913,7 @@ void drawMiniView(App& app, const Rect& world, nlohmann::json& report) {
                                      ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoFocusOnAppearing);
   if (open && s.error.empty()) {
     const Region r = regionHere("##minicanvas");
-    clickAndPaint(app, s, r, diagram::fitViewport(s.layout, r.width, r.height, 6.0), report);
+    clickAndPaint(app, s, r, diagram::fitViewport(s.layout, r.width, r.height, 6.0), report, true);
   }
   ImGui::End();
 }

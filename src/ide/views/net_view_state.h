@@ -6,7 +6,11 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_map>
+#include <utility>
 #include <vector>
+
+#include "gdpn/net/spec.h"
 
 #include "gdpn/diagram/layout.h"
 #include "gdpn/diagram/net_state.h"
@@ -14,6 +18,18 @@
 #include "gdpn/diagram/spatial_index.h"
 
 namespace gdpn::ide {
+
+/// The overview's grid: columns and rows over the page's bounds.
+inline constexpr int kOverviewCols = 72;
+inline constexpr int kOverviewRows = 44;
+
+/// What a left click or drag on the net view's paper does.
+enum class NetTool : std::uint8_t {
+  Select,      ///< a click selects, a drag moves the selection or draws a rubber band
+  Place,       ///< a click on paper adds a place there
+  Transition,  ///< a click on paper adds a transition there
+  Arc,         ///< a drag (or two clicks) from one end to the other adds an arc
+};
 
 /// The net view's own state.
 struct NetViewState {
@@ -37,12 +53,45 @@ struct NetViewState {
   std::vector<diagram::ItemRef> holding;  ///< the places and transitions holding the selected node as a token
   std::string holding_node;          ///< that node's path ("" : none)
   std::int64_t holding_steps = -1;   ///< state_steps when `holding` was found
-  std::string moving;                ///< the construct a left drag is moving ("" : none)
+  NetTool tool = NetTool::Select;    ///< what a left click or drag does
+  /// Every place, transition and instance of the layout by name, and every arc by the name
+  /// arcName() gives it after the prefix ("infeed -> load_a"), made with the layout.
+  std::unordered_map<std::string, diagram::ItemRef> by_name;
+  std::string moving;                ///< the construct a left drag began on ("" : none)
+  /// A drag moving the selection: each construct's name and where it stood at the start, editor units.
+  std::vector<std::pair<std::string, net::EditorPos>> moving_from;
+  diagram::Point moving_origin;      ///< where that drag began, layout units
+  net::EditorPos moved_by{0, 0};     ///< how far the last move edit took them, editor units
+  std::optional<diagram::Point> band_from;  ///< a rubber band's first corner, layout units (none: no band)
+  bool band_adds = false;            ///< the band adds to the selection (Shift or Ctrl held)
+  std::optional<diagram::ItemRef> toggling;  ///< a Shift- or Ctrl-click's item, toggled unless it becomes a drag
+  bool panning = false;              ///< an Alt+left drag pans
+  /// The overview of a page larger than the view: how many constructs fall in each cell of a
+  /// kOverviewCols x kOverviewRows grid over the page's bounds (made with the layout).
+  std::vector<std::uint32_t> density;
+  bool overview_drag = false;        ///< a drag in the overview moves the view
+  bool overview_hot = false;         ///< the mouse is over the overview (or drags in it): it takes the left button
+  std::string port_instance;         ///< an arc ended at (or began from) this instance: its ports' menu opens
+  std::string port_other;            ///< that arc's other end
+  bool port_into = true;             ///< the arc runs into the instance (else out of it)
+  bool port_open = false;            ///< the ports' menu was opened
   std::string arc_from;              ///< an arc begun from this construct, waiting for its other end
   net::ArcKind arc_kind = net::ArcKind::Normal;  ///< that arc's kind
   std::optional<diagram::ItemRef> menu_item;     ///< what the open menu is about (none: the paper)
   diagram::Point menu_at;            ///< where it was opened, layout units
   std::string rename;                ///< the menu's rename field
 };
+
+class App;
+
+/// Lays out the page `s` shows again when the page or the document changed.
+void ensureLayout(App& app, NetViewState& s);
+/// A layout point in editor units (`at:`), on a grid of a quarter unit (never -0).
+net::EditorPos editorAt(diagram::Point p);
+/// The Graphviz pins of a page laid out by Graphviz: where each construct is drawn now, so
+/// that a move keeps the page's look (none for a page with positions).
+std::vector<std::pair<std::string, net::EditorPos>> pinsOf(const NetViewState& s);
+/// "select", "place", "transition", "arc".
+const char* netToolName(NetTool tool);
 
 }  // namespace gdpn::ide
