@@ -385,6 +385,21 @@ SegmentHit nearestSegment(const ArcLayout& arc, Point p) {
   return best;
 }
 
+std::optional<std::size_t> bendAt(const ArcLayout& arc, Point p, double tolerance) {
+  if (!arc.follows_via) return std::nullopt;
+  std::optional<std::size_t> best;
+  double nearest = tolerance;
+  // the bends are the points between the two ends
+  for (std::size_t i = 1; i + 1 < arc.points.size(); ++i) {
+    const double d = std::hypot(p.x - arc.points[i].x, p.y - arc.points[i].y);
+    if (d <= nearest) {
+      nearest = d;
+      best = i - 1;
+    }
+  }
+  return best;
+}
+
 PageView findView(const net::NetSpec& spec, const std::string& path, core::Diagnostics& diags,
                   const core::SourceLoc& where) {
   auto named = [](const std::vector<net::PageSpec>& pages, std::string_view name) -> const net::PageSpec* {

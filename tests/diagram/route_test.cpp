@@ -109,6 +109,22 @@ TEST(DiagramRoute, NearestSegmentGivesItsIndexAndTheProjection) {
   expectNear(again.arcs[0].points[2], {36, 2.5 * kEditorUnit});
 }
 
+TEST(DiagramRoute, BendAtFindsTheBendUnderThePointByItsIndexInVia) {
+  core::Diagnostics diags;
+  const auto l = layoutPage(bentNet(true).pages[0], diags);
+  EXPECT_EQ(bendAt(l.arcs[0], {kEditorUnit + 2, 2 * kEditorUnit - 1}, 4), std::optional<std::size_t>(1));
+  EXPECT_EQ(bendAt(l.arcs[0], {1, 2 * kEditorUnit}, 4), std::optional<std::size_t>(0));
+  // on the arc but at no bend, and an end point: none
+  EXPECT_FALSE(bendAt(l.arcs[0], {kEditorUnit / 2, 2 * kEditorUnit}, 4));
+  EXPECT_FALSE(bendAt(l.arcs[0], l.arcs[0].points.front(), 4));
+  // an arc bent apart from its twin has no bends of its own
+  auto spec = smallNet(true);
+  spec.pages[0].arcs.push_back(testing::arc("go", "src"));
+  const auto twins = layoutPage(spec.pages[0], diags);
+  ASSERT_EQ(twins.arcs[0].points.size(), 3u);
+  EXPECT_FALSE(bendAt(twins.arcs[0], twins.arcs[0].points[1], 4));
+}
+
 TEST(DiagramRoute, EditorUnitsAreTheNetViewsQuarterSnappedUnits) {
   expectNear(layoutPoint({1.5, -2}), {1.5 * kEditorUnit, -2 * kEditorUnit});
   const auto at = editorPosition({100, -0.1});

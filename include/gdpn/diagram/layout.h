@@ -128,6 +128,11 @@ struct SegmentHit {
 /// point (or at `p` when it has none).
 [[nodiscard]] SegmentHit nearestSegment(const ArcLayout& arc, Point p);
 
+/// The index in the spec's `via` of the bend of `arc` within `tolerance` of `p` (layout units;
+/// the nearest when several are), for a double-click that removes it; nullopt when none is,
+/// or when the arc does not follow its `via`.
+[[nodiscard]] std::optional<std::size_t> bendAt(const ArcLayout& arc, Point p, double tolerance);
+
 /// A page to draw, and the prefix that qualifies its constructs' names in the frozen net.
 struct PageView {
   const net::PageSpec* page = nullptr;  ///< the page or page type
