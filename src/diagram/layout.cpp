@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <string_view>
 #include <unordered_map>
@@ -95,12 +96,30 @@ bool allPositioned(const net::PageSpec& page) {
          std::all_of(page.instances.begin(), page.instances.end(), [](const auto& i) { return i.position.has_value(); });
 }
 
-// straight arcs between positioned nodes; an arc with a twin between the same two items (the
-// other way, or again) bends off the straight line so that both stay visible
-void routeStraight(NetLayout& l) {
+// an arc through its bend points: from its source's outline (toward the first bend) through
+// each bend to its target's outline (from the last)
+void routeVia(const NetLayout& l, ArcLayout& arc, const std::vector<net::EditorPos>& via) {
+  arc.points.clear();
+  arc.points.push_back(outlinePoint(l, arc.from, layoutPoint(via.front())));
+  for (const auto& v : via) arc.points.push_back(layoutPoint(v));
+  arc.points.push_back(outlinePoint(l, arc.to, layoutPoint(via.back())));
+  arc.follows_via = true;
+}
+
+// straight arcs between positioned nodes, or through their bend points; an arc without bend
+// points with a twin between the same two items (the other way, or again) bends off the
+// straight line so that both stay visible
+void routeStraight(NetLayout& l, const net::PageSpec& page) {
   std::map<std::pair<ItemRef, ItemRef>, int> count, seen;
-  for (const auto& arc : l.arcs) ++count[std::minmax(arc.from, arc.to)];
+  const auto bent = [&](const ArcLayout& arc) { return !page.arcs[arc.spec_index].via.empty(); };
+  for (const auto& arc : l.arcs) {
+    if (!bent(arc)) ++count[std::minmax(arc.from, arc.to)];
+  }
   for (auto& arc : l.arcs) {
+    if (bent(arc)) {
+      routeVia(l, arc, page.arcs[arc.spec_index].via);
+      continue;
+    }
     const auto key = std::minmax(arc.from, arc.to);
     const int twin = seen[key]++;
     const Point a = centreOf(l, arc.from), b = centreOf(l, arc.to);
@@ -266,7 +285,20 @@ NetLayout layoutPage(const net::PageSpec& page, core::Diagnostics& diags) {
   for (auto& t : l.transitions) t.box = boxOfNode(ItemKind::Transition, t.centre, 0);
   for (std::size_t i = 0; i < l.instances.size(); ++i)
     l.instances[i].box = boxOfNode(ItemKind::Instance, l.instances[i].centre, widths[i]);
-  if (!l.from_graphviz) routeStraight(l);
+  // routes: straight or through the bend points; Graphviz's where it placed the nodes, but
+  // through the bend points of an arc that has them
+  if (!l.from_graphviz) {
+    routeStraight(l, page);
+  } else {
+    for (auto& arc : l.arcs) {
+      if (const auto& via = page.arcs[arc.spec_index].via; !via.empty()) routeVia(l, arc, via);
+    }
+  }
+  // inscriptions the spec places: an offset from the middle of the arc
+  for (auto& arc : l.arcs) {
+    const auto& offset = page.arcs[arc.spec_index].label_at;
+    if (offset && !arc.points.empty()) arc.label_at = middleOf(arc.points) + layoutPoint(*offset);
+  }
   // bounding boxes: of each arc, then of everything
   bool first = true;
   auto grow = [&](const Box& b) {
@@ -278,6 +310,7 @@ NetLayout layoutPage(const net::PageSpec& page, core::Diagnostics& diags) {
   for (auto& arc : l.arcs) {
     arc.box = {arc.points.front(), arc.points.front()};
     for (const Point& p : arc.points) arc.box.add(p);
+    if (arc.label_at) arc.box.add(*arc.label_at);
     grow(arc.box);
   }
   for (const auto& p : l.places) grow(p.box);
@@ -307,6 +340,64 @@ std::string inscription(const std::vector<net::SlotCount>& weights) {
     i = j + 1;
   }
   return out;
+}
+
+Point layoutPoint(const net::EditorPos& at) { return {at[0] * kEditorUnit, at[1] * kEditorUnit}; }
+
+net::EditorPos editorPosition(Point p) {
+  // quarters of an editor unit; + 0.0 turns -0 into 0
+  const auto snap = [](double v) { return std::round(v / kEditorUnit * 4.0) / 4.0 + 0.0; };
+  return {snap(p.x), snap(p.y)};
+}
+
+Point middleOf(const std::vector<Point>& points) {
+  double length = 0;
+  for (std::size_t i = 1; i < points.size(); ++i) length += std::hypot(points[i].x - points[i - 1].x, points[i].y - points[i - 1].y);
+  // walk half the length along it
+  double left = length / 2;
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const Point d = points[i] - points[i - 1];
+    const double step = std::hypot(d.x, d.y);
+    if (step > 0 && left <= step) return points[i - 1] + d * (left / step);
+    left -= step;
+  }
+  return points.empty() ? Point{} : points.front();
+}
+
+net::EditorPos labelOffset(const ArcLayout& arc, Point p) {
+  const Point d = arc.points.empty() ? p : p - middleOf(arc.points);
+  return {d.x / kEditorUnit + 0.0, d.y / kEditorUnit + 0.0};
+}
+
+SegmentHit nearestSegment(const ArcLayout& arc, Point p) {
+  const auto& pts = arc.points;
+  if (pts.size() < 2) {
+    const Point at = pts.empty() ? p : pts.front();
+    return {0, at, std::hypot(p.x - at.x, p.y - at.y)};
+  }
+  SegmentHit best;
+  best.distance = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+    const Point at = nearestOnSegment(p, pts[i], pts[i + 1]);
+    const double d = std::hypot(p.x - at.x, p.y - at.y);
+    if (d < best.distance) best = {i, at, d};
+  }
+  return best;
+}
+
+std::optional<std::size_t> bendAt(const ArcLayout& arc, Point p, double tolerance) {
+  if (!arc.follows_via) return std::nullopt;
+  std::optional<std::size_t> best;
+  double nearest = tolerance;
+  // the bends are the points between the two ends
+  for (std::size_t i = 1; i + 1 < arc.points.size(); ++i) {
+    const double d = std::hypot(p.x - arc.points[i].x, p.y - arc.points[i].y);
+    if (d <= nearest) {
+      nearest = d;
+      best = i - 1;
+    }
+  }
+  return best;
 }
 
 PageView findView(const net::NetSpec& spec, const std::string& path, core::Diagnostics& diags,

@@ -156,15 +156,20 @@ class Painter {
     const Point dir = unit(end - pts[pts.size() - 2]);
     c_.polyline(pts, w, colour, a.kind == net::ArcKind::Test);
     if (!labels_) return;
-    // the weight beside the line: at its middle, else a third of the way from either end
+    // the weight where the spec puts it, else beside the line: at its middle, else a third of
+    // the way from either end
     if (!a.inscription.empty()) {
       Label l{a.inscription, std::max(font_ * 0.9, kMinFontPx), HAlign::Centre, VAlign::Middle, colours::kInscription, {}};
       const double gap = l.size * 0.75;
-      for (const double share : {0.5, 0.35, 0.65, 0.2, 0.8}) {
-        const auto [at, d] = pointAlong(pts, share);
-        const Point normal{d.y, -d.x};
-        l.anchors.push_back(at + normal * gap);
-        l.anchors.push_back(at - normal * gap);
+      if (a.label_at) {
+        l.anchors.push_back(v_.toScreen(*a.label_at));
+      } else {
+        for (const double share : {0.5, 0.35, 0.65, 0.2, 0.8}) {
+          const auto [at, d] = pointAlong(pts, share);
+          const Point normal{d.y, -d.x};
+          l.anchors.push_back(at + normal * gap);
+          l.anchors.push_back(at - normal * gap);
+        }
       }
       pending_.push_back(std::move(l));
     }

@@ -676,15 +676,39 @@ class ModelReader {
     forEachSlot(e.value, what, [&](net::SlotId slot, const Entry& s) { f(slot, s.value, s.loc); });
   }
 
-  std::optional<net::EditorPos> readPos(const YAML::Node& node) {
+  /// A position `[x, y]` in editor units, the value of key `key` (finite numbers only).
+  std::optional<net::EditorPos> readPos(const YAML::Node& node, const std::string& key = "at") {
     if (!node.IsSequence() || node.size() != 2) {
-      r_.error(node, "'at' expects a position [x, y], got " + detail::describe(node));
+      r_.error(node, "'" + key + "' expects a position [x, y], got " + detail::describe(node));
       return std::nullopt;
     }
-    auto x = r_.number(node[0], "x");
-    auto y = r_.number(node[1], "y");
-    if (!x || !y) return std::nullopt;
-    return net::EditorPos{*x, *y};
+    net::EditorPos at{};
+    for (std::size_t i = 0; i < 2; ++i) {
+      const char* axis = i == 0 ? "x" : "y";
+      const auto v = r_.number(node[i], axis);
+      if (!v) return std::nullopt;
+      if (!std::isfinite(*v)) {
+        r_.error(node[i], "'" + key + "': " + axis + " must be a finite number, got " + detail::describe(node[i]));
+        return std::nullopt;
+      }
+      at[i] = *v;
+    }
+    return at;
+  }
+
+  /// An arc's bend points: a list of positions `[[x, y], ...]`, editor units.
+  std::vector<net::EditorPos> readRoute(const YAML::Node& node) {
+    std::vector<net::EditorPos> route;
+    if (!node.IsSequence()) {
+      r_.error(node, "'via' expects a list of bend points [[x, y], ...], got " + detail::describe(node));
+      return route;
+    }
+    for (const auto& item : node) {
+      const auto at = readPos(item, "via");
+      if (!at) return {};
+      route.push_back(*at);
+    }
+    return route;
   }
 
   std::vector<std::string> readNodeList(const YAML::Node& list, const SourceLoc& fallback) {
@@ -899,6 +923,10 @@ class ModelReader {
           std::string param;
           if (auto n = r_.integer(v, "weight", &param)) a.weights.push_back({slot, *n, loc, param});
         });
+      } else if (e.key == "via") {
+        a.via = readRoute(e.value);
+      } else if (e.key == "label_at") {
+        a.label_at = readPos(e.value, "label_at");
       }
     }
     if (predicate) {

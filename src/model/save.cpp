@@ -19,10 +19,16 @@ namespace {
 using core::formatDouble;
 using schema::Section;
 
-void pos(YAML::Emitter& out, const std::optional<net::EditorPos>& p) {
+/// A position `[x, y]` (editor units) as a flow list.
+void point(YAML::Emitter& out, const net::EditorPos& p) {
+  out << YAML::Flow << YAML::BeginSeq << formatDouble(p[0]) << formatDouble(p[1]) << YAML::EndSeq;
+}
+
+/// Key `key` (`at`) with the position `p`, when there is one.
+void pos(YAML::Emitter& out, const std::optional<net::EditorPos>& p, const char* key = "at") {
   if (!p) return;
-  out << YAML::Key << "at" << YAML::Value << YAML::Flow << YAML::BeginSeq << formatDouble((*p)[0])
-      << formatDouble((*p)[1]) << YAML::EndSeq;
+  out << YAML::Key << key << YAML::Value;
+  point(out, *p);
 }
 
 void description(YAML::Emitter& out, const std::string& text) {
@@ -219,6 +225,14 @@ void writeArc(YAML::Emitter& out, const net::ArcSpec& a) {
           {"weight", [&] { perSlot(out, "weight", a.weights); }},
           {net::info(net::ScriptKind::Predicate).key, [&] { scripts("predicate", a.predicates); }},
           {net::info(net::ScriptKind::Condition).key, [&] { scripts("condition", a.conditions); }},
+          {"via",
+           [&] {
+             if (a.via.empty()) return;
+             out << YAML::Key << "via" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+             for (const auto& p : a.via) point(out, p);
+             out << YAML::EndSeq;
+           }},
+          {"label_at", [&] { pos(out, a.label_at, "label_at"); }},
       });
   out << YAML::EndMap;
 }

@@ -285,6 +285,15 @@ std::vector<KeyDesc> arcKeys() {
       script(ScriptKind::Condition, "expression, or map slot → expression",
              "on an arc from a place's sensor slot: the transition may start only while it is true; it sees the "
              "sensor under its slot's name and as `value` (an expression alone means slot `c0`)"),
+      form(k("via", ValueType::List, "",
+             "its route in the net editor: bend points from `from` to `to`, editor units as for `at`; the arc is "
+             "drawn from its source's outline through each to its target's outline (none: straight, or as Graphviz "
+             "routes it)"),
+           "list of `[x, y]`"),
+      form(k("label_at", ValueType::Position, "",
+             "where its inscription (the weight) stands: an offset from the middle of the drawn arc (half its length "
+             "along it), editor units, as PNML's annotation offset (none: beside the arc where it fits)"),
+           "`[dx, dy]`"),
   };
 }
 

@@ -406,13 +406,31 @@ class PnmlReader {
     return *id;
   }
 
-  std::optional<EditorPos> position(const XmlElement& el) {
-    const XmlElement* g = el.child("graphics");
-    const XmlElement* p = g ? g->child("position") : nullptr;
+  /// The point `x`, `y` of a graphics element (`<position>`, `<offset>`): finite numbers, else nullopt.
+  static std::optional<EditorPos> point(const XmlElement* p) {
     if (!p || !p->attr("x") || !p->attr("y")) return std::nullopt;
     auto x = core::parseNumber(*p->attr("x")), y = core::parseNumber(*p->attr("y"));
     if (!x || !y || !std::isfinite(*x) || !std::isfinite(*y)) return std::nullopt;
     return EditorPos{*x, *y};
+  }
+
+  std::optional<EditorPos> position(const XmlElement& el) {
+    const XmlElement* g = el.child("graphics");
+    return point(g ? g->child("position") : nullptr);
+  }
+
+  /// An arc's route: each `<position>` of its `<graphics>` is a bend point, in order (PNML's
+  /// standard); one that is no point is left out, with a warning.
+  std::vector<EditorPos> route(const XmlElement& arc) {
+    std::vector<EditorPos> via;
+    const XmlElement* g = arc.child("graphics");
+    if (!g) return via;
+    for (const auto& c : g->children) {
+      if (c->name != "position") continue;
+      if (auto at = point(c.get())) via.push_back(*at);
+      else diags_.warning(c->loc, "a bend point needs finite numbers x and y; this one is left out");
+    }
+    return via;
   }
 
   /// The page nodes written directly in `el` (the net) belong to: one made for them.
@@ -575,7 +593,11 @@ class PnmlReader {
     else if (kind == "test" || kind == "read") a.kind = ArcKind::Test;
     if (const XmlElement* w = el.child("inscription")) {
       if (auto n = integer(*w, textOf(w), "an arc inscription"); n && *n != 1) a.weights.push_back({kDefaultSlot, *n, w->loc, {}});
+      // where the inscription stands: PNML's offset from its arc
+      const XmlElement* g = w->child("graphics");
+      a.label_at = point(g ? g->child("offset") : nullptr);
     }
+    a.via = route(el);
     if (const XmlElement* tool = gdpnPart(el)) arcPart(*tool, a, el);
 
     const std::string* src = el.attr("source");

@@ -68,10 +68,14 @@ bool isXmlId(std::string_view s) {
   return true;
 }
 
+/// `<NAME x="" y=""/>`: a point of PNML graphics (editor units, as the file's `at`).
+std::string pointXml(const char* name, const EditorPos& p) {
+  return std::string("<") + name + " x=\"" + core::formatDouble(p[0]) + "\" y=\"" + core::formatDouble(p[1]) + "\"/>";
+}
+
 std::string positionXml(const std::optional<EditorPos>& p) {
   if (!p) return {};
-  return "<graphics><position x=\"" + core::formatDouble((*p)[0]) + "\" y=\"" + core::formatDouble((*p)[1]) +
-         "\"/></graphics>";
+  return "<graphics>" + pointXml("position", *p) + "</graphics>";
 }
 
 /// Numbers separated by spaces ("1 2.5 0").
@@ -373,7 +377,17 @@ class PnmlWriter {
         if (x.slot == kDefaultSlot) w = x.value;
         if (!x.param.empty()) see(Unseen::Parameter);
       }
-      if (w != 1) body += "<inscription><text>" + std::to_string(w) + "</text></inscription>";
+      // the bend points, then the inscription (a weight of 1 written where it holds the label's offset)
+      if (!a.via.empty()) {
+        body += "<graphics>";
+        for (const auto& p : a.via) body += pointXml("position", p);
+        body += "</graphics>";
+      }
+      if (w != 1 || a.label_at) {
+        body += "<inscription><text>" + std::to_string(w) + "</text>";
+        if (a.label_at) body += "<graphics>" + pointXml("offset", *a.label_at) + "</graphics>";
+        body += "</inscription>";
+      }
       std::string tool_arc;
       // weights the inscription alone does not give back are all listed
       const bool simple = a.weights.empty() || (a.weights.size() == 1 && a.weights[0].slot == kDefaultSlot && w != 1);

@@ -296,7 +296,7 @@ pages:
     instances:
       i: {type: cell, at: [5, 6], translation: [1, 2, 3], rotation: [0, 0, 1, 90], params: {w: 2}, part: j, uses: {eye: k}}
     arcs:
-      - {from: p, to: t, kind: test, weight: {d0: 2}, predicate: {d0: "token is not None"}, condition: {c0: "value > 0"}}
+      - {from: p, to: t, kind: test, weight: {d0: 2}, predicate: {d0: "token is not None"}, condition: {c0: "value > 0"}, via: [[1, 2]], label_at: [0, -0.5]}
 page_types:
   cell:
     description: "a cell"

@@ -42,12 +42,17 @@ struct Box {
   friend bool operator==(const Box&, const Box&) = default;
 };
 
-/// The distance from `p` to the segment from `a` to `b`, in the points' unit.
-inline double distanceToSegment(Point p, Point a, Point b) {
+/// The point of the segment from `a` to `b` nearest `p` (`a` for a segment of no length).
+inline Point nearestOnSegment(Point p, Point a, Point b) {
   const Point ab = b - a, ap = p - a;
   const double len2 = ab.x * ab.x + ab.y * ab.y;
   const double t = len2 > 0 ? std::clamp((ap.x * ab.x + ap.y * ab.y) / len2, 0.0, 1.0) : 0.0;
-  const Point q = a + ab * t;
+  return a + ab * t;
+}
+
+/// The distance from `p` to the segment from `a` to `b`, in the points' unit.
+inline double distanceToSegment(Point p, Point a, Point b) {
+  const Point q = nearestOnSegment(p, a, b);
   return std::hypot(p.x - q.x, p.y - q.y);
 }
 

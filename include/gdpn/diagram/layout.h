@@ -9,6 +9,7 @@
 /// (`at: [1, 0]`) is kEditorUnit layout units. The same spec always gives the same layout.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,7 +70,11 @@ struct ArcLayout {
   std::string inscription;       ///< what the arc's label says: "" for weight 1 on a0, "3" for weight 3 on a0, else its slots ("b0..b4", "2·a1+c0")
   std::uint32_t spec_index = 0;  ///< the arc's index in PageSpec::arcs (NetState::arcs is indexed by it)
   std::vector<Point> points;     ///< at least two points: start, bends, end (the end touches the target)
-  Box box;                       ///< the polyline's bounding box
+  /// True when the bends (points[1 .. size-2]) are the spec's `via`, one for one; false for a
+  /// straight arc, one bent apart from its twin, or Graphviz's route.
+  bool follows_via = false;
+  std::optional<Point> label_at;  ///< where the inscription's centre stands when the spec says (`label_at`), layout units
+  Box box;                       ///< the polyline's bounding box (and the label's point)
 };
 
 /// A page drawn on the plane. Items keep the spec's order: places[i] is the page's i-th place.
@@ -94,6 +99,39 @@ NetLayout layoutPage(const net::PageSpec& page, core::Diagnostics& diags);
 
 /// The label of an arc with these weights (see ArcLayout::inscription).
 [[nodiscard]] std::string inscription(const std::vector<net::SlotCount>& weights);
+
+/// The point of layout units where editor position `at` stands (`at` times kEditorUnit).
+[[nodiscard]] Point layoutPoint(const net::EditorPos& at);
+
+/// The editor position of layout point `p`, as the net editor writes one: editor units rounded
+/// to a quarter (so a drag snaps), never -0. layoutPoint() of it is `p` within an eighth of a unit.
+[[nodiscard]] net::EditorPos editorPosition(Point p);
+
+/// The middle of a polyline: the point half its length along it (layout units); the first
+/// point of one of no length. `points` must not be empty.
+[[nodiscard]] Point middleOf(const std::vector<Point>& points);
+
+/// The `label_at` (editor units, an offset from the arc's middle, not rounded) that puts the
+/// inscription of `arc` at layout point `p`: what an editor writes when a label is dragged.
+[[nodiscard]] net::EditorPos labelOffset(const ArcLayout& arc, Point p);
+
+/// The segment of an arc's polyline nearest a point, and the point of it nearest.
+struct SegmentHit {
+  std::size_t segment = 0;  ///< from points[segment] to points[segment + 1]
+  Point at;                 ///< the nearest point on it, layout units
+  double distance = 0.0;    ///< from the point asked about to `at`, layout units
+};
+
+/// The segment of `arc`'s polyline nearest `p` (layout units; the first of equally near ones).
+/// A bend added at `at` goes into the spec's `via` at index `segment` when the arc follows its
+/// `via` (ArcLayout::follows_via). An arc of fewer than two points gives segment 0 at its one
+/// point (or at `p` when it has none).
+[[nodiscard]] SegmentHit nearestSegment(const ArcLayout& arc, Point p);
+
+/// The index in the spec's `via` of the bend of `arc` within `tolerance` of `p` (layout units;
+/// the nearest when several are), for a double-click that removes it; nullopt when none is,
+/// or when the arc does not follow its `via`.
+[[nodiscard]] std::optional<std::size_t> bendAt(const ArcLayout& arc, Point p, double tolerance);
 
 /// A page to draw, and the prefix that qualifies its constructs' names in the frozen net.
 struct PageView {

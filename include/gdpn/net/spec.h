@@ -247,9 +247,17 @@ struct ArcSpec {
   SourceLoc loc;                   ///< where the arc is declared
   SourceLoc from_loc;              ///< where `from` is written
   SourceLoc to_loc;                ///< where `to` is written
+  /// Its route in the editor: bend points from source to target, editor units (as a place's
+  /// position); empty for a straight arc (or Graphviz's route). Layout, not semantics: the
+  /// compiler ignores it, and it compares as positions do.
+  std::vector<EditorPos> via{};
+  /// Where its inscription stands: an offset from the middle of its drawn path (half its
+  /// length along it), editor units; none: beside the path where it fits.
+  std::optional<EditorPos> label_at{};
   friend bool operator==(const ArcSpec& x, const ArcSpec& y) {
     return x.from == y.from && x.to == y.to && x.kind == y.kind && x.weights == y.weights &&
-           x.predicates == y.predicates && x.conditions == y.conditions;
+           x.predicates == y.predicates && x.conditions == y.conditions && x.via == y.via &&
+           x.label_at == y.label_at;
   }
 };
 

@@ -1,0 +1,167 @@
+// An arc's route as the spec keeps it: drawn through its bend points (on a page of positions
+// and on one Graphviz lays out), its inscription where `label_at` puts it, picked by any
+// segment, and the helpers an editor bends it with (nearest segment, editor units).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <regex>
+
+#include "diagram/diagram_fixtures.h"
+#include "gdpn/diagram/layout.h"
+#include "gdpn/diagram/painter.h"
+#include "gdpn/diagram/spatial_index.h"
+#include "gdpn/diagram/svg_canvas.h"
+
+namespace gdpn::diagram {
+namespace {
+
+using testing::smallNet;
+
+void expectNear(Point got, Point want) {
+  EXPECT_NEAR(got.x, want.x, 1e-9) << "x";
+  EXPECT_NEAR(got.y, want.y, 1e-9) << "y";
+}
+
+/// smallNet(placed) with src -> go bent down through (0, 2) and (1, 2), editor units.
+net::NetSpec bentNet(bool placed) {
+  auto spec = smallNet(placed);
+  spec.pages[0].arcs[0].via = {{0, 2}, {1, 2}};
+  return spec;
+}
+
+TEST(DiagramRoute, AnArcRunsThroughItsBendPointsClippedAtTheOutlines) {
+  core::Diagnostics diags;
+  const auto l = layoutPage(bentNet(true).pages[0], diags);
+  ASSERT_FALSE(diags.hasErrors()) << diags.str();
+  // src stands at (0, 1), go at (1, 1): down out of src's circle, across, up into go's bar
+  const auto& a = l.arcs[0];
+  ASSERT_EQ(a.points.size(), 4u);
+  EXPECT_TRUE(a.follows_via);
+  expectNear(a.points[0], {0, kEditorUnit + kPlaceRadius});
+  expectNear(a.points[1], {0, 2 * kEditorUnit});
+  expectNear(a.points[2], {kEditorUnit, 2 * kEditorUnit});
+  expectNear(a.points[3], {kEditorUnit, kEditorUnit + kBarHeight / 2});
+  EXPECT_EQ(a.box.max.y, 2 * kEditorUnit);
+  // the other arcs are as they were
+  const auto straight = layoutPage(smallNet(true).pages[0], diags);
+  for (std::size_t i = 1; i < l.arcs.size(); ++i) EXPECT_EQ(l.arcs[i].points, straight.arcs[i].points) << i;
+  EXPECT_FALSE(straight.arcs[0].follows_via);
+}
+
+TEST(DiagramRoute, AnArcWithBendPointsIsNoTwinToBendApartFrom) {
+  // go -> src beside the bent src -> go: the straight one stays straight
+  auto spec = bentNet(true);
+  spec.pages[0].arcs.push_back(testing::arc("go", "src"));
+  core::Diagnostics diags;
+  const auto l = layoutPage(spec.pages[0], diags);
+  EXPECT_EQ(l.arcs.back().points.size(), 2u);
+  EXPECT_EQ(l.arcs[0].points.size(), 4u);
+}
+
+TEST(DiagramRoute, GraphvizKeepsItsRouteForArcsWithoutBendPoints) {
+  core::Diagnostics diags;
+  const auto plain = layoutPage(smallNet(false).pages[0], diags);
+  const auto bent = layoutPage(bentNet(false).pages[0], diags);
+  ASSERT_FALSE(diags.hasErrors()) << diags.str();
+  ASSERT_TRUE(bent.from_graphviz);
+  // the bent arc runs through its bend points, the others keep Graphviz's route
+  ASSERT_EQ(bent.arcs[0].points.size(), 4u);
+  expectNear(bent.arcs[0].points[1], {0, 2 * kEditorUnit});
+  expectNear(bent.arcs[0].points[2], {kEditorUnit, 2 * kEditorUnit});
+  for (std::size_t i = 1; i < bent.arcs.size(); ++i) {
+    EXPECT_EQ(bent.arcs[i].points, plain.arcs[i].points) << i;
+    EXPECT_FALSE(bent.arcs[i].follows_via);
+  }
+}
+
+TEST(DiagramRoute, PickFindsAnArcByItsSecondSegment) {
+  core::Diagnostics diags;
+  const auto l = layoutPage(bentNet(true).pages[0], diags);
+  const SpatialIndex index(l);
+  // half way along the bottom stretch, far from where a straight src -> go would run
+  const Point on_second{kEditorUnit / 2, 2 * kEditorUnit + 1.5};
+  EXPECT_EQ(index.pick(on_second, 2), (ItemRef{ItemKind::Arc, 0}));
+  // and nothing a little below it
+  EXPECT_FALSE(index.pick(on_second + Point{0, 10}, 2));
+}
+
+TEST(DiagramRoute, NearestSegmentGivesItsIndexAndTheProjection) {
+  core::Diagnostics diags;
+  const auto l = layoutPage(bentNet(true).pages[0], diags);
+  const auto& a = l.arcs[0];
+  const SegmentHit hit = nearestSegment(a, {30, 2 * kEditorUnit + 5});
+  EXPECT_EQ(hit.segment, 1u);
+  expectNear(hit.at, {30, 2 * kEditorUnit});
+  EXPECT_NEAR(hit.distance, 5, 1e-9);
+  // near the first stretch (down out of src)
+  EXPECT_EQ(nearestSegment(a, {-3, 110}).segment, 0u);
+  // past the end of the last stretch: its end point
+  const SegmentHit last = nearestSegment(a, {kEditorUnit + 4, kEditorUnit});
+  EXPECT_EQ(last.segment, 2u);
+  expectNear(last.at, a.points.back());
+  // a bend put there goes into `via` at the segment's index: the route then runs through it
+  auto spec = bentNet(true);
+  auto& via = spec.pages[0].arcs[0].via;
+  via.insert(via.begin() + static_cast<std::ptrdiff_t>(hit.segment), editorPosition(hit.at + Point{0, 36}));
+  const auto again = layoutPage(spec.pages[0], diags);
+  ASSERT_EQ(again.arcs[0].points.size(), 5u);
+  expectNear(again.arcs[0].points[2], {36, 2.5 * kEditorUnit});
+}
+
+TEST(DiagramRoute, BendAtFindsTheBendUnderThePointByItsIndexInVia) {
+  core::Diagnostics diags;
+  const auto l = layoutPage(bentNet(true).pages[0], diags);
+  EXPECT_EQ(bendAt(l.arcs[0], {kEditorUnit + 2, 2 * kEditorUnit - 1}, 4), std::optional<std::size_t>(1));
+  EXPECT_EQ(bendAt(l.arcs[0], {1, 2 * kEditorUnit}, 4), std::optional<std::size_t>(0));
+  // on the arc but at no bend, and an end point: none
+  EXPECT_FALSE(bendAt(l.arcs[0], {kEditorUnit / 2, 2 * kEditorUnit}, 4));
+  EXPECT_FALSE(bendAt(l.arcs[0], l.arcs[0].points.front(), 4));
+  // an arc bent apart from its twin has no bends of its own
+  auto spec = smallNet(true);
+  spec.pages[0].arcs.push_back(testing::arc("go", "src"));
+  const auto twins = layoutPage(spec.pages[0], diags);
+  ASSERT_EQ(twins.arcs[0].points.size(), 3u);
+  EXPECT_FALSE(bendAt(twins.arcs[0], twins.arcs[0].points[1], 4));
+}
+
+TEST(DiagramRoute, EditorUnitsAreTheNetViewsQuarterSnappedUnits) {
+  expectNear(layoutPoint({1.5, -2}), {1.5 * kEditorUnit, -2 * kEditorUnit});
+  const auto at = editorPosition({100, -0.1});
+  EXPECT_EQ(at, (net::EditorPos{1.5, 0}));
+  EXPECT_FALSE(std::signbit(at[1]));
+  EXPECT_EQ(editorPosition(layoutPoint({-3.25, 7.75})), (net::EditorPos{-3.25, 7.75}));
+}
+
+TEST(DiagramRoute, TheInscriptionStandsWhereLabelAtPutsIt) {
+  auto spec = bentNet(true);
+  // mid (2, 1) -> stop (3, 1), weight 2: its label half a unit above the arc's middle
+  spec.pages[0].arcs[2].label_at = net::EditorPos{0, -0.5};
+  core::Diagnostics diags;
+  const auto l = layoutPage(spec.pages[0], diags);
+  const auto& a = l.arcs[2];
+  ASSERT_TRUE(a.label_at);
+  const Point middle{(2 * kEditorUnit + kPlaceRadius + 3 * kEditorUnit - kBarWidth / 2) / 2, kEditorUnit};
+  expectNear(middleOf(a.points), middle);
+  expectNear(*a.label_at, middle + Point{0, -kEditorUnit / 2});
+  EXPECT_LE(a.box.min.y, a.label_at->y);
+  // dragging the label gives the offset back
+  const auto offset = labelOffset(a, *a.label_at + Point{18, 0});
+  EXPECT_NEAR(offset[0], 0.25, 1e-12);
+  EXPECT_NEAR(offset[1], -0.5, 1e-12);
+  // the middle of a bent arc is half its length along it
+  expectNear(middleOf(l.arcs[0].points), {kEditorUnit / 2, 2 * kEditorUnit});
+  EXPECT_FALSE(l.arcs[0].label_at);
+
+  // the painter draws the weight there (a viewport of one pixel per layout unit)
+  SvgCanvas canvas(400, 200);
+  const SpatialIndex index(l);
+  paintNet(l, index, nullptr, Viewport{{0, 0}, 1.0}, canvas);
+  const std::string svg = canvas.svg();
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(svg, m, std::regex("<text x=\"([-0-9.e]+)\" y=\"[-0-9.e]+\"[^>]*>2</text>"))) << svg;
+  EXPECT_NEAR(std::stod(m[1].str()), a.label_at->x, 1e-6);
+}
+
+}  // namespace
+}  // namespace gdpn::diagram
