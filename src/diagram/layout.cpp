@@ -109,21 +109,33 @@ void routeVia(const NetLayout& l, ArcLayout& arc, const std::vector<net::EditorP
 // straight arcs between positioned nodes, or through their bend points; an arc without bend
 // points with a twin between the same two items (the other way, or again) bends off the
 // straight line so that both stay visible
-void routeStraight(NetLayout& l, const net::PageSpec& page) {
-  std::map<std::pair<ItemRef, ItemRef>, int> count, seen;
+// routes the arcs (those `only` marks, when given) straight or through their bends; arcs
+// between the same two items bend apart
+void routeStraight(NetLayout& l, const net::PageSpec& page, const std::vector<char>* only = nullptr) {
+  // arcs between the same two items, by the pair: how many, and how many routed so far
+  // (an item in 32 bits: its kind in the top two, its index below: a page holds fewer than 2^30)
+  const auto flat = [](ItemRef r) { return (static_cast<std::uint64_t>(r.kind) << 30) | r.index; };
+  const auto keyOf = [&](const ArcLayout& arc) {
+    const auto [lo, hi] = std::minmax(arc.from, arc.to);
+    return flat(lo) << 32 | flat(hi);
+  };
+  std::unordered_map<std::uint64_t, std::pair<int, int>> twins;
+  twins.reserve(l.arcs.size());
   const auto bent = [&](const ArcLayout& arc) { return !page.arcs[arc.spec_index].via.empty(); };
   for (const auto& arc : l.arcs) {
-    if (!bent(arc)) ++count[std::minmax(arc.from, arc.to)];
+    if (!bent(arc)) ++twins[keyOf(arc)].first;
   }
-  for (auto& arc : l.arcs) {
+  for (std::size_t k = 0; k < l.arcs.size(); ++k) {
+    auto& arc = l.arcs[k];
     if (bent(arc)) {
-      routeVia(l, arc, page.arcs[arc.spec_index].via);
+      if (only == nullptr || (*only)[k] != 0) routeVia(l, arc, page.arcs[arc.spec_index].via);
       continue;
     }
-    const auto key = std::minmax(arc.from, arc.to);
-    const int twin = seen[key]++;
+    auto& [count, seen] = twins[keyOf(arc)];
+    const int twin = seen++;
+    if (only != nullptr && (*only)[k] == 0) continue;
     const Point a = centreOf(l, arc.from), b = centreOf(l, arc.to);
-    if (count[key] < 2) {
+    if (count < 2) {
       arc.points = {outlinePoint(l, arc.from, b), outlinePoint(l, arc.to, a)};
       continue;
     }
@@ -226,6 +238,36 @@ const Box& NetLayout::boxOf(ItemRef item) const {
   return bounds;
 }
 
+namespace {
+
+// the inscriptions the spec places (an offset from the middle of the arc), each arc's box (of
+// those `only` marks, when given), then the bounds of everything
+void placeLabelsAndBound(NetLayout& l, const net::PageSpec& page, const std::vector<char>* only) {
+  for (std::size_t k = 0; k < l.arcs.size(); ++k) {
+    if (only != nullptr && (*only)[k] == 0) continue;
+    auto& arc = l.arcs[k];
+    const auto& offset = page.arcs[arc.spec_index].label_at;
+    arc.label_at.reset();
+    if (offset && !arc.points.empty()) arc.label_at = middleOf(arc.points) + layoutPoint(*offset);
+    arc.box = {arc.points.front(), arc.points.front()};
+    for (const Point& p : arc.points) arc.box.add(p);
+    if (arc.label_at) arc.box.add(*arc.label_at);
+  }
+  bool first = true;
+  auto grow = [&](const Box& b) {
+    if (first) l.bounds = b;
+    l.bounds.add(b.min);
+    l.bounds.add(b.max);
+    first = false;
+  };
+  for (const auto& arc : l.arcs) grow(arc.box);
+  for (const auto& p : l.places) grow(p.box);
+  for (const auto& t : l.transitions) grow(t.box);
+  for (const auto& i : l.instances) grow(i.box);
+}
+
+}  // namespace
+
 NetLayout layoutPage(const net::PageSpec& page, core::Diagnostics& diags) {
   NetLayout l;
   l.page = page.name;
@@ -294,29 +336,37 @@ NetLayout layoutPage(const net::PageSpec& page, core::Diagnostics& diags) {
       if (const auto& via = page.arcs[arc.spec_index].via; !via.empty()) routeVia(l, arc, via);
     }
   }
-  // inscriptions the spec places: an offset from the middle of the arc
-  for (auto& arc : l.arcs) {
-    const auto& offset = page.arcs[arc.spec_index].label_at;
-    if (offset && !arc.points.empty()) arc.label_at = middleOf(arc.points) + layoutPoint(*offset);
-  }
-  // bounding boxes: of each arc, then of everything
-  bool first = true;
-  auto grow = [&](const Box& b) {
-    if (first) l.bounds = b;
-    l.bounds.add(b.min);
-    l.bounds.add(b.max);
-    first = false;
-  };
-  for (auto& arc : l.arcs) {
-    arc.box = {arc.points.front(), arc.points.front()};
-    for (const Point& p : arc.points) arc.box.add(p);
-    if (arc.label_at) arc.box.add(*arc.label_at);
-    grow(arc.box);
-  }
-  for (const auto& p : l.places) grow(p.box);
-  for (const auto& t : l.transitions) grow(t.box);
-  for (const auto& i : l.instances) grow(i.box);
+  placeLabelsAndBound(l, page, nullptr);
   return l;
+}
+
+void relayoutMoved(NetLayout& l, const net::PageSpec& page, const std::vector<ItemRef>& moved) {
+  // the items moved: at the spec's positions, their boxes keeping their size
+  std::vector<char> item_moved(l.places.size() + l.transitions.size() + l.instances.size(), 0);
+  const auto flat = [&](ItemRef r) -> std::size_t {
+    return r.kind == ItemKind::Place ? r.index : r.kind == ItemKind::Transition ? l.places.size() + r.index
+                                                                               : l.places.size() + l.transitions.size() + r.index;
+  };
+  for (const ItemRef r : moved) {
+    std::optional<net::EditorPos> at;
+    NodeLayout* node = nullptr;
+    switch (r.kind) {
+      case ItemKind::Place: node = &l.places[r.index]; at = page.places[r.index].position; break;
+      case ItemKind::Transition: node = &l.transitions[r.index]; at = page.transitions[r.index].position; break;
+      case ItemKind::Instance: node = &l.instances[r.index]; at = page.instances[r.index].position; break;
+      case ItemKind::Arc: break;
+    }
+    if (node == nullptr || !at) continue;
+    const Point half{node->box.width() / 2, node->box.height() / 2};
+    node->centre = layoutPoint(*at);
+    node->box = {node->centre - half, node->centre + half};
+    item_moved[flat(r)] = 1;
+  }
+  // the arcs that touch them (or whose bends moved with them), routed again
+  std::vector<char> arc_moved(l.arcs.size(), 0);
+  for (std::size_t k = 0; k < l.arcs.size(); ++k) arc_moved[k] = item_moved[flat(l.arcs[k].from)] | item_moved[flat(l.arcs[k].to)];
+  routeStraight(l, page, &arc_moved);
+  placeLabelsAndBound(l, page, &arc_moved);
 }
 
 std::string inscription(const std::vector<net::SlotCount>& weights) {

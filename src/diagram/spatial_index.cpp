@@ -83,6 +83,15 @@ std::vector<ItemRef> SpatialIndex::query(const Box& view) const {
   return out;
 }
 
+std::vector<ItemRef> SpatialIndex::within(const Box& band) const {
+  auto out = query(band);
+  std::erase_if(out, [&](ItemRef r) {
+    const Box& b = layout_->boxOf(r);
+    return b.min.x < band.min.x || b.min.y < band.min.y || b.max.x > band.max.x || b.max.y > band.max.y;
+  });
+  return out;
+}
+
 std::optional<ItemRef> SpatialIndex::pick(Point p, double tolerance) const {
   const Box near = Box::around(p, tolerance, tolerance);
   const auto items = query(near);

@@ -89,7 +89,8 @@ std::string deleteNetSelection(App& app) {
   const auto count = e.names.size() + e.arcs.size();
   if (auto why = perform(app, std::move(e)); !why.empty()) return why;
   app.document().select({});
-  app.message = "deleted " + std::to_string(count) + (count == 1 ? " item" : " items") + " of " + sel.prefix;
+  app.message = count == 1 ? "deleted " + (sel.constructs.empty() ? std::string("an arc") : sel.prefix + "/" + sel.constructs.front().first)
+                           : "deleted " + std::to_string(count) + " items of " + sel.prefix;
   return {};
 }
 

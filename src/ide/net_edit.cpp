@@ -199,25 +199,36 @@ void pinAll(net::PageSpec& p, const std::vector<std::pair<std::string, net::Edit
   pin(p.instances);
 }
 
-/// Moves each of `moves` on `p`; "" or why not (a name not on the page).
+/// Moves each of `moves` on `p`; "" or why not (a name not on the page). The bends of an arc
+/// whose two ends move by the same step move with them.
 std::string moveAll(net::PageSpec& p, const std::vector<std::pair<std::string, net::EditorPos>>& moves) {
   std::unordered_map<std::string_view, const net::EditorPos*> to;
   for (const auto& [name, pos] : moves) to[name] = &pos;
+  std::unordered_map<std::string_view, net::EditorPos> step;  // how far each moved, when it had a place
   std::size_t found = 0;
   const auto move = [&](auto& list) {
     for (auto& x : list) {
-      if (const auto it = to.find(x.name); it != to.end()) {
-        x.position = *it->second;
-        ++found;
-      }
+      const auto it = to.find(x.name);
+      if (it == to.end()) continue;
+      if (x.position) step[x.name] = {(*it->second)[0] - (*x.position)[0], (*it->second)[1] - (*x.position)[1]};
+      x.position = *it->second;
+      ++found;
     }
   };
   move(p.places);
   move(p.transitions);
   move(p.instances);
-  if (found == to.size()) return {};
-  for (const auto& [name, pos] : moves) {
-    if (!taken(p, name)) return "no place, transition or instance '" + name + "' on page '" + p.name + "'";
+  if (found != to.size()) {
+    for (const auto& [name, pos] : moves) {
+      if (!taken(p, name)) return "no place, transition or instance '" + name + "' on page '" + p.name + "'";
+    }
+  }
+  for (auto& a : p.arcs) {
+    if (a.via.empty()) continue;
+    const auto from = step.find(std::string_view(a.from).substr(0, a.from.find('/')));
+    const auto into = step.find(std::string_view(a.to).substr(0, a.to.find('/')));
+    if (from == step.end() || into == step.end() || from->second != into->second) continue;
+    for (auto& bend : a.via) bend = {bend[0] + from->second[0], bend[1] + from->second[1]};
   }
   return {};
 }
@@ -596,13 +607,53 @@ void SetGlobalsCommand::revert(Document& doc) {
 
 NetEditCommand::NetEditCommand(NetEdit edit) : edit_(std::move(edit)) {}
 
+namespace {
+
+/// Where `p`'s constructs stand and its arcs bend.
+template <class Positions>
+Positions positionsOf(const net::PageSpec& p) {
+  Positions out;
+  out.places.reserve(p.places.size());
+  for (const auto& x : p.places) out.places.push_back(x.position);
+  out.transitions.reserve(p.transitions.size());
+  for (const auto& x : p.transitions) out.transitions.push_back(x.position);
+  for (const auto& x : p.instances) out.instances.push_back(x.position);
+  out.via.reserve(p.arcs.size());
+  for (const auto& a : p.arcs) out.via.push_back(a.via);
+  return out;
+}
+
+/// Puts `p`'s constructs and bends back where positionsOf() found them (the page is the same
+/// but for them).
+template <class Positions>
+void restorePositions(net::PageSpec& p, const Positions& was) {
+  for (std::size_t i = 0; i < p.places.size() && i < was.places.size(); ++i) p.places[i].position = was.places[i];
+  for (std::size_t i = 0; i < p.transitions.size() && i < was.transitions.size(); ++i) p.transitions[i].position = was.transitions[i];
+  for (std::size_t i = 0; i < p.instances.size() && i < was.instances.size(); ++i) p.instances[i].position = was.instances[i];
+  for (std::size_t i = 0; i < p.arcs.size() && i < was.via.size(); ++i) p.arcs[i].via = was.via[i];
+}
+
+}  // namespace
+
 std::string NetEditCommand::apply(Document& doc) {
   net::NetSpec& net = doc.editableNet();
   net::PageSpec* page = findPage(net, edit_.page, &type_);
   if (page == nullptr) return "no page or page type '" + edit_.page + "'";
-  net::PageSpec changed = *page;
   made_.clear();
   pasted_ = {};
+  if (edit_.kind == NetEditKind::Move || edit_.kind == NetEditKind::MoveMany) {
+    // a move changes positions and bends alone: they are kept for undo, not the page
+    auto was = positionsOf<Positions>(*page);
+    if (auto why = edit(net, *page, edit_, made_, pasted_); !why.empty()) {
+      restorePositions(*page, was);
+      return why;
+    }
+    positions_ = std::move(was);
+    before_.reset();
+    doc.touched(false);
+    return {};
+  }
+  net::PageSpec changed = *page;
   if (auto why = edit(net, changed, edit_, made_, pasted_); !why.empty()) return why;
   before_ = std::move(*page);
   *page = std::move(changed);
@@ -612,8 +663,10 @@ std::string NetEditCommand::apply(Document& doc) {
 
 void NetEditCommand::revert(Document& doc) {
   net::PageSpec* page = findPage(doc.editableNet(), edit_.page);
-  if (page == nullptr || !before_) return;
-  *page = *before_;
+  if (page == nullptr) return;
+  if (positions_) restorePositions(*page, *positions_);
+  else if (before_) *page = *before_;
+  else return;
   doc.touched(false);
 }
 
@@ -635,6 +688,11 @@ std::string NetEditCommand::label() const {
       return edit_.moves.size() == 1 ? "move " + edit_.page + "/" + edit_.moves.front().first
                                      : "move " + std::to_string(edit_.moves.size()) + " items of " + edit_.page;
     case NetEditKind::DeleteMany:
+      if (edit_.names.size() + edit_.arcs.size() == 1) {
+        return "delete " + (edit_.names.empty() ? std::string(kindName(edit_.arcs.front().kind)) + " " + edit_.arcs.front().from +
+                                                      " -> " + edit_.arcs.front().to
+                                                : edit_.page + "/" + edit_.names.front());
+      }
       return "delete " + std::to_string(edit_.names.size() + edit_.arcs.size()) + " items of " + edit_.page;
     case NetEditKind::SetArc: return std::string("edit ") + kindName(edit_.arc_kind) + " " + edit_.name + " -> " + edit_.new_name;
     case NetEditKind::AddInstance: return "add instance " + edit_.page + "/" + edit_.name + " of " + edit_.new_name;
@@ -643,8 +701,13 @@ std::string NetEditCommand::label() const {
 }
 
 std::uint64_t NetEditCommand::mergeKey() const {
-  if ((edit_.kind != NetEditKind::Move && edit_.kind != NetEditKind::MoveMany) || edit_.drag == 0) return 0;
-  const auto h = std::hash<std::string>{}(edit_.page + '\n' + (edit_.kind == NetEditKind::Move ? edit_.name : "\x01group"));
+  const bool drags = edit_.kind == NetEditKind::Move || edit_.kind == NetEditKind::MoveMany || edit_.kind == NetEditKind::SetArc;
+  if (!drags || edit_.drag == 0) return 0;
+  std::string what = edit_.page + '\n' + net::arcKindName(edit_.arc_kind) + '\n';
+  if (edit_.kind == NetEditKind::MoveMany) what += "\x01group";
+  else if (edit_.kind == NetEditKind::SetArc) what += "\x02arc " + edit_.name + " -> " + edit_.new_name;  // a bend or label dragged
+  else what += edit_.name;
+  const auto h = std::hash<std::string>{}(what);
   return (h ^ (edit_.drag * 0x9E3779B97F4A7C15ULL)) | 1U;
 }
 
@@ -653,6 +716,7 @@ void NetEditCommand::absorb(const Command& next) {
   const auto& later = static_cast<const NetEditCommand&>(next).edit_;
   edit_.at = later.at;
   edit_.moves = later.moves;
+  edit_.arc = later.arc;
 }
 
 }  // namespace gdpn::ide

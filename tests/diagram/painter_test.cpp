@@ -252,17 +252,22 @@ TEST(DiagramRaster, PngMatchesGolden) {
   EXPECT_LT(total / static_cast<double>(rgb.size()), 1.5);
 }
 
-TEST(DiagramCulling, ViewportReturnsOnlyTheVisibleItems) {
-  // a grid of 50 x 20 transitions, each with a place to its right
+/// A grid of `columns` x `rows` transitions, each with a place to its right.
+net::PageSpec gridPage(int columns, int rows) {
   net::PageSpec page;
   page.name = "grid";
-  for (int y = 0; y < 20; ++y)
-    for (int x = 0; x < 50; ++x) {
+  for (int y = 0; y < rows; ++y)
+    for (int x = 0; x < columns; ++x) {
       const auto id = std::to_string(x) + "_" + std::to_string(y);
       page.transitions.push_back(testing::transition("t" + id, 1, net::EditorPos{2.0 * x, 1.0 * y}));
       page.places.push_back(testing::place("p" + id, 0, net::EditorPos{2.0 * x + 1, 1.0 * y}));
       page.arcs.push_back(testing::arc("t" + id, "p" + id));
     }
+  return page;
+}
+
+TEST(DiagramCulling, ViewportReturnsOnlyTheVisibleItems) {
+  const auto page = gridPage(50, 20);
   core::Diagnostics diags;
   const auto layout = layoutPage(page, diags);
   const SpatialIndex index(layout);
@@ -283,6 +288,33 @@ TEST(DiagramCulling, ViewportReturnsOnlyTheVisibleItems) {
   EXPECT_EQ(items.size(), expected);
   EXPECT_TRUE(index.query({{-1e6, -1e6}, {-1e5, -1e5}}).empty());
   EXPECT_EQ(index.query(layout.bounds).size(), layout.places.size() + layout.transitions.size() + layout.arcs.size());
+}
+
+TEST(DiagramCulling, ARubberBandTakesWhatLiesWhollyInside) {
+  core::Diagnostics diags;
+  const auto page = gridPage(10, 10);
+  const auto layout = layoutPage(page, diags);
+  const SpatialIndex index(layout);
+  // the band around the transitions of columns 3-4 and rows 5-6, cutting the arcs that leave
+  const double m = 0.4 * kEditorUnit;
+  const Box band{{3 * 2 * kEditorUnit - m, 5 * kEditorUnit - m}, {4 * 2 * kEditorUnit + m, 6 * kEditorUnit + m}};
+  const auto items = index.within(band);
+  std::size_t expected = 0;
+  const auto whole = [&](const Box& b) {
+    return b.min.x >= band.min.x && b.min.y >= band.min.y && b.max.x <= band.max.x && b.max.y <= band.max.y ? 1u : 0u;
+  };
+  for (const auto& p : layout.places) expected += whole(p.box);
+  for (const auto& t : layout.transitions) expected += whole(t.box);
+  for (const auto& a : layout.arcs) expected += whole(a.box);
+  EXPECT_EQ(items.size(), expected);
+  std::size_t transitions = 0;
+  for (const ItemRef r : items) {
+    EXPECT_EQ(whole(layout.boxOf(r)), 1u);
+    transitions += r.kind == ItemKind::Transition ? 1 : 0;
+  }
+  EXPECT_EQ(transitions, 4u);
+  EXPECT_LT(items.size(), index.query(band).size());  // the items the band only touches are left out
+  EXPECT_EQ(index.within(layout.bounds).size(), layout.places.size() + layout.transitions.size() + layout.arcs.size());
 }
 
 TEST(DiagramCulling, PickFindsWhatIsUnderTheMouse) {

@@ -163,5 +163,60 @@ TEST(DiagramRoute, TheInscriptionStandsWhereLabelAtPutsIt) {
   EXPECT_NEAR(std::stod(m[1].str()), a.label_at->x, 1e-6);
 }
 
+/// The two layouts draw the same: every item where, and every arc along the same points.
+void expectSameLayout(const NetLayout& a, const NetLayout& b) {
+  ASSERT_EQ(a.places.size(), b.places.size());
+  ASSERT_EQ(a.transitions.size(), b.transitions.size());
+  ASSERT_EQ(a.arcs.size(), b.arcs.size());
+  for (std::size_t i = 0; i < a.places.size(); ++i) EXPECT_EQ(a.places[i].box, b.places[i].box) << a.places[i].name;
+  for (std::size_t i = 0; i < a.transitions.size(); ++i) EXPECT_EQ(a.transitions[i].box, b.transitions[i].box) << a.transitions[i].name;
+  for (std::size_t i = 0; i < a.arcs.size(); ++i) {
+    EXPECT_EQ(a.arcs[i].points, b.arcs[i].points) << "arc " << i;
+    EXPECT_EQ(a.arcs[i].box, b.arcs[i].box) << "arc " << i;
+    EXPECT_EQ(a.arcs[i].label_at, b.arcs[i].label_at) << "arc " << i;
+    EXPECT_EQ(a.arcs[i].follows_via, b.arcs[i].follows_via) << "arc " << i;
+  }
+  EXPECT_EQ(a.bounds, b.bounds);
+}
+
+TEST(DiagramRoute, MovedItemsLaidOutAgainInPlaceDrawAsTheWholePageLaidOutAgain) {
+  // a row of places and transitions, twin arcs between two of them, a bent arc with its label
+  net::PageSpec page;
+  page.name = "main";
+  for (int i = 0; i < 6; ++i) {
+    page.places.push_back(testing::place("p" + std::to_string(i), 0, net::EditorPos{2.0 * i, 0}));
+    page.transitions.push_back(testing::transition("t" + std::to_string(i), 1, net::EditorPos{2.0 * i + 1, 0}));
+    page.arcs.push_back(testing::arc("p" + std::to_string(i), "t" + std::to_string(i)));
+    if (i > 0) page.arcs.push_back(testing::arc("t" + std::to_string(i - 1), "p" + std::to_string(i)));
+  }
+  page.arcs.push_back(testing::arc("t2", "p2"));  // twin of p2 -> t2: the two bend apart
+  auto bent = testing::arc("p4", "t1");
+  bent.via = {{6, 2}, {3, 2}};
+  bent.weights = {net::SlotCount{net::kDefaultSlot, 3}};
+  bent.label_at = net::EditorPos{0, 0.5};
+  page.arcs.push_back(bent);
+  core::Diagnostics diags;
+  NetLayout l = layoutPage(page, diags);
+  ASSERT_FALSE(l.from_graphviz);
+  // moves: one place; a transition with a twin arc; the two ends of the bent arc with it (as a
+  // group's drag moves its bends)
+  const std::vector<std::vector<std::pair<ItemRef, net::EditorPos>>> steps = {
+      {{{ItemKind::Place, 0}, {0, 1.5}}},
+      {{{ItemKind::Transition, 2}, {5, -1}}},
+      {{{ItemKind::Place, 4}, {8, 1}}, {{ItemKind::Transition, 1}, {3, 1}}}};
+  for (const auto& step : steps) {
+    std::vector<ItemRef> moved;
+    for (const auto& [item, at] : step) {
+      (item.kind == ItemKind::Place ? page.places[item.index].position : page.transitions[item.index].position) = at;
+      moved.push_back(item);
+    }
+    if (step.size() == 2) {
+      for (auto& bend : page.arcs.back().via) bend = {bend[0], bend[1] + 1};
+    }
+    relayoutMoved(l, page, moved);
+    expectSameLayout(l, layoutPage(page, diags));
+  }
+}
+
 }  // namespace
 }  // namespace gdpn::diagram

@@ -503,11 +503,13 @@ TEST_F(HeadlessIde, ATransitionsDurationPriorityAndProbabilityAreSetInTheContent
   r = replayOn(model, start + set("servers", "3") + "- press: save\n");
   EXPECT_NE(gdpn::testing::fileBytes(model).find("probability: 0.5, servers: 3}"), std::string::npos)
       << gdpn::testing::fileBytes(model);
-  r = replayOn(model, start + "- click: " + at(fields["unlimited"]) + "\n- press: save\n");
+  // with servers the inspector says how many are busy, a line more above the fields
+  const auto with_servers = replayOn(model, start)["inspector"]["contents"]["fields"];
+  r = replayOn(model, start + "- click: " + at(with_servers["unlimited"]) + "\n- press: save\n");
   EXPECT_EQ(r["undo"]["depth"], 1);
   EXPECT_NE(gdpn::testing::fileBytes(model).find("probability: 0.5, servers: unlimited}"), std::string::npos)
       << gdpn::testing::fileBytes(model);
-  r = replayOn(model, start + "- click: " + at(fields["unlimited"]) + "\n- press: save\n");
+  r = replayOn(model, start + "- click: " + at(with_servers["unlimited"]) + "\n- press: save\n");
   EXPECT_EQ(gdpn::testing::fileBytes(model).find("servers:"), std::string::npos) << gdpn::testing::fileBytes(model);
   r = replayOn(model, start + set("servers", "0"));
   EXPECT_EQ(r["undo"]["depth"], 0);

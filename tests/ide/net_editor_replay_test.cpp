@@ -7,6 +7,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <sstream>
+
 #include "ide/headless_fixture.h"
 #include "support/cli.h"
 #include "support/scratch.h"
@@ -128,6 +131,48 @@ TEST_F(NetEditor, AnArcIsReversedAndDeletedEachAsOneUndoStep) {
   EXPECT_TRUE(r["net_view"]["menu"].contains("Delete"));
 }
 
+TEST_F(NetEditor, AnArcDraggedByItsPathBendsThereItsBendMovesAndADoubleClickTakesItAway) {
+  const auto arcs = start_["net_view"]["arc_at"];
+  const auto middle = arcs["main: a -> t"];
+  const auto low = off(middle, 0, 50);
+  // a drag from the arc's path: selected, and bent where it was let go, one step
+  const std::string bend = dragLine(middle, low);
+  auto r = run(bend);
+  EXPECT_EQ(r["selection"]["name"], "main: a -> t");
+  EXPECT_EQ(r["undo"]["depth"], 1);
+  EXPECT_EQ(r["undo"]["label"], "edit arc a -> t");
+  ASSERT_TRUE(r["net_view"]["handles"].contains("bend 0")) << r["net_view"].dump();
+  const auto handle = r["net_view"]["handles"]["bend 0"];
+  EXPECT_NEAR(handle[0].get<double>(), low[0].get<double>(), 8);
+  EXPECT_NEAR(handle[1].get<double>(), low[1].get<double>(), 8);
+  // the bend dragged further: another step; saved, the file keeps the route
+  const auto lower = off(handle, 20, 20);
+  r = run(bend + dragLine(handle, lower) + "- press: save\n");
+  EXPECT_EQ(r["undo"]["depth"], 2);
+  EXPECT_NEAR(r["net_view"]["handles"]["bend 0"][1].get<double>(), lower[1].get<double>(), 8);
+  auto saved = gdpn::testing::fileBytes(model_);
+  EXPECT_NE(saved.find("{from: a, to: t, via: [["), std::string::npos) << saved;
+  EXPECT_EQ(gdpn::testing::runGdpn("check '" + model_ + "'").code, 0) << saved;
+  // a double-click on the bend takes it away: the arc is straight again (from the file as it was)
+  write("edit.gdpn.yaml", kModel);
+  r = run(bend + "- click: " + at(handle) + "\n- click: " + at(handle) + "\n- press: save\n");
+  EXPECT_FALSE(r["net_view"]["handles"].contains("bend 0")) << r["net_view"]["handles"].dump();
+  saved = gdpn::testing::fileBytes(model_);
+  EXPECT_NE(saved.find("      - a -> t\n"), std::string::npos) << saved;
+  // a weighted arc's label is dragged by its handle
+  write("edit.gdpn.yaml", kModel);
+  const std::string weighted = "- click: " + at(arcs["main: c -> u"]) + "\n";
+  r = run(weighted);
+  const std::string weight = "- click: " + at(r["inspector"]["fields"]["weight a0"]) + "\n- type: '2'\n- key: enter\n";
+  r = run(weighted + weight);
+  ASSERT_TRUE(r["net_view"]["handles"].contains("label")) << r["net_view"].dump();
+  r = run(weighted + weight + dragLine(r["net_view"]["handles"]["label"], off(r["net_view"]["handles"]["label"], 0, -30)) +
+          "- press: save\n");
+  saved = gdpn::testing::fileBytes(model_);
+  EXPECT_NE(saved.find("label_at: ["), std::string::npos) << saved;
+  EXPECT_EQ(r["undo"]["depth"], 2);
+}
+
 TEST_F(NetEditor, ARubberBandOfFiveItemsMovesAndIsDeletedAsOneUndoStep) {
   const auto places = start_["net_view"]["at"];
   // a band around a, t, c, u and their arcs a -> t, c -> u (whole inside), from the empty paper
@@ -198,6 +243,101 @@ TEST_F(NetEditor, AlignAndDistributePlaceTheSelectionInOneStep) {
   EXPECT_EQ(now["main/b"][0], now["main/see"][0]);
   EXPECT_EQ(now["main/d"][0], now["main/see"][0]);
   EXPECT_EQ(r["undo"]["depth"], 1);
+}
+
+
+TEST_F(HeadlessIde, AnInstanceIsAddedFromThePapersMenuAndAnArcDrawnToItChoosesItsPort) {
+  const auto model = write("line.gdpn.yaml", gdpn::testing::fileBytes(std::string(GDPN_SOURCE_DIR) +
+                                                                      "/examples/basics/two_cells/two_cells.gdpn.yaml"));
+  size_ = "1600x900";
+  (void)replayOn(model, "- press: net-full\n");  // the settings keep the net view filling the window
+  auto r = replayOn(model, "[]");
+  const auto at0 = r["net_view"]["at"];
+  // below load_a, on the paper: the menu's Instance here, then the page type
+  const nlohmann::json paper = {at0["line/load_a"][0].get<int>(), at0["line/load_a"][1].get<int>() + 150};
+  const std::string menu = "- drag: {from: " + at(paper) + ", to: " + at(paper) + ", button: right}\n";
+  r = replayOn(model, menu);
+  ASSERT_TRUE(r["net_view"]["menu"].contains("Instance here")) << r["net_view"]["menu"].dump();
+  const std::string sub = menu + "- click: " + at(r["net_view"]["menu"]["Instance here"]) + "\n";
+  r = replayOn(model, sub);
+  ASSERT_TRUE(r["net_view"]["menu"].contains("cell")) << r["net_view"]["menu"].dump();
+  const std::string add = sub + "- click: " + at(r["net_view"]["menu"]["cell"]) + "\n";
+  r = replayOn(model, add);
+  EXPECT_EQ(r["selection"]["name"], "line/cell1");
+  EXPECT_EQ(r["undo"]["label"], "add instance line/cell1 of cell");
+  ASSERT_TRUE(r["net_view"]["at"].contains("line/cell1"));
+  // the Arc tool: a drag from load_a to it asks which port; enter
+  const std::string arc = add + "- key: a\n" + dragLine(r["net_view"]["at"]["line/load_a"], r["net_view"]["at"]["line/cell1"]);
+  r = replayOn(model, arc);
+  ASSERT_TRUE(r["net_view"]["menu"].contains("enter")) << r["net_view"]["menu"].dump();
+  r = replayOn(model, arc + "- click: " + at(r["net_view"]["menu"]["enter"]) + "\n");
+  EXPECT_TRUE(r["net_view"]["arc_at"].contains("line: load_a -> cell1/enter")) << r["net_view"]["arc_at"].dump();
+  EXPECT_EQ(r["undo"]["depth"], 2);
+  // its page, and back
+  r = replayOn(model, add + "- press: open-instance\n");
+  EXPECT_EQ(r["net_view"]["path"], "line/cell1");
+  EXPECT_EQ(r["net_view"]["page"], "cell");
+}
+
+/// The lines of `text` holding "N states, M edges" and the invariants' counts, as `gdpn analyze` prints them.
+std::string analysisFigures(const std::string& text) {
+  std::string out;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    const auto states = line.find(" states, ");
+    if (states != std::string::npos) out += line.substr(line.rfind(' ', states - 1) + 1) + "\n";
+    if (line.find("P-invariants (") != std::string::npos || line.find("T-invariants (") != std::string::npos) out += line + "\n";
+  }
+  return out;
+}
+
+TEST_F(HeadlessIde, APageTypeMadeFromARubberBandKeepsTheStateSpaceAndTheTraceUpToNames) {
+  // two_cells with a preparation stage (tests/data/page_from_selection): arcs cross the band both
+  // ways, node slots among them, a test arc and an inhibitor
+  const auto before = write("before.gdpn.yaml", gdpn::testing::fileBytes(std::string(GDPN_SOURCE_DIR) +
+                                                                         "/tests/data/page_from_selection/two_cells.gdpn.yaml"));
+  const auto model = write("line.gdpn.yaml", gdpn::testing::fileBytes(before));
+  size_ = "1600x900";
+  // the net view fills the window (the settings keep it so for the replays that follow)
+  auto r = replayOn(model, "- press: net-full\n");
+  const auto places = r["net_view"]["at"];
+  // a band around staged, prep, done, jam and power (fetch and trays stay outside)
+  double x0 = 1e9, y0 = 1e9, x1 = -1e9, y1 = -1e9;
+  for (const char* name : {"line/staged", "line/prep", "line/done", "line/jam", "line/power"}) {
+    x0 = std::min(x0, places[name][0].get<double>());
+    y0 = std::min(y0, places[name][1].get<double>());
+    x1 = std::max(x1, places[name][0].get<double>());
+    y1 = std::max(y1, places[name][1].get<double>());
+  }
+  const double gap = (places["line/staged"][0].get<double>() - places["line/fetch"][0].get<double>()) * 0.6;
+  const nlohmann::json from = {static_cast<int>(x0 - gap), static_cast<int>(y0 - gap)};
+  const nlohmann::json to = {static_cast<int>(x1 + gap), static_cast<int>(y1 + gap)};
+  r = replayOn(model, dragLine(from, to) + "- press: page-type-from-selection\n- press: save\n");
+  EXPECT_EQ(r["selection"]["kind"], "instance") << r["status"].dump();
+  EXPECT_EQ(r["selection"]["name"], "line/subnet1");
+  EXPECT_EQ(r["undo"]["depth"], 1);
+  const auto made = gdpn::testing::fileBytes(model);
+  EXPECT_NE(made.find("subnet1: {type: subnet1"), std::string::npos) << made;
+  // the same state space and invariants
+  const auto a = gdpn::testing::runGdpn("analyze '" + before + "'"), b = gdpn::testing::runGdpn("analyze '" + model + "'");
+  ASSERT_EQ(a.code, 0) << a.out;
+  ASSERT_EQ(b.code, 0) << b.out;
+  EXPECT_FALSE(analysisFigures(a.out).empty()) << a.out;
+  EXPECT_EQ(analysisFigures(a.out), analysisFigures(b.out)) << b.out;
+  // the same trace, the names that moved renamed
+  const auto ta = (dir_ / "a.jsonl").string(), tb = (dir_ / "b.jsonl").string();
+  ASSERT_EQ(gdpn::testing::runGdpn("run '" + before + "' -q --trace '" + ta + "'").code, 0);
+  ASSERT_EQ(gdpn::testing::runGdpn("run '" + model + "' -q --trace '" + tb + "'").code, 0);
+  std::string expected = gdpn::testing::fileBytes(ta);
+  for (const char* name : {"staged", "prep", "done", "jam", "power"}) {
+    const std::string old = "line/" + std::string(name) + "\"", now = "line/subnet1/" + std::string(name) + "\"";
+    for (auto at = expected.find(old); at != std::string::npos; at = expected.find(old, at + now.size())) expected.replace(at, old.size(), now);
+  }
+  EXPECT_EQ(gdpn::testing::fileBytes(tb), expected);
+  // made and undone, saved: the file as it was, byte for byte
+  write("line.gdpn.yaml", gdpn::testing::fileBytes(before));
+  r = replayOn(model, dragLine(from, to) + "- press: page-type-from-selection\n- press: undo\n- press: save\n");
+  EXPECT_EQ(gdpn::testing::fileBytes(model), gdpn::testing::fileBytes(before));
 }
 
 }  // namespace

@@ -97,6 +97,26 @@ TEST_F(Shell, EveryActionOfTheTableIsDoneByPressInAStateThatAllowsIt) {
 - select: drop
 - press: turn-quarter
 - press: undo
+- press: net-place
+- press: net-transition
+- press: net-arc
+- press: net-select
+- press: select-all
+- press: align-left
+- press: undo
+- press: align-top
+- press: undo
+- press: distribute-across
+- press: undo
+- press: distribute-down
+- press: undo
+- select: 'main: idle -> work'
+- press: reverse-arc
+- press: undo
+- select: main/work
+- press: page-type-from-selection
+- press: open-instance
+- press: undo
 - press: swap-views
 - press: swap-views
 - press: world-full

@@ -97,6 +97,13 @@ struct NetLayout {
 /// out gives an error at the page's location in `diags` and an empty layout.
 NetLayout layoutPage(const net::PageSpec& page, core::Diagnostics& diags);
 
+/// Lays out again, in place, the items `moved` (places, transitions, instances) at their
+/// positions in `page` and the arcs that touch them, then the bounds: what layoutPage(page)
+/// gives, at the cost of what moved. `l` is layoutPage() of `page` as it was before moves alone
+/// (positions, and the bends of arcs whose ends moved together) changed it, and not laid out by
+/// Graphviz (NetLayout::from_graphviz false).
+void relayoutMoved(NetLayout& l, const net::PageSpec& page, const std::vector<ItemRef>& moved);
+
 /// The label of an arc with these weights (see ArcLayout::inscription).
 [[nodiscard]] std::string inscription(const std::vector<net::SlotCount>& weights);
 

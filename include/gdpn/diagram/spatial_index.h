@@ -22,6 +22,9 @@ class SpatialIndex {
   /// first, then instances, transitions and places, each by index (the order they are drawn). Not safe to call from two threads at once.
   [[nodiscard]] std::vector<ItemRef> query(const Box& view) const;
 
+  /// The items whose boxes lie wholly inside `band` (layout units), in query()'s order: what a
+  /// rubber band selects.
+  [[nodiscard]] std::vector<ItemRef> within(const Box& band) const;
   /// The item under `p` (layout units), for clicks: a place within its circle, a transition
   /// or instance within its box grown by `tolerance`, an arc within `tolerance` of its
   /// polyline (layout units). Places and transitions win over instances, and those over arcs;

@@ -93,6 +93,13 @@ class NetEditCommand final : public Command {
   std::string made_;
   net::PageSpec pasted_;
   std::optional<net::PageSpec> before_;  // the page as it was, for revert
+  /// Where a move found the page's constructs and bends (a move changes nothing else: the page
+  /// is not copied, so that a drag on a large page costs what it moves).
+  struct Positions {
+    std::vector<std::optional<net::EditorPos>> places, transitions, instances;  ///< by index
+    std::vector<std::vector<net::EditorPos>> via;                                ///< each arc's bends
+  };
+  std::optional<Positions> positions_;   // a move's page as it was, for revert
   bool type_ = false;                    // the page is a page type
 };
 

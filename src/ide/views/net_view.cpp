@@ -21,15 +21,13 @@ namespace gdpn::ide {
 
 /// The least height of the net view's names, pixels (docs/ide.md: 10 px at least on a 1600 x 900 window).
 constexpr double kNetViewLabelPx = 10.0;
-void ensureLayout(App& app, NetViewState& s) {
-  const auto revision = app.document().revision();
-  if (s.laid_out_path == s.path && s.laid_out_revision == revision) return;
-  core::Diagnostics diags;
-  s.view = diagram::findView(app.document().model().net, s.path, diags);
-  s.layout = s.view.page ? diagram::layoutPage(*s.view.page, diags) : diagram::NetLayout{};
+
+namespace {
+
+/// The layout's spatial index and the overview's density (constructs per cell of a grid over
+/// the page), made again after the layout changed.
+void indexLayout(NetViewState& s) {
   s.index = std::make_unique<diagram::SpatialIndex>(s.layout);
-  s.error = diags.hasErrors() ? diags.str() : "";
-  // the overview's density: constructs per cell of a grid over the page
   s.density.assign(static_cast<std::size_t>(kOverviewCols * kOverviewRows), 0);
   const diagram::Box& all = s.layout.bounds;
   const auto count = [&](const auto& items) {
@@ -44,6 +42,18 @@ void ensureLayout(App& app, NetViewState& s) {
   count(s.layout.places);
   count(s.layout.transitions);
   count(s.layout.instances);
+}
+
+}  // namespace
+
+void ensureLayout(App& app, NetViewState& s) {
+  const auto revision = app.document().revision();
+  if (s.laid_out_path == s.path && s.laid_out_revision == revision) return;
+  core::Diagnostics diags;
+  s.view = diagram::findView(app.document().model().net, s.path, diags);
+  s.layout = s.view.page ? diagram::layoutPage(*s.view.page, diags) : diagram::NetLayout{};
+  s.error = diags.hasErrors() ? diags.str() : "";
+  indexLayout(s);
   // every item by the name a selection gives it
   s.by_name.clear();
   const std::string& prefix = s.view.prefix.empty() ? s.layout.page : s.view.prefix;
@@ -62,11 +72,6 @@ void ensureLayout(App& app, NetViewState& s) {
   if (s.laid_out_path != s.path) s.fit = true;
   s.laid_out_path = s.path;
   s.laid_out_revision = revision;
-}
-
-net::EditorPos editorAt(diagram::Point p) {
-  const auto snap = [](double v) { return std::round(v / diagram::kEditorUnit * 4.0) / 4.0 + 0.0; };
-  return {snap(p.x), snap(p.y)};
 }
 
 std::vector<std::pair<std::string, net::EditorPos>> pinsOf(const NetViewState& s) {
@@ -324,8 +329,8 @@ std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const R
     for (std::size_t i = 1; i < points.size(); ++i) {
       const diagram::Point a = viewport.toScreen(points[i - 1]), b = viewport.toScreen(points[i]);
       list->AddLine({r.origin.x + static_cast<float>(a.x), r.origin.y + static_cast<float>(a.y)},
-                    {r.origin.x + static_cast<float>(b.x), r.origin.y + static_cast<float>(b.y)}, IM_COL32(255, 170, 0, 200),
-                    one == selection ? 4.0f : 3.0f);
+                    {r.origin.x + static_cast<float>(b.x), r.origin.y + static_cast<float>(b.y)}, IM_COL32(255, 170, 0, 110),
+                    one == selection ? 6.0f : 5.0f);  // under the arc's own line, which shows through
     }
   };
   if (selection.any()) {
@@ -457,15 +462,75 @@ std::vector<std::pair<std::string, net::EditorPos>> selectedConstructs(App& app,
 /// The items a rubber band from `a` to `b` (layout units) holds whole: places, transitions,
 /// instances and arcs.
 std::vector<diagram::ItemRef> inBand(const NetViewState& s, diagram::Point a, diagram::Point b) {
-  const diagram::Box band{{std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)}};
-  std::vector<diagram::ItemRef> out;
-  for (const auto item : s.index->query(band)) {
-    const diagram::Box& box = s.layout.boxOf(item);
-    if (box.min.x >= band.min.x && box.min.y >= band.min.y && box.max.x <= band.max.x && box.max.y <= band.max.y) {
-      out.push_back(item);
-    }
+  return s.index->within({{std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)}});
+}
+
+/// The handles of the selected arc, when it is one of this page: each bend it follows (by its
+/// index in `via`) and its label (-1), at layout points.
+std::vector<std::pair<int, diagram::Point>> arcHandles(App& app, const NetViewState& s) {
+  std::vector<std::pair<int, diagram::Point>> out;
+  const auto& sel = app.document().selection();
+  if (sel.kind != SelectionKind::Arc || app.document().selectedCount() != 1) return out;
+  const auto item = selectedItem(s, sel);
+  if (!item) return out;
+  const auto& arc = s.layout.arcs[item->index];
+  if (arc.follows_via) {
+    for (std::size_t i = 1; i + 1 < arc.points.size(); ++i) out.emplace_back(static_cast<int>(i - 1), arc.points[i]);
   }
+  if (!arc.inscription.empty()) out.emplace_back(-1, arc.label_at ? *arc.label_at : diagram::middleOf(arc.points));
   return out;
+}
+
+/// The selected arc's handle within 6 pixels of canvas point `px`, if any.
+std::optional<std::pair<int, diagram::Point>> handleAt(App& app, const NetViewState& s, const diagram::Viewport& viewport,
+                                                       diagram::Point px) {
+  for (const auto& h : arcHandles(app, s)) {
+    const diagram::Point d = viewport.toScreen(h.second) - px;
+    if (d.x * d.x + d.y * d.y <= 36.0) return h;
+  }
+  return std::nullopt;
+}
+
+/// Starts a drag of arc `item`'s bend `bend` (-1: its label; `fresh`: a new bend there).
+void beginArcDrag(App& app, NetViewState& s, diagram::ItemRef item, int bend, bool fresh) {
+  const auto& arc = s.layout.arcs[item.index];
+  s.arc_drag = ArcDrag{item.index, s.view.page->arcs[arc.spec_index], bend, fresh};
+  ++app.inspector.drag_id;
+}
+
+/// The arc being dragged with its bend or label at layout point `mouse`: one step for the
+/// whole drag.
+void dragArc(App& app, NetViewState& s, diagram::Point mouse) {
+  const ArcDrag& d = *s.arc_drag;
+  net::ArcSpec changed = d.spec;
+  if (d.bend < 0) {
+    changed.label_at = diagram::labelOffset(s.layout.arcs[d.arc], mouse);
+    (*changed.label_at)[0] = std::round((*changed.label_at)[0] * 8.0) / 8.0 + 0.0;  // an eighth of a unit: a short file
+    (*changed.label_at)[1] = std::round((*changed.label_at)[1] * 8.0) / 8.0 + 0.0;
+  } else if (d.fresh) {
+    changed.via.insert(changed.via.begin() + std::min<std::ptrdiff_t>(d.bend, static_cast<std::ptrdiff_t>(changed.via.size())), editorAt(mouse));
+  } else if (static_cast<std::size_t>(d.bend) < changed.via.size()) {
+    changed.via[static_cast<std::size_t>(d.bend)] = editorAt(mouse);
+  }
+  if (changed == d.spec) return;
+  auto e = makeNetEdit(NetEditKind::SetArc, editedPage(s), d.spec.from, d.spec.to);
+  e.arc_kind = d.spec.kind;
+  e.arc = std::move(changed);
+  e.drag = app.inspector.drag_id;
+  (void)perform(app, std::move(e));
+}
+
+/// Removes bend `bend` of the selected arc (a double-click on it).
+void removeBend(App& app, NetViewState& s, int bend) {
+  const auto item = selectedItem(s, app.document().selection());
+  if (!item || bend < 0) return;
+  net::ArcSpec changed = s.view.page->arcs[s.layout.arcs[item->index].spec_index];
+  if (static_cast<std::size_t>(bend) >= changed.via.size()) return;
+  auto e = makeNetEdit(NetEditKind::SetArc, editedPage(s), changed.from, changed.to);
+  e.arc_kind = changed.kind;
+  changed.via.erase(changed.via.begin() + bend);
+  e.arc = std::move(changed);
+  (void)perform(app, std::move(e));
 }
 
 /// A click that was not the end of a drag: the left button let go where it went down.
@@ -532,15 +597,33 @@ void addConstructAt(App& app, NetViewState& s, char letter, diagram::Point at) {
 /// drag on a selected construct moves the selection (one undo step), a drag on paper draws a
 /// rubber band that selects what it holds whole, Alt+drag pans. Returns true while the
 /// selection moves.
-bool selectGestures(App& app, NetViewState& s, const Region& r, diagram::Point mouse, std::optional<diagram::ItemRef> under) {
+bool selectGestures(App& app, NetViewState& s, const Region& r, const diagram::Viewport& viewport, diagram::Point mouse,
+                    std::optional<diagram::ItemRef> under) {
   const ImGuiIO& io = ImGui::GetIO();
   const bool adds = io.KeyShift || io.KeyCtrl;
   auto& doc = app.document();
+  const auto handle = r.hovered && s.view.page != nullptr ? handleAt(app, s, viewport, r.mouse) : std::nullopt;
+  if (handle && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
+    removeBend(app, s, handle->first);  // a double-click on a bend takes it away
+    s.arc_drag.reset();
+    return false;
+  }
   if (r.activated && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
     s.panning = io.KeyAlt;
     s.toggling.reset();
+    s.arc_drag.reset();
     if (s.panning) {
       // the view pans; nothing is selected
+    } else if (handle && !adds) {
+      // the selected arc's bend or label: dragged
+      beginArcDrag(app, s, *selectedItem(s, doc.selection()), handle->first, false);
+    } else if (under && under->kind == diagram::ItemKind::Arc && !adds && s.view.page != nullptr) {
+      // an arc's path: selected, and a drag from there bends it
+      doc.select(selectionOf(s, *under));
+      const auto& arc = s.layout.arcs[under->index];
+      const auto hit = diagram::nearestSegment(arc, mouse);
+      beginArcDrag(app, s, *under, arc.follows_via ? static_cast<int>(hit.segment) : 0, true);
+      if (!arc.follows_via) s.arc_drag->spec.via.clear();  // a straight (or Graphviz's) route: the new bend alone
     } else if (!under) {
       s.band_from = mouse;
       s.band_adds = adds;
@@ -560,6 +643,10 @@ bool selectGestures(App& app, NetViewState& s, const Region& r, diagram::Point m
   }
   const bool dragging = r.active && ImGui::IsMouseDragging(ImGuiMouseButton_Left);
   if (dragging) s.toggling.reset();
+  if (s.arc_drag && dragging) {
+    dragArc(app, s, mouse);
+    return true;
+  }
   // the selection follows the mouse, on a grid of a quarter unit, as one step
   bool moving = false;
   if (!s.moving.empty() && dragging && !s.moving_from.empty()) {
@@ -572,7 +659,18 @@ bool selectGestures(App& app, NetViewState& s, const Region& r, diagram::Point m
       for (const auto& [name, at] : s.moving_from) e.moves.emplace_back(name, net::EditorPos{at[0] + by[0], at[1] + by[1]});
       e.drag = app.inspector.drag_id;
       e.pins = pinsOf(s);
-      (void)perform(app, std::move(e));
+      if (perform(app, std::move(e)).empty() && !s.layout.from_graphviz && s.view.page != nullptr &&
+          s.laid_out_path == s.path) {
+        // what moved laid out again in place, not the whole page (a drag on a large page)
+        std::vector<diagram::ItemRef> moved;
+        const std::string& prefix = s.view.prefix.empty() ? s.layout.page : s.view.prefix;
+        for (const auto& [name, at] : s.moving_from) {
+          if (const auto it = s.by_name.find(prefix + "/" + name); it != s.by_name.end()) moved.push_back(it->second);
+        }
+        diagram::relayoutMoved(s.layout, *s.view.page, moved);
+        indexLayout(s);
+        s.laid_out_revision = app.document().revision();
+      }
     }
   }
   if (ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
@@ -594,6 +692,7 @@ bool selectGestures(App& app, NetViewState& s, const Region& r, diagram::Point m
     s.moving.clear();
     s.moving_from.clear();
     s.panning = false;
+    s.arc_drag.reset();
   }
   return moving;
 }
@@ -621,7 +720,7 @@ bool editGestures(App& app, NetViewState& s, const Region& r, const diagram::Vie
   switch (s.overview_hot ? NetTool::Select : s.tool) {
     case NetTool::Select:
       if (s.overview_hot) break;  // the overview takes the left button
-      if (s.arc_from.empty()) moving = selectGestures(app, s, r, mouse, under);
+      if (s.arc_from.empty()) moving = selectGestures(app, s, r, viewport, mouse, under);
       break;
     case NetTool::Place:
     case NetTool::Transition:
@@ -814,14 +913,33 @@ bool drawOverview(NetViewState& s, const Region& r, nlohmann::json& report) {
 }
 
 /// Draws over the page what a gesture under way shows: a rubber band, an arc being drawn.
-void paintGestures(const NetViewState& s, const Region& r, const diagram::Viewport& viewport) {
+void paintGestures(App& app, const NetViewState& s, const Region& r, const diagram::Viewport& viewport) {
   ImDrawList* list = ImGui::GetWindowDrawList();
   const auto px = [&](diagram::Point p) { return ImVec2{r.origin.x + static_cast<float>(p.x), r.origin.y + static_cast<float>(p.y)}; };
+  // the selected arc's handles: a square on each bend, a diamond on its label
+  if (s.view.page != nullptr) {
+    for (const auto& [bend, at] : arcHandles(app, s)) {
+      const ImVec2 c = px(viewport.toScreen(at));
+      if (bend >= 0) {
+        list->AddRectFilled({c.x - 4, c.y - 4}, {c.x + 4, c.y + 4}, IM_COL32(255, 255, 255, 255));
+        list->AddRect({c.x - 4, c.y - 4}, {c.x + 4, c.y + 4}, IM_COL32(255, 140, 0, 255), 0.0f, 0, 1.5f);
+      } else {
+        list->AddQuad({c.x, c.y - 6}, {c.x + 6, c.y}, {c.x, c.y + 6}, {c.x - 6, c.y}, IM_COL32(255, 140, 0, 255), 1.5f);
+      }
+    }
+  }
   if (s.band_from) {
     const diagram::Point a = viewport.toScreen(*s.band_from);
     const diagram::Point lo{std::min(a.x, r.mouse.x), std::min(a.y, r.mouse.y)}, hi{std::max(a.x, r.mouse.x), std::max(a.y, r.mouse.y)};
     list->AddRectFilled(px(lo), px(hi), IM_COL32(60, 120, 220, 40));
     list->AddRect(px(lo), px(hi), IM_COL32(60, 120, 220, 220), 0.0f, 0, 1.0f);
+    // what letting go would select: its places, transitions and instances framed
+    for (const auto item : inBand(s, *s.band_from, viewport.toLayout(r.mouse))) {
+      if (item.kind == diagram::ItemKind::Arc) continue;
+      const diagram::Box& box = s.layout.boxOf(item);
+      list->AddRect(px(viewport.toScreen(box.min) - diagram::Point{3, 3}), px(viewport.toScreen(box.max) + diagram::Point{3, 3}),
+                    IM_COL32(60, 120, 220, 255), 2.0f, 0, 1.5f);
+    }
   }
   if (!s.arc_from.empty()) {
     const auto it = s.by_name.find((s.view.prefix.empty() ? s.layout.page : s.view.prefix) + "/" + s.arc_from);
@@ -889,7 +1007,17 @@ void drawNetView(App& app, const Rect& at, nlohmann::json& report) {
   auto shown = s.viewport;
   shown.min_label_px = kNetViewLabelPx;  // names a user can read where there is room for them
   const auto under = clickAndPaint(app, s, r, shown, report, false);
-  paintGestures(s, r, shown);
+  paintGestures(app, s, r, shown);
+  // the selected arc's handles, for replays and tests: "bend 0", ..., "label"
+  nlohmann::json handles = nlohmann::json::object();
+  if (s.view.page != nullptr) {
+    for (const auto& [bend, spot] : arcHandles(app, s)) {
+      const diagram::Point p = shown.toScreen(spot);
+      handles[bend < 0 ? std::string("label") : "bend " + std::to_string(bend)] = {
+          std::lround(static_cast<double>(r.origin.x) + p.x), std::lround(static_cast<double>(r.origin.y) + p.y)};
+    }
+  }
+  report["handles"] = handles;
   (void)drawOverview(s, r, report);
   report["label_px"] = diagram::labelPx(shown);
   if (r.hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && under &&

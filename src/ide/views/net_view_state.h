@@ -31,6 +31,14 @@ enum class NetTool : std::uint8_t {
   Arc,         ///< a drag (or two clicks) from one end to the other adds an arc
 };
 
+/// A drag of a selected arc's bend or label (or of its path, which adds a bend).
+struct ArcDrag {
+  std::uint32_t arc = 0;  ///< the arc's index in the layout
+  net::ArcSpec spec;      ///< the arc as it was when the drag began
+  int bend = -1;          ///< the index in `via` of the bend dragged; -1: the label
+  bool fresh = false;     ///< the bend is new: it goes into `via` at `bend` with the first move
+};
+
 /// The net view's own state.
 struct NetViewState {
   std::string path;                  ///< the page or instance shown (diagram::findView's path; "" the first page)
@@ -66,6 +74,7 @@ struct NetViewState {
   bool band_adds = false;            ///< the band adds to the selection (Shift or Ctrl held)
   std::optional<diagram::ItemRef> toggling;  ///< a Shift- or Ctrl-click's item, toggled unless it becomes a drag
   bool panning = false;              ///< an Alt+left drag pans
+  std::optional<ArcDrag> arc_drag;   ///< a bend or label being dragged
   /// The overview of a page larger than the view: how many constructs fall in each cell of a
   /// kOverviewCols x kOverviewRows grid over the page's bounds (made with the layout).
   std::vector<std::uint32_t> density;
@@ -87,7 +96,7 @@ class App;
 /// Lays out the page `s` shows again when the page or the document changed.
 void ensureLayout(App& app, NetViewState& s);
 /// A layout point in editor units (`at:`), on a grid of a quarter unit (never -0).
-net::EditorPos editorAt(diagram::Point p);
+inline net::EditorPos editorAt(diagram::Point p) { return diagram::editorPosition(p); }
 /// The Graphviz pins of a page laid out by Graphviz: where each construct is drawn now, so
 /// that a move keeps the page's look (none for a page with positions).
 std::vector<std::pair<std::string, net::EditorPos>> pinsOf(const NetViewState& s);
