@@ -486,7 +486,8 @@ std::optional<std::pair<int, diagram::Point>> handleAt(App& app, const NetViewSt
                                                        diagram::Point px) {
   for (const auto& h : arcHandles(app, s)) {
     const diagram::Point d = viewport.toScreen(h.second) - px;
-    if (d.x * d.x + d.y * d.y <= 36.0) return h;
+    // a bend within 6 pixels; the label within its text (about 12 by 8 pixels about its middle)
+    if (h.first >= 0 ? d.x * d.x + d.y * d.y <= 36.0 : std::abs(d.x) <= 12.0 && std::abs(d.y) <= 8.0) return h;
   }
   return std::nullopt;
 }
@@ -924,7 +925,12 @@ void paintGestures(App& app, const NetViewState& s, const Region& r, const diagr
         list->AddRectFilled({c.x - 4, c.y - 4}, {c.x + 4, c.y + 4}, IM_COL32(255, 255, 255, 255));
         list->AddRect({c.x - 4, c.y - 4}, {c.x + 4, c.y + 4}, IM_COL32(255, 140, 0, 255), 0.0f, 0, 1.5f);
       } else {
-        list->AddQuad({c.x, c.y - 6}, {c.x + 6, c.y}, {c.x, c.y + 6}, {c.x - 6, c.y}, IM_COL32(255, 140, 0, 255), 1.5f);
+        // the label: framed, so that the text stays readable (a drag on it moves it)
+        const auto item = selectedItem(s, app.document().selection());
+        const std::string& text = item ? s.layout.arcs[item->index].inscription : std::string();
+        const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+        const float hw = std::max(8.0f, size.x * 0.5f + 4), hh = std::max(7.0f, size.y * 0.5f + 1);
+        list->AddRect({c.x - hw, c.y - hh}, {c.x + hw, c.y + hh}, IM_COL32(255, 140, 0, 255), 3.0f, 0, 1.5f);
       }
     }
   }
