@@ -275,8 +275,14 @@ NetLayout layoutPage(const net::PageSpec& page, core::Diagnostics& diags) {
   auto at = [](const std::optional<net::EditorPos>& p) {
     return p ? Point{(*p)[0] * kEditorUnit, (*p)[1] * kEditorUnit} : Point{};
   };
-  for (const auto& p : page.places) l.places.push_back({p.name, at(p.position), {}});
-  for (const auto& t : page.transitions) l.transitions.push_back({t.name, at(t.position), {}});
+  for (const auto& p : page.places) {
+    // the tags: a published place (a port of the page type), a fusion set's member
+    const bool port = std::any_of(page.references.begin(), page.references.end(), [&](const auto& r) { return r.place == p.name; });
+    std::string tag = port ? "port" : "";
+    if (!p.fusion.empty()) tag += (tag.empty() ? "fusion " : ", fusion ") + p.fusion;
+    l.places.push_back({p.name, at(p.position), {}, std::move(tag)});
+  }
+  for (const auto& t : page.transitions) l.transitions.push_back({t.name, at(t.position), {}, {}});
   std::vector<double> widths;
   for (const auto& i : page.instances) {
     InstanceLayout box;

@@ -279,6 +279,13 @@ class Painter {
     if (s_ != nullptr && k < s_->places.size()) tokens(s_->places[k], c, r);
     taken_.push_back(Box::around(c, r, r));
     if (labels_) name({c.x, c.y + r + kLabelGap * v_.zoom}, p.name, VAlign::Top);
+    if (labels_ && !p.tag.empty()) {
+      // the port or fusion tag: above and beside the place, where it covers least
+      Label l{p.tag, std::max(font_ * 0.85, kMinFontPx), HAlign::Left, VAlign::Bottom, colours::kInstanceLine, {}};
+      const double d = r * 0.75;
+      l.anchors = {{c.x + d, c.y - d}, {c.x + r + 3, c.y + l.size / 2}, {c.x + d, c.y + d + l.size}};
+      pending_.push_back(std::move(l));
+    }
   }
 
  private:

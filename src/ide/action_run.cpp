@@ -254,8 +254,7 @@ std::string performAction(App& app, ActionId id) {
     case ActionId::Undo: app.undo(); break;
     case ActionId::Redo: app.redo(); break;
     case ActionId::Cut:
-      app.copySelection();
-      app.deleteSelection();
+      if (app.copySelection()) app.deleteSelection();  // nothing goes that the clipboard does not hold
       break;
     case ActionId::Copy: app.copySelection(); break;
     case ActionId::Paste: app.paste(); break;

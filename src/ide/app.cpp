@@ -240,7 +240,7 @@ const TokenTypes& App::tokenTypes() {
   return token_types_;
 }
 
-void App::copySelection() {
+bool App::copySelection() {
   // the clipboard holds a model file: the node's subtree as its scene, or the place or
   // transition on a page; it pastes into any model, and reads as text anywhere else
   const auto& sel = doc_->selection();
@@ -248,17 +248,25 @@ void App::copySelection() {
   if (sel.kind == SelectionKind::Node) {
     const auto* s = doc_->scene();
     const auto* node = s != nullptr ? s->find(sel.name) : nullptr;
-    if (node == nullptr) return;
+    if (node == nullptr) return false;
     auto fragment = std::make_shared<scene::Scene>(s->types());
     fragment->copy(*node, fragment->root());
     m.scene = fragment;
+  } else if (const auto net_selected = netSelection(*this); std::any_of(
+                 net_selected.constructs.begin(), net_selected.constructs.end(), [&](const auto& c) {
+                   const auto* page = findPage(doc_->model().net, net_selected.page);
+                   return page != nullptr && std::any_of(page->instances.begin(), page->instances.end(),
+                                                         [&](const auto& i) { return i.name == c.first; });
+                 })) {
+    message = "an instance is not copied: select places and transitions (with the arcs among them) to copy";
+    return false;
   } else if (auto many = copyNetSelection(*this); !many.places.empty() || !many.transitions.empty()) {
     // the net view's selection, with the arcs among it
     m.net.pages.push_back(std::move(many));
   } else if (sel.kind == SelectionKind::Place || sel.kind == SelectionKind::Transition) {
     const auto at = locateConstruct(doc_->model().net, sel.name);
     auto* page = at ? findPage(doc_->editableNet(), at->page) : nullptr;
-    if (page == nullptr) return;
+    if (page == nullptr) return false;
     net::PageSpec fragment;
     fragment.name = at->page;
     for (const auto& p : page->places) {
@@ -270,7 +278,7 @@ void App::copySelection() {
     m.net.pages.push_back(std::move(fragment));
   } else {
     message = "select a node, a place or a transition to copy";
-    return;
+    return false;
   }
   // the parameters its fields name go with it, so that it reads back
   m.params = doc_->model().params;
@@ -279,6 +287,7 @@ void App::copySelection() {
   const auto count = m.net.pages.empty() ? 1 : m.net.pages.front().places.size() + m.net.pages.front().transitions.size();
   message = count > 1 ? "copied " + std::to_string(count) + " places and transitions (as a model file)"
                       : "copied " + sel.name + " (as a model file)";
+  return true;
 }
 
 void App::paste() {

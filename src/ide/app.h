@@ -324,10 +324,13 @@ class App {
   /// Saves the model to its file (the message says how it went).
   void save();
   /// Deletes the selected node (refused, with where, when the net holds it: the tree's menu
-  /// offers to take it out of the marking too) or place or transition (with its arcs); edit mode.
+  /// offers to take it out of the marking too), or what is selected on the net view's page (with
+  /// the arcs of what goes), as one step; edit mode.
   void deleteSelection();
-  /// Puts the selected node's subtree on the clipboard as a model file holding it (Ctrl+C).
-  void copySelection();
+  /// Puts the selected node's subtree, or the net view's selected places and transitions with
+  /// the arcs among them, on the clipboard as a model file holding them (Ctrl+C); false (with
+  /// the reason in the status bar) when nothing it takes is selected, or an instance is.
+  bool copySelection();
   /// Pastes the clipboard's scene nodes (a model file's) under the selected node, or beside it
   /// when it takes no children, or at the top; names taken there get a number (Ctrl+V).
   void paste();

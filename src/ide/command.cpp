@@ -25,10 +25,7 @@ std::string UndoStack::push(std::unique_ptr<Command> command, Document& doc) {
 namespace {
 
 /// Selects what of `selection` still names something in `doc`.
-void selectIfThere(Document& doc, std::vector<Selection> selection) {
-  std::erase_if(selection, [&](const Selection& one) { return !namesSomething(doc, one); });
-  doc.selectAll(selection);
-}
+void selectIfThere(Document& doc, std::vector<Selection> selection) { doc.selectAll(stillNamed(doc, std::move(selection))); }
 
 }  // namespace
 

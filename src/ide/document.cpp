@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 #include <system_error>
+#include <unordered_set>
 #include <vector>
 
 #include "gdpn/core/file.h"
@@ -310,9 +311,7 @@ bool Document::reload() {
   source_ = std::move(*text);
   diagnostics_ = std::move(diags);
   undo_.clear();
-  auto kept = selections();
-  std::erase_if(kept, [&](const Selection& one) { return !namesSomething(*this, one); });
-  selectAll(kept);
+  selectAll(stillNamed(*this, selections()));
   return true;
 }
 
@@ -325,8 +324,9 @@ std::vector<Selection> Document::selections() const {
 
 void Document::selectAll(const std::vector<Selection>& all) {
   select({});
+  std::unordered_set<std::string> seen;  // kind and name: repeats are left out (a page's worth costs its size)
   for (const auto& one : all) {
-    if (!one.any() || isSelected(one)) continue;
+    if (!one.any() || !seen.insert(char(static_cast<int>(one.kind) + '0') + one.name).second) continue;
     if (selection_.any()) also_.push_back(std::move(selection_));
     selection_ = one;
   }

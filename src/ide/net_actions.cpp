@@ -123,6 +123,7 @@ std::string reverseSelectedArc(App& app) {
   e.arc_kind = was.kind;
   net::ArcSpec turned = was;
   std::swap(turned.from, turned.to);
+  std::reverse(turned.via.begin(), turned.via.end());  // the same route, run the other way
   e.arc = turned;
   if (auto why = perform(app, std::move(e)); !why.empty()) return why;
   app.document().select({SelectionKind::Arc, arcName(sel.prefix, turned.from, turned.to, turned.kind)});
@@ -201,8 +202,7 @@ std::string arrangeNetSelection(App& app, Arrange how) {
     }
     e.moves.emplace_back(items[i].first, at);
   }
-  NetViewState& s = app.netView();
-  if (s.layout.from_graphviz) e.pins = pinsOf(s);
+  e.pins = pinsOf(app.netView());
   if (auto why = perform(app, std::move(e)); !why.empty()) return why;
   app.message = "arranged " + std::to_string(items.size()) + " items";
   return {};

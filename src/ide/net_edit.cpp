@@ -176,6 +176,7 @@ std::string paste(net::PageSpec& p, const net::PageSpec& fragment, std::string& 
     if (from == renamed.end() || to == renamed.end()) continue;
     a.from = from->second;
     a.to = to->second;
+    for (auto& bend : a.via) bend = {bend[0] + 0.5, bend[1] + 0.5};  // with its ends
     pasted.arcs.push_back(a);
     p.arcs.push_back(std::move(a));
   }
@@ -233,9 +234,6 @@ std::string moveAll(net::PageSpec& p, const std::vector<std::pair<std::string, n
   return {};
 }
 
-/// True when `a` is the arc `e` names (source, target and kind).
-bool sameArc(const net::ArcSpec& a, const net::ArcSpec& b) { return a.from == b.from && a.to == b.to && a.kind == b.kind; }
-
 /// True when page `page` is `name` or holds, through its instances at any depth, page type `name`.
 bool holds(const net::NetSpec& net, const net::PageSpec& page, const std::string& name, int depth = 0) {
   if (page.name == name) return true;
@@ -257,10 +255,15 @@ std::string deleteAll(net::PageSpec& p, const NetEdit& e) {
     }
     gone.insert(n);
   }
+  // arcs by source, target and kind (a page's worth of them costs its size)
+  const auto key = [](const net::ArcSpec& a) { return a.from + '\n' + a.to + '\n' + net::arcKindName(a.kind); };
+  std::unordered_set<std::string> on_page, named;
+  for (const auto& a : p.arcs) on_page.insert(key(a));
   for (const auto& a : e.arcs) {
-    if (std::none_of(p.arcs.begin(), p.arcs.end(), [&](const net::ArcSpec& x) { return sameArc(x, a); })) {
+    if (!on_page.contains(key(a))) {
       return std::string("no ") + kindName(a.kind) + " from '" + a.from + "' to '" + a.to + "' on page '" + p.name + "'";
     }
+    named.insert(key(a));
   }
   const auto instanceOf = [](std::string_view end) { return end.substr(0, end.find('/')); };
   std::erase_if(p.places, [&](const auto& x) { return gone.contains(x.name); });
@@ -269,8 +272,7 @@ std::string deleteAll(net::PageSpec& p, const NetEdit& e) {
   std::erase_if(p.arcs, [&](const net::ArcSpec& a) {
     // an arc to a link goes with its instance
     return gone.contains(a.from) || gone.contains(a.to) || gone.contains(instanceOf(a.from)) ||
-           gone.contains(instanceOf(a.to)) ||
-           std::any_of(e.arcs.begin(), e.arcs.end(), [&](const net::ArcSpec& x) { return sameArc(x, a); });
+           gone.contains(instanceOf(a.to)) || (!named.empty() && named.contains(key(a)));
   });
   return {};
 }
@@ -641,6 +643,25 @@ std::string NetEditCommand::apply(Document& doc) {
   if (page == nullptr) return "no page or page type '" + edit_.page + "'";
   made_.clear();
   pasted_ = {};
+  if (edit_.kind == NetEditKind::SetArc && edit_.arc) {
+    // a route or a label changed alone (a bend or a label dragged): the arc alone is kept for undo
+    const auto it = findArc(*page, edit_);
+    if (it != page->arcs.end()) {
+      net::ArcSpec routed = *it;
+      routed.via = edit_.arc->via;
+      routed.label_at = edit_.arc->label_at;
+      if (routed == *edit_.arc) {
+        arc_before_.emplace(static_cast<std::size_t>(it - page->arcs.begin()), *it);
+        it->via = edit_.arc->via;
+        it->label_at = edit_.arc->label_at;
+        before_.reset();
+        positions_.reset();
+        doc.touched(false);
+        return {};
+      }
+    }
+  }
+  arc_before_.reset();
   if (edit_.kind == NetEditKind::Move || edit_.kind == NetEditKind::MoveMany) {
     // a move changes positions and bends alone: they are kept for undo, not the page
     auto was = positionsOf<Positions>(*page);
@@ -650,11 +671,13 @@ std::string NetEditCommand::apply(Document& doc) {
     }
     positions_ = std::move(was);
     before_.reset();
+    arc_before_.reset();
     doc.touched(false);
     return {};
   }
   net::PageSpec changed = *page;
   if (auto why = edit(net, changed, edit_, made_, pasted_); !why.empty()) return why;
+  positions_.reset();
   before_ = std::move(*page);
   *page = std::move(changed);
   doc.touched(false);
@@ -664,7 +687,8 @@ std::string NetEditCommand::apply(Document& doc) {
 void NetEditCommand::revert(Document& doc) {
   net::PageSpec* page = findPage(doc.editableNet(), edit_.page);
   if (page == nullptr) return;
-  if (positions_) restorePositions(*page, *positions_);
+  if (arc_before_ && arc_before_->first < page->arcs.size()) page->arcs[arc_before_->first] = arc_before_->second;
+  else if (positions_) restorePositions(*page, *positions_);
   else if (before_) *page = *before_;
   else return;
   doc.touched(false);

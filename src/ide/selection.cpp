@@ -3,6 +3,8 @@
 #include "gdpn/ide/selection.h"
 
 #include <algorithm>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "gdpn/ide/document.h"
 #include "gdpn/ide/net_edit.h"
@@ -72,6 +74,46 @@ bool namesSomething(const Document& doc, const Selection& selection) {
              });
   }
   return false;
+}
+
+std::vector<Selection> stillNamed(const Document& doc, std::vector<Selection> selections) {
+  if (selections.size() < 8) {  // a few: one by one
+    std::erase_if(selections, [&](const Selection& one) { return !namesSomething(doc, one); });
+    return selections;
+  }
+  // per page: its places (and published references), transitions, instances and arcs, by kind and name
+  std::unordered_map<std::string, std::unordered_set<std::string>> names;
+  const auto& net = doc.model().net;
+  const auto namesOf = [&](const std::string& page_name) -> const std::unordered_set<std::string>& {
+    auto [it, fresh] = names.try_emplace(page_name);
+    if (!fresh) return it->second;
+    const auto* page = findPage(net, page_name);
+    if (page == nullptr) return it->second;
+    const auto key = [](SelectionKind kind, const std::string& name) { return char(static_cast<int>(kind) + '0') + name; };
+    for (const auto& p : page->places) it->second.insert(key(SelectionKind::Place, p.name));
+    for (const auto& r : page->references) it->second.insert(key(SelectionKind::Place, r.place));
+    for (const auto& t : page->transitions) it->second.insert(key(SelectionKind::Transition, t.name));
+    for (const auto& i : page->instances) it->second.insert(key(SelectionKind::Instance, i.name));
+    for (const auto& a : page->arcs) it->second.insert(key(SelectionKind::Arc, arcName("", a.from, a.to, a.kind)));
+    return it->second;
+  };
+  std::erase_if(selections, [&](const Selection& one) {
+    switch (one.kind) {
+      case SelectionKind::None: return true;
+      case SelectionKind::Node: return !namesSomething(doc, one);
+      case SelectionKind::Place:
+      case SelectionKind::Transition:
+      case SelectionKind::Instance:
+      case SelectionKind::Arc: break;
+    }
+    const auto arc = one.kind == SelectionKind::Arc ? parseArcName(one.name) : std::nullopt;
+    if (one.kind == SelectionKind::Arc && !arc) return true;
+    const auto at = locateConstruct(net, arc ? arc->prefix + "/_" : one.name);
+    if (!at) return true;
+    const std::string local = arc ? arcName("", arc->from, arc->to, arc->kind) : at->name;
+    return !namesOf(at->page).contains(char(static_cast<int>(one.kind) + '0') + local);
+  });
+  return selections;
 }
 
 }  // namespace gdpn::ide

@@ -218,5 +218,29 @@ TEST(DiagramRoute, MovedItemsLaidOutAgainInPlaceDrawAsTheWholePageLaidOutAgain) 
   }
 }
 
+TEST(DiagramTags, APublishedPlaceIsTaggedPortAndAFusionMemberWithItsSet) {
+  net::PageSpec page;
+  page.name = "cell";
+  page.places = {testing::place("enter", 0, net::EditorPos{0, 0}), testing::place("stock", 2, net::EditorPos{2, 0}),
+                 testing::place("work", 0, net::EditorPos{4, 0})};
+  page.places[1].fusion = "parts";
+  page.places[2].fusion = "parts";
+  page.references.push_back({"enter", {}});
+  page.references.push_back({"work", {}});
+  core::Diagnostics diags;
+  const auto l = layoutPage(page, diags);
+  EXPECT_EQ(l.places[0].tag, "port");
+  EXPECT_EQ(l.places[1].tag, "fusion parts");
+  EXPECT_EQ(l.places[2].tag, "port, fusion parts");
+  // drawn beside their places
+  SvgCanvas canvas(400, 200);
+  const SpatialIndex index(l);
+  paintNet(l, index, nullptr, Viewport{{-60, -60}, 1.0}, canvas);
+  const std::string svg = canvas.svg();
+  EXPECT_NE(svg.find(">port</text>"), std::string::npos) << svg;
+  EXPECT_NE(svg.find(">fusion parts</text>"), std::string::npos) << svg;
+  EXPECT_NE(svg.find(">port, fusion parts</text>"), std::string::npos) << svg;
+}
+
 }  // namespace
 }  // namespace gdpn::diagram

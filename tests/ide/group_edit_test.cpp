@@ -161,6 +161,48 @@ TEST_F(GroupEdit, SeveralThingsAreSelectedAndAnUndoSelectsThemAgain) {
   EXPECT_EQ(doc_->selectedCount(), 0u);
 }
 
+TEST_F(GroupEdit, APastedArcBringsItsBendsAlongWithItsEnds) {
+  net::PageSpec fragment;
+  fragment.places.push_back(main().places[0]);
+  fragment.transitions.push_back(main().transitions[0]);
+  net::ArcSpec arc = main().arcs[0];
+  arc.via = {{1, 1}};
+  fragment.arcs.push_back(arc);
+  auto e = makeNetEdit(NetEditKind::Paste, "main", {});
+  e.fragment = fragment;
+  ASSERT_EQ(run(e), "");
+  const auto& pasted = main().arcs.back();
+  EXPECT_EQ(pasted.from, "a_1");
+  EXPECT_EQ(pasted.via, (std::vector<net::EditorPos>{{1.5, 1.5}}));  // half a unit down and right, as its ends
+}
+
+TEST_F(GroupEdit, ABendDraggedKeepsOnlyTheArcForUndoAndAGroupMoveTakesItsBends) {
+  const auto start = doc_->text();
+  for (int step = 1; step <= 3; ++step) {  // a bend dragged over three frames: one step
+    auto e = makeNetEdit(NetEditKind::SetArc, "main", "a", "t");
+    net::ArcSpec arc = main().arcs[0];
+    arc.via = {{1, 0.5 * step}};
+    e.arc = arc;
+    e.drag = 3;
+    ASSERT_EQ(run(e), "");
+  }
+  EXPECT_EQ(doc_->history().depth(), 1u);
+  EXPECT_EQ(main().arcs[0].via, (std::vector<net::EditorPos>{{1, 1.5}}));
+  const auto bent = doc_->text();
+  // the two ends moved together: the bend goes along; one end alone: it stays
+  auto both = makeNetEdit(NetEditKind::MoveMany, "main", {});
+  both.moves = {{"a", {0, 1}}, {"t", {2, 1}}};
+  ASSERT_EQ(run(both), "");
+  EXPECT_EQ(main().arcs[0].via, (std::vector<net::EditorPos>{{1, 2.5}}));
+  auto one = makeNetEdit(NetEditKind::MoveMany, "main", {});
+  one.moves = {{"a", {0, 3}}};
+  ASSERT_EQ(run(one), "");
+  EXPECT_EQ(main().arcs[0].via, (std::vector<net::EditorPos>{{1, 2.5}}));
+  testing::undoesToStartAndRedoesToEnd(*doc_, start, "a bend dragged, then moves");
+  ASSERT_TRUE(doc_->undo() && doc_->undo());
+  EXPECT_EQ(doc_->text(), bent);
+}
+
 TEST(ArcName, ReadsBackWhatItWritesLinksAndKindsIncluded) {
   for (const auto kind : {net::ArcKind::Normal, net::ArcKind::Test, net::ArcKind::Inhibitor}) {
     const auto name = arcName("line/cellA", "exit", "cellB/enter", kind);

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "ide/headless_fixture.h"
@@ -203,6 +204,63 @@ TEST_F(NetEditor, ARubberBandOfFiveItemsMovesAndIsDeletedAsOneUndoStep) {
   EXPECT_EQ(gdpn::testing::fileBytes(model_), kModel);
 }
 
+TEST_F(NetEditor, TheMenusDeleteTakesAPlaceWithItsArcsAndCutTakesOnlyWhatItCopies) {
+  const auto places = start_["net_view"]["at"];
+  // the right-click menu's Delete on t: its two arcs go with it, one step
+  const std::string menu = "- drag: {from: " + at(places["main/t"]) + ", to: " + at(places["main/t"]) + ", button: right}\n";
+  auto r = run(menu);
+  ASSERT_TRUE(r["net_view"]["menu"].contains("Delete")) << r["net_view"]["menu"].dump();
+  r = run(menu + "- click: " + at(r["net_view"]["menu"]["Delete"]) + "\n");
+  EXPECT_EQ(r["net_view"]["transitions"], 2);
+  EXPECT_EQ(r["net_view"]["arcs"], 3);
+  EXPECT_EQ(r["undo"]["label"], "delete main/t");
+  // an arc alone is not copied, so Cut leaves it
+  r = run("- select: 'main: a -> t'\n- press: cut\n");
+  EXPECT_EQ(r["net_view"]["arcs"], 5);
+  EXPECT_EQ(r["undo"]["depth"], 0);
+  // a click on one of a band's items selects it alone
+  const auto band = dragLine(off(places["main/a"], -30, -30), off(places["main/u"], 20, 30));
+  r = run(band + "- click: " + at(places["main/c"]) + "\n");
+  EXPECT_EQ(r["selection"]["count"], 1);
+  EXPECT_EQ(r["selection"]["name"], "main/c");
+}
+
+// a and t off the quarter grid, joined by an arc with two bends
+constexpr const char* kOffGrid = R"Y(gdpn: 1
+pages:
+  main:
+    places:
+      a: {tokens: 1, at: [0.1, 0]}
+      b: {at: [4, 0]}
+    transitions:
+      t: {at: [2, 0]}
+    arcs:
+      - {from: a, to: t, via: [[0.5, 1], [1.5, 2]]}
+      - t -> b
+)Y";
+
+TEST_F(HeadlessIde, AReversedArcRunsItsRouteTheOtherWayAndAGroupKeepsItsOwnPositions) {
+  const auto model = write("off.gdpn.yaml", kOffGrid);
+  size_ = "1600x900";
+  auto r = replayOn(model, "- select: 'main: a -> t'\n- press: reverse-arc\n- press: save\n");
+  EXPECT_EQ(r["selection"]["name"], "main: t -> a");
+  auto saved = gdpn::testing::fileBytes(model);
+  EXPECT_NE(saved.find("{from: t, to: a, via: [[1.5, 2], [0.5, 1]]}"), std::string::npos) << saved;
+  // a and t dragged together: each keeps its own position plus the step, and the bends go along
+  write("off.gdpn.yaml", kOffGrid);  // the file as it was
+  r = replayOn(model, "[]");
+  const auto pa = r["net_view"]["at"]["main/a"], pt = r["net_view"]["at"]["main/t"];
+  const double unit = pt[0].get<double>() - pa[0].get<double>();  // about 1.9 units' pixels
+  const auto down = off(pt, 0, static_cast<int>(std::lround(unit / 1.9)));  // one unit down
+  r = replayOn(model, "- select: main/a\n- hold: ctrl\n- click: " + at(pt) + "\n- release: ctrl\n" + dragLine(pt, down) +
+                          "- press: save\n");
+  EXPECT_EQ(r["selection"]["count"], 2);
+  saved = gdpn::testing::fileBytes(model);
+  EXPECT_NE(saved.find("a: {tokens: 1, at: [0.1, 1]}"), std::string::npos) << saved;
+  EXPECT_NE(saved.find("t: {at: [2, 1]}"), std::string::npos) << saved;
+  EXPECT_NE(saved.find("via: [[0.5, 2], [1.5, 3]]"), std::string::npos) << saved;
+}
+
 TEST_F(NetEditor, ToolsAddPlacesAndTransitionsWithAClickAndArcsWithADrag) {
   const auto places = start_["net_view"]["at"];
   const auto tools = start_["net_view"]["tools"];
@@ -265,6 +323,7 @@ TEST_F(HeadlessIde, AnInstanceIsAddedFromThePapersMenuAndAnArcDrawnToItChoosesIt
   r = replayOn(model, add);
   EXPECT_EQ(r["selection"]["name"], "line/cell1");
   EXPECT_EQ(r["undo"]["label"], "add instance line/cell1 of cell");
+
   ASSERT_TRUE(r["net_view"]["at"].contains("line/cell1"));
   // the Arc tool: a drag from load_a to it asks which port; enter
   const std::string arc = add + "- key: a\n" + dragLine(r["net_view"]["at"]["line/load_a"], r["net_view"]["at"]["line/cell1"]);
@@ -273,10 +332,34 @@ TEST_F(HeadlessIde, AnInstanceIsAddedFromThePapersMenuAndAnArcDrawnToItChoosesIt
   r = replayOn(model, arc + "- click: " + at(r["net_view"]["menu"]["enter"]) + "\n");
   EXPECT_TRUE(r["net_view"]["arc_at"].contains("line: load_a -> cell1/enter")) << r["net_view"]["arc_at"].dump();
   EXPECT_EQ(r["undo"]["depth"], 2);
+  // the inspector (the views as they were: the net view no longer fills the window) says its
+  // type and ports
+  r = replayOn(model, add + "- press: net-full\n");
+  EXPECT_EQ(r["inspector"]["type"], "cell");
+  EXPECT_EQ(r["inspector"]["ports"], "enter, exit");
+  (void)replayOn(model, "- press: net-full\n");
   // its page, and back
   r = replayOn(model, add + "- press: open-instance\n");
   EXPECT_EQ(r["net_view"]["path"], "line/cell1");
   EXPECT_EQ(r["net_view"]["page"], "cell");
+}
+
+TEST_F(HeadlessIde, APageLargerThanTheViewGetsAnOverviewWhoseClickMovesTheView) {
+  size_ = "1600x900";
+  auto r = replay("[]");  // the factory
+  EXPECT_EQ(r["net_view"]["overview"], false);  // fitted: the whole page is in view
+  // zoomed in about the middle of the view: an overview in its corner
+  const auto& p1 = r["net_view"]["at"]["factory/P1"];
+  const std::string zoom = "- wheel: {at: " + at(p1) + ", clicks: 6}\n";
+  r = replay(zoom);
+  ASSERT_EQ(r["net_view"]["overview"], true) << r["net_view"].dump();
+  const auto box = r["net_view"]["overview_box"];
+  const auto before = r["net_view"]["at"]["factory/P1"];
+  // a click at the overview's left edge brings the page's left end into view: the page moves right
+  const nlohmann::json left = {box[0].get<int>() + 2, (box[1].get<int>() + box[3].get<int>()) / 2};
+  r = replay(zoom + "- click: " + at(left) + "\n");
+  EXPECT_GT(r["net_view"]["at"]["factory/P1"][0].get<int>(), before[0].get<int>()) << r["net_view"].dump();
+  EXPECT_EQ(r["selection"]["kind"], "none");  // a click there selects nothing
 }
 
 /// The lines of `text` holding "N states, M edges" and the invariants' counts, as `gdpn analyze` prints them.

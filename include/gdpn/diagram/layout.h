@@ -53,6 +53,10 @@ struct NodeLayout {
   std::string name;  ///< the construct's name on the page
   Point centre;      ///< centre, layout units
   Box box;           ///< what it covers, layout units (the circle's square for a place)
+  /// A place's tag, drawn beside it as CPN Tools draws port and fusion tags: "port" for a
+  /// place its page type publishes, "fusion NAME" for a member of a fusion set, both joined by
+  /// ", "; "" for none.
+  std::string tag{};
 };
 
 /// An instance box: the instance's name and its page type.

@@ -100,6 +100,7 @@ class NetEditCommand final : public Command {
     std::vector<std::vector<net::EditorPos>> via;                                ///< each arc's bends
   };
   std::optional<Positions> positions_;   // a move's page as it was, for revert
+  std::optional<std::pair<std::size_t, net::ArcSpec>> arc_before_;  // an arc's route changed alone: it as it was, by index
   bool type_ = false;                    // the page is a page type
 };
 

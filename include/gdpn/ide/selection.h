@@ -65,4 +65,8 @@ class Document;
 /// on the way). None names nothing.
 [[nodiscard]] bool namesSomething(const Document& doc, const Selection& selection);
 
+/// The entries of `selections` that name something of `doc`'s model (namesSomething()), in
+/// their order; each page's names are gathered once, so that a page's worth costs its size.
+[[nodiscard]] std::vector<Selection> stillNamed(const Document& doc, std::vector<Selection> selections);
+
 }  // namespace gdpn::ide

@@ -12,9 +12,11 @@
 #include <numbers>
 #include <string>
 
+#include "../action_run.h"
 #include "../detail/picture_texture.h"
 #include "../views.h"
 #include "gdpn/core/text.h"
+#include "gdpn/ide/net_edit.h"
 #include "gdpn/ide/set_field.h"
 #include "gdpn/scene/actions.h"
 #include "gdpn/scene/user_data.h"
@@ -374,10 +376,37 @@ void breakpointBox(App& app, const char* label, session::Breakpoint bp, nlohmann
 
 void runState(App& app, const session::Session& session, const Selection& sel, nlohmann::json& report);
 
+/// An instance: its page type, the places it publishes (its ports), and a way into its page.
+void instanceInspector(App& app, const Selection& sel, nlohmann::json& report) {
+  const auto& net = app.document().model().net;
+  const auto at = locateConstruct(net, sel.name);
+  const auto* page = at ? findPage(net, at->page) : nullptr;
+  const net::InstanceSpec* inst = nullptr;
+  if (page != nullptr) {
+    for (const auto& i : page->instances) {
+      if (i.name == at->name) inst = &i;
+    }
+  }
+  if (inst == nullptr) return;
+  const auto* type = findPage(net, inst->type);
+  ImGui::Text("of page type %s", inst->type.c_str());
+  report["type"] = inst->type;
+  std::string ports;
+  if (type != nullptr) {
+    for (const auto& r : type->references) ports += (ports.empty() ? "" : ", ") + r.place;
+  }
+  ImGui::TextWrapped("ports: %s", ports.empty() ? "none (its page type publishes no place)" : ports.c_str());
+  report["ports"] = ports;
+  if (ImGui::Button("Open Its Page")) (void)performAction(app, ActionId::OpenInstance);
+  noteItem("Open Its Page", report["buttons"]);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show the instance's page in the net view (Up comes back)");
+}
+
 void netInspector(App& app, const Selection& sel, nlohmann::json& report) {
   auto* session = app.run().session();
   report["name"] = sel.name;
   ImGui::Text("%s  %s", selectionKindName(sel.kind), sel.name.c_str());
+  if (sel.kind == SelectionKind::Instance) instanceInspector(app, sel, report);
   if (session != nullptr) runState(app, *session, sel, report);
   drawContents(app, sel, report["contents"]);
 }

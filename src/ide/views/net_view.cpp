@@ -54,6 +54,12 @@ void ensureLayout(App& app, NetViewState& s) {
   s.layout = s.view.page ? diagram::layoutPage(*s.view.page, diags) : diagram::NetLayout{};
   s.error = diags.hasErrors() ? diags.str() : "";
   indexLayout(s);
+  // laid out from the file's positions throughout: a move can be laid out again in place
+  const auto placed = [](const auto& list) {
+    return std::all_of(list.begin(), list.end(), [](const auto& x) { return x.position.has_value(); });
+  };
+  s.positioned = s.view.page != nullptr && placed(s.view.page->places) && placed(s.view.page->transitions) &&
+                 placed(s.view.page->instances);
   // every item by the name a selection gives it
   s.by_name.clear();
   const std::string& prefix = s.view.prefix.empty() ? s.layout.page : s.view.prefix;
@@ -76,7 +82,7 @@ void ensureLayout(App& app, NetViewState& s) {
 
 std::vector<std::pair<std::string, net::EditorPos>> pinsOf(const NetViewState& s) {
   std::vector<std::pair<std::string, net::EditorPos>> pins;
-  if (!s.layout.from_graphviz) return pins;
+  if (s.positioned) return pins;
   for (const auto& p : s.layout.places) pins.emplace_back(p.name, editorAt(p.centre));
   for (const auto& t : s.layout.transitions) pins.emplace_back(t.name, editorAt(t.centre));
   for (const auto& i : s.layout.instances) pins.emplace_back(i.name, editorAt(i.centre));
@@ -453,8 +459,19 @@ std::vector<std::pair<std::string, net::EditorPos>> selectedConstructs(App& app,
   for (const auto& one : app.document().selections()) {
     const auto item = selectedItem(s, one);
     if (!item || item->kind == diagram::ItemKind::Arc) continue;
+    // where the file puts it (so that every construct and bend of a group moves by the same
+    // step, as a redo will), else where it is drawn
+    std::optional<net::EditorPos> at;
+    if (s.view.page != nullptr) {
+      switch (item->kind) {
+        case diagram::ItemKind::Place: at = s.view.page->places[item->index].position; break;
+        case diagram::ItemKind::Transition: at = s.view.page->transitions[item->index].position; break;
+        case diagram::ItemKind::Instance: at = s.view.page->instances[item->index].position; break;
+        case diagram::ItemKind::Arc: break;
+      }
+    }
     const diagram::Box& box = s.layout.boxOf(*item);
-    out.emplace_back(localName(s, *item), editorAt((box.min + box.max) * 0.5));
+    out.emplace_back(localName(s, *item), at ? *at : editorAt((box.min + box.max) * 0.5));
   }
   return out;
 }
@@ -492,6 +509,16 @@ std::optional<std::pair<int, diagram::Point>> handleAt(App& app, const NetViewSt
   return std::nullopt;
 }
 
+/// After an edit that moved `moved` (or bent an arc between them) alone: they and the arcs that
+/// touch them laid out again in place, not the whole page (a drag on a large page). A page that
+/// was not laid out from positions throughout (Graphviz's, or columns) is laid out whole.
+void relaidOut(App& app, NetViewState& s, const std::vector<diagram::ItemRef>& moved) {
+  if (!s.positioned || s.view.page == nullptr || s.laid_out_path != s.path) return;
+  diagram::relayoutMoved(s.layout, *s.view.page, moved);
+  indexLayout(s);
+  s.laid_out_revision = app.document().revision();
+}
+
 /// Starts a drag of arc `item`'s bend `bend` (-1: its label; `fresh`: a new bend there).
 void beginArcDrag(App& app, NetViewState& s, diagram::ItemRef item, int bend, bool fresh) {
   const auto& arc = s.layout.arcs[item.index];
@@ -518,7 +545,7 @@ void dragArc(App& app, NetViewState& s, diagram::Point mouse) {
   e.arc_kind = d.spec.kind;
   e.arc = std::move(changed);
   e.drag = app.inspector.drag_id;
-  (void)perform(app, std::move(e));
+  if (perform(app, std::move(e)).empty()) relaidOut(app, s, {s.layout.arcs[d.arc].from, s.layout.arcs[d.arc].to});
 }
 
 /// Removes bend `bend` of the selected arc (a double-click on it).
@@ -612,6 +639,7 @@ bool selectGestures(App& app, NetViewState& s, const Region& r, const diagram::V
   if (r.activated && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
     s.panning = io.KeyAlt;
     s.toggling.reset();
+    s.alone.reset();
     s.arc_drag.reset();
     if (s.panning) {
       // the view pans; nothing is selected
@@ -632,6 +660,7 @@ bool selectGestures(App& app, NetViewState& s, const Region& r, const diagram::V
       const Selection one = selectionOf(s, *under);
       if (adds) s.toggling = under;
       else if (!doc.isSelected(one)) doc.select(one);
+      else if (doc.selectedCount() > 1) s.alone = under;  // one of a group: alone, unless this becomes a drag
       if (under->kind == diagram::ItemKind::Transition && !adds) app.toolbar.fire_target = one.name;
       if (under->kind != diagram::ItemKind::Arc && !adds) {
         s.moving = localName(s, *under);
@@ -643,7 +672,10 @@ bool selectGestures(App& app, NetViewState& s, const Region& r, const diagram::V
     }
   }
   const bool dragging = r.active && ImGui::IsMouseDragging(ImGuiMouseButton_Left);
-  if (dragging) s.toggling.reset();
+  if (dragging) {
+    s.toggling.reset();
+    s.alone.reset();
+  }
   if (s.arc_drag && dragging) {
     dragArc(app, s, mouse);
     return true;
@@ -660,17 +692,13 @@ bool selectGestures(App& app, NetViewState& s, const Region& r, const diagram::V
       for (const auto& [name, at] : s.moving_from) e.moves.emplace_back(name, net::EditorPos{at[0] + by[0], at[1] + by[1]});
       e.drag = app.inspector.drag_id;
       e.pins = pinsOf(s);
-      if (perform(app, std::move(e)).empty() && !s.layout.from_graphviz && s.view.page != nullptr &&
-          s.laid_out_path == s.path) {
-        // what moved laid out again in place, not the whole page (a drag on a large page)
+      if (perform(app, std::move(e)).empty()) {
         std::vector<diagram::ItemRef> moved;
         const std::string& prefix = s.view.prefix.empty() ? s.layout.page : s.view.prefix;
         for (const auto& [name, at] : s.moving_from) {
           if (const auto it = s.by_name.find(prefix + "/" + name); it != s.by_name.end()) moved.push_back(it->second);
         }
-        diagram::relayoutMoved(s.layout, *s.view.page, moved);
-        indexLayout(s);
-        s.laid_out_revision = app.document().revision();
+        relaidOut(app, s, moved);
       }
     }
   }
@@ -688,8 +716,10 @@ bool selectGestures(App& app, NetViewState& s, const Region& r, const diagram::V
       }
     }
     if (s.toggling && leftClicked(r)) doc.toggleSelected(selectionOf(s, *s.toggling));
+    if (s.alone && leftClicked(r)) doc.select(selectionOf(s, *s.alone));
     s.band_from.reset();
     s.toggling.reset();
+    s.alone.reset();
     s.moving.clear();
     s.moving_from.clear();
     s.panning = false;
@@ -875,6 +905,10 @@ bool drawOverview(NetViewState& s, const Region& r, nlohmann::json& report) {
   const auto box = overviewBox(s, r, s.viewport);
   report["overview"] = box.has_value();
   if (!box) return false;
+  // its corners in window pixels, for replays and tests
+  const double ox = r.origin.x, oy = r.origin.y;
+  report["overview_box"] = {std::lround(ox + box->min.x), std::lround(oy + box->min.y), std::lround(ox + box->max.x),
+                            std::lround(oy + box->max.y)};
   ImDrawList* list = ImGui::GetWindowDrawList();
   const auto px = [&](diagram::Point p) { return ImVec2{r.origin.x + static_cast<float>(p.x), r.origin.y + static_cast<float>(p.y)}; };
   list->AddRectFilled(px(box->min - diagram::Point{3, 3}), px(box->max + diagram::Point{3, 3}), IM_COL32(250, 250, 250, 235), 3.0f);
@@ -1003,6 +1037,7 @@ void drawNetView(App& app, const Rect& at, nlohmann::json& report) {
                                                  r.mouse.x <= overview->max.x && r.mouse.y <= overview->max.y);
   s.overview_hot = over_overview;
   const bool moving = editGestures(app, s, r, s.viewport, over_overview ? std::nullopt : pointed, report);
+  ensureLayout(app, s);  // an edit a menu or a gesture made: the page as it is now (nothing when unchanged)
   // the middle button pans, as does a left drag with Alt, or on paper with a tool that adds
   const bool left_pans = s.panning || (s.tool != NetTool::Select && s.arc_from.empty() && !moving);
   if (r.active && !moving && s.moving.empty() && !s.band_from && !over_overview &&

@@ -44,6 +44,7 @@ struct NetViewState {
   std::string path;                  ///< the page or instance shown (diagram::findView's path; "" the first page)
   diagram::PageView view;            ///< what `path` named when laid out
   diagram::NetLayout layout;         ///< the page laid out
+  bool positioned = false;           ///< every construct of the page had its position when laid out
   std::unique_ptr<diagram::SpatialIndex> index;  ///< over `layout`
   diagram::Viewport viewport;        ///< pan and zoom
   bool fit = true;                   ///< fit the page into the view at the next frame
@@ -73,6 +74,7 @@ struct NetViewState {
   std::optional<diagram::Point> band_from;  ///< a rubber band's first corner, layout units (none: no band)
   bool band_adds = false;            ///< the band adds to the selection (Shift or Ctrl held)
   std::optional<diagram::ItemRef> toggling;  ///< a Shift- or Ctrl-click's item, toggled unless it becomes a drag
+  std::optional<diagram::ItemRef> alone;     ///< a click on one of a group: selected alone unless it becomes a drag
   bool panning = false;              ///< an Alt+left drag pans
   std::optional<ArcDrag> arc_drag;   ///< a bend or label being dragged
   /// The overview of a page larger than the view: how many constructs fall in each cell of a
@@ -97,8 +99,9 @@ class App;
 void ensureLayout(App& app, NetViewState& s);
 /// A layout point in editor units (`at:`), on a grid of a quarter unit (never -0).
 inline net::EditorPos editorAt(diagram::Point p) { return diagram::editorPosition(p); }
-/// The Graphviz pins of a page laid out by Graphviz: where each construct is drawn now, so
-/// that a move keeps the page's look (none for a page with positions).
+/// The pins of a page some of whose constructs lack a position (laid out by Graphviz or in
+/// columns): where each construct is drawn now, so that a move keeps the page's look (none for
+/// a page with positions throughout).
 std::vector<std::pair<std::string, net::EditorPos>> pinsOf(const NetViewState& s);
 /// "select", "place", "transition", "arc".
 const char* netToolName(NetTool tool);
