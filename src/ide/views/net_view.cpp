@@ -906,7 +906,7 @@ bool drawOverview(NetViewState& s, const Region& r, nlohmann::json& report) {
   report["overview"] = box.has_value();
   if (!box) return false;
   // its corners in window pixels, for replays and tests
-  const double ox = r.origin.x, oy = r.origin.y;
+  const double ox = static_cast<double>(r.origin.x), oy = static_cast<double>(r.origin.y);
   report["overview_box"] = {std::lround(ox + box->min.x), std::lround(oy + box->min.y), std::lround(ox + box->max.x),
                             std::lround(oy + box->max.y)};
   ImDrawList* list = ImGui::GetWindowDrawList();
