@@ -677,6 +677,30 @@ std::string NetEditCommand::apply(Document& doc) {
   }
   net::PageSpec changed = *page;
   if (auto why = edit(net, changed, edit_, made_, pasted_); !why.empty()) return why;
+  // a construct added here is written nowhere yet: the model's file is where a message about it
+  // points ("factory.gdpn.yaml: warning: transition 'T1' has no input arcs"), not "<input>"
+  const auto inFile = [&](auto& list) {
+    for (auto& x : list) {
+      if (x.name == edit_.name && x.loc.file.empty()) x.loc.file = doc.model().path;
+    }
+  };
+  switch (edit_.kind) {
+    case NetEditKind::AddPlace: inFile(changed.places); break;
+    case NetEditKind::AddTransition: inFile(changed.transitions); break;
+    case NetEditKind::AddInstance: inFile(changed.instances); break;
+    case NetEditKind::Move:
+    case NetEditKind::Rename:
+    case NetEditKind::Delete:
+    case NetEditKind::AddArc:
+    case NetEditKind::DeleteArc:
+    case NetEditKind::SetArcWeight:
+    case NetEditKind::SetPlace:
+    case NetEditKind::SetTransition:
+    case NetEditKind::Paste:
+    case NetEditKind::MoveMany:
+    case NetEditKind::DeleteMany:
+    case NetEditKind::SetArc: break;
+  }
   positions_.reset();
   before_ = std::move(*page);
   *page = std::move(changed);

@@ -9,6 +9,7 @@
 
 #include "gdpn/ide/document.h"
 #include "gdpn/ide/net_edit.h"
+#include "gdpn/net/compile.h"
 #include "ide/edit_support.h"
 #include "support/temp_files.h"
 
@@ -128,7 +129,14 @@ TEST_F(GroupEdit, AnArcIsChangedInPlaceAndReversedUnlessItWouldBeATestArcOutOfAT
 TEST_F(GroupEdit, AnInstanceIsAddedOfAPageTypeThatDoesNotHoldThePage) {
   ASSERT_EQ(run(makeNetEdit(NetEditKind::AddInstance, "main", "c2", "cell", {5, 3})), "");
   EXPECT_EQ(main().instances.size(), 2u);
+  // written nowhere yet, it is placed in the model's file (a message about it names the file, not "<input>")
+  EXPECT_EQ(main().instances.back().loc.str(), doc_->model().path);
   EXPECT_EQ(doc_->history().undoLabel(), "add instance main/c2 of cell");
+  ASSERT_EQ(run(makeNetEdit(NetEditKind::AddTransition, "main", "T1", {}, {6, 0})), "");
+  core::Diagnostics diags;
+  (void)net::compile(doc_->model().net, diags);
+  EXPECT_NE(diags.str().find(doc_->model().path + ": warning: transition 'T1' has no input arcs"), std::string::npos)
+      << diags.str();
   EXPECT_EQ(run(makeNetEdit(NetEditKind::AddInstance, "cell", "self", "cell")),
             "page type 'cell' holds 'cell': an instance of it there would hold itself");
   EXPECT_EQ(run(makeNetEdit(NetEditKind::AddInstance, "main", "c3", "nothing")), "no page type 'nothing'");

@@ -188,14 +188,18 @@ TEST(PageFromSelection, ANameBuiltAtRunTimeIsRefusedWhereItIsWritten) {
   ASSERT_TRUE(m) << diags.str();
   Document doc(*m);
   const std::string text = doc.text();
-  auto command = std::make_unique<PageFromSelectionCommand>(PageFromSelection{"line", {"b"}, "sink", "s1"});
-  auto* cmd = command.get();
-  const std::string why = doc.execute(std::move(command));
+  // refused through the undo stack (which then drops the command): nothing changes
+  const std::string why =
+      doc.execute(std::make_unique<PageFromSelectionCommand>(PageFromSelection{"line", {"b"}, "sink", "s1"}));
   EXPECT_EQ(why, "built.gdpn.yaml:11:30: error: 'line/' begins the name 'line/b', which moves to 'line/s1/b', "
                  "but the rest of it is made at run time, so it cannot be followed");
-  EXPECT_TRUE(cmd->diagnostics().hasErrors());
   EXPECT_EQ(doc.text(), text);
   EXPECT_FALSE(doc.history().canUndo());
+  // the command itself keeps every error, located
+  PageFromSelectionCommand command(PageFromSelection{"line", {"b"}, "sink", "s1"});
+  EXPECT_EQ(command.apply(doc), why);
+  EXPECT_TRUE(command.diagnostics().hasErrors());
+  EXPECT_EQ(doc.text(), text);
 }
 
 TEST(PageFromSelection, ASelectionAcrossTwoPagesIsRefused) {
