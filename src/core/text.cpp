@@ -204,6 +204,15 @@ std::size_t firstInvalidUtf8(std::string_view s) {
   return std::string_view::npos;
 }
 
+std::string markdownCell(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '|') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
 std::string escapeInvalidUtf8(std::string_view s) {
   std::string out;
   out.reserve(s.size());

@@ -393,16 +393,6 @@ std::vector<KeyDesc> build(Section section) {
   return {};
 }
 
-/// `|` in a table cell would end it.
-std::string cell(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '|') out += '\\';
-    out += c;
-  }
-  return out;
-}
-
 /// A bound as the docs write it: whole numbers in full (1000000, not 1e+06).
 std::string boundText(double x) {
   if (x == std::floor(x) && std::fabs(x) < 1e15) return std::to_string(static_cast<long long>(x));
@@ -568,8 +558,8 @@ std::string schemaMarkdown(Section section) {
       }
       if (d.tables != 0xF) type += " (" + of + ")";
     }
-    out += "| `" + d.name + "` | " + cell(type) + " | " + cell(d.unit) + " | " +
-           (d.initial.empty() ? std::string() : "`" + cell(d.initial) + "`") + " | " + cell(d.help) + " |\n";
+    out += "| `" + d.name + "` | " + core::markdownCell(type) + " | " + core::markdownCell(d.unit) + " | " +
+           (d.initial.empty() ? std::string() : "`" + core::markdownCell(d.initial) + "`") + " | " + core::markdownCell(d.help) + " |\n";
   }
   return out;
 }

@@ -9,6 +9,7 @@
 #include <mutex>
 #include <optional>
 
+#include "gdpn/core/text.h"
 #include "gdpn/script/syntax.h"
 #include "views.h"
 
@@ -195,16 +196,6 @@ std::mutex& apiMutex() {
   return m;
 }
 
-/// `text` with '|' escaped for a markdown table cell.
-std::string cell(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '|') out += '\\';
-    out += c;
-  }
-  return out;
-}
-
 }  // namespace
 
 const char* viewClassName(ViewClass c) {
@@ -260,7 +251,7 @@ std::string viewNamesMarkdown(ViewClass c) {
   std::string out = "| name | meaning |\n| --- | --- |\n";
   for (const auto& n : viewNames(c)) {
     const std::string written = n.method ? n.name + "(" + n.arguments + ")" : n.name;
-    out += "| `" + cell(written) + "` | " + cell(n.doc) + " |\n";
+    out += "| `" + core::markdownCell(written) + "` | " + core::markdownCell(n.doc) + " |\n";
   }
   return out;
 }

@@ -85,6 +85,9 @@ std::size_t firstInvalidUtf8(std::string_view s);
 /// written as `\xNN`, the rest as it is: a path in a folder of any bytes prints readably.
 std::string escapeInvalidUtf8(std::string_view s);
 
+/// `text` for a cell of a markdown table: each `|` (which would end the cell) escaped.
+std::string markdownCell(std::string_view text);
+
 /// 1-based line and column (in bytes) of `offset` in `text`.
 std::pair<int, int> lineColumn(std::string_view text, std::size_t offset);
 

@@ -88,6 +88,8 @@ class Document {
     selection_ = std::move(selection);
     also_.clear();
   }
+  /// What is selected beside the current selection (read every frame: no copy).
+  [[nodiscard]] const std::vector<Selection>& alsoSelected() const { return also_; }
   /// Everything selected, the current selection last; empty when nothing is.
   [[nodiscard]] std::vector<Selection> selections() const;
   /// How many things are selected.

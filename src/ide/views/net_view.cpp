@@ -341,9 +341,7 @@ std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const R
   };
   if (selection.any()) {
     mark(selection);
-    for (const auto& one : app.document().selections()) {
-      if (!(one == selection)) mark(one);
-    }
+    for (const auto& one : app.document().alsoSelected()) mark(one);  // each frame: read in place
   }
   report["selected"] = framed;
   nlohmann::json holding = nlohmann::json::array();
