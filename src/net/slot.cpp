@@ -17,6 +17,7 @@ const char* slotKindName(SlotKind kind) {
     case SlotKind::Control: return "control";
     case SlotKind::Node: return "node";
     case SlotKind::Sensor: return "sensor";
+    case SlotKind::Value: return "value";
   }
   return "?";
 }
@@ -25,6 +26,7 @@ std::optional<SlotKind> parseSlotKind(std::string_view name) {
   if (name == "control") return SlotKind::Control;
   if (name == "node") return SlotKind::Node;
   if (name == "sensor") return SlotKind::Sensor;
+  if (name == "value") return SlotKind::Value;
   return std::nullopt;
 }
 

@@ -22,15 +22,16 @@ enum class SlotKind : std::uint8_t {
   Control,  ///< a count of indistinguishable tokens
   Node,     ///< an ordered multiset of references to scene nodes (FIFO by arrival)
   Sensor,   ///< a variable bound to a sensor node
+  Value,    ///< a multiset of values of a colour set (value tokens: semantics, *Value tokens*)
 };
 
 /// Parses "a0" ... "d7"; nullopt for anything else.
 std::optional<SlotId> parseSlot(std::string_view name);
 /// "a0" ... "d7".
 std::string slotName(SlotId slot);
-/// "control", "node" or "sensor".
+/// "control", "node", "sensor" or "value".
 const char* slotKindName(SlotKind kind);
-/// Parses "control", "node" or "sensor".
+/// Parses "control", "node", "sensor" or "value".
 std::optional<SlotKind> parseSlotKind(std::string_view name);
 
 }  // namespace gdpn::net

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "gdpn/core/diagnostics.h"
+#include "gdpn/net/colour.h"
 #include "gdpn/net/script_kind.h"
 #include "gdpn/net/slot.h"
 
@@ -146,6 +147,15 @@ struct SlotPredicate {
   friend bool operator==(const SlotPredicate&, const SlotPredicate&) = default;
 };
 
+/// A text of the inscription language on one slot (a place's colour set or initial values, an
+/// arc's inscription), with where it was written: its first character's line and column.
+struct SlotText {
+  SlotId slot = kDefaultSlot;  ///< which slot
+  std::string text;            ///< as written
+  SourceLoc loc;               ///< where its first character is
+  friend bool operator==(const SlotText& x, const SlotText& y) { return x.slot == y.slot && x.text == y.text; }
+};
+
 /// A 2D position in the net editor (editor units, for the IDE and PNML graphics).
 using EditorPos = std::array<double, 2>;
 
@@ -163,16 +173,18 @@ struct PlaceSpec {
   std::optional<EditorPos> position;   ///< where the editor draws it
   std::string fusion{};                ///< the fusion set it is a member of ("" for none)
   SourceLoc fusion_loc{};              ///< where the set is named
+  std::vector<SlotText> colours{};     ///< value slots: the colour set each holds, by name (`colour:`)
+  std::vector<SlotText> values{};      ///< value slots: the initial values, a multiset inscription (`values:`)
   /// True when it declares anything a fusion set's members share: slot kinds, tokens,
   /// capacities, scripts or sensors.
   [[nodiscard]] bool declares() const {
     return !kinds.empty() || !tokens.empty() || !nodes.empty() || !capacity.empty() || !scripts.empty() ||
-           !sensors.empty();
+           !sensors.empty() || !colours.empty() || !values.empty();
   }
   /// True when `x` and `y` declare the same slot kinds, tokens, capacities, scripts and sensors.
   friend bool sameDeclarations(const PlaceSpec& x, const PlaceSpec& y) {
     return x.kinds == y.kinds && x.tokens == y.tokens && x.nodes == y.nodes && x.capacity == y.capacity &&
-           x.scripts == y.scripts && x.sensors == y.sensors;
+           x.scripts == y.scripts && x.sensors == y.sensors && x.colours == y.colours && x.values == y.values;
   }
   friend bool operator==(const PlaceSpec& x, const PlaceSpec& y) {
     return x.name == y.name && x.description == y.description && sameDeclarations(x, y) &&
@@ -204,18 +216,23 @@ struct TransitionSpec {
   ScriptSpec in_fire;                 ///< runs every step while occurring (self.elapsed, self.progress)
   ScriptSpec post_fire;               ///< runs when an occurrence completes, before its deposits
   std::optional<EditorPos> position;  ///< where the editor draws it
+  /// The condition on its variables in the inscription language (`when:`; text "" for none):
+  /// a binding occurs only where it is true. Not a Python guard: the analysis reads it.
+  SlotText when{};
 
   /// True when any script is attached.
   [[nodiscard]] bool scripted() const {
     return !guard.empty() || !pre_fire.empty() || !in_fire.empty() || !post_fire.empty();
   }
+  /// True when it has a condition in the inscription language.
+  [[nodiscard]] bool conditioned() const { return !when.text.empty(); }
   friend bool operator==(const TransitionSpec& x, const TransitionSpec& y) {
     return x.name == y.name && x.description == y.description && x.duration == y.duration &&
            x.priority == y.priority && x.probability == y.probability && x.guard == y.guard &&
            x.priority_param == y.priority_param && x.probability_param == y.probability_param &&
            x.servers == y.servers && x.servers_param == y.servers_param &&
            x.pre_fire == y.pre_fire && x.in_fire == y.in_fire && x.post_fire == y.post_fire &&
-           x.position == y.position;
+           x.position == y.position && x.when == y.when;
   }
 };
 
@@ -244,6 +261,7 @@ struct ArcSpec {
   std::vector<SlotCount> weights;  ///< per-slot weights; empty means a0 with weight 1
   std::vector<SlotPredicate> predicates;  ///< per node slot: which tokens are eligible (input arcs)
   std::vector<SlotPredicate> conditions;  ///< per sensor slot: the arc allows its transition while true
+  std::vector<SlotText> inscriptions{};   ///< per value slot: the multiset it takes or puts (`inscription:`)
   SourceLoc loc;                   ///< where the arc is declared
   SourceLoc from_loc;              ///< where `from` is written
   SourceLoc to_loc;                ///< where `to` is written
@@ -257,7 +275,7 @@ struct ArcSpec {
   friend bool operator==(const ArcSpec& x, const ArcSpec& y) {
     return x.from == y.from && x.to == y.to && x.kind == y.kind && x.weights == y.weights &&
            x.predicates == y.predicates && x.conditions == y.conditions && x.via == y.via &&
-           x.label_at == y.label_at;
+           x.label_at == y.label_at && x.inscriptions == y.inscriptions;
   }
 };
 
@@ -347,6 +365,8 @@ struct NetSpec {
   std::vector<PageSpec> page_types;  ///< reusable pages, instantiated by name
   std::vector<FusionSpec> fusions;   ///< fusion sets, in declaration order
   ScriptSpec globals;                ///< model-wide script run once at load; its names are seen by every script
+  std::vector<ColourSetSpec> colours{};   ///< colour sets of value tokens (`colours:`), in declaration order
+  std::vector<VariableSpec> variables{};  ///< variables of the inscriptions (`variables:`), in declaration order
   friend bool operator==(const NetSpec&, const NetSpec&) = default;
 };
 
