@@ -15,6 +15,8 @@
 
 namespace gdpn::net {
 
+using core::SourceLoc;
+
 /// What kind of colour set.
 enum class ColourKind : std::uint8_t {
   Dot,      ///< one value, `dot` (the plain token of a P/T place)

@@ -80,7 +80,7 @@ std::optional<Expr> parseInscription(std::string_view text, const SourceLoc& at,
 std::string inscriptionText(const Expr& e, const Colours& colours, const std::vector<std::string>* names = nullptr);
 
 /// What the checker resolves names against: the colour sets and the variables in scope.
-struct Scope {
+struct InscriptionScope {
   const Colours* colours = nullptr;        ///< the sets, with their enum constants
   std::vector<std::string> variable_names; ///< every declared variable
   std::vector<ColourId> variable_sets;     ///< and its set
@@ -88,8 +88,8 @@ struct Scope {
 
 /// What an expression must be.
 enum class Expect : std::uint8_t {
-  Multiset,  ///< an arc inscription or initial marking: a multiset (a single value is one of it)
-  Value,     ///< a single value of the set
+  Tokens,    ///< an arc inscription or initial marking: a multiset (a single value is one of it)
+  Single,    ///< a single value of the set
   Condition, ///< a transition's condition: a bool (the set is ignored)
 };
 
@@ -99,7 +99,7 @@ enum class Expect : std::uint8_t {
 /// Condition). Mistakes go to `diags` at the node: an unknown name, a type mismatch (`expected
 /// P, found int`), `all` of a set that is not finite, a field a record lacks. False when there
 /// was one.
-bool checkInscription(Expr& e, ColourId set, Expect what, const Scope& scope, std::vector<std::uint32_t>& used,
+bool checkInscription(Expr& e, ColourId set, Expect what, const InscriptionScope& scope, std::vector<std::uint32_t>& used,
                       core::Diagnostics& diags);
 
 /// A binding: the value of each of a transition's variables (by the index a Var holds).
