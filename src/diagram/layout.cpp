@@ -308,6 +308,11 @@ NetLayout layoutPage(const net::PageSpec& page, core::Diagnostics& diags) {
     for (const auto& w : a.weights) arc.weight += w.value;
     if (a.weights.empty()) arc.weight = 1;
     arc.inscription = inscription(a.weights);
+    // value inscriptions as written (a slot other than a0 named before its text)
+    for (const auto& v : a.inscriptions) {
+      arc.inscription += (arc.inscription.empty() ? "" : "+") +
+                         (v.slot == net::kDefaultSlot ? v.text : net::slotName(v.slot) + ": " + v.text);
+    }
     l.arcs.push_back(std::move(arc));
   }
   // positions: the spec's, or Graphviz's for a page with any construct lacking one

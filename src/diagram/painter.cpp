@@ -26,6 +26,7 @@ Rgba kindColour(net::SlotKind kind) {
     case net::SlotKind::Control: return colours::kControl;
     case net::SlotKind::Node: return colours::kNode;
     case net::SlotKind::Sensor: return colours::kSensor;
+    case net::SlotKind::Value: return colours::kValue;
   }
   return colours::kControl;
 }

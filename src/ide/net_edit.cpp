@@ -473,6 +473,7 @@ net::SlotKind slotKindOf(const net::PlaceSpec& p, net::SlotId slot) {
     return std::any_of(list.begin(), list.end(), [&](const auto& x) { return x.slot == slot; });
   };
   if (has(p.sensors)) return net::SlotKind::Sensor;
+  if (has(p.colours)) return net::SlotKind::Value;
   for (const auto& k : p.kinds) {
     if (k.slot == slot) return k.kind;
   }
@@ -486,12 +487,14 @@ void setSlotKind(net::PlaceSpec& p, net::SlotId slot, net::SlotKind kind, const 
   if (kind != net::SlotKind::Control) dropSlot(p.tokens, slot);
   if (kind == net::SlotKind::Sensor) dropSlot(p.capacity, slot);
   if (kind != net::SlotKind::Sensor) dropSlot(p.sensors, slot);
+  if (kind != net::SlotKind::Value) dropSlot(p.colours, slot), dropSlot(p.values, slot);
   // the scripts only a sensor slot has, or only the others have
   if (was != kind && (was == net::SlotKind::Sensor || kind == net::SlotKind::Sensor)) dropSlot(p.scripts, slot);
   switch (kind) {
     case net::SlotKind::Control: break;  // what a slot is unless said otherwise
     case net::SlotKind::Node: p.kinds.push_back({slot, kind, {}}); break;
     case net::SlotKind::Sensor: p.sensors.push_back({slot, sensor, {}}); break;
+    case net::SlotKind::Value: p.kinds.push_back({slot, kind, {}}); break;  // its colour set is to be said
   }
 }
 

@@ -367,6 +367,7 @@ std::string slotLine(const ScopeSlot& s) {
     case net::SlotKind::Sensor:
       return "sensor slot: reads " + (s.sensor.empty() ? std::string("a sensor") : s.sensor) +
              (s.sensor_type != nullptr ? " (a " + s.sensor_type->name + ")" : "");
+    case net::SlotKind::Value: return "value slot: a multiset of values of its colour set";
   }
   return {};
 }

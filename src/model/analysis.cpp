@@ -99,7 +99,7 @@ Analysis analyze(const net::Net& net, std::string path, const AnalysisOptions& o
   phase("invariants");
   a.invariants = net::invariants(net, limits);
   phase("cycle times");
-  if (timed(net)) a.cycles = net::cycleBounds(net, a.invariants, effectiveDurations(net, options.dt), limits, &a.cycles_stop);
+  if (timed(net) && net.countsExact()) a.cycles = net::cycleBounds(net, a.invariants, effectiveDurations(net, options.dt), limits, &a.cycles_stop);
   explore.invariants = &a.invariants;  // their bounds size the markings
   a.space = net::explore(net, explore);
   return a;

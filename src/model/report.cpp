@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 #include "gdpn/core/text.h"
 #include "gdpn/model/analysis.h"
@@ -33,7 +34,7 @@ std::unique_ptr<CyclePlan> planCycles(const Simulation& sim, double cycle_second
 
 void watchRoundTrips(Simulation& sim, double cycle_seconds) {
   const auto& net = sim.net();
-  if (!timed(net)) return;
+  if (!timed(net) || !net.countsExact()) return;
   auto plan = planCycles(sim, cycle_seconds);
   std::vector<std::vector<net::TransitionId>> takers_of;  // per place slot, made when first needed
   // one watch per cycle the report lists (alike ones share its circuits)
@@ -109,12 +110,18 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
     f.sensors_only = place.slots_begin < place.slots_end;
     for (net::PlaceSlotId ps{place.slots_begin}; ps < place.slots_end; ++ps) {
       f.sensors_only = f.sensors_only && net.placeSlots()[ps].kind == net::SlotKind::Sensor;
+      const net::Colouring* c = net.colouring();
+      if (!c || !c->setOf(ps)) continue;
+      const auto slot = net.placeSlots()[ps].slot;
+      f.final_values += (f.final_values.empty() ? "" : "; ") +
+                        (slot == net::kDefaultSlot ? std::string() : net::slotName(slot) + ": ") +
+                        c->colours.text(*c->setOf(ps), sim.kernel().values(ps));
     }
     r.places.push_back(std::move(f));
   }
   // the bounds from the invariants, beside the cycles measured: where measured exceeds the
   // bound, the net waited on something else (the plant, a guard, a shared resource)
-  if (timed(net)) {
+  if (timed(net) && net.countsExact()) {
     // the cycles worked out before the run when its round trips were watched, else now
     std::unique_ptr<CyclePlan> own;
     const CyclePlan* plan = sim.cycles();
@@ -287,12 +294,14 @@ void writeReportJson(std::ostream& out, const Report& report) {
   });
   j.array("places", report.places.size(), [&](std::size_t i) {
     const auto& p = report.places[i];
-    return ordered_json{{"name", p.name},
-                        {"mean_tokens", p.mean_tokens},
-                        {"max_tokens", p.max_tokens},
-                        {"final_tokens", p.final_tokens},
-                        {"throughput", p.throughput},
-                        {"sensors_only", p.sensors_only}};
+    ordered_json line{{"name", p.name},
+                      {"mean_tokens", p.mean_tokens},
+                      {"max_tokens", p.max_tokens},
+                      {"final_tokens", p.final_tokens},
+                      {"throughput", p.throughput},
+                      {"sensors_only", p.sensors_only}};
+    if (!p.final_values.empty()) line["final_values"] = p.final_values;
+    return line;
   });
   j.array("cycles", report.cycles.size(), [&](std::size_t i) {
     const auto& c = report.cycles[i];
@@ -442,6 +451,15 @@ void printSummary(std::ostream& out, const Report& report) {
         << pad(fixed(p->throughput, 3), 13, true) << "\n";
   }
   more(more_places, "place");
+  // value places: what they hold at the end, a line each, cut at 100 columns
+  bool values_head = false;
+  for (const PlaceFigures* p : places) {
+    if (p->final_values.empty()) continue;
+    if (!std::exchange(values_head, true)) out << "\nvalues at the end:\n";
+    std::string line = "  " + p->name + ": " + p->final_values;
+    if (line.size() > 100) line = line.substr(0, 96) + " ...";
+    out << line << "\n";
+  }
   if (unlisted > 0) {
     out << "(" << unlisted << (unlisted == 1 ? " place that only reads" : " places that only read")
         << " sensors, never holding a token, not listed; --report has them)\n";

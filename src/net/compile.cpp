@@ -15,6 +15,7 @@
 #include "gdpn/core/name_table.h"
 #include "gdpn/core/text.h"
 #include "gdpn/net/builder.h"
+#include "gdpn/net/inscription.h"
 
 namespace gdpn::net {
 namespace {
@@ -70,6 +71,8 @@ class Compiler {
     checkBalance();
     checkPredicates();
     checkHandlers();
+    if (diags_.hasErrors()) return nullptr;
+    checkColours();
     if (diags_.hasErrors()) return nullptr;
     emit();
     return builder_.freeze();
@@ -656,7 +659,7 @@ class Compiler {
   /// token on the default slot when it names none (a condition alone moves no tokens).
   template <class F>
   static void forEachWeight(const ArcSpec& a, F&& f) {
-    if (!a.weights.empty() || !a.conditions.empty()) {
+    if (!a.weights.empty() || !a.conditions.empty() || !a.inscriptions.empty()) {
       for (const auto& w : a.weights) f(w.slot, w.value, w.loc);
     } else {
       f(kDefaultSlot, std::int64_t{1}, a.loc);
@@ -671,6 +674,7 @@ class Compiler {
       for (const auto& w : a.spec->weights) use(w.slot);
       for (const auto& c : a.spec->conditions) use(c.slot);
       for (const auto& p : a.spec->predicates) use(p.slot);
+      for (const auto& i : a.spec->inscriptions) use(i.slot);
     }
     const PlaceSpec* last = nullptr;
     for (const auto& fp : places_) {
@@ -682,6 +686,7 @@ class Compiler {
       for (const auto& c : fp.spec->capacity) use(c.slot);
       for (const auto& sc : fp.spec->scripts) use(sc.slot);
       for (const auto& b : fp.spec->sensors) use(b.slot);
+      for (const auto& c : fp.spec->colours) use(c.slot);
     }
     slots_used_ = 0;
     for (int s = 0; s < kSlotCount; ++s) dense_slot_[static_cast<std::size_t>(s)] = (used >> s & 1u) ? slots_used_++ : 0;
@@ -721,6 +726,7 @@ class Compiler {
       for (const auto& t : spec.tokens) declare(p, t.slot, SlotKind::Control, t.loc);
       for (const auto& n : spec.nodes) declare(p, n.slot, SlotKind::Node, n.loc);
       for (const auto& b : spec.sensors) declare(p, b.slot, SlotKind::Sensor, b.loc);
+      for (const auto& c : spec.colours) declare(p, c.slot, SlotKind::Value, c.loc);
     }
     // a sensor slot carries no tokens: nothing may flow through it (one pass over the arcs)
     const bool sensors = std::any_of(sources.begin(), sources.end(), [](const auto& k) { return k.kind == SlotKind::Sensor; });
@@ -814,10 +820,12 @@ class Compiler {
       for (const auto& c : fp.spec->capacity) used |= 1u << c.slot;
       for (const auto& sc : fp.spec->scripts) used |= 1u << sc.slot;
       for (const auto& b : fp.spec->sensors) used |= 1u << b.slot;
+      for (const auto& c : fp.spec->colours) used |= 1u << c.slot;
       for (int s = 0; s < kSlotCount; ++s) {
         if (!(used & (1u << s))) continue;
         const auto slot = static_cast<SlotId>(s);
         builder_.setSlot(p, slot, kindOf(placeVertex(p, slot)), capacityFor(p, slot), initialFor(p, slot));
+        if (const auto set = valueSet(p, slot)) builder_.setValues(p, slot, *set, initialValues(p, slot));
         for (const auto& n : fp.spec->nodes) {
           if (n.slot != slot) continue;
           std::vector<std::string> qualified;
@@ -843,9 +851,16 @@ class Compiler {
         if (!scriptOf(s, k).empty()) builder_.setTransitionScript(t, k, scriptIndex(scriptOf(s, k)));
       }
     }
+    // per transition, the terms added for it so far: a coloured arc's term is known by its rank
+    std::vector<std::uint32_t> added(transitions_.size(), 0);
+    std::vector<std::vector<std::uint32_t>> colour_arcs(colouring_.transitions.size());
+    std::size_t next_inscription = 0;  // in arc_exprs_, filled in the same order by checkColours()
     for (const auto& a : arcs_) {
       if (!a.output) {
-        for (const auto& c : a.spec->conditions) builder_.addCondition(a.place, a.transition, c.slot, scriptIndex(c.expression));
+        for (const auto& c : a.spec->conditions) {
+          builder_.addCondition(a.place, a.transition, c.slot, scriptIndex(c.expression));
+          ++added[a.transition];
+        }
       }
       forEachWeight(*a.spec, [&](SlotId slot, std::int64_t value, const SourceLoc&) {
         const SlotKind kind = kindOf(placeVertex(a.place, slot));
@@ -857,11 +872,251 @@ class Compiler {
             if (pred.slot == slot) builder_.setLastPredicate(scriptIndex(pred.expression));
           }
         }
+        ++added[a.transition];
         // slots made by arcs take the kind of their component
         builder_.setSlot(a.place, slot, kind, capacityFor(a.place, slot), initialFor(a.place, slot));
       });
+      for (const auto& ins : a.spec->inscriptions) {
+        // the count the kernel checks first: the least the inscription can ask for (an
+        // inhibitor's count never holds the transition back: its values decide)
+        bool fixed = true;
+        const std::int64_t least = leastSize(*arc_exprs_[next_inscription++], &fixed);
+        const bool inhibits = a.spec->kind == ArcKind::Inhibitor && !a.output;
+        if (!inhibits) colouring_.counts_exact = colouring_.counts_exact && fixed;
+        const auto weight = static_cast<std::int32_t>(std::min<std::int64_t>(inhibits ? kMaxWeight : least, kMaxWeight));
+        if (a.output) builder_.addOutput(a.transition, a.place, ins.slot, weight);
+        else builder_.addInput(a.place, a.transition, ins.slot, weight, a.spec->kind);
+        colour_arcs[static_cast<std::size_t>(colouring_.of_transition[a.transition])].push_back(added[a.transition]++);
+      }
+    }
+    if (coloured_) builder_.setColouring(std::move(colouring_), std::move(colour_arcs));
+  }
+
+  /// The fewest tokens the multiset `e` (checked) can hold under any binding, and whether
+  /// it always holds that many (`fixed`).
+  std::int64_t leastSize(const Expr& e, bool* fixed = nullptr) const {
+    bool own = true;
+    bool& exact = fixed ? *fixed : own;
+    using Op = Expr::Op;
+    switch (e.op) {
+      case Op::Sum: return leastSize(e.args[0], &exact) + leastSize(e.args[1], &exact);
+      case Op::Times:
+        if (e.args[0].op == Op::Const) return std::max<std::int64_t>(0, e.args[0].value.i) * leastSize(e.args[1], &exact);
+        exact = false;
+        return 0;
+      case Op::If: {
+        const auto a = leastSize(e.args[1], &exact), b = leastSize(e.args[2], &exact);
+        exact = exact && a == b;
+        return std::min(a, b);
+      }
+      case Op::Empty: return 0;
+      case Op::All: {
+        const auto size = colouring_.colours.at(e.type).size;
+        exact = exact && size.has_value();
+        return size.value_or(0);
+      }
+      case Op::Tuple: {
+        std::int64_t n = 1;
+        for (const auto& a : e.args) n *= a.multiset ? leastSize(a, &exact) : 1;
+        return n;
+      }
+      case Op::Const: case Op::Name: case Op::Var: case Op::Record: case Op::Field: case Op::Neg: case Op::Not:
+      case Op::Add: case Op::Sub: case Op::Mul: case Op::Div: case Op::Mod: case Op::Eq: case Op::Ne: case Op::Lt:
+      case Op::Le: case Op::Gt: case Op::Ge: case Op::And: case Op::Or: case Op::Succ: case Op::Pred:
+        return 1;
+    }
+    return 0;
+  }
+
+  // ---- value tokens: colour sets, variables, value slots and inscriptions ----
+
+  /// The set of value slot `slot` of flat place `p`, if it is one.
+  std::optional<ColourId> valueSet(PlaceId p, SlotId slot) const {
+    if (!coloured_) return std::nullopt;
+    const auto it = slot_sets_.find({p, slot});
+    return it == slot_sets_.end() ? std::nullopt : std::optional<ColourId>(it->second);
+  }
+
+  /// The initial values of value slot `slot` of flat place `p` (evaluated by checkColours()).
+  Multiset initialValues(PlaceId p, SlotId slot) const {
+    const auto it = initial_.find({p, slot});
+    return it == initial_.end() ? Multiset{} : it->second;
+  }
+
+  /// `text` parsed once, however many instances share it (nullopt after a reported mistake).
+  const std::optional<Expr>& parsed(const SlotText& text) {
+    auto [it, fresh] = parsed_.try_emplace(&text);
+    if (fresh) {
+      core::Diagnostics found;
+      it->second = parseInscription(text.text, text.loc, found);
+      tell(found);
+    }
+    return it->second;
+  }
+
+  /// Passes on what `found` says (a page type's mistake is said once: Diagnostics drops repeats).
+  void tell(const core::Diagnostics& found) { diags_.append(found); }
+
+  void checkColours() {
+    bool any = !spec_.colours.empty() || !spec_.variables.empty();
+    for (const auto& fp : places_) any = any || !fp.spec->colours.empty() || !fp.spec->values.empty();
+    for (const auto& ft : transitions_) any = any || ft.spec->conditioned();
+    for (const auto& a : arcs_) any = any || !a.spec->inscriptions.empty();
+    if (!any) return;
+    coloured_ = true;
+    Colours& colours = colouring_.colours;
+    colours.declare(spec_.colours, diags_);
+    InscriptionScope scope;
+    scope.colours = &colours;
+    std::set<std::string> seen;
+    for (const auto& v : spec_.variables) {
+      const auto set = colours.find(v.colour);
+      if (!seen.insert(v.name).second) {
+        diags_.error(v.loc, "variable '" + v.name + "' is declared twice");
+      } else if (colours.find(v.name) || colours.constant(v.name)) {
+        diags_.error(v.loc, "variable '" + v.name + "' has the name of a colour set or a constant");
+      } else if (!set) {
+        diags_.error(v.loc, "variable '" + v.name + "' is of colour set '" + v.colour + "', which is not declared");
+      } else {
+        scope.variable_names.push_back(v.name);
+        scope.variable_sets.push_back(*set);
+      }
+    }
+    colouring_.variables = scope.variable_names;
+    colouring_.variable_sets = scope.variable_sets;
+    if (diags_.hasErrors()) return;
+
+    // value slots: their sets and initial values
+    for (PlaceId p{0}; p < places_.size(); ++p) {
+      const auto& spec = *places_[p].spec;
+      for (const auto& c : spec.colours) {
+        const auto set = colours.find(c.text);
+        if (!set) {
+          core::Diagnostics found;
+          found.error(c.loc, "colour set '" + c.text + "' is not declared");
+          tell(found);
+          continue;
+        }
+        slot_sets_[{p, c.slot}] = *set;
+      }
+      for (const auto& v : spec.values) {
+        core::Diagnostics found;
+        const auto set = valueSet(p, v.slot);
+        if (!set) {
+          found.error(v.loc, "initial values need a colour set: give place '" + placeName(p) + "' a colour for slot " +
+                                 slotName(v.slot));
+        } else if (const auto& parsed_values = parsed(v)) {
+          Expr e = *parsed_values;
+          std::vector<std::uint32_t> used;
+          if (checkInscription(e, *set, Expect::Tokens, scope, used, found) && !used.empty()) {
+            found.error(v.loc, "initial values cannot name variables ('" + scope.variable_names[used[0]] + "')");
+          } else if (!found.hasErrors() && !evaluateInto(e, {}, colours, *set, initial_[{p, v.slot}])) {
+            found.error(v.loc, "the initial values have no value in colour set '" + colours.at(*set).name +
+                                   "' (a number outside its range?)");
+          }
+        }
+        tell(found);
+      }
+    }
+    // a slot declared to hold values must say which
+    for (PlaceId p{0}; p < places_.size(); ++p) {
+      for (const auto& d : places_[p].spec->kinds) {
+        if (d.kind != SlotKind::Value || valueSet(p, d.slot)) continue;
+        core::Diagnostics found;
+        found.error(d.loc, "slot " + slotName(d.slot) + " of place '" + placeName(p) +
+                               "' holds values but has no colour set: give the place a 'colour'");
+        tell(found);
+      }
+    }
+
+    // per transition: its arcs' inscriptions and its condition, checked together (one list of
+    // the variables they use), in the order emit() adds their terms
+    colouring_.of_transition.assign(transitions_.size(), -1);
+    std::vector<std::vector<std::uint32_t>> used(transitions_.size());
+    auto entry = [&](TransitionId t) -> TransitionInscriptions& {
+      auto& c = colouring_.of_transition[t];
+      if (c < 0) {
+        c = static_cast<std::int32_t>(colouring_.transitions.size());
+        colouring_.transitions.emplace_back();
+        colouring_.transition_ids.push_back(t);
+      }
+      return colouring_.transitions[static_cast<std::size_t>(c)];
+    };
+    for (const auto& a : arcs_) {
+      for (const auto& w : a.spec->weights) {
+        if (valueSet(a.place, w.slot)) {
+          core::Diagnostics found;
+          found.error(w.loc, "slot " + slotName(w.slot) + " of '" + placeName(a.place) +
+                                 "' holds values: give the arc an 'inscription' rather than a weight");
+          tell(found);
+        }
+      }
+      if (a.spec->weights.empty() && a.spec->conditions.empty() && a.spec->inscriptions.empty() &&
+          valueSet(a.place, kDefaultSlot)) {
+        core::Diagnostics found;
+        found.error(a.spec->loc, "place '" + placeName(a.place) + "' holds values (colour set '" +
+                                     colours.at(*valueSet(a.place, kDefaultSlot)).name +
+                                     "'): the arc needs an 'inscription' saying which");
+        tell(found);
+      }
+      for (const auto& ins : a.spec->inscriptions) {
+        auto& t = entry(a.transition);
+        core::Diagnostics found;
+        const auto set = valueSet(a.place, ins.slot);
+        ArcInscription arc;
+        arc.role = a.output ? ArcRole::Put
+                   : a.spec->kind == ArcKind::Test      ? ArcRole::Test
+                   : a.spec->kind == ArcKind::Inhibitor ? ArcRole::Inhibit
+                                                        : ArcRole::Take;
+        if (!set) {
+          found.error(ins.loc, "an inscription needs a place slot that holds values, but slot " + slotName(ins.slot) +
+                                   " of '" + placeName(a.place) + "' has no colour set");
+        } else if (const auto& e = parsed(ins)) {
+          arc.expr = *e;
+          arc.set = *set;
+          checkInscription(arc.expr, *set, Expect::Tokens, scope, used[a.transition], found);
+        }
+        tell(found);
+        t.arcs.push_back(std::move(arc));
+        arc_exprs_.push_back(&t.arcs.back().expr);
+      }
+    }
+    for (TransitionId t{0}; t < transitions_.size(); ++t) {
+      const auto& when = transitions_[t].spec->when;
+      if (when.text.empty()) continue;
+      auto& ti = entry(t);
+      core::Diagnostics found;
+      if (const auto& e = parsed(when)) {
+        ti.when = *e;
+        checkInscription(*ti.when, Colours::kBool, Expect::Condition, scope, used[t], found);
+      }
+      tell(found);
+    }
+    // arc_exprs_ points into vectors that moved as they grew: point again, in the same order
+    arc_exprs_.clear();
+    std::vector<std::size_t> next(colouring_.transitions.size(), 0);
+    for (const auto& a : arcs_) {
+      for (std::size_t k = 0; k < a.spec->inscriptions.size(); ++k) {
+        const auto c = static_cast<std::size_t>(colouring_.of_transition[a.transition]);
+        arc_exprs_.push_back(&colouring_.transitions[c].arcs[next[c]++].expr);
+      }
+    }
+    for (std::size_t c = 0; c < colouring_.transitions.size(); ++c) {
+      const TransitionId t = colouring_.transition_ids[c];
+      auto& ti = colouring_.transitions[c];
+      for (const auto v : used[t]) {
+        ti.variables.push_back(scope.variable_names[v]);
+        ti.sets.push_back(scope.variable_sets[v]);
+      }
+      if (diags_.hasErrors()) continue;
+      if (auto why = unboundVariable(ti, colours); !why.empty()) {
+        core::Diagnostics found;
+        found.error(transitions_[t].spec->loc, "transition '" + transitionName(t) + "': " + why);
+        tell(found);
+      }
     }
   }
+
 
   std::int64_t capacityFor(PlaceId p, SlotId slot) const {
     for (const auto& c : places_[p].spec->capacity) {
@@ -895,6 +1150,13 @@ class Compiler {
   std::unordered_map<const PlaceSpec*, std::uint32_t> member_set_;    // a member place -> its set's index
   std::vector<bool> fused_;  // per flat place after fuse(): whether other members joined it
   NetBuilder builder_;
+  // value tokens (checkColours)
+  bool coloured_ = false;
+  Colouring colouring_;
+  std::map<std::pair<std::uint32_t, SlotId>, ColourId> slot_sets_;  // (flat place, slot) -> its set
+  std::unordered_map<const SlotText*, std::optional<Expr>> parsed_;
+  std::vector<const Expr*> arc_exprs_;  // the checked inscriptions, in the order emit() adds their terms
+  std::map<std::pair<std::uint32_t, SlotId>, Multiset> initial_;  // (flat place, slot) -> its initial values
 };
 
 }  // namespace

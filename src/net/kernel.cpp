@@ -80,6 +80,17 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
     }
   }
 
+  // value slots and the terms of coloured transitions
+  colouring_ = n.colouring();
+  if (colouring_) {
+    values_ = colouring_->initial;
+    values_.resize(slots.size());
+    term_arc_.assign(n.terms().size(), -1);
+    for (const auto& terms : colouring_->arc_terms) {
+      for (std::size_t k = 0; k < terms.size(); ++k) term_arc_[terms[k]] = static_cast<std::int32_t>(k);
+    }
+  }
+
   // transitions: packed firing data, and the count of terms that do not hold
   const auto transitions = n.transitions();
   const std::size_t count = transitions.size();
@@ -142,7 +153,8 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
   for (TransitionId t{0}; t < count; ++t) {
     bool predicates = false;
     for (auto i = tr_[t].terms_begin; i < tr_[t].conditions_end; ++i) predicates = predicates || terms_[i].predicate;
-    if (!(tr_[t].scripts & kGuard) && !predicates && !(tr_[t].probability < 1.0)) continue;
+    const bool bound = colouring_ && colouring_->of(t);
+    if (!(tr_[t].scripts & kGuard) && !predicates && !(tr_[t].probability < 1.0) && !bound) continue;
     if (verdict_.empty()) verdict_.assign(count, kFree);
     verdict_[t] = static_cast<std::uint8_t>(Readiness::Untried);
   }
@@ -320,6 +332,63 @@ bool Kernel::selectTokens(TransitionId t) {
   return true;
 }
 
+std::vector<BoundOccurrence> Kernel::bindings(TransitionId t, std::size_t most) const {
+  const TransitionInscriptions* ti = colouring_ ? colouring_->of(t) : nullptr;
+  if (!ti) return {};
+  const auto& terms = colouring_->arc_terms[static_cast<std::size_t>(colouring_->of_transition[t])];
+  const auto marking = [&](std::size_t arc) -> const Multiset& { return values_[terms_[terms[arc]].place_slot]; };
+  // room on an output's place slot: what this occurrence takes from it first frees room
+  const TransitionState& tr = tr_[t];
+  bool bounded = false;
+  for (const auto term : terms) bounded = bounded || (terms_[term].kind == TermKind::Output && slots_[terms_[term].place_slot].capacity != kUnbounded);
+  auto out = enabledBindings(*ti, colouring_->colours, marking, {}, bounded ? SIZE_MAX : most);
+  if (!bounded) return out;
+  std::erase_if(out, [&](const BoundOccurrence& o) {
+    for (std::size_t k = 0; k < terms.size(); ++k) {
+      const Term& term = terms_[terms[k]];
+      const SlotState& st = slots_[term.place_slot];
+      if (term.kind != TermKind::Output || st.capacity == kUnbounded) continue;
+      std::int64_t take = 0, put = 0;
+      for (auto i = tr.terms_begin; i < tr.inputs_end; ++i) {
+        if (terms_[i].place_slot == term.place_slot) take += term_arc_[i] >= 0 ? boundCount(i, o) : terms_[i].weight;
+      }
+      for (auto i = tr.conditions_end; i < tr.terms_end; ++i) {
+        if (terms_[i].place_slot == term.place_slot) put += term_arc_[i] >= 0 ? boundCount(i, o) : terms_[i].weight;
+      }
+      if (st.capacity - (st.m - take) - st.r < put) return true;
+    }
+    return false;
+  });
+  if (out.size() > most) out.resize(most);
+  return out;
+}
+
+bool Kernel::selectBinding(TransitionId t) {
+  // in declaration order, the first binding; with random ties, one drawn from all
+  auto found = bindings(t, random_ties_ ? SIZE_MAX : 1);
+  if (found.empty()) return false;
+  const std::size_t pick = random_ties_ && found.size() > 1 ? static_cast<std::size_t>(random_.below(found.size())) : 0;
+  bound_next_ = std::move(found[pick]);
+  return true;
+}
+
+const Multiset& Kernel::values(PlaceSlotId ps) const {
+  static const Multiset kNone;
+  return values_.empty() ? kNone : values_[ps];
+}
+
+const BoundOccurrence* Kernel::binding(TransitionId t) const {
+  if (bound_.empty() || !colouring_ || !colouring_->of(t)) return nullptr;
+  Entry e = t;
+  if (tr_[t].multi) {
+    const Occurrence* o = currentOccurrence(t);
+    if (!o) return nullptr;
+    e = kOccurrenceBit | static_cast<Entry>(o - occ_.data());
+  }
+  const auto it = bound_.find(e);
+  return it == bound_.end() ? nullptr : &it->second;
+}
+
 std::span<const std::pair<SlotId, NodeRef>> Kernel::held(TransitionId t) const {
   if (tr_[t].multi) {
     const Occurrence* o = currentOccurrence(t);
@@ -356,6 +425,7 @@ std::int64_t Kernel::endStep(TransitionId t) const {
 std::string Kernel::setMarking(PlaceSlotId ps, std::int64_t count) {
   SlotState& st = slots_[ps];
   if (st.fifo >= 0) return "a node slot's tokens are nodes, not a count";
+  if (!values_.empty() && colouring_->setOf(ps)) return "a value slot's tokens are values, not a count";
   if (count < 0) return "a marking cannot be negative";
   if (st.capacity != kUnbounded && count + st.r > st.capacity) {
     return "no room: capacity " + std::to_string(st.capacity) + ", reserved " + std::to_string(st.r);
@@ -529,6 +599,12 @@ void Kernel::beginAs(TransitionId t) {
     in_fire_.push_back(entry);
   }
   for (auto* o : observers_) o->onStart(t, steps());
+  const BoundOccurrence* bound = nullptr;
+  if (colouring_ && colouring_->of(t)) {
+    auto& b = bound_[entry] = std::move(bound_next_);
+    bound = &b;
+    for (auto* o : observers_) o->onBinding(t, b.binding, steps());
+  }
 
   // take the inputs (node tokens move into the transition, FIFO), then reserve the outputs;
   // scripts run only once the start is complete, so that what they do to the net (delete a
@@ -538,6 +614,25 @@ void Kernel::beginAs(TransitionId t) {
     const FiringTerm& term = firing_terms_[i];
     const PlaceSlotId ps = term.place_slot;
     SlotState& st = slots_[ps];
+    if (bound && term_arc_[i] >= 0) [[unlikely]] {
+      // values: the binding says which and how many
+      const Multiset& taken = bound->arcs[static_cast<std::size_t>(term_arc_[i])];
+      const std::int64_t count = multisetSize(taken);
+      st.m -= count;
+      Multiset& here = values_[ps];
+      for (const auto& [v, k] : taken) {
+        auto it = here.find(v);
+        if ((it->second -= k) == 0) here.erase(it);
+      }
+      moved_.clear();
+      for (auto* o : observers_) {
+        o->onRemove(ps, count, moved_, steps());
+        o->onValues(ps, taken, false, steps());
+      }
+      if ((st.scripts & kOnRemove) && hooks_) calls.push_back({ps, count, false, 0});
+      update(ps);
+      continue;
+    }
     st.m -= term.weight;
     moved_.clear();
     if (st.fifo >= 0) {
@@ -567,7 +662,7 @@ void Kernel::beginAs(TransitionId t) {
   for (auto i = tr.conditions_end; i < tr.terms_end; ++i) {
     const FiringTerm& term = firing_terms_[i];
     SlotState& st = slots_[term.place_slot];
-    st.r += term.weight;
+    st.r += bound && term_arc_[i] >= 0 ? boundCount(i, *bound) : term.weight;
     if (st.capacity != kUnbounded) update(term.place_slot);
     // the completion deposits here and looks at the slot's first watcher: fetched now, while
     // the slot's line is in the cache
@@ -614,10 +709,37 @@ void Kernel::finishAs(Entry e) {
     hooks_->postFire(t);
     current_ = outer;
   }
+  BoundOccurrence bound;
+  const bool coloured = !bound_.empty() && colouring_->of(t);
+  if (coloured) {
+    auto it = bound_.find(e);
+    bound = std::move(it->second);
+    bound_.erase(it);
+  }
   for (auto i = tr.conditions_end; i < tr.terms_end; ++i) {
     const FiringTerm& term = firing_terms_[i];
     const PlaceSlotId ps = term.place_slot;
     SlotState& st = slots_[ps];
+    if (coloured && term_arc_[i] >= 0) [[unlikely]] {
+      const Multiset& put = bound.arcs[static_cast<std::size_t>(term_arc_[i])];
+      const std::int64_t count = multisetSize(put);
+      st.r -= count;
+      st.m += count;
+      Multiset& here = values_[ps];
+      for (const auto& [v, k] : put) here[v] += k;
+      moved_.clear();
+      for (auto* o : observers_) {
+        o->onDeposit(ps, count, moved_, steps());
+        o->onValues(ps, put, true, steps());
+      }
+      update(ps);
+      if ((st.scripts & kOnDeposit) && hooks_) {
+        const Entry outer = std::exchange(current_, e);
+        deposited(ps, st, count);
+        current_ = outer;
+      }
+      continue;
+    }
     st.r -= term.weight;
     moved_.clear();
     if (st.fifo < 0) st.m += term.weight;
@@ -793,6 +915,7 @@ inline bool Kernel::tryStart(TransitionId t, bool again) {
     if (!hooks_->guard(t)) return heldBy(t, hooks_->halted() ? Readiness::Halted : Readiness::Guard);
   }
   if (tr.held >= 0 && hooks_ && !selectTokens(t)) return heldBy(t, hooks_->halted() ? Readiness::Halted : Readiness::Predicate);
+  if (colouring_ && colouring_->of(t) && !selectBinding(t)) return heldBy(t, Readiness::Binding);
   const double p = tr.probability;
   if (p < 1.0) {
     // one draw per transition and phase, however often immediates re-enable it; a further
@@ -966,6 +1089,10 @@ std::string Kernel::fire(TransitionId t) {
     heldBy(t, hooks_->halted() ? Readiness::Halted : Readiness::Predicate);
     return "no node token satisfies the predicates of " + name;
   }
+  if (colouring_ && colouring_->of(t) && !selectBinding(t)) {
+    heldBy(t, Readiness::Binding);
+    return "no binding of " + name + "'s variables is enabled";
+  }
   if (!verdict_.empty() && verdict_[t] != kFree) verdict_[t] = static_cast<std::uint8_t>(Readiness::Able);
   // what the start enables waits for the next firing phase, as if enabled in this one
   const bool was = std::exchange(in_firing_, true);
@@ -1001,6 +1128,7 @@ bool heldBack(Readiness r) {
     case Readiness::Condition:
     case Readiness::Guard:
     case Readiness::Predicate:
+    case Readiness::Binding:
     case Readiness::Probability:
     case Readiness::Halted: return true;
   }
@@ -1017,6 +1145,7 @@ const char* readinessName(Readiness r) {
     case Readiness::Condition: return "condition";
     case Readiness::Guard: return "guard";
     case Readiness::Predicate: return "predicate";
+    case Readiness::Binding: return "binding";
     case Readiness::Probability: return "probability";
     case Readiness::Halted: return "halted";
   }
@@ -1069,6 +1198,7 @@ std::string Kernel::readinessText(TransitionId t) const {
     case Readiness::Condition: return firstFailing(true);
     case Readiness::Guard: return "guard false";
     case Readiness::Predicate: return "no node token satisfies its predicates";
+    case Readiness::Binding: return "no binding of its variables is enabled by the values its places hold";
     case Readiness::Probability: {
       char p[32];
       std::snprintf(p, sizeof p, "%g", tr.probability);

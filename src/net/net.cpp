@@ -172,6 +172,23 @@ void NetBuilder::setSlotScript(PlaceId place, SlotId slot, ScriptKind kind, std:
 
 void NetBuilder::setLastPredicate(std::int32_t index) { arcs_.back().predicate = index; }
 
+void NetBuilder::setValues(PlaceId place, SlotId slot, ColourId set, Multiset initial) {
+  auto& s = slotOf(place, slot);
+  s.kind = SlotKind::Value;
+  s.set = static_cast<std::int32_t>(set);
+  s.initial = multisetSize(initial);
+  if (s.values < 0) {
+    s.values = static_cast<std::int32_t>(values_.size());
+    values_.emplace_back();
+  }
+  values_[static_cast<std::size_t>(s.values)] = std::move(initial);
+}
+
+void NetBuilder::setColouring(Colouring colouring, std::vector<std::vector<std::uint32_t>> arcs) {
+  colouring_ = std::move(colouring);
+  colour_arcs_ = std::move(arcs);
+}
+
 void NetBuilder::setSensor(PlaceId place, SlotId slot, std::string path) {
   auto& s = slotOf(place, slot);
   s.kind = SlotKind::Sensor;
@@ -235,6 +252,10 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
         net->sensor_paths_.back() = std::move(sensors_[static_cast<std::size_t>(s.sensor)]);
       }
       if (!scripts_.empty()) net->script_index_.slots.push_back(s.scripts);
+      if (colouring_) {
+        colouring_->slot_set.push_back(s.set);
+        colouring_->initial.push_back(s.values >= 0 ? std::move(values_[static_cast<std::size_t>(s.values)]) : Multiset{});
+      }
       net->place_slots_.push_back(ps);
     }
     place.slots_end = static_cast<std::uint32_t>(net->place_slots_.size());
@@ -329,6 +350,21 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
     if (watched(term)) net->watchers_[fill[term.place_slot]++] = id;
   }
 
+  if (colouring_) {
+    // each coloured transition's arcs: from the order they were added to their terms
+    std::vector<std::uint32_t> final_of(arcs_.size());
+    for (std::uint32_t pos = 0; pos < order.size(); ++pos) final_of[order[pos]] = pos;
+    std::vector<std::vector<std::uint32_t>> added(colouring_->transitions.size());
+    for (std::uint32_t i = 0; i < arcs_.size(); ++i) {
+      const auto c = colouring_->of_transition[arcs_[i].transition];
+      if (c >= 0) added[static_cast<std::size_t>(c)].push_back(i);
+    }
+    colouring_->arc_terms.resize(colouring_->transitions.size());
+    for (std::size_t c = 0; c < colour_arcs_.size() && c < added.size(); ++c) {
+      for (const auto k : colour_arcs_[c]) colouring_->arc_terms[c].push_back(TermId{final_of[added[c][k]]});
+    }
+    net->colouring_ = std::make_shared<const Colouring>(std::move(*colouring_));
+  }
   net->transitions_ = std::move(transitions_);
   net->scripts_ = std::move(scripts_);
   net->globals_script_ = globals_script_;

@@ -26,7 +26,27 @@ void TraceWriter::endWithTransition(TransitionId t) {
 
 void TraceWriter::onStart(TransitionId t, std::int64_t step) {
   head(step, "start");
+  // a transition with variables: its line ends with its binding (onBinding, next)
+  const Colouring* c = net_.colouring();
+  if (c && c->of(t)) return;
   endWithTransition(t);
+}
+
+void TraceWriter::onBinding(TransitionId t, const Binding& b, std::int64_t) {
+  name_.clear();
+  net_.appendTransitionName(name_, t);
+  out_ << ",\"transition\":" << core::jsonQuote(name_) << ",\"binding\":{";
+  const Colouring& c = *net_.colouring();
+  const TransitionInscriptions& ti = *c.of(t);
+  for (std::size_t k = 0; k < b.size() && k < ti.variables.size(); ++k) {
+    out_ << (k ? "," : "") << core::jsonQuote(ti.variables[k]) << ':' << core::jsonQuote(c.colours.text(ti.sets[k], b[k]));
+  }
+  out_ << "}}\n";
+}
+
+void TraceWriter::onValues(PlaceSlotId ps, const Multiset& values, bool, std::int64_t) {
+  const Colouring& c = *net_.colouring();
+  out_ << ",\"values\":" << core::jsonQuote(c.colours.text(static_cast<ColourId>(c.slot_set[ps]), values)) << "}\n";
 }
 
 void TraceWriter::onComplete(TransitionId t, std::int64_t step, std::int64_t) {
@@ -45,6 +65,8 @@ void TraceWriter::tokens(PlaceSlotId ps, std::int64_t count, std::span<const Nod
     for (std::size_t i = 0; i < nodes.size(); ++i) out_ << (i ? "," : "") << core::jsonQuote(namer_(nodes[i]));
     out_ << ']';
   }
+  // a value slot's line ends with its values (onValues, next)
+  if (slot.kind == SlotKind::Value) return;
   out_ << "}\n";
 }
 

@@ -258,6 +258,50 @@ py::object sensorView(const SlotView& s, const std::string& path) {
 /// The scene node of the page-type instance that construct `name` belongs to ("line/cellA/t":
 /// the node "cellA", where the instance places its machine; nested instances give
 /// "cellA/sub"); None for a construct of a top-level page or an instance without scene nodes.
+/// Value `v` of set `set` as Python sees it: a bool, an int, a str (a string, or an enum's
+/// constant by name), a tuple (a product), a SimpleNamespace (a record), None (dot).
+py::object pythonValue(const net::Colours& colours, net::ColourId set, const net::Value& v) {
+  const net::ColourSet& cs = colours.at(set);
+  switch (cs.kind) {
+    case net::ColourKind::Dot: return py::none();
+    case net::ColourKind::Bool: return py::bool_(v.i != 0);
+    case net::ColourKind::Integer: return py::int_(v.i);
+    case net::ColourKind::Enum:
+      return py::str(v.i >= 0 && static_cast<std::size_t>(v.i) < cs.constants.size() ? cs.constants[static_cast<std::size_t>(v.i)]
+                                                                                      : std::string("?"));
+    case net::ColourKind::String: return py::str(v.s);
+    case net::ColourKind::Product: {
+      py::tuple out(v.items.size());
+      for (std::size_t k = 0; k < v.items.size() && k < cs.components.size(); ++k) {
+        out[k] = pythonValue(colours, cs.components[k], v.items[k]);
+      }
+      return out;
+    }
+    case net::ColourKind::Record: {
+      py::dict fields;
+      for (std::size_t k = 0; k < v.items.size() && k < cs.components.size(); ++k) {
+        fields[py::str(cs.fields[k])] = pythonValue(colours, cs.components[k], v.items[k]);
+      }
+      return py::module_::import("types").attr("SimpleNamespace")(**fields);
+    }
+  }
+  return py::none();
+}
+
+/// The binding of transition `t`'s current occurrence as a SimpleNamespace of its variables,
+/// or None when it has no variables or is not occurring.
+py::object bindingOf(Context& ctx, net::TransitionId t) {
+  const net::BoundOccurrence* b = ctx.kernelRef().binding(t);
+  const net::Colouring* c = ctx.netRef().colouring();
+  if (!b || !c || !c->of(t)) return py::none();
+  const net::TransitionInscriptions& ti = *c->of(t);
+  py::dict vars;
+  for (std::size_t k = 0; k < b->binding.size() && k < ti.variables.size(); ++k) {
+    vars[py::str(ti.variables[k])] = pythonValue(c->colours, ti.sets[k], b->binding[k]);
+  }
+  return py::module_::import("types").attr("SimpleNamespace")(**vars);
+}
+
 py::object instanceOf(Context& ctx, std::string_view name) {
   const auto first = name.find('/'), last = name.rfind('/');
   if (first == std::string_view::npos || first == last || !ctx.plant()) return py::none();
@@ -913,6 +957,9 @@ void registerTransitionView(py::module_& m) {
                                return static_cast<double>(k.steps() - k.startStep(v.t)) / static_cast<double>(whole);
                              },
                              "share of the occurrence done, in (0, 1] during in_fire")
+      .def_property_readonly("binding", [](const TransitionView& v) { return bindingOf(v.r.get(), v.t); },
+                             "the values of its variables in the occurrence running (`self.binding.x`), or None "
+                             "when it has none (value tokens: semantics.md)")
       .def_property_readonly("occurrences",
                              [](const TransitionView& v) { return v.r.get().kernelRef().occurrences(v.t); },
                              "how many of its occurrences run now (more than 1 only with servers)")

@@ -35,6 +35,9 @@ struct PlaceFigures {
   std::int64_t final_tokens = 0;
   double throughput = 0.0;   ///< tokens deposited per second
   bool sensors_only = false; ///< every slot of it reads a sensor (it holds no tokens of its own)
+  /// its value slots' values at the end, as the inscription language writes them (`2'p1 ++
+  /// 1'p3`; a slot other than a0 named first: `a1: ...`); "" for a place without value slots
+  std::string final_values;
 };
 
 /// One path the token of a cycle with alternative circuits took, as the run measured it.

@@ -54,6 +54,14 @@ class NetBuilder {
   void setSlotScript(PlaceId place, SlotId slot, ScriptKind kind, std::int32_t index);
   /// Makes slot `slot` of `place` a sensor slot reading the sensor at `path`.
   void setSensor(PlaceId place, SlotId slot, std::string path);
+  /// Makes slot `slot` of `place` a value slot of set `set` holding `initial` (its count is
+  /// the multiset's size).
+  void setValues(PlaceId place, SlotId slot, ColourId set, Multiset initial);
+  /// Gives the net value tokens: `colouring` without its per-slot parts (slot_set, initial),
+  /// which freeze() fills from setValues, and without arc_terms, which freeze() fills from
+  /// `arcs`: per coloured transition, per arc, the index among the terms added for the
+  /// transition (addInput, addOutput, addCondition, in the order added) of the arc's term.
+  void setColouring(Colouring colouring, std::vector<std::vector<std::uint32_t>> arcs);
   /// Adds a condition term: the transition may start only while script `index` (an
   /// expression over the sensor slot `slot` of `place`) is true.
   void addCondition(PlaceId place, TransitionId transition, SlotId slot, std::int32_t index);
@@ -75,6 +83,8 @@ class NetBuilder {
     std::array<std::int32_t, 6> scripts{-1, -1, -1, -1, -1, -1};
     std::int32_t nodes = -1;       // its initial node tokens in nodes_, if it has any
     std::int32_t sensor = -1;      // its sensor's path in sensors_, if it reads one
+    std::int32_t set = -1;         // a value slot's colour set
+    std::int32_t values = -1;      // its initial values in values_
     std::uint32_t next = kNoSlot;  // the place's next slot in slots_
   };
   static constexpr std::uint32_t kNoSlot = 0xffffffffu;
@@ -101,6 +111,9 @@ class NetBuilder {
   std::vector<ScriptSpec> scripts_;
   std::vector<std::array<std::int32_t, 4>> transition_scripts_;
   std::int32_t globals_script_ = -1;
+  std::vector<Multiset> values_;                          // value slots' initial values
+  std::optional<Colouring> colouring_;                    // see setColouring
+  std::vector<std::vector<std::uint32_t>> colour_arcs_;   // see setColouring
 };
 
 }  // namespace gdpn::net

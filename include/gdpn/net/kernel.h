@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -49,6 +50,7 @@ enum class Readiness : std::uint8_t {
   Condition,    ///< its marking suffices, but a sensor condition on one of its arcs is false
   Guard,        ///< its marking suffices, but its guard was false
   Predicate,    ///< its marking suffices, but too few node tokens satisfied its predicates
+  Binding,      ///< its counts suffice, but no binding of its variables is enabled (value tokens)
   Probability,  ///< its marking suffices, but it lost its probability draw
   Halted,       ///< its marking suffices, but the model's scripts have stopped (an error, a timeout)
 };
@@ -56,7 +58,7 @@ enum class Readiness : std::uint8_t {
 /// True for the readiness of a transition whose marking suffices but that something else
 /// (condition, guard, predicate, probability draw, stopped scripts) held back.
 [[nodiscard]] bool heldBack(Readiness r);
-/// A word for `r` ("able", "untried", "occurring", "tokens", "room", "condition", "guard",
+/// A word for `r` ("able", "untried", "occurring", "tokens", "room", "condition", "guard", "binding",
 /// "predicate", "probability", "halted"), for reports.
 [[nodiscard]] const char* readinessName(Readiness r);
 
@@ -144,6 +146,14 @@ class Kernel {
   [[nodiscard]] std::int64_t endStep(TransitionId t) const;
   /// The node tokens the current occurrence of `t` holds, with their slots, in the order taken.
   [[nodiscard]] std::span<const std::pair<SlotId, NodeRef>> held(TransitionId t) const;
+  /// The values on value slot `ps` (empty for other slots).
+  [[nodiscard]] const Multiset& values(PlaceSlotId ps) const;
+  /// The binding of the current occurrence of `t` and what its arcs take and put (as held());
+  /// null when `t` has no variables or is not occurring.
+  [[nodiscard]] const BoundOccurrence* binding(TransitionId t) const;
+  /// The bindings of `t` enabled now, in the canonical order (at most `most`): what a firing
+  /// phase chooses from. Empty for a transition without inscriptions.
+  [[nodiscard]] std::vector<BoundOccurrence> bindings(TransitionId t, std::size_t most = SIZE_MAX) const;
   /// Sets the marking of control slot `ps` to `count` (a script's `set`). Returns "" or why
   /// not: a node slot, a negative count, or no room (count + reserve > capacity). Observers
   /// see the change as a deposit or a removal; on_deposit/on_remove scripts do not run.
@@ -289,6 +299,13 @@ class Kernel {
   void prefetchSlots(TransitionId t) const;
   void markEnabled(TransitionId t);
   bool selectTokens(TransitionId t);
+  // chooses the binding the next start of coloured transition `t` occurs in (bound_next_):
+  // false when none is enabled
+  bool selectBinding(TransitionId t);
+  // the size of what term `i` of a coloured transition moves in the occurrence `o`
+  [[nodiscard]] std::int64_t boundCount(std::uint32_t i, const BoundOccurrence& o) const {
+    return multisetSize(o.arcs[static_cast<std::size_t>(term_arc_[i])]);
+  }
   void begin(TransitionId t);
   template <bool kServers>
   void beginAs(TransitionId t);
@@ -327,6 +344,12 @@ class Kernel {
 
   std::shared_ptr<const Net> net_;
   const Term* terms_ = nullptr;
+  // value tokens (none when the net has no colouring)
+  const Colouring* colouring_ = nullptr;
+  std::vector<Multiset> values_;            // per place slot
+  std::vector<std::int32_t> term_arc_;      // per term: its arc in its coloured transition, -1 for others
+  BoundOccurrence bound_next_;              // what selectBinding chose for the next begin()
+  std::map<Entry, BoundOccurrence> bound_;  // per running occurrence of a coloured transition
   /// Per term (same index): its place slot and weight, all that firings read of it. A ring's
   /// firing reads 16 bytes of them rather than 40, a quarter of a cache line at 10^6 terms.
   std::vector<FiringTerm> firing_terms_;

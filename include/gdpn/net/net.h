@@ -4,6 +4,7 @@
 /// contiguous arrays indexed by integers. Built once by `compile()`, shared read-only.
 
 #include <array>
+#include <memory>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "gdpn/core/diagnostics.h"
+#include "gdpn/net/colouring.h"
 #include "gdpn/net/id.h"
 #include "gdpn/net/names.h"
 #include "gdpn/net/slot.h"
@@ -186,6 +188,11 @@ class Net {
   [[nodiscard]] std::int32_t globalsScript() const { return globals_script_; }
   /// True when any construct has a script.
   [[nodiscard]] bool scripted() const { return !scripts_.empty(); }
+  /// Its value tokens: colour sets, value slots, coloured transitions; null when it has none.
+  [[nodiscard]] const Colouring* colouring() const { return colouring_.get(); }
+  /// True when its arc terms' weights are the tokens every occurrence moves (always, but for a
+  /// value inscription whose size depends on the binding: Colouring::counts_exact).
+  [[nodiscard]] bool countsExact() const { return !colouring_ || colouring_->counts_exact; }
   /// Approximate heap bytes held by this net.
   [[nodiscard]] std::size_t memoryBytes() const;
 
@@ -205,6 +212,7 @@ class Net {
   ScriptIndex script_index_;
   std::int32_t globals_script_ = -1;
   std::vector<std::string> sensor_paths_;
+  std::shared_ptr<const Colouring> colouring_;
 };
 
 }  // namespace gdpn::net

@@ -31,6 +31,15 @@ class NetObserver {
                          std::int64_t step) {
     (void)ps, (void)count, (void)nodes, (void)step;
   }
+  /// The occurrence of `t` whose onStart came just before occurs in binding `b` (its values of
+  /// the transition's variables, Colouring::transitions' order); only for a transition with
+  /// variables, before its removals.
+  virtual void onBinding(TransitionId t, const Binding& b, std::int64_t step) { (void)t, (void)b, (void)step; }
+  /// The onRemove (`deposited` false) or onDeposit just before, on value slot `ps`, moved
+  /// `values`.
+  virtual void onValues(PlaceSlotId ps, const Multiset& values, bool deposited, std::int64_t step) {
+    (void)ps, (void)values, (void)deposited, (void)step;
+  }
 };
 
 }  // namespace gdpn::net

@@ -24,6 +24,8 @@ class TraceWriter : public NetObserver {
   void onComplete(TransitionId t, std::int64_t step, std::int64_t started) override;
   void onRemove(PlaceSlotId ps, std::int64_t count, std::span<const NodeRef> nodes, std::int64_t step) override;
   void onDeposit(PlaceSlotId ps, std::int64_t count, std::span<const NodeRef> nodes, std::int64_t step) override;
+  void onBinding(TransitionId t, const Binding& b, std::int64_t step) override;
+  void onValues(PlaceSlotId ps, const Multiset& values, bool deposited, std::int64_t step) override;
   /// Writes a free event line: {"step":..,"t":..,"ev":`event`,`fields`} where `fields` is
   /// already JSON text of the form "\"key\":value,..." (or empty).
   void event(std::int64_t step, const char* event, const std::string& fields);

@@ -192,7 +192,8 @@ void arcInspector(App& app, const Selection& sel, nlohmann::json& report) {
       switch (slotKindOf(*place, slot)) {
         case net::SlotKind::Node: changed = expressionRow("predicate", slot, arc.predicates, was.loc, report) || changed; break;
         case net::SlotKind::Sensor: changed = expressionRow("condition", slot, arc.conditions, was.loc, report) || changed; break;
-        case net::SlotKind::Control: break;
+        case net::SlotKind::Control:
+        case net::SlotKind::Value: break;  // an inscription: edited in the contents view
       }
     }
   }
