@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include "gdpn/net/inscription.h"
 
 namespace gdpn::net {
@@ -216,6 +218,261 @@ TEST(InscriptionParse, AVarIsWrittenByItsName) {
   const std::vector<std::string> names = {"a", "n"};
   EXPECT_EQ(inscriptionText(e, Colours{}, &names), "n + 1");
   EXPECT_EQ(inscriptionText(e, Colours{}), "$1 + 1");
+}
+
+/// A net's sets and variables: R = 1..3, Phil = p1..p3 (not cyclic), Ring = a, b, c (cyclic),
+/// Pair = (R, Phil), Rec = {id: R, name: string}; x, y: Phil; n, m: R; i: int; s: string;
+/// r: Rec; q: Pair; b: bool; z: Ring.
+class Checked : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    core::Diagnostics d;
+    auto spec = [](std::string name, ColourKind kind) {
+      ColourSetSpec s;
+      s.name = std::move(name);
+      s.kind = kind;
+      return s;
+    };
+    ColourSetSpec r = spec("R", ColourKind::Integer);
+    r.range = true;
+    r.lo = 1;
+    r.hi = 3;
+    ColourSetSpec phil = spec("Phil", ColourKind::Enum);
+    phil.constants = {"p1", "p2", "p3"};
+    ColourSetSpec ring = spec("Ring", ColourKind::Enum);
+    ring.constants = {"a", "b", "c"};
+    ring.cyclic = true;
+    ColourSetSpec pair = spec("Pair", ColourKind::Product);
+    pair.components = {"R", "Phil"};
+    ColourSetSpec rec = spec("Rec", ColourKind::Record);
+    rec.components = {"R", "string"};
+    rec.fields = {"id", "name"};
+    ColourSetSpec pp = spec("PP", ColourKind::Product);
+    pp.components = {"Phil", "Phil"};
+    ASSERT_TRUE(colours.declare({r, phil, ring, pair, rec, pp}, d)) << d.str();
+    scope.colours = &colours;
+    scope.variable_names = {"x", "y", "n", "m", "i", "s", "r", "q", "b", "z"};
+    scope.variable_sets = {kPhil, kPhil, kR, kR, Colours::kInt, Colours::kString, kRec, kPair, Colours::kBool, kRing};
+  }
+
+  /// `text` checked against `set` as `what`; the diagnostics' text in `errors`.
+  std::optional<Expr> check(std::string_view text, ColourId set, Expect what = Expect::Multiset) {
+    core::Diagnostics d;
+    auto e = parseInscription(text, at(), d);
+    EXPECT_TRUE(e.has_value()) << d.str();
+    if (!e) return std::nullopt;
+    used.clear();
+    const bool ok = checkInscription(*e, set, what, scope, used, d);
+    errors = d.str();
+    if (!ok) return std::nullopt;
+    return e;
+  }
+  /// The first error checking `text` gives.
+  std::string checkError(std::string_view text, ColourId set, Expect what = Expect::Multiset) {
+    EXPECT_FALSE(check(text, set, what).has_value()) << text;
+    return errors.substr(0, errors.find('\n'));
+  }
+  /// The binding of `used` from values by variable name.
+  Binding bind(const std::map<std::string, Value>& values) const {
+    Binding b;
+    for (const std::uint32_t v : used) {
+      const auto it = values.find(scope.variable_names[v]);
+      b.push_back(it == values.end() ? Value::dot() : it->second);
+    }
+    return b;
+  }
+  std::optional<Value> value(std::string_view text, ColourId set, const std::map<std::string, Value>& values = {}) {
+    const auto e = check(text, set, Expect::Value);
+    EXPECT_TRUE(e.has_value()) << text << ": " << errors;
+    if (!e) return std::nullopt;
+    return evaluate(*e, bind(values), colours);
+  }
+  bool holds(std::string_view text, const std::map<std::string, Value>& values = {}) {
+    const auto e = check(text, Colours::kBool, Expect::Condition);
+    EXPECT_TRUE(e.has_value()) << text << ": " << errors;
+    if (!e) return false;
+    const auto v = evaluate(*e, bind(values), colours);
+    EXPECT_TRUE(v.has_value()) << text;
+    return v && *v == Value::boolean(true);
+  }
+  /// The multiset `text` denotes in a place of `set`, written out; "none" when it has no value.
+  std::string tokens(std::string_view text, ColourId set, const std::map<std::string, Value>& values = {}) {
+    const auto e = check(text, set);
+    EXPECT_TRUE(e.has_value()) << text << ": " << errors;
+    if (!e) return "unchecked";
+    Multiset m;
+    if (!evaluateInto(*e, bind(values), colours, set, m)) return "none";
+    return colours.text(set, m);
+  }
+
+  static constexpr ColourId kR = 4, kPhil = 5, kRing = 6, kPair = 7, kRec = 8, kPP = 9;
+  Colours colours;
+  InscriptionScope scope;
+  std::vector<std::uint32_t> used;
+  std::string errors;
+};
+
+Value I(std::int64_t n) { return Value::integer(n); }
+
+TEST_F(Checked, NamesResolveToVariablesAndConstants) {
+  const auto e = check("(n, p2) ++ 2'(m, x)", kPair);
+  ASSERT_TRUE(e.has_value()) << errors;
+  // n, then m, then x as they are met
+  EXPECT_EQ(used, (std::vector<std::uint32_t>{2, 3, 0}));
+  const Expr& first = e->args[0];
+  EXPECT_EQ(first.args[0].op, Expr::Op::Var);
+  EXPECT_EQ(first.args[0].index, 0);
+  EXPECT_EQ(first.args[1].op, Expr::Op::Const);
+  EXPECT_EQ(first.args[1].value, I(1));
+  EXPECT_EQ(first.args[1].type, kPhil);
+  EXPECT_EQ(e->args[1].args[1].args[1].index, 2);
+  EXPECT_TRUE(e->multiset);
+  EXPECT_EQ(e->type, kPair);
+  // printed back with the names of the transition's variables and the constants' names
+  const std::vector<std::string> names = {"n", "m", "x"};
+  EXPECT_EQ(inscriptionText(*e, colours, &names), "(n, p2) ++ 2'(m, x)");
+}
+
+TEST_F(Checked, MistakesAreNamedAndLocated) {
+  EXPECT_EQ(checkError("3", kPhil), "m.gdpn.yaml:5:10: error: expected Phil, found int");
+  EXPECT_EQ(checkError("1'x ++ 1'y2", kPhil), "m.gdpn.yaml:5:19: error: unknown name 'y2'");
+  EXPECT_EQ(checkError("all", Colours::kString), "m.gdpn.yaml:5:10: error: 'all' needs a finite colour set: string is "
+                                                 "not");
+  EXPECT_EQ(checkError("all(Nope)", kPhil), "m.gdpn.yaml:5:10: error: unknown colour set 'Nope'");
+  EXPECT_EQ(checkError("all(R)", kPhil), "m.gdpn.yaml:5:10: error: expected Phil, found a multiset of R");
+  EXPECT_EQ(checkError("x'y", kPhil), "m.gdpn.yaml:5:10: error: the multiplicity of n'v needs a whole number, found "
+                                      "Phil");
+  EXPECT_EQ(checkError("(n, x, x)", kPair), "m.gdpn.yaml:5:10: error: expected Pair (2 components), found a tuple of 3");
+  EXPECT_EQ(checkError("(n, n)", kPair), "m.gdpn.yaml:5:14: error: expected Phil, found R");
+  EXPECT_EQ(checkError("{id = 1}", kRec), "m.gdpn.yaml:5:10: error: record Rec needs its field 'name'");
+  EXPECT_EQ(checkError("{id = 1, name = \"a\", age = 3}", kRec), "m.gdpn.yaml:5:37: error: record Rec has no field "
+                                                                 "'age'");
+  EXPECT_EQ(checkError("r.age", Colours::kInt, Expect::Value), "m.gdpn.yaml:5:10: error: record Rec has no field 'age'");
+  EXPECT_EQ(checkError("x.id", Colours::kInt, Expect::Value), "m.gdpn.yaml:5:10: error: '.id' needs a record, found "
+                                                              "Phil");
+  EXPECT_EQ(checkError("x + 1", kR, Expect::Value), "m.gdpn.yaml:5:10: error: arithmetic needs a whole number, found "
+                                                    "Phil");
+  EXPECT_EQ(checkError("if b then x else n", kPhil), "m.gdpn.yaml:5:27: error: expected Phil, found R");
+  EXPECT_EQ(checkError("if n then x else y", kPhil), "m.gdpn.yaml:5:13: error: expected bool, found R");
+  EXPECT_EQ(checkError("x = n", Colours::kBool, Expect::Condition), "m.gdpn.yaml:5:14: error: expected Phil, found R");
+  EXPECT_EQ(checkError("b < b", Colours::kBool, Expect::Condition), "m.gdpn.yaml:5:10: error: only numbers, "
+                                                                    "enumeration constants and strings are ordered, "
+                                                                    "not bool");
+  EXPECT_EQ(checkError("succ(s)", Colours::kString, Expect::Value), "m.gdpn.yaml:5:10: error: 'succ' needs an "
+                                                                    "enumeration or a number, found string");
+  EXPECT_EQ(checkError("1'x", kPhil, Expect::Value), "m.gdpn.yaml:5:10: error: expected a single value of Phil, found "
+                                                     "a multiset");
+  EXPECT_EQ(checkError("x", Colours::kBool, Expect::Condition), "m.gdpn.yaml:5:10: error: expected bool, found Phil");
+  EXPECT_EQ(checkError("1'x = 1'y", Colours::kBool, Expect::Condition), "m.gdpn.yaml:5:10: error: expected a single "
+                                                                        "value, found a multiset");
+  EXPECT_EQ(checkError("(x, s) = (y, s)", Colours::kBool, Expect::Condition), "m.gdpn.yaml:5:10: error: no colour set "
+                                                                              "is a product of (Phil, string)");
+  EXPECT_EQ(checkError("1'x ++ (x, y)", kPhil), "m.gdpn.yaml:5:17: error: expected Phil, found a tuple");
+}
+
+TEST_F(Checked, ErrorOnASecondLineIsLocatedThere) {
+  EXPECT_EQ(checkError("1'(n, x) ++\n  1'(n,\n     w)", kPair), "m.gdpn.yaml:7:6: error: unknown name 'w'");
+}
+
+TEST_F(Checked, NumbersFitAnyIntegerSet) {
+  ASSERT_TRUE(check("1'(n + 1, x) ++ 1'(2, p1)", kPair).has_value()) << errors;
+  ASSERT_TRUE(check("i", kR).has_value()) << errors;
+  ASSERT_TRUE(check("n < i + 2", Colours::kBool, Expect::Condition).has_value()) << errors;
+  ASSERT_TRUE(check("(x, y) = (p1, p2) and x <> y", Colours::kBool, Expect::Condition).has_value()) << errors;
+  ASSERT_TRUE(check("(p1, p2) = q2", Colours::kBool, Expect::Condition).has_value() == false);
+  ASSERT_TRUE(check("q = (1, p2)", Colours::kBool, Expect::Condition).has_value()) << errors;
+  ASSERT_TRUE(check("(1, p2) = q", Colours::kBool, Expect::Condition).has_value()) << errors;
+  ASSERT_TRUE(check("s < \"b\" and x < y and z <= succ(z)", Colours::kBool, Expect::Condition).has_value()) << errors;
+}
+
+TEST_F(Checked, ArithmeticAndComparisons) {
+  EXPECT_EQ(value("i * 2 + 7 / 2 - 10 % 4", Colours::kInt, {{"i", I(5)}}), I(11));
+  EXPECT_EQ(value("-i - -3", Colours::kInt, {{"i", I(5)}}), I(-2));
+  EXPECT_EQ(value("-7 / 2", Colours::kInt), I(-3));
+  EXPECT_EQ(value("-7 % 2", Colours::kInt), I(-1));
+  EXPECT_EQ(value("i / 0", Colours::kInt, {{"i", I(5)}}), std::nullopt);
+  EXPECT_EQ(value("i % 0", Colours::kInt, {{"i", I(5)}}), std::nullopt);
+  EXPECT_EQ(value("i * i", Colours::kInt, {{"i", I(INT64_MAX)}}), std::nullopt);
+  // a number outside its range has no value
+  EXPECT_EQ(value("n + 1", kR, {{"n", I(2)}}), I(3));
+  EXPECT_EQ(value("n + 1", kR, {{"n", I(3)}}), std::nullopt);
+  EXPECT_EQ(value("n + 1", Colours::kInt, {{"n", I(3)}}), I(4));
+  EXPECT_TRUE(holds("x < y and not (x = y) and x <> y", {{"x", I(0)}, {"y", I(2)}}));
+  EXPECT_FALSE(holds("x >= y", {{"x", I(0)}, {"y", I(2)}}));
+  EXPECT_TRUE(holds("s < \"b\" and s >= \"a\"", {{"s", Value::string("a")}}));
+  EXPECT_TRUE(holds("n <= 2 or i / 0 = 1", {{"n", I(1)}}));  // the right operand is not needed
+  EXPECT_TRUE(holds("(x, y) = (p1, p3)", {{"x", I(0)}, {"y", I(2)}}));
+  EXPECT_TRUE(holds("b == true", {{"b", Value::boolean(true)}}));
+}
+
+TEST_F(Checked, IfChoosesABranch) {
+  EXPECT_EQ(value("if n > 1 then x else p3", kPhil, {{"n", I(2)}, {"x", I(0)}}), I(0));
+  EXPECT_EQ(value("if n > 1 then x else p3", kPhil, {{"n", I(1)}, {"x", I(0)}}), I(2));
+  EXPECT_EQ(tokens("if b then 2'x else empty", kPhil, {{"b", Value::boolean(true)}, {"x", I(1)}}), "2'p2");
+  EXPECT_EQ(tokens("if b then 2'x else empty", kPhil, {{"b", Value::boolean(false)}, {"x", I(1)}}), "empty");
+}
+
+TEST_F(Checked, SuccessorAndPredecessor) {
+  // not cyclic: no successor of the last, no predecessor of the first
+  EXPECT_EQ(value("succ(x)", kPhil, {{"x", I(0)}}), I(1));
+  EXPECT_EQ(value("succ(x)", kPhil, {{"x", I(2)}}), std::nullopt);
+  EXPECT_EQ(value("pred(x)", kPhil, {{"x", I(0)}}), std::nullopt);
+  EXPECT_EQ(value("pred(p3)", kPhil), I(1));
+  // cyclic: around
+  EXPECT_EQ(value("succ(z)", kRing, {{"z", I(2)}}), I(0));
+  EXPECT_EQ(value("pred(z)", kRing, {{"z", I(0)}}), I(2));
+  EXPECT_EQ(value("succ(succ(a))", kRing), I(2));
+  // an integer range wraps around; the built-in int adds one
+  EXPECT_EQ(value("succ(n)", kR, {{"n", I(3)}}), I(1));
+  EXPECT_EQ(value("pred(n)", kR, {{"n", I(1)}}), I(3));
+  EXPECT_EQ(value("succ(n)", kR, {{"n", I(2)}}), I(3));
+  EXPECT_EQ(value("succ(i)", Colours::kInt, {{"i", I(-1)}}), I(0));
+  EXPECT_EQ(value("pred(i)", Colours::kInt, {{"i", I(INT64_MIN)}}), std::nullopt);
+}
+
+TEST_F(Checked, TuplesRecordsAndFields) {
+  const Value rec = Value::tuple({I(2), Value::string("ann")});
+  EXPECT_EQ(value("{name = s, id = n}", kRec, {{"s", Value::string("ann")}, {"n", I(2)}}), rec);
+  EXPECT_EQ(value("r.id + 1", kR, {{"r", rec}}), I(3));
+  EXPECT_EQ(value("r.name", Colours::kString, {{"r", rec}}), Value::string("ann"));
+  EXPECT_EQ(value("(r.id, p2)", kPair, {{"r", rec}}), Value::tuple({I(2), I(1)}));
+  EXPECT_EQ(tokens("1'q ++ 1'(succ(n), y)", kPair, {{"q", Value::tuple({I(1), I(0)})}, {"n", I(1)}, {"y", I(0)}}),
+            "1'(1, p1) ++ 1'(2, p1)");
+  EXPECT_EQ(tokens("{id = 1, name = \"x\"}", kRec), "1'{id = 1, name = \"x\"}");
+}
+
+TEST_F(Checked, AllAndItsProducts) {
+  EXPECT_EQ(tokens("all", kPhil), "1'p1 ++ 1'p2 ++ 1'p3");
+  EXPECT_EQ(tokens("2'all(Phil)", kPhil), "2'p1 ++ 2'p2 ++ 2'p3");
+  EXPECT_EQ(tokens("(n, all)", kPair, {{"n", I(3)}}), "1'(3, p1) ++ 1'(3, p2) ++ 1'(3, p3)");
+  // (all, all) over a set of 3 values: 9 values
+  const auto e = check("(all, all)", kPP);
+  ASSERT_TRUE(e.has_value()) << errors;
+  Multiset m;
+  ASSERT_TRUE(evaluateInto(*e, {}, colours, kPP, m));
+  EXPECT_EQ(m.size(), 9U);
+  EXPECT_EQ(multisetSize(m), 9);
+  EXPECT_EQ(m.begin()->first, Value::tuple({I(0), I(0)}));
+  EXPECT_EQ(m.rbegin()->first, Value::tuple({I(2), I(2)}));
+  // a multiset component's multiplicities multiply
+  EXPECT_EQ(tokens("2'(1'x ++ 1'p1, 3'y)", kPP, {{"x", I(0)}, {"y", I(2)}}), "12'(p1, p3)");
+  EXPECT_EQ(tokens("(1'x ++ 1'p2, y)", kPP, {{"x", I(0)}, {"y", I(2)}}), "1'(p1, p3) ++ 1'(p2, p3)");
+}
+
+TEST_F(Checked, Multiplicities) {
+  EXPECT_EQ(tokens("2'x ++ 1'y ++ x", kPhil, {{"x", I(0)}, {"y", I(0)}}), "4'p1");
+  EXPECT_EQ(tokens("n'x", kPhil, {{"n", I(3)}, {"x", I(1)}}), "3'p2");
+  EXPECT_EQ(tokens("(n - 1)'x", kPhil, {{"n", I(1)}, {"x", I(1)}}), "empty");
+  EXPECT_EQ(tokens("(i)'x", kPhil, {{"i", I(-1)}, {"x", I(1)}}), "none");  // a negative multiplicity
+  EXPECT_EQ(tokens("2'(1'x ++ 1'y)", kPhil, {{"x", I(1)}, {"y", I(2)}}), "2'p2 ++ 2'p3");
+  EXPECT_EQ(tokens("1'x", kPhil, {{"x", I(3)}}), "none");  // not a value of Phil
+  EXPECT_EQ(tokens("i", kR, {{"i", I(7)}}), "none");       // outside the place's range
+  EXPECT_EQ(tokens("i", kR, {{"i", I(2)}}), "1'2");
+  EXPECT_EQ(tokens("dot", Colours::kDot), "1'dot");
+  EXPECT_EQ(tokens("3'dot", Colours::kDot), "3'dot");
+  EXPECT_EQ(tokens("empty", Colours::kDot), "empty");
+  // a single value is one of it
+  EXPECT_EQ(tokens("x", kPhil, {{"x", I(2)}}), "1'p3");
 }
 
 }  // namespace
