@@ -341,8 +341,12 @@ std::vector<BoundOccurrence> Kernel::bindings(TransitionId t, std::size_t most) 
   const TransitionState& tr = tr_[t];
   bool bounded = false;
   for (const auto term : terms) bounded = bounded || (terms_[term].kind == TermKind::Output && slots_[terms_[term].place_slot].capacity != kUnbounded);
-  auto out = enabledBindings(*ti, colouring_->colours, marking, {}, bounded ? SIZE_MAX : most);
-  if (!bounded) return out;
+  // all of them: a search cut short need not keep the first in the canonical order
+  auto out = enabledBindings(*ti, colouring_->colours, marking);
+  if (!bounded) {
+    if (out.size() > most) out.resize(most);
+    return out;
+  }
   std::erase_if(out, [&](const BoundOccurrence& o) {
     for (std::size_t k = 0; k < terms.size(); ++k) {
       const Term& term = terms_[terms[k]];
@@ -365,7 +369,7 @@ std::vector<BoundOccurrence> Kernel::bindings(TransitionId t, std::size_t most) 
 
 bool Kernel::selectBinding(TransitionId t) {
   // in declaration order, the first binding; with random ties, one drawn from all
-  auto found = bindings(t, random_ties_ ? SIZE_MAX : 1);
+  auto found = bindings(t);
   if (found.empty()) return false;
   const std::size_t pick = random_ties_ && found.size() > 1 ? static_cast<std::size_t>(random_.below(found.size())) : 0;
   bound_next_ = std::move(found[pick]);
