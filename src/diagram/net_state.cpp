@@ -36,7 +36,7 @@ Activity activityOf(net::Readiness readiness) {
     case net::Readiness::Condition:
     case net::Readiness::Guard:
     case net::Readiness::Predicate:
-    case net::Readiness::Binding:
+    case net::Readiness::NoBinding:
     case net::Readiness::Probability:
     case net::Readiness::Halted: return Activity::HeldBack;
   }

@@ -919,7 +919,7 @@ inline bool Kernel::tryStart(TransitionId t, bool again) {
     if (!hooks_->guard(t)) return heldBy(t, hooks_->halted() ? Readiness::Halted : Readiness::Guard);
   }
   if (tr.held >= 0 && hooks_ && !selectTokens(t)) return heldBy(t, hooks_->halted() ? Readiness::Halted : Readiness::Predicate);
-  if (colouring_ && colouring_->of(t) && !selectBinding(t)) return heldBy(t, Readiness::Binding);
+  if (colouring_ && colouring_->of(t) && !selectBinding(t)) return heldBy(t, Readiness::NoBinding);
   const double p = tr.probability;
   if (p < 1.0) {
     // one draw per transition and phase, however often immediates re-enable it; a further
@@ -1094,7 +1094,7 @@ std::string Kernel::fire(TransitionId t) {
     return "no node token satisfies the predicates of " + name;
   }
   if (colouring_ && colouring_->of(t) && !selectBinding(t)) {
-    heldBy(t, Readiness::Binding);
+    heldBy(t, Readiness::NoBinding);
     return "no binding of " + name + "'s variables is enabled";
   }
   if (!verdict_.empty() && verdict_[t] != kFree) verdict_[t] = static_cast<std::uint8_t>(Readiness::Able);
@@ -1132,7 +1132,7 @@ bool heldBack(Readiness r) {
     case Readiness::Condition:
     case Readiness::Guard:
     case Readiness::Predicate:
-    case Readiness::Binding:
+    case Readiness::NoBinding:
     case Readiness::Probability:
     case Readiness::Halted: return true;
   }
@@ -1149,7 +1149,7 @@ const char* readinessName(Readiness r) {
     case Readiness::Condition: return "condition";
     case Readiness::Guard: return "guard";
     case Readiness::Predicate: return "predicate";
-    case Readiness::Binding: return "binding";
+    case Readiness::NoBinding: return "binding";
     case Readiness::Probability: return "probability";
     case Readiness::Halted: return "halted";
   }
@@ -1202,7 +1202,7 @@ std::string Kernel::readinessText(TransitionId t) const {
     case Readiness::Condition: return firstFailing(true);
     case Readiness::Guard: return "guard false";
     case Readiness::Predicate: return "no node token satisfies its predicates";
-    case Readiness::Binding: return "no binding of its variables is enabled by the values its places hold";
+    case Readiness::NoBinding: return "no binding of its variables is enabled by the values its places hold";
     case Readiness::Probability: {
       char p[32];
       std::snprintf(p, sizeof p, "%g", tr.probability);

@@ -50,7 +50,7 @@ enum class Readiness : std::uint8_t {
   Condition,    ///< its marking suffices, but a sensor condition on one of its arcs is false
   Guard,        ///< its marking suffices, but its guard was false
   Predicate,    ///< its marking suffices, but too few node tokens satisfied its predicates
-  Binding,      ///< its counts suffice, but no binding of its variables is enabled (value tokens)
+  NoBinding,    ///< its counts suffice, but no binding of its variables is enabled (value tokens)
   Probability,  ///< its marking suffices, but it lost its probability draw
   Halted,       ///< its marking suffices, but the model's scripts have stopped (an error, a timeout)
 };
