@@ -344,13 +344,19 @@ class Model {
         py::list names;
         for (auto ref : sim_->kernel().nodes(ps)) names.append(sim_->nodeName(ref));
         slots[py::str(net::slotName(slot.slot))] = names;
+      } else if (const net::Colouring* c = net.colouring(); c && c->setOf(ps)) {
+        // values as the inscription language writes them, each with its count, in their order
+        py::dict values;
+        for (const auto& [v, n] : sim_->kernel().values(ps)) values[py::str(c->colours.text(*c->setOf(ps), v))] = n;
+        slots[py::str(net::slotName(slot.slot))] = values;
       } else {
         slots[py::str(net::slotName(slot.slot))] = sim_->kernel().marking(ps);
       }
     }
-    // a place with only a0 as a control slot reads as a plain count
+    // a place with only a0 as a control (or value) slot reads as a plain count (or its values)
     if (pl.slots_end - pl.slots_begin == 1 && net.placeSlots()[pl.slots_begin].slot == net::kDefaultSlot &&
-        net.placeSlots()[pl.slots_begin].kind == net::SlotKind::Control) {
+        (net.placeSlots()[pl.slots_begin].kind == net::SlotKind::Control ||
+         net.placeSlots()[pl.slots_begin].kind == net::SlotKind::Value)) {
       return slots["a0"];
     }
     return slots;
@@ -526,7 +532,8 @@ class FireError(ValueError):
       .def_property_readonly("breakpoints", &Model::breakpoints, "[{id, watches, enabled}]")
       .def_property_readonly("hit", &Model::hit, "the id of the breakpoint that ended the last run, or None")
       .def("marking", &Model::marking, py::arg("place"),
-           "Tokens on a place: a count for a plain place, else {slot: count or [node names]}")
+           "Tokens on a place: a count for a plain place, {value: count} for a place of values (each value as "
+           "the inscription language writes it: 'p1', '(1, \"a\")'), else {slot: count, [node names] or {value: count}}")
       .def("analyze", &Model::analyze, py::arg("query") = py::none(), py::kw_only(),
            py::arg("max_states") = session::kDefaultMaxStates, py::arg("max_memory_mib") = 0.0,
            py::arg("time_limit") = 0.0,
