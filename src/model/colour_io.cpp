@@ -411,7 +411,7 @@ bool inscriptionIsBlock(const std::string& text) {
 }
 
 void writeInscription(YAML::Emitter& out, const std::string& text) {
-  if (inscriptionIsBlock(text)) out << YAML::Literal << text + "\n";
+  if (inscriptionIsBlock(text)) out << YAML::Literal << text;
   else out << YAML::DoubleQuoted << text;
 }
 
