@@ -235,6 +235,19 @@ SourceLoc SourceMap::loc(std::size_t offset) const {
   return {file_, static_cast<int>(line), static_cast<int>(offset - starts_[line - 1] + 1)};
 }
 
+SourceLoc textStart(const YAML::Node& node, const SourceLoc& fallback, const SourceMap& source, const YamlReader& r) {
+  const SourceLoc mark = r.loc(node, fallback);
+  if (mark.line < 1) return mark;
+  const std::size_t at = source.offset(mark.line, mark.column);
+  const std::size_t start = scalarStart(source.text(), at).first;
+  if (start >= source.text().size()) return mark;
+  const char indicator = source.text()[at];
+  if (indicator != '|' && indicator != '>') return source.loc(start);
+  // a block's text begins past its indentation
+  const std::size_t first = source.text().find_first_not_of(" \t", start);
+  return source.loc(first == std::string_view::npos ? start : first);
+}
+
 std::vector<net::ColourSetSpec> readColours(const YAML::Node& section, YamlReader& r) {
   std::vector<net::ColourSetSpec> out;
   if (section.IsNull()) return out;

@@ -50,6 +50,11 @@ std::vector<net::VariableSpec> readVariables(const YAML::Node& section, YamlRead
 std::optional<net::SlotText> readInscription(const YAML::Node& node, const core::SourceLoc& fallback, net::SlotId slot,
                                              const std::string& what, const SourceMap& source, YamlReader& r);
 
+/// Where the text of scalar `node` begins in the file: past its quote, on the line after its
+/// block indicator (`fallback` when the node has no place).
+core::SourceLoc textStart(const YAML::Node& node, const core::SourceLoc& fallback, const SourceMap& source,
+                          const YamlReader& r);
+
 /// Writes `colours` as readColours reads it (nothing when there are none).
 void writeColours(YAML::Emitter& out, const std::vector<net::ColourSetSpec>& colours);
 /// Writes `variables` as readVariables reads it (nothing when there are none).

@@ -765,7 +765,7 @@ class ModelReader {
         });
       } else if (e.key == "colour") {
         perSlot(e, "colour", [&](net::SlotId slot, const YAML::Node& v, const SourceLoc& loc) {
-          const SourceLoc at = r_.loc(v, loc);
+          const SourceLoc at = detail::textStart(v, loc, source_, r_);
           if (!v.IsScalar()) {
             r_.error(at, "'colour' expects the name of a colour set, got " + detail::describe(v));
           } else if (!core::isIdentifier(v.Scalar())) {

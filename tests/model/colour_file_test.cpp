@@ -101,7 +101,7 @@ pages:
   main:
     places:
       a: {colour: P, values: all}
-      b: {slots: {b0: value}, colour: {b0: P, b1: int}, values: {b0: "1'p1 ++ 2'p3", b1: '3'}}
+      b: {slots: {b0: value}, colour: {b0: "P", b1: int}, values: {b0: "1'p1 ++ 2'p3", b1: '3'}}
     transitions:
       t: {when: "x <> p2"}
     arcs:
@@ -123,6 +123,7 @@ pages:
   EXPECT_TRUE(a.kinds.empty());
   const auto& b = page.places.at(1);
   ASSERT_EQ(b.colours.size(), 2u);
+  EXPECT_EQ(b.colours[0].loc.column, 45);
   EXPECT_EQ(b.colours[1].slot, slot("b1"));
   EXPECT_EQ(b.colours[1].text, "int");
   ASSERT_EQ(b.values.size(), 2u);
@@ -130,9 +131,9 @@ pages:
   EXPECT_EQ(b.values[0].text, "1'p1 ++ 2'p3");
   // the text's first character, inside its quotes
   EXPECT_EQ(b.values[0].loc.line, 10);
-  EXPECT_EQ(b.values[0].loc.column, 71);
+  EXPECT_EQ(b.values[0].loc.column, 73);
   EXPECT_EQ(b.values[1].text, "3");
-  EXPECT_EQ(b.values[1].loc.column, 91);
+  EXPECT_EQ(b.values[1].loc.column, 93);
   const auto& t = page.transitions.at(0);
   EXPECT_TRUE(t.conditioned());
   EXPECT_EQ(t.when.text, "x <> p2");
@@ -229,7 +230,7 @@ TEST(ColourFile, ValueSlotsAreCheckedAgainstTheirColours) {
                       "slot d0 of place 'p' holds node tokens"));
   EXPECT_TRUE(errorAt(place("colour: {c0: P}, sensors: {c0: eye}"), 2, 42, "slot c0 of place 'p' is bound to a sensor"));
   EXPECT_TRUE(errorAt(place("colour: [P]"), 2, 37, "'colour' expects the name of a colour set, got a list"));
-  EXPECT_TRUE(errorAt(place("colour: \"P Q\""), 2, 37, "'colour' expects the name of a colour set, got 'P Q'"));
+  EXPECT_TRUE(errorAt(place("colour: \"P Q\""), 2, 38, "'colour' expects the name of a colour set, got 'P Q'"));
   EXPECT_TRUE(errorAt(place("colour: P, values: \"\""), 2, 48, "'values' is empty"));
   EXPECT_TRUE(errorAt(place("colour: P, values: [1]"), 2, 48, "'values' expects text, got a list"));
 }
