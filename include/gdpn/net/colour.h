@@ -15,6 +15,8 @@
 
 namespace gdpn::net {
 
+using core::SourceLoc;
+
 /// What kind of colour set.
 enum class ColourKind : std::uint8_t {
   Dot,      ///< one value, `dot` (the plain token of a P/T place)
@@ -147,6 +149,8 @@ class Colours {
 
  private:
   std::vector<ColourSet> sets_;
+  std::map<std::string, ColourId, std::less<>> by_name_;  // each name's first set
+  std::map<std::string, std::pair<ColourId, std::int64_t>, std::less<>> constants_;  // each constant's first set
 };
 
 }  // namespace gdpn::net
