@@ -16,6 +16,7 @@
 #include "gdpn/model/model.h"
 #include "gdpn/model/schema.h"
 #include "gdpn/scene/actions.h"
+#include "colour_io.h"
 #include "io_section.h"
 #include "scene_io.h"
 #include "yaml_reader.h"
@@ -61,7 +62,7 @@ class ModelReader {
  public:
   ModelReader(const std::string& file, const std::string& text, Diagnostics& diags,
               const std::vector<ParamOverride>& overrides)
-      : r_(file, diags), file_(file), text_(text), overrides_(overrides) {}
+      : r_(file, diags), file_(file), text_(text), source_(file_, text_), overrides_(overrides) {}
 
   std::optional<Model> read(const YAML::Node& root) {
     Model model;
@@ -98,6 +99,10 @@ class ModelReader {
         readPages(e.value, model.net.page_types, true);
       } else if (e.key == "fusion") {
         readFusions(e, model.net.fusions);
+      } else if (e.key == "colours") {
+        model.net.colours = detail::readColours(e.value, r_);
+      } else if (e.key == "variables") {
+        model.net.variables = detail::readVariables(e.value, r_);
       } else if (e.key == "scene") {
         model.scene = detail::readScene(e.value, r_, e.loc, angles_);
       } else if (e.key == "io") {
@@ -758,6 +763,21 @@ class ModelReader {
             p.tokens.push_back({slot, *n, loc, param});
           }
         });
+      } else if (e.key == "colour") {
+        perSlot(e, "colour", [&](net::SlotId slot, const YAML::Node& v, const SourceLoc& loc) {
+          const SourceLoc at = detail::textStart(v, loc, source_, r_);
+          if (!v.IsScalar()) {
+            r_.error(at, "'colour' expects the name of a colour set, got " + detail::describe(v));
+          } else if (!core::isIdentifier(v.Scalar())) {
+            r_.error(at, "'colour' expects the name of a colour set, got '" + v.Scalar() + "'");
+          } else {
+            p.colours.push_back({slot, v.Scalar(), at});
+          }
+        });
+      } else if (e.key == "values") {
+        perSlot(e, "values", [&](net::SlotId slot, const YAML::Node& v, const SourceLoc& loc) {
+          if (auto text = detail::readInscription(v, loc, slot, "values", source_, r_)) p.values.push_back(std::move(*text));
+        });
       } else if (e.key == "capacity") {
         perSlot(e, "capacity", [&](net::SlotId slot, const YAML::Node& v, const SourceLoc& loc) {
           std::string param;
@@ -789,7 +809,44 @@ class ModelReader {
         p.position = readPos(e.value);
       }
     }
+    checkValueSlots(p);
     return p;
+  }
+
+  /// A place's value slots: each has a colour, and a slot with a colour holds nothing else.
+  void checkValueSlots(const net::PlaceSpec& p) {
+    const auto colourOf = [&](net::SlotId slot) {
+      return std::find_if(p.colours.begin(), p.colours.end(), [&](const net::SlotText& c) { return c.slot == slot; });
+    };
+    for (const auto& k : p.kinds) {
+      const bool coloured = colourOf(k.slot) != p.colours.end();
+      if (k.kind == net::SlotKind::Value && !coloured) {
+        r_.error(k.loc, "value slot " + net::slotName(k.slot) + " of place '" + p.name +
+                            "' has no colour: name its colour set in 'colour'");
+      } else if (k.kind != net::SlotKind::Value && coloured) {
+        r_.error(colourOf(k.slot)->loc, "slot " + net::slotName(k.slot) + " of place '" + p.name + "' is a " +
+                                            net::slotKindName(k.kind) + " slot: only a value slot has a colour");
+      }
+    }
+    for (const auto& c : p.colours) {
+      const std::string slot = net::slotName(c.slot);
+      const auto on = [&](const auto& list) {
+        return std::any_of(list.begin(), list.end(), [&](const auto& x) { return x.slot == c.slot; });
+      };
+      if (on(p.sensors)) {
+        r_.error(c.loc, "slot " + slot + " of place '" + p.name + "' is bound to a sensor: only a value slot has a colour");
+      } else if (on(p.nodes)) {
+        r_.error(c.loc, "slot " + slot + " of place '" + p.name + "' holds node tokens: only a value slot has a colour");
+      } else if (on(p.tokens)) {
+        r_.error(c.loc, "value slot " + slot + " of place '" + p.name +
+                            "' has 'tokens': a value slot's initial tokens are its 'values'");
+      }
+    }
+    for (const auto& v : p.values) {
+      if (colourOf(v.slot) != p.colours.end()) continue;
+      r_.error(v.loc, "'values' on slot " + net::slotName(v.slot) + " of place '" + p.name +
+                          "', which has no colour: a value slot names its colour set in 'colour'");
+    }
   }
 
   net::Duration readDuration(const Entry& e) {
@@ -866,6 +923,10 @@ class ModelReader {
           if (*v >= 1) t.servers = *v;
           else r_.error(e.value, "'servers' expects a whole number of at least 1 or 'unlimited', got " + std::to_string(*v));
         }
+      } else if (e.key == "when") {
+        if (auto text = detail::readInscription(e.value, e.loc, net::kDefaultSlot, "when", source_, r_)) {
+          t.when = std::move(*text);
+        }
       } else if (const auto kind = net::parseScriptKind(e.key, net::ScriptOwner::Transition)) {
         net::scriptOf(t, *kind) = readScript(e, e.key);
       } else if (e.key == "at") {
@@ -923,6 +984,12 @@ class ModelReader {
           std::string param;
           if (auto n = r_.integer(v, "weight", &param)) a.weights.push_back({slot, *n, loc, param});
         });
+      } else if (e.key == "inscription") {
+        perSlot(e, "inscription", [&](net::SlotId slot, const YAML::Node& v, const SourceLoc& loc) {
+          if (auto text = detail::readInscription(v, loc, slot, "inscription", source_, r_)) {
+            a.inscriptions.push_back(std::move(*text));
+          }
+        });
       } else if (e.key == "via") {
         a.via = readRoute(e.value);
       } else if (e.key == "label_at") {
@@ -940,6 +1007,14 @@ class ModelReader {
       // a lone condition reads sensor slot c0
       perSlotScript(*condition, "condition", net::parseSlot("c0").value(),
                     [&](net::SlotId slot, net::ScriptSpec script) { a.conditions.push_back({slot, std::move(script)}); });
+    }
+    // a value slot's arc says what it moves in its inscription, not by a count
+    for (const auto& i : a.inscriptions) {
+      if (std::any_of(a.weights.begin(), a.weights.end(), [&](const net::SlotCount& w) { return w.slot == i.slot; })) {
+        r_.error(i.loc, "slot " + net::slotName(i.slot) +
+                            " has both 'weight' and 'inscription': an inscription says how many values the arc moves "
+                            "(`2'x`)");
+      }
     }
     if (!has_from) r_.error(a.loc, "arc has no 'from'");
     if (!has_to) r_.error(a.loc, "arc has no 'to'");
@@ -1015,6 +1090,7 @@ class ModelReader {
   scene::AngleUnit angles_ = scene::AngleUnit::Degrees;  // the unit the file writes angles in
   std::string file_;
   const std::string& text_;
+  detail::SourceMap source_;  // the text's lines, to locate an inscription's characters
   const std::vector<ParamOverride>& overrides_;
   std::map<std::string, detail::ParamValue> param_values_;
 };

@@ -8,6 +8,7 @@
 #include "gdpn/core/text.h"
 #include "gdpn/model/model.h"
 #include "gdpn/model/schema.h"
+#include "colour_io.h"
 #include "io_section.h"
 #include "keep_layout.h"
 #include "scene_io.h"
@@ -103,8 +104,31 @@ void writeSlotScripts(YAML::Emitter& out, net::ScriptKind kind, const std::vecto
 /// Constructs with scripts are written as block maps, so their code can stand in '|' blocks.
 YAML::EMITTER_MANIP styleFor(bool scripted) { return scripted ? YAML::Block : YAML::Flow; }
 
+/// True when any of `texts` is written as a '|' block (its construct must be a block map).
+bool anyBlock(const std::vector<net::SlotText>& texts) {
+  return std::any_of(texts.begin(), texts.end(), [](const net::SlotText& t) { return detail::inscriptionIsBlock(t.text); });
+}
+
+/// Per-slot texts of key `key`: a lone one on a0 as the value, else a map slot -> text; each
+/// written by `write`.
+template <class F>
+void perSlotText(YAML::Emitter& out, const char* key, const std::vector<net::SlotText>& texts, F&& write) {
+  if (texts.empty()) return;
+  out << YAML::Key << key << YAML::Value;
+  if (texts.size() == 1 && texts[0].slot == net::kDefaultSlot) {
+    write(texts[0].text);
+    return;
+  }
+  out << (anyBlock(texts) ? YAML::Block : YAML::Flow) << YAML::BeginMap;
+  for (const auto& t : texts) {
+    out << YAML::Key << net::slotName(t.slot) << YAML::Value;
+    write(t.text);
+  }
+  out << YAML::EndMap;
+}
+
 void writePlace(YAML::Emitter& out, const net::PlaceSpec& p) {
-  out << YAML::Key << p.name << YAML::Value << styleFor(!p.scripts.empty()) << YAML::BeginMap;
+  out << YAML::Key << p.name << YAML::Value << styleFor(!p.scripts.empty() || anyBlock(p.values)) << YAML::BeginMap;
   std::vector<schema::KeyWriter> keys = {
       {"description", [&] { description(out, p.description); }},
       {"fusion", [&] { if (!p.fusion.empty()) out << YAML::Key << "fusion" << YAML::Value << p.fusion; }},
@@ -133,6 +157,9 @@ void writePlace(YAML::Emitter& out, const net::PlaceSpec& p) {
          }
          out << YAML::EndMap;
        }},
+      {"colour", [&] { perSlotText(out, "colour", p.colours, [&](const std::string& name) { out << name; }); }},
+      {"values",
+       [&] { perSlotText(out, "values", p.values, [&](const std::string& text) { detail::writeInscription(out, text); }); }},
       {"capacity", [&] { perSlot(out, "capacity", p.capacity); }},
       {"sensors",
        [&] {
@@ -174,7 +201,8 @@ void writeTransition(YAML::Emitter& out, const net::TransitionSpec& t) {
   const double priority_default = schema::defaultNumber(Section::Transition, "priority");
   const double probability_default = schema::defaultNumber(Section::Transition, "probability");
   const double servers_default = schema::defaultNumber(Section::Transition, "servers");
-  out << YAML::Key << t.name << YAML::Value << styleFor(t.scripted()) << YAML::BeginMap;
+  out << YAML::Key << t.name << YAML::Value << styleFor(t.scripted() || detail::inscriptionIsBlock(t.when.text))
+      << YAML::BeginMap;
   std::vector<schema::KeyWriter> keys = {
       {"description", [&] { description(out, t.description); }},
       {"duration", [&] { writeDuration(out, t.duration); }},
@@ -194,6 +222,12 @@ void writeTransition(YAML::Emitter& out, const net::TransitionSpec& t) {
          else if (t.servers == net::kUnlimitedServers) out << YAML::Key << "servers" << YAML::Value << "unlimited";
          else if (static_cast<double>(t.servers) != servers_default) out << YAML::Key << "servers" << YAML::Value << t.servers;
        }},
+      {"when",
+       [&] {
+         if (!t.conditioned()) return;
+         out << YAML::Key << "when" << YAML::Value;
+         detail::writeInscription(out, t.when.text);
+       }},
       {"at", [&] { pos(out, t.position); }},
   };
   for (const net::ScriptKind k : net::kTransitionScripts) {
@@ -205,7 +239,7 @@ void writeTransition(YAML::Emitter& out, const net::TransitionSpec& t) {
 
 void writeArc(YAML::Emitter& out, const net::ArcSpec& a) {
   const std::string& kind_default = schema::key(Section::Arc, "kind").initial;
-  out << styleFor(!a.predicates.empty() || !a.conditions.empty()) << YAML::BeginMap;
+  out << styleFor(!a.predicates.empty() || !a.conditions.empty() || anyBlock(a.inscriptions)) << YAML::BeginMap;
   // predicates and conditions: a map slot -> expression
   const auto scripts = [&](const char* key, const std::vector<net::SlotPredicate>& list) {
     if (list.empty()) return;
@@ -223,6 +257,11 @@ void writeArc(YAML::Emitter& out, const net::ArcSpec& a) {
              if (net::arcKindName(a.kind) != kind_default) out << YAML::Key << "kind" << YAML::Value << net::arcKindName(a.kind);
            }},
           {"weight", [&] { perSlot(out, "weight", a.weights); }},
+          {"inscription",
+           [&] {
+             perSlotText(out, "inscription", a.inscriptions,
+                         [&](const std::string& text) { detail::writeInscription(out, text); });
+           }},
           {net::info(net::ScriptKind::Predicate).key, [&] { scripts("predicate", a.predicates); }},
           {net::info(net::ScriptKind::Condition).key, [&] { scripts("condition", a.conditions); }},
           {"via",
@@ -482,6 +521,8 @@ std::string writeModel(const Model& model) {
              out << YAML::Key << "io" << YAML::Value;
              detail::writeIo(out, model.io);
            }},
+          {"colours", [&] { detail::writeColours(out, model.net.colours); }},
+          {"variables", [&] { detail::writeVariables(out, model.net.variables); }},
           {"pages",
            [&] {
              namedMap(out, "pages", model.net.pages,

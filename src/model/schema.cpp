@@ -87,6 +87,14 @@ std::vector<KeyDesc> modelKeys() {
       form(k("signals", ValueType::Map, "", "what a run records over time when asked (below)"), "map name → signal"),
       form(k("io", ValueType::Map, "", "the plant and the net as the four Modbus tables, for a controller outside (below)"),
            "map"),
+      form(k("colours", ValueType::Map, "",
+             "colour sets, the types of value tokens, in order (a set may name those before it): a word `bool`, "
+             "`int`, `string` or `dot` (that built-in set under a name of its own), or one of the forms below "
+             "(*Colour sets*)"),
+           "map name → word or colour set"),
+      form(k("variables", ValueType::Map, "",
+             "the variables of arc inscriptions and conditions, each of a colour set (*Colour sets*)"),
+           "map name → colour set"),
       form(k("pages", ValueType::Map, "", "the top-level nets; constructs are named `page/name`"), "map name → page"),
       form(k("page_types", ValueType::Map, "", "pages to instantiate"), "map name → page type"),
       form(k("fusion", ValueType::Map, "",
@@ -213,7 +221,7 @@ std::vector<KeyDesc> placeKeys() {
   // `slots` maps slot names to the words of net::SlotKind
   KeyDesc slots = k("slots", ValueType::Map, "", "declares slot kinds explicitly");
   slots.choices = {net::slotKindName(net::SlotKind::Control), net::slotKindName(net::SlotKind::Node),
-                   net::slotKindName(net::SlotKind::Sensor)};
+                   net::slotKindName(net::SlotKind::Sensor), net::slotKindName(net::SlotKind::Value)};
   slots.form = "map slot → " + choiceList(slots, "`");
   return {
       k("description", ValueType::Text, "", "free text"),
@@ -221,11 +229,19 @@ std::vector<KeyDesc> placeKeys() {
         "the fusion set it is a member of: it is one place with the set's other members; one member declares "
         "the keys below (the others name the set alone) (*Fusion places*)"),
       slots,
+      form(k("colour", ValueType::Name, "",
+             "the colour set of a value slot, which holds a multiset of its values: a slot with a colour is a value "
+             "slot (a name alone means `a0`)"),
+           "name, or map slot → name"),
       range(form(k("tokens", ValueType::Integer, "0",
                    "initial marking. An integer is a count on `a0`; a list of node paths (`[box1, line/box2]`) puts "
                    "node tokens on `a0`; a map names slots: `{a0: 2, d0: [box1, box2]}`"),
                  "integer, list, or map slot → integer or list"),
             0, kInf),
+      form(k("values", ValueType::Inscription, "",
+             "a value slot's initial marking, a multiset in the inscription language: `all`, `1'p1 ++ 2'p3`, "
+             "`(1, \"a\")` (a text alone means `a0`)"),
+           "inscription, or map slot → inscription"),
       range(form(k("capacity", ValueType::Integer, "",
                    "capacity per slot; unbounded when absent; an integer means `a0`"),
                  "integer or map slot → integer"),
@@ -261,6 +277,9 @@ std::vector<KeyDesc> transitionKeys() {
                    "an input arc that takes tokens"),
                  "whole number or `unlimited`"),
             1, static_cast<double>(net::kMostServers)),
+      k("when", ValueType::Inscription, "",
+        "a condition over the variables of its arcs' inscriptions, in the inscription language (`x <> y and n < "
+        "3`), not Python: a binding occurs only where it is true"),
       script(ScriptKind::Guard, "expression", "the transition may start only while it is true"),
       script(ScriptKind::PreFire, "script", "runs when an occurrence starts"),
       script(ScriptKind::InFire, "script", "runs in every step of an occurrence (`self.elapsed`, `self.progress`)"),
@@ -280,6 +299,10 @@ std::vector<KeyDesc> arcKeys() {
       range(form(k("weight", ValueType::Integer, "1", "tokens per slot; an integer means `a0`"),
                  "integer or map slot → integer"),
             1, static_cast<double>(net::kMaxWeight)),
+      form(k("inscription", ValueType::Inscription, "",
+             "on a value slot: the multiset it takes or puts, in the inscription language over the variables "
+             "(`x`, `(p, n+1)`, `2'x ++ y`; a text alone means `a0`); not with a `weight` on the same slot"),
+           "inscription, or map slot → inscription"),
       script(ScriptKind::Predicate, "expression, or map slot → expression",
              "on a node slot of an input arc: which tokens are eligible (an expression alone means the arc's one slot)"),
       script(ScriptKind::Condition, "expression, or map slot → expression",
@@ -369,6 +392,20 @@ std::vector<KeyDesc> durationKeys() {
   };
 }
 
+std::vector<KeyDesc> colourKeys() {
+  return {
+      form(k("range", ValueType::Vector, "", "the whole numbers from lo to hi, both in (lo at most hi)"), "`[lo, hi]`"),
+      form(k("enum", ValueType::List, "", "named constants, in order (each a name, once over every set)"),
+           "list of names"),
+      form(k("cyclic", ValueType::List, "",
+             "an enumeration whose last constant's successor is the first (`succ`, `pred` wrap around)"),
+           "list of names"),
+      form(k("product", ValueType::List, "", "tuples `(a, b)` of the sets named, in order"), "list of colour sets"),
+      form(k("record", ValueType::Map, "", "records `{f = a, g = b}`: fields, in the order written, each of a set"),
+           "map field → colour set"),
+  };
+}
+
 std::vector<KeyDesc> build(Section section) {
   switch (section) {
     case Section::Model: return modelKeys();
@@ -389,6 +426,7 @@ std::vector<KeyDesc> build(Section section) {
     case Section::Part: return partKeys();
     case Section::PartIo: return partIoKeys();
     case Section::PartUse: return partUseKeys();
+    case Section::Colour: return colourKeys();
   }
   return {};
 }
@@ -412,6 +450,7 @@ std::string_view valueTypeName(ValueType type) {
     case ValueType::Vector: return "list of numbers";
     case ValueType::Script: return "script";
     case ValueType::Expression: return "expression";
+    case ValueType::Inscription: return "inscription";
     case ValueType::Map: return "map";
     case ValueType::List: return "list";
   }
@@ -540,6 +579,7 @@ std::string_view sectionName(Section section) {
     case Section::Part: return "part";
     case Section::PartIo: return "part_io";
     case Section::PartUse: return "part_use";
+    case Section::Colour: return "colour";
   }
   return "?";
 }

@@ -41,6 +41,10 @@ class YamlReader {
   [[nodiscard]] core::SourceLoc loc(const YAML::Node& node, const core::SourceLoc& fallback = {}) const;
   void error(const YAML::Node& node, std::string message);
   void error(const core::SourceLoc& loc, std::string message);
+  /// A warning at `loc` (the load goes on).
+  void warning(const core::SourceLoc& loc, std::string message) { diags_.warning(loc, std::move(message)); }
+  /// A note at `loc`, explaining the diagnostic before it.
+  void note(const core::SourceLoc& loc, std::string message) { diags_.note(loc, std::move(message)); }
   /// True when at least one error was reported through this reader.
   [[nodiscard]] bool failed() const { return failed_; }
 

@@ -61,7 +61,7 @@ TEST(Schema, WordsComeFromTheirEnumsNames) {
   EXPECT_EQ(key(Section::Arc, "kind").choices, (std::vector<std::string>{"normal", "test", "inhibitor"}));
   EXPECT_EQ(choiceList(key(Section::Arc, "kind")), "normal, test or inhibitor");
   EXPECT_EQ(choiceList(key(Section::IoEntry, "type"), "", ", "), "int16, uint16, int32, uint32, float32");
-  EXPECT_EQ(key(Section::Place, "slots").form, "map slot → `control`, `node` or `sensor`");
+  EXPECT_EQ(key(Section::Place, "slots").form, "map slot → `control`, `node`, `sensor` or `value`");
   EXPECT_EQ(choiceList(key(Section::Settings, "ties"), "'"), "'order' or 'random'");
 }
 
@@ -137,6 +137,7 @@ std::vector<Context> contexts() {
       {Section::Scripts, "scripts: {", ": 1}", "scripts"},
       {Section::ScriptFile, "scripts: {globals: {", ": 1}}", "globals"},
       {Section::Duration, "pages: {main: {transitions: {t: {duration: {", ": 1}}}}}", "duration"},
+      {Section::Colour, "colours: {C: {", ": 1}}", "colour set 'C'"},
   };
 }
 
@@ -230,7 +231,7 @@ TEST(SchemaLoad, RangesComeFromTheSchemaWithTheirLocations) {
             std::string::npos);
   EXPECT_NE(diagnose("gdpn: 1\npages: {main: {places: {p: {slots: {a1: sensr}}}}}\n")
                 .find("m.gdpn.yaml:2:41: error: unknown slot kind 'sensr' (did you mean 'sensor'?); expected control, "
-                      "node or sensor"),
+                      "node, sensor or value"),
             std::string::npos);
   EXPECT_NE(diagnose("gdpn: 1\nio: {input_registers: {0: {node: n, of: reading, type: int8}}}\n")
                 .find("m.gdpn.yaml:2:56: error: 'type' is one of int16, uint16, int32, uint32, float32, got 'int8'"),
@@ -261,6 +262,15 @@ io:
   holding_registers:
     0: {place: main/p}
     2: {node: pusher, field: vel1, scale: 10, unit: mm/s, type: int32}
+colours:
+  B: bool
+  Id: {range: [1, 5]}
+  P: {enum: [p1, p2]}
+  Phil: {cyclic: [ph1, ph2]}
+  Pair: {product: [Id, P]}
+  Rec: {record: {id: Id, flag: B}}
+variables:
+  x: P
 pages:
   main:
     description: "the main page"
@@ -268,8 +278,10 @@ pages:
       p:
         description: "a place"
         fusion: pool
-        slots: {a1: control, d0: node, c0: sensor}
+        slots: {a1: control, d0: node, c0: sensor, b0: value}
+        colour: {b0: P}
         tokens: {a0: $n, d0: [box]}
+        values: {b0: "all"}
         capacity: {a0: 5}
         sensors: {c0: eye}
         on_deposit: "x = 1"
@@ -286,6 +298,7 @@ pages:
         priority: 2
         probability: 0.5
         servers: 3
+        when: "x <> p1"
         guard: "True"
         pre_fire: "x = 7"
         in_fire: {file: station.py, function: follow}
@@ -296,7 +309,7 @@ pages:
     instances:
       i: {type: cell, at: [5, 6], translation: [1, 2, 3], rotation: [0, 0, 1, 90], params: {w: 2}, part: j, uses: {eye: k}}
     arcs:
-      - {from: p, to: t, kind: test, weight: {d0: 2}, predicate: {d0: "token is not None"}, condition: {c0: "value > 0"}, via: [[1, 2]], label_at: [0, -0.5]}
+      - {from: p, to: t, kind: test, weight: {d0: 2}, inscription: {b0: x}, predicate: {d0: "token is not None"}, condition: {c0: "value > 0"}, via: [[1, 2]], label_at: [0, -0.5]}
 page_types:
   cell:
     description: "a cell"
@@ -344,6 +357,7 @@ std::map<Section, std::vector<std::vector<std::string>>> keysBySection(const std
   for (auto it = root["signals"].begin(); it != root["signals"].end(); ++it) add(Section::Signal, it->second);
   add(Section::Io, root["io"]);
   add(Section::Scripts, root["scripts"]);
+  for (auto it = root["colours"].begin(); it != root["colours"].end(); ++it) add(Section::Colour, it->second);
   for (unsigned t = 0; t < 4; ++t) {
     const YAML::Node table = root["io"][ioTableKey(static_cast<IoTable>(t))];
     for (auto it = table.begin(); it != table.end(); ++it) add(Section::IoEntry, it->second);

@@ -1,8 +1,8 @@
 #pragma once
 /// \file
 /// The schema of the model file: every key of the top level, `settings`, `params`, `signals`,
-/// `io`, pages, page types, places, transitions, arcs, instances, `scripts`, scripts in files
-/// and duration laws, described once (name,
+/// `io`, pages, page types, places, transitions, arcs, instances, `scripts`, scripts in files,
+/// duration laws and colour sets, described once (name,
 /// type, default, range, unit, help), as builtin_nodes.cpp describes the scene's fields. The
 /// loader takes its lists of allowed keys and its ranges from here, the writer its defaults
 /// and its key order (a test checks the order), the IDE's contents view its help, and
@@ -43,6 +43,7 @@ enum class Section : std::uint8_t {
   Part,        ///< a page type's `part`: how the palette shows it
   PartIo,      ///< one of a page type's `io`: a part's named input or output
   PartUse,     ///< one of a page type's `uses`: a role a control pattern's instance fills with a part
+  Colour,      ///< a colour set of `colours` written as a map (one key: what kind of set)
 };
 
 /// Every section, in the order of the enum.
@@ -50,7 +51,8 @@ inline constexpr Section kSections[] = {Section::Model,   Section::Settings, Sec
                                         Section::Io,      Section::IoEntry,  Section::Page,       Section::PageType,
                                         Section::Place,   Section::Transition, Section::Arc,      Section::Instance,
                                         Section::Scripts, Section::ScriptFile, Section::Duration,
-                                        Section::Part,    Section::PartIo,   Section::PartUse};
+                                        Section::Part,    Section::PartIo,   Section::PartUse,
+                                        Section::Colour};
 
 /// What a key's value is.
 enum class ValueType : std::uint8_t {
@@ -63,6 +65,7 @@ enum class ValueType : std::uint8_t {
   Vector,      ///< a list of numbers
   Script,      ///< Python statements, inline or `{file, function}`
   Expression,  ///< a Python expression
+  Inscription, ///< a text of the inscription language (net/inscription.h), not Python
   Map,         ///< a map (what it holds: the key's form and help)
   List,        ///< a list
 };
