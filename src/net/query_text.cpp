@@ -104,7 +104,8 @@ std::optional<IdType> lookup(std::string_view name, Find find, std::size_t count
 
 class Parser {
  public:
-  Parser(const Net& net, std::vector<Token> tokens) : net_(net), t_(std::move(tokens)) {}
+  Parser(const Net& net, std::vector<Token> tokens, const NameExpansion* names)
+      : net_(net), names_(names), t_(std::move(tokens)) {}
 
   std::optional<Formula> whole() {
     if (t_.back().kind == Tok::Bad) return fail(t_.back(), t_.back().text);
@@ -274,9 +275,9 @@ class Parser {
       do {
         const Token& n = peek();
         if (n.kind != Tok::Name && n.kind != Tok::Quoted) return fail(n, "expected a transition's name, found " + describe(n));
-        const auto id = transition(n.text);
-        if (!id) return fail(n, "no transition is called '" + n.text + "'");
-        f.transitions.push_back(*id);
+        const auto ids = transition(n.text);
+        if (!ids) return fail(n, "no transition is called '" + n.text + "'");
+        f.transitions.insert(f.transitions.end(), ids->begin(), ids->end());
         take();
       } while (peek().kind == Tok::Comma && take().kind == Tok::Comma);
       if (!expect(Tok::RParen, "')'")) return std::nullopt;
@@ -308,14 +309,16 @@ class Parser {
         out.constant += v;
         if (out.constant > kMostConstant) return failed(t, "the numbers of this sum add up to more than 2^60");
       } else if (t.kind == Tok::Quoted || (t.kind == Tok::Name && !keyword(t.text))) {
-        const auto p = place(t.text);
-        if (!p) {
+        const auto ps = place(t.text);
+        if (!ps) {
           const bool is_transition = transition(t.text).has_value();
           return failed(t, "no place is called '" + t.text + "'" +
                                (is_transition ? " (a transition is: fireable(" + t.text + ")?)" : ""));
         }
-        const Place& place = net_.places()[*p];
-        for (auto k = place.slots_begin; k < place.slots_end; ++k) out.slots.emplace_back(k);
+        for (const PlaceId p : *ps) {
+          const Place& place = net_.places()[p];
+          for (auto k = place.slots_begin; k < place.slots_end; ++k) out.slots.emplace_back(k);
+        }
       } else if (t.kind == Tok::Name) {
         return failed(t, "'" + t.text + "' is a keyword: a place so called is written \"" + t.text + "\"");
       } else {
@@ -326,12 +329,15 @@ class Parser {
     return true;
   }
 
-  std::optional<PlaceId> place(std::string_view n) const { return findPlaceNamed(net_, n); }
-  std::optional<TransitionId> transition(std::string_view n) const { return findTransitionNamed(net_, n); }
+  std::optional<std::vector<PlaceId>> place(std::string_view n) const { return findPlacesNamed(net_, n, names_); }
+  std::optional<std::vector<TransitionId>> transition(std::string_view n) const {
+    return findTransitionsNamed(net_, n, names_);
+  }
 
   static constexpr std::size_t kMaxDepth = 100;  // levels of the formula's tree
   static constexpr const char* kTooDeep = "the formula is nested more than 100 levels deep";
   const Net& net_;
+  const NameExpansion* names_;
   std::vector<Token> t_;
   std::size_t at_ = 0;
   std::size_t depth_ = 0;  // unary() calls under way
@@ -368,8 +374,53 @@ std::optional<TransitionId> findTransitionNamed(const Net& net, std::string_view
                 [&](std::string& out, TransitionId t) { net.appendTransitionName(out, t); });
 }
 
-std::optional<Formula> parseQuery(const Net& net, std::string_view text, QueryError& error) {
-  Parser p(net, tokenize(text));
+namespace {
+
+/// The entry of `table` called `name`, or else the one whose key ends in "/" + `name`; null
+/// when none or several.
+const std::vector<std::string>* expansionOf(const std::map<std::string, std::vector<std::string>, std::less<>>& table,
+                                            std::string_view name) {
+  if (const auto at = table.find(name); at != table.end()) return &at->second;
+  const std::vector<std::string>* found = nullptr;
+  for (const auto& [key, names] : table) {
+    if (key.size() <= name.size() || !key.ends_with(name) || key[key.size() - name.size() - 1] != '/') continue;
+    if (found) return nullptr;
+    found = &names;
+  }
+  return found;
+}
+
+template <class IdType>
+std::optional<std::vector<IdType>> expanded(const std::map<std::string, std::vector<std::string>, std::less<>>* table,
+                                            std::string_view name, const auto& find, const auto& findOne) {
+  if (const auto* names = table ? expansionOf(*table, name) : nullptr) {
+    std::vector<IdType> out;
+    for (const auto& n : *names) {
+      if (auto id = find(n)) out.push_back(*id);
+    }
+    return out;
+  }
+  if (auto id = findOne(name)) return std::vector<IdType>{*id};
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::vector<PlaceId>> findPlacesNamed(const Net& net, std::string_view name, const NameExpansion* names) {
+  return expanded<PlaceId>(
+      names ? &names->places : nullptr, name, [&](std::string_view n) { return net.findPlace(n); },
+      [&](std::string_view n) { return findPlaceNamed(net, n); });
+}
+
+std::optional<std::vector<TransitionId>> findTransitionsNamed(const Net& net, std::string_view name,
+                                                              const NameExpansion* names) {
+  return expanded<TransitionId>(
+      names ? &names->transitions : nullptr, name, [&](std::string_view n) { return net.findTransition(n); },
+      [&](std::string_view n) { return findTransitionNamed(net, n); });
+}
+
+std::optional<Formula> parseQuery(const Net& net, std::string_view text, QueryError& error, const NameExpansion* names) {
+  Parser p(net, tokenize(text), names);
   auto f = p.whole();
   if (!f) error = p.error;
   return f;
