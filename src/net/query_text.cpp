@@ -349,14 +349,53 @@ std::string name(std::string_view n) {
   return plain ? std::string(n) : "\"" + std::string(n) + "\"";
 }
 
-std::string sumText(const Net& net, const TokenSum& s) {
+/// `names` with every group that an entry of `table` (when given) lists, all of its members
+/// there, written as that entry's key instead, where its first member stood.
+std::vector<std::string> collapsed(std::vector<std::string> names,
+                                   const std::map<std::string, std::vector<std::string>, std::less<>>* table) {
+  if (!table) return names;
+  std::map<std::string, std::vector<std::size_t>> unused;  // name -> its positions not yet taken
+  for (std::size_t i = names.size(); i-- > 0;) unused[names[i]].push_back(i);
+  std::map<std::size_t, std::string> out;  // position -> what stands there
+  for (const auto& [key, members] : *table) {
+    if (members.empty()) continue;
+    while (true) {
+      std::map<std::string, std::size_t> need;
+      for (const auto& m : members) ++need[m];
+      bool all = true;
+      for (const auto& [m, k] : need) {
+        const auto at = unused.find(m);
+        all = all && at != unused.end() && at->second.size() >= k;
+      }
+      if (!all) break;
+      std::size_t first = names.size();
+      for (const auto& m : members) {
+        first = std::min(first, unused[m].back());
+        unused[m].pop_back();
+      }
+      out[first] = key;
+    }
+  }
+  for (const auto& [n, positions] : unused) {
+    for (const std::size_t i : positions) out[i] = n;
+  }
+  std::vector<std::string> result;
+  for (auto& [i, n] : out) result.push_back(std::move(n));
+  return result;
+}
+
+std::string sumText(const Net& net, const TokenSum& s, const NameExpansion* names) {
   std::string out;
   std::optional<PlaceId> last;
+  std::vector<std::string> places;
   for (PlaceSlotId k : s.slots) {
     const PlaceId p = net.placeSlots()[k].place;
     if (p == last) continue;  // a place's slots were named once, by the place
     last = p;
-    out += (out.empty() ? "" : " + ") + name(net.placeName(p));
+    places.push_back(net.placeName(p));
+  }
+  for (const auto& p : collapsed(std::move(places), names ? &names->places : nullptr)) {
+    out += (out.empty() ? "" : " + ") + name(p);
   }
   if (s.constant != 0 || out.empty()) out += (out.empty() ? "" : " + ") + std::to_string(s.constant);
   return out;
@@ -426,28 +465,29 @@ std::optional<Formula> parseQuery(const Net& net, std::string_view text, QueryEr
   return f;
 }
 
-std::string formulaText(const Net& net, const Formula& f) {
+std::string formulaText(const Net& net, const Formula& f, const NameExpansion* names) {
   // an operand in parentheses unless it is one word or a negation
   auto wrap = [&](const Formula& o) {
     // only a conjunction or a disjunction binds looser than what stands before it
     const bool plain = o.kind != FormulaKind::And && o.kind != FormulaKind::Or;
-    return plain ? formulaText(net, o) : "(" + formulaText(net, o) + ")";
+    return plain ? formulaText(net, o, names) : "(" + formulaText(net, o, names) + ")";
   };
-  auto until = [&](const Formula& u) { return formulaText(net, u.operands[0]) + " U " + formulaText(net, u.operands[1]); };
+  auto until = [&](const Formula& u) { return formulaText(net, u.operands[0], names) + " U " + formulaText(net, u.operands[1], names); };
   switch (f.kind) {
     case FormulaKind::True: return "true";
     case FormulaKind::False: return "false";
     case FormulaKind::Deadlock: return "deadlock";
     case FormulaKind::Fireable: {
+      std::vector<std::string> ts;
+      for (const TransitionId t : f.transitions) ts.push_back(net.transitionName(t));
+      ts = collapsed(std::move(ts), names ? &names->transitions : nullptr);
       std::string out = "fireable(";
-      for (std::size_t i = 0; i < f.transitions.size(); ++i) {
-        out += (i ? ", " : "") + name(net.transitionName(f.transitions[i]));
-      }
+      for (std::size_t i = 0; i < ts.size(); ++i) out += (i ? ", " : "") + name(ts[i]);
       return out + ")";
     }
     case FormulaKind::Compare: {
       static constexpr const char* kOps[] = {"<", "<=", "=", "!=", ">=", ">"};
-      return sumText(net, f.left) + " " + kOps[static_cast<int>(f.compare)] + " " + sumText(net, f.right);
+      return sumText(net, f.left, names) + " " + kOps[static_cast<int>(f.compare)] + " " + sumText(net, f.right, names);
     }
     case FormulaKind::Not: return "not " + wrap(f.operands[0]);
     case FormulaKind::And:
@@ -467,14 +507,14 @@ std::string formulaText(const Net& net, const Formula& f) {
                x.kind == FormulaKind::Until;
       };
       const bool ctl = pathOp(path) && path.kind != FormulaKind::Until && !pathOp(path.operands[0]);
-      if (ctl) return q + formulaText(net, path).substr(0, 1) + " " + wrap(path.operands[0]);
-      return q + " (" + formulaText(net, path) + ")";
+      if (ctl) return q + formulaText(net, path, names).substr(0, 1) + " " + wrap(path.operands[0]);
+      return q + " (" + formulaText(net, path, names) + ")";
     }
     case FormulaKind::Next: return "X " + wrap(f.operands[0]);
     case FormulaKind::Future: return "F " + wrap(f.operands[0]);
     case FormulaKind::Globally: return "G " + wrap(f.operands[0]);
     case FormulaKind::Until: return "(" + until(f) + ")";
-    case FormulaKind::Bound: return "bound(" + sumText(net, f.left) + ")";
+    case FormulaKind::Bound: return "bound(" + sumText(net, f.left, names) + ")";
   }
   return {};
 }

@@ -362,7 +362,7 @@ class Unfolder {
   core::Diagnostics& diags_;
   std::size_t most_;
   Colours colours_;
-  Scope scope_;
+  InscriptionScope scope_;
 };
 
 }  // namespace

@@ -110,8 +110,10 @@ std::optional<std::vector<Property>> readMccProperties(const Net& net, const std
                                                        const std::string& file, core::Diagnostics& diags,
                                                        const NameExpansion* names = nullptr);
 
-/// The formula in the text form, names as in the net.
-std::string formulaText(const Net& net, const Formula& f);
+/// The formula in the text form, names as in the net; where `names` is given, the places (or
+/// transitions) that one of its names stands for, all of them together in a sum (a fireable),
+/// are written as that name.
+std::string formulaText(const Net& net, const Formula& f, const NameExpansion* names = nullptr);
 
 /// True when no path quantifier or path operator lies inside `f`.
 bool isStateFormula(const Formula& f);
