@@ -370,13 +370,10 @@ class PnmlReader {
   // ---- places, transitions, pages --------------------------------------------------------
 
   /// A symmetric net's place: its `<type>` makes slot a0 a value slot of that set, and its
-  /// `<hlinitialMarking>` the slot's initial values.
+  /// `<hlinitialMarking>` the slot's initial values; one without a type is a plain place.
   void highLevelPlace(const XmlElement& el, PlaceSpec& p) {
     const XmlElement* type = el.child("type");
-    if (!type) {
-      diags_.error(el.loc, "a place of a symmetric net has a <type> (its sort)");
-      return;
-    }
+    if (!type) return;  // a plain place (as gdpn writes a net's places without values)
     auto set = colour_.placeSort(*type);
     if (!set) return;
     p.colours.push_back({kDefaultSlot, *set, type->loc});

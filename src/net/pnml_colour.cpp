@@ -6,6 +6,7 @@
 
 #include "detail/pnml_colour.h"
 #include "gdpn/core/text.h"
+#include "gdpn/net/inscription.h"
 #include "gdpn/net/pnml.h"
 
 namespace gdpn::net::detail {
@@ -337,12 +338,194 @@ std::optional<PnmlColourReader::Text> PnmlColourReader::render(const XmlElement&
     if (!sort) return fail(e, "<all> names a sort");
     auto set = sortName(*sort);
     if (!set) return std::nullopt;
+    // the built-ins' names are words of the language
+    if (*set == "dot") return Text{"dot", 7};
+    if (*set == "bool") return Text{"false ++ true", 0};
     return Text{"all(" + *set + ")", 7};
   }
   if (n == "subtract") {
     return fail(e, "<subtract> (a multiset's difference) has no counterpart in gdpn's inscription language");
   }
   return fail(e, "term <" + n + "> is not supported in a symmetric net");
+}
+
+// ---- out -----------------------------------------------------------------------------------
+
+namespace {
+
+/// `s` escaped for XML.
+std::string esc(std::string_view s) { return core::xmlEscape(s); }
+
+/// Writes a term of the language (as parsed, names unresolved) as PNML.
+class TermWriter {
+ public:
+  TermWriter(const NetSpec& spec, std::string& why) : why_(why) {
+    for (const auto& c : spec.colours) {
+      sorts_[c.name] = declarationId(c.name, c.pnml_id);
+      for (std::size_t i = 0; i < c.constants.size(); ++i) {
+        const std::string& id = i < c.constant_pnml_ids.size() ? c.constant_pnml_ids[i] : std::string();
+        constants_[c.constants[i]] = declarationId(c.constants[i], id);
+      }
+    }
+    for (const auto& v : spec.variables) variables_[v.name] = declarationId(v.name, v.pnml_id);
+  }
+
+  std::optional<std::string> term(const Expr& e) {
+    using Op = Expr::Op;
+    auto sub = [&](const Expr& x) -> std::optional<std::string> {
+      auto t = term(x);
+      if (!t) return std::nullopt;
+      return "<subterm>" + *t + "</subterm>";
+    };
+    auto element = [&](const std::string& name, const std::vector<const Expr*>& args) -> std::optional<std::string> {
+      std::string out = "<" + name + ">";
+      for (const Expr* a : args) {
+        auto t = sub(*a);
+        if (!t) return std::nullopt;
+        out += *t;
+      }
+      return out + "</" + name + ">";
+    };
+    auto flat = [&](const Expr& x, Op op) {
+      std::vector<const Expr*> out;
+      auto walk = [&](const Expr& y, auto&& self) -> void {
+        if (y.op == op) {
+          for (const auto& a : y.args) self(a, self);
+        } else {
+          out.push_back(&y);
+        }
+      };
+      walk(x, walk);
+      return out;
+    };
+    switch (e.op) {
+      case Op::Const:
+        switch (e.value.tag) {
+          case Value::Tag::Dot: return std::string("<dotconstant/>");
+          case Value::Tag::Bool: return "<booleanconstant value=\"" + std::string(e.value.i ? "true" : "false") + "\"/>";
+          case Value::Tag::Int:
+            return "<numberconstant value=\"" + std::to_string(e.value.i) + "\">" +
+                   (e.value.i > 0 ? "<positive/>" : "<natural/>") + "</numberconstant>";
+          case Value::Tag::String:
+          case Value::Tag::Tuple: break;
+        }
+        return refuse(e, "a value that is no number, boolean or dot");
+      case Op::Name: {
+        if (const auto v = variables_.find(e.name); v != variables_.end()) {
+          return "<variable refvariable=\"" + esc(v->second) + "\"/>";
+        }
+        if (const auto c = constants_.find(e.name); c != constants_.end()) {
+          return "<useroperator declaration=\"" + esc(c->second) + "\"/>";
+        }
+        return refuse(e, "'" + e.name + "', which is neither a variable nor a constant");
+      }
+      case Op::Var: return refuse(e, "a resolved variable");
+      case Op::Tuple: {
+        std::vector<const Expr*> args;
+        for (const auto& a : e.args) args.push_back(&a);
+        return element("tuple", args);
+      }
+      case Op::Times: return element("numberof", {&e.args[0], &e.args[1]});
+      case Op::Sum: return element("add", flat(e, Op::Sum));
+      case Op::And: return element("and", flat(e, Op::And));
+      case Op::Or: return element("or", flat(e, Op::Or));
+      case Op::Not: return element("not", {&e.args[0]});
+      case Op::Eq: return element("equality", {&e.args[0], &e.args[1]});
+      case Op::Ne: return element("inequality", {&e.args[0], &e.args[1]});
+      case Op::Lt: return element("lessthan", {&e.args[0], &e.args[1]});
+      case Op::Le: return element("lessthanorequal", {&e.args[0], &e.args[1]});
+      case Op::Gt: return element("greaterthan", {&e.args[0], &e.args[1]});
+      case Op::Ge: return element("greaterthanorequal", {&e.args[0], &e.args[1]});
+      case Op::Succ: return element("successor", {&e.args[0]});
+      case Op::Pred: return element("predecessor", {&e.args[0]});
+      case Op::All: {
+        const auto s = sorts_.find(e.name);
+        if (s == sorts_.end()) return refuse(e, "'all' of no declared colour set");
+        return "<all><usersort declaration=\"" + esc(s->second) + "\"/></all>";
+      }
+      case Op::Record:
+      case Op::Field:
+      case Op::Neg:
+      case Op::Add:
+      case Op::Sub:
+      case Op::Mul:
+      case Op::Div:
+      case Op::Mod:
+      case Op::If:
+      case Op::Empty: break;
+    }
+    return refuse(e, "an operator a symmetric net has no term for");
+  }
+
+ private:
+  std::nullopt_t refuse(const Expr& e, const std::string& what) {
+    if (why_.empty()) why_ = "column " + std::to_string(e.loc.column) + ": " + what;
+    return std::nullopt;
+  }
+
+  std::string& why_;
+  std::map<std::string, std::string> sorts_, constants_, variables_;  // name -> PNML id
+};
+
+}  // namespace
+
+std::string sortXml(const NetSpec& spec, const std::string& set) {
+  if (set == "dot") return "<dot/>";
+  if (set == "bool") return "<bool/>";
+  for (const auto& c : spec.colours) {
+    if (c.name == set) return "<usersort declaration=\"" + esc(declarationId(c.name, c.pnml_id)) + "\"/>";
+  }
+  return "<usersort declaration=\"" + esc(set) + "\"/>";
+}
+
+std::optional<std::string> termXml(const NetSpec& spec, const std::string& text, std::string& why) {
+  core::Diagnostics diags;
+  auto e = parseInscription(text, core::SourceLoc{"", 1, 1}, diags);
+  if (!e) {
+    why = diags.str();
+    return std::nullopt;
+  }
+  why.clear();
+  TermWriter w(spec, why);
+  return w.term(*e);
+}
+
+std::string declarationsXml(const NetSpec& spec) {
+  if (spec.colours.empty() && spec.variables.empty()) return {};
+  std::string out = "    <declaration><structure><declarations>\n";
+  for (const auto& c : spec.colours) {
+    const std::string& id = declarationId(c.name, c.pnml_id);
+    out += "      <namedsort id=\"" + esc(id) + "\" name=\"" + esc(c.name) + "\">";
+    switch (c.kind) {
+      case ColourKind::Dot: out += "<dot/>"; break;
+      case ColourKind::Bool: out += "<bool/>"; break;
+      case ColourKind::Integer:
+        out += "<finiteintrange start=\"" + std::to_string(c.lo) + "\" end=\"" + std::to_string(c.hi) + "\"/>";
+        break;
+      case ColourKind::Enum:
+        out += c.cyclic ? "<cyclicenumeration>" : "<finiteenumeration>";
+        for (std::size_t i = 0; i < c.constants.size(); ++i) {
+          const std::string& cid = i < c.constant_pnml_ids.size() ? c.constant_pnml_ids[i] : std::string();
+          out += "<feconstant id=\"" + esc(declarationId(c.constants[i], cid)) + "\" name=\"" + esc(c.constants[i]) +
+                 "\"/>";
+        }
+        out += c.cyclic ? "</cyclicenumeration>" : "</finiteenumeration>";
+        break;
+      case ColourKind::Product:
+        out += "<productsort>";
+        for (const auto& part : c.components) out += sortXml(spec, part);
+        out += "</productsort>";
+        break;
+      case ColourKind::String:
+      case ColourKind::Record: break;
+    }
+    out += "</namedsort>\n";
+  }
+  for (const auto& v : spec.variables) {
+    out += "      <variabledecl id=\"" + esc(declarationId(v.name, v.pnml_id)) + "\" name=\"" + esc(v.name) + "\">" +
+           sortXml(spec, v.colour) + "</variabledecl>\n";
+  }
+  return out + "    </declarations></structure></declaration>\n";
 }
 
 }  // namespace gdpn::net::detail

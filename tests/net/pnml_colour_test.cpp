@@ -162,8 +162,8 @@ TEST(PnmlSymmetric, MistakesAreLocatedAtTheirElement) {
             "s.pnml:6:30: error: term <cardinality> is not supported in a symmetric net");
   EXPECT_EQ(refusal(symmetric(kDecls, "<place id=\"P\"><type><structure><usersort declaration=\"nope\"/></structure></type></place>\n")),
             "s.pnml:5:32: error: <usersort> names 'nope', which no namedsort declares");
-  EXPECT_EQ(refusal(symmetric(kDecls, "<place id=\"P\"></place>\n")),
-            "s.pnml:5:1: error: a place of a symmetric net has a <type> (its sort)");
+  EXPECT_EQ(refusal(symmetric(kDecls, "<place id=\"P\"><type/></place>\n")),
+            "s.pnml:5:15: error: a place's <type> holds <structure> with a sort");
   const std::string arc =
       place + "</place><transition id=\"T\"/>\n<arc id=\"a\" source=\"P\" target=\"T\"><hlinscription><structure>"
               "<variable refvariable=\"y\"/></structure></hlinscription></arc>\n";
