@@ -154,6 +154,8 @@ class Colours {
 
  private:
   std::vector<ColourSet> sets_;
+  std::map<std::string, ColourId, std::less<>> by_name_;  // each name's first set
+  std::map<std::string, std::pair<ColourId, std::int64_t>, std::less<>> constants_;  // each constant's first set
 };
 
 }  // namespace gdpn::net

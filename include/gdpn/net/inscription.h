@@ -80,18 +80,23 @@ std::optional<Expr> parseInscription(std::string_view text, const SourceLoc& at,
 std::string inscriptionText(const Expr& e, const Colours& colours, const std::vector<std::string>* names = nullptr);
 
 /// What the checker resolves names against: the colour sets and the variables in scope.
-struct Scope {
+/// (Not `Scope`: names.h has a Scope, an instantiated page.)
+struct InscriptionScope {
   const Colours* colours = nullptr;        ///< the sets, with their enum constants
   std::vector<std::string> variable_names; ///< every declared variable
   std::vector<ColourId> variable_sets;     ///< and its set
 };
 
+// GCC's -Wshadow takes the enumerator Expect::Multiset for a shadow of net::Multiset
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 /// What an expression must be.
 enum class Expect : std::uint8_t {
   Multiset,  ///< an arc inscription or initial marking: a multiset (a single value is one of it)
   Value,     ///< a single value of the set
   Condition, ///< a transition's condition: a bool (the set is ignored)
 };
+#pragma GCC diagnostic pop
 
 /// Resolves names and types `e` in place: a Name becomes a Var (its `index` the position in
 /// `used`, appended when new; `used` holds indices into scope.variable_names) or a Const; every
@@ -99,7 +104,7 @@ enum class Expect : std::uint8_t {
 /// Condition). Mistakes go to `diags` at the node: an unknown name, a type mismatch (`expected
 /// P, found int`), `all` of a set that is not finite, a field a record lacks. False when there
 /// was one.
-bool checkInscription(Expr& e, ColourId set, Expect what, const Scope& scope, std::vector<std::uint32_t>& used,
+bool checkInscription(Expr& e, ColourId set, Expect what, const InscriptionScope& scope, std::vector<std::uint32_t>& used,
                       core::Diagnostics& diags);
 
 /// A binding: the value of each of a transition's variables (by the index a Var holds).
