@@ -254,7 +254,8 @@ std::optional<PnmlColourReader::Text> PnmlColourReader::render(const XmlElement&
   static constexpr Binary kBinary[] = {
       {"equality", " = ", 4, 5},         {"inequality", " <> ", 4, 5},       {"lessthan", " < ", 4, 5},
       {"lessthanorequal", " <= ", 4, 5}, {"greaterthan", " > ", 4, 5},       {"greaterthanorequal", " >= ", 4, 5},
-      {"and", " and ", 2, 3},            {"or", " or ", 1, 2},               {"add", " ++ ", 0, 1},
+      // associative: an operand of the same operator needs no parentheses
+      {"and", " and ", 2, 2},            {"or", " or ", 1, 1},               {"add", " ++ ", 0, 0},
   };
   for (const auto& b : kBinary) {
     if (n != b.element) continue;

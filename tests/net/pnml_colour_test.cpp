@@ -145,6 +145,89 @@ TEST(PnmlSymmetric, EveryContestModelIsRead) {
   }
 }
 
+/// The first construct where `a` and `b` differ ("" where they are equal).
+std::string firstDifference(const NetSpec& a, const NetSpec& b) {
+  if (a.colours != b.colours) return "colour sets";
+  if (a.variables != b.variables) return "variables";
+  if (a.pages.size() != b.pages.size()) return "pages";
+  for (std::size_t k = 0; k < a.pages.size(); ++k) {
+    const PageSpec &x = a.pages[k], &y = b.pages[k];
+    for (std::size_t i = 0; i < std::min(x.places.size(), y.places.size()); ++i) {
+      if (!(x.places[i] == y.places[i])) return "place " + x.places[i].name + " / " + y.places[i].name;
+    }
+    for (std::size_t i = 0; i < std::min(x.transitions.size(), y.transitions.size()); ++i) {
+      if (!(x.transitions[i] == y.transitions[i])) return "transition " + x.transitions[i].name + " / " + y.transitions[i].name;
+    }
+    for (std::size_t i = 0; i < std::min(x.arcs.size(), y.arcs.size()); ++i) {
+      if (!(x.arcs[i] == y.arcs[i])) return "arc " + x.arcs[i].from + " -> " + x.arcs[i].to;
+    }
+    if (!(x == y)) return "page " + x.name;
+  }
+  return a == b ? "" : "the net";
+}
+
+TEST(PnmlSymmetric, WrittenBackAndReadAgainTheNetIsTheSameWithTheSameIds) {
+  for (const auto& entry : fs::directory_iterator(kColData)) {
+    if (!entry.is_directory()) continue;
+    core::Diagnostics diags;
+    std::string name;
+    const auto spec = loadPnml((entry.path() / "model.pnml").string(), diags, &name);
+    ASSERT_TRUE(spec) << diags.str();
+    std::string why;
+    const auto text = writePnml(*spec, why, name);
+    ASSERT_TRUE(text) << entry.path() << ": " << why;
+    EXPECT_NE(text->find("grammar/symmetricnet"), std::string::npos);
+    const auto back = parsePnml(*text, "back.pnml", diags);
+    ASSERT_TRUE(back) << entry.path() << "\n" << diags.str() << *text;
+    EXPECT_EQ(firstDifference(*back, *spec), "") << entry.path();
+    // the declarations keep their ids, renamed or not
+    for (std::size_t i = 0; i < spec->colours.size(); ++i) {
+      EXPECT_EQ(back->colours[i].pnml_id, spec->colours[i].pnml_id);
+      EXPECT_EQ(back->colours[i].constant_pnml_ids, spec->colours[i].constant_pnml_ids);
+    }
+    for (std::size_t i = 0; i < spec->variables.size(); ++i) {
+      EXPECT_EQ(back->variables[i].pnml_id, spec->variables[i].pnml_id);
+    }
+    // and writing it again gives the same bytes
+    EXPECT_TRUE(writePnml(*back, why, name) == *text) << entry.path();
+  }
+  // the contest's own ids, as its property files and other tools know them
+  core::Diagnostics diags;
+  const auto lamport = loadPnml((kColData / "LamportFastMutEx-COL-2" / "model.pnml").string(), diags);
+  ASSERT_TRUE(lamport) << diags.str();
+  std::string why;
+  const auto text = writePnml(*lamport, why);
+  ASSERT_TRUE(text) << why;
+  for (const char* id : {"<namedsort id=\"T-pid-bool\"", "<feconstant id=\"C-bool-false\" name=\"C_bool_false\"",
+                         "<feconstant id=\"C-pid-0\"", "<variabledecl id=\"V-i-pid\" name=\"i\"",
+                         "<usersort declaration=\"T-pid\"/>"}) {
+    EXPECT_NE(text->find(id), std::string::npos) << id;
+  }
+}
+
+TEST(PnmlSymmetric, WhatASymmetricNetCannotHoldIsRefused) {
+  NetSpec spec;
+  spec.colours.push_back({});
+  spec.colours[0].name = "Name";
+  spec.colours[0].kind = ColourKind::String;
+  std::string why;
+  EXPECT_FALSE(writePnml(spec, why));
+  EXPECT_EQ(why, "colour set 'Name' is a string set that a PNML symmetric net cannot declare (dot, bool, ranges, "
+                 "enumerations and products)");
+  spec.colours[0].kind = ColourKind::Integer;
+  spec.colours[0].range = true;
+  spec.colours[0].hi = 3;
+  spec.pages.push_back({});
+  spec.pages[0].name = "net";
+  spec.pages[0].places.push_back({});
+  spec.pages[0].places[0].name = "p";
+  spec.pages[0].places[0].colours.push_back({kDefaultSlot, "Name", {}});
+  spec.pages[0].places[0].values.push_back({kDefaultSlot, "1 + 2", {}});
+  EXPECT_FALSE(writePnml(spec, why));
+  EXPECT_EQ(why, "the inscription '1 + 2' of place 'p' is no term of a symmetric net: column 1: an operator a "
+                 "symmetric net has no term for");
+}
+
 /// The first line of the diagnostics of reading `text` (which must fail) as "s.pnml".
 std::string refusal(const std::string& text) {
   core::Diagnostics diags;
