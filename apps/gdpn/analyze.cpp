@@ -17,6 +17,7 @@
 #include "gdpn/model/analysis.h"
 #include "gdpn/net/compile.h"
 #include "gdpn/net/pnml.h"
+#include "gdpn/net/unfold.h"
 #include "gdpn/session/analysis_request.h"
 
 namespace gdpn::app {
@@ -44,12 +45,13 @@ struct AnalyzeArgs {
 /// go to `err` located (file:line:col, or the argument's number and column) with the line
 /// and a caret; nullopt when there was one.
 std::optional<std::vector<model::QueryResult>> readQueries(const gdpn::net::Net& net,
-                                                          const std::vector<std::string>& args, std::ostream& err) {
+                                                          const std::vector<std::string>& args, std::ostream& err,
+                                                          const gdpn::net::NameExpansion* names) {
   std::vector<model::QueryResult> out;
   bool ok = true;
   auto read = [&](const std::string& where, const std::string& text) {
     gdpn::net::QueryError e;
-    if (auto f = gdpn::net::parseQuery(net, text, e)) {
+    if (auto f = gdpn::net::parseQuery(net, text, e, names)) {
       model::QueryResult r;
       r.text = text;
       r.formula = std::move(*f);
@@ -77,7 +79,7 @@ std::optional<std::vector<model::QueryResult>> readQueries(const gdpn::net::Net&
     }
     if (args[i].ends_with(".xml")) {
       // the Model Checking Contest's property file
-      auto properties = gdpn::net::readMccProperties(net, *text, args[i], diags);
+      auto properties = gdpn::net::readMccProperties(net, *text, args[i], diags, names);
       diags.print(err);
       if (!properties) {
         ok = false;
@@ -85,7 +87,7 @@ std::optional<std::vector<model::QueryResult>> readQueries(const gdpn::net::Net&
       }
       for (auto& p : *properties) {
         model::QueryResult r;
-        r.text = gdpn::net::formulaText(net, p.formula);
+        r.text = gdpn::net::formulaText(net, p.formula, names);
         r.formula = std::move(p.formula);
         r.id = p.id;
         out.push_back(std::move(r));
@@ -124,6 +126,17 @@ int analyze(AnalyzeArgs a) {
       request.dt = m->settings.dt;
     }
   }
+  // a coloured net is analysed unfolded; queries name its places and transitions as written
+  std::optional<gdpn::net::NameExpansion> names;
+  if (spec && gdpn::net::coloured(*spec)) {
+    auto unfolded = gdpn::net::unfold(*spec, diags);
+    spec.reset();
+    if (unfolded) {
+      spec = std::move(unfolded->net);
+      names = std::move(unfolded->names);
+    }
+  }
+  const gdpn::net::NameExpansion* expansion = names ? &*names : nullptr;
   std::shared_ptr<const gdpn::net::Net> net;
   if (spec) net = gdpn::net::compile(*spec, diags);
   diags.print(std::cerr);
@@ -156,7 +169,7 @@ int analyze(AnalyzeArgs a) {
   }
   if (!a.queries.empty()) {
     // only the questions asked, each answered as soon as a search decides it
-    auto queries = readQueries(*net, a.queries, std::cerr);
+    auto queries = readQueries(*net, a.queries, std::cerr, expansion);
     if (!queries) return 1;
     std::vector<gdpn::net::Formula> formulas;
     for (const auto& q : *queries) formulas.push_back(q.formula);
@@ -167,9 +180,9 @@ int analyze(AnalyzeArgs a) {
       decided = decided && answers[i].verdict != gdpn::net::Verdict::Unknown;
     }
     if (a.json) {
-      std::cout << model::queriesJson(*net, *queries);
+      std::cout << model::queriesJson(*net, *queries, expansion);
     } else {
-      model::printQueries(std::cout, *net, *queries);
+      model::printQueries(std::cout, *net, *queries, expansion);
     }
     if (!a.witness.empty()) {
       const auto shown = std::find_if(queries->begin(), queries->end(), [](const auto& q) { return q.answer.has_marking; });

@@ -492,7 +492,8 @@ std::string verdictWord(const net::QueryAnswer& a) {
 
 }  // namespace
 
-void printQueries(std::ostream& out, const net::Net& net, const std::vector<QueryResult>& results) {
+void printQueries(std::ostream& out, const net::Net& net, const std::vector<QueryResult>& results,
+                  const net::NameExpansion* expansion) {
   printCaveats(out, net);
   for (std::size_t i = 0; i < results.size(); ++i) {
     const auto& [text, formula, a, id] = results[i];
@@ -508,7 +509,7 @@ void printQueries(std::ostream& out, const net::Net& net, const std::vector<Quer
     }
     const std::string head = "query " + std::to_string(i + 1) + ":";
     out << head;
-    core::writeWrapped(out, head.size(), std::vector<std::string>{net::formulaText(net, formula)}, 2);
+    core::writeWrapped(out, head.size(), std::vector<std::string>{net::formulaText(net, formula, expansion)}, 2);
     out << "\n  " << verdictWord(a);
     if (a.verdict == net::Verdict::Unknown) {
       out << ": " << (a.unsupported.empty() ? net::stopReason(a.stop) : a.unsupported);
@@ -553,13 +554,13 @@ void printQueries(std::ostream& out, const net::Net& net, const std::vector<Quer
 namespace {
 
 /// One answer as JSON: the query, the answer, and the firing sequence and marking that show it.
-nlohmann::ordered_json queryObject(const net::Net& net, const QueryResult& r) {
+nlohmann::ordered_json queryObject(const net::Net& net, const QueryResult& r, const net::NameExpansion* expansion) {
   using nlohmann::ordered_json;
   const auto& [text, formula, a, id] = r;
   ordered_json q;
   if (!id.empty()) q["id"] = id;
   q["query"] = text;
-  q["formula"] = net::formulaText(net, formula);
+  q["formula"] = net::formulaText(net, formula, expansion);
   if (a.verdict == net::Verdict::Value) {
     q["answer"] = a.value;
   } else {
@@ -585,15 +586,16 @@ nlohmann::ordered_json queryObject(const net::Net& net, const QueryResult& r) {
 
 }  // namespace
 
-std::string queriesJson(const net::Net& net, const std::vector<QueryResult>& results) {
+std::string queriesJson(const net::Net& net, const std::vector<QueryResult>& results,
+                        const net::NameExpansion* expansion) {
   nlohmann::ordered_json j = nlohmann::ordered_json::array();
-  for (const auto& r : results) j.push_back(queryObject(net, r));
+  for (const auto& r : results) j.push_back(queryObject(net, r, expansion));
   return nlohmann::ordered_json{{"queries", j}}.dump(2) + "\n";
 }
 
 std::string witnessJson(const net::Net& net, const QueryResult& result, const std::string& model_file) {
   nlohmann::ordered_json j{{"model", model_file}};
-  j.update(queryObject(net, result));
+  j.update(queryObject(net, result, nullptr));
   return j.dump(2) + "\n";
 }
 

@@ -11,6 +11,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "detail/pnml_colour.h"
 #include "detail/pnml_tool.h"
 #include "detail/xml.h"
 #include "gdpn/core/file.h"
@@ -94,9 +95,10 @@ class PnmlReader {
       return std::nullopt;
     }
     const std::string* type = net->attr("type");
-    if (type && type->find("ptnet") == std::string::npos) {
-      diags_.error(net->loc, "only place/transition nets (ptnet) are supported; this net is '" + *type + "'" +
-                                 (type->find("symmetricnet") != std::string::npos ? " (a coloured net)" : ""));
+    symmetric_ = type && detail::isSymmetricNet(*type);
+    if (type && type->find("ptnet") == std::string::npos && !symmetric_) {
+      diags_.error(net->loc, "only place/transition nets (ptnet) and symmetric nets (symmetricnet) are supported; "
+                             "this net is '" + *type + "'");
       return std::nullopt;
     }
     if (net_name) {
@@ -104,6 +106,7 @@ class PnmlReader {
       if (net_name->empty() && net->attr("id")) *net_name = *net->attr("id");
     }
     NetSpec spec;
+    if (symmetric_) colour_.declarations(*net, spec);
     if (const XmlElement* tool = gdpnPart(*net)) {
       for (const auto& c : tool->children) {
         if (c->name == "globals") spec.globals = script(*c);
@@ -366,6 +369,19 @@ class PnmlReader {
 
   // ---- places, transitions, pages --------------------------------------------------------
 
+  /// A symmetric net's place: its `<type>` makes slot a0 a value slot of that set, and its
+  /// `<hlinitialMarking>` the slot's initial values; one without a type is a plain place.
+  void highLevelPlace(const XmlElement& el, PlaceSpec& p) {
+    const XmlElement* type = el.child("type");
+    if (!type) return;  // a plain place (as gdpn writes a net's places without values)
+    auto set = colour_.placeSort(*type);
+    if (!set) return;
+    p.colours.push_back({kDefaultSlot, *set, type->loc});
+    if (const XmlElement* m = el.child("hlinitialMarking")) {
+      if (auto text = colour_.term(*m)) p.values.push_back({kDefaultSlot, *text, m->loc});
+    }
+  }
+
   /// The description of a place or transition read as `name` from PNML id `id`: gdpn's own
   /// when its part has one, else the id note when it was renamed, else its name label when
   /// that differs from the name. A label that reads like an id note is dropped, since a save
@@ -476,6 +492,7 @@ class PnmlReader {
               p.tokens.push_back({kDefaultSlot, *n, m->loc, {}});
             }
           }
+          if (symmetric_) highLevelPlace(c, p);
           p.position = position(c);
           if (tool) placePart(*tool, p);
           node.index = places_.size();
@@ -486,6 +503,9 @@ class PnmlReader {
           t.loc = t.duration.loc = t.probability_loc = t.servers_loc = c.loc;
           t.description = describe(c, tool, t.name, *id);
           t.position = position(c);
+          if (const XmlElement* when = symmetric_ ? c.child("condition") : nullptr) {
+            if (auto text = colour_.term(*when)) t.when = {kDefaultSlot, *text, when->loc};
+          }
           if (tool) transitionPart(*tool, t);
           node.index = transitions_.size();
           transitions_.push_back(std::move(t));
@@ -595,6 +615,11 @@ class PnmlReader {
       if (auto n = integer(*w, textOf(w), "an arc inscription"); n && *n != 1) a.weights.push_back({kDefaultSlot, *n, w->loc, {}});
       // where the inscription stands: PNML's offset from its arc
       const XmlElement* g = w->child("graphics");
+      a.label_at = point(g ? g->child("offset") : nullptr);
+    }
+    if (const XmlElement* h = symmetric_ ? el.child("hlinscription") : nullptr) {
+      if (auto text = colour_.term(*h)) a.inscriptions.push_back({kDefaultSlot, *text, h->loc});
+      const XmlElement* g = h->child("graphics");
       a.label_at = point(g ? g->child("offset") : nullptr);
     }
     a.via = route(el);
@@ -774,6 +799,8 @@ class PnmlReader {
 
   std::string file_;
   core::Diagnostics& diags_;
+  bool symmetric_ = false;              // a symmetric net: its high-level parts are read
+  detail::PnmlColourReader colour_{diags_};
   std::vector<Page> pages_;
   int loose_ = -1;                      // the page made for nodes outside any page, if any
   std::vector<PlaceSpec> places_;       // in document order

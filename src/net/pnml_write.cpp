@@ -8,6 +8,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "detail/pnml_colour.h"
 #include "detail/pnml_tool.h"
 #include "gdpn/core/text.h"
 #include "gdpn/net/pnml.h"
@@ -151,7 +152,23 @@ class PnmlWriter {
       }
       types_[t.name] = &t;
     }
-    // ids: constructs first, so that they keep their names wherever they can, then pages
+    // a coloured net is a symmetric net: what one cannot hold is refused
+    symmetric_ = !spec_.colours.empty() || !spec_.variables.empty();
+    for (const auto* pages : {&spec_.pages, &spec_.page_types}) {
+      for (const auto& page : *pages) {
+        for (const auto& p : page.places) symmetric_ = symmetric_ || !p.colours.empty();
+      }
+    }
+    if (symmetric_ && !symmetricOnly()) return std::nullopt;
+    // ids: the declarations' first (a symmetric net's), then constructs, so that they keep
+    // their names wherever they can, then pages
+    for (const auto& c : spec_.colours) {
+      ids_.insert(detail::declarationId(c.name, c.pnml_id));
+      for (std::size_t i = 0; i < c.constants.size(); ++i) {
+        ids_.insert(detail::declarationId(c.constants[i], i < c.constant_pnml_ids.size() ? c.constant_pnml_ids[i] : ""));
+      }
+    }
+    for (const auto& v : spec_.variables) ids_.insert(detail::declarationId(v.name, v.pnml_id));
     for (const auto& p : spec_.pages) {
       if (!assignNodes(p)) return std::nullopt;
     }
@@ -168,7 +185,8 @@ class PnmlWriter {
     const std::string net_id = isXmlId(name) && !ids_.count(name) ? name : unique("net");
     out_ = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
            "<pnml xmlns=\"http://www.pnml.org/version-2009/grammar/pnml\">\n"
-           "  <net id=\"" + attr(net_id) + "\" type=\"http://www.pnml.org/version-2009/grammar/ptnet\">\n";
+           "  <net id=\"" + attr(net_id) + "\" type=\"http://www.pnml.org/version-2009/grammar/" +
+           (symmetric_ ? "symmetricnet" : "ptnet") + "\">\n";
     if (!name.empty()) out_ += "    <name><text>" + text(name) + "</text></name>\n";
     std::string net_tool;
     if (!spec_.globals.empty()) {
@@ -182,6 +200,8 @@ class PnmlWriter {
     for (const auto& p : spec_.pages) {
       if (!writePage(p, nullptr, 2)) return std::nullopt;
     }
+    if (failed_) return std::nullopt;
+    out_ += detail::declarationsXml(spec_);
     out_ += "  </net>\n</pnml>\n";
     if (unseen) {
       unseen->clear();
@@ -298,6 +318,13 @@ class PnmlWriter {
             (reference ? " ref=\"" + attr(declarer->second.second) + "\"" : std::string()) + "><name><text>" +
             text(label(id, p.description)) + "</text></name>" + positionXml(p.position);
     if (a0 > 0 && !reference) out_ += "<initialMarking><text>" + std::to_string(a0) + "</text></initialMarking>";
+    if (!reference) {
+      for (const auto& c : p.colours) {
+        out_ += "<type><text>" + text(c.text) + "</text><structure>" + detail::sortXml(spec_, c.text) +
+                "</structure></type>";
+      }
+      for (const auto& v : p.values) out_ += highLevel("hlinitialMarking", v, "place '" + p.name + "'");
+    }
     if (!tool.empty()) out_ += toolOpen() + tool + "</toolspecific>";
     out_ += "</" + element + ">\n";
   }
@@ -338,6 +365,7 @@ class PnmlWriter {
     if (scripted) see(Unseen::TransitionScript);
     out_ += pad + "<transition id=\"" + attr(id) + "\"><name><text>" + text(label(id, t.description)) +
             "</text></name>" + positionXml(t.position);
+    if (t.conditioned()) out_ += highLevel("condition", t.when, "transition '" + t.name + "'");
     if (!tool.empty()) out_ += toolOpen() + tool + "</toolspecific>";
     out_ += "</transition>\n";
   }
@@ -383,7 +411,12 @@ class PnmlWriter {
         for (const auto& p : a.via) body += pointXml("position", p);
         body += "</graphics>";
       }
-      if (w != 1 || a.label_at) {
+      for (const auto& x : a.inscriptions) {
+        std::string h = highLevel("hlinscription", x, "arc '" + a.from + "' -> '" + a.to + "'");
+        if (a.label_at) h.insert(h.size() - std::string("</hlinscription>").size(), "<graphics>" + pointXml("offset", *a.label_at) + "</graphics>");
+        body += h;
+      }
+      if (w != 1 || (a.label_at && a.inscriptions.empty())) {
         body += "<inscription><text>" + std::to_string(w) + "</text>";
         if (a.label_at) body += "<graphics>" + pointXml("offset", *a.label_at) + "</graphics>";
         body += "</inscription>";
@@ -459,6 +492,48 @@ class PnmlWriter {
   }
 
   const NetSpec& spec_;
+  /// A symmetric net's high-level label `element` of inscription text `t` (of `owner`): its
+  /// text and its term; "" after a failure, which `why_` then describes.
+  std::string highLevel(const std::string& element, const SlotText& t, const std::string& owner) {
+    std::string why;
+    const auto term = detail::termXml(spec_, t.text, why);
+    if (!term) {
+      if (!failed_) why_ = "the inscription '" + t.text + "' of " + owner + " is no term of a symmetric net: " + why;
+      failed_ = true;
+      return {};
+    }
+    return "<" + element + "><text>" + text(t.text) + "</text><structure>" + *term + "</structure></" + element + ">";
+  }
+
+  /// True when the coloured parts of the net are what a symmetric net holds: colour sets of
+  /// dot, bool, ranges, enumerations and products, value slots on a0 only; else false with why_.
+  bool symmetricOnly() {
+    for (const auto& c : spec_.colours) {
+      const bool ok = c.kind == ColourKind::Dot || c.kind == ColourKind::Bool || c.kind == ColourKind::Enum ||
+                      c.kind == ColourKind::Product || (c.kind == ColourKind::Integer && c.range);
+      if (!ok) {
+        why_ = "colour set '" + c.name + "' is a " + colourKindName(c.kind) +
+               " set that a PNML symmetric net cannot declare (dot, bool, ranges, enumerations and products)";
+        return false;
+      }
+    }
+    for (const auto* pages : {&spec_.pages, &spec_.page_types}) {
+      for (const auto& page : *pages) {
+        for (const auto& p : page.places) {
+          for (const auto& c : p.colours) {
+            if (c.slot == kDefaultSlot) continue;
+            why_ = "place '" + p.name + "' has a value slot other than a0 (" + slotName(c.slot) +
+                   "), which a PNML symmetric net cannot hold";
+            return false;
+          }
+        }
+      }
+    }
+    return true;
+  }
+
+  bool symmetric_ = false;  // a coloured net, written as a symmetric net
+  bool failed_ = false;     // a high-level label could not be written (why_ says why)
   std::string& why_;
   std::string out_;
   std::unordered_map<std::string, const PageSpec*> types_;                 // page type by name

@@ -104,7 +104,8 @@ std::optional<IdType> lookup(std::string_view name, Find find, std::size_t count
 
 class Parser {
  public:
-  Parser(const Net& net, std::vector<Token> tokens) : net_(net), t_(std::move(tokens)) {}
+  Parser(const Net& net, std::vector<Token> tokens, const NameExpansion* names)
+      : net_(net), names_(names), t_(std::move(tokens)) {}
 
   std::optional<Formula> whole() {
     if (t_.back().kind == Tok::Bad) return fail(t_.back(), t_.back().text);
@@ -274,9 +275,9 @@ class Parser {
       do {
         const Token& n = peek();
         if (n.kind != Tok::Name && n.kind != Tok::Quoted) return fail(n, "expected a transition's name, found " + describe(n));
-        const auto id = transition(n.text);
-        if (!id) return fail(n, "no transition is called '" + n.text + "'");
-        f.transitions.push_back(*id);
+        const auto ids = transition(n.text);
+        if (!ids) return fail(n, "no transition is called '" + n.text + "'");
+        f.transitions.insert(f.transitions.end(), ids->begin(), ids->end());
         take();
       } while (peek().kind == Tok::Comma && take().kind == Tok::Comma);
       if (!expect(Tok::RParen, "')'")) return std::nullopt;
@@ -308,14 +309,16 @@ class Parser {
         out.constant += v;
         if (out.constant > kMostConstant) return failed(t, "the numbers of this sum add up to more than 2^60");
       } else if (t.kind == Tok::Quoted || (t.kind == Tok::Name && !keyword(t.text))) {
-        const auto p = place(t.text);
-        if (!p) {
+        const auto ps = place(t.text);
+        if (!ps) {
           const bool is_transition = transition(t.text).has_value();
           return failed(t, "no place is called '" + t.text + "'" +
                                (is_transition ? " (a transition is: fireable(" + t.text + ")?)" : ""));
         }
-        const Place& place = net_.places()[*p];
-        for (auto k = place.slots_begin; k < place.slots_end; ++k) out.slots.emplace_back(k);
+        for (const PlaceId p : *ps) {
+          const Place& place = net_.places()[p];
+          for (auto k = place.slots_begin; k < place.slots_end; ++k) out.slots.emplace_back(k);
+        }
       } else if (t.kind == Tok::Name) {
         return failed(t, "'" + t.text + "' is a keyword: a place so called is written \"" + t.text + "\"");
       } else {
@@ -326,12 +329,15 @@ class Parser {
     return true;
   }
 
-  std::optional<PlaceId> place(std::string_view n) const { return findPlaceNamed(net_, n); }
-  std::optional<TransitionId> transition(std::string_view n) const { return findTransitionNamed(net_, n); }
+  std::optional<std::vector<PlaceId>> place(std::string_view n) const { return findPlacesNamed(net_, n, names_); }
+  std::optional<std::vector<TransitionId>> transition(std::string_view n) const {
+    return findTransitionsNamed(net_, n, names_);
+  }
 
   static constexpr std::size_t kMaxDepth = 100;  // levels of the formula's tree
   static constexpr const char* kTooDeep = "the formula is nested more than 100 levels deep";
   const Net& net_;
+  const NameExpansion* names_;
   std::vector<Token> t_;
   std::size_t at_ = 0;
   std::size_t depth_ = 0;  // unary() calls under way
@@ -343,14 +349,53 @@ std::string name(std::string_view n) {
   return plain ? std::string(n) : "\"" + std::string(n) + "\"";
 }
 
-std::string sumText(const Net& net, const TokenSum& s) {
+/// `names` with every group that an entry of `table` (when given) lists, all of its members
+/// there, written as that entry's key instead, where its first member stood.
+std::vector<std::string> collapsed(std::vector<std::string> names,
+                                   const std::map<std::string, std::vector<std::string>, std::less<>>* table) {
+  if (!table) return names;
+  std::map<std::string, std::vector<std::size_t>> unused;  // name -> its positions not yet taken
+  for (std::size_t i = names.size(); i-- > 0;) unused[names[i]].push_back(i);
+  std::map<std::size_t, std::string> out;  // position -> what stands there
+  for (const auto& [key, members] : *table) {
+    if (members.empty()) continue;
+    while (true) {
+      std::map<std::string, std::size_t> need;
+      for (const auto& m : members) ++need[m];
+      bool all = true;
+      for (const auto& [m, k] : need) {
+        const auto at = unused.find(m);
+        all = all && at != unused.end() && at->second.size() >= k;
+      }
+      if (!all) break;
+      std::size_t first = names.size();
+      for (const auto& m : members) {
+        first = std::min(first, unused[m].back());
+        unused[m].pop_back();
+      }
+      out[first] = key;
+    }
+  }
+  for (const auto& [n, positions] : unused) {
+    for (const std::size_t i : positions) out[i] = n;
+  }
+  std::vector<std::string> result;
+  for (auto& [i, n] : out) result.push_back(std::move(n));
+  return result;
+}
+
+std::string sumText(const Net& net, const TokenSum& s, const NameExpansion* names) {
   std::string out;
   std::optional<PlaceId> last;
+  std::vector<std::string> places;
   for (PlaceSlotId k : s.slots) {
     const PlaceId p = net.placeSlots()[k].place;
     if (p == last) continue;  // a place's slots were named once, by the place
     last = p;
-    out += (out.empty() ? "" : " + ") + name(net.placeName(p));
+    places.push_back(net.placeName(p));
+  }
+  for (const auto& p : collapsed(std::move(places), names ? &names->places : nullptr)) {
+    out += (out.empty() ? "" : " + ") + name(p);
   }
   if (s.constant != 0 || out.empty()) out += (out.empty() ? "" : " + ") + std::to_string(s.constant);
   return out;
@@ -368,35 +413,81 @@ std::optional<TransitionId> findTransitionNamed(const Net& net, std::string_view
                 [&](std::string& out, TransitionId t) { net.appendTransitionName(out, t); });
 }
 
-std::optional<Formula> parseQuery(const Net& net, std::string_view text, QueryError& error) {
-  Parser p(net, tokenize(text));
+namespace {
+
+/// The entry of `table` called `name`, or else the one whose key ends in "/" + `name`; null
+/// when none or several.
+const std::vector<std::string>* expansionOf(const std::map<std::string, std::vector<std::string>, std::less<>>& table,
+                                            std::string_view name) {
+  if (const auto at = table.find(name); at != table.end()) return &at->second;
+  const std::vector<std::string>* found = nullptr;
+  for (const auto& [key, names] : table) {
+    if (key.size() <= name.size() || !key.ends_with(name) || key[key.size() - name.size() - 1] != '/') continue;
+    if (found) return nullptr;
+    found = &names;
+  }
+  return found;
+}
+
+template <class IdType>
+std::optional<std::vector<IdType>> expanded(const std::map<std::string, std::vector<std::string>, std::less<>>* table,
+                                            std::string_view name, const auto& find, const auto& findOne) {
+  if (const auto* names = table ? expansionOf(*table, name) : nullptr) {
+    std::vector<IdType> out;
+    for (const auto& n : *names) {
+      if (auto id = find(n)) out.push_back(*id);
+    }
+    return out;
+  }
+  if (auto id = findOne(name)) return std::vector<IdType>{*id};
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::vector<PlaceId>> findPlacesNamed(const Net& net, std::string_view name, const NameExpansion* names) {
+  return expanded<PlaceId>(
+      names ? &names->places : nullptr, name, [&](std::string_view n) { return net.findPlace(n); },
+      [&](std::string_view n) { return findPlaceNamed(net, n); });
+}
+
+std::optional<std::vector<TransitionId>> findTransitionsNamed(const Net& net, std::string_view name,
+                                                              const NameExpansion* names) {
+  return expanded<TransitionId>(
+      names ? &names->transitions : nullptr, name, [&](std::string_view n) { return net.findTransition(n); },
+      [&](std::string_view n) { return findTransitionNamed(net, n); });
+}
+
+std::optional<Formula> parseQuery(const Net& net, std::string_view text, QueryError& error, const NameExpansion* names) {
+  Parser p(net, tokenize(text), names);
   auto f = p.whole();
   if (!f) error = p.error;
   return f;
 }
 
-std::string formulaText(const Net& net, const Formula& f) {
+std::string formulaText(const Net& net, const Formula& f, const NameExpansion* names) {
   // an operand in parentheses unless it is one word or a negation
   auto wrap = [&](const Formula& o) {
     // only a conjunction or a disjunction binds looser than what stands before it
     const bool plain = o.kind != FormulaKind::And && o.kind != FormulaKind::Or;
-    return plain ? formulaText(net, o) : "(" + formulaText(net, o) + ")";
+    return plain ? formulaText(net, o, names) : "(" + formulaText(net, o, names) + ")";
   };
-  auto until = [&](const Formula& u) { return formulaText(net, u.operands[0]) + " U " + formulaText(net, u.operands[1]); };
+  auto until = [&](const Formula& u) { return formulaText(net, u.operands[0], names) + " U " + formulaText(net, u.operands[1], names); };
   switch (f.kind) {
     case FormulaKind::True: return "true";
     case FormulaKind::False: return "false";
     case FormulaKind::Deadlock: return "deadlock";
     case FormulaKind::Fireable: {
+      std::vector<std::string> ts;
+      for (const TransitionId t : f.transitions) ts.push_back(net.transitionName(t));
+      ts = collapsed(std::move(ts), names ? &names->transitions : nullptr);
       std::string out = "fireable(";
-      for (std::size_t i = 0; i < f.transitions.size(); ++i) {
-        out += (i ? ", " : "") + name(net.transitionName(f.transitions[i]));
-      }
+      for (std::size_t i = 0; i < ts.size(); ++i) out += (i ? ", " : "") + name(ts[i]);
       return out + ")";
     }
     case FormulaKind::Compare: {
       static constexpr const char* kOps[] = {"<", "<=", "=", "!=", ">=", ">"};
-      return sumText(net, f.left) + " " + kOps[static_cast<int>(f.compare)] + " " + sumText(net, f.right);
+      return sumText(net, f.left, names) + " " + kOps[static_cast<int>(f.compare)] + " " + sumText(net, f.right, names);
     }
     case FormulaKind::Not: return "not " + wrap(f.operands[0]);
     case FormulaKind::And:
@@ -416,14 +507,14 @@ std::string formulaText(const Net& net, const Formula& f) {
                x.kind == FormulaKind::Until;
       };
       const bool ctl = pathOp(path) && path.kind != FormulaKind::Until && !pathOp(path.operands[0]);
-      if (ctl) return q + formulaText(net, path).substr(0, 1) + " " + wrap(path.operands[0]);
-      return q + " (" + formulaText(net, path) + ")";
+      if (ctl) return q + formulaText(net, path, names).substr(0, 1) + " " + wrap(path.operands[0]);
+      return q + " (" + formulaText(net, path, names) + ")";
     }
     case FormulaKind::Next: return "X " + wrap(f.operands[0]);
     case FormulaKind::Future: return "F " + wrap(f.operands[0]);
     case FormulaKind::Globally: return "G " + wrap(f.operands[0]);
     case FormulaKind::Until: return "(" + until(f) + ")";
-    case FormulaKind::Bound: return "bound(" + sumText(net, f.left) + ")";
+    case FormulaKind::Bound: return "bound(" + sumText(net, f.left, names) + ")";
   }
   return {};
 }

@@ -33,9 +33,10 @@ struct Found {
 
 class Reader {
  public:
-  Reader(const Net& net, core::Diagnostics& diags)
+  Reader(const Net& net, core::Diagnostics& diags, const NameExpansion* names)
       : net_(net),
         diags_(diags),
+        names_(names),
         places_(byLastPart(net.placeIds(), [&](PlaceId p) { return net.placeLocalName(p); })),
         transitions_(byLastPart(net.transitionIds(), [&](TransitionId t) { return net.transitionLocalName(t); })) {}
 
@@ -85,6 +86,12 @@ class Reader {
       f.kind = FormulaKind::Fireable;
       for (const auto& c : e.children) {
         if (c->name != "transition") return fail(*c, "<is-fireable> holds <transition> elements, not <" + c->name + ">");
+        if (auto many = expansion(c->text, false)) {
+          for (const std::string& name : *many) {
+            if (auto id = net_.findTransition(name)) f.transitions.push_back(*id);
+          }
+          continue;
+        }
         const auto t = find(net_.findTransition(c->text), transitions_, c->text);
         if (!t.id) return fail(*c, "no transition is called '" + c->text + "'" + (t.shared ? " for certain (two PNML ids share its name)" : ""));
         f.transitions.push_back(*t.id);
@@ -130,11 +137,39 @@ class Reader {
     if (name != id && by.contains(name + "_")) return {std::nullopt, true};  // two ids gave this name
     return {at->second, !at->second};
   }
+  /// What the name expansion lists for PNML id `id` (the place or transition it names, by its
+  /// last part, as gdpn reads the id), or null.
+  const std::vector<std::string>* expansion(const std::string& id, bool place) const {
+    if (!names_) return nullptr;
+    const auto& table = place ? names_->places : names_->transitions;
+    for (const std::string& n : {id, pnmlName(id)}) {
+      if (const auto at = table.find(n); at != table.end()) return &at->second;
+      const std::vector<std::string>* found = nullptr;
+      bool several = false;
+      for (const auto& [key, names] : table) {
+        if (key.size() > n.size() && key.ends_with(n) && key[key.size() - n.size() - 1] == '/') {
+          several = several || found;
+          found = &names;
+        }
+      }
+      if (found && !several) return found;
+    }
+    return nullptr;
+  }
   bool places(const XmlElement& e, TokenSum& out) {
     for (const auto& c : e.children) {
       if (c->name != "place") {
         fail(*c, "<" + e.name + "> holds <place> elements, not <" + c->name + ">");
         return false;
+      }
+      if (auto many = expansion(c->text, true)) {
+        for (const std::string& name : *many) {
+          const auto id = net_.findPlace(name);
+          if (!id) continue;
+          const Place& place = net_.places()[*id];
+          for (auto k = place.slots_begin; k < place.slots_end; ++k) out.slots.emplace_back(k);
+        }
+        continue;
       }
       const auto p = find(net_.findPlace(c->text), places_, c->text);
       if (!p.id) {
@@ -164,6 +199,7 @@ class Reader {
 
   const Net& net_;
   core::Diagnostics& diags_;
+  const NameExpansion* names_;
   std::unordered_map<std::string_view, std::optional<PlaceId>> places_;
   std::unordered_map<std::string_view, std::optional<TransitionId>> transitions_;
 };
@@ -171,14 +207,15 @@ class Reader {
 }  // namespace
 
 std::optional<std::vector<Property>> readMccProperties(const Net& net, const std::string& text,
-                                                       const std::string& file, core::Diagnostics& diags) {
+                                                       const std::string& file, core::Diagnostics& diags,
+                                                       const NameExpansion* names) {
   const auto root = detail::parseXml(text, file, diags);
   if (!root) return std::nullopt;
   if (root->name != "property-set") {
     diags.error(root->loc, "a property file holds a <property-set>, not <" + root->name + ">");
     return std::nullopt;
   }
-  Reader reader(net, diags);
+  Reader reader(net, diags, names);
   std::vector<Property> out;
   bool ok = true;
   for (const auto& p : root->children) {

@@ -207,8 +207,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadPnml{"<pnml><net id=\"n\" type=\"ptnet\"><page id=\"g\"><place id=\"p\"/><transition id=\"t\"/>\n"
                 "  <arc id=\"a\" source=\"p\" target=\"nowhere\"/>\n</page></net></pnml>",
                 "bad.pnml:2:3: error: arc target 'nowhere' names no place or transition"},
-        BadPnml{"<pnml>\n <net id=\"n\" type=\"http://www.pnml.org/version-2009/grammar/symmetricnet\"/></pnml>",
-                "bad.pnml:2:2: error: only place/transition nets (ptnet) are supported"},
+        BadPnml{"<pnml>\n <net id=\"n\" type=\"http://www.pnml.org/version-2009/grammar/hlcorestructure\"/></pnml>",
+                "bad.pnml:2:2: error: only place/transition nets (ptnet) and symmetric nets (symmetricnet) are supported"},
         BadPnml{"<pnml><net id=\"n\" type=\"ptnet\"><page id=\"g\">\n<place id=\"p\"><initialMarking><text>x</text>"
                 "</initialMarking></place></page></net></pnml>",
                 "bad.pnml:2:15: error: an initial marking expects a whole number of tokens, got \"x\""},

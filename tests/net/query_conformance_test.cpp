@@ -27,6 +27,7 @@ namespace {
 
 using testing::conformanceNet;
 using testing::kConformanceDir;
+using testing::answerWord;
 
 std::map<std::string, std::string> oracle() {
   std::map<std::string, std::string> out;
@@ -48,16 +49,6 @@ bool fullSet() {
 /// Whether formula `index` (0 to 15) of a category of `model` is asked: all of them but on the
 /// big nets outside the full set, where every eighth.
 bool asked(const std::string& model, std::size_t index) { return fullSet() || !bigNet(model) || index % 8 == 0; }
-
-std::string word(const QueryAnswer& a) {
-  switch (a.verdict) {
-    case Verdict::True: return "TRUE";
-    case Verdict::False: return "FALSE";
-    case Verdict::Value: return std::to_string(a.value);
-    case Verdict::Unknown: break;
-  }
-  return "UNKNOWN";
-}
 
 /// The markings a lasso passes: the prefix's and then the loop's (the last of them the loop's
 /// start again, left off); where the loop is empty, the dead marking it ends in. The loop starts
@@ -179,7 +170,7 @@ TEST_P(ContestFormulas, EveryAnswerIsTheOracles) {
   for (std::size_t i = 0; i < questions.size(); ++i) {
     const auto at = expected.find(questions[i].id);
     ASSERT_NE(at, expected.end()) << questions[i].id;
-    EXPECT_EQ(word(answers[i]), at->second)
+    EXPECT_EQ(answerWord(answers[i]), at->second)
         << questions[i].id << (ltl[i] ? " (LTL)" : "") << ": " << formulaText(*net, questions[i].formula) << " "
         << answers[i].unsupported;
     if (answers[i].lasso) {
@@ -217,12 +208,12 @@ TEST_P(ContestFormulas, StubbornSetsGiveTheFullSearchsReachabilityAnswers) {
       // the state equation first, as the command line does: where it refutes, the oracle's answer
       ExploreOptions limits;
       const QueryAnswer first = answerQuery(*net, p.formula, limits);
-      EXPECT_EQ(word(first), expected.at(p.id)) << p.id << ": " << formulaText(*net, p.formula) << " " << first.technique;
+      EXPECT_EQ(answerWord(first), expected.at(p.id)) << p.id << ": " << formulaText(*net, p.formula) << " " << first.technique;
       refuted += first.technique == "STATE_EQUATION";
       // the searches themselves
       limits.state_equation = false;
       const QueryAnswer a = answerQuery(*net, p.formula, limits);
-      EXPECT_EQ(word(a), expected.at(p.id)) << p.id << ": " << formulaText(*net, p.formula);
+      EXPECT_EQ(answerWord(a), expected.at(p.id)) << p.id << ": " << formulaText(*net, p.formula);
       if (a.has_marking) {
         // EF q true or AG q false: the marking reached holds q (fails it)
         const Formula* f = &p.formula;
@@ -235,7 +226,7 @@ TEST_P(ContestFormulas, StubbornSetsGiveTheFullSearchsReachabilityAnswers) {
       if (big) continue;
       limits.reduction = false;
       const QueryAnswer full = answerQuery(*net, p.formula, limits);
-      EXPECT_EQ(word(full), expected.at(p.id)) << p.id << " without stubborn sets";
+      EXPECT_EQ(answerWord(full), expected.at(p.id)) << p.id << " without stubborn sets";
       // no marking decides it: the full search sees every marking, the reduced one some of them
       // (where one does, breadth first over fewer transitions may take longer to reach it)
       if (!a.has_marking) {

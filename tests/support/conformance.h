@@ -11,6 +11,8 @@
 
 #include "gdpn/net/compile.h"
 #include "gdpn/net/pnml.h"
+#include "gdpn/net/query.h"
+#include "gdpn/net/unfold.h"
 
 namespace gdpn::testing {
 
@@ -38,6 +40,44 @@ inline std::shared_ptr<const net::Net> conformanceNet(const std::string& model) 
   auto net = net::compile(*spec, diags);
   EXPECT_TRUE(net) << "conformance net " << model << " did not compile:\n" << diags.str();
   return net;
+}
+
+/// An answer in the words of the contest's oracles: TRUE, FALSE, a number, or UNKNOWN.
+inline std::string answerWord(const net::QueryAnswer& a) {
+  switch (a.verdict) {
+    case net::Verdict::True: return "TRUE";
+    case net::Verdict::False: return "FALSE";
+    case net::Verdict::Value: return std::to_string(a.value);
+    case net::Verdict::Unknown: break;
+  }
+  return "UNKNOWN";
+}
+
+/// The folder of the coloured conformance nets (symmetric nets), one folder per model.
+inline const std::filesystem::path kColourConformanceDir =
+    std::filesystem::path(GDPN_SOURCE_DIR) / "tests" / "data" / "conformance-col";
+
+/// A coloured conformance net unfolded and compiled, with the names its coloured places and
+/// transitions stand for.
+struct UnfoldedNet {
+  std::shared_ptr<const net::Net> net;
+  net::NameExpansion names;
+};
+
+/// Coloured conformance net `model` read, unfolded and compiled; a null net after a failed
+/// expectation that names the file and the diagnostics.
+inline UnfoldedNet colourConformanceNet(const std::string& model) {
+  core::Diagnostics diags;
+  const auto file = kColourConformanceDir / model / "model.pnml";
+  auto spec = net::loadPnml(file.string(), diags);
+  EXPECT_TRUE(spec) << "coloured net " << model << " could not be read:\n" << diags.str();
+  if (!spec) return {};
+  auto unfolded = net::unfold(*spec, diags);
+  EXPECT_TRUE(unfolded) << "coloured net " << model << " could not be unfolded:\n" << diags.str();
+  if (!unfolded) return {};
+  auto net = net::compile(unfolded->net, diags);
+  EXPECT_TRUE(net) << "coloured net " << model << " did not compile unfolded:\n" << diags.str();
+  return {net, std::move(unfolded->names)};
 }
 
 }  // namespace gdpn::testing

@@ -92,10 +92,13 @@ struct QueryResult {
 /// The answers as `gdpn analyze --query` prints them: per query its formula, the answer, and
 /// the path and marking that show it, wrapped at 100 columns; a contest property as the
 /// contest's line, `FORMULA <id> TRUE|FALSE|<number> TECHNIQUES <words>` (or `FORMULA <id>
-/// CANNOT_COMPUTE` and why).
-void printQueries(std::ostream& out, const net::Net& net, const std::vector<QueryResult>& results);
-/// The answers as pretty-printed JSON text.
-std::string queriesJson(const net::Net& net, const std::vector<QueryResult>& results);
+/// CANNOT_COMPUTE` and why). With `names` (a coloured net's, unfolded), the places and
+/// transitions it expands are written by their coloured names (net::formulaText).
+void printQueries(std::ostream& out, const net::Net& net, const std::vector<QueryResult>& results,
+                  const net::NameExpansion* names = nullptr);
+/// The answers as pretty-printed JSON text (`names` as for printQueries).
+std::string queriesJson(const net::Net& net, const std::vector<QueryResult>& results,
+                        const net::NameExpansion* names = nullptr);
 /// A witness file: the answer of `result` as queriesJson gives it (with the firing sequence
 /// that shows it, a lasso's cycle and the marking reached), and the model it is for.
 std::string witnessJson(const net::Net& net, const QueryResult& result, const std::string& model_file);

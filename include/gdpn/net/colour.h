@@ -80,6 +80,10 @@ struct ColourSetSpec {
   bool cyclic = false;                  ///< Enum: successor of the last is the first
   std::vector<std::string> components;  ///< Product, Record: the component sets, by name
   std::vector<std::string> fields;      ///< Record: the field names (as many as components)
+  /// Read from PNML: the namedsort's id and each constant's id where they differ from the
+  /// names (empty: the same), so that writing back gives the same ids. Not compared.
+  std::string pnml_id{};
+  std::vector<std::string> constant_pnml_ids{};  ///< per constant, "" where its id is its name
   friend bool operator==(const ColourSetSpec& x, const ColourSetSpec& y) {
     return x.name == y.name && x.kind == y.kind && x.lo == y.lo && x.hi == y.hi && x.range == y.range &&
            x.constants == y.constants && x.cyclic == y.cyclic && x.components == y.components && x.fields == y.fields;
@@ -91,6 +95,7 @@ struct VariableSpec {
   std::string name;    ///< unique among variables, colour sets and enum constants
   std::string colour;  ///< its colour set, by name
   SourceLoc loc;       ///< where it is declared
+  std::string pnml_id{};  ///< read from PNML: the variabledecl's id where it differs from the name. Not compared.
   friend bool operator==(const VariableSpec& x, const VariableSpec& y) {
     return x.name == y.name && x.colour == y.colour;
   }

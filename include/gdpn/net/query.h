@@ -10,6 +10,7 @@
 
 #include "gdpn/core/diagnostics.h"
 #include "gdpn/net/analysis.h"
+#include "gdpn/net/name_expansion.h"
 #include "gdpn/net/net.h"
 
 namespace gdpn::net {
@@ -76,14 +77,23 @@ struct QueryError {
 /// `E [ idle = 1 U busy + done > 2 ]`, `bound(buffer + done)`. Places and transitions are named as in the net
 /// (quoted with "..." where a name is a keyword or holds other characters); a place stands for
 /// the tokens on all its slots. Formulas nest at most 100 levels deep. Nullopt on a mistake,
-/// described in `error`.
-std::optional<Formula> parseQuery(const Net& net, std::string_view text, QueryError& error);
+/// described in `error`. Names that `names` (when given) expands stand for what it lists.
+std::optional<Formula> parseQuery(const Net& net, std::string_view text, QueryError& error,
+                                  const NameExpansion* names = nullptr);
 
 /// The place called `name`, or else the one place whose name ends in "/" + `name` (a name
 /// given without its page's path, or a PNML id); none when none or several.
 std::optional<PlaceId> findPlaceNamed(const Net& net, std::string_view name);
 /// The same for transitions.
 std::optional<TransitionId> findTransitionNamed(const Net& net, std::string_view name);
+
+/// The places `name` stands for: where `names` (when given) expands it (its key called `name`,
+/// or else the one key ending in "/" + `name`), those of the listed places the net has (none
+/// may be all of them); else the one place findPlaceNamed finds. Nullopt when neither.
+std::optional<std::vector<PlaceId>> findPlacesNamed(const Net& net, std::string_view name, const NameExpansion* names);
+/// The same for transitions.
+std::optional<std::vector<TransitionId>> findTransitionsNamed(const Net& net, std::string_view name,
+                                                              const NameExpansion* names);
 
 /// One property of a Model Checking Contest property file.
 struct Property {
@@ -94,12 +104,16 @@ struct Property {
 /// Reads a property file of the Model Checking Contest (its XML property language: CTL, LTL,
 /// reachability formulas and place bounds over the PNML ids of the net's places and
 /// transitions). Mistakes go to `diags` located at their element (file:line:col); nullopt
-/// when there was one.
+/// when there was one. Ids that `names` (when given) expands (a coloured net's, unfolded) stand
+/// for what it lists.
 std::optional<std::vector<Property>> readMccProperties(const Net& net, const std::string& text,
-                                                       const std::string& file, core::Diagnostics& diags);
+                                                       const std::string& file, core::Diagnostics& diags,
+                                                       const NameExpansion* names = nullptr);
 
-/// The formula in the text form, names as in the net.
-std::string formulaText(const Net& net, const Formula& f);
+/// The formula in the text form, names as in the net; where `names` is given, the places (or
+/// transitions) that one of its names stands for, all of them together in a sum (a fireable),
+/// are written as that name.
+std::string formulaText(const Net& net, const Formula& f, const NameExpansion* names = nullptr);
 
 /// True when no path quantifier or path operator lies inside `f`.
 bool isStateFormula(const Formula& f);
