@@ -146,7 +146,7 @@ class Unfolder {
         for (const auto& v : p.values) {
           if (v.slot != c.slot) continue;
           std::vector<std::uint32_t> used;
-          auto e = checked(v, *set, Expect::Multiset, used);
+          auto e = checked(v, *set, Expect::Tokens, used);
           if (!e) continue;
           if (!used.empty()) {
             diags_.error(v.loc, "an initial marking names no variables");
@@ -273,7 +273,7 @@ class Unfolder {
           ok = false;
           continue;
         }
-        auto e = checked(text, vs->set, Expect::Multiset, used);
+        auto e = checked(text, vs->set, Expect::Tokens, used);
         if (!e) {
           ok = false;
           continue;
