@@ -451,13 +451,31 @@ void printSummary(std::ostream& out, const Report& report) {
         << pad(fixed(p->throughput, 3), 13, true) << "\n";
   }
   more(more_places, "place");
-  // value places: what they hold at the end, a line each, cut at 100 columns
+  // value places: what they hold at the end, wrapped at 100 columns between values, at most
+  // four lines a place
   bool values_head = false;
   for (const PlaceFigures* p : places) {
     if (p->final_values.empty()) continue;
     if (!std::exchange(values_head, true)) out << "\nvalues at the end:\n";
-    std::string line = "  " + p->name + ": " + p->final_values;
-    if (line.size() > 100) line = line.substr(0, 96) + " ...";
+    std::string line = "  " + p->name + ":";
+    const std::string indent(4, ' ');
+    int lines = 1;
+    std::size_t from = 0;
+    while (from < p->final_values.size()) {
+      auto next = p->final_values.find(" ++ ", from);
+      const std::string value =
+          p->final_values.substr(from, next == std::string::npos ? std::string::npos : next + 3 - from);
+      from = next == std::string::npos ? p->final_values.size() : next + 4;
+      if (line.size() + 1 + value.size() > 100 && line.size() > indent.size()) {
+        if (++lines > 4) {
+          line += " ... (--report has all)";
+          break;
+        }
+        out << line << "\n";
+        line = indent;
+      }
+      line += (line == indent ? "" : " ") + value;
+    }
     out << line << "\n";
   }
   if (unlisted > 0) {

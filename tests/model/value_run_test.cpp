@@ -58,12 +58,16 @@ TEST(ValueRun, TheDrillNeverTakesJobThreeAndEveryStartIsASkillOfItsMachine) {
   std::string line;
   int starts = 0;
   while (std::getline(lines, line)) {
-    if (line.find("\"transition\":\"main/start\",\"binding\"") == std::string::npos) continue;
+    if (line.find("\"transition\":\"main/load\",\"binding\"") == std::string::npos) continue;
     ++starts;
     EXPECT_EQ(line.find("\"j\":\"{id = 3, kind = plate}\",\"m\":\"drill\""), std::string::npos) << line;
     const bool shaft = line.find("kind = shaft") != std::string::npos, gear = line.find("kind = gear") != std::string::npos;
-    if (shaft) EXPECT_NE(line.find("\"m\":\"lathe\""), std::string::npos) << line;
-    if (gear) EXPECT_NE(line.find("\"m\":\"mill\""), std::string::npos) << line;
+    if (shaft) {
+      EXPECT_NE(line.find("\"m\":\"lathe\""), std::string::npos) << line;
+    }
+    if (gear) {
+      EXPECT_NE(line.find("\"m\":\"mill\""), std::string::npos) << line;
+    }
   }
   EXPECT_GE(starts, 4);
 }
@@ -84,7 +88,7 @@ TEST(ValueRun, TheSameSeedGivesTheSameTraceAndAnotherSeedAnotherOne) {
 }
 
 TEST(ValueRun, ScriptsSeeTheBindingOfTheirOccurrence) {
-  auto sim = fromText(R"(gdpn: 1
+  auto sim = fromText(R"yaml(gdpn: 1
 settings: {dt: 1, until: 3}
 colours:
   N: {range: [1, 9]}
@@ -108,7 +112,7 @@ pages:
     arcs:
       - {from: P, to: T, inscription: "(n, s)"}
       - {from: T, to: Q, inscription: "{id = n + 1, who = s}"}
-)");
+)yaml");
   ASSERT_TRUE(sim);
   std::ostringstream trace;
   sim->traceTo(trace);
