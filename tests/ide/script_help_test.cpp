@@ -72,7 +72,7 @@ TEST_F(ScriptHelp, TypingSimDotOffersTheSimsNamesUnderTheCursorAndTabTakesOne) {
   // self. of a transition: its slot among its names; Down chooses, Enter takes
   r = replayOn(model, start + "- type: 'self.'\n- key: down\n- key: down\n- key: enter\n");
   editor = r["inspector"]["contents"]["editors"]["pre_fire"];
-  EXPECT_EQ(editor["text"], "self.instancey = 2\n") << editor.dump();
+  EXPECT_EQ(editor["text"], "self.elapsedy = 2\n") << editor.dump();  // a0, binding, elapsed
   r = replayOn(model, start + "- type: 'self.'\n");
   const std::vector<std::string> self_names = r["inspector"]["contents"]["editors"]["pre_fire"]["completion"]["names"];
   ASSERT_FALSE(self_names.empty());

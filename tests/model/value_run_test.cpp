@@ -38,7 +38,7 @@ TEST(ValueRun, TheJobShopShipsEveryJobAndReturnsEveryMachine) {
   EXPECT_EQ(place(r, "main/shipped").final_tokens, 4);
   EXPECT_EQ(place(r, "main/shipped").final_values,
             "1'{id = 1, kind = shaft} ++ 1'{id = 2, kind = gear} ++ 1'{id = 3, kind = plate} ++ "
-            "1'{id = 4, kind = shaft}");
+            "1'{id = 4, kind = plate}");
   EXPECT_EQ(place(r, "main/idle").final_values, "1'lathe ++ 1'mill ++ 1'drill");
   EXPECT_EQ(place(r, "main/operators").final_tokens, 2);
   EXPECT_EQ(place(r, "main/waiting").final_values, "empty");
