@@ -110,10 +110,24 @@ class Unfolder {
     // which places arcs reach other than through inscriptions: those keep their own place
     std::set<std::string> plain_ends;
     for (const auto& a : page.arcs) {
-      if (a.inscriptions.empty() || !a.weights.empty() || !a.predicates.empty() || !a.conditions.empty()) {
+      if (!a.weights.empty() || !a.predicates.empty() || !a.conditions.empty()) {
         plain_ends.insert(a.from);
         plain_ends.insert(a.to);
       }
+    }
+    // an arc with neither inscriptions nor weights acts on a0: not a value slot
+    std::set<std::string> value_a0;
+    for (const auto& p : page.places) {
+      for (const auto& c : p.colours) {
+        if (c.slot == kDefaultSlot) value_a0.insert(p.name);
+      }
+    }
+    for (const auto& a : page.arcs) {
+      if (!a.inscriptions.empty() || !a.weights.empty()) continue;
+      const std::string& place = value_a0.count(a.from) ? a.from : a.to;
+      if (!value_a0.count(place)) continue;
+      diags_.error(a.loc, "the arc between '" + a.from + "' and '" + a.to + "' reaches value slot a0 of place '" +
+                              place + "' and has no inscription");
     }
 
     // ---- places
@@ -206,19 +220,6 @@ class Unfolder {
         if ((a.from == t.name || a.to == t.name) && !a.inscriptions.empty()) is_coloured = true;
       }
       if (is_coloured) coloured_transitions.insert(t.name);
-    }
-    // arcs of uncoloured transitions stay as they are, but not on a value slot
-    for (const auto& a : page.arcs) {
-      const bool from_t = coloured_transitions.count(a.from) > 0, to_t = coloured_transitions.count(a.to) > 0;
-      if (from_t || to_t) continue;
-      const std::string& place = place_names.count(a.from) ? a.from : a.to;
-      const auto cp = coloured.find(place);
-      if (!a.inscriptions.empty()) {
-        diags_.error(a.loc, "arc inscription on an arc whose transition is not coloured");  // unreachable
-      } else if (cp != coloured.end() && !cp->second.kept) {
-        diags_.error(a.loc, "the arc between '" + a.from + "' and '" + a.to + "' reaches value slots of place '" +
-                                place + "' and has no inscription");
-      }
     }
     for (auto& t : page.transitions) {
       if (!coloured_transitions.count(t.name)) {
