@@ -193,9 +193,12 @@ class Unfolder {
       std::erase_if(rest.kinds, [&](const SlotDecl& d) {
         return std::any_of(p.colours.begin(), p.colours.end(), [&](const SlotText& c) { return c.slot == d.slot; });
       });
-      std::erase_if(rest.capacity, [&](const SlotCount& d) {
-        return std::any_of(p.colours.begin(), p.colours.end(), [&](const SlotText& c) { return c.slot == d.slot; });
-      });
+      for (const auto& cap : p.capacity) {
+        if (std::any_of(p.colours.begin(), p.colours.end(), [&](const SlotText& c) { return c.slot == cap.slot; })) {
+          diags_.error(cap.loc, "place '" + p.name + "' has a capacity on value slot " + slotName(cap.slot) +
+                                    ", which unfolding does not carry over yet");
+        }
+      }
       cp.kept = rest.declares() || plain_ends.count(p.name) > 0;
       auto& list = names.places[prefix + p.name];
       if (cp.kept) {
@@ -331,6 +334,13 @@ class Unfolder {
       for (std::size_t k = 0; k < inscribed.size(); ++k) {
         const ArcSpec& a = page.arcs[inscribed[k].arc];
         const bool input = a.to == t.name;
+        if (ti.arcs[k].role == ArcRole::Inhibit && b.arcs[k].size() > 1) {
+          // it inhibits only while the place holds all of it; unfolded, each value would alone
+          diags_.error(a.loc, "the inhibitor arc from '" + a.from + "' inhibits with several values at once (" +
+                                  colours_.text(inscribed[k].slot->set, b.arcs[k]) +
+                                  "), which place/transition arcs cannot say: it cannot be unfolded");
+          return;
+        }
         for (const auto& [value, n] : b.arcs[k]) {
           const auto& vals = inscribed[k].slot->values;
           const auto at = std::lower_bound(vals.begin(), vals.end(), value);

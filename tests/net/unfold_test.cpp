@@ -175,6 +175,14 @@ TEST(Unfold, WhatCannotBeUnfoldedIsRefusedWhereItIsWritten) {
                                "place 'Eat' and has no inscription"),
             std::string::npos)
       << refusal(spec);
+  // an inhibitor arc of two values at once: the coloured arc inhibits only where both are there
+  spec = philosophers();
+  spec.pages[0].arcs[1].kind = ArcKind::Inhibitor;
+  spec.pages[0].arcs[1].loc = at;
+  EXPECT_NE(refusal(spec).find("m.gdpn.yaml:7:9: error: the inhibitor arc from 'Fork' inhibits with several values at "
+                               "once (1'p1 ++ 1'p2), which place/transition arcs cannot say"),
+            std::string::npos)
+      << refusal(spec);
   // a mistake in an inscription, where it stands
   spec = philosophers();
   spec.pages[0].arcs[0].inscriptions[0] = {kDefaultSlot, "y", at};
