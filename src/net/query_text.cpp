@@ -354,8 +354,10 @@ std::string name(std::string_view n) {
 std::vector<std::string> collapsed(std::vector<std::string> names,
                                    const std::map<std::string, std::vector<std::string>, std::less<>>* table) {
   if (!table) return names;
-  std::map<std::string, std::vector<std::size_t>> unused;  // name -> its positions not yet taken
-  for (std::size_t i = names.size(); i-- > 0;) unused[names[i]].push_back(i);
+  // name -> its positions not yet taken; a group takes its members' last ones, so that a
+  // member also named on its own keeps its place before the group
+  std::map<std::string, std::vector<std::size_t>> unused;
+  for (std::size_t i = 0; i < names.size(); ++i) unused[names[i]].push_back(i);
   std::map<std::size_t, std::string> out;  // position -> what stands there
   for (const auto& [key, members] : *table) {
     if (members.empty()) continue;

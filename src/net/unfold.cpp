@@ -93,11 +93,13 @@ class Unfolder {
     return base;
   }
 
+  /// `t` parsed and checked; where it is not, a note quotes it (a PNML term's text is not in
+  /// the file as such: its line is the label's).
   std::optional<Expr> checked(const SlotText& t, ColourId set, Expect what, std::vector<std::uint32_t>& used) {
     auto e = parseInscription(t.text, t.loc, diags_);
-    if (!e) return std::nullopt;
-    if (!checkInscription(*e, set, what, scope_, used, diags_)) return std::nullopt;
-    return e;
+    if (e && checkInscription(*e, set, what, scope_, used, diags_)) return e;
+    diags_.note(t.loc, "in the inscription '" + t.text + "'");
+    return std::nullopt;
   }
 
   void unfoldPage(PageSpec& page, NameExpansion& names) {
@@ -110,10 +112,24 @@ class Unfolder {
     // which places arcs reach other than through inscriptions: those keep their own place
     std::set<std::string> plain_ends;
     for (const auto& a : page.arcs) {
-      if (a.inscriptions.empty() || !a.weights.empty() || !a.predicates.empty() || !a.conditions.empty()) {
+      if (!a.weights.empty() || !a.predicates.empty() || !a.conditions.empty()) {
         plain_ends.insert(a.from);
         plain_ends.insert(a.to);
       }
+    }
+    // an arc with neither inscriptions nor weights acts on a0: not a value slot
+    std::set<std::string> value_a0;
+    for (const auto& p : page.places) {
+      for (const auto& c : p.colours) {
+        if (c.slot == kDefaultSlot) value_a0.insert(p.name);
+      }
+    }
+    for (const auto& a : page.arcs) {
+      if (!a.inscriptions.empty() || !a.weights.empty()) continue;
+      const std::string& place = value_a0.count(a.from) ? a.from : a.to;
+      if (!value_a0.count(place)) continue;
+      diags_.error(a.loc, "the arc between '" + a.from + "' and '" + a.to + "' reaches value slot a0 of place '" +
+                              place + "' and has no inscription");
     }
 
     // ---- places
@@ -179,9 +195,12 @@ class Unfolder {
       std::erase_if(rest.kinds, [&](const SlotDecl& d) {
         return std::any_of(p.colours.begin(), p.colours.end(), [&](const SlotText& c) { return c.slot == d.slot; });
       });
-      std::erase_if(rest.capacity, [&](const SlotCount& d) {
-        return std::any_of(p.colours.begin(), p.colours.end(), [&](const SlotText& c) { return c.slot == d.slot; });
-      });
+      for (const auto& cap : p.capacity) {
+        if (std::any_of(p.colours.begin(), p.colours.end(), [&](const SlotText& c) { return c.slot == cap.slot; })) {
+          diags_.error(cap.loc, "place '" + p.name + "' has a capacity on value slot " + slotName(cap.slot) +
+                                    ", which unfolding does not carry over yet");
+        }
+      }
       cp.kept = rest.declares() || plain_ends.count(p.name) > 0;
       auto& list = names.places[prefix + p.name];
       if (cp.kept) {
@@ -206,19 +225,6 @@ class Unfolder {
         if ((a.from == t.name || a.to == t.name) && !a.inscriptions.empty()) is_coloured = true;
       }
       if (is_coloured) coloured_transitions.insert(t.name);
-    }
-    // arcs of uncoloured transitions stay as they are, but not on a value slot
-    for (const auto& a : page.arcs) {
-      const bool from_t = coloured_transitions.count(a.from) > 0, to_t = coloured_transitions.count(a.to) > 0;
-      if (from_t || to_t) continue;
-      const std::string& place = place_names.count(a.from) ? a.from : a.to;
-      const auto cp = coloured.find(place);
-      if (!a.inscriptions.empty()) {
-        diags_.error(a.loc, "arc inscription on an arc whose transition is not coloured");  // unreachable
-      } else if (cp != coloured.end() && !cp->second.kept) {
-        diags_.error(a.loc, "the arc between '" + a.from + "' and '" + a.to + "' reaches value slots of place '" +
-                                place + "' and has no inscription");
-      }
     }
     for (auto& t : page.transitions) {
       if (!coloured_transitions.count(t.name)) {
@@ -330,6 +336,13 @@ class Unfolder {
       for (std::size_t k = 0; k < inscribed.size(); ++k) {
         const ArcSpec& a = page.arcs[inscribed[k].arc];
         const bool input = a.to == t.name;
+        if (ti.arcs[k].role == ArcRole::Inhibit && b.arcs[k].size() > 1) {
+          // it inhibits only while the place holds all of it; unfolded, each value would alone
+          diags_.error(a.loc, "the inhibitor arc from '" + a.from + "' inhibits with several values at once (" +
+                                  colours_.text(inscribed[k].slot->set, b.arcs[k]) +
+                                  "), which place/transition arcs cannot say: it cannot be unfolded");
+          return;
+        }
         for (const auto& [value, n] : b.arcs[k]) {
           const auto& vals = inscribed[k].slot->values;
           const auto at = std::lower_bound(vals.begin(), vals.end(), value);

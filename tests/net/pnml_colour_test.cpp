@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "gdpn/net/pnml.h"
+#include "gdpn/net/unfold.h"
 
 namespace gdpn::net {
 namespace {
@@ -226,6 +227,26 @@ TEST(PnmlSymmetric, WhatASymmetricNetCannotHoldIsRefused) {
   EXPECT_FALSE(writePnml(spec, why));
   EXPECT_EQ(why, "the inscription '1 + 2' of place 'p' is no term of a symmetric net: column 1: an operator a "
                  "symmetric net has no term for");
+}
+
+TEST(PnmlSymmetric, ATermOfTheWrongSortIsReportedAtItsLabelWhenUnfolded) {
+  // Go holds dots; the arc from it takes a philosopher
+  std::string page = kPage;
+  const std::string from = "<arc id=\"a3\" source=\"Go\" target=\"T\"><hlinscription><structure><numberof>"
+                           "<subterm><numberconstant value=\"1\"><positive/></numberconstant></subterm>"
+                           "<subterm><dotconstant/></subterm>";
+  ASSERT_NE(page.find(from), std::string::npos);
+  page.replace(page.find(from), from.size(),
+               "<arc id=\"a3\" source=\"Go\" target=\"T\">\n<hlinscription><structure><numberof>"
+               "<subterm><numberconstant value=\"1\"><positive/></numberconstant></subterm>"
+               "<subterm><variable refvariable=\"varx\"/></subterm>");
+  core::Diagnostics diags;
+  const auto spec = parsePnml(symmetric(kDecls, page), "s.pnml", diags);
+  ASSERT_TRUE(spec) << diags.str();
+  EXPECT_FALSE(unfold(*spec, diags));
+  // the arc's label starts line 15 (the page on line 5, the arc on line 14); its text is 1'x
+  EXPECT_NE(diags.str().find("s.pnml:15:3: error: expected Dot, found Philo"), std::string::npos) << diags.str();
+  EXPECT_NE(diags.str().find("s.pnml:15:1: note: in the inscription '1'x'"), std::string::npos) << diags.str();
 }
 
 /// The first line of the diagnostics of reading `text` (which must fail) as "s.pnml".
