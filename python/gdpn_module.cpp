@@ -383,7 +383,12 @@ class Model {
   /// formula, its answer; with a list of them, their answers (as `gdpn analyze --query --json`).
   /// Its limits are gdpn analyze's, the memory guard included (max_memory_mib 0).
   py::object analyze(const py::object& query, std::uint64_t max_states, double max_memory_mib, double time_limit) {
-    const net::Net& net = session_->simulation().net();
+    // the net gdpn analyze reads: the model's, unfolded when it has value tokens
+    core::Diagnostics read;
+    const auto analysed = session::analysedNet(session_->simulation().model().net, read);
+    if (!analysed) raiseModelError(read);
+    const net::Net& net = *analysed->net;
+    const net::NameExpansion* names = analysed->expansion();
     const session::AnalysisRequest request = analysisRequest(max_states, max_memory_mib, time_limit);
     auto loads = py::module_::import("json").attr("loads");
     if (query.is_none()) {
@@ -404,7 +409,7 @@ class Model {
     std::vector<net::Formula> formulas;
     for (std::size_t i = 0; i < texts.size(); ++i) {
       net::QueryError error;
-      auto f = net::parseQuery(net, texts[i], error);
+      auto f = net::parseQuery(net, texts[i], error, names);
       if (!f) {
         core::Diagnostics diags;
         diags.error({"query " + std::to_string(i + 1), 1, static_cast<int>(error.column)}, error.message);
@@ -419,7 +424,7 @@ class Model {
       answers = session::answerQueries(net, formulas, request);
     }
     for (std::size_t i = 0; i < answers.size(); ++i) results[i].answer = std::move(answers[i]);
-    py::list out = loads(model::queriesJson(net, results))["queries"];
+    py::list out = loads(model::queriesJson(net, results, names))["queries"];
     return one ? out[0] : py::object(out);
   }
 

@@ -127,20 +127,12 @@ int analyze(AnalyzeArgs a) {
     }
   }
   // a coloured net is analysed unfolded; queries name its places and transitions as written
-  std::optional<gdpn::net::NameExpansion> names;
-  if (spec && gdpn::net::coloured(*spec)) {
-    auto unfolded = gdpn::net::unfold(*spec, diags);
-    spec.reset();
-    if (unfolded) {
-      spec = std::move(unfolded->net);
-      names = std::move(unfolded->names);
-    }
-  }
-  const gdpn::net::NameExpansion* expansion = names ? &*names : nullptr;
-  std::shared_ptr<const gdpn::net::Net> net;
-  if (spec) net = gdpn::net::compile(*spec, diags);
+  std::optional<session::AnalysedNet> analysed;
+  if (spec) analysed = session::analysedNet(*spec, diags);
   diags.print(std::cerr);
-  if (!net) return 1;
+  if (!analysed) return 1;
+  const gdpn::net::NameExpansion* expansion = analysed->expansion();
+  const std::shared_ptr<const gdpn::net::Net> net = analysed->net;
   if (!a.graph.empty()) {
     // the graph alone, written beside its file and renamed into place when complete
     const bool dot = a.graph.ends_with(".dot"), aut = a.graph.ends_with(".aut");

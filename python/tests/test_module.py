@@ -346,3 +346,18 @@ def test_signals_are_a_dataframe_of_the_falling_ball(source):
     with pytest.raises(gdpn.ModelError) as info:
         gdpn.load(str(source / "tests/data/good/falling_ball.gdpn.yaml"), signals=["node:drop/ball.angle"])
     assert "'drop/ball' is no joint: it has no angle" in info.value.args[0]
+
+
+def test_a_coloured_model_shows_its_values_and_is_analysed_unfolded(source):
+    # value tokens (semantics.md, Value tokens): the marking is each value with its count, and
+    # the analysis is gdpn analyze's, on the unfolded net, naming the places as written
+    model = gdpn.load(str(source / "examples/coloured/job_shop"))
+    assert model.marking("main/idle") == {"lathe": 1, "mill": 1, "drill": 1}
+    assert model.marking("main/operators") == 2
+    model.run(until=120)
+    assert model.marking("main/waiting") == {}
+    assert list(model.marking("main/shipped").values()) == [1, 1, 1, 1]
+    answers = model.analyze(["AG operators + loaded <= 2", "bound(idle)", "EF shipped >= 4"])
+    assert [a["answer"] for a in answers] == ["true", 3, "true"]
+    assert answers[0]["formula"] == "AG main/operators + main/loaded <= 2"
+    assert model.analyze()["states"] == 270

@@ -4,6 +4,8 @@
 #include <cstdio>
 
 #include "gdpn/core/memory.h"
+#include "gdpn/net/compile.h"
+#include "gdpn/net/unfold.h"
 
 namespace gdpn::session {
 
@@ -42,6 +44,20 @@ std::string AnalysisAnswer::guardNote(std::string_view option) const {
   char mib[32];
   std::snprintf(mib, sizeof mib, "%.0f", static_cast<double>(max_bytes) / (1024.0 * 1024.0));
   return "stopped at the default " + std::string(option) + ", 3/4 of the memory available at the start (" + mib + " MiB)";
+}
+
+std::optional<AnalysedNet> analysedNet(const net::NetSpec& spec, core::Diagnostics& diags) {
+  AnalysedNet out;
+  if (net::coloured(spec)) {
+    auto unfolded = net::unfold(spec, diags);
+    if (!unfolded) return std::nullopt;
+    out.net = net::compile(unfolded->net, diags);
+    out.names = std::move(unfolded->names);
+  } else {
+    out.net = net::compile(spec, diags);
+  }
+  if (!out.net) return std::nullopt;
+  return out;
 }
 
 AnalysisAnswer analyze(const net::Net& net, std::string path, const AnalysisRequest& request) {

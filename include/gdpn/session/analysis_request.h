@@ -6,6 +6,8 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -14,6 +16,7 @@
 #include "gdpn/model/analysis.h"
 #include "gdpn/net/analysis.h"
 #include "gdpn/net/graph_export.h"
+#include "gdpn/net/name_expansion.h"
 #include "gdpn/net/query.h"
 
 namespace gdpn::session {
@@ -58,6 +61,19 @@ struct AnalysisAnswer {
   /// "stopped at the default --max-memory, 3/4 of the memory available at the start (N MiB)".
   [[nodiscard]] std::string guardNote(std::string_view option) const;
 };
+
+/// The net an analysis reads, and how a coloured net's names map onto it.
+struct AnalysedNet {
+  std::shared_ptr<const net::Net> net;       ///< compiled; a coloured net unfolded first
+  std::optional<net::NameExpansion> names;   ///< a coloured net's: its places and transitions -> the unfolded ones
+  /// The expansion for the query parsers and printers (null for a net without colours).
+  [[nodiscard]] const net::NameExpansion* expansion() const { return names ? &*names : nullptr; }
+};
+
+/// What every face analyses of `spec`: the spec compiled, or, when it has colours (value
+/// tokens), unfolded into a place/transition net first (semantics: *Value tokens*). Nullopt
+/// after mistakes, in `diags`.
+[[nodiscard]] std::optional<AnalysedNet> analysedNet(const net::NetSpec& spec, core::Diagnostics& diags);
 
 /// The analysis of `net` (read from `path`) under `request`.
 [[nodiscard]] AnalysisAnswer analyze(const net::Net& net, std::string path, const AnalysisRequest& request);
