@@ -329,6 +329,18 @@ std::optional<net::SlotText> readInscription(const YAML::Node& node, const Sourc
     return source.loc(at[offset]);
   };
   net::SlotText out{slot, *text, fileLoc({mark.file, 1, 1})};
+  // where its characters stand, kept where they do not simply follow its first one, so that
+  // the compiler's messages (types) are at their character too
+  if (located) {
+    bool plain = true;
+    std::vector<std::pair<int, int>> layout;
+    for (std::size_t i = 0; i <= text->size(); ++i) {
+      const SourceLoc c = source.loc(at[std::min(i, at.size() - 1)]);
+      layout.emplace_back(c.line, c.column);
+      plain = plain && c.line == out.loc.line && c.column == out.loc.column + static_cast<int>(i);
+    }
+    if (!plain) out.layout = std::move(layout);
+  }
   // parse it now, so that a syntax error is said at load, at its character
   core::Diagnostics found;
   (void)net::parseInscription(*text, {mark.file, 1, 1}, found);

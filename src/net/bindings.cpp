@@ -322,6 +322,19 @@ std::string unboundVariable(const TransitionInscriptions& t, const Colours& colo
              ") is bound by no input arc and its colour set is not finite";
     }
   }
+  // the free variables' combinations: each is tried whenever the transition is
+  std::int64_t combinations = 1;
+  std::string free;
+  for (std::size_t i = 0; i < t.variables.size(); ++i) {
+    if (matched[i]) continue;
+    const auto size = *colours.at(i < t.sets.size() ? t.sets[i] : Colours::kDot).size;
+    free += (free.empty() ? "'" : ", '") + t.variables[i] + "'";
+    combinations = size != 0 && combinations > kMostValues / size ? kMostValues + 1 : combinations * size;
+  }
+  if (combinations > kMostValues) {
+    return "variables " + free + " are bound by no input arc, and enumerating their values would try more than " +
+           std::to_string(kMostValues) + " bindings each time: bind them on an input arc";
+  }
   return {};
 }
 

@@ -3,6 +3,7 @@
 
 #include "gdpn/net/colour.h"
 
+#include <algorithm>
 #include <limits>
 #include <set>
 
@@ -191,6 +192,17 @@ bool Colours::declare(const std::vector<ColourSetSpec>& specs, core::Diagnostics
         break;
       }
     }
+    // products of products: the evaluator and the printer recurse as deep
+    int depth = 1;
+    for (const ColourId c : s.components) depth = std::max(depth, depthOf(c) + 1);
+    if (depth > kMostNesting) {
+      error(spec.loc, what + " nests products and records " + std::to_string(depth) + " deep, more than " +
+                          std::to_string(kMostNesting));
+      s.components.assign(s.components.size(), kDot);
+      depth = 2;
+    }
+    depth_.resize(sets_.size(), 1);
+    depth_.push_back(depth);
     const auto id = static_cast<ColourId>(sets_.size());
     if (!by_name_.contains(s.name)) by_name_.emplace(s.name, id);
     if (s.kind == ColourKind::Enum) {

@@ -356,7 +356,7 @@ class Compiler {
       const std::uint64_t key = place.what == End::What::Place
                                     ? place.index
                                     : (std::uint64_t{place.instance} + 1) << 32 | place.index;
-      forEachWeight(a, [&](SlotId slot, std::int64_t, const SourceLoc&) {
+      forEachSlotMoved(a, [&](SlotId slot, std::int64_t, const SourceLoc&) {
         uses.push_back({(output ? from : to).index, Use{key, i, slot, output}});
         ++begin[uses.back().first + 1];
       });
@@ -389,7 +389,8 @@ class Compiler {
     for (const auto& [second, first, slot] : found) {
       const auto& a = page.arcs[second];
       diags_.error(a.loc, "a second arc from '" + page.name + "/" + a.from + "' to '" + page.name + "/" + a.to +
-                              "' on slot " + slotName(slot) + ": give one arc the sum of their weights");
+                              "' on slot " + slotName(slot) + ": give one arc the sum of their " +
+                              (a.inscriptions.empty() ? "weights" : "inscriptions (x ++ y)"));
       diags_.note(page.arcs[first].loc, "the first arc is here");
     }
   }
@@ -630,12 +631,13 @@ class Compiler {
     std::set<std::pair<const ArcSpec*, const ArcSpec*>> told;
     for (const auto& a : arcs_) {
       if (!fused_[a.place] || (!a.output && a.spec->kind != ArcKind::Normal)) continue;
-      forEachWeight(*a.spec, [&](SlotId slot, std::int64_t, const SourceLoc&) {
+      forEachSlotMoved(*a.spec, [&](SlotId slot, std::int64_t, const SourceLoc&) {
         const auto [it, fresh] = first.try_emplace({a.transition, a.place, slot, a.output}, a.spec);
         if (fresh || !told.emplace(it->second, a.spec).second) return;
         diags_.error(a.spec->loc, "a second arc between transition '" + transitionName(a.transition) +
                                       "' and fusion place '" + placeName(a.place) + "' on slot " + slotName(slot) +
-                                      " (through another member of its set): give one arc the sum of their weights");
+                                      " (through another member of its set): give one arc the sum of their " +
+                                      (a.spec->inscriptions.empty() ? "weights" : "inscriptions (x ++ y)"));
         diags_.note(it->second->loc, "the first arc is here");
       });
     }
@@ -664,6 +666,14 @@ class Compiler {
     } else {
       f(kDefaultSlot, std::int64_t{1}, a.loc);
     }
+  }
+
+  /// forEachWeight, and then each slot the arc's inscriptions move values on (tokens 0: how many
+  /// depends on the binding).
+  template <class F>
+  static void forEachSlotMoved(const ArcSpec& a, F&& f) {
+    forEachWeight(a, f);
+    for (const auto& i : a.inscriptions) f(i.slot, std::int64_t{0}, i.loc);
   }
 
   /// Numbers the slots that any arc or place names, densely.
@@ -877,15 +887,19 @@ class Compiler {
         builder_.setSlot(a.place, slot, kind, capacityFor(a.place, slot), initialFor(a.place, slot));
       });
       for (const auto& ins : a.spec->inscriptions) {
-        // the count the kernel checks first: the least the inscription can ask for (an
-        // inhibitor's count never holds the transition back: its values decide)
-        bool fixed = true;
-        const std::int64_t least = leastSize(*arc_exprs_[next_inscription++], &fixed);
+        // the counts the kernel checks first: an input's, the least its inscription takes or
+        // needs; an output's, what it puts where every inscription of the transition moves a
+        // fixed number (else 0: the binding's counts decide the room, rule 4, as a self-loop
+        // taking more than the least would otherwise find none); an inhibitor's, none (a test
+        // of 0 tokens: its values decide)
+        const std::size_t k = next_inscription++;
         const bool inhibits = a.spec->kind == ArcKind::Inhibitor && !a.output;
-        if (!inhibits) colouring_.counts_exact = colouring_.counts_exact && fixed;
-        const auto weight = static_cast<std::int32_t>(std::min<std::int64_t>(inhibits ? kMaxWeight : least, kMaxWeight));
+        const std::int64_t count = inhibits ? 0
+                                   : a.output && !fixed_[a.transition] ? 0
+                                                                       : least_[k];
+        const auto weight = static_cast<std::int32_t>(std::min<std::int64_t>(count, kMaxWeight));
         if (a.output) builder_.addOutput(a.transition, a.place, ins.slot, weight);
-        else builder_.addInput(a.place, a.transition, ins.slot, weight, a.spec->kind);
+        else builder_.addInput(a.place, a.transition, ins.slot, weight, inhibits ? ArcKind::Test : a.spec->kind);
         colour_arcs[static_cast<std::size_t>(colouring_.of_transition[a.transition])].push_back(added[a.transition]++);
       }
     }
@@ -948,7 +962,7 @@ class Compiler {
     auto [it, fresh] = parsed_.try_emplace(&text);
     if (fresh) {
       core::Diagnostics found;
-      it->second = parseInscription(text.text, text.loc, found);
+      it->second = parseInscription(text, found);
       tell(found);
     }
     return it->second;
@@ -1101,6 +1115,35 @@ class Compiler {
         arc_exprs_.push_back(&colouring_.transitions[c].arcs[next[c]++].expr);
       }
     }
+    // what each inscription moves at least, whether always that, per transition whether all
+    // its inscriptions move fixed numbers; and a transition of unlimited servers must take
+    // something in every binding
+    fixed_.assign(transitions_.size(), true);
+    std::vector<bool> takes(transitions_.size(), false);
+    for (const auto& a : arcs_) {
+      if (!a.output && a.spec->kind == ArcKind::Normal && a.spec->inscriptions.empty()) takes[a.transition] = true;
+    }
+    std::size_t k = 0;
+    for (const auto& a : arcs_) {
+      for (std::size_t i = 0; i < a.spec->inscriptions.size(); ++i, ++k) {
+        bool fixed = true;
+        least_.push_back(diags_.hasErrors() ? 0 : leastSize(*arc_exprs_[k], &fixed));
+        const bool inhibits = a.spec->kind == ArcKind::Inhibitor && !a.output;
+        if (inhibits) continue;
+        fixed_[a.transition] = fixed_[a.transition] && fixed;
+        colouring_.counts_exact = colouring_.counts_exact && fixed;
+        if (!a.output && a.spec->kind == ArcKind::Normal && least_.back() > 0) takes[a.transition] = true;
+      }
+    }
+    for (TransitionId t{0}; t < transitions_.size(); ++t) {
+      const auto& spec = *transitions_[t].spec;
+      if (spec.servers != kUnlimitedServers || takes[t] || colouring_.of_transition[t] < 0) continue;
+      core::Diagnostics found;
+      found.error(spec.servers_loc, "transition '" + transitionName(t) +
+                                        "' has unlimited servers, but some binding takes no tokens (its inscriptions "
+                                        "can take none): it would start without end in one step");
+      tell(found);
+    }
     for (std::size_t c = 0; c < colouring_.transitions.size(); ++c) {
       const TransitionId t = colouring_.transition_ids[c];
       auto& ti = colouring_.transitions[c];
@@ -1156,6 +1199,8 @@ class Compiler {
   std::map<std::pair<std::uint32_t, SlotId>, ColourId> slot_sets_;  // (flat place, slot) -> its set
   std::unordered_map<const SlotText*, std::optional<Expr>> parsed_;
   std::vector<const Expr*> arc_exprs_;  // the checked inscriptions, in the order emit() adds their terms
+  std::vector<std::int64_t> least_;      // per inscription (same order): the fewest tokens it moves
+  std::vector<bool> fixed_;              // per transition: every inscription of it moves a fixed number
   std::map<std::pair<std::uint32_t, SlotId>, Multiset> initial_;  // (flat place, slot) -> its initial values
 };
 

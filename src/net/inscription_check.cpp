@@ -358,6 +358,10 @@ class Checker {
     }
     if (!s) return fail(e, "'all' takes its colour set from its place here: write all(Set)");
     if (!set(*s).size) return fail(e, "'all' needs a finite colour set: " + nameOf(*s) + " is not");
+    if (*set(*s).size > kMostValues) {
+      return fail(e, "'all' of " + nameOf(*s) + " would be " + std::to_string(*set(*s).size) + " values, more than " +
+                         std::to_string(kMostValues) + " (a range that large is for values bound by arcs)");
+    }
     return many(e, w, *s);
   }
   // empty: the context says of what

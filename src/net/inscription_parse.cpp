@@ -671,6 +671,27 @@ std::optional<Expr> parseInscription(std::string_view text, const SourceLoc& at,
   }
 }
 
+namespace {
+void relocate(Expr& e, const SlotText& text) {
+  e.loc = text.where(e.loc);
+  for (auto& a : e.args) relocate(a, text);
+}
+}  // namespace
+
+std::optional<Expr> parseInscription(const SlotText& text, core::Diagnostics& diags) {
+  core::Diagnostics found;
+  auto e = parseInscription(text.text, SourceLoc{text.loc.file, 1, 1}, found);
+  for (const auto& d : found.all()) {
+    switch (d.severity) {
+      case core::Severity::Error: diags.error(text.where(d.loc), d.message); break;
+      case core::Severity::Warning: diags.warning(text.where(d.loc), d.message); break;
+      case core::Severity::Note: diags.note(text.where(d.loc), d.message); break;
+    }
+  }
+  if (e) relocate(*e, text);
+  return e;
+}
+
 std::string inscriptionText(const Expr& e, const Colours& colours, const std::vector<std::string>* names) {
   Printer p(colours, names);
   p.write(e, kIf);

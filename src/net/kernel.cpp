@@ -376,13 +376,23 @@ bool Kernel::selectBinding(TransitionId t) {
   return true;
 }
 
+bool Kernel::onlyUnbound() const {
+  // the coloured transitions alone can be held so; count those that are
+  if (enabled_count_ > colouring_->transition_ids.size() || verdict_.empty()) return false;
+  std::size_t unbound = 0;
+  for (const TransitionId t : colouring_->transition_ids) {
+    if (tr_[t].unsat == 0 && verdict_[t] == static_cast<std::uint8_t>(Readiness::NoBinding)) ++unbound;
+  }
+  return unbound == enabled_count_;
+}
+
 const Multiset& Kernel::values(PlaceSlotId ps) const {
   static const Multiset kNone;
   return values_.empty() ? kNone : values_[ps];
 }
 
 const BoundOccurrence* Kernel::binding(TransitionId t) const {
-  if (bound_.empty() || !colouring_ || !colouring_->of(t)) return nullptr;
+  if (bound_.empty() || !colouring_ || !colouring_->of(t) || colouring_->of(t)->variables.empty()) return nullptr;
   Entry e = t;
   if (tr_[t].multi) {
     const Occurrence* o = currentOccurrence(t);
@@ -607,7 +617,9 @@ void Kernel::beginAs(TransitionId t) {
   if (colouring_ && colouring_->of(t)) {
     auto& b = bound_[entry] = std::move(bound_next_);
     bound = &b;
-    for (auto* o : observers_) o->onBinding(t, b.binding, steps());
+    if (!b.binding.empty()) {
+      for (auto* o : observers_) o->onBinding(t, b.binding, steps());
+    }
   }
 
   // take the inputs (node tokens move into the transition, FIFO), then reserve the outputs;
@@ -713,19 +725,15 @@ void Kernel::finishAs(Entry e) {
     hooks_->postFire(t);
     current_ = outer;
   }
-  BoundOccurrence bound;
+  // the occurrence's binding: kept until its deposits (and their scripts) are done
   const bool coloured = !bound_.empty() && colouring_->of(t);
-  if (coloured) {
-    auto it = bound_.find(e);
-    bound = std::move(it->second);
-    bound_.erase(it);
-  }
+  const auto bound_at = coloured ? bound_.find(e) : bound_.end();
   for (auto i = tr.conditions_end; i < tr.terms_end; ++i) {
     const FiringTerm& term = firing_terms_[i];
     const PlaceSlotId ps = term.place_slot;
     SlotState& st = slots_[ps];
     if (coloured && term_arc_[i] >= 0) [[unlikely]] {
-      const Multiset& put = bound.arcs[static_cast<std::size_t>(term_arc_[i])];
+      const Multiset& put = bound_at->second.arcs[static_cast<std::size_t>(term_arc_[i])];
       const std::int64_t count = multisetSize(put);
       st.r -= count;
       st.m += count;
@@ -773,6 +781,7 @@ void Kernel::finishAs(Entry e) {
       current_ = outer;
     }
   }
+  if (coloured) bound_.erase(bound_at);
   --occurring_count_;
   if constexpr (kServers) {
     endOccurrence(e);

@@ -290,9 +290,9 @@ std::optional<PnmlColourReader::Text> PnmlColourReader::render(const XmlElement&
   if (n == "numberconstant" || n == "finiteintrangeconstant") {
     const std::string* v = e.attr("value");
     std::int64_t x = 0;
-    if (!v || std::from_chars(v->data(), v->data() + v->size(), x).ptr != v->data() + v->size() || v->empty()) {
-      return fail(e, "<" + n + "> needs a whole number value");
-    }
+    const auto read = v ? std::from_chars(v->data(), v->data() + v->size(), x) : std::from_chars_result{};
+    if (!v || v->empty() || read.ptr != v->data() + v->size()) return fail(e, "<" + n + "> needs a whole number value");
+    if (read.ec != std::errc{}) return fail(e, "<" + n + "> value " + *v + " is too large (64-bit whole numbers)");
     return Text{std::to_string(x), x < 0 ? 5 : 7};
   }
   if (n == "booleanconstant") {

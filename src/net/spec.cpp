@@ -1,8 +1,29 @@
 #include "gdpn/net/spec.h"
 
+#include <algorithm>
+
 #include "gdpn/core/assert.h"
 
 namespace gdpn::net {
+
+SourceLoc SlotText::where(const SourceLoc& in_text) const {
+  if (in_text.line < 1) return loc;
+  std::size_t offset = 0;
+  int line = 1;
+  for (; line < in_text.line && offset < text.size(); ++line) {
+    const auto nl = text.find('\n', offset);
+    if (nl == std::string::npos) break;
+    offset = nl + 1;
+  }
+  const auto column = static_cast<std::size_t>(std::max(in_text.column, 1) - 1);
+  if (!layout.empty()) {
+    const auto& [l, c] = layout[std::min(offset + column, layout.size() - 1)];
+    return {loc.file, l, c};
+  }
+  // laid out from loc: the first line from its column, the others from their first column
+  if (line == 1) return {loc.file, loc.line, loc.column + static_cast<int>(column)};
+  return {loc.file, loc.line + line - 1, static_cast<int>(column) + 1};
+}
 
 const ScriptSpec& scriptOf(const SlotScripts& s, ScriptKind kind) {
   switch (kind) {

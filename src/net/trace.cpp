@@ -28,7 +28,7 @@ void TraceWriter::onStart(TransitionId t, std::int64_t step) {
   head(step, "start");
   // a transition with variables: its line ends with its binding (onBinding, next)
   const Colouring* c = net_.colouring();
-  if (c && c->of(t)) return;
+  if (c && c->of(t) && !c->of(t)->variables.empty()) return;
   endWithTransition(t);
 }
 

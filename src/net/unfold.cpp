@@ -96,7 +96,7 @@ class Unfolder {
   /// `t` parsed and checked; where it is not, a note quotes it (a PNML term's text is not in
   /// the file as such: its line is the label's).
   std::optional<Expr> checked(const SlotText& t, ColourId set, Expect what, std::vector<std::uint32_t>& used) {
-    auto e = parseInscription(t.text, t.loc, diags_);
+    auto e = parseInscription(t, diags_);
     if (e && checkInscription(*e, set, what, scope_, used, diags_)) return e;
     diags_.note(t.loc, "in the inscription '" + t.text + "'");
     return std::nullopt;

@@ -136,6 +136,10 @@ class Colours {
   [[nodiscard]] const std::vector<ColourSet>& sets() const { return sets_; }
   /// Set `id`.
   [[nodiscard]] const ColourSet& at(ColourId id) const { return sets_[id]; }
+  /// How deep set `id`'s products and records nest (1 for a set without components).
+  [[nodiscard]] int depthOf(ColourId id) const { return id < depth_.size() ? depth_[id] : 1; }
+  /// The deepest products and records may nest.
+  static constexpr int kMostNesting = 64;
   /// The set called `name`, if any.
   [[nodiscard]] std::optional<ColourId> find(std::string_view name) const;
   /// The enum set and index of the constant called `name` (constants are unique over sets).
@@ -154,6 +158,7 @@ class Colours {
 
  private:
   std::vector<ColourSet> sets_;
+  std::vector<int> depth_;  // per set: how deep its components nest (a built-in's: 1)
   std::map<std::string, ColourId, std::less<>> by_name_;  // each name's first set
   std::map<std::string, std::pair<ColourId, std::int64_t>, std::less<>> constants_;  // each constant's first set
 };

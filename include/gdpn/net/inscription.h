@@ -35,8 +35,13 @@
 
 #include "gdpn/core/diagnostics.h"
 #include "gdpn/net/colour.h"
+#include "gdpn/net/spec.h"
 
 namespace gdpn::net {
+
+/// The most values `all` may stand for, and the most bindings of the variables no input arc
+/// binds that the search enumerates per transition: beyond it, a net is refused at load.
+inline constexpr std::int64_t kMostValues = 1'000'000;
 
 /// One node of an inscription.
 struct Expr {
@@ -74,6 +79,10 @@ struct Expr {
 /// text advance `at.line`; the first line's columns count from `at.col`). Syntax errors go to
 /// `diags` at their line and column; nullopt when there was one.
 std::optional<Expr> parseInscription(std::string_view text, const SourceLoc& at, core::Diagnostics& diags);
+
+/// Parses the text of `text` with every location (a syntax error's, each node's) where it
+/// stands in its file (SlotText::where).
+std::optional<Expr> parseInscription(const SlotText& text, core::Diagnostics& diags);
 
 /// `e` written back in the language (fully parenthesised only where needed); a Var is written
 /// as `names[index]` when `names` is given.
@@ -168,9 +177,10 @@ std::vector<BoundOccurrence> enabledBindings(const TransitionInscriptions& t, co
 std::optional<std::vector<BoundOccurrence>> allBindings(const TransitionInscriptions& t, const Colours& colours,
                                                         std::size_t most, std::string& why);
 
-/// Why a variable of `t` could be left free by matching and is not of a finite set (it cannot
-/// be enumerated): "variable 'x' (string) of ... is bound by no input arc". Empty when every
-/// variable is either matched by a normal or test input arc's pattern or of a finite set.
+/// Why the variables of `t` that matching leaves free cannot be enumerated: one is not of a
+/// finite set ("variable 'x' (string) is bound by no input arc ..."), or their combinations
+/// number more than kMostValues. Empty when every variable is matched by a normal or test
+/// input arc's pattern or the free ones can be enumerated.
 std::string unboundVariable(const TransitionInscriptions& t, const Colours& colours);
 
 }  // namespace gdpn::net

@@ -182,7 +182,11 @@ class Kernel {
   /// Occurrences started since construction.
   [[nodiscard]] std::uint64_t startCount() const { return start_count_; }
   /// True when nothing occurs and nothing is enabled: without outside input the net is dead.
-  [[nodiscard]] bool dead() const { return occurring_count_ == 0 && enabled_count_ == 0; }
+  /// (A transition whose last attempt found no binding of its values counts as not enabled:
+  /// only a change of the marking, which nothing inside the net can make now, could give it one.)
+  [[nodiscard]] bool dead() const {
+    return occurring_count_ == 0 && (enabled_count_ == 0 || (colouring_ && onlyUnbound()));
+  }
   /// The model's random generator (all draws of a run come from it, in a fixed order).
   core::Random& random() { return random_; }
   /// The frozen net.
@@ -302,6 +306,8 @@ class Kernel {
   // chooses the binding the next start of coloured transition `t` occurs in (bound_next_):
   // false when none is enabled
   bool selectBinding(TransitionId t);
+  // whether every enabled transition is held back because none of its bindings is enabled
+  [[nodiscard]] bool onlyUnbound() const;
   // the size of what term `i` of a coloured transition moves in the occurrence `o`
   [[nodiscard]] std::int64_t boundCount(std::uint32_t i, const BoundOccurrence& o) const {
     return multisetSize(o.arcs[static_cast<std::size_t>(term_arc_[i])]);

@@ -153,6 +153,12 @@ struct SlotText {
   SlotId slot = kDefaultSlot;  ///< which slot
   std::string text;            ///< as written
   SourceLoc loc;               ///< where its first character is
+  /// Where each character of `text` (and its end) stands in the file, line and column, where
+  /// that is not simply one after another from `loc` (a block over several lines, a quoted text
+  /// with escapes); empty otherwise. Layout only: not compared.
+  std::vector<std::pair<int, int>> layout{};
+  /// Where the place `in_text` of the text (its lines and columns from 1) stands in the file.
+  [[nodiscard]] SourceLoc where(const SourceLoc& in_text) const;
   friend bool operator==(const SlotText& x, const SlotText& y) { return x.slot == y.slot && x.text == y.text; }
 };
 
