@@ -133,6 +133,9 @@ std::vector<KeyDesc> paramKeys() {
 std::vector<KeyDesc> signalKeys() {
   return {
       k("place", ValueType::Name, "", "the tokens on the place (qualified name), all its slots together"),
+      k("value", ValueType::Inscription, "",
+        "with `place`: the tokens of this one value on the place's value slot (the place has one), a value of its "
+        "colour set (`lathe`, `(lathe, shaft)`, `{id = 1, kind = shaft}`)"),
       k("node", ValueType::Name, "", "a node's path: what it reads is `of`"),
       k("of", ValueType::Text, "",
         "with `node`: `position`, `velocity`, `angle`, `rate`, `reading`, `active`, one axis (`position.x`) or a field"),

@@ -247,6 +247,7 @@ params:
   n: 3
 signals:
   queue: {place: main/p, every: 0.5}
+  firsts: {place: main/p, value: p1}
   height: {node: box, of: position}
   busy: {expression: "1 + 1"}
 io:
