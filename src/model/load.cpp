@@ -106,7 +106,7 @@ class ModelReader {
       } else if (e.key == "scene") {
         model.scene = detail::readScene(e.value, r_, e.loc, angles_);
       } else if (e.key == "io") {
-        model.io = detail::readIo(e.value, r_);
+        model.io = detail::readIo(e.value, r_, source_);
       } else if (e.key == "scripts") {
         if (!r_.expectMap(e.value, "scripts")) continue;
         for (const auto& g : r_.entries(e.value, "scripts", keyNames(Section::Scripts))) {

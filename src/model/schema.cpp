@@ -164,6 +164,9 @@ std::vector<KeyDesc> ioEntryKeys() {
   return {
       io(k("place", ValueType::Name, "", "a place: its tokens, all slots together"),
          {DiscreteInputs, InputRegisters, Coils, HoldingRegisters}),
+      io(k("value", ValueType::Inscription, "",
+           "with `place`: the tokens of this one value on the place's value slot (as a signal's `value`)"),
+         {DiscreteInputs, InputRegisters}),
       io(k("node", ValueType::Name, "", "a node's path"), {DiscreteInputs, InputRegisters, Coils, HoldingRegisters}),
       io(k("part", ValueType::Name, "", "a part instance (its name, or qualified: `main/pusher1`): with `io`"),
          {DiscreteInputs, InputRegisters, Coils, HoldingRegisters}),
