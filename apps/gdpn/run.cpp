@@ -217,7 +217,8 @@ Subcommand addRun(CLI::App& app) {
   run_cmd->add_option("--signals", args->signals_out,
                       "write the model's signals (its signals section and each --signal) over time to FILE.csv");
   run_cmd->add_option("--signal", args->signals,
-                      "record one more signal: place:NAME (its tokens), node:PATH.QUANTITY (position, velocity, "
+                      "record one more signal: place:NAME (its tokens), place:NAME=VALUE (a value slot's tokens of "
+                      "that value), node:PATH.QUANTITY (position, velocity, "
                       "angle, rate, reading or a number field), python:EXPRESSION (repeatable)")
       ->allow_extra_args(false);
   run_cmd->add_option("--signal-every", args->signal_every,

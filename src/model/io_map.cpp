@@ -114,6 +114,10 @@ std::unique_ptr<IoMap> IoMap::create(Simulation& sim, const IoSpec& spec, core::
         }
         b.slot = net::PlaceSlotId{place.slots_begin};
       }
+      if (probe && !e.value.empty() && !countValue(sim, *probe, e.value, e.value_loc, name + ": ", diags)) {
+        ok = false;
+        continue;
+      }
     } else if (!e.key.empty()) {
       probe = keyProbe(sim, e.target, e.key, why);
     } else {
@@ -342,6 +346,7 @@ std::vector<IoMap::Row> IoMap::rows() const {
     const IoEntry& e = b.spec;
     r.what = e.target;
     if (!e.io.empty()) r.what += "." + e.io;
+    if (!e.value.empty()) r.what += "=" + e.value;
     if (!e.quantity.empty()) r.what += "." + e.quantity;
     if (!e.field.empty()) r.what += "." + e.field;
     if (!e.key.empty()) r.what += " key " + e.key;

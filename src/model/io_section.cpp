@@ -58,7 +58,8 @@ std::optional<std::uint16_t> address(YamlReader& r, const std::string& text, con
   return static_cast<std::uint16_t>(*v);
 }
 
-std::optional<IoEntry> readEntry(YamlReader& r, IoTable table, std::uint16_t addr, const Entry& e) {
+std::optional<IoEntry> readEntry(YamlReader& r, const SourceMap& source, IoTable table, std::uint16_t addr,
+                                 const Entry& e) {
   IoEntry out;
   out.table = table;
   out.address = addr;
@@ -78,6 +79,16 @@ std::optional<IoEntry> readEntry(YamlReader& r, IoTable table, std::uint16_t add
         ok = false;
       } else {
         (k.key == "scale" ? out.scale : k.key == "on" ? out.on : out.off) = *v;
+      }
+      continue;
+    }
+    if (k.key == "value") {
+      // one value's tokens: its syntax is checked now, its type when a run is made ready
+      if (auto text = readInscription(k.value, k.loc, net::kDefaultSlot, "value", source, r)) {
+        out.value = std::move(text->text);
+        out.value_loc = text->loc;
+      } else {
+        ok = false;
       }
       continue;
     }
@@ -124,6 +135,10 @@ std::optional<IoEntry> readEntry(YamlReader& r, IoTable table, std::uint16_t add
                                           : ": 'io' goes with 'part'"));
     return std::nullopt;
   }
+  if (!out.value.empty() && out.source != IoEntry::Source::Place) {
+    r.error(e.loc, name + ": 'value' goes with 'place'");
+    return std::nullopt;
+  }
   if (out.source == IoEntry::Source::Part) {
     if (!out.quantity.empty() || !out.field.empty() || !out.key.empty()) {
       r.error(e.loc, name + ": 'of', 'field' and 'key' go with 'node'; a part's I/O says what it reads or sets");
@@ -154,7 +169,7 @@ std::optional<IoEntry> readEntry(YamlReader& r, IoTable table, std::uint16_t add
 
 }  // namespace
 
-IoSpec readIo(const YAML::Node& section, YamlReader& r) {
+IoSpec readIo(const YAML::Node& section, YamlReader& r, const SourceMap& source) {
   IoSpec io;
   if (section.IsNull() || !r.expectMap(section, "io")) return io;
   for (const auto& e : r.entries(section, "io", schema::keyNames(schema::Section::Io))) {
@@ -170,7 +185,7 @@ IoSpec readIo(const YAML::Node& section, YamlReader& r) {
     for (const auto& a : r.entries(e.value, e.key, {})) {
       const auto addr = address(r, a.key, a.loc, "a key of '" + e.key + "'");
       if (!addr) continue;
-      if (auto entry = readEntry(r, table, *addr, a)) io.entries.push_back(std::move(*entry));
+      if (auto entry = readEntry(r, source, table, *addr, a)) io.entries.push_back(std::move(*entry));
     }
   }
   // every address mapped once per table (a two-word entry takes the next address too): sorted
@@ -225,7 +240,9 @@ void writeIo(YAML::Emitter& out, const IoSpec& io) {
   const double scale_default = schema::defaultNumber(Section::IoEntry, "scale");
   const std::string& type_default = schema::key(Section::IoEntry, "type").initial;
   const auto entry = [&](IoTable t, const IoEntry& e) {
-    out << YAML::Key << e.address << YAML::Value << YAML::Flow << YAML::BeginMap;
+    // a value written as a block (it spans lines) needs a block map
+    out << YAML::Key << e.address << YAML::Value << (inscriptionIsBlock(e.value) ? YAML::Block : YAML::Flow)
+        << YAML::BeginMap;
     const bool place = e.source == IoEntry::Source::Place;
     const bool coil = t == IoTable::Coils && e.source == IoEntry::Source::Node;  // a coil on a node's number field
     const bool word = isRegister(t);
@@ -233,6 +250,13 @@ void writeIo(YAML::Emitter& out, const IoSpec& io) {
         Section::IoEntry,
         {
             {"place", [&] { if (place) out << YAML::Key << "place" << YAML::Value << e.target; }},
+            {"value",
+             [&] {
+               if (place && !e.value.empty()) {
+                 out << YAML::Key << "value" << YAML::Value;
+                 writeInscription(out, e.value);
+               }
+             }},
             {"node", [&] { if (e.source == IoEntry::Source::Node) out << YAML::Key << "node" << YAML::Value << e.target; }},
             {"part", [&] { if (e.source == IoEntry::Source::Part) out << YAML::Key << "part" << YAML::Value << e.target; }},
             {"io", [&] { if (!e.io.empty()) out << YAML::Key << "io" << YAML::Value << e.io; }},

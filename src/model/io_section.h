@@ -1,6 +1,7 @@
 #pragma once
 // Internal: no promises. The `io` section of a model file (docs/format.md, "I/O").
 
+#include "colour_io.h"
 #include "gdpn/model/io.h"
 #include "yaml_reader.h"
 
@@ -8,8 +9,9 @@ namespace gdpn::model::detail {
 
 /// Reads the `io` section: `lockstep: ADDRESS` and the four tables, each a map of addresses
 /// to entries. Every mistake (an unknown key, an address out of range, two entries over one
-/// address, a key that does not go with the table) is reported through `r` at its place.
-IoSpec readIo(const YAML::Node& section, YamlReader& r);
+/// address, a key that does not go with the table, a `value` that is no inscription) is
+/// reported through `r` at its place; `source` locates a value's characters.
+IoSpec readIo(const YAML::Node& section, YamlReader& r, const SourceMap& source);
 
 /// Writes `io` as the reader reads it (table by table, addresses in order).
 void writeIo(YAML::Emitter& out, const IoSpec& io);

@@ -106,7 +106,7 @@ class ModelReader {
       } else if (e.key == "scene") {
         model.scene = detail::readScene(e.value, r_, e.loc, angles_);
       } else if (e.key == "io") {
-        model.io = detail::readIo(e.value, r_);
+        model.io = detail::readIo(e.value, r_, source_);
       } else if (e.key == "scripts") {
         if (!r_.expectMap(e.value, "scripts")) continue;
         for (const auto& g : r_.entries(e.value, "scripts", keyNames(Section::Scripts))) {
@@ -312,8 +312,9 @@ class ModelReader {
     return true;
   }
 
-  /// The `signals` section: `name: {place: P}`, `{node: PATH, of: QUANTITY}` or
-  /// `{expression: PYTHON}`, each with an optional sampling period `every` (seconds).
+  /// The `signals` section: `name: {place: P}` (with `value: V`, one value's tokens),
+  /// `{node: PATH, of: QUANTITY}` or `{expression: PYTHON}`, each with an optional sampling
+  /// period `every` (seconds).
   void readSignals(const YAML::Node& node, std::vector<SignalSpec>& out) {
     if (node.IsNull() || !r_.expectMap(node, "signals")) return;
     for (const auto& e : r_.entries(node, "signals", {})) {
@@ -324,12 +325,22 @@ class ModelReader {
       if (!r_.expectMap(e.value, "signal '" + s.name + "'")) continue;
       int kinds = 0;
       bool has_of = false;
+      bool has_value = false;
       for (const auto& f : r_.entries(e.value, "signal '" + s.name + "'", keyNames(Section::Signal))) {
         if (f.key == "every") {
           if (auto v = r_.number(f.value, "every")) {
             if (!inRange(Section::Signal, f.key, *v)) r_.error(f.value, "'every' is a period of more than 0 seconds");
             s.every = *v;
           }
+          continue;
+        }
+        if (f.key == "value") {
+          // one value's tokens: its syntax is checked now, its type when a run is made ready
+          if (auto text = detail::readInscription(f.value, f.loc, net::kDefaultSlot, "value", source_, r_)) {
+            s.value = std::move(text->text);
+            s.value_loc = text->loc;
+          }
+          has_value = true;
           continue;
         }
         auto text = r_.string(f.value, f.key);
@@ -354,6 +365,10 @@ class ModelReader {
         r_.error(e.loc, s.kind == SignalSpec::Kind::Node
                             ? "signal '" + s.name + "' needs 'of': position, velocity, angle, rate, reading or a field"
                             : "'of' goes with 'node' only (signal '" + s.name + "')");
+        continue;
+      }
+      if (has_value && s.kind != SignalSpec::Kind::Place) {
+        r_.error(e.loc, "'value' goes with 'place' only (signal '" + s.name + "')");
         continue;
       }
       out.push_back(std::move(s));

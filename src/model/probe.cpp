@@ -7,6 +7,9 @@
 
 #include "gdpn/core/text.h"
 #include "gdpn/model/simulation.h"
+#include "gdpn/net/inscription.h"
+#include "gdpn/net/kernel.h"
+#include "gdpn/net/slot.h"
 #include "gdpn/scene/actions.h"
 #include "gdpn/scene/fields.h"
 #include "gdpn/scene/node_path.h"
@@ -72,6 +75,66 @@ std::optional<Probe> placeProbe(const Simulation& sim, const std::string& place,
   p.what = Probe::What::Tokens;
   p.place = *id;
   return p;
+}
+
+bool countValue(const Simulation& sim, Probe& p, const std::string& text, const core::SourceLoc& at,
+                const std::string& context, core::Diagnostics& diags) {
+  const net::Net& net = sim.net();
+  const net::Colouring* colouring = net.colouring();
+  const std::string place = net.placeName(p.place);
+  // the place's one value slot
+  std::vector<net::PlaceSlotId> value_slots;
+  for (const net::PlaceSlotId ps : net.placeSlotsOf(p.place)) {
+    if (colouring != nullptr && colouring->setOf(ps)) value_slots.push_back(ps);
+  }
+  if (value_slots.size() != 1) {
+    std::string names;
+    for (const auto ps : value_slots) names += (names.empty() ? "" : ", ") + net::slotName(net.placeSlots()[ps].slot);
+    diags.error(at, context + (value_slots.empty()
+                                   ? "place '" + place + "' holds no values (it has no slot with a colour): 'value' " +
+                                         "counts the tokens of one value of a value slot"
+                                   : "place '" + place + "' has value slots " + names +
+                                         ": 'value' counts on a place with one"));
+    return false;
+  }
+  const net::PlaceSlotId ps = value_slots.front();
+  const net::ColourId set = *colouring->setOf(ps);
+  const net::Colours& colours = colouring->colours;
+  // parsed and checked as one value of the slot's set, without variables; then evaluated
+  core::Diagnostics found;
+  std::optional<net::Expr> e = net::parseInscription(text, at, found);
+  std::vector<std::uint32_t> used;
+  const net::InscriptionScope scope{&colours, {}, {}};
+  if (e && !found.hasErrors()) (void)net::checkInscription(*e, set, net::Expect::Single, scope, used, found);
+  for (const auto& d : found.all()) {
+    // a text with no line (a --signal argument's) is located as a whole
+    const core::SourceLoc where = at.line > 0 ? d.loc : at;
+    switch (d.severity) {
+      case core::Severity::Error: diags.error(where, context + d.message); break;
+      case core::Severity::Warning: diags.warning(where, context + d.message); break;
+      case core::Severity::Note: diags.note(where, d.message); break;
+    }
+  }
+  if (!e || found.hasErrors()) {
+    if (found.hasErrors() && e) {
+      diags.note(at, "place '" + place + "' holds values of " + colours.at(set).name);
+    }
+    return false;
+  }
+  const std::optional<net::Value> v = net::evaluate(*e, {}, colours);
+  if (!v || !colours.contains(set, *v)) {
+    const net::ColourSet& of = colours.at(set);
+    const bool range = of.kind == net::ColourKind::Integer && of.range;
+    diags.error(at, context + "'" + text + "' is no value of " + of.name +
+                        (range ? " (" + std::to_string(of.lo) + ".." + std::to_string(of.hi) + ")" : std::string()) +
+                        (v ? "" : " (it has none: a number outside a range, the successor of an enumeration's last "
+                                  "constant, a division by zero)"));
+    return false;
+  }
+  p.what = Probe::What::Count;
+  p.slot = ps;
+  p.value = *v;
+  return true;
 }
 
 std::optional<Probe> nodeProbe(const Simulation& sim, const std::string& path, const std::string& quantity,
@@ -207,6 +270,12 @@ bool readProbe(const Simulation& sim, const Probe& p, double* out) {
     *out = static_cast<double>(tokens);
     return true;
   }
+  if (p.what == Probe::What::Count) {
+    const net::Multiset& values = sim.kernel().values(p.slot);
+    const auto it = values.find(p.value);
+    *out = it == values.end() ? 0.0 : static_cast<double>(it->second);
+    return true;
+  }
   const scene::Node* node = sim.plant()->resolve(p.node);
   if (node == nullptr) return false;  // deleted: no value from now on
   const auto vector = [&](core::Vec3 v) {
@@ -219,7 +288,8 @@ bool readProbe(const Simulation& sim, const Probe& p, double* out) {
     }
   };
   switch (p.what) {
-    case Probe::What::Tokens: break;
+    case Probe::What::Tokens:
+    case Probe::What::Count: break;
     case Probe::What::Position: vector(node->framePose().position); break;
     case Probe::What::Velocity: vector(sim.physics()->velocity(*node)); break;
     case Probe::What::JointAngle:

@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include "gdpn/core/diagnostics.h"
+#include "gdpn/net/colour.h"
 #include "gdpn/net/net.h"
 #include "gdpn/scene/node.h"
 
@@ -19,6 +21,7 @@ struct Probe {
   /// What it reads.
   enum class What : std::uint8_t {
     Tokens,      ///< a place's tokens, all its slots
+    Count,       ///< how many tokens of one value a place's value slot holds
     Position,    ///< a node's world position, m
     Velocity,    ///< a body's linear velocity, m/s
     JointAngle,  ///< a joint's position on axis 1 (the model's angle unit, or m for a slider)
@@ -31,7 +34,9 @@ struct Probe {
     Field,       ///< one of the node's number or bool fields
   };
   What what = What::Tokens;
-  net::PlaceId place{0};         ///< Tokens: the place
+  net::PlaceId place{0};         ///< Tokens, Count: the place
+  net::PlaceSlotId slot{0};       ///< Count: its value slot
+  net::Value value;               ///< Count: the value counted
   scene::NodeHandle node = 0;     ///< the node
   std::size_t field = 0;          ///< Field: its index; Channel: the channel's
   bool vector = false;            ///< Channel: a vector's (three numbers, or `axis` alone)
@@ -49,6 +54,14 @@ struct Probe {
 
 /// The tokens on the place named `place` (qualified); nullopt and `why` when there is none.
 std::optional<Probe> placeProbe(const Simulation& sim, const std::string& place, std::string& why);
+
+/// Turns place probe `p` (Tokens) into one that counts the tokens of a single value (Count):
+/// `text`, in the inscription language with its first character at `at`, is parsed, checked to
+/// be one value of the colour set of the place's value slot, and evaluated. The place must have
+/// exactly one value slot. Mistakes go to `diags`, located in the text, each message after
+/// `context` (`signal 'idle': `); false when there was one.
+bool countValue(const Simulation& sim, Probe& p, const std::string& text, const core::SourceLoc& at,
+                const std::string& context, core::Diagnostics& diags);
 
 /// Quantity `quantity` of the plant's node `path`: `position`, `velocity` (each also `.x`,
 /// `.y`, `.z` alone), `angle`, `rate`, `reading`, `active`, a sensor's channel that gives

@@ -485,11 +485,20 @@ void writeParam(YAML::Emitter& out, const Param& p) {
 
 void writeSignal(YAML::Emitter& out, const SignalSpec& sig) {
   using Kind = SignalSpec::Kind;
-  out << YAML::Key << sig.name << YAML::Value << YAML::Flow << YAML::BeginMap;
+  // a value written as a block (it spans lines) needs a block map
+  out << YAML::Key << sig.name << YAML::Value << (detail::inscriptionIsBlock(sig.value) ? YAML::Block : YAML::Flow)
+      << YAML::BeginMap;
   schema::inSchemaOrder(
       Section::Signal,
       {
           {"place", [&] { if (sig.kind == Kind::Place) out << YAML::Key << "place" << YAML::Value << sig.target; }},
+          {"value",
+           [&] {
+             if (sig.kind == Kind::Place && !sig.value.empty()) {
+               out << YAML::Key << "value" << YAML::Value;
+               detail::writeInscription(out, sig.value);
+             }
+           }},
           {"node", [&] { if (sig.kind == Kind::Node) out << YAML::Key << "node" << YAML::Value << sig.target; }},
           {"of", [&] { if (sig.kind == Kind::Node) out << YAML::Key << "of" << YAML::Value << sig.quantity; }},
           {"expression",

@@ -133,6 +133,9 @@ std::vector<KeyDesc> paramKeys() {
 std::vector<KeyDesc> signalKeys() {
   return {
       k("place", ValueType::Name, "", "the tokens on the place (qualified name), all its slots together"),
+      k("value", ValueType::Inscription, "",
+        "with `place`: the tokens of this one value on the place's value slot (the place has one), a value of its "
+        "colour set (`lathe`, `(lathe, shaft)`, `{id = 1, kind = shaft}`)"),
       k("node", ValueType::Name, "", "a node's path: what it reads is `of`"),
       k("of", ValueType::Text, "",
         "with `node`: `position`, `velocity`, `angle`, `rate`, `reading`, `active`, one axis (`position.x`) or a field"),
@@ -161,6 +164,9 @@ std::vector<KeyDesc> ioEntryKeys() {
   return {
       io(k("place", ValueType::Name, "", "a place: its tokens, all slots together"),
          {DiscreteInputs, InputRegisters, Coils, HoldingRegisters}),
+      io(k("value", ValueType::Inscription, "",
+           "with `place`: the tokens of this one value on the place's value slot (as a signal's `value`)"),
+         {DiscreteInputs, InputRegisters}),
       io(k("node", ValueType::Name, "", "a node's path"), {DiscreteInputs, InputRegisters, Coils, HoldingRegisters}),
       io(k("part", ValueType::Name, "", "a part instance (its name, or qualified: `main/pusher1`): with `io`"),
          {DiscreteInputs, InputRegisters, Coils, HoldingRegisters}),

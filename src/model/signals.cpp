@@ -8,6 +8,7 @@
 
 #include "gdpn/core/text.h"
 #include "gdpn/model/simulation.h"
+#include "gdpn/net/inscription.h"
 #include "probe.h"
 #include "signal_recorder.h"
 
@@ -23,6 +24,22 @@ std::optional<SignalSpec> parseSignalArgument(const std::string& argument, std::
   if (kind == "place" && !rest.empty()) {
     s.kind = SignalSpec::Kind::Place;
     s.target = rest;
+    // place:NAME=VALUE: one value's tokens (a place's name has no '=')
+    if (const auto eq = rest.find('='); eq != std::string::npos) {
+      s.target = rest.substr(0, eq);
+      s.value = rest.substr(eq + 1);
+      s.value_loc = s.loc;
+      core::Diagnostics found;
+      const bool parsed = net::parseInscription(s.value, {}, found).has_value() && !found.hasErrors();
+      if (s.target.empty() || s.value.empty()) {
+        why = "expects place:NAME=VALUE (main/idle=lathe), got '" + argument + "'";
+        return std::nullopt;
+      }
+      if (!parsed) {
+        why = "value '" + s.value + "': " + (found.all().empty() ? "no value" : found.all().front().message);
+        return std::nullopt;
+      }
+    }
   } else if (kind == "node" && rest.find('.') != std::string::npos) {
     s.kind = SignalSpec::Kind::Node;
     // the quantity follows the last dot, or the one before when it picks an axis: ball.position.x
@@ -90,6 +107,10 @@ std::unique_ptr<SignalRecorder> SignalRecorder::create(Simulation& sim, const st
     }
     if (!probe) {
       fail(why);
+      continue;
+    }
+    if (!spec.value.empty() && !countValue(sim, *probe, spec.value, spec.value_loc, "signal '" + spec.name + "': ", diags)) {
+      ok = false;
       continue;
     }
     p.probe = std::move(*probe);

@@ -244,5 +244,77 @@ TEST_F(IoMapTest, RowsShowEachEntryItsValueAndItsLastWriter) {
   EXPECT_EQ(rows[0].writer, "");
 }
 
+TEST(IoMapValues, AValueOfAColouredPlaceGivesItsTokensAndABitWhileThereIsOne) {
+  // p holds 2'a ++ 1'b; from 1 s, take moves one a at a time to q (1 s each)
+  core::Diagnostics diags;
+  auto m = loadModel(std::string(GDPN_SOURCE_DIR) + "/tests/data/good/value_counts.gdpn.yaml", diags);
+  ASSERT_TRUE(m) << diags.str();
+  auto sim = Simulation::create(*m, diags);
+  ASSERT_TRUE(sim) << diags.str();
+  auto io = IoMap::create(*sim, m->io, diags);
+  ASSERT_TRUE(io) << diags.str();
+  sim->start();
+  EXPECT_TRUE(io->bit(IoTable::DiscreteInputs, 0));   // an a on p
+  EXPECT_FALSE(io->bit(IoTable::DiscreteInputs, 1));  // none on q yet
+  EXPECT_EQ(io->word(IoTable::InputRegisters, 0), 2);
+  EXPECT_EQ(io->word(IoTable::InputRegisters, 1), 3);  // 3'(a, b)
+  sim->run({1.5, {}});
+  EXPECT_EQ(io->word(IoTable::InputRegisters, 0), 1);
+  EXPECT_FALSE(io->bit(IoTable::DiscreteInputs, 1));
+  sim->run({2.5, {}});
+  EXPECT_FALSE(io->bit(IoTable::DiscreteInputs, 0));
+  EXPECT_TRUE(io->bit(IoTable::DiscreteInputs, 1));
+  EXPECT_EQ(io->word(IoTable::InputRegisters, 0), 0);
+  const auto rows = io->rows();
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(rows[3].what, "main/pairs=(a, b)");
+}
+
+/// The diagnostics of reading the io section `entries` (from line 5 of the file) over a net
+/// with a value place, and of making it ready.
+std::string valueEntryMistake(const std::string& entries) {
+  core::Diagnostics diags;
+  auto m = parseModel(R"yaml(gdpn: 1
+colours:
+  Ab: {enum: [a, b]}
+io:
+)yaml" + entries + R"yaml(
+pages:
+  main:
+    places:
+      p: {colour: Ab, values: "2'a ++ 1'b"}
+      plain: {tokens: 1}
+)yaml",
+                      "io_values.gdpn.yaml", diags);
+  if (m) {
+    auto sim = Simulation::create(*m, diags);
+    EXPECT_TRUE(sim) << diags.str();
+    if (sim) {
+      EXPECT_FALSE(IoMap::create(*sim, m->io, diags)) << entries;
+    }
+  }
+  EXPECT_TRUE(diags.hasErrors()) << entries;
+  return diags.str();
+}
+
+TEST(IoMapValues, AValueNotOfThePlaceOrNotReadIsRefusedAtItsPlace) {
+  std::string d = valueEntryMistake("  input_registers:\n    0: {place: main/p, value: 3}");
+  EXPECT_NE(d.find("io_values.gdpn.yaml:6:31: error: input register 0: "), std::string::npos) << d;
+  d = valueEntryMistake("  discrete_inputs:\n    4: {place: main/plain, value: a}");
+  EXPECT_NE(d.find("io_values.gdpn.yaml:6:35: error: discrete input 4: place 'main/plain' holds no values"),
+            std::string::npos)
+      << d;
+  // a controller writes no value: coils and holding registers take no 'value'
+  d = valueEntryMistake("  coils:\n    0: {place: main/p, value: a}");
+  EXPECT_NE(d.find("io_values.gdpn.yaml:6:"), std::string::npos) << d;
+  EXPECT_NE(d.find("'value'"), std::string::npos) << d;
+  d = valueEntryMistake("  input_registers:\n    0: {node: main/p, of: speed, value: a}");
+  EXPECT_NE(d.find("io_values.gdpn.yaml:6:5: error: input register 0: 'value' goes with 'place'"), std::string::npos)
+      << d;
+  // a syntax error, found when the file is read
+  d = valueEntryMistake("  input_registers:\n    0: {place: main/p, value: \"(a,\"}");
+  EXPECT_NE(d.find("io_values.gdpn.yaml:6:"), std::string::npos) << d;
+}
+
 }  // namespace
 }  // namespace gdpn::model

@@ -96,7 +96,7 @@ TEST(Schema, IoKeysAreTheFourTablesAfterLockstep) {
   EXPECT_EQ(ioEntryKeyNames(IoTable::Coils),
             (std::vector<std::string>{"place", "node", "part", "io", "field", "on", "off"}));
   EXPECT_EQ(ioEntryKeyNames(IoTable::InputRegisters),
-            (std::vector<std::string>{"place", "node", "part", "io", "of", "scale", "unit", "type"}));
+            (std::vector<std::string>{"place", "value", "node", "part", "io", "of", "scale", "unit", "type"}));
 }
 
 TEST(Schema, EveryKeyIsDescribed) {
@@ -247,6 +247,7 @@ params:
   n: 3
 signals:
   queue: {place: main/p, every: 0.5}
+  firsts: {place: main/p, value: p1}
   height: {node: box, of: position}
   busy: {expression: "1 + 1"}
 io:
@@ -256,6 +257,7 @@ io:
     1: {node: keys, key: g}
   input_registers:
     0: {node: mast, of: reading, scale: 1000, unit: mm, type: float32}
+    2: {place: main/p, value: "p2"}
   coils:
     0: {node: belt, field: speed, on: 0.5, off: 0.25}
     1: {part: main/i, io: lamp}

@@ -202,5 +202,132 @@ scene:
   EXPECT_NE(diags.str().find("reading, active, nearest"), std::string::npos) << diags.str();
 }
 
+TEST(Signals, AValueOfAColouredPlaceCountsItsTokensAsTransitionsTakeThem) {
+  // p holds 2'a ++ 1'b; wait (1 s) lets take move one a at a time to q (1 s each); b stays
+  auto sim = testing::openModelFile("tests/data/good/value_counts.gdpn.yaml");
+  ASSERT_TRUE(sim);
+  core::Diagnostics diags;
+  ASSERT_TRUE(sim->recordSignals({}, diags)) << diags.str();
+  const auto outcome = sim->run({});
+  ASSERT_EQ(outcome.reason, StopReason::Until) << outcome.message;
+  const SignalTable& t = *sim->signals();
+  EXPECT_EQ(t.columns, (std::vector<std::string>{"as", "bs", "all", "qa", "ab", "job"}));
+  ASSERT_EQ(t.time, (std::vector<double>{0, 0.5, 1, 1.5, 2, 2.5, 3, 3.5, 4}));
+  const auto series = [&](const char* name) {
+    std::vector<double> out;
+    for (const auto& row : t.rows) out.push_back(row[column(t, name)].value_or(-1));
+    return out;
+  };
+  // take starts at 1 s and again at 2 s as it ends (each time with an a), and ends at 3 s
+  EXPECT_EQ(series("as"), (std::vector<double>{2, 2, 1, 1, 0, 0, 0, 0, 0}));
+  EXPECT_EQ(series("bs"), (std::vector<double>(9, 1)));
+  EXPECT_EQ(series("all"), (std::vector<double>{3, 3, 2, 2, 1, 1, 1, 1, 1}));
+  EXPECT_EQ(series("qa"), (std::vector<double>{0, 0, 0, 0, 1, 1, 2, 2, 2}));
+  // a tuple and a record: 3'(a, b) ++ 1'(b, a); 2'{id = b, kind = a} ++ 1'{id = a, kind = a}
+  EXPECT_EQ(series("ab"), (std::vector<double>(9, 3)));
+  EXPECT_EQ(series("job"), (std::vector<double>(9, 2)));
+}
+
+TEST(Signals, AValueOnTheCommandLineFollowsThePlacesNameAfterAnEqualsSign) {
+  std::string why;
+  auto s = parseSignalArgument("place:main/pairs=(b, a)", why);
+  ASSERT_TRUE(s) << why;
+  EXPECT_EQ(s->kind, SignalSpec::Kind::Place);
+  EXPECT_EQ(s->target, "main/pairs");
+  EXPECT_EQ(s->value, "(b, a)");
+  EXPECT_EQ(s->name, "main/pairs=(b, a)");
+  EXPECT_TRUE(parseSignalArgument("place:main/p", why)->value.empty());
+  // read against the run: (b, a) once on pairs; a wrongly typed value is refused
+  auto sim = testing::openModelFile("tests/data/good/value_counts.gdpn.yaml");
+  ASSERT_TRUE(sim);
+  core::Diagnostics diags;
+  auto b = *parseSignalArgument("place:main/p=b", why);
+  ASSERT_TRUE(sim->recordSignals({*s, b}, diags)) << diags.str();
+  sim->run({0.5, {}});
+  const SignalTable& t = *sim->signals();
+  EXPECT_EQ(t.rows.front()[column(t, "main/pairs=(b, a)")], 1.0);
+  EXPECT_EQ(t.rows.front()[column(t, "main/p=b")], 1.0);
+  auto again = testing::openModelFile("tests/data/good/value_counts.gdpn.yaml");
+  ASSERT_TRUE(again);
+  EXPECT_FALSE(again->recordSignals({*parseSignalArgument("place:main/p=(a, b)", why)}, diags));
+  EXPECT_NE(diags.str().find("--signal place:main/p=(a, b): error: signal 'main/p=(a, b)': "), std::string::npos)
+      << diags.str();
+  // a syntax error, an empty value or name
+  EXPECT_FALSE(parseSignalArgument("place:main/p=(a,", why));
+  EXPECT_EQ(why.rfind("value '(a,': ", 0), 0u) << why;
+  for (const char* bad : {"place:main/p=", "place:=a"}) {
+    EXPECT_FALSE(parseSignalArgument(bad, why)) << bad;
+    EXPECT_EQ(why, std::string("expects place:NAME=VALUE (main/idle=lathe), got '") + bad + "'");
+  }
+}
+
+/// The diagnostics of making ready a run of the value_counts model's net with `signal` (a
+/// line of the `signals` section, at line 8 of the file), or of reading it.
+std::string valueSignalMistake(const std::string& signal) {
+  core::Diagnostics diags;
+  auto m = parseModel(R"yaml(gdpn: 1
+colours:
+  Ab: {enum: [a, b]}
+  Id: {range: [1, 4]}
+  Pair: {product: [Ab, Id]}
+variables: {x: Ab}
+signals:
+)yaml" + signal + R"yaml(
+pages:
+  main:
+    places:
+      p: {colour: Ab, values: "2'a ++ 1'b"}
+      n: {colour: Id}
+      pairs: {colour: Pair}
+      two: {colour: {a0: Ab, b0: Id}}
+      plain: {tokens: 1}
+)yaml",
+                      "values.gdpn.yaml", diags);
+  if (m) {
+    auto sim = Simulation::create(*m, diags);
+    EXPECT_TRUE(sim) << diags.str();
+    if (sim) {
+      EXPECT_FALSE(sim->recordSignals({}, diags)) << signal;
+    }
+  }
+  EXPECT_TRUE(diags.hasErrors()) << signal;
+  return diags.str();
+}
+
+TEST(Signals, AValueThatIsNoneOfThePlacesSetIsRefusedAtItsCharacter) {
+  // a place without value slots, or with two
+  EXPECT_NE(valueSignalMistake("  s: {place: main/plain, value: a}")
+                .find("values.gdpn.yaml:8:33: error: signal 's': place 'main/plain' holds no values (it has no slot "
+                      "with a colour)"),
+            std::string::npos)
+      << valueSignalMistake("  s: {place: main/plain, value: a}");
+  EXPECT_NE(valueSignalMistake("  s: {place: main/two, value: a}")
+                .find("values.gdpn.yaml:8:31: error: signal 's': place 'main/two' has value slots a0, b0: 'value' "
+                      "counts on a place with one"),
+            std::string::npos)
+      << valueSignalMistake("  s: {place: main/two, value: a}");
+  // of another set: a number for an enumeration, a component of the wrong set in a tuple
+  std::string d = valueSignalMistake("  s: {place: main/p, value: 3}");
+  EXPECT_NE(d.find("values.gdpn.yaml:8:29: error: signal 's': "), std::string::npos) << d;
+  d = valueSignalMistake("  s: {place: main/pairs, value: \"(a, b)\"}");
+  EXPECT_NE(d.find("values.gdpn.yaml:8:38: error: signal 's': "), std::string::npos) << d;
+  // a multiset, a variable, an unknown name: not one value
+  d = valueSignalMistake("  s: {place: main/p, value: \"2'a\"}");
+  EXPECT_NE(d.find("values.gdpn.yaml:8:30: error: signal 's': "), std::string::npos) << d;
+  d = valueSignalMistake("  s: {place: main/p, value: x}");
+  EXPECT_NE(d.find("values.gdpn.yaml:8:29: error: signal 's': "), std::string::npos) << d;
+  d = valueSignalMistake("  s: {place: main/p, value: c}");
+  EXPECT_NE(d.find("values.gdpn.yaml:8:29: error: signal 's': "), std::string::npos) << d;
+  // a number outside the range
+  d = valueSignalMistake("  s: {place: main/n, value: 7}");
+  EXPECT_NE(d.find("values.gdpn.yaml:8:29: error: signal 's': '7' is no value of Id (1..4)"), std::string::npos) << d;
+  // a syntax error, found when the file is read
+  d = valueSignalMistake("  s: {place: main/pairs, value: \"(a, 1\"}");
+  EXPECT_NE(d.find("values.gdpn.yaml:8:"), std::string::npos) << d;
+  // 'value' with a node or an expression
+  d = valueSignalMistake("  s: {expression: \"1\", value: a}");
+  EXPECT_NE(d.find("values.gdpn.yaml:8:3: error: 'value' goes with 'place' only (signal 's')"), std::string::npos) << d;
+}
+
 }  // namespace
 }  // namespace gdpn::model

@@ -51,7 +51,7 @@ inline int ioWidth(IoType type) { return type == IoType::Int16 || type == IoType
 struct IoEntry {
   /// What the entry stands for.
   enum class Source : std::uint8_t {
-    Place,  ///< `place: NAME`: read, its tokens (a bit: marked); written, a coil's rising edge adds a token, a register sets the tokens
+    Place,  ///< `place: NAME`: read, its tokens (a bit: marked), or with `value` one value's; written, a coil's rising edge adds a token, a register sets the tokens
     Node,   ///< `node: PATH` with `of: QUANTITY` (read) or `field: NAME` (written), or `key: KEY` (a KeyboardSensor's key held down)
     Part,   ///< `part: INSTANCE` with `io: NAME`: one of a part's inputs (read) or outputs (written)
   };
@@ -60,6 +60,8 @@ struct IoEntry {
   Source source = Source::Node;             ///< a place or a node
   std::string target;                       ///< the place's qualified name, the node's path or the part instance
   std::string io;                           ///< a part's: the name of its input or output
+  std::string value;                        ///< a place read: one value of its value slot's set (inscription language), whose tokens are read; empty: all its tokens
+  core::SourceLoc value_loc;                ///< where `value`'s first character is written
   std::string quantity;                     ///< inputs: what is read (`of`: as a signal's, with `active` and `position.z`)
   std::string field;                        ///< coils, holding registers: the field written
   std::string key;                          ///< discrete inputs: a KeyboardSensor's key
@@ -70,7 +72,7 @@ struct IoEntry {
   double off = 0.0;                         ///< coils on a number field: the value for 0
   core::SourceLoc loc;                      ///< where the address is written
   friend bool operator==(const IoEntry& a, const IoEntry& b) {
-    return a.table == b.table && a.address == b.address && a.source == b.source && a.target == b.target && a.io == b.io &&
+    return a.table == b.table && a.address == b.address && a.source == b.source && a.target == b.target && a.io == b.io && a.value == b.value &&
            a.quantity == b.quantity && a.field == b.field && a.key == b.key && a.scale == b.scale && a.unit == b.unit &&
            a.type == b.type && a.on == b.on && a.off == b.off;
   }

@@ -18,7 +18,7 @@ namespace gdpn::model {
 struct SignalSpec {
   /// What the signal reads.
   enum class Kind : std::uint8_t {
-    Place,       ///< `place: NAME`: the tokens on a place (all its slots)
+    Place,       ///< `place: NAME`: the tokens on a place (all its slots), or with `value` one value's
     Node,        ///< `node: PATH, of: QUANTITY`: a scene node's quantity (below)
     Expression,  ///< `expression: PYTHON`: a number from the model's globals
   };
@@ -30,16 +30,23 @@ struct SignalSpec {
   /// for a slider), `reading` (a sensor's: a Region's count of items, a RangeFinder's
   /// distance, a TimeSensor's ticks), or the name of one of its number fields
   std::string quantity;
+  /// for a place: a value of its value slot's colour set, in the inscription language
+  /// (`lathe`, `(lathe, shaft)`, `{id = 1, kind = shaft}`, `3`); the signal is then how many
+  /// tokens of that value the slot holds. Empty: the place's tokens, all its slots together
+  std::string value;
+  core::SourceLoc value_loc;  ///< where `value`'s first character is written
   double every = 0.0;    ///< sampling period, seconds (0: every step)
   core::SourceLoc loc;   ///< where it was written
   friend bool operator==(const SignalSpec& a, const SignalSpec& b) {
     return a.name == b.name && a.kind == b.kind && a.target == b.target && a.quantity == b.quantity &&
-           a.every == b.every;
+           a.value == b.value && a.every == b.every;
   }
 };
 
-/// Parses a --signal argument: `place:NAME`, `node:PATH.QUANTITY` or `python:EXPRESSION`
-/// (the text after the colon names the column). Nullopt with `why` when it is none of these.
+/// Parses a --signal argument: `place:NAME`, `place:NAME=VALUE` (one value's tokens: VALUE in
+/// the inscription language, its syntax checked here), `node:PATH.QUANTITY` or
+/// `python:EXPRESSION` (the text after the colon names the column). Nullopt with `why` when it
+/// is none of these.
 std::optional<SignalSpec> parseSignalArgument(const std::string& argument, std::string& why);
 
 /// The samples of a run: a time column and one column per signal value (a position gives
