@@ -282,7 +282,10 @@ NetLayout layoutPage(const net::PageSpec& page, core::Diagnostics& diags) {
     if (!p.fusion.empty()) tag += (tag.empty() ? "fusion " : ", fusion ") + p.fusion;
     l.places.push_back({p.name, at(p.position), {}, std::move(tag)});
   }
-  for (const auto& t : page.transitions) l.transitions.push_back({t.name, at(t.position), {}, {}});
+  // a transition's tag: its condition on its binding, in brackets as CPN tools write guards
+  for (const auto& t : page.transitions) {
+    l.transitions.push_back({t.name, at(t.position), {}, t.conditioned() ? "[" + t.when.text + "]" : std::string()});
+  }
   std::vector<double> widths;
   for (const auto& i : page.instances) {
     InstanceLayout box;

@@ -245,6 +245,13 @@ class Painter {
     }
     taken_.push_back(b);
     if (labels_) name({(b.min.x + b.max.x) / 2, b.min.y - kLabelGap * v_.zoom}, t.name, VAlign::Bottom);
+    // its condition (the tag): under the bar, else beside it, where it covers least
+    if (labels_ && !t.tag.empty()) {
+      Label l{t.tag, std::max(font_ * 0.85, kMinFontPx), HAlign::Centre, VAlign::Top, colours::kInscription, {}};
+      const double below = b.max.y + 1.5 * kLabelGap * v_.zoom + (s_ != nullptr ? font_ : 0.0);
+      l.anchors = {{(b.min.x + b.max.x) / 2, below}, {(b.min.x + b.max.x) / 2, b.min.y - kLabelGap * v_.zoom - 1.2 * font_}};
+      pending_.push_back(std::move(l));
+    }
     // with servers, how many of its occurrences run, under the bar
     const std::uint32_t n = s_ != nullptr && k < s_->occurrences.size() ? s_->occurrences[k] : 0;
     if (labels_ && n > 1) {
@@ -298,24 +305,25 @@ class Painter {
   }
 
   void tokens(const std::vector<SlotMarking>& slots, Point c, double r) {
-    // tokens per kind: control, node, sensor
-    std::array<std::int64_t, 3> per_kind{0, 0, 0};
+    // tokens per kind: control, node, sensor, value (SlotKind's order)
+    constexpr std::size_t kKinds = 4;
+    std::array<std::int64_t, kKinds> per_kind{0, 0, 0, 0};
     for (const auto& s : slots) per_kind[static_cast<std::size_t>(s.kind)] += s.count;
-    const std::int64_t total = per_kind[0] + per_kind[1] + per_kind[2];
+    const std::int64_t total = per_kind[0] + per_kind[1] + per_kind[2] + per_kind[3];
     if (total == 0) return;
     if (total <= kMaxDots) {
-      // dots: control tokens first, then node tokens, then sensor variables
+      // dots: control tokens first, then node tokens, sensor variables and values
       const auto offsets = dotPattern(total, r);
       const double dot = std::max(kDotRadius * v_.zoom, 1.0);
       std::size_t i = 0;
-      for (std::size_t kind = 0; kind < 3; ++kind)
+      for (std::size_t kind = 0; kind < kKinds; ++kind)
         for (std::int64_t n = 0; n < per_kind[kind]; ++n)
           c_.fillCircle(c + offsets[i++], dot, kindColour(static_cast<net::SlotKind>(kind)));
       return;
     }
     // numbers, one line per kind present, in the kind's colour
     std::vector<std::pair<std::string, Rgba>> lines;
-    for (std::size_t kind = 0; kind < 3; ++kind)
+    for (std::size_t kind = 0; kind < kKinds; ++kind)
       if (per_kind[kind] > 0) lines.emplace_back(std::to_string(per_kind[kind]), kindColour(static_cast<net::SlotKind>(kind)));
     const double size = std::min(1.6 * r / static_cast<double>(lines.size()), kMaxFontPx);
     if (size < kMinFontPx * 0.75) {

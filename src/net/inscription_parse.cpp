@@ -155,7 +155,7 @@ class Parser {
 
   Expr whole() {
     Expr e = expr();
-    if (peek().kind != Tok::End) fail("unexpected " + shown(peek()) + " after the inscription");
+    if (peek().kind != Tok::End) fail("expected the end of the inscription, found " + shown(peek()));
     clearDepths(e);
     return e;
   }

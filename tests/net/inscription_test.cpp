@@ -166,7 +166,7 @@ TEST(InscriptionParse, ErrorsAreLocated) {
   EXPECT_EQ(parseError("x +"), "m.gdpn.yaml:5:13: error: expected a value, found the end of the inscription");
   EXPECT_EQ(parseError("if x then y"), "m.gdpn.yaml:5:21: error: expected 'else' after the 'then' branch, found end "
                                        "of the inscription");
-  EXPECT_EQ(parseError("x y"), "m.gdpn.yaml:5:12: error: unexpected 'y' after the inscription");
+  EXPECT_EQ(parseError("x y"), "m.gdpn.yaml:5:12: error: expected the end of the inscription, found 'y'");
   EXPECT_EQ(parseError("a < b < c"), "m.gdpn.yaml:5:16: error: comparisons do not chain: put one of them in "
                                      "parentheses");
   EXPECT_EQ(parseError("2'x'y"), "m.gdpn.yaml:5:13: error: n'v takes one multiplicity: put the inner one in "

@@ -55,7 +55,7 @@ struct NodeLayout {
   Box box;           ///< what it covers, layout units (the circle's square for a place)
   /// A place's tag, drawn beside it as CPN Tools draws port and fusion tags: "port" for a
   /// place its page type publishes, "fusion NAME" for a member of a fusion set, both joined by
-  /// ", "; "" for none.
+  /// ", "; a transition's: its condition in brackets, "[x > 1]"; "" for none.
   std::string tag{};
 };
 

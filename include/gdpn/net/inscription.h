@@ -165,8 +165,9 @@ using ArcRoom = std::function<bool(std::size_t arc, std::int64_t tokens)>;
 /// of normal and test input arcs (a variable, a constant or a tuple of them, with a constant
 /// multiplicity) against the values their places hold, then by enumerating what finite sets
 /// leave free; each kept when the condition holds, every Take and Test arc's multiset is in
-/// its place (arcs on one place together), no Inhibit arc's multiset is (an empty one never
-/// inhibits), every value is of its set, and `room` (when given) allows every Put.
+/// its place (each arc's on its own: a place has one normal arc to a transition at most), no
+/// Inhibit arc's multiset is (an empty one never inhibits), every value is of its set, and
+/// `room` (when given) allows every Put.
 std::vector<BoundOccurrence> enabledBindings(const TransitionInscriptions& t, const Colours& colours,
                                              const ArcMarking& marking, const ArcRoom& room = {},
                                              std::size_t most = SIZE_MAX);
