@@ -96,6 +96,20 @@ TEST(Cli, RunPrintsTheSummary) {
   EXPECT_NE(r.out.find("thru [1/s]"), std::string::npos);
 }
 
+TEST(Cli, AColouredModelRunsToItsValuesAndIsAnalysedUnfoldedUnderItsOwnNames) {
+  // the job shop (value tokens): every job shipped, the machines idle again
+  auto r = gdpn("run examples/coloured/job_shop");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("values at the end:"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  main/idle: 1'lathe ++ 1'mill ++ 1'drill\n"), std::string::npos) << r.out;
+  // gdpn analyze unfolds it; queries name its places as written, a place counting all its values
+  r = gdpn("analyze examples/coloured/job_shop --query 'AG operators + loaded <= 2' --query 'bound(idle)'");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("query 1: AG main/operators + main/loaded <= 2\n  true (270 markings explored)"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("query 2: bound(main/idle)\n  3 "), std::string::npos) << r.out;
+}
+
 TEST(Cli, ReportHoldsTheExactCycleTimes) {
   const auto report = temp("gdpn_cycles_report.json");
   const auto r = gdpn("run tests/data/good/cycles.gdpn.yaml --quiet --report " + report);
