@@ -1203,7 +1203,7 @@ std::string Kernel::readinessText(TransitionId t) const {
   };
   switch (readiness(t)) {
     case Readiness::Able: return "able to start";
-    case Readiness::Untried: return "its arcs allow it; no firing phase has tried its guard, predicates or draw yet";
+    case Readiness::Untried: return "its arcs allow it; no firing phase has tried its guard, predicates, bindings or draw yet";
     case Readiness::Occurring:
       return tr.multi ? "occurring on all its " + std::to_string(servers(t)) + " servers" : std::string("occurring");
     case Readiness::Tokens:
