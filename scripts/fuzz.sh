@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs each libFuzzer target for SECONDS (default 60): the model loader, seeded with every
-# example and test model; the PNML reader, seeded with the test nets and the conformance nets;
+# example and test model; the PNML reader, seeded with the test nets and the conformance nets
+# (place/transition and coloured);
 # the mesh loader, seeded with the test meshes; the elevation loader, seeded with the test
 # elevation files; the input-event reader, seeded with the test input files; the query reader,
 # seeded with the test queries; the witness reader; the Modbus request decoder, seeded with the
@@ -24,7 +25,9 @@ fuzz() {  # fuzz NAME MAX_LEN 'NAME PATTERNS' SEED_DIRS...
     find_names+=(${find_names[@]:+-o} -name "$pattern")
   done
   for dir in "$@"; do
-    [ -d "$dir" ] && find "$dir" -maxdepth 1 -type f \( "${find_names[@]}" \) -exec cp {} "$work/seeds/" \;
+    # each seed under its path's name: folders of one model.pnml each do not overwrite one another
+    [ -d "$dir" ] && find "$dir" -maxdepth 1 -type f \( "${find_names[@]}" \) -print0 |
+      while IFS= read -r -d '' f; do cp "$f" "$work/seeds/${f//\//_}"; done
   done
   "build/asan/fuzz/$name" "$work/corpus" "$work/seeds" -max_total_time="$seconds" -max_len="$max_len" -timeout=10 \
     -rss_limit_mb=2048 -artifact_prefix="$work/" -print_final_stats=1 2>"$work/log" || {
@@ -38,7 +41,7 @@ fuzz() {  # fuzz NAME MAX_LEN 'NAME PATTERNS' SEED_DIRS...
 
 meshes='*.obj *.stl *.ply *.gltf *.glb *.dae *.3ds *.wrl *.iv'
 fuzz model_loader_fuzz 4096 '*.gdpn.yaml' examples/basics/* examples/plant/* examples/sorting examples/vision tests/data/good tests/data/bad tests/data/colour
-fuzz pnml_reader_fuzz 65536 '*.pnml' tests/data/pnml tests/data/conformance
+fuzz pnml_reader_fuzz 131072 '*.pnml' tests/data/pnml tests/data/conformance tests/data/conformance-col/*
 fuzz mesh_loader_fuzz 32768 "$meshes" tests/data/meshes tests/data/bad/files tests/data/physics tests/data/good/parts
 fuzz elevation_loader_fuzz 4096 '*.asc *.xyz *.tif *.png' tests/data/elevation tests/data/bad/files
 fuzz input_events_fuzz 4096 '*.input.yaml' tests/data/input
