@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -48,8 +50,16 @@ std::map<std::string, std::string> formulaOracle(const std::string& model) {
 
 class ColouredModels : public ::testing::TestWithParam<const char*> {};
 
+/// True for the model of 1.8 million markings, searched only in the label `full` (ctest
+/// --preset full, GDPN_CONTEST_FULL=1: minutes).
+bool skipped(const std::string& model) {
+  const char* full = std::getenv("GDPN_CONTEST_FULL");
+  return model == "SharedMemory-COL-000010" && !(full != nullptr && std::string(full) == "1");
+}
+
 TEST_P(ColouredModels, TheUnfoldedStateSpaceIsTheOracles) {
   const std::string model = GetParam();
+  if (skipped(model)) GTEST_SKIP() << model << " is searched in the label full";
   const auto unfolded = colourConformanceNet(model);
   ASSERT_TRUE(unfolded.net);
   const Net& net = *unfolded.net;
@@ -87,6 +97,9 @@ TEST_P(ColouredModels, TheUnfoldedStateSpaceIsTheOracles) {
 
 TEST_P(ColouredModels, EveryFormulaIsAnsweredAsTheOracleSays) {
   const std::string model = GetParam();
+  // its 112 formulas took more than 20 minutes on the project's 2 shared cores: its state space
+  // alone is checked, in the label full
+  if (model == "SharedMemory-COL-000010") GTEST_SKIP() << model << ": its state space alone is checked";
   const auto unfolded = colourConformanceNet(model);
   ASSERT_TRUE(unfolded.net);
   const Net& net = *unfolded.net;
@@ -120,6 +133,9 @@ INSTANTIATE_TEST_SUITE_P(Nets, ColouredModels,
                          ::testing::Values("DrinkVendingMachine-COL-02", "LamportFastMutEx-COL-2", "NeoElection-COL-2",
                                            "Philosophers-COL-000005", "SharedMemory-COL-000005", "Sudoku-COL-AN01",
                                            "Sudoku-COL-AN02", "TokenRing-COL-005"));
+// the ninth, 1.8 million markings and 19 million edges: its state space, in `ctest --preset full`
+// (colour_models_full)
+INSTANTIATE_TEST_SUITE_P(Big, ColouredModels, ::testing::Values("SharedMemory-COL-000010"));
 
 }  // namespace
 }  // namespace gdpn::net
