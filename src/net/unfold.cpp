@@ -157,6 +157,13 @@ class Unfolder {
                                   "', which is not finite: it cannot be unfolded");
           continue;
         }
+        if (static_cast<std::uint64_t>(*colours_.at(*set).size) > std::max(most_, kMostUnfoldedBindings)) {
+          diags_.error(c.loc, "place '" + p.name + "' holds values of '" + c.text + "', " +
+                                  std::to_string(*colours_.at(*set).size) + " of them: unfolding it would make more than " +
+                                  std::to_string(std::max(most_, kMostUnfoldedBindings)) +
+                                  " places (`gdpn analyze` searches it without unfolding)");
+          continue;
+        }
         vs.values = colours_.values(*set);
         Multiset initial;
         for (const auto& v : p.values) {

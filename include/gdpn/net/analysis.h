@@ -122,6 +122,15 @@ struct StateSpace {
   bool reversible = true;                ///< the initial marking is reachable from every marking
   std::vector<PlaceId> constant_places;  ///< places whose token count never changes
   std::uint64_t peak_bytes = 0;          ///< the most memory the search held, bytes
+  /// exploreColoured (value tokens): the most copies of one value in one place slot, the most
+  /// tokens one place of the unfolded net would hold; 0 for other searches.
+  std::int64_t max_value_count = 0;
+  /// exploreColoured: the distinct (transition, binding) pairs that occur, the transitions an
+  /// unfolding would need at least; 0 for other searches.
+  std::uint64_t bindings = 0;
+  /// exploreColoured: per step of deadlock_path, the binding it occurs in ("x=1, y=p2"; empty
+  /// for a transition without variables).
+  std::vector<std::string> deadlock_bindings;
 };
 
 /// Explores the reachability graph of `net` from its initial marking. Markings are packed

@@ -13,7 +13,8 @@
 
 namespace gdpn::net {
 
-/// The most bindings unfold() makes of one transition unless told otherwise.
+/// The most bindings unfold() makes of one transition, and places of one value slot, unless
+/// told otherwise.
 inline constexpr std::size_t kMostUnfoldedBindings = 100'000;
 
 /// A coloured net unfolded.
@@ -35,7 +36,8 @@ struct Unfolding {
 bool coloured(const NetSpec& spec);
 
 /// Unfolds `spec` (see Unfolding). Refused, with a located error in `diags`: an inscription
-/// that does not parse or type-check, a value slot of a set that is not finite, a transition
+/// that does not parse or type-check, a value slot of a set that is not finite or has more
+/// than `most_bindings` values, a transition
 /// with more than `most_bindings` bindings (or a variable of a set that is not finite), a
 /// coloured construct of a page type, an arc on a value slot without an inscription.
 std::optional<Unfolding> unfold(const NetSpec& spec, core::Diagnostics& diags,
