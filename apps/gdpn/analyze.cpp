@@ -38,6 +38,7 @@ struct AnalyzeArgs {
   std::string witness;               // where to write the first answer's witness
   std::string graph;                 // write the reachability graph here (.dot or .aut) instead
   std::vector<std::string> params;   // --param NAME=VALUE
+  std::string colours = "auto";      // --colours: auto, unfold or native
 };
 
 /// Reads the --query arguments: each is a file of formulas (one per line; blank lines and
@@ -127,8 +128,17 @@ int analyze(AnalyzeArgs a) {
     }
   }
   // a coloured net is analysed unfolded; queries name its places and transitions as written
+  // queries and graphs name the unfolded net's markings: a coloured net is unfolded for them
+  const bool unfolded_only = !a.queries.empty() || !a.graph.empty();
+  if (unfolded_only && a.colours == "native") {
+    std::cerr << "error: --colours native: queries and graphs need the net unfolded (--colours unfold or auto)\n";
+    return 2;
+  }
+  const auto how = a.colours == "native" ? session::ColourSearch::Native
+                   : a.colours == "unfold" || unfolded_only ? session::ColourSearch::Unfold
+                                                            : session::ColourSearch::Auto;
   std::optional<session::AnalysedNet> analysed;
-  if (spec) analysed = session::analysedNet(*spec, diags);
+  if (spec) analysed = session::analysedNet(*spec, diags, how);
   diags.print(std::cerr);
   if (!analysed) return 1;
   const gdpn::net::NameExpansion* expansion = analysed->expansion();
@@ -266,6 +276,10 @@ Subcommand addAnalyze(CLI::App& app) {
                         "with --query: search reachability without stubborn sets (every enabled transition fires)");
   analyze_cmd->add_flag("--shortest-path", args->request.shortest_path,
                         "give a shortest path to a deadlock (a second pass over the states)");
+  analyze_cmd->add_option("--colours", args->colours,
+                          "a coloured net: 'unfold' it into a place/transition net, search it over markings with "
+                          "values ('native': the state space, no queries), or 'auto': unfolded where unfolding can")
+      ->check(CLI::IsMember({"auto", "unfold", "native"}));
   analyze_cmd->add_flag("--progress", args->progress,
                         "print a progress line every 250 ms even when stderr is not a terminal");
 

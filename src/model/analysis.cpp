@@ -12,6 +12,7 @@
 #include <tuple>
 
 #include "gdpn/core/text.h"
+#include "gdpn/net/coloured_search.h"
 #include "gdpn/net/kernel.h"
 
 namespace gdpn::model {
@@ -101,7 +102,7 @@ Analysis analyze(const net::Net& net, std::string path, const AnalysisOptions& o
   phase("cycle times");
   if (timed(net) && net.countsExact()) a.cycles = net::cycleBounds(net, a.invariants, effectiveDurations(net, options.dt), limits, &a.cycles_stop);
   explore.invariants = &a.invariants;  // their bounds size the markings
-  a.space = net::explore(net, explore);
+  a.space = net.colouring() ? net::exploreColoured(net, explore) : net::explore(net, explore);
   return a;
 }
 
@@ -225,6 +226,8 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
   j["deadlock"] = s.deadlock;
   j["deadlock_path"] = ordered_json::array();
   for (auto t : s.deadlock_path) j["deadlock_path"].push_back(net.transitionName(t));
+  if (!s.deadlock_bindings.empty()) j["deadlock_bindings"] = s.deadlock_bindings;
+  if (!s.dead_marking.empty()) j["dead_marking"] = s.dead_marking;
   j["dead_markings"] = s.dead_markings;
   j["more_dead_paths"] = ordered_json::array();
   for (const auto& path : s.more_dead_paths) {
@@ -342,7 +345,13 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
         " after " + std::to_string(s.deadlock_path.size()) + (s.deadlock_path.size() == 1 ? " firing:" : " firings:");
     out << head;
     std::vector<std::string> names;
-    for (auto t : s.deadlock_path) names.emplace_back(net.transitionName(t));
+    for (std::size_t i = 0; i < s.deadlock_path.size(); ++i) {
+      names.emplace_back(net.transitionName(s.deadlock_path[i]));
+      // a binding as CPN Tools writes one: t<x=1, y=p2>
+      if (i < s.deadlock_bindings.size() && !s.deadlock_bindings[i].empty()) {
+        names.back() += "<" + s.deadlock_bindings[i] + ">";
+      }
+    }
     core::writeWrapped(out, kValue + 3 + head.size(), names, kValue);
   } else if (s.deadlock && s.complete && s.bounded) {
     out << " (the initial marking is dead)";
@@ -364,7 +373,12 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
     out << "\n  dead marking:   ";
     core::writeWrapped(out, kValue - 1, marked, kValue, kShownNames);
   };
-  if (s.deadlock && (!s.deadlock_path.empty() || (s.complete && s.bounded))) deadMarking(s.deadlock_path);
+  if (!s.dead_marking.empty()) {
+    out << "\n  dead marking:   ";
+    core::writeWrapped(out, kValue - 1, s.dead_marking, kValue, kShownNames);
+  } else if (s.deadlock && (!s.deadlock_path.empty() || (s.complete && s.bounded))) {
+    deadMarking(s.deadlock_path);
+  }
   // the next ones the search met, each with its path
   for (const auto& path : s.more_dead_paths) {
     if (path.empty() || !s.bounded) continue;

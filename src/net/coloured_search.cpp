@@ -22,6 +22,7 @@
 
 #include "detail/marking_store.h"
 #include "gdpn/net/inscription.h"
+#include "gdpn/net/invariants.h"
 
 namespace gdpn::net {
 namespace {
@@ -659,6 +660,24 @@ StateSpace Search::run() {
       out.deadlock_bindings.push_back(std::move(text));
     }
     std::reverse(out.deadlock_path.begin(), out.deadlock_path.end());
+    // the dead marking, per place slot
+    std::vector<Entry> dead;
+    decode(first_dead, dead);
+    std::map<PlaceSlotId, Multiset> held;
+    std::map<PlaceSlotId, std::int64_t> counted;
+    for (const Entry& e : dead) {
+      const PlaceSlotId ps = slot_ps_[e.slot];
+      if (isValueSlot(ps)) held[ps].emplace(values_[slot_value_[e.slot]], e.count);
+      else counted[ps] = e.count;
+    }
+    for (const PlaceSlotId ps : net_.placeSlotIds()) {
+      if (held.count(ps)) {
+        out.dead_marking.push_back(placeSlotName(net_, ps) + " = " +
+                                   c_.colours.text(static_cast<ColourId>(c_.slot_set[ps]), held[ps]));
+      } else if (counted.count(ps)) {
+        out.dead_marking.push_back(placeSlotName(net_, ps) + " = " + std::to_string(counted[ps]));
+      }
+    }
     std::reverse(out.deadlock_bindings.begin(), out.deadlock_bindings.end());
   }
   for (const PlaceId p : net_.placeIds()) {

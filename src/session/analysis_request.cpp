@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "gdpn/core/memory.h"
+#include "gdpn/net/coloured_search.h"
 #include "gdpn/net/compile.h"
 #include "gdpn/net/unfold.h"
 
@@ -46,17 +47,40 @@ std::string AnalysisAnswer::guardNote(std::string_view option) const {
   return "stopped at the default " + std::string(option) + ", 3/4 of the memory available at the start (" + mib + " MiB)";
 }
 
-std::optional<AnalysedNet> analysedNet(const net::NetSpec& spec, core::Diagnostics& diags) {
+std::optional<AnalysedNet> analysedNet(const net::NetSpec& spec, core::Diagnostics& diags, ColourSearch how) {
   AnalysedNet out;
-  if (net::coloured(spec)) {
-    auto unfolded = net::unfold(spec, diags);
-    if (!unfolded) return std::nullopt;
-    out.net = net::compile(unfolded->net, diags);
-    out.names = std::move(unfolded->names);
-  } else {
+  if (!net::coloured(spec)) {
     out.net = net::compile(spec, diags);
+    if (!out.net) return std::nullopt;
+    return out;
   }
+  std::optional<core::Diagnostic> why_not;
+  if (how != ColourSearch::Native) {
+    // Auto: unfolding's refusal kept aside, a note where the native search takes over
+    core::Diagnostics unfolding;
+    auto unfolded = net::unfold(spec, how == ColourSearch::Unfold ? diags : unfolding);
+    if (unfolded) {
+      out.net = net::compile(unfolded->net, diags);
+      out.names = std::move(unfolded->names);
+      if (!out.net) return std::nullopt;
+      return out;
+    }
+    if (how == ColourSearch::Unfold) return std::nullopt;
+    for (const auto& d : unfolding.all()) {
+      if (d.severity == core::Severity::Error && !why_not) why_not = d;
+    }
+  }
+  out.net = net::compile(spec, diags);
   if (!out.net) return std::nullopt;
+  if (const std::string refusal = net::colouredRefusal(*out.net); !refusal.empty()) {
+    diags.error(spec.pages.empty() ? core::SourceLoc{} : spec.pages.front().loc,
+                "the coloured net cannot be searched without unfolding: " + refusal);
+    return std::nullopt;
+  }
+  out.native = true;
+  if (why_not) {
+    diags.note(why_not->loc, "analysed over markings with values, without unfolding: " + why_not->message);
+  }
   return out;
 }
 

@@ -131,6 +131,9 @@ struct StateSpace {
   /// exploreColoured: per step of deadlock_path, the binding it occurs in ("x=1, y=p2"; empty
   /// for a transition without variables).
   std::vector<std::string> deadlock_bindings;
+  /// exploreColoured: the first dead marking, per marked place slot "name = what it holds"
+  /// ("main/bin = red ++ 2'blue"; a count slot's count), in place slot order.
+  std::vector<std::string> dead_marking;
 };
 
 /// Explores the reachability graph of `net` from its initial marking. Markings are packed

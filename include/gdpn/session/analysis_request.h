@@ -62,18 +62,28 @@ struct AnalysisAnswer {
   [[nodiscard]] std::string guardNote(std::string_view option) const;
 };
 
+/// How the analysis reads a coloured net (semantics: *Analysis*).
+enum class ColourSearch : std::uint8_t {
+  Auto,    ///< unfolded where unfolding can, else over markings with values
+  Unfold,  ///< unfolded into a place/transition net, or refused with unfolding's reasons
+  Native,  ///< over markings with values, never unfolded (the state space, no queries)
+};
+
 /// The net an analysis reads, and how a coloured net's names map onto it.
 struct AnalysedNet {
-  std::shared_ptr<const net::Net> net;       ///< compiled; a coloured net unfolded first
+  std::shared_ptr<const net::Net> net;       ///< compiled; a coloured net unfolded first, unless `native`
+  bool native = false;                       ///< a coloured net compiled as it is, searched over markings with values
   std::optional<net::NameExpansion> names;   ///< a coloured net's: its places and transitions -> the unfolded ones
   /// The expansion for the query parsers and printers (null for a net without colours).
   [[nodiscard]] const net::NameExpansion* expansion() const { return names ? &*names : nullptr; }
 };
 
 /// What every face analyses of `spec`: the spec compiled, or, when it has colours (value
-/// tokens), unfolded into a place/transition net first (semantics: *Value tokens*). Nullopt
-/// after mistakes, in `diags`.
-[[nodiscard]] std::optional<AnalysedNet> analysedNet(const net::NetSpec& spec, core::Diagnostics& diags);
+/// tokens), unfolded into a place/transition net first, or compiled as it is (`how`; Auto:
+/// natively where unfolding refuses, with a note saying why). Nullopt after mistakes, in
+/// `diags`.
+[[nodiscard]] std::optional<AnalysedNet> analysedNet(const net::NetSpec& spec, core::Diagnostics& diags,
+                                                     ColourSearch how = ColourSearch::Auto);
 
 /// The analysis of `net` (read from `path`) under `request`.
 [[nodiscard]] AnalysisAnswer analyze(const net::Net& net, std::string path, const AnalysisRequest& request);
