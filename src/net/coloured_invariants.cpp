@@ -1,6 +1,7 @@
 #include "gdpn/net/coloured_invariants.h"
 
 #include <algorithm>
+#include <iterator>
 #include <map>
 #include <numeric>
 #include <set>
@@ -517,16 +518,20 @@ ColouredInvariants colouredInvariants(const Net& net, const ColouredInvariantOpt
   solve(net, std::nullopt, options, out);
   const Colouring* colouring = net.colouring();
   if (colouring == nullptr) return out;
-  // the sets D: every finite set of 2 to most_values values a value slot has or has as a component
-  std::set<ColourId> candidates;
+  // the sets D: every finite set of 2 to most_values values a value slot has or has as a
+  // component, and some transition has a variable of (else no value of D moves but constants)
+  std::set<ColourId> slots, variables;
   for (const auto s : colouring->slot_set) {
     if (s < 0) continue;
     const auto& set = colouring->colours.at(static_cast<ColourId>(s));
-    candidates.insert(static_cast<ColourId>(s));
+    slots.insert(static_cast<ColourId>(s));
     if (set.kind == ColourKind::Product || set.kind == ColourKind::Record) {
-      candidates.insert(set.components.begin(), set.components.end());
+      slots.insert(set.components.begin(), set.components.end());
     }
   }
+  for (const auto& ti : colouring->transitions) variables.insert(ti.sets.begin(), ti.sets.end());
+  std::vector<ColourId> candidates;
+  std::set_intersection(slots.begin(), slots.end(), variables.begin(), variables.end(), std::back_inserter(candidates));
   for (const ColourId d : candidates) {
     const auto& set = colouring->colours.at(d);
     if (!set.size || *set.size < 2 || *set.size > options.most_values) continue;

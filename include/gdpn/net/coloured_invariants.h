@@ -67,9 +67,10 @@ struct ColouredInvariants {
   std::vector<std::string> notes;
 };
 
-/// The P-invariants of coloured net `net` over counts and over each finite colour set of at
-/// most options.most_values values that a value slot's set is or has as a component (see the
-/// file comment). A net without value tokens gets its P-invariants over counts.
+/// The P-invariants of coloured net `net` over counts and over each finite colour set of 2 to
+/// options.most_values values that a value slot's set is or has as a component and some
+/// transition has a variable of (see the file comment). A net without value tokens gets its
+/// P-invariants over counts.
 ColouredInvariants colouredInvariants(const Net& net, const ColouredInvariantOptions& options = {});
 
 /// The weight invariant `inv` gives a token on place slot `ps` of value `value` (null for a
