@@ -230,7 +230,17 @@ int analyze(AnalyzeArgs a) {
                  static_cast<double>(p.states) / secs / 1e6, static_cast<double>(p.bytes) / (1024.0 * 1024.0));
     std::fputs(a.progress ? "\n" : "", stderr);
   };
-  const auto answer = session::analyze(*net, path, request);
+  auto answer = session::analyze(*net, path, request);
+  if (gdpn::net::coloured(*spec)) {
+    // a coloured net's own P-invariants, found on it without unfolding (its mistakes were
+    // reported above, as the unfolding met them)
+    Diagnostics quiet;
+    if (const auto coloured = gdpn::net::compile(*spec, quiet)) {
+      gdpn::net::ColouredInvariantOptions options;
+      if (request.time_limit_s > 0.0) options.limits.deadline = gdpn::net::deadlineAfter(request.time_limit_s);
+      answer.analysis.coloured = model::colouredInvariantLines(*coloured, gdpn::net::colouredInvariants(*coloured, options));
+    }
+  }
   const model::Analysis& result = answer.analysis;
   if (drawn) std::fprintf(stderr, "\r\033[K");
   if (answer.stoppedAtGuard()) std::cerr << "note: " << answer.guardNote("--max-memory") << "\n";

@@ -208,6 +208,14 @@ void appendMember(nlohmann::ordered_json& o, std::string key, nlohmann::ordered_
 
 }  // namespace
 
+ColouredInvariantLines colouredInvariantLines(const net::Net& net, const net::ColouredInvariants& found) {
+  ColouredInvariantLines out;
+  out.complete = found.complete;
+  for (const auto& inv : found.invariants) out.invariants.push_back(net::colouredInvariantText(net, inv));
+  out.notes = found.notes;
+  return out;
+}
+
 std::string analysisJson(const net::Net& net, const Analysis& a) {
   using nlohmann::ordered_json;
   const auto& s = a.space;
@@ -277,6 +285,11 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
     ij["t"].push_back(w);
   }
   j["invariants"] = ij;
+  if (a.coloured) {
+    j["coloured_invariants"] = {{"complete", a.coloured->complete},
+                                {"invariants", a.coloured->invariants},
+                                {"notes", a.coloured->notes}};
+  }
   j["cycle_times"] = ordered_json::array();
   for (const auto& c : a.cycles) {
     ordered_json names = ordered_json::array();
@@ -457,6 +470,24 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
     out << "\n";
   }
   if (inv.t.size() > kShown) out << "    ... and " << inv.t.size() - kShown << " more (--json lists all)\n";
+  if (const auto& c = a.coloured) {
+    // the coloured net's own, in its places' names, each wrapped under its start
+    out << "  coloured P-invariants, found without unfolding (" << c->invariants.size() << ")"
+        << (c->complete ? "" : " (partial)") << ":" << (c->invariants.empty() ? " none" : "") << "\n";
+    for (std::size_t i = 0; i < c->invariants.size() && i < kShown; ++i) {
+      out << "   ";
+      core::writeWrapped(out, 3, core::words(c->invariants[i]), 6);
+      out << "\n";
+    }
+    if (c->invariants.size() > kShown) out << "    ... and " << c->invariants.size() - kShown << " more (--json lists all)\n";
+    constexpr std::size_t kNotes = 3;
+    for (std::size_t i = 0; i < c->notes.size() && i < kNotes; ++i) {
+      out << "    note:";
+      core::writeWrapped(out, 9, core::words(c->notes[i]), 10);
+      out << "\n";
+    }
+    if (c->notes.size() > kNotes) out << "    ... and " << c->notes.size() - kNotes << " more notes (--json lists all)\n";
+  }
   if (!a.cycles.empty()) {
     out << "cycle times (one token's longest circuit, else durations summed over tokens; alike ones once):\n";
     bool flow = false, immediate = false;

@@ -478,6 +478,14 @@ Invariants invariants(const Net& net, const InvariantOptions& options) {
   return out;
 }
 
+std::vector<Invariant> semiflowsOf(const std::vector<std::vector<std::pair<std::uint32_t, std::int64_t>>>& rows,
+                                   std::size_t columns, const InvariantOptions& options, ExploreStop* stop) {
+  Budget budget(options);
+  auto out = semiflows(rows, columns, budget);
+  if (stop != nullptr) *stop = budget.stop();
+  return out;
+}
+
 bool isPInvariant(const Net& net, const Invariant& y) {
   std::vector<std::int64_t> sum(net.transitions().size(), 0);
   for (const auto& [k, w] : y.weights) {

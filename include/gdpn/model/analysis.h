@@ -4,6 +4,7 @@
 /// gathered once and printed as text or JSON.
 
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "gdpn/net/analysis.h"
+#include "gdpn/net/coloured_invariants.h"
 #include "gdpn/net/query.h"
 #include "gdpn/net/invariants.h"
 
@@ -27,6 +29,17 @@ struct AnalysisOptions {
   std::function<void(const char* phase, const net::InvariantProgress&)> progress;
 };
 
+/// A coloured net's P-invariants found on it without unfolding it (net::colouredInvariants),
+/// as `gdpn analyze` reports them.
+struct ColouredInvariantLines {
+  bool complete = true;                 ///< false when a limit stopped their computation
+  std::vector<std::string> invariants;  ///< each as net::colouredInvariantText writes it
+  std::vector<std::string> notes;       ///< what was left out and why
+};
+
+/// `found`, of coloured net `net`, as lines.
+ColouredInvariantLines colouredInvariantLines(const net::Net& net, const net::ColouredInvariants& found);
+
 /// Everything `gdpn analyze` reports.
 struct Analysis {
   std::string path;                     ///< the model or PNML file
@@ -34,6 +47,9 @@ struct Analysis {
   net::Invariants invariants;           ///< P- and T-invariants, structural properties
   std::vector<net::CycleBound> cycles;  ///< cycle-time bounds, largest first (timed nets only)
   net::ExploreStop cycles_stop = net::ExploreStop::Done;  ///< why the cycle-time bounds stopped early
+  /// A coloured net's P-invariants found without unfolding it (the others are the unfolded
+  /// net's); none for a net without colours.
+  std::optional<ColouredInvariantLines> coloured;
   /// True when every phase finished.
   [[nodiscard]] bool complete() const {
     return space.complete && invariants.complete && cycles_stop == net::ExploreStop::Done;

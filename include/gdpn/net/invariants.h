@@ -75,6 +75,14 @@ Incidence incidenceMatrix(const Net& net);
 /// Computes the invariants of `net`.
 Invariants invariants(const Net& net, const InvariantOptions& options = {});
 
+/// The minimal semi-positive semiflows y·A = 0 of any sparse integer matrix A, given by its
+/// rows (each (column, value) pairs sorted by column, no zeros; columns below `columns`): the
+/// Farkas algorithm that invariants() runs, a connected part at a time, under `options`. Where
+/// a limit stops it, what was found is returned and `stop` (when given) says why; else Done.
+std::vector<Invariant> semiflowsOf(const std::vector<std::vector<std::pair<std::uint32_t, std::int64_t>>>& rows,
+                                   std::size_t columns, const InvariantOptions& options = {},
+                                   ExploreStop* stop = nullptr);
+
 /// True when `y` really is a P-invariant of `net` (y·C = 0, y semi-positive).
 bool isPInvariant(const Net& net, const Invariant& y);
 /// True when `x` really is a T-invariant of `net` (C·x = 0, x semi-positive).
