@@ -395,7 +395,7 @@ class Model {
       session::AnalysisAnswer answer;
       {
         py::gil_scoped_release unlocked;
-        answer = session::analyze(net, path_, request);
+        answer = session::analyze(*analysed, path_, request);
       }
       // as gdpn analyze's note (a warning that a filter turns into an error raises it)
       if (answer.stoppedAtGuard() && PyErr_WarnEx(PyExc_RuntimeWarning, answer.guardNote("max_memory_mib").c_str(), 1) < 0) {

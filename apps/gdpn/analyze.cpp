@@ -127,7 +127,6 @@ int analyze(AnalyzeArgs a) {
       request.dt = m->settings.dt;
     }
   }
-  // a coloured net is analysed unfolded; queries name its places and transitions as written
   // queries and graphs name the unfolded net's markings: a coloured net is unfolded for them
   const bool unfolded_only = !a.queries.empty() || !a.graph.empty();
   if (unfolded_only && a.colours == "native") {
@@ -230,17 +229,7 @@ int analyze(AnalyzeArgs a) {
                  static_cast<double>(p.states) / secs / 1e6, static_cast<double>(p.bytes) / (1024.0 * 1024.0));
     std::fputs(a.progress ? "\n" : "", stderr);
   };
-  auto answer = session::analyze(*net, path, request);
-  if (gdpn::net::coloured(*spec)) {
-    // a coloured net's own P-invariants, found on it without unfolding (its mistakes were
-    // reported above, as the unfolding met them)
-    Diagnostics quiet;
-    if (const auto coloured = gdpn::net::compile(*spec, quiet)) {
-      gdpn::net::ColouredInvariantOptions options;
-      if (request.time_limit_s > 0.0) options.limits.deadline = gdpn::net::deadlineAfter(request.time_limit_s);
-      answer.analysis.coloured = model::colouredInvariantLines(*coloured, gdpn::net::colouredInvariants(*coloured, options));
-    }
-  }
+  const auto answer = session::analyze(*analysed, path, request);
   const model::Analysis& result = answer.analysis;
   if (drawn) std::fprintf(stderr, "\r\033[K");
   if (answer.stoppedAtGuard()) std::cerr << "note: " << answer.guardNote("--max-memory") << "\n";

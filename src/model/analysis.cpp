@@ -103,6 +103,12 @@ Analysis analyze(const net::Net& net, std::string path, const AnalysisOptions& o
   if (timed(net) && net.countsExact()) a.cycles = net::cycleBounds(net, a.invariants, effectiveDurations(net, options.dt), limits, &a.cycles_stop);
   explore.invariants = &a.invariants;  // their bounds size the markings
   a.space = net.colouring() ? net::exploreColoured(net, explore) : net::explore(net, explore);
+  if (options.coloured) {
+    phase("coloured invariants");
+    net::ColouredInvariantOptions coloured;
+    coloured.limits = limits;
+    a.coloured = colouredInvariantLines(*options.coloured, net::colouredInvariants(*options.coloured, coloured));
+  }
   return a;
 }
 

@@ -63,6 +63,8 @@ std::optional<AnalysedNet> analysedNet(const net::NetSpec& spec, core::Diagnosti
       out.net = net::compile(unfolded->net, diags);
       out.names = std::move(unfolded->names);
       if (!out.net) return std::nullopt;
+      core::Diagnostics quiet;  // what it could say, the unfolding said
+      out.coloured = net::compile(spec, quiet);
       return out;
     }
     if (how == ColourSearch::Unfold) return std::nullopt;
@@ -78,6 +80,7 @@ std::optional<AnalysedNet> analysedNet(const net::NetSpec& spec, core::Diagnosti
     return std::nullopt;
   }
   out.native = true;
+  out.coloured = out.net;
   if (why_not) {
     diags.note(why_not->loc, "analysed over markings with values, without unfolding: " + why_not->message);
   }
@@ -85,7 +88,15 @@ std::optional<AnalysedNet> analysedNet(const net::NetSpec& spec, core::Diagnosti
 }
 
 AnalysisAnswer analyze(const net::Net& net, std::string path, const AnalysisRequest& request) {
+  // a net the caller holds: the pointer owns nothing
+  return analyze(AnalysedNet{std::shared_ptr<const net::Net>(std::shared_ptr<const net::Net>(), &net), false, nullptr, {}},
+                 std::move(path), request);
+}
+
+AnalysisAnswer analyze(const AnalysedNet& analysed, std::string path, const AnalysisRequest& request) {
+  const net::Net& net = *analysed.net;
   model::AnalysisOptions options;
+  options.coloured = analysed.coloured.get();
   options.explore = request.limits();
   options.explore.progress = request.progress;
   options.dt = request.dt;

@@ -10,7 +10,7 @@
 #include <set>
 #include <tuple>
 
-#include "gdpn/model/load.h"
+#include "gdpn/model/model.h"
 #include "gdpn/session/analysis_request.h"
 
 namespace gdpn::session {

@@ -27,6 +27,9 @@ struct AnalysisOptions {
   double time_limit_s = 0.0;    ///< stop every phase this many seconds after the start (partial answer); 0: none
   /// Progress of the invariants and cycle-time phases: the phase's name and how far it is.
   std::function<void(const char* phase, const net::InvariantProgress&)> progress;
+  /// A coloured net as written (compiled without unfolding) whose own P-invariants are wanted
+  /// beside the net analysed (its unfolding, or itself); null for none.
+  const net::Net* coloured = nullptr;
 };
 
 /// A coloured net's P-invariants found on it without unfolding it (net::colouredInvariants),

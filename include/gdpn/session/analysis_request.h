@@ -73,6 +73,9 @@ enum class ColourSearch : std::uint8_t {
 struct AnalysedNet {
   std::shared_ptr<const net::Net> net;       ///< compiled; a coloured net unfolded first, unless `native`
   bool native = false;                       ///< a coloured net compiled as it is, searched over markings with values
+  /// A coloured net compiled as it is (its own invariants are found on it; `net` when native);
+  /// null for a net without colours.
+  std::shared_ptr<const net::Net> coloured;
   std::optional<net::NameExpansion> names;   ///< a coloured net's: its places and transitions -> the unfolded ones
   /// The expansion for the query parsers and printers (null for a net without colours).
   [[nodiscard]] const net::NameExpansion* expansion() const { return names ? &*names : nullptr; }
@@ -87,6 +90,9 @@ struct AnalysedNet {
 
 /// The analysis of `net` (read from `path`) under `request`.
 [[nodiscard]] AnalysisAnswer analyze(const net::Net& net, std::string path, const AnalysisRequest& request);
+/// The analysis of `analysed` (read from `path`) under `request`: of its net, and a coloured
+/// net's own P-invariants found without unfolding it.
+[[nodiscard]] AnalysisAnswer analyze(const AnalysedNet& analysed, std::string path, const AnalysisRequest& request);
 /// The answers to `formulas` on `net` under `request`'s limits, each as soon as a search
 /// decides it (in their order).
 [[nodiscard]] std::vector<net::QueryAnswer> answerQueries(const net::Net& net, const std::vector<net::Formula>& formulas,
