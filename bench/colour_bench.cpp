@@ -16,6 +16,13 @@ using namespace gdpn::net;
 
 gdpn::core::SourceLoc at(int line) { return gdpn::core::SourceLoc{"colour_bench", line, 1}; }
 
+/// Jobs lo..hi-1 as a multiset sum, nested as a balanced tree (the parser limits nesting).
+std::string jobSum(std::int64_t lo, std::int64_t hi) {
+  if (hi - lo == 1) return "1'{id = " + std::to_string(lo * 100) + ", name = \"job" + std::to_string(lo) + "\"}";
+  const std::int64_t mid = lo + (hi - lo) / 2;
+  return "(" + jobSum(lo, mid) + ") ++ (" + jobSum(mid, hi) + ")";
+}
+
 /// A job shop's worth of value tokens, written as specs: `jobs` jobs, each a record {id: N,
 /// name: string} with N the range 0..999999 (10^6 values: the record set is not finite, so
 /// the net cannot be unfolded). Every transition lasts one step and has unlimited servers, so
@@ -74,12 +81,7 @@ std::shared_ptr<const Net> pipeline(std::int64_t jobs, bool stamp) {
   };
 
   // the jobs spread over the range, 100 apart: each runs for a long while before it stops
-  std::string values;
-  for (std::int64_t i = 0; i < jobs; ++i) {
-    if (i > 0) values += " ++ ";
-    values += "1'{id = " + std::to_string(i * 100) + ", name = \"job" + std::to_string(i) + "\"}";
-  }
-  place("queue", "Job", values);
+  place("queue", "Job", jobSum(0, jobs));
   place("busy", "Job", {});
   transition("work", "j.id < 999999");
   transition("check", stamp ? "n = j.id * 2" : "");
