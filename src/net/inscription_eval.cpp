@@ -56,6 +56,30 @@ std::optional<std::int64_t> arithmetic(Expr::Op op, std::int64_t a, std::int64_t
   return std::nullopt;
 }
 
+// e's value without a copy where it is a constant, a variable or a field of one: a pointer into
+// `e` or `b`; null otherwise (and where it has no value)
+const Value* peek(const Expr& e, const Binding& b) {
+  if (e.op == Expr::Op::Const) return &e.value;
+  if (e.op == Expr::Op::Var) {
+    return e.index >= 0 && static_cast<std::size_t>(e.index) < b.size() ? &b[static_cast<std::size_t>(e.index)] : nullptr;
+  }
+  if (e.op == Expr::Op::Field) {
+    const Value* r = peek(e.args[0], b);
+    if (!r || r->tag != Value::Tag::Tuple || e.index < 0 || static_cast<std::size_t>(e.index) >= r->items.size()) {
+      return nullptr;
+    }
+    return &r->items[static_cast<std::size_t>(e.index)];
+  }
+  return nullptr;
+}
+
+// e's value: peeked where it can be, else evaluated into `scratch`; null where it has none
+const Value* valueOf(const Expr& e, const Binding& b, const Colours& colours, std::optional<Value>& scratch) {
+  if (const Value* v = peek(e, b)) return v;
+  scratch = evaluate(e, b, colours);
+  return scratch ? &*scratch : nullptr;
+}
+
 // a number made by the language: a value of its node's set, or none outside its range
 std::optional<Value> number(std::int64_t n, ColourId set, const Colours& colours) {
   Value v = Value::integer(n);
@@ -95,11 +119,12 @@ std::optional<Value> step(const Value& v, ColourId id, const Colours& colours, i
 bool into(const Expr& e, const Binding& b, const Colours& colours, std::optional<ColourId> set, Multiset& out,
           std::int64_t times);
 
-// adds `times` x `v` to `out`, when it is of `set`
-bool add(const Value& v, const Colours& colours, std::optional<ColourId> set, Multiset& out, std::int64_t times) {
+// adds `times` x `v` to `out`, when it is of `set` (moved in when it is new there)
+template <class V>
+bool add(V&& v, const Colours& colours, std::optional<ColourId> set, Multiset& out, std::int64_t times) {
   if (set && !colours.contains(*set, v)) return false;
   if (times == 0) return true;
-  std::int64_t& k = out[v];
+  std::int64_t& k = out.try_emplace(std::forward<V>(v), 0).first->second;
   if (__builtin_add_overflow(k, times, &k)) return false;
   return true;
 }
@@ -208,8 +233,9 @@ bool into(const Expr& e, const Binding& b, const Colours& colours, std::optional
     case Expr::Op::Succ:
     case Expr::Op::Pred: break;
   }
-  const auto v = evaluate(e, b, colours);
-  return v && add(*v, colours, set, out, times);
+  if (const Value* v = peek(e, b)) return add(*v, colours, set, out, times);
+  auto v = evaluate(e, b, colours);
+  return v && add(std::move(*v), colours, set, out, times);
 }
 
 }  // namespace
@@ -237,6 +263,7 @@ std::optional<Value> evaluate(const Expr& e, const Binding& b, const Colours& co
       const auto& fields = colours.at(e.type).fields;
       if (fields.size() != e.args.size()) return std::nullopt;
       std::vector<Value> parts;
+      parts.reserve(fields.size());
       for (const std::string& f : fields) {
         const auto it = std::find(e.fields.begin(), e.fields.end(), f);
         if (it == e.fields.end()) return std::nullopt;
@@ -247,6 +274,7 @@ std::optional<Value> evaluate(const Expr& e, const Binding& b, const Colours& co
       return Value::tuple(std::move(parts));
     }
     case Expr::Op::Field: {
+      if (const Value* v = peek(e, b)) return *v;
       auto r = evaluate(e.args[0], b, colours);
       if (!r || r->tag != Value::Tag::Tuple || e.index < 0 || static_cast<std::size_t>(e.index) >= r->items.size()) {
         return std::nullopt;
@@ -263,9 +291,10 @@ std::optional<Value> evaluate(const Expr& e, const Binding& b, const Colours& co
     case Expr::Op::Mul:
     case Expr::Op::Div:
     case Expr::Op::Mod: {
-      const auto x = evaluate(e.args[0], b, colours);
+      std::optional<Value> xs, ys;
+      const Value* x = valueOf(e.args[0], b, colours, xs);
       if (!x || x->tag != Value::Tag::Int) return std::nullopt;
-      const auto y = evaluate(e.args[1], b, colours);
+      const Value* y = valueOf(e.args[1], b, colours, ys);
       if (!y || y->tag != Value::Tag::Int) return std::nullopt;
       const auto r = arithmetic(e.op, x->i, y->i);
       if (!r) return std::nullopt;
@@ -292,9 +321,10 @@ std::optional<Value> evaluate(const Expr& e, const Binding& b, const Colours& co
     case Expr::Op::Le:
     case Expr::Op::Gt:
     case Expr::Op::Ge: {
-      const auto x = evaluate(e.args[0], b, colours);
+      std::optional<Value> xs, ys;
+      const Value* x = valueOf(e.args[0], b, colours, xs);
       if (!x) return std::nullopt;
-      const auto y = evaluate(e.args[1], b, colours);
+      const Value* y = valueOf(e.args[1], b, colours, ys);
       if (!y) return std::nullopt;
       const std::strong_ordering c = *x <=> *y;
       const Expr::Op op = e.op;

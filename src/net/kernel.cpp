@@ -89,6 +89,10 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
     for (const auto& terms : colouring_->arc_terms) {
       for (std::size_t k = 0; k < terms.size(); ++k) term_arc_[terms[k]] = static_cast<std::int32_t>(k);
     }
+    auto searches = std::make_shared<std::vector<BindingSearch>>();
+    searches->reserve(colouring_->transitions.size());
+    for (const auto& ti : colouring_->transitions) searches->emplace_back(ti, colouring_->colours);
+    searches_ = std::move(searches);
   }
 
   // transitions: packed firing data, and the count of terms that do not hold
@@ -335,19 +339,14 @@ bool Kernel::selectTokens(TransitionId t) {
 std::vector<BoundOccurrence> Kernel::bindings(TransitionId t, std::size_t most) const {
   const TransitionInscriptions* ti = colouring_ ? colouring_->of(t) : nullptr;
   if (!ti) return {};
-  const auto& terms = colouring_->arc_terms[static_cast<std::size_t>(colouring_->of_transition[t])];
+  const auto c = static_cast<std::size_t>(colouring_->of_transition[t]);
+  const auto& terms = colouring_->arc_terms[c];
   const auto marking = [&](std::size_t arc) -> const Multiset& { return values_[terms_[terms[arc]].place_slot]; };
   // room on an output's place slot: what this occurrence takes from it first frees room
   const TransitionState& tr = tr_[t];
   bool bounded = false;
   for (const auto term : terms) bounded = bounded || (terms_[term].kind == TermKind::Output && slots_[terms_[term].place_slot].capacity != kUnbounded);
-  // all of them: a search cut short need not keep the first in the canonical order
-  auto out = enabledBindings(*ti, colouring_->colours, marking);
-  if (!bounded) {
-    if (out.size() > most) out.resize(most);
-    return out;
-  }
-  std::erase_if(out, [&](const BoundOccurrence& o) {
+  const auto room = [&](const BoundOccurrence& o) {
     for (std::size_t k = 0; k < terms.size(); ++k) {
       const Term& term = terms_[terms[k]];
       const SlotState& st = slots_[term.place_slot];
@@ -359,17 +358,18 @@ std::vector<BoundOccurrence> Kernel::bindings(TransitionId t, std::size_t most) 
       for (auto i = tr.conditions_end; i < tr.terms_end; ++i) {
         if (terms_[i].place_slot == term.place_slot) put += term_arc_[i] >= 0 ? boundCount(i, o) : terms_[i].weight;
       }
-      if (st.capacity - (st.m - take) - st.r < put) return true;
+      if (st.capacity - (st.m - take) - st.r < put) return false;
     }
-    return false;
-  });
-  if (out.size() > most) out.resize(most);
-  return out;
+    return true;
+  };
+  // the search stops at the most-th in the canonical order
+  return (*searches_)[c].enabled(marking, {}, most, bounded ? BindingFilter(room) : BindingFilter());
 }
 
 bool Kernel::selectBinding(TransitionId t) {
-  // in declaration order, the first binding; with random ties, one drawn from all
-  auto found = bindings(t);
+  // in declaration order, the first binding (the search stops there); with random ties, one
+  // drawn from all
+  auto found = bindings(t, random_ties_ ? SIZE_MAX : 1);
   if (found.empty()) return false;
   const std::size_t pick = random_ties_ && found.size() > 1 ? static_cast<std::size_t>(random_.below(found.size())) : 0;
   bound_next_ = std::move(found[pick]);
@@ -733,12 +733,20 @@ void Kernel::finishAs(Entry e) {
     const PlaceSlotId ps = term.place_slot;
     SlotState& st = slots_[ps];
     if (coloured && term_arc_[i] >= 0) [[unlikely]] {
-      const Multiset& put = bound_at->second.arcs[static_cast<std::size_t>(term_arc_[i])];
+      Multiset& put = bound_at->second.arcs[static_cast<std::size_t>(term_arc_[i])];
       const std::int64_t count = multisetSize(put);
       st.r -= count;
       st.m += count;
       Multiset& here = values_[ps];
-      for (const auto& [v, k] : put) here[v] += k;
+      if (observers_.empty()) {
+        // nobody reads what was put: its values move into the place, node and all
+        while (!put.empty()) {
+          auto moved = here.insert(put.extract(put.begin()));
+          if (!moved.inserted) moved.position->second += moved.node.mapped();
+        }
+      } else {
+        for (const auto& [v, k] : put) here[v] += k;
+      }
       moved_.clear();
       for (auto* o : observers_) {
         o->onDeposit(ps, count, moved_, steps());

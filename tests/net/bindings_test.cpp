@@ -237,6 +237,97 @@ TEST_F(Bindings, UnboundVariableAcceptsFiniteOrMatchedVariables) {
                                          "finite");
 }
 
+TEST_F(Bindings, AConditionsEquationFixesAVariableNoSetCouldEnumerate) {
+  // i (int, not finite) is on no input arc: the conjunct i = n * 1000 fixes it once n is matched
+  arc(ArcRole::Take, kR, "n", {{I(1), 1}, {I(3), 2}});
+  arc(ArcRole::Put, Colours::kInt, "i");
+  when("n > 1 and i = n * 1000");
+  finish();
+  EXPECT_EQ(unboundVariable(t, colours), "");
+  const auto found = enabled();
+  EXPECT_EQ(text(found), "n=3 i=3000");
+  ASSERT_EQ(found.size(), 1U);
+  EXPECT_EQ(found[0].arcs[1], (Multiset{{I(3000), 1}}));
+}
+
+TEST_F(Bindings, AnEquationFixesAVariableWrittenOnEitherSide) {
+  // s = "a" needs no other variable; the string then goes out; e = x as well as x = e
+  arc(ArcRole::Take, kR, "n", {{I(2), 1}});
+  arc(ArcRole::Put, Colours::kString, "s");
+  arc(ArcRole::Put, Colours::kInt, "i");
+  when("\"a\" = s and 6 / (n - 3) = i");
+  EXPECT_EQ(text(enabled()), "n=2 s=\"a\" i=-6");
+  // 6 / (n - 3) has no value for n = 3: no binding, rather than any i
+  marking[0] = {{I(3), 1}};
+  EXPECT_TRUE(enabled().empty());
+}
+
+TEST_F(Bindings, AnEquationsValueOutsideTheVariablesSetBindsNothing) {
+  // n in 1..3: 7 is none of its values
+  arc(ArcRole::Take, kPhil, "x", {{I(0), 1}});
+  arc(ArcRole::Put, kR, "n");
+  when("n = 7");
+  EXPECT_TRUE(enabled().empty());
+  // an equation between two free variables fixes neither: both are enumerated
+  t = {};
+  marking.clear();
+  used.clear();
+  arc(ArcRole::Take, kPhil, "x", {{I(0), 1}});
+  arc(ArcRole::Put, kR, "n");
+  arc(ArcRole::Put, Colours::kInt, "i");
+  when("i = i");
+  finish();
+  EXPECT_EQ(unboundVariable(t, colours), "variable 'i' (int) is bound by no input arc and its colour set is not "
+                                         "finite");
+}
+
+TEST_F(Bindings, ARangeOfAMillionIsNotEnumeratedWhereTheConditionFixesIt) {
+  ColourSetSpec big;
+  big.name = "Big";
+  big.kind = ColourKind::Integer;
+  big.range = true;
+  big.lo = 0;
+  big.hi = 999'999;
+  core::Diagnostics d;
+  ASSERT_TRUE(colours.declare({big}, d)) << d.str();
+  const ColourId kBig = 7;
+  scope.variable_names.push_back("k");
+  scope.variable_sets.push_back(kBig);
+  arc(ArcRole::Take, kBig, "k", {{I(5), 1}, {I(999'999), 1}});
+  scope.variable_names.push_back("m");
+  scope.variable_sets.push_back(kBig);
+  arc(ArcRole::Put, kBig, "m");
+  when("m = k + 1");
+  finish();
+  BindingSearch search(t, colours);
+  EXPECT_EQ(search.refusal(), "");
+  EXPECT_TRUE(search.ordered());
+  // k = 999999 has no successor in Big
+  EXPECT_EQ(text(enabled()), "k=5 m=6");
+}
+
+TEST_F(Bindings, APlanMatchingAgainstTheVariablesOrderStillGivesTheCanonicalOrder) {
+  // x is the first variable, but only the pair (n, x) binds it, n first: the search must see
+  // every binding and sort them, and stop at none before
+  arc(ArcRole::Put, kPhil, "x");
+  arc(ArcRole::Take, kPair, "(n, x)", {{Value::tuple({I(1), I(2)}), 1}, {Value::tuple({I(2), I(0)}), 1}});
+  finish();
+  EXPECT_FALSE(BindingSearch(t, colours).ordered());
+  EXPECT_EQ(text(enabled()), "x=p1 n=2; x=p3 n=1");
+  EXPECT_EQ(text(enabled(1)), "x=p1 n=2");
+}
+
+TEST_F(Bindings, AFreeVariableBeforeTheMatchedOnesIsEnumeratedFirst) {
+  // b (a range) is free and first; x is matched: the order is b's, then x's
+  arc(ArcRole::Put, kR, "n");
+  arc(ArcRole::Take, kPhil, "x", {{I(2), 1}, {I(0), 1}});
+  when("n < 3");
+  finish();
+  EXPECT_TRUE(BindingSearch(t, colours).ordered());
+  EXPECT_EQ(text(enabled()), "n=1 x=p1; n=1 x=p3; n=2 x=p1; n=2 x=p3");
+  EXPECT_EQ(text(enabled(3)), "n=1 x=p1; n=1 x=p3; n=2 x=p1");
+}
+
 TEST_F(Bindings, AllBindingsWhateverTheMarking) {
   arc(ArcRole::Take, kPhil, "x");
   arc(ArcRole::Put, kR, "n + 1");

@@ -160,11 +160,47 @@ using ArcMarking = std::function<const Multiset&(std::size_t arc)>;
 /// Whether arc `arc` (a Put) finds room for `tokens` more tokens.
 using ArcRoom = std::function<bool(std::size_t arc, std::int64_t tokens)>;
 
+/// Whether an enabled binding found by the search is also acceptable to its caller (the
+/// kernel's room on outputs that other arcs share): false drops it as if it were not enabled.
+using BindingFilter = std::function<bool(const BoundOccurrence&)>;
+
+/// The binding search of one transition, planned once (semantics: *Value tokens*): the order in
+/// which normal and test input arcs' patterns are matched against their places, the variables a
+/// conjunct `x = e` of the condition fixes once e's variables are bound (x is then not
+/// enumerated, whatever its set), what finite sets leave free, and the conjuncts checked as soon
+/// as their variables are bound. When the plan binds the variables in their order it finds the
+/// bindings in the canonical order and stops at the `most`-th; otherwise it finds them all and
+/// sorts them. Holds references to `t` and `colours`, which must outlive it.
+class BindingSearch {
+ public:
+  /// Plans the search for `t` over `colours`.
+  BindingSearch(const TransitionInscriptions& t, const Colours& colours);
+  ~BindingSearch();
+  BindingSearch(BindingSearch&&) noexcept;
+  BindingSearch& operator=(BindingSearch&&) = delete;
+  BindingSearch(const BindingSearch&) = delete;
+  BindingSearch& operator=(const BindingSearch&) = delete;
+
+  /// As enabledBindings(), keeping only those `accept` (when given) accepts: the first `most`
+  /// in the canonical order.
+  [[nodiscard]] std::vector<BoundOccurrence> enabled(const ArcMarking& marking, const ArcRoom& room = {},
+                                                     std::size_t most = SIZE_MAX, const BindingFilter& accept = {}) const;
+  /// True when the plan finds the bindings in the canonical order (it can stop at the first).
+  [[nodiscard]] bool ordered() const;
+  /// Why the plan cannot search (as unboundVariable()); empty when it can.
+  [[nodiscard]] const std::string& refusal() const;
+
+ private:
+  struct Plan;
+  std::unique_ptr<Plan> plan_;
+};
+
 /// The enabled bindings of `t` under `marking`, in the canonical order (variables in their
 /// order, values in their set's order), at most `most` of them: found by matching the patterns
 /// of normal and test input arcs (a variable, a constant or a tuple of them, with a constant
-/// multiplicity) against the values their places hold, then by enumerating what finite sets
-/// leave free; each kept when the condition holds, every Take and Test arc's multiset is in
+/// multiplicity) against the values their places hold, by fixing a variable that a conjunct
+/// `x = e` of the condition gives once e's variables are bound, then by enumerating what finite
+/// sets leave free; each kept when the condition holds, every Take and Test arc's multiset is in
 /// its place (each arc's on its own: a place has one normal arc to a transition at most), no
 /// Inhibit arc's multiset is (an empty one never inhibits), every value is of its set, and
 /// `room` (when given) allows every Put.
@@ -178,10 +214,11 @@ std::vector<BoundOccurrence> enabledBindings(const TransitionInscriptions& t, co
 std::optional<std::vector<BoundOccurrence>> allBindings(const TransitionInscriptions& t, const Colours& colours,
                                                         std::size_t most, std::string& why);
 
-/// Why the variables of `t` that matching leaves free cannot be enumerated: one is not of a
-/// finite set ("variable 'x' (string) is bound by no input arc ..."), or their combinations
-/// number more than kMostValues. Empty when every variable is matched by a normal or test
-/// input arc's pattern or the free ones can be enumerated.
+/// Why the variables of `t` that matching and the condition's equations leave free cannot be
+/// enumerated: one is not of a finite set ("variable 'x' (string) is bound by no input arc
+/// ..."), or their combinations number more than kMostValues. Empty when every variable is
+/// matched by a normal or test input arc's pattern, fixed by a conjunct `x = e` of the
+/// condition, or free and enumerable.
 std::string unboundVariable(const TransitionInscriptions& t, const Colours& colours);
 
 }  // namespace gdpn::net
