@@ -293,6 +293,14 @@ std::string Session::fire(const std::string& transition) {
   return sim_->kernel().fire(*t);
 }
 
+std::string Session::fire(const std::string& transition, const net::Binding& binding) {
+  const auto t = sim_->net().findTransition(transition);
+  if (!t) return noSuch(sim_->net(), false, transition);
+  if (!sim_->started()) sim_->start();
+  if (watcher_) watcher_->clear();
+  return sim_->kernel().fire(*t, binding);
+}
+
 std::optional<int> Session::addBreakpoint(Breakpoint breakpoint, std::string& why) {
   const auto target = targetOf(breakpoint);
   switch (breakpoint.kind) {
