@@ -84,6 +84,23 @@ void drawColourSets(App& app, const Rect& at, nlohmann::json& report);
 void inscriptionField(App& app, const std::string& key, const std::string& label, const std::string& current,
                       const std::string& set, InscriptionRole role, const std::function<void(const std::string&)>& store,
                       nlohmann::json& report);
+/// The most distinct values a place's marking shows in the inspector before "... and K more
+/// values" (the net view's tooltip shows kTooltipValues).
+inline constexpr std::size_t kShownValues = 40;
+/// The most a tooltip shows.
+inline constexpr std::size_t kTooltipValues = 8;
+/// The most enabled bindings the inspector lists.
+inline constexpr std::size_t kShownBindings = 30;
+/// In the inspector, for place `p` of the run: the values on each of its value slots, as the
+/// language writes a multiset (`2'(1,"a") ++ 1'(2,"b")`), wrapped, the first kShownValues.
+void placeValues(const session::Session& session, net::PlaceId p, nlohmann::json& report);
+/// In the inspector, for coloured transition `t` (named `name`) of the run: the binding of its
+/// current occurrence, and the bindings enabled now, each a button that fires the transition
+/// in it.
+void transitionBindings(App& app, const session::Session& session, net::TransitionId t, const std::string& name,
+                        nlohmann::json& report);
+/// The values of place `p`'s value slots for a tooltip, one line a slot ("" when it has none).
+std::string valuesTooltip(const session::Session& session, net::PlaceId p);
 /// Every error and warning at file:line:col; a click selects the construct.
 void drawDiagnostics(App& app, const Rect& at, nlohmann::json& report, nlohmann::json& breakpoints);
 /// The run's breakpoints (each with a button that removes it) and a field that adds one on a

@@ -13,7 +13,7 @@
 namespace gdpn::ide {
 namespace {
 
-const ImVec4 kErrorColour{1.0f, 0.45f, 0.4f, 1.0f};
+const ImVec4 kDefinitionErrorColour{1.0f, 0.45f, 0.4f, 1.0f};
 const char* const kForms = "int, bool, string, dot, {range: [lo, hi]}, {enum: [a, b]}, {cyclic: [a, b]}, {product: [A, B]}, {record: {f: A}}";
 
 /// The text field `field` of the view: what was typed and not applied, else `current`.
@@ -33,13 +33,13 @@ void keepTyped(App& app, const std::string& field, const std::string& text, cons
 void problemLine(const TextProblem& p, nlohmann::json& report, const std::string& row) {
   const std::string where = p.column > 0 ? "column " + std::to_string(p.column) + ": " : std::string();
   ImGui::PushTextWrapPos(0.0f);
-  ImGui::TextColored(kErrorColour, "%s%s", where.c_str(), p.message.c_str());
+  ImGui::TextColored(kDefinitionErrorColour, "%s%s", where.c_str(), p.message.c_str());
   ImGui::PopTextWrapPos();
   report["problems"][row] = {{"column", p.column}, {"message", p.message}};
 }
 
 /// A red line under column `column` of the one-line field just drawn, holding `text`.
-void markColumn(const std::string& text, int column) {
+void markDefinitionColumn(const std::string& text, int column) {
   if (column <= 0) return;
   const auto at = std::min(static_cast<std::size_t>(column - 1), text.size());
   const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
@@ -86,7 +86,7 @@ void setRows(App& app, bool editing, nlohmann::json& report) {
     TextProblem problem;
     std::optional<std::vector<net::ColourSetSpec>> edited;
     if (changed && !(fresh && name.empty() && definition.empty())) edited = editedColours(net, i, name, definition, problem);
-    if (changed && !edited) markColumn(definition, problem.column);
+    if (changed && !edited) markDefinitionColumn(definition, problem.column);
     ImGui::SameLine();
     bool declare = false, remove = false;
     if (fresh) {

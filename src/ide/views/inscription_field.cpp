@@ -12,11 +12,11 @@
 namespace gdpn::ide {
 namespace {
 
-const ImVec4 kErrorColour{1.0f, 0.45f, 0.4f, 1.0f};
+const ImVec4 kInscriptionErrorColour{1.0f, 0.45f, 0.4f, 1.0f};
 
 /// A red line under column `column` of line `line` of the text of the field just drawn (both
 /// from 1), where the field shows it.
-void markColumn(std::string_view text, int line, int column) {
+void markInscriptionColumn(std::string_view text, int line, int column) {
   if (line <= 0 || column <= 0) return;
   std::size_t from = 0;
   for (int l = 1; l < line; ++l) {
@@ -66,7 +66,7 @@ void inscriptionField(App& app, const std::string& key, const std::string& label
   // what the text says now, checked as it stands
   const bool blank = text.find_first_not_of(" \t\r\n") == std::string::npos;
   const auto problem = blank ? std::nullopt : checkInscriptionText(scope, text, set, role);
-  if (problem) markColumn(text, problem->line, problem->column);
+  if (problem) markInscriptionColumn(text, problem->line, problem->column);
   const bool apply = (typing && popup.enter) || (left && text != current);
   popup.enter = false;
   if (text != current) ed.typed[key] = text;
@@ -85,7 +85,7 @@ void inscriptionField(App& app, const std::string& key, const std::string& label
     ImGui::Dummy({140, 0});
     ImGui::SameLine(150);
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextColored(kErrorColour, "%s%s", where.c_str(), problem->message.c_str());
+    ImGui::TextColored(kInscriptionErrorColour, "%s%s", where.c_str(), problem->message.c_str());
     ImGui::PopTextWrapPos();
     if (text != current) {
       ImGui::SameLine();
