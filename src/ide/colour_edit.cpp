@@ -337,7 +337,11 @@ CompletionQuery completeInscription(const ColourScope& scope, std::string_view t
     std::string size = s.size ? std::to_string(*s.size) + " values" : "not finite";
     offer(s.name, "colour set", std::string(net::colourKindName(s.kind)) + ", " + size + (i > net::Colours::kString ? "" : " (built in)"));
   }
-  for (const auto& w : kWords) offer(w.name, w.kind, w.detail, w.signature);
+  for (const auto& w : kWords) {
+    // `dot` is a set and a value: offered once
+    const bool offered = std::any_of(q.names.begin(), q.names.end(), [&](const Completion& c) { return c.name == w.name; });
+    if (!offered) offer(w.name, w.kind, w.detail, w.signature);
+  }
   return q;
 }
 

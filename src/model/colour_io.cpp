@@ -477,7 +477,10 @@ std::optional<net::ColourSetSpec> readColourDefinition(const std::string& name, 
     if (!r.failed() && sets.size() == 1) out = std::move(sets.front());
   }
   for (const auto& d : found.all()) {
-    const int column = d.loc.line == 2 ? std::max(1, d.loc.column - shift) : 1;
+    // past the definition's line: the parser reached its end (an unclosed bracket)
+    const int column = d.loc.line == 2   ? std::max(1, d.loc.column - shift)
+                       : d.loc.line > 2 ? static_cast<int>(definition.size()) + 1
+                                        : 1;
     const core::SourceLoc at{file, 1, column};
     switch (d.severity) {
       case core::Severity::Error: diags.error(at, d.message); break;

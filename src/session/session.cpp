@@ -296,8 +296,13 @@ std::string Session::fire(const std::string& transition) {
 std::string Session::fire(const std::string& transition, const net::Binding& binding) {
   const auto t = sim_->net().findTransition(transition);
   if (!t) return noSuch(sim_->net(), false, transition);
-  if (!sim_->started()) sim_->start();
   if (watcher_) watcher_->clear();
+  // at time 0 the chosen binding starts before the first firing phase chooses for the rest
+  if (!sim_->started()) {
+    std::string why;
+    sim_->start([&] { why = sim_->kernel().fire(*t, binding); });
+    return why;
+  }
   return sim_->kernel().fire(*t, binding);
 }
 
