@@ -72,7 +72,9 @@ void transitionBindings(App& app, const session::Session& session, net::Transiti
   const auto found = kernel.enabled(t) ? kernel.bindings(t, kShownBindings + 1) : std::vector<net::BoundOccurrence>{};
   nlohmann::json list = nlohmann::json::array();
   if (found.empty()) {
-    ImGui::TextDisabled(kernel.enabled(t) ? "no binding of its variables is enabled" : "no binding: it is not enabled");
+    // occurring on its only server says enough; otherwise why there is nothing to fire
+    if (kernel.enabled(t)) ImGui::TextDisabled("no binding of its variables is enabled");
+    else if (!kernel.occurring(t)) ImGui::TextDisabled("not enabled: no binding to fire");
   } else {
     ImGui::TextDisabled("enabled bindings%s:", found.size() > kShownBindings ? " (the first 30)" : "");
   }
