@@ -160,7 +160,8 @@ bool actionEnabled(const App& app, ActionId id) {
     case ActionId::Fire: return hasRun(app) && !app.toolbar.fire_target.empty();
     case ActionId::Reset: return true;
     case ActionId::ClearBreakpoints: return !app.run().breakpoints().empty();
-    case ActionId::IoList: return true;
+    case ActionId::IoList:
+    case ActionId::ColourSets: return true;
     case ActionId::ReleaseForces: return app.run().mode() != RunMode::Edit && hasRun(app);
     case ActionId::Keys:
     case ActionId::Guide: return true;
@@ -190,6 +191,7 @@ bool actionChecked(const App& app, ActionId id) {
     case ActionId::Movie: return app.movie != nullptr;
     case ActionId::PlantOnly: return app.run().plantOnly();
     case ActionId::IoList: return app.io_list.shown;
+    case ActionId::ColourSets: return app.colour_sets.shown;
     case ActionId::NetSelectTool: return app.netView().tool == NetTool::Select;
     case ActionId::NetPlaceTool: return app.netView().tool == NetTool::Place;
     case ActionId::NetTransitionTool: return app.netView().tool == NetTool::Transition;
@@ -310,7 +312,14 @@ std::string performAction(App& app, ActionId id) {
       for (const auto& b : run.breakpoints()) (void)run.removeBreakpoint(b);
       app.message = "removed every breakpoint";
       break;
-    case ActionId::IoList: app.io_list.shown = !app.io_list.shown; break;
+    case ActionId::IoList:
+      app.io_list.shown = !app.io_list.shown;
+      app.colour_sets.shown = false;
+      break;
+    case ActionId::ColourSets:
+      app.colour_sets.shown = !app.colour_sets.shown;
+      app.io_list.shown = false;
+      break;
     case ActionId::ReleaseForces:
       app.message = releaseAllIo(run);
       if (app.message.empty()) app.message = "every force is released at the next step";

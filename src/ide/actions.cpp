@@ -59,6 +59,8 @@ constexpr ActionInfo kActions[] = {
      "The library's parts under the tree view: drag one into the world view to place it"},
     {A::IoList, "io-list", "I/O List", M::View, "", false, true, false,
      "Every part's inputs and outputs in the inspector's panel: live values, forces, what uses each, PLC addresses"},
+    {A::ColourSets, "colour-sets", "Colour Sets", M::View, "", false, true, false,
+     "The model's colour sets and variables in the inspector's panel: declare, edit and delete them"},
     {A::Sensors, "sensors", "Sensor Volumes", M::View, "", false, true, true, "Draw the sensors' volumes and rays"},
     {A::Joints, "joints", "Joint Axes", M::View, "", false, true, false, "Draw the joints' axes"},
     {A::Contacts, "contacts", "Contact Points", M::View, "", false, true, false,

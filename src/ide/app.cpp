@@ -849,6 +849,7 @@ void App::frame(float width, float height, double wall_seconds) {
     // the inspector shares its panel with the I/O list, a tab each
     const Rect below = drawInspectorTabs(*this, layout.inspector, report["inspector_tabs"]);
     if (io_list.shown) drawIoList(*this, below, report["io_list"]);
+    else if (colour_sets.shown) drawColourSets(*this, below, report["colour_sets"]);
     else drawInspector(*this, below, report["inspector"]);
   }
   if (layout.diagnostics.w > 0) drawDiagnostics(*this, layout.diagnostics, report["diagnostics"], report["breakpoints"]);

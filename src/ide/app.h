@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gdpn/ide/colour_edit.h"
 #include "gdpn/ide/document.h"
 #include "gdpn/ide/io_list.h"
 #include "gdpn/ide/layout.h"
@@ -67,6 +68,7 @@ struct CompletionPopup {
   bool accept = false;       ///< Tab or Enter while open: the chosen name goes in
   bool ask = false;          ///< Tab after a name or a dot: complete it
   bool typed = false;        ///< a name's character or a dot was typed this frame
+  bool enter = false;        ///< Enter with the list closed, in a field where Enter applies (completingField)
   float text_x = 0, text_y = 0;  ///< where the field's text begins on screen, pixels
 };
 
@@ -143,6 +145,23 @@ struct WorldViewState {
   render::DrawStats stats;                     ///< what drawing it took
 };
 
+/// The fields of the inscription language (views/inscription_field.cpp): the one being typed,
+/// its completion list, and the texts typed that do not check, kept in their fields (the
+/// model's text stays in force until the typed one checks).
+struct InscriptionEditing {
+  std::string key;                           ///< the field being typed ("" when none)
+  std::map<std::string, std::string> typed;  ///< by field: a text typed and not applied
+  CompletionPopup completion;                ///< the completion list of the field being typed
+};
+
+/// The colour sets view's own state (views/colour_sets.cpp).
+struct ColourSetsState {
+  bool shown = false;                           ///< it has the inspector's panel (its tab, View > Colour Sets)
+  std::map<std::string, std::string> typed;     ///< a text being typed and not applied, by field ("definition 2", "new name")
+  std::map<std::string, TextProblem> problems;  ///< why a row's text was not applied, by row ("set 2", "new set")
+  std::string new_variable_set;                 ///< the colour set chosen for a new variable
+};
+
 /// The inspector's and the contents view's own state (views/inspector.cpp, contents_view.cpp).
 struct InspectorState {
   int break_tokens = 1;             ///< the token count for a place's breakpoint
@@ -153,6 +172,7 @@ struct InspectorState {
   std::string datum_value;          ///< and its value, as text (datumFromText)
   std::string new_arc_slot;         ///< the arc inspector's field: a slot to add to the arc
   ScriptEditing scripts;            ///< the contents view's script editor
+  InscriptionEditing inscriptions;  ///< the fields of value slots, arcs' inscriptions and conditions
   net::SlotId contents_slot = net::kDefaultSlot;  ///< the slot the contents view edits
   std::unique_ptr<PictureTexture> picture_texture;  ///< a camera sensor's picture
 };
@@ -367,6 +387,7 @@ class App {
   ToolbarState toolbar;             ///< the toolbar's own state
   TreeViewState tree;               ///< the tree view's own state
   IoListState io_list;              ///< the I/O list's own state
+  ColourSetsState colour_sets;      ///< the colour sets view's own state
   PartUpdatesState part_updates;    ///< the library's newer versions of the model's parts
   SaveAsPartState save_part;        ///< "Save as Part"
   double edit_quiet = 0;            ///< seconds since the document last changed (edit mode)

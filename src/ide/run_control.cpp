@@ -114,6 +114,14 @@ std::string RunControl::fire(const std::string& name) {
   return why;
 }
 
+std::string RunControl::fire(const std::string& name, const net::Binding& binding) {
+  if (!prepare()) return message_ = "the model does not compile";
+  auto why = session_->fire(name, binding);
+  message_ = why.empty() ? "fired " + name + " in the binding chosen" : "cannot fire " + name + ": " + why;
+  if (mode_ == RunMode::Edit) mode_ = RunMode::Paused;
+  return why;
+}
+
 bool RunControl::reset(core::Diagnostics& diags) {
   if (doc_ == nullptr) return false;
   mode_ = RunMode::Edit;

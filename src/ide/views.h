@@ -7,6 +7,7 @@
 
 #include "gdpn/ide/actions.h"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -67,6 +68,39 @@ Rect drawInspectorTabs(App& app, const Rect& at, nlohmann::json& report);
 /// Every part's inputs and outputs: direction, signal, unit, the value in the run (a lamp for
 /// a bit), forces and releases, the `io` section's addresses, what uses each; Map for PLC.
 void drawIoList(App& app, const Rect& at, nlohmann::json& report);
+/// The model's colour sets and variables, while App::colour_sets.shown: each set's name and
+/// definition (the model file's text) and how many values it has, each editable (Enter or
+/// leaving the field applies it; a mistake is shown under it, with its column, and not
+/// applied); a row that declares a new one; delete, refused while something uses it.
+void drawColourSets(App& app, const Rect& at, nlohmann::json& report);
+/// A text of the inscription language edited in place (a value slot's values, an arc's
+/// inscription, a transition's condition): typed with completion of variables, colour sets,
+/// constants and the language's words; checked as it is typed against the model's sets and
+/// variables (`set`: the slot's colour set by name; ignored for a condition), its first mistake
+/// shown under it with the column; applied through `store` on Enter or when left, and only when
+/// it checks (else the typed text stays in the field, marked, and the model's text stays in
+/// force). An empty text is applied as none. Its state goes into `report["inscriptions"][label]`,
+/// its centre into `report["fields"][label]`.
+void inscriptionField(App& app, const std::string& key, const std::string& label, const std::string& current,
+                      const std::string& set, InscriptionRole role, const std::function<void(const std::string&)>& store,
+                      nlohmann::json& report);
+/// The most distinct values a place's marking shows in the inspector before "... and K more
+/// values" (the net view's tooltip shows kTooltipValues).
+inline constexpr std::size_t kShownValues = 40;
+/// The most a tooltip shows.
+inline constexpr std::size_t kTooltipValues = 8;
+/// The most enabled bindings the inspector lists.
+inline constexpr std::size_t kShownBindings = 30;
+/// In the inspector, for place `p` of the run: the values on each of its value slots, as the
+/// language writes a multiset (`2'(1,"a") ++ 1'(2,"b")`), wrapped, the first kShownValues.
+void placeValues(const session::Session& session, net::PlaceId p, nlohmann::json& report);
+/// In the inspector, for coloured transition `t` (named `name`) of the run: the binding of its
+/// current occurrence, and the bindings enabled now, each a button that fires the transition
+/// in it.
+void transitionBindings(App& app, const session::Session& session, net::TransitionId t, const std::string& name,
+                        nlohmann::json& report);
+/// The values of place `p`'s value slots for a tooltip, one line a slot ("" when it has none).
+std::string valuesTooltip(const session::Session& session, net::PlaceId p);
 /// Every error and warning at file:line:col; a click selects the construct.
 void drawDiagnostics(App& app, const Rect& at, nlohmann::json& report, nlohmann::json& breakpoints);
 /// The run's breakpoints (each with a button that removes it) and a field that adds one on a

@@ -8,6 +8,7 @@
 #include <map>
 
 #include "gdpn/core/text.h"
+#include "gdpn/model/colour_text.h"
 #include "gdpn/model/schema.h"
 #include "gdpn/net/inscription.h"
 
@@ -441,3 +442,66 @@ void writeInscription(YAML::Emitter& out, const std::string& text) {
 }
 
 }  // namespace gdpn::model::detail
+
+namespace gdpn::model {
+
+std::optional<net::ColourSetSpec> readColourDefinition(const std::string& name, std::string_view definition,
+                                                       core::Diagnostics& diags) {
+  const std::string file = "definition";
+  if (!core::isIdentifier(name)) {
+    diags.error({file, 1, 1}, "a colour set's name is a word of letters, digits and _ (not starting with a digit), got '" +
+                                  name + "'");
+    return std::nullopt;
+  }
+  const auto nl = definition.find_first_of("\r\n");
+  if (nl != std::string_view::npos) {
+    diags.error({file, 1, static_cast<int>(nl) + 1}, "a definition is one line");
+    return std::nullopt;
+  }
+  const auto first = definition.find_first_not_of(" \t");
+  if (first == std::string_view::npos) {
+    diags.error({file, 1, 1}, "the definition is empty: a colour set is bool, int, string, dot, or {range: [lo, hi]}, "
+                              "{enum: [a, b]}, {cyclic: [a, b]}, {product: [A, B]} or {record: {f: A}}");
+    return std::nullopt;
+  }
+  // read as the file's section would be: `colours: {NAME: DEFINITION}` on one line, each
+  // message's column moved back to the definition's own
+  const std::string prefix = "colours:\n  " + name + ": ";
+  const int shift = static_cast<int>(name.size()) + 4;
+  core::Diagnostics found;
+  const auto root = detail::parseYaml(prefix + std::string(definition) + "\n", file, found);
+  std::optional<net::ColourSetSpec> out;
+  if (root) {
+    detail::YamlReader r(file, found);
+    auto sets = detail::readColours((*root)["colours"], r);
+    if (!r.failed() && sets.size() == 1) out = std::move(sets.front());
+  }
+  for (const auto& d : found.all()) {
+    // past the definition's line: the parser reached its end (an unclosed bracket)
+    const int column = d.loc.line == 2   ? std::max(1, d.loc.column - shift)
+                       : d.loc.line > 2 ? static_cast<int>(definition.size()) + 1
+                                        : 1;
+    const core::SourceLoc at{file, 1, column};
+    switch (d.severity) {
+      case core::Severity::Error: diags.error(at, d.message); break;
+      case core::Severity::Warning: diags.warning(at, d.message); break;
+      case core::Severity::Note: diags.note(at, d.message); break;
+    }
+  }
+  if (out) out->loc = {};
+  return found.hasErrors() ? std::nullopt : out;
+}
+
+std::string colourDefinition(const net::ColourSetSpec& c) {
+  YAML::Emitter out;
+  out << YAML::BeginMap;
+  detail::writeColours(out, {c});
+  out << YAML::EndMap;
+  // "colours:\n  NAME: DEFINITION": the text after the name
+  const std::string text = out.c_str();
+  const auto line = text.find('\n');
+  const auto colon = line == std::string::npos ? std::string::npos : text.find(": ", line);
+  return colon == std::string::npos ? std::string() : text.substr(colon + 2);
+}
+
+}  // namespace gdpn::model

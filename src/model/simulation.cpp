@@ -744,13 +744,16 @@ void Simulation::sense(bool net_on) {
   }
 }
 
-void Simulation::start() {
+void Simulation::start() { start({}); }
+
+void Simulation::start(const std::function<void()>& first) {
   if (started_) return;
   started_ = true;
   // time 0: the sensors' first readings (every one is a change), then the first firing phase
   sense(true);
   readConditions();
   if (engine_ && engine_->halted() && engine_->halt() != script::Halt::Stop) return;
+  if (first) first();
   firePhase();
   if (signals_) signals_->sample();
 }

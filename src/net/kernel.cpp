@@ -1079,7 +1079,19 @@ void Kernel::shuffleTies(std::vector<Carry>& candidates) {
   }
 }
 
-std::string Kernel::fire(TransitionId t) {
+std::string Kernel::fire(TransitionId t) { return fireIn(t, nullptr); }
+
+std::string Kernel::fire(TransitionId t, const Binding& b) {
+  const auto* ti = colouring_ ? colouring_->of(t) : nullptr;
+  if (ti == nullptr || ti->variables.empty()) return "'" + net_->transitionName(t) + "' has no variables to bind";
+  if (b.size() != ti->variables.size()) {
+    return "a binding of '" + net_->transitionName(t) + "' gives " + std::to_string(ti->variables.size()) +
+           " values, got " + std::to_string(b.size());
+  }
+  return fireIn(t, &b);
+}
+
+std::string Kernel::fireIn(TransitionId t, const Binding* chosen) {
   const Net& net = *net_;
   const std::string name = "'" + net.transitionName(t) + "'";
   TransitionState& tr = tr_[t];
@@ -1110,7 +1122,22 @@ std::string Kernel::fire(TransitionId t) {
     heldBy(t, hooks_->halted() ? Readiness::Halted : Readiness::Predicate);
     return "no node token satisfies the predicates of " + name;
   }
-  if (colouring_ && colouring_->of(t) && !selectBinding(t)) {
+  if (chosen != nullptr) {
+    // the user's binding, when it is one of those enabled now
+    auto found = bindings(t);
+    const auto it = std::find_if(found.begin(), found.end(), [&](const BoundOccurrence& o) { return o.binding == *chosen; });
+    if (it == found.end()) {
+      const auto* ti = colouring_->of(t);
+      std::string text;
+      for (std::size_t i = 0; i < chosen->size(); ++i) {
+        const auto set = i < ti->sets.size() ? ti->sets[i] : Colours::kDot;
+        text += (i == 0 ? "" : ", ") + ti->variables[i] + " = " + colouring_->colours.text(set, (*chosen)[i]);
+      }
+      return "binding (" + text + ") of " + name + " is not enabled (" +
+             (found.empty() ? std::string("none is now") : std::to_string(found.size()) + " enabled now") + ")";
+    }
+    bound_next_ = std::move(*it);
+  } else if (colouring_ && colouring_->of(t) && !selectBinding(t)) {
     heldBy(t, Readiness::NoBinding);
     return "no binding of " + name + "'s variables is enabled";
   }

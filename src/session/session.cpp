@@ -293,6 +293,19 @@ std::string Session::fire(const std::string& transition) {
   return sim_->kernel().fire(*t);
 }
 
+std::string Session::fire(const std::string& transition, const net::Binding& binding) {
+  const auto t = sim_->net().findTransition(transition);
+  if (!t) return noSuch(sim_->net(), false, transition);
+  if (watcher_) watcher_->clear();
+  // at time 0 the chosen binding starts before the first firing phase chooses for the rest
+  if (!sim_->started()) {
+    std::string why;
+    sim_->start([&] { why = sim_->kernel().fire(*t, binding); });
+    return why;
+  }
+  return sim_->kernel().fire(*t, binding);
+}
+
 std::optional<int> Session::addBreakpoint(Breakpoint breakpoint, std::string& why) {
   const auto target = targetOf(breakpoint);
   switch (breakpoint.kind) {

@@ -128,6 +128,8 @@ TEST_F(Shell, EveryActionOfTheTableIsDoneByPressInAStateThatAllowsIt) {
 - press: palette
 - press: io-list
 - press: io-list
+- press: colour-sets
+- press: colour-sets
 - press: sensors
 - press: joints
 - press: contacts

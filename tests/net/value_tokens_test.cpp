@@ -124,6 +124,34 @@ TEST(ValueTokens, AConditionChoosesAmongBindingsAndTheFirstInCanonicalOrderOccur
   EXPECT_EQ(values(k, "Q"), "1'2 ++ 1'3");
 }
 
+TEST(ValueTokens, TheUserFiresTheBindingChosenAndABindingNotEnabledIsRefusedWithItsValues) {
+  Coloured n;
+  n.set(range("N", 1, 5)).variable("x", "N");
+  n.place("P", "N", "1'1 ++ 1'2 ++ 1'3").place("Q", "N");
+  n.transition("T", "x > 1", 1.0, 3).arc("P", "T", "x").arc("T", "Q", "x");
+  n.control("go", 1).transition("U").arc("go", "U", "");
+  Kernel k(n.compiled(), {1.0, 1});
+  const auto t = *k.net().findTransition("main/T");
+  // x = 1 fails the condition, x = 4 is on no token, a binding of two values has one too many
+  EXPECT_EQ(k.fire(t, Binding{Value::integer(1)}), "binding (x = 1) of 'main/T' is not enabled (2 enabled now)");
+  EXPECT_EQ(k.fire(t, Binding{Value::integer(4)}), "binding (x = 4) of 'main/T' is not enabled (2 enabled now)");
+  EXPECT_EQ(k.fire(t, Binding{Value::integer(2), Value::integer(3)}), "a binding of 'main/T' gives 1 values, got 2");
+  EXPECT_EQ(k.fire(*k.net().findTransition("main/U"), Binding{}), "'main/U' has no variables to bind");
+  EXPECT_EQ(values(k, "P"), "1'1 ++ 1'2 ++ 1'3");  // nothing refused took anything
+  // the second in canonical order, x = 3, where fire(t) would take x = 2
+  EXPECT_EQ(k.fire(t, Binding{Value::integer(3)}), "");
+  EXPECT_EQ(values(k, "P"), "1'1 ++ 1'2");
+  ASSERT_NE(k.binding(t), nullptr);
+  EXPECT_EQ(k.binding(t)->binding, (Binding{Value::integer(3)}));
+  // x = 3 is gone now: its binding is no longer enabled, and none is after x = 2
+  EXPECT_EQ(k.fire(t, Binding{Value::integer(3)}), "binding (x = 3) of 'main/T' is not enabled (1 enabled now)");
+  EXPECT_EQ(k.fire(t, Binding{Value::integer(2)}), "");
+  EXPECT_EQ(k.fire(t, Binding{Value::integer(2)}), "binding (x = 2) of 'main/T' is not enabled (none is now)");
+  k.beginStep();
+  k.completeOccurrences();
+  EXPECT_EQ(values(k, "Q"), "1'2 ++ 1'3");
+}
+
 TEST(ValueTokens, AVariableNoArcBindsIsEnumeratedOverItsFiniteSet) {
   Coloured n;
   ColourSetSpec flag;

@@ -23,7 +23,7 @@ enum class ActionId : std::uint8_t {
   // View
   SwapViews, WorldFull, NetFull, MiniView, Palette, Sensors, Joints, Contacts, Shadows, Grid,
   SelectTool, MoveTool, TurnTool, ScaleTool, AimTool, Snap, LocalAxes, FrameSelection, Screenshot, Movie,
-  IoList,
+  IoList, ColourSets,
   // Net
   NetSelectTool, NetPlaceTool, NetTransitionTool, NetArcTool, ReverseArc, AlignLeft, AlignTop, DistributeAcross,
   DistributeDown, PageTypeFromSelection, OpenInstance,

@@ -61,6 +61,9 @@ class RunControl {
   void runFor(double seconds);
   /// Starts transition `name` now: "" when it started, else why not (the Session's words).
   std::string fire(const std::string& name);
+  /// Starts coloured transition `name` now in `binding` (one of the kernel's bindings()): ""
+  /// when it started, else why not.
+  std::string fire(const std::string& name, const net::Binding& binding);
   /// Plant only: the net switched off, the plant and sensors go on.
   void setPlantOnly(bool on) { plant_only_ = on; }
   /// True while plant only is on.

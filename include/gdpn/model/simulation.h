@@ -95,6 +95,9 @@ class Simulation {
   void traceTo(std::ostream& out);
   /// Runs the firing phase at time 0. run() calls it when needed.
   void start();
+  /// start(), with `first` run after time 0's sensing and before its firing phase: what the
+  /// user fires by hand at time 0 starts before the firing phase chooses for the rest.
+  void start(const std::function<void()>& first);
   /// One step (semantics §6).
   void step();
   /// One step of the plant alone, the net switched off: physics and sensors advance, the

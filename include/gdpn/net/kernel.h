@@ -105,6 +105,11 @@ class Kernel {
   /// such is named), the scripts have stopped (an error, a timeout), its guard is false, or
   /// no node token satisfies its predicates. Its probability is not drawn: the user chose it.
   std::string fire(TransitionId t);
+  /// Starts coloured transition `t` now in binding `b` (its variables' values, in the order
+  /// of Colouring::of(t)->variables): the user's "fire this binding". As fire(t), and "" when
+  /// it started; refused, with why, when `b` is not among bindings(t) (the binding is named:
+  /// "binding (p = ph1) of 'take' is not enabled") or `t` has no variables.
+  std::string fire(TransitionId t, const Binding& b);
   /// Steps taken since start, with the net on or off; now() == steps() * dt.
   [[nodiscard]] std::int64_t steps() const { return step_ + idle_; }
   /// The time at the end of the current step, seconds.
@@ -306,6 +311,8 @@ class Kernel {
   // chooses the binding the next start of coloured transition `t` occurs in (bound_next_):
   // false when none is enabled
   bool selectBinding(TransitionId t);
+  // fire(t), or fire(t, *chosen): the binding chosen by the user in place of selectBinding's
+  std::string fireIn(TransitionId t, const Binding* chosen);
   // whether every enabled transition is held back because none of its bindings is enabled
   [[nodiscard]] bool onlyUnbound() const;
   // the size of what term `i` of a coloured transition moves in the occurrence `o`

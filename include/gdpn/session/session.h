@@ -114,6 +114,10 @@ class Session {
   /// else why not: no such transition, it is occurring, not enabled (naming the arc that
   /// does not hold), its guard is false, or no node token satisfies its predicates.
   std::string fire(const std::string& transition);
+  /// Starts coloured transition `transition` now in `binding` (Kernel::fire(t, b)): "" when it
+  /// started, else why not (as fire(), or the binding is not enabled now). A run not begun
+  /// begins, this start before its first firing phase.
+  std::string fire(const std::string& transition, const net::Binding& binding);
   /// One step with the net switched off: the plant moves and the sensors read it, the
   /// marking stays and occurrences pause. A run that has not begun begins first (time 0's
   /// sensing and firing phase).

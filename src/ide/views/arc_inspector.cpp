@@ -117,11 +117,16 @@ void arcInspector(App& app, const Selection& sel, nlohmann::json& report) {
   if (ImGui::Button("Delete")) (void)performAction(app, ActionId::Delete);
   noteItem("Delete", report["buttons"]);
   // the weight on each slot (none written: 1 on a0)
-  if (arc.weights.empty()) arc.weights.push_back({net::kDefaultSlot, 1, {}, {}});
+  // a slot with an inscription has no weight: the inscription says what moves
+  const auto inscribed = [&](net::SlotId slot) {
+    return std::any_of(was.inscriptions.begin(), was.inscriptions.end(), [&](const net::SlotText& t) { return t.slot == slot; });
+  };
+  if (arc.weights.empty() && !inscribed(net::kDefaultSlot)) arc.weights.push_back({net::kDefaultSlot, 1, {}, {}});
   bool changed = false;
   int remove = -1;
   for (std::size_t i = 0; i < arc.weights.size(); ++i) {
     auto& w = arc.weights[i];
+    if (inscribed(w.slot)) continue;
     ImGui::PushID(static_cast<int>(i));
     const std::string slot = net::slotName(w.slot);
     ImGui::Text("weight %s", slot.c_str());
@@ -193,12 +198,64 @@ void arcInspector(App& app, const Selection& sel, nlohmann::json& report) {
         case net::SlotKind::Node: changed = expressionRow("predicate", slot, arc.predicates, was.loc, report) || changed; break;
         case net::SlotKind::Sensor: changed = expressionRow("condition", slot, arc.conditions, was.loc, report) || changed; break;
         case net::SlotKind::Control:
-        case net::SlotKind::Value: break;  // an inscription: edited in the contents view
+        case net::SlotKind::Value: break;  // an inscription: below
       }
     }
   }
   ImGui::EndDisabled();
-  if (changed && editing) (void)setArc(app, page, was, arc);
+  if (changed && editing) {
+    (void)setArc(app, page, was, arc);
+    return;
+  }
+  // the inscriptions of the value slots of its place (input or output), in the inscription
+  // language, checked as typed
+  const net::PlaceSpec* valued = nullptr;
+  if (spec != nullptr) {
+    for (const auto& p : spec->places) {
+      if (p.name == was.from || p.name == was.to) valued = &p;
+    }
+  }
+  if (valued == nullptr || valued->colours.empty()) return;
+  std::vector<net::SlotId> slots;
+  for (const auto& i : was.inscriptions) slots.push_back(i.slot);
+  for (const auto& c : valued->colours) {
+    const bool weighed = std::any_of(was.weights.begin(), was.weights.end(), [&](const auto& w) { return w.slot == c.slot; });
+    if ((weighed || (was.weights.empty() && c.slot == net::kDefaultSlot)) &&
+        std::find(slots.begin(), slots.end(), c.slot) == slots.end()) {
+      slots.push_back(c.slot);
+    }
+  }
+  ImGui::BeginDisabled(!editing);
+  for (const auto slot : slots) {
+    std::string set, text;
+    for (const auto& c : valued->colours) {
+      if (c.slot == slot) set = c.text;
+    }
+    for (const auto& i : was.inscriptions) {
+      if (i.slot == slot) text = i.text;
+    }
+    const std::string name = net::slotName(slot);
+    inscriptionField(app, sel.name + "#inscription " + name, "inscription " + name, text, set, InscriptionRole::Arc,
+                     [&app, page, was, slot](const std::string& typed) {
+                       net::ArcSpec next = was;
+                       const auto it = std::find_if(next.inscriptions.begin(), next.inscriptions.end(),
+                                                    [&](const net::SlotText& t) { return t.slot == slot; });
+                       if (typed.empty()) {
+                         if (it != next.inscriptions.end()) next.inscriptions.erase(it);
+                       } else if (it != next.inscriptions.end()) {
+                         it->text = typed;
+                         it->layout.clear();
+                       } else {
+                         next.inscriptions.push_back({slot, typed, was.loc});
+                         // an inscription replaces the weight on its slot
+                         std::erase_if(next.weights, [&](const net::SlotCount& w) { return w.slot == slot; });
+                       }
+                       (void)setArc(app, page, was, next);
+                     },
+                     report);
+    report["inscription " + name] = text;
+  }
+  ImGui::EndDisabled();
 }
 
 }  // namespace gdpn::ide

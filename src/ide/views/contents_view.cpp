@@ -18,6 +18,7 @@
 #include "gdpn/core/text.h"
 #include "gdpn/net/script_kind.h"
 #include "gdpn/net/slot.h"
+#include "gdpn/ide/colour_edit.h"
 #include "gdpn/ide/net_edit.h"
 #include "gdpn/ide/python_text.h"
 #include "gdpn/ide/token_types.h"
@@ -230,6 +231,37 @@ void commitTransition(App& app, const ConstructAt& at, net::TransitionSpec t) {
   commit(app, std::move(e));
 }
 
+/// The text `list` holds for `slot` ("" when none).
+std::string slotText(const std::vector<net::SlotText>& list, net::SlotId slot) {
+  for (const auto& t : list) {
+    if (t.slot == slot) return t.text;
+  }
+  return {};
+}
+
+/// Sets the text of `slot` in `list` to `text` (its place in the file kept, else `owner`); ""
+/// removes it.
+void setSlotText(std::vector<net::SlotText>& list, net::SlotId slot, const std::string& text, const core::SourceLoc& owner) {
+  const auto it = std::find_if(list.begin(), list.end(), [&](const net::SlotText& t) { return t.slot == slot; });
+  if (text.empty()) {
+    if (it != list.end()) list.erase(it);
+    return;
+  }
+  if (it != list.end()) {
+    it->text = text;
+    it->layout.clear();  // the text is new: its characters follow its first one
+    return;
+  }
+  list.push_back({slot, text, owner});
+}
+
+/// Makes slot `slot` of `p` a value slot of colour set `set`.
+void setValueSlot(net::PlaceSpec& p, net::SlotId slot, const std::string& set) {
+  if (slotKindOf(p, slot) != net::SlotKind::Value) setSlotKind(p, slot, net::SlotKind::Value);
+  std::erase_if(p.kinds, [&](const net::SlotDecl& d) { return d.slot == slot; });  // the colour says it
+  setSlotText(p.colours, slot, set, p.loc);
+}
+
 /// The sensor nodes of the document's scene, by path.
 void sensorPaths(const scene::Node& node, std::vector<std::string>& out) {
   for (const auto& c : node.children()) {
@@ -253,6 +285,18 @@ void slotMenu(App& app, const ConstructAt& at, const net::PlaceSpec& place, net:
     setSlotKind(p, slot, net::SlotKind::Node);
     commitPlace(app, at, std::move(p));
   }
+  if (beginMenu("Value slot", menu)) {
+    // a colour set makes it one: the built-ins and the model's own
+    const auto scope = colourScopeOf(app.document().model().net);
+    for (const auto& s : scope.colours.sets()) {
+      if (menuItem(s.name.c_str(), menu) && slotText(place.colours, slot) != s.name) {
+        auto p = place;
+        setValueSlot(p, slot, s.name);
+        commitPlace(app, at, std::move(p));
+      }
+    }
+    ImGui::EndMenu();
+  }
   if (beginMenu("Sensor slot", menu)) {
     std::vector<std::string> sensors;
     if (const auto* s = app.document().scene()) sensorPaths(s->root(), sensors);
@@ -267,6 +311,42 @@ void slotMenu(App& app, const ConstructAt& at, const net::PlaceSpec& place, net:
     ImGui::EndMenu();
   }
   ImGui::EndPopup();
+}
+
+/// A value slot's colour set (a list of the model's sets) and its initial values (a field of the
+/// inscription language, checked as typed).
+void valueFields(App& app, const ConstructAt& at, const net::PlaceSpec& place, net::SlotId slot, nlohmann::json& report) {
+  const std::string name = net::slotName(slot);
+  const std::string set = slotText(place.colours, slot);
+  const auto scope = colourScopeOf(app.document().model().net);
+  ImGui::TextUnformatted(("colour " + name).c_str());
+  ImGui::SameLine(150);
+  ImGui::SetNextItemWidth(160);
+  const bool open = ImGui::BeginCombo("##colour", set.empty() ? "(none)" : set.c_str());
+  noteItem("colour " + name, report["fields"]);
+  if (open) {
+    for (const auto& s : scope.colours.sets()) {
+      const bool chosen = ImGui::Selectable(s.name.c_str(), s.name == set);
+      noteItem("colour " + name + " " + s.name, report["fields"]);
+      if (chosen && s.name != set) {
+        auto p = place;
+        setValueSlot(p, slot, s.name);
+        commitPlace(app, at, std::move(p));
+      }
+    }
+    ImGui::EndCombo();
+  }
+  if (set.empty()) ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "a value slot needs a colour set");
+  report["colour " + name] = set;
+  const std::string construct = at.page + "/" + at.name;
+  inscriptionField(app, construct + "#values " + name, "values " + name, slotText(place.values, slot), set,
+                   InscriptionRole::Values,
+                   [&app, at, place, slot](const std::string& text) {
+                     auto p = place;
+                     setSlotText(p.values, slot, text, p.loc);
+                     commitPlace(app, at, std::move(p));
+                   },
+                   report);
 }
 
 /// The chosen slot's own fields: tokens and capacity, or its node tokens, or its sensor.
@@ -308,6 +388,7 @@ void slotFields(App& app, const ConstructAt& at, const net::PlaceSpec& place, ne
       commitPlace(app, at, std::move(p));
     }
     paramNote(slotParam(place.capacity, slot));
+    if (kind == net::SlotKind::Value) valueFields(app, at, place, slot, report);
     if (kind == net::SlotKind::Node) {
       for (const auto& n : place.nodes) {
         if (n.slot != slot) continue;
@@ -563,6 +644,19 @@ void editTransition(App& app, const ConstructAt& at, const net::TransitionSpec& 
     next.probability = probability;
     next.servers = servers_now;
     commitTransition(app, at, std::move(next));
+  }
+  // the condition over its variables, in the inscription language (beside the Python guard)
+  inscriptionField(app, construct + "#when", "condition (when)", t.when.text, {}, InscriptionRole::Condition,
+                   [&app, at, t](const std::string& text) {
+                     auto next = t;
+                     next.when.text = text;
+                     next.when.layout.clear();
+                     if (next.when.loc.line <= 0) next.when.loc = t.loc;
+                     commitTransition(app, at, std::move(next));
+                   },
+                   report);
+  if (report.contains("fields")) {
+    for (auto& [k, v] : report["fields"].items()) fields[k] = v;
   }
   report["duration"] = durationText(t.duration);
   report["fields"] = fields;

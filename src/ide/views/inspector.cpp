@@ -423,6 +423,7 @@ void runState(App& app, const session::Session& session, const Selection& sel, n
     const auto& loc = sim.net().placeLoc(*p);
     if (loc.line > 0) ImGui::TextDisabled("declared at %s", loc.str().c_str());
     report["tokens"] = tokens;
+    placeValues(session, *p, report);
     ImGui::SetNextItemWidth(90);
     ImGui::InputInt("##at_least", &app.inspector.break_tokens);
     ImGui::SameLine();
@@ -459,6 +460,7 @@ void runState(App& app, const session::Session& session, const Selection& sel, n
     }
     report["readiness"] = net::readinessName(ready);
     report["why"] = why;
+    transitionBindings(app, session, id, sel.name, report);
     // in edit mode the contents view below has them as fields
     if (app.run().mode() != RunMode::Edit) {
       ImGui::Text("priority %lld, probability %g", static_cast<long long>(tr.priority), tr.probability);

@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <string_view>
 
 #include "../views.h"
 #include "gdpn/ide/io_list.h"
@@ -202,17 +203,20 @@ void partRow(App& app, const IoListRow& first, std::size_t count, std::size_t un
 }  // namespace
 
 Rect drawInspectorTabs(App& app, const Rect& at, nlohmann::json& report) {
-  // two tabs where the panel's heading would be: the inspector, and the I/O list
+  // three tabs where the panel's heading would be: the inspector, the I/O list, the colour sets
   auto* draw = ImGui::GetWindowDrawList();
   float x = at.x + 4;
-  for (const bool io : {false, true}) {
-    const char* label = io ? "I/O" : "Inspector";
-    const bool active = app.io_list.shown == io;
+  const char* shown = app.io_list.shown ? "I/O" : app.colour_sets.shown ? "Colour Sets" : "Inspector";
+  for (const char* label : {"Inspector", "I/O", "Colour Sets"}) {
+    const bool active = std::string_view(label) == shown;
     const ImVec2 text = ImGui::CalcTextSize(label);
     const ImVec2 lo{x, at.y + 3}, hi{x + text.x + 20, at.y + kTabsHeight};
     ImGui::SetCursorScreenPos(lo);
     ImGui::PushID(label);
-    if (ImGui::InvisibleButton("##tab", {hi.x - lo.x, hi.y - lo.y})) app.io_list.shown = io;
+    if (ImGui::InvisibleButton("##tab", {hi.x - lo.x, hi.y - lo.y})) {
+      app.io_list.shown = std::string_view(label) == "I/O";
+      app.colour_sets.shown = std::string_view(label) == "Colour Sets";
+    }
     ImGui::PopID();
     noteItem(label, report);
     const ImGuiCol fill = active ? ImGuiCol_TabActive : ImGui::IsItemHovered() ? ImGuiCol_TabHovered : ImGuiCol_Tab;
@@ -220,7 +224,7 @@ Rect drawInspectorTabs(App& app, const Rect& at, nlohmann::json& report) {
     draw->AddText({lo.x + 10, lo.y + (hi.y - lo.y - text.y) / 2}, ImGui::GetColorU32(active ? kHeading : kFaint), label);
     x = hi.x + 2;
   }
-  report["active"] = app.io_list.shown ? "I/O" : "Inspector";
+  report["active"] = shown;
   return {at.x, at.y + kTabsHeight, at.w, at.h - kTabsHeight};
 }
 

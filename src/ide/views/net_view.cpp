@@ -369,7 +369,24 @@ std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const R
         else if (ready == net::Readiness::Untried) tip += "\nwaiting: " + kernel.readinessText(*t);
       }
     }
-    ImGui::SetTooltip("%s", tip.c_str());
+    // a coloured place's values, a coloured transition's binding while it occurs
+    if (under->kind == diagram::ItemKind::Place && session != nullptr && under->index < s.binding.places.size()) {
+      if (const auto p = s.binding.places[under->index]) tip += valuesTooltip(*session, *p);
+    }
+    if (under->kind == diagram::ItemKind::Transition && session != nullptr && under->index < s.binding.transitions.size()) {
+      if (const auto t = s.binding.transitions[under->index]) {
+        const auto& sim = session->simulation();
+        const auto* c = sim.net().colouring();
+        const auto* ti = c != nullptr ? c->of(*t) : nullptr;
+        if (const auto* b = ti != nullptr ? sim.kernel().binding(*t) : nullptr) tip += "\noccurring in: " + bindingText(c->colours, *ti, b->binding);
+      }
+    }
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 35.0f);
+    ImGui::TextUnformatted(tip.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+    report["tooltip"] = tip;
   }
   report["drawn"] = drawn;
   report["zoom"] = viewport.zoom;

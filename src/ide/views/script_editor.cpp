@@ -86,7 +86,8 @@ std::optional<RunError> runErrorIn(App& app, const ScriptAt& at) {
 /// What the text field's callback works on.
 struct FieldCall {
   CompletionPopup& popup;
-  const ScriptScope& scope;
+  const Completer& complete;
+  bool enter_applies = false;  ///< Enter with the list closed is not typed: it sets popup.enter
 };
 
 bool nameChar(ImWchar c) { return c < 128 && (std::isalnum(static_cast<int>(c)) != 0 || c == '_'); }
@@ -110,6 +111,10 @@ int fieldCallback(ImGuiInputTextCallbackData* data) {
     const ImWchar c = data->EventChar;
     if (p.open && (c == '\t' || c == '\n')) {
       p.accept = true;
+      return 1;
+    }
+    if (!p.open && c == '\n' && call.enter_applies) {
+      p.enter = true;
       return 1;
     }
     if (!p.open && c == '\t' && p.cursor > 0 && p.cursor >= static_cast<int>(p.query.start) &&
@@ -139,13 +144,13 @@ int fieldCallback(ImGuiInputTextCallbackData* data) {
   }
   p.accept = false;
   const std::string_view code(data->Buf, static_cast<std::size_t>(data->BufTextLen));
-  auto q = complete(call.scope, code, static_cast<std::size_t>(data->CursorPos));
+  auto q = call.complete(code, static_cast<std::size_t>(data->CursorPos));
   const bool whole = q.names.size() == 1 && q.names.front().name == q.prefix;  // nothing left to complete
   if (p.ask) {
     if (q.names.size() == 1) {
       insertChosen(data, q, 0);
-      q = complete(call.scope, std::string_view(data->Buf, static_cast<std::size_t>(data->BufTextLen)),
-                   static_cast<std::size_t>(data->CursorPos));
+      q = call.complete(std::string_view(data->Buf, static_cast<std::size_t>(data->BufTextLen)),
+                        static_cast<std::size_t>(data->CursorPos));
       p.open = false;
     } else {
       p.open = !q.names.empty();
@@ -254,6 +259,18 @@ std::string whereText(int line, int file_line) {
 
 }  // namespace
 
+bool completingField(const char* id, std::string& buffer, CompletionPopup& popup, const Completer& complete, float width,
+                     int lines, nlohmann::json& entry) {
+  FieldCall call{popup, complete, true};
+  const bool changed = ImGui::InputTextMultiline(
+      id, &buffer, {width, ImGui::GetTextLineHeight() * static_cast<float>(std::max(1, lines)) + 8},
+      ImGuiInputTextFlags_AllowTabInput | ImGuiInputTextFlags_CallbackCharFilter | ImGuiInputTextFlags_CallbackAlways,
+      &fieldCallback, &call);
+  if (ImGui::IsItemActive()) drawCompletion(popup, buffer, entry);
+  else popup.open = false;
+  return changed;
+}
+
 std::pair<int, std::string> runError(App& app) {
   auto& ed = app.inspector.scripts;
   const auto& doc = app.document();
@@ -324,7 +341,8 @@ void scriptEditor(App& app, const std::string& key, const std::string& heading, 
       ed.scope = scopeOf(app.document().model(), app.tokenTypes(), at.page, at.construct, at.kind, at.slot);
     }
     const int lines = 1 + static_cast<int>(std::count(ed.buffer.begin(), ed.buffer.end(), '\n'));
-    FieldCall call{ed.completion, ed.scope};
+    const Completer completer = [&ed](std::string_view code, std::size_t cursor) { return complete(ed.scope, code, cursor); };
+    FieldCall call{ed.completion, completer};
     ImGui::InputTextMultiline("##code", &ed.buffer,
                               {-1, ImGui::GetTextLineHeight() * static_cast<float>(std::clamp(lines + 1, 3, 16)) + 8},
                               ImGuiInputTextFlags_AllowTabInput | ImGuiInputTextFlags_CallbackCharFilter |

@@ -6,16 +6,30 @@
 
 #include <functional>
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include <nlohmann/json.hpp>
 
+#include "gdpn/ide/script_completion.h"
 #include "gdpn/ide/script_places.h"
 #include "gdpn/net/spec.h"
 
 namespace gdpn::ide {
 
 class App;
+struct CompletionPopup;
+
+/// What may complete the word at byte `cursor` of `text`.
+using Completer = std::function<CompletionQuery(std::string_view text, std::size_t cursor)>;
+
+/// A text field `id` (`width` pixels, -1 the whole row; `lines` high) over `buffer` with the
+/// completion list of `complete` under the cursor, as the script editor has it: it opens after a
+/// dot or from a name's second character (Tab asks), Up and Down choose, Tab or Enter insert.
+/// Enter with the list closed is not typed: it sets `popup.enter` (the caller applies the text).
+/// The list's state goes into `entry["completion"]`. True when the text changed.
+bool completingField(const char* id, std::string& buffer, CompletionPopup& popup, const Completer& complete, float width,
+                     int lines, nlohmann::json& entry);
 
 /// The run's last error at a line of the model file (0: none) and its message, while the
 /// document is as that run had it: a script's exception, or an error found when the run was
