@@ -110,6 +110,46 @@ TEST(Cli, AColouredModelRunsToItsValuesAndIsAnalysedUnfoldedUnderItsOwnNames) {
   EXPECT_NE(r.out.find("query 2: bound(main/idle)\n  3 "), std::string::npos) << r.out;
 }
 
+TEST(Cli, TheColouredSortingDeviceIsAnalysedToItsBinsByHand) {
+  // examples/sorting/coloured unfolded (docs/examples.md): a state is the stock s, the balls
+  // falling f, the blue balls in the left bin b and the red in the right r, and the gate's one
+  // token, clear, seen blue, seen red or passing. Clear and passing: s + f + b + r = 50,
+  // C(53,3) = 23426 each, less the 51 passing ones with b + r = 0; seen: s + f + b + r = 49,
+  // C(52,3) = 22100 each. 23426 + 23375 + 2 x 22100 = 91001 markings. Edges: from clear, drop
+  // (s >= 1: 22100) and two reads (f >= 1: 2 x 22100); from each seen, drop (C(51,3) = 20825)
+  // and its push (22100); from passing, drop (22100 - 50) and leave (23375): 197575.
+  auto r = gdpn("analyze examples/sorting/coloured");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("91001 states, 197575 edges (complete"), std::string::npos) << r.out;
+  // dead only when every ball is in a bin: b + r = 50, 51 ways
+  EXPECT_NE(r.out.find("  dead markings:   51 in all\n"), std::string::npos) << r.out;
+  // no transition of the unfolded net puts a red token into the left bin, nor a blue one into
+  // the right
+  EXPECT_NE(r.out.find("at most 0: main/gate main/left_bin_red main/right_bin_blue\n"), std::string::npos) << r.out;
+  // no ball lost: one P-invariant counts every ball wherever it is; the gate holds one at a time
+  EXPECT_NE(r.out.find("    main/stock + main/falling + main/seen_blue + main/seen_red + main/left_bin_blue +\n"
+                       "      main/right_bin_red = 50\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("    main/clear + main/seen_blue + main/seen_red + main/passing = 1\n"), std::string::npos) << r.out;
+  r = gdpn("analyze examples/sorting/coloured --query 'AG left_bin_red + right_bin_blue = 0' --query 'AG (not deadlock or "
+           "left_bin + right_bin = 50)' --query 'AF deadlock' --query 'EF left_bin_blue = 50' --query 'bound(seen)'");
+  EXPECT_EQ(r.code, 0) << r.out;
+  // the two places no transition feeds are 0 before the search
+  EXPECT_NE(r.out.find("query 1: AG 0 = 0\n  true"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("query 2: AG (not deadlock or main/left_bin_blue + main/right_bin_red = 50)\n  true"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("query 3: AF deadlock\n  true"), std::string::npos) << r.out;
+  // the analysis does not run the sensor: all fifty may be blue
+  EXPECT_NE(r.out.find("query 4: EF main/left_bin_blue = 50\n  true"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("query 5: bound(main/seen)\n  1 "), std::string::npos) << r.out;
+  // the scene-node-data version: one transition, the routing hidden in a handler
+  r = gdpn("analyze examples/sorting");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("51 states, 50 edges (complete"), std::string::npos) << r.out;
+}
+
 TEST(Cli, ReportHoldsTheExactCycleTimes) {
   const auto report = temp("gdpn_cycles_report.json");
   const auto r = gdpn("run tests/data/good/cycles.gdpn.yaml --quiet --report " + report);

@@ -72,6 +72,53 @@ TEST(ValueRun, TheDrillNeverTakesJobThreeAndEveryStartIsASkillOfItsMachine) {
   EXPECT_GE(starts, 4);
 }
 
+TEST(ValueRun, TheColouredSortingDevicePutsEachBallInTheBinOfItsColour) {
+  // examples/sorting/coloured, seed 7: the sensor's reading becomes a value in `seen`, the
+  // conditions on it route blue to the left bin (-y) and red to the right (+y)
+  auto sim = testing::openModelFile("examples/sorting/coloured/sorting.gdpn.yaml");
+  ASSERT_TRUE(sim);
+  const auto outcome = sim->run({});
+  ASSERT_EQ(outcome.reason, StopReason::Dead) << outcome.message;
+  // in the plant: every ball landed on the side of its colour (its material says which)
+  const auto* falling = sim->plant()->find("falling");
+  ASSERT_NE(falling, nullptr);
+  ASSERT_EQ(falling->children().size(), 50u);
+  int blue = 0, red = 0;
+  for (const auto& group : falling->children()) {
+    const bool is_blue = group->child("#0")->vec3(scene::field::Material::Diffuse).z > 0.5;
+    const auto* ball = group->child("ball");
+    ASSERT_NE(ball, nullptr);
+    EXPECT_LT(ball->world.position.z, 0.3) << group->path() << " has not landed";
+    if (is_blue) {
+      EXPECT_LT(ball->world.position.y, -0.05) << group->path() << " is blue";
+      ++blue;
+    } else {
+      EXPECT_GT(ball->world.position.y, 0.05) << group->path() << " is red";
+      ++red;
+    }
+  }
+  EXPECT_EQ(blue, 23);
+  EXPECT_EQ(red, 27);
+  // in the net: a value per ball, each bin holding its own colour alone, the gate clear
+  const auto r = makeReport(*sim, outcome);
+  EXPECT_EQ(place(r, "main/left_bin").final_values, "23'blue");
+  EXPECT_EQ(place(r, "main/right_bin").final_values, "27'red");
+  EXPECT_EQ(place(r, "main/seen").final_values, "empty");
+  EXPECT_EQ(place(r, "main/stock").final_tokens, 0);
+  EXPECT_EQ(place(r, "main/clear").final_tokens, 1);
+  // the model's summary counts the same from the balls' user data and positions
+  std::string error;
+  const auto figures = sim->modelFigures(error);
+  ASSERT_EQ(error, "");
+  std::vector<std::pair<std::string, double>> numbers;
+  for (const auto& f : figures) numbers.emplace_back(f.label, f.value.value_or(-1));
+  EXPECT_EQ(numbers, (std::vector<std::pair<std::string, double>>{{"balls dropped", 50},
+                                                                  {"blue in the left bin", 23},
+                                                                  {"red in the left bin", 0},
+                                                                  {"red in the right bin", 27},
+                                                                  {"blue in the right bin", 0}}));
+}
+
 TEST(ValueRun, TheSameSeedGivesTheSameTraceAndAnotherSeedAnotherOne) {
   auto trace = [](std::uint64_t seed) {
     auto sim = testing::openModelFile("examples/coloured/job_shop/job_shop.gdpn.yaml", seed);
