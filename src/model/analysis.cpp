@@ -98,7 +98,9 @@ Analysis analyze(const net::Net& net, std::string path, const AnalysisOptions& o
     if (options.progress) limits.progress = [&options, name](const net::InvariantProgress& p) { options.progress(name, p); };
   };
   phase("invariants");
-  a.invariants = net::invariants(net, limits);
+  // a coloured net searched as it is: its arcs' counts are the least they move, which says
+  // nothing of its invariants where some move more under some binding
+  if (!net.colouring() || net.countsExact()) a.invariants = net::invariants(net, limits);
   phase("cycle times");
   if (timed(net) && net.countsExact()) a.cycles = net::cycleBounds(net, a.invariants, effectiveDurations(net, options.dt), limits, &a.cycles_stop);
   explore.invariants = &a.invariants;  // their bounds size the markings
@@ -451,31 +453,34 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
   }
   out << "\n";
 
+  constexpr std::size_t kShown = 20, kMostPlaces = 8;
   const auto& inv = a.invariants;
-  out << "invariants" << (inv.complete ? "" : std::string(" (") + net::stopReason(inv.stop) + ")") << ":\n"
-      << "  conservative: " << yes(inv.conservative) << "; structurally bounded: " << yes(inv.structurally_bounded)
-      << "; covered by T-invariants: " << yes(inv.consistent) << "\n";
-  constexpr std::size_t kShown = 20;
-  out << "  P-invariants (" << inv.p.size() << "):" << (inv.p.empty() ? " none" : "") << "\n";
-  // each wrapped at 100 columns, cut after kMostPlaces places (--json has them whole)
-  constexpr std::size_t kMostPlaces = 8;
-  for (std::size_t i = 0; i < inv.p.size() && i < kShown; ++i) {
-    auto terms = invariantWords(invariantText(net, inv.p[i]), kMostPlaces, "--json");
-    terms.push_back("= " + std::to_string(tokensOn(net, inv.p[i])));
-    out << "   ";
-    core::writeWrapped(out, 3, terms, 6);
-    out << "\n";
+  out << "invariants" << (inv.complete ? "" : std::string(" (") + net::stopReason(inv.stop) + ")") << ":\n";
+  if (net.colouring() && !net.countsExact()) {
+    out << "  of the counts: none sought, as what some arcs move depends on the binding\n";
+  } else {
+    out << "  conservative: " << yes(inv.conservative) << "; structurally bounded: " << yes(inv.structurally_bounded)
+        << "; covered by T-invariants: " << yes(inv.consistent) << "\n";
+    out << "  P-invariants (" << inv.p.size() << "):" << (inv.p.empty() ? " none" : "") << "\n";
+    // each wrapped at 100 columns, cut after kMostPlaces places (--json has them whole)
+    for (std::size_t i = 0; i < inv.p.size() && i < kShown; ++i) {
+      auto terms = invariantWords(invariantText(net, inv.p[i]), kMostPlaces, "--json");
+      terms.push_back("= " + std::to_string(tokensOn(net, inv.p[i])));
+      out << "   ";
+      core::writeWrapped(out, 3, terms, 6);
+      out << "\n";
+    }
+    if (inv.p.size() > kShown) out << "    ... and " << inv.p.size() - kShown << " more (--json lists all)\n";
+    out << "  T-invariants (" << inv.t.size() << "):" << (inv.t.empty() ? " none" : "") << "\n";
+    for (std::size_t i = 0; i < inv.t.size() && i < kShown; ++i) {
+      std::vector<std::string> names;
+      for (const auto& [k, w] : inv.t[i].weights) names.push_back((w != 1 ? std::to_string(w) + "*" : "") + net.transitionName(net::TransitionId{k}));
+      out << "   ";
+      core::writeWrapped(out, 3, names, 6, kShownNames);
+      out << "\n";
+    }
+    if (inv.t.size() > kShown) out << "    ... and " << inv.t.size() - kShown << " more (--json lists all)\n";
   }
-  if (inv.p.size() > kShown) out << "    ... and " << inv.p.size() - kShown << " more (--json lists all)\n";
-  out << "  T-invariants (" << inv.t.size() << "):" << (inv.t.empty() ? " none" : "") << "\n";
-  for (std::size_t i = 0; i < inv.t.size() && i < kShown; ++i) {
-    std::vector<std::string> names;
-    for (const auto& [k, w] : inv.t[i].weights) names.push_back((w != 1 ? std::to_string(w) + "*" : "") + net.transitionName(net::TransitionId{k}));
-    out << "   ";
-    core::writeWrapped(out, 3, names, 6, kShownNames);
-    out << "\n";
-  }
-  if (inv.t.size() > kShown) out << "    ... and " << inv.t.size() - kShown << " more (--json lists all)\n";
   if (const auto& c = a.coloured) {
     // the coloured net's own, in its places' names, each wrapped under its start
     out << "  coloured P-invariants, found without unfolding (" << c->invariants.size() << ")"

@@ -21,6 +21,7 @@
 #include <unordered_map>
 
 #include "detail/marking_store.h"
+#include "gdpn/core/assert.h"
 #include "gdpn/net/inscription.h"
 #include "gdpn/net/invariants.h"
 
@@ -33,6 +34,11 @@ using StateId = std::uint32_t;
 constexpr StateId kNoState = 0xffffffffu;
 /// The most copies of one value (or tokens in a count slot) a marking may hold.
 constexpr std::uint64_t kMostCount = 0xfffffffeu;
+/// The most states a search stores (ids are 32-bit; one expansion adds a few more).
+constexpr std::uint64_t kMostStates = 0x7ffffff0u;
+/// The most bytes a stored marking may take (it lies in one chunk of the store): about half a
+/// million distinct values held at once.
+constexpr std::uint32_t kMostBytes = std::uint32_t{1} << 20;
 
 struct Entry {
   std::uint32_t slot = 0;
@@ -80,6 +86,7 @@ struct Instance {
   std::uint32_t rooms_begin = 0;       // into Search::rooms_
   std::uint32_t rooms_end = 0;
   bool fired = false;
+  bool too_big = false;  // it changes a count by more than kMostCount
 };
 
 /// A place slot with a capacity that an instance puts into: its tokens must be at most `most`
@@ -272,13 +279,14 @@ std::uint32_t Search::instance(TransitionId t, const Binding& b, const std::vect
   // the changes, and per place slot what the instance takes and puts
   std::map<std::uint32_t, std::int64_t> delta;
   std::map<PlaceSlotId, std::pair<std::int64_t, std::int64_t>> take_put;
-  std::vector<bool> inscribed(net_.terms().size(), false);
+  const Transition& tr = net_.transitions()[t];
+  std::vector<bool> inscribed(tr.terms_end - tr.terms_begin, false);  // by term, from the transition's first
   if (arcs) {
     const auto k = static_cast<std::size_t>(c_.of_transition[t]);
     const auto& ti = c_.transitions[k];
     for (std::size_t a = 0; a < ti.arcs.size(); ++a) {
       const TermId term_id = c_.arc_terms[k][a];
-      inscribed[term_id] = true;
+      inscribed[term_id - tr.terms_begin] = true;
       const PlaceSlotId ps = net_.terms()[term_id].place_slot;
       const ArcRole role = ti.arcs[a].role;
       if (role != ArcRole::Take && role != ArcRole::Put) continue;
@@ -289,23 +297,26 @@ std::uint32_t Search::instance(TransitionId t, const Binding& b, const std::vect
       }
     }
   }
-  const Transition& tr = net_.transitions()[t];
   for (std::uint32_t i = tr.terms_begin; i < tr.terms_end; ++i) {
     const Term& term = net_.terms()[i];
-    if (inscribed[i] || (term.kind != TermKind::Input && term.kind != TermKind::Output)) continue;
+    if (inscribed[i - tr.terms_begin] || (term.kind != TermKind::Input && term.kind != TermKind::Output)) continue;
     delta[term.place_slot] += term.kind == TermKind::Input ? -term.weight : term.weight;
     (term.kind == TermKind::Input ? take_put[term.place_slot].first : take_put[term.place_slot].second) += term.weight;
   }
   in.changes_begin = static_cast<std::uint32_t>(changes_.size());
   for (const auto& [slot, d] : delta) {
     if (d != 0) changes_.push_back({slot, d});
+    // no count may pass kMostCount: such an instance stops the search where it fires
+    in.too_big = in.too_big || d > static_cast<std::int64_t>(kMostCount) || -d > static_cast<std::int64_t>(kMostCount);
   }
   in.changes_end = static_cast<std::uint32_t>(changes_.size());
   in.rooms_begin = static_cast<std::uint32_t>(rooms_.size());
   for (const auto& [ps, tp] : take_put) {
     const std::int64_t cap = net_.placeSlots()[ps].capacity;
     if (cap == kUnbounded || tp.second == 0) continue;
-    rooms_.push_back({ps, cap + tp.first - tp.second});
+    std::int64_t most = 0;
+    if (__builtin_add_overflow(cap, tp.first, &most)) most = kUnbounded;
+    rooms_.push_back({ps, most - tp.second});
   }
   in.rooms_end = static_cast<std::uint32_t>(rooms_.size());
   instances_.push_back(in);
@@ -424,6 +435,7 @@ Search::Encoded Search::encode(const std::vector<Entry>& entries) {
 
 bool Search::encodeFired(const std::vector<Entry>& entries, const Instance& in, Encoded& e) {
   // the sorted entries and the sorted changes merged, written as they come
+  if (in.too_big) return false;
   e.begin = static_cast<std::uint32_t>(succ_bytes_.size());
   succ_bytes_.resize(e.begin + 10 * (entries.size() + (in.changes_end - in.changes_begin)));
   std::uint8_t* out = succ_bytes_.data() + e.begin;
@@ -454,7 +466,7 @@ bool Search::encodeFired(const std::vector<Entry>& entries, const Instance& in, 
     const Change& c = changes_[k++];
     std::int64_t count = c.delta;
     if (i < n && entries[i].slot == c.slot) count += entries[i++].count;
-    if (count < 0) count = 0;  // not reached: the instance was enabled
+    GDPN_ASSERT(count >= 0, "an enabled instance takes no more than a marking holds");
     if (static_cast<std::uint64_t>(count) > kMostCount) return false;
     if (count > 0) emit(c.slot, static_cast<std::uint32_t>(count));
   }
@@ -515,18 +527,25 @@ void Search::decode(StateId s, std::vector<Entry>& out) const {
 }
 
 std::uint64_t Search::bytes() const {
-  return bytes_.bytes() + where_.bytes() + table_.capacity() * 8 + succ_bytes_.capacity() + edge_begin_.bytes() +
+  std::uint64_t caches = 0;
+  for (const TransitionPlan& p : plans_) {
+    caches += p.table.capacity() * sizeof(TransitionPlan::Cached) + (p.keys.capacity() + p.lists.capacity()) * 4;
+  }
+  // the instances (a binding's values and its map entry about 96 bytes more) and the slots
+  caches += instances_.capacity() * (sizeof(Instance) + 96) + changes_.capacity() * sizeof(Change) +
+            slot_ps_.capacity() * 48;
+  return caches + bytes_.bytes() + where_.bytes() + table_.capacity() * 8 + succ_bytes_.capacity() + edge_begin_.bytes() +
          edge_to_.bytes() + edge_instance_.bytes() + enabled_mask_.bytes() + parent_.bytes() + parent_via_.bytes();
 }
 
 StateSpace Search::run() {
   StateSpace out;
-  plan();
-  // slots: the count slots first, by their place slot's index
+  // slots: the count slots first, by their place slot's index; then (value slot, value) pairs
   for (const PlaceSlotId ps : net_.placeSlotIds()) {
     slot_ps_.push_back(ps);
     slot_value_.push_back(0);
   }
+  plan();
   std::vector<Entry> entries;
   for (const PlaceSlotId ps : net_.placeSlotIds()) {
     if (isValueSlot(ps)) {
@@ -588,6 +607,10 @@ StateSpace Search::run() {
         out.stop = ExploreStop::Overflow;
         break;
       }
+      if (e.length > kMostBytes) {
+        out.stop = ExploreStop::Overflow;
+        break;
+      }
       e.instance = i;
       succ_.push_back(e);
     }
@@ -620,7 +643,7 @@ StateSpace Search::run() {
       ++out.dead_markings;
       if (first_dead == kNoState) first_dead = v;
     }
-    if (states_ > options_.max_states) {
+    if (states_ > std::min<std::uint64_t>(options_.max_states, kMostStates)) {
       out.stop = ExploreStop::MaxStates;
       break;
     }
@@ -752,7 +775,9 @@ void Search::components(StateSpace& out) {
         low[pu] = std::min(low[pu], low[pv]);
       }
       if (low[pv] != pv) continue;
-      // the state roots a component: it and those above it on the stack
+      // the state roots a component: it and those above it on the stack; the edge that led to
+      // it leaves its parent's
+      if (!frames.empty()) leaves[at[frames.back().v] - 1] = true;
       const std::uint32_t id = comps++;
       bool bottom = true;
       for (std::size_t k = pv; k < stack.size(); ++k) bottom = bottom && !leaves[k];
@@ -769,7 +794,10 @@ void Search::components(StateSpace& out) {
           }
           for (std::uint64_t e = edge_begin_[stack[k]]; e < edge_begin_[stack[k] + 1]; ++e) {
             const TransitionId t = instances_[edge_instance_[e]].t;
-            if (seen_in[t] != id) seen_in[t] = id, ++covered;
+            if (seen_in[t] != id) {
+              seen_in[t] = id;
+              ++covered;
+            }
           }
         }
         if (covered != transitions) live = false;
@@ -794,14 +822,16 @@ std::string colouredRefusal(const Net& net) {
   if (!c) return "the net has no value tokens";
   for (const TransitionId t : net.transitionIds()) {
     const auto* ti = c->of(t);
-    std::vector<bool> inscribed(net.terms().size(), false);
-    if (ti) {
-      for (const TermId term : c->arc_terms[static_cast<std::size_t>(c->of_transition[t])]) inscribed[term] = true;
-    }
     const Transition& tr = net.transitions()[t];
+    std::vector<bool> inscribed(tr.terms_end - tr.terms_begin, false);  // by term, from the transition's first
+    if (ti) {
+      for (const TermId term : c->arc_terms[static_cast<std::size_t>(c->of_transition[t])]) {
+        inscribed[term - tr.terms_begin] = true;
+      }
+    }
     for (std::uint32_t i = tr.terms_begin; i < tr.terms_end; ++i) {
       const Term& term = net.terms()[i];
-      if (c->setOf(term.place_slot) && !inscribed[i] && term.kind != TermKind::Condition) {
+      if (c->setOf(term.place_slot) && !inscribed[i - tr.terms_begin] && term.kind != TermKind::Condition) {
         return "transition '" + net.transitionName(t) + "' has an arc without inscription on value slot of place '" +
                net.placeName(net.placeSlots()[term.place_slot].place) + "'";
       }
@@ -811,6 +841,7 @@ std::string colouredRefusal(const Net& net) {
 }
 
 StateSpace exploreColoured(const Net& net, const ExploreOptions& options) {
+  GDPN_ASSERT(colouredRefusal(net).empty(), "exploreColoured is given only nets it can search (colouredRefusal)");
   return native::Search(net, options).run();
 }
 

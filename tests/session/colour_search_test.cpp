@@ -39,7 +39,7 @@ std::array<std::uint64_t, 3> serialNumbersByHand() {
     const auto [n, stamped, serial] = todo.front();
     todo.pop_front();
     std::vector<State> next;
-    for (int p = 0; p < 2; ++p) {
+    for (std::size_t p = 0; p < 2; ++p) {
       if (!stamped[p] && n < 40) {
         auto s = stamped;
         auto v = serial;
@@ -90,7 +90,7 @@ TEST(ColourSearch, WhatCannotBeUnfoldedIsSearchedOverValuesWithANote) {
   ASSERT_EQ(space.deadlock_bindings.size(), 80u);
   EXPECT_EQ(space.deadlock_bindings[0].rfind("n=0, p={serial = 0, line = \"", 0), 0u) << space.deadlock_bindings[0];
   ASSERT_EQ(space.dead_marking.size(), 2u);
-  EXPECT_EQ(space.dead_marking[0], "main/next = 40");
+  EXPECT_EQ(space.dead_marking[0], "main/next = 1'40");
   // every bound counts all the values of a place
   EXPECT_EQ(space.max_marking, 3);
   EXPECT_EQ(space.max_value_count, 1);

@@ -122,8 +122,9 @@ struct StateSpace {
   bool reversible = true;                ///< the initial marking is reachable from every marking
   std::vector<PlaceId> constant_places;  ///< places whose token count never changes
   std::uint64_t peak_bytes = 0;          ///< the most memory the search held, bytes
-  /// exploreColoured (value tokens): the most copies of one value in one place slot, the most
-  /// tokens one place of the unfolded net would hold; 0 for other searches.
+  /// exploreColoured (value tokens): the most copies of one value in one place slot (or tokens
+  /// in a count slot), the most tokens one place of the unfolded net would hold; 0 for other
+  /// searches.
   std::int64_t max_value_count = 0;
   /// exploreColoured: the distinct (transition, binding) pairs that occur, the transitions an
   /// unfolding would need at least; 0 for other searches.

@@ -13,8 +13,8 @@
 
 namespace gdpn::net {
 
-/// Why the native search cannot explore `net` (a count arc on a value slot, a node
-/// predicate on a coloured transition); empty when it can.
+/// Why the native search cannot explore `net` (an arc without inscription on a value slot);
+/// empty when it can.
 std::string colouredRefusal(const Net& net);
 
 /// Explores the reachability graph of coloured `net` (Net::colouring() not null, and
@@ -23,8 +23,10 @@ std::string colouredRefusal(const Net& net);
 /// of one value in one place slot. A transition is live when from every reachable marking
 /// some binding of it can occur again; the path to a deadlock is a shortest one. The graph
 /// is kept for the liveness passes: 8 bytes an edge, 16 a state and the markings' values
-/// (about 2 bytes a value held). ExploreOptions::threads, reduction and state_equation are
-/// not used. Unbounded nets run into `max_states` or `max_bytes`.
+/// (about 2 bytes a value held), and per transition the contents of its input places met.
+/// ExploreOptions::threads, reduction and state_equation are not used. Unbounded nets run
+/// into `max_states` or `max_bytes`, or stop at ExploreStop::Overflow where a count passes
+/// 2^32 - 2 or a marking's values take more than 1 MiB.
 StateSpace exploreColoured(const Net& net, const ExploreOptions& options = {});
 
 }  // namespace gdpn::net
