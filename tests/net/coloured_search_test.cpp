@@ -191,6 +191,22 @@ TEST(ColouredSearch, ACapacityOnAValueSlotCountsEveryValue) {
   EXPECT_TRUE(s.constant_places.empty());
 }
 
+TEST(ColouredSearch, AStartThatIsNeverMetAgainLeavesTheNetLive) {
+  // 0 -> 1 -> 2 -> 1 -> 2 ...: the start is a component of its own that the first firing
+  // leaves; the bottom one {1, 2} fires both transitions
+  Coloured c;
+  c.set(range("N", 0, 2)).variable("x", "N").place("p", "N", "0").transition("t").transition("u", "x > 0");
+  c.arc("p", "t", "x").arc("t", "p", "if x = 2 then 1 else x + 1").arc("p", "u", "x").arc("u", "p", "x");
+  const auto net = c.compiled();
+  ASSERT_TRUE(net);
+  const StateSpace s = exploreColoured(*net);
+  ASSERT_TRUE(s.complete);
+  EXPECT_EQ(s.states, 3u);
+  EXPECT_EQ(s.edges, 5u);
+  EXPECT_TRUE(s.live);
+  EXPECT_FALSE(s.reversible);
+}
+
 TEST(ColouredSearch, LimitsCutItShort) {
   Coloured c;
   c.set(range("N", 0, 999'999)).variable("x", "N").place("count", "N", "0").transition("inc", "x < 999");
