@@ -131,6 +131,7 @@ class Search {
     const auto [it, added] = slot_ids_.try_emplace(key, static_cast<std::uint32_t>(slot_ps_.size()));
     if (added) {
       slot_ps_.push_back(ps);
+      slot_place_.push_back(net_.placeSlots()[ps].place);
       slot_value_.push_back(static_cast<std::uint32_t>(key));
     }
     return it->second;
@@ -184,6 +185,7 @@ class Search {
   std::vector<Value> values_;
   std::unordered_map<std::uint64_t, std::uint32_t> slot_ids_;
   std::vector<PlaceSlotId> slot_ps_;          // per slot: its place slot
+  std::vector<PlaceId> slot_place_;           // per slot: its place
   std::vector<std::uint32_t> slot_value_;     // per slot: its value (value slots)
 
   std::vector<TransitionPlan> plans_;
@@ -543,6 +545,7 @@ StateSpace Search::run() {
   // slots: the count slots first, by their place slot's index; then (value slot, value) pairs
   for (const PlaceSlotId ps : net_.placeSlotIds()) {
     slot_ps_.push_back(ps);
+    slot_place_.push_back(net_.placeSlots()[ps].place);
     slot_value_.push_back(0);
   }
   plan();
@@ -580,7 +583,7 @@ StateSpace Search::run() {
     // figures of the marking
     std::int64_t in_marking = 0;
     for (const Entry& e : entries) {
-      const PlaceId p = net_.placeSlots()[slot_ps_[e.slot]].place;
+      const PlaceId p = slot_place_[e.slot];
       if (place_tokens_[p] == 0) touched_places_.push_back(p);
       place_tokens_[p] += e.count;
       in_marking += e.count;
@@ -632,7 +635,7 @@ StateSpace Search::run() {
       if (!in.fired) {
         in.fired = true;
         for (std::uint32_t k = in.changes_begin; k < in.changes_end; ++k) {
-          changed[net_.placeSlots()[slot_ps_[changes_[k].slot]].place] = true;
+          changed[slot_place_[changes_[k].slot]] = true;
         }
       }
     }

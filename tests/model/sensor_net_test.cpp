@@ -6,6 +6,7 @@
 
 #include "gdpn/model/simulation.h"
 #include "support/sim_helpers.h"
+#include "support/sorted_balls.h"
 #include "gdpn/net/compile.h"
 
 namespace gdpn::model {
@@ -151,23 +152,8 @@ TEST(SortingDevice, EveryOneOfFiftyBallsEndsInItsBin) {
   ASSERT_TRUE(sim);
   const auto outcome = sim->run({});
   ASSERT_NE(outcome.reason, StopReason::ScriptError) << outcome.message;
-  const auto* falling = sim->plant()->find("falling");
-  ASSERT_EQ(falling->children().size(), 50u);
-  int blue = 0, red = 0;
-  for (const auto& group : falling->children()) {
-    // the material in the ball's group says its colour; blue goes left (-y), red right
-    const bool is_blue = group->child("#0")->vec3(scene::field::Material::Diffuse).z > 0.5;
-    const auto* ball = group->child("ball");
-    ASSERT_NE(ball, nullptr);
-    EXPECT_LT(ball->world.position.z, 0.3) << group->path() << " has not landed";
-    if (is_blue) {
-      EXPECT_LT(ball->world.position.y, -0.05) << group->path() << " is blue";
-      ++blue;
-    } else {
-      EXPECT_GT(ball->world.position.y, 0.05) << group->path() << " is red";
-      ++red;
-    }
-  }
+  // the material in the ball's group says its colour; blue goes left (-y), red right
+  const auto [blue, red] = testing::sortedBalls(*sim);
   EXPECT_EQ(blue + red, 50);
   EXPECT_EQ(blue, 23);  // seed 7
   EXPECT_EQ(red, 27);

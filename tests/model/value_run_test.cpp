@@ -9,6 +9,7 @@
 #include "gdpn/model/report.h"
 #include "gdpn/model/simulation.h"
 #include "support/sim_helpers.h"
+#include "support/sorted_balls.h"
 
 namespace gdpn::model {
 namespace {
@@ -80,23 +81,7 @@ TEST(ValueRun, TheColouredSortingDevicePutsEachBallInTheBinOfItsColour) {
   const auto outcome = sim->run({});
   ASSERT_EQ(outcome.reason, StopReason::Dead) << outcome.message;
   // in the plant: every ball landed on the side of its colour (its material says which)
-  const auto* falling = sim->plant()->find("falling");
-  ASSERT_NE(falling, nullptr);
-  ASSERT_EQ(falling->children().size(), 50u);
-  int blue = 0, red = 0;
-  for (const auto& group : falling->children()) {
-    const bool is_blue = group->child("#0")->vec3(scene::field::Material::Diffuse).z > 0.5;
-    const auto* ball = group->child("ball");
-    ASSERT_NE(ball, nullptr);
-    EXPECT_LT(ball->world.position.z, 0.3) << group->path() << " has not landed";
-    if (is_blue) {
-      EXPECT_LT(ball->world.position.y, -0.05) << group->path() << " is blue";
-      ++blue;
-    } else {
-      EXPECT_GT(ball->world.position.y, 0.05) << group->path() << " is red";
-      ++red;
-    }
-  }
+  const auto [blue, red] = testing::sortedBalls(*sim);
   EXPECT_EQ(blue, 23);
   EXPECT_EQ(red, 27);
   // in the net: a value per ball, each bin holding its own colour alone, the gate clear
