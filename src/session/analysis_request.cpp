@@ -87,12 +87,6 @@ std::optional<AnalysedNet> analysedNet(const net::NetSpec& spec, core::Diagnosti
   return out;
 }
 
-AnalysisAnswer analyze(const net::Net& net, std::string path, const AnalysisRequest& request) {
-  // a net the caller holds: the pointer owns nothing
-  return analyze(AnalysedNet{std::shared_ptr<const net::Net>(std::shared_ptr<const net::Net>(), &net), false, nullptr, {}},
-                 std::move(path), request);
-}
-
 AnalysisAnswer analyze(const AnalysedNet& analysed, std::string path, const AnalysisRequest& request) {
   const net::Net& net = *analysed.net;
   model::AnalysisOptions options;

@@ -77,7 +77,7 @@ TEST(ColourSearch, WhatCannotBeUnfoldedIsSearchedOverValuesWithANote) {
       << diags.str();
   AnalysisRequest request;
   request.max_memory_mib = 512;
-  const auto answer = analyze(*analysed->net, "serial_numbers.gdpn.yaml", request);
+  const auto answer = analyze(*analysed, "serial_numbers.gdpn.yaml", request);
   const net::StateSpace& space = answer.analysis.space;
   const auto [states, edges, dead] = serialNumbersByHand();
   ASSERT_TRUE(space.complete);
@@ -113,8 +113,8 @@ TEST(ColourSearch, UnfoldableNetsAreUnfoldedUnlessAskedNotTo) {
   // both searches find the same graph
   AnalysisRequest request;
   request.max_memory_mib = 512;
-  const auto a = analyze(*unfolded->net, "p", request).analysis.space;
-  const auto b = analyze(*native->net, "p", request).analysis.space;
+  const auto a = analyze(*unfolded, "p", request).analysis.space;
+  const auto b = analyze(*native, "p", request).analysis.space;
   EXPECT_EQ(a.states, b.states);
   EXPECT_EQ(a.edges, b.edges);
   EXPECT_EQ(a.deadlock, b.deadlock);

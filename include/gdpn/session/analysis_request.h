@@ -88,8 +88,6 @@ struct AnalysedNet {
 [[nodiscard]] std::optional<AnalysedNet> analysedNet(const net::NetSpec& spec, core::Diagnostics& diags,
                                                      ColourSearch how = ColourSearch::Auto);
 
-/// The analysis of `net` (read from `path`) under `request`.
-[[nodiscard]] AnalysisAnswer analyze(const net::Net& net, std::string path, const AnalysisRequest& request);
 /// The analysis of `analysed` (read from `path`) under `request`: of its net, and a coloured
 /// net's own P-invariants found without unfolding it.
 [[nodiscard]] AnalysisAnswer analyze(const AnalysedNet& analysed, std::string path, const AnalysisRequest& request);
