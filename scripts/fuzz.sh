@@ -40,7 +40,7 @@ fuzz() {  # fuzz NAME MAX_LEN 'NAME PATTERNS' SEED_DIRS...
 }
 
 meshes='*.obj *.stl *.ply *.gltf *.glb *.dae *.3ds *.wrl *.iv'
-fuzz model_loader_fuzz 4096 '*.gdpn.yaml' examples/basics/* examples/plant/* examples/sorting examples/vision tests/data/good tests/data/bad tests/data/colour
+fuzz model_loader_fuzz 4096 '*.gdpn.yaml' examples/basics/* examples/plant/* examples/sorting examples/vision tests/data/good tests/data/bad tests/data/colour tests/data/hybrid
 fuzz pnml_reader_fuzz 131072 '*.pnml' tests/data/pnml tests/data/conformance tests/data/conformance-col/*
 fuzz mesh_loader_fuzz 32768 "$meshes" tests/data/meshes tests/data/bad/files tests/data/physics tests/data/good/parts
 fuzz elevation_loader_fuzz 4096 '*.asc *.xyz *.tif *.png' tests/data/elevation tests/data/bad/files

@@ -25,6 +25,7 @@ packages=(
   libgraphviz-dev fonts-dejavu-core
   # linear programs: bounds from the state equation
   libglpk-dev
+  libsundials-dev
   # virtual commissioning: Modbus TCP (the server), mbpoll and pymodbus (the tests' clients and
   # the example's soft PLC; Debian's pymodbus 3.0 imports serial_asyncio, only recommended)
   libmodbus-dev mbpoll python3-pymodbus python3-serial-asyncio

@@ -183,7 +183,7 @@ int analyze(AnalyzeArgs a) {
     if (a.json) {
       std::cout << model::queriesJson(*net, *queries, expansion);
     } else {
-      model::printQueries(std::cout, *net, *queries, expansion);
+      model::printQueries(std::cout, *net, *queries, expansion, analysed->notes);
     }
     if (!a.witness.empty()) {
       const auto shown = std::find_if(queries->begin(), queries->end(), [](const auto& q) { return q.answer.has_marking; });

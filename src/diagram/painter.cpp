@@ -27,6 +27,7 @@ Rgba kindColour(net::SlotKind kind) {
     case net::SlotKind::Node: return colours::kNode;
     case net::SlotKind::Sensor: return colours::kSensor;
     case net::SlotKind::Value: return colours::kValue;
+    case net::SlotKind::Continuous: return colours::kContinuous;
   }
   return colours::kControl;
 }

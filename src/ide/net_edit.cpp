@@ -495,6 +495,7 @@ void setSlotKind(net::PlaceSpec& p, net::SlotId slot, net::SlotKind kind, const 
     case net::SlotKind::Node: p.kinds.push_back({slot, kind, {}}); break;
     case net::SlotKind::Sensor: p.sensors.push_back({slot, sensor, {}}); break;
     case net::SlotKind::Value: p.kinds.push_back({slot, kind, {}}); break;  // its colour set is to be said
+    case net::SlotKind::Continuous: break;  // a place is continuous as a whole (`continuous`), not by a slot
   }
 }
 

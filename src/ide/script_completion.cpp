@@ -368,6 +368,7 @@ std::string slotLine(const ScopeSlot& s) {
       return "sensor slot: reads " + (s.sensor.empty() ? std::string("a sensor") : s.sensor) +
              (s.sensor_type != nullptr ? " (a " + s.sensor_type->name + ")" : "");
     case net::SlotKind::Value: return "value slot: a multiset of values of its colour set";
+    case net::SlotKind::Continuous: return "continuous place: a real amount (`amount`)";
   }
   return {};
 }

@@ -231,7 +231,8 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
   const auto& places = net.places();
   ordered_json j;
   j["net"] = a.path;
-  j["left_out"] = untimedCaveats(net);
+  j["left_out"] = a.notes;
+  for (auto& line : untimedCaveats(net)) j["left_out"].push_back(std::move(line));
   j["complete"] = s.complete;
   j["partial"] = ordered_json::array();
   for (const auto& [phase, stop] : stoppedPhases(a)) j["partial"].push_back({{"phase", phase}, {"stop", net::stopReason(stop)}});
@@ -331,8 +332,10 @@ namespace {
 
 
 /// What the untimed analysis leaves out, as notes wrapped at 100 columns.
-void printCaveats(std::ostream& out, const net::Net& net) {
-  for (const std::string& line : untimedCaveats(net)) {
+void printCaveats(std::ostream& out, const net::Net& net, const std::vector<std::string>& notes) {
+  std::vector<std::string> lines = notes;
+  for (auto& line : untimedCaveats(net)) lines.push_back(std::move(line));
+  for (const std::string& line : lines) {
     out << "note:";
     core::writeWrapped(out, 5, core::words(line), 6);
     out << "\n";
@@ -347,7 +350,7 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
   auto yes = [](bool b) { return b ? "yes" : "no"; };
   auto decided = [&](bool b) { return s.decided ? yes(b) : "unknown (the graph is partial or unbounded)"; };
   for (const auto& [phase, stop] : stoppedPhases(a)) out << "stopped early: " << phase << " (" << net::stopReason(stop) << ")\n";
-  printCaveats(out, net);
+  printCaveats(out, net, a.notes);
   {
     // the figures wrapped at 100 columns after the path
     std::ostringstream figures;
@@ -549,8 +552,8 @@ std::string verdictWord(const net::QueryAnswer& a) {
 }  // namespace
 
 void printQueries(std::ostream& out, const net::Net& net, const std::vector<QueryResult>& results,
-                  const net::NameExpansion* expansion) {
-  printCaveats(out, net);
+                  const net::NameExpansion* expansion, const std::vector<std::string>& notes) {
+  printCaveats(out, net, notes);
   for (std::size_t i = 0; i < results.size(); ++i) {
     const auto& [text, formula, a, id] = results[i];
     if (!id.empty()) {

@@ -793,6 +793,8 @@ class ModelReader {
         perSlot(e, "values", [&](net::SlotId slot, const YAML::Node& v, const SourceLoc& loc) {
           if (auto text = detail::readInscription(v, loc, slot, "values", source_, r_)) p.values.push_back(std::move(*text));
         });
+      } else if (e.key == "continuous") {
+        p.fluid = readContinuous(e);
       } else if (e.key == "capacity") {
         perSlot(e, "capacity", [&](net::SlotId slot, const YAML::Node& v, const SourceLoc& loc) {
           std::string param;
@@ -906,6 +908,97 @@ class ModelReader {
     return d;
   }
 
+  /// A place's `continuous`: `true`, or a map of its amount, capacity, unit and drives.
+  std::optional<net::FluidSpec> readContinuous(const Entry& e) {
+    net::FluidSpec f;
+    f.loc = e.loc;
+    if (e.value.IsScalar()) {
+      if (e.value.Scalar() == "true") return f;
+      if (e.value.Scalar() == "false") return std::nullopt;
+      r_.error(e.value, "'continuous' expects true or a map {amount, capacity, unit, drives}, got " + detail::describe(e.value));
+      return std::nullopt;
+    }
+    if (!r_.expectMap(e.value, "continuous")) return std::nullopt;
+    for (const auto& c : r_.entries(e.value, "continuous", keyNames(Section::Continuous))) {
+      if (c.key == "amount") {
+        if (auto x = r_.number(c.value, "amount")) {
+          if (*x < 0.0) r_.error(c.value, "'amount' must be >= 0, got " + c.value.Scalar());
+          else f.amount = *x;
+        }
+      } else if (c.key == "capacity") {
+        if (auto x = r_.number(c.value, "capacity")) {
+          if (!(*x > 0.0)) r_.error(c.value, "'capacity' must be > 0, got " + c.value.Scalar());
+          else f.capacity = *x;
+        }
+      } else if (c.key == "unit") {
+        if (auto u = r_.string(c.value, "unit")) f.unit = *u;
+      } else if (c.key == "drives") {
+        if (!r_.expectList(c.value, "drives")) continue;
+        for (const auto& item : c.value) {
+          if (!r_.expectMap(item, "a drive")) continue;
+          net::FluidDrive d;
+          d.loc = r_.loc(item, c.loc);
+          for (const auto& k : r_.entries(item, "drive", keyNames(Section::Drive))) {
+            if (k.key == "node") {
+              if (auto v = r_.string(k.value, "node")) d.node = *v;
+            } else if (k.key == "field") {
+              if (auto v = r_.string(k.value, "field")) d.field = *v;
+            } else if (k.key == "scale") {
+              if (auto v = r_.number(k.value, "scale")) d.scale = *v;
+            } else if (k.key == "offset") {
+              if (auto v = r_.number(k.value, "offset")) d.offset = *v;
+            }
+          }
+          if (d.node.empty() || d.field.empty()) r_.error(d.loc, "a drive names a 'node' and its 'field'");
+          else f.drives.push_back(std::move(d));
+        }
+      }
+    }
+    return f;
+  }
+
+  /// A transition's `continuous`: its rate and what of the plant the rate reads.
+  std::optional<net::FlowSpec> readFlow(const Entry& e) {
+    net::FlowSpec f;
+    f.loc = e.loc;
+    if (const auto* params = r_.params()) {
+      for (const auto& [name, value] : *params) f.params.emplace_back(name, value.value);
+    }
+    if (!r_.expectMap(e.value, "continuous")) return std::nullopt;
+    for (const auto& c : r_.entries(e.value, "continuous", keyNames(Section::Flow))) {
+      if (c.key == "rate") {
+        if (!c.value.IsScalar() || c.value.Scalar().empty()) {
+          r_.error(r_.loc(c.value, c.loc), "'rate' expects a number or an expression, got " + detail::describe(c.value));
+          continue;
+        }
+        f.rate.text = c.value.Scalar();
+        f.rate.loc = detail::textStart(c.value, c.loc, source_, r_);
+      } else if (c.key == "reads") {
+        if (!r_.expectMap(c.value, "reads")) continue;
+        for (const auto& re : r_.entries(c.value, "reads", {})) {
+          net::FlowRead read;
+          read.name = re.key;
+          read.loc = re.loc;
+          if (!core::isIdentifier(re.key)) {
+            r_.error(re.loc, "a read's name is a name a rate can use (letters, digits, _), not '" + re.key + "'");
+            continue;
+          }
+          if (!r_.expectMap(re.value, "read '" + re.key + "'")) continue;
+          for (const auto& k : r_.entries(re.value, "read", keyNames(Section::FlowRead))) {
+            if (k.key == "node") {
+              if (auto v = r_.string(k.value, "node")) read.node = *v;
+            } else if (k.key == "of") {
+              if (auto v = r_.string(k.value, "of")) read.of = *v;
+            }
+          }
+          if (read.node.empty() || read.of.empty()) r_.error(read.loc, "read '" + read.name + "' names a 'node' and what it reads 'of' it");
+          else f.reads.push_back(std::move(read));
+        }
+      }
+    }
+    return f;
+  }
+
   net::TransitionSpec readTransition(const Entry& te) {
     net::TransitionSpec t;
     t.name = te.key;
@@ -938,6 +1031,8 @@ class ModelReader {
           if (*v >= 1) t.servers = *v;
           else r_.error(e.value, "'servers' expects a whole number of at least 1 or 'unlimited', got " + std::to_string(*v));
         }
+      } else if (e.key == "continuous") {
+        t.flow = readFlow(e);
       } else if (e.key == "when") {
         if (auto text = detail::readInscription(e.value, e.loc, net::kDefaultSlot, "when", source_, r_)) {
           t.when = std::move(*text);
@@ -997,6 +1092,14 @@ class ModelReader {
       } else if (e.key == "weight") {
         perSlot(e, "weight", [&](net::SlotId slot, const YAML::Node& v, const SourceLoc& loc) {
           std::string param;
+          // a number that is not whole: the weight of an arc with a continuous place
+          if (v.IsScalar() && slot == net::kDefaultSlot) {
+            if (const auto x = core::parseNumber(v.Scalar()); x && *x != std::floor(*x)) {
+              if (!(*x > 0.0)) r_.error(v, "'weight' must be > 0, got " + v.Scalar());
+              else a.amount = *x;
+              return;
+            }
+          }
           if (auto n = r_.integer(v, "weight", &param)) a.weights.push_back({slot, *n, loc, param});
         });
       } else if (e.key == "inscription") {

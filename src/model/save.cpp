@@ -127,6 +127,66 @@ void perSlotText(YAML::Emitter& out, const char* key, const std::vector<net::Slo
   out << YAML::EndMap;
 }
 
+// a place's `continuous`: `true` when it keeps every default, else its map
+void writeContinuous(YAML::Emitter& out, const std::optional<net::FluidSpec>& f) {
+  if (!f) return;
+  out << YAML::Key << "continuous" << YAML::Value;
+  if (*f == net::FluidSpec{}) {
+    out << true;
+    return;
+  }
+  out << YAML::BeginMap;
+  schema::inSchemaOrder(
+      Section::Continuous,
+      {
+          {"amount", [&] { if (f->amount != 0.0) out << YAML::Key << "amount" << YAML::Value << core::formatDouble(f->amount); }},
+          {"capacity",
+           [&] { if (f->capacity) out << YAML::Key << "capacity" << YAML::Value << core::formatDouble(*f->capacity); }},
+          {"unit", [&] { if (!f->unit.empty()) out << YAML::Key << "unit" << YAML::Value << f->unit; }},
+          {"drives",
+           [&] {
+             if (f->drives.empty()) return;
+             out << YAML::Key << "drives" << YAML::Value << YAML::BeginSeq;
+             for (const auto& d : f->drives) {
+               out << YAML::Flow << YAML::BeginMap;
+               schema::inSchemaOrder(
+                   Section::Drive,
+                   {
+                       {"node", [&] { out << YAML::Key << "node" << YAML::Value << d.node; }},
+                       {"field", [&] { out << YAML::Key << "field" << YAML::Value << d.field; }},
+                       {"scale", [&] { if (d.scale != 1.0) out << YAML::Key << "scale" << YAML::Value << core::formatDouble(d.scale); }},
+                       {"offset", [&] { if (d.offset != 0.0) out << YAML::Key << "offset" << YAML::Value << core::formatDouble(d.offset); }},
+                   });
+               out << YAML::EndMap;
+             }
+             out << YAML::EndSeq;
+           }},
+      });
+  out << YAML::EndMap;
+}
+
+// a transition's `continuous`: its rate and reads
+void writeFlow(YAML::Emitter& out, const std::optional<net::FlowSpec>& f) {
+  if (!f) return;
+  out << YAML::Key << "continuous" << YAML::Value << YAML::BeginMap;
+  schema::inSchemaOrder(
+      Section::Flow,
+      {
+          {"rate", [&] { if (!f->rate.text.empty()) out << YAML::Key << "rate" << YAML::Value << f->rate.text; }},
+          {"reads",
+           [&] {
+             if (f->reads.empty()) return;
+             out << YAML::Key << "reads" << YAML::Value << YAML::BeginMap;
+             for (const auto& r : f->reads) {
+               out << YAML::Key << r.name << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "node"
+                   << YAML::Value << r.node << YAML::Key << "of" << YAML::Value << r.of << YAML::EndMap;
+             }
+             out << YAML::EndMap;
+           }},
+      });
+  out << YAML::EndMap;
+}
+
 void writePlace(YAML::Emitter& out, const net::PlaceSpec& p) {
   out << YAML::Key << p.name << YAML::Value << styleFor(!p.scripts.empty() || anyBlock(p.values)) << YAML::BeginMap;
   std::vector<schema::KeyWriter> keys = {
@@ -168,6 +228,7 @@ void writePlace(YAML::Emitter& out, const net::PlaceSpec& p) {
          for (const auto& b : p.sensors) out << YAML::Key << net::slotName(b.slot) << YAML::Value << b.path;
          out << YAML::EndMap;
        }},
+      {"continuous", [&] { writeContinuous(out, p.fluid); }},
       {"at", [&] { pos(out, p.position); }},
   };
   for (const net::ScriptKind k : net::kSlotScripts) {
@@ -222,6 +283,7 @@ void writeTransition(YAML::Emitter& out, const net::TransitionSpec& t) {
          else if (t.servers == net::kUnlimitedServers) out << YAML::Key << "servers" << YAML::Value << "unlimited";
          else if (static_cast<double>(t.servers) != servers_default) out << YAML::Key << "servers" << YAML::Value << t.servers;
        }},
+      {"continuous", [&] { writeFlow(out, t.flow); }},
       {"when",
        [&] {
          if (!t.conditioned()) return;
@@ -256,7 +318,11 @@ void writeArc(YAML::Emitter& out, const net::ArcSpec& a) {
            [&] {
              if (net::arcKindName(a.kind) != kind_default) out << YAML::Key << "kind" << YAML::Value << net::arcKindName(a.kind);
            }},
-          {"weight", [&] { perSlot(out, "weight", a.weights); }},
+          {"weight",
+           [&] {
+             if (a.amount) out << YAML::Key << "weight" << YAML::Value << core::formatDouble(*a.amount);
+             else perSlot(out, "weight", a.weights);
+           }},
           {"inscription",
            [&] {
              perSlotText(out, "inscription", a.inscriptions,

@@ -254,6 +254,10 @@ std::vector<KeyDesc> placeKeys() {
             0, kInf),
       form(k("sensors", ValueType::Map, "", "binds sensor slots to sensor nodes (*Sensors in the net*)"),
            "map slot → node path"),
+      form(k("continuous", ValueType::Map, "",
+             "makes it a continuous place holding a real amount, not tokens (hybrid nets, *Continuous places*): "
+             "`true`, or `{amount, capacity, unit, drives}` (below)"),
+           "`true` or map"),
       script(ScriptKind::OnDeposit, slot_script, "runs per token that arrives (a script alone means slot `a0`)"),
       script(ScriptKind::OnRemove, slot_script, "runs per token that leaves (a script alone means slot `a0`)"),
       script(ScriptKind::OnEnter, slot_script,
@@ -283,6 +287,10 @@ std::vector<KeyDesc> transitionKeys() {
                    "an input arc that takes tokens"),
                  "whole number or `unlimited`"),
             1, static_cast<double>(net::kMostServers)),
+      form(k("continuous", ValueType::Map, "",
+             "makes it a continuous transition that flows at its rate, never fires (hybrid nets): `{rate: 0.5}`, "
+             "`{rate: k * tank, reads: {...}}` (below); discrete places switch it by test and inhibitor arcs"),
+           "map"),
       k("when", ValueType::Inscription, "",
         "a condition over the variables of its arcs' inscriptions, in the inscription language (`x <> y and n < "
         "3`), not Python: a binding occurs only where it is true"),
@@ -302,8 +310,10 @@ std::vector<KeyDesc> arcKeys() {
       word("kind", {net::arcKindName(net::ArcKind::Normal), net::arcKindName(net::ArcKind::Test),
                     net::arcKindName(net::ArcKind::Inhibitor)},
            "input arcs only"),
-      range(form(k("weight", ValueType::Integer, "1", "tokens per slot; an integer means `a0`"),
-                 "integer or map slot → integer"),
+      range(form(k("weight", ValueType::Integer, "1",
+                   "tokens per slot; an integer means `a0`; on an arc with a continuous place, a number > 0 in the "
+                   "place's unit (`2.5`)"),
+                 "integer or map slot → integer; a number"),
             1, static_cast<double>(net::kMaxWeight)),
       form(k("inscription", ValueType::Inscription, "",
              "on a value slot: the multiset it takes or puts, in the inscription language over the variables "
@@ -412,6 +422,50 @@ std::vector<KeyDesc> colourKeys() {
   };
 }
 
+std::vector<KeyDesc> continuousKeys() {
+  return {
+      range(k("amount", ValueType::Number, "0", "the amount it holds at the start, in its unit"), 0, kInf),
+      range(k("capacity", ValueType::Number, "", "the most it holds, in its unit (none: unbounded)"), 0, kInf, "", true),
+      k("unit", ValueType::Text, "", "for people: `L`, `kg`, `Ah`; the report, the IDE and the trace's texts show it"),
+      form(k("drives", ValueType::List, "",
+             "plant fields the amount sets after every step: `{node: tank/liquid, field: size.z, scale: 0.01}` "
+             "(*Drives*)"),
+           "list of drives"),
+  };
+}
+
+std::vector<KeyDesc> flowKeys() {
+  return {
+      form(unit(k("rate", ValueType::Expression, "",
+                  "how fast it flows: a number, or an expression (`+ - * /`, `min`, `max`, `sqrt`, `exp`, ...) over "
+                  "the amounts of the continuous places on its page (by name), its `reads` and the model's "
+                  "parameters; each input arc takes, each output arc puts, its weight times the rate; below 0 counts "
+                  "as 0"),
+                "units/s"),
+           "number or expression"),
+      form(k("reads", ValueType::Map, "",
+             "numbers of the plant the rate names: `{opening: {node: plant/valve, of: angle}}` (what a signal's "
+             "`node` and `of` read), each read at the end of a step and held over the next"),
+           "map name → `{node, of}`"),
+  };
+}
+
+std::vector<KeyDesc> flowReadKeys() {
+  return {
+      k("node", ValueType::Name, "", "a node's path (relative to the instance in a page type)"),
+      k("of", ValueType::Text, "", "what of it: `reading`, `angle`, `rate`, `position.z`, a field (as a signal's `of`)"),
+  };
+}
+
+std::vector<KeyDesc> driveKeys() {
+  return {
+      k("node", ValueType::Name, "", "a node's path (relative to the instance in a page type)"),
+      k("field", ValueType::Text, "", "its number field (`height`, `radius`) or one component of a vector (`size.z`, `translation.x`)"),
+      k("scale", ValueType::Number, "1", "field units per unit of amount"),
+      k("offset", ValueType::Number, "0", "the field's value at amount 0"),
+  };
+}
+
 std::vector<KeyDesc> build(Section section) {
   switch (section) {
     case Section::Model: return modelKeys();
@@ -433,6 +487,10 @@ std::vector<KeyDesc> build(Section section) {
     case Section::PartIo: return partIoKeys();
     case Section::PartUse: return partUseKeys();
     case Section::Colour: return colourKeys();
+    case Section::Continuous: return continuousKeys();
+    case Section::Flow: return flowKeys();
+    case Section::FlowRead: return flowReadKeys();
+    case Section::Drive: return driveKeys();
   }
   return {};
 }
@@ -586,6 +644,10 @@ std::string_view sectionName(Section section) {
     case Section::PartIo: return "part_io";
     case Section::PartUse: return "part_use";
     case Section::Colour: return "colour";
+    case Section::Continuous: return "continuous";
+    case Section::Flow: return "flow";
+    case Section::FlowRead: return "flow_read";
+    case Section::Drive: return "drive";
   }
   return "?";
 }

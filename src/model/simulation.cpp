@@ -4,6 +4,7 @@
 #include "gdpn/model/part_library.h"
 #include "gdpn/model/part_run.h"
 
+#include "fluid_plant.h"
 #include "signal_recorder.h"
 
 #include <algorithm>
@@ -382,7 +383,9 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
   }
   for (net::TermId id{0}; id < sim->net_->terms().size(); ++id) {
     const auto& term = sim->net_->terms()[id];
-    if (term.kind == net::TermKind::Condition) sim->conditions_of_[term.place_slot].push_back(id);
+    // sensor conditions (a continuous place's terms are the kernel's own)
+    const bool fluid = sim->net_->fluid() && sim->net_->fluid()->of_term[id] >= 0;
+    if (term.kind == net::TermKind::Condition && !fluid) sim->conditions_of_[term.place_slot].push_back(id);
   }
   if (diags.hasErrors()) return nullptr;
   if (sim->scene_) {
@@ -406,6 +409,10 @@ std::unique_ptr<Simulation> Simulation::create(const Model& model, core::Diagnos
   sim->stats_ = std::make_unique<net::StatsCollector>(*sim->net_);
   sim->kernel_->addObserver(sim->stats_.get());
   sim->limits_ = limits;
+  if (sim->net_->fluid()) {
+    sim->fluid_ = FluidPlant::create(*sim, diags);
+    if (!sim->fluid_) return nullptr;
+  }
   if (sim->net_->scripted() && !sim->makeEngine(diags)) return nullptr;
   return sim;
 }
@@ -752,6 +759,10 @@ void Simulation::start(const std::function<void()>& first) {
   // time 0: the sensors' first readings (every one is a change), then the first firing phase
   sense(true);
   readConditions();
+  if (fluid_) {
+    fluid_->drive();
+    fluid_->feed();
+  }
   if (engine_ && engine_->halted() && engine_->halt() != script::Halt::Stop) return;
   if (first) first();
   firePhase();
@@ -805,7 +816,14 @@ void Simulation::step() {
   // phase 1: the world advances; phase 2: the sensors feel it (not a world that failed)
   stepPhysics();
   if (physics_fault_at_) return;
+  // phase 1 of the continuous part: the amounts flow over the same step, at the rates the
+  // reads held from the step before; the plant fields they drive follow
+  if (fluid_) {
+    kernel_->advanceFluid();
+    fluid_->drive();
+  }
   sense(true);
+  if (fluid_) fluid_->feed();
   // back from steps with the net off: the sensors' conditions as they are now
   if (stale_conditions_) readConditions();
   if (engine_ && engine_->halted() && engine_->halt() != script::Halt::Stop) return;

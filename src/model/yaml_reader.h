@@ -57,6 +57,8 @@ class YamlReader {
                              const std::function<std::string(const std::string&)>& hint = {});
   /// The parameters a field may refer to as `$name` (null: none; must outlive the reader).
   void setParams(const std::map<std::string, ParamValue>* params) { params_ = params; }
+  /// The parameters fields may refer to now (null: none).
+  [[nodiscard]] const std::map<std::string, ParamValue>* params() const { return params_; }
   /// A number; with `param`, the value may be `$name` of a parameter, whose name is then put
   /// in `*param` (else `*param` is cleared). Without `param`, `$name` is an error.
   std::optional<double> number(const YAML::Node& node, const std::string& field, std::string* param = nullptr);

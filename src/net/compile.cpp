@@ -52,6 +52,12 @@ class Compiler {
   Compiler(const NetSpec& spec, Diagnostics& diags) : spec_(spec), diags_(diags) {}
 
   std::shared_ptr<const Net> run() {
+    for (const auto* pages : {&spec_.pages, &spec_.page_types}) {
+      for (const auto& page : *pages) {
+        for (const auto& pl : page.places) spec_has_fluid_ = spec_has_fluid_ || pl.continuous();
+        for (const auto& tr : page.transitions) spec_has_fluid_ = spec_has_fluid_ || tr.continuous();
+      }
+    }
     indexPageTypes();
     checkUnique(spec_.pages, "page");
     for (const auto& page : spec_.pages) checkPage(page, false);
@@ -66,6 +72,8 @@ class Compiler {
     if (diags_.hasErrors()) return nullptr;
     fuse();
     checkFusedArcs();
+    if (diags_.hasErrors()) return nullptr;
+    splitFluid();
     if (diags_.hasErrors()) return nullptr;
     resolveKinds();
     checkBalance();
@@ -543,6 +551,7 @@ class Compiler {
     const auto scope = builder_.names().addScope(parent, name, tableOf(page), base, 0);
     const auto prefix_index = static_cast<std::uint32_t>(node_prefixes_.size());
     if (!page.places.empty()) node_prefixes_.push_back(node_prefix);
+    if (spec_has_fluid_) scope_prefix_[scope] = node_prefix;
     for (std::uint32_t k = 0; k < page.places.size(); ++k) places_.push_back({&page.places[k], scope, k, prefix_index});
     std::vector<std::optional<PlaceId>> inner(page.instances.size());  // the first place of each instance
     for (std::size_t k = 0; k < page.instances.size(); ++k) {
@@ -808,6 +817,265 @@ class Compiler {
     }
   }
 
+
+  // ---- hybrid nets: the continuous places and transitions, taken out of the discrete net ----
+
+  /// Reports `message` at `loc` once, however many instances repeat the construct.
+  void errorOnce(const SourceLoc& loc, const std::string& message) {
+    if (told_fluid_.emplace(loc.file, loc.line, loc.column, message).second) diags_.error(loc, message);
+  }
+
+  /// Checks the continuous places and transitions, takes every arc with a continuous place out
+  /// of arcs_ (they take no part in slot kinds), and builds fluid_: its places, flows, arcs,
+  /// thresholds and the terms of discrete transitions on continuous places.
+  void splitFluid() {
+    if (!spec_has_fluid_) return;
+    fluid_of_place_.assign(places_.size(), -1);
+    for (PlaceId p{0}; p < places_.size(); ++p) {
+      const PlaceSpec& ps = *places_[p].spec;
+      if (!ps.continuous()) continue;
+      const FluidSpec& fs = *ps.fluid;
+      const std::string what = "continuous place '" + ps.name + "'";
+      if (!ps.tokens.empty() || !ps.nodes.empty() || !ps.kinds.empty() || !ps.capacity.empty() || !ps.scripts.empty() ||
+          !ps.sensors.empty() || !ps.colours.empty() || !ps.values.empty()) {
+        errorOnce(fs.loc, what + " holds an amount, not tokens: it takes 'amount', 'capacity' (a number), 'unit' and "
+                                 "'drives', not slots, tokens, node tokens, colours, sensors or scripts");
+      }
+      if (!(fs.amount >= 0.0) || !std::isfinite(fs.amount)) errorOnce(fs.loc, what + ": its amount must be a number >= 0");
+      if (fs.capacity && (!(*fs.capacity > 0.0) || !std::isfinite(*fs.capacity))) {
+        errorOnce(fs.loc, what + ": its capacity must be a number > 0");
+      } else if (fs.capacity && fs.amount > *fs.capacity) {
+        errorOnce(fs.loc, what + ": its amount " + core::formatDouble(fs.amount) + " is more than its capacity " +
+                              core::formatDouble(*fs.capacity));
+      }
+      fluid_of_place_[p] = static_cast<std::int32_t>(fluid_.places.size());
+      FluidPlace fp;
+      fp.place = p;
+      fp.initial = fs.amount;
+      fp.capacity = fs.capacity.value_or(kNoBound);
+      fp.unit = fs.unit;
+      for (auto d : fs.drives) {
+        d.node = node_prefixes_[places_[p].node_prefix] + d.node;
+        fp.drives.push_back(std::move(d));
+      }
+      fluid_.places.push_back(std::move(fp));
+    }
+    fluid_.of_place = fluid_of_place_;
+    fluid_.of_transition.assign(transitions_.size(), -1);
+    for (TransitionId t{0}; t < transitions_.size(); ++t) {
+      const TransitionSpec& ts = *transitions_[t].spec;
+      if (!ts.continuous()) continue;
+      const std::string what = "continuous transition '" + ts.name + "'";
+      if (ts.duration != Duration{} || ts.servers != 1 || ts.probability != 1.0 || ts.priority != 0 || ts.scripted() ||
+          ts.conditioned()) {
+        errorOnce(ts.flow->loc, what + " flows at its rate: it takes no duration, priority, probability, servers, "
+                                       "condition or scripts");
+      }
+      if (ts.flow->rate.text.empty()) errorOnce(ts.flow->loc, what + " needs a rate ('rate: 0.5', units per second)");
+      fluid_.of_transition[t] = static_cast<std::int32_t>(fluid_.flows.size());
+      Flow flow;
+      flow.transition = t;
+      fluid_.flows.push_back(std::move(flow));
+    }
+    // the arcs: a continuous place's leave arcs_; a continuous transition keeps its tests and
+    // inhibitors of discrete places there (they switch it)
+    struct Pending {
+      PlaceId place;
+      TransitionId transition;
+      bool output;
+      const ArcSpec* spec;
+    };
+    std::vector<Pending> flow_arcs;
+    std::vector<FluidTerm> terms;
+    std::vector<PlaceId> term_places;
+    std::vector<FlatArc> kept;
+    for (const auto& a : arcs_) {
+      const bool cp = fluid_of_place_[a.place] >= 0;
+      const bool ct = fluid_.of_transition[a.transition] >= 0;
+      const std::string arc = "arc '" + a.spec->from + "' -> '" + a.spec->to + "'";
+      if (!cp && !ct) {
+        kept.push_back(a);
+        continue;
+      }
+      if (!a.spec->inscriptions.empty() || !a.spec->predicates.empty() || !a.spec->conditions.empty()) {
+        errorOnce(a.spec->loc, arc + " joins a continuous place or transition: it takes a weight, not inscriptions, "
+                                     "predicates or conditions");
+        continue;
+      }
+      double w = 1.0;
+      if (a.spec->amount) {
+        w = *a.spec->amount;
+      } else {
+        for (const auto& sc : a.spec->weights) w = static_cast<double>(sc.value);
+      }
+      if (cp && (a.spec->weights.size() > 1 || (a.spec->weights.size() == 1 && a.spec->weights[0].slot != kDefaultSlot))) {
+        errorOnce(a.spec->loc, arc + ": a continuous place has no slots; give the arc one weight ('weight: 2.5')");
+        continue;
+      }
+      if (!(w > 0.0) || !std::isfinite(w)) {
+        errorOnce(a.spec->loc, arc + ": its weight must be a number > 0");
+        continue;
+      }
+      if (!cp) {
+        // a discrete place and a continuous transition: only tests and inhibitors switch a flow
+        if (a.output || a.spec->kind == ArcKind::Normal) {
+          errorOnce(a.spec->loc, arc + ": a continuous transition neither takes nor puts tokens; switch it with a "
+                                       "test or an inhibitor arc ('kind: test')");
+          continue;
+        }
+        if (a.spec->amount && *a.spec->amount != std::floor(*a.spec->amount)) {
+          errorOnce(a.spec->loc, arc + ": a discrete place's weight is a whole number");
+          continue;
+        }
+        kept.push_back(a);
+        continue;
+      }
+      if (ct) {
+        flow_arcs.push_back({a.place, a.transition, a.output, a.spec});
+        continue;
+      }
+      FluidTerm term;
+      term.transition = a.transition;
+      term.place = static_cast<std::uint32_t>(fluid_of_place_[a.place]);
+      term.weight = w;
+      term.test = a.output ? LevelTest::Room
+                  : a.spec->kind == ArcKind::Inhibitor ? LevelTest::Below
+                                                         : LevelTest::AtLeast;
+      term.moves = a.output || a.spec->kind == ArcKind::Normal;
+      terms.push_back(term);
+      term_places.push_back(a.place);
+    }
+    arcs_ = std::move(kept);
+    // terms grouped by place (stable: in arc order within a place)
+    std::vector<std::uint32_t> order(terms.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) { return terms[x].place < terms[y].place; });
+    for (const auto k : order) {
+      fluid_.terms.push_back(terms[k]);
+      fluid_term_places_.push_back(term_places[k]);
+    }
+    for (std::uint32_t k = 0; k < fluid_.terms.size(); ++k) {
+      auto& fp = fluid_.places[fluid_.terms[k].place];
+      if (fp.terms_end == 0) fp.terms_begin = k;
+      fp.terms_end = k + 1;
+    }
+    // each flow's arcs: inputs, outputs, tests, inhibitors
+    std::stable_sort(flow_arcs.begin(), flow_arcs.end(), [](const Pending& x, const Pending& y) { return x.transition < y.transition; });
+    std::size_t i = 0;
+    for (auto& flow : fluid_.flows) {
+      std::size_t end = i;
+      while (end < flow_arcs.size() && flow_arcs[end].transition == flow.transition) ++end;
+      auto weightOf = [](const ArcSpec& arc) {
+        double w = 1.0;
+        if (arc.amount) w = *arc.amount;
+        else for (const auto& sc : arc.weights) w = static_cast<double>(sc.value);
+        return w;
+      };
+      auto take = [&](std::vector<FlowArc>& into, auto pick) {
+        for (auto k = i; k < end; ++k) {
+          if (!pick(flow_arcs[k])) continue;
+          into.push_back({static_cast<std::uint32_t>(fluid_of_place_[flow_arcs[k].place]), weightOf(*flow_arcs[k].spec)});
+        }
+        return static_cast<std::uint32_t>(into.size());
+      };
+      flow.inputs_begin = static_cast<std::uint32_t>(fluid_.arcs.size());
+      flow.outputs_begin = take(fluid_.arcs, [](const Pending& a) { return !a.output && a.spec->kind == ArcKind::Normal; });
+      flow.outputs_end = take(fluid_.arcs, [](const Pending& a) { return a.output; });
+      flow.tests_begin = static_cast<std::uint32_t>(fluid_.thresholds.size());
+      flow.inhibitors_begin = take(fluid_.thresholds, [](const Pending& a) { return !a.output && a.spec->kind == ArcKind::Test; });
+      flow.thresholds_end = take(fluid_.thresholds, [](const Pending& a) { return !a.output && a.spec->kind == ArcKind::Inhibitor; });
+      i = end;
+    }
+    // levels: 0, the capacity and every threshold
+    for (auto& fp : fluid_.places) {
+      fp.levels.push_back(0.0);
+      if (fp.capacity != kNoBound) fp.levels.push_back(fp.capacity);
+    }
+    for (const auto& term : fluid_.terms) {
+      if (term.test != LevelTest::Room) fluid_.places[term.place].levels.push_back(term.weight);
+    }
+    for (const auto& th : fluid_.thresholds) fluid_.places[th.place].levels.push_back(th.weight);
+    for (auto& fp : fluid_.places) {
+      std::sort(fp.levels.begin(), fp.levels.end());
+      fp.levels.erase(std::unique(fp.levels.begin(), fp.levels.end()), fp.levels.end());
+      std::erase_if(fp.levels, [&](double l) { return l > fp.capacity; });
+    }
+    compileRates();
+  }
+
+  /// Compiles each flow's rate: names are the continuous places of its page (their amounts),
+  /// its reads, then the model's parameters (constants).
+  void compileRates() {
+    std::map<std::pair<std::uint32_t, std::string_view>, std::uint32_t> place_of;  // (scope, name) -> fluid place
+    for (std::uint32_t k = 0; k < fluid_.places.size(); ++k) {
+      const auto& flat = places_[fluid_.places[k].place];
+      place_of.emplace(std::make_pair(flat.scope, std::string_view(flat.spec->name)), k);
+    }
+    const auto places = static_cast<std::uint32_t>(fluid_.places.size());
+    struct Constant {
+      std::uint32_t flow;
+      double value;
+    };
+    std::vector<Constant> constants;
+    for (std::uint32_t k = 0; k < fluid_.flows.size(); ++k) {
+      auto& flow = fluid_.flows[k];
+      const auto& ft = transitions_[flow.transition];
+      const FlowSpec& fs = *ft.spec->flow;
+      if (fs.rate.text.empty()) continue;
+      const auto reads_begin = static_cast<std::uint32_t>(fluid_.reads.size());
+      std::vector<std::string> known;
+      for (const auto& [key, index] : place_of) {
+        if (key.first == ft.scope) known.emplace_back(key.second);
+      }
+      for (const auto& r : fs.reads) {
+        known.push_back(r.name);
+        const auto prefix = scope_prefix_.find(ft.scope);
+        fluid_.reads.push_back({(prefix == scope_prefix_.end() ? std::string() : prefix->second) + r.node, r.of, r.loc,
+                                flow.transition});
+      }
+      for (const auto& [name, value] : fs.params) known.push_back(name);
+      std::vector<std::pair<std::uint32_t, double>> wanted;  // (placeholder slot, value) of the parameters used
+      const auto resolve = [&](std::string_view name) -> std::optional<std::uint32_t> {
+        if (auto it = place_of.find({ft.scope, name}); it != place_of.end()) return it->second;
+        for (std::size_t r = 0; r < fs.reads.size(); ++r) {
+          if (fs.reads[r].name == name) return static_cast<std::uint32_t>(places + reads_begin + r);
+        }
+        for (const auto& [pname, value] : fs.params) {
+          if (pname != name) continue;
+          // a constant: numbered after every read, fixed below once all reads are known
+          constants.push_back({k, value});
+          return kConstantSlot + static_cast<std::uint32_t>(constants.size() - 1);
+        }
+        return std::nullopt;
+      };
+      core::ExpressionError error;
+      auto program = core::compileExpression(fs.rate.text, resolve, error, known);
+      if (!program) {
+        SourceLoc in_text{fs.rate.loc.file, 1, static_cast<int>(error.column) + 1};
+        errorOnce(fs.rate.where(in_text), "rate of continuous transition '" + ft.spec->name + "': " + error.message +
+                                              (error.message.rfind("no name", 0) == 0
+                                                   ? " (a rate names the continuous places of its page, its 'reads' "
+                                                     "and the model's parameters)"
+                                                   : ""));
+        continue;
+      }
+      flow.rate = std::move(*program);
+      flow.stateful = !flow.rate.reads.empty() && flow.rate.reads.front() < places;
+    }
+    // the parameters' constants after the reads
+    const auto first_constant = places + static_cast<std::uint32_t>(fluid_.reads.size());
+    for (auto& flow : fluid_.flows) {
+      for (auto& op : flow.rate.ops) {
+        if (op.op == core::Program::Op::Load && op.arg >= kConstantSlot) op.arg = first_constant + (op.arg - kConstantSlot);
+      }
+      for (auto& r : flow.rate.reads) {
+        if (r >= kConstantSlot) r = first_constant + (r - kConstantSlot);
+      }
+    }
+    for (const auto& c : constants) fluid_.constants.push_back(c.value);
+  }
+  static constexpr std::uint32_t kConstantSlot = 0x40000000u;
+
   // ---- emit the checked, flattened net ----
 
   /// The builder's index of `script`, added once however many instances share it.
@@ -823,6 +1091,10 @@ class Compiler {
     for (PlaceId p{0}; p < places_.size(); ++p) {
       auto& fp = places_[p];
       builder_.addScopedPlace(fp.scope, fp.local);
+      if (!fluid_of_place_.empty() && fluid_of_place_[p] >= 0) {
+        builder_.setSlot(p, kDefaultSlot, SlotKind::Continuous, kUnbounded, 0);
+        continue;
+      }
       std::uint32_t used = 0;
       for (const auto& d : fp.spec->kinds) used |= 1u << d.slot;
       for (const auto& t : fp.spec->tokens) used |= 1u << t.slot;
@@ -904,6 +1176,13 @@ class Compiler {
       }
     }
     if (coloured_) builder_.setColouring(std::move(colouring_), std::move(colour_arcs));
+    if (spec_has_fluid_) {
+      std::vector<std::uint32_t> fluid_arcs;
+      for (std::size_t k = 0; k < fluid_.terms.size(); ++k) {
+        fluid_arcs.push_back(builder_.addFluidTerm(fluid_term_places_[k], fluid_.terms[k].transition));
+      }
+      builder_.setFluid(std::move(fluid_), std::move(fluid_arcs));
+    }
   }
 
   /// The fewest tokens the multiset `e` (checked) can hold under any binding, and whether
@@ -1193,6 +1472,13 @@ class Compiler {
   std::unordered_map<const PlaceSpec*, std::uint32_t> member_set_;    // a member place -> its set's index
   std::vector<bool> fused_;  // per flat place after fuse(): whether other members joined it
   NetBuilder builder_;
+  // hybrid nets (splitFluid)
+  bool spec_has_fluid_ = false;                       // some place or transition is continuous
+  Fluid fluid_;
+  std::vector<std::int32_t> fluid_of_place_;           // per flat place: its fluid place, -1 for a discrete one
+  std::vector<PlaceId> fluid_term_places_;             // per fluid term: its flat place
+  std::unordered_map<std::uint32_t, std::string> scope_prefix_;  // what qualifies a scope's scene paths
+  std::set<std::tuple<std::string, int, int, std::string>> told_fluid_;
   // value tokens (checkColours)
   bool coloured_ = false;
   Colouring colouring_;

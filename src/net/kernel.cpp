@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "gdpn/core/assert.h"
+#include "gdpn/core/text.h"
 #include "detail/sort_keys.h"
 
 namespace gdpn::net {
@@ -162,6 +163,7 @@ Kernel::Kernel(std::shared_ptr<const Net> net, KernelSettings settings)
     if (verdict_.empty()) verdict_.assign(count, kFree);
     verdict_[t] = static_cast<std::uint8_t>(Readiness::Untried);
   }
+  fluidInit();
   for (TransitionId t{0}; t < count; ++t) {
     if (tr_[t].unsat == 0) markEnabled(t);
   }
@@ -684,6 +686,7 @@ void Kernel::beginAs(TransitionId t) {
     // the slot's line is in the cache
     if (big_ && st.watch_count > 0) fetchAhead(&tr_[st.first.transition]);
   }
+  if (fluid_) [[unlikely]] fluidBegin(t);
   chosen_.clear();
 
   // on_remove per token taken, in the order taken, then pre_fire (self: this occurrence)
@@ -790,6 +793,7 @@ void Kernel::finishAs(Entry e) {
     }
   }
   if (coloured) bound_.erase(bound_at);
+  if (fluid_) [[unlikely]] fluidFinish(t);
   --occurring_count_;
   if constexpr (kServers) {
     endOccurrence(e);
@@ -881,6 +885,7 @@ void Kernel::start() { fireEnabled(); }
 
 void Kernel::step() {
   beginStep();
+  advanceFluid();
   completeOccurrences();
   fireEnabled();
 }
@@ -926,6 +931,8 @@ void Kernel::fireEnabled() {
   carry_.swap(carry_next_);
   in_firing_ = false;
   settled_ = true;
+  // the flows as the phase left the marking: dead() asks whether anything still moves
+  if (fluid_) fluidRates();
 }
 
 inline bool Kernel::tryStart(TransitionId t, bool again) {
@@ -1152,6 +1159,18 @@ std::string Kernel::fireIn(TransitionId t, const Binding* chosen) {
 std::string Kernel::termText(std::uint32_t i) const {
   const Net& net = *net_;
   const Term& term = terms_[i];
+  if (fluid_ && fluid_->of_term[i] >= 0) [[unlikely]] {
+    const FluidTerm& ft = fluid_->terms[static_cast<std::size_t>(fluid_->of_term[i])];
+    const FluidPlace& fp = fluid_->places[ft.place];
+    const std::string unit = fp.unit.empty() ? "" : " " + fp.unit;
+    const std::string place = "'" + net.placeName(fp.place) + "'";
+    const std::string has = core::formatDouble(fluid_run_->x[ft.place]) + unit, w = core::formatDouble(ft.weight) + unit;
+    switch (ft.test) {
+      case LevelTest::AtLeast: return place + " holds " + has + " of the " + w + " it needs";
+      case LevelTest::Below: return place + " holds " + has + ", its inhibitor arc allows less than " + w;
+      case LevelTest::Room: return place + " has no room for " + w + " more (it holds " + has + ")";
+    }
+  }
   const SlotState& st = slots_[term.place_slot];
   const auto& ps = net.placeSlots()[term.place_slot];
   const std::string place = "'" + net.placeName(ps.place) + "' " + slotName(ps.slot);
@@ -1214,9 +1233,17 @@ Readiness Kernel::readiness(TransitionId t) const {
   // marking suffices
   for (std::uint32_t i = tr.terms_begin; i < tr.terms_end; ++i) {
     const Term& term = terms_[i];
+    if (fluid_ && fluid_->of_term[i] >= 0) [[unlikely]] {
+      // a term on a continuous place: its amount, as a marking's
+      const auto k = static_cast<std::uint32_t>(fluid_->of_term[i]);
+      if (fluidTermHolds(k)) continue;
+      return fluid_->terms[k].test == LevelTest::Room ? Readiness::Room : Readiness::Tokens;
+    }
     if (term.kind == TermKind::Condition || holds(slots_[term.place_slot], term.kind, term.weight, term.take)) continue;
     return term.kind == TermKind::Output ? Readiness::Room : Readiness::Tokens;
   }
+  // a continuous transition whose terms hold flows (its one never-holding term aside)
+  if (fluid_ && fluid_->continuous(t) && tr.unsat == 1) return Readiness::Able;
   return Readiness::Condition;
 }
 
@@ -1227,6 +1254,11 @@ std::string Kernel::readinessText(TransitionId t) const {
   auto firstFailing = [&](bool conditions) -> std::string {
     for (std::uint32_t i = tr.terms_begin; i < tr.terms_end; ++i) {
       const Term& term = terms_[i];
+      if (fluid_ && fluid_->of_term[i] >= 0) [[unlikely]] {
+        // a term on a continuous place: an amount's, as a marking's
+        if (conditions || fluidTermHolds(static_cast<std::uint32_t>(fluid_->of_term[i]))) continue;
+        return termText(i);
+      }
       const bool is_condition = term.kind == TermKind::Condition;
       if (is_condition != conditions) continue;
       if (is_condition ? condition(TermId{i}) : holds(slots_[term.place_slot], term.kind, term.weight, term.take)) continue;

@@ -204,6 +204,17 @@ void NetBuilder::addCondition(PlaceId place, TransitionId transition, SlotId slo
   arcs_.push_back({place, transition, slot, TermKind::Condition, 0, index});
 }
 
+std::uint32_t NetBuilder::addFluidTerm(PlaceId place, TransitionId transition) {
+  slotOf(place, kDefaultSlot);
+  arcs_.push_back({place, transition, kDefaultSlot, TermKind::Condition, 0, -1});
+  return static_cast<std::uint32_t>(arcs_.size() - 1);
+}
+
+void NetBuilder::setFluid(Fluid fluid, std::vector<std::uint32_t> fluid_arcs) {
+  fluid_ = std::move(fluid);
+  fluid_arcs_ = std::move(fluid_arcs);
+}
+
 void NetBuilder::addInput(PlaceId place, TransitionId transition, SlotId slot, std::int32_t weight,
                           ArcKind kind) {
   slotOf(place, slot);
@@ -350,10 +361,14 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
     if (watched(term)) net->watchers_[fill[term.place_slot]++] = id;
   }
 
+  // each added arc's term: what setColouring and setFluid name arcs by
+  std::vector<std::uint32_t> final_of;
+  if (colouring_ || fluid_) {
+    final_of.resize(arcs_.size());
+    for (std::uint32_t pos = 0; pos < order.size(); ++pos) final_of[order[pos]] = pos;
+  }
   if (colouring_) {
     // each coloured transition's arcs: from the order they were added to their terms
-    std::vector<std::uint32_t> final_of(arcs_.size());
-    for (std::uint32_t pos = 0; pos < order.size(); ++pos) final_of[order[pos]] = pos;
     std::vector<std::vector<std::uint32_t>> added(colouring_->transitions.size());
     for (std::uint32_t i = 0; i < arcs_.size(); ++i) {
       const auto c = colouring_->of_transition[arcs_[i].transition];
@@ -364,6 +379,15 @@ std::shared_ptr<const Net> NetBuilder::freeze() {
       for (const auto k : colour_arcs_[c]) colouring_->arc_terms[c].push_back(TermId{final_of[added[c][k]]});
     }
     net->colouring_ = std::make_shared<const Colouring>(std::move(*colouring_));
+  }
+  if (fluid_) {
+    fluid_->of_term.assign(net->terms_.size(), -1);
+    for (std::size_t k = 0; k < fluid_->terms.size(); ++k) {
+      fluid_->terms[k].term = TermId{final_of[fluid_arcs_[k]]};
+      fluid_->of_term[fluid_->terms[k].term] = static_cast<std::int32_t>(k);
+    }
+    for (auto& fp : fluid_->places) fp.slot = psOf(fp.place, kDefaultSlot);
+    net->fluid_ = std::make_shared<const Fluid>(std::move(*fluid_));
   }
   net->transitions_ = std::move(transitions_);
   net->scripts_ = std::move(scripts_);

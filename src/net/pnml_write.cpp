@@ -11,6 +11,7 @@
 #include "detail/pnml_colour.h"
 #include "detail/pnml_tool.h"
 #include "gdpn/core/text.h"
+#include "gdpn/net/fluid.h"
 #include "gdpn/net/pnml.h"
 
 namespace gdpn::net {
@@ -551,6 +552,12 @@ class PnmlWriter {
 
 std::optional<std::string> writePnml(const NetSpec& spec, std::string& why, const std::string& name,
                                      std::vector<PnmlUnseen>* unseen) {
+  if (hybrid(spec)) {
+    // a P/T net has no amounts: written as places of tokens, the net would mean another thing
+    why = "PNML's place/transition nets have no continuous places or transitions (hybrid nets); "
+          "this net has some";
+    return std::nullopt;
+  }
   return PnmlWriter(spec, why).write(name, unseen);
 }
 

@@ -18,6 +18,7 @@ const char* slotKindName(SlotKind kind) {
     case SlotKind::Node: return "node";
     case SlotKind::Sensor: return "sensor";
     case SlotKind::Value: return "value";
+    case SlotKind::Continuous: return "continuous";
   }
   return "?";
 }

@@ -80,4 +80,21 @@ void TraceWriter::onDeposit(PlaceSlotId ps, std::int64_t count, std::span<const 
   tokens(ps, count, nodes);
 }
 
+void TraceWriter::onAmount(PlaceId p, double moved, bool deposited, double now, std::int64_t step) {
+  head(step, deposited ? "deposit" : "remove");
+  name_.clear();
+  net_.appendPlaceName(name_, p);
+  out_ << ",\"place\":" << core::jsonQuote(name_) << ",\"amount\":" << core::formatDouble(moved)
+       << ",\"now\":" << core::formatDouble(now) << "}\n";
+}
+
+void TraceWriter::onCross(PlaceId p, double level, double time, bool rising, std::int64_t step) {
+  // the exact time of the crossing, not the step's end: written in full
+  name_.clear();
+  net_.appendPlaceName(name_, p);
+  out_ << "{\"step\":" << step << ",\"t\":" << core::formatDouble(time) << ",\"ev\":\"cross\",\"place\":"
+       << core::jsonQuote(name_) << ",\"level\":" << core::formatDouble(level) << ",\"rising\":" << (rising ? "true" : "false")
+       << "}\n";
+}
+
 }  // namespace gdpn::net

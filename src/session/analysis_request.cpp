@@ -48,6 +48,24 @@ std::string AnalysisAnswer::guardNote(std::string_view option) const {
 }
 
 std::optional<AnalysedNet> analysedNet(const net::NetSpec& spec, core::Diagnostics& diags, ColourSearch how) {
+  if (net::hybrid(spec)) {
+    // a hybrid net: its discrete part, with a note of what that leaves out
+    net::DiscretePart left;
+    const net::NetSpec discrete = net::discretePart(spec, &left);
+    // the hybrid net must compile as it is: its mistakes are the user's, whatever is analysed
+    if (!net::compile(spec, diags)) return std::nullopt;
+    auto out = analysedNet(discrete, diags, how);
+    if (!out) return out;
+    const auto counted = [](std::size_t n, const char* what) {
+      return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+    };
+    out->notes.push_back("the continuous part (" + counted(left.places, "continuous place") + ", " +
+                         counted(left.transitions, "continuous transition") + ", " + counted(left.arcs, "arc") +
+                         ") is left out: thresholds on amounts count as met and amounts move no tokens, so the state "
+                         "space, bounds, deadlocks, liveness, invariants and cycle times are the discrete net's, every "
+                         "run of the hybrid net among its runs (a deadlock found may not happen; none found holds)");
+    return out;
+  }
   AnalysedNet out;
   if (!net::coloured(spec)) {
     out.net = net::compile(spec, diags);
@@ -100,6 +118,7 @@ AnalysisAnswer analyze(const AnalysedNet& analysed, std::string path, const Anal
   answer.max_bytes = options.explore.max_bytes;
   answer.guard = options.explore.max_bytes_guard;
   answer.analysis = model::analyze(net, std::move(path), options);
+  answer.analysis.notes.insert(answer.analysis.notes.begin(), analysed.notes.begin(), analysed.notes.end());
   return answer;
 }
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 
 namespace gdpn::core {
@@ -68,7 +69,7 @@ TEST(Expression, ErrorsNameWhatAndWhere) {
   EXPECT_EQ(error("(length").message, "expected ')'");
   EXPECT_EQ(error("length 2").message, "unexpected '2'");
   EXPECT_EQ(error("mx(1, 2)").message,
-            "no function 'mx' (did you mean 'max'?) (there are: min, max, abs, sqrt, floor, ceil, sind, cosd, atan2d)");
+            "no function 'mx' (did you mean 'max'?) (there are: min, max, abs, sqrt, floor, ceil, sind, cosd, atan2d, exp)");
   EXPECT_EQ(error("atan2d(1)").message, "atan2d() takes 2 arguments, got 1");
   EXPECT_EQ(error("min(1)").message, "min() takes 2 arguments, got 1");
   EXPECT_EQ(error("sqrt(-1)").message, "sqrt() of a negative number");
@@ -84,3 +85,46 @@ TEST(Expression, NamesInOrder) {
 
 }  // namespace
 }  // namespace gdpn::core
+
+TEST(CompiledExpression, RunsAsEvaluateComputes) {
+  const std::vector<std::string> names{"tank", "k"};
+  const auto resolve = [&](std::string_view n) -> std::optional<std::uint32_t> {
+    for (std::uint32_t i = 0; i < names.size(); ++i) {
+      if (names[i] == n) return i;
+    }
+    return std::nullopt;
+  };
+  const double values[] = {40.0, 0.25};
+  const auto lookup = [&](std::string_view n) -> std::optional<double> {
+    const auto i = resolve(n);
+    return i ? std::optional<double>(values[*i]) : std::nullopt;
+  };
+  for (const char* text : {"k * tank", "-k*(tank - 4)/2", "max(0, min(tank, 3)) + sqrt(k)", "atan2d(1, 1) + exp(k) - floor(2.5)",
+                           "2 - 3 - 4", "8 / 4 / 2", "abs(-tank) * cosd(60) + sind(30) + ceil(k)"}) {
+    gdpn::core::ExpressionError error;
+    const auto program = gdpn::core::compileExpression(text, resolve, error, names);
+    ASSERT_TRUE(program) << text << ": " << error.message;
+    const auto expected = gdpn::core::evaluate(text, lookup, error);
+    ASSERT_TRUE(expected) << text;
+    EXPECT_DOUBLE_EQ(program->run(values), *expected) << text;
+  }
+  gdpn::core::ExpressionError error;
+  const auto program = gdpn::core::compileExpression("k * tank + k", resolve, error);
+  ASSERT_TRUE(program);
+  EXPECT_EQ(program->reads, (std::vector<std::uint32_t>{0, 1}));
+}
+
+TEST(CompiledExpression, NamesWhatItDoesNotKnowWhereItStands) {
+  const auto resolve = [](std::string_view n) -> std::optional<std::uint32_t> {
+    return n == "tank" ? std::optional<std::uint32_t>(0) : std::nullopt;
+  };
+  gdpn::core::ExpressionError error;
+  EXPECT_FALSE(gdpn::core::compileExpression("0.5 * tnak", resolve, error, {"tank"}));
+  EXPECT_EQ(error.column, 6u);
+  EXPECT_EQ(error.message, "no name 'tnak' (did you mean 'tank'?)");
+  EXPECT_FALSE(gdpn::core::compileExpression("tank / (1", resolve, error));
+  const double zero[] = {0.0};
+  const auto p = gdpn::core::compileExpression("1 / tank", resolve, error);
+  ASSERT_TRUE(p);
+  EXPECT_TRUE(std::isinf(p->run(zero)));
+}

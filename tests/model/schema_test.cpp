@@ -292,10 +292,12 @@ pages:
         on_exit: "x = 4"
         on_sample: "x = 5"
         on_change: "x = 6"
+        continuous: {amount: 2.5, capacity: 10, unit: L, drives: [{node: box, field: size.z, scale: 0.1, offset: 0.2}]}
         at: [1, 2]
     transitions:
       t:
         description: "a transition"
+        continuous: {rate: "k * p", reads: {k: {node: box, of: angle}}}
         duration: {uniform: [1, $speed]}
         priority: 2
         probability: 0.5
@@ -368,11 +370,21 @@ std::map<Section, std::vector<std::vector<std::string>>> keysBySection(const std
     for (auto it = root[pages].begin(); it != root[pages].end(); ++it) {
       const YAML::Node page = it->second;
       add(section, page);
-      for (auto p = page["places"].begin(); p != page["places"].end(); ++p) add(Section::Place, p->second);
+      for (auto p = page["places"].begin(); p != page["places"].end(); ++p) {
+        add(Section::Place, p->second);
+        if (const YAML::Node c = p->second["continuous"]; c && c.IsMap()) {
+          add(Section::Continuous, c);
+          for (const auto& d : c["drives"]) add(Section::Drive, d);
+        }
+      }
       for (auto t = page["transitions"].begin(); t != page["transitions"].end(); ++t) {
         const YAML::Node transition = t->second;
         add(Section::Transition, transition);
         add(Section::Duration, transition["duration"]);
+        if (const YAML::Node flow = transition["continuous"]; flow && flow.IsMap()) {
+          add(Section::Flow, flow);
+          for (auto r = flow["reads"].begin(); r != flow["reads"].end(); ++r) add(Section::FlowRead, r->second);
+        }
         for (auto s = transition.begin(); s != transition.end(); ++s) {
           if (s->second.IsMap() && s->second["file"]) add(Section::ScriptFile, s->second);
         }

@@ -48,6 +48,7 @@ inline constexpr Rgba kControl{20, 20, 20, 255};        ///< control tokens
 inline constexpr Rgba kNode{31, 119, 180, 255};         ///< node tokens
 inline constexpr Rgba kSensor{255, 127, 14, 255};       ///< sensor variables
 inline constexpr Rgba kValue{148, 103, 189, 255};       ///< value tokens
+inline constexpr Rgba kContinuous{23, 190, 207, 255};   ///< a continuous place's amount (hybrid nets)
 inline constexpr Rgba kInstanceFill{232, 238, 246, 255};  ///< instance boxes
 inline constexpr Rgba kInstanceLine{80, 96, 128, 255};    ///< instance boxes' outlines, link names
 inline constexpr Rgba kInscription{70, 70, 110, 255};     ///< arc inscriptions (weights, slots)

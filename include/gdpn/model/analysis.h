@@ -53,6 +53,9 @@ struct Analysis {
   /// A coloured net's P-invariants found without unfolding it (the others are the unfolded
   /// net's); none for a net without colours.
   std::optional<ColouredInvariantLines> coloured;
+  /// What was left out of the model before the net was analysed (a hybrid net's continuous
+  /// part), beside what the untimed view leaves out (untimedCaveats).
+  std::vector<std::string> notes;
   /// True when every phase finished.
   [[nodiscard]] bool complete() const {
     return space.complete && invariants.complete && cycles_stop == net::ExploreStop::Done;
@@ -112,9 +115,10 @@ struct QueryResult {
 /// the path and marking that show it, wrapped at 100 columns; a contest property as the
 /// contest's line, `FORMULA <id> TRUE|FALSE|<number> TECHNIQUES <words>` (or `FORMULA <id>
 /// CANNOT_COMPUTE` and why). With `names` (a coloured net's, unfolded), the places and
-/// transitions it expands are written by their coloured names (net::formulaText).
+/// transitions it expands are written by their coloured names (net::formulaText). `notes`
+/// (what was left out of the model: Analysis::notes) come first, with the caveats.
 void printQueries(std::ostream& out, const net::Net& net, const std::vector<QueryResult>& results,
-                  const net::NameExpansion* names = nullptr);
+                  const net::NameExpansion* names = nullptr, const std::vector<std::string>& notes = {});
 /// The answers as pretty-printed JSON text (`names` as for printQueries).
 std::string queriesJson(const net::Net& net, const std::vector<QueryResult>& results,
                         const net::NameExpansion* names = nullptr);

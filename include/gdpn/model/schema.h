@@ -44,6 +44,10 @@ enum class Section : std::uint8_t {
   PartIo,      ///< one of a page type's `io`: a part's named input or output
   PartUse,     ///< one of a page type's `uses`: a role a control pattern's instance fills with a part
   Colour,      ///< a colour set of `colours` written as a map (one key: what kind of set)
+  Continuous,  ///< a place's `continuous` written as a map: its amount (hybrid nets)
+  Flow,        ///< a transition's `continuous`: its rate (hybrid nets)
+  FlowRead,    ///< one of a flow's `reads`: a number of the plant
+  Drive,       ///< one of a continuous place's `drives`: a plant field its amount sets
 };
 
 /// Every section, in the order of the enum.
@@ -52,7 +56,8 @@ inline constexpr Section kSections[] = {Section::Model,   Section::Settings, Sec
                                         Section::Place,   Section::Transition, Section::Arc,      Section::Instance,
                                         Section::Scripts, Section::ScriptFile, Section::Duration,
                                         Section::Part,    Section::PartIo,   Section::PartUse,
-                                        Section::Colour};
+                                        Section::Colour,  Section::Continuous, Section::Flow, Section::FlowRead,
+                                        Section::Drive};
 
 /// What a key's value is.
 enum class ValueType : std::uint8_t {

@@ -73,6 +73,8 @@ struct CyclePlan {
 };
 
 /// A model made ready to run.
+class FluidPlant;
+
 class Simulation {
  public:
   /// Compiles `model` and its scripts; returns nullptr with diagnostics on any error. `seed`
@@ -261,6 +263,7 @@ class Simulation {
   std::ostream* trace_out_ = nullptr;
   std::unique_ptr<script::Engine> engine_;
   std::unique_ptr<PartRun> parts_;
+  std::unique_ptr<FluidPlant> fluid_;  // hybrid nets: what rates read of the plant, what amounts drive
   std::uint64_t seed_ = 1;
   bool started_ = false;
 };

@@ -65,6 +65,12 @@ class NetBuilder {
   /// Adds a condition term: the transition may start only while script `index` (an
   /// expression over the sensor slot `slot` of `place`) is true.
   void addCondition(PlaceId place, TransitionId transition, SlotId slot, std::int32_t index);
+  /// Adds a term of discrete transition `transition` on continuous place `place` (its slot a0):
+  /// a condition the amount decides. Returns its number among the arcs added (for setFluid).
+  std::uint32_t addFluidTerm(PlaceId place, TransitionId transition);
+  /// Gives the net a continuous part: `fluid` without its `terms[k].term` and `of_term`, which
+  /// freeze() fills, `fluid_arcs[k]` being what addFluidTerm returned for terms[k].
+  void setFluid(Fluid fluid, std::vector<std::uint32_t> fluid_arcs);
   /// Gives the most recently added arc term a predicate, script `index`.
   void setLastPredicate(std::int32_t index);
   /// Marks script `index` as the model's globals.
@@ -114,6 +120,8 @@ class NetBuilder {
   std::vector<Multiset> values_;                          // value slots' initial values
   std::optional<Colouring> colouring_;                    // see setColouring
   std::vector<std::vector<std::uint32_t>> colour_arcs_;   // see setColouring
+  std::optional<Fluid> fluid_;                            // see setFluid
+  std::vector<std::uint32_t> fluid_arcs_;                 // see setFluid
 };
 
 }  // namespace gdpn::net

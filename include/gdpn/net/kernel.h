@@ -11,6 +11,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -82,6 +83,12 @@ class Kernel {
   void start();
   /// One whole step for a net without a plant: advance the clock, complete, fire.
   void step();
+
+  /// Phase 1 of the continuous part (hybrid nets): the amounts advance over the step that
+  /// beginStep() began, at the rates the marking, the amounts and the reads (setFluidInput)
+  /// give; each level crossed is reported at its time (NetObserver::onCross), and the terms
+  /// on the places that changed are examined again. Nothing for a net without one.
+  void advanceFluid();
 
   /// Phase 0: the clock moves to the end of the next step.
   void beginStep() {
@@ -165,6 +172,22 @@ class Kernel {
   std::string setMarking(PlaceSlotId ps, std::int64_t count);
   /// The capacity of place slot `ps`, tokens (kUnbounded when none).
   [[nodiscard]] std::int64_t capacity(PlaceSlotId ps) const { return slots_[ps].capacity; }
+  /// The amount on continuous place `p`, in its unit (0 for a discrete place).
+  [[nodiscard]] double amount(PlaceId p) const;
+  /// The room on continuous place `p` promised to occurring transitions, in its unit.
+  [[nodiscard]] double amountReserved(PlaceId p) const;
+  /// Sets the amount on continuous place `p` (a script's, the contents view's). Returns "" or
+  /// why not: a discrete place, a number below 0 or not finite, or more than its capacity less
+  /// the room promised. Observers see the change as a deposit or a removal of the difference.
+  std::string setAmount(PlaceId p, double amount);
+  /// Sets the value of Fluid::reads[`i`] (a number of the plant a rate reads), held until set again.
+  void setFluidInput(std::size_t i, double value);
+  /// The effective rate of continuous transition `t` now, units per second (0 for a discrete one).
+  [[nodiscard]] double flowRate(TransitionId t) const;
+  /// The rate continuous transition `t` would flow at without the first-order rules' cuts.
+  [[nodiscard]] double nominalRate(TransitionId t) const;
+  /// True while some continuous transition moves an amount (a dead net may still flow).
+  [[nodiscard]] bool flowing() const;
   /// Sets the capacity of place slot `ps` (a script's `capacity = n`; kUnbounded for none).
   /// Returns "" or why not: a slot the model left unbounded, a negative capacity, or less than
   /// the tokens there and the room promised to occurring transitions. Transitions waiting for room are re-examined.
@@ -190,7 +213,7 @@ class Kernel {
   /// (A transition whose last attempt found no binding of its values counts as not enabled:
   /// only a change of the marking, which nothing inside the net can make now, could give it one.)
   [[nodiscard]] bool dead() const {
-    return occurring_count_ == 0 && (enabled_count_ == 0 || (colouring_ && onlyUnbound()));
+    return occurring_count_ == 0 && (enabled_count_ == 0 || (colouring_ && onlyUnbound())) && !(fluid_ && flowing());
   }
   /// The model's random generator (all draws of a run come from it, in a fixed order).
   core::Random& random() { return random_; }
@@ -357,6 +380,22 @@ class Kernel {
 
   std::shared_ptr<const Net> net_;
   const Term* terms_ = nullptr;
+  // the continuous part (hybrid nets): amounts, promised room, reads, and the solver
+  struct FluidRun {
+    std::vector<double> x, reserved, inputs;
+    std::vector<std::uint8_t> on;  // per flow: its discrete terms hold
+    FluidSolver solver;
+    std::vector<Crossing> crossed;
+    std::vector<double> before;    // the amounts at the step's start
+  };
+  const Fluid* fluid_ = nullptr;
+  std::optional<FluidRun> fluid_run_;
+  void fluidInit();
+  void fluidBegin(TransitionId t);   // a start's jumps: takes amounts, promises room
+  void fluidFinish(TransitionId t);  // a completion's: puts amounts
+  void fluidRefresh(std::uint32_t place);  // the terms on fluid place `place`, examined again
+  void fluidRates();                 // the flows' rates at the amounts as they are
+  [[nodiscard]] bool fluidTermHolds(std::uint32_t k) const;
   // value tokens (none when the net has no colouring)
   const Colouring* colouring_ = nullptr;
   std::vector<Multiset> values_;            // per place slot

@@ -16,6 +16,7 @@
 
 #include "gdpn/core/diagnostics.h"
 #include "gdpn/net/colouring.h"
+#include "gdpn/net/fluid.h"
 #include "gdpn/net/id.h"
 #include "gdpn/net/names.h"
 #include "gdpn/net/slot.h"
@@ -190,6 +191,12 @@ class Net {
   [[nodiscard]] bool scripted() const { return !scripts_.empty(); }
   /// Its value tokens: colour sets, value slots, coloured transitions; null when it has none.
   [[nodiscard]] const Colouring* colouring() const { return colouring_.get(); }
+  /// Its continuous part (hybrid nets): continuous places and transitions; null when it has none.
+  [[nodiscard]] const Fluid* fluid() const { return fluid_.get(); }
+  /// True when transition `t` is continuous: it flows, and never fires.
+  [[nodiscard]] bool continuous(TransitionId t) const { return fluid_ && fluid_->continuous(t); }
+  /// True when place `p` is continuous: it holds an amount, not tokens.
+  [[nodiscard]] bool continuousPlace(PlaceId p) const { return fluid_ && fluid_->of_place[p] >= 0; }
   /// True when its arc terms' weights are the tokens every occurrence moves (always, but for a
   /// value inscription whose size depends on the binding: Colouring::counts_exact).
   [[nodiscard]] bool countsExact() const { return !colouring_ || colouring_->counts_exact; }
@@ -213,6 +220,7 @@ class Net {
   std::int32_t globals_script_ = -1;
   std::vector<std::string> sensor_paths_;
   std::shared_ptr<const Colouring> colouring_;
+  std::shared_ptr<const Fluid> fluid_;
 };
 
 }  // namespace gdpn::net

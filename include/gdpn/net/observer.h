@@ -40,6 +40,16 @@ class NetObserver {
   virtual void onValues(PlaceSlotId ps, const Multiset& values, bool deposited, std::int64_t step) {
     (void)ps, (void)values, (void)deposited, (void)step;
   }
+  /// An amount `moved` (> 0) left (`deposited` false) or arrived on continuous place `p`, in
+  /// one jump: a start's take, a completion's put, or a set; it holds `now` after it.
+  virtual void onAmount(PlaceId p, double moved, bool deposited, double now, std::int64_t step) {
+    (void)p, (void)moved, (void)deposited, (void)now, (void)step;
+  }
+  /// Continuous place `p` crossed (or reached) `level` at `time` seconds, within the step
+  /// ending at `step`: from below when `rising`. Levels are 0, its capacity and its arcs' thresholds.
+  virtual void onCross(PlaceId p, double level, double time, bool rising, std::int64_t step) {
+    (void)p, (void)level, (void)time, (void)rising, (void)step;
+  }
 };
 
 }  // namespace gdpn::net

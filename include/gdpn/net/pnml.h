@@ -47,7 +47,8 @@ struct PnmlUnseen {
 /// descriptions ...) goes into gdpn's `<toolspecific>` parts, and `unseen`, when given,
 /// receives each such kind with its count. Values taken from model parameters are written
 /// as their values. A page type instantiated other than once cannot be written: nullopt and
-/// `why`. Names that came from PNML ids go back to those ids.
+/// `why`, and so can a hybrid net (continuous places or transitions). Names that came from
+/// PNML ids go back to those ids.
 std::optional<std::string> writePnml(const NetSpec& spec, std::string& why, const std::string& name = {},
                                      std::vector<PnmlUnseen>* unseen = nullptr);
 

@@ -23,15 +23,16 @@ enum class SlotKind : std::uint8_t {
   Node,     ///< an ordered multiset of references to scene nodes (FIFO by arrival)
   Sensor,   ///< a variable bound to a sensor node
   Value,    ///< a multiset of values of a colour set (value tokens: semantics, *Value tokens*)
+  Continuous,  ///< a continuous place's only slot (a0): a real amount (hybrid nets), kept apart from tokens
 };
 
 /// Parses "a0" ... "d7"; nullopt for anything else.
 std::optional<SlotId> parseSlot(std::string_view name);
 /// "a0" ... "d7".
 std::string slotName(SlotId slot);
-/// "control", "node", "sensor" or "value".
+/// "control", "node", "sensor", "value" or "continuous".
 const char* slotKindName(SlotKind kind);
-/// Parses "control", "node", "sensor" or "value".
+/// Parses "control", "node", "sensor" or "value" (a place is made continuous otherwise: `continuous`).
 std::optional<SlotKind> parseSlotKind(std::string_view name);
 
 }  // namespace gdpn::net

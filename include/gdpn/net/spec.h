@@ -162,6 +162,57 @@ struct SlotText {
   friend bool operator==(const SlotText& x, const SlotText& y) { return x.slot == y.slot && x.text == y.text; }
 };
 
+/// A field of the plant that a continuous place's amount drives (hybrid nets): after every step
+/// the node's number field is set to `offset + scale * amount` (a tank's fill as a shape's height).
+struct FluidDrive {
+  std::string node;     ///< the node's path (relative to the instance in a page type)
+  std::string field;    ///< its number field (`size.z` for one component of a vector field)
+  double scale = 1.0;   ///< field units per unit of amount
+  double offset = 0.0;  ///< the field's value at amount 0, field units
+  SourceLoc loc;        ///< where it was written
+  friend bool operator==(const FluidDrive& x, const FluidDrive& y) {
+    return x.node == y.node && x.field == y.field && x.scale == y.scale && x.offset == y.offset;
+  }
+};
+
+/// What makes a place continuous (hybrid nets, semantics: *Continuous places*): it holds a
+/// non-negative real amount rather than tokens.
+struct FluidSpec {
+  double amount = 0.0;                ///< the initial amount, in `unit` (>= 0)
+  std::optional<double> capacity{};   ///< the most it holds, in `unit` (none: unbounded)
+  std::string unit{};                 ///< for people: `L`, `kg`, `Ah`
+  SourceLoc loc{};                    ///< where `continuous` was written
+  std::vector<FluidDrive> drives{};   ///< plant fields its amount sets
+  friend bool operator==(const FluidSpec& x, const FluidSpec& y) {
+    return x.amount == y.amount && x.capacity == y.capacity && x.unit == y.unit && x.drives == y.drives;
+  }
+};
+
+/// A number of the plant a flow's rate reads (hybrid nets): what a signal's `node` and `of` read.
+struct FlowRead {
+  std::string name;  ///< the name the rate uses
+  std::string node;  ///< the node's path (relative to the instance in a page type)
+  std::string of;    ///< what of it: `reading`, `angle`, a field, ... (docs/format.md, Signals)
+  SourceLoc loc;     ///< where it was written
+  friend bool operator==(const FlowRead& x, const FlowRead& y) {
+    return x.name == y.name && x.node == y.node && x.of == y.of;
+  }
+};
+
+/// What makes a transition continuous (hybrid nets, semantics: *Continuous transitions*): it
+/// flows at a rate instead of firing.
+struct FlowSpec {
+  /// The rate, units of amount per second per unit of arc weight: an expression (core
+  /// expression syntax) over the amounts of the continuous places on its page (by name), its
+  /// `reads` and the model's parameters.
+  SlotText rate{};
+  std::vector<FlowRead> reads{};  ///< numbers of the plant the rate names
+  /// The model's parameters (name, value), filled by the loader: the rate may name them.
+  std::vector<std::pair<std::string, double>> params{};
+  SourceLoc loc{};                ///< where `continuous` was written
+  friend bool operator==(const FlowSpec& x, const FlowSpec& y) { return x.rate == y.rate && x.reads == y.reads; }
+};
+
 /// A 2D position in the net editor (editor units, for the IDE and PNML graphics).
 using EditorPos = std::array<double, 2>;
 
@@ -181,16 +232,20 @@ struct PlaceSpec {
   SourceLoc fusion_loc{};              ///< where the set is named
   std::vector<SlotText> colours{};     ///< value slots: the colour set each holds, by name (`colour:`)
   std::vector<SlotText> values{};      ///< value slots: the initial values, a multiset inscription (`values:`)
+  std::optional<FluidSpec> fluid{};    ///< set for a continuous place (hybrid nets): its amount
+  /// True when it is a continuous place.
+  [[nodiscard]] bool continuous() const { return fluid.has_value(); }
   /// True when it declares anything a fusion set's members share: slot kinds, tokens,
   /// capacities, scripts or sensors.
   [[nodiscard]] bool declares() const {
     return !kinds.empty() || !tokens.empty() || !nodes.empty() || !capacity.empty() || !scripts.empty() ||
-           !sensors.empty() || !colours.empty() || !values.empty();
+           !sensors.empty() || !colours.empty() || !values.empty() || fluid;
   }
   /// True when `x` and `y` declare the same slot kinds, tokens, capacities, scripts and sensors.
   friend bool sameDeclarations(const PlaceSpec& x, const PlaceSpec& y) {
     return x.kinds == y.kinds && x.tokens == y.tokens && x.nodes == y.nodes && x.capacity == y.capacity &&
-           x.scripts == y.scripts && x.sensors == y.sensors && x.colours == y.colours && x.values == y.values;
+           x.scripts == y.scripts && x.sensors == y.sensors && x.colours == y.colours && x.values == y.values &&
+           x.fluid == y.fluid;
   }
   friend bool operator==(const PlaceSpec& x, const PlaceSpec& y) {
     return x.name == y.name && x.description == y.description && sameDeclarations(x, y) &&
@@ -225,7 +280,10 @@ struct TransitionSpec {
   /// The condition on its variables in the inscription language (`when:`; text "" for none):
   /// a binding occurs only where it is true. Not a Python guard: the analysis reads it.
   SlotText when{};
+  std::optional<FlowSpec> flow{};     ///< set for a continuous transition (hybrid nets): its rate
 
+  /// True when it is a continuous transition.
+  [[nodiscard]] bool continuous() const { return flow.has_value(); }
   /// True when any script is attached.
   [[nodiscard]] bool scripted() const {
     return !guard.empty() || !pre_fire.empty() || !in_fire.empty() || !post_fire.empty();
@@ -238,7 +296,7 @@ struct TransitionSpec {
            x.priority_param == y.priority_param && x.probability_param == y.probability_param &&
            x.servers == y.servers && x.servers_param == y.servers_param &&
            x.pre_fire == y.pre_fire && x.in_fire == y.in_fire && x.post_fire == y.post_fire &&
-           x.position == y.position && x.when == y.when;
+           x.position == y.position && x.when == y.when && x.flow == y.flow;
   }
 };
 
@@ -278,10 +336,13 @@ struct ArcSpec {
   /// Where its inscription stands: an offset from the middle of its drawn path (half its
   /// length along it), editor units; none: beside the path where it fits.
   std::optional<EditorPos> label_at{};
+  /// On an arc with a continuous place: its weight, a real number in the place's unit (none:
+  /// 1); `weight: 2.5` fills it, and `weights` with the whole number where it is one.
+  std::optional<double> amount{};
   friend bool operator==(const ArcSpec& x, const ArcSpec& y) {
     return x.from == y.from && x.to == y.to && x.kind == y.kind && x.weights == y.weights &&
            x.predicates == y.predicates && x.conditions == y.conditions && x.via == y.via &&
-           x.label_at == y.label_at && x.inscriptions == y.inscriptions;
+           x.label_at == y.label_at && x.inscriptions == y.inscriptions && x.amount == y.amount;
   }
 };
 

@@ -26,6 +26,8 @@ class TraceWriter : public NetObserver {
   void onDeposit(PlaceSlotId ps, std::int64_t count, std::span<const NodeRef> nodes, std::int64_t step) override;
   void onBinding(TransitionId t, const Binding& b, std::int64_t step) override;
   void onValues(PlaceSlotId ps, const Multiset& values, bool deposited, std::int64_t step) override;
+  void onAmount(PlaceId p, double moved, bool deposited, double now, std::int64_t step) override;
+  void onCross(PlaceId p, double level, double time, bool rising, std::int64_t step) override;
   /// Writes a free event line: {"step":..,"t":..,"ev":`event`,`fields`} where `fields` is
   /// already JSON text of the form "\"key\":value,..." (or empty).
   void event(std::int64_t step, const char* event, const std::string& fields);

@@ -77,6 +77,8 @@ struct AnalysedNet {
   /// null for a net without colours.
   std::shared_ptr<const net::Net> coloured;
   std::optional<net::NameExpansion> names;   ///< a coloured net's: its places and transitions -> the unfolded ones
+  /// What the analysis leaves out of the model, for its notes (a hybrid net's continuous part).
+  std::vector<std::string> notes;
   /// The expansion for the query parsers and printers (null for a net without colours).
   [[nodiscard]] const net::NameExpansion* expansion() const { return names ? &*names : nullptr; }
 };

@@ -198,6 +198,7 @@ void arcInspector(App& app, const Selection& sel, nlohmann::json& report) {
         case net::SlotKind::Node: changed = expressionRow("predicate", slot, arc.predicates, was.loc, report) || changed; break;
         case net::SlotKind::Sensor: changed = expressionRow("condition", slot, arc.conditions, was.loc, report) || changed; break;
         case net::SlotKind::Control:
+        case net::SlotKind::Continuous:
         case net::SlotKind::Value: break;  // an inscription: below
       }
     }

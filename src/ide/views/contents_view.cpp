@@ -40,6 +40,7 @@ ImVec4 slotColour(net::SlotKind kind, bool marked) {
     case net::SlotKind::Node: return {0.12f, 0.47f, 0.71f, a};
     case net::SlotKind::Sensor: return {1.0f, 0.50f, 0.05f, a};
     case net::SlotKind::Value: return {0.58f, 0.40f, 0.74f, a};
+    case net::SlotKind::Continuous: return {0.09f, 0.75f, 0.81f, a};
   }
   return {0.3f, 0.3f, 0.3f, a};
 }

@@ -1,0 +1,220 @@
+// Hybrid nets in whole runs (semantics.md, Hybrid nets), against analytic answers: a
+// constant-rate fill crosses its threshold at the exact time, an exponential drain follows
+// a e^(-kt), two flows share an emptying place in proportion to their rates, and the
+// discrete reaction starts at the first step boundary after a crossing.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "gdpn/model/model.h"
+#include "gdpn/model/simulation.h"
+
+namespace gdpn::model {
+namespace {
+
+std::unique_ptr<Simulation> fromText(const std::string& text) {
+  core::Diagnostics diags;
+  auto m = parseModel(text, "hybrid.gdpn.yaml", diags);
+  EXPECT_TRUE(m) << diags.str();
+  if (!m) return nullptr;
+  auto sim = Simulation::create(*m, diags);
+  EXPECT_TRUE(sim) << diags.str();
+  return sim;
+}
+
+double amountOf(const Simulation& sim, const std::string& place) {
+  return sim.kernel().amount(*sim.net().findPlace(place));
+}
+
+std::vector<nlohmann::json> events(const std::string& trace, const std::string& ev) {
+  std::vector<nlohmann::json> out;
+  std::istringstream lines(trace);
+  for (std::string line; std::getline(lines, line);) {
+    auto j = nlohmann::json::parse(line);
+    if (j["ev"] == ev) out.push_back(j);
+  }
+  return out;
+}
+
+// A pump fills a tank at 0.3 L/s while `running` is marked; `stop` waits for 1 L.
+std::string fillModel() {
+  std::ifstream in(std::string(GDPN_SOURCE_DIR) + "/tests/data/hybrid/fill.gdpn.yaml");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(HybridRun, AConstantFillCrossesItsThresholdAtTheExactTime) {
+  auto sim = fromText(fillModel());
+  ASSERT_TRUE(sim);
+  std::ostringstream trace;
+  sim->traceTo(trace);
+  sim->run({.until = 5.0, .steps = {}});
+  const auto crossings = events(trace.str(), "cross");
+  ASSERT_FALSE(crossings.empty()) << trace.str();
+  const auto& c = crossings.front();
+  EXPECT_EQ(c["place"], "main/tank");
+  EXPECT_EQ(c["level"].get<double>(), 1.0);
+  EXPECT_TRUE(c["rising"].get<bool>());
+  EXPECT_NEAR(c["t"].get<double>(), 1.0 / 0.3, 1e-9);
+  EXPECT_EQ(c["step"], 34);  // the step (3.3, 3.4] holds it
+  // the reaction: `stop` starts at the first step boundary after the crossing, 3.4 s
+  const auto starts = events(trace.str(), "start");
+  ASSERT_EQ(starts.size(), 1u);
+  EXPECT_EQ(starts[0]["transition"], "main/stop");
+  EXPECT_EQ(starts[0]["step"], 34);
+  // the pump ran until then: 0.3 L/s for 3.4 s, and not a drop after
+  EXPECT_NEAR(amountOf(*sim, "main/tank"), 0.3 * 3.4, 1e-12);
+  EXPECT_FALSE(sim->kernel().flowing());
+}
+
+TEST(HybridRun, AnExponentialDrainFollowsTheAnalyticCurve) {
+  auto sim = fromText(R"(gdpn: 1
+settings: {dt: 0.01}
+params: {k: 0.5}
+pages:
+  main:
+    places:
+      tank: {continuous: {amount: 10, unit: L}}
+      half: {}
+    transitions:
+      drain: {continuous: {rate: k * tank}}
+      alarm: {duration: 0.01}
+    arcs:
+      - {from: tank, to: drain}
+      - {from: tank, to: alarm, kind: inhibitor, weight: 5}
+      - {from: alarm, to: half}
+)");
+  ASSERT_TRUE(sim);
+  std::ostringstream trace;
+  sim->traceTo(trace);
+  sim->run({.until = 2.0, .steps = {}});
+  EXPECT_NEAR(amountOf(*sim, "main/tank"), 10.0 * std::exp(-0.5 * 2.0), 1e-7);
+  const auto crossings = events(trace.str(), "cross");
+  ASSERT_EQ(crossings.size(), 1u) << trace.str();
+  EXPECT_EQ(crossings[0]["level"].get<double>(), 5.0);
+  EXPECT_FALSE(crossings[0]["rising"].get<bool>());
+  EXPECT_NEAR(crossings[0]["t"].get<double>(), std::log(2.0) / 0.5, 1e-7);
+  const auto starts = events(trace.str(), "start");
+  ASSERT_FALSE(starts.empty());
+  EXPECT_EQ(starts[0]["step"], 139);  // ln 2 / 0.5 = 1.3863 s: the boundary after is 1.39 s
+}
+
+TEST(HybridRun, TwoFlowsShareAnEmptyingPlaceInProportionToTheirRates) {
+  auto sim = fromText(R"(gdpn: 1
+settings: {dt: 0.1}
+pages:
+  main:
+    places:
+      tank: {continuous: {amount: 1}}
+      a: {continuous: true}
+      b: {continuous: true}
+    transitions:
+      feed: {continuous: {rate: 0.2}}
+      fast: {continuous: {rate: 0.3}}
+      slow: {continuous: {rate: 0.1}}
+    arcs:
+      - {from: feed, to: tank}
+      - {from: tank, to: fast}
+      - {from: fast, to: a}
+      - {from: tank, to: slow}
+      - {from: slow, to: b}
+)");
+  ASSERT_TRUE(sim);
+  std::ostringstream trace;
+  sim->traceTo(trace);
+  double lowest = 1.0;
+  for (int k = 0; k < 100; ++k) {
+    sim->step();
+    lowest = std::min(lowest, amountOf(*sim, "main/tank"));
+  }
+  // 1 L drains at 0.2 L/s net: empty at 5 s; then the 0.2 L/s coming in is shared 3 : 1
+  EXPECT_GE(lowest, 0.0);
+  EXPECT_EQ(amountOf(*sim, "main/tank"), 0.0);
+  EXPECT_NEAR(amountOf(*sim, "main/a"), 0.3 * 5 + 0.15 * 5, 1e-9);
+  EXPECT_NEAR(amountOf(*sim, "main/b"), 0.1 * 5 + 0.05 * 5, 1e-9);
+  EXPECT_NEAR(sim->kernel().flowRate(*sim->net().findTransition("main/fast")), 0.15, 1e-12);
+  EXPECT_NEAR(sim->kernel().nominalRate(*sim->net().findTransition("main/fast")), 0.3, 1e-12);
+  const auto crossings = events(trace.str(), "cross");
+  ASSERT_EQ(crossings.size(), 1u) << trace.str();
+  EXPECT_EQ(crossings[0]["place"], "main/tank");
+  EXPECT_EQ(crossings[0]["level"].get<double>(), 0.0);
+  EXPECT_NEAR(crossings[0]["t"].get<double>(), 5.0, 1e-9);
+}
+
+TEST(HybridRun, DiscreteTransitionsTakeAndPutAmountsInJumps) {
+  auto sim = fromText(R"(gdpn: 1
+settings: {dt: 1}
+pages:
+  main:
+    places:
+      silo: {continuous: {amount: 6, capacity: 10, unit: kg}}
+      bin: {continuous: {capacity: 4, unit: kg}}
+      orders: {tokens: 3}
+    transitions:
+      fill: {duration: 2}
+    arcs:
+      - {from: orders, to: fill}
+      - {from: silo, to: fill, weight: 2.5}
+      - {from: fill, to: bin, weight: 2.5}
+)");
+  ASSERT_TRUE(sim);
+  std::ostringstream trace;
+  sim->traceTo(trace);
+  const auto outcome = sim->run({.until = 20, .steps = {}});
+  // the first fill takes 2.5 kg and puts it in the bin; the second finds no room for 2.5 more
+  EXPECT_EQ(outcome.reason, StopReason::Dead);
+  EXPECT_EQ(amountOf(*sim, "main/silo"), 3.5);
+  EXPECT_EQ(amountOf(*sim, "main/bin"), 2.5);
+  const auto removes = events(trace.str(), "remove");
+  bool took = false;
+  for (const auto& r : removes) took = took || (r["place"] == "main/silo" && r["amount"].get<double>() == 2.5);
+  EXPECT_TRUE(took) << trace.str();
+  EXPECT_NE(sim->kernel().readinessText(*sim->net().findTransition("main/fill")).find("'main/bin' has no room for 2.5 kg"),
+            std::string::npos)
+      << sim->kernel().readinessText(*sim->net().findTransition("main/fill"));
+}
+
+TEST(HybridRun, TheSameRunTwiceGivesTheSameTraceByteForByte) {
+  std::string traces[2];
+  for (auto& t : traces) {
+    auto sim = fromText(fillModel());
+    ASSERT_TRUE(sim);
+    std::ostringstream trace;
+    sim->traceTo(trace);
+    sim->run({.until = 5.0, .steps = {}});
+    t = trace.str();
+  }
+  EXPECT_FALSE(traces[0].empty());
+  EXPECT_EQ(traces[0], traces[1]);
+}
+
+TEST(HybridRun, MistakesAreLocatedInTheFile) {
+  core::Diagnostics diags;
+  auto m = parseModel(R"(gdpn: 1
+pages:
+  main:
+    places:
+      tank: {continuous: {amount: 1}, tokens: 2}
+    transitions:
+      drain: {continuous: {rate: 0.5 * tnak}}
+    arcs:
+      - {from: tank, to: drain}
+)", "bad.gdpn.yaml", diags);
+  ASSERT_TRUE(m) << diags.str();
+  EXPECT_EQ(Simulation::create(*m, diags), nullptr);
+  const std::string text = diags.str();
+  EXPECT_NE(text.find("bad.gdpn.yaml:5:14: error: continuous place 'tank' holds an amount, not tokens"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("bad.gdpn.yaml:7:40: error: rate of continuous transition 'drain': no name 'tnak' (did you mean "
+                      "'tank'?)"),
+            std::string::npos)
+      << text;
+}
+
+}  // namespace
+}  // namespace gdpn::model
