@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
@@ -101,7 +102,7 @@ FluidSolver::~FluidSolver() = default;
 FluidSolver::FluidSolver(const FluidSolver& other)
     : fluid_(other.fluid_), values_(other.values_), v_(other.v_), f_(other.f_), active_(other.active_),
       side_(other.side_), side_level_(other.side_level_), full_(other.full_), feeds_(other.feeds_),
-      draws_(other.draws_), bounded_(other.bounded_), held_(other.held_), dx_(other.dx_) {}
+      draws_(other.draws_), bounded_(other.bounded_), held_(other.held_), sliding_(other.sliding_), dx_(other.dx_) {}
 
 FluidSolver& FluidSolver::operator=(const FluidSolver& other) {
   if (this == &other) return *this;
@@ -117,23 +118,37 @@ FluidSolver& FluidSolver::operator=(const FluidSolver& other) {
   draws_ = other.draws_;
   bounded_ = other.bounded_;
   held_ = other.held_;
+  sliding_ = other.sliding_;
   dx_ = other.dx_;
   cvode_.reset();
   return *this;
 }
 
+// whether flow k moves place p: draws from it (`draws`) or feeds it
+bool FluidSolver::moves(std::uint32_t k, std::uint32_t p, bool draws) const {
+  const auto& list = draws ? draws_[p] : feeds_[p];
+  return std::any_of(list.begin(), list.end(), [&](const auto& e) { return e.first == k; });
+}
+
 bool FluidSolver::thresholdsHold(std::uint32_t k, const double* x) const {
   const Flow& flow = fluid_->flows[k];
-  // at a level it has just reached from above, a place counts as below it: the flow that
-  // brought it there goes on
-  auto below = [&](const FlowArc& a) {
-    return x[a.place] < a.weight || (x[a.place] == a.weight && side_[a.place] < 0 && side_level_[a.place] == a.weight);
-  };
+  // At its level exactly, a place counts as on the side it came from (a place the step
+  // started there counts as at it). A flow that itself draws the place down to its test's
+  // level, or fills it up to its inhibitor's, is on there: the rules hold the place at the
+  // level (reduce) rather than let the flow switch on and off without end.
   for (auto i = flow.tests_begin; i < flow.inhibitors_begin; ++i) {
-    if (below(fluid_->thresholds[i])) return false;
+    const FlowArc& a = fluid_->thresholds[i];
+    if (x[a.place] > a.weight) continue;
+    if (x[a.place] < a.weight) return false;
+    const bool from_above = side_[a.place] < 0 && side_level_[a.place] == a.weight;
+    if (from_above && !moves(k, a.place, true)) return false;
   }
   for (auto i = flow.inhibitors_begin; i < flow.thresholds_end; ++i) {
-    if (!below(fluid_->thresholds[i])) return false;
+    const FlowArc& a = fluid_->thresholds[i];
+    if (x[a.place] < a.weight) continue;
+    if (x[a.place] > a.weight) return false;
+    const bool from_above = side_[a.place] < 0 && side_level_[a.place] == a.weight;
+    if (!from_above && !moves(k, a.place, false)) return false;
   }
   return true;
 }
@@ -151,6 +166,21 @@ bool FluidSolver::mode(const double* x) {
   for (std::uint32_t p = 0; p < places; ++p) {
     if (x[p] <= 0.0 || x[p] >= full_[p]) bounded_.push_back(p);
   }
+  // the places at a threshold of a flow that moves them towards it: a floor (a test) or a
+  // ceiling (an inhibitor) for that flow alone
+  sliding_.clear();
+  for (std::uint32_t k = 0; k < fluid_->flows.size(); ++k) {
+    if (!active_[k]) continue;
+    const Flow& flow = fluid_->flows[k];
+    for (auto i = flow.tests_begin; i < flow.thresholds_end; ++i) {
+      const FlowArc& a = fluid_->thresholds[i];
+      const bool test = i < flow.inhibitors_begin;
+      if (x[a.place] == a.weight && moves(k, a.place, test)) sliding_.push_back({k, a.place, test});
+    }
+  }
+  std::sort(sliding_.begin(), sliding_.end(), [](const Sliding& a, const Sliding& b) {
+    return std::tie(a.place, a.floor, a.flow) < std::tie(b.place, b.floor, b.flow);
+  });
   return stateful;
 }
 
@@ -168,6 +198,28 @@ void FluidSolver::reduce(const double* x) {
   // in no more than goes out; the flows concerned are cut in proportion to their rates
   for (int pass = 0; pass < kMostPasses; ++pass) {
     bool changed = false;
+    // a flow at its own threshold moves the place no further than the others let it: its
+    // draw (a test's floor) or its feed (an inhibitor's ceiling) is cut by what would take the
+    // place past the level, to nothing if need be
+    for (std::size_t i = 0; i < sliding_.size();) {
+      const std::uint32_t p = sliding_[i].place;
+      const bool floor = sliding_[i].floor;
+      std::size_t end = i;
+      double own = 0.0;  // what the flows sliding on p this way move of it
+      for (; end < sliding_.size() && sliding_[end].place == p && sliding_[end].floor == floor; ++end) {
+        for (const auto& [k, w] : floor ? draws_[p] : feeds_[p]) own += k == sliding_[end].flow ? w * f_[k] : 0.0;
+      }
+      double in = 0.0, out = 0.0;
+      for (const auto& [k, w] : feeds_[p]) in += w * f_[k];
+      for (const auto& [k, w] : draws_[p]) out += w * f_[k];
+      const double excess = floor ? out - in : in - out;
+      if (excess > 0.0 && own > 0.0) {
+        const double cut = std::max(0.0, (own - excess) / own);
+        for (auto j = i; j < end; ++j) f_[sliding_[j].flow] *= cut;
+        changed = true;
+      }
+      i = end;
+    }
     for (const auto p : bounded_) {
       double in = 0.0, out = 0.0;
       for (const auto& [k, w] : feeds_[p]) in += w * f_[k];
@@ -187,12 +239,22 @@ void FluidSolver::reduce(const double* x) {
   // a place at a bound whose flows the rules balanced stays there: what rounding leaves of
   // in - out is not a flow (a drift of 1e-17 L would cross 0 again in every step)
   held_.clear();
-  for (const auto p : bounded_) {
+  // in - out of place p, and what rounding may leave of a balance
+  const auto net = [&](std::uint32_t p, double& slack) {
     double in = 0.0, out = 0.0;
     for (const auto& [k, w] : feeds_[p]) in += w * f_[k];
     for (const auto& [k, w] : draws_[p]) out += w * f_[k];
-    const double slack = 1e-12 * (in + out);
-    if ((x[p] <= 0.0 && in <= out + slack) || (x[p] >= full_[p] && out <= in + slack)) held_.push_back(p);
+    slack = 1e-12 * (in + out);
+    return in - out;
+  };
+  double slack = 0.0;
+  for (const auto p : bounded_) {
+    const double d = net(p, slack);
+    if ((x[p] <= 0.0 && d <= slack) || (x[p] >= full_[p] && d >= -slack)) held_.push_back(p);
+  }
+  for (const auto& s : sliding_) {
+    // held at the level while the sliding flow still moves it (a flow cut to nothing lets go)
+    if (f_[s.flow] > 0.0 && std::abs(net(s.place, slack)) <= slack) held_.push_back(s.place);
   }
 }
 

@@ -179,6 +179,89 @@ pages:
       << sim->kernel().readinessText(*sim->net().findTransition("main/fill"));
 }
 
+TEST(HybridRun, AFullPlaceTakesInNoMoreThanGoesOut) {
+  auto sim = fromText(R"(gdpn: 1
+settings: {dt: 0.5}
+pages:
+  main:
+    places:
+      tank: {continuous: {capacity: 5}}
+    transitions:
+      pump: {continuous: {rate: 1}}
+      drain: {continuous: {rate: 0.4}}
+    arcs:
+      - {from: pump, to: tank}
+      - {from: tank, to: drain}
+)");
+  ASSERT_TRUE(sim);
+  std::ostringstream trace;
+  sim->traceTo(trace);
+  sim->run({.until = 20.0, .steps = {}});
+  // full at 5 / 0.6 s; then the pump is cut to what the drain takes
+  EXPECT_EQ(amountOf(*sim, "main/tank"), 5.0);
+  EXPECT_NEAR(sim->kernel().flowRate(*sim->net().findTransition("main/pump")), 0.4, 1e-12);
+  const auto crossings = events(trace.str(), "cross");
+  ASSERT_EQ(crossings.size(), 1u) << trace.str();
+  EXPECT_EQ(crossings[0]["level"].get<double>(), 5.0);
+  EXPECT_NEAR(crossings[0]["t"].get<double>(), 5.0 / 0.6, 1e-9);
+}
+
+TEST(HybridRun, AFlowFillingUpToItsOwnInhibitorHoldsTheLevelThere) {
+  // the pump runs while the tank holds less than 8 L; a drain takes 0.5 L/s: at 8 L the pump
+  // slides, giving what the drain takes, rather than switching on and off
+  auto sim = fromText(R"(gdpn: 1
+settings: {dt: 0.1}
+pages:
+  main:
+    places:
+      tank: {continuous: {unit: L}}
+    transitions:
+      pump: {continuous: {rate: 1}}
+      drain: {continuous: {rate: 0.5}}
+    arcs:
+      - {from: pump, to: tank}
+      - {from: tank, to: pump, kind: inhibitor, weight: 8}
+      - {from: tank, to: drain}
+)");
+  ASSERT_TRUE(sim);
+  std::ostringstream trace;
+  sim->traceTo(trace);
+  for (int k = 0; k < 300; ++k) {
+    sim->step();
+    ASSERT_LE(amountOf(*sim, "main/tank"), 8.0);
+  }
+  EXPECT_EQ(amountOf(*sim, "main/tank"), 8.0);
+  EXPECT_NEAR(sim->kernel().flowRate(*sim->net().findTransition("main/pump")), 0.5, 1e-12);
+  const auto crossings = events(trace.str(), "cross");
+  ASSERT_EQ(crossings.size(), 1u) << trace.str();
+  EXPECT_NEAR(crossings[0]["t"].get<double>(), 16.0, 1e-9);
+}
+
+TEST(HybridRun, AnOverflowDrawsDownToItsOwnTestAndNoFurther) {
+  // an overflow takes 2 L/s while the tank holds 8 L or more; the pump gives 1 L/s
+  auto sim = fromText(R"(gdpn: 1
+settings: {dt: 0.1}
+pages:
+  main:
+    places:
+      tank: {continuous: {unit: L}}
+      spill: {continuous: {unit: L}}
+    transitions:
+      pump: {continuous: {rate: 1}}
+      overflow: {continuous: {rate: 2}}
+    arcs:
+      - {from: pump, to: tank}
+      - {from: tank, to: overflow}
+      - {from: tank, to: overflow, kind: test, weight: 8}
+      - {from: overflow, to: spill}
+)");
+  ASSERT_TRUE(sim);
+  sim->run({.until = 20.0, .steps = {}});
+  EXPECT_EQ(amountOf(*sim, "main/tank"), 8.0);
+  EXPECT_NEAR(amountOf(*sim, "main/spill"), 12.0, 1e-9);
+  EXPECT_NEAR(sim->kernel().flowRate(*sim->net().findTransition("main/overflow")), 1.0, 1e-12);
+}
+
 TEST(HybridRun, TheSameRunTwiceGivesTheSameTraceByteForByte) {
   std::string traces[2];
   for (auto& t : traces) {

@@ -164,6 +164,7 @@ class FluidSolver {
   void derivative(const double* x, double* dx);
   void reduce(const double* x);  // the first-order rules: empty and full places cut the flows
   [[nodiscard]] bool thresholdsHold(std::uint32_t flow, const double* x) const;
+  [[nodiscard]] bool moves(std::uint32_t flow, std::uint32_t place, bool draws) const;
   // the level place p reaches next from amount x going up or down (kNoBound: none)
   [[nodiscard]] double nextLevel(std::uint32_t p, double x, bool up) const;
 
@@ -176,7 +177,12 @@ class FluidSolver {
   std::vector<double> full_;          // per place: the level it counts as full at (capacity - reserved)
   std::vector<std::vector<std::pair<std::uint32_t, double>>> feeds_, draws_;  // per place: (flow, weight) in, out
   std::vector<std::uint32_t> bounded_;  // places at 0 or full, where the rules may cut flows
-  std::vector<std::uint32_t> held_;     // those of them the rules hold there
+  std::vector<std::uint32_t> held_;     // those of them (and of sliding_) the rules hold there
+  struct Sliding {  // an on flow at a threshold of its own that it moves its place towards
+    std::uint32_t flow, place;
+    bool floor;     // a test it draws down to (else an inhibitor it fills up to)
+  };
+  std::vector<Sliding> sliding_;        // grouped by (place, floor): see mode()
   std::vector<double> dx_;
   std::span<const std::uint8_t> on_;
   std::unique_ptr<Cvode> cvode_;
