@@ -262,6 +262,69 @@ pages:
   EXPECT_NEAR(sim->kernel().flowRate(*sim->net().findTransition("main/overflow")), 1.0, 1e-12);
 }
 
+TEST(HybridRun, PageTypesCarryContinuousPlacesAndTheirFlowsPerInstance) {
+  // each cell's tank drains at 10 % a second of what it holds; the main page tests one
+  // cell's tank through its port and fills the other's with a jump
+  auto sim = fromText(R"(gdpn: 1
+settings: {dt: 0.01}
+params: {k: 0.1}
+pages:
+  main:
+    places:
+      go: {tokens: 1}
+    transitions:
+      top_up: {duration: 0.01}
+      alarm: {duration: 0.01}
+    instances:
+      a: cell
+      b: cell
+    arcs:
+      - {from: go, to: top_up}
+      - {from: top_up, to: b/level, weight: 4.5}
+      - {from: a/level, to: alarm, kind: inhibitor, weight: 5}
+page_types:
+  cell:
+    references: [level]
+    places:
+      level: {continuous: {amount: 10, capacity: 20, unit: L}}
+    transitions:
+      drain: {continuous: {rate: k * level}}
+    arcs:
+      - {from: level, to: drain}
+)");
+  ASSERT_TRUE(sim);
+  std::ostringstream trace;
+  sim->traceTo(trace);
+  sim->run({.until = 1.0, .steps = {}});
+  // a: 10 e^(-0.1 t); b: the same, and 4.5 L put at 0.01 s (the first completion)
+  EXPECT_NEAR(amountOf(*sim, "main/a/level"), 10.0 * std::exp(-0.1), 1e-7);
+  EXPECT_NEAR(amountOf(*sim, "main/b/level"), (10.0 * std::exp(-0.1 * 0.01) + 4.5) * std::exp(-0.1 * 0.99), 1e-7);
+  EXPECT_TRUE(events(trace.str(), "cross").empty()) << trace.str();
+  sim->run({.until = 8.0, .steps = {}});
+  // a crosses 5 L at ln 2 / 0.1 s
+  const auto crossings = events(trace.str(), "cross");
+  ASSERT_FALSE(crossings.empty());
+  EXPECT_EQ(crossings[0]["place"], "main/a/level");
+  EXPECT_NEAR(crossings[0]["t"].get<double>(), std::log(2.0) / 0.1, 1e-6);
+}
+
+TEST(HybridRun, AContinuousPlaceCarriesNoColours) {
+  core::Diagnostics diags;
+  auto m = parseModel(R"(gdpn: 1
+colours:
+  P: {enum: [p1, p2]}
+pages:
+  main:
+    places:
+      tank: {continuous: true, colour: P}
+)", "colour.gdpn.yaml", diags);
+  ASSERT_TRUE(m) << diags.str();
+  EXPECT_EQ(Simulation::create(*m, diags), nullptr);
+  EXPECT_NE(diags.str().find("colour.gdpn.yaml:7:14: error: continuous place 'tank' holds an amount, not tokens"),
+            std::string::npos)
+      << diags.str();
+}
+
 TEST(HybridRun, TheSameRunTwiceGivesTheSameTraceByteForByte) {
   std::string traces[2];
   for (auto& t : traces) {
