@@ -1102,6 +1102,9 @@ std::string Kernel::fireIn(TransitionId t, const Binding* chosen) {
   const Net& net = *net_;
   const std::string name = "'" + net.transitionName(t) + "'";
   TransitionState& tr = tr_[t];
+  if (fluid_ && fluid_->continuous(t)) {
+    return name + " is continuous: it flows while its arcs allow it, and is never fired";
+  }
   if (occurring(t) && !tr.multi) return name + " is occurring";
   if (tr.multi && servers(t) != 0 && occurrences(t) == servers(t)) {
     return name + " is occurring on all its " + std::to_string(servers(t)) + " servers";

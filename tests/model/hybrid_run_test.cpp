@@ -70,6 +70,9 @@ TEST(HybridRun, AConstantFillCrossesItsThresholdAtTheExactTime) {
   // the pump ran until then: 0.3 L/s for 3.4 s, and not a drop after
   EXPECT_NEAR(amountOf(*sim, "main/tank"), 0.3 * 3.4, 1e-12);
   EXPECT_FALSE(sim->kernel().flowing());
+  // a continuous transition flows; nobody fires it
+  EXPECT_EQ(sim->kernel().fire(*sim->net().findTransition("main/pump")),
+            "'main/pump' is continuous: it flows while its arcs allow it, and is never fired");
 }
 
 TEST(HybridRun, AnExponentialDrainFollowsTheAnalyticCurve) {
