@@ -37,7 +37,9 @@ void addArc(PageSpec& page, const std::string& from, const std::string& to, ArcK
 /// Each flow runs while discrete place `on<i>` is marked; `stop<i>` (immediate) takes the mark
 /// when its tank is below 2 L (an inhibitor arc: a level switch), `go<i>` gives it back at
 /// 8 L (a test arc). The rates differ, so tanks fill and empty and cross their switches.
-NetSpec tankRing(std::int64_t n, bool proportional) {
+/// Without `switched`, no stop and go: every flow runs, and nothing is crossed once the
+/// amounts settle.
+NetSpec tankRing(std::int64_t n, bool proportional, bool switched) {
   NetSpec spec;
   auto& page = spec.pages.emplace_back();
   page.name = "main";
@@ -61,6 +63,7 @@ NetSpec tankRing(std::int64_t n, bool proportional) {
     // that neighbours differ
     const auto j = static_cast<double>((i * 7) % 10);
     flow.flow->rate.text = proportional ? std::to_string(0.05 * (1.0 + j)) + " * " + x : std::to_string(0.5 + 0.1 * j);
+    if (!switched) continue;
     auto& stop = page.transitions.emplace_back();
     stop.name = "stop" + std::to_string(i);
     stop.duration = Duration{Duration::Law::Immediate, 0.0};
@@ -74,6 +77,7 @@ NetSpec tankRing(std::int64_t n, bool proportional) {
     addArc(page, "on" + s, "f" + s, ArcKind::Test);
     addArc(page, x, "f" + s);
     addArc(page, "f" + s, "x" + std::to_string((i + 1) % n));
+    if (!switched) continue;
     addArc(page, "on" + s, "stop" + s);
     addArc(page, x, "stop" + s, ArcKind::Inhibitor, 2.0);
     addArc(page, "stop" + s, "off" + s);
@@ -86,9 +90,9 @@ NetSpec tankRing(std::int64_t n, bool proportional) {
 
 /// Steps the ring for the benchmark's iterations at dt = 0.01 s after 1,000 steps; reports
 /// steps as items per second, and the crossings and discrete firings per step.
-void stepRing(benchmark::State& state, bool proportional) {
+void stepRing(benchmark::State& state, bool proportional, bool switched = true) {
   gdpn::core::Diagnostics diags;
-  const auto net = compile(tankRing(state.range(0), proportional), diags);
+  const auto net = compile(tankRing(state.range(0), proportional, switched), diags);
   if (!net) {
     state.SkipWithError(diags.str().c_str());
     return;
@@ -115,6 +119,10 @@ BENCHMARK(BM_FluidRingConstant)->Arg(1000)->Unit(benchmark::kMicrosecond);
 // rates that read amounts (c * x): CVODE over the 1,000 amounts
 void BM_FluidRingProportional(benchmark::State& state) { stepRing(state, true); }
 BENCHMARK(BM_FluidRingProportional)->Arg(1000)->Unit(benchmark::kMicrosecond);
+
+// the same without the switches: no crossing once settled, so what a CVODE step costs alone
+void BM_FluidRingProportionalUnswitched(benchmark::State& state) { stepRing(state, true, false); }
+BENCHMARK(BM_FluidRingProportionalUnswitched)->Arg(1000)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 
