@@ -60,7 +60,7 @@ TEST(Tank, TheSwitchesStartAndStopThePumpInTheStepOfEachCrossing) {
     if (s["transition"] == "main/start_pump") pump_starts.push_back(s["step"].get<std::int64_t>());
     if (s["transition"] == "main/stop_pump") pump_stops.push_back(s["step"].get<std::int64_t>());
   }
-  // the level saws: four teeth in 300 s (the pump runs about 25 s of each 77 s round)
+  // the level saws: four teeth in 300 s (the pump runs about 23 s of each 77 s round)
   EXPECT_EQ(low_falls.size(), 4u);
   EXPECT_EQ(high_rises.size(), 4u);
   // each reaction starts at the first step boundary after its crossing: in the same step
