@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <tuple>
 
 #include <cvode/cvode.h>
@@ -46,6 +47,13 @@ struct FluidSolver::Cvode {
   std::vector<std::pair<std::uint32_t, double>> roots;  // per root function: (place, level)
   std::vector<int> found;
   bool initialised = false;
+  // where the last run stopped at its stop time (NaN: at a root, or it failed), and what its
+  // right-hand side read then (the flows running, the reads, the room): while none of it
+  // changes, the next step goes on from there without a restart, keeping CVODE's order and
+  // step size
+  double end = std::numeric_limits<double>::quiet_NaN();
+  std::vector<std::uint8_t> active;
+  std::vector<double> inputs, full;
 
   explicit Cvode(std::size_t n) {
     GDPN_ASSERT(SUNContext_Create(nullptr, &ctx) == 0, "CVODE: no context");
@@ -332,27 +340,37 @@ void FluidSolver::advance(std::vector<double>& x, std::span<const std::uint8_t> 
     if (!cvode_) cvode_ = std::make_unique<Cvode>(places);
     Cvode& cv = *cvode_;
     double* y = N_VGetArrayPointer(cv.y);
-    std::copy(x.begin(), x.end(), y);
-    cv.roots.clear();
-    for (std::uint32_t p = 0; p < places; ++p) {
-      for (const double level : fluid_->places[p].levels) {
-        if (level <= fluid_->places[p].capacity) cv.roots.emplace_back(p, level);
+    // going on from where the last run stopped: the same amounts (no jump, no clamp), the
+    // same flows running, reads and room, at the same time (to rounding: t0 is step * dt)
+    const bool goes_on = cv.initialised && std::abs(cv.end - (t0 + t)) <= 1e-9 * std::max(1.0, std::abs(t0)) &&
+                         std::equal(x.begin(), x.end(), y) && cv.active == active_ &&
+                         std::ranges::equal(cv.inputs, inputs) && cv.full == full_;
+    cv.end = std::numeric_limits<double>::quiet_NaN();
+    // otherwise a fresh start from x (where it goes on, CVODE's history stays valid: its
+    // right-hand side is the same function, and so are the root functions)
+    if (!goes_on) {
+      std::copy(x.begin(), x.end(), y);
+      cv.roots.clear();
+      for (std::uint32_t p = 0; p < places; ++p) {
+        for (const double level : fluid_->places[p].levels) {
+          if (level <= fluid_->places[p].capacity) cv.roots.emplace_back(p, level);
+        }
+        if (full_[p] < fluid_->places[p].capacity) cv.roots.emplace_back(p, full_[p]);
       }
-      if (full_[p] < fluid_->places[p].capacity) cv.roots.emplace_back(p, full_[p]);
+      if (!cv.initialised) {
+        CVodeInit(cv.mem, &Cvode::rhs, t0 + t, cv.y);
+        CVodeSetUserData(cv.mem, this);
+        CVodeSetNonlinearSolver(cv.mem, cv.nls);
+        CVodeSStolerances(cv.mem, kRelTol, kAbsTol);
+        CVodeSetMaxNumSteps(cv.mem, 1000000);
+        CVodeSetErrHandlerFn(cv.mem, &Cvode::quiet, nullptr);
+        CVodeSetNoInactiveRootWarn(cv.mem);
+        cv.initialised = true;
+      } else {
+        CVodeReInit(cv.mem, t0 + t, cv.y);
+      }
+      CVodeRootInit(cv.mem, static_cast<int>(cv.roots.size()), &Cvode::root);
     }
-    if (!cv.initialised) {
-      CVodeInit(cv.mem, &Cvode::rhs, t0 + t, cv.y);
-      CVodeSetUserData(cv.mem, this);
-      CVodeSetNonlinearSolver(cv.mem, cv.nls);
-      CVodeSStolerances(cv.mem, kRelTol, kAbsTol);
-      CVodeSetMaxNumSteps(cv.mem, 1000000);
-      CVodeSetErrHandlerFn(cv.mem, &Cvode::quiet, nullptr);
-      CVodeSetNoInactiveRootWarn(cv.mem);
-      cv.initialised = true;
-    } else {
-      CVodeReInit(cv.mem, t0 + t, cv.y);
-    }
-    CVodeRootInit(cv.mem, static_cast<int>(cv.roots.size()), &Cvode::root);
     CVodeSetStopTime(cv.mem, t0 + h);
     sunrealtype reached = t0 + t;
     const int flag = CVode(cv.mem, t0 + h, cv.y, &reached, CV_NORMAL);
@@ -372,6 +390,12 @@ void FluidSolver::advance(std::vector<double>& x, std::span<const std::uint8_t> 
       for (std::size_t i = 0; i < cv.roots.size(); ++i) {
         if (cv.found[i] != 0) crossed(cv.roots[i].first, cv.roots[i].second, at, cv.found[i] > 0);
       }
+    }
+    if (flag != CV_ROOT_RETURN) {
+      cv.end = t0 + h;
+      cv.active = active_;
+      cv.inputs.assign(inputs.begin(), inputs.end());
+      cv.full = full_;
     }
     t = flag == CV_ROOT_RETURN ? at : h;
   }

@@ -190,6 +190,28 @@ TEST(Cli, TraceIsJsonLinesAndRepeatable) {
   fs::remove(b);
 }
 
+TEST(CliRun, TheTankRunsToItsFiguresAndTracesTheSameTwice) {
+  // examples/plant/tank (docs/examples.md): four rounds of the pump in 300 s, each started by
+  // the low switch and stopped by the high one; crossings in the trace at their exact times
+  const auto a = temp("gdpn_tank_a.jsonl");
+  const auto b = temp("gdpn_tank_b.jsonl");
+  const auto r = gdpn("run examples/plant/tank/tank.gdpn.yaml --until 300 --trace " + a);
+  ASSERT_EQ(r.code, 0) << r.out;
+  expectFitsAHundredColumns(r.out);
+  EXPECT_NE(r.out.find("examples/plant/tank/tank.gdpn.yaml: 30000 steps of 0.01 s, t = 300.000 s, seed 1\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("  pump starts (low switch): 4\n  pump stops (high switch): 4\n  valve openings:           8\n"),
+            std::string::npos)
+      << r.out;
+  ASSERT_EQ(gdpn("run examples/plant/tank -q --until 300 --trace " + b).code, 0);
+  const std::string ta = gdpn::testing::fileBytes(a);
+  EXPECT_EQ(ta, gdpn::testing::fileBytes(b));
+  EXPECT_NE(ta.find("\"ev\":\"cross\",\"place\":\"main/tank\",\"level\":20,\"rising\":false}"), std::string::npos);
+  fs::remove(a);
+  fs::remove(b);
+}
+
 TEST(Cli, SeedChangesTheRun) {
   const auto a = gdpn("run tests/data/good/stochastic.gdpn.yaml --seed 1");
   const auto b = gdpn("run tests/data/good/stochastic.gdpn.yaml --seed 2");
