@@ -327,7 +327,6 @@ def levels_plot(run):
                         color="#666")
             top = max(top, cap)
         ax.set_ylim(0, top * 1.12 if top > 0 else 1)
-        ax.set_ylabel(p["unit"] or "amount")
         ax.yaxis.set_major_locator(matplotlib.ticker.MaxNLocator(4))
         ax.grid(axis="y", color="#e5e5e5", linewidth=0.6)
     axes[-1, 0].set_xlabel("time (s)")
