@@ -523,7 +523,8 @@ class FireError(ValueError):
            py::arg("starts") = py::none(), py::arg("completes") = py::none(), py::arg("place") = py::none(),
            py::arg("compare") = ">=", py::arg("value") = 0, py::arg("predicate") = py::none(),
            "Stops run() at the end of the step where a transition starts or completes, a place's tokens "
-           "(a continuous place's amount; a float value compares as a real number) compare with `value`, or a predicate holds: a Python expression over the model's globals, or a "
+           "(a continuous place's amount; a float value compares as a real number) compare with `value`, or a "
+           "predicate holds: a Python expression over the model's globals, or a "
            "callable taking no arguments. Or as `gdpn run --break` writes it: 'start:T', 'complete:T', "
            "'P>=3' (or <, <=, ==, !=, >) or 'when:EXPR'. Returns its id.")
       .def("replay", &Model::replay, py::arg("witness"),
@@ -544,8 +545,8 @@ class FireError(ValueError):
       .def_property_readonly("hit", &Model::hit, "the id of the breakpoint that ended the last run, or None")
       .def("marking", &Model::marking, py::arg("place"),
            "Tokens on a place: a count for a plain place, {value: count} for a place of values (each value as "
-           "the inscription language writes it: 'p1', '(1, \"a\")'), else {slot: count, [node names] or {value: count}}; "
-           "a continuous place's amount (a float, in its unit)")
+           "the inscription language writes it: 'p1', '(1, \"a\")'), else {slot: count, [node names] or {value: "
+           "count}}; a continuous place's amount (a float, in its unit)")
       .def("analyze", &Model::analyze, py::arg("query") = py::none(), py::kw_only(),
            py::arg("max_states") = session::kDefaultMaxStates, py::arg("max_memory_mib") = 0.0,
            py::arg("time_limit") = 0.0,

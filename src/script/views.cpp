@@ -1026,7 +1026,9 @@ void registerPlaceView(py::module_& m) {
       .def_property(
           "capacity",
           [](const PlaceView& v) -> py::object {
-            if (!v.r.get().netRef().continuousPlace(v.p)) return capacityOf(SlotView{v.r, false, v.p, net::kDefaultSlot});
+            if (!v.r.get().netRef().continuousPlace(v.p)) {
+              return capacityOf(SlotView{v.r, false, v.p, net::kDefaultSlot});
+            }
             const double c = fluidPlace(v, "capacity").capacity;
             return c == net::kNoBound ? py::none() : py::object(py::float_(c));
           },

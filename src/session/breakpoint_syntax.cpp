@@ -29,7 +29,9 @@ core::Result<Breakpoint> parseBreakpoint(std::string_view text, const core::Sour
   const char* last = number.data() + number.size();
   std::int64_t value = 0;
   const auto [whole_end, whole_ec] = std::from_chars(number.data(), last, value);
-  if (whole_ec == std::errc() && whole_end == last) return Breakpoint::marking(std::string(text.substr(0, op)), *how, value);
+  if (whole_ec == std::errc() && whole_end == last) {
+    return Breakpoint::marking(std::string(text.substr(0, op)), *how, value);
+  }
   // a real number is written with a fraction or an exponent (digits alone stay whole: a count
   // out of range is a mistake, not a real number)
   if (number.find_first_of(".eE") == std::string_view::npos) {
