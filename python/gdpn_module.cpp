@@ -180,7 +180,7 @@ class Model {
 
   int addBreakpoint(const std::optional<std::string>& written, std::optional<std::string> starts,
                     std::optional<std::string> completes, std::optional<std::string> place, const std::string& compare,
-                    std::int64_t value, const py::object& predicate) {
+                    const py::object& value, const py::object& predicate) {
     const int given = static_cast<int>(written.has_value()) + static_cast<int>(starts.has_value()) +
                       static_cast<int>(completes.has_value()) + static_cast<int>(place.has_value()) +
                       static_cast<int>(!predicate.is_none());
@@ -214,7 +214,12 @@ class Model {
       const auto how = session::parseCompare(compare);
       if (!how) throw py::value_error("compare is one of <, <=, ==, !=, >=, >; got '" + compare + "'");
       bp.compare = *how;
-      bp.value = value;
+      // a whole number as tokens (or an amount), a float as a real one (a continuous place's amount)
+      if (py::isinstance<py::bool_>(value) || !(py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value))) {
+        throw py::type_error("value is a number, got " + py::repr(value).cast<std::string>());
+      }
+      if (py::isinstance<py::int_>(value)) bp.value = value.cast<std::int64_t>();
+      else bp.real = value.cast<double>();
     }
     const auto id = session_->addBreakpoint(bp, why);
     if (!id) throw py::value_error(why);
@@ -336,6 +341,7 @@ class Model {
     const auto& net = sim_->net();
     const auto p = net.findPlace(place);
     if (!p) throw py::key_error("no place '" + place + "'");
+    if (net.continuousPlace(*p)) return py::float_(sim_->kernel().amount(*p));  // its amount, in its unit
     const auto& pl = net.places()[*p];
     py::dict slots;
     for (net::PlaceSlotId ps{pl.slots_begin}; ps < pl.slots_end; ++ps) {
@@ -517,7 +523,8 @@ class FireError(ValueError):
            py::arg("starts") = py::none(), py::arg("completes") = py::none(), py::arg("place") = py::none(),
            py::arg("compare") = ">=", py::arg("value") = 0, py::arg("predicate") = py::none(),
            "Stops run() at the end of the step where a transition starts or completes, a place's tokens "
-           "compare with `value`, or a predicate holds: a Python expression over the model's globals, or a "
+           "(a continuous place's amount; a float value compares as a real number) compare with `value`, or a "
+           "predicate holds: a Python expression over the model's globals, or a "
            "callable taking no arguments. Or as `gdpn run --break` writes it: 'start:T', 'complete:T', "
            "'P>=3' (or <, <=, ==, !=, >) or 'when:EXPR'. Returns its id.")
       .def("replay", &Model::replay, py::arg("witness"),
@@ -538,7 +545,8 @@ class FireError(ValueError):
       .def_property_readonly("hit", &Model::hit, "the id of the breakpoint that ended the last run, or None")
       .def("marking", &Model::marking, py::arg("place"),
            "Tokens on a place: a count for a plain place, {value: count} for a place of values (each value as "
-           "the inscription language writes it: 'p1', '(1, \"a\")'), else {slot: count, [node names] or {value: count}}")
+           "the inscription language writes it: 'p1', '(1, \"a\")'), else {slot: count, [node names] or {value: "
+           "count}}; a continuous place's amount (a float, in its unit)")
       .def("analyze", &Model::analyze, py::arg("query") = py::none(), py::kw_only(),
            py::arg("max_states") = session::kDefaultMaxStates, py::arg("max_memory_mib") = 0.0,
            py::arg("time_limit") = 0.0,

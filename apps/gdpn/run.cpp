@@ -153,7 +153,7 @@ int run(const RunArgs& a) {
     if (!a.quiet) serving.finish(sim->simulation(), std::cout);
     if (!a.html.empty()) {
       const auto page = gdpn::experiments::htmlReport(report, sim->simulation().net(), *sim->timeline(),
-                                                      sim->simulation().signals(), why);
+                                                      sim->simulation().signals(), why, sim->simulation().levels());
       if (!page || !gdpn::core::writeOutput(a.html, *page, why)) {
         std::cerr << a.html << ": error: " << (page ? "" : "the page could not be drawn: ") << why
                   << (why.ends_with('\n') ? "" : "\n");
@@ -206,7 +206,8 @@ Subcommand addRun(CLI::App& app) {
                       "input events for keyboard and mouse sensors: a YAML list of {t, key | click | viewpoint}");
   run_cmd->add_option("--break", args->breaks,
                       "stop the run at the end of the step where start:TRANSITION or complete:TRANSITION "
-                      "happens, PLACE>=N holds (or <, <=, ==, !=, >), or when:PYTHON is true (repeatable)");
+                      "happens, PLACE>=N holds (or <, <=, ==, !=, >; a continuous place's amount: main/tank>=2.5), or "
+                      "when:PYTHON is true (repeatable)");
   run_cmd->add_option("--replay", args->replay,
                       "play the firing sequence of a witness (gdpn analyze --witness): only its transitions "
                       "start, in its order, each as soon as it can");

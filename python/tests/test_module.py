@@ -361,3 +361,22 @@ def test_a_coloured_model_shows_its_values_and_is_analysed_unfolded(source):
     assert [a["answer"] for a in answers] == ["true", 3, "true"]
     assert answers[0]["formula"] == "AG main/operators + main/loaded <= 2"
     assert model.analyze()["states"] == 270
+
+
+def test_a_continuous_place_reads_as_its_amount_and_breaks_on_it(source):
+    # the pump fills at 0.3 L/s, dt 0.1: 0.5 L is first reached at the end of step 17 (0.51 L)
+    model = gdpn.load(str(source / "tests/data/hybrid/fill.gdpn.yaml"))
+    assert model.marking("main/tank") == 0.0
+    assert model.add_breakpoint(place="main/tank", compare=">=", value=0.5) == 1
+    report = model.run(until=5)
+    assert report["steps"] == 17
+    assert model.marking("main/tank") == pytest.approx(0.51, abs=1e-12)
+    with pytest.raises(TypeError):
+        model.add_breakpoint(place="main/tank", value="lots")
+    model.reset()
+    model.remove_breakpoint(1)
+    report = model.run(until=5)
+    assert report["amounts"] == [{"name": "main/tank", "unit": "L", "final": pytest.approx(1.02, abs=1e-12),
+                                  "lowest": 0.0, "highest": pytest.approx(1.02, abs=1e-12),
+                                  "mean": pytest.approx((0.3 * 3.4 * 3.4 / 2 + 1.02 * 0.1) / 3.5, abs=1e-12)}]
+    assert report["flows"][0]["moved"] == pytest.approx(1.02, abs=1e-12)

@@ -8,7 +8,7 @@
 namespace gdpn::experiments {
 
 std::string runJson(const model::Report& report, const net::Net& net, const net::Timeline& timeline,
-                    const model::SignalTable* signals) {
+                    const model::SignalTable* signals, const model::SignalTable* levels) {
   using nlohmann::ordered_json;
   auto run = ordered_json::parse(model::reportJson(report));
   auto& params = run["param_table"] = ordered_json::array();
@@ -46,13 +46,31 @@ std::string runJson(const model::Report& report, const net::Net& net, const net:
     }
     run["signals"] = std::move(sig);
   }
+  // the continuous places' levels: a column per place, in place order, with its unit and capacity
+  if (const net::Fluid* fluid = net.fluid(); levels != nullptr && fluid != nullptr &&
+                                             levels->columns.size() == fluid->places.size()) {
+    ordered_json lv;
+    lv["time"] = levels->time;
+    auto& series = lv["places"] = ordered_json::array();
+    for (std::size_t c = 0; c < fluid->places.size(); ++c) {
+      const auto& fp = fluid->places[c];
+      auto column = ordered_json::array();
+      for (const auto& row : levels->rows) column.push_back(row[c] ? ordered_json(*row[c]) : ordered_json(nullptr));
+      series.push_back({{"name", net.placeName(fp.place)},
+                        {"unit", fp.unit},
+                        {"capacity", fp.capacity == net::kNoBound ? ordered_json(nullptr) : ordered_json(fp.capacity)},
+                        {"values", std::move(column)}});
+    }
+    run["levels"] = std::move(lv);
+  }
   return run.dump();
 }
 
 std::optional<std::string> htmlReport(const model::Report& report, const net::Net& net,
                                       const net::Timeline& timeline, const model::SignalTable* signals,
-                                      std::string& why) {
-  return script::callPython(kReportPagePy, "report_page.py", "page", runJson(report, net, timeline, signals), why);
+                                      std::string& why, const model::SignalTable* levels) {
+  return script::callPython(kReportPagePy, "report_page.py", "page", runJson(report, net, timeline, signals, levels),
+                            why);
 }
 
 }  // namespace gdpn::experiments

@@ -22,6 +22,7 @@ struct IoMap::Bound {
   std::size_t field = 0;             // written field: its index
   scene::FieldKind kind = scene::FieldKind::Float;
   net::PlaceSlotId slot{0};         // written place: its control slot
+  bool amount = false;               // written place: a continuous one, its amount set (value / scale)
   bool coil = false;                 // a place's coil: the state last written
   std::size_t part = 0;              // a part's I/O: the part (PartRun's index)
   std::string writer;                // the client that wrote it last
@@ -104,7 +105,16 @@ std::unique_ptr<IoMap> IoMap::create(Simulation& sim, const IoSpec& spec, core::
     }
     if (e.source == IoEntry::Source::Place) {
       probe = placeProbe(sim, e.target, why);
-      if (probe && (e.table == IoTable::Coils || e.table == IoTable::HoldingRegisters)) {
+      if (probe && probe->what == Probe::What::Amount &&
+          (e.table == IoTable::Coils || e.table == IoTable::HoldingRegisters)) {
+        // written: a continuous place's amount, by a register only
+        if (e.table == IoTable::Coils) {
+          fail("place '" + e.target + "' is continuous: a coil puts a token, and it holds an amount " +
+               "(map it to a holding register, which sets the amount to value / scale)");
+          continue;
+        }
+        b.amount = true;
+      } else if (probe && (e.table == IoTable::Coils || e.table == IoTable::HoldingRegisters)) {
         // written: the place's one control slot
         const auto& place = sim.net().places()[probe->place];
         const auto& slots = sim.net().placeSlots();
@@ -306,6 +316,11 @@ IoError IoMap::writeWords(std::uint16_t first, const std::vector<std::uint16_t>&
     if (!std::isfinite(v)) return IoError::IllegalValue;
     if (b->spec.source == IoEntry::Source::Part) {
       if (!sim_.parts()->refusal(b->part, b->spec.io, v).empty()) return IoError::IllegalValue;
+    } else if (b->spec.source == IoEntry::Source::Place && b->amount) {
+      // what the kernel would refuse: below 0, more than the capacity less the room promised
+      const net::Fluid& fluid = *sim_.net().fluid();
+      const double capacity = fluid.places[static_cast<std::size_t>(fluid.of_place[b->probe.place])].capacity;
+      if (v < 0 || v + sim_.kernel().amountReserved(b->probe.place) > capacity) return IoError::IllegalValue;
     } else if (b->spec.source == IoEntry::Source::Place) {
       if (v < 0 || std::floor(v) != v || v > 9.0e15) return IoError::IllegalValue;  // whole, 0 to 2^53
     } else if (const scene::Node* node = sim_.plant()->resolve(b->node)) {
@@ -323,6 +338,8 @@ IoError IoMap::writeWords(std::uint16_t first, const std::vector<std::uint16_t>&
     if (b.spec.source == IoEntry::Source::Part) {
       std::string why;
       if (!sim_.parts()->write(b.part, b.spec.io, w.value, why)) return IoError::IllegalValue;
+    } else if (b.spec.source == IoEntry::Source::Place && b.amount) {
+      if (!sim_.kernel().setAmount(b.probe.place, w.value).empty()) return IoError::IllegalValue;
     } else if (b.spec.source == IoEntry::Source::Place) {
       if (!sim_.kernel().setMarking(b.slot, static_cast<std::int64_t>(w.value)).empty()) return IoError::IllegalValue;
     } else if (scene::Node* node = sim_.plant()->resolve(b.node)) {

@@ -72,7 +72,7 @@ std::optional<Probe> placeProbe(const Simulation& sim, const std::string& place,
     return std::nullopt;
   }
   Probe p;
-  p.what = Probe::What::Tokens;
+  p.what = sim.net().continuousPlace(*id) ? Probe::What::Amount : Probe::What::Tokens;
   p.place = *id;
   return p;
 }
@@ -270,6 +270,10 @@ bool readProbe(const Simulation& sim, const Probe& p, double* out) {
     *out = static_cast<double>(tokens);
     return true;
   }
+  if (p.what == Probe::What::Amount) {
+    *out = sim.kernel().amount(p.place);
+    return true;
+  }
   if (p.what == Probe::What::Count) {
     const net::Multiset& values = sim.kernel().values(p.slot);
     const auto it = values.find(p.value);
@@ -289,7 +293,8 @@ bool readProbe(const Simulation& sim, const Probe& p, double* out) {
   };
   switch (p.what) {
     case Probe::What::Tokens:
-    case Probe::What::Count: break;
+    case Probe::What::Count:
+    case Probe::What::Amount: break;
     case Probe::What::Position: vector(node->framePose().position); break;
     case Probe::What::Velocity: vector(sim.physics()->velocity(*node)); break;
     case Probe::What::JointAngle:

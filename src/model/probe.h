@@ -22,6 +22,7 @@ struct Probe {
   enum class What : std::uint8_t {
     Tokens,      ///< a place's tokens, all its slots
     Count,       ///< how many tokens of one value a place's value slot holds
+    Amount,      ///< a continuous place's amount, in its unit
     Position,    ///< a node's world position, m
     Velocity,    ///< a body's linear velocity, m/s
     JointAngle,  ///< a joint's position on axis 1 (the model's angle unit, or m for a slider)
@@ -34,7 +35,7 @@ struct Probe {
     Field,       ///< one of the node's number or bool fields
   };
   What what = What::Tokens;
-  net::PlaceId place{0};         ///< Tokens, Count: the place
+  net::PlaceId place{0};         ///< Tokens, Count, Amount: the place
   net::PlaceSlotId slot{0};       ///< Count: its value slot
   net::Value value;               ///< Count: the value counted
   scene::NodeHandle node = 0;     ///< the node
@@ -52,7 +53,8 @@ struct Probe {
   }
 };
 
-/// The tokens on the place named `place` (qualified); nullopt and `why` when there is none.
+/// The tokens on the place named `place` (qualified), or its amount for a continuous place;
+/// nullopt and `why` when there is none.
 std::optional<Probe> placeProbe(const Simulation& sim, const std::string& place, std::string& why);
 
 /// Turns place probe `p` (Tokens) into one that counts the tokens of a single value (Count):

@@ -94,6 +94,7 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
     // the occurrences at once, averaged; and that as a share of its servers (none when unlimited)
     f.servers = net.transitions()[t].servers;
     f.mean_busy = steps > 0 ? static_cast<double>(s.busy) / steps : 0.0;
+    f.continuous = net.continuous(t);
     f.utilisation = f.servers == net::kUnlimitedServers ? std::numeric_limits<double>::quiet_NaN()
                                                         : f.mean_busy / static_cast<double>(f.servers);
     r.transitions.push_back(std::move(f));
@@ -106,6 +107,7 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
     f.max_tokens = s.max;
     f.final_tokens = s.tokens;
     f.throughput = outcome.time > 0 ? static_cast<double>(s.deposited) / outcome.time : 0.0;
+    f.continuous = net.continuousPlace(p);
     const auto& place = net.places()[p];
     f.sensors_only = place.slots_begin < place.slots_end;
     for (net::PlaceSlotId ps{place.slots_begin}; ps < place.slots_end; ++ps) {
@@ -118,6 +120,35 @@ Report makeReport(Simulation& sim, const RunOutcome& outcome, double cycle_secon
                         c->colours.text(*c->setOf(ps), sim.kernel().values(ps));
     }
     r.places.push_back(std::move(f));
+  }
+  // the continuous part: the amounts' extremes and mean, the flows' amounts and time flowing
+  if (const net::Fluid* fluid = net.fluid()) {
+    const net::FluidTally& tally = *sim.kernel().fluidTally();
+    r.amounts.reserve(fluid->places.size());
+    for (std::size_t k = 0; k < fluid->places.size(); ++k) {
+      const net::FluidPlace& fp = fluid->places[k];
+      AmountFigures f;
+      f.name = net.placeName(fp.place);
+      f.unit = fp.unit;
+      f.final_amount = sim.kernel().amount(fp.place);
+      // a jump after the last step's flows counts too
+      f.lowest = std::min(tally.lowest[k], f.final_amount);
+      f.highest = std::max(tally.highest[k], f.final_amount);
+      f.mean = tally.time > 0 ? tally.area[k] / tally.time : f.final_amount;
+      r.amounts.push_back(std::move(f));
+    }
+    r.flows.reserve(fluid->flows.size());
+    for (std::size_t k = 0; k < fluid->flows.size(); ++k) {
+      const net::Flow& flow = fluid->flows[k];
+      FlowFigures f;
+      f.name = net.transitionName(flow.transition);
+      f.moved = tally.moved[k];
+      f.flowing = tally.time > 0 ? std::min(1.0, tally.flowing[k] / tally.time) : 0.0;
+      if (flow.inputs_begin < flow.outputs_end && fluid->arcs[flow.inputs_begin].weight == 1.0) {
+        f.unit = fluid->places[fluid->arcs[flow.inputs_begin].place].unit;
+      }
+      r.flows.push_back(std::move(f));
+    }
   }
   // the bounds from the invariants, beside the cycles measured: where measured exceeds the
   // bound, the net waited on something else (the plant, a guard, a shared resource)
@@ -286,6 +317,7 @@ void writeReportJson(std::ostream& out, const Report& report) {
                       {"min_cycle", t.min_cycle},
                       {"max_cycle", t.max_cycle},
                       {"utilisation", std::isnan(t.utilisation) ? ordered_json(nullptr) : ordered_json(t.utilisation)}};
+    if (t.continuous) line["continuous"] = true;
     if (t.servers != 1) {
       line["servers"] = t.servers == net::kUnlimitedServers ? ordered_json("unlimited") : ordered_json(t.servers);
       line["mean_busy"] = t.mean_busy;
@@ -301,8 +333,22 @@ void writeReportJson(std::ostream& out, const Report& report) {
                       {"throughput", p.throughput},
                       {"sensors_only", p.sensors_only}};
     if (!p.final_values.empty()) line["final_values"] = p.final_values;
+    if (p.continuous) line["continuous"] = true;
     return line;
   });
+  if (!report.amounts.empty()) {
+    j.array("amounts", report.amounts.size(), [&](std::size_t i) {
+      const auto& a = report.amounts[i];
+      return ordered_json{{"name", a.name},     {"unit", a.unit},       {"final", a.final_amount},
+                          {"lowest", a.lowest}, {"highest", a.highest}, {"mean", a.mean}};
+    });
+  }
+  if (!report.flows.empty()) {
+    j.array("flows", report.flows.size(), [&](std::size_t i) {
+      const auto& f = report.flows[i];
+      return ordered_json{{"name", f.name}, {"moved", f.moved}, {"unit", f.unit}, {"flowing", f.flowing}};
+    });
+  }
   j.array("cycles", report.cycles.size(), [&](std::size_t i) {
     const auto& c = report.cycles[i];
     ordered_json cycle{{"invariant", c.invariant},
@@ -364,6 +410,38 @@ std::string pad(const std::string& s, std::size_t width, bool right) {
   return right ? fill + s : s + fill;
 }
 
+/// An amount as a person reads it: four significant digits at most, no trailing zeros ("0.525",
+/// "12.5", "40"); whole above 10,000.
+std::string amountText(double v) {
+  if (std::abs(v) >= 1e4) return fixed(v, 0);
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  std::string text = buf;
+  return text == "-0" ? "0" : text;
+}
+
+/// The continuous places' and transitions' lines, kMostRows of each at most.
+void printAmounts(std::ostream& out, const Report& report) {
+  const auto more = [&out](std::size_t n, const char* what) {
+    if (n > 0) out << "  ... and " << n << " more " << what << " (--report has them)\n";
+  };
+  if (!report.amounts.empty()) out << "\ncontinuous places:\n";
+  for (std::size_t i = 0; i < std::min(report.amounts.size(), kMostRows); ++i) {
+    const auto& a = report.amounts[i];
+    const std::string u = a.unit.empty() ? "" : " " + a.unit;
+    out << "  " << a.name << ": " << amountText(a.final_amount) << u << " at the end (" << amountText(a.lowest)
+        << " to " << amountText(a.highest) << u << ", mean " << amountText(a.mean) << u << ")\n";
+  }
+  more(report.amounts.size() - std::min(report.amounts.size(), kMostRows), "continuous places");
+  if (!report.flows.empty()) out << "\ncontinuous transitions:\n";
+  for (std::size_t i = 0; i < std::min(report.flows.size(), kMostRows); ++i) {
+    const auto& f = report.flows[i];
+    out << "  " << f.name << ": moved " << amountText(f.moved) << (f.unit.empty() ? "" : " " + f.unit) << ", flowing "
+        << fixed(100.0 * f.flowing, 1) << " % of the time\n";
+  }
+  more(report.flows.size() - std::min(report.flows.size(), kMostRows), "continuous transitions");
+}
+
 }  // namespace
 
 void printSummary(std::ostream& out, const Report& report) {
@@ -400,14 +478,20 @@ void printSummary(std::ostream& out, const Report& report) {
   out << "\n";
 
   // places that only read sensors and never held a token say nothing here (--report has them)
-  auto listed = [](const PlaceFigures& p) { return !p.sensors_only || p.max_tokens > 0; };
+  // continuous places and transitions have lines of their own (below the places)
+  auto listed = [](const PlaceFigures& p) { return !p.continuous && (!p.sensors_only || p.max_tokens > 0); };
+  std::vector<const TransitionFigures*> shown;
+  for (const auto& t : report.transitions) {
+    if (!t.continuous) shown.push_back(&t);
+  }
   // each table shows its first kMostRows lines and says how many more the JSON report has (a
   // model of 100,000 instances would print 700,000 lines)
-  const std::size_t transitions = std::min(report.transitions.size(), kMostRows);
+  const std::size_t transitions = std::min(shown.size(), kMostRows);
   std::vector<const PlaceFigures*> places;
   std::size_t w = 10, unlisted = 0, more_places = 0;
-  for (std::size_t i = 0; i < transitions; ++i) w = std::max(w, report.transitions[i].name.size());
+  for (std::size_t i = 0; i < transitions; ++i) w = std::max(w, shown[i]->name.size());
   for (const auto& p : report.places) {
+    if (p.continuous) continue;
     if (!listed(p)) {
       ++unlisted;
     } else if (places.size() == kMostRows) {
@@ -430,7 +514,7 @@ void printSummary(std::ostream& out, const Report& report) {
   if (servers) out << pad("at once", 9, true) << pad("servers", 9, true);
   out << "\n";
   for (std::size_t i = 0; i < transitions; ++i) {
-    const auto& t = report.transitions[i];
+    const auto& t = *shown[i];
     const bool cyc = t.cycles > 0;
     out << pad(t.name, w, false) << pad(std::to_string(t.occurrences), 12, true)
         << pad(cyc ? fixed(t.mean_cycle, 3) : "-", 16, true) << pad(cyc ? fixed(t.max_cycle, 3) : "-", 15, true)
@@ -441,7 +525,7 @@ void printSummary(std::ostream& out, const Report& report) {
     }
     out << "\n";
   }
-  more(report.transitions.size() - transitions, "transition");
+  more(shown.size() - transitions, "transition");
   out << "\n"
       << pad("place", w, false) << pad("mean tokens", 12, true) << pad("max tokens", 16, true)
       << pad("final", 15, true) << pad("thru [1/s]", 13, true) << "\n";
@@ -478,6 +562,7 @@ void printSummary(std::ostream& out, const Report& report) {
     }
     out << line << "\n";
   }
+  printAmounts(out, report);
   if (unlisted > 0) {
     out << "(" << unlisted << (unlisted == 1 ? " place that only reads" : " places that only read")
         << " sensors, never holding a token, not listed; --report has them)\n";

@@ -515,6 +515,23 @@ bool Simulation::recordSignals(const std::vector<SignalSpec>& extra, core::Diagn
 
 const SignalTable* Simulation::signals() const { return signals_ ? &signals_->table() : nullptr; }
 
+void Simulation::recordLevels() {
+  if (!net_->fluid()) return;
+  std::vector<SignalSpec> specs;
+  for (const auto& fp : net_->fluid()->places) {
+    SignalSpec s;
+    s.name = net_->placeName(fp.place);
+    s.kind = SignalSpec::Kind::Place;
+    s.target = s.name;
+    specs.push_back(std::move(s));
+  }
+  core::Diagnostics diags;  // a continuous place's amount is always there to read
+  levels_ = SignalRecorder::create(*this, specs, diags);
+  if (levels_ && started_) levels_->sample();
+}
+
+const SignalTable* Simulation::levels() const { return levels_ ? &levels_->table() : nullptr; }
+
 const sensors::Reading& Simulation::reading(scene::NodeHandle sensor) const {
   static const sensors::Reading none;
   return hub_ ? hub_->reading(sensor) : none;
@@ -767,6 +784,7 @@ void Simulation::start(const std::function<void()>& first) {
   if (first) first();
   firePhase();
   if (signals_) signals_->sample();
+  if (levels_) levels_->sample();
 }
 
 void Simulation::replay(std::vector<net::TransitionId> sequence) {
@@ -832,6 +850,7 @@ void Simulation::step() {
   if (engine_ && engine_->halted() && engine_->halt() != script::Halt::Stop) return;
   firePhase();
   if (signals_) signals_->sample();
+  if (levels_) levels_->sample();
 }
 
 void Simulation::stepPlant() {

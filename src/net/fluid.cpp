@@ -103,6 +103,11 @@ FluidSolver::FluidSolver(const Fluid& fluid) : fluid_(&fluid) {
     for (auto a = flow.inputs_begin; a < flow.outputs_begin; ++a) draws_[fluid.arcs[a].place].push_back({k, fluid.arcs[a].weight});
     for (auto a = flow.outputs_begin; a < flow.outputs_end; ++a) feeds_[fluid.arcs[a].place].push_back({k, fluid.arcs[a].weight});
   }
+  tally_.lowest.assign(places, kNoBound);
+  tally_.highest.assign(places, -kNoBound);
+  tally_.area.assign(places, 0.0);
+  tally_.moved.assign(fluid.flows.size(), 0.0);
+  tally_.flowing.assign(fluid.flows.size(), 0.0);
 }
 
 FluidSolver::~FluidSolver() = default;
@@ -110,7 +115,8 @@ FluidSolver::~FluidSolver() = default;
 FluidSolver::FluidSolver(const FluidSolver& other)
     : fluid_(other.fluid_), values_(other.values_), v_(other.v_), f_(other.f_), active_(other.active_),
       side_(other.side_), side_level_(other.side_level_), full_(other.full_), feeds_(other.feeds_),
-      draws_(other.draws_), bounded_(other.bounded_), held_(other.held_), sliding_(other.sliding_), dx_(other.dx_) {}
+      draws_(other.draws_), bounded_(other.bounded_), held_(other.held_), sliding_(other.sliding_), dx_(other.dx_),
+      tally_(other.tally_) {}
 
 FluidSolver& FluidSolver::operator=(const FluidSolver& other) {
   if (this == &other) return *this;
@@ -128,6 +134,7 @@ FluidSolver& FluidSolver::operator=(const FluidSolver& other) {
   held_ = other.held_;
   sliding_ = other.sliding_;
   dx_ = other.dx_;
+  tally_ = other.tally_;
   cvode_.reset();
   return *this;
 }
@@ -290,6 +297,23 @@ void FluidSolver::rates(const std::vector<double>& x, std::span<const std::uint8
   derivative(x.data(), dx_.data());
 }
 
+void FluidSolver::extremes(const std::vector<double>& x) {
+  for (std::size_t p = 0; p < x.size(); ++p) {
+    tally_.lowest[p] = std::min(tally_.lowest[p], x[p]);
+    tally_.highest[p] = std::max(tally_.highest[p], x[p]);
+  }
+}
+
+void FluidSolver::count(const std::vector<double>& x, double tau) {
+  // amounts move linearly at dx_ from x: the area is exact; flows at f_ move f_ * tau
+  for (std::size_t p = 0; p < x.size(); ++p) tally_.area[p] += (x[p] + 0.5 * dx_[p] * tau) * tau;
+  for (std::size_t k = 0; k < f_.size(); ++k) {
+    if (f_[k] == 0.0) continue;
+    tally_.moved[k] += f_[k] * tau;
+    tally_.flowing[k] += tau;
+  }
+}
+
 bool FluidSolver::flowing() const {
   return std::any_of(f_.begin(), f_.end(), [](double f) { return f != 0.0; });
 }
@@ -302,6 +326,7 @@ void FluidSolver::advance(std::vector<double>& x, std::span<const std::uint8_t> 
   for (std::size_t p = 0; p < places; ++p) full_[p] = fluid_->places[p].capacity - reserved[p];
   dx_.resize(places);
   double t = 0.0;  // from t0
+  extremes(x);  // the amounts the step starts with (after the jumps and sets at its boundary)
   // a crossing at `level` of place p, reached at t0 + at
   auto crossed = [&](std::uint32_t p, double level, double at, bool rising) {
     x[p] = level;
@@ -321,6 +346,7 @@ void FluidSolver::advance(std::vector<double>& x, std::span<const std::uint8_t> 
         const double next = nextLevel(p, x[p], d > 0.0);
         if (std::isfinite(next)) tau = std::min(tau, (next - x[p]) / d);
       }
+      count(x, tau);
       // every place moves by its rate times tau; those whose next level lies at tau land on it
       for (std::uint32_t p = 0; p < places; ++p) {
         const double d = dx_[p];
@@ -334,6 +360,7 @@ void FluidSolver::advance(std::vector<double>& x, std::span<const std::uint8_t> 
         }
       }
       t += tau;
+      extremes(x);
       continue;
     }
     // a rate reads an amount: CVODE from t, stopping at the first level any place reaches
@@ -372,6 +399,8 @@ void FluidSolver::advance(std::vector<double>& x, std::span<const std::uint8_t> 
       CVodeRootInit(cv.mem, static_cast<int>(cv.roots.size()), &Cvode::root);
     }
     CVodeSetStopTime(cv.mem, t0 + h);
+    f_start_ = f_;
+    x_start_ = x;
     sunrealtype reached = t0 + t;
     const int flag = CVode(cv.mem, t0 + h, cv.y, &reached, CV_NORMAL);
     if (flag < 0) {
@@ -391,6 +420,17 @@ void FluidSolver::advance(std::vector<double>& x, std::span<const std::uint8_t> 
         if (cv.found[i] != 0) crossed(cv.roots[i].first, cv.roots[i].second, at, cv.found[i] > 0);
       }
     }
+    // the tally by the trapezoid rule over the segment: amounts, and the rates at its end
+    const double len = (flag == CV_ROOT_RETURN ? at : h) - t;
+    mode(x.data());
+    derivative(x.data(), dx_.data());
+    for (std::uint32_t p = 0; p < places; ++p) tally_.area[p] += 0.5 * (x_start_[p] + x[p]) * len;
+    for (std::size_t k = 0; k < f_.size(); ++k) {
+      if (f_start_[k] == 0.0 && f_[k] == 0.0) continue;
+      tally_.moved[k] += 0.5 * (f_start_[k] + f_[k]) * len;
+      tally_.flowing[k] += len;
+    }
+    extremes(x);
     if (flag != CV_ROOT_RETURN) {
       cv.end = t0 + h;
       cv.active = active_;
@@ -399,6 +439,7 @@ void FluidSolver::advance(std::vector<double>& x, std::span<const std::uint8_t> 
     }
     t = flag == CV_ROOT_RETURN ? at : h;
   }
+  tally_.time += h;
   // the rates as they stand at the end of the step
   mode(x.data());
   derivative(x.data(), dx_.data());

@@ -336,6 +336,30 @@ void setCapacity(const SlotView& s, const py::object& value) {
   }
 }
 
+/// The continuous place `v` is, in Fluid::places; AttributeError naming `what` for a place of tokens.
+const net::FluidPlace& fluidPlace(const PlaceView& v, const char* what) {
+  const net::Net& net = v.r.get().netRef();
+  if (!net.continuousPlace(v.p)) {
+    throw py::attribute_error("'" + net.placeName(v.p) + "' holds tokens, not an amount: it has no " + what +
+                              " (a continuous place has; count tokens with len(place.a0))");
+  }
+  return net.fluid()->places[static_cast<std::size_t>(net.fluid()->of_place[v.p])];
+}
+
+/// Sets a continuous place's amount (Kernel::setAmount); TypeError for no number, ValueError
+/// with the kernel's words when it refuses.
+void setAmount(const PlaceView& v, const py::object& value) {
+  const net::Net& net = v.r.get().netRef();
+  (void)fluidPlace(v, "amount");
+  if (py::isinstance<py::bool_>(value) || !(py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value))) {
+    throw py::type_error("amount of " + net.placeName(v.p) + " expects a number, got " +
+                         py::str(py::type::of(value).attr("__name__")).cast<std::string>() + " " +
+                         py::repr(value).cast<std::string>());
+  }
+  const std::string why = v.r.get().kernelRef().setAmount(v.p, value.cast<double>());
+  if (!why.empty()) throw py::value_error("amount of " + net.placeName(v.p) + ": " + why);
+}
+
 bool isNodeSlot(const SlotView& s) {
   const auto& net = s.r.get().netRef();
   if (s.of_transition) return (net.transitions()[s.transition()].node_slot_mask >> s.slot) & 1u;
@@ -1000,9 +1024,35 @@ void registerPlaceView(py::module_& m) {
       .def_property_readonly("name", [](const PlaceView& v) { return v.r.get().netRef().placeName(v.p); },
                              "its qualified name (main/cell/buffer)")
       .def_property(
-          "capacity", [](const PlaceView& v) { return capacityOf(SlotView{v.r, false, v.p, net::kDefaultSlot}); },
-          [](const PlaceView& v, const py::object& c) { setCapacity(SlotView{v.r, false, v.p, net::kDefaultSlot}, c); },
-          "the capacity of slot a0, tokens; None when unbounded; settable when the model gives one")
+          "capacity",
+          [](const PlaceView& v) -> py::object {
+            if (!v.r.get().netRef().continuousPlace(v.p)) {
+              return capacityOf(SlotView{v.r, false, v.p, net::kDefaultSlot});
+            }
+            const double c = fluidPlace(v, "capacity").capacity;
+            return c == net::kNoBound ? py::none() : py::object(py::float_(c));
+          },
+          [](const PlaceView& v, const py::object& c) {
+            if (v.r.get().netRef().continuousPlace(v.p)) {
+              throw py::attribute_error("capacity of " + v.r.get().netRef().placeName(v.p) +
+                                        " is the model's (a continuous place's is read-only)");
+            }
+            setCapacity(SlotView{v.r, false, v.p, net::kDefaultSlot}, c);
+          },
+          "the capacity of slot a0, tokens; None when unbounded; settable when the model gives one (a continuous "
+          "place's: in its unit, read-only)")
+      .def_property(
+          "amount",
+          [](const PlaceView& v) {
+            (void)fluidPlace(v, "amount");
+            return v.r.get().kernelRef().amount(v.p);
+          },
+          &setAmount,
+          "a continuous place's amount, in its unit; settable (not below 0, nor above its capacity less the room "
+          "promised)")
+      .def_property_readonly(
+          "unit", [](const PlaceView& v) { return fluidPlace(v, "unit").unit; },
+          "a continuous place's unit (L, kg; '' when the model gives none)")
       .def_property_readonly(
           "part", [](const PlaceView& v) { return partOf(v.r.get(), v.r.get().netRef().placeName(v.p)); },
           "the part its instance is, or controls (a control pattern's), or None")
@@ -1015,7 +1065,12 @@ void registerPlaceView(py::module_& m) {
       .def_property_readonly(
           "instance", [](const PlaceView& v) { return instanceOf(v.r.get(), v.r.get().netRef().placeName(v.p)); },
           "the scene node of its page type's instance, or None on a top-level page")
-      .def("__getattr__", [](const PlaceView& v, const std::string& name) { return slotAttr(v.r, false, v.p, name); })
+      .def("__getattr__",
+           [](const PlaceView& v, const std::string& name) {
+             // a property that raised AttributeError lands here: a place of tokens has no amount
+             if (name == "amount" || name == "unit") (void)fluidPlace(v, name.c_str());
+             return slotAttr(v.r, false, v.p, name);
+           })
       .def("__repr__", [](const PlaceView& v) { return "<place " + v.r.get().netRef().placeName(v.p) + ">"; });
 }
 

@@ -1,6 +1,7 @@
 #include "gdpn/session/breakpoint_syntax.h"
 
 #include <charconv>
+#include <cmath>
 #include <string>
 
 namespace gdpn::session {
@@ -23,13 +24,25 @@ core::Result<Breakpoint> parseBreakpoint(std::string_view text, const core::Sour
   const auto how = parseCompare(text.substr(op, end == std::string_view::npos ? std::string_view::npos : end - op));
   if (!how) return at(op);
   if (end == std::string_view::npos) return at(text.size());
-  // the number: whole, and all that is left
+  // the number, all that is left: whole (tokens, or an amount), else real (an amount: 2.5, 1e-3)
   const std::string_view number = text.substr(end);
+  const char* last = number.data() + number.size();
   std::int64_t value = 0;
-  const auto [ptr, ec] = std::from_chars(number.data(), number.data() + number.size(), value);
-  if (ec != std::errc()) return at(end);
-  if (ptr != number.data() + number.size()) return at(end + static_cast<std::size_t>(ptr - number.data()));
-  return Breakpoint::marking(std::string(text.substr(0, op)), *how, value);
+  const auto [whole_end, whole_ec] = std::from_chars(number.data(), last, value);
+  if (whole_ec == std::errc() && whole_end == last) {
+    return Breakpoint::marking(std::string(text.substr(0, op)), *how, value);
+  }
+  // a real number is written with a fraction or an exponent (digits alone stay whole: a count
+  // out of range is a mistake, not a real number)
+  if (number.find_first_of(".eE") == std::string_view::npos) {
+    if (whole_ec != std::errc()) return at(end);
+    return at(end + static_cast<std::size_t>(whole_end - number.data()));
+  }
+  double real = 0.0;
+  const auto [ptr, ec] = std::from_chars(number.data(), last, real, std::chars_format::general);
+  if (ec != std::errc() || !std::isfinite(real)) return at(end);
+  if (ptr != last) return at(end + static_cast<std::size_t>(ptr - number.data()));
+  return Breakpoint::level(std::string(text.substr(0, op)), *how, real);
 }
 
 }  // namespace gdpn::session

@@ -52,6 +52,12 @@ Breakpoint Breakpoint::marking(std::string place, Compare how, std::int64_t valu
   return b;
 }
 
+Breakpoint Breakpoint::level(std::string place, Compare how, double value) {
+  Breakpoint b = marking(std::move(place), how, 0);
+  b.real = value;
+  return b;
+}
+
 Breakpoint Breakpoint::predicate(std::string expression) {
   Breakpoint b;
   b.kind = BreakKind::Predicate;
@@ -63,7 +69,8 @@ std::string Breakpoint::describe() const {
   switch (kind) {
     case BreakKind::Starts: return "starts " + target;
     case BreakKind::Completes: return "completes " + target;
-    case BreakKind::Marking: return target + " " + compareName(compare) + " " + std::to_string(value);
+    case BreakKind::Marking:
+      return target + " " + compareName(compare) + " " + (real ? core::formatDouble(*real) : std::to_string(value));
     case BreakKind::Predicate: return expression.empty() ? "a test of the caller's" : expression;
   }
   return {};
@@ -71,7 +78,8 @@ std::string Breakpoint::describe() const {
 
 namespace {
 
-bool compare(std::int64_t a, Compare how, std::int64_t b) {
+template <typename Number>
+bool compare(Number a, Compare how, Number b) {
   switch (how) {
     case Compare::Less: return a < b;
     case Compare::LessEqual: return a <= b;
@@ -135,6 +143,7 @@ void Session::adopt(std::unique_ptr<model::Simulation> sim) {
   if (options_.run.timeline) {
     timeline_ = std::make_unique<net::Timeline>(sim_->net());
     sim_->kernel().addObserver(timeline_.get());
+    sim_->recordLevels();  // the continuous places' levels, plotted beside the tokens
   }
   if (witness_) {
     auto sequence = witness_->path;
@@ -368,7 +377,15 @@ std::optional<int> Session::holding() {
       }
       case BreakKind::Marking: {
         const net::PlaceId p{*targets_[i]};
-        if (compare(sim_->kernel().placeTokens(p), bp.compare, bp.value)) return id;
+        // a continuous place's amount, else the tokens; as real numbers where either is one
+        const net::Kernel& k = sim_->kernel();
+        const bool amount = sim_->net().continuousPlace(p);
+        if (amount || bp.real) {
+          const double x = amount ? k.amount(p) : static_cast<double>(k.placeTokens(p));
+          if (compare(x, bp.compare, bp.real.value_or(static_cast<double>(bp.value)))) return id;
+        } else if (compare(k.placeTokens(p), bp.compare, bp.value)) {
+          return id;
+        }
         break;
       }
       case BreakKind::Predicate: {

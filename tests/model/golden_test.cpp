@@ -1289,6 +1289,20 @@ TEST(CliRun, HtmlWritesOnePageWithThePlotsAndTheSignalsAndRefusesToOverwriteInpu
   EXPECT_NE(r.out.find("--html"), std::string::npos) << r.out;
 }
 
+TEST(CliRun, AHybridNetsPagePlotsEveryLevelAndItsSummarySaysTheAmounts) {
+  // the fill model: 0.3 L/s for 3.4 s, then held until the net is dead at 3.5 s
+  const gdpn::testing::ScratchFolder dir("gdpn_html_hybrid");
+  auto r = gdpn("run tests/data/hybrid/fill.gdpn.yaml --until 5 --break 'main/tank>=0.5' --html " + dir.file("h.html"));
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("stopped at breakpoint 1: main/tank >= 0.5"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  main/tank: 0.51 L at the end (0 to 0.51 L, mean 0.255 L)\n"), std::string::npos) << r.out;
+  const std::string page = gdpn::testing::fileBytes(dir.file("h.html"));
+  EXPECT_NE(page.find("<h2>Levels over time</h2>"), std::string::npos);
+  EXPECT_NE(page.find("<h2>Continuous places</h2>"), std::string::npos);
+  EXPECT_NE(page.find("<td class=\"\">main/tank</td><td class=\"\">L</td><td class=\"num\">0.51</td>"),
+            std::string::npos);
+}
+
 TEST(CliRun, RandomTiesChooseByTheSeedAndTheSameSeedGivesTheSameTrace) {
   const gdpn::testing::ScratchFolder dir("gdpn_ties");
   // the routes each part took: {go_left, go_right} occurrences

@@ -601,5 +601,54 @@ page_types:
   };
   EXPECT_EQ(logs, expected);
 }
+TEST(Scripts, AContinuousPlacesAmountIsReadAndSetAndItsRefusalRaised) {
+  // a tank of 2 L (at most 10 L): read, set to 7.5 L, then 12 L refused with the kernel's words;
+  // its capacity and unit read-only; a place of tokens has no amount
+  ScriptModel m(R"Y(gdpn: 1
+settings: {dt: 0.1, until: 0.3}
+pages:
+  main:
+    places:
+      tank: {continuous: {amount: 2, capacity: 10, unit: L}}
+      box: {tokens: 1}
+    transitions:
+      probe:
+        pre_fire: |
+          t = sim.place('main/tank')
+          sim.log('read', t.amount, t.capacity, t.unit)
+          t.amount = 7.5
+          sim.log('set', sim.place('main/tank').amount)
+          for wrong in (12, 'lots'):
+              try:
+                  t.amount = wrong
+              except (ValueError, TypeError) as e:
+                  sim.log(type(e).__name__, e)
+          try:
+              t.capacity = 20
+          except AttributeError as e:
+              sim.log('capacity:', e)
+          try:
+              sim.place('main/box').amount
+          except AttributeError as e:
+              sim.log('box:', e)
+    arcs: [box -> probe]
+)Y");
+  core::Diagnostics diags;
+  auto sim = m.open(diags);
+  ASSERT_TRUE(sim) << diags.str();
+  const auto [logs, outcome] = runLogs(*sim);
+  const std::vector<std::string> expected = {
+      "read 2.0 10.0 L",
+      "set 7.5",
+      "ValueError amount of main/tank: 'main/tank' holds at most 10 L now (its capacity less the room promised)",
+      "TypeError amount of main/tank expects a number, got str 'lots'",
+      "capacity: capacity of main/tank is the model's (a continuous place's is read-only)",
+      "box: 'main/box' holds tokens, not an amount: it has no amount (a continuous place has; count tokens with "
+      "len(place.a0))",
+  };
+  EXPECT_EQ(logs, expected);
+  EXPECT_EQ(sim->kernel().amount(*sim->net().findPlace("main/tank")), 7.5);
+}
+
 }  // namespace
 }  // namespace gdpn::model

@@ -44,6 +44,24 @@ TEST(BreakpointSyntax, EveryComparisonOfAPlaceWithANumber) {
   EXPECT_EQ(negative->value, -2);
 }
 
+TEST(BreakpointSyntax, ANumberWithAFractionOrAnExponentComparesAsARealNumber) {
+  auto b = parseBreakpoint("main/tank>=2.5");
+  ASSERT_TRUE(b);
+  EXPECT_EQ(b->kind, BreakKind::Marking);
+  EXPECT_EQ(b->target, "main/tank");
+  EXPECT_EQ(b->compare, Compare::GreaterEqual);
+  EXPECT_EQ(b->real, 2.5);
+  EXPECT_EQ(b->describe(), "main/tank >= 2.5");
+  b = parseBreakpoint("main/tank<1e-3");
+  ASSERT_TRUE(b);
+  EXPECT_EQ(b->real, 1e-3);
+  // a whole number stays whole (tokens, or an amount compared with it)
+  b = parseBreakpoint("main/tank>=5");
+  ASSERT_TRUE(b);
+  EXPECT_FALSE(b->real);
+  EXPECT_EQ(b->value, 5);
+}
+
 TEST(BreakpointSyntax, MistakesAreLocatedAtTheirCharacter) {
   struct Case {
     const char* text;
@@ -56,6 +74,9 @@ TEST(BreakpointSyntax, MistakesAreLocatedAtTheirCharacter) {
       {"main/buffer>=x", 14},  // not a number: at it
       {"main/buffer>=3x", 15}, // trailing text: at it
       {"p>=99999999999999999999", 4},  // out of range
+      {"main/tank>=2.5x", 15},  // trailing text after a real number: at it
+      {"main/tank>=1e999", 12},  // no finite number
+      {"main/tank>=.", 12},     // a point alone
   };
   for (const auto& c : cases) {
     const auto b = parseBreakpoint(c.text);

@@ -306,6 +306,24 @@ model::RunOutcome runTo(Session& s, Breakpoint bp) {
   return outcome;
 }
 
+TEST(Session, ABreakpointOnAContinuousPlaceComparesItsAmount) {
+  // the pump fills at 0.3 L/s, dt 0.1: 0.5 L is first reached at the end of step 17 (0.51 L),
+  // 1 L at the end of step 34 (1.02 L)
+  auto s = openFile("tests/data/hybrid/fill.gdpn.yaml");
+  ASSERT_TRUE(s);
+  auto outcome = runTo(*s, Breakpoint::level("main/tank", Compare::GreaterEqual, 0.5));
+  EXPECT_EQ(outcome.steps, 17);
+  ASSERT_TRUE(s->hit());
+  EXPECT_TRUE(s->removeBreakpoint(*s->hit()));
+  const auto tank = *s->simulation().net().findPlace("main/tank");
+  EXPECT_NEAR(s->simulation().kernel().amount(tank), 0.51, 1e-12);
+  core::Diagnostics diags;
+  ASSERT_TRUE(s->reset(diags)) << diags.str();
+  outcome = runTo(*s, Breakpoint::marking("main/tank", Compare::GreaterEqual, 1));
+  EXPECT_EQ(outcome.steps, 34);
+  EXPECT_NEAR(s->simulation().kernel().amount(tank), 1.02, 1e-12);
+}
+
 TEST(Session, ABreakpointOnAStartStopsAtTheStepItStarts) {
   auto s = openFile(kProducerConsumer);
   ASSERT_TRUE(s);

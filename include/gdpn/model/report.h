@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// The figures of a run: per transition occurrences, cycle times and utilisation; per place
-/// mean and max tokens and throughput. Printed as a table and written as JSON.
+/// mean and max tokens and throughput; per continuous place its amount's extremes and mean, per
+/// continuous transition what it moved. Printed as a table and written as JSON.
 
 #include <cstdint>
 #include <ostream>
@@ -25,6 +26,7 @@ struct TransitionFigures {
   double utilisation = 0.0;     ///< share of its servers busy over the run, 0..1 (NaN for unlimited servers)
   std::uint32_t servers = 1;    ///< occurrences at once it may have; 0 for unlimited
   double mean_busy = 0.0;       ///< occurrences running at once, averaged over the run
+  bool continuous = false;      ///< a continuous transition (it flows: `flows` has its figures)
 };
 
 /// One place's line of the report.
@@ -38,6 +40,28 @@ struct PlaceFigures {
   /// its value slots' values at the end, as the inscription language writes them (`2'p1 ++
   /// 1'p3`; a slot other than a0 named first: `a1: ...`); "" for a place without value slots
   std::string final_values;
+  bool continuous = false;   ///< a continuous place (it holds an amount: `amounts` has its figures)
+};
+
+/// One continuous place's line of the report (hybrid nets): its amount over the run.
+struct AmountFigures {
+  std::string name;           ///< qualified name
+  std::string unit;           ///< its unit ("" when the model gives none)
+  double final_amount = 0.0;  ///< at the end, in its unit
+  double lowest = 0.0;        ///< the least it held (at a step or solver segment boundary), in its unit
+  double highest = 0.0;       ///< the most, in its unit
+  double mean = 0.0;          ///< time-weighted mean over the run, in its unit
+};
+
+/// One continuous transition's line of the report (hybrid nets): what it moved.
+struct FlowFigures {
+  std::string name;        ///< qualified name
+  /// the amount of flow it moved (its effective rate integrated over the run): each output arc
+  /// put, each input arc took, its weight times this
+  double moved = 0.0;
+  /// the unit of `moved`: its first arc's place's when that arc weighs 1 ("" otherwise)
+  std::string unit;
+  double flowing = 0.0;    ///< share of the run's time its effective rate was not 0, 0..1
 };
 
 /// One path the token of a cycle with alternative circuits took, as the run measured it.
@@ -78,6 +102,8 @@ struct Report {
   RunOutcome outcome;
   std::vector<TransitionFigures> transitions;
   std::vector<PlaceFigures> places;
+  std::vector<AmountFigures> amounts;  ///< per continuous place, in place order (none for a net without one)
+  std::vector<FlowFigures> flows;      ///< per continuous transition, in transition order
   std::vector<CycleFigures> cycles;  ///< largest bound first; empty for an untimed net
   net::ExploreStop cycles_stop = net::ExploreStop::Done;  ///< why the cycle bounds were cut short (Done: not)
   std::vector<script::Figure> figures;  ///< the model's own, from its summary()

@@ -117,6 +117,12 @@ class Simulation {
   bool recordSignals(const std::vector<SignalSpec>& extra, core::Diagnostics& diags);
   /// The signals recorded so far, or null when none are recorded.
   [[nodiscard]] const SignalTable* signals() const;
+  /// Records the amount of every continuous place from now on (call before start()), as a
+  /// signal `place: NAME` would, every step, in a table of its own (the HTML report's levels;
+  /// a column per continuous place, named for it). Nothing for a net without one.
+  void recordLevels();
+  /// The levels recorded so far (a column per continuous place, in place order), or null.
+  [[nodiscard]] const SignalTable* levels() const;
   /// The current reading of sensor node `sensor` (an empty reading without sensors).
   [[nodiscard]] const sensors::Reading& reading(scene::NodeHandle sensor) const;
   /// The latest picture a script read of camera sensor `camera`; null when none was (nothing
@@ -235,6 +241,7 @@ class Simulation {
   std::function<void()> step_hook_;
   std::function<void()> before_step_;
   std::unique_ptr<SignalRecorder> signals_;
+  std::unique_ptr<SignalRecorder> levels_;  // the continuous places' amounts (recordLevels)
   std::function<bool()> stop_check_;
   Model model_;
   std::shared_ptr<const net::Net> net_;

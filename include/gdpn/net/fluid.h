@@ -127,6 +127,18 @@ struct Crossing {
   bool rising = false;      ///< from below
 };
 
+/// What the amounts and flows did over a run, as FluidSolver::advance() went (the report's
+/// figures): exact where rates are constant over a segment, by the trapezoid rule over each
+/// solver segment where a rate reads an amount.
+struct FluidTally {
+  std::vector<double> lowest;   ///< per place: the least amount at a step or segment boundary (+inf: none yet)
+  std::vector<double> highest;  ///< per place: the most (-inf: none yet)
+  std::vector<double> area;     ///< per place: the amount integrated over time, unit x seconds
+  std::vector<double> moved;    ///< per flow: its effective rate integrated over time (units of flow)
+  std::vector<double> flowing;  ///< per flow: seconds its effective rate was not 0
+  double time = 0.0;            ///< seconds advanced in all
+};
+
 /// Advances the amounts of a Fluid through time by the first-order rules (semantics: *Hybrid
 /// nets*): piecewise-linear and exact while no flowing rate reads an amount, with SUNDIALS
 /// CVODE otherwise; each crossing of a level is located at its time. Copies start afresh (the
@@ -156,6 +168,8 @@ class FluidSolver {
              std::span<const double> reserved);
   /// True when some flow's effective rate is not 0.
   [[nodiscard]] bool flowing() const;
+  /// What the amounts and flows did over every advance() so far (copies carry it).
+  [[nodiscard]] const FluidTally& tally() const { return tally_; }
 
  private:
   struct Cvode;
@@ -186,6 +200,10 @@ class FluidSolver {
   std::vector<double> dx_;
   std::span<const std::uint8_t> on_;
   std::unique_ptr<Cvode> cvode_;
+  FluidTally tally_;
+  std::vector<double> f_start_, x_start_;  // a solver segment's rates and amounts at its start
+  void count(const std::vector<double>& x, double tau);  // a segment of constant rates, into tally_
+  void extremes(const std::vector<double>& x);           // the amounts now, into lowest and highest
 };
 
 }  // namespace gdpn::net

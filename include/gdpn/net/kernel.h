@@ -186,6 +186,9 @@ class Kernel {
   [[nodiscard]] double flowRate(TransitionId t) const;
   /// The rate continuous transition `t` would flow at without the first-order rules' cuts.
   [[nodiscard]] double nominalRate(TransitionId t) const;
+  /// What the continuous part did over the run so far (amounts' extremes and areas, flows'
+  /// amounts moved and time flowing; per Fluid::places and Fluid::flows); null without one.
+  [[nodiscard]] const FluidTally* fluidTally() const { return fluid_ ? &fluid_run_->solver.tally() : nullptr; }
   /// True while some continuous transition moves an amount (a dead net may still flow).
   [[nodiscard]] bool flowing() const;
   /// Sets the capacity of place slot `ps` (a script's `capacity = n`; kUnbounded for none).

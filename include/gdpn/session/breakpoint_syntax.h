@@ -2,8 +2,8 @@
 /// \file
 /// Breakpoints written as text, in the one syntax that `gdpn run --break`, the IDE's replay
 /// (`- break: 'start:T'`) and the Python module (`Model.add_breakpoint('P>=3')`) read:
-/// `start:TRANSITION`, `complete:TRANSITION`, `PLACE OP N` (OP one of < <= == != >= >) or
-/// `when:PYTHON`.
+/// `start:TRANSITION`, `complete:TRANSITION`, `PLACE OP N` (OP one of < <= == != >= >; N a
+/// whole number, or a real one such as 2.5 for a continuous place's amount) or `when:PYTHON`.
 
 #include <string_view>
 

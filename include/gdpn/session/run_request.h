@@ -15,8 +15,9 @@ struct RunRequest {
   /// alternative circuits, so that the report shows each circuit's measured cycle. Off: no
   /// statistics are collected (the run's report is never made) and no cycles worked out.
   bool report = true;
-  /// Keep every occurrence and change of tokens, up to the timeline's budget (the plots of
-  /// `gdpn run --html`); Session::timeline() gives it.
+  /// Keep every occurrence and change of tokens, up to the timeline's budget, and every
+  /// continuous place's amount after each step (the plots of `gdpn run --html`);
+  /// Session::timeline() and Simulation::levels() give them.
   bool timeline = false;
   /// Echo each `sim.log` line on stderr (`[t=...] ...`), the globals script's too; off
   /// (`-q`): the lines go to the trace alone.

@@ -50,7 +50,7 @@ struct ReplayVerdict {
 enum class BreakKind : std::uint8_t {
   Starts,     ///< a transition starts an occurrence
   Completes,  ///< a transition completes an occurrence
-  Marking,    ///< a place's tokens (all its slots) compare with a number
+  Marking,    ///< a place's tokens (all its slots), or a continuous place's amount, compare with a number
   Predicate,  ///< a Python expression in the model's globals is true
 };
 
@@ -62,7 +62,10 @@ struct Breakpoint {
   BreakKind kind = BreakKind::Starts;  ///< what it watches
   std::string target;                  ///< Starts, Completes: the transition; Marking: the place (qualified names)
   Compare compare = Compare::GreaterEqual;  ///< Marking: how the tokens compare with `value`
-  std::int64_t value = 0;              ///< Marking: tokens
+  std::int64_t value = 0;              ///< Marking: tokens (or an amount, whole)
+  /// Marking: a number with a fraction to compare with instead of `value` (an amount: `main/tank
+  /// >= 2.5`; a place of tokens compares its whole tokens with it)
+  std::optional<double> real;
   std::string expression;              ///< Predicate: a Python expression over the model's globals
   /// Predicate, when `expression` is empty: a test of the caller's own (the Python module
   /// passes a callable); it may throw, which ends the run as a script error.
@@ -75,6 +78,8 @@ struct Breakpoint {
   static Breakpoint completes(std::string transition);
   /// Holds while place `place`'s tokens compare with `value` as `how` says.
   static Breakpoint marking(std::string place, Compare how, std::int64_t value);
+  /// Holds while place `place`'s tokens or amount compare with `value` as `how` says.
+  static Breakpoint level(std::string place, Compare how, double value);
   /// Holds while the Python expression `expression` is true.
   static Breakpoint predicate(std::string expression);
 

@@ -22,6 +22,7 @@ GANTT = "#ff7f0e"
 BOUND = "#9a9a9a"
 MEASURED = "#d62728"
 SIGNALS = ["#9467bd", "#17becf", "#bcbd22"]
+LEVELS = "#0b7a8a"
 THROUGHPUT = ["#2ca02c", "#8c564b", "#e377c2", "#393b79", "#e6550d", "#6b6ecf"]
 
 MAX_PLACES = 12        # token plots
@@ -297,6 +298,46 @@ def cycles_plot(run):
     return svg(fig), note
 
 
+def levels_plot(run):
+    """Each continuous place's amount over the run, titled with the place and its unit."""
+    lv = run.get("levels")
+    if not lv or not lv["places"]:
+        return None, ""
+    shown = lv["places"][:MAX_PLACES]
+    time = lv["time"]
+    fig, axes = plt.subplots(len(shown), 1, figsize=(WIDTH, 1.6 * len(shown) + 0.6), sharex=True, squeeze=False)
+    thinned = False
+    for ax, p in zip(axes[:, 0], shown):
+        pts = [(t, v) for t, v in zip(time, p["values"]) if v is not None]
+        thinned = thinned or len(pts) > MAX_POINTS
+        pts = thin(pts, run["time"])
+        t = [q[0] for q in pts]
+        v = [q[1] for q in pts]
+        ax.plot(t, v, color=LEVELS, linewidth=1.4)
+        ax.fill_between(t, v, color=LEVELS, alpha=0.15, linewidth=0)
+        unit = f" ({p['unit']})" if p["unit"] else ""
+        ax.set_title(f"{short(p['name'], 60)}{unit}", loc="left", fontsize=10)
+        top = max(v) if v else 0
+        cap = p.get("capacity")
+        if cap is not None and cap <= 2 * max(top, 1e-12):
+            # the capacity drawn when the amount came near it
+            ax.axhline(cap, color=BOUND, linestyle="--", linewidth=1)
+            ax.annotate(f"capacity {number(cap)}", (1.0, cap), xycoords=("axes fraction", "data"),
+                        xytext=(-4, 3), textcoords="offset points", ha="right", va="bottom", fontsize=8,
+                        color="#666")
+            top = max(top, cap)
+        ax.set_ylim(0, top * 1.12 if top > 0 else 1)
+        ax.yaxis.set_major_locator(matplotlib.ticker.MaxNLocator(4))
+        ax.grid(axis="y", color="#e5e5e5", linewidth=0.6)
+    axes[-1, 0].set_xlabel("time (s)")
+    axes[-1, 0].set_xlim(0, run["time"] if run["time"] > 0 else 1)
+    fig.tight_layout()
+    note = f"The first {MAX_PLACES} of {len(lv['places'])} continuous places." if len(lv["places"]) > MAX_PLACES else ""
+    if thinned:
+        note += f" Levels of more than {MAX_POINTS} steps show each window's lowest and highest amount."
+    return svg(fig), note.strip()
+
+
 def signals_plot(run):
     sig = run.get("signals")
     if not sig or not sig["columns"]:
@@ -378,6 +419,8 @@ def page(text):
             body_ += f'<p class="error">{esc(run["figures_error"])}</p>'
         sections.append(("figures", "The model's figures", body_, "What the model's summary() returns."))
     plots = [
+        ("levels", "Levels over time", levels_plot,
+         "Each continuous place's amount after every step (dashed: its capacity)."),
         ("tokens", "Tokens over time", tokens_plot, "Each place's tokens (all its slots) over the run."),
         ("gantt", "Transition occurrences", gantt_plot, "Each bar is one occurrence, from its start to its completion; occurrences of one transition "
          "that overlap (it has servers) share its row in lanes."),
@@ -411,8 +454,8 @@ def page(text):
              number(t["min_cycle"]) if t["cycles"] else "–", number(t["max_cycle"]) if t["cycles"] else "–",
              "–" if t["utilisation"] is None else f"{100 * t['utilisation']:.1f} %")
             + ((f"{t.get('mean_busy', t['utilisation']):.2f}", str(t.get("servers", 1))) if servers else ())
-            for t in run["transitions"]]
-    if run["transitions"]:
+            for t in run["transitions"] if not t.get("continuous")]
+    if rows:
         head = ["transition", "occurrences", "mean cycle (s)", "min (s)", "max (s)", "busy"]
         sections.append(("transitions", "Transitions",
                          table(head + (["at once", "servers"] if servers else []),
@@ -420,11 +463,23 @@ def page(text):
                                [False] + [True] * (len(head) - 1 + (2 if servers else 0))), ""))
     rows = [(p["name"] + (" (sensor)" if p["sensors_only"] else ""), number(p["mean_tokens"]),
              number(p["max_tokens"]), number(p["final_tokens"]), number(p["throughput"]))
-            for p in run["places"]]
-    if run["places"]:
+            for p in run["places"] if not p.get("continuous")]
+    if rows:
         sections.append(("places", "Places",
                          table(["place", "mean tokens", "max", "final", "deposits per s"], rows,
                                [False, True, True, True, True]), ""))
+    if run.get("amounts"):
+        rows = [(a["name"], a["unit"], number(a["final"]), number(a["lowest"]), number(a["highest"]), number(a["mean"]))
+                for a in run["amounts"]]
+        sections.append(("amounts", "Continuous places",
+                         table(["place", "unit", "final", "lowest", "highest", "mean"], rows,
+                               [False, False, True, True, True, True]), "Amounts over the run; the mean is weighted by time."))
+    if run.get("flows"):
+        rows = [(f["name"], number(f["moved"]), f["unit"], f"{100 * f['flowing']:.1f} %") for f in run["flows"]]
+        sections.append(("flows", "Continuous transitions",
+                         table(["transition", "moved", "unit", "flowing"], rows, [False, True, False, True]),
+                         "What each flow moved (its rate over time; an arc moves its weight times this), and "
+                         "the share of the run it flowed."))
     if run["cycles"]:
         rows = [(c["invariant"], number(c["tokens"]), "flow" if c["flow"] else number(c["bound"]),
                  "–" if c["flow"] or not c["measured"] else number(c["measured"])) for c in run["cycles"]]
