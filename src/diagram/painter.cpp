@@ -338,10 +338,13 @@ class Painter {
     c_.strokeCircle(c, ri, std::max(kOutlineWidth * 0.75 * v_.zoom, 1.0), colours::kOutline);
     if (!labels_) return;
     const std::string text = amountText(amount, look.unit);
-    // inside, as large as names and as the inner circle allows
-    const double room = 1.8 * ri, wide = c_.textWidth(text, font_);
-    const double size = wide > room ? font_ * room / wide : font_;
-    if (size >= kMinFontPx) {
+    // inside the inner circle, as large as names where it fits there at 4/5 of their size;
+    // else across the inner outline, on a patch, down to 7/10; else beside the place
+    const double wide = c_.textWidth(text, font_);
+    const auto fit = [&](double room) { return wide > room ? font_ * room / wide : font_; };
+    double size = fit(1.85 * ri);
+    if (size < std::max(kMinFontPx, 0.8 * font_)) size = fit(1.6 * r);
+    if (size >= std::max(kMinFontPx, 0.7 * font_)) {
       Label l{text, size, HAlign::Centre, VAlign::Middle, colours::kOutline, {c}};
       const Box box = labelBox(c_, l, c);
       c_.fillRect({{box.min.x + 1, box.min.y + 0.1 * size}, {box.max.x - 1, box.max.y - 0.1 * size}}, kAmountPatch);
@@ -376,9 +379,10 @@ class Painter {
     const std::string text = unit.starts_with("/") ? amountText(rate) + unit : amountText(rate, unit);
     Label l{text, std::max(font_ * 0.9, kMinFontPx), HAlign::Left, VAlign::Middle, colours::kEnabled, {}};
     const double mid = (b.min.y + b.max.y) / 2, gap = 3.0 + kLabelGap * v_.zoom;
-    l.anchors = {{b.max.x + gap, mid},
-                 {b.min.x - gap - c_.textWidth(text, l.size), mid},
-                 {(b.min.x + b.max.x) / 2 - c_.textWidth(text, l.size) / 2, b.max.y + gap + l.size / 2}};
+    // under the box first: its arcs mostly leave by its sides
+    l.anchors = {{(b.min.x + b.max.x) / 2 - c_.textWidth(text, l.size) / 2, b.max.y + gap + l.size / 2},
+                 {b.max.x + gap, mid},
+                 {b.min.x - gap - c_.textWidth(text, l.size), mid}};
     pending_.push_back(std::move(l));
   }
 

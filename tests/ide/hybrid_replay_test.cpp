@@ -16,7 +16,7 @@ namespace gdpn::ide {
 namespace {
 
 // tests/data/hybrid/fill.gdpn.yaml, copied: a pump fills a 10 L tank at 0.3 L/s from 0 L; a
-// level switch at 1 L stops it (at 3.33 s); dt 0.1 s
+// level switch at 1 L stops it (from 3.4 s); dt 0.1 s
 class HybridIde : public HeadlessIde {
  protected:
   void SetUp() override {
@@ -50,12 +50,13 @@ TEST_F(HybridIde, AContinuousPlacesAmountShowsInTheInspectorTheContentsAndTheNet
   EXPECT_NEAR(r["inspector"]["flow_rate"].get<double>(), 0.3, 1e-12);
   EXPECT_NEAR(r["inspector"]["nominal_rate"].get<double>(), 0.3, 1e-12);
   EXPECT_EQ(r["inspector"]["rate_unit"], "L/s");
-  // past 1 L (3.33 s) `stop` has taken the mark: the pump is off and drawn idle, the tank holds 1 L
+  // the tank crosses 1 L at 3.33 s; `stop` starts at the next step boundary, 3.4 s, taking the
+  // mark: the pump is off and drawn idle, the tank holds 0.3 L/s x 3.4 s = 1.02 L
   r = run("- steps: 50\n- select: main/pump\n- frames: 2\n");
   ASSERT_TRUE(r.is_object());
   EXPECT_EQ(r["inspector"]["state"], "off");
   EXPECT_EQ(r["net_view"]["activity"]["main/pump"], "idle");
-  EXPECT_NEAR(r["net_view"]["amounts"]["main/tank"].get<double>(), 1.0, 1e-9);
+  EXPECT_NEAR(r["net_view"]["amounts"]["main/tank"].get<double>(), 1.02, 1e-9);
 }
 
 TEST_F(HybridIde, TheContentsViewSetsTheAmountWhilePausedAndSaysWhyItRefuses) {

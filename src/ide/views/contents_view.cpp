@@ -116,7 +116,7 @@ void scriptBlock(const net::ScriptSpec& script, std::string_view heading, nlohma
 }
 
 /// The colour of amounts (hybrid nets): the net view's colours::kContinuous.
-constexpr ImVec4 kLevelColour{0.09f, 0.75f, 0.81f, 1.0f};
+ImVec4 levelColour() { return {0.09f, 0.75f, 0.81f, 1.0f}; }
 
 /// A continuous place in the run (hybrid nets): its amount as a level, a bar of its capacity
 /// with the amount and unit on it, and the room promised to occurring transitions; while the
@@ -132,10 +132,9 @@ void levelContents(App& app, session::Session& session, net::PlaceId p, nlohmann
   ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted("level");
   ImGui::SameLine(80);
-  ImGui::PushStyleColor(ImGuiCol_PlotHistogram, kLevelColour);
-  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4{0.05f, 0.05f, 0.05f, 1.0f});
+  ImGui::PushStyleColor(ImGuiCol_PlotHistogram, levelColour());
   ImGui::ProgressBar(bounded && fp.capacity > 0 ? static_cast<float>(amount / fp.capacity) : 0.0f, {280, 0}, text.c_str());
-  ImGui::PopStyleColor(2);
+  ImGui::PopStyleColor();
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("the amount on the place now, of its capacity");
   noteItem("level", report["fields"]);
   report["amount"] = amount;
@@ -160,14 +159,21 @@ void levelContents(App& app, session::Session& session, net::PlaceId p, nlohmann
     ImGui::SameLine();
     ImGui::TextUnformatted(fp.unit.c_str());
   }
+  const std::string& name = session.simulation().net().placeName(p);
   if (entered) {
     app.inspector.amount_error = kernel.setAmount(p, typed);
+    app.inspector.amount_error_of = name;
+    app.inspector.amount_error_step = app.run().steps();
     app.netView().state_kernel = nullptr;  // the net view draws the new amount
   }
-  if (!app.inspector.amount_error.empty()) {
-    ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", app.inspector.amount_error.c_str());
+  // the refusal of this place's last amount, until the run moves on
+  const bool refused = app.inspector.amount_error_of == name && app.inspector.amount_error_step == app.run().steps();
+  if (refused && !app.inspector.amount_error.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4{1.0f, 0.45f, 0.4f, 1.0f});
+    ImGui::TextWrapped("%s", app.inspector.amount_error.c_str());
+    ImGui::PopStyleColor();
   }
-  report["amount_error"] = app.inspector.amount_error;
+  report["amount_error"] = refused ? app.inspector.amount_error : std::string();
 }
 
 void placeContents(App& app, session::Session& session, net::PlaceId p, nlohmann::json& report, const FileError& error) {
@@ -825,7 +831,11 @@ void flowFields(App& app, const ConstructAt& at, const net::TransitionSpec& t, c
     if (l.name == at.name && l.fluid && app.netView().layout.page == at.page) unit = l.fluid->unit;
   }
   ImGui::TextDisabled("%s", unit.c_str());
-  if (!why.empty()) ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", why.c_str());
+  if (!why.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4{1.0f, 0.45f, 0.4f, 1.0f});
+    ImGui::TextWrapped("%s", why.c_str());
+    ImGui::PopStyleColor();
+  }
   if (left && why.empty() && edit.rate_text != t.flow->rate.text) {
     auto next = t;
     next.flow->rate.text = edit.rate_text;
