@@ -144,5 +144,24 @@ TEST_F(HybridIde, ATransitionMadeContinuousHasARateCheckedAsItIsTyped) {
   EXPECT_EQ(r["inspector"]["contents"]["continuous"], false);
 }
 
+TEST_F(HybridIde, AnArcWithAContinuousPlaceHasARealWeight) {
+  // the level switch's threshold: 1 L, then 2.5 L; undo gives 1 L back
+  const std::string pick = "- select: 'main: tank -> stop (test)'\n- frames: 2\n";
+  auto r = run(pick);
+  ASSERT_TRUE(r.is_object());
+  EXPECT_EQ(r["inspector"]["weight"], 1.0);
+  const std::string typed = pick + "- click: [inspector, fields, weight]\n- key: ctrl+a\n- type: '2.5'\n- key: enter\n- frames: 2\n";
+  r = run(typed);
+  ASSERT_TRUE(r.is_object());
+  EXPECT_EQ(r["inspector"]["weight"], 2.5);
+  r = run(typed + "- press: undo\n- frames: 2\n");
+  ASSERT_TRUE(r.is_object());
+  EXPECT_EQ(r["inspector"]["weight"], 1.0);
+  // the run takes it: the pump stops after the tank crosses 2.5 L (8.33 s), from 8.4 s
+  r = run(typed + "- steps: 100\n- select: main/tank\n- frames: 2\n");
+  ASSERT_TRUE(r.is_object());
+  EXPECT_NEAR(r["inspector"]["amount"].get<double>(), 0.3 * 8.4, 1e-9);
+}
+
 }  // namespace
 }  // namespace gdpn::ide
