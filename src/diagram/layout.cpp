@@ -21,25 +21,6 @@ double instanceWidth(const net::InstanceSpec& inst) {
 }
 
 // the box of a node at `c`: `width` is an instance box's or a transition's width
-// the unit of continuous transition `name`'s rate: its first output's continuous place's unit
-// per second, else its first input's, else "/s"
-std::string flowUnit(const net::PageSpec& page, const std::string& name) {
-  const auto unitOf = [&](const std::string& place) -> const std::string* {
-    for (const auto& p : page.places) {
-      if (p.name == place && p.fluid && !p.fluid->unit.empty()) return &p.fluid->unit;
-    }
-    return nullptr;
-  };
-  for (const bool output : {true, false}) {
-    for (const auto& a : page.arcs) {
-      if (a.kind != net::ArcKind::Normal) continue;
-      if ((output ? a.from : a.to) != name) continue;
-      if (const auto* u = unitOf(output ? a.to : a.from)) return *u + "/s";
-    }
-  }
-  return "/s";
-}
-
 Box boxOfNode(ItemKind kind, Point c, double width) {
   switch (kind) {
     case ItemKind::Place: return Box::around(c, kPlaceRadius, kPlaceRadius);
@@ -307,7 +288,7 @@ NetLayout layoutPage(const net::PageSpec& page, core::Diagnostics& diags) {
   // a transition's tag: its condition on its binding, in brackets as CPN tools write guards
   for (const auto& t : page.transitions) {
     l.transitions.push_back({t.name, at(t.position), {}, t.conditioned() ? "[" + t.when.text + "]" : std::string()});
-    if (t.flow) l.transitions.back().fluid = FluidLook{0.0, std::nullopt, flowUnit(page, t.name)};
+    if (t.flow) l.transitions.back().fluid = FluidLook{0.0, std::nullopt, rateUnit(page, t.name)};
   }
   std::vector<double> widths;
   for (const auto& i : page.instances) {
@@ -405,6 +386,27 @@ void relayoutMoved(NetLayout& l, const net::PageSpec& page, const std::vector<It
   for (std::size_t k = 0; k < l.arcs.size(); ++k) arc_moved[k] = item_moved[flat(l.arcs[k].from)] | item_moved[flat(l.arcs[k].to)];
   routeStraight(l, page, &arc_moved);
   placeLabelsAndBound(l, page, &arc_moved);
+}
+
+std::string rateUnit(const net::PageSpec& page, const std::string& name) {
+  const auto unitOf = [&](const std::string& place) -> const std::string* {
+    for (const auto& p : page.places) {
+      if (p.name == place && p.fluid && !p.fluid->unit.empty()) return &p.fluid->unit;
+    }
+    return nullptr;
+  };
+  for (const bool output : {true, false}) {
+    for (const auto& a : page.arcs) {
+      if (a.kind != net::ArcKind::Normal) continue;
+      if ((output ? a.from : a.to) != name) continue;
+      if (const auto* u = unitOf(output ? a.to : a.from)) return *u + "/s";
+    }
+  }
+  return "/s";
+}
+
+std::string rateText(double rate, const std::string& unit) {
+  return unit.starts_with("/") ? amountText(rate) + unit : amountText(rate, unit);
 }
 
 std::string amountText(double amount, const std::string& unit) {

@@ -376,7 +376,7 @@ class Painter {
     const double rate = s_ != nullptr && k < s_->flow_rates.size() && s_->flow_rates[k] ? *s_->flow_rates[k] : 0.0;
     if (rate == 0.0) return;
     const std::string& unit = t.fluid->unit;
-    const std::string text = unit.starts_with("/") ? amountText(rate) + unit : amountText(rate, unit);
+    const std::string text = rateText(rate, unit);
     Label l{text, std::max(font_ * 0.9, kMinFontPx), HAlign::Left, VAlign::Middle, colours::kEnabled, {}};
     const double mid = (b.min.y + b.max.y) / 2, gap = 3.0 + kLabelGap * v_.zoom;
     // under the box first: its arcs mostly leave by its sides

@@ -83,11 +83,13 @@ TEST(DiagramHybrid, LayoutKnowsContinuousPlacesFlowsAndRealWeights) {
   EXPECT_EQ(t.layout.arcs[1].inscription, "");     // pump -> tank: weight 1
 }
 
-TEST(DiagramHybrid, AmountText) {
+TEST(DiagramHybrid, AmountAndRateText) {
   EXPECT_EQ(amountText(12.5, "L"), "12.5 L");
   EXPECT_EQ(amountText(0.30000000000000004), "0.3");
   EXPECT_EQ(amountText(-0.0, "kg"), "0 kg");
   EXPECT_EQ(amountText(1.0 / 3.0, "Ah"), "0.3333 Ah");
+  EXPECT_EQ(rateText(0.3, "L/s"), "0.3 L/s");
+  EXPECT_EQ(rateText(0.3, "/s"), "0.3/s");
 }
 
 TEST(DiagramHybrid, NetStateHasTheKernelsAmountsAndRates) {

@@ -131,6 +131,13 @@ void relayoutMoved(NetLayout& l, const net::PageSpec& page, const std::vector<It
 /// ("12.5", "0.3", "1e+04"), then " " and `unit` when there is one ("12.5 L").
 [[nodiscard]] std::string amountText(double amount, const std::string& unit = {});
 
+/// The unit of continuous transition `name`'s rate on `page` (hybrid nets): its first
+/// output's continuous place's unit per second ("L/s"), else its first input's, else "/s".
+[[nodiscard]] std::string rateUnit(const net::PageSpec& page, const std::string& name);
+
+/// A rate as the net view writes it: amountText() and its unit ("0.3 L/s", "0.3/s").
+[[nodiscard]] std::string rateText(double rate, const std::string& unit);
+
 /// The label of an arc with these weights (see ArcLayout::inscription).
 [[nodiscard]] std::string inscription(const std::vector<net::SlotCount>& weights);
 

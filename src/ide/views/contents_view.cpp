@@ -826,11 +826,7 @@ void flowFields(App& app, const ConstructAt& at, const net::TransitionSpec& t, c
   }
   const std::string why = rateError(edit.rate_text, page, *t.flow);
   ImGui::SameLine();
-  std::string unit = "/s";
-  for (const auto& l : app.netView().layout.transitions) {
-    if (l.name == at.name && l.fluid && app.netView().layout.page == at.page) unit = l.fluid->unit;
-  }
-  ImGui::TextDisabled("%s", unit.c_str());
+  ImGui::TextDisabled("%s", diagram::rateUnit(page, at.name).c_str());
   if (!why.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4{1.0f, 0.45f, 0.4f, 1.0f});
     ImGui::TextWrapped("%s", why.c_str());

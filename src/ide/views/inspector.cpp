@@ -448,9 +448,9 @@ void flowState(const model::Simulation& sim, net::TransitionId t, nlohmann::json
   const double rate = kernel.flowRate(t), nominal = kernel.nominalRate(t);
   const std::string state = rate != 0.0 ? "flowing" : nominal != 0.0 ? "cut to nothing" : "off";
   ImGui::Text("%s", state.c_str());
-  ImGui::Text("rate: %s %s", diagram::amountText(rate).c_str(), unit.c_str());
+  ImGui::Text("rate: %s", diagram::rateText(rate, unit).c_str());
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("the effective rate: the nominal one cut where an input is empty or an output full");
-  ImGui::Text("nominal rate: %s %s", diagram::amountText(nominal).c_str(), unit.c_str());
+  ImGui::Text("nominal rate: %s", diagram::rateText(nominal, unit).c_str());
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("the rate its expression gives while its arcs allow it (0 while switched off)");
   if (const auto& loc = net.transitionLoc(t); loc.line > 0) ImGui::TextDisabled("declared at %s", loc.str().c_str());
   report["state"] = state;

@@ -383,8 +383,8 @@ std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const R
       if (const auto t = s.binding.transitions[under->index]) {
         const auto& kernel = session->simulation().kernel();
         const std::string& unit = s.layout.transitions[under->index].fluid->unit;
-        tip += "\nflows at " + diagram::amountText(kernel.flowRate(*t)) + " " + unit + " (nominal " +
-               diagram::amountText(kernel.nominalRate(*t)) + " " + unit + ")";
+        tip += "\nflows at " + diagram::rateText(kernel.flowRate(*t), unit) + " (nominal " +
+               diagram::rateText(kernel.nominalRate(*t), unit) + ")";
       }
     }
     // a coloured place's values, a coloured transition's binding while it occurs
