@@ -50,6 +50,7 @@ TEST_F(HybridIde, AContinuousPlacesAmountShowsInTheInspectorTheContentsAndTheNet
   EXPECT_NEAR(r["inspector"]["flow_rate"].get<double>(), 0.3, 1e-12);
   EXPECT_NEAR(r["inspector"]["nominal_rate"].get<double>(), 0.3, 1e-12);
   EXPECT_EQ(r["inspector"]["rate_unit"], "L/s");
+  EXPECT_EQ(r["inspector"]["contents"]["rate"], "0.3");  // as written, no duration
   // the tank crosses 1 L at 3.33 s; `stop` starts at the next step boundary, 3.4 s, taking the
   // mark: the pump is off and drawn idle, the tank holds 0.3 L/s x 3.4 s = 1.02 L
   r = run("- steps: 50\n- select: main/pump\n- frames: 2\n");

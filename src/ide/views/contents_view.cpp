@@ -267,6 +267,20 @@ net::Duration writtenDuration(const session::Session& session, net::TransitionId
 void transitionContents(const session::Session& session, net::TransitionId t, nlohmann::json& report,
                         const FileError& error) {
   const auto& net = session.simulation().net();
+  if (net.continuous(t)) {  // a flow (hybrid nets): its rate as written, no duration
+    std::string rate;
+    const auto& written = session.simulation().model().net;
+    if (const auto at = locateConstruct(written, net.transitionName(t))) {
+      if (const net::PageSpec* page = findPage(written, at->page)) {
+        for (const auto& spec : page->transitions) {
+          if (spec.name == at->name && spec.flow) rate = spec.flow->rate.text;
+        }
+      }
+    }
+    ImGui::Text("continuous, rate %s", rate.c_str());
+    report["rate"] = rate;
+    return;
+  }
   const auto duration = durationText(writtenDuration(session, t));
   ImGui::Text("duration %s", duration.c_str());
   report["duration"] = duration;
