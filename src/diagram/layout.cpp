@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <string_view>
@@ -19,11 +20,12 @@ double instanceWidth(const net::InstanceSpec& inst) {
   return std::max(72.0, 7.0 * static_cast<double>(chars) + 20.0);
 }
 
-Box boxOfNode(ItemKind kind, Point c, double instance_width) {
+// the box of a node at `c`: `width` is an instance box's or a transition's width
+Box boxOfNode(ItemKind kind, Point c, double width) {
   switch (kind) {
     case ItemKind::Place: return Box::around(c, kPlaceRadius, kPlaceRadius);
-    case ItemKind::Transition: return Box::around(c, kBarWidth / 2, kBarHeight / 2);
-    case ItemKind::Instance: return Box::around(c, instance_width / 2, kInstanceHeight / 2);
+    case ItemKind::Transition: return Box::around(c, width / 2, kBarHeight / 2);
+    case ItemKind::Instance: return Box::around(c, width / 2, kInstanceHeight / 2);
     case ItemKind::Arc: break;
   }
   return {c, c};
@@ -193,7 +195,7 @@ void layoutInColumns(NetLayout& l) {
 bool layoutWithGraphviz(NetLayout& l, const std::vector<double>& instance_widths, std::string& why) {
   std::vector<detail::GvNode> nodes;
   for (std::size_t i = 0; i < l.places.size(); ++i) nodes.push_back({2 * kPlaceRadius, 2 * kPlaceRadius, true});
-  for (std::size_t i = 0; i < l.transitions.size(); ++i) nodes.push_back({kBarWidth, kBarHeight, false});
+  for (const auto& t : l.transitions) nodes.push_back({t.fluid ? kFlowWidth : kBarWidth, kBarHeight, false});
   for (double w : instance_widths) nodes.push_back({w, kInstanceHeight, false});
   auto index = [&](ItemRef r) -> std::size_t {
     switch (r.kind) {
@@ -281,10 +283,12 @@ NetLayout layoutPage(const net::PageSpec& page, core::Diagnostics& diags) {
     std::string tag = port ? "port" : "";
     if (!p.fusion.empty()) tag += (tag.empty() ? "fusion " : ", fusion ") + p.fusion;
     l.places.push_back({p.name, at(p.position), {}, std::move(tag)});
+    if (p.fluid) l.places.back().fluid = FluidLook{p.fluid->amount, p.fluid->capacity, p.fluid->unit};
   }
   // a transition's tag: its condition on its binding, in brackets as CPN tools write guards
   for (const auto& t : page.transitions) {
     l.transitions.push_back({t.name, at(t.position), {}, t.conditioned() ? "[" + t.when.text + "]" : std::string()});
+    if (t.flow) l.transitions.back().fluid = FluidLook{0.0, std::nullopt, rateUnit(page, t.name)};
   }
   std::vector<double> widths;
   for (const auto& i : page.instances) {
@@ -311,6 +315,7 @@ NetLayout layoutPage(const net::PageSpec& page, core::Diagnostics& diags) {
     for (const auto& w : a.weights) arc.weight += w.value;
     if (a.weights.empty()) arc.weight = 1;
     arc.inscription = inscription(a.weights);
+    if (a.amount) arc.inscription = *a.amount == 1.0 ? std::string() : amountText(*a.amount);
     // value inscriptions as written (a slot other than a0 named before its text)
     for (const auto& v : a.inscriptions) {
       arc.inscription += (arc.inscription.empty() ? "" : "+") +
@@ -338,7 +343,7 @@ NetLayout layoutPage(const net::PageSpec& page, core::Diagnostics& diags) {
     }
   }
   for (auto& p : l.places) p.box = boxOfNode(ItemKind::Place, p.centre, 0);
-  for (auto& t : l.transitions) t.box = boxOfNode(ItemKind::Transition, t.centre, 0);
+  for (auto& t : l.transitions) t.box = boxOfNode(ItemKind::Transition, t.centre, t.fluid ? kFlowWidth : kBarWidth);
   for (std::size_t i = 0; i < l.instances.size(); ++i)
     l.instances[i].box = boxOfNode(ItemKind::Instance, l.instances[i].centre, widths[i]);
   // routes: straight or through the bend points; Graphviz's where it placed the nodes, but
@@ -381,6 +386,33 @@ void relayoutMoved(NetLayout& l, const net::PageSpec& page, const std::vector<It
   for (std::size_t k = 0; k < l.arcs.size(); ++k) arc_moved[k] = item_moved[flat(l.arcs[k].from)] | item_moved[flat(l.arcs[k].to)];
   routeStraight(l, page, &arc_moved);
   placeLabelsAndBound(l, page, &arc_moved);
+}
+
+std::string rateUnit(const net::PageSpec& page, const std::string& name) {
+  const auto unitOf = [&](const std::string& place) -> const std::string* {
+    for (const auto& p : page.places) {
+      if (p.name == place && p.fluid && !p.fluid->unit.empty()) return &p.fluid->unit;
+    }
+    return nullptr;
+  };
+  for (const bool output : {true, false}) {
+    for (const auto& a : page.arcs) {
+      if (a.kind != net::ArcKind::Normal) continue;
+      if ((output ? a.from : a.to) != name) continue;
+      if (const auto* u = unitOf(output ? a.to : a.from)) return *u + "/s";
+    }
+  }
+  return "/s";
+}
+
+std::string rateText(double rate, const std::string& unit) {
+  return unit.starts_with("/") ? amountText(rate) + unit : amountText(rate, unit);
+}
+
+std::string amountText(double amount, const std::string& unit) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", amount == 0.0 ? 0.0 : amount);  // never "-0"
+  return unit.empty() ? std::string(buf) : std::string(buf) + " " + unit;
 }
 
 std::string inscription(const std::vector<net::SlotCount>& weights) {

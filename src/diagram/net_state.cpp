@@ -96,7 +96,25 @@ NetState netStateOf(const net::Kernel& kernel, const PageBinding& binding, const
       }
       if (m.kind == net::SlotKind::Node)
         for (net::NodeRef ref : kernel.nodes(ps)) m.names.push_back(nameOf(ref));
+      if (m.kind == net::SlotKind::Continuous) continue;  // its amount, below
       if (m.count > 0) s.places[i].push_back(std::move(m));
+    }
+  }
+  // the continuous part: amounts, capacities, rates
+  const net::Fluid* fluid = net.fluid();
+  s.amounts.assign(binding.places.size(), std::nullopt);
+  s.capacities.assign(binding.places.size(), net::kNoBound);
+  s.flow_rates.assign(binding.transitions.size(), std::nullopt);
+  if (fluid != nullptr) {
+    for (std::size_t i = 0; i < binding.places.size(); ++i) {
+      const auto p = binding.places[i];
+      if (!p || fluid->of_place[*p] < 0) continue;
+      s.amounts[i] = kernel.amount(*p);
+      s.capacities[i] = fluid->places[static_cast<std::size_t>(fluid->of_place[*p])].capacity;
+    }
+    for (std::size_t i = 0; i < binding.transitions.size(); ++i) {
+      const auto t = binding.transitions[i];
+      if (t && fluid->continuous(*t)) s.flow_rates[i] = kernel.flowRate(*t);
     }
   }
   // transitions: the kernel's own answer (what the last firing phase found), read, not evaluated
@@ -109,12 +127,18 @@ NetState netStateOf(const net::Kernel& kernel, const PageBinding& binding, const
     s.readiness[i] = kernel.readiness(t);
     s.transitions[i] = kernel.occurring(t) ? Activity::Occurring : activityOf(s.readiness[i]);
     s.occurrences[i] = static_cast<std::uint32_t>(kernel.occurrences(t));
+    // a flow never fires: enabled while it moves an amount, idle when off or cut to nothing
+    if (s.flow_rates[i]) s.transitions[i] = *s.flow_rates[i] != 0.0 ? Activity::Enabled : Activity::Idle;
   }
   // arcs: the terms of the arc's transition on the arc's place, inputs or outputs by its direction
   s.arcs.assign(binding.arcs.size(), std::nullopt);
   for (std::size_t a = 0; a < binding.arcs.size(); ++a) {
     const auto [t, p, output] = binding.arcs[a];
     if (!t || !p) continue;
+    if (net.continuous(*t)) {  // a flow's arcs hold while it flows
+      s.arcs[a] = kernel.flowRate(*t) != 0.0;
+      continue;
+    }
     const auto first = net.transitions()[*t].terms_begin;
     bool any = false, all = true;
     const auto terms = net.termsOf(*t);

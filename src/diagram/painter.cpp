@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <string>
+#include <vector>
 
 namespace gdpn::diagram {
 namespace {
@@ -235,6 +237,10 @@ class Painter {
     const NodeLayout& t = l_.transitions[k];
     const Activity a = s_ != nullptr && k < s_->transitions.size() ? s_->transitions[k] : Activity::Idle;
     const Box b{v_.toScreen(t.box.min), v_.toScreen(t.box.max)};
+    if (t.fluid) {
+      flow(k, t, a, b);
+      return;
+    }
     // a bar at least a pixel and a half wide, so that it shows when zoomed out
     const double grow = std::max(0.0, (1.5 - b.width()) / 2);
     const Box bar{{b.min.x - grow, b.min.y}, {b.max.x + grow, b.max.y}};
@@ -271,6 +277,7 @@ class Painter {
       // zoomed far out: a square the place's size (a pixel at least), in its tokens' colour
       // when it holds any, so that the marking still shows
       Rgba colour = colours::kOutline;
+      if (p.fluid && amountOf(k, *p.fluid).first > 0) colour = colours::kContinuous;
       if (s_ != nullptr && k < s_->places.size()) {
         for (const auto& slot : s_->places[k]) {
           if (slot.count > 0) {
@@ -285,7 +292,8 @@ class Painter {
     }
     c_.fillCircle(c, r, colours::kBackground);
     c_.strokeCircle(c, r, std::max(kOutlineWidth * v_.zoom, 1.0), colours::kOutline);
-    if (s_ != nullptr && k < s_->places.size()) tokens(s_->places[k], c, r);
+    if (p.fluid) level(k, *p.fluid, c, r);
+    else if (s_ != nullptr && k < s_->places.size()) tokens(s_->places[k], c, r);
     taken_.push_back(Box::around(c, r, r));
     if (labels_) name({c.x, c.y + r + kLabelGap * v_.zoom}, p.name, VAlign::Top);
     if (labels_ && !p.tag.empty()) {
@@ -298,6 +306,86 @@ class Painter {
   }
 
  private:
+  // a continuous place's amount and capacity: the run's, else the spec's
+  [[nodiscard]] std::pair<double, double> amountOf(std::size_t k, const FluidLook& look) const {
+    if (s_ != nullptr && k < s_->amounts.size() && s_->amounts[k]) {
+      return {*s_->amounts[k], k < s_->capacities.size() ? s_->capacities[k] : net::kNoBound};
+    }
+    return {look.amount, look.capacity.value_or(net::kNoBound)};
+  }
+
+  // a continuous place (hybrid nets): a double circle, filled from the bottom up to its level
+  // (amount over capacity), its amount and unit written inside, else beside it
+  void level(std::size_t k, const FluidLook& look, Point c, double r) {
+    const double ri = kInnerCircle * r;
+    const auto [amount, capacity] = amountOf(k, look);
+    if (std::isfinite(capacity) && capacity > 0 && amount > 0) {
+      const double f = std::clamp(amount / capacity, 0.0, 1.0);
+      if (f >= 1.0) {
+        c_.fillCircle(c, ri, colours::kContinuous);
+      } else {
+        // the segment of the inner disc below the level line: convex, an arc and its chord
+        const double start = std::asin(std::clamp(1.0 - 2.0 * f, -1.0, 1.0));  // from the centre, y down
+        constexpr int kSteps = 32;
+        std::vector<Point> seg;
+        for (int i = 0; i <= kSteps; ++i) {
+          const double th = start + (std::numbers::pi - 2 * start) * i / kSteps;
+          seg.push_back({c.x + ri * std::cos(th), c.y + ri * std::sin(th)});
+        }
+        c_.fillPolygon(seg, colours::kContinuous);
+      }
+    }
+    c_.strokeCircle(c, ri, std::max(kOutlineWidth * 0.75 * v_.zoom, 1.0), colours::kOutline);
+    if (!labels_) return;
+    const std::string text = amountText(amount, look.unit);
+    // inside the inner circle, as large as names where it fits there at 4/5 of their size;
+    // else across the inner outline, on a patch, down to 7/10; else beside the place
+    const double wide = c_.textWidth(text, font_);
+    const auto fit = [&](double room) { return wide > room ? font_ * room / wide : font_; };
+    double size = fit(1.85 * ri);
+    if (size < std::max(kMinFontPx, 0.8 * font_)) size = fit(1.6 * r);
+    if (size >= std::max(kMinFontPx, 0.7 * font_)) {
+      Label l{text, size, HAlign::Centre, VAlign::Middle, colours::kOutline, {c}};
+      const Box box = labelBox(c_, l, c);
+      c_.fillRect({{box.min.x + 1, box.min.y + 0.1 * size}, {box.max.x - 1, box.max.y - 0.1 * size}}, kAmountPatch);
+      c_.text(c, text, size, HAlign::Centre, VAlign::Middle, colours::kOutline);
+      return;
+    }
+    // beside it, where it covers least
+    Label l{text, std::max(font_ * 0.9, kMinFontPx), HAlign::Left, VAlign::Middle, colours::kOutline, {}};
+    l.anchors = {{c.x + r + 3, c.y}, {c.x - r - 3 - c_.textWidth(text, l.size), c.y}, {c.x + 0.7 * r, c.y - r - l.size}};
+    pending_.push_back(std::move(l));
+  }
+
+  // a continuous transition (hybrid nets): a hollow box with a double border, in the enabled
+  // colour while it flows, its rate beside it
+  void flow(std::size_t k, const NodeLayout& t, Activity a, const Box& b) {
+    const Rgba colour = activityColour(a);
+    taken_.push_back(b);
+    if (coarse_ || b.width() < 6.0) {
+      c_.fillRect(b, colour);
+    } else {
+      const double w = std::max(kOutlineWidth * 0.75 * v_.zoom, 1.0);
+      const double inset = std::max(0.22 * b.width(), 2.0 * w + 1.0);
+      c_.fillRect(b, colours::kBackground);
+      c_.strokeRect(b, w, colour);
+      c_.strokeRect({{b.min.x + inset, b.min.y + inset}, {b.max.x - inset, b.max.y - inset}}, w, colour);
+    }
+    if (!labels_) return;
+    name({(b.min.x + b.max.x) / 2, b.min.y - kLabelGap * v_.zoom}, t.name, VAlign::Bottom);
+    const double rate = s_ != nullptr && k < s_->flow_rates.size() && s_->flow_rates[k] ? *s_->flow_rates[k] : 0.0;
+    if (rate == 0.0) return;
+    const std::string& unit = t.fluid->unit;
+    const std::string text = rateText(rate, unit);
+    Label l{text, std::max(font_ * 0.9, kMinFontPx), HAlign::Left, VAlign::Middle, colours::kEnabled, {}};
+    const double mid = (b.min.y + b.max.y) / 2, gap = 3.0 + kLabelGap * v_.zoom;
+    // under the box first: its arcs mostly leave by its sides
+    l.anchors = {{(b.min.x + b.max.x) / 2 - c_.textWidth(text, l.size) / 2, b.max.y + gap + l.size / 2},
+                 {b.max.x + gap, mid},
+                 {b.min.x - gap - c_.textWidth(text, l.size), mid}};
+    pending_.push_back(std::move(l));
+  }
+
   // a construct's name: drawn in the label pass, over the arcs, on a white patch
   void name(Point at, const std::string& text, VAlign v) {
     Label l{text, font_, HAlign::Centre, v, colours::kOutline, {at}};
@@ -348,6 +436,7 @@ class Painter {
   std::vector<Label> pending_;                  // weights and link names, placed last
   std::vector<Box> taken_;                      // what labels should not cover: shapes and placed labels, pixels
   static constexpr Rgba kPatch{255, 255, 255, 200};
+  static constexpr Rgba kAmountPatch{255, 255, 255, 150};  // under an amount, over its level
 };
 
 }  // namespace

@@ -174,6 +174,12 @@ struct InspectorState {
   ScriptEditing scripts;            ///< the contents view's script editor
   InscriptionEditing inscriptions;  ///< the fields of value slots, arcs' inscriptions and conditions
   net::SlotId contents_slot = net::kDefaultSlot;  ///< the slot the contents view edits
+  std::string amount_error;         ///< why the run refused the amount last set in the contents view (hybrid nets)
+  std::string amount_error_of;      ///< the place it was set on
+  std::int64_t amount_error_step = -1;  ///< the run's step count then (the refusal shows until the run moves on)
+  std::string rate_text;            ///< a continuous transition's rate as being typed
+  std::string rate_of;              ///< the transition (page/name) whose rate rate_text holds
+  bool rate_active = false;         ///< the rate field had the keyboard last frame
   std::unique_ptr<PictureTexture> picture_texture;  ///< a camera sensor's picture
 };
 

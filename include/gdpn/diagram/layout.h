@@ -27,6 +27,11 @@ inline constexpr double kPlaceRadius = 18.0;
 inline constexpr double kBarWidth = 8.0;
 /// Height of a transition's bar, layout units.
 inline constexpr double kBarHeight = 36.0;
+/// Width of a continuous transition's box (hybrid nets: hollow, double-bordered), layout units.
+inline constexpr double kFlowWidth = 16.0;
+/// The inner outline of a continuous place (hybrid nets: a double circle), its radius as a
+/// share of kPlaceRadius.
+inline constexpr double kInnerCircle = 0.78;
 /// Height of an instance box, layout units (its width follows its name).
 inline constexpr double kInstanceHeight = 40.0;
 /// The most constructs Graphviz lays out on one page (about 1.5 s at 4,000 on one core); a
@@ -48,6 +53,16 @@ struct ItemRef {
   friend auto operator<=>(const ItemRef&, const ItemRef&) = default;
 };
 
+/// What the picture shows of a continuous place or transition (hybrid nets) without a run:
+/// the spec's.
+struct FluidLook {
+  double amount = 0.0;              ///< a place's initial amount, in its unit
+  std::optional<double> capacity{}; ///< a place's capacity, in its unit (none: unbounded)
+  /// A place's unit ("L", "" for none); a transition's rate's unit: its first output's (else
+  /// input's) continuous place's unit per second, "L/s", else "/s".
+  std::string unit{};
+};
+
 /// A place, a transition or an instance box: its centre and its box, layout units.
 struct NodeLayout {
   std::string name;  ///< the construct's name on the page
@@ -57,6 +72,8 @@ struct NodeLayout {
   /// place its page type publishes, "fusion NAME" for a member of a fusion set, both joined by
   /// ", "; a transition's: its condition in brackets, "[x > 1]"; "" for none.
   std::string tag{};
+  /// Set for a continuous place or transition (hybrid nets): drawn as such.
+  std::optional<FluidLook> fluid{};
 };
 
 /// An instance box: the instance's name and its page type.
@@ -71,7 +88,9 @@ struct ArcLayout {
   std::string link;              ///< for an arc to or from an instance: the reference's name, else ""
   net::ArcKind kind = net::ArcKind::Normal;  ///< normal, test or inhibitor
   std::int64_t weight = 1;       ///< total weight over its slots, tokens
-  std::string inscription;       ///< what the arc's label says: "" for weight 1 on a0, "3" for weight 3 on a0, else its slots ("b0..b4", "2·a1+c0")
+  /// What the arc's label says: "" for weight 1 on a0, "3" for weight 3 on a0, else its slots
+  /// ("b0..b4", "2·a1+c0"); a real weight on a continuous place as amountText() writes it ("2.5").
+  std::string inscription;
   std::uint32_t spec_index = 0;  ///< the arc's index in PageSpec::arcs (NetState::arcs is indexed by it)
   std::vector<Point> points;     ///< at least two points: start, bends, end (the end touches the target)
   /// True when the bends (points[1 .. size-2]) are the spec's `via`, one for one; false for a
@@ -107,6 +126,17 @@ NetLayout layoutPage(const net::PageSpec& page, core::Diagnostics& diags);
 /// (positions, and the bends of arcs whose ends moved together) changed it, and not laid out by
 /// Graphviz (NetLayout::from_graphviz false).
 void relayoutMoved(NetLayout& l, const net::PageSpec& page, const std::vector<ItemRef>& moved);
+
+/// An amount as the net view writes it: at most 4 significant digits, no trailing zeros
+/// ("12.5", "0.3", "1e+04"), then " " and `unit` when there is one ("12.5 L").
+[[nodiscard]] std::string amountText(double amount, const std::string& unit = {});
+
+/// The unit of continuous transition `name`'s rate on `page` (hybrid nets): its first
+/// output's continuous place's unit per second ("L/s"), else its first input's, else "/s".
+[[nodiscard]] std::string rateUnit(const net::PageSpec& page, const std::string& name);
+
+/// A rate as the net view writes it: amountText() and its unit ("0.3 L/s", "0.3/s").
+[[nodiscard]] std::string rateText(double rate, const std::string& unit);
 
 /// The label of an arc with these weights (see ArcLayout::inscription).
 [[nodiscard]] std::string inscription(const std::vector<net::SlotCount>& weights);

@@ -3,7 +3,8 @@
 /// What the net view shows of a running net: per place slot its kind, tokens and token
 /// names; per transition whether it is idle, enabled, held back (its marking suffices, its
 /// guard, a predicate or a condition does not) or occurring; per arc whether its condition
-/// holds. Made from the kernel at its current time; plain data, so the IDE and the
+/// holds; per continuous place its amount and per continuous transition its rate (hybrid
+/// nets: a flow is enabled while its effective rate is not 0, idle otherwise). Made from the kernel at its current time; plain data, so the IDE and the
 /// CLI draw the same thing.
 
 #include <cstdint>
@@ -46,6 +47,14 @@ struct NetState {
   std::vector<net::Readiness> readiness;
   std::vector<std::uint32_t> occurrences;         ///< per transition: its occurrences running now
   std::vector<std::optional<bool>> arcs;          ///< per arc of PageSpec::arcs: whether it holds (nullopt: unknown)
+  /// Per place: a continuous place's amount now, in its unit (nullopt: a discrete place, or
+  /// one the net lacks). Hybrid nets.
+  std::vector<std::optional<double>> amounts{};
+  /// Per place: a continuous place's capacity, in its unit (net::kNoBound: unbounded).
+  std::vector<double> capacities{};
+  /// Per transition: a continuous transition's effective rate now, units of its places per
+  /// second (nullopt: a discrete transition, or one the net lacks). Hybrid nets.
+  std::vector<std::optional<double>> flow_rates{};
 };
 
 /// Names a node token (the kernel knows only references).

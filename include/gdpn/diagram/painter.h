@@ -12,6 +12,12 @@
 ///   with no arrowhead (they take nothing); an arc is green while its condition holds and
 ///   grey while not; inscriptions (weights above 1, or the slots: "b0..b4") stand beside
 ///   the arc's middle;
+/// - hybrid nets: a continuous place is a double circle filled from the bottom in
+///   colours::kContinuous up to its level (amount over capacity; no fill when unbounded),
+///   its amount and unit written inside ("12.5 L"; beside it when too small to read); a
+///   continuous transition is a hollow box with a double border, green while it flows (its
+///   effective rate beside it: "0.3 L/s") and dark grey while it does not; without a run,
+///   the spec's initial amounts;
 /// - names stand under places and above transitions; instance boxes show the instance's
 ///   name and its type, and arcs to them the reference's name.
 /// Text is never drawn below kMinFontPx: when zoomed out that far, names are left out.

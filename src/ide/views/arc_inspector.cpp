@@ -76,6 +76,46 @@ bool expressionRow(const char* what, net::SlotId slot, std::vector<net::SlotPred
   return changed;
 }
 
+/// The continuous place at either end of `arc` on page `page` (hybrid nets); null for none.
+const net::PlaceSpec* continuousEnd(App& app, const std::string& page, const net::ArcSpec& arc) {
+  const auto* spec = findPage(app.document().model().net, page);
+  if (spec == nullptr) return nullptr;
+  for (const auto& p : spec->places) {
+    if ((p.name == arc.from || p.name == arc.to) && p.continuous()) return &p;
+  }
+  return nullptr;
+}
+
+/// The weight of an arc with a continuous place: a real number in the place's unit (1 when
+/// none is written), applied when the field is left; a threshold for a test or an inhibitor arc.
+void realWeight(App& app, const std::string& page, const net::ArcSpec& was, const net::PlaceSpec& place,
+                nlohmann::json& report) {
+  const double weight = was.amount.value_or(1.0);
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted(was.kind == net::ArcKind::Normal ? "weight" : "threshold");
+  ImGui::SameLine(150);
+  ImGui::SetNextItemWidth(110);
+  double typed = weight;
+  ImGui::InputDouble("##amount", &typed, 0, 0, "%g");
+  noteItem("weight", report["fields"]);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("%s", was.kind == net::ArcKind::Normal
+                                ? "the amount it moves (a continuous transition: per unit of its rate), in the place's unit"
+                                : "the amount it compares the place's with, in the place's unit");
+  }
+  const bool left = ImGui::IsItemDeactivatedAfterEdit();
+  ImGui::SameLine();
+  ImGui::TextDisabled("%s  (continuous place %s)", place.fluid->unit.c_str(), place.name.c_str());
+  report["weight"] = weight;
+  if (left && typed != weight) {
+    net::ArcSpec next = was;
+    next.amount = typed;
+    next.weights.clear();
+    if (typed == 1.0) next.amount.reset();  // 1 is what an arc without a weight means
+    (void)setArc(app, page, was, next);
+  }
+}
+
 }  // namespace
 
 void arcInspector(App& app, const Selection& sel, nlohmann::json& report) {
@@ -116,6 +156,12 @@ void arcInspector(App& app, const Selection& sel, nlohmann::json& report) {
   ImGui::SameLine();
   if (ImGui::Button("Delete")) (void)performAction(app, ActionId::Delete);
   noteItem("Delete", report["buttons"]);
+  // an arc with a continuous place (hybrid nets): one real weight, in the place's unit
+  if (const net::PlaceSpec* fluid = continuousEnd(app, page, was)) {
+    realWeight(app, page, was, *fluid, report);
+    ImGui::EndDisabled();
+    return;
+  }
   // the weight on each slot (none written: 1 on a0)
   // a slot with an inscription has no weight: the inscription says what moves
   const auto inscribed = [&](net::SlotId slot) {

@@ -10,12 +10,16 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <string_view>
 #include <utility>
 
 #include "../views.h"
+#include "net_view_state.h"
+#include "gdpn/core/expression.h"
 #include "gdpn/core/text.h"
+#include "gdpn/diagram/layout.h"
 #include "gdpn/net/script_kind.h"
 #include "gdpn/net/slot.h"
 #include "gdpn/ide/colour_edit.h"
@@ -111,10 +115,75 @@ void scriptBlock(const net::ScriptSpec& script, std::string_view heading, nlohma
   report["scripts"].push_back(entry);
 }
 
-void placeContents(const session::Session& session, net::PlaceId p, nlohmann::json& report, const FileError& error) {
+/// The colour of amounts (hybrid nets): the net view's colours::kContinuous.
+ImVec4 levelColour() { return {0.09f, 0.75f, 0.81f, 1.0f}; }
+
+/// A continuous place in the run (hybrid nets): its amount as a level, a bar of its capacity
+/// with the amount and unit on it, and the room promised to occurring transitions; while the
+/// run is paused, a field that sets the amount (Kernel::setAmount; its refusal shown under it).
+void levelContents(App& app, session::Session& session, net::PlaceId p, nlohmann::json& report) {
+  auto& kernel = session.simulation().kernel();
+  const net::Fluid& fluid = *session.simulation().net().fluid();
+  const net::FluidPlace& fp = fluid.places[static_cast<std::size_t>(fluid.of_place[p])];
+  const double amount = kernel.amount(p), reserved = kernel.amountReserved(p);
+  const bool bounded = std::isfinite(fp.capacity);
+  const std::string text = bounded ? diagram::amountText(amount) + " of " + diagram::amountText(fp.capacity, fp.unit)
+                                   : diagram::amountText(amount, fp.unit) + " (unbounded)";
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted("level");
+  ImGui::SameLine(80);
+  ImGui::PushStyleColor(ImGuiCol_PlotHistogram, levelColour());
+  ImGui::ProgressBar(bounded && fp.capacity > 0 ? static_cast<float>(amount / fp.capacity) : 0.0f, {280, 0}, text.c_str());
+  ImGui::PopStyleColor();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("the amount on the place now, of its capacity");
+  noteItem("level", report["fields"]);
+  report["amount"] = amount;
+  report["capacity"] = bounded ? nlohmann::json(fp.capacity) : nlohmann::json();
+  report["unit"] = fp.unit;
+  report["reserved"] = reserved;
+  report["level_text"] = text;
+  if (reserved > 0) ImGui::TextDisabled("room promised to occurring transitions: %s", diagram::amountText(reserved, fp.unit).c_str());
+  if (app.run().mode() != RunMode::Paused) {
+    ImGui::TextDisabled("Pause the run to set its amount.");
+    return;
+  }
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted("set to");
+  ImGui::SameLine(80);
+  double typed = amount;
+  ImGui::SetNextItemWidth(120);
+  const bool entered = ImGui::InputDouble("##amount", &typed, 0, 0, "%g", ImGuiInputTextFlags_EnterReturnsTrue);
+  noteItem("set amount", report["fields"]);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("a new amount, in %s; Enter sets it", fp.unit.empty() ? "its unit" : fp.unit.c_str());
+  if (!fp.unit.empty()) {
+    ImGui::SameLine();
+    ImGui::TextUnformatted(fp.unit.c_str());
+  }
+  const std::string& name = session.simulation().net().placeName(p);
+  if (entered) {
+    app.inspector.amount_error = kernel.setAmount(p, typed);
+    app.inspector.amount_error_of = name;
+    app.inspector.amount_error_step = app.run().steps();
+    app.netView().state_kernel = nullptr;  // the net view draws the new amount
+  }
+  // the refusal of this place's last amount, until the run moves on
+  const bool refused = app.inspector.amount_error_of == name && app.inspector.amount_error_step == app.run().steps();
+  if (refused && !app.inspector.amount_error.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4{1.0f, 0.45f, 0.4f, 1.0f});
+    ImGui::TextWrapped("%s", app.inspector.amount_error.c_str());
+    ImGui::PopStyleColor();
+  }
+  report["amount_error"] = refused ? app.inspector.amount_error : std::string();
+}
+
+void placeContents(App& app, session::Session& session, net::PlaceId p, nlohmann::json& report, const FileError& error) {
   const auto& sim = session.simulation();
   const auto& net = sim.net();
   const auto& place = net.places()[p];
+  if (net.continuousPlace(p)) {
+    levelContents(app, session, p, report);
+    return;
+  }
   // the 8 x 4 grid: rows a to d, columns 0 to 7, as the model file names slots
   nlohmann::json slots = nlohmann::json::object();
   if (ImGui::BeginTable("##slots", 8, ImGuiTableFlags_SizingFixedSame)) {
@@ -198,6 +267,20 @@ net::Duration writtenDuration(const session::Session& session, net::TransitionId
 void transitionContents(const session::Session& session, net::TransitionId t, nlohmann::json& report,
                         const FileError& error) {
   const auto& net = session.simulation().net();
+  if (net.continuous(t)) {  // a flow (hybrid nets): its rate as written, no duration
+    std::string rate;
+    const auto& written = session.simulation().model().net;
+    if (const auto at = locateConstruct(written, net.transitionName(t))) {
+      if (const net::PageSpec* page = findPage(written, at->page)) {
+        for (const auto& spec : page->transitions) {
+          if (spec.name == at->name && spec.flow) rate = spec.flow->rate.text;
+        }
+      }
+    }
+    ImGui::Text("continuous, rate %s", rate.c_str());
+    report["rate"] = rate;
+    return;
+  }
   const auto duration = durationText(writtenDuration(session, t));
   ImGui::Text("duration %s", duration.c_str());
   report["duration"] = duration;
@@ -481,9 +564,124 @@ void pathScripts(const net::PageSpec& page, const std::string& place, net::SlotI
   report["path_scripts"] = shown["scripts"];
 }
 
+/// A place made continuous (hybrid nets): its tokens become its amount, its a0 capacity its
+/// capacity; what only discrete places have (slot kinds, nodes, scripts, sensors, colours) goes.
+net::PlaceSpec madeContinuous(const net::PlaceSpec& place) {
+  net::PlaceSpec p = place;
+  net::FluidSpec f;
+  f.loc = place.loc;
+  f.amount = static_cast<double>(std::max<std::int64_t>(slotCount(place.tokens, net::kDefaultSlot).value_or(0), 0));
+  if (const auto cap = slotCount(place.capacity, net::kDefaultSlot)) f.capacity = static_cast<double>(*cap);
+  p.kinds.clear();
+  p.tokens.clear();
+  p.nodes.clear();
+  p.capacity.clear();
+  p.scripts.clear();
+  p.sensors.clear();
+  p.colours.clear();
+  p.values.clear();
+  p.fluid = std::move(f);
+  return p;
+}
+
+/// A continuous place made discrete: its whole amount becomes tokens on a0, its capacity a0's.
+net::PlaceSpec madeDiscrete(const net::PlaceSpec& place) {
+  net::PlaceSpec p = place;
+  if (!place.fluid) return p;
+  const auto whole = [](double x) { return static_cast<std::int64_t>(std::floor(x)); };
+  if (whole(place.fluid->amount) > 0) p.tokens = {{net::kDefaultSlot, whole(place.fluid->amount)}};
+  if (place.fluid->capacity) p.capacity = {{net::kDefaultSlot, whole(*place.fluid->capacity)}};
+  p.fluid.reset();
+  return p;
+}
+
+/// The checkbox that makes a place continuous (hybrid nets) or discrete, one undoable edit.
+void continuousPlaceBox(App& app, const ConstructAt& at, const net::PlaceSpec& place, nlohmann::json& report) {
+  bool on = place.continuous();
+  if (ImGui::Checkbox("continuous", &on)) commitPlace(app, at, on ? madeContinuous(place) : madeDiscrete(place));
+  noteItem("continuous", report["fields"]);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("a continuous place holds a real amount (litres, kg, Ah) rather than tokens (hybrid nets)");
+  }
+  report["continuous"] = place.continuous();
+}
+
+/// A continuous place's amount, capacity and unit, each committed when its field is left.
+void fluidPlaceFields(App& app, const ConstructAt& at, const net::PlaceSpec& place, nlohmann::json& report) {
+  const net::FluidSpec& f = *place.fluid;
+  nlohmann::json& fields = report["fields"];
+  auto next = place;
+  bool changed = false;
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted("amount");
+  ImGui::SameLine(100);
+  double amount = f.amount;
+  ImGui::SetNextItemWidth(110);
+  ImGui::InputDouble("##fluid_amount", &amount, 0, 0, "%g");
+  noteItem("amount", fields);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("the amount it holds at the start, in its unit (0 or more)");
+  if (ImGui::IsItemDeactivatedAfterEdit() && amount != f.amount) {
+    next.fluid->amount = amount;
+    changed = true;
+  }
+  ImGui::SameLine();
+  ImGui::TextDisabled("%s", f.unit.c_str());
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted("capacity");
+  ImGui::SameLine(100);
+  bool bounded = f.capacity.has_value();
+  if (ImGui::Checkbox("##bounded", &bounded)) {
+    next.fluid->capacity = bounded ? std::optional<double>(std::max(f.amount, 1.0)) : std::nullopt;
+    changed = true;
+  }
+  noteItem("bounded", fields);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("bounded: it holds at most its capacity; unticked: unbounded");
+  ImGui::SameLine();
+  if (bounded && f.capacity) {
+    double capacity = *f.capacity;
+    ImGui::SetNextItemWidth(80);
+    ImGui::InputDouble("##fluid_capacity", &capacity, 0, 0, "%g");
+    noteItem("capacity", fields);
+    if (ImGui::IsItemDeactivatedAfterEdit() && capacity != *f.capacity) {
+      next.fluid->capacity = capacity;
+      changed = true;
+    }
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", f.unit.c_str());
+  } else {
+    ImGui::TextDisabled("unbounded");
+  }
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted("unit");
+  ImGui::SameLine(100);
+  std::string unit = f.unit;
+  ImGui::SetNextItemWidth(110);
+  ImGui::InputTextWithHint("##fluid_unit", "L, kg, Ah", &unit);
+  noteItem("unit", fields);
+  if (ImGui::IsItemDeactivatedAfterEdit() && unit != f.unit) {
+    next.fluid->unit = unit;
+    changed = true;
+  }
+  report["amount"] = f.amount;
+  report["capacity"] = f.capacity ? nlohmann::json(*f.capacity) : nlohmann::json();
+  report["unit"] = f.unit;
+  report["editable"] = true;
+  if (!f.drives.empty()) {
+    std::string drives;
+    for (const auto& d : f.drives) drives += (drives.empty() ? "" : ", ") + d.node + "." + d.field;
+    ImGui::TextDisabled("drives %s", drives.c_str());
+  }
+  if (changed) commitPlace(app, at, std::move(next));
+}
+
 void editPlace(App& app, const ConstructAt& at, const net::PlaceSpec& place, const net::PageSpec& page,
                nlohmann::json& report) {
   const std::string construct = at.page + "/" + at.name;
+  continuousPlaceBox(app, at, place, report);
+  if (place.continuous()) {
+    fluidPlaceFields(app, at, place, report);
+    return;
+  }
   nlohmann::json slots = nlohmann::json::object();
   nlohmann::json grid = nlohmann::json::object();
   if (ImGui::BeginTable("##slots", 8, ImGuiTableFlags_SizingFixedSame)) {
@@ -567,9 +765,121 @@ void editPlace(App& app, const ConstructAt& at, const net::PlaceSpec& place, con
   }
 }
 
-void editTransition(App& app, const ConstructAt& at, const net::TransitionSpec& t, nlohmann::json& report) {
+/// Why `rate` is not a rate of a continuous transition on `page` (hybrid nets), located in
+/// it ("column 3: no name 'tnak' ..."); "" when it compiles. A rate names the continuous
+/// places of its page, its reads and the model's parameters.
+std::string rateError(const std::string& rate, const net::PageSpec& page, const net::FlowSpec& flow) {
+  if (rate.empty()) return "a continuous transition needs a rate ('0.5', units per second)";
+  std::vector<std::string> known;
+  for (const auto& p : page.places) {
+    if (p.continuous()) known.push_back(p.name);
+  }
+  for (const auto& r : flow.reads) known.push_back(r.name);
+  for (const auto& [name, value] : flow.params) known.push_back(name);
+  const auto resolve = [&](std::string_view name) -> std::optional<std::uint32_t> {
+    const auto it = std::find(known.begin(), known.end(), name);
+    if (it == known.end()) return std::nullopt;
+    return static_cast<std::uint32_t>(it - known.begin());
+  };
+  core::ExpressionError error;
+  if (core::compileExpression(rate, resolve, error, known)) return {};
+  std::string why = "rate, column " + std::to_string(error.column + 1) + ": " + error.message;
+  if (error.message.rfind("no name", 0) == 0) {
+    why += " (a rate names the continuous places of its page, its reads and the model's parameters)";
+  }
+  return why;
+}
+
+/// A transition made continuous (hybrid nets): a flow at rate 1 that names the model's
+/// parameters; what only firing transitions have (duration, priority, probability, servers,
+/// condition, scripts) goes.
+net::TransitionSpec madeFlow(const net::TransitionSpec& t, const model::Model& model) {
+  net::TransitionSpec next = t;
+  net::FlowSpec f;
+  f.loc = t.loc;
+  f.rate.text = "1";
+  f.rate.loc = t.loc;
+  for (const auto& p : model.params) f.params.emplace_back(p.name, p.value);
+  next.duration = net::Duration{};
+  next.priority = 0;
+  next.probability = 1.0;
+  next.servers = 1;
+  next.priority_param.clear();
+  next.probability_param.clear();
+  next.servers_param.clear();
+  next.guard = {};
+  next.pre_fire = {};
+  next.in_fire = {};
+  next.post_fire = {};
+  next.when = {};
+  next.flow = std::move(f);
+  return next;
+}
+
+/// A continuous transition's fields (hybrid nets): its rate, checked as typed and committed
+/// when it compiles and the field is left, and its reads.
+void flowFields(App& app, const ConstructAt& at, const net::TransitionSpec& t, const net::PageSpec& page,
+                nlohmann::json& report) {
   const std::string construct = at.page + "/" + at.name;
-  nlohmann::json fields;
+  auto& edit = app.inspector;
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted("rate");
+  ImGui::SameLine(100);
+  ImGui::SetNextItemWidth(220);
+  if (!edit.rate_active || edit.rate_of != construct) {  // not being typed: the model's
+    edit.rate_of = construct;
+    edit.rate_text = t.flow->rate.text;
+  }
+  ImGui::InputTextWithHint("##rate", "0.5, k * tank", &edit.rate_text);
+  edit.rate_active = ImGui::IsItemActive();
+  const bool left = ImGui::IsItemDeactivatedAfterEdit();
+  noteItem("rate", report["fields"]);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("units per second per unit of arc weight: a number, or an expression over the amounts of "
+                      "the continuous places of its page, its reads and the model's parameters");
+  }
+  const std::string why = rateError(edit.rate_text, page, *t.flow);
+  ImGui::SameLine();
+  ImGui::TextDisabled("%s", diagram::rateUnit(page, at.name).c_str());
+  if (!why.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4{1.0f, 0.45f, 0.4f, 1.0f});
+    ImGui::TextWrapped("%s", why.c_str());
+    ImGui::PopStyleColor();
+  }
+  if (left && why.empty() && edit.rate_text != t.flow->rate.text) {
+    auto next = t;
+    next.flow->rate.text = edit.rate_text;
+    next.flow->rate.layout.clear();
+    if (next.flow->rate.loc.line <= 0) next.flow->rate.loc = t.loc;
+    commitTransition(app, at, std::move(next));
+  }
+  report["rate"] = t.flow->rate.text;
+  report["rate_typed"] = edit.rate_text;
+  report["rate_error"] = why;
+  for (const auto& r : t.flow->reads) ImGui::TextDisabled("reads %s: %s of %s", r.name.c_str(), r.of.c_str(), r.node.c_str());
+  report["editable"] = true;
+}
+
+void editTransition(App& app, const ConstructAt& at, const net::TransitionSpec& t, const net::PageSpec& page,
+                    nlohmann::json& report) {
+  const std::string construct = at.page + "/" + at.name;
+  bool on = t.continuous();
+  if (ImGui::Checkbox("continuous", &on)) {
+    auto next = on ? madeFlow(t, app.document().model()) : t;
+    if (!on) next.flow.reset();
+    commitTransition(app, at, std::move(next));
+  }
+  noteItem("continuous", report["fields"]);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("a continuous transition flows at a rate instead of firing: it moves amounts between "
+                      "continuous places (hybrid nets)");
+  }
+  report["continuous"] = t.continuous();
+  if (t.continuous()) {
+    flowFields(app, at, t, page, report);
+    return;
+  }
+  nlohmann::json fields = report["fields"];
   // the duration: a law and its parameters, committed when a field is left
   int law = static_cast<int>(t.duration.law);
   net::Duration d = t.duration;
@@ -690,7 +1000,7 @@ bool editContents(App& app, const Selection& sel, nlohmann::json& report) {
   }
   const auto it = std::find_if(page->transitions.begin(), page->transitions.end(), [&](const auto& t) { return t.name == at->name; });
   if (it == page->transitions.end()) return false;
-  editTransition(app, *at, net::TransitionSpec(*it), report);
+  editTransition(app, *at, net::TransitionSpec(*it), *page, report);
   return true;
 }
 
@@ -719,11 +1029,11 @@ void drawContents(App& app, const Selection& sel, nlohmann::json& report) {
   report["scripts"] = nlohmann::json::array();
   const bool construct = sel.kind == SelectionKind::Place || sel.kind == SelectionKind::Transition;
   if (construct && app.run().mode() == RunMode::Edit && editContents(app, sel, report)) return;
-  const auto* session = app.run().session();
+  auto* session = app.run().session();
   if (session == nullptr) return;
   const auto& net = session->simulation().net();
   if (sel.kind == SelectionKind::Place) {
-    if (const auto p = net.findPlace(sel.name)) placeContents(*session, *p, report, runError(app));
+    if (const auto p = net.findPlace(sel.name)) placeContents(app, *session, *p, report, runError(app));
   } else if (sel.kind == SelectionKind::Transition) {
     if (const auto t = net.findTransition(sel.name)) transitionContents(*session, *t, report, runError(app));
   }

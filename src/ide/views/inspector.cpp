@@ -16,6 +16,7 @@
 #include "../detail/picture_texture.h"
 #include "../views.h"
 #include "gdpn/core/text.h"
+#include "gdpn/diagram/layout.h"
 #include "gdpn/ide/net_edit.h"
 #include "gdpn/ide/set_field.h"
 #include "gdpn/scene/actions.h"
@@ -411,6 +412,53 @@ void netInspector(App& app, const Selection& sel, nlohmann::json& report) {
   drawContents(app, sel, report["contents"]);
 }
 
+/// A continuous place in the run (hybrid nets): its amount of its capacity and the room
+/// promised to occurring transitions (the contents view below draws the level and sets it).
+void fluidPlaceState(const model::Simulation& sim, net::PlaceId p, nlohmann::json& report) {
+  const auto& kernel = sim.kernel();
+  const net::Fluid& fluid = *sim.net().fluid();
+  const net::FluidPlace& fp = fluid.places[static_cast<std::size_t>(fluid.of_place[p])];
+  const double amount = kernel.amount(p), reserved = kernel.amountReserved(p);
+  const std::string capacity = std::isfinite(fp.capacity) ? "of " + diagram::amountText(fp.capacity, fp.unit) : "(unbounded)";
+  ImGui::Text("amount: %s %s", diagram::amountText(amount, fp.unit).c_str(), capacity.c_str());
+  ImGui::Text("reserved: %s", diagram::amountText(reserved, fp.unit).c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("room promised to occurring transitions that put an amount here");
+  if (const auto& loc = sim.net().placeLoc(p); loc.line > 0) ImGui::TextDisabled("declared at %s", loc.str().c_str());
+  report["amount"] = amount;
+  report["reserved"] = reserved;
+  report["unit"] = fp.unit;
+}
+
+/// A continuous transition in the run (hybrid nets): whether it flows, its effective rate and
+/// the nominal rate it would flow at were no input empty and no output full.
+void flowState(const model::Simulation& sim, net::TransitionId t, nlohmann::json& report) {
+  const auto& kernel = sim.kernel();
+  const net::Net& net = sim.net();
+  const net::Fluid& fluid = *net.fluid();
+  const net::Flow& flow = fluid.flows[static_cast<std::size_t>(fluid.of_transition[t])];
+  // the rate's unit: its first output's place's, else its first input's
+  std::string unit;
+  for (std::uint32_t a = flow.outputs_begin; a < flow.outputs_end && unit.empty(); ++a) {
+    unit = fluid.places[fluid.arcs[a].place].unit;
+  }
+  for (std::uint32_t a = flow.inputs_begin; a < flow.outputs_begin && unit.empty(); ++a) {
+    unit = fluid.places[fluid.arcs[a].place].unit;
+  }
+  unit += "/s";
+  const double rate = kernel.flowRate(t), nominal = kernel.nominalRate(t);
+  const std::string state = rate != 0.0 ? "flowing" : nominal != 0.0 ? "cut to nothing" : "off";
+  ImGui::Text("%s", state.c_str());
+  ImGui::Text("rate: %s", diagram::rateText(rate, unit).c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("the effective rate: the nominal one cut where an input is empty or an output full");
+  ImGui::Text("nominal rate: %s", diagram::rateText(nominal, unit).c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("the rate its expression gives while its arcs allow it (0 while switched off)");
+  if (const auto& loc = net.transitionLoc(t); loc.line > 0) ImGui::TextDisabled("declared at %s", loc.str().c_str());
+  report["state"] = state;
+  report["flow_rate"] = rate;
+  report["nominal_rate"] = nominal;
+  report["rate_unit"] = unit;
+}
+
 /// What the run says of the selected place or transition, and its breakpoints; nothing for one
 /// the run does not have yet (added since it was made).
 void runState(App& app, const session::Session& session, const Selection& sel, nlohmann::json& report) {
@@ -418,6 +466,10 @@ void runState(App& app, const session::Session& session, const Selection& sel, n
   if (sel.kind == SelectionKind::Place) {
     const auto p = sim.net().findPlace(sel.name);
     if (!p) return;
+    if (sim.net().continuousPlace(*p)) {
+      fluidPlaceState(sim, *p, report);
+      return;
+    }
     const auto tokens = sim.kernel().placeTokens(*p);
     ImGui::Text("tokens: %lld", static_cast<long long>(tokens));
     const auto& loc = sim.net().placeLoc(*p);
@@ -433,6 +485,10 @@ void runState(App& app, const session::Session& session, const Selection& sel, n
     const auto t = sim.net().findTransition(sel.name);
     if (!t) return;
     const net::TransitionId id = *t;
+    if (sim.net().continuous(id)) {
+      flowState(sim, id, report);
+      return;
+    }
     const auto& tr = sim.net().transitions()[id];
     const auto& kernel = sim.kernel();
     // the kernel's own answer: what the last firing phase found (no script runs here)

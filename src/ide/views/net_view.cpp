@@ -369,6 +369,24 @@ std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const R
         else if (ready == net::Readiness::Untried) tip += "\nwaiting: " + kernel.readinessText(*t);
       }
     }
+    // a continuous place's amount of its capacity, a flow's rates
+    if (under->kind == diagram::ItemKind::Place && under->index < s.layout.places.size()) {
+      if (const auto& look = s.layout.places[under->index].fluid) {
+        const bool live = state && under->index < state->amounts.size() && state->amounts[under->index];
+        const double amount = live ? *state->amounts[under->index] : look->amount;
+        tip += "\ncontinuous: " + diagram::amountText(amount, look->unit) +
+               (look->capacity ? " of " + diagram::amountText(*look->capacity, look->unit) : std::string(", unbounded"));
+      }
+    }
+    if (under->kind == diagram::ItemKind::Transition && session != nullptr && under->index < s.binding.transitions.size() &&
+        under->index < s.layout.transitions.size() && s.layout.transitions[under->index].fluid) {
+      if (const auto t = s.binding.transitions[under->index]) {
+        const auto& kernel = session->simulation().kernel();
+        const std::string& unit = s.layout.transitions[under->index].fluid->unit;
+        tip += "\nflows at " + diagram::rateText(kernel.flowRate(*t), unit) + " (nominal " +
+               diagram::rateText(kernel.nominalRate(*t), unit) + ")";
+      }
+    }
     // a coloured place's values, a coloured transition's binding while it occurs
     if (under->kind == diagram::ItemKind::Place && session != nullptr && under->index < s.binding.places.size()) {
       if (const auto p = s.binding.places[under->index]) tip += valuesTooltip(*session, *p);
@@ -430,6 +448,16 @@ std::optional<diagram::ItemRef> clickAndPaint(App& app, NetViewState& s, const R
       tokens[qualified(s, {diagram::ItemKind::Place, p})] = n;
     }
     report["tokens"] = tokens;
+    // hybrid nets: the amounts drawn as levels and the rates written beside the flows
+    nlohmann::json amounts = nlohmann::json::object(), rates = nlohmann::json::object();
+    for (std::uint32_t p = 0; p < s.layout.places.size() && p < state->amounts.size(); ++p) {
+      if (state->amounts[p]) amounts[qualified(s, {diagram::ItemKind::Place, p})] = *state->amounts[p];
+    }
+    for (std::uint32_t t = 0; t < s.layout.transitions.size() && t < state->flow_rates.size(); ++t) {
+      if (state->flow_rates[t]) rates[qualified(s, {diagram::ItemKind::Transition, t})] = *state->flow_rates[t];
+    }
+    report["amounts"] = amounts;
+    report["flow_rates"] = rates;
   }
   return under;
 }

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "../views.h"
+#include "gdpn/diagram/layout.h"
 #include "gdpn/ide/scene_edit.h"
 
 namespace gdpn::ide {
@@ -267,7 +268,12 @@ void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
     for (std::size_t i = 0; i < net.places().size(); ++i) {
       const auto id = static_cast<net::PlaceId>(i);
       const auto name = net.placeName(id);
-      const auto label = "place  " + name + "  (" + std::to_string(kernel.placeTokens(id)) + ")";
+      // a continuous place: its amount with its unit (hybrid nets)
+      const auto* fluid = net.fluid();
+      const auto count = net.continuousPlace(id)
+                             ? diagram::amountText(kernel.amount(id), fluid->places[static_cast<std::size_t>(fluid->of_place[id])].unit)
+                             : std::to_string(kernel.placeTokens(id));
+      const auto label = "place  " + name + "  (" + count + ")";
       const bool is_sel = sel.kind == SelectionKind::Place && sel.name == name;
       if (ImGui::Selectable(label.c_str(), is_sel)) app.document().select({SelectionKind::Place, name});
       ++places;
@@ -279,10 +285,12 @@ void drawTreeView(App& app, const Rect& at, nlohmann::json& report) {
       const net::Readiness ready = kernel.readiness(id);
       const bool able = ready == net::Readiness::Able, held = net::heldBack(ready);
       const char* state = kernel.occurring(id) ? "occurring" : able ? "enabled" : held ? "held back" : "";
+      const bool flowing = net.continuous(id) && kernel.flowRate(id) != 0.0;  // a flow never fires
+      if (net.continuous(id)) state = flowing ? "flowing" : "";
       const auto label = "transition  " + name + (*state != '\0' ? std::string("  [") + state + "]" : "");
       const bool is_sel = sel.kind == SelectionKind::Transition && sel.name == name;
       ImGui::PushStyleColor(ImGuiCol_Text, kernel.occurring(id) ? ImVec4{1.0F, 0.45F, 0.4F, 1}
-                                           : able               ? ImVec4{0.45F, 0.95F, 0.45F, 1}
+                                           : able || flowing     ? ImVec4{0.45F, 0.95F, 0.45F, 1}
                                            : held               ? ImVec4{0.95F, 0.70F, 0.10F, 1}
                                                                 : ImGui::GetStyleColorVec4(ImGuiCol_Text));
       if (ImGui::Selectable(label.c_str(), is_sel)) {
