@@ -1092,11 +1092,19 @@ class ModelReader {
       } else if (e.key == "weight") {
         perSlot(e, "weight", [&](net::SlotId slot, const YAML::Node& v, const SourceLoc& loc) {
           std::string param;
-          // a number that is not whole: the weight of an arc with a continuous place
+          // a number that is not whole (or a parameter holding one): the weight of an arc with
+          // a continuous place
           if (v.IsScalar() && slot == net::kDefaultSlot) {
-            if (const auto x = core::parseNumber(v.Scalar()); x && *x != std::floor(*x)) {
-              if (!(*x > 0.0)) r_.error(v, "'weight' must be > 0, got " + v.Scalar());
-              else a.amount = *x;
+            std::optional<double> x;
+            if (v.Scalar().starts_with('$')) {
+              x = r_.number(v, "weight", &param);
+              if (!x) return;
+            } else {
+              x = core::parseNumber(v.Scalar());
+            }
+            if (x && *x != std::floor(*x)) {
+              if (!(*x > 0.0)) r_.error(v, "'weight' must be > 0, got " + core::formatDouble(*x));
+              else a.amount = *x, a.amount_param = param;
               return;
             }
           }

@@ -320,7 +320,7 @@ void writeArc(YAML::Emitter& out, const net::ArcSpec& a) {
            }},
           {"weight",
            [&] {
-             if (a.amount) out << YAML::Key << "weight" << YAML::Value << core::formatDouble(*a.amount);
+             if (a.amount) out << YAML::Key << "weight" << YAML::Value << numberText(*a.amount, a.amount_param);
              else perSlot(out, "weight", a.weights);
            }},
           {"inscription",

@@ -18,16 +18,10 @@
 #include "gdpn/model/simulation.h"
 #include "gdpn/net/kernel.h"
 #include "gdpn/net/timeline.h"
+#include "support/hybrid_models.h"
 
 namespace gdpn::model {
 namespace {
-
-std::string fillText() {
-  std::ifstream in(std::string(GDPN_SOURCE_DIR) + "/tests/data/hybrid/fill.gdpn.yaml");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 struct Run {
   std::optional<Model> model;
@@ -45,7 +39,7 @@ double amountOf(const Simulation& sim, const char* place) { return sim.kernel().
 
 TEST(HybridFaces, ASignalOnAContinuousPlaceReadsItsAmountAsItsShortestDecimal) {
   core::Diagnostics diags;
-  auto r = load(fillText() + "signals:\n  level: {place: main/tank}\n  half: {place: main/tank, every: 0.5}\n", diags);
+  auto r = load(testing::fillModelText() + "signals:\n  level: {place: main/tank}\n  half: {place: main/tank, every: 0.5}\n", diags);
   ASSERT_TRUE(r.sim) << diags.str();
   ASSERT_TRUE(r.sim->recordSignals({}, diags)) << diags.str();
   r.sim->run({.until = 5.0, .steps = {}});
@@ -71,7 +65,7 @@ TEST(HybridFaces, ASignalOnAContinuousPlaceReadsItsAmountAsItsShortestDecimal) {
 
 TEST(HybridFaces, TheIoSectionReadsAndSetsAnAmountWithItsScale) {
   core::Diagnostics diags;
-  auto r = load(fillText() + R"(io:
+  auto r = load(testing::fillModelText() + R"(io:
   discrete_inputs:
     0: {place: main/tank}
   input_registers:
@@ -107,10 +101,10 @@ TEST(HybridFaces, TheIoSectionReadsAndSetsAnAmountWithItsScale) {
 
 TEST(HybridFaces, ACoilOnAContinuousPlaceIsAnErrorAtItsEntry) {
   core::Diagnostics diags;
-  auto r = load(fillText() + "io:\n  coils:\n    3: {place: main/tank}\n", diags);
+  auto r = load(testing::fillModelText() + "io:\n  coils:\n    3: {place: main/tank}\n", diags);
   ASSERT_TRUE(r.sim) << diags.str();
   EXPECT_FALSE(IoMap::create(*r.sim, r.model->io, diags));
-  const std::string fill = fillText();
+  const std::string fill = testing::fillModelText();
   const auto lines = static_cast<int>(std::count(fill.begin(), fill.end(), '\n'));
   EXPECT_NE(diags.str().find("fill.gdpn.yaml:" + std::to_string(lines + 3) + ":5: error: "), std::string::npos)
       << diags.str();
@@ -119,7 +113,7 @@ TEST(HybridFaces, ACoilOnAContinuousPlaceIsAnErrorAtItsEntry) {
 
 TEST(HybridFaces, TheReportGivesAmountsExtremesMeansAndWhatEachFlowMoved) {
   core::Diagnostics diags;
-  auto r = load(fillText(), diags);
+  auto r = load(testing::fillModelText(), diags);
   ASSERT_TRUE(r.sim) << diags.str();
   const auto outcome = r.sim->run({.until = 5.0, .steps = {}});
   // stop starts at 3.4 s and completes at 3.5 s: then the net is dead
@@ -181,7 +175,7 @@ pages:
 
 TEST(HybridFaces, TheHtmlPagesRunDataCarriesEveryContinuousPlacesLevel) {
   core::Diagnostics diags;
-  auto r = load(fillText(), diags);
+  auto r = load(testing::fillModelText(), diags);
   ASSERT_TRUE(r.sim) << diags.str();
   net::Timeline timeline(r.sim->net());
   r.sim->kernel().addObserver(&timeline);

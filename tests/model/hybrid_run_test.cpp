@@ -12,6 +12,7 @@
 
 #include "gdpn/model/model.h"
 #include "gdpn/model/simulation.h"
+#include "support/hybrid_models.h"
 
 namespace gdpn::model {
 namespace {
@@ -40,16 +41,8 @@ std::vector<nlohmann::json> events(const std::string& trace, const std::string& 
   return out;
 }
 
-// A pump fills a tank at 0.3 L/s while `running` is marked; `stop` waits for 1 L.
-std::string fillModel() {
-  std::ifstream in(std::string(GDPN_SOURCE_DIR) + "/tests/data/hybrid/fill.gdpn.yaml");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 TEST(HybridRun, AConstantFillCrossesItsThresholdAtTheExactTime) {
-  auto sim = fromText(fillModel());
+  auto sim = fromText(testing::fillModelText());
   ASSERT_TRUE(sim);
   std::ostringstream trace;
   sim->traceTo(trace);
@@ -311,6 +304,35 @@ page_types:
   EXPECT_NEAR(crossings[0]["t"].get<double>(), std::log(2.0) / 0.1, 1e-6);
 }
 
+TEST(HybridRun, AnArcsRealWeightMayComeFromAParameter) {
+  const char* text = R"(gdpn: 1
+params: {dose: 2.5}
+pages:
+  main:
+    places:
+      tank: {continuous: {amount: 6}}
+      bin: {continuous: true}
+    transitions:
+      dose: {duration: 1}
+    arcs:
+      - {from: tank, to: dose, weight: $dose}
+      - {from: dose, to: bin, weight: 2}
+)";
+  core::Diagnostics diags;
+  auto m = parseModel(text, "dose.gdpn.yaml", diags);
+  ASSERT_TRUE(m) << diags.str();
+  EXPECT_EQ(m->net.pages[0].arcs[0].amount, 2.5);
+  EXPECT_EQ(m->net.pages[0].arcs[0].amount_param, "dose");
+  // saved as the reference it was written as
+  const std::string saved = writeModel(*m);
+  EXPECT_NE(saved.find("weight: $dose"), std::string::npos) << saved;
+  auto sim = Simulation::create(*m, diags);
+  ASSERT_TRUE(sim) << diags.str();
+  sim->run({.until = 10.0, .steps = {}});
+  EXPECT_EQ(amountOf(*sim, "main/tank"), 1.0);  // two doses of 2.5 L; 1 L is too little for a third
+  EXPECT_EQ(amountOf(*sim, "main/bin"), 4.0);
+}
+
 TEST(HybridRun, AContinuousPlaceCarriesNoColours) {
   core::Diagnostics diags;
   auto m = parseModel(R"(gdpn: 1
@@ -331,7 +353,7 @@ pages:
 TEST(HybridRun, TheSameRunTwiceGivesTheSameTraceByteForByte) {
   std::string traces[2];
   for (auto& t : traces) {
-    auto sim = fromText(fillModel());
+    auto sim = fromText(testing::fillModelText());
     ASSERT_TRUE(sim);
     std::ostringstream trace;
     sim->traceTo(trace);

@@ -11,20 +11,14 @@
 #include "gdpn/model/analysis.h"
 #include "gdpn/model/model.h"
 #include "gdpn/session/analysis_request.h"
+#include "support/hybrid_models.h"
 
 namespace gdpn::session {
 namespace {
 
-std::string tankModel() {
-  std::ifstream in(std::string(GDPN_SOURCE_DIR) + "/tests/data/hybrid/fill.gdpn.yaml");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 TEST(HybridAnalysis, TheDiscretePartIsAnalysedAndTheNoteSaysWhatWasLeftOut) {
   core::Diagnostics diags;
-  auto m = model::parseModel(tankModel(), "tank.gdpn.yaml", diags);
+  auto m = model::parseModel(testing::fillModelText(), "tank.gdpn.yaml", diags);
   ASSERT_TRUE(m) << diags.str();
   const auto analysed = analysedNet(m->net, diags);
   ASSERT_TRUE(analysed) << diags.str();
@@ -47,7 +41,7 @@ TEST(HybridAnalysis, TheDiscretePartIsAnalysedAndTheNoteSaysWhatWasLeftOut) {
 
 TEST(HybridAnalysis, AMistakeInTheContinuousPartIsStillReported) {
   core::Diagnostics diags;
-  std::string text = tankModel();
+  std::string text = testing::fillModelText();
   text.replace(text.find("rate: 0.3"), 9, "rate: 0.3 * tnak");
   auto m = model::parseModel(text, "tank.gdpn.yaml", diags);
   ASSERT_TRUE(m) << diags.str();

@@ -339,10 +339,12 @@ struct ArcSpec {
   /// On an arc with a continuous place: its weight, a real number in the place's unit (none:
   /// 1); `weight: 2.5` fills it, and `weights` with the whole number where it is one.
   std::optional<double> amount{};
+  std::string amount_param{};  ///< the model parameter `amount` comes from ("" for none)
   friend bool operator==(const ArcSpec& x, const ArcSpec& y) {
     return x.from == y.from && x.to == y.to && x.kind == y.kind && x.weights == y.weights &&
            x.predicates == y.predicates && x.conditions == y.conditions && x.via == y.via &&
-           x.label_at == y.label_at && x.inscriptions == y.inscriptions && x.amount == y.amount;
+           x.label_at == y.label_at && x.inscriptions == y.inscriptions && x.amount == y.amount &&
+           x.amount_param == y.amount_param;
   }
 };
 
