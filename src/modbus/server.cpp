@@ -18,29 +18,13 @@
 #include <cstring>
 #include <vector>
 
+#include "gdpn/core/listen_address.h"
 #include "gdpn/modbus/request.h"
 
 namespace gdpn::modbus {
 
 bool parseEndpoint(const std::string& text, ServerOptions& options, std::string& why) {
-  const auto colon = text.rfind(':');
-  std::string host = colon == std::string::npos ? "" : text.substr(0, colon);
-  const std::string port = colon == std::string::npos ? text : text.substr(colon + 1);
-  unsigned value = 0;
-  const auto [end, ec] = std::from_chars(port.data(), port.data() + port.size(), value);
-  if (port.empty() || ec != std::errc() || end != port.data() + port.size() || value > 65535) {
-    why = "expected [ADDRESS:]PORT with a port from 0 to 65535 (0: any free one), got '" + text + "'";
-    return false;
-  }
-  if (host == "*") host = "0.0.0.0";
-  in_addr parsed{};
-  if (!host.empty() && inet_pton(AF_INET, host.c_str(), &parsed) != 1) {
-    why = "'" + host + "' is no IPv4 address (write 127.0.0.1, 0.0.0.0 or * for every interface)";
-    return false;
-  }
-  if (!host.empty()) options.address = host;
-  options.port = static_cast<std::uint16_t>(value);
-  return true;
+  return core::parseListenAddress(text, options.address, options.port, why);
 }
 
 /// One connection: its socket, its name and the bytes of a frame not yet whole.
