@@ -172,7 +172,7 @@ bool Endpoint::receive(ConnectionId id, const std::uint8_t* data, std::size_t si
   c.in.erase(0, at);
   if (!ok) {
     c.closing = true;
-    ++impl_->stats.dropped;
+    if (!c.goodbye) ++impl_->stats.dropped;
   }
   return ok;
 }
@@ -259,7 +259,8 @@ bool Endpoint::Impl::chunk(ConnectionId id, Connection& c, std::string_view byte
     }
     c.receive_sequence = sequence;
     c.sequenced = true;
-    if (type == "CLO") {
+    if (type == "CLO") {  // the client says goodbye
+      c.goodbye = true;
       c.closing = true;
       return false;
     }

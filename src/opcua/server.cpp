@@ -169,9 +169,12 @@ void Server::round(std::int64_t timeout_ns) {
           s.closing = true;
           break;
         }
+        const auto dropped = endpoint_->stats().dropped;
         if (!endpoint_->receive(s.id, buffer, static_cast<std::size_t>(n))) {
           s.closing = true;
-          if (log_) *log_ << "opcua: " << s.name << " closed: it sent bytes that are no OPC UA, or broke a limit\n";
+          if (log_ && endpoint_->stats().dropped > dropped) {
+            *log_ << "opcua: " << s.name << " closed: it sent bytes that are no OPC UA, or broke a limit\n";
+          }
         }
         if (static_cast<std::size_t>(n) < sizeof buffer) break;
       }
