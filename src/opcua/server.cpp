@@ -79,7 +79,7 @@ std::unique_ptr<Server> Server::listen(AddressSpace& space, const ServerOptions&
     host = name;
   }
   server->url_ = "opc.tcp://" + host + ":" + std::to_string(server->port_);
-  server->endpoint_ = std::make_unique<Endpoint>(space, server->url_, options.limits, options.read_only);
+  server->endpoint_ = std::make_unique<Endpoint>(space, server->url_, options.limits, options.read_only, options.seed);
   return server;
 }
 
