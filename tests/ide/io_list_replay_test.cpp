@@ -44,6 +44,7 @@ TEST_F(IoListIde, ItsTabSharesTheInspectorsPanelAndOutsideARunShowsNoValuesAndFo
   EXPECT_EQ(seen["pending"], false);
   EXPECT_EQ(list["rows"]["main/lamp1.height"]["unit"], "m");
   EXPECT_EQ(list["rows"]["main/lamp1.light"]["addresses"], nlohmann::json::array({"coil 0"}));
+  EXPECT_EQ(list["rows"]["main/lamp1.light"]["names"], nlohmann::json::array({"lamp1_light"}));
   EXPECT_EQ(list["rows"]["main/lamp1.height"]["uses"], nlohmann::json::array({"main/watch guard"}));
   EXPECT_EQ(r["run"]["mode"], "edit");
   // View > I/O List shows it and hides it again; Release All Forces cannot be done outside a run
@@ -141,7 +142,7 @@ TEST_F(IoListIde, MapForPlcPutsThePartsIoIntoTheSavedIoSectionAsOneStep) {
   const auto* speed = find(model::IoTable::HoldingRegisters);
   ASSERT_TRUE(speed);
   EXPECT_EQ(speed->io, "speed");
-  EXPECT_EQ(speed->type, model::IoType::Float32);
+  EXPECT_EQ(speed->type, model::IoDataType::Float);
   EXPECT_EQ(find(model::IoTable::InputRegisters)->io, "height");
   // an edit: during a run the button does nothing
   write("lamp.gdpn.yaml", testing::lampModel());
