@@ -161,11 +161,13 @@ std::vector<IoListRow> ioListRows(const model::Model& model) {
       }
       if (used) row.uses.push_back(t.where);
     }
-    for (const auto& e : model.io.entries) {
+    const std::vector<std::string> entry_names = model::ioEntryNames(model.io);
+    for (std::size_t i = 0; i < model.io.entries.size(); ++i) {
+      const auto& e = model.io.entries[i];
       const bool names = e.target == row.part || e.target == row.instance;
       if (e.source == model::IoEntry::Source::Part && e.io == row.io.name && names) {
         row.addresses.push_back(model::ioAddressName(e.table, e.address));
-        row.names.push_back(model::ioEntryName(e));
+        row.names.push_back(entry_names[i]);
       }
     }
   }

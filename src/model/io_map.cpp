@@ -19,6 +19,7 @@ namespace gdpn::model {
 
 struct IoMap::Bound {
   IoEntry spec;
+  std::string name;                  // its point's name (ioEntryNames)
   Probe probe;                       // what a read gives (for a written entry: its field or place)
   scene::NodeHandle node = 0;        // written field: its node
   std::size_t field = 0;             // written field: its index
@@ -125,6 +126,7 @@ std::unique_ptr<IoMap> IoMap::create(Simulation& sim, const IoSpec& spec, core::
   bool ok = detail::checkIoNames(spec, [&](const core::SourceLoc& at, std::string message) {
     diags.error(at, std::move(message));
   });
+  const std::vector<std::string> names = ioEntryNames(spec);
   for (const IoEntry& e : spec.entries) {
     const std::string name = ioAddressName(e.table, e.address);
     const auto fail = [&](const std::string& why) {
@@ -133,6 +135,7 @@ std::unique_ptr<IoMap> IoMap::create(Simulation& sim, const IoSpec& spec, core::
     };
     Bound b;
     b.spec = e;
+    b.name = names[static_cast<std::size_t>(&e - spec.entries.data())];
     std::string why;
     std::optional<Probe> probe;
     if (e.source == IoEntry::Source::Part) {
@@ -243,7 +246,7 @@ std::unique_ptr<IoMap> IoMap::create(Simulation& sim, const IoSpec& spec, core::
   for (const Bound& b : map->bound_) {
     const IoEntry& e = b.spec;
     IoPoint p;
-    p.name = ioEntryName(e);
+    p.name = b.name;
     p.type = isBit(e.table) ? IoDataType::Boolean : e.type;
     p.unit = isBit(e.table) ? std::string() : e.unit;
     p.writable = e.table == IoTable::Coils || e.table == IoTable::HoldingRegisters;
@@ -454,7 +457,7 @@ std::vector<IoMap::Row> IoMap::rows() const {
     r.table = b.spec.table;
     r.address = b.spec.address;
     const IoEntry& e = b.spec;
-    r.name = ioEntryName(e);
+    r.name = b.name;
     r.what = ioWhat(e);
     if (e.table == IoTable::InputRegisters || e.table == IoTable::HoldingRegisters) {
       std::vector<std::string> parts;

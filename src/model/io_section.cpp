@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <map>
 
 #include "gdpn/core/text.h"
@@ -83,6 +84,22 @@ std::string ioEntryName(const IoEntry& e) {
   if (!what.empty()) name += (name.empty() ? "" : "_") + what;
   if (name.empty() || (name[0] >= '0' && name[0] <= '9')) name.insert(0, "_");
   return name;
+}
+
+std::vector<std::string> ioEntryNames(const IoSpec& io) {
+  const auto written = [](IoTable t) { return t == IoTable::Coils || t == IoTable::HoldingRegisters; };
+  std::vector<std::string> names;
+  names.reserve(io.entries.size());
+  std::set<std::string> read_derived;
+  for (const auto& e : io.entries) {
+    names.push_back(ioEntryName(e));
+    if (e.name.empty() && !written(e.table)) read_derived.insert(names.back());
+  }
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const IoEntry& e = io.entries[i];
+    if (e.name.empty() && written(e.table) && read_derived.count(names[i])) names[i] += "_set";
+  }
+  return names;
 }
 
 std::string ioAddressName(IoTable table, std::uint32_t address) {
@@ -311,6 +328,7 @@ IoSpec readIo(const YAML::Node& section, YamlReader& r, const SourceMap& source)
 bool checkIoNames(const IoSpec& io, const std::function<void(const core::SourceLoc&, std::string)>& error) {
   // in file order (line, then column): of two entries with one name, the later is reported,
   // unless only it has its name written: then the one whose name is derived needs a `name`
+  const std::vector<std::string> names = ioEntryNames(io);
   std::vector<const IoEntry*> order;
   order.reserve(io.entries.size());
   for (const auto& e : io.entries) order.push_back(&e);
@@ -320,7 +338,7 @@ bool checkIoNames(const IoSpec& io, const std::function<void(const core::SourceL
   std::map<std::string, const IoEntry*> seen;
   bool ok = true;
   for (const IoEntry* e : order) {
-    const std::string name = ioEntryName(*e);
+    const std::string& name = names[static_cast<std::size_t>(e - io.entries.data())];
     const auto [it, fresh] = seen.emplace(name, e);
     if (fresh) continue;
     ok = false;

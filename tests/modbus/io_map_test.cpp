@@ -567,10 +567,17 @@ TEST(IoNames, TwoEntriesOfOneNameAreAnErrorAtTheOneToChange) {
   // across tables
   d = ioNameMistake("  coils:\n    0: {name: ready, place: main/p}\n  discrete_inputs:\n    7: {name: ready, place: main/q}");
   EXPECT_NE(d.find("names.gdpn.yaml:6:15: error: 'ready' is the name of coil 0 (line 4) too"), std::string::npos) << d;
-  // both derived: the later, asked for a name
-  d = ioNameMistake("  discrete_inputs:\n    0: {place: main/p}\n  holding_registers:\n    3: {place: main/p}");
-  EXPECT_NE(d.find("names.gdpn.yaml:6:5: error: holding register 3 is named 'p' after what it maps, as discrete input 0 "
+  // both derived, both read: the later, asked for a name
+  d = ioNameMistake("  discrete_inputs:\n    0: {place: main/p}\n  input_registers:\n    3: {place: main/p}");
+  EXPECT_NE(d.find("names.gdpn.yaml:6:5: error: input register 3 is named 'p' after what it maps, as discrete input 0 "
                    "(line 4) is: give it a 'name' (names are unique in the io section)"),
+            std::string::npos)
+      << d;
+  // both derived, both written: p_set twice
+  d = ioNameMistake("  discrete_inputs:\n    0: {place: main/p}\n  coils:\n    0: {place: main/p}\n  holding_registers:\n"
+                    "    3: {place: main/p}");
+  EXPECT_NE(d.find("names.gdpn.yaml:8:5: error: holding register 3 is named 'p_set' after what it maps, as coil 0 "
+                   "(line 6) is"),
             std::string::npos)
       << d;
   // one derived, the later written: the derived one
@@ -585,6 +592,15 @@ TEST(IoNames, TwoEntriesOfOneNameAreAnErrorAtTheOneToChange) {
                    "letters, digits and _), got '2nd eye'"),
             std::string::npos)
       << d;
+}
+
+TEST(IoNames, APlaceReadAndSetIsNamedAndNamedSet) {
+  core::Diagnostics diags;
+  const auto m = parseModel("gdpn: 1\nio:\n  discrete_inputs:\n    0: {place: main/p}\n  holding_registers:\n"
+                            "    3: {place: main/p}\npages: {main: {places: {p: {tokens: 1}}}}\n",
+                            "names.gdpn.yaml", diags);
+  ASSERT_TRUE(m) << diags.str();
+  EXPECT_EQ(ioEntryNames(m->io), (std::vector<std::string>{"p", "p_set"}));
 }
 
 TEST(IoNames, AMapOfAnEditedSpecRefusesTwoEntriesOfOneName) {

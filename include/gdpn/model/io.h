@@ -102,6 +102,7 @@ struct IoEntry {
 /// `beam_active`; `feeder/stock`: `stock`; `main/pusher1` io `extend`: `pusher1_extend`.
 std::string ioEntryName(const IoEntry& e);
 
+
 /// The `io` section.
 struct IoSpec {
   std::vector<IoEntry> entries;            ///< by table (in IoTable's order), then by address
@@ -113,6 +114,12 @@ struct IoSpec {
     return a.entries == b.entries && a.lockstep == b.lockstep;
   }
 };
+
+/// The names of `io`'s entries, in its order: ioEntryName's, except that an entry of a table
+/// the controller writes (coils, holding registers) whose derived name an entry of a table it
+/// reads derives too is `NAME_set` (a place read as a discrete input and set as a holding
+/// register: `stock` and `stock_set`). Names that are still alike are checkIoNames' errors.
+std::vector<std::string> ioEntryNames(const IoSpec& io);
 
 /// A Modbus exception code (0: none).
 enum class IoError : std::uint8_t {
