@@ -24,11 +24,11 @@ io:
   lockstep: 9
   discrete_inputs: {0: {node: eye, of: active}, 1: {place: main/parts}}
   input_registers: {0: {node: pusher, of: angle, scale: 1000}, 1: {node: belt/drive, of: speed, type: float32}}
-  coils: {0: {node: belt/drive, field: speed, on: 0.5}, 1: {place: main/start}}
+  coils: {0: {name: belt_on, node: belt/drive, field: speed, on: 0.5}, 1: {place: main/start}}
   holding_registers:
     0: {node: pusher, field: target1, scale: 1000, type: int32}
     2: {place: main/parts}
-    3: {node: belt/drive, field: speed, type: float32}
+    3: {name: belt_speed, node: belt/drive, field: speed, type: Double}
 pages:
   main:
     places: {start: {}, parts: {tokens: 3}}

@@ -105,25 +105,34 @@ void Serving::finish(model::Simulation& sim, std::ostream& out) {
   if (s.refused > 0) out << ", " << s.refused << " connections refused (too many clients)";
   if (s.dropped > 0) out << ", " << s.dropped << " closed for bytes that are no Modbus TCP";
   out << "\n\n";
-  // the live table, each column as wide as its widest entry
+  // the live table, each column as wide as its widest entry, under a heading per Modbus table
+  // (the table is no column: the lines stay within 100 columns)
   std::vector<std::array<std::string, 7>> table = {
-      {"table", "address", "on the wire", "as", "value", "maps", "written last by"}};
-  for (const auto& r : io_->rows()) {
+      {"", "name", "address", "wire", "as", "value", "maps"}};
+  std::vector<std::string> writers = {"last writer"};
+  const auto rows = io_->rows();
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const auto& r = rows[i];
+    char wire[32];
+    std::snprintf(wire, sizeof wire, "%.10g", io_->read(i));  // the number on the wire (a Float's exactly)
     std::snprintf(line, sizeof line, "%.6g", r.value);
-    table.push_back({model::ioTableKey(r.table), std::to_string(r.address), std::to_string(r.raw), r.wire, line,
-                     r.what, r.writer});
+    table.push_back({model::ioTableKey(r.table), r.name, std::to_string(r.address), wire, r.wire, line, r.what});
+    writers.push_back(r.writer);
   }
   std::array<std::size_t, 7> width{};
   for (const auto& row : table) {
-    for (std::size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], row[c].size());
+    for (std::size_t c = 1; c < row.size(); ++c) width[c] = std::max(width[c], row[c].size());
   }
-  for (const auto& row : table) {
-    std::string text;
-    for (std::size_t c = 0; c < row.size(); ++c) {
-      const bool right = c == 1 || c == 2 || c == 4;  // the numbers
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const auto& row = table[i];
+    if (i > 0 && row[0] != table[i - 1][0]) out << row[0] << ":\n";
+    std::string text = "  ";
+    for (std::size_t c = 1; c < row.size(); ++c) {
+      const bool right = c == 2 || c == 3 || c == 5;  // the numbers
       const std::string pad(width[c] - row[c].size(), ' ');
-      text += (c == 0 ? "" : "  ") + (right ? pad + row[c] : c + 1 == row.size() ? row[c] : row[c] + pad);
+      text += (c == 1 ? "" : "  ") + (right ? pad + row[c] : row[c] + pad);
     }
+    text += "  " + writers[i];
     text.erase(text.find_last_not_of(' ') + 1);
     out << text << "\n";
   }

@@ -5,12 +5,14 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include "gdpn/core/text.h"
 #include "gdpn/model/io.h"
 #include "gdpn/model/simulation.h"
 #include "gdpn/model/part_run.h"
+#include "io_section.h"
 #include "probe.h"
 
 namespace gdpn::model {
@@ -55,6 +57,62 @@ scene::FieldValue fieldValue(scene::FieldKind kind, double v) {
   return out;
 }
 
+/// The number a register of type `type` carries in the words `w` (the last word lowest).
+double wireNumber(IoDataType type, std::uint64_t w) {
+  switch (type) {
+    case IoDataType::Boolean: return w != 0 ? 1.0 : 0.0;
+    case IoDataType::Int16: return static_cast<std::int16_t>(static_cast<std::uint16_t>(w));
+    case IoDataType::UInt16: return static_cast<std::uint16_t>(w);
+    case IoDataType::Int32: return static_cast<std::int32_t>(static_cast<std::uint32_t>(w));
+    case IoDataType::UInt32: return static_cast<std::uint32_t>(w);
+    case IoDataType::Float: return static_cast<double>(std::bit_cast<float>(static_cast<std::uint32_t>(w)));
+    case IoDataType::Double: return std::bit_cast<double>(w);
+  }
+  return 0;
+}
+
+/// The words a register of type `type` carries for the number `x` (the last word lowest), when
+/// `x` is a number of that type: whole and in range for an integer type, finite and within
+/// single precision's range for a Float (rounded to it), finite for a Double, 0 or 1 for a bit.
+std::optional<std::uint64_t> wireBits(IoDataType type, double x) {
+  const auto whole = [&](double lo, double hi) { return std::isfinite(x) && std::floor(x) == x && x >= lo && x <= hi; };
+  switch (type) {
+    case IoDataType::Boolean:
+      if (x != 0.0 && x != 1.0) return std::nullopt;
+      return x != 0.0 ? 1 : 0;
+    case IoDataType::Int16:
+      if (!whole(-32768, 32767)) return std::nullopt;
+      return static_cast<std::uint16_t>(static_cast<std::int16_t>(x));
+    case IoDataType::UInt16:
+      if (!whole(0, 65535)) return std::nullopt;
+      return static_cast<std::uint16_t>(x);
+    case IoDataType::Int32:
+      if (!whole(-2147483648.0, 2147483647.0)) return std::nullopt;
+      return static_cast<std::uint32_t>(static_cast<std::int32_t>(x));
+    case IoDataType::UInt32:
+      if (!whole(0, 4294967295.0)) return std::nullopt;
+      return static_cast<std::uint32_t>(x);
+    case IoDataType::Float:
+      if (!std::isfinite(x) || std::abs(x) > static_cast<double>(std::numeric_limits<float>::max())) return std::nullopt;
+      return std::bit_cast<std::uint32_t>(static_cast<float>(x));
+    case IoDataType::Double:
+      if (!std::isfinite(x)) return std::nullopt;
+      return std::bit_cast<std::uint64_t>(x);
+  }
+  return std::nullopt;
+}
+
+/// What `e` maps, for people: `station/eye.active`, `main/start`, `panel key g`.
+std::string ioWhat(const IoEntry& e) {
+  std::string what = e.target;
+  if (!e.io.empty()) what += "." + e.io;
+  if (!e.value.empty()) what += "=" + e.value;
+  if (!e.quantity.empty()) what += "." + e.quantity;
+  if (!e.field.empty()) what += "." + e.field;
+  if (!e.key.empty()) what += " key " + e.key;
+  return what;
+}
+
 }  // namespace
 
 IoMap::IoMap(Simulation& sim) : sim_(sim) {}
@@ -63,7 +121,10 @@ IoMap::~IoMap() = default;
 std::unique_ptr<IoMap> IoMap::create(Simulation& sim, const IoSpec& spec, core::Diagnostics& diags) {
   auto map = std::unique_ptr<IoMap>(new IoMap(sim));
   map->lockstep_ = spec.lockstep;
-  bool ok = true;
+  // every point is served by its name: a spec not read from a file (edited) may repeat one
+  bool ok = detail::checkIoNames(spec, [&](const core::SourceLoc& at, std::string message) {
+    diags.error(at, std::move(message));
+  });
   for (const IoEntry& e : spec.entries) {
     const std::string name = ioAddressName(e.table, e.address);
     const auto fail = [&](const std::string& why) {
@@ -179,6 +240,20 @@ std::unique_ptr<IoMap> IoMap::create(Simulation& sim, const IoSpec& spec, core::
   std::stable_sort(map->bound_.begin(), map->bound_.end(), [](const Bound& a, const Bound& b) {
     return a.spec.table != b.spec.table ? a.spec.table < b.spec.table : a.spec.address < b.spec.address;
   });
+  for (const Bound& b : map->bound_) {
+    const IoEntry& e = b.spec;
+    IoPoint p;
+    p.name = ioEntryName(e);
+    p.type = isBit(e.table) ? IoDataType::Boolean : e.type;
+    p.unit = isBit(e.table) ? std::string() : e.unit;
+    p.writable = e.table == IoTable::Coils || e.table == IoTable::HoldingRegisters;
+    p.what = ioWhat(e);
+    p.table = e.table;
+    p.address = e.address;
+    p.plc_node = e.plc_node;
+    p.plc_node_loc = e.plc_node_loc;
+    map->points_.push_back(std::move(p));
+  }
   return map;
 }
 
@@ -218,20 +293,22 @@ double IoMap::value(const Bound& b) const {
   return v;
 }
 
-std::uint32_t IoMap::encode(const Bound& b) const {
+std::uint64_t IoMap::encode(const Bound& b) const {
   const double v = value(b);
   if (isBit(b.spec.table)) return v != 0.0 ? 1 : 0;
   const double x = v * b.spec.scale;
   switch (b.spec.type) {
-    case IoType::Int16: return static_cast<std::uint16_t>(static_cast<std::int16_t>(held(x, -32768, 32767)));
-    case IoType::Uint16: return static_cast<std::uint32_t>(held(x, 0, 65535));
-    case IoType::Int32:
+    case IoDataType::Boolean: return x != 0.0 ? 1 : 0;  // a register is never Boolean
+    case IoDataType::Int16: return static_cast<std::uint16_t>(static_cast<std::int16_t>(held(x, -32768, 32767)));
+    case IoDataType::UInt16: return static_cast<std::uint64_t>(held(x, 0, 65535));
+    case IoDataType::Int32:
       return static_cast<std::uint32_t>(static_cast<std::int32_t>(held(x, -2147483648.0, 2147483647.0)));
-    case IoType::Uint32: return static_cast<std::uint32_t>(held(x, 0, 4294967295.0));
-    case IoType::Float32: {
+    case IoDataType::UInt32: return static_cast<std::uint64_t>(held(x, 0, 4294967295.0));
+    case IoDataType::Float: {
       const double lim = static_cast<double>(std::numeric_limits<float>::max());
       return std::bit_cast<std::uint32_t>(static_cast<float>(std::isnan(x) ? x : std::clamp(x, -lim, lim)));
     }
+    case IoDataType::Double: return std::bit_cast<std::uint64_t>(x);
   }
   return 0;
 }
@@ -247,9 +324,33 @@ std::uint16_t IoMap::word(IoTable table, std::uint16_t address) const {
   }
   const Bound* b = find(table, address);
   if (b == nullptr) return 0;
-  const std::uint32_t w = encode(*b);
-  if (b->width() == 1) return static_cast<std::uint16_t>(w);
-  return static_cast<std::uint16_t>(address == b->spec.address ? w >> 16 : w & 0xffff);  // high word first
+  const std::uint64_t w = encode(*b);
+  const auto below = static_cast<std::uint32_t>(b->width() - 1) - (address - b->spec.address);  // words after it
+  return static_cast<std::uint16_t>(w >> (16 * below));  // high word first
+}
+
+double IoMap::read(std::size_t i) const {
+  const Bound& b = bound_.at(i);
+  return wireNumber(isBit(b.spec.table) ? IoDataType::Boolean : b.spec.type, encode(b));
+}
+
+IoError IoMap::write(std::size_t i, double value, const std::string& client) {
+  // as the Modbus writes of the same words: one check, one write
+  const Bound& b = bound_.at(i);
+  if (b.spec.table != IoTable::Coils && b.spec.table != IoTable::HoldingRegisters) return IoError::IllegalFunction;
+  const auto w = wireBits(isBit(b.spec.table) ? IoDataType::Boolean : b.spec.type, value);
+  if (!w) return IoError::IllegalValue;
+  if (isBit(b.spec.table)) return writeBits(b.spec.address, {*w != 0}, client);
+  std::vector<std::uint16_t> words(static_cast<std::size_t>(b.width()));
+  for (std::size_t k = 0; k < words.size(); ++k) {
+    words[k] = static_cast<std::uint16_t>(*w >> (16 * (words.size() - 1 - k)));  // high word first
+  }
+  return writeWords(b.spec.address, words, client);
+}
+
+void IoMap::askSteps(std::uint32_t n) {
+  pending_steps_ = n > std::numeric_limits<std::uint32_t>::max() - pending_steps_ ? std::numeric_limits<std::uint32_t>::max()
+                                                                                  : pending_steps_ + n;
 }
 
 void IoMap::noteWrite(Bound& b, double value) {
@@ -300,19 +401,11 @@ IoError IoMap::writeWords(std::uint16_t first, const std::vector<std::uint16_t>&
     }
     Bound* b = find(IoTable::HoldingRegisters, a);
     if (b->spec.address != a || a + static_cast<std::uint32_t>(b->width()) > first + count) {
-      return IoError::IllegalAddress;  // half of a two-word entry
+      return IoError::IllegalAddress;  // part of a two- or four-word entry
     }
-    const std::uint32_t w = b->width() == 1 ? words[a - first]
-                                            : (static_cast<std::uint32_t>(words[a - first]) << 16) | words[a - first + 1];
-    double raw = 0;
-    switch (b->spec.type) {
-      case IoType::Int16: raw = static_cast<std::int16_t>(static_cast<std::uint16_t>(w)); break;
-      case IoType::Uint16: raw = static_cast<std::uint16_t>(w); break;
-      case IoType::Int32: raw = static_cast<std::int32_t>(w); break;
-      case IoType::Uint32: raw = w; break;
-      case IoType::Float32: raw = static_cast<double>(std::bit_cast<float>(w)); break;
-    }
-    const double v = raw / b->spec.scale;
+    std::uint64_t w = 0;
+    for (std::uint32_t k = 0; k < static_cast<std::uint32_t>(b->width()); ++k) w = (w << 16) | words[a - first + k];
+    const double v = wireNumber(b->spec.type, w) / b->spec.scale;
     if (!std::isfinite(v)) return IoError::IllegalValue;
     if (b->spec.source == IoEntry::Source::Part) {
       if (!sim_.parts()->refusal(b->part, b->spec.io, v).empty()) return IoError::IllegalValue;
@@ -350,7 +443,7 @@ IoError IoMap::writeWords(std::uint16_t first, const std::vector<std::uint16_t>&
     }
     noteWrite(b, w.value);
   }
-  pending_steps_ += steps;  // the steps show in the trace as steps
+  askSteps(steps);  // the steps show in the trace as steps
   return IoError::None;
 }
 
@@ -361,29 +454,26 @@ std::vector<IoMap::Row> IoMap::rows() const {
     r.table = b.spec.table;
     r.address = b.spec.address;
     const IoEntry& e = b.spec;
-    r.what = e.target;
-    if (!e.io.empty()) r.what += "." + e.io;
-    if (!e.value.empty()) r.what += "=" + e.value;
-    if (!e.quantity.empty()) r.what += "." + e.quantity;
-    if (!e.field.empty()) r.what += "." + e.field;
-    if (!e.key.empty()) r.what += " key " + e.key;
+    r.name = ioEntryName(e);
+    r.what = ioWhat(e);
     if (e.table == IoTable::InputRegisters || e.table == IoTable::HoldingRegisters) {
       std::vector<std::string> parts;
       if (e.scale != 1.0) parts.push_back("x " + core::formatDouble(e.scale));
       if (!e.unit.empty()) parts.push_back(e.unit);
-      if (e.type != IoType::Int16) parts.emplace_back(ioTypeName(e.type));
+      if (e.type != IoDataType::Int16) parts.emplace_back(ioDataTypeName(e.type));
       for (const auto& p : parts) r.wire += (r.wire.empty() ? "" : " ") + p;
     }
     r.value = value(b);
-    const std::uint32_t w = encode(b);
-    switch (e.type) {
-      case IoType::Int16:
-        r.raw = isBit(e.table) ? static_cast<std::int64_t>(w) : static_cast<std::int16_t>(static_cast<std::uint16_t>(w));
-        break;
-      case IoType::Int32: r.raw = static_cast<std::int32_t>(w); break;
-      case IoType::Uint16:
-      case IoType::Uint32:
-      case IoType::Float32: r.raw = w; break;
+    const std::uint64_t w = encode(b);
+    const IoDataType type = isBit(e.table) ? IoDataType::Boolean : e.type;
+    switch (type) {
+      case IoDataType::Boolean:
+      case IoDataType::Int16:
+      case IoDataType::UInt16:
+      case IoDataType::Int32:
+      case IoDataType::UInt32: r.raw = static_cast<std::int64_t>(wireNumber(type, w)); break;
+      case IoDataType::Float:
+      case IoDataType::Double: r.raw = static_cast<std::int64_t>(w); break;
     }
     r.writer = b.writer;
     out.push_back(std::move(r));

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "gdpn/core/text.h"
 #include "gdpn/model/schema.h"
@@ -20,15 +21,68 @@ const char* ioTableKey(IoTable table) {
   return "?";
 }
 
-const char* ioTypeName(IoType type) {
+const char* ioDataTypeName(IoDataType type) {
   switch (type) {
-    case IoType::Int16: return "int16";
-    case IoType::Uint16: return "uint16";
-    case IoType::Int32: return "int32";
-    case IoType::Uint32: return "uint32";
-    case IoType::Float32: return "float32";
+    case IoDataType::Boolean: return "Boolean";
+    case IoDataType::Int16: return "Int16";
+    case IoDataType::UInt16: return "UInt16";
+    case IoDataType::Int32: return "Int32";
+    case IoDataType::UInt32: return "UInt32";
+    case IoDataType::Float: return "Float";
+    case IoDataType::Double: return "Double";
   }
   return "?";
+}
+
+const char* ioDataTypeOldName(IoDataType type) {
+  switch (type) {
+    case IoDataType::Int16: return "int16";
+    case IoDataType::UInt16: return "uint16";
+    case IoDataType::Int32: return "int32";
+    case IoDataType::UInt32: return "uint32";
+    case IoDataType::Float: return "float32";
+    case IoDataType::Boolean:
+    case IoDataType::Double: return nullptr;
+  }
+  return nullptr;
+}
+
+namespace {
+
+/// `text` as a name: each run of characters other than ASCII letters, digits and `_` one `_`,
+/// none at either end.
+std::string ioNamePart(const std::string& text) {
+  std::string out;
+  bool gap = false;
+  for (const char c : text) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+    if (!ok) {
+      gap = true;
+      continue;
+    }
+    if (gap && !out.empty()) out += '_';
+    gap = false;
+    out += c;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string ioEntryName(const IoEntry& e) {
+  if (!e.name.empty()) return e.name;
+  const auto slash = e.target.rfind('/');
+  std::string name = ioNamePart(slash == std::string::npos ? e.target : e.target.substr(slash + 1));
+  std::string what;
+  if (!e.io.empty()) what = e.io;
+  else if (!e.value.empty()) what = e.value;
+  else if (!e.quantity.empty()) what = e.quantity;
+  else if (!e.field.empty()) what = e.field;
+  else if (!e.key.empty()) what = "key_" + e.key;
+  what = ioNamePart(what);
+  if (!what.empty()) name += (name.empty() ? "" : "_") + what;
+  if (name.empty() || (name[0] >= '0' && name[0] <= '9')) name.insert(0, "_");
+  return name;
 }
 
 std::string ioAddressName(IoTable table, std::uint32_t address) {
@@ -42,7 +96,9 @@ namespace {
 
 constexpr IoTable kTables[] = {IoTable::DiscreteInputs, IoTable::InputRegisters, IoTable::Coils,
                                IoTable::HoldingRegisters};
-constexpr IoType kTypes[] = {IoType::Int16, IoType::Uint16, IoType::Int32, IoType::Uint32, IoType::Float32};
+/// The types a register may have, in the schema's order.
+constexpr IoDataType kRegisterTypes[] = {IoDataType::Int16, IoDataType::UInt16, IoDataType::Int32,
+                                         IoDataType::UInt32, IoDataType::Float, IoDataType::Double};
 
 bool isRegister(IoTable t) { return t == IoTable::InputRegisters || t == IoTable::HoldingRegisters; }
 bool isWritten(IoTable t) { return t == IoTable::Coils || t == IoTable::HoldingRegisters; }
@@ -113,9 +169,26 @@ std::optional<IoEntry> readEntry(YamlReader& r, const SourceMap& source, IoTable
       out.key = *text;
     } else if (k.key == "unit") {
       out.unit = *text;
+    } else if (k.key == "name") {
+      if (!core::isIdentifier(*text)) {
+        r.error(r.loc(k.value, k.loc), "'name' of " + name +
+                                           " is an identifier (a letter or _, then letters, digits and _), got '" +
+                                           *text + "'");
+        ok = false;
+      } else {
+        out.name = *text;
+        out.name_loc = r.loc(k.value, k.loc);
+      }
+    } else if (k.key == "opcua") {
+      out.plc_node = *text;  // a NodeId: the opcua module reads it
+      out.plc_node_loc = r.loc(k.value, k.loc);
     } else if (k.key == "type") {
-      const auto* t = std::find_if(std::begin(kTypes), std::end(kTypes), [&](IoType x) { return *text == ioTypeName(x); });
-      if (t == std::end(kTypes)) {
+      // OPC UA's names, and the old ones (float32 ...) still read
+      const auto* t = std::find_if(std::begin(kRegisterTypes), std::end(kRegisterTypes), [&](IoDataType x) {
+        const char* old = ioDataTypeOldName(x);
+        return *text == ioDataTypeName(x) || (old != nullptr && *text == old);
+      });
+      if (t == std::end(kRegisterTypes)) {
         const auto& types = schema::key(schema::Section::IoEntry, "type");
         r.error(r.loc(k.value, k.loc), "'type' is one of " + schema::choiceList(types, "", ", ") + ", got '" + *text + "'");
         ok = false;
@@ -203,8 +276,8 @@ IoSpec readIo(const YAML::Node& section, YamlReader& r, const SourceMap& source)
     const IoEntry& a = io.entries[order[k]];
     const int wa = width(a);
     if (a.address + wa - 1 > 65535) {
-      r.error(a.loc, ioAddressName(a.table, a.address) + " is a " + ioTypeName(a.type) +
-                         ": it takes two addresses, and 65535 is the last");
+      r.error(a.loc, ioAddressName(a.table, a.address) + " is a " + ioDataTypeName(a.type) + ": it takes " +
+                         (wa == 2 ? "two" : "four") + " addresses, and 65535 is the last");
     }
     if (io.lockstep && a.table == IoTable::HoldingRegisters && a.address <= *io.lockstep &&
         *io.lockstep < a.address + wa) {
@@ -221,15 +294,49 @@ IoSpec readIo(const YAML::Node& section, YamlReader& r, const SourceMap& source)
     const int we = a_later ? wb : wa;
     r.error(later.loc, ioAddressName(later.table, later.address) + " overlaps " +
                            ioAddressName(earlier.table, earlier.address) +
-                           (we == 2 ? std::string(" (a ") + ioTypeName(earlier.type) + ", two addresses)" : std::string()) +
+                           (we > 1 ? std::string(" (a ") + ioDataTypeName(earlier.type) +
+                                         (we == 2 ? ", two addresses)" : ", four addresses)")
+                                   : std::string()) +
                            ", written at line " + std::to_string(earlier.loc.line));
   }
+  checkIoNames(io, [&](const core::SourceLoc& at, std::string message) { r.error(at, std::move(message)); });
   // kept in table and address order, as written back: a model read again is the same
   std::vector<IoEntry> sorted;
   sorted.reserve(order.size());
   for (const std::size_t i : order) sorted.push_back(std::move(io.entries[i]));
   io.entries = std::move(sorted);
   return io;
+}
+
+bool checkIoNames(const IoSpec& io, const std::function<void(const core::SourceLoc&, std::string)>& error) {
+  // in file order (line, then column): of two entries with one name, the later is reported,
+  // unless only it has its name written: then the one whose name is derived needs a `name`
+  std::vector<const IoEntry*> order;
+  order.reserve(io.entries.size());
+  for (const auto& e : io.entries) order.push_back(&e);
+  std::stable_sort(order.begin(), order.end(), [](const IoEntry* a, const IoEntry* b) {
+    return a->loc.line != b->loc.line ? a->loc.line < b->loc.line : a->loc.column < b->loc.column;
+  });
+  std::map<std::string, const IoEntry*> seen;
+  bool ok = true;
+  for (const IoEntry* e : order) {
+    const std::string name = ioEntryName(*e);
+    const auto [it, fresh] = seen.emplace(name, e);
+    if (fresh) continue;
+    ok = false;
+    const IoEntry* other = it->second;
+    const IoEntry* at = e->name.empty() || !other->name.empty() ? e : other;  // the one reported
+    const IoEntry* first = at == e ? other : e;
+    const std::string where = ioAddressName(first->table, first->address) + " (line " + std::to_string(first->loc.line) + ")";
+    if (at->name.empty()) {
+      error(at->loc, ioAddressName(at->table, at->address) + " is named '" + name + "' after what it maps, as " +
+                               where + " is: give it a 'name' (names are unique in the io section)");
+    } else {
+      error(at->name_loc, "'" + name + "' is the name of " + where + " too: names are unique in the io section");
+    }
+    if (at == other) it->second = e;
+  }
+  return ok;
 }
 
 void writeIo(YAML::Emitter& out, const IoSpec& io) {
@@ -239,6 +346,9 @@ void writeIo(YAML::Emitter& out, const IoSpec& io) {
   const double off_default = schema::defaultNumber(Section::IoEntry, "off");
   const double scale_default = schema::defaultNumber(Section::IoEntry, "scale");
   const std::string& type_default = schema::key(Section::IoEntry, "type").initial;
+  const auto text = [&](const char* key, const std::string& value) {
+    if (!value.empty()) out << YAML::Key << key << YAML::Value << value;
+  };
   const auto entry = [&](IoTable t, const IoEntry& e) {
     // a value written as a block (it spans lines) needs a block map
     out << YAML::Key << e.address << YAML::Value << (inscriptionIsBlock(e.value) ? YAML::Block : YAML::Flow)
@@ -249,6 +359,7 @@ void writeIo(YAML::Emitter& out, const IoSpec& io) {
     schema::inSchemaOrder(
         Section::IoEntry,
         {
+            {"name", [&] { text("name", e.name); }},
             {"place", [&] { if (place) out << YAML::Key << "place" << YAML::Value << e.target; }},
             {"value",
              [&] {
@@ -273,8 +384,11 @@ void writeIo(YAML::Emitter& out, const IoSpec& io) {
             {"unit", [&] { if (word && !e.unit.empty()) out << YAML::Key << "unit" << YAML::Value << e.unit; }},
             {"type",
              [&] {
-               if (word && ioTypeName(e.type) != type_default) out << YAML::Key << "type" << YAML::Value << ioTypeName(e.type);
+               if (word && ioDataTypeName(e.type) != type_default) {
+                 out << YAML::Key << "type" << YAML::Value << ioDataTypeName(e.type);
+               }
              }},
+            {"opcua", [&] { text("opcua", e.plc_node); }},
         });
     out << YAML::EndMap;
   };

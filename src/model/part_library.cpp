@@ -515,7 +515,7 @@ std::vector<IoEntry> mapPartIo(Model& model, const std::string& page, const std:
     e.target = target;
     e.io = io.name;
     if (!digital) {
-      e.type = IoType::Float32;
+      e.type = IoDataType::Float;
       e.unit = io.unit;
     }
     model.io.entries.push_back(e);

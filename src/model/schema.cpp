@@ -162,6 +162,10 @@ std::vector<KeyDesc> ioKeys() {
 std::vector<KeyDesc> ioEntryKeys() {
   using enum IoTable;
   return {
+      io(k("name", ValueType::Name, "",
+           "the point's name, an identifier unique in the section, as OPC UA serves it (none: derived from what it "
+           "maps, *Names*)"),
+         {DiscreteInputs, InputRegisters, Coils, HoldingRegisters}),
       io(k("place", ValueType::Name, "", "a place: its tokens, all slots together"),
          {DiscreteInputs, InputRegisters, Coils, HoldingRegisters}),
       io(k("value", ValueType::Inscription, "",
@@ -183,10 +187,15 @@ std::vector<KeyDesc> ioEntryKeys() {
          {InputRegisters, HoldingRegisters}),
       io(k("unit", ValueType::Text, "", "for people, the word's unit after scaling"),
          {InputRegisters, HoldingRegisters}),
-      io(word("type", {ioTypeName(IoType::Int16), ioTypeName(IoType::Uint16), ioTypeName(IoType::Int32),
-                       ioTypeName(IoType::Uint32), ioTypeName(IoType::Float32)},
-              "how the number is put into words (32 bits: two, the high word first)"),
+      io(word("type",
+              {ioDataTypeName(IoDataType::Int16), ioDataTypeName(IoDataType::UInt16), ioDataTypeName(IoDataType::Int32),
+               ioDataTypeName(IoDataType::UInt32), ioDataTypeName(IoDataType::Float), ioDataTypeName(IoDataType::Double)},
+              "the number's type, OPC UA's name; on Modbus, words high first: Int16, UInt16 one, Int32, UInt32, Float "
+              "two, Double four (the old `int16`, `uint16`, `int32`, `uint32`, `float32` still read; *Types*)"),
          {InputRegisters, HoldingRegisters}),
+      io(k("opcua", ValueType::Text, "",
+           "client mode: the PLC's OPC UA node it is mapped to, a NodeId (`ns=1;s=Eye`)"),
+         {DiscreteInputs, InputRegisters, Coils, HoldingRegisters}),
   };
 }
 

@@ -141,7 +141,7 @@ TEST_F(IoListIde, MapForPlcPutsThePartsIoIntoTheSavedIoSectionAsOneStep) {
   const auto* speed = find(model::IoTable::HoldingRegisters);
   ASSERT_TRUE(speed);
   EXPECT_EQ(speed->io, "speed");
-  EXPECT_EQ(speed->type, model::IoType::Float32);
+  EXPECT_EQ(speed->type, model::IoDataType::Float);
   EXPECT_EQ(find(model::IoTable::InputRegisters)->io, "height");
   // an edit: during a run the button does nothing
   write("lamp.gdpn.yaml", testing::lampModel());

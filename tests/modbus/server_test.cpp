@@ -31,8 +31,8 @@ scene:
   - Transform: {name: belt, children: [{Conveyor: {name: drive, speed: 0.25}}, {Cube: {size: [2, 0.5, 0.1]}}]}
 io:
   lockstep: 9
-  input_registers: {0: {node: belt/drive, of: speed, scale: 1000}}
-  coils: {0: {node: belt/drive, field: speed, on: 0.5}}
+  input_registers: {0: {name: speed, node: belt/drive, of: speed, scale: 1000}}
+  coils: {0: {name: running, node: belt/drive, field: speed, on: 0.5}}
   holding_registers: {0: {node: belt/drive, field: speed, scale: 1000}, 1: {place: main/parts}}
 pages:
   main: {places: {parts: {tokens: 2}}}

@@ -67,10 +67,10 @@ TEST(HybridFaces, TheIoSectionReadsAndSetsAnAmountWithItsScale) {
   core::Diagnostics diags;
   auto r = load(testing::fillModelText() + R"(io:
   discrete_inputs:
-    0: {place: main/tank}
+    0: {name: wet, place: main/tank}
   input_registers:
-    0: {place: main/tank, scale: 100, unit: cL}
-    1: {place: main/tank, type: float32}
+    0: {name: level_cl, place: main/tank, scale: 100, unit: cL}
+    1: {name: level, place: main/tank, type: float32}
   holding_registers:
     0: {place: main/tank, scale: 10, unit: dL}
 )",

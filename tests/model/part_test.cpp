@@ -128,7 +128,7 @@ TEST(Part, IoIsReadWrittenAndNamedInScriptsAndTheIoSection) {
 TEST(Part, TheIoSectionMapsAPartsIoByName) {
   core::Diagnostics diags;
   auto m = parseModel(lampModel("  main:\n    instances:\n      a: {type: lamp}\n") +
-                          "io:\n  coils:\n    0: {part: a, io: light}\n  discrete_inputs:\n    0: {part: a, io: light}\n",
+                          "io:\n  coils:\n    0: {part: a, io: light}\n  discrete_inputs:\n    0: {name: wrong, part: a, io: light}\n",
                       "m.gdpn.yaml", diags);
   ASSERT_TRUE(m) << diags.str();
   checkModel(*m, diags);
@@ -399,7 +399,7 @@ TEST(PartLibrary, AModelKeepsItsCopyAndRunsWithoutTheLibrary) {
   const auto mapped = mapPartIo(m, "main", "lamp1", why);
   ASSERT_EQ(mapped.size(), 4U) << why;
   EXPECT_EQ(mapped[2].table, IoTable::InputRegisters);
-  EXPECT_EQ(mapped[2].type, IoType::Float32);
+  EXPECT_EQ(mapped[2].type, IoDataType::Float);
   EXPECT_TRUE(mapPartIo(m, "main", "lamp1", why).empty());  // mapped once
   const fs::path saved = scratch("model") / "m.gdpn.yaml";
   ASSERT_TRUE(saveModel(m, saved.string(), diags)) << diags.str();

@@ -60,7 +60,7 @@ TEST(Schema, RangesAndDefaultsAreKnown) {
 TEST(Schema, WordsComeFromTheirEnumsNames) {
   EXPECT_EQ(key(Section::Arc, "kind").choices, (std::vector<std::string>{"normal", "test", "inhibitor"}));
   EXPECT_EQ(choiceList(key(Section::Arc, "kind")), "normal, test or inhibitor");
-  EXPECT_EQ(choiceList(key(Section::IoEntry, "type"), "", ", "), "int16, uint16, int32, uint32, float32");
+  EXPECT_EQ(choiceList(key(Section::IoEntry, "type"), "", ", "), "Int16, UInt16, Int32, UInt32, Float, Double");
   EXPECT_EQ(key(Section::Place, "slots").form, "map slot → `control`, `node`, `sensor` or `value`");
   EXPECT_EQ(choiceList(key(Section::Settings, "ties"), "'"), "'order' or 'random'");
 }
@@ -94,9 +94,9 @@ TEST(Schema, IoKeysAreTheFourTablesAfterLockstep) {
             (std::vector<std::string>{"lockstep", ioTableKey(IoTable::DiscreteInputs), ioTableKey(IoTable::InputRegisters),
                                       ioTableKey(IoTable::Coils), ioTableKey(IoTable::HoldingRegisters)}));
   EXPECT_EQ(ioEntryKeyNames(IoTable::Coils),
-            (std::vector<std::string>{"place", "node", "part", "io", "field", "on", "off"}));
+            (std::vector<std::string>{"name", "place", "node", "part", "io", "field", "on", "off", "opcua"}));
   EXPECT_EQ(ioEntryKeyNames(IoTable::InputRegisters),
-            (std::vector<std::string>{"place", "value", "node", "part", "io", "of", "scale", "unit", "type"}));
+            (std::vector<std::string>{"name", "place", "value", "node", "part", "io", "of", "scale", "unit", "type", "opcua"}));
 }
 
 TEST(Schema, EveryKeyIsDescribed) {
@@ -234,7 +234,7 @@ TEST(SchemaLoad, RangesComeFromTheSchemaWithTheirLocations) {
                       "node, sensor or value"),
             std::string::npos);
   EXPECT_NE(diagnose("gdpn: 1\nio: {input_registers: {0: {node: n, of: reading, type: int8}}}\n")
-                .find("m.gdpn.yaml:2:56: error: 'type' is one of int16, uint16, int32, uint32, float32, got 'int8'"),
+                .find("m.gdpn.yaml:2:56: error: 'type' is one of Int16, UInt16, Int32, UInt32, Float, Double, got 'int8'"),
             std::string::npos);
 }
 
@@ -256,8 +256,9 @@ io:
     0: {node: eye, of: active}
     1: {node: keys, key: g}
   input_registers:
-    0: {node: mast, of: reading, scale: 1000, unit: mm, type: float32}
+    0: {name: height, node: mast, of: reading, scale: 1000, unit: mm, type: float32, opcua: "ns=1;s=Height"}
     2: {place: main/p, value: "p2"}
+    3: {node: mast, of: reading, type: Double}
   coils:
     0: {node: belt, field: speed, on: 0.5, off: 0.25}
     1: {part: main/i, io: lamp}
@@ -438,7 +439,7 @@ io:
   coils:
     0: {node: belt, field: speed, on: 1, off: 0}
   holding_registers:
-    0: {node: belt, field: speed, scale: 1, type: int16}
+    0: {name: set_speed, node: belt, field: speed, scale: 1, type: int16}
 pages:
   main:
     places:
@@ -453,7 +454,7 @@ pages:
                       "defaults.gdpn.yaml", diags);
   ASSERT_TRUE(m) << diags.str();
   const std::string text = writeModel(*m);
-  for (const char* k : {"on:", "off:", "scale:", "type: int", "priority:", "probability:", "servers:", "kind:",
+  for (const char* k : {"on:", "off:", "scale:", "type: int", "type: Int", "priority:", "probability:", "servers:", "kind:",
                         "translation:", "rotation:", "settings:", "angles:", "ties:"}) {
     EXPECT_EQ(text.find(k), std::string::npos) << k << "\n" << text;
   }
