@@ -133,7 +133,10 @@ struct Client::Impl {
   std::string in;                     // bytes received, not yet a whole chunk
   std::string unsent;                 // bytes the kernel would not take yet
   // the secure channel
-  std::uint32_t channel = 0, token = 0, old_token = 0;
+  std::uint32_t channel = 0, token = 0;
+  // the tokens issued and until when each is good (a server may answer a request with the
+  // token it came with, until a quarter of a lifetime after the token's end)
+  std::deque<std::pair<std::uint32_t, Clock::time_point>> tokens;
   std::uint32_t send_sequence = 0, receive_sequence = 0;
   bool sequenced = false;
   Clock::time_point renew_at = Clock::time_point::max();
@@ -307,9 +310,9 @@ struct Client::Impl {
     if (type != "MSG") return fail("the server at " + url + " sent a message of type '" + std::string(type) + "'");
     if (d.u32() != channel) return fail("the server at " + url + " sent a message for another secure channel");
     const std::uint32_t token_id = d.u32();
-    if (token_id != token && token_id != old_token) {
-      return fail("the server at " + url + " sent a message with an unknown security token");
-    }
+    const auto now = Clock::now();
+    const bool known = std::any_of(tokens.begin(), tokens.end(), [&](const auto& t) { return t.first == token_id && now < t.second; });
+    if (!known) return fail("the server at " + url + " sent a message with security token " + std::to_string(token_id) + ", unknown or expired");
     if (!sequence(d.u32())) return false;
     const std::uint32_t request = d.u32();
     switch (final) {
@@ -389,7 +392,6 @@ struct Client::Impl {
           } catch (const DecodeError& bad) {
             return fail("the server at " + url + " sent an OpenSecureChannel answer that cannot be read: " + bad.what());
           }
-          old_token = token;
         }
         break;
       case detail::kWrite:
@@ -595,8 +597,9 @@ struct Client::Impl {
     (void)d.string();  // server nonce
     if (channel != 0 && id != channel) return fail("the server at " + url + " renewed another secure channel");
     channel = id;
-    old_token = token;
     token = new_token;
+    tokens.emplace_back(token, Clock::now() + std::chrono::milliseconds(std::int64_t{lifetime} * 5 / 4));
+    if (tokens.size() > 16) tokens.pop_front();
     // renew at three quarters of the lifetime (at least a second after now)
     const auto ms = options.renew_after_ms > 0 ? std::int64_t{options.renew_after_ms}
                                                : std::max<std::int64_t>(1000, static_cast<std::int64_t>(lifetime) * 3 / 4);
@@ -628,6 +631,10 @@ struct Client::Impl {
     if (!a.ok) {
       // a Publish that waited too long, or one too many: asked again by housekeeping
       if (a.status == status::kBadTimeout || a.status == status::kBadTooManyPublishRequests) return true;
+      if (a.status == status::kBadSessionClosed || a.status == status::kBadSessionIdInvalid || a.status == status::kBadShutdown ||
+          a.status == status::kBadServerHalted) {
+        return fail("the server at " + url + " ended the session (" + status::name(a.status) + ")");
+      }
       return fail("the server at " + url + " ended the subscription: " + a.error);
     }
     try {
@@ -754,10 +761,10 @@ struct Client::Impl {
       (void)d.string();  // certificate
       const std::uint32_t mode = d.u32();
       const std::string policy = d.string(4096);
-      const std::size_t tokens = d.length(8);
+      const std::size_t token_count = d.length(8);
       std::string anonymous_id;
       bool has_anonymous = false;
-      for (std::size_t k = 0; k < tokens; ++k) {
+      for (std::size_t k = 0; k < token_count; ++k) {
         const std::string policy_id = d.string(4096);
         const std::uint32_t token_type = d.u32();
         (void)d.string(4096);
@@ -919,7 +926,8 @@ bool Client::read(const std::vector<ReadItem>& items, std::vector<DataValue>& va
     e.nodeId(item.node);
     e.u32(item.attribute);
     e.nullString();  // index range
-    e.qualifiedName({});
+    e.u16(0);        // data encoding: none (a null name: node-opcua takes "" for one named)
+    e.nullString();
   }
   if (!impl_->await(impl_->request(detail::kRead, fields, true), body, why)) return false;
   try {
@@ -1034,7 +1042,8 @@ bool Client::monitor(std::uint32_t subscription, const std::vector<MonitorItem>&
     e.nodeId(item.node);
     e.u32(13);
     e.nullString();
-    e.qualifiedName({});
+    e.u16(0);        // data encoding: none (a null name: node-opcua takes "" for one named)
+    e.nullString();
     e.u32(2);  // reporting
     e.u32(item.handle);
     e.f64(item.sampling_ms);
