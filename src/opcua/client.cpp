@@ -30,7 +30,6 @@ namespace gdpn::opcua {
 
 namespace client_wire {
 
-using detail::Service;
 inline constexpr std::uint32_t kAnonymousTokenEncoding = 321;
 
 /// What a response carried: its body after the response header, or why it failed.
@@ -74,7 +73,6 @@ std::string clientRandomBytes(std::size_t n) {
 
 }  // namespace client_wire
 
-using namespace client_wire;
 
 bool parseOpcUrl(const std::string& url, std::string& host, std::uint16_t& port, std::string& why) {
   const std::string scheme = "opc.tcp://";
@@ -148,8 +146,8 @@ struct Client::Impl {
   std::uint32_t partial_chunks = 0;
   // requests
   std::uint32_t next_request = 1;
-  std::map<std::uint32_t, Outstanding> outstanding;
-  std::map<std::uint32_t, Answer> answers;
+  std::map<std::uint32_t, client_wire::Outstanding> outstanding;
+  std::map<std::uint32_t, client_wire::Answer> answers;
   Clock::time_point last_heard = Clock::now();
   // the session
   NodeId auth_token;
@@ -323,7 +321,7 @@ struct Client::Impl {
         partial_chunks = 0;
         const auto it = outstanding.find(request);
         if (it == outstanding.end()) return true;
-        const Outstanding out = std::move(it->second);
+        const client_wire::Outstanding out = std::move(it->second);
         outstanding.erase(it);
         return answer(request, {false, {}, "the server gave up on its answer: " + status::name(code) + (reason.empty() ? "" : ": " + reason), code},
                       out);
@@ -360,7 +358,7 @@ struct Client::Impl {
   bool message(std::uint32_t request, std::string_view body, bool open) {
     const auto it = outstanding.find(request);
     if (it == outstanding.end()) return fail("the server at " + url + " answered request " + std::to_string(request) + ", which was not asked");
-    const Outstanding out = std::move(it->second);
+    const client_wire::Outstanding out = std::move(it->second);
     outstanding.erase(it);
     Decoder d(body);
     const NodeId type = d.nodeId();
@@ -371,16 +369,16 @@ struct Client::Impl {
     (void)d.strings();          // string table
     (void)d.extensionObject();  // additional header
     if (type == NodeId::num(detail::kServiceFault) || status::isBad(result)) {
-      return answer(request, {false, {}, serviceName(out.service) + " failed: " + status::name(result), result}, out);
+      return answer(request, {false, {}, client_wire::serviceName(out.service) + " failed: " + status::name(result), result}, out);
     }
     if (type != NodeId::num(out.service + 3)) {
-      return fail("the server at " + url + " answered a " + serviceName(out.service) + " request with " + type.str());
+      return fail("the server at " + url + " answered a " + client_wire::serviceName(out.service) + " request with " + type.str());
     }
     if (open != (out.service == detail::kOpenSecureChannel)) return fail("the server at " + url + " sent an answer of the wrong message type");
     return answer(request, {true, std::string(d.rest()), {}, result}, out);
   }
 
-  bool answer(std::uint32_t request, Answer a, const Outstanding& out) {
+  bool answer(std::uint32_t request, client_wire::Answer a, const client_wire::Outstanding& out) {
     switch (out.service) {
       case detail::kPublish: return publishAnswer(a);
       case detail::kOpenSecureChannel:
@@ -464,7 +462,7 @@ struct Client::Impl {
     Encoder(body).nodeId(NodeId::num(service));
     body += header(id, publish ? 0 : static_cast<std::uint32_t>(options.timeout.count()), service != detail::kOpenSecureChannel);
     body += fields;
-    Outstanding out;
+    client_wire::Outstanding out;
     out.service = service;
     out.deadline = publish ? Clock::time_point::max() : Clock::now() + options.timeout;
     out.keep = keep;
@@ -489,7 +487,7 @@ struct Client::Impl {
     while (true) {
       const auto it = answers.find(id);
       if (it != answers.end()) {
-        Answer a = std::move(it->second);
+        client_wire::Answer a = std::move(it->second);
         answers.erase(it);
         if (!a.ok) {
           why = a.error;
@@ -501,7 +499,7 @@ struct Client::Impl {
       const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
       if (left <= 0) {
         const auto o = outstanding.find(id);
-        fail("the server at " + url + " did not answer " + serviceName(o == outstanding.end() ? 0 : o->second.service) + " within " +
+        fail("the server at " + url + " did not answer " + client_wire::serviceName(o == outstanding.end() ? 0 : o->second.service) + " within " +
              std::to_string(options.timeout.count()) + " ms");
         why = error;
         return false;
@@ -607,7 +605,7 @@ struct Client::Impl {
     return true;
   }
 
-  bool renewAnswer(const Answer& a) {
+  bool renewAnswer(const client_wire::Answer& a) {
     if (!a.ok) return fail("the server at " + url + " did not renew the secure channel: " + a.error);
     try {
       if (!takeToken(a.body)) return false;
@@ -626,7 +624,7 @@ struct Client::Impl {
 
   // ---- subscriptions ----
 
-  bool publishAnswer(const Answer& a) {
+  bool publishAnswer(const client_wire::Answer& a) {
     if (publishing > 0) --publishing;
     if (!a.ok) {
       // a Publish that waited too long, or one too many: asked again by housekeeping
@@ -675,7 +673,7 @@ struct Client::Impl {
     return true;
   }
 
-  bool writeAnswer(const Answer& a, const std::vector<NodeId>& nodes) {
+  bool writeAnswer(const client_wire::Answer& a, const std::vector<NodeId>& nodes) {
     writing = false;
     if (!a.ok) return fail("the server at " + url + " refused a write: " + a.error);
     try {
@@ -717,7 +715,7 @@ struct Client::Impl {
     }
     for (const auto& [id, out] : outstanding) {
       if (now > out.deadline) {
-        return fail("the server at " + url + " did not answer " + serviceName(out.service) + " within " +
+        return fail("the server at " + url + " did not answer " + client_wire::serviceName(out.service) + " within " +
                     std::to_string(options.timeout.count()) + " ms");
       }
     }
@@ -816,7 +814,7 @@ struct Client::Impl {
     c.nullString();  // server URI
     c.string(url);
     c.string(options.session_name);
-    c.string(clientRandomBytes(32));  // client nonce
+    c.string(client_wire::clientRandomBytes(32));  // client nonce
     c.nullString();                   // client certificate
     c.f64(options.session_timeout_ms);
     c.u32(options.message_bytes);
@@ -836,7 +834,7 @@ struct Client::Impl {
     a.nullString();  //                   signature
     a.length(0);     // software certificates
     a.length(0);     // locales
-    ExtensionObject token_object{NodeId::num(kAnonymousTokenEncoding), 1, {}};
+    ExtensionObject token_object{NodeId::num(client_wire::kAnonymousTokenEncoding), 1, {}};
     Encoder(token_object.body).string(anonymous_policy);
     a.extensionObject(token_object);
     a.nullString();  // user token signature
@@ -968,7 +966,7 @@ std::string writeFields(const std::vector<WriteItem>& items) {
 
 bool Client::write(const std::vector<WriteItem>& items, std::vector<StatusCode>& results, std::string& why) {
   std::string body;
-  if (!impl_->await(impl_->request(detail::kWrite, writeFields(items), true), body, why)) return false;
+  if (!impl_->await(impl_->request(detail::kWrite, client_wire::writeFields(items), true), body, why)) return false;
   try {
     Decoder d(body);
     results = d.u32s();
@@ -988,7 +986,7 @@ bool Client::write(const std::vector<WriteItem>& items, std::vector<StatusCode>&
 bool Client::writeAsync(const std::vector<WriteItem>& items, std::string& why) {
   std::vector<NodeId> nodes;
   for (const auto& item : items) nodes.push_back(item.node);
-  if (impl_->request(detail::kWrite, writeFields(items), false, std::move(nodes)) == 0) {
+  if (impl_->request(detail::kWrite, client_wire::writeFields(items), false, std::move(nodes)) == 0) {
     why = impl_->error;
     return false;
   }

@@ -70,12 +70,11 @@ bool same(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)
 
 }  // namespace plc_detail
 
-using namespace plc_detail;
 
 bool typeHolds(BuiltinType from, BuiltinType to) {
   if (from == BuiltinType::Boolean || to == BuiltinType::Boolean) return from == to;
-  if (!mappable(from) || !mappable(to)) return false;
-  const TypeRange f = rangeOf(from), t = rangeOf(to);
+  if (!plc_detail::mappable(from) || !plc_detail::mappable(to)) return false;
+  const plc_detail::TypeRange f = plc_detail::rangeOf(from), t = plc_detail::rangeOf(to);
   if (f.integer && t.integer) return t.min <= f.min && f.max <= t.max;
   if (f.integer) {  // into Float or Double: the integers it holds exactly
     const double exact = to == BuiltinType::Float ? 16777216.0 : 9007199254740992.0;
@@ -173,18 +172,18 @@ std::unique_ptr<PlcLink> PlcLink::connect(const std::string& url, model::IoMap& 
     l.plc_type = builtinOf(std::get<NodeId>(type.value->scalar));
     const BuiltinType mine = builtinOfPoint(p.type);
     const char* point_type = model::ioDataTypeName(p.type);
-    if (!mappable(l.plc_type)) {
+    if (!plc_detail::mappable(l.plc_type)) {
       diags.error(p.plc_node_loc, "opcua: the PLC's node " + node + " is of data type " + std::get<NodeId>(type.value->scalar).str() +
                                       ", which is no Boolean or number");
       continue;
     }
     if (p.writable && !typeHolds(l.plc_type, mine)) {
-      diags.error(p.plc_node_loc, "opcua: the PLC's node " + node + " is " + builtinName(l.plc_type) + ": '" + p.name + "' (" +
+      diags.error(p.plc_node_loc, "opcua: the PLC's node " + node + " is " + plc_detail::builtinName(l.plc_type) + ": '" + p.name + "' (" +
                                       point_type + ") cannot take each of its values");
       continue;
     }
     if (!p.writable && !typeHolds(mine, l.plc_type)) {
-      diags.error(p.plc_node_loc, "opcua: the PLC's node " + node + " is " + builtinName(l.plc_type) + ": it cannot take each value of '" +
+      diags.error(p.plc_node_loc, "opcua: the PLC's node " + node + " is " + plc_detail::builtinName(l.plc_type) + ": it cannot take each value of '" +
                                       p.name + "' (" + point_type + ")");
       continue;
     }
@@ -219,10 +218,10 @@ std::unique_ptr<PlcLink> PlcLink::connect(const std::string& url, model::IoMap& 
     std::uint32_t subscription = 0;
     std::vector<MonitorItem> watch;
     for (std::size_t k = 0; k < link->outputs_.size(); ++k) {
-      watch.push_back({link->outputs_[k].node, static_cast<std::uint32_t>(k), kPublishingMs});
+      watch.push_back({link->outputs_[k].node, static_cast<std::uint32_t>(k), plc_detail::kPublishingMs});
     }
     std::vector<StatusCode> results;
-    if (!link->client_->subscribe(kPublishingMs, subscription, why) || !link->client_->monitor(subscription, watch, results, why)) {
+    if (!link->client_->subscribe(plc_detail::kPublishingMs, subscription, why) || !link->client_->monitor(subscription, watch, results, why)) {
       why = "the PLC at " + url + ": " + why;
       return nullptr;
     }
@@ -250,7 +249,7 @@ bool PlcLink::apply(Linked& out, double value, std::string& why) {
       return false;
     case model::IoError::IllegalValue: break;
   }
-  why = "the PLC's node " + out.node.str() + " sent " + number(value) + ", which '" + p.name + "' (" + model::ioDataTypeName(p.type) +
+  why = "the PLC's node " + out.node.str() + " sent " + plc_detail::number(value) + ", which '" + p.name + "' (" + model::ioDataTypeName(p.type) +
         ") refuses";
   return false;
 }
@@ -281,8 +280,8 @@ bool PlcLink::exchange(std::string& why) {
   std::vector<WriteItem> items;
   for (auto& in : inputs_) {
     const double v = io_.read(in.point);
-    if (in.sent && same(v, in.last)) continue;
-    items.push_back({in.node, variantOf(in.plc_type, v)});
+    if (in.sent && plc_detail::same(v, in.last)) continue;
+    items.push_back({in.node, plc_detail::variantOf(in.plc_type, v)});
     in.sent = true;
     in.last = v;
   }

@@ -9,7 +9,9 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <random>
 #include <thread>
 
 #include "gdpn/opcua/client.h"
@@ -331,6 +333,36 @@ TEST(OpcUaClient, SaysWhatIsWrongWithServersThatBreakTheProtocol) {
     FakeServer skip({acknowledge(), openAnswer(), skipping});
     EXPECT_FALSE(Client::connect(skip.url(), options, why));
     EXPECT_NE(why.find("sequence number 7 after 1"), std::string::npos) << why;
+  }
+}
+
+TEST(OpcUaClient, TurnsNoiseIntoAnError) {
+  // after a good Acknowledge and channel, chunks of random bytes with good headers: each
+  // connection ends with a message, none crashes or hangs
+  ClientOptions options;
+  options.timeout = std::chrono::milliseconds(300);
+  std::mt19937 random(61);
+  for (int round = 0; round < 40; ++round) {
+    std::string noise = messageChunks(2, 1, 8 + random() % 200, 'F');
+    for (std::size_t k = 24; k < noise.size(); ++k) noise[k] = static_cast<char>(random() & 0xFF);
+    if (round % 2 == 1) {
+      // a GetEndpoints answer's header, then noise
+      std::string body;
+      Encoder b(body);
+      b.nodeId(NodeId::num(431));
+      b.i64(0);
+      b.u32(2);
+      b.u32(0);
+      b.noDiagnostics();
+      b.length(0);
+      b.nodeId({});
+      b.u8(0);
+      noise.replace(24, std::min(body.size(), noise.size() - 24), body.substr(0, noise.size() - 24));
+    }
+    FakeServer noisy({acknowledge(), openAnswer(), noise});
+    std::string why;
+    EXPECT_FALSE(Client::connect(noisy.url(), options, why));
+    EXPECT_FALSE(why.empty());
   }
 }
 
