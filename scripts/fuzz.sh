@@ -48,3 +48,4 @@ fuzz input_events_fuzz 4096 '*.input.yaml' tests/data/input
 fuzz query_parser_fuzz 8192 '*.query *.xml' tests/data/queries
 fuzz witness_fuzz 4096 '*.json' tests/data/witnesses
 fuzz modbus_request_fuzz 1024 "*.bin" tests/data/modbus
+fuzz opcua_message_fuzz 8192 "*.bin" tests/data/opcua

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages gdpn needs to build, test and run.
+# Installs the Debian 12 packages gdpn needs to build, test and run, then the npm packages
+# of scripts/node (node-opcua, pinned by its package-lock.json) into scripts/node/node_modules.
 # Idempotent: it asks apt only for the packages that are missing, and does
-# nothing (not even `apt-get update`) when all of them are present.
+# nothing (not even `apt-get update`) when all of them are present; it runs `npm ci` only
+# when scripts/node/node_modules was not installed from the lockfile as it is now.
 set -euo pipefail
 
 packages=(
@@ -29,10 +31,15 @@ packages=(
   # virtual commissioning: Modbus TCP (the server), mbpoll and pymodbus (the tests' clients and
   # the example's soft PLC; Debian's pymodbus 3.0 imports serial_asyncio, only recommended)
   libmodbus-dev mbpoll python3-pymodbus python3-serial-asyncio
+  # virtual commissioning: OPC UA; node-opcua (npm, below) is the tests' real client and server
+  # and the example's OPC UA controllers
+  nodejs npm
 )
 
 missing=()
 for p in "${packages[@]}"; do
+  # NodeSource's nodejs package carries npm and conflicts with Debian's: its command will do
+  if [ "$p" = npm ] && command -v npm >/dev/null; then continue; fi
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
     missing+=("$p")
   fi
@@ -40,12 +47,22 @@ done
 
 if [ "${#missing[@]}" -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages present"
-  exit 0
+else
+  echo "install-deps: installing ${missing[*]}"
+  sudo=""
+  if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo apt-get update -o DPkg::Lock::Timeout=300 -qq
+  $sudo apt-get install -y -qq --no-install-recommends -o DPkg::Lock::Timeout=300 "${missing[@]}"
 fi
 
-echo "install-deps: installing ${missing[*]}"
-sudo=""
-if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
-export DEBIAN_FRONTEND=noninteractive
-$sudo apt-get update -o DPkg::Lock::Timeout=300 -qq
-$sudo apt-get install -y -qq --no-install-recommends -o DPkg::Lock::Timeout=300 "${missing[@]}"
+# the npm packages, exactly as the lockfile has them; the copy of the lockfile in node_modules
+# says which lockfile they were installed from
+node_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/node"
+if cmp -s "$node_dir/package-lock.json" "$node_dir/node_modules/.gdpn-package-lock.json"; then
+  echo "install-deps: scripts/node/node_modules is as its lockfile has it"
+else
+  echo "install-deps: npm ci in scripts/node"
+  (cd "$node_dir" && npm ci --no-audit --no-fund --loglevel=error)
+  cp "$node_dir/package-lock.json" "$node_dir/node_modules/.gdpn-package-lock.json"
+fi

@@ -41,7 +41,7 @@ struct RunArgs {
   double signal_every = 0.0;         // their period, seconds (0: every step)
   std::string signals_out;           // --signals FILE.csv
   std::string html;                  // --html FILE.html
-  ServeArgs serve;        // --modbus, --realtime, --lockstep
+  ServeArgs serve;        // --modbus, --opcua, --opcua-client, --realtime, --lockstep
 };
 
 int run(const RunArgs& a) {
@@ -118,7 +118,7 @@ int run(const RunArgs& a) {
     }
     sim->traceTo(trace->stream());
   }
-  modbus::Serving serving;
+  link::Serving serving;
   if (int code = 0; !serving.start(a.serve, sim->simulation(), &g_interrupted, a.quiet, std::cerr, code)) return code;
   std::signal(SIGINT, onSigint);
   std::signal(SIGTERM, onSigint);  // a launcher that stops the run still gets its trace and summary

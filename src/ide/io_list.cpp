@@ -165,6 +165,7 @@ std::vector<IoListRow> ioListRows(const model::Model& model) {
       const bool names = e.target == row.part || e.target == row.instance;
       if (e.source == model::IoEntry::Source::Part && e.io == row.io.name && names) {
         row.addresses.push_back(model::ioAddressName(e.table, e.address));
+        row.names.push_back(model::ioEntryName(e));
       }
     }
   }

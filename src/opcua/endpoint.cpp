@@ -122,8 +122,11 @@ void EndpointState::closeSession(std::uint64_t number, bool delete_subscriptions
 // ---------------------------------------------------------------------------------------------
 // Connections and chunks
 
-Endpoint::Endpoint(AddressSpace& space, std::string endpoint_url, const ServerLimits& limits, bool read_only)
-    : impl_(std::make_unique<Impl>(space, std::move(endpoint_url), limits, read_only)) {}
+Endpoint::Endpoint(AddressSpace& space, std::string endpoint_url, const ServerLimits& limits, bool read_only,
+                   std::uint64_t seed)
+    : impl_(std::make_unique<Impl>(space, std::move(endpoint_url), limits, read_only)) {
+  impl_->random.seed(seed != 0 ? seed : std::random_device{}());
+}
 
 Endpoint::~Endpoint() = default;
 
@@ -172,7 +175,7 @@ bool Endpoint::receive(ConnectionId id, const std::uint8_t* data, std::size_t si
   c.in.erase(0, at);
   if (!ok) {
     c.closing = true;
-    ++impl_->stats.dropped;
+    if (!c.goodbye) ++impl_->stats.dropped;
   }
   return ok;
 }
@@ -205,6 +208,10 @@ void EndpointState::sendChunks(Connection& c, const char* type, std::uint32_t re
   std::size_t chunks = (body.size() + room - 1) / room;
   if (chunks == 0) chunks = 1;
   if ((c.max_send_message != 0 && body.size() > c.max_send_message) || (c.max_send_chunks != 0 && chunks > c.max_send_chunks)) {
+    if (body.size() <= 64) {  // not even a fault fits: the client's limits leave no room for an answer
+      error(c, status::kBadTcpMessageTooLarge, "the client takes no message of " + std::to_string(body.size()) + " bytes");
+      return;
+    }
     // too large for the client: a fault in its place (the handle is the response header's, after the type)
     Decoder d(body);
     (void)d.nodeId();
@@ -259,7 +266,8 @@ bool Endpoint::Impl::chunk(ConnectionId id, Connection& c, std::string_view byte
     }
     c.receive_sequence = sequence;
     c.sequenced = true;
-    if (type == "CLO") {
+    if (type == "CLO") {  // the client says goodbye
+      c.goodbye = true;
       c.closing = true;
       return false;
     }

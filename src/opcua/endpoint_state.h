@@ -115,7 +115,7 @@ struct Session {
   bool activated = false;
   std::uint32_t channel = 0;             // the secure channel it is bound to
   std::deque<PublishRequest> publish;
-  std::map<std::string, std::vector<std::string>> continuations;  // a Browse's remaining references (encoded), by its point
+  std::map<std::string, std::pair<std::size_t, std::vector<std::string>>> continuations;  // a Browse's most per node and remaining references (encoded), by its point
   std::uint64_t next_continuation = 1;
 };
 
@@ -134,6 +134,7 @@ struct Connection {
   std::string partial;
   std::uint32_t partial_chunks = 0;
   bool closing = false;
+  bool goodbye = false;                  // it sent CloseSecureChannel
 };
 
 /// A Call waiting for the run's steps.

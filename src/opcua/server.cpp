@@ -79,7 +79,7 @@ std::unique_ptr<Server> Server::listen(AddressSpace& space, const ServerOptions&
     host = name;
   }
   server->url_ = "opc.tcp://" + host + ":" + std::to_string(server->port_);
-  server->endpoint_ = std::make_unique<Endpoint>(space, server->url_, options.limits, options.read_only);
+  server->endpoint_ = std::make_unique<Endpoint>(space, server->url_, options.limits, options.read_only, options.seed);
   return server;
 }
 
@@ -169,9 +169,12 @@ void Server::round(std::int64_t timeout_ns) {
           s.closing = true;
           break;
         }
+        const auto dropped = endpoint_->stats().dropped;
         if (!endpoint_->receive(s.id, buffer, static_cast<std::size_t>(n))) {
           s.closing = true;
-          if (log_) *log_ << "opcua: " << s.name << " closed: it sent bytes that are no OPC UA, or broke a limit\n";
+          if (log_ && endpoint_->stats().dropped > dropped) {
+            *log_ << "opcua: " << s.name << " closed: it sent bytes that are no OPC UA, or broke a limit\n";
+          }
         }
         if (static_cast<std::size_t>(n) < sizeof buffer) break;
       }

@@ -55,7 +55,7 @@ void browseResult(Encoder& e, std::string& out, Session& s, std::vector<std::str
       return;
     }
     point = "cp" + std::to_string(s.next_continuation++);
-    s.continuations[point].assign(refs.begin() + static_cast<std::ptrdiff_t>(max), refs.end());
+    s.continuations[point] = {max, std::vector<std::string>(refs.begin() + static_cast<std::ptrdiff_t>(max), refs.end())};
     refs.resize(max);
   }
   e.u32(0);
@@ -119,10 +119,10 @@ void EndpointState::browseNext(const Pending& to, Session& s, Decoder& d) {
       browseResult(e, out, s, {}, 0, 0, status::kBadContinuationPointInvalid);
       continue;
     }
-    std::vector<std::string> refs = std::move(it->second);
+    auto [max, refs] = std::move(it->second);
     s.continuations.erase(it);
     if (release) refs.clear();
-    browseResult(e, out, s, std::move(refs), limits.references_per_node, limits.continuation_points);
+    browseResult(e, out, s, std::move(refs), max, limits.continuation_points);
   }
   e.length(0);
   respond(to, kBrowseNext, out);

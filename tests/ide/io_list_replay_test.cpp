@@ -44,6 +44,7 @@ TEST_F(IoListIde, ItsTabSharesTheInspectorsPanelAndOutsideARunShowsNoValuesAndFo
   EXPECT_EQ(seen["pending"], false);
   EXPECT_EQ(list["rows"]["main/lamp1.height"]["unit"], "m");
   EXPECT_EQ(list["rows"]["main/lamp1.light"]["addresses"], nlohmann::json::array({"coil 0"}));
+  EXPECT_EQ(list["rows"]["main/lamp1.light"]["names"], nlohmann::json::array({"lamp1_light"}));
   EXPECT_EQ(list["rows"]["main/lamp1.height"]["uses"], nlohmann::json::array({"main/watch guard"}));
   EXPECT_EQ(r["run"]["mode"], "edit");
   // View > I/O List shows it and hides it again; Release All Forces cannot be done outside a run

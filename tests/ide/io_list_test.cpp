@@ -55,7 +55,9 @@ TEST_F(IoListTest, EveryPartsIoIsListedWithTheScriptsAndAddressesThatUseIt) {
   EXPECT_TRUE(rows[3].uses.empty());
   // the io section's address: light by hand, the others not yet
   EXPECT_EQ(rows[0].addresses, std::vector<std::string>{"coil 0"});
+  EXPECT_EQ(rows[0].names, std::vector<std::string>{"lamp1_light"}) << "its point's name, derived";
   EXPECT_TRUE(rows[1].addresses.empty());
+  EXPECT_TRUE(rows[1].names.empty());
 }
 
 TEST(IoListScan, AUseIsTheNameWholeOnThePartTheScriptNames) {
@@ -118,6 +120,7 @@ TEST_F(IoListTest, MapForPlcAddsTheRestAtFreeAddressesAsOneStepOfUndo) {
   EXPECT_EQ(rows[1].addresses, std::vector<std::string>{"discrete input 0"});
   EXPECT_EQ(rows[2].addresses, std::vector<std::string>{"input register 0"});
   EXPECT_EQ(rows[3].addresses, std::vector<std::string>{"holding register 0"});
+  EXPECT_EQ(rows[3].names, std::vector<std::string>{"lamp1_speed"});
   // mapped once: again is refused and adds no step
   EXPECT_EQ(doc_->execute(std::make_unique<MapPartIoCommand>("main", "lamp1")), "every I/O of lamp1 is mapped already");
   EXPECT_NE(doc_->execute(std::make_unique<MapPartIoCommand>("main", "lamp9")), "");

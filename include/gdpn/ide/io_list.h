@@ -32,6 +32,7 @@ struct IoListRow {
   model::PartIoSpec io;                ///< its declaration
   std::vector<std::string> uses;       ///< the constructs whose scripts mention it: `main/lamp1_control/light guard`
   std::vector<std::string> addresses;  ///< the `io` section's addresses mapping it: `coil 3`
+  std::vector<std::string> names;      ///< those entries' point names, one per address: `lamp1_light`
   /// `part.io`: `main/lamp1.seen`, the row's key in the view's report.
   [[nodiscard]] std::string key() const { return part + "." + io.name; }
 };
@@ -68,8 +69,8 @@ std::string releaseAllIo(RunControl& run);
 
 /// Maps the I/O of part instance `instance` on page `page` into the `io` section at the first
 /// free addresses (model::mapPartIo), as one step of undo: a digital input a discrete input, an
-/// analogue one an input register (float32), a digital output a coil, an analogue one a
-/// holding register (float32). Refused when nothing is left to map.
+/// analogue one an input register (Float), a digital output a coil, an analogue one a
+/// holding register (Float). Refused when nothing is left to map.
 class MapPartIoCommand final : public Command {
  public:
   /// Maps `instance` on `page`.

@@ -99,8 +99,8 @@ std::string addPartControl(Model& model, const std::string& page, const std::str
 
 /// Maps every I/O of part instance `instance` (its name on `page`) into the `io` section at
 /// the first free addresses of their tables (a digital input in `discrete_inputs`, an analogue
-/// one in `input_registers` as a float32, a digital output in `coils`, an analogue one in
-/// `holding_registers` as a float32), skipping those already mapped. Returns the entries
+/// one in `input_registers` as a Float, a digital output in `coils`, an analogue one in
+/// `holding_registers` as a Float), skipping those already mapped. Returns the entries
 /// added; empty with `why` when there is no such part instance.
 std::vector<IoEntry> mapPartIo(Model& model, const std::string& page, const std::string& instance, std::string& why);
 

@@ -52,8 +52,11 @@ class Endpoint {
  public:
   using Clock = std::chrono::steady_clock;
   /// Serves `space` as `endpoint_url` (`opc.tcp://HOST:PORT`), within `limits`. `read_only`
-  /// refuses every write (BadUserAccessDenied). The space must outlive it.
-  Endpoint(AddressSpace& space, std::string endpoint_url, const ServerLimits& limits = {}, bool read_only = false);
+  /// refuses every write (BadUserAccessDenied). `seed` makes session tokens and nonces (0: the
+  /// system's randomness; a fixed seed only for tests, whose recorded streams must match). The
+  /// space must outlive it.
+  Endpoint(AddressSpace& space, std::string endpoint_url, const ServerLimits& limits = {}, bool read_only = false,
+           std::uint64_t seed = 0);
   ~Endpoint();
   Endpoint(const Endpoint&) = delete;
   Endpoint& operator=(const Endpoint&) = delete;

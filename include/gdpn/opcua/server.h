@@ -20,6 +20,7 @@ struct ServerOptions {
   std::uint16_t port = 4840;          ///< the TCP port (0: one the system picks; see Server::port)
   bool read_only = false;             ///< refuse every write (BadUserAccessDenied)
   ServerLimits limits;                ///< sessions, subscriptions, message sizes
+  std::uint64_t seed = 0;             ///< session tokens' randomness (0: the system's; fixed only in tests)
 };
 
 /// "[ADDR:]PORT" taken apart into `options` (dotted IPv4, or `*` for every interface; port 0

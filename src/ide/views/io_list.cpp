@@ -292,7 +292,7 @@ void drawIoList(App& app, const Rect& at, nlohmann::json& report) {
     ImGui::TableSetupColumn("unit", ImGuiTableColumnFlags_WidthFixed, 36);
     ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthFixed, 128);
     ImGui::TableSetupColumn("force", ImGuiTableColumnFlags_WidthFixed, 178);
-    ImGui::TableSetupColumn("address", ImGuiTableColumnFlags_WidthFixed, 118);
+    ImGui::TableSetupColumn("address, name", ImGuiTableColumnFlags_WidthFixed, 220);
     ImGui::TableSetupColumn("used by", ImGuiTableColumnFlags_WidthStretch);
     ImGui::TableHeadersRow();
     for (std::size_t i = 0; i < st.rows.size(); ++i) {
@@ -342,13 +342,20 @@ void drawIoList(App& app, const Rect& at, nlohmann::json& report) {
            {"pending", l != nullptr && l->pending},
            {"asked", l != nullptr && l->asked ? nlohmann::json(*l->asked) : nlohmann::json()},
            {"addresses", row.addresses},
+           {"names", row.names},
            {"uses", row.uses}};
       if (ImGui::IsItemVisible()) noteItem("value_at", r);
       ImGui::TableSetColumnIndex(5);
       forceCell(app, row, l, running, r);
       ImGui::TableSetColumnIndex(6);
-      if (row.addresses.empty()) ImGui::TextDisabled("\xE2\x80\x94");
-      else ImGui::TextUnformatted(joined(row.addresses).c_str());
+      if (row.addresses.empty()) {
+        ImGui::TextDisabled("\xE2\x80\x94");
+      } else {
+        // each address with its point's name, as OPC UA serves it: `coil 3 lamp1_light`
+        std::vector<std::string> named;
+        for (std::size_t a = 0; a < row.addresses.size(); ++a) named.push_back(row.addresses[a] + " " + row.names[a]);
+        ImGui::TextUnformatted(joined(named).c_str());
+      }
       ImGui::TableSetColumnIndex(7);
       const auto uses = usesText(row);
       if (uses.empty()) ImGui::TextDisabled("nothing");
