@@ -169,6 +169,10 @@ int run(const RunArgs& a) {
       return 1;
     }
   }
+  if (!serving.failure().empty()) {  // the PLC went: the run stopped short
+    std::cerr << "error: " << serving.failure() << "\n";
+    return 1;
+  }
   switch (outcome.reason) {
     case model::StopReason::ScriptError:
     case model::StopReason::PhysicsError:

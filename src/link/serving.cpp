@@ -13,18 +13,22 @@
 
 #include "gdpn/net/kernel.h"
 #include "gdpn/opcua/model_space.h"
+#include "gdpn/opcua/plc_link.h"
 
 namespace gdpn::link {
 
 /// The PLC whose own server drives the plant (--opcua-client).
-struct Serving::Plc {};
+struct Serving::Plc {
+  std::unique_ptr<opcua::PlcLink> link;
+  std::string url;
+};
 
 Serving::Serving() = default;
 Serving::~Serving() = default;
 
 std::string Serving::opcuaUrl() const { return opcua_ ? opcua_->url() : std::string(); }
 
-bool Serving::start(const ServeRequest& args, model::Simulation& sim, const std::atomic<bool>* interrupt, bool quiet,
+bool Serving::start(const ServeRequest& args, model::Simulation& sim, std::atomic<bool>* interrupt, bool quiet,
                     std::ostream& err, int& code) {
   interrupt_ = interrupt;
   lockstep_ = args.lockstep;
@@ -100,9 +104,17 @@ bool Serving::start(const ServeRequest& args, model::Simulation& sim, const std:
         << (lockstep_ ? ", in lockstep" : ", in real time") << std::endl;
   }
   if (!args.opcua_client.empty()) {
-    err << "error: --opcua-client: not built yet\n";
-    code = 1;
-    return false;
+    core::Diagnostics diags;
+    plc_ = std::make_unique<Plc>();
+    plc_->url = args.opcua_client;
+    plc_->link = opcua::PlcLink::connect(args.opcua_client, *io_, file, diags, why);
+    if (!plc_->link) {
+      diags.print(err);
+      if (!diags.hasErrors()) err << "error: --opcua-client: " << why << "\n";
+      code = 1;
+      return false;
+    }
+    err << "opcua-client: linked to " << args.opcua_client << std::endl;
   }
   if (modbus_ || opcua_) sim.setOpen(true);  // a controller may yet act: a dead net does not end the run
   if (pacing_ || linked) sim.setBeforeStep([this, &sim] { beforeStep(sim); });
@@ -166,15 +178,26 @@ void Serving::beforeStep(model::Simulation& sim) {
     } else if (opcua_ && opcua_->endpoint().pendingSteps() > 0) {
       granted_opcua_ = true;
     }
+    exchangeWithPlc();
     return;
   }
   if (!pacing_) {
     idle();
-    return;
+  } else {
+    // the state at model time t is shown from wall time t until the next step's
+    serveUntil(wall0_ + std::chrono::duration_cast<Clock::duration>(
+                            std::chrono::duration<double>(static_cast<double>(k.steps() - step0_) * k.dt())));
   }
-  // the state at model time t is shown from wall time t until the next step's
-  serveUntil(wall0_ + std::chrono::duration_cast<Clock::duration>(
-                          std::chrono::duration<double>(static_cast<double>(k.steps() - step0_) * k.dt())));
+  exchangeWithPlc();
+}
+
+void Serving::exchangeWithPlc() {
+  // last before the step: the PLC's newest outputs go into it
+  if (!plc_ || !failure_.empty()) return;
+  std::string why;
+  if (plc_->link->exchange(why)) return;
+  failure_ = "--opcua-client: " + why;
+  if (interrupt_) interrupt_->store(true);  // the run stops at once
 }
 
 void Serving::finish(model::Simulation& sim, std::ostream& out) {
@@ -207,6 +230,11 @@ void Serving::finish(model::Simulation& sim, std::ostream& out) {
     if (opcua_->refused() > 0) out << ", " << opcua_->refused() << " connections refused (too many)";
     if (s.dropped > 0) out << ", " << s.dropped << " closed for bytes that are no OPC UA";
     out << "\n";
+  }
+  if (plc_) {
+    const auto& s = plc_->link->stats();
+    out << "PLC at " << plc_->url << ": " << s.reads << " read, " << s.writes << " written, " << s.notifications << " received\n";
+    plc_->link->close();
   }
   if (!io_) return;
   out << "\n";

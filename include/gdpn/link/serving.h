@@ -39,14 +39,15 @@ class Serving {
   ~Serving();
   Serving(const Serving&) = delete;
   Serving& operator=(const Serving&) = delete;
-  /// Checks `request`, binds the servers, connects to the PLC and hooks into `sim`'s steps.
+  /// Checks `request`, binds the servers, connects to the PLC and hooks into `sim`'s steps;
+  /// `interrupt` stops the run from outside (Ctrl-C), and the links set it when the PLC goes.
   /// False with the message printed to `err` and `code` the exit status (2: the request, 1:
   /// the model, the port or the PLC).
-  bool start(const ServeRequest& request, model::Simulation& sim, const std::atomic<bool>* interrupt, bool quiet,
+  bool start(const ServeRequest& request, model::Simulation& sim, std::atomic<bool>* interrupt, bool quiet,
              std::ostream& err, int& code);
   /// Serves what has come in without stepping (a paused IDE calls it each frame).
   void idle();
-  /// Why the run must stop ("" : it may go on): the PLC went away.
+  /// Why the run stopped ("" : it did not): the PLC went away, or refused what was written.
   [[nodiscard]] const std::string& failure() const { return failure_; }
   /// Unhooks; prints what was served and the real-time factor to `out` (nothing when none).
   void finish(model::Simulation& sim, std::ostream& out);
@@ -57,6 +58,7 @@ class Serving {
   using Clock = std::chrono::steady_clock;
   struct Plc;
   void beforeStep(model::Simulation& sim);
+  void exchangeWithPlc();
   void serveUntil(Clock::time_point deadline);
   bool stepAsked() const;
   std::unique_ptr<model::IoMap> io_;
@@ -66,7 +68,7 @@ class Serving {
   std::unique_ptr<Plc> plc_;
   std::string modbus_endpoint_, failure_, client_name_ = "opcua";
   bool pacing_ = false, lockstep_ = false, started_ = false, granted_opcua_ = false;
-  const std::atomic<bool>* interrupt_ = nullptr;
+  std::atomic<bool>* interrupt_ = nullptr;
   Clock::time_point wall0_;
   std::int64_t step0_ = 0;
   double t0_ = 0;
