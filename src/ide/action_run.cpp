@@ -163,6 +163,7 @@ bool actionEnabled(const App& app, ActionId id) {
     case ActionId::IoList:
     case ActionId::ColourSets: return true;
     case ActionId::ReleaseForces: return app.run().mode() != RunMode::Edit && hasRun(app);
+    case ActionId::ServeOpcua: return hasRun(app) || !app.run().opcuaUrl().empty();
     case ActionId::Keys:
     case ActionId::Guide: return true;
   }
@@ -190,6 +191,7 @@ bool actionChecked(const App& app, ActionId id) {
     case ActionId::LocalAxes: return app.world.local_axes;
     case ActionId::Movie: return app.movie != nullptr;
     case ActionId::PlantOnly: return app.run().plantOnly();
+    case ActionId::ServeOpcua: return !app.run().opcuaUrl().empty();
     case ActionId::IoList: return app.io_list.shown;
     case ActionId::ColourSets: return app.colour_sets.shown;
     case ActionId::NetSelectTool: return app.netView().tool == NetTool::Select;
@@ -323,6 +325,14 @@ std::string performAction(App& app, ActionId id) {
     case ActionId::ReleaseForces:
       app.message = releaseAllIo(run);
       if (app.message.empty()) app.message = "every force is released at the next step";
+      break;
+    case ActionId::ServeOpcua:
+      if (run.opcuaUrl().empty()) {
+        (void)run.serveOpcua("4840");
+      } else {
+        run.stopServing();
+      }
+      app.message = run.message();
       break;
     case ActionId::Keys: app.keys_open = true; break;
     case ActionId::Guide: app.openGuide(); break;

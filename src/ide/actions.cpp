@@ -125,6 +125,8 @@ constexpr ActionInfo kActions[] = {
      "Remove every breakpoint of the run"},
     {A::ReleaseForces, "release-forces", "Release All Forces", M::Run, "", false, false, false,
      "Release every forced input and output of the I/O list at the next step"},
+    {A::ServeOpcua, "serve-opcua", "Serve over OPC UA", M::Run, "", false, true, true,
+     "Serve the run over OPC UA on 127.0.0.1:4840 (as gdpn run --opcua 4840): PLCs and HMIs read and write it"},
 
     {A::Keys, "keys", "Keys", M::Help, "F1", false, false, false, "List every action and its key"},
     {A::Guide, "guide", "IDE Guide", M::Help, "", false, false, false,

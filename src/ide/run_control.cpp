@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <sstream>
 
 #include "gdpn/ide/document.h"
 #include "gdpn/model/io.h"
@@ -30,6 +31,7 @@ const char* runModeName(RunMode mode) {
 }
 
 bool RunControl::open(Document& doc, core::Diagnostics& diags, session::SessionOptions options) {
+  endServing();
   doc_ = &doc;
   revision_ = doc.revision();
   mode_ = RunMode::Edit;
@@ -37,7 +39,53 @@ bool RunControl::open(Document& doc, core::Diagnostics& diags, session::SessionO
   session_ = session::Session::create(doc.snapshot(), diags, options_);
   if (session_) checkIo(diags);
   diags_ = diags;
+  if (session_) (void)startServing();
   return session_ != nullptr;
+}
+
+std::string RunControl::serveOpcua(const std::string& where) {
+  endServing();
+  serve_where_ = where;
+  const std::string why = startServing();
+  if (!why.empty()) serve_where_.clear();
+  return why;
+}
+
+void RunControl::stopServing() {
+  endServing();
+  serve_where_.clear();
+  message_ = "OPC UA: no longer served";
+}
+
+std::string RunControl::startServing() {
+  if (serve_where_.empty() || !session_) return "";
+  link::ServeRequest request;
+  request.opcua = serve_where_;
+  request.pace = false;  // the IDE keeps the clock
+  auto serving = std::make_unique<link::Serving>();
+  std::ostringstream err;
+  int code = 0;
+  if (!serving->start(request, session_->simulation(), nullptr, true, err, code)) {
+    std::string why = err.str();
+    if (why.starts_with("error: ")) why.erase(0, 7);
+    while (!why.empty() && why.back() == '\n') why.pop_back();
+    message_ = "OPC UA: " + why;
+    return why;
+  }
+  serving_ = std::move(serving);
+  const std::string url = serving_->opcuaUrl();
+  // the port the system picked for 0 is kept: a reset serves at the same address
+  const auto colon = serve_where_.rfind(':');
+  serve_where_ = (colon == std::string::npos ? "" : serve_where_.substr(0, colon + 1)) + url.substr(url.rfind(':') + 1);
+  message_ = "serving the run over OPC UA on " + url;
+  return "";
+}
+
+void RunControl::endServing() {
+  if (!serving_) return;
+  std::ostringstream sink;  // the closing table is for gdpn run
+  if (session_) serving_->finish(session_->simulation(), sink);
+  serving_.reset();
 }
 
 void RunControl::checkIo(core::Diagnostics& diags) {
@@ -129,6 +177,7 @@ bool RunControl::reset(core::Diagnostics& diags) {
   owed_ = 0.0;
   message_.clear();
   if (!session_) return open(*doc_, diags, options_);
+  endServing();  // the run is made anew: served again once it is
   bool ok = false;
   if (doc_->revision() != revision_) {
     // the document changed since the run was made: the run takes the edited model
@@ -139,10 +188,12 @@ bool RunControl::reset(core::Diagnostics& diags) {
   }
   if (ok) checkIo(diags);
   diags_ = diags;
+  if (ok) (void)startServing();
   return ok;
 }
 
 void RunControl::advance(double wall_seconds) {
+  if (serving_ && mode_ != RunMode::Running) serving_->idle();  // paused: clients are still answered
   if (!session_ || mode_ != RunMode::Running) return;
   const double dt = session_->model().settings.dt;
   const double before = time();

@@ -282,7 +282,11 @@ void Encoder::expandedNodeId(const ExpandedNodeId& id) {
 
 void Encoder::qualifiedName(const QualifiedName& q) {
   u16(q.ns);
-  string(q.name);
+  if (q.name.empty()) {
+    nullString();  // the null name: what "no name" is on the wire (a data encoding left default)
+  } else {
+    string(q.name);
+  }
 }
 
 void Encoder::localizedText(const LocalizedText& t) {

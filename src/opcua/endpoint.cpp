@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <utility>
 
 #include "endpoint_state.h"
@@ -126,6 +127,39 @@ Endpoint::Endpoint(AddressSpace& space, std::string endpoint_url, const ServerLi
                    std::uint64_t seed)
     : impl_(std::make_unique<Impl>(space, std::move(endpoint_url), limits, read_only)) {
   impl_->random.seed(seed != 0 ? seed : std::random_device{}());
+  // ServerCapabilities: what a client may ask of this server at most
+  AddressSpace& a = impl_->space;
+  const NodeId caps = NodeId::num(2268);
+  if (a.find(caps)) return;
+  a.addObject(NodeId::num(id::kServer), caps, 0, "ServerCapabilities", id::kServerCapabilitiesType);
+  auto property = [&a](const NodeId& parent, std::uint32_t n, const char* name, std::uint32_t type, Variant v) {
+    Node& p = a.addVariable(parent, NodeId::num(n), 0, name, type, true);
+    p.value_rank = v.is_array ? 1 : -1;
+    p.value = std::move(v);
+  };
+  auto u32 = [](std::size_t n) { return Variant::uint32(static_cast<std::uint32_t>(n)); };
+  property(caps, 2269, "ServerProfileArray", 12, Variant::strings({"http://opcfoundation.org/UA-Profile/Server/MicroEmbeddedDevice"}));
+  property(caps, 2271, "LocaleIdArray", id::kLocaleId, Variant::strings({}));
+  property(caps, 2272, "MinSupportedSampleRate", id::kDuration, Variant::dbl(0));
+  property(caps, 2735, "MaxBrowseContinuationPoints", 5, Variant::of(BuiltinType::UInt16, std::uint64_t{limits.continuation_points}));
+  property(caps, 2736, "MaxQueryContinuationPoints", 5, Variant::of(BuiltinType::UInt16, std::uint64_t{0}));
+  property(caps, 2737, "MaxHistoryContinuationPoints", 5, Variant::of(BuiltinType::UInt16, std::uint64_t{0}));
+  property(caps, 11702, "MaxArrayLength", 7, u32(limits.message_bytes));
+  property(caps, 11703, "MaxStringLength", 7, u32(limits.message_bytes));
+  property(caps, 12911, "MaxByteStringLength", 7, u32(limits.message_bytes));
+  property(caps, 24095, "MaxSessions", 7, u32(limits.sessions));
+  property(caps, 24098, "MaxSubscriptionsPerSession", 7, u32(limits.subscriptions_per_session));
+  property(caps, 24104, "MaxMonitoredItemsPerSubscription", 7, u32(limits.items_per_subscription));
+  const NodeId ops = NodeId::num(11704);
+  a.addObject(caps, ops, 0, "OperationLimits", id::kOperationLimitsType);
+  const std::size_t per = limits.nodes_per_request;
+  for (const auto& [n, name, value] : std::initializer_list<std::tuple<std::uint32_t, const char*, std::size_t>>{
+           {11705, "MaxNodesPerRead", per}, {11707, "MaxNodesPerWrite", per}, {11709, "MaxNodesPerMethodCall", per},
+           {11710, "MaxNodesPerBrowse", per}, {11711, "MaxNodesPerRegisterNodes", per},
+           {11712, "MaxNodesPerTranslateBrowsePathsToNodeIds", per}, {11713, "MaxNodesPerNodeManagement", 0},
+           {11714, "MaxMonitoredItemsPerCall", per}}) {
+    property(ops, n, name, 7, u32(value));
+  }
 }
 
 Endpoint::~Endpoint() = default;

@@ -6,8 +6,11 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <memory>
+#include <optional>
 #include <set>
 
+#include "gdpn/core/text.h"
 #include "gdpn/net/kernel.h"
 #include "gdpn/model/part_run.h"
 #include "gdpn/opcua/status.h"
@@ -359,10 +362,17 @@ std::unique_ptr<AddressSpace> modelAddressSpace(model::Simulation& sim, model::I
           return digital ? Variant::boolean(x != 0) : Variant::dbl(x);
         };
         if (io_spec.direction == model::IoDirection::Output) {
-          v.write = [parts, i, name](const Variant& value) {
+          auto last = std::make_shared<std::optional<double>>();
+          v.write = [parts, i, name, &sim, last, part = inst.placed.name](const Variant& value) {
             std::string why;
             const auto x = value.number();
-            return x && parts->write(i, name, *x, why) ? status::kGood : status::kBadOutOfRange;
+            if (!x || !parts->write(i, name, *x, why)) return status::kBadOutOfRange;
+            // traced as the io section's writes are: the changes
+            if (*last != *x) {
+              *last = *x;
+              sim.note("io", "\"part\":\"" + part + "\",\"io\":\"" + name + "\",\"value\":" + core::formatDouble(*x));
+            }
+            return status::kGood;
           };
         }
         if (!digital) engineeringUnits(s, id, io_spec.unit);

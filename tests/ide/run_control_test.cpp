@@ -6,13 +6,16 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "gdpn/ide/document.h"
 #include "gdpn/ide/run_control.h"
 #include "gdpn/ide/set_field.h"
+#include "gdpn/opcua/client.h"
 #include "ide/ide_model.h"
 #include "support/cli.h"
 #include "support/temp_files.h"
@@ -301,6 +304,75 @@ TEST(RunControlFactory, ResetThenRunGivesTheSameTraceAsGdpnRun) {
   std::filesystem::remove_all(dir);
 }
 #endif
+
+}  // namespace
+}  // namespace gdpn::ide
+
+namespace gdpn::ide {
+namespace {
+
+/// `run` kept going (advanced each millisecond, as the IDE's frames do) in a thread while a
+/// client talks to it.
+class Frames {
+ public:
+  explicit Frames(RunControl& run) : thread_([this, &run] {
+      while (!stop_) {
+        run.advance(0.001);
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      }
+    }) {}
+  ~Frames() {
+    stop_ = true;
+    thread_.join();
+  }
+
+ private:
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+double readNumber(opcua::Client& c, const std::string& node) {
+  std::vector<opcua::DataValue> values;
+  std::string why;
+  EXPECT_TRUE(c.read({{opcua::NodeId::str(node), 13}}, values, why)) << why;
+  return values.empty() || !values[0].value ? -1.0 : values[0].value->number().value_or(-1.0);
+}
+
+TEST_F(RunControlTest, ServesTheRunOverOpcUaWhilePausedAndThroughAReset) {
+  EXPECT_EQ(run_.serveOpcua("nonsense"), "--opcua: expected [ADDRESS:]PORT with a port from 0 to 65535 (0: any free one), got 'nonsense'");
+  EXPECT_EQ(run_.opcuaUrl(), "");
+  ASSERT_EQ(run_.serveOpcua("0"), "");
+  const std::string url = run_.opcuaUrl();
+  ASSERT_TRUE(url.starts_with("opc.tcp://127.0.0.1:")) << url;
+  EXPECT_EQ(run_.message(), "serving the run over OPC UA on " + url);
+  run_.runSteps(7);  // paused after them
+  {
+    Frames frames(run_);
+    std::string why;
+    auto client = opcua::Client::connect(url, {}, why);
+    ASSERT_TRUE(client) << why;
+    EXPECT_DOUBLE_EQ(readNumber(*client, "time"), 0.07);
+    EXPECT_EQ(readNumber(*client, "place/main/spare"), 1.0);
+    EXPECT_EQ(readNumber(*client, "place/main/idle"), static_cast<double>(tokens("main/idle")));
+    client->close();
+  }
+  // reset: the run made anew is served at the same address
+  core::Diagnostics diags;
+  ASSERT_TRUE(run_.reset(diags)) << diags.str();
+  EXPECT_EQ(run_.opcuaUrl(), url);
+  {
+    Frames frames(run_);
+    std::string why;
+    auto client = opcua::Client::connect(url, {}, why);
+    ASSERT_TRUE(client) << why;
+    EXPECT_DOUBLE_EQ(readNumber(*client, "time"), 0.0);
+    client->close();
+  }
+  run_.stopServing();
+  EXPECT_EQ(run_.opcuaUrl(), "");
+  std::string why;
+  EXPECT_FALSE(opcua::Client::connect(url, {}, why));
+}
 
 }  // namespace
 }  // namespace gdpn::ide

@@ -283,6 +283,8 @@ TEST(OpcuaEndpoint, ConnectsReadsAndWritesWithTheRightStatusCodes) {
   ASSERT_EQ(ns.value->elements.size(), 2u);
   EXPECT_EQ(std::get<std::string>(ns.value->elements[1].scalar), "urn:gdpn:model:test");
   EXPECT_EQ(*c.read(NodeId::num(id::kServerStatusState)).value->number(), 0.0);  // Running
+  EXPECT_EQ(*c.read(NodeId::num(24095)).value->number(), 32.0);  // ServerCapabilities.MaxSessions
+  EXPECT_EQ(*c.read(NodeId::num(11705)).value->number(), 1000.0);  // OperationLimits.MaxNodesPerRead
   EXPECT_EQ(*c.read(NodeId::str("io/x")).value->number(), 1.5);
   EXPECT_EQ(c.read(NodeId::str("nothing")).status, status::kBadNodeIdUnknown);
   EXPECT_EQ(c.read(NodeId::str("io/x"), 99).status, status::kBadAttributeIdInvalid);

@@ -29,7 +29,7 @@ enum class ActionId : std::uint8_t {
   DistributeDown, PageTypeFromSelection, OpenInstance,
   // Run
   Run, Faster, Fastest, Pause, Step, RunN, Fire, PlantOnly, Reset, ClearBreakpoints,
-  ReleaseForces,
+  ReleaseForces, ServeOpcua,
   // Help
   Keys, Guide,
 };

@@ -13,6 +13,7 @@
 
 #include "gdpn/core/diagnostics.h"
 #include "gdpn/core/math.h"
+#include "gdpn/link/serving.h"
 #include "gdpn/sensors/mouse_sensor.h"
 #include "gdpn/session/session.h"
 
@@ -121,10 +122,20 @@ class RunControl {
   /// Steps stop as soon as `*flag` becomes true (the IDE asked to end by a signal); null: never.
   void stopOn(const std::atomic<bool>* flag) { stop_ = flag; }
 
+  /// Serves the run over OPC UA on `where` ("[ADDR:]PORT", as `gdpn run --opcua`) from now on,
+  /// through resets and rebuilds, paced by the IDE's own clock: "" or why not (the port taken).
+  std::string serveOpcua(const std::string& where);
+  /// Stops serving over OPC UA.
+  void stopServing();
+  /// The OPC UA endpoint served (`opc.tcp://127.0.0.1:4840`), "" when none.
+  [[nodiscard]] std::string opcuaUrl() const { return serving_ ? serving_->opcuaUrl() : std::string(); }
+
  private:
   void takeSteps(std::int64_t n);  // n steps (or plant steps), stopping on a halt
   bool prepare();  // in edit mode, the run made again from an edited document; false when it fails
   void checkIo(core::Diagnostics& diags);  // the made run's io section resolved against it, its problems into diags
+  std::string startServing();  // serve_where_ on the session's simulation: "" or why not
+  void endServing();           // unhooked from the simulation, the server closed (serve_where_ kept)
   core::Diagnostics diags_;  // what the last build of the run found
   Document* doc_ = nullptr;
   std::unique_ptr<session::Session> session_;
@@ -137,6 +148,8 @@ class RunControl {
   double rtf_ = 0.0;
   std::string message_;
   const std::atomic<bool>* stop_ = nullptr;  // stopOn()
+  std::unique_ptr<link::Serving> serving_;  // the OPC UA server on the run (serveOpcua)
+  std::string serve_where_;                  // where it serves, kept through resets
 };
 
 }  // namespace gdpn::ide

@@ -1,4 +1,5 @@
-// The status bar: model time, steps, real-time factor, frames per second, the last message.
+// The status bar: model time, steps, real-time factor, frames per second, the mode (and whether
+// the run is served over OPC UA), the last message.
 
 #include <imgui.h>
 
@@ -30,15 +31,17 @@ void drawStatusBar(App& app, const Rect& at, nlohmann::json& report) {
     ImGui::Text("%.0f fps", app.fps);
   }
   ImGui::SameLine(scale < 1 ? 560 : 490);
-  ImGui::Text("%s%s", runModeName(run.mode()), run.plantOnly() ? ", plant only" : "");
-  ImGui::SameLine(scale < 1 ? 690 : 620);
+  const std::string served = run.opcuaUrl();
+  ImGui::Text("%s%s%s", runModeName(run.mode()), run.plantOnly() ? ", plant only" : "", served.empty() ? "" : ", OPC UA");
+  if (!served.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("served over OPC UA on %s", served.c_str());
+  ImGui::SameLine(scale < 1 ? 690 + (served.empty() ? 0 : 70) : 620 + (served.empty() ? 0 : 70));
   ImGui::TextUnformatted(msg.c_str());
   ImGui::EndChild();
   ImGui::PopStyleColor();
   ImGui::PopStyleVar();
   report = {{"time", run.time()},          {"steps", run.steps()}, {"real_time_factor", run.realTimeFactor()},
             {"fps", app.fps},              {"mode", runModeName(run.mode())}, {"message", msg},
-            {"world_scale", scale}};
+            {"world_scale", scale},        {"opcua", served}};
 }
 
 }  // namespace gdpn::ide
