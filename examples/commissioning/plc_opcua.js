@@ -33,8 +33,7 @@ Needs node-opcua-client from the npm registry, which scripts/install-deps.sh ins
 scripts/node/node_modules (the program looks there, and in NODE_PATH).
 */
 "use strict";
-const path = require("path");
-const url = require("url");
+const { SCAN, Logic, PlcError, importPackage } = require("./plc_logic.js");
 
 // the station's io section (station.gdpn.yaml): its variables in the model's namespace
 const MODEL_URI = "urn:gdpn:model:station";
@@ -45,63 +44,10 @@ const BELT = "io/belt";          // the belt runs
 const PUSHER = "io/pusher";      // the pusher goes out
 const PUSH_SPEED = "io/push_speed";  // mm/s: the pusher's top speed
 
-const SCAN = 0.010;              // s, the scan period
 const STEPS_PER_SCAN = 2;        // the station's dt is 5 ms
-const TALL_BELOW_MM = 550;       // a tall box's top (750 mm) is 450 mm below the sensor, a short one's 650
-const OUT_MM = 690, IN_MM = 10;  // the pusher's stroke when out (of 700) and when back
-const STALL_TIME = 3.0;          // s, the longest the pusher may take
-
-/** The control program: inputs in, outputs out, once per scan. `now` is the PLC's clock (s). */
-class Logic {
-  constructor() {
-    this.step = "RUN";
-    this.since = 0.0;
-    this.sorted = { tall: 0, short: 0 };
-  }
-
-  scan(now, eye, heightMm, strokeMm) {
-    const go = (step) => { this.step = step; this.since = now; };
-    if ((this.step === "PUSH" || this.step === "RETRACT") && now - this.since > STALL_TIME) {
-      throw new PlcError(`the pusher stalled in ${this.step} at ${strokeMm} mm`);
-    }
-    if (this.step === "RUN" && eye) {
-      const tall = heightMm < TALL_BELOW_MM;
-      this.sorted[tall ? "tall" : "short"] += 1;
-      go(tall ? "PUSH" : "PASS");
-    } else if (this.step === "PUSH" && strokeMm >= OUT_MM) {
-      go("RETRACT");
-    } else if (this.step === "RETRACT" && strokeMm <= IN_MM) {
-      go("RUN");
-    } else if (this.step === "PASS" && !eye) {
-      go("RUN");
-    }
-    const belt = this.step === "RUN" || this.step === "PASS";
-    const pusher = this.step === "PUSH";
-    return [belt, pusher];
-  }
-}
-
-/** A request refused (the address space and this program disagree), a stall. */
-class PlcError extends Error {}
 
 /** The plant closed the connection: its run is over. */
 class PlantGone extends Error {}
-
-/** Imports an npm package from scripts/node/node_modules (beside this repository's examples) or NODE_PATH. */
-async function importPackage(name) {
-  const places = (process.env.NODE_PATH || "").split(path.delimiter).filter(Boolean);
-  places.push(path.join(__dirname, "..", "..", "scripts", "node", "node_modules"));
-  for (const folder of places) {
-    let file;
-    try {
-      file = require.resolve(name, { paths: [path.dirname(folder)] });
-    } catch {
-      continue;
-    }
-    return import(url.pathToFileURL(file).href);
-  }
-  throw new PlcError(`${name} is missing: scripts/install-deps.sh installs it into scripts/node/node_modules`);
-}
 
 function parseArgs(argv) {
   const args = { url: null, host: "127.0.0.1", port: 4840, lockstep: false, quiet: false, namespace: MODEL_URI };
