@@ -10,7 +10,8 @@ with node-opcua-client (bench/opcua_bench.mjs), a real client no one here wrote:
   2. in lockstep (--lockstep), ROUNDS rounds taken in turns: A the same steps run headless
      (wall clock of `gdpn run --until 60 --quiet` less that of `--steps 0`, the start-up), B a
      client calling Step(PER_CALL) back to back, C the same with the 100 items monitored: the
-     wall clock per step, medians, and the ratios C/B and B/A.
+     wall clock per step (the client's, for B and C) and gdpn's own CPU time per step (its
+     start-up, the CPU time of `--steps 0`, taken off), medians, and the ratios C/B and B/A.
 
 Prints a table and writes every figure to OUT.json. Needs a Release build (cmake --preset ci &&
 cmake --build build/ci) and node-opcua (scripts/install-deps.sh, or npm ci in scripts/node).
@@ -68,16 +69,18 @@ def client(*args):
 
 
 def finish(proc):
-    """Waits for the run's end; returns its stdout."""
-    out, _ = proc.communicate(timeout=120)
-    return out
+    """Waits for the run's end; returns its stdout and the CPU time it took (user + system, s)."""
+    out = proc.stdout.read()
+    _, _, usage = os.wait4(proc.pid, 0)
+    proc.returncode = 0
+    return out, usage.ru_utime + usage.ru_stime
 
 
 def realtime(gdpn, work, reads, seconds):
     until = 20 + seconds + reads * 0.002  # s: long enough for the client's work (about 3 ms a Read pair)
     proc, url = gdpn_run(gdpn, work, "realtime", "--realtime", "--until", f"{until:g}")
     figures = client("realtime", url, reads, seconds)
-    out = finish(proc)
+    out, _ = finish(proc)
     found = re.search(r"real time: ([\d.]+) s simulated in ([\d.]+) s of wall clock, ([\d.]+) x real time", out)
     figures["real_time_factor"] = float(found.group(3)) if found else None
     figures["until"] = until
@@ -85,16 +88,18 @@ def realtime(gdpn, work, reads, seconds):
 
 
 def headless(gdpn, *args):
+    """gdpn run --quiet: its wall clock and CPU time (s)."""
     t0 = time.perf_counter()
-    subprocess.run([gdpn, "run", FACTORY, "--quiet", *args], check=True, stdout=subprocess.DEVNULL)
-    return time.perf_counter() - t0
+    proc = subprocess.Popen([gdpn, "run", FACTORY, "--quiet", *args], stdout=subprocess.PIPE, text=True)
+    _, cpu = finish(proc)
+    return time.perf_counter() - t0, cpu
 
 
 def lockstep(gdpn, work, per_call, items):
     calls = round(LOCKSTEP_S / DT / per_call)
     proc, url = gdpn_run(gdpn, work, "lockstep", "--lockstep", "--quiet", "--until", f"{LOCKSTEP_S:g}")
     figures = client("lockstep", url, per_call, calls - 1, items)  # the last call ends the run
-    finish(proc)
+    figures["cpu_s"] = finish(proc)[1]
     return figures
 
 
@@ -115,13 +120,16 @@ def main():
         rounds = []
         steps = round(LOCKSTEP_S / DT)
         for _ in range(a.rounds):
-            start = headless(gdpn, "--steps", "0")
-            whole = headless(gdpn, "--until", f"{LOCKSTEP_S:g}")
+            start, start_cpu = headless(gdpn, "--steps", "0")
+            whole, whole_cpu = headless(gdpn, "--until", f"{LOCKSTEP_S:g}")
             b = lockstep(gdpn, work, a.per_call, 0)
             c = lockstep(gdpn, work, a.per_call, 100)
             rounds.append({"headless_us": (whole - start) / steps * 1e6, "start_s": start,
                            "step_us": b["seconds"] / b["steps"] * 1e6,
                            "step_monitored_us": c["seconds"] / c["steps"] * 1e6,
+                           "headless_cpu_us": (whole_cpu - start_cpu) / steps * 1e6,
+                           "step_cpu_us": (b["cpu_s"] - start_cpu) / steps * 1e6,
+                           "step_monitored_cpu_us": (c["cpu_s"] - start_cpu) / steps * 1e6,
                            "changes_per_step": c["changes"] / c["steps"]})
     finally:
         shutil.rmtree(work, ignore_errors=True)
@@ -135,6 +143,9 @@ def main():
     ls["monitored_over_plain"] = med([r["step_monitored_us"] / r["step_us"] for r in rounds])
     ls["plain_over_headless"] = med([r["step_us"] / r["headless_us"] for r in rounds])
     ls["per_item_per_step_ns"] = med([(r["step_monitored_us"] - r["step_us"]) * 10 for r in rounds])
+    ls["cpu_monitored_over_plain"] = med([r["step_monitored_cpu_us"] / r["step_cpu_us"] for r in rounds])
+    ls["cpu_plain_over_headless"] = med([r["step_cpu_us"] / r["headless_cpu_us"] for r in rounds])
+    ls["cpu_per_item_per_step_ns"] = med([(r["step_monitored_cpu_us"] - r["step_cpu_us"]) * 10 for r in rounds])
     each = lambda key, fmt: ", ".join(fmt.format(r[key]) for r in rounds)
 
     print(f"{'OPC UA, the factory (node-opcua-client ' + 'on loopback)':<60}{'median':>12}  each run")
@@ -152,9 +163,16 @@ def main():
     for what, key in (("A headless", "headless_us"), (f"B Step({a.per_call}) back to back", "step_us"),
                       ("C the same, 100 items monitored", "step_monitored_us")):
         print(f"{what:<56}{ls[key]:>12.1f} us  " + each(key, "{:.1f}"))
-    print(f"{'C / B (sampling 100 items each step)':<56}{ls['monitored_over_plain']:>12.3f}")
+    print(f"{'C / B (sampling 100 items each step), median of ratios':<56}{ls['monitored_over_plain']:>12.3f}")
     print(f"{'B / A (Step calls over the wire)':<56}{ls['plain_over_headless']:>12.3f}")
     print(f"{'(C - B) per monitored item per step':<56}{ls['per_item_per_step_ns']:>12.0f} ns")
+    print(f"{'lockstep, gdpn CPU time per step (start-up taken off)':<56}{'median':>12}      each round")
+    for what, key in (("A headless", "headless_cpu_us"), (f"B Step({a.per_call}) back to back", "step_cpu_us"),
+                      ("C the same, 100 items monitored", "step_monitored_cpu_us")):
+        print(f"{what:<56}{ls[key]:>12.1f} us  " + each(key, "{:.1f}"))
+    print(f"{'C / B, median of ratios':<56}{ls['cpu_monitored_over_plain']:>12.3f}")
+    print(f"{'B / A':<56}{ls['cpu_plain_over_headless']:>12.3f}")
+    print(f"{'(C - B) per monitored item per step':<56}{ls['cpu_per_item_per_step_ns']:>12.0f} ns")
     print(f"{'data changes received per step in C':<56}{ls['changes_per_step']:>12.2f}")
     with open(a.out, "w", encoding="utf-8") as f:
         json.dump({"model": "examples/factory/factory.gdpn.yaml", "dt_s": DT, "reads": a.reads,
