@@ -70,8 +70,16 @@ void EndpointState::respond(const Pending& to, std::uint32_t type, const std::st
   sendChunks(it->second, "MSG", to.request_id, message);
 }
 
-void EndpointState::fault(const Pending& to, StatusCode code) {
-  ++stats.faults;
+void EndpointState::respondResults(const Pending& to, std::uint32_t type, const std::vector<StatusCode>& results) {
+  std::string out = responseHeader(to.handle);
+  Encoder e(out);
+  e.statuses(results);
+  e.length(0);  // diagnostics
+  respond(to, type, out);
+}
+
+void EndpointState::fault(const Pending& to, StatusCode code, bool counted) {
+  if (counted) ++stats.faults;
   const auto it = connections.find(to.connection);
   if (it == connections.end() || it->second.closing) return;
   std::string message;
@@ -109,7 +117,7 @@ Session* EndpointState::session(const Connection& c, const RequestHeader& h, Sta
 void EndpointState::closeSession(std::uint64_t number, bool delete_subscriptions) {
   const auto it = sessions.find(number);
   if (it == sessions.end()) return;
-  for (auto& p : it->second.publish) fault(p.to, status::kBadSessionClosed);
+  for (auto& p : it->second.publish) fault(p.to, status::kBadSessionClosed, false);
   // subscriptions go with the session (gdpn does not transfer them)
   (void)delete_subscriptions;
   std::vector<std::uint32_t> ids;
@@ -643,7 +651,7 @@ void Endpoint::tick(Clock::time_point now) {
     if (now - s.last_seen > std::chrono::duration<double, std::milli>(s.timeout)) expired.push_back(number);
     // Publish requests past their timeout hint
     while (!s.publish.empty() && s.publish.front().deadline < now) {
-      impl_->fault(s.publish.front().to, status::kBadTimeout);
+      impl_->fault(s.publish.front().to, status::kBadTimeout, false);
       s.publish.pop_front();
     }
   }

@@ -174,7 +174,9 @@ struct EndpointState {
   void sendChunks(Connection& c, const char* type, std::uint32_t request_id, const std::string& body);
   bool error(Connection& c, StatusCode code, const std::string& reason);  // ERR, and the connection closes
   void respond(const Pending& to, std::uint32_t type, const std::string& body);  // body after the header
-  void fault(const Pending& to, StatusCode status);
+  // a ServiceFault; `counted`: in the faults of the run's summary (Publish's normal course is not)
+  void fault(const Pending& to, StatusCode status, bool counted = true);
+  void respondResults(const Pending& to, std::uint32_t type, const std::vector<StatusCode>& results);  // a status each, no diagnostics
   std::string responseHeader(std::uint32_t handle, StatusCode result = 0) const;
   Session* session(const Connection& c, const RequestHeader& h, StatusCode& why, bool must_be_active = true);
   std::string randomBytes(std::size_t n);

@@ -261,11 +261,7 @@ void EndpointState::write(const Pending& to, Session& s, Decoder& d) {
     results.push_back(r);
   }
   (void)s;
-  std::string out = responseHeader(to.handle);
-  Encoder e(out);
-  e.statuses(results);
-  e.length(0);
-  respond(to, kWrite, out);
+  respondResults(to, kWrite, results);
 }
 
 void EndpointState::call(const Pending& to, Decoder& d) {

@@ -19,14 +19,6 @@ double revisedInterval(double requested) {
   return std::isfinite(requested) && requested > kMinInterval ? std::min(requested, kMaxInterval) : kMinInterval;
 }
 
-std::string encodedValue(const DataValue& v) {
-  std::string out;
-  Encoder e(out);
-  if (v.value) e.variant(*v.value);
-  if (v.status) e.u32(*v.status);
-  return out;
-}
-
 struct ItemRequest {
   std::uint32_t client_handle = 0;
   double sampling = 0;
@@ -116,11 +108,7 @@ void EndpointState::setPublishingMode(const Pending& to, Session& s, Decoder& d)
     if (sub) sub->enabled = enabled;
     results.push_back(sub ? 0 : status::kBadSubscriptionIdInvalid);
   }
-  std::string out = responseHeader(to.handle);
-  Encoder e(out);
-  e.statuses(results);
-  e.length(0);
-  respond(to, kSetPublishingMode, out);
+  respondResults(to, kSetPublishingMode, results);
 }
 
 void EndpointState::deleteSubscriptions(const Pending& to, Session& s, Decoder& d) {
@@ -132,15 +120,11 @@ void EndpointState::deleteSubscriptions(const Pending& to, Session& s, Decoder& 
     if (mine) deleteSubscription(id);
     results.push_back(mine ? 0 : status::kBadSubscriptionIdInvalid);
   }
-  std::string out = responseHeader(to.handle);
-  Encoder e(out);
-  e.statuses(results);
-  e.length(0);
-  respond(to, kDeleteSubscriptions, out);
+  respondResults(to, kDeleteSubscriptions, results);
   // Publish requests with nothing left to wait for
   const bool any = std::any_of(subscriptions.begin(), subscriptions.end(), [&s](const auto& p) { return p.second.session == s.number; });
   if (!any) {
-    for (auto& p : s.publish) fault(p.to, status::kBadNoSubscription);
+    for (auto& p : s.publish) fault(p.to, status::kBadNoSubscription, false);
     s.publish.clear();
   }
 }
@@ -288,11 +272,7 @@ void EndpointState::setMonitoringMode(const Pending& to, Session& s, Decoder& d)
     }
     results.push_back(0);
   }
-  std::string out = responseHeader(to.handle);
-  Encoder e(out);
-  e.statuses(results);
-  e.length(0);
-  respond(to, kSetMonitoringMode, out);
+  respondResults(to, kSetMonitoringMode, results);
 }
 
 void EndpointState::deleteItems(const Pending& to, Session& s, Decoder& d) {
@@ -303,11 +283,7 @@ void EndpointState::deleteItems(const Pending& to, Session& s, Decoder& d) {
   if (ids.empty()) return fault(to, status::kBadNothingToDo);
   std::vector<StatusCode> results;
   for (const auto item_id : ids) results.push_back(sub->items.erase(item_id) ? 0 : status::kBadMonitoredItemIdInvalid);
-  std::string out = responseHeader(to.handle);
-  Encoder e(out);
-  e.statuses(results);
-  e.length(0);
-  respond(to, kDeleteMonitoredItems, out);
+  respondResults(to, kDeleteMonitoredItems, results);
 }
 
 void EndpointState::sampleItem(MonitoredItem& item) {
@@ -319,7 +295,7 @@ void EndpointState::sampleItem(MonitoredItem& item) {
       const auto a = last.value ? last.value->number() : std::nullopt;
       const auto b = v.value ? v.value->number() : std::nullopt;
       if (item.deadband && a && b) changed = std::abs(*a - *b) > *item.deadband;
-      else changed = encodedValue(last) != encodedValue(v);
+      else changed = last.value != v.value;
     }
     if (!changed && item.trigger == 2) changed = last.source_time != v.source_time;
     if (!changed) return;
@@ -363,7 +339,7 @@ void EndpointState::publish(const Pending& to, Session& s, Decoder& d, std::uint
     }
   }
   const bool any = std::any_of(subscriptions.begin(), subscriptions.end(), [&s](const auto& p) { return p.second.session == s.number; });
-  if (!any) return fault(to, status::kBadNoSubscription);
+  if (!any) return fault(to, status::kBadNoSubscription, false);
   if (s.publish.size() >= limits.publish_requests) {
     fault(s.publish.front().to, status::kBadTooManyPublishRequests);
     s.publish.pop_front();

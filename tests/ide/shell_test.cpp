@@ -162,6 +162,9 @@ TEST_F(Shell, EveryActionOfTheTableIsDoneByPressInAStateThatAllowsIt) {
 - press: fire
 - press: plant-only
 - press: plant-only
+- press: serve-opcua
+- frames: 2
+- press: serve-opcua
 - press: reset
 - press: keys
 - press: guide

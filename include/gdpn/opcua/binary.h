@@ -84,6 +84,7 @@ struct ExpandedNodeId {
   NodeId node;                 ///< the node
   std::string namespace_uri;   ///< "" when the index says it
   std::uint32_t server = 0;    ///< 0: this server
+  friend bool operator==(const ExpandedNodeId&, const ExpandedNodeId&) = default;
 };
 
 /// A name qualified by a namespace index (a BrowseName).
@@ -97,6 +98,7 @@ struct QualifiedName {
 struct LocalizedText {
   std::string locale;  ///< "" : none
   std::string text;    ///< the text
+  friend bool operator==(const LocalizedText&, const LocalizedText&) = default;
 };
 
 /// A structure carried by its encoding's NodeId: the body's bytes are decoded by who knows it.
@@ -104,6 +106,7 @@ struct ExtensionObject {
   NodeId type;                 ///< the encoding's NodeId (e.g. i=889 EUInformation's binary encoding)
   std::uint8_t encoding = 0;   ///< 0: no body, 1: binary, 2: XML
   std::string body;            ///< the body's bytes
+  friend bool operator==(const ExtensionObject&, const ExtensionObject&) = default;
 };
 
 /// A value of any built-in type, a scalar or a one-dimensional array. DataValue, Variant and
@@ -136,6 +139,8 @@ struct Variant {
   static Variant strings(const std::vector<std::string>& list);
   /// The number of a numeric or Boolean scalar as a double; nullopt for any other.
   [[nodiscard]] std::optional<double> number() const;
+  /// The same type, shape and value (what a data change compares).
+  friend bool operator==(const Variant&, const Variant&) = default;
 };
 
 /// A value with its status and timestamps (what Read returns and Write takes).
