@@ -50,8 +50,10 @@ bool Serving::start(const ServeRequest& args, model::Simulation& sim, std::atomi
     return false;
   }
   if (spec.empty() && (!args.modbus.empty() || !args.opcua_client.empty())) {
-    err << file << ": error: " << (args.modbus.empty() ? "--opcua-client" : "--modbus")
-        << " serves the model's io section, and it has none (docs/format.md, I/O)\n";
+    err << file << ": error: "
+        << (args.modbus.empty() ? "--opcua-client links the PLC's nodes to the model's io section"
+                                : "--modbus serves the model's io section")
+        << ", and it has none (docs/format.md, I/O)\n";
     code = 1;
     return false;
   }
