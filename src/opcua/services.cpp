@@ -268,6 +268,9 @@ void EndpointState::call(const Pending& to, Decoder& d) {
   const std::size_t n = d.length(8);
   if (n == 0) return fault(to, status::kBadNothingToDo);
   if (n > limits.nodes_per_request) return fault(to, status::kBadTooManyOperations);
+  // calls that wait for steps are held: a connection may keep a few waiting, not a flood
+  const auto waiting = std::count_if(calls.begin(), calls.end(), [&](const PendingCall& c) { return c.to.connection == to.connection; });
+  if (static_cast<std::size_t>(waiting) >= limits.publish_requests) return fault(to, status::kBadTooManyOperations);
   PendingCall pc;
   pc.to = to;
   std::uint64_t wait = 0;

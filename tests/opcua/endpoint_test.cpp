@@ -424,6 +424,13 @@ TEST(OpcuaEndpoint, StepCallsAreAnsweredOnceTheRunHasTakenTheirSteps) {
   ASSERT_EQ(d.length(), 1u);
   EXPECT_EQ(*d.variant().number(), 1.0);
   EXPECT_EQ(ep.pendingSteps(), 0u);
+  // a connection keeps 16 calls waiting at most: the 17th is refused at once
+  for (int i = 0; i < 16; ++i) c.send(c.message(712, step(1)));
+  EXPECT_TRUE(c.replies().empty());
+  EXPECT_EQ(c.call(712, step(1)).result, status::kBadTooManyOperations);
+  EXPECT_EQ(ep.pendingSteps(), 16u);
+  for (int i = 0; i < 16; ++i) ep.stepTaken();
+  EXPECT_EQ(c.replies().size(), 16u);
 }
 
 TEST(OpcuaEndpoint, SubscriptionsSampleAtStepBoundariesThroughTheDeadband) {
