@@ -365,6 +365,38 @@ void Encoder::statuses(const std::vector<StatusCode>& list) {
 // ---------------------------------------------------------------------------------------------
 // Decoder
 
+std::size_t Decoder::minimumBytes(BuiltinType type) {
+  switch (type) {
+    case BuiltinType::Null: return 0;
+    case BuiltinType::Boolean:
+    case BuiltinType::SByte:
+    case BuiltinType::Byte:
+    case BuiltinType::LocalizedText:
+    case BuiltinType::DataValue:
+    case BuiltinType::Variant:
+    case BuiltinType::DiagnosticInfo: return 1;
+    case BuiltinType::Int16:
+    case BuiltinType::UInt16:
+    case BuiltinType::NodeId:
+    case BuiltinType::ExpandedNodeId: return 2;
+    case BuiltinType::ExtensionObject: return 3;
+    case BuiltinType::Int32:
+    case BuiltinType::UInt32:
+    case BuiltinType::Float:
+    case BuiltinType::StatusCode:
+    case BuiltinType::String:
+    case BuiltinType::ByteString:
+    case BuiltinType::XmlElement: return 4;
+    case BuiltinType::QualifiedName: return 6;
+    case BuiltinType::Int64:
+    case BuiltinType::UInt64:
+    case BuiltinType::Double:
+    case BuiltinType::DateTime: return 8;
+    case BuiltinType::Guid: return 16;
+  }
+  return 1;
+}
+
 const std::uint8_t* Decoder::need(std::size_t n) {
   if (left() < n) fail("the message ends inside a value (" + std::to_string(n) + " bytes wanted, " + std::to_string(left()) + " left)");
   const auto* at = p_;
@@ -527,7 +559,11 @@ Variant Decoder::variant() {
     return v;
   }
   v.is_array = true;
-  const std::size_t n = length();
+  if (v.type == BuiltinType::Null) {
+    if (i32() > 0) fail("an array of Null (elements of no bytes)");
+    return v;
+  }
+  const std::size_t n = length(minimumBytes(v.type));
   v.elements.reserve(n);
   for (std::size_t i = 0; i < n; ++i) v.elements.push_back(Variant{v.type, false, scalar(v.type), {}});
   if (mask & 0x40) {

@@ -124,7 +124,7 @@ void EndpointState::closeSession(std::uint64_t number, bool delete_subscriptions
   for (const auto& [sid, sub] : subscriptions) {
     if (sub.session == number) ids.push_back(sid);
   }
-  for (const auto sid : ids) subscriptions.erase(sid);
+  for (const auto sid : ids) deleteSubscription(sid);
   sessions.erase(it);
 }
 
@@ -179,7 +179,14 @@ ConnectionId Endpoint::open(const std::string& peer) {
   return id;
 }
 
-void Endpoint::close(ConnectionId c) { impl_->connections.erase(c); }
+void Endpoint::close(ConnectionId c) {
+  impl_->connections.erase(c);
+  // what waits to be answered on it goes with it (its asked-for steps are still taken)
+  std::erase_if(impl_->calls, [c](const PendingCall& p) { return p.to.connection == c; });
+  for (auto& [number, s] : impl_->sessions) {
+    std::erase_if(s.publish, [c](const PublishRequest& p) { return p.to.connection == c; });
+  }
+}
 
 std::string Endpoint::takeOutput(ConnectionId c) {
   const auto it = impl_->connections.find(c);
@@ -243,13 +250,14 @@ void EndpointState::sendChunks(Connection& c, const char* type, std::uint32_t re
     s.nullString();  // sender certificate
     s.nullString();  // receiver thumbprint
   } else {
-    s.u32(c.token);
+    s.u32(c.send_token);
   }
   const std::size_t overhead = 12 + security.size() + 8;
   const std::size_t room = c.send_buffer > overhead ? c.send_buffer - overhead : 1;
   std::size_t chunks = (body.size() + room - 1) / room;
   if (chunks == 0) chunks = 1;
-  if ((c.max_send_message != 0 && body.size() > c.max_send_message) || (c.max_send_chunks != 0 && chunks > c.max_send_chunks)) {
+  const std::size_t most = c.max_send_message != 0 ? std::min<std::size_t>(c.max_send_message, limits.response_bytes) : limits.response_bytes;
+  if (body.size() > most || (c.max_send_chunks != 0 && chunks > c.max_send_chunks)) {
     if (body.size() <= 64) {  // not even a fault fits: the client's limits leave no room for an answer
       error(c, status::kBadTcpMessageTooLarge, "the client takes no message of " + std::to_string(body.size()) + " bytes");
       return;
@@ -298,7 +306,14 @@ bool Endpoint::Impl::chunk(ConnectionId id, Connection& c, std::string_view byte
     if (type != "MSG" && type != "CLO") return error(c, status::kBadTcpMessageTypeInvalid, "no message type '" + std::string(type) + "'");
     if (c.channel == 0) return error(c, status::kBadTcpSecureChannelUnknown, "a message before OpenSecureChannel");
     if (d.u32() != c.channel) return error(c, status::kBadTcpSecureChannelUnknown, "a message for another secure channel");
-    if (d.u32() != c.token) return error(c, status::kBadSecureChannelIdInvalid, "a message with an unknown security token");
+    const std::uint32_t token = d.u32();
+    if (token == c.token && c.previous_token != 0) {
+      // the client uses the renewed token: the old one is done, and the server's answers take the new one
+      c.previous_token = 0;
+      c.send_token = c.token;
+    } else if (token != c.token && (token != c.previous_token || token == 0)) {
+      return error(c, status::kBadSecureChannelIdInvalid, "a message with an unknown security token");
+    }
     const std::uint32_t sequence = d.u32();
     const std::uint32_t request_id = d.u32();
     // sequence numbers go up by one (they may wrap below 1024 after 4294966271)
@@ -400,7 +415,9 @@ bool Endpoint::Impl::openChannel(ConnectionId id, Connection& c, Decoder& d) {
   } else {
     return error(c, status::kBadTcpMessageTypeInvalid, "request type " + std::to_string(request_type));
   }
+  if (request_type == 1) c.previous_token = c.token;  // still taken until the client uses the new one
   ++c.token;
+  if (request_type == 0) c.send_token = c.token;
   std::string body;
   Encoder e(body);
   e.nodeId(NodeId::num(kOpenSecureChannel + 3));
@@ -565,7 +582,19 @@ void Endpoint::Impl::createSession(const Pending& to, Connection& c, Decoder& d)
   const double timeout = d.f64();
   const std::uint32_t max_response = d.u32();
   (void)max_response;
-  if (sessions.size() >= limits.sessions) return fault(to, status::kBadTooManySessions);
+  if (sessions.size() >= limits.sessions) {
+    // full: the oldest session never activated, or whose channel has gone, makes room
+    auto live = [this](std::uint32_t channel) {
+      return std::any_of(connections.begin(), connections.end(),
+                         [channel](const auto& kv) { return kv.second.channel == channel && !kv.second.closing; });
+    };
+    const Session* oldest = nullptr;
+    for (const auto& [number, candidate] : sessions) {
+      if ((!candidate.activated || !live(candidate.channel)) && (!oldest || candidate.last_seen < oldest->last_seen)) oldest = &candidate;
+    }
+    if (!oldest) return fault(to, status::kBadTooManySessions);
+    closeSession(oldest->number, true);
+  }
   Session s;
   s.number = next_session++;
   s.id = NodeId{1, NodeId::Kind::Opaque, 0, randomBytes(16)};
@@ -573,6 +602,7 @@ void Endpoint::Impl::createSession(const Pending& to, Connection& c, Decoder& d)
   s.name = name.empty() ? c.peer : name;
   s.timeout = std::isfinite(timeout) ? std::clamp(timeout, 10000.0, 3600000.0) : 60000.0;
   s.last_seen = now;
+  s.created = now;
   s.channel = c.channel;
   std::string out = responseHeader(to.handle);
   Encoder e(out);
@@ -648,11 +678,19 @@ void Endpoint::tick(Clock::time_point now) {
   // sessions that were not heard of for their timeout
   std::vector<std::uint64_t> expired;
   for (auto& [number, s] : impl_->sessions) {
-    if (now - s.last_seen > std::chrono::duration<double, std::milli>(s.timeout)) expired.push_back(number);
+    // a session not heard of for its timeout, or not activated within 10 s, goes
+    if (now - s.last_seen > std::chrono::duration<double, std::milli>(s.timeout) ||
+        (!s.activated && now - s.created > std::chrono::seconds(10))) {
+      expired.push_back(number);
+    }
     // Publish requests past their timeout hint
-    while (!s.publish.empty() && s.publish.front().deadline < now) {
-      impl_->fault(s.publish.front().to, status::kBadTimeout, false);
-      s.publish.pop_front();
+    for (auto it = s.publish.begin(); it != s.publish.end();) {
+      if (it->deadline >= now) {
+        ++it;
+        continue;
+      }
+      impl_->fault(it->to, status::kBadTimeout, false);
+      it = s.publish.erase(it);
     }
   }
   for (const auto n : expired) impl_->closeSession(n, true);

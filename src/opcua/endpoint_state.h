@@ -49,6 +49,10 @@ inline constexpr std::uint32_t kAnonymousToken = 321, kUserNameToken = 324, kX50
 inline constexpr const char* kPolicyNone = "http://opcfoundation.org/UA/SecurityPolicy#None";
 inline constexpr const char* kTransportProfile = "http://opcfoundation.org/UA-Profile/Transport/uatcp-uasc-uabinary";
 
+/// Whether a data encoding asked of a Read or a monitored item is the default one: none, or
+/// "Default Binary" of namespace 0 (the Value's own encoding).
+inline bool defaultEncoding(const QualifiedName& q) { return q.name.empty() || (q.ns == 0 && q.name == "Default Binary"); }
+
 /// The header every request starts with.
 struct RequestHeader {
   NodeId token;                  // the session's authentication token
@@ -92,10 +96,12 @@ struct Subscription {
   std::uint32_t next_sequence = 1;
   std::uint32_t keepalive_count = 0, lifetime_count = 0;
   bool sent_once = false;               // the first cycle sends a keep-alive when there is nothing
+  bool late = false;                    // found something to send (or a keep-alive due) and no Publish request
+  Endpoint::Clock::time_point last_sent;  // when it last sent (the late one waiting longest goes first)
   Endpoint::Clock::time_point due;
   std::map<std::uint32_t, MonitoredItem> items;
   std::deque<std::pair<std::uint32_t, std::string>> retransmit;  // sequence number, encoded NotificationMessage
-  std::optional<StatusCode> closing;   // expired: a StatusChangeNotification waits for a Publish
+  std::optional<StatusCode> closing;   // expired: its StatusChangeNotification waits for a Publish, then it goes
 };
 
 /// A waiting Publish request.
@@ -112,6 +118,7 @@ struct Session {
   std::string name;
   double timeout = 60000;               // ms
   Endpoint::Clock::time_point last_seen;
+  Endpoint::Clock::time_point created;
   bool activated = false;
   std::uint32_t channel = 0;             // the secure channel it is bound to
   std::deque<PublishRequest> publish;
@@ -124,7 +131,9 @@ struct Connection {
   std::string peer;
   std::string in, out;
   bool hello = false;
-  std::uint32_t channel = 0, token = 0;
+  std::uint32_t channel = 0, token = 0;   // the newest token issued
+  std::uint32_t previous_token = 0;       // the one before a renewal, taken until the new one is used
+  std::uint32_t send_token = 0;           // the token the server's messages carry
   std::uint32_t send_sequence = 0, receive_sequence = 0;
   bool sequenced = false;                // receive_sequence is set
   std::uint32_t send_buffer = 8192, receive_buffer = 8192;  // negotiated: chunk sizes each way
@@ -163,6 +172,7 @@ struct EndpointState {
   std::uint64_t next_session = 1;
   std::map<std::uint32_t, Subscription> subscriptions;
   std::uint32_t next_subscription = 1, next_item = 1;
+  std::size_t item_count = 0;             // monitored items of every subscription
   std::mt19937_64 random{std::random_device{}()};
   DateTime model_time = 0;
   bool lockstep = false;
@@ -210,6 +220,8 @@ struct EndpointState {
   Subscription* subscription(Session& s, std::uint32_t id);
   void deleteSubscription(std::uint32_t id);
   bool sendNotifications(Subscription& sub, Session& s);
+  bool sendClosing(Subscription& sub, Session& s);  // its StatusChangeNotification, if a request waits
+  std::size_t messageRoom(const Pending& to) const;  // bytes a response to `to` may take
   void sendKeepAlive(Subscription& sub, Session& s);
 };
 

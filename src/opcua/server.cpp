@@ -31,6 +31,8 @@ struct ServerSocket {
   std::string name;
   std::string unsent;  // what the kernel would not take yet
   bool closing = false;
+  Server::Clock::time_point closing_since;  // a closing socket whose client reads nothing is dropped after a while
+  Server::Clock::time_point progress;       // when the kernel last took bytes of it (or it connected)
 };
 
 struct Server::Impl {
@@ -102,6 +104,7 @@ void Server::accept() {
   s.fd = fd;
   s.name = std::string(ip) + ":" + std::to_string(ntohs(peer.sin_port));
   s.id = endpoint_->open(s.name);
+  s.progress = Clock::now();
   if (log_) *log_ << "opcua: " << s.name << " connected\n";
   impl_->sockets.push_back(std::move(s));
 }
@@ -110,6 +113,7 @@ void Server::flush() {
   auto& sockets = impl_->sockets;
   for (std::size_t k = sockets.size(); k-- > 0;) {
     ServerSocket& s = sockets[k];
+    if (s.unsent.empty() && endpoint_->hasOutput(s.id)) s.progress = Clock::now();  // the wait for the client starts now
     s.unsent += endpoint_->takeOutput(s.id);
     while (!s.unsent.empty()) {
       const ssize_t n = send(s.fd, s.unsent.data(), s.unsent.size(), MSG_NOSIGNAL);
@@ -121,9 +125,21 @@ void Server::flush() {
         break;
       }
       s.unsent.erase(0, static_cast<std::size_t>(n));
+      s.progress = Clock::now();
     }
-    // a client that reads nothing while answers pile up is let go
-    if (s.unsent.size() > 4 * options_.limits.message_bytes) s.closing = true;
+    // a client that reads nothing while answers pile up is let go at once; a closing one that
+    // does not take its last bytes, after five seconds
+    const auto now = Clock::now();
+    if (s.unsent.size() > 4 * options_.limits.message_bytes) {
+      s.unsent.clear();
+      s.closing = true;
+    }
+    if (!s.unsent.empty() && now - s.progress > std::chrono::seconds(30)) {  // it has read nothing for 30 s
+      s.unsent.clear();
+      s.closing = true;
+    }
+    if (s.closing && s.closing_since == Clock::time_point{}) s.closing_since = now;
+    if (s.closing && now - s.closing_since > std::chrono::seconds(5)) s.unsent.clear();
     if (s.closing && s.unsent.empty()) {
       if (log_) *log_ << "opcua: " << s.name << " disconnected\n";
       endpoint_->close(s.id);
@@ -144,7 +160,9 @@ void Server::round(std::int64_t timeout_ns) {
   im.fds.clear();
   im.fds.push_back({im.listener, POLLIN, 0});
   for (const auto& s : im.sockets) {
-    im.fds.push_back({s.fd, static_cast<short>(POLLIN | (s.unsent.empty() ? 0 : POLLOUT)), 0});
+    // a closing socket is only written; one whose answers back up is not read until they go
+    const bool read = !s.closing && s.unsent.size() < options_.limits.message_bytes;
+    im.fds.push_back({s.fd, static_cast<short>((read ? POLLIN : 0) | (s.unsent.empty() ? 0 : POLLOUT)), 0});
   }
   timespec wait{};
   wait.tv_sec = static_cast<time_t>(timeout_ns / 1'000'000'000);
@@ -153,7 +171,7 @@ void Server::round(std::int64_t timeout_ns) {
   if (ready > 0) {
     for (std::size_t k = 1; k < im.fds.size(); ++k) {
       ServerSocket& s = im.sockets[k - 1];
-      if ((im.fds[k].revents & (POLLERR | POLLNVAL)) != 0) {
+      if ((im.fds[k].revents & (POLLERR | POLLNVAL)) != 0 || ((im.fds[k].revents & POLLHUP) != 0 && (im.fds[k].events & POLLIN) == 0)) {
         s.closing = true;
         s.unsent.clear();
         continue;
@@ -161,7 +179,7 @@ void Server::round(std::int64_t timeout_ns) {
       if ((im.fds[k].revents & (POLLIN | POLLHUP)) == 0) continue;
       std::uint8_t buffer[16384];
       // at most 256 KiB a round: a client that floods is served in turn with the others
-      for (int reads = 0; reads < 16 && !s.closing; ++reads) {
+      for (int reads = 0; reads < 16 && !s.closing && s.unsent.size() < options_.limits.message_bytes; ++reads) {
         const ssize_t n = recv(s.fd, buffer, sizeof buffer, 0);
         if (n < 0 && errno == EINTR) continue;
         if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) break;
@@ -176,6 +194,8 @@ void Server::round(std::int64_t timeout_ns) {
             *log_ << "opcua: " << s.name << " closed: it sent bytes that are no OPC UA, or broke a limit\n";
           }
         }
+        if (s.unsent.empty() && endpoint_->hasOutput(s.id)) s.progress = Clock::now();
+        s.unsent += endpoint_->takeOutput(s.id);  // the answers, counted against what may wait
         if (static_cast<std::size_t>(n) < sizeof buffer) break;
       }
     }

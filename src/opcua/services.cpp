@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "endpoint_state.h"
 
@@ -11,6 +12,7 @@ namespace gdpn::opcua::detail {
 namespace {
 
 constexpr std::uint32_t kAllAttributes = 27;
+constexpr std::size_t kMostPathElements = 32;  // elements of one relative path
 
 // the references of `node` a BrowseDescription asks for, encoded as ReferenceDescriptions
 std::vector<std::string> matching(const AddressSpace& space, const Node& node, std::uint32_t direction,
@@ -135,9 +137,13 @@ void EndpointState::translate(const Pending& to, Decoder& d) {
   std::string out = responseHeader(to.handle);
   Encoder e(out);
   e.length(n);
+  std::size_t all_elements = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const NodeId start = d.nodeId();
     const std::size_t elements = d.length(8);
+    // each element walks the references of every node reached: the work is bounded by them
+    all_elements += elements;
+    if (elements > kMostPathElements || all_elements > limits.nodes_per_request) return fault(to, status::kBadTooManyOperations);
     std::vector<NodeId> at{start};
     StatusCode why = space.find(start) ? 0 : status::kBadNodeIdUnknown;
     if (elements == 0 && why == 0) why = status::kBadNothingToDo;
@@ -152,6 +158,7 @@ void EndpointState::translate(const Pending& to, Decoder& d) {
         continue;
       }
       std::vector<NodeId> next;
+      std::set<NodeId> reached;
       for (const auto& from : at) {
         const Node* node = space.find(from);
         if (!node) continue;
@@ -159,9 +166,7 @@ void EndpointState::translate(const Pending& to, Decoder& d) {
           if (r.forward == inverse) continue;
           if (!type.isNull() && !(r.type == type || (subtypes && space.isSubtype(r.type, type)))) continue;
           const Node* target = space.find(r.target);
-          if (target && target->browse_name == name && std::find(next.begin(), next.end(), r.target) == next.end()) {
-            next.push_back(r.target);
-          }
+          if (target && target->browse_name == name && reached.insert(r.target).second) next.push_back(r.target);
         }
       }
       at = std::move(next);
@@ -201,6 +206,10 @@ DataValue EndpointState::readValue(const NodeId& node, std::uint32_t attribute, 
   const Node* n = space.find(node);
   if (!n) return DataValue{std::nullopt, status::kBadNodeIdUnknown, std::nullopt, std::nullopt};
   DataValue v = readAttribute(space, *n, attribute);
+  // a read-only server: nothing is writable by this user
+  if (read_only && attribute == static_cast<std::uint32_t>(AttributeId::UserAccessLevel) && v.value) {
+    v.value = Variant::of(BuiltinType::Byte, std::uint64_t{1});
+  }
   if (attribute == static_cast<std::uint32_t>(AttributeId::Value) && !v.status) {
     // the model's values are of model time; the server's own of the wall clock
     if (timestamps == 0 || timestamps == 2) v.source_time = node.ns == 1 ? model_time : dateTimeNow();
@@ -227,7 +236,7 @@ void EndpointState::read(const Pending& to, Decoder& d) {
     const QualifiedName encoding = d.qualifiedName();
     if (!range.empty()) {
       e.dataValue({std::nullopt, status::kBadIndexRangeInvalid, std::nullopt, std::nullopt});
-    } else if (!encoding.name.empty()) {
+    } else if (!defaultEncoding(encoding)) {
       e.dataValue({std::nullopt, attribute == 13 ? status::kBadDataEncodingUnsupported : status::kBadDataEncodingInvalid,
                    std::nullopt, std::nullopt});
     } else {
@@ -278,8 +287,9 @@ void EndpointState::call(const Pending& to, Decoder& d) {
     const NodeId object = d.nodeId();
     const NodeId method = d.nodeId();
     const std::size_t args = d.length(1);
-    std::vector<Variant> in(args);
-    for (auto& a : in) a = d.variant();
+    std::vector<Variant> in;
+    in.reserve(std::min<std::size_t>(args, 16));
+    for (std::size_t k = 0; k < args; ++k) in.push_back(d.variant());
     const Node* o = space.find(object);
     const Node* m = space.find(method);
     StatusCode r = 0;

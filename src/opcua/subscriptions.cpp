@@ -44,7 +44,12 @@ Subscription* EndpointState::subscription(Session& s, std::uint32_t id) {
   return it == subscriptions.end() || it->second.session != s.number ? nullptr : &it->second;
 }
 
-void EndpointState::deleteSubscription(std::uint32_t id) { subscriptions.erase(id); }
+void EndpointState::deleteSubscription(std::uint32_t id) {
+  const auto it = subscriptions.find(id);
+  if (it == subscriptions.end()) return;
+  item_count -= it->second.items.size();
+  subscriptions.erase(it);
+}
 
 void EndpointState::createSubscription(const Pending& to, Session& s, Decoder& d) {
   const double interval = d.f64();
@@ -180,9 +185,9 @@ void EndpointState::createItems(const Pending& to, Session& s, Decoder& d) {
     else if (item.attribute < 1 || item.attribute > 27 || readAttribute(space, *node, item.attribute).status == status::kBadAttributeIdInvalid)
       r = status::kBadAttributeIdInvalid;
     else if (!range.empty()) r = status::kBadIndexRangeInvalid;
-    else if (!encoding.name.empty()) r = status::kBadDataEncodingInvalid;
+    else if (!defaultEncoding(encoding)) r = status::kBadDataEncodingInvalid;
     else if (item.mode > 2) r = status::kBadMonitoringModeInvalid;
-    else if (sub->items.size() >= limits.items_per_subscription) r = status::kBadTooManyMonitoredItems;
+    else if (sub->items.size() >= limits.items_per_subscription || item_count >= limits.items) r = status::kBadTooManyMonitoredItems;
     else r = applyFilter(space, item, p.filter);
     if (r != 0) {
       e.u32(r);
@@ -195,7 +200,7 @@ void EndpointState::createItems(const Pending& to, Session& s, Decoder& d) {
     item.id = next_item++;
     item.client_handle = p.client_handle;
     item.timestamps = timestamps;
-    item.sampling = p.sampling < 0 || !std::isfinite(p.sampling) ? sub->interval : p.sampling;
+    item.sampling = p.sampling < 0 || !std::isfinite(p.sampling) ? sub->interval : std::min(p.sampling, kMaxInterval);
     item.queue_size = std::clamp<std::size_t>(p.queue_size, 1, limits.queue_size);
     item.discard_oldest = p.discard_oldest;
     e.u32(0);
@@ -204,6 +209,7 @@ void EndpointState::createItems(const Pending& to, Session& s, Decoder& d) {
     e.u32(static_cast<std::uint32_t>(item.queue_size));
     e.extensionObject({});
     MonitoredItem& kept = sub->items[item.id] = std::move(item);
+    ++item_count;
     if (kept.mode != 0) sampleItem(kept);  // the first value goes at once
   }
   e.length(0);
@@ -232,7 +238,7 @@ void EndpointState::modifyItems(const Pending& to, Session& s, Decoder& d) {
       if (r == 0) {
         trial.client_handle = p.client_handle;
         trial.timestamps = timestamps;
-        trial.sampling = p.sampling < 0 || !std::isfinite(p.sampling) ? sub->interval : p.sampling;
+        trial.sampling = p.sampling < 0 || !std::isfinite(p.sampling) ? sub->interval : std::min(p.sampling, kMaxInterval);
         trial.queue_size = std::clamp<std::size_t>(p.queue_size, 1, limits.queue_size);
         trial.discard_oldest = p.discard_oldest;
         while (trial.queue.size() > trial.queue_size) trial.queue.pop_front();
@@ -282,7 +288,11 @@ void EndpointState::deleteItems(const Pending& to, Session& s, Decoder& d) {
   if (!sub) return fault(to, status::kBadSubscriptionIdInvalid);
   if (ids.empty()) return fault(to, status::kBadNothingToDo);
   std::vector<StatusCode> results;
-  for (const auto item_id : ids) results.push_back(sub->items.erase(item_id) ? 0 : status::kBadMonitoredItemIdInvalid);
+  for (const auto item_id : ids) {
+    const bool erased = sub->items.erase(item_id) != 0;
+    item_count -= erased ? 1 : 0;
+    results.push_back(erased ? 0 : status::kBadMonitoredItemIdInvalid);
+  }
   respondResults(to, kDeleteMonitoredItems, results);
 }
 
@@ -347,10 +357,24 @@ void EndpointState::publish(const Pending& to, Session& s, Decoder& d, std::uint
   const auto deadline = timeout_hint == 0 ? Endpoint::Clock::time_point::max()
                                           : now + std::chrono::milliseconds(timeout_hint);
   s.publish.push_back({to, deadline, std::move(acks)});
-  // a subscription that found no request when it was due is answered now
+  // a Publish request received: every subscription of the session lives on
   for (auto& [id, sub] : subscriptions) {
-    if (sub.session != s.number || sub.lifetime_count == 0 || s.publish.empty()) continue;
-    if (!sendNotifications(sub, s) && sub.keepalive_count >= sub.keepalive) sendKeepAlive(sub, s);
+    if (sub.session == s.number) sub.lifetime_count = 0;
+  }
+  // an expired subscription's last word first, then the late ones, the longest waiting first
+  while (!s.publish.empty()) {
+    Subscription* first = nullptr;
+    for (auto& [id, sub] : subscriptions) {
+      if (sub.session != s.number || !(sub.closing || sub.late)) continue;
+      if (!first || (sub.closing && !first->closing) || (!first->closing && sub.last_sent < first->last_sent)) first = &sub;
+    }
+    if (!first) break;
+    if (first->closing) {
+      sendClosing(*first, s);  // erases it
+      continue;
+    }
+    first->late = false;
+    if (!sendNotifications(*first, s)) sendKeepAlive(*first, s);
   }
 }
 
@@ -390,8 +414,9 @@ bool EndpointState::sendNotifications(Subscription& sub, Session& s) {
   std::size_t count = 0;
   const std::size_t cap = sub.max_notifications == 0 ? SIZE_MAX : sub.max_notifications;
   bool more = false;
+  const std::size_t room = messageRoom(s.publish.front().to);
   for (auto& [item_id, item] : sub.items) {
-    while (!item.queue.empty() && count < cap) {
+    while (!item.queue.empty() && count < cap && items.size() < room) {
       ie.u32(item.client_handle);
       ie.dataValue(item.queue.front());
       item.queue.pop_front();
@@ -421,6 +446,8 @@ bool EndpointState::sendNotifications(Subscription& sub, Session& s) {
   sub.keepalive_count = 0;
   sub.lifetime_count = 0;
   sub.sent_once = true;
+  sub.late = false;
+  sub.last_sent = now;
   return true;
 }
 
@@ -437,10 +464,38 @@ void EndpointState::sendKeepAlive(Subscription& sub, Session& s) {
   sub.keepalive_count = 0;
   sub.lifetime_count = 0;
   sub.sent_once = true;
+  sub.late = false;
+  sub.last_sent = now;
+}
+
+bool EndpointState::sendClosing(Subscription& sub, Session& s) {
+  if (s.publish.empty() || !sub.closing) return false;
+  ExtensionObject change{NodeId::num(kStatusChangeNotification), 1, {}};
+  Encoder ce(change.body);
+  ce.u32(*sub.closing);
+  ce.u8(0);
+  std::string message;
+  Encoder me(message);
+  me.u32(sub.next_sequence++);
+  me.i64(dateTimeNow());
+  me.length(1);
+  me.extensionObject(change);
+  const PublishRequest p = std::move(s.publish.front());
+  s.publish.pop_front();
+  publishResponse(*this, p, sub, false, message);
+  deleteSubscription(sub.id);
+  return true;
+}
+
+std::size_t EndpointState::messageRoom(const Pending& to) const {
+  std::size_t most = limits.response_bytes;
+  const auto it = connections.find(to.connection);
+  if (it != connections.end() && it->second.max_send_message != 0) most = std::min<std::size_t>(most, it->second.max_send_message);
+  return most > 1024 ? most - 1024 : 0;  // room for the headers around the notifications
 }
 
 void EndpointState::publishDue() {
-  std::vector<std::uint32_t> expired;
+  std::vector<std::uint32_t> gone;
   for (auto& [id, sub] : subscriptions) {
     if (sub.due > now) continue;
     const auto step = std::chrono::duration_cast<Endpoint::Clock::duration>(std::chrono::duration<double, std::milli>(sub.interval));
@@ -448,41 +503,24 @@ void EndpointState::publishDue() {
     if (sub.due <= now) sub.due = now + step;  // fell behind: no burst to catch up
     const auto sit = sessions.find(sub.session);
     if (sit == sessions.end()) {
-      expired.push_back(id);
+      gone.push_back(id);
       continue;
     }
     Session& s = sit->second;
+    if (sub.closing) continue;  // waits for a Publish request to say it went
     if (sendNotifications(sub, s)) continue;
     const bool has_news = sub.enabled && std::any_of(sub.items.begin(), sub.items.end(), [](const auto& p) { return !p.second.queue.empty(); });
-    if (!has_news && (!sub.sent_once || ++sub.keepalive_count >= sub.keepalive) && !s.publish.empty()) {
+    const bool keepalive_due = !has_news && (!sub.sent_once || ++sub.keepalive_count >= sub.keepalive);
+    if (keepalive_due && !s.publish.empty()) {
       sendKeepAlive(sub, s);
       continue;
     }
-    // nothing could go out for want of a Publish request
-    if (s.publish.empty() && ++sub.lifetime_count >= sub.lifetime) expired.push_back(id);
+    if (!has_news && !keepalive_due) continue;
+    // something to send and no Publish request to send it with
+    sub.late = true;
+    if (++sub.lifetime_count >= sub.lifetime) sub.closing = status::kBadTimeout;
   }
-  for (const auto id : expired) {
-    const auto it = subscriptions.find(id);
-    if (it == subscriptions.end()) continue;
-    const auto sit = sessions.find(it->second.session);
-    if (sit != sessions.end() && !sit->second.publish.empty()) {
-      // the subscription's last word: BadTimeout
-      ExtensionObject change{NodeId::num(kStatusChangeNotification), 1, {}};
-      Encoder ce(change.body);
-      ce.u32(status::kBadTimeout);
-      ce.u8(0);
-      std::string message;
-      Encoder me(message);
-      me.u32(it->second.next_sequence++);
-      me.i64(dateTimeNow());
-      me.length(1);
-      me.extensionObject(change);
-      const PublishRequest p = std::move(sit->second.publish.front());
-      sit->second.publish.pop_front();
-      publishResponse(*this, p, it->second, false, message);
-    }
-    subscriptions.erase(it);
-  }
+  for (const auto id : gone) deleteSubscription(id);
 }
 
 }  // namespace gdpn::opcua::detail

@@ -106,10 +106,10 @@ class TestClient {
     e.u8(0);
     return out;
   }
-  std::string openChannel() {
+  std::string openChannel(std::uint32_t request_type = 0) {
     std::string body;
     Encoder e(body);
-    e.u32(0);
+    e.u32(request_type == 0 ? 0 : channel_);
     e.string("http://opcfoundation.org/UA/SecurityPolicy#None");
     e.nullString();
     e.nullString();
@@ -118,12 +118,41 @@ class TestClient {
     e.nodeId(NodeId::num(446));
     body += requestHeader(1);
     e.u32(0);
-    e.u32(0);
+    e.u32(request_type);
     e.u32(1);
     e.nullString();
     e.u32(600000);
     return frame("OPN", 'F', body);
   }
+  /// Renews the channel's token; the token the answer gives (the client keeps using the old
+  /// one until it says `useNewToken()`).
+  std::uint32_t renew() {
+    received_.clear();
+    send(openChannel(1));
+    received_ += ep_.takeOutput(id_);
+    if (received_.substr(0, 4) != "OPNF") return 0;
+    Decoder d(std::string_view(received_).substr(8));
+    (void)d.u32();
+    (void)d.string();
+    (void)d.string();
+    (void)d.string();
+    (void)d.u32();
+    (void)d.u32();
+    (void)d.nodeId();
+    (void)d.i64();
+    (void)d.u32();
+    (void)d.u32();
+    d.skipDiagnosticInfo();
+    (void)d.strings();
+    (void)d.extensionObject();
+    (void)d.u32();
+    (void)d.u32();
+    const std::uint32_t token = d.u32();
+    received_.clear();
+    return token;
+  }
+  void useToken(std::uint32_t token) { token_id_ = token; }
+  [[nodiscard]] std::uint32_t token() const { return token_id_; }
   /// A request `type` whose fields after the header are `fields`, in one chunk.
   std::string message(std::uint32_t type, const std::string& fields, char final = 'F') {
     std::string body;
@@ -555,6 +584,107 @@ TEST(OpcuaEndpoint, MalformedStreamsCloseTheirConnectionOnly) {
   // the good client goes on
   EXPECT_EQ(*good.read(NodeId::str("io/x")).value->number(), 1.5);
   EXPECT_GE(ep.stats().dropped, 6u);
+}
+
+TEST(OpcuaEndpoint, ARenewedTokenAndTheOldOneServeUntilTheNewOneIsUsed) {
+  Space s;
+  Endpoint ep(s.space, "opc.tcp://127.0.0.1:4840");
+  TestClient c(ep);
+  c.connect();
+  ASSERT_EQ(c.session(), 0u);
+  const std::uint32_t old_token = c.token();
+  const std::uint32_t new_token = c.renew();
+  ASSERT_NE(new_token, 0u);
+  EXPECT_NE(new_token, old_token);
+  // a request sent before the answer came, with the old token: answered
+  EXPECT_EQ(*c.read(NodeId::str("io/x")).value->number(), 1.5);
+  c.useToken(new_token);
+  EXPECT_EQ(*c.read(NodeId::str("io/x")).value->number(), 1.5);
+  // the new one used: the old one is done
+  c.useToken(old_token);
+  c.send(c.message(631, ""));
+  EXPECT_FALSE(c.open());
+}
+
+TEST(OpcuaEndpoint, AnExpiredSubscriptionSaysSoInTheNextPublish) {
+  Space s;
+  Endpoint ep(s.space, "opc.tcp://127.0.0.1:4840");
+  TestClient c(ep);
+  c.connect();
+  ASSERT_EQ(c.session(), 0u);
+  std::string f;
+  Encoder e(f);
+  e.f64(10);   // 10 ms
+  e.u32(3);    // lifetime 3
+  e.u32(1);    // keep-alive 1
+  e.u32(0);
+  e.boolean(true);
+  e.u8(0);
+  const Reply created = c.call(787, f);
+  Decoder sd(created.body);
+  const std::uint32_t sub = sd.u32();
+  (void)sd.f64();
+  EXPECT_EQ(sd.u32(), 3u);  // lifetime at least 3 keep-alives
+  // no Publish request for many intervals
+  auto t = Endpoint::Clock::now();
+  for (int i = 0; i < 10; ++i) ep.tick(t += std::chrono::milliseconds(20));
+  std::string p;
+  Encoder(p).length(0);
+  c.send(c.message(826, p));
+  const auto r = c.replies();
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0].type, 829u);
+  Decoder d(r[0].body);
+  EXPECT_EQ(d.u32(), sub);
+  (void)d.u32s();
+  (void)d.boolean();
+  (void)d.u32();
+  (void)d.i64();
+  ASSERT_EQ(d.length(), 1u);
+  const ExtensionObject change = d.extensionObject();
+  EXPECT_EQ(change.type, NodeId::num(820));  // StatusChangeNotification
+  EXPECT_EQ(Decoder(change.body).u32(), status::kBadTimeout);
+  // and it is gone
+  std::string del;
+  Encoder de(del);
+  de.length(1);
+  de.u32(sub);
+  const Reply deleted = c.call(847, del);
+  Decoder dd(deleted.body);
+  ASSERT_EQ(dd.length(), 1u);
+  EXPECT_EQ(dd.u32(), status::kBadSubscriptionIdInvalid);
+}
+
+TEST(OpcuaEndpoint, WorkARequestCanAskForIsBounded) {
+  Space s;
+  Endpoint ep(s.space, "opc.tcp://127.0.0.1:4840");
+  TestClient c(ep);
+  c.connect();
+  ASSERT_EQ(c.session(), 0u);
+  // a relative path of 33 elements
+  std::string t;
+  Encoder te(t);
+  te.length(1);
+  te.nodeId(NodeId::num(id::kObjectsFolder));
+  te.length(33);
+  for (int k = 0; k < 33; ++k) {
+    te.nodeId({});
+    te.boolean(false);
+    te.boolean(true);
+    te.qualifiedName({1, "test"});
+  }
+  EXPECT_EQ(c.call(554, t).result, status::kBadTooManyOperations);
+  // a Call whose argument is an array of Null elements, millions claimed in five bytes
+  std::string f;
+  Encoder e(f);
+  e.length(1);
+  e.nodeId(NodeId::str("model"));
+  e.nodeId(NodeId::str("step"));
+  e.length(1);
+  e.u8(0x80);  // an array of Null
+  e.i32(1 << 22);
+  EXPECT_EQ(c.call(712, f).result, status::kBadDecodingError);
+  EXPECT_TRUE(c.open());
 }
 
 TEST(OpcuaEndpoint, FortySessionsAtOnceGetThirtyTwo) {

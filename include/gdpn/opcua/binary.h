@@ -245,6 +245,9 @@ class Decoder {
   }
   /// Throws unless every byte was read.
   void expectEnd() const;
+  /// The fewest bytes a value of `type` takes on the wire (0 for Null): what bounds an array's
+  /// length by the bytes left.
+  static std::size_t minimumBytes(BuiltinType type);
 
  private:
   const std::uint8_t* need(std::size_t n);

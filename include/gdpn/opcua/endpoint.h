@@ -25,6 +25,8 @@ struct ServerLimits {
   std::size_t sessions = 32;                     ///< sessions at once
   std::size_t subscriptions_per_session = 16;    ///< subscriptions a session may hold
   std::size_t items_per_subscription = 1000;     ///< monitored items a subscription may hold
+  std::size_t items = 10000;                     ///< monitored items of all sessions together
+  std::uint32_t response_bytes = 16u << 20;      ///< the largest response sent (16 MiB; less when the client says so)
   std::size_t publish_requests = 16;             ///< Publish requests a session, and Step calls a connection, may have waiting
   std::size_t nodes_per_request = 1000;          ///< nodes one Read, Write, Browse, Call... may name
   std::size_t references_per_node = 1000;        ///< references one Browse returns a node at most
