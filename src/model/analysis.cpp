@@ -116,7 +116,14 @@ Analysis analyze(const net::Net& net, std::string path, const AnalysisOptions& o
 
 std::vector<std::pair<std::string, net::ExploreStop>> stoppedPhases(const Analysis& a) {
   std::vector<std::pair<std::string, net::ExploreStop>> out;
-  if (!a.invariants.complete) out.emplace_back("invariants", a.invariants.stop);
+  if (!a.invariants.complete) {
+    // the list that was cut, by name: the yes-or-no answers beside them are whole
+    const auto& inv = a.invariants;
+    out.emplace_back(!inv.p_complete && !inv.t_complete ? "invariants"
+                     : !inv.p_complete                  ? "P-invariants"
+                                                        : "T-invariants",
+                     inv.stop);
+  }
   if (a.cycles_stop != net::ExploreStop::Done) out.emplace_back("cycle times", a.cycles_stop);
   if (!a.space.complete) out.emplace_back("state space", a.space.stop);
   return out;
@@ -277,6 +284,8 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
   const auto& inv = a.invariants;
   ordered_json ij;
   ij["complete"] = inv.complete;
+  ij["p_complete"] = inv.p_complete;
+  ij["t_complete"] = inv.t_complete;
   ij["stop"] = net::stopReason(inv.stop);
   ij["conservative"] = inv.conservative;
   ij["structurally_bounded"] = inv.structurally_bounded;
@@ -458,13 +467,15 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
 
   constexpr std::size_t kShown = 20, kMostPlaces = 8;
   const auto& inv = a.invariants;
-  out << "invariants" << (inv.complete ? "" : std::string(" (") + net::stopReason(inv.stop) + ")") << ":\n";
+  const char* cut = inv.p_complete == inv.t_complete ? "" : inv.p_complete ? "T-invariants " : "P-invariants ";
+  out << "invariants" << (inv.complete ? "" : std::string(" (") + cut + net::stopReason(inv.stop) + ")") << ":\n";
   if (net.colouring() && !net.countsExact()) {
     out << "  of the counts: none sought, as what some arcs move depends on the binding\n";
   } else {
     out << "  conservative: " << yes(inv.conservative) << "; structurally bounded: " << yes(inv.structurally_bounded)
         << "; covered by T-invariants: " << yes(inv.consistent) << "\n";
-    out << "  P-invariants (" << inv.p.size() << "):" << (inv.p.empty() ? " none" : "") << "\n";
+    out << "  P-invariants (" << inv.p.size() << (inv.p_complete ? "" : " found; the list was cut short") << "):"
+        << (inv.p.empty() && inv.p_complete ? " none" : "") << "\n";
     // each wrapped at 100 columns, cut after kMostPlaces places (--json has them whole)
     for (std::size_t i = 0; i < inv.p.size() && i < kShown; ++i) {
       auto terms = invariantWords(invariantText(net, inv.p[i]), kMostPlaces, "--json");
@@ -474,7 +485,8 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
       out << "\n";
     }
     if (inv.p.size() > kShown) out << "    ... and " << inv.p.size() - kShown << " more (--json lists all)\n";
-    out << "  T-invariants (" << inv.t.size() << "):" << (inv.t.empty() ? " none" : "") << "\n";
+    out << "  T-invariants (" << inv.t.size() << (inv.t_complete ? "" : " found; the list was cut short") << "):"
+        << (inv.t.empty() && inv.t_complete ? " none" : "") << "\n";
     for (std::size_t i = 0; i < inv.t.size() && i < kShown; ++i) {
       std::vector<std::string> names;
       for (const auto& [k, w] : inv.t[i].weights) names.push_back((w != 1 ? std::to_string(w) + "*" : "") + net.transitionName(net::TransitionId{k}));

@@ -12,6 +12,7 @@
 #include <span>
 
 #include "gdpn/net/slot.h"
+#include "gdpn/net/state_equation.h"
 
 namespace gdpn::net {
 namespace {
@@ -439,26 +440,44 @@ Invariants invariants(const Net& net, const InvariantOptions& options) {
   out.bound.assign(places, -1);
   Budget budget(options);
   const Incidence c = incidenceMatrix(net);
-  out.p = slotwise(net, c, false, budget);
-  std::vector<Sparse> by_transition;
+  std::vector<Sparse> by_place, by_transition;
+  by_place.reserve(c.by_place.size());
+  for (const auto& row : c.by_place) by_place.push_back(indexed(row));
   by_transition.reserve(c.by_transition.size());
   for (const auto& row : c.by_transition) by_transition.push_back(indexed(row));
+  std::size_t halts = budget.halts();
+  out.p = slotwise(net, c, false, budget);
+  out.p_complete = budget.halts() == halts;
+  halts = budget.halts();
   out.t = semiflows(by_transition, places, budget);
+  out.t_complete = budget.halts() == halts && !budget.exhausted();
+  // yes or no from the lists where they are whole; where one was cut, from a linear program
+  // (some y >= 1 with y·C = 0 exists or not), which a long list does not hold up
+  auto byProgram = [](const std::vector<Sparse>& rows, std::size_t columns, bool equality, bool listed) {
+    return listed || positiveSolution(rows, columns, equality).value_or(false);
+  };
   out.conservative = covers(out.p, places);
+  if (!out.p_complete) out.conservative = byProgram(by_place, transitions, true, out.conservative);
   out.consistent = covers(out.t, transitions);
+  if (!out.t_complete) out.consistent = byProgram(by_transition, places, true, out.consistent);
 
-  // y·C <= 0: the semiflows of C with one slack row per transition
+  // y·C <= 0: the semiflows of C with one slack row per transition, for the bounds they give;
+  // their list may be cut (its own budget: the answer above stays whole), and then the
+  // program says whether the net is structurally bounded
   std::vector<Invariant> bounding = out.p;
   if (!out.conservative) {
-    const std::size_t halts = budget.halts();
-    auto slack = slotwise(net, c, true, budget);
-    out.structurally_bounded = budget.halts() == halts && covers(slack, places);
+    Budget slack_budget(options);
+    auto slack = slotwise(net, c, true, slack_budget);
+    const bool whole = slack_budget.halts() == 0;
+    out.structurally_bounded = whole ? covers(slack, places) : byProgram(by_place, transitions, false, false);
     bounding.insert(bounding.end(), std::make_move_iterator(slack.begin()), std::make_move_iterator(slack.end()));
+    if (slack_budget.exhausted()) budget.halt(slack_budget.stop());  // a time or memory limit stops all
   } else {
     out.structurally_bounded = true;
   }
   out.stop = budget.stop();
   out.complete = out.stop == ExploreStop::Done;
+  if (!out.complete && out.p_complete && out.t_complete) out.p_complete = out.t_complete = false;  // a limit cut the rest
   // y·M <= y·M0 in every reachable marking M, so M(p) <= y·M0 / y(p)
   for (const auto& inv : bounding) {
     std::int64_t total = 0;

@@ -298,4 +298,39 @@ bool stateEquationExcludes(const Net& net, const Formula& f) {
   return true;
 }
 
+std::optional<bool> positiveSolution(const std::vector<std::vector<std::pair<std::uint32_t, std::int64_t>>>& rows,
+                                     std::size_t columns, bool equality) {
+  glp_term_hook(silent, nullptr);
+  Lp lp(glp_create_prob());
+  // one constraint per column, one variable per row
+  if (columns > 0) glp_add_rows(lp.get(), static_cast<int>(columns));
+  if (!rows.empty()) glp_add_cols(lp.get(), static_cast<int>(rows.size()));
+  for (std::size_t c = 0; c < columns; ++c) {
+    glp_set_row_bnds(lp.get(), static_cast<int>(c + 1), equality ? GLP_FX : GLP_UP, 0.0, 0.0);
+  }
+  std::vector<int> ia{0}, ja{0};
+  std::vector<double> ar{0.0};
+  for (std::size_t v = 0; v < rows.size(); ++v) {
+    glp_set_col_bnds(lp.get(), static_cast<int>(v + 1), GLP_LO, 1.0, 0.0);
+    for (const auto& [c, x] : rows[v]) {
+      ia.push_back(static_cast<int>(c + 1));
+      ja.push_back(static_cast<int>(v + 1));
+      ar.push_back(static_cast<double>(x));
+    }
+  }
+  if (rows.empty()) return true;
+  glp_load_matrix(lp.get(), static_cast<int>(ar.size() - 1), ia.data(), ja.data(), ar.data());
+  glp_smcp parm;
+  glp_init_smcp(&parm);
+  parm.msg_lev = GLP_MSG_OFF;
+  parm.presolve = GLP_ON;  // feasibility only: no objective
+  const int rc = glp_simplex(lp.get(), &parm);
+  if (rc == GLP_ENOPFS) return false;  // presolve found no primal feasible solution
+  if (rc != 0) return std::nullopt;
+  const int status = glp_get_status(lp.get());
+  if (status == GLP_OPT || status == GLP_FEAS) return true;
+  if (status == GLP_NOFEAS) return false;
+  return std::nullopt;
+}
+
 }  // namespace gdpn::net

@@ -76,7 +76,11 @@ TEST(AnalyzeLimits, MaxStatesAndMaxMemoryBoundTheInvariantsToo) {
   model = fanModel(280, 280);
   r = runGdpn("analyze '" + model + "' --max-states 50");
   EXPECT_EQ(r.code, 3) << r.out;
-  EXPECT_NE(r.out.find("stopped early: invariants (partial: too many candidates)"), std::string::npos) << r.out;
+  // the list cut is named: fan 280's P-invariants (its T-invariants, none, are whole)
+  EXPECT_NE(r.out.find("stopped early: P-invariants (partial: too many candidates)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("invariants (P-invariants partial: too many candidates):"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("P-invariants (0 found; the list was cut short):"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("T-invariants (0): none"), std::string::npos) << r.out;
   fs::remove(model);
 }
 
@@ -87,6 +91,26 @@ TEST(AnalyzeLimits, ASmallNetIsCompleteUnderTheLimits) {
   EXPECT_EQ(r.out.find("stopped early"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("P-invariants (16)"), std::string::npos) << r.out;
   fs::remove(model);
+}
+
+TEST(AnalyzeLimits, AContestNetWhoseInvariantsUsedToBeCutIsAnsweredWholeWithExitZero) {
+  // DoubleExponent-PT-003: bounded, not structurally bounded; the semiflows of y·C <= 0
+  // explode, and the invariants phase stopped there (exit 3) though the state space is whole
+  const std::string net = std::string(GDPN_SOURCE_DIR) + "/tests/data/bench-nets/DoubleExponent-PT-003.pnml";
+  auto r = runGdpn("analyze '" + net + "' --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["states"], 2385072) << "the contest's count";
+  EXPECT_TRUE(j["partial"].empty());
+  EXPECT_TRUE(j["invariants"]["complete"]);
+  EXPECT_TRUE(j["invariants"]["p_complete"]);
+  EXPECT_TRUE(j["invariants"]["t_complete"]);
+  EXPECT_EQ(j["invariants"]["p"].size(), 17u);
+  EXPECT_FALSE(j["invariants"]["structurally_bounded"]);
+  r = runGdpn("analyze '" + net + "'");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("invariants:\n  conservative: no; structurally bounded: no; covered by T-invariants: no"),
+            std::string::npos) << r.out;
 }
 
 }  // namespace

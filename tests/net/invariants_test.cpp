@@ -5,11 +5,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <set>
 
 #include "gdpn/net/analysis.h"
 #include "gdpn/net/builder.h"
+#include "gdpn/net/compile.h"
+#include "gdpn/net/pnml.h"
+#include "gdpn/net/state_equation.h"
 #include "support/conformance.h"
 
 namespace gdpn::net {
@@ -309,6 +313,88 @@ TEST(InvariantLimits, ASmallRingOfChoicesHasOneTInvariantPerWayRound) {
   EXPECT_EQ(inv.t.size(), 64u);
   EXPECT_EQ(inv.p.size(), 1u);
   for (const auto& x : inv.t) EXPECT_TRUE(isTInvariant(*diamonds(6), x));
+}
+
+TEST(InvariantLimits, ACutTListLeavesThePListWholeAndTheYesOrNoAnswersToALinearProgram) {
+  // 2^40 minimal T-invariants: their list is cut; the one P-invariant is whole, and every
+  // transition lies on a way round, which the program says though the list cannot
+  const auto net = diamonds(40);
+  const Invariants inv = invariants(*net);
+  EXPECT_FALSE(inv.complete);
+  EXPECT_EQ(inv.stop, ExploreStop::Candidates);
+  EXPECT_TRUE(inv.p_complete);
+  EXPECT_FALSE(inv.t_complete);
+  EXPECT_EQ(inv.p.size(), 1u);
+  EXPECT_TRUE(inv.conservative);
+  EXPECT_TRUE(inv.structurally_bounded);
+  EXPECT_TRUE(inv.consistent);
+  // a transition off every way round: the program says no
+  NetBuilder b;
+  const auto p = b.addPlace("p");
+  b.setSlot(p, kDefaultSlot, SlotKind::Control, kUnbounded, 1);
+  const auto q = b.addPlace("q");
+  const auto t = b.addTransition("t");
+  b.addInput(p, t);
+  b.addOutput(t, q);
+  const auto back = b.addTransition("back");
+  b.addInput(q, back);
+  b.addOutput(back, p);
+  const auto drain = b.addTransition("drain");
+  b.addInput(q, drain);
+  const auto small = b.freeze();
+  EXPECT_FALSE(*positiveSolution({{{0, -1}, {1, 1}}, {{0, 1}, {1, -1}}, {{1, -1}}}, 2, true));  // t, back, drain
+  EXPECT_TRUE(*positiveSolution({{{0, -1}, {1, 1}}, {{0, 1}, {1, -1}}}, 2, true));              // t, back
+  EXPECT_FALSE(invariants(*small).consistent);
+}
+
+TEST(InvariantLimits, AContestNetThatIsBoundedButNotStructurallyBoundedIsAnsweredWhole) {
+  // DoubleExponent-PT-003 (tests/data/bench-nets): the semiflows of y·C <= 0 explode; the
+  // invariants phase used to stop there. Its 17 minimal P-invariants and no T-invariant are
+  // listed whole, and the program says it is not structurally bounded.
+  core::Diagnostics diags;
+  const auto spec = loadPnml(std::string(GDPN_SOURCE_DIR) + "/tests/data/bench-nets/DoubleExponent-PT-003.pnml", diags);
+  ASSERT_TRUE(spec) << diags.str();
+  const auto net = compile(*spec, diags);
+  ASSERT_TRUE(net) << diags.str();
+  const Invariants inv = invariants(*net);
+  EXPECT_TRUE(inv.complete);
+  EXPECT_TRUE(inv.p_complete);
+  EXPECT_TRUE(inv.t_complete);
+  EXPECT_EQ(inv.p.size(), 17u);
+  EXPECT_TRUE(inv.t.empty());
+  EXPECT_FALSE(inv.conservative);
+  EXPECT_FALSE(inv.structurally_bounded);
+  EXPECT_FALSE(inv.consistent);
+  // a second computation: every place on its own row, no slots, no parts alike solved once
+  const Incidence c = incidenceMatrix(*net);
+  std::vector<std::vector<std::pair<std::uint32_t, std::int64_t>>> rows;
+  for (const auto& row : c.by_place) {
+    rows.emplace_back();
+    for (const auto& [t, v] : row) rows.back().emplace_back(static_cast<std::uint32_t>(t), v);
+  }
+  InvariantOptions once;
+  once.reuse_alike = false;
+  ExploreStop stop = ExploreStop::Done;
+  auto again = semiflowsOf(rows, net->transitions().size(), once, &stop);
+  EXPECT_EQ(stop, ExploreStop::Done);
+  auto sorted = [](std::vector<Invariant> v) {
+    std::sort(v.begin(), v.end(), [](const Invariant& x, const Invariant& y) { return x.weights < y.weights; });
+    return v;
+  };
+  const auto a = sorted(inv.p), b = sorted(again);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i].weights, b[i].weights) << i;
+  // each an invariant, none's support within another's
+  for (const auto& y : inv.p) EXPECT_TRUE(isPInvariant(*net, y));
+  for (const auto& x : inv.p) {
+    for (const auto& y : inv.p) {
+      if (&x == &y) continue;
+      const bool within = std::all_of(x.weights.begin(), x.weights.end(), [&](const auto& e) {
+        return std::any_of(y.weights.begin(), y.weights.end(), [&](const auto& f) { return f.first == e.first; });
+      });
+      EXPECT_FALSE(within) << "a dominated invariant";
+    }
+  }
 }
 
 TEST(InvariantLimits, AnExplodingComputationStopsAtItsDeadlineAndSaysSo) {

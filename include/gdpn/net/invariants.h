@@ -50,12 +50,15 @@ struct InvariantOptions {
 /// What the incidence matrix says.
 struct Invariants {
   bool complete = true;                ///< false when a limit or 64-bit overflow stopped it
+  bool p_complete = true;              ///< the P-invariants listed are all of them
+  bool t_complete = true;              ///< the T-invariants listed are all of them
   ExploreStop stop = ExploreStop::Done;  ///< why it stopped (Candidates, MaxMemory, TimeLimit, Overflow)
   std::vector<Invariant> p;            ///< minimal semi-positive P-invariants: y·C = 0
   std::vector<Invariant> t;            ///< minimal semi-positive T-invariants: C·x = 0
-  bool conservative = false;           ///< some y > 0 on every place slot has y·C = 0
-  bool structurally_bounded = false;   ///< some y > 0 on every place slot has y·C <= 0
-  bool consistent = false;             ///< some x > 0 on every transition has C·x = 0
+  /// some y > 0 on every place slot has y·C = 0 (from the list, or a linear program where it was cut)
+  bool conservative = false;
+  bool structurally_bounded = false;   ///< some y > 0 on every place slot has y·C <= 0 (likewise)
+  bool consistent = false;             ///< some x > 0 on every transition has C·x = 0 (likewise)
   std::vector<std::int64_t> bound;     ///< per place slot: a bound from the invariants, -1 when none
 };
 

@@ -7,6 +7,7 @@
 /// true one; where the invariants were cut short it still bounds what they could not.
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -30,5 +31,13 @@ std::vector<std::int64_t> stateEquationBounds(const Net& net, const std::vector<
 /// and each disjunct tried as a linear program (GLPK). False when one may hold, or when the
 /// form grows past 256 disjuncts (`deadlock` in a net of many transitions).
 bool stateEquationExcludes(const Net& net, const Formula& f);
+
+/// Whether some x >= 1 (every entry) has x·A = 0 (`equality`) or x·A <= 0, for the sparse
+/// integer matrix A given by its rows (each (column, value) pairs, columns below `columns`):
+/// one linear program (GLPK), feasible or not. It answers what a listing of minimal semiflows
+/// answers by covering (conservative, structurally bounded, consistent) where the listing was
+/// cut short. Nullopt when GLPK fails.
+std::optional<bool> positiveSolution(const std::vector<std::vector<std::pair<std::uint32_t, std::int64_t>>>& rows,
+                                     std::size_t columns, bool equality);
 
 }  // namespace gdpn::net
