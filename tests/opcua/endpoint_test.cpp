@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <tuple>
 
 #include "gdpn/opcua/endpoint.h"
 #include "gdpn/opcua/status.h"
@@ -131,25 +132,30 @@ class TestClient {
     send(openChannel(1));
     received_ += ep_.takeOutput(id_);
     if (received_.substr(0, 4) != "OPNF") return 0;
+    const auto [channel, token] = openAnswer();
+    (void)channel;
+    received_.clear();
+    return token;
+  }
+  /// The channel and token an OpenSecureChannel answer (first in what was received) gives.
+  std::pair<std::uint32_t, std::uint32_t> openAnswer() {
     Decoder d(std::string_view(received_).substr(8));
-    (void)d.u32();
+    const std::uint32_t channel = d.u32();
     (void)d.string();
     (void)d.string();
     (void)d.string();
     (void)d.u32();
     (void)d.u32();
-    (void)d.nodeId();
+    EXPECT_EQ(d.nodeId(), NodeId::num(449));
     (void)d.i64();
     (void)d.u32();
-    (void)d.u32();
+    EXPECT_EQ(d.u32(), 0u);
     d.skipDiagnosticInfo();
     (void)d.strings();
     (void)d.extensionObject();
     (void)d.u32();
-    (void)d.u32();
-    const std::uint32_t token = d.u32();
-    received_.clear();
-    return token;
+    EXPECT_EQ(d.u32(), channel);
+    return {channel, d.u32()};
   }
   void useToken(std::uint32_t token) { token_id_ = token; }
   [[nodiscard]] std::uint32_t token() const { return token_id_; }
@@ -173,23 +179,7 @@ class TestClient {
     received_.clear();
     ASSERT_TRUE(send(openChannel()));
     ASSERT_EQ(received_.substr(0, 4), "OPNF");
-    Decoder d(std::string_view(received_).substr(8));
-    channel_ = d.u32();
-    (void)d.string();
-    (void)d.string();
-    (void)d.string();
-    (void)d.u32();
-    (void)d.u32();
-    EXPECT_EQ(d.nodeId(), NodeId::num(449));
-    (void)d.i64();
-    (void)d.u32();
-    EXPECT_EQ(d.u32(), 0u);
-    d.skipDiagnosticInfo();
-    (void)d.strings();
-    (void)d.extensionObject();
-    (void)d.u32();
-    EXPECT_EQ(d.u32(), channel_);
-    token_id_ = d.u32();
+    std::tie(channel_, token_id_) = openAnswer();
     received_.clear();
   }
   /// The replies received so far, taken.
