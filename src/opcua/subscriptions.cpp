@@ -27,6 +27,16 @@ struct ItemRequest {
   bool discard_oldest = true;
 };
 
+/// The parameters a client asked for, revised into `item`: the sampling interval (ms of model
+/// time; -1 or none: the subscription's interval; at most an hour), the queue size (1 to `most`).
+void revise(MonitoredItem& item, const ItemRequest& p, const Subscription& sub, std::uint32_t timestamps, std::size_t most) {
+  item.client_handle = p.client_handle;
+  item.timestamps = timestamps;
+  item.sampling = p.sampling < 0 || !std::isfinite(p.sampling) ? sub.interval : std::min(p.sampling, kMaxInterval);
+  item.queue_size = std::clamp<std::size_t>(p.queue_size, 1, most);
+  item.discard_oldest = p.discard_oldest;
+}
+
 ItemRequest readParameters(Decoder& d) {
   ItemRequest p;
   p.client_handle = d.u32();
@@ -198,11 +208,7 @@ void EndpointState::createItems(const Pending& to, Session& s, Decoder& d) {
       continue;
     }
     item.id = next_item++;
-    item.client_handle = p.client_handle;
-    item.timestamps = timestamps;
-    item.sampling = p.sampling < 0 || !std::isfinite(p.sampling) ? sub->interval : std::min(p.sampling, kMaxInterval);
-    item.queue_size = std::clamp<std::size_t>(p.queue_size, 1, limits.queue_size);
-    item.discard_oldest = p.discard_oldest;
+    revise(item, p, *sub, timestamps, limits.queue_size);
     e.u32(0);
     e.u32(item.id);
     e.f64(item.sampling);
@@ -224,6 +230,7 @@ void EndpointState::modifyItems(const Pending& to, Session& s, Decoder& d) {
   if (!sub) return fault(to, status::kBadSubscriptionIdInvalid);
   if (timestamps > 3) return fault(to, status::kBadTimestampsToReturnInvalid);
   if (n == 0) return fault(to, status::kBadNothingToDo);
+  if (n > limits.nodes_per_request) return fault(to, status::kBadTooManyOperations);
   std::string out = responseHeader(to.handle);
   Encoder e(out);
   e.length(n);
@@ -236,11 +243,7 @@ void EndpointState::modifyItems(const Pending& to, Session& s, Decoder& d) {
       MonitoredItem trial = it->second;
       r = applyFilter(space, trial, p.filter);
       if (r == 0) {
-        trial.client_handle = p.client_handle;
-        trial.timestamps = timestamps;
-        trial.sampling = p.sampling < 0 || !std::isfinite(p.sampling) ? sub->interval : std::min(p.sampling, kMaxInterval);
-        trial.queue_size = std::clamp<std::size_t>(p.queue_size, 1, limits.queue_size);
-        trial.discard_oldest = p.discard_oldest;
+        revise(trial, p, *sub, timestamps, limits.queue_size);
         while (trial.queue.size() > trial.queue_size) trial.queue.pop_front();
         it->second = std::move(trial);
       }

@@ -289,6 +289,17 @@ class TestClient {
   NodeId token_;
 };
 
+/// The test space served, and one client connected with an activated session.
+struct Connected {
+  Space s;
+  Endpoint ep{s.space, "opc.tcp://127.0.0.1:4840"};
+  TestClient c{ep};
+  Connected() {
+    c.connect();
+    EXPECT_EQ(c.session(), 0u);
+  }
+};
+
 TEST(OpcuaEndpoint, ConnectsReadsAndWritesWithTheRightStatusCodes) {
   Space s;
   Endpoint ep(s.space, "opc.tcp://127.0.0.1:4840");
@@ -323,11 +334,8 @@ TEST(OpcuaEndpoint, ConnectsReadsAndWritesWithTheRightStatusCodes) {
 }
 
 TEST(OpcuaEndpoint, BrowsesWithContinuationPointsAndTranslatesPaths) {
-  Space s;
-  Endpoint ep(s.space, "opc.tcp://127.0.0.1:4840");
-  TestClient c(ep);
-  c.connect();
-  ASSERT_EQ(c.session(), 0u);
+  Connected served;
+  auto& [s, ep, c] = served;
   std::string f;
   Encoder e(f);
   e.nodeId({});
@@ -405,11 +413,8 @@ TEST(OpcuaEndpoint, BrowsesWithContinuationPointsAndTranslatesPaths) {
 }
 
 TEST(OpcuaEndpoint, StepCallsAreAnsweredOnceTheRunHasTakenTheirSteps) {
-  Space s;
-  Endpoint ep(s.space, "opc.tcp://127.0.0.1:4840");
-  TestClient c(ep);
-  c.connect();
-  ASSERT_EQ(c.session(), 0u);
+  Connected served;
+  auto& [s, ep, c] = served;
   auto step = [](std::uint32_t n) {
     std::string f;
     Encoder e(f);
@@ -453,11 +458,8 @@ TEST(OpcuaEndpoint, StepCallsAreAnsweredOnceTheRunHasTakenTheirSteps) {
 }
 
 TEST(OpcuaEndpoint, SubscriptionsSampleAtStepBoundariesThroughTheDeadband) {
-  Space s;
-  Endpoint ep(s.space, "opc.tcp://127.0.0.1:4840");
-  TestClient c(ep);
-  c.connect();
-  ASSERT_EQ(c.session(), 0u);
+  Connected served;
+  auto& [s, ep, c] = served;
   std::string f;
   Encoder e(f);
   e.f64(10);
@@ -577,11 +579,8 @@ TEST(OpcuaEndpoint, MalformedStreamsCloseTheirConnectionOnly) {
 }
 
 TEST(OpcuaEndpoint, ARenewedTokenAndTheOldOneServeUntilTheNewOneIsUsed) {
-  Space s;
-  Endpoint ep(s.space, "opc.tcp://127.0.0.1:4840");
-  TestClient c(ep);
-  c.connect();
-  ASSERT_EQ(c.session(), 0u);
+  Connected served;
+  auto& [s, ep, c] = served;
   const std::uint32_t old_token = c.token();
   const std::uint32_t new_token = c.renew();
   ASSERT_NE(new_token, 0u);
@@ -597,11 +596,8 @@ TEST(OpcuaEndpoint, ARenewedTokenAndTheOldOneServeUntilTheNewOneIsUsed) {
 }
 
 TEST(OpcuaEndpoint, AnExpiredSubscriptionSaysSoInTheNextPublish) {
-  Space s;
-  Endpoint ep(s.space, "opc.tcp://127.0.0.1:4840");
-  TestClient c(ep);
-  c.connect();
-  ASSERT_EQ(c.session(), 0u);
+  Connected served;
+  auto& [s, ep, c] = served;
   std::string f;
   Encoder e(f);
   e.f64(10);   // 10 ms
@@ -646,11 +642,8 @@ TEST(OpcuaEndpoint, AnExpiredSubscriptionSaysSoInTheNextPublish) {
 }
 
 TEST(OpcuaEndpoint, WorkARequestCanAskForIsBounded) {
-  Space s;
-  Endpoint ep(s.space, "opc.tcp://127.0.0.1:4840");
-  TestClient c(ep);
-  c.connect();
-  ASSERT_EQ(c.session(), 0u);
+  Connected served;
+  auto& [s, ep, c] = served;
   // a relative path of 33 elements
   std::string t;
   Encoder te(t);
