@@ -61,6 +61,7 @@ class Search {
     /// A bit per transition: enabled in the state (where the net has at most
     /// kEnabledSetTransitions; the successors then come in the transitions' order).
     std::vector<std::uint64_t> enabled;
+    std::int64_t total = 0;  ///< the tokens of the state whose successors they are
     StateId state = kNone;   ///< whose (kNone: none made ahead)
     std::size_t index = 0;   ///< made ahead: of the successor `index` of the state expanded before
   };
@@ -146,9 +147,10 @@ class Search {
   /// The bits of each word that hold slots never accelerated, for the current layout; and
   /// the path's hashes again after the layout changed.
   void boundedParts();
-  /// Notes the new state `s`, reached from `from` by `t` (from == s: the initial state);
-  /// `accelerated`: its marking is not the firing's but got ω.
-  void noteNew(StateId s, StateId from, TransitionId t, bool accelerated);
+  /// Notes the new state of packed marking `m`, reached by `t` from a marking of `from`
+  /// tokens (kUnknownTotal: the initial state); `accelerated`: `m` is not the firing's but
+  /// got ω.
+  void noteNew(const std::uint64_t* m, std::int64_t from, TransitionId t, bool accelerated);
   void finishComponent(StateId v);
   /// A shortest firing sequence to a dead state: breadth first over the states stored,
   /// ending at the first dead one it generates.
@@ -202,10 +204,9 @@ class Search {
 
   // per state
   // a state's index (Pearce's rindex) lies beside its marking in the store: read once per edge
-  // (the upper half holds the marking's tokens, kUnknownTotal when not kept)
-  std::uint32_t rindex(StateId s) const { return static_cast<std::uint32_t>(store_->extra(s)); }
-  void setRindex(StateId s, std::uint32_t v) { store_->extra(s) = (store_->extra(s) & ~std::uint64_t{0xffffffffu}) | v; }
-  static constexpr std::uint64_t kUnknownTotal = 0xffffffffu;
+  std::uint32_t rindex(StateId s) const { return store_->index(s); }
+  void setRindex(StateId s, std::uint32_t v) { store_->setIndex(s, v); }
+  static constexpr std::int64_t kUnknownTotal = -1;
   std::vector<std::int64_t> token_delta_;  // per transition: tokens it adds minus tokens it takes
   std::vector<bool> leaves_;
   std::vector<std::uint64_t> visited_;  // a bit per state: visited
@@ -221,6 +222,7 @@ class Search {
   // while the first wait on the memory
   Successors now_, ahead_;
   std::vector<TransitionId> candidates_now_;
+  std::vector<std::uint64_t> loaded_;  // a stored marking, read back
   std::vector<std::int64_t> unpacked_;
   std::vector<bool> union_;
   // answers
@@ -369,6 +371,7 @@ bool Search::accelerate(std::uint64_t* key) {
 }
 
 Search::Expand Search::successors(const std::uint64_t* m, Successors& out) {
+  out.total = store_->layout().tokens(m);
   candidates_.find(m, firing_, candidates_now_);
   if (enabled_sets_) {
     out.enabled.assign((net_.transitions().size() + 63) / 64, 0);
@@ -409,6 +412,7 @@ Search::Expand Search::reset(Successors& out, std::size_t n) {
 Search::Expand Search::successorsAfter(const Successors& parent, std::size_t i, Successors& out) {
   const std::uint64_t* m = parent.keys.data() + i * store_->layout().words();
   if (!enabled_sets_) return successors(m, out);
+  out.total = parent.total + token_delta_[parent.t[i]];
   out.enabled = parent.enabled;
   for (const TransitionId u : affected_.of(parent.t[i])) {
     const std::uint64_t bit = std::uint64_t{1} << (u & 63);
@@ -442,7 +446,7 @@ Search::Expand Search::expand(StateId v) {
   const std::size_t words = store_->layout().words();
   if (ahead_.state == v) {
     std::swap(now_, ahead_);
-  } else if (const Expand e = successors(store_->at(v), now_); e != Expand::Ok) {
+  } else if (const Expand e = successors(store_->load(v, loaded_), now_); e != Expand::Ok) {
     return e;
   }
   ahead_.state = kNone;
@@ -476,7 +480,7 @@ Search::Expand Search::expand(StateId v) {
     auto key = [&](std::size_t i) { return now_.keys.data() + i * words; };
     auto hash = [&](std::size_t i) { return now_.hashes[i]; };
     const std::size_t table = store_->growthInserting(via.size(), key, hash);
-    const std::size_t marking = store_->stride() * sizeof(std::uint64_t);
+    const std::size_t marking = store_->stateBytes();
     const std::uint64_t held = bytes() + table;
     std::size_t fresh = via.size();
     if (held + fresh * marking > options_.max_bytes) {
@@ -494,7 +498,7 @@ Search::Expand Search::expand(StateId v) {
     if (accelerated) h = store_->hash(key);
     bool added = false;
     const StateId w = store_->insert(key, h, now_.peeked[i], added);
-    if (added) noteNew(w, v, via[i], accelerated);
+    if (added) noteNew(key, now_.total, via[i], accelerated);
     if (i == ahead_.index) ahead_.state = w;
     fired_[via[i]] = true;
     // an edge to a state already visited is settled now; the others wait in edges_
@@ -524,27 +528,22 @@ Search::Expand Search::expand(StateId v) {
   return Expand::Ok;
 }
 
-void Search::noteNew(StateId s, StateId from, TransitionId t, bool accelerated) {
-  // the tokens in a marking lie beside it (the upper half of its extra word), so that a
-  // successor's are its parent's and what the transition changes, and only the slots it
-  // touches need noting; where acceleration, ω on a slot it touches or a large count stands
-  // in the way, every slot (the tokens counted leave out ω)
+void Search::noteNew(const std::uint64_t* m, std::int64_t from, TransitionId t, bool accelerated) {
+  // a successor's tokens are its parent's and what the transition changes, and only the
+  // slots it touches need noting; where acceleration, ω on a slot it touches or a large count
+  // stands in the way, every slot (the tokens counted leave out ω)
   const Layout& L = store_->layout();
-  const std::uint64_t parent = store_->extra(from) >> 32;
   auto touchesOmega = [&] {
     for (const Term& term : net_.termsOf(t)) {
-      if ((term.kind == TermKind::Input || term.kind == TermKind::Output) && L.value(store_->at(s), term.place_slot) == kW) return true;
+      if ((term.kind == TermKind::Input || term.kind == TermKind::Output) && L.value(m, term.place_slot) == kW) return true;
     }
     return false;
   };
-  std::int64_t total = 0;
-  if (from != s && parent != kUnknownTotal && !accelerated && !(cover_ && touchesOmega())) {
-    total = static_cast<std::int64_t>(parent) + token_delta_[t];
-    seen_->noteChange(L, store_->at(s), net_.termsOf(t), total);
+  if (from != kUnknownTotal && !accelerated && !(cover_ && touchesOmega())) {
+    seen_->noteChange(L, m, net_.termsOf(t), from + token_delta_[t]);
   } else {
-    total = seen_->note(L, store_->at(s));
+    seen_->note(L, m);
   }
-  store_->extra(s) = static_cast<std::uint64_t>(std::min<std::int64_t>(total, kUnknownTotal)) << 32;
   leaves_.push_back(false);
 }
 
@@ -567,7 +566,7 @@ void Search::finishComponent(StateId v) {
       // the transitions fired inside are all those fired
       live_ = std::all_of(fired_.begin(), fired_.end(), [](bool f) { return f; });
     } else if (live_) {
-      auto marking = [&](std::size_t i) { return store_->at(i == 0 ? v : stack_[first + i - 1]); };
+      auto marking = [&](std::size_t i) { return store_->load(i == 0 ? v : stack_[first + i - 1], loaded_); };
       live_ = enablesAll(firing_, candidates_, net_.transitions().size(), size - first + 1, marking, union_, candidates_now_);
     }
   }
@@ -590,12 +589,13 @@ std::vector<TransitionId> Search::firingsAlong(const std::vector<StateId>& path)
   std::unordered_map<StateId, std::size_t> position;
   for (std::size_t i = 0; i < path.size(); ++i) position.emplace(path[i], i);
   const Layout& L = store_->layout();
-  std::vector<std::uint64_t> next(store_->words());
+  std::vector<std::uint64_t> next(store_->words()), here, there;
   // in a coverability graph a stored successor may be the accelerated form: ω where the
   // firing gave a number
   auto covers = [&](StateId s, const std::uint64_t* m) {
+    const std::uint64_t* stored = store_->load(s, there);
     for (std::size_t k = 0; k < L.width(); ++k) {
-      const std::int64_t v = L.value(store_->at(s), k);
+      const std::int64_t v = L.value(stored, k);
       if (v != kW && v != L.value(m, k)) return false;
     }
     return true;
@@ -603,10 +603,11 @@ std::vector<TransitionId> Search::firingsAlong(const std::vector<StateId>& path)
   for (std::size_t i = 0; i + 1 < path.size();) {
     std::size_t best = i;
     TransitionId via{0};
-    candidates_.find(store_->at(path[i]), firing_, candidates_now_);
+    const std::uint64_t* m = store_->load(path[i], here);
+    candidates_.find(m, firing_, candidates_now_);
     for (TransitionId t : candidates_now_) {
       bool enabled = false;
-      if (fire(t, store_->at(path[i]), next.data(), enabled) != Expand::Ok || !enabled) continue;
+      if (fire(t, m, next.data(), enabled) != Expand::Ok || !enabled) continue;
       const StateId w = store_->find(next.data(), store_->hash(next.data()));
       std::size_t j = i;
       if (w != kNone) {
@@ -643,10 +644,11 @@ void Search::shortestPathToDeadlock(StateSpace& out) {
   if (dead[0]) return;
   for (std::size_t head = 0; head < queue.size(); ++head) {
     const StateId s = queue[head];
-    candidates_.find(store_->at(s), firing_, candidates_now_);
+    const std::uint64_t* m = store_->load(s, loaded_);
+    candidates_.find(m, firing_, candidates_now_);
     for (TransitionId t : candidates_now_) {
       bool enabled = false;
-      fire(t, store_->at(s), next.data(), enabled);
+      fire(t, m, next.data(), enabled);
       if (!enabled) continue;
       // the search stored the accelerated form (against the path it had then: gone now)
       if (cover_ && store_->find(next.data(), store_->hash(next.data())) == kNone) accelerate(next.data());
@@ -678,7 +680,7 @@ StateSpace Search::run() {
   for (std::size_t k = 0; k < accel_.size(); ++k) {
     if (accel_[k]) accel_slots_.push_back(k);
   }
-  store_ = std::make_unique<Store>(Layout::omegaOrBounded(p.bits, p.omega), true);
+  store_ = std::make_unique<Store>(p.layout(), true, p.derived);
   candidates_.use(store_->layout());
   firing_.use(store_->layout());
   if (cover_) boundedParts();
@@ -689,13 +691,13 @@ StateSpace Search::run() {
   fired_.assign(transitions, false);
   bool added = false;
   store_->insert(key.data(), store_->hash(key.data()), added);
-  noteNew(0, 0, TransitionId{0}, false);
+  noteNew(key.data(), kUnknownTotal, TransitionId{0}, false);
 
   auto visit = [&](StateId v) -> bool {
     setRindex(v, next_index_++);
     if ((v >> 6) >= visited_.size()) visited_.resize(std::max<std::size_t>(1024, visited_.size() * 2), 0);
     visited_[v >> 6] |= std::uint64_t{1} << (v & 63);
-    if (cover_) pushPath(store_->at(v));
+    if (cover_) pushPath(store_->load(v, loaded_));
     for (;;) {
       const Expand e = expand(v);
       if (e == Expand::Ok) return true;
@@ -834,6 +836,9 @@ StateSpace race(const Net& net, const ExploreOptions& options, const Plan& p) {
 StateSpace explore(const Net& net, const ExploreOptions& options) {
   const Plan p = plan(net, options);
   if (p.overflow) return overflowAnswer(net);
+  // what reading the net and planning freed goes back to the system: it would otherwise stay
+  // beside what the search holds (a contest net of 10^3 places leaves some 15 MB)
+  core::returnFreedMemory();
   if (options.threads > 1 && net.transitions().size() <= kParallelTransitions) {
     if (!p.cover) return exploreParallel(net, options, p);
     // a limit on memory asked for holds for one search: no race

@@ -37,8 +37,9 @@ ExploreStop writeStateGraph(const Net& net, GraphFormat format, std::ostream& ou
   }
   out << "digraph reachability {\n  node [shape=box, fontname=\"Helvetica\", fontsize=10];\n"
          "  edge [fontname=\"Helvetica\", fontsize=9];\n";
+  std::vector<std::uint64_t> packed;
   for (StateId s = 0; s < g.size(); ++s) {
-    layout.unpack(g.store->at(s), m.data());
+    layout.unpack(g.store->load(s, packed), m.data());
     std::string label;
     for (PlaceId pid{0}; pid < net.places().size(); ++pid) {
       const Place& p = net.places()[pid];

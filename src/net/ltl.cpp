@@ -558,8 +558,9 @@ QueryAnswer answerLtl(const Net& net, const StateGraph& g, const Formula& f, con
   }
   StateCheck check(net, g.store->layout());
   std::vector<std::vector<std::uint8_t>> atom(nnf.atoms.size(), std::vector<std::uint8_t>(g.size()));
+  std::vector<std::uint64_t> m;
   for (std::size_t k = 0; k < nnf.atoms.size(); ++k) {
-    for (StateId s = 0; s < g.size(); ++s) atom[k][s] = check.holds(*nnf.atoms[k], g.store->at(s));
+    for (StateId s = 0; s < g.size(); ++s) atom[k][s] = check.holds(*nnf.atoms[k], g.store->load(s, m));
   }
   out.technique = "EXPLICIT LTL_TABLEAU";
   Product product(g, a, atom, limits);
@@ -572,7 +573,7 @@ QueryAnswer answerLtl(const Net& net, const StateGraph& g, const Formula& f, con
     product.lasso(out.path, out.cycle, at);
     out.lasso = true;
     out.marking.resize(g.store->layout().width());
-    g.store->layout().unpack(g.store->at(at), out.marking.data());
+    g.store->layout().unpack(g.store->load(at, m), out.marking.data());
     out.has_marking = true;
   }
   return out;

@@ -102,7 +102,7 @@ class Parallel {
   Parallel(const Net& net, const ExploreOptions& options, const Plan& plan)
       : net_(net),
         options_(options),
-        layout_(Layout::omegaOrBounded(plan.bits, plan.omega)),
+        layout_(plan.layout()),
         candidates_(net),
         back_(net, Candidates::Way::Backward),
         firing_(net),
@@ -113,7 +113,7 @@ class Parallel {
     back_.use(layout_);
     firing_.use(layout_);
     for (auto& s : shards_) {
-      s.store = std::make_unique<Store>(layout_);
+      s.store = std::make_unique<Store>(layout_, false, plan.derived);
       s.seen = std::make_unique<Observed>(layout_);
       s.fired.assign(net.transitions().size(), false);
     }
@@ -200,7 +200,7 @@ class Parallel {
     if (added && (id & ((1u << kInBlockBits) - 1)) == 0) s.into_blocks.push_back(0);
     ++s.into_blocks[id >> kInBlockBits];
     if (added) {
-      s.seen->note(layout_, s.store->at(id));
+      s.seen->note(layout_, key);
       s.work.push_back(id);
       ++s.fresh;
     }
@@ -250,6 +250,7 @@ class Parallel {
     std::vector<std::uint32_t> own;  // the successors this thread owns, by index
     std::vector<std::uint32_t*> slots;
     std::vector<TransitionId> candidates;
+    std::vector<std::uint64_t> expanded;  // the marking of the state expanded
     // the successors' markings on their way, for the limit on memory
     auto buffered = [&] {
       std::size_t words_held = batch.capacity() + keys.capacity();
@@ -307,7 +308,7 @@ class Parallel {
         for (std::size_t b = 0; b < kBatchStates && made < kBatchSuccessors && !s.work.empty(); ++b) {
           const StateId v = s.work.back();
           s.work.pop_back();
-          const std::uint64_t* m = s.store->at(v);
+          const std::uint64_t* m = s.store->load(v, expanded);
           candidates_.find(m, firing_, candidates);
           // room for its successors, and for their copies on the way to their owners (their
           // stores look before they grow), that would pass the limit stops the search first:
@@ -437,7 +438,7 @@ class Parallel {
     if (options_.max_bytes == 0) return 0;
     Shard& s = shards_[me];
     const std::uint64_t growth = s.store->growthInserting(n, key, hash);
-    const std::uint64_t markings = n * s.store->stride() * sizeof(std::uint64_t);
+    const std::uint64_t markings = n * s.store->stateBytes();
     const std::uint64_t want = growth + (markings >= kManySuccessorBytes ? markings : 0);
     const std::uint64_t counted = want + (markings >= kManySuccessorBytes ? 0 : markings);
     if (want == 0) {
@@ -488,7 +489,10 @@ class Parallel {
     const Shard& s = shardOf(g);
     return runAt(s, s.first[localOf(g)]);
   }
-  const std::uint64_t* marking(std::uint32_t g) const { return shardOf(g).store->at(localOf(g)); }
+  /// State g's packed marking, read into `buffer`.
+  const std::uint64_t* marking(std::uint32_t g, std::vector<std::uint64_t>& buffer) const {
+    return shardOf(g).store->load(localOf(g), buffer);
+  }
 
   /// Frees the tables: what follows reads the markings by id and the graph, never looks a
   /// marking up (the tables are a third of what the shards hold).
@@ -544,6 +548,7 @@ class Parallel {
     bool live = true, root_bottom = false;
     std::vector<bool> fires(transitions);
     std::vector<TransitionId> candidates;
+    std::vector<std::uint64_t> loaded;  // a state's marking, read back
     auto visit = [&](std::uint32_t v) {
       rindex[v] = index++;
       const Run r = runOf(v);
@@ -574,7 +579,7 @@ class Parallel {
         if (!leaving) {
           ++bottoms;
           if (live) {
-            auto at = [&](std::size_t i) { return marking(i == 0 ? v : stack[first + i - 1]); };
+            auto at = [&](std::size_t i) { return marking(i == 0 ? v : stack[first + i - 1], loaded); };
             live = enablesAll(firing_, candidates_, transitions, stack.size() - first + 1, at, fires, candidates);
           }
         }
@@ -623,6 +628,7 @@ class Parallel {
     const std::size_t transitions = net_.transitions().size();
     std::vector<bool> fires(transitions, false);
     std::vector<TransitionId> candidates;
+    std::vector<std::uint64_t> loaded;  // a state's marking, read back
     std::vector<std::uint64_t> seen((ids + 63) / 64, 0);
     std::vector<std::uint32_t> queue{v};
     set(seen, v);
@@ -630,7 +636,7 @@ class Parallel {
     auto held = [&] { peak_ = std::max(peak_, bytes() + seen.size() * 8 + reach.size() * 8 + queue.capacity() * 4); };
     for (std::size_t head = 0; head < queue.size(); ++head) {
       const std::uint32_t w = queue[head];
-      fire += markEnabled(firing_, candidates_, marking(w), fires, candidates);
+      fire += markEnabled(firing_, candidates_, marking(w, loaded), fires, candidates);
       if (fire == transitions) {
         held();
         return false;
@@ -888,6 +894,7 @@ class Parallel {
     std::vector<std::uint64_t> keys;    // the predecessors of its block, to look up
     std::vector<std::uint64_t> hashes;
     std::vector<TransitionId> candidates;
+    std::vector<std::uint64_t> loaded;  // a state's marking, read back
   };
   /// Marks in `reach`, breadth first and a level at a time, states with a path to one in
   /// `level` (marked already), until none is left or, after a level, more than `until` are
@@ -933,7 +940,7 @@ class Parallel {
     my.keys.clear();
     my.hashes.clear();
     for (std::size_t i = begin; i < end; ++i) {
-      const std::uint64_t* m = marking(level[i]);
+      const std::uint64_t* m = marking(level[i], my.loaded);
       back_.findBackward(m, my.candidates);
       for (const TransitionId t : my.candidates) {
         const std::size_t at = my.keys.size();
@@ -959,6 +966,7 @@ class Parallel {
     std::vector<std::uint32_t> parent(ids, 0xffffffffu);
     std::vector<std::uint32_t> via(ids, 0), queue{s0};
     std::vector<TransitionId> candidates;
+    std::vector<std::uint64_t> loaded;  // a state's marking, read back
     parent[s0] = s0;
     peak_ = std::max(peak_, bytes() + ids * 2 * sizeof(std::uint32_t));
     for (std::size_t head = 0; head < queue.size(); ++head) {
@@ -968,9 +976,10 @@ class Parallel {
         for (std::uint32_t x = v; x != s0; x = parent[x]) {
           // the k-th successor comes from the k-th enabled transition
           std::uint32_t k = via[x];
-          candidates_.find(marking(parent[x]), firing_, candidates);
+          const std::uint64_t* m = marking(parent[x], loaded);
+          candidates_.find(m, firing_, candidates);
           for (TransitionId t : candidates) {
-            if (!firing_.enabled(t, marking(parent[x]))) continue;
+            if (!firing_.enabled(t, m)) continue;
             if (k-- == 0) {
               out.deadlock_path.push_back(t);
               break;

@@ -47,12 +47,13 @@ Reach reach(const Net& net, const Formula& target, const ExploreOptions& limits)
   std::vector<TransitionId> chosen;
   std::vector<StateId> parent{0};
   std::vector<TransitionId> via{TransitionId{0}};  // one entry (a bare {0} would be the size)
+  std::vector<std::uint64_t> marking, expanded;
   auto found = [&](StateId s) {
-    if (!states.check().holds(target, store.at(s))) return false;
+    if (!states.check().holds(target, store.load(s, marking))) return false;
     out.found = true;
     for (StateId x = s; x != 0; x = parent[x]) out.path.push_back(via[x]);
     std::reverse(out.path.begin(), out.path.end());
-    out.marking = unpacked(store.layout(), store.at(s));
+    out.marking = unpacked(store.layout(), marking.data());
     return true;
   };
   if (found(0)) {
@@ -72,7 +73,7 @@ Reach reach(const Net& net, const Formula& target, const ExploreOptions& limits)
     };
     bool fits = true;
     if (stubborn) {
-      stubborn->select(target, store.at(s), states.check(), chosen);
+      stubborn->select(target, store.load(s, expanded), states.check(), chosen);
       fits = states.fire(s, chosen, each);
     } else {
       fits = states.successors(s, each);

@@ -98,7 +98,8 @@ class Checker {
       case FormulaKind::True:
       case FormulaKind::Until: {
         Set x(n);
-        for (StateId s = 0; s < n; ++s) x[s] = check_.holds(f, g_.store->at(s));
+        std::vector<std::uint64_t> m;
+        for (StateId s = 0; s < n; ++s) x[s] = check_.holds(f, g_.store->load(s, m));
         return x;
       }
     }
@@ -233,7 +234,8 @@ bool shortestPath(const StateGraph& g, const Set& target, QueryAnswer& a) {
       for (StateId x = s; x != 0; x = parent[x]) a.path.push_back(g.via[edge[x]]);
       std::reverse(a.path.begin(), a.path.end());
       a.marking.resize(g.store->layout().width());
-      g.store->layout().unpack(g.store->at(s), a.marking.data());
+      std::vector<std::uint64_t> m;
+      g.store->layout().unpack(g.store->load(s, m), a.marking.data());
       a.has_marking = true;
       return true;
     }
@@ -258,7 +260,8 @@ QueryAnswer answerOnGraph(const Net& net, const StateGraph& g, const Formula& f,
     // the most tokens, and a shortest way to a marking that holds them
     StateCheck check(net, g.store->layout());
     std::vector<std::int64_t> sums(g.size());
-    for (StateId s = 0; s < g.size(); ++s) sums[s] = check.sum(f.left, g.store->at(s));
+    std::vector<std::uint64_t> m;
+    for (StateId s = 0; s < g.size(); ++s) sums[s] = check.sum(f.left, g.store->load(s, m));
     const std::int64_t most = *std::max_element(sums.begin(), sums.end());
     Set at(g.size());
     for (StateId s = 0; s < g.size(); ++s) at[s] = sums[s] == most;

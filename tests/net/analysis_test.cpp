@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <functional>
 #include <random>
+#include <set>
 #include <fstream>
 #include <sstream>
 
@@ -1082,6 +1083,80 @@ TEST(Analysis, LimitsStopCleanlyWithAPartialAnswer) {
   EXPECT_FALSE(m.decided);
   EXPECT_EQ(calls, 0u);
   EXPECT_EQ(m.states, 1u);
+}
+
+TEST(MarkingStore, AStoreThatLeavesOutTheSlotsTheInvariantsGiveReadsEveryMarkingBackWhole) {
+  // three processes share a lock and three credits that a round of theirs spends and a
+  // refill gives back three at a time: each process's two places, the lock with the critical
+  // sections, and the credits with what is spent and the critical sections are invariants, so
+  // five of the nine slots are worked out from the others (the idle places and the lock from
+  // the critical sections, the credits from those and the two-bit count of what is spent). Every marking a breadth-first walk meets is
+  // read back whole, and the walk meets the same markings as one over the plain layout
+  NetBuilder b;
+  auto place = [&](const std::string& name, std::int64_t tokens) {
+    const PlaceId at = b.addPlace(name);
+    b.setSlot(at, kDefaultSlot, SlotKind::Control, kUnbounded, tokens);
+    return at;
+  };
+  const auto lock = place("lock", 1), credit = place("credit", 3), spent = place("spent", 0);
+  for (int i = 0; i < 3; ++i) {
+    const auto idle = place("idle" + std::to_string(i), 1), cs = place("cs" + std::to_string(i), 0);
+    const auto enter = b.addTransition("enter" + std::to_string(i)), leave = b.addTransition("leave" + std::to_string(i));
+    b.addInput(idle, enter);
+    b.addInput(lock, enter);
+    b.addInput(credit, enter);
+    b.addOutput(enter, cs);
+    b.addInput(cs, leave);
+    b.addOutput(leave, idle);
+    b.addOutput(leave, lock);
+    b.addOutput(leave, spent);
+  }
+  const auto refill = b.addTransition("refill");
+  b.addInput(spent, refill, kDefaultSlot, 3);
+  b.addOutput(refill, credit, kDefaultSlot, 3);
+  const auto net = b.freeze();
+  const detail::Plan p = detail::plan(*net, {});
+  ASSERT_EQ(p.derived.size(), 5u);
+  auto walk = [&](const detail::Layout& layout, const std::vector<detail::Derived>& derived) {
+    detail::Store store(layout, true, derived);
+    detail::Candidates candidates(*net);
+    detail::Firing firing(*net);
+    candidates.use(layout);
+    firing.use(layout);
+    std::vector<std::vector<std::uint64_t>> packed(1, std::vector<std::uint64_t>(layout.words()));
+    std::size_t bad = 0;
+    layout.pack(p.m0.data(), packed[0].data(), bad);
+    bool added = false;
+    store.insert(packed[0].data(), store.hash(packed[0].data()), added);
+    std::set<std::vector<std::int64_t>> met;
+    std::vector<std::uint64_t> m, next(layout.words());
+    std::vector<TransitionId> found;
+    for (detail::StateId s = 0; s < store.size(); ++s) {
+      store.load(s, m);
+      EXPECT_EQ(m, packed[s]) << s;
+      EXPECT_EQ(store.index(s), 0u);
+      store.setIndex(s, s + 7);
+      std::vector<std::int64_t> counts(layout.width());
+      layout.unpack(m.data(), counts.data());
+      met.insert(counts);
+      candidates.find(m.data(), firing, found);
+      for (const TransitionId t : found) {
+        std::size_t field = 0;
+        if (firing.fire(t, m.data(), next.data(), field) != detail::Fired::Ok) continue;
+        if (store.insert(next.data(), store.hash(next.data()), added) == store.size() - 1 && added) packed.push_back(next);
+      }
+    }
+    for (detail::StateId s = 0; s < store.size(); ++s) EXPECT_EQ(store.index(s), s + 7);
+    return std::pair{met, store.stateBytes()};
+  };
+  const auto [whole, whole_bytes] = walk(detail::Layout::omegaOrBounded(p.bits, p.omega), {});
+  const auto [left_out, left_out_bytes] = walk(p.layout(), p.derived);
+  EXPECT_EQ(left_out, whole);
+  EXPECT_EQ(whole.size(), explore(*net).states);
+  EXPECT_EQ(whole.size(), 13u);  // credits and spent of 3, 2, 1 and 0 tokens, none or one of the three inside
+  // 5 bits of 11 stored: a byte and the index, against two
+  EXPECT_EQ(left_out_bytes, 1u + 4u);
+  EXPECT_EQ(whole_bytes, 2u + 4u);
 }
 
 }  // namespace

@@ -5,18 +5,100 @@
 
 namespace gdpn::net::detail {
 
+Store::Store(Layout layout, bool index, std::vector<Derived> derived)
+    : layout_(std::move(layout)),
+      key_bytes_(layout_.keyBytes()),
+      index_bytes_(index ? sizeof(std::uint32_t) : 0),
+      arena_(key_bytes_ + index_bytes_) {
+  for (const Derived& d : derived) {
+    Rule r{d.slot, static_cast<std::uint32_t>(bit_terms_.size()), static_cast<std::uint32_t>(field_terms_.size()), d.constant,
+           d.divisor};
+    rules_.push_back(r);
+    for (const auto& [slot, weight] : d.terms) {
+      const Layout::Field& f = layout_.field(slot);
+      if (layout_.bits(slot) != 1 || f.omega) {
+        field_terms_.push_back({slot, weight});
+        continue;
+      }
+      // one-token fields of one weight in one word: one count of set bits
+      auto same_word = [&](const BitTerm& b) { return b.word == f.word && b.weight == weight; };
+      const auto at = std::find_if(bit_terms_.begin() + r.bits, bit_terms_.end(), same_word);
+      if (at != bit_terms_.end()) {
+        at->mask |= f.mask << f.shift;
+      } else {
+        bit_terms_.push_back({f.word, f.mask << f.shift, weight});
+      }
+    }
+  }
+  rules_.push_back({0, static_cast<std::uint32_t>(bit_terms_.size()), static_cast<std::uint32_t>(field_terms_.size()), 0, 1});
+  rehash(1024);
+}
+
+void Store::load(StateId s, std::uint64_t* out) const {
+  std::fill(out, out + words(), 0);
+  std::memcpy(reinterpret_cast<unsigned char*>(out), arena_.at(s), key_bytes_);
+  for (std::size_t r = 0; r + 1 < rules_.size(); ++r) {
+    const Rule& rule = rules_[r];
+    std::int64_t sum = 0;
+    for (std::uint32_t i = rule.bits; i < rules_[r + 1].bits; ++i) {
+      sum += bit_terms_[i].weight * std::popcount(out[bit_terms_[i].word] & bit_terms_[i].mask);
+    }
+    for (std::uint32_t i = rule.fields; i < rules_[r + 1].fields; ++i) {
+      sum += field_terms_[i].weight * static_cast<std::int64_t>(layout_.code(out, field_terms_[i].slot));
+    }
+    layout_.setCode(out, rule.slot, static_cast<std::uint64_t>((rule.constant - sum) / rule.divisor));
+  }
+}
+
 StateId Store::add(const std::uint64_t* m, std::uint64_t h, std::size_t i, bool& added) {
   if (growthWithin(1) != 0) {
     grow();
     return insert(m, h, added);
   }
   const auto s = static_cast<StateId>(size());
-  std::uint64_t* slot = arena_.append();
-  std::memcpy(slot, m, words() * sizeof(std::uint64_t));
-  if (extra_ != 0) slot[words()] = 0;
-  table_[i] = ((h >> 32) << 32) | s;
+  unsigned char* slot = arena_.append();
+  std::memcpy(slot, reinterpret_cast<const unsigned char*>(m), key_bytes_);
+  std::memset(slot + key_bytes_, 0, index_bytes_);
+  table_[i] = tagOf(h) | s;
   added = true;
   return s;
+}
+
+void Store::rehash(std::size_t capacity) {
+  // the old table goes first (the markings give it again), so that the two never add up;
+  // a table of many megabytes is probed at random: its allocator puts it on huge pages,
+  // which spare a TLB miss per probe
+  dropIndex();
+  table_.assign(capacity, kEmpty);
+  id_mask_ = static_cast<std::uint32_t>(capacity - 1);
+  std::vector<std::uint64_t> m(words());
+  for (std::size_t s = 0; s < size(); ++s) {
+    // the hash reads the kept words alone: no slot needs working out
+    std::memcpy(reinterpret_cast<unsigned char*>(m.data()), arena_.at(s), key_bytes_);
+    const std::uint64_t h = hash(m.data());
+    std::size_t i = h & (capacity - 1);
+    while (table_[i] != kEmpty) i = (i + 1) & (capacity - 1);
+    table_[i] = tagOf(h) | static_cast<std::uint32_t>(s);
+  }
+}
+
+void Store::relayout(Layout layout) {
+  Chunked<unsigned char, kArenaShift> next(layout.keyBytes() + index_bytes_);
+  std::vector<std::int64_t> counts(layout_.width());
+  std::vector<std::uint64_t> before(layout_.words()), after(layout.words());
+  for (std::size_t s = 0; s < size(); ++s) {
+    load(static_cast<StateId>(s), before.data());
+    layout_.unpack(before.data(), counts.data());
+    std::size_t bad = 0;
+    layout.pack(counts.data(), after.data(), bad);
+    unsigned char* slot = next.append();
+    std::memcpy(slot, reinterpret_cast<const unsigned char*>(after.data()), layout.keyBytes());
+    std::memcpy(slot + layout.keyBytes(), arena_.at(s) + key_bytes_, index_bytes_);
+  }
+  layout_ = std::move(layout);
+  key_bytes_ = layout_.keyBytes();
+  arena_ = std::move(next);
+  rehash(table_.size());
 }
 
 void Firing::use(const Layout& layout) {
@@ -299,7 +381,57 @@ Plan plan(const Net& net, const ExploreOptions& options) {
   for (const Term& term : net.terms()) {
     if (term.kind == TermKind::Inhibitor) p.accel[term.place_slot] = false;
   }
+  if (!p.cover && !p.overflow) p.derived = derivable(inv.p, p.bits, p.m0);
   return p;
+}
+
+Layout Plan::layout() const {
+  if (derived.empty()) return Layout::omegaOrBounded(bits, omega);
+  std::vector<bool> left_out(bits.size(), false);
+  for (const Derived& d : derived) left_out[d.slot] = true;
+  std::vector<std::uint32_t> order;
+  for (std::size_t k = 0; k < bits.size(); ++k) {
+    if (!left_out[k]) order.push_back(static_cast<std::uint32_t>(k));
+  }
+  const std::size_t kept = order.size();
+  for (const Derived& d : derived) order.push_back(d.slot);
+  std::vector<bool> bounded = omega;
+  bounded.flip();
+  return Layout(bits, omega, bounded, order, kept);
+}
+
+std::vector<Derived> derivable(const std::vector<Invariant>& p, const std::vector<std::uint32_t>& bits,
+                               const std::vector<std::int64_t>& m0) {
+  std::vector<std::size_t> order(p.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p[a].weights.size() < p[b].weights.size(); });
+  // a slot in the support of an invariant chosen is never worked out by a later one: each
+  // rule then reads only slots kept or worked out before it
+  std::vector<bool> used(bits.size(), false);
+  std::vector<Derived> out;
+  for (const std::size_t i : order) {
+    const auto& w = p[i].weights;
+    std::size_t best = w.size();
+    std::int64_t constant = 0;
+    bool fits = true;
+    for (std::size_t j = 0; j < w.size(); ++j) {
+      const auto [slot, weight] = w[j];
+      std::int64_t term = 0;
+      fits = fits && !__builtin_mul_overflow(weight, m0[slot], &term) && !__builtin_add_overflow(constant, term, &constant);
+      if (used[slot]) continue;
+      if (best == w.size() || bits[slot] > bits[w[best].first] || (bits[slot] == bits[w[best].first] && weight < w[best].second)) {
+        best = j;
+      }
+    }
+    if (best == w.size() || !fits) continue;
+    Derived d{w[best].first, constant, w[best].second, {}};
+    for (std::size_t j = 0; j < w.size(); ++j) {
+      if (j != best) d.terms.push_back(w[j]);
+      used[w[j].first] = true;
+    }
+    out.push_back(std::move(d));
+  }
+  return out;
 }
 
 Observed::Observed(const Layout& layout)

@@ -17,6 +17,7 @@
 
 #include "gdpn/core/memory.h"
 #include "gdpn/net/analysis.h"
+#include "gdpn/net/invariants.h"
 #include "gdpn/net/net.h"
 
 namespace gdpn::net::detail {
@@ -28,8 +29,19 @@ constexpr std::int64_t kW = std::numeric_limits<std::int64_t>::max();
 /// The most tokens a packed field holds.
 constexpr std::uint32_t kMaxBits = 32;
 
+/// A place slot whose count the others give: a P-invariant y has y·m = y·m0 in every
+/// reachable marking, so m(slot) = (constant - sum of y_q·m(q) over its other slots) / divisor.
+struct Derived {
+  std::uint32_t slot = 0;     ///< the place slot left out of stored markings
+  std::int64_t constant = 0;  ///< y·m0
+  std::int64_t divisor = 1;   ///< y at the slot
+  std::vector<std::pair<std::uint32_t, std::int64_t>> terms;  ///< the invariant's other slots: (slot, y_q)
+};
+
 /// Where each place slot's count lies in a packed marking: a bit field that never crosses a
-/// 64-bit word. A field that may become ω keeps its all-ones code for it.
+/// 64-bit word. A field that may become ω keeps its all-ones code for it. The fields kept
+/// when a marking is stored come first; those of slots the others give (Derived) begin on a
+/// word of their own after them, so that a stored marking is a prefix of a packed one.
 class Layout {
  public:
   struct Field {
@@ -42,21 +54,50 @@ class Layout {
     bool bounded = false;
   };
 
-  /// Fields of `bits` bits; those `omega` names may become ω, those `bounded` names hold a
-  /// bound (a field may be neither: a search of concrete markings stops where its count does
-  /// not fit).
+  /// Fields of `bits` bits, in place slot order; those `omega` names may become ω, those
+  /// `bounded` names hold a bound (a field may be neither: a search of concrete markings
+  /// stops where its count does not fit).
   Layout(const std::vector<std::uint32_t>& bits, const std::vector<bool>& omega, const std::vector<bool>& bounded)
-      : bits_(bits) {
+      : Layout(bits, omega, bounded, slotOrder(bits.size()), bits.size()) {}
+  /// The same with the fields laid out in `order` (place slots), the first `kept` of them
+  /// those a stored marking keeps.
+  Layout(const std::vector<std::uint32_t>& bits, const std::vector<bool>& omega, const std::vector<bool>& bounded,
+         const std::vector<std::uint32_t>& order, std::size_t kept)
+      : bits_(bits), fields_(bits.size()) {
     std::uint32_t used = 64;
-    for (std::size_t k = 0; k < bits.size(); ++k) {
+    for (std::size_t i = 0; i <= order.size(); ++i) {
+      if (i == kept) {
+        // the stored prefix ends here: the bytes up to the last kept field's end
+        key_bytes_ = std::max<std::size_t>(1, words_ == 0 ? 0 : (words_ - 1) * 8 + (used + 7) / 8);
+        key_words_ = words_;
+        used = 64;  // the fields worked out begin a word of their own
+      }
+      if (i == order.size()) break;
+      const std::size_t k = order[i];
       if (used + bits[k] > 64) ++words_, used = 0;
-      fields_.push_back(
-          {static_cast<std::uint32_t>(words_ - 1), used, (std::uint64_t{1} << bits[k]) - 1, omega[k], bounded[k] && !omega[k]});
+      fields_[k] = {static_cast<std::uint32_t>(words_ - 1), used, (std::uint64_t{1} << bits[k]) - 1, omega[k],
+                    bounded[k] && !omega[k]};
       used += bits[k];
     }
     words_ = std::max<std::size_t>(words_, 1);
+    key_words_ = std::max<std::size_t>(key_words_, 1);
+    // per word: its fields, and whether all hold one token at most and never ω (tokens())
+    ones_.assign(words_, 1);
+    word_begin_.assign(words_ + 1, 0);
+    for (const Field& f : fields_) ++word_begin_[f.word + 1];
+    for (std::size_t w = 0; w < words_; ++w) word_begin_[w + 1] += word_begin_[w];
+    word_fields_.resize(fields_.size());
+    std::vector<std::uint32_t> at(word_begin_.begin(), word_begin_.end() - 1);
+    for (std::size_t k = 0; k < fields_.size(); ++k) {
+      word_fields_[at[fields_[k].word]++] = static_cast<std::uint32_t>(k);
+      if (bits[k] != 1 || fields_[k].omega) ones_[fields_[k].word] = 0;
+    }
   }
   std::size_t words() const { return words_; }
+  /// The words that hold the fields a stored marking keeps (all of them where none is left out).
+  std::size_t keyWords() const { return key_words_; }
+  /// The bytes of those words up to the end of the last kept field: what a marking is stored as.
+  std::size_t keyBytes() const { return key_bytes_; }
   std::size_t width() const { return fields_.size(); }
   std::uint32_t bits(std::size_t k) const { return bits_[k]; }
   const Field& field(std::size_t k) const { return fields_[k]; }
@@ -74,6 +115,22 @@ class Layout {
   std::int64_t value(const std::uint64_t* m, std::size_t k) const {
     const std::uint64_t c = code(m, k);
     return isOmega(k, c) ? kW : static_cast<std::int64_t>(c);
+  }
+  /// The tokens of the packed marking `m`, ω not counted: a word of one-token fields by
+  /// counting its set bits.
+  std::int64_t tokens(const std::uint64_t* m) const {
+    std::int64_t n = 0;
+    for (std::size_t w = 0; w < words_; ++w) {
+      if (ones_[w] != 0) {
+        n += std::popcount(m[w]);
+        continue;
+      }
+      for (std::uint32_t i = word_begin_[w]; i < word_begin_[w + 1]; ++i) {
+        const std::int64_t v = value(m, word_fields_[i]);
+        if (v != kW) n += v;
+      }
+    }
+    return n;
   }
   void unpack(const std::uint64_t* m, std::int64_t* out) const {
     for (std::size_t k = 0; k < fields_.size(); ++k) out[k] = value(m, k);
@@ -105,9 +162,19 @@ class Layout {
   }
 
  private:
+  static std::vector<std::uint32_t> slotOrder(std::size_t n) {
+    std::vector<std::uint32_t> order(n);
+    for (std::size_t k = 0; k < n; ++k) order[k] = static_cast<std::uint32_t>(k);
+    return order;
+  }
   std::vector<std::uint32_t> bits_;
   std::vector<Field> fields_;
   std::size_t words_ = 0;
+  std::size_t key_words_ = 0;
+  std::size_t key_bytes_ = 0;
+  std::vector<std::uint8_t> ones_;           // per word: only one-token fields, none ω
+  std::vector<std::uint32_t> word_begin_;    // per word: its fields in word_fields_ from here
+  std::vector<std::uint32_t> word_fields_;   // the fields, word by word
 };
 
 /// Fixed-size chunks of 2^Shift elements, so that growing never copies and never holds twice
@@ -199,37 +266,62 @@ class Chunked {
   std::vector<std::unique_ptr<T[], Free>> chunks_;
 };
 
-/// The packed markings met so far and an open-addressing table over them. A table entry
-/// holds the state's id and 32 bits of its hash, so most probes never touch the markings.
+/// A hash of the `n` words at `m`.
+inline std::uint64_t hashWords(const std::uint64_t* m, std::size_t n) {
+  std::uint64_t h = 0x243f6a8885a308d3ULL;
+  for (std::size_t k = 0; k < n; ++k) {
+    h = (h ^ m[k]) * 0x9e3779b97f4a7c15ULL;
+    h ^= h >> 31;
+  }
+  h *= 0xbf58476d1ce4e5b9ULL;
+  return h ^ (h >> 29);
+}
+
+/// The markings met so far and an open-addressing table over them. A marking is stored as
+/// the bytes of its kept fields (Layout::keyBytes(), the slots the invariants give left out
+/// and worked out again as it is read); a table entry is 32 bits: the state's id in the low
+/// bits, as many as the table's size needs, and the hash's top bits above, so that most
+/// probes never touch the markings.
 class Store {
  public:
-  /// Markings per chunk of the arena: 2^18, 2 MiB and more.
+  /// Markings per chunk of the arena: 2^18.
   static constexpr std::size_t kArenaShift = 18;
-  /// With `extra`, each marking has one more 64-bit word beside it (zero when stored): what a
-  /// search keeps per state, read in the same cache line as the marking.
-  explicit Store(Layout layout, bool extra = false)
-      : layout_(std::move(layout)), extra_(extra ? 1 : 0), arena_(layout_.words() + extra_) {
-    table_.assign(1024, kEmpty);
-  }
+  /// With `index`, each state has 32 bits beside its marking (zero when stored): what a
+  /// search keeps per state, read in the same cache line as the marking. `derived`: the
+  /// slots `layout` leaves out of what is stored, in the order they are worked out.
+  explicit Store(Layout layout, bool index = false, std::vector<Derived> derived = {});
 
   const Layout& layout() const { return layout_; }
+  /// The words of a packed marking, the slots left out included.
   std::size_t words() const { return layout_.words(); }
-  /// Words a stored marking takes, its extra word included.
-  std::size_t stride() const { return layout_.words() + extra_; }
+  /// Bytes a stored state takes: its marking's kept part, and its index where kept.
+  std::size_t stateBytes() const { return key_bytes_ + index_bytes_; }
   std::size_t size() const { return arena_.size(); }
-  const std::uint64_t* at(StateId s) const { return arena_.at(s); }
-  /// The word kept beside state `s`'s marking (Store made with `extra`).
-  std::uint64_t& extra(StateId s) { return arena_.at(s)[layout_.words()]; }
-  std::uint64_t extra(StateId s) const { return arena_.at(s)[layout_.words()]; }
+  /// Writes state `s`'s packed marking into `out` (words() words), the slots left out
+  /// worked out from the others.
+  void load(StateId s, std::uint64_t* out) const;
+  /// The same into `buffer` (resized); its data.
+  const std::uint64_t* load(StateId s, std::vector<std::uint64_t>& buffer) const {
+    buffer.resize(words());
+    load(s, buffer.data());
+    return buffer.data();
+  }
+  /// The 32 bits kept beside state `s` (Store made with `index`).
+  std::uint32_t index(StateId s) const {
+    std::uint32_t v = 0;
+    std::memcpy(&v, arena_.at(s) + key_bytes_, sizeof v);
+    return v;
+  }
+  void setIndex(StateId s, std::uint32_t v) { std::memcpy(arena_.at(s) + key_bytes_, &v, sizeof v); }
   std::size_t bytes() const { return arena_.bytes() + tableBytes(); }
   /// What the table alone holds (dropIndex() frees it).
-  std::size_t tableBytes() const { return table_.size() * sizeof(std::uint64_t); }
+  std::size_t tableBytes() const { return table_.size() * sizeof(std::uint32_t); }
   /// Bytes the table grows by while `n` more markings are added (0 if it does not grow).
   std::size_t growthWithin(std::size_t n) const {
     if (table_.empty()) return 0;  // dropped: nothing more is added
     std::size_t capacity = table_.size();
     while ((size() + n) * 10 > capacity * 7) capacity *= 2;
-    return (capacity - table_.size()) * sizeof(std::uint64_t);
+    return (capacity - table_.size()) * sizeof(std::uint32_t);
   }
   /// Bytes the table grows by as the `n` markings `key(j)`, of hashes `hash(j)`, are
   /// inserted: near a growth point only those not stored yet count (a lookup each, there
@@ -244,38 +336,30 @@ class Store {
     return growthWithin(fresh);
   }
 
-  std::uint64_t hash(const std::uint64_t* m) const {
-    std::uint64_t h = 0x243f6a8885a308d3ULL;
-    for (std::size_t k = 0; k < words(); ++k) {
-      h = (h ^ m[k]) * 0x9e3779b97f4a7c15ULL;
-      h ^= h >> 31;
-    }
-    h *= 0xbf58476d1ce4e5b9ULL;
-    return h ^ (h >> 29);
-  }
+  /// The hash of a packed marking: of the words that hold its kept fields.
+  std::uint64_t hash(const std::uint64_t* m) const { return hashWords(m, layout_.keyWords()); }
   void prefetch(std::uint64_t h) const { __builtin_prefetch(&table_[h & (table_.size() - 1)]); }
   /// The first state whose hash tag matches `h` (likely the marking itself), or kNone; its
   /// marking is fetched into the cache, so that a find or insert that follows waits less.
   StateId peek(std::uint64_t h) const {
-    const std::uint64_t tag = h >> 32;
+    const std::uint32_t tag = tagOf(h);
     for (std::size_t i = h & (table_.size() - 1);; i = (i + 1) & (table_.size() - 1)) {
-      const std::uint64_t e = table_[i];
+      const std::uint32_t e = table_[i];
       if (e == kEmpty) return kNone;
-      if ((e >> 32) == tag) {
-        __builtin_prefetch(at(static_cast<StateId>(e)));
-        return static_cast<StateId>(e);
+      if ((e & ~id_mask_) == tag) {
+        __builtin_prefetch(arena_.at(e & id_mask_));
+        return e & id_mask_;
       }
     }
   }
 
-  /// The id of `m`, or kNone.
+  /// The id of the packed marking `m`, or kNone.
   StateId find(const std::uint64_t* m, std::uint64_t h) const {
-    const std::uint64_t tag = h >> 32;
+    const std::uint32_t tag = tagOf(h);
     for (std::size_t i = h & (table_.size() - 1);; i = (i + 1) & (table_.size() - 1)) {
-      const std::uint64_t e = table_[i];
+      const std::uint32_t e = table_[i];
       if (e == kEmpty) return kNone;
-      const auto s = static_cast<StateId>(e);
-      if ((e >> 32) == tag && same(at(s), m)) return s;
+      if ((e & ~id_mask_) == tag && same(e & id_mask_, m)) return e & id_mask_;
     }
   }
   /// The same, where peek(h) gave `peeked` (a stored state, or kNone): when that is `m`'s
@@ -288,16 +372,15 @@ class Store {
   StateId insert(const std::uint64_t* m, std::uint64_t h, bool& added) {
     // inlined where the search looks up each successor: most are stored already, and a new
     // one is added out of line
-    const std::uint64_t tag = h >> 32;
-    const std::uint64_t* table = table_.data();
+    const std::uint32_t tag = tagOf(h);
+    const std::uint32_t* table = table_.data();
     const std::size_t mask = table_.size() - 1;
     for (std::size_t i = h & mask;; i = (i + 1) & mask) {
-      const std::uint64_t e = table[i];
+      const std::uint32_t e = table[i];
       if (e == kEmpty) return add(m, h, i, added);
-      const auto s = static_cast<StateId>(e);
-      if ((e >> 32) == tag && same(at(s), m)) {
+      if ((e & ~id_mask_) == tag && same(e & id_mask_, m)) {
         added = false;
-        return s;
+        return e & id_mask_;
       }
     }
   }
@@ -310,56 +393,52 @@ class Store {
     }
     return insert(m, h, added);
   }
-  /// Frees the table: the markings stay readable by id (at(), extra()), but none can be
+  /// Frees the table: the markings stay readable by id (load(), index()), but none can be
   /// looked up or added any more.
   void dropIndex() { decltype(table_)().swap(table_); }
-  /// Re-packs every marking into `layout` (wider fields), keeping the ids.
-  void relayout(Layout layout) {
-    Chunked<std::uint64_t, kArenaShift> next(layout.words() + extra_);
-    std::vector<std::int64_t> m(layout_.width());
-    for (std::size_t s = 0; s < size(); ++s) {
-      layout_.unpack(at(static_cast<StateId>(s)), m.data());
-      std::size_t bad = 0;
-      std::uint64_t* slot = next.append();
-      layout.pack(m.data(), slot, bad);
-      if (extra_ != 0) slot[layout.words()] = at(static_cast<StateId>(s))[layout_.words()];
-    }
-    layout_ = std::move(layout);
-    arena_ = std::move(next);
-    rehash(table_.size());
-  }
+  /// Re-packs every marking into `layout` (wider fields), keeping the ids. A store that
+  /// leaves no slot out only.
+  void relayout(Layout layout);
 
  private:
-  static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+  static constexpr std::uint32_t kEmpty = 0xffffffffu;
+  /// The hash's top bits that a table entry keeps above the id.
+  std::uint32_t tagOf(std::uint64_t h) const { return static_cast<std::uint32_t>((h >> 32) & ~std::uint64_t{id_mask_}); }
   /// Adds `m` (hash `h`) at table slot `i`, the first empty one of its probe, or, where the
   /// table is due to grow, into the grown table.
   StateId add(const std::uint64_t* m, std::uint64_t h, std::size_t i, bool& added);
   /// Whether `s` (a stored state, or kNone) is the marking `m`.
-  bool isState(StateId s, const std::uint64_t* m) const { return s != kNone && same(at(s), m); }
-  bool same(const std::uint64_t* a, const std::uint64_t* b) const {
-    for (std::size_t k = 0; k < words(); ++k) {
-      if (a[k] != b[k]) return false;
-    }
-    return true;
+  bool isState(StateId s, const std::uint64_t* m) const { return s != kNone && same(s, m); }
+  bool same(StateId s, const std::uint64_t* m) const {
+    return std::memcmp(arena_.at(s), reinterpret_cast<const unsigned char*>(m), key_bytes_) == 0;
   }
   void grow() { rehash(table_.size() * 2); }
-  void rehash(std::size_t capacity) {
-    // the old table goes first (the markings give it again), so that the two never add up;
-    // a table of many megabytes is probed at random: its allocator puts it on huge pages,
-    // which spare a TLB miss per probe
-    dropIndex();
-    table_.assign(capacity, kEmpty);
-    for (std::size_t s = 0; s < size(); ++s) {
-      const std::uint64_t h = hash(at(static_cast<StateId>(s)));
-      std::size_t i = h & (capacity - 1);
-      while (table_[i] != kEmpty) i = (i + 1) & (capacity - 1);
-      table_[i] = ((h >> 32) << 32) | s;
-    }
-  }
+  void rehash(std::size_t capacity);
   Layout layout_;
-  std::size_t extra_ = 0;  // words kept beside each marking
-  Chunked<std::uint64_t, kArenaShift> arena_;
-  std::vector<std::uint64_t, core::LargeAllocator<std::uint64_t>> table_;
+  std::size_t key_bytes_ = 0;    // Layout::keyBytes()
+  std::size_t index_bytes_ = 0;  // 4 with an index, else 0
+  std::uint32_t id_mask_ = 0;    // the bits of a table entry that hold the id
+  Chunked<unsigned char, kArenaShift> arena_;
+  std::vector<std::uint32_t, core::LargeAllocator<std::uint32_t>> table_;
+  // the slots left out, worked out in turn as a marking is read: a sum of weighted counts of
+  // set bits over one-token fields by word, and of weighted counts of the other fields
+  struct Rule {
+    std::uint32_t slot = 0;
+    std::uint32_t bits = 0, fields = 0;  // where its terms begin in bit_terms_ and field_terms_
+    std::int64_t constant = 0, divisor = 1;
+  };
+  struct BitTerm {
+    std::uint32_t word = 0;
+    std::uint64_t mask = 0;
+    std::int64_t weight = 0;
+  };
+  struct FieldTerm {
+    std::uint32_t slot = 0;
+    std::int64_t weight = 0;
+  };
+  std::vector<Rule> rules_;  // then one past the last, where the terms end
+  std::vector<BitTerm> bit_terms_;
+  std::vector<FieldTerm> field_terms_;
 };
 
 class Firing;
@@ -577,8 +656,20 @@ struct Plan {
   std::vector<std::int64_t> m0;      ///< the initial marking
   bool cover = false;                ///< some place slot has no bound: watch for ω
   bool overflow = false;             ///< an initial count is beyond what a field holds
+  /// Where no slot may become ω: the slots the P-invariants give from the others, left out of
+  /// stored markings, in the order they are worked out.
+  std::vector<Derived> derived;
+  /// The layout of the search's markings: the kept fields first, then those of `derived`.
+  Layout layout() const;
 };
 Plan plan(const Net& net, const ExploreOptions& options);
+
+/// The slots of `net` that the P-invariants `p` give from the others, each from one
+/// invariant whose other slots are kept or given before it, for the initial marking `m0`:
+/// invariants of small support first (each slot worked out costs a look at its support), of
+/// each the widest field (`bits`) not in the support of one chosen before.
+std::vector<Derived> derivable(const std::vector<Invariant>& p, const std::vector<std::uint32_t>& bits,
+                               const std::vector<std::int64_t>& m0);
 
 /// The lowest and highest count of each place slot, and the largest marking, over the
 /// markings noted (in `layout`, which must not change between them).

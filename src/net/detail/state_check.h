@@ -117,16 +117,24 @@ class ConcreteStates {
   /// fit its field (the search must stop: Overflow).
   template <class F>
   bool successors(StateId s, F f) {
-    check_->candidates().find(store_->at(s), check_->firing(), candidates_);
-    return fire(s, candidates_, f);
+    const std::uint64_t* m = store_->load(s, here_);
+    check_->candidates().find(m, check_->firing(), candidates_);
+    return fireFrom(m, candidates_, f);
   }
 
   /// The same for the transitions `ts` only (those not enabled are passed over).
   template <class F>
   bool fire(StateId s, const std::vector<TransitionId>& ts, F f) {
+    return fireFrom(store_->load(s, here_), ts, f);
+  }
+
+ private:
+  /// fire() from the packed marking `m` of the state.
+  template <class F>
+  bool fireFrom(const std::uint64_t* m, const std::vector<TransitionId>& ts, F f) {
     for (TransitionId t : ts) {
       std::size_t field = 0;
-      const Fired fired = check_->firing().fire(t, store_->at(s), next_.data(), field);
+      const Fired fired = check_->firing().fire(t, m, next_.data(), field);
       if (fired == Fired::NotEnabled) continue;
       if (fired == Fired::TooBig) return false;
       bool added = false;
@@ -136,10 +144,10 @@ class ConcreteStates {
     return true;
   }
 
- private:
   std::unique_ptr<Store> store_;
   std::unique_ptr<StateCheck> check_;
   std::vector<std::uint64_t> next_;
+  std::vector<std::uint64_t> here_;  // the marking of the state whose successors are made
   std::vector<TransitionId> candidates_;
 };
 
