@@ -138,6 +138,8 @@ int analyze(AnalyzeArgs a) {
                                                             : session::ColourSearch::Auto;
   std::optional<session::AnalysedNet> analysed;
   if (spec) analysed = session::analysedNet(*spec, diags, how);
+  spec.reset();  // the compiled net is all that is read from here on: the spec's memory goes back
+                 // before the search (explore() returns it to the system)
   diags.print(std::cerr);
   if (!analysed) return 1;
   const gdpn::net::NameExpansion* expansion = analysed->expansion();

@@ -9,6 +9,9 @@
 #include <string>
 
 #include <unistd.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -41,6 +44,12 @@ void* allocateLarge(std::size_t bytes) {
   if (p == nullptr) throw std::bad_alloc();
   adviseHugePages(p, whole);
   return p;
+}
+
+void returnFreedMemory() {
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
 }
 
 std::size_t secondLevelCacheFrom(long reported) {

@@ -30,6 +30,11 @@ void adviseHugePages(const void* data, std::size_t bytes);
 /// is given.
 void* allocateLarge(std::size_t bytes);
 
+/// Gives the memory freed so far back to the system (the C library keeps freed blocks for
+/// reuse): before a search that will hold much, so that what reading the model left behind
+/// does not add to its peak.
+void returnFreedMemory();
+
 /// A standard allocator that takes its blocks from allocateLarge(): for a std::vector that is
 /// grown and probed at random (a hash table of millions of entries).
 template <class T>
