@@ -66,7 +66,10 @@ void requestInterrupt() { interruptScript(); }
 
 /// One compiled script.
 struct Compiled {
-  py::object code;      // code object (inline), or none
+  /// inline code: its code object made a function over the model's globals once, so that a
+  /// call runs it with the globals as its namespace, as exec would, without building a
+  /// function (and looking up the builtins) each time; or none
+  py::object code;
   py::object function;  // callable (file form), or none
   bool expression = false;
 };
@@ -547,16 +550,30 @@ def compile_mapped(code, filename, mode, lines):
       syntaxError(diags, what, s.indent);
       return false;
     }
-    out.code = py::reinterpret_steal<py::object>(code);
+    const py::object owned = py::reinterpret_steal<py::object>(code);
+    PyObject* fn = PyFunction_New(owned.ptr(), globals.ptr());
+    if (!fn) {
+      diags.error(s.loc, "cannot prepare " + what + ": " + formatPending());
+      return false;
+    }
+    out.code = py::reinterpret_steal<py::object>(fn);
     return true;
   }
 
   // ---- running ----
 
-  /// Runs module-level code (the globals, a script file) in the globals, under the watchdog.
+  /// Runs module-level code (a script file) in the globals, under the watchdog.
   PyObject* evalWatched(PyObject* code) {
     watchdog->enter();
     PyObject* result = PyEval_EvalCode(code, globals.ptr(), globals.ptr());
+    watchdog->leave();
+    return result;
+  }
+
+  /// Runs inline code (Compiled::code: the globals script) under the watchdog.
+  PyObject* runWatched(PyObject* code) {
+    watchdog->enter();
+    PyObject* result = PyObject_Vectorcall(code, nullptr, 0, nullptr);
     watchdog->leave();
     return result;
   }
@@ -783,7 +800,7 @@ def compile_mapped(code, filename, mode, lines):
       PyDict_SetItem(globals.ptr(), key_self.ptr(), self);
       if (token) PyDict_SetItem(globals.ptr(), key_token.ptr(), token);
       if (items) PyDict_SetItemString(globals.ptr(), "item", value);
-      result = PyEval_EvalCode(c.code.ptr(), globals.ptr(), globals.ptr());
+      result = PyObject_Vectorcall(c.code.ptr(), nullptr, 0, nullptr);
     }
     watchdog->leave();
     if (!result) fail(kind, id);
@@ -916,7 +933,7 @@ std::unique_ptr<Engine> Engine::create(const net::Net& net, net::Kernel& kernel,
     auto& c = impl->compiled[static_cast<std::size_t>(g)];
     ok = impl->compile(scripts[static_cast<std::size_t>(g)], false, "the globals script", c, diags, loaded);
     if (ok && c.code) {
-      PyObject* r = impl->evalWatched(c.code.ptr());
+      PyObject* r = impl->runWatched(c.code.ptr());
       if (!r) {
         const auto where = impl->located(impl->innermost());
         if (impl->stoppedLate()) {
