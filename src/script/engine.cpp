@@ -103,6 +103,9 @@ int traceStop(PyObject* obj, PyFrameObject* frame, int what, PyObject* arg);
 ///   looks at signals) ends the process, with the message on stderr.
 /// timedOut() tells a stop from a Ctrl-C. A script on a thread that is not Python's main
 /// thread gets the stop as an asynchronous exception instead (busy loops only).
+/// A call's start and end are a few atomic stores (no lock): the watchdog decides a stop and
+/// sends the signal while it sees the call running and marks that it is doing so (kicking_);
+/// a call that ends meanwhile waits for it, so that no stop reaches code after the call.
 class Watchdog {
  public:
   Watchdog(double timeout_s, double grace_s, std::function<void()> hard_stop)
@@ -137,15 +140,13 @@ class Watchdog {
     if (depth_++ > 0) return;
     if (memory_cap_ != 0) detail::setMemoryCap(memory_cap_);
     if (!thread_.joinable()) return;
+    // who runs it, seen by the watchdog through the release of call_
     const unsigned long ident = PyThread_get_thread_ident();
-    {
-      std::lock_guard<std::mutex> lock(call_mutex_);
-      thread_id_ = ident;
-      target_ = pthread_self();
-      by_signal_ = ident == g_signal_thread.load();
-      generation_.fetch_add(1, std::memory_order_relaxed);
-      in_call_.store(true, std::memory_order_release);
-    }
+    thread_id_.store(ident, std::memory_order_relaxed);
+    target_.store(pthread_self(), std::memory_order_relaxed);
+    by_signal_.store(ident == g_signal_thread.load(std::memory_order_relaxed), std::memory_order_relaxed);
+    call_.store(((generation_ + 1) << 1) | 1, std::memory_order_release);
+    ++generation_;
     previous_ = t_watched;
     t_watched = this;
   }
@@ -154,9 +155,12 @@ class Watchdog {
     if (--depth_ > 0) return;
     if (memory_cap_ != 0) detail::setMemoryCap(0);
     if (!thread_.joinable()) return;
-    {
-      std::lock_guard<std::mutex> lock(call_mutex_);
-      in_call_.store(false, std::memory_order_release);
+    call_.store(generation_ << 1, std::memory_order_seq_cst);
+    // a stop being decided or sent now, or sent to this call: let it reach this call (a
+    // pending signal is delivered at the return of a system call), not the code after it
+    if (kicking_.load(std::memory_order_seq_cst) || stopped_.load(std::memory_order_acquire) == generation_) {
+      while (kicking_.load(std::memory_order_acquire)) std::this_thread::yield();
+      std::this_thread::yield();
     }
     t_watched = previous_;
     if (tracing_) {
@@ -169,7 +173,7 @@ class Watchdog {
   /// Whether the current (or last) call was stopped for running too long.
   [[nodiscard]] bool timedOut() const {
     const auto stopped = stopped_.load();
-    return stopped != 0 && stopped == generation_.load();
+    return stopped != 0 && stopped == generation_;
   }
   /// Installs the trace function that raises on every event, once per call (under the GIL).
   void traceUntilReturn() {
@@ -196,12 +200,12 @@ class Watchdog {
         std::unique_lock<std::mutex> lock(mutex_);
         if (wake_.wait_for(lock, std::chrono::milliseconds(10), [this] { return done_; })) return;
       }
-      std::unique_lock<std::mutex> call(call_mutex_);
-      if (!in_call_.load(std::memory_order_acquire)) {
+      const std::uint64_t call = call_.load(std::memory_order_acquire);
+      if ((call & 1) == 0) {
         seen = 0;
         continue;
       }
-      const auto gen = generation_.load(std::memory_order_relaxed);
+      const std::uint64_t gen = call >> 1;
       const auto now = clock::now();
       if (gen != seen) {
         seen = gen;
@@ -210,17 +214,25 @@ class Watchdog {
       }
       const double late = std::chrono::duration<double>(now - since).count() - timeout_s_;
       if (late <= 0) continue;
+      const bool by_signal = by_signal_.load(std::memory_order_relaxed);
+      // decided and sent while the call certainly runs: leave() waits while kicking_ is set
+      kicking_.store(true, std::memory_order_seq_cst);
+      if (call_.load(std::memory_order_seq_cst) != call) {
+        kicking_.store(false, std::memory_order_release);
+        continue;
+      }
       const bool first = stopped_.exchange(gen) != gen;
       if (grace_s_ > 0 && late > grace_s_) hard_stop_();
-      if (by_signal_ && (first || now - kicked >= std::chrono::milliseconds(100))) {
-        // while the call certainly runs (leave() waits for call_mutex_)
+      if (by_signal && (first || now - kicked >= std::chrono::milliseconds(100))) {
         kicked = now;
-        pthread_kill(target_, stopSignal());
-      } else if (!by_signal_ && first) {
-        const unsigned long ident = thread_id_;
-        call.unlock();  // leave() runs under the GIL: never wait for the GIL holding its mutex
+        pthread_kill(target_.load(std::memory_order_relaxed), stopSignal());
+      }
+      kicking_.store(false, std::memory_order_release);
+      if (!by_signal && first) {
+        // leave() runs under the GIL: the call is still this one while the GIL is held here
+        const unsigned long ident = thread_id_.load(std::memory_order_relaxed);
         const PyGILState_STATE state = PyGILState_Ensure();
-        if (in_call_.load() && generation_.load() == gen) PyThreadState_SetAsyncExc(ident, PyExc_KeyboardInterrupt);
+        if (call_.load() == call) PyThreadState_SetAsyncExc(ident, PyExc_KeyboardInterrupt);
         PyGILState_Release(state);
       }
     }
@@ -229,16 +241,16 @@ class Watchdog {
   double timeout_s_;
   double grace_s_;
   std::function<void()> hard_stop_;
-  // the call: written by enter() under call_mutex_, read by the thread under it
-  std::mutex call_mutex_;
-  std::atomic<std::uint64_t> generation_{0};
+  // the call: written by enter() before it publishes call_, read by the watchdog after
+  std::atomic<std::uint64_t> call_{0};     // the generation << 1, | 1 while the call runs
+  std::atomic<bool> kicking_{false};       // the watchdog is deciding or sending a stop
   std::atomic<std::uint64_t> stopped_{0};  // the generation that was stopped (0: none)
-  std::atomic<bool> in_call_{false};
-  unsigned long thread_id_ = 0;
-  pthread_t target_{};
-  bool by_signal_ = false;
+  std::atomic<unsigned long> thread_id_{0};
+  std::atomic<pthread_t> target_{};
+  std::atomic<bool> by_signal_{false};
   // the script's thread only
   Watchdog* previous_ = nullptr;
+  std::uint64_t generation_ = 0;  // calls so far (the current or last one's number)
   int depth_ = 0;  // calls inside calls
   std::int64_t memory_cap_ = 0;  // bytes Python may hold during a call (0: no bound)
   bool tracing_ = false;
