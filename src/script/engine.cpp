@@ -306,6 +306,13 @@ void installStopHandler() {
   }
 }
 
+/// `name` as an interned Python str.
+py::str interned(const char* name) {
+  PyObject* s = PyUnicode_InternFromString(name);
+  if (!s) throw py::error_already_set();
+  return py::reinterpret_steal<py::str>(s);
+}
+
 /// A path as Python names files: its bytes decoded as the file system's names are, a byte
 /// that is not UTF-8 as a surrogate (PEP 383), so a folder of any bytes can hold a model.
 py::object pyPath(const std::string& path) {
@@ -345,14 +352,19 @@ struct Engine::Impl : detail::Context {
 
   py::dict globals;
   py::object sim;
-  py::str key_self{"self"};
-  py::str key_token{"token"};
+  // the names inline code sees its arguments under, interned as the code's own names are (a
+  // dict finds them by identity)
+  py::str key_self = interned("self");
+  py::str key_token = interned("token");
+  py::str key_item = interned("item");
   std::vector<Compiled> compiled;
   std::unordered_map<std::string, py::object> expressions;  // breakpoint predicates, compiled
   std::vector<py::object> transition_views, place_views, node_views;
   // bare slot names (`c0`): each construct's scripts see its own sensor slots under their
   // names, bound in the globals before its script runs and unbound before another's
-  std::unordered_map<std::int64_t, std::vector<std::pair<py::str, py::object>>> bare;  // by owner key
+  std::vector<std::vector<std::pair<py::str, py::object>>> bare;  // by owner key (bareNames)
+  std::vector<bool> bare_known;  // bare[key] is made
+  bool any_bare = true;          // some construct may see a slot by bare name (a sensor slot in a plant)
   std::vector<std::pair<py::str, py::object>> bound;  // the names bound now, with what they hid
   std::int64_t bound_key = -1;     // whose they are (-1: nobody's)
   py::object geometries;           // gdpn_script.Geometries: on_enter/on_exit's `item`
@@ -370,15 +382,19 @@ struct Engine::Impl : detail::Context {
   std::string nodeName(net::NodeRef ref) const override {
     return callbacks.node_name ? callbacks.node_name(ref) : "#" + std::to_string(ref);
   }
-  py::object transitionView(net::TransitionId t) override {
+  py::object transitionView(net::TransitionId t) override { return py::reinterpret_borrow<py::object>(transitionSelf(t)); }
+  py::object placeView(net::PlaceId p) override { return py::reinterpret_borrow<py::object>(placeSelf(p)); }
+  /// Transition t's view, borrowed (the engine holds it): `self` of its scripts.
+  PyObject* transitionSelf(net::TransitionId t) {
     auto& v = transition_views[t];
     if (!v) v = detail::makeTransitionView(detail::refTo(*this), t);
-    return v;
+    return v.ptr();
   }
-  py::object placeView(net::PlaceId p) override {
+  /// Place p's view, borrowed (the engine holds it): `self` of its scripts.
+  PyObject* placeSelf(net::PlaceId p) {
     auto& v = place_views[p];
     if (!v) v = detail::makePlaceView(detail::refTo(*this), p);
-    return v;
+    return v.ptr();
   }
   py::object nodeView(net::NodeRef ref) override {
     if (ref < node_views.size()) {
@@ -754,8 +770,14 @@ def compile_mapped(code, filename, mode, lines):
   /// The sensor slots construct `key` sees by bare name: a place's own; a transition's, those
   /// of the places its arcs touch (the first arc's where two share a name).
   const std::vector<std::pair<py::str, py::object>>& bareNames(std::int64_t key) {
-    auto [it, fresh] = bare.try_emplace(key);
-    if (!fresh || !callbacks.plant) return it->second;
+    const auto k = static_cast<std::size_t>(key);
+    if (k >= bare.size()) {
+      bare.resize(k + 1);
+      bare_known.resize(k + 1);
+    }
+    auto& names = bare[k];
+    if (bare_known[k] || !callbacks.plant) return names;
+    bare_known[k] = true;
     for (int s = 0; s < net::kSlotCount; ++s) {
       const auto slot = static_cast<net::SlotId>(s);
       const std::string* path = nullptr;
@@ -766,17 +788,22 @@ def compile_mapped(code, filename, mode, lines):
       }
       if (!path || path->empty()) continue;
       if (const scene::Node* sensor = callbacks.plant->find(*path)) {
-        it->second.emplace_back(py::str(net::slotName(slot)), detail::makeSensorView(detail::refTo(*this), sensor->handle()));
+        names.emplace_back(py::str(net::slotName(slot)), detail::makeSensorView(detail::refTo(*this), sensor->handle()));
       }
     }
-    return it->second;
+    return names;
   }
 
   /// Binds the bare slot names of the construct script (kind, id) belongs to, unbinding the
   /// last construct's.
   void bindBare(ScriptKind kind, std::uint32_t id) {
+    if (!any_bare && bound.empty()) return;
     const std::int64_t key = ownerKey(kind, id);
     if (key == bound_key) return;
+    if (bound.empty() && (key < 0 || bareNames(key).empty())) {  // nothing to unbind, nothing to bind
+      bound_key = key;
+      return;
+    }
     // what a slot name hid (a global of the model's, a sensor of that name) comes back
     for (auto it = bound.rbegin(); it != bound.rend(); ++it) {
       if (it->second) PyDict_SetItem(globals.ptr(), it->first.ptr(), it->second.ptr());
@@ -811,7 +838,7 @@ def compile_mapped(code, filename, mode, lines):
     } else {
       PyDict_SetItem(globals.ptr(), key_self.ptr(), self);
       if (token) PyDict_SetItem(globals.ptr(), key_token.ptr(), token);
-      if (items) PyDict_SetItemString(globals.ptr(), "item", value);
+      if (items) PyDict_SetItem(globals.ptr(), key_item.ptr(), value);
       result = PyObject_Vectorcall(c.code.ptr(), nullptr, 0, nullptr);
     }
     watchdog->leave();
@@ -864,6 +891,7 @@ Engine::~Engine() {
   impl_->place_views.clear();
   impl_->node_views.clear();
   impl_->bare.clear();
+  impl_->bare_known.clear();
   impl_->bound.clear();
   impl_->geometries = py::object();
   impl_->sim = py::object();
@@ -898,6 +926,11 @@ std::unique_ptr<Engine> Engine::create(const net::Net& net, net::Kernel& kernel,
     const double share = options.memory_mib * 1024.0 * 1024.0;
     impl->watchdog->capMemory(std::max<std::int64_t>(
         1, detail::memoryHeld() + static_cast<std::int64_t>(std::min(share, 4.0e18))));
+  }
+  // no construct sees a slot by bare name where no place slot reads a sensor of a plant
+  impl->any_bare = false;
+  for (std::uint32_t ps = 0; impl->callbacks.plant && ps < net.placeSlots().size(); ++ps) {
+    if (!net.sensorPath(net::PlaceSlotId{ps}).empty()) impl->any_bare = true;
   }
   impl->transition_views.resize(net.transitions().size());
   impl->place_views.resize(net.places().size());
@@ -972,36 +1005,36 @@ std::unique_ptr<Engine> Engine::create(const net::Net& net, net::Kernel& kernel,
 }
 
 bool Engine::guard(net::TransitionId t) {
-  return impl_->test(ScriptKind::Guard, t, impl_->transitionView(t).ptr(), nullptr);
+  return impl_->test(ScriptKind::Guard, t, impl_->transitionSelf(t), nullptr);
 }
 
 bool Engine::eligible(net::TermId term, net::NodeRef token) {
   const auto t = impl_->net.terms()[term].transition;
-  return impl_->test(ScriptKind::Predicate, term, impl_->transitionView(t).ptr(), impl_->nodeView(token).ptr());
+  return impl_->test(ScriptKind::Predicate, term, impl_->transitionSelf(t), impl_->nodeView(token).ptr());
 }
 
 void Engine::preFire(net::TransitionId t) {
-  impl_->run(ScriptKind::PreFire, t, impl_->transitionView(t).ptr(), nullptr);
+  impl_->run(ScriptKind::PreFire, t, impl_->transitionSelf(t), nullptr);
 }
 
 void Engine::inFire(net::TransitionId t) {
-  impl_->run(ScriptKind::InFire, t, impl_->transitionView(t).ptr(), nullptr);
+  impl_->run(ScriptKind::InFire, t, impl_->transitionSelf(t), nullptr);
 }
 
 void Engine::postFire(net::TransitionId t) {
-  impl_->run(ScriptKind::PostFire, t, impl_->transitionView(t).ptr(), nullptr);
+  impl_->run(ScriptKind::PostFire, t, impl_->transitionSelf(t), nullptr);
 }
 
 void Engine::onDeposit(net::PlaceSlotId ps, const net::NodeRef* token) {
   const auto place = impl_->net.placeSlots()[ps].place;
   py::object tok = token ? impl_->nodeView(*token) : py::none();
-  impl_->run(ScriptKind::OnDeposit, ps, impl_->placeView(place).ptr(), tok.ptr());
+  impl_->run(ScriptKind::OnDeposit, ps, impl_->placeSelf(place), tok.ptr());
 }
 
 void Engine::onRemove(net::PlaceSlotId ps, const net::NodeRef* token) {
   const auto place = impl_->net.placeSlots()[ps].place;
   py::object tok = token ? impl_->nodeView(*token) : py::none();
-  impl_->run(ScriptKind::OnRemove, ps, impl_->placeView(place).ptr(), tok.ptr());
+  impl_->run(ScriptKind::OnRemove, ps, impl_->placeSelf(place), tok.ptr());
 }
 
 bool Engine::condition(net::TermId term, scene::NodeHandle sensor) {
@@ -1019,7 +1052,7 @@ bool Engine::condition(net::TermId term, scene::NodeHandle sensor) {
   impl_->globals[name] = view;
   impl_->globals["value"] = view;
   const bool holds =
-      impl_->test(ScriptKind::Condition, term, impl_->transitionView(t.transition).ptr(), nullptr, view.ptr());
+      impl_->test(ScriptKind::Condition, term, impl_->transitionSelf(t.transition), nullptr, view.ptr());
   impl_->bound_key = -2;
   return holds;
 }
@@ -1040,7 +1073,7 @@ void Engine::sensorEvent(net::PlaceSlotId ps, ScriptKind kind, scene::NodeHandle
   const bool with_item = kind == ScriptKind::OnEnter || kind == ScriptKind::OnExit;
   py::object arg = with_item ? impl_->itemList(item, r.items())
                              : (kind == ScriptKind::OnSample && !r.items().empty() ? py::object(items) : value);
-  impl_->runSensor(index, kind, ps, impl_->placeView(net.placeSlots()[ps].place).ptr(), with_item, items.ptr(),
+  impl_->runSensor(index, kind, ps, impl_->placeSelf(net.placeSlots()[ps].place), with_item, items.ptr(),
                    arg.ptr());
 }
 
