@@ -66,7 +66,10 @@ void requestInterrupt() { interruptScript(); }
 
 /// One compiled script.
 struct Compiled {
-  py::object code;      // code object (inline), or none
+  /// inline code: its code object made a function over the model's globals once, so that a
+  /// call runs it with the globals as its namespace, as exec would, without building a
+  /// function (and looking up the builtins) each time; or none
+  py::object code;
   py::object function;  // callable (file form), or none
   bool expression = false;
 };
@@ -100,6 +103,9 @@ int traceStop(PyObject* obj, PyFrameObject* frame, int what, PyObject* arg);
 ///   looks at signals) ends the process, with the message on stderr.
 /// timedOut() tells a stop from a Ctrl-C. A script on a thread that is not Python's main
 /// thread gets the stop as an asynchronous exception instead (busy loops only).
+/// A call's start and end are a few atomic stores (no lock): the watchdog decides a stop and
+/// sends the signal while it sees the call running and marks that it is doing so (kicking_);
+/// a call that ends meanwhile waits for it, so that no stop reaches code after the call.
 class Watchdog {
  public:
   Watchdog(double timeout_s, double grace_s, std::function<void()> hard_stop)
@@ -134,15 +140,13 @@ class Watchdog {
     if (depth_++ > 0) return;
     if (memory_cap_ != 0) detail::setMemoryCap(memory_cap_);
     if (!thread_.joinable()) return;
+    // who runs it, seen by the watchdog through the release of call_
     const unsigned long ident = PyThread_get_thread_ident();
-    {
-      std::lock_guard<std::mutex> lock(call_mutex_);
-      thread_id_ = ident;
-      target_ = pthread_self();
-      by_signal_ = ident == g_signal_thread.load();
-      generation_.fetch_add(1, std::memory_order_relaxed);
-      in_call_.store(true, std::memory_order_release);
-    }
+    thread_id_.store(ident, std::memory_order_relaxed);
+    target_.store(pthread_self(), std::memory_order_relaxed);
+    by_signal_.store(ident == g_signal_thread.load(std::memory_order_relaxed), std::memory_order_relaxed);
+    call_.store(((generation_ + 1) << 1) | 1, std::memory_order_release);
+    ++generation_;
     previous_ = t_watched;
     t_watched = this;
   }
@@ -151,9 +155,12 @@ class Watchdog {
     if (--depth_ > 0) return;
     if (memory_cap_ != 0) detail::setMemoryCap(0);
     if (!thread_.joinable()) return;
-    {
-      std::lock_guard<std::mutex> lock(call_mutex_);
-      in_call_.store(false, std::memory_order_release);
+    call_.store(generation_ << 1, std::memory_order_seq_cst);
+    // a stop being decided or sent now, or sent to this call: let it reach this call (a
+    // pending signal is delivered at the return of a system call), not the code after it
+    if (kicking_.load(std::memory_order_seq_cst) || stopped_.load(std::memory_order_acquire) == generation_) {
+      while (kicking_.load(std::memory_order_acquire)) std::this_thread::yield();
+      std::this_thread::yield();
     }
     t_watched = previous_;
     if (tracing_) {
@@ -166,7 +173,7 @@ class Watchdog {
   /// Whether the current (or last) call was stopped for running too long.
   [[nodiscard]] bool timedOut() const {
     const auto stopped = stopped_.load();
-    return stopped != 0 && stopped == generation_.load();
+    return stopped != 0 && stopped == generation_;
   }
   /// Installs the trace function that raises on every event, once per call (under the GIL).
   void traceUntilReturn() {
@@ -193,12 +200,12 @@ class Watchdog {
         std::unique_lock<std::mutex> lock(mutex_);
         if (wake_.wait_for(lock, std::chrono::milliseconds(10), [this] { return done_; })) return;
       }
-      std::unique_lock<std::mutex> call(call_mutex_);
-      if (!in_call_.load(std::memory_order_acquire)) {
+      const std::uint64_t call = call_.load(std::memory_order_acquire);
+      if ((call & 1) == 0) {
         seen = 0;
         continue;
       }
-      const auto gen = generation_.load(std::memory_order_relaxed);
+      const std::uint64_t gen = call >> 1;
       const auto now = clock::now();
       if (gen != seen) {
         seen = gen;
@@ -207,17 +214,25 @@ class Watchdog {
       }
       const double late = std::chrono::duration<double>(now - since).count() - timeout_s_;
       if (late <= 0) continue;
+      const bool by_signal = by_signal_.load(std::memory_order_relaxed);
+      // decided and sent while the call certainly runs: leave() waits while kicking_ is set
+      kicking_.store(true, std::memory_order_seq_cst);
+      if (call_.load(std::memory_order_seq_cst) != call) {
+        kicking_.store(false, std::memory_order_release);
+        continue;
+      }
       const bool first = stopped_.exchange(gen) != gen;
       if (grace_s_ > 0 && late > grace_s_) hard_stop_();
-      if (by_signal_ && (first || now - kicked >= std::chrono::milliseconds(100))) {
-        // while the call certainly runs (leave() waits for call_mutex_)
+      if (by_signal && (first || now - kicked >= std::chrono::milliseconds(100))) {
         kicked = now;
-        pthread_kill(target_, stopSignal());
-      } else if (!by_signal_ && first) {
-        const unsigned long ident = thread_id_;
-        call.unlock();  // leave() runs under the GIL: never wait for the GIL holding its mutex
+        pthread_kill(target_.load(std::memory_order_relaxed), stopSignal());
+      }
+      kicking_.store(false, std::memory_order_release);
+      if (!by_signal && first) {
+        // leave() runs under the GIL: the call is still this one while the GIL is held here
+        const unsigned long ident = thread_id_.load(std::memory_order_relaxed);
         const PyGILState_STATE state = PyGILState_Ensure();
-        if (in_call_.load() && generation_.load() == gen) PyThreadState_SetAsyncExc(ident, PyExc_KeyboardInterrupt);
+        if (call_.load() == call) PyThreadState_SetAsyncExc(ident, PyExc_KeyboardInterrupt);
         PyGILState_Release(state);
       }
     }
@@ -226,16 +241,16 @@ class Watchdog {
   double timeout_s_;
   double grace_s_;
   std::function<void()> hard_stop_;
-  // the call: written by enter() under call_mutex_, read by the thread under it
-  std::mutex call_mutex_;
-  std::atomic<std::uint64_t> generation_{0};
+  // the call: written by enter() before it publishes call_, read by the watchdog after
+  std::atomic<std::uint64_t> call_{0};     // the generation << 1, | 1 while the call runs
+  std::atomic<bool> kicking_{false};       // the watchdog is deciding or sending a stop
   std::atomic<std::uint64_t> stopped_{0};  // the generation that was stopped (0: none)
-  std::atomic<bool> in_call_{false};
-  unsigned long thread_id_ = 0;
-  pthread_t target_{};
-  bool by_signal_ = false;
+  std::atomic<unsigned long> thread_id_{0};
+  std::atomic<pthread_t> target_{};
+  std::atomic<bool> by_signal_{false};
   // the script's thread only
   Watchdog* previous_ = nullptr;
+  std::uint64_t generation_ = 0;  // calls so far (the current or last one's number)
   int depth_ = 0;  // calls inside calls
   std::int64_t memory_cap_ = 0;  // bytes Python may hold during a call (0: no bound)
   bool tracing_ = false;
@@ -291,6 +306,13 @@ void installStopHandler() {
   }
 }
 
+/// `name` as an interned Python str.
+py::str interned(const char* name) {
+  PyObject* s = PyUnicode_InternFromString(name);
+  if (!s) throw py::error_already_set();
+  return py::reinterpret_steal<py::str>(s);
+}
+
 /// A path as Python names files: its bytes decoded as the file system's names are, a byte
 /// that is not UTF-8 as a surrogate (PEP 383), so a folder of any bytes can hold a model.
 py::object pyPath(const std::string& path) {
@@ -330,14 +352,19 @@ struct Engine::Impl : detail::Context {
 
   py::dict globals;
   py::object sim;
-  py::str key_self{"self"};
-  py::str key_token{"token"};
+  // the names inline code sees its arguments under, interned as the code's own names are (a
+  // dict finds them by identity)
+  py::str key_self = interned("self");
+  py::str key_token = interned("token");
+  py::str key_item = interned("item");
   std::vector<Compiled> compiled;
   std::unordered_map<std::string, py::object> expressions;  // breakpoint predicates, compiled
   std::vector<py::object> transition_views, place_views, node_views;
   // bare slot names (`c0`): each construct's scripts see its own sensor slots under their
   // names, bound in the globals before its script runs and unbound before another's
-  std::unordered_map<std::int64_t, std::vector<std::pair<py::str, py::object>>> bare;  // by owner key
+  std::vector<std::vector<std::pair<py::str, py::object>>> bare;  // by owner key (bareNames)
+  std::vector<bool> bare_known;  // bare[key] is made
+  bool any_bare = true;          // some construct may see a slot by bare name (a sensor slot in a plant)
   std::vector<std::pair<py::str, py::object>> bound;  // the names bound now, with what they hid
   std::int64_t bound_key = -1;     // whose they are (-1: nobody's)
   py::object geometries;           // gdpn_script.Geometries: on_enter/on_exit's `item`
@@ -355,15 +382,19 @@ struct Engine::Impl : detail::Context {
   std::string nodeName(net::NodeRef ref) const override {
     return callbacks.node_name ? callbacks.node_name(ref) : "#" + std::to_string(ref);
   }
-  py::object transitionView(net::TransitionId t) override {
+  py::object transitionView(net::TransitionId t) override { return py::reinterpret_borrow<py::object>(transitionSelf(t)); }
+  py::object placeView(net::PlaceId p) override { return py::reinterpret_borrow<py::object>(placeSelf(p)); }
+  /// Transition t's view, borrowed (the engine holds it): `self` of its scripts.
+  PyObject* transitionSelf(net::TransitionId t) {
     auto& v = transition_views[t];
     if (!v) v = detail::makeTransitionView(detail::refTo(*this), t);
-    return v;
+    return v.ptr();
   }
-  py::object placeView(net::PlaceId p) override {
+  /// Place p's view, borrowed (the engine holds it): `self` of its scripts.
+  PyObject* placeSelf(net::PlaceId p) {
     auto& v = place_views[p];
     if (!v) v = detail::makePlaceView(detail::refTo(*this), p);
-    return v;
+    return v.ptr();
   }
   py::object nodeView(net::NodeRef ref) override {
     if (ref < node_views.size()) {
@@ -547,16 +578,30 @@ def compile_mapped(code, filename, mode, lines):
       syntaxError(diags, what, s.indent);
       return false;
     }
-    out.code = py::reinterpret_steal<py::object>(code);
+    const py::object owned = py::reinterpret_steal<py::object>(code);
+    PyObject* fn = PyFunction_New(owned.ptr(), globals.ptr());
+    if (!fn) {
+      diags.error(s.loc, "cannot prepare " + what + ": " + formatPending());
+      return false;
+    }
+    out.code = py::reinterpret_steal<py::object>(fn);
     return true;
   }
 
   // ---- running ----
 
-  /// Runs module-level code (the globals, a script file) in the globals, under the watchdog.
+  /// Runs module-level code (a script file) in the globals, under the watchdog.
   PyObject* evalWatched(PyObject* code) {
     watchdog->enter();
     PyObject* result = PyEval_EvalCode(code, globals.ptr(), globals.ptr());
+    watchdog->leave();
+    return result;
+  }
+
+  /// Runs inline code (Compiled::code: the globals script) under the watchdog.
+  PyObject* runWatched(PyObject* code) {
+    watchdog->enter();
+    PyObject* result = PyObject_Vectorcall(code, nullptr, 0, nullptr);
     watchdog->leave();
     return result;
   }
@@ -725,8 +770,14 @@ def compile_mapped(code, filename, mode, lines):
   /// The sensor slots construct `key` sees by bare name: a place's own; a transition's, those
   /// of the places its arcs touch (the first arc's where two share a name).
   const std::vector<std::pair<py::str, py::object>>& bareNames(std::int64_t key) {
-    auto [it, fresh] = bare.try_emplace(key);
-    if (!fresh || !callbacks.plant) return it->second;
+    const auto k = static_cast<std::size_t>(key);
+    if (k >= bare.size()) {
+      bare.resize(k + 1);
+      bare_known.resize(k + 1);
+    }
+    auto& names = bare[k];
+    if (bare_known[k] || !callbacks.plant) return names;
+    bare_known[k] = true;
     for (int s = 0; s < net::kSlotCount; ++s) {
       const auto slot = static_cast<net::SlotId>(s);
       const std::string* path = nullptr;
@@ -737,17 +788,22 @@ def compile_mapped(code, filename, mode, lines):
       }
       if (!path || path->empty()) continue;
       if (const scene::Node* sensor = callbacks.plant->find(*path)) {
-        it->second.emplace_back(py::str(net::slotName(slot)), detail::makeSensorView(detail::refTo(*this), sensor->handle()));
+        names.emplace_back(py::str(net::slotName(slot)), detail::makeSensorView(detail::refTo(*this), sensor->handle()));
       }
     }
-    return it->second;
+    return names;
   }
 
   /// Binds the bare slot names of the construct script (kind, id) belongs to, unbinding the
   /// last construct's.
   void bindBare(ScriptKind kind, std::uint32_t id) {
+    if (!any_bare && bound.empty()) return;
     const std::int64_t key = ownerKey(kind, id);
     if (key == bound_key) return;
+    if (bound.empty() && (key < 0 || bareNames(key).empty())) {  // nothing to unbind, nothing to bind
+      bound_key = key;
+      return;
+    }
     // what a slot name hid (a global of the model's, a sensor of that name) comes back
     for (auto it = bound.rbegin(); it != bound.rend(); ++it) {
       if (it->second) PyDict_SetItem(globals.ptr(), it->first.ptr(), it->second.ptr());
@@ -782,8 +838,8 @@ def compile_mapped(code, filename, mode, lines):
     } else {
       PyDict_SetItem(globals.ptr(), key_self.ptr(), self);
       if (token) PyDict_SetItem(globals.ptr(), key_token.ptr(), token);
-      if (items) PyDict_SetItemString(globals.ptr(), "item", value);
-      result = PyEval_EvalCode(c.code.ptr(), globals.ptr(), globals.ptr());
+      if (items) PyDict_SetItem(globals.ptr(), key_item.ptr(), value);
+      result = PyObject_Vectorcall(c.code.ptr(), nullptr, 0, nullptr);
     }
     watchdog->leave();
     if (!result) fail(kind, id);
@@ -835,6 +891,7 @@ Engine::~Engine() {
   impl_->place_views.clear();
   impl_->node_views.clear();
   impl_->bare.clear();
+  impl_->bare_known.clear();
   impl_->bound.clear();
   impl_->geometries = py::object();
   impl_->sim = py::object();
@@ -869,6 +926,11 @@ std::unique_ptr<Engine> Engine::create(const net::Net& net, net::Kernel& kernel,
     const double share = options.memory_mib * 1024.0 * 1024.0;
     impl->watchdog->capMemory(std::max<std::int64_t>(
         1, detail::memoryHeld() + static_cast<std::int64_t>(std::min(share, 4.0e18))));
+  }
+  // no construct sees a slot by bare name where no place slot reads a sensor of a plant
+  impl->any_bare = false;
+  for (std::uint32_t ps = 0; impl->callbacks.plant && ps < net.placeSlots().size(); ++ps) {
+    if (!net.sensorPath(net::PlaceSlotId{ps}).empty()) impl->any_bare = true;
   }
   impl->transition_views.resize(net.transitions().size());
   impl->place_views.resize(net.places().size());
@@ -916,7 +978,7 @@ std::unique_ptr<Engine> Engine::create(const net::Net& net, net::Kernel& kernel,
     auto& c = impl->compiled[static_cast<std::size_t>(g)];
     ok = impl->compile(scripts[static_cast<std::size_t>(g)], false, "the globals script", c, diags, loaded);
     if (ok && c.code) {
-      PyObject* r = impl->evalWatched(c.code.ptr());
+      PyObject* r = impl->runWatched(c.code.ptr());
       if (!r) {
         const auto where = impl->located(impl->innermost());
         if (impl->stoppedLate()) {
@@ -943,36 +1005,36 @@ std::unique_ptr<Engine> Engine::create(const net::Net& net, net::Kernel& kernel,
 }
 
 bool Engine::guard(net::TransitionId t) {
-  return impl_->test(ScriptKind::Guard, t, impl_->transitionView(t).ptr(), nullptr);
+  return impl_->test(ScriptKind::Guard, t, impl_->transitionSelf(t), nullptr);
 }
 
 bool Engine::eligible(net::TermId term, net::NodeRef token) {
   const auto t = impl_->net.terms()[term].transition;
-  return impl_->test(ScriptKind::Predicate, term, impl_->transitionView(t).ptr(), impl_->nodeView(token).ptr());
+  return impl_->test(ScriptKind::Predicate, term, impl_->transitionSelf(t), impl_->nodeView(token).ptr());
 }
 
 void Engine::preFire(net::TransitionId t) {
-  impl_->run(ScriptKind::PreFire, t, impl_->transitionView(t).ptr(), nullptr);
+  impl_->run(ScriptKind::PreFire, t, impl_->transitionSelf(t), nullptr);
 }
 
 void Engine::inFire(net::TransitionId t) {
-  impl_->run(ScriptKind::InFire, t, impl_->transitionView(t).ptr(), nullptr);
+  impl_->run(ScriptKind::InFire, t, impl_->transitionSelf(t), nullptr);
 }
 
 void Engine::postFire(net::TransitionId t) {
-  impl_->run(ScriptKind::PostFire, t, impl_->transitionView(t).ptr(), nullptr);
+  impl_->run(ScriptKind::PostFire, t, impl_->transitionSelf(t), nullptr);
 }
 
 void Engine::onDeposit(net::PlaceSlotId ps, const net::NodeRef* token) {
   const auto place = impl_->net.placeSlots()[ps].place;
   py::object tok = token ? impl_->nodeView(*token) : py::none();
-  impl_->run(ScriptKind::OnDeposit, ps, impl_->placeView(place).ptr(), tok.ptr());
+  impl_->run(ScriptKind::OnDeposit, ps, impl_->placeSelf(place), tok.ptr());
 }
 
 void Engine::onRemove(net::PlaceSlotId ps, const net::NodeRef* token) {
   const auto place = impl_->net.placeSlots()[ps].place;
   py::object tok = token ? impl_->nodeView(*token) : py::none();
-  impl_->run(ScriptKind::OnRemove, ps, impl_->placeView(place).ptr(), tok.ptr());
+  impl_->run(ScriptKind::OnRemove, ps, impl_->placeSelf(place), tok.ptr());
 }
 
 bool Engine::condition(net::TermId term, scene::NodeHandle sensor) {
@@ -990,7 +1052,7 @@ bool Engine::condition(net::TermId term, scene::NodeHandle sensor) {
   impl_->globals[name] = view;
   impl_->globals["value"] = view;
   const bool holds =
-      impl_->test(ScriptKind::Condition, term, impl_->transitionView(t.transition).ptr(), nullptr, view.ptr());
+      impl_->test(ScriptKind::Condition, term, impl_->transitionSelf(t.transition), nullptr, view.ptr());
   impl_->bound_key = -2;
   return holds;
 }
@@ -1011,7 +1073,7 @@ void Engine::sensorEvent(net::PlaceSlotId ps, ScriptKind kind, scene::NodeHandle
   const bool with_item = kind == ScriptKind::OnEnter || kind == ScriptKind::OnExit;
   py::object arg = with_item ? impl_->itemList(item, r.items())
                              : (kind == ScriptKind::OnSample && !r.items().empty() ? py::object(items) : value);
-  impl_->runSensor(index, kind, ps, impl_->placeView(net.placeSlots()[ps].place).ptr(), with_item, items.ptr(),
+  impl_->runSensor(index, kind, ps, impl_->placeSelf(net.placeSlots()[ps].place), with_item, items.ptr(),
                    arg.ptr());
 }
 
