@@ -116,8 +116,10 @@ Analysis analyze(const net::Net& net, std::string path, const AnalysisOptions& o
 
 std::vector<std::pair<std::string, net::ExploreStop>> stoppedPhases(const Analysis& a) {
   std::vector<std::pair<std::string, net::ExploreStop>> out;
-  if (!a.invariants.complete) {
-    // the list that was cut, by name: the yes-or-no answers beside them are whole
+  if (!a.invariants.answered()) {
+    // the list that was cut, by name: the yes-or-no answers beside them are whole (a list cut
+    // by the candidates' budget alone, too long to give, leaves no answer open: it is named
+    // where the invariants are shown)
     const auto& inv = a.invariants;
     out.emplace_back(!inv.p_complete && !inv.t_complete ? "invariants"
                      : !inv.p_complete                  ? "P-invariants"
@@ -287,6 +289,7 @@ std::string analysisJson(const net::Net& net, const Analysis& a) {
   ij["p_complete"] = inv.p_complete;
   ij["t_complete"] = inv.t_complete;
   ij["stop"] = net::stopReason(inv.stop);
+  ij["answered"] = inv.answered();  // the yes-or-no answers whole, a list perhaps too long to give
   ij["conservative"] = inv.conservative;
   ij["structurally_bounded"] = inv.structurally_bounded;
   ij["consistent"] = inv.consistent;
@@ -468,7 +471,9 @@ void printAnalysis(std::ostream& out, const net::Net& net, const Analysis& a) {
   constexpr std::size_t kShown = 20, kMostPlaces = 8;
   const auto& inv = a.invariants;
   const char* cut = inv.p_complete == inv.t_complete ? "" : inv.p_complete ? "T-invariants " : "P-invariants ";
-  out << "invariants" << (inv.complete ? "" : std::string(" (") + cut + net::stopReason(inv.stop) + ")") << ":\n";
+  std::string why;
+  if (!inv.complete) why = std::string(" (") + cut + (inv.answered() ? "listed in part: too many to list" : net::stopReason(inv.stop)) + ")";
+  out << "invariants" << why << ":\n";
   if (net.colouring() && !net.countsExact()) {
     out << "  of the counts: none sought, as what some arcs move depends on the binding\n";
   } else {

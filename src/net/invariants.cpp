@@ -453,8 +453,11 @@ Invariants invariants(const Net& net, const InvariantOptions& options) {
   out.t_complete = budget.halts() == halts && !budget.exhausted();
   // yes or no from the lists where they are whole; where one was cut, from a linear program
   // (some y >= 1 with y·C = 0 exists or not), which a long list does not hold up
-  auto byProgram = [](const std::vector<Sparse>& rows, std::size_t columns, bool equality, bool listed) {
-    return listed || positiveSolution(rows, columns, equality).value_or(false);
+  auto byProgram = [&out](const std::vector<Sparse>& rows, std::size_t columns, bool equality, bool listed) {
+    if (listed) return true;
+    const std::optional<bool> found = positiveSolution(rows, columns, equality);
+    out.decided = out.decided && found.has_value();
+    return found.value_or(false);
   };
   out.conservative = covers(out.p, places);
   if (!out.p_complete) out.conservative = byProgram(by_place, transitions, true, out.conservative);

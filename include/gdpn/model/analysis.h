@@ -56,9 +56,10 @@ struct Analysis {
   /// What was left out of the model before the net was analysed (a hybrid net's continuous
   /// part), beside what the untimed view leaves out (untimedCaveats).
   std::vector<std::string> notes;
-  /// True when every phase finished.
+  /// True when every phase finished (a list of minimal semiflows too long to give leaves no
+  /// answer open: net::Invariants::answered()).
   [[nodiscard]] bool complete() const {
-    return space.complete && invariants.complete && cycles_stop == net::ExploreStop::Done;
+    return space.complete && invariants.answered() && cycles_stop == net::ExploreStop::Done;
   }
 };
 

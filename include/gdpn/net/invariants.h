@@ -60,6 +60,14 @@ struct Invariants {
   bool structurally_bounded = false;   ///< some y > 0 on every place slot has y·C <= 0 (likewise)
   bool consistent = false;             ///< some x > 0 on every transition has C·x = 0 (likewise)
   std::vector<std::int64_t> bound;     ///< per place slot: a bound from the invariants, -1 when none
+  /// conservative, structurally_bounded and consistent are decided: by whole lists, or by
+  /// linear programs where a list was cut (false only where the solver failed)
+  bool decided = true;
+  /// Every answer is whole: nothing was cut, or only a list of minimal semiflows, by the
+  /// candidates' budget (there are too many to list: a contest net has 83,616,500 minimal
+  /// T-invariants), while the yes-or-no answers are decided. A time, memory or 64-bit limit
+  /// leaves answers open.
+  [[nodiscard]] bool answered() const { return complete || (stop == ExploreStop::Candidates && decided); }
 };
 
 /// The incidence of transition `t` on place slot `ps`: tokens it puts there minus tokens it takes.

@@ -284,8 +284,9 @@ inline std::uint64_t hashWords(const std::uint64_t* m, std::size_t n) {
 /// probes never touch the markings.
 class Store {
  public:
-  /// Markings per chunk of the arena: 2^18.
-  static constexpr std::size_t kArenaShift = 18;
+  /// Markings per chunk of the arena: 2^16 (a chunk of markings of a few bytes is small, for
+  /// a small search; from 2 MiB worth on, chunks are carved from huge pages all the same).
+  static constexpr std::size_t kArenaShift = 16;
   /// With `index`, each state has 32 bits beside its marking (zero when stored): what a
   /// search keeps per state, read in the same cache line as the marking. `derived`: the
   /// slots `layout` leaves out of what is stored, in the order they are worked out.
