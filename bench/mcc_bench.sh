@@ -6,8 +6,8 @@
 # The runs take turns (gdpn one thread, gdpn two, LoLA; again), REPEATS of each (default 3);
 # each figure is the median: wall-clock seconds, and peak resident memory (the process's
 # maximum resident set, /usr/bin/time) per state, in bytes. The ratios are LoLA's figure over
-# gdpn's one-thread figure: above 1, gdpn is faster or leaner. "2 thr" is the two-thread time
-# over the one-thread time (below 1: faster). Each gdpn run's state and edge counts are
+# gdpn's one-thread figure: above 1, gdpn is faster or leaner; "2 thr" is gdpn's with two
+# threads. Each gdpn run's state and edge counts are
 # checked against bench/data/mcc/reference.tsv, and LoLA's state count too; a wrong count
 # stops the script.
 # Needs a Release build (cmake --preset ci && cmake --build build/ci).
@@ -45,8 +45,8 @@ run() {
   tail -n 1 "$work/time"
 }
 
-printf '%-36s %8s %7s %7s %6s %7s %6s %7s %7s %7s %6s\n' "" "" "time" "[s]" "" "" "" "memory" "[B/state]" "" ""
-printf '%-36s %8s %7s %7s %6s %7s %6s %7s %7s %7s %6s\n' "net" "states" "gdpn" "2 thr" "" "LoLA" "ratio" "gdpn" "2 thr" "LoLA" "ratio"
+printf '%-36s %8s  %-31s  %-31s\n' "" "" "time [s]" "peak memory a state [bytes]"
+printf '%-36s %8s  %7s %7s %7s %6s  %7s %7s %7s %6s\n' "net" "states" "gdpn" "2 thr" "LoLA" "ratio" "gdpn" "2 thr" "LoLA" "ratio"
 for net in "${nets[@]}"; do
   IFS=$'\t' read -r _ states edges _ < <(grep -P "^$net\t" bench/data/mcc/reference.tsv)
   [[ -n ${states:-} ]] || { echo "$net: not in bench/data/mcc/reference.tsv" >&2; exit 2; }
@@ -67,10 +67,10 @@ for net in "${nets[@]}"; do
   per() { echo "$1 * 1024 / $states" | bc -l; }
   if [[ -n $lola ]]; then
     TL=$(printf '%s\n' "${tl[@]}" | median) ML=$(printf '%s\n' "${ml[@]}" | median)
-    printf '%-36s %8d %7.2f %7.2f %6s %7.2f %6.1f %7.1f %7.1f %7.1f %6.2f\n' "$net" "$states" "$T1" "$(echo "$T2 / $T1" | bc -l)" "" \
-      "$TL" "$(echo "$TL / $T1" | bc -l)" "$(per "$M1")" "$(per "$M2")" "$(per "$ML")" "$(echo "$ML / $M1" | bc -l)"
+    printf '%-36s %8d  %7.2f %7.2f %7.2f %6.2f  %7.1f %7.1f %7.1f %6.2f\n' "$net" "$states" "$T1" "$T2" "$TL" \
+      "$(echo "$TL / $T1" | bc -l)" "$(per "$M1")" "$(per "$M2")" "$(per "$ML")" "$(echo "$ML / $M1" | bc -l)"
   else
-    printf '%-36s %8d %7.2f %7.2f %6s %7s %6s %7.1f %7.1f %7s %6s\n' "$net" "$states" "$T1" "$(echo "$T2 / $T1" | bc -l)" "" \
-      "-" "-" "$(per "$M1")" "$(per "$M2")" "-" "-"
+    printf '%-36s %8d  %7.2f %7.2f %7s %6s  %7.1f %7.1f %7s %6s\n' "$net" "$states" "$T1" "$T2" "-" "-" \
+      "$(per "$M1")" "$(per "$M2")" "-" "-"
   fi
 done

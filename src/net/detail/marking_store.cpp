@@ -9,7 +9,7 @@ Store::Store(Layout layout, bool index, std::vector<Derived> derived)
     : layout_(std::move(layout)),
       key_bytes_(layout_.keyBytes()),
       index_bytes_(index ? sizeof(std::uint32_t) : 0),
-      arena_(key_bytes_ + index_bytes_) {
+      arena_(arenaShape(key_bytes_ + index_bytes_).first, arenaShape(key_bytes_ + index_bytes_).second) {
   for (const Derived& d : derived) {
     Rule r{d.slot, static_cast<std::uint32_t>(bit_terms_.size()), static_cast<std::uint32_t>(field_terms_.size()), d.constant,
            d.divisor};
@@ -83,7 +83,8 @@ void Store::rehash(std::size_t capacity) {
 }
 
 void Store::relayout(Layout layout) {
-  Chunked<unsigned char, kArenaShift> next(layout.keyBytes() + index_bytes_);
+  const auto [stride, shift] = arenaShape(layout.keyBytes() + index_bytes_);
+  Chunked<unsigned char> next(stride, shift);
   std::vector<std::int64_t> counts(layout_.width());
   std::vector<std::uint64_t> before(layout_.words()), after(layout.words());
   for (std::size_t s = 0; s < size(); ++s) {

@@ -187,10 +187,12 @@ template <typename T, std::size_t Shift = 16>
 class Chunked {
  public:
   explicit Chunked(std::size_t stride = 1) : stride_(stride) {}
-  T* at(std::size_t i) { return chunks_[i >> kShift].get() + (i & kMask) * stride_; }
-  const T* at(std::size_t i) const { return chunks_[i >> kShift].get() + (i & kMask) * stride_; }
+  /// Chunks of 2^`shift` elements instead of 2^Shift (chunkElements() is then not theirs).
+  Chunked(std::size_t stride, std::size_t shift) : stride_(stride), shift_(shift), mask_((std::size_t{1} << shift) - 1) {}
+  T* at(std::size_t i) { return chunks_[i >> shift_].get() + (i & mask_) * stride_; }
+  const T* at(std::size_t i) const { return chunks_[i >> shift_].get() + (i & mask_) * stride_; }
   T* append() {
-    if ((size_ >> kShift) >= chunks_.size()) grow();
+    if ((size_ >> shift_) >= chunks_.size()) grow();
     return at(size_++);
   }
   void push(const T& x) { *append() = x; }
@@ -198,21 +200,21 @@ class Chunked {
   /// on to a new chunk where the current one has too little room (the rest of it set to
   /// `pad`); the index of the first.
   std::size_t appendRun(std::size_t n, const T& pad) {
-    if ((size_ & kMask) + n > kMask + 1) {
-      std::fill(at(size_), at(size_ | kMask) + stride_, pad);
-      size_ = (size_ | kMask) + 1;
+    if ((size_ & mask_) + n > mask_ + 1) {
+      std::fill(at(size_), at(size_ | mask_) + stride_, pad);
+      size_ = (size_ | mask_) + 1;
     }
-    while (((size_ + n - 1) >> kShift) >= chunks_.size()) grow();
+    while (((size_ + n - 1) >> shift_) >= chunks_.size()) grow();
     const std::size_t first = size_;
     size_ += n;
     return first;
   }
-  /// The elements one chunk holds.
+  /// The elements one chunk holds (of the default size, 2^Shift).
   static constexpr std::size_t chunkElements() { return kMask + 1; }
   /// The elements in use of chunk `c` (of size() / chunkElements(), rounded up): the first,
   /// and how many.
   std::pair<const T*, std::size_t> chunk(std::size_t c) const {
-    return {chunks_[c].get(), std::min(size_ - (c << kShift), kMask + 1) * stride_};
+    return {chunks_[c].get(), std::min(size_ - (c << shift_), mask_ + 1) * stride_};
   }
   T& operator[](std::size_t i) { return *at(i); }
   const T& operator[](std::size_t i) const { return *at(i); }
@@ -243,7 +245,7 @@ class Chunked {
       if (owns) std::free(p);
     }
   };
-  std::size_t chunkBytes() const { return (kMask + 1) * stride_ * sizeof(T); }
+  std::size_t chunkBytes() const { return (mask_ + 1) * stride_ * sizeof(T); }
   /// Room for one more chunk at least: a chunk of its own while chunks are large or few, else
   /// a huge page's worth of them.
   void grow() {
@@ -256,11 +258,12 @@ class Chunked {
     // push_back would: an arena of 10^4 chunks grows it as often)
     if (chunks_.capacity() < chunks_.size() + n) chunks_.reserve(std::max(chunks_.size() + n, 2 * chunks_.capacity()));
     T* p = static_cast<T*>(core::allocateLarge(block));
-    std::uninitialized_default_construct_n(p, n * (kMask + 1) * stride_);
-    for (std::size_t i = 0; i < n; ++i) chunks_.emplace_back(p + i * (kMask + 1) * stride_, Free{i == 0});
+    std::uninitialized_default_construct_n(p, n * (mask_ + 1) * stride_);
+    for (std::size_t i = 0; i < n; ++i) chunks_.emplace_back(p + i * (mask_ + 1) * stride_, Free{i == 0});
     held_ += block;
   }
   std::size_t stride_;
+  std::size_t shift_ = kShift, mask_ = kMask;
   std::size_t size_ = 0;
   std::size_t held_ = 0;  // bytes of the blocks taken
   std::vector<std::unique_ptr<T[], Free>> chunks_;
@@ -284,9 +287,13 @@ inline std::uint64_t hashWords(const std::uint64_t* m, std::size_t n) {
 /// probes never touch the markings.
 class Store {
  public:
-  /// Markings per chunk of the arena: 2^16 (a chunk of markings of a few bytes is small, for
-  /// a small search; from 2 MiB worth on, chunks are carved from huge pages all the same).
-  static constexpr std::size_t kArenaShift = 16;
+  /// The bytes a state takes in the arena (`bytes`, past 64 rounded up to a multiple of 64)
+  /// and log2 of the states a chunk holds: each chunk a whole number of 2 MiB pages (an
+  /// odd one, never rounded up to the next), from 2 MiB to about a GiB.
+  static std::pair<std::size_t, std::size_t> arenaShape(std::size_t bytes) {
+    if (bytes > 64) bytes = (bytes + 63) / 64 * 64;
+    return {bytes, 21 - std::min<std::size_t>(21, static_cast<std::size_t>(std::countr_zero(bytes)))};
+  }
   /// With `index`, each state has 32 bits beside its marking (zero when stored): what a
   /// search keeps per state, read in the same cache line as the marking. `derived`: the
   /// slots `layout` leaves out of what is stored, in the order they are worked out.
@@ -295,8 +302,9 @@ class Store {
   const Layout& layout() const { return layout_; }
   /// The words of a packed marking, the slots left out included.
   std::size_t words() const { return layout_.words(); }
-  /// Bytes a stored state takes: its marking's kept part, and its index where kept.
-  std::size_t stateBytes() const { return key_bytes_ + index_bytes_; }
+  /// Bytes a stored state takes: its marking's kept part, and its index where kept (padded
+  /// for wide markings: arenaShape()).
+  std::size_t stateBytes() const { return arenaShape(key_bytes_ + index_bytes_).first; }
   std::size_t size() const { return arena_.size(); }
   /// Writes state `s`'s packed marking into `out` (words() words), the slots left out
   /// worked out from the others.
@@ -419,7 +427,7 @@ class Store {
   std::size_t key_bytes_ = 0;    // Layout::keyBytes()
   std::size_t index_bytes_ = 0;  // 4 with an index, else 0
   std::uint32_t id_mask_ = 0;    // the bits of a table entry that hold the id
-  Chunked<unsigned char, kArenaShift> arena_;
+  Chunked<unsigned char> arena_;
   std::vector<std::uint32_t, core::LargeAllocator<std::uint32_t>> table_;
   // the slots left out, worked out in turn as a marking is read: a sum of weighted counts of
   // set bits over one-token fields by word, and of weighted counts of the other fields
