@@ -31,12 +31,19 @@ Store::Store(Layout layout, bool index, std::vector<Derived> derived)
     }
   }
   rules_.push_back({0, static_cast<std::uint32_t>(bit_terms_.size()), static_cast<std::uint32_t>(field_terms_.size()), 0, 1});
+  low_mask_ = key_bytes_ >= 8 ? ~std::uint64_t{0} : (std::uint64_t{1} << (8 * key_bytes_)) - 1;
   rehash(1024);
 }
 
 void Store::load(StateId s, std::uint64_t* out) const {
-  std::fill(out, out + words(), 0);
-  std::memcpy(reinterpret_cast<unsigned char*>(out), arena_.at(s), key_bytes_);
+  // word by word (little-endian: a key's bytes are its words' low bytes first), the last one
+  // read where the one before ends; then the words that hold no kept field, zero
+  const unsigned char* p = arena_.at(s);
+  const std::size_t full = key_bytes_ / 8, rest = key_bytes_ % 8;
+  std::size_t w = 0;
+  for (; w < full; ++w) out[w] = word(p + 8 * w);
+  if (rest != 0) out[w++] = key_bytes_ < 8 ? word(p) & low_mask_ : word(p + key_bytes_ - 8) >> (8 * (8 - rest));
+  for (; w < words(); ++w) out[w] = 0;
   for (std::size_t r = 0; r + 1 < rules_.size(); ++r) {
     const Rule& rule = rules_[r];
     std::int64_t sum = 0;
@@ -98,6 +105,7 @@ void Store::relayout(Layout layout) {
   }
   layout_ = std::move(layout);
   key_bytes_ = layout_.keyBytes();
+  low_mask_ = key_bytes_ >= 8 ? ~std::uint64_t{0} : (std::uint64_t{1} << (8 * key_bytes_)) - 1;
   arena_ = std::move(next);
   rehash(table_.size());
 }
