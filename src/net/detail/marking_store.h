@@ -287,10 +287,11 @@ inline std::uint64_t hashWords(const std::uint64_t* m, std::size_t n) {
 /// probes never touch the markings.
 class Store {
  public:
-  /// The bytes a state takes in the arena (`bytes`, past 64 rounded up to a multiple of 64)
-  /// and log2 of the states a chunk holds: each chunk a whole number of 2 MiB pages (an
-  /// odd one, never rounded up to the next), from 2 MiB to about a GiB.
-  /// Eight bytes at least, so that a word is read from any state without passing its chunk.
+  /// The bytes a state takes in the arena (`bytes`, eight at least, so that a word is read
+  /// from any state without passing its chunk; past 64 rounded up to a multiple of 64) and
+  /// log2 of the states a chunk holds: each chunk an odd number of 2 MiB pages, never rounded
+  /// up to the next (as many as the bytes a state over its largest power-of-two factor, from
+  /// 63 for small markings to n for markings of n times 64 bytes).
   static std::pair<std::size_t, std::size_t> arenaShape(std::size_t bytes) {
     bytes = std::max<std::size_t>(bytes, 8);
     if (bytes > 64) bytes = (bytes + 63) / 64 * 64;
