@@ -14,7 +14,9 @@ Store::Store(Layout layout, bool index, std::vector<Derived> derived)
     Rule r{d.slot, static_cast<std::uint32_t>(bit_terms_.size()), static_cast<std::uint32_t>(field_terms_.size()), d.constant,
            d.divisor};
     rules_.push_back(r);
-    for (const auto& [slot, weight] : d.terms) {
+    for (const auto& term : d.terms) {
+      const std::uint32_t slot = term.first;
+      const std::int64_t weight = term.second;  // named, not bound: a lambda below reads it
       const Layout::Field& f = layout_.field(slot);
       if (layout_.bits(slot) != 1 || f.omega) {
         field_terms_.push_back({slot, weight});
