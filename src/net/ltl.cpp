@@ -10,6 +10,7 @@
 #include <tuple>
 #include <utility>
 
+#include "detail/lazy_graph.h"
 #include "detail/query_graph.h"
 #include "detail/state_check.h"
 
@@ -343,15 +344,15 @@ class KeyIndex {
 /// back edges close them, so an accepting cycle is seen as soon as its last edge is, not when
 /// its whole component is done. Then the lasso: the depth-first path to the component's root
 /// and a cycle from the root through every acceptance set back to it.
+template <class Graph>
 class Product {
  public:
   /// Whether a lasso was found, none exists, or a limit stopped the search.
   enum class Search : std::uint8_t { Found, None, Stopped };
   static constexpr std::uint32_t kNone = KeyIndex::kNone;
 
-  Product(const StateGraph& g, const Automaton& a, const std::vector<std::vector<std::uint8_t>>& atom,
-          const ExploreOptions& limits)
-      : g_(g), a_(a), atom_(atom), limits_(limits), q_(a.states.size()),
+  Product(Graph& g, const Automaton& a, const ExploreOptions& limits)
+      : g_(g), a_(a), limits_(limits), q_(a.states.size()),
         all_(a.sets >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << a.sets) - 1) {}
 
   Search search(ExploreStop& stop) {
@@ -366,7 +367,7 @@ class Product {
         }
         Frame& f = frames_.back();
         const StateId s = markingOf(f.v);
-        const std::uint64_t end = endOf(s);
+        const std::uint64_t end = endOf(s);  // s was expanded when the frame was made
         if (f.edge < end) {
           const auto& nexts = a_.states[stateOf(f.v)].next;
           if (f.next >= nexts.size()) {
@@ -413,7 +414,7 @@ class Product {
   /// component, then a cycle inside it through every acceptance set back to where it entered
   /// (empty where that is a dead marking repeating itself), and the marking the cycle starts
   /// from.
-  void lasso(std::vector<TransitionId>& prefix, std::vector<TransitionId>& cycle, StateId& at) const {
+  void lasso(std::vector<TransitionId>& prefix, std::vector<TransitionId>& cycle, StateId& at) {
     const std::uint32_t root = roots_.back().v;
     auto inside = [&](std::uint32_t x) { return x >= root && !dead_[x]; };
     std::uint32_t entry = kNone;
@@ -446,20 +447,21 @@ class Product {
   std::uint64_t keyOf(StateId s, std::uint32_t state) const { return std::uint64_t{s} * q_ + state; }
   StateId markingOf(std::uint32_t v) const { return static_cast<StateId>(key_of_[v] / q_); }
   std::uint32_t stateOf(std::uint32_t v) const { return static_cast<std::uint32_t>(key_of_[v] % q_); }
-  // a dead marking has one step, to itself
-  std::uint64_t endOf(StateId s) const { return g_.outDegree(s) == 0 ? g_.first[s] + 1 : g_.first[s + 1]; }
-  StateId target(StateId s, std::uint64_t edge) const { return g_.outDegree(s) == 0 ? s : g_.succ[edge]; }
+  // a dead marking has one step, to itself (s expanded)
+  std::uint64_t endOf(StateId s) const { return g_.degree(s) == 0 ? g_.end(s) + 1 : g_.end(s); }
+  StateId target(StateId s, std::uint64_t edge) const { return g_.degree(s) == 0 ? s : g_.succ(edge); }
 
   bool reads(StateId s, std::uint32_t state) const {
     const auto& st = a_.states[state];
-    return std::all_of(st.atoms.begin(), st.atoms.end(), [&](std::uint32_t x) { return atom_[x][s] != 0; }) &&
-           std::none_of(st.not_atoms.begin(), st.not_atoms.end(), [&](std::uint32_t x) { return atom_[x][s] != 0; });
+    return std::all_of(st.atoms.begin(), st.atoms.end(), [&](std::uint32_t x) { return g_.atom(x, s); }) &&
+           std::none_of(st.not_atoms.begin(), st.not_atoms.end(), [&](std::uint32_t x) { return g_.atom(x, s); });
   }
 
   void visit(std::uint64_t key) {
     const auto v = static_cast<std::uint32_t>(key_of_.size());
     if ((v & 0xfff) == 0) {
-      const std::uint64_t bytes = index_.bytes() + key_of_.capacity() * 9 + (live_.capacity() + frames_.capacity() * 4) * 4;
+      const std::uint64_t bytes = g_.bytes() + index_.bytes() + key_of_.capacity() * 9 +
+                                  (live_.capacity() + frames_.capacity() * 4) * 4;
       stop_ = v >= limits_.max_states ? ExploreStop::MaxStates : passedLimit(limits_, bytes);
     }
     index_.insert(key, v);
@@ -467,19 +469,19 @@ class Product {
     dead_.push_back(false);
     live_.push_back(v);
     roots_.push_back({v, a_.states[key % q_].accepting});
-    frames_.push_back({v, g_.first[key / q_], 0});
+    frames_.push_back({v, g_.first(static_cast<StateId>(key / q_)), 0});
   }
 
   /// Breadth first from `sources` (at least one step) through states where `allowed` holds to
   /// the nearest one where `goal` holds; appends the transitions on the way and returns it.
   template <class Allowed, class Goal>
   std::uint32_t walk(const std::vector<std::uint32_t>& sources, Allowed allowed, Goal goal,
-                     std::vector<TransitionId>& out) const {
+                     std::vector<TransitionId>& out) {
     std::vector<std::uint32_t> parent(key_of_.size(), kNone);
     std::vector<std::uint32_t> queue = sources;
     auto step = [&](std::uint32_t x, auto visit) {
       const StateId s = markingOf(x);
-      for (std::uint64_t e = g_.first[s]; e < endOf(s); ++e) {
+      for (std::uint64_t e = g_.first(s); e < endOf(s); ++e) {
         for (std::uint32_t to : a_.states[stateOf(x)].next) {
           const StateId w = target(s, e);
           if (!reads(w, to)) continue;
@@ -508,7 +510,7 @@ class Product {
       const std::uint32_t before = parent[z];
       step(before, [&](std::uint32_t y, std::uint64_t e) {
         if (y != z) return true;
-        if (g_.outDegree(markingOf(before)) != 0) way.push_back(g_.via[e]);
+        if (g_.degree(markingOf(before)) != 0) way.push_back(g_.via(e));
         return false;
       });
       z = before;
@@ -518,9 +520,8 @@ class Product {
     return reached;
   }
 
-  const StateGraph& g_;
+  Graph& g_;
   const Automaton& a_;
-  const std::vector<std::vector<std::uint8_t>>& atom_;
   const ExploreOptions& limits_;
   const std::size_t q_;
   const std::uint64_t all_;
@@ -534,48 +535,110 @@ class Product {
   std::vector<std::uint32_t> starts_;  // the initial product states
 };
 
+
+/// The whole graph seen as a Product searches it, the atoms worked out for every marking.
+class WholeView {
+ public:
+  WholeView(const Net& net, const StateGraph& g, const std::vector<const Formula*>& atoms)
+      : g_(g), atoms_(atoms.size()) {
+    StateCheck check(net, g.store->layout());
+    atom_.resize(g.size() * atoms_);
+    std::vector<std::uint64_t> m;
+    for (StateId s = 0; s < g.size(); ++s) {
+      const std::uint64_t* x = g.store->load(s, m);
+      for (std::size_t k = 0; k < atoms_; ++k) atom_[s * atoms_ + k] = check.holds(*atoms[k], x) ? 1 : 0;
+    }
+  }
+  std::uint64_t first(StateId s) const { return g_.first[s]; }
+  std::uint64_t end(StateId s) const { return g_.first[s + 1]; }
+  std::uint32_t degree(StateId s) const { return static_cast<std::uint32_t>(g_.outDegree(s)); }
+  StateId succ(std::uint64_t e) const { return g_.succ[e]; }
+  TransitionId via(std::uint64_t e) const { return g_.via[e]; }
+  bool atom(std::size_t k, StateId s) const { return atom_[s * atoms_ + k] != 0; }
+  std::uint64_t bytes() const { return 0; }  // held before the product, not by it
+
+ private:
+  const StateGraph& g_;
+  std::size_t atoms_;
+  std::vector<std::uint8_t> atom_;
+};
+
+/// The automaton of an LTL formula (A or E over a path formula): of the path formula, negated
+/// for A. Nullopt, with `out.unsupported` said, for a formula it cannot make.
+std::optional<Automaton> automatonOf(const Formula& f, Nnf& nnf, QueryAnswer& out) {
+  if ((f.kind != FormulaKind::All && f.kind != FormulaKind::Exists) || f.operands.size() != 1) {
+    out.unsupported = "an LTL formula starts with A or E";
+    return std::nullopt;
+  }
+  // A p holds when no path satisfies not p; E p when some path satisfies p
+  const std::uint32_t root = nnf.of(f.operands[0], f.kind == FormulaKind::All);
+  if (nnf.nodes.size() > 60) {
+    out.unsupported = "LTL formulas of more than 60 subformulas are not answered yet";
+    return std::nullopt;
+  }
+  Automaton a = tableau(nnf, root);
+  if (a.sets > 64) {
+    out.unsupported = "LTL formulas of more than 64 until operators are not answered yet";
+    return std::nullopt;
+  }
+  return a;
+}
+
+/// Searches the product of `g` and `a` for `f` (A or E) and fills in `out`: the verdict and,
+/// where a lasso shows it, the lasso.
+template <class Graph>
+void searchProduct(Graph& g, const Store& store, const Automaton& a, const Formula& f, const ExploreOptions& limits,
+                   QueryAnswer& out) {
+  const bool all = f.kind == FormulaKind::All;
+  Product<Graph> product(g, a, limits);
+  typename Product<Graph>::Search found = Product<Graph>::Search::Stopped;
+  try {
+    found = product.search(out.stop);
+  } catch (const Stopped&) {
+    return;  // the caller says why
+  }
+  if (found == Product<Graph>::Search::Stopped) return;
+  out.verdict = (found == Product<Graph>::Search::Found) == all ? Verdict::False : Verdict::True;
+  if (found == Product<Graph>::Search::Found) {
+    // the path that shows it: for A, one that breaks the formula; for E, one that keeps it
+    StateId at = 0;
+    product.lasso(out.path, out.cycle, at);
+    out.lasso = true;
+    std::vector<std::uint64_t> m;
+    out.marking.resize(store.layout().width());
+    store.layout().unpack(store.load(at, m), out.marking.data());
+    out.has_marking = true;
+  }
+}
+
 }  // namespace
 
 QueryAnswer answerLtl(const Net& net, const StateGraph& g, const Formula& f, const ExploreOptions& limits) {
   QueryAnswer out;
   out.states = g.size();
-  if ((f.kind != FormulaKind::All && f.kind != FormulaKind::Exists) || f.operands.size() != 1) {
-    out.unsupported = "an LTL formula starts with A or E";
-    return out;
-  }
-  // A p holds when no path satisfies not p; E p when some path satisfies p
-  const bool all = f.kind == FormulaKind::All;
   Nnf nnf;
-  const std::uint32_t root = nnf.of(f.operands[0], all);
-  if (nnf.nodes.size() > 60) {
-    out.unsupported = "LTL formulas of more than 60 subformulas are not answered yet";
-    return out;
-  }
-  const Automaton a = tableau(nnf, root);
-  if (a.sets > 64) {
-    out.unsupported = "LTL formulas of more than 64 until operators are not answered yet";
-    return out;
-  }
-  StateCheck check(net, g.store->layout());
-  std::vector<std::vector<std::uint8_t>> atom(nnf.atoms.size(), std::vector<std::uint8_t>(g.size()));
-  std::vector<std::uint64_t> m;
-  for (std::size_t k = 0; k < nnf.atoms.size(); ++k) {
-    for (StateId s = 0; s < g.size(); ++s) atom[k][s] = check.holds(*nnf.atoms[k], g.store->load(s, m));
-  }
+  const auto a = automatonOf(f, nnf, out);
+  if (!a) return out;
   out.technique = "EXPLICIT LTL_TABLEAU";
-  Product product(g, a, atom, limits);
-  const Product::Search found = product.search(out.stop);
-  if (found == Product::Search::Stopped) return out;
-  out.verdict = (found == Product::Search::Found) == all ? Verdict::False : Verdict::True;
-  if (found == Product::Search::Found) {
-    // the path that shows it: for A, one that breaks the formula; for E, one that keeps it
-    StateId at = 0;
-    product.lasso(out.path, out.cycle, at);
-    out.lasso = true;
-    out.marking.resize(g.store->layout().width());
-    g.store->layout().unpack(g.store->load(at, m), out.marking.data());
-    out.has_marking = true;
+  WholeView view(net, g, nnf.atoms);
+  searchProduct(view, *g.store, *a, f, limits, out);
+  return out;
+}
+
+QueryAnswer answerLtlOnTheFly(const Net& net, const Formula& f, const ExploreOptions& limits) {
+  QueryAnswer out;
+  Nnf nnf;
+  const auto a = automatonOf(f, nnf, out);
+  if (!a) return out;
+  out.technique = "EXPLICIT LTL_TABLEAU ON_THE_FLY";
+  LazyGraph g(net, limits, nnf.atoms);
+  if (!g.ok()) {
+    out.stop = ExploreStop::Overflow;
+    return out;
   }
+  searchProduct(g, g.store(), *a, f, limits, out);
+  if (out.verdict == Verdict::Unknown && out.stop == ExploreStop::Done) out.stop = g.stop();
+  out.states = g.size();
   return out;
 }
 

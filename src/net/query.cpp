@@ -5,9 +5,13 @@
 #include "gdpn/net/query.h"
 
 #include <algorithm>
+#include <chrono>
 #include <optional>
+#include <queue>
 
 #include "detail/query_graph.h"
+#include "detail/simplify.h"
+#include "gdpn/net/invariants.h"
 #include "detail/state_check.h"
 #include "detail/stubborn.h"
 #include "gdpn/net/state_equation.h"
@@ -34,7 +38,75 @@ struct Reach {
   std::uint64_t states = 0;
 };
 
-Reach reach(const Net& net, const Formula& target, const ExploreOptions& limits) {
+/// How far marking `m` is from one where `f` holds (`positive`; else from one where it fails):
+/// the tokens missing or too many in its comparisons, the arcs' tokens missing for
+/// fireable; 0 exactly where it holds (fails). The guided search's measure.
+std::int64_t distance(const Net& net, StateCheck& check, const Layout& layout, const Formula& f, bool positive,
+                      const std::uint64_t* m) {
+  constexpr std::int64_t kFar = std::int64_t{1} << 40;
+  switch (f.kind) {
+    case FormulaKind::True: return positive ? 0 : kFar;
+    case FormulaKind::False: return positive ? kFar : 0;
+    case FormulaKind::Compare: {
+      const std::int64_t x = check.sum(f.left, m), y = check.sum(f.right, m);
+      switch (positive ? f.compare : negated(f.compare)) {
+        case Comparison::Less: return std::max<std::int64_t>(0, x - y + 1);
+        case Comparison::LessEqual: return std::max<std::int64_t>(0, x - y);
+        case Comparison::Equal: return x > y ? x - y : y - x;
+        case Comparison::NotEqual: return x == y ? 1 : 0;
+        case Comparison::GreaterEqual: return std::max<std::int64_t>(0, y - x);
+        case Comparison::Greater: return std::max<std::int64_t>(0, y - x + 1);
+      }
+      return 0;
+    }
+    case FormulaKind::Fireable: {
+      if (!positive) return check.holds(f, m) ? 1 : 0;
+      std::int64_t best = kFar;
+      for (TransitionId t : f.transitions) {
+        std::int64_t missing = 0;
+        for (const Term& term : net.termsOf(t)) {
+          const std::int64_t v = layout.value(m, term.place_slot);
+          switch (term.kind) {
+            case TermKind::Input:
+            case TermKind::Test: missing += std::max<std::int64_t>(0, term.weight - v); break;
+            case TermKind::Inhibitor: missing += std::max<std::int64_t>(0, v - term.weight + 1); break;
+            case TermKind::Output:
+            case TermKind::Condition: break;
+          }
+        }
+        best = std::min(best, missing);
+      }
+      return best;
+    }
+    case FormulaKind::Not: return distance(net, check, layout, f.operands[0], !positive, m);
+    case FormulaKind::And:
+    case FormulaKind::Or: {
+      // a conjunction (a negated disjunction) needs each part; a disjunction one of them
+      const bool each = (f.kind == FormulaKind::And) == positive;
+      std::int64_t d = each ? 0 : kFar;
+      for (const Formula& o : f.operands) {
+        const std::int64_t x = distance(net, check, layout, o, positive, m);
+        d = each ? std::min(kFar, d + x) : std::min(d, x);
+      }
+      return d;
+    }
+    case FormulaKind::Deadlock:
+    case FormulaKind::All:
+    case FormulaKind::Bound:
+    case FormulaKind::Exists:
+    case FormulaKind::Future:
+    case FormulaKind::Globally:
+    case FormulaKind::Next:
+    case FormulaKind::Until: return check.holds(f, m) == positive ? 0 : 1;
+  }
+  return 0;  // no value of the enum
+}
+
+/// How a reachability search takes its markings: breadth first (shortest paths), or the
+/// nearest to the target first by distance() (a guided search, for targets deep down).
+enum class Order : std::uint8_t { BreadthFirst, Guided };
+
+Reach reach(const Net& net, const Formula& target, const ExploreOptions& limits, Order order = Order::BreadthFirst) {
   Reach out;
   ConcreteStates states(net, limits);
   if (!states.ok()) {
@@ -48,8 +120,17 @@ Reach reach(const Net& net, const Formula& target, const ExploreOptions& limits)
   std::vector<StateId> parent{0};
   std::vector<TransitionId> via{TransitionId{0}};  // one entry (a bare {0} would be the size)
   std::vector<std::uint64_t> marking, expanded;
+  // guided: markings by (distance, id), the nearest first
+  using Entry = std::pair<std::int64_t, StateId>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> heap;
   auto found = [&](StateId s) {
-    if (!states.check().holds(target, store.load(s, marking))) return false;
+    const std::uint64_t* m = store.load(s, marking);
+    if (!states.check().holds(target, m)) {
+      if (order == Order::Guided) {
+        heap.push({std::max<std::int64_t>(1, distance(net, states.check(), store.layout(), target, true, m)), s});
+      }
+      return false;
+    }
     out.found = true;
     for (StateId x = s; x != 0; x = parent[x]) out.path.push_back(via[x]);
     std::reverse(out.path.begin(), out.path.end());
@@ -60,8 +141,19 @@ Reach reach(const Net& net, const Formula& target, const ExploreOptions& limits)
     out.states = 1;
     return out;
   }
-  for (StateId s = 0; s < store.size() && !out.found && out.stop == ExploreStop::Done; ++s) {
-    if ((s & 0xfff) == 0) out.stop = passedLimit(limits, store.bytes() + parent.capacity() * 8);
+  StateId next = 0;  // breadth first: the states in the order met
+  for (std::uint64_t round = 0; !out.found && out.stop == ExploreStop::Done; ++round) {
+    StateId s = next;
+    if (order == Order::Guided) {
+      if (heap.empty()) break;
+      s = heap.top().second;
+      heap.pop();
+    } else if (next++ >= store.size()) {
+      break;
+    }
+    if ((round & 0xfff) == 0) {
+      out.stop = passedLimit(limits, store.bytes() + parent.capacity() * 8 + heap.size() * sizeof(Entry));
+    }
     if (out.stop != ExploreStop::Done) break;
     auto each = [&](TransitionId t, StateId w, bool added) {
       if (!added) return true;
@@ -122,8 +214,9 @@ QueryAnswer atInitialMarking(const Net& net, const Formula& f) {
   return a;
 }
 
-/// EF p or AG p by a breadth-first search that stops at the first marking deciding it.
-QueryAnswer onTheFly(const Net& net, const Formula& f, const ExploreOptions& limits) {
+/// EF p or AG p: refuted by the state equation where it can be, else by a search that stops
+/// at the first marking deciding it (breadth first, or guided by the distance to it).
+QueryAnswer reachabilityAnswer(const Net& net, const Formula& f, const ExploreOptions& limits, Order order) {
   QueryAnswer a;
   const bool ef = f.kind == FormulaKind::Exists;
   const Formula& p = f.operands[0].operands[0];
@@ -136,9 +229,10 @@ QueryAnswer onTheFly(const Net& net, const Formula& f, const ExploreOptions& lim
     a.technique = "STATE_EQUATION";
     return a;
   }
-  const Reach r = reach(net, target, limits);
+  const Reach r = reach(net, target, limits, order);
   a.states = r.states;
-  a.technique = limits.reduction ? "EXPLICIT BREADTH_FIRST_SEARCH STUBBORN_SETS" : "EXPLICIT BREADTH_FIRST_SEARCH";
+  a.technique = order == Order::Guided ? "EXPLICIT BEST_FIRST_SEARCH" : "EXPLICIT BREADTH_FIRST_SEARCH";
+  if (limits.reduction) a.technique += " STUBBORN_SETS";
   if (r.found) {
     a.verdict = ef ? Verdict::True : Verdict::False;
     a.path = r.path;
@@ -152,6 +246,74 @@ QueryAnswer onTheFly(const Net& net, const Formula& f, const ExploreOptions& lim
   return a;
 }
 
+/// bound(s) without the whole graph: the state equation's bound on the sum, where a search
+/// guided towards it reaches a marking that holds it (then no marking holds more).
+QueryAnswer boundAnswer(const Net& net, const Formula& f, const ExploreOptions& limits) {
+  QueryAnswer a;
+  InvariantOptions lp;
+  lp.deadline = limits.deadline;
+  const std::int64_t most = stateEquationMaxima(net, {f.left}, lp)[0];
+  if (most < 0) {
+    a.stop = limits.deadline && std::chrono::steady_clock::now() >= *limits.deadline ? ExploreStop::TimeLimit
+                                                                                     : ExploreStop::Done;
+    a.unsupported = a.stop == ExploreStop::Done ? "the state equation does not bound it" : "";
+    return a;
+  }
+  Formula target;
+  target.kind = FormulaKind::Compare;
+  target.compare = Comparison::GreaterEqual;
+  target.left = f.left;
+  target.right.constant = most;
+  const Reach r = reach(net, target, limits, Order::Guided);
+  a.states = r.states;
+  if (!r.found) {
+    // none reached: the bound lies lower (a search of the whole graph finds it), or a limit
+    a.stop = r.stop;
+    if (r.stop == ExploreStop::Done) a.unsupported = "the state equation's bound " + std::to_string(most) + " is not reached";
+    return a;
+  }
+  a.verdict = Verdict::Value;
+  a.value = most;
+  a.path = r.path;
+  a.marking = r.marking;
+  a.has_marking = true;
+  a.technique = r.path.empty() ? "STATE_EQUATION INITIAL_STATE" : "STATE_EQUATION EXPLICIT BEST_FIRST_SEARCH";
+  return a;
+}
+
+/// Decided: true, false or a number.
+bool decided(const QueryAnswer& a) { return a.verdict != Verdict::Unknown; }
+
+/// The limits of one formula's try on the fly: `states` markings at most and, under a
+/// deadline, a `share` of the time left.
+ExploreOptions tryLimits(const ExploreOptions& limits, std::uint64_t states, double share) {
+  ExploreOptions l = limits;
+  l.max_states = std::min(limits.max_states, states);
+  if (limits.deadline) {
+    const auto now = std::chrono::steady_clock::now();
+    const auto left = *limits.deadline > now ? *limits.deadline - now : std::chrono::steady_clock::duration{0};
+    l.deadline = now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(left * share);
+  }
+  return l;
+}
+
+/// The formula `x` (no negation on top) answered without the whole graph: reachability by a
+/// search on the fly (breadth first, then guided), a bound by the state equation and a guided
+/// search, other CTL formulas by local searches, LTL by the product made on the fly.
+QueryAnswer withoutGraph(const Net& net, const Formula& x, const ExploreOptions& limits) {
+  if (x.kind == FormulaKind::Bound) return boundAnswer(net, x, limits);
+  if (reachability(x)) {
+    // breadth first for a while (shortest paths where the target is near), then guided
+    ExploreOptions first = limits;
+    first.max_states = std::min<std::uint64_t>(limits.max_states, 1u << 16);
+    QueryAnswer a = reachabilityAnswer(net, x, first, Order::BreadthFirst);
+    if (decided(a) || a.stop != ExploreStop::MaxStates || limits.max_states <= first.max_states) return a;
+    return reachabilityAnswer(net, x, limits, Order::Guided);
+  }
+  if (isCtl(x)) return answerCtlLocally(net, x, limits);
+  return answerLtlOnTheFly(net, x, limits);
+}
+
 }  // namespace
 
 QueryAnswer answerQuery(const Net& net, const Formula& f, const ExploreOptions& limits) {
@@ -160,40 +322,85 @@ QueryAnswer answerQuery(const Net& net, const Formula& f, const ExploreOptions& 
 
 std::vector<QueryAnswer> answerQueries(const Net& net, const std::vector<Formula>& formulas,
                                        const ExploreOptions& limits) {
-  // the whole graph once where it pays: a formula needs it, or two need a search
-  std::size_t searches = 0;
-  bool whole = false;
-  for (const Formula& f : formulas) {
-    bool odd = false;
-    const Formula& x = unnegated(f, odd);
-    if (isStateFormula(x)) continue;
-    ++searches;
-    whole = whole || !reachability(x);
+  // the invariants once for every search (they size the markings)
+  ExploreOptions base = limits;
+  std::optional<Invariants> inv;
+  if (base.invariants == nullptr) {
+    InvariantOptions io;
+    io.max_candidates = 2'000;
+    io.max_bytes = limits.max_bytes;
+    io.deadline = limits.deadline;
+    inv = invariants(net, io);
+    base.invariants = &*inv;
   }
-  // with stubborn sets, a reachability search on the fly usually sees a small part of the
-  // graph: the graph is stored only when a formula needs it
-  std::optional<StateGraph> graph;
-  if (whole || (searches >= 2 && !limits.reduction)) graph = buildGraph(net, limits);
-  std::vector<QueryAnswer> out;
-  for (const Formula& f : formulas) {
-    bool odd = false;
-    const Formula& x = unnegated(f, odd);
-    QueryAnswer a;
-    if (isStateFormula(x)) {
-      a = atInitialMarking(net, x);
-    } else if (graph && graph->stop == ExploreStop::Done) {
-      a = answerOnGraph(net, *graph, x, limits);
-    } else if (reachability(x)) {
-      a = onTheFly(net, x, limits);
-    } else {
-      a.stop = graph->stop;  // a limit stopped the graph that this formula needs
-      a.states = graph->size();
+  std::vector<QueryAnswer> out(formulas.size());
+  std::vector<std::size_t> open;  // formulas not answered yet
+  std::vector<bool> odd(formulas.size(), false);
+  std::vector<Formula> simple(formulas.size());
+  std::vector<const Formula*> bare(formulas.size());
+  std::vector<std::size_t> changed(formulas.size(), 0);  // subformulas the simplification replaced
+  // with reductions, each formula simplified first, under a quarter of the time
+  std::optional<Simplifier> simplifier;
+  if (limits.reduction) simplifier.emplace(net, tryLimits(base, base.max_states, 0.25).deadline);
+  for (std::size_t i = 0; i < formulas.size(); ++i) {
+    bool o = false;
+    bare[i] = &unnegated(formulas[i], o);
+    odd[i] = o;
+    // (EF p and AG p ask the state equation themselves, and say so)
+    if (simplifier && bare[i]->kind != FormulaKind::Bound && !reachability(*bare[i])) {
+      simple[i] = simplifier->simplified(*bare[i], changed[i]);
+      bare[i] = &unnegated(simple[i], o);
+      odd[i] = odd[i] != o;
     }
+    if (isStateFormula(*bare[i])) {
+      out[i] = atInitialMarking(net, *bare[i]);
+    } else {
+      open.push_back(i);
+    }
+  }
+  // 1. with stubborn sets, each formula on the fly under a share of the limits: most are
+  // decided long before the whole graph is made. Without them (--no-reduction), the graph
+  // first, as before.
+  bool whole_hopeless = false;  // a try ran out of memory or time: the whole graph will too
+  auto tryEach = [&](std::uint64_t states, bool last) {
+    std::vector<std::size_t> still;
+    for (std::size_t k = 0; k < open.size(); ++k) {
+      const std::size_t i = open[k];
+      const double share = last ? 1.0 / static_cast<double>(open.size() - k) : 0.5 / static_cast<double>(open.size() - k);
+      QueryAnswer a = withoutGraph(net, *bare[i], tryLimits(base, states, share));
+      if (!decided(a)) {
+        whole_hopeless = whole_hopeless || a.stop == ExploreStop::MaxMemory || a.stop == ExploreStop::TimeLimit;
+        still.push_back(i);
+        if (!last && a.unsupported.empty()) continue;  // the next pass says why
+      }
+      out[i] = std::move(a);
+    }
+    open = std::move(still);
+  };
+  if (limits.reduction) tryEach(1u << 20, false);
+  // 2. the whole graph once for those left, every answer read from it
+  if (!open.empty() && !whole_hopeless) {
+    const StateGraph graph = buildGraph(net, base);
+    std::vector<std::size_t> still;
+    for (std::size_t i : open) {
+      if (graph.stop == ExploreStop::Done) {
+        out[i] = answerOnGraph(net, graph, *bare[i], base);
+      } else {
+        still.push_back(i);
+      }
+    }
+    whole_hopeless = graph.stop != ExploreStop::Done;
+    open = std::move(still);
+  }
+  // 3. on the fly again with what is left of the limits, shared out
+  if (!open.empty()) tryEach(limits.max_states, true);
+  for (std::size_t i = 0; i < formulas.size(); ++i) {
     // a negation turns the answer over; the marking that shows it shows this one too
-    if (odd && (a.verdict == Verdict::True || a.verdict == Verdict::False)) {
+    QueryAnswer& a = out[i];
+    if (changed[i] != 0 && decided(a)) a.technique = "QUERY_SIMPLIFICATION STATE_EQUATION " + a.technique;
+    if (odd[i] && (a.verdict == Verdict::True || a.verdict == Verdict::False)) {
       a.verdict = a.verdict == Verdict::True ? Verdict::False : Verdict::True;
     }
-    out.push_back(std::move(a));
   }
   return out;
 }

@@ -57,15 +57,32 @@ Lp stateEquation(const Net& net, const Incidence& c) {
 std::vector<std::int64_t> stateEquationBounds(const Net& net, const std::vector<bool>& wanted,
                                               const InvariantOptions& options) {
   const std::size_t places = net.placeSlots().size();
-  const std::size_t transitions = net.transitions().size();
+  std::vector<TokenSum> sums;
+  std::vector<std::size_t> slot;  // per sum: the place slot it bounds
+  for (std::size_t k = 0; k < places && k < wanted.size(); ++k) {
+    if (!wanted[k]) continue;
+    sums.push_back({{PlaceSlotId{static_cast<std::uint32_t>(k)}}, 0});
+    slot.push_back(k);
+  }
+  const auto most = stateEquationMaxima(net, sums, options);
   std::vector<std::int64_t> out(places, -1);
-  bool any = false;
-  for (std::size_t k = 0; k < places && k < wanted.size(); ++k) any = any || wanted[k];
-  if (!any || transitions == 0) {
+  for (std::size_t i = 0; i < most.size(); ++i) out[slot[i]] = most[i];
+  return out;
+}
+
+std::vector<std::int64_t> stateEquationMaxima(const Net& net, const std::vector<TokenSum>& sums,
+                                              const InvariantOptions& options) {
+  const std::size_t transitions = net.transitions().size();
+  std::vector<std::int64_t> out(sums.size(), -1);
+  auto initial = [&](const TokenSum& s) {
+    std::int64_t total = s.constant;
+    for (PlaceSlotId k : s.slots) total += net.placeSlots()[k].initial;
+    return total;
+  };
+  if (sums.empty()) return out;
+  if (transitions == 0) {
     // nothing fires: each slot keeps what it has
-    for (std::size_t k = 0; k < places && k < wanted.size(); ++k) {
-      if (wanted[k] && transitions == 0) out[k] = net.placeSlots()[k].initial;
-    }
+    for (std::size_t i = 0; i < sums.size(); ++i) out[i] = initial(sums[i]);
     return out;
   }
   const Incidence c = incidenceMatrix(net);
@@ -75,19 +92,19 @@ std::vector<std::int64_t> stateEquationBounds(const Net& net, const std::vector<
   glp_init_smcp(&parm);
   parm.msg_lev = GLP_MSG_OFF;
   parm.presolve = GLP_OFF;  // keep the basis from one program to the next
-  std::size_t previous = places;
-  for (std::size_t k = 0; k < places && k < wanted.size(); ++k) {
-    if (!wanted[k]) continue;
+  std::vector<double> objective(transitions, 0.0);
+  for (std::size_t i = 0; i < sums.size(); ++i) {
     if (options.deadline && std::chrono::steady_clock::now() >= *options.deadline) break;
-    if (previous < places) {
-      for (const auto& [t, v] : c.by_place[previous]) glp_set_obj_coef(lp.get(), static_cast<int>(t + 1), 0.0);
+    // maximise the sum's C · x; the sum is then its initial value plus that
+    std::fill(objective.begin(), objective.end(), 0.0);
+    bool moves = false;
+    for (PlaceSlotId k : sums[i].slots) {
+      for (const auto& [t, v] : c.by_place[k]) objective[t] += static_cast<double>(v), moves = true;
     }
-    previous = k;
-    // maximise C_k · x; M(k) = M0(k) + that
-    for (const auto& [t, v] : c.by_place[k]) glp_set_obj_coef(lp.get(), static_cast<int>(t + 1), static_cast<double>(v));
-    const std::int64_t m0 = net.placeSlots()[k].initial;
-    if (c.by_place[k].empty()) {
-      out[k] = m0;
+    for (std::size_t t = 0; t < transitions; ++t) glp_set_obj_coef(lp.get(), static_cast<int>(t + 1), objective[t]);
+    const std::int64_t m0 = initial(sums[i]);
+    if (!moves) {
+      out[i] = m0;
       continue;
     }
     if (glp_simplex(lp.get(), &parm) != 0) {
@@ -100,7 +117,7 @@ std::vector<std::int64_t> stateEquationBounds(const Net& net, const std::vector<
     // the solver works to tolerances of about 1e-7 per row, scaled: an optimum it reports a
     // little below a whole number is taken as that number (a bound one too high is still a
     // bound; one too low would let the search's counts outgrow their fields)
-    if (best < 9e18) out[k] = static_cast<std::int64_t>(std::floor(best + 1e-3 * std::max(1.0, std::abs(best) * 1e-6)));
+    if (best < 9e18) out[i] = static_cast<std::int64_t>(std::floor(best + 1e-3 * std::max(1.0, std::abs(best) * 1e-6)));
   }
   return out;
 }

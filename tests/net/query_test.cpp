@@ -271,7 +271,11 @@ TEST(QueryAnswers, CtlAgreesWithLivenessAndReversibilityOfTheWholeStateSpace) {
     auto answer = [&](const std::string& text) { return answerQuery(*net, parsed(*net, text)); };
     const QueryAnswer l = answer(live);
     EXPECT_EQ(l.verdict, space.live ? Verdict::True : Verdict::False);
-    EXPECT_EQ(l.states, space.states);
+    // true, every marking was seen; false, the search may have stopped at the first that shows it
+    if (space.live) {
+      EXPECT_EQ(l.states, space.states);
+    }
+    EXPECT_LE(l.states, space.states);
     EXPECT_EQ(answer("AG EF (" + initial + ")").verdict, space.reversible ? Verdict::True : Verdict::False);
     // the fixed points against the breadth-first search: E[true U p] is EF p, A[true U p] is AF p
     const Verdict dead = space.deadlock ? Verdict::True : Verdict::False;
@@ -376,7 +380,7 @@ TEST(QueryAnswers, LimitsAndUnansweredKindsAreSaidNeverGuessed) {
   EXPECT_EQ(a.stop, ExploreStop::MaxStates);
   a = answerQuery(*net, parsed(*net, "A (G F not deadlock)"));
   EXPECT_EQ(a.verdict, Verdict::True);
-  EXPECT_EQ(a.technique, "EXPLICIT LTL_TABLEAU");
+  EXPECT_EQ(a.technique, "EXPLICIT LTL_TABLEAU ON_THE_FLY");
   // CTL needs the whole graph: the limit stops it too
   a = answerQuery(*net, parsed(*net, "AG EF deadlock"), small);
   EXPECT_EQ(a.verdict, Verdict::Unknown);

@@ -24,6 +24,14 @@ namespace gdpn::net {
 std::vector<std::int64_t> stateEquationBounds(const Net& net, const std::vector<bool>& wanted,
                                               const InvariantOptions& options = {});
 
+/// Per sum of `sums`, a bound from the state equation, tokens: the largest value of the sum
+/// (its slots' tokens plus its constant) over M = M0 + C·x, 0 <= M <= capacity, x >= 0 (one
+/// program per sum, each starting from the last one's basis), rounded down; -1 where the
+/// program is unbounded, or once `options`' deadline has passed. The same relaxation as
+/// stateEquationBounds: sound, and at least as tight as any P-invariant's bound.
+std::vector<std::int64_t> stateEquationMaxima(const Net& net, const std::vector<TokenSum>& sums,
+                                              const InvariantOptions& options = {});
+
 /// True when no solution of the state equation (M = M0 + C·x, x >= 0, 0 <= M <= capacity,
 /// over the reals) satisfies the state formula `f`: then no reachable marking does, and `EF f`
 /// is false without a search. `f` is put in disjunctive normal form over linear constraints

@@ -44,4 +44,15 @@ QueryAnswer answerOnGraph(const Net& net, const StateGraph& g, const Formula& f,
 /// deadline): past them the answer is Unknown.
 QueryAnswer answerLtl(const Net& net, const StateGraph& g, const Formula& f, const ExploreOptions& limits);
 
+/// The same on the fly: the product searched depth first as the graph is made (LazyGraph),
+/// so that a lasso is found without the whole graph; past `limits` the answer is Unknown.
+QueryAnswer answerLtlOnTheFly(const Net& net, const Formula& f, const ExploreOptions& limits);
+
+/// Answers the CTL formula `f` at the initial marking on the fly (local_ctl.cpp): each
+/// temporal subformula by a depth-first search from the marking it is asked at, which makes
+/// only the markings it needs and stops as soon as the answer shows (EF p at the first p;
+/// AG p at the first marking that breaks p); what each search settles is kept per marking.
+/// Paths are maximal as in answerOnGraph. Past `limits` the answer is Unknown.
+QueryAnswer answerCtlLocally(const Net& net, const Formula& f, const ExploreOptions& limits);
+
 }  // namespace gdpn::net::detail

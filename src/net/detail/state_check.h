@@ -111,6 +111,8 @@ class ConcreteStates {
   Store& store() { return *store_; }
   std::unique_ptr<Store> releaseStore() { return std::move(store_); }
   StateCheck& check() { return *check_; }
+  /// Memory the markings hold, bytes.
+  std::uint64_t bytes() const { return store_->bytes(); }
 
   /// Calls `f(t, w, added)` for each transition t enabled in state `s`, w being the id of its
   /// successor (`added`: new to the store), until f returns false. False when a count did not
