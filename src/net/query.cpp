@@ -297,11 +297,59 @@ ExploreOptions tryLimits(const ExploreOptions& limits, std::uint64_t states, dou
   return l;
 }
 
+QueryAnswer withoutGraph(const Net& net, const Formula& x, const ExploreOptions& limits);
+
+/// `p and q ...` (`p or q ...`), each part answered on its own by the means that suits it
+/// (EF of a state formula by a reachability search, ...), under a share of the limits: false
+/// (true) at the first part that is, true (false) when every part is; without a witness.
+QueryAnswer booleanAnswer(const Net& net, const Formula& x, const ExploreOptions& limits) {
+  const bool conjunction = x.kind == FormulaKind::And;
+  QueryAnswer out;
+  std::vector<std::string> techniques;
+  // the state formulas first: they cost one marking
+  std::vector<const Formula*> parts;
+  for (int pass = 0; pass < 2; ++pass) {
+    for (const Formula& o : x.operands) {
+      if (isStateFormula(o) == (pass == 0)) parts.push_back(&o);
+    }
+  }
+  bool open = false;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    bool odd = false;
+    const Formula& part = unnegated(*parts[k], odd);
+    const QueryAnswer a = isStateFormula(part)
+                              ? atInitialMarking(net, part)
+                              : withoutGraph(net, part, tryLimits(limits, limits.max_states,
+                                                                  1.0 / static_cast<double>(parts.size() - k)));
+    out.states += a.states;
+    if (!decided(a)) {
+      open = true;
+      if (out.stop == ExploreStop::Done) out.stop = a.stop;
+      if (out.unsupported.empty()) out.unsupported = a.unsupported;
+      continue;
+    }
+    if (std::find(techniques.begin(), techniques.end(), a.technique) == techniques.end()) techniques.push_back(a.technique);
+    if (((a.verdict == Verdict::True) != odd) != conjunction) {
+      // this part decides it
+      out.verdict = conjunction ? Verdict::False : Verdict::True;
+      out.stop = ExploreStop::Done;
+      out.unsupported.clear();
+      out.technique = a.technique;
+      return out;
+    }
+  }
+  if (open) return out;
+  out.verdict = conjunction ? Verdict::True : Verdict::False;
+  for (const std::string& t : techniques) out.technique += (out.technique.empty() ? "" : " ") + t;
+  return out;
+}
+
 /// The formula `x` (no negation on top) answered without the whole graph: reachability by a
 /// search on the fly (breadth first, then guided), a bound by the state equation and a guided
 /// search, other CTL formulas by local searches, LTL by the product made on the fly.
 QueryAnswer withoutGraph(const Net& net, const Formula& x, const ExploreOptions& limits) {
   if (x.kind == FormulaKind::Bound) return boundAnswer(net, x, limits);
+  if (x.kind == FormulaKind::And || x.kind == FormulaKind::Or) return booleanAnswer(net, x, limits);
   if (reachability(x)) {
     // breadth first for a while (shortest paths where the target is near), then guided
     ExploreOptions first = limits;

@@ -278,7 +278,7 @@ TEST(Pnml, AnEmptyFileIsRefusedAtItsFirstLine) {
 
 TEST(Pnml, AMissingConformanceNetFailsTheTestInsteadOfCrashingIt) {
   // the helpers once dereferenced the empty result: a bus error took the test binary down
-  EXPECT_NONFATAL_FAILURE(EXPECT_EQ(conformanceNet("NoSuchNet"), nullptr), "conformance net NoSuchNet could not be read");
+  EXPECT_NONFATAL_FAILURE(EXPECT_EQ(conformanceNet("NoSuchNet"), nullptr), "NoSuchNet.pnml\" could not be read");
 }
 
 TEST(Pnml, ASecondArcBetweenTheSameNodesIsRefusedWhereItIs) {

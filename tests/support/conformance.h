@@ -23,24 +23,35 @@ inline const std::filesystem::path kConformanceDir =
 /// The PNML file of conformance net `model`.
 inline std::filesystem::path conformanceFile(const std::string& model) { return kConformanceDir / (model + ".pnml"); }
 
-/// Conformance net `model` read as a spec; nullopt after a failed expectation that names the
-/// file and the loader's diagnostics.
-inline std::optional<net::NetSpec> conformanceSpec(const std::string& model) {
+/// The net of PNML file `file` read as a spec; nullopt after a failed expectation that names
+/// the file and the loader's diagnostics.
+inline std::optional<net::NetSpec> pnmlSpec(const std::filesystem::path& file) {
   core::Diagnostics diags;
-  auto spec = net::loadPnml(conformanceFile(model).string(), diags);
-  EXPECT_TRUE(spec) << "conformance net " << model << " could not be read:\n" << diags.str();
+  auto spec = net::loadPnml(file.string(), diags);
+  EXPECT_TRUE(spec) << "net " << file << " could not be read:\n" << diags.str();
   return spec;
 }
 
-/// Conformance net `model`, compiled; null after a failed expectation.
-inline std::shared_ptr<const net::Net> conformanceNet(const std::string& model) {
-  auto spec = conformanceSpec(model);
+/// The net of PNML file `file`, compiled; null after a failed expectation.
+inline std::shared_ptr<const net::Net> pnmlNet(const std::filesystem::path& file) {
+  auto spec = pnmlSpec(file);
   if (!spec) return nullptr;
   core::Diagnostics diags;
   auto net = net::compile(*spec, diags);
-  EXPECT_TRUE(net) << "conformance net " << model << " did not compile:\n" << diags.str();
+  EXPECT_TRUE(net) << "net " << file << " did not compile:\n" << diags.str();
   return net;
 }
+
+/// Conformance net `model` read as a spec; nullopt after a failed expectation.
+inline std::optional<net::NetSpec> conformanceSpec(const std::string& model) { return pnmlSpec(conformanceFile(model)); }
+
+/// Conformance net `model`, compiled; null after a failed expectation.
+inline std::shared_ptr<const net::Net> conformanceNet(const std::string& model) { return pnmlNet(conformanceFile(model)); }
+
+/// The folder of the contest nets far beyond memory (one folder per model: model.pnml, the
+/// seven property files, oracle-formulas.tsv).
+inline const std::filesystem::path kLargeConformanceDir =
+    std::filesystem::path(GDPN_SOURCE_DIR) / "tests" / "data" / "conformance-large";
 
 /// An answer in the words of the contest's oracles: TRUE, FALSE, a number, or UNKNOWN.
 inline std::string answerWord(const net::QueryAnswer& a) {
