@@ -124,6 +124,27 @@ Formula Simplifier::simplified(const Formula& f, std::size_t& changed) {
       case FormulaKind::Not: {
         if (const auto c = constantOf(out.operands[0])) return constantFormula(!*c, x.column);
         if (out.operands[0].kind == FormulaKind::Not) return std::move(out.operands[0].operands[0]);
+        // through a CTL quantifier (paths being maximal): not AG p = EF not p, not EF p = AG not
+        // p, not AF p = EG not p, not EG p = AF not p, not AX p = EX not p, not EX p = AX not p;
+        // then simplified again (EF EF q = EF q)
+        Formula& q = out.operands[0];
+        if ((q.kind == FormulaKind::Exists || q.kind == FormulaKind::All) && isCtl(q) &&
+            q.operands[0].kind != FormulaKind::Until) {
+          Formula flipped = std::move(q);
+          flipped.kind = flipped.kind == FormulaKind::Exists ? FormulaKind::All : FormulaKind::Exists;
+          Formula& path = flipped.operands[0];
+          if (path.kind == FormulaKind::Future) {
+            path.kind = FormulaKind::Globally;
+          } else if (path.kind == FormulaKind::Globally) {
+            path.kind = FormulaKind::Future;
+          }
+          Formula inner;
+          inner.kind = FormulaKind::Not;
+          inner.column = path.operands[0].column;
+          inner.operands.push_back(std::move(path.operands[0]));
+          path.operands[0] = std::move(inner);
+          return self(self, flipped, top);
+        }
         break;
       }
       case FormulaKind::And:

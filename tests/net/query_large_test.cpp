@@ -2,7 +2,8 @@
 // (tests/data/conformance-large: Dekker-PT-050, FMS-PT-00050, Kanban-PT-00050,
 // Philosophers-PT-000050, 3^50 markings and more) against the contest's reference answers:
 // every answer given must be the oracle's, whatever the time it had; a formula may be left
-// unknown, never guessed.
+// unknown, never guessed. (Five CTLCardinality formulas, one of FMS and four of Kanban, have
+// no reference answer, `?`: no tool of the contest answered them; they are not counted.)
 //
 // CI gives each property file 5 s. The ctest label `full` (GDPN_CONTEST_FULL=1) gives each
 // file 60 s, as docs/queries.md states its shares, and checks the shares of each category
@@ -12,6 +13,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <iostream>
 #include <map>
 
 #include "gdpn/core/file.h"
@@ -70,7 +72,7 @@ TEST_P(LargeContestNets, EveryAnswerGivenIsTheOraclesAndMostAreGiven) {
     limits.deadline = deadlineAfter(seconds);
     limits.max_bytes = std::uint64_t{2} << 30;  // what a CI machine spares
     const auto answers = answerQueries(*net, formulas, limits);
-    std::size_t answered = 0;
+    std::size_t answered = 0;  // and checked against the oracle
     for (std::size_t i = 0; i < answers.size(); ++i) {
       const std::string word = answerWord(answers[i]);
       if (word == "UNKNOWN") {
@@ -78,14 +80,17 @@ TEST_P(LargeContestNets, EveryAnswerGivenIsTheOraclesAndMostAreGiven) {
         EXPECT_TRUE(answers[i].stop != ExploreStop::Done || !answers[i].unsupported.empty()) << (*properties)[i].id;
         continue;
       }
-      ++answered;
       const auto at = expected.find((*properties)[i].id);
       ASSERT_NE(at, expected.end()) << (*properties)[i].id;
+      if (at->second == "?") continue;  // no tool of the contest answered it: nothing to check against
+      ++answered;
       EXPECT_EQ(word, at->second) << (*properties)[i].id << ": " << formulaText(*net, formulas[i]) << " ("
                                   << answers[i].technique << ")";
       EXPECT_FALSE(answers[i].technique.empty()) << (*properties)[i].id;
     }
     // the state equation and a short guided search settle every bound, in any time
+    // the share, for docs/queries.md
+    std::cout << model << " " << category << ": " << answered << " answered and checked\n";
     if (category == "UpperBounds") {
       EXPECT_EQ(answered, 16u);
     }
