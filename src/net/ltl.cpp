@@ -367,7 +367,7 @@ class Product {
         }
         Frame& f = frames_.back();
         const StateId s = markingOf(f.v);
-        const std::uint64_t end = endOf(s);  // s was expanded when the frame was made
+        const std::uint64_t end = f.end;
         if (f.edge < end) {
           const auto& nexts = a_.states[stateOf(f.v)].next;
           if (f.next >= nexts.size()) {
@@ -397,6 +397,7 @@ class Product {
         }
         const std::uint32_t v = f.v;
         frames_.pop_back();
+        on_stack_[v] = false;
         if (roots_.back().v != v) continue;
         roots_.pop_back();  // v's component is done: no accepting cycle in it
         while (true) {
@@ -437,6 +438,7 @@ class Product {
   struct Frame {
     std::uint32_t v;       // the product state's depth-first number
     std::uint64_t edge;    // the graph edge tried now (a dead marking: its one stutter step)
+    std::uint64_t end;     // one past its last (a marking expanded fully later keeps the list it had)
     std::uint32_t next;    // the automaton successor tried next for it
   };
   struct Root {
@@ -468,8 +470,33 @@ class Product {
     key_of_.push_back(key);
     dead_.push_back(false);
     live_.push_back(v);
+    on_stack_.push_back(true);
     roots_.push_back({v, a_.states[key % q_].accepting});
-    frames_.push_back({v, g_.first(static_cast<StateId>(key / q_)), 0});
+    const auto s = static_cast<StateId>(key / q_);
+    std::uint64_t first = g_.first(s);
+    if (g_.reduced(s) && closesCycle(s, stateOf(v), key)) {
+      // the cycle proviso: an ample set that closes a cycle on the stack gives way to all
+      // enabled transitions, so that no transition is put off for ever around a cycle
+      g_.expandFully(s);
+      first = g_.first(s);
+    }
+    frames_.push_back({v, first, endOf(s), 0});
+  }
+
+  /// Whether an edge of marking `s` (automaton state `q`, product key `key`) leads to a
+  /// product state on the depth-first stack (or to itself).
+  bool closesCycle(StateId s, std::uint32_t q, std::uint64_t key) const {
+    for (std::uint64_t e = g_.first(s); e < g_.end(s); ++e) {
+      const StateId w = g_.succ(e);
+      for (std::uint32_t to : a_.states[q].next) {
+        if (!reads(w, to)) continue;
+        const std::uint64_t k = keyOf(w, to);
+        if (k == key) return true;
+        const std::uint32_t at = index_.find(k);
+        if (at != KeyIndex::kNone && on_stack_[at]) return true;
+      }
+    }
+    return false;
   }
 
   /// Breadth first from `sources` (at least one step) through states where `allowed` holds to
@@ -529,6 +556,7 @@ class Product {
   KeyIndex index_;
   std::vector<std::uint64_t> key_of_;  // by depth-first number
   std::vector<bool> dead_;             // its component is done
+  std::vector<bool> on_stack_;         // on the depth-first stack
   std::vector<std::uint32_t> live_;    // states of components not done, in visiting order
   std::vector<Root> roots_;
   std::vector<Frame> frames_;
@@ -556,12 +584,20 @@ class WholeView {
   TransitionId via(std::uint64_t e) const { return g_.via[e]; }
   bool atom(std::size_t k, StateId s) const { return atom_[s * atoms_ + k] != 0; }
   std::uint64_t bytes() const { return 0; }  // held before the product, not by it
+  bool reduced(StateId) const { return false; }  // every edge is there
+  void expandFully(StateId) {}
 
  private:
   const StateGraph& g_;
   std::size_t atoms_;
   std::vector<std::uint8_t> atom_;
 };
+
+/// Whether X stands anywhere in `f`.
+bool hasNext(const Formula& f) {
+  return f.kind == FormulaKind::Next ||
+         std::any_of(f.operands.begin(), f.operands.end(), [](const Formula& o) { return hasNext(o); });
+}
 
 /// The automaton of an LTL formula (A or E over a path formula): of the path formula, negated
 /// for A. Nullopt, with `out.unsupported` said, for a formula it cannot make.
@@ -635,6 +671,11 @@ QueryAnswer answerLtlOnTheFly(const Net& net, const Formula& f, const ExploreOpt
   if (!g.ok()) {
     out.stop = ExploreStop::Overflow;
     return out;
+  }
+  // without next, the formula cannot tell stuttering apart: ample sets serve
+  if (limits.reduction && !hasNext(f)) {
+    g.reduceFor(net);
+    out.technique += " STUBBORN_SETS";
   }
   searchProduct(g, g.store(), *a, f, limits, out);
   if (out.verdict == Verdict::Unknown && out.stop == ExploreStop::Done) out.stop = g.stop();

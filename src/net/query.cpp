@@ -321,7 +321,7 @@ QueryAnswer booleanAnswer(const Net& net, const Formula& x, const ExploreOptions
                               ? atInitialMarking(net, part)
                               : withoutGraph(net, part, tryLimits(limits, limits.max_states,
                                                                   1.0 / static_cast<double>(parts.size() - k)));
-    out.states += a.states;
+    out.states = std::max(out.states, a.states);  // the most markings one part explored
     if (!decided(a)) {
       open = true;
       if (out.stop == ExploreStop::Done) out.stop = a.stop;
@@ -358,7 +358,11 @@ QueryAnswer withoutGraph(const Net& net, const Formula& x, const ExploreOptions&
     if (decided(a) || a.stop != ExploreStop::MaxStates || limits.max_states <= first.max_states) return a;
     return reachabilityAnswer(net, x, limits, Order::Guided);
   }
-  if (isCtl(x)) return answerCtlLocally(net, x, limits);
+  if (isCtl(x)) {
+    QueryAnswer a = answerCtlLocally(net, x, limits);
+    if (lassoShows(x, a.verdict)) takeLasso(a, answerLtlOnTheFly(net, x, limits));
+    return a;
+  }
   return answerLtlOnTheFly(net, x, limits);
 }
 

@@ -288,20 +288,24 @@ QueryAnswer answerOnGraph(const Net& net, const StateGraph& g, const Formula& f,
   if (!isCtl(f)) return answerLtl(net, g, f, limits);
   a.verdict = checker.eval(f)[0] ? Verdict::True : Verdict::False;
   a.technique = "EXPLICIT CTL_FIXED_POINTS";
-  // AF p, AG p, A [p U q] that fail, and EG p, E [p U q] that hold, mean the same in LTL: a
-  // lasso from the LTL search shows the answer (not X: CTL's paths end at a dead marking)
-  const bool single = path && path->kind != FormulaKind::Next && isStateFormula(path->operands[0]) &&
-                      isStateFormula(path->operands.back());
-  if (single && (a.verdict == Verdict::True) == (f.kind == FormulaKind::Exists)) {
-    QueryAnswer shown = answerLtl(net, g, f, limits);
-    if (shown.verdict == a.verdict && shown.lasso) {
-      a.path = std::move(shown.path);
-      a.cycle = std::move(shown.cycle);
-      a.marking = std::move(shown.marking);
-      a.has_marking = a.lasso = true;
-    }
-  }
+  if (lassoShows(f, a.verdict)) takeLasso(a, answerLtl(net, g, f, limits));
   return a;
+}
+
+bool lassoShows(const Formula& f, Verdict v) {
+  if ((f.kind != FormulaKind::Exists && f.kind != FormulaKind::All) || f.operands.empty()) return false;
+  const Formula& path = f.operands[0];
+  const bool single = pathOperator(path.kind) && path.kind != FormulaKind::Next && isStateFormula(path.operands[0]) &&
+                      isStateFormula(path.operands.back());
+  return single && (v == Verdict::True) == (f.kind == FormulaKind::Exists);
+}
+
+void takeLasso(QueryAnswer& a, QueryAnswer shown) {
+  if (shown.verdict != a.verdict || !shown.lasso) return;
+  a.path = std::move(shown.path);
+  a.cycle = std::move(shown.cycle);
+  a.marking = std::move(shown.marking);
+  a.has_marking = a.lasso = true;
 }
 
 }  // namespace gdpn::net::detail

@@ -380,7 +380,7 @@ TEST(QueryAnswers, LimitsAndUnansweredKindsAreSaidNeverGuessed) {
   EXPECT_EQ(a.stop, ExploreStop::MaxStates);
   a = answerQuery(*net, parsed(*net, "A (G F not deadlock)"));
   EXPECT_EQ(a.verdict, Verdict::True);
-  EXPECT_EQ(a.technique, "EXPLICIT LTL_TABLEAU ON_THE_FLY");
+  EXPECT_EQ(a.technique, "EXPLICIT LTL_TABLEAU ON_THE_FLY STUBBORN_SETS");  // no X: ample sets serve
   // CTL needs the whole graph: the limit stops it too
   a = answerQuery(*net, parsed(*net, "AG EF deadlock"), small);
   EXPECT_EQ(a.verdict, Verdict::Unknown);
@@ -484,6 +484,84 @@ TEST(QueryAnswers, StubbornSetsFindAWitnessNineStepsDeepAmongTenMillionMarkingsF
     EXPECT_EQ(reduced.verdict, all.verdict);
     EXPECT_LT(reduced.states * 10, all.states) << reduced.states << " against " << all.states;
   }
+}
+
+TEST(QueryAnswers, BeyondTheStateSpaceEachKindIsAnsweredFromAFewMarkings) {
+  // 10^7 markings and a limit of 10^5: no answer may rest on the whole graph
+  const auto net = rings(7, 10);
+  ExploreOptions limits;
+  limits.max_states = 100'000;
+  auto answer = [&](const std::string& text, const ExploreOptions& l) { return answerQuery(*net, parsed(*net, text), l); };
+  // a bound: the state equation's (one token a ring), held by the initial marking, or reached
+  // by a search guided towards it (5 + 7 firings)
+  QueryAnswer a = answer("bound(r0/p0 + r1/p0)", limits);
+  EXPECT_EQ(a.verdict, Verdict::Value);
+  EXPECT_EQ(a.value, 2);
+  EXPECT_EQ(a.technique, "STATE_EQUATION INITIAL_STATE");
+  a = answer("bound(r0/p5 + r1/p7)", limits);
+  ASSERT_EQ(a.verdict, Verdict::Value);
+  EXPECT_EQ(a.value, 2);
+  EXPECT_EQ(a.technique, "STATE_EQUATION EXPLICIT BEST_FIRST_SEARCH");
+  EXPECT_EQ(a.path.size(), 12u);
+  const auto reached = replay(*net, a.path);
+  ASSERT_TRUE(reached);
+  EXPECT_EQ((*reached)[5] + (*reached)[17], 2);  // r0/p5, r1/p7
+  // CTL by local searches that stop at what shows the answer
+  a = answer("E [r1/p0 = 1 U r0/p9 = 1]", limits);
+  EXPECT_EQ(a.verdict, Verdict::True);
+  EXPECT_EQ(a.technique, "EXPLICIT CTL_LOCAL");
+  EXPECT_LE(a.states, 1'000u);
+  a = answer("A [r1/p0 = 1 U r0/p9 = 1]", limits);
+  EXPECT_EQ(a.verdict, Verdict::False);
+  EXPECT_LE(a.states, 1'000u);
+  // simplified by the bounds: a ring never holds two tokens, so AG EF of that is true at once
+  a = answer("AG EF r0/p0 + r0/p1 <= 1 and not EG r0/p0 + r1/p0 > 2", limits);
+  EXPECT_EQ(a.verdict, Verdict::True);
+  EXPECT_EQ(a.technique, "QUERY_SIMPLIFICATION STATE_EQUATION INITIAL_STATE");
+  EXPECT_LE(a.states, 1u);
+  // LTL: ring 0's token stays at p0 until it moves to p1 (or for ever). True on every path:
+  // beside six lines of ten places (a token each, run down once: 10^6 markings of theirs)
+  // the product without the reduction needs every marking; with ample sets (one line's move
+  // at a time, ring 0's moves being visible), a few
+  {
+    NetBuilder b;
+    for (int r = 0; r < 7; ++r) {
+      const std::string name = r == 0 ? "r0" : "l" + std::to_string(r);
+      std::vector<PlaceId> ps;
+      for (int i = 0; i < 10; ++i) ps.push_back(b.addPlace(name + "/p" + std::to_string(i)));
+      b.setSlot(ps[0], kDefaultSlot, SlotKind::Control, kUnbounded, 1);
+      for (int i = 0; i < (r == 0 ? 10 : 9); ++i) {
+        const auto t = b.addTransition(name + "/t" + std::to_string(i));
+        b.addInput(ps[static_cast<std::size_t>(i)], t);
+        b.addOutput(t, ps[static_cast<std::size_t>((i + 1) % 10)]);
+      }
+    }
+    const auto lines = b.freeze();
+    const std::string weak = "A ((r0/p0 = 1 U r0/p1 = 1) or G r0/p0 = 1)";
+    a = answerQuery(*lines, parsed(*lines, weak), limits);
+    EXPECT_EQ(a.verdict, Verdict::True);
+    EXPECT_EQ(a.technique, "EXPLICIT LTL_TABLEAU ON_THE_FLY STUBBORN_SETS");
+    EXPECT_LE(a.states, 1'000u);
+    ExploreOptions plain = limits;
+    plain.reduction = false;
+    a = answerQuery(*lines, parsed(*lines, weak), plain);
+    EXPECT_EQ(a.verdict, Verdict::Unknown);
+    EXPECT_EQ(a.stop, ExploreStop::MaxStates);
+  }
+  // a counterexample with the reduction: ring 0 moves on, then stops for ever at p1 while
+  // the others go round; the lasso fires from the initial marking and comes back
+  a = answer("A (G F r0/p0 = 1)", limits);
+  EXPECT_EQ(a.verdict, Verdict::False);
+  ASSERT_TRUE(a.lasso);
+  const auto start = replay(*net, a.path);
+  ASSERT_TRUE(start);
+  EXPECT_EQ(*start, a.marking);
+  std::vector<TransitionId> around = a.path;
+  around.insert(around.end(), a.cycle.begin(), a.cycle.end());
+  const auto again = replay(*net, around);
+  ASSERT_TRUE(again);
+  EXPECT_EQ(*again, a.marking);
+  EXPECT_EQ(a.marking[0], 0);  // r0/p0: empty round the cycle
 }
 
 TEST(QueryAnswers, TheStateEquationRefutesWhatItsInvariantsForbidAndNothingReachable) {

@@ -4,9 +4,11 @@
 // first): a marking's successors are made the first time they are asked for and kept.
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "state_check.h"
+#include "stubborn.h"
 
 namespace gdpn::net::detail {
 
@@ -56,6 +58,24 @@ class LazyGraph {
   /// Whether atom `k` holds in `s`.
   bool atom(std::size_t k, StateId s) const { return atom_[s * atoms_.size() + k] != 0; }
 
+  /// From now on, a marking's edges are those of an ample set where one serves (LTL without
+  /// next on the fly): the enabled members of a stubborn set (Stubborn::selectFrom) none of
+  /// which is visible to the atoms, the smallest of those grown from the first few enabled
+  /// transitions; all enabled transitions where none serves. The search must fully expand
+  /// (expandFully) a marking whose ample edges close a cycle on its stack.
+  void reduceFor(const Net& net) {
+    stubborn_ = std::make_unique<Stubborn>(net, states_.store().layout());
+    visible_ = stubborn_->visibleTo(atoms_);
+  }
+  /// Whether the edges of `s` (expanded) are an ample set short of all enabled transitions.
+  bool reduced(StateId s) const { return s < reduced_.size() && reduced_[s] != 0; }
+  /// Gives reduced `s` all its edges (a new list; the ample edges are among them).
+  void expandFully(StateId s) {
+    if (!reduced(s)) return;
+    reduced_[s] = 0;
+    edges(s, nullptr);
+  }
+
   /// Memory held, bytes (with what the caller keeps per marking: alsoPerMarking).
   std::uint64_t bytes() const {
     return states_.bytes() + first_.capacity() * (12 + per_marking_) + succ_.capacity() * 8 + atom_.capacity();
@@ -73,15 +93,43 @@ class LazyGraph {
   }
 
   void expand(StateId s) {
+    if (!stubborn_) {
+      edges(s, nullptr);
+      return;
+    }
+    // an ample set: the smallest invisible stubborn set grown from one of the first enabled
+    // transitions
+    const std::uint64_t* m = states_.store().load(s, here_);
+    states_.check().candidates().find(m, states_.check().firing(), enabled_);
+    std::erase_if(enabled_, [&](TransitionId t) { return !states_.check().firing().enabled(t, m); });
+    ample_.clear();
+    std::size_t tries = 0;
+    for (TransitionId seed : enabled_) {
+      if (visible_[seed]) continue;
+      if (stubborn_->selectFrom(seed, m, visible_, set_) && (ample_.empty() || set_.size() < ample_.size())) {
+        ample_.swap(set_);
+        if (ample_.size() == 1) break;
+      }
+      if (++tries == 4) break;
+    }
+    const bool reduce = !ample_.empty() && ample_.size() < enabled_.size();
+    if (reduced_.size() < first_.size()) reduced_.resize(first_.size(), 0);
+    reduced_[s] = reduce ? 1 : 0;
+    edges(s, reduce ? &ample_ : nullptr);
+  }
+
+  // the edges of `s`, made now: those of `only` (all where null)
+  void edges(StateId s, const std::vector<TransitionId>* only) {
     if (stop_ == ExploreStop::Done && (++expansions_ & 0x3ff) == 0) stop_ = passedLimit(limits_, bytes());
     if (stop_ != ExploreStop::Done) throw Stopped{};
     const std::uint64_t at = succ_.size();
-    const bool fits = states_.successors(s, [&](TransitionId t, StateId w, bool added) {
+    auto each = [&](TransitionId t, StateId w, bool added) {
       succ_.push_back(w);
       via_.push_back(t);
       if (added) met(w);
       return true;
-    });
+    };
+    const bool fits = only ? states_.fire(s, *only, each) : states_.successors(s, each);
     if (!fits) stop_ = ExploreStop::Overflow;
     if (states_.store().size() > std::min<std::uint64_t>(limits_.max_states, 0xfffffff0u)) {
       stop_ = ExploreStop::MaxStates;
@@ -103,6 +151,11 @@ class LazyGraph {
   std::vector<TransitionId> via_;
   std::vector<std::uint8_t> atom_;  // per marking, per atom
   std::vector<std::uint64_t> here_;
+  // the ample sets (reduceFor)
+  std::unique_ptr<Stubborn> stubborn_;
+  std::vector<bool> visible_;
+  std::vector<std::uint8_t> reduced_;  // per marking: its edges are an ample set short of all
+  std::vector<TransitionId> enabled_, ample_, set_;
 };
 
 }  // namespace gdpn::net::detail

@@ -37,6 +37,15 @@ StateGraph buildGraph(const Net& net, const ExploreOptions& limits);
 /// fails there, AX p holds, EG p holds where p does), or an LTL formula (answerLtl).
 QueryAnswer answerOnGraph(const Net& net, const StateGraph& g, const Formula& f, const ExploreOptions& limits);
 
+/// Whether a single infinite path shows answer `v` of CTL formula `f`: AF p, AG p, A [p U q]
+/// that fail, EG p, E [p U q] that hold (p, q state formulas) mean the same in LTL, so a lasso
+/// of the LTL search shows them (not X: CTL's paths end at a dead marking, LTL's stutter).
+bool lassoShows(const Formula& f, Verdict v);
+
+/// Copies the lasso of `shown` (the same formula read as LTL) into `a` where it gives the
+/// same answer.
+void takeLasso(QueryAnswer& a, QueryAnswer shown);
+
 /// Answers the LTL formula `f` (A or E over a path formula) on the whole graph `g`: a
 /// generalized Büchi automaton of the path formula (negated for A) by the tableau method, and
 /// its product with the graph searched for an accepting cycle. A dead marking's paths stutter

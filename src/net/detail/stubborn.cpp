@@ -179,13 +179,69 @@ void Stubborn::addUpSet(const Formula& f, bool positive, const std::uint64_t* m,
 }
 
 void Stubborn::select(const Formula& target, const std::uint64_t* m, StateCheck& check, std::vector<TransitionId>& out) {
-  out.clear();
+  start();
+  addUpSet(target, true, m, check);
+  close(m, out);
+}
+
+bool Stubborn::selectFrom(TransitionId seed, const std::uint64_t* m, const std::vector<bool>& visible,
+                          std::vector<TransitionId>& out) {
+  start();
+  add(seed);
+  close(m, out);
+  return std::none_of(out.begin(), out.end(), [&](TransitionId t) { return visible[t]; });
+}
+
+std::vector<bool> Stubborn::visibleTo(const std::vector<const Formula*>& atoms) const {
+  // the place slots the atoms read: a sum's, and what a transition's enabling depends on
+  std::vector<bool> read(raisers_.begin.size() - 1, false), visible(need_begin_.size() - 1, false);
+  auto each = [&](auto& self, const Formula& f) -> bool {  // false: every slot counts (deadlock)
+    switch (f.kind) {
+      case FormulaKind::Compare:
+        for (PlaceSlotId k : f.left.slots) read[k] = true;
+        for (PlaceSlotId k : f.right.slots) read[k] = true;
+        return true;
+      case FormulaKind::Fireable:
+        for (TransitionId t : f.transitions) {
+          for (auto i = need_begin_[t]; i < need_begin_[t + 1]; ++i) read[needs_[i].slot] = true;
+        }
+        return true;
+      case FormulaKind::Not:
+      case FormulaKind::And:
+      case FormulaKind::Or:
+        return std::all_of(f.operands.begin(), f.operands.end(), [&](const Formula& o) { return self(self, o); });
+      case FormulaKind::True:
+      case FormulaKind::False: return true;
+      case FormulaKind::Deadlock:
+      case FormulaKind::All:
+      case FormulaKind::Bound:
+      case FormulaKind::Exists:
+      case FormulaKind::Future:
+      case FormulaKind::Globally:
+      case FormulaKind::Next:
+      case FormulaKind::Until: return false;
+    }
+    return false;  // no value of the enum
+  };
+  bool bounded = true;
+  for (const Formula* f : atoms) bounded = each(each, *f) && bounded;
+  if (!bounded) read.assign(read.size(), true);
+  for (TransitionId t{0}; t < visible.size(); ++t) {
+    for (auto j = change_begin_[t]; j < change_begin_[t + 1]; ++j) visible[t] = visible[t] || read[changes_[j].first];
+  }
+  return visible;
+}
+
+void Stubborn::start() {
   if (++epoch_ == 0) {
     std::fill(stamp_.begin(), stamp_.end(), 0);
     epoch_ = 1;
   }
   work_.clear();
-  addUpSet(target, true, m, check);
+}
+
+void Stubborn::close(const std::uint64_t* m, std::vector<TransitionId>& out) {
+  out.clear();
   for (std::size_t i = 0; i < work_.size(); ++i) {
     const TransitionId t = work_[i];
     if (!enabled(t, m)) {

@@ -27,6 +27,18 @@ class Stubborn {
   /// in increasing order, into `out`. Empty when `target` cannot hold after `m`.
   void select(const Formula& target, const std::uint64_t* m, StateCheck& check, std::vector<TransitionId>& out);
 
+  /// The enabled members of a stubborn set grown from `seed` (enabled in `m`), in increasing
+  /// order, into `out`; each of them is a key transition (nothing outside the set disables
+  /// it). False when one of them is `visible` (per transition): the set then does not serve
+  /// LTL without next.
+  bool selectFrom(TransitionId seed, const std::uint64_t* m, const std::vector<bool>& visible,
+                  std::vector<TransitionId>& out);
+
+  /// Per transition: whether firing it can change the value of one of the state formulas
+  /// `atoms` (it changes the tokens of a place slot that one of them reads: a sum's, or one
+  /// that a transition of a fireable depends on; with `deadlock`, of any slot).
+  std::vector<bool> visibleTo(const std::vector<const Formula*>& atoms) const;
+
  private:
   // a transition's requirement on one place slot: lo <= tokens <= hi
   struct Need {
@@ -54,6 +66,10 @@ class Stubborn {
   // into the set: the transitions that can raise (or lower) the value of `left - right`
   void addMovers(const TokenSum& left, const TokenSum& right, bool raise);
   void add(TransitionId t);
+  // a new set, empty
+  void start();
+  // closes the set grown so far and puts its enabled members into `out`
+  void close(const std::uint64_t* m, std::vector<TransitionId>& out);
   void add(std::span<const TransitionId> ts) {
     for (TransitionId t : ts) add(t);
   }
