@@ -60,7 +60,11 @@ std::int64_t distance(const Net& net, StateCheck& check, const Layout& layout, c
       return 0;
     }
     case FormulaKind::Fireable: {
-      if (!positive) return check.holds(f, m) ? 1 : 0;
+      if (!positive) {
+        // each of them enabled must come to be disabled
+        return static_cast<std::int64_t>(std::count_if(f.transitions.begin(), f.transitions.end(),
+                                                       [&](TransitionId t) { return check.firing().enabled(t, m); }));
+      }
       std::int64_t best = kFar;
       for (TransitionId t : f.transitions) {
         std::int64_t missing = 0;
@@ -90,7 +94,14 @@ std::int64_t distance(const Net& net, StateCheck& check, const Layout& layout, c
       }
       return d;
     }
-    case FormulaKind::Deadlock:
+    case FormulaKind::Deadlock: {
+      if (!positive) return check.holds(f, m) ? 1 : 0;
+      // each enabled transition must come to be disabled
+      std::vector<TransitionId> candidates;
+      check.candidates().find(m, check.firing(), candidates);
+      return static_cast<std::int64_t>(
+          std::count_if(candidates.begin(), candidates.end(), [&](TransitionId t) { return check.firing().enabled(t, m); }));
+    }
     case FormulaKind::All:
     case FormulaKind::Bound:
     case FormulaKind::Exists:
@@ -281,6 +292,12 @@ QueryAnswer boundAnswer(const Net& net, const Formula& f, const ExploreOptions& 
   return a;
 }
 
+/// True when no path quantifier stands in `f`.
+bool quantifierFree(const Formula& f) {
+  return f.kind != FormulaKind::Exists && f.kind != FormulaKind::All &&
+         std::all_of(f.operands.begin(), f.operands.end(), [](const Formula& o) { return quantifierFree(o); });
+}
+
 /// Decided: true, false or a number.
 bool decided(const QueryAnswer& a) { return a.verdict != Verdict::Unknown; }
 
@@ -450,8 +467,20 @@ std::vector<QueryAnswer> answerQueries(const Net& net, const std::vector<Formula
     // a negation turns the answer over; the marking that shows it shows this one too
     QueryAnswer& a = out[i];
     if (changed[i] != 0 && decided(a)) a.technique = "QUERY_SIMPLIFICATION STATE_EQUATION " + a.technique;
+
     if (odd[i] && (a.verdict == Verdict::True || a.verdict == Verdict::False)) {
       a.verdict = a.verdict == Verdict::True ? Verdict::False : Verdict::True;
+    }
+    // a lasso shows the formula as simplified, and so the one asked where that is a path
+    // formula over state formulas (the two agree on every path through reachable markings);
+    // where the one asked nests quantifiers, a path shows nothing of it
+    bool o = false;
+    const Formula& asked = unnegated(formulas[i], o);
+    if (a.lasso && !(asked.operands.size() == 1 && quantifierFree(asked.operands[0]))) {
+      a.lasso = a.has_marking = false;
+      a.path.clear();
+      a.cycle.clear();
+      a.marking.clear();
     }
   }
   return out;
