@@ -4,9 +4,12 @@
 // meets them; every value a search settles is kept (per subformula, per marking).
 
 #include <algorithm>
+#include <deque>
+#include <memory>
 
 #include "detail/lazy_graph.h"
 #include "detail/query_graph.h"
+#include "detail/stubborn.h"
 
 namespace gdpn::net::detail {
 namespace {
@@ -15,13 +18,13 @@ namespace {
 /// A[true U p], AG p = not E[true U not p].
 struct CtlNode {
   enum Kind : std::uint8_t { Atom, Not, And, Or, EX, AX, EU, AU, EG } kind = Atom;
-  const Formula* atom = nullptr;        // Atom: a state formula
+  const Formula* atom = nullptr;        // Atom: a state formula; EU of true: the state formula sought
   std::vector<std::uint32_t> operands;  // EU, AU: what holds until, then what holds
 };
 
 class Local {
  public:
-  Local(const Net& net, const ExploreOptions& limits) : g_(net, limits) {}
+  Local(const Net& net, const ExploreOptions& limits) : net_(net), g_(net, limits), reduce_(limits.reduction) {}
   /// Counts the memory the searches keep per marking (a byte per node, four per temporal one).
   void account() { g_.alsoPerMarking(nodes_.size() * 5); }
   LazyGraph& graph() { return g_; }
@@ -50,12 +53,24 @@ class Local {
           case FormulaKind::Next: return push({all ? CtlNode::AX : CtlNode::EX, nullptr, {add(path.operands[0])}});
           case FormulaKind::Until:
             return push({all ? CtlNode::AU : CtlNode::EU, nullptr, {add(path.operands[0]), add(path.operands[1])}});
-          case FormulaKind::Future: return push({all ? CtlNode::AU : CtlNode::EU, nullptr, {truth(), add(path.operands[0])}});
+          case FormulaKind::Future: {
+            // EF of a state formula: searched over stubborn sets
+            const Formula* sought = !all && isStateFormula(path.operands[0]) ? &path.operands[0] : nullptr;
+            return push({all ? CtlNode::AU : CtlNode::EU, sought, {truth(), add(path.operands[0])}});
+          }
           case FormulaKind::Globally: {
             const std::uint32_t p = add(path.operands[0]);
             if (!all) return push({CtlNode::EG, nullptr, {p}});
             const std::uint32_t notp = push({CtlNode::Not, nullptr, {p}});
-            const std::uint32_t ef = push({CtlNode::EU, nullptr, {truth(), notp}});
+            // AG of a state formula: EF of its negation, searched over stubborn sets
+            const Formula* sought = nullptr;
+            if (isStateFormula(path.operands[0])) {
+              Formula& n = owned_.emplace_back();
+              n.kind = FormulaKind::Not;
+              n.operands.push_back(path.operands[0]);
+              sought = &n;
+            }
+            const std::uint32_t ef = push({CtlNode::EU, sought, {truth(), notp}});
             return push({CtlNode::Not, nullptr, {ef}});
           }
           case FormulaKind::All:
@@ -162,9 +177,15 @@ class Local {
     const std::uint32_t on = 2 * ++epoch_[n], done = on + 1;  // stamps: on the path, finished
     struct Frame {
       StateId s;
-      std::uint64_t edge, end;
+      std::uint64_t edge, end;  // into the graph's edges, or (reduced) into `succs`
     };
     std::vector<Frame> frames;
+    // EF of a state formula: each marking's successors by the enabled members of a stubborn
+    // set for it (those that keep every marking where it holds reachable), kept in `succs`
+    const Formula* sought = kind == CtlNode::EU && reduce_ ? nodes_[n].atom : nullptr;
+    if (sought && !stubborn_) stubborn_ = std::make_unique<Stubborn>(net_, g_.store().layout());
+    std::vector<StateId> succs;
+    std::vector<TransitionId> chosen;
     std::vector<StateId> met;
     // whether marking v shows the answer; where the search goes on through it, it is pushed
     auto meet = [&](StateId v) {
@@ -178,13 +199,21 @@ class Local {
         memo(n, v) = 2;
         return kind == CtlNode::AU;  // AU: broken here; EU, EG: not through here
       }
+      stamp(n, v) = on;
+      met.push_back(v);
+      if (sought) {
+        stubborn_->select(*sought, g_.store().load(v, m_), g_.check(), chosen);
+        const std::uint64_t from = succs.size();
+        g_.fireOnly(v, chosen, succs);
+        frames.push_back({v, from, succs.size()});
+        return false;
+      }
       const std::uint64_t first = g_.first(v);
       if (g_.degree(v) == 0 && kind != CtlNode::EU) {
         memo(n, v) = shown ? 1 : 2;  // AU: the path ends without q; EG: a maximal path of p
+        met.pop_back();
         return true;
       }
-      stamp(n, v) = on;
-      met.push_back(v);
       frames.push_back({v, first, g_.end(v)});
       return false;
     };
@@ -196,7 +225,7 @@ class Local {
         frames.pop_back();
         continue;
       }
-      const StateId w = g_.succ(f.edge++);
+      const StateId w = sought ? succs[f.edge++] : g_.succ(f.edge++);
       const std::uint32_t st = stamp(n, w);
       if (st == on) {
         found = kind != CtlNode::EU;  // a cycle: AU broken, EG kept; EU: nothing new
@@ -212,7 +241,11 @@ class Local {
     return !shown;
   }
 
+  const Net& net_;
   LazyGraph g_;
+  bool reduce_;                        // EF of a state formula over stubborn sets
+  std::unique_ptr<Stubborn> stubborn_;
+  std::deque<Formula> owned_;          // the negations AG p searches for
   std::vector<CtlNode> nodes_;
   std::vector<std::vector<std::uint8_t>> memo_;   // per node, per marking: 0 unknown, 1 holds, 2 fails
   std::vector<std::vector<std::uint32_t>> stamp_;  // per node, per marking: its searches' marks

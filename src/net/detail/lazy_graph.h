@@ -76,6 +76,19 @@ class LazyGraph {
     edges(s, nullptr);
   }
 
+  /// The markings the transitions `ts` lead to from `s` (those not enabled passed over),
+  /// appended to `out`, met but not kept as edges of `s` (a search of its own over some of
+  /// the edges: a stubborn set's); throws Stopped when a limit stops the search.
+  void fireOnly(StateId s, const std::vector<TransitionId>& ts, std::vector<StateId>& out) {
+    look();
+    const bool fits = states_.fire(s, ts, [&](TransitionId, StateId w, bool added) {
+      out.push_back(w);
+      if (added) met(w);
+      return true;
+    });
+    settle(fits);
+  }
+
   /// Memory held, bytes (with what the caller keeps per marking: alsoPerMarking).
   std::uint64_t bytes() const {
     return states_.bytes() + first_.capacity() * (12 + per_marking_) + succ_.capacity() * 8 + atom_.capacity();
@@ -118,10 +131,23 @@ class LazyGraph {
     edges(s, reduce ? &ample_ : nullptr);
   }
 
-  // the edges of `s`, made now: those of `only` (all where null)
-  void edges(StateId s, const std::vector<TransitionId>* only) {
+  // before markings are made: the limits looked at now and then; throws Stopped past one
+  void look() {
     if (stop_ == ExploreStop::Done && (++expansions_ & 0x3ff) == 0) stop_ = passedLimit(limits_, bytes());
     if (stop_ != ExploreStop::Done) throw Stopped{};
+  }
+  // after: a count past its field, or too many markings, stops the search
+  void settle(bool fits) {
+    if (!fits) stop_ = ExploreStop::Overflow;
+    if (states_.store().size() > std::min<std::uint64_t>(limits_.max_states, 0xfffffff0u)) {
+      stop_ = ExploreStop::MaxStates;
+    }
+    if (stop_ != ExploreStop::Done) throw Stopped{};
+  }
+
+  // the edges of `s`, made now: those of `only` (all where null)
+  void edges(StateId s, const std::vector<TransitionId>* only) {
+    look();
     const std::uint64_t at = succ_.size();
     auto each = [&](TransitionId t, StateId w, bool added) {
       succ_.push_back(w);
@@ -129,12 +155,7 @@ class LazyGraph {
       if (added) met(w);
       return true;
     };
-    const bool fits = only ? states_.fire(s, *only, each) : states_.successors(s, each);
-    if (!fits) stop_ = ExploreStop::Overflow;
-    if (states_.store().size() > std::min<std::uint64_t>(limits_.max_states, 0xfffffff0u)) {
-      stop_ = ExploreStop::MaxStates;
-    }
-    if (stop_ != ExploreStop::Done) throw Stopped{};
+    settle(only ? states_.fire(s, *only, each) : states_.successors(s, each));
     first_[s] = at;
     count_[s] = static_cast<std::uint32_t>(succ_.size() - at);
   }
