@@ -568,6 +568,44 @@ std::string verdictWord(const net::QueryAnswer& a) {
 
 }  // namespace
 
+/// The means an answer names (its technique, in the contest's words) in words for people:
+/// "simplified by the state equation, a guided search over stubborn sets".
+std::string methodText(const std::string& technique) {
+  static const std::vector<std::pair<std::string_view, std::string_view>> kWords = {
+      {"QUERY_SIMPLIFICATION", "simplified by the state equation"},
+      {"INITIAL_STATE", "at the initial marking"},
+      {"BREADTH_FIRST_SEARCH", "a breadth-first search"},
+      {"BEST_FIRST_SEARCH", "a search guided towards it"},
+      {"CTL_LOCAL", "local searches"},
+      {"CTL_FIXED_POINTS", "fixed points on the whole graph"},
+      {"LTL_TABLEAU", "an automaton's product"},
+      {"ON_THE_FLY", "on the fly"},
+      {"STUBBORN_SETS", "over stubborn sets"},
+  };
+  std::string out;
+  std::string_view rest = technique;
+  bool bound = false;  // STATE_EQUATION after a simplification says nothing new
+  while (!rest.empty()) {
+    const auto space = rest.find(' ');
+    const std::string_view word = rest.substr(0, space);
+    rest = space == std::string_view::npos ? std::string_view{} : rest.substr(space + 1);
+    std::string_view phrase;
+    if (word == "STATE_EQUATION") {
+      if (!bound) phrase = "the state equation's bound";
+    } else {
+      for (const auto& [w, p] : kWords) {
+        if (w == word) phrase = p;
+      }
+    }
+    bound = bound || word == "QUERY_SIMPLIFICATION" || word == "STATE_EQUATION";
+    if (phrase.empty()) continue;
+    const bool joined = phrase == "on the fly" || phrase == "over stubborn sets";
+    out += out.empty() ? "" : (joined ? " " : ", ");
+    out += phrase;
+  }
+  return out;
+}
+
 void printQueries(std::ostream& out, const net::Net& net, const std::vector<QueryResult>& results,
                   const net::NameExpansion* expansion, const std::vector<std::string>& notes) {
   printCaveats(out, net, notes);
@@ -596,7 +634,9 @@ void printQueries(std::ostream& out, const net::Net& net, const std::vector<Quer
     if (a.technique == "STATE_EQUATION") {
       out << " (by the state equation: no solution of it holds the formula; no marking explored)\n";
     } else {
-      out << " (" << a.states << (a.states == 1 ? " marking" : " markings") << " explored)\n";
+      const std::string method = methodText(a.technique);
+      out << " (" << a.states << (a.states == 1 ? " marking" : " markings") << " explored"
+          << (method.empty() ? "" : "; " + method) << ")\n";
     }
     if (!a.has_marking) continue;
     const std::string lead = std::string("  shown by ") +

@@ -737,13 +737,13 @@ TEST(CliAnalyze, QueriesAreAnsweredWithTheirWitnessesAndMistakesLocated) {
   // the example of figure 3.1: T1 then T2 ends in a dead marking
   auto r = gdpn("analyze examples/basics/figure31 --query 'EF deadlock' --query 'AG not fireable(T1)'");
   ASSERT_EQ(r.code, 0) << r.out;
-  EXPECT_NE(r.out.find("query 1: EF deadlock\n  true (3 markings explored)\n"
+  EXPECT_NE(r.out.find("query 1: EF deadlock\n  true (3 markings explored; a breadth-first search over stubborn sets)\n"
                        "  shown by the marking after 2 firings: main/T1 main/T2\n  tokens there:"),
             std::string::npos)
       << r.out;
   // each searched on its own (with stubborn sets no graph is stored): the initial marking decides it
-  EXPECT_NE(r.out.find("query 2: AG not fireable(main/T1)\n  false (1 marking explored)\n"
-                       "  shown by the initial marking\n"),
+  EXPECT_NE(r.out.find("query 2: AG not fireable(main/T1)\n  false (1 marking explored; a breadth-first search over "
+                       "stubborn sets)\n  shown by the initial marking\n"),
             std::string::npos)
       << r.out;
   r = gdpn("analyze tests/data/conformance/Philosophers-PT-000005.pnml --json --query 'EF Think_1 + Think_2 = 0'");
@@ -766,7 +766,8 @@ TEST(CliAnalyze, QueriesAreAnsweredWithTheirWitnessesAndMistakesLocated) {
             std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("FORMULA Philosophers-PT-000005-UpperBounds-15 "), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("query 17: bound(net/Eat_1 + net/Eat_2)\n  1 (17 markings explored)\n"), std::string::npos)
+  EXPECT_NE(r.out.find("query 17: bound(net/Eat_1 + net/Eat_2)\n  1 (17 markings explored; the state equation's bound, a search guided "
+                       "towards it)\n"), std::string::npos)
       << r.out;
   r = gdpn("analyze tests/data/conformance/Philosophers-PT-000005.pnml --query "
            "tests/data/conformance/queries/Philosophers-PT-000005/LTLFireability.xml --max-states 100");
