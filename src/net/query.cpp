@@ -462,7 +462,17 @@ std::vector<QueryAnswer> answerQueries(const Net& net, const std::vector<Formula
     open = std::move(still);
   }
   // 3. on the fly again with what is left of the limits, shared out
-  if (!open.empty()) tryEach(limits.max_states, true);
+  // (a formula that ends before its share leaves the rest to those after it; those cut short
+  // by their share get what is left over, again, while a second or more remains)
+  for (int round = 0; round < 4 && !open.empty(); ++round) {
+    if (round > 0) {
+      const bool cut =
+          std::any_of(open.begin(), open.end(), [&](std::size_t i) { return out[i].stop == ExploreStop::TimeLimit; });
+      const bool time = limits.deadline && *limits.deadline - std::chrono::steady_clock::now() > std::chrono::seconds(1);
+      if (!cut || !time) break;
+    }
+    tryEach(limits.max_states, true);
+  }
   for (std::size_t i = 0; i < formulas.size(); ++i) {
     // a negation turns the answer over; the marking that shows it shows this one too
     QueryAnswer& a = out[i];
