@@ -40,12 +40,22 @@ std::map<std::string, std::string> oracle(const std::string& model) {
   return out;
 }
 
-/// The fewest of 16 formulas of a category that each net answers within 60 s a file (the
-/// label `full`), as measured on the 2-core build machine (docs/queries.md).
-const std::map<std::string, std::size_t> kAnsweredIn60s = {
-    {"ReachabilityCardinality", 14}, {"ReachabilityFireability", 16}, {"UpperBounds", 16},
-    {"CTLCardinality", 6},           {"CTLFireability", 6},           {"LTLCardinality", 13},
-    {"LTLFireability", 12},
+/// Per net, the formulas of each category (of those with a reference answer) answered within
+/// 60 s a file, as measured on the 2-core build machine under other work (docs/queries.md, the
+/// fewer of two runs); the label `full` holds each to within 2 of its figure.
+const std::map<std::string, std::map<std::string, std::size_t>> kAnsweredIn60s = {
+    {"Dekker-PT-050",
+     {{"ReachabilityCardinality", 14}, {"ReachabilityFireability", 16}, {"UpperBounds", 16}, {"CTLCardinality", 12},
+      {"CTLFireability", 6}, {"LTLCardinality", 14}, {"LTLFireability", 13}}},
+    {"FMS-PT-00050",
+     {{"ReachabilityCardinality", 16}, {"ReachabilityFireability", 16}, {"UpperBounds", 16}, {"CTLCardinality", 10},
+      {"CTLFireability", 7}, {"LTLCardinality", 15}, {"LTLFireability", 16}}},
+    {"Kanban-PT-00050",
+     {{"ReachabilityCardinality", 15}, {"ReachabilityFireability", 16}, {"UpperBounds", 16}, {"CTLCardinality", 9},
+      {"CTLFireability", 10}, {"LTLCardinality", 15}, {"LTLFireability", 16}}},
+    {"Philosophers-PT-000050",
+     {{"ReachabilityCardinality", 15}, {"ReachabilityFireability", 15}, {"UpperBounds", 16}, {"CTLCardinality", 15},
+      {"CTLFireability", 12}, {"LTLCardinality", 15}, {"LTLFireability", 15}}},
 };
 
 class LargeContestNets : public ::testing::TestWithParam<const char*> {};
@@ -57,7 +67,7 @@ TEST_P(LargeContestNets, EveryAnswerGivenIsTheOraclesAndMostAreGiven) {
   const auto expected = oracle(model);
   ASSERT_EQ(expected.size(), 112u);
   const double seconds = fullSet() ? 60.0 : 5.0;
-  for (const auto& [category, fewest] : kAnsweredIn60s) {
+  for (const auto& [category, measured] : kAnsweredIn60s.at(model)) {
     SCOPED_TRACE(category);
     const auto file = (kLargeConformanceDir / model / (category + ".xml")).string();
     core::Diagnostics diags;
@@ -95,7 +105,7 @@ TEST_P(LargeContestNets, EveryAnswerGivenIsTheOraclesAndMostAreGiven) {
       EXPECT_EQ(answered, 16u);
     }
     if (fullSet()) {
-      EXPECT_GE(answered, fewest);
+      EXPECT_GE(answered + 2, measured);
     }
   }
 }
