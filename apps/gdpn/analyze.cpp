@@ -274,7 +274,8 @@ Subcommand addAnalyze(CLI::App& app) {
                           "write the reachability graph to FILE.dot (Graphviz: markings on the nodes) or FILE.aut "
                           "(Aldebaran, for CADP and mCRL2) instead of the analysis");
   analyze_cmd->add_flag("!--no-reduction", args->request.reduction,
-                        "with --query: search reachability without stubborn sets (every enabled transition fires)");
+                        "with --query: no simplification and no stubborn sets; the whole graph first (every "
+                        "enabled transition fires)");
   analyze_cmd->add_flag("--shortest-path", args->request.shortest_path,
                         "give a shortest path to a deadlock (a second pass over the states)");
   analyze_cmd->add_option("--colours", args->colours,

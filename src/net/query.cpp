@@ -477,7 +477,6 @@ std::vector<QueryAnswer> answerQueries(const Net& net, const std::vector<Formula
     // a negation turns the answer over; the marking that shows it shows this one too
     QueryAnswer& a = out[i];
     if (changed[i] != 0 && decided(a)) a.technique = "QUERY_SIMPLIFICATION STATE_EQUATION " + a.technique;
-
     if (odd[i] && (a.verdict == Verdict::True || a.verdict == Verdict::False)) {
       a.verdict = a.verdict == Verdict::True ? Verdict::False : Verdict::True;
     }

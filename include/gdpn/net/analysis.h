@@ -67,9 +67,10 @@ struct ExploreOptions {
   /// The net's invariants when already computed (their bounds size the markings); when
   /// empty they are computed again, under a small candidate limit.
   const Invariants* invariants = nullptr;
-  /// Queries: search reachability (EF, AG, deadlock) on the fly with stubborn sets, a
+  /// Queries: simplify each formula and answer it on the fly first, with stubborn sets (a
   /// partial-order reduction that fires only some of the enabled transitions where the
-  /// answer cannot depend on the others.
+  /// answer cannot depend on the others) for reachability, EF and AG in CTL, and LTL without
+  /// next; off (`--no-reduction`): the whole graph first, every transition fired.
   bool reduction = true;
   /// Queries: before a reachability search, try to refute the formula by the state equation
   /// (a linear program; no search when it is infeasible).

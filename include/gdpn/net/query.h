@@ -145,18 +145,21 @@ struct QueryAnswer {
 };
 
 /// Answers `f` on the reachable markings of `net`, under `limits` (max_states, max_bytes,
-/// deadline, reduction). A state formula: at the initial marking. Reachability (EF or AG of a
-/// state formula, and their negations): by a breadth-first search that stops at the first
-/// marking deciding it, with its path (with limits.reduction, over the transitions of stubborn
-/// sets: shortest among those; without, shortest of all). A bound, other CTL formulas and LTL:
-/// on the whole reachability graph, CTL by fixed points (paths are maximal: a dead marking ends
-/// them), LTL by a Büchi automaton's product with the graph (detail/query_graph.h).
+/// deadline, reduction): answerQueries of `f` alone.
 QueryAnswer answerQuery(const Net& net, const Formula& f, const ExploreOptions& limits = {});
 
-/// Answers several formulas. Where one needs the whole graph (CTL, LTL, a bound), or two or
-/// more need a search and limits.reduction is off, the reachability graph is stored once (12
-/// bytes per edge) and every answer read from it; otherwise (and where a limit stops the
-/// graph) reachability is searched for formula by formula as answerQuery does.
+/// Answers several formulas (docs/queries.md, "What is answered" and "Beyond the state
+/// space"). A state formula: at the initial marking. With limits.reduction, each formula is
+/// first simplified (the state equation's bounds and refutations, CTL identities) and then
+/// answered without the whole graph under a share of the limits (at most 2^20 markings and,
+/// under a deadline, half its share of the time left): EF or AG of a state formula by the
+/// state equation or a search over stubborn sets that stops at the first marking deciding it
+/// (breadth first, then guided), with its path; a bound by the state equation met by a guided
+/// search; other CTL by local searches (paths are maximal: a dead marking ends them); LTL by a
+/// Büchi automaton's product made on the fly (with ample sets where there is no X). Those
+/// left, and all of them without the reduction, are answered on the reachability graph,
+/// stored once (12 bytes per edge) where it fits; those left again on the fly with what
+/// remains of the limits. Each answer names its technique; one left open says why.
 std::vector<QueryAnswer> answerQueries(const Net& net, const std::vector<Formula>& formulas,
                                        const ExploreOptions& limits = {});
 
