@@ -8,6 +8,7 @@
 #include <chrono>
 #include <optional>
 #include <queue>
+#include <sstream>
 
 #include "detail/query_graph.h"
 #include "detail/simplify.h"
@@ -345,7 +346,11 @@ QueryAnswer booleanAnswer(const Net& net, const Formula& x, const ExploreOptions
       if (out.unsupported.empty()) out.unsupported = a.unsupported;
       continue;
     }
-    if (std::find(techniques.begin(), techniques.end(), a.technique) == techniques.end()) techniques.push_back(a.technique);
+    // each word once (EXPLICIT, STUBBORN_SETS, ... shared by the parts' techniques)
+    std::istringstream words(a.technique);
+    for (std::string w; words >> w;) {
+      if (std::find(techniques.begin(), techniques.end(), w) == techniques.end()) techniques.push_back(w);
+    }
     if (((a.verdict == Verdict::True) != odd) != conjunction) {
       // this part decides it
       out.verdict = conjunction ? Verdict::False : Verdict::True;

@@ -50,8 +50,6 @@ class LazyGraph {
   std::uint64_t end(StateId s) const { return first_[s] + count_[s]; }
   /// The number of edges of `s` (expanded).
   std::uint32_t degree(StateId s) const { return count_[s]; }
-  /// Whether `s` has been expanded.
-  bool expanded(StateId s) const { return first_[s] != kNotYet; }
   /// The marking an edge leads to, and the transition that fires on it.
   StateId succ(std::uint64_t e) const { return succ_[e]; }
   TransitionId via(std::uint64_t e) const { return via_[e]; }
