@@ -533,7 +533,8 @@ class FireError(ValueError):
            "gdpn.ModelError, located, when the file is no witness of this net")
       .def_property_readonly("replay_verdict", &Model::replayVerdict,
                              "how far the replay got: {done, message} (the message gdpn run --replay prints), or None")
-      .def("remove_breakpoint", &Model::removeBreakpoint, py::arg("id"))
+      .def("remove_breakpoint", &Model::removeBreakpoint, py::arg("id"),
+           "Removes the breakpoint of that id (add_breakpoint's answer)")
       .def("enable_breakpoint", &Model::enableBreakpoint, py::arg("id"), py::arg("enabled") = true,
            "Enables or disables a breakpoint (a disabled one is kept but never stops a run)")
       .def("push", &Model::push, py::kw_only(), py::arg("key") = py::none(), py::arg("down") = true,
@@ -563,8 +564,8 @@ class FireError(ValueError):
       .def("report", &Model::report, "Figures of the run so far")
       .def_property_readonly("time", &Model::time, "seconds simulated")
       .def_property_readonly("steps", &Model::steps, "steps taken")
-      .def_property_readonly("seed", &Model::seed)
-      .def_property_readonly("path", &Model::path)
+      .def_property_readonly("seed", &Model::seed, "the seed of this run (load's, or the last reset's)")
+      .def_property_readonly("path", &Model::path, "the model file")
       .def_property_readonly(
           "params",
           [](const Model& mo) {

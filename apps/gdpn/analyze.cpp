@@ -285,6 +285,8 @@ Subcommand addAnalyze(CLI::App& app) {
   analyze_cmd->add_flag("--progress", args->progress,
                         "print a progress line every 250 ms even when stderr is not a terminal");
 
+  setExamples(analyze_cmd, {"gdpn analyze examples/basics/producer_consumer   # deadlocks, bounds, invariants",
+               "gdpn analyze examples/basics/producer_consumer --query 'AG buffer <= 3'"});
   return {analyze_cmd, [args] { return analyze(*args); }};
 }
 

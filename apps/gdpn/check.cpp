@@ -51,6 +51,7 @@ Subcommand addCheck(CLI::App& app) {
   check_cmd->add_option("MODEL", args->model, "a .gdpn.yaml file, or a folder holding exactly one")->required();
   addScriptLimitOptions(check_cmd, args->limits);
   addParamOption(check_cmd, args->params);
+  setExamples(check_cmd, {"gdpn check examples/basics/two_cells        # the diagnostics; exit 0 when clean"});
   return {check_cmd, [args] { return check(args->model, args->limits, args->params); }};
 }
 

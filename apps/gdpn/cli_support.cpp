@@ -24,6 +24,12 @@ void onSigint(int) {
 
 CLI::Validator seedCheck() { return number<std::uint64_t>(0, UINT64_MAX, "a whole number from 0 to 2^64-1"); }
 
+void setExamples(CLI::App* cmd, const std::vector<std::string>& lines) {
+  std::string text = lines.size() == 1 ? "Example:" : "Examples:";
+  for (const auto& line : lines) text += "\n  " + line;
+  cmd->footer(text);
+}
+
 std::string modelFile(const std::string& arg) {
   Diagnostics ignored;  // the run itself reports a missing model
   return model::resolveModelPath(arg, ignored).value_or(arg);

@@ -61,6 +61,10 @@ void addParamOption(CLI::App* cmd, std::vector<std::string>& out);
 /// more, stops the command with a located error; 0: no bound.
 void addScriptLimitOptions(CLI::App* cmd, script::ScriptLimits& out);
 
+/// Ends `cmd`'s --help, and its section of docs/cli.md and of the man page, with `lines`: each
+/// a command line that works from the repository's root, what it does after a `#`.
+void setExamples(CLI::App* cmd, const std::vector<std::string>& lines);
+
 /// Loads and compiles MODEL (file or folder) into a session whose runs collect what `run`
 /// asks, printing diagnostics; nullptr on error.
 std::unique_ptr<session::Session> open(const std::string& arg, std::optional<std::uint64_t> seed,

@@ -30,5 +30,8 @@ Subcommand addConvert(CLI::App& app);
 Subcommand addParts(CLI::App& app);
 /// `gdpn ide MODEL`: the IDE, when it was built in.
 Subcommand addIde(CLI::App& app);
+/// `gdpn reference`: the command-line reference from these definitions (docs/cli.md, gdpn.1);
+/// hidden from --help.
+Subcommand addReference(CLI::App& app);
 
 }  // namespace gdpn::app

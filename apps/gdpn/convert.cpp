@@ -88,6 +88,7 @@ Subcommand addConvert(CLI::App& app) {
   convert_cmd->add_option("IN", args->first, "a .pnml file, a .gdpn.yaml model, or a mesh (obj stl 3ds gltf glb dae ply wrl iv)")
       ->required();
   convert_cmd->add_option("OUT", args->second, "the .gdpn.yaml or .pnml to write")->required();
+  setExamples(convert_cmd, {"gdpn convert net.pnml net.gdpn.yaml       # and back: net.gdpn.yaml net.pnml"});
   return {convert_cmd, [args] { return convert(args->first, args->second); }};
 }
 

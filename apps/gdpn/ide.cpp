@@ -30,7 +30,7 @@ int ide(const IdeArgs& a) {
     return 2;
   }
   gdpn::ide::IdeOptions o;
-  o.model = a.model;
+  o.model = a.model.empty() ? model::untitledModelPath("") : a.model;
   o.headless = a.headless;
   o.width = size->first;
   o.height = size->second;
@@ -53,8 +53,8 @@ Subcommand addIde(CLI::App& app) {
   auto args = std::make_shared<IdeArgs>();
   auto* ide_cmd = app.add_subcommand("ide", "Open a model in the IDE (a window; --headless for none)");
   ide_cmd->add_option("MODEL", args->model,
-                      "a .gdpn.yaml file, or a folder holding one; a new or empty .gdpn.yaml starts a new model")
-      ->required();
+                      "a .gdpn.yaml file, or a folder holding one; a new or empty .gdpn.yaml starts a new model, "
+                      "and so does none (untitled.gdpn.yaml in the current folder)");
   ide_cmd->add_flag("--headless", args->headless, "no window: draw on an EGL surfaceless context");
   ide_cmd->add_option("--size", args->size, "WIDTHxHEIGHT of the window or frame in pixels (default 1600x900)");
   ide_cmd->add_option("--replay", args->replay, "headless: perform the actions in ACTIONS.yaml (docs/ide.md)");
@@ -66,6 +66,7 @@ Subcommand addIde(CLI::App& app) {
   ide_cmd->add_option("--autosave", args->autosave,
                       "save unsaved edits into the user's state folder after SECONDS (default 60; 0: never)")
       ->check(number(0.0, 1e6, "seconds from 0 to 1e6", false));
+  setExamples(ide_cmd, {"gdpn ide examples/factory                 # a window; a new file starts a new model"});
   return {ide_cmd, [args] { return ide(*args); }};
 }
 

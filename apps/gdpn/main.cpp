@@ -26,7 +26,7 @@ int command(int argc, char** argv) {
   const std::vector<gdpn::app::Subcommand> subcommands = {
       gdpn::app::addCheck(app),  gdpn::app::addRun(app),    gdpn::app::addSweep(app),   gdpn::app::addAnalyze(app),
       gdpn::app::addRender(app), gdpn::app::addRecord(app), gdpn::app::addConvert(app), gdpn::app::addParts(app),
-      gdpn::app::addIde(app)};
+      gdpn::app::addIde(app),    gdpn::app::addReference(app)};
   // every mistake on the command line exits 2, after CLI11's message (help and version exit 0)
   try {
     app.parse(argc, argv);

@@ -102,8 +102,14 @@ int parts(const PartsArgs& args) {
   std::optional<std::string> path;
   std::optional<model::Model> m;
   if (!args.model.empty()) {
-    path = model::resolveModelPath(args.model, diags);
-    if (path) m = model::loadModel(*path, diags);
+    // a model file not there yet, with --add: a new model, written when the part is in it
+    if (!args.add.empty() && model::startsNewModel(args.model)) {
+      path = args.model;
+      m = model::emptyModel(args.model);
+    } else {
+      path = model::resolveModelPath(args.model, diags);
+      if (path) m = model::loadModel(*path, diags);
+    }
     if (!m) {
       diags.print(std::cerr);
       return 1;
@@ -264,7 +270,8 @@ Subcommand addParts(CLI::App& app) {
                                           "update the parts of a model");
   cmd->add_option("PART", args->part, "a part to show: its parameters and its I/O");
   cmd->add_option("--model", args->model, "a model: list its parts and the newer versions the library has");
-  cmd->add_option("--add", args->add, "with --model: add an instance of this part (and saves the model)");
+  cmd->add_option("--add", args->add, "with --model: add an instance of this part and save the model (a model file not there "
+                  "yet starts a new model)");
   cmd->add_option("--name", args->name, "with --add: the instance's name (default: the part's, numbered)");
   cmd->add_option("--at", args->at, "with --add: where it stands, X Y Z in m")->expected(3);
   cmd->add_option("--angle", args->angle, "with --add: turned by this many degrees about z");
@@ -279,6 +286,10 @@ Subcommand addParts(CLI::App& app) {
   cmd->add_option("--from", args->from, "with --make: a node of the model's scene (its subtree goes too); repeatable");
   cmd->add_option("--group", args->group, "with --make: the palette's group");
   cmd->add_option("--to", args->to, "with --make: the part file to write (default: $XDG_DATA_HOME/gdpn/parts/NAME.gdpn.yaml)");
+  setExamples(cmd, {"gdpn parts                                # the library, by group",
+               "gdpn parts belt_conveyor                  # its parameters and its I/O",
+               "gdpn parts --model line.gdpn.yaml --add belt_conveyor     # a new model with a belt",
+               "gdpn parts --model line.gdpn.yaml --add pusher --at 1 0.5 0 --control   # and its control"});
   return {cmd, [args] { return parts(*args); }};
 }
 

@@ -185,6 +185,8 @@ Subcommand addRender(CLI::App& app) {
   render_cmd->add_flag("--net", args->net, "draw the net of a page with its marking (.svg or .png) instead of the plant; without --size, as large as the page needs");
   render_cmd->add_option("--page", args->page,
                          "with --net: the page, page type or instance path (page/instance/...) to draw (default: the first page)");
+  setExamples(render_cmd, {"gdpn render examples/factory --at 58 -o factory.png        # the plant at 58 s",
+               "gdpn render examples/factory --net --page station -o station.svg  # a page of the net"});
   return {render_cmd, [args, render_cmd] { return render(*render_cmd, *args); }};
 }
 
@@ -197,6 +199,7 @@ Subcommand addRecord(CLI::App& app) {
   record_cmd->add_option("--fps", args->options.fps, "frames per second of model time (default 30)")
       ->check(number(0.0, 1000.0, "frames per second above 0, at most 1000", true));
   addLook(record_cmd, *args);
+  setExamples(record_cmd, {"gdpn record examples/factory --until 60 --fps 30 -o factory.mp4"});
   return {record_cmd, [args, record_cmd] {
             CaptureArgs a = *args;
             a.size_given = record_cmd->get_option("--size")->count() > 0;

@@ -232,6 +232,8 @@ Subcommand addRun(CLI::App& app) {
   addServeOptions(*run_cmd, args->serve);
   run_cmd->add_flag("--quiet,-q", args->quiet,
                     "print no summary, no progress and no sim.log lines (they still go to the --trace)");
+  setExamples(run_cmd, {"gdpn run examples/factory --until 120 --html factory.html   # summary; a page of plots",
+               "gdpn run examples/basics/producer_consumer --seed 7 --trace run.jsonl --report run.json"});
   return {run_cmd, [args] { return run(*args); }};
 }
 

@@ -154,6 +154,8 @@ int sweep(const SweepArgs& a) {
 Subcommand addSweep(CLI::App& app) {
   auto args = std::make_shared<SweepArgs>();
   auto* sweep_cmd = addSweepCommand(app, *args);
+  setExamples(sweep_cmd, {"gdpn sweep examples/factory --param belt_speed=0.4,0.5,0.6 --seeds 5 --until 120 \\",
+               "    -o runs.csv --summary summary.csv --plot painted.svg"});
   return {sweep_cmd, [args, sweep_cmd] {
             args->scheduler_given = sweep_cmd->get_option("--scheduler")->count() > 0;
             return sweep(*args);

@@ -470,9 +470,7 @@ void App::proceed(AfterQuestion then, const std::string& path) {
     case AfterQuestion::Close: {
       // a name beside the old model's that no file has yet
       const auto folder = std::filesystem::path(doc_->model().path).parent_path();
-      std::string name = "untitled.gdpn.yaml";
-      for (int n = 2; std::filesystem::exists(folder / name); ++n) name = "untitled-" + std::to_string(n) + ".gdpn.yaml";
-      replaceDocument(Document::create((folder / name).string()), true);
+      replaceDocument(Document::create(model::untitledModelPath(folder.string())), true);
       message = then == AfterQuestion::New ? "a new model: Save gives it a name" : "closed; a new model took its place";
       return;
     }

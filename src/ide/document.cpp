@@ -43,13 +43,7 @@ std::unique_ptr<Document> Document::open(const std::string& path, core::Diagnost
 Document::Document(model::Model model) { adopt(std::move(model)); }
 
 std::unique_ptr<Document> Document::create(const std::string& path) {
-  model::Model model;
-  model.path = path;
-  net::PageSpec main;
-  main.name = "main";
-  model.net.pages.push_back(std::move(main));
-  model.scene = std::make_shared<scene::Scene>();
-  return std::make_unique<Document>(std::move(model));
+  return std::make_unique<Document>(model::emptyModel(path));
 }
 
 model::Model Document::exchange(model::Model model) {

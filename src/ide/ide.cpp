@@ -12,32 +12,13 @@
 
 namespace gdpn::ide {
 
-namespace {
-
-/// True when `path` names a model file that is not there yet, or one that holds nothing but
-/// blanks: the IDE starts a new model that saving writes there.
-bool newModel(const std::string& path) {
-  if (!path.ends_with(model::kModelSuffix)) return false;
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) return !ec;
-  if (!std::filesystem::is_regular_file(path, ec)) return false;
-  std::ifstream in(path, std::ios::binary);
-  char c = 0;
-  while (in.get(c)) {
-    if (c != ' ' && c != '\n' && c != '\r' && c != '\t') return false;
-  }
-  return true;
-}
-
-}  // namespace
-
 int runIde(const IdeOptions& o) {
   // SIGTERM, SIGINT and SIGHUP end the IDE between two frames, even where a launcher left them
   // ignored
   catchTermination();
   core::Diagnostics diags;
   std::unique_ptr<Document> doc;
-  if (newModel(o.model)) {
+  if (model::startsNewModel(o.model)) {
     doc = Document::create(o.model);
   } else if (const auto path = model::resolveModelPath(o.model, diags)) {
     doc = Document::open(*path, diags);

@@ -1350,6 +1350,38 @@ std::optional<std::vector<sensors::InputEvent>> loadInput(const std::string& pat
   return events;
 }
 
+bool startsNewModel(const std::string& path) {
+  if (!path.ends_with(kModelSuffix)) return false;
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return !ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return false;
+  std::ifstream in(path, std::ios::binary);
+  char c = 0;
+  while (in.get(c)) {
+    if (c != ' ' && c != '\n' && c != '\r' && c != '\t') return false;
+  }
+  return true;
+}
+
+Model emptyModel(const std::string& path) {
+  Model model;
+  model.path = path;
+  net::PageSpec main;
+  main.name = "main";
+  model.net.pages.push_back(std::move(main));
+  model.scene = std::make_shared<scene::Scene>();
+  return model;
+}
+
+std::string untitledModelPath(const std::string& folder) {
+  const std::filesystem::path dir(folder);
+  std::error_code ec;
+  std::string name = std::string("untitled") + kModelSuffix;
+  for (int n = 2; std::filesystem::exists(dir / name, ec); ++n)
+    name = "untitled-" + std::to_string(n) + kModelSuffix;
+  return (dir / name).string();
+}
+
 std::optional<std::string> resolveModelPath(const std::string& arg, Diagnostics& diags) {
   namespace fs = std::filesystem;
   std::error_code ec;

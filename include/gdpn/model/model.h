@@ -119,4 +119,15 @@ std::optional<std::vector<sensors::InputEvent>> loadInput(const std::string& pat
 /// Resolves a command-line MODEL argument: a model file, or a folder holding exactly one.
 std::optional<std::string> resolveModelPath(const std::string& arg, core::Diagnostics& diags);
 
+/// True when `path` names a model file (*.gdpn.yaml) that is not there yet, or one that holds
+/// nothing but blanks: the IDE and `gdpn parts --add` start a new model there (emptyModel).
+bool startsNewModel(const std::string& path);
+
+/// A new model to be saved at `path`: one empty page, main, and an empty scene.
+Model emptyModel(const std::string& path);
+
+/// A name in `folder` ("": the current one) for a new model that no file has yet: untitled.gdpn.yaml, else
+/// untitled-2.gdpn.yaml, untitled-3.gdpn.yaml, ...
+std::string untitledModelPath(const std::string& folder);
+
 }  // namespace gdpn::model

@@ -262,18 +262,23 @@ class Sweep:
         return out
 
     def run_columns(self):
+        """The columns of runs_csv(): the parameters, seed, every figure, error."""
         return list(self.params) + ["seed"] + self.figures + ["error"]
 
     def summary_columns(self):
+        """The columns of summary_csv(): the parameters, runs, failed, and each numeric figure
+        with its interval (`FIGURE low`, `FIGURE high`)."""
         cols = list(self.params) + ["runs", "failed"]
         for f in self.numeric():
             cols += [f, f + " low", f + " high"]
         return cols
 
     def runs_csv(self):
+        """The runs as CSV text, one row a run (what `gdpn sweep -o` writes)."""
         return _csv(self.run_columns(), self.rows)
 
     def summary_csv(self):
+        """The summary as CSV text, one row a combination (what `gdpn sweep --summary` writes)."""
         return _csv(self.summary_columns(), self.summary_rows())
 
     @property
