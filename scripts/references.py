@@ -7,7 +7,8 @@
 docs/cli.md is `gdpn reference --format markdown` (the CLI's own option definitions); docs/python.md
 is made here from the gdpn module's docstrings (the module found on PYTHONPATH, or beside the
 program's build: BUILD/python). --check also runs each command's examples' paths past the
-repository: every examples/... path an example names must be there.
+repository (every examples/... path an example names must be there), and holds README.md to
+120 lines.
 """
 
 import argparse
@@ -132,8 +133,14 @@ def main():
             diff = difflib.unified_diff(have.splitlines(), text.splitlines(), f"{path.name} (in the tree)",
                                         f"{path.name} (as written now)", n=1, lineterm="")
             print("\n".join(list(diff)[:24]), file=sys.stderr)
+    readme = (ROOT / "README.md").read_text().count("\n")
+    if readme > 120:
+        stale.append(f"README.md: {readme} lines, over the 120 a front door may have")
     missing = [p for p in example_paths(wanted[ROOT / "docs/cli.md"]) if not (ROOT / p).exists()]
     for p in stale:
+        if str(p).startswith("README"):
+            print(f"{p.split(':')[0]}:121:1: error: {p.split(': ', 1)[1]}", file=sys.stderr)
+            continue
         print(f"{p}:1:1: error: stale: the program or the module says otherwise "
               f"(python3 scripts/references.py --gdpn {a.gdpn} --write)", file=sys.stderr)
     for p in missing:

