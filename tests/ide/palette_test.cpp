@@ -75,6 +75,15 @@ class Palette : public HeadlessIde {
     EXPECT_FALSE(r.is_null()) << last_.out;
     if (r.is_null()) return std::nullopt;
     EXPECT_FALSE(r["document"]["modified"].get<bool>());
+    // the net view, fitted when the file opened, still shows every instance the drops added
+    const auto& net = r["layout"]["net"];  // x, y, width, height
+    for (const auto& [name, at] : r["net_view"]["at"].items()) {
+      EXPECT_GE(at[0].get<double>(), net[0].get<double>()) << name;
+      EXPECT_GE(at[1].get<double>(), net[1].get<double>()) << name;
+      EXPECT_LE(at[0].get<double>(), net[0].get<double>() + net[2].get<double>()) << name;
+      EXPECT_LE(at[1].get<double>(), net[1].get<double>() + net[3].get<double>()) << name;
+    }
+    EXPECT_FALSE(r["net_view"]["at"].empty());
     core::Diagnostics diags;
     auto m = model::loadModel(model, diags);
     EXPECT_TRUE(m) << diags.str();

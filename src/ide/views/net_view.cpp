@@ -76,6 +76,14 @@ void ensureLayout(App& app, NetViewState& s) {
     }
   }
   if (s.laid_out_path != s.path) s.fit = true;
+  // a view that showed the whole page keeps showing it when the page outgrows it: a part placed
+  // from the palette lays its instance box out past the edge, where no one would look for it
+  if (s.fitted && s.fitted_w > 0 && s.fitted_h > 0) {
+    const diagram::Point lo = s.viewport.toLayout({0.0, 0.0});
+    const diagram::Point hi = s.viewport.toLayout({static_cast<double>(s.fitted_w), static_cast<double>(s.fitted_h)});
+    const diagram::Box& b = s.layout.bounds;
+    if (b.min.x < lo.x || b.min.y < lo.y || b.max.x > hi.x || b.max.y > hi.y) s.fit = true;
+  }
   s.laid_out_path = s.path;
   s.laid_out_revision = revision;
 }
