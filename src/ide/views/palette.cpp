@@ -17,6 +17,7 @@
 #include "../views.h"
 #include "gdpn/core/text.h"
 #include "gdpn/ide/set_field.h"
+#include "gdpn/ide/tile_label.h"
 #include "gdpn/platform/png.h"
 #include "gdpn/scene/actions.h"
 #include "net_view_state.h"
@@ -228,15 +229,12 @@ void tile(PaletteState& st, const model::LibraryPart& part, nlohmann::json& item
     const ImVec2 t = ImGui::CalcTextSize(initial.c_str());
     draw->AddText({pic.x + (kPicture - t.x) / 2, pic.y + (kPicture - t.y) / 2}, IM_COL32(220, 224, 232, 255), initial.c_str());
   }
-  // the name, split at a space into two centred lines when one is too wide
+  // the name in two centred lines at most, broken where it must be (tile_label.h)
   const std::string name = shownName(part.name);
-  std::vector<std::string> lines{name};
-  if (ImGui::CalcTextSize(name.c_str()).x > size.x - 4) {
-    const auto mid = name.size() / 2;
-    auto space = name.rfind(' ', mid);
-    if (space == std::string::npos) space = name.find(' ', mid);
-    if (space != std::string::npos) lines = {name.substr(0, space), name.substr(space + 1)};
-  }
+  const auto lines = tileLabel(name, size.x - 4, [](std::string_view text) {
+    const std::string s(text);
+    return ImGui::CalcTextSize(s.c_str()).x;
+  });
   float y = pic.y + kPicture + 3;
   for (const auto& l : lines) {
     const float tw = ImGui::CalcTextSize(l.c_str()).x;

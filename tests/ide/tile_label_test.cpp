@@ -1,0 +1,58 @@
+// The palette tile's name in lines: at spaces, inside a word that alone is too wide, cut with
+// ".." when the lines run out; measured here as 7 units a character (a monospace font).
+
+#include "gdpn/ide/tile_label.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace gdpn::ide {
+namespace {
+
+using Lines = std::vector<std::string>;
+
+float mono(std::string_view text) { return 7.0F * static_cast<float>(text.size()); }
+
+TEST(TileLabel, ANameThatFitsIsOneLine) {
+  EXPECT_EQ(tileLabel("pusher", 66, mono), Lines{"pusher"});
+  EXPECT_EQ(tileLabel("", 66, mono), Lines{});
+}
+
+TEST(TileLabel, WordsGoOnTheNextLineAtASpace) {
+  // 9 characters fit in 66 units
+  EXPECT_EQ(tileLabel("belt conveyor", 66, mono), (Lines{"belt", "conveyor"}));
+  EXPECT_EQ(tileLabel("diffuse sensor", 66, mono), (Lines{"diffuse", "sensor"}));
+}
+
+TEST(TileLabel, AWordTooWideIsBrokenWithAHyphen) {
+  // "potentiometer" (13) was clipped to "potentiome" in the palette
+  EXPECT_EQ(tileLabel("potentiometer", 66, mono), (Lines{"potentio-", "meter"}));
+  EXPECT_EQ(tileLabel("pick and place", 66, mono), (Lines{"pick and", "place"}));
+}
+
+TEST(TileLabel, TheLastLineEndsInDotsWhenTheNameGoesOn) {
+  const auto lines = tileLabel("pivot arm sorter with a very long name", 66, mono);
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[0], "pivot arm");
+  EXPECT_EQ(lines[1], "sorter..");
+  for (const auto& l : lines) EXPECT_LE(mono(l), 66.0F) << l;
+  EXPECT_EQ(tileLabel("potentiometer", 66, mono, 1), Lines{"potenti.."});
+}
+
+TEST(TileLabel, EveryLineFitsAndNothingIsLostWhileLinesLast) {
+  const std::string name = "a_name_with_no_spaces_at_all";
+  const auto lines = tileLabel(name, 40, mono, 10);
+  std::string joined;
+  for (const auto& l : lines) {
+    EXPECT_LE(mono(l), 40.0F) << l;
+    joined += l.back() == '-' ? l.substr(0, l.size() - 1) : l;
+  }
+  EXPECT_EQ(joined, name);
+  // narrower than one character: one a line, still every character
+  EXPECT_EQ(tileLabel("abc", 3, mono, 5), (Lines{"a-", "b-", "c"}));
+}
+
+}  // namespace
+}  // namespace gdpn::ide
