@@ -5,7 +5,8 @@
 # with its icon, and the MIME type of *.gdpn.yaml. The libraries gdpn links come from
 # dpkg-shlibdeps; what it opens or runs at run time is declared here.
 
-install(DIRECTORY examples/ DESTINATION share/gdpn/examples)
+install(DIRECTORY examples/ DESTINATION share/gdpn/examples FILES_MATCHING PATTERN "*.yaml" PATTERN "*.py"
+        PATTERN "*.js" PATTERN "*.md" PATTERN "*.png")
 install(FILES packaging/gdpn.desktop DESTINATION share/applications)
 install(FILES packaging/gdpn.svg DESTINATION share/icons/hicolor/scalable/apps)
 install(FILES packaging/gdpn.xml DESTINATION share/mime/packages)

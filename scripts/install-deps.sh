@@ -7,8 +7,8 @@
 set -euo pipefail
 
 packages=(
-  # toolchain
-  build-essential cmake ninja-build pkg-config clang libclang-rt-14-dev git
+  # toolchain; the Debian package (cpack: dpkg-shlibdeps needs file)
+  build-essential cmake ninja-build pkg-config clang libclang-rt-14-dev git dpkg-dev file
   # physics and scripting
   libode-dev pybind11-dev python3-dev python3-pytest python3-numpy
   # experiments: signals as DataFrames (pandas), the HTML report's plots (matplotlib) and its

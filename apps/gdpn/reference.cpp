@@ -70,7 +70,7 @@ std::string cell(std::string text) {
 void markdown(const CLI::App& app, std::ostream& os) {
   os << "# gdpn: the command-line reference\n\n"
      << "Written by `gdpn reference --format markdown` from the program's own option definitions;\n"
-     << "the test `docs.cli_reference` fails when this file differs from what the program says\n"
+     << "the test `docs.references` fails when this file differs from what the program says\n"
      << "(`gdpn reference --format markdown > docs/cli.md` brings it up to date). Every command also\n"
      << "answers `gdpn COMMAND --help`. The same text is the man page, `man gdpn`.\n\n"
      << app.get_description() << "\n\n";

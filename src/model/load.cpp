@@ -1353,14 +1353,17 @@ std::optional<std::vector<sensors::InputEvent>> loadInput(const std::string& pat
 bool startsNewModel(const std::string& path) {
   if (!path.ends_with(kModelSuffix)) return false;
   std::error_code ec;
+  // a link (a dangling one too) is no new model: what it names is not this path's to write
+  if (std::filesystem::is_symlink(path, ec)) return false;
   if (!std::filesystem::exists(path, ec)) return !ec;
   if (!std::filesystem::is_regular_file(path, ec)) return false;
   std::ifstream in(path, std::ios::binary);
+  if (!in.is_open()) return false;  // unreadable: loading it says why, nothing writes over it
   char c = 0;
   while (in.get(c)) {
     if (c != ' ' && c != '\n' && c != '\r' && c != '\t') return false;
   }
-  return true;
+  return !in.bad();
 }
 
 Model emptyModel(const std::string& path) {

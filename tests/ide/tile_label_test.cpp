@@ -52,6 +52,24 @@ TEST(TileLabel, EveryLineFitsAndNothingIsLostWhileLinesLast) {
   EXPECT_EQ(joined, name);
   // narrower than one character: one a line, still every character
   EXPECT_EQ(tileLabel("abc", 3, mono, 5), (Lines{"a-", "b-", "c"}));
+  // spaces at a break go, none is a line of its own
+  EXPECT_EQ(tileLabel("  belt   conveyor", 66, mono), (Lines{"belt", "conveyor"}));
+}
+
+TEST(TileLabel, AUtf8CharacterIsNeverSplit) {
+  // "Förderband" is 11 bytes: measured by bytes, 9 fit before the hyphen
+  const auto lines = tileLabel("F\xC3\xB6rderbandanlage", 66, mono);
+  ASSERT_EQ(lines.size(), 2u);
+  for (const auto& l : lines) {
+    for (std::size_t i = 0; i < l.size(); ++i) {
+      const auto c = static_cast<unsigned char>(l[i]);
+      if (c == 0xC3) {
+        ASSERT_LT(i + 1, l.size()) << l;  // its second byte on the same line
+        EXPECT_EQ(static_cast<unsigned char>(l[i + 1]), 0xB6) << l;
+      }
+    }
+  }
+  EXPECT_EQ(tileLabel("\xC3\xB6\xC3\xB6", 3, mono, 5), (Lines{"\xC3\xB6-", "\xC3\xB6"}));
 }
 
 }  // namespace

@@ -766,7 +766,7 @@ TEST(CliAnalyze, QueriesAreAnsweredWithTheirWitnessesAndMistakesLocated) {
             std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("FORMULA Philosophers-PT-000005-UpperBounds-15 "), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("query 17: bound(net/Eat_1 + net/Eat_2)\n  1 (17 markings explored; the state equation's bound, a search guided "
+  EXPECT_NE(r.out.find("query 17: bound(net/Eat_1 + net/Eat_2)\n  1 (25 markings explored; the state equation's bound, a search guided "
                        "towards it)\n"), std::string::npos)
       << r.out;
   r = gdpn("analyze tests/data/conformance/Philosophers-PT-000005.pnml --query "

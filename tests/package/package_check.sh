@@ -11,24 +11,26 @@
 #      `gdpn parts belt_conveyor` (its file in the package) and `python3 -c "import gdpn"`
 #      (the packaged module, which loads and checks a model);
 #   5. `apt-get install --simulate` of the .deb: its dependencies resolve on this machine.
-# Usage: package_check.sh BUILD SOURCE WORK
+# Usage: package_check.sh BUILD SOURCE WORK [CPACK]
 set -euo pipefail
 build=$(realpath "$1")
 source=$(realpath "$2")
 work=$3
+cpack=${4:-cpack}
 rm -rf "$work"
 mkdir -p "$work"
 work=$(realpath "$work")
 fail() { echo "package_check: error: $*" >&2; exit 1; }
 
 # 1. the package
-(cd "$build" && cpack -G DEB -B "$work/cpack" >"$work/cpack.log" 2>&1) || { cat "$work/cpack.log" >&2; fail "cpack failed"; }
+(cd "$build" && "$cpack" -G DEB -B "$work/cpack" >"$work/cpack.log" 2>&1) || { cat "$work/cpack.log" >&2; fail "cpack failed"; }
 debs=("$work"/cpack/gdpn_*.deb)
 [[ ${#debs[@]} -eq 1 && -f ${debs[0]} ]] || fail "cpack wrote no gdpn_*.deb into $work/cpack"
 deb=${debs[0]}
 echo "built $(basename "$deb") ($(($(stat -c %s "$deb") / 1024 / 1024)) MiB)"
-dpkg-deb --field "$deb" Depends | grep -q "python3" || fail "the package declares no dependency on python3"
-dpkg-deb --field "$deb" Depends | grep -q "libode" || fail "dpkg-shlibdeps found no libraries (no libode among the dependencies)"
+depends=$(dpkg-deb --field "$deb" Depends)
+grep -q "python3" <<<"$depends" || fail "the package declares no dependency on python3"
+grep -q "libode" <<<"$depends" || fail "dpkg-shlibdeps found no libraries (no libode among the dependencies)"
 
 # 2. unpacked into an empty prefix
 root=$work/root
@@ -43,7 +45,8 @@ done
 grep -q '^Exec=gdpn ide %f$' "$usr/share/applications/gdpn.desktop" || fail "the desktop entry does not open gdpn ide with a file"
 grep -q 'glob pattern="\*.gdpn.yaml"' "$usr/share/mime/packages/gdpn.xml" || fail "the MIME type does not match *.gdpn.yaml"
 if command -v desktop-file-validate >/dev/null; then desktop-file-validate "$usr/share/applications/gdpn.desktop"; fi
-zcat "$usr/share/man/man1/gdpn.1.gz" | grep -q '^\.SS "gdpn analyze' || fail "the man page has no section on gdpn analyze"
+man_page=$(zcat "$usr/share/man/man1/gdpn.1.gz")
+grep -q '^\.SS "gdpn analyze' <<<"$man_page" || fail "the man page has no section on gdpn analyze"
 
 # 3. no RUNPATH into the build or source tree
 elves=0
@@ -84,5 +87,5 @@ echo "$version from the package: --version, check, parts and import gdpn work fr
 
 # 5. its dependencies resolve
 command -v apt-get >/dev/null || fail "no apt-get on this machine"
-apt-get install --simulate "$deb" >"$work/apt.log" 2>&1 || { cat "$work/apt.log" >&2; fail "apt-get install --simulate failed"; }
+apt-get -o DPkg::Lock::Timeout=300 install --simulate "$deb" >"$work/apt.log" 2>&1 || { cat "$work/apt.log" >&2; fail "apt-get install --simulate failed"; }
 echo "apt-get install --simulate: installs $(grep -E '^Inst ' "$work/apt.log" | awk '{print $2}' | paste -sd ' ')"

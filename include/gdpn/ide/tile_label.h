@@ -14,8 +14,8 @@ namespace gdpn::ide {
 
 /// `name` as lines no wider than `width` (in the units of `measure`, which gives a text's
 /// width; pixels in the palette), `max_lines` of them at most (at least one). Every character
-/// of the name is on a line unless the lines ran out; a line that would not hold even one
-/// character holds one.
+/// of the name is on a line unless the lines ran out, spaces where it breaks aside; a line that
+/// would not hold even one character holds one. A UTF-8 character is never split.
 std::vector<std::string> tileLabel(std::string_view name, float width,
                                    const std::function<float(std::string_view)>& measure, std::size_t max_lines = 2);
 

@@ -76,9 +76,13 @@ void ensureLayout(App& app, NetViewState& s) {
     }
   }
   if (s.laid_out_path != s.path) s.fit = true;
-  // a view that showed the whole page keeps showing it when the page outgrows it: a part placed
-  // from the palette lays its instance box out past the edge, where no one would look for it
-  if (s.fitted && s.fitted_w > 0 && s.fitted_h > 0) {
+  // a view that showed the whole page keeps showing it when constructs added outgrow it: a part
+  // placed from the palette lays its instance box out past the edge, where no one would look
+  // for it (a construct moved past the edge, or a rename, moves no view)
+  const std::size_t items = s.layout.places.size() + s.layout.transitions.size() + s.layout.instances.size();
+  const bool added = s.laid_out_path == s.path && items > s.laid_out_items;
+  s.laid_out_items = items;
+  if (added && s.fitted && s.fitted_w > 0 && s.fitted_h > 0) {
     const diagram::Point lo = s.viewport.toLayout({0.0, 0.0});
     const diagram::Point hi = s.viewport.toLayout({static_cast<double>(s.fitted_w), static_cast<double>(s.fitted_h)});
     const diagram::Box& b = s.layout.bounds;

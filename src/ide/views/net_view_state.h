@@ -48,6 +48,7 @@ struct NetViewState {
   std::unique_ptr<diagram::SpatialIndex> index;  ///< over `layout`
   diagram::Viewport viewport;        ///< pan and zoom
   bool fit = true;                   ///< fit the page into the view at the next frame
+  std::size_t laid_out_items = 0;    ///< places, transitions and instances when last laid out
   bool fitted = true;                ///< the view shows the fit (no zoom or pan since): a new size fits again
   int fitted_w = 0, fitted_h = 0;    ///< the canvas's size when it was fitted, pixels
   std::string error;                 ///< why the page cannot be shown ("" when it can)
