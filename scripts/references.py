@@ -35,14 +35,6 @@ def signature_and_text(doc):
     return first.strip(), rest.strip()
 
 
-def member_kind(obj):
-    if isinstance(obj, property):
-        return "property"
-    if inspect.isclass(obj):
-        return "class"
-    return "function"
-
-
 def python_reference(gdpn):
     out = ["# gdpn: the Python reference", "",
            "Written by `scripts/references.py --write` from the gdpn module's own docstrings; the",

@@ -2,8 +2,6 @@
 
 #include "gdpn/ide/ide.h"
 
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "detail/platforms.h"
